@@ -1,0 +1,132 @@
+"""The registry of constructions: each book method by name.
+
+>>> sorted(names())[:2]
+['crank', 'crank-angle']
+>>> get("nonsense")
+Traceback (most recent call last):
+...
+construct.errors.UnknownConstruction: unknown construction 'nonsense'; available: crank, crank-angle, ...
+"""
+
+from __future__ import annotations
+
+import importlib
+import math
+from dataclasses import dataclass, field
+from typing import Any, Callable, Mapping
+
+from ..checks import Check
+from ..errors import InvalidParameter, UnknownConstruction
+from ..protocol import Caption, Protocol, Replay
+
+__all__ = ["Figure", "Construction", "register", "get", "names", "positive", "rod_ratio_param"]
+
+
+@dataclass(frozen=True)
+class Figure:
+    """A construction built (or replayed): its protocol and the objects it made."""
+
+    protocol: Protocol
+    replay: Replay
+
+    @property
+    def params(self) -> Mapping[str, Any]:
+        return self.protocol.params
+
+
+@dataclass(frozen=True)
+class Construction:
+    """A book method: how to build it, how to check it, and its parameters."""
+
+    name: str
+    title: Caption
+    source: str
+    build: Callable[..., Figure]
+    checks: Callable[[Figure], list[Check]]
+    defaults: Mapping[str, Any]
+    #: Parameter sets the books print figures or tables for (the gallery builds these).
+    book_params: tuple[Mapping[str, Any], ...] = ()
+    #: Structural params: changing them changes the steps, not just their values.
+    structural: tuple[str, ...] = ()
+    extra: Mapping[str, Any] = field(default_factory=dict)
+
+    def figure(self, **params: Any) -> Figure:
+        unknown = sorted(set(params) - set(self.defaults))
+        if unknown:
+            raise InvalidParameter(f"{self.name} has no parameter {', '.join(unknown)}; "
+                                   f"it takes {', '.join(sorted(self.defaults))}")
+        merged = {**self.defaults, **{k: v for k, v in params.items() if v is not None}}
+        return self.build(**merged)
+
+    def replay(self, protocol: Protocol, **givens: Any) -> Figure:
+        """Replay an existing protocol with new givens (only those that keep the steps)."""
+        values = dict(protocol.params.get("givens", {}))
+        for key, value in givens.items():
+            if value is None:
+                continue
+            if key in self.structural and protocol.params.get(key) != value:
+                raise InvalidParameter(
+                    f"{key} = {value!r} changes the steps of the protocol ({key} = {protocol.params.get(key)!r}); "
+                    f"build it afresh with 'construct replay {self.name} --{key.replace('_', '-')} {value}'")
+            if key in values:
+                values[key] = positive(key, value)
+        _validate_givens(self.name, values)
+        return Figure(protocol, protocol.replay(values))
+
+
+_VALIDATORS: dict[str, Callable[[Mapping[str, float]], None]] = {}
+_REGISTRY: dict[str, Construction] = {}
+_MODULES = ("crank", "inertia")
+
+
+def register(c: Construction, validate: Callable[[Mapping[str, float]], None] | None = None) -> Construction:
+    _REGISTRY[c.name] = c
+    if validate is not None:
+        _VALIDATORS[c.name] = validate
+    return c
+
+
+def _validate_givens(name: str, givens: Mapping[str, float]) -> None:
+    if name in _VALIDATORS:
+        _VALIDATORS[name](givens)
+
+
+def _load() -> None:
+    for mod in _MODULES:
+        try:
+            importlib.import_module(f"{__name__}.{mod}")
+        except ModuleNotFoundError as exc:  # a construction module not written yet
+            if exc.name != f"{__name__}.{mod}":
+                raise
+
+
+def names() -> list[str]:
+    _load()
+    return sorted(_REGISTRY)
+
+
+def get(name: str) -> Construction:
+    _load()
+    try:
+        return _REGISTRY[name]
+    except KeyError:
+        raise UnknownConstruction(f"unknown construction {name!r}; available: {', '.join(sorted(_REGISTRY))}") from None
+
+
+def positive(name: str, value: Any) -> float:
+    """A finite, positive number, or a clear error naming the parameter."""
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise InvalidParameter(f"{name} must be a number, got {value!r}") from None
+    if not math.isfinite(v) or v <= 0.0:
+        raise InvalidParameter(f"{name} must be finite and positive, got {value!r}")
+    return v
+
+
+def rod_ratio_param(value: Any) -> float:
+    """L/r: the connecting rod must be longer than the crank."""
+    v = positive("rod ratio L/r", value)
+    if v <= 1.0:
+        raise InvalidParameter(f"rod ratio L/r must be greater than 1 (the rod must be longer than the crank), got {value!r}")
+    return v

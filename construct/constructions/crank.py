@@ -1,0 +1,279 @@
+"""The crank circle: semicircle over the stroke, its division and the connecting-rod arcs.
+
+Seed 001 (Abb. 1051/1054): "Man teilt ... einen über dem Kolbenhub s
+geschlagenen Halbkreis in eine Anzahl gleicher Teile, vorteilhafterweise in 9
+oder 18 Teile ... ermittelt die Kolbenwege x zu den Teilpunkten ... durch
+Kreisbögen mit der Schubstangenlänge als Halbmesser."  Seed 000, Fig. 77 and
+Tabelle 2, goes the other way: tenths of the stroke swung back to the crank
+circle with the rod length give the crank angles.
+
+Layout (y up): crank centre O at the origin, stroke line horizontal, cylinder
+to the left.  The head-end dead centre D0 = (-r, 0) is crank angle 0; the
+forward stroke runs over the upper semicircle to D1 = (r, 0).  A crank point
+P at angle w sits at (-r cos w, r sin w); its crosshead C lies on the stroke
+line a rod length L to the left of P, and the piston position X is C moved
+back by L onto the stroke D0..D1, so that D0X is the piston path.
+
+>>> fig = CRANK.figure(parts=6, rod_ratio=4.0)
+>>> round(piston_fraction(fig, 3), 12)   # 90 degrees: (1 + L/r - sqrt((L/r)^2 - 1)) / 2
+0.563508326896
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping
+
+from .. import analytic
+from ..checks import EUCLIDEAN_TOLERANCE, Check
+from ..division import TRIAL_TOLERANCE, check_parts, divide_semicircle
+from ..instruments import Builder
+from ..protocol import Caption
+from . import Construction, Figure, positive, register, rod_ratio_param
+
+__all__ = ["CRANK", "CRANK_ANGLE", "piston_fraction", "crank_angle", "build_frame"]
+
+
+def build_frame(b: Builder, *, result_circle: bool = True) -> dict[str, str]:
+    """Crank centre, stroke line, crank circle and dead centres: the frame every figure starts from."""
+    with b.group("crank circle and dead centres", "Kurbelkreis und Totpunkte"):
+        O = b.given_point("O", 0.0, 0.0, de="Kurbelmittelpunkt O", en="crank centre O")
+        axis = b.given_line("axis", O, angle_deg=0.0, de="Hubachse (Kolbenweglinie)", en="stroke line")
+        r = b.given_length("r", product=("r",), de="Kurbelhalbmesser r", en="crank radius r")
+        L = b.given_length("L", product=("rod_ratio", "r"), de="Schubstangenlänge L", en="connecting-rod length L")
+        k = b.circle_radius("crank", O, r, de="Kurbelkreis um O mit r", en="crank circle about O with radius r",
+                            role="result" if result_circle else "construction")
+        D0 = b.intersect("D0", axis, k, rule=("toward", O, None, -1.0, 0.0), role="result",
+                         de="Totpunkt auf der Deckelseite (Hubanfang)", en="head-end dead centre (start of stroke)",
+                         labels={"D0": "A"})
+        D1 = b.intersect("D1", axis, k, rule=("toward", O, None, 1.0, 0.0), role="result",
+                         de="Totpunkt auf der Kurbelseite (Hubende)", en="crank-end dead centre (end of stroke)",
+                         labels={"D1": "B"})
+    return {"O": O, "axis": axis, "r": r, "L": L, "circle": k, "D0": D0, "D1": D1}
+
+
+def _givens(r: Any, rod_ratio: Any) -> dict[str, float]:
+    return {"r": positive("crank radius r", r), "rod_ratio": rod_ratio_param(rod_ratio)}
+
+
+def _validate(givens: Mapping[str, float]) -> None:
+    _givens(givens["r"], givens["rod_ratio"])
+
+
+# -- the crank construction -------------------------------------------------------
+
+
+def build_crank(*, rod_ratio: float, parts: int, method: str, r: float) -> Figure:
+    givens = _givens(r, rod_ratio)
+    used = check_parts(parts, method)
+    b = Builder("crank", givens, {"parts": parts, "method": used, "requested_method": method})
+    f = build_frame(b)
+    points = divide_semicircle(b, O=f["O"], D0=f["D0"], D1=f["D1"], circle=f["circle"], axis=f["axis"],
+                               n=parts, method=used)
+    rod_arcs(b, f, points)
+    infinite_rod(b, f, points)
+    proto = b.protocol()
+    return Figure(proto, proto.replay(givens))
+
+
+def rod_arcs(b: Builder, f: Mapping[str, str], points: list[str]) -> None:
+    """For each division point: rod arc to the crosshead, and the rod swung back onto the stroke."""
+    n = len(points) - 1
+    with b.group(f"all {n + 1} connecting-rod arcs", f"alle {n + 1} Schubstangenbögen"):
+        for k, p in enumerate(points):
+            with b.group(f"rod arcs from point {k}", f"Schubstangenbögen von Punkt {k}"):
+                arc = b.circle_radius(f"rod{k}", p, f["L"], de=f"Bogen um {k} mit der Schubstangenlänge L",
+                                      en=f"arc about point {k} with the rod length L")
+                C = b.intersect(f"C{k}", arc, f["axis"], rule=("toward", f["O"], None, -1.0, 0.0),
+                                de=f"Kreuzkopf C{k} auf der Hubachse", en=f"crosshead C{k} on the stroke line")
+                back = b.circle_radius(f"back{k}", C, f["L"], de=f"Bogen um C{k} mit L zurück auf den Hub",
+                                       en=f"arc about C{k} with L back onto the stroke")
+                b.intersect(f"X{k}", back, f["axis"], rule=("toward", f["O"], None, 1.0, 0.0), role="result",
+                            de=f"Kolbenstellung X{k}: Kolbenweg A–X{k}", en=f"piston position X{k}: piston path A–X{k}",
+                            labels={f"X{k}": f"{k}'"})
+
+
+def infinite_rod(b: Builder, f: Mapping[str, str], points: list[str]) -> None:
+    """Infinite rod: the ordinate through each division point, found as the chord to its mirror image."""
+    n = len(points) - 1
+    with b.group("ordinates for the infinite rod", "Ordinaten für unendliche Stangenlänge"):
+        for k, p in enumerate(points[1:-1], start=1):
+            # The dead centre nearer to P gives the better-conditioned intersection.
+            dc = f["D0"] if 2 * k <= n else f["D1"]
+            with b.group(f"ordinate through point {k}", f"Ordinate durch Punkt {k}"):
+                kc = b.circle_through(f"mir{k}.k", dc, p, de=f"Kreis um den Totpunkt durch {k}",
+                                      en=f"circle about the dead centre through point {k}")
+                q = b.intersect(f"Q{k}", kc, f["circle"], rule=("right", f["D0"], f["D1"]),
+                                de=f"Spiegelpunkt von {k} unter der Hubachse", en=f"mirror image of point {k} below the stroke line")
+                ordinate = b.line(f"ord{k}", p, q, de=f"Ordinate durch {k}", en=f"ordinate through point {k}")
+                b.intersect(f"Y{k}", ordinate, f["axis"], rule=("only",), role="result",
+                            de=f"Kolbenstellung Y{k} bei unendlicher Stange", en=f"piston position Y{k} for an infinite rod")
+
+
+# -- measurements on the figure ------------------------------------------------------
+
+
+def crank_angle(fig: Figure, point: str) -> float:
+    """The angle D0-O-point, read off the figure (radians, 0..pi on the forward stroke)."""
+    o, d0, p = fig.replay["O"], fig.replay["D0"], fig.replay[point]
+    ux, uy = d0[0] - o[0], d0[1] - o[1]
+    vx, vy = p[0] - o[0], p[1] - o[1]
+    return math.atan2(abs(ux * vy - uy * vx), ux * vx + uy * vy)
+
+
+def stroke_fraction(fig: Figure, point: str) -> float:
+    """Distance D0-point as a fraction of the stroke D0-D1, measured on the figure."""
+    d0, d1, x = fig.replay["D0"], fig.replay["D1"], fig.replay[point]
+    return d0.distance(x) / d0.distance(d1)
+
+
+def piston_fraction(fig: Figure, k: int) -> float:
+    """Constructed piston path at division point k, as a fraction of the stroke."""
+    return stroke_fraction(fig, f"X{k}")
+
+
+def point_name(fig: Figure, k: int) -> str:
+    n = fig.params["parts"]
+    return "D0" if k == 0 else "D1" if k == n else f"P{k}"
+
+
+def angle_tolerance(fig: Figure, name: str) -> tuple[float, str]:
+    """How far a division point may stray from its nominal angle, and why."""
+    prov = fig.protocol.steps[_maker_index(fig, name)].provenance
+    if prov.kind == "approximate":
+        return prov.error + EUCLIDEAN_TOLERANCE, f"{prov.method}: a-priori error bound {prov.error:.2e} rad"
+    if prov.kind == "trial":
+        return 2.0 * TRIAL_TOLERANCE + 1e-11, "dividers by trial: closing tolerance 1e-11 r, spread over the steps"
+    if prov.kind == "neusis":
+        return 1e-11, "marked ruler slid to 1e-15 r: exact up to the float chain"
+    return EUCLIDEAN_TOLERANCE, "Euclidean steps only: float rounding"
+
+
+def _maker_index(fig: Figure, name: str) -> int:
+    for step in fig.protocol.steps:
+        if name in step.outputs:
+            return step.index - 1
+    raise KeyError(name)
+
+
+def crank_checks(fig: Figure) -> list[Check]:
+    n = fig.params["parts"]
+    g = fig.replay.givens
+    r, L = g["r"], g["rod_ratio"] * g["r"]
+    lam = r / L
+    checks: list[Check] = []
+    for k in range(n + 1):
+        name = point_name(fig, k)
+        nominal = math.pi * k / n
+        w = crank_angle(fig, name)
+        tol_w, why_w = angle_tolerance(fig, name)
+        checks.append(Check(f"crank angle {k}", w, nominal, tol_w, why_w, "rad"))
+        # The rod arcs are Euclidean: measured against the exact path at the angle the point really has ...
+        x = piston_fraction(fig, k)
+        checks.append(Check(f"piston path {k} (rod arcs)", x, analytic.piston_path_exact(w, r, L) / (2 * r),
+                            EUCLIDEAN_TOLERANCE, "rod arcs are Euclidean: float rounding only", "stroke"))
+        # ... and against the nominal angle, where the division's error comes in (|dx/dw| <= (1 + lam)/2 strokes).
+        slope = 0.5 * (1.0 + lam)
+        checks.append(Check(f"piston path {k} (exact formula)", x, analytic.piston_path_exact(nominal, r, L) / (2 * r),
+                            EUCLIDEAN_TOLERANCE + slope * tol_w, f"division error {tol_w:.1e} rad times |dx/dw|",
+                            "stroke"))
+        # Gl. (1) drops the lam^3 sin^4 / 8 term and beyond: its error is at most that over (1 - lam^2).
+        s4 = math.sin(nominal) ** 4
+        book_err = lam ** 3 * s4 / 8.0 / (1.0 - lam * lam) / 2.0
+        checks.append(Check(f"piston path {k} (book Gl. 1)", x, analytic.piston_path_book(nominal, r, L) / (2 * r),
+                            book_err + EUCLIDEAN_TOLERANCE + slope * tol_w,
+                            "Gl. (1) truncates the series after lam sin^2/2: remainder <= lam^3 sin^4 / (8 (1 - lam^2))",
+                            "stroke"))
+        if 0 < k < n:
+            y = stroke_fraction(fig, f"Y{k}")
+            checks.append(Check(f"infinite rod {k}", y, (1.0 - math.cos(nominal)) / 2.0,
+                                EUCLIDEAN_TOLERANCE + 0.5 * tol_w, "Euclidean ordinate; division error times |dx/dw|",
+                                "stroke"))
+    return checks
+
+
+CRANK = register(Construction(
+    name="crank",
+    title=Caption("Kolbenwege aus dem Kurbelkreis", "Piston paths from the crank circle"),
+    source="seed 001, Abb. 1051/1054; seed 000, Fig. 77",
+    build=lambda rod_ratio, parts, method, r: build_crank(rod_ratio=rod_ratio, parts=parts, method=method, r=r),
+    checks=crank_checks,
+    defaults={"rod_ratio": 5.0, "parts": 18, "method": "auto", "r": 1.0},
+    book_params=({"rod_ratio": 5.0, "parts": 18}, {"rod_ratio": 5.0, "parts": 9}),
+    structural=("parts", "method"),
+), validate=_validate)
+
+
+# -- the inverse: tenths of the stroke back to crank angles ----------------------------
+
+
+def build_crank_angle(*, rod_ratio: float, divisions: int, r: float) -> Figure:
+    givens = _givens(r, rod_ratio)
+    if isinstance(divisions, bool) or not isinstance(divisions, int) or not 1 <= divisions <= 1000:
+        raise _bad_divisions(divisions)
+    b = Builder("crank-angle", givens, {"divisions": divisions})
+    f = build_frame(b)
+    m = divisions
+    with b.group(f"stroke divided into {m} equal parts", f"Hub in {m} gleiche Teile geteilt"):
+        marks = [f["D0"]] + (b.divide_segment("x", f["D0"], f["D1"], m, line=f["axis"]) if m > 1 else []) + [f["D1"]]
+    with b.group("rod length swung back to the crank circle", "Schubstangenlänge auf den Kurbelkreis zurückgeschlagen"):
+        for j, x in enumerate(marks):
+            with b.group(f"crank angle for {j}/{m} of the stroke", f"Kurbelwinkel zu {j}/{m} Hub"):
+                arc = b.circle_radius(f"cross{j}.k", x, f["L"], de=f"Bogen um {j}/{m} mit L",
+                                      en=f"arc about mark {j}/{m} with L")
+                C = b.intersect(f"C{j}", arc, f["axis"], rule=("toward", f["O"], None, -1.0, 0.0),
+                                de=f"Kreuzkopf C{j}", en=f"crosshead C{j}")
+                back = b.circle_radius(f"rod{j}", C, f["L"], de=f"Bogen um C{j} mit L auf den Kurbelkreis",
+                                       en=f"arc about C{j} with L onto the crank circle")
+                b.intersect(f"W{j}", back, f["circle"], rule=("left", f["D0"], f["D1"]), role="result",
+                            de=f"Kurbelstellung W{j}: Winkel ω{j} = ∠AOW{j}", en=f"crank position W{j}: angle w{j} = AOW{j}",
+                            labels={f"W{j}": f"{j}"})
+    proto = b.protocol()
+    return Figure(proto, proto.replay(givens))
+
+
+def _bad_divisions(value: Any) -> Exception:
+    from ..errors import InvalidParameter
+
+    return InvalidParameter(f"number of stroke divisions must be a whole number from 1 to 1000, got {value!r}")
+
+
+def inverse_tolerance(x: float) -> float:
+    """Near the dead centres the rod arc meets the crank circle almost tangentially.
+
+    A gap error e in the circles moves the crossing by about sqrt(e) at the
+    ends (tangency) and e / sin(w) elsewhere; with e ~ 1e-15 of the stroke this
+    gives 1e-12 rad in the middle, up to ~1e-7 rad one step from the dead
+    centre for very fine divisions.  Exactly at the dead centres the tangency
+    tolerance makes the crossing the dead centre itself.
+    """
+    edge = min(x, 1.0 - x)
+    if edge <= 0.0:
+        return 1e-9
+    return 1e-12 + 3e-16 / edge
+
+
+def crank_angle_checks(fig: Figure) -> list[Check]:
+    m = fig.params["divisions"]
+    g = fig.replay.givens
+    r, L = g["r"], g["rod_ratio"] * g["r"]
+    checks = []
+    for j in range(m + 1):
+        x = j / m
+        w = crank_angle(fig, f"W{j}")
+        checks.append(Check(f"crank angle at {j}/{m} stroke", w, analytic.crank_angle_from_path(2 * r * x, r, L),
+                            inverse_tolerance(x), "Euclidean; the rod arc meets the circle nearly tangentially at the ends",
+                            "rad"))
+    return checks
+
+
+CRANK_ANGLE = register(Construction(
+    name="crank-angle",
+    title=Caption("Kurbelwinkel aus den Zehnteln des Hubes", "Crank angles from tenths of the stroke"),
+    source="seed 000, Fig. 77 and Tabelle 2, Gl. (h)",
+    build=lambda rod_ratio, divisions, r: build_crank_angle(rod_ratio=rod_ratio, divisions=divisions, r=r),
+    checks=crank_angle_checks,
+    defaults={"rod_ratio": 5.0, "divisions": 10, "r": 1.0},
+    book_params=({"rod_ratio": 4.0}, {"rod_ratio": 5.0}, {"rod_ratio": 6.0}),
+    structural=("divisions",),
+), validate=_validate)

@@ -11,6 +11,7 @@ import importlib
 _NAMES = [
     # one line per subcommand module, in the order `construct --help` lists them
     "errata",
+    "diff",
 ]
 
 MODULES = [importlib.import_module(f"{__name__}.{name}") for name in _NAMES]

@@ -1,0 +1,64 @@
+"""``construct diff A B``: what changed between two drawings or two protocols, in geometry.
+
+Two SVG files are compared with :func:`construct.svgdiff.diff_svg`, two
+``protocol.json`` files with :func:`construct.protocoldiff.diff_protocol`;
+which one is decided by the content (an XML document or a JSON object), and
+both files must be of the same kind.  Exit 0 when equal, 1 when different,
+2 on bad input.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+from ..errors import ConstructError, InvalidParameter
+
+NAME = "diff"
+HELP = "compare two SVG drawings or two protocol.json files geometrically (exit 0 equal, 1 different)"
+
+
+class DiffInputError(ConstructError, ValueError):
+    """A file given to ``construct diff`` is missing, unreadable or neither SVG nor a JSON protocol."""
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("a", metavar="A", help="the reference: an .svg drawing or a protocol.json")
+    parser.add_argument("b", metavar="B", help="the file compared with it (the same kind as A)")
+    parser.add_argument("--tolerance", type=float, default=None, metavar="T",
+                        help="differences at or below T are equal (default 1e-6 for SVG, 1e-9 for protocols)")
+    parser.add_argument("--json", action="store_true", help="print the differences as JSON")
+
+
+def file_kind(path: str) -> str:
+    """``"svg"`` or ``"protocol"``, by the first character of the content."""
+    try:
+        data = Path(path).read_bytes()
+    except OSError as exc:
+        raise DiffInputError(f"cannot read {path!r}: {exc.strerror or exc}") from None
+    head = data.lstrip(b"\xef\xbb\xbf \t\r\n")[:1]
+    if head == b"<":
+        return "svg"
+    if head == b"{":
+        return "protocol"
+    raise DiffInputError(f"{path!r} is neither an SVG drawing nor a JSON protocol")
+
+
+def run(args: argparse.Namespace) -> int:
+    from ..protocoldiff import diff_protocol
+    from ..svgdiff import diff_svg
+
+    kind_a, kind_b = file_kind(args.a), file_kind(args.b)
+    if kind_a != kind_b:
+        raise DiffInputError(f"cannot compare {args.a!r} ({kind_a}) with {args.b!r} ({kind_b})")
+    if args.tolerance is not None and not (args.tolerance >= 0 and args.tolerance != float("inf")):
+        raise InvalidParameter(f"--tolerance must be a finite number >= 0, got {args.tolerance!r}")
+    tol = {} if args.tolerance is None else {"tolerance": args.tolerance}
+    differ = diff_svg if kind_a == "svg" else diff_protocol
+    result = differ(Path(args.a), Path(args.b), **tol)  # paths, so that errors name the file
+    if args.json:
+        print(json.dumps(result.as_dict(), indent=2, ensure_ascii=False))
+    else:
+        print(result.report())
+    return 0 if result.equal else 1

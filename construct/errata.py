@@ -16,7 +16,7 @@ formulas that are wrong come last, with table ``"formula"``.
 
 >>> rows = {(e.table, e.row, e.column): e for e in errata()}
 >>> e = rows["Tabelle 1", "180°", "cos ω + r/L·cos 2ω (L/r=6)"]
->>> e.printed, round(e.true, 6), e.units, e.class_
+>>> e.printed, round(e.true, 6), round(e.units, 2), e.class_
 ('-0.8334', -0.833333, -0.67, 'slip')
 >>> e.note
 'computed from printed intermediates: -1 + 0.1666 = -0.8334'
@@ -380,7 +380,7 @@ def _entry(v: PrintedValue, lookup: Callable[[str, str, str], PrintedValue]) -> 
     if extra:
         notes.append(extra)
     return Erratum(
-        seed000.SOURCE, v.table, v.row, v.column, v.text, true, round(float(units), 2) + 0.0, verdict, "; ".join(notes)
+        seed000.SOURCE, v.table, v.row, v.column, v.text, true, float(units) + 0.0, verdict, "; ".join(notes)
     )
 
 

@@ -6,11 +6,11 @@ records (``true`` to 8 significant digits, ``units`` to 2 decimals);
 ``--class`` keeps one class only.
 
 >>> from construct.cli import main
->>> main(["errata", "--class", "misprint"])  # doctest: +ELLIPSIS
+>>> main(["errata", "--class", "slip"])  # doctest: +ELLIPSIS
 table ...
-Tabelle 1 ... 110° ... -0.5385 ... misprint ...
+Tabelle 1 ... 0° ... 0.1666 ... slip ... truncated instead of rounded
 ...
-5 printed numbers: 0 agrees, 0 slip, 5 misprint; 6 formula misprints
+21 printed numbers: 0 agrees, 21 slip, 0 misprint; 0 formula misprints
 0
 """
 

@@ -124,10 +124,22 @@ def _close(x: Any, y: Any, tol: float) -> bool:
 
 
 def _show(value: Any) -> str:
+    """A normalised value as text.
+
+    >>> _show((0.0, 0.0, 960.0, 813.91)), _show(("xMidYMid", "meet")), _show((1.5, "s"))
+    ('0 0 960 813.91', 'xMidYMid meet', '1.5s')
+    """
     if isinstance(value, float):
         return _fmt(value)
     if isinstance(value, tuple):
-        return "".join(_show(v) for v in value)
+        # Words from _tokens carry their own separators; two numbers or two
+        # plain words in a row (a viewBox, a split list) need a space.
+        out = ""
+        for i, v in enumerate(value):
+            if i and isinstance(v, str) == isinstance(value[i - 1], str):
+                out += " "
+            out += _show(v)
+        return out
     return str(value)
 
 
@@ -609,7 +621,7 @@ def _attrs(elem: ET.Element) -> dict[str, str]:
     for name, value in elem.attrib.items():
         ns, local = _local(name)
         if ns is None or (ns == XLINK_NS and local == "href"):
-            if local == "href" and ns is None or local not in out:
+            if (local == "href" and ns is None) or local not in out:  # plain href wins over xlink:href
                 out[local] = value
     return out
 
@@ -915,7 +927,11 @@ class _Parser:
         if extra_source is not None:
             more_a, more_d = self._decorations(extra_source)
             animations, described = tuple(sorted(animations + more_a, key=_show)), described + more_d
-        self.shapes.append(Shape(key=key, tag=tag, style=self._effective_style(state), animations=animations,
+        style = self._effective_style(state)
+        classes = " ".join(sorted(set(_attrs(elem).get("class", "").split())))
+        if classes:  # our renderer writes the instrument and provenance as classes
+            style = tuple(sorted(style + (("class", classes),)))
+        self.shapes.append(Shape(key=key, tag=tag, style=style, animations=animations,
                                  described=described, has_id=has_id, order=len(self.shapes), **geometry))
 
     # -- geometry of each element kind ---------------------------------------------------------
@@ -1158,7 +1174,8 @@ class SvgDiff:
         """Readable text, one line per change."""
         head = f"SVG diff {self.a} -> {self.b} (tolerance {_mag(self.tolerance)}): "
         if self.equal:
-            return head + f"equal ({self.elements[0]} elements)"
+            n = self.elements[0]
+            return head + f"equal ({n} element{'s' if n != 1 else ''})"
         n = len(self.changes)
         return "\n".join([head + f"{n} change{'s' if n != 1 else ''}"] + [c.line() for c in self.changes])
 

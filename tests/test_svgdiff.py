@@ -396,3 +396,20 @@ def test_translated_element_is_caught_and_named(elements, data):
     assert [c.key for c in moved] == [key], d.report()
     assert [c.kind for c in d.changes] == ["moved"], d.report()
     assert moved[0].magnitude == pytest.approx(distance, rel=1e-9, abs=1e-9)
+
+
+def test_class_change_is_restyled():
+    # Our renderer writes instrument and provenance as classes: exact -> approximate is a change.
+    a = svg('<path id="k1" class="construction compass exact" d="M0 0 L1 1"/>')
+    b = svg('<path id="k1" class="compass construction approximate" d="M0 0 L1 1"/>')
+    (change,) = diff_svg(a, b).changes
+    assert change.kind == "restyled" and "exact" in change.description and "approximate" in change.description
+
+
+def test_stylesheet_rules_apply_and_reformatting_them_is_equal():
+    a = svg('<style>.k{stroke:#000;stroke-width:0.50}</style><line id="g" class="k" x2="1"/>')
+    b = svg('<style>\n  .k { stroke: black; stroke-width: .5 }\n</style><line x2="1" class="k" id="g"/>')
+    assert diff_svg(a, b).equal
+    # The rule reaches the element: same as writing the presentation attributes directly.
+    c = svg('<style>.k{stroke:#000;stroke-width:0.50}</style><line id="g" class="k" x2="1" stroke-width="2"/>')
+    assert parse_svg(a).shapes[0].style == parse_svg(c).shapes[0].style

@@ -114,7 +114,9 @@ def _trial_chord(args, params, givens):
     n = int(params["parts"])
     r = circle[1]
     tol = float(params["tolerance"]) * r
-    opening = start.distance(end) / n  # first guess: the straight distance shared out
+    # First guess, the draftsman's rule of thumb: half as much again as the
+    # straight distance shared out (the half circle is pi/2 = 1.57 diameters).
+    opening = 1.5 * start.distance(end) / n
     for _ in range(200):
         landing = _step_round(circle, start, end, opening, n)
         gap = landing.distance(end)
@@ -133,17 +135,38 @@ def _side(a: Point, b: Point, p: Point) -> float:
 
 
 def _step_round(circle: Circle, start: Point, end: Point, opening: float, n: int) -> Point:
-    prev, here = None, start
-    for _ in range(n):
-        pts = intersect_circles(circle, Circle(here, opening))
-        if not pts:
+    """Step the dividers n times round *circle* from *start*; return where they land.
+
+    Each step is the compass step of the protocol (a circle of radius
+    *opening* about the last point, cut with the crank circle, going on
+    away from the point before), written out inline because the trial
+    repeats it n times per round.
+    """
+    (ox, oy), r = circle
+    # Which way is "on": the first step goes to the left of start->end (above the stroke).
+    ex, ey = end[0] - start[0], end[1] - start[1]
+    px, py = start  # previous point
+    hx, hy = start  # current point
+    for i in range(n):
+        dx, dy = hx - ox, hy - oy
+        d = math.hypot(dx, dy)
+        outer = r + opening - d
+        inner = d - abs(r - opening)
+        if outer < 0.0 or inner < 0.0:
             raise GeometryError(f"dividers opening {opening:.6g} does not reach round the circle")
-        if prev is None:
-            nxt, _ = choose(pts, ("left", "A", "B"), (start, end))
+        ux, uy = dx / d, dy / d
+        a = 0.5 * (d + (r - opening) * (r + opening) / d)
+        h = math.sqrt(outer * (r + opening + d) * inner * (d + abs(r - opening))) / (2.0 * d)
+        mx, my = ox + a * ux, oy + a * uy
+        ax, ay = mx + h * uy, my - h * ux
+        bx, by = mx - h * uy, my + h * ux
+        if i == 0:
+            first = ex * (ay - start[1]) - ey * (ax - start[0]) >= ex * (by - start[1]) - ey * (bx - start[0])
         else:
-            nxt, _ = choose(pts, ("farther", "P"), (prev,))
-        prev, here = here, nxt
-    return here
+            first = (ax - px) ** 2 + (ay - py) ** 2 >= (bx - px) ** 2 + (by - py) ** 2
+        px, py = hx, hy
+        hx, hy = (ax, ay) if first else (bx, by)
+    return Point(hx, hy)
 
 
 def _neusis_archimedes(args, params, givens):

@@ -47,8 +47,12 @@ __all__ = [
 TANGENCY_TOLERANCE = 1e-10
 
 
-def _finite(*values: float) -> bool:
-    return all(math.isfinite(v) for v in values)
+def _point(x: float, y: float) -> "Point":
+    """A Point without the finiteness check: for results computed from finite points."""
+    return _tuple_new(Point, (x, y))
+
+
+_tuple_new = tuple.__new__
 
 
 class Point(tuple):
@@ -231,7 +235,7 @@ def intersect_lines(l1: Line, l2: Line) -> tuple[Point, ...]:
     if abs(den) <= TANGENCY_TOLERANCE * math.hypot(d1x, d1y) * math.hypot(d2x, d2y):
         return ()
     t = ((ux - px) * d2y - (uy - py) * d2x) / den
-    return (Point(px + t * d1x, py + t * d1y),)
+    return (_point(px + t * d1x, py + t * d1y),)
 
 
 def intersect_line_circle(line: Line, circle: Circle) -> tuple[Point, ...]:
@@ -256,10 +260,10 @@ def intersect_line_circle(line: Line, circle: Circle) -> tuple[Point, ...]:
     if gap < -tol:
         return ()
     if gap <= tol:
-        return (Point(fx, fy),)
+        return (_point(fx, fy),)
     # (r - d)(r + d) rather than r^2 - d^2: no cancellation when nearly tangent.
     h = math.sqrt(gap * (r + delta))
-    return (Point(fx - h * ux, fy - h * uy), Point(fx + h * ux, fy + h * uy))
+    return (_point(fx - h * ux, fy - h * uy), _point(fx + h * ux, fy + h * uy))
 
 
 def intersect_circles(c1: Circle, c2: Circle) -> tuple[Point, ...]:
@@ -291,14 +295,14 @@ def intersect_circles(c1: Circle, c2: Circle) -> tuple[Point, ...]:
     if outer < -tol or inner < -tol:
         return ()
     if outer <= tol:
-        return (Point(x1 + r1 * ux, y1 + r1 * uy),)
+        return (_point(x1 + r1 * ux, y1 + r1 * uy),)
     if inner <= tol:
         sign = 1.0 if r1 >= r2 else -1.0
-        return (Point(x1 + sign * r1 * ux, y1 + sign * r1 * uy),)
+        return (_point(x1 + sign * r1 * ux, y1 + sign * r1 * uy),)
     a = 0.5 * (d + (r1 - r2) * (r1 + r2) / d)
     h = math.sqrt(outer * (r1 + r2 + d) * inner * (d + abs(r1 - r2))) / (2.0 * d)
     mx, my = x1 + a * ux, y1 + a * uy
-    return (Point(mx + h * uy, my - h * ux), Point(mx - h * uy, my + h * ux))
+    return (_point(mx + h * uy, my - h * ux), _point(mx - h * uy, my + h * ux))
 
 
 def intersect(a: Curve, b: Curve) -> tuple[Point, ...]:

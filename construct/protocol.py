@@ -327,9 +327,98 @@ OPS: dict[str, Callable[..., tuple[Any, ...]]] = {
 _RULE_OPS = {"intersect"}
 
 
+# -- compiled forms -----------------------------------------------------------
+# Replaying is a fold over the steps; to make it cheap (the 18-part crank is
+# ~360 steps and should replay in about a millisecond) each step is compiled
+# once into a closure over integer slots.  The hot operations get hand-made
+# closures; every other op runs through the generic wrapper.  Both compute
+# exactly what OPS[op] computes.
+
+_tuple_new = tuple.__new__
+
+
+def _compile_generic(fn, ins, outs, params, refs):
+    if refs:
+        def run(env, givens):
+            vals = fn([env[k] for k in ins], params, givens, [env[k] for k in refs])
+            for k, v in zip(outs, vals):
+                env[k] = v
+    else:
+        def run(env, givens):
+            vals = fn([env[k] for k in ins], params, givens)
+            for k, v in zip(outs, vals):
+                env[k] = v
+    return run
+
+
+def _compile_intersect(fn, ins, outs, params, refs):
+    a, b = ins
+    rule = tuple(params["rule"])
+    both = bool(params.get("both"))
+    o0 = outs[0]
+    o1 = outs[1] if both else None
+    name = rule[0]
+
+    def run(env, givens):
+        c1, c2 = env[a], env[b]
+        pts = intersect(c1, c2)
+        if len(pts) == 1 and not both:
+            env[o0] = pts[0]
+            return
+        if not pts:
+            raise GeometryError(f"{_describe(c1)} and {_describe(c2)} do not meet")
+        chosen, other = choose(pts, rule, [env[k] for k in refs]) if name != "only" or len(pts) != 1 else (pts[0], None)
+        env[o0] = chosen
+        if both:
+            if other is None:
+                raise GeometryError(f"{_describe(c1)} and {_describe(c2)} only touch; two points were expected")
+            env[o1] = other
+    return run
+
+
+def _compile_circle_radius(fn, ins, outs, params, refs):
+    c, length = ins
+    (o,) = outs
+
+    def run(env, givens):
+        env[o] = _tuple_new(Circle, (env[c], float(env[length])))  # a Length is positive by construction
+    return run
+
+
+def _compile_circle_through(fn, ins, outs, params, refs):
+    c, p = ins
+    (o,) = outs
+
+    def run(env, givens):
+        cc, pp = env[c], env[p]
+        r = math.hypot(pp[0] - cc[0], pp[1] - cc[1])
+        if not r > 0.0:
+            raise GeometryError(f"circle about {cc!r} through itself has no radius")
+        env[o] = _tuple_new(Circle, (cc, r))
+    return run
+
+
+def _compile_line(fn, ins, outs, params, refs):
+    a, b = ins
+    (o,) = outs
+
+    def run(env, givens):
+        env[o] = Line(env[a], env[b])
+    return run
+
+
+_COMPILERS = {
+    "intersect": _compile_intersect,
+    "circle_radius": _compile_circle_radius,
+    "circle_through": _compile_circle_through,
+    "line": _compile_line,
+}
+
+
 def register_op(name: str, fn: Callable[..., tuple[Any, ...]], *, rule: bool = False) -> None:
     """Add an operation (modules with special instruments call this on import)."""
     OPS[name] = fn
+    _COMPILERS.pop(name, None)
     if rule:
         _RULE_OPS.add(name)
 
@@ -415,7 +504,9 @@ class Protocol:
                     raise ProtocolFormatError(f"step {step.index} makes {name!r} a second time")
                 slot[name] = len(slot)
                 outs.append(slot[name])
-            compiled.append((fn, ins, tuple(outs), step.params, refs, step))
+            params = dict(step.params)
+            run = _COMPILERS.get(step.op, _compile_generic)(fn, ins, tuple(outs), params, refs)
+            compiled.append((run, step))
         self._compiled.extend(compiled)
         self._compiled.append(tuple(slot))  # slot names in order, last item
         return self._compiled
@@ -427,17 +518,10 @@ class Protocol:
         names = compiled[-1]
         env: list[Any] = [None] * len(names)
         stop = len(compiled) - 1 if upto is None else min(upto, len(compiled) - 1)
-        i = -1
+        i = 0
         try:
             for i in range(stop):
-                fn, ins, outs, params, refs, _ = compiled[i]
-                args = [env[k] for k in ins]
-                if refs:
-                    vals = fn(args, params, givens, [env[k] for k in refs])
-                else:
-                    vals = fn(args, params, givens)
-                for k, v in zip(outs, vals):
-                    env[k] = v
+                compiled[i][0](env, givens)
         except ConstructError as exc:
             step = compiled[i][-1]
             raise StepError(_step_message(step, exc), step_index=step.index, tool=step.tool) from exc

@@ -9,6 +9,11 @@ from __future__ import annotations
 import importlib
 
 _NAMES = [
+    "list",
+    "replay",
+    "check",
+    "table",
+    "bench",
     # one line per subcommand module, in the order `construct --help` lists them
     "errata",
     "diff",

@@ -86,8 +86,8 @@ def rod_arcs(b: Builder, f: Mapping[str, str], points: list[str]) -> None:
                                       en=f"arc about point {k} with the rod length L")
                 C = b.intersect(f"C{k}", arc, f["axis"], rule=("toward", f["O"], None, -1.0, 0.0),
                                 de=f"Kreuzkopf C{k} auf der Hubachse", en=f"crosshead C{k} on the stroke line")
-                back = b.circle_radius(f"back{k}", C, f["L"], de=f"Bogen um C{k} mit L zurück auf den Hub",
-                                       en=f"arc about C{k} with L back onto the stroke")
+                back = b.circle_through(f"back{k}", C, p, de=f"Bogen um C{k} durch {k} zurück auf den Hub",
+                                        en=f"arc about C{k} through point {k} back onto the stroke")
                 b.intersect(f"X{k}", back, f["axis"], rule=("toward", f["O"], None, 1.0, 0.0), role="result",
                             de=f"Kolbenstellung X{k}: Kolbenweg A–X{k}", en=f"piston position X{k}: piston path A–X{k}",
                             labels={f"X{k}": f"{k}'"})
@@ -102,8 +102,8 @@ def infinite_rod(b: Builder, f: Mapping[str, str], points: list[str]) -> None:
             dc = f["D0"] if 2 * k <= n else f["D1"]
             with b.group(f"ordinate through point {k}", f"Ordinate durch Punkt {k}"):
                 kc = b.circle_through(f"mir{k}.k", dc, p, de=f"Kreis um den Totpunkt durch {k}",
-                                      en=f"circle about the dead centre through point {k}")
-                q = b.intersect(f"Q{k}", kc, f["circle"], rule=("right", f["D0"], f["D1"]),
+                                      en=f"circle about the dead centre through point {k}", role="auxiliary")
+                q = b.intersect(f"Q{k}", kc, f["circle"], rule=("right", f["D0"], f["D1"]), role="auxiliary",
                                 de=f"Spiegelpunkt von {k} unter der Hubachse", en=f"mirror image of point {k} below the stroke line")
                 ordinate = b.line(f"ord{k}", p, q, de=f"Ordinate durch {k}", en=f"ordinate through point {k}")
                 b.intersect(f"Y{k}", ordinate, f["axis"], rule=("only",), role="result",

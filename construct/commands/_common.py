@@ -1,0 +1,79 @@
+"""Options shared by the subcommands that build a construction."""
+
+from __future__ import annotations
+
+import argparse
+import math
+from pathlib import Path
+from typing import Any
+
+from ..constructions import Construction, Figure, get
+from ..errors import InvalidParameter, ProtocolFormatError
+from ..protocol import Protocol
+
+
+def _number(text: str) -> float:
+    try:
+        v = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+    return v
+
+
+def _whole(text: str) -> int:
+    try:
+        return int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+
+
+def add_construction_options(p: argparse.ArgumentParser, *, name_optional: bool = True) -> None:
+    p.add_argument("name", nargs="?" if name_optional else None, metavar="CONSTRUCTION",
+                   help="crank, crank-angle, inertia-curve (see 'construct list')")
+    p.add_argument("--protocol", metavar="FILE", help="replay an exported protocol.json instead of building afresh")
+    p.add_argument("--rod-ratio", type=_number, metavar="K", help="connecting rod length over crank radius, L/r > 1")
+    p.add_argument("--parts", type=_whole, metavar="N", help="parts of the semicircle (1..3600)")
+    p.add_argument("--method", metavar="M", help="division method: auto, exact, durer, neusis, dividers")
+    p.add_argument("--divisions", type=_whole, metavar="M", help="divisions of the stroke (crank-angle)")
+    p.add_argument("--radius", type=_number, metavar="R", help="crank radius r in drawing units")
+    p.add_argument("--pressure-ratio", type=_number, metavar="F/f", help="F/f of the inertia pressures")
+
+
+PARAM_OPTIONS = {"rod_ratio": "rod_ratio", "parts": "parts", "method": "method", "divisions": "divisions",
+                 "radius": "r", "pressure_ratio": "pressure_ratio"}
+
+
+def given_options(args: argparse.Namespace) -> dict[str, Any]:
+    out = {}
+    for opt, param in PARAM_OPTIONS.items():
+        v = getattr(args, opt, None)
+        if v is not None:
+            if isinstance(v, float) and not math.isfinite(v):
+                raise InvalidParameter(f"--{opt.replace('_', '-')} must be finite, got {v!r}")
+            out[param] = v
+    return out
+
+
+def load_protocol(path: str) -> Protocol:
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise ProtocolFormatError(f"protocol file {path!r} does not exist") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise ProtocolFormatError(f"cannot read protocol file {path!r}: {exc}") from None
+    return Protocol.from_json(text)
+
+
+def figure_from_args(args: argparse.Namespace) -> tuple[Construction, Figure]:
+    """Build the named construction, or replay --protocol with the given givens."""
+    params = given_options(args)
+    if args.protocol:
+        proto = load_protocol(args.protocol)
+        if args.name and args.name != proto.construction:
+            raise InvalidParameter(f"the protocol is of {proto.construction!r}, not {args.name!r}")
+        c = get(proto.construction)
+        return c, c.replay(proto, **params)
+    if not args.name:
+        raise InvalidParameter("name a construction (see 'construct list') or give --protocol FILE")
+    c = get(args.name)
+    return c, c.figure(**params)

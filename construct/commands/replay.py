@@ -1,0 +1,26 @@
+"""construct replay: build (or replay) a construction and write its frames."""
+
+from __future__ import annotations
+
+import sys
+
+from ..render.output import FRAME_MODES, write_replay
+from ._common import add_construction_options, figure_from_args
+
+NAME = "replay"
+HELP = "build a construction and write DIR/final.svg, DIR/steps/NNN.svg and DIR/protocol.json"
+
+
+def add_arguments(p) -> None:
+    add_construction_options(p)
+    p.add_argument("--out", required=True, metavar="DIR", help="output folder")
+    p.add_argument("--style", default="plain", help="drawing style (plain, historical, teaching)")
+    p.add_argument("--frames", default="auto", choices=FRAME_MODES,
+                   help="a frame per step (all), per group (groups), none; auto: all up to 1500 steps")
+
+
+def run(args) -> int:
+    c, fig = figure_from_args(args)
+    info = write_replay(c, fig, args.out, style=args.style, frames=args.frames)
+    print(f"{c.name}: {info['steps']} steps, {info['frames']} frames written to {info['out']}", file=sys.stderr)
+    return 0

@@ -1,0 +1,71 @@
+"""construct table: the books' tables regenerated from the constructions."""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+import sys
+
+from ..errors import InvalidParameter
+from ..tables import TABLES
+from ._common import _number, _whole
+
+NAME = "table"
+HELP = "print a table (piston-path, crank-angle, acceleration, characteristic-points)"
+
+
+def add_arguments(p) -> None:
+    p.add_argument("table", metavar="TABLE", help=", ".join(TABLES))
+    p.add_argument("--rod-ratio", type=_number, action="append", metavar="K", help="L/r (repeat for acceleration)")
+    p.add_argument("--parts", type=_whole, default=18, metavar="N")
+    p.add_argument("--method", default="auto")
+    p.add_argument("--divisions", type=_whole, default=10, metavar="M")
+    p.add_argument("--step", type=_number, default=10.0, metavar="DEG", help="angle step of the acceleration table")
+    p.add_argument("--format", choices=("text", "csv"), default="text")
+
+
+def _one_ratio(args) -> float:
+    if not args.rod_ratio:
+        raise InvalidParameter(f"table {args.table} needs --rod-ratio K")
+    if len(args.rod_ratio) > 1:
+        raise InvalidParameter(f"table {args.table} takes one --rod-ratio (the acceleration table takes several)")
+    return args.rod_ratio[0]
+
+
+def run(args) -> int:
+    if args.table not in TABLES:
+        raise InvalidParameter(f"unknown table {args.table!r}; choose one of {', '.join(TABLES)}")
+    if args.table == "piston-path":
+        cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args), parts=args.parts, method=args.method)
+    elif args.table == "crank-angle":
+        cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args), divisions=args.divisions)
+    elif args.table == "acceleration":
+        if not args.rod_ratio:
+            raise InvalidParameter("table acceleration needs at least one --rod-ratio K")
+        if not (math.isfinite(args.step) and 0 < args.step <= 180):
+            raise InvalidParameter(f"--step must be between 0 and 180 degrees, got {args.step!r}")
+        cols, rows = TABLES[args.table](rod_ratios=args.rod_ratio, step=args.step)
+    else:
+        cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args))
+    sys.stdout.write(format_table(cols, rows, args.format))
+    return 0
+
+
+def _cell(v) -> str:
+    if isinstance(v, float):
+        return f"{v:.15g}"
+    return str(v)
+
+
+def format_table(cols, rows, fmt: str) -> str:
+    if fmt == "csv":
+        buf = io.StringIO()
+        w = csv.writer(buf, lineterminator="\n")
+        w.writerow(cols)
+        for r in rows:
+            w.writerow([_cell(r[c]) for c in cols])
+        return buf.getvalue()
+    cells = [[c for c in cols]] + [[_cell(r[c]) for c in cols] for r in rows]
+    widths = [max(len(row[i]) for row in cells) for i in range(len(cols))]
+    return "".join("  ".join(v.rjust(w) for v, w in zip(row, widths)) + "\n" for row in cells)

@@ -1,0 +1,205 @@
+"""From a replayed protocol to a list of drawable marks, independent of any style.
+
+A draftsman does not draw whole circles and endless lines: he draws a short
+arc around each crossing he wants and a line a little past its last point.
+The scene does the same, from the protocol alone: every point a step marks on
+a curve (an intersection, a "through" point) extends that curve's drawn part.
+Extents are taken from the *whole* construction, so that frame k is exactly
+the first k steps of the final figure and frames line up.
+
+>>> from construct.constructions import get
+>>> fig = get("crank").figure(parts=6, rod_ratio=4.0)
+>>> sc = build_scene(fig)
+>>> sc.marks[0].kind, sc.marks[0].name
+('point', 'O')
+>>> len(sc.upto(5)) < len(sc.marks)
+True
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, Iterable
+
+from ..geometry import Circle, Length, Line, Point
+from ..protocol import Protocol, Replay, Step
+
+__all__ = ["Mark", "Scene", "build_scene", "label_offset_direction"]
+
+TWO_PI = 2.0 * math.pi
+
+
+@dataclass(frozen=True, slots=True)
+class Mark:
+    """One drawable element of the figure.
+
+    ``geom`` by kind: point (x, y); segment (x1, y1, x2, y2); circle (cx, cy, r);
+    arc (cx, cy, r, start, sweep) with angles in radians, counter-clockwise in
+    the y-up drawing plane; curve ((x, y), ...) drawn smooth through its points.
+    """
+
+    id: str
+    step: int
+    name: str
+    kind: str
+    geom: tuple
+    role: str
+    tool: str
+    provenance: str
+    label: str | None = None
+    group: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class Scene:
+    """All marks of a figure in step order, with its bounding box (y up)."""
+
+    marks: tuple[Mark, ...]
+    bbox: tuple[float, float, float, float]  # xmin, ymin, xmax, ymax
+    steps: tuple[Step, ...]
+    title: tuple[str, str]
+    params: dict
+
+    def upto(self, k: int) -> list[Mark]:
+        """The marks made by steps 1..k."""
+        return [m for m in self.marks if m.step <= k]
+
+
+def _safe_id(text: str) -> str:
+    return "".join(c if c.isalnum() or c in "-_" else "-" for c in text)
+
+
+def label_offset_direction(p: tuple[float, float], origin: tuple[float, float] = (0.0, 0.0),
+                           scale: float = 1.0) -> tuple[float, float]:
+    """Where to put a point's letter: radially out from the crank centre, or below the stroke line."""
+    dx, dy = p[0] - origin[0], p[1] - origin[1]
+    if abs(dy) <= 1e-9 * scale:
+        return (0.0, -1.0)
+    n = math.hypot(dx, dy)
+    return (dx / n, dy / n)
+
+
+def _on_curve_points(steps: Iterable[Step], objects: Replay) -> dict[str, list[Point]]:
+    """For every line and circle, the points the construction marks on it."""
+    on: dict[str, list[Point]] = {}
+
+    def add(curve: str, point: str) -> None:
+        obj = objects.get(point)
+        if isinstance(obj, Point):
+            on.setdefault(curve, []).append(obj)
+
+    for s in steps:
+        if s.op == "line":
+            for p in s.inputs:
+                add(s.outputs[0], p)
+        elif s.op == "given_line":
+            add(s.outputs[0], s.inputs[0])
+        elif s.op == "circle_through":
+            add(s.outputs[0], s.inputs[1])
+        elif s.op in ("intersect",):
+            for c in s.inputs:
+                for p in s.outputs:
+                    add(c, p)
+        elif s.op == "neusis_archimedes":
+            pass
+    return on
+
+
+def build_scene(figure: Any, *, title: tuple[str, str] | None = None) -> Scene:
+    """The marks of a built or replayed figure (anything with ``.protocol`` and ``.replay``)."""
+    protocol: Protocol = figure.protocol
+    objects: Replay = figure.replay
+    points = [o for o in objects.values() if isinstance(o, Point)]
+    curves_pts = _curve_points(objects)
+    xs = [p[0] for p in points] + [p[0] for p in curves_pts]
+    ys = [p[1] for p in points] + [p[1] for p in curves_pts]
+    span = max(max(xs) - min(xs), max(ys) - min(ys), 1e-9)
+    margin = 0.035 * span
+    on = _on_curve_points(protocol.steps, objects)
+    marks: list[Mark] = []
+    for s in protocol.steps:
+        labels = dict(s.labels)
+        for name in s.outputs:
+            obj = objects.get(name)
+            if obj is None or isinstance(obj, Length):
+                continue
+            mid = f"s{s.index:04d}-{_safe_id(name)}"
+            common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
+                          group=s.group, label=labels.get(name))
+            if isinstance(obj, Point):
+                marks.append(Mark(mid, kind="point", geom=(obj[0], obj[1]), **common))
+            elif isinstance(obj, Line):
+                marks.append(Mark(mid, kind="segment", geom=_segment_extent(obj, on.get(name, []), margin), **common))
+            elif isinstance(obj, Circle):
+                kind, geom = _circle_extent(obj, on.get(name, []), margin, s.role)
+                marks.append(Mark(mid, kind=kind, geom=geom, **common))
+            elif hasattr(obj, "curve_points"):
+                marks.append(Mark(mid, kind="curve", geom=tuple((p[0], p[1]) for p in obj.curve_points()), **common))
+    # Grow the box by what the curves reach (full circles, arcs, line ends) and the margin.
+    bx0, by0, bx1, by1 = min(xs), min(ys), max(xs), max(ys)
+    for m in marks:
+        for x, y in _extreme_points(m):
+            bx0, by0, bx1, by1 = min(bx0, x), min(by0, y), max(bx1, x), max(by1, y)
+    pad = margin
+    bbox = (bx0 - pad, by0 - pad, bx1 + pad, by1 + pad)
+    if title is None:
+        title = (protocol.construction, protocol.construction)
+    return Scene(tuple(marks), bbox, protocol.steps, title, dict(protocol.params))
+
+
+def _curve_points(objects: Replay) -> list[tuple[float, float]]:
+    pts: list[tuple[float, float]] = []
+    for o in objects.values():
+        if hasattr(o, "curve_points"):
+            pts.extend(o.curve_points())
+    return pts
+
+
+def _segment_extent(line: Line, pts: list[Point], margin: float) -> tuple[float, float, float, float]:
+    (px, py), _ = line
+    ux, uy = line.direction()
+    ts = [(q[0] - px) * ux + (q[1] - py) * uy for q in pts] or [0.0, 1.0]
+    t0, t1 = min(ts) - margin, max(ts) + margin
+    return (px + t0 * ux, py + t0 * uy, px + t1 * ux, py + t1 * uy)
+
+
+def _circle_extent(circle: Circle, pts: list[Point], margin: float, role: str) -> tuple[str, tuple]:
+    (cx, cy), r = circle
+    if role == "result" or not pts:
+        return "circle", (cx, cy, r)
+    angles: list[float] = []
+    for a in sorted(math.atan2(p[1] - cy, p[0] - cx) % TWO_PI for p in pts):
+        if not angles or a - angles[-1] > 1e-9:  # the same point marked twice counts once
+            angles.append(a)
+    if len(angles) > 1 and angles[0] + TWO_PI - angles[-1] <= 1e-9:
+        angles.pop()
+    # The drawn arc is the complement of the largest empty gap between marked points.
+    gaps = [(angles[(i + 1) % len(angles)] - a) % TWO_PI or (TWO_PI if len(angles) == 1 else 0.0)
+            for i, a in enumerate(angles)]
+    i = max(range(len(gaps)), key=gaps.__getitem__)
+    start = angles[(i + 1) % len(angles)]
+    sweep = TWO_PI - gaps[i]
+    pad = min(margin / r, 0.6)
+    start, sweep = start - pad, sweep + 2.0 * pad
+    if sweep >= 0.92 * TWO_PI:
+        return "circle", (cx, cy, r)
+    return "arc", (cx, cy, r, start, sweep)
+
+
+def _extreme_points(m: Mark) -> list[tuple[float, float]]:
+    g = m.geom
+    if m.kind == "point":
+        return [g]
+    if m.kind == "segment":
+        return [(g[0], g[1]), (g[2], g[3])]
+    if m.kind == "circle":
+        cx, cy, r = g
+        return [(cx - r, cy - r), (cx + r, cy + r)]
+    if m.kind == "arc":
+        cx, cy, r, a0, sw = g
+        n = max(2, int(sw / 0.1) + 1)
+        return [(cx + r * math.cos(a0 + sw * i / (n - 1)), cy + r * math.sin(a0 + sw * i / (n - 1))) for i in range(n)]
+    if m.kind == "curve":
+        return list(g)
+    return []

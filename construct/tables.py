@@ -1,0 +1,104 @@
+"""The books' tables, regenerated from constructions for any rod ratio.
+
+Each table is a function returning ``(columns, rows)``; every number in it is
+measured on a construction, with the analytic value beside it where the
+table has a column for it.
+
+>>> cols, rows = piston_path_table(rod_ratio=4.0, parts=2)
+>>> cols
+('index', 'crank_angle_deg', 'x_constructed', 'x_exact', 'x_book')
+>>> [round(r["x_constructed"], 9) for r in rows]
+[0.0, 0.563508327, 1.0]
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Callable, Sequence
+
+from . import analytic
+from .constructions import get
+from .constructions.crank import crank_angle, piston_fraction, point_name
+from .errors import InvalidParameter
+
+__all__ = ["TABLES", "piston_path_table", "crank_angle_table", "acceleration_table", "characteristic_points_table"]
+
+Table = tuple[tuple[str, ...], list[dict[str, Any]]]
+
+
+def piston_path_table(*, rod_ratio: float, parts: int = 18, method: str = "auto", r: float = 1.0) -> Table:
+    """Piston path at each division point, constructed, exact and by the book's Gl. (1) (fraction of the stroke)."""
+    fig = get("crank").figure(rod_ratio=rod_ratio, parts=parts, method=method, r=r)
+    g = fig.replay.givens
+    L = g["rod_ratio"] * g["r"]
+    rows = []
+    for k in range(parts + 1):
+        w = math.pi * k / parts
+        rows.append({
+            "index": k,
+            "crank_angle_deg": math.degrees(crank_angle(fig, point_name(fig, k))),
+            "x_constructed": piston_fraction(fig, k),
+            "x_exact": analytic.piston_path_exact(w, g["r"], L) / (2 * g["r"]),
+            "x_book": analytic.piston_path_book(w, g["r"], L) / (2 * g["r"]),
+        })
+    return ("index", "crank_angle_deg", "x_constructed", "x_exact", "x_book"), rows
+
+
+def crank_angle_table(*, rod_ratio: float, divisions: int = 10, r: float = 1.0) -> Table:
+    """Tabelle 2's angle columns: the crank angle for each division of the stroke, constructed and by Gl. (h)."""
+    fig = get("crank-angle").figure(rod_ratio=rod_ratio, divisions=divisions, r=r)
+    g = fig.replay.givens
+    L = g["rod_ratio"] * g["r"]
+    rows = []
+    for j in range(divisions + 1):
+        x = j / divisions
+        rows.append({
+            "x": x,
+            "omega_constructed_deg": math.degrees(crank_angle(fig, f"W{j}")),
+            "omega_exact_deg": math.degrees(analytic.crank_angle_from_path(2 * g["r"] * x, g["r"], L)),
+        })
+    cols: tuple[str, ...] = ("x", "omega_constructed_deg", "omega_exact_deg")
+    q_rows = _inertia("q_at_crank_angle_rows")
+    if q_rows is not None:
+        for row, extra in zip(rows, q_rows(rod_ratio=rod_ratio, divisions=divisions)):
+            row["q"] = extra["q"]
+        cols += ("q",)
+    return cols, rows
+
+
+def acceleration_table(*, rod_ratios: Sequence[float], step: float = 10.0) -> Table:
+    """Tabelle 1 for any rod ratios, long format (q for F/f = 1)."""
+    fn = _require("acceleration_rows")
+    rows = []
+    for k in rod_ratios:
+        rows.extend(fn(rod_ratio=k, step_deg=step))
+    return ("rod_ratio", "omega_deg", "cos_omega", "cos_2omega", "lambda_cos_2omega", "q"), rows
+
+
+def characteristic_points_table(*, rod_ratio: float) -> Table:
+    """The seven characteristic points q1..q7 of the inertia curve, measured on the construction."""
+    fn = _require("characteristic_point_rows")
+    return ("point", "omega_deg", "x", "q"), fn(rod_ratio=rod_ratio)
+
+
+def _inertia(name: str) -> Callable[..., list[dict[str, Any]]] | None:
+    try:
+        from .constructions import inertia
+    except ImportError:
+        return None
+    return getattr(inertia, name, None)
+
+
+def _require(name: str) -> Callable[..., list[dict[str, Any]]]:
+    fn = _inertia(name)
+    if fn is None:
+        raise InvalidParameter(f"this table needs the inertia-curve construction, which is not available")
+    return fn
+
+
+TABLES = {
+    "piston-path": piston_path_table,
+    "crank-angle": crank_angle_table,
+    "acceleration": acceleration_table,
+    "characteristic-points": characteristic_points_table,
+}

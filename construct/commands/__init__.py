@@ -17,6 +17,7 @@ _NAMES = [
     # one line per subcommand module, in the order `construct --help` lists them
     "errata",
     "diff",
+    "verify",
 ]
 
 MODULES = [importlib.import_module(f"{__name__}.{name}") for name in _NAMES]

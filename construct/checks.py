@@ -5,7 +5,7 @@ chain of a Euclidean construction, or the known error of an approximate one).
 
 >>> c = Check("demo", measured=0.50000000000001, expected=0.5, tolerance=1e-12, why="float chain")
 >>> c.ok, f"{c.error:.1e}"
-(True, 1.0e-14)
+(True, '1.0e-14')
 """
 
 from __future__ import annotations

@@ -86,13 +86,13 @@ class Point(tuple):
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Point):
-            return NotImplemented
+            # A plain tuple with the same numbers is not a Point.
+            return False if isinstance(other, tuple) else NotImplemented
         return tuple.__eq__(self, other)
 
     def __ne__(self, other: object) -> bool:
-        if not isinstance(other, Point):
-            return NotImplemented
-        return tuple.__ne__(self, other)
+        eq = self.__eq__(other)
+        return eq if eq is NotImplemented else not eq
 
     __hash__ = tuple.__hash__
 
@@ -132,13 +132,13 @@ class Line(tuple):
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Line):
-            return NotImplemented
+            # A plain tuple with the same numbers is not a Line.
+            return False if isinstance(other, tuple) else NotImplemented
         return tuple.__eq__(self, other)
 
     def __ne__(self, other: object) -> bool:
-        if not isinstance(other, Line):
-            return NotImplemented
-        return tuple.__ne__(self, other)
+        eq = self.__eq__(other)
+        return eq if eq is NotImplemented else not eq
 
     __hash__ = tuple.__hash__
 
@@ -172,13 +172,13 @@ class Circle(tuple):
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Circle):
-            return NotImplemented
+            # A plain tuple with the same numbers is not a Circle.
+            return False if isinstance(other, tuple) else NotImplemented
         return tuple.__eq__(self, other)
 
     def __ne__(self, other: object) -> bool:
-        if not isinstance(other, Circle):
-            return NotImplemented
-        return tuple.__ne__(self, other)
+        eq = self.__eq__(other)
+        return eq if eq is NotImplemented else not eq
 
     __hash__ = tuple.__hash__
 

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import contextlib
 import math
+from dataclasses import replace
 from types import MappingProxyType
 from typing import Any, Iterator, Mapping, Sequence
 
@@ -104,6 +105,16 @@ class Builder:
             self.objects[name] = value
             self.provenance[name] = provenance
         return values
+
+    def set_label(self, name: str, text: str) -> None:
+        """Letter an object already made (the figure prints *text* beside it)."""
+        for i, step in enumerate(self.steps):
+            if name in step.outputs:
+                labels = dict(step.labels)
+                labels[name] = text
+                self.steps[i] = replace(step, labels=tuple(sorted(labels.items())))
+                return
+        raise InvalidParameter(f"no object {name!r} to label")
 
     def _inherited(self, tool: str, inputs: Sequence[str]) -> Provenance:
         """An object is as trustworthy as the weakest object it was made from."""

@@ -552,10 +552,12 @@ class Protocol:
     def as_dict(self, replay: Replay | None = None) -> dict[str, Any]:
         if replay is None:
             replay = self.replay()
+        params = dict(self.params)
+        params["givens"] = dict(replay.givens)  # the givens this replay was made with
         return {
             "format": PROTOCOL_FORMAT,
             "construction": self.construction,
-            "params": _jsonable(dict(self.params)),
+            "params": _jsonable(params),
             "givens": list(self.givens),
             "instruments": self.instrument_counts(),
             "steps": [s.as_dict() for s in self.steps],

@@ -70,6 +70,8 @@ def build_crank(*, rod_ratio: float, parts: int, method: str, r: float) -> Figur
     f = build_frame(b)
     points = divide_semicircle(b, O=f["O"], D0=f["D0"], D1=f["D1"], circle=f["circle"], axis=f["axis"],
                                n=parts, method=used)
+    for k, p in enumerate(points):
+        b.set_label(p, str(k))  # the books number the division points 0, 1, ..., n
     rod_arcs(b, f, points)
     infinite_rod(b, f, points)
     proto = b.protocol()

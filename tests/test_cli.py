@@ -1,0 +1,162 @@
+"""The command line contract: outputs, exit codes, and one clear line for bad input."""
+
+import csv
+import io
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from construct.cli import main
+from construct.errors import OutputError
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_list_names_the_constructions(capsys):
+    code, out, _ = run(capsys, "list")
+    assert code == 0 and "crank " in out and "crank-angle" in out
+
+
+def test_replay_writes_frames_final_and_protocol(tmp_path, capsys):
+    out = tmp_path / "o"
+    code, _, err = run(capsys, "replay", "crank", "--parts", "6", "--rod-ratio", "4", "--out", str(out))
+    assert code == 0, err
+    proto = json.loads((out / "protocol.json").read_text())
+    n = len(proto["steps"])
+    frames = sorted((out / "steps").iterdir())
+    assert [f.name for f in frames] == [f"{k:03d}.svg" for k in range(1, n + 1)]
+    assert (out / "final.svg").read_text().startswith("<?xml")
+    assert not [p for p in out.iterdir() if p.name.startswith(".construct-staging")]
+    # Frame k holds exactly the marks of steps 1..k: the ids carry the step index.
+    import re
+
+    ids = lambda p: {int(m) for m in re.findall(r'id="s(\d{4})-', p.read_text())}
+    assert max(ids(frames[9])) == 10 or max(ids(frames[9])) < 10  # step 10 may make a length (not drawn)
+    assert ids(frames[9]) <= set(range(1, 11)) and ids(frames[-1]) == ids(out / "final.svg")
+
+
+def test_replay_of_an_exported_protocol_with_new_givens_equals_a_fresh_build(tmp_path, capsys):
+    a, b, c = tmp_path / "a", tmp_path / "b", tmp_path / "c"
+    assert run(capsys, "replay", "crank", "--parts", "9", "--rod-ratio", "4", "--frames", "none", "--out", str(a))[0] == 0
+    assert run(capsys, "replay", "--protocol", str(a / "protocol.json"), "--rod-ratio", "6", "--frames", "none",
+               "--out", str(b))[0] == 0
+    assert run(capsys, "replay", "crank", "--parts", "9", "--rod-ratio", "6", "--frames", "none", "--out", str(c))[0] == 0
+    assert json.loads((b / "protocol.json").read_text()) == json.loads((c / "protocol.json").read_text())
+
+
+def test_check_exit_codes_and_json(capsys, tmp_path):
+    code, out, _ = run(capsys, "check", "crank", "--json")
+    data = json.loads(out)
+    assert code == 0 and data["construction"] == "crank" and data["params"]["parts"] == 18
+    assert {"name", "measured", "expected", "error", "tolerance", "ok"} <= set(data["checks"][0])
+    assert all(c["ok"] for c in data["checks"])
+    # A protocol whose crosshead takes the wrong branch fails its checks: exit 1.
+    run(capsys, "replay", "crank", "--parts", "6", "--frames", "none", "--out", str(tmp_path / "p"))
+    proto = json.loads((tmp_path / "p" / "protocol.json").read_text())
+    step = next(s for s in proto["steps"] if s["outputs"] == ["C2"])
+    step["params"]["rule"] = ["toward", "O", None, 1.0, 0.0]
+    (tmp_path / "bad.json").write_text(json.dumps(proto))
+    code, out, _ = run(capsys, "check", "--protocol", str(tmp_path / "bad.json"))
+    assert code == 1 and "FAIL" in out
+
+
+def test_piston_path_table_csv(capsys):
+    code, out, _ = run(capsys, "table", "piston-path", "--rod-ratio", "4", "--parts", "18", "--format", "csv")
+    rows = list(csv.DictReader(io.StringIO(out)))
+    assert code == 0 and list(rows[0]) == ["index", "crank_angle_deg", "x_constructed", "x_exact", "x_book"]
+    assert len(rows) == 19 and float(rows[-1]["x_constructed"]) == pytest.approx(1.0, abs=1e-12)
+    assert float(rows[9]["crank_angle_deg"]) == pytest.approx(90.0, abs=1e-9)
+
+
+def test_crank_angle_table_csv(capsys):
+    code, out, _ = run(capsys, "table", "crank-angle", "--rod-ratio", "5", "--format", "csv")
+    rows = list(csv.DictReader(io.StringIO(out)))
+    assert code == 0 and list(rows[0])[:3] == ["x", "omega_constructed_deg", "omega_exact_deg"]
+    assert len(rows) == 11 and float(rows[5]["omega_constructed_deg"]) == pytest.approx(84 + 15.65 / 60, abs=0.01 / 60)
+
+
+def test_bench_json_shape(capsys):
+    code, out, _ = run(capsys, "bench", "--json", "--parts", "6")
+    data = json.loads(out)
+    assert code == 0 and {"case", "steps", "build_s", "replay_s"} <= set(data[0]) and data[0]["steps"] > 0
+
+
+BAD = [
+    ["replay", "crank", "--rod-ratio", "1", "--out", "{out}"],
+    ["replay", "crank", "--rod-ratio", "0.5", "--out", "{out}"],
+    ["replay", "crank", "--rod-ratio", "nan", "--out", "{out}"],
+    ["replay", "crank", "--rod-ratio", "inf", "--out", "{out}"],
+    ["replay", "crank", "--parts", "0", "--out", "{out}"],
+    ["replay", "crank", "--parts", "1000000", "--out", "{out}"],
+    ["replay", "crank", "--parts", "-3", "--out", "{out}"],
+    ["replay", "crank", "--radius", "-1", "--out", "{out}"],
+    ["replay", "crank", "--method", "magic", "--out", "{out}"],
+    ["replay", "crank", "--parts", "18", "--method", "exact", "--out", "{out}"],
+    ["replay", "nosuch", "--out", "{out}"],
+    ["replay", "crank", "--divisions", "3", "--out", "{out}"],
+    ["replay", "--protocol", "{bad}", "--out", "{out}"],
+    ["replay", "--protocol", "{missing}", "--out", "{out}"],
+    ["replay", "crank", "--parts", "x", "--out", "{out}"],
+    ["check", "crank", "--rod-ratio", "-2"],
+    ["table", "piston-path", "--rod-ratio", "0.9"],
+    ["table", "nosuch", "--rod-ratio", "4"],
+    ["frobnicate"],
+]
+
+
+@pytest.mark.parametrize("argv", BAD, ids=[" ".join(a[:4]) for a in BAD])
+def test_bad_input_gives_one_line_exit_2_and_writes_nothing(argv, tmp_path):
+    bad = tmp_path / "bad.json"
+    bad.write_text('{"construction": "crank", "steps": 3}')
+    out = tmp_path / "out"
+    args = [a.format(out=out, bad=bad, missing=tmp_path / "missing.json") for a in argv]
+    proc = subprocess.run([sys.executable, "-m", "construct", *args], capture_output=True, text=True)
+    assert proc.returncode == 2, proc.stderr
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("construct"), proc.stderr
+    assert "Traceback" not in proc.stderr
+    assert not out.exists()
+
+
+def test_unwritable_output_folder(tmp_path):
+    blocker = tmp_path / "file"
+    blocker.write_text("not a folder")
+    for target in (blocker, blocker / "sub"):
+        proc = subprocess.run([sys.executable, "-m", "construct", "replay", "crank", "--parts", "2", "--out",
+                               str(target)], capture_output=True, text=True)
+        assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1, proc.stderr
+    assert blocker.read_text() == "not a folder"
+
+
+@pytest.mark.skipif(os.geteuid() == 0, reason="root can write into read-only folders")
+def test_read_only_output_folder(tmp_path):
+    ro = tmp_path / "ro"
+    ro.mkdir()
+    ro.chmod(0o500)
+    proc = subprocess.run([sys.executable, "-m", "construct", "replay", "crank", "--parts", "2", "--out", str(ro / "x")],
+                          capture_output=True, text=True)
+    assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1
+
+
+def test_a_failure_midway_leaves_the_previous_output_intact(tmp_path, capsys, monkeypatch):
+    out = tmp_path / "o"
+    assert run(capsys, "replay", "crank", "--parts", "3", "--frames", "none", "--out", str(out))[0] == 0
+    before = {p.name: p.read_bytes() for p in out.iterdir() if p.is_file()}
+    import construct.render.output as ro
+
+    def boom(*a, **k):
+        raise OutputError("disk full (simulated)")
+
+    monkeypatch.setattr(ro, "render_svg", boom)
+    code, _, err = run(capsys, "replay", "crank", "--parts", "6", "--out", str(out))
+    assert code == 2 and "disk full" in err
+    assert {p.name: p.read_bytes() for p in out.iterdir() if p.is_file()} == before
+    assert not [p for p in out.iterdir() if p.name.startswith(".construct-staging")]

@@ -1,0 +1,62 @@
+"""Composite steps made of compass and straightedge only, checked against plain coordinates."""
+
+import math
+
+import pytest
+
+from construct.instruments import Builder
+
+PRIMITIVE_TOOLS = {"given", "straightedge", "compass", "intersect"}
+
+
+def builder_with(**points):
+    b = Builder("demo", givens={})
+    for name, (x, y) in points.items():
+        b.given_point(name, x, y)
+    return b
+
+
+@pytest.mark.parametrize("n", [2, 3, 5, 7, 10])
+def test_divide_segment_by_the_intercept_theorem(n):
+    b = builder_with(A=(0.3, -1.2), B=(4.1, 2.2))
+    pts = b.divide_segment("T", "A", "B", n)
+    for k, name in enumerate(pts, start=1):
+        assert b[name].x == pytest.approx(0.3 + 3.8 * k / n, abs=1e-12)
+        assert b[name].y == pytest.approx(-1.2 + 3.4 * k / n, abs=1e-12)
+    assert {s.tool for s in b.steps} <= PRIMITIVE_TOOLS
+
+
+def test_midpoint_and_perpendicular_bisector():
+    b = builder_with(A=(1.0, 1.0), B=(5.0, 3.0))
+    m = b.midpoint("M", "A", "B")
+    assert (b[m].x, b[m].y) == pytest.approx((3.0, 2.0), abs=1e-12)
+
+
+def test_erect_perpendicular_is_perpendicular():
+    b = builder_with(A=(0.0, 0.0), B=(3.0, 1.0))
+    g = b.line("g", "A", "B")
+    mid = b.divide_segment("T", "A", "B", 3, line=g, only=[1])[0]
+    perp = b.erect_perpendicular("p", mid, g, "A")
+    (px, py), (qx, qy) = b[perp]
+    assert (qx - px) * 3.0 + (qy - py) * 1.0 == pytest.approx(0.0, abs=1e-12)
+
+
+def test_parallel_through_a_point():
+    b = builder_with(A=(0.0, 0.0), B=(2.0, 1.0), P=(0.5, 3.0))
+    par = b.parallel_through("q", "P", "A", "B")
+    (px, py), (qx, qy) = b[par]
+    assert (qx - px) * 1.0 - (qy - py) * 2.0 == pytest.approx(0.0, abs=1e-12)
+    assert (px, py) == (0.5, 3.0)
+
+
+def test_bisect_arc_and_copy_arc():
+    b = Builder("demo", givens={"r": 1.0})
+    O = b.given_point("O", 0.0, 0.0)
+    r = b.given_length("r", product=("r",))
+    k = b.circle_radius("k", O, r)
+    b.given_point("A", 1.0, 0.0)
+    b.given_point("B", math.cos(1.0), math.sin(1.0))
+    m = b.bisect_arc("M", O, "A", "B", k)
+    assert math.atan2(b[m].y, b[m].x) == pytest.approx(0.5, abs=1e-12)
+    c = b.copy_arc("C", k, "B", "A", "B", away_from="A")
+    assert math.atan2(b[c].y, b[c].x) == pytest.approx(2.0, abs=1e-12)

@@ -29,7 +29,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="replace the goldens by the rebuilt gallery and report what changed")
     parser.add_argument("--tolerance", type=float, default=DEFAULT_TOLERANCE, metavar="T",
                         help=f"SVG differences at or below T drawing units are equal (default {DEFAULT_TOLERANCE:g}: "
-                             "1.5 times the 0.001 quantum of the renderer's numbers)")
+                             "under half of the renderer's 0.01 quantum, far above float noise)")
     parser.add_argument("--max-changes", type=int, default=MAX_CHANGES, metavar="N",
                         help=f"changes listed per file (default {MAX_CHANGES})")
 

@@ -378,7 +378,9 @@ def _dividers_division(b: Builder, D0: str, D1: str, circle: str, n: int) -> lis
                  provenance=Provenance("trial", "dividers by trial", TRIAL_TOLERANCE))
         points = [D0]
         for k in range(1, n):
-            kc = b.circle_radius(b.fresh("step.k"), points[-1], e)
             rule = ("left", D0, D1) if k == 1 else ("farther", points[-2])
-            points.append(b.intersect(_point_name(b, k), kc, circle, rule=rule))
+            name = _point_name(b, k)
+            points.append(b.step_off(name, circle, points[-1], e, rule=rule,
+                                     de=f"Teilpunkt {k}: Stechzirkel von {k - 1} aus abgesetzt",
+                                     en=f"division point {k}: dividers set down from point {k - 1}"))
     return points + [D1]

@@ -202,7 +202,26 @@ class Builder:
                     en or f"{' and '.join(names)} where {c1} meets {c2}", role=role, labels=labels)
         return names[0] if len(names) == 1 else names
 
+    def step_off(self, name: str, curve: str, start: str, length: str, *, rule: Sequence[Any],
+                 de: str | None = None, en: str | None = None, role: str = "construction") -> str:
+        """Dividers: step the opening *length* off along *curve* from *start*; prick the point."""
+        self.record("dividers", "step_off", (curve, start, length), (name,), {"rule": tuple(rule), "both": False},
+                    de or f"{name}: Stechzirkel {length} von {start} auf {curve} abgetragen",
+                    en or f"{name}: dividers {length} stepped off from {start} along {curve}", role=role)
+        return name
+
     # -- composite steps -------------------------------------------------------
+    def bisect_angle(self, name: str, vertex: str, a: str, b: str) -> str:
+        """The bisector of the angle a-vertex-b (less than two right angles)."""
+        with self.group(f"angle {a}{vertex}{b} bisected", f"Winkel {a}{vertex}{b} halbiert"):
+            k = self.circle_through(self.fresh(f"{name}.k"), vertex, a)
+            arm = self.line(self.fresh(f"{name}.g"), vertex, b)
+            b2 = self.intersect(self.fresh(f"{name}.B"), arm, k, rule=("nearer", b))
+            ka = self.circle_through(self.fresh(f"{name}.k"), a, b2)
+            kb = self.circle_through(self.fresh(f"{name}.k"), b2, a)
+            s = self.intersect(self.fresh(f"{name}.S"), ka, kb, rule=("farther", vertex))
+            return self.line(name, vertex, s, de=f"Winkelhalbierende {name}", en=f"angle bisector {name}")
+
     def perpendicular_bisector(self, name: str, a: str, b: str) -> str:
         """The perpendicular bisector of ab: two equal circles and the line through their crossings."""
         with self.group(f"perpendicular bisector of {a}{b}", f"Mittelsenkrechte von {a}{b}"):

@@ -60,3 +60,22 @@ def test_bisect_arc_and_copy_arc():
     assert math.atan2(b[m].y, b[m].x) == pytest.approx(0.5, abs=1e-12)
     c = b.copy_arc("C", k, "B", "A", "B", away_from="A")
     assert math.atan2(b[c].y, b[c].x) == pytest.approx(2.0, abs=1e-12)
+
+
+def test_bisect_angle():
+    b = builder_with(V=(1.0, 1.0), A=(4.0, 1.0), B=(1.0 + 2 * math.cos(1.2), 1.0 + 2 * math.sin(1.2)))
+    w = b.bisect_angle("w", "V", "A", "B")
+    (px, py), (qx, qy) = b[w]
+    assert math.atan2(qy - py, qx - px) == pytest.approx(0.6, abs=1e-12)
+
+
+def test_dividers_step_off_pricks_a_point_at_the_opening():
+    b = Builder("demo", givens={"r": 1.0, "e": 0.3})
+    O = b.given_point("O", 0.0, 0.0)
+    k = b.circle_radius("k", O, b.given_length("r", product=("r",)))
+    b.given_point("A", -1.0, 0.0)
+    b.given_point("B", 1.0, 0.0)
+    e = b.given_length("e", product=("e",))
+    p = b.step_off("P", k, "A", e, rule=("left", "A", "B"))
+    assert b[p].distance(b["A"]) == pytest.approx(0.3, abs=1e-15) and b[p].y > 0
+    assert b.steps[-1].tool == "dividers"

@@ -8,7 +8,8 @@ from ..render.output import FRAME_MODES, write_replay
 from ._common import add_construction_options, figure_from_args
 
 NAME = "replay"
-HELP = "build a construction and write DIR/final.svg, DIR/steps/NNN.svg and DIR/protocol.json"
+HELP = ("build a construction and write DIR/final.svg, DIR/steps/NNN.svg, DIR/protocol.json, "
+        "DIR/animated.svg, DIR/player.html and DIR/storyboard.png")
 
 
 def add_arguments(p) -> None:

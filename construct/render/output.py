@@ -1,7 +1,9 @@
 """Writing a replayed construction to a folder: frames, final figure, protocol.
 
-``DIR/final.svg``, ``DIR/steps/NNN.svg`` (frame k shows steps 1..k) and
-``DIR/protocol.json``; everything is staged and moved into place only when
+``DIR/final.svg`` (in the historical style the book plate), ``DIR/steps/NNN.svg``
+(frame k shows steps 1..k), ``DIR/protocol.json``, ``DIR/animated.svg`` (plays
+without script), ``DIR/player.html`` (the step player, one file) and
+``DIR/storyboard.png`` (contact sheet); everything is staged and moved into place only when
 all of it has been written (:func:`construct.output.staged_output`).
 """
 
@@ -13,9 +15,10 @@ from typing import Any, Callable
 from ..constructions import Construction, Figure
 from ..output import staged_output, write_text
 from .scene import Scene, build_scene
-from .svg import PLAIN, Style, render_svg
+from .svg import PLAIN, Drawing, Style, render_svg
 
-__all__ = ["FRAME_MODES", "frame_steps", "write_replay", "EXTRA_WRITERS", "scene_for"]
+__all__ = ["FRAME_MODES", "frame_steps", "write_replay", "write_outputs", "EXTRA_WRITERS", "scene_for",
+           "figure_title", "plate_caption", "params_text"]
 
 FRAME_MODES = ("auto", "all", "groups", "none")
 #: Above this many steps "auto" writes a frame per group instead of per step:
@@ -42,18 +45,65 @@ def frame_steps(scene: Scene, mode: str) -> list[int]:
     return sorted(ends)
 
 
-def scene_for(construction: Construction, figure: Figure) -> Scene:
+def scene_for(construction: Construction, figure: Figure, *, plate: bool = False) -> Scene:
+    return build_scene(figure, title=figure_title(construction, figure), plate=plate)
+
+
+def params_text(figure: Figure) -> str:
+    """The figure's givens and parameters, e.g. ``r = 1, rod_ratio = 5, parts = 18, method = durer``."""
+    givens = [f"{k} = {v:g}" for k, v in sorted(figure.replay.givens.items())]
+    params = [f"{k} = {v}" for k, v in sorted(figure.params.items())
+              if k not in ("givens", "group_titles", "requested_method")]
+    return ", ".join(givens + params)
+
+
+def figure_title(construction: Construction, figure: Figure) -> tuple[str, str]:
     title = construction.title
-    params = ", ".join(f"{k} = {v}" for k, v in sorted(figure.params.items()) if k not in ("givens", "group_titles"))
-    givens = ", ".join(f"{k} = {v:g}" for k, v in sorted(figure.replay.givens.items()))
-    return build_scene(figure, title=(f"{title.de} ({construction.source}); {givens}, {params}",
-                                      f"{title.en}; {givens}, {params}"))
+    p = params_text(figure)
+    return (f"{title.de} ({construction.source}); {p}", f"{title.en}; {p}")
+
+
+def plate_caption(construction: Construction, figure: Figure, number: int | str | None = None) -> tuple[str, str]:
+    """A book plate's caption: "Fig. 1. Kolbenwege aus dem Kurbelkreis." and the English with the parameters."""
+    fig = f"Fig. {number}." if number is not None else "Fig."
+    return (f"{fig} {construction.title.de}.", f"{construction.title.en} ({params_text(figure)}; {construction.source})")
+
+
+def write_outputs(stage: Path, construction: Construction, figure: Figure, st: Style, *, frames: str = "auto",
+                  fig_number: int | str | None = None) -> dict[str, Any]:
+    """Write final.svg, steps/, protocol.json, animated.svg, player.html and storyboard.png into *stage*."""
+    from .animate import animated_svg
+    from .player import player_html
+    from .storyboard import storyboard_png
+
+    scene = scene_for(construction, figure)
+    drawing = Drawing(scene, st)
+    if st.plate:
+        plate = Drawing(scene_for(construction, figure, plate=True), st, caption_lines=2)
+        final = plate.final(plate_caption(construction, figure, fig_number), centred=st.fig_caption)
+    else:
+        final = drawing.final()
+    write_text(stage / "final.svg", final)
+    ks = frame_steps(scene, frames)
+    width = max(3, len(str(len(scene.steps))))
+    steps_dir = stage / "steps"
+    if ks:
+        steps_dir.mkdir()
+    for k in ks:
+        write_text(steps_dir / f"{k:0{width}d}.svg", drawing.frame(k))
+    write_text(stage / "protocol.json", figure.protocol.to_json(figure.replay))
+    write_text(stage / "animated.svg", animated_svg(scene, st))
+    givens = {**dict(figure.replay.givens),
+              **{k: v for k, v in figure.params.items() if k not in ("givens", "group_titles", "requested_method")}}
+    write_text(stage / "player.html", player_html(scene, st, givens=givens))
+    (stage / "storyboard.png").write_bytes(storyboard_png(scene, st))
+    return {"steps": len(scene.steps), "frames": len(ks)}
 
 
 def write_replay(construction: Construction, figure: Figure, out_dir: str | Path, *, style: str = "plain",
                  frames: str = "auto", styles: dict[str, Style] | None = None) -> dict[str, Any]:
     """Write everything a replay produces; return a summary (counts, paths)."""
-    from . import styles as style_module  # noqa: F401 - registers the styles it defines
+    from . import styles as style_module
 
     table = styles or style_module.STYLES
     if style not in table:
@@ -61,16 +111,10 @@ def write_replay(construction: Construction, figure: Figure, out_dir: str | Path
 
         raise InvalidParameter(f"unknown style {style!r}; choose one of {', '.join(sorted(table))}")
     st = table[style]
-    scene = scene_for(construction, figure)
-    ks = frame_steps(scene, frames)
-    width = max(3, len(str(len(scene.steps))))
     with staged_output(out_dir) as stage:
-        write_text(stage / "final.svg", render_svg(scene, style=st))
-        steps_dir = stage / "steps"
-        steps_dir.mkdir()
-        for k in ks:
-            write_text(steps_dir / f"{k:0{width}d}.svg", render_svg(scene, upto=k, style=st))
-        write_text(stage / "protocol.json", figure.protocol.to_json(figure.replay))
-        for name, writer in sorted(EXTRA_WRITERS.items()):
-            writer(scene, figure, stage, style)
-    return {"steps": len(scene.steps), "frames": len(ks), "out": str(out_dir)}
+        info = write_outputs(stage, construction, figure, st, frames=frames)
+        if EXTRA_WRITERS:
+            scene = scene_for(construction, figure)
+            for name, writer in sorted(EXTRA_WRITERS.items()):
+                writer(scene, figure, stage, style)
+    return {**info, "out": str(out_dir)}

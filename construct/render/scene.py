@@ -65,6 +65,64 @@ class Scene:
         """The marks made by steps 1..k."""
         return [m for m in self.marks if m.step <= k]
 
+    def stage_box(self, k: int) -> tuple[float, float, float, float]:
+        """The region of step k's top-level group (all its steps), with a margin.
+
+        A teaching frame shows this region: the division of the crank circle is
+        seen large, the far-reaching rod arcs in the whole figure.
+        """
+        if not 1 <= k <= len(self.steps):
+            return self.bbox
+        top = self.steps[k - 1].group[:1]
+        start, end = k, k
+        while start > 1 and self.steps[start - 2].group[:1] == top:
+            start -= 1
+        while end < len(self.steps) and self.steps[end].group[:1] == top:
+            end += 1
+        # Lines are left out: they are drawn as far as points of the whole construction
+        # (the stroke line reaches the far crossheads) but say nothing about the stage.
+        pts = [p for m in self.marks if start <= m.step <= end and m.kind != "segment" for p in _extreme_points(m)]
+        if not pts:
+            return self.bbox
+        x0, x1 = min(p[0] for p in pts), max(p[0] for p in pts)
+        y0, y1 = min(p[1] for p in pts), max(p[1] for p in pts)
+        pad = 0.06 * max(x1 - x0, y1 - y0, 1e-9)
+        b = self.bbox
+        return (max(b[0], x0 - pad), max(b[1], y0 - pad), min(b[2], x1 + pad), min(b[3], y1 + pad))
+
+    def group_box(self, k: int, below: float = 1.0,
+                  within: tuple[float, float, float, float] | None = None) -> tuple[float, float, float, float] | None:
+        """The box of the widest group around step k smaller than *below* times the figure (None: none is).
+
+        The whole group counts, later steps too, so that a magnified view stays put
+        while the group is drawn.  *within* measures against another region than the whole figure.
+        """
+        if not 1 <= k <= len(self.steps):
+            return None
+        x0, y0, x1, y1 = within or self.bbox
+        limit = below * max(x1 - x0, y1 - y0)
+        path = self.steps[k - 1].group
+        for depth in range(1, len(path) + 1):
+            box = self._group_boxes().get(path[:depth])
+            if box is not None and max(box[2] - box[0], box[3] - box[1]) < limit:
+                return box
+        return None
+
+    def _group_boxes(self) -> dict[tuple[str, ...], tuple[float, float, float, float]]:
+        cached = self.__dict__.get("_boxes")
+        if cached is None:
+            cached = {}
+            for m in self.marks:
+                pts = _extreme_points(m)
+                for depth in range(1, len(m.group) + 1):
+                    key = m.group[:depth]
+                    for x, y in pts:
+                        b = cached.get(key)
+                        cached[key] = (x, y, x, y) if b is None else (min(b[0], x), min(b[1], y),
+                                                                       max(b[2], x), max(b[3], y))
+            self.__dict__["_boxes"] = cached
+        return cached
+
 
 def _safe_id(text: str) -> str:
     return "".join(c if c.isalnum() or c in "-_" else "-" for c in text)
@@ -80,11 +138,14 @@ def label_offset_direction(p: tuple[float, float], origin: tuple[float, float] =
     return (dx / n, dy / n)
 
 
-def _on_curve_points(steps: Iterable[Step], objects: Replay) -> dict[str, list[Point]]:
-    """For every line and circle, the points the construction marks on it."""
+def _on_curve_points(steps: Iterable[Step], objects: Replay,
+                     shown: set[str] | None = None) -> dict[str, list[Point]]:
+    """For every line and circle, the points the construction marks on it (only *shown* ones, if given)."""
     on: dict[str, list[Point]] = {}
 
     def add(curve: str, point: str) -> None:
+        if shown is not None and point not in shown:
+            return
         obj = objects.get(point)
         if isinstance(obj, Point):
             on.setdefault(curve, []).append(obj)
@@ -106,27 +167,36 @@ def _on_curve_points(steps: Iterable[Step], objects: Replay) -> dict[str, list[P
     return on
 
 
-def build_scene(figure: Any, *, title: tuple[str, str] | None = None) -> Scene:
-    """The marks of a built or replayed figure (anything with ``.protocol`` and ``.replay``)."""
+def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: bool = False) -> Scene:
+    """The marks of a built or replayed figure (anything with ``.protocol`` and ``.replay``).
+
+    With *plate* the scene is what a book plate shows (:func:`plate_names`):
+    the results and the curves and points that locate them, each curve drawn
+    only as far as the shown points on it, every construction step left out.
+    """
     protocol: Protocol = figure.protocol
     objects: Replay = figure.replay
-    points = [o for o in objects.values() if isinstance(o, Point)]
-    curves_pts = _curve_points(objects)
+    shown = plate_names(protocol, objects) if plate else None
+    points = [o for n, o in objects.items() if isinstance(o, Point) and (shown is None or n in shown)]
+    curves_pts = _curve_points(objects, shown)
     xs = [p[0] for p in points] + [p[0] for p in curves_pts]
     ys = [p[1] for p in points] + [p[1] for p in curves_pts]
+    if not xs:
+        xs, ys = [0.0, 1.0], [0.0, 1.0]
     span = max(max(xs) - min(xs), max(ys) - min(ys), 1e-9)
     margin = 0.035 * span
-    on = _on_curve_points(protocol.steps, objects)
+    on = _on_curve_points(protocol.steps, objects, shown)
     marks: list[Mark] = []
     for s in protocol.steps:
         labels = dict(s.labels)
         for name in s.outputs:
             obj = objects.get(name)
-            if obj is None or isinstance(obj, Length):
+            if obj is None or isinstance(obj, Length) or (shown is not None and name not in shown):
                 continue
             mid = f"s{s.index:04d}-{_safe_id(name)}"
+            label = labels.get(name)
             common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
-                          group=s.group, label=labels.get(name))
+                          group=s.group, label=label)
             if isinstance(obj, Point):
                 marks.append(Mark(mid, kind="point", geom=(obj[0], obj[1]), **common))
             elif isinstance(obj, Line):
@@ -134,6 +204,8 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None) -> Scene:
             elif isinstance(obj, Circle):
                 kind, geom = _circle_extent(obj, on.get(name, []), margin, s.role)
                 marks.append(Mark(mid, kind=kind, geom=geom, **common))
+            elif hasattr(obj, "area_points"):
+                marks.append(Mark(mid, kind="area", geom=tuple((p[0], p[1]) for p in obj.area_points()), **common))
             elif hasattr(obj, "curve_points"):
                 marks.append(Mark(mid, kind="curve", geom=tuple((p[0], p[1]) for p in obj.curve_points()), **common))
     # Grow the box by what the curves reach (full circles, arcs, line ends) and the margin.
@@ -148,10 +220,47 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None) -> Scene:
     return Scene(tuple(marks), bbox, protocol.steps, title, dict(protocol.params))
 
 
-def _curve_points(objects: Replay) -> list[tuple[float, float]]:
+def plate_names(protocol: Protocol, objects: Replay) -> set[str]:
+    """What a book plate shows: results, the curves that locate them, the points those curves pass through.
+
+    Given points stay (the crank centre); auxiliary objects and the points a
+    curve is only centred on (the far crossheads of the rod arcs) do not.
+
+    >>> from construct.constructions import get
+    >>> fig = get("crank").figure(parts=6)
+    >>> names = plate_names(fig.protocol, fig.replay)
+    >>> {"crank", "X3", "back3", "P3", "ord2", "O"} <= names, "C3" in names, "rod3" in names
+    (True, False, False)
+    """
+    maker = {n: s for s in protocol.steps for n in s.outputs}
+    shown: set[str] = set()
+    curves: set[str] = set()
+    for s in protocol.steps:
+        if s.role == "result":
+            shown.update(s.outputs)
+            for name in s.inputs:
+                if isinstance(objects.get(name), (Line, Circle)) or hasattr(objects.get(name), "curve_points"):
+                    curves.add(name)
+        elif s.op == "given_point":
+            shown.update(s.outputs)
+    shown |= curves
+    for name in sorted(curves | {n for n in shown if isinstance(objects.get(n), (Line, Circle))}):
+        s = maker[name]
+        through = {"circle_through": s.inputs[1:], "line": s.inputs, "given_line": s.inputs}.get(s.op, ())
+        for p in through:
+            if isinstance(objects.get(p), Point) and maker[p].role != "auxiliary":
+                shown.add(p)
+    return shown
+
+
+def _curve_points(objects: Replay, shown: set[str] | None = None) -> list[tuple[float, float]]:
     pts: list[tuple[float, float]] = []
-    for o in objects.values():
-        if hasattr(o, "curve_points"):
+    for n, o in objects.items():
+        if shown is not None and n not in shown:
+            continue
+        if hasattr(o, "area_points"):
+            pts.extend(o.area_points())
+        elif hasattr(o, "curve_points"):
             pts.extend(o.curve_points())
     return pts
 
@@ -200,6 +309,6 @@ def _extreme_points(m: Mark) -> list[tuple[float, float]]:
         cx, cy, r, a0, sw = g
         n = max(2, int(sw / 0.1) + 1)
         return [(cx + r * math.cos(a0 + sw * i / (n - 1)), cy + r * math.sin(a0 + sw * i / (n - 1))) for i in range(n)]
-    if m.kind == "curve":
+    if m.kind in ("curve", "area"):
         return list(g)
     return []

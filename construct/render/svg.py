@@ -1,9 +1,15 @@
 """SVG frames of a scene: one per step and the final figure.
 
 The style is a separate value (:class:`Style`): the construction never knows
-how it is drawn.  Output is deterministic: numbers with a fixed number of
-decimals, ids from step index and object name, no timestamps, marks in step
-order, so the same figure gives the same bytes on every run and machine.
+how it is drawn.  Every look is in one ``<style>`` sheet at the top of the
+file and the elements carry only classes (role, instrument, provenance, and
+``cur``/``old`` for the current and earlier steps of a frame), which keeps the
+frames small and lets :mod:`construct.svgdiff` compare looks by class.
+
+Output is deterministic: numbers with at most two decimals (a hundredth of a
+pixel at 960 px), ids from step index and object name, no timestamps, marks in
+step order, so the same figure gives the same bytes on every run and machine.
+All text goes through :func:`xml_text` / :func:`xml_attr`.
 
 >>> from construct.constructions import get
 >>> from construct.render.scene import build_scene
@@ -15,21 +21,45 @@ True
 
 from __future__ import annotations
 
+import bisect
 import math
-from dataclasses import dataclass, field, replace
-from typing import Iterable, Mapping
-
-import svgwrite
+import textwrap
+from dataclasses import dataclass, field
+from typing import Mapping, Sequence
+from xml.sax.saxutils import escape as _escape
 
 from .scene import Mark, Scene, label_offset_direction
 
-__all__ = ["Style", "PLAIN", "render_svg", "fmt", "Viewport"]
+__all__ = ["Style", "PLAIN", "render_svg", "fmt", "Viewport", "Drawing", "xml_text", "xml_attr",
+           "step_caption", "wrap"]
 
 
-def fmt(v: float) -> str:
-    """Fixed-point with three decimals, trailing zeros trimmed; never '-0'."""
-    text = f"{v:.3f}".rstrip("0").rstrip(".")
+def fmt(v: float, decimals: int = 2) -> str:
+    """Fixed-point with *decimals* decimals, trailing zeros trimmed; never '-0'.
+
+    >>> fmt(1.005), fmt(-0.0001), fmt(12.5), fmt(3.14159, 3)
+    ('1', '0', '12.5', '3.142')
+    """
+    text = f"{v:.{decimals}f}".rstrip("0").rstrip(".")
     return "0" if text in ("-0", "") else text
+
+
+def xml_text(text: str) -> str:
+    """Text content, escaped for XML (and HTML).
+
+    >>> xml_text('<script>alert(1)</script> & "x"')
+    '&lt;script&gt;alert(1)&lt;/script&gt; &amp; "x"'
+    """
+    return _escape(text)
+
+
+def xml_attr(text: str) -> str:
+    """An attribute value (to go between double quotes), escaped.
+
+    >>> xml_attr('a "b" <c> & d')
+    'a &quot;b&quot; &lt;c&gt; &amp; d'
+    """
+    return _escape(text, {'"': "&quot;", "\n": "&#10;", "\t": "&#9;"})
 
 
 @dataclass(frozen=True)
@@ -42,21 +72,87 @@ class Style:
     construction: str = "#8a8a8a"
     construction_width: float = 0.7
     result_width: float = 1.8
-    given_width: float = 1.0
+    auxiliary_dash: str | None = None
     point_radius: float = 2.0
     aux_point_radius: float = 1.1
+    #: Points are drawn as a ring of this stroke width (0: a filled dot).
+    point_ring: float = 0.0
     label_font: str = "Georgia, 'DejaVu Serif', serif"
     label_size: float = 13.0
     label_italic: bool = False
     caption_font: str = "'DejaVu Sans', Arial, sans-serif"
     caption_size: float = 13.0
-    #: Colour of marks by provenance of what they show (approximate in a warm tone).
+    caption_italic: bool = False
+    #: Colour of marks by the provenance of what they show (approximate in a warm tone).
     provenance_colours: Mapping[str, str] = field(default_factory=lambda: {"approximate": "#b35900", "trial": "#7a3fb0",
                                                                             "neusis": "#00708a"})
+    #: Colour of marks by instrument (teaching style); empty: one construction colour.
+    tool_colours: Mapping[str, str] = field(default_factory=dict)
     show_caption: bool = True
-    highlight: str | None = None  # colour of the current step's marks in frames (None: no highlight)
+    #: Colour of the current step's marks in frames (None: no highlight).
+    highlight: str | None = None
+    highlight_width: float = 2.4
+    #: Opacity of the steps before the current one in frames (1: no change).
+    earlier_opacity: float = 1.0
+    #: The final figure shows a book plate (results and what locates them), not every step.
+    plate: bool = False
+    #: Caption of the final figure: "Fig." plate caption or the plain title lines.
+    fig_caption: bool = False
+    #: Hatch areas with fine lines (else a light fill).
+    hatch: bool = False
+    hatch_spacing: float = 5.0
+    area_fill: str = "#d9d9d9"
+    #: Frames whose current group is smaller than this fraction of the figure get a magnified inset.
+    zoom_below: float = 0.0
+    #: Frames show only the region drawn by the end of the current top-level group (same canvas size).
+    progressive_zoom: bool = False
+    #: The caption shows the group path of the current step above it.
+    show_group: bool = False
     width_px: float = 960.0
+    #: Smallest height of the drawing area (wide figures get room for the stages of a progressive zoom).
+    min_drawing_px: float = 0.0
     margin_px: float = 24.0
+
+    def css(self) -> str:
+        """The style sheet every SVG in this style carries."""
+        rules = [
+            f".construction,.auxiliary,.result,.given{{fill:none;stroke-linecap:round}}",
+            f".construction,.auxiliary{{stroke:{self.construction};stroke-width:{fmt(self.construction_width)}}}",
+            f".result{{stroke:{self.ink};stroke-width:{fmt(self.result_width)}}}",
+        ]
+        if self.auxiliary_dash:
+            rules.append(f".auxiliary{{stroke-dasharray:{self.auxiliary_dash}}}")
+        for tool, colour in sorted(self.tool_colours.items()):
+            rules.append(f".{tool}{{stroke:{colour}}}")
+            rules.append(f".pt.{tool}{{fill:{colour}}}")
+        for prov, colour in sorted(self.provenance_colours.items()):
+            rules.append(f".{prov}{{stroke:{colour}}}")
+            rules.append(f".pt.{prov}{{fill:{colour}}}")
+        if self.point_ring:
+            rules.append(f".pt{{fill:{self.background};stroke:{self.ink};stroke-width:{fmt(self.point_ring)}}}")
+        else:
+            rules.append(f".pt{{fill:{self.ink};stroke:none}}")
+        rules.append(".result.pt{stroke:none}" if not self.point_ring else f".result.pt{{fill:{self.ink}}}")
+        rules.append(f".area{{fill:{self.area_fill};stroke:none}}")
+        rules.append(f".hatch{{fill:none;stroke:{self.ink};stroke-width:0.4}}")
+        italic = "font-style:italic;" if self.label_italic else ""
+        rules.append(f".lb{{fill:{self.ink};stroke:none;font-family:{self.label_font};"
+                     f"font-size:{fmt(self.label_size)}px;{italic}text-anchor:middle}}")
+        cap_italic = "font-style:italic;" if self.caption_italic else ""
+        rules.append(f".cap{{fill:{self.ink};stroke:none;font-family:{self.caption_font};"
+                     f"font-size:{fmt(self.caption_size)}px;{cap_italic}}}")
+        rules.append(f".cap.en{{fill:{self.construction}}}")
+        rules.append(f".cap.grp{{font-size:{fmt(0.85 * self.caption_size)}px;fill:{self.construction}}}")
+        rules.append(".cap.mid{text-anchor:middle}")
+        if self.earlier_opacity < 1.0:
+            rules.append(f".old{{opacity:{fmt(self.earlier_opacity)}}}")
+        if self.highlight:
+            rules.append(f".cur{{stroke:{self.highlight};stroke-width:{fmt(self.highlight_width)}}}")
+            # a point is small: the current one gets a halo in the highlight colour
+            rules.append(f".pt.cur{{fill:{self.highlight};stroke:{self.highlight};stroke-width:3}}")
+            rules.append(f".lb.cur{{fill:{self.highlight};stroke:none}}")
+        rules.append(f".inset{{fill:{self.background};stroke:{self.construction};stroke-width:0.8}}")
+        return "\n".join(rules)
 
 
 PLAIN = Style()
@@ -72,6 +168,8 @@ class Viewport:
     width: float
     height: float
     margin: float
+    left: float = 0.0
+    top: float = 0.0
 
     @classmethod
     def fit(cls, bbox: tuple[float, float, float, float], style: Style, caption_lines: int) -> "Viewport":
@@ -82,63 +180,324 @@ class Viewport:
         max_h = 1.4 * style.width_px
         if (y1 - y0) * scale > max_h:
             scale = max_h / (y1 - y0)
-        height = (y1 - y0) * scale + 2 * style.margin_px + caption_lines * 1.6 * style.caption_size
-        return cls(x0, y1, scale, style.width_px, height, style.margin_px)
+        # Narrow figures are centred (across and, with a minimum height, down).
+        left = (inner - (x1 - x0) * scale) / 2.0
+        drawing_h = max((y1 - y0) * scale, style.min_drawing_px)
+        top = (drawing_h - (y1 - y0) * scale) / 2.0
+        height = drawing_h + 2 * style.margin_px + caption_lines * 1.45 * style.caption_size
+        return cls(x0, y1, scale, style.width_px, height, style.margin_px, left, top)
+
+    @classmethod
+    def window(cls, bbox: tuple[float, float, float, float], box: tuple[float, float, float, float]) -> "Viewport":
+        """Map *bbox* (drawing units) into the pixel *box* (x0, y0, x1, y1), keeping the aspect ratio."""
+        x0, y0, x1, y1 = bbox
+        scale = min((box[2] - box[0]) / max(x1 - x0, 1e-12), (box[3] - box[1]) / max(y1 - y0, 1e-12))
+        left = box[0] + ((box[2] - box[0]) - (x1 - x0) * scale) / 2.0
+        top = box[1] + ((box[3] - box[1]) - (y1 - y0) * scale) / 2.0
+        return cls(x0, y1, scale, box[2] - box[0], box[3] - box[1], 0.0, left, top)
+
+    def px(self, x: float, y: float) -> tuple[float, float]:
+        return (self.margin + self.left + (x - self.xmin) * self.scale,
+                self.margin + self.top + (self.ymax - y) * self.scale)
 
     def xy(self, x: float, y: float) -> tuple[str, str]:
-        return fmt(self.margin + (x - self.xmin) * self.scale), fmt(self.margin + (self.ymax - y) * self.scale)
+        a, b = self.px(x, y)
+        return fmt(a), fmt(b)
 
     def length(self, d: float) -> str:
         return fmt(d * self.scale)
 
 
+def wrap(text: str, width_px: float, size: float) -> list[str]:
+    """Lines of *text* that fit *width_px* at font size *size* (an average glyph is ~0.56 em)."""
+    chars = max(20, int(width_px / (0.56 * size)))
+    return textwrap.wrap(text, chars, break_long_words=True, break_on_hyphens=False) or [""]
+
+
+def step_caption(scene: Scene, k: int) -> tuple[str, str]:
+    """The German and English caption of frame k ("Schritt k von N: ...")."""
+    n = len(scene.steps)
+    if k <= 0:
+        return (f"Schritt 0 von {n}", f"Step 0 of {n}")
+    c = scene.steps[k - 1].caption
+    return (f"Schritt {k} von {n}: {c.de}", f"Step {k} of {n}: {c.en}")
+
+
+def group_caption(scene: Scene, k: int) -> str:
+    """The group path of step k, German titles where the construction gave them."""
+    if k <= 0:
+        return ""
+    titles = scene.params.get("group_titles") or {}
+    return " › ".join(titles.get(g, g) for g in scene.steps[k - 1].group)
+
+
+class Drawing:
+    """A scene laid out in one style: every mark's SVG element, made once, reused by all frames.
+
+    Frame k is the elements of the marks of steps 1..k, each layer in step
+    order, so frames are prefixes of the final figure's element lists.
+    """
+
+    LAYERS = ("areas", "construction", "results", "points", "labels")
+
+    def __init__(self, scene: Scene, style: Style = PLAIN, *, caption_lines: int | None = None,
+                 region: tuple[float, float, float, float] | None = None, canvas: "Viewport | None" = None):
+        self.scene = scene
+        self.style = style
+        if caption_lines is None:
+            caption_lines = self.caption_lines() if style.show_caption else 0
+        self.n_caption = caption_lines
+        self.vp = Viewport.fit(scene.bbox, style, caption_lines)
+        self.region = region
+        self._regions: dict[tuple, Drawing] = {}
+        if region is not None and canvas is not None:
+            # the same canvas as the whole figure, showing only *region*
+            m = canvas.margin
+            inner_h = canvas.height - 2 * m - caption_lines * 1.45 * style.caption_size
+            win = Viewport.window(region, (m, m, canvas.width - m, m + inner_h))
+            self.vp = Viewport(win.xmin, win.ymax, win.scale, canvas.width, canvas.height, 0.0, win.left, win.top)
+        # layer -> sorted list of (step, head, tail): the element is head + classes + tail.
+        self.layers: dict[str, list[tuple[int, str, str]]] = {name: [] for name in self.LAYERS}
+        placed: list[tuple[float, float, float, float]] = []
+        for m in scene.marks:
+            for layer, head, tail in self._elements(m, self.vp, placed, m.id):
+                self.layers[layer].append((m.step, head, tail))
+        self._steps = {name: [e[0] for e in items] for name, items in self.layers.items()}
+
+    # -- layout ---------------------------------------------------------------------
+    def caption_lines(self) -> int:
+        """Caption lines for the frames: the most any step needs, so that all frames have one size."""
+        st = self.style
+        width = st.width_px - 2 * st.margin_px
+        most = 2
+        for k in range(1, len(self.scene.steps) + 1):
+            de, en = step_caption(self.scene, k)
+            most = max(most, len(wrap(de, width, st.caption_size)) + len(wrap(en, width, st.caption_size)))
+        return most + (1 if st.show_group else 0)
+
+    def _elements(self, m: Mark, vp: Viewport, placed: list, mid: str | None):
+        """(layer, head, tail) of a mark's elements; the label (if any) is a second one."""
+        cls = f"{m.role} {m.tool} {m.provenance}"
+        idattr = f' id="{xml_attr(mid)}"' if mid else ""
+        st = self.style
+        if m.kind == "point":
+            aux = m.role == "auxiliary" or ("." in m.name and not m.label)
+            r = st.aux_point_radius if aux else st.point_radius
+            cx, cy = vp.xy(*m.geom)
+            yield "points", f'<circle{idattr} class="pt {cls}', f'" cx="{cx}" cy="{cy}" r="{fmt(r)}"/>'
+            if m.label:
+                box = self._place_label(m, vp, placed)
+                if box is not None:
+                    lx, ly = box
+                    lid = f' id="{xml_attr(mid)}-label"' if mid else ""
+                    yield "labels", f'<text{lid} class="lb', f'" x="{fmt(lx)}" y="{fmt(ly)}">{xml_text(m.label)}</text>'
+            return
+        layer = "results" if m.role == "result" else "construction"
+        g = m.geom
+        if m.kind == "segment":
+            x1, y1 = vp.xy(g[0], g[1])
+            x2, y2 = vp.xy(g[2], g[3])
+            yield layer, f'<line{idattr} class="{cls}', f'" x1="{x1}" y1="{y1}" x2="{x2}" y2="{y2}"/>'
+        elif m.kind == "circle":
+            cx, cy = vp.xy(g[0], g[1])
+            yield layer, f'<circle{idattr} class="{cls}', f'" cx="{cx}" cy="{cy}" r="{vp.length(g[2])}"/>'
+        elif m.kind == "arc":
+            yield layer, f'<path{idattr} class="{cls}', f'" d="{arc_path(vp, *g)}"/>'
+        elif m.kind == "curve":
+            yield layer, f'<path{idattr} class="{cls}', f'" d="{curve_path(vp, g)}"/>'
+        elif m.kind == "area":
+            yield "areas", f'<path{idattr} class="area {cls}', f'" d="{polygon_path(vp, g)}"/>'
+            if st.hatch:
+                d = hatch_path(vp, g, st.hatch_spacing)
+                if d:
+                    hid = f' id="{xml_attr(mid)}-hatch"' if mid else ""
+                    yield "areas", f'<path{hid} class="hatch', f'" d="{d}"/>'
+
+    def _place_label(self, m: Mark, vp: Viewport, placed: list) -> tuple[float, float] | None:
+        # Letters go radially outwards (below the stroke line for points on it);
+        # a letter that would overprint an earlier one tries the other side, then is left out.
+        st = self.style
+        dx, dy = label_offset_direction(m.geom, scale=self.scene.bbox[2] - self.scene.bbox[0])
+        off = st.label_size * 0.9
+        px, py = vp.px(*m.geom)
+        for sign in (1.0, -1.0):
+            lx, ly = px + sign * dx * off, py - sign * dy * off + st.label_size * 0.35
+            box = _label_box(lx, ly, m.label or "", st.label_size)
+            if not _overlaps(box, placed):
+                placed.append(box)
+                return lx, ly
+        return None
+
+    # -- output -----------------------------------------------------------------------
+    def header(self, height: float | None = None, extra_css: str = "") -> str:
+        vp, st = self.vp, self.style
+        h = fmt(vp.height if height is None else height)
+        w = fmt(vp.width)
+        css = st.css() + ("\n" + extra_css if extra_css else "")
+        return (f'<?xml version="1.0" encoding="utf-8"?>\n'
+                f'<svg xmlns="http://www.w3.org/2000/svg" version="1.1" width="{w}" height="{h}" '
+                f'viewBox="0 0 {w} {h}">\n<style>\n{css}\n</style>\n'
+                f'<rect id="background" x="0" y="0" width="{w}" height="{h}" fill="{xml_attr(st.background)}"/>\n')
+
+    def layer_elements(self, name: str, k: int, *, mark_steps: bool) -> list[str]:
+        """The elements of layer *name* for steps 1..k; ``cur``/``old`` classes when *mark_steps*."""
+        items = self.layers[name]
+        end = bisect.bisect_right(self._steps[name], k)
+        if not mark_steps:
+            return [head + tail for _, head, tail in items[:end]]
+        old = " old" if self.style.earlier_opacity < 1.0 else ""
+        return [head + (" cur" if s == k else old) + tail for s, head, tail in items[:end]]
+
+    def body(self, k: int, *, mark_steps: bool) -> str:
+        out = []
+        if self.region is not None:
+            # a part of the figure: nothing may stray into the caption
+            m = self.style.margin_px
+            h = self.vp.height - 2 * m - self.n_caption * 1.45 * self.style.caption_size
+            out.append(f'<clipPath id="drawing-clip"><rect x="0" y="0" width="{fmt(self.vp.width)}" '
+                       f'height="{fmt(h + 1.5 * m)}"/></clipPath>\n<g clip-path="url(#drawing-clip)">\n')
+        for name in self.LAYERS:
+            elems = self.layer_elements(name, k, mark_steps=mark_steps)
+            if elems or name in ("construction", "results", "points", "labels"):
+                out.append(f'<g id="{name}">\n' + "".join(e + "\n" for e in elems) + "</g>\n")
+        if self.region is not None:
+            out.append("</g>\n")
+        return "".join(out)
+
+    def caption_svg(self, lines: Sequence[tuple[str, str]], *, centred: bool = False) -> str:
+        """Caption lines (class suffix, text) at the foot of the figure."""
+        st, vp = self.style, self.vp
+        if not lines:
+            return ""
+        step = 1.45 * st.caption_size
+        y = vp.height - st.margin_px * 0.6 - (len(lines) - 1) * step
+        x = vp.width / 2 if centred else st.margin_px
+        mid = " mid" if centred else ""
+        out = ['<g id="caption">\n']
+        for i, (kind, text) in enumerate(lines):
+            cls = f"cap{(' ' + kind) if kind else ''}{mid}"
+            out.append(f'<text class="{cls}" x="{fmt(x)}" y="{fmt(y + i * step)}">{xml_text(text)}</text>\n')
+        out.append("</g>\n")
+        return "".join(out)
+
+    def frame_caption_lines(self, k: int) -> list[tuple[str, str]]:
+        st = self.style
+        width = st.width_px - 2 * st.margin_px
+        de, en = step_caption(self.scene, k)
+        lines: list[tuple[str, str]] = []
+        if st.show_group:
+            lines.append(("grp", group_caption(self.scene, k)))
+        lines += [("de", t) for t in wrap(de, width, st.caption_size)]
+        lines += [("en", t) for t in wrap(en, width, st.caption_size)]
+        return lines
+
+    def view(self, k: int) -> "Drawing":
+        """The drawing frame k is drawn with: this one, or (progressive zoom) one showing the stage so far."""
+        if not self.style.progressive_zoom or self.region is not None or k <= 0:
+            return self
+        box = self.scene.stage_box(k)
+        if box == self.scene.bbox:
+            return self
+        key = tuple(round(v, 9) for v in box)
+        if key not in self._regions:
+            self._regions[key] = Drawing(self.scene, self.style, caption_lines=self.n_caption, region=box,
+                                         canvas=self.vp)
+        return self._regions[key]
+
+    def frame(self, k: int) -> str:
+        """Frame k: steps 1..k, the current one marked, with its caption."""
+        k = max(0, min(k, len(self.scene.steps)))
+        view = self.view(k)
+        if view is not self:
+            return view.frame(k)
+        parts = [self.header(), self.body(k, mark_steps=True)]
+        if self.style.zoom_below > 0 and k > 0:
+            parts.append(self.inset(k))
+        if self.style.show_caption:
+            parts.append(self.caption_svg(self.frame_caption_lines(k)))
+        return "".join(parts) + "</svg>\n"
+
+    def final(self, caption: Sequence[str] | None = None, *, centred: bool = False) -> str:
+        """All steps, nothing highlighted, with the figure's caption lines."""
+        lines = list(caption if caption is not None else self.scene.title)
+        st = self.style
+        width = st.width_px - 2 * st.margin_px
+        wrapped = [("de" if i == 0 else "en", t) for i, line in enumerate(lines)
+                   for t in wrap(line, width, st.caption_size)]
+        parts = [self.header(), self.body(len(self.scene.steps), mark_steps=False)]
+        if st.show_caption:
+            parts.append(self.caption_svg(wrapped, centred=centred))
+        return "".join(parts) + "</svg>\n"
+
+    # -- magnified inset -------------------------------------------------------------
+    def inset(self, k: int) -> str:
+        """A magnified view of the current group when it is tiny in the whole figure (teaching)."""
+        box = self.scene.group_box(k, self.style.zoom_below, self.region)
+        if box is None:
+            return ""
+        size = max(box[2] - box[0], box[3] - box[1])
+        if size <= 0:
+            return ""
+        pad = 0.25 * size
+        cx, cy = (box[0] + box[2]) / 2, (box[1] + box[3]) / 2
+        half = size / 2 + pad
+        region = (cx - half, cy - half, cx + half, cy + half)
+        vp = self.vp
+        m = self.style.margin_px
+        side = min(0.4 * vp.width, 0.8 * (vp.height - self.n_caption * 1.45 * self.style.caption_size - 2 * m))
+        px0 = vp.width - m - side
+        py0 = m
+        win = Viewport.window(region, (px0, py0, px0 + side, py0 + side))
+        parts = [f'<g id="inset">\n<clipPath id="inset-clip"><rect x="{fmt(px0)}" y="{fmt(py0)}" '
+                 f'width="{fmt(side)}" height="{fmt(side)}"/></clipPath>\n'
+                 f'<rect class="inset" x="{fmt(px0)}" y="{fmt(py0)}" width="{fmt(side)}" height="{fmt(side)}"/>\n'
+                 f'<g clip-path="url(#inset-clip)">\n']
+        old = " old" if self.style.earlier_opacity < 1.0 else ""
+        placed: list = []
+        by_layer: dict[str, list[str]] = {name: [] for name in self.LAYERS}
+        for m in self.scene.marks:
+            if m.step > k:
+                break
+            if not _near(m, region):
+                continue
+            for layer, head, tail in self._elements(m, win, placed, None):
+                by_layer[layer].append(head + (" cur" if m.step == k else old) + tail)
+        for name in self.LAYERS:
+            parts.extend(e + "\n" for e in by_layer[name])
+        zoom = win.scale / vp.scale
+        parts.append(f'</g>\n<text class="cap grp" x="{fmt(px0 + 6)}" y="{fmt(py0 + side - 6)}">'
+                     f'{xml_text(f"× {zoom:.0f}")}</text>\n</g>\n')
+        return "".join(parts)
+
+
+def _near(m: Mark, region: tuple[float, float, float, float]) -> bool:
+    """Could the mark show inside *region*?  (Bounding boxes meet; a circle must not enclose it all.)"""
+    x0, y0, x1, y1 = region
+    g = m.geom
+    if m.kind == "point":
+        return x0 <= g[0] <= x1 and y0 <= g[1] <= y1
+    if m.kind in ("circle", "arc"):
+        cx, cy, r = g[0], g[1], g[2]
+        # distance from the centre to the nearest and farthest point of the region
+        nx, ny = min(max(cx, x0), x1), min(max(cy, y0), y1)
+        near = math.hypot(nx - cx, ny - cy)
+        far = max(math.hypot(px - cx, py - cy) for px in (x0, x1) for py in (y0, y1))
+        return near <= r <= far
+    if m.kind == "segment":
+        bx0, bx1 = sorted((g[0], g[2]))
+        by0, by1 = sorted((g[1], g[3]))
+        return bx0 <= x1 and x0 <= bx1 and by0 <= y1 and y0 <= by1
+    pts = g
+    return any(x0 <= p[0] <= x1 and y0 <= p[1] <= y1 for p in pts)
+
+
 def render_svg(scene: Scene, *, upto: int | None = None, style: Style = PLAIN,
                caption: tuple[str, str] | None = None) -> str:
     """The figure after steps 1..upto (all steps when None), as SVG text."""
-    n_steps = len(scene.steps)
-    k = n_steps if upto is None else max(0, min(upto, n_steps))
-    if caption is None:
-        if upto is None:
-            caption = scene.title
-        else:
-            step = scene.steps[k - 1] if k else None
-            caption = (f"Schritt {k} von {n_steps}: {step.caption.de}" if step else f"Schritt 0 von {n_steps}",
-                       f"Step {k} of {n_steps}: {step.caption.en}" if step else f"Step 0 of {n_steps}")
-    lines = 2 if style.show_caption else 0
-    vp = Viewport.fit(scene.bbox, style, lines)
-    dwg = svgwrite.Drawing(size=(fmt(vp.width), fmt(vp.height)), viewBox=f"0 0 {fmt(vp.width)} {fmt(vp.height)}",
-                           debug=False, profile="full")
-    dwg.add(dwg.rect(insert=(0, 0), size=(fmt(vp.width), fmt(vp.height)), fill=style.background, id="background"))
-    marks = scene.upto(k)
-    layers = {
-        "construction": dwg.g(id="construction", fill="none", stroke=style.construction,
-                              stroke_width=fmt(style.construction_width), stroke_linecap="round"),
-        "result": dwg.g(id="results", fill="none", stroke=style.ink, stroke_width=fmt(style.result_width),
-                        stroke_linecap="round"),
-        "points": dwg.g(id="points", fill=style.ink, stroke="none"),
-        "labels": dwg.g(id="labels", fill=style.ink, font_family=style.label_font,
-                        font_size=fmt(style.label_size)),
-    }
-    placed: list[tuple[float, float, float, float]] = []
-    for m in marks:
-        current = upto is not None and m.step == k
-        _draw_mark(dwg, layers, vp, m, style, current, placed)
-    for g in layers.values():
-        dwg.add(g)
-    if style.show_caption and caption:
-        cap = dwg.g(id="caption", fill=style.ink, font_family=style.caption_font, font_size=fmt(style.caption_size))
-        y0 = vp.height - style.margin_px * 0.5 - 1.6 * style.caption_size
-        for i, text in enumerate(caption):
-            cap.add(dwg.text(text, insert=(fmt(style.margin_px), fmt(y0 + i * 1.4 * style.caption_size))))
-        dwg.add(cap)
-    return dwg.tostring().replace("><", ">\n<") + "\n"
-
-
-def _stroke_for(m: Mark, style: Style, current: bool) -> dict:
-    attrs: dict = {}
-    if current and style.highlight:
-        attrs["stroke"] = style.highlight
-    return attrs
+    d = Drawing(scene, style)
+    if upto is None:
+        return d.final(caption)
+    return d.frame(upto)
 
 
 def _label_box(x: float, y: float, text: str, size: float) -> tuple[float, float, float, float]:
@@ -151,69 +510,66 @@ def _overlaps(box, placed) -> bool:
     return any(x0 < b[2] and b[0] < x1 and y0 < b[3] and b[1] < y1 for b in placed)
 
 
-def _draw_mark(dwg, layers, vp: Viewport, m: Mark, style: Style, current: bool, placed: list) -> None:
-    cls = f"{m.role} {m.tool} {m.provenance}" + (" current" if current else "")
-    if m.kind == "point":
-        aux = "." in m.name and not m.label
-        r = style.aux_point_radius if aux else style.point_radius
-        fill = style.highlight if current and style.highlight else style.provenance_colours.get(m.provenance, style.ink)
-        cx, cy = vp.xy(*m.geom)
-        layers["points"].add(dwg.circle(center=(cx, cy), r=fmt(r), id=m.id, class_=cls, fill=fill))
-        if m.label:
-            # Letters go radially outwards (below the stroke line for points on it);
-            # a letter that would overprint an earlier one tries the other side, then is left out.
-            dx, dy = label_offset_direction(m.geom)
-            off = style.label_size * 0.9
-            px = vp.margin + (m.geom[0] - vp.xmin) * vp.scale
-            py = vp.margin + (vp.ymax - m.geom[1]) * vp.scale
-            for sign in (1.0, -1.0):
-                lx, ly = px + sign * dx * off, py - sign * dy * off + style.label_size * 0.35
-                box = _label_box(lx, ly, m.label, style.label_size)
-                if not _overlaps(box, placed):
-                    break
-            else:
-                return
-            placed.append(box)
-            t = dwg.text(m.label, insert=(fmt(lx), fmt(ly)), id=f"{m.id}-label", text_anchor="middle")
-            if style.label_italic:
-                t["font-style"] = "italic"
-            layers["labels"].add(t)
-        return
-    layer = layers["result"] if m.role == "result" else layers["construction"]
-    attrs = _stroke_for(m, style, current)
-    if m.kind == "segment":
-        x1, y1 = vp.xy(m.geom[0], m.geom[1])
-        x2, y2 = vp.xy(m.geom[2], m.geom[3])
-        layer.add(dwg.line(start=(x1, y1), end=(x2, y2), id=m.id, class_=cls, **attrs))
-    elif m.kind == "circle":
-        cx, cy = vp.xy(m.geom[0], m.geom[1])
-        layer.add(dwg.circle(center=(cx, cy), r=vp.length(m.geom[2]), id=m.id, class_=cls, **attrs))
-    elif m.kind == "arc":
-        layer.add(dwg.path(d=arc_path(vp, *m.geom), id=m.id, class_=cls, **attrs))
-    elif m.kind == "curve":
-        layer.add(dwg.path(d=curve_path(vp, m.geom), id=m.id, class_=cls, **attrs))
-
-
 def arc_path(vp: Viewport, cx: float, cy: float, r: float, start: float, sweep: float) -> str:
     """An SVG arc path; y is flipped, so counter-clockwise in the plane is sweep-flag 0."""
     x0, y0 = vp.xy(cx + r * math.cos(start), cy + r * math.sin(start))
     x1, y1 = vp.xy(cx + r * math.cos(start + sweep), cy + r * math.sin(start + sweep))
     large = 1 if sweep > math.pi else 0
     rr = vp.length(r)
-    return f"M {x0} {y0} A {rr} {rr} 0 {large} 0 {x1} {y1}"
+    return f"M{x0} {y0}A{rr} {rr} 0 {large} 0 {x1} {y1}"
 
 
 def curve_path(vp: Viewport, pts: tuple) -> str:
     """A smooth curve through the points (Catmull-Rom as cubic Béziers)."""
-    P = [(vp.margin + (x - vp.xmin) * vp.scale, vp.margin + (vp.ymax - y) * vp.scale) for x, y in pts]
+    P = [vp.px(x, y) for x, y in pts]
     if len(P) < 2:
         return ""
-    d = [f"M {fmt(P[0][0])} {fmt(P[0][1])}"]
+    d = [f"M{fmt(P[0][0])} {fmt(P[0][1])}"]
     for i in range(len(P) - 1):
         p0 = P[i - 1] if i > 0 else P[i]
         p1, p2 = P[i], P[i + 1]
         p3 = P[i + 2] if i + 2 < len(P) else P[i + 1]
         c1 = (p1[0] + (p2[0] - p0[0]) / 6.0, p1[1] + (p2[1] - p0[1]) / 6.0)
         c2 = (p2[0] - (p3[0] - p1[0]) / 6.0, p2[1] - (p3[1] - p1[1]) / 6.0)
-        d.append(f"C {fmt(c1[0])} {fmt(c1[1])} {fmt(c2[0])} {fmt(c2[1])} {fmt(p2[0])} {fmt(p2[1])}")
-    return " ".join(d)
+        d.append(f"C{fmt(c1[0])} {fmt(c1[1])} {fmt(c2[0])} {fmt(c2[1])} {fmt(p2[0])} {fmt(p2[1])}")
+    return "".join(d)
+
+
+def polygon_path(vp: Viewport, pts: tuple) -> str:
+    """A closed polygon through the points."""
+    return "M" + "L".join(f"{a} {b}" for a, b in (vp.xy(x, y) for x, y in pts)) + "Z"
+
+
+def hatch_path(vp: Viewport, pts: tuple, spacing_px: float, angle_deg: float = 45.0) -> str:
+    """Fine parallel lines at *angle_deg*, clipped to the polygon by shapely (the draftsman's hatching)."""
+    from shapely.geometry import LineString, MultiLineString, Polygon
+
+    poly = Polygon([vp.px(x, y) for x, y in pts]).buffer(0)
+    if poly.is_empty:
+        return ""
+    x0, y0, x1, y1 = poly.bounds
+    a = math.radians(angle_deg)
+    ux, uy = math.cos(a), -math.sin(a)  # along the hatch (y down)
+    nx, ny = -uy, ux                      # across it
+    corners = [(x0, y0), (x1, y0), (x0, y1), (x1, y1)]
+    ts = [cx * nx + cy * ny for cx, cy in corners]
+    reach = math.hypot(x1 - x0, y1 - y0)
+    lines = []
+    t = math.floor(min(ts) / spacing_px) * spacing_px
+    while t <= max(ts):
+        mx, my = t * nx, t * ny
+        # a point on the hatch line near the box centre, then a long segment both ways
+        cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+        s = (cx - mx) * ux + (cy - my) * uy
+        px, py = mx + s * ux, my + s * uy
+        lines.append(LineString([(px - reach * ux, py - reach * uy), (px + reach * ux, py + reach * uy)]))
+        t += spacing_px
+    clipped = MultiLineString(lines).intersection(poly)
+    parts = []
+    geoms = getattr(clipped, "geoms", [clipped])
+    for g in geoms:
+        if g.geom_type != "LineString" or g.length < 0.5:
+            continue
+        (ax, ay), (bx, by) = g.coords[0], g.coords[-1]
+        parts.append(f"M{fmt(ax)} {fmt(ay)}L{fmt(bx)} {fmt(by)}")
+    return "".join(parts)

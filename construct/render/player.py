@@ -1,0 +1,282 @@
+"""A self-contained HTML step player: one file, no network, no external script.
+
+The page holds one SVG of the whole construction whose elements are grouped
+by step (one ``<g data-k>`` per step and layer); a small script shows steps
+1..k by switching classes.  Controls: previous / next / play-pause buttons, a
+slider, the arrow keys (Home/End, space to play), a step list grouped by the
+construction's groups in collapsible ``<details>``, the givens, and each
+step's caption in German and English.  A "magnify" switch zooms to the
+current group when it is tiny in the whole figure.
+
+All text from the protocol reaches the page escaped: in the markup through
+:func:`html.escape`, in the embedded JSON with ``<``, ``>`` and ``&`` written
+as ``\\u003c`` etc., and the script only ever assigns ``textContent``.
+
+>>> from construct.constructions import get
+>>> from construct.render.scene import build_scene
+>>> fig = get("crank").figure(parts=6)
+>>> page = player_html(build_scene(fig), givens={"r": 1.0})
+>>> page.count("<script") == 2 and "http" not in page.replace("http://www.w3.org", "")
+True
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import re
+from typing import Any, Mapping
+
+from .animate import group_css, step_groups
+from .svg import PLAIN, Drawing, Style, fmt, group_caption
+
+__all__ = ["player_html", "json_for_script"]
+
+
+def json_for_script(data: Any) -> str:
+    """JSON safe inside a ``<script>`` element (no ``</script>``, no ``<!--``).
+
+    >>> json_for_script({"c": "</script><b>&"})
+    '{"c": "\\\\u003c/script\\\\u003e\\\\u003cb\\\\u003e\\\\u0026"}'
+    """
+    text = json.dumps(data, ensure_ascii=False, sort_keys=True)
+    return text.replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026") \
+        .replace("\u2028", "\\u2028").replace("\u2029", "\\u2029")
+
+
+def _zoom_box(drawing: Drawing, k: int) -> list[float] | None:
+    """The viewBox (pixels) that magnifies the tiny group around step k, or None."""
+    below = drawing.style.zoom_below or 0.12
+    box = drawing.scene.group_box(k, below)
+    if box is None:
+        return None
+    size = max(box[2] - box[0], box[3] - box[1])
+    if size <= 0:
+        return None
+    half = 0.5 * size * 1.5
+    cx, cy = (box[0] + box[2]) / 2, (box[1] + box[3]) / 2
+    x0, y0 = drawing.vp.px(cx - half, cy + half)
+    side = 2 * half * drawing.vp.scale
+    return [round(x0, 2), round(y0, 2), round(side, 2), round(side, 2)]
+
+
+def _step_list(scene) -> str:
+    """Nested <details> by group path, each step an item with its number and English caption."""
+    titles = scene.params.get("group_titles") or {}
+    out: list[str] = []
+    open_path: tuple[str, ...] = ()
+    for s in scene.steps:
+        path = s.group
+        common = 0
+        while common < min(len(open_path), len(path)) and open_path[common] == path[common]:
+            common += 1
+        for _ in range(len(open_path) - common):
+            out.append("</ol></details>")
+        for depth in range(common, len(path)):
+            g = path[depth]
+            de = titles.get(g, g)
+            label = g if de == g else f"{g} / {de}"
+            out.append(f'<details data-g="{html.escape(" › ".join(path[:depth + 1]))}"><summary>'
+                       f'{html.escape(label)}</summary><ol>')
+        open_path = path
+        out.append(f'<li><a href="#{s.index}" data-k="{s.index}" class="tool-{html.escape(s.tool)}">'
+                   f'<span class="n">{s.index}</span> {html.escape(s.caption.en)}</a></li>')
+    for _ in open_path:
+        out.append("</ol></details>")
+    return "\n".join(out)
+
+
+def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None = None,
+                title: tuple[str, str] | None = None) -> str:
+    d = Drawing(scene, style, caption_lines=0)
+    n = len(scene.steps)
+    w, h = d.vp.width, d.vp.height
+    layers = []
+    for layer in d.LAYERS:
+        groups = "".join(f'<g data-k="{k}">' + "".join(elems) + "</g>\n" for k, elems in step_groups(d, layer))
+        layers.append(f'<g id="{layer}">\n{groups}</g>\n')
+    css = style.css() + "\n" + group_css(style)
+    svg = (f'<svg id="figure" xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {fmt(w)} {fmt(h)}" '
+           f'data-full="0 0 {fmt(w)} {fmt(h)}" role="img">\n<style>\n{css}\n</style>\n'
+           f'<rect x="-10000" y="-10000" width="20000" height="20000" fill="{html.escape(style.background)}"/>\n'
+           + "".join(layers) + "</svg>")
+    steps = [{"de": s.caption.de, "en": s.caption.en, "tool": s.tool, "role": s.role,
+              "group": group_caption(scene, s.index), "zoom": _zoom_box(d, s.index)} for s in scene.steps]
+    data = {"n": n, "steps": steps, "dt": 600 if n <= 120 else 250}
+    title = title or scene.title
+    giv = givens or {}
+    givens_rows = "".join(f"<tr><th>{html.escape(str(k))}</th><td>{html.escape(_show(v))}</td></tr>"
+                          for k, v in sorted(giv.items()))
+    values = dict((
+        ("{{TITLE_DE}}", html.escape(title[0])),
+        ("{{TITLE_EN}}", html.escape(title[1])),
+        ("{{N}}", str(n)),
+        ("{{STYLE}}", html.escape(style.name)),
+        ("{{GIVENS}}", givens_rows),
+        ("{{STEPLIST}}", _step_list(scene)),
+        ("{{SVG}}", svg),
+        ("{{DATA}}", json_for_script(data)),
+        ("{{PAGE_BG}}", "#f7f3ea" if style.name == "historical" else "#f4f5f7"),
+        ("{{PR}}", fmt(style.point_radius)),
+        ("{{LS}}", fmt(style.label_size)),
+    ))
+    # One pass, so that text from the protocol is never read as a placeholder.
+    return re.sub(r"\{\{[A-Z_]+\}\}", lambda m: values[m.group(0)], _TEMPLATE)
+
+
+def _show(v: Any) -> str:
+    if isinstance(v, float):
+        return f"{v:g}"
+    return str(v)
+
+
+_TEMPLATE = """<!DOCTYPE html>
+<html lang="de">
+<head>
+<meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>{{TITLE_EN}}</title>
+<style>
+body{margin:0;font:14px/1.4 'DejaVu Sans',Arial,sans-serif;background:{{PAGE_BG}};color:#222}
+header{padding:10px 16px 4px}
+h1{font-size:18px;margin:0}
+h1 .en{display:block;font-size:14px;font-weight:normal;color:#555}
+main{display:flex;gap:12px;padding:8px 16px;align-items:flex-start}
+#stage{flex:1 1 auto;min-width:0}
+#figure{width:100%;height:auto;max-height:70vh;border:1px solid #ccc;background:#fff;display:block}
+#figure.zoomed .construction,#figure.zoomed .result,#figure.zoomed .auxiliary,#figure.zoomed .pt,
+#figure.zoomed .hatch{vector-effect:non-scaling-stroke}
+#figure.zoomed .pt{r:calc({{PR}}px / var(--z))}
+#figure.zoomed .lb{font-size:calc({{LS}}px / var(--z))}
+#controls{display:flex;gap:6px;align-items:center;margin:8px 0;flex-wrap:wrap}
+#controls button{font:inherit;padding:3px 10px;min-width:2.4em}
+#slider{flex:1 1 200px}
+#counter{font-variant-numeric:tabular-nums;min-width:7em;text-align:right}
+#caption{background:#fff;border:1px solid #ddd;padding:6px 10px;min-height:4.2em}
+#cap-group{color:#777;font-size:12px}
+#cap-de{font-weight:bold}
+#cap-en{color:#444}
+aside{flex:0 0 340px;max-height:88vh;overflow:auto;background:#fff;border:1px solid #ddd;padding:6px 8px}
+aside h2{font-size:14px;margin:6px 0}
+aside table{border-collapse:collapse;margin-bottom:8px}
+aside th,aside td{text-align:left;padding:1px 8px 1px 0;font-weight:normal}
+aside th{color:#666}
+details{margin-left:6px}
+summary{cursor:pointer;color:#333}
+ol{margin:0;padding-left:18px}
+li a{color:#333;text-decoration:none;display:block;font-size:12px}
+li a .n{color:#999;font-variant-numeric:tabular-nums}
+li a.done{color:#777}
+li a.current{background:#ffe8d6;color:#000;font-weight:bold}
+li a.later{color:#bbb}
+</style>
+</head>
+<body>
+<header>
+<h1>{{TITLE_DE}}<span class="en">{{TITLE_EN}}</span></h1>
+</header>
+<main>
+<div id="stage">
+{{SVG}}
+<div id="controls">
+<button id="first" title="first step (Home)" aria-label="first">⏮</button>
+<button id="prev" title="previous step (←)" aria-label="previous">◀</button>
+<button id="play" title="play / pause (space)" aria-label="play">▶</button>
+<button id="next" title="next step (→)" aria-label="next">▶|</button>
+<button id="last" title="last step (End)" aria-label="last">⏭</button>
+<input id="slider" type="range" min="0" max="{{N}}" value="{{N}}" aria-label="step">
+<span id="counter"></span>
+<label title="magnify tiny groups"><input id="zoom" type="checkbox" checked> Lupe / magnify</label>
+</div>
+<div id="caption"><div id="cap-group"></div><div id="cap-de"></div><div id="cap-en"></div></div>
+</div>
+<aside>
+<h2>Gegeben / givens</h2>
+<table id="givens">{{GIVENS}}</table>
+<h2>Schritte / steps ({{N}})</h2>
+<div id="steps">
+{{STEPLIST}}
+</div>
+</aside>
+</main>
+<script type="application/json" id="data">{{DATA}}</script>
+<script>
+(function () {
+  "use strict";
+  var data = JSON.parse(document.getElementById("data").textContent);
+  var n = data.n, k = n, timer = null;
+  var svg = document.getElementById("figure");
+  var groups = Array.prototype.slice.call(svg.querySelectorAll("g[data-k]"));
+  var links = Array.prototype.slice.call(document.querySelectorAll("#steps a[data-k]"));
+  var slider = document.getElementById("slider");
+  var zoom = document.getElementById("zoom");
+  var full = svg.getAttribute("data-full").split(" ").map(Number);
+  function text(id, s) { document.getElementById(id).textContent = s; }
+  function show(j) {
+    k = Math.max(0, Math.min(n, j));
+    groups.forEach(function (g) {
+      var s = +g.getAttribute("data-k");
+      g.setAttribute("class", s > k ? "hid" : (s === k && k < n ? "cur" : (k < n ? "old" : "")));
+    });
+    links.forEach(function (a) {
+      var s = +a.getAttribute("data-k");
+      a.className = s < k ? "done" : (s === k ? "current" : "later");
+    });
+    slider.value = k;
+    text("counter", "Schritt " + k + " / " + n);
+    var st = k > 0 ? data.steps[k - 1] : null;
+    text("cap-group", st ? st.group : "");
+    text("cap-de", st ? "Schritt " + k + ": " + st.de : document.title);
+    text("cap-en", st ? "Step " + k + ": " + st.en : "");
+    var box = st && zoom.checked && k < n ? st.zoom : null;
+    if (box) {
+      svg.setAttribute("viewBox", box.join(" "));
+      svg.classList.add("zoomed");
+      svg.style.setProperty("--z", (full[2] / box[2]).toFixed(3));
+    } else {
+      svg.setAttribute("viewBox", full.join(" "));
+      svg.classList.remove("zoomed");
+      svg.style.setProperty("--z", "1");
+    }
+    var cur = links[k - 1];
+    if (cur) {
+      for (var p = cur.parentNode; p && p.id !== "steps"; p = p.parentNode) {
+        if (p.tagName === "DETAILS") { p.open = true; }
+      }
+      if (cur.scrollIntoView) { cur.scrollIntoView({block: "nearest"}); }
+    }
+    svg.setAttribute("data-step", String(k));
+  }
+  function pause() { if (timer) { clearInterval(timer); timer = null; } text("play", "▶"); }
+  function play() {
+    if (timer) { pause(); return; }
+    if (k >= n) { show(0); }
+    text("play", "⏸");
+    timer = setInterval(function () { if (k >= n) { pause(); } else { show(k + 1); } }, data.dt);
+  }
+  document.getElementById("first").onclick = function () { pause(); show(0); };
+  document.getElementById("prev").onclick = function () { pause(); show(k - 1); };
+  document.getElementById("next").onclick = function () { pause(); show(k + 1); };
+  document.getElementById("last").onclick = function () { pause(); show(n); };
+  document.getElementById("play").onclick = play;
+  slider.oninput = function () { pause(); show(+slider.value); };
+  zoom.onchange = function () { show(k); };
+  links.forEach(function (a) {
+    a.onclick = function (e) { e.preventDefault(); pause(); show(+a.getAttribute("data-k")); };
+  });
+  document.addEventListener("keydown", function (e) {
+    if (e.target && e.target.tagName === "INPUT" && e.target.type === "range" &&
+        (e.key === "ArrowLeft" || e.key === "ArrowRight")) { e.preventDefault(); }
+    if (e.key === "ArrowRight") { pause(); show(k + 1); }
+    else if (e.key === "ArrowLeft") { pause(); show(k - 1); }
+    else if (e.key === "Home") { pause(); show(0); }
+    else if (e.key === "End") { pause(); show(n); }
+    else if (e.key === " ") { e.preventDefault(); play(); }
+  });
+  var start = parseInt((location.hash || "").slice(1), 10);
+  show(isNaN(start) ? n : start);
+})();
+</script>
+</body>
+</html>
+"""

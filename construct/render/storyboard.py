@@ -1,0 +1,126 @@
+"""A storyboard: a contact sheet of the construction's stages as one PNG, drawn by matplotlib.
+
+The tiles are the ends of the construction's groups (at most :data:`MAX_TILES`,
+thinned evenly, the last step always included); each tile shows steps 1..k,
+the steps since the previous tile in the style's highlight colour, with the
+step number and caption beneath.  The PNG carries no software/date metadata,
+so the bytes depend only on the figure and the matplotlib version.
+
+>>> from construct.constructions import get
+>>> from construct.render.scene import build_scene
+>>> sc = build_scene(get("crank").figure(parts=6))
+>>> ks = storyboard_steps(sc)
+>>> ks[-1] == len(sc.steps) and len(ks) <= MAX_TILES and ks == sorted(set(ks))
+True
+"""
+
+from __future__ import annotations
+
+import io
+import math
+import textwrap
+
+from .scene import Scene
+from .svg import PLAIN, Style
+
+__all__ = ["storyboard_png", "storyboard_steps", "MAX_TILES"]
+
+MAX_TILES = 20
+
+
+def storyboard_steps(scene: Scene, max_tiles: int = MAX_TILES) -> list[int]:
+    """The steps whose frames make the tiles: where groups (up to depth 2) end."""
+    n = len(scene.steps)
+    ends = set()
+    for i, s in enumerate(scene.steps):
+        nxt = scene.steps[i + 1] if i + 1 < n else None
+        if nxt is None or nxt.group[:2] != s.group[:2]:
+            ends.add(s.index)
+    ks = sorted(ends)
+    if len(ks) < min(8, n):  # few groups: spread single steps evenly instead
+        ks = sorted({round(1 + (n - 1) * i / (min(8, n) - 1)) for i in range(min(8, n))} | set(ks))
+    if len(ks) > max_tiles:
+        picks = {ks[round(i * (len(ks) - 1) / (max_tiles - 1))] for i in range(max_tiles)}
+        ks = sorted(picks)
+    return ks
+
+
+def _colour(style: Style, m, current: bool) -> str:
+    if current and style.highlight:
+        return style.highlight
+    if m.tool in style.tool_colours:
+        return style.tool_colours[m.tool]
+    if m.provenance in style.provenance_colours:
+        return style.provenance_colours[m.provenance]
+    return style.ink if (m.role == "result" or m.kind == "point") else style.construction
+
+
+def _draw(ax, scene: Scene, k: int, since: int, style: Style) -> None:
+    from matplotlib.patches import Arc, Circle as CirclePatch, Polygon
+
+    for m in scene.marks:
+        if m.step > k:
+            break
+        current = m.step > since
+        c = _colour(style, m, current)
+        alpha = 1.0 if current or style.earlier_opacity >= 1.0 else max(style.earlier_opacity, 0.3)
+        lw = 0.35 * (style.result_width if m.role == "result" else style.construction_width)
+        if current and style.highlight:
+            lw = max(lw, 0.8)
+        g = m.geom
+        if m.kind == "point":
+            ax.plot([g[0]], [g[1]], "o", ms=1.6 if m.role == "result" else 1.0, color=c, alpha=alpha, mec="none")
+        elif m.kind == "segment":
+            ax.plot([g[0], g[2]], [g[1], g[3]], "-", lw=lw, color=c, alpha=alpha, solid_capstyle="round")
+        elif m.kind == "circle":
+            ax.add_patch(CirclePatch((g[0], g[1]), g[2], fill=False, lw=lw, ec=c, alpha=alpha))
+        elif m.kind == "arc":
+            a0 = math.degrees(g[3])
+            ax.add_patch(Arc((g[0], g[1]), 2 * g[2], 2 * g[2], theta1=a0, theta2=a0 + math.degrees(g[4]),
+                             lw=lw, ec=c, alpha=alpha))
+        elif m.kind == "curve":
+            ax.plot([p[0] for p in g], [p[1] for p in g], "-", lw=lw, color=c, alpha=alpha)
+        elif m.kind == "area":
+            ax.add_patch(Polygon(g, closed=True, fc=style.area_fill if style.area_fill != "none" else "none",
+                                 ec=c, lw=0.3, hatch="////" if style.hatch else None, alpha=alpha))
+
+
+def storyboard_png(scene: Scene, style: Style = PLAIN, *, columns: int = 4, dpi: int = 90) -> bytes:
+    """The contact sheet as PNG bytes."""
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    from matplotlib.figure import Figure
+
+    ks = storyboard_steps(scene)
+    rows = math.ceil(len(ks) / columns)
+    x0, y0, x1, y1 = scene.bbox
+    aspect = (y1 - y0) / max(x1 - x0, 1e-12)
+    tile_w = 3.2
+    tile_h = tile_w * min(max(aspect, 0.25), 1.2) + 0.62
+    fig = Figure(figsize=(tile_w * columns, tile_h * rows + 0.5), dpi=dpi, facecolor=style.background)
+    fig.suptitle(f"{scene.title[0]}", fontsize=9, color=style.ink, family="DejaVu Sans", y=1 - 0.12 / (tile_h * rows + 0.5))
+    prev = 0
+    for i, k in enumerate(ks):
+        ax = fig.add_subplot(rows, columns, i + 1)
+        ax.set_facecolor(style.background)
+        ax.set_xlim(x0, x1)
+        ax.set_ylim(y0, y1)
+        ax.set_aspect("equal")
+        ax.set_xticks([])
+        ax.set_yticks([])
+        for sp in ax.spines.values():
+            sp.set_color("#bbbbbb")
+            sp.set_linewidth(0.5)
+        _draw(ax, scene, k, prev, style)
+        cap = scene.steps[k - 1].caption
+        text = textwrap.shorten(f"{k}. {cap.de} / {cap.en}", 110, placeholder=" …")
+        ax.set_xlabel("\n".join(textwrap.wrap(text, 52)[:2]), fontsize=6.2, color=style.ink, family="DejaVu Sans",
+                      labelpad=2)
+        prev = k
+    fig.subplots_adjust(left=0.01, right=0.99, bottom=0.04, top=1 - 0.45 / (tile_h * rows + 0.5),
+                        wspace=0.04, hspace=0.32)
+    buf = io.BytesIO()
+    # No "Software" (version) or date chunks: the same figure gives the same bytes.
+    fig.savefig(buf, format="png", dpi=dpi, facecolor=style.background, metadata={"Software": None})
+    return buf.getvalue()

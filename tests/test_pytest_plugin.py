@@ -1,0 +1,115 @@
+"""The pytest plugin, used the way the README tells a user to use it, in a fresh project.
+
+The test file of the fresh project *is* the README's example (read from
+README.md, so the documentation cannot drift from what works), run in a
+separate pytest process that finds the plugin through its ``pytest11``
+entry point, as a user's would.
+"""
+
+from __future__ import annotations
+
+import re
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+pytest_plugins = ["pytester"]
+
+README = Path(__file__).resolve().parents[1] / "README.md"
+NAME = "middle-of-stroke"  # the name the README example gives its figure
+
+
+def readme_example() -> str:
+    """The first Python block after the ``<!-- pytest-plugin -->`` marker of the README."""
+    text = README.read_text(encoding="utf-8")
+    tail = text[text.index("<!-- pytest-plugin -->"):]
+    return re.search(r"```python\n(.*?)```", tail, re.S).group(1)
+
+
+def _move_point(svg: str, elem_id: str, dy: float) -> str:
+    m = re.search(r'<circle\b[^>]*\bid="' + re.escape(elem_id) + r'"[^>]*/>', svg)
+    assert m, f"{elem_id} is not drawn in this frame"
+    cy = re.search(r'cy="([^"]+)"', m.group())
+    moved = m.group().replace(cy.group(), f'cy="{float(cy.group(1)) + dy:.3f}"')
+    return svg[:m.start()] + moved + svg[m.end():]
+
+
+def _respell(svg: str) -> str:
+    """The same drawing, attributes in reverse order, numbers like 86.99 as 8.699000e+01."""
+    for prefix, uri in (("", "http://www.w3.org/2000/svg"), ("xlink", "http://www.w3.org/1999/xlink"),
+                        ("ev", "http://www.w3.org/2001/xml-events")):
+        ET.register_namespace(prefix, uri)
+    root = ET.fromstring(svg)
+    for elem in root.iter():
+        items = list(elem.attrib.items())
+        elem.attrib.clear()
+        for k, v in reversed(items):
+            if k in ("cx", "cy", "x1", "y1", "x2", "y2", "x", "y", "r", "width", "height"):
+                v = format(float(v), ".6e")
+            elem.set(k, v)
+    return ET.tostring(root, encoding="unicode")
+
+
+@pytest.fixture()
+def project(pytester: pytest.Pytester) -> pytest.Pytester:
+    pytester.makepyfile(test_stroke=readme_example())
+    return pytester
+
+
+def test_readme_example_in_a_fresh_project(project: pytest.Pytester) -> None:
+    # 1. No goldens yet: the test fails and says how to make them.
+    first = project.runpytest_subprocess()
+    first.assert_outcomes(failed=1)
+    first.stdout.fnmatch_lines([f"*no goldens for '{NAME}'*--construct-update*"])
+
+    # 2. --construct-update writes the final figure, every step frame and the protocol.
+    project.runpytest_subprocess("--construct-update").assert_outcomes(passed=1)
+    goldens = project.path / "goldens" / NAME
+    frames = sorted((goldens / "steps").glob("*.svg"))
+    # midpoint of D0D1: 2 given points + 2 circles + their crossing + line + line D0D1 + M = 8 steps
+    assert len(frames) == 8 and (goldens / "final.svg").is_file() and (goldens / "protocol.json").is_file()
+    project.runpytest_subprocess().assert_outcomes(passed=1)
+
+    # 3. One point of one frame moved by 0.01: caught, with its step and element named.
+    frame = goldens / "steps" / "005.svg"  # step 5: the circles' crossings S1, S2 are marked
+    original = frame.read_text(encoding="utf-8")
+    frame.write_text(_move_point(original, "s0002-D1", 0.01), encoding="utf-8")
+    failed = project.runpytest_subprocess()
+    failed.assert_outcomes(failed=1)
+    out = failed.stdout.str()
+    assert f"construct golden '{NAME}': 1 of 10 files differ" in out
+    line = next(x for x in out.splitlines() if "s0002-D1" in x)
+    assert "moved" in line and "by 0.01" in line
+    assert f"{NAME} step 5 ({NAME}/steps/005.svg): 1 change" in out
+    page = project.path / ".construct-failures" / f"{NAME}.html"
+    assert f"side by side: {page}" in out
+    html = page.read_text(encoding="utf-8")
+    # expected | actual: each drawing inline, in its own sandboxed frame (srcdoc, escaped)
+    assert html.count("srcdoc=") == 2 and html.count("&lt;svg") == 2 and "<svg" not in html
+    assert "expected: " in html and "actual" in html
+    assert "[id=&quot;s0002-D1&quot;]" in html  # the moved element is highlighted
+    assert "<pre>" in html and "s0002-D1 (circle, matched by id)" in html  # the report, escaped text
+
+    # 4. The same golden respelled (attributes reordered, numbers reformatted): equal again,
+    #    and the failure page is cleaned up.
+    respelled = _respell(original)
+    assert respelled != original and "e+0" in respelled
+    frame.write_text(respelled, encoding="utf-8")
+    project.runpytest_subprocess().assert_outcomes(passed=1)
+    assert not page.exists()
+
+
+def test_update_drops_stale_frames_and_name_collisions(pytester: pytest.Pytester) -> None:
+    pytester.makepyfile(test_two=readme_example().replace(
+        'construct_golden.check(figure, name="middle-of-stroke")',
+        'construct_golden.check(figure)\n    construct_golden.check(figure)'))
+    result = pytester.runpytest_subprocess("--construct-update")
+    result.assert_outcomes(failed=1)
+    result.stdout.fnmatch_lines(["*checked twice in this test*"])
+    goldens = pytester.path / "goldens" / "test_middle_of_stroke"  # the default name: the test's
+    assert (goldens / "final.svg").is_file()
+    stale = goldens / "steps" / "999.svg"
+    stale.write_text(next((goldens / "steps").glob("*.svg")).read_text(encoding="utf-8"))
+    pytester.runpytest_subprocess("--construct-update")
+    assert not stale.exists()

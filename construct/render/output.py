@@ -70,7 +70,7 @@ def plate_caption(construction: Construction, figure: Figure, number: int | str 
 
 
 def write_outputs(stage: Path, construction: Construction, figure: Figure, st: Style, *, frames: str = "auto",
-                  fig_number: int | str | None = None) -> dict[str, Any]:
+                  fig_number: int | str | None = None, protocol: bool = True) -> dict[str, Any]:
     """Write final.svg, steps/, protocol.json, animated.svg, player.html and storyboard.png into *stage*."""
     from .animate import animated_svg
     from .player import player_html
@@ -91,7 +91,8 @@ def write_outputs(stage: Path, construction: Construction, figure: Figure, st: S
         steps_dir.mkdir()
     for k in ks:
         write_text(steps_dir / f"{k:0{width}d}.svg", drawing.frame(k))
-    write_text(stage / "protocol.json", figure.protocol.to_json(figure.replay))
+    if protocol:
+        write_text(stage / "protocol.json", figure.protocol.to_json(figure.replay))
     write_text(stage / "animated.svg", animated_svg(scene, st))
     givens = {**dict(figure.replay.givens),
               **{k: v for k, v in figure.params.items() if k not in ("givens", "group_titles", "requested_method")}}

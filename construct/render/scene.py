@@ -186,6 +186,15 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
     span = max(max(xs) - min(xs), max(ys) - min(ys), 1e-9)
     margin = 0.035 * span
     on = _on_curve_points(protocol.steps, objects, shown)
+    if shown is not None:
+        # a plate draws each arc between all the shown points on it, found or not by the protocol
+        tol = 1e-9 * max(span, 1.0)
+        shown_pts = [(n, objects[n]) for n in sorted(shown) if isinstance(objects.get(n), Point)]
+        for name in sorted(shown):
+            obj = objects.get(name)
+            if isinstance(obj, Circle):
+                have = on.setdefault(name, [])
+                have.extend(p for n, p in shown_pts if _on(obj, p, tol) and p not in have)
     marks: list[Mark] = []
     for s in protocol.steps:
         labels = dict(s.labels)
@@ -229,8 +238,8 @@ def plate_names(protocol: Protocol, objects: Replay) -> set[str]:
     >>> from construct.constructions import get
     >>> fig = get("crank").figure(parts=6)
     >>> names = plate_names(fig.protocol, fig.replay)
-    >>> {"crank", "X3", "back3", "P3", "ord2", "O"} <= names, "C3" in names, "rod3" in names
-    (True, False, False)
+    >>> {"crank", "X3", "back3", "P3", "ord2", "O"} <= names, "rod3" in names
+    (True, False)
     """
     maker = {n: s for s in protocol.steps for n in s.outputs}
     shown: set[str] = set()
@@ -250,7 +259,30 @@ def plate_names(protocol: Protocol, objects: Replay) -> set[str]:
         for p in through:
             if isinstance(objects.get(p), Point) and maker[p].role != "auxiliary":
                 shown.add(p)
+    # Points that lie on a shown circle without the protocol saying so (the stroke
+    # marks on the rod arcs of Fig. 77) belong to the plate too; helper points
+    # (dotted names) and auxiliary ones do not.  Lines are not asked: every
+    # crosshead lies on the stroke line, far from the plate.
+    pts = [(n, o) for n, o in objects.items() if isinstance(o, Point) and n not in shown
+           and "." not in n and maker[n].role != "auxiliary"]
+    if pts:
+        xs = [o[0] for _, o in objects.items() if isinstance(o, Point)]
+        tol = 1e-9 * max(max(xs) - min(xs), 1.0)
+        for name in sorted(curves):
+            obj = objects[name]
+            if not isinstance(obj, Circle):
+                continue
+            for n, o in pts:
+                if n not in shown and _on(obj, o, tol):
+                    shown.add(n)
     return shown
+
+
+def _on(curve: Any, p: Point, tol: float) -> bool:
+    if isinstance(curve, Circle):
+        (cx, cy), r = curve
+        return abs(math.hypot(p[0] - cx, p[1] - cy) - r) <= tol * max(1.0, r)
+    return False
 
 
 def _curve_points(objects: Replay, shown: set[str] | None = None) -> list[tuple[float, float]]:

@@ -56,8 +56,14 @@ def _colour(style: Style, m, current: bool) -> str:
 
 
 def _draw(ax, scene: Scene, k: int, since: int, style: Style) -> None:
+    """Steps 1..k on *ax*; marks gathered into one collection per look (fast, and few artists)."""
+    from matplotlib.collections import LineCollection, PatchCollection
     from matplotlib.patches import Arc, Circle as CirclePatch, Polygon
 
+    lines: dict[tuple, list] = {}
+    patches: dict[tuple, list] = {}
+    points: dict[tuple, list] = {}
+    areas = []
     for m in scene.marks:
         if m.step > k:
             break
@@ -68,21 +74,44 @@ def _draw(ax, scene: Scene, k: int, since: int, style: Style) -> None:
         if current and style.highlight:
             lw = max(lw, 0.8)
         g = m.geom
+        look = (c, round(lw, 3), alpha)
         if m.kind == "point":
-            ax.plot([g[0]], [g[1]], "o", ms=1.6 if m.role == "result" else 1.0, color=c, alpha=alpha, mec="none")
+            points.setdefault((c, alpha, 1.6 if m.role == "result" else 1.0), []).append(g)
         elif m.kind == "segment":
-            ax.plot([g[0], g[2]], [g[1], g[3]], "-", lw=lw, color=c, alpha=alpha, solid_capstyle="round")
+            lines.setdefault(look, []).append([(g[0], g[1]), (g[2], g[3])])
+        elif m.kind == "curve":
+            lines.setdefault(look, []).append(list(g))
         elif m.kind == "circle":
-            ax.add_patch(CirclePatch((g[0], g[1]), g[2], fill=False, lw=lw, ec=c, alpha=alpha))
+            patches.setdefault(look, []).append(CirclePatch((g[0], g[1]), g[2]))
         elif m.kind == "arc":
             a0 = math.degrees(g[3])
-            ax.add_patch(Arc((g[0], g[1]), 2 * g[2], 2 * g[2], theta1=a0, theta2=a0 + math.degrees(g[4]),
-                             lw=lw, ec=c, alpha=alpha))
-        elif m.kind == "curve":
-            ax.plot([p[0] for p in g], [p[1] for p in g], "-", lw=lw, color=c, alpha=alpha)
+            patches.setdefault(look, []).append(Arc((g[0], g[1]), 2 * g[2], 2 * g[2], theta1=a0,
+                                                    theta2=a0 + math.degrees(g[4])))
         elif m.kind == "area":
-            ax.add_patch(Polygon(g, closed=True, fc=style.area_fill if style.area_fill != "none" else "none",
-                                 ec=c, lw=0.3, hatch="////" if style.hatch else None, alpha=alpha))
+            areas.append((Polygon(g, closed=True), c, alpha))
+    for poly, c, alpha in areas:
+        poly.set(fc=style.area_fill if style.area_fill != "none" else "none", ec=c, lw=0.3,
+                 hatch="////" if style.hatch else None, alpha=alpha)
+        ax.add_patch(poly)
+    for (c, lw, alpha), segs in sorted(lines.items(), key=lambda kv: kv[0][2]):
+        ax.add_collection(LineCollection(segs, colors=c, linewidths=lw, alpha=alpha, capstyle="round"),
+                          autolim=False)
+    for (c, lw, alpha), ps in sorted(patches.items(), key=lambda kv: kv[0][2]):
+        ax.add_collection(PatchCollection(ps, facecolor="none", edgecolor=c, linewidths=lw, alpha=alpha),
+                          autolim=False)
+    for (c, alpha, ms), pts in sorted(points.items()):
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], "o", ms=ms, color=c, alpha=alpha, mec="none", ls="none")
+
+
+def _tile_text(scene: Scene, first: int, k: int) -> str:
+    """"Schritte 8–16: <group, German> / <group>" for the group the tile ends; a single step's caption else."""
+    step = scene.steps[k - 1]
+    span = f"{first}–{k}" if first < k else f"{k}"
+    if step.group:
+        g = step.group[min(1, len(step.group) - 1)]
+        de = (scene.params.get("group_titles") or {}).get(g, g)
+        return f"{span}: {de} / {g}" if de != g else f"{span}: {g}"
+    return f"{span}: {step.caption.de} / {step.caption.en}"
 
 
 def storyboard_png(scene: Scene, style: Style = PLAIN, *, columns: int = 4, dpi: int = 90) -> bytes:
@@ -113,8 +142,7 @@ def storyboard_png(scene: Scene, style: Style = PLAIN, *, columns: int = 4, dpi:
             sp.set_color("#bbbbbb")
             sp.set_linewidth(0.5)
         _draw(ax, scene, k, prev, style)
-        cap = scene.steps[k - 1].caption
-        text = textwrap.shorten(f"{k}. {cap.de} / {cap.en}", 110, placeholder=" …")
+        text = textwrap.shorten(_tile_text(scene, prev + 1, k), 110, placeholder=" …")
         ax.set_xlabel("\n".join(textwrap.wrap(text, 52)[:2]), fontsize=6.2, color=style.ink, family="DejaVu Sans",
                       labelpad=2)
         prev = k

@@ -1,0 +1,214 @@
+"""The gallery: every registered construction at the books' parameters, in every gallery style.
+
+``build_gallery(out)`` writes, for each construction in
+:func:`construct.constructions.names` and each of its ``book_params``::
+
+    OUT/<entry>/protocol.json            the protocol (same for both styles)
+    OUT/<entry>/checks.md, checks.json    the check report against the analytic formulas
+    OUT/<entry>/<style>/final.svg         historical: the book plate; teaching: the whole construction
+    OUT/<entry>/<style>/steps/NNN.svg     a frame per step (teaching: always; historical: see FRAMES)
+    OUT/<entry>/<style>/animated.svg      plays the steps without script
+    OUT/<entry>/<style>/player.html       the step player, one file
+    OUT/<entry>/<style>/storyboard.png    contact sheet
+    OUT/README.md, OUT/index.html         the index, with pictures, captions, methods and checks
+
+The whole folder is built in a staging folder next to *out* and swapped in
+as one piece (:func:`construct.output.staged_output` on the parent), so a
+failure leaves the previous gallery as it was.  Output is deterministic:
+no dates, entries in registry order, fixed number formats.
+
+>>> entry_slug("crank", {"rod_ratio": 5.0, "parts": 18})
+'crank-parts-18-rod-ratio-5'
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import sys
+from pathlib import Path
+from typing import Any, Mapping
+
+from .checks import summary
+from .constructions import get, names
+from .output import staged_output, write_text
+from .render.output import params_text, write_outputs
+from .render.styles import STYLES
+
+__all__ = ["build_gallery", "gallery_plan", "entry_slug", "GALLERY_STYLES", "FRAMES"]
+
+GALLERY_STYLES = ("historical", "teaching")
+#: Frames per style: every step in the teaching style (the goldens of issue 5);
+#: the historical style shows the same steps in another look, so it keeps its
+#: plate, animation, player and storyboard but no frame folder (size).
+FRAMES = {"teaching": "all", "historical": "all"}
+
+
+def _value(v: Any) -> str:
+    return f"{v:g}" if isinstance(v, float) else str(v)
+
+
+def entry_slug(name: str, params: Mapping[str, Any]) -> str:
+    """A folder name for a construction at *params*: stable, readable, no odd characters."""
+    parts = [name] + [f"{k}-{_value(v)}" for k, v in sorted(params.items())]
+    text = "-".join(parts).replace("_", "-").replace(".", "_")
+    return "".join(c if c.isalnum() or c in "-_" else "-" for c in text)
+
+
+def gallery_plan() -> list[tuple[str, dict[str, Any]]]:
+    """(construction, book params) in order: registry names sorted, each one's book_params as listed."""
+    plan = []
+    for name in names():
+        c = get(name)
+        for params in c.book_params or ({},):
+            plan.append((name, dict(params)))
+    return plan
+
+
+class _Progress:
+    """A progress bar on a terminal; nothing when not asked or not a terminal."""
+
+    def __init__(self, total: int, enabled: bool):
+        self.total = total
+        self.enabled = enabled and sys.stderr.isatty()
+        self.done = 0
+
+    def step(self, text: str) -> None:
+        if not self.enabled:
+            return
+        width = 30
+        filled = int(width * self.done / max(self.total, 1))
+        sys.stderr.write(f"\r[{'#' * filled}{'.' * (width - filled)}] {self.done}/{self.total} {text[:40]:40s}")
+        sys.stderr.flush()
+        self.done += 1
+
+    def close(self) -> None:
+        if self.enabled:
+            sys.stderr.write(f"\r[{'#' * 30}] {self.total}/{self.total} {'done':40s}\n")
+
+
+def _checks_md(title: str, checks: list) -> str:
+    lines = [f"# Checks: {title}", "", f"**{summary(checks)}**", "",
+             "| | quantity | measured | expected | error | tolerance | why |",
+             "|---|---|---:|---:|---:|---:|---|"]
+    for ch in checks:
+        mark = "ok" if ch.ok else "**FAIL**"
+        lines.append(f"| {mark} | {_md(ch.name)} | {ch.measured:.12g} | {ch.expected:.12g} | {ch.error:+.2e} "
+                     f"| {ch.tolerance:.1e} | {_md(ch.why)} |")
+    return "\n".join(lines) + "\n"
+
+
+def _md(text: str) -> str:
+    """Text for a Markdown table cell: no pipes, no HTML."""
+    return html.escape(text).replace("|", "\\|").replace("\n", " ")
+
+
+def _method(fig) -> str:
+    """What method the figure uses: the division method (if any), and its provenance mix."""
+    kinds: dict[str, int] = {}
+    for s in fig.protocol.steps:
+        kinds[s.provenance.kind] = kinds.get(s.provenance.kind, 0) + 1
+    methods = sorted({s.provenance.method for s in fig.protocol.steps if s.provenance.method})
+    head = str(fig.params.get("method", "Euclidean construction"))
+    mix = ", ".join(f"{k} {v}" for k, v in sorted(kinds.items()))
+    tools = ", ".join(f"{k} {v}" for k, v in fig.protocol.instrument_counts().items())
+    return f"{head}{' (' + '; '.join(methods) + ')' if methods else ''}; steps by provenance: {mix}; instruments: {tools}"
+
+
+def build_gallery(out: str | Path, *, progress: bool = False) -> list[dict]:
+    """Build the whole gallery into *out* (swapped in whole); return one dict per (entry, style)."""
+    out = Path(out)
+    plan = gallery_plan()
+    bar = _Progress(len(plan) * len(GALLERY_STYLES), progress)
+    entries: list[dict] = []
+    index: list[dict] = []
+    target = out.resolve()
+    with staged_output(target.parent) as stage:
+        root = stage / target.name
+        root.mkdir()
+        for number, (name, params) in enumerate(plan, start=1):
+            c = get(name)
+            fig = c.figure(**params)
+            slug = entry_slug(name, params)
+            edir = root / slug
+            edir.mkdir()
+            write_text(edir / "protocol.json", fig.protocol.to_json(fig.replay))
+            checks = c.checks(fig)
+            write_text(edir / "checks.md", _checks_md(f"{c.title.en} ({params_text(fig)})", checks))
+            write_text(edir / "checks.json", json.dumps(
+                {"construction": name, "params": params, "summary": summary(checks),
+                 "ok": all(ch.ok for ch in checks), "checks": [ch.as_dict() for ch in checks]},
+                indent=1, ensure_ascii=False, sort_keys=True) + "\n")
+            for style in GALLERY_STYLES:
+                bar.step(f"{slug} {style}")
+                sdir = edir / style
+                sdir.mkdir()
+                info = write_outputs(sdir, c, fig, STYLES[style], frames=FRAMES[style], fig_number=number,
+                                     protocol=False)
+                files = sorted(str(p.relative_to(root)) for p in sdir.rglob("*") if p.is_file())
+                files += [f"{slug}/protocol.json", f"{slug}/checks.md", f"{slug}/checks.json"]
+                entries.append({"construction": name, "params": dict(params), "style": style,
+                                "files": sorted(files), "steps": info["steps"], "frames": info["frames"]})
+            index.append({"number": number, "name": name, "slug": slug, "params": params, "title": c.title,
+                          "source": c.source, "method": _method(fig), "checks": summary(checks),
+                          "ok": all(ch.ok for ch in checks), "steps": len(fig.protocol.steps),
+                          "params_text": params_text(fig)})
+        write_text(root / "README.md", _readme(index))
+        write_text(root / "index.html", _index_html(index))
+    bar.close()
+    return entries
+
+
+def _readme(index: list[dict]) -> str:
+    lines = ["# Gallery", "",
+             "Built by `construct gallery`; do not edit by hand.  Every construction at the parameters the "
+             "books print, as a plate in the historical style and step by step in the teaching style. "
+             "Open `*/teaching/player.html` to step through a construction; `animated.svg` plays it.", ""]
+    for e in index:
+        t = e["title"]
+        s = e["slug"]
+        lines += [f"## Fig. {e['number']}. {_md(t.de)} / {_md(t.en)}", "",
+                  f"*{_md(e['params_text'])}* — {_md(e['source'])}", "",
+                  f"**Method:** {_md(e['method'])}", "",
+                  f"**Checks:** {'✅' if e['ok'] else '❌'} {_md(e['checks'])} ([report]({s}/checks.md))", "",
+                  f"| historical (plate) | teaching (all {e['steps']} steps) |", "|---|---|",
+                  f"| ![Fig. {e['number']}, historical]({s}/historical/final.svg) "
+                  f"| ![Fig. {e['number']}, teaching]({s}/teaching/final.svg) |",
+                  f"| [animated]({s}/historical/animated.svg) · [player]({s}/historical/player.html) · "
+                  f"[storyboard]({s}/historical/storyboard.png) "
+                  f"| [animated]({s}/teaching/animated.svg) · [player]({s}/teaching/player.html) · "
+                  f"[storyboard]({s}/teaching/storyboard.png) · [frames]({s}/teaching/steps/) |", ""]
+    return "\n".join(lines)
+
+
+def _index_html(index: list[dict]) -> str:
+    esc = html.escape
+    cards = []
+    for e in index:
+        t, s = e["title"], esc(e["slug"])
+        cards.append(f"""<section>
+<h2>Fig. {e['number']}. {esc(t.de)} <span class="en">{esc(t.en)}</span></h2>
+<p class="meta">{esc(e['params_text'])} — {esc(e['source'])}</p>
+<p><b>Method:</b> {esc(e['method'])}</p>
+<p><b>Checks:</b> <span class="{'ok' if e['ok'] else 'fail'}">{esc(e['checks'])}</span>
+ (<a href="{s}/checks.md">report</a>)</p>
+<div class="pics">
+<figure><a href="{s}/historical/player.html"><img src="{s}/historical/final.svg" alt="Fig. {e['number']}, historical plate"></a>
+<figcaption>historical · <a href="{s}/historical/animated.svg">animated</a> · <a href="{s}/historical/player.html">player</a> · <a href="{s}/historical/storyboard.png">storyboard</a></figcaption></figure>
+<figure><a href="{s}/teaching/player.html"><img src="{s}/teaching/animated.svg" alt="Fig. {e['number']}, teaching, animated"></a>
+<figcaption>teaching ({e['steps']} steps) · <a href="{s}/teaching/player.html">player</a> · <a href="{s}/teaching/final.svg">final</a> · <a href="{s}/teaching/storyboard.png">storyboard</a></figcaption></figure>
+</div>
+</section>""")
+    return ("""<!DOCTYPE html>
+<html lang="de"><head><meta charset="utf-8"><title>construct gallery</title>
+<style>
+body{font:14px/1.45 'DejaVu Sans',Arial,sans-serif;margin:0 auto;max-width:1400px;padding:12px 20px;color:#222;background:#fafafa}
+h1{font-size:22px}h2{font-size:17px;margin-bottom:2px}h2 .en{font-weight:normal;color:#666}
+.meta{color:#666;margin-top:0}.ok{color:#1b7f3b}.fail{color:#b00020;font-weight:bold}
+section{border-top:1px solid #ddd;padding:6px 0 12px}
+.pics{display:flex;gap:16px;flex-wrap:wrap}figure{margin:0;flex:1 1 560px}
+img{width:100%;height:auto;border:1px solid #ccc;background:#fff}figcaption{color:#555;font-size:12px}
+</style></head><body>
+<h1>construct — gallery</h1>
+<p>Every construction at the books' parameters: the plate (historical style) and the construction step by step (teaching style, animated). Click a picture for the step player. Built by <code>construct gallery</code>.</p>
+""" + "\n".join(cards) + "\n</body></html>\n")

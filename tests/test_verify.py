@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 import re
+import shutil
 import struct
 import xml.etree.ElementTree as ET
 import zlib
@@ -48,11 +49,26 @@ def build_small_gallery(out: Path) -> None:
     (out / FIGURE / "storyboard.png").write_bytes(_png(8, 4, 200))
 
 
-@pytest.fixture()
-def goldens(tmp_path: Path) -> Path:
-    g = tmp_path / "gallery"
+@pytest.fixture(scope="module")
+def pristine(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    g = tmp_path_factory.mktemp("pristine") / "gallery"
     build_small_gallery(g)
     return g
+
+
+@pytest.fixture()
+def goldens(tmp_path: Path, pristine: Path) -> Path:
+    """A fresh copy of the goldens for each test to edit."""
+    g = tmp_path / "gallery"
+    shutil.copytree(pristine, g)
+    return g
+
+
+@pytest.fixture()
+def rebuild(pristine: Path):
+    """The builder handed to verify: the same tree as a real rebuild (checked in the first test),
+    copied instead of re-rendered so that each test takes a moment, not seconds."""
+    return lambda out: shutil.copytree(pristine, out)
 
 
 def _move_circle(svg: str, elem_id: str, dx: float) -> tuple[str, float]:
@@ -77,11 +93,11 @@ def test_clean_gallery_is_equal(goldens: Path) -> None:
     assert f"all {len(files)} files equal" in result.summary()
 
 
-def test_point_moved_by_a_hundredth_is_caught_and_named(goldens: Path) -> None:
+def test_point_moved_by_a_hundredth_is_caught_and_named(goldens: Path, rebuild) -> None:
     path = goldens / FRAME
     text, old = _move_circle(path.read_text(encoding="utf-8"), POINT, 0.01)
     path.write_text(text, encoding="utf-8")
-    result = verify(goldens, builder=build_small_gallery)
+    result = verify(goldens, builder=rebuild)
     assert not result.equal
     assert [d.path for d in result.differences] == [FRAME]  # only that frame, not the other 73
     d = result.differences[0]
@@ -94,15 +110,15 @@ def test_point_moved_by_a_hundredth_is_caught_and_named(goldens: Path) -> None:
     assert re.search(r"construct verify: 1 of \d+ files differ", report)
 
 
-def test_rounding_noise_is_forgiven_but_not_at_tolerance_zero(goldens: Path) -> None:
+def test_rounding_noise_is_forgiven_but_not_at_tolerance_zero(goldens: Path, rebuild) -> None:
     # 0.001 is a last-digit flip of a three-decimal writer: below the default
     # tolerance, which must also stay under half of the 0.01 the issue demands
     # to catch (read back from text, 0.01 may be 0.00999...).
     assert 0.001 * 2 ** 0.5 < DEFAULT_TOLERANCE < 0.005
     path = goldens / FRAME
     path.write_text(_move_circle(path.read_text(encoding="utf-8"), POINT, 0.001)[0], encoding="utf-8")
-    assert verify(goldens, builder=build_small_gallery).equal
-    strict = verify(goldens, builder=build_small_gallery, tolerance=0.0)
+    assert verify(goldens, builder=rebuild).equal
+    strict = verify(goldens, builder=rebuild, tolerance=0.0)
     assert [(d.step, d.kind) for d in strict.differences] == [(5, "svg")]
 
 
@@ -134,7 +150,7 @@ def _reformat(svg_text: str) -> str:
     return ET.tostring(root, encoding="unicode")
 
 
-def test_reformatted_golden_is_equal(goldens: Path) -> None:
+def test_reformatted_golden_is_equal(goldens: Path, rebuild) -> None:
     for rel in (FRAME, f"{FIGURE}/final.svg"):
         path = goldens / rel
         before = path.read_text(encoding="utf-8")
@@ -145,35 +161,35 @@ def test_reformatted_golden_is_equal(goldens: Path) -> None:
     proto = goldens / FIGURE / "protocol.json"
     data = json.loads(proto.read_text(encoding="utf-8"))
     proto.write_text(json.dumps(data, indent=4, sort_keys=True), encoding="utf-8")
-    result = verify(goldens, builder=build_small_gallery)
+    result = verify(goldens, builder=rebuild)
     assert result.equal, result.report()
 
 
-def test_reformatted_and_moved_golden_names_only_the_move(goldens: Path) -> None:
+def test_reformatted_and_moved_golden_names_only_the_move(goldens: Path, rebuild) -> None:
     path = goldens / FRAME
     moved, _ = _move_circle(path.read_text(encoding="utf-8"), POINT, -0.01)
     path.write_text(_reformat(moved), encoding="utf-8")
-    d, = verify(goldens, builder=build_small_gallery).differences
+    d, = verify(goldens, builder=rebuild).differences
     assert d.total == 1 and POINT in d.changes[0] and "by 0.01" in d.changes[0]
 
 
-def test_protocol_point_moved_is_named(goldens: Path) -> None:
+def test_protocol_point_moved_is_named(goldens: Path, rebuild) -> None:
     proto = goldens / FIGURE / "protocol.json"
     data = json.loads(proto.read_text(encoding="utf-8"))
     data["objects"]["O"]["x"] += 0.01
     proto.write_text(json.dumps(data, indent=1), encoding="utf-8")
-    d, = verify(goldens, builder=build_small_gallery).differences
+    d, = verify(goldens, builder=rebuild).differences
     assert (d.path, d.kind, d.step) == (f"{FIGURE}/protocol.json", "protocol", None)
     assert any(" O:" in c and "moved by 0.01" in c for c in d.changes), d.changes
 
 
-def test_missing_extra_text_and_png(goldens: Path) -> None:
+def test_missing_extra_text_and_png(goldens: Path, rebuild) -> None:
     (goldens / FIGURE / "steps" / "074.svg").unlink()  # the rebuild writes it: extra
     (goldens / FIGURE / "steps" / "075.svg").write_text("<svg xmlns='http://www.w3.org/2000/svg'/>")  # missing
     index = goldens / "index.html"
     index.write_text(index.read_text(encoding="utf-8").replace("6 parts", "8 parts"), encoding="utf-8")
     (goldens / FIGURE / "storyboard.png").write_bytes(_png(8, 5, 200))  # another size
-    result = verify(goldens, builder=build_small_gallery)
+    result = verify(goldens, builder=rebuild)
     found = {d.path: d for d in result.differences}
     assert sorted(found) == ["crank-6/steps/074.svg", "crank-6/steps/075.svg", "crank-6/storyboard.png",
                              "index.html"]
@@ -188,30 +204,30 @@ def test_missing_extra_text_and_png(goldens: Path) -> None:
     assert "(gallery) index.html (index.html): 1 change" in report
 
 
-def test_png_pixels_are_not_compared(goldens: Path) -> None:
+def test_png_pixels_are_not_compared(goldens: Path, rebuild) -> None:
     (goldens / FIGURE / "storyboard.png").write_bytes(_png(8, 4, 10))  # same size, other pixels
-    result = verify(goldens, builder=build_small_gallery)
+    result = verify(goldens, builder=rebuild)
     assert result.equal and "PNG compared by image size only" in result.summary()
 
 
-def test_update_rewrites_the_goldens_as_a_whole(goldens: Path) -> None:
+def test_update_rewrites_the_goldens_as_a_whole(goldens: Path, rebuild) -> None:
     path = goldens / FRAME
     path.write_text(_move_circle(path.read_text(encoding="utf-8"), POINT, 0.5)[0], encoding="utf-8")
     (goldens / "stale.md").write_text("not written by the builder\n")
-    result = verify(goldens, builder=build_small_gallery, update=True)
+    result = verify(goldens, builder=rebuild, update=True)
     assert {d.path for d in result.differences} == {FRAME, "stale.md"} and result.updated
     assert "rewritten" in result.summary()
     assert not (goldens / "stale.md").exists()
     assert not [p for p in goldens.parent.iterdir() if p.name.startswith(".construct-")]  # no leftovers
-    assert verify(goldens, builder=build_small_gallery).equal
+    assert verify(goldens, builder=rebuild).equal
 
 
-def test_update_creates_missing_goldens(tmp_path: Path) -> None:
+def test_update_creates_missing_goldens(tmp_path: Path, rebuild) -> None:
     target = tmp_path / "new" / "gallery"
-    result = verify(target, builder=build_small_gallery, update=True)
+    result = verify(target, builder=rebuild, update=True)
     files = [p for p in target.rglob("*") if p.is_file()]
     assert len(result.differences) == len(files) >= 78 and all(d.status == "extra" for d in result.differences)
-    assert verify(target, builder=build_small_gallery).equal
+    assert verify(target, builder=rebuild).equal
 
 
 def test_locate() -> None:
@@ -219,8 +235,9 @@ def test_locate() -> None:
     assert locate("crank-k5/steps/notes.txt") == ("crank-k5/steps", None)
 
 
-def test_cli_exit_codes(goldens: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture) -> None:
-    monkeypatch.setattr(verify_module, "default_builder", build_small_gallery)
+def test_cli_exit_codes(goldens: Path, rebuild, monkeypatch: pytest.MonkeyPatch,
+                        capsys: pytest.CaptureFixture) -> None:
+    monkeypatch.setattr(verify_module, "default_builder", rebuild)
     assert main(["verify", "--gallery", str(goldens)]) == 0
     assert re.search(r"all \d+ files equal", capsys.readouterr().out)
     path = goldens / FRAME

@@ -195,8 +195,8 @@ class GoldenChecker:
         """Render *figure* (final, every step frame, protocol) and compare it with ``goldens/<name>/``.
 
         *figure* is anything with ``.protocol`` and ``.replay`` (a
-        :class:`construct.constructions.Figure`).  *name* defaults to the test's
-        name; *style* is a style name (``plain``, ``teaching``, ``historical``)
+        :class:`construct.constructions.Figure`).  *name* defaults to
+        ``<test module>.<test name>``; *style* is a style name (``plain``, ``teaching``, ``historical``)
         or a :class:`construct.render.svg.Style`; *frames* as for ``construct
         replay``.  Returns the goldens folder.
         """
@@ -262,5 +262,6 @@ def construct_golden(request: pytest.FixtureRequest) -> GoldenChecker:
     """Compare figures with golden SVG frames: ``construct_golden.check(figure, name="...")``."""
     folder = request.config.getini("construct_goldens") or "goldens"
     return GoldenChecker(goldens=Path(request.node.path).parent / folder,
-                         default_name=safe_name(request.node.name),
+                         # module and test: two test files of one folder may hold tests of one name
+                         default_name=f"{safe_name(Path(request.node.path).stem)}.{safe_name(request.node.name)}",
                          update=bool(request.config.getoption("construct_update")))

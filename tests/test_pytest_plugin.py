@@ -107,7 +107,7 @@ def test_update_drops_stale_frames_and_name_collisions(pytester: pytest.Pytester
     result = pytester.runpytest_subprocess("--construct-update")
     result.assert_outcomes(failed=1)
     result.stdout.fnmatch_lines(["*checked twice in this test*"])
-    goldens = pytester.path / "goldens" / "test_middle_of_stroke"  # the default name: the test's
+    goldens = pytester.path / "goldens" / "test_two.test_middle_of_stroke"  # default: module and test
     assert (goldens / "final.svg").is_file()
     stale = goldens / "steps" / "999.svg"
     stale.write_text(next((goldens / "steps").glob("*.svg")).read_text(encoding="utf-8"))

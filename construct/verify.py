@@ -38,7 +38,7 @@ import re
 import shutil
 import struct
 import tempfile
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
 from typing import Any, Callable
 
@@ -126,7 +126,6 @@ class VerifyResult:
     tolerance: float
     png_by_size: int = 0
     updated: bool = False
-    notes: tuple[str, ...] = field(default=())
 
     @property
     def equal(self) -> bool:
@@ -151,7 +150,7 @@ class VerifyResult:
         return head
 
     def report(self, max_changes: int = MAX_CHANGES) -> str:
-        return "\n".join([f.report(max_changes) for f in self.differences] + list(self.notes) + [self.summary()])
+        return "\n".join([f.report(max_changes) for f in self.differences] + [self.summary()])
 
 
 # --------------------------------------------------------------------------- locating

@@ -71,18 +71,18 @@ def _step_list(scene) -> str:
         while common < min(len(open_path), len(path)) and open_path[common] == path[common]:
             common += 1
         for _ in range(len(open_path) - common):
-            out.append("</ol></details>")
+            out.append("</ul></details>")
         for depth in range(common, len(path)):
             g = path[depth]
             de = titles.get(g, g)
             label = g if de == g else f"{g} / {de}"
             out.append(f'<details data-g="{html.escape(" › ".join(path[:depth + 1]))}"><summary>'
-                       f'{html.escape(label)}</summary><ol>')
+                       f'{html.escape(label)}</summary><ul>')
         open_path = path
         out.append(f'<li><a href="#{s.index}" data-k="{s.index}" class="tool-{html.escape(s.tool)}">'
                    f'<span class="n">{s.index}</span> {html.escape(s.caption.en)}</a></li>')
     for _ in open_path:
-        out.append("</ol></details>")
+        out.append("</ul></details>")
     return "\n".join(out)
 
 
@@ -163,7 +163,7 @@ aside th,aside td{text-align:left;padding:1px 8px 1px 0;font-weight:normal}
 aside th{color:#666}
 details{margin-left:6px}
 summary{cursor:pointer;color:#333}
-ol{margin:0;padding-left:18px}
+ul{margin:0;padding-left:14px;list-style:none}
 li a{color:#333;text-decoration:none;display:block;font-size:12px}
 li a .n{color:#999;font-variant-numeric:tabular-nums}
 li a.done{color:#777}
@@ -179,11 +179,11 @@ li a.later{color:#bbb}
 <div id="stage">
 {{SVG}}
 <div id="controls">
-<button id="first" title="first step (Home)" aria-label="first">⏮</button>
-<button id="prev" title="previous step (←)" aria-label="previous">◀</button>
+<button id="first" title="first step (Home)" aria-label="first">|◀</button>
+<button id="prev" title="previous step (←)" aria-label="previous">◁</button>
 <button id="play" title="play / pause (space)" aria-label="play">▶</button>
-<button id="next" title="next step (→)" aria-label="next">▶|</button>
-<button id="last" title="last step (End)" aria-label="last">⏭</button>
+<button id="next" title="next step (→)" aria-label="next">▷</button>
+<button id="last" title="last step (End)" aria-label="last">▶|</button>
 <input id="slider" type="range" min="0" max="{{N}}" value="{{N}}" aria-label="step">
 <span id="counter"></span>
 <label title="magnify tiny groups"><input id="zoom" type="checkbox" checked> Lupe / magnify</label>
@@ -251,7 +251,7 @@ li a.later{color:#bbb}
   function play() {
     if (timer) { pause(); return; }
     if (k >= n) { show(0); }
-    text("play", "⏸");
+    text("play", "||");
     timer = setInterval(function () { if (k >= n) { pause(); } else { show(k + 1); } }, data.dt);
   }
   document.getElementById("first").onclick = function () { pause(); show(0); };

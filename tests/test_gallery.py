@@ -1,0 +1,89 @@
+"""The gallery: every registered construction at its book parameters, atomic and idempotent."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+import construct.gallery as gallery
+from construct.constructions import get, names
+
+REPO = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture
+def small_plan(monkeypatch):
+    """A gallery of one small figure, so that the tests stay quick."""
+    monkeypatch.setattr(gallery, "gallery_plan", lambda: [("crank", {"parts": 3, "rod_ratio": 4.0})])
+
+
+def _tree(root: Path) -> dict[str, bytes]:
+    return {str(p.relative_to(root)): p.read_bytes() for p in sorted(root.rglob("*")) if p.is_file()}
+
+
+def test_plan_covers_every_registered_construction_and_book_parameter_set():
+    plan = gallery.gallery_plan()
+    for name in names():
+        c = get(name)
+        for params in c.book_params or ({},):
+            assert (name, dict(params)) in plan
+
+
+def test_gallery_entry_files_and_index(small_plan, tmp_path):
+    out = tmp_path / "g"
+    entries = gallery.build_gallery(out)
+    assert [(e["construction"], e["style"]) for e in entries] == [("crank", "historical"), ("crank", "teaching")]
+    n = len(get("crank").figure(parts=3, rod_ratio=4.0).protocol.steps)
+    for e in entries:
+        for f in e["files"]:
+            assert (out / f).is_file(), f
+        style_files = {Path(f).name for f in e["files"] if f"/{e['style']}/" in f}
+        assert {"final.svg", "animated.svg", "player.html", "storyboard.png"} <= style_files
+    assert len(list((out / "crank-parts-3-rod-ratio-4" / "teaching" / "steps").glob("*.svg"))) == n
+    readme = (out / "README.md").read_text(encoding="utf-8")
+    # every picture the index shows exists, with its caption, method and checks
+    pics = re.findall(r"!\[[^\]]*\]\(([^)]+)\)", readme)
+    assert len(pics) == 2 and all((out / p).is_file() for p in pics)
+    assert "Kolbenwege aus dem Kurbelkreis" in readme and "**Method:**" in readme and "**Checks:**" in readme
+    html = (out / "index.html").read_text(encoding="utf-8")
+    assert all(f'src="{p}"' in html or p.replace("final.svg", "animated.svg") in html for p in pics)
+    assert "Fig. 1." in (out / "crank-parts-3-rod-ratio-4" / "historical" / "final.svg").read_text()
+
+
+def test_gallery_is_idempotent(small_plan, tmp_path):
+    out = tmp_path / "g"
+    gallery.build_gallery(out)
+    first = _tree(out)
+    gallery.build_gallery(out)
+    assert _tree(out) == first
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(".construct-staging")]
+
+
+def test_failed_build_leaves_the_previous_gallery(small_plan, tmp_path, monkeypatch):
+    out = tmp_path / "g"
+    gallery.build_gallery(out)
+    before = _tree(out)
+
+    def broken(*args, **kwargs):
+        raise RuntimeError("renderer broke half way")
+
+    monkeypatch.setattr(gallery, "_index_html", broken)  # fails after every figure has been written
+    with pytest.raises(RuntimeError):
+        gallery.build_gallery(out)
+    assert _tree(out) == before
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(".construct-staging")]
+
+
+def test_committed_gallery_has_every_construction():
+    """The committed gallery/ is built by `construct gallery` from the current registry."""
+    root = REPO / "gallery"
+    if not root.is_dir():
+        pytest.skip("no committed gallery in this checkout")
+    readme = (root / "README.md").read_text(encoding="utf-8")
+    for name, params in gallery.gallery_plan():
+        slug = gallery.entry_slug(name, params)
+        assert (root / slug / "historical" / "final.svg").is_file(), slug
+        assert (root / slug / "teaching" / "player.html").is_file(), slug
+        assert f"({slug}/historical/final.svg)" in readme, slug

@@ -1,0 +1,187 @@
+"""The HTML step player in a real browser: headless Chromium driven by Playwright.
+
+At every step k exactly the objects made by steps 1..k must be visible, and
+the caption must be step k's.  The expectation comes from the protocol (which
+step made which drawable object), not from the player's own data.
+
+Needs Debian's ``chromium`` and the ``playwright`` client (``.ci/install-browser.sh``).
+Skips when they are missing, except under CI (``CI`` set), where it fails.
+Set ``CONSTRUCT_SCREENSHOT=path.png`` to keep a screenshot for looking at.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+from pathlib import Path
+
+import pytest
+
+from construct.constructions import get
+from construct.geometry import Circle, Line, Point
+from construct.render.animate import step_seconds
+from construct.render.output import write_replay
+
+CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
+ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+        "--disable-background-networking", "--disable-component-update", "--disable-sync"]
+
+
+def _unavailable(reason: str):
+    if os.environ.get("CI"):
+        pytest.fail(f"browser test cannot run in CI: {reason}")
+    pytest.skip(reason)
+
+
+@pytest.fixture(scope="module")
+def browser():
+    try:
+        from playwright.sync_api import sync_playwright
+    except ImportError:
+        _unavailable("playwright is not installed (.ci/install-browser.sh)")
+    if not Path(CHROMIUM).exists():
+        _unavailable("chromium is not installed (.ci/install-browser.sh)")
+    with sync_playwright() as pw:
+        b = pw.chromium.launch(executable_path=CHROMIUM, args=ARGS)
+        yield b
+        b.close()
+
+
+@pytest.fixture(scope="module")
+def player(tmp_path_factory):
+    c = get("crank")
+    fig = c.figure(parts=3, rod_ratio=4.0)
+    out = tmp_path_factory.mktemp("player")
+    write_replay(c, fig, out, style="teaching", frames="none")
+    return fig, out / "player.html"
+
+
+def _expected_visible(fig, k: int) -> set[str]:
+    """Names of the drawable objects made by steps 1..k, straight from the protocol."""
+    names = set()
+    for s in fig.protocol.steps[:k]:
+        for name in s.outputs:
+            if isinstance(fig.replay.get(name), (Point, Line, Circle)):
+                names.add(name)
+    return names
+
+
+VISIBLE_JS = """() => Array.from(document.querySelectorAll('#figure [id^="s"]'))
+    .filter(e => !e.id.endsWith('-label') && e.getBoundingClientRect().width + e.getBoundingClientRect().height > 0
+                 && getComputedStyle(e).visibility !== 'hidden')
+    .map(e => e.id)"""
+
+
+def _visible_names(page, fig) -> set[str]:
+    ids = page.evaluate(VISIBLE_JS)
+    # ids are "s<step>-<name>" with unsafe characters made "-": map back through the protocol
+    by_id = {}
+    for s in fig.protocol.steps:
+        for name in s.outputs:
+            safe = "".join(ch if ch.isalnum() or ch in "-_" else "-" for ch in name)
+            by_id[f"s{s.index:04d}-{safe}"] = name
+    return {by_id[i] for i in ids}
+
+
+def test_player_steps_show_exactly_the_steps_so_far(browser, player):
+    fig, path = player
+    n = len(fig.protocol.steps)
+    page = browser.new_page(viewport={"width": 1400, "height": 900})
+    errors: list[str] = []
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    requests: list[str] = []
+    page.on("request", lambda r: requests.append(r.url))
+    page.goto(path.as_uri())
+    page.keyboard.press("Home")
+    assert _visible_names(page, fig) == set()
+    for k in range(1, n + 1):
+        page.keyboard.press("ArrowRight")
+        assert page.get_attribute("#figure", "data-step") == str(k)
+        assert _visible_names(page, fig) == _expected_visible(fig, k), f"step {k}"
+        step = fig.protocol.steps[k - 1]
+        assert page.inner_text("#cap-de") == f"Schritt {k}: {step.caption.de}"
+        assert page.inner_text("#cap-en") == f"Step {k}: {step.caption.en}"
+    # back again with the other arrow key, and the slider to a middle step
+    page.keyboard.press("ArrowLeft")
+    assert _visible_names(page, fig) == _expected_visible(fig, n - 1)
+    mid = n // 2
+    page.eval_on_selector("#slider", f"(s) => {{ s.value = {mid}; s.dispatchEvent(new Event('input')); }}")
+    assert _visible_names(page, fig) == _expected_visible(fig, mid)
+    # play advances by itself, pause stops it
+    page.click("#play")
+    page.wait_for_function(f"() => +document.getElementById('figure').dataset.step > {mid + 1}", timeout=10000)
+    page.click("#play")
+    stopped = page.get_attribute("#figure", "data-step")
+    page.wait_for_timeout(1500)
+    assert page.get_attribute("#figure", "data-step") == stopped
+    # the groups are collapsible and the givens are shown
+    assert page.locator("#steps details").count() >= 3
+    assert "rod_ratio" in page.inner_text("#givens") and "4" in page.inner_text("#givens")
+    shot = os.environ.get("CONSTRUCT_SCREENSHOT")
+    page.keyboard.press("End")
+    page.screenshot(path=shot or str(path.with_suffix(".png")), full_page=True)
+    assert errors == []
+    assert all(u.startswith("file:") or u.startswith("data:") for u in requests), requests
+    page.close()
+
+
+def test_animated_svg_plays_in_an_img(browser, tmp_path):
+    """The animated SVG in an <img>: at first only the first steps show, at the end the whole figure."""
+    c = get("crank")
+    fig = c.figure(parts=3, rod_ratio=4.0)
+    write_replay(c, fig, tmp_path, style="teaching", frames="none")
+    page = browser.new_page(viewport={"width": 1000, "height": 800})
+    (tmp_path / "img.html").write_text('<!DOCTYPE html><body style="margin:0;background:#fff">'
+                                       '<img id="a" src="animated.svg" width="960"></body>')
+    page.goto((tmp_path / "img.html").as_uri())
+    page.wait_for_function("() => document.getElementById('a').complete")
+    # count dark pixels via a canvas at two moments: the drawing grows
+    page.wait_for_timeout(200)
+    early = page.screenshot(clip={"x": 0, "y": 0, "width": 960, "height": 600})
+    page.wait_for_timeout(step_seconds(len(fig.protocol.steps)) * 1000 * len(fig.protocol.steps) + 300)
+    late = page.screenshot(clip={"x": 0, "y": 0, "width": 960, "height": 600})
+    assert _ink(late) > 2 * _ink(early) > 0
+    page.close()
+
+
+def _ink(png: bytes) -> int:
+    """Non-white pixels of a PNG screenshot (decoded by matplotlib, an independent reader)."""
+    import io
+
+    import matplotlib.image as mpimg
+    import numpy as np
+
+    img = mpimg.imread(io.BytesIO(png), format="png")
+    return int(np.count_nonzero(img[..., :3].min(axis=2) < 0.9))
+
+
+def test_player_shows_markup_in_captions_as_text(browser, tmp_path):
+    """A caption '<script>alert(1)</script> & "x"' is shown as text and runs nothing."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("_escaping", Path(__file__).with_name("test_escaping.py"))
+    escaping = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(escaping)
+    NASTY, nasty_figure = escaping.NASTY, escaping.nasty_figure
+
+    from construct.render.player import player_html
+    from construct.render.scene import build_scene
+    from construct.render.styles import STYLES
+
+    fig = nasty_figure()
+    path = tmp_path / "nasty.html"
+    path.write_text(player_html(build_scene(fig, title=(NASTY, NASTY)), STYLES["teaching"], givens={NASTY: 1.0}),
+                    encoding="utf-8")
+    page = browser.new_page()
+    dialogs: list[str] = []
+    page.on("dialog", lambda d: (dialogs.append(d.message), d.dismiss()))
+    page.goto(path.as_uri())
+    page.keyboard.press("Home")
+    page.keyboard.press("ArrowRight")
+    assert page.inner_text("#cap-de") == f"Schritt 1: {NASTY}"
+    assert page.inner_text("h1").startswith(NASTY)
+    assert NASTY in page.inner_text("#givens")
+    assert page.locator("#figure text", has_text=NASTY).count() == 1
+    assert page.evaluate("() => document.querySelectorAll('script').length") == 2
+    assert dialogs == []
+    page.close()

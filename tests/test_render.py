@@ -1,0 +1,192 @@
+"""The renderers: frames, plates, animation, storyboard, notebook display.
+
+Expectations come from the protocol (which step made which object, which
+role it has) and from geometry (shapely), never from the renderer's output.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import subprocess
+import sys
+import warnings
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import cairosvg
+import pytest
+
+from construct.constructions import get
+from construct.geometry import Circle, Line, Point
+from construct.render.animate import animated_svg
+from construct.render.notebook import figure_repr_svg
+from construct.render.output import scene_for, write_replay
+from construct.render.scene import build_scene
+from construct.render.storyboard import storyboard_png
+from construct.render.styles import STYLES
+from construct.render.svg import Drawing, hatch_path, Viewport
+
+SVG = "{http://www.w3.org/2000/svg}"
+
+
+@pytest.fixture(scope="module")
+def crank6():
+    c = get("crank")
+    return c, c.figure(parts=6, rod_ratio=5.0)
+
+
+def _ids(svg: str) -> set[str]:
+    root = ET.fromstring(svg.encode("utf-8"))
+    return {e.get("id") for e in root.iter() if re.fullmatch(r"s\d{4}-.+", e.get("id") or "")
+            and not e.get("id").endswith(("-label", "-hatch"))}
+
+
+def _drawable_ids(fig, k: int) -> set[str]:
+    out = set()
+    for s in fig.protocol.steps[:k]:
+        for name in s.outputs:
+            if isinstance(fig.replay.get(name), (Point, Line, Circle)):
+                out.add(f"s{s.index:04d}-{''.join(c if c.isalnum() or c in '-_' else '-' for c in name)}")
+    return out
+
+
+def _render_clean(svg: str) -> bytes:
+    """Rasterise with cairosvg; any warning is an error."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        return cairosvg.svg2png(bytestring=svg.encode("utf-8"))
+
+
+@pytest.mark.parametrize("style", sorted(STYLES))
+def test_frame_k_shows_exactly_steps_1_to_k(crank6, style):
+    c, fig = crank6
+    d = Drawing(scene_for(c, fig), STYLES[style])
+    for k in (0, 1, 7, 40, len(fig.protocol.steps)):
+        svg = d.frame(k)
+        # In a zoomed teaching frame the marks are all still there (clipped, not dropped).
+        assert _ids(svg) == _drawable_ids(fig, k), k
+
+
+def test_teaching_marks_current_and_earlier_steps(crank6):
+    c, fig = crank6
+    svg = Drawing(scene_for(c, fig), STYLES["teaching"]).frame(12)
+    root = ET.fromstring(svg.encode("utf-8"))
+    for e in root.iter():
+        m = re.fullmatch(r"s(\d{4})-.+", e.get("id") or "")
+        if not m or e.get("id").endswith("-label"):
+            continue
+        classes = e.get("class").split()
+        step = int(m.group(1))
+        assert ("cur" in classes) == (step == 12) and ("old" in classes) == (step < 12), e.get("id")
+
+
+def test_every_svg_parses_strictly_and_renders(crank6, tmp_path):
+    c, fig = crank6
+    for style in sorted(STYLES):
+        out = tmp_path / style
+        write_replay(c, fig, out, style=style, frames="all")
+        svgs = sorted(out.rglob("*.svg"))
+        assert len(svgs) == len(fig.protocol.steps) + 2  # frames, final, animated
+        for p in svgs[:: max(1, len(svgs) // 25)] + [out / "final.svg", out / "animated.svg"]:
+            text = p.read_text(encoding="utf-8")
+            ET.fromstring(text.encode("utf-8"))
+            png = _render_clean(text)
+            assert png.startswith(b"\x89PNG")
+
+
+def test_historical_plate_shows_results_and_what_locates_them(crank6):
+    c, fig = crank6
+    sc = build_scene(fig, plate=True)
+    names = {m.name for m in sc.marks}
+    roles = {n: s.role for s in fig.protocol.steps for n in s.outputs}
+    # every result the construction makes is on the plate
+    assert {n for n, r in roles.items() if r == "result" and n in fig.replay} <= names
+    # no auxiliary object, no crosshead far out on the stroke line, no helper of the division
+    assert not any(roles[n] == "auxiliary" for n in names)
+    assert not any(n.startswith("C") and n[1:].isdigit() for n in names)
+    assert not any("." in n for n in names)
+    # compass circles are short arcs, only the crank circle (a result) is whole
+    whole = {m.name for m in sc.marks if m.kind == "circle"}
+    assert whole == {n for n in whole if roles[n] == "result"} and "crank" in whole
+    # the plate is no wider than the crank circle and a little margin (the crossheads are left out)
+    r = fig.replay.givens["r"]
+    assert sc.bbox[2] - sc.bbox[0] < 2.6 * r
+
+
+def test_rod_arc_on_the_plate_runs_from_the_point_to_the_stroke(crank6):
+    """Seed 001: the arc with the rod length goes from the division point to the stroke line."""
+    import math
+
+    c, fig = crank6
+    sc = build_scene(fig, plate=True)
+    arc = next(m for m in sc.marks if m.name == "back2")
+    cx, cy, rr, a0, sweep = arc.geom
+    p, x = fig.replay["P2"], fig.replay["X2"]
+    for q in (p, x):
+        ang = (math.atan2(q[1] - cy, q[0] - cx) - a0) % (2 * math.pi)
+        assert ang <= sweep  # both ends lie on the drawn part
+    assert sweep < math.pi / 2  # and it is a short arc, not the circle
+
+
+def test_hatching_lies_inside_the_area():
+    from shapely.geometry import Polygon
+
+    vp = Viewport(0.0, 10.0, 10.0, 200.0, 200.0, 0.0)
+    tri = ((1.0, 1.0), (9.0, 1.0), (5.0, 8.0))
+    d = hatch_path(vp, tri, 4.0)
+    segs = re.findall(r"M([\d.]+) ([\d.]+)L([\d.]+) ([\d.]+)", d)
+    poly = Polygon([vp.px(x, y) for x, y in tri]).buffer(0.02)  # 0.02 px: two-decimal rounding
+    assert len(segs) > 10
+    for x1, y1, x2, y2 in segs:
+        from shapely.geometry import LineString
+        assert poly.contains(LineString([(float(x1), float(y1)), (float(x2), float(y2))]))
+
+
+def test_animated_svg_hides_each_step_until_its_time(crank6):
+    c, fig = crank6
+    svg = animated_svg(scene_for(c, fig), STYLES["teaching"])
+    root = ET.fromstring(svg.encode("utf-8"))
+    times = {}
+    for g in root.iter(f"{SVG}g"):
+        m = re.fullmatch(r"(construction|results|points|labels|areas)-(\d+)", g.get("id") or "")
+        if m:
+            sets = [s for s in g if s.tag == f"{SVG}set" and s.get("attributeName") == "visibility"]
+            k = int(m.group(2))
+            dur = float(sets[0].get("dur").rstrip("s")) if sets else 0.0
+            times.setdefault(k, set()).add(dur)
+    ks = sorted(times)
+    assert all(len(times[k]) == 1 for k in ks)  # every layer of a step appears at the same time
+    durs = [times[k].pop() for k in ks]
+    assert durs == sorted(durs) and durs[0] == 0.0 and len(set(durs)) == len(durs)
+    assert "<script" not in svg
+
+
+def test_storyboard_is_a_png_without_software_or_date(crank6):
+    c, fig = crank6
+    png = storyboard_png(scene_for(c, fig), STYLES["historical"])
+    assert png.startswith(b"\x89PNG")
+    assert b"Software" not in png and b"matplotlib" not in png and b"tIME" not in png
+
+
+def test_notebook_svg_is_embeddable(crank6):
+    _, fig = crank6
+    svg = figure_repr_svg(fig)
+    assert svg.startswith("<svg") and "<?xml" not in svg
+    ET.fromstring(svg.encode("utf-8"))
+
+
+def test_replay_output_is_the_same_in_another_process(tmp_path):
+    """Byte-identical across processes and hash seeds (no timestamps, no set order)."""
+    outs = []
+    for seed in ("1", "2"):
+        out = tmp_path / f"seed{seed}"
+        env = {**os.environ, "PYTHONHASHSEED": seed}
+        subprocess.run([sys.executable, "-m", "construct", "replay", "crank", "--parts", "6", "--style",
+                        "teaching", "--out", str(out)], check=True, env=env, capture_output=True)
+        outs.append(out)
+    a = sorted(p.relative_to(outs[0]) for p in outs[0].rglob("*") if p.is_file())
+    b = sorted(p.relative_to(outs[1]) for p in outs[1].rglob("*") if p.is_file())
+    assert a == b and len(a) > 10
+    for rel in a:
+        assert (outs[0] / rel).read_bytes() == (outs[1] / rel).read_bytes(), rel

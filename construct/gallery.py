@@ -6,7 +6,7 @@
     OUT/<entry>/protocol.json            the protocol (same for both styles)
     OUT/<entry>/checks.md, checks.json    the check report against the analytic formulas
     OUT/<entry>/<style>/final.svg         historical: the book plate; teaching: the whole construction
-    OUT/<entry>/<style>/steps/NNN.svg     a frame per step (teaching: always; historical: see FRAMES)
+    OUT/<entry>/<style>/steps/NNN.svg     a frame per step (per group above FRAME_BUDGET)
     OUT/<entry>/<style>/animated.svg      plays the steps without script
     OUT/<entry>/<style>/player.html       the step player, one file
     OUT/<entry>/<style>/storyboard.png    contact sheet
@@ -32,16 +32,29 @@ from typing import Any, Mapping
 from .checks import summary
 from .constructions import get, names
 from .output import staged_output, write_text
-from .render.output import params_text, write_outputs
+from .render.output import params_text, scene_for, write_outputs
+from .render.svg import Drawing
 from .render.styles import STYLES
 
-__all__ = ["build_gallery", "gallery_plan", "entry_slug", "GALLERY_STYLES", "FRAMES"]
+__all__ = ["build_gallery", "gallery_plan", "entry_slug", "frames_mode", "GALLERY_STYLES", "FRAME_BUDGET"]
 
 GALLERY_STYLES = ("historical", "teaching")
-#: Frames per style: every step in the teaching style (the goldens of issue 5);
-#: the historical style shows the same steps in another look, so it keeps its
-#: plate, animation, player and storyboard but no frame folder (size).
-FRAMES = {"teaching": "all", "historical": "all"}
+#: Frame k holds the marks of k steps, so all frames together grow with the
+#: square of the step count.  Per style, every frame is written while the
+#: estimate (steps / 2 times the size of the last frame) stays within this
+#: budget; above it the teaching style writes a frame per group and the
+#: historical style none (its plate, animation, player and storyboard remain).
+FRAME_BUDGET = {"teaching": 10_000_000, "historical": 3_000_000}
+FALLBACK_FRAMES = {"teaching": "groups", "historical": "none"}
+
+
+def frames_mode(style: str, n_steps: int, last_frame_bytes: int) -> str:
+    """"all", or the fallback when every frame would exceed the style's budget.
+
+    >>> frames_mode("teaching", 362, 46_000), frames_mode("teaching", 931, 133_000), frames_mode("historical", 362, 44_000)
+    ('all', 'groups', 'none')
+    """
+    return "all" if n_steps / 2 * last_frame_bytes <= FRAME_BUDGET[style] else FALLBACK_FRAMES[style]
 
 
 def _value(v: Any) -> str:
@@ -143,12 +156,15 @@ def build_gallery(out: str | Path, *, progress: bool = False) -> list[dict]:
                 bar.step(f"{slug} {style}")
                 sdir = edir / style
                 sdir.mkdir()
-                info = write_outputs(sdir, c, fig, STYLES[style], frames=FRAMES[style], fig_number=number,
-                                     protocol=False)
+                scene = scene_for(c, fig)
+                last = len(Drawing(scene, STYLES[style]).frame(len(scene.steps)).encode("utf-8"))
+                mode = frames_mode(style, len(scene.steps), last)
+                info = write_outputs(sdir, c, fig, STYLES[style], frames=mode, fig_number=number, protocol=False)
                 files = sorted(str(p.relative_to(root)) for p in sdir.rglob("*") if p.is_file())
                 files += [f"{slug}/protocol.json", f"{slug}/checks.md", f"{slug}/checks.json"]
                 entries.append({"construction": name, "params": dict(params), "style": style,
-                                "files": sorted(files), "steps": info["steps"], "frames": info["frames"]})
+                                "files": sorted(files), "steps": info["steps"], "frames": info["frames"],
+                                "frame_mode": mode})
             index.append({"number": number, "name": name, "slug": slug, "params": params, "title": c.title,
                           "source": c.source, "method": _method(fig), "checks": summary(checks),
                           "ok": all(ch.ok for ch in checks), "steps": len(fig.protocol.steps),
@@ -171,7 +187,7 @@ def _readme(index: list[dict]) -> str:
                   f"*{_md(e['params_text'])}* — {_md(e['source'])}", "",
                   f"**Method:** {_md(e['method'])}", "",
                   f"**Checks:** {'✅' if e['ok'] else '❌'} {_md(e['checks'])} ([report]({s}/checks.md))", "",
-                  f"| historical (plate) | teaching (all {e['steps']} steps) |", "|---|---|",
+                  f"| historical (plate) | teaching ({e['steps']} steps) |", "|---|---|",
                   f"| ![Fig. {e['number']}, historical]({s}/historical/final.svg) "
                   f"| ![Fig. {e['number']}, teaching]({s}/teaching/final.svg) |",
                   f"| [animated]({s}/historical/animated.svg) · [player]({s}/historical/player.html) · "

@@ -45,19 +45,23 @@ def json_for_script(data: Any) -> str:
 
 
 def _zoom_box(drawing: Drawing, k: int) -> list[float] | None:
-    """The viewBox (pixels) that magnifies the tiny group around step k, or None."""
-    below = drawing.style.zoom_below or 0.12
-    box = drawing.scene.group_box(k, below)
-    if box is None:
+    """The viewBox (pixels) for step k when magnified: its top-level group's region, or a tiny group in it."""
+    scene = drawing.scene
+    stage = scene.stage_box(k)
+    box = scene.group_box(k, drawing.style.zoom_below or 0.12, stage) or stage
+    if box == scene.bbox:
         return None
-    size = max(box[2] - box[0], box[3] - box[1])
-    if size <= 0:
+    w, h = box[2] - box[0], box[3] - box[1]
+    if max(w, h) <= 0:
         return None
-    half = 0.5 * size * 1.5
+    # a little room round the box, in the figure's own aspect ratio
+    vw, vh = drawing.vp.width, drawing.vp.height
     cx, cy = (box[0] + box[2]) / 2, (box[1] + box[3]) / 2
-    x0, y0 = drawing.vp.px(cx - half, cy + half)
-    side = 2 * half * drawing.vp.scale
-    return [round(x0, 2), round(y0, 2), round(side, 2), round(side, 2)]
+    s = drawing.vp.scale
+    side_w = max(w * s * 1.15, h * s * 1.15 * vw / vh)
+    side_h = side_w * vh / vw
+    px, py = drawing.vp.px(cx, cy)
+    return [round(px - side_w / 2, 2), round(py - side_h / 2, 2), round(side_w, 2), round(side_h, 2)]
 
 
 def _step_list(scene) -> str:

@@ -488,6 +488,11 @@ def object_json(obj: Any) -> dict[str, Any]:
         return {"type": "circle", "cx": cx, "cy": cy, "r": r}
     if isinstance(obj, Length):
         return {"type": "length", "value": float(obj)}
+    if isinstance(obj, tuple) and getattr(obj, "kind", None) and all(isinstance(p, Point) for p in obj):
+        # A curve made of points (a Bézier chain through constructed points): its points in order.
+        return {"type": obj.kind, "points": [[p[0], p[1]] for p in obj]}
+    if isinstance(obj, float):
+        return {"type": "number", "value": float(obj)}
     raise TypeError(f"not a drawable object: {obj!r}")
 
 

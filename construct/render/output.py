@@ -79,10 +79,10 @@ def write_outputs(stage: Path, construction: Construction, figure: Figure, st: S
     scene = scene_for(construction, figure)
     drawing = Drawing(scene, st)
     if st.plate:
-        plate = Drawing(scene_for(construction, figure, plate=True), st, caption_lines=2)
-        final = plate.final(plate_caption(construction, figure, fig_number), centred=st.fig_caption)
+        final = render_svg(scene_for(construction, figure, plate=True), style=st,
+                           caption=plate_caption(construction, figure, fig_number))
     else:
-        final = drawing.final()
+        final = render_svg(scene, style=st)
     write_text(stage / "final.svg", final)
     ks = frame_steps(scene, frames)
     width = max(3, len(str(len(scene.steps))))

@@ -494,10 +494,15 @@ def _near(m: Mark, region: tuple[float, float, float, float]) -> bool:
 def render_svg(scene: Scene, *, upto: int | None = None, style: Style = PLAIN,
                caption: tuple[str, str] | None = None) -> str:
     """The figure after steps 1..upto (all steps when None), as SVG text."""
-    d = Drawing(scene, style)
     if upto is None:
-        return d.final(caption)
-    return d.frame(upto)
+        if style.fig_caption:
+            # a plate: its own size, the "Fig." caption centred beneath
+            lines = caption if caption is not None else scene.title
+            width = style.width_px - 2 * style.margin_px
+            n = sum(len(wrap(line, width, style.caption_size)) for line in lines)
+            return Drawing(scene, style, caption_lines=n).final(caption, centred=True)
+        return Drawing(scene, style).final(caption)
+    return Drawing(scene, style).frame(upto)
 
 
 def _label_box(x: float, y: float, text: str, size: float) -> tuple[float, float, float, float]:

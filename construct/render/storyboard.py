@@ -126,16 +126,22 @@ def storyboard_png(scene: Scene, style: Style = PLAIN, *, columns: int = 4, dpi:
     x0, y0, x1, y1 = scene.bbox
     aspect = (y1 - y0) / max(x1 - x0, 1e-12)
     tile_w = 3.2
-    tile_h = tile_w * min(max(aspect, 0.25), 1.2) + 0.62
+    aspect_t = min(max(aspect, 0.25), 1.2)  # height / width of a tile's drawing
+    tile_h = tile_w * aspect_t + 0.62
     fig = Figure(figsize=(tile_w * columns, tile_h * rows + 0.5), dpi=dpi, facecolor=style.background)
     fig.suptitle(f"{scene.title[0]}", fontsize=9, color=style.ink, family="DejaVu Sans", y=1 - 0.12 / (tile_h * rows + 0.5))
     prev = 0
     for i, k in enumerate(ks):
         ax = fig.add_subplot(rows, columns, i + 1)
         ax.set_facecolor(style.background)
-        ax.set_xlim(x0, x1)
-        ax.set_ylim(y0, y1)
-        ax.set_aspect("equal")
+        # each tile shows the region of its top-level group (the far division ray
+        # of the stroke would otherwise shrink the crank circle to a dot)
+        sx0, sy0, sx1, sy1 = scene.stage_box(k)
+        cx, cy = (sx0 + sx1) / 2, (sy0 + sy1) / 2
+        half = max((sx1 - sx0) / 2, (sy1 - sy0) / 2 / aspect_t)
+        ax.set_xlim(cx - half, cx + half)
+        ax.set_ylim(cy - half * aspect_t, cy + half * aspect_t)
+        ax.set_aspect("equal", adjustable="box")
         ax.set_xticks([])
         ax.set_yticks([])
         for sp in ax.spines.values():

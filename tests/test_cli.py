@@ -152,11 +152,17 @@ def test_a_failure_midway_leaves_the_previous_output_intact(tmp_path, capsys, mo
     before = {p.name: p.read_bytes() for p in out.iterdir() if p.is_file()}
     import construct.render.output as ro
 
-    def boom(*a, **k):
-        raise OutputError("disk full (simulated)")
+    real_write = ro.write_text
+    calls = []
 
-    monkeypatch.setattr(ro, "render_svg", boom)
+    def write_then_fail(path, text):  # the first file goes through, the second hits a full disk
+        calls.append(path)
+        if len(calls) > 1:
+            raise OutputError("disk full (simulated)")
+        real_write(path, text)
+
+    monkeypatch.setattr(ro, "write_text", write_then_fail)
     code, _, err = run(capsys, "replay", "crank", "--parts", "6", "--out", str(out))
-    assert code == 2 and "disk full" in err
+    assert code == 2 and "disk full" in err and len(calls) == 2
     assert {p.name: p.read_bytes() for p in out.iterdir() if p.is_file()} == before
     assert not [p for p in out.iterdir() if p.name.startswith(".construct-staging")]

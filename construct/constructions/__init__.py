@@ -33,6 +33,12 @@ class Figure:
     def params(self) -> Mapping[str, Any]:
         return self.protocol.params
 
+    def _repr_svg_(self) -> str:
+        """Inline display in Jupyter: the final figure in the plain style."""
+        from ..render.notebook import figure_repr_svg
+
+        return figure_repr_svg(self)
+
 
 @dataclass(frozen=True)
 class Construction:

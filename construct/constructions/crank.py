@@ -90,9 +90,10 @@ def rod_arcs(b: Builder, f: Mapping[str, str], points: list[str]) -> None:
                                 de=f"Kreuzkopf C{k} auf der Hubachse", en=f"crosshead C{k} on the stroke line")
                 back = b.circle_through(f"back{k}", C, p, de=f"Bogen um C{k} durch {k} zurück auf den Hub",
                                         en=f"arc about C{k} through point {k} back onto the stroke")
+                # At the dead centres the piston position is the dead centre itself: no second letter.
                 b.intersect(f"X{k}", back, f["axis"], rule=("toward", f["O"], None, 1.0, 0.0), role="result",
                             de=f"Kolbenstellung X{k}: Kolbenweg A–X{k}", en=f"piston position X{k}: piston path A–X{k}",
-                            labels={f"X{k}": f"{k}'"})
+                            labels={f"X{k}": f"{k}'"} if 0 < k < n else None)
 
 
 def infinite_rod(b: Builder, f: Mapping[str, str], points: list[str]) -> None:

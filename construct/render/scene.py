@@ -211,7 +211,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
             elif isinstance(obj, Line):
                 marks.append(Mark(mid, kind="segment", geom=_segment_extent(obj, on.get(name, []), margin), **common))
             elif isinstance(obj, Circle):
-                kind, geom = _circle_extent(obj, on.get(name, []), margin, s.role)
+                kind, geom = _circle_extent(obj, on.get(name, []), margin, s.role, plate=shown is not None)
                 marks.append(Mark(mid, kind=kind, geom=geom, **common))
             elif hasattr(obj, "area_points"):
                 marks.append(Mark(mid, kind="area", geom=tuple((p[0], p[1]) for p in obj.area_points()), **common))
@@ -305,8 +305,19 @@ def _segment_extent(line: Line, pts: list[Point], margin: float) -> tuple[float,
     return (px + t0 * ux, py + t0 * uy, px + t1 * ux, py + t1 * uy)
 
 
-def _circle_extent(circle: Circle, pts: list[Point], margin: float, role: str) -> tuple[str, tuple]:
+def _circle_extent(circle: Circle, pts: list[Point], margin: float, role: str,
+                   plate: bool = False) -> tuple[str, tuple]:
+    """A full circle for results and unmarked circles, else the arc over the marked points.
+
+    On a plate a result circle whose shown points cover at most a half turn
+    (the crank circle of the forward stroke) is drawn as exactly that arc:
+    the books' "über dem Kolbenhub geschlagene Halbkreis".
+    """
     (cx, cy), r = circle
+    if role == "result" and plate and len(pts) >= 3:
+        kind, geom = _circle_extent(circle, pts, 0.0, "construction")
+        if kind == "arc" and geom[4] <= math.pi * (1.0 + 1e-9):
+            return kind, geom
     if role == "result" or not pts:
         return "circle", (cx, cy, r)
     angles: list[float] = []

@@ -118,7 +118,7 @@ class BezierCurve(tuple):
             if min(x0, x3) <= x <= max(x0, x3):
                 lo, hi = 0.0, 1.0
                 rising = x3 >= x0
-                for _ in range(100):  # bisection: x(t) is monotone on every segment drawn here
+                for _ in range(60):  # bisection to 1e-18 of the segment;: x(t) is monotone on every segment drawn here
                     mid = 0.5 * (lo + hi)
                     if (self._at(seg, mid)[0] < x) == rising:
                         lo = mid
@@ -683,7 +683,7 @@ INERTIA = register(Construction(
         rod_ratio=rod_ratio, parts=parts, method=method, r=r, pressure_ratio=pressure_ratio,
         pressure_unit=pressure_unit),
     checks=inertia_checks,
-    defaults={"rod_ratio": 5.0, "parts": 18, "method": "auto", "r": 1.0, "pressure_ratio": 1.0, "pressure_unit": 0.5},
+    defaults={"rod_ratio": 5.0, "parts": 18, "method": "auto", "r": 1.0, "pressure_ratio": 1.0, "pressure_unit": 0.8},
     book_params=({"rod_ratio": 4.0}, {"rod_ratio": 5.0}, {"rod_ratio": 6.0}),
     structural=("parts", "method"),
 ), validate=_validate)

@@ -251,7 +251,7 @@ class Builder:
             mirror = self.intersect(self.fresh(f"{name}.Y"), line, k, rule=("farther", on_line_point))
             return self.perpendicular_bisector(name, on_line_point, mirror)
 
-    def parallel_through(self, name: str, p: str, a: str, b: str) -> str:
+    def parallel_through(self, name: str, p: str, a: str, b: str, *, role: str = "construction") -> str:
         """The parallel to ab through p, by completing the parallelogram a b Q p.
 
         Q lies at distance |ab| from p and |ap| from b, on the other side of
@@ -264,7 +264,7 @@ class Builder:
             (px, py), (bx, by), (ax, ay) = self[p], self[b], self[a]
             a_left = (bx - px) * (ay - py) - (by - py) * (ax - px) > 0
             q = self.intersect(self.fresh(f"{name}.Q"), k1, k2, rule=("right" if a_left else "left", p, b))
-            return self.line(name, p, q)
+            return self.line(name, p, q, role=role)
 
     def divide_segment(self, name: str, a: str, b: str, n: int, *, line: str | None = None,
                        only: Sequence[int] | None = None) -> list[str]:

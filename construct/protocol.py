@@ -48,8 +48,10 @@ __all__ = [
 PROVENANCE_KINDS = ("given", "exact", "approximate", "neusis", "trial")
 
 #: The instruments.  "intersect" marks where two drawn curves cross: no new
-#: instrument, but a step of its own because a choice is made there.
-TOOLS = ("given", "straightedge", "compass", "dividers", "intersect", "neusis")
+#: instrument, but a step of its own because a choice is made there.  "curve"
+#: is the draftsman's French curve (Curvenlineal): it draws a smooth line
+#: through constructed points, it constructs nothing.
+TOOLS = ("given", "straightedge", "compass", "dividers", "intersect", "neusis", "curve")
 
 PROTOCOL_FORMAT = "construct-protocol/1"
 

@@ -206,7 +206,7 @@ def french_curve(b: Builder, name: str, axis: str, points: Sequence[str], tangen
                  de: str, en: str, role: str = "result") -> str:
     """Record the drawing of a smooth curve through *points* along *tangents* (index -> line)."""
     at = sorted(tangents)
-    b.record("straightedge", "french_curve", (axis, *points, *(tangents[i] for i in at)), (name,),
+    b.record("curve", "french_curve", (axis, *points, *(tangents[i] for i in at)), (name,),
              {"points": len(points), "tangent_at": tuple(at)}, de, en, role=role)
     return name
 
@@ -479,8 +479,7 @@ def _characteristic(b: Builder, c: _Ctx, n: int) -> None:
                         de="D: Ordinate −3m, auf beiden Endtangenten", en="D: ordinate -3m, on both end tangents")
         t0 = b.line("tan0", E, D, role="result", de="Tangente in q1 (ω = 0°)", en="tangent at q1 (w = 0)")
         t180 = b.line("tan180", D, F, role="result", de="Tangente in q2 (ω = 180°)", en="tangent at q2 (w = 180)")
-        t90 = b.parallel_through("tan90", q5, "Einf", "Finf")
-        b.steps[-1] = _with_role(b.steps[-1], "result")
+        t90 = b.parallel_through("tan90", q5, "Einf", "Finf", role="result")
     with b.group("the curve drawn through points and tangents", "Die Curve durch Punkte und Tangenten gezogen"):
         pts = [f"K{k}" for k in range(n + 1)]
         tangents = {0: t0, n: t180}
@@ -493,15 +492,8 @@ def _characteristic(b: Builder, c: _Ctx, n: int) -> None:
         french_curve(b, "curve7", c.axis, seven, {0: t0, 4: t90, 6: t180}, role="construction",
                      de="Curve durch die sieben charakteristischen Punkte und drei Tangenten",
                      en="curve through the seven characteristic points along the three tangents")
-        b.record("straightedge", "parabola_envelope", (E, D, F), ("parabola",), {},
+        b.record("curve", "parabola_envelope", (E, D, F), ("parabola",), {},
                  "Parabel als Einhüllende auf E–D–F", "parabola enveloped by E-D-F", role="construction")
-
-
-def _with_role(step, role: str):
-    """The last line of a composite drawn heavy (the 90-degree tangent)."""
-    from dataclasses import replace
-
-    return replace(step, role=role)
 
 
 # --------------------------------------------------------------------------

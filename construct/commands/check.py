@@ -22,7 +22,7 @@ def run(args) -> int:
     c, fig = figure_from_args(args)
     checks = c.checks(fig)
     ok = all(ch.ok for ch in checks)
-    params = {k: v for k, v in _jsonable(dict(fig.params)).items() if k != "group_titles"}
+    params = {k: v for k, v in _jsonable(dict(fig.params)).items() if k not in ("group_titles", "plate")}
     params["givens"] = dict(fig.replay.givens)
     if args.json:
         print(json.dumps({"construction": c.name, "params": params, "ok": ok,

@@ -389,11 +389,22 @@ def _root_point(b: Builder, c: _Ctx, tag: str, H: str, what: tuple[str, str]) ->
                            de=f"Kurbelpunkt zu {tag}", en=f"crank point for {tag}", labels={f"{tag}.P": tag})
 
 
+#: What Fig. 78/79 show (regular expressions over object names): the stroke
+#: with its dead centres and piston positions, the ordinates and the curve
+#: points on them, the infinite-rod line, the characteristic points, D and the
+#: three tangents, and the curve.  The crank circle, the proportional angle and
+#: every helper stay in the frames and the player.
+PLATE = (
+    "axis", "D0", "D1", r"X\d+", r"ord\d+", r"K\d+", "inf", "Einf", "Finf", r"q\d", r"X\.c6", "D",
+    r"tan\d+", "curve",
+)
+
 def build_inertia(*, rod_ratio: float, parts: int, method: str, r: float, pressure_ratio: float,
                   pressure_unit: float) -> Figure:
     givens = _givens(r, rod_ratio, pressure_ratio, pressure_unit)
     used = check_parts(parts, method)
-    b = Builder("inertia-curve", givens, {"parts": parts, "method": used, "requested_method": method})
+    b = Builder("inertia-curve", givens, {"parts": parts, "method": used, "requested_method": method,
+                                          "plate": PLATE})
     f = build_frame(b, result_circle=False)
     c = _setup(b, f)
     points = divide_semicircle(b, O=f["O"], D0=f["D0"], D1=f["D1"], circle=f["circle"], axis=f["axis"],

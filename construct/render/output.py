@@ -53,7 +53,7 @@ def params_text(figure: Figure) -> str:
     """The figure's givens and parameters, e.g. ``r = 1, rod_ratio = 5, parts = 18, method = durer``."""
     givens = [f"{k} = {v:g}" for k, v in sorted(figure.replay.givens.items())]
     params = [f"{k} = {v}" for k, v in sorted(figure.params.items())
-              if k not in ("givens", "group_titles", "requested_method")]
+              if k not in ("givens", "group_titles", "requested_method", "plate")]
     return ", ".join(givens + params)
 
 
@@ -95,7 +95,7 @@ def write_outputs(stage: Path, construction: Construction, figure: Figure, st: S
         write_text(stage / "protocol.json", figure.protocol.to_json(figure.replay))
     write_text(stage / "animated.svg", animated_svg(scene, st))
     givens = {**dict(figure.replay.givens),
-              **{k: v for k, v in figure.params.items() if k not in ("givens", "group_titles", "requested_method")}}
+              **{k: v for k, v in figure.params.items() if k not in ("givens", "group_titles", "requested_method", "plate")}}
     write_text(stage / "player.html", player_html(scene, st, givens=givens))
     (stage / "storyboard.png").write_bytes(storyboard_png(scene, st))
     return {"steps": len(scene.steps), "frames": len(ks)}

@@ -19,6 +19,7 @@ True
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 from typing import Any, Iterable
 
@@ -192,7 +193,9 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
         shown_pts = [(n, objects[n]) for n in sorted(shown) if isinstance(objects.get(n), Point)]
         for name in sorted(shown):
             obj = objects.get(name)
-            if isinstance(obj, Circle):
+            # Lines only where the construction names its plate: otherwise every
+            # crosshead far out on the stroke line would stretch it.
+            if isinstance(obj, Circle) or (isinstance(obj, Line) and protocol.params.get("plate")):
                 have = on.setdefault(name, [])
                 have.extend(p for n, p in shown_pts if _on(obj, p, tol) and p not in have)
     marks: list[Mark] = []
@@ -241,6 +244,11 @@ def plate_names(protocol: Protocol, objects: Replay) -> set[str]:
     >>> {"crank", "X3", "back3", "P3", "ord2", "O"} <= names, "rod3" in names
     (True, False)
     """
+    explicit = protocol.params.get("plate")
+    if explicit:
+        # The construction names what its book figure shows (regular expressions over object names).
+        patterns = [re.compile(p) for p in explicit]
+        return {n for n in objects if any(p.fullmatch(n) for p in patterns)}
     maker = {n: s for s in protocol.steps for n in s.outputs}
     shown: set[str] = set()
     curves: set[str] = set()
@@ -282,6 +290,10 @@ def _on(curve: Any, p: Point, tol: float) -> bool:
     if isinstance(curve, Circle):
         (cx, cy), r = curve
         return abs(math.hypot(p[0] - cx, p[1] - cy) - r) <= tol * max(1.0, r)
+    if isinstance(curve, Line):
+        (px, py), (qx, qy) = curve
+        d = math.hypot(qx - px, qy - py)
+        return abs((qx - px) * (p[1] - py) - (qy - py) * (p[0] - px)) / d <= tol
     return False
 
 
@@ -301,6 +313,10 @@ def _segment_extent(line: Line, pts: list[Point], margin: float) -> tuple[float,
     (px, py), _ = line
     ux, uy = line.direction()
     ts = [(q[0] - px) * ux + (q[1] - py) * uy for q in pts] or [0.0, 1.0]
+    if max(ts) - min(ts) <= 1e-9 * max(1.0, abs(ts[0])):
+        # A line shown through one point only (a tangent at its point of contact)
+        # is drawn long enough to be seen as a line.
+        margin *= 5.0
     t0, t1 = min(ts) - margin, max(ts) + margin
     return (px + t0 * ux, py + t0 * uy, px + t1 * ux, py + t1 * uy)
 

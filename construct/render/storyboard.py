@@ -55,13 +55,23 @@ def _colour(style: Style, m, current: bool) -> str:
     return style.ink if (m.role == "result" or m.kind == "point") else style.construction
 
 
+def _arc_points(cx: float, cy: float, r: float, start: float, sweep: float) -> list[tuple[float, float]]:
+    """An arc as a polyline (3 degrees a segment).
+
+    Agg draws matplotlib's Arc and Circle patches of a large radius seen
+    through a small tile very slowly (minutes for the inertia curve's rod
+    arcs); a polyline of this fineness is indistinguishable at tile size.
+    """
+    n = max(4, int(abs(sweep) / math.radians(3.0)) + 1)
+    return [(cx + r * math.cos(start + sweep * i / n), cy + r * math.sin(start + sweep * i / n)) for i in range(n + 1)]
+
+
 def _draw(ax, scene: Scene, k: int, since: int, style: Style) -> None:
     """Steps 1..k on *ax*; marks gathered into one collection per look (fast, and few artists)."""
-    from matplotlib.collections import LineCollection, PatchCollection
-    from matplotlib.patches import Arc, Circle as CirclePatch, Polygon
+    from matplotlib.collections import LineCollection
+    from matplotlib.patches import Polygon
 
     lines: dict[tuple, list] = {}
-    patches: dict[tuple, list] = {}
     points: dict[tuple, list] = {}
     areas = []
     for m in scene.marks:
@@ -82,11 +92,9 @@ def _draw(ax, scene: Scene, k: int, since: int, style: Style) -> None:
         elif m.kind == "curve":
             lines.setdefault(look, []).append(list(g))
         elif m.kind == "circle":
-            patches.setdefault(look, []).append(CirclePatch((g[0], g[1]), g[2]))
+            lines.setdefault(look, []).append(_arc_points(g[0], g[1], g[2], 0.0, 2 * math.pi))
         elif m.kind == "arc":
-            a0 = math.degrees(g[3])
-            patches.setdefault(look, []).append(Arc((g[0], g[1]), 2 * g[2], 2 * g[2], theta1=a0,
-                                                    theta2=a0 + math.degrees(g[4])))
+            lines.setdefault(look, []).append(_arc_points(*g))
         elif m.kind == "area":
             areas.append((Polygon(g, closed=True), c, alpha))
     for poly, c, alpha in areas:
@@ -95,9 +103,6 @@ def _draw(ax, scene: Scene, k: int, since: int, style: Style) -> None:
         ax.add_patch(poly)
     for (c, lw, alpha), segs in sorted(lines.items(), key=lambda kv: kv[0][2]):
         ax.add_collection(LineCollection(segs, colors=c, linewidths=lw, alpha=alpha, capstyle="round"),
-                          autolim=False)
-    for (c, lw, alpha), ps in sorted(patches.items(), key=lambda kv: kv[0][2]):
-        ax.add_collection(PatchCollection(ps, facecolor="none", edgecolor=c, linewidths=lw, alpha=alpha),
                           autolim=False)
     for (c, alpha, ms), pts in sorted(points.items()):
         ax.plot([p[0] for p in pts], [p[1] for p in pts], "o", ms=ms, color=c, alpha=alpha, mec="none", ls="none")

@@ -64,5 +64,5 @@ def summary(checks: list[Check]) -> str:
     worst = max(checks, key=lambda c: abs(c.error) / c.tolerance if c.tolerance else math.inf, default=None)
     text = f"{len(checks) - len(failed)} of {len(checks)} checks pass"
     if worst is not None:
-        text += f"; largest error {abs(worst.error):.2e} ({worst.name}, tolerance {worst.tolerance:.1e})"
+        text += f"; closest to its tolerance: {worst.name}, error {abs(worst.error):.2e} of {worst.tolerance:.1e}"
     return text

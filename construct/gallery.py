@@ -113,7 +113,8 @@ def _checks_md(title: str, checks: list) -> str:
 
 def _md(text: str) -> str:
     """Text for a Markdown table cell: no pipes, no HTML."""
-    return html.escape(text).replace("|", "\\|").replace("\n", " ")
+    # Only what Markdown would read as HTML is escaped; an apostrophe stays one.
+    return html.escape(text, quote=False).replace("|", "\\|").replace("\n", " ")
 
 
 def _method(fig) -> str:

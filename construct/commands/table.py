@@ -54,7 +54,7 @@ def run(args) -> int:
 
 def _cell(v) -> str:
     if isinstance(v, float):
-        return f"{v:.15g}"
+        return f"{v + 0.0:.15g}"  # + 0.0 turns a measured -0 into 0
     return str(v)
 
 

@@ -21,12 +21,12 @@ method says what it is:
 from __future__ import annotations
 
 import math
-from typing import Any, Mapping
+from typing import Any
 
 from .errors import GeometryError, InvalidParameter
-from .geometry import Circle, Length, Line, Point, intersect_circles, intersect_line_circle
+from .geometry import Circle, Length, Line, Point, intersect_line_circle
 from .instruments import Builder
-from .protocol import Provenance, choose, register_op
+from .protocol import Provenance, register_op
 
 __all__ = ["METHODS", "MAX_PARTS", "choose_method", "exact_supported", "divide_semicircle", "durer_error_bound"]
 

@@ -55,7 +55,25 @@ def _point(x: float, y: float) -> "Point":
 _tuple_new = tuple.__new__
 
 
-class Point(tuple):
+class _Value(tuple):
+    """Immutable geometric value stored as a tuple; equal only to a value of its own kind."""
+
+    __slots__ = ()
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, type(self)):
+            # A plain tuple with the same numbers is not a Point (nor a Line a Circle).
+            return False if isinstance(other, tuple) else NotImplemented
+        return tuple.__eq__(self, other)
+
+    def __ne__(self, other: object) -> bool:
+        eq = self.__eq__(other)
+        return eq if eq is NotImplemented else not eq
+
+    __hash__ = tuple.__hash__
+
+
+class Point(_Value):
     """A point of the drawing plane; immutable and hashable.
 
     >>> Point(3.0, 4.0).distance(Point(0.0, 0.0))
@@ -84,23 +102,11 @@ class Point(tuple):
     def distance(self, other: "Point") -> float:
         return math.hypot(other[0] - self[0], other[1] - self[1])
 
-    def __eq__(self, other: object) -> bool:
-        if not isinstance(other, Point):
-            # A plain tuple with the same numbers is not a Point.
-            return False if isinstance(other, tuple) else NotImplemented
-        return tuple.__eq__(self, other)
-
-    def __ne__(self, other: object) -> bool:
-        eq = self.__eq__(other)
-        return eq if eq is NotImplemented else not eq
-
-    __hash__ = tuple.__hash__
-
     def __repr__(self) -> str:
         return f"Point({self[0]!r}, {self[1]!r})"
 
 
-class Line(tuple):
+class Line(_Value):
     """The straight line through two distinct points (drawn as the segment between them).
 
     >>> Line(Point(0.0, 0.0), Point(0.0, 0.0))
@@ -130,23 +136,11 @@ class Line(tuple):
         n = math.hypot(dx, dy)
         return dx / n, dy / n
 
-    def __eq__(self, other: object) -> bool:
-        if not isinstance(other, Line):
-            # A plain tuple with the same numbers is not a Line.
-            return False if isinstance(other, tuple) else NotImplemented
-        return tuple.__eq__(self, other)
-
-    def __ne__(self, other: object) -> bool:
-        eq = self.__eq__(other)
-        return eq if eq is NotImplemented else not eq
-
-    __hash__ = tuple.__hash__
-
     def __repr__(self) -> str:
         return f"Line({self[0]!r}, {self[1]!r})"
 
 
-class Circle(tuple):
+class Circle(_Value):
     """A circle about a centre with a positive, finite radius.
 
     >>> Circle(Point(0.0, 0.0), 0.0)
@@ -169,18 +163,6 @@ class Circle(tuple):
     @property
     def radius(self) -> float:
         return self[1]
-
-    def __eq__(self, other: object) -> bool:
-        if not isinstance(other, Circle):
-            # A plain tuple with the same numbers is not a Circle.
-            return False if isinstance(other, tuple) else NotImplemented
-        return tuple.__eq__(self, other)
-
-    def __ne__(self, other: object) -> bool:
-        eq = self.__eq__(other)
-        return eq if eq is NotImplemented else not eq
-
-    __hash__ = tuple.__hash__
 
     def __repr__(self) -> str:
         return f"Circle({self[0]!r}, {self[1]!r})"

@@ -22,13 +22,11 @@ primitives only, each as a collapsible group.
 from __future__ import annotations
 
 import contextlib
-import math
 from dataclasses import replace
 from types import MappingProxyType
 from typing import Any, Iterator, Mapping, Sequence
 
-from .errors import ConstructError, GeometryError, InvalidParameter, StepError
-from .geometry import Circle, Length, Line, Point
+from .errors import ConstructError, InvalidParameter, StepError
 from .protocol import EXACT, GIVEN, OPS, Caption, Protocol, Provenance, Step, rule_refs
 
 __all__ = ["Builder"]

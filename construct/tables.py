@@ -92,7 +92,7 @@ def _inertia(name: str) -> Callable[..., list[dict[str, Any]]] | None:
 def _require(name: str) -> Callable[..., list[dict[str, Any]]]:
     fn = _inertia(name)
     if fn is None:
-        raise InvalidParameter(f"this table needs the inertia-curve construction, which is not available")
+        raise InvalidParameter("this table needs the inertia-curve construction, which is not available")
     return fn
 
 

@@ -26,6 +26,7 @@ from typing import Any, Mapping
 
 from .. import analytic
 from ..checks import EUCLIDEAN_TOLERANCE, Check
+from ..errors import InvalidParameter
 from ..division import TRIAL_TOLERANCE, check_parts, divide_semicircle
 from ..instruments import Builder
 from ..protocol import Caption
@@ -199,7 +200,7 @@ CRANK = register(Construction(
     name="crank",
     title=Caption("Kolbenwege aus dem Kurbelkreis", "Piston paths from the crank circle"),
     source="seed 001, Abb. 1051/1054; seed 000, Fig. 77",
-    build=lambda rod_ratio, parts, method, r: build_crank(rod_ratio=rod_ratio, parts=parts, method=method, r=r),
+    build=build_crank,
     checks=crank_checks,
     defaults={"rod_ratio": 5.0, "parts": 18, "method": "auto", "r": 1.0},
     book_params=({"rod_ratio": 5.0, "parts": 18}, {"rod_ratio": 5.0, "parts": 9}),
@@ -213,7 +214,7 @@ CRANK = register(Construction(
 def build_crank_angle(*, rod_ratio: float, divisions: int, r: float) -> Figure:
     givens = _givens(r, rod_ratio)
     if isinstance(divisions, bool) or not isinstance(divisions, int) or not 1 <= divisions <= 1000:
-        raise _bad_divisions(divisions)
+        raise InvalidParameter(f"number of stroke divisions must be a whole number from 1 to 1000, got {divisions!r}")
     b = Builder("crank-angle", givens, {"divisions": divisions})
     f = build_frame(b)
     m = divisions
@@ -233,12 +234,6 @@ def build_crank_angle(*, rod_ratio: float, divisions: int, r: float) -> Figure:
                             labels={f"W{j}": f"{j}"})
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))
-
-
-def _bad_divisions(value: Any) -> Exception:
-    from ..errors import InvalidParameter
-
-    return InvalidParameter(f"number of stroke divisions must be a whole number from 1 to 1000, got {value!r}")
 
 
 def inverse_tolerance(x: float) -> float:
@@ -274,7 +269,7 @@ CRANK_ANGLE = register(Construction(
     name="crank-angle",
     title=Caption("Kurbelwinkel aus den Zehnteln des Hubes", "Crank angles from tenths of the stroke"),
     source="seed 000, Fig. 77 and Tabelle 2, Gl. (h)",
-    build=lambda rod_ratio, divisions, r: build_crank_angle(rod_ratio=rod_ratio, divisions=divisions, r=r),
+    build=build_crank_angle,
     checks=crank_angle_checks,
     defaults={"rod_ratio": 5.0, "divisions": 10, "r": 1.0},
     book_params=({"rod_ratio": 4.0}, {"rod_ratio": 5.0}, {"rod_ratio": 6.0}),

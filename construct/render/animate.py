@@ -15,7 +15,7 @@ True
 
 from __future__ import annotations
 
-from .svg import PLAIN, Drawing, Style, fmt, step_caption, wrap
+from .svg import PLAIN, Drawing, Style, fmt, wrap
 
 __all__ = ["animated_svg", "step_seconds", "STEP_GROUP_CSS"]
 

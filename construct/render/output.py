@@ -15,7 +15,7 @@ from typing import Any, Callable
 from ..constructions import Construction, Figure
 from ..output import staged_output, write_text
 from .scene import Scene, build_scene
-from .svg import PLAIN, Drawing, Style, render_svg
+from .svg import Drawing, Style, render_svg
 
 __all__ = ["FRAME_MODES", "frame_steps", "write_replay", "write_outputs", "EXTRA_WRITERS", "scene_for",
            "figure_title", "plate_caption", "params_text"]

@@ -116,7 +116,7 @@ class Style:
     def css(self) -> str:
         """The style sheet every SVG in this style carries."""
         rules = [
-            f".construction,.auxiliary,.result,.given{{fill:none;stroke-linecap:round}}",
+            ".construction,.auxiliary,.result,.given{fill:none;stroke-linecap:round}",
             f".construction,.auxiliary{{stroke:{self.construction};stroke-width:{fmt(self.construction_width)}}}",
             f".result{{stroke:{self.ink};stroke-width:{fmt(self.result_width)}}}",
         ]

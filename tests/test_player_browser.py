@@ -67,7 +67,7 @@ def _expected_visible(fig, k: int) -> set[str]:
 
 
 VISIBLE_JS = """() => Array.from(document.querySelectorAll('#figure [id^="s"]'))
-    .filter(e => !e.id.endsWith('-label') && e.getBoundingClientRect().width + e.getBoundingClientRect().height > 0
+    .filter(e => !e.id.endsWith('-label') && !e.id.endsWith('-tag') && e.getBoundingClientRect().width + e.getBoundingClientRect().height > 0
                  && getComputedStyle(e).visibility !== 'hidden')
     .map(e => e.id)"""
 
@@ -81,6 +81,17 @@ def _visible_names(page, fig) -> set[str]:
             safe = "".join(ch if ch.isalnum() or ch in "-_" else "-" for ch in name)
             by_id[f"s{s.index:04d}-{safe}"] = name
     return {by_id[i] for i in ids}
+
+
+def _readable(fig, text: str) -> str:
+    """The caption as shown: helper names by path (T4.G.M2) appear as their last part (M2)."""
+    dotted = sorted({n for s in fig.protocol.steps for n in s.outputs if "." in n}, key=len, reverse=True)
+    out, i = [], 0
+    while i < len(text):
+        hit = next((n for n in dotted if text.startswith(n, i)), None)
+        out.append(hit.split(".")[-1] if hit else text[i])
+        i += len(hit) if hit else 1
+    return "".join(out)
 
 
 def test_player_steps_show_exactly_the_steps_so_far(browser, player):
@@ -99,8 +110,8 @@ def test_player_steps_show_exactly_the_steps_so_far(browser, player):
         assert page.get_attribute("#figure", "data-step") == str(k)
         assert _visible_names(page, fig) == _expected_visible(fig, k), f"step {k}"
         step = fig.protocol.steps[k - 1]
-        assert page.inner_text("#cap-de") == f"Schritt {k}: {step.caption.de}"
-        assert page.inner_text("#cap-en") == f"Step {k}: {step.caption.en}"
+        assert page.inner_text("#cap-de") == f"Schritt {k}: {_readable(fig, step.caption.de)}"
+        assert page.inner_text("#cap-en") == f"Step {k}: {_readable(fig, step.caption.en)}"
     # back again with the other arrow key, and the slider to a middle step
     page.keyboard.press("ArrowLeft")
     assert _visible_names(page, fig) == _expected_visible(fig, n - 1)

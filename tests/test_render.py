@@ -39,7 +39,7 @@ def crank6():
 def _ids(svg: str) -> set[str]:
     root = ET.fromstring(svg.encode("utf-8"))
     return {e.get("id") for e in root.iter() if re.fullmatch(r"s\d{4}-.+", e.get("id") or "")
-            and not e.get("id").endswith(("-label", "-hatch"))}
+            and not e.get("id").endswith(("-label", "-hatch", "-tag"))}
 
 
 def _drawable_ids(fig, k: int) -> set[str]:

@@ -79,12 +79,12 @@ def _step_list(scene) -> str:
         for depth in range(common, len(path)):
             g = path[depth]
             de = titles.get(g, g)
-            label = g if de == g else f"{g} / {de}"
+            label = scene.readable(g if de == g else f"{g} / {de}")
             out.append(f'<details data-g="{html.escape(" › ".join(path[:depth + 1]))}"><summary>'
                        f'{html.escape(label)}</summary><ul>')
         open_path = path
         out.append(f'<li><a href="#{s.index}" data-k="{s.index}" class="tool-{html.escape(s.tool)}">'
-                   f'<span class="n">{s.index}</span> {html.escape(s.caption.en)}</a></li>')
+                   f'<span class="n">{s.index}</span> {html.escape(scene.caption(s.index)[1])}</a></li>')
     for _ in open_path:
         out.append("</ul></details>")
     return "\n".join(out)
@@ -104,7 +104,7 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
            f'data-full="0 0 {fmt(w)} {fmt(h)}" role="img">\n<style>\n{css}\n</style>\n'
            f'<rect x="-10000" y="-10000" width="20000" height="20000" fill="{html.escape(style.background)}"/>\n'
            + "".join(layers) + "</svg>")
-    steps = [{"de": s.caption.de, "en": s.caption.en, "tool": s.tool, "role": s.role,
+    steps = [{"de": scene.caption(s.index)[0], "en": scene.caption(s.index)[1], "tool": s.tool, "role": s.role,
               "group": group_caption(scene, s.index), "zoom": _zoom_box(d, s.index)} for s in scene.steps]
     data = {"n": n, "steps": steps, "dt": 600 if n <= 120 else 250}
     title = title or scene.title

@@ -18,6 +18,7 @@ True
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from dataclasses import dataclass
@@ -65,6 +66,27 @@ class Scene:
     def upto(self, k: int) -> list[Mark]:
         """The marks made by steps 1..k."""
         return [m for m in self.marks if m.step <= k]
+
+    def readable(self, text: str) -> str:
+        """*text* with the construction's internal names shortened to what a reader sees.
+
+        Composite steps name their helpers by path (``T4.G.M2``: mark M2 of
+        the division G of trisection T4); in a caption beside the figure the
+        last part is what the eye finds (the teaching style tags the current
+        step's points with it), the path is in the group title above.
+        """
+        return self._dotted.sub(lambda m: m.group(0).rsplit(".", 1)[1], text)
+
+    @functools.cached_property
+    def _dotted(self) -> "re.Pattern[str]":
+        """Every dotted object name of the steps, longest first (so T4.C1 wins over T4.C)."""
+        names = sorted({n for s in self.steps for n in s.outputs if "." in n}, key=len, reverse=True)
+        return re.compile("|".join(re.escape(n) for n in names) or r"(?!x)x")
+
+    def caption(self, k: int) -> tuple[str, str]:
+        """Step k's caption (German, English) in readable names."""
+        c = self.steps[k - 1].caption
+        return self.readable(c.de), self.readable(c.en)
 
     def stage_box(self, k: int) -> tuple[float, float, float, float]:
         """The region of step k's top-level group (all its steps), with a margin.

@@ -115,8 +115,9 @@ def _tile_text(scene: Scene, first: int, k: int) -> str:
     if step.group:
         g = step.group[min(1, len(step.group) - 1)]
         de = (scene.params.get("group_titles") or {}).get(g, g)
-        return f"{span}: {de} / {g}" if de != g else f"{span}: {g}"
-    return f"{span}: {step.caption.de} / {step.caption.en}"
+        return scene.readable(f"{span}: {de} / {g}" if de != g else f"{span}: {g}")
+    de, en = scene.caption(k)
+    return f"{span}: {de} / {en}"
 
 
 def storyboard_png(scene: Scene, style: Style = PLAIN, *, columns: int = 4, dpi: int = 90) -> bytes:

@@ -66,6 +66,7 @@ TEACHING = Style(
     highlight_width=2.6,
     earlier_opacity=0.4,
     show_group=True,
+    name_tags=True,
     progressive_zoom=True,
     min_drawing_px=620.0,
     zoom_below=0.12,

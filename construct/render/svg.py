@@ -108,6 +108,9 @@ class Style:
     progressive_zoom: bool = False
     #: The caption shows the group path of the current step above it.
     show_group: bool = False
+    #: Tag the current step's unlettered points with their names, so that the
+    #: caption's "M2 where k1 meets k2" can be found in the figure.
+    name_tags: bool = False
     width_px: float = 960.0
     #: Smallest height of the drawing area (wide figures get room for the stages of a progressive zoom).
     min_drawing_px: float = 0.0
@@ -152,6 +155,9 @@ class Style:
             rules.append(f".pt.cur{{fill:{self.highlight};stroke:{self.highlight};stroke-width:3}}")
             rules.append(f".lb.cur{{fill:{self.highlight};stroke:none}}")
         rules.append(f".inset{{fill:{self.background};stroke:{self.construction};stroke-width:0.8}}")
+        if self.name_tags:
+            rules.append(f".tag{{display:none;font-size:{fmt(0.85 * self.label_size)}px}}")
+            rules.append(".tag.cur,.cur .tag{display:inline}")
         return "\n".join(rules)
 
 
@@ -219,8 +225,8 @@ def step_caption(scene: Scene, k: int) -> tuple[str, str]:
     n = len(scene.steps)
     if k <= 0:
         return (f"Schritt 0 von {n}", f"Step 0 of {n}")
-    c = scene.steps[k - 1].caption
-    return (f"Schritt {k} von {n}: {c.de}", f"Step {k} of {n}: {c.en}")
+    de, en = scene.caption(k)
+    return (f"Schritt {k} von {n}: {de}", f"Step {k} of {n}: {en}")
 
 
 def group_caption(scene: Scene, k: int) -> str:
@@ -228,7 +234,7 @@ def group_caption(scene: Scene, k: int) -> str:
     if k <= 0:
         return ""
     titles = scene.params.get("group_titles") or {}
-    return " › ".join(titles.get(g, g) for g in scene.steps[k - 1].group)
+    return " › ".join(scene.readable(titles.get(g, g)) for g in scene.steps[k - 1].group)
 
 
 class Drawing:
@@ -285,6 +291,13 @@ class Drawing:
             r = st.aux_point_radius if aux else st.point_radius
             cx, cy = vp.xy(*m.geom)
             yield "points", f'<circle{idattr} class="pt {cls}', f'" cx="{cx}" cy="{cy}" r="{fmt(r)}"/>'
+            if st.name_tags and not m.label:
+                # Shown only while its step is the current one (CSS), so it takes no place from the letters.
+                tx, ty = vp.px(*m.geom)
+                tag = xml_text(m.name.rsplit(".", 1)[-1])
+                tid = f' id="{xml_attr(mid)}-tag"' if mid else ""
+                yield ("labels", f'<text{tid} class="lb tag',
+                       f'" x="{fmt(tx + 0.6 * st.label_size)}" y="{fmt(ty - 0.5 * st.label_size)}">{tag}</text>')
             if m.label:
                 box = self._place_label(m, vp, placed)
                 if box is not None:

@@ -21,28 +21,41 @@ __all__ = ["FRAME_MODES", "frame_steps", "write_replay", "write_outputs", "EXTRA
            "figure_title", "plate_caption", "params_text"]
 
 FRAME_MODES = ("auto", "all", "groups", "none")
-#: Above this many steps "auto" writes a frame per group instead of per step:
-#: frame k holds k marks, so all frames together grow with the square of the
-#: step count (7000 steps would be gigabytes).
+#: Up to this many steps "auto" writes a frame per step.  Frame k holds k
+#: marks, so all frames together grow with the square of the step count.
 AUTO_ALL_LIMIT = 1500
+#: Above it, "auto" writes frames at group ends, thinned so that all frames
+#: together stay near this many bytes (a mark is about this many bytes).
+AUTO_BYTES, BYTES_PER_MARK = 100_000_000, 120
 
 #: Further outputs by other renderers: name -> fn(scene, figure, stage_dir, style_name).
 EXTRA_WRITERS: dict[str, Callable[..., None]] = {}
 
 
 def frame_steps(scene: Scene, mode: str) -> list[int]:
-    """The step indices that get a frame."""
+    """The step indices that get a frame.
+
+    >>> from construct.constructions import get
+    >>> sc = build_scene(get("crank").figure(parts=360))
+    >>> ks = frame_steps(sc, "auto")
+    >>> len(sc.steps), len(ks) < 300, ks[-1] == len(sc.steps)
+    (7292, True, True)
+    """
     n = len(scene.steps)
     if mode == "none":
         return []
     if mode == "all" or (mode == "auto" and n <= AUTO_ALL_LIMIT):
         return list(range(1, n + 1))
-    ends = set()
+    ends = []
     for i, s in enumerate(scene.steps):
         nxt = scene.steps[i + 1] if i + 1 < n else None
         if nxt is None or nxt.group[:2] != s.group[:2]:
-            ends.add(s.index)
-    return sorted(ends)
+            ends.append(s.index)
+    if mode == "auto":
+        most = max(10, int(AUTO_BYTES / (BYTES_PER_MARK * len(scene.marks) / 2 + 1)))
+        if len(ends) > most:
+            ends = sorted({ends[round(i * (len(ends) - 1) / (most - 1))] for i in range(most)})
+    return ends
 
 
 def scene_for(construction: Construction, figure: Figure, *, plate: bool = False) -> Scene:

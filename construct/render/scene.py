@@ -18,6 +18,7 @@ True
 
 from __future__ import annotations
 
+import bisect
 import functools
 import math
 import re
@@ -96,15 +97,39 @@ class Scene:
         """
         if not 1 <= k <= len(self.steps):
             return self.bbox
-        top = self.steps[k - 1].group[:1]
-        start, end = k, k
-        while start > 1 and self.steps[start - 2].group[:1] == top:
-            start -= 1
-        while end < len(self.steps) and self.steps[end].group[:1] == top:
-            end += 1
+        span = self._stage_spans[k - 1]
+        box = self._stage_cache.get(span)
+        if box is None:
+            box = self._stage_cache[span] = self._box_of_steps(*span)
+        return box
+
+    @functools.cached_property
+    def _stage_spans(self) -> list[tuple[int, int]]:
+        """For each step, the first and last step of its top-level group's run."""
+        spans: list[tuple[int, int]] = []
+        i, n = 0, len(self.steps)
+        while i < n:
+            j, top = i, self.steps[i].group[:1]
+            while j + 1 < n and self.steps[j + 1].group[:1] == top:
+                j += 1
+            spans.extend([(i + 1, j + 1)] * (j - i + 1))
+            i = j + 1
+        return spans
+
+    @functools.cached_property
+    def _stage_cache(self) -> dict[tuple[int, int], tuple[float, float, float, float]]:
+        return {}
+
+    @functools.cached_property
+    def _mark_steps(self) -> list[int]:
+        return [m.step for m in self.marks]  # marks are in step order
+
+    def _box_of_steps(self, start: int, end: int) -> tuple[float, float, float, float]:
         # Lines are left out: they are drawn as far as points of the whole construction
         # (the stroke line reaches the far crossheads) but say nothing about the stage.
-        pts = [p for m in self.marks if start <= m.step <= end and m.kind != "segment" for p in _extreme_points(m)]
+        lo = bisect.bisect_left(self._mark_steps, start)
+        hi = bisect.bisect_right(self._mark_steps, end)
+        pts = [p for m in self.marks[lo:hi] if m.kind != "segment" for p in _extreme_points(m)]
         if not pts:
             return self.bbox
         x0, x1 = min(p[0] for p in pts), max(p[0] for p in pts)

@@ -83,8 +83,6 @@ class Builder:
                 raise InvalidParameter(f"object name {name!r} is used twice in {self.construction!r}")
         frozen = MappingProxyType(dict(params))
         index = len(self.steps) + 1
-        step = Step(index, tool, op, tuple(inputs), tuple(outputs), frozen, Caption(de, en),
-                    EXACT, tuple(self._group), role, tuple(sorted((labels or {}).items())))
         args = [self.objects[n] for n in inputs]
         try:
             if "rule" in params:
@@ -96,8 +94,8 @@ class Builder:
             raise StepError(f"step {index} ({tool}: {en}): {exc}", step_index=index, tool=tool) from exc
         if provenance is None:
             provenance = self._inherited(tool, inputs)
-        step = Step(index, tool, op, step.inputs, step.outputs, frozen, step.caption, provenance,
-                    step.group, role, step.labels)
+        step = Step(index, tool, op, tuple(inputs), tuple(outputs), frozen, Caption(de, en), provenance,
+                    tuple(self._group), role, tuple(sorted((labels or {}).items())))
         self.steps.append(step)
         for name, value in zip(outputs, values):
             self.objects[name] = value

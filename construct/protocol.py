@@ -211,10 +211,8 @@ def choose(points: tuple[Point, ...], rule: Sequence[Any], refs: Sequence[Any]) 
     Point(0.0, -1.0)
     """
     name = rule[0]
-    if len(points) == 1:
-        if name == "only" or name in ("nearer", "farther", "toward", "left", "right"):
-            # A tangency or a line crossing: one point, whatever the rule.
-            return points[0], None
+    if len(points) == 1:  # a tangency or a line crossing: one point, whatever the rule
+        return points[0], None
     if name == "only":
         raise GeometryError(f"expected exactly one intersection, found {len(points)}")
     a, b = points

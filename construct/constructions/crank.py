@@ -141,9 +141,9 @@ def point_name(fig: Figure, k: int) -> str:
     return "D0" if k == 0 else "D1" if k == n else f"P{k}"
 
 
-def angle_tolerance(fig: Figure, name: str) -> tuple[float, str]:
+def angle_tolerance(fig: Figure, name: str, made_by: dict | None = None) -> tuple[float, str]:
     """How far a division point may stray from its nominal angle, and why."""
-    prov = fig.protocol.steps[_maker_index(fig, name)].provenance
+    prov = (made_by or fig.replay.made_by())[name].provenance
     if prov.kind == "approximate":
         return prov.error + EUCLIDEAN_TOLERANCE, f"{prov.method}: a-priori error bound {prov.error:.2e} rad"
     if prov.kind == "trial":
@@ -153,24 +153,18 @@ def angle_tolerance(fig: Figure, name: str) -> tuple[float, str]:
     return EUCLIDEAN_TOLERANCE, "Euclidean steps only: float rounding"
 
 
-def _maker_index(fig: Figure, name: str) -> int:
-    for step in fig.protocol.steps:
-        if name in step.outputs:
-            return step.index - 1
-    raise KeyError(name)
-
-
 def crank_checks(fig: Figure) -> list[Check]:
     n = fig.params["parts"]
     g = fig.replay.givens
     r, L = g["r"], g["rod_ratio"] * g["r"]
     lam = r / L
+    made_by = fig.replay.made_by()
     checks: list[Check] = []
     for k in range(n + 1):
         name = point_name(fig, k)
         nominal = math.pi * k / n
         w = crank_angle(fig, name)
-        tol_w, why_w = angle_tolerance(fig, name)
+        tol_w, why_w = angle_tolerance(fig, name, made_by)
         checks.append(Check(f"crank angle {k}", w, nominal, tol_w, why_w, "rad"))
         # The rod arcs are Euclidean: measured against the exact path at the angle the point really has ...
         x = piston_fraction(fig, k)

@@ -589,9 +589,10 @@ def inertia_checks(fig: Figure) -> list[Check]:
     q_scale = max(1.0, Ff * (1.0 + lam) / stroke)
     per_ff = max(1.0, stroke / Ff)
     checks: list[Check] = []
+    made_by = fig.replay.made_by()
     for k in range(n + 1):
         w = math.pi * k / n
-        tol_w, why_w = angle_tolerance(fig, point_name(fig, k))
+        tol_w, why_w = angle_tolerance(fig, point_name(fig, k), made_by)
         dq = Ff * (1.0 + 4.0 * lam) / stroke  # |dq/dw| <= (F/f)(1 + 4 lam), in strokes
         checks.append(Check(f"ordinate {k} (Gl. 4_1)", ordinate(fig, f"K{k}") / stroke,
                             Ff * analytic.inertia_two_term(w, lam) / stroke,

@@ -22,6 +22,7 @@ primitives only, each as a collapsible group.
 from __future__ import annotations
 
 import contextlib
+import math
 from dataclasses import replace
 from types import MappingProxyType
 from typing import Any, Iterator, Mapping, Sequence
@@ -266,24 +267,36 @@ class Builder:
                        only: Sequence[int] | None = None) -> list[str]:
         """Points dividing ab into n equal parts, by the intercept theorem.
 
-        Two parallel rays leave a and b on opposite sides (the apexes of the
-        equilateral triangles on ab); equal steps are marked on both, and the
-        line joining the k-th mark from a to the (n-k)-th mark from b crosses
-        ab at the k-th division point.  Returns the names of points 1..n-1
-        (or of those listed in *only*).
+        Two parallel rays leave a and b on opposite sides (towards the apexes
+        of the equilateral triangles on ab); equal steps are marked on both,
+        and the line joining the k-th mark from a to the (n-k)-th mark from b
+        crosses ab at the k-th division point.  Returns the names of points
+        1..n-1 (or of those listed in *only*).
+
+        The step is ab itself for up to 4 parts; for more, ab halved often
+        enough that the n marks reach about as far as ab again -- a draftsman
+        picks a short opening, else ten parts would need a ray nine times ab.
         """
         if not isinstance(n, int) or n < 2:
             raise InvalidParameter(f"divide_segment needs n >= 2 parts, got {n!r}")
         wanted = list(range(1, n)) if only is None else list(only)
+        halvings = max(0, math.ceil(math.log2(n)) - 2)
         with self.group(f"{a}{b} divided into {n} equal parts", f"{a}{b} in {n} gleiche Teile geteilt"):
             ab = line or self.line(self.fresh(f"{name}.g"), a, b)
             ka = self.circle_through(self.fresh(f"{name}.k"), a, b)
             kb = self.circle_through(self.fresh(f"{name}.k"), b, a)
-            t, t2 = self.intersect((self.fresh(f"{name}.M"), self.fresh(f"{name}.N")), ka, kb, rule=("left", a, b))
+            t, t2 = self.intersect((self.fresh(f"{name}.T"), self.fresh(f"{name}.T")), ka, kb, rule=("left", a, b))
             need_a = max((k for k in wanted), default=0)
             need_b = max((n - k for k in wanted), default=0)
-            marks_a = self._marks(name + ".M", a, t, need_a)
-            marks_b = self._marks(name + ".N", b, t2, need_b)
+            if halvings == 0:
+                marks_a = self._marks(name + ".M", a, t, need_a)
+                marks_b = self._marks(name + ".N", b, t2, need_b)
+            else:
+                end = b
+                for _ in range(halvings):
+                    end = self.midpoint(self.fresh(f"{name}.h"), a, end, through=ab)
+                marks_a = self._marks(name + ".M", a, t, need_a, opening=(a, end))
+                marks_b = self._marks(name + ".N", b, t2, need_b, opening=(a, end))
             out = []
             for k in wanted:
                 j = self.line(self.fresh(f"{name}.j"), marks_a[k - 1], marks_b[n - k - 1])
@@ -291,11 +304,20 @@ class Builder:
                                           de=f"Teilpunkt {name}{k}", en=f"division point {name}{k}"))
             return out
 
-    def _marks(self, prefix: str, origin: str, first: str, count: int) -> list[str]:
-        """Equal steps origin->first->... along a ray, with the dividers."""
+    def _marks(self, prefix: str, origin: str, towards: str, count: int,
+               opening: tuple[str, str] | None = None) -> list[str]:
+        """*count* equal steps from *origin* along the ray towards *towards*, with the dividers.
+
+        The step is origin-towards itself, or the segment *opening* set off first.
+        """
         if count == 0:
             return []
-        ray = self.line(self.fresh(prefix + "r"), origin, first)
+        ray = self.line(self.fresh(prefix + "r"), origin, towards)
+        if opening is None:
+            first = towards
+        else:
+            k = self.circle_segment(self.fresh(prefix + "k"), origin, *opening)
+            first = self.intersect(self.fresh(prefix), ray, k, rule=("nearer", towards))
         marks = [first]
         for _ in range(count - 1):
             k = self.circle_through(self.fresh(prefix + "k"), marks[-1], marks[-2] if len(marks) > 1 else origin)

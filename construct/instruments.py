@@ -248,6 +248,27 @@ class Builder:
             mirror = self.intersect(self.fresh(f"{name}.Y"), line, k, rule=("farther", on_line_point))
             return self.perpendicular_bisector(name, on_line_point, mirror)
 
+    def drop_perpendicular(self, name: str, p: str, line: str, a: str, b: str) -> tuple[str, str]:
+        """The perpendicular from *p* to *line* (through its points a, b) and its foot.
+
+        A circle about p through the farther of a, b cuts the line again at Y;
+        circles about that point and about Y, both through p, meet again at the
+        mirror image of p; p and its mirror image give the perpendicular.
+        Returns (perpendicular, foot).  p must not lie on the line.
+        """
+        pa, pb = self[p].distance(self[a]), self[p].distance(self[b])
+        far = a if pa >= pb else b  # read off the figure once; stored in the steps
+        with self.group(f"perpendicular from {p}", f"Lot von {p}"):
+            k = self.circle_through(self.fresh(f"{name}.k"), p, far)
+            y = self.intersect(self.fresh(f"{name}.Y"), line, k, rule=("farther", far))
+            k1 = self.circle_through(self.fresh(f"{name}.k"), far, p)
+            k2 = self.circle_through(self.fresh(f"{name}.k"), y, p)
+            mirror = self.intersect(self.fresh(f"{name}.Q"), k1, k2, rule=("farther", p))
+            perp = self.line(name, p, mirror, de=f"Lot {name} von {p}", en=f"perpendicular {name} from {p}")
+            foot = self.intersect(f"{name}.F", perp, line, rule=("only",), de=f"Fußpunkt des Lotes von {p}",
+                                  en=f"foot of the perpendicular from {p}")
+        return perp, foot
+
     def parallel_through(self, name: str, p: str, a: str, b: str, *, role: str = "construction") -> str:
         """The parallel to ab through p, by completing the parallelogram a b Q p.
 

@@ -79,3 +79,23 @@ def test_dividers_step_off_pricks_a_point_at_the_opening():
     p = b.step_off("P", k, "A", e, rule=("left", "A", "B"))
     assert b[p].distance(b["A"]) == pytest.approx(0.3, abs=1e-15) and b[p].y > 0
     assert b.steps[-1].tool == "dividers"
+
+
+def test_drop_perpendicular_and_its_foot():
+    b = builder_with(A=(0.0, 0.0), B=(4.0, 2.0), P=(1.0, 3.0))
+    g = b.line("g", "A", "B")
+    perp, foot = b.drop_perpendicular("l", "P", g, "A", "B")
+    # foot of (1, 3) on the line through (0, 0) in direction (2, 1): t = (2 + 3) / 5 = 1 -> (2, 1)
+    assert (b[foot].x, b[foot].y) == pytest.approx((2.0, 1.0), abs=1e-12)
+    (px, py), (qx, qy) = b[perp]
+    assert (qx - px) * 2.0 + (qy - py) * 1.0 == pytest.approx(0.0, abs=1e-12)
+    assert {s.tool for s in b.steps} <= PRIMITIVE_TOOLS
+
+
+def test_dropping_a_perpendicular_from_a_point_on_the_line_names_the_step():
+    from construct.errors import StepError
+
+    b = builder_with(A=(0.0, 0.0), B=(4.0, 2.0), P=(2.0, 1.0))
+    g = b.line("g", "A", "B")
+    with pytest.raises(StepError, match="step"):
+        b.drop_perpendicular("l", "P", g, "A", "B")

@@ -28,7 +28,7 @@ import json
 import math
 from dataclasses import dataclass, field
 from types import MappingProxyType
-from typing import Any, Callable, Iterable, Mapping, Sequence
+from typing import Any, Callable, Mapping, Sequence
 
 from .errors import ConstructError, GeometryError, InvalidParameter, ProtocolFormatError, StepError
 from .geometry import Circle, Length, Line, Point, intersect
@@ -360,27 +360,19 @@ def _compile_generic(fn, ins, outs, params, refs):
 
 
 def _compile_intersect(fn, ins, outs, params, refs):
+    """Intersections are most steps: the same _intersect, with its slots bound once."""
     a, b = ins
-    rule = tuple(params["rule"])
-    both = bool(params.get("both"))
-    o0 = outs[0]
-    o1 = outs[1] if both else None
-    name = rule[0]
+    frozen = {"rule": tuple(params["rule"]), "both": bool(params.get("both"))}
+    if len(outs) == 2:
+        o0, o1 = outs
 
-    def run(env, givens):
-        c1, c2 = env[a], env[b]
-        pts = intersect(c1, c2)
-        if len(pts) == 1 and not both:
-            env[o0] = pts[0]
-            return
-        if not pts:
-            raise GeometryError(f"{_describe(c1)} and {_describe(c2)} do not meet")
-        chosen, other = choose(pts, rule, [env[k] for k in refs]) if name != "only" or len(pts) != 1 else (pts[0], None)
-        env[o0] = chosen
-        if both:
-            if other is None:
-                raise GeometryError(f"{_describe(c1)} and {_describe(c2)} only touch; two points were expected")
-            env[o1] = other
+        def run(env, givens):
+            env[o0], env[o1] = _intersect((env[a], env[b]), frozen, givens, [env[k] for k in refs])
+    else:
+        (o0,) = outs
+
+        def run(env, givens):
+            (env[o0],) = _intersect((env[a], env[b]), frozen, givens, [env[k] for k in refs])
     return run
 
 
@@ -635,9 +627,3 @@ class Protocol:
 
 def _step_message(step: Step, exc: Exception) -> str:
     return f"step {step.index} ({step.tool}: {step.caption.en}): {exc}"
-
-
-def steps_in_groups(steps: Iterable[Step], prefix: tuple[str, ...]) -> list[Step]:
-    """The steps inside a group path (for collapsed display)."""
-    n = len(prefix)
-    return [s for s in steps if s.group[:n] == prefix]

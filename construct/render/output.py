@@ -10,14 +10,14 @@ all of it has been written (:func:`construct.output.staged_output`).
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 from ..constructions import Construction, Figure
 from ..output import staged_output, write_text
 from .scene import Scene, build_scene
 from .svg import Drawing, Style, render_svg
 
-__all__ = ["FRAME_MODES", "frame_steps", "write_replay", "write_outputs", "EXTRA_WRITERS", "scene_for",
+__all__ = ["FRAME_MODES", "frame_steps", "write_replay", "write_outputs", "scene_for",
            "figure_title", "plate_caption", "params_text"]
 
 FRAME_MODES = ("auto", "all", "groups", "none")
@@ -27,10 +27,6 @@ AUTO_ALL_LIMIT = 1500
 #: Above it, "auto" writes frames at group ends, thinned so that all frames
 #: together stay near this many bytes (a mark is about this many bytes).
 AUTO_BYTES, BYTES_PER_MARK = 100_000_000, 120
-
-#: Further outputs by other renderers: name -> fn(scene, figure, stage_dir, style_name).
-EXTRA_WRITERS: dict[str, Callable[..., None]] = {}
-
 
 def frame_steps(scene: Scene, mode: str) -> list[int]:
     """The step indices that get a frame.
@@ -127,8 +123,4 @@ def write_replay(construction: Construction, figure: Figure, out_dir: str | Path
     st = table[style]
     with staged_output(out_dir) as stage:
         info = write_outputs(stage, construction, figure, st, frames=frames)
-        if EXTRA_WRITERS:
-            scene = scene_for(construction, figure)
-            for name, writer in sorted(EXTRA_WRITERS.items()):
-                writer(scene, figure, stage, style)
     return {**info, "out": str(out_dir)}

@@ -14,12 +14,12 @@ table has a column for it.
 from __future__ import annotations
 
 import math
-from typing import Any, Callable, Sequence
+from typing import Any, Sequence
 
 from . import analytic
 from .constructions import get
 from .constructions.crank import crank_angle, piston_fraction, point_name
-from .errors import InvalidParameter
+from .constructions.inertia import acceleration_rows, characteristic_point_rows, q_at_crank_angle_rows
 
 __all__ = ["TABLES", "piston_path_table", "crank_angle_table", "acceleration_table", "characteristic_points_table"]
 
@@ -57,43 +57,22 @@ def crank_angle_table(*, rod_ratio: float, divisions: int = 10, r: float = 1.0) 
             "omega_constructed_deg": math.degrees(crank_angle(fig, f"W{j}")),
             "omega_exact_deg": math.degrees(analytic.crank_angle_from_path(2 * g["r"] * x, g["r"], L)),
         })
-    cols: tuple[str, ...] = ("x", "omega_constructed_deg", "omega_exact_deg")
-    q_rows = _inertia("q_at_crank_angle_rows")
-    if q_rows is not None:
-        for row, extra in zip(rows, q_rows(rod_ratio=rod_ratio, divisions=divisions)):
-            row["q"] = extra["q"]
-        cols += ("q",)
-    return cols, rows
+    for row, extra in zip(rows, q_at_crank_angle_rows(rod_ratio=rod_ratio, divisions=divisions)):
+        row["q"] = extra["q"]
+    return ("x", "omega_constructed_deg", "omega_exact_deg", "q"), rows
 
 
 def acceleration_table(*, rod_ratios: Sequence[float], step: float = 10.0) -> Table:
     """Tabelle 1 for any rod ratios, long format (q for F/f = 1)."""
-    fn = _require("acceleration_rows")
     rows = []
     for k in rod_ratios:
-        rows.extend(fn(rod_ratio=k, step_deg=step))
+        rows.extend(acceleration_rows(rod_ratio=k, step_deg=step))
     return ("rod_ratio", "omega_deg", "cos_omega", "cos_2omega", "lambda_cos_2omega", "q"), rows
 
 
 def characteristic_points_table(*, rod_ratio: float) -> Table:
     """The seven characteristic points q1..q7 of the inertia curve, measured on the construction."""
-    fn = _require("characteristic_point_rows")
-    return ("point", "omega_deg", "x", "q"), fn(rod_ratio=rod_ratio)
-
-
-def _inertia(name: str) -> Callable[..., list[dict[str, Any]]] | None:
-    try:
-        from .constructions import inertia
-    except ImportError:
-        return None
-    return getattr(inertia, name, None)
-
-
-def _require(name: str) -> Callable[..., list[dict[str, Any]]]:
-    fn = _inertia(name)
-    if fn is None:
-        raise InvalidParameter("this table needs the inertia-curve construction, which is not available")
-    return fn
+    return ("point", "omega_deg", "x", "q"), characteristic_point_rows(rod_ratio=rod_ratio)
 
 
 TABLES = {

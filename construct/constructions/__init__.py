@@ -98,12 +98,9 @@ def _validate_givens(name: str, givens: Mapping[str, float]) -> None:
 
 
 def _load() -> None:
+    # Imported on first use, not at import time: the construction modules import this one.
     for mod in _MODULES:
-        try:
-            importlib.import_module(f"{__name__}.{mod}")
-        except ModuleNotFoundError as exc:  # a construction module not written yet
-            if exc.name != f"{__name__}.{mod}":
-                raise
+        importlib.import_module(f"{__name__}.{mod}")
 
 
 def names() -> list[str]:

@@ -7,8 +7,8 @@ import mpmath
 import pytest
 
 from construct.constructions import get
-from construct.division import durer_error_bound
-from construct.protocol import Protocol
+from construct.kernel.division import durer_error_bound
+from construct.kernel.protocol import Protocol
 from construct.tables import crank_angle_table, piston_path_table
 
 

@@ -14,7 +14,7 @@ from html.parser import HTMLParser
 
 import pytest
 
-from construct.instruments import Builder
+from construct.kernel.instruments import Builder
 from construct.render.animate import animated_svg
 from construct.render.player import json_for_script, player_html
 from construct.render.scene import build_scene

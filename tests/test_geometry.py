@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from construct.errors import DegenerateObject
-from construct.geometry import (
+from construct.kernel.geometry import (
     TANGENCY_TOLERANCE,
     Circle,
     Length,

@@ -20,7 +20,7 @@ from construct.constructions.inertia import (
     q_at_crank_angle_rows,
 )
 from construct.errors import InvalidParameter
-from construct.protocol import Protocol
+from construct.kernel.protocol import Protocol
 
 mpmath.mp.dps = 30
 INERTIA = get("inertia-curve")

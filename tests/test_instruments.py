@@ -4,7 +4,7 @@ import math
 
 import pytest
 
-from construct.instruments import Builder
+from construct.kernel.instruments import Builder
 
 PRIMITIVE_TOOLS = {"given", "straightedge", "compass", "intersect"}
 

@@ -18,7 +18,7 @@ from pathlib import Path
 import pytest
 
 from construct.constructions import get
-from construct.geometry import Circle, Line, Point
+from construct.kernel.geometry import Circle, Line, Point
 from construct.render.animate import step_seconds
 from construct.render.output import write_replay
 

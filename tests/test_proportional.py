@@ -6,8 +6,8 @@ import mpmath
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from construct.instruments import Builder
-from construct.proportional import ProportionalAngle, carry_across, fourth_proportional, mean_proportional, scale_line
+from construct.kernel.instruments import Builder
+from construct.kernel.proportional import ProportionalAngle, carry_across, fourth_proportional, mean_proportional, scale_line
 
 # A handful of Euclidean steps: float rounding only, relative to the lengths involved.
 REL = 1e-12

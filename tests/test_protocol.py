@@ -7,8 +7,8 @@ import pytest
 
 from construct.constructions import get
 from construct.errors import InvalidParameter, ProtocolFormatError, StepError
-from construct.instruments import Builder
-from construct.protocol import Protocol
+from construct.kernel.instruments import Builder
+from construct.kernel.protocol import Protocol
 
 
 def crank(**kw):

@@ -14,7 +14,7 @@ import pytest
 
 from construct.cli import main
 from construct.errors import ConstructError, ProtocolFormatError
-from construct.protocoldiff import ProtocolChange, diff_protocol
+from construct.regress.protocoldiff import ProtocolChange, diff_protocol
 
 
 def step(index, tool, op, inputs, outputs, de, en, params=None, kind="exact", group=()):

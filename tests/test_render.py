@@ -18,7 +18,7 @@ import cairosvg
 import pytest
 
 from construct.constructions import get
-from construct.geometry import Circle, Line, Point
+from construct.kernel.geometry import Circle, Line, Point
 from construct.render.animate import animated_svg
 from construct.render.notebook import figure_repr_svg
 from construct.render.output import scene_for, write_replay

@@ -17,7 +17,7 @@ from hypothesis import strategies as st
 
 from construct.cli import main
 from construct.errors import ConstructError
-from construct.svgdiff import SvgChange, SvgFormatError, diff_svg, parse_svg
+from construct.regress.svgdiff import SvgChange, SvgFormatError, diff_svg, parse_svg
 
 HEAD = '<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" viewBox="0 0 200 100">'
 

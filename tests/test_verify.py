@@ -19,11 +19,11 @@ from pathlib import Path
 
 import pytest
 
-import construct.verify as verify_module
+import construct.regress.verify as verify_module
 from construct.cli import main
 from construct.constructions import get
 from construct.render.output import write_replay
-from construct.verify import DEFAULT_TOLERANCE, locate, verify
+from construct.regress.verify import DEFAULT_TOLERANCE, locate, verify
 
 FIGURE = "crank-6"
 FRAME = f"{FIGURE}/steps/005.svg"  # step 5 of the crank: the crank circle about O is drawn

@@ -9,7 +9,7 @@ from typing import Any
 
 from ..constructions import Construction, Figure, get
 from ..errors import InvalidParameter, ProtocolFormatError
-from ..protocol import Protocol
+from ..kernel.protocol import Protocol
 
 
 def _number(text: str) -> float:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 
 from ..checks import summary
-from ..protocol import _jsonable
+from ..kernel.protocol import _jsonable
 from ._common import add_construction_options, figure_from_args
 
 NAME = "check"

@@ -1,7 +1,7 @@
 """``construct diff A B``: what changed between two drawings or two protocols, in geometry.
 
-Two SVG files are compared with :func:`construct.svgdiff.diff_svg`, two
-``protocol.json`` files with :func:`construct.protocoldiff.diff_protocol`;
+Two SVG files are compared with :func:`construct.regress.svgdiff.diff_svg`, two
+``protocol.json`` files with :func:`construct.regress.protocoldiff.diff_protocol`;
 which one is decided by the content (an XML document or a JSON object), and
 both files must be of the same kind.  Exit 0 when equal, 1 when different,
 2 on bad input.
@@ -46,8 +46,8 @@ def file_kind(path: str) -> str:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..protocoldiff import diff_protocol
-    from ..svgdiff import diff_svg
+    from ..regress.protocoldiff import diff_protocol
+    from ..regress.svgdiff import diff_svg
 
     kind_a, kind_b = file_kind(args.a), file_kind(args.b)
     if kind_a != kind_b:

@@ -1,7 +1,7 @@
 """``construct verify``: rebuild the gallery and compare every file with the committed goldens.
 
 Every step frame, the final figures, the protocols and the reports are
-compared through the semantic diff (see :mod:`construct.verify`); the report
+compared through the semantic diff (see :mod:`construct.regress.verify`); the report
 names the figure, the step and the element of each change.  Exit 0 when
 everything is equal, 1 when something differs, 2 on bad input.  With
 ``--update`` the goldens are replaced by the rebuilt tree and the report
@@ -21,7 +21,7 @@ HELP = "rebuild the gallery and compare every file with the goldens (exit 0 equa
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    from ..verify import DEFAULT_TOLERANCE, MAX_CHANGES
+    from ..regress.verify import DEFAULT_TOLERANCE, MAX_CHANGES
 
     parser.add_argument("--gallery", default="gallery", metavar="DIR",
                         help="the committed goldens (default: gallery, relative to the current folder)")
@@ -35,7 +35,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..verify import verify
+    from ..regress.verify import verify
 
     if not (math.isfinite(args.tolerance) and args.tolerance >= 0):
         raise InvalidParameter(f"--tolerance must be a finite number >= 0, got {args.tolerance!r}")

@@ -5,7 +5,7 @@
 >>> get("nonsense")
 Traceback (most recent call last):
 ...
-construct.errors.UnknownConstruction: unknown construction 'nonsense'; available: crank, crank-angle...
+construct.kernel.errors.UnknownConstruction: unknown construction 'nonsense'; available: crank, crank-angle...
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ from typing import Any, Callable, Mapping
 
 from ..checks import Check
 from ..errors import InvalidParameter, UnknownConstruction
-from ..protocol import Caption, Protocol, Replay
+from ..kernel.protocol import Caption, Protocol, Replay
 
 __all__ = ["Figure", "Construction", "register", "get", "names", "positive", "rod_ratio_param"]
 

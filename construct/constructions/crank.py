@@ -27,9 +27,9 @@ from typing import Any, Mapping
 from .. import analytic
 from ..checks import EUCLIDEAN_TOLERANCE, Check
 from ..errors import InvalidParameter
-from ..division import TRIAL_TOLERANCE, check_parts, divide_semicircle
-from ..instruments import Builder
-from ..protocol import Caption
+from ..kernel.division import TRIAL_TOLERANCE, check_parts, divide_semicircle
+from ..kernel.instruments import Builder
+from ..kernel.protocol import Caption
 from . import Construction, Figure, positive, register, rod_ratio_param
 
 __all__ = ["CRANK", "CRANK_ANGLE", "piston_fraction", "crank_angle", "build_frame"]

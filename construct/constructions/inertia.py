@@ -11,7 +11,7 @@ ordinate is *constructed*:
 * r cos 2w is the foot of the doubled-angle point (the chord D0-P stepped on
   once more round the crank circle);
 * lam r cos 2w comes out of the proportional angle (module
-  :mod:`construct.proportional`): its vertex S lies on the perpendicular to
+  :mod:`construct.kernel.proportional`): its vertex S lies on the perpendicular to
   the stroke through O with SO = L, and its scale line ``gr`` at the distance
   r from S: the ray from S through a point of the stroke line meets ``gr``
   at lam times its offset;
@@ -42,12 +42,12 @@ from typing import Any, Mapping, Sequence
 
 from .. import analytic
 from ..checks import EUCLIDEAN_TOLERANCE, Check
-from ..division import check_parts, divide_semicircle
+from ..kernel.division import check_parts, divide_semicircle
 from ..errors import DegenerateObject, GeometryError, InvalidParameter
-from ..geometry import Line, Point
-from ..instruments import Builder
-from ..proportional import ProportionalAngle, Scale, carry_across, scale_line, vertex_on
-from ..protocol import Caption, register_op
+from ..kernel.geometry import Line, Point
+from ..kernel.instruments import Builder
+from ..kernel.proportional import ProportionalAngle, Scale, carry_across, scale_line, vertex_on
+from ..kernel.protocol import Caption, register_op
 from . import Construction, Figure, positive, register, rod_ratio_param
 from .crank import angle_tolerance, build_frame, crank_angle, point_name, rod_arcs
 

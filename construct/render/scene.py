@@ -25,8 +25,8 @@ import re
 from dataclasses import dataclass
 from typing import Any, Iterable
 
-from ..geometry import Circle, Length, Line, Point
-from ..protocol import Protocol, Replay, Step
+from ..kernel.geometry import Circle, Length, Line, Point
+from ..kernel.protocol import Protocol, Replay, Step
 
 __all__ = ["Mark", "Scene", "build_scene", "label_offset_direction"]
 

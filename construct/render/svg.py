@@ -4,7 +4,7 @@ The style is a separate value (:class:`Style`): the construction never knows
 how it is drawn.  Every look is in one ``<style>`` sheet at the top of the
 file and the elements carry only classes (role, instrument, provenance, and
 ``cur``/``old`` for the current and earlier steps of a frame), which keeps the
-frames small and lets :mod:`construct.svgdiff` compare looks by class.
+frames small and lets :mod:`construct.regress.svgdiff` compare looks by class.
 
 Output is deterministic: numbers with at most two decimals (a hundredth of a
 pixel at 960 px), ids from step index and object name, no timestamps, marks in

@@ -3,7 +3,7 @@
 Seed 000 multiplies the table values by F/f "mit dem Zirkel oder einem
 Proportionswinkel".  All three instruments here are the intercept theorem (or
 Thales' circle) made of compass-and-straightedge steps, recorded on a
-:class:`~construct.instruments.Builder` like any other composite step.
+:class:`~construct.kernel.instruments.Builder` like any other composite step.
 
 The proportional angle is laid out with a right angle, so that every line
 it needs is an erected perpendicular and no step degenerates for any ratio
@@ -15,7 +15,7 @@ offset from the leg is multiplied by the ratio of the two distances::
     S ----- d1 ----- U1 (scale line 1) ---- d2 ---- U2 (scale line 2)
     offset on line 2 = offset on line 1 * d2 / d1      (signs kept: same side of the leg)
 
->>> from construct.instruments import Builder
+>>> from construct.kernel.instruments import Builder
 >>> b = Builder("demo", givens={"a": 2.0, "b": 3.0, "c": 5.0})
 >>> S = b.given_point("S", 0.0, 0.0)
 >>> leg = b.given_line("leg", S, angle_deg=90.0)

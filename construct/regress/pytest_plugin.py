@@ -4,7 +4,7 @@ Registered through the ``pytest11`` entry point, so installing ``construct``
 is enough.  The fixture :func:`construct_golden` renders a figure -- the
 final drawing, *every* step frame and the protocol -- and compares them
 with the goldens in ``goldens/<name>/`` next to the test file, through the
-semantic diff (:mod:`construct.verify`): reordered attributes or respelled
+semantic diff (:mod:`construct.regress.verify`): reordered attributes or respelled
 numbers are equal, a point moved by 0.01 drawing units is named with its
 step and element.  ``pytest --construct-update`` writes or rewrites them.
 
@@ -30,7 +30,7 @@ from typing import Any, Callable
 
 import pytest
 
-from .errors import InvalidParameter
+from ..kernel.errors import InvalidParameter
 
 __all__ = ["GoldenChecker", "construct_golden", "safe_name", "render_goldens", "side_by_side_html"]
 
@@ -58,8 +58,8 @@ def safe_name(text: str) -> str:
 
 
 def _style(style: Any) -> Any:
-    from .render.styles import STYLES
-    from .render.svg import Style
+    from ..render.styles import STYLES
+    from ..render.svg import Style
 
     if isinstance(style, Style):
         return style
@@ -71,18 +71,18 @@ def _style(style: Any) -> Any:
 def render_goldens(figure: Any, out: Path, *, style: Any = "plain", frames: str = "all",
                    title: tuple[str, str] | None = None) -> int:
     """Write ``final.svg``, ``steps/NNN.svg`` and ``protocol.json`` of *figure* into *out*; return the frame count."""
-    from .output import write_text
-    from .render.output import FRAME_MODES, frame_steps
-    from .render.scene import build_scene
+    from ..output import write_text
+    from ..render.output import FRAME_MODES, frame_steps
+    from ..render.scene import build_scene
 
     if frames not in FRAME_MODES:
         raise InvalidParameter(f"frames must be one of {', '.join(FRAME_MODES)}, got {frames!r}")
     st = _style(style)
     scene = build_scene(figure, title=title)
     try:
-        from .render.svg import Drawing
+        from ..render.svg import Drawing
     except ImportError:  # an older renderer: one drawing per frame
-        from .render.svg import render_svg
+        from ..render.svg import render_svg
 
         frame: Callable[[int], str] = lambda k: render_svg(scene, upto=k, style=st)  # noqa: E731
         final: Callable[[], str] = lambda: render_svg(scene, style=st)  # noqa: E731
@@ -243,7 +243,7 @@ class GoldenChecker:
 
 def _replace(golden_dir: Path, rendered: Path) -> None:
     """Put the rendered folder in place of the goldens as a whole (no stale frames survive)."""
-    from .output import staged_output
+    from ..output import staged_output
 
     golden_dir = golden_dir.absolute()
     with staged_output(golden_dir.parent) as stage:

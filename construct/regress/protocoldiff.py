@@ -32,7 +32,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Mapping, Sequence
 
-from .errors import InvalidParameter, ProtocolFormatError
+from ..kernel.errors import InvalidParameter, ProtocolFormatError
 
 __all__ = ["DEFAULT_TOLERANCE", "ProtocolChange", "ProtocolDiff", "diff_protocol", "load_protocol"]
 
@@ -140,7 +140,7 @@ def load_protocol(source: str | Path | bytes | Mapping[str, Any]) -> _Protocol:
     >>> load_protocol('{"construction": "x", "steps": [{"tool": "compass"}]}')
     Traceback (most recent call last):
     ...
-    construct.errors.ProtocolFormatError: <string>: step 1: 'op' must be a string, got None
+    construct.kernel.errors.ProtocolFormatError: <string>: step 1: 'op' must be a string, got None
     """
     data, label = _read(source)
     if not isinstance(data, dict):

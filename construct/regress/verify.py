@@ -1,8 +1,8 @@
 """Golden files: rebuild the gallery and compare every file with the committed one.
 
 Every step frame is compared, not just the final figure, and in geometry,
-not in bytes: a ``.svg`` through :func:`construct.svgdiff.diff_svg`, a
-``protocol.json`` through :func:`construct.protocoldiff.diff_protocol`, so a
+not in bytes: a ``.svg`` through :func:`construct.regress.svgdiff.diff_svg`, a
+``protocol.json`` through :func:`construct.regress.protocoldiff.diff_protocol`, so a
 golden rewritten with reordered attributes or reformatted numbers is still
 equal while a point moved by 0.01 drawing units is named.  Other text files
 (``.json``, ``.html``, ``.md``, ``.csv``, ...) are compared as text (line
@@ -42,7 +42,7 @@ from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
 from typing import Any, Callable
 
-from .errors import ConstructError, InvalidParameter
+from ..kernel.errors import ConstructError, InvalidParameter
 
 __all__ = ["DEFAULT_TOLERANCE", "PROTOCOL_TOLERANCE", "FileDifference", "VerifyResult", "VerifyInputError",
            "compare_trees", "compare_file", "locate", "verify", "default_builder"]
@@ -304,7 +304,7 @@ def compare_trees(golden: Path, actual: Path, *, tolerance: float = DEFAULT_TOLE
 def default_builder(out: Path) -> Any:
     """Build the gallery the way ``construct gallery`` does (imported only when needed)."""
     try:
-        from .gallery import build_gallery
+        from ..gallery import build_gallery
     except ModuleNotFoundError as exc:
         if exc.name != f"{__package__}.gallery":
             raise
@@ -363,7 +363,7 @@ def verify(gallery: str | os.PathLike[str], *, update: bool = False,
 
 def _replace_tree(gallery: Path, rebuilt: Path) -> None:
     """Swap the rebuilt tree in for the goldens as one folder (nothing half-written)."""
-    from .output import staged_output
+    from ..output import staged_output
 
     gallery = gallery.absolute()
     with staged_output(gallery.parent) as stage:

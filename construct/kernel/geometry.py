@@ -3,7 +3,7 @@
 Everything here is a pure value type.  An intersection always returns a tuple
 of 0, 1 or 2 points (never a different type); *which* of two points a
 construction wants is not decided here but by a named rule in
-:mod:`construct.protocol`.
+:mod:`construct.kernel.protocol`.
 
 Tangency is decided by one stated tolerance, :data:`TANGENCY_TOLERANCE`,
 relative to the size of the figures involved: two curves whose gap (or
@@ -81,7 +81,7 @@ class Point(_Value):
     >>> Point(1.0, float("nan"))
     Traceback (most recent call last):
     ...
-    construct.errors.DegenerateObject: Point needs finite coordinates, got (1.0, nan)
+    construct.kernel.errors.DegenerateObject: Point needs finite coordinates, got (1.0, nan)
     """
 
     __slots__ = ()
@@ -112,7 +112,7 @@ class Line(_Value):
     >>> Line(Point(0.0, 0.0), Point(0.0, 0.0))
     Traceback (most recent call last):
     ...
-    construct.errors.DegenerateObject: Line needs two distinct points, got Point(0.0, 0.0) twice
+    construct.kernel.errors.DegenerateObject: Line needs two distinct points, got Point(0.0, 0.0) twice
     """
 
     __slots__ = ()
@@ -146,7 +146,7 @@ class Circle(_Value):
     >>> Circle(Point(0.0, 0.0), 0.0)
     Traceback (most recent call last):
     ...
-    construct.errors.DegenerateObject: Circle needs a positive finite radius, got 0.0
+    construct.kernel.errors.DegenerateObject: Circle needs a positive finite radius, got 0.0
     """
 
     __slots__ = ()
@@ -176,7 +176,7 @@ class Length(float):
     >>> Length(-1.0)
     Traceback (most recent call last):
     ...
-    construct.errors.DegenerateObject: Length must be positive and finite, got -1.0
+    construct.kernel.errors.DegenerateObject: Length must be positive and finite, got -1.0
     """
 
     __slots__ = ()
@@ -259,7 +259,7 @@ def intersect_circles(c1: Circle, c2: Circle) -> tuple[Point, ...]:
     >>> intersect_circles(Circle(Point(0, 0), 1.0), Circle(Point(0, 0), 1.0))
     Traceback (most recent call last):
     ...
-    construct.errors.DegenerateObject: coincident circles have no definite intersection: Circle(Point(0.0, 0.0), 1.0)
+    construct.kernel.errors.DegenerateObject: coincident circles have no definite intersection: Circle(Point(0.0, 0.0), 1.0)
     """
     (x1, y1), r1 = c1
     (x2, y2), r2 = c2

@@ -34,7 +34,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Iterator, Sequence
 
-from .errors import ConstructError, InvalidParameter
+from ..kernel.errors import ConstructError, InvalidParameter
 
 __all__ = ["DEFAULT_TOLERANCE", "SvgChange", "SvgDiff", "SvgFormatError", "diff_svg", "parse_svg"]
 
@@ -1105,7 +1105,7 @@ def parse_svg(source: str | Path | bytes, name: str | None = None) -> Drawing:
     >>> parse_svg("<html/>")
     Traceback (most recent call last):
     ...
-    construct.svgdiff.SvgFormatError: <string>: the root element is <html>, not <svg>
+    construct.regress.svgdiff.SvgFormatError: <string>: the root element is <html>, not <svg>
     """
     data, label = _load(source, "SVG file")
     label = name or label

@@ -7,7 +7,7 @@ English caption and the provenance of what it makes.  Replaying folds the
 steps over a table of named objects; replaying with other givens re-evaluates
 the same steps, so every branch is chosen by the same stored *rule*.
 
->>> from construct.instruments import Builder
+>>> from construct.kernel.instruments import Builder
 >>> b = Builder("demo", givens={"r": 2.0})
 >>> O = b.given_point("O", 0.0, 0.0)
 >>> r = b.given_length("r", product=("r",))

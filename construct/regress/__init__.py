@@ -1,0 +1,1 @@
+"""Regression testing in geometry: SVG and protocol diffs, gallery verification, the pytest plugin."""

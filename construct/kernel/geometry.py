@@ -261,7 +261,7 @@ class Line(_Value):
         if not (isinstance(p, Point) and isinstance(q, Point)):
             raise DegenerateObject(f"Line needs two points, got {p!r} and {q!r}")
         same = (p.x == q.x) & (p.y == q.y)
-        if np.any(same):
+        if same if type(same) is bool else np.any(same):
             raise DegenerateObject(f"Line needs two distinct points, got {p!r} twice")
         _set_p(self, p)
         _set_q(self, q)
@@ -343,8 +343,12 @@ Curve = Union[Line, Circle]
 
 def take(v: Any, i: int) -> Any:
     """Element *i* of a sweep value (a value that is no sweep is the same for every i)."""
+    if isinstance(v, float):
+        return v
     if isinstance(v, np.ndarray):
-        return float(v[i])
+        return float(v[i]) if v.ndim else float(v)  # np.where of two floats is 0-dimensional
+    if isinstance(v, np.generic):  # a numpy scalar: the same for every set of givens
+        return float(v)
     if isinstance(v, Point):
         return _pt(take(v.x, i), take(v.y, i))
     if isinstance(v, Line):
@@ -437,6 +441,8 @@ def line_circle(line: Line, circle: Circle, xp: Any = SCALAR) -> tuple[Point, Po
     """Where a line meets a circle, in the line's direction (a tangency: the foot twice)."""
     p, q = line.p, line.q
     c, r = circle.center, circle.radius
+    if xp is SCALAR:
+        return _line_circle_scalar(line, p.x, p.y, q.x, q.y, c.x, c.y, r, circle)
     dx, dy = q.x - p.x, q.y - p.y
     n = xp.hypot(dx, dy)
     ux, uy = dx / n, dy / n
@@ -454,6 +460,47 @@ def line_circle(line: Line, circle: Circle, xp: Any = SCALAR) -> tuple[Point, Po
     return _pt(fx - h * ux, fy - h * uy), _pt(fx + h * ux, fy + h * uy)
 
 
+def _line_circle_scalar(line, px, py, qx, qy, cx, cy, r, circle):
+    """line_circle on floats: the same operations in the same order, branches for where()."""
+    dx, dy = qx - px, qy - py
+    n = math.hypot(dx, dy)
+    ux, uy = dx / n, dy / n
+    t = (cx - px) * ux + (cy - py) * uy
+    fx, fy = px + t * ux, py + t * uy
+    delta = abs((cx - px) * uy - (cy - py) * ux)
+    gap = r - delta
+    tol = TANGENCY_TOLERANCE * r
+    if gap < -tol:
+        raise NoIntersection(f"{_describe(line)} and {_describe(circle)} do not meet")
+    h = 0.0 if gap <= tol else math.sqrt(gap * (r + delta))
+    return _pt(fx - h * ux, fy - h * uy), _pt(fx + h * ux, fy + h * uy)
+
+
+def _circle_circle_scalar(c1, c2, x1, y1, r1, x2, y2, r2):
+    """circle_circle on floats: the same operations in the same order, branches for where()."""
+    dx, dy = x2 - x1, y2 - y1
+    d = math.hypot(dx, dy)
+    tol = TANGENCY_TOLERANCE * max(max(r1, r2), d)
+    if d <= tol:
+        if abs(r1 - r2) <= tol:
+            raise DegenerateObject(f"coincident circles have no definite intersection: {_describe(c1)}")
+        raise NoIntersection(f"{_describe(c1)} and {_describe(c2)} do not meet")
+    outer = r1 + r2 - d
+    inner = d - abs(r1 - r2)
+    if outer < -tol or inner < -tol:
+        raise NoIntersection(f"{_describe(c1)} and {_describe(c2)} do not meet")
+    ux, uy = dx / d, dy / d
+    if outer <= tol:
+        a, h = r1, 0.0
+    elif inner <= tol:
+        a, h = (r1 if r1 >= r2 else -r1), 0.0
+    else:
+        a = 0.5 * (d + (r1 - r2) * (r1 + r2) / d)
+        h = math.sqrt(outer * (r1 + r2 + d) * inner * (d + abs(r1 - r2))) / (2.0 * d)
+    mx, my = x1 + a * ux, y1 + a * uy
+    return _pt(mx + h * uy, my - h * ux), _pt(mx - h * uy, my + h * ux)
+
+
 def circle_circle(c1: Circle, c2: Circle, xp: Any = SCALAR) -> tuple[Point, Point]:
     """Where two circles meet: right of the line of centres first, then left (a tangency: twice).
 
@@ -462,6 +509,8 @@ def circle_circle(c1: Circle, c2: Circle, xp: Any = SCALAR) -> tuple[Point, Poin
     """
     (x1, y1), r1 = (c1.center.x, c1.center.y), c1.radius
     (x2, y2), r2 = (c2.center.x, c2.center.y), c2.radius
+    if xp is SCALAR:
+        return _circle_circle_scalar(c1, c2, x1, y1, r1, x2, y2, r2)
     dx, dy = x2 - x1, y2 - y1
     d = xp.hypot(dx, dy)
     tol = TANGENCY_TOLERANCE * xp.maximum(xp.maximum(r1, r2), d)

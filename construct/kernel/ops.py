@@ -29,7 +29,8 @@ from typing import Any, Callable
 from .areas import Area, area_between_op, planimeter_height_op, planimeter_op
 from .curves import BezierCurve, Polyline, crossings, french_curve_op, parabola_envelope_op, polyline_op
 from .errors import GeometryError, NoIntersection
-from .geometry import SCALAR, Circle, Length, Line, Point, Sweep, _circle, _pt, meet, stack, take
+from .geometry import (SCALAR, Circle, Length, Line, Point, Sweep, _circle, _pt, circle_circle, line_circle,
+                       line_line, stack, take)
 from .rules import choose, choose_among
 from .trial import neusis_archimedes_op, trial_chord_op
 
@@ -110,18 +111,21 @@ def _line(args, params, givens, refs, xp):
     return (Line(args[0], args[1]),)
 
 
-def _radius(r: Any, xp: Any, what: str) -> Any:
-    bad = ~(r > 0.0) if xp is not SCALAR else not r > 0.0
-    if xp.any(bad):
-        from .errors import DegenerateObject
+def _radius(r: Any, xp: Any, what: Any) -> Any:
+    """*r* when positive everywhere; else a DegenerateObject (its message made only then: reprs cost)."""
+    if xp is SCALAR:
+        if r > 0.0:
+            return r
+    elif not xp.any(~(r > 0.0)):
+        return r
+    from .errors import DegenerateObject
 
-        raise DegenerateObject(f"{what} has no radius (its two points coincide)")
-    return r
+    raise DegenerateObject(f"{what()} has no radius (its two points coincide)")
 
 
 def _circle_through(args, params, givens, refs, xp):
     c, p = args
-    return (_circle(c, _radius(xp.hypot(p.x - c.x, p.y - c.y), xp, f"circle about {c!r} through {p!r}")),)
+    return (_circle(c, _radius(xp.hypot(p.x - c.x, p.y - c.y), xp, lambda: f"circle about {c!r} through {p!r}")),)
 
 
 def _circle_radius(args, params, givens, refs, xp):
@@ -131,7 +135,7 @@ def _circle_radius(args, params, givens, refs, xp):
 
 def _circle_segment(args, params, givens, refs, xp):
     c, a, b = args
-    return (_circle(c, _radius(xp.hypot(b.x - a.x, b.y - a.y), xp, f"compass set to {a!r}{b!r}")),)
+    return (_circle(c, _radius(xp.hypot(b.x - a.x, b.y - a.y), xp, lambda: f"compass set to {a!r}{b!r}")),)
 
 
 def _length_of(args, params, givens, refs, xp):
@@ -139,21 +143,37 @@ def _length_of(args, params, givens, refs, xp):
     return (Length(xp.hypot(b.x - a.x, b.y - a.y)),)
 
 
+def _swap(fn):
+    return lambda a, b, xp: fn(b, a, xp)
+
+
+#: Which core meets two curves of these kinds (the order of the points follows the first-named curve).
+_MEET = {
+    (Circle, Circle): circle_circle,
+    (Line, Circle): line_circle,
+    (Circle, Line): _swap(line_circle),
+    (Line, Line): lambda a, b, xp: (line_line(a, b, xp),),
+}
+
+
 def _intersect(args, params, givens, refs, xp):
     c1, c2 = args
     rule = params["rule"]
-    if not (isinstance(c1, (Line, Circle)) and isinstance(c2, (Line, Circle))):
+    core = _MEET.get((type(c1), type(c2)))
+    if core is None:  # a drawn curve: any number of crossings
         if xp is not SCALAR:
             return elementwise(_intersect)(args, params, givens, refs, xp)
         return _cross_curve(c1, c2, rule, refs, bool(params.get("both")))
-    pts = meet(c1, c2, xp)
-    if rule.name == "only" and len(pts) == 2:
-        (a, b) = pts
-        spread = xp.hypot(a.x - b.x, a.y - b.y)
-        scale = c1.radius if isinstance(c1, Circle) else c2.radius
-        if xp.any(spread > 1e-9 * scale):
-            raise GeometryError("expected exactly one intersection, found 2")
-    chosen, other = choose(pts, rule, refs, xp)
+    pts = core(c1, c2, xp)
+    if len(pts) == 1:
+        chosen, other = pts[0], None
+    else:
+        if rule.name == "only":
+            a, b = pts
+            scale = c1.radius if type(c1) is Circle else c2.radius
+            if xp.any(xp.hypot(a.x - b.x, a.y - b.y) > 1e-9 * scale):
+                raise GeometryError("expected exactly one intersection, found 2")
+        chosen, other = choose(pts, rule, refs, xp)
     if params.get("both"):
         return (chosen, other if other is not None else chosen)
     return (chosen,)

@@ -395,7 +395,7 @@ class Protocol:
             try:
                 for i in range(stop):
                     fn, ins, outs, params, refs, _, _ = entries[i]
-                    values = fn([env[k] for k in ins], params, givens, [env[k] for k in refs], SCALAR)
+                    values = fn([env[k] for k in ins], params, givens, [env[k] for k in refs] if refs else (), SCALAR)
                     for k, v in zip(outs, values):
                         env[k] = v
             except (ConstructError, KeyError, TypeError, AttributeError, ValueError, IndexError) as exc:

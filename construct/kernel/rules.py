@@ -28,6 +28,7 @@ from __future__ import annotations
 from typing import Any, Sequence
 
 from .errors import RuleError
+from .geometry import _pt
 
 __all__ = ["Rule", "nearer", "farther", "left_of", "right_of", "toward", "only", "as_rule", "RULE_ARITY", "choose"]
 
@@ -164,8 +165,6 @@ def choose(points: Sequence[Any], rule: Rule, refs: Sequence[Any], xp: Any) -> t
     >>> choose(pts, nearer("Q"), (Point(0.0, -5.0),), SCALAR)[0]
     Point(0.0, -1.0)
     """
-    from .geometry import _pt
-
     if len(points) == 1:
         return points[0], None
     a, b = points

@@ -321,7 +321,7 @@ class Drawing:
         elif m.kind == "area":
             yield "areas", f'<path{idattr} class="area {cls}', f'" d="{polygon_path(vp, g)}"/>'
             if st.hatch:
-                d = hatch_path(vp, g, st.hatch_spacing)
+                d = hatch_path(vp, g, st.hatch_spacing, *(() if m.hatch is None else (m.hatch,)))
                 if d:
                     hid = f' id="{xml_attr(mid)}-hatch"' if mid else ""
                     yield "areas", f'<path{hid} class="hatch', f'" d="{d}"/>'

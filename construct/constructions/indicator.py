@@ -97,7 +97,8 @@ def _up(d_head: str, d_crank: str) -> tuple[str, str, str]:
 
 
 def indicator_frame(b: Builder, *, base: str, head: str, crank: str, stroke: Sequence[str] = ("r",),
-                    stroke_factor: float = 2.0, prefix: str = "") -> IndicatorDiagram:
+                    stroke_factor: float = 2.0, prefix: str = "",
+                    pressure_scale: Sequence[str] = ("pressure_unit",)) -> IndicatorDiagram:
     """Add the diagram's fixed lines: clearance corners, admission and back-pressure lines, cut-off, s2.
 
     *base* is the absolute-zero line through *head* and *crank* (the two dead
@@ -106,7 +107,9 @@ def indicator_frame(b: Builder, *, base: str, head: str, crank: str, stroke: Seq
     the stroke 2r of :func:`construct.constructions.crank.build_frame`), and
     must equal the distance head-crank.  The builder's givens must hold
     ``filling``, ``clearance``, ``admission``, ``back_pressure``, ``compression``
-    (as fractions of the stroke and in at) and ``pressure_unit`` (drawn length of 1 at).
+    (as fractions of the stroke and in at) and the givens of *pressure_scale*, whose
+    product is the drawn length of 1 at (``pressure_unit``; or e.g. piston area times
+    drawn length per kg, so that the diagram reads directly as piston force).
     """
     p = prefix
     up = _up(head, crank)
@@ -119,9 +122,9 @@ def indicator_frame(b: Builder, *, base: str, head: str, crank: str, stroke: Seq
                             de="Füllung s1", en="filling s1")
         s3 = b.given_length(f"{p}s3", product=("compression", *stroke), factor=stroke_factor,
                             de="Kompressionsweg s3 = s − s2", en="compression path s3 = s - s2")
-        P0 = b.given_length(f"{p}P0", product=("back_pressure", "pressure_unit"),
+        P0 = b.given_length(f"{p}P0", product=("back_pressure", *pressure_scale),
                             de="Gegendruck P0 im Druckmaßstab", en="back pressure P0 in the pressure scale")
-        P = b.given_length(f"{p}P", product=("admission", "pressure_unit"),
+        P = b.given_length(f"{p}P", product=("admission", *pressure_scale),
                            de="Admissionsdruck P (über dem Gegendruck)", en="admission pressure P (over the back pressure)")
         k = b.circle_radius(f"{p}Z0.k", head, s0, de="s0 vor dem Deckeltotpunkt", en="s0 beyond the head-end dead centre")
         Z0 = b.intersect(f"{p}Z0", base, k, rule=("farther", crank), role="result", labels={f"{p}Z0": "Z"},

@@ -396,6 +396,17 @@ def _curve_deviation(fig: Figure, curve: str, lo: float, hi: float, fn, samples:
     return worst
 
 
+#: Command-line help for the diagram's givens (book terms).
+OPTION_HELP = {
+    "filling": "filling s1/s, fraction of the stroke (indicator-diagram: Baumann's 0.10)",
+    "clearance": "clearance s0/s, fraction of the stroke (indicator-diagram: Baumann's 0.05)",
+    "admission": "admission pressure P in at over the back pressure (indicator-diagram: Baumann's 7.85)",
+    "back_pressure": "back pressure P0 in at absolute (indicator-diagram: Baumann's 0.15)",
+    "compression": "compression s3/s = (s - s2)/s (indicator-diagram: Baumann's 0.30)",
+    "pressure_unit": "drawn length of 1 at (indicator-diagram; default 0.12)",
+}
+
+
 def _validate(givens: Mapping[str, float]) -> None:
     positive("stroke half r (drawing units)", givens["r"])
     indicator_givens(givens["filling"], givens["clearance"], givens["admission"], givens["back_pressure"],
@@ -414,4 +425,5 @@ INDICATOR = register(Construction(
     defaults={"r": 1.0, **BAUMANN, "pressure_unit": 0.12, "divisions": 10},
     book_params=({},),
     structural=("divisions", "filling", "compression"),
+    extra={"help": OPTION_HELP},
 ), validate=_validate)

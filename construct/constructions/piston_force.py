@@ -500,6 +500,15 @@ PISTON_FORCE = register(Construction(
     defaults={"parts": 18, "method": "auto", **TAFEL_I, **HP_DIAGRAM, "scale": 2.5, "force_unit": 1.2e-4},
     book_params=({}, {"parts": 9}, {"weight": 990.0}),
     structural=("parts", "method", "filling", "compression"),
+    extra={"help": {
+        "weight": "weight G of the reciprocating parts in kg (Tafel I: 830 high-pressure, 990 low-pressure side)",
+        "rpm": "revolutions per minute n (Tafel I: 50)",
+        "crank_radius": "crank radius R in m (Tafel I: 0.4)",
+        "rod_length": "connecting-rod length L in m (Tafel I: 2.0)",
+        "piston_area": "piston area F in cm^2 (Tafel I: (F' + F'')/2 = 1529.07)",
+        "scale": "drawn length per metre of stroke (piston-force; default 2.5)",
+        "force_unit": "drawn length per kg of force (piston-force; default 1.2e-4)",
+    }},
 ), validate=_validate)
 
 

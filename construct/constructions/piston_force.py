@@ -87,8 +87,8 @@ TAFEL_I = {"weight": 830.0, "rpm": 50.0, "crank_radius": 0.4, "rod_length": 2.0,
 
 #: An idealised high-pressure diagram (Baumann's model) standing in for Tafel I's, which the seed does not
 #: print: admission 7 at over a receiver back pressure of 2 at absolute, 30 % filling, 8 % clearance,
-#: 25 % compression -- enough compression for the pressure change J before the dead centre, as in Abb. 1055.
-HP_DIAGRAM = {"filling": 0.30, "clearance": 0.08, "admission": 7.0, "back_pressure": 2.0, "compression": 0.25}
+#: 15 % compression -- enough compression for the pressure change J before the dead centre, as in Abb. 1055.
+HP_DIAGRAM = {"filling": 0.30, "clearance": 0.08, "admission": 7.0, "back_pressure": 2.0, "compression": 0.15}
 
 
 def mass_force_scale(g: Mapping[str, float]) -> float:

@@ -47,7 +47,7 @@ from ..kernel.protocol import Caption
 from . import Construction, Figure, positive, register
 from .inertia import french_curve
 
-__all__ = ["INDICATOR", "IndicatorDiagram", "indicator_frame", "pressures_at", "hyperbola_point",
+__all__ = ["INDICATOR", "IndicatorDiagram", "indicator_frame", "pressures_at", "hyperbola_point", "square",
            "indicator_givens", "BAUMANN", "abscissa", "pressure", "steam_pressure", "back_pressure"]
 
 #: Baumann's worked case (seed 004, "Bestimmung des Fehlers"): the diagrams are drawn for the
@@ -88,6 +88,7 @@ class IndicatorDiagram:
     cutoff_ordinate: str
     compression_start: str   #: point (s2, P0), s2 = s - s3: the known point of the compression hyperbola
     compression_ordinate: str
+    opening: str     #: short compass opening for the perpendiculars
     filling: float   #: s1/s as built (decides which ordinates lie on the admission line)
     compression: float  #: s3/s as built
 
@@ -124,6 +125,8 @@ def indicator_frame(b: Builder, *, base: str, head: str, crank: str, stroke: Seq
                             de="Kompressionsweg s3 = s − s2", en="compression path s3 = s - s2")
         P0 = b.given_length(f"{p}P0", product=("back_pressure", *pressure_scale),
                             de="Gegendruck P0 im Druckmaßstab", en="back pressure P0 in the pressure scale")
+        opening = b.given_length(f"{p}open", product=stroke, factor=stroke_factor / 20.0,
+                                 de="Zirkelöffnung für die Senkrechten (s/20)", en="compass opening for the perpendiculars (s/20)")
         P = b.given_length(f"{p}P", product=("admission", *pressure_scale),
                            de="Admissionsdruck P (über dem Gegendruck)", en="admission pressure P (over the back pressure)")
         k = b.circle_radius(f"{p}Z0.k", head, s0, de="s0 vor dem Deckeltotpunkt", en="s0 beyond the head-end dead centre")
@@ -133,41 +136,53 @@ def indicator_frame(b: Builder, *, base: str, head: str, crank: str, stroke: Seq
         k = b.circle_radius(f"{p}Z1.k", crank, s0, de="s0 hinter dem Kurbeltotpunkt", en="s0 beyond the crank-end dead centre")
         Z1 = b.intersect(f"{p}Z1", base, k, rule=("farther", head), role="result", labels={f"{p}Z1": "Z′"},
                          de="Ecke Z′ auf der Kurbelseite", en="corner Z' on the crank side")
-        b.erect_perpendicular(f"{p}clear0", Z0, base, head)
-        b.erect_perpendicular(f"{p}clear1", Z1, base, crank)
-        head_ord = b.erect_perpendicular(f"{p}v.head", head, base, crank)
-        crank_ord = b.erect_perpendicular(f"{p}v.crank", crank, base, head)
+        square(b, f"{p}clear0", Z0, base, opening)
+        square(b, f"{p}clear1", Z1, base, opening)
+        head_ord = square(b, f"{p}v.head", head, base, opening)
+        crank_ord = square(b, f"{p}v.crank", crank, base, opening)
         k = b.circle_radius(f"{p}B0.k", head, P0, de="P0 aufgetragen", en="P0 laid off")
         B0 = b.intersect(f"{p}B0", head_ord, k, rule=up, de="Gegendruck P0 über der Nulllinie",
                          en="back pressure P0 above the zero line")
         k = b.circle_radius(f"{p}A0.k", B0, P, de="P darüber aufgetragen", en="P laid off above it")
         A0 = b.intersect(f"{p}A0", head_ord, k, rule=("farther", head), role="result",
                          de="Admissionsdruck P + P0 (absolut)", en="admission pressure P + P0 (absolute)")
-        adm = b.parallel_through(f"{p}adm", A0, head, crank)
-        back = b.parallel_through(f"{p}back", B0, head, crank)
+        adm = square(b, f"{p}adm", A0, head_ord, opening)
+        back = square(b, f"{p}back", B0, head_ord, opening)
         k = b.circle_radius(f"{p}S1.k", head, s1, de="Füllung s1 abgetragen", en="filling s1 laid off")
         S1 = b.intersect(f"{p}S1", base, k, rule=("toward", head, crank), labels={f"{p}S1": "s1"},
                          de="Ende der Füllung auf der Nulllinie", en="end of the filling on the zero line")
-        cut_ord = b.erect_perpendicular(f"{p}v.s1", S1, base, crank)
+        cut_ord = square(b, f"{p}v.s1", S1, base, opening)
         cutoff = b.intersect(f"{p}A1", adm, cut_ord, rule=("only",), role="result", labels={f"{p}A1": "A1"},
                              de="Abschluss der Füllung A1", en="cut-off A1")
         k = b.circle_radius(f"{p}S2.k", crank, s3, de="s3 vom Kurbeltotpunkt zurück", en="s3 back from the crank-end dead centre")
         S2 = b.intersect(f"{p}S2", base, k, rule=("toward", crank, head), labels={f"{p}S2": "s2"},
                          de="Beginn der Kompression s2 = s − s3", en="start of compression s2 = s - s3")
-        comp_ord = b.erect_perpendicular(f"{p}v.s2", S2, base, head)
+        comp_ord = square(b, f"{p}v.s2", S2, base, opening)
         cstart = b.intersect(f"{p}C2", back, comp_ord, rule=("only",), role="result", labels={f"{p}C2": "C2"},
                              de="Beginn der Kompression C2", en="start of compression C2")
     del head_ord, crank_ord
     return IndicatorDiagram(p, base, head, crank, Z0, Z1, adm, back, cutoff, cut_ord, cstart, comp_ord,
-                            g["filling"], g["compression"])
+                            opening, g["filling"], g["compression"])
+
+
+def square(b: Builder, name: str, point: str, line: str, opening: str) -> str:
+    """The perpendicular to *line* at its point *point*: a small circle cuts it twice, their bisector.
+
+    (The opening is a short given length, so the construction stays near the point.)
+    """
+    with b.group(f"perpendicular to {line} at {point}", f"Senkrechte zu {line} in {point}"):
+        k = b.circle_radius(f"{name}.o", point, opening, de=f"Kreis um {point}", en=f"circle about {point}")
+        a, z = b.intersect((f"{name}.a", f"{name}.z"), line, k, rule=("nearer", point))
+        return b.perpendicular_bisector(name, a, z)
 
 
 def hyperbola_point(b: Builder, name: str, *, corner: str, known: str, known_horizontal: str, known_vertical: str,
-                    ordinate: str, base_a: str, base_b: str, what: tuple[str, str], role: str = "result") -> str:
+                    ordinate: str, opening: str, what: tuple[str, str], role: str = "result") -> str:
     """The point of pv = const (origin *corner*) through *known* on *ordinate*: the rectangle's diagonal.
 
     B = ordinate x known horizontal; ray corner-B meets the known vertical in C;
-    the parallel to the base (through *base_a*, *base_b*) through C meets the ordinate.
+    the perpendicular to the known vertical at C (a horizontal, made with the
+    short compass *opening*) meets the ordinate.
     """
     with b.group(f"hyperbola point {name} by rays from {corner}", f"Hyperbelpunkt {name} durch Strahlen aus {corner}"):
         B = b.intersect(f"{name}.B", ordinate, known_horizontal, rule=("only",),
@@ -178,7 +193,7 @@ def hyperbola_point(b: Builder, name: str, *, corner: str, known: str, known_hor
         C = b.intersect(f"{name}.C", ray, known_vertical, rule=("only",),
                         de="Strahl trifft die Senkrechte durch den bekannten Punkt",
                         en="the ray meets the vertical through the known point")
-        h = b.parallel_through(f"{name}.h", C, base_a, base_b)
+        h = square(b, f"{name}.h", C, known_vertical, opening)
         return b.intersect(name, h, ordinate, rule=("only",), role=role, de=what[0], en=what[1])
 
 
@@ -213,8 +228,8 @@ def pressures_at(b: Builder, d: IndicatorDiagram, ordinate: str, tag: str, *, ta
                                    de=f"Admissionslinie bei {tag}", en=f"admission line at {tag}")
     else:
         out["steam"] = hyperbola_point(b, f"{p}E{tag}", corner=d.Z0, known=d.cutoff, known_horizontal=d.admission,
-                                       known_vertical=d.cutoff_ordinate, ordinate=ordinate, base_a=d.head,
-                                       base_b=d.crank, what=(f"Expansionslinie bei {tag}", f"expansion line at {tag}"))
+                                       known_vertical=d.cutoff_ordinate, ordinate=ordinate, opening=d.opening,
+                                       what=(f"Expansionslinie bei {tag}", f"expansion line at {tag}"))
         if tangents:
             out["steam_tangent"] = _tangent(b, d, out["steam"], ordinate, d.Z0, f"{p}tE{tag}")
     if x <= 1.0 - d.compression + edge:
@@ -222,8 +237,8 @@ def pressures_at(b: Builder, d: IndicatorDiagram, ordinate: str, tag: str, *, ta
                                   de=f"Gegendrucklinie bei {tag}", en=f"back-pressure line at {tag}")
     else:
         out["back"] = hyperbola_point(b, f"{p}R{tag}", corner=d.Z1, known=d.compression_start, known_horizontal=d.back,
-                                      known_vertical=d.compression_ordinate, ordinate=ordinate, base_a=d.head,
-                                      base_b=d.crank, what=(f"Kompressionslinie bei {tag}", f"compression line at {tag}"))
+                                      known_vertical=d.compression_ordinate, ordinate=ordinate, opening=d.opening,
+                                      what=(f"Kompressionslinie bei {tag}", f"compression line at {tag}"))
         if tangents:
             out["back_tangent"] = _tangent(b, d, out["back"], ordinate, d.Z1, f"{p}tR{tag}")
     return out
@@ -274,7 +289,7 @@ def build_indicator(*, r: float, filling: float, clearance: float, admission: fl
             elif k == n:
                 ords.append("v.crank")
             else:
-                ords.append(b.erect_perpendicular(f"v{k}", m, base, B if 2 * k <= n else A))
+                ords.append(square(b, f"v{k}", m, base, d.opening))
     exp_pts, exp_tan, comp_pts, comp_tan = [d.cutoff], {0: None}, [d.compression_start], {0: None}
     with b.group("expansion and compression lines by the ray construction",
                  "Expansions- und Kompressionslinie durch Strahlenkonstruktion"):

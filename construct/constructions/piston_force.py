@@ -59,7 +59,7 @@ from ..kernel.protocol import Caption
 from . import Construction, Figure, positive, register
 from .crank import angle_tolerance, crank_angle, point_name, rod_arcs
 from .indicator import back_pressure as model_back
-from .indicator import indicator_frame, indicator_givens, pressures_at
+from .indicator import indicator_frame, indicator_givens, pressures_at, square
 from .indicator import steam_pressure as model_steam
 from .inertia import _Ctx, _kind, _ordinate_line, _value, french_curve
 
@@ -245,7 +245,7 @@ def _pressure_change(b: Builder, d, fbase: str) -> None:
         g = b.line("J.g", M1, M2, de="Verbindungslinie teilt Z Z′ im Verhältnis", en="the joining line divides Z Z' in the ratio")
         Jx = b.intersect("Jx", g, d.base, rule=("only",), role="result", labels={"Jx": "J′"},
                          de="Schnitt der Expansions- und Kompressionslinie", en="where expansion and compression lines cross")
-        o = b.erect_perpendicular("J.o", Jx, d.base, d.head)
+        o = square(b, "J.o", Jx, d.base, d.opening)
         b.intersect("J", o, fbase, rule=("only",), role="result", labels={"J": "J"},
                     de="Druckwechsel J: Kolbenkraft null", en="pressure change J: piston force zero")
 

@@ -45,7 +45,6 @@ from ..errors import InvalidParameter
 from ..kernel.instruments import Builder
 from ..kernel.protocol import Caption
 from . import Construction, Figure, positive, register
-from .inertia import french_curve
 
 __all__ = ["INDICATOR", "IndicatorDiagram", "indicator_frame", "pressures_at", "hyperbola_point", "square",
            "indicator_givens", "BAUMANN", "abscissa", "pressure", "steam_pressure", "back_pressure"]
@@ -306,9 +305,9 @@ def build_indicator(*, r: float, filling: float, clearance: float, admission: fl
         exp_tan[0] = _tangent(b, d, d.cutoff, d.cutoff_ordinate, d.Z0, "tA1")
         comp_tan[0] = _tangent(b, d, d.compression_start, d.compression_ordinate, d.Z1, "tC2")
     with b.group("the curves drawn through the points", "Die Linien durch die Punkte gezogen"):
-        french_curve(b, "expansion", base, exp_pts, {i: t for i, t in exp_tan.items() if t},
+        b.french_curve("expansion", base, exp_pts, {i: t for i, t in exp_tan.items() if t},
                      de="Expansionslinie (Hyperbel) mit dem Curvenlineal", en="expansion line (hyperbola), French curve")
-        french_curve(b, "compression", base, comp_pts, {i: t for i, t in comp_tan.items() if t},
+        b.french_curve("compression", base, comp_pts, {i: t for i, t in comp_tan.items() if t},
                      de="Kompressionslinie (Hyperbel) mit dem Curvenlineal", en="compression line (hyperbola), French curve")
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))

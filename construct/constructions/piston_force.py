@@ -61,7 +61,7 @@ from .crank import angle_tolerance, crank_angle, point_name, rod_arcs
 from .indicator import back_pressure as model_back
 from .indicator import indicator_frame, indicator_givens, pressures_at, square
 from .indicator import steam_pressure as model_steam
-from .inertia import _Ctx, _kind, _ordinate_line, _value, french_curve
+from .inertia import _Ctx, _kind, _ordinate_line, _value
 
 __all__ = ["PISTON_FORCE", "TAFEL_I", "HP_DIAGRAM", "GRAVITY", "piston_area_mean", "build_piston_force",
            "piston_force_checks", "mass_force", "piston_force", "abscissa", "mass_force_rows", "area_balance",
@@ -271,11 +271,11 @@ def _curves(b: Builder, n: int, fbase: str, g: Mapping[str, float]) -> None:
             raise InvalidParameter("the compression must begin after the cut-off (s1 + s3 < s) for this figure")
         b.line("forcea", first[0], first[-1], role="result", de="Kolbenkraft während der Füllung: Gerade",
                en="piston force during admission: a straight line")
-        french_curve(b, "forceb", fbase, mid, {}, de="Kolbenkraftlinie während der Expansion",
+        b.french_curve("forceb", fbase, mid, {}, de="Kolbenkraftlinie während der Expansion",
                      en="piston-force line during expansion")
-        french_curve(b, "forcec", fbase, last, {}, de="Kolbenkraftlinie während der Kompression",
+        b.french_curve("forcec", fbase, last, {}, de="Kolbenkraftlinie während der Kompression",
                      en="piston-force line during compression")
-        french_curve(b, "mass", fbase, [f"M{k}" for k in range(n + 1)], {},
+        b.french_curve("mass", fbase, [f"M{k}" for k in range(n + 1)], {},
                      de="Linie der Massenkräfte", en="line of the mass forces")
     del g
 

@@ -65,7 +65,7 @@ from .inertia import _Ctx, _kind, _ordinate_line, _value
 
 __all__ = ["PISTON_FORCE", "TAFEL_I", "HP_DIAGRAM", "GRAVITY", "piston_area_mean", "build_piston_force",
            "piston_force_checks", "mass_force", "piston_force", "abscissa", "mass_force_rows", "area_balance",
-           "mass_force_scale", "j_abscissa", "planimeter"]
+           "mass_force_scale", "j_abscissa"]
 
 #: g as the book uses it ("830/9,81").
 GRAVITY = 9.81
@@ -125,7 +125,7 @@ def _validate(g: Mapping[str, float]) -> None:
 
 #: What Abb. 1055 shows: the base line, the piston-force line, the mass-force curve, the free forces
 #: hatched vertically, J; the ordinates' feet as the stroke's division.
-PLATE = (r"fbase", r"F\d+", r"K\d+|Ks[12]", r"M\d+", r"ord\d+", r"force[abc]", r"mass", r"J")
+PLATE = (r"fbase", r"F\d+", r"K\d+|Ks[12]", r"M\d+", r"ord\d+", r"force[abc]", r"mass", r"J", r"free\.[abc]")
 
 
 def _frame(b: Builder) -> dict[str, str]:
@@ -218,9 +218,6 @@ def build_piston_force(*, parts: int, method: str, **values: Any) -> Figure:
                                       en="mass force carried with the compass")
                 b.intersect(f"M{k}", f"ord{k}", k_, rule=("left", V, c.gf.origin), role="result",
                             de=f"Massenkraft M{k} (oben: Beschleunigung)", en=f"mass force M{k} (up: acceleration)")
-    with b.group("free forces hatched vertically", "Freie Kräfte senkrecht gestrichelt"):
-        for k in range(n + 1):
-            b.line(f"free{k}", f"M{k}", f"K{k}", role="result", de=f"freie Kraft bei {k}", en=f"free force at {k}")
     _pressure_change(b, d, fbase)
     _curves(b, n, fbase, givens)
     proto = b.protocol()
@@ -277,6 +274,17 @@ def _curves(b: Builder, n: int, fbase: str, g: Mapping[str, float]) -> None:
                      en="piston-force line during compression")
         b.french_curve("mass", fbase, [f"M{k}" for k in range(n + 1)], {},
                      de="Linie der Massenkräfte", en="line of the mass forces")
+    with b.group("free forces hatched vertically; the mass-force areas", "Freie Kräfte senkrecht gestrichelt; Massenkraftflächen"):
+        for piece, (a, z) in zip(("forcea", "forceb", "forcec"), ((first[0], first[-1]), (mid[0], mid[-1]),
+                                                                 (last[0], last[-1]))):
+            b.area_between(f"free.{piece[-1]}", piece, "mass", a, z, role="result",
+                           de="freie Kräfte zwischen Kolbenkraft- und Massenkraftlinie",
+                           en="free forces between the piston-force line and the mass-force line")
+        b.area_between("massarea", "mass", fbase, "M0", f"M{n}", role="construction",
+                       de="Beschleunigungsfläche über, Verzögerungsfläche unter der Kolbenweglinie",
+                       en="acceleration area above, deceleration area below the piston-path line")
+        b.planimeter("balance", "massarea", de="mit dem Planimeter umfahren: Beschleunigungs- weniger Verzögerungsfläche",
+                     en="planimeter round it: acceleration less deceleration area")
     del g
 
 
@@ -363,34 +371,12 @@ def _zero(fn, a: float, b: float) -> float:
     return 0.5 * (a + b)
 
 
-def planimeter(pts: list[tuple[float, float]]) -> tuple[float, float]:
-    """Areas above and below the base (y = 0) enclosed by a polyline over it: a planimeter on the drawn line.
-
-    Each chord is split where it crosses the base; the trapezoids are summed by side.
-
-    >>> planimeter([(0.0, 1.0), (2.0, -1.0)])
-    (0.5, 0.5)
-    """
-    above = below = 0.0
-    for (x0, y0), (x1, y1) in zip(pts, pts[1:]):
-        if y0 * y1 < 0.0:
-            xc = x0 + (x1 - x0) * y0 / (y0 - y1)
-            parts = ((x0, y0, xc, 0.0), (xc, 0.0, x1, y1))
-        else:
-            parts = ((x0, y0, x1, y1),)
-        for a, ya, b, yb in parts:
-            area = (b - a) * (ya + yb) / 2.0
-            if ya + yb >= 0.0:
-                above += area
-            else:
-                below -= area
-    return above, below
-
-
 def area_balance(fig: Figure) -> dict[str, float]:
     """Acceleration area above the base and deceleration area below it, in kg m (= mkg of work).
 
-    ``drawn_*``: the mass-force line as drawn, planimetered (:func:`planimeter`);
+    ``drawn_*``: the region between the mass-force line as drawn and the base line (an Area of the
+    figure), measured; ``planimeter_balance`` the planimeter's reading round it (acceleration less
+    deceleration);
     ``two_term_*``: eq. (298) over the exact piston path (Gauss quadrature);
     ``exact_*``: the exact kinematics, (G/g) v_max^2 / 2 on each side.
     """
@@ -398,18 +384,19 @@ def area_balance(fig: Figure) -> dict[str, float]:
     lam = g["crank_radius"] / g["rod_length"]
     A = mass_force_scale(g)
     stroke_m = 2.0 * g["crank_radius"]
-    ax, ay, ux, uy, s, unit = _base_frame(fig)
-    pts = [((p[0] - ax) * ux + (p[1] - ay) * uy, (p[0] - ax) * -uy + (p[1] - ay) * ux)
-           for p in fig.replay["mass"].curve_points(64)]
-    to_kgm = stroke_m / s / unit  # drawn length along the base -> m; drawn height -> kg
-    drawn_acc, drawn_dec = (v * to_kgm for v in planimeter(pts))
+    _, _, _, _, s, unit = _base_frame(fig)
+    to_kgm = stroke_m / s / unit  # drawn area: length along the base -> m, height -> kg
+    pieces = fig.replay["massarea"].signed_pieces()  # the region between the drawn line and the base, split
+    drawn_acc = sum(p.area for sign, p in pieces if sign > 0) * to_kgm
+    drawn_dec = sum(p.area for sign, p in pieces if sign < 0) * to_kgm
+    drawn_balance = float(fig.replay["balance"]) * to_kgm  # the planimeter's reading
     w0 = _zero(lambda w: _two_term(w, lam), 0.0, math.pi)
     two_acc = A * stroke_m * _gauss(lambda w: _two_term(w, lam) * _dx_dw(w, lam), 0.0, w0)
     two_dec = -A * stroke_m * _gauss(lambda w: _two_term(w, lam) * _dx_dw(w, lam), w0, math.pi)
     we = _zero(lambda w: _exact_accel(w, lam), 0.0, math.pi)
     exact_acc = A * stroke_m * _gauss(lambda w: _exact_accel(w, lam) * _dx_dw(w, lam), 0.0, we)
     exact_dec = -A * stroke_m * _gauss(lambda w: _exact_accel(w, lam) * _dx_dw(w, lam), we, math.pi)
-    return {"drawn_acceleration": drawn_acc, "drawn_deceleration": drawn_dec,
+    return {"drawn_acceleration": drawn_acc, "drawn_deceleration": drawn_dec, "planimeter_balance": drawn_balance,
             "two_term_acceleration": two_acc, "two_term_deceleration": two_dec,
             "exact_acceleration": exact_acc, "exact_deceleration": exact_dec}
 
@@ -481,6 +468,9 @@ def piston_force_checks(fig: Figure) -> list[Check]:
                         a["two_term_acceleration"] - a["two_term_deceleration"], 0.0,
                         A * 2.0 * g["crank_radius"] * lam ** 3,
                         "eq. (298) is exact for the path of Gl. (1), not for the rod arcs: residue O(lam^3)", "kg m"))
+    checks.append(Check("planimeter reading = acceleration - deceleration area", a["planimeter_balance"],
+                        a["drawn_acceleration"] - a["drawn_deceleration"], 1e-9 * A * 2.0 * g["crank_radius"],
+                        "the same drawn region, measured whole and piece by piece", "kg m"))
     checks.append(Check("area balance as drawn (information)", a["drawn_acceleration"] - a["drawn_deceleration"], 0.0,
                         2 * curve_tol + A * 2.0 * g["crank_radius"] * lam ** 3,
                         "drawing error of the curve plus the O(lam^3) residue", "kg m"))

@@ -488,7 +488,7 @@ PISTON_FORCE = register(Construction(
     build=lambda parts, method, **v: build_piston_force(parts=parts, method=method, **v),
     checks=piston_force_checks,
     defaults={"parts": 18, "method": "auto", **TAFEL_I, **HP_DIAGRAM, "scale": 2.5, "force_unit": 1.2e-4},
-    book_params=({}, {"parts": 9}, {"weight": 990.0}),
+    book_params=({}, {"weight": 990.0}),  # Tafel I: high-pressure and low-pressure side
     structural=("parts", "method", "filling", "compression"),
     extra={"help": {
         "weight": "weight G of the reciprocating parts in kg (Tafel I: 830 high-pressure, 990 low-pressure side)",

@@ -438,7 +438,7 @@ INDICATOR = register(Construction(
         compression=compression, pressure_unit=pressure_unit, divisions=divisions),
     checks=indicator_checks,
     defaults={"r": 1.0, **BAUMANN, "pressure_unit": 0.12, "divisions": 10},
-    book_params=({},),
+    book_params=({}, {"filling": 0.4}),  # Baumann's two worked cases: s1 = 10 % and 40 % (drawn for P = 7.85 at)
     structural=("divisions", "filling", "compression"),
     extra={"help": OPTION_HELP},
 ), validate=_validate)

@@ -27,8 +27,10 @@ The construction, on one sheet:
   inertia curve is (:mod:`construct.constructions.inertia`: r cos phi, the
   doubled angle, r/L by the proportional angle, then scaled to
   (G/g) omega^2 R in the force scale);
-* the free forces M_k K_k (vertical hatching), the lines drawn through the points,
-  and J, the zero of p_ü: the steam and compression hyperbolas cross where
+* the lines drawn through the points (the piston-force line in three pieces, its
+  corners at the cut-off and the start of compression), the free forces between it
+  and the mass-force line as hatched areas, the mass-force areas above and below the
+  base read with the planimeter, and J, the zero of p_ü: the steam and compression hyperbolas cross where
   the distance between the clearance corners is divided in the ratio of the
   two rectangles (P + P0)(s1 + s0) : P0 (s3 + s0) -- a fourth proportional
   and the intercept theorem.
@@ -54,7 +56,7 @@ from ..checks import EUCLIDEAN_TOLERANCE, Check
 from ..errors import InvalidParameter
 from ..kernel.division import check_parts, divide_semicircle
 from ..kernel.instruments import Builder
-from ..kernel.proportional import scale_line, vertex_on
+from ..kernel.proportional import fourth_proportional, scale_line, vertex_on
 from ..kernel.protocol import Caption
 from . import Construction, Figure, positive, register
 from .crank import angle_tolerance, crank_angle, point_name, rod_arcs
@@ -219,15 +221,13 @@ def build_piston_force(*, parts: int, method: str, **values: Any) -> Figure:
                 b.intersect(f"M{k}", f"ord{k}", k_, rule=("left", V, c.gf.origin), role="result",
                             de=f"Massenkraft M{k} (oben: Beschleunigung)", en=f"mass force M{k} (up: acceleration)")
     _pressure_change(b, d, fbase)
-    _curves(b, n, fbase, givens)
+    _curves(b, n, fbase)
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))
 
 
 def _pressure_change(b: Builder, d, fbase: str) -> None:
     """J: the steam and compression hyperbolas cross where Z0 J : J Z1 = (s1 + s0) : P0 (s3 + s0)/(P + P0)."""
-    from ..kernel.proportional import fourth_proportional
-
     with b.group("pressure change J", "Druckwechsel J"):
         h1 = b.length_of("J.h1", d.head, "ind.A0", de="P + P0", en="P + P0")
         h2 = b.length_of("J.h2", d.head, "ind.B0", de="P0", en="P0")
@@ -255,7 +255,7 @@ def _down(d) -> tuple[str, str, str]:
     return ("right", d.head, d.crank)
 
 
-def _curves(b: Builder, n: int, fbase: str, g: Mapping[str, float]) -> None:
+def _curves(b: Builder, n: int, fbase: str) -> None:
     """The lines drawn through the points: piston force in three pieces (its corners at s1 and s2), mass forces."""
     xs = {k: b[f"X{k}"][0] for k in range(n + 1)}
     x1, x2 = b["Ks1"][0], b["Ks2"][0]
@@ -285,7 +285,6 @@ def _curves(b: Builder, n: int, fbase: str, g: Mapping[str, float]) -> None:
                        en="acceleration area above, deceleration area below the piston-path line")
         b.planimeter("balance", "massarea", de="mit dem Planimeter umfahren: Beschleunigungs- weniger Verzögerungsfläche",
                      en="planimeter round it: acceleration less deceleration area")
-    del g
 
 
 # --------------------------------------------------------------------------

@@ -7,6 +7,8 @@ on the compression -- never this code's own output.
 
 import mpmath
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from construct.checks import all_ok
 from construct.cli import main
@@ -139,3 +141,18 @@ def test_builder_api_on_the_crank_frame():
     assert height(pts["steam"]) == pytest.approx(float(steam_mp(0.75, givens)), abs=1e-12)
     assert height(pts["back"]) == pytest.approx(float(back_mp(0.75, givens)), abs=1e-12)
     del top
+
+
+@settings(max_examples=12, deadline=None)
+@given(filling=st.floats(0.02, 0.9), clearance=st.floats(0.005, 0.3), admission=st.floats(0.5, 15.0),
+       back_pressure=st.floats(0.05, 3.0), compression=st.floats(0.02, 0.9))
+def test_hyperbola_invariant_for_any_diagram(filling, clearance, admission, back_pressure, compression):
+    fig = INDICATOR.figure(filling=filling, clearance=clearance, admission=admission, back_pressure=back_pressure,
+                           compression=compression, divisions=6)
+    g = fig.replay.givens
+    for k in range(7):
+        x = abscissa(fig, f"E{k}")
+        assert pressure(fig, f"E{k}") == pytest.approx(float(steam_mp(k / 6, g)), rel=1e-11, abs=1e-11)
+        assert pressure(fig, f"R{k}") == pytest.approx(float(back_mp(k / 6, g)), rel=1e-11, abs=1e-11)
+        assert x == pytest.approx(k / 6, abs=1e-12)
+    assert all_ok(INDICATOR.checks(fig))

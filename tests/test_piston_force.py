@@ -162,3 +162,12 @@ def test_cli_replay_with_book_terms(tmp_path, capsys):
                  "--rod-length", "2.0", "--filling", "0.25", "--parts", "9"]) == 0
     assert main(["check", "piston-force", "--rod-length", "0.2"]) == 2
     assert "rod length" in capsys.readouterr().err
+
+
+def test_replay_equals_a_fresh_build():
+    base = PF.figure(parts=9)
+    again = PF.replay(base.protocol, rpm=80.0, weight=990.0, admission=6.0)
+    fresh = PF.figure(parts=9, rpm=80.0, weight=990.0, admission=6.0)
+    for k in range(10):
+        assert mass_force(again, k) == pytest.approx(mass_force(fresh, k), abs=1e-9)
+        assert piston_force(again, k) == pytest.approx(piston_force(fresh, k), abs=1e-9)

@@ -69,3 +69,21 @@ def test_source_names_the_seed_in_the_cli(capsys):
     mine = [r for r in records if r["source"].startswith("seed 001")]
     assert len(mine) == len(seed001.worked_example())
     assert {r["table"] for r in mine} == {"Tafel I", "semicircle"}
+
+
+def test_transcription_is_in_the_seed_text():
+    from pathlib import Path
+
+    # the shared seed folder beside the repository (or beside the folder of worktrees)
+    here = Path(__file__).resolve()
+    seeds = next((d for d in (here.parents[2] / "shared" / "seeds", here.parents[3] / "shared" / "seeds")
+                  if d.is_dir()), here.parents[2] / "shared" / "seeds")
+    found = sorted(seeds.glob("001_*.txt")) if seeds.is_dir() else []
+    if not found:
+        pytest.skip(f"seed 001 not found under {seeds}")
+    text = found[0].read_text(encoding="utf-8")
+    for p in seed001.worked_example():
+        assert p.text.replace(".", ",") in text, p
+    for name, kg in seed001.PART_WEIGHTS.items():
+        assert f"{kg:.0f} kg" in text, name
+    assert "(45^2 - 7,5^2)" in text and "(45^2 - 10^2)" in text and "n = 50" in text

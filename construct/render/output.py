@@ -62,7 +62,7 @@ def params_text(figure: Figure) -> str:
     """The figure's givens and parameters, e.g. ``r = 1, rod_ratio = 5, parts = 18, method = durer``."""
     givens = [f"{k} = {v:g}" for k, v in sorted(figure.replay.givens.items())]
     params = [f"{k} = {v}" for k, v in sorted(figure.params.items())
-              if k not in ("givens", "group_titles", "requested_method", "plate")]
+              if k not in ("givens", "group_titles", "requested_method", "plate") and k not in figure.replay.givens]
     return ", ".join(givens + params)
 
 

@@ -37,6 +37,24 @@ def add_construction_options(p: argparse.ArgumentParser, *, name_optional: bool 
     p.add_argument("--divisions", type=_whole, metavar="M", help="divisions of the stroke (crank-angle)")
     p.add_argument("--radius", type=_number, metavar="R", help="crank radius r in drawing units")
     p.add_argument("--pressure-ratio", type=_number, metavar="F/f", help="F/f of the inertia pressures")
+    _add_other_givens(p)
+
+
+def _add_other_givens(p: argparse.ArgumentParser) -> None:
+    """An option for every other parameter some construction takes (--kappa, --filling, ...), named as it is."""
+    from ..constructions import get, names
+
+    taken = set(PARAM_OPTIONS.values())
+    for name in names():
+        for key, default in get(name).defaults.items():
+            opt = "--" + key.replace("_", "-")
+            if key in taken or opt in p._option_string_actions:
+                continue
+            taken.add(key)
+            kind = _whole if isinstance(default, int) and not isinstance(default, bool) else (
+                _number if isinstance(default, float) else str)
+            p.add_argument(opt, dest=f"given_{key}", type=kind, metavar=key.upper(),
+                           help=f"{key.replace('_', ' ')} ({name}; default {default})")
 
 
 PARAM_OPTIONS = {"rod_ratio": "rod_ratio", "parts": "parts", "method": "method", "divisions": "divisions",
@@ -51,6 +69,11 @@ def given_options(args: argparse.Namespace) -> dict[str, Any]:
             if isinstance(v, float) and not math.isfinite(v):
                 raise InvalidParameter(f"--{opt.replace('_', '-')} must be finite, got {v!r}")
             out[param] = v
+    for attr, v in vars(args).items():
+        if attr.startswith("given_") and v is not None:
+            if isinstance(v, float) and not math.isfinite(v):
+                raise InvalidParameter(f"--{attr[6:].replace('_', '-')} must be finite, got {v!r}")
+            out[attr[6:]] = v
     return out
 
 

@@ -12,7 +12,8 @@ from ..tables import TABLES
 from ._common import _number, _whole
 
 NAME = "table"
-HELP = "print a table (piston-path, crank-angle, acceleration, characteristic-points)"
+HELP = ("print a table (piston-path, crank-angle, acceleration, characteristic-points, tangential-pressure, "
+        "flywheel-coefficients)")
 
 
 def add_arguments(p) -> None:
@@ -22,6 +23,8 @@ def add_arguments(p) -> None:
     p.add_argument("--method", default="auto")
     p.add_argument("--divisions", type=_whole, default=10, metavar="M")
     p.add_argument("--step", type=_number, default=10.0, metavar="DEG", help="angle step of the acceleration table")
+    p.add_argument("--kz", type=_number, action="append", metavar="KG_CM2", help="allowed stress kz (flywheel; repeat)")
+    p.add_argument("--v", type=_number, action="append", metavar="M_S", help="rim speed v (flywheel; repeat)")
     p.add_argument("--format", choices=("text", "csv"), default="text")
 
 
@@ -46,6 +49,10 @@ def run(args) -> int:
         if not (math.isfinite(args.step) and 0 < args.step <= 180):
             raise InvalidParameter(f"--step must be between 0 and 180 degrees, got {args.step!r}")
         cols, rows = TABLES[args.table](rod_ratios=args.rod_ratio, step=args.step)
+    elif args.table == "tangential-pressure":
+        cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args), parts=args.parts, method=args.method)
+    elif args.table == "flywheel-coefficients":
+        cols, rows = TABLES[args.table](kz=args.kz, v=args.v)
     else:
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args))
     sys.stdout.write(format_table(cols, rows, args.format))

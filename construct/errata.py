@@ -38,7 +38,10 @@ from .errors import InvalidParameter
 from .reference import seed000
 from .reference.seed000 import PrintedValue
 
-__all__ = ["Erratum", "Reading", "errata", "classify", "read_printed", "true_value", "CLASSES"]
+__all__ = ["Erratum", "Reading", "errata", "all_errata", "classify", "read_printed", "true_value", "CLASSES", "SOURCES"]
+
+#: The other seeds' errata modules (each has ``entries()``), listed after seed 000's by :func:`all_errata`.
+SOURCES = ("construct.errata_seed004",)
 
 CLASSES = ("agrees", "slip", "misprint")
 
@@ -440,3 +443,13 @@ def errata() -> list[Erratum]:
         return index[table, row, column]
 
     return [_entry(v, lookup) for v in printed] + _formula_entries()
+
+
+def all_errata() -> list[Erratum]:
+    """Seed 000's errata, then those of every module in :data:`SOURCES` (``source`` names the seed)."""
+    import importlib
+
+    out = errata()
+    for module in SOURCES:
+        out += importlib.import_module(module).entries()
+    return out

@@ -188,7 +188,7 @@ def _unrolled(b: Builder, f: Mapping[str, str], points: list[str], n: int, heigh
     r = b.givens["r"]
     shortfall = chord_shortfall(n, r)
     with b.group("the crank circle unrolled with the dividers", "Der Kurbelkreis mit dem Stechzirkel abgewickelt"):
-        U0 = b.given_point("U0", -0.5 * math.pi, -3.6, unit="r", de="Anfang der Abwicklung", en="start of the unrolled circle",
+        U0 = b.given_point("U0", 2.6, -1.2, unit="r", de="Anfang der Abwicklung", en="start of the unrolled circle",
                            label="0")
         base = b.given_line("tbase", U0, angle_deg=0.0, de="Grundlinie: abgewickelter Kurbelkreis",
                             en="base line: the unrolled crank circle")
@@ -204,7 +204,8 @@ def _unrolled(b: Builder, f: Mapping[str, str], points: list[str], n: int, heigh
                      f"Sehne zum {k}. Mal abgetragen", f"chord stepped off for the {k}th time", provenance=prov,
                      role="result", labels={name: str(k)} if k in (n // 2, n) else None)
             marks.append(name)
-        ords = [b.erect_perpendicular(f"u{k}", m, base, marks[1] if k == 0 else U0) for k, m in enumerate(marks)]
+        # The compass about each mark through its neighbour: small circles, whatever n is.
+        ords = [b.erect_perpendicular(f"u{k}", m, base, marks[1] if k == 0 else marks[k - 1]) for k, m in enumerate(marks)]
     with b.group("tangential pressures carried to the unrolled circle", "Tangentialdrücke auf die Abwicklung getragen"):
         curve_pts = [U0]
         for k in range(1, n):

@@ -104,27 +104,29 @@ def _curve_crossings(args, params, givens):
 class ExcessArea(tuple):
     """The region between a drawn curve and a line, from one crossing to the other (hatched when drawn).
 
-    ``area`` is signed: positive where the curve lies on the left of the line's direction.
+    A tuple of its outline points: the first crossing, the curve's points, the
+    second crossing (the chord back along the line closes it).  ``area`` is
+    signed: positive where the curve lies on the left of first -> last.
     """
 
     __slots__ = ()
     kind = "area"
 
-    def __new__(cls, outline: Sequence[Point], area: float) -> "ExcessArea":
-        return tuple.__new__(cls, (tuple(outline), float(area)))
+    def __new__(cls, outline: Sequence[Point]) -> "ExcessArea":
+        pts = tuple(outline)
+        if len(pts) < 2 or not all(isinstance(p, Point) for p in pts):
+            raise GeometryError("an area needs an outline of at least two points")
+        return tuple.__new__(cls, pts)
 
     @property
     def area(self) -> float:
-        return self[1]
+        return polyline_area(self, self[0], self[-1])
 
     def area_points(self) -> tuple[Point, ...]:
-        return self[0]
-
-    def as_json(self) -> dict[str, Any]:
-        return {"type": "area", "area": self.area, "points": [[p[0], p[1]] for p in self[0]]}
+        return tuple(self)
 
     def __repr__(self) -> str:
-        return f"ExcessArea(area={self.area!r}, {len(self[0])} outline points)"
+        return f"ExcessArea(area={self.area!r}, {len(self)} outline points)"
 
 
 def _excess_area(args, params, givens):
@@ -138,7 +140,7 @@ def _excess_area(args, params, givens):
 
     inner = [p for p in pts if 0.0 < u(p) < u(p2)]
     outline = [p1, *inner, p2]
-    return (ExcessArea(outline, polyline_area(outline, p1, p2)),)
+    return (ExcessArea(outline),)
 
 
 PLANIMETER_OPS = {

@@ -41,7 +41,7 @@ from typing import Iterable, Mapping, Sequence
 from .errors import InvalidParameter
 
 __all__ = ["GAMMA", "G", "book_chain", "ARMS_HUB", "MOMENT", "TOTAL", "derived", "coefficient_rows", "BOOK_KZ", "BOOK_V",
-           "required_moment", "rim_speed", "total_weight", "WORKED", "worked_totals",
+           "required_moment", "moment_from_excess", "rim_speed", "total_weight", "WORKED", "worked_totals",
            "ARMS_HUB_PRINTED_ASSUMPTIONS"]
 
 GAMMA = 7200.0  #: kg/m³, cast iron (seed 004)
@@ -138,6 +138,18 @@ def required_moment(excess_work: float, rpm: float, irregularity: float, *, g: f
     for name, val in (("excess work", excess_work), ("rpm", rpm), ("irregularity", irregularity)):
         _positive(name, [val])
     return 3600.0 * g * excess_work / (math.pi ** 2 * rpm ** 2 * irregularity)
+
+
+def moment_from_excess(excess: float, *, piston_area: float, crank_radius: float, rpm: float,
+                       irregularity: float) -> float:
+    """G_s·D_s² from an excess area measured in at × r (the tangential diagram's units, r the crank radius).
+
+    The work is excess · F · r with F the piston area in cm² (1 at = 1 kg/cm²) and r in m.
+
+    >>> round(moment_from_excess(1.0, piston_area=1000.0, crank_radius=0.4, rpm=120.0, irregularity=1 / 50), 1)
+    4969.8
+    """
+    return required_moment(excess * piston_area * crank_radius, rpm, irregularity)
 
 
 def total_weight(gs: float, v: float, kz: float, *, exact: bool = False) -> float:

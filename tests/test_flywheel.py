@@ -113,3 +113,15 @@ def test_table_cli(capsys):
     assert float(row[2]) == pytest.approx(0.08075 * 576 / 120, abs=1e-14)
     assert main(["table", "flywheel-coefficients", "--v", "-3"]) == 2
     assert len(capsys.readouterr().err.strip().splitlines()) == 1
+
+
+def test_moment_from_the_excess_area_of_the_diagram():
+    from construct.constructions import get
+    from construct.constructions.tangential import excess_area
+
+    fig = get("tangential-pressure").figure()
+    ex = excess_area(fig)  # at × r
+    F, r, n, delta = 1590.0, 0.4, 120.0, 1 / 80   # a cylinder of 45 cm, stroke 0.8 m
+    expected = 3600 * mpmath.mpf("9.81") * ex * F * r / (mpmath.pi ** 2 * n ** 2 * delta)
+    assert fw.moment_from_excess(ex, piston_area=F, crank_radius=r, rpm=n, irregularity=delta) == pytest.approx(
+        float(expected), rel=1e-12)

@@ -203,7 +203,7 @@ def build_piston_force(*, parts: int, method: str, **values: Any) -> Figure:
     with b.group("piston forces from the steam diagram", "Kolbenkräfte aus dem Dampfdiagramm"):
         for tag, o in ords + corners:
             with b.group(f"piston force at {tag}", f"Kolbenkraft bei {tag}"):
-                pr = pressures_at(b, d, o, tag)
+                pr = pressures_at(b, d, o, tag, envelope=True)
                 foot = b.intersect(f"F{tag}", o, fbase, rule=("only",), de=f"Fußpunkt F{tag}", en=f"foot F{tag}",
                                    role="result" if tag.isdigit() else "construction")
                 _carry(b, f"K{tag}", foot, o, pr["back"], pr["steam"],

@@ -168,7 +168,7 @@ def _free_force_mark(b: Builder, f: Mapping[str, str], ctx: Any, d: Any, scale: 
     X = f"X{k}"
     with b.group(f"free piston force at {k}", f"freie Kolbenkraft bei {k}"):
         o = b.erect_perpendicular(f"o{k}", X, f["axis"], f["O"])
-        pts = pressures_at(b, d, o, str(k))
+        pts = pressures_at(b, d, o, str(k), envelope=True)
         E, R = pts["steam"], pts["back"]
         dc_p = ctx.D0 if 2 * k <= n else ctx.D1
         dc_2 = ctx.D0 if (4 * k < n or 4 * k > 3 * n) else ctx.D1

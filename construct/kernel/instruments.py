@@ -368,6 +368,26 @@ class Builder:
                     en or f"{name}: dividers {length} stepped off from {start} along {curve}", role=role)
         return name
 
+    def pick(self, name: str, a: str, b: str, *, rule: Rule | Sequence[Any], de: str | None = None,
+             en: str | None = None, role: str = "construction", labels: Mapping[str, str] | None = None) -> str:
+        """Of two constructed points, the one *rule* names: a curve that is the envelope of two, point by point.
+
+        The steam line of an indicator diagram is the lower of the admission
+        line and the expansion hyperbola: both are constructed on an ordinate,
+        the lower one is taken -- by a stored rule, so that a replay with other
+        givens takes the right one wherever the cut-off falls.
+
+        >>> from construct.kernel.rules import toward
+        >>> b = Builder("demo", givens={})
+        >>> _ = b.given_point("A", 1.0, 3.0); _ = b.given_point("B", 1.0, 2.0)
+        >>> b[b.pick("low", "A", "B", rule=toward(dy=-1.0))]
+        Point(1.0, 2.0)
+        """
+        self.record("intersect", "pick", (a, b), (name,), {"rule": rule},
+                    de or f"{name}: von {a} und {b} der nach der Regel", en or f"{name}: of {a} and {b} the one the rule names",
+                    role=role, labels=labels)
+        return name
+
     # -- drawn curves and areas ----------------------------------------------------
     def polyline(self, name: str, points: Sequence[str], *, closed: bool = False, de: str | None = None,
                  en: str | None = None, role: str = "result") -> str:

@@ -194,6 +194,12 @@ def _cross_curve(c1, c2, rule, refs, both):
     return (chosen,)
 
 
+def _pick(args, params, givens, refs, xp):
+    """Of two constructed points, the one the rule names (the lower of two curves' points, say)."""
+    chosen, _ = choose(tuple(args), params["rule"], refs, xp)
+    return (chosen,)
+
+
 def _step_off(args, params, givens, refs, xp):
     """Dividers: from a point, step a length off along a curve (no arc is drawn, a point is pricked)."""
     curve, start, length = args
@@ -234,6 +240,8 @@ OPS: dict[str, Op] = {op.name: op for op in (
     Op("length_of", _length_of, ("point", "point"), doc="compass set to a segment"),
     Op("intersect", _intersect, ("curve", "curve"), rule=True, doc="where two drawn curves cross"),
     Op("step_off", _step_off, ("curve", "point", "length"), rule=True, doc="dividers stepped along a curve"),
+    Op("pick", _pick, ("point", "point"), rule=True,
+       doc="of two constructed points, the one a rule names (an envelope of two curves, point by point)"),
     Op("trial_chord", trial_chord_op, ("circle", "point", "point"), vector=False,
        doc="dividers set by trial to 1/n of an arc"),
     Op("neusis_archimedes", neusis_archimedes_op, ("point", "point", "point", "circle"), vector=False,

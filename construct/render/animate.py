@@ -81,7 +81,8 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
             if marks_steps and style.earlier_opacity < 1.0 and k < n:
                 timing.append(f.set(attributeName="class", to="step old", begin=f"clock.begin+{fmt(k * dt)}s",
                                     dur=f"{fmt((n - k) * dt)}s"))
-            lg.add(d.step_group(k, timing + list(elems), id=f"{layer}-{k}"))
+            # no ids: a <set> animates its parent, the step group
+            lg.add(d.step_group(k, timing + list(elems)))
         dwg.add(lg)
     # Captions: each step's while it is drawn, the figure's title otherwise (and in still renderers).
     title_lines = d.title_lines(title or d.scene.title)[: d.n_caption]
@@ -91,7 +92,9 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
         dwg.add(tg)
     caps = f.g(id="step-captions")
     for k in range(1, n + 1):
-        cap = d.caption_group(d.frame_caption_lines(k), id=f"caption-{k}", visibility="hidden")
+        # the step's caption in German and English (the group path is in the player and the frames)
+        lines = [line for line in d.frame_caption_lines(k) if line[0] != "grp"]
+        cap = d.caption_group(lines, id=f"caption-{k}", visibility="hidden")
         if cap is not None:
             cap.add(f.set(attributeName="visibility", to="visible", begin=f"clock.begin+{fmt((k - 1) * dt)}s",
                           dur=f"{fmt(dt)}s"))

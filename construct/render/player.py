@@ -110,9 +110,17 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
             lg.add(d.step_group(k, elems))
         dwg.add(lg)
     svg = d.doc.markup(dwg)
-    steps = [{"de": scene.caption(s.index)[0], "en": scene.caption(s.index)[1], "tool": s.tool, "role": s.role,
-              "group": group_caption(scene, s.index), "zoom": _zoom_box(d, s.index)} for s in scene.steps]
-    data = {"n": n, "steps": steps, "dt": round(1000 * STEP_SECONDS)}
+    # Group captions and zoom boxes are shared by runs of steps: each is stored once, steps point to it.
+    groups: dict[str, int] = {}
+    zooms: dict[tuple, int] = {}
+    steps = []
+    for s in scene.steps:
+        de, en = scene.caption(s.index)
+        z = _zoom_box(d, s.index)
+        steps.append({"de": de, "en": en, "g": groups.setdefault(group_caption(scene, s.index), len(groups)),
+                      "z": -1 if z is None else zooms.setdefault(tuple(z), len(zooms))})
+    data = {"n": n, "steps": steps, "groups": list(groups), "zooms": [list(z) for z in zooms],
+            "dt": round(1000 * STEP_SECONDS)}
     title = title or scene.title
     giv = givens or {}
     givens_rows = "".join(f"<tr><th>{html.escape(str(k))}</th><td>{html.escape(_show(v))}</td></tr>"
@@ -246,10 +254,10 @@ li a.later{color:#bbb}
     slider.value = k;
     text("counter", "Schritt " + k + " / " + n);
     var st = k > 0 ? data.steps[k - 1] : null;
-    text("cap-group", st ? st.group : "");
+    text("cap-group", st ? data.groups[st.g] : "");
     text("cap-de", st ? "Schritt " + k + ": " + st.de : document.title);
     text("cap-en", st ? "Step " + k + ": " + st.en : "");
-    var box = st && zoom.checked && k < n ? st.zoom : null;
+    var box = st && zoom.checked && k < n && st.z >= 0 ? data.zooms[st.z] : null;
     if (box) {
       svg.setAttribute("viewBox", box.join(" "));
       svg.classList.add("zoomed");

@@ -443,9 +443,12 @@ def _extreme_points(m: Mark) -> list[tuple[float, float]]:
         cx, cy, r = g
         return [(cx - r, cy - r), (cx + r, cy + r)]
     if m.kind == "arc":
+        # its ends and the quarter points it passes: the exact box, in at most six points
         cx, cy, r, a0, sw = g
-        n = max(2, int(sw / 0.1) + 1)
-        return [(cx + r * math.cos(a0 + sw * i / (n - 1)), cy + r * math.sin(a0 + sw * i / (n - 1))) for i in range(n)]
+        quarter = math.pi / 2
+        angles = [a0, a0 + sw] + [q * quarter for q in range(math.ceil(min(a0, a0 + sw) / quarter),
+                                                              math.floor(max(a0, a0 + sw) / quarter) + 1)]
+        return [(cx + r * math.cos(a), cy + r * math.sin(a)) for a in angles]
     if m.kind in ("curve", "area"):
         return list(g)
     return []

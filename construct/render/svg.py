@@ -224,6 +224,8 @@ class Viewport:
 def wrap(text: str, width_px: float, size: float) -> list[str]:
     """Lines of *text* that fit *width_px* at font size *size* (an average glyph is ~0.56 em)."""
     chars = max(20, int(width_px / (0.56 * size)))
+    if len(text) <= chars and text == text.strip() and not any(c in text for c in "\t\n\r\x0b\x0c"):
+        return [text]  # one line as it stands: what textwrap would return, without its cost
     return textwrap.wrap(text, chars, break_long_words=True, break_on_hyphens=False) or [""]
 
 
@@ -292,9 +294,20 @@ class Drawing:
         width = st.width_px - 2 * st.margin_px
         most = 2
         for k in range(1, len(self.scene.steps) + 1):
-            de, en = step_caption(self.scene, k)
-            most = max(most, len(wrap(de, width, st.caption_size)) + len(wrap(en, width, st.caption_size)))
+            de, en = self._wrapped_caption(k)
+            most = max(most, len(de) + len(en))
         return most + (1 if st.show_group else 0)
+
+    def _wrapped_caption(self, k: int) -> tuple[list[str], list[str]]:
+        """Step k's caption lines (German, English) wrapped to the canvas: wrapped once per step."""
+        cache = self.__dict__.setdefault("_wrap_cache", {})
+        got = cache.get(k)
+        if got is None:
+            st = self.style
+            width = st.width_px - 2 * st.margin_px
+            de, en = step_caption(self.scene, k)
+            got = cache[k] = (wrap(de, width, st.caption_size), wrap(en, width, st.caption_size))
+        return got
 
     @property
     def drawing_height(self) -> float:
@@ -380,12 +393,24 @@ class Drawing:
         """Layer *name*'s (step, elements) for steps 1..k."""
         return self.groups[name][:bisect.bisect_right(self._steps[name], k)]
 
+    def plain_groups(self, name: str) -> list[Any]:
+        """Layer *name*'s step groups without marks (``class="step"``), made once: the layered figure
+        and the player carry the same ones."""
+        cache = self.__dict__.setdefault("_plain_groups", {})
+        if name not in cache:
+            cache[name] = [self.doc.frozen(self.step_group(k, elems)) for k, elems in self.groups[name]]
+        return cache[name]
+
     def layer(self, name: str, k: int, *, mark_steps: bool) -> Any:
         """``<g id="name">`` with the step groups of steps 1..k; ``cur``/``old`` on them when *mark_steps*."""
-        old = "old" if self.style.earlier_opacity < 1.0 else ""
         g = self.doc.factory.g(id=name)
+        if not mark_steps:
+            for group in self.plain_groups(name)[:bisect.bisect_right(self._steps[name], k)]:
+                g.add(group)
+            return g
+        old = "old" if self.style.earlier_opacity < 1.0 else ""
         for s, elems in self.step_runs(name, k):
-            g.add(self.step_group(s, elems, ("cur" if s == k else old) if mark_steps else ""))
+            g.add(self.step_group(s, elems, "cur" if s == k else old))
         return g
 
     def body(self, k: int, *, mark_steps: bool) -> list[Any]:
@@ -427,15 +452,11 @@ class Drawing:
         return g
 
     def frame_caption_lines(self, k: int) -> list[tuple[str, str]]:
-        st = self.style
-        width = st.width_px - 2 * st.margin_px
-        de, en = step_caption(self.scene, k)
+        de, en = self._wrapped_caption(k)
         lines: list[tuple[str, str]] = []
-        if st.show_group:
+        if self.style.show_group:
             lines.append(("grp", group_caption(self.scene, k)))
-        lines += [("de", t) for t in wrap(de, width, st.caption_size)]
-        lines += [("en", t) for t in wrap(en, width, st.caption_size)]
-        return lines
+        return lines + [("de", t) for t in de] + [("en", t) for t in en]
 
     def title_lines(self, caption: Sequence[str] | None = None) -> list[tuple[str, str]]:
         """The figure's caption lines (German first, then English), wrapped to the canvas."""

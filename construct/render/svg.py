@@ -31,12 +31,11 @@ import math
 import textwrap
 from dataclasses import dataclass, field
 from typing import Any, Mapping, Sequence
-from xml.sax.saxutils import escape as _escape
 
 from . import svgdoc
 from .scene import Mark, Scene, label_offset_direction
 
-__all__ = ["Style", "PLAIN", "render_svg", "fmt", "Viewport", "Drawing", "xml_text", "xml_attr",
+__all__ = ["Style", "PLAIN", "render_svg", "fmt", "Viewport", "Drawing",
            "step_caption", "wrap"]
 
 
@@ -48,24 +47,6 @@ def fmt(v: float, decimals: int = 2) -> str:
     """
     text = f"{v:.{decimals}f}".rstrip("0").rstrip(".")
     return "0" if text in ("-0", "") else text
-
-
-def xml_text(text: str) -> str:
-    """Text content, escaped for XML (and HTML).
-
-    >>> xml_text('<script>alert(1)</script> & "x"')
-    '&lt;script&gt;alert(1)&lt;/script&gt; &amp; "x"'
-    """
-    return _escape(text)
-
-
-def xml_attr(text: str) -> str:
-    """An attribute value (to go between double quotes), escaped.
-
-    >>> xml_attr('a "b" <c> & d')
-    'a &quot;b&quot; &lt;c&gt; &amp; d'
-    """
-    return _escape(text, {'"': "&quot;", "\n": "&#10;", "\t": "&#9;"})
 
 
 @dataclass(frozen=True)
@@ -475,8 +456,9 @@ class Drawing:
             return self
         key = tuple(round(v, 9) for v in box)
         if key not in self._regions:
-            self._regions[key] = Drawing(self.scene, self.style, caption_lines=self.n_caption, region=box,
-                                         canvas=self.vp)
+            region = Drawing(self.scene, self.style, caption_lines=self.n_caption, region=box, canvas=self.vp)
+            region.__dict__["_wrap_cache"] = self.__dict__.setdefault("_wrap_cache", {})  # captions wrap alike
+            self._regions[key] = region
         return self._regions[key]
 
     def frame(self, k: int) -> str:

@@ -31,8 +31,6 @@ from ..kernel.protocol import Protocol, Replay, Step
 __all__ = ["Mark", "Scene", "build_scene", "label_offset_direction"]
 
 TWO_PI = 2.0 * math.pi
-#: A word that may be a dotted helper name (``T4.G.M2``).
-_DOTTED_WORD = re.compile(r"\w+(?:\.\w+)+")
 
 
 @dataclass(frozen=True, slots=True)
@@ -76,37 +74,52 @@ class Scene:
         Composite steps name their helpers by path (``T4.G.M2``: mark M2 of
         the division G of trisection T4); in a caption beside the figure the
         last part is what the eye finds (the teaching style tags the current
-        step's points with it), the path is in the group title above.
-        Each dotted word of *text* is looked up in the set of the steps' dotted
-        names (its longest named prefix wins), so the cost grows with the
-        text, not with the number of names.
+        step's points with it), the path is in the group title above.  Names
+        may run together (a group "T7.C1T7.F" for the segment from T7.C1 to
+        T7.F); the leftmost, then longest name wins.  Only the words before
+        each dot of *text* are looked up (by the name's first part), so the
+        cost grows with the text, not with the number of names.
 
         >>> from construct.constructions import get
         >>> sc = build_scene(get("crank").figure(parts=9))
-        >>> name = next(n for s in sc.steps for n in s.outputs if n.count(".") == 1)
-        >>> sc.readable(f"um {name}.") == f"um {name.split('.')[1]}.", sc.readable("x.y z") == "x.y z"
+        >>> a, b = sorted(n for s in sc.steps for n in s.outputs if n.count(".") == 1)[:2]
+        >>> sc.readable(f"um {a}.") == f"um {a.split('.')[1]}.", sc.readable("x.y z") == "x.y z"
         (True, True)
+        >>> sc.readable(a + b) == a.split(".")[1] + b.split(".")[1]
+        True
         """
         if "." not in text:
             return text
-        names = self._dotted
-
-        def short(m: "re.Match[str]") -> str:
-            word = m.group(0)
-            head, rest = word, ""
-            while "." in head:
-                if head in names:
-                    return head.rsplit(".", 1)[1] + rest
-                head, tail = head.rsplit(".", 1)
-                rest = "." + tail + rest
-            return word
-
-        return _DOTTED_WORD.sub(short, text)
+        by_head = self._dotted
+        out: list[str] = []
+        i = 0
+        while True:
+            dot = text.find(".", i)
+            if dot < 0:
+                break
+            j = dot
+            while j > i and (text[j - 1].isalnum() or text[j - 1] == "_"):
+                j -= 1
+            hit = None
+            for start in range(j, dot):  # leftmost first, then longest
+                hit = next((name for name in by_head.get(text[start:dot], ()) if text.startswith(name, start)), None)
+                if hit:
+                    out += [text[i:start], hit.rsplit(".", 1)[1]]
+                    i = start + len(hit)
+                    break
+            if hit is None:
+                out.append(text[i:dot + 1])
+                i = dot + 1
+        out.append(text[i:])
+        return "".join(out)
 
     @functools.cached_property
-    def _dotted(self) -> frozenset[str]:
-        """Every dotted object name of the steps."""
-        return frozenset(n for s in self.steps for n in s.outputs if "." in n)
+    def _dotted(self) -> dict[str, tuple[str, ...]]:
+        """The steps' dotted object names by their first part, longest first."""
+        heads: dict[str, list[str]] = {}
+        for n in {n for s in self.steps for n in s.outputs if "." in n}:
+            heads.setdefault(n.split(".", 1)[0], []).append(n)
+        return {h: tuple(sorted(ns, key=lambda n: (-len(n), n))) for h, ns in heads.items()}
 
     @functools.cached_property
     def _captions(self) -> list[tuple[str, str] | None]:

@@ -38,8 +38,8 @@ MAX_STAGES = 1000
 
 #: Looks of the step groups, for players that switch classes on a whole step.
 STEP_GROUP_CSS = """g.hid{display:none}
-g.cur>*{stroke:%(hl)s;stroke-width:%(hw)s}
-g.cur>.pt,g.cur>.lb{fill:%(hl)s;stroke:none}
+g.cur>*,g.stage.cur>g>*{stroke:%(hl)s;stroke-width:%(hw)s}
+g.cur>.pt,g.cur>.lb,g.stage.cur>g>.pt,g.stage.cur>g>.lb{fill:%(hl)s;stroke:none}
 g.old{opacity:%(op)s}"""
 
 
@@ -101,22 +101,41 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
     clock = f.rect(insert=("0", "0"), size=("0", "0"), id="clock-face")
     clock.add(f.animate(id="clock", attributeName="x", from_="0", to="0", begin="0s;clock.end", dur=f"{fmt(total)}s"))
     dwg.add(clock)
+    def timing(i: int, kind: str) -> list[Any]:
+        """The <set>s that show stage i's group (of class *kind*) at its time, then mark it current and earlier."""
+        start = (i - 1) * dt
+        sets = []
+        if i > 1:
+            sets.append(f.set(attributeName="visibility", to="hidden", begin="clock.begin", dur=f"{fmt(start)}s"))
+        if marks_steps and style.highlight:
+            sets.append(f.set(attributeName="class", to=f"{kind} cur", begin=f"clock.begin+{fmt(start)}s",
+                              dur=f"{fmt(dt)}s"))
+        if marks_steps and style.earlier_opacity < 1.0 and i < n:
+            sets.append(f.set(attributeName="class", to=f"{kind} old", begin=f"clock.begin+{fmt(i * dt)}s",
+                              dur=f"{fmt((n - i) * dt)}s"))
+        return sets
+
+    by_step = n == len(d.scene.steps)
     for layer in d.LAYERS:
         lg = f.g(id=layer)
-        for k, elems in d.groups[layer]:
-            i = bisect.bisect_left(ends, k) + 1  # the stage that shows step k
-            start = (i - 1) * dt
-            timing = []
-            if i > 1:
-                timing.append(f.set(attributeName="visibility", to="hidden", begin="clock.begin", dur=f"{fmt(start)}s"))
-            if marks_steps and style.highlight:
-                timing.append(f.set(attributeName="class", to="step cur", begin=f"clock.begin+{fmt(start)}s",
-                                    dur=f"{fmt(dt)}s"))
-            if marks_steps and style.earlier_opacity < 1.0 and i < n:
-                timing.append(f.set(attributeName="class", to="step old", begin=f"clock.begin+{fmt(i * dt)}s",
-                                    dur=f"{fmt((n - i) * dt)}s"))
-            # no ids: a <set> animates its parent, the step group
-            lg.add(d.step_group(k, timing + list(elems)))
+        if by_step:
+            for k, elems in d.groups[layer]:
+                # no ids: a <set> animates its parent, the step group
+                lg.add(d.step_group(k, timing(k, "step") + list(elems)))
+        else:
+            # a stage of several steps: one group with the timing around its (unmarked) step groups
+            runs = d.groups[layer]
+            groups = d.plain_groups(layer)
+            j = 0
+            for i, last in enumerate(ends, start=1):
+                stage = f.g(class_="stage")
+                while j < len(runs) and runs[j][0] <= last:
+                    stage.add(groups[j])
+                    j += 1
+                if len(stage.elements):
+                    for e in timing(i, "stage"):
+                        stage.elements.insert(0, e)
+                    lg.add(stage)
         dwg.add(lg)
     # Captions: each stage's while it is drawn, the figure's title otherwise (and in still renderers).
     title_lines = d.title_lines(title or d.scene.title)[: d.n_caption]

@@ -14,9 +14,24 @@ HELP = ("benchmark building, replaying and sweeping the crank construction "
 def add_arguments(p) -> None:
     p.add_argument("--json", action="store_true", help="print the measurements as JSON")
     p.add_argument("--parts", type=int, action="append", help="cases to run (dividers) instead of the standard set")
+    p.add_argument("--outputs", action="store_true",
+                   help="time the outputs instead: replay at 360 and 1440 parts, gallery, verify (about a minute)")
 
 
 def run(args) -> int:
+    if args.outputs:
+        from ..regress.outputbench import output_verdicts, run_output_bench
+
+        found = run_output_bench()
+        if args.json:
+            print(json.dumps(found, indent=1))
+            return 0
+        for r in found:
+            size = f"  {r['bytes'] / 1e6:8.2f} MB" if "bytes" in r else ""
+            print(f"{r['command']:58s} {r['wall_s']:7.2f} s wall {r['cpu_s']:7.2f} s CPU{size}")
+        for line in output_verdicts(found):
+            print(line)
+        return 0
     cases = tuple((n, "dividers") for n in args.parts) if args.parts else CASES
     results = run_bench(cases)
     sweep = None if args.parts else sweep_bench()

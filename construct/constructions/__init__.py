@@ -82,7 +82,7 @@ class Construction:
 
 _VALIDATORS: dict[str, Callable[[Mapping[str, float]], None]] = {}
 _REGISTRY: dict[str, Construction] = {}
-_MODULES = ("crank", "inertia")
+_MODULES = ("crank", "inertia", "two_cranks")
 
 
 def register(c: Construction, validate: Callable[[Mapping[str, float]], None] | None = None) -> Construction:

@@ -12,7 +12,7 @@ from ..tables import TABLES
 from ._common import _number, _whole
 
 NAME = "table"
-HELP = "print a table (piston-path, crank-angle, acceleration, characteristic-points)"
+HELP = "print a table (piston-path, crank-angle, acceleration, characteristic-points, speed-fluctuation)"
 
 
 def add_arguments(p) -> None:
@@ -22,6 +22,7 @@ def add_arguments(p) -> None:
     p.add_argument("--method", default="auto")
     p.add_argument("--divisions", type=_whole, default=10, metavar="M")
     p.add_argument("--step", type=_number, default=10.0, metavar="DEG", help="angle step of the acceleration table")
+    p.add_argument("--infinite-rod", action="store_true", help="an infinitely long rod (speed-fluctuation)")
     p.add_argument("--format", choices=("text", "csv"), default="text")
 
 
@@ -46,6 +47,12 @@ def run(args) -> int:
         if not (math.isfinite(args.step) and 0 < args.step <= 180):
             raise InvalidParameter(f"--step must be between 0 and 180 degrees, got {args.step!r}")
         cols, rows = TABLES[args.table](rod_ratios=args.rod_ratio, step=args.step)
+    elif args.table == "speed-fluctuation":
+        if args.infinite_rod and args.rod_ratio:
+            raise InvalidParameter("give either --rod-ratio K or --infinite-rod, not both")
+        if not (math.isfinite(args.step) and 0 < args.step <= 90):
+            raise InvalidParameter(f"--step must be between 0 and 90 degrees, got {args.step!r}")
+        cols, rows = TABLES[args.table](rod_ratio=None if args.infinite_rod else _one_ratio(args), step=args.step)
     else:
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args))
     sys.stdout.write(format_table(cols, rows, args.format))

@@ -625,7 +625,8 @@ def two_cranks_checks(fig: Figure) -> list[Check]:
         slope = 2.0 * (1.0 + (0.0 if ratio is None else 1.0 / ratio)) + 4.0 / math.pi
         err_w = max(angle_tolerance(fig, p, made_by)[0] for p in made_by if p.startswith("P") and p[1:].isdigit()) \
             if n > 1 else EUCLIDEAN_TOLERANCE
-        tol = 4 * n * EUCLIDEAN_TOLERANCE + slope * max(err_w - EUCLIDEAN_TOLERANCE, 0.0)
+        # 4N compass transfers along the work line, each rounding at ~1e-16 of its 8r length.
+        tol = max(EUCLIDEAN_TOLERANCE, 4e-15 * n) + slope * max(err_w - EUCLIDEAN_TOLERANCE, 0.0)
         why = ("Euclidean chain: rod arcs / ordinates, compass steps on the work line" if tol < 1e-10 else
                f"division of the circle not Euclidean ({fig.params['method']}): its angle error times |de/dalpha|")
         for j in range(2 * n + 1):
@@ -679,7 +680,8 @@ def _extreme_checks(fig: Figure) -> list[Check]:
         Check("Kochanski: BK / r against pi", rho, math.pi, 1.001 * koch + EUCLIDEAN_TOLERANCE,
               f"Kochański's rectification falls short of pi r by {koch:.3e} r", "r"),
         Check("(4/pi) r constructed", float(rp["four"]) / r, 4.0 / math.pi,
-              1.001 * 4.0 * koch / math.pi ** 2 + EUCLIDEAN_TOLERANCE, "Kochański's error times d(4/pi)/dpi", "r"),
+              1.001 * abs(4.0 / KOCHANSKI_RHO - 4.0 / math.pi) + EUCLIDEAN_TOLERANCE,
+              "Kochański's error carried: 4/BK - 4/pi", "r"),
         Check("sin 2 alpha = (4/pi)^2 - 1 constructed", height, (4.0 / math.pi) ** 2 - 1.0,
               1.001 * abs(s2) + EUCLIDEAN_TOLERANCE, f"Kochański's error carried: {s2:.3e}", ""),
         Check("extreme angle alpha1 (constructed, deg)", math.degrees(a1), math.degrees(a1x),
@@ -714,7 +716,8 @@ def speed_fluctuation_rows(*, rod_ratio: float | None, step_deg: float = 15.0) -
         fig = TWO_CRANKS.figure(parts=n, infinite_rod=True)
     else:
         fig = TWO_CRANKS.figure(parts=n, rod_ratio=rod_ratio)
-    return [{"crank_angle_deg": 180.0 * j / n, "work_excess": work_excess(fig, j)} for j in range(2 * n + 1)]
+    return [{"crank_angle_deg": 180.0 * j / n, "work_excess": work_excess(fig, j, infinite=rod_ratio is None)}
+            for j in range(2 * n + 1)]
 
 
 TWO_CRANKS = register(Construction(

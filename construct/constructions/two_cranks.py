@@ -146,8 +146,8 @@ def quadrant_extremes(rod_ratio: float | None, samples: int = 2000) -> list[dict
     refinement of a dense sample.
 
     >>> q = quadrant_extremes(None)[0]
-    >>> round(math.degrees(q["alpha_min"]), 5), round(q["rise"] - q["fall"], 12)
-    (19.19968, 0.0)
+    >>> round(math.degrees(q["alpha_min"]), 5), abs(q["rise"] - q["fall"]) < 1e-12
+    (19.19968, True)
     """
     out = []
     for q in range(4):
@@ -705,8 +705,8 @@ def speed_fluctuation_rows(*, rod_ratio: float | None, step_deg: float = 15.0) -
     """e(α) in units of Q·r over 0…360°, read off the construction's work line.
 
     >>> rows = speed_fluctuation_rows(rod_ratio=None, step_deg=45.0)
-    >>> [(row["crank_angle_deg"], round(row["work_excess"], 12)) for row in rows]
-    [(0.0, 0.0), (45.0, 0.0), (90.0, 0.0), (135.0, 0.0), (180.0, 0.0), (225.0, 0.0), (270.0, 0.0), (315.0, 0.0), (360.0, 0.0)]
+    >>> [row["crank_angle_deg"] for row in rows if abs(row["work_excess"]) < 1e-12]   # v = v1 every 45 degrees
+    [0.0, 45.0, 90.0, 135.0, 180.0, 225.0, 270.0, 315.0, 360.0]
     """
     step = positive("angle step", step_deg)
     n = round(180.0 / step)

@@ -440,3 +440,21 @@ def errata() -> list[Erratum]:
         return index[table, row, column]
 
     return [_entry(v, lookup) for v in printed] + _formula_entries()
+
+
+#: Errata of further seeds, by seed number: modules with ``entries()`` (imported on use, they build on this one).
+FURTHER_SOURCES = {"002": "construct.errata_seed002"}
+
+
+def errata_of(seed: str = "all") -> list[Erratum]:
+    """The errata of one seed ("000", "002", ...) or of all of them, seed 000 first."""
+    import importlib
+
+    if seed not in ("all", "000", *FURTHER_SOURCES):
+        raise InvalidParameter(f"no errata for seed {seed!r}; known: 000, {', '.join(FURTHER_SOURCES)}")
+    out = errata() if seed in ("all", "000") else []
+    for key, module in FURTHER_SOURCES.items():
+        if seed in ("all", key):
+            out += importlib.import_module(module).entries()
+    return out
+

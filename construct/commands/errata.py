@@ -20,23 +20,25 @@ import argparse
 import json
 from collections import Counter
 
-from ..errata import CLASSES, Erratum, errata
+from ..errata import CLASSES, FURTHER_SOURCES, Erratum, errata_of
 
 NAME = "errata"
-HELP = "List every printed number of seed 000's tables with its true value and a verdict (agrees/slip/misprint)."
+HELP = "List every printed number of the seeds' tables with its true value and a verdict (agrees/slip/misprint)."
 
 _HEADINGS = ("table", "row", "column", "printed", "true", "units", "class", "note")
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--format", choices=("text", "json"), default="text", help="output format (default: text)")
+    parser.add_argument("--seed", choices=("all", "000", *FURTHER_SOURCES), default="all",
+                        help="the seed whose printed numbers to list (default: all)")
     parser.add_argument(
         "--class", dest="class_", choices=CLASSES, default=None, help="show only the entries of this class"
     )
 
 
 def run(args: argparse.Namespace) -> int:
-    entries = [e for e in errata() if args.class_ is None or e.class_ == args.class_]
+    entries = [e for e in errata_of(args.seed) if args.class_ is None or e.class_ == args.class_]
     if args.format == "json":
         print(json.dumps([_json_record(e) for e in entries], ensure_ascii=False, indent=1))
     else:

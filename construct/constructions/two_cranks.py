@@ -77,6 +77,7 @@ __all__ = [
     "kochanski_angle_error",
     "quadrant_extremes",
     "speed_fluctuation_rows",
+    "speeds",
     "max_magnification",
 ]
 
@@ -584,7 +585,10 @@ def crank_angle(fig: Figure, point: str, centre: str | None = None, d0: str | No
     return _angle_of(fig.replay[centre], fig.replay[d0], fig.replay[point])
 
 
-def _prefix(fig: Figure, infinite: bool) -> str:
+def _prefix(fig: Figure, infinite: bool | None) -> str:
+    """Object prefix of a diagram: None is the one about O (the figure's own rod), True the infinite rod."""
+    if infinite is None:
+        return ""
     if infinite and not fig.params["infinite_rod"]:
         return "i"
     if not infinite and fig.params["infinite_rod"]:
@@ -592,7 +596,7 @@ def _prefix(fig: Figure, infinite: bool) -> str:
     return ""
 
 
-def work_excess(fig: Figure, j: int, *, infinite: bool = False) -> float:
+def work_excess(fig: Figure, j: int, *, infinite: bool | None = None) -> float:
     """e at crank position j in units of Q·r, read off the work line: (M_j E_j − M_0 W_0) / r."""
     t = _prefix(fig, infinite)
     rp = fig.replay
@@ -600,11 +604,27 @@ def work_excess(fig: Figure, j: int, *, infinite: bool = False) -> float:
     return ((ej[0] - mj[0]) - (w0[0] - m0[0])) / fig.replay.givens["r"]
 
 
-def speed_radius(fig: Figure, j: int, *, infinite: bool = False) -> float:
+def speed_radius(fig: Figure, j: int, *, infinite: bool | None = None) -> float:
     """The drawn radius of speed point j over the crank radius: v/v1 by the book's law, deviation magnified G times."""
     t = _prefix(fig, infinite)
     centre = "O'" if t == "i" else "O"
     return fig.replay[centre].distance(fig.replay[f"{t}Z{j % (2 * fig.params['parts'])}"]) / fig.replay.givens["r"]
+
+
+def speeds(fig: Figure, *, infinite: bool | None = None) -> list[dict[str, float]]:
+    """v/v1 at each crank position from the constructed excess work, with the book's simplification and without.
+
+    ``v_book`` = 1 + k·e (§ 146, "für große Massen"), ``v_exact`` =
+    sqrt(1 + 2k·e) from (m1 + m2)(v² − v1²)/2 = Q·r·e, k = Qr/((m1 + m2)v1²).
+    """
+    k = fig.replay.givens["fluctuation"]
+    n = fig.params["parts"]
+    out = []
+    for j in range(2 * n + 1):
+        e = work_excess(fig, j, infinite=infinite)
+        out.append({"index": j, "crank_angle_deg": 180.0 * j / n, "work_excess": e, "v_book": 1.0 + k * e,
+                    "v_exact": math.sqrt(1.0 + 2.0 * k * e) if 1.0 + 2.0 * k * e >= 0.0 else math.nan})
+    return out
 
 
 # -- checks ----------------------------------------------------------------------------

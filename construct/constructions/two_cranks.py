@@ -79,6 +79,7 @@ __all__ = [
     "speed_fluctuation_rows",
     "speeds",
     "max_magnification",
+    "auto_magnification",
 ]
 
 # --------------------------------------------------------------------------
@@ -266,6 +267,23 @@ def _validate(givens: Mapping[str, float]) -> None:
         raise InvalidParameter(
             f"fluctuation x magnify = {g['fluctuation'] * g['magnify']:.6g} makes a speed radius r + g*e vanish "
             f"for L/r = {g['rod_ratio']:.6g} (e falls to {-1.0 / limit:.4g} Q r); keep it below {limit:.4g}")
+
+
+#: Magnifications a draftsman would pick for the speed deviations (largest first).
+NICE_MAGNIFICATIONS = (8.0, 5.0, 4.0, 2.0, 1.0, 0.5, 0.25, 0.1)
+
+
+def auto_magnification(rod_ratio: float, fluctuation: float) -> float:
+    """The largest of :data:`NICE_MAGNIFICATIONS` that keeps every speed radius above 0.4 r.
+
+    >>> auto_magnification(5.0, 0.25), auto_magnification(2.0, 0.25), auto_magnification(1.1, 0.25)
+    (8.0, 4.0, 1.0)
+    """
+    e_min = min(q["e_min"] for q in quadrant_extremes(rod_ratio, samples=400))
+    for m in NICE_MAGNIFICATIONS:
+        if fluctuation * m * max(-e_min, 0.0) <= 0.6:
+            return m
+    return NICE_MAGNIFICATIONS[-1] * 0.6 / (fluctuation * -e_min) / 1.01
 
 
 def _check_parts(parts: Any, method: str) -> str:
@@ -508,8 +526,10 @@ def _scale_bar(b: Builder, at: tuple[float, float]) -> None:
 
 def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method: str, r: float,
                      fluctuation: float, magnify: float) -> Figure:
-    givens = _givens(r, rod_ratio, fluctuation, magnify)
     infinite_rod = bool(infinite_rod)
+    if magnify is None:
+        magnify = auto_magnification(rod_ratio_param(rod_ratio), positive("fluctuation", fluctuation))
+    givens = _givens(r, rod_ratio, fluctuation, magnify)
     _validate(givens)
     used = _check_parts(parts, method)
     n = parts
@@ -524,13 +544,14 @@ def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method
         pts, pistons = _whole_circle(upper, lower, feet)
         parts_ = [_Part("", True, f["O"], f["D0"], f["D1"], f["circle"], pts, pistons)]
         inf = parts_[0]
+        b.set_label(f["O"], "O (l = ∞)")
     else:
         rod_arcs(b, f, upper)
         pts, pistons = _whole_circle(upper, lower, [f["D0"]] + [f"X{k}" for k in range(1, n)] + [f["D1"]])
         fin = _Part("", False, f["O"], f["D0"], f["D1"], f["circle"], pts, pistons)
         with b.group("second crank circle for the infinite rod", "zweiter Kurbelkreis für unendliche Stange"):
             O2 = b.given_point("O'", 3.2, 0.0, unit="r", de="Wellenmittelpunkt O' (unendliche Stange)",
-                               en="shaft centre O' (infinite rod)", label="O'")
+                               en="shaft centre O' (infinite rod)", label="O′ (l = ∞)")
             k2 = b.circle_radius("crank'", O2, f["r"], de="Kurbelkreis um O'", en="crank circle about O'", role="result")
             A2 = b.intersect("iD0", f["axis"], k2, rule=("toward", O2, None, -1.0, 0.0), labels={"iD0": "A'"})
             B2 = b.intersect("iD1", f["axis"], k2, rule=("toward", O2, None, 1.0, 0.0))
@@ -748,7 +769,7 @@ TWO_CRANKS = register(Construction(
     build=build_two_cranks,
     checks=two_cranks_checks,
     defaults={"rod_ratio": 5.0, "infinite_rod": False, "parts": 12, "method": "auto", "r": 1.0,
-              "fluctuation": 0.25, "magnify": 8.0},
+              "fluctuation": 0.25, "magnify": None},
     book_params=({"rod_ratio": 5.0, "parts": 12}, {"infinite_rod": True, "parts": 12}),
     structural=("parts", "method", "infinite_rod"),
 ), validate=_validate)

@@ -57,10 +57,9 @@ from ..kernel.division import check_parts, divide_semicircle
 from ..kernel.geometry import Point
 from ..kernel.instruments import Builder
 from ..kernel.proportional import ProportionalAngle, carry_across, fourth_proportional, scale_line
-from ..kernel.protocol import Caption, Provenance, register_op
+from ..kernel.protocol import Caption, Provenance
 from . import Construction, Figure, positive, register, rod_ratio_param
 from .crank import angle_tolerance, build_frame, rod_arcs
-from .inertia import BezierCurve
 
 __all__ = [
     "TWO_CRANKS",
@@ -186,45 +185,13 @@ def max_magnification(rod_ratio: float | None) -> float:
 
 
 # --------------------------------------------------------------------------
-# The closed French curve through the speed points.
+# The closed French curve through the speed points (op ``smooth_loop``, kernel/closed_curves.py).
 # --------------------------------------------------------------------------
-
-
-def _closed_curve(args, params, givens):
-    """A closed smooth curve through the points in order: periodic cubic Hermite, Bessel slopes.
-
-    The tangent at each point is that of the parabola through it and its two
-    neighbours (parametrised by chord length), as a draftsman lays a French
-    curve three points at a time round the whole figure.
-    """
-    pts = list(args)
-    n = len(pts)
-    if n < 3:
-        raise GeometryError(f"a closed curve needs at least 3 points, got {n}")
-    h = [math.hypot(pts[(i + 1) % n][0] - pts[i][0], pts[(i + 1) % n][1] - pts[i][1]) for i in range(n)]
-    if min(h) <= 1e-12 * max(h):
-        raise GeometryError("two consecutive points of the closed curve coincide")
-    d = [((pts[(i + 1) % n][0] - pts[i][0]) / h[i], (pts[(i + 1) % n][1] - pts[i][1]) / h[i]) for i in range(n)]
-    tangents = []
-    for i in range(n):
-        hp, hn = h[i - 1], h[i]
-        dp, dn = d[i - 1], d[i]
-        tangents.append(((hn * dp[0] + hp * dn[0]) / (hp + hn), (hn * dp[1] + hp * dn[1]) / (hp + hn)))
-    out = [pts[0]]
-    for i in range(n):
-        j = (i + 1) % n
-        third = h[i] / 3.0
-        out += [Point(pts[i][0] + tangents[i][0] * third, pts[i][1] + tangents[i][1] * third),
-                Point(pts[j][0] - tangents[j][0] * third, pts[j][1] - tangents[j][1] * third), pts[j]]
-    return (BezierCurve(out),)
-
-
-register_op("closed_french_curve", _closed_curve)
 
 
 def closed_curve(b: Builder, name: str, points: Sequence[str], *, de: str, en: str, role: str = "result") -> str:
     """Record the drawing of a closed smooth curve through *points* (in order round the figure)."""
-    b.record("curve", "closed_french_curve", tuple(points), (name,), {"points": len(points)}, de, en, role=role)
+    b.record("curve", "smooth_loop", tuple(points), (name,), {"points": len(points)}, de, en, role=role)
     return name
 
 
@@ -499,8 +466,11 @@ def _label_extremes(b: Builder, part: _Part) -> None:
             name = f"K.M{i}"
             a = _angle_of(b[part.C], b[part.D0], b[name])
             minutes = round(math.degrees(a) * 60.0)
-            b.set_label(name, f"M{_SUB[i]} {minutes // 60}°{minutes % 60}′")
-            b.line(f"K.ray{i}", part.C, name, de=f"Strahl nach M{i}", en=f"ray to M{i}", role="result")
+            ray = b.line(f"K.ray{i}", part.C, name, de=f"Strahl nach M{i}", en=f"ray to M{i}", role="result")
+            b.intersect(f"K.W{i}", f"{part.tag}wave", ray, rule=("nearer", name), role="result",
+                        de=f"M{i} auf der Wellenlinie: {'kleinste' if i == 1 else 'größte'} Geschwindigkeit",
+                        en=f"M{i} on the wave curve: the {'least' if i == 1 else 'greatest'} speed",
+                        labels={f"K.W{i}": f"M{_SUB[i]} {minutes // 60}°{minutes % 60}′"})
 
 
 def _angle_of(o: Point, d0: Point, p: Point) -> float:
@@ -731,11 +701,30 @@ def _extreme_checks(fig: Figure) -> list[Check]:
         Check("extreme angle alpha2 (constructed, deg)", math.degrees(a2), math.degrees(a2x),
               math.degrees(1.001 * err + EUCLIDEAN_TOLERANCE),
               f"Kochański's error carried into the angle: {math.degrees(err) * 3600:.1f}\" ({err:.2e} rad)", "deg"),
+        *_wave_checks(fig, centre),
         Check("alpha1 against the book's 19 deg 12'", math.degrees(a1), 19.2, 0.5 / 60.0,
               "printed to the minute: half a minute", "deg"),
         Check("alpha2 against the book's 70 deg 48'", math.degrees(a2), 70.8, 0.5 / 60.0,
               "printed to the minute: half a minute", "deg"),
     ]
+    return out
+
+
+def _wave_checks(fig: Figure, centre: str) -> list[Check]:
+    """v_min and v_max read off the drawn wave where the rays to the extremes cross it."""
+    rp = fig.replay
+    g = rp.givens
+    gain = g["magnify"] * g["fluctuation"]
+    n = fig.params["parts"]
+    amplitude = gain * -excess_exact(extreme_angles_exact()[0], None)
+    tol = amplitude * (6.0 / n) ** 3
+    out = []
+    for i, word in ((1, "v_min"), (2, "v_max")):
+        a = extreme_angles_exact()[i - 1]
+        out.append(Check(f"{word} / v1 read off the wave at M{i} (infinite rod, drawn radius)",
+                         rp[centre].distance(rp[f"K.W{i}"]) / g["r"], 1.0 + gain * excess_exact(a, None), tol,
+                         f"a French curve through points {180 / n:g} deg apart: within (6/N)^3 of the wave's "
+                         f"amplitude {amplitude:.4f} r (the radius is 1 + G k e, the book's law magnified)", "r"))
     return out
 
 

@@ -54,7 +54,7 @@ def frame_steps(scene: Scene, mode: str) -> list[int]:
     return ends
 
 
-def scene_for(construction: Construction, figure: Figure, *, plate: bool = False) -> Scene:
+def scene_for(construction: Construction | None, figure: Figure, *, plate: bool = False) -> Scene:
     return build_scene(figure, title=figure_title(construction, figure), plate=plate)
 
 
@@ -66,19 +66,25 @@ def params_text(figure: Figure) -> str:
     return ", ".join(givens + params)
 
 
-def figure_title(construction: Construction, figure: Figure) -> tuple[str, str]:
-    title = construction.title
+def figure_title(construction: Construction | None, figure: Figure) -> tuple[str, str]:
     p = params_text(figure)
+    if construction is None:  # a protocol of the user's own: its name is its title
+        name = figure.protocol.construction
+        return (f"{name}; {p}" if p else name, f"{name}; {p}" if p else name)
+    title = construction.title
     return (f"{title.de} ({construction.source}); {p}", f"{title.en}; {p}")
 
 
-def plate_caption(construction: Construction, figure: Figure, number: int | str | None = None) -> tuple[str, str]:
+def plate_caption(construction: Construction | None, figure: Figure, number: int | str | None = None) -> tuple[str, str]:
     """A book plate's caption: "Fig. 1. Kolbenwege aus dem Kurbelkreis." and the English with the parameters."""
     fig = f"Fig. {number}." if number is not None else "Fig."
+    if construction is None:
+        name = figure.protocol.construction
+        return (f"{fig} {name}.", f"{name} ({params_text(figure)})")
     return (f"{fig} {construction.title.de}.", f"{construction.title.en} ({params_text(figure)}; {construction.source})")
 
 
-def write_outputs(stage: Path, construction: Construction, figure: Figure, st: Style, *, frames: str = "auto",
+def write_outputs(stage: Path, construction: Construction | None, figure: Figure, st: Style, *, frames: str = "auto",
                   fig_number: int | str | None = None, protocol: bool = True) -> dict[str, Any]:
     """Write final.svg, steps/, protocol.json, animated.svg, player.html and storyboard.png into *stage*."""
     from .animate import animated_svg
@@ -110,7 +116,7 @@ def write_outputs(stage: Path, construction: Construction, figure: Figure, st: S
     return {"steps": len(scene.steps), "frames": len(ks)}
 
 
-def write_replay(construction: Construction, figure: Figure, out_dir: str | Path, *, style: str = "plain",
+def write_replay(construction: Construction | None, figure: Figure, out_dir: str | Path, *, style: str = "plain",
                  frames: str = "auto", styles: dict[str, Style] | None = None) -> dict[str, Any]:
     """Write everything a replay produces; return a summary (counts, paths)."""
     from . import styles as style_module

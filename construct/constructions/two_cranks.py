@@ -561,7 +561,7 @@ def _signed(b: Builder, a: str, c: str, origin: str) -> float:
 def _plate_patterns(infinite_rod: bool) -> list[str]:
     """Fig. 566: the crank circles, the crank positions, the speed points and the wave, the extremes."""
     pats = [r"O", r"O'", r"crank", r"crank'", r"D0", r"D1", r"iD0", r"iD1", r"i?wave", r"i?Z\d+", r"i?ray\d+",
-            r"K\.M[12]", r"K\.ray[12]", r"P\d+", r"iP\d+", r"i?Q\d+", r"sc\.[ABCg]"]
+            r"K\.W[12]", r"K\.ray[12]", r"P\d+", r"iP\d+", r"i?Q\d+", r"sc\.[ABCg]"]
     return pats
 
 

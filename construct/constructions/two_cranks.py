@@ -233,7 +233,8 @@ def _validate(givens: Mapping[str, float]) -> None:
     if g["fluctuation"] * g["magnify"] >= limit:
         raise InvalidParameter(
             f"fluctuation x magnify = {g['fluctuation'] * g['magnify']:.6g} makes a speed radius r + g*e vanish "
-            f"for L/r = {g['rod_ratio']:.6g} (e falls to {-1.0 / limit:.4g} Q r); keep it below {limit:.4g}")
+            f"for L/r = {g['rod_ratio']:.6g} (e falls to {-1.0 / limit:.4g} Q r); keep --magnify times --fluctuation "
+            f"below {limit:.4g}")
 
 
 #: Magnifications a draftsman would pick for the speed deviations (largest first).
@@ -429,23 +430,23 @@ def _kochanski(b: Builder, part: _Part, n: int) -> None:
                                     de=f"r zum {i}. Mal abgetragen", en=f"r stepped off, {i} of 3"))
         b.set_label("K.D", "K")
         b.line("K.BD", bottom, "K.D", de="BK ≈ π·r (Kochański)", en="BK approximately pi r (Kochanski)", role="result")
-        b.record("compass", "length_of", (bottom, "K.D"), ("rho",), {}, "Zirkel auf BK ≈ π·r",
+        b.record("compass", "length_of", (bottom, "K.D"), ("BK",), {}, "Zirkel auf BK ≈ π·r",
                  "compass set to BK, approximately pi r", provenance=koch)
-        b.length_of("stroke", D0, D1, de="Zirkel auf den Hub 2r", en="compass set to the stroke 2r")
+        b.length_of("2r", D0, D1, de="Zirkel auf den Hub 2r", en="compass set to the stroke 2r")
     with b.group("4/π and (4/π)² by fourth proportionals", "4/π und (4/π)² als vierte Proportionale"):
-        o1, p1 = fourth_proportional(b, "K.t4", vertex=bottom, leg_point="K.D", a="rho", b_="stroke", c="stroke")
-        b.length_of("four", o1, p1, de="(4/π)·r = 2r·2r/(π r)", en="(4/pi) r = 2r 2r / (pi r)")
-        o2, p2 = fourth_proportional(b, "K.u4", vertex=bottom, leg_point="K.D", a="r", b_="four", c="four")
-        b.length_of("four2", o2, p2, de="(4/π)²·r", en="(4/pi)^2 r")
+        o1, p1 = fourth_proportional(b, "K.t4", vertex=bottom, leg_point="K.D", a="BK", b_="2r", c="2r")
+        b.length_of("4r/π", o1, p1, de="(4/π)·r = 2r·2r/(π r)", en="(4/pi) r = 2r 2r / (pi r)")
+        o2, p2 = fourth_proportional(b, "K.u4", vertex=bottom, leg_point="K.D", a="r", b_="4r/π", c="4r/π")
+        b.length_of("16r/π²", o2, p2, de="(4/π)²·r", en="(4/pi)^2 r")
     with b.group("sin 2α = (4/π)² − 1 and the extreme angles", "sin 2α = (4/π)² − 1 und die ausgezeichneten Winkel"):
-        kh = b.circle_radius("K.kH", bottom, "four2", de="(4/π)²·r vom tiefsten Punkt", en="(4/pi)^2 r from the lowest point")
+        kh = b.circle_radius("K.kH", bottom, "16r/π²", de="(4/π)²·r vom tiefsten Punkt", en="(4/pi)^2 r from the lowest point")
         H = b.intersect("K.H", d, kh, rule=("toward", bottom, top), de="Höhe r·sin 2α über der Hubachse",
                         en="height r sin 2 alpha above the stroke line")
         hline = b.erect_perpendicular("K.h", H, d, bottom)
         b.intersect(("K.G1", "K.G2"), hline, circle, rule=("toward", C, D0), de="Punkte bei 2α₁ und 2α₂ = 180° − 2α₁",
                     en="points at 2 alpha1 and 2 alpha2 = 180 - 2 alpha1")
         err = kochanski_angle_error()
-        angle_prov = Provenance("approximate", "Kochański's rectification (1685), carried into the angle", err)
+        angle_prov = Provenance("approximate", "Kochański's rectification (1685)", err)  # its error in the angle
         for i, (G, word) in enumerate((("K.G1", "kleinste"), ("K.G2", "größte")), start=1):
             name = f"K.M{i}"
             with b.group(f"arc {D0}{G} bisected: alpha{i}", f"Bogen {D0}{G} halbiert: α{i}"):
@@ -680,7 +681,7 @@ def _extreme_checks(fig: Figure) -> list[Check]:
     r = rp.givens["r"]
     centre = "O'" if "O'" in rp else "O"
     koch = KOCHANSKI_ERROR
-    rho = float(rp["rho"]) / r
+    rho = float(rp["BK"]) / r
     a1x, a2x = extreme_angles_exact()
     err = kochanski_angle_error()
     s2 = (16.0 / KOCHANSKI_RHO ** 2 - 1.0) - ((4.0 / math.pi) ** 2 - 1.0)
@@ -690,7 +691,7 @@ def _extreme_checks(fig: Figure) -> list[Check]:
     out = [
         Check("Kochanski: BK / r against pi", rho, math.pi, 1.001 * koch + EUCLIDEAN_TOLERANCE,
               f"Kochański's rectification falls short of pi r by {koch:.3e} r", "r"),
-        Check("(4/pi) r constructed", float(rp["four"]) / r, 4.0 / math.pi,
+        Check("(4/pi) r constructed", float(rp["4r/π"]) / r, 4.0 / math.pi,
               1.001 * abs(4.0 / KOCHANSKI_RHO - 4.0 / math.pi) + EUCLIDEAN_TOLERANCE,
               "Kochański's error carried: 4/BK - 4/pi", "r"),
         Check("sin 2 alpha = (4/pi)^2 - 1 constructed", height, (4.0 / math.pi) ** 2 - 1.0,

@@ -191,3 +191,14 @@ def test_bad_input_is_one_line_and_exit_2(argv, capsys):
     assert main(argv) == 2
     err = capsys.readouterr().err
     assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
+
+
+def test_historical_plate_reads_like_fig_566():
+    fig = get("two-cranks").figure(rod_ratio=5.0, parts=8)
+    svg = fig.svg("historical")
+    assert svg == get("two-cranks").figure(rod_ratio=5.0, parts=8).svg("historical")  # byte-stable
+    for text in ("M₁ 19°12′", "M₂ 70°48′", "B₁", "B₂", "B₃", "B₄", "v₁", "O′ (l = ∞)"):
+        assert text in svg, text
+    assert "-wave" in svg and "-iwave" in svg        # both wave curves, side by side
+    assert "-K-t4" not in svg and "-V3" not in svg   # the plate leaves the construction out
+    assert "-K-W1" in svg and "-K-W2" in svg         # the extremes on the wave

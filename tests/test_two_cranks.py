@@ -202,3 +202,21 @@ def test_historical_plate_reads_like_fig_566():
     assert "-wave" in svg and "-iwave" in svg        # both wave curves, side by side
     assert "-K-t4" not in svg and "-V3" not in svg   # the plate leaves the construction out
     assert "-K-W1" in svg and "-K-W2" in svg         # the extremes on the wave
+
+
+def test_speed_without_either_simplification(finite):
+    """v_full against the kinetic energy of shaft and both crossheads, piston speeds by mpmath.diff."""
+    k, mu = finite.replay.givens["fluctuation"], 0.2
+    rows = speeds(finite, crosshead_share=mu)
+    with mpmath.workdps(30):
+        def share(a):  # (c1/v)^2 + (c2/v)^2 with c = dx/dalpha (r = 1, v = r omega)
+            d1 = mpmath.diff(lambda w: position_mp(w, 5.0), a)
+            d2 = mpmath.diff(lambda w: position_mp(w, 5.0), a + mpmath.pi / 2)
+            return d1 ** 2 + d2 ** 2
+        for row in rows[::3]:
+            a = mpmath.pi * row["index"] / 12
+            e = excess_mp(row["index"], 12, 5.0)
+            want = mpmath.sqrt(((1 - mu) + mu * share(0) + 2 * k * e) / ((1 - mu) + mu * share(a)))
+            assert row["v_full"] == pytest.approx(float(want), abs=1e-11), row["index"]
+    plain = speeds(finite)
+    assert all(r["v_full"] == pytest.approx(r["v_exact"], abs=1e-15) for r in plain)

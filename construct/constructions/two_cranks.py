@@ -77,6 +77,7 @@ __all__ = [
     "quadrant_extremes",
     "speed_fluctuation_rows",
     "speeds",
+    "piston_speed_factor",
     "max_magnification",
     "auto_magnification",
 ]
@@ -603,19 +604,49 @@ def speed_radius(fig: Figure, j: int, *, infinite: bool | None = None) -> float:
     return fig.replay[centre].distance(fig.replay[f"{t}Z{j % (2 * fig.params['parts'])}"]) / fig.replay.givens["r"]
 
 
-def speeds(fig: Figure, *, infinite: bool | None = None) -> list[dict[str, float]]:
-    """v/v1 at each crank position from the constructed excess work, with the book's simplification and without.
+def piston_speed_factor(w: float, rod_ratio: float | None) -> float:
+    """c/v: the piston's speed over the crank-pin speed at crank angle *w* (exact law; None: infinite rod).
 
-    ``v_book`` = 1 + k·e (§ 146, "für große Massen"), ``v_exact`` =
-    sqrt(1 + 2k·e) from (m1 + m2)(v² − v1²)/2 = Q·r·e, k = Qr/((m1 + m2)v1²).
+    >>> round(piston_speed_factor(math.pi / 2, 5.0), 12), round(piston_speed_factor(math.pi / 4, 4.0), 6)
+    (1.0, 0.834107)
+    """
+    s, c = math.sin(w), math.cos(w)
+    if rod_ratio is None:
+        return s
+    return s + s * c / math.sqrt(rod_ratio * rod_ratio - s * s)
+
+
+def speeds(fig: Figure, *, infinite: bool | None = None, crosshead_share: float = 0.0) -> list[dict[str, float]]:
+    """v/v1 at each crank position from the constructed excess work, with the book's simplifications and without.
+
+    * ``v_book``  = 1 + k·e: § 146's "für große Massen" (linear in e);
+    * ``v_exact`` = sqrt(1 + 2k·e): (m1 + m2)(v² − v1²)/2 = Q·r·e, the book's energy balance;
+    * ``v_full``  drops the book's other simplification too (§ 146: "Bei der Kleinheit von m2 gegen m1
+      und von r gegen l ..."): each crosshead (mass m2) moves at c = v·c/v(α), so
+      v²(m1 + m2·S(α)) = v1²(m1 + m2·S(0)) + 2Q·r·e with S = (c1/v)² + (c2/v)², exact piston law.
+      *crosshead_share* is m2/(m1 + m2); with 0, or for the infinite rod (S = 1), v_full = v_exact.
+
+    k = Qr/((m1 + m2)v1²) is the figure's ``fluctuation``.
     """
     k = fig.replay.givens["fluctuation"]
+    mu = float(crosshead_share)
+    if not 0.0 <= mu < 1.0:
+        raise InvalidParameter(f"crosshead share m2/(m1 + m2) must be in [0, 1), got {crosshead_share!r}")
     n = fig.params["parts"]
+    t = _prefix(fig, infinite)
+    ratio = None if (t == "i" or fig.params["infinite_rod"]) else fig.replay.givens["rod_ratio"]
+
+    def S(a: float) -> float:
+        return piston_speed_factor(a, ratio) ** 2 + piston_speed_factor(a + 0.5 * math.pi, ratio) ** 2
+
     out = []
     for j in range(2 * n + 1):
         e = work_excess(fig, j, infinite=infinite)
+        a = math.pi * j / n
+        full = ((1.0 - mu) + mu * S(0.0) + 2.0 * k * e) / ((1.0 - mu) + mu * S(a))
         out.append({"index": j, "crank_angle_deg": 180.0 * j / n, "work_excess": e, "v_book": 1.0 + k * e,
-                    "v_exact": math.sqrt(1.0 + 2.0 * k * e) if 1.0 + 2.0 * k * e >= 0.0 else math.nan})
+                    "v_exact": math.sqrt(1.0 + 2.0 * k * e) if 1.0 + 2.0 * k * e >= 0.0 else math.nan,
+                    "v_full": math.sqrt(full) if full >= 0.0 else math.nan})
     return out
 
 

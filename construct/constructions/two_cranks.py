@@ -548,7 +548,7 @@ def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method
     _scale_bar(b, (-1.2 if infinite_rod else 2.0, -1.55 if infinite_rod else 1.55))
     for part in built:
         for j in range(2 * n + 1):
-            if _signed(b, part.means[j], part.ends[j], part.W0) <= 0.0:
+            if _ahead(b, part.means[j], part.ends[j]) <= 0.0:
                 raise InvalidParameter(f"speed radius at crank position {j} would not be positive; "
                                        f"lower --magnify or the fluctuation")
     b.params["plate"] = _plate_patterns(infinite_rod)
@@ -556,12 +556,16 @@ def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method
     return Figure(proto, proto.replay(givens))
 
 
-def _signed(b: Builder, a: str, c: str, origin: str) -> float:
+def _ahead(b: Builder, a: str, c: str) -> float:
+    """How far c lies ahead of a along the work line (drawn from left to right), read off the figure."""
     return b[c][0] - b[a][0]
 
 
 def _plate_patterns(infinite_rod: bool) -> list[str]:
-    """Fig. 566: the crank circles, the crank positions, the speed points and the wave, the extremes."""
+    """Fig. 566: the crank circles, the crank positions, the speed points and the wave, the extremes.
+
+    (The same patterns serve both layouts: names of the second circle simply do not occur without it.)
+    """
     pats = [r"O", r"O'", r"crank", r"crank'", r"D0", r"D1", r"iD0", r"iD1", r"i?wave", r"i?Z\d+", r"i?ray\d+",
             r"K\.W[12]", r"K\.ray[12]", r"P\d+", r"iP\d+", r"i?Q\d+", r"sc\.[ABCg]"]
     return pats

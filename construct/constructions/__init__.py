@@ -58,7 +58,8 @@ class Construction:
             if key in self.structural and protocol.params.get(key) != value:
                 raise InvalidParameter(
                     f"{key} = {value!r} changes the steps of the protocol ({key} = {protocol.params.get(key)!r}); "
-                    f"build it afresh with 'construct replay {self.name} --{key.replace('_', '-')} {value}'")
+                    f"build it afresh with 'construct replay {self.name} --{key.replace('_', '-')}"
+                    f"{'' if value is True else ' ' + str(value)}'")
             if key in values:
                 values[key] = positive(key, value)
         _validate_givens(self.name, values)
@@ -67,7 +68,7 @@ class Construction:
 
 _VALIDATORS: dict[str, Callable[[Mapping[str, float]], None]] = {}
 _REGISTRY: dict[str, Construction] = {}
-_MODULES = ("crank", "inertia", "indicator", "piston_force", "tangential")
+_MODULES = ("crank", "inertia", "indicator", "piston_force", "tangential", "two_cranks")
 
 
 def register(c: Construction, validate: Callable[[Mapping[str, float]], None] | None = None) -> Construction:

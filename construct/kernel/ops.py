@@ -27,6 +27,7 @@ from dataclasses import dataclass
 from typing import Any, Callable
 
 from .areas import Area, area_between_op, planimeter_height_op, planimeter_op
+from .closed_curves import closed_french_curve_op
 from .curves import BezierCurve, Polyline, crossings, french_curve_op, parabola_envelope_op, polyline_op
 from .errors import GeometryError, NoIntersection
 from .geometry import (SCALAR, Circle, Length, Line, Point, Sweep, _circle, _pt, circle_circle, line_circle,
@@ -251,6 +252,7 @@ OPS: dict[str, Op] = {op.name: op for op in (
     Op("parabola_envelope", parabola_envelope_op, ("point", "point", "point"), vector=False,
        doc="the parabola enveloped by the joins of equal divisions of ED and DF"),
     Op("polyline", polyline_op, ("point", "point", "point*"), vector=False, doc="points joined by the straightedge"),
+    Op("smooth_loop", closed_french_curve_op, ("point", "point", "point*"), vector=False, doc="a closed French curve through points in order"),
     Op("area_between", area_between_op, ("graph", "graph", "point", "point"), vector=False,
        doc="the region between two graphs between two abscissae"),
     Op("planimeter", planimeter_op, ("area",), vector=False, doc="a planimeter's reading of an area"),

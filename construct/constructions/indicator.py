@@ -171,7 +171,9 @@ def square(b: Builder, name: str, point: str, line: str, opening: str) -> str:
     """
     with b.group(f"perpendicular to {line} at {point}", f"Senkrechte zu {line} in {point}"):
         k = b.circle_radius(f"{name}.o", point, opening, de=f"Kreis um {point}", en=f"circle about {point}")
-        a, z = b.intersect((f"{name}.a", f"{name}.z"), line, k, rule=("nearer", point))
+        # Both crossings are equally near the centre: "nearer" could not decide, and float noise would pick a
+        # side (a replay jumped).  A fixed slant direction orders them on a horizontal and a vertical line alike.
+        a, z = b.intersect((f"{name}.a", f"{name}.z"), line, k, rule=("toward", None, None, 1.0, 1.0))
         return b.perpendicular_bisector(name, a, z)
 
 

@@ -489,6 +489,7 @@ PISTON_FORCE = register(Construction(
     defaults={"parts": 18, "method": "auto", **TAFEL_I, **HP_DIAGRAM, "scale": 2.5, "force_unit": 1.2e-4},
     book_params=({}, {"weight": 990.0}),  # Tafel I: high-pressure and low-pressure side
     structural=("parts", "method", "filling", "compression"),
+    sweep=lambda g, ratios: {**g, "rod_length": ratios * g["crank_radius"]},  # L = (L/R) R
     extra={"help": {
         "weight": "weight G of the reciprocating parts in kg (Tafel I: 830 high-pressure, 990 low-pressure side)",
         "rpm": "revolutions per minute n (Tafel I: 50)",

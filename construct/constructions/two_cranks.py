@@ -51,6 +51,8 @@ import math
 from dataclasses import dataclass
 from typing import Any, Mapping, Sequence
 
+import numpy as np
+
 from ..checks import EUCLIDEAN_TOLERANCE, Check
 from ..errors import GeometryError, InvalidParameter
 from ..kernel.division import check_parts, divide_semicircle
@@ -797,4 +799,7 @@ TWO_CRANKS = register(Construction(
               "fluctuation": 0.25, "magnify": None},
     book_params=({"rod_ratio": 5.0, "parts": 12}, {"infinite_rod": True, "parts": 12}),
     structural=("parts", "method", "infinite_rod"),
+    # A draftsman picks the magnification of the speed deviations for the rod he draws: so does a sweep.
+    sweep=lambda g, ratios: {**g, "rod_ratio": ratios,
+                             "magnify": np.array([auto_magnification(k, g["fluctuation"]) for k in ratios])},
 ), validate=_validate)

@@ -63,7 +63,7 @@ from .crank import angle_tolerance, crank_angle, point_name, rod_arcs
 from .indicator import back_pressure as model_back
 from .indicator import indicator_frame, indicator_givens, pressures_at, square
 from .indicator import steam_pressure as model_steam
-from .inertia import _Ctx, _kind, _ordinate_line, _value
+from .inertia.build import _Ctx, _kind, _ordinate_line, _value
 
 __all__ = ["PISTON_FORCE", "TAFEL_I", "HP_DIAGRAM", "GRAVITY", "piston_area_mean", "build_piston_force",
            "piston_force_checks", "mass_force", "piston_force", "abscissa", "mass_force_rows", "area_balance",

@@ -59,7 +59,7 @@ from .crank import angle_tolerance, build_frame, crank_angle, point_name, rod_ar
 from .indicator import BAUMANN, indicator_frame, indicator_givens, pressures_at
 from .indicator import back_pressure as model_back_pressure
 from .indicator import steam_pressure as model_steam_pressure
-from .inertia import _kind, _setup, _value
+from .inertia.build import _kind, _setup, _value
 
 __all__ = ["TANGENTIAL", "build_tangential", "tangential_checks", "ok_over_r", "t_over_unit", "free_force",
            "model_t", "drawn_model", "unrolled_angle", "mean_height", "excess_area", "crossing_angles", "model_summary",

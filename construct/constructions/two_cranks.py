@@ -54,7 +54,7 @@ from typing import Any, Mapping, Sequence
 import numpy as np
 
 from ..checks import EUCLIDEAN_TOLERANCE, Check
-from ..errors import GeometryError, InvalidParameter
+from ..errors import InvalidParameter
 from ..kernel.division import check_parts, divide_semicircle
 from ..kernel.geometry import Point
 from ..kernel.instruments import Builder

@@ -25,12 +25,14 @@ import contextlib
 import math
 from dataclasses import replace
 from types import MappingProxyType
-from typing import Any, Iterator, Mapping, Sequence
+from typing import TYPE_CHECKING, Any, Iterator, Mapping, Sequence
 
 from .errors import DuplicateName, InvalidParameter, RuleError, StepError, UnknownObject, WrongInput
-from .ops import OPS
 from .protocol import EXACT, GIVEN, Caption, Protocol, Provenance, Replay, Step, compile_step, run_step
 from .rules import Rule, as_rule
+
+if TYPE_CHECKING:  # the figure module imports this one
+    from .figure import Figure
 
 __all__ = ["Builder"]
 

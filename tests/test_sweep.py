@@ -52,8 +52,9 @@ def test_sweep_equals_scalar_replays_at_sampled_points(name):
     stroke = _stroke(fig)
     for i in (0, 1, 137, 500, 998, 999):
         single = fig.protocol.replay({k: take(v, i) for k, v in c.rod_ratio_sweep(dict(fig.replay.givens), RATIOS).items()})
+        set_i = sweep.take(i)
         for obj_name, value in single.items():
-            swept = sweep.take(i)[obj_name]
+            swept = set_i[obj_name]
             for a, b in zip(_coords(value), _coords(swept)):
                 assert abs(a - b) <= 1e-12 * stroke, (obj_name, i, a, b)
 

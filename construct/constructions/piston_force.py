@@ -59,7 +59,7 @@ from ..kernel.instruments import Builder
 from ..kernel.proportional import fourth_proportional, scale_line, vertex_on
 from ..kernel.protocol import Caption
 from . import Construction, Figure, positive, register
-from .crank import angle_tolerance, crank_angle, point_name, rod_arcs
+from .crank import angle_tolerance, build_frame, crank_angle, point_name, rod_arcs
 from .indicator import back_pressure as model_back
 from .indicator import indicator_frame, indicator_givens, pressures_at, square
 from .indicator import steam_pressure as model_steam
@@ -131,21 +131,8 @@ PLATE = (r"fbase", r"F\d+", r"K\d+|Ks[12]", r"M\d+", r"ord\d+", r"force[abc]", r
 
 
 def _frame(b: Builder) -> dict[str, str]:
-    """As :func:`construct.constructions.crank.build_frame`, with r and L from metres and the drawing scale."""
-    with b.group("crank circle and dead centres", "Kurbelkreis und Totpunkte"):
-        O = b.given_point("O", 0.0, 0.0, de="Kurbelmittelpunkt O", en="crank centre O")
-        axis = b.given_line("axis", O, angle_deg=0.0, de="Kolbenweglinie (Nulllinie des Dampfdiagramms)",
-                            en="piston-path line (zero line of the steam diagram)")
-        r = b.given_length("r", product=("crank_radius", "scale"), de="Kurbelhalbmesser R", en="crank radius R")
-        L = b.given_length("L", product=("rod_length", "scale"), de="Schubstangenlänge L", en="connecting-rod length L")
-        k = b.circle_radius("crank", O, r, de="Kurbelkreis (Halbkreis über dem Hub)", en="crank circle over the stroke")
-        D0 = b.intersect("D0", axis, k, rule=("toward", O, None, -1.0, 0.0), role="result",
-                         de="Totpunkt auf der Deckelseite (Hubanfang)", en="head-end dead centre (start of stroke)",
-                         labels={"D0": "A"})
-        D1 = b.intersect("D1", axis, k, rule=("toward", O, None, 1.0, 0.0), role="result",
-                         de="Totpunkt auf der Kurbelseite (Hubende)", en="crank-end dead centre (end of stroke)",
-                         labels={"D1": "B"})
-    return {"O": O, "axis": axis, "r": r, "L": L, "circle": k, "D0": D0, "D1": D1}
+    """The crank frame with r and L from metres and the drawing scale."""
+    return build_frame(b, radius=("crank_radius", "scale"), rod=("rod_length", "scale"))
 
 
 def _mass_setup(b: Builder, f: Mapping[str, str]) -> _Ctx:

@@ -60,6 +60,9 @@ PROVENANCE_KINDS = ("given", "exact", "approximate", "neusis", "trial")
 TOOLS = ("given", "straightedge", "compass", "dividers", "intersect", "neusis", "curve", "planimeter")
 
 PROTOCOL_FORMAT = "construct-protocol/1"
+#: The protocol file: format 1 less the defaults of each step, the group paths in a table ("groups")
+#: that each step names by number.  Both load.
+PROTOCOL_FILE_FORMAT = "construct-protocol/2"
 
 
 @dataclass(frozen=True, slots=True)
@@ -143,6 +146,23 @@ class Step:
             d["labels"] = {name: text for name, text in self.labels}
         return d
 
+    def compact_dict(self, group_ids: Mapping[tuple[str, ...], int]) -> dict[str, Any]:
+        """As :meth:`as_dict` for the protocol file: defaults left out, the group path as its number."""
+        d = self.as_dict()
+        if not d["params"]:
+            del d["params"]
+        if self.provenance == EXACT:
+            del d["provenance"]
+        else:
+            d["provenance"] = {k: v for k, v in d["provenance"].items() if v is not None}
+        if self.role == "construction":
+            del d["role"]
+        if self.group:
+            d["group"] = group_ids[self.group]
+        else:
+            del d["group"]
+        return d
+
     def __reduce__(self):
         return (Step.from_dict, (self.as_dict(),))
 
@@ -166,6 +186,16 @@ class Step:
             )
         except (KeyError, TypeError, ValueError, AttributeError) as exc:
             raise ProtocolFormatError(f"malformed step {d.get('index', '?') if isinstance(d, Mapping) else d!r}: {exc!r}") from None
+
+
+def _resolve_group(step: Mapping[str, Any], table: list) -> Mapping[str, Any]:
+    """A step of a format-2 file names its group path by number in the file's table."""
+    g = step.get("group")
+    if isinstance(g, int) and not isinstance(g, bool):
+        if not 0 <= g < len(table):
+            raise ProtocolFormatError(f"step {step.get('index', '?')} names group {g}; the file has {len(table)}")
+        return {**step, "group": table[g]}
+    return step
 
 
 def _frozen(value: Any) -> Any:
@@ -457,23 +487,40 @@ class Protocol:
         >>> from construct.kernel.instruments import Builder
         >>> b = Builder("demo", givens={})
         >>> _ = b.given_point("A", 0.0, 0.0)
+        >>> with b.group("the point"):
+        ...     _ = b.given_point("B", 1.0, 0.0)
         >>> print(b.protocol().to_json())  # doctest: +ELLIPSIS
-        {"format": "construct-protocol/1", "construction": "demo", ...
+        {"format": "construct-protocol/2", "construction": "demo", ...
+         "groups": [
+          ["the point"]
+         ],
          "steps": [
-          {"index": 1, "tool": "given", "op": "given_point", ...}
+          {"index": 1, "tool": "given", "op": "given_point", ...},
+          {"index": 2, ..., "group": 0, ...}
          ],
          "objects": {
-          "A": {"type": "point", "x": 0.0, "y": 0.0}
+          "A": {"type": "point", "x": 0.0, "y": 0.0},
+          "B": {"type": "point", "x": 1.0, "y": 0.0}
          }}
         <BLANKLINE>
         """
         d = self.as_dict(replay)
-        steps, objects = d.pop("steps"), d.pop("objects")
+        objects = d.pop("objects")
+        del d["steps"]
+        group_ids: dict[tuple[str, ...], int] = {}
+        for st in self.steps:
+            if st.group and st.group not in group_ids:
+                group_ids[st.group] = len(group_ids)
+        d["format"] = PROTOCOL_FILE_FORMAT
+        d["groups"] = [list(g) for g in group_ids]
+        steps = [st.compact_dict(group_ids) for st in self.steps]
 
         def line(v: Any) -> str:
             return json.dumps(v, ensure_ascii=False, separators=(", ", ": "))
 
+        groups = d.pop("groups")
         head = line(d)[:-1]
+        head += ',\n "groups": [' + "".join(f"\n  {line(g)}," for g in groups).rstrip(",") + "\n ]"
         body = ",\n".join(f"  {line(s)}" for s in steps)
         objs = ",\n".join(f"  {line(k)}: {line(v)}" for k, v in objects.items())
         return f'{head},\n "steps": [\n{body}\n ],\n "objects": {{\n{objs}\n }}}}\n'
@@ -489,7 +536,10 @@ class Protocol:
             raise ProtocolFormatError("protocol 'steps' must be a list of objects")
         if not isinstance(d["params"], Mapping):
             raise ProtocolFormatError("protocol 'params' must be an object")
-        steps = tuple(Step.from_dict(s) for s in d["steps"])
+        table = d.get("groups") or []
+        if not isinstance(table, list) or not all(isinstance(g, list) for g in table):
+            raise ProtocolFormatError("protocol 'groups' must be a list of group paths")
+        steps = tuple(Step.from_dict(_resolve_group(s, table)) for s in d["steps"])
         for k, s in enumerate(steps, start=1):
             if s.index != k:
                 raise ProtocolFormatError(f"step {k} carries index {s.index}")

@@ -42,7 +42,7 @@ DEFAULT_TOLERANCE = 1e-9
 # Instruments in the order a report lists them; unknown tools follow alphabetically.
 TOOL_ORDER = ("compass", "straightedge", "dividers", "neusis", "intersect", "given")
 _STEP_FIELDS = ("tool", "op", "inputs", "outputs", "params", "caption", "provenance", "group")
-_KNOWN_TOP = {"construction", "params", "steps", "objects", "instruments"}  # instruments: derived, recounted
+_KNOWN_TOP = {"construction", "params", "steps", "objects", "instruments", "groups"}  # derived: recounted, resolved
 
 
 def _fmt(x: float) -> str:
@@ -151,7 +151,10 @@ def load_protocol(source: str | Path | bytes | Mapping[str, Any]) -> _Protocol:
         raise ProtocolFormatError(f"{label}: 'steps' must be a list")
     if not isinstance(data.get("params", {}), dict):
         raise ProtocolFormatError(f"{label}: 'params' must be an object")
-    steps = tuple(_check_step(s, k, label) for k, s in enumerate(data["steps"], 1))
+    groups = data.get("groups", [])
+    if not isinstance(groups, list) or not all(isinstance(g, list) for g in groups):
+        raise ProtocolFormatError(f"{label}: 'groups' must be a list of group paths")
+    steps = tuple(_check_step(s, k, label, groups) for k, s in enumerate(data["steps"], 1))
     objects = data.get("objects", {})
     if not isinstance(objects, dict) or not all(
             isinstance(o, dict) and isinstance(o.get("type"), str) for o in objects.values()):
@@ -159,9 +162,14 @@ def load_protocol(source: str | Path | bytes | Mapping[str, Any]) -> _Protocol:
     return _Protocol(label, data, steps, objects)
 
 
-def _check_step(s: Any, k: int, label: str) -> dict[str, Any]:
+def _check_step(s: Any, k: int, label: str, groups: list | None = None) -> dict[str, Any]:
     if not isinstance(s, dict):
         raise ProtocolFormatError(f"{label}: step {k} is not an object")
+    g = s.get("group")
+    if isinstance(g, int) and not isinstance(g, bool):  # format 2: the group path by its number in the table
+        if not 0 <= g < len(groups or []):
+            raise ProtocolFormatError(f"{label}: step {k}: group {g} is not in the file's table")
+        s = {**s, "group": groups[g]}
     for name in ("tool", "op"):
         if not isinstance(s.get(name), str):
             raise ProtocolFormatError(f"{label}: step {k}: {name!r} must be a string, got {s.get(name)!r}")
@@ -177,8 +185,11 @@ def _check_step(s: Any, k: int, label: str) -> dict[str, Any]:
             raise ProtocolFormatError(f"{label}: step {k}: {name!r} must be an object")
     if not isinstance(s.get("provenance", {}), (dict, type(None))):
         raise ProtocolFormatError(f"{label}: step {k}: 'provenance' must be an object")
-    return {"index": index, "inputs": [], "outputs": [], "params": {}, "caption": {}, "provenance": None,
-            "group": [], **s}
+    # Format 2 leaves the defaults out: the same step reads the same in both formats.
+    prov = s.get("provenance") or {"kind": "exact"}
+    prov = {"kind": prov.get("kind"), "method": prov.get("method"), "error": prov.get("error")}
+    return {"index": index, "inputs": [], "outputs": [], "params": {}, "caption": {}, "group": [],
+            "role": "construction", **s, "provenance": prov}
 
 
 # --------------------------------------------------------------------------- the diff

@@ -93,7 +93,8 @@ def rod_arcs(b: Builder, f: Mapping[str, str], points: list[str]) -> None:
                                         en=f"arc about C{k} through point {k} back onto the stroke")
                 # At the dead centres the piston position is the dead centre itself: no second letter.
                 b.intersect(f"X{k}", back, f["axis"], rule=("toward", f["O"], None, 1.0, 0.0), role="result",
-                            de=f"Kolbenstellung X{k}: Kolbenweg A–X{k}", en=f"piston position X{k}: piston path A–X{k}",
+                            de=f"Kolbenstellung X{k}: Kolbenweg {f['D0']}–X{k}",
+                            en=f"piston position X{k}: piston path {f['D0']}–X{k}",
                             labels={f"X{k}": f"{k}'"} if 0 < k < n else None)
 
 
@@ -224,7 +225,8 @@ def build_crank_angle(*, rod_ratio: float, divisions: int, r: float) -> Figure:
                 back = b.circle_radius(f"rod{j}", C, f["L"], de=f"Bogen um C{j} mit L auf den Kurbelkreis",
                                        en=f"arc about C{j} with L onto the crank circle")
                 b.intersect(f"W{j}", back, f["circle"], rule=("left", f["D0"], f["D1"]), role="result",
-                            de=f"Kurbelstellung W{j}: Winkel ω{j} = ∠AOW{j}", en=f"crank position W{j}: angle w{j} = AOW{j}",
+                            de=f"Kurbelstellung {j}: Kurbelwinkel ω{j} = ∠AO{j}",
+                            en=f"crank position {j}: crank angle ω{j} = ∠AO{j}",
                             labels={f"W{j}": f"{j}"})
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))

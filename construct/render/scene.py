@@ -27,6 +27,7 @@ from typing import Any, Iterable
 
 from ..kernel.geometry import Circle, Length, Line, Point
 from ..kernel.protocol import Protocol, Replay, Step
+from .captions import Reader
 
 __all__ = ["Mark", "Scene", "build_scene", "label_offset_direction"]
 
@@ -68,26 +69,31 @@ class Scene:
         """The marks made by steps 1..k."""
         return [m for m in self.marks if m.step <= k]
 
-    def readable(self, text: str) -> str:
-        """*text* with the construction's internal names shortened to what a reader sees.
+    def readable(self, text: str, lang: str = "de", outputs: tuple[str, ...] = ()) -> str:
+        """*text* in the figure's letters (:class:`construct.render.captions.Reader`).
 
         Composite steps name their helpers by path (``T4.G.M2``: mark M2 of
         the division G of trisection T4); in a caption beside the figure the
         last part is what the eye finds (the teaching style tags the current
-        step's points with it), the path is in the group title above.
+        step's points with it), the path is in the group title above.  A
+        lettered object goes by its letter (P12 -> 12).
         """
-        return self._dotted.sub(lambda m: m.group(0).rsplit(".", 1)[1], text)
+        return self._reader.text(text, lang, outputs)
 
     @functools.cached_property
-    def _dotted(self) -> "re.Pattern[str]":
-        """Every dotted object name of the steps, longest first (so T4.C1 wins over T4.C)."""
-        names = sorted({n for s in self.steps for n in s.outputs if "." in n}, key=len, reverse=True)
-        return re.compile("|".join(re.escape(n) for n in names) or r"(?!x)x")
+    def _reader(self) -> Reader:
+        kinds = {"segment": "line", "arc": "circle"}
+        makers = {n: s for s in self.steps for n in s.outputs}
+        objects = {}
+        for m in self.marks:
+            s = makers[m.name]
+            objects[m.name] = (kinds.get(m.kind, m.kind), m.label, s.op, tuple(s.inputs))
+        return Reader(objects)
 
     def caption(self, k: int) -> tuple[str, str]:
-        """Step k's caption (German, English) in readable names."""
-        c = self.steps[k - 1].caption
-        return self.readable(c.de), self.readable(c.en)
+        """Step k's caption (German, English) in the figure's letters."""
+        s = self.steps[k - 1]
+        return self.readable(s.caption.de, "de", s.outputs), self.readable(s.caption.en, "en", s.outputs)
 
     def stage_box(self, k: int) -> tuple[float, float, float, float]:
         """The region of step k's top-level group (all its steps), with a margin.

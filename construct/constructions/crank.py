@@ -191,6 +191,49 @@ def crank_checks(fig: Figure) -> list[Check]:
     return checks
 
 
+# -- the plates' furniture (plain data; construct.render.plate draws it) -----------------------
+
+
+def _unit(a, b) -> tuple[float, float]:
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    n = math.hypot(dx, dy)
+    return dx / n, dy / n
+
+
+def frame_furniture(fig: Figure, crank_point: str | None = None, crosshead: str | None = None) -> list[dict]:
+    """Stroke s and crank radius r as dimensions; the crank and the rod (broken off) in one position.
+
+    Every length is read off the figure: r = O-B, the rod from the crank point
+    towards its crosshead, L/r as the figure measures it.
+    """
+    R = fig.replay
+    O, D0, D1 = R["O"], R["D0"], R["D1"]
+    r = O.distance(D1)
+    out: list[dict] = [{"kind": "dimension", "a": tuple(D0), "b": tuple(D1), "text": "s = 2r", "offset": -0.2 * r}]
+    if crank_point is not None:
+        P = R[crank_point]
+        out += [{"kind": "stroke", "a": tuple(O), "b": tuple(P), "look": "heavy"},
+                {"kind": "dimension", "a": tuple(O), "b": tuple(P), "text": "r", "offset": -0.08 * r}]
+        if crosshead is not None:
+            C = R[crosshead]
+            ux, uy = _unit(P, C)
+            end = (P[0] + 0.9 * r * ux, P[1] + 0.9 * r * uy)
+            ratio = P.distance(C) / r
+            out += [{"kind": "stroke", "a": tuple(P), "b": end, "look": "heavy", "broken": True},
+                     {"kind": "lettering", "at": (P[0] + 0.5 * r * ux - 0.1 * r * uy, P[1] + 0.5 * r * uy + 0.1 * r * ux),
+                      "text": f"L = {ratio:.3g} r", "angle": math.degrees(math.atan2(-uy, -ux))}]
+    return out
+
+
+def crank_plate(fig: Figure) -> dict:
+    """Fig. 1: centre line dash-dotted, rod arcs and ordinates thin, s and r dimensioned, crank at 40°."""
+    n = fig.params["parts"]
+    j = max(1, round(2 * n / 9))
+    looks = {"axis": "centre", **{f"back{k}": "thin" for k in range(n + 1)},
+             **{f"ord{k}": "thin" for k in range(1, n)}}
+    return {"looks": looks, "furniture": frame_furniture(fig, point_name(fig, j), f"C{j}")}
+
+
 CRANK = register(Construction(
     name="crank",
     title=Caption("Kolbenwege aus dem Kurbelkreis", "Piston paths from the crank circle"),
@@ -200,6 +243,7 @@ CRANK = register(Construction(
     defaults={"rod_ratio": 5.0, "parts": 18, "method": "auto", "r": 1.0},
     book_params=({"rod_ratio": 5.0, "parts": 18}, {"rod_ratio": 5.0, "parts": 9}),
     structural=("parts", "method"),
+    extra={"plate": crank_plate},
 ), validate=_validate)
 
 
@@ -261,6 +305,30 @@ def crank_angle_checks(fig: Figure) -> list[Check]:
     return checks
 
 
+def crank_angle_plate(fig: Figure) -> dict:
+    """Fig. 77 with what Tabelle 2 tabulates: the radius to each found crank position, its angle arc and value.
+
+    The value is the angle AOW measured on the constructed figure, in degrees and minutes.
+    """
+    R = fig.replay
+    m = fig.params["divisions"]
+    O, D0 = R["O"], R["D0"]
+    r = O.distance(R["D1"])
+    out = frame_furniture(fig)
+    for j in range(1, m):
+        W = R[f"W{j}"]
+        w = crank_angle(fig, f"W{j}")
+        ux, uy = _unit(O, W)
+        minutes = round(math.degrees(w) * 60.0)
+        text = f"{minutes // 60}°{minutes % 60:02d}′"
+        out += [{"kind": "stroke", "a": tuple(O), "b": tuple(W), "look": "thin"},
+                {"kind": "angle", "centre": tuple(O), "start": tuple(D0), "end": tuple(W),
+                 "radius": (0.16 + 0.6 * j / m) * r * 0.75,
+                 "text": text, "text_at": (O[0] + 1.22 * r * ux, O[1] + 1.22 * r * uy)}]
+    looks = {"axis": "centre", **{f"rod{j}": "thin" for j in range(m + 1)}}
+    return {"looks": looks, "furniture": out}
+
+
 CRANK_ANGLE = register(Construction(
     name="crank-angle",
     title=Caption("Kurbelwinkel aus den Zehnteln des Hubes", "Crank angles from tenths of the stroke"),
@@ -270,4 +338,5 @@ CRANK_ANGLE = register(Construction(
     defaults={"rod_ratio": 5.0, "divisions": 10, "r": 1.0},
     book_params=({"rod_ratio": 4.0}, {"rod_ratio": 5.0}, {"rod_ratio": 6.0}),
     structural=("divisions",),
+    extra={"plate": crank_angle_plate},
 ), validate=_validate)

@@ -19,6 +19,7 @@ True
 from __future__ import annotations
 
 import bisect
+import dataclasses
 import functools
 import math
 import re
@@ -53,6 +54,8 @@ class Mark:
     provenance: str
     label: str | None = None
     group: tuple[str, ...] = ()
+    #: A line weight or pattern from the plate's description (heavy, thin, dashdot, dashed), "" = by role.
+    look: str = ""
 
 
 @dataclass(frozen=True)
@@ -64,6 +67,10 @@ class Scene:
     steps: tuple[Step, ...]
     title: tuple[str, str]
     params: dict
+    #: Broken axis: (x where the break starts, its drawn width, the length it leaves out), drawing units.
+    breaks: tuple[tuple[float, float, float], ...] = ()
+    #: Plate furniture (:mod:`construct.render.plate`): dimensions, angle arcs, scale bars, signs.
+    furniture: tuple = ()
 
     def upto(self, k: int) -> list[Mark]:
         """The marks made by steps 1..k."""
@@ -95,6 +102,67 @@ class Scene:
         s = self.steps[k - 1]
         return self.readable(s.caption.de, "de", s.outputs), self.readable(s.caption.en, "en", s.outputs)
 
+    # -- what a teaching frame shows at strength ----------------------------------------
+    def state(self, m: Mark, k: int) -> str:
+        """How mark *m* looks in frame *k*: "cur", "old", "done" (faded) or "" (not yet drawn).
+
+        A group the student has finished collapses to its result: once the
+        group at depth two around a step is complete (one trisection, the rod
+        arcs of one point), its helpers fade ("done"); the results, and the
+        curves that locate them (the rod arc back onto the stroke), stay at the
+        strength of the earlier steps ("old").  k = len(steps) + 1 is the
+        final figure: every group finished.
+        """
+        if m.step == k:
+            return "cur"
+        if m.step > k:
+            return ""
+        return "done" if self.fades(m, k) else "old"
+
+    def fades(self, m: Mark, k: int) -> bool:
+        """Is mark *m* faded in frame *k* (its group finished and it is not a result or what locates one)?"""
+        return m.step < k and self._ends[m.step - 1] < k and not (m.role == "result" or m.name in self._locating)
+
+    @functools.cached_property
+    def _ends(self) -> list[int]:
+        """For each step, the last step of its group at depth two (or its top-level group)."""
+        ends = [0] * len(self.steps)
+        i, n = 0, len(self.steps)
+        while i < n:
+            key = self.steps[i].group[:2]
+            j = i
+            while j + 1 < n and self.steps[j + 1].group[:2] == key:
+                j += 1
+            for t in range(i, j + 1):
+                # ungrouped steps (the givens) never fade
+                ends[t] = j + 1 if key else n + 1
+            i = j + 1
+        return ends
+
+    @functools.cached_property
+    def _locating(self) -> frozenset[str]:
+        """Results and the curves their steps intersect: what a finished group collapses to."""
+        out = set()
+        for s in self.steps:
+            if s.role == "result":
+                out.update(s.outputs)
+                out.update(s.inputs)
+        return frozenset(out)
+
+    def inputs(self, k: int) -> frozenset[str]:
+        """The objects step k's instrument is set on (centre, through point, the curves it cuts)."""
+        if not 1 <= k <= len(self.steps):
+            return frozenset()
+        return frozenset(n for n in self.steps[k - 1].inputs if n in self._drawn)
+
+    @functools.cached_property
+    def _drawn(self) -> dict[str, Mark]:
+        return {m.name: m for m in self.marks}
+
+    def display_name(self, name: str) -> str:
+        """The letter or tag the reader sees for an object (the same one the captions use)."""
+        return self._reader.point(name) if name in self._reader.points else name.rsplit(".", 1)[-1]
+
     def stage_box(self, k: int) -> tuple[float, float, float, float]:
         """The region of step k's top-level group (all its steps), with a margin.
 
@@ -107,6 +175,16 @@ class Scene:
         box = self._stage_cache.get(span)
         if box is None:
             box = self._stage_cache[span] = self._box_of_steps(*span)
+        # the instrument's inputs are in view even when they lie outside the stage (a far centre)
+        pts = [self._drawn[n].geom for n in self.inputs(k) if self._drawn[n].kind == "point"]
+        if pts and not all(box[0] <= x <= box[2] and box[1] <= y <= box[3] for x, y in pts):
+            x0 = min([box[0]] + [p[0] for p in pts])
+            y0 = min([box[1]] + [p[1] for p in pts])
+            x1 = max([box[2]] + [p[0] for p in pts])
+            y1 = max([box[3]] + [p[1] for p in pts])
+            pad = 0.04 * max(x1 - x0, y1 - y0)
+            b = self.bbox
+            box = (max(b[0], x0 - pad), max(b[1], y0 - pad), min(b[2], x1 + pad), min(b[3], y1 + pad))
         return box
 
     @functools.cached_property
@@ -221,7 +299,8 @@ def _on_curve_points(steps: Iterable[Step], objects: Replay,
     return on
 
 
-def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: bool = False) -> Scene:
+def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: bool = False,
+                break_axis: bool = True, furniture: tuple = (), looks: "dict[str, str] | None" = None) -> Scene:
     """The marks of a built or replayed figure (anything with ``.protocol`` and ``.replay``).
 
     With *plate* the scene is what a book plate shows (:func:`plate_names`):
@@ -261,7 +340,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
             mid = f"s{s.index:04d}-{_safe_id(name)}"
             label = labels.get(name)
             common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
-                          group=s.group, label=label)
+                          group=s.group, label=label, look=(looks or {}).get(name, ""))
             if isinstance(obj, Point):
                 marks.append(Mark(mid, kind="point", geom=(obj[0], obj[1]), **common))
             elif isinstance(obj, Line):
@@ -273,8 +352,20 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 marks.append(Mark(mid, kind="area", geom=tuple((p[0], p[1]) for p in obj.area_points()), **common))
             elif hasattr(obj, "curve_points"):
                 marks.append(Mark(mid, kind="curve", geom=tuple((p[0], p[1]) for p in obj.curve_points()), **common))
-    # Grow the box by what the curves reach (full circles, arcs, line ends) and the margin.
+    breaks: tuple[tuple[float, float, float], ...] = ()
+    if break_axis and shown is None:
+        marks, breaks = _break(marks)
+        if breaks:
+            xs = [x for m in marks if m.kind == "point" for x in (m.geom[0],)] or xs
+            ys = [y for m in marks if m.kind == "point" for y in (m.geom[1],)] or ys
+    # Grow the box by what the curves reach (full circles, arcs, line ends), the plate's furniture and the margin.
     bx0, by0, bx1, by1 = min(xs), min(ys), max(xs), max(ys)
+    if furniture:
+        from .plate import extent
+
+        fx = extent(furniture)
+        if fx:
+            bx0, by0, bx1, by1 = min(bx0, fx[0]), min(by0, fx[1]), max(bx1, fx[2]), max(by1, fx[3])
     for m in marks:
         for x, y in _extreme_points(m):
             bx0, by0, bx1, by1 = min(bx0, x), min(by0, y), max(bx1, x), max(by1, y)
@@ -282,7 +373,64 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
     bbox = (bx0 - pad, by0 - pad, bx1 + pad, by1 + pad)
     if title is None:
         title = (protocol.construction, protocol.construction)
-    return Scene(tuple(marks), bbox, protocol.steps, title, dict(protocol.params))
+    return Scene(tuple(marks), bbox, protocol.steps, title, dict(protocol.params), breaks, tuple(furniture))
+
+
+#: A gap wider than this fraction of the figure, with nothing drawn in it, is broken out of the axis.
+BREAK_FRACTION = 0.3
+#: Width the broken-out stretch keeps, as a fraction of what remains of the figure.
+BREAK_KEEP = 0.07
+
+
+def _break(marks: list[Mark]) -> tuple[list[Mark], tuple[tuple[float, float, float], ...]]:
+    """Break the widest empty stretch out of the figure, as a draftsman breaks a long axis.
+
+    The crossheads lie a rod length (5 r) to the left of the crank circle;
+    drawn to scale, the circle sits in a corner of an empty sheet.  Marks
+    wholly left of the empty stretch move right by what it loses; lines
+    that cross it (the stroke line) keep their right end and move their
+    left one.  Returns the marks and ((x of the break, its drawn width, the
+    length left out),) or () when there is no such gap.
+    """
+    ivals = []
+    for m in marks:
+        if m.kind == "segment":
+            continue  # the stroke line spans everything
+        xs = [p[0] for p in _extreme_points(m)]
+        if xs:
+            ivals.append((min(xs), max(xs)))
+    if len(ivals) < 2:
+        return marks, ()
+    ivals.sort()
+    total = ivals[-1][1] - ivals[0][0]
+    best, reach = None, ivals[0][1]
+    for a, b in ivals[1:]:
+        if a > reach and (best is None or a - reach > best[1] - best[0]):
+            best = (reach, a)
+        reach = max(reach, b)
+    if best is None or best[1] - best[0] <= BREAK_FRACTION * total:
+        return marks, ()
+    lo, hi = best
+    keep = BREAK_KEEP * (total - (hi - lo))
+    shift = (hi - lo) - keep
+
+    def sx(x: float) -> float:
+        return x + shift if x <= lo else x
+
+    out = []
+    for m in marks:
+        g = m.geom
+        if m.kind == "point":
+            g = (sx(g[0]), g[1])
+        elif m.kind == "segment":
+            g = (sx(g[0]), g[1], sx(g[2]), g[3])
+        elif m.kind in ("circle", "arc"):
+            if max(p[0] for p in _extreme_points(m)) <= lo:
+                g = (g[0] + shift,) + tuple(g[1:])
+        elif m.kind in ("curve", "area"):
+            g = tuple((sx(x), y) for x, y in g)
+        out.append(m if g is m.geom else dataclasses.replace(m, geom=g))
+    return out, ((lo, keep, hi - lo),)
 
 
 def plate_names(protocol: Protocol, objects: Replay) -> set[str]:

@@ -1,0 +1,326 @@
+"""Plate furniture: what a book plate carries besides the construction.
+
+A plate in the books is more than its construction lines: the stroke is
+dimensioned with arrowheads (s, r, L), the centre line is dash-dotted, the
+result curve is drawn heavy and the helper lines thin, the angles of a crank
+position carry their arcs and values, a diagram has its scale and the signs
+of its zones.  A construction describes this as data, a :class:`Plate`: the
+look of named objects and a tuple of furniture items in drawing
+coordinates (y up, the figure's own units), so that any construction, the
+force diagrams included, can letter its plate the same way.  Constructions do
+not import the renderer: they describe their plate in plain data, a dict
+that :meth:`Plate.from_data` reads::
+
+    def my_plate(fig):
+        return {"looks": {"axis": "centre", "curve": "heavy"},
+                "furniture": [{"kind": "dimension", "a": (-1, 0), "b": (1, 0), "text": "s", "offset": -0.3}]}
+
+    Construction(..., extra={"plate": my_plate})
+
+Kinds: dimension (a, b, text, offset), angle (centre, start, end, radius,
+text, text_at), stroke (a, b, look, broken), lettering (at, text, anchor,
+angle, size), scale (origin, end, text), sign (at, text).
+
+Every value written on a plate is read off the constructed figure (the
+construction's own points), never from the formula the checks compare with.
+:func:`furniture_svg` draws the items in a style; all lettering gets a
+paper-coloured halo, so that no line strikes through a letter.
+
+>>> d = Dimension((0.0, 0.0), (2.0, 0.0), "s", offset=-0.3)
+>>> ext = extent((d,))
+>>> ext[1] < -0.29 and ext[2] == 2.0
+True
+>>> dms(math.radians(61.3225))
+'61°19′'
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any, Callable, Mapping, Sequence
+
+__all__ = ["Plate", "Dimension", "AngleArc", "Stroke", "Lettering", "ScaleBar", "Sign", "dms", "extent",
+           "furniture_svg", "LOOKS_CSS", "plate_of"]
+
+XY = tuple[float, float]
+
+#: Line looks a plate may give its objects (CSS classes on the marks).
+LOOKS_CSS = (
+    ".heavy{stroke-width:2.2px}",
+    ".medium{stroke-width:1px}",
+    ".thin{stroke-width:0.45px}",
+    ".dashdot{stroke-dasharray:14 3 2 3;stroke-width:0.7px}",
+    ".centre{stroke-dasharray:18 3 2 3;stroke-width:0.5px}",
+    ".dashed{stroke-dasharray:6 4}",
+)
+
+
+@dataclass(frozen=True)
+class Dimension:
+    """A dimension line from *a* to *b* with arrowheads, set off by *offset* (drawing units, + = left of a->b)."""
+
+    a: XY
+    b: XY
+    text: str
+    offset: float = 0.0
+
+
+@dataclass(frozen=True)
+class AngleArc:
+    """The arc of the angle at *centre* from the ray through *start* to the ray through *end*, radius *radius*.
+
+    *text* is written at *text_at* (drawing units), or beside the arc's middle if None.
+    """
+
+    centre: XY
+    start: XY
+    end: XY
+    radius: float
+    text: str = ""
+    text_at: XY | None = None
+
+
+@dataclass(frozen=True)
+class Stroke:
+    """A line drawn for the plate only (the crank in one position, a radius): *look* as in :data:`LOOKS_CSS`.
+
+    *broken*: the far end is drawn as a break (the part is longer than the sheet).
+    """
+
+    a: XY
+    b: XY
+    look: str = "thin"
+    broken: bool = False
+
+
+@dataclass(frozen=True)
+class Lettering:
+    """Text at *at*; *anchor* start, middle or end; *angle* in degrees (counter-clockwise), *size* relative."""
+
+    at: XY
+    text: str
+    anchor: str = "middle"
+    angle: float = 0.0
+    size: float = 1.0
+
+
+@dataclass(frozen=True)
+class ScaleBar:
+    """A scale: the length from *origin* to *end* stands for *text* (e.g. 1 kg/cm²), with end ticks."""
+
+    origin: XY
+    end: XY
+    text: str
+
+
+@dataclass(frozen=True)
+class Sign:
+    """The sign of a zone of a diagram (+ or −), set large in it."""
+
+    at: XY
+    text: str
+
+
+@dataclass(frozen=True)
+class Plate:
+    """What a construction adds to its plate: looks of named objects, and furniture."""
+
+    looks: Mapping[str, str] = field(default_factory=dict)
+    furniture: tuple = ()
+
+    @classmethod
+    def from_data(cls, data: Mapping[str, Any] | None) -> "Plate":
+        """A plate from a construction's plain description (see the module docstring).
+
+        >>> p = Plate.from_data({"looks": {"axis": "centre"}, "furniture": [{"kind": "sign", "at": (0, 1), "text": "+"}]})
+        >>> p.looks["axis"], p.furniture
+        ('centre', (Sign(at=(0, 1), text='+'),))
+        """
+        if not data:
+            return cls()
+        kinds = {"dimension": Dimension, "angle": AngleArc, "stroke": Stroke, "lettering": Lettering,
+                 "scale": ScaleBar, "sign": Sign}
+        items = []
+        for d in data.get("furniture", ()):
+            d = dict(d)
+            kind = d.pop("kind")
+            if kind not in kinds:
+                from ..errors import InvalidParameter
+
+                raise InvalidParameter(f"unknown plate furniture {kind!r}; choose one of {', '.join(sorted(kinds))}")
+            items.append(kinds[kind](**d))
+        return cls(dict(data.get("looks", {})), tuple(items))
+
+
+def plate_of(construction: Any, figure: Any) -> Plate:
+    """The construction's plate description (``extra["plate"](figure)``), or an empty one."""
+    make: Callable[[Any], Any] | None = (getattr(construction, "extra", None) or {}).get("plate")
+    return Plate.from_data(make(figure)) if make else Plate()
+
+
+def dms(rad: float) -> str:
+    """An angle in degrees and minutes, rounded to the minute, as the books print it (61°19′)."""
+    minutes = round(math.degrees(rad) * 60.0)
+    d, m = divmod(minutes, 60)
+    return f"{d}°{m:02d}′"
+
+
+def _points(item: Any) -> list[XY]:
+    if isinstance(item, Dimension):
+        (ax, ay), (bx, by) = item.a, item.b
+        nx, ny = _normal(item.a, item.b)
+        o = item.offset
+        return [item.a, item.b, (ax + o * nx, ay + o * ny), (bx + o * nx, by + o * ny)]
+    if isinstance(item, AngleArc):
+        cx, cy = item.centre
+        pts = [(cx + item.radius * math.cos(t), cy + item.radius * math.sin(t)) for t in _arc_angles(item, 9)]
+        return pts + ([item.text_at] if item.text_at else [])
+    if isinstance(item, (Stroke, ScaleBar)):
+        return [item.origin, item.end] if isinstance(item, ScaleBar) else [item.a, item.b]
+    if isinstance(item, (Lettering, Sign)):
+        return [item.at]
+    return []
+
+
+def extent(items: Sequence[Any]) -> tuple[float, float, float, float] | None:
+    """The box (drawing units) the furniture's anchor points span, or None."""
+    pts = [p for it in items for p in _points(it)]
+    if not pts:
+        return None
+    return (min(p[0] for p in pts), min(p[1] for p in pts), max(p[0] for p in pts), max(p[1] for p in pts))
+
+
+def _normal(a: XY, b: XY) -> XY:
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    n = math.hypot(dx, dy) or 1.0
+    return (-dy / n, dx / n)
+
+
+def _arc_angles(item: AngleArc, n: int) -> list[float]:
+    cx, cy = item.centre
+    a0 = math.atan2(item.start[1] - cy, item.start[0] - cx)
+    a1 = math.atan2(item.end[1] - cy, item.end[0] - cx)
+    sweep = (a1 - a0) % (2 * math.pi)
+    if sweep > math.pi:  # the angle of a crank position is at most 180°: go the short way round
+        sweep -= 2 * math.pi
+    return [a0 + sweep * i / (n - 1) for i in range(n)]
+
+
+# -- drawing ---------------------------------------------------------------------------------
+
+
+def _f(v: float) -> str:
+    text = f"{v:.2f}".rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
+
+
+def _esc(text: str) -> str:
+    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+
+
+def furniture_svg(items: Sequence[Any], px: Callable[[float, float], XY], scale: float, *,
+                  size: float = 12.0) -> str:
+    """The furniture as one ``<g id="plate">`` (pixel coordinates through *px*, *scale* px per unit).
+
+    Classes: ``fur`` (lines), ``fur heavy`` etc. (looks), ``arrow`` (filled heads), ``lb fur-text``
+    (lettering, with the halo of the style's ``.lb``).
+    """
+    if not items:
+        return ""
+    out = ['<g id="plate">\n']
+    for i, it in enumerate(items):
+        out.extend(_item(it, px, scale, size, i))
+    out.append("</g>\n")
+    return "".join(out)
+
+
+def _line(a: XY, b: XY, cls: str = "fur") -> str:
+    return f'<line class="{cls}" x1="{_f(a[0])}" y1="{_f(a[1])}" x2="{_f(b[0])}" y2="{_f(b[1])}"/>\n'
+
+
+def _arrow(tip: XY, frm: XY, size: float) -> str:
+    """A filled arrowhead at *tip* pointing away from *frm* (pixels)."""
+    dx, dy = tip[0] - frm[0], tip[1] - frm[1]
+    n = math.hypot(dx, dy) or 1.0
+    ux, uy = dx / n, dy / n
+    L, W = 0.75 * size, 0.22 * size
+    bx, by = tip[0] - L * ux, tip[1] - L * uy
+    return (f'<path class="arrow" d="M{_f(tip[0])} {_f(tip[1])}L{_f(bx - W * uy)} {_f(by + W * ux)}'
+            f'L{_f(bx + W * uy)} {_f(by - W * ux)}Z"/>\n')
+
+
+def _text(at: XY, text: str, size: float, anchor: str = "middle", angle: float = 0.0, rel: float = 1.0) -> str:
+    rot = f' transform="rotate({_f(-angle)} {_f(at[0])} {_f(at[1])})"' if angle else ""
+    fs = f' style="font-size:{_f(size * rel)}px"' if rel != 1.0 else ""
+    return (f'<text class="lb fur-text" text-anchor="{anchor}" x="{_f(at[0])}" y="{_f(at[1] + 0.35 * size * rel)}"'
+            f'{rot}{fs}>{_esc(text)}</text>\n')
+
+
+def _item(it: Any, px: Callable[[float, float], XY], scale: float, size: float, i: int) -> list[str]:
+    if isinstance(it, Dimension):
+        nx, ny = _normal(it.a, it.b)
+        o = it.offset
+        a, b = px(*it.a), px(*it.b)
+        a2 = px(it.a[0] + o * nx, it.a[1] + o * ny)
+        b2 = px(it.b[0] + o * nx, it.b[1] + o * ny)
+        out = []
+        if abs(o) * scale > 2.0:
+            # extension lines, from a little off the object to a little past the dimension line
+            for p, q in ((a, a2), (b, b2)):
+                dx, dy = q[0] - p[0], q[1] - p[1]
+                n = math.hypot(dx, dy) or 1.0
+                out.append(_line((p[0] + 3 * dx / n, p[1] + 3 * dy / n), (q[0] + 4 * dx / n, q[1] + 4 * dy / n), "fur thin"))
+        out.append(_line(a2, b2, "fur dim"))
+        out.append(_arrow(a2, b2, size))
+        out.append(_arrow(b2, a2, size))
+        mid = ((a2[0] + b2[0]) / 2, (a2[1] + b2[1]) / 2)
+        ang = math.degrees(math.atan2(-(b2[1] - a2[1]), b2[0] - a2[0]))
+        if ang > 90 or ang < -90:
+            ang += 180
+        # the text sits on the dimension line, its halo opening the line for it
+        out.append(_text(mid, it.text, size, "middle", ang))
+        return out
+    if isinstance(it, AngleArc):
+        angles = _arc_angles(it, 33)
+        cx, cy = it.centre
+        pts = [px(cx + it.radius * math.cos(t), cy + it.radius * math.sin(t)) for t in angles]
+        d = "M" + "L".join(f"{_f(x)} {_f(y)}" for x, y in pts)
+        out = [f'<path class="fur thin" d="{d}"/>\n', _arrow(pts[-1], pts[-2], 0.8 * size)]
+        if it.text:
+            if it.text_at:
+                at = px(*it.text_at)
+            else:
+                t = angles[len(angles) // 2]
+                at = px(cx + (it.radius + 10.0 / scale) * math.cos(t), cy + (it.radius + 10.0 / scale) * math.sin(t))
+            out.append(_text(at, it.text, size, "middle", 0.0, 0.85))
+        return out
+    if isinstance(it, Stroke):
+        a, b = px(*it.a), px(*it.b)
+        out = [_line(a, b, f"fur {it.look}")]
+        if it.broken:
+            # the break: a short zig-zag across the end
+            nx, ny = _normal(a, b)
+            dx, dy = b[0] - a[0], b[1] - a[1]
+            n = math.hypot(dx, dy) or 1.0
+            ux, uy = dx / n, dy / n
+            h = 0.5 * size
+            zig = [(b[0] - h * nx, b[1] - h * ny), (b[0] - 0.3 * h * ux + 0.2 * h * nx, b[1] - 0.3 * h * uy + 0.2 * h * ny),
+                   (b[0] + 0.3 * h * ux - 0.2 * h * nx, b[1] + 0.3 * h * uy - 0.2 * h * ny), (b[0] + h * nx, b[1] + h * ny)]
+            out.append('<path class="fur thin" d="M' + "L".join(f"{_f(x)} {_f(y)}" for x, y in zig) + '"/>\n')
+        return out
+    if isinstance(it, ScaleBar):
+        a, b = px(*it.origin), px(*it.end)
+        nx, ny = _normal(a, b)
+        t = 0.35 * size
+        out = [_line(a, b, "fur medium"),
+               _line((a[0] - t * nx, a[1] - t * ny), (a[0] + t * nx, a[1] + t * ny), "fur medium"),
+               _line((b[0] - t * nx, b[1] - t * ny), (b[0] + t * nx, b[1] + t * ny), "fur medium")]
+        mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+        out.append(_text((mid[0] + 0.6 * size, mid[1]), it.text, size, "start", 0.0, 0.85))
+        return out
+    if isinstance(it, Lettering):
+        return [_text(px(*it.at), it.text, size, it.anchor, it.angle, it.size)]
+    if isinstance(it, Sign):
+        return [_text(px(*it.at), it.text, size, "middle", 0.0, 2.0)]
+    return []

@@ -48,6 +48,9 @@ GALLERY_STYLES = ("historical", "teaching")
 #: books' own figure, about 11 MB with the name tags) as a golden.
 FRAME_BUDGET = {"teaching": 13_000_000, "historical": 3_000_000}
 FALLBACK_FRAMES = {"teaching": "groups", "historical": "none"}
+#: The width (CSS px) at which the gallery page shows a figure: its own width, one figure per row,
+#: so that letters of 12 px and captions of 13-14 px are shown at that size (never under 9 px).
+DISPLAY_PX = 960
 
 
 def frames_mode(style: str, n_steps: int, last_frame_bytes: int) -> str:
@@ -190,13 +193,14 @@ def _readme(index: list[dict]) -> str:
                   f"*{_md(e['params_text'])}* — {_md(e['source'])}", "",
                   f"**Method:** {_md(e['method'])}", "",
                   f"**Checks:** {'✅' if e['ok'] else '❌'} {_md(e['checks'])} ([report]({s}/checks.md))", "",
-                  f"| historical (plate) | teaching ({e['steps']} steps) |", "|---|---|",
-                  f"| ![Fig. {e['number']}, historical]({s}/historical/final.svg) "
-                  f"| ![Fig. {e['number']}, teaching]({s}/teaching/final.svg) |",
-                  f"| [animated]({s}/historical/animated.svg) · [player]({s}/historical/player.html) · "
-                  f"[storyboard]({s}/historical/storyboard.png) "
-                  f"| [animated]({s}/teaching/animated.svg) · [player]({s}/teaching/player.html) · "
-                  f"[storyboard]({s}/teaching/storyboard.png) · [frames]({s}/teaching/steps/) |", ""]
+                  # one picture per row: at the page's width the letters stay at least 9 px (DISPLAY_PX)
+                  f"![Fig. {e['number']}, historical plate]({s}/historical/final.svg)", "",
+                  f"Historical plate: [animated]({s}/historical/animated.svg) · [player]({s}/historical/player.html) · "
+                  f"[storyboard]({s}/historical/storyboard.png)", "",
+                  f"![Fig. {e['number']}, teaching]({s}/teaching/final.svg)", "",
+                  f"Teaching ({e['steps']} steps): [animated]({s}/teaching/animated.svg) · "
+                  f"[player]({s}/teaching/player.html) · [storyboard]({s}/teaching/storyboard.png) · "
+                  f"[frames]({s}/teaching/steps/)", ""]
     return "\n".join(lines)
 
 
@@ -225,8 +229,8 @@ body{font:14px/1.45 'DejaVu Sans',Arial,sans-serif;margin:0 auto;max-width:1400p
 h1{font-size:22px}h2{font-size:17px;margin-bottom:2px}h2 .en{font-weight:normal;color:#666}
 .meta{color:#666;margin-top:0}.ok{color:#1b7f3b}.fail{color:#b00020;font-weight:bold}
 section{border-top:1px solid #ddd;padding:6px 0 12px}
-.pics{display:flex;gap:16px;flex-wrap:wrap}figure{margin:0;flex:1 1 560px}
-img{width:100%;height:auto;border:1px solid #ccc;background:#fff}figcaption{color:#555;font-size:12px}
+.pics{display:flex;flex-direction:column;gap:16px}figure{margin:0;width:100%;max-width:""" + str(DISPLAY_PX) + """px}
+img{width:100%;height:auto;border:1px solid #ccc;background:#fff}figcaption{color:#555;font-size:13px}
 </style></head><body>
 <h1>construct — gallery</h1>
 <p>Every construction at the books' parameters: the plate (historical style) and the construction step by step (teaching style, animated). Click a picture for the step player. Built by <code>construct gallery</code>.</p>

@@ -130,6 +130,16 @@ class Reader:
     def letters(self) -> frozenset[str]:
         return frozenset(v[1] for v in self.objects.values() if v[1])
 
+    def curve_points(self, name: str) -> list[str]:
+        """The points the description of a curve names (a circle's centre, two points of a line)."""
+        kind, label, op, inputs = self.objects[name]
+        if label or name in _COMMON:
+            return []
+        pts = [p for p in inputs if p in self.points]
+        if kind == "line" and op == "line":
+            return pts[:2]
+        return pts[:1]
+
     def curve(self, name: str, lang: str) -> str:
         """A lettered or described line or circle."""
         kind, label, op, inputs = self.objects[name]
@@ -160,6 +170,20 @@ class Reader:
         return None
 
     # -- a caption ------------------------------------------------------------------------
+    def mentioned(self, caption: str) -> set[str]:
+        """The points *caption* names, directly, as a pair (D0P6) or as the centre of a circle it names."""
+        out: set[str] = set()
+        for m in _NAME.finditer(caption):
+            token = m.group(0)
+            obj = self.objects.get(token)
+            if obj is None:
+                out.update(self._split(token) or ())
+            elif obj[0] == "point":
+                out.add(token)
+            elif obj[0] in ("circle", "line"):
+                out.update(self.curve_points(token))
+        return out
+
     def text(self, caption: str, lang: str, outputs: Sequence[str] = ()) -> str:
         """*caption* (in *lang*, "de" or "en") in the figure's letters; *outputs* are the step's own objects."""
         made = set(outputs)

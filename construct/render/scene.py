@@ -155,6 +155,18 @@ class Scene:
             return frozenset()
         return frozenset(n for n in self.steps[k - 1].inputs if n in self._drawn)
 
+    def tagged(self, k: int) -> frozenset[str]:
+        """The points a teaching frame tags at step k: what the step makes, what its instrument is set on
+        (also the centre of a circle it cuts), and every point its caption names."""
+        if not 1 <= k <= len(self.steps):
+            return frozenset()
+        s = self.steps[k - 1]
+        names = set(s.outputs) | set(s.inputs) | self._reader.mentioned(s.caption.de)
+        for n in s.inputs:
+            if n in self._reader.objects and n not in self._reader.points:
+                names.update(self._reader.curve_points(n))
+        return frozenset(n for n in names if n in self._reader.points)
+
     @functools.cached_property
     def _drawn(self) -> dict[str, Mark]:
         return {m.name: m for m in self.marks}

@@ -69,16 +69,23 @@ def test_frame_k_shows_exactly_steps_1_to_k(crank6, style):
 
 
 def test_teaching_marks_current_and_earlier_steps(crank6):
+    """A frame is a view of the layered figure: each element sits in its step's group, marked cur / old."""
     c, fig = crank6
     svg = Drawing(scene_for(c, fig), STYLES["teaching"]).frame(12)
     root = ET.fromstring(svg.encode("utf-8"))
-    for e in root.iter():
-        m = re.fullmatch(r"s(\d{4})-.+", e.get("id") or "")
-        if not m or e.get("id").endswith("-label"):
+    seen = set()
+    for g in root.iter(f"{SVG}g"):
+        if g.get("data-step") is None:
             continue
-        classes = e.get("class").split()
-        step = int(m.group(1))
-        assert ("cur" in classes) == (step == 12) and ("old" in classes) == (step < 12), e.get("id")
+        classes = g.get("class").split()
+        step = int(g.get("data-step"))
+        assert "step" in classes and ("cur" in classes) == (step == 12) and ("old" in classes) == (step < 12), step
+        for e in g:
+            m = re.fullmatch(r"s(\d{4})-.+", e.get("id") or "")
+            if m:  # the id names the step whose group holds it
+                assert int(m.group(1)) == step, e.get("id")
+                seen.add(e.get("id").removesuffix("-label").removesuffix("-tag"))
+    assert seen == _drawable_ids(fig, 12)
 
 
 def test_every_svg_parses_strictly_and_renders(crank6, tmp_path):
@@ -186,7 +193,7 @@ def test_replay_output_is_the_same_in_another_process(tmp_path):
         out = tmp_path / f"seed{seed}"
         env = {**os.environ, "PYTHONHASHSEED": seed}
         subprocess.run([sys.executable, "-m", "construct", "replay", "crank", "--parts", "6", "--style",
-                        "teaching", "--out", str(out)], check=True, env=env, capture_output=True)
+                        "teaching", "--frames", "all", "--out", str(out)], check=True, env=env, capture_output=True)
         outs.append(out)
     a = sorted(p.relative_to(outs[0]) for p in outs[0].rglob("*") if p.is_file())
     b = sorted(p.relative_to(outs[1]) for p in outs[1].rglob("*") if p.is_file())

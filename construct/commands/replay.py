@@ -8,16 +8,17 @@ from ..render.output import FRAME_MODES, write_replay
 from ._common import add_construction_options, figure_from_args
 
 NAME = "replay"
-HELP = ("build a construction and write DIR/final.svg, DIR/steps/NNN.svg, DIR/protocol.json, "
-        "DIR/animated.svg, DIR/player.html and DIR/storyboard.png")
+HELP = ("build a construction and write DIR/final.svg (every step a layer), DIR/protocol.json, "
+        "DIR/animated.svg, DIR/player.html, DIR/storyboard.png and, when asked, DIR/steps/NNN.svg")
 
 
 def add_arguments(p) -> None:
     add_construction_options(p)
     p.add_argument("--out", required=True, metavar="DIR", help="output folder")
     p.add_argument("--style", default="plain", help="drawing style (plain, historical, teaching)")
-    p.add_argument("--frames", default="auto", choices=FRAME_MODES,
-                   help="a frame per step (all), per group (groups), none; auto: all up to 1500 steps")
+    p.add_argument("--frames", default="none", choices=FRAME_MODES,
+                   help="standalone frames besides the layered final.svg: none (default), a frame per step (all), "
+                        "per group (groups); auto: all up to 1500 steps")
 
 
 def run(args) -> int:

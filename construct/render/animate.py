@@ -1,23 +1,35 @@
 """One self-contained animated SVG that plays the steps in order, without script.
 
-Each step's elements sit in one ``<g>`` per layer; SMIL ``<set>`` elements
-hide a step until its time comes, and a clock animation restarts the whole
-play when it ends (``begin="0s;clock.end"``).  Browsers play SMIL in a page
-and inside ``<img>``; renderers without animation (cairosvg, librsvg) show
-the final figure with its title, since everything is visible by default.
+The document is the layered figure (:meth:`construct.render.svg.Drawing.layered`)
+with timing: every step group ``<g class="step" data-step="k">`` carries SMIL
+``<set>`` elements that hide it until its time comes and mark it current, then
+earlier; a clock animation restarts the whole play when it ends
+(``begin="0s;clock.end"``).  Browsers play SMIL in a page and inside
+``<img>``; renderers without animation (cairosvg, librsvg) show the final
+figure with its title, since everything is visible by default.
+
+A step stays :data:`STEP_SECONDS` on screen by default: long enough to read
+its caption (the player lets the reader choose the pace).
 
 >>> from construct.constructions import get
 >>> from construct.render.scene import build_scene
 >>> svg = animated_svg(build_scene(get("crank").figure(parts=6)))
 >>> svg.count('attributeName="visibility"') > 10 and "<script" not in svg
 True
+>>> step_seconds(6) >= 1.5 and step_seconds(7000) >= 1.5
+True
 """
 
 from __future__ import annotations
 
-from .svg import PLAIN, Drawing, Style, fmt, wrap
+from typing import Any
 
-__all__ = ["animated_svg", "step_seconds", "STEP_GROUP_CSS"]
+from .svg import PLAIN, Drawing, Style, fmt
+
+__all__ = ["animated_svg", "step_seconds", "STEP_GROUP_CSS", "STEP_SECONDS"]
+
+#: Seconds each step is shown in the animated SVG (a caption takes that long to read).
+STEP_SECONDS = 1.5
 
 #: Looks of the step groups, for players that switch classes on a whole step.
 STEP_GROUP_CSS = """g.hid{display:none}
@@ -26,9 +38,9 @@ g.cur>.pt,g.cur>.lb{fill:%(hl)s;stroke:none}
 g.old{opacity:%(op)s}"""
 
 
-def step_seconds(n_steps: int) -> float:
-    """Time per step: a second for short constructions, a minute in all for long ones (at least 0.15 s)."""
-    return max(0.15, min(1.0, 60.0 / max(n_steps, 1)))
+def step_seconds(n_steps: int, seconds: float = STEP_SECONDS) -> float:
+    """Time per step of the animation: *seconds* whatever the length (the pace is the reader's, not the figure's)."""
+    return max(float(seconds), 0.05)
 
 
 def group_css(style: Style) -> str:
@@ -36,55 +48,53 @@ def group_css(style: Style) -> str:
                              "op": fmt(style.earlier_opacity)}
 
 
-def step_groups(drawing: Drawing, layer: str) -> list[tuple[int, list[str]]]:
+def step_groups(drawing: Drawing, layer: str) -> list[tuple[int, list[Any]]]:
     """The layer's elements, gathered by step: [(k, [element, ...]), ...] in step order."""
-    out: list[tuple[int, list[str]]] = []
-    for k, head, tail in drawing.layers[layer]:
-        if not out or out[-1][0] != k:
-            out.append((k, []))
-        out[-1][1].append(head + tail)
-    return out
+    return drawing.groups[layer]
 
 
-def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None = None) -> str:
-    d = Drawing(scene, style)
-    n = len(scene.steps)
-    dt = step_seconds(n)
+def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None = None,
+                 drawing: Drawing | None = None, seconds: float = STEP_SECONDS) -> str:
+    """The animation of *scene* (or of the already laid-out *drawing*) as SVG text."""
+    d = drawing or Drawing(scene, style)
+    style = d.style
+    f = d.doc.factory
+    n = len(d.scene.steps)
+    dt = step_seconds(n, seconds)
     hold = 4.0
     total = n * dt + hold
     marks_steps = style.highlight is not None or style.earlier_opacity < 1.0
-    parts = [d.header(extra_css=group_css(style) if marks_steps else "")]
-    parts.append(f'<rect id="clock-face" x="0" y="0" width="0" height="0">'
-                 f'<animate id="clock" attributeName="x" from="0" to="0" begin="0s;clock.end" dur="{fmt(total)}s"/>'
-                 f"</rect>\n")
+    dwg = d.document(extra_css=group_css(style) if marks_steps else "")
+    clock = f.rect(insert=("0", "0"), size=("0", "0"), id="clock-face")
+    clock.add(f.animate(id="clock", attributeName="x", from_="0", to="0", begin="0s;clock.end", dur=f"{fmt(total)}s"))
+    dwg.add(clock)
     for layer in d.LAYERS:
-        parts.append(f'<g id="{layer}">\n')
-        for k, elems in step_groups(d, layer):
+        lg = f.g(id=layer)
+        for k, elems in d.groups[layer]:
             start = (k - 1) * dt
-            parts.append(f'<g id="{layer}-{k}">')
+            timing = []
             if k > 1:
-                parts.append(f'<set attributeName="visibility" to="hidden" begin="clock.begin" dur="{fmt(start)}s"/>')
+                timing.append(f.set(attributeName="visibility", to="hidden", begin="clock.begin", dur=f"{fmt(start)}s"))
             if marks_steps and style.highlight:
-                parts.append(f'<set attributeName="class" to="cur" begin="clock.begin+{fmt(start)}s" dur="{fmt(dt)}s"/>')
+                timing.append(f.set(attributeName="class", to="step cur", begin=f"clock.begin+{fmt(start)}s",
+                                    dur=f"{fmt(dt)}s"))
             if marks_steps and style.earlier_opacity < 1.0 and k < n:
-                parts.append(f'<set attributeName="class" to="old" begin="clock.begin+{fmt(k * dt)}s" '
-                             f'dur="{fmt((n - k) * dt)}s"/>')
-            parts.append("\n" + "".join(e + "\n" for e in elems) + "</g>\n")
-        parts.append("</g>\n")
+                timing.append(f.set(attributeName="class", to="step old", begin=f"clock.begin+{fmt(k * dt)}s",
+                                    dur=f"{fmt((n - k) * dt)}s"))
+            lg.add(d.step_group(k, timing + list(elems), id=f"{layer}-{k}"))
+        dwg.add(lg)
     # Captions: each step's while it is drawn, the figure's title otherwise (and in still renderers).
-    st = style
-    width = st.width_px - 2 * st.margin_px
-    lines = [(("de" if i == 0 else "en"), t) for i, line in enumerate(title or scene.title)
-             for t in wrap(line, width, st.caption_size)][: d.n_caption]
-    title_svg = d.caption_svg(lines).replace('<g id="caption">', '<g id="title">'
-                                             f'<set attributeName="visibility" to="hidden" begin="clock.begin" '
-                                             f'dur="{fmt(n * dt)}s"/>', 1)
-    parts.append(title_svg)
-    parts.append('<g id="step-captions">\n')
+    title_lines = d.title_lines(title or d.scene.title)[: d.n_caption]
+    tg = d.caption_group(title_lines, id="title")
+    if tg is not None:
+        tg.add(f.set(attributeName="visibility", to="hidden", begin="clock.begin", dur=f"{fmt(n * dt)}s"))
+        dwg.add(tg)
+    caps = f.g(id="step-captions")
     for k in range(1, n + 1):
-        cap = d.caption_svg(d.frame_caption_lines(k)).replace(
-            '<g id="caption">', f'<g id="caption-{k}" visibility="hidden">'
-            f'<set attributeName="visibility" to="visible" begin="clock.begin+{fmt((k - 1) * dt)}s" dur="{fmt(dt)}s"/>', 1)
-        parts.append(cap)
-    parts.append("</g>\n</svg>\n")
-    return "".join(parts)
+        cap = d.caption_group(d.frame_caption_lines(k), id=f"caption-{k}", visibility="hidden")
+        if cap is not None:
+            cap.add(f.set(attributeName="visibility", to="visible", begin=f"clock.begin+{fmt((k - 1) * dt)}s",
+                          dur=f"{fmt(dt)}s"))
+            caps.add(cap)
+    dwg.add(caps)
+    return d.doc.text(dwg)

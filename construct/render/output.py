@@ -1,10 +1,15 @@
-"""Writing a replayed construction to a folder: frames, final figure, protocol.
+"""Writing a replayed construction to a folder: the layered figure, its views, the protocol.
 
-``DIR/final.svg`` (in the historical style the book plate), ``DIR/steps/NNN.svg``
-(frame k shows steps 1..k), ``DIR/protocol.json``, ``DIR/animated.svg`` (plays
-without script), ``DIR/player.html`` (the step player, one file) and
-``DIR/storyboard.png`` (contact sheet); everything is staged and moved into place only when
-all of it has been written (:func:`construct.output.staged_output`).
+``DIR/final.svg`` is the canonical output: every step is a group
+``<g class="step" data-step="k">`` (in the historical style the figure is
+the book plate, layered the same way), so frame k is a view of it, not a
+copy.  ``DIR/protocol.json``, ``DIR/animated.svg`` (plays without script),
+``DIR/player.html`` (the step player, one file) and ``DIR/storyboard.png``
+(contact sheet) come with it; standalone frames ``DIR/steps/NNN.svg`` (frame
+k shows steps 1..k) only when asked (``--frames all`` or ``groups``): all
+frames together grow with the square of the step count.  Everything is staged
+and moved into place only when all of it has been written
+(:func:`construct.output.staged_output`).
 """
 
 from __future__ import annotations
@@ -130,9 +135,16 @@ def plate_caption(construction: Construction, figure: Figure, number: int | str 
             f"{construction.title.en} ({params_text(figure)}; {equation(construction.source)})")
 
 
-def write_outputs(stage: Path, construction: Construction, figure: Figure, st: Style, *, frames: str = "auto",
-                  fig_number: int | str | None = None, protocol: bool = True) -> dict[str, Any]:
-    """Write final.svg, steps/, protocol.json, animated.svg, player.html and storyboard.png into *stage*."""
+def write_outputs(stage: Path, construction: Construction, figure: Figure, st: Style, *, frames: str = "none",
+                  fig_number: int | str | None = None, protocol: bool = True,
+                  storyboard: bool = True) -> dict[str, Any]:
+    """Write final.svg, steps/ (when asked), protocol.json, animated.svg, player.html and storyboard.png.
+
+    One :class:`Drawing` lays the construction out once; the layered final
+    figure, the frames, the animation and the player all carry its elements.
+    In a plate style final.svg is the plate (its own, smaller scene), layered
+    by step the same way.
+    """
     from .animate import animated_svg
     from .player import player_html
     from .storyboard import storyboard_png
@@ -143,7 +155,7 @@ def write_outputs(stage: Path, construction: Construction, figure: Figure, st: S
         final = render_svg(scene_for(construction, figure, plate=True), style=st,
                            caption=plate_caption(construction, figure, fig_number))
     else:
-        final = render_svg(scene, style=st)
+        final = drawing.layered()
     write_text(stage / "final.svg", final)
     ks = frame_steps(scene, frames)
     width = max(3, len(str(len(scene.steps))))
@@ -154,16 +166,17 @@ def write_outputs(stage: Path, construction: Construction, figure: Figure, st: S
         write_text(steps_dir / f"{k:0{width}d}.svg", drawing.frame(k))
     if protocol:
         write_text(stage / "protocol.json", figure.protocol.to_json(figure.replay))
-    write_text(stage / "animated.svg", animated_svg(scene, st))
+    write_text(stage / "animated.svg", animated_svg(scene, st, drawing=drawing))
     givens = {**dict(figure.replay.givens),
               **{k: v for k, v in figure.params.items() if k not in ("givens", "group_titles", "requested_method", "plate")}}
-    write_text(stage / "player.html", player_html(scene, st, givens=givens))
-    (stage / "storyboard.png").write_bytes(storyboard_png(scene, st))
+    write_text(stage / "player.html", player_html(scene, st, givens=givens, drawing=drawing))
+    if storyboard:
+        (stage / "storyboard.png").write_bytes(storyboard_png(scene, st))
     return {"steps": len(scene.steps), "frames": len(ks)}
 
 
 def write_replay(construction: Construction, figure: Figure, out_dir: str | Path, *, style: str = "plain",
-                 frames: str = "auto", styles: dict[str, Style] | None = None) -> dict[str, Any]:
+                 frames: str = "none", styles: dict[str, Style] | None = None) -> dict[str, Any]:
     """Write everything a replay produces; return a summary (counts, paths)."""
     from . import styles as style_module
 

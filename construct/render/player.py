@@ -1,9 +1,11 @@
 """A self-contained HTML step player: one file, no network, no external script.
 
 The page holds one SVG of the whole construction whose elements are grouped
-by step (one ``<g data-k>`` per step and layer); a small script shows steps
+by step (one ``<g class="step" data-step>`` per step and layer, the layered figure's own
+groups); a small script shows steps
 1..k by switching classes.  Controls: previous / next / play-pause buttons, a
-slider, the arrow keys (Home/End, space to play), a step list grouped by the
+slider, the arrow keys (Home/End, space to play), a tempo control (seconds per
+step, keys + and -), a step list grouped by the
 construction's groups in collapsible ``<details>``, the givens, and each
 step's caption in German and English.  A "magnify" switch zooms to the
 current group when it is tiny in the whole figure.
@@ -27,7 +29,7 @@ import json
 import re
 from typing import Any, Mapping
 
-from .animate import group_css, step_groups
+from .animate import STEP_SECONDS, group_css
 from .svg import PLAIN, Drawing, Style, fmt, group_caption
 
 __all__ = ["player_html", "json_for_script"]
@@ -55,7 +57,7 @@ def _zoom_box(drawing: Drawing, k: int) -> list[float] | None:
     if max(w, h) <= 0:
         return None
     # a little room round the box, in the figure's own aspect ratio
-    vw, vh = drawing.vp.width, drawing.vp.height
+    vw, vh = drawing.vp.width, drawing.drawing_height
     cx, cy = (box[0] + box[2]) / 2, (box[1] + box[3]) / 2
     s = drawing.vp.scale
     side_w = max(w * s * 1.15, h * s * 1.15 * vw / vh)
@@ -91,22 +93,26 @@ def _step_list(scene) -> str:
 
 
 def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None = None,
-                title: tuple[str, str] | None = None) -> str:
-    d = Drawing(scene, style, caption_lines=0)
+                title: tuple[str, str] | None = None, drawing: Drawing | None = None) -> str:
+    """The player page of *scene* (or of the already laid-out *drawing*: the same elements as the figure)."""
+    d = drawing or Drawing(scene, style, caption_lines=0)
+    scene, style = d.scene, d.style
+    f = d.doc.factory
     n = len(scene.steps)
-    w, h = d.vp.width, d.vp.height
-    layers = []
+    w, h = fmt(d.vp.width), fmt(d.drawing_height)
+    dwg = d.doc.drawing(size=(None, None), viewBox=f"0 0 {w} {h}", id="figure", role="img",
+                        **{"data-full": f"0 0 {w} {h}"})
+    dwg.add(f.style("\n" + style.css() + "\n" + group_css(style) + "\n"))
+    dwg.add(f.rect(insert=("-10000", "-10000"), size=("20000", "20000"), fill=style.background))
     for layer in d.LAYERS:
-        groups = "".join(f'<g data-k="{k}">' + "".join(elems) + "</g>\n" for k, elems in step_groups(d, layer))
-        layers.append(f'<g id="{layer}">\n{groups}</g>\n')
-    css = style.css() + "\n" + group_css(style)
-    svg = (f'<svg id="figure" xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {fmt(w)} {fmt(h)}" '
-           f'data-full="0 0 {fmt(w)} {fmt(h)}" role="img">\n<style>\n{css}\n</style>\n'
-           f'<rect x="-10000" y="-10000" width="20000" height="20000" fill="{html.escape(style.background)}"/>\n'
-           + "".join(layers) + "</svg>")
+        lg = f.g(id=layer)
+        for k, elems in d.groups[layer]:
+            lg.add(d.step_group(k, elems))
+        dwg.add(lg)
+    svg = d.doc.markup(dwg)
     steps = [{"de": scene.caption(s.index)[0], "en": scene.caption(s.index)[1], "tool": s.tool, "role": s.role,
               "group": group_caption(scene, s.index), "zoom": _zoom_box(d, s.index)} for s in scene.steps]
-    data = {"n": n, "steps": steps, "dt": 600 if n <= 120 else 250}
+    data = {"n": n, "steps": steps, "dt": round(1000 * STEP_SECONDS)}
     title = title or scene.title
     giv = givens or {}
     givens_rows = "".join(f"<tr><th>{html.escape(str(k))}</th><td>{html.escape(_show(v))}</td></tr>"
@@ -123,9 +129,19 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         ("{{PAGE_BG}}", "#f7f3ea" if style.name == "historical" else "#f4f5f7"),
         ("{{PR}}", fmt(style.point_radius)),
         ("{{LS}}", fmt(style.label_size)),
+        ("{{SPEEDS}}", _speed_options(data["dt"] / 1000)),
     ))
     # One pass, so that text from the protocol is never read as a placeholder.
     return re.sub(r"\{\{[A-Z_]+\}\}", lambda m: values[m.group(0)], _TEMPLATE)
+
+
+#: Seconds per step the player offers, slowest first (the keys + and - step through them).
+SPEEDS = (4.0, 3.0, 2.0, 1.5, 1.0, 0.5, 0.25, 0.1)
+
+
+def _speed_options(default: float) -> str:
+    """The <option>s of the tempo control, *default* selected."""
+    return "".join(f'<option value="{v:g}"{" selected" if v == default else ""}>{v:g} s</option>' for v in SPEEDS)
 
 
 def _show(v: Any) -> str:
@@ -190,6 +206,7 @@ li a.later{color:#bbb}
 <button id="last" title="last step (End)" aria-label="last">▶|</button>
 <input id="slider" type="range" min="0" max="{{N}}" value="{{N}}" aria-label="step">
 <span id="counter"></span>
+<label title="seconds per step while playing (+ / - keys)">Tempo <select id="speed" aria-label="seconds per step">{{SPEEDS}}</select></label>
 <label title="magnify tiny groups"><input id="zoom" type="checkbox" checked> Lupe / magnify</label>
 </div>
 <div id="caption"><div id="cap-group"></div><div id="cap-de"></div><div id="cap-en"></div></div>
@@ -210,7 +227,7 @@ li a.later{color:#bbb}
   var data = JSON.parse(document.getElementById("data").textContent);
   var n = data.n, k = n, timer = null;
   var svg = document.getElementById("figure");
-  var groups = Array.prototype.slice.call(svg.querySelectorAll("g[data-k]"));
+  var groups = Array.prototype.slice.call(svg.querySelectorAll("g[data-step]"));
   var links = Array.prototype.slice.call(document.querySelectorAll("#steps a[data-k]"));
   var slider = document.getElementById("slider");
   var zoom = document.getElementById("zoom");
@@ -219,8 +236,8 @@ li a.later{color:#bbb}
   function show(j) {
     k = Math.max(0, Math.min(n, j));
     groups.forEach(function (g) {
-      var s = +g.getAttribute("data-k");
-      g.setAttribute("class", s > k ? "hid" : (s === k && k < n ? "cur" : (k < n ? "old" : "")));
+      var s = +g.getAttribute("data-step");
+      g.setAttribute("class", "step" + (s > k ? " hid" : (s === k && k < n ? " cur" : (k < n ? " old" : ""))));
     });
     links.forEach(function (a) {
       var s = +a.getAttribute("data-k");
@@ -251,12 +268,19 @@ li a.later{color:#bbb}
     }
     svg.setAttribute("data-step", String(k));
   }
-  function pause() { if (timer) { clearInterval(timer); timer = null; } text("play", "▶"); }
+  var speed = document.getElementById("speed");
+  function seconds() { return +speed.value; }
+  function tick() { if (k >= n) { pause(); } else { show(k + 1); timer = setTimeout(tick, seconds() * 1000); } }
+  function pause() { if (timer) { clearTimeout(timer); timer = null; } text("play", "▶"); }
   function play() {
     if (timer) { pause(); return; }
     if (k >= n) { show(0); }
     text("play", "||");
-    timer = setInterval(function () { if (k >= n) { pause(); } else { show(k + 1); } }, data.dt);
+    timer = setTimeout(tick, seconds() * 1000);
+  }
+  function faster(by) {
+    var i = Math.max(0, Math.min(speed.options.length - 1, speed.selectedIndex + by));
+    speed.selectedIndex = i;
   }
   document.getElementById("first").onclick = function () { pause(); show(0); };
   document.getElementById("prev").onclick = function () { pause(); show(k - 1); };
@@ -276,6 +300,8 @@ li a.later{color:#bbb}
     else if (e.key === "Home") { pause(); show(0); }
     else if (e.key === "End") { pause(); show(n); }
     else if (e.key === " ") { e.preventDefault(); play(); }
+    else if (e.key === "+") { faster(1); }
+    else if (e.key === "-") { faster(-1); }
   });
   var start = parseInt((location.hash || "").slice(1), 10);
   show(isNaN(start) ? n : start);

@@ -97,10 +97,18 @@ class Scene:
             objects[m.name] = (kinds.get(m.kind, m.kind), m.label, s.op, tuple(s.inputs))
         return Reader(objects)
 
+    @functools.cached_property
+    def _captions(self) -> list[tuple[str, str] | None]:
+        return [None] * len(self.steps)
+
     def caption(self, k: int) -> tuple[str, str]:
-        """Step k's caption (German, English) in the figure's letters."""
-        s = self.steps[k - 1]
-        return self.readable(s.caption.de, "de", s.outputs), self.readable(s.caption.en, "en", s.outputs)
+        """Step k's caption (German, English) in the figure's letters, rewritten once per step."""
+        cached = self._captions[k - 1]
+        if cached is None:
+            s = self.steps[k - 1]
+            cached = self._captions[k - 1] = (self.readable(s.caption.de, "de", s.outputs),
+                                              self.readable(s.caption.en, "en", s.outputs))
+        return cached
 
     # -- what a teaching frame shows at strength ----------------------------------------
     def state(self, m: Mark, k: int) -> str:

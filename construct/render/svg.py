@@ -1,21 +1,26 @@
-"""SVG frames of a scene: one per step and the final figure.
+"""SVG of a scene: the layered figure (every step a group), its frames, the final figure.
 
 The style is a separate value (:class:`Style`): the construction never knows
 how it is drawn.  Every look is in one ``<style>`` sheet at the top of the
-file and the elements carry only classes (role, instrument, provenance, and
-``cur``/``old`` for the current and earlier steps of a frame), which keeps the
-frames small and lets :mod:`construct.regress.svgdiff` compare looks by class.
+file and the elements carry only classes (role, instrument, provenance); a
+step's elements of one layer sit in ``<g class="step" data-step="k">``, and
+a frame marks the current and earlier steps' groups ``cur``/``old``, which
+keeps the files small and lets :mod:`construct.regress.svgdiff` compare
+looks by class and changes by step.
 
-Output is deterministic: numbers with at most two decimals (a hundredth of a
-pixel at 960 px), ids from step index and object name, no timestamps, marks in
-step order, so the same figure gives the same bytes on every run and machine.
-All text goes through :func:`xml_text` / :func:`xml_attr`.
+Every element is made by svgwrite (:mod:`construct.render.svgdoc`).  Output
+is deterministic: numbers with at most two decimals (a hundredth of a pixel
+at 960 px), ids from step index and object name, attributes in svgwrite's
+sorted order, no timestamps, marks in step order, so the same figure gives
+the same bytes on every run and machine.
 
 >>> from construct.constructions import get
 >>> from construct.render.scene import build_scene
 >>> sc = build_scene(get("crank").figure(parts=6))
->>> svg = render_svg(sc, upto=3)
->>> svg.startswith("<?xml") and 'id="s0003-r"' not in svg and "Schritt 3" in svg
+>>> svg = render_svg(sc, upto=2)
+>>> svg.startswith("<?xml") and 'data-step="3"' not in svg and "Schritt 2" in svg
+True
+>>> 'class="step cur" data-step="2"' in svg and svgdoc.MARKER in svg
 True
 """
 
@@ -25,9 +30,10 @@ import bisect
 import math
 import textwrap
 from dataclasses import dataclass, field
-from typing import Mapping, Sequence
+from typing import Any, Mapping, Sequence
 from xml.sax.saxutils import escape as _escape
 
+from . import svgdoc
 from .scene import Mark, Scene, label_offset_direction
 
 __all__ = ["Style", "PLAIN", "render_svg", "fmt", "Viewport", "Drawing", "xml_text", "xml_attr",
@@ -150,14 +156,15 @@ class Style:
         if self.earlier_opacity < 1.0:
             rules.append(f".old{{opacity:{fmt(self.earlier_opacity)}}}")
         if self.highlight:
-            rules.append(f".cur{{stroke:{self.highlight};stroke-width:{fmt(self.highlight_width)}}}")
+            # ``cur`` and ``old`` sit on a step's group (frames are views of the layered figure)
+            rules.append(f".cur>*{{stroke:{self.highlight};stroke-width:{fmt(self.highlight_width)}}}")
             # a point is small: the current one gets a halo in the highlight colour
-            rules.append(f".pt.cur{{fill:{self.highlight};stroke:{self.highlight};stroke-width:3}}")
-            rules.append(f".lb.cur{{fill:{self.highlight};stroke:none}}")
+            rules.append(f".cur>.pt{{fill:{self.highlight};stroke:{self.highlight};stroke-width:3}}")
+            rules.append(f".cur>.lb{{fill:{self.highlight};stroke:none}}")
         rules.append(f".inset{{fill:{self.background};stroke:{self.construction};stroke-width:0.8}}")
         if self.name_tags:
             rules.append(f".tag{{display:none;font-size:{fmt(0.85 * self.label_size)}px}}")
-            rules.append(".tag.cur,.cur .tag{display:inline}")
+            rules.append(".cur>.tag{display:inline}")
         return "\n".join(rules)
 
 
@@ -238,10 +245,14 @@ def group_caption(scene: Scene, k: int) -> str:
 
 
 class Drawing:
-    """A scene laid out in one style: every mark's SVG element, made once, reused by all frames.
+    """A scene laid out in one style: every mark's SVG element, made once, reused by every output.
 
-    Frame k is the elements of the marks of steps 1..k, each layer in step
-    order, so frames are prefixes of the final figure's element lists.
+    The elements are made by svgwrite (:mod:`construct.render.svgdoc`), each
+    turned into XML once however many documents carry it.  The canonical
+    output, :meth:`layered`, holds every step as a group ``<g class="step"
+    data-step="k">`` inside each layer; frame k (:meth:`frame`) is a view of
+    it: the groups of steps 1..k, the current one ``cur`` and the earlier ones
+    ``old``; the animation and the player switch the same groups.
     """
 
     LAYERS = ("areas", "construction", "results", "points", "labels")
@@ -262,13 +273,17 @@ class Drawing:
             inner_h = canvas.height - 2 * m - caption_lines * 1.45 * style.caption_size
             win = Viewport.window(region, (m, m, canvas.width - m, m + inner_h))
             self.vp = Viewport(win.xmin, win.ymax, win.scale, canvas.width, canvas.height, 0.0, win.left, win.top)
-        # layer -> sorted list of (step, head, tail): the element is head + classes + tail.
-        self.layers: dict[str, list[tuple[int, str, str]]] = {name: [] for name in self.LAYERS}
+        self.doc = svgdoc.Writer()
+        # layer -> [(step, [element, ...]), ...] in step order: each step's elements of that layer.
+        self.groups: dict[str, list[tuple[int, list[Any]]]] = {name: [] for name in self.LAYERS}
         placed: list[tuple[float, float, float, float]] = []
         for m in scene.marks:
-            for layer, head, tail in self._elements(m, self.vp, placed, m.id):
-                self.layers[layer].append((m.step, head, tail))
-        self._steps = {name: [e[0] for e in items] for name, items in self.layers.items()}
+            for layer, elem in self._elements(m, self.vp, placed, m.id):
+                runs = self.groups[layer]
+                if not runs or runs[-1][0] != m.step:
+                    runs.append((m.step, []))
+                runs[-1][1].append(self.doc.frozen(elem))
+        self._steps = {name: [k for k, _ in runs] for name, runs in self.groups.items()}
 
     # -- layout ---------------------------------------------------------------------
     def caption_lines(self) -> int:
@@ -281,50 +296,50 @@ class Drawing:
             most = max(most, len(wrap(de, width, st.caption_size)) + len(wrap(en, width, st.caption_size)))
         return most + (1 if st.show_group else 0)
 
+    @property
+    def drawing_height(self) -> float:
+        """The canvas height without the caption lines (the player shows its captions in HTML)."""
+        return self.vp.height - self.n_caption * 1.45 * self.style.caption_size
+
     def _elements(self, m: Mark, vp: Viewport, placed: list, mid: str | None):
-        """(layer, head, tail) of a mark's elements; the label (if any) is a second one."""
+        """(layer, svgwrite element) of a mark's elements; the label (if any) is a second one."""
         cls = f"{m.role} {m.tool} {m.provenance}"
-        idattr = f' id="{xml_attr(mid)}"' if mid else ""
+        ids = {"id": mid} if mid else {}
         st = self.style
+        f = self.doc.factory
         if m.kind == "point":
             aux = m.role == "auxiliary" or ("." in m.name and not m.label)
             r = st.aux_point_radius if aux else st.point_radius
-            cx, cy = vp.xy(*m.geom)
-            yield "points", f'<circle{idattr} class="pt {cls}', f'" cx="{cx}" cy="{cy}" r="{fmt(r)}"/>'
+            yield "points", f.circle(center=vp.xy(*m.geom), r=fmt(r), class_=f"pt {cls}", **ids)
             if st.name_tags and not m.label:
                 # Shown only while its step is the current one (CSS), so it takes no place from the letters.
                 tx, ty = vp.px(*m.geom)
-                tag = xml_text(m.name.rsplit(".", 1)[-1])
-                tid = f' id="{xml_attr(mid)}-tag"' if mid else ""
-                yield ("labels", f'<text{tid} class="lb tag',
-                       f'" x="{fmt(tx + 0.6 * st.label_size)}" y="{fmt(ty - 0.5 * st.label_size)}">{tag}</text>')
+                tid = {"id": f"{mid}-tag"} if mid else {}
+                yield "labels", f.text(m.name.rsplit(".", 1)[-1], x=[fmt(tx + 0.6 * st.label_size)],
+                                       y=[fmt(ty - 0.5 * st.label_size)], class_="lb tag", **tid)
             if m.label:
                 box = self._place_label(m, vp, placed)
                 if box is not None:
-                    lx, ly = box
-                    lid = f' id="{xml_attr(mid)}-label"' if mid else ""
-                    yield "labels", f'<text{lid} class="lb', f'" x="{fmt(lx)}" y="{fmt(ly)}">{xml_text(m.label)}</text>'
+                    lid = {"id": f"{mid}-label"} if mid else {}
+                    yield "labels", f.text(m.label, x=[fmt(box[0])], y=[fmt(box[1])], class_="lb", **lid)
             return
         layer = "results" if m.role == "result" else "construction"
         g = m.geom
         if m.kind == "segment":
-            x1, y1 = vp.xy(g[0], g[1])
-            x2, y2 = vp.xy(g[2], g[3])
-            yield layer, f'<line{idattr} class="{cls}', f'" x1="{x1}" y1="{y1}" x2="{x2}" y2="{y2}"/>'
+            yield layer, f.line(start=vp.xy(g[0], g[1]), end=vp.xy(g[2], g[3]), class_=cls, **ids)
         elif m.kind == "circle":
-            cx, cy = vp.xy(g[0], g[1])
-            yield layer, f'<circle{idattr} class="{cls}', f'" cx="{cx}" cy="{cy}" r="{vp.length(g[2])}"/>'
+            yield layer, f.circle(center=vp.xy(g[0], g[1]), r=vp.length(g[2]), class_=cls, **ids)
         elif m.kind == "arc":
-            yield layer, f'<path{idattr} class="{cls}', f'" d="{arc_path(vp, *g)}"/>'
+            yield layer, f.path(d=arc_path(vp, *g), class_=cls, **ids)
         elif m.kind == "curve":
-            yield layer, f'<path{idattr} class="{cls}', f'" d="{curve_path(vp, g)}"/>'
+            yield layer, f.path(d=curve_path(vp, g), class_=cls, **ids)
         elif m.kind == "area":
-            yield "areas", f'<path{idattr} class="area {cls}', f'" d="{polygon_path(vp, g)}"/>'
+            yield "areas", f.path(d=polygon_path(vp, g), class_=f"area {cls}", **ids)
             if st.hatch:
                 d = hatch_path(vp, g, st.hatch_spacing)
                 if d:
-                    hid = f' id="{xml_attr(mid)}-hatch"' if mid else ""
-                    yield "areas", f'<path{hid} class="hatch', f'" d="{d}"/>'
+                    hid = {"id": f"{mid}-hatch"} if mid else {}
+                    yield "areas", f.path(d=d, class_="hatch", **hid)
 
     def _place_label(self, m: Mark, vp: Viewport, placed: list) -> tuple[float, float] | None:
         # Letters go radially outwards (below the stroke line for points on it);
@@ -341,57 +356,75 @@ class Drawing:
                 return lx, ly
         return None
 
-    # -- output -----------------------------------------------------------------------
-    def header(self, height: float | None = None, extra_css: str = "") -> str:
+    # -- documents --------------------------------------------------------------------
+    def document(self, *, height: float | None = None, extra_css: str = "", **attrs: Any) -> Any:
+        """An svgwrite Drawing of this canvas with the style sheet and the paper (the caller adds the rest)."""
         vp, st = self.vp, self.style
         h = fmt(vp.height if height is None else height)
         w = fmt(vp.width)
         css = st.css() + ("\n" + extra_css if extra_css else "")
-        return (f'<?xml version="1.0" encoding="utf-8"?>\n'
-                f'<svg xmlns="http://www.w3.org/2000/svg" version="1.1" width="{w}" height="{h}" '
-                f'viewBox="0 0 {w} {h}">\n<style>\n{css}\n</style>\n'
-                f'<rect id="background" x="0" y="0" width="{w}" height="{h}" fill="{xml_attr(st.background)}"/>\n')
+        f = self.doc.factory
+        dwg = self.doc.drawing(size=(w, h), viewBox=f"0 0 {w} {h}", **attrs)
+        dwg.add(f.style("\n" + css + "\n"))
+        dwg.add(f.rect(insert=("0", "0"), size=(w, h), id="background", fill=st.background))
+        return dwg
 
-    def layer_elements(self, name: str, k: int, *, mark_steps: bool) -> list[str]:
-        """The elements of layer *name* for steps 1..k; ``cur``/``old`` classes when *mark_steps*."""
-        items = self.layers[name]
-        end = bisect.bisect_right(self._steps[name], k)
-        if not mark_steps:
-            return [head + tail for _, head, tail in items[:end]]
-        old = " old" if self.style.earlier_opacity < 1.0 else ""
-        return [head + (" cur" if s == k else old) + tail for s, head, tail in items[:end]]
+    def step_group(self, k: int, elems: Sequence[Any], cls: str = "", **attrs: Any) -> Any:
+        """Step k's elements of one layer: ``<g class="step ..." data-step="k">``."""
+        g = self.doc.factory.g(class_=f"step {cls}".rstrip(), **{"data-step": str(k)}, **attrs)
+        for e in elems:
+            g.add(e)
+        return g
 
-    def body(self, k: int, *, mark_steps: bool) -> str:
-        out = []
+    def step_runs(self, name: str, k: int) -> list[tuple[int, list[Any]]]:
+        """Layer *name*'s (step, elements) for steps 1..k."""
+        return self.groups[name][:bisect.bisect_right(self._steps[name], k)]
+
+    def layer(self, name: str, k: int, *, mark_steps: bool) -> Any:
+        """``<g id="name">`` with the step groups of steps 1..k; ``cur``/``old`` on them when *mark_steps*."""
+        old = "old" if self.style.earlier_opacity < 1.0 else ""
+        g = self.doc.factory.g(id=name)
+        for s, elems in self.step_runs(name, k):
+            g.add(self.step_group(s, elems, ("cur" if s == k else old) if mark_steps else ""))
+        return g
+
+    def body(self, k: int, *, mark_steps: bool) -> list[Any]:
+        """The layers of steps 1..k (clipped to the drawing when this is a region view)."""
+        f = self.doc.factory
+        out: list[Any] = []
+        parent = None
         if self.region is not None:
             # a part of the figure: nothing may stray into the caption
             m = self.style.margin_px
             h = self.vp.height - 2 * m - self.n_caption * 1.45 * self.style.caption_size
-            out.append(f'<clipPath id="drawing-clip"><rect x="0" y="0" width="{fmt(self.vp.width)}" '
-                       f'height="{fmt(h + 1.5 * m)}"/></clipPath>\n<g clip-path="url(#drawing-clip)">\n')
+            clip = f.clipPath(id="drawing-clip")
+            clip.add(f.rect(insert=("0", "0"), size=(fmt(self.vp.width), fmt(h + 1.5 * m))))
+            parent = f.g(clip_path="url(#drawing-clip)")
+            out += [clip, parent]
         for name in self.LAYERS:
-            elems = self.layer_elements(name, k, mark_steps=mark_steps)
-            if elems or name in ("construction", "results", "points", "labels"):
-                out.append(f'<g id="{name}">\n' + "".join(e + "\n" for e in elems) + "</g>\n")
-        if self.region is not None:
-            out.append("</g>\n")
-        return "".join(out)
+            if self._steps[name] or name != "areas":
+                layer = self.layer(name, k, mark_steps=mark_steps)
+                if parent is not None:
+                    parent.add(layer)
+                else:
+                    out.append(layer)
+        return out
 
-    def caption_svg(self, lines: Sequence[tuple[str, str]], *, centred: bool = False) -> str:
-        """Caption lines (class suffix, text) at the foot of the figure."""
+    def caption_group(self, lines: Sequence[tuple[str, str]], *, centred: bool = False, **attrs: Any) -> Any | None:
+        """Caption lines (class suffix, text) at the foot of the figure: ``<g id="caption">``."""
         st, vp = self.style, self.vp
         if not lines:
-            return ""
+            return None
         step = 1.45 * st.caption_size
         y = vp.height - st.margin_px * 0.6 - (len(lines) - 1) * step
         x = vp.width / 2 if centred else st.margin_px
         mid = " mid" if centred else ""
-        out = ['<g id="caption">\n']
+        f = self.doc.factory
+        g = f.g(**{"id": "caption", **attrs})
         for i, (kind, text) in enumerate(lines):
             cls = f"cap{(' ' + kind) if kind else ''}{mid}"
-            out.append(f'<text class="{cls}" x="{fmt(x)}" y="{fmt(y + i * step)}">{xml_text(text)}</text>\n')
-        out.append("</g>\n")
-        return "".join(out)
+            g.add(f.text(text, x=[fmt(x)], y=[fmt(y + i * step)], class_=cls))
+        return g
 
     def frame_caption_lines(self, k: int) -> list[tuple[str, str]]:
         st = self.style
@@ -403,6 +436,14 @@ class Drawing:
         lines += [("de", t) for t in wrap(de, width, st.caption_size)]
         lines += [("en", t) for t in wrap(en, width, st.caption_size)]
         return lines
+
+    def title_lines(self, caption: Sequence[str] | None = None) -> list[tuple[str, str]]:
+        """The figure's caption lines (German first, then English), wrapped to the canvas."""
+        st = self.style
+        width = st.width_px - 2 * st.margin_px
+        lines = list(caption if caption is not None else self.scene.title)
+        return [("de" if i == 0 else "en", t) for i, line in enumerate(lines)
+                for t in wrap(line, width, st.caption_size)]
 
     def view(self, k: int) -> "Drawing":
         """The drawing frame k is drawn with: this one, or (progressive zoom) one showing the stage so far."""
@@ -418,39 +459,51 @@ class Drawing:
         return self._regions[key]
 
     def frame(self, k: int) -> str:
-        """Frame k: steps 1..k, the current one marked, with its caption."""
+        """Frame k, a view of the layered figure: steps 1..k, the current one marked, with its caption."""
         k = max(0, min(k, len(self.scene.steps)))
         view = self.view(k)
         if view is not self:
             return view.frame(k)
-        parts = [self.header(), self.body(k, mark_steps=True)]
+        dwg = self.document()
+        for e in self.body(k, mark_steps=True):
+            dwg.add(e)
         if self.style.zoom_below > 0 and k > 0:
-            parts.append(self.inset(k))
+            inset = self.inset(k)
+            if inset is not None:
+                dwg.add(inset)
         if self.style.show_caption:
-            parts.append(self.caption_svg(self.frame_caption_lines(k)))
-        return "".join(parts) + "</svg>\n"
+            cap = self.caption_group(self.frame_caption_lines(k))
+            if cap is not None:
+                dwg.add(cap)
+        return self.doc.text(dwg)
+
+    def layered(self, caption: Sequence[str] | None = None, *, centred: bool = False) -> str:
+        """The canonical figure: every step a ``data-step`` group, nothing highlighted, the figure's caption.
+
+        Still renderers show the whole figure; frame k is the view of steps 1..k.
+        """
+        dwg = self.document()
+        for e in self.body(len(self.scene.steps), mark_steps=False):
+            dwg.add(e)
+        if self.style.show_caption:
+            cap = self.caption_group(self.title_lines(caption), centred=centred)
+            if cap is not None:
+                dwg.add(cap)
+        return self.doc.text(dwg)
 
     def final(self, caption: Sequence[str] | None = None, *, centred: bool = False) -> str:
-        """All steps, nothing highlighted, with the figure's caption lines."""
-        lines = list(caption if caption is not None else self.scene.title)
-        st = self.style
-        width = st.width_px - 2 * st.margin_px
-        wrapped = [("de" if i == 0 else "en", t) for i, line in enumerate(lines)
-                   for t in wrap(line, width, st.caption_size)]
-        parts = [self.header(), self.body(len(self.scene.steps), mark_steps=False)]
-        if st.show_caption:
-            parts.append(self.caption_svg(wrapped, centred=centred))
-        return "".join(parts) + "</svg>\n"
+        """All steps, nothing highlighted, with the figure's caption lines (the layered figure)."""
+        return self.layered(caption, centred=centred)
 
     # -- magnified inset -------------------------------------------------------------
-    def inset(self, k: int) -> str:
+    def inset(self, k: int) -> Any | None:
         """A magnified view of the current group when it is tiny in the whole figure (teaching)."""
         box = self.scene.group_box(k, self.style.zoom_below, self.region)
         if box is None:
-            return ""
+            return None
         size = max(box[2] - box[0], box[3] - box[1])
         if size <= 0:
-            return ""
+            return None
         pad = 0.25 * size
         cx, cy = (box[0] + box[2]) / 2, (box[1] + box[3]) / 2
         half = size / 2 + pad
@@ -461,26 +514,31 @@ class Drawing:
         px0 = vp.width - m - side
         py0 = m
         win = Viewport.window(region, (px0, py0, px0 + side, py0 + side))
-        parts = [f'<g id="inset">\n<clipPath id="inset-clip"><rect x="{fmt(px0)}" y="{fmt(py0)}" '
-                 f'width="{fmt(side)}" height="{fmt(side)}"/></clipPath>\n'
-                 f'<rect class="inset" x="{fmt(px0)}" y="{fmt(py0)}" width="{fmt(side)}" height="{fmt(side)}"/>\n'
-                 f'<g clip-path="url(#inset-clip)">\n']
-        old = " old" if self.style.earlier_opacity < 1.0 else ""
+        f = self.doc.factory
+        corner, square = (fmt(px0), fmt(py0)), (fmt(side), fmt(side))
+        out = f.g(id="inset")
+        clip = f.clipPath(id="inset-clip")
+        clip.add(f.rect(insert=corner, size=square))
+        out.add(clip)
+        out.add(f.rect(insert=corner, size=square, class_="inset"))
+        inner = f.g(clip_path="url(#inset-clip)")
+        old = "old" if self.style.earlier_opacity < 1.0 else ""
         placed: list = []
-        by_layer: dict[str, list[str]] = {name: [] for name in self.LAYERS}
-        for m in self.scene.marks:
-            if m.step > k:
+        by_layer: dict[str, list[tuple[int, Any]]] = {name: [] for name in self.LAYERS}
+        for mk in self.scene.marks:
+            if mk.step > k:
                 break
-            if not _near(m, region):
+            if not _near(mk, region):
                 continue
-            for layer, head, tail in self._elements(m, win, placed, None):
-                by_layer[layer].append(head + (" cur" if m.step == k else old) + tail)
+            for layer, elem in self._elements(mk, win, placed, None):
+                by_layer[layer].append((mk.step, elem))
         for name in self.LAYERS:
-            parts.extend(e + "\n" for e in by_layer[name])
+            for s, elem in by_layer[name]:
+                inner.add(self.step_group(s, [elem], "cur" if s == k else old))
+        out.add(inner)
         zoom = win.scale / vp.scale
-        parts.append(f'</g>\n<text class="cap grp" x="{fmt(px0 + 6)}" y="{fmt(py0 + side - 6)}">'
-                     f'{xml_text(f"× {zoom:.0f}")}</text>\n</g>\n')
-        return "".join(parts)
+        out.add(f.text(f"× {zoom:.0f}", x=[fmt(px0 + 6)], y=[fmt(py0 + side - 6)], class_="cap grp"))
+        return out
 
 
 def _near(m: Mark, region: tuple[float, float, float, float]) -> bool:

@@ -34,8 +34,9 @@ def figures():
 
 
 def _texts(svg: str) -> list[str]:
+    """The letters and words of an SVG (not the paper-coloured halos beneath them)."""
     root = ET.fromstring(svg.encode("utf-8"))
-    return ["".join(t.itertext()) for t in root.iter(f"{SVG}text")]
+    return ["".join(t.itertext()) for t in root.iter(f"{SVG}text") if "halo" not in (t.get("class") or "")]
 
 
 def _result_letters(fig, names=None) -> set[str]:

@@ -321,10 +321,15 @@ def crank_angle_plate(fig: Figure) -> dict:
         ux, uy = _unit(O, W)
         minutes = round(math.degrees(w) * 60.0)
         text = f"{minutes // 60}°{minutes % 60:02d}′"
+        # the value along its radius, reading outwards on the right and inwards on the left
+        along = math.degrees(math.atan2(uy, ux))
+        along = along - 180.0 if along > 90.0 else along
+        side = 0.035 * r
         out += [{"kind": "stroke", "a": tuple(O), "b": tuple(W), "look": "thin"},
                 {"kind": "angle", "centre": tuple(O), "start": tuple(D0), "end": tuple(W),
-                 "radius": (0.16 + 0.6 * j / m) * r * 0.75,
-                 "text": text, "text_at": (O[0] + 1.22 * r * ux, O[1] + 1.22 * r * uy)}]
+                 "radius": (0.12 + 0.45 * j / m) * r},
+                {"kind": "lettering", "at": (O[0] + 0.8 * r * ux - side * uy, O[1] + 0.8 * r * uy + side * ux),
+                 "text": text, "angle": along, "size": 0.9}]
     looks = {"axis": "centre", **{f"rod{j}": "thin" for j in range(m + 1)}}
     return {"looks": looks, "furniture": out}
 

@@ -74,7 +74,7 @@ def scene_for(construction: Construction, figure: Figure, *, plate: bool = False
 _BOOK_PARAMS = {
     "rod_ratio": ("L/r = {v}", "L/r = {v}"),
     "pressure_ratio": ("F/f = {v}", "F/f = {v}"),
-    "pressure_unit": ("1 kg/cm² ≙ {v} r", "1 kg/cm² drawn as {v} r"),
+    "pressure_unit": ("1 kg/cm² als {v} r gezeichnet", "1 kg/cm² drawn as {v} r"),
     "parts": ("{v} Teile", "{v} parts"),
     "divisions": ("Hub in {v} Teilen", "stroke in {v} parts"),
 }

@@ -23,7 +23,7 @@ angle, size), scale (origin, end, text), sign (at, text).
 
 Every value written on a plate is read off the constructed figure (the
 construction's own points), never from the formula the checks compare with.
-:func:`furniture_svg` draws the items in a style; all lettering gets a
+:func:`furniture_elements` draws the items in a style; all lettering gets a
 paper-coloured halo, so that no line strikes through a letter.
 
 >>> d = Dimension((0.0, 0.0), (2.0, 0.0), "s", offset=-0.3)
@@ -41,7 +41,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping, Sequence
 
 __all__ = ["Plate", "Dimension", "AngleArc", "Stroke", "Lettering", "ScaleBar", "Sign", "dms", "extent",
-           "furniture_svg", "LOOKS_CSS", "plate_of"]
+           "furniture_elements", "LOOKS_CSS", "plate_of"]
 
 XY = tuple[float, float]
 
@@ -215,49 +215,50 @@ def _f(v: float) -> str:
     return "0" if text in ("-0", "") else text
 
 
-def _esc(text: str) -> str:
-    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+def furniture_elements(items: Sequence[Any], px: Callable[[float, float], XY], scale: float, f: Any, *,
+                       size: float = 12.0) -> list[Any]:
+    """The furniture as svgwrite elements made by the factory *f* (pixels through *px*, *scale* px per unit).
 
-
-def furniture_svg(items: Sequence[Any], px: Callable[[float, float], XY], scale: float, *,
-                  size: float = 12.0) -> str:
-    """The furniture as one ``<g id="plate">`` (pixel coordinates through *px*, *scale* px per unit).
-
-    Classes: ``fur`` (lines), ``fur heavy`` etc. (looks), ``arrow`` (filled heads), ``lb fur-text``
-    (lettering, with the halo of the style's ``.lb``).
+    Classes: ``fur`` (lines, with a look: ``fur heavy``), ``arrow`` (filled heads), ``lb fur-text``
+    (lettering), each letter on a ``lb halo`` copy of itself in paper colour.
     """
-    if not items:
-        return ""
-    out = ['<g id="plate">\n']
-    for i, it in enumerate(items):
-        out.extend(_item(it, px, scale, size, i))
-    out.append("</g>\n")
-    return "".join(out)
+    out: list[Any] = []
+    for it in items:
+        out.extend(_item(it, px, scale, size, f))
+    return out
 
 
-def _line(a: XY, b: XY, cls: str = "fur") -> str:
-    return f'<line class="{cls}" x1="{_f(a[0])}" y1="{_f(a[1])}" x2="{_f(b[0])}" y2="{_f(b[1])}"/>\n'
+def _line(f: Any, a: XY, b: XY, cls: str = "fur") -> Any:
+    return f.line(start=(_f(a[0]), _f(a[1])), end=(_f(b[0]), _f(b[1])), class_=cls)
 
 
-def _arrow(tip: XY, frm: XY, size: float) -> str:
+def _poly(f: Any, pts: Sequence[XY], cls: str, close: bool = False) -> Any:
+    return f.path(d="M" + "L".join(f"{_f(x)} {_f(y)}" for x, y in pts) + ("Z" if close else ""), class_=cls)
+
+
+def _arrow(f: Any, tip: XY, frm: XY, size: float) -> Any:
     """A filled arrowhead at *tip* pointing away from *frm* (pixels)."""
     dx, dy = tip[0] - frm[0], tip[1] - frm[1]
     n = math.hypot(dx, dy) or 1.0
     ux, uy = dx / n, dy / n
     L, W = 0.75 * size, 0.22 * size
     bx, by = tip[0] - L * ux, tip[1] - L * uy
-    return (f'<path class="arrow" d="M{_f(tip[0])} {_f(tip[1])}L{_f(bx - W * uy)} {_f(by + W * ux)}'
-            f'L{_f(bx + W * uy)} {_f(by - W * ux)}Z"/>\n')
+    return _poly(f, [tip, (bx - W * uy, by + W * ux), (bx + W * uy, by - W * ux)], "arrow", close=True)
 
 
-def _text(at: XY, text: str, size: float, anchor: str = "middle", angle: float = 0.0, rel: float = 1.0) -> str:
-    rot = f' transform="rotate({_f(-angle)} {_f(at[0])} {_f(at[1])})"' if angle else ""
-    fs = f' style="font-size:{_f(size * rel)}px"' if rel != 1.0 else ""
-    return (f'<text class="lb fur-text" text-anchor="{anchor}" x="{_f(at[0])}" y="{_f(at[1] + 0.35 * size * rel)}"'
-            f'{rot}{fs}>{_esc(text)}</text>\n')
+def _text(f: Any, at: XY, text: str, size: float, anchor: str = "middle", angle: float = 0.0,
+          rel: float = 1.0) -> list[Any]:
+    attrs: dict[str, Any] = {"x": [_f(at[0])], "y": [_f(at[1] + 0.35 * size * rel)]}
+    if anchor != "middle":
+        attrs["text_anchor"] = anchor
+    if angle:
+        attrs["transform"] = f"rotate({_f(-angle)} {_f(at[0])} {_f(at[1])})"
+    if rel != 1.0:
+        attrs["style"] = f"font-size:{_f(size * rel)}px"
+    return [f.text(text, class_="lb halo", **attrs), f.text(text, class_="lb fur-text", **attrs)]
 
 
-def _item(it: Any, px: Callable[[float, float], XY], scale: float, size: float, i: int) -> list[str]:
+def _item(it: Any, px: Callable[[float, float], XY], scale: float, size: float, f: Any) -> list[Any]:
     if isinstance(it, Dimension):
         nx, ny = _normal(it.a, it.b)
         o = it.offset
@@ -270,57 +271,64 @@ def _item(it: Any, px: Callable[[float, float], XY], scale: float, size: float, 
             for p, q in ((a, a2), (b, b2)):
                 dx, dy = q[0] - p[0], q[1] - p[1]
                 n = math.hypot(dx, dy) or 1.0
-                out.append(_line((p[0] + 3 * dx / n, p[1] + 3 * dy / n), (q[0] + 4 * dx / n, q[1] + 4 * dy / n), "fur thin"))
-        out.append(_line(a2, b2, "fur dim"))
-        out.append(_arrow(a2, b2, size))
-        out.append(_arrow(b2, a2, size))
+                out.append(_line(f, (p[0] + 3 * dx / n, p[1] + 3 * dy / n), (q[0] + 4 * dx / n, q[1] + 4 * dy / n),
+                                 "fur thin"))
         mid = ((a2[0] + b2[0]) / 2, (a2[1] + b2[1]) / 2)
+        # the dimension line stops either side of its text, as a draftsman leaves room for the figure
+        length = math.hypot(b2[0] - a2[0], b2[1] - a2[1]) or 1.0
+        gap = min(0.5 * length - 1.0, 0.33 * size * len(it.text) + 0.4 * size)
+        ux, uy = (b2[0] - a2[0]) / length, (b2[1] - a2[1]) / length
+        out += [_line(f, a2, (mid[0] - gap * ux, mid[1] - gap * uy), "fur"),
+                _line(f, (mid[0] + gap * ux, mid[1] + gap * uy), b2, "fur"),
+                _arrow(f, a2, b2, size), _arrow(f, b2, a2, size)]
         ang = math.degrees(math.atan2(-(b2[1] - a2[1]), b2[0] - a2[0]))
         if ang > 90 or ang < -90:
             ang += 180
-        # the text sits on the dimension line, its halo opening the line for it
-        out.append(_text(mid, it.text, size, "middle", ang))
-        return out
+        if ang > 180:
+            ang -= 360
+        # the text sits on the dimension line; its halo opens the line for it
+        return out + _text(f, mid, it.text, size, "middle", ang)
     if isinstance(it, AngleArc):
         angles = _arc_angles(it, 33)
         cx, cy = it.centre
         pts = [px(cx + it.radius * math.cos(t), cy + it.radius * math.sin(t)) for t in angles]
-        d = "M" + "L".join(f"{_f(x)} {_f(y)}" for x, y in pts)
-        out = [f'<path class="fur thin" d="{d}"/>\n', _arrow(pts[-1], pts[-2], 0.8 * size)]
+        out = [_poly(f, pts, "fur thin"), _arrow(f, pts[-1], pts[-3], 0.7 * size)]
         if it.text:
             if it.text_at:
                 at = px(*it.text_at)
             else:
                 t = angles[len(angles) // 2]
-                at = px(cx + (it.radius + 10.0 / scale) * math.cos(t), cy + (it.radius + 10.0 / scale) * math.sin(t))
-            out.append(_text(at, it.text, size, "middle", 0.0, 0.85))
+                rr = it.radius + 10.0 / scale
+                at = px(cx + rr * math.cos(t), cy + rr * math.sin(t))
+            out += _text(f, at, it.text, size, "middle", 0.0, 0.85)
         return out
     if isinstance(it, Stroke):
         a, b = px(*it.a), px(*it.b)
-        out = [_line(a, b, f"fur {it.look}")]
+        out = [_line(f, a, b, f"fur {it.look}")]
         if it.broken:
-            # the break: a short zig-zag across the end
+            # the break: a short zig-zag across the end of a part longer than the sheet
             nx, ny = _normal(a, b)
             dx, dy = b[0] - a[0], b[1] - a[1]
             n = math.hypot(dx, dy) or 1.0
             ux, uy = dx / n, dy / n
             h = 0.5 * size
-            zig = [(b[0] - h * nx, b[1] - h * ny), (b[0] - 0.3 * h * ux + 0.2 * h * nx, b[1] - 0.3 * h * uy + 0.2 * h * ny),
-                   (b[0] + 0.3 * h * ux - 0.2 * h * nx, b[1] + 0.3 * h * uy - 0.2 * h * ny), (b[0] + h * nx, b[1] + h * ny)]
-            out.append('<path class="fur thin" d="M' + "L".join(f"{_f(x)} {_f(y)}" for x, y in zig) + '"/>\n')
+            zig = [(b[0] - h * nx, b[1] - h * ny),
+                   (b[0] - 0.3 * h * ux - 0.2 * h * nx, b[1] - 0.3 * h * uy - 0.2 * h * ny),
+                   (b[0] + 0.3 * h * ux + 0.2 * h * nx, b[1] + 0.3 * h * uy + 0.2 * h * ny),
+                   (b[0] + h * nx, b[1] + h * ny)]
+            out.append(_poly(f, zig, "fur"))
         return out
     if isinstance(it, ScaleBar):
         a, b = px(*it.origin), px(*it.end)
         nx, ny = _normal(a, b)
         t = 0.35 * size
-        out = [_line(a, b, "fur medium"),
-               _line((a[0] - t * nx, a[1] - t * ny), (a[0] + t * nx, a[1] + t * ny), "fur medium"),
-               _line((b[0] - t * nx, b[1] - t * ny), (b[0] + t * nx, b[1] + t * ny), "fur medium")]
+        out = [_line(f, a, b, "fur medium"),
+               _line(f, (a[0] - t * nx, a[1] - t * ny), (a[0] + t * nx, a[1] + t * ny), "fur medium"),
+               _line(f, (b[0] - t * nx, b[1] - t * ny), (b[0] + t * nx, b[1] + t * ny), "fur medium")]
         mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
-        out.append(_text((mid[0] + 0.6 * size, mid[1]), it.text, size, "start", 0.0, 0.85))
-        return out
+        return out + _text(f, (mid[0] + 0.6 * size, mid[1]), it.text, size, "start", 0.0, 0.85)
     if isinstance(it, Lettering):
-        return [_text(px(*it.at), it.text, size, it.anchor, it.angle, it.size)]
+        return _text(f, px(*it.at), it.text, size, it.anchor, it.angle, it.size)
     if isinstance(it, Sign):
-        return [_text(px(*it.at), it.text, size, "middle", 0.0, 2.0)]
+        return _text(f, px(*it.at), it.text, size, "middle", 0.0, 2.0)
     return []

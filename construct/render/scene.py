@@ -111,25 +111,27 @@ class Scene:
         return cached
 
     # -- what a teaching frame shows at strength ----------------------------------------
-    def state(self, m: Mark, k: int) -> str:
-        """How mark *m* looks in frame *k*: "cur", "old", "done" (faded) or "" (not yet drawn).
+    def fade_end(self, step: int) -> int | None:
+        """The last step of the group whose end fades *step*'s marks, or None if they stay at strength.
 
         A group the student has finished collapses to its result: once the
         group at depth two around a step is complete (one trisection, the rod
-        arcs of one point), its helpers fade ("done"); the results, and the
-        curves that locate them (the rod arc back onto the stroke), stay at the
-        strength of the earlier steps ("old").  k = len(steps) + 1 is the
-        final figure: every group finished.
+        arcs of one point), its helpers fade; the results, and the curves that
+        locate them (the rod arc back onto the stroke), stay.
         """
-        if m.step == k:
-            return "cur"
-        if m.step > k:
-            return ""
-        return "done" if self.fades(m, k) else "old"
+        if self._keeps[step - 1]:
+            return None
+        end = self._ends[step - 1]
+        return end if end <= len(self.steps) else None
 
-    def fades(self, m: Mark, k: int) -> bool:
-        """Is mark *m* faded in frame *k* (its group finished and it is not a result or what locates one)?"""
-        return m.step < k and self._ends[m.step - 1] < k and not (m.role == "result" or m.name in self._locating)
+    def faded(self, step: int, k: int) -> bool:
+        """Is *step* faded in frame *k* (k = len(steps) + 1: the final figure, every group finished)?"""
+        end = self.fade_end(step)
+        return end is not None and step < k and end < k
+
+    def step_of(self, name: str) -> int | None:
+        m = self._drawn.get(name)
+        return m.step if m is not None else None
 
     @functools.cached_property
     def _ends(self) -> list[int]:
@@ -149,13 +151,24 @@ class Scene:
 
     @functools.cached_property
     def _locating(self) -> frozenset[str]:
-        """Results and the curves their steps intersect: what a finished group collapses to."""
-        out = set()
+        """What a finished group collapses to: results, lettered points, the curves a result
+        step cuts (the rod arc back onto the stroke) and the points those curves are drawn from
+        (the crosshead the arc is struck about)."""
+        makers = {n: s for s in self.steps for n in s.outputs}
+        out = {m.name for m in self.marks if m.label}
         for s in self.steps:
             if s.role == "result":
                 out.update(s.outputs)
-                out.update(s.inputs)
+                for n in s.inputs:
+                    out.add(n)
+                    if n in makers and makers[n].op.startswith("circle"):
+                        out.update(makers[n].inputs[:1])
         return frozenset(out)
+
+    @functools.cached_property
+    def _keeps(self) -> list[bool]:
+        loc = self._locating
+        return [s.role in ("result", "given") or not s.group or any(o in loc for o in s.outputs) for s in self.steps]
 
     def inputs(self, k: int) -> frozenset[str]:
         """The objects step k's instrument is set on (centre, through point, the curves it cuts)."""
@@ -450,7 +463,8 @@ def _break(marks: list[Mark]) -> tuple[list[Mark], tuple[tuple[float, float, flo
         elif m.kind in ("curve", "area"):
             g = tuple((sx(x), y) for x, y in g)
         out.append(m if g is m.geom else dataclasses.replace(m, geom=g))
-    return out, ((lo, keep, hi - lo),)
+    # the left stretch now ends at hi - keep: the kept piece of the broken axis is [hi - keep, hi]
+    return out, ((hi - keep, keep, hi - lo),)
 
 
 def plate_names(protocol: Protocol, objects: Replay) -> set[str]:

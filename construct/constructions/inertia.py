@@ -705,7 +705,7 @@ def inertia_plate(fig: Figure) -> dict:
         {"kind": "dimension", "a": tuple(D0), "b": tuple(E), "text": "F/f", "offset": 0.12 * r},
         {"kind": "dimension", "a": tuple(foot5), "b": tuple(q5), "text": "m", "offset": -0.1 * r},
         {"kind": "lettering", "at": (on_inf[0] + 0.06 * r, on_inf[1] + 0.09 * r), "text": "L = ∞", "angle": slope},
-        {"kind": "scale", "origin": (D1[0] + 0.3 * r, 0.0), "end": (D1[0] + 0.3 * r, unit), "text": "1 kg/cm²"},
+        {"kind": "scale", "origin": (D1[0] + 0.2 * r, 0.0), "end": (D1[0] + 0.2 * r, unit), "text": "1 kg/cm²"},
         {"kind": "sign", "at": (up[0], 0.4 * up[1]), "text": "+"},
         {"kind": "sign", "at": (down[0], 0.4 * down[1]), "text": "−"},
     ]

@@ -78,9 +78,16 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
             if marks_steps and style.highlight:
                 timing.append(f.set(attributeName="class", to="step cur", begin=f"clock.begin+{fmt(start)}s",
                                     dur=f"{fmt(dt)}s"))
+            end = d.scene.fade_end(k) if style.done_opacity < 1.0 else None
             if marks_steps and style.earlier_opacity < 1.0 and k < n:
-                timing.append(f.set(attributeName="class", to="step old", begin=f"clock.begin+{fmt(k * dt)}s",
-                                    dur=f"{fmt((n - k) * dt)}s"))
+                # old until its group is finished, then faded to the end of the play (its results stay)
+                until = n if end is None else end
+                if until > k:
+                    timing.append(f.set(attributeName="class", to="step old", begin=f"clock.begin+{fmt(k * dt)}s",
+                                        dur=f"{fmt((until - k) * dt)}s"))
+            if end is not None and end >= k:
+                timing.append(f.set(attributeName="class", to="step done", begin=f"clock.begin+{fmt(end * dt)}s",
+                                    dur=f"{fmt(total - end * dt)}s"))
             lg.add(d.step_group(k, timing + list(elems), id=f"{layer}-{k}"))
         dwg.add(lg)
     # Captions: each step's while it is drawn, the figure's title otherwise (and in still renderers).

@@ -26,14 +26,16 @@ from __future__ import annotations
 import math
 from typing import Iterable
 
-__all__ = ["place", "label_box", "RANK"]
+__all__ = ["place", "label_box", "RANK", "LEADER_FROM"]
 
 #: Rank of a role: lower is placed first and is never dropped (0).
 RANK = {"result": 0, "given": 1}
 
 #: Directions tried, as turns from the preferred one (degrees), and distances in letter heights.
 _TURNS = (0, 35, -35, 70, -70, 110, -110, 180, 145, -145)
-_DISTANCES = (0.9, 1.45, 2.1)
+_DISTANCES = (0.9, 1.45, 2.1, 2.8, 3.6)
+#: From this distance (letter heights) on, a letter is tied to its point by a leader line.
+LEADER_FROM = 2.0
 
 
 def label_box(x: float, y: float, text: str, size: float) -> tuple[float, float, float, float]:
@@ -66,8 +68,11 @@ class _Grid:
 
 
 def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float, float], str]],
-          size: float, dots: Iterable[tuple[float, float]] = ()) -> dict[str, tuple[float, float]]:
-    """Baseline positions (pixels) for letters: {id: (x, y)}.
+          size: float, dots: Iterable[tuple[float, float]] = ()) -> dict[str, tuple[float, float, float]]:
+    """Baseline positions (pixels) for letters: {id: (x, y, distance in letter heights)}.
+
+    A letter set farther than :data:`LEADER_FROM` letter heights from its point gets a
+    leader line from the renderer, so that it is never read as another point's.
 
     *items*: (id, role, step, point in pixels, preferred direction (dx, dy) in the
     drawing's y-up sense, text).  *dots*: other points (pixels) a letter should not cover.
@@ -90,9 +95,9 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                 ly = py + dist * size * math.sin(a) + 0.35 * size
                 box = label_box(lx, ly, text, size)
                 if first is None:
-                    first = (lx, ly, box)
+                    first = (lx, ly, box, dist)
                 if grid.free(box):
-                    spot = (lx, ly, box)
+                    spot = (lx, ly, box, dist)
                     break
             if spot:
                 break
@@ -101,5 +106,5 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
         if spot is None:
             continue
         grid.add(spot[2])
-        out[mid] = (spot[0], spot[1])
+        out[mid] = (spot[0], spot[1], spot[3])
     return out

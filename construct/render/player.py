@@ -111,7 +111,8 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         dwg.add(lg)
     svg = d.doc.markup(dwg)
     steps = [{"de": scene.caption(s.index)[0], "en": scene.caption(s.index)[1], "tool": s.tool, "role": s.role,
-              "group": group_caption(scene, s.index), "zoom": _zoom_box(d, s.index)} for s in scene.steps]
+              "group": group_caption(scene, s.index), "zoom": _zoom_box(d, s.index),
+              "inp": sorted(d.input_steps(s.index))} for s in scene.steps]
     data = {"n": n, "steps": steps, "dt": round(1000 * STEP_SECONDS)}
     title = title or scene.title
     giv = givens or {}
@@ -237,7 +238,11 @@ li a.later{color:#bbb}
     k = Math.max(0, Math.min(n, j));
     groups.forEach(function (g) {
       var s = +g.getAttribute("data-step");
-      g.setAttribute("class", "step" + (s > k ? " hid" : (s === k && k < n ? " cur" : (k < n ? " old" : ""))));
+      // earlier steps: an input of step k, faded once their group is finished (data-fade), or old
+      var fade = +(g.getAttribute("data-fade") || 0), inp = k > 0 && k < n ? data.steps[k - 1].inp : [];
+      g.setAttribute("class", "step" + (s > k ? " hid" : (s === k && k < n ? " cur" :
+        (s < k && inp.indexOf(s) >= 0 ? " inp" : (fade && fade < k + (k === n ? 1 : 0) && s < k + (k === n ? 1 : 0) ? " done" :
+        (k < n ? " old" : ""))))));
     });
     links.forEach(function (a) {
       var s = +a.getAttribute("data-k");

@@ -71,6 +71,8 @@ class Scene:
     breaks: tuple[tuple[float, float, float], ...] = ()
     #: Plate furniture (:mod:`construct.render.plate`): dimensions, angle arcs, scale bars, signs.
     furniture: tuple = ()
+    #: What the book plate shows (:func:`plate_names`): what a finished group collapses to.
+    essentials: frozenset = frozenset()
 
     def upto(self, k: int) -> list[Mark]:
         """The marks made by steps 1..k."""
@@ -151,11 +153,14 @@ class Scene:
 
     @functools.cached_property
     def _locating(self) -> frozenset[str]:
-        """What a finished group collapses to: results, lettered points, the curves a result
-        step cuts (the rod arc back onto the stroke) and the points those curves are drawn from
-        (the crosshead the arc is struck about)."""
+        """What a finished group collapses to: lettered points and what the book plate shows
+        (:func:`plate_names`: results, the curves that locate them, their points); without
+        the plate, results, the curves a result step cuts (the rod arc back onto the stroke)
+        and the points those curves are drawn from (the crosshead the arc is struck about)."""
+        out = {m.name for m in self.marks if m.label} | set(self.essentials)
+        if self.essentials:
+            return frozenset(out)
         makers = {n: s for s in self.steps for n in s.outputs}
-        out = {m.name for m in self.marks if m.label}
         for s in self.steps:
             if s.role == "result":
                 out.update(s.outputs)
@@ -406,7 +411,9 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
     bbox = (bx0 - pad, by0 - pad, bx1 + pad, by1 + pad)
     if title is None:
         title = (protocol.construction, protocol.construction)
-    return Scene(tuple(marks), bbox, protocol.steps, title, dict(protocol.params), breaks, tuple(furniture))
+    essentials = frozenset(shown if shown is not None else plate_names(protocol, objects))
+    return Scene(tuple(marks), bbox, protocol.steps, title, dict(protocol.params), breaks, tuple(furniture),
+                 essentials)
 
 
 #: A gap wider than this fraction of the figure, with nothing drawn in it, is broken out of the axis.

@@ -34,6 +34,7 @@ from typing import Any, Mapping, Sequence
 from xml.sax.saxutils import escape as _escape
 
 from . import svgdoc
+from .lettering import LEADER_FROM
 from .scene import Mark, Scene, label_offset_direction
 
 __all__ = ["Style", "PLAIN", "render_svg", "fmt", "Viewport", "Drawing", "xml_text", "xml_attr",
@@ -185,6 +186,7 @@ class Style:
         rules.append(f".brk{{fill:{self.background};stroke:none}}.brkline{{fill:none;stroke:{self.ink};stroke-width:0.8px}}")
         halo = f"fill:{self.background};stroke:{self.background};stroke-width:3.5px;stroke-linejoin:round"
         rules.append(f".lb.halo,.cur>.lb.halo,.inp>.lb.halo{{{halo}}}")
+        rules.append(f".leader,.cur>.leader,.inp>.leader{{fill:none;stroke:{self.ink};stroke-width:0.4px}}")
         return "\n".join(rules)
 
 
@@ -358,6 +360,15 @@ class Drawing:
                 if box is not None:
                     lid = {"id": f"{mid}-label"} if mid else {}
                     xy = dict(x=[fmt(box[0])], y=[fmt(box[1])])
+                    if len(box) > 2 and box[2] >= LEADER_FROM:
+                        # a letter set off from a crowded point is tied to it
+                        px, py = vp.px(*m.geom)
+                        cx, cy = box[0], box[1] - 0.35 * st.label_size
+                        dx, dy = cx - px, cy - py
+                        n = math.hypot(dx, dy) or 1.0
+                        a, b = 0.25 * st.label_size, n - 0.75 * st.label_size
+                        yield "labels", f.line(start=(fmt(px + a * dx / n), fmt(py + a * dy / n)),
+                                               end=(fmt(px + b * dx / n), fmt(py + b * dy / n)), class_="leader")
                     yield "labels", f.text(m.label, class_="lb halo", **xy)
                     yield "labels", f.text(m.label, class_="lb", **lid, **xy)
             return

@@ -90,6 +90,9 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
                                     dur=f"{fmt(total - end * dt)}s"))
             lg.add(d.step_group(k, timing + list(elems), id=f"{layer}-{k}"))
         dwg.add(lg)
+    furniture = d.furniture()  # the broken axis's marks (and a plate's furniture)
+    if furniture is not None:
+        dwg.add(furniture)
     # Captions: each step's while it is drawn, the figure's title otherwise (and in still renderers).
     title_lines = d.title_lines(title or d.scene.title)[: d.n_caption]
     tg = d.caption_group(title_lines, id="title")

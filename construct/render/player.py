@@ -109,6 +109,9 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         for k, elems in d.groups[layer]:
             lg.add(d.step_group(k, elems))
         dwg.add(lg)
+    furniture = d.furniture()  # the broken axis's marks (and a plate's furniture)
+    if furniture is not None:
+        dwg.add(furniture)
     svg = d.doc.markup(dwg)
     steps = [{"de": scene.caption(s.index)[0], "en": scene.caption(s.index)[1], "tool": s.tool, "role": s.role,
               "group": group_caption(scene, s.index), "zoom": _zoom_box(d, s.index),

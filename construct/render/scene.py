@@ -417,7 +417,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
 
 
 #: A gap wider than this fraction of the figure, with nothing drawn in it, is broken out of the axis.
-BREAK_FRACTION = 0.3
+BREAK_FRACTION = 0.2
 #: Width the broken-out stretch keeps, as a fraction of what remains of the figure.
 BREAK_KEEP = 0.07
 

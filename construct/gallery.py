@@ -5,11 +5,11 @@
 
     OUT/<entry>/protocol.json            the protocol (same for both styles)
     OUT/<entry>/checks.md, checks.json    the check report against the analytic formulas
-    OUT/<entry>/<style>/final.svg         historical: the book plate; teaching: the whole construction
-    OUT/<entry>/<style>/steps/NNN.svg     a frame per step (per group above FRAME_BUDGET)
-    OUT/<entry>/<style>/animated.svg      plays the steps without script
-    OUT/<entry>/<style>/player.html       the step player, one file
-    OUT/<entry>/<style>/storyboard.png    contact sheet
+    OUT/<entry>/<style>/final.svg         historical: the book plate; teaching: the whole construction,
+                                          every step a <g data-step="k"> group (the golden of every step)
+    OUT/<entry>/teaching/animated.svg     plays the steps without script
+    OUT/<entry>/teaching/player.html      the step player, one file
+    OUT/<entry>/teaching/storyboard.svg   contact sheet
     OUT/README.md, OUT/index.html         the index, with pictures, captions, methods and checks
 
 The whole folder is built in a staging folder next to *out* and swapped in
@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import html
 import json
+import os
 import sys
 from pathlib import Path
 from typing import Any, Mapping
@@ -32,34 +33,24 @@ from typing import Any, Mapping
 from .checks import summary
 from .constructions import get, names
 from .output import staged_output, write_text
-from .render.output import params_text, scene_for, write_outputs
-from .render.svg import Drawing
+from .render.output import params_text, write_outputs
 from .render.styles import STYLES
 
-__all__ = ["build_gallery", "gallery_plan", "entry_slug", "frames_mode", "GALLERY_STYLES", "FRAME_BUDGET"]
+__all__ = ["build_gallery", "gallery_plan", "entry_slug", "GALLERY_STYLES", "GALLERY_OUTPUTS", "FRAME_MODE"]
 
 GALLERY_STYLES = ("historical", "teaching")
-#: Frame k holds the marks of k steps, so all frames together grow with the
-#: square of the step count.  Per style, every frame is written while the
-#: estimate (steps / 2 times the size of the last frame) stays within this
-#: budget; above it the teaching style writes a frame per group and the
-#: historical style none (its plate, animation, player and storyboard remain).
-#: 13 MB keeps every teaching frame of the 18-part crank (362 steps, the
-#: books' own figure, about 11 MB with the name tags) as a golden.
-FRAME_BUDGET = {"teaching": 13_000_000, "historical": 3_000_000}
-FALLBACK_FRAMES = {"teaching": "groups", "historical": "none"}
+#: No standalone frames: frame k holds the marks of k steps, so all frames
+#: together grow with the square of the step count (65 MB for eight figures).
+#: The teaching final.svg holds every step as a group, and `construct verify`
+#: compares it step by step, so every step stays golden in one file.
+FRAME_MODE = "none"
+#: What each style adds to its final.svg: the teaching style animates and plays the construction
+#: and shows its storyboard; the historical style is the plate (the same construction's views in
+#: the plate's ink would double the gallery and teach nothing new).
+GALLERY_OUTPUTS = {"historical": (), "teaching": ("animated", "player", "storyboard")}
 #: The width (CSS px) at which the gallery page shows a figure: its own width, one figure per row,
 #: so that letters of 12 px and captions of 13-14 px are shown at that size (never under 9 px).
 DISPLAY_PX = 960
-
-
-def frames_mode(style: str, n_steps: int, last_frame_bytes: int) -> str:
-    """"all", or the fallback when every frame would exceed the style's budget.
-
-    >>> frames_mode("teaching", 362, 46_000), frames_mode("teaching", 931, 133_000), frames_mode("historical", 362, 44_000)
-    ('all', 'groups', 'none')
-    """
-    return "all" if n_steps / 2 * last_frame_bytes <= FRAME_BUDGET[style] else FALLBACK_FRAMES[style]
 
 
 def _value(v: Any) -> str:
@@ -134,47 +125,78 @@ def _method(fig) -> str:
     return f"{head}{' (' + '; '.join(methods) + ')' if methods else ''}; steps by provenance: {mix}; instruments: {tools}"
 
 
-def build_gallery(out: str | Path, *, progress: bool = False) -> list[dict]:
-    """Build the whole gallery into *out* (swapped in whole); return one dict per (entry, style)."""
+def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> tuple[list[dict], dict]:
+    """Build one figure's folder (protocol, checks, both styles) under *root*; return its entries and index row."""
+    c = get(name)
+    fig = c.figure(**params)
+    slug = entry_slug(name, params)
+    edir = root / slug
+    edir.mkdir()
+    write_text(edir / "protocol.json", fig.protocol.to_json(fig.replay))
+    checks = c.checks(fig)
+    write_text(edir / "checks.md", _checks_md(f"{c.title.en} ({params_text(fig)})", checks))
+    write_text(edir / "checks.json", json.dumps(
+        {"construction": name, "params": params, "summary": summary(checks),
+         "ok": all(ch.ok for ch in checks), "checks": [ch.as_dict() for ch in checks]},
+        indent=1, ensure_ascii=False, sort_keys=True) + "\n")
+    entries = []
+    for style in GALLERY_STYLES:
+        sdir = edir / style
+        sdir.mkdir()
+        info = write_outputs(sdir, c, fig, STYLES[style], frames=FRAME_MODE, fig_number=number, protocol=False,
+                             outputs=GALLERY_OUTPUTS[style])
+        files = sorted(str(p.relative_to(root)) for p in sdir.rglob("*") if p.is_file())
+        files += [f"{slug}/protocol.json", f"{slug}/checks.md", f"{slug}/checks.json"]
+        entries.append({"construction": name, "params": dict(params), "style": style,
+                        "files": sorted(files), "steps": info["steps"], "frames": info["frames"],
+                        "frame_mode": FRAME_MODE})
+    row = {"number": number, "name": name, "slug": slug, "params": params, "title": c.title,
+           "source": c.source, "method": _method(fig), "checks": summary(checks),
+           "ok": all(ch.ok for ch in checks), "steps": len(fig.protocol.steps),
+           "params_text": params_text(fig)}
+    return entries, row
+
+
+def build_gallery(out: str | Path, *, progress: bool = False, workers: int | None = None) -> list[dict]:
+    """Build the whole gallery into *out* (swapped in whole); return one dict per (entry, style).
+
+    The figures are built by up to *workers* processes (default: one per CPU,
+    at most 4); each writes its own folder, and the index is written from the
+    results in plan order, so the bytes do not depend on which process
+    finished first.
+    """
     out = Path(out)
     plan = gallery_plan()
-    bar = _Progress(len(plan) * len(GALLERY_STYLES), progress)
+    bar = _Progress(len(plan), progress)
     entries: list[dict] = []
     index: list[dict] = []
     target = out.resolve()
+    jobs = [(number, name, dict(params)) for number, (name, params) in enumerate(plan, start=1)]
+    if workers is None:
+        workers = min(4, os.cpu_count() or 1)
     with staged_output(target.parent) as stage:
         root = stage / target.name
         root.mkdir()
-        for number, (name, params) in enumerate(plan, start=1):
-            c = get(name)
-            fig = c.figure(**params)
-            slug = entry_slug(name, params)
-            edir = root / slug
-            edir.mkdir()
-            write_text(edir / "protocol.json", fig.protocol.to_json(fig.replay))
-            checks = c.checks(fig)
-            write_text(edir / "checks.md", _checks_md(f"{c.title.en} ({params_text(fig)})", checks))
-            write_text(edir / "checks.json", json.dumps(
-                {"construction": name, "params": params, "summary": summary(checks),
-                 "ok": all(ch.ok for ch in checks), "checks": [ch.as_dict() for ch in checks]},
-                indent=1, ensure_ascii=False, sort_keys=True) + "\n")
-            for style in GALLERY_STYLES:
-                bar.step(f"{slug} {style}")
-                sdir = edir / style
-                sdir.mkdir()
-                scene = scene_for(c, fig)
-                last = len(Drawing(scene, STYLES[style]).frame(len(scene.steps)).encode("utf-8"))
-                mode = frames_mode(style, len(scene.steps), last)
-                info = write_outputs(sdir, c, fig, STYLES[style], frames=mode, fig_number=number, protocol=False)
-                files = sorted(str(p.relative_to(root)) for p in sdir.rglob("*") if p.is_file())
-                files += [f"{slug}/protocol.json", f"{slug}/checks.md", f"{slug}/checks.json"]
-                entries.append({"construction": name, "params": dict(params), "style": style,
-                                "files": sorted(files), "steps": info["steps"], "frames": info["frames"],
-                                "frame_mode": mode})
-            index.append({"number": number, "name": name, "slug": slug, "params": params, "title": c.title,
-                          "source": c.source, "method": _method(fig), "checks": summary(checks),
-                          "ok": all(ch.ok for ch in checks), "steps": len(fig.protocol.steps),
-                          "params_text": params_text(fig)})
+        if workers > 1 and len(jobs) > 1:
+            import concurrent.futures
+            import multiprocessing
+
+            # fork where there is one: the workers start with construct already imported
+            methods = multiprocessing.get_all_start_methods()
+            context = multiprocessing.get_context("fork" if "fork" in methods else None)
+            with concurrent.futures.ProcessPoolExecutor(min(workers, len(jobs)), mp_context=context) as pool:
+                futures = [pool.submit(_build_entry, root, *job) for job in jobs]
+                for fut in concurrent.futures.as_completed(futures):
+                    bar.step(jobs[futures.index(fut)][1])
+                results = [fut.result() for fut in futures]
+        else:
+            results = []
+            for job in jobs:
+                bar.step(job[1])
+                results.append(_build_entry(root, *job))
+        for figure_entries, row in results:
+            entries += figure_entries
+            index.append(row)
         write_text(root / "README.md", _readme(index))
         write_text(root / "index.html", _index_html(index))
     bar.close()
@@ -195,12 +217,9 @@ def _readme(index: list[dict]) -> str:
                   f"**Checks:** {'✅' if e['ok'] else '❌'} {_md(e['checks'])} ([report]({s}/checks.md))", "",
                   # one picture per row: at the page's width the letters stay at least 9 px (DISPLAY_PX)
                   f"![Fig. {e['number']}, historical plate]({s}/historical/final.svg)", "",
-                  f"Historical plate: [animated]({s}/historical/animated.svg) · [player]({s}/historical/player.html) · "
-                  f"[storyboard]({s}/historical/storyboard.png)", "",
                   f"![Fig. {e['number']}, teaching]({s}/teaching/final.svg)", "",
                   f"Teaching ({e['steps']} steps): [animated]({s}/teaching/animated.svg) · "
-                  f"[player]({s}/teaching/player.html) · [storyboard]({s}/teaching/storyboard.png) · "
-                  f"[frames]({s}/teaching/steps/)", ""]
+                  f"[player]({s}/teaching/player.html) · [storyboard]({s}/teaching/storyboard.svg)", ""]
     return "\n".join(lines)
 
 
@@ -216,10 +235,10 @@ def _index_html(index: list[dict]) -> str:
 <p><b>Checks:</b> <span class="{'ok' if e['ok'] else 'fail'}">{esc(e['checks'])}</span>
  (<a href="{s}/checks.md">report</a>)</p>
 <div class="pics">
-<figure><a href="{s}/historical/player.html"><img src="{s}/historical/final.svg" alt="Fig. {e['number']}, historical plate"></a>
-<figcaption>historical · <a href="{s}/historical/animated.svg">animated</a> · <a href="{s}/historical/player.html">player</a> · <a href="{s}/historical/storyboard.png">storyboard</a></figcaption></figure>
+<figure><a href="{s}/historical/final.svg"><img src="{s}/historical/final.svg" alt="Fig. {e['number']}, historical plate"></a>
+<figcaption>historical plate · <a href="{s}/teaching/player.html">player</a></figcaption></figure>
 <figure><a href="{s}/teaching/player.html"><img src="{s}/teaching/animated.svg" alt="Fig. {e['number']}, teaching, animated"></a>
-<figcaption>teaching ({e['steps']} steps) · <a href="{s}/teaching/player.html">player</a> · <a href="{s}/teaching/final.svg">final</a> · <a href="{s}/teaching/storyboard.png">storyboard</a></figcaption></figure>
+<figcaption>teaching ({e['steps']} steps) · <a href="{s}/teaching/player.html">player</a> · <a href="{s}/teaching/final.svg">final</a> · <a href="{s}/teaching/storyboard.svg">storyboard</a></figcaption></figure>
 </div>
 </section>""")
     return ("""<!DOCTYPE html>
@@ -233,5 +252,5 @@ section{border-top:1px solid #ddd;padding:6px 0 12px}
 img{width:100%;height:auto;border:1px solid #ccc;background:#fff}figcaption{color:#555;font-size:13px}
 </style></head><body>
 <h1>construct — gallery</h1>
-<p>Every construction at the books' parameters: the plate (historical style) and the construction step by step (teaching style, animated). Click a picture for the step player. Built by <code>construct gallery</code>.</p>
+<p>Every construction at the books' parameters: the plate (historical style) and the construction step by step (teaching style, animated). Click the animation for the step player. Built by <code>construct gallery</code>.</p>
 """ + "\n".join(cards) + "\n</body></html>\n")

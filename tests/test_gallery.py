@@ -9,6 +9,7 @@ import pytest
 
 import construct.gallery as gallery
 from construct.constructions import get, names
+from construct.kernel.geometry import Length
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -35,13 +36,20 @@ def test_gallery_entry_files_and_index(small_plan, tmp_path):
     out = tmp_path / "g"
     entries = gallery.build_gallery(out)
     assert [(e["construction"], e["style"]) for e in entries] == [("crank", "historical"), ("crank", "teaching")]
-    n = len(get("crank").figure(parts=3, rod_ratio=4.0).protocol.steps)
+    fig = get("crank").figure(parts=3, rod_ratio=4.0)
     for e in entries:
         for f in e["files"]:
             assert (out / f).is_file(), f
         style_files = {Path(f).name for f in e["files"] if f"/{e['style']}/" in f}
-        assert {"final.svg", "animated.svg", "player.html", "storyboard.png"} <= style_files
-    assert len(list((out / "crank-parts-3-rod-ratio-4" / "teaching" / "steps").glob("*.svg"))) == n
+        expected = {"historical": {"final.svg"},
+                    "teaching": {"final.svg", "animated.svg", "player.html", "storyboard.svg"}}[e["style"]]
+        assert style_files == expected
+    # no standalone frames: the teaching figure is layered, a group for every step that draws something
+    assert not list(out.rglob("steps"))
+    final = (out / "crank-parts-3-rod-ratio-4" / "teaching" / "final.svg").read_text(encoding="utf-8")
+    drawn = {s.index for s in fig.protocol.steps
+             if any(not isinstance(fig.replay.get(o), Length) for o in s.outputs if fig.replay.get(o) is not None)}
+    assert {int(k) for k in re.findall(r'data-step="(\d+)"', final)} == drawn
     readme = (out / "README.md").read_text(encoding="utf-8")
     # every picture the index shows exists, with its caption, method and checks
     pics = re.findall(r"!\[[^\]]*\]\(([^)]+)\)", readme)

@@ -63,25 +63,27 @@ def test_readme_example_in_a_fresh_project(project: pytest.Pytester) -> None:
     first.assert_outcomes(failed=1)
     first.stdout.fnmatch_lines([f"*no goldens for '{NAME}'*--construct-update*"])
 
-    # 2. --construct-update writes the final figure, every step frame and the protocol.
+    # 2. --construct-update writes the layered figure (every step a group) and the protocol.
     project.runpytest_subprocess("--construct-update").assert_outcomes(passed=1)
     goldens = project.path / "goldens" / NAME
-    frames = sorted((goldens / "steps").glob("*.svg"))
+    assert sorted(p.name for p in goldens.iterdir()) == ["final.svg", "protocol.json"]
+    layered = ET.fromstring((goldens / "final.svg").read_text(encoding="utf-8"))
+    steps = {int(g.get("data-step")) for g in layered.iter("{http://www.w3.org/2000/svg}g") if g.get("data-step")}
     # midpoint of D0D1: 2 given points + 2 circles + their crossing + line + line D0D1 + M = 8 steps
-    assert len(frames) == 8 and (goldens / "final.svg").is_file() and (goldens / "protocol.json").is_file()
+    assert steps == set(range(1, 9))
     project.runpytest_subprocess().assert_outcomes(passed=1)
 
-    # 3. One point of one frame moved by 0.01: caught, with its step and element named.
-    frame = goldens / "steps" / "005.svg"  # step 5: the circles' crossings S1, S2 are marked
+    # 3. One point of the layered golden moved by 0.01: caught, with its step and element named.
+    frame = goldens / "final.svg"
     original = frame.read_text(encoding="utf-8")
     frame.write_text(_move_point(original, "s0002-D1", 0.01), encoding="utf-8")
     failed = project.runpytest_subprocess()
     failed.assert_outcomes(failed=1)
     out = failed.stdout.str()
-    assert f"construct golden '{NAME}': 1 of 10 files differ" in out
+    assert f"construct golden '{NAME}': 1 of 2 files differ" in out
     line = next(x for x in out.splitlines() if "s0002-D1" in x)
     assert "moved" in line and "by 0.01" in line
-    assert f"{NAME} step 5 ({NAME}/steps/005.svg): 1 change" in out
+    assert f"{NAME} step 2 ({NAME}/final.svg): 1 change" in out
     page = project.path / ".construct-failures" / f"{NAME}.html"
     assert f"side by side: {page}" in out
     html = page.read_text(encoding="utf-8")
@@ -110,6 +112,7 @@ def test_update_drops_stale_frames_and_name_collisions(pytester: pytest.Pytester
     goldens = pytester.path / "goldens" / "test_two.test_middle_of_stroke"  # default: module and test
     assert (goldens / "final.svg").is_file()
     stale = goldens / "steps" / "999.svg"
-    stale.write_text(next((goldens / "steps").glob("*.svg")).read_text(encoding="utf-8"))
+    stale.parent.mkdir()
+    stale.write_text((goldens / "final.svg").read_text(encoding="utf-8"))
     pytester.runpytest_subprocess("--construct-update")
     assert not stale.exists()

@@ -25,6 +25,7 @@ from construct.render.output import scene_for, write_replay
 from construct.render.scene import build_scene
 from construct.render.storyboard import storyboard_png
 from construct.render.styles import STYLES
+from construct.render import svgdoc
 from construct.render.svg import Drawing, hatch_path, Viewport
 
 SVG = "{http://www.w3.org/2000/svg}"
@@ -96,10 +97,11 @@ def test_every_svg_parses_strictly_and_renders(crank6, tmp_path):
         out = tmp_path / style
         write_replay(c, fig, out, style=style, frames="all")
         svgs = sorted(out.rglob("*.svg"))
-        assert len(svgs) == len(fig.protocol.steps) + 2  # frames, final, animated
-        for p in svgs[:: max(1, len(svgs) // 25)] + [out / "final.svg", out / "animated.svg"]:
+        assert len(svgs) == len(fig.protocol.steps) + 3  # frames, final, animated, storyboard
+        for p in svgs[:: max(1, len(svgs) // 25)] + [out / n for n in ("final.svg", "animated.svg", "storyboard.svg")]:
             text = p.read_text(encoding="utf-8")
             ET.fromstring(text.encode("utf-8"))
+            assert svgdoc.MARKER in text, p  # written by svgwrite's Drawing
             png = _render_clean(text)
             assert png.startswith(b"\x89PNG")
 
@@ -161,16 +163,17 @@ def test_animated_svg_hides_each_step_until_its_time(crank6):
     root = ET.fromstring(svg.encode("utf-8"))
     times = {}
     for g in root.iter(f"{SVG}g"):
-        m = re.fullmatch(r"(construction|results|points|labels|areas)-(\d+)", g.get("id") or "")
-        if m:
+        if g.get("data-step"):
             sets = [s for s in g if s.tag == f"{SVG}set" and s.get("attributeName") == "visibility"]
-            k = int(m.group(2))
+            k = int(g.get("data-step"))
             dur = float(sets[0].get("dur").rstrip("s")) if sets else 0.0
             times.setdefault(k, set()).add(dur)
     ks = sorted(times)
     assert all(len(times[k]) == 1 for k in ks)  # every layer of a step appears at the same time
     durs = [times[k].pop() for k in ks]
     assert durs == sorted(durs) and durs[0] == 0.0 and len(set(durs)) == len(durs)
+    # a step is shown at least 1.5 s (time to read its caption), the pace of the steps is even
+    assert all(b - a >= 1.5 * (kb - ka) - 1e-9 for (ka, a), (kb, b) in zip(zip(ks, durs), zip(ks[1:], durs[1:])))
     assert "<script" not in svg
 
 

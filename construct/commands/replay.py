@@ -9,7 +9,7 @@ from ._common import add_construction_options, figure_from_args
 
 NAME = "replay"
 HELP = ("build a construction and write DIR/final.svg (every step a layer), DIR/protocol.json, "
-        "DIR/animated.svg, DIR/player.html, DIR/storyboard.png and, when asked, DIR/steps/NNN.svg")
+        "DIR/animated.svg, DIR/player.html, DIR/storyboard.svg and, when asked, DIR/steps/NNN.svg")
 
 
 def add_arguments(p) -> None:

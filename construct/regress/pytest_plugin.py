@@ -2,11 +2,13 @@
 
 Registered through the ``pytest11`` entry point, so installing ``construct``
 is enough.  The fixture :func:`construct_golden` renders a figure -- the
-final drawing, *every* step frame and the protocol -- and compares them
-with the goldens in ``goldens/<name>/`` next to the test file, through the
-semantic diff (:mod:`construct.regress.verify`): reordered attributes or respelled
-numbers are equal, a point moved by 0.01 drawing units is named with its
-step and element.  ``pytest --construct-update`` writes or rewrites them.
+layered drawing ``final.svg`` (every step a ``<g data-step="k">`` group, so
+*every* step is golden in one file) and the protocol, plus standalone step
+frames when asked -- and compares them with the goldens in ``goldens/<name>/``
+next to the test file, through the semantic diff
+(:mod:`construct.regress.verify`): reordered attributes or respelled numbers
+are equal, a point moved by 0.01 drawing units is named with its step and
+element.  ``pytest --construct-update`` writes or rewrites them.
 
 On a difference the test fails with the report (figure, step, element,
 what changed) and a side-by-side page of expected and actual for every
@@ -68,9 +70,12 @@ def _style(style: Any) -> Any:
     return STYLES[style]
 
 
-def render_goldens(figure: Any, out: Path, *, style: Any = "plain", frames: str = "all",
+def render_goldens(figure: Any, out: Path, *, style: Any = "plain", frames: str = "none",
                    title: tuple[str, str] | None = None) -> int:
-    """Write ``final.svg``, ``steps/NNN.svg`` and ``protocol.json`` of *figure* into *out*; return the frame count."""
+    """Write the layered ``final.svg``, ``protocol.json`` and (*frames*) ``steps/NNN.svg`` into *out*.
+
+    Returns the number of standalone frames written.
+    """
     from ..output import write_text
     from ..render.output import FRAME_MODES, frame_steps
     from ..render.scene import build_scene
@@ -79,17 +84,11 @@ def render_goldens(figure: Any, out: Path, *, style: Any = "plain", frames: str 
         raise InvalidParameter(f"frames must be one of {', '.join(FRAME_MODES)}, got {frames!r}")
     st = _style(style)
     scene = build_scene(figure, title=title)
-    try:
-        from ..render.svg import Drawing
-    except ImportError:  # an older renderer: one drawing per frame
-        from ..render.svg import render_svg
+    from ..render.svg import Drawing
 
-        frame: Callable[[int], str] = lambda k: render_svg(scene, upto=k, style=st)  # noqa: E731
-        final: Callable[[], str] = lambda: render_svg(scene, style=st)  # noqa: E731
-    else:
-        drawing = Drawing(scene, st)
-        frame, final = drawing.frame, drawing.final
-    write_text(out / "final.svg", final())
+    drawing = Drawing(scene, st)
+    frame: Callable[[int], str] = drawing.frame
+    write_text(out / "final.svg", drawing.layered())
     ks = frame_steps(scene, frames)
     width = max(3, len(str(len(scene.steps))))  # the same names as `construct replay` writes
     for k in ks:
@@ -150,13 +149,17 @@ def side_by_side_html(name: str, golden_root: Path, actual_root: Path, differenc
     esc = html.escape
     sections: list[str] = []
     drawn = 0
+    pictured: set[str] = set()  # a layered file differing in several steps is drawn once
     for d in differences:
         g, a = golden_root / d.path, actual_root / d.path
         head = f"<h2>{esc(d.headline())}</h2>"
         listed = "\n".join(d.changes[:MAX_REPORTED])
         body = f"<pre>{esc(listed)}</pre>" if listed else ""
-        if d.kind == "svg" and drawn < MAX_PAGES:
+        if d.kind == "svg" and d.path in pictured:
+            body += "<p class='none'>(drawn above)</p>"
+        elif d.kind == "svg" and drawn < MAX_PAGES:
             drawn += 1
+            pictured.add(d.path)
             keys = _changed_keys(g, a, tolerance) if d.status == "changed" else []
             left = _framed(_inline_svg(g), keys, "expected") if g.exists() else "<p class='none'>(no golden)</p>"
             right = _framed(_inline_svg(a), keys, "actual") if a.exists() else "<p class='none'>(not rendered)</p>"
@@ -190,15 +193,16 @@ class GoldenChecker:
     update: bool = False
     checked: list[str] = field(default_factory=list)
 
-    def check(self, figure: Any, name: str | None = None, *, style: Any = "plain", frames: str = "all",
+    def check(self, figure: Any, name: str | None = None, *, style: Any = "plain", frames: str = "none",
               title: tuple[str, str] | None = None, tolerance: float | None = None) -> Path:
-        """Render *figure* (final, every step frame, protocol) and compare it with ``goldens/<name>/``.
+        """Render *figure* (the layered final.svg, the protocol) and compare it with ``goldens/<name>/``.
 
         *figure* is anything with ``.protocol`` and ``.replay`` (a
         :class:`construct.constructions.Figure`).  *name* defaults to
         ``<test module>.<test name>``; *style* is a style name (``plain``, ``teaching``, ``historical``)
         or a :class:`construct.render.svg.Style`; *frames* as for ``construct
-        replay``.  Returns the goldens folder.
+        replay`` (standalone frames besides the layered figure; "none" by default: every step
+        is compared from ``final.svg`` already).  Returns the goldens folder.
         """
         __tracebackhide__ = True
         from .verify import DEFAULT_TOLERANCE, compare_trees
@@ -230,7 +234,7 @@ class GoldenChecker:
             diffs = [replace(d, path=f"{name}/{d.path}") for d in found]
             page.parent.mkdir(parents=True, exist_ok=True)
             page.write_text(side_by_side_html(name, self.goldens, Path(tmp), diffs, tol), encoding="utf-8")
-        lines = [f"construct golden {name!r}: {len(diffs)} of {files} files differ from {golden_dir} "
+        lines = [f"construct golden {name!r}: {len({d.path for d in diffs})} of {files} files differ from {golden_dir} "
                  f"(tolerance {tol:g} drawing units)"]
         for d in diffs[:MAX_REPORTED]:
             lines.append(d.report(MAX_REPORTED))

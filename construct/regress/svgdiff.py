@@ -36,7 +36,8 @@ from typing import Any, Iterator, Sequence
 
 from ..kernel.errors import ConstructError, InvalidParameter
 
-__all__ = ["DEFAULT_TOLERANCE", "SvgChange", "SvgDiff", "SvgFormatError", "diff_svg", "parse_svg"]
+__all__ = ["DEFAULT_TOLERANCE", "SvgChange", "SvgDiff", "SvgFormatError", "diff_svg", "parse_svg",
+           "changes_by_step"]
 
 DEFAULT_TOLERANCE = 1e-6
 """Drawing units; our goldens are written with far more digits than this."""
@@ -569,6 +570,8 @@ class Shape:
     described: tuple[tuple[str, str], ...] = ()
     has_id: bool = False
     order: int = 0
+    #: The step whose group (``<g data-step="k">``, a layered figure) holds the element, else None.
+    step: int | None = None
 
     def fingerprint(self, tol: float) -> tuple:
         """Hashable, tolerance-rounded form used to align equal anonymous elements."""
@@ -654,6 +657,7 @@ class _State:
     ctm: Matrix
     style: dict[str, str]
     viewport: tuple[float, float]
+    step: int | None = None  # from the nearest ancestor with data-step
 
 
 class _Parser:
@@ -763,7 +767,14 @@ class _Parser:
                 style[prop] = self._combine(prop, style[prop], value)
             else:
                 style[prop] = value
-        return _State(ctm, style, parent.viewport)
+        step = parent.step
+        if "data-step" in attrs:
+            try:
+                step = int(attrs["data-step"])
+            except ValueError:
+                raise SvgFormatError(f"{self.name}: <{tag}> data-step is not a step number: "
+                                     f"{attrs['data-step']!r}") from None
+        return _State(ctm, style, parent.viewport, step)
 
     @staticmethod
     def _combine(prop: str, outer: str, inner: str) -> str:
@@ -880,7 +891,7 @@ class _Parser:
             return
         x = self._length(attrs.get("x"), state.viewport[0], "x") if "x" in attrs else 0.0
         y = self._length(attrs.get("y"), state.viewport[1], "y") if "y" in attrs else 0.0
-        inner = _State(_mul(state.ctm, (1.0, 0.0, 0.0, 1.0, x, y)), state.style, state.viewport)
+        inner = _State(_mul(state.ctm, (1.0, 0.0, 0.0, 1.0, x, y)), state.style, state.viewport, state.step)
         ttag = _local(target.tag)[1]
         if ttag in ("symbol", "svg"):
             sym_attrs = dict(_attrs(target))
@@ -919,7 +930,7 @@ class _Parser:
         animations, described = self._decorations(elem)
         if animations or described:
             self.shapes.append(Shape(key=key, tag=tag, kind="group", animations=animations, described=described,
-                                     has_id=has_id, order=len(self.shapes)))
+                                     has_id=has_id, order=len(self.shapes), step=state.step))
 
     def _add(self, elem: ET.Element, key: str, has_id: bool, tag: str, state: _State, geometry: dict[str, Any],
              extra_source: ET.Element | None = None) -> None:
@@ -932,7 +943,8 @@ class _Parser:
         if classes:  # our renderer writes the instrument and provenance as classes
             style = tuple(sorted(style + (("class", classes),)))
         self.shapes.append(Shape(key=key, tag=tag, style=style, animations=animations,
-                                 described=described, has_id=has_id, order=len(self.shapes), **geometry))
+                                 described=described, has_id=has_id, order=len(self.shapes), step=state.step,
+                                 **geometry))
 
     # -- geometry of each element kind ---------------------------------------------------------
 
@@ -1128,8 +1140,8 @@ def parse_svg(source: str | Path | bytes, name: str | None = None) -> Drawing:
 
 # --------------------------------------------------------------------------- the diff
 
-CHANGE_KINDS = ("document", "definition", "missing", "extra", "renamed", "reshaped", "moved", "resized",
-                "rotated", "text", "restyled", "animated", "described")
+CHANGE_KINDS = ("document", "definition", "missing", "extra", "renamed", "restepped", "reshaped", "moved",
+                "resized", "rotated", "text", "restyled", "animated", "described")
 
 
 @dataclass(frozen=True, slots=True)
@@ -1143,6 +1155,8 @@ class SvgChange:
     shape: str = ""
     matched_by: str = ""
     key_b: str | None = None
+    #: The step of the element (its ``data-step`` group in a layered figure), None outside step groups.
+    step: int | None = None
 
     def line(self) -> str:
         how = []
@@ -1204,10 +1218,12 @@ def diff_svg(a: str | Path | bytes, b: str | Path | bytes, tolerance: float = DE
             sb, how = by_a[id(sa)]
             changes += _compare(sa, sb, tol, how)
         else:
-            changes.append(SvgChange("missing", sa.key, f"{sa.kind} only in A{_where(sa)}", None, sa.kind))
+            changes.append(SvgChange("missing", sa.key, f"{sa.kind} only in A{_where(sa)}", None, sa.kind,
+                                     step=sa.step))
     for sb in db.shapes:
         if id(sb) not in matched_b:
-            changes.append(SvgChange("extra", sb.key, f"{sb.kind} only in B{_where(sb)}", None, sb.kind))
+            changes.append(SvgChange("extra", sb.key, f"{sb.kind} only in B{_where(sb)}", None, sb.kind,
+                                     step=sb.step))
     return SvgDiff(name_a, name_b, tol, tuple(changes), (len(da.shapes), len(db.shapes)))
 
 
@@ -1347,10 +1363,13 @@ def _compare(x: Shape, y: Shape, tol: float, how: str) -> list[SvgChange]:
     key_b = y.key if y.key != x.key else None
 
     def add(kind: str, description: str, magnitude: float | None = None) -> None:
-        out.append(SvgChange(kind, x.key, description, magnitude, x.kind, how, key_b))
+        out.append(SvgChange(kind, x.key, description, magnitude, x.kind, how, key_b,
+                             x.step if x.step is not None else y.step))
 
     if key_b is not None and (x.has_id or y.has_id):
         add("renamed", f"id {x.key!r} -> {y.key!r}")
+    if x.step != y.step:
+        add("restepped", f"made by step {x.step} -> {y.step}")
     same_structure = (x.kind == y.kind and x.structure == y.structure
                       and [n for n, _ in x.points] == [n for n, _ in y.points]
                       and [n for n, _ in x.sizes] == [n for n, _ in y.sizes])
@@ -1426,6 +1445,20 @@ def _movement(moved: list[tuple[float, str, Point, Point]], tol: float) -> str:
 
 def _anim(a: tuple) -> str:
     return " ".join(f'{k}="{_show(v)}"' for k, v in a[1])
+
+
+def changes_by_step(diff: SvgDiff) -> dict[int | None, list[SvgChange]]:
+    """The changes of a layered figure gathered by the step that made each element (None: outside steps).
+
+    >>> a = ('<svg xmlns="http://www.w3.org/2000/svg"><g class="step" data-step="3">'
+    ...      '<circle id="s0003-P" cx="1" cy="2" r="1"/></g></svg>')
+    >>> {k: [c.key for c in v] for k, v in changes_by_step(diff_svg(a, a.replace('cx="1"', 'cx="2"'))).items()}
+    {3: ['s0003-P']}
+    """
+    out: dict[int | None, list[SvgChange]] = {}
+    for c in diff.changes:
+        out.setdefault(c.step, []).append(c)
+    return dict(sorted(out.items(), key=lambda kv: (kv[0] is not None, kv[0] or 0)))
 
 
 def iter_changes(diff: SvgDiff, kind: str) -> Iterator[SvgChange]:

@@ -1,8 +1,12 @@
 """Golden files: rebuild the gallery and compare every file with the committed one.
 
-Every step frame is compared, not just the final figure, and in geometry,
-not in bytes: a ``.svg`` through :func:`construct.regress.svgdiff.diff_svg`, a
-``protocol.json`` through :func:`construct.regress.protocoldiff.diff_protocol`, so a
+Every step is compared, not just the final figure, and in geometry, not in
+bytes.  A figure is one layered SVG (``final.svg``: each step's elements in a
+``<g data-step="k">`` group), so a change is reported per step from that one
+file -- "crank-6/teaching step 5 (crank-6/teaching/final.svg)" -- the way a
+standalone frame ``steps/005.svg`` (where one is written) is reported as step 5.
+Files are compared by meaning: a ``.svg`` through
+:func:`construct.regress.svgdiff.diff_svg`, a ``protocol.json`` through :func:`construct.regress.protocoldiff.diff_protocol`, so a
 golden rewritten with reordered attributes or reformatted numbers is still
 equal while a point moved by 0.01 drawing units is named.  Other text files
 (``.json``, ``.html``, ``.md``, ``.csv``, ...) are compared as text (line
@@ -15,16 +19,17 @@ little more than reading both trees; only two files are held at a time.
 
 >>> import tempfile, pathlib
 >>> root = pathlib.Path(tempfile.mkdtemp())
->>> svg = '<svg xmlns="http://www.w3.org/2000/svg"><circle id="s0003-P" cx="{}" cy="2" r="1"/></svg>'
+>>> svg = ('<svg xmlns="http://www.w3.org/2000/svg"><g class="step" data-step="1"><circle id="s0001-O" r="1"/></g>'
+...        '<g class="step" data-step="3"><circle id="s0003-P" cx="{}" cy="2" r="1"/></g></svg>')
 >>> def build(out):
-...     (out / "demo" / "steps").mkdir(parents=True)
-...     _ = (out / "demo" / "steps" / "003.svg").write_text(svg.format("1.5"))
+...     (out / "demo").mkdir(parents=True)
+...     _ = (out / "demo" / "final.svg").write_text(svg.format("1.5"))
 >>> build(root / "golden")
 >>> verify(root / "golden", builder=build).equal
 True
->>> _ = (root / "golden" / "demo" / "steps" / "003.svg").write_text(svg.format("1.51"))
+>>> _ = (root / "golden" / "demo" / "final.svg").write_text(svg.format("1.51"))
 >>> print(verify(root / "golden", builder=build).report())
-demo step 3 (demo/steps/003.svg): 1 change
+demo step 3 (demo/final.svg): 1 change
   moved      s0003-P (circle, matched by id): by 0.01: centre (1.51, 2) -> (1.5, 2)
 construct verify: 1 of 1 files differ (1 changed, 0 missing, 0 extra) in 1 figure; ...
 """
@@ -45,7 +50,7 @@ from typing import Any, Callable
 from ..kernel.errors import ConstructError, InvalidParameter
 
 __all__ = ["DEFAULT_TOLERANCE", "PROTOCOL_TOLERANCE", "FileDifference", "VerifyResult", "VerifyInputError",
-           "compare_trees", "compare_file", "locate", "verify", "default_builder"]
+           "compare_trees", "compare_file", "compare_file_by_step", "locate", "verify", "default_builder"]
 
 DEFAULT_TOLERANCE = 0.004
 """Drawing units (SVG user units) for frames.
@@ -89,6 +94,7 @@ class FileDifference:
     kind: str  # "svg", "protocol", "text", "png", "binary"
     changes: tuple[str, ...] = ()  # readable lines, each naming the element, step or line
     total: int = 0  # number of changes (may exceed len(changes) for text excerpts)
+    at_step: int | None = None  # the step group of a layered figure the changes are in
 
     @property
     def figure(self) -> str:
@@ -96,10 +102,10 @@ class FileDifference:
 
     @property
     def step(self) -> int | None:
-        return locate(self.path)[1]
+        return self.at_step if self.at_step is not None else locate(self.path)[1]
 
     def headline(self) -> str:
-        figure, step = locate(self.path)
+        figure, step = self.figure, self.step
         where = f"{figure} step {step}" if step is not None else f"{figure} {PurePosixPath(self.path).name}"
         if self.status == "missing":
             return f"{where} ({self.path}): missing: in the goldens, not written by the rebuild"
@@ -133,13 +139,15 @@ class VerifyResult:
 
     def summary(self) -> str:
         d = self.differences
-        counts = {s: sum(1 for f in d if f.status == s) for s in ("changed", "missing", "extra")}
+        # a layered figure gives one difference per step: files are counted once
+        status = {f.path: f.status for f in d}
+        counts = {s: sum(1 for v in status.values() if v == s) for s in ("changed", "missing", "extra")}
         figures = sorted({f.figure for f in d})
         head = "construct verify: "
         if not d:
             head += f"all {self.compared} files equal"
         else:
-            head += (f"{len(d)} of {self.compared} files differ ({counts['changed']} changed, "
+            head += (f"{len(status)} of {self.compared} files differ ({counts['changed']} changed, "
                      f"{counts['missing']} missing, {counts['extra']} extra) in {len(figures)} "
                      f"figure{'s' if len(figures) != 1 else ''}")
         head += (f"; tolerance {self.tolerance:g} drawing units for SVG, {PROTOCOL_TOLERANCE:g} for protocols")
@@ -241,33 +249,51 @@ def _text_changes(rel: str, golden: Path, actual: Path) -> FileDifference | None
 
 def compare_file(rel: str, golden: Path, actual: Path, *, tolerance: float = DEFAULT_TOLERANCE
                  ) -> FileDifference | None:
-    """The difference between a golden file and its rebuilt twin, or None when equal."""
+    """The difference between a golden file and its rebuilt twin, or None when equal (all steps in one)."""
+    found = compare_file_by_step(rel, golden, actual, tolerance=tolerance)
+    if not found:
+        return None
+    if len(found) == 1:
+        return found[0]
+    lines = tuple(line for d in found for line in d.changes)
+    return FileDifference(rel, "changed", found[0].kind, lines[:KEPT_CHANGES], sum(d.total for d in found))
+
+
+def compare_file_by_step(rel: str, golden: Path, actual: Path, *, tolerance: float = DEFAULT_TOLERANCE
+                         ) -> list[FileDifference]:
+    """The differences between a golden file and its rebuilt twin: for a layered figure one per step."""
     if filecmp.cmp(golden, actual, shallow=False):
-        return None  # byte-identical: the common case, nothing to parse
+        return []  # byte-identical: the common case, nothing to parse
     kind = _kind(rel)
     if kind == "svg":
-        from .svgdiff import diff_svg
+        from .svgdiff import changes_by_step, diff_svg
 
         d = diff_svg(golden, actual, tolerance=tolerance)
         if d.equal:
-            return None
-        return FileDifference(rel, "changed", "svg", tuple(c.line() for c in d.changes[:KEPT_CHANGES]),
-                              len(d.changes))
+            return []
+        if locate(rel)[1] is not None:
+            # a standalone frame: every change is a change of that frame's step
+            groups: dict[int | None, list] = {None: list(d.changes)}
+        else:
+            groups = changes_by_step(d)
+        return [FileDifference(rel, "changed", "svg", tuple(c.line() for c in changes[:KEPT_CHANGES]),
+                               len(changes), at_step=step) for step, changes in groups.items()]
     if kind == "protocol":
         from .protocoldiff import diff_protocol
 
         p = diff_protocol(golden, actual, tolerance=PROTOCOL_TOLERANCE)
         if p.equal:
-            return None
-        return FileDifference(rel, "changed", "protocol", tuple(c.line() for c in p.changes[:KEPT_CHANGES]),
-                              len(p.changes))
+            return []
+        return [FileDifference(rel, "changed", "protocol", tuple(c.line() for c in p.changes[:KEPT_CHANGES]),
+                               len(p.changes))]
     if kind == "png":
         sa, sb = png_size(golden), png_size(actual)
         if sa == sb and sa is not None:
-            return None  # pixels are not compared: see the module docstring
+            return []  # pixels are not compared: see the module docstring
         show = lambda s: "not a PNG" if s is None else f"{s[0]}x{s[1]}"  # noqa: E731
-        return FileDifference(rel, "changed", "png", (f"  size       image {show(sa)} -> {show(sb)}",), 1)
-    return _text_changes(rel, golden, actual)
+        return [FileDifference(rel, "changed", "png", (f"  size       image {show(sa)} -> {show(sb)}",), 1)]
+    found = _text_changes(rel, golden, actual)
+    return [found] if found is not None else []
 
 
 def compare_trees(golden: Path, actual: Path, *, tolerance: float = DEFAULT_TOLERANCE,
@@ -290,11 +316,9 @@ def compare_trees(golden: Path, actual: Path, *, tolerance: float = DEFAULT_TOLE
         else:
             pngs += _kind(rel) == "png"
             try:
-                d = compare_file(rel, golden / rel, actual / rel, tolerance=tolerance)
+                diffs += compare_file_by_step(rel, golden / rel, actual / rel, tolerance=tolerance)
             except ConstructError as exc:  # an unreadable golden is a difference, not a crash
-                d = FileDifference(rel, "changed", _kind(rel), (f"  unreadable {exc}",), 1)
-            if d is not None:
-                diffs.append(d)
+                diffs.append(FileDifference(rel, "changed", _kind(rel), (f"  unreadable {exc}",), 1))
     return diffs, len(names), pngs
 
 

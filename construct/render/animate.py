@@ -88,7 +88,8 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
             if end is not None and end >= k:
                 timing.append(f.set(attributeName="class", to="step done", begin=f"clock.begin+{fmt(end * dt)}s",
                                     dur=f"{fmt(total - end * dt)}s"))
-            lg.add(d.step_group(k, timing + list(elems), id=f"{layer}-{k}"))
+            # no ids: a <set> animates its parent, the step group
+            lg.add(d.step_group(k, timing + list(elems)))
         dwg.add(lg)
     furniture = d.furniture()  # the broken axis's marks (and a plate's furniture)
     if furniture is not None:
@@ -101,7 +102,9 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
         dwg.add(tg)
     caps = f.g(id="step-captions")
     for k in range(1, n + 1):
-        cap = d.caption_group(d.frame_caption_lines(k), id=f"caption-{k}", visibility="hidden")
+        # the step's caption in German and English (the group path is in the player and the frames)
+        lines = [line for line in d.frame_caption_lines(k) if line[0] != "grp"]
+        cap = d.caption_group(lines, id=f"caption-{k}", visibility="hidden")
         if cap is not None:
             cap.add(f.set(attributeName="visibility", to="visible", begin=f"clock.begin+{fmt((k - 1) * dt)}s",
                           dur=f"{fmt(dt)}s"))

@@ -4,8 +4,8 @@
 ``<g class="step" data-step="k">`` (in the historical style the figure is
 the book plate, layered the same way), so frame k is a view of it, not a
 copy.  ``DIR/protocol.json``, ``DIR/animated.svg`` (plays without script),
-``DIR/player.html`` (the step player, one file) and ``DIR/storyboard.png``
-(contact sheet) come with it; standalone frames ``DIR/steps/NNN.svg`` (frame
+``DIR/player.html`` (the step player, one file) and ``DIR/storyboard.svg``
+(contact sheet, made of the figure's own elements) come with it; standalone frames ``DIR/steps/NNN.svg`` (frame
 k shows steps 1..k) only when asked (``--frames all`` or ``groups``): all
 frames together grow with the square of the step count.  Everything is staged
 and moved into place only when all of it has been written
@@ -22,7 +22,7 @@ from ..output import staged_output, write_text
 from .scene import Scene, build_scene
 from .svg import Drawing, Style, render_svg
 
-__all__ = ["FRAME_MODES", "frame_steps", "write_replay", "write_outputs", "scene_for",
+__all__ = ["FRAME_MODES", "OUTPUTS", "frame_steps", "write_replay", "write_outputs", "scene_for",
            "figure_title", "plate_caption", "params_text"]
 
 FRAME_MODES = ("auto", "all", "groups", "none")
@@ -135,10 +135,14 @@ def plate_caption(construction: Construction, figure: Figure, number: int | str 
             f"{construction.title.en} ({params_text(figure)}; {equation(construction.source)})")
 
 
+#: What a replay writes besides final.svg, steps/ and protocol.json.
+OUTPUTS = ("animated", "player", "storyboard")
+
+
 def write_outputs(stage: Path, construction: Construction, figure: Figure, st: Style, *, frames: str = "none",
                   fig_number: int | str | None = None, protocol: bool = True,
-                  storyboard: bool = True) -> dict[str, Any]:
-    """Write final.svg, steps/ (when asked), protocol.json, animated.svg, player.html and storyboard.png.
+                  outputs: tuple[str, ...] = OUTPUTS) -> dict[str, Any]:
+    """Write final.svg, steps/ (when asked), protocol.json and *outputs*: animated.svg, player.html, storyboard.svg.
 
     One :class:`Drawing` lays the construction out once; the layered final
     figure, the frames, the animation and the player all carry its elements.
@@ -147,31 +151,35 @@ def write_outputs(stage: Path, construction: Construction, figure: Figure, st: S
     """
     from .animate import animated_svg
     from .player import player_html
-    from .storyboard import storyboard_png
+    from .storyboard import storyboard_svg
 
     scene = scene_for(construction, figure)
-    drawing = Drawing(scene, st)
+    ks = frame_steps(scene, frames)
+    # The plate style's final figure is the plate: the construction's drawing only serves frames and views.
+    drawing = Drawing(scene, st) if (ks or outputs or not st.plate) else None
     if st.plate:
         final = render_svg(scene_for(construction, figure, plate=True), style=st,
                            caption=plate_caption(construction, figure, fig_number))
     else:
-        final = drawing.layered()
+        final = drawing.layered()  # type: ignore[union-attr]
     write_text(stage / "final.svg", final)
-    ks = frame_steps(scene, frames)
     width = max(3, len(str(len(scene.steps))))
     steps_dir = stage / "steps"
     if ks:
         steps_dir.mkdir()
     for k in ks:
-        write_text(steps_dir / f"{k:0{width}d}.svg", drawing.frame(k))
+        write_text(steps_dir / f"{k:0{width}d}.svg", drawing.frame(k))  # type: ignore[union-attr]
     if protocol:
         write_text(stage / "protocol.json", figure.protocol.to_json(figure.replay))
-    write_text(stage / "animated.svg", animated_svg(scene, st, drawing=drawing))
-    givens = {**dict(figure.replay.givens),
-              **{k: v for k, v in figure.params.items() if k not in ("givens", "group_titles", "requested_method", "plate")}}
-    write_text(stage / "player.html", player_html(scene, st, givens=givens, drawing=drawing))
-    if storyboard:
-        (stage / "storyboard.png").write_bytes(storyboard_png(scene, st))
+    if "animated" in outputs:
+        write_text(stage / "animated.svg", animated_svg(scene, st, drawing=drawing))
+    if "player" in outputs:
+        givens = {**dict(figure.replay.givens),
+                  **{k: v for k, v in figure.params.items()
+                     if k not in ("givens", "group_titles", "requested_method", "plate")}}
+        write_text(stage / "player.html", player_html(scene, st, givens=givens, drawing=drawing))
+    if "storyboard" in outputs:
+        write_text(stage / "storyboard.svg", storyboard_svg(drawing))  # type: ignore[arg-type]
     return {"steps": len(scene.steps), "frames": len(ks)}
 
 

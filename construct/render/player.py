@@ -113,10 +113,21 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
     if furniture is not None:
         dwg.add(furniture)
     svg = d.doc.markup(dwg)
-    steps = [{"de": scene.caption(s.index)[0], "en": scene.caption(s.index)[1], "tool": s.tool, "role": s.role,
-              "group": group_caption(scene, s.index), "zoom": _zoom_box(d, s.index),
-              "inp": sorted(d.input_steps(s.index))} for s in scene.steps]
-    data = {"n": n, "steps": steps, "dt": round(1000 * STEP_SECONDS)}
+    # Group captions and zoom boxes are shared by runs of steps: each is stored once, steps point to it.
+    groups: dict[str, int] = {}
+    zooms: dict[tuple, int] = {}
+    steps = []
+    for s in scene.steps:
+        de, en = scene.caption(s.index)
+        z = _zoom_box(d, s.index)
+        st = {"de": de, "en": en, "g": groups.setdefault(group_caption(scene, s.index), len(groups)),
+              "z": -1 if z is None else zooms.setdefault(tuple(z), len(zooms))}
+        inputs = sorted(d.input_steps(s.index))
+        if inputs:  # the steps that made what this step's instrument is set on
+            st["i"] = inputs
+        steps.append(st)
+    data = {"n": n, "steps": steps, "groups": list(groups), "zooms": [list(z) for z in zooms],
+            "dt": round(1000 * STEP_SECONDS)}
     title = title or scene.title
     giv = givens or {}
     givens_rows = "".join(f"<tr><th>{html.escape(str(k))}</th><td>{html.escape(_show(v))}</td></tr>"
@@ -242,7 +253,7 @@ li a.later{color:#bbb}
     groups.forEach(function (g) {
       var s = +g.getAttribute("data-step");
       // earlier steps: an input of step k, faded once their group is finished (data-fade), or old
-      var fade = +(g.getAttribute("data-fade") || 0), inp = k > 0 && k < n ? data.steps[k - 1].inp : [];
+      var fade = +(g.getAttribute("data-fade") || 0), inp = k > 0 && k < n ? (data.steps[k - 1].i || []) : [];
       g.setAttribute("class", "step" + (s > k ? " hid" : (s === k && k < n ? " cur" :
         (s < k && inp.indexOf(s) >= 0 ? " inp" : (fade && fade < k + (k === n ? 1 : 0) && s < k + (k === n ? 1 : 0) ? " done" :
         (k < n ? " old" : ""))))));
@@ -254,10 +265,10 @@ li a.later{color:#bbb}
     slider.value = k;
     text("counter", "Schritt " + k + " / " + n);
     var st = k > 0 ? data.steps[k - 1] : null;
-    text("cap-group", st ? st.group : "");
+    text("cap-group", st ? data.groups[st.g] : "");
     text("cap-de", st ? "Schritt " + k + ": " + st.de : document.title);
     text("cap-en", st ? "Step " + k + ": " + st.en : "");
-    var box = st && zoom.checked && k < n ? st.zoom : null;
+    var box = st && zoom.checked && k < n && st.z >= 0 ? data.zooms[st.z] : null;
     if (box) {
       svg.setAttribute("viewBox", box.join(" "));
       svg.classList.add("zoomed");

@@ -1,16 +1,29 @@
-"""A storyboard: a contact sheet of the construction's stages as one PNG, drawn by matplotlib.
+"""A storyboard: a contact sheet of the construction's stages.
 
 The tiles are the ends of the construction's groups (at most :data:`MAX_TILES`,
-thinned evenly, the last step always included); each tile shows steps 1..k,
-the steps since the previous tile in the style's highlight colour, with the
-step number and caption beneath.  The PNG carries no software/date metadata,
-so the bytes depend only on the figure and the matplotlib version.
+thinned evenly, the last step always included); each tile shows steps 1..k
+of its stage's region, the steps since the previous tile in the style's
+highlight colour, with the step numbers and the group's title beneath.
+
+:func:`storyboard_svg` (what a replay and the gallery write) is made from the
+layered figure's own elements: each step group is defined once, in the
+delta of the tile that adds it, and tile i shows the deltas 1..i through
+``<use>`` -- a handful of references per tile, no copy of the drawing and
+no rasteriser.  :func:`storyboard_png` draws the same sheet as a PNG with
+matplotlib (imported only then) for places that cannot show SVG: one Axes,
+each tile an affine copy of the marks inside it, one collection per look,
+clipped to the tile.  The PNG carries no software/date metadata.
 
 >>> from construct.constructions import get
 >>> from construct.render.scene import build_scene
 >>> sc = build_scene(get("crank").figure(parts=6))
 >>> ks = storyboard_steps(sc)
 >>> ks[-1] == len(sc.steps) and len(ks) <= MAX_TILES and ks == sorted(set(ks))
+True
+>>> sheet = storyboard_svg(Drawing(sc))
+>>> sheet.count("<use ") > len(ks) and sheet.count('id="s0001-O"') == 1
+True
+>>> storyboard_png(sc)[1:4] == b"PNG"
 True
 """
 
@@ -21,11 +34,13 @@ import math
 import textwrap
 
 from .scene import Scene
-from .svg import PLAIN, Style
+from .svg import PLAIN, Drawing, Style, fmt
 
-__all__ = ["storyboard_png", "storyboard_steps", "MAX_TILES"]
+__all__ = ["storyboard_svg", "storyboard_png", "storyboard_steps", "MAX_TILES"]
 
-MAX_TILES = 20
+MAX_TILES = 12
+TILE_W = 3.2  # inches
+CAPTION_H = 0.62  # inches below each tile's drawing
 
 
 def storyboard_steps(scene: Scene, max_tiles: int = MAX_TILES) -> list[int]:
@@ -55,57 +70,39 @@ def _colour(style: Style, m, current: bool) -> str:
     return style.ink if (m.role == "result" or m.kind == "point") else style.construction
 
 
-def _arc_points(cx: float, cy: float, r: float, start: float, sweep: float) -> list[tuple[float, float]]:
-    """An arc as a polyline (3 degrees a segment).
-
-    Agg draws matplotlib's Arc and Circle patches of a large radius seen
-    through a small tile very slowly (minutes for the inertia curve's rod
-    arcs); a polyline of this fineness is indistinguishable at tile size.
-    """
-    n = max(4, int(abs(sweep) / math.radians(3.0)) + 1)
+def _arc_points(cx: float, cy: float, r: float, start: float, sweep: float, fine: float) -> list[tuple[float, float]]:
+    """An arc as a polyline whose chords stay within *fine* (drawing units) of the arc, 3 to 120 chords."""
+    step = 2.0 * math.sqrt(max(2.0 * fine / max(r, 1e-12), 1e-12))  # chord angle for a sagitta of *fine*
+    n = min(120, max(3, int(abs(sweep) / min(step, math.radians(12.0))) + 1))
     return [(cx + r * math.cos(start + sweep * i / n), cy + r * math.sin(start + sweep * i / n)) for i in range(n + 1)]
 
 
-def _draw(ax, scene: Scene, k: int, since: int, style: Style) -> None:
-    """Steps 1..k on *ax*; marks gathered into one collection per look (fast, and few artists)."""
-    from matplotlib.collections import LineCollection
-    from matplotlib.patches import Polygon
+def _shapes(scene: Scene):
+    """Each mark as (mark, kind, points as an (N, 2) array, its box): 'pt', 'line' or 'area'."""
+    import numpy as np
 
-    lines: dict[tuple, list] = {}
-    points: dict[tuple, list] = {}
-    areas = []
+    x0, y0, x1, y1 = scene.bbox
+    fine = max(x1 - x0, y1 - y0) / 4000.0  # a tile never magnifies a stage more than ~10x
+    out = []
     for m in scene.marks:
-        if m.step > k:
-            break
-        current = m.step > since
-        c = _colour(style, m, current)
-        alpha = 1.0 if current or style.earlier_opacity >= 1.0 else max(style.earlier_opacity, 0.3)
-        lw = 0.35 * (style.result_width if m.role == "result" else style.construction_width)
-        if current and style.highlight:
-            lw = max(lw, 0.8)
         g = m.geom
-        look = (c, round(lw, 3), alpha)
         if m.kind == "point":
-            points.setdefault((c, alpha, 1.6 if m.role == "result" else 1.0), []).append(g)
+            kind, pts = "pt", [g]
         elif m.kind == "segment":
-            lines.setdefault(look, []).append([(g[0], g[1]), (g[2], g[3])])
-        elif m.kind == "curve":
-            lines.setdefault(look, []).append(list(g))
+            kind, pts = "line", [(g[0], g[1]), (g[2], g[3])]
         elif m.kind == "circle":
-            lines.setdefault(look, []).append(_arc_points(g[0], g[1], g[2], 0.0, 2 * math.pi))
+            kind, pts = "line", _arc_points(g[0], g[1], g[2], 0.0, 2 * math.pi, fine)
         elif m.kind == "arc":
-            lines.setdefault(look, []).append(_arc_points(*g))
+            kind, pts = "line", _arc_points(*g, fine)
+        elif m.kind == "curve":
+            kind, pts = "line", list(g)
         elif m.kind == "area":
-            areas.append((Polygon(g, closed=True), c, alpha))
-    for poly, c, alpha in areas:
-        poly.set(fc=style.area_fill if style.area_fill != "none" else "none", ec=c, lw=0.3,
-                 hatch="////" if style.hatch else None, alpha=alpha)
-        ax.add_patch(poly)
-    for (c, lw, alpha), segs in sorted(lines.items(), key=lambda kv: kv[0][2]):
-        ax.add_collection(LineCollection(segs, colors=c, linewidths=lw, alpha=alpha, capstyle="round"),
-                          autolim=False)
-    for (c, alpha, ms), pts in sorted(points.items()):
-        ax.plot([p[0] for p in pts], [p[1] for p in pts], "o", ms=ms, color=c, alpha=alpha, mec="none", ls="none")
+            kind, pts = "area", list(g)
+        else:
+            continue
+        a = np.asarray(pts, dtype=float).reshape(-1, 2)
+        out.append((m, kind, a, (a[:, 0].min(), a[:, 1].min(), a[:, 0].max(), a[:, 1].max())))
+    return out
 
 
 def _tile_text(scene: Scene, first: int, k: int) -> str:
@@ -120,47 +117,162 @@ def _tile_text(scene: Scene, first: int, k: int) -> str:
     return f"{span}: {de} / {en}"
 
 
-def storyboard_png(scene: Scene, style: Style = PLAIN, *, columns: int = 4, dpi: int = 90) -> bytes:
+def storyboard_png(scene: Scene, style: Style = PLAIN, *, columns: int = 4, dpi: int = 72) -> bytes:
     """The contact sheet as PNG bytes."""
-    import matplotlib
-
-    matplotlib.use("Agg", force=False)
+    import numpy as np
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.collections import LineCollection, PolyCollection
     from matplotlib.figure import Figure
+    from matplotlib.patches import Rectangle
 
     ks = storyboard_steps(scene)
     rows = math.ceil(len(ks) / columns)
     x0, y0, x1, y1 = scene.bbox
-    aspect = (y1 - y0) / max(x1 - x0, 1e-12)
-    tile_w = 3.2
-    aspect_t = min(max(aspect, 0.25), 1.2)  # height / width of a tile's drawing
-    tile_h = tile_w * aspect_t + 0.62
-    fig = Figure(figsize=(tile_w * columns, tile_h * rows + 0.5), dpi=dpi, facecolor=style.background)
-    fig.suptitle(f"{scene.title[0]}", fontsize=9, color=style.ink, family="DejaVu Sans", y=1 - 0.12 / (tile_h * rows + 0.5))
+    aspect_t = min(max((y1 - y0) / max(x1 - x0, 1e-12), 0.25), 1.2)  # height / width of a tile's drawing
+    pad = 0.03
+    tile_h = TILE_W * aspect_t + CAPTION_H
+    width, height = TILE_W * columns, tile_h * rows + 0.5
+    fig = Figure(figsize=(width, height), dpi=dpi, facecolor=style.background)
+    FigureCanvasAgg(fig)
+    ax = fig.add_axes((0.0, 0.0, 1.0, 1.0))
+    ax.set_axis_off()
+    ax.set_xlim(0.0, width)
+    ax.set_ylim(0.0, height)
+    fig.text(0.5, 1 - 0.12 / height, scene.title[0], fontsize=9, color=style.ink, family="DejaVu Sans",
+             ha="center", va="top")
+    shapes = _shapes(scene)
+    steps = np.array([m.step for m, _, _, _ in shapes], dtype=int)
+    boxes = np.array([b for _, _, _, b in shapes], dtype=float).reshape(-1, 4)
+    fade = style.earlier_opacity < 1.0
     prev = 0
     for i, k in enumerate(ks):
-        ax = fig.add_subplot(rows, columns, i + 1)
-        ax.set_facecolor(style.background)
-        # each tile shows the region of its top-level group (the far division ray
-        # of the stroke would otherwise shrink the crank circle to a dot)
+        col, row = i % columns, i // columns
+        # the tile's drawing, in inches: left, bottom, width, height
+        tx, tw = col * TILE_W + pad, TILE_W - 2 * pad
+        th = tw * aspect_t
+        ty = height - 0.5 - row * tile_h - th
+        # it shows the region of its top-level group (the far division ray of the
+        # stroke would otherwise shrink the crank circle to a dot)
         sx0, sy0, sx1, sy1 = scene.stage_box(k)
         cx, cy = (sx0 + sx1) / 2, (sy0 + sy1) / 2
-        half = max((sx1 - sx0) / 2, (sy1 - sy0) / 2 / aspect_t)
-        ax.set_xlim(cx - half, cx + half)
-        ax.set_ylim(cy - half * aspect_t, cy + half * aspect_t)
-        ax.set_aspect("equal", adjustable="box")
-        ax.set_xticks([])
-        ax.set_yticks([])
-        for sp in ax.spines.values():
-            sp.set_color("#bbbbbb")
-            sp.set_linewidth(0.5)
-        _draw(ax, scene, k, prev, style)
+        half = max((sx1 - sx0) / 2, (sy1 - sy0) / 2 / aspect_t, 1e-12)
+        scale = (tw / 2) / half
+        vx0, vx1, vy0, vy1 = cx - half, cx + half, cy - half * aspect_t, cy + half * aspect_t
+        shift = np.array([tx + tw / 2 - cx * scale, ty + th / 2 - cy * scale])
+        frame = Rectangle((tx, ty), tw, th, fill=False, ec="#bbbbbb", lw=0.5)
+        ax.add_patch(frame)
+        clip = Rectangle((tx, ty), tw, th, transform=ax.transData)
+        inside = np.flatnonzero((steps <= k) & (boxes[:, 0] <= vx1) & (boxes[:, 2] >= vx0)
+                                & (boxes[:, 1] <= vy1) & (boxes[:, 3] >= vy0))
+        lines: dict[tuple, list] = {}
+        points: dict[tuple, list] = {}
+        areas: dict[tuple, list] = {}
+        for j in inside:
+            m, kind, pts, _ = shapes[j]
+            current = m.step > prev
+            c = _colour(style, m, current)
+            alpha = 1.0 if current or not fade else max(style.earlier_opacity, 0.3)
+            xy = pts * scale + shift
+            if kind == "pt":
+                points.setdefault((c, alpha, 1.6 if m.role == "result" else 1.0), []).append(xy[0])
+            elif kind == "area":
+                areas.setdefault((c, alpha), []).append(xy)
+            else:
+                lw = 0.35 * (style.result_width if m.role == "result" else style.construction_width)
+                if current and style.highlight:
+                    lw = max(lw, 0.8)
+                lines.setdefault((c, round(lw, 3), alpha), []).append(xy)
+        for (c, alpha), polys in sorted(areas.items()):
+            coll = PolyCollection(polys, facecolors=style.area_fill if style.area_fill != "none" else "none",
+                                  edgecolors=c, linewidths=0.3, alpha=alpha, hatch="////" if style.hatch else None)
+            ax.add_collection(coll, autolim=False)
+            coll.set_clip_path(clip)  # after adding: the Axes sets its own clip on collections without one
+        for (c, lw, alpha), segs in sorted(lines.items(), key=lambda kv: (kv[0][2], kv[0])):
+            coll = LineCollection(segs, colors=c, linewidths=lw, alpha=alpha, capstyle="round")
+            ax.add_collection(coll, autolim=False)
+            coll.set_clip_path(clip)  # after adding: the Axes sets its own clip on collections without one
+        for (c, alpha, ms), pts in sorted(points.items()):
+            xy = np.array(pts)
+            (dots,) = ax.plot(xy[:, 0], xy[:, 1], "o", ms=ms, color=c, alpha=alpha, mec="none", ls="none")
+            dots.set_clip_path(clip)
         text = textwrap.shorten(_tile_text(scene, prev + 1, k), 110, placeholder=" …")
-        ax.set_xlabel("\n".join(textwrap.wrap(text, 52)[:2]), fontsize=6.2, color=style.ink, family="DejaVu Sans",
-                      labelpad=2)
+        ax.text(tx + tw / 2, ty - 0.05, "\n".join(textwrap.wrap(text, 48)[:2]), fontsize=7, color=style.ink,
+                family="DejaVu Sans", ha="center", va="top")
         prev = k
-    fig.subplots_adjust(left=0.01, right=0.99, bottom=0.04, top=1 - 0.45 / (tile_h * rows + 0.5),
-                        wspace=0.04, hspace=0.32)
     buf = io.BytesIO()
     # No "Software" (version) or date chunks: the same figure gives the same bytes.
     fig.savefig(buf, format="png", dpi=dpi, facecolor=style.background, metadata={"Software": None})
     return buf.getvalue()
+
+
+#: Tile width of the SVG sheet (px) and its caption's font size.
+TILE_PX, TILE_FONT = 300.0, 10.0
+
+
+def storyboard_svg(drawing: Drawing, *, columns: int = 4) -> str:
+    """The contact sheet as SVG text, made of the *drawing*'s elements (each defined once)."""
+    scene, style, doc = drawing.scene, drawing.style, drawing.doc
+    f = doc.factory
+    ks = storyboard_steps(scene)
+    rows = math.ceil(len(ks) / columns)
+    x0, y0, x1, y1 = scene.bbox
+    aspect_t = min(max((y1 - y0) / max(x1 - x0, 1e-12), 0.25), 1.2)
+    gap, head = 8.0, 30.0
+    tw, th = TILE_PX, TILE_PX * aspect_t
+    cell_h = th + 2.6 * TILE_FONT + gap
+    width, height = columns * (tw + gap) + gap, head + rows * cell_h
+    dwg = doc.drawing(size=(fmt(width), fmt(height)), viewBox=f"0 0 {fmt(width)} {fmt(height)}")
+    css = (style.css() + f"\n.sheet{{fill:{style.ink};font-family:'DejaVu Sans',Arial,sans-serif;"
+           f"font-size:{fmt(TILE_FONT)}px;text-anchor:middle}}\n.sheet.title{{font-size:{fmt(1.3 * TILE_FONT)}px}}"
+           f"\n.frame{{fill:{style.background};stroke:#bbbbbb;stroke-width:0.5}}")
+    dwg.add(f.style("\n" + css + "\n"))
+    dwg.add(f.rect(insert=("0", "0"), size=(fmt(width), fmt(height)), id="background", fill=style.background))
+    dwg.add(f.text(scene.title[0], x=[fmt(width / 2)], y=[fmt(head * 0.6)], class_="sheet title"))
+    # Each tile's new steps, per layer, defined once; later tiles refer to them.
+    defs = dwg.defs  # svgwrite's own <defs> of the drawing
+    bounds = [0] + ks
+    present: set[tuple[int, str]] = set()
+    for i in range(1, len(bounds)):
+        for name in drawing.LAYERS:
+            done = len(drawing.step_runs(name, bounds[i - 1]))
+            runs = drawing.step_runs(name, bounds[i])[done:]
+            if runs:
+                delta = f.g(id=f"tile{i}-{name}")
+                present.add((i, name))
+                for k, elems in runs:
+                    delta.add(drawing.step_group(k, elems))
+                defs.add(delta)
+    if style.highlight:
+        tint = f.filter(id="now")
+        tint.feFlood(flood_color=style.highlight, result="ink")
+        tint.feComposite(in_="ink", in2="SourceAlpha", operator="in")
+        defs.add(tint)
+
+    vp = drawing.vp
+    for i, k in enumerate(ks, start=1):
+        col, row = (i - 1) % columns, (i - 1) // columns
+        tx, ty = gap + col * (tw + gap), head + row * cell_h
+        sx0, sy0, sx1, sy1 = scene.stage_box(k)
+        cx, cy = (sx0 + sx1) / 2, (sy0 + sy1) / 2
+        half = max((sx1 - sx0) / 2, (sy1 - sy0) / 2 / aspect_t, 1e-12) * vp.scale
+        px, py = vp.px(cx, cy)
+        box = f"{fmt(px - half)} {fmt(py - half * aspect_t)} {fmt(2 * half)} {fmt(2 * half * aspect_t)}"
+        dwg.add(f.rect(insert=(fmt(tx), fmt(ty)), size=(fmt(tw), fmt(th)), class_="frame"))
+        view = f.svg(insert=(fmt(tx), fmt(ty)), size=(fmt(tw), fmt(th)), viewBox=box)
+        earlier = f.g(opacity=fmt(style.earlier_opacity)) if style.earlier_opacity < 1.0 else f.g()
+        for name in drawing.LAYERS:
+            for j in range(1, i):
+                if (j, name) in present:
+                    earlier.add(f.use(f"#tile{j}-{name}"))
+        view.add(earlier)
+        now = f.g(filter="url(#now)") if style.highlight else f.g()
+        for name in drawing.LAYERS:
+            if (i, name) in present:
+                now.add(f.use(f"#tile{i}-{name}"))
+        view.add(now)
+        dwg.add(view)
+        text = textwrap.shorten(_tile_text(scene, bounds[i - 1] + 1, k), 110, placeholder=" …")
+        for n, line in enumerate(textwrap.wrap(text, 54)[:2]):
+            dwg.add(f.text(line, x=[fmt(tx + tw / 2)], y=[fmt(ty + th + (n + 1.1) * 1.2 * TILE_FONT)],
+                           class_="sheet"))
+    return doc.text(dwg)

@@ -164,6 +164,8 @@ class Reader:
 
     def _split(self, token: str) -> tuple[str, str] | None:
         """``D0P6`` -> (D0, P6): two point names written together, if the token is exactly that."""
+        if token[1:].islower() and "." not in token and not any(c.isdigit() for c in token):
+            return None  # a word ("Kreis", "durch"): not two names
         for i in range(1, len(token)):
             if token[:i] in self.points and token[i:] in self.points:
                 return token[:i], token[i:]

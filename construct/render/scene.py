@@ -87,7 +87,15 @@ class Scene:
         step's points with it), the path is in the group title above.  A
         lettered object goes by its letter (P12 -> 12).
         """
-        return self._reader.text(text, lang, outputs)
+        key = (text, lang, tuple(outputs))
+        done = self._readable_cache.get(key)
+        if done is None:  # group titles recur on every step of their group: rewritten once
+            done = self._readable_cache[key] = self._reader.text(text, lang, outputs)
+        return done
+
+    @functools.cached_property
+    def _readable_cache(self) -> dict[tuple, str]:
+        return {}
 
     @functools.cached_property
     def _reader(self) -> Reader:

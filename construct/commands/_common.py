@@ -7,7 +7,7 @@ import math
 from pathlib import Path
 from typing import Any
 
-from ..constructions import Construction, Figure, get
+from ..constructions import Construction, Figure, find, get
 from ..errors import InvalidParameter, ProtocolFormatError
 from ..kernel.protocol import Protocol
 
@@ -37,6 +37,8 @@ def add_construction_options(p: argparse.ArgumentParser, *, name_optional: bool 
     p.add_argument("--divisions", type=_whole, metavar="M", help="divisions of the stroke (crank-angle)")
     p.add_argument("--radius", type=_number, metavar="R", help="crank radius r in drawing units")
     p.add_argument("--pressure-ratio", type=_number, metavar="F/f", help="F/f of the inertia pressures")
+    p.add_argument("--given", action="append", default=[], metavar="NAME=VALUE",
+                   help="set a given of a --protocol by its own name (repeatable), e.g. --given s=10")
 
 
 PARAM_OPTIONS = {"rod_ratio": "rod_ratio", "parts": "parts", "method": "method", "divisions": "divisions",
@@ -64,15 +66,51 @@ def load_protocol(path: str) -> Protocol:
     return Protocol.from_json(text)
 
 
-def figure_from_args(args: argparse.Namespace) -> tuple[Construction, Figure]:
-    """Build the named construction, or replay --protocol with the given givens."""
+def _named_givens(args: argparse.Namespace) -> dict[str, float]:
+    out: dict[str, float] = {}
+    for item in getattr(args, "given", None) or []:
+        name, sep, value = item.partition("=")
+        if not sep or not name:
+            raise InvalidParameter(f"--given takes NAME=VALUE, got {item!r}")
+        v = _number(value) if _is_number(value) else None
+        if v is None or not math.isfinite(v):
+            raise InvalidParameter(f"--given {name} must be a finite number, got {value!r}")
+        out[name] = v
+    return out
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+def figure_from_args(args: argparse.Namespace) -> tuple[Construction | None, Figure]:
+    """Build the named construction, or replay --protocol with the given givens.
+
+    A protocol of a construction this library does not know replays all the
+    same (it needs nothing but the op table); the construction is then None.
+    """
     params = given_options(args)
+    named = _named_givens(args)
     if args.protocol:
         proto = load_protocol(args.protocol)
         if args.name and args.name != proto.construction:
             raise InvalidParameter(f"the protocol is of {proto.construction!r}, not {args.name!r}")
-        c = get(proto.construction)
-        return c, c.replay(proto, **params)
+        c = find(proto.construction)
+        if c is not None and not named:
+            return c, c.replay(proto, **params)
+        givens = dict(proto.params.get("givens", {}))
+        for key, value in {**params, **named}.items():
+            if key not in givens:
+                raise InvalidParameter(f"the protocol {proto.construction!r} has no given {key!r}; "
+                                       f"it has {', '.join(sorted(givens)) or 'none'}")
+            givens[key] = value
+        return c, Figure(proto, proto.replay(givens))
+    if named:
+        raise InvalidParameter("--given sets the givens of a --protocol; a named construction takes its own options")
     if not args.name:
         raise InvalidParameter("name a construction (see 'construct list') or give --protocol FILE")
     c = get(args.name)

@@ -24,5 +24,6 @@ def add_arguments(p) -> None:
 def run(args) -> int:
     c, fig = figure_from_args(args)
     info = write_replay(c, fig, args.out, style=args.style, frames=args.frames)
-    print(f"{c.name}: {info['steps']} steps, {info['frames']} frames written to {info['out']}", file=sys.stderr)
+    name = c.name if c is not None else fig.protocol.construction
+    print(f"{name}: {info['steps']} steps, {info['frames']} frames written to {info['out']}", file=sys.stderr)
     return 0

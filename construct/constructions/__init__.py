@@ -17,27 +17,10 @@ from typing import Any, Callable, Mapping
 
 from ..checks import Check
 from ..errors import InvalidParameter, UnknownConstruction
-from ..kernel.protocol import Caption, Protocol, Replay
+from ..kernel.figure import Figure
+from ..kernel.protocol import Caption, Protocol
 
-__all__ = ["Figure", "Construction", "register", "get", "names", "positive", "rod_ratio_param"]
-
-
-@dataclass(frozen=True)
-class Figure:
-    """A construction built (or replayed): its protocol and the objects it made."""
-
-    protocol: Protocol
-    replay: Replay
-
-    @property
-    def params(self) -> Mapping[str, Any]:
-        return self.protocol.params
-
-    def _repr_svg_(self) -> str:
-        """Inline display in Jupyter: the final figure in the plain style."""
-        from ..render.notebook import figure_repr_svg
-
-        return figure_repr_svg(self)
+__all__ = ["Figure", "Construction", "register", "get", "find", "names", "positive", "rod_ratio_param"]
 
 
 @dataclass(frozen=True)
@@ -114,6 +97,12 @@ def get(name: str) -> Construction:
         return _REGISTRY[name]
     except KeyError:
         raise UnknownConstruction(f"unknown construction {name!r}; available: {', '.join(sorted(_REGISTRY))}") from None
+
+
+def find(name: str) -> Construction | None:
+    """The registered construction of that name, or None (a protocol of the user's own)."""
+    _load()
+    return _REGISTRY.get(name)
 
 
 def positive(name: str, value: Any) -> float:

@@ -47,13 +47,13 @@ from ..errors import DegenerateObject, GeometryError, InvalidParameter
 from ..kernel.geometry import Line, Point
 from ..kernel.instruments import Builder
 from ..kernel.proportional import ProportionalAngle, Scale, carry_across, scale_line, vertex_on
-from ..kernel.protocol import Caption, register_op
+from ..kernel.curves import _frame_of
+from ..kernel.protocol import Caption
 from . import Construction, Figure, positive, register, rod_ratio_param
 from .crank import angle_tolerance, build_frame, crank_angle, point_name, rod_arcs
 
 __all__ = [
     "INERTIA",
-    "BezierCurve",
     "build_inertia",
     "inertia_checks",
     "ordinate",
@@ -63,153 +63,6 @@ __all__ = [
     "characteristic_point_rows",
     "q_at_crank_angle_rows",
 ]
-
-# --------------------------------------------------------------------------
-# The drawn curve: a plain value the renderer draws as a smooth path.
-# --------------------------------------------------------------------------
-
-
-class BezierCurve(tuple):
-    """A smooth curve drawn through points with a French curve: a chain of cubic Bézier segments.
-
-    The points are p0, c1, c2, p1, c1, c2, p2, ... (3k + 1 of them): each
-    segment runs from one point through two control points to the next.  An
-    SVG renderer writes ``M p0 C c1 c2 p1 C ...``; :meth:`curve_points`
-    gives a fixed polyline for renderers that only draw polylines.
-
-    >>> c = BezierCurve((Point(0, 0), Point(1, 1), Point(2, 1), Point(3, 0)))
-    >>> c.kind, len(c.segments()), c.curve_points(2)
-    ('bezier', 1, (Point(0.0, 0.0), Point(1.5, 0.75), Point(3.0, 0.0)))
-    >>> c.y_at(1.5)
-    0.75
-    """
-
-    __slots__ = ()
-    kind = "bezier"
-
-    def __new__(cls, points: Sequence[Point]) -> "BezierCurve":
-        pts = tuple(points)
-        if len(pts) < 4 or len(pts) % 3 != 1 or not all(isinstance(p, Point) for p in pts):
-            raise DegenerateObject(f"a Bézier chain needs 3k + 1 points (k >= 1), got {len(pts)}")
-        return tuple.__new__(cls, pts)
-
-    def segments(self) -> tuple[tuple[Point, Point, Point, Point], ...]:
-        return tuple(tuple(self[i:i + 4]) for i in range(0, len(self) - 1, 3))  # type: ignore[misc]
-
-    @staticmethod
-    def _at(seg: Sequence[Point], t: float) -> tuple[float, float]:
-        s = 1.0 - t
-        w = (s * s * s, 3.0 * s * s * t, 3.0 * s * t * t, t * t * t)
-        return (sum(wi * p[0] for wi, p in zip(w, seg)), sum(wi * p[1] for wi, p in zip(w, seg)))
-
-    def curve_points(self, per_segment: int = 16) -> tuple[Point, ...]:
-        """The curve as a polyline: *per_segment* pieces per Bézier segment, ends exact."""
-        out = [self[0]]
-        for seg in self.segments():
-            for i in range(1, per_segment):
-                out.append(Point(*self._at(seg, i / per_segment)))
-            out.append(seg[3])
-        return tuple(out)
-
-    def y_at(self, x: float) -> float:
-        """The ordinate where the curve passes the abscissa *x* (the curve is a graph over x)."""
-        for seg in self.segments():
-            x0, x3 = seg[0][0], seg[3][0]
-            if min(x0, x3) <= x <= max(x0, x3):
-                lo, hi = 0.0, 1.0
-                rising = x3 >= x0
-                for _ in range(60):  # bisection to 1e-18 of the segment;: x(t) is monotone on every segment drawn here
-                    mid = 0.5 * (lo + hi)
-                    if (self._at(seg, mid)[0] < x) == rising:
-                        lo = mid
-                    else:
-                        hi = mid
-                return self._at(seg, 0.5 * (lo + hi))[1]
-        raise GeometryError(f"abscissa {x!r} is outside the drawn curve")
-
-    def as_json(self) -> dict[str, Any]:
-        return {"type": "bezier", "points": [[p[0], p[1]] for p in self]}
-
-    def __repr__(self) -> str:
-        return f"BezierCurve({len(self.segments())} segments from {self[0]!r} to {self[-1]!r})"
-
-
-def _frame_of(axis: Line) -> tuple[float, float, float, float]:
-    ux, uy = axis.direction()
-    return ux, uy, -uy, ux  # along the stroke line, and its normal ("up")
-
-
-def _french_curve(args, params, givens):
-    """A smooth curve through the points (sorted along the stroke line) that follows the given tangents.
-
-    Piecewise cubic Hermite in the frame of the stroke line: the slope at a
-    point is the given tangent's where there is one, else that of the
-    parabola through the point and its two neighbours (Bessel), as a
-    draftsman lays a French curve through three points at a time.
-    """
-    axis = args[0]
-    n = int(params["points"])
-    pts = list(args[1:1 + n])
-    tangents = dict(zip((int(i) for i in params["tangent_at"]), args[1 + n:]))
-    ux, uy, nx, ny = _frame_of(axis)
-    rows = sorted(((p[0] * ux + p[1] * uy, p[0] * nx + p[1] * ny, i, p) for i, p in enumerate(pts)),
-                  key=lambda r: (r[0], r[2]))
-    u = [r[0] for r in rows]
-    v = [r[1] for r in rows]
-    scale = max(abs(a) for a in u + v) or 1.0
-    for a, c in zip(u, u[1:]):
-        if c - a <= 1e-12 * scale:
-            raise GeometryError("two points of the curve share an abscissa; a French curve cannot pass both")
-    h = [c - a for a, c in zip(u, u[1:])]
-    d = [(v[i + 1] - v[i]) / h[i] for i in range(len(h))]
-    slopes = []
-    for j, (_, _, i, _) in enumerate(rows):
-        if i in tangents:
-            (px, py), (qx, qy) = tangents[i]
-            du, dv = (qx - px) * ux + (qy - py) * uy, (qx - px) * nx + (qy - py) * ny
-            if abs(du) <= 1e-12 * math.hypot(du, dv):
-                raise GeometryError("a tangent of the curve is perpendicular to the stroke line")
-            slopes.append(dv / du)
-        elif len(h) == 1:
-            slopes.append(d[0])
-        elif j == 0:
-            slopes.append(d[0] + (d[0] - d[1]) * h[0] / (h[0] + h[1]))
-        elif j == len(rows) - 1:
-            slopes.append(d[-1] + (d[-1] - d[-2]) * h[-1] / (h[-1] + h[-2]))
-        else:
-            slopes.append((h[j] * d[j - 1] + h[j - 1] * d[j]) / (h[j - 1] + h[j]))
-
-    def plane(a: float, b: float) -> Point:
-        return Point(a * ux + b * nx, a * uy + b * ny)
-
-    out = [rows[0][3]]
-    for j in range(len(h)):
-        third = h[j] / 3.0
-        out += [plane(u[j] + third, v[j] + slopes[j] * third),
-                plane(u[j + 1] - third, v[j + 1] - slopes[j + 1] * third), rows[j + 1][3]]
-    return (BezierCurve(out),)
-
-
-def _parabola(args, params, givens):
-    """The parabola touching ED at E and DF at F (the envelope of the lines joining equal divisions of ED and DF)."""
-    e, d, f = args
-    c1 = Point(e[0] + 2.0 / 3.0 * (d[0] - e[0]), e[1] + 2.0 / 3.0 * (d[1] - e[1]))
-    c2 = Point(f[0] + 2.0 / 3.0 * (d[0] - f[0]), f[1] + 2.0 / 3.0 * (d[1] - f[1]))
-    return (BezierCurve((e, c1, c2, f)),)
-
-
-register_op("french_curve", _french_curve)
-register_op("parabola_envelope", _parabola)
-
-
-def french_curve(b: Builder, name: str, axis: str, points: Sequence[str], tangents: Mapping[int, str], *,
-                 de: str, en: str, role: str = "result") -> str:
-    """Record the drawing of a smooth curve through *points* along *tangents* (index -> line)."""
-    at = sorted(tangents)
-    b.record("curve", "french_curve", (axis, *points, *(tangents[i] for i in at)), (name,),
-             {"points": len(points), "tangent_at": tuple(at)}, de, en, role=role)
-    return name
-
 
 # --------------------------------------------------------------------------
 # The construction.
@@ -500,11 +353,11 @@ def _characteristic(b: Builder, c: _Ctx, n: int) -> None:
         tangents = {0: t0, n: t180}
         if n % 2 == 0:
             tangents[n // 2] = t90
-        french_curve(b, "curve", c.axis, pts, tangents, role="result",
+        b.french_curve("curve", c.axis, pts, tangents, role="result",
                      de="Curve der Massendrücke durch die Punkte K mit dem Curvenlineal",
                      en="curve of the inertia pressures through the points K with a French curve")
         seven = ["K0", "q3", "q7", "X.c6", "q5", "q4", F]
-        french_curve(b, "curve7", c.axis, seven, {0: t0, 4: t90, 6: t180}, role="construction",
+        b.french_curve("curve7", c.axis, seven, {0: t0, 4: t90, 6: t180}, role="construction",
                      de="Curve durch die sieben charakteristischen Punkte und drei Tangenten",
                      en="curve through the seven characteristic points along the three tangents")
         b.record("curve", "parabola_envelope", (E, D, F), ("parabola",), {},

@@ -2,6 +2,15 @@
 
 Every message names the step (when there is one), the instrument and the
 offending values, so that a failure in a 400-step replay points at its cause.
+Geometry raised inside a step is re-raised as the same class with the step's
+index, instrument and operation attached (:meth:`StepError.at_step`), so a
+build and a replay of the same protocol fail with the same error.
+
+>>> e = NoIntersection("circle about (0, 0) with radius 1 and circle about (5, 0) with radius 1 do not meet")
+>>> isinstance(e, StepError), isinstance(e, GeometryError)
+(True, True)
+>>> str(e.at_step(7, "compass", "intersect", "C7 where rod7 meets axis"))
+'step 7 (compass: C7 where rod7 meets axis): circle about (0, 0) with radius 1 and circle about (5, 0) with radius 1 do not meet'
 """
 
 from __future__ import annotations
@@ -10,12 +19,17 @@ __all__ = [
     "ConstructError",
     "InvalidParameter",
     "UnknownConstruction",
+    "ProtocolFormatError",
+    "OutputError",
+    "StepError",
     "GeometryError",
     "NoIntersection",
     "DegenerateObject",
-    "StepError",
-    "ProtocolFormatError",
-    "OutputError",
+    "RuleError",
+    "UnknownObject",
+    "WrongInput",
+    "MissingGiven",
+    "DuplicateName",
 ]
 
 
@@ -34,7 +48,42 @@ class UnknownConstruction(ConstructError, KeyError):
         return str(self.args[0]) if self.args else "unknown construction"
 
 
-class GeometryError(ConstructError):
+class ProtocolFormatError(ConstructError, ValueError):
+    """A protocol file is malformed or refers to objects it never made."""
+
+
+class OutputError(ConstructError, OSError):
+    """An output folder cannot be created or written."""
+
+
+class StepError(ConstructError):
+    """A step failed; names the step, its instrument and operation (when raised inside one)."""
+
+    def __init__(self, message: str, *, step_index: int | None = None, tool: str | None = None,
+                 op: str | None = None):
+        super().__init__(message)
+        self.step_index = step_index
+        self.tool = tool
+        self.op = op
+
+    def __str__(self) -> str:
+        return str(self.args[0]) if self.args else type(self).__name__
+
+    def __reduce__(self):
+        return (_rebuild, (type(self), str(self), self.step_index, self.tool, self.op))
+
+    def at_step(self, index: int, tool: str, op: str, caption: str) -> "StepError":
+        """The same error, its message prefixed by the step that raised it."""
+        if self.step_index is not None:
+            return self
+        return type(self)(f"step {index} ({tool}: {caption}): {self}", step_index=index, tool=tool, op=op)
+
+
+def _rebuild(cls, message, step_index, tool, op):
+    return cls(message, step_index=step_index, tool=tool, op=op)
+
+
+class GeometryError(StepError):
     """A geometric operation has no result (parallel lines, circles that do not meet)."""
 
 
@@ -46,18 +95,21 @@ class DegenerateObject(GeometryError):
     """A line through two equal points, a circle of zero or non-finite radius."""
 
 
-class StepError(ConstructError):
-    """A step of a protocol failed; wraps the geometric cause and names the step."""
-
-    def __init__(self, message: str, *, step_index: int | None = None, tool: str | None = None):
-        super().__init__(message)
-        self.step_index = step_index
-        self.tool = tool
+class RuleError(StepError, ValueError):
+    """An intersection rule is unknown, names the wrong number of objects, or is not a rule at all."""
 
 
-class ProtocolFormatError(ConstructError, ValueError):
-    """A protocol file is malformed or refers to objects it never made."""
+class UnknownObject(StepError, LookupError):
+    """A step uses an object name that no earlier step made."""
 
 
-class OutputError(ConstructError, OSError):
-    """An output folder cannot be created or written."""
+class WrongInput(StepError, TypeError):
+    """A step was given an object of the wrong kind (a point where a curve is needed, ...)."""
+
+
+class MissingGiven(StepError, InvalidParameter):
+    """A replay lacks a given that a step needs."""
+
+
+class DuplicateName(StepError, InvalidParameter):
+    """A step would make an object under a name an earlier step already used."""

@@ -27,14 +27,30 @@ from dataclasses import replace
 from types import MappingProxyType
 from typing import Any, Iterator, Mapping, Sequence
 
-from .errors import ConstructError, InvalidParameter, StepError
-from .protocol import EXACT, GIVEN, OPS, Caption, Protocol, Provenance, Step, rule_refs
+from .errors import DuplicateName, InvalidParameter, RuleError, StepError, UnknownObject, WrongInput
+from .ops import OPS
+from .protocol import EXACT, GIVEN, Caption, Protocol, Provenance, Replay, Step, compile_step, run_step
+from .rules import Rule, as_rule
 
 __all__ = ["Builder"]
 
 
 class Builder:
-    """Records and evaluates a construction step by step."""
+    """Records and evaluates a construction step by step.
+
+    Each method draws with one instrument (or a few, for the composites) and
+    returns the name of what it made; ``b[name]`` is the object itself.
+
+    >>> b = Builder("two points", givens={})
+    >>> b.given_point("A", 0.0, 0.0), b.given_point("B", 4.0, 3.0)
+    ('A', 'B')
+    >>> b["B"]
+    Point(4.0, 3.0)
+    >>> b["C"]
+    Traceback (most recent call last):
+    ...
+    construct.kernel.errors.UnknownObject: no object 'C' in 'two points' (it has A, B)
+    """
 
     def __init__(self, construction: str, givens: Mapping[str, float], params: Mapping[str, Any] | None = None,
                  replayable: Sequence[str] | None = None):
@@ -45,16 +61,26 @@ class Builder:
         self.steps: list[Step] = []
         self.objects: dict[str, Any] = {}
         self.provenance: dict[str, Provenance] = {}
+        self._maker: dict[str, int] = {}  # object name -> index into steps (labels are set in O(1))
         self._group: list[str] = []
         self._group_titles: dict[str, str] = {}
         self._counter: dict[str, int] = {}
 
     # -- bookkeeping ----------------------------------------------------------
     def __getitem__(self, name: str) -> Any:
-        return self.objects[name]
+        try:
+            return self.objects[name]
+        except KeyError:
+            have = ", ".join(list(self.objects)[:8]) + (", ..." if len(self.objects) > 8 else "")
+            raise UnknownObject(f"no object {name!r} in {self.construction!r} (it has {have or 'nothing yet'})") from None
 
     def fresh(self, prefix: str) -> str:
-        """A new object name starting with *prefix* (for auxiliary objects)."""
+        """A new object name starting with *prefix* (for auxiliary objects).
+
+        >>> b = Builder("demo", givens={})
+        >>> b.fresh("k"), b.fresh("k"), b.fresh("g")
+        ('k1', 'k2', 'g1')
+        """
         k = self._counter.get(prefix, 0) + 1
         self._counter[prefix] = k
         name = f"{prefix}{k}"
@@ -66,7 +92,14 @@ class Builder:
 
     @contextlib.contextmanager
     def group(self, en: str, de: str | None = None) -> Iterator[None]:
-        """Steps recorded inside belong to a group (shown collapsed or expanded)."""
+        """Steps recorded inside belong to a group (shown collapsed or expanded).
+
+        >>> b = Builder("demo", givens={})
+        >>> with b.group("the ends", "die Enden"):
+        ...     _ = b.given_point("A", 0.0, 0.0)
+        >>> b.steps[0].group
+        ('the ends',)
+        """
         self._group.append(en)
         if de:
             self._group_titles[en] = de
@@ -78,40 +111,62 @@ class Builder:
     def record(self, tool: str, op: str, inputs: Sequence[str], outputs: Sequence[str],
                params: Mapping[str, Any], de: str, en: str, *, provenance: Provenance | None = None,
                role: str = "construction", labels: Mapping[str, str] | None = None) -> tuple[Any, ...]:
-        """Evaluate one step and append it to the protocol."""
-        for name in outputs:
-            if name in self.objects:
-                raise InvalidParameter(f"object name {name!r} is used twice in {self.construction!r}")
-        frozen = MappingProxyType(dict(params))
+        """Evaluate one step with the op table's function and append it to the protocol.
+
+        This is the one place a step is evaluated while building; replay runs
+        the same compiled entry (:func:`~construct.kernel.protocol.run_step`).
+        """
         index = len(self.steps) + 1
-        args = [self.objects[n] for n in inputs]
-        try:
-            if "rule" in params:
-                refs = [self.objects[n] for n in rule_refs(params["rule"])]
-                values = OPS[op](args, frozen, self.givens, refs)
-            else:
-                values = OPS[op](args, frozen, self.givens)
-        except ConstructError as exc:
-            raise StepError(f"step {index} ({tool}: {en}): {exc}", step_index=index, tool=tool) from exc
+        where = dict(step_index=index, tool=tool, op=op)
+        for name in outputs:
+            if not isinstance(name, str) or not name:
+                raise StepError(f"step {index} ({tool}: {en}): object names are non-empty strings, got {name!r}", **where)
+            if name in self.objects:
+                raise DuplicateName(f"step {index} ({tool}: {en}): object name {name!r} is used twice in "
+                                f"{self.construction!r}", **where)
+        params = dict(params)
+        if "rule" in params:
+            try:
+                params["rule"] = as_rule(params["rule"]).as_tuple()  # stored as its JSON form
+            except RuleError as exc:
+                raise exc.at_step(index, tool, op, en) from None
+        step = Step(index, tool, op, tuple(inputs), tuple(outputs), MappingProxyType(params), Caption(de, en),
+                    provenance or EXACT, tuple(self._group), role, tuple(sorted((labels or {}).items())))
+        entry = compile_step(step)  # objects kept by name: the builder's dict is the environment
+        spec = entry[5]
+        missing = [n for n in (*step.inputs, *entry[4]) if n not in self.objects]
+        if missing:
+            raise UnknownObject(f"step {index} ({tool}: {en}) uses {missing[0]!r}, which no earlier step made", **where)
+        problem = spec.check_inputs([self.objects[n] for n in step.inputs])
+        if problem:
+            raise WrongInput(f"step {index} ({tool}: {en}): {op} {problem}", **where)
+        values = run_step(entry, self.objects, self.givens)
+        if len(values) != len(outputs):
+            raise StepError(f"step {index} ({tool}: {en}): {op} makes {len(values)} objects, "
+                            f"{len(outputs)} names were given", **where)
         if provenance is None:
-            provenance = self._inherited(tool, inputs)
-        step = Step(index, tool, op, tuple(inputs), tuple(outputs), frozen, Caption(de, en), provenance,
-                    tuple(self._group), role, tuple(sorted((labels or {}).items())))
+            step = replace(step, provenance=self._inherited(tool, inputs))
         self.steps.append(step)
-        for name, value in zip(outputs, values):
-            self.objects[name] = value
-            self.provenance[name] = provenance
+        for name in outputs:
+            self.provenance[name] = step.provenance
+            self._maker[name] = index - 1
         return values
 
     def set_label(self, name: str, text: str) -> None:
-        """Letter an object already made (the figure prints *text* beside it)."""
-        for i, step in enumerate(self.steps):
-            if name in step.outputs:
-                labels = dict(step.labels)
-                labels[name] = text
-                self.steps[i] = replace(step, labels=tuple(sorted(labels.items())))
-                return
-        raise InvalidParameter(f"no object {name!r} to label")
+        """Letter an object already made (the figure prints *text* beside it).
+
+        >>> b = Builder("demo", givens={})
+        >>> _ = b.given_point("P12", 1.0, 0.0)
+        >>> b.set_label("P12", "12"); b.steps[0].labels
+        (('P12', '12'),)
+        """
+        i = self._maker.get(name)
+        if i is None:
+            raise UnknownObject(f"no object {name!r} to label in {self.construction!r}")
+        step = self.steps[i]
+        labels = dict(step.labels)
+        labels[name] = text
+        self.steps[i] = replace(step, labels=tuple(sorted(labels.items())))
 
     def _inherited(self, tool: str, inputs: Sequence[str]) -> Provenance:
         """An object is as trustworthy as the weakest object it was made from."""
@@ -125,27 +180,69 @@ class Builder:
         return result
 
     def protocol(self) -> Protocol:
+        """The recorded steps as a replayable :class:`~construct.kernel.protocol.Protocol`.
+
+        >>> b = Builder("demo", givens={"s": 2.0})
+        >>> _ = b.given_point("A", 0.0, 0.0); _ = b.given_length("s", product=("s",))
+        >>> _ = b.circle_radius("k", "A", "s")
+        >>> b.protocol().replay({"s": 3.0})["k"].radius
+        3.0
+        """
         params = dict(self.params)
         params["givens"] = dict(self.givens)
         if self._group_titles:
             params["group_titles"] = dict(sorted(self._group_titles.items()))
         return Protocol(self.construction, MappingProxyType(params), tuple(self.steps), self.replayable)
 
+    def figure(self) -> "Figure":
+        """The construction as a :class:`~construct.kernel.figure.Figure`: protocol and objects, ready to draw.
+
+        >>> b = Builder("demo", givens={})
+        >>> _ = b.given_point("A", 0.0, 0.0); _ = b.given_point("B", 2.0, 0.0)
+        >>> _ = b.midpoint("M", "A", "B")
+        >>> fig = b.figure()
+        >>> fig.replay["M"], fig.svg().startswith("<?xml")
+        (Point(1.0, 0.0), True)
+        """
+        from .figure import Figure
+
+        proto = self.protocol()
+        return Figure(proto, Replay(proto, dict(self.objects), self.givens))
+
     # -- givens ----------------------------------------------------------------
     def given_point(self, name: str, x: float, y: float, *, unit: str | None = None,
                     de: str | None = None, en: str | None = None, label: str | None = None) -> str:
+        """A point given by its coordinates (multiplied by the given named *unit*, if any); lettered *label*.
+
+        >>> b = Builder("demo", givens={"r": 2.0})
+        >>> b["P"] if b.given_point("P", 1.0, 0.5, unit="r") else None
+        Point(2.0, 1.0)
+        """
         self.record("given", "given_point", (), (name,), {"x": x, "y": y, "unit": unit},
                     de or f"Punkt {name} gegeben", en or f"point {name} given", labels={name: label or name})
         return name
 
     def given_length(self, name: str, *, product: Sequence[str], factor: float = 1.0,
                      de: str | None = None, en: str | None = None) -> str:
+        """A compass opening given as *factor* times the product of the named givens.
+
+        >>> b = Builder("demo", givens={"r": 2.0, "rod_ratio": 5.0})
+        >>> float(b[b.given_length("L", product=("rod_ratio", "r"))])
+        10.0
+        """
         self.record("given", "given_length", (), (name,), {"product": tuple(product), "factor": factor},
                     de or f"Länge {name} gegeben", en or f"length {name} given")
         return name
 
     def given_line(self, name: str, through: str, *, angle_deg: float, de: str | None = None,
                    en: str | None = None, role: str = "construction") -> str:
+        """A line through a point at a given angle to the x axis (degrees, counter-clockwise).
+
+        >>> b = Builder("demo", givens={})
+        >>> _ = b.given_point("O", 0.0, 0.0)
+        >>> b[b.given_line("axis", "O", angle_deg=0.0)].q
+        Point(1.0, 0.0)
+        """
         self.record("given", "given_line", (through,), (name,), {"angle_deg": angle_deg},
                     de or f"Gerade {name} durch {through} gegeben", en or f"line {name} through {through} given",
                     role=role)
@@ -154,12 +251,26 @@ class Builder:
     # -- straightedge and compass ----------------------------------------------
     def line(self, name: str, a: str, b: str, *, de: str | None = None, en: str | None = None,
              role: str = "construction") -> str:
+        """The straightedge laid through two points.
+
+        >>> b = Builder("demo", givens={})
+        >>> _ = b.given_point("A", 0.0, 0.0); _ = b.given_point("B", 1.0, 1.0)
+        >>> b[b.line("g", "A", "B")].direction()
+        (0.7071067811865475, 0.7071067811865475)
+        """
         self.record("straightedge", "line", (a, b), (name,), {},
                     de or f"Gerade durch {a} und {b}", en or f"line through {a} and {b}", role=role)
         return name
 
     def circle_through(self, name: str, center: str, through: str, *, de: str | None = None,
                        en: str | None = None, role: str = "construction") -> str:
+        """The compass set in *center* and opened to *through*.
+
+        >>> b = Builder("demo", givens={})
+        >>> _ = b.given_point("A", 0.0, 0.0); _ = b.given_point("B", 3.0, 4.0)
+        >>> b[b.circle_through("k", "A", "B")].radius
+        5.0
+        """
         self.record("compass", "circle_through", (center, through), (name,), {},
                     de or f"Kreis um {center} durch {through}", en or f"circle about {center} through {through}",
                     role=role)
@@ -167,6 +278,13 @@ class Builder:
 
     def circle_radius(self, name: str, center: str, length: str, *, de: str | None = None,
                       en: str | None = None, role: str = "construction") -> str:
+        """The compass set in *center* with an opening carried over (a given or measured length).
+
+        >>> b = Builder("demo", givens={"r": 1.5})
+        >>> _ = b.given_point("O", 0.0, 0.0); _ = b.given_length("r", product=("r",))
+        >>> b[b.circle_radius("k", "O", "r")].radius
+        1.5
+        """
         self.record("compass", "circle_radius", (center, length), (name,), {},
                     de or f"Kreis um {center} mit Halbmesser {length}",
                     en or f"circle about {center} with radius {length}", role=role)
@@ -174,37 +292,165 @@ class Builder:
 
     def circle_segment(self, name: str, center: str, a: str, b: str, *, de: str | None = None,
                        en: str | None = None, role: str = "construction") -> str:
-        """Compass opening carried over from the segment ab."""
+        """The compass opened to the segment ab and set in *center*.
+
+        >>> b = Builder("demo", givens={})
+        >>> for n, x in (("A", 0.0), ("B", 2.0), ("C", 5.0)):
+        ...     _ = b.given_point(n, x, 0.0)
+        >>> b[b.circle_segment("k", "C", "A", "B")].radius
+        2.0
+        """
         self.record("compass", "circle_segment", (center, a, b), (name,), {},
                     de or f"Kreis um {center} mit Halbmesser {a}{b}",
                     en or f"circle about {center} with radius {a}{b}", role=role)
         return name
 
     def length_of(self, name: str, a: str, b: str, *, de: str | None = None, en: str | None = None) -> str:
+        """The compass set to the segment ab, kept as an opening to carry elsewhere.
+
+        >>> b = Builder("demo", givens={})
+        >>> _ = b.given_point("A", 0.0, 0.0); _ = b.given_point("B", 0.0, 2.0)
+        >>> float(b[b.length_of("ab", "A", "B")])
+        2.0
+        """
         self.record("compass", "length_of", (a, b), (name,), {},
                     de or f"Zirkel auf {a}{b} eingestellt", en or f"compass set to {a}{b}")
         return name
 
-    def intersect(self, name: str | Sequence[str], c1: str, c2: str, *, rule: Sequence[Any],
+    def intersect(self, name: str | Sequence[str], c1: str, c2: str, *, rule: Rule | Sequence[Any],
                   de: str | None = None, en: str | None = None, role: str = "construction",
                   labels: Mapping[str, str] | None = None) -> Any:
-        """Mark where two curves cross; *rule* says which point (see :func:`protocol.choose`).
+        """Mark where two curves cross; *rule* says which point (:mod:`construct.kernel.rules`).
 
-        With two names, both points are kept: the first is the one the rule picks.
+        With two names, both points are kept: the first is the one the rule
+        picks.  A drawn curve (polyline, French curve) may be crossed by a line.
+
+        >>> from construct.kernel.rules import left_of
+        >>> b = Builder("demo", givens={})
+        >>> _ = b.given_point("A", 0.0, 0.0); _ = b.given_point("B", 2.0, 0.0)
+        >>> _ = b.circle_through("ka", "A", "B"); _ = b.circle_through("kb", "B", "A")
+        >>> b[b.intersect("T", "ka", "kb", rule=left_of("A", "B"))]
+        Point(1.0, 1.7320508075688772)
+        >>> b.intersect("U", "ka", "kb", rule="left")
+        Traceback (most recent call last):
+        ...
+        construct.kernel.errors.RuleError: step 6 (intersect: U where ka meets kb): a rule is a value like left_of('A', 'B') or a list like ['left', 'A', 'B'], got 'left'
         """
         names = (name,) if isinstance(name, str) else tuple(name)
-        params = {"rule": tuple(rule), "both": len(names) == 2}
+        params = {"rule": rule, "both": len(names) == 2}
         self.record("intersect", "intersect", (c1, c2), names, params,
                     de or f"{' und '.join(names)} im Schnitt von {c1} und {c2}",
                     en or f"{' and '.join(names)} where {c1} meets {c2}", role=role, labels=labels)
         return names[0] if len(names) == 1 else names
 
-    def step_off(self, name: str, curve: str, start: str, length: str, *, rule: Sequence[Any],
+    def step_off(self, name: str, curve: str, start: str, length: str, *, rule: Rule | Sequence[Any],
                  de: str | None = None, en: str | None = None, role: str = "construction") -> str:
-        """Dividers: step the opening *length* off along *curve* from *start*; prick the point."""
-        self.record("dividers", "step_off", (curve, start, length), (name,), {"rule": tuple(rule), "both": False},
+        """Dividers: step the opening *length* off along *curve* from *start*; prick the point.
+
+        >>> from construct.kernel.rules import toward
+        >>> b = Builder("demo", givens={"e": 0.5})
+        >>> _ = b.given_point("O", 0.0, 0.0); _ = b.given_line("g", "O", angle_deg=0.0)
+        >>> _ = b.given_length("e", product=("e",))
+        >>> b[b.step_off("X", "g", "O", "e", rule=toward(dx=1.0))]
+        Point(0.5, 0.0)
+        """
+        self.record("dividers", "step_off", (curve, start, length), (name,), {"rule": rule, "both": False},
                     de or f"{name}: Stechzirkel {length} von {start} auf {curve} abgetragen",
                     en or f"{name}: dividers {length} stepped off from {start} along {curve}", role=role)
+        return name
+
+    # -- drawn curves and areas ----------------------------------------------------
+    def polyline(self, name: str, points: Sequence[str], *, closed: bool = False, de: str | None = None,
+                 en: str | None = None, role: str = "result") -> str:
+        """The constructed points joined in order by the straightedge.
+
+        >>> b = Builder("demo", givens={})
+        >>> for n, (x, y) in zip("ABC", ((0, 0), (1, 2), (2, 0))):
+        ...     _ = b.given_point(n, x, y)
+        >>> b[b.polyline("pl", "ABC")].y_at(0.5)
+        1.0
+        """
+        pts = tuple(points)
+        self.record("straightedge", "polyline", pts, (name,), {"closed": bool(closed)},
+                    de or f"Linienzug durch {', '.join(pts)}", en or f"polyline through {', '.join(pts)}", role=role)
+        return name
+
+    def french_curve(self, name: str, axis: str, points: Sequence[str], tangents: Mapping[int, str] | None = None,
+                     *, de: str | None = None, en: str | None = None, role: str = "result") -> str:
+        """A smooth curve drawn through *points* with a French curve, along *tangents* (point index -> line).
+
+        It constructs nothing: checks on it state how far a drawn curve may stray.
+
+        >>> b = Builder("demo", givens={})
+        >>> _ = b.given_point("O", 0.0, 0.0); _ = b.given_line("x", "O", angle_deg=0.0)
+        >>> for n, (x, y) in zip("ABC", ((0, 0), (1, 1), (2, 0))):
+        ...     _ = b.given_point(n, x, y)
+        >>> round(b[b.french_curve("c", "x", "ABC")].y_at(1.0), 12)
+        1.0
+        """
+        tangents = dict(tangents or {})
+        at = sorted(tangents)
+        self.record("curve", "french_curve", (axis, *points, *(tangents[i] for i in at)), (name,),
+                    {"points": len(points), "tangent_at": tuple(at)},
+                    de or "Kurve mit dem Kurvenlineal gezogen", en or "curve drawn with a French curve", role=role)
+        return name
+
+    def parabola_envelope(self, name: str, e: str, d: str, f: str, *, de: str | None = None,
+                          en: str | None = None, role: str = "result") -> str:
+        """The parabola touching DE at E and DF at F (the envelope of the joins of equal divisions).
+
+        >>> b = Builder("demo", givens={})
+        >>> for n, (x, y) in zip("EDF", ((0, 1), (1, -1), (2, 1))):
+        ...     _ = b.given_point(n, x, y)
+        >>> round(b[b.parabola_envelope("p", "E", "D", "F")].y_at(1.0), 12)   # half-way to D
+        0.0
+        """
+        self.record("curve", "parabola_envelope", (e, d, f), (name,), {},
+                    de or f"Parabel an {e}{d} und {d}{f}", en or f"parabola touching {e}{d} and {d}{f}", role=role)
+        return name
+
+    def area_between(self, name: str, upper: str, lower: str, start: str, end: str, *, de: str | None = None,
+                     en: str | None = None, role: str = "result") -> str:
+        """The region between two graphs over the x axis, from the abscissa of *start* to that of *end*.
+
+        Split where the graphs cross; pieces where *upper* is above carry the sign +1.
+
+        >>> b = Builder("demo", givens={})
+        >>> for n, (x, y) in zip("ABCD", ((0, 1), (2, 1), (0, 0), (2, 0))):
+        ...     _ = b.given_point(n, x, y)
+        >>> _ = b.line("top", "A", "B"); _ = b.line("bottom", "C", "D")
+        >>> b[b.area_between("F", "top", "bottom", "A", "B")].area
+        2.0
+        """
+        self.record("intersect", "area_between", (upper, lower, start, end), (name,), {},
+                    de or f"Fläche zwischen {upper} und {lower}", en or f"area between {upper} and {lower}", role=role)
+        return name
+
+    def planimeter(self, name: str, area: str, *, base: tuple[str, str] | None = None, de: str | None = None,
+                   en: str | None = None) -> str:
+        """A planimeter run round *area*: its signed area, or with *base* = (a, b) the mean height over ab.
+
+        The planimeter measures; its provenance says so (``approximate``, the
+        instrument's reading).  The mean height is a compass opening (a Length).
+
+        >>> b = Builder("demo", givens={})
+        >>> for n, (x, y) in zip("ABCD", ((0, 1), (2, 1), (0, 0), (2, 0))):
+        ...     _ = b.given_point(n, x, y)
+        >>> _ = b.line("top", "A", "B"); _ = b.line("bottom", "C", "D")
+        >>> _ = b.area_between("F", "top", "bottom", "A", "B")
+        >>> b[b.planimeter("f", "F")], float(b[b.planimeter("h", "F", base=("C", "D"))])
+        (2.0, 1.0)
+        """
+        prov = Provenance("approximate", "planimeter")
+        if base is None:
+            self.record("planimeter", "planimeter", (area,), (name,), {},
+                        de or f"Fläche {area} planimetriert", en or f"area {area} measured with a planimeter",
+                        provenance=prov)
+        else:
+            a, b = base
+            self.record("planimeter", "planimeter_height", (area, a, b), (name,), {},
+                        de or f"mittlere Höhe von {area} über {a}{b} (Planimeter)",
+                        en or f"mean height of {area} over {a}{b} (planimeter)", provenance=prov)
         return name
 
     # -- composite steps -------------------------------------------------------

@@ -23,15 +23,20 @@ Point(-5.0, 0.0)
 
 from __future__ import annotations
 
-import gc
 import json
-import math
 from dataclasses import dataclass, field
 from types import MappingProxyType
-from typing import Any, Callable, Mapping, Sequence
+from typing import Any, Mapping, Sequence
 
-from .errors import ConstructError, GeometryError, InvalidParameter, ProtocolFormatError, StepError
-from .geometry import Circle, Length, Line, Point, intersect
+import numpy as np
+
+from .areas import Area
+from .curves import BezierCurve, Polyline
+from .errors import (ConstructError, InvalidParameter, MissingGiven, ProtocolFormatError, RuleError, StepError,
+                     UnknownObject, WrongInput)
+from .geometry import SCALAR, Circle, Length, Line, Point, Sweep, _Array
+from .ops import OPS, elementwise
+from .rules import as_rule
 
 __all__ = [
     "PROVENANCE_KINDS",
@@ -41,8 +46,9 @@ __all__ = [
     "Step",
     "Protocol",
     "Replay",
-    "OPS",
-    "choose",
+    "run_step",
+    "compile_step",
+    "object_json",
 ]
 
 PROVENANCE_KINDS = ("given", "exact", "approximate", "neusis", "trial")
@@ -51,7 +57,7 @@ PROVENANCE_KINDS = ("given", "exact", "approximate", "neusis", "trial")
 #: instrument, but a step of its own because a choice is made there.  "curve"
 #: is the draftsman's French curve (Curvenlineal): it draws a smooth line
 #: through constructed points, it constructs nothing.
-TOOLS = ("given", "straightedge", "compass", "dividers", "intersect", "neusis", "curve")
+TOOLS = ("given", "straightedge", "compass", "dividers", "intersect", "neusis", "curve", "planimeter")
 
 PROTOCOL_FORMAT = "construct-protocol/1"
 
@@ -99,7 +105,7 @@ GIVEN = Provenance("given")
 
 @dataclass(frozen=True, slots=True)
 class Step:
-    """One instrument use: data only, evaluated by :data:`OPS` [op]."""
+    """One instrument use: data only, evaluated by the op table entry ``OPS[op]``."""
 
     index: int
     tool: str
@@ -137,6 +143,9 @@ class Step:
             d["labels"] = {name: text for name, text in self.labels}
         return d
 
+    def __reduce__(self):
+        return (Step.from_dict, (self.as_dict(),))
+
     @classmethod
     def from_dict(cls, d: Mapping[str, Any]) -> "Step":
         try:
@@ -169,6 +178,9 @@ def _frozen(value: Any) -> Any:
 
 
 def _jsonable(value: Any) -> Any:
+    as_json = getattr(value, "as_json", None)
+    if as_json is not None:  # a Rule
+        return as_json()
     if isinstance(value, (tuple, list)):
         return [_jsonable(v) for v in value]
     if isinstance(value, Mapping):
@@ -176,280 +188,116 @@ def _jsonable(value: Any) -> Any:
     return value
 
 
+
+
 # --------------------------------------------------------------------------
-# Branch rules.  A rule is a tuple whose first item names it; object names in
-# it are resolved when the protocol is compiled.
-#   ("nearer", A)            the point nearer to A
-#   ("farther", A)           the point farther from A
-#   ("left", A, B)           the point to the left of the directed line A->B
-#   ("right", A, B)          ... to the right
-#   ("toward", A, B)         the point farthest along the direction A->B;
-#   ("toward", A, None, dx, dy)  ... along a fixed direction (dx, dy)
-#   ("only",)                there must be exactly one point (lines, tangency)
+# The one evaluation path.  A step is compiled once into an entry
+# (function, input slots, output slots, params, rule slots, step); building
+# and replaying both run entries through run_step / the replay loop below,
+# which differ only in where they keep the objects (a dict by name while
+# building, a list by slot while replaying).
 # --------------------------------------------------------------------------
 
-RULE_ARITY = {"nearer": 1, "farther": 1, "left": 2, "right": 2, "toward": 2, "only": 0}
 
+def compile_step(step: Step, slot: Mapping[str, Any] | None = None) -> tuple:
+    """The entry for *step*; *slot* maps names to list slots (None: objects are kept by name).
 
-def rule_refs(rule: Sequence[Any]) -> tuple[str, ...]:
-    """The object names a rule refers to."""
-    if not rule or rule[0] not in RULE_ARITY:
-        raise ProtocolFormatError(f"unknown intersection rule {rule!r}; known: {sorted(RULE_ARITY)}")
-    n = RULE_ARITY[rule[0]]
-    return tuple(r for r in rule[1 : 1 + n] if r is not None)
-
-
-def choose(points: tuple[Point, ...], rule: Sequence[Any], refs: Sequence[Any]) -> tuple[Point, Point | None]:
-    """Pick one of the intersection points by *rule*; return (chosen, other).
-
-    *refs* are the objects the rule names, already looked up.
-
-    >>> pts = (Point(0.0, 1.0), Point(0.0, -1.0))
-    >>> choose(pts, ("left", "A", "B"), (Point(-1.0, 0.0), Point(1.0, 0.0)))[0]
-    Point(0.0, 1.0)
-    >>> choose(pts, ("nearer", "Q"), (Point(0.0, -5.0),))[0]
-    Point(0.0, -1.0)
+    Raises ProtocolFormatError for an unknown operation, UnknownObject for a
+    name no earlier step made and RuleError for a malformed rule.
     """
-    name = rule[0]
-    if len(points) == 1:  # a tangency or a line crossing: one point, whatever the rule
-        return points[0], None
-    if name == "only":
-        raise GeometryError(f"expected exactly one intersection, found {len(points)}")
-    a, b = points
-    if name in ("nearer", "farther"):
-        (rx, ry), = refs
-        da = (a[0] - rx) ** 2 + (a[1] - ry) ** 2
-        db = (b[0] - rx) ** 2 + (b[1] - ry) ** 2
-        first = da <= db if name == "nearer" else da >= db
-    elif name in ("left", "right"):
-        (ax, ay), (bx, by) = refs
-        sa = (bx - ax) * (a[1] - ay) - (by - ay) * (a[0] - ax)
-        sb = (bx - ax) * (b[1] - ay) - (by - ay) * (b[0] - ax)
-        first = sa >= sb if name == "left" else sa <= sb
-    elif name == "toward":
-        if len(refs) == 2:
-            (ax, ay), (bx, by) = refs
-            dx, dy = bx - ax, by - ay
-        else:
-            dx, dy = float(rule[3]), float(rule[4])
-        first = a[0] * dx + a[1] * dy >= b[0] * dx + b[1] * dy
-    else:  # pragma: no cover - rule_refs rejects unknown rules first
-        raise ProtocolFormatError(f"unknown intersection rule {rule!r}")
-    return (a, b) if first else (b, a)
-
-
-# --------------------------------------------------------------------------
-# Operations.  Each takes the input objects, the step's params and the givens
-# and returns the tuple of output objects.  They are the only place where
-# numbers are computed, and they compute only what the instrument does.
-# --------------------------------------------------------------------------
-
-
-def _given_point(args, params, givens):
-    unit = givens[params["unit"]] if params.get("unit") else 1.0
-    return (Point(params["x"] * unit, params["y"] * unit),)
-
-
-def _given_length(args, params, givens):
-    value = float(params.get("factor", 1.0))
-    for name in params["product"]:
-        value *= givens[name]
-    return (Length(value),)
-
-
-def _given_line(args, params, givens):
-    (o,) = args
-    a = math.radians(params["angle_deg"])
-    # A second point one unit away fixes the direction; the drawing extent is
-    # the renderer's business.
-    return (Line(o, Point(o[0] + math.cos(a), o[1] + math.sin(a))),)
-
-
-def _line(args, params, givens):
-    return (Line(args[0], args[1]),)
-
-
-def _circle_through(args, params, givens):
-    c, p = args
-    return (Circle(c, math.hypot(p[0] - c[0], p[1] - c[1])),)
-
-
-def _circle_radius(args, params, givens):
-    c, length = args
-    return (Circle(c, float(length)),)
-
-
-def _circle_segment(args, params, givens):
-    c, a, b = args
-    return (Circle(c, math.hypot(b[0] - a[0], b[1] - a[1])),)
-
-
-def _length_of(args, params, givens):
-    a, b = args
-    return (Length(math.hypot(b[0] - a[0], b[1] - a[1])),)
-
-
-def _intersect(args, params, givens, refs=()):
-    c1, c2 = args
-    pts = intersect(c1, c2)
-    if not pts:
-        raise GeometryError(f"{_describe(c1)} and {_describe(c2)} do not meet")
-    chosen, other = choose(pts, params["rule"], refs)
-    if params.get("both"):
-        if other is None:
-            raise GeometryError(f"{_describe(c1)} and {_describe(c2)} only touch; two points were expected")
-        return (chosen, other)
-    return (chosen,)
-
-
-def _describe(obj: Any) -> str:
-    if isinstance(obj, Circle):
-        (x, y), r = obj
-        return f"circle about ({x:.6g}, {y:.6g}) with radius {r:.6g}"
-    if isinstance(obj, Line):
-        (x1, y1), (x2, y2) = obj
-        return f"line through ({x1:.6g}, {y1:.6g}) and ({x2:.6g}, {y2:.6g})"
-    return repr(obj)
-
-
-def _step_off(args, params, givens, refs=()):
-    """Dividers: from a point, step a length off along a curve (no arc is drawn, a point is pricked)."""
-    curve, start, length = args
-    return _intersect((curve, Circle(start, float(length))), params, givens, refs)
-
-
-OPS: dict[str, Callable[..., tuple[Any, ...]]] = {
-    "given_point": _given_point,
-    "given_length": _given_length,
-    "given_line": _given_line,
-    "line": _line,
-    "circle_through": _circle_through,
-    "circle_radius": _circle_radius,
-    "circle_segment": _circle_segment,
-    "length_of": _length_of,
-    "intersect": _intersect,
-    "step_off": _step_off,
-}
-
-#: Ops whose params carry a rule that names objects.
-_RULE_OPS = {"intersect", "step_off"}
-
-
-# -- compiled forms -----------------------------------------------------------
-# Replaying is a fold over the steps; to make it cheap (the 18-part crank is
-# ~360 steps and should replay in about a millisecond) each step is compiled
-# once into a closure over integer slots.  The hot operations get hand-made
-# closures; every other op runs through the generic wrapper.  Both compute
-# exactly what OPS[op] computes.
-
-_tuple_new = tuple.__new__
-
-
-def _compile_generic(fn, ins, outs, params, refs):
-    if refs:
-        def run(env, givens):
-            vals = fn([env[k] for k in ins], params, givens, [env[k] for k in refs])
-            for k, v in zip(outs, vals):
-                env[k] = v
-    else:
-        def run(env, givens):
-            vals = fn([env[k] for k in ins], params, givens)
-            for k, v in zip(outs, vals):
-                env[k] = v
-    return run
-
-
-def _compile_intersect(fn, ins, outs, params, refs):
-    """Intersections are most steps: the same _intersect, with its slots bound once."""
-    a, b = ins
-    frozen = {"rule": tuple(params["rule"]), "both": bool(params.get("both"))}
-    if len(outs) == 2:
-        o0, o1 = outs
-
-        def run(env, givens):
-            env[o0], env[o1] = _intersect((env[a], env[b]), frozen, givens, [env[k] for k in refs])
-    else:
-        (o0,) = outs
-
-        def run(env, givens):
-            (env[o0],) = _intersect((env[a], env[b]), frozen, givens, [env[k] for k in refs])
-    return run
-
-
-def _compile_step_off(fn, ins, outs, params, refs):
-    curve, start, length = ins
-    inner = _compile_intersect(fn, (curve, -1), outs, params, refs)
-
-    def run(env, givens):
-        # The dividers' reach is a circle about the start; it lives only in this step.
-        env.append(_tuple_new(Circle, (env[start], float(env[length]))))
+    op = OPS.get(step.op)
+    if op is None:
+        raise ProtocolFormatError(f"step {step.index}: unknown operation {step.op!r}; known: {', '.join(sorted(OPS))}")
+    params = dict(step.params)
+    refs: tuple[str, ...] = ()
+    if op.rule:
         try:
-            inner(env, givens)
-        finally:
-            env.pop()
-    return run
+            rule = as_rule(params.get("rule"))
+        except RuleError as exc:
+            raise exc.at_step(step.index, step.tool, step.op, step.caption.en) from None
+        params["rule"] = rule
+        refs = rule.refs
+    look = slot if slot is not None else None
+    try:
+        ins = tuple(look[n] for n in step.inputs) if look is not None else tuple(step.inputs)
+        ref_slots = tuple(look[n] for n in refs) if look is not None else refs
+    except KeyError as exc:
+        raise UnknownObject(f"step {step.index} ({step.tool}: {step.caption.en}) uses {exc.args[0]!r} "
+                            f"before any step made it", step_index=step.index, tool=step.tool, op=step.op) from None
+    return (op.fn, ins, step.outputs, params, ref_slots, op, step)
 
 
-def _compile_circle_radius(fn, ins, outs, params, refs):
-    c, length = ins
-    (o,) = outs
-
-    def run(env, givens):
-        env[o] = _tuple_new(Circle, (env[c], float(env[length])))  # a Length is positive by construction
-    return run
-
-
-def _compile_circle_through(fn, ins, outs, params, refs):
-    c, p = ins
-    (o,) = outs
-
-    def run(env, givens):
-        cc, pp = env[c], env[p]
-        r = math.hypot(pp[0] - cc[0], pp[1] - cc[1])
-        if not r > 0.0:
-            raise GeometryError(f"circle about {cc!r} through itself has no radius")
-        env[o] = _tuple_new(Circle, (cc, r))
-    return run
+def step_failure(step: Step, exc: BaseException) -> ConstructError:
+    """The error a failing step raises, the same while building and while replaying."""
+    where = (step.index, step.tool, step.op, step.caption.en)
+    if isinstance(exc, StepError):
+        return exc.at_step(*where)
+    if isinstance(exc, KeyError):
+        return MissingGiven(f"step {step.index} ({step.tool}: {step.caption.en}) needs the given {exc.args[0]!r}",
+                            step_index=step.index, tool=step.tool, op=step.op)
+    if isinstance(exc, (TypeError, AttributeError, ValueError, IndexError)):
+        return WrongInput(f"step {step.index} ({step.tool}: {step.caption.en}): operation {step.op!r} "
+                          f"cannot use its inputs {', '.join(step.inputs)}: {exc}",
+                          step_index=step.index, tool=step.tool, op=step.op)
+    if isinstance(exc, ConstructError):
+        return StepError(f"step {step.index} ({step.tool}: {step.caption.en}): {exc}",
+                         step_index=step.index, tool=step.tool, op=step.op)
+    raise exc
 
 
-def _compile_line(fn, ins, outs, params, refs):
-    a, b = ins
-    (o,) = outs
-
-    def run(env, givens):
-        env[o] = Line(env[a], env[b])
-    return run
-
-
-_COMPILERS = {
-    "intersect": _compile_intersect,
-    "circle_radius": _compile_circle_radius,
-    "circle_through": _compile_circle_through,
-    "line": _compile_line,
-    "step_off": _compile_step_off,
-}
+def run_step(entry: tuple, env: Any, givens: Mapping[str, Any], xp: Any = SCALAR) -> tuple:
+    """Evaluate one compiled step on the objects in *env*; store and return its outputs."""
+    fn, ins, outs, params, refs, op, step = entry
+    if xp is not SCALAR and not op.vector:
+        fn = elementwise(fn)
+    try:
+        values = fn([env[k] for k in ins], params, givens, [env[k] for k in refs], xp)
+    except (ConstructError, KeyError, TypeError, AttributeError, ValueError, IndexError) as exc:
+        raise step_failure(step, exc) from exc
+    for k, v in zip(outs, values):
+        env[k] = v
+    return values
 
 
-def register_op(name: str, fn: Callable[..., tuple[Any, ...]], *, rule: bool = False) -> None:
-    """Add an operation (modules with special instruments call this on import)."""
-    OPS[name] = fn
-    _COMPILERS.pop(name, None)
-    if rule:
-        _RULE_OPS.add(name)
+def sweep_givens(givens: Mapping[str, Any]) -> tuple[dict[str, Any], Any]:
+    """Givens as floats, or as equally long 1-d arrays when any is an array; and the namespace to use.
 
-
-# --------------------------------------------------------------------------
+    >>> g, xp = sweep_givens({"r": 1, "rod_ratio": [4.0, 5.0]})
+    >>> g["r"], g["rod_ratio"], xp.n
+    (1.0, array([4., 5.]), 2)
+    """
+    arrays = {k: np.asarray(v, dtype=float) for k, v in givens.items()
+              if isinstance(v, (np.ndarray, list, tuple))}
+    if not arrays:
+        return {k: float(v) for k, v in givens.items()}, SCALAR
+    try:
+        shaped = np.broadcast_arrays(*arrays.values())
+    except ValueError as exc:
+        raise InvalidParameter(f"swept givens {', '.join(arrays)} do not broadcast together: {exc}") from None
+    out: dict[str, Any] = {k: float(v) for k, v in givens.items() if k not in arrays}
+    for k, a in zip(arrays, shaped):
+        out[k] = np.ascontiguousarray(a, dtype=float).reshape(-1)
+    n = next(iter(out[k] for k in arrays)).size
+    if n == 0:
+        raise InvalidParameter("a sweep needs at least one set of givens")
+    return out, _Array(n)
 
 
 class Replay(Mapping[str, Any]):
-    """The objects a replay made, by name; ``upto(k)`` is what steps 1..k made."""
+    """The objects a replay made, by name (arrays of coordinates in a sweep)."""
 
-    __slots__ = ("protocol", "_objects", "givens")
+    __slots__ = ("protocol", "_objects", "_givens", "size")
 
-    def __init__(self, protocol: "Protocol", objects: dict[str, Any], givens: Mapping[str, float]):
+    def __init__(self, protocol: "Protocol", objects: dict[str, Any], givens: Mapping[str, Any], size: int = 0):
         self.protocol = protocol
         self._objects = objects
-        self.givens = MappingProxyType(dict(givens))
+        self._givens = dict(givens)
+        #: 0 for a plain replay, else the number of sets of givens swept.
+        self.size = size
+
+    @property
+    def givens(self) -> Mapping[str, Any]:
+        return MappingProxyType(self._givens)
 
     def __getitem__(self, name: str) -> Any:
         return self._objects[name]
@@ -460,6 +308,13 @@ class Replay(Mapping[str, Any]):
     def __len__(self) -> int:
         return len(self._objects)
 
+    def __reduce__(self):
+        return (Replay, (self.protocol, self._objects, self._givens, self.size))
+
+    def __repr__(self) -> str:
+        kind = f"sweep of {self.size}" if self.size else "replay"
+        return f"<Replay ({kind}) of {self.protocol.construction!r}: {len(self._objects)} objects>"
+
     def made_by(self) -> dict[str, Step]:
         """The step that made each object."""
         return {name: step for step in self.protocol.steps for name in step.outputs}
@@ -469,23 +324,25 @@ class Replay(Mapping[str, Any]):
 
 
 def object_json(obj: Any) -> dict[str, Any]:
-    """A drawn object as plain JSON data (the ``objects`` table of protocol.json)."""
+    """A drawn object as plain JSON data (the ``objects`` table of protocol.json).
+
+    >>> object_json(Point(1.0, 2.0))
+    {'type': 'point', 'x': 1.0, 'y': 2.0}
+    """
     if isinstance(obj, Point):
-        return {"type": "point", "x": obj[0], "y": obj[1]}
+        return {"type": "point", "x": obj.x, "y": obj.y}
     if isinstance(obj, Line):
-        (x1, y1), (x2, y2) = obj
-        return {"type": "line", "x1": x1, "y1": y1, "x2": x2, "y2": y2}
+        return {"type": "line", "x1": obj.p.x, "y1": obj.p.y, "x2": obj.q.x, "y2": obj.q.y}
     if isinstance(obj, Circle):
-        (cx, cy), r = obj
-        return {"type": "circle", "cx": cx, "cy": cy, "r": r}
+        return {"type": "circle", "cx": obj.center.x, "cy": obj.center.y, "r": obj.radius}
     if isinstance(obj, Length):
-        return {"type": "length", "value": float(obj)}
-    if isinstance(obj, tuple) and getattr(obj, "kind", None) and all(isinstance(p, Point) for p in obj):
-        # A curve made of points (a Bézier chain through constructed points): its points in order.
-        return {"type": obj.kind, "points": [[p[0], p[1]] for p in obj]}
+        return {"type": "length", "value": obj.value}
+    if isinstance(obj, (BezierCurve, Polyline, Area)):
+        return obj.as_json()
     if isinstance(obj, float):
-        return {"type": "number", "value": float(obj)}
-    raise TypeError(f"not a drawable object: {obj!r}")
+        return {"type": "number", "value": obj}
+    raise ProtocolFormatError(f"not a drawable object: {obj!r}" if not isinstance(obj, Sweep)
+                              else "a sweep's objects have no JSON form; write a single replay")
 
 
 @dataclass(frozen=True)
@@ -499,64 +356,55 @@ class Protocol:
     givens: tuple[str, ...] = ()
     _compiled: list = field(default_factory=list, repr=False, compare=False)
 
-    # -- replay -------------------------------------------------------------
-    def _compile(self) -> list:
-        if self._compiled:
-            return self._compiled
-        slot: dict[str, int] = {}
-        compiled = []
-        for step in self.steps:
-            fn = OPS.get(step.op)
-            if fn is None:
-                raise ProtocolFormatError(f"step {step.index}: unknown operation {step.op!r}")
-            try:
-                ins = tuple(slot[name] for name in step.inputs)
-                refs: tuple[int, ...] = ()
-                if step.op in _RULE_OPS:
-                    refs = tuple(slot[name] for name in rule_refs(step.params["rule"]))
-            except KeyError as exc:
-                raise ProtocolFormatError(
-                    f"step {step.index} ({step.op}) uses {exc.args[0]!r} before any step made it"
-                ) from None
-            outs = []
-            for name in step.outputs:
-                if name in slot:
-                    raise ProtocolFormatError(f"step {step.index} makes {name!r} a second time")
-                slot[name] = len(slot)
-                outs.append(slot[name])
-            params = dict(step.params)
-            run = _COMPILERS.get(step.op, _compile_generic)(fn, ins, tuple(outs), params, refs)
-            compiled.append((run, step))
-        self._compiled.extend(compiled)
-        self._compiled.append(tuple(slot))  # slot names in order, last item
-        return self._compiled
+    def __repr__(self) -> str:
+        return f"<Protocol {self.construction!r}: {len(self.steps)} steps, givens {', '.join(self.givens) or '-'}>"
 
-    def replay(self, givens: Mapping[str, float] | None = None, *, upto: int | None = None) -> Replay:
-        """Evaluate the steps (all, or 1..upto) with *givens*; return the objects by name."""
-        givens = dict(self.params.get("givens", {}) if givens is None else givens)
-        compiled = self._compile()
-        names = compiled[-1]
+    def __reduce__(self):
+        return (Protocol.from_dict, (self.as_dict(with_objects=False),))
+
+    # -- replay -------------------------------------------------------------
+    def _program(self) -> tuple[list, tuple[str, ...]]:
+        if not self._compiled:
+            slot: dict[str, int] = {}
+            entries = []
+            for step in self.steps:
+                for name in step.outputs:
+                    if name in slot:
+                        raise ProtocolFormatError(f"step {step.index} makes {name!r} a second time")
+                entry = compile_step(step, slot)
+                outs = []
+                for name in step.outputs:
+                    slot[name] = len(slot)
+                    outs.append(slot[name])
+                entries.append(entry[:2] + (tuple(outs),) + entry[3:])
+            self._compiled.extend([entries, tuple(slot)])
+        return self._compiled[0], self._compiled[1]
+
+    def replay(self, givens: Mapping[str, Any] | None = None, *, upto: int | None = None) -> Replay:
+        """Evaluate the steps (all, or 1..upto) with *givens*; return the objects by name.
+
+        Givens that are arrays (or lists) make the replay a sweep: one value
+        per set of givens in every coordinate.
+        """
+        givens, xp = sweep_givens(dict(self.params.get("givens", {}) if givens is None else givens))
+        entries, names = self._program()
         env: list[Any] = [None] * len(names)
-        stop = len(compiled) - 1 if upto is None else min(upto, len(compiled) - 1)
-        i = 0
-        # Replay makes no reference cycles; the cyclic collector would only
-        # rescan the growing table of objects (a 2x slowdown at 30000 steps).
-        collecting = gc.isenabled()
-        gc.disable()
-        try:
+        stop = len(entries) if upto is None else max(0, min(upto, len(entries)))
+        if xp is SCALAR:
+            i = 0
+            try:
+                for i in range(stop):
+                    fn, ins, outs, params, refs, _, _ = entries[i]
+                    values = fn([env[k] for k in ins], params, givens, [env[k] for k in refs] if refs else (), SCALAR)
+                    for k, v in zip(outs, values):
+                        env[k] = v
+            except (ConstructError, KeyError, TypeError, AttributeError, ValueError, IndexError) as exc:
+                raise step_failure(entries[i][-1], exc) from exc
+        else:
             for i in range(stop):
-                compiled[i][0](env, givens)
-        except ConstructError as exc:
-            step = compiled[i][-1]
-            raise StepError(_step_message(step, exc), step_index=step.index, tool=step.tool) from exc
-        except KeyError as exc:
-            step = compiled[i][-1]
-            raise InvalidParameter(f"step {step.index} ({step.op}) needs the given {exc.args[0]!r}") from None
-        finally:
-            if collecting:
-                gc.enable()
+                run_step(entries[i], env, givens, xp)
         objects = {names[k]: env[k] for k in range(len(names)) if env[k] is not None}
-        return Replay(self, objects, givens)
+        return Replay(self, objects, givens, getattr(xp, "n", 0))
 
     # -- inspection ---------------------------------------------------------
     def instrument_counts(self) -> dict[str, int]:
@@ -576,20 +424,22 @@ class Protocol:
         return [(k, a, b) for k, (a, b) in spans.items()]
 
     # -- JSON ---------------------------------------------------------------
-    def as_dict(self, replay: Replay | None = None) -> dict[str, Any]:
-        if replay is None:
-            replay = self.replay()
+    def as_dict(self, replay: Replay | None = None, *, with_objects: bool = True) -> dict[str, Any]:
         params = dict(self.params)
-        params["givens"] = dict(replay.givens)  # the givens this replay was made with
-        return {
-            "format": PROTOCOL_FORMAT,
-            "construction": self.construction,
+        d: dict[str, Any] = {"format": PROTOCOL_FORMAT, "construction": self.construction}
+        if with_objects:
+            if replay is None:
+                replay = self.replay()
+            params["givens"] = dict(replay.givens)  # the givens this replay was made with
+        d.update({
             "params": _jsonable(params),
             "givens": list(self.givens),
             "instruments": self.instrument_counts(),
             "steps": [s.as_dict() for s in self.steps],
-            "objects": replay.objects_json(),
-        }
+        })
+        if with_objects:
+            d["objects"] = replay.objects_json()
+        return d
 
     def to_json(self, replay: Replay | None = None) -> str:
         return json.dumps(self.as_dict(replay), indent=1, ensure_ascii=False, sort_keys=False) + "\n"
@@ -603,6 +453,8 @@ class Protocol:
                 raise ProtocolFormatError(f"protocol has no {key!r}")
         if not isinstance(d["steps"], list) or not all(isinstance(s, Mapping) for s in d["steps"]):
             raise ProtocolFormatError("protocol 'steps' must be a list of objects")
+        if not isinstance(d["params"], Mapping):
+            raise ProtocolFormatError("protocol 'params' must be an object")
         steps = tuple(Step.from_dict(s) for s in d["steps"])
         for k, s in enumerate(steps, start=1):
             if s.index != k:
@@ -613,7 +465,10 @@ class Protocol:
             steps=steps,
             givens=tuple(str(g) for g in d.get("givens", ())),
         )
-        proto._compile()  # reject unknown ops and dangling names now, not mid-replay
+        try:
+            proto._program()  # reject unknown ops, dangling names and bad rules now, not mid-replay
+        except StepError as exc:
+            raise ProtocolFormatError(str(exc)) from None
         return proto
 
     @classmethod
@@ -623,7 +478,3 @@ class Protocol:
         except (json.JSONDecodeError, UnicodeDecodeError) as exc:
             raise ProtocolFormatError(f"not a JSON protocol: {exc}") from None
         return cls.from_dict(data)
-
-
-def _step_message(step: Step, exc: Exception) -> str:
-    return f"step {step.index} ({step.tool}: {step.caption.en}): {exc}"

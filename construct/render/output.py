@@ -59,7 +59,7 @@ def frame_steps(scene: Scene, mode: str) -> list[int]:
     return ends
 
 
-def scene_for(construction: Construction, figure: Figure, *, plate: bool = False) -> Scene:
+def scene_for(construction: Construction | None, figure: Figure, *, plate: bool = False) -> Scene:
     """The figure's scene; a plate carries the construction's furniture and line looks (:mod:`.plate`)."""
     if plate:
         from .plate import plate_of
@@ -118,19 +118,26 @@ def params_text(figure: Figure, lang: str = "en") -> str:
     return ", ".join(out)
 
 
-def figure_title(construction: Construction, figure: Figure) -> tuple[str, str]:
+def figure_title(construction: Construction | None, figure: Figure) -> tuple[str, str]:
     from .captions import equation
 
+    if construction is None:  # a protocol of the user's own: its name is its title
+        name, p = figure.protocol.construction, params_text(figure)
+        return (f"{name}; {p}" if p else name, f"{name}; {p}" if p else name)
     title = construction.title
     return (f"{title.de} ({equation(construction.source)}); {params_text(figure, 'de')}",
             f"{title.en}; {params_text(figure)}")
 
 
-def plate_caption(construction: Construction, figure: Figure, number: int | str | None = None) -> tuple[str, str]:
+def plate_caption(construction: Construction | None, figure: Figure,
+                  number: int | str | None = None) -> tuple[str, str]:
     """A book plate's caption: "Fig. 1. Kolbenwege aus dem Kurbelkreis (L/r = 5, 18 Teile)." and the English."""
     from .captions import equation
 
     fig = f"Fig. {number}." if number is not None else "Fig."
+    if construction is None:
+        name = figure.protocol.construction
+        return (f"{fig} {name}.", f"{name} ({params_text(figure)})")
     return (f"{fig} {construction.title.de} ({params_text(figure, 'de')}).",
             f"{construction.title.en} ({params_text(figure)}; {equation(construction.source)})")
 
@@ -139,7 +146,7 @@ def plate_caption(construction: Construction, figure: Figure, number: int | str 
 OUTPUTS = ("animated", "player", "storyboard")
 
 
-def write_outputs(stage: Path, construction: Construction, figure: Figure, st: Style, *, frames: str = "none",
+def write_outputs(stage: Path, construction: Construction | None, figure: Figure, st: Style, *, frames: str = "none",
                   fig_number: int | str | None = None, protocol: bool = True,
                   outputs: tuple[str, ...] = OUTPUTS) -> dict[str, Any]:
     """Write final.svg, steps/ (when asked), protocol.json and *outputs*: animated.svg, player.html, storyboard.svg.
@@ -183,7 +190,7 @@ def write_outputs(stage: Path, construction: Construction, figure: Figure, st: S
     return {"steps": len(scene.steps), "frames": len(ks)}
 
 
-def write_replay(construction: Construction, figure: Figure, out_dir: str | Path, *, style: str = "plain",
+def write_replay(construction: Construction | None, figure: Figure, out_dir: str | Path, *, style: str = "plain",
                  frames: str = "none", styles: dict[str, Style] | None = None) -> dict[str, Any]:
     """Write everything a replay produces; return a summary (counts, paths)."""
     from . import styles as style_module

@@ -394,8 +394,10 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
             elif isinstance(obj, Circle):
                 kind, geom = _circle_extent(obj, on.get(name, []), margin, s.role, plate=shown is not None)
                 marks.append(Mark(mid, kind=kind, geom=geom, **common))
-            elif hasattr(obj, "area_points"):
-                marks.append(Mark(mid, kind="area", geom=tuple((p[0], p[1]) for p in obj.area_points()), **common))
+            elif hasattr(obj, "rings"):  # an Area: one mark per piece, each hatched
+                for j, ring in enumerate(obj.rings()):
+                    marks.append(Mark(mid if j == 0 else f"{mid}-{j}", kind="area",
+                                      geom=tuple((p[0], p[1]) for p in ring), **common))
             elif hasattr(obj, "curve_points"):
                 marks.append(Mark(mid, kind="curve", geom=tuple((p[0], p[1]) for p in obj.curve_points()), **common))
     breaks: tuple[tuple[float, float, float], ...] = ()
@@ -552,8 +554,9 @@ def _curve_points(objects: Replay, shown: set[str] | None = None) -> list[tuple[
     for n, o in objects.items():
         if shown is not None and n not in shown:
             continue
-        if hasattr(o, "area_points"):
-            pts.extend(o.area_points())
+        if hasattr(o, "rings"):
+            for ring in o.rings():
+                pts.extend(ring)
         elif hasattr(o, "curve_points"):
             pts.extend(o.curve_points())
     return pts

@@ -1,0 +1,338 @@
+"""Curves drawn through constructed points: the straight-edged polyline and the French curve.
+
+A draftsman joins constructed points either with the straightedge, piece by
+piece (:class:`Polyline`), or with a French curve ("Curvenlineal") that
+follows the points and any tangents he has constructed (:class:`BezierCurve`,
+a chain of cubic Bézier segments).  Neither constructs anything: the points
+are constructed, the curve between them is drawn -- which is why every check
+on a drawn curve states how far the drawing may stray.
+
+Both are graphs or chains of points and share three questions a later step
+asks of them: where does a line cross the curve (:func:`crossings`), what
+ordinate does it have at an abscissa (``y_at``), and which polyline draws it
+(``curve_points``).
+
+>>> c = BezierCurve((Point(0, 0), Point(1, 1), Point(2, 1), Point(3, 0)))
+>>> c.kind, len(c.segments()), c.curve_points(2)
+('bezier', 1, (Point(0.0, 0.0), Point(1.5, 0.75), Point(3.0, 0.0)))
+>>> c.y_at(1.5)
+0.75
+>>> [round(p.x, 12) for p in crossings(c, Line(Point(0, 0.5), Point(1, 0.5)))]
+[0.633974596216, 2.366025403784]
+>>> pl = Polyline((Point(0, 0), Point(2, 2), Point(4, 0)))
+>>> pl.y_at(3.0), round(pl.length(), 12)
+(1.0, 5.656854249492)
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Sequence
+
+from .errors import DegenerateObject, GeometryError
+from .geometry import Line, Point
+
+__all__ = ["Polyline", "BezierCurve", "crossings", "CURVE_TYPES"]
+
+
+def _coords(p: Point) -> tuple[float, float]:
+    return p[0], p[1]
+
+
+class _Chain:
+    """Shared behaviour of curves given by an ordered chain of points."""
+
+    __slots__ = ("points",)
+    kind = "chain"
+
+    def __init__(self, points: Sequence[Point]) -> None:
+        object.__setattr__(self, "points", tuple(points))
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise AttributeError(f"{type(self).__name__} is immutable")
+
+    def __reduce__(self):
+        return (type(self), (self.points,))
+
+    def __eq__(self, other: object) -> bool:
+        if type(other) is not type(self):
+            return NotImplemented
+        return self.points == other.points  # type: ignore[attr-defined]
+
+    def __hash__(self) -> int:
+        return hash((type(self).__name__, self.points))
+
+    def __len__(self) -> int:
+        return len(self.points)
+
+    def __iter__(self):
+        return iter(self.points)
+
+    def __getitem__(self, i):
+        return self.points[i]
+
+    def as_json(self) -> dict[str, Any]:
+        return {"type": self.kind, "points": [[p[0], p[1]] for p in self.points]}
+
+    def y_at(self, x: float) -> float:
+        """The ordinate where the curve passes the abscissa *x* (drawing coordinates; a graph over x)."""
+        pts = self.curve_points() if self.kind != "polyline" else self.points
+        for a, b in zip(pts, pts[1:]):
+            if min(a[0], b[0]) <= x <= max(a[0], b[0]) and a[0] != b[0]:
+                t = (x - a[0]) / (b[0] - a[0])
+                return a[1] + t * (b[1] - a[1])
+        raise GeometryError(f"abscissa {x!r} is outside the drawn curve")
+
+
+class Polyline(_Chain):
+    """Points joined by the straightedge, in order; ``closed`` joins the last to the first.
+
+    >>> Polyline((Point(0, 0),))
+    Traceback (most recent call last):
+    ...
+    construct.kernel.errors.DegenerateObject: a polyline needs at least two points, got 1
+    """
+
+    __slots__ = ("closed",)
+    kind = "polyline"
+
+    def __init__(self, points: Sequence[Point], closed: bool = False) -> None:
+        pts = tuple(points)
+        if len(pts) < 2 or not all(isinstance(p, Point) for p in pts):
+            raise DegenerateObject(f"a polyline needs at least two points, got {len(pts)}")
+        super().__init__(pts)
+        object.__setattr__(self, "closed", bool(closed))
+
+    def __reduce__(self):
+        return (Polyline, (self.points, self.closed))
+
+    def __eq__(self, other: object) -> bool:
+        if type(other) is not Polyline:
+            return NotImplemented
+        return self.points == other.points and self.closed == other.closed  # type: ignore[attr-defined]
+
+    __hash__ = _Chain.__hash__
+
+    def curve_points(self, per_segment: int = 1) -> tuple[Point, ...]:
+        """The vertices in drawing order (the first repeated at the end when closed)."""
+        return self.points + (self.points[0],) if self.closed else self.points
+
+    def length(self) -> float:
+        pts = self.curve_points()
+        return sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(pts, pts[1:]))
+
+    def as_json(self) -> dict[str, Any]:
+        d = super().as_json()
+        if self.closed:
+            d["closed"] = True
+        return d
+
+    def __repr__(self) -> str:
+        return f"Polyline({len(self.points)} points from ({self.points[0][0]:.6g}, {self.points[0][1]:.6g}))"
+
+
+class BezierCurve(_Chain):
+    """A smooth curve drawn through points with a French curve: a chain of cubic Bézier segments.
+
+    The points are p0, c1, c2, p1, c1, c2, p2, ... (3k + 1 of them): each
+    segment runs from one point through two control points to the next.  An
+    SVG renderer writes ``M p0 C c1 c2 p1 C ...``; :meth:`curve_points`
+    gives a fixed polyline for renderers that only draw polylines.
+    """
+
+    __slots__ = ()
+    kind = "bezier"
+
+    def __init__(self, points: Sequence[Point]) -> None:
+        pts = tuple(points)
+        if len(pts) < 4 or len(pts) % 3 != 1 or not all(isinstance(p, Point) for p in pts):
+            raise DegenerateObject(f"a Bézier chain needs 3k + 1 points (k >= 1), got {len(pts)}")
+        super().__init__(pts)
+
+    def segments(self) -> tuple[tuple[Point, Point, Point, Point], ...]:
+        p = self.points
+        return tuple((p[i], p[i + 1], p[i + 2], p[i + 3]) for i in range(0, len(p) - 1, 3))
+
+    @staticmethod
+    def _at(seg: Sequence[Point], t: float) -> tuple[float, float]:
+        s = 1.0 - t
+        w = (s * s * s, 3.0 * s * s * t, 3.0 * s * t * t, t * t * t)
+        return (sum(wi * p[0] for wi, p in zip(w, seg)), sum(wi * p[1] for wi, p in zip(w, seg)))
+
+    def curve_points(self, per_segment: int = 16) -> tuple[Point, ...]:
+        """The curve as a polyline: *per_segment* pieces per Bézier segment, ends exact."""
+        out = [self.points[0]]
+        for seg in self.segments():
+            for i in range(1, per_segment):
+                out.append(Point(*self._at(seg, i / per_segment)))
+            out.append(seg[3])
+        return tuple(out)
+
+    def y_at(self, x: float) -> float:
+        """The ordinate where the curve passes the abscissa *x* (the curve is a graph over x)."""
+        for seg in self.segments():
+            x0, x3 = seg[0][0], seg[3][0]
+            if min(x0, x3) <= x <= max(x0, x3):
+                lo, hi = 0.0, 1.0
+                rising = x3 >= x0
+                for _ in range(60):  # bisection to 1e-18 of the segment: x(t) is monotone on a graph's segment
+                    mid = 0.5 * (lo + hi)
+                    if (self._at(seg, mid)[0] < x) == rising:
+                        lo = mid
+                    else:
+                        hi = mid
+                return self._at(seg, 0.5 * (lo + hi))[1]
+        raise GeometryError(f"abscissa {x!r} is outside the drawn curve")
+
+    def __repr__(self) -> str:
+        a, b = self.points[0], self.points[-1]
+        return f"BezierCurve({len(self.segments())} segments, ({a[0]:.6g}, {a[1]:.6g})..({b[0]:.6g}, {b[1]:.6g}))"
+
+
+CURVE_TYPES = (Polyline, BezierCurve)
+
+
+def _cubic_roots01(c3: float, c2: float, c1: float, c0: float) -> list[float]:
+    """Real roots in [0, 1] of c3 t^3 + c2 t^2 + c1 t + c0, polished by Newton's method."""
+    import numpy as np  # numpy is a core dependency; imported here to keep geometry import light
+
+    coeffs = [c3, c2, c1, c0]
+    while coeffs and abs(coeffs[0]) <= 1e-15 * max(1.0, *(abs(c) for c in coeffs)):
+        coeffs.pop(0)
+    if len(coeffs) < 2:
+        return []
+    out = []
+    for r in np.roots(coeffs):
+        if abs(r.imag) > 1e-7:
+            continue
+        t = float(r.real)
+        for _ in range(3):  # polish: np.roots is a companion-matrix eigenvalue, ~1e-10 near double roots
+            f = ((c3 * t + c2) * t + c1) * t + c0
+            df = (3 * c3 * t + 2 * c2) * t + c1
+            if df == 0.0:
+                break
+            t -= f / df
+        if -1e-12 <= t <= 1.0 + 1e-12:
+            out.append(min(1.0, max(0.0, t)))
+    return sorted(out)
+
+
+def crossings(curve: Any, line: Line) -> tuple[Point, ...]:
+    """Every point where a drawn curve crosses a line, in the curve's order.
+
+    Polyline segments are cut exactly; Bézier segments by the roots of their
+    cubic in the line's normal coordinate.  A vertex shared by two segments is
+    reported once.
+    """
+    (px, py), (qx, qy) = line
+    dx, dy = qx - px, qy - py
+    n = math.hypot(dx, dy)
+    nx, ny = -dy / n, dx / n  # unit normal of the line
+
+    def side(p: Point) -> float:
+        return (p[0] - px) * nx + (p[1] - py) * ny
+
+    found: list[Point] = []
+
+    def add(x: float, y: float) -> None:
+        if found and math.hypot(found[-1][0] - x, found[-1][1] - y) <= 1e-12 * max(1.0, abs(x), abs(y)):
+            return
+        found.append(Point(x, y))
+
+    if isinstance(curve, BezierCurve):
+        for seg in curve.segments():
+            s0, s1, s2, s3 = (side(p) for p in seg)
+            # Bernstein to power basis of the signed distance.
+            c3 = -s0 + 3 * s1 - 3 * s2 + s3
+            c2 = 3 * s0 - 6 * s1 + 3 * s2
+            c1 = -3 * s0 + 3 * s1
+            for t in _cubic_roots01(c3, c2, c1, s0):
+                add(*BezierCurve._at(seg, t))
+    else:
+        pts = curve.curve_points()
+        for a, b in zip(pts, pts[1:]):
+            sa, sb = side(a), side(b)
+            if sa == 0.0:
+                add(a[0], a[1])
+            if (sa < 0.0 < sb) or (sb < 0.0 < sa):
+                t = sa / (sa - sb)
+                add(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
+        if side(pts[-1]) == 0.0:
+            add(pts[-1][0], pts[-1][1])
+    return tuple(found)
+
+
+# --------------------------------------------------------------------------
+# The operations that draw curves (entries of the op table, construct.kernel.ops).
+# Each takes (args, params, givens, refs, xp) and returns its outputs.
+# --------------------------------------------------------------------------
+
+
+def _frame_of(axis: Line) -> tuple[float, float, float, float]:
+    ux, uy = axis.direction()
+    return ux, uy, -uy, ux  # along the axis, and its normal ("up")
+
+
+def french_curve_op(args, params, givens, refs, xp):
+    """A smooth curve through the points (sorted along the axis) that follows the given tangents.
+
+    Piecewise cubic Hermite in the frame of the axis: the slope at a point is
+    the given tangent's where there is one, else that of the parabola through
+    the point and its two neighbours (Bessel), as a draftsman lays a French
+    curve through three points at a time.
+    """
+    axis = args[0]
+    n = int(params["points"])
+    pts = list(args[1:1 + n])
+    tangents = dict(zip((int(i) for i in params["tangent_at"]), args[1 + n:]))
+    ux, uy, nx, ny = _frame_of(axis)
+    rows = sorted(((p.x * ux + p.y * uy, p.x * nx + p.y * ny, i, p) for i, p in enumerate(pts)),
+                  key=lambda r: (r[0], r[2]))
+    u = [r[0] for r in rows]
+    v = [r[1] for r in rows]
+    scale = max(abs(a) for a in u + v) or 1.0
+    for a, c in zip(u, u[1:]):
+        if c - a <= 1e-12 * scale:
+            raise GeometryError("two points of the curve share an abscissa; a French curve cannot pass both")
+    h = [c - a for a, c in zip(u, u[1:])]
+    d = [(v[i + 1] - v[i]) / h[i] for i in range(len(h))]
+    slopes = []
+    for j, (_, _, i, _) in enumerate(rows):
+        if i in tangents:
+            t = tangents[i]
+            du = (t.q.x - t.p.x) * ux + (t.q.y - t.p.y) * uy
+            dv = (t.q.x - t.p.x) * nx + (t.q.y - t.p.y) * ny
+            if abs(du) <= 1e-12 * math.hypot(du, dv):
+                raise GeometryError("a tangent of the curve is perpendicular to the axis")
+            slopes.append(dv / du)
+        elif len(h) == 1:
+            slopes.append(d[0])
+        elif j == 0:
+            slopes.append(d[0] + (d[0] - d[1]) * h[0] / (h[0] + h[1]))
+        elif j == len(rows) - 1:
+            slopes.append(d[-1] + (d[-1] - d[-2]) * h[-1] / (h[-1] + h[-2]))
+        else:
+            slopes.append((h[j] * d[j - 1] + h[j - 1] * d[j]) / (h[j - 1] + h[j]))
+
+    def plane(a: float, b: float) -> Point:
+        return Point(a * ux + b * nx, a * uy + b * ny)
+
+    out = [rows[0][3]]
+    for j in range(len(h)):
+        third = h[j] / 3.0
+        out += [plane(u[j] + third, v[j] + slopes[j] * third),
+                plane(u[j + 1] - third, v[j + 1] - slopes[j + 1] * third), rows[j + 1][3]]
+    return (BezierCurve(out),)
+
+
+def parabola_envelope_op(args, params, givens, refs, xp):
+    """The parabola touching ED at E and DF at F (the envelope of the lines joining equal divisions of ED and DF)."""
+    e, d, f = args
+    c1 = Point(e.x + 2.0 / 3.0 * (d.x - e.x), e.y + 2.0 / 3.0 * (d.y - e.y))
+    c2 = Point(f.x + 2.0 / 3.0 * (d.x - f.x), f.y + 2.0 / 3.0 * (d.y - f.y))
+    return (BezierCurve((e, c1, c2, f)),)
+
+
+def polyline_op(args, params, givens, refs, xp):
+    """The constructed points joined in order by the straightedge."""
+    return (Polyline(args, closed=bool(params.get("closed"))),)

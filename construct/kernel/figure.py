@@ -1,0 +1,61 @@
+"""A figure: a construction's protocol and the objects a replay of it made.
+
+It is what :meth:`Builder.figure <construct.kernel.instruments.Builder.figure>`
+and every registered construction return.  Drawing and checking belong to
+the layers above the kernel (:mod:`construct.render`,
+:mod:`construct.constructions`); the methods here load them when asked, as
+shapely loads matplotlib only inside its plotting functions, so the kernel
+itself imports nothing outside itself.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Mapping
+
+from .protocol import Protocol, Replay
+
+__all__ = ["Figure"]
+
+
+@dataclass(frozen=True)
+class Figure:
+    """A construction built (or replayed): its protocol and the objects it made."""
+
+    protocol: Protocol
+    replay: Replay
+
+    @property
+    def params(self) -> Mapping[str, Any]:
+        return self.protocol.params
+
+    def __repr__(self) -> str:
+        return f"<Figure {self.protocol.construction!r}: {len(self.protocol.steps)} steps>"
+
+    def svg(self, style: str = "plain", *, upto: int | None = None) -> str:
+        """The figure (all steps, or steps 1..upto) as SVG text in a named style (plain, historical, teaching)."""
+        from ..render.notebook import figure_svg  # the rendering layer, loaded when a drawing is asked for
+
+        return figure_svg(self, style=style, upto=upto)
+
+    def checks(self) -> list:
+        """The construction's checks, when it is a registered book construction; else none.
+
+        Each check compares a quantity measured on the figure with its analytic value.
+        """
+        from ..constructions import find  # the book constructions sit above the kernel
+
+        c = find(self.protocol.construction)
+        return [] if c is None else c.checks(self)
+
+    def with_givens(self, **givens: Any) -> "Figure":
+        """The same steps replayed with other givens (arrays make a sweep)."""
+        values = dict(self.replay.givens)
+        values.update(givens)
+        return Figure(self.protocol, self.protocol.replay(values))
+
+    def _repr_svg_(self) -> str:
+        """Inline display in Jupyter: the final figure in the teaching style."""
+        from ..render.notebook import figure_repr_svg
+
+        return figure_repr_svg(self)

@@ -1,0 +1,251 @@
+"""The op table: every operation a protocol step can name, defined once, here.
+
+A protocol file names each step's operation (``"op": "intersect"``); loading
+it needs nothing but this table, whatever construction wrote it.  Building
+(:class:`~construct.kernel.instruments.Builder`) and replaying
+(:meth:`~construct.kernel.protocol.Protocol.replay`) call the very same
+functions, so they cannot disagree.
+
+An operation is a function ``fn(args, params, givens, refs, xp)``: the input
+objects, the step's parameters, the givens, the objects its branch rule
+names (``()`` without a rule) and the array namespace -- :data:`SCALAR`
+for plain floats, :data:`ARRAY` for a sweep over many givens at once.  It
+returns the tuple of its outputs and computes only what its instrument does.
+Operations that iterate (dividers by trial, the marked ruler) or draw curves
+through points are marked ``vector=False``: in a sweep they run once per set
+of givens and their results are stacked.
+
+>>> sorted(OPS)[:6]
+['area_between', 'circle_radius', 'circle_segment', 'circle_through', 'french_curve', 'given_length']
+>>> OPS["intersect"].inputs, OPS["intersect"].rule
+(('curve', 'curve'), True)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Callable
+
+from .areas import Area, area_between_op, planimeter_height_op, planimeter_op
+from .curves import BezierCurve, Polyline, crossings, french_curve_op, parabola_envelope_op, polyline_op
+from .errors import GeometryError, NoIntersection
+from .geometry import (SCALAR, Circle, Length, Line, Point, Sweep, _circle, _pt, circle_circle, line_circle,
+                       line_line, stack, take)
+from .rules import choose, choose_among
+from .trial import neusis_archimedes_op, trial_chord_op
+
+__all__ = ["Op", "OPS", "KINDS", "elementwise"]
+
+#: Input kinds an op declares, and the values that fill them.
+KINDS: dict[str, tuple[type, ...]] = {
+    "point": (Point,),
+    "line": (Line,),
+    "circle": (Circle,),
+    "length": (Length,),
+    "curve": (Line, Circle, Polyline, BezierCurve),
+    "graph": (Line, Polyline, BezierCurve),
+    "area": (Area,),
+}
+
+
+@dataclass(frozen=True)
+class Op:
+    """An operation: its function, the kinds of its inputs (a trailing ``*`` repeats the last), its rule."""
+
+    name: str
+    fn: Callable[..., tuple]
+    inputs: tuple[str, ...]
+    rule: bool = False
+    vector: bool = True
+    doc: str = ""
+
+    def check_inputs(self, args: list) -> str | None:
+        """None when *args* fit the declared kinds, else what is wrong (for the step's error)."""
+        kinds = self.inputs
+        variadic = bool(kinds) and kinds[-1].endswith("*")
+        fixed = [k.rstrip("*") for k in kinds]
+        if variadic:
+            if len(args) < len(fixed) - 1:
+                return f"takes at least {len(fixed) - 1} inputs, got {len(args)}"
+        elif len(args) != len(fixed):
+            return f"takes {len(fixed)} inputs ({', '.join(fixed)}), got {len(args)}"
+        for i, a in enumerate(args):
+            kind = fixed[min(i, len(fixed) - 1)]
+            if kind == "any" or isinstance(a, Sweep):
+                continue
+            if not isinstance(a, KINDS[kind]):
+                return f"input {i + 1} must be a {kind}, got {type(a).__name__}"
+        return None
+
+
+# --------------------------------------------------------------------------
+# Givens.
+# --------------------------------------------------------------------------
+
+
+def _given_point(args, params, givens, refs, xp):
+    unit = givens[params["unit"]] if params.get("unit") else 1.0
+    return (Point(params["x"] * unit, params["y"] * unit),)
+
+
+def _given_length(args, params, givens, refs, xp):
+    value = float(params.get("factor", 1.0))
+    for name in params["product"]:
+        value = value * givens[name]
+    return (Length(value),)
+
+
+def _given_line(args, params, givens, refs, xp):
+    (o,) = args
+    a = xp.radians(params["angle_deg"])
+    # A second point one unit away fixes the direction; the drawing extent is the renderer's business.
+    return (Line(o, _pt(o.x + xp.cos(a), o.y + xp.sin(a))),)
+
+
+# --------------------------------------------------------------------------
+# Straightedge, compass, dividers.
+# --------------------------------------------------------------------------
+
+
+def _line(args, params, givens, refs, xp):
+    return (Line(args[0], args[1]),)
+
+
+def _radius(r: Any, xp: Any, what: Any) -> Any:
+    """*r* when positive everywhere; else a DegenerateObject (its message made only then: reprs cost)."""
+    if xp is SCALAR:
+        if r > 0.0:
+            return r
+    elif not xp.any(~(r > 0.0)):
+        return r
+    from .errors import DegenerateObject
+
+    raise DegenerateObject(f"{what()} has no radius (its two points coincide)")
+
+
+def _circle_through(args, params, givens, refs, xp):
+    c, p = args
+    return (_circle(c, _radius(xp.hypot(p.x - c.x, p.y - c.y), xp, lambda: f"circle about {c!r} through {p!r}")),)
+
+
+def _circle_radius(args, params, givens, refs, xp):
+    c, length = args
+    return (_circle(c, length.value),)  # a Length is positive by construction
+
+
+def _circle_segment(args, params, givens, refs, xp):
+    c, a, b = args
+    return (_circle(c, _radius(xp.hypot(b.x - a.x, b.y - a.y), xp, lambda: f"compass set to {a!r}{b!r}")),)
+
+
+def _length_of(args, params, givens, refs, xp):
+    a, b = args
+    return (Length(xp.hypot(b.x - a.x, b.y - a.y)),)
+
+
+def _swap(fn):
+    return lambda a, b, xp: fn(b, a, xp)
+
+
+#: Which core meets two curves of these kinds (the order of the points follows the first-named curve).
+_MEET = {
+    (Circle, Circle): circle_circle,
+    (Line, Circle): line_circle,
+    (Circle, Line): _swap(line_circle),
+    (Line, Line): lambda a, b, xp: (line_line(a, b, xp),),
+}
+
+
+def _intersect(args, params, givens, refs, xp):
+    c1, c2 = args
+    rule = params["rule"]
+    core = _MEET.get((type(c1), type(c2)))
+    if core is None:  # a drawn curve: any number of crossings
+        if xp is not SCALAR:
+            return elementwise(_intersect)(args, params, givens, refs, xp)
+        return _cross_curve(c1, c2, rule, refs, bool(params.get("both")))
+    pts = core(c1, c2, xp)
+    if len(pts) == 1:
+        chosen, other = pts[0], None
+    else:
+        if rule.name == "only":
+            a, b = pts
+            scale = c1.radius if type(c1) is Circle else c2.radius
+            if xp.any(xp.hypot(a.x - b.x, a.y - b.y) > 1e-9 * scale):
+                raise GeometryError("expected exactly one intersection, found 2")
+        chosen, other = choose(pts, rule, refs, xp)
+    if params.get("both"):
+        return (chosen, other if other is not None else chosen)
+    return (chosen,)
+
+
+def _cross_curve(c1, c2, rule, refs, both):
+    """A drawn curve crossed by a line: any number of crossings, one chosen by the rule."""
+    curve, line = (c1, c2) if isinstance(c2, Line) else (c2, c1)
+    if not isinstance(line, Line):
+        raise GeometryError("a drawn curve can only be crossed with a straight line")
+    pts = crossings(curve, line)
+    if not pts:
+        raise NoIntersection(f"{curve!r} and the line do not meet")
+    chosen = choose_among(pts, rule, refs)
+    if both:
+        rest = [p for p in pts if p is not chosen]
+        return (chosen, choose_among(rest, rule, refs) if rest else chosen)
+    return (chosen,)
+
+
+def _step_off(args, params, givens, refs, xp):
+    """Dividers: from a point, step a length off along a curve (no arc is drawn, a point is pricked)."""
+    curve, start, length = args
+    return _intersect((curve, _circle(start, length.value)), params, givens, refs, xp)
+
+
+# --------------------------------------------------------------------------
+# Sweeps of operations that only work on single values.
+# --------------------------------------------------------------------------
+
+
+def elementwise(fn: Callable[..., tuple]) -> Callable[..., tuple]:
+    """Run *fn* once per set of givens of a sweep (``xp.n`` of them) and stack the results."""
+
+    def run(args, params, givens, refs, xp):
+        n = xp.n
+        outs = []
+        for i in range(n):
+            outs.append(fn([take(a, i) for a in args], params, {k: take(v, i) for k, v in givens.items()},
+                           [take(r, i) for r in refs], SCALAR))
+        return tuple(stack([o[j] for o in outs]) for j in range(len(outs[0])))
+
+    return run
+
+
+# --------------------------------------------------------------------------
+# The table.
+# --------------------------------------------------------------------------
+
+OPS: dict[str, Op] = {op.name: op for op in (
+    Op("given_point", _given_point, (), doc="a point given by its coordinates (times a given unit)"),
+    Op("given_length", _given_length, (), doc="a length given as a product of givens"),
+    Op("given_line", _given_line, ("point",), doc="a line through a point at a given angle"),
+    Op("line", _line, ("point", "point"), doc="straightedge through two points"),
+    Op("circle_through", _circle_through, ("point", "point"), doc="compass about a point through a point"),
+    Op("circle_radius", _circle_radius, ("point", "length"), doc="compass about a point with a carried opening"),
+    Op("circle_segment", _circle_segment, ("point", "point", "point"), doc="compass opening taken from a segment"),
+    Op("length_of", _length_of, ("point", "point"), doc="compass set to a segment"),
+    Op("intersect", _intersect, ("curve", "curve"), rule=True, doc="where two drawn curves cross"),
+    Op("step_off", _step_off, ("curve", "point", "length"), rule=True, doc="dividers stepped along a curve"),
+    Op("trial_chord", trial_chord_op, ("circle", "point", "point"), vector=False,
+       doc="dividers set by trial to 1/n of an arc"),
+    Op("neusis_archimedes", neusis_archimedes_op, ("point", "point", "point", "circle"), vector=False,
+       doc="Archimedes' marked ruler slid into place"),
+    Op("french_curve", french_curve_op, ("line", "point", "any*"), vector=False,
+       doc="a smooth curve through points along tangents (the tangent lines follow the points)"),
+    Op("parabola_envelope", parabola_envelope_op, ("point", "point", "point"), vector=False,
+       doc="the parabola enveloped by the joins of equal divisions of ED and DF"),
+    Op("polyline", polyline_op, ("point", "point", "point*"), vector=False, doc="points joined by the straightedge"),
+    Op("area_between", area_between_op, ("graph", "graph", "point", "point"), vector=False,
+       doc="the region between two graphs between two abscissae"),
+    Op("planimeter", planimeter_op, ("area",), vector=False, doc="a planimeter's reading of an area"),
+    Op("planimeter_height", planimeter_height_op, ("area", "point", "point"), vector=False,
+       doc="the mean height of an area over a base"),
+)}

@@ -1,0 +1,221 @@
+"""Which of the points where two curves meet a construction wants: rules, never indices.
+
+Two circles meet twice; a replay with other givens must pick the same branch,
+so a step stores a *rule* that names objects of the construction:
+
+- :func:`nearer` / :func:`farther`: the point nearer to / farther from a point;
+- :func:`left_of` / :func:`right_of`: the point on that side of the directed line A→B;
+- :func:`toward`: the point farthest along the direction A→B, or a fixed direction;
+- :func:`only`: there must be one point (a line crossing, a tangency).
+
+A rule is a small value; it serialises to the JSON list the protocol format
+has always used (``["nearer", "A"]``, ``["toward", null, null, -1.0, 0.0]``).
+
+>>> nearer("A")
+nearer('A')
+>>> left_of("A", "B").as_json()
+['left', 'A', 'B']
+>>> as_rule(["toward", "O", None, -1.0, 0.0])
+toward(dx=-1.0, dy=0.0)
+>>> as_rule("left")
+Traceback (most recent call last):
+...
+construct.kernel.errors.RuleError: a rule is a value like left_of('A', 'B') or a list like ['left', 'A', 'B'], got 'left'
+"""
+
+from __future__ import annotations
+
+from typing import Any, Sequence
+
+from .errors import RuleError
+from .geometry import _pt
+
+__all__ = ["Rule", "nearer", "farther", "left_of", "right_of", "toward", "only", "as_rule", "RULE_ARITY", "choose"]
+
+#: How many object names each rule refers to.
+RULE_ARITY = {"nearer": 1, "farther": 1, "left": 2, "right": 2, "toward": 2, "only": 0}
+
+
+class Rule:
+    """A branch rule: its name, the objects it refers to and, for ``toward``, a fixed direction."""
+
+    __slots__ = ("name", "refs", "direction", "_json")
+
+    def __init__(self, name: str, refs: Sequence[str] = (), direction: tuple[float, float] | None = None,
+                 raw: Sequence[Any] | None = None) -> None:
+        if name not in RULE_ARITY:
+            raise RuleError(f"unknown intersection rule {name!r}; known: {', '.join(sorted(RULE_ARITY))}")
+        refs = tuple(refs)
+        if not all(isinstance(r, str) for r in refs):
+            raise RuleError(f"rule {name!r} refers to objects by name, got {refs!r}")
+        want = RULE_ARITY[name]
+        if direction is None and len(refs) != want:
+            raise RuleError(f"rule {name!r} names {want} object{'s' if want != 1 else ''}, got {len(refs)}: {refs!r}")
+        if direction is not None:
+            if name != "toward" or refs and len(refs) > 1:
+                raise RuleError(f"only 'toward' takes a fixed direction, got {name!r} with {refs!r}")
+            dx, dy = (float(v) for v in direction)
+            if dx == 0.0 and dy == 0.0:
+                raise RuleError("rule 'toward' needs a direction other than (0, 0)")
+            direction = (dx, dy)
+        s = object.__setattr__
+        s(self, "name", name)
+        s(self, "refs", refs if direction is None else ())
+        s(self, "direction", direction)
+        # The JSON form, kept exactly as a protocol file wrote it (a fixed direction may carry a point name).
+        s(self, "_json", tuple(raw) if raw is not None else None)
+
+    def __setattr__(self, key: str, value: Any) -> None:
+        raise AttributeError("Rule is immutable")
+
+    def as_json(self) -> list:
+        if self._json is not None:
+            return list(self._json)
+        if self.direction is not None:
+            return [self.name, None, None, self.direction[0], self.direction[1]]
+        return [self.name, *self.refs]
+
+    def as_tuple(self) -> tuple:
+        return tuple(self.as_json())
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Rule):
+            return NotImplemented
+        return (self.name, self.refs, self.direction) == (other.name, other.refs, other.direction)
+
+    def __hash__(self) -> int:
+        return hash((self.name, self.refs, self.direction))
+
+    def __reduce__(self):
+        return (as_rule, (self.as_json(),))
+
+    def __repr__(self) -> str:
+        fn = {"left": "left_of", "right": "right_of"}.get(self.name, self.name)
+        if self.direction is not None:
+            return f"toward(dx={self.direction[0]!r}, dy={self.direction[1]!r})"
+        return f"{fn}({', '.join(repr(r) for r in self.refs)})"
+
+
+def nearer(point: str) -> Rule:
+    """The intersection nearer to *point*."""
+    return Rule("nearer", (point,))
+
+
+def farther(point: str) -> Rule:
+    """The intersection farther from *point*."""
+    return Rule("farther", (point,))
+
+
+def left_of(a: str, b: str) -> Rule:
+    """The intersection to the left of the directed line a→b."""
+    return Rule("left", (a, b))
+
+
+def right_of(a: str, b: str) -> Rule:
+    """The intersection to the right of the directed line a→b."""
+    return Rule("right", (a, b))
+
+
+def toward(a: str | None = None, b: str | None = None, *, dx: float | None = None, dy: float | None = None) -> Rule:
+    """The intersection farthest along a→b, or along the fixed direction (dx, dy).
+
+    >>> toward("O", "P"), toward(dx=-1)
+    (toward('O', 'P'), toward(dx=-1.0, dy=0.0))
+    """
+    if dx is not None or dy is not None:
+        if a is not None or b is not None:
+            raise RuleError("toward() takes two points or a direction (dx, dy), not both")
+        return Rule("toward", (), (dx or 0.0, dy or 0.0))
+    if a is None or b is None:
+        raise RuleError("toward() needs two points a, b or a direction dx=..., dy=...")
+    return Rule("toward", (a, b))
+
+
+def only() -> Rule:
+    """There must be exactly one point (two lines; a tangency)."""
+    return Rule("only")
+
+
+def as_rule(rule: Any) -> Rule:
+    """A Rule from a Rule or from its JSON list / tuple form (the form protocols store)."""
+    if isinstance(rule, Rule):
+        return rule
+    if isinstance(rule, str) or not isinstance(rule, (list, tuple)) or not rule:
+        raise RuleError(f"a rule is a value like left_of('A', 'B') or a list like ['left', 'A', 'B'], got {rule!r}")
+    name = rule[0]
+    if name == "toward" and len(rule) == 5:
+        if rule[2] is not None:
+            raise RuleError(f"rule {list(rule)!r}: a fixed direction leaves the second point empty")
+        return Rule("toward", (), (rule[3], rule[4]), raw=rule)
+    if name not in RULE_ARITY:
+        raise RuleError(f"unknown intersection rule {name!r}; known: {', '.join(sorted(RULE_ARITY))}")
+    return Rule(name, tuple(rule[1:]))
+
+
+def choose(points: Sequence[Any], rule: Rule, refs: Sequence[Any], xp: Any) -> tuple[Any, Any]:
+    """Pick one of two points by *rule*; return (chosen, other).  Vectorised with ``xp.where``.
+
+    *refs* are the objects the rule names, already looked up.  With one point
+    (two lines), that point is the answer whatever the rule.
+
+    >>> from .geometry import Point, SCALAR
+    >>> pts = (Point(0.0, 1.0), Point(0.0, -1.0))
+    >>> choose(pts, left_of("A", "B"), (Point(-1.0, 0.0), Point(1.0, 0.0)), SCALAR)[0]
+    Point(0.0, 1.0)
+    >>> choose(pts, nearer("Q"), (Point(0.0, -5.0),), SCALAR)[0]
+    Point(0.0, -1.0)
+    """
+    if len(points) == 1:
+        return points[0], None
+    a, b = points
+    name = rule.name
+    if name in ("nearer", "farther"):
+        (r,) = refs
+        da = (a.x - r.x) ** 2 + (a.y - r.y) ** 2
+        db = (b.x - r.x) ** 2 + (b.y - r.y) ** 2
+        first = da <= db if name == "nearer" else da >= db
+    elif name in ("left", "right"):
+        p, q = refs
+        sa = (q.x - p.x) * (a.y - p.y) - (q.y - p.y) * (a.x - p.x)
+        sb = (q.x - p.x) * (b.y - p.y) - (q.y - p.y) * (b.x - p.x)
+        first = sa >= sb if name == "left" else sa <= sb
+    elif name == "toward":
+        if rule.direction is None:
+            p, q = refs
+            dx, dy = q.x - p.x, q.y - p.y
+        else:
+            dx, dy = rule.direction
+        first = a.x * dx + a.y * dy >= b.x * dx + b.y * dy
+    else:  # "only": the caller has checked that the two points coincide
+        return a, b
+    if xp.name == "scalar":
+        return (a, b) if first else (b, a)
+    w = xp.where
+    return _pt(w(first, a.x, b.x), w(first, a.y, b.y)), _pt(w(first, b.x, a.x), w(first, b.y, a.y))
+
+
+def choose_among(points: Sequence[Any], rule: Rule, refs: Sequence[Any]) -> Any:
+    """Pick one of any number of points (the crossings of a drawn curve) by *rule*; scalar values only."""
+    if not points:
+        raise ValueError("no points to choose from")
+    if len(points) == 1 or rule.name == "only":
+        return points[0]
+    name = rule.name
+    if name in ("nearer", "farther"):
+        (r,) = refs
+        key = [(p.x - r.x) ** 2 + (p.y - r.y) ** 2 for p in points]
+        best = min if name == "nearer" else max
+    elif name in ("left", "right"):
+        p0, q0 = refs
+        key = [(q0.x - p0.x) * (p.y - p0.y) - (q0.y - p0.y) * (p.x - p0.x) for p in points]
+        best = max if name == "left" else min
+    else:
+        if rule.direction is None:
+            p0, q0 = refs
+            dx, dy = q0.x - p0.x, q0.y - p0.y
+        else:
+            dx, dy = rule.direction
+        key = [p.x * dx + p.y * dy for p in points]
+        best = max
+    target = best(key)
+    return points[key.index(target)]

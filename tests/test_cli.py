@@ -26,8 +26,14 @@ def test_list_names_the_constructions(capsys):
 
 
 def test_replay_writes_frames_final_and_protocol(tmp_path, capsys):
+    # by default the layered final figure and no standalone frames
+    plain = tmp_path / "plain"
+    code, _, err = run(capsys, "replay", "crank", "--parts", "6", "--rod-ratio", "4", "--out", str(plain))
+    assert code == 0, err
+    assert not (plain / "steps").exists() and 'data-step="1"' in (plain / "final.svg").read_text()
     out = tmp_path / "o"
-    code, _, err = run(capsys, "replay", "crank", "--parts", "6", "--rod-ratio", "4", "--out", str(out))
+    code, _, err = run(capsys, "replay", "crank", "--parts", "6", "--rod-ratio", "4", "--frames", "all",
+                       "--out", str(out))
     assert code == 0, err
     proto = json.loads((out / "protocol.json").read_text())
     n = len(proto["steps"])

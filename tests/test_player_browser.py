@@ -19,7 +19,8 @@ import pytest
 
 from construct.constructions import get
 from construct.kernel.geometry import Circle, Line, Point
-from construct.render.animate import step_seconds
+from construct.kernel.geometry import Length
+from construct.render.animate import STEP_SECONDS, step_seconds
 from construct.render.output import write_replay
 
 CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
@@ -102,6 +103,7 @@ def test_player_steps_show_exactly_the_steps_so_far(browser, player):
     page.on("pageerror", lambda e: errors.append(str(e)))
     requests: list[str] = []
     page.on("request", lambda r: requests.append(r.url))
+    page.clock.install()
     page.goto(path.as_uri())
     page.keyboard.press("Home")
     assert _visible_names(page, fig) == set()
@@ -118,13 +120,21 @@ def test_player_steps_show_exactly_the_steps_so_far(browser, player):
     mid = n // 2
     page.eval_on_selector("#slider", f"(s) => {{ s.value = {mid}; s.dispatchEvent(new Event('input')); }}")
     assert _visible_names(page, fig) == _expected_visible(fig, mid)
-    # play advances by itself, pause stops it
+    # play advances by itself at the chosen pace, pause stops it (the page's clock is driven, not slept through)
+    step = lambda: int(page.get_attribute("#figure", "data-step"))  # noqa: E731
+    assert page.eval_on_selector("#speed", "s => +s.value") == STEP_SECONDS
     page.click("#play")
-    page.wait_for_function(f"() => +document.getElementById('figure').dataset.step > {mid + 1}", timeout=10000)
+    page.clock.run_for(int(STEP_SECONDS * 1000) * 2 + 100)
+    assert step() == mid + 2
+    page.select_option("#speed", "0.5")
+    page.clock.run_for(1100)  # a new pace takes effect at once: 0.5 s a step
+    assert step() == mid + 4
     page.click("#play")
-    stopped = page.get_attribute("#figure", "data-step")
-    page.wait_for_timeout(1500)
-    assert page.get_attribute("#figure", "data-step") == stopped
+    stopped = step()
+    page.clock.run_for(10_000)
+    assert step() == stopped
+    page.keyboard.press("-")  # slower: back to the next longer time per step
+    assert page.eval_on_selector("#speed", "s => +s.value") == 1.0
     # the groups are collapsible and the givens are shown
     assert page.locator("#steps details").count() >= 3
     assert "rod_ratio" in page.inner_text("#givens") and "4" in page.inner_text("#givens")
@@ -136,22 +146,42 @@ def test_player_steps_show_exactly_the_steps_so_far(browser, player):
     page.close()
 
 
-def test_animated_svg_plays_in_an_img(browser, tmp_path):
-    """The animated SVG in an <img>: at first only the first steps show, at the end the whole figure."""
+def test_animated_svg_plays_by_its_clock(browser, tmp_path):
+    """The animated SVG, its SMIL clock set to moments of the play: at 1.5 s a step, steps 1..k show, then all.
+
+    The document's own clock is paused and set (``setCurrentTime``), so the
+    test sees the animation at any moment without waiting for it.
+    """
     c = get("crank")
     fig = c.figure(parts=3, rod_ratio=4.0)
     write_replay(c, fig, tmp_path, style="teaching", frames="none")
+    n = len(fig.protocol.steps)
+    dt = step_seconds(n)
+    assert dt >= 1.5
     page = browser.new_page(viewport={"width": 1000, "height": 800})
-    (tmp_path / "img.html").write_text('<!DOCTYPE html><body style="margin:0;background:#fff">'
-                                       '<img id="a" src="animated.svg" width="960"></body>')
-    page.goto((tmp_path / "img.html").as_uri())
-    page.wait_for_function("() => document.getElementById('a').complete")
-    # count dark pixels via a canvas at two moments: the drawing grows
-    page.wait_for_timeout(200)
-    early = page.screenshot(clip={"x": 0, "y": 0, "width": 960, "height": 600})
-    page.wait_for_timeout(step_seconds(len(fig.protocol.steps)) * 1000 * len(fig.protocol.steps) + 300)
-    late = page.screenshot(clip={"x": 0, "y": 0, "width": 960, "height": 600})
-    assert _ink(late) > 2 * _ink(early) > 0
+    page.goto((tmp_path / "animated.svg").as_uri())
+    page.evaluate("() => document.documentElement.pauseAnimations()")
+
+    def at(t: float) -> tuple[int, str]:
+        page.evaluate(f"() => document.documentElement.setCurrentTime({t})")
+        shown = page.evaluate("""() => Array.from(document.querySelectorAll('g[data-step]'))
+            .filter(g => getComputedStyle(g).visibility !== 'hidden').map(g => +g.dataset.step)""")
+        caption = page.evaluate("""() => Array.from(document.querySelectorAll('#step-captions > g'))
+            .filter(g => getComputedStyle(g).visibility !== 'hidden').map(g => g.textContent).join('|')""")
+        return max(shown, default=0), caption
+
+    drawn = sorted({s.index for s in fig.protocol.steps if any(fig.replay.get(o) is not None and not
+                                                                 isinstance(fig.replay.get(o), Length) for o in s.outputs)})
+    for k in (drawn[0], drawn[len(drawn) // 2], n):
+        latest, caption = at((k - 1) * dt + dt / 2)
+        assert latest == max(j for j in drawn if j <= k), k
+        assert caption.count("Schritt ") == 1 and f"Schritt {k} von {n}" in caption, caption
+    early = page.evaluate("() => { document.documentElement.setCurrentTime(0.1); return 0; }")
+    first = page.screenshot(clip={"x": 0, "y": 0, "width": 960, "height": 600})
+    page.evaluate(f"() => document.documentElement.setCurrentTime({n * dt + 1})")  # the hold at the end
+    assert at(n * dt + 1)[0] == drawn[-1] and at(n * dt + 1)[1] == ""
+    last = page.screenshot(clip={"x": 0, "y": 0, "width": 960, "height": 600})
+    assert early == 0 and _ink(last) > 2 * _ink(first) > 0
     page.close()
 
 

@@ -9,7 +9,9 @@ earlier; a clock animation restarts the whole play when it ends
 figure with its title, since everything is visible by default.
 
 A step stays :data:`STEP_SECONDS` on screen by default: long enough to read
-its caption (the player lets the reader choose the pace).
+its caption (the player lets the reader choose the pace).  A construction of
+more than :data:`MAX_STAGES` steps is animated a group at a time (the 360-part
+crank has 7292 steps: three hours at that pace).
 
 >>> from construct.constructions import get
 >>> from construct.render.scene import build_scene
@@ -22,14 +24,17 @@ True
 
 from __future__ import annotations
 
+import bisect
 from typing import Any
 
-from .svg import PLAIN, Drawing, Style, fmt
+from .svg import PLAIN, Drawing, Style, fmt, group_caption
 
-__all__ = ["animated_svg", "step_seconds", "STEP_GROUP_CSS", "STEP_SECONDS"]
+__all__ = ["animated_svg", "step_seconds", "stages", "STEP_GROUP_CSS", "STEP_SECONDS", "MAX_STAGES"]
 
 #: Seconds each step is shown in the animated SVG (a caption takes that long to read).
 STEP_SECONDS = 1.5
+#: Up to this many steps the animation shows each step; longer constructions a group at a time.
+MAX_STAGES = 1000
 
 #: Looks of the step groups, for players that switch classes on a whole step.
 STEP_GROUP_CSS = """g.hid{display:none}
@@ -53,13 +58,41 @@ def step_groups(drawing: Drawing, layer: str) -> list[tuple[int, list[Any]]]:
     return drawing.groups[layer]
 
 
+def stages(drawing: Drawing, most: int = MAX_STAGES) -> list[int]:
+    """The last step of each stage the animation shows: every step, or for long constructions group ends.
+
+    Up to *most* steps each step is a stage.  Beyond that a step-by-step
+    animation would run for hours at a readable pace, so a stage is a group
+    (the ends of the groups up to depth 2, thinned evenly to *most*).
+    """
+    from .output import frame_steps
+
+    n = len(drawing.scene.steps)
+    if n <= most:
+        return list(range(1, n + 1))
+    ends = frame_steps(drawing.scene, "groups")
+    if len(ends) > most:
+        ends = sorted({ends[round(i * (len(ends) - 1) / (most - 1))] for i in range(most)})
+    return ends
+
+
+def _stage_caption(drawing: Drawing, first: int, last: int) -> list[tuple[str, str]]:
+    """The caption of a stage of several steps: its group and the span of steps."""
+    if first == last:
+        return [line for line in drawing.frame_caption_lines(last) if line[0] != "grp"]
+    n = len(drawing.scene.steps)
+    group = group_caption(drawing.scene, last)
+    return [("de", f"Schritte {first}–{last} von {n}: {group}"), ("en", f"Steps {first}–{last} of {n}")]
+
+
 def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None = None,
                  drawing: Drawing | None = None, seconds: float = STEP_SECONDS) -> str:
     """The animation of *scene* (or of the already laid-out *drawing*) as SVG text."""
     d = drawing or Drawing(scene, style)
     style = d.style
     f = d.doc.factory
-    n = len(d.scene.steps)
+    ends = stages(d)
+    n = len(ends)
     dt = step_seconds(n, seconds)
     hold = 4.0
     total = n * dt + hold
@@ -71,43 +104,47 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
     for layer in d.LAYERS:
         lg = f.g(id=layer)
         for k, elems in d.groups[layer]:
-            start = (k - 1) * dt
+            i = bisect.bisect_left(ends, k) + 1  # the stage that shows step k
+            start = (i - 1) * dt
             timing = []
-            if k > 1:
+            if i > 1:
                 timing.append(f.set(attributeName="visibility", to="hidden", begin="clock.begin", dur=f"{fmt(start)}s"))
             if marks_steps and style.highlight:
                 timing.append(f.set(attributeName="class", to="step cur", begin=f"clock.begin+{fmt(start)}s",
                                     dur=f"{fmt(dt)}s"))
             end = d.scene.fade_end(k) if style.done_opacity < 1.0 else None
-            if marks_steps and style.earlier_opacity < 1.0 and k < n:
+            # the stage after which step k fades (its group finished), or none
+            j = bisect.bisect_left(ends, end) + 1 if end is not None else None
+            if marks_steps and style.earlier_opacity < 1.0 and i < n:
                 # old until its group is finished, then faded to the end of the play (its results stay)
-                until = n if end is None else end
-                if until > k:
-                    timing.append(f.set(attributeName="class", to="step old", begin=f"clock.begin+{fmt(k * dt)}s",
-                                        dur=f"{fmt((until - k) * dt)}s"))
-            if end is not None and end >= k:
-                timing.append(f.set(attributeName="class", to="step done", begin=f"clock.begin+{fmt(end * dt)}s",
-                                    dur=f"{fmt(total - end * dt)}s"))
+                until = n if j is None else j
+                if until > i:
+                    timing.append(f.set(attributeName="class", to="step old", begin=f"clock.begin+{fmt(i * dt)}s",
+                                        dur=f"{fmt((until - i) * dt)}s"))
+            if j is not None and j >= i:
+                timing.append(f.set(attributeName="class", to="step done", begin=f"clock.begin+{fmt(j * dt)}s",
+                                    dur=f"{fmt(total - j * dt)}s"))
             # no ids: a <set> animates its parent, the step group
             lg.add(d.step_group(k, timing + list(elems)))
         dwg.add(lg)
     furniture = d.furniture()  # the broken axis's marks (and a plate's furniture)
     if furniture is not None:
         dwg.add(furniture)
-    # Captions: each step's while it is drawn, the figure's title otherwise (and in still renderers).
+    # Captions: each stage's while it is drawn, the figure's title otherwise (and in still renderers).
     title_lines = d.title_lines(title or d.scene.title)[: d.n_caption]
     tg = d.caption_group(title_lines, id="title")
     if tg is not None:
         tg.add(f.set(attributeName="visibility", to="hidden", begin="clock.begin", dur=f"{fmt(n * dt)}s"))
         dwg.add(tg)
     caps = f.g(id="step-captions")
-    for k in range(1, n + 1):
-        # the step's caption in German and English (the group path is in the player and the frames)
-        lines = [line for line in d.frame_caption_lines(k) if line[0] != "grp"]
-        cap = d.caption_group(lines, id=f"caption-{k}", visibility="hidden")
+    first = 1
+    for i, last in enumerate(ends, start=1):
+        # the caption in German and English (the group path is in the player and the frames)
+        cap = d.caption_group(_stage_caption(d, first, last), id=f"caption-{last}", visibility="hidden")
         if cap is not None:
-            cap.add(f.set(attributeName="visibility", to="visible", begin=f"clock.begin+{fmt((k - 1) * dt)}s",
+            cap.add(f.set(attributeName="visibility", to="visible", begin=f"clock.begin+{fmt((i - 1) * dt)}s",
                           dur=f"{fmt(dt)}s"))
             caps.add(cap)
+        first = last + 1
     dwg.add(caps)
     return d.doc.text(dwg)

@@ -106,8 +106,8 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
     dwg.add(f.rect(insert=("-10000", "-10000"), size=("20000", "20000"), fill=style.background))
     for layer in d.LAYERS:
         lg = f.g(id=layer)
-        for k, elems in d.groups[layer]:
-            lg.add(d.step_group(k, elems))
+        for group in d.plain_groups(layer):
+            lg.add(group)
         dwg.add(lg)
     furniture = d.furniture()  # the broken axis's marks (and a plate's furniture)
     if furniture is not None:
@@ -297,10 +297,14 @@ li a.later{color:#bbb}
     text("play", "||");
     timer = setTimeout(tick, seconds() * 1000);
   }
-  function faster(by) {
-    var i = Math.max(0, Math.min(speed.options.length - 1, speed.selectedIndex + by));
-    speed.selectedIndex = i;
+  function repace() {  // a new pace takes effect at once
+    if (timer) { clearTimeout(timer); timer = setTimeout(tick, seconds() * 1000); }
   }
+  function faster(by) {
+    speed.selectedIndex = Math.max(0, Math.min(speed.options.length - 1, speed.selectedIndex + by));
+    repace();
+  }
+  speed.onchange = repace;
   document.getElementById("first").onclick = function () { pause(); show(0); };
   document.getElementById("prev").onclick = function () { pause(); show(k - 1); };
   document.getElementById("next").onclick = function () { pause(); show(k + 1); };

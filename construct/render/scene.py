@@ -85,7 +85,14 @@ class Scene:
         the division G of trisection T4); in a caption beside the figure the
         last part is what the eye finds (the teaching style tags the current
         step's points with it), the path is in the group title above.  A
-        lettered object goes by its letter (P12 -> 12).
+        lettered object goes by its letter (P12 -> 12); names that run together
+        (a group "T7.C1T7.F") are split and joined by a dash.  One identifier
+        pattern and dictionary look-ups: the cost grows with the text only.
+
+        >>> from construct.constructions import get
+        >>> sc = build_scene(get("crank").figure(parts=9))
+        >>> sc.readable("Kreis um P3 durch T1.C1"), sc.readable("T1.C1T1.F geteilt")
+        ('Kreis um 3 durch C1', 'C1–F geteilt')
         """
         key = (text, lang, tuple(outputs))
         done = self._readable_cache.get(key)
@@ -618,9 +625,12 @@ def _extreme_points(m: Mark) -> list[tuple[float, float]]:
         cx, cy, r = g
         return [(cx - r, cy - r), (cx + r, cy + r)]
     if m.kind == "arc":
+        # its ends and the quarter points it passes: the exact box, in at most six points
         cx, cy, r, a0, sw = g
-        n = max(2, int(sw / 0.1) + 1)
-        return [(cx + r * math.cos(a0 + sw * i / (n - 1)), cy + r * math.sin(a0 + sw * i / (n - 1))) for i in range(n)]
+        quarter = math.pi / 2
+        angles = [a0, a0 + sw] + [q * quarter for q in range(math.ceil(min(a0, a0 + sw) / quarter),
+                                                              math.floor(max(a0, a0 + sw) / quarter) + 1)]
+        return [(cx + r * math.cos(a), cy + r * math.sin(a)) for a in angles]
     if m.kind in ("curve", "area"):
         return list(g)
     return []

@@ -31,13 +31,12 @@ import math
 import textwrap
 from dataclasses import dataclass, field
 from typing import Any, Mapping, Sequence
-from xml.sax.saxutils import escape as _escape
 
 from . import svgdoc
 from .lettering import LEADER_FROM
 from .scene import Mark, Scene, label_offset_direction
 
-__all__ = ["Style", "PLAIN", "render_svg", "fmt", "Viewport", "Drawing", "xml_text", "xml_attr",
+__all__ = ["Style", "PLAIN", "render_svg", "fmt", "Viewport", "Drawing",
            "step_caption", "wrap"]
 
 
@@ -49,24 +48,6 @@ def fmt(v: float, decimals: int = 2) -> str:
     """
     text = f"{v:.{decimals}f}".rstrip("0").rstrip(".")
     return "0" if text in ("-0", "") else text
-
-
-def xml_text(text: str) -> str:
-    """Text content, escaped for XML (and HTML).
-
-    >>> xml_text('<script>alert(1)</script> & "x"')
-    '&lt;script&gt;alert(1)&lt;/script&gt; &amp; "x"'
-    """
-    return _escape(text)
-
-
-def xml_attr(text: str) -> str:
-    """An attribute value (to go between double quotes), escaped.
-
-    >>> xml_attr('a "b" <c> & d')
-    'a &quot;b&quot; &lt;c&gt; &amp; d'
-    """
-    return _escape(text, {'"': "&quot;", "\n": "&#10;", "\t": "&#9;"})
 
 
 @dataclass(frozen=True)
@@ -246,6 +227,8 @@ class Viewport:
 def wrap(text: str, width_px: float, size: float) -> list[str]:
     """Lines of *text* that fit *width_px* at font size *size* (an average glyph is ~0.56 em)."""
     chars = max(20, int(width_px / (0.56 * size)))
+    if len(text) <= chars and text == text.strip() and not any(c in text for c in "\t\n\r\x0b\x0c"):
+        return [text]  # one line as it stands: what textwrap would return, without its cost
     return textwrap.wrap(text, chars, break_long_words=True, break_on_hyphens=False) or [""]
 
 
@@ -315,9 +298,20 @@ class Drawing:
         width = st.width_px - 2 * st.margin_px
         most = 2
         for k in range(1, len(self.scene.steps) + 1):
-            de, en = step_caption(self.scene, k)
-            most = max(most, len(wrap(de, width, st.caption_size)) + len(wrap(en, width, st.caption_size)))
+            de, en = self._wrapped_caption(k)
+            most = max(most, len(de) + len(en))
         return most + (1 if st.show_group else 0)
+
+    def _wrapped_caption(self, k: int) -> tuple[list[str], list[str]]:
+        """Step k's caption lines (German, English) wrapped to the canvas: wrapped once per step."""
+        cache = self.__dict__.setdefault("_wrap_cache", {})
+        got = cache.get(k)
+        if got is None:
+            st = self.style
+            width = st.width_px - 2 * st.margin_px
+            de, en = step_caption(self.scene, k)
+            got = cache[k] = (wrap(de, width, st.caption_size), wrap(en, width, st.caption_size))
+        return got
 
     @property
     def drawing_height(self) -> float:
@@ -460,10 +454,23 @@ class Drawing:
             return "done"
         return "old" if self.style.earlier_opacity < 1.0 else ""
 
+    def plain_groups(self, name: str) -> list[Any]:
+        """Layer *name*'s step groups as the whole figure shows them (``class="step"``, ``"step done"``
+        for a finished group's helpers), made once: the layered figure and the player carry the same ones."""
+        cache = self.__dict__.setdefault("_plain_groups", {})
+        if name not in cache:
+            cache[name] = [self.doc.frozen(self.step_group(k, elems, self.step_class(k, 0, mark_steps=False)))
+                           for k, elems in self.groups[name]]
+        return cache[name]
+
     def layer(self, name: str, k: int, *, mark_steps: bool) -> Any:
         """``<g id="name">`` with the step groups of steps 1..k; ``cur``/``old``/``done``/``inp`` when *mark_steps*."""
         inputs = self.input_steps(k) if mark_steps else frozenset()
         g = self.doc.factory.g(id=name)
+        if not mark_steps:
+            for group in self.plain_groups(name)[:bisect.bisect_right(self._steps[name], k)]:
+                g.add(group)
+            return g
         for s, elems in self.step_runs(name, k):
             g.add(self.step_group(s, elems, self.step_class(s, k, mark_steps=mark_steps, inputs=inputs)))
         return g
@@ -538,15 +545,11 @@ class Drawing:
         return g
 
     def frame_caption_lines(self, k: int) -> list[tuple[str, str]]:
-        st = self.style
-        width = st.width_px - 2 * st.margin_px
-        de, en = step_caption(self.scene, k)
+        de, en = self._wrapped_caption(k)
         lines: list[tuple[str, str]] = []
-        if st.show_group:
+        if self.style.show_group:
             lines.append(("grp", group_caption(self.scene, k)))
-        lines += [("de", t) for t in wrap(de, width, st.caption_size)]
-        lines += [("en", t) for t in wrap(en, width, st.caption_size)]
-        return lines
+        return lines + [("de", t) for t in de] + [("en", t) for t in en]
 
     def title_lines(self, caption: Sequence[str] | None = None) -> list[tuple[str, str]]:
         """The figure's caption lines (German first, then English), wrapped to the canvas."""
@@ -565,8 +568,9 @@ class Drawing:
             return self
         key = tuple(round(v, 9) for v in box)
         if key not in self._regions:
-            self._regions[key] = Drawing(self.scene, self.style, caption_lines=self.n_caption, region=box,
-                                         canvas=self.vp)
+            region = Drawing(self.scene, self.style, caption_lines=self.n_caption, region=box, canvas=self.vp)
+            region.__dict__["_wrap_cache"] = self.__dict__.setdefault("_wrap_cache", {})  # captions wrap alike
+            self._regions[key] = region
         return self._regions[key]
 
     def frame(self, k: int) -> str:

@@ -1,0 +1,64 @@
+"""svgwrite writes every SVG the project emits.
+
+Two checks that can fail: no module but the writer builds SVG markup from
+strings (a string constant in the code that opens an SVG element is a
+hand-made element), and every SVG a replay writes carries the attributes
+svgwrite's ``Drawing`` always writes and our old string templates never did.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from pathlib import Path
+
+from construct.constructions import get
+from construct.render import svgdoc
+from construct.render.output import write_replay
+
+PACKAGE = Path(svgdoc.__file__).resolve().parents[1]
+ELEMENT = re.compile(r"<(svg|g|circle|line|path|text|tspan|rect|set|animate\w*|clipPath|use|defs|polyline|polygon|"
+                     r"ellipse|filter|fe\w+|style)(?![\w-])")
+# Modules that read SVG (the semantic diff) or show it read from files (the golden failure page):
+# their strings are patterns and messages, never output.
+READERS = {"regress/svgdiff.py", "regress/pytest_plugin.py"}
+# HTML pages carry their own <style> sheets: that is HTML, not SVG.
+HTML_STYLE = {"render/player.py", "gallery.py"}
+
+
+def _strings(tree: ast.AST) -> list[tuple[int, str]]:
+    docstrings = set()
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.Module, ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            body = getattr(node, "body", [])
+            if body and isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant):
+                docstrings.add(id(body[0].value))
+    return [(n.lineno, n.value) for n in ast.walk(tree)
+            if isinstance(n, ast.Constant) and isinstance(n.value, str) and id(n) not in docstrings]
+
+
+def test_no_module_writes_svg_markup_by_hand():
+    found = []
+    for path in sorted(PACKAGE.rglob("*.py")):
+        rel = path.relative_to(PACKAGE).as_posix()
+        if rel in READERS:
+            continue
+        for line, text in _strings(ast.parse(path.read_text(encoding="utf-8"))):
+            for m in ELEMENT.finditer(text):
+                if m.group(1) == "style" and rel in HTML_STYLE:
+                    continue
+                found.append(f"{rel}:{line}: {text[max(0, m.start() - 10):m.end() + 20]!r}")
+    assert not found, "SVG markup outside svgwrite:\n" + "\n".join(found)
+
+
+def test_every_svg_of_a_replay_is_written_by_svgwrite(tmp_path):
+    c = get("crank")
+    write_replay(c, c.figure(parts=3), tmp_path, style="teaching", frames="all")
+    svgs = sorted(tmp_path.rglob("*.svg"))
+    assert {"final.svg", "animated.svg", "storyboard.svg"} <= {p.name for p in svgs} and len(svgs) > 10
+    for p in svgs:
+        text = p.read_text(encoding="utf-8")
+        assert text.startswith(svgdoc.XML_DECLARATION), p
+        assert svgdoc.MARKER in text and 'baseProfile="full"' in text, p
+    page = (tmp_path / "player.html").read_text(encoding="utf-8")
+    assert page.count(svgdoc.MARKER) == 1  # the player's one inline SVG

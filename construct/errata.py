@@ -38,7 +38,7 @@ from .errors import InvalidParameter
 from .reference import seed000
 from .reference.seed000 import PrintedValue
 
-__all__ = ["Erratum", "Reading", "errata", "classify", "read_printed", "true_value", "CLASSES"]
+__all__ = ["Erratum", "Reading", "errata", "all_errata", "classify", "read_printed", "true_value", "CLASSES"]
 
 CLASSES = ("agrees", "slip", "misprint")
 
@@ -440,3 +440,10 @@ def errata() -> list[Erratum]:
         return index[table, row, column]
 
     return [_entry(v, lookup) for v in printed] + _formula_entries()
+
+
+def all_errata() -> list[Erratum]:
+    """Seed 000's errata, then those of the other seeds (each entry's ``source`` names its seed)."""
+    from . import errata_seed001
+
+    return errata() + errata_seed001.entries()

@@ -75,9 +75,18 @@ def characteristic_points_table(*, rod_ratio: float) -> Table:
     return ("point", "omega_deg", "x", "q"), characteristic_point_rows(rod_ratio=rod_ratio)
 
 
+def mass_forces_table(*, weight: float, rpm: float, crank_radius: float, rod_length: float, parts: int = 18) -> Table:
+    """Seed 001, eq. (298): P_b (kg, + where the masses are accelerated) at each crank position, measured."""
+    from .constructions.piston_force import mass_force_rows
+
+    return ("crank_angle_deg", "x", "P_b"), mass_force_rows(weight=weight, rpm=rpm, crank_radius=crank_radius,
+                                                            rod_length=rod_length, parts=parts)
+
+
 TABLES = {
     "piston-path": piston_path_table,
     "crank-angle": crank_angle_table,
     "acceleration": acceleration_table,
     "characteristic-points": characteristic_points_table,
+    "mass-forces": mass_forces_table,
 }

@@ -55,8 +55,8 @@ def _plate_svg(c, fig) -> str:
     return render_svg(scene_for(c, fig, plate=True), style=STYLES["historical"], caption=plate_caption(c, fig, 1))
 
 
-def test_the_gallery_figures_are_the_books():
-    assert sorted(IDS) == sorted([
+def test_the_gallery_has_the_books_figures():
+    assert set(IDS) >= set([
         "crank-angle-rod_ratio4", "crank-angle-rod_ratio5", "crank-angle-rod_ratio6",
         "crank-parts18-rod_ratio5", "crank-parts9-rod_ratio5",
         "inertia-curve-rod_ratio4", "inertia-curve-rod_ratio5", "inertia-curve-rod_ratio6"])
@@ -99,7 +99,7 @@ def test_crank_finals_carry_every_piston_position(figures, key):
 
 #: Names of the code that must never reach a reader (issue 9).
 CODE_WORDS = re.compile(r"EinfFinf|\bc45\b|\bc135\b|D0top|\bMr1\b|\bMk1\b|_|\bsqrt\b|\blam\b|\bvert\b|\btop\b")
-_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*")
+_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*[′']*")  # a letter may carry primes (J′)
 
 
 @pytest.mark.parametrize("key", IDS)
@@ -126,6 +126,9 @@ def test_captions_name_only_what_the_figure_letters(figures, key):
                 bad.append((k, text))
                 continue
             for tok in _NAME.findall(text):
+                if tok in letters or tok in tags:
+                    continue
+                tok = tok.rstrip("′'")
                 if tok in names and tok not in letters and tok not in tags and not (tok.isalpha() and tok.islower()):
                     bad.append((k, tok, text))
     assert not bad, bad[:10]

@@ -39,15 +39,40 @@ def add_construction_options(p: argparse.ArgumentParser, *, name_optional: bool 
     p.add_argument("--pressure-ratio", type=_number, metavar="F/f", help="F/f of the inertia pressures")
     p.add_argument("--given", action="append", default=[], metavar="NAME=VALUE",
                    help="set a given of a --protocol by its own name (repeatable), e.g. --given s=10")
+    _add_generic_options(p)
 
 
 PARAM_OPTIONS = {"rod_ratio": "rod_ratio", "parts": "parts", "method": "method", "divisions": "divisions",
                  "radius": "r", "pressure_ratio": "pressure_ratio"}
 
 
+def _generic_params() -> dict[str, tuple[Any, str]]:
+    """Every other construction parameter, as --its-name-with-dashes: (type of its default, help)."""
+    from ..constructions import names
+
+    covered = set(PARAM_OPTIONS.values())
+    out: dict[str, tuple[Any, str]] = {}
+    for name in names():
+        c = get(name)
+        helps = c.extra.get("help", {})
+        for key, default in c.defaults.items():
+            if key in covered or key in out:
+                continue
+            kind = _whole if isinstance(default, int) and not isinstance(default, bool) else (
+                _number if isinstance(default, float) else str)
+            out[key] = (kind, helps.get(key, f"{key.replace('_', ' ')} (default {default!r} in {name})"))
+    return out
+
+
+def _add_generic_options(p: argparse.ArgumentParser) -> None:
+    for key, (kind, text) in sorted(_generic_params().items()):
+        p.add_argument(f"--{key.replace('_', '-')}", dest=key, type=kind, metavar=key.upper(), help=text)
+
+
 def given_options(args: argparse.Namespace) -> dict[str, Any]:
     out = {}
-    for opt, param in PARAM_OPTIONS.items():
+    options = {**PARAM_OPTIONS, **{key: key for key in _generic_params()}}
+    for opt, param in options.items():
         v = getattr(args, opt, None)
         if v is not None:
             if isinstance(v, float) and not math.isfinite(v):

@@ -1,4 +1,4 @@
-"""``construct errata``: every printed number of seed 000's tables beside its true value.
+"""``construct errata``: every printed number of the seeds' tables and worked examples beside its true value.
 
 Text output is an aligned table, one line per printed number or formula, and
 a summary of the counts per class; ``--format json`` prints the list of
@@ -10,7 +10,7 @@ records (``true`` to 8 significant digits, ``units`` to 2 decimals);
 table ...
 Tabelle 1 ... 0° ... 0.1666 ... slip ... truncated instead of rounded
 ...
-21 printed numbers: 0 agrees, 21 slip, 0 misprint; 0 formula misprints
+24 printed numbers: 0 agrees, 24 slip, 0 misprint; 0 formula misprints
 0
 """
 
@@ -20,10 +20,10 @@ import argparse
 import json
 from collections import Counter
 
-from ..errata import CLASSES, Erratum, errata
+from ..errata import CLASSES, Erratum, all_errata
 
 NAME = "errata"
-HELP = "List every printed number of seed 000's tables with its true value and a verdict (agrees/slip/misprint)."
+HELP = "List every printed number of the seeds' tables and examples with its true value and a verdict (agrees/slip/misprint)."
 
 _HEADINGS = ("table", "row", "column", "printed", "true", "units", "class", "note")
 
@@ -36,7 +36,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    entries = [e for e in errata() if args.class_ is None or e.class_ == args.class_]
+    entries = [e for e in all_errata() if args.class_ is None or e.class_ == args.class_]
     if args.format == "json":
         print(json.dumps([_json_record(e) for e in entries], ensure_ascii=False, indent=1))
     else:

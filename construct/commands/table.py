@@ -12,7 +12,7 @@ from ..tables import TABLES
 from ._common import _number, _whole
 
 NAME = "table"
-HELP = "print a table (piston-path, crank-angle, acceleration, characteristic-points)"
+HELP = "print a table (piston-path, crank-angle, acceleration, characteristic-points, mass-forces)"
 
 
 def add_arguments(p) -> None:
@@ -22,6 +22,10 @@ def add_arguments(p) -> None:
     p.add_argument("--method", default="auto")
     p.add_argument("--divisions", type=_whole, default=10, metavar="M")
     p.add_argument("--step", type=_number, default=10.0, metavar="DEG", help="angle step of the acceleration table")
+    p.add_argument("--weight", type=_number, metavar="G", help="mass-forces: weight of the reciprocating parts, kg")
+    p.add_argument("--rpm", type=_number, metavar="N", help="mass-forces: revolutions per minute")
+    p.add_argument("--crank-radius", type=_number, metavar="R", help="mass-forces: crank radius, m")
+    p.add_argument("--rod-length", type=_number, metavar="L", help="mass-forces: connecting-rod length, m")
     p.add_argument("--format", choices=("text", "csv"), default="text")
 
 
@@ -46,6 +50,13 @@ def run(args) -> int:
         if not (math.isfinite(args.step) and 0 < args.step <= 180):
             raise InvalidParameter(f"--step must be between 0 and 180 degrees, got {args.step!r}")
         cols, rows = TABLES[args.table](rod_ratios=args.rod_ratio, step=args.step)
+    elif args.table == "mass-forces":
+        missing = [f"--{k}" for k in ("weight", "rpm", "crank-radius", "rod-length")
+                   if getattr(args, k.replace("-", "_")) is None]
+        if missing:
+            raise InvalidParameter(f"table mass-forces needs {' '.join(missing)}")
+        cols, rows = TABLES[args.table](weight=args.weight, rpm=args.rpm, crank_radius=args.crank_radius,
+                                        rod_length=args.rod_length, parts=args.parts)
     else:
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args))
     sys.stdout.write(format_table(cols, rows, args.format))

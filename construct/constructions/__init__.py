@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import importlib
 import math
+
+import numpy as np
 from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping
 
@@ -65,7 +67,7 @@ class Construction:
 
 _VALIDATORS: dict[str, Callable[[Mapping[str, float]], None]] = {}
 _REGISTRY: dict[str, Construction] = {}
-_MODULES = ("crank", "inertia")
+_MODULES = ("crank", "inertia", "indicator", "piston_force")
 
 
 def register(c: Construction, validate: Callable[[Mapping[str, float]], None] | None = None) -> Construction:
@@ -105,8 +107,17 @@ def find(name: str) -> Construction | None:
     return _REGISTRY.get(name)
 
 
-def positive(name: str, value: Any) -> float:
-    """A finite, positive number, or a clear error naming the parameter."""
+def positive(name: str, value: Any) -> Any:
+    """A finite, positive number (or array of them, for a sweep), or a clear error naming the parameter."""
+    if isinstance(value, (np.ndarray, list, tuple)):
+        try:
+            arr = np.asarray(value, dtype=float)
+        except (TypeError, ValueError):
+            raise InvalidParameter(f"{name} must be numbers, got {value!r}") from None
+        bad = ~np.isfinite(arr) | ~(arr > 0.0)
+        if arr.size == 0 or bad.any():
+            raise InvalidParameter(f"{name} must be finite and positive, got {arr[bad][:3].tolist() or 'no values'}")
+        return arr
     try:
         v = float(value)
     except (TypeError, ValueError):
@@ -116,9 +127,9 @@ def positive(name: str, value: Any) -> float:
     return v
 
 
-def rod_ratio_param(value: Any) -> float:
-    """L/r: the connecting rod must be longer than the crank."""
+def rod_ratio_param(value: Any) -> Any:
+    """L/r: the connecting rod must be longer than the crank (every value of a sweep)."""
     v = positive("rod ratio L/r", value)
-    if v <= 1.0:
+    if np.any(np.asarray(v) <= 1.0):
         raise InvalidParameter(f"rod ratio L/r must be greater than 1 (the rod must be longer than the crank), got {value!r}")
     return v

@@ -38,6 +38,8 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+
+import numpy as np
 from typing import Any, Mapping, Sequence
 
 from .. import analytic
@@ -403,26 +405,30 @@ def _offset(fig: Figure, point: str, origin: str) -> float:
     return -((p[0] - o[0]) * ux + (p[1] - o[1]) * uy)
 
 
-def curve_deviation(fig: Figure, curve: str, samples: int = 721) -> float:
+def curve_deviation(fig: Figure, curve: str, per_segment: int = 64) -> float:
     """Largest vertical distance between a drawn curve and the analytic curve, in units of F/f.
 
-    The analytic curve: abscissa the exact piston path, ordinate Gl. (4_1),
-    sampled at *samples* crank angles over the forward stroke.
+    The drawn curve is sampled densely along its own parameter (*per_segment*
+    points per Bézier segment, ends included); at each sample's abscissa the
+    analytic curve has the ordinate of Gl. (4_1) at the crank angle of
+    Gl. (h) for that piston path.  numpy does all samples at once.
     """
     g = fig.replay.givens
-    r, lam = g["r"], 1.0 / g["rod_ratio"]
+    r, L = g["r"], g["rod_ratio"] * g["r"]
+    lam = r / L
     Ff = g["pressure_ratio"] * g["pressure_unit"]
-    drawn = fig.replay[curve]
     o, ux, uy, nx, ny = _axis_frame(fig)
-    worst = 0.0
-    for i in range(samples):
-        w = math.pi * i / (samples - 1)
-        x = analytic.piston_path_exact(w, r, r / lam)
-        y = Ff * analytic.inertia_two_term(w, lam)
-        px, py = o[0] + x * ux + y * nx, o[1] + x * uy + y * ny
-        # the drawn curves are graphs over the stroke line, which is horizontal in this layout
-        worst = max(worst, abs(drawn.y_at(px) - py) / Ff)
-    return worst
+    t = np.linspace(0.0, 1.0, per_segment + 1)[:, None]
+    s = 1.0 - t
+    weights = np.hstack([s ** 3, 3.0 * s * s * t, 3.0 * s * t * t, t ** 3])  # Bernstein basis
+    segs = np.array([[(p.x, p.y) for p in seg] for seg in fig.replay[curve].segments()])  # (k, 4, 2)
+    pts = np.einsum("tj,kjd->ktd", weights, segs).reshape(-1, 2)
+    x = (pts[:, 0] - o.x) * ux + (pts[:, 1] - o.y) * uy
+    y = (pts[:, 0] - o.x) * nx + (pts[:, 1] - o.y) * ny
+    x = np.clip(x, 0.0, 2.0 * r)
+    c = (x / (2.0 * r)) * (2.0 * L - x) / (x - r - L) + 1.0  # Gl. (h), as analytic.crank_angle_from_path
+    w = np.arccos(np.clip(c, -1.0, 1.0))
+    return float(np.max(np.abs(y - Ff * (np.cos(w) + lam * np.cos(2.0 * w)))) / Ff)
 
 
 # --------------------------------------------------------------------------

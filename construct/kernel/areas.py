@@ -32,13 +32,15 @@ class Area:
     """Polygon pieces with signs: the region between two graphs, or any polygons given directly.
 
     ``pieces`` is a tuple of (sign, ring), each ring a tuple of Points
-    (not repeated at the end).
+    (not repeated at the end); ``hatch_deg`` the direction the drawing
+    hatches it in (90: vertical, as the books hatch force areas; None: the
+    style's default).
     """
 
-    __slots__ = ("pieces",)
+    __slots__ = ("pieces", "hatch_deg")
     kind = "area"
 
-    def __init__(self, pieces: Iterable[tuple[int, Sequence[Point]]]) -> None:
+    def __init__(self, pieces: Iterable[tuple[int, Sequence[Point]]], hatch_deg: float | None = None) -> None:
         out = []
         for sign, ring in pieces:
             ring = tuple(ring)
@@ -48,20 +50,21 @@ class Area:
                 raise DegenerateObject(f"an area piece has sign +1 or -1, got {sign!r}")
             out.append((int(sign), ring))
         object.__setattr__(self, "pieces", tuple(out))
+        object.__setattr__(self, "hatch_deg", None if hatch_deg is None else float(hatch_deg))
 
     def __setattr__(self, name: str, value: Any) -> None:
         raise AttributeError("Area is immutable")
 
     def __reduce__(self):
-        return (Area, (self.pieces,))
+        return (Area, (self.pieces, self.hatch_deg))
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Area):
             return NotImplemented
-        return self.pieces == other.pieces
+        return self.pieces == other.pieces and self.hatch_deg == other.hatch_deg
 
     def __hash__(self) -> int:
-        return hash(("Area", self.pieces))
+        return hash(("Area", self.pieces, self.hatch_deg))
 
     def __repr__(self) -> str:
         return f"Area({len(self.pieces)} pieces, {self.area:.6g} in all)"
@@ -117,13 +120,18 @@ class Area:
                 for part in parts:
                     if part.is_empty or part.geom_type != "LineString" or part.length <= 0.0:
                         continue
+                    if poly.boundary.distance(part.interpolate(0.5, normalized=True)) <= 1e-9 * reach:
+                        continue  # a hatch line along an edge is the edge itself, already drawn
                     (x1, y1), (x2, y2) = part.coords[0], part.coords[-1]
                     out.append((x1, y1, x2, y2))
         return tuple(out)
 
     def as_json(self) -> dict[str, Any]:
-        return {"type": "area", "pieces": [{"sign": s, "points": [[p[0], p[1]] for p in ring]}
-                                           for s, ring in self.pieces]}
+        d: dict[str, Any] = {"type": "area", "pieces": [{"sign": s, "points": [[p[0], p[1]] for p in ring]}
+                                                        for s, ring in self.pieces]}
+        if self.hatch_deg is not None:
+            d["hatch_deg"] = self.hatch_deg
+        return d
 
 
 def graph_ordinate(curve: Any, x: float) -> float:
@@ -136,14 +144,34 @@ def graph_ordinate(curve: Any, x: float) -> float:
     return curve.y_at(x)
 
 
-def _vertices(curve: Any, lo: float, hi: float) -> list[float]:
+def _graph(curve: Any):
+    """A graph as drawn: None for a line (evaluated exactly), else its vertices (x ascending) as arrays."""
+    import numpy as np
+
     if isinstance(curve, Line):
-        return []
+        graph_ordinate(curve, 0.0)  # refuses a vertical line
+        return None
     pts = curve.curve_points(64) if curve.kind == "bezier" else curve.curve_points()
-    return [p[0] for p in pts if lo < p[0] < hi]
+    xs = np.array([p[0] for p in pts])
+    ys = np.array([p[1] for p in pts])
+    order = np.argsort(xs, kind="stable")
+    return xs[order], ys[order]
 
 
-def area_between(upper: Any, lower: Any, x_from: float, x_to: float) -> Area:
+def _ordinates(curve: Any, graph, xs):
+    import numpy as np
+
+    if graph is None:
+        (px, py), (qx, qy) = curve
+        return py + (xs - px) * (qy - py) / (qx - px)
+    gx, gy = graph
+    if xs[0] < gx[0] - 1e-12 * max(1.0, abs(gx[0])) or xs[-1] > gx[-1] + 1e-12 * max(1.0, abs(gx[-1])):
+        raise GeometryError(f"abscissae {xs[0]:.6g}..{xs[-1]:.6g} reach outside the drawn curve "
+                            f"({gx[0]:.6g}..{gx[-1]:.6g})")
+    return np.interp(xs, gx, gy)
+
+
+def area_between(upper: Any, lower: Any, x_from: float, x_to: float, hatch_deg: float | None = None) -> Area:
     """The region between two graphs from x_from to x_to, split where they cross.
 
     Both graphs are taken as drawn: polylines and lines exactly, French-curve
@@ -151,11 +179,16 @@ def area_between(upper: Any, lower: Any, x_from: float, x_to: float) -> Area:
     segment's sag, is far below the planimeter's).  Pieces where *upper* lies
     above *lower* have sign +1.
     """
+    import numpy as np
+
     lo, hi = min(x_from, x_to), max(x_from, x_to)
     if not hi > lo:
         raise DegenerateObject(f"an area between curves needs two different abscissae, got {x_from!r} twice")
-    xs = sorted({lo, hi, *_vertices(upper, lo, hi), *_vertices(lower, lo, hi)})
-    rows = [(x, graph_ordinate(upper, x), graph_ordinate(lower, x)) for x in xs]
+    gu, gl = _graph(upper), _graph(lower)
+    inner = [g[0][(g[0] > lo) & (g[0] < hi)] for g in (gu, gl) if g is not None]
+    xs = np.unique(np.concatenate([[lo, hi], *inner]))
+    us, ls = _ordinates(upper, gu, xs), _ordinates(lower, gl, xs)
+    rows = list(zip(xs.tolist(), us.tolist(), ls.tolist()))
     # Both graphs are straight between consecutive breakpoints: crossings are exact there.
     fine: list[tuple[float, float, float]] = [rows[0]]
     for (x0, u0, l0), (x1, u1, l1) in zip(rows, rows[1:]):
@@ -191,7 +224,7 @@ def area_between(upper: Any, lower: Any, x_from: float, x_to: float) -> Area:
             out.append((s, dedup))
     if not out:
         raise GeometryError("the two curves enclose no area between the given abscissae")
-    return Area(out)
+    return Area(out, hatch_deg)
 
 
 # --------------------------------------------------------------------------
@@ -202,7 +235,7 @@ def area_between(upper: Any, lower: Any, x_from: float, x_to: float) -> Area:
 def area_between_op(args, params, givens, refs, xp):
     """The region between two graphs, from the abscissa of one point to that of another."""
     upper, lower, a, b = args
-    return (area_between(upper, lower, a.x, b.x),)
+    return (area_between(upper, lower, a.x, b.x, params.get("hatch_deg")),)
 
 
 def planimeter_op(args, params, givens, refs, xp):

@@ -115,6 +115,12 @@ class Builder:
 
         This is the one place a step is evaluated while building; replay runs
         the same compiled entry (:func:`~construct.kernel.protocol.run_step`).
+
+
+        >>> b = Builder("demo", givens={})
+        >>> b.record("given", "given_point", (), ("A",), {"x": 1.0, "y": 2.0, "unit": None},
+        ...          "Punkt A", "point A")
+        (Point(1.0, 2.0),)
         """
         index = len(self.steps) + 1
         where = dict(step_index=index, tool=tool, op=op)
@@ -409,11 +415,12 @@ class Builder:
                     de or f"Parabel an {e}{d} und {d}{f}", en or f"parabola touching {e}{d} and {d}{f}", role=role)
         return name
 
-    def area_between(self, name: str, upper: str, lower: str, start: str, end: str, *, de: str | None = None,
-                     en: str | None = None, role: str = "result") -> str:
+    def area_between(self, name: str, upper: str, lower: str, start: str, end: str, *, hatch_deg: float | None = None,
+                     de: str | None = None, en: str | None = None, role: str = "result") -> str:
         """The region between two graphs over the x axis, from the abscissa of *start* to that of *end*.
 
         Split where the graphs cross; pieces where *upper* is above carry the sign +1.
+        *hatch_deg* is the direction of its hatching (90: vertical, as the books hatch force areas).
 
         >>> b = Builder("demo", givens={})
         >>> for n, (x, y) in zip("ABCD", ((0, 1), (2, 1), (0, 0), (2, 0))):
@@ -422,7 +429,8 @@ class Builder:
         >>> b[b.area_between("F", "top", "bottom", "A", "B")].area
         2.0
         """
-        self.record("intersect", "area_between", (upper, lower, start, end), (name,), {},
+        self.record("intersect", "area_between", (upper, lower, start, end), (name,),
+                    {} if hatch_deg is None else {"hatch_deg": float(hatch_deg)},
                     de or f"Fläche zwischen {upper} und {lower}", en or f"area between {upper} and {lower}", role=role)
         return name
 
@@ -455,7 +463,15 @@ class Builder:
 
     # -- composite steps -------------------------------------------------------
     def bisect_angle(self, name: str, vertex: str, a: str, b: str) -> str:
-        """The bisector of the angle a-vertex-b (less than two right angles)."""
+        """The bisector of the angle a-vertex-b (less than two right angles).
+
+        >>> b = Builder("demo", givens={})
+        >>> for n, (x, y) in zip("ABC", ((0, 0), (4, 0), (0, 3))):
+        ...     _ = b.given_point(n, x, y)
+        >>> w = b[b.bisect_angle("w", "A", "B", "C")]
+        >>> round(w.direction()[0] - w.direction()[1], 12)   # 45 degrees
+        0.0
+        """
         with self.group(f"angle {a}{vertex}{b} bisected", f"Winkel {a}{vertex}{b} halbiert"):
             k = self.circle_through(self.fresh(f"{name}.k"), vertex, a)
             arm = self.line(self.fresh(f"{name}.g"), vertex, b)
@@ -466,7 +482,15 @@ class Builder:
             return self.line(name, vertex, s, de=f"Winkelhalbierende {name}", en=f"angle bisector {name}")
 
     def perpendicular_bisector(self, name: str, a: str, b: str) -> str:
-        """The perpendicular bisector of ab: two equal circles and the line through their crossings."""
+        """The perpendicular bisector of ab: two equal circles and the line through their crossings.
+
+        >>> b = Builder("demo", givens={})
+        >>> for n, (x, y) in zip("ABC", ((0, 0), (4, 0), (0, 3))):
+        ...     _ = b.given_point(n, x, y)
+        >>> m = b[b.perpendicular_bisector("m", "A", "B")]
+        >>> round(m.p.x, 12), round(m.q.x, 12)
+        (2.0, 2.0)
+        """
         with self.group(f"perpendicular bisector of {a}{b}", f"Mittelsenkrechte von {a}{b}"):
             ca = self.circle_through(self.fresh(f"{name}.k"), a, b)
             cb = self.circle_through(self.fresh(f"{name}.k"), b, a)
@@ -476,7 +500,15 @@ class Builder:
                              en=f"perpendicular bisector {name} of {a}{b}")
 
     def midpoint(self, name: str, a: str, b: str, *, through: str | None = None) -> str:
-        """The midpoint of ab (``through``: an existing line ab, else one is drawn)."""
+        """The midpoint of ab (``through``: an existing line ab, else one is drawn).
+
+        >>> b = Builder("demo", givens={})
+        >>> for n, (x, y) in zip("ABC", ((0, 0), (4, 0), (0, 3))):
+        ...     _ = b.given_point(n, x, y)
+        >>> m = b[b.midpoint("M", "B", "C")]
+        >>> round(m.x, 12), round(m.y, 12)
+        (2.0, 1.5)
+        """
         with self.group(f"midpoint of {a}{b}", f"Mitte von {a}{b}"):
             bis = self.perpendicular_bisector(f"{name}.m", a, b)
             ab = through or self.line(self.fresh(f"{name}.g"), a, b)
@@ -488,6 +520,14 @@ class Builder:
 
         A circle about p through the other point cuts the line again at its
         mirror image; the perpendicular bisector of those two is the perpendicular.
+
+        >>> b = Builder("demo", givens={})
+        >>> for n, (x, y) in zip("ABC", ((0, 0), (4, 0), (0, 3))):
+        ...     _ = b.given_point(n, x, y)
+        >>> _ = b.line("AB", "A", "B")
+        >>> pp = b[b.erect_perpendicular("p", "A", "AB", "B")]
+        >>> round(pp.p.x, 12), round(pp.q.x, 12)
+        (0.0, 0.0)
         """
         with self.group(f"perpendicular at {p}", f"Senkrechte in {p}"):
             k = self.circle_through(self.fresh(f"{name}.k"), p, on_line_point)
@@ -501,6 +541,14 @@ class Builder:
         circles about that point and about Y, both through p, meet again at the
         mirror image of p; p and its mirror image give the perpendicular.
         Returns (perpendicular, foot).  p must not lie on the line.
+
+        >>> b = Builder("demo", givens={})
+        >>> for n, (x, y) in zip("ABC", ((0, 0), (4, 0), (0, 3))):
+        ...     _ = b.given_point(n, x, y)
+        >>> _ = b.line("AB", "A", "B")
+        >>> perp, foot = b.drop_perpendicular("p", "C", "AB", "A", "B")
+        >>> b[foot]
+        Point(0.0, 0.0)
         """
         pa, pb = self[p].distance(self[a]), self[p].distance(self[b])
         far = a if pa >= pb else b  # read off the figure once; stored in the steps
@@ -521,6 +569,13 @@ class Builder:
         Q lies at distance |ab| from p and |ap| from b, on the other side of
         the diagonal pb than a; that side is read off the figure once, when
         the step is recorded, and stored as the step's rule.
+
+        >>> b = Builder("demo", givens={})
+        >>> for n, (x, y) in zip("ABC", ((0, 0), (4, 0), (0, 3))):
+        ...     _ = b.given_point(n, x, y)
+        >>> par = b[b.parallel_through("q", "C", "A", "B")]
+        >>> round(par.q.y, 12)
+        3.0
         """
         with self.group(f"parallel to {a}{b} through {p}", f"Parallele zu {a}{b} durch {p}"):
             k1 = self.circle_segment(self.fresh(f"{name}.k"), p, a, b)
@@ -543,6 +598,12 @@ class Builder:
         The step is ab itself for up to 4 parts; for more, ab halved often
         enough that the n marks reach about as far as ab again -- a draftsman
         picks a short opening, else ten parts would need a ray nine times ab.
+
+        >>> b = Builder("demo", givens={})
+        >>> for n, (x, y) in zip("ABC", ((0, 0), (4, 0), (0, 3))):
+        ...     _ = b.given_point(n, x, y)
+        >>> [round(b[p].x, 12) for p in b.divide_segment("T", "A", "B", 4)]
+        [1.0, 2.0, 3.0]
         """
         if not isinstance(n, int) or n < 2:
             raise InvalidParameter(f"divide_segment needs n >= 2 parts, got {n!r}")
@@ -592,7 +653,16 @@ class Builder:
         return marks
 
     def bisect_arc(self, name: str, center: str, a: str, b: str, circle: str) -> str:
-        """The midpoint of the arc ab (less than a semicircle) of *circle* about *center*."""
+        """The midpoint of the arc ab (less than a semicircle) of *circle* about *center*.
+
+        >>> b = Builder("demo", givens={})
+        >>> for n, (x, y) in zip("OAB", ((0, 0), (1, 0), (0, 1))):
+        ...     _ = b.given_point(n, x, y)
+        >>> _ = b.circle_through("k", "O", "A")
+        >>> m = b[b.bisect_arc("M", "O", "A", "B", "k")]
+        >>> round(m.x, 12) == round(m.y, 12) == round(0.5 ** 0.5, 12)
+        True
+        """
         with self.group(f"arc {a}{b} bisected", f"Bogen {a}{b} halbiert"):
             ka = self.circle_through(self.fresh(f"{name}.k"), a, b)
             kb = self.circle_through(self.fresh(f"{name}.k"), b, a)
@@ -602,6 +672,15 @@ class Builder:
                                   en=f"midpoint {name} of arc {a}{b}")
 
     def copy_arc(self, name: str, circle: str, start: str, a: str, b: str, *, away_from: str) -> str:
-        """Step the chord ab off on *circle* from *start*, away from *away_from* (copying an arc)."""
+        """Step the chord ab off on *circle* from *start*, away from *away_from* (copying an arc).
+
+        >>> b = Builder("demo", givens={})
+        >>> for n, (x, y) in zip("OAB", ((0, 0), (1, 0), (0, 1))):
+        ...     _ = b.given_point(n, x, y)
+        >>> _ = b.circle_through("k", "O", "A")
+        >>> c = b[b.copy_arc("C", "k", "B", "A", "B", away_from="A")]   # a quarter turn on from B
+        >>> round(c.x, 12), round(abs(c.y), 12)
+        (-1.0, 0.0)
+        """
         k = self.circle_segment(self.fresh(f"{name}.k"), start, a, b)
         return self.intersect(name, circle, k, rule=("farther", away_from))

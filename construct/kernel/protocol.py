@@ -34,7 +34,7 @@ from .areas import Area
 from .curves import BezierCurve, Polyline
 from .errors import (ConstructError, InvalidParameter, MissingGiven, ProtocolFormatError, RuleError, StepError,
                      UnknownObject, WrongInput)
-from .geometry import SCALAR, Circle, Length, Line, Point, Sweep, _Array
+from .geometry import SCALAR, Circle, Length, Line, Point, Sweep, _Array, take
 from .ops import OPS, elementwise
 from .rules import as_rule
 
@@ -314,6 +314,16 @@ class Replay(Mapping[str, Any]):
     def __repr__(self) -> str:
         kind = f"sweep of {self.size}" if self.size else "replay"
         return f"<Replay ({kind}) of {self.protocol.construction!r}: {len(self._objects)} objects>"
+
+    def take(self, i: int) -> "Replay":
+        """Set *i* of a sweep as a plain replay (a plain replay is its own only set)."""
+        if not self.size:
+            return self
+        if not -self.size <= i < self.size:
+            raise IndexError(f"sweep of {self.size} has no set {i}")
+        i %= self.size
+        objects = {name: take(v, i) for name, v in self._objects.items()}
+        return Replay(self.protocol, objects, {k: take(v, i) for k, v in self._givens.items()})
 
     def made_by(self) -> dict[str, Step]:
         """The step that made each object."""

@@ -11,4 +11,4 @@ prints; :mod:`construct.errata` compares them with the true values.
 
 from __future__ import annotations
 
-__all__ = ["seed000"]
+__all__ = ["seed000", "seed001"]

@@ -38,7 +38,7 @@ import functools
 import re
 from typing import Mapping, Sequence
 
-__all__ = ["Reader", "book_symbols", "equation", "tag"]
+__all__ = ["Reader", "book_symbols", "equation", "subscripts", "tag"]
 
 #: An identifier as the constructions write object names: letters, digits, dots inside.
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*")
@@ -74,6 +74,15 @@ def tag(name: str, letters: "frozenset[str] | set[str]" = frozenset()) -> str:
         if len(parts) > 1:
             return parts[-2].rsplit(".", 1)[-1] + last
     return last
+
+
+def subscripts(text: str) -> str:
+    """Subscripts written with an underscore: digits as subscript digits, letters run on (p_ü -> pü).
+
+    >>> subscripts("F·p_ü, x_1, q_max")
+    'F·pü, x₁, qmax'
+    """
+    return re.sub(r"(?<=[^\W_])_([^\W_]+)", lambda m: m.group(1).translate(_SUB), text)
 
 
 def equation(text: str) -> str:
@@ -121,7 +130,8 @@ class Reader:
         if label:
             return label
         parts = name.rsplit(".", 1)
-        other = self.objects.get(parts[-1]) if len(parts) == 2 else None
+        # the helper of a lettered point, named for it (X.c45: the piston position of 45°): X(45°)
+        other = self.objects.get(parts[-1]) if len(parts) == 2 and len(parts[0].rsplit(".", 1)[-1]) == 1 else None
         if other is not None and other[1]:
             return f"{parts[0].rsplit('.', 1)[-1]}({other[1]})"  # X.c45, the piston position of 45°: X(45°)
         return tag(name, self.letters)
@@ -223,7 +233,7 @@ class Reader:
             text = text.replace("von Kreis um", "vom Kreis um").replace("und Kreis um", "und dem Kreis um")
         else:
             text = text.replace(" the the ", " the ")
-        return book_symbols(text) if lang == "en" else equation(text)
+        return subscripts(book_symbols(text) if lang == "en" else equation(text))
 
     @staticmethod
     def _names_slot(text: str, start: int, end: int) -> bool:

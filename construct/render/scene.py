@@ -56,6 +56,8 @@ class Mark:
     group: tuple[str, ...] = ()
     #: A line weight or pattern from the plate's description (heavy, thin, dashdot, dashed), "" = by role.
     look: str = ""
+    #: Areas: the direction of their hatching in degrees (None: the style's).
+    hatch: float | None = None
 
 
 @dataclass(frozen=True)
@@ -404,7 +406,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
             elif hasattr(obj, "rings"):  # an Area: one mark per piece, each hatched
                 for j, ring in enumerate(obj.rings()):
                     marks.append(Mark(mid if j == 0 else f"{mid}-{j}", kind="area",
-                                      geom=tuple((p[0], p[1]) for p in ring), **common))
+                                      geom=tuple((p[0], p[1]) for p in ring), hatch=obj.hatch_deg, **common))
             elif hasattr(obj, "curve_points"):
                 marks.append(Mark(mid, kind="curve", geom=tuple((p[0], p[1]) for p in obj.curve_points()), **common))
     breaks: tuple[tuple[float, float, float], ...] = ()

@@ -379,7 +379,7 @@ class Drawing:
         elif m.kind == "area":
             yield "areas", f.path(d=polygon_path(vp, g), class_=f"area {cls}", **ids)
             if st.hatch:
-                d = hatch_path(vp, g, st.hatch_spacing)
+                d = hatch_path(vp, g, st.hatch_spacing, *(() if m.hatch is None else (m.hatch,)))
                 if d:
                     hid = {"id": f"{mid}-hatch"} if mid else {}
                     yield "areas", f.path(d=d, class_="hatch", **hid)

@@ -1,0 +1,519 @@
+"""The piston-force line with the mass forces ("Einfluß der Massenkräfte"), seed 001, Abb. 1054/1055.
+
+Seed 001 draws the over-pressure p_ü on the high-pressure piston over the
+stroke (Abb. 1054: cover-side steam line less the crank-side back pressure at
+the same piston position), carries it to the crank positions of a semicircle
+over the stroke divided "vorteilhafterweise in 9 oder 18 Teile" through the
+connecting-rod arcs, multiplies by the piston area, P = F p_ü (297), and
+superposes the mass forces of eq. (298),
+
+    P_b = (G/g)(v^2/R)(cos phi ± (R/L) cos 2 phi),
+
+"welche während der Beschleunigungszeit von den Kolbenkräften aufgebracht
+werden müssen, während der Verzögerungszeit aber wieder frei werden"; the
+free forces are hatched vertically (Abb. 1055); J is the pressure change.
+
+The construction, on one sheet:
+
+* the crank circle over the stroke (drawing scale ``scale`` per metre), the
+  semicircle divided into ``parts``, the rod arcs to the piston positions X_k;
+* on the stroke line as absolute-zero line the idealised indicator diagram
+  (module :mod:`construct.constructions.indicator`, Baumann's model) drawn
+  in the force scale -- 1 at is drawn as F times ``force_unit`` (drawn length
+  per kg), so every over-pressure reads directly as piston force;
+* below, on a parallel base line (the "Kolbenweglinie" of Abb. 1055), at each
+  X_k the piston force K_k (the segment back pressure -> steam line carried
+  with the compass, sign kept) and the mass force M_k constructed as the
+  inertia curve is (:mod:`construct.constructions.inertia`: r cos phi, the
+  doubled angle, r/L by the proportional angle, then scaled to
+  (G/g) omega^2 R in the force scale);
+* the lines drawn through the points (the piston-force line in three pieces, its
+  corners at the cut-off and the start of compression), the free forces between it
+  and the mass-force line as hatched areas, the mass-force areas above and below the
+  base read with the planimeter, and J, the zero of p_ü: the steam and compression hyperbolas cross where
+  the distance between the clearance corners is divided in the ratio of the
+  two rectangles (P + P0)(s1 + s0) : P0 (s3 + s0) -- a fourth proportional
+  and the intercept theorem.
+
+The mass forces and the area balance use the book's numbers (Tafel I: G = 830 kg
+high-pressure side, n = 50/min, R = 0.4 m, L = 2.0 m; piston area the mean of
+F' and F'' from the diameters 45 cm, 7.5 cm and 10 cm).  Tafel I's indicator
+diagram is not in the seed: the over-pressure line is Baumann's idealised
+diagram with an illustrative high-pressure setting (:data:`HP_DIAGRAM`).
+
+>>> fig = PISTON_FORCE.figure(parts=6)
+>>> round(mass_force(fig, 0), 3)        # P_b at phi = 0: (G/g) omega^2 R (1 + R/L); the book prints 1115
+1113.391
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping
+
+from .. import analytic
+from ..checks import EUCLIDEAN_TOLERANCE, Check
+from ..errors import InvalidParameter
+from ..kernel.division import check_parts, divide_semicircle
+from ..kernel.instruments import Builder
+from ..kernel.proportional import fourth_proportional, scale_line, vertex_on
+from ..kernel.protocol import Caption
+from . import Construction, Figure, positive, register
+from .crank import angle_tolerance, crank_angle, point_name, rod_arcs
+from .indicator import back_pressure as model_back
+from .indicator import indicator_frame, indicator_givens, pressures_at, square
+from .indicator import steam_pressure as model_steam
+from .inertia import _Ctx, _kind, _ordinate_line, _value
+
+__all__ = ["PISTON_FORCE", "TAFEL_I", "HP_DIAGRAM", "GRAVITY", "piston_area_mean", "build_piston_force",
+           "piston_force_checks", "mass_force", "piston_force", "abscissa", "mass_force_rows", "area_balance",
+           "mass_force_scale", "j_abscissa"]
+
+#: g as the book uses it ("830/9,81").
+GRAVITY = 9.81
+
+
+def piston_area_mean(bore_cm: float = 45.0, tail_rod_cm: float = 7.5, piston_rod_cm: float = 10.0) -> float:
+    """F = (F' + F'')/2 in cm^2: cover side less the 7.5 cm tail rod, crank side less the 10 cm piston rod.
+
+    >>> round(piston_area_mean(), 3)    # (1546.253 + 1511.892) / 2
+    1529.072
+    """
+    f1 = math.pi / 4.0 * (bore_cm ** 2 - tail_rod_cm ** 2)
+    f2 = math.pi / 4.0 * (bore_cm ** 2 - piston_rod_cm ** 2)
+    return (f1 + f2) / 2.0
+
+
+#: The book's example, Tafel I, high-pressure side (seed 001).
+TAFEL_I = {"weight": 830.0, "rpm": 50.0, "crank_radius": 0.4, "rod_length": 2.0, "piston_area": piston_area_mean()}
+
+#: An idealised high-pressure diagram (Baumann's model) standing in for Tafel I's, which the seed does not
+#: print: admission 7 at over a receiver back pressure of 2 at absolute, 30 % filling, 8 % clearance,
+#: 15 % compression -- enough compression for the pressure change J before the dead centre, as in Abb. 1055.
+HP_DIAGRAM = {"filling": 0.30, "clearance": 0.08, "admission": 7.0, "back_pressure": 2.0, "compression": 0.15}
+
+
+def mass_force_scale(g: Mapping[str, float]) -> float:
+    """(G/g) v^2 / R = (G/g) omega^2 R in kg, omega = pi n / 30."""
+    return g["weight"] / GRAVITY * (math.pi * g["rpm"] / 30.0) ** 2 * g["crank_radius"]
+
+
+def _givens(*, weight: Any, rpm: Any, crank_radius: Any, rod_length: Any, piston_area: Any, filling: Any,
+            clearance: Any, admission: Any, back_pressure: Any, compression: Any, scale: Any,
+            force_unit: Any) -> dict[str, float]:
+    out = {"weight": positive("weight G of the reciprocating parts (kg)", weight),
+           "rpm": positive("revolutions per minute n", rpm),
+           "crank_radius": positive("crank radius R (m)", crank_radius),
+           "rod_length": positive("connecting-rod length L (m)", rod_length),
+           "piston_area": positive("piston area F (cm^2)", piston_area),
+           "scale": positive("drawing scale (drawn length per metre)", scale),
+           "force_unit": positive("force scale (drawn length per kg)", force_unit)}
+    if out["rod_length"] <= out["crank_radius"]:
+        raise InvalidParameter(f"rod length L = {rod_length!r} m must exceed the crank radius R = {crank_radius!r} m")
+    # the indicator diagram's pressure unit is F * force_unit: checked there as a product of positives
+    out.update(indicator_givens(filling, clearance, admission, back_pressure, compression, 1.0))
+    del out["pressure_unit"]
+    return out
+
+
+def _validate(g: Mapping[str, float]) -> None:
+    _givens(**{k: g[k] for k in ("weight", "rpm", "crank_radius", "rod_length", "piston_area", "filling",
+                                 "clearance", "admission", "back_pressure", "compression", "scale", "force_unit")})
+
+
+# --------------------------------------------------------------------------
+# Building.
+# --------------------------------------------------------------------------
+
+#: What Abb. 1055 shows: the base line, the piston-force line, the mass-force curve, the free forces
+#: hatched vertically, J; the ordinates' feet as the stroke's division.
+PLATE = (r"fbase", r"F\d+", r"K\d+|Ks[12]", r"M\d+", r"ord\d+", r"force[abc]", r"mass", r"J", r"free\.[abc]")
+
+
+def _frame(b: Builder) -> dict[str, str]:
+    """As :func:`construct.constructions.crank.build_frame`, with r and L from metres and the drawing scale."""
+    with b.group("crank circle and dead centres", "Kurbelkreis und Totpunkte"):
+        O = b.given_point("O", 0.0, 0.0, de="Kurbelmittelpunkt O", en="crank centre O")
+        axis = b.given_line("axis", O, angle_deg=0.0, de="Kolbenweglinie (Nulllinie des Dampfdiagramms)",
+                            en="piston-path line (zero line of the steam diagram)")
+        r = b.given_length("r", product=("crank_radius", "scale"), de="Kurbelhalbmesser R", en="crank radius R")
+        L = b.given_length("L", product=("rod_length", "scale"), de="Schubstangenlänge L", en="connecting-rod length L")
+        k = b.circle_radius("crank", O, r, de="Kurbelkreis (Halbkreis über dem Hub)", en="crank circle over the stroke")
+        D0 = b.intersect("D0", axis, k, rule=("toward", O, None, -1.0, 0.0), role="result",
+                         de="Totpunkt auf der Deckelseite (Hubanfang)", en="head-end dead centre (start of stroke)",
+                         labels={"D0": "A"})
+        D1 = b.intersect("D1", axis, k, rule=("toward", O, None, 1.0, 0.0), role="result",
+                         de="Totpunkt auf der Kurbelseite (Hubende)", en="crank-end dead centre (end of stroke)",
+                         labels={"D1": "B"})
+    return {"O": O, "axis": axis, "r": r, "L": L, "circle": k, "D0": D0, "D1": D1}
+
+
+def _mass_setup(b: Builder, f: Mapping[str, str]) -> _Ctx:
+    """The proportional angle of the inertia curve, its F/f line replaced by (G/g) omega^2 R in the force scale."""
+    factor = (math.pi / 30.0) ** 2 / GRAVITY
+    Ff = b.given_length("Ff", product=("weight", "rpm", "rpm", "crank_radius", "force_unit"), factor=factor,
+                        de="(G/g)·ω²·R im Kraftmaßstab", en="(G/g) omega^2 R in the force scale")
+    with b.group("proportional angle for R/L and (G/g) omega^2 R", "Proportionswinkel für R/L und (G/g)·ω²·R"):
+        vert = b.perpendicular_bisector("vert", f["D0"], f["D1"])
+        top = b.intersect("top", vert, f["circle"], rule=("toward", f["O"], None, 0.0, 1.0),
+                          de="Kurbelstellung φ = 90°", en="crank at 90 degrees")
+        angle = vertex_on(b, "S", origin=f["O"], leg=vert, length=f["L"], rule=("toward", f["O"], None, 0.0, -1.0),
+                          de="Scheitel S des Proportionswinkels: SO = L", en="vertex S of the proportional angle: SO = L")
+        gr = scale_line(b, angle, "gr", length=f["r"], toward=("toward", "S", f["O"]),
+                        de="Marke R von S aus: Maßlinie für R/L", en="mark R from S: scale line for R/L")
+        gf = scale_line(b, angle, "gf", length=Ff, toward=("toward", "S", f["O"]),
+                        de="Marke (G/g)ω²R von S aus", en="mark (G/g) omega^2 R from S")
+    return _Ctx(f["O"], f["axis"], f["circle"], f["D0"], f["D1"], f["r"], f["L"], Ff, vert, top, angle, gr, gf)
+
+
+def _carry(b: Builder, name: str, foot: str, ordinate: str, a: str, z: str, *, de: str, en: str,
+           role: str = "result", labels: Mapping[str, str] | None = None) -> str:
+    """Carry the segment a -> z (on a line parallel to *ordinate*) to *foot* on the ordinate, direction kept."""
+    k = b.circle_segment(f"{name}.k", foot, a, z, de="mit dem Zirkel übertragen", en="carried with the compass")
+    return b.intersect(name, ordinate, k, rule=("toward", a, z), role=role, de=de, en=en, labels=labels)
+
+
+def build_piston_force(*, parts: int, method: str, **values: Any) -> Figure:
+    givens = _givens(**values)
+    used = check_parts(parts, method)
+    b = Builder("piston-force", givens, {"parts": parts, "method": used, "requested_method": method,
+                                         "filling": givens["filling"], "compression": givens["compression"],
+                                         "plate": PLATE})
+    f = _frame(b)
+    c = _mass_setup(b, f)
+    n = parts
+    points = divide_semicircle(b, O=f["O"], D0=f["D0"], D1=f["D1"], circle=f["circle"], axis=f["axis"],
+                               n=n, method=used)
+    for k, p in enumerate(points):
+        b.set_label(p, str(k))
+    rod_arcs(b, f, points)
+    d = indicator_frame(b, base=f["axis"], head=f["D0"], crank=f["D1"], stroke=("crank_radius", "scale"),
+                        prefix="ind.", pressure_scale=("piston_area", "force_unit"))
+    with b.group("base line of the force diagram (Abb. 1055)", "Grundlinie des Kraftdiagramms (Abb. 1055)"):
+        Of = b.given_point("Of", 0.0, -0.8, unit="scale", de="Punkt der Kolbenweglinie des Kraftdiagramms",
+                           en="point of the force diagram's piston-path line")
+        fbase = b.parallel_through("fbase", Of, f["D0"], f["D1"], role="result")
+    ords: list[tuple[str, str]] = []
+    with b.group(f"ordinates at all {n + 1} piston positions", f"Ordinaten an allen {n + 1} Kolbenstellungen"):
+        for k in range(n + 1):
+            o = _ordinate_line(b, c, f"ord{k}", f"X{k}")
+            ords.append((str(k), o))
+    # the cut-off and the start of compression: where the force line has its corners
+    corners = [("s1", d.cutoff_ordinate), ("s2", d.compression_ordinate)]
+    with b.group("piston forces from the steam diagram", "Kolbenkräfte aus dem Dampfdiagramm"):
+        for tag, o in ords + corners:
+            with b.group(f"piston force at {tag}", f"Kolbenkraft bei {tag}"):
+                pr = pressures_at(b, d, o, tag)
+                foot = b.intersect(f"F{tag}", o, fbase, rule=("only",), de=f"Fußpunkt F{tag}", en=f"foot F{tag}",
+                                   role="result" if tag.isdigit() else "construction")
+                _carry(b, f"K{tag}", foot, o, pr["back"], pr["steam"],
+                       de=f"Kolbenkraft K{tag} = F·p_ü (Gegendruck bis Dampflinie)",
+                       en=f"piston force K{tag} = F p_ü (back pressure to steam line)")
+    with b.group("mass forces (eq. 298) at all piston positions", "Massenkräfte (Gl. 298) an allen Kolbenstellungen"):
+        for k, P in enumerate(points):
+            kind = _kind(k, n)
+            dc_p = c.D0 if 2 * k <= n else c.D1
+            dc_2 = c.D0 if (4 * k < n or 4 * k > 3 * n) else c.D1
+            with b.group(f"mass force at point {k}", f"Massenkraft zu Punkt {k}"):
+                V = _value(b, c, str(k), P, kind, dc_p, dc_2)
+                k_ = b.circle_segment(f"M{k}.k", f"F{k}", c.gf.origin, V, de="Massenkraft mit dem Zirkel übertragen",
+                                      en="mass force carried with the compass")
+                b.intersect(f"M{k}", f"ord{k}", k_, rule=("left", V, c.gf.origin), role="result",
+                            de=f"Massenkraft M{k} (oben: Beschleunigung)", en=f"mass force M{k} (up: acceleration)")
+    _pressure_change(b, d, fbase)
+    _curves(b, n, fbase)
+    proto = b.protocol()
+    return Figure(proto, proto.replay(givens))
+
+
+def _pressure_change(b: Builder, d, fbase: str) -> None:
+    """J: the steam and compression hyperbolas cross where Z0 J : J Z1 = (s1 + s0) : P0 (s3 + s0)/(P + P0)."""
+    with b.group("pressure change J", "Druckwechsel J"):
+        h1 = b.length_of("J.h1", d.head, "ind.A0", de="P + P0", en="P + P0")
+        h2 = b.length_of("J.h2", d.head, "ind.B0", de="P0", en="P0")
+        a2 = b.length_of("J.a2", "ind.S2", d.Z1, de="s3 + s0", en="s3 + s0")
+        foot, top = fourth_proportional(b, "J.m", vertex=d.Z1, leg_point=d.crank, a=h1, b_=h2, c=a2)
+        m = b.length_of("J.m'", foot, top, de="P0 (s3 + s0)/(P + P0)", en="P0 (s3 + s0)/(P + P0)")
+        k = b.circle_through("J.k1", d.Z0, "ind.S1", de="s1 + s0 auf der Linie des schädlichen Raums",
+                             en="s1 + s0 on the clearance line")
+        M1 = b.intersect("J.M1", "ind.clear0", k, rule=_up(d), de="s1 + s0 nach oben", en="s1 + s0 upwards")
+        k = b.circle_radius("J.k2", d.Z1, m, de="m′ auf der anderen Linie nach unten", en="m' downwards on the other")
+        M2 = b.intersect("J.M2", "ind.clear1", k, rule=_down(d), de="m′ nach unten", en="m' downwards")
+        g = b.line("J.g", M1, M2, de="Verbindungslinie teilt Z Z′ im Verhältnis", en="the joining line divides Z Z' in the ratio")
+        Jx = b.intersect("Jx", g, d.base, rule=("only",), role="result", labels={"Jx": "J′"},
+                         de="Schnitt der Expansions- und Kompressionslinie", en="where expansion and compression lines cross")
+        o = square(b, "J.o", Jx, d.base, d.opening)
+        b.intersect("J", o, fbase, rule=("only",), role="result", labels={"J": "J"},
+                    de="Druckwechsel J: Kolbenkraft null", en="pressure change J: piston force zero")
+
+
+def _up(d) -> tuple[str, str, str]:
+    return ("left", d.head, d.crank)
+
+
+def _down(d) -> tuple[str, str, str]:
+    return ("right", d.head, d.crank)
+
+
+def _curves(b: Builder, n: int, fbase: str) -> None:
+    """The lines drawn through the points: piston force in three pieces (its corners at s1 and s2), mass forces."""
+    xs = {k: b[f"X{k}"][0] for k in range(n + 1)}
+    x1, x2 = b["Ks1"][0], b["Ks2"][0]
+    eps = 1e-9 * abs(xs[n] - xs[0])
+    with b.group("the lines drawn through the points", "Die Linien durch die Punkte gezogen"):
+        first = [f"K{k}" for k in range(n + 1) if xs[k] < x1 - eps] + ["Ks1"]
+        mid = ["Ks1"] + [f"K{k}" for k in range(n + 1) if x1 + eps < xs[k] < x2 - eps] + ["Ks2"]
+        last = ["Ks2"] + [f"K{k}" for k in range(n + 1) if xs[k] > x2 + eps]
+        if x2 <= x1 + eps:
+            raise InvalidParameter("the compression must begin after the cut-off (s1 + s3 < s) for this figure")
+        b.line("forcea", first[0], first[-1], role="result", de="Kolbenkraft während der Füllung: Gerade",
+               en="piston force during admission: a straight line")
+        b.french_curve("forceb", fbase, mid, {}, de="Kolbenkraftlinie während der Expansion",
+                     en="piston-force line during expansion")
+        b.french_curve("forcec", fbase, last, {}, de="Kolbenkraftlinie während der Kompression",
+                     en="piston-force line during compression")
+        b.french_curve("mass", fbase, [f"M{k}" for k in range(n + 1)], {},
+                     de="Linie der Massenkräfte", en="line of the mass forces")
+    with b.group("free forces hatched vertically; the mass-force areas", "Freie Kräfte senkrecht gestrichelt; Massenkraftflächen"):
+        for piece, (a, z) in zip(("forcea", "forceb", "forcec"), ((first[0], first[-1]), (mid[0], mid[-1]),
+                                                                 (last[0], last[-1]))):
+            b.area_between(f"free.{piece[-1]}", piece, "mass", a, z, role="result",
+                           de="freie Kräfte zwischen Kolbenkraft- und Massenkraftlinie",
+                           en="free forces between the piston-force line and the mass-force line")
+        b.area_between("massarea", "mass", fbase, "M0", f"M{n}", role="construction",
+                       de="Beschleunigungsfläche über, Verzögerungsfläche unter der Kolbenweglinie",
+                       en="acceleration area above, deceleration area below the piston-path line")
+        b.planimeter("balance", "massarea", de="mit dem Planimeter umfahren: Beschleunigungs- weniger Verzögerungsfläche",
+                     en="planimeter round it: acceleration less deceleration area")
+
+
+# --------------------------------------------------------------------------
+# Measurements.
+# --------------------------------------------------------------------------
+
+
+def _base_frame(fig: Figure) -> tuple[float, float, float, float, float, float]:
+    (ax, ay), (bx, by) = fig.replay["F0"], fig.replay[f"F{fig.params['parts']}"]
+    s = math.hypot(bx - ax, by - ay)
+    return ax, ay, (bx - ax) / s, (by - ay) / s, s, fig.replay.givens["force_unit"]
+
+
+def abscissa(fig: Figure, point: str) -> float:
+    """Piston path of a point as a fraction of the stroke, measured along the force diagram's base."""
+    ax, ay, ux, uy, s, _ = _base_frame(fig)
+    p = fig.replay[point]
+    return ((p[0] - ax) * ux + (p[1] - ay) * uy) / s
+
+
+def _force(fig: Figure, point: str) -> float:
+    ax, ay, ux, uy, _, unit = _base_frame(fig)
+    p = fig.replay[point]
+    return ((p[0] - ax) * -uy + (p[1] - ay) * ux) / unit
+
+
+def mass_force(fig: Figure, k: int) -> float:
+    """P_b at division point k in kg, read off the force diagram (up = the masses are accelerated)."""
+    return _force(fig, f"M{k}")
+
+
+def piston_force(fig: Figure, tag: int | str) -> float:
+    """F p_ü in kg at division point k (or "s1", "s2"), read off the force diagram."""
+    return _force(fig, f"K{tag}")
+
+
+def j_abscissa(g: Mapping[str, float]) -> float:
+    """Where (P + P0)(s1 + s0)/(x + s0) = P0 (s3 + s0)/(s - x + s0), x as a fraction of the stroke."""
+    c1 = (g["admission"] + g["back_pressure"]) * (g["filling"] + g["clearance"])
+    c2 = g["back_pressure"] * (g["compression"] + g["clearance"])
+    return (1.0 + 2.0 * g["clearance"]) * c1 / (c1 + c2) - g["clearance"]
+
+
+def _two_term(w: float, lam: float) -> float:
+    return math.cos(w) + lam * math.cos(2.0 * w)
+
+
+def _exact_accel(w: float, lam: float) -> float:
+    """Exact piston acceleration over omega^2 R for the finite rod (+ = towards the crank end)."""
+    return analytic.inertia_exact(w, lam)
+
+
+def _exact_path(w: float, lam: float) -> float:
+    """Piston path over the stroke (exact)."""
+    return (1.0 - math.cos(w) + (1.0 - math.sqrt(1.0 - lam * lam * math.sin(w) ** 2)) / lam) / 2.0
+
+
+def _dx_dw(w: float, lam: float) -> float:
+    s = math.sin(w)
+    return (s + lam * s * math.cos(w) / math.sqrt(1.0 - lam * lam * s * s)) / 2.0
+
+
+def _gauss(fn, a: float, b: float, pieces: int = 16, order: int = 20) -> float:
+    import numpy as np
+
+    xs, ws = np.polynomial.legendre.leggauss(order)
+    total = 0.0
+    h = (b - a) / pieces
+    for i in range(pieces):
+        lo = a + i * h
+        total += sum(w * fn(lo + (x + 1.0) * h / 2.0) for x, w in zip(xs, ws)) * h / 2.0
+    return float(total)
+
+
+def _zero(fn, a: float, b: float) -> float:
+    fa = fn(a)
+    for _ in range(200):
+        m = 0.5 * (a + b)
+        if (fn(m) > 0) == (fa > 0):
+            a, fa = m, fn(m)
+        else:
+            b = m
+    return 0.5 * (a + b)
+
+
+def area_balance(fig: Figure) -> dict[str, float]:
+    """Acceleration area above the base and deceleration area below it, in kg m (= mkg of work).
+
+    ``drawn_*``: the region between the mass-force line as drawn and the base line (an Area of the
+    figure), measured; ``planimeter_balance`` the planimeter's reading round it (acceleration less
+    deceleration);
+    ``two_term_*``: eq. (298) over the exact piston path (Gauss quadrature);
+    ``exact_*``: the exact kinematics, (G/g) v_max^2 / 2 on each side.
+    """
+    g = fig.replay.givens
+    lam = g["crank_radius"] / g["rod_length"]
+    A = mass_force_scale(g)
+    stroke_m = 2.0 * g["crank_radius"]
+    _, _, _, _, s, unit = _base_frame(fig)
+    to_kgm = stroke_m / s / unit  # drawn area: length along the base -> m, height -> kg
+    pieces = fig.replay["massarea"].signed_pieces()  # the region between the drawn line and the base, split
+    drawn_acc = sum(p.area for sign, p in pieces if sign > 0) * to_kgm
+    drawn_dec = sum(p.area for sign, p in pieces if sign < 0) * to_kgm
+    drawn_balance = float(fig.replay["balance"]) * to_kgm  # the planimeter's reading
+    w0 = _zero(lambda w: _two_term(w, lam), 0.0, math.pi)
+    two_acc = A * stroke_m * _gauss(lambda w: _two_term(w, lam) * _dx_dw(w, lam), 0.0, w0)
+    two_dec = -A * stroke_m * _gauss(lambda w: _two_term(w, lam) * _dx_dw(w, lam), w0, math.pi)
+    we = _zero(lambda w: _exact_accel(w, lam), 0.0, math.pi)
+    exact_acc = A * stroke_m * _gauss(lambda w: _exact_accel(w, lam) * _dx_dw(w, lam), 0.0, we)
+    exact_dec = -A * stroke_m * _gauss(lambda w: _exact_accel(w, lam) * _dx_dw(w, lam), we, math.pi)
+    return {"drawn_acceleration": drawn_acc, "drawn_deceleration": drawn_dec, "planimeter_balance": drawn_balance,
+            "two_term_acceleration": two_acc, "two_term_deceleration": two_dec,
+            "exact_acceleration": exact_acc, "exact_deceleration": exact_dec}
+
+
+# --------------------------------------------------------------------------
+# Checks.
+# --------------------------------------------------------------------------
+
+
+def piston_force_checks(fig: Figure) -> list[Check]:
+    n = fig.params["parts"]
+    g = fig.replay.givens
+    lam = g["crank_radius"] / g["rod_length"]
+    A = mass_force_scale(g)
+    F = g["piston_area"]
+    unit = g["force_unit"]
+    stroke = 2.0 * g["crank_radius"] * g["scale"]
+    # Euclidean float error ~1e-12 of the figure, read in kg: divide by the force unit.
+    size = max(stroke, (g["admission"] + g["back_pressure"]) * F * unit, A * unit, 1.0)
+    kg_tol = EUCLIDEAN_TOLERANCE * size / unit
+    made_by = fig.replay.made_by()
+    checks: list[Check] = []
+    for k in range(n + 1):
+        w = math.pi * k / n
+        tol_w, why_w = angle_tolerance(fig, point_name(fig, k), made_by)
+        w_measured = crank_angle(fig, point_name(fig, k))
+        x = abscissa(fig, f"M{k}")
+        checks.append(Check(f"abscissa {k} (rod arcs)", x, _exact_path(w, lam), EUCLIDEAN_TOLERANCE + 0.5 * (1 + lam) * tol_w,
+                            "rod arcs are Euclidean; division error times |dx/dw|", "stroke"))
+        checks.append(Check(f"mass force {k} (eq. 298)", mass_force(fig, k), A * _two_term(w, lam),
+                            kg_tol + A * (1.0 + 4.0 * lam) * tol_w, f"Euclidean chain as the inertia curve; {why_w}", "kg"))
+        checks.append(Check(f"mass force {k} at the drawn angle (eq. 298)", mass_force(fig, k),
+                            A * _two_term(w_measured, lam), kg_tol, "Euclidean chain: float rounding only", "kg"))
+        bound = 2.5 * lam ** 3 / (1.0 - lam * lam) ** 2.5
+        checks.append(Check(f"mass force {k} vs exact kinematics (information)", mass_force(fig, k),
+                            A * _exact_accel(w, lam), A * bound + kg_tol + A * (1.0 + 4.0 * lam) * tol_w,
+                            "eq. (298) drops the (R/L)^3 terms: |exact - two-term| <= 2.5 lam^3/(1 - lam^2)^2.5", "kg"))
+        xk = abscissa(fig, f"K{k}")
+        p_u = model_steam(xk, g) - model_back(xk, g)
+        checks.append(Check(f"piston force {k} (F p_ü, eq. 297)", piston_force(fig, k), F * p_u, kg_tol,
+                            "Euclidean: ray-constructed hyperbolas, compass transfer", "kg"))
+        checks.append(Check(f"free force {k}", piston_force(fig, k) - mass_force(fig, k),
+                            F * p_u - A * _two_term(w_measured, lam), 2 * kg_tol, "difference of two Euclidean ordinates",
+                            "kg"))
+    for tag, x in (("s1", g["filling"]), ("s2", 1.0 - g["compression"])):
+        checks.append(Check(f"piston force at {tag}", piston_force(fig, tag), F * (model_steam(x, g) - model_back(x, g)),
+                            kg_tol, "Euclidean", "kg"))
+    xj = j_abscissa(g)
+    checks.append(Check("pressure change J (abscissa)", abscissa(fig, "J"), xj, EUCLIDEAN_TOLERANCE * 10,
+                        "fourth proportional and intercept theorem: Euclidean", "stroke"))
+    if g["filling"] < xj < 1.0 and xj > 1.0 - g["compression"]:
+        checks.append(Check("p_ü at J", model_steam(xj, g) - model_back(xj, g), 0.0, 1e-12 * (g["admission"] + 1),
+                            "J is the zero of the over-pressure", "at"))
+    # the area balance: reported, not assumed
+    a = area_balance(fig)
+    curve_tol = _curve_area_tolerance(n, lam) * A * 2.0 * g["crank_radius"]
+    for side in ("acceleration", "deceleration"):
+        checks.append(Check(f"{side} area as drawn vs eq. (298) over the exact path", a[f"drawn_{side}"],
+                            a[f"two_term_{side}"], curve_tol,
+                            "French curve through the points: height error <= 2 (pi/n)^3 (1 + 4 lam) (G/g) omega^2 R "
+                            "(estimate), times the stroke", "kg m"))
+        checks.append(Check(f"{side} area, eq. (298) vs exact kinematics (information)", a[f"two_term_{side}"],
+                            a[f"exact_{side}"], A * 2.0 * g["crank_radius"] * 2.5 * lam ** 3 / (1 - lam * lam) ** 2.5,
+                            "eq. (298) drops the (R/L)^3 terms", "kg m"))
+    checks.append(Check("area balance, exact kinematics (acceleration - deceleration)",
+                        a["exact_acceleration"] - a["exact_deceleration"], 0.0, 1e-9 * A,
+                        "the masses start and end the stroke at rest: the work balances exactly", "kg m"))
+    checks.append(Check("area balance, eq. (298) over the exact path (information)",
+                        a["two_term_acceleration"] - a["two_term_deceleration"], 0.0,
+                        A * 2.0 * g["crank_radius"] * lam ** 3,
+                        "eq. (298) is exact for the path of Gl. (1), not for the rod arcs: residue O(lam^3)", "kg m"))
+    checks.append(Check("planimeter reading = acceleration - deceleration area", a["planimeter_balance"],
+                        a["drawn_acceleration"] - a["drawn_deceleration"], 1e-9 * A * 2.0 * g["crank_radius"],
+                        "the same drawn region, measured whole and piece by piece", "kg m"))
+    checks.append(Check("area balance as drawn (information)", a["drawn_acceleration"] - a["drawn_deceleration"], 0.0,
+                        2 * curve_tol + A * 2.0 * g["crank_radius"] * lam ** 3,
+                        "drawing error of the curve plus the O(lam^3) residue", "kg m"))
+    return checks
+
+
+def _curve_area_tolerance(n: int, lam: float) -> float:
+    return 2.0 * (math.pi / n) ** 3 * (1.0 + 4.0 * lam)
+
+
+PISTON_FORCE = register(Construction(
+    name="piston-force",
+    title=Caption("Kolbenüberdrucklinie mit den Massenkräften", "Piston-force line with the mass forces"),
+    source="seed 001, Abb. 1054/1055, Gl. (297)-(299), Tafel I; seed 004 (Baumann's idealised diagram)",
+    build=lambda parts, method, **v: build_piston_force(parts=parts, method=method, **v),
+    checks=piston_force_checks,
+    defaults={"parts": 18, "method": "auto", **TAFEL_I, **HP_DIAGRAM, "scale": 2.5, "force_unit": 1.2e-4},
+    book_params=({}, {"weight": 990.0}),  # Tafel I: high-pressure and low-pressure side
+    structural=("parts", "method", "filling", "compression"),
+    extra={"help": {
+        "weight": "weight G of the reciprocating parts in kg (Tafel I: 830 high-pressure, 990 low-pressure side)",
+        "rpm": "revolutions per minute n (Tafel I: 50)",
+        "crank_radius": "crank radius R in m (Tafel I: 0.4)",
+        "rod_length": "connecting-rod length L in m (Tafel I: 2.0)",
+        "piston_area": "piston area F in cm^2 (Tafel I: (F' + F'')/2 = 1529.07)",
+        "scale": "drawn length per metre of stroke (piston-force; default 2.5)",
+        "force_unit": "drawn length per kg of force (piston-force; default 1.2e-4)",
+    }},
+), validate=_validate)
+
+
+# --------------------------------------------------------------------------
+# Table: the mass forces measured on the construction.
+# --------------------------------------------------------------------------
+
+
+def mass_force_rows(*, weight: float, rpm: float, crank_radius: float, rod_length: float,
+                    parts: int = 18) -> list[dict[str, Any]]:
+    """crank_angle_deg, x (fraction of the stroke) and P_b (kg, + = masses accelerated), read off the figure.
+
+    >>> rows = mass_force_rows(weight=830, rpm=50, crank_radius=0.4, rod_length=2.0, parts=2)
+    >>> [(round(r["crank_angle_deg"], 9), round(r["x"], 9), round(r["P_b"], 3)) for r in rows]
+    [(0.0, 0.0, 1113.391), (90.0, 0.550510257, -185.565), (180.0, 1.0, -742.26)]
+    """
+    fig = PISTON_FORCE.figure(weight=weight, rpm=rpm, crank_radius=crank_radius, rod_length=rod_length, parts=parts)
+    return [{"crank_angle_deg": math.degrees(crank_angle(fig, point_name(fig, k))), "x": abscissa(fig, f"M{k}"),
+             "P_b": mass_force(fig, k)} for k in range(parts + 1)]

@@ -1,0 +1,142 @@
+"""The front door: one import builds, replays, draws and checks; protocols load with nothing else imported."""
+
+from __future__ import annotations
+
+import ast
+import gc
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import construct
+
+ROOT = Path(__file__).resolve().parents[1]
+PACKAGE = ROOT / "construct"
+
+
+def test_public_names_exist_and_are_documented():
+    assert construct.__doc__ and construct.__version__
+    for name in construct.__all__:
+        assert hasattr(construct, name), name
+    for name in ("Builder", "Figure", "Protocol", "get", "nearer", "farther", "toward", "left_of", "StepError",
+                 "NoIntersection", "svg"):
+        assert name in construct.__all__
+
+
+def test_every_public_builder_method_has_a_runnable_example():
+    missing = [name for name, fn in vars(construct.Builder).items()
+               if callable(fn) and not name.startswith("_") and ">>>" not in (fn.__doc__ or "")]
+    assert not missing, missing
+
+
+FRESH = r"""
+import glob, json, sys
+import construct
+from construct.kernel.protocol import object_json
+
+def close(a, b):
+    if isinstance(a, float):
+        return abs(a - b) <= 1e-12 * max(1.0, abs(b))
+    if isinstance(a, list):
+        return len(a) == len(b) and all(close(x, y) for x, y in zip(a, b))
+    if isinstance(a, dict):
+        return a.keys() == b.keys() and all(close(a[k], b[k]) for k in a)
+    return a == b
+
+count = 0
+for path in sorted(glob.glob(sys.argv[1] + "/*/protocol.json")):
+    text = open(path, encoding="utf-8").read()
+    stored = json.loads(text)["objects"]
+    replay = construct.Protocol.from_json(text).replay()
+    for name, want in stored.items():
+        got = object_json(replay[name])
+        assert close(got, want), (path, name, got, want)
+    assert set(replay) == set(stored), path
+    count += 1
+assert sorted(m for m in sys.modules if m.startswith("construct.constructions.")) == [], "constructions imported"
+print(count)
+"""
+
+
+def test_a_fresh_process_loads_and_replays_every_gallery_protocol():
+    out = subprocess.run([sys.executable, "-c", FRESH, str(ROOT / "gallery")], capture_output=True, text=True,
+                         cwd=ROOT)
+    assert out.returncode == 0, out.stderr[-2000:]
+    assert int(out.stdout) >= 8
+
+
+def test_a_custom_protocol_replays_and_checks_through_the_cli(tmp_path):
+    b = construct.Builder("third of a segment", givens={"s": 3.0})
+    b.given_point("A", 0.0, 0.0)
+    b.given_point("B", 1.0, 0.0, unit="s")
+    b.divide_segment("T", "A", "B", 3)
+    fig = b.figure()
+    path = tmp_path / "mine.json"
+    path.write_text(fig.protocol.to_json(fig.replay), encoding="utf-8")
+    run = [sys.executable, "-m", "construct"]
+    out = subprocess.run(run + ["replay", "--protocol", str(path), "--given", "s=6", "--out", str(tmp_path / "o")],
+                         capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    written = json.loads((tmp_path / "o" / "protocol.json").read_text(encoding="utf-8"))
+    assert abs(written["objects"]["T1"]["x"] - 2.0) <= 1e-12  # a third of 6, from the replayed steps
+    assert (tmp_path / "o" / "final.svg").exists()
+    out = subprocess.run(run + ["check", "--protocol", str(path)], capture_output=True, text=True)
+    assert out.returncode == 0 and "no checks" in out.stdout
+    out = subprocess.run(run + ["replay", "--protocol", str(path), "--given", "q=1", "--out", str(tmp_path / "p")],
+                         capture_output=True, text=True)
+    assert out.returncode == 2 and "no given 'q'" in out.stderr and "Traceback" not in out.stderr
+    assert not (tmp_path / "p").exists()
+
+
+def test_library_calls_leave_process_state_alone():
+    import matplotlib
+
+    backend = matplotlib.get_backend()
+    enabled = gc.isenabled()
+    fig = construct.get("crank").figure(parts=6)
+    fig.protocol.replay({"r": 1.0, "rod_ratio": 4.0})
+    fig.svg(style="teaching")
+    assert gc.isenabled() == enabled and matplotlib.get_backend() == backend
+
+
+# -- layers ------------------------------------------------------------------------------------------
+
+LAYERS = {
+    # package: the packages it may import from (module level); the top-level modules sit in "top"
+    "kernel": {"kernel"},
+    "constructions": {"kernel", "constructions", "analytic", "checks", "errors", "reference"},
+    "reference": {"reference"},
+    "render": {"kernel", "constructions", "render", "output", "errors", "checks", "analytic"},
+}
+
+
+def _imports(path: Path) -> list[tuple[str, int]]:
+    """The construct-internal modules a file imports at module level (not inside functions)."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    pkg = path.relative_to(ROOT).with_suffix("").parts[:-1]
+    out = []
+    for node in tree.body:
+        if isinstance(node, ast.ImportFrom) and node.level:
+            base = list(pkg[: len(pkg) - node.level + 1])
+            target = base + (node.module.split(".") if node.module else [])
+            out.append((".".join(target), node.lineno))
+        elif isinstance(node, ast.ImportFrom) and (node.module or "").startswith("construct"):
+            out.append((node.module, node.lineno))
+    return out
+
+
+@pytest.mark.parametrize("layer", sorted(LAYERS))
+def test_no_module_imports_a_layer_above_it(layer):
+    allowed = LAYERS[layer]
+    bad = []
+    for path in sorted((PACKAGE / layer).rglob("*.py")):
+        for target, line in _imports(path):
+            parts = target.split(".")
+            if parts[0] != "construct" or len(parts) < 2:
+                continue
+            if parts[1] not in allowed:
+                bad.append(f"{path.relative_to(ROOT)}:{line} imports {target}")
+    assert not bad, bad

@@ -114,7 +114,7 @@ def params_text(figure: Figure, lang: str = "en") -> str:
             text = _BOOK_PARAMS[key][i].format(v=_num(v))
             out.append(text.replace(".", ",") if lang == "de" and "kg" in text else text)
         else:
-            out.append(f"{key} = {_num(v)}")
+            out.append(f"{key.replace('_', ' ')} = {_num(v)}")  # a parameter the books do not name
     return ", ".join(out)
 
 

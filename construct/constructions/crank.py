@@ -201,10 +201,10 @@ def _unit(a, b) -> tuple[float, float]:
 
 
 def frame_furniture(fig: Figure, crank_point: str | None = None, crosshead: str | None = None) -> list[dict]:
-    """Stroke s and crank radius r as dimensions; the crank and the rod (broken off) in one position.
+    """Stroke s, crank radius r and rod length L as dimensions; the crank and the rod in one position.
 
     Every length is read off the figure: r = O-B, the rod from the crank point
-    towards its crosshead, L/r as the figure measures it.
+    to its crosshead, L/r as the figure measures it.
     """
     R = fig.replay
     O, D0, D1 = R["O"], R["D0"], R["D1"]
@@ -215,13 +215,15 @@ def frame_furniture(fig: Figure, crank_point: str | None = None, crosshead: str 
         out += [{"kind": "stroke", "a": tuple(O), "b": tuple(P), "look": "heavy"},
                 {"kind": "dimension", "a": tuple(O), "b": tuple(P), "text": "r", "offset": -0.08 * r}]
         if crosshead is not None:
+            # the rod to its crosshead, a rod length away: the renderer breaks the long empty stretch out
             C = R[crosshead]
-            ux, uy = _unit(P, C)
-            end = (P[0] + 0.9 * r * ux, P[1] + 0.9 * r * uy)
             ratio = P.distance(C) / r
-            out += [{"kind": "stroke", "a": tuple(P), "b": end, "look": "heavy", "broken": True},
-                     {"kind": "lettering", "at": (P[0] + 0.5 * r * ux - 0.1 * r * uy, P[1] + 0.5 * r * uy + 0.1 * r * ux),
-                      "text": f"L = {ratio:.3g} r", "angle": math.degrees(math.atan2(-uy, -ux))}]
+            out += [{"kind": "stroke", "a": tuple(P), "b": tuple(C), "look": "heavy"},
+                    {"kind": "dot", "at": tuple(C)},
+                    {"kind": "lettering", "at": (C[0], C[1] - 0.12 * r), "text": "C"},
+                    {"kind": "stroke", "a": (C[0] - 0.15 * r, C[1]), "b": tuple(D0), "look": "centre"},
+                    {"kind": "dimension", "a": tuple(C), "b": tuple(P), "text": f"L = {ratio:.3g} r",
+                     "offset": 0.12 * r}]
     return out
 
 

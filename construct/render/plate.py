@@ -19,7 +19,7 @@ that :meth:`Plate.from_data` reads::
 
 Kinds: dimension (a, b, text, offset), angle (centre, start, end, radius,
 text, text_at), stroke (a, b, look, broken), lettering (at, text, anchor,
-angle, size), scale (origin, end, text), sign (at, text).
+angle, size), scale (origin, end, text), sign (at, text), dot (at).
 
 Every value written on a plate is read off the constructed figure (the
 construction's own points), never from the formula the checks compare with.
@@ -37,10 +37,11 @@ True
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields, replace
 from typing import Any, Callable, Mapping, Sequence
 
-__all__ = ["Plate", "Dimension", "AngleArc", "Stroke", "Lettering", "ScaleBar", "Sign", "dms", "extent",
+__all__ = ["Plate", "Dimension", "AngleArc", "Stroke", "Lettering", "ScaleBar", "Sign", "Dot", "dms", "extent",
+           "anchors", "shifted",
            "furniture_elements", "LOOKS_CSS", "plate_of"]
 
 XY = tuple[float, float]
@@ -115,6 +116,13 @@ class ScaleBar:
 
 
 @dataclass(frozen=True)
+class Dot:
+    """A point the plate marks (the crosshead of the rod drawn in one position)."""
+
+    at: XY
+
+
+@dataclass(frozen=True)
 class Sign:
     """The sign of a zone of a diagram (+ or −), set large in it."""
 
@@ -140,7 +148,7 @@ class Plate:
         if not data:
             return cls()
         kinds = {"dimension": Dimension, "angle": AngleArc, "stroke": Stroke, "lettering": Lettering,
-                 "scale": ScaleBar, "sign": Sign}
+                 "scale": ScaleBar, "sign": Sign, "dot": Dot}
         items = []
         for d in data.get("furniture", ()):
             d = dict(d)
@@ -178,9 +186,25 @@ def _points(item: Any) -> list[XY]:
         return pts + ([item.text_at] if item.text_at else [])
     if isinstance(item, (Stroke, ScaleBar)):
         return [item.origin, item.end] if isinstance(item, ScaleBar) else [item.a, item.b]
-    if isinstance(item, (Lettering, Sign)):
+    if isinstance(item, (Lettering, Sign, Dot)):
         return [item.at]
     return []
+
+
+def anchors(items: Sequence[Any]) -> list[XY]:
+    """The points of the furniture that stand on their own (not the ends of a line or dimension):
+    a broken axis keeps them clear of its gap."""
+    return [p for it in items if not isinstance(it, (Stroke, Dimension)) for p in _points(it)]
+
+
+def shifted(item: Any, sx: Callable[[float], float]) -> Any:
+    """*item* with every point's x mapped by *sx* (a broken axis)."""
+    changes = {}
+    for f in fields(item):
+        v = getattr(item, f.name)
+        if isinstance(v, tuple) and len(v) == 2 and all(isinstance(c, (int, float)) for c in v):
+            changes[f.name] = (sx(v[0]), v[1])
+    return replace(item, **changes) if changes else item
 
 
 def extent(items: Sequence[Any]) -> tuple[float, float, float, float] | None:
@@ -331,4 +355,7 @@ def _item(it: Any, px: Callable[[float, float], XY], scale: float, size: float, 
         return _text(f, px(*it.at), it.text, size, it.anchor, it.angle, it.size)
     if isinstance(it, Sign):
         return _text(f, px(*it.at), it.text, size, "middle", 0.0, 2.0)
+    if isinstance(it, Dot):
+        x, y = px(*it.at)
+        return [f.circle(center=(_f(x), _f(y)), r=_f(0.22 * size), class_="arrow")]
     return []

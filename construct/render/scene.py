@@ -410,8 +410,9 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
             elif hasattr(obj, "curve_points"):
                 marks.append(Mark(mid, kind="curve", geom=tuple((p[0], p[1]) for p in obj.curve_points()), **common))
     breaks: tuple[tuple[float, float, float], ...] = ()
-    if break_axis and shown is None:
-        marks, breaks = _break(marks)
+    if break_axis and (shown is None or furniture):
+        # a plate keeps more of the broken stretch: the rod drawn across it stays a shallow line
+        marks, furniture, breaks = _break(marks, tuple(furniture), BREAK_KEEP if shown is None else PLATE_BREAK_KEEP)
         if breaks:
             xs = [x for m in marks if m.kind == "point" for x in (m.geom[0],)] or xs
             ys = [y for m in marks if m.kind == "point" for y in (m.geom[1],)] or ys
@@ -439,18 +440,24 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
 BREAK_FRACTION = 0.2
 #: Width the broken-out stretch keeps, as a fraction of what remains of the figure.
 BREAK_KEEP = 0.07
+#: The same on a plate, where the rod is drawn across the break to its crosshead.
+PLATE_BREAK_KEEP = 0.55
 
 
-def _break(marks: list[Mark]) -> tuple[list[Mark], tuple[tuple[float, float, float], ...]]:
+def _break(marks: list[Mark], furniture: tuple = (),
+           keep_fraction: float = 0.07) -> tuple[list[Mark], tuple, tuple[tuple[float, float, float], ...]]:
     """Break the widest empty stretch out of the figure, as a draftsman breaks a long axis.
 
     The crossheads lie a rod length (5 r) to the left of the crank circle;
     drawn to scale, the circle sits in a corner of an empty sheet.  Marks
     wholly left of the empty stretch move right by what it loses; lines
     that cross it (the stroke line) keep their right end and move their
-    left one.  Returns the marks and ((x of the break, its drawn width, the
-    length left out),) or () when there is no such gap.
+    left one.  A plate's furniture (the rod drawn to its crosshead) is
+    broken the same way.  Returns the marks, the furniture and ((x where the
+    drawn break starts, its drawn width, the length it stands for),) or ()
+    when there is no such gap.
     """
+    from .plate import anchors, shifted
     ivals = []
     for m in marks:
         if m.kind == "segment":
@@ -458,8 +465,9 @@ def _break(marks: list[Mark]) -> tuple[list[Mark], tuple[tuple[float, float, flo
         xs = [p[0] for p in _extreme_points(m)]
         if xs:
             ivals.append((min(xs), max(xs)))
+    ivals.extend((x, x) for x, _ in anchors(furniture))
     if len(ivals) < 2:
-        return marks, ()
+        return marks, furniture, ()
     ivals.sort()
     total = ivals[-1][1] - ivals[0][0]
     best, reach = None, ivals[0][1]
@@ -468,9 +476,9 @@ def _break(marks: list[Mark]) -> tuple[list[Mark], tuple[tuple[float, float, flo
             best = (reach, a)
         reach = max(reach, b)
     if best is None or best[1] - best[0] <= BREAK_FRACTION * total:
-        return marks, ()
+        return marks, furniture, ()
     lo, hi = best
-    keep = BREAK_KEEP * (total - (hi - lo))
+    keep = min(keep_fraction * (total - (hi - lo)), 0.8 * (hi - lo))
     shift = (hi - lo) - keep
 
     def sx(x: float) -> float:
@@ -490,7 +498,7 @@ def _break(marks: list[Mark]) -> tuple[list[Mark], tuple[tuple[float, float, flo
             g = tuple((sx(x), y) for x, y in g)
         out.append(m if g is m.geom else dataclasses.replace(m, geom=g))
     # the left stretch now ends at hi - keep: the kept piece of the broken axis is [hi - keep, hi]
-    return out, ((hi - keep, keep, hi - lo),)
+    return out, tuple(shifted(it, sx) for it in furniture), ((hi - keep, keep, hi - lo),)
 
 
 def plate_names(protocol: Protocol, objects: Replay) -> set[str]:

@@ -502,25 +502,36 @@ class Drawing:
 
     def furniture(self) -> Any | None:
         """The broken axis's break marks and the plate's furniture (:mod:`construct.render.plate`)."""
-        from .plate import furniture_elements
+        from .plate import Stroke, furniture_elements
 
         f = self.doc.factory
-        elems = []
+        # the furniture first, the break marks over it (they open the rod and the axis for the gap)
+        elems = furniture_elements(self.scene.furniture, self.vp.px, self.vp.scale, f, size=self.style.label_size)
+        lines = [m.geom for m in self.scene.marks if m.kind == "segment"]
+        lines += [(*it.a, *it.b) for it in self.scene.furniture if isinstance(it, Stroke)]
         for x0, w, _left_out in self.scene.breaks:
             # on every line crossing the break: a gap in paper colour and two slanted strokes
-            for m in self.scene.marks:
-                if m.kind != "segment":
-                    continue
-                ax, ay, bx, by = m.geom
-                if min(ax, bx) < x0 and max(ax, bx) > x0 + w and abs(bx - ax) > 1e-12:
-                    y = ay + (by - ay) * (x0 + w / 2 - ax) / (bx - ax)
-                    (p0x, p0y), (p1x, p1y) = self.vp.px(x0 + 0.3 * w, y), self.vp.px(x0 + 0.7 * w, y)
-                    h = 0.6 * self.style.label_size
-                    elems.append(f.rect(insert=(fmt(p0x), fmt(p0y - h)), size=(fmt(p1x - p0x), fmt(2 * h)), class_="brk"))
-                    for px in (p0x, p1x):
-                        elems.append(f.line(start=(fmt(px - 0.35 * h), fmt(p0y + h)), end=(fmt(px + 0.35 * h), fmt(p0y - h)),
+            for ax, ay, bx, by in lines:
+                if min(ax, bx) < x0 + 0.3 * w and max(ax, bx) > x0 + 0.7 * w and abs(bx - ax) > 1e-12:
+                    # the classic break: a short gap along the line, a slanted tick at each side
+                    xm = x0 + w / 2
+                    ym = ay + (by - ay) * (xm - ax) / (bx - ax)
+                    cx, cy = self.vp.px(xm, ym)
+                    ex, ey = self.vp.px(bx, by)
+                    sx, sy = self.vp.px(ax, ay)
+                    n = math.hypot(ex - sx, ey - sy) or 1.0
+                    ux, uy = (ex - sx) / n, (ey - sy) / n
+                    nx, ny = -uy, ux
+                    h, gap = 0.6 * self.style.label_size, 0.45 * self.style.label_size
+                    corners = [(cx + su * gap * ux + sn * h * nx, cy + su * gap * uy + sn * h * ny)
+                               for su, sn in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+                    elems.append(f.path(d="M" + "L".join(f"{fmt(x)} {fmt(y)}" for x, y in corners) + "Z",
+                                        class_="brk"))
+                    for su in (-1, 1):
+                        tx, ty = cx + su * gap * ux, cy + su * gap * uy
+                        elems.append(f.line(start=(fmt(tx - 0.35 * h * ux - h * nx), fmt(ty - 0.35 * h * uy - h * ny)),
+                                            end=(fmt(tx + 0.35 * h * ux + h * nx), fmt(ty + 0.35 * h * uy + h * ny)),
                                             class_="brkline"))
-        elems += furniture_elements(self.scene.furniture, self.vp.px, self.vp.scale, f, size=self.style.label_size)
         if not elems:
             return None
         g = f.g(id="furniture")

@@ -15,7 +15,7 @@ from typing import Sequence
 
 from .errors import ConstructError
 
-EXIT_OK, EXIT_FAILED_CHECK, EXIT_BAD_INPUT = 0, 1, 2
+EXIT_OK, EXIT_BAD_INPUT = 0, 2  # a failed check exits 1: the commands that check return it
 
 
 class UsageError(ConstructError):

@@ -38,7 +38,10 @@ from .errors import InvalidParameter
 from .reference import seed000
 from .reference.seed000 import PrintedValue
 
-__all__ = ["Erratum", "Reading", "errata", "all_errata", "classify", "read_printed", "true_value", "CLASSES"]
+__all__ = ["Erratum", "Reading", "errata", "all_errata", "classify", "read_printed", "true_value", "CLASSES", "SOURCES"]
+
+#: The other seeds' errata modules (each has ``entries()``), listed after seed 000's by :func:`all_errata`.
+SOURCES = ("construct.errata_seed001", "construct.errata_seed004")
 
 CLASSES = ("agrees", "slip", "misprint")
 
@@ -443,7 +446,10 @@ def errata() -> list[Erratum]:
 
 
 def all_errata() -> list[Erratum]:
-    """Seed 000's errata, then those of the other seeds (each entry's ``source`` names its seed)."""
-    from . import errata_seed001
+    """Seed 000's errata, then those of every module in :data:`SOURCES` (``source`` names the seed)."""
+    import importlib
 
-    return errata() + errata_seed001.entries()
+    out = errata()
+    for module in SOURCES:
+        out += importlib.import_module(module).entries()
+    return out

@@ -83,10 +83,29 @@ def mass_forces_table(*, weight: float, rpm: float, crank_radius: float, rod_len
                                                             rod_length=rod_length, parts=parts)
 
 
+def tangential_pressure_table(*, rod_ratio: float, parts: int = 18, method: str = "auto") -> Table:
+    """T/P' for a unit piston force at each crank position: OK/r measured on the construction (seed 004, Fig. 26)."""
+    from .constructions.tangential import ok_over_r, t_over_unit
+
+    fig = get("tangential-pressure").figure(rod_ratio=rod_ratio, parts=parts, method=method, force="unit")
+    rows = [{"crank_angle_deg": math.degrees(crank_angle(fig, point_name(fig, k))), "OK_over_r": ok_over_r(fig, k),
+             "T_over_P": t_over_unit(fig, k)} for k in range(parts + 1)]
+    return ("crank_angle_deg", "OK_over_r", "T_over_P"), rows
+
+
+def flywheel_coefficients_table(*, kz: Sequence[float] | None = None, v: Sequence[float] | None = None) -> Table:
+    """Baumann's two flywheel tables (seed 004) for his paired kz and v, or the ones given."""
+    from .flywheel import coefficient_rows
+
+    return ("kz", "v", "arms_hub", "total_weight", "moment", "weight_for_moment"), coefficient_rows(kz, v)
+
+
 TABLES = {
     "piston-path": piston_path_table,
     "crank-angle": crank_angle_table,
     "acceleration": acceleration_table,
     "characteristic-points": characteristic_points_table,
     "mass-forces": mass_forces_table,
+    "tangential-pressure": tangential_pressure_table,
+    "flywheel-coefficients": flywheel_coefficients_table,
 }

@@ -92,7 +92,17 @@ def test_crank_angle_table_csv(capsys):
 def test_bench_json_shape(capsys):
     code, out, _ = run(capsys, "bench", "--json", "--parts", "6")
     data = json.loads(out)
-    assert code == 0 and {"case", "steps", "build_s", "replay_s"} <= set(data[0]) and data[0]["steps"] > 0
+    case = data["cases"][0]
+    assert code == 0 and {"case", "steps", "build_s", "replay_s", "trial_step_s"} <= set(case) and case["steps"] > 0
+    assert case["method"] == "dividers" and case["trial_step_s"] >= 0.0
+
+
+def test_bench_sweep_is_measured_against_a_loop():
+    from construct.bench import sweep_bench
+
+    s = sweep_bench(size=200)
+    assert s["size"] == 200 and s["sweep_s"] > 0 and s["speedup_over_loop"] == pytest.approx(
+        s["scalar_replay_s"] * 200 / s["sweep_s"])
 
 
 BAD = [

@@ -301,13 +301,13 @@ def test_cli_class_filter(capsys):
 
 
 def test_cli_text_table(capsys):
-    assert main(["errata"]) == 0
+    assert main(["errata", "--seed", "000"]) == 0
     lines = capsys.readouterr().out.splitlines()
     assert lines[0].split()[:5] == ["table", "row", "column", "printed", "true"]
     row = next(line for line in lines if "-0.5385" in line)
     assert row.startswith("Tabelle 1") and "110°" in row and "misprint" in row
-    # seed 000's 251 numbers and the other seeds' (seed 001: 9 in the worked example of Tafel I)
-    assert lines[-1].startswith(f"{251 + 9} printed numbers: ")
+    # seed 000's 251 numbers (the other seeds' are listed without --seed)
+    assert lines[-1].startswith("251 printed numbers: ")
     assert lines[-1].endswith("; 6 formula misprints")
 
 

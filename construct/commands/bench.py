@@ -1,18 +1,19 @@
-"""construct bench: how fast the crank construction builds and replays."""
+"""construct bench: how fast the kernel builds, replays and sweeps the crank construction."""
 
 from __future__ import annotations
 
 import json
 
-from ..bench import CASES, run_bench, verdicts
+from ..bench import CASES, run_bench, sweep_bench, verdicts
 
 NAME = "bench"
-HELP = "benchmark building and replaying the crank construction (n = 18, 360, 3600)"
+HELP = ("benchmark building, replaying and sweeping the crank construction "
+        "(Dürer n = 18, 360; dividers n = 18, 360, 3600; a sweep over 10,000 rod ratios)")
 
 
 def add_arguments(p) -> None:
-    p.add_argument("--json", action="store_true", help="print a JSON list of {case, steps, build_s, replay_s}")
-    p.add_argument("--parts", type=int, action="append", help="cases to run instead of 18, 360, 3600")
+    p.add_argument("--json", action="store_true", help="print the measurements as JSON")
+    p.add_argument("--parts", type=int, action="append", help="cases to run (dividers) instead of the standard set")
     p.add_argument("--outputs", action="store_true",
                    help="time the outputs instead: replay at 360 and 1440 parts, gallery, verify (about a minute)")
 
@@ -31,14 +32,18 @@ def run(args) -> int:
         for line in output_verdicts(found):
             print(line)
         return 0
-    results = run_bench(tuple(args.parts) if args.parts else CASES)
+    cases = tuple((n, "dividers") for n in args.parts) if args.parts else CASES
+    results = run_bench(cases)
+    sweep = None if args.parts else sweep_bench()
     if args.json:
-        print(json.dumps(results, indent=1))
+        print(json.dumps({"cases": results, "sweep": sweep}, indent=1))
         return 0
     for r in results:
-        print(f"{r['case']:28s} {r['steps']:7d} steps  build {r['build_s'] * 1e3:9.2f} ms  "
-              f"replay {r['replay_s'] * 1e3:9.3f} ms  ({r['replay_per_step_us']:.2f} us/step)")
-    if not args.parts:
-        for line in verdicts(results):
-            print(line)
+        print(f"{r['case']:28s} {r['steps']:7d} steps  build {r['build_s'] * 1e3:9.2f} ms "
+              f"({r['build_per_step_us']:6.2f} us/step)  replay {r['replay_s'] * 1e3:9.3f} ms "
+              f"({r['replay_per_step_us']:.2f} us/step)")
+    if sweep is not None:
+        print(f"{sweep['case']}: {sweep['sweep_s'] * 1e3:.1f} ms (one replay {sweep['scalar_replay_s'] * 1e3:.3f} ms)")
+    for line in verdicts(results, sweep):
+        print(line)
     return 0

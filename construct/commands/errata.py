@@ -6,11 +6,11 @@ records (``true`` to 8 significant digits, ``units`` to 2 decimals);
 ``--class`` keeps one class only.
 
 >>> from construct.cli import main
->>> main(["errata", "--class", "slip"])  # doctest: +ELLIPSIS
+>>> main(["errata", "--class", "slip", "--seed", "000"])  # doctest: +ELLIPSIS
 table ...
 Tabelle 1 ... 0° ... 0.1666 ... slip ... truncated instead of rounded
 ...
-24 printed numbers: 0 agrees, 24 slip, 0 misprint; 0 formula misprints
+21 printed numbers: 0 agrees, 21 slip, 0 misprint; 0 formula misprints
 0
 """
 
@@ -23,7 +23,8 @@ from collections import Counter
 from ..errata import CLASSES, Erratum, all_errata
 
 NAME = "errata"
-HELP = "List every printed number of the seeds' tables and examples with its true value and a verdict (agrees/slip/misprint)."
+HELP = ("List every printed number of the seeds' tables and worked examples with its true value and a verdict "
+        "(agrees/slip/misprint).")
 
 _HEADINGS = ("table", "row", "column", "printed", "true", "units", "class", "note")
 
@@ -33,10 +34,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--class", dest="class_", choices=CLASSES, default=None, help="show only the entries of this class"
     )
+    parser.add_argument("--seed", default=None, metavar="NNN", help="show only one seed's entries (000, 004, ...)")
 
 
 def run(args: argparse.Namespace) -> int:
-    entries = [e for e in all_errata() if args.class_ is None or e.class_ == args.class_]
+    entries = [e for e in all_errata() if (args.class_ is None or e.class_ == args.class_)
+               and (args.seed is None or e.source.startswith(f"seed {args.seed}"))]
     if args.format == "json":
         print(json.dumps([_json_record(e) for e in entries], ensure_ascii=False, indent=1))
     else:

@@ -12,7 +12,8 @@ from ..tables import TABLES
 from ._common import _number, _whole
 
 NAME = "table"
-HELP = "print a table (piston-path, crank-angle, acceleration, characteristic-points, mass-forces)"
+HELP = ("print a table (piston-path, crank-angle, acceleration, characteristic-points, mass-forces, "
+        "tangential-pressure, flywheel-coefficients)")
 
 
 def add_arguments(p) -> None:
@@ -26,6 +27,8 @@ def add_arguments(p) -> None:
     p.add_argument("--rpm", type=_number, metavar="N", help="mass-forces: revolutions per minute")
     p.add_argument("--crank-radius", type=_number, metavar="R", help="mass-forces: crank radius, m")
     p.add_argument("--rod-length", type=_number, metavar="L", help="mass-forces: connecting-rod length, m")
+    p.add_argument("--kz", type=_number, action="append", metavar="KG_CM2", help="allowed stress kz (flywheel; repeat)")
+    p.add_argument("--v", type=_number, action="append", metavar="M_S", help="rim speed v (flywheel; repeat)")
     p.add_argument("--format", choices=("text", "csv"), default="text")
 
 
@@ -57,6 +60,10 @@ def run(args) -> int:
             raise InvalidParameter(f"table mass-forces needs {' '.join(missing)}")
         cols, rows = TABLES[args.table](weight=args.weight, rpm=args.rpm, crank_radius=args.crank_radius,
                                         rod_length=args.rod_length, parts=args.parts)
+    elif args.table == "tangential-pressure":
+        cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args), parts=args.parts, method=args.method)
+    elif args.table == "flywheel-coefficients":
+        cols, rows = TABLES[args.table](kz=args.kz, v=args.v)
     else:
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args))
     sys.stdout.write(format_table(cols, rows, args.format))

@@ -67,7 +67,7 @@ class Construction:
 
 _VALIDATORS: dict[str, Callable[[Mapping[str, float]], None]] = {}
 _REGISTRY: dict[str, Construction] = {}
-_MODULES = ("crank", "inertia", "indicator", "piston_force")
+_MODULES = ("crank", "inertia", "indicator", "piston_force", "tangential")
 
 
 def register(c: Construction, validate: Callable[[Mapping[str, float]], None] | None = None) -> Construction:

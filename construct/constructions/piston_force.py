@@ -277,7 +277,7 @@ def _curves(b: Builder, n: int, fbase: str) -> None:
     with b.group("free forces hatched vertically; the mass-force areas", "Freie Kräfte senkrecht gestrichelt; Massenkraftflächen"):
         for piece, (a, z) in zip(("forcea", "forceb", "forcec"), ((first[0], first[-1]), (mid[0], mid[-1]),
                                                                  (last[0], last[-1]))):
-            b.area_between(f"free.{piece[-1]}", piece, "mass", a, z, role="result",
+            b.area_between(f"free.{piece[-1]}", piece, "mass", a, z, hatch_deg=90.0, role="result",
                            de="freie Kräfte zwischen Kolbenkraft- und Massenkraftlinie",
                            en="free forces between the piston-force line and the mass-force line")
         b.area_between("massarea", "mass", fbase, "M0", f"M{n}", role="construction",

@@ -325,11 +325,13 @@ class Builder:
 
     def intersect(self, name: str | Sequence[str], c1: str, c2: str, *, rule: Rule | Sequence[Any],
                   de: str | None = None, en: str | None = None, role: str = "construction",
-                  labels: Mapping[str, str] | None = None) -> Any:
+                  labels: Mapping[str, str] | None = None, provenance: Provenance | None = None) -> Any:
         """Mark where two curves cross; *rule* says which point (:mod:`construct.kernel.rules`).
 
         With two names, both points are kept: the first is the one the rule
         picks.  A drawn curve (polyline, French curve) may be crossed by a line.
+        *provenance* overrides the one inherited from the inputs (a point read
+        off a drawing by eye says so).
 
         >>> from construct.kernel.rules import left_of
         >>> b = Builder("demo", givens={})
@@ -346,7 +348,8 @@ class Builder:
         params = {"rule": rule, "both": len(names) == 2}
         self.record("intersect", "intersect", (c1, c2), names, params,
                     de or f"{' und '.join(names)} im Schnitt von {c1} und {c2}",
-                    en or f"{' and '.join(names)} where {c1} meets {c2}", role=role, labels=labels)
+                    en or f"{' and '.join(names)} where {c1} meets {c2}", role=role, labels=labels,
+                    provenance=provenance)
         return names[0] if len(names) == 1 else names
 
     def step_off(self, name: str, curve: str, start: str, length: str, *, rule: Rule | Sequence[Any],

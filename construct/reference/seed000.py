@@ -172,9 +172,6 @@ CHARACTERISTIC_POINTS: tuple[tuple[str, str, str, tuple[str, str, str]], ...] = 
     ("q7", "x/2r", "q7_x", ("·3469", "·3689", "·3868")),
 )
 
-#: The rod lengths for 2r = 1 the book tabulates before Gl. (h1): given, not computed.
-ROD_LENGTHS_FOR_UNIT_STROKE = (("4", "2"), ("5", "2·5"), ("6", "3"))
-
 # --------------------------------------------------------------------------
 # d) Tangenten: r·tg β at the dead centres and at ω = 90°, in units of F/f.
 # The seed's OCR scrambled this little table: "= 0 mal F/f" (L/r = 4 at 180°)

@@ -1,0 +1,477 @@
+"""The tangential-pressure diagram ("Tangentialdruckdiagramm"), seed 004 (Baumann 1902, Fig. 26/27).
+
+For each crank position P of the divided semicircle the rod line from the
+crosshead C through P, extended, meets the perpendicular to the stroke
+through O at K; by similar triangles the tangential pressure on the crank
+pin is T = P'·OK/r (P' the free piston force: the piston force less the
+acceleration force), and DESIGN §5 writes it T = P'·sin(ω + β)/cos β.  Steps:
+
+* OK is swung onto the stroke line (a circle about O through K): the point H;
+* P' stands as a compass opening on the vertical through the dead centre D1
+  (at the distance r from O): the mark M, up = positive; the ray O–M meets the
+  vertical through H at the height P'·OK/r (intercept theorem: the proportional
+  angle at O, scale lines at r and at OK);
+* that height is carried with the compass to the ordinate of the unrolled
+  crank circle.
+
+The unrolled circle is not a Euclidean step: the dividers step the chord of
+one division n times along the base line, so the drawn length is
+n·2r·sin(π/2n) instead of πr (the provenance of every abscissa says so and
+states the shortfall).  Angles read off the unrolled scale are taken in
+proportion to the drawn length, where the chord error cancels.
+
+The free piston force P' comes, with ``force="baumann"``, from his model: the
+over-pressure of the idealised indicator diagram (module
+:mod:`construct.constructions.indicator`, hyperbolas by the ray construction)
+less the acceleration force B = (c v²/r)(cos ω + (r/L) cos 2ω), constructed as
+the inertia ordinates of seed 000 (:mod:`construct.constructions.inertia`),
+with c v²/r = P/((1 + r/L) κ) for Baumann's κ = P/B_max.  With
+``force="unit"`` P' is the crank radius r itself: the ordinates are OK.
+
+The curve is drawn through the points (French curve); the planimeter gives
+the mean line ("Ausgleichende", height = area / drawn length, = 2 P_i/π for
+the exact curve); where it crosses the curve are α1, α2; between them, above
+the mean line, the excess area ("Überschussfläche", hatched), the work the
+flywheel must take up.
+
+>>> fig = TANGENTIAL.figure(force="unit", parts=6, rod_ratio=5.0)
+>>> round(ok_over_r(fig, 3), 12)   # 90 degrees: sin(90° + β)/cos β = 1
+1.0
+>>> round(ok_over_r(fig, 2), 12) == round(math.sin(math.pi / 3 + math.asin(math.sin(math.pi / 3) / 5))
+...                                         / math.cos(math.asin(math.sin(math.pi / 3) / 5)), 12)
+True
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping
+
+import numpy as np
+
+from ..checks import EUCLIDEAN_TOLERANCE, Check
+from ..errors import InvalidParameter
+from ..kernel.division import check_parts, divide_semicircle
+from ..kernel.instruments import Builder
+from ..kernel.protocol import Caption, Provenance
+from . import Construction, Figure, positive, register, rod_ratio_param
+from .crank import angle_tolerance, build_frame, crank_angle, point_name, rod_arcs
+from .indicator import BAUMANN, indicator_frame, indicator_givens, pressures_at
+from .indicator import back_pressure as model_back_pressure
+from .indicator import steam_pressure as model_steam_pressure
+from .inertia import _kind, _setup, _value
+
+__all__ = ["TANGENTIAL", "build_tangential", "tangential_checks", "ok_over_r", "t_over_unit", "free_force",
+           "model_t", "drawn_model", "unrolled_angle", "mean_height", "excess_area", "crossing_angles", "model_summary",
+           "KAPPA", "FORCES"]
+
+#: Baumann's κ = P/B_max ("Verhältnis des Anfangsbeschleunigungsdrucks zum Anfangskolbendruck"), his first case.
+KAPPA = 8.0
+FORCES = ("baumann", "unit")
+
+#: What the Fig. 26/27-like plate shows: the unrolled base, the ordinates and points of T, the curve,
+#: the mean line, the crossings and the hatched excess area.
+PLATE = (r"tbase", r"U\d+", r"u\d+", r"T\d+", r"tcurve", r"M0|Mn", r"mean", r"A1|A2", r"excess")
+
+
+def _givens(r: Any, rod_ratio: Any, force: str, kappa: Any, pressure_unit: Any, **diagram: Any) -> dict[str, float]:
+    g = {"r": positive("crank radius r", r), "rod_ratio": rod_ratio_param(rod_ratio)}
+    if force == "unit":
+        return g
+    d = indicator_givens(diagram["filling"], diagram["clearance"], diagram["admission"], diagram["back_pressure"],
+                         diagram["compression"], pressure_unit)
+    k = positive("kappa = P/B_max", kappa)
+    # c v^2/r (at): the inertia ordinate's factor, so that B_max = (1 + r/L) c v^2/r = P/kappa.
+    g.update(d, pressure_ratio=d["admission"] / (k * (1.0 + 1.0 / g["rod_ratio"])))
+    return g
+
+
+def _validate(givens: Mapping[str, float]) -> None:
+    positive("crank radius r", givens["r"])
+    rod_ratio_param(givens["rod_ratio"])
+    if "admission" in givens:
+        indicator_givens(givens["filling"], givens["clearance"], givens["admission"], givens["back_pressure"],
+                         givens["compression"], givens["pressure_unit"])
+        positive("c v^2/r (pressure_ratio)", givens["pressure_ratio"])
+
+
+def _approx(method: str, error: float) -> Provenance:
+    return Provenance("approximate", method, error)
+
+
+def chord_shortfall(n: int, r: float = 1.0) -> float:
+    """πr less n chords of 1/n of the semicircle: what the dividers lose on the unrolled circle."""
+    return r * (math.pi - 2.0 * n * math.sin(math.pi / (2.0 * n)))
+
+
+def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, force: str, kappa: float,
+                     filling: float, clearance: float, admission: float, back_pressure: float, compression: float,
+                     pressure_unit: float) -> Figure:
+    if force not in FORCES:
+        raise InvalidParameter(f"force must be one of {', '.join(FORCES)}, got {force!r}")
+    givens = _givens(r, rod_ratio, force, kappa, pressure_unit, filling=filling, clearance=clearance,
+                     admission=admission, back_pressure=back_pressure, compression=compression)
+    used = check_parts(parts, method)
+    if parts < 2:
+        raise InvalidParameter(f"the tangential-pressure diagram needs at least 2 parts, got {parts}")
+    params = {"parts": parts, "method": used, "requested_method": method, "force": force, "plate": PLATE}
+    if force == "baumann":
+        params.update(filling=givens["filling"], compression=givens["compression"])
+    b = Builder("tangential-pressure", givens, params)
+    f = build_frame(b)
+    n = parts
+    points = divide_semicircle(b, O=f["O"], D0=f["D0"], D1=f["D1"], circle=f["circle"], axis=f["axis"],
+                               n=n, method=used)
+    rod_arcs(b, f, points)
+    O, axis = f["O"], f["axis"]
+    if force == "baumann":
+        ctx = _setup(b, f)  # vertical through O, 90° point, proportional angle for r/L and c v^2/r
+        vert = ctx.vert
+        d = indicator_frame(b, base=axis, head=f["D0"], crank=f["D1"], prefix="ind.")
+        scale = d.prefix + "v.crank"
+    else:
+        with b.group("perpendicular to the stroke through O", "Senkrechte zum Hub durch O"):
+            vert = b.perpendicular_bisector("vert", f["D0"], f["D1"])
+        with b.group("unit force: the crank radius on the vertical through B", "Einheitskraft: r auf der Senkrechten in B"):
+            scale = b.erect_perpendicular("v.crank", f["D1"], axis, O)
+            k = b.circle_radius("M.k", f["D1"], f["r"], de="r in B aufgetragen", en="r laid off at B")
+            unit_mark = b.intersect("M", scale, k, rule=("toward", O, None, 0.0, 1.0),
+                                    de="Marke der Einheitskraft P′ = r", en="mark of the unit force P' = r")
+            unit_ray = b.line("ray", O, unit_mark, de="Strahl O–M (Proportionswinkel)", en="ray O-M (proportional angle)")
+    heights: dict[int, tuple[str, str]] = {}
+    with b.group(f"tangential pressure at all {n + 1} crank positions", f"Tangentialdruck an allen {n + 1} Kurbelstellungen"):
+        for k in range(1, n):
+            P = points[k]
+            with b.group(f"crank position {k}", f"Kurbelstellung {k}"):
+                rl = b.line(f"rl{k}", f"C{k}", P, de=f"Schubstange C{k}–{k} verlängert", en=f"rod line C{k}-{k} extended")
+                K = b.intersect(f"K{k}", rl, vert, rule=("only",), role="result", labels={f"K{k}": f"K{k}"},
+                                de=f"K{k} auf der Senkrechten durch O: T = P′·OK/r",
+                                en=f"K{k} on the perpendicular through O: T = P'·OK/r")
+                kH = b.circle_through(f"H{k}.k", O, K, de="OK auf die Hubachse geschlagen", en="OK swung onto the stroke line")
+                H = b.intersect(f"H{k}", axis, kH, rule=("toward", f["D0"], f["D1"]), de="H: OH = OK", en="H: OH = OK")
+                h = b.erect_perpendicular(f"h{k}", H, axis, O)
+                if force == "baumann":
+                    ray = b.line(f"ray{k}", O, _free_force_mark(b, f, ctx, d, scale, k, P, n),
+                                 de=f"Strahl O–M{k}", en=f"ray O-M{k}")
+                else:
+                    ray = unit_ray
+                Q = b.intersect(f"Q{k}", ray, h, rule=("only",), de=f"Q{k}: P′·OK/r (Strahlensatz)",
+                                en=f"Q{k}: P'·OK/r (intercept theorem)")
+                heights[k] = (H, Q)
+    _unrolled(b, f, points, n, heights)
+    proto = b.protocol()
+    return Figure(proto, proto.replay(givens))
+
+
+def _free_force_mark(b: Builder, f: Mapping[str, str], ctx: Any, d: Any, scale: str, k: int, P: str, n: int) -> str:
+    """P' at crank position k: over-pressure (indicator) less the acceleration force, marked on the r-scale line."""
+    X = f"X{k}"
+    with b.group(f"free piston force at {k}", f"freie Kolbenkraft bei {k}"):
+        o = b.erect_perpendicular(f"o{k}", X, f["axis"], f["O"])
+        pts = pressures_at(b, d, o, str(k))
+        E, R = pts["steam"], pts["back"]
+        dc_p = ctx.D0 if 2 * k <= n else ctx.D1
+        dc_2 = ctx.D0 if (4 * k < n or 4 * k > 3 * n) else ctx.D1
+        V = _value(b, ctx, f"b{k}", P, _kind(k, n), dc_p, dc_2)
+        kF = b.circle_segment(f"F{k}.k", E, ctx.gf.origin, V, de="Beschleunigungsdruck von der Dampflinie abgezogen",
+                              en="acceleration force taken off the steam line")
+        F = b.intersect(f"F{k}", o, kF, rule=("left", ctx.gf.origin, V), role="result",
+                        de=f"F{k}: Rückdruck–F{k} = P′ (freie Kolbenkraft)", en=f"F{k}: back line to F{k} = P' (free force)")
+        kM = b.circle_segment(f"M{k}.k", f["D1"], R, F, de="P′ auf die Senkrechte in B getragen",
+                              en="P' carried to the vertical through B")
+        return b.intersect(f"M{k}", scale, kM, rule=("toward", R, F), de=f"M{k}: P′ über B (oben positiv)",
+                           en=f"M{k}: P' above B (up = positive)")
+
+
+def _unrolled(b: Builder, f: Mapping[str, str], points: list[str], n: int, heights: Mapping[int, tuple[str, str]]) -> None:
+    r = b.givens["r"]
+    shortfall = chord_shortfall(n, r)
+    with b.group("the crank circle unrolled with the dividers", "Der Kurbelkreis mit dem Stechzirkel abgewickelt"):
+        U0 = b.given_point("U0", 2.6, -1.2, unit="r", de="Anfang der Abwicklung", en="start of the unrolled circle",
+                           label="0")
+        base = b.given_line("tbase", U0, angle_deg=0.0, de="Grundlinie: abgewickelter Kurbelkreis",
+                            en="base line: the unrolled crank circle")
+        chord = b.length_of("chord", f["D0"], points[1], de="Stechzirkel auf die Sehne eines Teils gestellt",
+                            en="dividers set to the chord of one division")
+        prov = _approx(f"dividers stepping the chord 2r·sin(π/2n) n times (n = {n}): the unrolled length falls "
+                       f"short of πr by r(π − 2n·sin(π/2n))", shortfall).combine(b.provenance[chord])
+        marks = [U0]
+        for k in range(1, n + 1):
+            name = f"U{k}"
+            b.record("dividers", "step_off", (base, marks[-1], chord), (name,),
+                     {"rule": ("toward", U0, None, 1.0, 0.0), "both": False},
+                     f"Sehne zum {k}. Mal abgetragen", f"chord stepped off for the {k}th time", provenance=prov,
+                     role="result", labels={name: str(k)} if k in (n // 2, n) else None)
+            marks.append(name)
+        # The compass about each mark through its neighbour: small circles, whatever n is.
+        ords = [b.erect_perpendicular(f"u{k}", m, base, marks[1] if k == 0 else marks[k - 1]) for k, m in enumerate(marks)]
+    with b.group("tangential pressures carried to the unrolled circle", "Tangentialdrücke auf die Abwicklung getragen"):
+        curve_pts = [U0]
+        for k in range(1, n):
+            H, Q = heights[k]
+            kT = b.circle_segment(f"T{k}.k", marks[k], H, Q, de=f"T{k} mit dem Zirkel übertragen",
+                                  en=f"T{k} carried with the compass")
+            curve_pts.append(b.intersect(f"T{k}", ords[k], kT, rule=("toward", H, Q), role="result",
+                                         de=f"Tangentialdruck T{k}", en=f"tangential pressure T{k}"))
+        curve_pts.append(marks[n])
+    with b.group("curve, mean line and excess area", "Tangentialdrucklinie, Ausgleichende und Überschussfläche"):
+        b.french_curve("tcurve", base, curve_pts, {}, de="Tangentialdrucklinie mit dem Curvenlineal",
+                       en="tangential-pressure line with the French curve")
+        plan = _approx("planimeter: area under the drawn curve over the drawn base, divided by the base length "
+                       "(traced along 64 chords per curve segment)", 1e-6)
+        b.area_between("under", "tcurve", base, U0, marks[n], role="auxiliary",
+                       de="Fläche unter der Tangentialdrucklinie", en="area under the tangential-pressure line")
+        b.record("planimeter", "planimeter_height", ("under", U0, marks[n]), ("hm",), {},
+                 "Planimeter: mittlere Höhe = Fläche / Länge", "planimeter: mean height = area / length",
+                 provenance=plan.combine(prov))
+        up = ("toward", None, None, 0.0, 1.0)
+        for end, mark, ordinate in (("M0", U0, ords[0]), ("Mn", marks[n], ords[n])):
+            k = b.circle_radius(f"{end}.k", mark, "hm", de="mittlere Höhe mit dem Zirkel angetragen",
+                                en="mean height set off with the compass")
+            b.intersect(end, ordinate, k, rule=up, de=f"{end}: mittlere Höhe über der Grundlinie",
+                        en=f"{end}: mean height above the base", provenance=plan.combine(prov))
+        b.line("mean", "M0", "Mn", role="result", de="Ausgleichende MM (Höhe 2Pᵢ/π)", en="mean line MM (height 2P_i/pi)")
+        eye = _approx("crossings of the mean line with the drawn curve, read off the drawing", 1e-6)
+        for name, rule, label in (("A1", ("toward", None, None, -1.0, 0.0), "α1"),
+                                  ("A2", ("toward", None, None, 1.0, 0.0), "α2")):
+            b.record("intersect", "intersect", ("tcurve", "mean"), (name,), {"rule": rule, "both": False},
+                     f"{label}: die Ausgleichende schneidet die Tangentialdrucklinie ({'erster' if name == 'A1' else 'letzter'} Schnitt)",
+                     f"{label}: where the mean line crosses the curve ({'first' if name == 'A1' else 'last'} crossing)",
+                     provenance=eye.combine(plan).combine(prov), role="result", labels={name: label})
+        b.area_between("excess", "tcurve", "mean", "A1", "A2", hatch_deg=90.0, role="result",
+                       de="Überschussfläche zwischen α1 und α2 (schraffiert)",
+                       en="excess area between alpha1 and alpha2 (hatched)")
+
+
+# --------------------------------------------------------------------------
+# Measurements on the figure.
+# --------------------------------------------------------------------------
+
+
+def _up(fig: Figure, point: str, origin: str) -> float:
+    """Signed height of *point* over *origin*, perpendicular to the stroke line (up positive)."""
+    p, o = fig.replay[point], fig.replay[origin]
+    return p[1] - o[1]
+
+
+def ok_over_r(fig: Figure, k: int) -> float:
+    """OK/r at crank position k, measured on the figure (0 at the dead centres)."""
+    n = fig.params["parts"]
+    if k in (0, n):
+        return 0.0
+    return _up(fig, f"K{k}", "O") / fig.replay.givens["r"]
+
+
+def t_over_unit(fig: Figure, k: int) -> float:
+    """The ordinate of T at k on the unrolled circle, over the force unit (r for a unit force, else 1 at)."""
+    n = fig.params["parts"]
+    g = fig.replay.givens
+    unit = g["r"] if fig.params["force"] == "unit" else g["pressure_unit"]
+    if k in (0, n):
+        return 0.0
+    return _up(fig, f"T{k}", f"U{k}") / unit
+
+
+def free_force(fig: Figure, k: int) -> float:
+    """P' at k in at (Baumann force), measured as the height of M_k over B."""
+    return _up(fig, f"M{k}", "D1") / fig.replay.givens["pressure_unit"]
+
+
+def unrolled_angle(fig: Figure, point: str) -> float:
+    """The crank angle of a point of the unrolled circle, read in proportion to the drawn length U0..Un."""
+    n = fig.params["parts"]
+    u0, un, p = fig.replay["U0"], fig.replay[f"U{n}"], fig.replay[point]
+    return math.pi * (p[0] - u0[0]) / (un[0] - u0[0])
+
+
+def mean_height(fig: Figure) -> float:
+    """Height of the mean line over the base, in force units."""
+    g = fig.replay.givens
+    unit = g["r"] if fig.params["force"] == "unit" else g["pressure_unit"]
+    return _up(fig, "M0", "U0") / unit
+
+
+def crossing_angles(fig: Figure) -> tuple[float, float]:
+    return unrolled_angle(fig, "A1"), unrolled_angle(fig, "A2")
+
+
+def excess_area(fig: Figure) -> float:
+    """The excess area as drawn, in force units times r (i.e. ∫(T − T_m) dα over (α1, α2) as drawn)."""
+    g = fig.replay.givens
+    unit = g["r"] if fig.params["force"] == "unit" else g["pressure_unit"]
+    return fig.replay["excess"].signed_area() / (unit * g["r"])
+
+
+# --------------------------------------------------------------------------
+# The analytic model (for the checks).
+# --------------------------------------------------------------------------
+
+
+def _sin_beta(w: float, lam: float) -> float:
+    return lam * math.sin(w)
+
+
+def factor(w: float, lam: float) -> float:
+    """sin(ω + β)/cos β: T/P' for the exact crank mechanism."""
+    b = math.asin(_sin_beta(w, lam))
+    return math.sin(w + b) / math.cos(b)
+
+
+def piston_fraction(w: float, lam: float) -> float:
+    """Exact piston path as a fraction of the stroke."""
+    return 0.5 * (1.0 - math.cos(w) + (1.0 - math.sqrt(1.0 - (lam * math.sin(w)) ** 2)) / lam)
+
+
+def model_force(w: float, g: Mapping[str, float], force: str) -> float:
+    """P' at crank angle w: 1 (unit) or over-pressure less the acceleration force (at)."""
+    if force == "unit":
+        return 1.0
+    lam = 1.0 / g["rod_ratio"]
+    x = piston_fraction(w, lam)
+    return (model_steam_pressure(x, g) - model_back_pressure(x, g)
+            - g["pressure_ratio"] * (math.cos(w) + lam * math.cos(2.0 * w)))
+
+
+def model_t(w: float, g: Mapping[str, float], force: str) -> float:
+    return model_force(w, g, force) * factor(w, 1.0 / g["rod_ratio"])
+
+
+def _kinks(g: Mapping[str, float], force: str) -> list[float]:
+    """Crank angles where P' has a corner (cut-off, start of compression): integration breaks there."""
+    if force == "unit":
+        return []
+    lam = 1.0 / g["rod_ratio"]
+    out = []
+    for x in (g["filling"], 1.0 - g["compression"]):
+        lo, hi = 0.0, math.pi
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if piston_fraction(mid, lam) < x else (lo, mid)
+        out.append(0.5 * (lo + hi))
+    return sorted(out)
+
+
+def _integrate(fn, a: float, b: float, breaks: list[float], m: int = 2000) -> float:
+    """Composite Simpson on each smooth piece (the kinks are break points)."""
+    edges = [a] + [t for t in breaks if a < t < b] + [b]
+    total = 0.0
+    for lo, hi in zip(edges, edges[1:]):
+        xs = np.linspace(lo, hi, 2 * m + 1)
+        ys = np.array([fn(float(x)) for x in xs])
+        h = (hi - lo) / (2 * m)
+        total += h / 3.0 * (ys[0] + ys[-1] + 4.0 * ys[1:-1:2].sum() + 2.0 * ys[2:-1:2].sum())
+    return float(total)
+
+
+def model_summary(g: Mapping[str, float], force: str) -> dict[str, float]:
+    """Mean height, crossings α1, α2 and excess ∫(T − T_m) dα of the exact model (not of the drawing)."""
+    kinks = _kinks(g, force)
+    t = lambda w: model_t(w, g, force)  # noqa: E731
+    mean = _integrate(t, 0.0, math.pi, kinks) / math.pi
+    grid = np.linspace(0.0, math.pi, 3601)
+    vals = [t(float(w)) - mean for w in grid]
+    roots = []
+    for i in range(len(grid) - 1):
+        if vals[i] == 0.0 or vals[i] * vals[i + 1] < 0.0:
+            lo, hi = float(grid[i]), float(grid[i + 1])
+            for _ in range(80):
+                mid = 0.5 * (lo + hi)
+                if (t(lo) - mean) * (t(mid) - mean) <= 0.0:
+                    hi = mid
+                else:
+                    lo = mid
+            roots.append(0.5 * (lo + hi))
+    a1, a2 = roots[0], roots[-1]
+    excess = _integrate(lambda w: t(w) - mean, a1, a2, kinks)
+    return {"mean": mean, "alpha1": a1, "alpha2": a2, "excess": excess, "kinks": tuple(kinks)}
+
+
+# --------------------------------------------------------------------------
+# Checks.
+# --------------------------------------------------------------------------
+
+
+def drawn_model(g: Mapping[str, float], force: str, n: int) -> dict[str, float]:
+    """The method on exact data: the French curve through the model's n + 1 exact points, read as the figure is.
+
+    Its distance from :func:`model_summary` is the error of drawing the curve
+    through n + 1 points (the corner at the cut-off among it); the checks allow
+    twice that.  Abscissae are π k/n here: the chord scale of the figure only
+    stretches it uniformly (angles and mean height do not change; areas scale).
+    """
+    from ..kernel.areas import area_between
+    from ..kernel.curves import crossings
+    from ..kernel.geometry import Line, Point
+    from ..kernel.ops import OPS
+
+    pts = [Point(math.pi * k / n, model_t(math.pi * k / n, g, force)) for k in range(n + 1)]
+    base = Line(Point(0.0, 0.0), Point(math.pi, 0.0))
+    curve, = OPS["french_curve"].fn((base, *pts), {"points": n + 1, "tangent_at": ()}, {}, (), None)
+    mean_height = area_between(curve, base, 0.0, math.pi).signed_area() / math.pi
+    found = crossings(curve, Line(Point(0.0, mean_height), Point(math.pi, mean_height)))
+    a1, a2 = found[0], found[-1]
+    mean = Line(Point(0.0, mean_height), Point(math.pi, mean_height))
+    excess = area_between(curve, mean, a1.x, a2.x).signed_area()
+    return {"mean": mean_height, "alpha1": a1.x, "alpha2": a2.x, "excess": excess}
+
+
+def tangential_checks(fig: Figure) -> list[Check]:
+    g = fig.replay.givens
+    n = fig.params["parts"]
+    force = fig.params["force"]
+    lam = 1.0 / g["rod_ratio"]
+    made_by = fig.replay.made_by()
+    checks: list[Check] = []
+    scale = 1.0 if force == "unit" else max(1.0, g["admission"] + g["back_pressure"])
+    for k in range(1, n):
+        w = crank_angle(fig, point_name(fig, k))  # the angle the point really has: the division's error drops out
+        checks.append(Check(f"OK/r at {k}", ok_over_r(fig, k), factor(w, lam), EUCLIDEAN_TOLERANCE,
+                            "rod line and perpendicular through O: straightedge steps", "r"))
+        if force == "baumann":
+            tol = 10 * EUCLIDEAN_TOLERANCE * scale / g["pressure_unit"]
+            checks.append(Check(f"P' at {k}", free_force(fig, k), model_force(w, g, force), tol,
+                                "hyperbola rays, inertia ordinate and compass: Euclidean, read in at", "at"))
+            checks.append(Check(f"T at {k}", t_over_unit(fig, k), model_t(w, g, force), 2 * tol,
+                                "P'·OK/r by the intercept theorem: Euclidean, read in at", "at"))
+        else:
+            checks.append(Check(f"T/P at {k}", t_over_unit(fig, k), factor(w, lam), EUCLIDEAN_TOLERANCE,
+                                "proportional angle with P' = r: Euclidean", "P"))
+    r = g["r"]
+    prov = made_by[f"U{n}"].provenance
+    length = fig.replay["U0"].distance(fig.replay[f"U{n}"])
+    chord = fig.replay["D0"].distance(fig.replay[point_name(fig, 1)])
+    tol_w, why_w = angle_tolerance(fig, point_name(fig, 1), made_by)
+    checks.append(Check("unrolled length", length / r, math.pi, chord_shortfall(n) * 1.000001 + n * tol_w,
+                        f"{prov.method}; division error {why_w}", "r"))
+    checks.append(Check("unrolled length (dividers)", length / r, n * chord / r, 10 * EUCLIDEAN_TOLERANCE,
+                        "n equal steps of the chord as drawn: Euclidean once the opening is set", "r"))
+    model = model_summary(g, force)
+    drawn = drawn_model(g, force, n)
+    unit = "at" if force == "baumann" else "P"
+    why = "the French curve through n + 1 points (twice its error on exact data) and the planimeter (1e-6)"
+    tol_h = 2.0 * abs(drawn["mean"] - model["mean"]) + 1e-6 * scale
+    checks.append(Check("mean height (planimeter)", mean_height(fig), model["mean"], tol_h, why, unit))
+    a1, a2 = crossing_angles(fig)
+    for name, measured in (("alpha1", a1), ("alpha2", a2)):
+        tol = 2.0 * abs(drawn[name] - model[name]) + 1e-5
+        checks.append(Check(name, measured, model[name], tol, why + "; read off the unrolled scale", "rad"))
+    # The chord-stepped abscissae scale every area by n·chord/(πr).
+    chord_factor = 2 * n * math.sin(math.pi / (2 * n)) / math.pi
+    tol_e = 2.0 * abs(drawn["excess"] - model["excess"]) + abs(model["excess"]) * (1.0 - chord_factor) + 1e-5 * scale
+    checks.append(Check("excess area", excess_area(fig), model["excess"], tol_e,
+                        why + "; unrolled by chords: area scaled by n·chord/πr", f"{unit}·r"))
+    return checks
+
+
+TANGENTIAL = register(Construction(
+    name="tangential-pressure",
+    title=Caption("Tangentialdruckdiagramm mit Ausgleichender und Überschussfläche",
+                  "Tangential-pressure diagram with mean line and excess area"),
+    source="seed 004 (Baumann 1902), Fig. 26/27; DESIGN §5",
+    build=build_tangential,
+    checks=tangential_checks,
+    defaults={"rod_ratio": 5.0, "parts": 18, "method": "auto", "r": 1.0, "force": "baumann", "kappa": KAPPA,
+              **BAUMANN, "pressure_unit": 0.2},
+    book_params=({"rod_ratio": 5.0, "parts": 18, "kappa": 8.0}, {"rod_ratio": 5.0, "parts": 18, "kappa": 2.0}),
+    structural=("parts", "method", "force", "filling", "compression"),
+), validate=_validate)

@@ -1,0 +1,120 @@
+"""Errata of seed 004 (Baumann 1902): a few clear cases of each class, chosen by reading the seed.
+
+True values are recomputed here independently (mpmath quadrature of his integrands, not his closed
+forms; his equations 1)–3) solved with mpmath) where the errata module uses closed forms.
+"""
+
+import json
+import math
+
+import mpmath
+import pytest
+
+from construct.cli import main
+from construct.errata import CLASSES, all_errata
+from construct.errata_seed004 import entries
+from construct.reference import seed004
+
+mpmath.mp.dps = 20
+
+
+@pytest.fixture(scope="module")
+def by_key():
+    return {(e.table, e.row, e.column): e for e in entries()}
+
+
+def _get(by_key, table, row, column, printed, cls):
+    e = by_key[table, row, column]
+    assert (e.printed, e.class_) == (printed, cls), e
+    return e
+
+
+def test_every_printed_number_once_in_text_order(by_key):
+    numeric = [e for e in entries() if e.table != "formula"]
+    assert [(e.table, e.row, e.column, e.printed) for e in numeric] == [
+        (p.table, p.row, p.column, p.text) for p in seed004.all_printed()]
+    assert all(e.source == seed004.SOURCE and e.class_ in CLASSES for e in entries())
+
+
+def test_agrees(by_key):
+    _get(by_key, "Arm- und Nabengewicht", "arms and hub", "ln 6", "1,79", "agrees")
+    _get(by_key, "Tabelle Schwungmoment", "kz = 75, v = 15", "1 + 0,06 v²/kz", "1,18", "agrees")
+    e = _get(by_key, "Tangentialdruck-Fehler", "integral (s1 = 10 %, s0 = 5 %)", "f from α_f to π (mm·at)",
+             "-1,778", "agrees")
+    # independent: r (P0 - k p0) ∫ t'_a dα from his α_f = 33° 15' to π, by quadrature of his integrand (sin 2α)
+    af = mpmath.radians(33 + mpmath.mpf(15) / 60)
+
+    def t(a):
+        c, s = mpmath.cos(a), mpmath.sin(a)
+        return ((mpmath.mpf("0.2") - 1 + c - mpmath.mpf("0.1") * s ** 2)
+                / (1 - c + mpmath.mpf("0.1") * s ** 2 + mpmath.mpf("0.1"))
+                * (s + mpmath.sin(2 * a) / (10 - mpmath.mpf("0.2") * s ** 2)))
+
+    f = 50 * mpmath.mpf("0.15") * (1 - mpmath.mpf("0.805")) * mpmath.quad(t, [af, mpmath.pi])
+    assert e.true == pytest.approx(float(f), abs=1e-9)
+    e = _get(by_key, "Tangentialdruck-Fehler", "integral (s1 = 10 %, s0 = 5 %)", "A", "-0,0875", "agrees")
+
+
+def test_slips(by_key):
+    e = _get(by_key, "Fehler f_x", "case p = 4,85", "f_x", "0,0167", "slip")
+    # independent: ∫ x ds_a over the expansion, x = (s1 - s_a)/(s_a + s0)(P0 - k p0), k = 1,515 as he carries it
+    fx = mpmath.quad(lambda s: (mpmath.mpf("0.4") - s) / (s + mpmath.mpf("0.05")) * mpmath.mpf("0.15")
+                     * (1 - mpmath.mpf("1.515")), [mpmath.mpf("0.4"), 1])
+    assert e.true == pytest.approx(float(fx), abs=1e-12)
+    _get(by_key, "Arm- und Nabengewicht", "arms and hub", "G2 (kz in kg/cm²)", "0,08075", "slip")
+    e = _get(by_key, "Beispiele", "Gs 11400, Ds 5,4, n 60", "v", "16,95", "slip")
+    assert e.true == pytest.approx(math.pi * 5.4, abs=1e-12)
+
+
+def test_misprints(by_key):
+    e = _get(by_key, "Fehler f_x", "case p = 9,85", "k = 7,85/9,85", "0,805", "misprint")
+    assert e.true == pytest.approx(7.85 / 9.85, abs=1e-15)
+    e = _get(by_key, "Arm- und Nabengewicht", "moment", "G2'' coefficient", "0,01825", "misprint")
+    assert e.true == pytest.approx(0.25 * 7200 / 9.81 / 1e4, abs=1e-15)
+    e = _get(by_key, "Beispiele", "Gs 12900, Ds 4,50, n 105", "Gtotal (Richtige Werte)", "116800", "misprint")
+    assert "leading 1" in e.note
+    e = _get(by_key, "Tangentialdruck-Fehler", "angles κ = 8", "cos α2", "0,159", "misprint")
+    assert "sign dropped" in e.note and e.true == pytest.approx(math.cos(math.radians(99 + 10 / 60)), abs=1e-15)
+    e = _get(by_key, "Tangentialdruck-Fehler", "angles", "α_c (30 % compression)", "107° 50'", "misprint")
+    # his series s_a = s/2 (1 - cos α + 0.1 sin² α) = 0.7 s
+    ac = mpmath.findroot(lambda a: (1 - mpmath.cos(a) + mpmath.mpf("0.1") * mpmath.sin(a) ** 2) / 2
+                         - mpmath.mpf("0.7"), 1.9)
+    assert e.true == pytest.approx(float(mpmath.degrees(ac)), abs=1e-9)
+
+
+def test_crossing_angles_do_not_reproduce(by_key):
+    """α1, α2 for κ = 8 from his equations 1)–3), solved independently with mpmath."""
+    P, P0, s1, s0, s3, kappa = (mpmath.mpf(v) for v in ("7.85", "0.15", "0.1", "0.05", "0.3", "8"))
+
+    def T(a):
+        x = (1 - mpmath.cos(a) + mpmath.mpf("0.1") * mpmath.sin(a) ** 2) / 2
+        steam = P + P0 if x <= s1 else (P + P0) * (s1 + s0) / (x + s0)
+        back = P0 if x <= 1 - s3 else P0 * (s3 + s0) / (1 - x + s0)
+        acc = P / (mpmath.mpf("1.2") * kappa) * (mpmath.cos(a) + mpmath.mpf("0.2") * mpmath.cos(2 * a))
+        return (steam - back - acc) * (mpmath.sin(a) + mpmath.sin(2 * a) / (10 - mpmath.mpf("0.2") * mpmath.sin(a) ** 2))
+
+    af = mpmath.acos(-5 + mpmath.sqrt(34))
+    ac = mpmath.acos(-5 + mpmath.sqrt(22))
+    mean = mpmath.quad(T, [0, af, ac, mpmath.pi]) / mpmath.pi
+    a1 = mpmath.findroot(lambda a: T(a) - mean, (0.1, 0.4), solver="bisect")
+    a2 = mpmath.findroot(lambda a: T(a) - mean, (1.4, 1.9), solver="bisect")
+    e1 = _get(by_key, "Tangentialdruck-Fehler", "angles κ = 8", "α1", "10° 20'", "misprint")
+    e2 = _get(by_key, "Tangentialdruck-Fehler", "angles κ = 8", "α2", "99° 10'", "misprint")
+    assert e1.true == pytest.approx(float(mpmath.degrees(a1)), abs=1e-6)
+    assert e2.true == pytest.approx(float(mpmath.degrees(a2)), abs=1e-6)
+
+
+def test_formula_misprints():
+    formulas = [e for e in entries() if e.table == "formula"]
+    assert len(formulas) == len(seed004.printed_formulas()) == 9
+    assert all(e.class_ == "misprint" and e.units is None and isinstance(e.true, str) for e in formulas)
+    rows = {e.row: e for e in formulas}
+    assert "sin 2α" in rows["sin(α + β)/cos β"].true and "cos 2α" in rows["sin(α + β)/cos β"].printed
+
+
+def test_construct_errata_lists_seed_004(capsys):
+    assert any(e.source == seed004.SOURCE for e in all_errata())
+    assert main(["errata", "--seed", "004", "--format", "json"]) == 0
+    records = json.loads(capsys.readouterr().out)
+    assert records and {r["source"] for r in records} == {seed004.SOURCE}
+    assert len(records) == len(seed004.all_printed()) + 9

@@ -38,10 +38,10 @@ from .errors import InvalidParameter
 from .reference import seed000
 from .reference.seed000 import PrintedValue
 
-__all__ = ["Erratum", "Reading", "errata", "all_errata", "classify", "read_printed", "true_value", "CLASSES", "SOURCES"]
+__all__ = ["Erratum", "Reading", "errata", "all_errata", "classify", "read_printed", "true_value", "CLASSES", "SOURCES", "errata_of"]
 
 #: The other seeds' errata modules (each has ``entries()``), listed after seed 000's by :func:`all_errata`.
-SOURCES = ("construct.errata_seed001", "construct.errata_seed004")
+SOURCES = ("construct.errata_seed001", "construct.errata_seed002", "construct.errata_seed004")
 
 CLASSES = ("agrees", "slip", "misprint")
 
@@ -443,6 +443,18 @@ def errata() -> list[Erratum]:
         return index[table, row, column]
 
     return [_entry(v, lookup) for v in printed] + _formula_entries()
+
+
+def errata_of(seed: str = "all") -> list[Erratum]:
+    """The errata of one seed ("000", "001", "002", "004") or of all of them, seed 000 first."""
+    out = all_errata()
+    if seed == "all":
+        return out
+    picked = [e for e in out if e.source.startswith(f"seed {seed}")]
+    if not picked:
+        raise InvalidParameter(f"no errata for seed {seed!r}; known: "
+                               f"{', '.join(sorted({e.source.split()[1].rstrip(',') for e in out}))}")
+    return picked
 
 
 def all_errata() -> list[Erratum]:

@@ -20,6 +20,7 @@ from . import analytic
 from .constructions import get
 from .constructions.crank import crank_angle, piston_fraction, point_name
 from .constructions.inertia import acceleration_rows, characteristic_point_rows, q_at_crank_angle_rows
+from .constructions.two_cranks import speed_fluctuation_rows
 
 __all__ = ["TABLES", "piston_path_table", "crank_angle_table", "acceleration_table", "characteristic_points_table"]
 
@@ -100,6 +101,11 @@ def flywheel_coefficients_table(*, kz: Sequence[float] | None = None, v: Sequenc
     return ("kz", "v", "arms_hub", "total_weight", "moment", "weight_for_moment"), coefficient_rows(kz, v)
 
 
+def speed_fluctuation_table(*, rod_ratio: float | None, step: float = 10.0) -> Table:
+    """Seed 002 § 146-147: the excess work of two cranks at 90 deg over a turn (units of Q r), from the construction."""
+    return ("crank_angle_deg", "work_excess"), speed_fluctuation_rows(rod_ratio=rod_ratio, step_deg=step)
+
+
 TABLES = {
     "piston-path": piston_path_table,
     "crank-angle": crank_angle_table,
@@ -108,4 +114,5 @@ TABLES = {
     "mass-forces": mass_forces_table,
     "tangential-pressure": tangential_pressure_table,
     "flywheel-coefficients": flywheel_coefficients_table,
+    "speed-fluctuation": speed_fluctuation_table,
 }

@@ -267,7 +267,7 @@ def test_table_2_angles_against_mpmath():
 
 
 def test_cli_json_shape(capsys):
-    assert main(["errata", "--format", "json"]) == 0
+    assert main(["errata", "--seed", "000", "--format", "json"]) == 0
     records = json.loads(capsys.readouterr().out)
     # seed 000's numbers and formulas; the other seeds' entries follow, each naming its seed
     assert len([r for r in records if r["source"].startswith("seed 000")]) == 251 + 6

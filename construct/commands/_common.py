@@ -37,13 +37,18 @@ def add_construction_options(p: argparse.ArgumentParser, *, name_optional: bool 
     p.add_argument("--divisions", type=_whole, metavar="M", help="divisions of the stroke (crank-angle)")
     p.add_argument("--radius", type=_number, metavar="R", help="crank radius r in drawing units")
     p.add_argument("--pressure-ratio", type=_number, metavar="F/f", help="F/f of the inertia pressures")
+    p.add_argument("--infinite-rod", action="store_true", default=None,
+                   help="an infinitely long connecting rod (instead of --rod-ratio)")
+    p.add_argument("--fluctuation", type=_number, metavar="K", help="Qr/((m1+m2) v1^2) of the two cranks")
+    p.add_argument("--magnify", type=_number, metavar="G", help="magnification of the speed deviations (two-cranks)")
     p.add_argument("--given", action="append", default=[], metavar="NAME=VALUE",
                    help="set a given of a --protocol by its own name (repeatable), e.g. --given s=10")
     _add_generic_options(p)
 
 
 PARAM_OPTIONS = {"rod_ratio": "rod_ratio", "parts": "parts", "method": "method", "divisions": "divisions",
-                 "radius": "r", "pressure_ratio": "pressure_ratio"}
+                 "radius": "r", "pressure_ratio": "pressure_ratio", "infinite_rod": "infinite_rod",
+                 "fluctuation": "fluctuation", "magnify": "magnify"}
 
 
 def _generic_params() -> dict[str, tuple[Any, str]]:
@@ -70,6 +75,8 @@ def _add_generic_options(p: argparse.ArgumentParser) -> None:
 
 
 def given_options(args: argparse.Namespace) -> dict[str, Any]:
+    if getattr(args, "infinite_rod", None) and getattr(args, "rod_ratio", None) is not None:
+        raise InvalidParameter("give either --rod-ratio K or --infinite-rod, not both")
     out = {}
     options = {**PARAM_OPTIONS, **{key: key for key in _generic_params()}}
     for opt, param in options.items():

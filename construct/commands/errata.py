@@ -20,7 +20,7 @@ import argparse
 import json
 from collections import Counter
 
-from ..errata import CLASSES, Erratum, all_errata
+from ..errata import CLASSES, Erratum, errata_of
 
 NAME = "errata"
 HELP = ("List every printed number of the seeds' tables and worked examples with its true value and a verdict "
@@ -34,12 +34,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--class", dest="class_", choices=CLASSES, default=None, help="show only the entries of this class"
     )
-    parser.add_argument("--seed", default=None, metavar="NNN", help="show only one seed's entries (000, 004, ...)")
+    parser.add_argument("--seed", default=None, metavar="NNN",
+                        help="show only one seed's entries (000, 001, 002, 004; default: all)")
 
 
 def run(args: argparse.Namespace) -> int:
-    entries = [e for e in all_errata() if (args.class_ is None or e.class_ == args.class_)
-               and (args.seed is None or e.source.startswith(f"seed {args.seed}"))]
+    entries = [e for e in errata_of(args.seed or "all") if args.class_ is None or e.class_ == args.class_]
     if args.format == "json":
         print(json.dumps([_json_record(e) for e in entries], ensure_ascii=False, indent=1))
     else:

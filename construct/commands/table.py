@@ -13,7 +13,7 @@ from ._common import _number, _whole
 
 NAME = "table"
 HELP = ("print a table (piston-path, crank-angle, acceleration, characteristic-points, mass-forces, "
-        "tangential-pressure, flywheel-coefficients)")
+        "tangential-pressure, flywheel-coefficients, speed-fluctuation)")
 
 
 def add_arguments(p) -> None:
@@ -29,6 +29,7 @@ def add_arguments(p) -> None:
     p.add_argument("--rod-length", type=_number, metavar="L", help="mass-forces: connecting-rod length, m")
     p.add_argument("--kz", type=_number, action="append", metavar="KG_CM2", help="allowed stress kz (flywheel; repeat)")
     p.add_argument("--v", type=_number, action="append", metavar="M_S", help="rim speed v (flywheel; repeat)")
+    p.add_argument("--infinite-rod", action="store_true", help="an infinitely long rod (speed-fluctuation)")
     p.add_argument("--format", choices=("text", "csv"), default="text")
 
 
@@ -64,6 +65,12 @@ def run(args) -> int:
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args), parts=args.parts, method=args.method)
     elif args.table == "flywheel-coefficients":
         cols, rows = TABLES[args.table](kz=args.kz, v=args.v)
+    elif args.table == "speed-fluctuation":
+        if args.infinite_rod and args.rod_ratio:
+            raise InvalidParameter("give either --rod-ratio K or --infinite-rod, not both")
+        if not (math.isfinite(args.step) and 0 < args.step <= 90):
+            raise InvalidParameter(f"--step must be between 0 and 90 degrees, got {args.step!r}")
+        cols, rows = TABLES[args.table](rod_ratio=None if args.infinite_rod else _one_ratio(args), step=args.step)
     else:
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args))
     sys.stdout.write(format_table(cols, rows, args.format))

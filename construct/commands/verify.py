@@ -1,8 +1,9 @@
 """``construct verify``: rebuild the gallery and compare every file with the committed goldens.
 
-Every step frame, the final figures, the protocols and the reports are
-compared through the semantic diff (see :mod:`construct.regress.verify`); the report
-names the figure, the step and the element of each change.  Exit 0 when
+Every step (each figure's layered final.svg, step group by step group), the
+plates, the protocols and the reports are compared through the semantic diff
+(see :mod:`construct.regress.verify`); the report names the figure, the step
+and the element of each change.  Exit 0 when
 everything is equal, 1 when something differs, 2 on bad input.  With
 ``--update`` the goldens are replaced by the rebuilt tree and the report
 says what changed (exit 0).

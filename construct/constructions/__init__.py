@@ -40,6 +40,9 @@ class Construction:
     #: Structural params: changing them changes the steps, not just their values.
     structural: tuple[str, ...] = ()
     extra: Mapping[str, Any] = field(default_factory=dict)
+    #: The givens of a sweep over rod ratios L/r, from a figure's givens: for constructions that name the rod
+    #: otherwise (a rod length in metres) or whose other givens follow the rod ratio.  None: set "rod_ratio".
+    sweep: Callable[[Mapping[str, float], Any], dict[str, Any]] | None = None
 
     def figure(self, **params: Any) -> Figure:
         unknown = sorted(set(params) - set(self.defaults))
@@ -48,6 +51,14 @@ class Construction:
                                    f"it takes {', '.join(sorted(self.defaults))}")
         merged = {**self.defaults, **{k: v for k, v in params.items() if v is not None}}
         return self.build(**merged)
+
+    def rod_ratio_sweep(self, givens: Mapping[str, float], ratios: Any) -> dict[str, Any] | None:
+        """The givens that replay a figure of this construction at every rod ratio in *ratios* (None: no rod)."""
+        if self.sweep is not None:
+            return self.sweep(givens, np.asarray(ratios, dtype=float))
+        if "rod_ratio" not in givens:
+            return None
+        return {**givens, "rod_ratio": np.asarray(ratios, dtype=float)}
 
     def replay(self, protocol: Protocol, **givens: Any) -> Figure:
         """Replay an existing protocol with new givens (only those that keep the steps)."""
@@ -58,7 +69,8 @@ class Construction:
             if key in self.structural and protocol.params.get(key) != value:
                 raise InvalidParameter(
                     f"{key} = {value!r} changes the steps of the protocol ({key} = {protocol.params.get(key)!r}); "
-                    f"build it afresh with 'construct replay {self.name} --{key.replace('_', '-')} {value}'")
+                    f"build it afresh with 'construct replay {self.name} --{key.replace('_', '-')}"
+                    f"{'' if value is True else ' ' + str(value)}'")
             if key in values:
                 values[key] = positive(key, value)
         _validate_givens(self.name, values)
@@ -67,7 +79,7 @@ class Construction:
 
 _VALIDATORS: dict[str, Callable[[Mapping[str, float]], None]] = {}
 _REGISTRY: dict[str, Construction] = {}
-_MODULES = ("crank", "inertia", "indicator", "piston_force", "tangential")
+_MODULES = ("crank", "inertia", "indicator", "piston_force", "tangential", "two_cranks")
 
 
 def register(c: Construction, validate: Callable[[Mapping[str, float]], None] | None = None) -> Construction:

@@ -35,13 +35,18 @@ from . import Construction, Figure, positive, register, rod_ratio_param
 __all__ = ["CRANK", "CRANK_ANGLE", "piston_fraction", "crank_angle", "build_frame"]
 
 
-def build_frame(b: Builder, *, result_circle: bool = True) -> dict[str, str]:
-    """Crank centre, stroke line, crank circle and dead centres: the frame every figure starts from."""
+def build_frame(b: Builder, *, result_circle: bool = True, radius: tuple[str, ...] = ("r",),
+                rod: tuple[str, ...] = ("rod_ratio", "r")) -> dict[str, str]:
+    """Crank centre, stroke line, crank circle and dead centres: the frame every figure starts from.
+
+    *radius* and *rod* name the givens whose product is r and L (the books'
+    examples give metres and a drawing scale, the plates a ratio L/r).
+    """
     with b.group("crank circle and dead centres", "Kurbelkreis und Totpunkte"):
         O = b.given_point("O", 0.0, 0.0, de="Kurbelmittelpunkt O", en="crank centre O")
         axis = b.given_line("axis", O, angle_deg=0.0, de="Hubachse (Kolbenweglinie)", en="stroke line")
-        r = b.given_length("r", product=("r",), de="Kurbelhalbmesser r", en="crank radius r")
-        L = b.given_length("L", product=("rod_ratio", "r"), de="Schubstangenlänge L", en="connecting-rod length L")
+        r = b.given_length("r", product=radius, de="Kurbelhalbmesser r", en="crank radius r")
+        L = b.given_length("L", product=rod, de="Schubstangenlänge L", en="connecting-rod length L")
         k = b.circle_radius("crank", O, r, de="Kurbelkreis um O mit r", en="crank circle about O with radius r",
                             role="result" if result_circle else "construction")
         D0 = b.intersect("D0", axis, k, rule=("toward", O, None, -1.0, 0.0), role="result",

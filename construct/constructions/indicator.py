@@ -171,7 +171,9 @@ def square(b: Builder, name: str, point: str, line: str, opening: str) -> str:
     """
     with b.group(f"perpendicular to {line} at {point}", f"Senkrechte zu {line} in {point}"):
         k = b.circle_radius(f"{name}.o", point, opening, de=f"Kreis um {point}", en=f"circle about {point}")
-        a, z = b.intersect((f"{name}.a", f"{name}.z"), line, k, rule=("nearer", point))
+        # Both crossings are equally near the centre: "nearer" could not decide, and float noise would pick a
+        # side (a replay jumped).  A fixed slant direction orders them on a horizontal and a vertical line alike.
+        a, z = b.intersect((f"{name}.a", f"{name}.z"), line, k, rule=("toward", None, None, 1.0, 1.0))
         return b.perpendicular_bisector(name, a, z)
 
 
@@ -208,36 +210,66 @@ def _offset_on_base(b: Builder, d: IndicatorDiagram, ordinate: str) -> float:
     return ((px - ax) * ux + (py - ay) * uy) / s2
 
 
-def pressures_at(b: Builder, d: IndicatorDiagram, ordinate: str, tag: str, *, tangents: bool = False) -> dict[str, str]:
+def pressures_at(b: Builder, d: IndicatorDiagram, ordinate: str, tag: str, *, tangents: bool = False,
+                 envelope: bool = False) -> dict[str, str]:
     """Construct the steam-line point and the back-pressure point on *ordinate* (perpendicular to the base).
 
     Returns ``{"steam": name, "back": name}`` (plus ``"steam_tangent"`` /
     ``"back_tangent"`` lines on the hyperbolas when *tangents*).  Which branch
     (admission line or expansion hyperbola; back-pressure line or compression
-    hyperbola) is read off the figure when the step is recorded: filling and
-    compression are therefore structural parameters of a protocol using this.
+    hyperbola) is read off the figure when the step is recorded -- unless
+    *envelope*: then both points are constructed on the ordinate and the
+    steam line takes the lower (the hyperbola lies above the admission line
+    before the cut-off), the back line the higher of its two, by a stored
+    rule; a replay that moves the ordinate past the cut-off or the start of
+    compression (another rod ratio) stays right.  Without it, filling and
+    compression are structural parameters of a protocol using this.
     The over-pressure p_ü is the distance back -> steam (steam above = positive).
     """
     p = d.prefix
     x = _offset_on_base(b, d, ordinate)
     out: dict[str, str] = {}
     edge = 1e-9
+
+    def admission(name: str) -> str:
+        return b.intersect(name, ordinate, d.admission, rule=("only",), role="result" if not envelope else "construction",
+                           de=f"Admissionslinie bei {tag}", en=f"admission line at {tag}")
+
+    def expansion(name: str) -> str:
+        return hyperbola_point(b, name, corner=d.Z0, known=d.cutoff, known_horizontal=d.admission,
+                               known_vertical=d.cutoff_ordinate, ordinate=ordinate, opening=d.opening,
+                               what=(f"Expansionslinie bei {tag}", f"expansion line at {tag}"),
+                               role="construction" if envelope else "result")
+
+    def back(name: str) -> str:
+        return b.intersect(name, ordinate, d.back, rule=("only",), role="result" if not envelope else "construction",
+                           de=f"Gegendrucklinie bei {tag}", en=f"back-pressure line at {tag}")
+
+    def compression(name: str) -> str:
+        return hyperbola_point(b, name, corner=d.Z1, known=d.compression_start, known_horizontal=d.back,
+                               known_vertical=d.compression_ordinate, ordinate=ordinate, opening=d.opening,
+                               what=(f"Kompressionslinie bei {tag}", f"compression line at {tag}"),
+                               role="construction" if envelope else "result")
+
+    if envelope:
+        down, up = ("toward", None, None, 0.0, -1.0), ("toward", None, None, 0.0, 1.0)
+        out["steam"] = b.pick(f"{p}E{tag}", admission(f"{p}Ea{tag}"), expansion(f"{p}Eh{tag}"), rule=down,
+                              role="result", de=f"Dampflinie bei {tag}: die untere von Admissionslinie und Expansionslinie",
+                              en=f"steam line at {tag}: the lower of admission line and expansion hyperbola")
+        out["back"] = b.pick(f"{p}R{tag}", back(f"{p}Ra{tag}"), compression(f"{p}Rh{tag}"), rule=up,
+                             role="result", de=f"Gegendrucklinie bei {tag}: die obere von Gegendruck- und Kompressionslinie",
+                             en=f"back line at {tag}: the higher of back-pressure line and compression hyperbola")
+        return out
     if x <= d.filling + edge:
-        out["steam"] = b.intersect(f"{p}E{tag}", ordinate, d.admission, rule=("only",), role="result",
-                                   de=f"Admissionslinie bei {tag}", en=f"admission line at {tag}")
+        out["steam"] = admission(f"{p}E{tag}")
     else:
-        out["steam"] = hyperbola_point(b, f"{p}E{tag}", corner=d.Z0, known=d.cutoff, known_horizontal=d.admission,
-                                       known_vertical=d.cutoff_ordinate, ordinate=ordinate, opening=d.opening,
-                                       what=(f"Expansionslinie bei {tag}", f"expansion line at {tag}"))
+        out["steam"] = expansion(f"{p}E{tag}")
         if tangents:
             out["steam_tangent"] = _tangent(b, d, out["steam"], ordinate, d.Z0, f"{p}tE{tag}")
     if x <= 1.0 - d.compression + edge:
-        out["back"] = b.intersect(f"{p}R{tag}", ordinate, d.back, rule=("only",), role="result",
-                                  de=f"Gegendrucklinie bei {tag}", en=f"back-pressure line at {tag}")
+        out["back"] = back(f"{p}R{tag}")
     else:
-        out["back"] = hyperbola_point(b, f"{p}R{tag}", corner=d.Z1, known=d.compression_start, known_horizontal=d.back,
-                                      known_vertical=d.compression_ordinate, ordinate=ordinate, opening=d.opening,
-                                      what=(f"Kompressionslinie bei {tag}", f"compression line at {tag}"))
+        out["back"] = compression(f"{p}R{tag}")
         if tangents:
             out["back_tangent"] = _tangent(b, d, out["back"], ordinate, d.Z1, f"{p}tR{tag}")
     return out

@@ -59,11 +59,11 @@ from ..kernel.instruments import Builder
 from ..kernel.proportional import fourth_proportional, scale_line, vertex_on
 from ..kernel.protocol import Caption
 from . import Construction, Figure, positive, register
-from .crank import angle_tolerance, crank_angle, point_name, rod_arcs
+from .crank import angle_tolerance, build_frame, crank_angle, point_name, rod_arcs
 from .indicator import back_pressure as model_back
 from .indicator import indicator_frame, indicator_givens, pressures_at, square
 from .indicator import steam_pressure as model_steam
-from .inertia import _Ctx, _kind, _ordinate_line, _value
+from .inertia.build import _Ctx, _kind, _ordinate_line, _value
 
 __all__ = ["PISTON_FORCE", "TAFEL_I", "HP_DIAGRAM", "GRAVITY", "piston_area_mean", "build_piston_force",
            "piston_force_checks", "mass_force", "piston_force", "abscissa", "mass_force_rows", "area_balance",
@@ -131,21 +131,8 @@ PLATE = (r"fbase", r"F\d+", r"K\d+|Ks[12]", r"M\d+", r"ord\d+", r"force[abc]", r
 
 
 def _frame(b: Builder) -> dict[str, str]:
-    """As :func:`construct.constructions.crank.build_frame`, with r and L from metres and the drawing scale."""
-    with b.group("crank circle and dead centres", "Kurbelkreis und Totpunkte"):
-        O = b.given_point("O", 0.0, 0.0, de="Kurbelmittelpunkt O", en="crank centre O")
-        axis = b.given_line("axis", O, angle_deg=0.0, de="Kolbenweglinie (Nulllinie des Dampfdiagramms)",
-                            en="piston-path line (zero line of the steam diagram)")
-        r = b.given_length("r", product=("crank_radius", "scale"), de="Kurbelhalbmesser R", en="crank radius R")
-        L = b.given_length("L", product=("rod_length", "scale"), de="Schubstangenlänge L", en="connecting-rod length L")
-        k = b.circle_radius("crank", O, r, de="Kurbelkreis (Halbkreis über dem Hub)", en="crank circle over the stroke")
-        D0 = b.intersect("D0", axis, k, rule=("toward", O, None, -1.0, 0.0), role="result",
-                         de="Totpunkt auf der Deckelseite (Hubanfang)", en="head-end dead centre (start of stroke)",
-                         labels={"D0": "A"})
-        D1 = b.intersect("D1", axis, k, rule=("toward", O, None, 1.0, 0.0), role="result",
-                         de="Totpunkt auf der Kurbelseite (Hubende)", en="crank-end dead centre (end of stroke)",
-                         labels={"D1": "B"})
-    return {"O": O, "axis": axis, "r": r, "L": L, "circle": k, "D0": D0, "D1": D1}
+    """The crank frame with r and L from metres and the drawing scale."""
+    return build_frame(b, radius=("crank_radius", "scale"), rod=("rod_length", "scale"))
 
 
 def _mass_setup(b: Builder, f: Mapping[str, str]) -> _Ctx:
@@ -203,7 +190,7 @@ def build_piston_force(*, parts: int, method: str, **values: Any) -> Figure:
     with b.group("piston forces from the steam diagram", "Kolbenkräfte aus dem Dampfdiagramm"):
         for tag, o in ords + corners:
             with b.group(f"piston force at {tag}", f"Kolbenkraft bei {tag}"):
-                pr = pressures_at(b, d, o, tag)
+                pr = pressures_at(b, d, o, tag, envelope=True)
                 foot = b.intersect(f"F{tag}", o, fbase, rule=("only",), de=f"Fußpunkt F{tag}", en=f"foot F{tag}",
                                    role="result" if tag.isdigit() else "construction")
                 _carry(b, f"K{tag}", foot, o, pr["back"], pr["steam"],
@@ -489,6 +476,7 @@ PISTON_FORCE = register(Construction(
     defaults={"parts": 18, "method": "auto", **TAFEL_I, **HP_DIAGRAM, "scale": 2.5, "force_unit": 1.2e-4},
     book_params=({}, {"weight": 990.0}),  # Tafel I: high-pressure and low-pressure side
     structural=("parts", "method", "filling", "compression"),
+    sweep=lambda g, ratios: {**g, "rod_length": ratios * g["crank_radius"]},  # L = (L/R) R
     extra={"help": {
         "weight": "weight G of the reciprocating parts in kg (Tafel I: 830 high-pressure, 990 low-pressure side)",
         "rpm": "revolutions per minute n (Tafel I: 50)",

@@ -59,7 +59,7 @@ from .crank import angle_tolerance, build_frame, crank_angle, point_name, rod_ar
 from .indicator import BAUMANN, indicator_frame, indicator_givens, pressures_at
 from .indicator import back_pressure as model_back_pressure
 from .indicator import steam_pressure as model_steam_pressure
-from .inertia import _kind, _setup, _value
+from .inertia.build import _kind, _setup, _value
 
 __all__ = ["TANGENTIAL", "build_tangential", "tangential_checks", "ok_over_r", "t_over_unit", "free_force",
            "model_t", "drawn_model", "unrolled_angle", "mean_height", "excess_area", "crossing_angles", "model_summary",
@@ -168,7 +168,7 @@ def _free_force_mark(b: Builder, f: Mapping[str, str], ctx: Any, d: Any, scale: 
     X = f"X{k}"
     with b.group(f"free piston force at {k}", f"freie Kolbenkraft bei {k}"):
         o = b.erect_perpendicular(f"o{k}", X, f["axis"], f["O"])
-        pts = pressures_at(b, d, o, str(k))
+        pts = pressures_at(b, d, o, str(k), envelope=True)
         E, R = pts["steam"], pts["back"]
         dc_p = ctx.D0 if 2 * k <= n else ctx.D1
         dc_2 = ctx.D0 if (4 * k < n or 4 * k > 3 * n) else ctx.D1
@@ -352,24 +352,40 @@ def _kinks(g: Mapping[str, float], force: str) -> list[float]:
 
 
 def _integrate(fn, a: float, b: float, breaks: list[float], m: int = 2000) -> float:
-    """Composite Simpson on each smooth piece (the kinks are break points)."""
+    """Composite Simpson on each smooth piece (the kinks are break points); *fn* takes an array of angles."""
     edges = [a] + [t for t in breaks if a < t < b] + [b]
     total = 0.0
     for lo, hi in zip(edges, edges[1:]):
         xs = np.linspace(lo, hi, 2 * m + 1)
-        ys = np.array([fn(float(x)) for x in xs])
+        ys = fn(xs)
         h = (hi - lo) / (2 * m)
         total += h / 3.0 * (ys[0] + ys[-1] + 4.0 * ys[1:-1:2].sum() + 2.0 * ys[2:-1:2].sum())
     return float(total)
+
+
+def model_t_array(w: np.ndarray, g: Mapping[str, float], force: str) -> np.ndarray:
+    """:func:`model_t` on an array of crank angles (the same formulas, with numpy)."""
+    lam = 1.0 / g["rod_ratio"]
+    beta = np.arcsin(lam * np.sin(w))
+    factor_w = np.sin(w + beta) / np.cos(beta)
+    if force == "unit":
+        return factor_w
+    x = 0.5 * (1.0 - np.cos(w) + (1.0 - np.sqrt(1.0 - (lam * np.sin(w)) ** 2)) / lam)
+    s1, s0, P, P0, s3 = g["filling"], g["clearance"], g["admission"], g["back_pressure"], g["compression"]
+    steam = np.where(x <= s1, P + P0, (P + P0) * (s1 + s0) / (x + s0))
+    back = np.where(x <= 1.0 - s3, P0, P0 * (s3 + s0) / (1.0 - x + s0))
+    force_w = steam - back - g["pressure_ratio"] * (np.cos(w) + lam * np.cos(2.0 * w))
+    return force_w * factor_w
 
 
 def model_summary(g: Mapping[str, float], force: str) -> dict[str, float]:
     """Mean height, crossings α1, α2 and excess ∫(T − T_m) dα of the exact model (not of the drawing)."""
     kinks = _kinks(g, force)
     t = lambda w: model_t(w, g, force)  # noqa: E731
-    mean = _integrate(t, 0.0, math.pi, kinks) / math.pi
+    ts = lambda w: model_t_array(w, g, force)  # noqa: E731
+    mean = _integrate(ts, 0.0, math.pi, kinks) / math.pi
     grid = np.linspace(0.0, math.pi, 3601)
-    vals = [t(float(w)) - mean for w in grid]
+    vals = (ts(grid) - mean).tolist()
     roots = []
     for i in range(len(grid) - 1):
         if vals[i] == 0.0 or vals[i] * vals[i + 1] < 0.0:
@@ -382,7 +398,7 @@ def model_summary(g: Mapping[str, float], force: str) -> dict[str, float]:
                     lo = mid
             roots.append(0.5 * (lo + hi))
     a1, a2 = roots[0], roots[-1]
-    excess = _integrate(lambda w: t(w) - mean, a1, a2, kinks)
+    excess = _integrate(lambda w: ts(w) - mean, a1, a2, kinks)
     return {"mean": mean, "alpha1": a1, "alpha2": a2, "excess": excess, "kinks": tuple(kinks)}
 
 

@@ -151,9 +151,11 @@ def _graph(curve: Any):
     if isinstance(curve, Line):
         graph_ordinate(curve, 0.0)  # refuses a vertical line
         return None
-    pts = curve.curve_points(64) if curve.kind == "bezier" else curve.curve_points()
-    xs = np.array([p[0] for p in pts])
-    ys = np.array([p[1] for p in pts])
+    if curve.kind == "bezier":
+        xs, ys = curve.sample(64)
+    else:
+        pts = curve.curve_points()
+        xs, ys = np.array([p.x for p in pts]), np.array([p.y for p in pts])
     order = np.argsort(xs, kind="stable")
     return xs[order], ys[order]
 
@@ -217,9 +219,9 @@ def area_between(upper: Any, lower: Any, x_from: float, x_to: float, hatch_deg: 
         pieces.append((sign, run))
     out = []
     for s, rws in pieces:
-        ring = [Point(x, u) for x, u, _ in rws] + [Point(x, l) for x, _, l in reversed(rws)]
+        ring = [(x, u) for x, u, _ in rws] + [(x, l) for x, _, l in reversed(rws)]
         # Drop the doubled points where a run starts or ends on a crossing.
-        dedup = [p for i, p in enumerate(ring) if p != ring[i - 1]]
+        dedup = [Point(*p) for i, p in enumerate(ring) if p != ring[i - 1]]
         if len(dedup) >= 3:
             out.append((s, dedup))
     if not out:

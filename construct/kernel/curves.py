@@ -159,14 +159,24 @@ class BezierCurve(_Chain):
         w = (s * s * s, 3.0 * s * s * t, 3.0 * s * t * t, t * t * t)
         return (sum(wi * p[0] for wi, p in zip(w, seg)), sum(wi * p[1] for wi, p in zip(w, seg)))
 
+    def sample(self, per_segment: int = 16):
+        """The curve as a polyline, as two numpy arrays xs, ys: *per_segment* pieces per segment, ends exact."""
+        import numpy as np
+
+        t = np.arange(per_segment + 1)[:, None] / per_segment
+        s = 1.0 - t
+        weights = np.hstack([s ** 3, 3.0 * s * s * t, 3.0 * s * t * t, t ** 3])  # Bernstein basis
+        ctrl = np.array([[(p.x, p.y) for p in seg] for seg in self.segments()])  # (k, 4, 2)
+        pts = np.einsum("tj,kjd->ktd", weights, ctrl)
+        pts[:, 0, :] = ctrl[:, 0, :]  # the points the curve passes through, exactly as constructed
+        pts[:, -1, :] = ctrl[:, 3, :]
+        flat = np.concatenate([pts[:, :-1, :].reshape(-1, 2), ctrl[-1:, 3, :]])
+        return flat[:, 0], flat[:, 1]
+
     def curve_points(self, per_segment: int = 16) -> tuple[Point, ...]:
         """The curve as a polyline: *per_segment* pieces per Bézier segment, ends exact."""
-        out = [self.points[0]]
-        for seg in self.segments():
-            for i in range(1, per_segment):
-                out.append(Point(*self._at(seg, i / per_segment)))
-            out.append(seg[3])
-        return tuple(out)
+        xs, ys = self.sample(per_segment)
+        return tuple(Point(float(x), float(y)) for x, y in zip(xs, ys))
 
     def y_at(self, x: float) -> float:
         """The ordinate where the curve passes the abscissa *x* (the curve is a graph over x)."""

@@ -229,6 +229,21 @@ class Point(_Value):
         _set_x(self, _as_number(x))
         _set_y(self, _as_number(y))
 
+    def __iter__(self):
+        return iter((self.x, self.y))
+
+    def __eq__(self, other: object) -> bool:
+        if type(other) is not Point:
+            return NotImplemented
+        if type(self.x) is float and type(self.y) is float and type(other.x) is float and type(other.y) is float:
+            return self.x == other.x and self.y == other.y  # the common case, without building field tuples
+        return _Value.__eq__(self, other)
+
+    __hash__ = _Value.__hash__
+
+    def __getitem__(self, i: int) -> Any:
+        return (self.x, self.y)[i]
+
     def distance(self, other: "Point") -> Any:
         xp = ARRAY if is_sweep(self.x) or is_sweep(self.y) or is_sweep(other.x) or is_sweep(other.y) else SCALAR
         return xp.hypot(other.x - self.x, other.y - self.y)

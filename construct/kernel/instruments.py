@@ -25,12 +25,14 @@ import contextlib
 import math
 from dataclasses import replace
 from types import MappingProxyType
-from typing import Any, Iterator, Mapping, Sequence
+from typing import TYPE_CHECKING, Any, Iterator, Mapping, Sequence
 
 from .errors import DuplicateName, InvalidParameter, RuleError, StepError, UnknownObject, WrongInput
-from .ops import OPS
 from .protocol import EXACT, GIVEN, Caption, Protocol, Provenance, Replay, Step, compile_step, run_step
 from .rules import Rule, as_rule
+
+if TYPE_CHECKING:  # the figure module imports this one
+    from .figure import Figure
 
 __all__ = ["Builder"]
 
@@ -366,6 +368,26 @@ class Builder:
         self.record("dividers", "step_off", (curve, start, length), (name,), {"rule": rule, "both": False},
                     de or f"{name}: Stechzirkel {length} von {start} auf {curve} abgetragen",
                     en or f"{name}: dividers {length} stepped off from {start} along {curve}", role=role)
+        return name
+
+    def pick(self, name: str, a: str, b: str, *, rule: Rule | Sequence[Any], de: str | None = None,
+             en: str | None = None, role: str = "construction", labels: Mapping[str, str] | None = None) -> str:
+        """Of two constructed points, the one *rule* names: a curve that is the envelope of two, point by point.
+
+        The steam line of an indicator diagram is the lower of the admission
+        line and the expansion hyperbola: both are constructed on an ordinate,
+        the lower one is taken -- by a stored rule, so that a replay with other
+        givens takes the right one wherever the cut-off falls.
+
+        >>> from construct.kernel.rules import toward
+        >>> b = Builder("demo", givens={})
+        >>> _ = b.given_point("A", 1.0, 3.0); _ = b.given_point("B", 1.0, 2.0)
+        >>> b[b.pick("low", "A", "B", rule=toward(dy=-1.0))]
+        Point(1.0, 2.0)
+        """
+        self.record("intersect", "pick", (a, b), (name,), {"rule": rule},
+                    de or f"{name}: von {a} und {b} der nach der Regel", en or f"{name}: of {a} and {b} the one the rule names",
+                    role=role, labels=labels)
         return name
 
     # -- drawn curves and areas ----------------------------------------------------

@@ -27,6 +27,7 @@ from dataclasses import dataclass
 from typing import Any, Callable
 
 from .areas import Area, area_between_op, planimeter_height_op, planimeter_op
+from .closed_curves import closed_french_curve_op
 from .curves import BezierCurve, Polyline, crossings, french_curve_op, parabola_envelope_op, polyline_op
 from .errors import GeometryError, NoIntersection
 from .geometry import (SCALAR, Circle, Length, Line, Point, Sweep, _circle, _pt, circle_circle, line_circle,
@@ -194,6 +195,12 @@ def _cross_curve(c1, c2, rule, refs, both):
     return (chosen,)
 
 
+def _pick(args, params, givens, refs, xp):
+    """Of two constructed points, the one the rule names (the lower of two curves' points, say)."""
+    chosen, _ = choose(tuple(args), params["rule"], refs, xp)
+    return (chosen,)
+
+
 def _step_off(args, params, givens, refs, xp):
     """Dividers: from a point, step a length off along a curve (no arc is drawn, a point is pricked)."""
     curve, start, length = args
@@ -234,6 +241,8 @@ OPS: dict[str, Op] = {op.name: op for op in (
     Op("length_of", _length_of, ("point", "point"), doc="compass set to a segment"),
     Op("intersect", _intersect, ("curve", "curve"), rule=True, doc="where two drawn curves cross"),
     Op("step_off", _step_off, ("curve", "point", "length"), rule=True, doc="dividers stepped along a curve"),
+    Op("pick", _pick, ("point", "point"), rule=True,
+       doc="of two constructed points, the one a rule names (an envelope of two curves, point by point)"),
     Op("trial_chord", trial_chord_op, ("circle", "point", "point"), vector=False,
        doc="dividers set by trial to 1/n of an arc"),
     Op("neusis_archimedes", neusis_archimedes_op, ("point", "point", "point", "circle"), vector=False,
@@ -243,6 +252,7 @@ OPS: dict[str, Op] = {op.name: op for op in (
     Op("parabola_envelope", parabola_envelope_op, ("point", "point", "point"), vector=False,
        doc="the parabola enveloped by the joins of equal divisions of ED and DF"),
     Op("polyline", polyline_op, ("point", "point", "point*"), vector=False, doc="points joined by the straightedge"),
+    Op("smooth_loop", closed_french_curve_op, ("point", "point", "point*"), vector=False, doc="a closed French curve through points in order"),
     Op("area_between", area_between_op, ("graph", "graph", "point", "point"), vector=False,
        doc="the region between two graphs between two abscissae"),
     Op("planimeter", planimeter_op, ("area",), vector=False, doc="a planimeter's reading of an area"),

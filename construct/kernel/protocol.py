@@ -26,7 +26,7 @@ from __future__ import annotations
 import json
 from dataclasses import dataclass, field
 from types import MappingProxyType
-from typing import Any, Mapping, Sequence
+from typing import Any, Mapping
 
 import numpy as np
 
@@ -452,7 +452,31 @@ class Protocol:
         return d
 
     def to_json(self, replay: Replay | None = None) -> str:
-        return json.dumps(self.as_dict(replay), indent=1, ensure_ascii=False, sort_keys=False) + "\n"
+        """The protocol file: one line per step and per object, so that a diff names what changed, compactly.
+
+        >>> from construct.kernel.instruments import Builder
+        >>> b = Builder("demo", givens={})
+        >>> _ = b.given_point("A", 0.0, 0.0)
+        >>> print(b.protocol().to_json())  # doctest: +ELLIPSIS
+        {"format": "construct-protocol/1", "construction": "demo", ...
+         "steps": [
+          {"index": 1, "tool": "given", "op": "given_point", ...}
+         ],
+         "objects": {
+          "A": {"type": "point", "x": 0.0, "y": 0.0}
+         }}
+        <BLANKLINE>
+        """
+        d = self.as_dict(replay)
+        steps, objects = d.pop("steps"), d.pop("objects")
+
+        def line(v: Any) -> str:
+            return json.dumps(v, ensure_ascii=False, separators=(", ", ": "))
+
+        head = line(d)[:-1]
+        body = ",\n".join(f"  {line(s)}" for s in steps)
+        objs = ",\n".join(f"  {line(k)}: {line(v)}" for k, v in objects.items())
+        return f'{head},\n "steps": [\n{body}\n ],\n "objects": {{\n{objs}\n }}}}\n'
 
     @classmethod
     def from_dict(cls, d: Any) -> "Protocol":

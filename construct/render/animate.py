@@ -38,8 +38,8 @@ MAX_STAGES = 1000
 
 #: Looks of the step groups, for players that switch classes on a whole step.
 STEP_GROUP_CSS = """g.hid{display:none}
-g.cur>*{stroke:%(hl)s;stroke-width:%(hw)s}
-g.cur>.pt,g.cur>.lb{fill:%(hl)s;stroke:none}
+g.cur>*,g.stage.cur>g>*{stroke:%(hl)s;stroke-width:%(hw)s}
+g.cur>.pt,g.cur>.lb,g.stage.cur>g>.pt,g.stage.cur>g>.lb{fill:%(hl)s;stroke:none}
 g.old{opacity:%(op)s}"""
 
 
@@ -101,31 +101,47 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
     clock = f.rect(insert=("0", "0"), size=("0", "0"), id="clock-face")
     clock.add(f.animate(id="clock", attributeName="x", from_="0", to="0", begin="0s;clock.end", dur=f"{fmt(total)}s"))
     dwg.add(clock)
+    def timing(i: int, kind: str, fade: int | None = None) -> list[Any]:
+        """The <set>s that show stage i's group (of class *kind*) at its time, then mark it current and earlier;
+        after stage *fade* (its group finished) it fades to the end of the play, its results staying."""
+        start = (i - 1) * dt
+        sets = []
+        if i > 1:
+            sets.append(f.set(attributeName="visibility", to="hidden", begin="clock.begin", dur=f"{fmt(start)}s"))
+        if marks_steps and style.highlight:
+            sets.append(f.set(attributeName="class", to=f"{kind} cur", begin=f"clock.begin+{fmt(start)}s",
+                              dur=f"{fmt(dt)}s"))
+        until = n if fade is None else fade
+        if marks_steps and style.earlier_opacity < 1.0 and i < n and until > i:
+            sets.append(f.set(attributeName="class", to=f"{kind} old", begin=f"clock.begin+{fmt(i * dt)}s",
+                              dur=f"{fmt((until - i) * dt)}s"))
+        if fade is not None and fade >= i:
+            sets.append(f.set(attributeName="class", to=f"{kind} done", begin=f"clock.begin+{fmt(fade * dt)}s",
+                              dur=f"{fmt(total - fade * dt)}s"))
+        return sets
+
+    by_step = n == len(d.scene.steps)
     for layer in d.LAYERS:
         lg = f.g(id=layer)
-        for k, elems in d.groups[layer]:
-            i = bisect.bisect_left(ends, k) + 1  # the stage that shows step k
-            start = (i - 1) * dt
-            timing = []
-            if i > 1:
-                timing.append(f.set(attributeName="visibility", to="hidden", begin="clock.begin", dur=f"{fmt(start)}s"))
-            if marks_steps and style.highlight:
-                timing.append(f.set(attributeName="class", to="step cur", begin=f"clock.begin+{fmt(start)}s",
-                                    dur=f"{fmt(dt)}s"))
-            end = d.scene.fade_end(k) if style.done_opacity < 1.0 else None
-            # the stage after which step k fades (its group finished), or none
-            j = bisect.bisect_left(ends, end) + 1 if end is not None else None
-            if marks_steps and style.earlier_opacity < 1.0 and i < n:
-                # old until its group is finished, then faded to the end of the play (its results stay)
-                until = n if j is None else j
-                if until > i:
-                    timing.append(f.set(attributeName="class", to="step old", begin=f"clock.begin+{fmt(i * dt)}s",
-                                        dur=f"{fmt((until - i) * dt)}s"))
-            if j is not None and j >= i:
-                timing.append(f.set(attributeName="class", to="step done", begin=f"clock.begin+{fmt(j * dt)}s",
-                                    dur=f"{fmt(total - j * dt)}s"))
-            # no ids: a <set> animates its parent, the step group
-            lg.add(d.step_group(k, timing + list(elems)))
+        if by_step:
+            for k, elems in d.groups[layer]:
+                # no ids: a <set> animates its parent, the step group
+                fade = d.scene.fade_end(k) if style.done_opacity < 1.0 else None
+                lg.add(d.step_group(k, timing(k, "step", fade) + list(elems)))
+        else:
+            # a stage of several steps: one group with the timing around its (unmarked) step groups
+            runs = d.groups[layer]
+            groups = d.plain_groups(layer)
+            j = 0
+            for i, last in enumerate(ends, start=1):
+                stage = f.g(class_="stage")
+                while j < len(runs) and runs[j][0] <= last:
+                    stage.add(groups[j])
+                    j += 1
+                if len(stage.elements):
+                    for e in timing(i, "stage"):
+                        stage.elements.insert(0, e)
+                    lg.add(stage)
         dwg.add(lg)
     furniture = d.furniture()  # the broken axis's marks (and a plate's furniture)
     if furniture is not None:

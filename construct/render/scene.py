@@ -204,7 +204,7 @@ class Scene:
         if not 1 <= k <= len(self.steps):
             return frozenset()
         s = self.steps[k - 1]
-        names = set(s.outputs) | set(s.inputs) | self._reader.mentioned(s.caption.de)
+        names = set(s.outputs) | set(s.inputs) | self._reader.mentioned(s.caption.de) | self._reader.mentioned(s.caption.en)
         for n in s.inputs:
             if n in self._reader.objects and n not in self._reader.points:
                 names.update(self._reader.curve_points(n))

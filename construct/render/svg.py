@@ -245,8 +245,13 @@ def group_caption(scene: Scene, k: int) -> str:
     """The group path of step k, German titles where the construction gave them."""
     if k <= 0:
         return ""
-    titles = scene.params.get("group_titles") or {}
-    return " › ".join(scene.readable(titles.get(g, g)) for g in scene.steps[k - 1].group)
+    path = scene.steps[k - 1].group
+    cache = scene.__dict__.setdefault("_group_captions", {})  # runs of steps share a group: once per group
+    text = cache.get(path)
+    if text is None:
+        titles = scene.params.get("group_titles") or {}
+        text = cache[path] = " › ".join(scene.readable(titles.get(g, g)) for g in path)
+    return text
 
 
 class Drawing:

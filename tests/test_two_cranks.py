@@ -1,0 +1,222 @@
+"""Two cranks at 90° (seed 002, § 146–147) against an independent high-precision computation.
+
+The references are computed here with mpmath from the piston's geometry
+(x = r(1 − cos w) + L − sqrt(L² − r² sin² w), or r(1 − cos w) for the
+infinite rod), never from construct's own formulas.
+"""
+
+import json
+import math
+
+import mpmath
+import pytest
+
+from construct.cli import main
+from construct.constructions import get
+from construct.constructions.two_cranks import crank_angle, speed_radius, speeds, work_excess
+from construct.errors import InvalidParameter
+from construct.kernel.protocol import Protocol
+
+
+def position_mp(w, ratio):
+    """Piston position from the head-end dead centre, units of r (None: infinite rod)."""
+    if ratio is None:
+        return 1 - mpmath.cos(w)
+    L = mpmath.mpf(ratio)
+    return 1 - mpmath.cos(w) + L - mpmath.sqrt(L ** 2 - mpmath.sin(w) ** 2)
+
+
+def travel_mp(theta, ratio, samples_per_half=1):
+    """Distance travelled while the crank turns 0..theta: sum of |dx| over the monotone half turns."""
+    total = mpmath.mpf(0)
+    a = mpmath.mpf(0)
+    while a < theta:
+        b = min(a + mpmath.pi, theta)
+        total += abs(position_mp(b, ratio) - position_mp(a, ratio))
+        a = b
+    return total
+
+
+def excess_mp(j, n, ratio):
+    """e(alpha_j)/(Q r), alpha_j = j pi / n, 40 digits."""
+    with mpmath.workdps(40):
+        a = mpmath.pi * j / n
+        h = mpmath.pi / 2
+        return float(travel_mp(a, ratio) + travel_mp(a + h, ratio) - travel_mp(h, ratio) - 4 * a / mpmath.pi)
+
+
+@pytest.fixture(scope="module")
+def finite():
+    return get("two-cranks").figure(rod_ratio=5.0, parts=12)
+
+
+@pytest.fixture(scope="module")
+def infinite():
+    return get("two-cranks").figure(infinite_rod=True, parts=12)
+
+
+@pytest.mark.parametrize("ratio", [4.0, 5.0, 2.5])
+def test_excess_work_matches_exact_piston_law(ratio):
+    fig = get("two-cranks").figure(rod_ratio=ratio, parts=12)
+    for j in range(25):
+        assert work_excess(fig, j) == pytest.approx(excess_mp(j, 12, ratio), abs=1e-12), j
+        assert work_excess(fig, j, infinite=True) == pytest.approx(excess_mp(j, 12, None), abs=1e-12), j
+
+
+def test_infinite_rod_first_quadrant_is_the_books_formula(infinite):
+    for j in range(7):
+        a = math.pi * j / 12
+        book = 1 + math.sin(a) - math.cos(a) - 4 * a / math.pi  # § 146, infinite rod
+        assert work_excess(infinite, j) == pytest.approx(book, abs=1e-12)
+
+
+def test_equal_speed_every_45_degrees_for_the_infinite_rod_only(infinite, finite):
+    assert all(abs(work_excess(infinite, j)) < 1e-12 for j in range(0, 25, 3))
+    # § 147: with a finite rod the half turn no longer closes: 180 degrees is below v1
+    lam = mpmath.mpf(1) / 5
+    e180 = float(-2 * (1 / lam - mpmath.sqrt(1 / lam ** 2 - 1)))  # both pistons lose 2(L - sqrt(L^2 - r^2))
+    assert work_excess(finite, 12) == pytest.approx(e180, abs=1e-12)
+    assert work_excess(finite, 24) == pytest.approx(0.0, abs=1e-12)  # a whole turn: 8 r of work either way
+
+
+def test_quadrants_differ_for_a_finite_rod(finite):
+    rises = []
+    for q in range(4):
+        es = [work_excess(finite, j) for j in range(6 * q, 6 * q + 7)]
+        rises.append(max(es) - es[0])
+    assert max(rises) - min(rises) > 0.03  # quadrant 1 rises ~0.04 Q r above its start, quadrant 2 not at all
+
+
+def test_constructed_extremes_carry_kochanskis_error_exactly():
+    fig = get("two-cranks").figure(infinite_rod=True, parts=4)
+    with mpmath.workdps(40):
+        rho = mpmath.sqrt(4 + (3 - mpmath.tan(mpmath.pi / 6)) ** 2)  # Kochanski's segment, r = 1
+        a1_k = mpmath.asin(16 / rho ** 2 - 1) / 2
+        a1 = mpmath.asin((4 / mpmath.pi) ** 2 - 1) / 2
+    m1, m2 = crank_angle(fig, "K.M1"), crank_angle(fig, "K.M2")
+    # the construction is Euclidean from Kochanski's segment on: float agreement with his value ...
+    assert m1 == pytest.approx(float(a1_k), abs=1e-12)
+    assert m2 == pytest.approx(float(mpmath.pi / 2 - a1_k), abs=1e-12)
+    # ... and off the exact angle by the rectification's error, as the provenance states
+    err = float(abs(a1_k - a1))
+    assert 3.5e-5 < err < 4.5e-5
+    assert abs(m1 - float(a1)) == pytest.approx(err, rel=1e-6)
+    prov = fig.replay.made_by()["K.M1"].provenance
+    assert prov.kind == "approximate" and "Kocha" in prov.method
+    assert prov.error == pytest.approx(err, rel=1e-9)
+    assert math.degrees(m1) == pytest.approx(19.19968, abs=0.003)  # 19°12' in the book
+    assert round(math.degrees(m2) * 60) == 70 * 60 + 48
+
+
+def test_speed_radii_are_the_books_law_magnified(finite):
+    g = finite.replay.givens
+    gain = g["fluctuation"] * g["magnify"]
+    for j in range(24):
+        assert speed_radius(finite, j) == pytest.approx(1 + gain * excess_mp(j, 12, 5.0), abs=1e-11)
+
+
+def test_speeds_with_and_without_the_books_simplification(infinite):
+    k = infinite.replay.givens["fluctuation"]
+    rows = speeds(infinite)
+    for row in rows:
+        e = excess_mp(row["index"], 12, None)
+        assert row["v_book"] == pytest.approx(1 + k * e, abs=1e-12)
+        assert row["v_exact"] == pytest.approx(math.sqrt(1 + 2 * k * e), abs=1e-12)
+    # the linear law is symmetric about v1, the exact one falls further than it rises
+    lo, hi = min(rows, key=lambda r: r["v_exact"]), max(rows, key=lambda r: r["v_exact"])
+    assert (1 - lo["v_exact"]) > (hi["v_exact"] - 1)
+
+
+def test_replay_with_another_rod_ratio_keeps_the_steps(finite):
+    again = get("two-cranks").replay(Protocol.from_json(finite.protocol.to_json()), rod_ratio=4.0)
+    for j in (3, 9, 17):
+        assert work_excess(again, j) == pytest.approx(excess_mp(j, 12, 4.0), abs=1e-12)
+
+
+def test_all_checks_pass_and_durer_division_is_reported():
+    c = get("two-cranks")
+    fig = c.figure(rod_ratio=5.0, parts=18)  # 10 degree steps: Dürer's trisection
+    checks = c.checks(fig)
+    assert all(ch.ok for ch in checks)
+    assert any("durer" in ch.why for ch in checks)
+
+
+def test_magnification_that_would_invert_a_radius_is_refused():
+    with pytest.raises(InvalidParameter, match="speed radius"):
+        get("two-cranks").figure(rod_ratio=2.0, magnify=20.0)
+    with pytest.raises(InvalidParameter, match="even number"):
+        get("two-cranks").figure(parts=9)
+
+
+# -- the command line ------------------------------------------------------------------
+
+
+def test_check_json_names_the_extreme_angles(capsys):
+    assert main(["check", "two-cranks", "--infinite-rod", "--parts", "8", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    names = {c["name"]: c for c in data["checks"]}
+    a1 = names["extreme angle alpha1 (constructed, deg)"]
+    a2 = names["extreme angle alpha2 (constructed, deg)"]
+    assert a1["expected"] == pytest.approx(19.19968, abs=1e-5) and a2["expected"] == pytest.approx(70.80032, abs=1e-5)
+    assert a1["ok"] and a2["ok"] and abs(a1["error"]) > 1e-3  # Kochański's 8 seconds of arc are visible
+
+
+def test_table_speed_fluctuation_csv(capsys):
+    assert main(["table", "speed-fluctuation", "--rod-ratio", "4", "--step", "15", "--format", "csv"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[0] == "crank_angle_deg,work_excess"
+    rows = [tuple(map(float, line.split(","))) for line in lines[1:]]
+    assert [r[0] for r in rows] == [15.0 * j for j in range(25)]
+    for j, (_, e) in enumerate(rows):
+        assert e == pytest.approx(excess_mp(j, 12, 4.0), abs=1e-12)
+
+
+def test_table_infinite_rod(capsys):
+    assert main(["table", "speed-fluctuation", "--infinite-rod", "--step", "10", "--format", "csv"]) == 0
+    rows = [tuple(map(float, line.split(","))) for line in capsys.readouterr().out.splitlines()[1:]]
+    assert len(rows) == 37
+    # 10 degree steps come from Dürer's trisection: its error (< 1e-7 rad) times |de/dalpha| <= 2 + 4/pi
+    for j, (_, e) in enumerate(rows):
+        assert e == pytest.approx(excess_mp(j, 18, None), abs=5e-7)
+
+
+@pytest.mark.parametrize("argv", [
+    ["check", "two-cranks", "--rod-ratio", "4", "--infinite-rod"],
+    ["check", "two-cranks", "--parts", "7"],
+    ["check", "two-cranks", "--magnify", "nan"],
+    ["table", "speed-fluctuation", "--step", "7", "--infinite-rod"],
+    ["table", "speed-fluctuation", "--rod-ratio", "4", "--infinite-rod"],
+])
+def test_bad_input_is_one_line_and_exit_2(argv, capsys):
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
+
+
+def test_historical_plate_reads_like_fig_566():
+    fig = get("two-cranks").figure(rod_ratio=5.0, parts=8)
+    svg = fig.svg("historical")
+    assert svg == get("two-cranks").figure(rod_ratio=5.0, parts=8).svg("historical")  # byte-stable
+    for text in ("M₁ 19°12′", "M₂ 70°48′", "B₁", "B₂", "B₃", "B₄", "v₁", "O′ (l = ∞)"):
+        assert text in svg, text
+    assert "-wave" in svg and "-iwave" in svg        # both wave curves, side by side
+    assert "-K-t4" not in svg and "-V3" not in svg   # the plate leaves the construction out
+    assert "-K-W1" in svg and "-K-W2" in svg         # the extremes on the wave
+
+
+def test_speed_without_either_simplification(finite):
+    """v_full against the kinetic energy of shaft and both crossheads, piston speeds by mpmath.diff."""
+    k, mu = finite.replay.givens["fluctuation"], 0.2
+    rows = speeds(finite, crosshead_share=mu)
+    with mpmath.workdps(30):
+        def share(a):  # (c1/v)^2 + (c2/v)^2 with c = dx/dalpha (r = 1, v = r omega)
+            d1 = mpmath.diff(lambda w: position_mp(w, 5.0), a)
+            d2 = mpmath.diff(lambda w: position_mp(w, 5.0), a + mpmath.pi / 2)
+            return d1 ** 2 + d2 ** 2
+        for row in rows[::3]:
+            a = mpmath.pi * row["index"] / 12
+            e = excess_mp(row["index"], 12, 5.0)
+            want = mpmath.sqrt(((1 - mu) + mu * share(0) + 2 * k * e) / ((1 - mu) + mu * share(a)))
+            assert row["v_full"] == pytest.approx(float(want), abs=1e-11), row["index"]
+    plain = speeds(finite)
+    assert all(r["v_full"] == pytest.approx(r["v_exact"], abs=1e-15) for r in plain)

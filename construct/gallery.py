@@ -48,6 +48,9 @@ FRAME_MODE = "none"
 #: and shows its storyboard; the historical style is the plate (the same construction's views in
 #: the plate's ink would double the gallery and teach nothing new).
 GALLERY_OUTPUTS = {"historical": (), "teaching": ("animated", "player", "storyboard")}
+#: The width (CSS px) at which the gallery page shows a figure: its own width, one figure per row,
+#: so that letters of 12 px and captions of 13-14 px are shown at that size (never under 9 px).
+DISPLAY_PX = 960
 
 
 def _value(v: Any) -> str:
@@ -212,12 +215,11 @@ def _readme(index: list[dict]) -> str:
                   f"*{_md(e['params_text'])}* — {_md(e['source'])}", "",
                   f"**Method:** {_md(e['method'])}", "",
                   f"**Checks:** {'✅' if e['ok'] else '❌'} {_md(e['checks'])} ([report]({s}/checks.md))", "",
-                  f"| historical (plate) | teaching ({e['steps']} steps) |", "|---|---|",
-                  f"| ![Fig. {e['number']}, historical]({s}/historical/final.svg) "
-                  f"| ![Fig. {e['number']}, teaching]({s}/teaching/final.svg) |",
-                  f"| plate "
-                  f"| [animated]({s}/teaching/animated.svg) · [player]({s}/teaching/player.html) · "
-                  f"[storyboard]({s}/teaching/storyboard.svg) |", ""]
+                  # one picture per row: at the page's width the letters stay at least 9 px (DISPLAY_PX)
+                  f"![Fig. {e['number']}, historical plate]({s}/historical/final.svg)", "",
+                  f"![Fig. {e['number']}, teaching]({s}/teaching/final.svg)", "",
+                  f"Teaching ({e['steps']} steps): [animated]({s}/teaching/animated.svg) · "
+                  f"[player]({s}/teaching/player.html) · [storyboard]({s}/teaching/storyboard.svg)", ""]
     return "\n".join(lines)
 
 
@@ -246,8 +248,8 @@ body{font:14px/1.45 'DejaVu Sans',Arial,sans-serif;margin:0 auto;max-width:1400p
 h1{font-size:22px}h2{font-size:17px;margin-bottom:2px}h2 .en{font-weight:normal;color:#666}
 .meta{color:#666;margin-top:0}.ok{color:#1b7f3b}.fail{color:#b00020;font-weight:bold}
 section{border-top:1px solid #ddd;padding:6px 0 12px}
-.pics{display:flex;gap:16px;flex-wrap:wrap}figure{margin:0;flex:1 1 560px}
-img{width:100%;height:auto;border:1px solid #ccc;background:#fff}figcaption{color:#555;font-size:12px}
+.pics{display:flex;flex-direction:column;gap:16px}figure{margin:0;width:100%;max-width:""" + str(DISPLAY_PX) + """px}
+img{width:100%;height:auto;border:1px solid #ccc;background:#fff}figcaption{color:#555;font-size:13px}
 </style></head><body>
 <h1>construct — gallery</h1>
 <p>Every construction at the books' parameters: the plate (historical style) and the construction step by step (teaching style, animated). Click the animation for the step player. Built by <code>construct gallery</code>.</p>

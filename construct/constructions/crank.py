@@ -98,7 +98,8 @@ def rod_arcs(b: Builder, f: Mapping[str, str], points: list[str]) -> None:
                                         en=f"arc about C{k} through point {k} back onto the stroke")
                 # At the dead centres the piston position is the dead centre itself: no second letter.
                 b.intersect(f"X{k}", back, f["axis"], rule=("toward", f["O"], None, 1.0, 0.0), role="result",
-                            de=f"Kolbenstellung X{k}: Kolbenweg A–X{k}", en=f"piston position X{k}: piston path A–X{k}",
+                            de=f"Kolbenstellung X{k}: Kolbenweg {f['D0']}–X{k}",
+                            en=f"piston position X{k}: piston path {f['D0']}–X{k}",
                             labels={f"X{k}": f"{k}'"} if 0 < k < n else None)
 
 
@@ -195,6 +196,51 @@ def crank_checks(fig: Figure) -> list[Check]:
     return checks
 
 
+# -- the plates' furniture (plain data; construct.render.plate draws it) -----------------------
+
+
+def _unit(a, b) -> tuple[float, float]:
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    n = math.hypot(dx, dy)
+    return dx / n, dy / n
+
+
+def frame_furniture(fig: Figure, crank_point: str | None = None, crosshead: str | None = None) -> list[dict]:
+    """Stroke s, crank radius r and rod length L as dimensions; the crank and the rod in one position.
+
+    Every length is read off the figure: r = O-B, the rod from the crank point
+    to its crosshead, L/r as the figure measures it.
+    """
+    R = fig.replay
+    O, D0, D1 = R["O"], R["D0"], R["D1"]
+    r = O.distance(D1)
+    out: list[dict] = [{"kind": "dimension", "a": tuple(D0), "b": tuple(D1), "text": "s = 2r", "offset": -0.2 * r}]
+    if crank_point is not None:
+        P = R[crank_point]
+        out += [{"kind": "stroke", "a": tuple(O), "b": tuple(P), "look": "heavy"},
+                {"kind": "dimension", "a": tuple(O), "b": tuple(P), "text": "r", "offset": -0.08 * r}]
+        if crosshead is not None:
+            # the rod to its crosshead, a rod length away: the renderer breaks the long empty stretch out
+            C = R[crosshead]
+            ratio = P.distance(C) / r
+            out += [{"kind": "stroke", "a": tuple(P), "b": tuple(C), "look": "heavy"},
+                    {"kind": "dot", "at": tuple(C)},
+                    {"kind": "lettering", "at": (C[0], C[1] - 0.12 * r), "text": "C"},
+                    {"kind": "stroke", "a": (C[0] - 0.15 * r, C[1]), "b": tuple(D0), "look": "centre"},
+                    {"kind": "dimension", "a": tuple(C), "b": tuple(P), "text": f"L = {ratio:.3g} r",
+                     "offset": 0.12 * r}]
+    return out
+
+
+def crank_plate(fig: Figure) -> dict:
+    """Fig. 1: centre line dash-dotted, rod arcs and ordinates thin, s and r dimensioned, crank at 40°."""
+    n = fig.params["parts"]
+    j = max(1, round(2 * n / 9))
+    looks = {"axis": "centre", **{f"back{k}": "thin" for k in range(n + 1)},
+             **{f"ord{k}": "thin" for k in range(1, n)}}
+    return {"looks": looks, "furniture": frame_furniture(fig, point_name(fig, j), f"C{j}")}
+
+
 CRANK = register(Construction(
     name="crank",
     title=Caption("Kolbenwege aus dem Kurbelkreis", "Piston paths from the crank circle"),
@@ -204,6 +250,7 @@ CRANK = register(Construction(
     defaults={"rod_ratio": 5.0, "parts": 18, "method": "auto", "r": 1.0},
     book_params=({"rod_ratio": 5.0, "parts": 18}, {"rod_ratio": 5.0, "parts": 9}),
     structural=("parts", "method"),
+    extra={"plate": crank_plate},
 ), validate=_validate)
 
 
@@ -229,7 +276,8 @@ def build_crank_angle(*, rod_ratio: float, divisions: int, r: float) -> Figure:
                 back = b.circle_radius(f"rod{j}", C, f["L"], de=f"Bogen um C{j} mit L auf den Kurbelkreis",
                                        en=f"arc about C{j} with L onto the crank circle")
                 b.intersect(f"W{j}", back, f["circle"], rule=("left", f["D0"], f["D1"]), role="result",
-                            de=f"Kurbelstellung W{j}: Winkel ω{j} = ∠AOW{j}", en=f"crank position W{j}: angle w{j} = AOW{j}",
+                            de=f"Kurbelstellung {j}: Kurbelwinkel ω{j} = ∠AO{j}",
+                            en=f"crank position {j}: crank angle ω{j} = ∠AO{j}",
                             labels={f"W{j}": f"{j}"})
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))
@@ -264,6 +312,35 @@ def crank_angle_checks(fig: Figure) -> list[Check]:
     return checks
 
 
+def crank_angle_plate(fig: Figure) -> dict:
+    """Fig. 77 with what Tabelle 2 tabulates: the radius to each found crank position, its angle arc and value.
+
+    The value is the angle AOW measured on the constructed figure, in degrees and minutes.
+    """
+    R = fig.replay
+    m = fig.params["divisions"]
+    O, D0 = R["O"], R["D0"]
+    r = O.distance(R["D1"])
+    out = frame_furniture(fig)
+    for j in range(1, m):
+        W = R[f"W{j}"]
+        w = crank_angle(fig, f"W{j}")
+        ux, uy = _unit(O, W)
+        minutes = round(math.degrees(w) * 60.0)
+        text = f"{minutes // 60}°{minutes % 60:02d}′"
+        # the value along its radius, reading outwards on the right and inwards on the left
+        along = math.degrees(math.atan2(uy, ux))
+        along = along - 180.0 if along > 90.0 else along
+        side = 0.035 * r
+        out += [{"kind": "stroke", "a": tuple(O), "b": tuple(W), "look": "thin"},
+                {"kind": "angle", "centre": tuple(O), "start": tuple(D0), "end": tuple(W),
+                 "radius": (0.12 + 0.45 * j / m) * r},
+                {"kind": "lettering", "at": (O[0] + 0.8 * r * ux - side * uy, O[1] + 0.8 * r * uy + side * ux),
+                 "text": text, "angle": along, "size": 0.9}]
+    looks = {"axis": "centre", **{f"rod{j}": "thin" for j in range(m + 1)}}
+    return {"looks": looks, "furniture": out}
+
+
 CRANK_ANGLE = register(Construction(
     name="crank-angle",
     title=Caption("Kurbelwinkel aus den Zehnteln des Hubes", "Crank angles from tenths of the stroke"),
@@ -273,4 +350,5 @@ CRANK_ANGLE = register(Construction(
     defaults={"rod_ratio": 5.0, "divisions": 10, "r": 1.0},
     book_params=({"rod_ratio": 4.0}, {"rod_ratio": 5.0}, {"rod_ratio": 6.0}),
     structural=("divisions",),
+    extra={"plate": crank_angle_plate},
 ), validate=_validate)

@@ -224,18 +224,20 @@ def _durer_trisect(b: Builder, O: str, a: str, c: str, circle: str, base: int) -
         chord = b.line(b.fresh(f"{tag}.s"), a, c, de=f"Sehne {a}{c}", en=f"chord {a}{c}")
         (C,) = b.divide_segment(f"{tag}.C", a, c, 3, line=chord, only=[1])
         perp = b.erect_perpendicular(f"{tag}.p", C, chord, a)
+        # Captions name the objects (the renderer writes them in the figure's letters: E, 0, 3 ...)
         E = b.intersect(f"{tag}.E", perp, circle, rule=("left", a, c),
-                        de="E: Senkrechte in C trifft den Bogen", en="E: the perpendicular at C meets the arc")
-        kE = b.circle_through(b.fresh(f"{tag}.k"), a, E, de=f"Kreis um {a} durch E", en=f"circle about {a} through E")
+                        de=f"{tag}.E: Senkrechte in {C} trifft den Bogen", en=f"{tag}.E: the perpendicular at {C} meets the arc")
+        kE = b.circle_through(b.fresh(f"{tag}.k"), a, E, de=f"Kreis um {a} durch {E}", en=f"circle about {a} through {E}")
         F = b.intersect(f"{tag}.F", kE, chord, rule=("toward", a, c),
-                        de="F: Kreis um A mit AE trifft die Sehne", en="F: the circle about A with radius AE meets the chord")
+                        de=f"{tag}.F: Kreis um {a} mit {a}{E} trifft die Sehne",
+                        en=f"{tag}.F: the circle about {a} with radius {a}{E} meets the chord")
         (G,) = b.divide_segment(f"{tag}.G", C, F, 3, line=chord, only=[2])
-        kG = b.circle_through(b.fresh(f"{tag}.k"), a, G, de=f"Kreis um {a} durch G", en=f"circle about {a} through G")
+        kG = b.circle_through(b.fresh(f"{tag}.k"), a, G, de=f"Kreis um {a} durch {G}", en=f"circle about {a} through {G}")
         approx = Provenance("approximate", "Dürer's trisection (1525)", error)
         name1 = _point_name(b, base + 1)
         b.record("intersect", "intersect", (kG, circle), (name1,), {"rule": ("nearer", c), "both": False},
-                 f"{name1}: Kreis um A mit AG trifft den Bogen (≈ 1/3)",
-                 f"{name1}: the circle about A with radius AG meets the arc (≈ 1/3 of it)", provenance=approx)
+                 f"{name1}: Kreis um {a} mit {a}{G} trifft den Bogen (≈ 1/3)",
+                 f"{name1}: the circle about {a} with radius {a}{G} meets the arc (≈ 1/3 of it)", provenance=approx)
         k2 = b.circle_segment(b.fresh(f"{tag}.k"), c, a, name1, de=f"Kreis um {c} mit {a}{name1}",
                               en=f"circle about {c} with radius {a}{name1}")
         name2 = _point_name(b, base + 2)

@@ -101,8 +101,9 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
     clock = f.rect(insert=("0", "0"), size=("0", "0"), id="clock-face")
     clock.add(f.animate(id="clock", attributeName="x", from_="0", to="0", begin="0s;clock.end", dur=f"{fmt(total)}s"))
     dwg.add(clock)
-    def timing(i: int, kind: str) -> list[Any]:
-        """The <set>s that show stage i's group (of class *kind*) at its time, then mark it current and earlier."""
+    def timing(i: int, kind: str, fade: int | None = None) -> list[Any]:
+        """The <set>s that show stage i's group (of class *kind*) at its time, then mark it current and earlier;
+        after stage *fade* (its group finished) it fades to the end of the play, its results staying."""
         start = (i - 1) * dt
         sets = []
         if i > 1:
@@ -110,9 +111,13 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
         if marks_steps and style.highlight:
             sets.append(f.set(attributeName="class", to=f"{kind} cur", begin=f"clock.begin+{fmt(start)}s",
                               dur=f"{fmt(dt)}s"))
-        if marks_steps and style.earlier_opacity < 1.0 and i < n:
+        until = n if fade is None else fade
+        if marks_steps and style.earlier_opacity < 1.0 and i < n and until > i:
             sets.append(f.set(attributeName="class", to=f"{kind} old", begin=f"clock.begin+{fmt(i * dt)}s",
-                              dur=f"{fmt((n - i) * dt)}s"))
+                              dur=f"{fmt((until - i) * dt)}s"))
+        if fade is not None and fade >= i:
+            sets.append(f.set(attributeName="class", to=f"{kind} done", begin=f"clock.begin+{fmt(fade * dt)}s",
+                              dur=f"{fmt(total - fade * dt)}s"))
         return sets
 
     by_step = n == len(d.scene.steps)
@@ -121,7 +126,8 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
         if by_step:
             for k, elems in d.groups[layer]:
                 # no ids: a <set> animates its parent, the step group
-                lg.add(d.step_group(k, timing(k, "step") + list(elems)))
+                fade = d.scene.fade_end(k) if style.done_opacity < 1.0 else None
+                lg.add(d.step_group(k, timing(k, "step", fade) + list(elems)))
         else:
             # a stage of several steps: one group with the timing around its (unmarked) step groups
             runs = d.groups[layer]
@@ -137,6 +143,9 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
                         stage.elements.insert(0, e)
                     lg.add(stage)
         dwg.add(lg)
+    furniture = d.furniture()  # the broken axis's marks (and a plate's furniture)
+    if furniture is not None:
+        dwg.add(furniture)
     # Captions: each stage's while it is drawn, the figure's title otherwise (and in still renderers).
     title_lines = d.title_lines(title or d.scene.title)[: d.n_caption]
     tg = d.caption_group(title_lines, id="title")

@@ -60,33 +60,86 @@ def frame_steps(scene: Scene, mode: str) -> list[int]:
 
 
 def scene_for(construction: Construction | None, figure: Figure, *, plate: bool = False) -> Scene:
-    return build_scene(figure, title=figure_title(construction, figure), plate=plate)
+    """The figure's scene; a plate carries the construction's furniture and line looks (:mod:`.plate`)."""
+    if plate:
+        from .plate import plate_of
+
+        p = plate_of(construction, figure)
+        return build_scene(figure, title=figure_title(construction, figure), plate=True,
+                           furniture=p.furniture, looks=dict(p.looks))
+    return build_scene(figure, title=figure_title(construction, figure))
 
 
-def params_text(figure: Figure) -> str:
-    """The figure's givens and parameters, e.g. ``r = 1, rod_ratio = 5, parts = 18, method = durer``."""
-    givens = [f"{k} = {v:g}" for k, v in sorted(figure.replay.givens.items())]
-    params = [f"{k} = {v}" for k, v in sorted(figure.params.items())
-              if k not in ("givens", "group_titles", "requested_method", "plate") and k not in figure.replay.givens]
-    return ", ".join(givens + params)
+#: How the books write the parameters: (German, English) per name; "{v}" is the value.
+_BOOK_PARAMS = {
+    "rod_ratio": ("L/r = {v}", "L/r = {v}"),
+    "pressure_ratio": ("F/f = {v}", "F/f = {v}"),
+    "pressure_unit": ("1 kg/cm² als {v} r gezeichnet", "1 kg/cm² drawn as {v} r"),
+    "parts": ("{v} Teile", "{v} parts"),
+    "divisions": ("Hub in {v} Teilen", "stroke in {v} parts"),
+}
+_BOOK_METHODS = {
+    "durer": ("Dürers Teilung", "Dürer's division"),
+    "exact": ("Teilung mit Zirkel und Lineal", "division by compass and straightedge"),
+    "neusis": ("Einschiebung (Archimedes)", "neusis (Archimedes)"),
+    "dividers": ("Teilung mit dem Stechzirkel", "division with the dividers by trial"),
+}
+_HIDDEN = ("givens", "group_titles", "requested_method", "plate")
+
+
+def _num(v) -> str:
+    return f"{v:g}" if isinstance(v, float) else str(v)
+
+
+def params_text(figure: Figure, lang: str = "en") -> str:
+    """The figure's givens and parameters in the books' notation, e.g. ``L/r = 5, 18 parts, Dürer's division``.
+
+    The crank radius is the unit of the drawing and is named only when it is not 1.
+
+    >>> from construct.constructions import get
+    >>> params_text(get("crank").figure(parts=18)), params_text(get("crank-angle").figure(rod_ratio=4.0), "de")
+    ("L/r = 5, 18 parts, Dürer's division", 'L/r = 4, Hub in 10 Teilen')
+    """
+    i = 0 if lang == "de" else 1
+    values = {**dict(figure.replay.givens), **{k: v for k, v in figure.params.items() if k not in _HIDDEN}}
+    out = []
+    order = ("rod_ratio", "pressure_ratio", "pressure_unit", "parts", "divisions", "method")
+    for key in sorted(values, key=lambda k: (order.index(k) if k in order else len(order), k)):
+        v = values[key]
+        if key == "r" and v == 1.0:
+            continue
+        if key == "method":
+            out.append(_BOOK_METHODS.get(str(v), (str(v), str(v)))[i])
+        elif key in _BOOK_PARAMS:
+            text = _BOOK_PARAMS[key][i].format(v=_num(v))
+            out.append(text.replace(".", ",") if lang == "de" and "kg" in text else text)
+        else:
+            out.append(f"{key.replace('_', ' ')} = {_num(v)}")  # a parameter the books do not name
+    return ", ".join(out)
 
 
 def figure_title(construction: Construction | None, figure: Figure) -> tuple[str, str]:
-    p = params_text(figure)
+    from .captions import equation
+
     if construction is None:  # a protocol of the user's own: its name is its title
-        name = figure.protocol.construction
+        name, p = figure.protocol.construction, params_text(figure)
         return (f"{name}; {p}" if p else name, f"{name}; {p}" if p else name)
     title = construction.title
-    return (f"{title.de} ({construction.source}); {p}", f"{title.en}; {p}")
+    return (f"{title.de} ({equation(construction.source)}); {params_text(figure, 'de')}",
+            f"{title.en}; {params_text(figure)}")
 
 
-def plate_caption(construction: Construction | None, figure: Figure, number: int | str | None = None) -> tuple[str, str]:
-    """A book plate's caption: "Fig. 1. Kolbenwege aus dem Kurbelkreis." and the English with the parameters."""
+def plate_caption(construction: Construction | None, figure: Figure,
+                  number: int | str | None = None) -> tuple[str, str]:
+    """A book plate's caption: "Fig. 1. Kolbenwege aus dem Kurbelkreis (L/r = 5, 18 Teile)." and the English."""
+    from .captions import equation
+
     fig = f"Fig. {number}." if number is not None else "Fig."
     if construction is None:
         name = figure.protocol.construction
         return (f"{fig} {name}.", f"{name} ({params_text(figure)})")
-    return (f"{fig} {construction.title.de}.", f"{construction.title.en} ({params_text(figure)}; {construction.source})")
+    return (f"{fig} {construction.title.de} ({params_text(figure, 'de')}).",
+            f"{construction.title.en} ({params_text(figure)}; {equation(construction.source)})")
 
 
 #: What a replay writes besides final.svg, steps/ and protocol.json.

@@ -109,6 +109,9 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         for group in d.plain_groups(layer):
             lg.add(group)
         dwg.add(lg)
+    furniture = d.furniture()  # the broken axis's marks (and a plate's furniture)
+    if furniture is not None:
+        dwg.add(furniture)
     svg = d.doc.markup(dwg)
     # Group captions and zoom boxes are shared by runs of steps: each is stored once, steps point to it.
     groups: dict[str, int] = {}
@@ -117,8 +120,12 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
     for s in scene.steps:
         de, en = scene.caption(s.index)
         z = _zoom_box(d, s.index)
-        steps.append({"de": de, "en": en, "g": groups.setdefault(group_caption(scene, s.index), len(groups)),
-                      "z": -1 if z is None else zooms.setdefault(tuple(z), len(zooms))})
+        st = {"de": de, "en": en, "g": groups.setdefault(group_caption(scene, s.index), len(groups)),
+              "z": -1 if z is None else zooms.setdefault(tuple(z), len(zooms))}
+        inputs = sorted(d.input_steps(s.index))
+        if inputs:  # the steps that made what this step's instrument is set on
+            st["i"] = inputs
+        steps.append(st)
     data = {"n": n, "steps": steps, "groups": list(groups), "zooms": [list(z) for z in zooms],
             "dt": round(1000 * STEP_SECONDS)}
     title = title or scene.title
@@ -245,7 +252,11 @@ li a.later{color:#bbb}
     k = Math.max(0, Math.min(n, j));
     groups.forEach(function (g) {
       var s = +g.getAttribute("data-step");
-      g.setAttribute("class", "step" + (s > k ? " hid" : (s === k && k < n ? " cur" : (k < n ? " old" : ""))));
+      // earlier steps: an input of step k, faded once their group is finished (data-fade), or old
+      var fade = +(g.getAttribute("data-fade") || 0), inp = k > 0 && k < n ? (data.steps[k - 1].i || []) : [];
+      g.setAttribute("class", "step" + (s > k ? " hid" : (s === k && k < n ? " cur" :
+        (s < k && inp.indexOf(s) >= 0 ? " inp" : (fade && fade < k + (k === n ? 1 : 0) && s < k + (k === n ? 1 : 0) ? " done" :
+        (k < n ? " old" : ""))))));
     });
     links.forEach(function (a) {
       var s = +a.getAttribute("data-k");

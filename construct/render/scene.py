@@ -19,6 +19,7 @@ True
 from __future__ import annotations
 
 import bisect
+import dataclasses
 import functools
 import math
 import re
@@ -27,6 +28,7 @@ from typing import Any, Iterable
 
 from ..kernel.geometry import Circle, Length, Line, Point
 from ..kernel.protocol import Protocol, Replay, Step
+from .captions import Reader
 
 __all__ = ["Mark", "Scene", "build_scene", "label_offset_direction"]
 
@@ -52,6 +54,8 @@ class Mark:
     provenance: str
     label: str | None = None
     group: tuple[str, ...] = ()
+    #: A line weight or pattern from the plate's description (heavy, thin, dashdot, dashed), "" = by role.
+    look: str = ""
     #: Areas: the direction of their hatching in degrees (None: the style's).
     hatch: float | None = None
 
@@ -65,75 +69,154 @@ class Scene:
     steps: tuple[Step, ...]
     title: tuple[str, str]
     params: dict
+    #: Broken axis: (x where the break starts, its drawn width, the length it leaves out), drawing units.
+    breaks: tuple[tuple[float, float, float], ...] = ()
+    #: Plate furniture (:mod:`construct.render.plate`): dimensions, angle arcs, scale bars, signs.
+    furniture: tuple = ()
+    #: What the book plate shows (:func:`plate_names`): what a finished group collapses to.
+    essentials: frozenset = frozenset()
 
     def upto(self, k: int) -> list[Mark]:
         """The marks made by steps 1..k."""
         return [m for m in self.marks if m.step <= k]
 
-    def readable(self, text: str) -> str:
-        """*text* with the construction's internal names shortened to what a reader sees.
+    def readable(self, text: str, lang: str = "de", outputs: tuple[str, ...] = ()) -> str:
+        """*text* in the figure's letters (:class:`construct.render.captions.Reader`).
 
         Composite steps name their helpers by path (``T4.G.M2``: mark M2 of
         the division G of trisection T4); in a caption beside the figure the
         last part is what the eye finds (the teaching style tags the current
-        step's points with it), the path is in the group title above.  Names
-        may run together (a group "T7.C1T7.F" for the segment from T7.C1 to
-        T7.F); the leftmost, then longest name wins.  Only the words before
-        each dot of *text* are looked up (by the name's first part), so the
-        cost grows with the text, not with the number of names.
+        step's points with it), the path is in the group title above.  A
+        lettered object goes by its letter (P12 -> 12); names that run together
+        (a group "T7.C1T7.F") are split and joined by a dash.  One identifier
+        pattern and dictionary look-ups: the cost grows with the text only.
 
         >>> from construct.constructions import get
         >>> sc = build_scene(get("crank").figure(parts=9))
-        >>> a, b = sorted(n for s in sc.steps for n in s.outputs if n.count(".") == 1)[:2]
-        >>> sc.readable(f"um {a}.") == f"um {a.split('.')[1]}.", sc.readable("x.y z") == "x.y z"
-        (True, True)
-        >>> sc.readable(a + b) == a.split(".")[1] + b.split(".")[1]
-        True
+        >>> sc.readable("Kreis um P3 durch T1.C1"), sc.readable("T1.C1T1.F geteilt")
+        ('Kreis um 3 durch C1', 'C1–F geteilt')
         """
-        if "." not in text:
-            return text
-        by_head = self._dotted
-        out: list[str] = []
-        i = 0
-        while True:
-            dot = text.find(".", i)
-            if dot < 0:
-                break
-            j = dot
-            while j > i and (text[j - 1].isalnum() or text[j - 1] == "_"):
-                j -= 1
-            hit = None
-            for start in range(j, dot):  # leftmost first, then longest
-                hit = next((name for name in by_head.get(text[start:dot], ()) if text.startswith(name, start)), None)
-                if hit:
-                    out += [text[i:start], hit.rsplit(".", 1)[1]]
-                    i = start + len(hit)
-                    break
-            if hit is None:
-                out.append(text[i:dot + 1])
-                i = dot + 1
-        out.append(text[i:])
-        return "".join(out)
+        key = (text, lang, tuple(outputs))
+        done = self._readable_cache.get(key)
+        if done is None:  # group titles recur on every step of their group: rewritten once
+            done = self._readable_cache[key] = self._reader.text(text, lang, outputs)
+        return done
 
     @functools.cached_property
-    def _dotted(self) -> dict[str, tuple[str, ...]]:
-        """The steps' dotted object names by their first part, longest first."""
-        heads: dict[str, list[str]] = {}
-        for n in {n for s in self.steps for n in s.outputs if "." in n}:
-            heads.setdefault(n.split(".", 1)[0], []).append(n)
-        return {h: tuple(sorted(ns, key=lambda n: (-len(n), n))) for h, ns in heads.items()}
+    def _readable_cache(self) -> dict[tuple, str]:
+        return {}
+
+    @functools.cached_property
+    def _reader(self) -> Reader:
+        kinds = {"segment": "line", "arc": "circle"}
+        makers = {n: s for s in self.steps for n in s.outputs}
+        objects = {}
+        for m in self.marks:
+            s = makers[m.name]
+            objects[m.name] = (kinds.get(m.kind, m.kind), m.label, s.op, tuple(s.inputs))
+        return Reader(objects)
 
     @functools.cached_property
     def _captions(self) -> list[tuple[str, str] | None]:
         return [None] * len(self.steps)
 
     def caption(self, k: int) -> tuple[str, str]:
-        """Step k's caption (German, English) in readable names, shortened once per step."""
+        """Step k's caption (German, English) in the figure's letters, rewritten once per step."""
         cached = self._captions[k - 1]
         if cached is None:
-            c = self.steps[k - 1].caption
-            cached = self._captions[k - 1] = (self.readable(c.de), self.readable(c.en))
+            s = self.steps[k - 1]
+            cached = self._captions[k - 1] = (self.readable(s.caption.de, "de", s.outputs),
+                                              self.readable(s.caption.en, "en", s.outputs))
         return cached
+
+    # -- what a teaching frame shows at strength ----------------------------------------
+    def fade_end(self, step: int) -> int | None:
+        """The last step of the group whose end fades *step*'s marks, or None if they stay at strength.
+
+        A group the student has finished collapses to its result: once the
+        group at depth two around a step is complete (one trisection, the rod
+        arcs of one point), its helpers fade; the results, and the curves that
+        locate them (the rod arc back onto the stroke), stay.
+        """
+        if self._keeps[step - 1]:
+            return None
+        end = self._ends[step - 1]
+        return end if end <= len(self.steps) else None
+
+    def faded(self, step: int, k: int) -> bool:
+        """Is *step* faded in frame *k* (k = len(steps) + 1: the final figure, every group finished)?"""
+        end = self.fade_end(step)
+        return end is not None and step < k and end < k
+
+    def step_of(self, name: str) -> int | None:
+        m = self._drawn.get(name)
+        return m.step if m is not None else None
+
+    @functools.cached_property
+    def _ends(self) -> list[int]:
+        """For each step, the last step of its group at depth two (or its top-level group)."""
+        ends = [0] * len(self.steps)
+        i, n = 0, len(self.steps)
+        while i < n:
+            key = self.steps[i].group[:2]
+            j = i
+            while j + 1 < n and self.steps[j + 1].group[:2] == key:
+                j += 1
+            for t in range(i, j + 1):
+                # ungrouped steps (the givens) never fade
+                ends[t] = j + 1 if key else n + 1
+            i = j + 1
+        return ends
+
+    @functools.cached_property
+    def _locating(self) -> frozenset[str]:
+        """What a finished group collapses to: lettered points and what the book plate shows
+        (:func:`plate_names`: results, the curves that locate them, their points); without
+        the plate, results, the curves a result step cuts (the rod arc back onto the stroke)
+        and the points those curves are drawn from (the crosshead the arc is struck about)."""
+        out = {m.name for m in self.marks if m.label} | set(self.essentials)
+        if self.essentials:
+            return frozenset(out)
+        makers = {n: s for s in self.steps for n in s.outputs}
+        for s in self.steps:
+            if s.role == "result":
+                out.update(s.outputs)
+                for n in s.inputs:
+                    out.add(n)
+                    if n in makers and makers[n].op.startswith("circle"):
+                        out.update(makers[n].inputs[:1])
+        return frozenset(out)
+
+    @functools.cached_property
+    def _keeps(self) -> list[bool]:
+        loc = self._locating
+        return [s.role in ("result", "given") or not s.group or any(o in loc for o in s.outputs) for s in self.steps]
+
+    def inputs(self, k: int) -> frozenset[str]:
+        """The objects step k's instrument is set on (centre, through point, the curves it cuts)."""
+        if not 1 <= k <= len(self.steps):
+            return frozenset()
+        return frozenset(n for n in self.steps[k - 1].inputs if n in self._drawn)
+
+    def tagged(self, k: int) -> frozenset[str]:
+        """The points a teaching frame tags at step k: what the step makes, what its instrument is set on
+        (also the centre of a circle it cuts), and every point its caption names."""
+        if not 1 <= k <= len(self.steps):
+            return frozenset()
+        s = self.steps[k - 1]
+        names = set(s.outputs) | set(s.inputs) | self._reader.mentioned(s.caption.de) | self._reader.mentioned(s.caption.en)
+        for n in s.inputs:
+            if n in self._reader.objects and n not in self._reader.points:
+                names.update(self._reader.curve_points(n))
+        return frozenset(n for n in names if n in self._reader.points)
+
+    @functools.cached_property
+    def _drawn(self) -> dict[str, Mark]:
+        return {m.name: m for m in self.marks}
+
+    def display_name(self, name: str) -> str:
+        """The letter or tag the reader sees for an object (the same one the captions use)."""
+        return self._reader.point(name) if name in self._reader.points else name.rsplit(".", 1)[-1]
 
     def stage_box(self, k: int) -> tuple[float, float, float, float]:
         """The region of step k's top-level group (all its steps), with a margin.
@@ -147,6 +230,16 @@ class Scene:
         box = self._stage_cache.get(span)
         if box is None:
             box = self._stage_cache[span] = self._box_of_steps(*span)
+        # the instrument's inputs are in view even when they lie outside the stage (a far centre)
+        pts = [self._drawn[n].geom for n in self.inputs(k) if self._drawn[n].kind == "point"]
+        if pts and not all(box[0] <= x <= box[2] and box[1] <= y <= box[3] for x, y in pts):
+            x0 = min([box[0]] + [p[0] for p in pts])
+            y0 = min([box[1]] + [p[1] for p in pts])
+            x1 = max([box[2]] + [p[0] for p in pts])
+            y1 = max([box[3]] + [p[1] for p in pts])
+            pad = 0.04 * max(x1 - x0, y1 - y0)
+            b = self.bbox
+            box = (max(b[0], x0 - pad), max(b[1], y0 - pad), min(b[2], x1 + pad), min(b[3], y1 + pad))
         return box
 
     @functools.cached_property
@@ -261,7 +354,8 @@ def _on_curve_points(steps: Iterable[Step], objects: Replay,
     return on
 
 
-def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: bool = False) -> Scene:
+def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: bool = False,
+                break_axis: bool = True, furniture: tuple = (), looks: "dict[str, str] | None" = None) -> Scene:
     """The marks of a built or replayed figure (anything with ``.protocol`` and ``.replay``).
 
     With *plate* the scene is what a book plate shows (:func:`plate_names`):
@@ -301,7 +395,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
             mid = f"s{s.index:04d}-{_safe_id(name)}"
             label = labels.get(name)
             common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
-                          group=s.group, label=label)
+                          group=s.group, label=label, look=(looks or {}).get(name, ""))
             if isinstance(obj, Point):
                 marks.append(Mark(mid, kind="point", geom=(obj[0], obj[1]), **common))
             elif isinstance(obj, Line):
@@ -315,8 +409,21 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                                       geom=tuple((p[0], p[1]) for p in ring), hatch=obj.hatch_deg, **common))
             elif hasattr(obj, "curve_points"):
                 marks.append(Mark(mid, kind="curve", geom=tuple((p[0], p[1]) for p in obj.curve_points()), **common))
-    # Grow the box by what the curves reach (full circles, arcs, line ends) and the margin.
+    breaks: tuple[tuple[float, float, float], ...] = ()
+    if break_axis and (shown is None or furniture):
+        # a plate keeps more of the broken stretch: the rod drawn across it stays a shallow line
+        marks, furniture, breaks = _break(marks, tuple(furniture), BREAK_KEEP if shown is None else PLATE_BREAK_KEEP)
+        if breaks:
+            xs = [x for m in marks if m.kind == "point" for x in (m.geom[0],)] or xs
+            ys = [y for m in marks if m.kind == "point" for y in (m.geom[1],)] or ys
+    # Grow the box by what the curves reach (full circles, arcs, line ends), the plate's furniture and the margin.
     bx0, by0, bx1, by1 = min(xs), min(ys), max(xs), max(ys)
+    if furniture:
+        from .plate import extent
+
+        fx = extent(furniture)
+        if fx:
+            bx0, by0, bx1, by1 = min(bx0, fx[0]), min(by0, fx[1]), max(bx1, fx[2]), max(by1, fx[3])
     for m in marks:
         for x, y in _extreme_points(m):
             bx0, by0, bx1, by1 = min(bx0, x), min(by0, y), max(bx1, x), max(by1, y)
@@ -324,7 +431,74 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
     bbox = (bx0 - pad, by0 - pad, bx1 + pad, by1 + pad)
     if title is None:
         title = (protocol.construction, protocol.construction)
-    return Scene(tuple(marks), bbox, protocol.steps, title, dict(protocol.params))
+    essentials = frozenset(shown if shown is not None else plate_names(protocol, objects))
+    return Scene(tuple(marks), bbox, protocol.steps, title, dict(protocol.params), breaks, tuple(furniture),
+                 essentials)
+
+
+#: A gap wider than this fraction of the figure, with nothing drawn in it, is broken out of the axis.
+BREAK_FRACTION = 0.2
+#: Width the broken-out stretch keeps, as a fraction of what remains of the figure.
+BREAK_KEEP = 0.07
+#: The same on a plate, where the rod is drawn across the break to its crosshead.
+PLATE_BREAK_KEEP = 0.55
+
+
+def _break(marks: list[Mark], furniture: tuple = (),
+           keep_fraction: float = 0.07) -> tuple[list[Mark], tuple, tuple[tuple[float, float, float], ...]]:
+    """Break the widest empty stretch out of the figure, as a draftsman breaks a long axis.
+
+    The crossheads lie a rod length (5 r) to the left of the crank circle;
+    drawn to scale, the circle sits in a corner of an empty sheet.  Marks
+    wholly left of the empty stretch move right by what it loses; lines
+    that cross it (the stroke line) keep their right end and move their
+    left one.  A plate's furniture (the rod drawn to its crosshead) is
+    broken the same way.  Returns the marks, the furniture and ((x where the
+    drawn break starts, its drawn width, the length it stands for),) or ()
+    when there is no such gap.
+    """
+    from .plate import anchors, shifted
+    ivals = []
+    for m in marks:
+        if m.kind == "segment":
+            continue  # the stroke line spans everything
+        xs = [p[0] for p in _extreme_points(m)]
+        if xs:
+            ivals.append((min(xs), max(xs)))
+    ivals.extend((x, x) for x, _ in anchors(furniture))
+    if len(ivals) < 2:
+        return marks, furniture, ()
+    ivals.sort()
+    total = ivals[-1][1] - ivals[0][0]
+    best, reach = None, ivals[0][1]
+    for a, b in ivals[1:]:
+        if a > reach and (best is None or a - reach > best[1] - best[0]):
+            best = (reach, a)
+        reach = max(reach, b)
+    if best is None or best[1] - best[0] <= BREAK_FRACTION * total:
+        return marks, furniture, ()
+    lo, hi = best
+    keep = min(keep_fraction * (total - (hi - lo)), 0.8 * (hi - lo))
+    shift = (hi - lo) - keep
+
+    def sx(x: float) -> float:
+        return x + shift if x <= lo else x
+
+    out = []
+    for m in marks:
+        g = m.geom
+        if m.kind == "point":
+            g = (sx(g[0]), g[1])
+        elif m.kind == "segment":
+            g = (sx(g[0]), g[1], sx(g[2]), g[3])
+        elif m.kind in ("circle", "arc"):
+            if max(p[0] for p in _extreme_points(m)) <= lo:
+                g = (g[0] + shift,) + tuple(g[1:])
+        elif m.kind in ("curve", "area"):
+            g = tuple((sx(x), y) for x, y in g)
+        out.append(m if g is m.geom else dataclasses.replace(m, geom=g))
+    # the left stretch now ends at hi - keep: the kept piece of the broken axis is [hi - keep, hi]
+    return out, tuple(shifted(it, sx) for it in furniture), ((hi - keep, keep, hi - lo),)
 
 
 def plate_names(protocol: Protocol, objects: Replay) -> set[str]:

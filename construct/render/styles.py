@@ -9,7 +9,10 @@
 * ``teaching``    colour by instrument, the current step highlighted with its
                   caption and group, earlier steps quieter, later ones absent;
                   each frame shows the region drawn so far in its top-level
-                  group, with a magnified inset when the current group is tiny.
+                  group, with a magnified inset when the current group is tiny;
+                  a finished group fades to its result, and the current step's
+                  instrument inputs (centre, through point, curves cut) are
+                  marked and named.
 
 >>> sorted(STYLES)
 ['historical', 'plain', 'teaching']
@@ -64,7 +67,9 @@ TEACHING = Style(
                   "intersect": "#222222", "dividers": "#8e44ad", "neusis": "#00838f"},
     highlight="#e8590c",
     highlight_width=2.6,
-    earlier_opacity=0.4,
+    earlier_opacity=0.45,
+    done_opacity=0.13,             # a finished group's helpers: faint, its results stay
+    input_colour="#c2255c",        # what the instrument is set on (centre, through point, curves cut)
     show_group=True,
     name_tags=True,
     progressive_zoom=True,

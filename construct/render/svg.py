@@ -33,6 +33,7 @@ from dataclasses import dataclass, field
 from typing import Any, Mapping, Sequence
 
 from . import svgdoc
+from .lettering import LEADER_FROM
 from .scene import Mark, Scene, label_offset_direction
 
 __all__ = ["Style", "PLAIN", "render_svg", "fmt", "Viewport", "Drawing",
@@ -81,6 +82,10 @@ class Style:
     highlight_width: float = 2.4
     #: Opacity of the steps before the current one in frames (1: no change).
     earlier_opacity: float = 1.0
+    #: Opacity of the helpers of a finished group (:meth:`Scene.fade_end`; 1: they never fade).
+    done_opacity: float = 1.0
+    #: Colour of what the current step's instrument is set on (centre, through point, curves cut).
+    input_colour: str | None = None
     #: The final figure shows a book plate (results and what locates them), not every step.
     plate: bool = False
     #: Caption of the final figure: "Fig." plate caption or the plain title lines.
@@ -143,9 +148,26 @@ class Style:
             rules.append(f".cur>.pt{{fill:{self.highlight};stroke:{self.highlight};stroke-width:3}}")
             rules.append(f".cur>.lb{{fill:{self.highlight};stroke:none}}")
         rules.append(f".inset{{fill:{self.background};stroke:{self.construction};stroke-width:0.8}}")
+        if self.done_opacity < 1.0:
+            rules.append(f".done{{opacity:{fmt(self.done_opacity)}}}")
+        if self.input_colour:
+            ic = self.input_colour
+            rules.append(f".inp>*{{stroke:{ic};stroke-width:{fmt(0.7 * self.highlight_width)}}}")
+            rules.append(f".inp>.pt{{fill:{ic};stroke:{ic};stroke-width:2}}")
+            rules.append(f".inp>.lb{{fill:{ic};stroke:none}}")
         if self.name_tags:
             rules.append(f".tag{{display:none;font-size:{fmt(0.85 * self.label_size)}px}}")
-            rules.append(".cur>.tag{display:inline}")
+            rules.append(".cur>.tag,.inp>.tag{display:inline}")
+        # Plate looks and furniture (construct.render.plate), and the paper-coloured halo
+        # behind every letter, drawn as a copy beneath it (cairosvg has no paint-order).
+        from .plate import LOOKS_CSS
+
+        rules.append(f".fur{{fill:none;stroke:{self.ink};stroke-width:0.6px}}.arrow{{fill:{self.ink};stroke:none}}")
+        rules.extend(LOOKS_CSS)
+        rules.append(f".brk{{fill:{self.background};stroke:none}}.brkline{{fill:none;stroke:{self.ink};stroke-width:0.8px}}")
+        halo = f"fill:{self.background};stroke:{self.background};stroke-width:3.5px;stroke-linejoin:round"
+        rules.append(f".lb.halo,.cur>.lb.halo,.inp>.lb.halo{{{halo}}}")
+        rules.append(f".leader,.cur>.leader,.inp>.leader{{fill:none;stroke:{self.ink};stroke-width:0.4px}}")
         return "\n".join(rules)
 
 
@@ -262,6 +284,7 @@ class Drawing:
             win = Viewport.window(region, (m, m, canvas.width - m, m + inner_h))
             self.vp = Viewport(win.xmin, win.ymax, win.scale, canvas.width, canvas.height, 0.0, win.left, win.top)
         self.doc = svgdoc.Writer()
+        self._spots = self._letter_spots(self.vp)
         # layer -> [(step, [element, ...]), ...] in step order: each step's elements of that layer.
         self.groups: dict[str, list[tuple[int, list[Any]]]] = {name: [] for name in self.LAYERS}
         placed: list[tuple[float, float, float, float]] = []
@@ -300,9 +323,24 @@ class Drawing:
         """The canvas height without the caption lines (the player shows its captions in HTML)."""
         return self.vp.height - self.n_caption * 1.45 * self.style.caption_size
 
+    def _letter_spots(self, vp: Viewport) -> dict[str, tuple[float, float]]:
+        """Where every letter goes in this viewport (:func:`construct.render.lettering.place`): results first."""
+        from .lettering import place
+
+        scale = self.scene.bbox[2] - self.scene.bbox[0]
+        items, dots = [], []
+        for m in self.scene.marks:
+            if m.kind != "point":
+                continue
+            p = vp.px(*m.geom)
+            dots.append(p)
+            if m.label:
+                items.append((m.id, m.role, m.step, p, label_offset_direction(m.geom, scale=scale), m.label))
+        return place(items, self.style.label_size, dots)
+
     def _elements(self, m: Mark, vp: Viewport, placed: list, mid: str | None):
         """(layer, svgwrite element) of a mark's elements; the label (if any) is a second one."""
-        cls = f"{m.role} {m.tool} {m.provenance}"
+        cls = f"{m.role} {m.tool} {m.provenance}" + (f" {m.look}" if m.look else "")
         ids = {"id": mid} if mid else {}
         st = self.style
         f = self.doc.factory
@@ -314,13 +352,24 @@ class Drawing:
                 # Shown only while its step is the current one (CSS), so it takes no place from the letters.
                 tx, ty = vp.px(*m.geom)
                 tid = {"id": f"{mid}-tag"} if mid else {}
-                yield "labels", f.text(m.name.rsplit(".", 1)[-1], x=[fmt(tx + 0.6 * st.label_size)],
+                yield "labels", f.text(self.scene.display_name(m.name), x=[fmt(tx + 0.6 * st.label_size)],
                                        y=[fmt(ty - 0.5 * st.label_size)], class_="lb tag", **tid)
             if m.label:
                 box = self._place_label(m, vp, placed)
                 if box is not None:
                     lid = {"id": f"{mid}-label"} if mid else {}
-                    yield "labels", f.text(m.label, x=[fmt(box[0])], y=[fmt(box[1])], class_="lb", **lid)
+                    xy = dict(x=[fmt(box[0])], y=[fmt(box[1])])
+                    if len(box) > 2 and box[2] >= LEADER_FROM:
+                        # a letter set off from a crowded point is tied to it
+                        px, py = vp.px(*m.geom)
+                        cx, cy = box[0], box[1] - 0.35 * st.label_size
+                        dx, dy = cx - px, cy - py
+                        n = math.hypot(dx, dy) or 1.0
+                        a, b = 0.25 * st.label_size, n - 0.75 * st.label_size
+                        yield "labels", f.line(start=(fmt(px + a * dx / n), fmt(py + a * dy / n)),
+                                               end=(fmt(px + b * dx / n), fmt(py + b * dy / n)), class_="leader")
+                    yield "labels", f.text(m.label, class_="lb halo", **xy)
+                    yield "labels", f.text(m.label, class_="lb", **lid, **xy)
             return
         layer = "results" if m.role == "result" else "construction"
         g = m.geom
@@ -341,8 +390,10 @@ class Drawing:
                     yield "areas", f.path(d=d, class_="hatch", **hid)
 
     def _place_label(self, m: Mark, vp: Viewport, placed: list) -> tuple[float, float] | None:
-        # Letters go radially outwards (below the stroke line for points on it);
-        # a letter that would overprint an earlier one tries the other side, then is left out.
+        # In the drawing's own viewport the letters were placed by rank (results first);
+        # elsewhere (the magnified inset) they go radially outwards, the other side, or are left out.
+        if vp is self.vp:
+            return self._spots.get(m.id)
         st = self.style
         dx, dy = label_offset_direction(m.geom, scale=self.scene.bbox[2] - self.scene.bbox[0])
         off = st.label_size * 0.9
@@ -369,7 +420,15 @@ class Drawing:
         return dwg
 
     def step_group(self, k: int, elems: Sequence[Any], cls: str = "", **attrs: Any) -> Any:
-        """Step k's elements of one layer: ``<g class="step ..." data-step="k">``."""
+        """Step k's elements of one layer: ``<g class="step ..." data-step="k">``.
+
+        With fading (``Style.done_opacity``) a step whose helpers fade carries ``data-fade``:
+        the last step of its group, after which the player and animation fade it too.
+        """
+        if self.style.done_opacity < 1.0:
+            end = self.scene.fade_end(k)
+            if end is not None:
+                attrs = {**attrs, "data-fade": str(end)}
         g = self.doc.factory.g(class_=f"step {cls}".rstrip(), **{"data-step": str(k)}, **attrs)
         for e in elems:
             g.add(e)
@@ -379,24 +438,46 @@ class Drawing:
         """Layer *name*'s (step, elements) for steps 1..k."""
         return self.groups[name][:bisect.bisect_right(self._steps[name], k)]
 
+    def input_steps(self, k: int) -> frozenset[int]:
+        """The steps that made what step k's instrument is set on and what its caption names."""
+        if not self.style.input_colour:
+            return frozenset()
+        sc = self.scene
+        return frozenset(s for s in (sc.step_of(n) for n in sc.inputs(k) | sc.tagged(k)) if s is not None and s < k)
+
+    def step_class(self, s: int, k: int, *, mark_steps: bool, inputs: frozenset[int] = frozenset()) -> str:
+        """The class of step s's groups in frame k: cur, old (with inp), done (a finished group's helpers)."""
+        fade = self.style.done_opacity < 1.0
+        if not mark_steps:
+            # the whole figure: every group finished, its helpers faint (teaching)
+            return "done" if fade and self.scene.faded(s, len(self.scene.steps) + 1) else ""
+        if s == k:
+            return "cur"
+        if s in inputs:
+            return "inp"  # at full strength, in the input colour
+        if fade and self.scene.faded(s, k):
+            return "done"
+        return "old" if self.style.earlier_opacity < 1.0 else ""
+
     def plain_groups(self, name: str) -> list[Any]:
-        """Layer *name*'s step groups without marks (``class="step"``), made once: the layered figure
-        and the player carry the same ones."""
+        """Layer *name*'s step groups as the whole figure shows them (``class="step"``, ``"step done"``
+        for a finished group's helpers), made once: the layered figure and the player carry the same ones."""
         cache = self.__dict__.setdefault("_plain_groups", {})
         if name not in cache:
-            cache[name] = [self.doc.frozen(self.step_group(k, elems)) for k, elems in self.groups[name]]
+            cache[name] = [self.doc.frozen(self.step_group(k, elems, self.step_class(k, 0, mark_steps=False)))
+                           for k, elems in self.groups[name]]
         return cache[name]
 
     def layer(self, name: str, k: int, *, mark_steps: bool) -> Any:
-        """``<g id="name">`` with the step groups of steps 1..k; ``cur``/``old`` on them when *mark_steps*."""
+        """``<g id="name">`` with the step groups of steps 1..k; ``cur``/``old``/``done``/``inp`` when *mark_steps*."""
+        inputs = self.input_steps(k) if mark_steps else frozenset()
         g = self.doc.factory.g(id=name)
         if not mark_steps:
             for group in self.plain_groups(name)[:bisect.bisect_right(self._steps[name], k)]:
                 g.add(group)
             return g
-        old = "old" if self.style.earlier_opacity < 1.0 else ""
         for s, elems in self.step_runs(name, k):
-            g.add(self.step_group(s, elems, "cur" if s == k else old))
+            g.add(self.step_group(s, elems, self.step_class(s, k, mark_steps=mark_steps, inputs=inputs)))
         return g
 
     def body(self, k: int, *, mark_steps: bool) -> list[Any]:
@@ -419,7 +500,49 @@ class Drawing:
                     parent.add(layer)
                 else:
                     out.append(layer)
+        furniture = self.furniture()
+        if furniture is not None:
+            (parent.add(furniture) if parent is not None else out.append(furniture))
         return out
+
+    def furniture(self) -> Any | None:
+        """The broken axis's break marks and the plate's furniture (:mod:`construct.render.plate`)."""
+        from .plate import Stroke, furniture_elements
+
+        f = self.doc.factory
+        # the furniture first, the break marks over it (they open the rod and the axis for the gap)
+        elems = furniture_elements(self.scene.furniture, self.vp.px, self.vp.scale, f, size=self.style.label_size)
+        lines = [m.geom for m in self.scene.marks if m.kind == "segment"]
+        lines += [(*it.a, *it.b) for it in self.scene.furniture if isinstance(it, Stroke)]
+        for x0, w, _left_out in self.scene.breaks:
+            # on every line crossing the break: a gap in paper colour and two slanted strokes
+            for ax, ay, bx, by in lines:
+                if min(ax, bx) < x0 + 0.3 * w and max(ax, bx) > x0 + 0.7 * w and abs(bx - ax) > 1e-12:
+                    # the classic break: a short gap along the line, a slanted tick at each side
+                    xm = x0 + w / 2
+                    ym = ay + (by - ay) * (xm - ax) / (bx - ax)
+                    cx, cy = self.vp.px(xm, ym)
+                    ex, ey = self.vp.px(bx, by)
+                    sx, sy = self.vp.px(ax, ay)
+                    n = math.hypot(ex - sx, ey - sy) or 1.0
+                    ux, uy = (ex - sx) / n, (ey - sy) / n
+                    nx, ny = -uy, ux
+                    h, gap = 0.6 * self.style.label_size, 0.45 * self.style.label_size
+                    corners = [(cx + su * gap * ux + sn * h * nx, cy + su * gap * uy + sn * h * ny)
+                               for su, sn in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+                    elems.append(f.path(d="M" + "L".join(f"{fmt(x)} {fmt(y)}" for x, y in corners) + "Z",
+                                        class_="brk"))
+                    for su in (-1, 1):
+                        tx, ty = cx + su * gap * ux, cy + su * gap * uy
+                        elems.append(f.line(start=(fmt(tx - 0.35 * h * ux - h * nx), fmt(ty - 0.35 * h * uy - h * ny)),
+                                            end=(fmt(tx + 0.35 * h * ux + h * nx), fmt(ty + 0.35 * h * uy + h * ny)),
+                                            class_="brkline"))
+        if not elems:
+            return None
+        g = f.g(id="furniture")
+        for e in elems:
+            g.add(e)
+        return g
 
     def caption_group(self, lines: Sequence[tuple[str, str]], *, centred: bool = False, **attrs: Any) -> Any | None:
         """Caption lines (class suffix, text) at the foot of the figure: ``<g id="caption">``."""

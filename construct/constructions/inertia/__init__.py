@@ -36,6 +36,8 @@ the analytic curve.
 
 from __future__ import annotations
 
+import math
+
 from ...kernel.protocol import Caption
 from .. import Construction, register
 from .build import _validate, build_inertia
@@ -57,6 +59,35 @@ __all__ = [
     "q_at_crank_angle_rows",
 ]
 
+def inertia_plate(fig) -> dict:
+    """Fig. 78/79: the curve heavy, tangents thin, the infinite-rod line dash-dotted and lettered,
+    F/f and m dimensioned, the pressure scale beside the diagram, the signs of the zones.
+
+    Positions are the constructed points; the scale bar is the given drawn length of 1 kg/cm².
+    """
+    R = fig.replay
+    n = fig.params["parts"]
+    D0, D1, O = R["D0"], R["D1"], R["O"]
+    r = O.distance(D1)
+    E, F = R["Einf"], R["Finf"]
+    unit = fig.replay.givens["pressure_unit"]
+    foot5, q5 = R["X.c90"], R["q5"]
+    t = 0.42
+    on_inf = (E[0] + t * (F[0] - E[0]), E[1] + t * (F[1] - E[1]))
+    slope = math.degrees(math.atan2(F[1] - E[1], F[0] - E[0]))
+    up, down = R[f"K{max(1, n // 6)}"], R[f"K{n - max(1, n // 6)}"]
+    furniture = [
+        {"kind": "dimension", "a": tuple(D0), "b": tuple(E), "text": "F/f", "offset": 0.12 * r},
+        {"kind": "dimension", "a": tuple(foot5), "b": tuple(q5), "text": "m", "offset": -0.1 * r},
+        {"kind": "lettering", "at": (on_inf[0] + 0.06 * r, on_inf[1] + 0.09 * r), "text": "L = ∞", "angle": slope},
+        {"kind": "scale", "origin": (D1[0] + 0.2 * r, 0.0), "end": (D1[0] + 0.2 * r, unit), "text": "1 kg/cm²"},
+        {"kind": "sign", "at": (up[0], 0.4 * up[1]), "text": "+"},
+        {"kind": "sign", "at": (down[0], 0.4 * down[1]), "text": "−"},
+    ]
+    looks = {"curve": "heavy", "tan0": "thin", "tan90": "thin", "tan180": "thin", "inf": "dashdot"}
+    return {"looks": looks, "furniture": furniture}
+
+
 INERTIA = register(Construction(
     name="inertia-curve",
     title=Caption("Curve der Massendrücke", "Curve of the inertia pressures"),
@@ -68,6 +99,7 @@ INERTIA = register(Construction(
     defaults={"rod_ratio": 5.0, "parts": 18, "method": "auto", "r": 1.0, "pressure_ratio": 1.0, "pressure_unit": 0.8},
     book_params=({"rod_ratio": 4.0}, {"rod_ratio": 5.0}, {"rod_ratio": 6.0}),
     structural=("parts", "method"),
+    extra={"plate": inertia_plate},
 ), validate=_validate)
 
 INERTIA_STROKE = register(Construction(

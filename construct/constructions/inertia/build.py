@@ -155,12 +155,12 @@ def _lay_off(b: Builder, c: _Ctx, tag: str, X: str, V: str, label: str | None = 
 def _piston(b: Builder, c: _Ctx, tag: str, P: str, *, label: str | None = None, role: str = "construction") -> str:
     """Rod arcs from one crank point (as in :func:`crank.rod_arcs`): its piston position."""
     with b.group(f"rod arcs from {tag}", f"Schubstangenbögen von {tag}"):
-        arc = b.circle_radius(f"rod.{tag}", P, c.L, de="Bogen mit der Schubstangenlänge L",
-                              en="arc with the rod length L")
+        arc = b.circle_radius(f"rod.{tag}", P, c.L, de=f"Bogen um {P} mit der Schubstangenlänge L",
+                              en=f"arc about {P} with the rod length L")
         C = b.intersect(f"C.{tag}", arc, c.axis, rule=("toward", c.O, None, -1.0, 0.0), de="Kreuzkopf", en="crosshead")
         back = b.circle_radius(f"back.{tag}", C, c.L, de="mit L zurück auf den Hub", en="with L back onto the stroke")
         return b.intersect(f"X.{tag}", back, c.axis, rule=("toward", c.O, None, 1.0, 0.0), role=role,
-                           de=f"Kolbenstellung zu {tag}", en=f"piston position for {tag}",
+                           de=f"Kolbenstellung zu {P}", en=f"piston position for {P}",
                            labels={f"X.{tag}": label} if label else None)
 
 
@@ -180,8 +180,8 @@ def _root_point(b: Builder, c: _Ctx, tag: str, H: str, what: tuple[str, str]) ->
     """r cos w = (sqrt(L^2 + OH^2) - L) / 4 as a crank point: hypotenuse SH, less SO = L, halved twice."""
     O = c.O
     with b.group(f"crank angle of {tag}: {what[1]}", f"Kurbelwinkel zu {tag}: {what[0]}"):
-        k = b.circle_through(f"{tag}.h", c.angle.vertex, H, de=f"Kreis um S durch {H}: SH = √(L² + O{H}²)",
-                             en=f"circle about S through {H}: SH = sqrt(L^2 + O{H}^2)")
+        k = b.circle_through(f"{tag}.h", c.angle.vertex, H, de=f"Kreis um S durch {H}: S{H} = √(L² + O{H}²)",
+                             en=f"circle about S through {H}: S{H} = sqrt(L^2 + O{H}^2)")
         N = b.intersect(f"{tag}.N", c.vert, k, rule=("toward", O, None, 0.0, 1.0),
                         de="ON = SH − L", en="ON = SH - L")
         half = b.midpoint(f"{tag}.N2", O, N, through=c.vert)
@@ -192,7 +192,8 @@ def _root_point(b: Builder, c: _Ctx, tag: str, H: str, what: tuple[str, str]) ->
                            en="foot: r cos w")
         perp = _ordinate_line(b, c, f"{tag}.p", foot)
         return b.intersect(f"{tag}.P", perp, c.crank, rule=("toward", O, None, 0.0, 1.0),
-                           de=f"Kurbelpunkt zu {tag}", en=f"crank point for {tag}", labels={f"{tag}.P": tag})
+                           de=f"Kurbelpunkt zu q{tag[1:]}", en=f"crank point for q{tag[1:]}",
+                           labels={f"{tag}.P": f"ω{tag[1:]}"})  # the crank position of q6 (q7)
 
 
 #: What Fig. 78/79 show (regular expressions over object names): the stroke
@@ -215,6 +216,8 @@ def build_inertia(*, rod_ratio: float, parts: int, method: str, r: float, pressu
     c = _setup(b, f)
     points = divide_semicircle(b, O=f["O"], D0=f["D0"], D1=f["D1"], circle=f["circle"], axis=f["axis"],
                                n=parts, method=used)
+    for k, p in enumerate(points[1:-1], start=1):
+        b.set_label(p, str(k))  # numbered as on the crank figure; the dead centres are A and B
     rod_arcs(b, f, points)
     n = parts
     # a) The ordinates by construction, one crank point after the other.
@@ -237,10 +240,10 @@ def _characteristic(b: Builder, c: _Ctx, n: int) -> None:
     with b.group("straight line for the infinite rod", "Gerade für unendliche Schubstangenlänge"):
         kE = b.circle_radius("Einf.k", c.D0, c.Ff, de="F/f in A aufgetragen", en="F/f laid off at A")
         Einf = b.intersect("Einf", "ord0", kE, rule=up, de="Anfangsordinate F/f bei unendlicher Stange",
-                           en="initial ordinate F/f for the infinite rod")
+                           en="initial ordinate F/f for the infinite rod", labels={"Einf": "E∞"})
         kF = b.circle_radius("Finf.k", c.D1, c.Ff, de="F/f in B aufgetragen", en="F/f laid off at B")
         Finf = b.intersect("Finf", f"ord{n}", kF, rule=down, de="Endordinate −F/f bei unendlicher Stange",
-                           en="final ordinate -F/f for the infinite rod")
+                           en="final ordinate −F/f for the infinite rod", labels={"Finf": "F∞"})
         inf = b.line("inf", Einf, Finf, role="result", de="Gerade der Massendrücke für unendliche Stangenlänge",
                      en="inertia pressures for the infinite rod: a straight line")
     with b.group("m = r/L · F/f", "m = r/L · F/f"):
@@ -249,6 +252,7 @@ def _characteristic(b: Builder, c: _Ctx, n: int) -> None:
     with b.group("characteristic points q3 and q4 (45 and 135 degrees)", "Charakteristische Punkte q3 und q4 (45°, 135°)"):
         for tag, (a, z), dc, label in (("c45", (c.D0, c.top), c.D0, "q3"), ("c135", (c.top, c.D1), c.D1, "q4")):
             P = b.bisect_arc(tag, O, a, z, c.crank)
+            b.set_label(P, tag[1:] + "°")
             X = _piston(b, c, tag, P)
             foot = _project(b, c, f"{tag}.Y", P, dc, tag)
             I = b.intersect(f"{tag}.I", f"{tag}.Y.g", inf, rule=("only",),
@@ -310,4 +314,4 @@ def _characteristic(b: Builder, c: _Ctx, n: int) -> None:
                      de="Curve durch die sieben charakteristischen Punkte und drei Tangenten",
                      en="curve through the seven characteristic points along the three tangents")
         b.record("curve", "parabola_envelope", (E, D, F), ("parabola",), {},
-                 "Parabel als Einhüllende auf E–D–F", "parabola enveloped by E-D-F", role="construction")
+                 "Parabel als Einhüllende auf q1–D–q2", "parabola enveloped by q1–D–q2", role="construction")

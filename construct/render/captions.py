@@ -1,0 +1,244 @@
+"""Captions in the figure's own letters: what the reader sees, not what the code calls it.
+
+A step's caption is written by the construction with object names
+(``Kreis um P12 durch D1``, ``T7.G.M1 im Schnitt von T7.G.Mr1 und T7.G.Mk1``,
+``Mittelsenkrechte von EinfFinf``).  The figure prints other letters: the
+division point P12 is lettered 12, the dead centre D1 is B (or 18), a helper
+point shows the last part of its name while it is in use, and a compass
+circle has no letter at all.  :class:`Reader` rewrites a caption once, from
+data only (the marks' labels, the step that made each curve), so a
+construction added later gets readable captions without writing any:
+
+* a lettered object is named by its letter (P12 -> 12, D0 -> A, K0 -> q1);
+* a helper point by the last part of its dotted name (T7.G.M1 -> M1), which
+  the teaching frames tag while the point is made or used;
+* a circle by its centre ("Kreis um 3"), a line by two of its points, the
+  stroke line and the crank circle by their names in the books; a curve's own
+  name in the caption of the step that draws it is left out (the figure has
+  no letter for it: "Mittelsenkrechte c6.N4.m von ..." -> "Mittelsenkrechte von ...");
+* two names written together (the segment ``D0P6``) are split and joined by a dash;
+* the English text gets the book's symbols: w -> ω, lam -> λ, sqrt -> √, ^2 -> ².
+
+One pass over each caption with an identifier pattern and dictionary
+look-ups: linear in the caption, independent of the number of steps.
+
+>>> r = Reader({"P12": ("point", "12", None, ()), "D1": ("point", "B", None, ()),
+...             "T4.k": ("circle", None, "circle_through", ("P12", "D1"))})
+>>> r.text("Kreis um P12 durch D1", "de")
+'Kreis um 12 durch B'
+>>> r.text("D1 where T4.k meets axis", "en", outputs=("D1",))
+'B where the circle about 12 meets axis'
+>>> r.text("segment P12D1, angle w = 2w, sqrt(L^2 + 8 r^2), lam cos 2w", "en")
+'segment 12–B, angle ω = 2ω, √(L² + 8 r²), λ cos 2ω'
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+from typing import Mapping, Sequence
+
+__all__ = ["Reader", "book_symbols", "equation", "subscripts", "tag"]
+
+#: An identifier as the constructions write object names: letters, digits, dots inside.
+_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*")
+#: Words after which the instruments' captions put an object's name ("Kreis um X durch Y", "X where a meets b").
+_SLOTS = {"um", "durch", "von", "und", "mit", "zu", "about", "through", "where", "meets", "and", "of", "from", "with", "for"}
+
+#: How the books name the objects every crank figure has.
+_COMMON = {
+    "axis": ("Hubachse", "the stroke line"),
+    "crank": ("Kurbelkreis", "the crank circle"),
+    "vert": ("Senkrechte durch O", "the perpendicular through O"),
+}
+
+_SUPER = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
+_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def tag(name: str, letters: "frozenset[str] | set[str]" = frozenset()) -> str:
+    """The short name of an unlettered point: the last part of its dotted name.
+
+    Where that is a letter the figure already uses (the helper ``ordD.A`` beside
+    the dead centre A), a single capital is written small and anything else keeps
+    the part before it.
+
+    >>> tag("T7.G.M1"), tag("ordD.A", {"A", "B"}), tag("D.2", {"2"}), tag("Dx")
+    ('M1', 'a', 'D2', 'Dx')
+    """
+    parts = name.split(".")
+    last = parts[-1]
+    if last in letters:
+        if len(last) == 1 and last.isupper():
+            return last.lower()
+        if len(parts) > 1:
+            return parts[-2].rsplit(".", 1)[-1] + last
+    return last
+
+
+def subscripts(text: str) -> str:
+    """Subscripts written with an underscore: digits as subscript digits, letters run on (p_ü -> pü).
+
+    >>> subscripts("F·p_ü, x_1, q_max")
+    'F·pü, x₁, qmax'
+    """
+    return re.sub(r"(?<=[^\W_])_([^\W_]+)", lambda m: m.group(1).translate(_SUB), text)
+
+
+def equation(text: str) -> str:
+    """Equation numbers as the book prints them: ``Gl. 4_1`` -> ``Gl. (4₁)``, ``Gl. (4_1)`` likewise.
+
+    >>> equation("Gl. 4_1, Tabelle 1; Gl. (h); Gl. 1")
+    'Gl. (4₁), Tabelle 1; Gl. (h); Gl. (1)'
+    """
+    def sub(m: "re.Match[str]") -> str:
+        num, low = m.group(1), m.group(2)
+        return f"Gl. ({num}{low.translate(_SUB) if low else ''})"
+    return re.sub(r"Gl\. \(?(\d+)(?:_(\d+))?\)?", sub, text)
+
+
+def book_symbols(text: str) -> str:
+    """ASCII stand-ins for the book's symbols replaced: ω, λ, √, exponents, subscripts.
+
+    >>> book_symbols("r cos w + lam r cos 2w (w = 0), r sqrt 2, L^2, w5 = AOW5, with w")
+    'r cos ω + λ r cos 2ω (ω = 0), r√2, L², ω5 = AOW5, with ω'
+    """
+    text = re.sub(r"(?<![A-Za-z])lam(?![A-Za-z])", "λ", text)
+    text = re.sub(r"(?<![A-Za-z])w(?=\d|\b)", "ω", text)
+    text = re.sub(r"(?<=[\w)]) sqrt\b\s*(?=[(\dA-Za-z])", "√", text)   # r sqrt 2 -> r√2
+    text = re.sub(r"\bsqrt\b\s*(?=[(\dA-Za-z])", "√", text)
+    text = re.sub(r"(?<=[\s(=])-(?=[\w(])", "−", text)   # a minus, not a hyphen
+    text = re.sub(r"\^(\d+)", lambda m: m.group(1).translate(_SUPER), text)
+    return equation(text)
+
+
+class Reader:
+    """Rewrites captions for one figure.
+
+    *objects* maps each drawable object's name to (kind, label, maker op, maker inputs),
+    kind one of point, line, circle, curve, area.
+    """
+
+    def __init__(self, objects: Mapping[str, tuple[str, str | None, str | None, tuple[str, ...]]]):
+        self.objects = objects
+        self.points = {n for n, v in objects.items() if v[0] == "point"}
+
+    # -- one name -------------------------------------------------------------------------
+    def point(self, name: str) -> str:
+        """The letter a point goes by in the figure (see :func:`tag`)."""
+        label = self.objects[name][1]
+        if label:
+            return label
+        parts = name.rsplit(".", 1)
+        # the helper of a lettered point, named for it (X.c45: the piston position of 45°): X(45°)
+        other = self.objects.get(parts[-1]) if len(parts) == 2 and len(parts[0].rsplit(".", 1)[-1]) == 1 else None
+        if other is not None and other[1]:
+            return f"{parts[0].rsplit('.', 1)[-1]}({other[1]})"  # X.c45, the piston position of 45°: X(45°)
+        return tag(name, self.letters)
+
+    @functools.cached_property
+    def letters(self) -> frozenset[str]:
+        return frozenset(v[1] for v in self.objects.values() if v[1])
+
+    def curve_points(self, name: str) -> list[str]:
+        """The points the description of a curve names (a circle's centre, two points of a line)."""
+        kind, label, op, inputs = self.objects[name]
+        if label or name in _COMMON:
+            return []
+        pts = [p for p in inputs if p in self.points]
+        if kind == "line" and op == "line":
+            return pts[:2]
+        return pts[:1]
+
+    def curve(self, name: str, lang: str) -> str:
+        """A lettered or described line or circle."""
+        kind, label, op, inputs = self.objects[name]
+        if label:
+            return label
+        i = 0 if lang == "de" else 1
+        if name in _COMMON:
+            return _COMMON[name][i]
+        pts = [p for p in inputs if p in self.points]
+        if kind == "circle" and pts:
+            return ("Kreis um ", "the circle about ")[i] + self.point(pts[0])
+        if kind == "line" and len(pts) >= 2 and op == "line":
+            return ("Gerade ", "the line ")[i] + self._pair(self.point(pts[0]), self.point(pts[1]))
+        if kind == "line" and pts:
+            return ("Gerade durch ", "the line through ")[i] + self.point(pts[0])
+        return ("Kreis", "the circle")[i] if kind == "circle" else ("Gerade", "the line")[i]
+
+    @staticmethod
+    def _pair(a: str, b: str) -> str:
+        # Two single capitals read as a segment (AB); numbers and primes need a dash (3–6).
+        return a + b if len(a) == 1 == len(b) and a.isalpha() and b.isalpha() else f"{a}–{b}"
+
+    def _split(self, token: str) -> tuple[str, str] | None:
+        """``D0P6`` -> (D0, P6): two point names written together, if the token is exactly that."""
+        if token[1:].islower() and "." not in token and not any(c.isdigit() for c in token):
+            return None  # a word ("Kreis", "durch"): not two names
+        for i in range(1, len(token)):
+            if token[:i] in self.points and token[i:] in self.points:
+                return token[:i], token[i:]
+        return None
+
+    # -- a caption ------------------------------------------------------------------------
+    def mentioned(self, caption: str) -> set[str]:
+        """The points *caption* names, directly, as a pair (D0P6) or as the centre of a circle it names."""
+        out: set[str] = set()
+        for m in _NAME.finditer(caption):
+            token = m.group(0)
+            obj = self.objects.get(token)
+            if obj is None:
+                out.update(self._split(token) or ())
+            elif obj[0] == "point":
+                out.add(token)
+            elif obj[0] in ("circle", "line"):
+                out.update(self.curve_points(token))
+        return out
+
+    def text(self, caption: str, lang: str, outputs: Sequence[str] = ()) -> str:
+        """*caption* (in *lang*, "de" or "en") in the figure's letters; *outputs* are the step's own objects."""
+        made = set(outputs)
+        out: list[str] = []
+        pos = 0
+        for m in _NAME.finditer(caption):
+            token = m.group(0)
+            start, end = m.span()
+            obj = self.objects.get(token)
+            rep: str | None = None
+            word = token.isalpha() and token.islower()
+            if obj is None:
+                pair = self._split(token)
+                if pair:
+                    rep = self._pair(self.point(pair[0]), self.point(pair[1]))
+            elif (obj[0] in ("line", "circle") and token in made and not obj[1]
+                  and not (token.isalpha() and token.isupper())):
+                rep = ""  # the step's own helper line or circle: the figure has no letter for it
+            elif word and not self._names_slot(caption, start, end):
+                rep = None  # an ordinary word that is also a name ("crank centre", "the axis")
+            elif obj[0] == "point":
+                rep = self.point(token)
+            elif obj[0] in ("line", "circle"):
+                rep = self.curve(token, lang)
+            if rep is None:
+                continue
+            out.append(caption[pos:start])
+            out.append(rep)
+            pos = end
+        out.append(caption[pos:])
+        text = "".join(out)
+        text = re.sub(r"  +", " ", text).replace(" :", ":").replace("( ", "(").strip()
+        # "im Schnitt von Kreis um 3" reads better with the article the English already has
+        if lang == "de":
+            text = text.replace("von Kreis um", "vom Kreis um").replace("und Kreis um", "und dem Kreis um")
+        else:
+            text = text.replace(" the the ", " the ")
+        return subscripts(book_symbols(text) if lang == "en" else equation(text))
+
+    @staticmethod
+    def _names_slot(text: str, start: int, end: int) -> bool:
+        """Is the word at text[start:end] where a caption names an object ("Kreis um top", "where axis meets")?"""
+        if text[end:end + 1] == "-":
+            return False
+        before = text[:start].rstrip().rsplit(" ", 1)[-1].lower()
+        return before in _SLOTS

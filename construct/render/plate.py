@@ -1,0 +1,361 @@
+"""Plate furniture: what a book plate carries besides the construction.
+
+A plate in the books is more than its construction lines: the stroke is
+dimensioned with arrowheads (s, r, L), the centre line is dash-dotted, the
+result curve is drawn heavy and the helper lines thin, the angles of a crank
+position carry their arcs and values, a diagram has its scale and the signs
+of its zones.  A construction describes this as data, a :class:`Plate`: the
+look of named objects and a tuple of furniture items in drawing
+coordinates (y up, the figure's own units), so that any construction, the
+force diagrams included, can letter its plate the same way.  Constructions do
+not import the renderer: they describe their plate in plain data, a dict
+that :meth:`Plate.from_data` reads::
+
+    def my_plate(fig):
+        return {"looks": {"axis": "centre", "curve": "heavy"},
+                "furniture": [{"kind": "dimension", "a": (-1, 0), "b": (1, 0), "text": "s", "offset": -0.3}]}
+
+    Construction(..., extra={"plate": my_plate})
+
+Kinds: dimension (a, b, text, offset), angle (centre, start, end, radius,
+text, text_at), stroke (a, b, look, broken), lettering (at, text, anchor,
+angle, size), scale (origin, end, text), sign (at, text), dot (at).
+
+Every value written on a plate is read off the constructed figure (the
+construction's own points), never from the formula the checks compare with.
+:func:`furniture_elements` draws the items in a style; all lettering gets a
+paper-coloured halo, so that no line strikes through a letter.
+
+>>> d = Dimension((0.0, 0.0), (2.0, 0.0), "s", offset=-0.3)
+>>> ext = extent((d,))
+>>> ext[1] < -0.29 and ext[2] == 2.0
+True
+>>> dms(math.radians(61.3225))
+'61°19′'
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, fields, replace
+from typing import Any, Callable, Mapping, Sequence
+
+__all__ = ["Plate", "Dimension", "AngleArc", "Stroke", "Lettering", "ScaleBar", "Sign", "Dot", "dms", "extent",
+           "anchors", "shifted",
+           "furniture_elements", "LOOKS_CSS", "plate_of"]
+
+XY = tuple[float, float]
+
+#: Line looks a plate may give its objects (CSS classes on the marks).
+LOOKS_CSS = (
+    ".heavy{stroke-width:2.2px}",
+    ".medium{stroke-width:1px}",
+    ".thin{stroke-width:0.45px}",
+    ".dashdot{stroke-dasharray:14 3 2 3;stroke-width:0.7px}",
+    ".centre{stroke-dasharray:18 3 2 3;stroke-width:0.5px}",
+    ".dashed{stroke-dasharray:6 4}",
+)
+
+
+@dataclass(frozen=True)
+class Dimension:
+    """A dimension line from *a* to *b* with arrowheads, set off by *offset* (drawing units, + = left of a->b)."""
+
+    a: XY
+    b: XY
+    text: str
+    offset: float = 0.0
+
+
+@dataclass(frozen=True)
+class AngleArc:
+    """The arc of the angle at *centre* from the ray through *start* to the ray through *end*, radius *radius*.
+
+    *text* is written at *text_at* (drawing units), or beside the arc's middle if None.
+    """
+
+    centre: XY
+    start: XY
+    end: XY
+    radius: float
+    text: str = ""
+    text_at: XY | None = None
+
+
+@dataclass(frozen=True)
+class Stroke:
+    """A line drawn for the plate only (the crank in one position, a radius): *look* as in :data:`LOOKS_CSS`.
+
+    *broken*: the far end is drawn as a break (the part is longer than the sheet).
+    """
+
+    a: XY
+    b: XY
+    look: str = "thin"
+    broken: bool = False
+
+
+@dataclass(frozen=True)
+class Lettering:
+    """Text at *at*; *anchor* start, middle or end; *angle* in degrees (counter-clockwise), *size* relative."""
+
+    at: XY
+    text: str
+    anchor: str = "middle"
+    angle: float = 0.0
+    size: float = 1.0
+
+
+@dataclass(frozen=True)
+class ScaleBar:
+    """A scale: the length from *origin* to *end* stands for *text* (e.g. 1 kg/cm²), with end ticks."""
+
+    origin: XY
+    end: XY
+    text: str
+
+
+@dataclass(frozen=True)
+class Dot:
+    """A point the plate marks (the crosshead of the rod drawn in one position)."""
+
+    at: XY
+
+
+@dataclass(frozen=True)
+class Sign:
+    """The sign of a zone of a diagram (+ or −), set large in it."""
+
+    at: XY
+    text: str
+
+
+@dataclass(frozen=True)
+class Plate:
+    """What a construction adds to its plate: looks of named objects, and furniture."""
+
+    looks: Mapping[str, str] = field(default_factory=dict)
+    furniture: tuple = ()
+
+    @classmethod
+    def from_data(cls, data: Mapping[str, Any] | None) -> "Plate":
+        """A plate from a construction's plain description (see the module docstring).
+
+        >>> p = Plate.from_data({"looks": {"axis": "centre"}, "furniture": [{"kind": "sign", "at": (0, 1), "text": "+"}]})
+        >>> p.looks["axis"], p.furniture
+        ('centre', (Sign(at=(0, 1), text='+'),))
+        """
+        if not data:
+            return cls()
+        kinds = {"dimension": Dimension, "angle": AngleArc, "stroke": Stroke, "lettering": Lettering,
+                 "scale": ScaleBar, "sign": Sign, "dot": Dot}
+        items = []
+        for d in data.get("furniture", ()):
+            d = dict(d)
+            kind = d.pop("kind")
+            if kind not in kinds:
+                from ..errors import InvalidParameter
+
+                raise InvalidParameter(f"unknown plate furniture {kind!r}; choose one of {', '.join(sorted(kinds))}")
+            items.append(kinds[kind](**d))
+        return cls(dict(data.get("looks", {})), tuple(items))
+
+
+def plate_of(construction: Any, figure: Any) -> Plate:
+    """The construction's plate description (``extra["plate"](figure)``), or an empty one."""
+    make: Callable[[Any], Any] | None = (getattr(construction, "extra", None) or {}).get("plate")
+    return Plate.from_data(make(figure)) if make else Plate()
+
+
+def dms(rad: float) -> str:
+    """An angle in degrees and minutes, rounded to the minute, as the books print it (61°19′)."""
+    minutes = round(math.degrees(rad) * 60.0)
+    d, m = divmod(minutes, 60)
+    return f"{d}°{m:02d}′"
+
+
+def _points(item: Any) -> list[XY]:
+    if isinstance(item, Dimension):
+        (ax, ay), (bx, by) = item.a, item.b
+        nx, ny = _normal(item.a, item.b)
+        o = item.offset
+        return [item.a, item.b, (ax + o * nx, ay + o * ny), (bx + o * nx, by + o * ny)]
+    if isinstance(item, AngleArc):
+        cx, cy = item.centre
+        pts = [(cx + item.radius * math.cos(t), cy + item.radius * math.sin(t)) for t in _arc_angles(item, 9)]
+        return pts + ([item.text_at] if item.text_at else [])
+    if isinstance(item, (Stroke, ScaleBar)):
+        return [item.origin, item.end] if isinstance(item, ScaleBar) else [item.a, item.b]
+    if isinstance(item, (Lettering, Sign, Dot)):
+        return [item.at]
+    return []
+
+
+def anchors(items: Sequence[Any]) -> list[XY]:
+    """The points of the furniture that stand on their own (not the ends of a line or dimension):
+    a broken axis keeps them clear of its gap."""
+    return [p for it in items if not isinstance(it, (Stroke, Dimension)) for p in _points(it)]
+
+
+def shifted(item: Any, sx: Callable[[float], float]) -> Any:
+    """*item* with every point's x mapped by *sx* (a broken axis)."""
+    changes = {}
+    for f in fields(item):
+        v = getattr(item, f.name)
+        if isinstance(v, tuple) and len(v) == 2 and all(isinstance(c, (int, float)) for c in v):
+            changes[f.name] = (sx(v[0]), v[1])
+    return replace(item, **changes) if changes else item
+
+
+def extent(items: Sequence[Any]) -> tuple[float, float, float, float] | None:
+    """The box (drawing units) the furniture's anchor points span, or None."""
+    pts = [p for it in items for p in _points(it)]
+    if not pts:
+        return None
+    return (min(p[0] for p in pts), min(p[1] for p in pts), max(p[0] for p in pts), max(p[1] for p in pts))
+
+
+def _normal(a: XY, b: XY) -> XY:
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    n = math.hypot(dx, dy) or 1.0
+    return (-dy / n, dx / n)
+
+
+def _arc_angles(item: AngleArc, n: int) -> list[float]:
+    cx, cy = item.centre
+    a0 = math.atan2(item.start[1] - cy, item.start[0] - cx)
+    a1 = math.atan2(item.end[1] - cy, item.end[0] - cx)
+    sweep = (a1 - a0) % (2 * math.pi)
+    if sweep > math.pi:  # the angle of a crank position is at most 180°: go the short way round
+        sweep -= 2 * math.pi
+    return [a0 + sweep * i / (n - 1) for i in range(n)]
+
+
+# -- drawing ---------------------------------------------------------------------------------
+
+
+def _f(v: float) -> str:
+    text = f"{v:.2f}".rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
+
+
+def furniture_elements(items: Sequence[Any], px: Callable[[float, float], XY], scale: float, f: Any, *,
+                       size: float = 12.0) -> list[Any]:
+    """The furniture as svgwrite elements made by the factory *f* (pixels through *px*, *scale* px per unit).
+
+    Classes: ``fur`` (lines, with a look: ``fur heavy``), ``arrow`` (filled heads), ``lb fur-text``
+    (lettering), each letter on a ``lb halo`` copy of itself in paper colour.
+    """
+    out: list[Any] = []
+    for it in items:
+        out.extend(_item(it, px, scale, size, f))
+    return out
+
+
+def _line(f: Any, a: XY, b: XY, cls: str = "fur") -> Any:
+    return f.line(start=(_f(a[0]), _f(a[1])), end=(_f(b[0]), _f(b[1])), class_=cls)
+
+
+def _poly(f: Any, pts: Sequence[XY], cls: str, close: bool = False) -> Any:
+    return f.path(d="M" + "L".join(f"{_f(x)} {_f(y)}" for x, y in pts) + ("Z" if close else ""), class_=cls)
+
+
+def _arrow(f: Any, tip: XY, frm: XY, size: float) -> Any:
+    """A filled arrowhead at *tip* pointing away from *frm* (pixels)."""
+    dx, dy = tip[0] - frm[0], tip[1] - frm[1]
+    n = math.hypot(dx, dy) or 1.0
+    ux, uy = dx / n, dy / n
+    L, W = 0.75 * size, 0.22 * size
+    bx, by = tip[0] - L * ux, tip[1] - L * uy
+    return _poly(f, [tip, (bx - W * uy, by + W * ux), (bx + W * uy, by - W * ux)], "arrow", close=True)
+
+
+def _text(f: Any, at: XY, text: str, size: float, anchor: str = "middle", angle: float = 0.0,
+          rel: float = 1.0) -> list[Any]:
+    attrs: dict[str, Any] = {"x": [_f(at[0])], "y": [_f(at[1] + 0.35 * size * rel)]}
+    if anchor != "middle":
+        attrs["text_anchor"] = anchor
+    if angle:
+        attrs["transform"] = f"rotate({_f(-angle)} {_f(at[0])} {_f(at[1])})"
+    if rel != 1.0:
+        attrs["style"] = f"font-size:{_f(size * rel)}px"
+    return [f.text(text, class_="lb halo", **attrs), f.text(text, class_="lb fur-text", **attrs)]
+
+
+def _item(it: Any, px: Callable[[float, float], XY], scale: float, size: float, f: Any) -> list[Any]:
+    if isinstance(it, Dimension):
+        nx, ny = _normal(it.a, it.b)
+        o = it.offset
+        a, b = px(*it.a), px(*it.b)
+        a2 = px(it.a[0] + o * nx, it.a[1] + o * ny)
+        b2 = px(it.b[0] + o * nx, it.b[1] + o * ny)
+        out = []
+        if abs(o) * scale > 2.0:
+            # extension lines, from a little off the object to a little past the dimension line
+            for p, q in ((a, a2), (b, b2)):
+                dx, dy = q[0] - p[0], q[1] - p[1]
+                n = math.hypot(dx, dy) or 1.0
+                out.append(_line(f, (p[0] + 3 * dx / n, p[1] + 3 * dy / n), (q[0] + 4 * dx / n, q[1] + 4 * dy / n),
+                                 "fur thin"))
+        mid = ((a2[0] + b2[0]) / 2, (a2[1] + b2[1]) / 2)
+        # the dimension line stops either side of its text, as a draftsman leaves room for the figure
+        length = math.hypot(b2[0] - a2[0], b2[1] - a2[1]) or 1.0
+        gap = min(0.5 * length - 1.0, 0.33 * size * len(it.text) + 0.4 * size)
+        ux, uy = (b2[0] - a2[0]) / length, (b2[1] - a2[1]) / length
+        out += [_line(f, a2, (mid[0] - gap * ux, mid[1] - gap * uy), "fur"),
+                _line(f, (mid[0] + gap * ux, mid[1] + gap * uy), b2, "fur"),
+                _arrow(f, a2, b2, size), _arrow(f, b2, a2, size)]
+        ang = math.degrees(math.atan2(-(b2[1] - a2[1]), b2[0] - a2[0]))
+        if ang > 90 or ang < -90:
+            ang += 180
+        if ang > 180:
+            ang -= 360
+        # the text sits on the dimension line; its halo opens the line for it
+        return out + _text(f, mid, it.text, size, "middle", ang)
+    if isinstance(it, AngleArc):
+        angles = _arc_angles(it, 33)
+        cx, cy = it.centre
+        pts = [px(cx + it.radius * math.cos(t), cy + it.radius * math.sin(t)) for t in angles]
+        out = [_poly(f, pts, "fur thin"), _arrow(f, pts[-1], pts[-3], 0.7 * size)]
+        if it.text:
+            if it.text_at:
+                at = px(*it.text_at)
+            else:
+                t = angles[len(angles) // 2]
+                rr = it.radius + 10.0 / scale
+                at = px(cx + rr * math.cos(t), cy + rr * math.sin(t))
+            out += _text(f, at, it.text, size, "middle", 0.0, 0.85)
+        return out
+    if isinstance(it, Stroke):
+        a, b = px(*it.a), px(*it.b)
+        out = [_line(f, a, b, f"fur {it.look}")]
+        if it.broken:
+            # the break: a short zig-zag across the end of a part longer than the sheet
+            nx, ny = _normal(a, b)
+            dx, dy = b[0] - a[0], b[1] - a[1]
+            n = math.hypot(dx, dy) or 1.0
+            ux, uy = dx / n, dy / n
+            h = 0.5 * size
+            zig = [(b[0] - h * nx, b[1] - h * ny),
+                   (b[0] - 0.3 * h * ux - 0.2 * h * nx, b[1] - 0.3 * h * uy - 0.2 * h * ny),
+                   (b[0] + 0.3 * h * ux + 0.2 * h * nx, b[1] + 0.3 * h * uy + 0.2 * h * ny),
+                   (b[0] + h * nx, b[1] + h * ny)]
+            out.append(_poly(f, zig, "fur"))
+        return out
+    if isinstance(it, ScaleBar):
+        a, b = px(*it.origin), px(*it.end)
+        nx, ny = _normal(a, b)
+        t = 0.35 * size
+        out = [_line(f, a, b, "fur medium"),
+               _line(f, (a[0] - t * nx, a[1] - t * ny), (a[0] + t * nx, a[1] + t * ny), "fur medium"),
+               _line(f, (b[0] - t * nx, b[1] - t * ny), (b[0] + t * nx, b[1] + t * ny), "fur medium")]
+        mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+        return out + _text(f, (mid[0] + 0.6 * size, mid[1]), it.text, size, "start", 0.0, 0.85)
+    if isinstance(it, Lettering):
+        return _text(f, px(*it.at), it.text, size, it.anchor, it.angle, it.size)
+    if isinstance(it, Sign):
+        return _text(f, px(*it.at), it.text, size, "middle", 0.0, 2.0)
+    if isinstance(it, Dot):
+        x, y = px(*it.at)
+        return [f.circle(center=(_f(x), _f(y)), r=_f(0.22 * size), class_="arrow")]
+    return []

@@ -7,9 +7,11 @@
     OUT/<entry>/checks.md, checks.json    the check report against the analytic formulas
     OUT/<entry>/<style>/final.svg         historical: the book plate; teaching: the whole construction,
                                           every step a <g data-step="k"> group (the golden of every step)
-    OUT/<entry>/teaching/animated.svg     plays the steps without script
-    OUT/<entry>/teaching/player.html      the step player, one file
-    OUT/<entry>/teaching/storyboard.svg   contact sheet
+    OUT/<entry>/teaching/player.html      the step player, one file (it plays the steps too)
+
+(``construct replay`` also writes animated.svg and storyboard.svg; the
+gallery leaves them out, they carry the same elements again and the
+committed gallery stays small.)
     OUT/README.md, OUT/index.html         the index, with pictures, captions, methods and checks
 
 The whole folder is built in a staging folder next to *out* and swapped in
@@ -44,10 +46,10 @@ GALLERY_STYLES = ("historical", "teaching")
 #: The teaching final.svg holds every step as a group, and `construct verify`
 #: compares it step by step, so every step stays golden in one file.
 FRAME_MODE = "none"
-#: What each style adds to its final.svg: the teaching style animates and plays the construction
-#: and shows its storyboard; the historical style is the plate (the same construction's views in
-#: the plate's ink would double the gallery and teach nothing new).
-GALLERY_OUTPUTS = {"historical": (), "teaching": ("animated", "player", "storyboard")}
+#: What each style adds to its final.svg: the teaching style's step player (it also plays the steps;
+#: the animation and storyboard of `construct replay` carry the same elements again); the historical
+#: style is the plate (the construction's views in the plate's ink would double the gallery).
+GALLERY_OUTPUTS = {"historical": (), "teaching": ("player",)}
 #: The width (CSS px) at which the gallery page shows a figure: its own width, one figure per row,
 #: so that letters of 12 px and captions of 13-14 px are shown at that size (never under 9 px).
 DISPLAY_PX = 960
@@ -143,8 +145,11 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
     for style in GALLERY_STYLES:
         sdir = edir / style
         sdir.mkdir()
+        # The player for the first of a construction's book parameters: the others are the same steps with
+        # other numbers, golden in their layered final.svg and protocol (a replay writes their player).
+        outputs = GALLERY_OUTPUTS[style] if _first_of_its_construction(name, params) else ()
         info = write_outputs(sdir, c, fig, STYLES[style], frames=FRAME_MODE, fig_number=number, protocol=False,
-                             outputs=GALLERY_OUTPUTS[style])
+                             outputs=outputs)
         files = sorted(str(p.relative_to(root)) for p in sdir.rglob("*") if p.is_file())
         files += [f"{slug}/protocol.json", f"{slug}/checks.md", f"{slug}/checks.json"]
         entries.append({"construction": name, "params": dict(params), "style": style,
@@ -153,8 +158,12 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
     row = {"number": number, "name": name, "slug": slug, "params": params, "title": c.title,
            "source": c.source, "method": _method(fig), "checks": summary(checks),
            "ok": all(ch.ok for ch in checks), "steps": len(fig.protocol.steps),
-           "params_text": params_text(fig)}
+           "params_text": params_text(fig), "player": _first_of_its_construction(name, params)}
     return entries, row
+
+
+def _first_of_its_construction(name: str, params: Mapping[str, Any]) -> bool:
+    return next(p for n, p in gallery_plan() if n == name) == dict(params)
 
 
 def build_gallery(out: str | Path, *, progress: bool = False, workers: int | None = None) -> list[dict]:
@@ -207,7 +216,7 @@ def _readme(index: list[dict]) -> str:
     lines = ["# Gallery", "",
              "Built by `construct gallery`; do not edit by hand.  Every construction at the parameters the "
              "books print, as a plate in the historical style and step by step in the teaching style. "
-             "Open `*/teaching/player.html` to step through a construction; `animated.svg` plays it.", ""]
+             "Open `*/teaching/player.html` to step through a construction or let it play.", ""]
     for e in index:
         t = e["title"]
         s = e["slug"]
@@ -218,8 +227,10 @@ def _readme(index: list[dict]) -> str:
                   # one picture per row: at the page's width the letters stay at least 9 px (DISPLAY_PX)
                   f"![Fig. {e['number']}, historical plate]({s}/historical/final.svg)", "",
                   f"![Fig. {e['number']}, teaching]({s}/teaching/final.svg)", "",
-                  f"Teaching ({e['steps']} steps): [animated]({s}/teaching/animated.svg) · "
-                  f"[player]({s}/teaching/player.html) · [storyboard]({s}/teaching/storyboard.svg)", ""]
+                  (f"Teaching ({e['steps']} steps): [player]({s}/teaching/player.html) · "
+                   f"[final figure]({s}/teaching/final.svg)" if e["player"] else
+                   f"Teaching ({e['steps']} steps): [final figure]({s}/teaching/final.svg) (the player: "
+                   f"`construct replay {e['name']} --style teaching --out DIR`, or the first figure of its kind)"), ""]
     return "\n".join(lines)
 
 
@@ -228,6 +239,8 @@ def _index_html(index: list[dict]) -> str:
     cards = []
     for e in index:
         t, s = e["title"], esc(e["slug"])
+        target = f"{s}/teaching/player.html" if e["player"] else f"{s}/teaching/final.svg"
+        player = f' · <a href="{s}/teaching/player.html">player</a>' if e["player"] else ""
         cards.append(f"""<section>
 <h2>Fig. {e['number']}. {esc(t.de)} <span class="en">{esc(t.en)}</span></h2>
 <p class="meta">{esc(e['params_text'])} — {esc(e['source'])}</p>
@@ -236,9 +249,9 @@ def _index_html(index: list[dict]) -> str:
  (<a href="{s}/checks.md">report</a>)</p>
 <div class="pics">
 <figure><a href="{s}/historical/final.svg"><img src="{s}/historical/final.svg" alt="Fig. {e['number']}, historical plate"></a>
-<figcaption>historical plate · <a href="{s}/teaching/player.html">player</a></figcaption></figure>
-<figure><a href="{s}/teaching/player.html"><img src="{s}/teaching/animated.svg" alt="Fig. {e['number']}, teaching, animated"></a>
-<figcaption>teaching ({e['steps']} steps) · <a href="{s}/teaching/player.html">player</a> · <a href="{s}/teaching/final.svg">final</a> · <a href="{s}/teaching/storyboard.svg">storyboard</a></figcaption></figure>
+<figcaption>historical plate{player}</figcaption></figure>
+<figure><a href="{target}"><img src="{s}/teaching/final.svg" alt="Fig. {e['number']}, teaching, every step"></a>
+<figcaption>teaching ({e['steps']} steps){player} · <a href="{s}/teaching/final.svg">final</a></figcaption></figure>
 </div>
 </section>""")
     return ("""<!DOCTYPE html>
@@ -252,5 +265,5 @@ section{border-top:1px solid #ddd;padding:6px 0 12px}
 img{width:100%;height:auto;border:1px solid #ccc;background:#fff}figcaption{color:#555;font-size:13px}
 </style></head><body>
 <h1>construct — gallery</h1>
-<p>Every construction at the books' parameters: the plate (historical style) and the construction step by step (teaching style, animated). Click the animation for the step player. Built by <code>construct gallery</code>.</p>
+<p>Every construction at the books' parameters: the plate (historical style) and the construction step by step (teaching style). Click it for the step player. Built by <code>construct gallery</code>.</p>
 """ + "\n".join(cards) + "\n</body></html>\n")

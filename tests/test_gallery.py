@@ -41,8 +41,9 @@ def test_gallery_entry_files_and_index(small_plan, tmp_path):
         for f in e["files"]:
             assert (out / f).is_file(), f
         style_files = {Path(f).name for f in e["files"] if f"/{e['style']}/" in f}
+        first = e["params"] == next(p for n, p in gallery.gallery_plan() if n == e["construction"])
         expected = {"historical": {"final.svg"},
-                    "teaching": {"final.svg", "animated.svg", "player.html", "storyboard.svg"}}[e["style"]]
+                    "teaching": {"final.svg", "player.html"} if first else {"final.svg"}}[e["style"]]
         assert style_files == expected
     # no standalone frames: the teaching figure is layered, a group for every step that draws something
     assert not list(out.rglob("steps"))
@@ -56,7 +57,7 @@ def test_gallery_entry_files_and_index(small_plan, tmp_path):
     assert len(pics) == 2 and all((out / p).is_file() for p in pics)
     assert "Kolbenwege aus dem Kurbelkreis" in readme and "**Method:**" in readme and "**Checks:**" in readme
     html = (out / "index.html").read_text(encoding="utf-8")
-    assert all(f'src="{p}"' in html or p.replace("final.svg", "animated.svg") in html for p in pics)
+    assert all(f'src="{p}"' in html for p in pics)
     assert "Fig. 1." in (out / "crank-parts-3-rod-ratio-4" / "historical" / "final.svg").read_text()
 
 
@@ -93,5 +94,5 @@ def test_committed_gallery_has_every_construction():
     for name, params in gallery.gallery_plan():
         slug = gallery.entry_slug(name, params)
         assert (root / slug / "historical" / "final.svg").is_file(), slug
-        assert (root / slug / "teaching" / "player.html").is_file(), slug
+        assert (root / slug / "teaching" / "final.svg").is_file(), slug
         assert f"({slug}/historical/final.svg)" in readme, slug

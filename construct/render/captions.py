@@ -45,6 +45,9 @@ _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*")
 #: Words after which the instruments' captions put an object's name ("Kreis um X durch Y", "X where a meets b").
 _SLOTS = {"um", "durch", "von", "und", "mit", "zu", "about", "through", "where", "meets", "and", "of", "from", "with", "for"}
 
+#: Nouns after which a lower-case name is a word of the sentence ("crank circle", "axis line").
+_NOUNS = {"circle", "line", "centre", "center", "kreis", "linie", "gerade"}
+
 #: How the books name the objects every crank figure has.
 _COMMON = {
     "axis": ("Hubachse", "the stroke line"),
@@ -211,6 +214,8 @@ class Reader:
                 pair = self._split(token)
                 if pair:
                     rep = self._pair(self.point(pair[0]), self.point(pair[1]))
+            elif word and caption[end:].lstrip().split(" ", 1)[0].lower() in _NOUNS:
+                rep = None  # a word of the sentence that names a thing ("crank circle about O")
             elif (obj[0] in ("line", "circle") and token in made and not obj[1]
                   and not (token.isalpha() and token.isupper())):
                 rep = ""  # the step's own helper line or circle: the figure has no letter for it

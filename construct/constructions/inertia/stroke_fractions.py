@@ -20,7 +20,12 @@ from ..crank import build_frame, inverse_tolerance
 from .build import _dir, _givens, _setup, _value
 from .measure import _offset
 
-__all__ = ["build_q_at_stroke_fractions", "stroke_fraction_checks"]
+__all__ = ["build_q_at_stroke_fractions", "stroke_fraction_checks", "PLATE"]
+
+#: What the plate shows: the stroke in tenths, the rod swung back to the crank circle, the crank
+#: positions, and the proportional angle's rays carrying each q to the F/f line.
+PLATE = (r"axis", r"crank", r"D[01]", r"O", r"vert", r"x\d+", r"rod\d+", r"W\d+", r"S", r"gf", r"gf\.U", r"Vt\d+",
+         r"Vt\d+\.s")
 
 
 def build_q_at_stroke_fractions(*, rod_ratio: float, divisions: int, r: float = 1.0, pressure_ratio: float = 1.0,
@@ -34,7 +39,7 @@ def build_q_at_stroke_fractions(*, rod_ratio: float, divisions: int, r: float = 
     givens = _givens(r, rod_ratio, pressure_ratio, pressure_unit)
     if isinstance(divisions, bool) or not isinstance(divisions, int) or not 1 <= divisions <= 1000:
         raise InvalidParameter(f"number of stroke divisions must be a whole number from 1 to 1000, got {divisions!r}")
-    b = Builder("inertia-stroke-fractions", givens, {"divisions": divisions})
+    b = Builder("inertia-stroke-fractions", givens, {"divisions": divisions, "plate": PLATE})
     f = build_frame(b)
     c = _setup(b, f)
     m = divisions
@@ -49,10 +54,11 @@ def build_q_at_stroke_fractions(*, rod_ratio: float, divisions: int, r: float = 
                 C = b.intersect(f"C{j}", arc, c.axis, rule=("toward", c.O, None, -1.0, 0.0), de="Kreuzkopf", en="crosshead")
                 back = b.circle_radius(f"rod{j}", C, c.L, de="mit L auf den Kurbelkreis", en="with L onto the crank circle")
                 P = b.intersect(f"W{j}", back, c.crank, rule=("left", c.D0, c.D1), de=f"Kurbelstellung W{j}",
-                                en=f"crank position W{j}")
+                                en=f"crank position W{j}", labels={f"W{j}": str(j)})
                 kind = "generic"
             dc_p = c.D0 if b[P][0] * _dir(b, c) < b[c.O][0] * _dir(b, c) else c.D1
             _value(b, c, f"t{j}", P, kind, dc_p, None)
+            b.set_label(f"Vt{j}", f"q{j}")
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))
 

@@ -1,6 +1,5 @@
 """The proportional angle, fourth and mean proportionals: intercept theorem and Thales, step by step."""
 
-import math
 
 import mpmath
 import pytest

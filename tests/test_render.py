@@ -12,7 +12,6 @@ import subprocess
 import sys
 import warnings
 import xml.etree.ElementTree as ET
-from pathlib import Path
 
 import cairosvg
 import pytest

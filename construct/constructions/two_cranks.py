@@ -669,7 +669,6 @@ def two_cranks_checks(fig: Figure) -> list[Check]:
     kinds = [(True, None)] if fig.params["infinite_rod"] else [(False, K), (True, None)]
     for infinite, ratio in kinds:
         word = "infinite rod" if infinite else f"L/r = {K:g}"
-        t = _prefix(fig, infinite)
         # The division's error moves a crank point; |de/dalpha| <= 2(1 + lam) + 4/pi.
         slope = 2.0 * (1.0 + (0.0 if ratio is None else 1.0 / ratio)) + 4.0 / math.pi
         err_w = max(angle_tolerance(fig, p, made_by)[0] for p in made_by if p.startswith("P") and p[1:].isdigit()) \

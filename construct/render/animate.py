@@ -24,7 +24,6 @@ True
 
 from __future__ import annotations
 
-import bisect
 from typing import Any
 
 from .svg import PLAIN, Drawing, Style, fmt, group_caption

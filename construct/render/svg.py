@@ -300,7 +300,6 @@ class Drawing:
     def caption_lines(self) -> int:
         """Caption lines for the frames: the most any step needs, so that all frames have one size."""
         st = self.style
-        width = st.width_px - 2 * st.margin_px
         most = 2
         for k in range(1, len(self.scene.steps) + 1):
             de, en = self._wrapped_caption(k)

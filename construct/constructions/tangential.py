@@ -417,12 +417,12 @@ def drawn_model(g: Mapping[str, float], force: str, n: int) -> dict[str, float]:
     """
     from ..kernel.areas import area_between
     from ..kernel.curves import crossings
-    from ..kernel.geometry import Line, Point
+    from ..kernel.geometry import SCALAR, Line, Point
     from ..kernel.ops import OPS
 
     pts = [Point(math.pi * k / n, model_t(math.pi * k / n, g, force)) for k in range(n + 1)]
     base = Line(Point(0.0, 0.0), Point(math.pi, 0.0))
-    curve, = OPS["french_curve"].fn((base, *pts), {"points": n + 1, "tangent_at": ()}, {}, (), None)
+    curve, = OPS["french_curve"].fn((base, *pts), {"points": n + 1, "tangent_at": ()}, {}, (), SCALAR)
     mean_height = area_between(curve, base, 0.0, math.pi).signed_area() / math.pi
     found = crossings(curve, Line(Point(0.0, mean_height), Point(math.pi, mean_height)))
     a1, a2 = found[0], found[-1]

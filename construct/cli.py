@@ -10,7 +10,10 @@ because writers go through :mod:`construct.output`.
 from __future__ import annotations
 
 import argparse
+import contextlib
+import signal
 import sys
+import threading
 from typing import Sequence
 
 from .errors import ConstructError
@@ -42,16 +45,42 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+class Terminated(BaseException):
+    """SIGTERM arrived: unwinds like Ctrl-C, so that staging folders are removed on the way out."""
+
+
+def _terminate(signum: int, frame: object) -> None:
+    raise Terminated(signum)
+
+
+@contextlib.contextmanager
+def _terminate_cleanly():
+    """For the command's duration only, SIGTERM raises Terminated (by default it would kill the process
+    with its staging folders still there); the previous handler is restored after."""
+    if threading.current_thread() is not threading.main_thread():
+        yield  # handlers can only be set from the main thread; there the default stays
+        return
+    previous = signal.signal(signal.SIGTERM, _terminate)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     try:
         args = build_parser().parse_args(argv)
-        return int(args._run(args))
+        with _terminate_cleanly():
+            return int(args._run(args))
     except ConstructError as exc:
         print(f"construct: error: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT
     except KeyboardInterrupt:
         print("construct: interrupted", file=sys.stderr)
         return 130
+    except Terminated:
+        print("construct: terminated", file=sys.stderr)
+        return 128 + signal.SIGTERM
     except BrokenPipeError:
         return EXIT_OK
 

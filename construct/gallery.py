@@ -15,8 +15,10 @@ committed gallery stays small.)
     OUT/README.md, OUT/index.html         the index, with pictures, captions, methods and checks
 
 The whole folder is built in a staging folder next to *out* and swapped in
-as one piece (:func:`construct.output.staged_output` on the parent), so a
-failure leaves the previous gallery as it was.  Output is deterministic:
+as one piece (:func:`construct.output.replaced_folder`), so a failure leaves
+the previous gallery as it was.  Only a gallery (recognised by its
+``README.md``, :func:`is_gallery`) or an empty folder is replaced; any other
+folder or file at *out* is refused and left as it is.  Output is deterministic:
 no dates, entries in registry order, fixed number formats.
 
 >>> entry_slug("crank", {"rod_ratio": 5.0, "parts": 18})
@@ -25,20 +27,22 @@ no dates, entries in registry order, fixed number formats.
 
 from __future__ import annotations
 
+import contextlib
 import html
 import json
 import os
+import signal
 import sys
 from pathlib import Path
-from typing import Any, Mapping
+from typing import Any, Iterator, Mapping
 
 from .checks import summary
 from .constructions import get, names
-from .output import staged_output, write_text
+from .output import replaced_folder, write_text
 from .render.output import params_text, write_outputs
 from .render.styles import STYLES
 
-__all__ = ["build_gallery", "gallery_plan", "entry_slug", "GALLERY_STYLES", "GALLERY_OUTPUTS", "FRAME_MODE"]
+__all__ = ["build_gallery", "gallery_plan", "entry_slug", "is_gallery", "GALLERY_STYLES", "GALLERY_OUTPUTS", "FRAME_MODE"]
 
 GALLERY_STYLES = ("historical", "teaching")
 #: No standalone frames: frame k holds the marks of k steps, so all frames
@@ -53,6 +57,26 @@ GALLERY_OUTPUTS = {"historical": (), "teaching": ("player",)}
 #: The width (CSS px) at which the gallery page shows a figure: its own width, one figure per row,
 #: so that letters of 12 px and captions of 13-14 px are shown at that size (never under 9 px).
 DISPLAY_PX = 960
+
+
+#: The gallery's signature: the first lines of the README.md it writes (read back by :func:`is_gallery`).
+README_HEAD = "# Gallery\n\nBuilt by `construct gallery`; do not edit by hand."
+
+
+def is_gallery(folder: str | Path) -> bool:
+    """Whether *folder* is a gallery written by ``construct gallery``: its README.md begins with the
+    gallery's signature and its index.html is there (what ``construct gallery`` may replace).
+
+    >>> is_gallery(Path(__file__).parent), is_gallery("/nonexistent")
+    (False, False)
+    """
+    folder = Path(folder)
+    try:
+        with open(folder / "README.md", "rb") as fh:  # a bounded read: the file may be anything
+            head = fh.read(len(README_HEAD.encode("utf-8")))
+        return head.decode("utf-8", "replace") == README_HEAD and (folder / "index.html").is_file()
+    except OSError:
+        return False
 
 
 def _value(v: Any) -> str:
@@ -174,17 +198,15 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
     results in plan order, so the bytes do not depend on which process
     finished first.
     """
-    out = Path(out)
     plan = gallery_plan()
     bar = _Progress(len(plan), progress)
     entries: list[dict] = []
     index: list[dict] = []
-    target = out.resolve()
     jobs = [(number, name, dict(params)) for number, (name, params) in enumerate(plan, start=1)]
     if workers is None:
         workers = min(4, os.cpu_count() or 1)
-    with staged_output(target.parent) as stage:
-        root = stage / target.name
+    with replaced_folder(out, recognise=is_gallery, described="a gallery written by 'construct gallery'",
+                         what="gallery folder") as root:
         root.mkdir()
         if workers > 1 and len(jobs) > 1:
             import concurrent.futures
@@ -193,11 +215,18 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
             # fork where there is one: the workers start with construct already imported
             methods = multiprocessing.get_all_start_methods()
             context = multiprocessing.get_context("fork" if "fork" in methods else None)
-            with concurrent.futures.ProcessPoolExecutor(min(workers, len(jobs)), mp_context=context) as pool:
-                futures = [pool.submit(_build_entry, root, *job) for job in jobs]
-                for fut in concurrent.futures.as_completed(futures):
-                    bar.step(jobs[futures.index(fut)][1])
-                results = [fut.result() for fut in futures]
+            with concurrent.futures.ProcessPoolExecutor(min(workers, len(jobs)), mp_context=context,
+                                                        initializer=_default_signals) as pool:
+                with _signals_held():  # the workers are forked here
+                    futures = [pool.submit(_build_entry, root, *job) for job in jobs]
+                try:
+                    for fut in concurrent.futures.as_completed(futures):
+                        bar.step(jobs[futures.index(fut)][1])
+                    results = [fut.result() for fut in futures]
+                except BaseException:
+                    # interrupted or failed: the figures not yet begun are not built for nothing
+                    pool.shutdown(wait=True, cancel_futures=True)
+                    raise
         else:
             results = []
             for job in jobs:
@@ -212,9 +241,40 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
     return entries
 
 
+_HELD = ("SIGINT", "SIGTERM")
+
+
+@contextlib.contextmanager
+def _signals_held() -> Iterator[None]:
+    """Hold Ctrl-C and SIGTERM in this thread while worker processes are forked, then let them in.
+
+    A handler that raises during a fork raises inside an at-fork hook, where
+    Python ignores the exception (the interrupt is lost and the build goes on)
+    or leaves the pool half set up; held, the signal arrives just after, where
+    it unwinds the build like anywhere else.  Only this thread's signal mask
+    changes, and only for the moment of the forks.
+    """
+    if not hasattr(signal, "pthread_sigmask"):
+        yield
+        return
+    previous = signal.pthread_sigmask(signal.SIG_BLOCK, [getattr(signal, s) for s in _HELD])
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
+
+
+def _default_signals() -> None:
+    """In a worker process: SIGTERM ends it (a forked worker would inherit the CLI's handler, which
+    unwinds the command in the main process; the main process cleans up after its workers), and
+    the signals held while it was forked are let in again."""
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    if hasattr(signal, "pthread_sigmask"):
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, [getattr(signal, s) for s in _HELD])
+
+
 def _readme(index: list[dict]) -> str:
-    lines = ["# Gallery", "",
-             "Built by `construct gallery`; do not edit by hand.  Every construction at the parameters the "
+    lines = [README_HEAD + "  Every construction at the parameters the "
              "books print, as a plate in the historical style and step by step in the teaching style. "
              "Open `*/teaching/player.html` to step through a construction or let it play.", ""]
     for e in index:

@@ -245,13 +245,25 @@ class GoldenChecker:
         raise AssertionError("\n".join(lines))
 
 
-def _replace(golden_dir: Path, rendered: Path) -> None:
-    """Put the rendered folder in place of the goldens as a whole (no stale frames survive)."""
-    from ..output import staged_output
+#: What :func:`render_goldens` writes into a figure's folder.
+GOLDEN_NAMES = frozenset({"final.svg", "protocol.json", "steps"})
 
-    golden_dir = golden_dir.absolute()
-    with staged_output(golden_dir.parent) as stage:
-        shutil.copytree(rendered, stage / golden_dir.name)
+
+def is_golden_folder(folder: Path) -> bool:
+    """Whether *folder* holds goldens of ``construct_golden`` and nothing else (final.svg, protocol.json,
+    steps/): what ``--construct-update`` may replace."""
+    names = set(os.listdir(folder))
+    return "final.svg" in names and names <= GOLDEN_NAMES
+
+
+def _replace(golden_dir: Path, rendered: Path) -> None:
+    """Put the rendered folder in place of the goldens as a whole (no stale frames survive);
+    a folder that holds anything else is refused and left as it is."""
+    from ..output import replaced_folder
+
+    with replaced_folder(golden_dir, recognise=is_golden_folder, what="goldens folder",
+                         described="a goldens folder of construct_golden (final.svg, protocol.json, steps/)") as new:
+        shutil.copytree(rendered, new)
 
 
 def _remove(path: Path) -> None:

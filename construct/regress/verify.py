@@ -362,10 +362,19 @@ def verify(gallery: str | os.PathLike[str], *, update: bool = False,
     """
     if not (isinstance(tolerance, (int, float)) and tolerance >= 0 and tolerance != float("inf")):
         raise InvalidParameter(f"tolerance must be a finite number >= 0, got {tolerance!r}")
+    if os.fspath(gallery) == "":
+        raise VerifyInputError("the gallery folder is an empty path; name a folder ('.' for the current one)")
     gallery = Path(gallery)
-    if gallery.exists() and not gallery.is_dir():
+    try:
+        gallery.stat()
+        exists = True
+    except (FileNotFoundError, NotADirectoryError):
+        exists = False
+    except OSError as exc:  # a name too long, a folder that cannot be entered
+        raise VerifyInputError(f"cannot read gallery folder {str(gallery)!r}: {exc.strerror or exc}") from None
+    if exists and not gallery.is_dir():
         raise VerifyInputError(f"gallery {str(gallery)!r} is not a folder")
-    if not gallery.exists() and not update:
+    if not exists and not update:
         raise VerifyInputError(f"gallery folder {str(gallery)!r} does not exist; "
                                f"create the goldens with 'construct verify --gallery {gallery} --update'")
     build = builder or default_builder
@@ -386,9 +395,21 @@ def verify(gallery: str | os.PathLike[str], *, update: bool = False,
 
 
 def _replace_tree(gallery: Path, rebuilt: Path) -> None:
-    """Swap the rebuilt tree in for the goldens as one folder (nothing half-written)."""
-    from ..output import staged_output
+    """Swap the rebuilt tree in for the goldens as one folder (nothing half-written).
 
-    gallery = gallery.absolute()
-    with staged_output(gallery.parent) as stage:
-        shutil.copytree(rebuilt, stage / gallery.name)
+    Only goldens are replaced: a gallery written by ``construct gallery``, or a
+    folder holding every top-level entry the rebuild writes (a previous build
+    of the same builder, whose stale files go with it); any other folder is
+    refused, its files are not ours.
+    """
+    from ..output import replaced_folder
+
+    def recognise(folder: Path) -> bool:
+        from ..gallery import is_gallery
+
+        built = set(os.listdir(rebuilt))
+        return is_gallery(folder) or (bool(built) and built <= set(os.listdir(folder)))
+
+    with replaced_folder(gallery, recognise=recognise, what="gallery folder",
+                         described="a gallery of goldens (written by 'construct gallery' or by this builder)") as new:
+        shutil.copytree(rebuilt, new)

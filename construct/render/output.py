@@ -9,11 +9,15 @@ copy.  ``DIR/protocol.json``, ``DIR/animated.svg`` (plays without script),
 k shows steps 1..k) only when asked (``--frames all`` or ``groups``): all
 frames together grow with the square of the step count.  Everything is staged
 and moved into place only when all of it has been written
-(:func:`construct.output.staged_output`).
+(:func:`construct.output.staged_output`); the folder then holds exactly this
+run's files.  A folder is written only when it is new, empty or a previous
+replay (:func:`is_replay_folder`): nothing else in it is ever replaced.
 """
 
 from __future__ import annotations
 
+import os
+import re
 from pathlib import Path
 from typing import Any
 
@@ -22,7 +26,7 @@ from ..output import staged_output, write_text
 from .scene import Scene, build_scene
 from .svg import Drawing, Style, render_svg
 
-__all__ = ["FRAME_MODES", "OUTPUTS", "frame_steps", "write_replay", "write_outputs", "scene_for",
+__all__ = ["FRAME_MODES", "OUTPUTS", "frame_steps", "write_replay", "write_outputs", "scene_for", "is_replay_folder",
            "figure_title", "plate_caption", "params_text"]
 
 FRAME_MODES = ("auto", "all", "groups", "none")
@@ -190,6 +194,28 @@ def write_outputs(stage: Path, construction: Construction | None, figure: Figure
     return {"steps": len(scene.steps), "frames": len(ks)}
 
 
+#: Every name a replay writes in its folder (final.svg always).
+REPLAY_NAMES = frozenset({"final.svg", "protocol.json", "steps", "animated.svg", "player.html", "storyboard.svg"})
+_FRAME_NAME = re.compile(r"^\d+\.svg$")
+
+
+def is_replay_folder(folder: str | Path) -> bool:
+    """Whether *folder* holds a replay and nothing else: final.svg, and only names a replay writes
+    (its frames in steps/); what ``construct replay`` may replace.
+
+    >>> is_replay_folder(Path(__file__).parent)
+    False
+    """
+    from ..output import STAGING_PREFIX
+
+    folder = Path(folder)
+    names = {n for n in os.listdir(folder) if not n.startswith(STAGING_PREFIX)}
+    if "final.svg" not in names or not names <= REPLAY_NAMES:
+        return False
+    steps = folder / "steps"
+    return not steps.exists() or (steps.is_dir() and all(_FRAME_NAME.match(n) for n in os.listdir(steps)))
+
+
 def write_replay(construction: Construction | None, figure: Figure, out_dir: str | Path, *, style: str = "plain",
                  frames: str = "none", styles: dict[str, Style] | None = None) -> dict[str, Any]:
     """Write everything a replay produces; return a summary (counts, paths)."""
@@ -201,6 +227,7 @@ def write_replay(construction: Construction | None, figure: Figure, out_dir: str
 
         raise InvalidParameter(f"unknown style {style!r}; choose one of {', '.join(sorted(table))}")
     st = table[style]
-    with staged_output(out_dir) as stage:
+    with staged_output(out_dir, recognise=is_replay_folder,
+                       described="a replay written by 'construct replay'") as stage:
         info = write_outputs(stage, construction, figure, st, frames=frames)
     return {**info, "out": str(out_dir)}

@@ -1,0 +1,316 @@
+"""Output folders: a writer replaces only what it wrote, says why it cannot write, and leaves no staging behind.
+
+Issue 12 ("Data loss", the output-folder tracebacks, staging folders after a
+kill, the message about an unwritable parent).  The CLI runs in-process
+(``construct.cli.main``) with a one-figure gallery, except where a signal
+must reach a real process.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+import construct.gallery as gallery
+import construct.regress.verify as verify_module
+from construct.cli import main
+from construct.constructions import get
+from construct.errors import OutputError
+from construct.output import STAGING_PREFIX, remove_stale_staging, replaced_folder
+from construct.regress.pytest_plugin import GoldenChecker
+
+REPO = Path(__file__).resolve().parents[1]
+ROOT = os.geteuid() == 0 if hasattr(os, "geteuid") else False
+
+
+@pytest.fixture
+def small_plan(monkeypatch):
+    """A gallery of one small figure, so that a build takes a moment."""
+    monkeypatch.setattr(gallery, "gallery_plan", lambda: [("crank", {"parts": 3, "rod_ratio": 4.0})])
+
+
+def run(capsys, *argv: str) -> tuple[int, str]:
+    code = main(list(argv))
+    err = capsys.readouterr().err
+    return code, err
+
+
+def refused(code: int, err: str) -> bool:
+    """Exit 2 with exactly one line on stderr and no traceback."""
+    lines = err.strip().splitlines()
+    return code == 2 and len(lines) == 1 and lines[0].startswith("construct: error:") and "Traceback" not in err
+
+
+def tree(root: Path) -> dict[str, bytes]:
+    return {str(p.relative_to(root)): p.read_bytes() for p in sorted(root.rglob("*")) if p.is_file()}
+
+
+def staging(folder: Path) -> list[str]:
+    return sorted(p.name for p in folder.iterdir() if p.name.startswith(STAGING_PREFIX))
+
+
+# --------------------------------------------------------------------------- gallery --out
+
+
+def test_gallery_refuses_a_folder_of_other_files(small_plan, tmp_path, capsys):
+    p = tmp_path / "p"
+    p.mkdir()
+    (p / "notes.txt").write_text("x\n")
+    code, err = run(capsys, "gallery", "--out", str(p))
+    assert refused(code, err) and "notes.txt" in err and "gallery" in err
+    assert tree(p) == {"notes.txt": b"x\n"} and not staging(tmp_path)
+
+
+def test_gallery_refuses_the_current_folder_and_an_empty_path(small_plan, tmp_path, capsys, monkeypatch):
+    p = tmp_path / "p"
+    p.mkdir()
+    (p / "notes.txt").write_text("x\n")
+    monkeypatch.chdir(p)
+    for out in (".", ""):
+        code, err = run(capsys, "gallery", "--out", out)
+        assert refused(code, err), (out, err)
+        assert tree(p) == {"notes.txt": b"x\n"}
+    assert "empty path" in err
+    # an empty path is never meant, not even in an empty folder
+    (p / "notes.txt").unlink()
+    code, err = run(capsys, "gallery", "--out", "")
+    assert refused(code, err) and os.listdir(p) == [] and not staging(tmp_path)
+
+
+def test_gallery_refuses_a_file(small_plan, tmp_path, capsys):
+    f = tmp_path / "f.txt"
+    f.write_text("hi\n")
+    code, err = run(capsys, "gallery", "--out", str(f))
+    assert refused(code, err) and "not a folder" in err
+    assert f.read_text() == "hi\n" and not staging(tmp_path)
+
+
+def test_gallery_replaces_a_gallery_or_an_empty_folder(small_plan, tmp_path, capsys):
+    out = tmp_path / "g"
+    out.mkdir()
+    assert run(capsys, "gallery", "--out", str(out))[0] == 0
+    first = tree(out)
+    (out / "crank-parts-3-rod-ratio-4" / "stale.svg").write_text("left by an older gallery")
+    assert gallery.is_gallery(out)
+    assert run(capsys, "gallery", "--out", str(out))[0] == 0
+    assert tree(out) == first and not staging(tmp_path)
+
+
+def test_the_committed_gallery_is_recognised():
+    if not (REPO / "gallery").is_dir():
+        pytest.skip("no committed gallery in this checkout")
+    assert gallery.is_gallery(REPO / "gallery")
+    assert not gallery.is_gallery(REPO) and not gallery.is_gallery(REPO / "README.md")
+
+
+# --------------------------------------------------------------------------- verify --update, --construct-update
+
+
+def _small_gallery(out: Path) -> None:
+    c = get("crank")
+    from construct.render.output import write_replay
+
+    write_replay(c, c.figure(parts=3), out / "crank-3")
+    (out / "index.html").write_text("<title>gallery</title>\n")
+
+
+def test_verify_update_refuses_a_folder_it_did_not_write(tmp_path, capsys, monkeypatch):
+    monkeypatch.setattr(verify_module, "default_builder", _small_gallery)
+    p = tmp_path / "project"
+    p.mkdir()
+    (p / "notes.txt").write_text("x\n")
+    (p / "index.html").write_text("my own page\n")
+    code, err = run(capsys, "verify", "--gallery", str(p), "--update")
+    assert refused(code, err) and "notes.txt" in err
+    assert tree(p) == {"notes.txt": b"x\n", "index.html": b"my own page\n"} and not staging(tmp_path)
+    monkeypatch.chdir(p)
+    code, err = run(capsys, "verify", "--gallery", "", "--update")
+    assert refused(code, err) and "empty path" in err
+    assert tree(p) == {"notes.txt": b"x\n", "index.html": b"my own page\n"}
+    # goldens it wrote are rewritten, stale ones with them
+    g = tmp_path / "g"
+    assert run(capsys, "verify", "--gallery", str(g), "--update")[0] == 0
+    (g / "crank-3" / "steps").mkdir()
+    (g / "crank-3" / "steps" / "007.svg").write_text("<svg/>")
+    assert run(capsys, "verify", "--gallery", str(g), "--update")[0] == 0
+    assert not (g / "crank-3" / "steps").exists()
+
+
+def test_construct_update_refuses_a_folder_it_did_not_write(tmp_path):
+    fig = get("crank").figure(parts=3)
+    goldens = tmp_path / "goldens"
+    mine = goldens / "fig"
+    mine.mkdir(parents=True)
+    (mine / "notes.txt").write_text("x\n")
+    checker = GoldenChecker(goldens=goldens, default_name="fig", update=True)
+    with pytest.raises(OutputError, match="notes.txt"):
+        checker.check(fig, name="fig")
+    assert tree(mine) == {"notes.txt": b"x\n"} and not staging(goldens)
+    # its own goldens it rewrites, stale frames included
+    (mine / "notes.txt").unlink()
+    GoldenChecker(goldens=goldens, default_name="fig", update=True).check(fig, name="fig")
+    (mine / "steps").mkdir()
+    (mine / "steps" / "999.svg").write_text("<svg/>")
+    GoldenChecker(goldens=goldens, default_name="fig", update=True).check(fig, name="fig")
+    assert sorted(os.listdir(mine)) == ["final.svg", "protocol.json"]
+
+
+# --------------------------------------------------------------------------- replay --out
+
+
+def test_replay_refuses_an_empty_path_and_a_folder_of_other_files(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    code, err = run(capsys, "replay", "crank", "--parts", "3", "--out", "")
+    assert refused(code, err) and "empty path" in err and os.listdir(tmp_path) == []
+    (tmp_path / "notes.txt").write_text("x\n")
+    code, err = run(capsys, "replay", "crank", "--parts", "3", "--out", ".")
+    assert refused(code, err) and "notes.txt" in err
+    assert os.listdir(tmp_path) == ["notes.txt"]
+
+
+def test_a_second_replay_leaves_exactly_its_own_files(tmp_path, capsys):
+    out = tmp_path / "o"
+    assert run(capsys, "replay", "crank", "--parts", "6", "--frames", "all", "--out", str(out))[0] == 0
+    assert len(os.listdir(out / "steps")) > 50
+    assert run(capsys, "replay", "crank", "--parts", "3", "--frames", "none", "--out", str(out))[0] == 0
+    fresh = tmp_path / "fresh"
+    assert run(capsys, "replay", "crank", "--parts", "3", "--frames", "none", "--out", str(fresh))[0] == 0
+    assert tree(out) == tree(fresh)
+    # a replay folder with something foreign in it is not ours any more
+    (out / "notes.txt").write_text("x\n")
+    code, err = run(capsys, "replay", "crank", "--parts", "3", "--out", str(out))
+    assert refused(code, err) and (out / "notes.txt").exists()
+
+
+# --------------------------------------------------------------------------- unreachable targets
+
+
+@pytest.mark.parametrize("command", [["replay", "crank", "--parts", "3"], ["gallery"], ["verify", "--update"]])
+def test_unreachable_targets_give_one_line(command, small_plan, tmp_path, capsys, monkeypatch):
+    monkeypatch.setattr(verify_module, "default_builder", _small_gallery)
+    blocker = tmp_path / "file"
+    blocker.write_text("not a folder")
+    option = "--gallery" if command[0] == "verify" else "--out"
+    for target in (tmp_path / ("x" * 300), tmp_path / ("x" * 300) / "sub", blocker / "sub", blocker / "a" / "b"):
+        code, err = run(capsys, *command, option, str(target))
+        assert refused(code, err), (target, err)
+    assert sorted(os.listdir(tmp_path)) == ["file"] and blocker.read_text() == "not a folder"
+
+
+@pytest.mark.skipif(ROOT, reason="root enters folders whatever their mode")
+@pytest.mark.parametrize("command", [["replay", "crank", "--parts", "3"], ["gallery"]])
+def test_a_folder_that_cannot_be_entered(command, small_plan, tmp_path, capsys):
+    closed = tmp_path / "closed"
+    closed.mkdir()
+    closed.chmod(0)
+    try:
+        code, err = run(capsys, *command, "--out", str(closed / "x"))
+    finally:
+        closed.chmod(0o700)
+    assert refused(code, err) and "Permission denied" in err
+
+
+@pytest.mark.skipif(ROOT, reason="root writes into read-only folders")
+def test_a_gallery_whose_parent_is_read_only_names_what_cannot_be_written(small_plan, tmp_path, capsys):
+    parent = tmp_path / "ro"
+    out = parent / "g"
+    out.mkdir(parents=True)  # the target itself is writable
+    parent.chmod(0o500)
+    try:
+        code, err = run(capsys, "gallery", "--out", str(out))
+    finally:
+        parent.chmod(0o700)
+    assert refused(code, err)
+    assert f"cannot replace gallery folder {str(out)!r}" in err
+    assert f"parent folder {str(parent)!r} is not writable" in err
+    assert os.listdir(out) == []
+
+
+def test_a_swap_leaves_the_previous_folder_when_the_build_fails(tmp_path):
+    out = tmp_path / "g"
+    out.mkdir()
+    (out / "a").write_text("old")
+    with pytest.raises(RuntimeError):
+        with replaced_folder(out, recognise=lambda p: True, described="ours") as new:
+            new.mkdir()
+            (new / "a").write_text("new")
+            raise RuntimeError("broke")
+    assert tree(out) == {"a": b"old"} and not staging(tmp_path)
+
+
+# --------------------------------------------------------------------------- staging after a kill
+
+
+def _dead_pid() -> int:
+    proc = subprocess.Popen([sys.executable, "-c", "pass"])
+    proc.wait()
+    return proc.pid
+
+
+def test_stale_staging_of_a_dead_run_is_removed_and_a_live_one_kept(small_plan, tmp_path, capsys):
+    dead = tmp_path / f"{STAGING_PREFIX}{_dead_pid()}-12345-abc"
+    (dead / "g").mkdir(parents=True)
+    (dead / "g" / "big.svg").write_text("x" * 1000)
+    from construct.output import _staging_prefix
+
+    live = tmp_path / (_staging_prefix() + "mine")  # this very process: still running
+    live.mkdir()
+    foreign = tmp_path / f"{STAGING_PREFIX}abcdef"  # no pid in its name: whose it is cannot be told
+    foreign.mkdir()
+    assert run(capsys, "gallery", "--out", str(tmp_path / "g"))[0] == 0
+    assert not dead.exists() and live.is_dir() and foreign.is_dir()
+    assert remove_stale_staging(tmp_path) == []
+
+
+def _start_gallery(out: Path) -> subprocess.Popen:
+    env = {**os.environ, "PYTHONPATH": str(REPO) + os.pathsep + os.environ.get("PYTHONPATH", "")}
+    return subprocess.Popen([sys.executable, "-m", "construct", "gallery", "--out", str(out)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
+                            start_new_session=True)
+
+
+def _wait_for_staging(folder: Path, proc: subprocess.Popen, besides: tuple[str, ...] = ()) -> str:
+    """Poll (not a timing assertion: a slow machine only waits longer) until the run's staging folder is there."""
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline:
+        new = [n for n in staging(folder) if n not in besides]
+        if new:
+            return new[0]
+        if proc.poll() is not None:
+            pytest.fail(f"the gallery run ended before staging: {proc.returncode} {proc.stderr.read()}")
+        time.sleep(0.02)
+    proc.kill()
+    pytest.fail("no staging folder appeared")
+
+
+def test_sigterm_during_gallery_removes_its_staging(tmp_path):
+    out = tmp_path / "g"
+    proc = _start_gallery(out)
+    _wait_for_staging(tmp_path, proc)
+    proc.send_signal(signal.SIGTERM)  # to the main process only, as `kill PID` does
+    _, err = proc.communicate(timeout=300)
+    assert proc.returncode != 0 and "Traceback" not in err, err
+    assert os.listdir(tmp_path) == [], os.listdir(tmp_path)
+
+
+def test_the_next_run_removes_the_staging_of_a_killed_one(tmp_path):
+    out = tmp_path / "g"
+    proc = _start_gallery(out)
+    stale = _wait_for_staging(tmp_path, proc)
+    os.killpg(proc.pid, signal.SIGKILL)  # the run and its workers: no chance to clean up
+    proc.communicate()
+    assert staging(tmp_path) == [stale]
+    nxt = _start_gallery(out)
+    _wait_for_staging(tmp_path, nxt, besides=(stale,))
+    assert stale not in staging(tmp_path)  # removed before the next run staged its own
+    nxt.send_signal(signal.SIGTERM)
+    _, err = nxt.communicate(timeout=300)
+    assert nxt.returncode != 0 and os.listdir(tmp_path) == [], (nxt.returncode, err, os.listdir(tmp_path))
+    shutil.rmtree(out, ignore_errors=True)

@@ -23,7 +23,8 @@ import construct.regress.verify as verify_module
 from construct.cli import main
 from construct.constructions import get
 from construct.errors import OutputError
-from construct.output import STAGING_PREFIX, remove_stale_staging, replaced_folder
+import construct.output as output
+from construct.output import STAGING_PREFIX
 from construct.regress.pytest_plugin import GoldenChecker
 
 REPO = Path(__file__).resolve().parents[1]
@@ -98,7 +99,7 @@ def test_gallery_replaces_a_gallery_or_an_empty_folder(small_plan, tmp_path, cap
     assert run(capsys, "gallery", "--out", str(out))[0] == 0
     first = tree(out)
     (out / "crank-parts-3-rod-ratio-4" / "stale.svg").write_text("left by an older gallery")
-    assert gallery.is_gallery(out)
+    assert gallery.is_gallery(out)  # recognised by its README.md and index.html
     assert run(capsys, "gallery", "--out", str(out))[0] == 0
     assert tree(out) == first and not staging(tmp_path)
 
@@ -238,7 +239,7 @@ def test_a_swap_leaves_the_previous_folder_when_the_build_fails(tmp_path):
     out.mkdir()
     (out / "a").write_text("old")
     with pytest.raises(RuntimeError):
-        with replaced_folder(out, recognise=lambda p: True, described="ours") as new:
+        with output.replaced_folder(out, recognise=lambda p: True, described="ours") as new:
             new.mkdir()
             (new / "a").write_text("new")
             raise RuntimeError("broke")
@@ -258,15 +259,13 @@ def test_stale_staging_of_a_dead_run_is_removed_and_a_live_one_kept(small_plan, 
     dead = tmp_path / f"{STAGING_PREFIX}{_dead_pid()}-12345-abc"
     (dead / "g").mkdir(parents=True)
     (dead / "g" / "big.svg").write_text("x" * 1000)
-    from construct.output import _staging_prefix
-
-    live = tmp_path / (_staging_prefix() + "mine")  # this very process: still running
+    live = tmp_path / (output._staging_prefix() + "mine")  # this very process: still running
     live.mkdir()
     foreign = tmp_path / f"{STAGING_PREFIX}abcdef"  # no pid in its name: whose it is cannot be told
     foreign.mkdir()
     assert run(capsys, "gallery", "--out", str(tmp_path / "g"))[0] == 0
     assert not dead.exists() and live.is_dir() and foreign.is_dir()
-    assert remove_stale_staging(tmp_path) == []
+    assert output.remove_stale_staging(tmp_path) == []
 
 
 def _start_gallery(out: Path) -> subprocess.Popen:

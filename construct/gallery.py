@@ -42,7 +42,8 @@ from .output import replaced_folder, write_text
 from .render.output import params_text, write_outputs
 from .render.styles import STYLES
 
-__all__ = ["build_gallery", "gallery_plan", "entry_slug", "is_gallery", "GALLERY_STYLES", "GALLERY_OUTPUTS", "FRAME_MODE"]
+__all__ = ["build_gallery", "gallery_plan", "entry_slug", "is_gallery", "GALLERY_STYLES", "GALLERY_OUTPUTS",
+           "FRAME_MODE"]
 
 GALLERY_STYLES = ("historical", "teaching")
 #: No standalone frames: frame k holds the marks of k steps, so all frames

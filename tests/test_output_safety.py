@@ -234,6 +234,24 @@ def test_a_gallery_whose_parent_is_read_only_names_what_cannot_be_written(small_
     assert os.listdir(out) == []
 
 
+def test_the_unwritable_parent_message_also_as_root(small_plan, tmp_path, capsys, monkeypatch):
+    """The same case where root cannot be denied: the staging folder cannot be made in the parent."""
+    parent, out = tmp_path / "ro", tmp_path / "ro" / "g"
+    out.mkdir(parents=True)
+    real = output._make_stage
+
+    def denied(folder, tag=""):
+        if Path(folder) == parent.resolve():
+            raise PermissionError(13, "Permission denied")
+        return real(folder, tag)
+
+    monkeypatch.setattr(output, "_make_stage", denied)
+    code, err = run(capsys, "gallery", "--out", str(out))
+    assert refused(code, err)
+    assert f"parent folder {str(parent.resolve())!r} is not writable (Permission denied)" in err
+    assert os.listdir(out) == []
+
+
 def test_a_swap_leaves_the_previous_folder_when_the_build_fails(tmp_path):
     out = tmp_path / "g"
     out.mkdir()

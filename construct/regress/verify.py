@@ -411,5 +411,5 @@ def _replace_tree(gallery: Path, rebuilt: Path) -> None:
         return is_gallery(folder) or (bool(built) and built <= set(os.listdir(folder)))
 
     with replaced_folder(gallery, recognise=recognise, what="gallery folder",
-                         described="a gallery of goldens (written by 'construct gallery' or by this builder)") as new:
+                         described="a gallery of goldens written by 'construct gallery' or by this builder") as new:
         shutil.copytree(rebuilt, new)

@@ -73,6 +73,8 @@ def is_gallery(folder: str | Path) -> bool:
     """
     folder = Path(folder)
     try:
+        if not (folder / "README.md").is_file():  # a named pipe would block the read
+            return False
         with open(folder / "README.md", "rb") as fh:  # a bounded read: the file may be anything
             head = fh.read(len(README_HEAD.encode("utf-8")))
         return head.decode("utf-8", "replace") == README_HEAD and (folder / "index.html").is_file()

@@ -255,7 +255,11 @@ def replaced_folder(target: str | os.PathLike[str], *, recognise: Callable[[Path
     parent = target.parent
     if target == parent:
         raise OutputError(f"refusing to replace the root folder {str(target)!r}")
-    if existed and Path.cwd().resolve().is_relative_to(target):
+    try:
+        here = Path.cwd().resolve()
+    except OSError:  # the current folder was removed: it is not inside the target
+        here = None
+    if existed and here is not None and here.is_relative_to(target):
         raise OutputError(f"refusing to replace {str(target)!r}: it holds the current folder; "
                           f"run from outside it or name another folder")
     try:

@@ -104,6 +104,17 @@ def test_gallery_replaces_a_gallery_or_an_empty_folder(small_plan, tmp_path, cap
     assert tree(out) == first and not staging(tmp_path)
 
 
+def test_a_readme_that_is_a_pipe_is_not_read(small_plan, tmp_path, capsys):
+    if not hasattr(os, "mkfifo"):
+        pytest.skip("no named pipes here")
+    out = tmp_path / "g"
+    out.mkdir()
+    os.mkfifo(out / "README.md")  # reading it would wait for a writer forever
+    (out / "index.html").write_text("x")
+    code, err = run(capsys, "gallery", "--out", str(out))
+    assert refused(code, err) and sorted(os.listdir(out)) == ["README.md", "index.html"]
+
+
 def test_the_committed_gallery_is_recognised():
     if not (REPO / "gallery").is_dir():
         pytest.skip("no committed gallery in this checkout")

@@ -26,8 +26,8 @@ from ..output import staged_output, write_text
 from .scene import Scene, build_scene
 from .svg import Drawing, Style, render_svg
 
-__all__ = ["FRAME_MODES", "OUTPUTS", "frame_steps", "write_replay", "write_outputs", "scene_for", "is_replay_folder",
-           "figure_title", "plate_caption", "params_text"]
+__all__ = ["FRAME_MODES", "OUTPUTS", "frame_steps", "write_replay", "write_outputs", "scene_for",
+           "is_replay_folder", "figure_title", "plate_caption", "params_text"]
 
 FRAME_MODES = ("auto", "all", "groups", "none")
 #: Up to this many steps "auto" writes a frame per step.  Frame k holds k

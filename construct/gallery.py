@@ -219,7 +219,7 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
             methods = multiprocessing.get_all_start_methods()
             context = multiprocessing.get_context("fork" if "fork" in methods else None)
             with concurrent.futures.ProcessPoolExecutor(min(workers, len(jobs)), mp_context=context,
-                                                        initializer=_default_signals) as pool:
+                                                        initializer=_worker_init, initargs=(os.getpid(),)) as pool:
                 with _signals_held():  # the workers are forked here
                     futures = [pool.submit(_build_entry, root, *job) for job in jobs]
                 try:
@@ -267,13 +267,26 @@ def _signals_held() -> Iterator[None]:
         signal.pthread_sigmask(signal.SIG_SETMASK, previous)
 
 
-def _default_signals() -> None:
+def _worker_init(parent: int) -> None:
     """In a worker process: SIGTERM ends it (a forked worker would inherit the CLI's handler, which
-    unwinds the command in the main process; the main process cleans up after its workers), and
-    the signals held while it was forked are let in again."""
+    unwinds the command in the main process; the main process cleans up after its workers), the
+    signals held while it was forked are let in again, and it ends when its parent has gone."""
+    import threading
+
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
     if hasattr(signal, "pthread_sigmask"):
         signal.pthread_sigmask(signal.SIG_UNBLOCK, [getattr(signal, s) for s in _HELD])
+    threading.Thread(target=_exit_with_parent, args=(parent,), daemon=True).start()
+
+
+def _exit_with_parent(parent: int) -> None:
+    """A worker whose parent was killed, or unwound while it was being forked (then the pool
+    never knew it), would wait for work forever, holding the parent's pipes open."""
+    import time
+
+    while os.getppid() == parent:
+        time.sleep(0.5)
+    os._exit(1)
 
 
 def _readme(index: list[dict]) -> str:

@@ -220,9 +220,9 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
             context = multiprocessing.get_context("fork" if "fork" in methods else None)
             with concurrent.futures.ProcessPoolExecutor(min(workers, len(jobs)), mp_context=context,
                                                         initializer=_worker_init, initargs=(os.getpid(),)) as pool:
-                with _signals_held():  # the workers are forked here
-                    futures = [pool.submit(_build_entry, root, *job) for job in jobs]
                 try:
+                    with _signals_held():  # the workers are forked here
+                        futures = [pool.submit(_build_entry, root, *job) for job in jobs]
                     for fut in concurrent.futures.as_completed(futures):
                         bar.step(jobs[futures.index(fut)][1])
                     results = [fut.result() for fut in futures]

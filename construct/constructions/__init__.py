@@ -109,14 +109,14 @@ def get(name: str) -> Construction:
     _load()
     try:
         return _REGISTRY[name]
-    except KeyError:
+    except (KeyError, TypeError):  # TypeError: an unhashable name
         raise UnknownConstruction(f"unknown construction {name!r}; available: {', '.join(sorted(_REGISTRY))}") from None
 
 
 def find(name: str) -> Construction | None:
     """The registered construction of that name, or None (a protocol of the user's own)."""
     _load()
-    return _REGISTRY.get(name)
+    return _REGISTRY.get(name) if isinstance(name, str) else None
 
 
 def positive(name: str, value: Any) -> Any:

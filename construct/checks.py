@@ -100,7 +100,8 @@ def run_checks(construction: Any, figure: Any) -> list[Check]:
     except KeyError as exc:  # a given, a parameter or an object's step, looked up by name
         raise ProtocolFormatError(f"the protocol of {name!r} lacks {exc.args[0] if exc.args else exc!r}, which its "
                                   f"checks need (truncated or edited?)") from None
-    except (AttributeError, TypeError, ValueError, IndexError) as exc:
-        # An object of another kind under a checked name, a parameter of another type: an edited protocol.
+    except (AttributeError, TypeError, ValueError, IndexError, ArithmeticError) as exc:
+        # An object of another kind under a checked name, a parameter of another type or value (parts 0): an
+        # edited protocol.
         raise ProtocolFormatError(f"the checks of {name!r} cannot read this protocol's figure ({exc}); "
                                   f"was the protocol edited?") from None

@@ -423,3 +423,77 @@ def test_misuse_of_the_library_raises_a_construct_error_naming_it(case):
     with pytest.raises(cls, match=message) as info:
         call()
     assert isinstance(info.value, ConstructError)
+
+
+def test_a_protocol_without_a_given_its_construction_validates_is_refused(crank_file, tmp_path, capsys):
+    d = copy.deepcopy(crank_file)
+    d["steps"] = d["steps"][:3]  # no step reads the rod ratio any more ...
+    del d["params"]["givens"]["rod_ratio"]  # ... so the file may drop it, but the crank's givens include it
+    d["givens"].remove("rod_ratio")
+    path = tmp_path / "protocol.json"
+    path.write_text(json.dumps(d), encoding="utf-8")
+    message = "the protocol of 'crank' lacks the given 'rod_ratio' of the construction (it has r)"
+    assert message in _assert_refused(capsys, path, tmp_path / "out")
+
+
+# -- fuzzing the protocol file: whatever is changed, a loaded protocol replays or fails with a construct error --
+
+from hypothesis import HealthCheck, given, settings, strategies as st  # noqa: E402
+
+_JSON = st.recursive(st.none() | st.booleans() | st.integers(-10, 10**6) | st.floats() | st.text(max_size=5),
+                     lambda inner: st.lists(inner, max_size=3) | st.dictionaries(st.text(max_size=4), inner,
+                                                                                  max_size=3), max_leaves=6)
+
+
+def _paths(value, prefix=()):
+    yield prefix
+    if isinstance(value, dict):
+        for k, v in value.items():
+            yield from _paths(v, prefix + (k,))
+    elif isinstance(value, list):
+        for i, v in enumerate(value):
+            yield from _paths(v, prefix + (i,))
+
+
+@pytest.fixture(scope="module")
+def small_crank() -> dict:
+    fig = construct.get("crank").figure(parts=2)
+    d = json.loads(fig.protocol.to_json(fig.replay))
+    del d["objects"]  # not read by the loader: mutations there would be wasted
+    return d
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(data=st.data())
+def test_fuzzed_protocols_load_and_replay_or_fail_with_a_construct_error(small_crank, data):
+    d = copy.deepcopy(small_crank)
+    paths = [p for p in _paths(d) if p]
+    for _ in range(data.draw(st.integers(1, 3))):
+        path = data.draw(st.sampled_from(paths))
+        target = d
+        try:
+            for key in path[:-1]:
+                target = target[key]
+            action = data.draw(st.sampled_from(["set", "delete", "truncate"]))
+            if action == "set":
+                target[path[-1]] = data.draw(_JSON)
+            elif action == "delete":
+                del target[path[-1]]
+            elif isinstance(target[path[-1]], list):
+                del target[path[-1]][data.draw(st.integers(0, 5)):]
+        except (KeyError, IndexError, TypeError):
+            pass  # an earlier mutation removed or replaced this path
+    text = json.dumps(d)  # NaN and Infinity included, as Python's json writes and reads them
+    try:
+        proto = Protocol.from_json(text)
+    except ProtocolFormatError:
+        return
+    fig = None
+    try:
+        fig = construct.Figure(proto, proto.replay())
+    except ConstructError:
+        return
+    try:
+        fig.checks()
+    except ConstructError:
+        pass

@@ -752,13 +752,17 @@ def _check_given(name: Any, value: Any) -> None:
 
 def _record_problem(tool: Any, inputs: Any, outputs: Any, de: Any, en: Any, role: Any, labels: Any,
                     provenance: Any) -> str | None:
-    """What is wrong with the fields of a step to record (None: nothing); the same rules a protocol file obeys."""
+    """What is wrong with the fields of a step to record (None: nothing); the same rules a protocol file obeys.
+
+    Every step of every build passes here: the usual types are let through first, without the ABC checks.
+    """
     if tool not in TOOLS:
         return f"unknown instrument {_shown(tool)}; the instruments are {', '.join(TOOLS)}"
     if role not in ROLES:
         return f"unknown role {_shown(role)}; the roles are {', '.join(ROLES)}"
     for what, names in (("inputs", inputs), ("outputs", outputs)):
-        if isinstance(names, str) or not isinstance(names, Sequence):
+        if type(names) is not tuple and type(names) is not list and (
+                isinstance(names, str) or not isinstance(names, Sequence)):
             return f"{what} are a list of object names, got {_shown(names)}"
     if not isinstance(de, str) or not isinstance(en, str):
         return f"captions are text, got {_shown(de)} and {_shown(en)}"

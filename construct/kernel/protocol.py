@@ -207,6 +207,7 @@ def compile_step(step: Step, slot: Mapping[str, Any] | None = None) -> tuple:
     op = OPS.get(step.op)
     if op is None:
         raise ProtocolFormatError(f"step {step.index}: unknown operation {step.op!r}; known: {', '.join(sorted(OPS))}")
+
     def unknown(name: str) -> UnknownObject:
         return UnknownObject(f"step {step.index} ({step.tool}: {step.caption.en}) uses {name!r} before any step made it",
                              name=name, step_index=step.index, tool=step.tool, op=step.op)
@@ -374,6 +375,18 @@ class Replay(Mapping[str, Any]):
         except (KeyError, TypeError):  # TypeError: an unhashable "name"
             raise UnknownObject(f"the replay of {self.protocol.construction!r} has no object {_shown(name)}",
                                 name=name) from None
+
+    def __contains__(self, name: object) -> bool:  # without building the error a miss in __getitem__ makes
+        try:
+            return name in self._objects
+        except TypeError:
+            return False
+
+    def get(self, name: object, default: Any = None) -> Any:
+        try:
+            return self._objects.get(name, default)
+        except TypeError:
+            return default
 
     def __iter__(self):
         return iter(self._objects)

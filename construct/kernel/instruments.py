@@ -26,7 +26,8 @@ import math
 import numbers
 from dataclasses import replace
 from types import MappingProxyType
-from typing import TYPE_CHECKING, Any, Iterator, Mapping, Sequence
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING, Any, Iterator
 
 import numpy as np
 

@@ -125,7 +125,7 @@ class Op:
     #: The kinds of the objects it makes (a true ``both`` parameter makes two of each: both crossings).
     outputs: tuple[str, ...] = ("point",)
     #: The parameters it reads: name -> kind (PARAM_KINDS); a trailing "?" on the name: may be left out.
-    params: Mapping[str, str] = field(default_factory=dict)
+    params: Mapping[str, str] = field(default_factory=dict, hash=False)
 
     def check_inputs(self, args: list) -> str | None:
         """None when *args* fit the declared kinds, else what is wrong (for the step's error)."""

@@ -21,7 +21,8 @@ import math
 import os
 import stat
 from types import MappingProxyType
-from typing import Any, Mapping
+from collections.abc import Mapping
+from typing import Any
 
 from .errors import ProtocolFormatError
 

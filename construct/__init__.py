@@ -36,6 +36,8 @@ True
 
 from __future__ import annotations
 
+from typing import Any
+
 from .constructions import Construction, get, names
 from .kernel.errors import (ConstructError, DegenerateObject, DuplicateName, GeometryError, InvalidParameter,
                             MissingGiven, NoIntersection, OutputError, ProtocolFormatError, RuleError, StepError,
@@ -92,7 +94,7 @@ __all__ = [
 
 def svg(figure: Figure, style: str = "plain", *, upto: int | None = None) -> str:
     """A figure (or its steps 1..upto) as SVG text in a named style: ``plain``, ``historical``, ``teaching``."""
-    return figure.svg(style=style, upto=upto)
+    return _figure(figure, "svg").svg(style=style, upto=upto)
 
 
 def write_replay(figure: Figure, out_dir, *, style: str = "plain", frames: str = "auto") -> dict:
@@ -103,4 +105,13 @@ def write_replay(figure: Figure, out_dir, *, style: str = "plain", frames: str =
     """
     from .render.output import write_replay as _write
 
-    return _write(None, figure, out_dir, style=style, frames=frames)
+    if frames not in ("auto", "all", "groups", "none"):
+        raise InvalidParameter(f"frames is one of auto, all, groups, none; got {frames!r}")
+    return _write(None, _figure(figure, "write_replay"), out_dir, style=style, frames=frames)
+
+
+def _figure(figure: Any, what: str) -> Figure:
+    if not isinstance(figure, Figure):
+        raise InvalidParameter(f"{what}() takes a Figure (from Builder.figure() or get(name).figure()), "
+                               f"got {type(figure).__name__}")
+    return figure

@@ -4,11 +4,10 @@ from __future__ import annotations
 
 import argparse
 import math
-from pathlib import Path
 from typing import Any
 
 from ..constructions import Construction, Figure, find, get
-from ..errors import InvalidParameter, ProtocolFormatError
+from ..errors import InvalidParameter
 from ..kernel.protocol import Protocol
 
 
@@ -89,13 +88,8 @@ def given_options(args: argparse.Namespace) -> dict[str, Any]:
 
 
 def load_protocol(path: str) -> Protocol:
-    try:
-        text = Path(path).read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise ProtocolFormatError(f"protocol file {path!r} does not exist") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise ProtocolFormatError(f"cannot read protocol file {path!r}: {exc}") from None
-    return Protocol.from_json(text)
+    """A protocol file, read bounded and checked whole (:meth:`Protocol.load`)."""
+    return Protocol.load(path)
 
 
 def _named_givens(args: argparse.Namespace) -> dict[str, float]:

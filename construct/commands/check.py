@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import json
 
-from ..checks import summary
+from ..checks import run_checks, summary
 from ..kernel.protocol import _jsonable
 from ._common import add_construction_options, figure_from_args
 
@@ -28,7 +28,7 @@ def run(args) -> int:
         else:
             print(f"{name}: replayed {len(fig.protocol.steps)} steps; not a book construction, no checks")
         return 0
-    checks = c.checks(fig)
+    checks = run_checks(c, fig)
     ok = all(ch.ok for ch in checks)
     params = {k: v for k, v in _jsonable(dict(fig.params)).items() if k not in ("group_titles", "plate")}
     params["givens"] = dict(fig.replay.givens)

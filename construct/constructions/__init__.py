@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping
 
 from ..checks import Check
-from ..errors import InvalidParameter, UnknownConstruction
+from ..errors import InvalidParameter, ProtocolFormatError, UnknownConstruction
 from ..kernel.figure import Figure
 from ..kernel.protocol import Caption, Protocol
 
@@ -91,7 +91,11 @@ def register(c: Construction, validate: Callable[[Mapping[str, float]], None] | 
 
 def _validate_givens(name: str, givens: Mapping[str, float]) -> None:
     if name in _VALIDATORS:
-        _VALIDATORS[name](givens)
+        try:
+            _VALIDATORS[name](givens)
+        except KeyError as exc:  # a protocol (truncated, edited) that no longer stores a given the construction has
+            raise ProtocolFormatError(f"the protocol of {name!r} lacks the given {exc.args[0]!r} of the construction "
+                                      f"(it has {', '.join(sorted(givens)) or 'none'})") from None
 
 
 def _load() -> None:
@@ -109,14 +113,14 @@ def get(name: str) -> Construction:
     _load()
     try:
         return _REGISTRY[name]
-    except KeyError:
+    except (KeyError, TypeError):  # TypeError: an unhashable name
         raise UnknownConstruction(f"unknown construction {name!r}; available: {', '.join(sorted(_REGISTRY))}") from None
 
 
 def find(name: str) -> Construction | None:
     """The registered construction of that name, or None (a protocol of the user's own)."""
     _load()
-    return _REGISTRY.get(name)
+    return _REGISTRY.get(name) if isinstance(name, str) else None
 
 
 def positive(name: str, value: Any) -> Any:

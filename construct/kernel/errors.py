@@ -99,8 +99,16 @@ class RuleError(StepError, ValueError):
     """An intersection rule is unknown, names the wrong number of objects, or is not a rule at all."""
 
 
-class UnknownObject(StepError, LookupError):
-    """A step uses an object name that no earlier step made."""
+class UnknownObject(StepError, KeyError):
+    """A step (or a lookup in a replay) names an object that no step made.
+
+    A KeyError too, so that a :class:`~construct.kernel.protocol.Replay` stays a Mapping
+    (``name in replay``, ``replay.get(name)``); ``name`` is the missing object's name.
+    """
+
+    def __init__(self, message: str, *, name: str | None = None, **where):
+        super().__init__(message, **where)
+        self.name = name
 
 
 class WrongInput(StepError, TypeError):

@@ -35,7 +35,7 @@ from typing import Any, Union
 
 import numpy as np
 
-from .errors import DegenerateObject, NoIntersection
+from .errors import DegenerateObject, NoIntersection, WrongInput
 
 __all__ = [
     "TANGENCY_TOLERANCE",
@@ -136,11 +136,21 @@ def _num(v: Any) -> str:
 
 
 def _as_number(v: Any) -> Any:
-    return v if isinstance(v, np.ndarray) else float(v)
+    if isinstance(v, np.ndarray):
+        return v
+    try:
+        return float(v)
+    except (TypeError, ValueError):
+        raise WrongInput(f"coordinates, radii and lengths are numbers, got {_bound(repr(v))}") from None
 
 
 def _finite(v: Any) -> bool:
-    return bool(np.all(np.isfinite(v))) if isinstance(v, np.ndarray) else math.isfinite(v)
+    if isinstance(v, np.ndarray):
+        return bool(np.all(np.isfinite(v)))
+    try:
+        return math.isfinite(v)
+    except TypeError:  # not a number at all: say so rather than let math's TypeError out
+        raise WrongInput(f"coordinates, radii and lengths are numbers, got {_bound(repr(v))}") from None
 
 
 def _bound(text: str, limit: int = 80) -> str:

@@ -23,12 +23,16 @@ from __future__ import annotations
 
 import contextlib
 import math
+import numbers
 from dataclasses import replace
 from types import MappingProxyType
-from typing import TYPE_CHECKING, Any, Iterator, Mapping, Sequence
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING, Any, Iterator
+
+import numpy as np
 
 from .errors import DuplicateName, InvalidParameter, RuleError, StepError, UnknownObject, WrongInput
-from .protocol import EXACT, GIVEN, Caption, Protocol, Provenance, Replay, Step, compile_step, run_step
+from .protocol import EXACT, GIVEN, ROLES, TOOLS, Caption, Protocol, Provenance, Replay, Step, compile_step, run_step
 from .rules import Rule, as_rule
 
 if TYPE_CHECKING:  # the figure module imports this one
@@ -56,6 +60,14 @@ class Builder:
 
     def __init__(self, construction: str, givens: Mapping[str, float], params: Mapping[str, Any] | None = None,
                  replayable: Sequence[str] | None = None):
+        if not isinstance(construction, str) or not construction:
+            raise InvalidParameter(f"a construction is named by a non-empty string, got {construction!r}")
+        if not isinstance(givens, Mapping):
+            raise InvalidParameter(f"givens are a mapping of names to numbers, got {_shown(givens)}")
+        for key, value in givens.items():
+            _check_given(key, value)
+        if params is not None and not isinstance(params, Mapping):
+            raise InvalidParameter(f"params are a mapping of names to values, got {_shown(params)}")
         self.construction = construction
         self.givens = dict(givens)
         self.params = dict(params or {})
@@ -72,7 +84,7 @@ class Builder:
     def __getitem__(self, name: str) -> Any:
         try:
             return self.objects[name]
-        except KeyError:
+        except (KeyError, TypeError):  # TypeError: an unhashable "name"
             have = ", ".join(list(self.objects)[:8]) + (", ..." if len(self.objects) > 8 else "")
             raise UnknownObject(f"no object {name!r} in {self.construction!r} (it has {have or 'nothing yet'})") from None
 
@@ -102,6 +114,8 @@ class Builder:
         >>> b.steps[0].group
         ('the ends',)
         """
+        if not isinstance(en, str) or not (de is None or isinstance(de, str)):
+            raise InvalidParameter(f"a group's titles are text, got {en!r} and {de!r}")
         self._group.append(en)
         if de:
             self._group_titles[en] = de
@@ -126,6 +140,13 @@ class Builder:
         """
         index = len(self.steps) + 1
         where = dict(step_index=index, tool=tool, op=op)
+        problem = _record_problem(tool, inputs, outputs, de, en, role, labels, provenance)
+        if problem:
+            raise StepError(f"step {index} ({tool}: {en}): {problem}", **where)
+        for name in inputs:
+            if not isinstance(name, str):
+                raise WrongInput(f"step {index} ({tool}: {en}): objects are passed by name (the string a Builder "
+                                 f"method returns), got {_shown(name)}", **where)
         for name in outputs:
             if not isinstance(name, str) or not name:
                 raise StepError(f"step {index} ({tool}: {en}): object names are non-empty strings, got {name!r}", **where)
@@ -168,7 +189,9 @@ class Builder:
         >>> b.set_label("P12", "12"); b.steps[0].labels
         (('P12', '12'),)
         """
-        i = self._maker.get(name)
+        if not isinstance(text, str):
+            raise InvalidParameter(f"the label of {name!r} is text, got {_shown(text)}")
+        i = self._maker.get(name) if isinstance(name, str) else None
         if i is None:
             raise UnknownObject(f"no object {name!r} to label in {self.construction!r}")
         step = self.steps[i]
@@ -238,6 +261,8 @@ class Builder:
         >>> float(b[b.given_length("L", product=("rod_ratio", "r"))])
         10.0
         """
+        if isinstance(product, str) or not isinstance(product, Sequence):
+            raise InvalidParameter(f"given_length {name!r}: product is a list of names of givens, got {_shown(product)}")
         self.record("given", "given_length", (), (name,), {"product": tuple(product), "factor": factor},
                     de or f"Länge {name} gegeben", en or f"length {name} given")
         return name
@@ -709,3 +734,42 @@ class Builder:
         """
         k = self.circle_segment(self.fresh(f"{name}.k"), start, a, b)
         return self.intersect(name, circle, k, rule=("farther", away_from))
+
+
+def _shown(value: Any) -> str:
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def _check_given(name: Any, value: Any) -> None:
+    """A given is a finite number (or, for a sweep, finite numbers), named by a string."""
+    if not isinstance(name, str) or not name:
+        raise InvalidParameter(f"givens are named by non-empty strings, got {_shown(name)}")
+    values = value if isinstance(value, (list, tuple, np.ndarray)) else (value,)
+    for v in np.ravel(np.asarray(values, dtype=object)):
+        if isinstance(v, bool) or not isinstance(v, numbers.Real) or not math.isfinite(v):
+            raise InvalidParameter(f"the given {name!r} must be a finite number, got {_shown(value)}")
+
+
+def _record_problem(tool: Any, inputs: Any, outputs: Any, de: Any, en: Any, role: Any, labels: Any,
+                    provenance: Any) -> str | None:
+    """What is wrong with the fields of a step to record (None: nothing); the same rules a protocol file obeys.
+
+    Every step of every build passes here: the usual types are let through first, without the ABC checks.
+    """
+    if tool not in TOOLS:
+        return f"unknown instrument {_shown(tool)}; the instruments are {', '.join(TOOLS)}"
+    if role not in ROLES:
+        return f"unknown role {_shown(role)}; the roles are {', '.join(ROLES)}"
+    for what, names in (("inputs", inputs), ("outputs", outputs)):
+        if type(names) is not tuple and type(names) is not list and (
+                isinstance(names, str) or not isinstance(names, Sequence)):
+            return f"{what} are a list of object names, got {_shown(names)}"
+    if not isinstance(de, str) or not isinstance(en, str):
+        return f"captions are text, got {_shown(de)} and {_shown(en)}"
+    if labels is not None and (not isinstance(labels, Mapping) or
+                               not all(isinstance(k, str) and isinstance(v, str) for k, v in labels.items())):
+        return f"labels map object names to text, got {_shown(labels)}"
+    if provenance is not None and not isinstance(provenance, Provenance):
+        return f"a provenance is a Provenance, got {_shown(provenance)}"
+    return None

@@ -19,12 +19,23 @@ of givens and their results are stacked.
 ['area_between', 'circle_radius', 'circle_segment', 'circle_through', 'french_curve', 'given_length']
 >>> OPS["intersect"].inputs, OPS["intersect"].rule
 (('curve', 'curve'), True)
+
+Each entry also declares, as data, what a protocol file is checked against
+when it is loaded (once, never in the replay loop): the kinds of object the
+op makes (``outputs``) and the parameters it reads with their kinds
+(``params``; a name ending in ``?`` may be left out).
+
+>>> OPS["given_point"].check_params({"x": "abc", "y": 0.0})
+"parameter 'x' must be a finite number, got 'abc'"
+>>> OPS["intersect"].output_kinds({"rule": ["only"], "both": True})
+('point', 'point')
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from typing import Any, Callable
+import math
+from dataclasses import dataclass, field
+from typing import Any, Callable, Mapping
 
 from .areas import Area, area_between_op, planimeter_height_op, planimeter_op
 from .closed_curves import closed_french_curve_op
@@ -35,7 +46,7 @@ from .geometry import (SCALAR, Circle, Length, Line, Point, Sweep, _circle, _pt,
 from .rules import choose, choose_among
 from .trial import neusis_archimedes_op, trial_chord_op
 
-__all__ = ["Op", "OPS", "KINDS", "elementwise"]
+__all__ = ["Op", "OPS", "KINDS", "OBJECT_KINDS", "ACCEPTS", "PARAM_KINDS", "kind_of", "elementwise"]
 
 #: Input kinds an op declares, and the values that fill them.
 KINDS: dict[str, tuple[type, ...]] = {
@@ -46,6 +57,58 @@ KINDS: dict[str, tuple[type, ...]] = {
     "curve": (Line, Circle, Polyline, BezierCurve),
     "graph": (Line, Polyline, BezierCurve),
     "area": (Area,),
+}
+
+#: The kind of each object an op can make, by its type ("number": a planimeter's reading).
+OBJECT_KINDS: dict[type, str] = {Point: "point", Line: "line", Circle: "circle", Length: "length",
+                                 BezierCurve: "bezier", Polyline: "polyline", Area: "area", float: "number"}
+
+#: Which object kinds fill each input kind (the same sets as KINDS, named by kind, for checking a file
+#: before anything is evaluated).
+ACCEPTS: dict[str, frozenset[str]] = {
+    **{kind: frozenset(OBJECT_KINDS[t] for t in types) for kind, types in KINDS.items()},
+    "any": frozenset(OBJECT_KINDS.values()),
+}
+
+
+def kind_of(obj: Any) -> str:
+    """The kind of a made object: 'point', 'circle', ...
+
+    >>> kind_of(Point(0.0, 1.0))
+    'point'
+    """
+    return OBJECT_KINDS.get(type(obj), type(obj).__name__)
+
+
+def _real(v: Any) -> bool:
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def _finite(v: Any) -> bool:
+    return _real(v) and math.isfinite(v)
+
+
+def _name(v: Any) -> bool:
+    return isinstance(v, str) and v != ""
+
+
+def _whole(v: Any) -> bool:
+    return isinstance(v, int) and not isinstance(v, bool)
+
+
+#: The kinds of step parameters: a test and what it asks for (for the error message).
+PARAM_KINDS: dict[str, tuple[Callable[[Any], bool], str]] = {
+    "number": (_finite, "a finite number"),
+    "number|null": (lambda v: v is None or _finite(v), "a finite number or null"),
+    "positive": (lambda v: _finite(v) and v > 0, "a finite number > 0"),
+    "count": (lambda v: _whole(v) and v >= 1, "a whole number >= 1"),
+    "flag": (lambda v: isinstance(v, bool), "true or false"),
+    "given|null": (lambda v: v is None or _name(v), "the name of a given, or null"),
+    "givens": (lambda v: isinstance(v, (list, tuple)) and all(_name(g) for g in v), "a list of names of givens"),
+    "indices": (lambda v: isinstance(v, (list, tuple)) and all(_whole(i) and i >= 0 for i in v),
+                "a list of whole numbers >= 0"),
+    # the rule itself is read by construct.kernel.rules.as_rule, which says what is wrong with it
+    "rule": (lambda v: True, "a rule"),
 }
 
 
@@ -59,6 +122,10 @@ class Op:
     rule: bool = False
     vector: bool = True
     doc: str = ""
+    #: The kinds of the objects it makes (a true ``both`` parameter makes two of each: both crossings).
+    outputs: tuple[str, ...] = ("point",)
+    #: The parameters it reads: name -> kind (PARAM_KINDS); a trailing "?" on the name: may be left out.
+    params: Mapping[str, str] = field(default_factory=dict, hash=False)
 
     def check_inputs(self, args: list) -> str | None:
         """None when *args* fit the declared kinds, else what is wrong (for the step's error)."""
@@ -77,6 +144,56 @@ class Op:
             if not isinstance(a, KINDS[kind]):
                 return f"input {i + 1} must be a {kind}, got {type(a).__name__}"
         return None
+
+    # -- what a protocol file is checked against, before anything is evaluated --------------------
+    def check_params(self, params: Mapping[str, Any]) -> str | None:
+        """None when *params* are the ones this op reads, of the declared kinds; else what is wrong."""
+        spec = self.params
+        for key, value in params.items():
+            kind = spec.get(key) or spec.get(f"{key}?")
+            if kind is None:
+                allowed = ", ".join(k.rstrip("?") for k in spec) or "none"
+                return f"has no parameter {key!r} (it takes {allowed})"
+            test, wanted = PARAM_KINDS[kind]
+            if not test(value):
+                return f"parameter {key!r} must be {wanted}, got {_short(value)}"
+        for key in spec:
+            if not key.endswith("?") and key not in params:
+                return f"needs the parameter {key!r} ({PARAM_KINDS[spec[key]][1]})"
+        return None
+
+    def input_kinds(self, params: Mapping[str, Any], count: int) -> tuple[str, ...] | str:
+        """The kind each of *count* inputs must have (params already checked), or what is wrong with the count."""
+        if self.name == "french_curve":  # the axis, the points, then one tangent line per index in tangent_at
+            n, at = params["points"], params["tangent_at"]
+            if len(set(at)) != len(at) or any(i >= n for i in at):
+                return f"'tangent_at' must name distinct points 0..{n - 1}, got {list(at)!r}"
+            if n < 2:
+                return f"draws a curve through at least 2 points, 'points' is {n}"
+            want = 1 + n + len(at)
+            if count != want:
+                return f"takes {want} inputs (the axis, {n} points, {len(at)} tangents), got {count}"
+            return ("line",) + ("point",) * n + ("line",) * len(at)
+        if self.name == "smooth_loop" and params.get("points", count) != count:
+            return f"'points' is {params['points']} but the step names {count} points"
+        kinds = self.inputs
+        fixed = [k.rstrip("*") for k in kinds]
+        if kinds and kinds[-1].endswith("*"):
+            if count < len(fixed) - 1:
+                return f"takes at least {len(fixed) - 1} inputs ({', '.join(fixed[:-1])}, ...), got {count}"
+            return tuple(fixed[:-1]) + (fixed[-1],) * (count - len(fixed) + 1)
+        if count != len(fixed):
+            return f"takes {len(fixed)} input{'s' if len(fixed) != 1 else ''} ({', '.join(fixed) or 'none'}), got {count}"
+        return tuple(fixed)
+
+    def output_kinds(self, params: Mapping[str, Any]) -> tuple[str, ...]:
+        """The kinds of the objects a step of this op makes."""
+        return self.outputs * 2 if params.get("both") else self.outputs
+
+
+def _short(value: Any) -> str:
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
 
 
 # --------------------------------------------------------------------------
@@ -231,31 +348,44 @@ def elementwise(fn: Callable[..., tuple]) -> Callable[..., tuple]:
 # --------------------------------------------------------------------------
 
 OPS: dict[str, Op] = {op.name: op for op in (
-    Op("given_point", _given_point, (), doc="a point given by its coordinates (times a given unit)"),
-    Op("given_length", _given_length, (), doc="a length given as a product of givens"),
-    Op("given_line", _given_line, ("point",), doc="a line through a point at a given angle"),
-    Op("line", _line, ("point", "point"), doc="straightedge through two points"),
-    Op("circle_through", _circle_through, ("point", "point"), doc="compass about a point through a point"),
-    Op("circle_radius", _circle_radius, ("point", "length"), doc="compass about a point with a carried opening"),
-    Op("circle_segment", _circle_segment, ("point", "point", "point"), doc="compass opening taken from a segment"),
-    Op("length_of", _length_of, ("point", "point"), doc="compass set to a segment"),
-    Op("intersect", _intersect, ("curve", "curve"), rule=True, doc="where two drawn curves cross"),
-    Op("step_off", _step_off, ("curve", "point", "length"), rule=True, doc="dividers stepped along a curve"),
-    Op("pick", _pick, ("point", "point"), rule=True,
+    Op("given_point", _given_point, (), params={"x": "number", "y": "number", "unit?": "given|null"},
+       doc="a point given by its coordinates (times a given unit)"),
+    Op("given_length", _given_length, (), outputs=("length",),
+       params={"product": "givens", "factor?": "number"}, doc="a length given as a product of givens"),
+    Op("given_line", _given_line, ("point",), outputs=("line",), params={"angle_deg": "number"},
+       doc="a line through a point at a given angle"),
+    Op("line", _line, ("point", "point"), outputs=("line",), doc="straightedge through two points"),
+    Op("circle_through", _circle_through, ("point", "point"), outputs=("circle",), doc="compass about a point through a point"),
+    Op("circle_radius", _circle_radius, ("point", "length"), outputs=("circle",),
+       doc="compass about a point with a carried opening"),
+    Op("circle_segment", _circle_segment, ("point", "point", "point"), outputs=("circle",),
+       doc="compass opening taken from a segment"),
+    Op("length_of", _length_of, ("point", "point"), outputs=("length",), doc="compass set to a segment"),
+    Op("intersect", _intersect, ("curve", "curve"), rule=True, params={"rule": "rule", "both?": "flag"},
+       doc="where two drawn curves cross"),
+    Op("step_off", _step_off, ("curve", "point", "length"), rule=True,
+       params={"rule": "rule", "both?": "flag"}, doc="dividers stepped along a curve"),
+    Op("pick", _pick, ("point", "point"), rule=True, params={"rule": "rule"},
        doc="of two constructed points, the one a rule names (an envelope of two curves, point by point)"),
-    Op("trial_chord", trial_chord_op, ("circle", "point", "point"), vector=False,
+    Op("trial_chord", trial_chord_op, ("circle", "point", "point"), vector=False, outputs=("length",),
+       params={"parts": "count", "tolerance": "positive"},
        doc="dividers set by trial to 1/n of an arc"),
     Op("neusis_archimedes", neusis_archimedes_op, ("point", "point", "point", "circle"), vector=False,
+       outputs=("point", "point"),
        doc="Archimedes' marked ruler slid into place"),
-    Op("french_curve", french_curve_op, ("line", "point", "any*"), vector=False,
+    Op("french_curve", french_curve_op, ("line", "point", "any*"), vector=False, outputs=("bezier",),
+       params={"points": "count", "tangent_at": "indices"},
        doc="a smooth curve through points along tangents (the tangent lines follow the points)"),
-    Op("parabola_envelope", parabola_envelope_op, ("point", "point", "point"), vector=False,
+    Op("parabola_envelope", parabola_envelope_op, ("point", "point", "point"), vector=False, outputs=("bezier",),
        doc="the parabola enveloped by the joins of equal divisions of ED and DF"),
-    Op("polyline", polyline_op, ("point", "point", "point*"), vector=False, doc="points joined by the straightedge"),
-    Op("smooth_loop", closed_french_curve_op, ("point", "point", "point*"), vector=False, doc="a closed French curve through points in order"),
-    Op("area_between", area_between_op, ("graph", "graph", "point", "point"), vector=False,
+    Op("polyline", polyline_op, ("point", "point", "point*"), vector=False, outputs=("polyline",),
+       params={"closed?": "flag"}, doc="points joined by the straightedge"),
+    Op("smooth_loop", closed_french_curve_op, ("point", "point", "point*"), vector=False, outputs=("bezier",),
+       params={"points?": "count"}, doc="a closed French curve through points in order"),
+    Op("area_between", area_between_op, ("graph", "graph", "point", "point"), vector=False, outputs=("area",),
+       params={"hatch_deg?": "number|null"},
        doc="the region between two graphs between two abscissae"),
-    Op("planimeter", planimeter_op, ("area",), vector=False, doc="a planimeter's reading of an area"),
-    Op("planimeter_height", planimeter_height_op, ("area", "point", "point"), vector=False,
+    Op("planimeter", planimeter_op, ("area",), vector=False, outputs=("number",), doc="a planimeter's reading of an area"),
+    Op("planimeter_height", planimeter_height_op, ("area", "point", "point"), vector=False, outputs=("length",),
        doc="the mean height of an area over a base"),
 )}

@@ -24,9 +24,13 @@ Point(-5.0, 0.0)
 from __future__ import annotations
 
 import json
+import math
+import numbers
+import os
 from dataclasses import dataclass, field
 from types import MappingProxyType
-from typing import Any, Mapping
+from collections.abc import Mapping
+from typing import Any
 
 import numpy as np
 
@@ -35,12 +39,16 @@ from .curves import BezierCurve, Polyline
 from .errors import (ConstructError, InvalidParameter, MissingGiven, ProtocolFormatError, RuleError, StepError,
                      UnknownObject, WrongInput)
 from .geometry import SCALAR, Circle, Length, Line, Point, Sweep, _Array, take
-from .ops import OPS, elementwise
+from .ops import ACCEPTS, OPS, elementwise
+from .protocol_file import (KNOWN_FORMATS, PROTOCOL_FILE_FORMAT, PROTOCOL_FORMAT, PROVENANCE_KINDS, ROLES, TOOLS,
+                            check_format, frozen, parse_protocol_json, read_protocol_bytes, step_fields)
 from .rules import as_rule
 
 __all__ = [
     "PROVENANCE_KINDS",
     "TOOLS",
+    "ROLES",
+    "KNOWN_FORMATS",
     "Caption",
     "Provenance",
     "Step",
@@ -51,18 +59,7 @@ __all__ = [
     "object_json",
 ]
 
-PROVENANCE_KINDS = ("given", "exact", "approximate", "neusis", "trial")
-
-#: The instruments.  "intersect" marks where two drawn curves cross: no new
-#: instrument, but a step of its own because a choice is made there.  "curve"
-#: is the draftsman's French curve (Curvenlineal): it draws a smooth line
-#: through constructed points, it constructs nothing.
-TOOLS = ("given", "straightedge", "compass", "dividers", "intersect", "neusis", "curve", "planimeter")
-
-PROTOCOL_FORMAT = "construct-protocol/1"
-#: The protocol file: format 1 less the defaults of each step, the group paths in a table ("groups")
-#: that each step names by number.  Both load.
-PROTOCOL_FILE_FORMAT = "construct-protocol/2"
+# PROVENANCE_KINDS, TOOLS, ROLES and the formats are defined with the file checks (protocol_file).
 
 
 @dataclass(frozen=True, slots=True)
@@ -168,43 +165,15 @@ class Step:
 
     @classmethod
     def from_dict(cls, d: Mapping[str, Any]) -> "Step":
-        try:
-            prov = d.get("provenance") or {"kind": "exact"}
-            cap = d["caption"]
-            return cls(
-                index=int(d["index"]),
-                tool=str(d["tool"]),
-                op=str(d["op"]),
-                inputs=tuple(str(s) for s in d["inputs"]),
-                outputs=tuple(str(s) for s in d["outputs"]),
-                params=MappingProxyType(_frozen(d.get("params") or {})),
-                caption=Caption(str(cap["de"]), str(cap["en"])),
-                provenance=Provenance(str(prov["kind"]), prov.get("method"), prov.get("error")),
-                group=tuple(str(g) for g in d.get("group") or ()),
-                role=str(d.get("role", "construction")),
-                labels=tuple(sorted((str(k), str(v)) for k, v in (d.get("labels") or {}).items())),
-            )
-        except (KeyError, TypeError, ValueError, AttributeError) as exc:
-            raise ProtocolFormatError(f"malformed step {d.get('index', '?') if isinstance(d, Mapping) else d!r}: {exc!r}") from None
+        """A step from its dict form (:meth:`as_dict`), every field checked (ProtocolFormatError names it)."""
+        return cls._from_fields(step_fields(d, None))
 
-
-def _resolve_group(step: Mapping[str, Any], table: list) -> Mapping[str, Any]:
-    """A step of a format-2 file names its group path by number in the file's table."""
-    g = step.get("group")
-    if isinstance(g, int) and not isinstance(g, bool):
-        if not 0 <= g < len(table):
-            raise ProtocolFormatError(f"step {step.get('index', '?')} names group {g}; the file has {len(table)}")
-        return {**step, "group": table[g]}
-    return step
-
-
-def _frozen(value: Any) -> Any:
-    """JSON lists become tuples so that params stay hashable and immutable."""
-    if isinstance(value, list):
-        return tuple(_frozen(v) for v in value)
-    if isinstance(value, dict):
-        return MappingProxyType({k: _frozen(v) for k, v in value.items()})
-    return value
+    @classmethod
+    def _from_fields(cls, f: Mapping[str, Any]) -> "Step":
+        kind, method, error = f["provenance"]
+        return cls(index=f["index"], tool=f["tool"], op=f["op"], inputs=f["inputs"], outputs=f["outputs"],
+                   params=f["params"], caption=Caption(*f["caption"]), provenance=Provenance(kind, method, error),
+                   group=f["group"], role=f["role"], labels=f["labels"])
 
 
 def _jsonable(value: Any) -> Any:
@@ -232,12 +201,26 @@ def _jsonable(value: Any) -> Any:
 def compile_step(step: Step, slot: Mapping[str, Any] | None = None) -> tuple:
     """The entry for *step*; *slot* maps names to list slots (None: objects are kept by name).
 
-    Raises ProtocolFormatError for an unknown operation, UnknownObject for a
+    Raises ProtocolFormatError for an unknown operation, WrongInput for
+    parameters the op does not take (or of the wrong kind), UnknownObject for a
     name no earlier step made and RuleError for a malformed rule.
     """
     op = OPS.get(step.op)
     if op is None:
         raise ProtocolFormatError(f"step {step.index}: unknown operation {step.op!r}; known: {', '.join(sorted(OPS))}")
+
+    def unknown(name: str) -> UnknownObject:
+        return UnknownObject(f"step {step.index} ({step.tool}: {step.caption.en}) uses {name!r} before any step made it",
+                             name=name, step_index=step.index, tool=step.tool, op=step.op)
+
+    if slot is not None:
+        missing = [n for n in step.inputs if n not in slot]
+        if missing:
+            raise unknown(missing[0])
+    problem = op.check_params(step.params)
+    if problem:
+        raise WrongInput(f"step {step.index} ({step.tool}: {step.caption.en}): {step.op} {problem}",
+                         step_index=step.index, tool=step.tool, op=step.op)
     params = dict(step.params)
     refs: tuple[str, ...] = ()
     if op.rule:
@@ -247,14 +230,41 @@ def compile_step(step: Step, slot: Mapping[str, Any] | None = None) -> tuple:
             raise exc.at_step(step.index, step.tool, step.op, step.caption.en) from None
         params["rule"] = rule
         refs = rule.refs
-    look = slot if slot is not None else None
-    try:
-        ins = tuple(look[n] for n in step.inputs) if look is not None else tuple(step.inputs)
-        ref_slots = tuple(look[n] for n in refs) if look is not None else refs
-    except KeyError as exc:
-        raise UnknownObject(f"step {step.index} ({step.tool}: {step.caption.en}) uses {exc.args[0]!r} "
-                            f"before any step made it", step_index=step.index, tool=step.tool, op=step.op) from None
+    if slot is None:  # objects are kept by name
+        ins, ref_slots = tuple(step.inputs), refs
+    else:
+        missing = [n for n in refs if n not in slot]
+        if missing:
+            raise unknown(missing[0])
+        ins, ref_slots = tuple(slot[n] for n in step.inputs), tuple(slot[n] for n in refs)
     return (op.fn, ins, step.outputs, params, ref_slots, op, step)
+
+
+def check_kinds(step: Step, op: Any, refs: tuple[str, ...], kinds: dict[str, str]) -> None:
+    """Does *step* fit its op's declared inputs and outputs, given the kinds of the objects made before it?
+
+    Records the kinds of its outputs in *kinds*.  This is the load-time check of a
+    protocol (a Builder checks the evaluated objects themselves as it goes).
+    """
+    def wrong(problem: str) -> WrongInput:
+        return WrongInput(f"step {step.index} ({step.tool}: {step.caption.en}): {step.op} {problem}",
+                          step_index=step.index, tool=step.tool, op=step.op)
+
+    want = op.input_kinds(step.params, len(step.inputs))
+    if isinstance(want, str):
+        raise wrong(want)
+    for i, (name, kind) in enumerate(zip(step.inputs, want), start=1):
+        if kinds[name] not in ACCEPTS[kind]:
+            raise wrong(f"input {i} must be a {kind}, {name!r} is a {kinds[name]}")
+    for name in refs:
+        if kinds[name] != "point":
+            raise wrong(f"rule names {name!r}, a {kinds[name]}; a rule names points")
+    made = op.output_kinds(step.params)
+    if len(made) != len(step.outputs):
+        raise wrong(f"makes {len(made)} object{'s' if len(made) != 1 else ''} ({', '.join(made)}), "
+                    f"the step names {len(step.outputs)}: {', '.join(step.outputs) or 'none'}")
+    for name, kind in zip(step.outputs, made):
+        kinds[name] = kind
 
 
 def step_failure(step: Step, exc: BaseException) -> ConstructError:
@@ -300,21 +310,48 @@ def sweep_givens(givens: Mapping[str, Any]) -> tuple[dict[str, Any], Any]:
     >>> g["r"], g["rod_ratio"], xp.n
     (1.0, array([4., 5.]), 2)
     """
-    arrays = {k: np.asarray(v, dtype=float) for k, v in givens.items()
-              if isinstance(v, (np.ndarray, list, tuple))}
+    arrays = {k: _given_array(k, v) for k, v in givens.items() if isinstance(v, (np.ndarray, list, tuple))}
     if not arrays:
-        return {k: float(v) for k, v in givens.items()}, SCALAR
+        return {k: _given_number(k, v) for k, v in givens.items()}, SCALAR
     try:
         shaped = np.broadcast_arrays(*arrays.values())
     except ValueError as exc:
         raise InvalidParameter(f"swept givens {', '.join(arrays)} do not broadcast together: {exc}") from None
-    out: dict[str, Any] = {k: float(v) for k, v in givens.items() if k not in arrays}
+    out: dict[str, Any] = {k: _given_number(k, v) for k, v in givens.items() if k not in arrays}
     for k, a in zip(arrays, shaped):
         out[k] = np.ascontiguousarray(a, dtype=float).reshape(-1)
     n = next(iter(out[k] for k in arrays)).size
     if n == 0:
         raise InvalidParameter("a sweep needs at least one set of givens")
     return out, _Array(n)
+
+
+def _shown(value: Any) -> str:
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def _given_number(name: Any, value: Any) -> float:
+    """A given as a float: a finite real number, else an InvalidParameter naming it."""
+    if type(value) is float and math.isfinite(value):
+        return value
+    if isinstance(value, numbers.Real) and not isinstance(value, bool):
+        v = float(value)
+        if math.isfinite(v):
+            return v
+    raise InvalidParameter(f"the given {name!r} must be a finite number, got {_shown(value)}")
+
+
+def _given_array(name: Any, value: Any) -> Any:
+    """A swept given as a 1-d array of finite floats, else an InvalidParameter naming it."""
+    numeric = (value.dtype.kind in "fiu" if isinstance(value, np.ndarray)
+               else all(isinstance(v, numbers.Real) and not isinstance(v, bool) for v in value))
+    if not numeric:
+        raise InvalidParameter(f"the swept given {name!r} must be numbers, got {_shown(value)}")
+    a = np.asarray(value, dtype=float)
+    if not np.isfinite(a).all():
+        raise InvalidParameter(f"the swept given {name!r} must be finite numbers, got {a[~np.isfinite(a)][:3].tolist()}")
+    return a
 
 
 class Replay(Mapping[str, Any]):
@@ -334,7 +371,23 @@ class Replay(Mapping[str, Any]):
         return MappingProxyType(self._givens)
 
     def __getitem__(self, name: str) -> Any:
-        return self._objects[name]
+        try:
+            return self._objects[name]
+        except (KeyError, TypeError):  # TypeError: an unhashable "name"
+            raise UnknownObject(f"the replay of {self.protocol.construction!r} has no object {_shown(name)}",
+                                name=name) from None
+
+    def __contains__(self, name: object) -> bool:  # without building the error a miss in __getitem__ makes
+        try:
+            return name in self._objects
+        except TypeError:
+            return False
+
+    def get(self, name: object, default: Any = None) -> Any:
+        try:
+            return self._objects.get(name, default)
+        except TypeError:
+            return default
 
     def __iter__(self):
         return iter(self._objects)
@@ -351,10 +404,12 @@ class Replay(Mapping[str, Any]):
 
     def take(self, i: int) -> "Replay":
         """Set *i* of a sweep as a plain replay (a plain replay is its own only set)."""
+        if isinstance(i, bool) or not isinstance(i, numbers.Integral):
+            raise InvalidParameter(f"a set of a sweep is taken by its number, got {_shown(i)}")
         if not self.size:
             return self
         if not -self.size <= i < self.size:
-            raise IndexError(f"sweep of {self.size} has no set {i}")
+            raise InvalidParameter(f"sweep of {self.size} has no set {i}")
         i %= self.size
         objects = {name: take(v, i) for name, v in self._objects.items()}
         return Replay(self.protocol, objects, {k: take(v, i) for k, v in self._givens.items()})
@@ -404,18 +459,20 @@ class Protocol:
         return f"<Protocol {self.construction!r}: {len(self.steps)} steps, givens {', '.join(self.givens) or '-'}>"
 
     def __reduce__(self):
-        return (Protocol.from_dict, (self.as_dict(with_objects=False),))
+        return (_unpickle, (self.as_dict(with_objects=False),))
 
     # -- replay -------------------------------------------------------------
     def _program(self) -> tuple[list, tuple[str, ...]]:
         if not self._compiled:
             slot: dict[str, int] = {}
+            kinds: dict[str, str] = {}
             entries = []
             for step in self.steps:
                 for name in step.outputs:
                     if name in slot:
                         raise ProtocolFormatError(f"step {step.index} makes {name!r} a second time")
                 entry = compile_step(step, slot)
+                check_kinds(step, entry[5], entry[3]["rule"].refs if entry[5].rule else (), kinds)
                 outs = []
                 for name in step.outputs:
                     slot[name] = len(slot)
@@ -430,6 +487,10 @@ class Protocol:
         Givens that are arrays (or lists) make the replay a sweep: one value
         per set of givens in every coordinate.
         """
+        if givens is not None and not isinstance(givens, Mapping):
+            raise InvalidParameter(f"givens are a mapping of names to numbers, got {_shown(givens)}")
+        if upto is not None and (isinstance(upto, bool) or not isinstance(upto, numbers.Integral)):
+            raise InvalidParameter(f"upto is a step number, got {_shown(upto)}")
         givens, xp = sweep_givens(dict(self.params.get("givens", {}) if givens is None else givens))
         entries, names = self._program()
         env: list[Any] = [None] * len(names)
@@ -533,38 +594,97 @@ class Protocol:
 
     @classmethod
     def from_dict(cls, d: Any) -> "Protocol":
+        """A protocol from its dict form (:meth:`as_dict`, or a parsed file of format 1 or 2), checked whole.
+
+        Everything a replay relies on is checked here, once: the format, every
+        field of every step, each step against its operation's declared inputs,
+        outputs and parameters (finite numbers, known kinds), that every object
+        is made before it is used and every given a step reads is in
+        ``params.givens``.  A malformed protocol raises ProtocolFormatError
+        naming the step, the field, the value and what is allowed.
+        """
+        return cls._checked(d, empty_ok=False)
+
+    @classmethod
+    def _checked(cls, d: Any, *, empty_ok: bool) -> "Protocol":
         if not isinstance(d, Mapping):
-            raise ProtocolFormatError("a protocol is a JSON object")
+            raise ProtocolFormatError(f"a protocol is a JSON object, got {type(d).__name__}")
+        fmt = check_format(d)
         for key in ("construction", "params", "steps"):
             if key not in d:
                 raise ProtocolFormatError(f"protocol has no {key!r}")
-        if not isinstance(d["steps"], list) or not all(isinstance(s, Mapping) for s in d["steps"]):
-            raise ProtocolFormatError("protocol 'steps' must be a list of objects")
+        name = d["construction"]
+        if not isinstance(name, str) or not name:
+            raise ProtocolFormatError(f"protocol 'construction' must be a name, got {_shown(name)}")
+        if not isinstance(d["steps"], list):
+            raise ProtocolFormatError(f"protocol 'steps' must be a list of objects, got {type(d['steps']).__name__}")
+        if not d["steps"] and not empty_ok:
+            raise ProtocolFormatError("protocol has no steps")
         if not isinstance(d["params"], Mapping):
-            raise ProtocolFormatError("protocol 'params' must be an object")
-        table = d.get("groups") or []
-        if not isinstance(table, list) or not all(isinstance(g, list) for g in table):
-            raise ProtocolFormatError("protocol 'groups' must be a list of group paths")
-        steps = tuple(Step.from_dict(_resolve_group(s, table)) for s in d["steps"])
-        for k, s in enumerate(steps, start=1):
-            if s.index != k:
-                raise ProtocolFormatError(f"step {k} carries index {s.index}")
-        proto = cls(
-            construction=str(d["construction"]),
-            params=MappingProxyType(_frozen(dict(d["params"]))),
-            steps=steps,
-            givens=tuple(str(g) for g in d.get("givens", ())),
-        )
+            raise ProtocolFormatError(f"protocol 'params' must be an object, got {type(d['params']).__name__}")
+        params = frozen(dict(d["params"]))
+        stored = params.get("givens", MappingProxyType({}))
+        if not isinstance(stored, Mapping):
+            raise ProtocolFormatError(f"protocol 'params.givens' must map names to numbers, got {_shown(stored)}")
+        for key, value in stored.items():
+            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+                raise ProtocolFormatError(f"protocol 'params.givens': the given {key!r} must be a finite number, "
+                                          f"got {_shown(value)}")
+        givens = d.get("givens", [])
+        if not isinstance(givens, list) or not all(isinstance(g, str) for g in givens):
+            raise ProtocolFormatError(f"protocol 'givens' must be a list of names, got {_shown(givens)}")
+        unstored = [g for g in givens if g not in stored]
+        if unstored:
+            raise ProtocolFormatError(f"protocol 'givens' names {unstored[0]!r}, which 'params.givens' lacks "
+                                      f"(it has {', '.join(stored) or 'none'})")
+        table = d.get("groups", []) if fmt == PROTOCOL_FILE_FORMAT else None
+        if table is not None and not (isinstance(table, list) and all(
+                isinstance(g, list) and all(isinstance(t, str) for t in g) for g in table)):
+            raise ProtocolFormatError("protocol 'groups' must be a list of group paths (lists of titles)")
+        steps = tuple(Step._from_fields(step_fields(s, k, table)) for k, s in enumerate(d["steps"], start=1))
+        for st in steps:
+            reads = _givens_read(st)
+            missing = [g for g in reads if g not in stored]
+            if missing:
+                raise ProtocolFormatError(f"step {st.index} ({st.tool}: {st.caption.en}) reads the given "
+                                          f"{missing[0]!r}, which 'params.givens' lacks "
+                                          f"(it has {', '.join(stored) or 'none'})")
+        proto = cls(construction=name, params=params, steps=steps, givens=tuple(givens))
         try:
-            proto._program()  # reject unknown ops, dangling names and bad rules now, not mid-replay
+            proto._program()  # unknown ops, wrong kinds and counts, dangling names, bad rules: now, not mid-replay
         except StepError as exc:
             raise ProtocolFormatError(str(exc)) from None
         return proto
 
     @classmethod
-    def from_json(cls, text: str) -> "Protocol":
-        try:
-            data = json.loads(text)
-        except (json.JSONDecodeError, UnicodeDecodeError) as exc:
-            raise ProtocolFormatError(f"not a JSON protocol: {exc}") from None
-        return cls.from_dict(data)
+    def from_json(cls, text: str | bytes) -> "Protocol":
+        """A protocol from the text of a protocol file (see :meth:`from_dict` for what is checked)."""
+        return cls.from_dict(parse_protocol_json(text))
+
+    @classmethod
+    def load(cls, path: Any) -> "Protocol":
+        """A protocol from a file: a regular file of at most MAX_PROTOCOL_BYTES (64 MiB), checked whole.
+
+        >>> Protocol.load("/dev/zero")
+        Traceback (most recent call last):
+        ...
+        construct.kernel.errors.ProtocolFormatError: protocol file '/dev/zero' is not a regular file (a pipe or a device); save the protocol to a file and name that
+        """
+        data = read_protocol_bytes(path)
+        return cls.from_dict(parse_protocol_json(data, f"protocol file {os.fsdecode(os.fspath(path))!r}"))
+
+
+def _unpickle(d: Mapping[str, Any]) -> Protocol:
+    """A pickled protocol: checked as a file is, but a Builder's protocol may have no steps yet."""
+    return Protocol._checked(d, empty_ok=True)
+
+
+def _givens_read(step: Step) -> tuple[str, ...]:
+    """The givens a step reads by name (a given point's unit, a given length's factors)."""
+    if step.op == "given_point":
+        unit = step.params.get("unit")
+        return (unit,) if isinstance(unit, str) else ()
+    if step.op == "given_length":
+        product = step.params.get("product")
+        return tuple(g for g in product if isinstance(g, str)) if isinstance(product, (list, tuple)) else ()
+    return ()

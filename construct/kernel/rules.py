@@ -25,6 +25,8 @@ construct.kernel.errors.RuleError: a rule is a value like left_of('A', 'B') or a
 
 from __future__ import annotations
 
+import math
+import numbers
 from typing import Any, Sequence
 
 from .errors import RuleError
@@ -54,7 +56,7 @@ class Rule:
         if direction is not None:
             if name != "toward" or refs and len(refs) > 1:
                 raise RuleError(f"only 'toward' takes a fixed direction, got {name!r} with {refs!r}")
-            dx, dy = (float(v) for v in direction)
+            dx, dy = _direction(direction)
             if dx == 0.0 and dy == 0.0:
                 raise RuleError("rule 'toward' needs a direction other than (0, 0)")
             direction = (dx, dy)
@@ -94,6 +96,18 @@ class Rule:
         if self.direction is not None:
             return f"toward(dx={self.direction[0]!r}, dy={self.direction[1]!r})"
         return f"{fn}({', '.join(repr(r) for r in self.refs)})"
+
+
+def _direction(direction: Any) -> tuple[float, float]:
+    """(dx, dy) as two finite floats: a NaN direction would choose a branch by chance, steps later."""
+    try:
+        dx, dy = direction
+    except (TypeError, ValueError):
+        raise RuleError(f"rule 'toward' takes a direction (dx, dy), got {direction!r}") from None
+    for v in (dx, dy):
+        if isinstance(v, bool) or not isinstance(v, numbers.Real) or not math.isfinite(v):
+            raise RuleError(f"rule 'toward' needs a direction of two finite numbers, got ({dx!r}, {dy!r})")
+    return float(dx), float(dy)
 
 
 def nearer(point: str) -> Rule:
@@ -143,7 +157,11 @@ def as_rule(rule: Any) -> Rule:
     if isinstance(rule, str) or not isinstance(rule, (list, tuple)) or not rule:
         raise RuleError(f"a rule is a value like left_of('A', 'B') or a list like ['left', 'A', 'B'], got {rule!r}")
     name = rule[0]
+    if not isinstance(name, str):
+        raise RuleError(f"a rule starts with its name ({', '.join(sorted(RULE_ARITY))}), got {list(rule)!r}")
     if name == "toward" and len(rule) == 5:
+        if rule[1] is not None and not isinstance(rule[1], str):
+            raise RuleError(f"rule {list(rule)!r}: the first point of a direction is a name or null")
         if rule[2] is not None:
             raise RuleError(f"rule {list(rule)!r}: a fixed direction leaves the second point empty")
         return Rule("toward", (), (rule[3], rule[4]), raw=rule)

@@ -33,6 +33,8 @@ from pathlib import Path
 from typing import Any, Mapping, Sequence
 
 from ..kernel.errors import InvalidParameter, ProtocolFormatError
+from ..kernel.protocol_file import (MAX_PROTOCOL_BYTES, check_format, check_nesting, parse_protocol_json,
+                                    read_protocol_bytes)
 
 __all__ = ["DEFAULT_TOLERANCE", "ProtocolChange", "ProtocolDiff", "diff_protocol", "load_protocol"]
 
@@ -118,20 +120,16 @@ class _Protocol:
 def _read(source: str | Path | bytes | Mapping[str, Any]) -> tuple[Any, str]:
     if isinstance(source, Mapping):
         return dict(source), "<data>"
-    if isinstance(source, bytes):
+    if isinstance(source, (bytes, bytearray)):
         text, label = source, "<bytes>"
     elif isinstance(source, str) and source.lstrip().startswith(("{", "[", "\ufeff")):
         text, label = source, "<string>"
-    else:
-        path = Path(source)
-        try:
-            text, label = path.read_bytes(), str(path)
-        except OSError as exc:
-            raise ProtocolFormatError(f"cannot read protocol {str(path)!r}: {exc.strerror or exc}") from None
-    try:
-        return json.loads(text), label
-    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
-        raise ProtocolFormatError(f"{label}: not JSON: {exc}") from None
+    else:  # a file: read as the loader reads it, regular files only and at most MAX_PROTOCOL_BYTES
+        text, label = read_protocol_bytes(source), str(source)
+    if len(text) > MAX_PROTOCOL_BYTES:
+        raise ProtocolFormatError(f"{label}: larger than {MAX_PROTOCOL_BYTES // 2**20} MiB; no protocol this "
+                                  f"library writes is")
+    return parse_protocol_json(text, label), label
 
 
 def load_protocol(source: str | Path | bytes | Mapping[str, Any]) -> _Protocol:
@@ -145,6 +143,12 @@ def load_protocol(source: str | Path | bytes | Mapping[str, Any]) -> _Protocol:
     data, label = _read(source)
     if not isinstance(data, dict):
         raise ProtocolFormatError(f"{label}: a protocol is a JSON object, got {type(data).__name__}")
+    try:
+        check_format(data)
+        # the diff walks params, steps and objects recursively: deeper than this protocol files never go
+        check_nesting(data, what=label)
+    except ProtocolFormatError as exc:
+        raise ProtocolFormatError(f"{label}: {exc}" if not str(exc).startswith(label) else str(exc)) from None
     if not isinstance(data.get("construction"), str):
         raise ProtocolFormatError(f"{label}: 'construction' must be a string, got {data.get('construction')!r}")
     if not isinstance(data.get("steps"), list):

@@ -19,9 +19,10 @@ its defaults, bisected over L/r): the checks first fail at L/r = 4.1e3
 the stroke.  At L/r = 1e16 every piston position is the middle of the stroke.
 Near L/r = 1 the rod arc meets the stroke line at a grazing angle and the inertia
 curve's end tangent r tg beta = (F/f)(4λ - 1)/(1 - λ) grows like 1/(L/r - 1):
-its check fails from L/r = 1.003 (the piston-force area balance from 1.0001).
-The domain 1.01 <= L/r <= 1000 keeps every check within a quarter of its
-tolerance (books draw 4 to 6); a longer rod is as good as the infinite rod
+its check fails from L/r = 1.003 at the books' F/f and from 1.01 at F/f = 2 r,
+with an error growing like 1/(L/r - 1)^2 (the piston-force area balance fails
+from 1.0001).  The domain 1.05 <= L/r <= 1000 keeps every check within about a
+quarter of its tolerance (books draw 4 to 6); a longer rod is as good as the infinite rod
 (--infinite-rod, or the ordinates Y the crank figure draws beside the arcs).
 
 >>> ROD_RATIO.check("rod ratio L/r", 5.0)
@@ -29,7 +30,7 @@ tolerance (books draw 4 to 6); a longer rod is as good as the infinite rod
 >>> ROD_RATIO.check("rod ratio L/r", 1e16)
 Traceback (most recent call last):
 ...
-construct.kernel.errors.InvalidParameter: rod ratio L/r = 1e+16 is outside 1.01 .. 1000, where the constructions keep their accuracy in float64 (the rod arc's cancellation loses digits as L/r grows; near 1 the arcs graze); for a longer rod take the infinite rod (--infinite-rod, or the crank figure's ordinates Y)
+construct.kernel.errors.InvalidParameter: rod ratio L/r = 1e+16 is outside 1.05 .. 1000, where the constructions keep their accuracy in float64 (the rod arc's cancellation loses digits as L/r grows; near 1 the arcs graze); for a longer rod take the infinite rod (--infinite-rod, or the crank figure's ordinates Y)
 """
 
 from __future__ import annotations
@@ -43,8 +44,8 @@ import numpy as np
 from ..errors import InvalidParameter
 
 __all__ = ["Domain", "ROD_RATIO", "DRAWN_LENGTH", "PRESSURE", "PRESSURE_RATIO", "STROKE_FRACTION", "CLEARANCE",
-           "DRAWN_PRESSURE_RATIO", "KAPPA_RANGE", "FLUCTUATION", "SPEED_GAIN", "WEIGHT", "RPM", "LENGTH_M", "PISTON_AREA",
-           "DRAWING_SCALE", "FORCE_UNIT"]
+           "DRAWN_PRESSURE_RATIO", "DRAWN_M", "DRAWN_MASS_FORCE", "KAPPA_RANGE", "FLUCTUATION", "SPEED_GAIN", "WEIGHT", "RPM", "LENGTH_M", "PISTON_AREA",
+           "DRAWING_SCALE", "FORCE_UNIT", "FLYWHEEL_KZ", "RIM_SPEED"]
 
 
 @dataclass(frozen=True)
@@ -63,13 +64,13 @@ class Domain:
         if outside.any():
             bad = float(arr[outside].flat[0])
             advice = f"; {self.advice}" if self.advice else ""
-            bounds = f"{self.low:g} .. {self.high:g}" if math.isfinite(self.high) else f"at least {self.low:g}"
-            raise InvalidParameter(f"{name} = {bad:.6g} is outside {bounds}, {self.why}{advice}")
+            where = f"outside {self.low:g} .. {self.high:g}" if math.isfinite(self.high) else f"below {self.low:g}"
+            raise InvalidParameter(f"{name} = {bad:.6g} is {where}, {self.why}{advice}")
         return value
 
 
 #: L/r: see the module's docstring for the measurement.
-ROD_RATIO = Domain(1.01, 1000.0, "where the constructions keep their accuracy in float64 (the rod arc's "
+ROD_RATIO = Domain(1.05, 1000.0, "where the constructions keep their accuracy in float64 (the rod arc's "
                    "cancellation loses digits as L/r grows; near 1 the arcs graze)",
                    "for a longer rod take the infinite rod (--infinite-rod, or the crank figure's ordinates Y)")
 #: Lengths in drawing units (crank radius r, the stroke half of a diagram, the drawn length of a pressure unit).
@@ -87,6 +88,14 @@ PRESSURE_RATIO = Domain(1e-3, 1e3, "the range in which the inertia construction 
 #: curve's tangents lose the checks' digits outside 8e-4 .. 80 (measured; 8e-5 and 800 fail).
 DRAWN_PRESSURE_RATIO = Domain(1e-2, 50.0, "the drawn F/f (pressure_ratio x pressure_unit) over the crank radius "
                               "r for which the inertia construction keeps its accuracy (measured: 8e-4 .. 80 pass)")
+#: q5 (ordinate -m, m = (r/L) F/f) lies off the infinite-rod line Einf-Finf (slope F/f over r) by m r / sqrt(r^2 +
+#: F/f^2), and the 90-degree tangent is the parallel through q5: when that offset is a tiny fraction of the line's
+#: length 2 sqrt(r^2 + F/f^2) the parallel's circles meet at a grazing angle and the tangent misses by r/(2L).
+#: Measured: the fraction m r / (2 (r^2 + F/f^2)) = 1.25e-5 fails by 6e5 tolerances, 1.43e-5 passes; ten times
+#: that is the bound (at the books' F/f = 0.8 r it allows L/r up to 1600).
+DRAWN_M = Domain(1.5e-4, math.inf, "the offset of q5 from the infinite-rod line over that line's length for which "
+                 "the tangent at 90 degrees is drawn accurately (measured: it fails below 1.4e-5)",
+                 "bring the drawn F/f (pressure ratio x pressure unit) nearer to r, or take a shorter rod")
 #: Filling s1/s and compression s3/s, fractions of the stroke (below 1 is checked where they are read).
 STROKE_FRACTION = Domain(1e-3, 1.0, "fractions of the stroke the diagram is measured for (below 1e-3 a "
                          "hyperbola's points crowd into the clearance corner)")
@@ -102,6 +111,11 @@ FLUCTUATION = Domain(1e-3, 1e3, "the fluctuation the two-cranks construction is 
 SPEED_GAIN = Domain(0.1, math.inf, "the magnified fluctuation G k for which the speed wave stands clear of the "
                     "crank circle (measured: below 0.02 its extremes fail their checks)",
                     "raise --magnify or --fluctuation")
+#: The drawn mass force (G/g) omega^2 R x force_unit over the drawn crank radius R x scale (Tafel I: 0.11).
+#: Measured: 4.5e-13 .. 4.5e8 pass, 4.5e-15 fails its area checks, 4.5e14 breaks the French curve.
+DRAWN_MASS_FORCE = Domain(1e-9, 1e6, "the drawn mass force (G/g) omega^2 R x force_unit over the drawn crank "
+                          "radius R x scale for which the piston-force figure is measured (4.5e-13 .. 4.5e8 pass)",
+                          "choose --force-unit to suit --weight and --rpm")
 #: Piston-force givens in the book's units; each range is 1e-3 .. 1e3 times inside what the checks pass.
 WEIGHT = Domain(0.1, 1e6, "kg of reciprocating parts the mass forces are measured for (8e-4 .. 8e8 pass)")
 RPM = Domain(0.1, 1e4, "revolutions per minute the mass forces are measured for (5e-5 .. 5e5 pass)")
@@ -109,3 +123,7 @@ LENGTH_M = Domain(1e-3, 1e3, "metres (crank radius, rod length) the piston-force
 PISTON_AREA = Domain(1e-2, 1e7, "cm^2 of piston area the forces are measured for (1.5e-3 .. 1.5e9 pass)")
 DRAWING_SCALE = Domain(1e-3, 1e4, "drawn length per metre the figure is measured for (2.5e-6 .. 2.5e6 pass)")
 FORCE_UNIT = Domain(1e-8, 10.0, "drawn length per kg the forces are measured for (1.2e-10 .. 120 pass)")
+#: Baumann's flywheel coefficients 1 + c v^2/kz (closed formulas, not drawn): kz in kg/cm^2 and v in m/s only need
+#: v^2/kz finite and normal; these ranges keep it within 1e-15 .. 1e14 (his tables: kz 40..200, v 10..40).
+FLYWHEEL_KZ = Domain(1e-3, 1e6, "allowed stresses kz in kg/cm^2 for which v^2/kz stays a normal float")
+RIM_SPEED = Domain(1e-3, 1e4, "rim speeds v in m/s for which v^2/kz stays a normal float")

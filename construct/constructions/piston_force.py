@@ -59,7 +59,7 @@ from ..kernel.instruments import Builder
 from ..kernel.proportional import fourth_proportional, scale_line, vertex_on
 from ..kernel.protocol import Caption
 from . import Construction, Figure, bounded, register
-from .domain import DRAWING_SCALE, FORCE_UNIT, LENGTH_M, PISTON_AREA, ROD_RATIO, RPM, WEIGHT
+from .domain import DRAWING_SCALE, DRAWN_MASS_FORCE, FORCE_UNIT, LENGTH_M, PISTON_AREA, ROD_RATIO, RPM, WEIGHT
 from .crank import angle_tolerance, build_frame, crank_angle, point_name, rod_arcs
 from .indicator import back_pressure as model_back
 from .indicator import indicator_frame, indicator_givens, pressures_at, square
@@ -112,6 +112,8 @@ def _givens(*, weight: Any, rpm: Any, crank_radius: Any, rod_length: Any, piston
     if out["rod_length"] <= out["crank_radius"]:
         raise InvalidParameter(f"rod length L = {rod_length!r} m must exceed the crank radius R = {crank_radius!r} m")
     ROD_RATIO.check("rod ratio L/R (rod length over crank radius)", out["rod_length"] / out["crank_radius"])
+    DRAWN_MASS_FORCE.check("drawn mass force over drawn crank radius ((G/g) omega^2 R force_unit / (R scale))",
+                           mass_force_scale(out) * out["force_unit"] / (out["crank_radius"] * out["scale"]))
     # the indicator diagram's pressure unit is F * force_unit: checked there as a product of positives
     out.update(indicator_givens(filling, clearance, admission, back_pressure, compression, 1.0))
     del out["pressure_unit"]

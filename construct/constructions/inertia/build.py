@@ -13,7 +13,7 @@ from ...kernel.division import check_parts, divide_semicircle
 from ...kernel.instruments import Builder
 from ...kernel.proportional import ProportionalAngle, Scale, carry_across, scale_line, vertex_on
 from .. import Figure, bounded, rod_ratio_param
-from ..domain import DRAWN_LENGTH, DRAWN_PRESSURE_RATIO, PRESSURE_RATIO
+from ..domain import DRAWN_LENGTH, DRAWN_M, DRAWN_PRESSURE_RATIO, PRESSURE_RATIO
 from ..crank import build_frame, rod_arcs
 
 __all__ = ["build_inertia", "PLATE"]
@@ -46,6 +46,9 @@ def _givens(r: Any, rod_ratio: Any, pressure_ratio: Any, pressure_unit: Any) -> 
          "pressure_unit": bounded("pressure-scale unit (drawn length of 1 kg/cm2)", pressure_unit, DRAWN_LENGTH)}
     DRAWN_PRESSURE_RATIO.check("drawn F/f over r (pressure_ratio x pressure_unit / r)",
                                g["pressure_ratio"] * g["pressure_unit"] / g["r"])
+    ff, r = g["pressure_ratio"] * g["pressure_unit"], g["r"]
+    DRAWN_M.check("q5's offset from the infinite-rod line over its length (m r / (2 (r^2 + (F/f)^2)), "
+                  "m = F/f / rod_ratio)", ff / g["rod_ratio"] * r / (2.0 * (r * r + ff * ff)))
     return g
 
 

@@ -140,6 +140,8 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Construction | None, Fig
                 raise InvalidParameter(f"the protocol {proto.construction!r} has no given {key!r}; "
                                        f"it has {', '.join(sorted(givens)) or 'none'}")
             givens[key] = value
+        if c is not None:  # a book construction's givens keep its stated domain, whatever they are called
+            c.validate(givens)
         return c, Figure(proto, proto.replay(givens))
     if named:
         raise InvalidParameter("--given sets the givens of a --protocol; a named construction takes its own options")

@@ -63,6 +63,10 @@ class Construction:
             return None
         return {**givens, "rod_ratio": np.asarray(ratios, dtype=float)}
 
+    def validate(self, givens: Mapping[str, Any]) -> None:
+        """Raise InvalidParameter if a set of givens (a protocol's, by their own names) lies outside the domain."""
+        _validate_givens(self.name, givens)
+
     def replay(self, protocol: Protocol, **givens: Any) -> Figure:
         """Replay an existing protocol with new givens (only those that keep the steps)."""
         values = dict(protocol.params.get("givens", {}))

@@ -203,3 +203,9 @@ def test_a_negative_value_of_a_table_option_reaches_the_real_message(capsys):
 def test_counts_are_refused_at_their_stated_limit(capsys, argv):
     err = refused(capsys, *argv)
     assert any(word in err for word in ("between 1 and 3600", "from 1 to 1000", "from 2 to 200", "whole number")), err
+
+
+def test_a_negative_tolerance_in_exponent_form_reaches_the_real_message(capsys, tmp_path):
+    svg = tmp_path / "a.svg"
+    svg.write_text('<svg xmlns="http://www.w3.org/2000/svg"><circle cx="1" cy="1" r="1"/></svg>', encoding="utf-8")
+    assert "--tolerance must be a finite number >= 0" in refused(capsys, "diff", str(svg), str(svg), "--tolerance", "-1e-3")

@@ -67,9 +67,51 @@ def _terminate_cleanly():
         signal.signal(signal.SIGTERM, previous)
 
 
+def _is_float(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+def _negative_values_attached(parser: argparse.ArgumentParser, argv: Sequence[str]) -> list[str]:
+    """'--rod-ratio -inf' as '--rod-ratio=-inf': argparse takes a token like -inf or -1e-3 for an option.
+
+    Its own test for negative numbers knows only -5 and -.5, so '--radius -1e-3' would report "expected one
+    argument" instead of the real complaint (the radius must be positive).  Only options that take a value
+    are joined to a following token that reads as a float (float() reads -inf, nan and 1e-3).
+
+    >>> _negative_values_attached(build_parser(), ["check", "crank", "--rod-ratio", "-inf", "--infinite-rod"])
+    ['check', 'crank', '--rod-ratio=-inf', '--infinite-rod']
+    """
+    subparsers = next((a for a in parser._actions if isinstance(a, argparse._SubParsersAction)), None)
+    sub = subparsers.choices.get(argv[0]) if subparsers is not None and argv else None
+    if sub is None:
+        return list(argv)
+    takes_value = {opt for action in sub._actions if action.option_strings and action.nargs != 0
+                   for opt in action.option_strings}
+    out: list[str] = []
+    i = 0
+    while i < len(argv):
+        token = argv[i]
+        if (token in takes_value and i + 1 < len(argv) and argv[i + 1].startswith("-")
+                and _is_float(argv[i + 1])):
+            out.append(f"{token}={argv[i + 1]}")
+            i += 2
+            continue
+        if token == "--":  # everything after it is positional already
+            out.extend(argv[i:])
+            break
+        out.append(token)
+        i += 1
+    return out
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     try:
-        args = build_parser().parse_args(argv)
+        parser = build_parser()
+        args = parser.parse_args(_negative_values_attached(parser, sys.argv[1:] if argv is None else list(argv)))
         with _terminate_cleanly():
             return int(args._run(args))
     except ConstructError as exc:

@@ -96,8 +96,14 @@ def tangential_pressure_table(*, rod_ratio: float, parts: int = 18, method: str 
 
 def flywheel_coefficients_table(*, kz: Sequence[float] | None = None, v: Sequence[float] | None = None) -> Table:
     """Baumann's two flywheel tables (seed 004) for his paired kz and v, or the ones given."""
+    from .constructions import bounded
+    from .constructions.domain import FLYWHEEL_KZ, RIM_SPEED
     from .flywheel import coefficient_rows
 
+    for value in kz or ():
+        bounded("kz", value, FLYWHEEL_KZ)
+    for value in v or ():
+        bounded("v", value, RIM_SPEED)
     return ("kz", "v", "arms_hub", "total_weight", "moment", "weight_for_moment"), coefficient_rows(kz, v)
 
 

@@ -30,7 +30,10 @@ def add_construction_options(p: argparse.ArgumentParser, *, name_optional: bool 
     p.add_argument("name", nargs="?" if name_optional else None, metavar="CONSTRUCTION",
                    help="crank, crank-angle, inertia-curve (see 'construct list')")
     p.add_argument("--protocol", metavar="FILE", help="replay an exported protocol.json instead of building afresh")
-    p.add_argument("--rod-ratio", type=_number, metavar="K", help="connecting rod length over crank radius, L/r > 1")
+    from ..constructions.domain import ROD_RATIO
+
+    p.add_argument("--rod-ratio", type=_number, metavar="K", help=f"connecting rod length over crank radius, "
+                   f"{ROD_RATIO.low:g} <= L/r <= {ROD_RATIO.high:g}")
     p.add_argument("--parts", type=_whole, metavar="N", help="parts of the semicircle (1..3600)")
     p.add_argument("--method", metavar="M", help="division method: auto, exact, durer, neusis, dividers")
     p.add_argument("--divisions", type=_whole, metavar="M", help="divisions of the stroke (crank-angle)")
@@ -134,6 +137,8 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Construction | None, Fig
                 raise InvalidParameter(f"the protocol {proto.construction!r} has no given {key!r}; "
                                        f"it has {', '.join(sorted(givens)) or 'none'}")
             givens[key] = value
+        if c is not None:  # a book construction's givens keep its stated domain, whatever they are called
+            c.validate(givens)
         return c, Figure(proto, proto.replay(givens))
     if named:
         raise InvalidParameter("--given sets the givens of a --protocol; a named construction takes its own options")

@@ -8,6 +8,7 @@ import math
 import sys
 
 from ..errors import InvalidParameter
+from ..kernel.division import MAX_PARTS
 from ..tables import TABLES
 from ._common import _number, _whole
 
@@ -41,6 +42,21 @@ def _one_ratio(args) -> float:
     return args.rod_ratio[0]
 
 
+def _check_step(step: float, span: int) -> None:
+    """--step must divide *span* degrees, and the semicircle's 180/step parts are at most MAX_PARTS.
+
+    Said in terms of --step: the construction underneath speaks of "parts", which the user did not give.
+    """
+    if not (math.isfinite(step) and 0 < step <= span):
+        raise InvalidParameter(f"--step must be between 0 and {span} degrees, got {step!r}")
+    n = round(180.0 / step)
+    if n > MAX_PARTS:
+        raise InvalidParameter(f"--step must be at least {180 / MAX_PARTS:g} degrees (the table is read off a "
+                               f"semicircle divided into 180/step parts, at most {MAX_PARTS}), got {step!r}")
+    if abs(n * step - 180.0) > 1e-9 or (span == 90 and n % 2):
+        raise InvalidParameter(f"--step must divide {span} degrees (e.g. {span / 9:g}, {span / 18:g}), got {step!r}")
+
+
 def run(args) -> int:
     if args.table not in TABLES:
         raise InvalidParameter(f"unknown table {args.table!r}; choose one of {', '.join(TABLES)}")
@@ -51,8 +67,7 @@ def run(args) -> int:
     elif args.table == "acceleration":
         if not args.rod_ratio:
             raise InvalidParameter("table acceleration needs at least one --rod-ratio K")
-        if not (math.isfinite(args.step) and 0 < args.step <= 180):
-            raise InvalidParameter(f"--step must be between 0 and 180 degrees, got {args.step!r}")
+        _check_step(args.step, 180)
         cols, rows = TABLES[args.table](rod_ratios=args.rod_ratio, step=args.step)
     elif args.table == "mass-forces":
         missing = [f"--{k}" for k in ("weight", "rpm", "crank-radius", "rod-length")
@@ -68,8 +83,7 @@ def run(args) -> int:
     elif args.table == "speed-fluctuation":
         if args.infinite_rod and args.rod_ratio:
             raise InvalidParameter("give either --rod-ratio K or --infinite-rod, not both")
-        if not (math.isfinite(args.step) and 0 < args.step <= 90):
-            raise InvalidParameter(f"--step must be between 0 and 90 degrees, got {args.step!r}")
+        _check_step(args.step, 90)
         cols, rows = TABLES[args.table](rod_ratio=None if args.infinite_rod else _one_ratio(args), step=args.step)
     else:
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args))

@@ -15,14 +15,17 @@ import math
 
 import numpy as np
 from dataclasses import dataclass, field
-from typing import Any, Callable, Mapping
+from typing import TYPE_CHECKING, Any, Callable, Mapping
 
 from ..checks import Check
 from ..errors import InvalidParameter, ProtocolFormatError, UnknownConstruction
 from ..kernel.figure import Figure
 from ..kernel.protocol import Caption, Protocol
 
-__all__ = ["Figure", "Construction", "register", "get", "find", "names", "positive", "rod_ratio_param"]
+if TYPE_CHECKING:  # the module itself is imported where it is used: 'import construct' loads no construction
+    from .domain import Domain
+
+__all__ = ["Figure", "Construction", "register", "get", "find", "names", "positive", "bounded", "rod_ratio_param"]
 
 
 @dataclass(frozen=True)
@@ -59,6 +62,10 @@ class Construction:
         if "rod_ratio" not in givens:
             return None
         return {**givens, "rod_ratio": np.asarray(ratios, dtype=float)}
+
+    def validate(self, givens: Mapping[str, Any]) -> None:
+        """Raise InvalidParameter if a set of givens (a protocol's, by their own names) lies outside the domain."""
+        _validate_givens(self.name, givens)
 
     def replay(self, protocol: Protocol, **givens: Any) -> Figure:
         """Replay an existing protocol with new givens (only those that keep the steps)."""
@@ -143,9 +150,20 @@ def positive(name: str, value: Any) -> Any:
     return v
 
 
+def bounded(name: str, value: Any, domain: Domain) -> Any:
+    """A finite, positive number (or array) inside *domain* (construct.constructions.domain), or an error naming it."""
+    return domain.check(name, positive(name, value))
+
+
 def rod_ratio_param(value: Any) -> Any:
-    """L/r: the connecting rod must be longer than the crank (every value of a sweep)."""
-    v = positive("rod ratio L/r", value)
-    if np.any(np.asarray(v) <= 1.0):
-        raise InvalidParameter(f"rod ratio L/r must be greater than 1 (the rod must be longer than the crank), got {value!r}")
-    return v
+    """L/r: the connecting rod must be longer than the crank (every value of a sweep), L/r in the stated domain."""
+    try:
+        v = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise InvalidParameter(f"rod ratio L/r must be a number, got {value!r}") from None
+    if v.size and np.all(np.isfinite(v)) and np.any(v <= 1.0):
+        raise InvalidParameter(f"rod ratio L/r must be greater than 1 (the rod must be longer than the crank), "
+                               f"got {value!r}")
+    from .domain import ROD_RATIO
+
+    return bounded("rod ratio L/r", value, ROD_RATIO)

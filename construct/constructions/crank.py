@@ -30,7 +30,8 @@ from ..errors import InvalidParameter
 from ..kernel.division import TRIAL_TOLERANCE, check_parts, divide_semicircle
 from ..kernel.instruments import Builder
 from ..kernel.protocol import Caption
-from . import Construction, Figure, positive, register, rod_ratio_param
+from . import Construction, Figure, bounded, register, rod_ratio_param
+from .domain import DRAWN_LENGTH
 
 __all__ = ["CRANK", "CRANK_ANGLE", "piston_fraction", "crank_angle", "build_frame"]
 
@@ -59,7 +60,7 @@ def build_frame(b: Builder, *, result_circle: bool = True, radius: tuple[str, ..
 
 
 def _givens(r: Any, rod_ratio: Any) -> dict[str, float]:
-    return {"r": positive("crank radius r", r), "rod_ratio": rod_ratio_param(rod_ratio)}
+    return {"r": bounded("crank radius r", r, DRAWN_LENGTH), "rod_ratio": rod_ratio_param(rod_ratio)}
 
 
 def _validate(givens: Mapping[str, float]) -> None:

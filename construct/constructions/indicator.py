@@ -44,7 +44,8 @@ from ..checks import EUCLIDEAN_TOLERANCE, Check
 from ..errors import InvalidParameter
 from ..kernel.instruments import Builder
 from ..kernel.protocol import Caption
-from . import Construction, Figure, positive, register
+from . import Construction, Figure, bounded, positive, register
+from .domain import CLEARANCE, DRAWN_LENGTH, PRESSURE, STROKE_FRACTION
 
 __all__ = ["INDICATOR", "IndicatorDiagram", "indicator_frame", "pressures_at", "hyperbola_point", "square",
            "indicator_givens", "BAUMANN", "abscissa", "pressure", "steam_pressure", "back_pressure"]
@@ -59,15 +60,18 @@ def indicator_givens(filling: Any, clearance: Any, admission: Any, back_pressure
                      pressure_unit: Any) -> dict[str, float]:
     """The diagram's givens, checked: fractions of the stroke in (0, 1), pressures positive."""
     out = {"filling": positive("filling s1/s", filling), "clearance": positive("clearance s0/s", clearance),
-           "admission": positive("admission pressure P (at)", admission),
-           "back_pressure": positive("back pressure P0 (at)", back_pressure),
+           "admission": bounded("admission pressure P (at)", admission, PRESSURE),
+           "back_pressure": bounded("back pressure P0 (at)", back_pressure, PRESSURE),
            "compression": positive("compression s3/s", compression),
-           "pressure_unit": positive("pressure-scale unit (drawn length of 1 at)", pressure_unit)}
+           "pressure_unit": bounded("pressure-scale unit (drawn length of 1 at)", pressure_unit, DRAWN_LENGTH)}
     for key, what in (("filling", "filling s1/s"), ("compression", "compression s3/s")):
         if out[key] >= 1.0:
             raise InvalidParameter(f"{what} must be less than 1 (a fraction of the stroke), got {out[key]!r}")
     if out["clearance"] > 1.0:
         raise InvalidParameter(f"clearance s0/s must be at most 1, got {out['clearance']!r}")
+    STROKE_FRACTION.check("filling s1/s", out["filling"])
+    STROKE_FRACTION.check("compression s3/s", out["compression"])
+    CLEARANCE.check("clearance s0/s", out["clearance"])
     return out
 
 
@@ -298,7 +302,7 @@ PLATE = (r"base", r"A", r"B", r"Z[01]", r"A0|B0|A1|C2|S1|S2", r"T\d+", r"adm|bac
 
 def build_indicator(*, r: float, filling: float, clearance: float, admission: float, back_pressure: float,
                     compression: float, pressure_unit: float, divisions: int) -> Figure:
-    givens = {"r": positive("stroke half r (drawing units)", r),
+    givens = {"r": bounded("stroke half r (drawing units)", r, DRAWN_LENGTH),
               **indicator_givens(filling, clearance, admission, back_pressure, compression, pressure_unit)}
     if isinstance(divisions, bool) or not isinstance(divisions, int) or not 2 <= divisions <= 200:
         raise InvalidParameter(f"divisions of the stroke must be a whole number from 2 to 200, got {divisions!r}")
@@ -455,7 +459,7 @@ OPTION_HELP = {
 
 
 def _validate(givens: Mapping[str, float]) -> None:
-    positive("stroke half r (drawing units)", givens["r"])
+    bounded("stroke half r (drawing units)", givens["r"], DRAWN_LENGTH)
     indicator_givens(givens["filling"], givens["clearance"], givens["admission"], givens["back_pressure"],
                      givens["compression"], givens["pressure_unit"])
 

@@ -58,7 +58,8 @@ from ..kernel.division import check_parts, divide_semicircle
 from ..kernel.instruments import Builder
 from ..kernel.proportional import fourth_proportional, scale_line, vertex_on
 from ..kernel.protocol import Caption
-from . import Construction, Figure, positive, register
+from . import Construction, Figure, bounded, register
+from .domain import DRAWING_SCALE, DRAWN_MASS_FORCE, FORCE_UNIT, LENGTH_M, PISTON_AREA, ROD_RATIO, RPM, WEIGHT
 from .crank import angle_tolerance, build_frame, crank_angle, point_name, rod_arcs
 from .indicator import back_pressure as model_back
 from .indicator import indicator_frame, indicator_givens, pressures_at, square
@@ -101,15 +102,18 @@ def mass_force_scale(g: Mapping[str, float]) -> float:
 def _givens(*, weight: Any, rpm: Any, crank_radius: Any, rod_length: Any, piston_area: Any, filling: Any,
             clearance: Any, admission: Any, back_pressure: Any, compression: Any, scale: Any,
             force_unit: Any) -> dict[str, float]:
-    out = {"weight": positive("weight G of the reciprocating parts (kg)", weight),
-           "rpm": positive("revolutions per minute n", rpm),
-           "crank_radius": positive("crank radius R (m)", crank_radius),
-           "rod_length": positive("connecting-rod length L (m)", rod_length),
-           "piston_area": positive("piston area F (cm^2)", piston_area),
-           "scale": positive("drawing scale (drawn length per metre)", scale),
-           "force_unit": positive("force scale (drawn length per kg)", force_unit)}
+    out = {"weight": bounded("weight G of the reciprocating parts (kg)", weight, WEIGHT),
+           "rpm": bounded("revolutions per minute n", rpm, RPM),
+           "crank_radius": bounded("crank radius R (m)", crank_radius, LENGTH_M),
+           "rod_length": bounded("connecting-rod length L (m)", rod_length, LENGTH_M),
+           "piston_area": bounded("piston area F (cm^2)", piston_area, PISTON_AREA),
+           "scale": bounded("drawing scale (drawn length per metre)", scale, DRAWING_SCALE),
+           "force_unit": bounded("force scale (drawn length per kg)", force_unit, FORCE_UNIT)}
     if out["rod_length"] <= out["crank_radius"]:
         raise InvalidParameter(f"rod length L = {rod_length!r} m must exceed the crank radius R = {crank_radius!r} m")
+    ROD_RATIO.check("rod ratio L/R (rod length over crank radius)", out["rod_length"] / out["crank_radius"])
+    DRAWN_MASS_FORCE.check("drawn mass force over drawn crank radius ((G/g) omega^2 R force_unit / (R scale))",
+                           mass_force_scale(out) * out["force_unit"] / (out["crank_radius"] * out["scale"]))
     # the indicator diagram's pressure unit is F * force_unit: checked there as a product of positives
     out.update(indicator_givens(filling, clearance, admission, back_pressure, compression, 1.0))
     del out["pressure_unit"]

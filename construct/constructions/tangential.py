@@ -54,7 +54,8 @@ from ..errors import InvalidParameter
 from ..kernel.division import check_parts, divide_semicircle
 from ..kernel.instruments import Builder
 from ..kernel.protocol import Caption, Provenance
-from . import Construction, Figure, positive, register, rod_ratio_param
+from . import Construction, Figure, bounded, positive, register, rod_ratio_param
+from .domain import DRAWN_LENGTH, KAPPA_RANGE
 from .crank import angle_tolerance, build_frame, crank_angle, point_name, rod_arcs
 from .indicator import BAUMANN, indicator_frame, indicator_givens, pressures_at
 from .indicator import back_pressure as model_back_pressure
@@ -75,19 +76,19 @@ PLATE = (r"tbase", r"U\d+", r"u\d+", r"T\d+", r"tcurve", r"M0|Mn", r"mean", r"A1
 
 
 def _givens(r: Any, rod_ratio: Any, force: str, kappa: Any, pressure_unit: Any, **diagram: Any) -> dict[str, float]:
-    g = {"r": positive("crank radius r", r), "rod_ratio": rod_ratio_param(rod_ratio)}
+    g = {"r": bounded("crank radius r", r, DRAWN_LENGTH), "rod_ratio": rod_ratio_param(rod_ratio)}
     if force == "unit":
         return g
     d = indicator_givens(diagram["filling"], diagram["clearance"], diagram["admission"], diagram["back_pressure"],
                          diagram["compression"], pressure_unit)
-    k = positive("kappa = P/B_max", kappa)
+    k = bounded("kappa = P/B_max", kappa, KAPPA_RANGE)
     # c v^2/r (at): the inertia ordinate's factor, so that B_max = (1 + r/L) c v^2/r = P/kappa.
     g.update(d, pressure_ratio=d["admission"] / (k * (1.0 + 1.0 / g["rod_ratio"])))
     return g
 
 
 def _validate(givens: Mapping[str, float]) -> None:
-    positive("crank radius r", givens["r"])
+    bounded("crank radius r", givens["r"], DRAWN_LENGTH)
     rod_ratio_param(givens["rod_ratio"])
     if "admission" in givens:
         indicator_givens(givens["filling"], givens["clearance"], givens["admission"], givens["back_pressure"],

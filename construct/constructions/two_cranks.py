@@ -55,12 +55,13 @@ import numpy as np
 
 from ..checks import EUCLIDEAN_TOLERANCE, Check
 from ..errors import InvalidParameter
-from ..kernel.division import check_parts, divide_semicircle
+from ..kernel.division import MAX_PARTS, check_parts, divide_semicircle
 from ..kernel.geometry import Point
 from ..kernel.instruments import Builder
 from ..kernel.proportional import ProportionalAngle, carry_across, fourth_proportional, scale_line
 from ..kernel.protocol import Caption, Provenance
-from . import Construction, Figure, positive, register, rod_ratio_param
+from . import Construction, Figure, bounded, positive, register, rod_ratio_param
+from .domain import DRAWN_LENGTH, FLUCTUATION, SPEED_GAIN
 from .crank import angle_tolerance, build_frame, rod_arcs
 
 __all__ = [
@@ -225,9 +226,11 @@ class _Part:
 
 
 def _givens(r: Any, rod_ratio: Any, fluctuation: Any, magnify: Any) -> dict[str, float]:
-    return {"r": positive("crank radius r", r), "rod_ratio": rod_ratio_param(rod_ratio),
-            "fluctuation": positive("fluctuation Qr/((m1+m2) v1^2)", fluctuation),
-            "magnify": positive("magnification of the speed deviations", magnify)}
+    g = {"r": bounded("crank radius r", r, DRAWN_LENGTH), "rod_ratio": rod_ratio_param(rod_ratio),
+         "fluctuation": bounded("fluctuation Qr/((m1+m2) v1^2)", fluctuation, FLUCTUATION),
+         "magnify": positive("magnification of the speed deviations", magnify)}
+    SPEED_GAIN.check("magnify x fluctuation", g["magnify"] * g["fluctuation"])
+    return g
 
 
 def _validate(givens: Mapping[str, float]) -> None:
@@ -502,7 +505,8 @@ def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method
                      fluctuation: float, magnify: float) -> Figure:
     infinite_rod = bool(infinite_rod)
     if magnify is None:
-        magnify = auto_magnification(rod_ratio_param(rod_ratio), positive("fluctuation", fluctuation))
+        magnify = auto_magnification(rod_ratio_param(rod_ratio),
+                                     bounded("fluctuation Qr/((m1+m2) v1^2)", fluctuation, FLUCTUATION))
     givens = _givens(r, rod_ratio, fluctuation, magnify)
     _validate(givens)
     used = _check_parts(parts, method)
@@ -777,6 +781,9 @@ def speed_fluctuation_rows(*, rod_ratio: float | None, step_deg: float = 15.0) -
     """
     step = positive("angle step", step_deg)
     n = round(180.0 / step)
+    if n > MAX_PARTS:  # said before the construction would complain of "parts" the caller did not give
+        raise InvalidParameter(f"the angle step must be at least {180 / MAX_PARTS:g} degrees (180/step parts of "
+                               f"the semicircle, at most {MAX_PARTS}), got {step_deg!r}")
     if n < 2 or n % 2 or abs(n * step - 180.0) > 1e-9:
         raise InvalidParameter(f"the angle step must divide 90 degrees, got {step_deg!r}")
     if rod_ratio is None:

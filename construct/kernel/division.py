@@ -27,7 +27,8 @@ from .errors import InvalidParameter
 from .instruments import Builder
 from .protocol import Provenance
 
-__all__ = ["METHODS", "MAX_PARTS", "choose_method", "exact_supported", "divide_semicircle", "durer_error_bound"]
+__all__ = ["METHODS", "MAX_PARTS", "choose_method", "exact_supported", "accepts", "methods_for", "divide_semicircle",
+           "durer_error_bound"]
 
 METHODS = ("auto", "exact", "durer", "neusis", "dividers")
 MAX_PARTS = 3600
@@ -69,6 +70,33 @@ def choose_method(n: int) -> str:
     return "dividers"
 
 
+def accepts(method: str, n: int) -> bool:
+    """Can *method* divide the semicircle into n parts?  The one predicate check_parts and its advice share.
+
+    >>> [m for m in METHODS if accepts(m, 7)], [m for m in METHODS if accepts(m, 9)]
+    (['auto', 'dividers'], ['auto', 'durer', 'neusis', 'dividers'])
+    """
+    if method == "exact":
+        return exact_supported(n)
+    if method in ("durer", "neusis"):  # Dürer and Archimedes trisect the arcs of an exact frame of n/3 parts
+        return n % 3 == 0 and exact_supported(n // 3)
+    return method in ("auto", "dividers")
+
+
+def methods_for(n: int) -> list[str]:
+    """The methods that accept n parts, besides auto (what an error message may recommend).
+
+    >>> methods_for(7), methods_for(18), methods_for(17)
+    (['dividers'], ['durer', 'neusis', 'dividers'], ['dividers'])
+    """
+    return [m for m in METHODS if m != "auto" and accepts(m, n)]
+
+
+def _advice(n: int, rejected: str) -> str:
+    others = [m for m in methods_for(n) if m != rejected]
+    return "use --method " + (" or ".join([", ".join(others[:-1]), others[-1]]) if len(others) > 1 else others[0])
+
+
 def check_parts(n: Any, method: str) -> str:
     """Validate n and the method; return the method actually used."""
     if isinstance(n, bool) or not isinstance(n, int):
@@ -79,17 +107,17 @@ def check_parts(n: Any, method: str) -> str:
         raise InvalidParameter(f"unknown division method {method!r}; choose one of {', '.join(METHODS)}")
     if method == "auto":
         return choose_method(n)
-    if method == "exact" and not exact_supported(n):
+    if accepts(method, n):
+        return method
+    if method == "exact":
         if euclidean_constructible(n):
             raise InvalidParameter(
                 f"{n} parts are constructible (Gauss) but this library constructs exactly only "
-                f"n = 2^k * (1, 3, 5 or 15); use --method dividers")
+                f"n = 2^k * (1, 3, 5 or 15); {_advice(n, method)}")
         raise InvalidParameter(f"{n} parts have no compass-and-straightedge construction "
-                               f"(180/{n} degrees is not constructible); use --method durer, neusis or dividers")
-    if method in ("durer", "neusis") and not (n % 3 == 0 and exact_supported(n // 3)):
-        raise InvalidParameter(f"--method {method} trisects an exact frame of n/3 arcs; {n} parts need n/3 "
-                               f"= 2^k * (1, 3, 5 or 15)")
-    return method
+                               f"(180/{n} degrees is not constructible); {_advice(n, method)}")
+    raise InvalidParameter(f"--method {method} trisects an exact frame of n/3 arcs; {n} parts need n/3 "
+                           f"= 2^k * (1, 3, 5 or 15); {_advice(n, method)}")
 
 
 def durer_error_bound(arc: float) -> float:

@@ -12,7 +12,8 @@ from typing import Any, Mapping
 from ...kernel.division import check_parts, divide_semicircle
 from ...kernel.instruments import Builder
 from ...kernel.proportional import ProportionalAngle, Scale, carry_across, scale_line, vertex_on
-from .. import Figure, positive, rod_ratio_param
+from .. import Figure, bounded, rod_ratio_param
+from ..domain import DRAWN_LENGTH, DRAWN_M, DRAWN_PRESSURE_RATIO, PRESSURE_RATIO
 from ..crank import build_frame, rod_arcs
 
 __all__ = ["build_inertia", "PLATE"]
@@ -40,9 +41,15 @@ class _Ctx:
 
 
 def _givens(r: Any, rod_ratio: Any, pressure_ratio: Any, pressure_unit: Any) -> dict[str, float]:
-    return {"r": positive("crank radius r", r), "rod_ratio": rod_ratio_param(rod_ratio),
-            "pressure_ratio": positive("pressure ratio F/f", pressure_ratio),
-            "pressure_unit": positive("pressure-scale unit (drawn length of 1 kg/cm2)", pressure_unit)}
+    g = {"r": bounded("crank radius r", r, DRAWN_LENGTH), "rod_ratio": rod_ratio_param(rod_ratio),
+         "pressure_ratio": bounded("pressure ratio F/f", pressure_ratio, PRESSURE_RATIO),
+         "pressure_unit": bounded("pressure-scale unit (drawn length of 1 kg/cm2)", pressure_unit, DRAWN_LENGTH)}
+    DRAWN_PRESSURE_RATIO.check("drawn F/f over r (pressure_ratio x pressure_unit / r)",
+                               g["pressure_ratio"] * g["pressure_unit"] / g["r"])
+    ff, r = g["pressure_ratio"] * g["pressure_unit"], g["r"]
+    DRAWN_M.check("q5's offset from the infinite-rod line over its length (m r / (2 (r^2 + (F/f)^2)), "
+                  "m = F/f / rod_ratio)", ff / g["rod_ratio"] * r / (2.0 * (r * r + ff * ff)))
+    return g
 
 
 def _validate(givens: Mapping[str, float]) -> None:

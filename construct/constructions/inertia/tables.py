@@ -6,6 +6,7 @@ import math
 from typing import Any
 
 from ...errors import InvalidParameter
+from ...kernel.division import MAX_PARTS
 from .. import Figure, positive
 from ..crank import crank_angle, point_name
 from .measure import _offset, abscissa, ordinate
@@ -43,6 +44,9 @@ def acceleration_rows(rod_ratio: float, step_deg: float = 10.0) -> list[dict[str
     """
     step = positive("angle step", step_deg)
     n = round(180.0 / step)
+    if n > MAX_PARTS:  # said before the construction would complain of "parts" the caller did not give
+        raise InvalidParameter(f"the angle step must be at least {180 / MAX_PARTS:g} degrees (180/step parts of "
+                               f"the semicircle, at most {MAX_PARTS}), got {step_deg!r}")
     if n < 1 or abs(n * step - 180.0) > 1e-9:
         raise InvalidParameter(f"the angle step must divide 180 degrees, got {step_deg!r}")
     fig = _table_figure(rod_ratio, n)

@@ -83,7 +83,17 @@ def _one_transform(name: str, v: list[float], where: str) -> Matrix:
 
 
 def _ellipse_axes(m: Matrix, rx: float, ry: float, phi_deg: float) -> tuple[float, float, float]:
-    """Radii and axis angle (degrees, in [0, 180)) of an ellipse after the linear part of *m*."""
+    """Radii and axis angle (degrees, in [0, 180)) of an ellipse after the linear part of *m*.
+
+    >>> _ellipse_axes((2.0, 0.0, 0.0, -3.0, 5.0, 7.0), 1.5, 1.0, 0.0), _ellipse_axes((0.0, 1.0, -1.0, 0.0, 0, 0), 2.0, 1.0, 0.0)
+    ((3.0, 3.0, 0.0), (2.0, 1.0, 90.0))
+    """
+    if m[1] == 0.0 and m[2] == 0.0 and phi_deg == 0.0:
+        # No rotation or skew (most drawings): the axes are the scaled radii, as the SVD finds them
+        # bit for bit; one numpy call per circle was most of the time a large drawing took to read.
+        sx, sy = abs(m[0] * rx), abs(m[3] * ry)
+        if math.isfinite(sx) and math.isfinite(sy):
+            return (sx, sy, 0.0) if sx >= sy else (sy, sx, 90.0)
     import numpy as np
 
     t = math.radians(phi_deg)

@@ -89,8 +89,11 @@ def _is_svg(elem: ET.Element) -> bool:
 
 def _attrs(elem: ET.Element) -> dict[str, str]:
     """Attributes by local name: SVG's own and ``xlink:href``; other namespaces (editors') dropped."""
+    attrib = elem.attrib
+    if not any(name[:1] == "{" for name in attrib):
+        return dict(attrib)  # no namespaced names (nearly every element): all are SVG's own
     out: dict[str, str] = {}
-    for name, value in elem.attrib.items():
+    for name, value in attrib.items():
         ns, local = _local(name)
         if ns is None or (ns == XLINK_NS and local == "href"):
             if (local == "href" and ns is None) or local not in out:  # plain href wins over xlink:href
@@ -150,6 +153,16 @@ class _Parser:
         self.rules.sort(key=lambda r: r.specificity)
         self.shapes: list[Shape] = []
         self.used_keys: set[str] = set()
+        self._last: tuple[ET.Element | None, dict[str, str]] = (None, {})
+        self._styles: dict[tuple, tuple[tuple[str, Any], ...]] = {}
+
+    def _attrs(self, elem: ET.Element) -> dict[str, str]:
+        """:func:`_attrs` of *elem*, read once for the several looks the walk takes at one element."""
+        last, attrs = self._last
+        if last is not elem:
+            attrs = _attrs(elem)
+            self._last = (elem, attrs)
+        return attrs
 
     # -- document ---------------------------------------------------------------------------
 
@@ -213,7 +226,7 @@ class _Parser:
     # -- styles -----------------------------------------------------------------------------
 
     def _own_style(self, elem: ET.Element, tag: str) -> dict[str, str]:
-        attrs = _attrs(elem)
+        attrs = self._attrs(elem)
         own = {k: v for k, v in attrs.items() if k in _PRESENTATION}
         classes = set(attrs.get("class", "").split())
         for rule in self.rules:
@@ -223,7 +236,7 @@ class _Parser:
         return own
 
     def _own_state(self, elem: ET.Element, parent: _State, tag: str, extra: Matrix = IDENTITY) -> _State:
-        attrs = _attrs(elem)
+        attrs = self._attrs(elem)
         ctm = parent.ctm
         if "transform" in attrs:
             ctm = _mul(ctm, parse_transform(attrs["transform"], f"{self.name}: <{tag}> transform"))
@@ -261,6 +274,15 @@ class _Parser:
         return f"{outer} {inner}"
 
     def _effective_style(self, state: _State) -> tuple[tuple[str, Any], ...]:
+        # Most elements of a drawing look alike: each look is worked out once and shared by them
+        # (the time and the memory of a drawing of a million elements).
+        key = (tuple(sorted(state.style.items())), _scale(state.ctm))
+        got = self._styles.get(key)
+        if got is None:
+            got = self._styles[key] = self._work_out_style(state)
+        return got
+
+    def _work_out_style(self, state: _State) -> tuple[tuple[str, Any], ...]:
         raw = state.style
         colour = normalise_colour(raw["color"]) if "color" in raw else "#000000"
         scale = _scale(state.ctm)
@@ -278,7 +300,7 @@ class _Parser:
     # -- walking ----------------------------------------------------------------------------
 
     def _key(self, elem: ET.Element, tag: str, prefix: str, counters: dict[str, int]) -> tuple[str, bool]:
-        i = _attrs(elem).get("id")
+        i = self._attrs(elem).get("id")
         if i is not None:
             key, has_id = prefix + i, True
         else:
@@ -303,7 +325,7 @@ class _Parser:
             return
         if depth > 64:
             raise SvgFormatError(f"{self.name}: <use> nesting deeper than 64 (a reference cycle?)")
-        attrs = _attrs(elem)
+        attrs = self._attrs(elem)
         if tag == "svg":  # a nested viewport
             vp = self._nested_viewport(attrs, parent)
             state = self._own_state(elem, parent, tag, vp)
@@ -408,7 +430,7 @@ class _Parser:
             more_a, more_d = self._decorations(extra_source)
             animations, described = tuple(sorted(animations + more_a, key=_show)), described + more_d
         style = self._effective_style(state)
-        classes = " ".join(sorted(set(_attrs(elem).get("class", "").split())))
+        classes = " ".join(sorted(set(self._attrs(elem).get("class", "").split())))
         if classes:  # our renderer writes the instrument and provenance as classes
             style = tuple(sorted(style + (("class", classes),)))
         self.shapes.append(Shape(key=key, tag=tag, style=style, animations=animations,

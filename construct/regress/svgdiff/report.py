@@ -87,7 +87,11 @@ def diff_svg(a: str | Path | bytes, b: str | Path | bytes, tolerance: float = DE
         raise InvalidParameter(f"diff_svg: tolerance must be a finite number >= 0, got {tolerance!r}")
     tol = float(tolerance)
     da, db = parse_svg(a), parse_svg(b)
-    name_a, name_b = _label(a), _label(b)
+    return _diff_drawings(da, db, tol, _label(a), _label(b))
+
+
+def _diff_drawings(da: Drawing, db: Drawing, tol: float, name_a: str, name_b: str) -> SvgDiff:
+    """The diff of two parsed drawings (what :func:`diff_svg` does after reading them)."""
     changes = _document_changes(da, db, tol) + _definition_changes(da, db, tol)
     pairs = _match(da.shapes, db.shapes, tol, max(_extent(da), _extent(db)))
     by_a = {id(sa): (sb, how) for sa, sb, how in pairs}

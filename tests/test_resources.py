@@ -13,6 +13,7 @@ import os
 import random
 import re
 import textwrap
+from collections import Counter
 
 import pytest
 from hypothesis import given, settings
@@ -214,3 +215,151 @@ def test_captions_of_many_short_words_are_wrapped_and_cut():
     lines = re.findall(r'<text[^>]*class="cap de"[^>]*>([^<]*)<', svg)
     assert 2 <= len(lines) <= 5 and lines[-1].endswith("…")
     assert len(svg) < 20_000
+
+
+# -- the SVG diff: matching in near-linear time, the same meaning -------------------------------
+
+from construct.regress.svgdiff import diff_svg, parse_svg  # noqa: E402
+from construct.regress.svgdiff import match as svgmatch  # noqa: E402
+
+_HEAD = '<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 1000 1000">'
+
+
+def _svg(elements) -> str:
+    return _HEAD + "".join(elements) + "</svg>"
+
+
+def _circle(x, y, r=1.5, ident=None) -> str:
+    return f'<circle{f" id={chr(34)}{ident}{chr(34)}" if ident else ""} cx="{x}" cy="{y}" r="{r}" class="pt"/>'
+
+
+N = 3000  # anonymous elements enough that their alignment is past difflib's area (3000 x 3000 > 1 M pairs)
+
+
+def test_one_moved_among_many_identical_circles_is_reported_once():
+    same = [_circle(500, 500)] * N
+    moved = list(same)
+    moved[1234] = _circle(503, 500)
+    d = diff_svg(_svg(same), _svg(moved))
+    assert [(c.kind, c.key, c.matched_by) for c in d.changes] == [("moved", "circle[1234]", "key")]
+
+
+def test_one_moved_among_circles_that_look_alike_but_for_their_place():
+    a = [_circle(i % 97 * 10, i // 97 * 10) for i in range(N)]
+    b = list(a)
+    b[2000] = _circle(2000 % 97 * 10 + 0.5, 2000 // 97 * 10)
+    d = diff_svg(_svg(a), _svg(b))
+    assert [(c.kind, c.key) for c in d.changes] == [("moved", "circle[2000]")]
+    assert d.changes[0].magnitude == pytest.approx(0.5)
+
+
+def test_an_element_inserted_or_removed_among_duplicates_is_one_change():
+    a = [_circle(500, 500)] * N
+    inserted = a[:1500] + [_circle(500, 500)] + a[1500:]
+    assert [c.kind for c in diff_svg(_svg(a), _svg(inserted)).changes] == ["extra"]
+    assert [c.kind for c in diff_svg(_svg(inserted), _svg(a)).changes] == ["missing"]
+    other = a[:700] + [_circle(10, 10, r=3)] + a[700:]  # a different one: extra, the duplicates all paired
+    assert [(c.kind, c.key) for c in diff_svg(_svg(a), _svg(other)).changes] == [("extra", "circle[700]")]
+
+
+def test_elements_within_the_tolerance_match():
+    a = [_circle(i % 50 * 20, i // 50 * 20) for i in range(N)]
+    b = [_circle(i % 50 * 20 + 0.004, i // 50 * 20 - 0.004) for i in range(N)]
+    assert diff_svg(_svg(a), _svg(b), tolerance=0.01).equal
+    b[5] = _circle(5 * 20 + 0.02, 0)
+    d = diff_svg(_svg(a), _svg(b), tolerance=0.01)
+    assert [(c.kind, c.key) for c in d.changes] == [("moved", "circle[5]")]
+    assert not diff_svg(_svg(a), _svg(b)).equal  # the default tolerance, 1e-6, sees every one
+
+
+def test_renamed_elements_are_paired_by_geometry_with_a_grid_not_all_pairs(monkeypatch):
+    # Every element renamed and moved a little: nothing pairs by id, all by nearest geometry.
+    # Before, 3000 x 3000 leftovers were more than the all-pairs search took (4 M): 6000 missing + extra.
+    a = [_circle(i % 60 * 16, i // 60 * 16, ident=f"a{i}") for i in range(N)]
+    b = [_circle(i % 60 * 16 + 0.3, i // 60 * 16, ident=f"b{i}") for i in range(N)]
+    calls = 0
+    distance = svgmatch._distance
+
+    def counted(x, y):
+        nonlocal calls
+        calls += 1
+        return distance(x, y)
+
+    monkeypatch.setattr(svgmatch, "_distance", counted)
+    d = diff_svg(_svg(a), _svg(b))
+    kinds = Counter(c.kind for c in d.changes)
+    assert kinds == {"renamed": N, "moved": N}
+    assert all(c.matched_by == "geometry" and c.key[1:] == c.key_b[1:] for c in d.changes)
+    assert calls <= 40 * N  # each element against its neighbourhood, not against all 3000
+
+
+def test_a_dense_cluster_beyond_the_budget_is_left_unmatched_not_searched(monkeypatch):
+    a = [_circle(500, 500 + i * 1e-3, ident=f"a{i}") for i in range(200)]
+    b = [_circle(500, 500 + i * 1e-3, ident=f"b{i}") for i in range(200)]
+    monkeypatch.setattr(svgmatch, "MATCH_BUDGET", 1000)
+    d = diff_svg(_svg(a), _svg(b))
+    # 200 neighbours each: the first five elements spend the budget, the other 195 stay unmatched
+    assert Counter(c.kind for c in d.changes) == {"renamed": 5, "missing": 195, "extra": 195}
+    monkeypatch.setattr(svgmatch, "MATCH_BUDGET", 4_000_000)
+    assert Counter(c.kind for c in diff_svg(_svg(a), _svg(b)).changes) == {"renamed": 200}
+
+
+_COORD = st.one_of(st.floats(-30, 30, allow_nan=False), st.sampled_from([0.0, 1.0, 2.0, -1.0, 1e400, -1e400]))
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.tuples(st.sampled_from(["circle", "line", "rect"]), _COORD, _COORD, st.floats(0, 3)),
+                min_size=1, max_size=25),
+       st.lists(st.tuples(st.sampled_from(["circle", "line", "rect"]), _COORD, _COORD, st.floats(0, 3)),
+                min_size=1, max_size=25),
+       st.sampled_from([0.0, 0.5, 1.0, 2.5]))
+def test_the_grid_finds_every_pair_the_all_pairs_search_finds(xs, ys, limit):
+    def shapes(items):
+        out = []
+        for tag, x, y, s in items:
+            x, y = (("1e400" if v == 1e400 else "-1e400" if v == -1e400 else repr(v)) for v in (x, y))
+            if tag == "circle":
+                out.append(f'<circle cx="{x}" cy="{y}" r="{s}"/>')
+            elif tag == "line":
+                out.append(f'<line x1="{x}" y1="{y}" x2="{s}" y2="{y}"/>')
+            else:
+                out.append(f'<rect x="{x}" y="{y}" width="{s}" height="1"/>')
+        return parse_svg(_svg(out)).shapes
+
+    sa, sb = shapes(xs), shapes(ys)
+    every = sorted((d, i, j) for i, x in enumerate(sa) for j, y in enumerate(sb)
+                   if (d := svgmatch._distance(x, y)) <= limit)
+    assert sorted(svgmatch._near_pairs(sa, sb, limit, 10**9)) == every
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.integers(0, 5), max_size=60), st.lists(st.integers(0, 5), max_size=60), st.data())
+def test_the_alignment_pairs_equal_elements_in_order(fa, fb, data):
+    # a small difflib area: the ends, the unique anchors and the repeated stretches are all exercised
+    area = data.draw(st.sampled_from([0, 4, 30]))
+    old, svgmatch._DIFFLIB_AREA = svgmatch._DIFFLIB_AREA, area
+    try:
+        pairs = sorted(svgmatch._align(fa, fb))
+    finally:
+        svgmatch._DIFFLIB_AREA = old
+    assert all(fa[p] == fb[q] for p, q in pairs)
+    assert all(p1 < p2 and q1 < q2 for (p1, q1), (p2, q2) in zip(pairs, pairs[1:]))
+    if fb == fa[:3] + [9] + fa[3:]:  # one inserted: everything else paired
+        assert len(pairs) == len(fa)
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(st.integers(0, 8), max_size=40), st.lists(st.integers(0, 8), max_size=40))
+def test_small_sequences_align_as_difflib_aligns_them(fa, fb):
+    import difflib
+
+    blocks = difflib.SequenceMatcher(None, fa, fb, autojunk=False).get_matching_blocks()
+    assert svgmatch._align(fa, fb) == [(b.a + k, b.b + k) for b in blocks for k in range(b.size)]
+
+
+def test_the_diff_benchmark_drawings_differ_by_one_move():
+    from construct.regress.diffbench import synthetic_svg
+
+    for ids in (True, False):
+        d = diff_svg(synthetic_svg(400, ids=ids), synthetic_svg(400, moved=201, ids=ids))
+        assert [c.kind for c in d.changes] == ["moved"] and d.elements == (400, 400)

@@ -5,6 +5,7 @@ Part of :mod:`construct.regress.svgdiff`.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 import xml.etree.ElementTree as ET
@@ -73,7 +74,9 @@ _ANIMATIONS = {"animate", "set", "animateTransform", "animateMotion", "animateCo
 _CONTAINERS = {"g", "a", "switch", "svg"}
 
 
+@functools.lru_cache(maxsize=512)
 def _local(tag: Any) -> tuple[str | None, str]:
+    """(namespace, local name) of a tag; cached: a drawing repeats a few tags, read many times each."""
     if not isinstance(tag, str):
         return None, ""  # comments, processing instructions
     if tag.startswith("{"):
@@ -155,6 +158,7 @@ class _Parser:
         self.used_keys: set[str] = set()
         self._last: tuple[ET.Element | None, dict[str, str]] = (None, {})
         self._styles: dict[tuple, tuple[tuple[str, Any], ...]] = {}
+        self._classed: dict[tuple, tuple[tuple[str, Any], ...]] = {}
 
     def _attrs(self, elem: ET.Element) -> dict[str, str]:
         """:func:`_attrs` of *elem*, read once for the several looks the walk takes at one element."""
@@ -432,7 +436,11 @@ class _Parser:
         style = self._effective_style(state)
         classes = " ".join(sorted(set(self._attrs(elem).get("class", "").split())))
         if classes:  # our renderer writes the instrument and provenance as classes
-            style = tuple(sorted(style + (("class", classes),)))
+            key_style = (style, classes)
+            got = self._classed.get(key_style)
+            if got is None:  # one tuple per look and classes, shared by the elements that have them
+                got = self._classed[key_style] = tuple(sorted(style + (("class", classes),)))
+            style = got
         self.shapes.append(Shape(key=key, tag=tag, style=style, animations=animations,
                                  described=described, has_id=has_id, order=len(self.shapes), step=state.step,
                                  **geometry))

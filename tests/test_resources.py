@@ -22,7 +22,7 @@ from hypothesis import strategies as st
 import construct
 from construct import Builder
 from construct.render import captions
-from construct.render.captions import CAPTION_LIMIT, Reader, displayed
+from construct.render.captions import CAPTION_LIMIT, TITLE_LIMIT, Reader, displayed
 from construct.render.svg import wrap as wrap_px
 from construct.render.wrapping import shorten, wrap
 
@@ -52,6 +52,17 @@ GALLERY_TEXTS = _gallery_texts()
 def test_the_gallery_has_captions_to_compare():
     assert len(GALLERY_TEXTS) > 1000
     assert max(map(len, GALLERY_TEXTS)) < CAPTION_LIMIT / 4  # the limit leaves the books' captions whole
+
+
+def test_the_limits_leave_the_gallerys_titles_whole():
+    longest = 0
+    for path in glob.glob(os.path.join(ROOT, "gallery", "*", "*", "final.svg")):
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+        for lang in ("de", "en"):
+            lines = re.findall(rf'class="cap {lang}[^"]*"[^>]*>([^<]*)<', text)
+            longest = max(longest, len(" ".join(lines)))
+    assert 300 < longest < TITLE_LIMIT / 2
 
 
 def test_wrap_gives_textwraps_lines_for_every_gallery_caption():
@@ -209,6 +220,8 @@ def test_a_three_megabyte_title_is_shown_bounded(tmp_path):
     sizes = {p.name: p.stat().st_size for p in out.rglob("*") if p.is_file()}
     assert sizes.pop("protocol.json") > 3 * MB
     assert max(sizes.values()) < 50_000, sizes
+    title = re.findall(r'class="cap de"[^>]*>([^<]*)<', (out / "final.svg").read_text(encoding="utf-8"))
+    assert "".join(title) == "T" * (TITLE_LIMIT - 1) + "…"
 
 
 def test_captions_of_many_short_words_are_wrapped_and_cut():

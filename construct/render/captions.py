@@ -41,13 +41,16 @@ import functools
 import re
 from typing import Mapping, Sequence
 
-__all__ = ["Reader", "book_symbols", "equation", "subscripts", "tag", "displayed", "CAPTION_LIMIT"]
+__all__ = ["Reader", "book_symbols", "equation", "subscripts", "tag", "displayed", "CAPTION_LIMIT", "TITLE_LIMIT"]
 
-#: The most characters of a caption (or title) a figure shows; a longer one is cut and ends in "…".
-#: The books' step captions are at most 82 characters and the gallery's titles with all their
-#: parameters under 250; 400 is about three lines of the default 960 px canvas.  Every frame of a
-#: figure is as tall as its longest caption, so one step's caption must not grow without bound.
+#: The most characters of a step's caption (or a group's title) a figure shows; a longer one is
+#: cut and ends in "…".  The books' step captions are at most 82 characters; 400 is about three
+#: lines of the default 960 px canvas.  Every frame of a figure is as tall as its longest
+#: caption, so one step's caption must not grow without bound.
 CAPTION_LIMIT = 400
+#: The same for a figure's title or plate caption, which lists every parameter: the gallery's
+#: longest is 366 characters; 1000 is about eight lines.
+TITLE_LIMIT = 1000
 #: How much of a caption is rewritten at most: rewriting shortens names (a helper ``T7.G.M1`` is
 #: shown as M1, a step's own curve not at all), so more than the limit is read -- but not all of a
 #: caption of megabytes, whose end no one sees.

@@ -32,7 +32,7 @@ from dataclasses import dataclass, field
 from typing import Any, Mapping, Sequence
 
 from . import svgdoc
-from .captions import displayed
+from .captions import TITLE_LIMIT, displayed
 from .lettering import LEADER_FROM
 from .scene import Mark, Scene, label_offset_direction
 from .wrapping import wrap as wrap_chars
@@ -580,7 +580,7 @@ class Drawing:
         width = st.width_px - 2 * st.margin_px
         lines = list(caption if caption is not None else self.scene.title)
         return [("de" if i == 0 else "en", t) for i, line in enumerate(lines)
-                for t in wrap(displayed(line), width, st.caption_size)]
+                for t in wrap(displayed(line, TITLE_LIMIT), width, st.caption_size)]
 
     def view(self, k: int) -> "Drawing":
         """The drawing frame k is drawn with: this one, or (progressive zoom) one showing the stage so far."""
@@ -708,7 +708,7 @@ def render_svg(scene: Scene, *, upto: int | None = None, style: Style = PLAIN,
             # a plate: its own size, the "Fig." caption centred beneath
             lines = caption if caption is not None else scene.title
             width = style.width_px - 2 * style.margin_px
-            n = sum(len(wrap(displayed(line), width, style.caption_size)) for line in lines)
+            n = sum(len(wrap(displayed(line, TITLE_LIMIT), width, style.caption_size)) for line in lines)
             return Drawing(scene, style, caption_lines=n).final(caption, centred=True)
         return Drawing(scene, style).final(caption)
     return Drawing(scene, style).frame(upto)

@@ -16,9 +16,24 @@ def add_arguments(p) -> None:
     p.add_argument("--parts", type=int, action="append", help="cases to run (dividers) instead of the standard set")
     p.add_argument("--outputs", action="store_true",
                    help="time the outputs instead: replay at 360 and 1440 parts, gallery, verify (about a minute)")
+    p.add_argument("--diff", action="store_true",
+                   help="time 'construct diff' instead: two drawings of 10,000 and 100,000 elements, one moved "
+                        "(time, peak memory, time per element; about a minute)")
+    p.add_argument("--diff-million", action="store_true",
+                   help="with --diff: also 1,000,000 elements (about 80 MB per drawing; minutes)")
 
 
 def run(args) -> int:
+    if args.diff or args.diff_million:
+        from ..regress.diffbench import SIZES, diff_verdicts, run_diff_bench
+
+        found = run_diff_bench(SIZES + ((1_000_000,) if args.diff_million else ()))
+        if args.json:
+            print(json.dumps(found, indent=1))
+            return 0
+        for line in diff_verdicts(found):
+            print(line)
+        return 0
     if args.outputs:
         from ..regress.outputbench import output_verdicts, run_output_bench
 

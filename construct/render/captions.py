@@ -20,7 +20,10 @@ construction added later gets readable captions without writing any:
 * the English text gets the book's symbols: w -> ω, lam -> λ, sqrt -> √, ^2 -> ².
 
 One pass over each caption with an identifier pattern and dictionary
-look-ups: linear in the caption, independent of the number of steps.
+look-ups: linear in the caption, independent of the number of steps; a name
+is looked at, its neighbours read only as far as a slot word or a noun can
+reach.  What a figure shows of a caption is bounded (:data:`CAPTION_LIMIT`,
+:func:`displayed`); the protocol keeps the whole text.
 
 >>> r = Reader({"P12": ("point", "12", None, ()), "D1": ("point", "B", None, ()),
 ...             "T4.k": ("circle", None, "circle_through", ("P12", "D1"))})
@@ -38,7 +41,20 @@ import functools
 import re
 from typing import Mapping, Sequence
 
-__all__ = ["Reader", "book_symbols", "equation", "subscripts", "tag"]
+__all__ = ["Reader", "book_symbols", "equation", "subscripts", "tag", "displayed", "CAPTION_LIMIT", "TITLE_LIMIT"]
+
+#: The most characters of a step's caption (or a group's title) a figure shows; a longer one is
+#: cut and ends in "…".  The books' step captions are at most 82 characters; 400 is about three
+#: lines of the default 960 px canvas.  Every frame of a figure is as tall as its longest
+#: caption, so one step's caption must not grow without bound.
+CAPTION_LIMIT = 400
+#: The same for a figure's title or plate caption, which lists every parameter: the gallery's
+#: longest is 366 characters; 1000 is about eight lines.
+TITLE_LIMIT = 1000
+#: How much of a caption is rewritten at most: rewriting shortens names (a helper ``T7.G.M1`` is
+#: shown as M1, a step's own curve not at all), so more than the limit is read -- but not all of a
+#: caption of megabytes, whose end no one sees.
+_READ_LIMIT = 16 * CAPTION_LIMIT
 
 #: An identifier as the constructions write object names: letters, digits, dots inside.
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*")
@@ -47,6 +63,10 @@ _SLOTS = {"um", "durch", "von", "und", "mit", "zu", "about", "through", "where",
 
 #: Nouns after which a lower-case name is a word of the sentence ("crank circle", "axis line").
 _NOUNS = {"circle", "line", "centre", "center", "kreis", "linie", "gerade"}
+#: The word after a name, read no further than the longest noun and one character beyond it
+#: (lower-casing never shortens a word, so a longer word is no noun).
+_NEXT_WORD = re.compile(r"\s*([^ ]{0,%d})" % (max(map(len, _NOUNS)) + 1))
+_LONGEST_SLOT = max(map(len, _SLOTS))
 
 #: How the books name the objects every crank figure has.
 _COMMON = {
@@ -57,6 +77,15 @@ _COMMON = {
 
 _SUPER = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def displayed(text: str, limit: int = CAPTION_LIMIT) -> str:
+    """*text* as a figure shows it: at most *limit* characters, a cut one ending in "…".
+
+    >>> displayed("Kreis um 3 durch 12"), displayed("x" * 1000, 10)
+    ('Kreis um 3 durch 12', 'xxxxxxxxx…')
+    """
+    return text if len(text) <= limit else text[: limit - 1] + "…"
 
 
 def tag(name: str, letters: "frozenset[str] | set[str]" = frozenset()) -> str:
@@ -175,12 +204,22 @@ class Reader:
         # Two single capitals read as a segment (AB); numbers and primes need a dash (3–6).
         return a + b if len(a) == 1 == len(b) and a.isalpha() and b.isalpha() else f"{a}–{b}"
 
+    @functools.cached_property
+    def _point_lengths(self) -> tuple[int, ...]:
+        return tuple(sorted({len(p) for p in self.points}))
+
     def _split(self, token: str) -> tuple[str, str] | None:
         """``D0P6`` -> (D0, P6): two point names written together, if the token is exactly that."""
         if token[1:].islower() and "." not in token and not any(c.isdigit() for c in token):
             return None  # a word ("Kreis", "durch"): not two names
-        for i in range(1, len(token)):
-            if token[:i] in self.points and token[i:] in self.points:
+        # Only cuts where both halves have the length of some point's name are tried, shortest
+        # first: a token of megabytes is not sliced at every character.
+        lengths = self._point_lengths
+        n = len(token)
+        for i in lengths:
+            if i >= n:
+                break
+            if n - i in lengths and token[:i] in self.points and token[i:] in self.points:
                 return token[:i], token[i:]
         return None
 
@@ -200,7 +239,13 @@ class Reader:
         return out
 
     def text(self, caption: str, lang: str, outputs: Sequence[str] = ()) -> str:
-        """*caption* (in *lang*, "de" or "en") in the figure's letters; *outputs* are the step's own objects."""
+        """*caption* (in *lang*, "de" or "en") in the figure's letters; *outputs* are the step's own objects.
+
+        What a figure shows: at most :data:`CAPTION_LIMIT` characters (:func:`displayed`).
+        """
+        cut = len(caption) > _READ_LIMIT
+        if cut:
+            caption = caption[:_READ_LIMIT]
         made = set(outputs)
         out: list[str] = []
         pos = 0
@@ -214,7 +259,7 @@ class Reader:
                 pair = self._split(token)
                 if pair:
                     rep = self._pair(self.point(pair[0]), self.point(pair[1]))
-            elif word and caption[end:].lstrip().split(" ", 1)[0].lower() in _NOUNS:
+            elif word and _NEXT_WORD.match(caption, end).group(1).lower() in _NOUNS:
                 rep = None  # a word of the sentence that names a thing ("crank circle about O")
             elif (obj[0] in ("line", "circle") and token in made and not obj[1]
                   and not (token.isalpha() and token.isupper())):
@@ -238,12 +283,25 @@ class Reader:
             text = text.replace("von Kreis um", "vom Kreis um").replace("und Kreis um", "und dem Kreis um")
         else:
             text = text.replace(" the the ", " the ")
-        return subscripts(book_symbols(text) if lang == "en" else equation(text))
+        text = subscripts(book_symbols(text) if lang == "en" else equation(text))
+        if cut and not text.endswith("…"):
+            text = text[: CAPTION_LIMIT - 1] + "…"
+        return displayed(text)
 
     @staticmethod
     def _names_slot(text: str, start: int, end: int) -> bool:
-        """Is the word at text[start:end] where a caption names an object ("Kreis um top", "where axis meets")?"""
+        """Is the word at text[start:end] where a caption names an object ("Kreis um top", "where axis meets")?
+
+        The word before it (``text[:start].rstrip().rsplit(" ", 1)[-1]``), read back no
+        further than the longest slot word: a caption's length is not read per name.
+        """
         if text[end:end + 1] == "-":
             return False
-        before = text[:start].rstrip().rsplit(" ", 1)[-1].lower()
-        return before in _SLOTS
+        j = start
+        while j > 0 and text[j - 1].isspace():
+            j -= 1
+        lo = max(0, j - _LONGEST_SLOT - 1)
+        space = text.rfind(" ", lo, j)
+        if space < 0 and lo > 0:
+            return False  # longer than any slot word
+        return text[space + 1:j].lower() in _SLOTS

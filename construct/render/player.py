@@ -30,6 +30,7 @@ import re
 from typing import Any, Mapping
 
 from .animate import STEP_SECONDS, group_css
+from .captions import displayed
 from .svg import PLAIN, Drawing, Style, fmt, group_caption
 
 __all__ = ["player_html", "json_for_script"]
@@ -82,7 +83,8 @@ def _step_list(scene) -> str:
             g = path[depth]
             de = titles.get(g, g)
             label = scene.readable(g if de == g else f"{g} / {de}")
-            out.append(f'<details data-g="{html.escape(" › ".join(path[:depth + 1]))}"><summary>'
+            where = displayed(" › ".join(path[:depth + 1]))  # the group's path, as bounded as its caption
+            out.append(f'<details data-g="{html.escape(where)}"><summary>'
                        f'{html.escape(label)}</summary><ul>')
         open_path = path
         out.append(f'<li><a href="#{s.index}" data-k="{s.index}" class="tool-{html.escape(s.tool)}">'

@@ -28,7 +28,7 @@ from typing import Any, Iterable
 
 from ..kernel.geometry import Circle, Length, Line, Point
 from ..kernel.protocol import Protocol, Replay, Step
-from .captions import Reader
+from .captions import TITLE_LIMIT, Reader, displayed
 
 __all__ = ["Mark", "Scene", "build_scene", "label_offset_direction"]
 
@@ -431,6 +431,8 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
     bbox = (bx0 - pad, by0 - pad, bx1 + pad, by1 + pad)
     if title is None:
         title = (protocol.construction, protocol.construction)
+    # a figure shows a bounded title; the protocol keeps the name
+    title = (displayed(title[0], TITLE_LIMIT), displayed(title[1], TITLE_LIMIT))
     essentials = frozenset(shown if shown is not None else plate_names(protocol, objects))
     return Scene(tuple(marks), bbox, protocol.steps, title, dict(protocol.params), breaks, tuple(furniture),
                  essentials)

@@ -31,10 +31,10 @@ from __future__ import annotations
 
 import io
 import math
-import textwrap
 
 from .scene import Scene
 from .svg import PLAIN, Drawing, Style, fmt
+from .wrapping import shorten, wrap
 
 __all__ = ["storyboard_svg", "storyboard_png", "storyboard_steps", "MAX_TILES"]
 
@@ -195,8 +195,9 @@ def storyboard_png(scene: Scene, style: Style = PLAIN, *, columns: int = 4, dpi:
             xy = np.array(pts)
             (dots,) = ax.plot(xy[:, 0], xy[:, 1], "o", ms=ms, color=c, alpha=alpha, mec="none", ls="none")
             dots.set_clip_path(clip)
-        text = textwrap.shorten(_tile_text(scene, prev + 1, k), 110, placeholder=" …")
-        ax.text(tx + tw / 2, ty - 0.05, "\n".join(textwrap.wrap(text, 48)[:2]), fontsize=7, color=style.ink,
+        text = shorten(_tile_text(scene, prev + 1, k), 110, placeholder=" …")
+        lines = wrap(text, 48, break_on_hyphens=True)[:2]
+        ax.text(tx + tw / 2, ty - 0.05, "\n".join(lines), fontsize=7, color=style.ink,
                 family="DejaVu Sans", ha="center", va="top")
         prev = k
     buf = io.BytesIO()
@@ -271,8 +272,8 @@ def storyboard_svg(drawing: Drawing, *, columns: int = 4) -> str:
                 now.add(f.use(f"#tile{i}-{name}"))
         view.add(now)
         dwg.add(view)
-        text = textwrap.shorten(_tile_text(scene, bounds[i - 1] + 1, k), 110, placeholder=" …")
-        for n, line in enumerate(textwrap.wrap(text, 54)[:2]):
+        text = shorten(_tile_text(scene, bounds[i - 1] + 1, k), 110, placeholder=" …")
+        for n, line in enumerate(wrap(text, 54, break_on_hyphens=True)[:2]):
             dwg.add(f.text(line, x=[fmt(tx + tw / 2)], y=[fmt(ty + th + (n + 1.1) * 1.2 * TILE_FONT)],
                            class_="sheet"))
     return doc.text(dwg)

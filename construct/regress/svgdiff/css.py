@@ -1,0 +1,185 @@
+"""Colours, properties and style sheets: one spelling for every way SVG can say the same look.
+
+Part of :mod:`construct.regress.svgdiff`.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Any
+
+from .values import _NUMBER, _UNITS
+
+# --------------------------------------------------------------------------- colours and styles
+
+_BASIC_COLOURS = {
+    "black": "#000000", "silver": "#c0c0c0", "gray": "#808080", "grey": "#808080", "white": "#ffffff",
+    "maroon": "#800000", "red": "#ff0000", "purple": "#800080", "fuchsia": "#ff00ff", "magenta": "#ff00ff",
+    "green": "#008000", "lime": "#00ff00", "olive": "#808000", "yellow": "#ffff00", "navy": "#000080",
+    "blue": "#0000ff", "teal": "#008080", "aqua": "#00ffff", "cyan": "#00ffff", "orange": "#ffa500",
+}
+_COLOUR_PROPERTIES = {"fill", "stroke", "color", "stop-color", "flood-color", "lighting-color"}
+
+
+def normalise_colour(raw: str, current: str = "#000000") -> str:
+    """One spelling per colour: ``#rrggbb`` (``#rrggbbaa`` when not opaque), ``none`` or the text.
+
+    >>> {normalise_colour(c) for c in ("#000", "#000000", "black", "rgb(0,0,0)", "rgb(0%, 0%, 0%)", "hsl(0, 0%, 0%)")}
+    {'#000000'}
+    >>> normalise_colour("rgba(255, 0, 0, 0.5)"), normalise_colour("URL(#Grad)")
+    ('#ff000080', 'url(#Grad)')
+    """
+    s = raw.strip()
+    low = s.lower()
+    if low in ("none", "transparent"):
+        return "none"
+    if low == "currentcolor":
+        return current
+    if re.fullmatch(r"#[0-9a-f]{3,4}", low):
+        return _rgba_hex(*(int(ch * 2, 16) for ch in low[1:]))
+    if re.fullmatch(r"#[0-9a-f]{6}([0-9a-f]{2})?", low):
+        return _rgba_hex(*(int(low[i:i + 2], 16) for i in range(1, len(low), 2)))
+    func = re.fullmatch(r"(rgba?|hsla?)\((.*)\)", low)
+    if func:
+        parts = [p for p in re.split(r"[\s,/]+", func.group(2).strip()) if p]
+        try:
+            return _functional_colour(func.group(1), parts)
+        except (ValueError, IndexError):
+            return low
+    if low in _BASIC_COLOURS:
+        return _BASIC_COLOURS[low]
+    if re.fullmatch(r"[a-z]+", low):
+        from matplotlib.colors import CSS4_COLORS  # the full CSS table, only when needed
+
+        if low in CSS4_COLORS:
+            return CSS4_COLORS[low].lower()
+        return low
+    # url(#id) references keep their case: ids are case-sensitive.
+    return re.sub(r"^url", "url", s, flags=re.I)
+
+
+def _rgba_hex(r: int, g: int, b: int, a: int = 255) -> str:
+    return f"#{r:02x}{g:02x}{b:02x}" + ("" if a == 255 else f"{a:02x}")
+
+
+def _functional_colour(name: str, parts: list[str]) -> str:
+    def channel(p: str, full: float) -> float:
+        return float(p[:-1]) / 100 * full if p.endswith("%") else float(p)
+
+    alpha = channel(parts[3], 1.0) if len(parts) > 3 else 1.0
+    if name.startswith("rgb"):
+        rgb = [channel(p, 255.0) for p in parts[:3]]
+    else:
+        h = float(parts[0].removesuffix("deg")) / 360 % 1.0
+        s, lum = channel(parts[1], 1.0), channel(parts[2], 1.0)
+        import colorsys
+
+        rgb = [255 * v for v in colorsys.hls_to_rgb(h, lum, s)]
+    clamp = [min(255, max(0, round(v))) for v in rgb]
+    return _rgba_hex(*clamp, min(255, max(0, round(alpha * 255))))
+
+
+# Presentation attributes that may stand on an element instead of in `style`.
+_PRESENTATION = {
+    "alignment-baseline", "baseline-shift", "clip", "clip-path", "clip-rule", "color", "color-interpolation",
+    "color-interpolation-filters", "color-rendering", "cursor", "direction", "display", "dominant-baseline",
+    "fill", "fill-opacity", "fill-rule", "filter", "flood-color", "flood-opacity", "font", "font-family",
+    "font-size", "font-size-adjust", "font-stretch", "font-style", "font-variant", "font-weight",
+    "image-rendering", "letter-spacing", "lighting-color", "marker", "marker-end", "marker-mid", "marker-start",
+    "mask", "opacity", "overflow", "paint-order", "pointer-events", "shape-rendering", "stop-color",
+    "stop-opacity", "stroke", "stroke-dasharray", "stroke-dashoffset", "stroke-linecap", "stroke-linejoin",
+    "stroke-miterlimit", "stroke-opacity", "stroke-width", "text-anchor", "text-decoration", "text-rendering",
+    "unicode-bidi", "vector-effect", "visibility", "word-spacing", "writing-mode",
+}
+# Not inherited by the children of a group, but still acting on them: combined instead.
+_GROUP_EFFECTS = {"opacity", "display", "clip-path", "mask", "filter", "overflow", "clip"}
+_INITIAL = {
+    "fill": "#000000", "fill-opacity": (1.0,), "fill-rule": ("nonzero",), "stroke": "none", "stroke-width": (1.0,),
+    "stroke-opacity": (1.0,), "stroke-linecap": ("butt",), "stroke-linejoin": ("miter",),
+    "stroke-miterlimit": (4.0,), "stroke-dasharray": ("none",), "stroke-dashoffset": (0.0,),
+    "opacity": (1.0,), "display": ("inline",), "visibility": ("visible",), "font-style": ("normal",),
+    "font-weight": (400.0,), "text-anchor": ("start",), "font-size": (16.0,), "color": "#000000",
+    "clip-path": ("none",), "mask": ("none",), "filter": ("none",), "marker-start": ("none",),
+    "marker-mid": ("none",), "marker-end": ("none",), "vector-effect": ("none",),
+}
+# Lengths in the element's user units: a scaled element draws them scaled.
+_SCALED = {"stroke-width", "stroke-dasharray", "stroke-dashoffset", "font-size", "letter-spacing", "word-spacing"}
+
+
+def _declarations(text: str) -> dict[str, str]:
+    """``"a: b; c: d"`` as a dict (later wins; ``!important`` dropped)."""
+    out: dict[str, str] = {}
+    for decl in re.sub(r"/\*.*?\*/", "", text, flags=re.S).split(";"):
+        if ":" in decl:
+            name, value = decl.split(":", 1)
+            value = re.sub(r"\s*!important\s*$", "", value.strip(), flags=re.I)
+            if name.strip() and value:
+                out[name.strip().lower()] = value
+    return out
+
+
+def _style_value(prop: str, raw: str, current: str) -> Any:
+    """A property value in one spelling: a colour string or a tuple of words and numbers."""
+    if prop in _COLOUR_PROPERTIES:
+        return normalise_colour(raw, current)
+    s = raw.strip()
+    if prop == "font-family":
+        return ", ".join(f.strip().strip("'\"").strip().lower() for f in s.split(","))
+    if prop == "font-weight":
+        s = {"normal": "400", "bold": "700"}.get(s.lower(), s)
+    words: list[Any] = []
+    for part in re.split(r"[\s,]+", s):
+        if not part:
+            continue
+        if words:
+            words.append(" ")
+        m = re.fullmatch(r"(" + _NUMBER + r")(px|mm|cm|in|pt|pc|em|ex|%)?", part, flags=re.I)
+        if m:
+            unit = (m.group(2) or "").lower()
+            value = float(m.group(1))
+            words.extend([value * _UNITS[unit]] if unit != "%" else [value, "%"])
+        else:
+            words.append(part if part.lower().startswith("url(") else part.lower())
+    return tuple(words)
+
+
+@dataclass(frozen=True, slots=True)
+class _CssRule:
+    tag: str | None
+    ids: tuple[str, ...]
+    classes: tuple[str, ...]
+    specificity: tuple[int, int, int, int]
+    declarations: tuple[tuple[str, str], ...]
+
+    def matches(self, tag: str, elem_id: str | None, classes: set[str]) -> bool:
+        return ((self.tag is None or self.tag == tag) and all(i == elem_id for i in self.ids)
+                and all(c in classes for c in self.classes))
+
+
+def _parse_css(text: str, order_start: int = 0) -> tuple[list[_CssRule], list[tuple[str, tuple]]]:
+    """Rules with simple selectors (``tag``, ``.class``, ``#id``, ``*`` and compounds) and a canonical form.
+
+    Selectors with combinators or pseudo-classes are not applied, but they are
+    part of the canonical form, so a change to them is still reported.
+    """
+    text = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
+    text = re.sub(r"@[^{;]*(;|\{[^{}]*(\{[^{}]*\}[^{}]*)*\})", "", text)  # @import, @media, @font-face
+    rules: list[_CssRule] = []
+    canon: list[tuple[str, tuple]] = []
+    for n, block in enumerate(re.finditer(r"([^{}]+)\{([^{}]*)\}", text)):
+        decls = _declarations(block.group(2))
+        for sel in block.group(1).split(","):
+            sel = " ".join(sel.split())
+            canon.append((sel, tuple(sorted((k, _style_value(k, v, "currentcolor")) for k, v in decls.items()))))
+            m = re.fullmatch(r"(\*|[A-Za-z][\w-]*)?((?:[.#][\w-]+)*)", sel)
+            if not m or not sel:
+                continue
+            ids = tuple(re.findall(r"#([\w-]+)", m.group(2)))
+            classes = tuple(re.findall(r"\.([\w-]+)", m.group(2)))
+            tag = None if m.group(1) in (None, "*") else m.group(1)
+            spec = (len(ids), len(classes), 0 if tag is None else 1, order_start + n)
+            rules.append(_CssRule(tag, ids, classes, spec, tuple(decls.items())))
+    rules.sort(key=lambda r: r.specificity)
+    canon.sort()
+    return rules, canon

@@ -181,3 +181,26 @@ def test_a_failure_midway_leaves_the_previous_output_intact(tmp_path, capsys, mo
     assert code == 2 and "disk full" in err and len(calls) == 2
     assert {p.name: p.read_bytes() for p in out.iterdir() if p.is_file()} == before
     assert not [p for p in out.iterdir() if p.name.startswith(".construct-staging")]
+
+
+@pytest.mark.parametrize("other", ["/dev/zero", "fifo", "folder", "huge.svg"])
+def test_diff_reads_only_bounded_regular_files(tmp_path, capsys, other):
+    # Issue 12: 'construct diff a.json /dev/zero' read until memory ran out.  A device, a named pipe
+    # (which would make the read wait for a writer), a folder and a file above the size limit are refused
+    # before anything is read.
+    from construct.commands.diff import MAX_DRAWING_BYTES
+
+    a = tmp_path / "a.svg"
+    a.write_text('<svg xmlns="http://www.w3.org/2000/svg"/>')
+    if other == "fifo":
+        other = tmp_path / "pipe"
+        os.mkfifo(other)
+    elif other == "folder":
+        other = tmp_path
+    elif other == "huge.svg":
+        other = tmp_path / "huge.svg"
+        with open(other, "wb") as fh:  # sparse: no disk space used
+            fh.write(b"<")
+            fh.truncate(MAX_DRAWING_BYTES + 1)
+    code, _, err = run(capsys, "diff", str(a), str(other))
+    assert code == 2 and len(err.splitlines()) == 1 and str(other) in err, err

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
+import stat
 from pathlib import Path
 
 from ..errors import ConstructError, InvalidParameter
@@ -31,18 +33,42 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print the differences as JSON")
 
 
+#: The largest drawing ``diff`` reads.  A 3600-part replay's final.svg is a few MB and a million-element
+#: drawing about 80 MB; four times that still fits the memory of a small machine.
+MAX_DRAWING_BYTES = 320 * 2**20
+
+
 def file_kind(path: str) -> str:
-    """``"svg"`` or ``"protocol"``, by the first character of the content."""
+    """``"svg"`` or ``"protocol"``, by the first character of the content.
+
+    Only a regular file of a bounded size is accepted, and only its first
+    bytes are read here: ``/dev/zero`` or a named pipe must not be read until
+    memory runs out, nor make the command wait.
+    """
+    from ..kernel.protocol_file import MAX_PROTOCOL_BYTES
+
     try:
-        data = Path(path).read_bytes()
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+    except (OSError, ValueError) as exc:
+        raise DiffInputError(f"cannot read {path!r}: {getattr(exc, 'strerror', None) or exc}") from None
+    try:
+        info = os.fstat(fd)
+        if not stat.S_ISREG(info.st_mode):
+            what = "a folder" if stat.S_ISDIR(info.st_mode) else "not a regular file"
+            raise DiffInputError(f"cannot read {path!r}: it is {what}")
+        head = os.read(fd, 4096).lstrip(b"\xef\xbb\xbf \t\r\n")[:1]
     except OSError as exc:
         raise DiffInputError(f"cannot read {path!r}: {exc.strerror or exc}") from None
-    head = data.lstrip(b"\xef\xbb\xbf \t\r\n")[:1]
-    if head == b"<":
-        return "svg"
-    if head == b"{":
-        return "protocol"
-    raise DiffInputError(f"{path!r} is neither an SVG drawing nor a JSON protocol")
+    finally:
+        os.close(fd)
+    kind = "svg" if head == b"<" else "protocol" if head == b"{" else None
+    if kind is None:
+        raise DiffInputError(f"{path!r} is neither an SVG drawing nor a JSON protocol")
+    limit = MAX_DRAWING_BYTES if kind == "svg" else MAX_PROTOCOL_BYTES
+    if info.st_size > limit:
+        raise DiffInputError(f"{path!r} is larger than {limit // 2**20} MiB ({info.st_size} bytes); "
+                             f"no {'drawing' if kind == 'svg' else 'protocol'} this library writes is")
+    return kind
 
 
 def run(args: argparse.Namespace) -> int:

@@ -497,3 +497,17 @@ def test_fuzzed_protocols_load_and_replay_or_fail_with_a_construct_error(small_c
         fig.checks()
     except ConstructError:
         pass
+
+
+def test_divide_segment_refuses_more_parts_than_it_can_draw():
+    # Issue 12 (left open by the protocol pass): divide_segment(..., 10**9) ran until memory ran out.
+    from construct import Builder
+    from construct.errors import InvalidParameter
+
+    b = Builder("demo", givens={})
+    b.given_point("A", 0.0, 0.0)
+    b.given_point("B", 1.0, 0.0)
+    for n in (10**9, 1, True, 2.5):
+        with pytest.raises(InvalidParameter, match="parts"):
+            b.divide_segment("T", "A", "B", n)
+    assert len(b.divide_segment("T", "A", "B", 3)) == 2

@@ -38,6 +38,10 @@ from .rules import Rule, as_rule
 if TYPE_CHECKING:  # the figure module imports this one
     from .figure import Figure
 
+#: The most parts divide_segment draws: as many as the finest semicircle division (3600); each part
+#: costs a few steps, and 10**9 parts would fill the memory before the first one is drawn.
+MAX_SEGMENT_PARTS = 3600
+
 __all__ = ["Builder"]
 
 
@@ -655,8 +659,8 @@ class Builder:
         >>> [round(b[p].x, 12) for p in b.divide_segment("T", "A", "B", 4)]
         [1.0, 2.0, 3.0]
         """
-        if not isinstance(n, int) or n < 2:
-            raise InvalidParameter(f"divide_segment needs n >= 2 parts, got {n!r}")
+        if not isinstance(n, int) or isinstance(n, bool) or not 2 <= n <= MAX_SEGMENT_PARTS:
+            raise InvalidParameter(f"divide_segment needs 2..{MAX_SEGMENT_PARTS} parts, got {n!r}")
         wanted = list(range(1, n)) if only is None else list(only)
         halvings = max(0, math.ceil(math.log2(n)) - 2)
         with self.group(f"{a}{b} divided into {n} equal parts", f"{a}{b} in {n} gleiche Teile geteilt"):

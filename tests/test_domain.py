@@ -209,3 +209,14 @@ def test_a_negative_tolerance_in_exponent_form_reaches_the_real_message(capsys, 
     svg = tmp_path / "a.svg"
     svg.write_text('<svg xmlns="http://www.w3.org/2000/svg"><circle cx="1" cy="1" r="1"/></svg>', encoding="utf-8")
     assert "--tolerance must be a finite number >= 0" in refused(capsys, "diff", str(svg), str(svg), "--tolerance", "-1e-3")
+
+
+@pytest.mark.parametrize("option", [["--admission", "0.05"], ["--back-pressure", "5"]])
+def test_tangential_pressure_with_negative_work_names_the_givens(capsys, option):
+    # Issue 12 (found by the domain pass): these failed naming only "step 1634 (planimeter ...)".  The
+    # indicator work of Baumann's diagram is below its back-pressure work here, so no mean line exists.
+    from construct.cli import main
+
+    assert main(["check", "tangential-pressure", *option]) == 2
+    err = capsys.readouterr().err
+    assert len(err.splitlines()) == 1 and option[0] in err and "negative work" in err, err

@@ -50,7 +50,7 @@ from typing import Any, Mapping
 import numpy as np
 
 from ..checks import EUCLIDEAN_TOLERANCE, Check
-from ..errors import InvalidParameter
+from ..errors import GeometryError, InvalidParameter
 from ..kernel.division import check_parts, divide_semicircle
 from ..kernel.instruments import Builder
 from ..kernel.protocol import Caption, Provenance
@@ -222,9 +222,20 @@ def _unrolled(b: Builder, f: Mapping[str, str], points: list[str], n: int, heigh
                        "(traced along 64 chords per curve segment)", 1e-6)
         b.area_between("under", "tcurve", base, U0, marks[n], role="auxiliary",
                        de="Fläche unter der Tangentialdrucklinie", en="area under the tangential-pressure line")
-        b.record("planimeter", "planimeter_height", ("under", U0, marks[n]), ("hm",), {},
-                 "Planimeter: mittlere Höhe = Fläche / Länge", "planimeter: mean height = area / length",
-                 provenance=plan.combine(prov))
+        try:
+            b.record("planimeter", "planimeter_height", ("under", U0, marks[n]), ("hm",), {},
+                     "Planimeter: mittlere Höhe = Fläche / Länge", "planimeter: mean height = area / length",
+                     provenance=plan.combine(prov))
+        except GeometryError as exc:
+            # The step names itself; the user changed givens, so say which ones make the work negative.
+            g = b.givens
+            if "admission" not in g:  # the unit force: its work is r·2 > 0 always, so this is no user's doing
+                raise
+            raise InvalidParameter(
+                f"with admission {g['admission']:g} at, filling {g['filling']:g} and back pressure "
+                f"{g['back_pressure']:g} at the tangential pressures do negative work over the stroke (the "
+                f"indicator diagram encloses negative work; the inertia forces do none over a stroke), so there is no mean line to draw: "
+                f"raise --admission or --filling, or lower --back-pressure ({exc})") from None
         up = ("toward", None, None, 0.0, 1.0)
         for end, mark, ordinate in (("M0", U0, ords[0]), ("Mn", marks[n], ords[n])):
             k = b.circle_radius(f"{end}.k", mark, "hm", de="mittlere Höhe mit dem Zirkel angetragen",

@@ -22,12 +22,10 @@ import contextlib
 import functools
 import io
 import json
-import math
 import os
 import tempfile
 from pathlib import Path
 
-import pytest
 from hypothesis import HealthCheck, event, example, given, settings
 from hypothesis import strategies as st
 

@@ -39,7 +39,8 @@ from .report import CHANGE_KINDS, SvgChange, SvgDiff, changes_by_step, diff_svg,
 from .values import DEFAULT_TOLERANCE, SvgFormatError
 
 __all__ = ["DEFAULT_TOLERANCE", "SvgChange", "SvgDiff", "SvgFormatError", "diff_svg", "parse_svg",
-           "changes_by_step"]
+           "changes_by_step", "iter_changes", "Drawing", "Shape", "normalise_colour", "parse_transform",
+           "MATCH_BUDGET", "SVG_NS", "XLINK_NS", "CHANGE_KINDS"]
 
 for _public in (SvgChange, SvgDiff, Drawing, Shape, diff_svg, parse_svg, changes_by_step, iter_changes,
                 normalise_colour, parse_transform):

@@ -91,6 +91,16 @@ def _entries(folder: Path, what: str) -> list[str]:
         raise OutputError(f"cannot read {what} {str(folder)!r}: {_reason(exc)}") from None
 
 
+def _first_missing(path: Path) -> Path | None:
+    """The outermost folder of *path* that does not exist yet (what a failed run must remove), or None."""
+    missing = None
+    for p in (path, *path.parents):
+        if os.path.lexists(p):
+            break
+        missing = p
+    return missing
+
+
 def _check_replaceable(target: Path, recognise: Callable[[Path], bool], described: str, what: str) -> bool:
     """Whether *target* exists; raise OutputError unless it is missing, empty or recognised."""
     st = _stat(target, what)
@@ -190,6 +200,7 @@ def staged_output(target: str | os.PathLike[str], *, recognise: Callable[[Path],
         existed = st is not None
         if existed and not stat.S_ISDIR(st.st_mode):  # type: ignore[union-attr]
             raise OutputError(f"{what} {str(target)!r} exists and is not a folder")
+    created = _first_missing(target)  # the folders this run makes, removed again if it fails
     try:
         target.mkdir(parents=True, exist_ok=True)
         remove_stale_staging(target)
@@ -201,8 +212,8 @@ def staged_output(target: str | os.PathLike[str], *, recognise: Callable[[Path],
         _commit(stage, target, exact=recognise is not None)
     except BaseException:
         shutil.rmtree(stage, ignore_errors=True)
-        if not existed:
-            shutil.rmtree(target, ignore_errors=True)
+        if created is not None:
+            shutil.rmtree(created, ignore_errors=True)
         raise
     shutil.rmtree(stage, ignore_errors=True)
 
@@ -262,6 +273,7 @@ def replaced_folder(target: str | os.PathLike[str], *, recognise: Callable[[Path
     if existed and here is not None and here.is_relative_to(target):
         raise OutputError(f"refusing to replace {str(target)!r}: it holds the current folder; "
                           f"run from outside it or name another folder")
+    created = _first_missing(parent)  # folders made for the target, removed again if the run fails
     try:
         parent.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
@@ -271,6 +283,8 @@ def replaced_folder(target: str | os.PathLike[str], *, recognise: Callable[[Path
     try:
         stage = _make_stage(parent)
     except OSError as exc:
+        if created is not None:
+            shutil.rmtree(created, ignore_errors=True)
         # The target itself may well be writable: it is its parent that the whole-folder swap needs.
         raise OutputError(f"cannot replace {what} {str(target)!r}: it is built beside it and swapped in whole, "
                           f"and its parent folder {str(parent)!r} is not writable ({_reason(exc)})") from None
@@ -280,8 +294,12 @@ def replaced_folder(target: str | os.PathLike[str], *, recognise: Callable[[Path
         if not new.is_dir():
             raise OutputError(f"nothing was written for {what} {str(target)!r}")
         _swap(stage, new, target, existed)
-    finally:
+    except BaseException:
         shutil.rmtree(stage, ignore_errors=True)
+        if created is not None:
+            shutil.rmtree(created, ignore_errors=True)
+        raise
+    shutil.rmtree(stage, ignore_errors=True)
 
 
 def _swap(stage: Path, new: Path, target: Path, existed: bool) -> None:

@@ -342,3 +342,24 @@ def test_the_next_run_removes_the_staging_of_a_killed_one(tmp_path):
     _, err = nxt.communicate(timeout=300)
     assert nxt.returncode != 0 and os.listdir(tmp_path) == [], (nxt.returncode, err, os.listdir(tmp_path))
     shutil.rmtree(out, ignore_errors=True)
+
+
+def test_a_failed_replay_removes_the_folders_it_made_for_its_target(tmp_path):
+    # --out a/b/c: a run that failed while writing made a/ and a/b/ for its target and left them behind.
+    from construct.output import staged_output
+
+    with pytest.raises(RuntimeError):
+        with staged_output(tmp_path / "a" / "b" / "c") as stage:
+            (stage / "final.svg").write_text("<svg/>")
+            raise RuntimeError("a step failed")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_failed_gallery_removes_the_folders_it_made_for_its_target(tmp_path, monkeypatch):
+    from construct.output import replaced_folder
+
+    with pytest.raises(RuntimeError):
+        with replaced_folder(tmp_path / "a" / "b" / "g", recognise=lambda p: False, described="a gallery") as new:
+            new.mkdir()
+            raise RuntimeError("a figure failed")
+    assert list(tmp_path.iterdir()) == []

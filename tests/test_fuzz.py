@@ -9,8 +9,9 @@ number, empty).  Every run must keep the contract of the README:
 - the exit code is 0, 1 (a check failed, a diff found differences) or 2 (bad
   input); anything else -- an exception escaping ``main`` -- fails the test;
 - on 2, exactly one line on stderr and no traceback;
-- nothing is written outside the output folder, and on failure the output
-  folder is as it was (here: it does not exist).
+- nothing outside the output folder changes (the working folder holds a
+  user's file and a folder of notes that --out may point at), and after a
+  failure the working folder is exactly as it was.
 
 The runs are derandomised so that CI sees the same cases every time; the
 examples that found the bugs of issue 12 are pinned with ``@example``.

@@ -108,6 +108,17 @@ def _negative_values_attached(parser: argparse.ArgumentParser, argv: Sequence[st
     return out
 
 
+def _one_line(message: str, limit: int = 2000) -> str:
+    """The error as the one line the CLI promises: a name or caption read from a file may hold line breaks,
+    and a value quoted from it may be megabytes long.
+
+    >>> _one_line("a\\nb  c")
+    'a b c'
+    """
+    text = " ".join(message.split())
+    return text if len(text) <= limit else text[:limit - 1] + "…"
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     try:
         parser = build_parser()
@@ -115,7 +126,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         with _terminate_cleanly():
             return int(args._run(args))
     except ConstructError as exc:
-        print(f"construct: error: {exc}", file=sys.stderr)
+        print(f"construct: error: {_one_line(str(exc))}", file=sys.stderr)
         return EXIT_BAD_INPUT
     except KeyboardInterrupt:
         print("construct: interrupted", file=sys.stderr)

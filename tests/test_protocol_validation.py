@@ -511,3 +511,22 @@ def test_divide_segment_refuses_more_parts_than_it_can_draw():
         with pytest.raises(InvalidParameter, match="parts"):
             b.divide_segment("T", "A", "B", n)
     assert len(b.divide_segment("T", "A", "B", 3)) == 2
+
+
+def test_an_error_quotes_a_huge_multiline_caption_on_one_short_line(tmp_path, capsys):
+    # A caption read from a file may hold line breaks and megabytes; the step's error quotes it, and the CLI
+    # promises one line on stderr.
+    import json as _json
+
+    import construct
+    from construct.cli import main
+
+    fig = construct.get("crank").figure(parts=6)
+    doc = _json.loads(fig.protocol.to_json(fig.replay))
+    doc["steps"][5]["caption"]["en"] = "first line\nsecond line " + "x" * 1_000_000
+    doc["steps"][5]["inputs"] = doc["steps"][5]["inputs"][:1]  # an intersect with one input: refused at load
+    path = tmp_path / "p.json"
+    path.write_text(_json.dumps(doc))
+    assert main(["check", "--protocol", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert len(err.splitlines()) == 1 and len(err) < 2100 and "first line second line" in err, err[:300]

@@ -69,6 +69,16 @@ class Caption:
     de: str
     en: str
 
+    @property
+    def brief(self) -> str:
+        """The English caption as an error message quotes it: on one line, at most 120 characters.
+
+        >>> Caption("", "a\\nvery " + "long " * 40).brief[-12:]
+        'ong long lo…'
+        """
+        text = " ".join(self.en.split())
+        return text if len(text) <= 120 else text[:119] + "…"
+
 
 @dataclass(frozen=True, slots=True)
 class Provenance:
@@ -210,7 +220,7 @@ def compile_step(step: Step, slot: Mapping[str, Any] | None = None) -> tuple:
         raise ProtocolFormatError(f"step {step.index}: unknown operation {step.op!r}; known: {', '.join(sorted(OPS))}")
 
     def unknown(name: str) -> UnknownObject:
-        return UnknownObject(f"step {step.index} ({step.tool}: {step.caption.en}) uses {name!r} before any step made it",
+        return UnknownObject(f"step {step.index} ({step.tool}: {step.caption.brief}) uses {name!r} before any step made it",
                              name=name, step_index=step.index, tool=step.tool, op=step.op)
 
     if slot is not None:
@@ -219,7 +229,7 @@ def compile_step(step: Step, slot: Mapping[str, Any] | None = None) -> tuple:
             raise unknown(missing[0])
     problem = op.check_params(step.params)
     if problem:
-        raise WrongInput(f"step {step.index} ({step.tool}: {step.caption.en}): {step.op} {problem}",
+        raise WrongInput(f"step {step.index} ({step.tool}: {step.caption.brief}): {step.op} {problem}",
                          step_index=step.index, tool=step.tool, op=step.op)
     params = dict(step.params)
     refs: tuple[str, ...] = ()
@@ -227,7 +237,7 @@ def compile_step(step: Step, slot: Mapping[str, Any] | None = None) -> tuple:
         try:
             rule = as_rule(params.get("rule"))
         except RuleError as exc:
-            raise exc.at_step(step.index, step.tool, step.op, step.caption.en) from None
+            raise exc.at_step(step.index, step.tool, step.op, step.caption.brief) from None
         params["rule"] = rule
         refs = rule.refs
     if slot is None:  # objects are kept by name
@@ -247,7 +257,7 @@ def check_kinds(step: Step, op: Any, refs: tuple[str, ...], kinds: dict[str, str
     protocol (a Builder checks the evaluated objects themselves as it goes).
     """
     def wrong(problem: str) -> WrongInput:
-        return WrongInput(f"step {step.index} ({step.tool}: {step.caption.en}): {step.op} {problem}",
+        return WrongInput(f"step {step.index} ({step.tool}: {step.caption.brief}): {step.op} {problem}",
                           step_index=step.index, tool=step.tool, op=step.op)
 
     want = op.input_kinds(step.params, len(step.inputs))
@@ -269,18 +279,18 @@ def check_kinds(step: Step, op: Any, refs: tuple[str, ...], kinds: dict[str, str
 
 def step_failure(step: Step, exc: BaseException) -> ConstructError:
     """The error a failing step raises, the same while building and while replaying."""
-    where = (step.index, step.tool, step.op, step.caption.en)
+    where = (step.index, step.tool, step.op, step.caption.brief)
     if isinstance(exc, StepError):
         return exc.at_step(*where)
     if isinstance(exc, KeyError):
-        return MissingGiven(f"step {step.index} ({step.tool}: {step.caption.en}) needs the given {exc.args[0]!r}",
+        return MissingGiven(f"step {step.index} ({step.tool}: {step.caption.brief}) needs the given {exc.args[0]!r}",
                             step_index=step.index, tool=step.tool, op=step.op)
     if isinstance(exc, (TypeError, AttributeError, ValueError, IndexError)):
-        return WrongInput(f"step {step.index} ({step.tool}: {step.caption.en}): operation {step.op!r} "
+        return WrongInput(f"step {step.index} ({step.tool}: {step.caption.brief}): operation {step.op!r} "
                           f"cannot use its inputs {', '.join(step.inputs)}: {exc}",
                           step_index=step.index, tool=step.tool, op=step.op)
     if isinstance(exc, ConstructError):
-        return StepError(f"step {step.index} ({step.tool}: {step.caption.en}): {exc}",
+        return StepError(f"step {step.index} ({step.tool}: {step.caption.brief}): {exc}",
                          step_index=step.index, tool=step.tool, op=step.op)
     raise exc
 
@@ -646,7 +656,7 @@ class Protocol:
             reads = _givens_read(st)
             missing = [g for g in reads if g not in stored]
             if missing:
-                raise ProtocolFormatError(f"step {st.index} ({st.tool}: {st.caption.en}) reads the given "
+                raise ProtocolFormatError(f"step {st.index} ({st.tool}: {st.caption.brief}) reads the given "
                                           f"{missing[0]!r}, which 'params.givens' lacks "
                                           f"(it has {', '.join(stored) or 'none'})")
         proto = cls(construction=name, params=params, steps=steps, givens=tuple(givens))

@@ -67,14 +67,6 @@ def _terminate_cleanly():
         signal.signal(signal.SIGTERM, previous)
 
 
-def _is_float(text: str) -> bool:
-    try:
-        float(text)
-    except ValueError:
-        return False
-    return True
-
-
 def _negative_values_attached(parser: argparse.ArgumentParser, argv: Sequence[str]) -> list[str]:
     """'--rod-ratio -inf' as '--rod-ratio=-inf': argparse takes a token like -inf or -1e-3 for an option.
 
@@ -85,6 +77,8 @@ def _negative_values_attached(parser: argparse.ArgumentParser, argv: Sequence[st
     >>> _negative_values_attached(build_parser(), ["check", "crank", "--rod-ratio", "-inf", "--infinite-rod"])
     ['check', 'crank', '--rod-ratio=-inf', '--infinite-rod']
     """
+    from .commands._common import _is_number
+
     subparsers = next((a for a in parser._actions if isinstance(a, argparse._SubParsersAction)), None)
     sub = subparsers.choices.get(argv[0]) if subparsers is not None and argv else None
     if sub is None:
@@ -96,7 +90,7 @@ def _negative_values_attached(parser: argparse.ArgumentParser, argv: Sequence[st
     while i < len(argv):
         token = argv[i]
         if (token in takes_value and i + 1 < len(argv) and argv[i + 1].startswith("-")
-                and _is_float(argv[i + 1])):
+                and _is_number(argv[i + 1])):
             out.append(f"{token}={argv[i + 1]}")
             i += 2
             continue

@@ -42,9 +42,9 @@ from .constructions import Construction, get, names
 from .kernel.errors import (ConstructError, DegenerateObject, DuplicateName, GeometryError, InvalidParameter,
                             MissingGiven, NoIntersection, OutputError, ProtocolFormatError, RuleError, StepError,
                             UnknownConstruction, UnknownObject, WrongInput)
-from .kernel.figure import Figure
+
 from .kernel.geometry import Circle, Length, Line, Point
-from .kernel.instruments import Builder
+from .figure import Builder, Figure
 from .kernel.protocol import Protocol, Replay
 from .kernel.rules import farther, left_of, nearer, only, right_of, toward
 

@@ -15,7 +15,7 @@ committed gallery stays small.)
     OUT/README.md, OUT/index.html         the index, with pictures, captions, methods and checks
 
 The whole folder is built in a staging folder next to *out* and swapped in
-as one piece (:func:`construct.output.replaced_folder`), so a failure leaves
+as one piece (:func:`construct.io.staging.replaced_folder`), so a failure leaves
 the previous gallery as it was.  Only a gallery (recognised by its
 ``README.md``, :func:`is_gallery`) or an empty folder is replaced; any other
 folder or file at *out* is refused and left as it is.  Output is deterministic:
@@ -36,9 +36,9 @@ import sys
 from pathlib import Path
 from typing import Any, Iterator, Mapping
 
-from .checks import summary
+from .constructions.checking import summary
 from .constructions import get, names
-from .output import replaced_folder, write_text
+from .io.staging import replaced_folder, write_text
 from .render.output import params_text, write_outputs
 from .render.styles import STYLES
 

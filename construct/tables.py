@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 from typing import Any, Sequence
 
-from . import analytic
+from .constructions import analytic
 from .constructions import get
 from .constructions.crank import crank_angle, piston_fraction, point_name
 from .constructions.inertia import acceleration_rows, characteristic_point_rows, q_at_crank_angle_rows
@@ -98,7 +98,7 @@ def flywheel_coefficients_table(*, kz: Sequence[float] | None = None, v: Sequenc
     """Baumann's two flywheel tables (seed 004) for his paired kz and v, or the ones given."""
     from .constructions import bounded
     from .constructions.domain import FLYWHEEL_KZ, RIM_SPEED
-    from .flywheel import coefficient_rows
+    from .books.baumann.flywheel import coefficient_rows
 
     for value in kz or ():
         bounded("kz", value, FLYWHEEL_KZ)

@@ -10,7 +10,7 @@ import sys
 import pytest
 
 from construct.cli import main
-from construct.errors import OutputError
+from construct.kernel.errors import OutputError
 
 
 def run(capsys, *argv):
@@ -97,7 +97,7 @@ def test_bench_json_shape(capsys):
 
 
 def test_bench_sweep_is_measured_against_a_loop():
-    from construct.bench import sweep_bench
+    from construct.regress.replaybench import sweep_bench
 
     s = sweep_bench(size=200)
     assert s["size"] == 200 and s["sweep_s"] > 0 and s["speedup_over_loop"] == pytest.approx(
@@ -188,7 +188,7 @@ def test_diff_reads_only_bounded_regular_files(tmp_path, capsys, other):
     # Issue 12: 'construct diff a.json /dev/zero' read until memory ran out.  A device, a named pipe
     # (which would make the read wait for a writer), a folder and a file above the size limit are refused
     # before anything is read.
-    from construct.commands.diff import MAX_DRAWING_BYTES
+    from construct.cli.commands.diff import MAX_DRAWING_BYTES
 
     a = tmp_path / "a.svg"
     a.write_text('<svg xmlns="http://www.w3.org/2000/svg"/>')

@@ -13,7 +13,7 @@ from construct.tables import crank_angle_table, piston_path_table
 
 
 def exact_path_mp(k, n, ratio):
-    """x(w)/s for w = k pi / n, in 40-digit arithmetic (independent of construct.analytic)."""
+    """x(w)/s for w = k pi / n, in 40-digit arithmetic (independent of construct.constructions.analytic)."""
     with mpmath.workdps(40):
         w = mpmath.pi * k / n
         r, L = mpmath.mpf(1), mpmath.mpf(ratio)

@@ -8,7 +8,7 @@ import pytest
 from construct.constructions import get
 from construct.constructions.crank import crank_angle, point_name
 from construct.kernel.division import check_parts, choose_method, durer_error_bound, euclidean_constructible
-from construct.errors import InvalidParameter
+from construct.kernel.errors import InvalidParameter
 
 
 def durer_error_mp(theta_deg):

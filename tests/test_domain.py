@@ -14,7 +14,7 @@ import pytest
 from construct import Figure, get
 from construct.cli import main
 from construct.constructions import domain as D
-from construct.errors import InvalidParameter
+from construct.kernel.errors import InvalidParameter
 from construct.kernel.division import METHODS, check_parts, methods_for
 
 

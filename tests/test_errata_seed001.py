@@ -10,8 +10,8 @@ import mpmath
 import pytest
 
 from construct.cli import main
-from construct.errata_seed001 import entries
-from construct.reference import seed001
+from construct.books.handbook.errata import entries
+from construct.books.handbook import printed as seed001
 
 mpmath.mp.dps = 30
 

@@ -7,9 +7,9 @@ import mpmath
 import pytest
 
 from construct.cli import main
-from construct.errata import CLASSES, errata_of
-from construct.errata_seed002 import entries
-from construct.reference import seed002
+from construct.books.errata import CLASSES, errata_of
+from construct.books.mechanics.errata import entries
+from construct.books.mechanics import printed as seed002
 
 _HERE = Path(__file__).resolve()
 SEEDS = next((p for p in (_HERE.parents[2] / "shared" / "seeds", _HERE.parents[3] / "shared" / "seeds")

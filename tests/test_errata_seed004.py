@@ -11,9 +11,9 @@ import mpmath
 import pytest
 
 from construct.cli import main
-from construct.errata import CLASSES, all_errata
-from construct.errata_seed004 import entries
-from construct.reference import seed004
+from construct.books.errata import CLASSES, all_errata
+from construct.books.baumann.errata import entries
+from construct.books.baumann import printed as seed004
 
 mpmath.mp.dps = 20
 

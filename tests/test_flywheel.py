@@ -7,10 +7,10 @@ References: his stated assumptions (disc thickness b1·r1/r from r1/6 to r1, hub
 import mpmath
 import pytest
 
-from construct import flywheel as fw
+from construct.books.baumann import flywheel as fw
 from construct.cli import main
-from construct.errors import InvalidParameter
-from construct.reference import seed004
+from construct.kernel.errors import InvalidParameter
+from construct.books.baumann import printed as seed004
 
 mpmath.mp.dps = 30
 

@@ -7,7 +7,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from construct.errors import DegenerateObject
+from construct.kernel.errors import DegenerateObject
 from construct.kernel.geometry import (
     TANGENCY_TOLERANCE,
     Circle,

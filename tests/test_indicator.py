@@ -10,7 +10,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from construct.checks import all_ok
+from construct.constructions.checking import all_ok
 from construct.cli import main
 from construct.constructions import get
 from construct.constructions.crank import build_frame
@@ -22,7 +22,7 @@ from construct.constructions.indicator import (
     pressure,
     pressures_at,
 )
-from construct.errors import InvalidParameter
+from construct.kernel.errors import InvalidParameter
 from construct.kernel.instruments import Builder
 
 mpmath.mp.dps = 30

@@ -9,7 +9,7 @@ import math
 import mpmath
 import pytest
 
-from construct.checks import all_ok
+from construct.constructions.checking import all_ok
 from construct.constructions import get
 from construct.constructions.inertia import (
     abscissa,
@@ -19,7 +19,7 @@ from construct.constructions.inertia import (
     ordinate,
     q_at_crank_angle_rows,
 )
-from construct.errors import InvalidParameter
+from construct.kernel.errors import InvalidParameter
 from construct.kernel.protocol import Protocol
 
 mpmath.mp.dps = 30

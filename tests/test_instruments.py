@@ -93,7 +93,7 @@ def test_drop_perpendicular_and_its_foot():
 
 
 def test_dropping_a_perpendicular_from_a_point_on_the_line_names_the_step():
-    from construct.errors import StepError
+    from construct.kernel.errors import StepError
 
     b = builder_with(A=(0.0, 0.0), B=(4.0, 2.0), P=(2.0, 1.0))
     g = b.line("g", "A", "B")

@@ -16,7 +16,7 @@ import pytest
 from construct.constructions import get
 from construct.gallery import DISPLAY_PX, gallery_plan
 from construct.kernel.geometry import Point
-from construct.reference.seed000 import TABLE_2
+from construct.books.anhang_ii.printed import TABLE_2
 from construct.render.output import plate_caption, scene_for
 from construct.render.scene import plate_names
 from construct.render.styles import STYLES

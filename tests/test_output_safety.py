@@ -22,9 +22,9 @@ import construct.gallery as gallery
 import construct.regress.verify as verify_module
 from construct.cli import main
 from construct.constructions import get
-from construct.errors import OutputError
-import construct.output as output
-from construct.output import STAGING_PREFIX
+from construct.kernel.errors import OutputError
+import construct.io.staging as output
+from construct.io.staging import STAGING_PREFIX
 from construct.regress.pytest_plugin import GoldenChecker
 
 REPO = Path(__file__).resolve().parents[1]
@@ -346,7 +346,7 @@ def test_the_next_run_removes_the_staging_of_a_killed_one(tmp_path):
 
 def test_a_failed_replay_removes_the_folders_it_made_for_its_target(tmp_path):
     # --out a/b/c: a run that failed while writing made a/ and a/b/ for its target and left them behind.
-    from construct.output import staged_output
+    from construct.io.staging import staged_output
 
     with pytest.raises(RuntimeError):
         with staged_output(tmp_path / "a" / "b" / "c") as stage:
@@ -356,7 +356,7 @@ def test_a_failed_replay_removes_the_folders_it_made_for_its_target(tmp_path):
 
 
 def test_a_failed_gallery_removes_the_folders_it_made_for_its_target(tmp_path, monkeypatch):
-    from construct.output import replaced_folder
+    from construct.io.staging import replaced_folder
 
     with pytest.raises(RuntimeError):
         with replaced_folder(tmp_path / "a" / "b" / "g", recognise=lambda p: False, described="a gallery") as new:

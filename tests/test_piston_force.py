@@ -11,7 +11,7 @@ import io
 import mpmath
 import pytest
 
-from construct.checks import all_ok
+from construct.constructions.checking import all_ok
 from construct.cli import main
 from construct.constructions import get
 from construct.constructions.crank import crank_angle, point_name
@@ -21,7 +21,7 @@ from construct.constructions.piston_force import (
     mass_force,
     piston_force,
 )
-from construct.errors import InvalidParameter
+from construct.kernel.errors import InvalidParameter
 
 mpmath.mp.dps = 30
 PF = get("piston-force")

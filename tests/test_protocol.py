@@ -6,7 +6,7 @@ import math
 import pytest
 
 from construct.constructions import get
-from construct.errors import InvalidParameter, ProtocolFormatError, StepError
+from construct.kernel.errors import InvalidParameter, ProtocolFormatError, StepError
 from construct.kernel.instruments import Builder
 from construct.kernel.protocol import Protocol
 

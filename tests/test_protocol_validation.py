@@ -255,7 +255,9 @@ def test_check_of_a_protocol_lacking_what_its_checks_need(edit, message, crank_f
     proto = Protocol.load(path)  # it is a well-formed protocol: it loads and replays ...
     fig = construct.Figure(proto, proto.replay())
     with pytest.raises(ProtocolFormatError, match=message):  # ... but is not what the crank's checks read
-        fig.checks()
+        construct.get("crank").check(fig)
+    with pytest.raises(ProtocolFormatError, match=message):  # the same through a figure that carries them
+        construct.Figure(proto, proto.replay(), construct.get("crank").check).checks()
 
 
 def test_a_whole_protocol_still_checks(crank_file, tmp_path, capsys):
@@ -494,7 +496,7 @@ def test_fuzzed_protocols_load_and_replay_or_fail_with_a_construct_error(small_c
     except ConstructError:
         return
     try:
-        fig.checks()
+        construct.get(proto.construction).check(fig)
     except ConstructError:
         pass
 
@@ -502,7 +504,7 @@ def test_fuzzed_protocols_load_and_replay_or_fail_with_a_construct_error(small_c
 def test_divide_segment_refuses_more_parts_than_it_can_draw():
     # Issue 12 (left open by the protocol pass): divide_segment(..., 10**9) ran until memory ran out.
     from construct import Builder
-    from construct.errors import InvalidParameter
+    from construct.kernel.errors import InvalidParameter
 
     b = Builder("demo", givens={})
     b.given_point("A", 0.0, 0.0)

@@ -13,7 +13,7 @@ import json
 import pytest
 
 from construct.cli import main
-from construct.errors import ConstructError, ProtocolFormatError
+from construct.kernel.errors import ConstructError, ProtocolFormatError
 from construct.regress.protocoldiff import ProtocolChange, diff_protocol
 
 

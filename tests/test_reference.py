@@ -14,8 +14,8 @@ from pathlib import Path
 
 import pytest
 
-from construct.errata import read_printed
-from construct.reference import seed000
+from construct.books.errata import read_printed
+from construct.books.anhang_ii import printed as seed000
 
 SEEDS = Path(__file__).resolve().parents[2] / "shared" / "seeds"
 

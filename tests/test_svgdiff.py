@@ -16,7 +16,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from construct.cli import main
-from construct.errors import ConstructError
+from construct.kernel.errors import ConstructError
 from construct.regress.svgdiff import SvgChange, SvgFormatError, diff_svg, parse_svg
 
 HEAD = '<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" viewBox="0 0 200 100">'

@@ -149,7 +149,7 @@ def test_sweep_accepts_lists_and_validates_in_construction_replay():
 
 
 def test_a_sweep_names_the_step_and_the_failing_set_when_circles_do_not_meet():
-    from construct.errors import NoIntersection
+    from construct.kernel.errors import NoIntersection
 
     fig = get("crank").figure(parts=6)
     g = dict(fig.replay.givens)

@@ -9,7 +9,7 @@ import math
 import mpmath
 import pytest
 
-from construct.checks import all_ok
+from construct.constructions.checking import all_ok
 from construct.cli import main
 from construct.constructions import get
 from construct.constructions.tangential import (
@@ -21,7 +21,7 @@ from construct.constructions.tangential import (
     ok_over_r,
     t_over_unit,
 )
-from construct.errors import InvalidParameter
+from construct.kernel.errors import InvalidParameter
 from construct.kernel.protocol import Protocol
 
 mpmath.mp.dps = 30

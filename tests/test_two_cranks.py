@@ -14,7 +14,7 @@ import pytest
 from construct.cli import main
 from construct.constructions import get
 from construct.constructions.two_cranks import crank_angle, speed_radius, speeds, work_excess
-from construct.errors import InvalidParameter
+from construct.kernel.errors import InvalidParameter
 from construct.kernel.protocol import Protocol
 
 

@@ -17,9 +17,9 @@ import numpy as np
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Callable, Mapping
 
-from ..checks import Check
-from ..errors import InvalidParameter, ProtocolFormatError, UnknownConstruction
-from ..kernel.figure import Figure
+from .checking import Check, run_checks
+from ..kernel.errors import InvalidParameter, ProtocolFormatError, UnknownConstruction
+from ..figure import Figure
 from ..kernel.protocol import Caption, Protocol
 
 if TYPE_CHECKING:  # the module itself is imported where it is used: 'import construct' loads no construction
@@ -53,7 +53,17 @@ class Construction:
             raise InvalidParameter(f"{self.name} has no parameter {', '.join(unknown)}; "
                                    f"it takes {', '.join(sorted(self.defaults))}")
         merged = {**self.defaults, **{k: v for k, v in params.items() if v is not None}}
-        return self.build(**merged)
+        built = self.build(**merged)
+        return Figure(built.protocol, built.replay, self.check)
+
+    def check(self, figure: Figure) -> list[Check]:
+        """The checks of this construction on *figure* (what :meth:`Figure.checks` runs for the figures it makes).
+
+        A figure replayed from a protocol by hand has not met the construction's own check of its givens (a rod
+        no longer than the crank, say): the checks' formulas assume it, so it is made here first.
+        """
+        _validate_givens(self.name, figure.replay.givens)
+        return run_checks(self, figure)
 
     def rod_ratio_sweep(self, givens: Mapping[str, float], ratios: Any) -> dict[str, Any] | None:
         """The givens that replay a figure of this construction at every rod ratio in *ratios* (None: no rod)."""
@@ -81,7 +91,7 @@ class Construction:
             if key in values:
                 values[key] = positive(key, value)
         _validate_givens(self.name, values)
-        return Figure(protocol, protocol.replay(values))
+        return Figure(protocol, protocol.replay(values), self.check)
 
 
 _VALIDATORS: dict[str, Callable[[Mapping[str, float]], None]] = {}

@@ -24,9 +24,9 @@ from __future__ import annotations
 import math
 from typing import Any, Mapping
 
-from .. import analytic
-from ..checks import EUCLIDEAN_TOLERANCE, Check
-from ..errors import InvalidParameter
+from . import analytic
+from .checking import EUCLIDEAN_TOLERANCE, Check
+from ..kernel.errors import InvalidParameter
 from ..kernel.division import TRIAL_TOLERANCE, check_parts, divide_semicircle
 from ..kernel.instruments import Builder
 from ..kernel.protocol import Caption

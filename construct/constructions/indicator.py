@@ -40,8 +40,8 @@ import math
 from dataclasses import dataclass
 from typing import Any, Mapping, Sequence
 
-from ..checks import EUCLIDEAN_TOLERANCE, Check
-from ..errors import InvalidParameter
+from .checking import EUCLIDEAN_TOLERANCE, Check
+from ..kernel.errors import InvalidParameter
 from ..kernel.instruments import Builder
 from ..kernel.protocol import Caption
 from . import Construction, Figure, bounded, positive, register

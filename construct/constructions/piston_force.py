@@ -51,9 +51,9 @@ from __future__ import annotations
 import math
 from typing import Any, Mapping
 
-from .. import analytic
-from ..checks import EUCLIDEAN_TOLERANCE, Check
-from ..errors import InvalidParameter
+from . import analytic
+from .checking import EUCLIDEAN_TOLERANCE, Check
+from ..kernel.errors import InvalidParameter
 from ..kernel.division import check_parts, divide_semicircle
 from ..kernel.instruments import Builder
 from ..kernel.proportional import fourth_proportional, scale_line, vertex_on

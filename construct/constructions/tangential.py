@@ -49,8 +49,8 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from ..checks import EUCLIDEAN_TOLERANCE, Check
-from ..errors import GeometryError, InvalidParameter
+from .checking import EUCLIDEAN_TOLERANCE, Check
+from ..kernel.errors import GeometryError, InvalidParameter
 from ..kernel.division import check_parts, divide_semicircle
 from ..kernel.instruments import Builder
 from ..kernel.protocol import Caption, Provenance

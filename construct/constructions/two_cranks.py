@@ -53,8 +53,8 @@ from typing import Any, Mapping, Sequence
 
 import numpy as np
 
-from ..checks import EUCLIDEAN_TOLERANCE, Check
-from ..errors import InvalidParameter
+from .checking import EUCLIDEAN_TOLERANCE, Check
+from ..kernel.errors import InvalidParameter
 from ..kernel.division import MAX_PARTS, check_parts, divide_semicircle
 from ..kernel.geometry import Point
 from ..kernel.instruments import Builder

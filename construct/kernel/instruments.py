@@ -35,8 +35,6 @@ from .errors import DuplicateName, InvalidParameter, RuleError, StepError, Unkno
 from .protocol import EXACT, GIVEN, ROLES, TOOLS, Caption, Protocol, Provenance, Replay, Step, compile_step, run_step
 from .rules import Rule, as_rule
 
-if TYPE_CHECKING:  # the figure module imports this one
-    from .figure import Figure
 
 #: The most parts divide_segment draws: as many as the finest semicircle division (3600); each part
 #: costs a few steps, and 10**9 parts would fill the memory before the first one is drawn.
@@ -228,21 +226,6 @@ class Builder:
         if self._group_titles:
             params["group_titles"] = dict(sorted(self._group_titles.items()))
         return Protocol(self.construction, MappingProxyType(params), tuple(self.steps), self.replayable)
-
-    def figure(self) -> "Figure":
-        """The construction as a :class:`~construct.kernel.figure.Figure`: protocol and objects, ready to draw.
-
-        >>> b = Builder("demo", givens={})
-        >>> _ = b.given_point("A", 0.0, 0.0); _ = b.given_point("B", 2.0, 0.0)
-        >>> _ = b.midpoint("M", "A", "B")
-        >>> fig = b.figure()
-        >>> fig.replay["M"], fig.svg().startswith("<?xml")
-        (Point(1.0, 0.0), True)
-        """
-        from .figure import Figure
-
-        proto = self.protocol()
-        return Figure(proto, Replay(proto, dict(self.objects), self.givens))
 
     # -- givens ----------------------------------------------------------------
     def given_point(self, name: str, x: float, y: float, *, unit: str | None = None,

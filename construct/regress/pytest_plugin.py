@@ -76,7 +76,7 @@ def render_goldens(figure: Any, out: Path, *, style: Any = "plain", frames: str 
 
     Returns the number of standalone frames written.
     """
-    from ..output import write_text
+    from ..io.staging import write_text
     from ..render.output import FRAME_MODES, frame_steps
     from ..render.scene import build_scene
 
@@ -259,7 +259,7 @@ def is_golden_folder(folder: Path) -> bool:
 def _replace(golden_dir: Path, rendered: Path) -> None:
     """Put the rendered folder in place of the goldens as a whole (no stale frames survive);
     a folder that holds anything else is refused and left as it is."""
-    from ..output import replaced_folder
+    from ..io.staging import replaced_folder
 
     with replaced_folder(golden_dir, recognise=is_golden_folder, what="goldens folder",
                          described="a goldens folder of construct_golden (final.svg, protocol.json, steps/)") as new:

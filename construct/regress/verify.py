@@ -402,7 +402,7 @@ def _replace_tree(gallery: Path, rebuilt: Path) -> None:
     of the same builder, whose stale files go with it); any other folder is
     refused, its files are not ours.
     """
-    from ..output import replaced_folder
+    from ..io.staging import replaced_folder
 
     def recognise(folder: Path) -> bool:
         from ..gallery import is_gallery

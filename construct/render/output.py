@@ -9,7 +9,7 @@ copy.  ``DIR/protocol.json``, ``DIR/animated.svg`` (plays without script),
 k shows steps 1..k) only when asked (``--frames all`` or ``groups``): all
 frames together grow with the square of the step count.  Everything is staged
 and moved into place only when all of it has been written
-(:func:`construct.output.staged_output`); the folder then holds exactly this
+(:func:`construct.io.staging.staged_output`); the folder then holds exactly this
 run's files.  A folder is written only when it is new, empty or a previous
 replay (:func:`is_replay_folder`): nothing else in it is ever replaced.
 """
@@ -19,12 +19,15 @@ from __future__ import annotations
 import os
 import re
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from ..constructions import Construction, Figure
-from ..output import staged_output, write_text
+from ..io.staging import staged_output, write_text
 from .scene import Scene, build_scene
 from .svg import Drawing, Style, render_svg
+
+if TYPE_CHECKING:  # annotations only: the drawing layer sits below the figures and constructions it draws
+    from ..constructions import Construction
+    from ..figure import Figure
 
 __all__ = ["FRAME_MODES", "OUTPUTS", "frame_steps", "write_replay", "write_outputs", "scene_for",
            "is_replay_folder", "figure_title", "plate_caption", "params_text"]
@@ -206,7 +209,7 @@ def is_replay_folder(folder: str | Path) -> bool:
     >>> is_replay_folder(Path(__file__).parent)
     False
     """
-    from ..output import STAGING_PREFIX
+    from ..io.staging import STAGING_PREFIX
 
     folder = Path(folder)
     names = {n for n in os.listdir(folder) if not n.startswith(STAGING_PREFIX)}
@@ -223,7 +226,7 @@ def write_replay(construction: Construction | None, figure: Figure, out_dir: str
 
     table = styles or style_module.STYLES
     if style not in table:
-        from ..errors import InvalidParameter
+        from ..kernel.errors import InvalidParameter
 
         raise InvalidParameter(f"unknown style {style!r}; choose one of {', '.join(sorted(table))}")
     st = table[style]

@@ -154,7 +154,7 @@ class Plate:
             d = dict(d)
             kind = d.pop("kind")
             if kind not in kinds:
-                from ..errors import InvalidParameter
+                from ..kernel.errors import InvalidParameter
 
                 raise InvalidParameter(f"unknown plate furniture {kind!r}; choose one of {', '.join(sorted(kinds))}")
             items.append(kinds[kind](**d))

@@ -44,7 +44,7 @@ from .build import _validate, build_inertia
 from .checks import inertia_checks
 from .measure import abscissa, curve_deviation, ordinate
 from .stroke_fractions import build_q_at_stroke_fractions, stroke_fraction_checks
-from .tables import acceleration_rows, characteristic_point_rows, q_at_crank_angle_rows
+from .rows import acceleration_rows, characteristic_point_rows, q_at_crank_angle_rows
 
 __all__ = [
     "INERTIA",

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import math
 
-from ... import analytic
-from ...checks import EUCLIDEAN_TOLERANCE, Check
+from .. import analytic
+from ..checking import EUCLIDEAN_TOLERANCE, Check
 from .. import Figure
 from ..crank import angle_tolerance, crank_angle, point_name
 from .measure import _slope, abscissa, curve_deviation, ordinate

@@ -11,9 +11,9 @@ curve.
 from __future__ import annotations
 
 
-from ... import analytic
-from ...checks import Check
-from ...errors import InvalidParameter
+from .. import analytic
+from ..checking import Check
+from ...kernel.errors import InvalidParameter
 from ...kernel.instruments import Builder
 from .. import Figure
 from ..crank import build_frame, inverse_tolerance

@@ -1,0 +1,197 @@
+"""Errata of seed 004 (Baumann 1902): every printed number of his worked examples and tables beside its true value.
+
+The true value is what the number claims to be, computed from his own
+equations (the error area f_x, his closed-form tangential integral, his
+series model of the crank for the angles, his flywheel assumptions and
+tables) by :mod:`construct.books.baumann.excess_error` and :mod:`construct.books.baumann.flywheel`;
+judged as for seed 000 (:func:`construct.books.errata.classify`: within half a unit
+of the last printed place ``agrees``, within 2 ``slip``, else ``misprint``).
+Where he carries a wrong number on, the later numbers are judged against the
+value his own (wrong) inputs give, so each error is counted where it is made;
+the note gives the value from the right inputs too.
+
+>>> rows = {(e.table, e.row, e.column): e for e in entries()}
+>>> e = rows["Fehler f_x", "case p = 9,85", "k = 7,85/9,85"]
+>>> e.printed, round(e.true, 5), e.class_
+('0,805', 0.79695, 'misprint')
+>>> rows["Tabelle Schwungmoment", "kz = 75, v = 15", "1 + 0,06 v²/kz"].class_
+'agrees'
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+from . import excess_error as ee
+from . import flywheel as fw
+from ..errata import Erratum, classify, read_printed
+from . import printed as seed004
+
+__all__ = ["entries", "true_values"]
+
+_P, _P0, _S0 = 7.85, 0.15, 0.05
+_MODEL = {"admission": _P, "back_pressure": _P0, "filling": 0.10, "clearance": _S0, "compression": 0.30}
+_R_MM, _MM_PER_AT, _MM2_PER_AT_STROKE = 50.0, 10.0, 1000.0  # r = 50 mm, 1 at = 10 mm, s = 100 mm
+
+
+def _deg(text: str) -> float:
+    r = read_printed(text)
+    return float(r.value) / 60.0
+
+
+def true_values() -> dict[str, tuple[float, str]]:
+    """Key -> (true value, note on what it is and where a printed number goes wrong)."""
+    out: dict[str, tuple[float, str]] = {}
+    k1, k2 = 0.805, 1.515  # as printed and carried on
+    fx1 = ee.error_area(k1, _P0, _P0, 0.10, _S0)
+    fx1_true_k = ee.error_area(_P / 9.85, _P0, _P0, 0.10, _S0)
+    out["k1"] = (_P / 9.85, "7,85/9,75 = 0,805: a wrong divisor; the case carries 0,805 on")
+    note = (f"with k = 0,805 as printed (true k gives {fx1_true_k:.5f}); −0,01776 follows with ln 7 read as 1,952 "
+            "— he later quotes −17,76 himself against −17,78 from the integral")
+    out["fx1"] = (fx1, note)
+    out["fx1_mm2"] = (0.01776 * _MM2_PER_AT_STROKE, f"his −0,01776 in mm² (from his k: {abs(fx1) * 1000:.2f})")
+    a1 = 2685.0 / k1
+    out["area1_assumed"] = (a1, f"2685/0,805 = {a1:.1f} (2705/0,805 = 3360); true k: {2685 * 9.85 / _P:.1f}")
+    out["area1_actual"] = (3360.0 - 17.76, f"his 3360 − 17,76 (the wrong 3360 carried on; from 2685/0,805 and his "
+                           f"k: {a1 + fx1 * _MM2_PER_AT_STROKE:.2f})")
+    out["k2"] = (_P / 4.85, "7,35/4,85 = 1,515: a misread 7,85; the case carries 1,515 on")
+    out["eps2"] = (ee.epsilon(0.40, _S0), "ε = 1,05/0,45")
+    fx2 = ee.error_area(k2, _P0, _P0, 0.40, _S0)
+    note2 = (f"with k = 1,515 as printed (true k gives {ee.error_area(_P / 4.85, _P0, _P0, 0.40, _S0):.5f}); "
+             "ε rounded to 2,33 gives 0,016854")
+    out["fx2"] = (fx2, note2)
+    out["fx2_mm2"] = (0.0167 * _MM2_PER_AT_STROKE, f"his 0,0167 in mm² (recomputed: {fx2 * 1000:.2f})")
+    out["area2_actual"] = (3875.0 + 16.7, f"his 3875 + 16,7 (recomputed: {3875.0 + fx2 * 1000:.2f})")
+    coef = ee.integral_coefficients(0.10, _S0)
+    why = "partial fractions of his integrand (with sin 2α, as his integration requires)"
+    for key in "ABCD":
+        out[f"coef_{key}"] = (coef[key], why)
+    out["root_minus"] = (-coef["c2"], "5 + √37")
+    out["root_plus"] = (coef["c1"], "√37 − 5")
+    af = ee.cutoff_angle(0.10)
+    out["alpha_f"] = (math.degrees(af), f"cos α_f = −5 + √34 = {math.cos(af):.4f}; his 11,92 = 11,08 + 0,84 shows he "
+                      "took cos α_f = 0,836 (√34 as 5,836); exact kinematics 33° 47,7'")
+    # He integrates from his α_f = 33° 15'.
+    af_book = math.radians(_deg("33° 15'"))
+    kw = {"r": _R_MM, "k": k1, "p0": _P0, "P0": _P0, "s1": 0.10, "s0": _S0}
+    f_full = ee.tangential_error(af_book, math.pi, **kw)
+    out["f_full"] = (f_full, "r(P0 − k p0)[H(−1) − H(cos α_f)] with his α_f = 33° 15'")
+    out["f_full_mm2"] = (-1.778 * _MM_PER_AT, "his −1,778 mm·at, 1 at = 10 mm")
+    out["alpha_c"] = (math.degrees(ee.compression_angle(0.30)),
+                      "sa = s − s3 in his series: cos α = −5 + √(16 + 20 s3/s) (the printed √(36 − 20 s3/s) gives "
+                      "61° 30'); exact kinematics 107° 58,8'")
+    why_a = ("his equations 1)–3) (κ = P/B_max, B = P/(1,2 κ)(cos α + 0,2 cos 2α), 30 % compression) with the mean "
+             "line (1/π)∫T dα; exact kinematics, no compression or B = P/κ(…) do not reproduce it either: probably "
+             "read off his drawn diagrams")
+    for kappa, tag in ((8.0, "k8"), (2.0, "k2")):
+        c = ee.crossings(kappa, _MODEL)
+        out[f"alpha1_{tag}"] = (math.degrees(c["alpha1"]), why_a)
+        out[f"alpha2_{tag}"] = (math.degrees(c["alpha2"]), why_a)
+    printed_angles = {"alpha1_k8": "10° 20'", "alpha2_k8": "99° 10'", "alpha1_k2": "20° 30'", "alpha2_k2": "149°"}
+    for key, text in printed_angles.items():
+        out[f"cos_{key}"] = (math.cos(math.radians(_deg(text))), f"cosine of his printed {text}")
+    rad = {key: math.radians(_deg(text)) for key, text in printed_angles.items()}
+    out["alpha2_k8_rad"] = (rad["alpha2_k8"], "99° 10' in radians")
+    out["alpha1_k8_rad"] = (rad["alpha1_k8"], "10° 20' in radians (0,175 is 10° 2')")
+    fx_mm2 = f_full * _MM_PER_AT
+    for tag in ("k8", "k2"):
+        f = ee.tangential_error(af_book, rad[f"alpha2_{tag}"], **kw) * _MM_PER_AT
+        shift = (rad[f"alpha2_{tag}"] - rad[f"alpha1_{tag}"]) * fx_mm2 / math.pi
+        out[f"f_{tag}"] = (f, "r(P0 − k p0)[H(cos α2) − H(cos α_f)] with his printed angles")
+        out[f"shift_{tag}"] = (shift, "(α2 − α1)·f_x/π with his printed angles and f_x = −17,78")
+        out[f"fxc_{tag}"] = (f - shift, "r∫f1 − (α2 − α1) f_x/π")
+        out[f"alpha2_{tag}_rad"] = (rad[f"alpha2_{tag}"], "α2 in radians")
+    out["f_k8"] = (out["f_k8"][0], out["f_k8"][1] + "; his own bracket terms sum to −0,6088, i.e. −8,90 mm²")
+    out["shift_k2"] = (out["shift_k2"][0], out["shift_k2"][1] + "; he takes α1 = 0,175 (κ = 8's) for 20° 30' = 0,358: "
+                       "−13,73")
+    out["fxc_k8"] = (out["fxc_k8"][0], out["fxc_k8"][1] + "; 8,06 − 8,79 = −0,73 printed without its sign; "
+                     "recomputed the correction vanishes, as he concludes")
+    out["fu_k2"] = (659.0 + 3.7, f"his 659 + 3,7 (with the recomputed f_x' = {out['fxc_k2'][0]:.2f}: "
+                    f"{659.0 + out['fxc_k2'][0]:.1f}, the error 0,55 % the other way)")
+    # -- flywheel
+    d, bc = fw.derived(), fw.book_chain()
+    out["ln6"] = (math.log(6.0), "ln 6")
+    out["centroid"] = (d["centroid"], f"(5/6)/ln 6; from the printed 1,79: {bc['centroid']:.5f}")
+    out["disc"] = (d["disc"], "2·(5/6)/ln 6·ln 6 = 5/3 exactly (he rounds 2·0,4655·1,79 = 1,6665 up)")
+    out["hub"] = (d["hub"], "((1/6)² − (1/12)²)·24 = 1/2")
+    out["arms_factor"] = (d["disc"] + d["hub"], "5/3 + 1/2 = 13/6")
+    note_arms = (f"from his rounded 2,2 π: 1,1 γ/g; from the exact 13/6 π of his assumptions "
+                 f"{d['arms_hub'] * 1e4:.1f} (kg/m²) = {d['arms_hub']:.5f} (kg/cm²), 1,5 % less")
+    out["arms_m2"] = (fw.ARMS_HUB_PRINTED_ASSUMPTIONS * 1e4, note_arms)
+    out["arms_cm2"] = (fw.ARMS_HUB_PRINTED_ASSUMPTIONS, note_arms)
+    out["disc_coeff"] = (bc["disc_coeff"], f"1,7/2·γ/(g·10⁴); exact 5/6·γ/(g·10⁴) = {d['disc_coeff']:.5f}")
+    out["hub_coeff"] = (bc["hub_coeff"], "0,5/2·γ/(g·10⁴) = 0,01835: one digit wrong")
+    out["moment"] = (bc["moment"], f"0,0625·49/144 + 0,01825·3/144 from his printed coefficients; from his exact "
+                     f"assumptions {d['moment']:.5f} (the hub's 3/144 itself is not derivable from them)")
+    out["total_first_order"] = (fw.ARMS_HUB - fw.MOMENT, "(1 + a x)/(1 + m x) ≈ 1 + (a − m) x")
+    for i, (kz, v) in enumerate(zip(seed004.TABLE_KZ, seed004.TABLE_V)):
+        x = float(v) ** 2 / float(kz)
+        out[f"v2:{i}"] = (float(v) ** 2, "v²")
+        out[f"t1_g2:{i}"] = (fw.ARMS_HUB * x, "0,08075 v²/kz")
+        out[f"t1_total:{i}"] = (1.0 + fw.ARMS_HUB * x, "1 + 0,08075 v²/kz")
+        out[f"t2_moment:{i}"] = (1.0 + fw.MOMENT * x, "1 + 0,0218 v²/kz")
+        out[f"t2_weight:{i}"] = (1.0 + fw.TOTAL * x, "1 + 0,06 v²/kz")
+    for i, row in enumerate(fw.worked_totals()):
+        out[f"worked_v:{i}"] = (row["v"], "π D n/60")
+        pair = "kz = 5 v as his tables pair them"
+        out[f"worked_total:{i}"] = (row["total"], f"G_s(1 + 0,06 v²/kz), {pair}; to 50 kg")
+        out[f"worked_rim:{i}"] = (row["rim"], f"G_total/(1 + 0,08075 v²/kz), {pair}; to 50 kg (G_s/(1 + 0,0218 v²/kz) "
+                                  f"of his derivation gives {row['rim_by_moment']:.0f})")
+        out[f"worked_arms:{i}"] = (row["arms_hub"], "G_total − rim; to 50 kg")
+    return out
+
+
+def _units(reading_value: Fraction, unit: Fraction, true: float) -> Fraction:
+    return (reading_value - Fraction(true)) / unit
+
+
+def _entry(p: seed004.Printed, true: float, note: str) -> Erratum:
+    reading = read_printed(p.text.replace(",", "."))
+    unit = Fraction(p.resolution) if p.resolution else reading.unit
+    value = reading.value
+    t = true * 60.0 if reading.is_angle else true
+    units = _units(value, unit, t)
+    verdict = classify(units)
+    notes = [note]
+    if verdict != "agrees" and classify(_units(-value, unit, t)) != "misprint":
+        notes.append("sign dropped: the magnitude is right")
+    if verdict == "slip" and p.table.startswith("Tabelle") and abs(float(value) - t) <= 0.0025 * abs(t):
+        notes.append("within a slide rule's three figures")
+    if verdict == "misprint" and not reading.is_angle and p.text.lstrip("-").startswith("1") and len(p.text) > 3:
+        shorter = Fraction(p.text.replace(",", ".").lstrip("-")[1:] or "0")
+        if classify(_units(shorter, unit, abs(t))) != "misprint":
+            notes.append("a stray leading 1: the rest agrees")
+    return Erratum(seed004.SOURCE, p.table, p.row, p.column, p.text, true, float(units) + 0.0, verdict, "; ".join(notes))
+
+
+_FORMULAS = {
+    "df_x": (r"d f_x = \frac{s_1 - s_a}{s_a + s_0} (P_0 - k p_0) d s_a",
+             "denominator s_a + s_0 (from x two lines above); the integral is evaluated with it"),
+    "f_x integral": (r"f_x = (P_0 - k p_0) \int_{s_1}^{s} \frac{s_1 - s_a}{s_a + s_0} d s_a",
+                     "numerator s_1 - s_a; the next line splits exactly this integrand"),
+    "Gl. 1 (first line)": (r"P (1 - \frac{1}{1,2 κ} (cos α + 0,2 cos 2α))",
+                           "B_a = P/(1,2 κ)(…); the next line's 1/(2,4 κ) follows from 1,2, not 2,2"),
+    "sin(α + β)/cos β": (r"sin α + \frac{sin 2α}{10 - 0,2 sin^2 α}",
+                         "cos α tan β = (λ/2) sin 2α/√(1 − λ² sin²α) ≈ sin 2α/(10 − 0,2 sin²α) for λ = 0,2; "
+                         "his closed-form integral (A, B, C, D reproduce) needs sin 2α"),
+    "t'_a (first form)": (r"t'_a = x (sin α + \frac{sin 2α}{10 - 0,2 sin^2 α})", "as above (sin 2α)"),
+    "x in the tangential diagram": (r"x = \frac{s_1 - s_a}{s_a + s_0} (P_0 - k p_0)",
+                                    "P_0 - k p_0, as derived for the steam diagram and used in the next line"),
+    "A, B": (r"\sqrt{9 + 5 \frac{s_0}{s}}", "c1 − c2 = 2√(36 + 20 s0/s) = 4√(9 + 5 s0/s); the roots ±√37 need +"),
+    "α_c": (r"cos α = -5 + \sqrt{16 + 20 \frac{s_3}{s}}  (or \sqrt{36 - 20 \frac{s_2}{s}})",
+            "s_a = s − s_3 in his series; with s_3 as printed the formula gives 61° 30', his 107° 50' needs s_2 = 0,7 s"),
+    "Rechnungsgang": (r"Kranzgewicht = G_{total} / (1 + 0,08075 v^2/k_z)",
+                      "G_total = G_1(1 + 0,08075 v²/kz); his own list of rim weights divides the total (2650/1,325 "
+                      "= 2000), dividing G_s would give 1610"),
+}
+
+
+def entries() -> list[Erratum]:
+    """Every printed number of seed 004 with its verdict, in the order of the text, then the formula misprints."""
+    truth = true_values()
+    out = [_entry(p, *truth[p.key]) for p in seed004.all_printed()]
+    for f in seed004.printed_formulas():
+        true, note = _FORMULAS[f.row]
+        out.append(Erratum(seed004.SOURCE, "formula", f.row, f.column, f.text, true, None, "misprint", note))
+    return out

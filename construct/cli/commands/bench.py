@@ -1,0 +1,64 @@
+"""construct bench: how fast the kernel builds, replays and sweeps the crank construction."""
+
+from __future__ import annotations
+
+import json
+
+from ...regress.replaybench import CASES, run_bench, sweep_bench, verdicts
+
+NAME = "bench"
+HELP = ("benchmark building, replaying and sweeping the crank construction "
+        "(Dürer n = 18, 360; dividers n = 18, 360, 3600; a sweep over 10,000 rod ratios)")
+
+
+def add_arguments(p) -> None:
+    p.add_argument("--json", action="store_true", help="print the measurements as JSON")
+    p.add_argument("--parts", type=int, action="append", help="cases to run (dividers) instead of the standard set")
+    p.add_argument("--outputs", action="store_true",
+                   help="time the outputs instead: replay at 360 and 1440 parts, gallery, verify (about a minute)")
+    p.add_argument("--diff", action="store_true",
+                   help="time 'construct diff' instead: two drawings of 10,000 and 100,000 elements, one moved "
+                        "(time, peak memory, time per element; about a minute)")
+    p.add_argument("--diff-million", action="store_true",
+                   help="with --diff: also 1,000,000 elements (about 80 MB per drawing; minutes)")
+
+
+def run(args) -> int:
+    if args.diff or args.diff_million:
+        from ...regress.diffbench import SIZES, diff_verdicts, run_diff_bench
+
+        found = run_diff_bench(SIZES + ((1_000_000,) if args.diff_million else ()))
+        if args.json:
+            print(json.dumps(found, indent=1))
+            return 0
+        for line in diff_verdicts(found):
+            print(line)
+        return 0
+    if args.outputs:
+        from ...regress.outputbench import output_verdicts, run_output_bench
+
+        found = run_output_bench()
+        if args.json:
+            print(json.dumps(found, indent=1))
+            return 0
+        for r in found:
+            size = f"  {r['bytes'] / 1e6:8.2f} MB" if "bytes" in r else ""
+            print(f"{r['command']:58s} {r['wall_s']:7.2f} s wall {r['cpu_s']:7.2f} s CPU{size}")
+        for line in output_verdicts(found):
+            print(line)
+        return 0
+    cases = tuple((n, "dividers") for n in args.parts) if args.parts else CASES
+    results = run_bench(cases)
+    sweep = None if args.parts else sweep_bench()
+    if args.json:
+        print(json.dumps({"cases": results, "sweep": sweep}, indent=1))
+        return 0
+    for r in results:
+        print(f"{r['case']:28s} {r['steps']:7d} steps  build {r['build_s'] * 1e3:9.2f} ms "
+              f"({r['build_per_step_us']:6.2f} us/step)  replay {r['replay_s'] * 1e3:9.3f} ms "
+              f"({r['replay_per_step_us']:.2f} us/step)")
+    if sweep is not None:
+        print(f"{sweep['case']}: {sweep['sweep_s'] * 1e3:.1f} ms (one replay {sweep['scalar_replay_s'] * 1e3:.3f} ms)")
+    for line in verdicts(results, sweep):
+        print(line)
+    return 0

@@ -1,0 +1,95 @@
+"""``construct errata``: every printed number of the seeds' tables and worked examples beside its true value.
+
+Text output is an aligned table, one line per printed number or formula, and
+a summary of the counts per class; ``--format json`` prints the list of
+records (``true`` to 8 significant digits, ``units`` to 2 decimals);
+``--class`` keeps one class only.
+
+>>> from construct.cli import main
+>>> main(["errata", "--class", "slip", "--seed", "000"])  # doctest: +ELLIPSIS
+table ...
+Tabelle 1 ... 0° ... 0.1666 ... slip ... truncated instead of rounded
+...
+21 printed numbers: 0 agrees, 21 slip, 0 misprint; 0 formula misprints
+0
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from collections import Counter
+
+from ...books.errata import CLASSES, Erratum, errata_of
+
+NAME = "errata"
+HELP = ("List every printed number of the seeds' tables and worked examples with its true value and a verdict "
+        "(agrees/slip/misprint).")
+
+_HEADINGS = ("table", "row", "column", "printed", "true", "units", "class", "note")
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--format", choices=("text", "json"), default="text", help="output format (default: text)")
+    parser.add_argument(
+        "--class", dest="class_", choices=CLASSES, default=None, help="show only the entries of this class"
+    )
+    parser.add_argument("--seed", default=None, metavar="NNN",
+                        help="show only one seed's entries (000, 001, 002, 004; default: all)")
+
+
+def run(args: argparse.Namespace) -> int:
+    entries = [e for e in errata_of(args.seed or "all") if args.class_ is None or e.class_ == args.class_]
+    if args.format == "json":
+        print(json.dumps([_json_record(e) for e in entries], ensure_ascii=False, indent=1))
+    else:
+        print(_text_table(entries))
+    return 0
+
+
+def _json_record(e: Erratum) -> dict[str, object]:
+    record = e.as_dict()
+    if isinstance(e.true, float):
+        record["true"] = float(f"{e.true:.8g}") + 0.0  # + 0.0 turns -0.0 into 0.0
+    if e.units is not None:
+        record["units"] = round(e.units, 2) + 0.0
+    return record
+
+
+def _format_true(e: Erratum) -> str:
+    return e.true if isinstance(e.true, str) else f"{e.true:.8g}"
+
+
+def _text_table(entries: list[Erratum]) -> str:
+    numbers = [e for e in entries if e.table != "formula"]
+    formulas = [e for e in entries if e.table == "formula"]
+    lines = []
+    if numbers:
+        rows = [
+            (e.table, e.row, e.column, e.printed, _format_true(e), f"{e.units:+.2f}", e.class_, e.note)
+            for e in numbers
+        ]
+        widths = [max([len(h)] + [len(r[i]) for r in rows]) for i, h in enumerate(_HEADINGS[:-1])]
+        lines.append(_line(_HEADINGS, widths))
+        lines += [_line(r, widths) for r in rows]
+    if formulas:
+        # Whole formulas would stretch every column of the table: one block each instead.
+        if lines:
+            lines.append("")
+        lines.append("formula misprints")
+        for e in formulas:
+            lines += [f"  {e.row} ({e.column})", f"    printed: {e.printed}", f"    true:    {e.true}", f"    note:    {e.note}"]
+    lines.append(_summary(entries))
+    return "\n".join(lines)
+
+
+def _line(cells: tuple[str, ...], widths: list[int]) -> str:
+    padded = [cell.ljust(w) if i != 5 else cell.rjust(w) for i, (cell, w) in enumerate(zip(cells, widths))]
+    return "  ".join(padded + [cells[-1]]).rstrip()
+
+
+def _summary(entries: list[Erratum]) -> str:
+    numbers = Counter(e.class_ for e in entries if e.table != "formula")
+    formulas = sum(1 for e in entries if e.table == "formula")
+    counts = ", ".join(f"{numbers[c]} {c}" for c in CLASSES)
+    return f"{sum(numbers.values())} printed numbers: {counts}; {formulas} formula misprints"

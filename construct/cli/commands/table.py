@@ -1,0 +1,110 @@
+"""construct table: the books' tables regenerated from the constructions."""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+import sys
+
+from ...kernel.errors import InvalidParameter
+from ...kernel.division import MAX_PARTS
+from ...tables import TABLES
+from ..common import _number, _whole
+
+NAME = "table"
+HELP = ("print a table (piston-path, crank-angle, acceleration, characteristic-points, mass-forces, "
+        "tangential-pressure, flywheel-coefficients, speed-fluctuation)")
+
+
+def add_arguments(p) -> None:
+    p.add_argument("table", metavar="TABLE", help=", ".join(TABLES))
+    p.add_argument("--rod-ratio", type=_number, action="append", metavar="K", help="L/r (repeat for acceleration)")
+    p.add_argument("--parts", type=_whole, default=18, metavar="N")
+    p.add_argument("--method", default="auto")
+    p.add_argument("--divisions", type=_whole, default=10, metavar="M")
+    p.add_argument("--step", type=_number, default=10.0, metavar="DEG", help="angle step of the acceleration table")
+    p.add_argument("--weight", type=_number, metavar="G", help="mass-forces: weight of the reciprocating parts, kg")
+    p.add_argument("--rpm", type=_number, metavar="N", help="mass-forces: revolutions per minute")
+    p.add_argument("--crank-radius", type=_number, metavar="R", help="mass-forces: crank radius, m")
+    p.add_argument("--rod-length", type=_number, metavar="L", help="mass-forces: connecting-rod length, m")
+    p.add_argument("--kz", type=_number, action="append", metavar="KG_CM2", help="allowed stress kz (flywheel; repeat)")
+    p.add_argument("--v", type=_number, action="append", metavar="M_S", help="rim speed v (flywheel; repeat)")
+    p.add_argument("--infinite-rod", action="store_true", help="an infinitely long rod (speed-fluctuation)")
+    p.add_argument("--format", choices=("text", "csv"), default="text")
+
+
+def _one_ratio(args) -> float:
+    if not args.rod_ratio:
+        raise InvalidParameter(f"table {args.table} needs --rod-ratio K")
+    if len(args.rod_ratio) > 1:
+        raise InvalidParameter(f"table {args.table} takes one --rod-ratio (the acceleration table takes several)")
+    return args.rod_ratio[0]
+
+
+def _check_step(step: float, span: int) -> None:
+    """--step must divide *span* degrees, and the semicircle's 180/step parts are at most MAX_PARTS.
+
+    Said in terms of --step: the construction underneath speaks of "parts", which the user did not give.
+    """
+    if not (math.isfinite(step) and 0 < step <= span):
+        raise InvalidParameter(f"--step must be between 0 and {span} degrees, got {step!r}")
+    n = round(180.0 / step)
+    if n > MAX_PARTS:
+        raise InvalidParameter(f"--step must be at least {180 / MAX_PARTS:g} degrees (the table is read off a "
+                               f"semicircle divided into 180/step parts, at most {MAX_PARTS}), got {step!r}")
+    if abs(n * step - 180.0) > 1e-9 or (span == 90 and n % 2):
+        raise InvalidParameter(f"--step must divide {span} degrees (e.g. {span / 9:g}, {span / 18:g}), got {step!r}")
+
+
+def run(args) -> int:
+    if args.table not in TABLES:
+        raise InvalidParameter(f"unknown table {args.table!r}; choose one of {', '.join(TABLES)}")
+    if args.table == "piston-path":
+        cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args), parts=args.parts, method=args.method)
+    elif args.table == "crank-angle":
+        cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args), divisions=args.divisions)
+    elif args.table == "acceleration":
+        if not args.rod_ratio:
+            raise InvalidParameter("table acceleration needs at least one --rod-ratio K")
+        _check_step(args.step, 180)
+        cols, rows = TABLES[args.table](rod_ratios=args.rod_ratio, step=args.step)
+    elif args.table == "mass-forces":
+        missing = [f"--{k}" for k in ("weight", "rpm", "crank-radius", "rod-length")
+                   if getattr(args, k.replace("-", "_")) is None]
+        if missing:
+            raise InvalidParameter(f"table mass-forces needs {' '.join(missing)}")
+        cols, rows = TABLES[args.table](weight=args.weight, rpm=args.rpm, crank_radius=args.crank_radius,
+                                        rod_length=args.rod_length, parts=args.parts)
+    elif args.table == "tangential-pressure":
+        cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args), parts=args.parts, method=args.method)
+    elif args.table == "flywheel-coefficients":
+        cols, rows = TABLES[args.table](kz=args.kz, v=args.v)
+    elif args.table == "speed-fluctuation":
+        if args.infinite_rod and args.rod_ratio:
+            raise InvalidParameter("give either --rod-ratio K or --infinite-rod, not both")
+        _check_step(args.step, 90)
+        cols, rows = TABLES[args.table](rod_ratio=None if args.infinite_rod else _one_ratio(args), step=args.step)
+    else:
+        cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args))
+    sys.stdout.write(format_table(cols, rows, args.format))
+    return 0
+
+
+def _cell(v) -> str:
+    if isinstance(v, float):
+        return f"{v + 0.0:.15g}"  # + 0.0 turns a measured -0 into 0
+    return str(v)
+
+
+def format_table(cols, rows, fmt: str) -> str:
+    if fmt == "csv":
+        buf = io.StringIO()
+        w = csv.writer(buf, lineterminator="\n")
+        w.writerow(cols)
+        for r in rows:
+            w.writerow([_cell(r[c]) for c in cols])
+        return buf.getvalue()
+    cells = [[c for c in cols]] + [[_cell(r[c]) for c in cols] for r in rows]
+    widths = [max(len(row[i]) for row in cells) for i in range(len(cols))]
+    return "".join("  ".join(v.rjust(w) for v, w in zip(row, widths)) + "\n" for row in cells)

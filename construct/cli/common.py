@@ -1,0 +1,148 @@
+"""Options shared by the subcommands that build a construction."""
+
+from __future__ import annotations
+
+import argparse
+import math
+from typing import Any
+
+from ..constructions import Construction, Figure, find, get
+from ..kernel.errors import InvalidParameter
+from ..kernel.protocol import Protocol
+
+
+def _number(text: str) -> float:
+    try:
+        v = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+    return v
+
+
+def _whole(text: str) -> int:
+    try:
+        return int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+
+
+def add_construction_options(p: argparse.ArgumentParser, *, name_optional: bool = True) -> None:
+    p.add_argument("name", nargs="?" if name_optional else None, metavar="CONSTRUCTION",
+                   help="crank, crank-angle, inertia-curve (see 'construct list')")
+    p.add_argument("--protocol", metavar="FILE", help="replay an exported protocol.json instead of building afresh")
+    from ..constructions.domain import ROD_RATIO
+
+    p.add_argument("--rod-ratio", type=_number, metavar="K", help=f"connecting rod length over crank radius, "
+                   f"{ROD_RATIO.low:g} <= L/r <= {ROD_RATIO.high:g}")
+    p.add_argument("--parts", type=_whole, metavar="N", help="parts of the semicircle (1..3600)")
+    p.add_argument("--method", metavar="M", help="division method: auto, exact, durer, neusis, dividers")
+    p.add_argument("--divisions", type=_whole, metavar="M", help="divisions of the stroke (crank-angle)")
+    p.add_argument("--radius", type=_number, metavar="R", help="crank radius r in drawing units")
+    p.add_argument("--pressure-ratio", type=_number, metavar="F/f", help="F/f of the inertia pressures")
+    p.add_argument("--infinite-rod", action="store_true", default=None,
+                   help="an infinitely long connecting rod (instead of --rod-ratio)")
+    p.add_argument("--fluctuation", type=_number, metavar="K", help="Qr/((m1+m2) v1^2) of the two cranks")
+    p.add_argument("--magnify", type=_number, metavar="G", help="magnification of the speed deviations (two-cranks)")
+    p.add_argument("--given", action="append", default=[], metavar="NAME=VALUE",
+                   help="set a given of a --protocol by its own name (repeatable), e.g. --given s=10")
+    _add_generic_options(p)
+
+
+PARAM_OPTIONS = {"rod_ratio": "rod_ratio", "parts": "parts", "method": "method", "divisions": "divisions",
+                 "radius": "r", "pressure_ratio": "pressure_ratio", "infinite_rod": "infinite_rod",
+                 "fluctuation": "fluctuation", "magnify": "magnify"}
+
+
+def _generic_params() -> dict[str, tuple[Any, str]]:
+    """Every other construction parameter, as --its-name-with-dashes: (type of its default, help)."""
+    from ..constructions import names
+
+    covered = set(PARAM_OPTIONS.values())
+    out: dict[str, tuple[Any, str]] = {}
+    for name in names():
+        c = get(name)
+        helps = c.extra.get("help", {})
+        for key, default in c.defaults.items():
+            if key in covered or key in out:
+                continue
+            kind = _whole if isinstance(default, int) and not isinstance(default, bool) else (
+                _number if isinstance(default, float) else str)
+            out[key] = (kind, helps.get(key, f"{key.replace('_', ' ')} (default {default!r} in {name})"))
+    return out
+
+
+def _add_generic_options(p: argparse.ArgumentParser) -> None:
+    for key, (kind, text) in sorted(_generic_params().items()):
+        p.add_argument(f"--{key.replace('_', '-')}", dest=key, type=kind, metavar=key.upper(), help=text)
+
+
+def given_options(args: argparse.Namespace) -> dict[str, Any]:
+    if getattr(args, "infinite_rod", None) and getattr(args, "rod_ratio", None) is not None:
+        raise InvalidParameter("give either --rod-ratio K or --infinite-rod, not both")
+    out = {}
+    options = {**PARAM_OPTIONS, **{key: key for key in _generic_params()}}
+    for opt, param in options.items():
+        v = getattr(args, opt, None)
+        if v is not None:
+            if isinstance(v, float) and not math.isfinite(v):
+                raise InvalidParameter(f"--{opt.replace('_', '-')} must be finite, got {v!r}")
+            out[param] = v
+    return out
+
+
+def load_protocol(path: str) -> Protocol:
+    """A protocol file, read bounded and checked whole (:meth:`Protocol.load`)."""
+    return Protocol.load(path)
+
+
+def _named_givens(args: argparse.Namespace) -> dict[str, float]:
+    out: dict[str, float] = {}
+    for item in getattr(args, "given", None) or []:
+        name, sep, value = item.partition("=")
+        if not sep or not name:
+            raise InvalidParameter(f"--given takes NAME=VALUE, got {item!r}")
+        v = _number(value) if _is_number(value) else None
+        if v is None or not math.isfinite(v):
+            raise InvalidParameter(f"--given {name} must be a finite number, got {value!r}")
+        out[name] = v
+    return out
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+def figure_from_args(args: argparse.Namespace) -> tuple[Construction | None, Figure]:
+    """Build the named construction, or replay --protocol with the given givens.
+
+    A protocol of a construction this library does not know replays all the
+    same (it needs nothing but the op table); the construction is then None.
+    """
+    params = given_options(args)
+    named = _named_givens(args)
+    if args.protocol:
+        proto = load_protocol(args.protocol)
+        if args.name and args.name != proto.construction:
+            raise InvalidParameter(f"the protocol is of {proto.construction!r}, not {args.name!r}")
+        c = find(proto.construction)
+        if c is not None and not named:
+            return c, c.replay(proto, **params)
+        givens = dict(proto.params.get("givens", {}))
+        for key, value in {**params, **named}.items():
+            if key not in givens:
+                raise InvalidParameter(f"the protocol {proto.construction!r} has no given {key!r}; "
+                                       f"it has {', '.join(sorted(givens)) or 'none'}")
+            givens[key] = value
+        if c is not None:  # a book construction's givens keep its stated domain, whatever they are called
+            c.validate(givens)
+        return c, Figure(proto, proto.replay(givens))
+    if named:
+        raise InvalidParameter("--given sets the givens of a --protocol; a named construction takes its own options")
+    if not args.name:
+        raise InvalidParameter("name a construction (see 'construct list') or give --protocol FILE")
+    c = get(args.name)
+    return c, c.figure(**params)

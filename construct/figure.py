@@ -1,0 +1,95 @@
+"""A figure: a construction's protocol, the objects a replay of it made, and how to check it.
+
+It is what :meth:`Builder.figure` and every registered construction return.
+It sits above the kernel and the drawing layer (:mod:`construct.render`, loaded
+when a drawing is asked for, as shapely loads matplotlib only inside its
+plotting functions) and below the book constructions: a construction hands
+its figures the function that checks them, so nothing here looks the
+constructions up.
+
+:class:`Builder` is the kernel's :class:`~construct.kernel.instruments.Builder`
+with the one method that needs this layer, :meth:`Builder.figure`.
+
+>>> b = Builder("demo", givens={})
+>>> _ = b.given_point("A", 0.0, 0.0); _ = b.given_point("B", 2.0, 0.0)
+>>> _ = b.midpoint("M", "A", "B")
+>>> fig = b.figure()
+>>> fig.replay["M"], fig.svg().startswith("<?xml"), fig.checks()
+(Point(1.0, 0.0), True, [])
+"""
+
+from __future__ import annotations
+
+import numbers
+from dataclasses import dataclass, field
+from typing import Any, Callable, Mapping
+
+from .kernel import instruments
+from .kernel.errors import InvalidParameter
+from .kernel.protocol import Protocol, Replay
+
+__all__ = ["Figure", "Builder"]
+
+
+@dataclass(frozen=True)
+class Figure:
+    """A construction built (or replayed): its protocol, the objects it made, and its checks (if a book's)."""
+
+    protocol: Protocol
+    replay: Replay
+    #: Compares the figure's constructed quantities with the analytic formulas; set by the book construction
+    #: that built or replayed the figure (:meth:`construct.constructions.Construction.check`), None otherwise.
+    checker: Callable[["Figure"], list] | None = field(default=None, compare=False, repr=False)
+
+    @property
+    def params(self) -> Mapping[str, Any]:
+        return self.protocol.params
+
+    def __repr__(self) -> str:
+        return f"<Figure {self.protocol.construction!r}: {len(self.protocol.steps)} steps>"
+
+    def svg(self, style: str = "plain", *, upto: int | None = None) -> str:
+        """The figure (all steps, or steps 1..upto) as SVG text in a named style (plain, historical, teaching)."""
+        from .render.notebook import figure_svg  # the rendering layer, loaded when a drawing is asked for
+        from .render.styles import STYLES
+
+        if not isinstance(style, str) or style not in STYLES:
+            raise InvalidParameter(f"unknown style {style!r}; choose one of {', '.join(sorted(STYLES))}")
+        if upto is not None and (isinstance(upto, bool) or not isinstance(upto, numbers.Integral)):
+            raise InvalidParameter(f"upto is a step number, got {upto!r}")
+        return figure_svg(self, style=style, upto=upto)
+
+    def checks(self) -> list:
+        """The construction's checks, when a book construction built or replayed the figure; else none.
+
+        Each check compares a quantity measured on the figure with its analytic value.
+        """
+        return [] if self.checker is None else self.checker(self)
+
+    def with_givens(self, **givens: Any) -> "Figure":
+        """The same steps replayed with other givens (arrays make a sweep)."""
+        values = dict(self.replay.givens)
+        values.update(givens)
+        return Figure(self.protocol, self.protocol.replay(values), self.checker)
+
+    def _repr_svg_(self) -> str:
+        """Inline display in Jupyter: the final figure in the teaching style."""
+        from .render.notebook import figure_repr_svg
+
+        return figure_repr_svg(self)
+
+
+class Builder(instruments.Builder):
+    __doc__ = instruments.Builder.__doc__
+
+    def figure(self) -> Figure:
+        """The construction as a :class:`Figure`: protocol and objects, ready to draw.
+
+        >>> b = Builder("demo", givens={})
+        >>> _ = b.given_point("A", 0.0, 0.0); _ = b.given_point("B", 2.0, 0.0)
+        >>> _ = b.midpoint("M", "A", "B")
+        >>> b.figure().replay["M"]
+        Point(1.0, 0.0)
+        """
+        proto = self.protocol()
+        return Figure(proto, Replay(proto, dict(self.objects), self.givens))

@@ -1,0 +1,117 @@
+"""The speed benchmark of the kernel: build, replay and sweep the crank construction.
+
+Targets (issue "A kernel that is a library"), printed with a verdict by
+``construct bench``:
+
+- replaying the 18-part crank with new givens in at most 1 ms;
+- replay time per step flat (within 2x) from 18 to 3600 parts *for the same
+  division method* -- the dividers, which divide any n; their trial step
+  (setting the dividers by trial, O(n) by nature) is timed on its own and left
+  out of the per-step figure;
+- build time per step flat within 2x over the same cases;
+- a sweep of the 18-part crank over 10,000 rod ratios in at most 100x the time
+  of one scalar replay (that is >= 100x faster than looping), measured in the
+  same run.
+
+Timings are the best of several runs; a busy machine shows in them.
+"""
+
+from __future__ import annotations
+
+import time
+from typing import Any, Callable
+
+import numpy as np
+
+from ..constructions import get
+
+__all__ = ["run_bench", "sweep_bench", "verdicts", "CASES"]
+
+#: (parts, method): Dürer's division where it applies, and the dividers for 18 .. 3600 parts.
+CASES = ((18, "durer"), (360, "durer"), (18, "dividers"), (360, "dividers"), (3600, "dividers"))
+
+
+def _best(fn: Callable[[], Any], repeat: int) -> float:
+    best = float("inf")
+    for _ in range(repeat):
+        t = time.perf_counter()
+        fn()
+        best = min(best, time.perf_counter() - t)
+    return best
+
+
+def _trial_step_time(proto, givens, repeat: int) -> float:
+    """The dividers' trial step alone: the replay up to it, less the replay up to the step before."""
+    for step in proto.steps:
+        if step.op == "trial_chord":
+            k = step.index
+            with_it = _best(lambda: proto.replay(givens, upto=k), repeat)
+            without = _best(lambda: proto.replay(givens, upto=k - 1), repeat)
+            return max(0.0, with_it - without)
+    return 0.0
+
+
+def run_bench(cases=CASES, rod_ratio: float = 5.0) -> list[dict[str, Any]]:
+    crank = get("crank")
+    results = []
+    for n, method in cases:
+        repeat = 40 if n <= 18 else 5 if n <= 360 else 2
+        fig = crank.figure(parts=n, rod_ratio=rod_ratio, method=method)
+        build = _best(lambda: crank.figure(parts=n, rod_ratio=rod_ratio, method=method), max(1, repeat // 4))
+        proto = fig.protocol
+        new = {"r": 1.0, "rod_ratio": rod_ratio + 0.5}
+        proto.replay(new)  # compile once, as any replayer would
+        replay = _best(lambda: proto.replay(new), repeat)
+        trial = _trial_step_time(proto, new, repeat)
+        steps = len(proto.steps)
+        results.append({
+            "case": f"crank n={n} ({fig.params['method']})",
+            "parts": n,
+            "method": fig.params["method"],
+            "steps": steps,
+            "build_s": build,
+            "build_per_step_us": build / steps * 1e6,
+            "replay_s": replay,
+            "trial_step_s": trial,
+            "replay_per_step_us": (replay - trial) / (steps - (1 if trial else 0)) * 1e6,
+        })
+    return results
+
+
+def sweep_bench(size: int = 10_000, rod_ratio: float = 5.0) -> dict[str, Any]:
+    """One replay of the 18-part crank against one sweep over *size* rod ratios."""
+    fig = get("crank").figure(parts=18, rod_ratio=rod_ratio)
+    proto = fig.protocol
+    one = {"r": 1.0, "rod_ratio": rod_ratio + 0.5}
+    many = {"r": 1.0, "rod_ratio": np.linspace(1.05, 50.0, size)}
+    proto.replay(one)
+    scalar = _best(lambda: proto.replay(one), 40)
+    sweep = _best(lambda: proto.replay(many), 3)
+    return {"case": f"crank n=18 sweep over {size} rod ratios", "size": size, "scalar_replay_s": scalar,
+            "sweep_s": sweep, "sweep_over_scalar": sweep / scalar, "speedup_over_loop": scalar * size / sweep}
+
+
+def verdicts(results: list[dict[str, Any]], sweep: dict[str, Any] | None = None) -> list[str]:
+    out = []
+    first = next(r for r in results if r["parts"] == 18 and r["method"] == "durer")
+    ok = first["replay_s"] <= 1e-3
+    out.append(f"target replay n=18 <= 1 ms: {first['replay_s'] * 1e3:.3f} ms -> {'met' if ok else 'MISSED'}")
+    for method in sorted({r["method"] for r in results}):
+        same = [r for r in results if r["method"] == method]
+        if len(same) < 2:
+            continue
+        for key, what in (("replay_per_step_us", "replay"), ("build_per_step_us", "build")):
+            per = [r[key] for r in same]
+            spread = max(per) / min(per)
+            sizes = "/".join(str(r["parts"]) for r in same)
+            out.append(f"target {what} time per step flat within 2x ({method}, n = {sizes}): "
+                       f"{min(per):.2f}..{max(per):.2f} us/step (x{spread:.2f}) -> {'met' if spread <= 2 else 'MISSED'}")
+        trials = [f"n={r['parts']}: {r['trial_step_s'] * 1e3:.2f} ms" for r in same if r["trial_step_s"]]
+        if trials:
+            out.append(f"  the dividers' trial step alone (O(n) by nature): {', '.join(trials)}")
+    if sweep is not None:
+        ok = sweep["sweep_over_scalar"] <= 100.0
+        out.append(f"target sweep of {sweep['size']} rod ratios <= 100x one replay: "
+                   f"{sweep['sweep_s'] * 1e3:.1f} ms = x{sweep['sweep_over_scalar']:.1f} of {sweep['scalar_replay_s'] * 1e3:.3f} ms, "
+                   f"{sweep['speedup_over_loop']:.0f}x faster than looping -> {'met' if ok else 'MISSED'}")
+    return out

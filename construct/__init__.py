@@ -48,7 +48,18 @@ from .figure import Builder, Figure
 from .kernel.protocol import Protocol, Replay
 from .kernel.rules import farther, left_of, nearer, only, right_of, toward
 
-__version__ = "0.2.0"
+
+def _version() -> str:
+    """The installed distribution's version: pyproject.toml is the one place it is written."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("construct-steam")
+    except PackageNotFoundError:  # run from a source tree that was never installed
+        return "0+unknown"
+
+
+__version__ = _version()
 
 __all__ = [
     "__version__",

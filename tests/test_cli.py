@@ -204,3 +204,23 @@ def test_diff_reads_only_bounded_regular_files(tmp_path, capsys, other):
             fh.truncate(MAX_DRAWING_BYTES + 1)
     code, _, err = run(capsys, "diff", str(a), str(other))
     assert code == 2 and len(err.splitlines()) == 1 and str(other) in err, err
+
+
+def test_version_comes_from_the_installed_distribution(capsys):
+    from importlib.metadata import version
+
+    code, out, _ = run(capsys, "--version")
+    assert code == 0 and out.strip() == f"construct {version('construct-steam')}"
+    assert construct_version() == version("construct-steam")
+
+
+def construct_version() -> str:
+    import construct
+
+    return construct.__version__
+
+
+@pytest.mark.parametrize("argv", [("check", "crank", "--rod-ratio"), ("frob",), ("table",), ("check", "--bogus")])
+def test_usage_errors_name_the_program_once(capsys, argv):
+    code, _, err = run(capsys, *argv)
+    assert code == 2 and err.count("construct") == 1 and err.startswith("construct: error: "), err

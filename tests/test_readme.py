@@ -29,3 +29,28 @@ def test_readme_library_example():
     result = doctest.testfile(str(ROOT / "README.md"), module_relative=False,
                               optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
     assert result.attempted >= 5 and result.failed == 0
+
+
+def test_readme_renders_as_written():
+    """Every heading of the source renders as a heading, and no prose is swallowed by an open code fence.
+
+    A fence left open turns the rest of the file inside out: headings become code and code becomes prose.
+    CommonMark (markdown-it-py) is what GitHub and most renderers implement.
+    """
+    from markdown_it import MarkdownIt
+
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    tokens = MarkdownIt("commonmark").parse(text)
+    rendered = [tokens[i + 1].content for i, t in enumerate(tokens) if t.type == "heading_open"]
+    written = [m.group(1) for m in re.finditer(r"^#{1,6} (.+)$", text, re.M)
+               if not _inside_fence(text, m.start())]
+    assert rendered == written
+    assert rendered and all(f"# {h}" in text for h in rendered)
+    code = [t for t in tokens if t.type in ("fence", "code_block")]
+    assert not [t.content for t in code if re.search(r"^#{2,6} [A-Z]", t.content, re.M)], "a heading rendered as code"
+    assert text.count("```") % 2 == 0
+
+
+def _inside_fence(text: str, offset: int) -> bool:
+    """Whether *offset* lies between an opening and a closing ``` line (counted as a reader counts them)."""
+    return len(re.findall(r"^```", text[:offset], re.M)) % 2 == 1

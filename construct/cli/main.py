@@ -29,13 +29,19 @@ class _Parser(argparse.ArgumentParser):
     """argparse that raises instead of printing usage and exiting."""
 
     def error(self, message: str) -> None:  # type: ignore[override]
-        raise UsageError(f"{self.prog}: {message}")
+        # "construct check: ..." would read "construct: error: construct check: ..." once printed
+        where = self.prog.removeprefix("construct").strip()
+        raise UsageError(f"{where}: {message}" if where else message)
 
 
 def build_parser() -> argparse.ArgumentParser:
     from . import commands
 
+    from .. import __version__
+
     parser = _Parser(prog="construct", description=__doc__.splitlines()[0])
+    parser.add_argument("--version", action="version", version=f"construct {__version__}",
+                        help="print the version and exit")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     sub.required = True
     for module in commands.MODULES:
@@ -116,7 +122,10 @@ def _one_line(message: str, limit: int = 2000) -> str:
 def main(argv: Sequence[str] | None = None) -> int:
     try:
         parser = build_parser()
-        args = parser.parse_args(_negative_values_attached(parser, sys.argv[1:] if argv is None else list(argv)))
+        try:
+            args = parser.parse_args(_negative_values_attached(parser, sys.argv[1:] if argv is None else list(argv)))
+        except SystemExit as exc:  # --help and --version print and exit 0: a return code, as for every command
+            return int(exc.code or 0)
         with _terminate_cleanly():
             return int(args._run(args))
     except ConstructError as exc:

@@ -49,6 +49,25 @@ class Builder:
     Each method draws with one instrument (or a few, for the composites) and
     returns the name of what it made; ``b[name]`` is the object itself.
 
+    Arguments every drawing method shares:
+
+    - *de*, *en*: the step's caption in German and English, as the player and
+      the animation show it ("Kreis um 7 durch A" / "circle about 7 through
+      A").  Left out, the method writes one from the names of its inputs.
+    - *role*: what the object is in the figure, which decides how a style
+      draws it: ``"construction"`` (a thin helper line), ``"result"`` (what
+      the construction is for: heavy, always lettered) or ``"auxiliary"`` (a
+      helper a plate may leave out).
+    - *label*: the letter printed beside the object; objects without one are
+      drawn unlettered.
+
+    Objects are passed to methods by name (the strings they return), so that a
+    step is data -- tool, op, inputs, outputs, parameters, caption -- which
+    :meth:`protocol` collects and :meth:`Protocol.replay
+    <construct.kernel.protocol.Protocol.replay>` evaluates again with other
+    givens.  ``construct.Builder`` adds :meth:`figure`, the protocol with its
+    objects ready to draw and check.
+
     >>> b = Builder("two points", givens={})
     >>> b.given_point("A", 0.0, 0.0), b.given_point("B", 4.0, 3.0)
     ('A', 'B')
@@ -62,6 +81,13 @@ class Builder:
 
     def __init__(self, construction: str, givens: Mapping[str, float], params: Mapping[str, Any] | None = None,
                  replayable: Sequence[str] | None = None):
+        """Start an empty construction named *construction*.
+
+        *givens* are the numbers a replay may change (``{"r": 1.0, "rod_ratio": 5.0}``): steps refer to them
+        by name, e.g. ``given_point(..., unit="r")``.  *params* are stored with the protocol but fixed for
+        its steps (the number of parts, the division method).  *replayable* names the givens a replay may set
+        (default: all of them).
+        """
         if not isinstance(construction, str) or not construction:
             raise InvalidParameter(f"a construction is named by a non-empty string, got {construction!r}")
         if not isinstance(givens, Mapping):
@@ -84,6 +110,7 @@ class Builder:
 
     # -- bookkeeping ----------------------------------------------------------
     def __getitem__(self, name: str) -> Any:
+        """The object made under *name* (a Point, Line, Circle, Length, curve or area); UnknownObject if none."""
         try:
             return self.objects[name]
         except (KeyError, TypeError):  # TypeError: an unhashable "name"
@@ -130,6 +157,15 @@ class Builder:
                params: Mapping[str, Any], de: str, en: str, *, provenance: Provenance | None = None,
                role: str = "construction", labels: Mapping[str, str] | None = None) -> tuple[Any, ...]:
         """Evaluate one step with the op table's function and append it to the protocol.
+
+        The drawing methods all end here; call it directly for an op of the
+        kernel's op table (:mod:`construct.kernel.ops`) that has no method of
+        its own.  *tool* is the instrument (``"compass"``, ``"straightedge"``,
+        ``"dividers"``, ...), *op* the op table's name, *inputs* and *outputs*
+        object names, *params* the op's parameters (a ``rule`` choosing an
+        intersection is stored as data), *de*/*en* the caption, *provenance*
+        how exact the result is (Euclidean unless said), *role* and *labels*
+        as for the drawing methods.  Returns the objects made.
 
         This is the one place a step is evaluated while building; replay runs
         the same compiled entry (:func:`~construct.kernel.protocol.run_step`).

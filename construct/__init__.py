@@ -43,23 +43,14 @@ from .kernel.errors import (ConstructError, DegenerateObject, DuplicateName, Geo
                             MissingGiven, NoIntersection, OutputError, ProtocolFormatError, RuleError, StepError,
                             UnknownConstruction, UnknownObject, WrongInput)
 
+from .kernel import version as _installed_version
 from .kernel.geometry import Circle, Length, Line, Point
 from .figure import Builder, Figure
 from .kernel.protocol import Protocol, Replay
 from .kernel.rules import farther, left_of, nearer, only, right_of, toward
 
 
-def _version() -> str:
-    """The installed distribution's version: pyproject.toml is the one place it is written."""
-    from importlib.metadata import PackageNotFoundError, version
-
-    try:
-        return version("construct-steam")
-    except PackageNotFoundError:  # run from a source tree that was never installed
-        return "0+unknown"
-
-
-__version__ = _version()
+__version__ = _installed_version()
 
 __all__ = [
     "__version__",

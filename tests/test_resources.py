@@ -244,7 +244,7 @@ def _svg(elements) -> str:
     return _HEAD + "".join(elements) + "</svg>"
 
 
-def _circle(x, y, r=1.5, ident=None) -> str:
+def raw_circle(x, y, r=1.5, ident=None) -> str:
     return f'<circle{f" id={chr(34)}{ident}{chr(34)}" if ident else ""} cx="{x}" cy="{y}" r="{r}" class="pt"/>'
 
 
@@ -252,36 +252,36 @@ N = 3000  # anonymous elements enough that their alignment is past difflib's are
 
 
 def test_one_moved_among_many_identical_circles_is_reported_once():
-    same = [_circle(500, 500)] * N
+    same = [raw_circle(500, 500)] * N
     moved = list(same)
-    moved[1234] = _circle(503, 500)
+    moved[1234] = raw_circle(503, 500)
     d = diff_svg(_svg(same), _svg(moved))
     assert [(c.kind, c.key, c.matched_by) for c in d.changes] == [("moved", "circle[1234]", "key")]
 
 
 def test_one_moved_among_circles_that_look_alike_but_for_their_place():
-    a = [_circle(i % 97 * 10, i // 97 * 10) for i in range(N)]
+    a = [raw_circle(i % 97 * 10, i // 97 * 10) for i in range(N)]
     b = list(a)
-    b[2000] = _circle(2000 % 97 * 10 + 0.5, 2000 // 97 * 10)
+    b[2000] = raw_circle(2000 % 97 * 10 + 0.5, 2000 // 97 * 10)
     d = diff_svg(_svg(a), _svg(b))
     assert [(c.kind, c.key) for c in d.changes] == [("moved", "circle[2000]")]
     assert d.changes[0].magnitude == pytest.approx(0.5)
 
 
 def test_an_element_inserted_or_removed_among_duplicates_is_one_change():
-    a = [_circle(500, 500)] * N
-    inserted = a[:1500] + [_circle(500, 500)] + a[1500:]
+    a = [raw_circle(500, 500)] * N
+    inserted = a[:1500] + [raw_circle(500, 500)] + a[1500:]
     assert [c.kind for c in diff_svg(_svg(a), _svg(inserted)).changes] == ["extra"]
     assert [c.kind for c in diff_svg(_svg(inserted), _svg(a)).changes] == ["missing"]
-    other = a[:700] + [_circle(10, 10, r=3)] + a[700:]  # a different one: extra, the duplicates all paired
+    other = a[:700] + [raw_circle(10, 10, r=3)] + a[700:]  # a different one: extra, the duplicates all paired
     assert [(c.kind, c.key) for c in diff_svg(_svg(a), _svg(other)).changes] == [("extra", "circle[700]")]
 
 
 def test_elements_within_the_tolerance_match():
-    a = [_circle(i % 50 * 20, i // 50 * 20) for i in range(N)]
-    b = [_circle(i % 50 * 20 + 0.004, i // 50 * 20 - 0.004) for i in range(N)]
+    a = [raw_circle(i % 50 * 20, i // 50 * 20) for i in range(N)]
+    b = [raw_circle(i % 50 * 20 + 0.004, i // 50 * 20 - 0.004) for i in range(N)]
     assert diff_svg(_svg(a), _svg(b), tolerance=0.01).equal
-    b[5] = _circle(5 * 20 + 0.02, 0)
+    b[5] = raw_circle(5 * 20 + 0.02, 0)
     d = diff_svg(_svg(a), _svg(b), tolerance=0.01)
     assert [(c.kind, c.key) for c in d.changes] == [("moved", "circle[5]")]
     assert not diff_svg(_svg(a), _svg(b)).equal  # the default tolerance, 1e-6, sees every one
@@ -290,8 +290,8 @@ def test_elements_within_the_tolerance_match():
 def test_renamed_elements_are_paired_by_geometry_with_a_grid_not_all_pairs(monkeypatch):
     # Every element renamed and moved a little: nothing pairs by id, all by nearest geometry.
     # Before, 3000 x 3000 leftovers were more than the all-pairs search took (4 M): 6000 missing + extra.
-    a = [_circle(i % 60 * 16, i // 60 * 16, ident=f"a{i}") for i in range(N)]
-    b = [_circle(i % 60 * 16 + 0.3, i // 60 * 16, ident=f"b{i}") for i in range(N)]
+    a = [raw_circle(i % 60 * 16, i // 60 * 16, ident=f"a{i}") for i in range(N)]
+    b = [raw_circle(i % 60 * 16 + 0.3, i // 60 * 16, ident=f"b{i}") for i in range(N)]
     calls = 0
     distance = svgmatch._distance
 
@@ -309,8 +309,8 @@ def test_renamed_elements_are_paired_by_geometry_with_a_grid_not_all_pairs(monke
 
 
 def test_a_dense_cluster_beyond_the_budget_is_left_unmatched_not_searched(monkeypatch):
-    a = [_circle(500, 500 + i * 1e-3, ident=f"a{i}") for i in range(200)]
-    b = [_circle(500, 500 + i * 1e-3, ident=f"b{i}") for i in range(200)]
+    a = [raw_circle(500, 500 + i * 1e-3, ident=f"a{i}") for i in range(200)]
+    b = [raw_circle(500, 500 + i * 1e-3, ident=f"b{i}") for i in range(200)]
     monkeypatch.setattr(svgmatch, "MATCH_BUDGET", 1000)
     d = diff_svg(_svg(a), _svg(b))
     # 200 neighbours each: the first five elements spend the budget, the other 195 stay unmatched

@@ -37,10 +37,10 @@ class _Parser(argparse.ArgumentParser):
 def build_parser() -> argparse.ArgumentParser:
     from . import commands
 
-    from .. import __version__
+    from ..kernel import version
 
     parser = _Parser(prog="construct", description=__doc__.splitlines()[0])
-    parser.add_argument("--version", action="version", version=f"construct {__version__}",
+    parser.add_argument("--version", action="version", version=f"construct {version()}",
                         help="print the version and exit")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     sub.required = True

@@ -94,7 +94,7 @@ class _Scalar:
         return math.isfinite(v)
 
 
-class _Array:
+class ArrayMath:
     """numpy arrays: ufuncs, ``where`` element by element."""
 
     name = "array"
@@ -121,7 +121,7 @@ class _Array:
 
 
 SCALAR = _Scalar()
-ARRAY = _Array()
+ARRAY = ArrayMath()
 
 
 def is_sweep(v: Any) -> bool:
@@ -263,7 +263,7 @@ _set_x = Point.x.__set__  # type: ignore[attr-defined]
 _set_y = Point.y.__set__  # type: ignore[attr-defined]
 
 
-def _pt(x: Any, y: Any) -> Point:
+def raw_point(x: Any, y: Any) -> Point:
     """A Point without the finiteness check: for results computed from finite values."""
     p = _new(Point)
     _set_x(p, x)
@@ -326,7 +326,7 @@ _set_center = Circle.center.__set__  # type: ignore[attr-defined]
 _set_radius = Circle.radius.__set__  # type: ignore[attr-defined]
 
 
-def _circle(center: Point, radius: Any) -> Circle:
+def raw_circle(center: Point, radius: Any) -> Circle:
     c = _new(Circle)
     _set_center(c, center)
     _set_radius(c, radius)
@@ -375,11 +375,11 @@ def take(v: Any, i: int) -> Any:
     if isinstance(v, np.generic):  # a numpy scalar: the same for every set of givens
         return float(v)
     if isinstance(v, Point):
-        return _pt(take(v.x, i), take(v.y, i))
+        return raw_point(take(v.x, i), take(v.y, i))
     if isinstance(v, Line):
         return Line(take(v.p, i), take(v.q, i))
     if isinstance(v, Circle):
-        return _circle(take(v.center, i), take(v.radius, i))
+        return raw_circle(take(v.center, i), take(v.radius, i))
     if isinstance(v, Length):
         return Length(take(v.value, i))
     take_i = getattr(v, "take", None)
@@ -392,11 +392,11 @@ def stack(values: list) -> Any:
     if isinstance(first, float):
         return np.array(values, dtype=float)
     if isinstance(first, Point):
-        return _pt(np.array([p.x for p in values]), np.array([p.y for p in values]))
+        return raw_point(np.array([p.x for p in values]), np.array([p.y for p in values]))
     if isinstance(first, Line):
         return Line(stack([l.p for l in values]), stack([l.q for l in values]))
     if isinstance(first, Circle):
-        return _circle(stack([c.center for c in values]), np.array([c.radius for c in values]))
+        return raw_circle(stack([c.center for c in values]), np.array([c.radius for c in values]))
     if isinstance(first, Length):
         return Length(np.array([float(v) for v in values]))
     return Sweep(values)
@@ -459,7 +459,7 @@ def line_line(l1: Line, l2: Line, xp: Any = SCALAR) -> Point:
     if xp.any(bad):
         raise NoIntersection(f"{_describe(l1)} and {_describe(l2)} are parallel{_where_bad(bad)}")
     t = ((u.x - p.x) * d2y - (u.y - p.y) * d2x) / den
-    return _pt(p.x + t * d1x, p.y + t * d1y)
+    return raw_point(p.x + t * d1x, p.y + t * d1y)
 
 
 def line_circle(line: Line, circle: Circle, xp: Any = SCALAR) -> tuple[Point, Point]:
@@ -482,7 +482,7 @@ def line_circle(line: Line, circle: Circle, xp: Any = SCALAR) -> tuple[Point, Po
         raise NoIntersection(f"{_describe(line)} and {_describe(circle)} do not meet{_where_bad(bad)}")
     # (r - d)(r + d) rather than r^2 - d^2: no cancellation when nearly tangent.
     h = xp.where(gap <= tol, 0.0, xp.sqrt(xp.maximum(gap, 0.0) * (r + delta)))
-    return _pt(fx - h * ux, fy - h * uy), _pt(fx + h * ux, fy + h * uy)
+    return raw_point(fx - h * ux, fy - h * uy), raw_point(fx + h * ux, fy + h * uy)
 
 
 def _line_circle_scalar(line, px, py, qx, qy, cx, cy, r, circle):
@@ -498,7 +498,7 @@ def _line_circle_scalar(line, px, py, qx, qy, cx, cy, r, circle):
     if gap < -tol:
         raise NoIntersection(f"{_describe(line)} and {_describe(circle)} do not meet")
     h = 0.0 if gap <= tol else math.sqrt(gap * (r + delta))
-    return _pt(fx - h * ux, fy - h * uy), _pt(fx + h * ux, fy + h * uy)
+    return raw_point(fx - h * ux, fy - h * uy), raw_point(fx + h * ux, fy + h * uy)
 
 
 def _circle_circle_scalar(c1, c2, x1, y1, r1, x2, y2, r2):
@@ -523,7 +523,7 @@ def _circle_circle_scalar(c1, c2, x1, y1, r1, x2, y2, r2):
         a = 0.5 * (d + (r1 - r2) * (r1 + r2) / d)
         h = math.sqrt(outer * (r1 + r2 + d) * inner * (d + abs(r1 - r2))) / (2.0 * d)
     mx, my = x1 + a * ux, y1 + a * uy
-    return _pt(mx + h * uy, my - h * ux), _pt(mx - h * uy, my + h * ux)
+    return raw_point(mx + h * uy, my - h * ux), raw_point(mx - h * uy, my + h * ux)
 
 
 def circle_circle(c1: Circle, c2: Circle, xp: Any = SCALAR) -> tuple[Point, Point]:
@@ -554,7 +554,7 @@ def circle_circle(c1: Circle, c2: Circle, xp: Any = SCALAR) -> tuple[Point, Poin
     prod = xp.maximum(outer, 0.0) * (r1 + r2 + d) * xp.maximum(inner, 0.0) * (d + xp.abs(r1 - r2))
     h = xp.where((outer <= tol) | (inner <= tol), 0.0, xp.sqrt(prod) / (2.0 * d))
     mx, my = x1 + a * ux, y1 + a * uy
-    return _pt(mx + h * uy, my - h * ux), _pt(mx - h * uy, my + h * ux)
+    return raw_point(mx + h * uy, my - h * ux), raw_point(mx - h * uy, my + h * ux)
 
 
 def meet(a: Any, b: Any, xp: Any = SCALAR) -> tuple[Point, ...]:

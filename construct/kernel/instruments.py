@@ -200,8 +200,8 @@ class Builder:
         step = Step(index, tool, op, tuple(inputs), tuple(outputs), MappingProxyType(params), Caption(de, en),
                     provenance or EXACT, tuple(self._group), role, tuple(sorted((labels or {}).items())))
         entry = compile_step(step)  # objects kept by name: the builder's dict is the environment
-        spec = entry[5]
-        missing = [n for n in (*step.inputs, *entry[4]) if n not in self.objects]
+        spec = entry.op
+        missing = [n for n in (*step.inputs, *entry.refs) if n not in self.objects]
         if missing:
             raise UnknownObject(f"step {index} ({tool}: {en}) uses {missing[0]!r}, which no earlier step made", **where)
         problem = spec.check_inputs([self.objects[n] for n in step.inputs])

@@ -41,7 +41,7 @@ from .areas import Area, area_between_op, planimeter_height_op, planimeter_op
 from .closed_curves import closed_french_curve_op
 from .curves import BezierCurve, Polyline, crossings, french_curve_op, parabola_envelope_op, polyline_op
 from .errors import GeometryError, NoIntersection
-from .geometry import (SCALAR, Circle, Length, Line, Point, Sweep, _circle, _pt, circle_circle, line_circle,
+from .geometry import (SCALAR, Circle, Length, Line, Point, Sweep, raw_circle, raw_point, circle_circle, line_circle,
                        line_line, stack, take)
 from .rules import choose, choose_among
 from .trial import neusis_archimedes_op, trial_chord_op
@@ -217,7 +217,7 @@ def _given_line(args, params, givens, refs, xp):
     (o,) = args
     a = xp.radians(params["angle_deg"])
     # A second point one unit away fixes the direction; the drawing extent is the renderer's business.
-    return (Line(o, _pt(o.x + xp.cos(a), o.y + xp.sin(a))),)
+    return (Line(o, raw_point(o.x + xp.cos(a), o.y + xp.sin(a))),)
 
 
 # --------------------------------------------------------------------------
@@ -243,17 +243,17 @@ def _radius(r: Any, xp: Any, what: Any) -> Any:
 
 def _circle_through(args, params, givens, refs, xp):
     c, p = args
-    return (_circle(c, _radius(xp.hypot(p.x - c.x, p.y - c.y), xp, lambda: f"circle about {c!r} through {p!r}")),)
+    return (raw_circle(c, _radius(xp.hypot(p.x - c.x, p.y - c.y), xp, lambda: f"circle about {c!r} through {p!r}")),)
 
 
 def _circle_radius(args, params, givens, refs, xp):
     c, length = args
-    return (_circle(c, length.value),)  # a Length is positive by construction
+    return (raw_circle(c, length.value),)  # a Length is positive by construction
 
 
 def _circle_segment(args, params, givens, refs, xp):
     c, a, b = args
-    return (_circle(c, _radius(xp.hypot(b.x - a.x, b.y - a.y), xp, lambda: f"compass set to {a!r}{b!r}")),)
+    return (raw_circle(c, _radius(xp.hypot(b.x - a.x, b.y - a.y), xp, lambda: f"compass set to {a!r}{b!r}")),)
 
 
 def _length_of(args, params, givens, refs, xp):
@@ -321,7 +321,7 @@ def _pick(args, params, givens, refs, xp):
 def _step_off(args, params, givens, refs, xp):
     """Dividers: from a point, step a length off along a curve (no arc is drawn, a point is pricked)."""
     curve, start, length = args
-    return _intersect((curve, _circle(start, length.value)), params, givens, refs, xp)
+    return _intersect((curve, raw_circle(start, length.value)), params, givens, refs, xp)
 
 
 # --------------------------------------------------------------------------

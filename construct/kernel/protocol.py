@@ -23,6 +23,7 @@ Point(-5.0, 0.0)
 
 from __future__ import annotations
 
+import functools
 import json
 import math
 import numbers
@@ -30,7 +31,7 @@ import os
 from dataclasses import dataclass, field
 from types import MappingProxyType
 from collections.abc import Mapping
-from typing import Any
+from typing import Any, Callable, NamedTuple
 
 import numpy as np
 
@@ -38,7 +39,7 @@ from .areas import Area
 from .curves import BezierCurve, Polyline
 from .errors import (ConstructError, InvalidParameter, MissingGiven, ProtocolFormatError, RuleError, StepError,
                      UnknownObject, WrongInput)
-from .geometry import SCALAR, Circle, Length, Line, Point, Sweep, _Array, take
+from .geometry import SCALAR, Circle, Length, Line, Point, Sweep, ArrayMath, take
 from .ops import ACCEPTS, OPS, elementwise
 from .protocol_file import (KNOWN_FORMATS, PROTOCOL_FILE_FORMAT, PROTOCOL_FORMAT, PROVENANCE_KINDS, ROLES, TOOLS,
                             check_format, frozen, parse_protocol_json, read_protocol_bytes, step_fields)
@@ -56,6 +57,8 @@ __all__ = [
     "Replay",
     "run_step",
     "compile_step",
+    "CompiledStep",
+    "Program",
     "object_json",
 ]
 
@@ -139,7 +142,7 @@ class Step:
             "op": self.op,
             "inputs": list(self.inputs),
             "outputs": list(self.outputs),
-            "params": _jsonable(dict(self.params)),
+            "params": jsonable(dict(self.params)),
             "caption": {"de": self.caption.de, "en": self.caption.en},
             "provenance": {
                 "kind": self.provenance.kind,
@@ -186,14 +189,14 @@ class Step:
                    group=f["group"], role=f["role"], labels=f["labels"])
 
 
-def _jsonable(value: Any) -> Any:
+def jsonable(value: Any) -> Any:
     as_json = getattr(value, "as_json", None)
     if as_json is not None:  # a Rule
         return as_json()
     if isinstance(value, (tuple, list)):
-        return [_jsonable(v) for v in value]
+        return [jsonable(v) for v in value]
     if isinstance(value, Mapping):
-        return {str(k): _jsonable(v) for k, v in value.items()}
+        return {str(k): jsonable(v) for k, v in value.items()}
     return value
 
 
@@ -208,7 +211,30 @@ def _jsonable(value: Any) -> Any:
 # --------------------------------------------------------------------------
 
 
-def compile_step(step: Step, slot: Mapping[str, Any] | None = None) -> tuple:
+class CompiledStep(NamedTuple):
+    """A step ready to run: its op's function, where its inputs and outputs are kept, its parsed parameters.
+
+    *ins*, *outs* and *refs* (the points a rule names) are object names while building and list slots while
+    replaying.  A tuple underneath, so that the replay loop unpacks it at tuple speed.
+    """
+
+    fn: Callable[..., tuple]
+    ins: tuple
+    outs: tuple
+    params: dict[str, Any]
+    refs: tuple
+    op: Any  # the op table's entry (construct.kernel.ops.Op)
+    step: Step
+
+
+class Program(NamedTuple):
+    """A protocol compiled for replay: one entry per step, and the object name of every list slot."""
+
+    entries: tuple[CompiledStep, ...]
+    names: tuple[str, ...]
+
+
+def compile_step(step: Step, slot: Mapping[str, Any] | None = None) -> CompiledStep:
     """The entry for *step*; *slot* maps names to list slots (None: objects are kept by name).
 
     Raises ProtocolFormatError for an unknown operation, WrongInput for
@@ -247,7 +273,7 @@ def compile_step(step: Step, slot: Mapping[str, Any] | None = None) -> tuple:
         if missing:
             raise unknown(missing[0])
         ins, ref_slots = tuple(slot[n] for n in step.inputs), tuple(slot[n] for n in refs)
-    return (op.fn, ins, step.outputs, params, ref_slots, op, step)
+    return CompiledStep(op.fn, ins, step.outputs, params, ref_slots, op, step)
 
 
 def check_kinds(step: Step, op: Any, refs: tuple[str, ...], kinds: dict[str, str]) -> None:
@@ -299,7 +325,7 @@ def step_failure(step: Step, exc: BaseException) -> ConstructError:
 _STEP_FAILURES = (ConstructError, KeyError, TypeError, AttributeError, ValueError, IndexError)
 
 
-def run_step(entry: tuple, env: Any, givens: Mapping[str, Any], xp: Any = SCALAR) -> tuple:
+def run_step(entry: CompiledStep, env: Any, givens: Mapping[str, Any], xp: Any = SCALAR) -> tuple:
     """Evaluate one compiled step on the objects in *env*; store and return its outputs."""
     fn, ins, outs, params, refs, op, step = entry
     if xp is not SCALAR and not op.vector:
@@ -333,7 +359,7 @@ def sweep_givens(givens: Mapping[str, Any]) -> tuple[dict[str, Any], Any]:
     n = next(iter(out[k] for k in arrays)).size
     if n == 0:
         raise InvalidParameter("a sweep needs at least one set of givens")
-    return out, _Array(n)
+    return out, ArrayMath(n)
 
 
 def _shown(value: Any) -> str:
@@ -463,7 +489,6 @@ class Protocol:
     steps: tuple[Step, ...]
     #: The givens a replay may change without changing the steps.
     givens: tuple[str, ...] = ()
-    _compiled: list = field(default_factory=list, repr=False, compare=False)
 
     def __repr__(self) -> str:
         return f"<Protocol {self.construction!r}: {len(self.steps)} steps, givens {', '.join(self.givens) or '-'}>"
@@ -472,24 +497,24 @@ class Protocol:
         return (_unpickle, (self.as_dict(with_objects=False),))
 
     # -- replay -------------------------------------------------------------
-    def _program(self) -> tuple[list, tuple[str, ...]]:
-        if not self._compiled:
-            slot: dict[str, int] = {}
-            kinds: dict[str, str] = {}
-            entries = []
-            for step in self.steps:
-                for name in step.outputs:
-                    if name in slot:
-                        raise ProtocolFormatError(f"step {step.index} makes {name!r} a second time")
-                entry = compile_step(step, slot)
-                check_kinds(step, entry[5], entry[3]["rule"].refs if entry[5].rule else (), kinds)
-                outs = []
-                for name in step.outputs:
-                    slot[name] = len(slot)
-                    outs.append(slot[name])
-                entries.append(entry[:2] + (tuple(outs),) + entry[3:])
-            self._compiled.extend([entries, tuple(slot)])
-        return self._compiled[0], self._compiled[1]
+    @functools.cached_property
+    def program(self) -> Program:
+        """The steps compiled for replay, once per protocol (the load-time check of ops, kinds and names)."""
+        slot: dict[str, int] = {}
+        kinds: dict[str, str] = {}
+        entries = []
+        for step in self.steps:
+            for name in step.outputs:
+                if name in slot:
+                    raise ProtocolFormatError(f"step {step.index} makes {name!r} a second time")
+            entry = compile_step(step, slot)
+            check_kinds(step, entry.op, entry.params["rule"].refs if entry.op.rule else (), kinds)
+            outs = []
+            for name in step.outputs:
+                slot[name] = len(slot)
+                outs.append(slot[name])
+            entries.append(entry._replace(outs=tuple(outs)))
+        return Program(tuple(entries), tuple(slot))
 
     def replay(self, givens: Mapping[str, Any] | None = None, *, upto: int | None = None) -> Replay:
         """Evaluate the steps (all, or 1..upto) with *givens*; return the objects by name.
@@ -502,7 +527,7 @@ class Protocol:
         if upto is not None and (isinstance(upto, bool) or not isinstance(upto, numbers.Integral)):
             raise InvalidParameter(f"upto is a step number, got {_shown(upto)}")
         givens, xp = sweep_givens(dict(self.params.get("givens", {}) if givens is None else givens))
-        entries, names = self._program()
+        entries, names = self.program
         env: list[Any] = [None] * len(names)
         stop = len(entries) if upto is None else max(0, min(upto, len(entries)))
         if xp is SCALAR:
@@ -516,7 +541,7 @@ class Protocol:
                     for k, v in zip(outs, values):
                         env[k] = v
             except _STEP_FAILURES as exc:
-                raise step_failure(entries[i][-1], exc) from exc
+                raise step_failure(entries[i].step, exc) from exc
         else:
             for i in range(stop):
                 run_step(entries[i], env, givens, xp)
@@ -549,7 +574,7 @@ class Protocol:
                 replay = self.replay()
             params["givens"] = dict(replay.givens)  # the givens this replay was made with
         d.update({
-            "params": _jsonable(params),
+            "params": jsonable(params),
             "givens": list(self.givens),
             "instruments": self.instrument_counts(),
             "steps": [s.as_dict() for s in self.steps],
@@ -661,7 +686,7 @@ class Protocol:
                                           f"(it has {', '.join(stored) or 'none'})")
         proto = cls(construction=name, params=params, steps=steps, givens=tuple(givens))
         try:
-            proto._program()  # unknown ops, wrong kinds and counts, dangling names, bad rules: now, not mid-replay
+            proto.program  # unknown ops, wrong kinds and counts, dangling names, bad rules: now, not mid-replay
         except StepError as exc:
             raise ProtocolFormatError(str(exc)) from None
         return proto

@@ -30,7 +30,7 @@ import numbers
 from typing import Any, Sequence
 
 from .errors import RuleError
-from .geometry import _pt
+from .geometry import raw_point
 
 __all__ = ["Rule", "nearer", "farther", "left_of", "right_of", "toward", "only", "as_rule", "RULE_ARITY", "choose"]
 
@@ -209,7 +209,7 @@ def choose(points: Sequence[Any], rule: Rule, refs: Sequence[Any], xp: Any) -> t
     if xp.name == "scalar":
         return (a, b) if first else (b, a)
     w = xp.where
-    return _pt(w(first, a.x, b.x), w(first, a.y, b.y)), _pt(w(first, b.x, a.x), w(first, b.y, a.y))
+    return raw_point(w(first, a.x, b.x), w(first, a.y, b.y)), raw_point(w(first, b.x, a.x), w(first, b.y, a.y))
 
 
 def choose_among(points: Sequence[Any], rule: Rule, refs: Sequence[Any]) -> Any:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 
 from ...constructions.checking import run_checks, summary
-from ...kernel.protocol import _jsonable
+from ...kernel.protocol import jsonable
 from ..common import add_construction_options, figure_from_args
 
 NAME = "check"
@@ -30,7 +30,7 @@ def run(args) -> int:
         return 0
     checks = run_checks(c, fig)
     ok = all(ch.ok for ch in checks)
-    params = {k: v for k, v in _jsonable(dict(fig.params)).items() if k not in ("group_titles", "plate")}
+    params = {k: v for k, v in jsonable(dict(fig.params)).items() if k not in ("group_titles", "plate")}
     params["givens"] = dict(fig.replay.givens)
     if args.json:
         print(json.dumps({"construction": c.name, "params": params, "ok": ok,

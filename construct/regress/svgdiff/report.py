@@ -112,11 +112,11 @@ def _diff_drawings(da: Drawing, db: Drawing, tol: float, name_a: str, name_b: st
 
 def _where(s: Shape) -> str:
     if s.points:
-        return f" at {_pt(s.points[0][1])}"
+        return f" at {raw_point(s.points[0][1])}"
     return ""
 
 
-def _pt(p: Point) -> str:
+def raw_point(p: Point) -> str:
     return f"({_fmt(p[0])}, {_fmt(p[1])})"
 
 
@@ -176,7 +176,7 @@ def _compare(x: Shape, y: Shape, tol: float, how: str) -> list[SvgChange]:
             what = "; ".join(f"{k}: {_show(sa.get(k, '-'))} -> {_show(sb.get(k, '-'))}"
                              for k in sorted(set(sa) | set(sb)) if sa.get(k) != sb.get(k)) or "defining points differ"
         ba, bb = _bbox(x), _bbox(y)
-        add("reshaped", f"{what}; bounding box {_pt(ba[:2])}..{_pt(ba[2:])} -> {_pt(bb[:2])}..{_pt(bb[2:])}",
+        add("reshaped", f"{what}; bounding box {raw_point(ba[:2])}..{raw_point(ba[2:])} -> {raw_point(bb[:2])}..{raw_point(bb[2:])}",
             max(abs(u - v) for u, v in zip(ba, bb)) if x.points and y.points else None)
     else:
         moved = [(math.dist(p, q), name, p, q) for (name, p), (_, q) in zip(x.points, y.points)]
@@ -228,11 +228,11 @@ def _movement(moved: list[tuple[float, str, Point, Point]], tol: float) -> str:
     d = max(m[0] for m in moved)
     near_max = [m for m in moved if m[0] >= d - tol]
     _, name, p, q = next((m for m in near_max if m[1].endswith("centre")), near_max[0])
-    text = f"by {_mag(d)}: {name} {_pt(p)} -> {_pt(q)}"
+    text = f"by {_mag(d)}: {name} {raw_point(p)} -> {raw_point(q)}"
     if len(moved) > 1:
         shifts = [(m[3][0] - m[2][0], m[3][1] - m[2][1]) for m in moved]
         if all(math.dist(s, shifts[0]) <= tol for s in shifts):
-            text += f" (all {len(moved)} points translated by {_pt(shifts[0])})"
+            text += f" (all {len(moved)} points translated by {raw_point(shifts[0])})"
         else:
             text += f" ({sum(m[0] > tol for m in moved)} of {len(moved)} points moved)"
     return text

@@ -66,6 +66,21 @@ class Figure:
         """
         return [] if self.checker is None else self.checker(self)
 
+    def plot(self, ax: Any = None, *, style: str = "plain", upto: int | None = None) -> Any:
+        """Draw the figure (all steps, or steps 1..upto) on a matplotlib Axes (a new one when None); return it.
+
+        matplotlib is imported only here, and no backend or global style is set (as ``shapely.plotting``).
+
+        >>> ax = Builder("demo", givens={}).figure().plot()
+        >>> ax.get_aspect()
+        1.0
+        """
+        from .render.plotting import plot_figure
+
+        if upto is not None and (isinstance(upto, bool) or not isinstance(upto, numbers.Integral)):
+            raise InvalidParameter(f"upto is a step number, got {upto!r}")
+        return plot_figure(self, ax, style=style, upto=upto)
+
     def with_givens(self, **givens: Any) -> "Figure":
         """The same steps replayed with other givens (arrays make a sweep)."""
         values = dict(self.replay.givens)

@@ -13,16 +13,20 @@ table has a column for it.
 
 from __future__ import annotations
 
+import io
 import math
-from typing import Any, Sequence
+from pathlib import Path
+from typing import Any, Mapping, Sequence
 
 from .constructions import analytic
 from .constructions import get
 from .constructions.crank import crank_angle, piston_fraction, point_name
 from .constructions.inertia import acceleration_rows, characteristic_point_rows, q_at_crank_angle_rows
 from .constructions.two_cranks import speed_fluctuation_rows
+from .kernel.errors import InvalidParameter
+from .render.plotting import TablePlot, plot_table
 
-__all__ = ["TABLES", "piston_path_table", "crank_angle_table", "acceleration_table", "characteristic_points_table"]
+__all__ = ["TABLES", "PLOTS", "write_plot", "piston_path_table", "crank_angle_table", "acceleration_table", "characteristic_points_table"]
 
 Table = tuple[tuple[str, ...], list[dict[str, Any]]]
 
@@ -112,6 +116,40 @@ def speed_fluctuation_table(*, rod_ratio: float | None, step: float = 10.0) -> T
     return ("crank_angle_deg", "work_excess"), speed_fluctuation_rows(rod_ratio=rod_ratio, step_deg=step)
 
 
+#: How the books draw each table (construct table NAME --plot FILE); axis texts German / English.
+PLOTS = {
+    "piston-path": TablePlot(
+        "crank_angle_deg", (("x_constructed", "konstruiert / constructed"), ("x_exact", "x = r(1 − cos ω) + …"),
+                            ("x_book", "Näherung / book's approximation")),
+        "Kurbelwinkel ω / crank angle ω (°)", "Kolbenweg x / piston path x (r)", "Kolbenwege / piston paths"),
+    "crank-angle": TablePlot(
+        "x", (("omega_constructed_deg", "konstruiert / constructed"), ("omega_exact_deg", "Gl. (h)")),
+        "Kolbenweg x / piston path x (Hub / stroke)", "Kurbelwinkel ω / crank angle ω (°)",
+        "Kurbelwinkel aus den Zehnteln des Hubes / crank angles from tenths of the stroke"),
+    "acceleration": TablePlot(
+        "omega_deg", (("q", "q = cos ω + λ cos 2ω"),), "Kurbelwinkel ω / crank angle ω (°)",
+        "Massendruck q / inertia pressure q (Pm)", "Beschleunigungsdrücke / acceleration pressures",
+        label_by="rod_ratio", label_name="L/r"),
+    "characteristic-points": TablePlot(
+        "x", (("q", "q₁ … q₇"),), "Kolbenweg x / piston path x (Hub / stroke)",
+        "Massendruck q / inertia pressure q (Pm)", "Kennzeichnende Punkte / characteristic points",
+        points_only=True),
+    "mass-forces": TablePlot(
+        "x", (("P_b", "P_b, Gl. (298)"),), "Kolbenweg x / piston path x (Hub / stroke)",
+        "Massenkraft P_b / mass force P_b (kg)", "Massenkräfte / mass forces"),
+    "tangential-pressure": TablePlot(
+        "crank_angle_deg", (("T_over_P", "T/P"),), "Kurbelwinkel ω / crank angle ω (°)",
+        "Tangentialdruck T/P / tangential pressure T/P", "Tangentialdruckdiagramm / tangential-pressure diagram",
+        mean_of="T_over_P"),
+    "flywheel-coefficients": TablePlot(
+        "v", (("total_weight", "Gesamtgewicht / total weight ÷ G_s"), ("moment", "Moment G·D² ÷ G_s·D_s²")),
+        "Kranzgeschwindigkeit v / rim speed v (m/s)", "Beiwert / coefficient",
+        "Schwungradbeiwerte (Baumann) / flywheel coefficients (Baumann)", points_only=True),
+    "speed-fluctuation": TablePlot(
+        "crank_angle_deg", (("work_excess", "e(α)"),), "Kurbelwinkel α / crank angle α (°)",
+        "Überschußarbeit e / excess work e (Q·r)", "Zwei Kurbeln unter 90° / two cranks at 90°"),
+}
+
 TABLES = {
     "piston-path": piston_path_table,
     "crank-angle": crank_angle_table,
@@ -122,3 +160,35 @@ TABLES = {
     "flywheel-coefficients": flywheel_coefficients_table,
     "speed-fluctuation": speed_fluctuation_table,
 }
+
+
+#: The files ``--plot`` writes, by suffix (matplotlib picks its writer by the suffix).
+PLOT_SUFFIXES = (".png", ".pdf", ".svg")
+
+
+def write_plot(name: str, columns: Sequence[str], rows: Sequence[Mapping[str, Any]], path: Any) -> Path:
+    """Plot table *name* as the book draws it into *path* (png, pdf or svg by its suffix), written whole or not.
+
+    >>> import tempfile, pathlib
+    >>> cols, rows = speed_fluctuation_table(rod_ratio=None, step=15.0)
+    >>> out = write_plot("speed-fluctuation", cols, rows, pathlib.Path(tempfile.mkdtemp()) / "e.svg")
+    >>> out.read_text().startswith("<?xml")
+    True
+    """
+    from matplotlib.figure import Figure
+
+    from .io.staging import write_bytes
+
+    target = Path(path)
+    if target.suffix.lower() not in PLOT_SUFFIXES:
+        raise InvalidParameter(f"--plot writes {', '.join(PLOT_SUFFIXES)} (by the file's suffix), got {str(path)!r}")
+    fig = Figure(figsize=(7.5, 4.8))
+    plot_table(PLOTS[name], columns, rows, fig.add_subplot())
+    fig.tight_layout()
+    buf = io.BytesIO()
+    # no date or software version in the file: the same table gives the same bytes
+    meta = {"svg": {"Date": None}, "pdf": {"CreationDate": None, "Producer": None},
+            "png": {"Software": None}}[target.suffix.lower()[1:]]
+    fig.savefig(buf, format=target.suffix.lower()[1:], metadata=meta)
+    write_bytes(target, buf.getvalue())
+    return target

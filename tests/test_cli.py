@@ -224,3 +224,40 @@ def construct_version() -> str:
 def test_usage_errors_name_the_program_once(capsys, argv):
     code, _, err = run(capsys, *argv)
     assert code == 2 and err.count("construct") == 1 and err.startswith("construct: error: "), err
+
+
+def test_every_table_has_a_plot_of_its_own_columns():
+    from construct.tables import PLOTS, TABLES
+
+    assert set(PLOTS) == set(TABLES)
+
+
+@pytest.mark.parametrize("suffix", [".png", ".svg", ".pdf"])
+def test_table_plot_draws_the_rows_it_prints(tmp_path, capsys, suffix):
+    """The curve handed to matplotlib is the table's column; the file is written whole, by its suffix."""
+    import math
+
+    from construct.tables import PLOTS, speed_fluctuation_table
+    from construct.render.plotting import plot_table
+
+    cols, rows = speed_fluctuation_table(rod_ratio=None, step=15.0)
+    ax = plot_table(PLOTS["speed-fluctuation"], cols, rows)
+    x, y = ax.lines[0].get_xdata(), ax.lines[0].get_ydata()
+    # seed 002, infinite rod, 0 <= a <= 90 deg: e(a) = Q r (1 - cos a + sin a) - (4/pi) Q r a, which vanishes at
+    # the dead centre and at 45 deg (both terms are Q r there)
+    assert list(x) == [r["crank_angle_deg"] for r in rows] and abs(y[0]) < 1e-12
+    assert abs(y[list(x).index(45.0)]) < 1e-9
+    out = tmp_path / f"e{suffix}"
+    code, text, err = run(capsys, "table", "speed-fluctuation", "--infinite-rod", "--step", "15", "--plot", str(out))
+    assert code == 0 and err == "" and text.startswith("crank_angle_deg")
+    head = out.read_bytes()[:8]
+    assert head.startswith({".png": b"\x89PNG", ".svg": b"<?xml", ".pdf": b"%PDF"}[suffix])
+    assert sorted(p.name for p in tmp_path.iterdir()) == [out.name]  # no staging file left beside it
+
+
+@pytest.mark.parametrize("target", ["x.gif", "no-such-folder/x.png", "."])
+def test_table_plot_refuses_a_file_it_cannot_write(tmp_path, capsys, monkeypatch, target):
+    monkeypatch.chdir(tmp_path)
+    code, _, err = run(capsys, "table", "piston-path", "--rod-ratio", "5", "--plot", target)
+    assert code == 2 and len(err.splitlines()) == 1 and "Traceback" not in err
+    assert list(tmp_path.iterdir()) == []

@@ -6,6 +6,7 @@ role it has) and from geometry (shapely), never from the renderer's output.
 
 from __future__ import annotations
 
+import math
 import os
 import re
 import subprocess
@@ -14,6 +15,7 @@ import warnings
 import xml.etree.ElementTree as ET
 
 import cairosvg
+import numpy as np
 import pytest
 
 from construct.constructions import get
@@ -22,7 +24,6 @@ from construct.render.animate import animated_svg
 from construct.render.notebook import figure_repr_svg
 from construct.render.output import scene_for, write_replay
 from construct.render.scene import build_scene
-from construct.render.storyboard import storyboard_png
 from construct.render.styles import STYLES
 from construct.render import svgdoc
 from construct.render.svg import Drawing, hatch_path, Viewport
@@ -176,11 +177,44 @@ def test_animated_svg_hides_each_step_until_its_time(crank6):
     assert "<script" not in svg
 
 
-def test_storyboard_is_a_png_without_software_or_date(crank6):
-    c, fig = crank6
-    png = storyboard_png(scene_for(c, fig), STYLES["historical"])
-    assert png.startswith(b"\x89PNG")
-    assert b"Software" not in png and b"matplotlib" not in png and b"tIME" not in png
+def test_plot_hands_matplotlib_the_figures_geometry(crank6):
+    """As shapely's plot tests do: the data given to matplotlib, not pixels."""
+    import matplotlib
+    from matplotlib.collections import LineCollection
+
+    _, fig = crank6
+    backend = matplotlib.get_backend()
+    ax = fig.plot()
+    assert matplotlib.get_backend() == backend  # no backend chosen, no pyplot
+    drawn = [seg for coll in ax.collections if isinstance(coll, LineCollection) for seg in coll.get_segments()]
+    r = fig.replay.givens["r"]
+    O = fig.replay["O"]
+    # the crank circle is drawn: some polyline lies on the circle of radius r about O, to the chord's sagitta
+    on_circle = [seg for seg in drawn
+                 if len(seg) > 10 and np.allclose(np.hypot(seg[:, 0] - O.x, seg[:, 1] - O.y), r, atol=1e-9)]
+    assert on_circle
+    # every lettered point of the figure is plotted where the replay has it
+    dots = np.vstack([c.get_offsets() for c in ax.collections if not isinstance(c, LineCollection)])
+    for name in ("O", "D0", "D1"):
+        p = fig.replay[name]
+        assert np.min(np.hypot(dots[:, 0] - p.x, dots[:, 1] - p.y)) < 1e-12
+    assert {t.get_text() for t in ax.texts} >= {"O"}
+    # upto: the first steps only
+    few = fig.plot(upto=3)
+    assert sum(len(c.get_segments()) for c in few.collections if isinstance(c, LineCollection)) < len(drawn)
+
+
+def test_plot_draws_a_polyline_segment_by_segment():
+    from construct import Builder
+
+    b = Builder("hexagon", givens={})
+    pts = [b.given_point(f"P{i}", math.cos(i * math.pi / 3), math.sin(i * math.pi / 3)) for i in range(6)]
+    b.polyline("hex", pts, closed=True)
+    ax = b.figure().plot()
+    segs = [s for c in ax.collections for s in getattr(c, "get_segments", lambda: [])()]
+    hexagon = [s for s in segs if len(s) >= 6]
+    # the corners themselves are vertices of what is drawn: P3 = (-1, 0) is not rounded off
+    assert hexagon and np.min(np.hypot(hexagon[0][:, 0] + 1.0, hexagon[0][:, 1])) < 1e-12
 
 
 def test_notebook_svg_is_embeddable(crank6):

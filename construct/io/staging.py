@@ -45,7 +45,7 @@ from typing import Callable, Iterator
 from ..kernel.errors import OutputError
 
 __all__ = ["STAGING_PREFIX", "staged_output", "replaced_folder", "output_path", "remove_stale_staging",
-           "write_text"]
+           "write_text", "write_bytes"]
 
 STAGING_PREFIX = ".construct-staging-"
 _STAGING_NAME = re.compile(re.escape(STAGING_PREFIX) + r"(\d+)-(\d+)-")
@@ -322,3 +322,41 @@ def write_text(path: Path, text: str) -> None:
     path.parent.mkdir(parents=True, exist_ok=True)
     with open(path, "w", encoding="utf-8", newline="\n") as fh:
         fh.write(text)
+
+
+def write_bytes(target: str | os.PathLike[str], data: bytes) -> Path:
+    """Write one file whole or not at all: into a hidden file beside it, then one atomic rename.
+
+    The parent folder must exist (a file the user names is not a place to create folders in); a folder or
+    anything but a regular file at *target* is refused, and so is a failed write (disk full, permissions),
+    with the previous file kept.
+
+    >>> import tempfile
+    >>> p = Path(tempfile.mkdtemp()) / "t.txt"
+    >>> write_bytes(p, b"one").read_bytes(), sorted(x.name for x in p.parent.iterdir())
+    (b'one', ['t.txt'])
+    >>> write_bytes(p.parent, b"two")
+    Traceback (most recent call last):
+    ...
+    construct.kernel.errors.OutputError: ... is a folder, not a file to write
+    """
+    path = output_path(target, "output file")
+    st = _stat(path, "output file")
+    if st is not None and stat.S_ISDIR(st.st_mode):
+        raise OutputError(f"{str(path)!r} is a folder, not a file to write")
+    if st is not None and not stat.S_ISREG(st.st_mode):
+        raise OutputError(f"{str(path)!r} is not a regular file; refusing to replace it")
+    if not path.parent.is_dir():
+        raise OutputError(f"cannot write {str(path)!r}: its folder {str(path.parent)!r} does not exist")
+    fd, tmp = tempfile.mkstemp(prefix=_staging_prefix("file-"), dir=path.parent)
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(data)
+        os.replace(tmp, path)
+    except BaseException as exc:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        if isinstance(exc, OSError):
+            raise OutputError(f"cannot write {str(path)!r}: {_reason(exc)}") from None
+        raise
+    return path

@@ -9,10 +9,8 @@ highlight colour, with the step numbers and the group's title beneath.
 layered figure's own elements: each step group is defined once, in the
 delta of the tile that adds it, and tile i shows the deltas 1..i through
 ``<use>`` -- a handful of references per tile, no copy of the drawing and
-no rasteriser.  :func:`storyboard_png` draws the same sheet as a PNG with
-matplotlib (imported only then) for places that cannot show SVG: one Axes,
-each tile an affine copy of the marks inside it, one collection per look,
-clipped to the tile.  The PNG carries no software/date metadata.
+no rasteriser.  (A figure on a matplotlib Axes is
+:func:`construct.render.plotting.plot_figure`.)
 
 >>> from construct.constructions import get
 >>> from construct.render.scene import build_scene
@@ -23,20 +21,17 @@ True
 >>> sheet = storyboard_svg(Drawing(sc))
 >>> sheet.count("<use ") > len(ks) and sheet.count('id="s0001-O"') == 1
 True
->>> storyboard_png(sc)[1:4] == b"PNG"
-True
 """
 
 from __future__ import annotations
 
-import io
 import math
 
 from .scene import Scene
 from .svg import PLAIN, Drawing, Style, fmt
 from .wrapping import shorten, wrap
 
-__all__ = ["storyboard_svg", "storyboard_png", "storyboard_steps", "MAX_TILES"]
+__all__ = ["storyboard_svg", "storyboard_steps", "MAX_TILES"]
 
 MAX_TILES = 12
 TILE_W = 3.2  # inches
@@ -60,51 +55,6 @@ def storyboard_steps(scene: Scene, max_tiles: int = MAX_TILES) -> list[int]:
     return ks
 
 
-def _colour(style: Style, m, current: bool) -> str:
-    if current and style.highlight:
-        return style.highlight
-    if m.tool in style.tool_colours:
-        return style.tool_colours[m.tool]
-    if m.provenance in style.provenance_colours:
-        return style.provenance_colours[m.provenance]
-    return style.ink if (m.role == "result" or m.kind == "point") else style.construction
-
-
-def _arc_points(cx: float, cy: float, r: float, start: float, sweep: float, fine: float) -> list[tuple[float, float]]:
-    """An arc as a polyline whose chords stay within *fine* (drawing units) of the arc, 3 to 120 chords."""
-    step = 2.0 * math.sqrt(max(2.0 * fine / max(r, 1e-12), 1e-12))  # chord angle for a sagitta of *fine*
-    n = min(120, max(3, int(abs(sweep) / min(step, math.radians(12.0))) + 1))
-    return [(cx + r * math.cos(start + sweep * i / n), cy + r * math.sin(start + sweep * i / n)) for i in range(n + 1)]
-
-
-def _shapes(scene: Scene):
-    """Each mark as (mark, kind, points as an (N, 2) array, its box): 'pt', 'line' or 'area'."""
-    import numpy as np
-
-    x0, y0, x1, y1 = scene.bbox
-    fine = max(x1 - x0, y1 - y0) / 4000.0  # a tile never magnifies a stage more than ~10x
-    out = []
-    for m in scene.marks:
-        g = m.geom
-        if m.kind == "point":
-            kind, pts = "pt", [g]
-        elif m.kind == "segment":
-            kind, pts = "line", [(g[0], g[1]), (g[2], g[3])]
-        elif m.kind == "circle":
-            kind, pts = "line", _arc_points(g[0], g[1], g[2], 0.0, 2 * math.pi, fine)
-        elif m.kind == "arc":
-            kind, pts = "line", _arc_points(*g, fine)
-        elif m.kind == "curve":
-            kind, pts = "line", list(g)
-        elif m.kind == "area":
-            kind, pts = "area", list(g)
-        else:
-            continue
-        a = np.asarray(pts, dtype=float).reshape(-1, 2)
-        out.append((m, kind, a, (a[:, 0].min(), a[:, 1].min(), a[:, 0].max(), a[:, 1].max())))
-    return out
-
-
 def _tile_text(scene: Scene, first: int, k: int) -> str:
     """"Schritte 8–16: <group, German> / <group>" for the group the tile ends; a single step's caption else."""
     step = scene.steps[k - 1]
@@ -115,95 +65,6 @@ def _tile_text(scene: Scene, first: int, k: int) -> str:
         return scene.readable(f"{span}: {de} / {g}" if de != g else f"{span}: {g}")
     de, en = scene.caption(k)
     return f"{span}: {de} / {en}"
-
-
-def storyboard_png(scene: Scene, style: Style = PLAIN, *, columns: int = 4, dpi: int = 72) -> bytes:
-    """The contact sheet as PNG bytes."""
-    import numpy as np
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.collections import LineCollection, PolyCollection
-    from matplotlib.figure import Figure
-    from matplotlib.patches import Rectangle
-
-    ks = storyboard_steps(scene)
-    rows = math.ceil(len(ks) / columns)
-    x0, y0, x1, y1 = scene.bbox
-    aspect_t = min(max((y1 - y0) / max(x1 - x0, 1e-12), 0.25), 1.2)  # height / width of a tile's drawing
-    pad = 0.03
-    tile_h = TILE_W * aspect_t + CAPTION_H
-    width, height = TILE_W * columns, tile_h * rows + 0.5
-    fig = Figure(figsize=(width, height), dpi=dpi, facecolor=style.background)
-    FigureCanvasAgg(fig)
-    ax = fig.add_axes((0.0, 0.0, 1.0, 1.0))
-    ax.set_axis_off()
-    ax.set_xlim(0.0, width)
-    ax.set_ylim(0.0, height)
-    fig.text(0.5, 1 - 0.12 / height, scene.title[0], fontsize=9, color=style.ink, family="DejaVu Sans",
-             ha="center", va="top")
-    shapes = _shapes(scene)
-    steps = np.array([m.step for m, _, _, _ in shapes], dtype=int)
-    boxes = np.array([b for _, _, _, b in shapes], dtype=float).reshape(-1, 4)
-    fade = style.earlier_opacity < 1.0
-    prev = 0
-    for i, k in enumerate(ks):
-        col, row = i % columns, i // columns
-        # the tile's drawing, in inches: left, bottom, width, height
-        tx, tw = col * TILE_W + pad, TILE_W - 2 * pad
-        th = tw * aspect_t
-        ty = height - 0.5 - row * tile_h - th
-        # it shows the region of its top-level group (the far division ray of the
-        # stroke would otherwise shrink the crank circle to a dot)
-        sx0, sy0, sx1, sy1 = scene.stage_box(k)
-        cx, cy = (sx0 + sx1) / 2, (sy0 + sy1) / 2
-        half = max((sx1 - sx0) / 2, (sy1 - sy0) / 2 / aspect_t, 1e-12)
-        scale = (tw / 2) / half
-        vx0, vx1, vy0, vy1 = cx - half, cx + half, cy - half * aspect_t, cy + half * aspect_t
-        shift = np.array([tx + tw / 2 - cx * scale, ty + th / 2 - cy * scale])
-        frame = Rectangle((tx, ty), tw, th, fill=False, ec="#bbbbbb", lw=0.5)
-        ax.add_patch(frame)
-        clip = Rectangle((tx, ty), tw, th, transform=ax.transData)
-        inside = np.flatnonzero((steps <= k) & (boxes[:, 0] <= vx1) & (boxes[:, 2] >= vx0)
-                                & (boxes[:, 1] <= vy1) & (boxes[:, 3] >= vy0))
-        lines: dict[tuple, list] = {}
-        points: dict[tuple, list] = {}
-        areas: dict[tuple, list] = {}
-        for j in inside:
-            m, kind, pts, _ = shapes[j]
-            current = m.step > prev
-            c = _colour(style, m, current)
-            alpha = 1.0 if current or not fade else max(style.earlier_opacity, 0.3)
-            xy = pts * scale + shift
-            if kind == "pt":
-                points.setdefault((c, alpha, 1.6 if m.role == "result" else 1.0), []).append(xy[0])
-            elif kind == "area":
-                areas.setdefault((c, alpha), []).append(xy)
-            else:
-                lw = 0.35 * (style.result_width if m.role == "result" else style.construction_width)
-                if current and style.highlight:
-                    lw = max(lw, 0.8)
-                lines.setdefault((c, round(lw, 3), alpha), []).append(xy)
-        for (c, alpha), polys in sorted(areas.items()):
-            coll = PolyCollection(polys, facecolors=style.area_fill if style.area_fill != "none" else "none",
-                                  edgecolors=c, linewidths=0.3, alpha=alpha, hatch="////" if style.hatch else None)
-            ax.add_collection(coll, autolim=False)
-            coll.set_clip_path(clip)  # after adding: the Axes sets its own clip on collections without one
-        for (c, lw, alpha), segs in sorted(lines.items(), key=lambda kv: (kv[0][2], kv[0])):
-            coll = LineCollection(segs, colors=c, linewidths=lw, alpha=alpha, capstyle="round")
-            ax.add_collection(coll, autolim=False)
-            coll.set_clip_path(clip)  # after adding: the Axes sets its own clip on collections without one
-        for (c, alpha, ms), pts in sorted(points.items()):
-            xy = np.array(pts)
-            (dots,) = ax.plot(xy[:, 0], xy[:, 1], "o", ms=ms, color=c, alpha=alpha, mec="none", ls="none")
-            dots.set_clip_path(clip)
-        text = shorten(_tile_text(scene, prev + 1, k), 110, placeholder=" …")
-        lines = wrap(text, 48, break_on_hyphens=True)[:2]
-        ax.text(tx + tw / 2, ty - 0.05, "\n".join(lines), fontsize=7, color=style.ink,
-                family="DejaVu Sans", ha="center", va="top")
-        prev = k
-    buf = io.BytesIO()
-    # No "Software" (version) or date chunks: the same figure gives the same bytes.
-    fig.savefig(buf, format="png", dpi=dpi, facecolor=style.background, metadata={"Software": None})
-    return buf.getvalue()
 
 
 #: Tile width of the SVG sheet (px) and its caption's font size.

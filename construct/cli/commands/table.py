@@ -9,7 +9,7 @@ import sys
 
 from ...kernel.errors import InvalidParameter
 from ...kernel.division import MAX_PARTS
-from ...tables import TABLES
+from ...tables import TABLES, write_plot
 from ..common import _number, _whole
 
 NAME = "table"
@@ -32,6 +32,8 @@ def add_arguments(p) -> None:
     p.add_argument("--v", type=_number, action="append", metavar="M_S", help="rim speed v (flywheel; repeat)")
     p.add_argument("--infinite-rod", action="store_true", help="an infinitely long rod (speed-fluctuation)")
     p.add_argument("--format", choices=("text", "csv"), default="text")
+    p.add_argument("--plot", metavar="FILE",
+                   help="also plot the table as the book draws it into FILE (.png, .pdf or .svg by its suffix)")
 
 
 def _one_ratio(args) -> float:
@@ -87,6 +89,8 @@ def run(args) -> int:
         cols, rows = TABLES[args.table](rod_ratio=None if args.infinite_rod else _one_ratio(args), step=args.step)
     else:
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args))
+    if args.plot is not None:
+        write_plot(args.table, cols, rows, args.plot)
     sys.stdout.write(format_table(cols, rows, args.format))
     return 0
 

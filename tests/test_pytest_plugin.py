@@ -63,35 +63,38 @@ def test_readme_example_in_a_fresh_project(project: pytest.Pytester) -> None:
     first.assert_outcomes(failed=1)
     first.stdout.fnmatch_lines([f"*no goldens for '{NAME}'*--construct-update*"])
 
-    # 2. --construct-update writes the layered figure (every step a group) and the protocol.
-    project.runpytest_subprocess("--construct-update").assert_outcomes(passed=1)
+    # 2. --construct-update writes the layered figure (every step a group) and the protocol, and says so.
+    update = project.runpytest_subprocess("--construct-update")
+    update.assert_outcomes(passed=1)
     goldens = project.path / "goldens" / NAME
+    update.stdout.fnmatch_lines(["*construct goldens written*", f"{goldens}: final.svg, protocol.json"])
     assert sorted(p.name for p in goldens.iterdir()) == ["final.svg", "protocol.json"]
     layered = ET.fromstring((goldens / "final.svg").read_text(encoding="utf-8"))
     steps = {int(g.get("data-step")) for g in layered.iter("{http://www.w3.org/2000/svg}g") if g.get("data-step")}
-    # midpoint of D0D1: 2 given points + 2 circles + their crossing + line + line D0D1 + M = 8 steps
-    assert steps == set(range(1, 9))
+    # O, D0, D1 given + midpoint of D0D1 (2 circles + their crossing + line + line D0D1 + M) = 9 steps
+    assert steps == set(range(1, 10))
     project.runpytest_subprocess().assert_outcomes(passed=1)
 
     # 3. One point of the layered golden moved by 0.01: caught, with its step and element named.
     frame = goldens / "final.svg"
     original = frame.read_text(encoding="utf-8")
-    frame.write_text(_move_point(original, "s0002-D1", 0.01), encoding="utf-8")
+    frame.write_text(_move_point(original, "s0003-D1", 0.01), encoding="utf-8")
     failed = project.runpytest_subprocess()
     failed.assert_outcomes(failed=1)
     out = failed.stdout.str()
     assert f"construct golden '{NAME}': 1 of 2 files differ" in out
-    line = next(x for x in out.splitlines() if "s0002-D1" in x)
+    line = next(x for x in out.splitlines() if "s0003-D1" in x)
     assert "moved" in line and "by 0.01" in line
-    assert f"{NAME} step 2 ({NAME}/final.svg): 1 change" in out
+    assert f"{NAME} step 3 ({NAME}/final.svg): 1 change" in out
     page = project.path / ".construct-failures" / f"{NAME}.html"
     assert f"side by side: {page}" in out
     html = page.read_text(encoding="utf-8")
     # expected | actual: each drawing inline, in its own sandboxed frame (srcdoc, escaped)
     assert html.count("srcdoc=") == 2 and html.count("&lt;svg") == 2 and "<svg" not in html
     assert "expected: " in html and "actual" in html
-    assert "[id=&quot;s0002-D1&quot;]" in html  # the moved element is highlighted
-    assert "<pre>" in html and "s0002-D1 (circle, matched by id)" in html  # the report, escaped text
+    assert "[id=&quot;s0003-D1&quot;]" in html  # the moved element is highlighted
+    assert "<pre>" in html and "s0003-D1 (circle, matched by id)" in html  # the report, escaped text
+    assert f"<title>construct golden {NAME}: 1 file differs</title>" in html  # as many as the message counts
 
     # 4. The same golden respelled (attributes reordered, numbers reformatted): equal again,
     #    and the failure page is cleaned up.
@@ -99,7 +102,21 @@ def test_readme_example_in_a_fresh_project(project: pytest.Pytester) -> None:
     assert respelled != original and "e+0" in respelled
     frame.write_text(respelled, encoding="utf-8")
     project.runpytest_subprocess().assert_outcomes(passed=1)
-    assert not page.exists()
+    assert not page.exists() and not page.parent.exists()  # no empty failures folder left behind
+
+    # 5. The README's change: a shorter rod slides the stroke towards the shaft -- a geometric change, not a
+    #    uniform scale (which fitting the drawing to its view would hide): named step by step, and in the
+    #    protocol by the figure's own units.
+    source = project.path / "test_stroke.py"
+    source.write_text(source.read_text(encoding="utf-8").replace("middle_of_stroke(4.0)", "middle_of_stroke(3.5)")
+                      .replace("pytest.approx(4.0)", "pytest.approx(3.5)"), encoding="utf-8")
+    moved = project.runpytest_subprocess()
+    moved.assert_outcomes(failed=1)
+    out = moved.stdout.str()
+    assert re.search(r"moved +s0002-D0 \(circle, matched by id\): by \d", out), out
+    assert "moved      D0: point moved by 0.5: (3, 0) -> (2.5, 0)" in out
+    assert "moved      M: point moved by 0.5: (4, 0) -> (3.5, 0)" in out
+    assert not re.search(r"moved +O:", out)  # the shaft itself stays where it was
 
 
 def test_update_drops_stale_frames_and_name_collisions(pytester: pytest.Pytester) -> None:

@@ -168,7 +168,7 @@ def side_by_side_html(name: str, golden_root: Path, actual_root: Path, differenc
         elif d.kind == "svg":
             body += "<p class='none'>(not drawn: the first frames are)</p>"
         sections.append(f"<section>{head}{body}</section>")
-    n = len(differences)
+    n = len({d.path for d in differences})  # a layered file differing in several steps is one file, as in the message
     title = f"construct golden {name}: {n} file{' differs' if n == 1 else 's differ'}"
     style = ("body { font-family: 'DejaVu Sans', Arial, sans-serif; margin: 1.5em; }\n"
              "pre { background: #f6f6f6; padding: .5em; white-space: pre-wrap; }\n"
@@ -192,6 +192,8 @@ class GoldenChecker:
     default_name: str
     update: bool = False
     checked: list[str] = field(default_factory=list)
+    #: The golden folders --construct-update wrote (listed at the end of the run).
+    written: list[Path] = field(default_factory=list)
 
     def check(self, figure: Any, name: str | None = None, *, style: Any = "plain", frames: str = "none",
               title: tuple[str, str] | None = None, tolerance: float | None = None) -> Path:
@@ -222,6 +224,7 @@ class GoldenChecker:
             if self.update:
                 _replace(golden_dir, actual)
                 _remove(page)
+                self.written.append(golden_dir)
                 return golden_dir
             if not golden_dir.is_dir():
                 pytest.fail(f"no goldens for {name!r} in {golden_dir}; create them with "
@@ -266,11 +269,36 @@ def _replace(golden_dir: Path, rendered: Path) -> None:
         shutil.copytree(rendered, new)
 
 
-def _remove(path: Path) -> None:
+def _remove(page: Path) -> None:
+    """Remove a failure page, and its folder when that is left empty (nothing to review, nothing to ignore)."""
     try:
-        os.remove(path)
+        os.remove(page)
     except FileNotFoundError:
         pass
+    try:
+        page.parent.rmdir()
+    except OSError:  # not empty (another figure's page), or not there
+        pass
+
+
+#: Where the goldens the session wrote are collected for the summary.
+_WRITTEN = pytest.StashKey[list]()
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    config.stash[_WRITTEN] = []
+
+
+def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pytest.Config) -> None:
+    """With --construct-update: which golden folders were written, and what each holds."""
+    written = config.stash.get(_WRITTEN, [])
+    if not written:
+        return
+    terminalreporter.section("construct goldens written")
+    for folder in written:
+        files = sorted(str(p.relative_to(folder)) for p in folder.rglob("*") if p.is_file())
+        terminalreporter.write_line(f"{folder}: {', '.join(files)}")
+    terminalreporter.write_line("review them (git diff) and commit them with the change")
 
 
 @pytest.fixture
@@ -280,4 +308,5 @@ def construct_golden(request: pytest.FixtureRequest) -> GoldenChecker:
     return GoldenChecker(goldens=Path(request.node.path).parent / folder,
                          # module and test: two test files of one folder may hold tests of one name
                          default_name=f"{safe_name(Path(request.node.path).stem)}.{safe_name(request.node.name)}",
-                         update=bool(request.config.getoption("construct_update")))
+                         update=bool(request.config.getoption("construct_update")),
+                         written=request.config.stash.get(_WRITTEN, []))

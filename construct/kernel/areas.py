@@ -87,10 +87,6 @@ class Area:
     def rings(self) -> tuple[tuple[Point, ...], ...]:
         return tuple(ring for _, ring in self.pieces)
 
-    def area_points(self) -> tuple[Point, ...]:
-        """The first piece's ring (renderers that draw one polygon per object)."""
-        return self.pieces[0][1] if self.pieces else ()
-
     def hatch(self, spacing: float, angle_deg: float = 90.0) -> tuple[tuple[float, float, float, float], ...]:
         """Hatch lines clipped to the pieces by shapely: (x1, y1, x2, y2) segments, *spacing* apart.
 

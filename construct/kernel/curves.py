@@ -35,10 +35,6 @@ from .geometry import Line, Point
 __all__ = ["Polyline", "BezierCurve", "crossings", "CURVE_TYPES"]
 
 
-def _coords(p: Point) -> tuple[float, float]:
-    return p[0], p[1]
-
-
 class _Chain:
     """Shared behaviour of curves given by an ordered chain of points."""
 

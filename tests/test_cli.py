@@ -261,3 +261,45 @@ def test_table_plot_refuses_a_file_it_cannot_write(tmp_path, capsys, monkeypatch
     code, _, err = run(capsys, "table", "piston-path", "--rod-ratio", "5", "--plot", target)
     assert code == 2 and len(err.splitlines()) == 1 and "Traceback" not in err
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("argv", [
+    ("list",),
+    ("check", "crank", "--parts", "6"),
+    ("table", "crank-angle", "--rod-ratio", "5"),
+    ("errata", "--seed", "002"),
+    ("bench", "--parts", "6"),
+])
+def test_every_command_that_prints_data_prints_json(capsys, argv):
+    code, out, err = run(capsys, *argv, "--format", "json")
+    assert code == 0 and err == "", err
+    data = json.loads(out)
+    assert data  # a list or an object with content
+    code, alias, _ = run(capsys, *argv, "--json")  # the older spelling stays an alias
+    assert code == 0 and json.loads(alias).__class__ is data.__class__
+
+
+def test_diff_prints_json(tmp_path, capsys):
+    a = tmp_path / "a.svg"
+    a.write_text('<svg xmlns="http://www.w3.org/2000/svg"><circle id="p" cx="1" cy="1" r="1"/></svg>')
+    code, out, _ = run(capsys, "diff", str(a), str(a), "--format", "json")
+    assert code == 0 and isinstance(json.loads(out), (dict, list))
+
+
+def test_table_json_holds_the_csv_rows(capsys):
+    _, text, _ = run(capsys, "table", "crank-angle", "--rod-ratio", "5", "--format", "csv")
+    _, data, _ = run(capsys, "table", "crank-angle", "--rod-ratio", "5", "--format", "json")
+    rows = list(csv.DictReader(io.StringIO(text)))
+    assert [list(r) for r in json.loads(data)] == [list(r) for r in rows]
+    assert all(abs(float(r["omega_exact_deg"]) - d["omega_exact_deg"]) < 1e-12 for r, d in zip(rows, json.loads(data)))
+
+
+def test_list_is_an_aligned_table_of_names_and_titles(capsys):
+    from construct import get, names
+
+    _, out, _ = run(capsys, "list")
+    lines = out.splitlines()
+    assert [l.split()[0] for l in lines] == names()
+    column = {len(l) - len(l[len(l.split()[0]):].lstrip()) for l in lines}
+    assert len(column) == 1  # the titles start in one column
+    assert all(get(l.split()[0]).title.en in l and len(l) < 100 for l in lines)

@@ -26,6 +26,15 @@ def _whole(text: str) -> int:
         raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
 
 
+def add_format_option(p: argparse.ArgumentParser, formats: tuple[str, ...] = ("text", "json")) -> None:
+    """``--format FORMAT`` as every command that prints data takes it, with ``--json`` kept as its alias."""
+    p.add_argument("--format", choices=formats, default=formats[0],
+                   help=f"output format: {', '.join(formats)} (default: {formats[0]})")
+    if "json" in formats:
+        p.add_argument("--json", dest="format", action="store_const", const="json",
+                       help="the same as --format json")
+
+
 def add_construction_options(p: argparse.ArgumentParser, *, name_optional: bool = True) -> None:
     p.add_argument("name", nargs="?" if name_optional else None, metavar="CONSTRUCTION",
                    help="crank, crank-angle, inertia-curve (see 'construct list')")

@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 
 from ...regress.replaybench import CASES, run_bench, sweep_bench, verdicts
+from ..common import add_format_option
 
 NAME = "bench"
 HELP = ("benchmark building, replaying and sweeping the crank construction "
@@ -12,7 +13,7 @@ HELP = ("benchmark building, replaying and sweeping the crank construction "
 
 
 def add_arguments(p) -> None:
-    p.add_argument("--json", action="store_true", help="print the measurements as JSON")
+    add_format_option(p)
     p.add_argument("--parts", type=int, action="append", help="cases to run (dividers) instead of the standard set")
     p.add_argument("--outputs", action="store_true",
                    help="time the outputs instead: replay at 360 and 1440 parts, gallery, verify (about a minute)")
@@ -28,7 +29,7 @@ def run(args) -> int:
         from ...regress.diffbench import SIZES, diff_verdicts, run_diff_bench
 
         found = run_diff_bench(SIZES + ((1_000_000,) if args.diff_million else ()))
-        if args.json:
+        if args.format == "json":
             print(json.dumps(found, indent=1))
             return 0
         for line in diff_verdicts(found):
@@ -38,7 +39,7 @@ def run(args) -> int:
         from ...regress.outputbench import output_verdicts, run_output_bench
 
         found = run_output_bench()
-        if args.json:
+        if args.format == "json":
             print(json.dumps(found, indent=1))
             return 0
         for r in found:
@@ -50,7 +51,7 @@ def run(args) -> int:
     cases = tuple((n, "dividers") for n in args.parts) if args.parts else CASES
     results = run_bench(cases)
     sweep = None if args.parts else sweep_bench()
-    if args.json:
+    if args.format == "json":
         print(json.dumps({"cases": results, "sweep": sweep}, indent=1))
         return 0
     for r in results:

@@ -6,7 +6,7 @@ import json
 
 from ...constructions.checking import run_checks, summary
 from ...kernel.protocol import jsonable
-from ..common import add_construction_options, figure_from_args
+from ..common import add_format_option, add_construction_options, figure_from_args
 
 NAME = "check"
 HELP = "check a construction against the analytic formulas (exit 0 when all pass, 1 otherwise)"
@@ -14,7 +14,7 @@ HELP = "check a construction against the analytic formulas (exit 0 when all pass
 
 def add_arguments(p) -> None:
     add_construction_options(p)
-    p.add_argument("--json", action="store_true", help="print the checks as JSON")
+    add_format_option(p)
     p.add_argument("--all", action="store_true", help="list passing checks too")
 
 
@@ -22,7 +22,7 @@ def run(args) -> int:
     c, fig = figure_from_args(args)
     if c is None:  # a protocol of the user's own: it replayed, and there is nothing to check it against
         name = fig.protocol.construction
-        if args.json:
+        if args.format == "json":
             print(json.dumps({"construction": name, "ok": True, "checks": [],
                               "note": "not a book construction: replayed, no checks"}, indent=1, ensure_ascii=False))
         else:
@@ -32,7 +32,7 @@ def run(args) -> int:
     ok = all(ch.ok for ch in checks)
     params = {k: v for k, v in jsonable(dict(fig.params)).items() if k not in ("group_titles", "plate")}
     params["givens"] = dict(fig.replay.givens)
-    if args.json:
+    if args.format == "json":
         print(json.dumps({"construction": c.name, "params": params, "ok": ok,
                           "checks": [ch.as_dict() for ch in checks]}, indent=1, ensure_ascii=False))
     else:

@@ -16,6 +16,7 @@ import stat
 from pathlib import Path
 
 from ...kernel.errors import ConstructError, InvalidParameter
+from ..common import add_format_option
 
 NAME = "diff"
 HELP = "compare two SVG drawings or two protocol.json files geometrically (exit 0 equal, 1 different)"
@@ -30,7 +31,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("b", metavar="B", help="the file compared with it (the same kind as A)")
     parser.add_argument("--tolerance", type=float, default=None, metavar="T",
                         help="differences at or below T are equal (default 1e-6 for SVG, 1e-9 for protocols)")
-    parser.add_argument("--json", action="store_true", help="print the differences as JSON")
+    add_format_option(parser)
 
 
 #: The largest drawing ``diff`` reads.  A 3600-part replay's final.svg is a few MB and a million-element
@@ -83,7 +84,7 @@ def run(args: argparse.Namespace) -> int:
     tol = {} if args.tolerance is None else {"tolerance": args.tolerance}
     differ = diff_svg if kind_a == "svg" else diff_protocol
     result = differ(Path(args.a), Path(args.b), **tol)  # paths, so that errors name the file
-    if args.json:
+    if args.format == "json":
         print(json.dumps(result.as_dict(), indent=2, ensure_ascii=False))
     else:
         print(result.report())

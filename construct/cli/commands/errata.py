@@ -21,6 +21,7 @@ import json
 from collections import Counter
 
 from ...books.errata import CLASSES, Erratum, errata_of
+from ..common import add_format_option
 
 NAME = "errata"
 HELP = ("List every printed number of the seeds' tables and worked examples with its true value and a verdict "
@@ -30,7 +31,7 @@ _HEADINGS = ("table", "row", "column", "printed", "true", "units", "class", "not
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--format", choices=("text", "json"), default="text", help="output format (default: text)")
+    add_format_option(parser)
     parser.add_argument(
         "--class", dest="class_", choices=CLASSES, default=None, help="show only the entries of this class"
     )

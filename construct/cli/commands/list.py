@@ -1,20 +1,28 @@
-"""construct list: the available constructions."""
+"""construct list: the available constructions, as an aligned table of name and title (or JSON with the details)."""
 
 from __future__ import annotations
 
+import json
+
 from ...constructions import get, names
+from ...kernel.protocol import jsonable
+from ..common import add_format_option
 
 NAME = "list"
-HELP = "list the available constructions"
+HELP = "list the available constructions: name and title (--format json: source and parameters too)"
 
 
 def add_arguments(p) -> None:
-    pass
+    add_format_option(p)
 
 
 def run(args) -> int:
-    for name in names():
-        c = get(name)
-        defaults = ", ".join(f"{k}={v}" for k, v in c.defaults.items())
-        print(f"{name:16s} {c.title.en} — {c.title.de} [{c.source}] ({defaults})")
+    found = [get(name) for name in names()]
+    if args.format == "json":
+        print(json.dumps([{"name": c.name, "title": {"en": c.title.en, "de": c.title.de}, "source": c.source,
+                           "parameters": jsonable(dict(c.defaults))} for c in found], indent=1, ensure_ascii=False))
+        return 0
+    width = max(len(c.name) for c in found)
+    for c in found:
+        print(f"{c.name:<{width}}  {c.title.en}")
     return 0

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import csv
+import json
 import io
 import math
 import sys
@@ -10,7 +11,7 @@ import sys
 from ...kernel.errors import InvalidParameter
 from ...kernel.division import MAX_PARTS
 from ...tables import TABLES, write_plot
-from ..common import _number, _whole
+from ..common import add_format_option, _number, _whole
 
 NAME = "table"
 HELP = ("print a table (piston-path, crank-angle, acceleration, characteristic-points, mass-forces, "
@@ -31,7 +32,7 @@ def add_arguments(p) -> None:
     p.add_argument("--kz", type=_number, action="append", metavar="KG_CM2", help="allowed stress kz (flywheel; repeat)")
     p.add_argument("--v", type=_number, action="append", metavar="M_S", help="rim speed v (flywheel; repeat)")
     p.add_argument("--infinite-rod", action="store_true", help="an infinitely long rod (speed-fluctuation)")
-    p.add_argument("--format", choices=("text", "csv"), default="text")
+    add_format_option(p, ("text", "csv", "json"))
     p.add_argument("--plot", metavar="FILE",
                    help="also plot the table as the book draws it into FILE (.png, .pdf or .svg by its suffix)")
 
@@ -102,6 +103,8 @@ def _cell(v) -> str:
 
 
 def format_table(cols, rows, fmt: str) -> str:
+    if fmt == "json":  # the rows as objects, keys in the columns' order
+        return json.dumps([{c: r[c] for c in cols} for r in rows], indent=1, ensure_ascii=False) + "\n"
     if fmt == "csv":
         buf = io.StringIO()
         w = csv.writer(buf, lineterminator="\n")

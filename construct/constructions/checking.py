@@ -66,8 +66,26 @@ def summary(checks: list[Check]) -> str:
     worst = max(checks, key=lambda c: abs(c.error) / c.tolerance if c.tolerance else math.inf, default=None)
     text = f"{len(checks) - len(failed)} of {len(checks)} checks pass"
     if worst is not None:
-        text += f"; closest to its tolerance: {worst.name}, error {abs(worst.error):.2e} of {worst.tolerance:.1e}"
+        error, tolerance = decisive_digits(abs(worst.error), worst.tolerance)
+        text += f"; closest to its tolerance: {worst.name}, error {error} of {tolerance}"
     return text
+
+
+def decisive_digits(a: float, b: float) -> tuple[str, str]:
+    """*a* and *b* in exponent notation with as many digits as it takes to see which is larger (at least 2).
+
+    "error 6.12e-05 of 6.1e-05" reads as a failure; the tolerance was 6.128e-05.
+
+    >>> decisive_digits(6.1234e-05, 6.128e-05)
+    ('6.12e-05', '6.13e-05')
+    >>> decisive_digits(3.2e-13, 1e-12)
+    ('3.2e-13', '1.0e-12')
+    """
+    for digits in range(2, 18):
+        fa, fb = f"{a:.{digits - 1}e}", f"{b:.{digits - 1}e}"
+        if (float(fa) < float(fb)) == (a < b) and (float(fa) == float(fb)) == (a == b):
+            return fa, fb
+    return repr(a), repr(b)
 
 
 def run_checks(construction: Any, figure: Any) -> list[Check]:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import sys
+from pathlib import Path
 
 from ...gallery import build_gallery
 
@@ -17,7 +18,7 @@ def add_arguments(p) -> None:
 def run(args) -> int:
     entries = build_gallery(args.out, progress=True)
     figures = len({(e["construction"], tuple(sorted(e["params"].items()))) for e in entries})
-    files = sum(len(e["files"]) for e in entries)
+    files = sum(1 for p in Path(args.out).rglob("*") if p.is_file())  # what is on disk, index and README too
     print(f"gallery: {figures} figures, {len(entries)} styled entries, {files} files written to {args.out}",
           file=sys.stderr)
     return 0

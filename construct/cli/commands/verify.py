@@ -24,12 +24,13 @@ HELP = "rebuild the gallery and compare every file with the goldens (exit 0 equa
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     from ...regress.verify import DEFAULT_TOLERANCE, MAX_CHANGES
 
-    parser.add_argument("--gallery", default="gallery", metavar="DIR",
-                        help="the committed goldens (default: gallery, relative to the current folder)")
+    parser.add_argument("--out", "--gallery", dest="gallery", default="gallery", metavar="DIR",
+                        help="the committed gallery whose files are the goldens, as 'construct gallery --out' "
+                             "wrote it (default: gallery; --gallery is the older name)")
     parser.add_argument("--update", action="store_true",
                         help="replace the goldens by the rebuilt gallery and report what changed")
-    parser.add_argument("--tolerance", type=float, default=DEFAULT_TOLERANCE, metavar="T",
-                        help=f"SVG differences at or below T drawing units are equal (default {DEFAULT_TOLERANCE:g}: "
+    parser.add_argument("--tolerance", type=float, default=DEFAULT_TOLERANCE, metavar="UNITS",
+                        help=f"SVG differences at or below UNITS drawing units are equal (default {DEFAULT_TOLERANCE:g}: "
                              "under half of the renderer's 0.01 quantum, far above float noise)")
     parser.add_argument("--max-changes", type=int, default=MAX_CHANGES, metavar="N",
                         help=f"changes listed per file (default {MAX_CHANGES})")

@@ -54,6 +54,7 @@ __all__ = [
     "is_sweep",
     "take",
     "stack",
+    "points",
 ]
 
 #: Two curves whose gap or overlap is at most this fraction of their size
@@ -269,6 +270,27 @@ def _pt(x: Any, y: Any) -> Point:
     _set_x(p, x)
     _set_y(p, y)
     return p
+
+
+def points(xs: Any, ys: Any) -> tuple[Point, ...]:
+    """Points (xs[i], ys[i]) from two sequences of coordinates: one finiteness check for all of them.
+
+    What a long ring of vertices (an area's, a curve's) is built from; as
+    :class:`Point`, a non-finite coordinate is refused.
+
+    >>> points([0.0, 1.0], [2.0, 3.0])
+    (Point(0.0, 2.0), Point(1.0, 3.0))
+    >>> points([0.0], [float("inf")])
+    Traceback (most recent call last):
+    ...
+    construct.kernel.errors.DegenerateObject: Point needs finite coordinates, got (0.0, inf)
+    """
+    ax, ay = np.asarray(xs, dtype=float), np.asarray(ys, dtype=float)
+    bad = ~(np.isfinite(ax) & np.isfinite(ay))
+    if bad.any():
+        i = int(np.flatnonzero(bad)[0])
+        raise DegenerateObject(f"Point needs finite coordinates, got ({_num(ax[i])}, {_num(ay[i])})")
+    return tuple(_pt(x, y) for x, y in zip(ax.tolist(), ay.tolist()))
 
 
 class Line(_Value):

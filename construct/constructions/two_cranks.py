@@ -143,43 +143,70 @@ def kochanski_angle_error() -> float:
     return abs(_alpha1_of(KOCHANSKI_RHO) - _alpha1_of(math.pi))
 
 
-def quadrant_extremes(rod_ratio: float | None, samples: int = 2000) -> list[dict[str, float]]:
+def excess_exact_array(alpha: Any, rod_ratio: Any) -> Any:
+    """:func:`excess_exact` on arrays: angles *alpha* and rod ratios (None: infinite rod) broadcast together.
+
+    The same law with numpy, for a grid of angles or a sweep of rod ratios in
+    one pass (held equal to the scalar function by the tests).
+    """
+    alpha = np.asarray(alpha, dtype=float)
+    half = 0.5 * math.pi
+
+    def position(w):
+        if rod_ratio is None:
+            return 1.0 - np.cos(w)
+        s = np.sin(w)
+        return 1.0 - np.cos(w) + s * s / (rod_ratio + np.sqrt(rod_ratio * rod_ratio - s * s))
+
+    def travel(theta):
+        n = np.floor(theta / math.pi)
+        rem = theta - n * math.pi
+        even = np.mod(n, 2.0) == 0.0
+        return 2.0 * n + np.where(even, position(rem), 2.0 - position(math.pi - rem))
+
+    return travel(alpha) + travel(alpha + half) - travel(np.full_like(alpha, half)) - 4.0 * alpha / math.pi
+
+
+def quadrant_extremes(rod_ratio: Any, samples: int = 2000) -> list[dict[str, Any]]:
     """Per quadrant: where e is least and greatest, and by how much it rises and falls (exact law).
 
     Measured from the quadrant's start (§ 147: v1 there is the speed at its
     beginning); ``rise`` = max − start, ``fall`` = start − min.  Golden-section
-    refinement of a dense sample.
+    refinement of a dense sample, all quadrants (and, for an array of rod
+    ratios, all of them: the values are then arrays) in one numpy pass.
 
     >>> q = quadrant_extremes(None)[0]
     >>> round(math.degrees(q["alpha_min"]), 5), abs(q["rise"] - q["fall"]) < 1e-12
     (19.19968, True)
     """
-    out = []
-    for q in range(4):
-        a0 = q * 0.5 * math.pi
-        start = excess_exact(a0, rod_ratio)
-        grid = [a0 + 0.5 * math.pi * i / samples for i in range(samples + 1)]
-        vals = [excess_exact(a, rod_ratio) for a in grid]
-        i_min = min(range(len(vals)), key=vals.__getitem__)
-        i_max = max(range(len(vals)), key=vals.__getitem__)
-        a_min = _refine(grid, i_min, rod_ratio, -1.0)
-        a_max = _refine(grid, i_max, rod_ratio, 1.0)
-        e_min, e_max = excess_exact(a_min, rod_ratio), excess_exact(a_max, rod_ratio)
-        out.append({"quadrant": q + 1, "start": start, "alpha_min": a_min, "e_min": e_min, "alpha_max": a_max,
-                    "e_max": e_max, "rise": e_max - start, "fall": start - e_min})
-    return out
-
-
-def _refine(grid: list[float], i: int, rod_ratio: float | None, sign: float) -> float:
-    lo, hi = grid[max(i - 1, 0)], grid[min(i + 1, len(grid) - 1)]
+    scalar = rod_ratio is None or np.ndim(rod_ratio) == 0
+    ratio = None if rod_ratio is None else np.asarray(rod_ratio, dtype=float).reshape(-1, 1, 1)
+    step = 0.5 * math.pi / samples
+    a0 = (0.5 * math.pi * np.arange(4.0)).reshape(1, 4, 1)
+    grid = a0 + step * np.arange(samples + 1.0)  # (1, quadrant, sample)
+    vals = excess_exact_array(grid, ratio)  # (ratio, quadrant, sample)
+    start = vals[..., 0]
+    # golden-section search about the least and greatest sample: (ratio, quadrant, min/max)
+    i = np.stack([vals.argmin(axis=-1), vals.argmax(axis=-1)], axis=-1)
+    a00 = a0[..., 0][..., None]
+    lo = a00 + step * np.maximum(i - 1, 0)
+    hi = a00 + step * np.minimum(i + 1, samples)
+    sign = np.array([-1.0, 1.0])
+    r3 = None if ratio is None else ratio.reshape(-1, 1, 1)
     g = (math.sqrt(5.0) - 1.0) / 2.0
     for _ in range(80):
         a, b = hi - g * (hi - lo), lo + g * (hi - lo)
-        if sign * excess_exact(a, rod_ratio) > sign * excess_exact(b, rod_ratio):
-            hi = b
-        else:
-            lo = a
-    return 0.5 * (lo + hi)
+        left = sign * excess_exact_array(a, r3) > sign * excess_exact_array(b, r3)
+        hi, lo = np.where(left, b, hi), np.where(left, lo, a)
+    best = 0.5 * (lo + hi)
+    e = excess_exact_array(best, r3)
+    out = []
+    for q in range(4):
+        row = {"quadrant": q + 1, "start": start[:, q], "alpha_min": best[:, q, 0], "e_min": e[:, q, 0],
+               "alpha_max": best[:, q, 1], "e_max": e[:, q, 1]}
+        row["rise"], row["fall"] = row["e_max"] - row["start"], row["start"] - row["e_min"]
+        out.append({k: (v if k == "quadrant" else float(v[0]) if scalar else v) for k, v in row.items()})
+    return out
 
 
 def max_magnification(rod_ratio: float | None) -> float:

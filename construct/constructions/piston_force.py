@@ -51,6 +51,8 @@ from __future__ import annotations
 import math
 from typing import Any, Mapping
 
+import numpy as np
+
 from .. import analytic
 from ..checks import EUCLIDEAN_TOLERANCE, Check
 from ..errors import InvalidParameter
@@ -328,6 +330,23 @@ def _exact_accel(w: float, lam: float) -> float:
     return analytic.inertia_exact(w, lam)
 
 
+def _two_term_array(w: Any, lam: float) -> Any:
+    """:func:`_two_term` on an array of angles."""
+    return np.cos(w) + lam * np.cos(2.0 * w)
+
+
+def _exact_accel_array(w: Any, lam: float) -> Any:
+    """:func:`_exact_accel` (analytic.inertia_exact) on an array of angles."""
+    s2 = np.sin(w) ** 2
+    return np.cos(w) + lam * (np.cos(2.0 * w) + lam * lam * s2 * s2) / (1.0 - lam * lam * s2) ** 1.5
+
+
+def _dx_dw_array(w: Any, lam: float) -> Any:
+    """:func:`_dx_dw` on an array of angles."""
+    s = np.sin(w)
+    return (s + lam * s * np.cos(w) / np.sqrt(1.0 - lam * lam * s * s)) / 2.0
+
+
 def _exact_path(w: float, lam: float) -> float:
     """Piston path over the stroke (exact)."""
     return (1.0 - math.cos(w) + (1.0 - math.sqrt(1.0 - lam * lam * math.sin(w) ** 2)) / lam) / 2.0
@@ -339,15 +358,14 @@ def _dx_dw(w: float, lam: float) -> float:
 
 
 def _gauss(fn, a: float, b: float, pieces: int = 16, order: int = 20) -> float:
-    import numpy as np
-
-    xs, ws = np.polynomial.legendre.leggauss(order)
-    total = 0.0
+    """Gauss-Legendre of *order* on *pieces* equal pieces of [a, b]; *fn* takes an array of angles."""
+    xs, ws = _LEGGAUSS[order] if order in _LEGGAUSS else np.polynomial.legendre.leggauss(order)
     h = (b - a) / pieces
-    for i in range(pieces):
-        lo = a + i * h
-        total += sum(w * fn(lo + (x + 1.0) * h / 2.0) for x, w in zip(xs, ws)) * h / 2.0
-    return float(total)
+    nodes = (a + h * np.arange(pieces))[:, None] + (xs + 1.0) * h / 2.0  # (piece, node)
+    return float(((fn(nodes) * ws).sum(axis=1) * h / 2.0).sum())
+
+
+_LEGGAUSS = {20: np.polynomial.legendre.leggauss(20)}
 
 
 def _zero(fn, a: float, b: float) -> float:
@@ -381,11 +399,11 @@ def area_balance(fig: Figure) -> dict[str, float]:
     drawn_dec = sum(p.area for sign, p in pieces if sign < 0) * to_kgm
     drawn_balance = float(fig.replay["balance"]) * to_kgm  # the planimeter's reading
     w0 = _zero(lambda w: _two_term(w, lam), 0.0, math.pi)
-    two_acc = A * stroke_m * _gauss(lambda w: _two_term(w, lam) * _dx_dw(w, lam), 0.0, w0)
-    two_dec = -A * stroke_m * _gauss(lambda w: _two_term(w, lam) * _dx_dw(w, lam), w0, math.pi)
+    two_acc = A * stroke_m * _gauss(lambda w: _two_term_array(w, lam) * _dx_dw_array(w, lam), 0.0, w0)
+    two_dec = -A * stroke_m * _gauss(lambda w: _two_term_array(w, lam) * _dx_dw_array(w, lam), w0, math.pi)
     we = _zero(lambda w: _exact_accel(w, lam), 0.0, math.pi)
-    exact_acc = A * stroke_m * _gauss(lambda w: _exact_accel(w, lam) * _dx_dw(w, lam), 0.0, we)
-    exact_dec = -A * stroke_m * _gauss(lambda w: _exact_accel(w, lam) * _dx_dw(w, lam), we, math.pi)
+    exact_acc = A * stroke_m * _gauss(lambda w: _exact_accel_array(w, lam) * _dx_dw_array(w, lam), 0.0, we)
+    exact_dec = -A * stroke_m * _gauss(lambda w: _exact_accel_array(w, lam) * _dx_dw_array(w, lam), we, math.pi)
     return {"drawn_acceleration": drawn_acc, "drawn_deceleration": drawn_dec, "planimeter_balance": drawn_balance,
             "two_term_acceleration": two_acc, "two_term_deceleration": two_dec,
             "exact_acceleration": exact_acc, "exact_deceleration": exact_dec}

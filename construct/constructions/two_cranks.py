@@ -158,13 +158,14 @@ def excess_exact_array(alpha: Any, rod_ratio: Any) -> Any:
         s = np.sin(w)
         return 1.0 - np.cos(w) + s * s / (rod_ratio + np.sqrt(rod_ratio * rod_ratio - s * s))
 
-    def travel(theta):
+    def travel(theta):  # piston_travel: forward half turns from the dead centre, back ones from the other
         n = np.floor(theta / math.pi)
         rem = theta - n * math.pi
         even = np.mod(n, 2.0) == 0.0
-        return 2.0 * n + np.where(even, position(rem), 2.0 - position(math.pi - rem))
+        p = position(np.where(even, rem, math.pi - rem))
+        return 2.0 * n + np.where(even, p, 2.0 - p)
 
-    return travel(alpha) + travel(alpha + half) - travel(np.full_like(alpha, half)) - 4.0 * alpha / math.pi
+    return travel(alpha) + travel(alpha + half) - position(half) - 4.0 * alpha / math.pi
 
 
 def quadrant_extremes(rod_ratio: Any, samples: int = 2000) -> list[dict[str, Any]]:
@@ -196,7 +197,8 @@ def quadrant_extremes(rod_ratio: Any, samples: int = 2000) -> list[dict[str, Any
     g = (math.sqrt(5.0) - 1.0) / 2.0
     for _ in range(80):
         a, b = hi - g * (hi - lo), lo + g * (hi - lo)
-        left = sign * excess_exact_array(a, r3) > sign * excess_exact_array(b, r3)
+        ea, eb = excess_exact_array(np.stack([a, b]), r3)  # both probes in one pass
+        left = sign * ea > sign * eb
         hi, lo = np.where(left, b, hi), np.where(left, lo, a)
     best = 0.5 * (lo + hi)
     e = excess_exact_array(best, r3)

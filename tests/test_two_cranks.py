@@ -254,3 +254,17 @@ def test_quadrant_extremes_over_a_sweep_equal_a_dense_scalar_sampling():
             assert -1e-6 <= min(vals) - q["e_min"] <= 1e-6 and -1e-6 <= q["e_max"] - max(vals) <= 1e-6
             assert q["e_min"] <= min(vals) + 1e-12 and q["e_max"] >= max(vals) - 1e-12  # at an end: the end
             assert q["start"] == vals[0] or abs(q["start"] - vals[0]) <= 1e-15
+
+
+def test_a_sweep_picks_each_ratios_magnification_as_a_single_figure_does():
+    """The sweep's magnifications (one numpy pass) are those auto_magnification picks ratio by ratio, the
+    fallback below the smallest nice value included."""
+    from construct.constructions.two_cranks import auto_magnification
+
+    ratios = np.concatenate([np.linspace(1.001, 50.0, 200), [1.05, 1.1, 2.0, 5.0]])
+    for fluctuation in (0.05, 0.25, 1.0, 5.0):
+        swept = auto_magnification(ratios, fluctuation)
+        assert swept.tolist() == [auto_magnification(float(k), fluctuation) for k in ratios], fluctuation
+    g = dict(get("two-cranks").figure().replay.givens)
+    assert get("two-cranks").rod_ratio_sweep(g, ratios)["magnify"].tolist() == \
+        [auto_magnification(float(k), g["fluctuation"]) for k in ratios]

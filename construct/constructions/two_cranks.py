@@ -276,17 +276,27 @@ def _validate(givens: Mapping[str, float]) -> None:
 NICE_MAGNIFICATIONS = (8.0, 5.0, 4.0, 2.0, 1.0, 0.5, 0.25, 0.1)
 
 
-def auto_magnification(rod_ratio: float, fluctuation: float) -> float:
+def auto_magnification(rod_ratio: Any, fluctuation: float) -> Any:
     """The largest of :data:`NICE_MAGNIFICATIONS` that keeps every speed radius above 0.4 r.
+
+    For an array of rod ratios (a sweep), an array of magnifications, in one pass.
 
     >>> auto_magnification(5.0, 0.25), auto_magnification(2.0, 0.25), auto_magnification(1.1, 0.25)
     (8.0, 4.0, 1.0)
+    >>> auto_magnification(np.array([5.0, 2.0, 1.1]), 0.25).tolist()
+    [8.0, 4.0, 1.0]
     """
-    e_min = min(q["e_min"] for q in quadrant_extremes(rod_ratio, samples=400))
-    for m in NICE_MAGNIFICATIONS:
-        if fluctuation * m * max(-e_min, 0.0) <= 0.6:
-            return m
-    return NICE_MAGNIFICATIONS[-1] * 0.6 / (fluctuation * -e_min) / 1.01
+    if rod_ratio is None or np.ndim(rod_ratio) == 0:
+        e_min = min(q["e_min"] for q in quadrant_extremes(rod_ratio, samples=400))
+        for m in NICE_MAGNIFICATIONS:
+            if fluctuation * m * max(-e_min, 0.0) <= 0.6:
+                return m
+        return NICE_MAGNIFICATIONS[-1] * 0.6 / (fluctuation * -e_min) / 1.01
+    e_min = np.min([q["e_min"] for q in quadrant_extremes(rod_ratio, samples=400)], axis=0)
+    out = NICE_MAGNIFICATIONS[-1] * 0.6 / (fluctuation * -e_min) / 1.01
+    for m in NICE_MAGNIFICATIONS[::-1]:  # the largest that fits is written last
+        out = np.where(fluctuation * m * np.maximum(-e_min, 0.0) <= 0.6, m, out)
+    return out
 
 
 def _check_parts(parts: Any, method: str) -> str:
@@ -836,5 +846,5 @@ TWO_CRANKS = register(Construction(
     structural=("parts", "method", "infinite_rod"),
     # A draftsman picks the magnification of the speed deviations for the rod he draws: so does a sweep.
     sweep=lambda g, ratios: {**g, "rod_ratio": ratios,
-                             "magnify": np.array([auto_magnification(k, g["fluctuation"]) for k in ratios])},
+                             "magnify": auto_magnification(ratios, g["fluctuation"])},
 ), validate=_validate)

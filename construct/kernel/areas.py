@@ -37,7 +37,7 @@ class Area:
     style's default).
     """
 
-    __slots__ = ("pieces", "hatch_deg", "_polygons")
+    __slots__ = ("_pieces", "_coords", "hatch_deg", "_polygons")
     kind = "area"
 
     def __init__(self, pieces: Iterable[tuple[int, Sequence[Point]]], hatch_deg: float | None = None) -> None:
@@ -49,9 +49,52 @@ class Area:
             if sign not in (1, -1):
                 raise DegenerateObject(f"an area piece has sign +1 or -1, got {sign!r}")
             out.append((int(sign), ring))
-        object.__setattr__(self, "pieces", tuple(out))
+        object.__setattr__(self, "_pieces", tuple(out))
+        object.__setattr__(self, "_coords", None)
         object.__setattr__(self, "hatch_deg", None if hatch_deg is None else float(hatch_deg))
         object.__setattr__(self, "_polygons", None)  # the shapely pieces, made on first use (both are immutable)
+
+    @classmethod
+    def from_coordinates(cls, pieces: Iterable[tuple[int, Any, Any]], hatch_deg: float | None = None) -> "Area":
+        """An area from (sign, xs, ys) per piece: coordinate arrays, checked at once; Points made when asked for.
+
+        What :func:`area_between` makes (rings of a thousand vertices, a
+        thousand areas in a sweep, most of them only measured).
+
+        >>> a = Area.from_coordinates([(1, [0.0, 1.0, 0.0], [0.0, 0.0, 1.0])])
+        >>> a.signed_area(), a.pieces[0][1][1]
+        (0.5, Point(1.0, 0.0))
+        >>> a == Area([(1, [Point(0, 0), Point(1, 0), Point(0, 1)])])
+        True
+        """
+        import numpy as np
+
+        out = []
+        for sign, xs, ys in pieces:
+            xs, ys = np.array(xs, dtype=float), np.array(ys, dtype=float)
+            if xs.shape != ys.shape or xs.ndim != 1 or xs.size < 3:
+                raise DegenerateObject(f"an area piece needs at least three points, got {xs.size}")
+            if sign not in (1, -1):
+                raise DegenerateObject(f"an area piece has sign +1 or -1, got {sign!r}")
+            bad = ~(np.isfinite(xs) & np.isfinite(ys))
+            if bad.any():
+                i = int(np.flatnonzero(bad)[0])
+                raise DegenerateObject(f"Point needs finite coordinates, got ({float(xs[i])!r}, {float(ys[i])!r})")
+            xs.flags.writeable = ys.flags.writeable = False
+            out.append((int(sign), xs, ys))
+        self = object.__new__(cls)
+        object.__setattr__(self, "_pieces", None)
+        object.__setattr__(self, "_coords", tuple(out))
+        object.__setattr__(self, "hatch_deg", None if hatch_deg is None else float(hatch_deg))
+        object.__setattr__(self, "_polygons", None)
+        return self
+
+    @property
+    def pieces(self) -> tuple[tuple[int, tuple[Point, ...]], ...]:
+        """(sign, ring) per piece, each ring a tuple of Points."""
+        if self._pieces is None:
+            object.__setattr__(self, "_pieces", tuple((s, points(xs, ys)) for s, xs, ys in self._coords))
+        return self._pieces
 
     def __setattr__(self, name: str, value: Any) -> None:
         raise AttributeError("Area is immutable")
@@ -76,7 +119,10 @@ class Area:
             import numpy as np
             from shapely.geometry import Polygon
 
-            polys = tuple((s, Polygon(np.array([(p.x, p.y) for p in ring]))) for s, ring in self.pieces)
+            if self._coords is not None:
+                polys = tuple((s, Polygon(np.column_stack([xs, ys]))) for s, xs, ys in self._coords)
+            else:
+                polys = tuple((s, Polygon(np.array([(p.x, p.y) for p in ring]))) for s, ring in self._pieces)
             object.__setattr__(self, "_polygons", polys)
         return list(self._polygons)
 
@@ -219,10 +265,10 @@ def area_between(upper: Any, lower: Any, x_from: float, x_to: float, hatch_deg: 
         # Drop the doubled points where a run starts or ends on a crossing.
         keep = (rx != np.roll(rx, 1)) | (ry != np.roll(ry, 1))
         if keep.sum() >= 3:
-            out.append((int(s[0]), points(rx[keep], ry[keep])))
+            out.append((int(s[0]), rx[keep], ry[keep]))
     if not out:
         raise GeometryError("the two curves enclose no area between the given abscissae")
-    return Area(out, hatch_deg)
+    return Area.from_coordinates(out, hatch_deg)
 
 
 # --------------------------------------------------------------------------

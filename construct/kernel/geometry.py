@@ -390,6 +390,10 @@ Curve = Union[Line, Circle]
 
 def take(v: Any, i: int) -> Any:
     """Element *i* of a sweep value (a value that is no sweep is the same for every i)."""
+    if type(v) is Point:  # the commonest value of a sweep, taken without the dispatch below
+        x, y = v.x, v.y
+        return _pt(x if type(x) is float else float(x[i]) if type(x) is np.ndarray and x.ndim else take(x, i),
+                   y if type(y) is float else float(y[i]) if type(y) is np.ndarray and y.ndim else take(y, i))
     if isinstance(v, float):
         return v
     if isinstance(v, np.ndarray):

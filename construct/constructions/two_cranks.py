@@ -702,7 +702,8 @@ def speeds(fig: Figure, *, infinite: bool | None = None, crosshead_share: float 
 # -- checks ----------------------------------------------------------------------------
 
 
-def two_cranks_checks(fig: Figure) -> list[Check]:
+def two_cranks_checks(fig: Figure, model: Mapping[str, Any] | None = None) -> list[Check]:
+    """The checks of a two-cranks figure; *model*: ``{"extremes": quadrant_extremes(rod ratio)}``, if known."""
     n = fig.params["parts"]
     g = fig.replay.givens
     K = g["rod_ratio"]
@@ -741,7 +742,7 @@ def two_cranks_checks(fig: Figure) -> list[Check]:
                                     work_excess(fig, j, infinite=True) + work_excess(fig, n // 2 - j, infinite=True),
                                     0.0, 2 * tol, "§ 146: v_max - v1 = v1 - v_min; e(90 - a) = -e(a)", "Q r"))
         else:
-            for q in quadrant_extremes(ratio):
+            for q in (quadrant_extremes(ratio) if model is None else model["extremes"]):
                 # The grid's own rise and fall in each quadrant, against the exact law on the same grid.
                 lo, hi = (q["quadrant"] - 1) * n // 2, q["quadrant"] * n // 2
                 es = [work_excess(fig, j) for j in range(lo, hi + 1)]
@@ -840,6 +841,7 @@ TWO_CRANKS = register(Construction(
     source="seed 002, § 146-147, Fig. 566",
     build=build_two_cranks,
     checks=two_cranks_checks,
+    sweep_model=lambda g, params: {} if params["infinite_rod"] else {"extremes": quadrant_extremes(g["rod_ratio"])},
     defaults={"rod_ratio": 5.0, "infinite_rod": False, "parts": 12, "method": "auto", "r": 1.0,
               "fluctuation": 0.25, "magnify": None},
     book_params=({"rod_ratio": 5.0, "parts": 12}, {"infinite_rod": True, "parts": 12}),

@@ -31,7 +31,10 @@ def cli(capsys) -> Callable[..., Run]:
 
     def run(*argv: Any) -> Run:
         capsys.readouterr()  # what the test printed before is not the command's
-        code = main([str(a) for a in argv])
+        try:
+            code = main([str(a) for a in argv])
+        except SystemExit as exc:  # --help and argparse's own errors exit, as they do in a process
+            code = exc.code
         out, err = capsys.readouterr()
         return Run(code, out, err)
 

@@ -268,3 +268,27 @@ def test_a_sweep_picks_each_ratios_magnification_as_a_single_figure_does():
     g = dict(get("two-cranks").figure().replay.givens)
     assert get("two-cranks").rod_ratio_sweep(g, ratios)["magnify"].tolist() == \
         [auto_magnification(float(k), g["fluctuation"]) for k in ratios]
+
+
+def test_the_domain_check_of_a_sweep_names_the_first_set_a_single_check_refuses():
+    """_validate on a sweep's givens (one pass) refuses exactly when a set does, with that set's message."""
+    from construct.constructions import two_cranks as tc
+
+    g = dict(get("two-cranks").figure().replay.givens)
+    ratios = np.linspace(1.05, 50.0, 120)
+    for fluctuation, magnify in ((0.25, None), (1.0, 8.0), (0.5, 3.0), (0.1, 8.0)):
+        mags = tc.auto_magnification(ratios, fluctuation) if magnify is None else np.full(ratios.size, magnify)
+        swept = {**g, "rod_ratio": ratios, "fluctuation": fluctuation, "magnify": mags}
+        first = None
+        for i in range(ratios.size):
+            try:
+                tc._validate({**g, "rod_ratio": float(ratios[i]), "fluctuation": fluctuation, "magnify": float(mags[i])})
+            except InvalidParameter as exc:
+                first = str(exc)
+                break
+        if first is None:
+            tc._validate(swept)
+        else:
+            with pytest.raises(InvalidParameter) as info:
+                tc._validate(swept)
+            assert str(info.value) == first

@@ -50,6 +50,9 @@ class Construction:
     #: for a sweep's givens in one numpy pass: (givens, params) -> names to arrays, element i for set i.
     #: The checks take it as ``checks(figure, model=...)``.  None: the checks integrate nothing.
     sweep_model: Callable[[Mapping[str, Any], Mapping[str, Any]], Mapping[str, Any]] | None = None
+    #: Whether its validator takes a sweep's givens (arrays) at once, naming the first set outside the domain;
+    #: else :meth:`sweep_checks` validates set by set.
+    validates_sweeps: bool = False
 
     def figure(self, **params: Any) -> Figure:
         unknown = sorted(set(params) - set(self.defaults))
@@ -76,8 +79,11 @@ class Construction:
         """
         replay = figure.replay
         sets = [replay.take(i) for i in range(replay.size)] if replay.size else [replay]
-        for one in sets:  # every set is valid before the model is computed for all of them
-            _validate_givens(self.name, one.givens)
+        if self.validates_sweeps:  # every set is valid before the model is computed for all of them
+            _validate_givens(self.name, replay.givens)
+        else:
+            for one in sets:
+                _validate_givens(self.name, one.givens)
         model = None if self.sweep_model is None else self.sweep_model(replay.givens, figure.params)
         return [run_checks(self, Figure(figure.protocol, one), None if model is None else _take_model(model, i))
                 for i, one in enumerate(sets)]

@@ -211,10 +211,14 @@ def quadrant_extremes(rod_ratio: Any, samples: int = 2000) -> list[dict[str, Any
     return out
 
 
-def max_magnification(rod_ratio: float | None) -> float:
-    """The largest g = G·k for which every speed radius r + g·e stays positive (exact law)."""
-    e_min = min(q["e_min"] for q in quadrant_extremes(rod_ratio, samples=400))
-    return math.inf if e_min >= 0.0 else 1.0 / -e_min
+def max_magnification(rod_ratio: Any) -> Any:
+    """The largest g = G·k for which every speed radius r + g·e stays positive (exact law); arrays for a sweep."""
+    if rod_ratio is None or np.ndim(rod_ratio) == 0:
+        e_min = min(q["e_min"] for q in quadrant_extremes(rod_ratio, samples=400))
+        return math.inf if e_min >= 0.0 else 1.0 / -e_min
+    e_min = np.min([q["e_min"] for q in quadrant_extremes(rod_ratio, samples=400)], axis=0)
+    with np.errstate(divide="ignore"):
+        return np.where(e_min >= 0.0, math.inf, 1.0 / -e_min)
 
 
 # --------------------------------------------------------------------------
@@ -262,14 +266,20 @@ def _givens(r: Any, rod_ratio: Any, fluctuation: Any, magnify: Any) -> dict[str,
     return g
 
 
-def _validate(givens: Mapping[str, float]) -> None:
+def _validate(givens: Mapping[str, Any]) -> None:
+    """The givens' domain; a sweep's (arrays) in one pass, the message naming its first set outside."""
     g = _givens(givens["r"], givens["rod_ratio"], givens["fluctuation"], givens["magnify"])
     limit = max_magnification(g["rod_ratio"])
-    if g["fluctuation"] * g["magnify"] >= limit:
+    gain = g["fluctuation"] * g["magnify"]
+    outside = np.flatnonzero(np.atleast_1d(gain >= limit))
+    if outside.size:
+        i = int(outside[0])
+        at = lambda v: float(np.asarray(v).flat[i]) if np.ndim(v) else v  # noqa: E731  (set i of a sweep)
+        gain_i, ratio_i, limit_i = at(gain), at(g["rod_ratio"]), at(limit)
         raise InvalidParameter(
-            f"fluctuation x magnify = {g['fluctuation'] * g['magnify']:.6g} makes a speed radius r + g*e vanish "
-            f"for L/r = {g['rod_ratio']:.6g} (e falls to {-1.0 / limit:.4g} Q r); keep --magnify times --fluctuation "
-            f"below {limit:.4g}")
+            f"fluctuation x magnify = {gain_i:.6g} makes a speed radius r + g*e vanish "
+            f"for L/r = {ratio_i:.6g} (e falls to {-1.0 / limit_i:.4g} Q r); keep --magnify times --fluctuation "
+            f"below {limit_i:.4g}")
 
 
 #: Magnifications a draftsman would pick for the speed deviations (largest first).
@@ -841,6 +851,7 @@ TWO_CRANKS = register(Construction(
     source="seed 002, § 146-147, Fig. 566",
     build=build_two_cranks,
     checks=two_cranks_checks,
+    validates_sweeps=True,
     sweep_model=lambda g, params: {} if params["infinite_rod"] else {"extremes": quadrant_extremes(g["rod_ratio"])},
     defaults={"rod_ratio": 5.0, "infinite_rod": False, "parts": 12, "method": "auto", "r": 1.0,
               "fluctuation": 0.25, "magnify": None},

@@ -198,3 +198,18 @@ def test_the_area_integrals_on_arrays_equal_the_scalar_integrands_point_by_point
         v_max = mpmath.diff(x, we)  # the speed dx/dw is greatest where the acceleration changes sign
         # a is d2(x R)/dw2 over R = 2 d2x/dw2 (x in strokes): the integral of a dx is (2 v)^2 / 4 = v^2
         assert abs(acc - float(v_max) ** 2) <= 1e-12, lam
+
+
+def test_the_sweeps_model_areas_equal_the_areas_of_each_set():
+    """model_areas_sweep (one numpy pass over many rods) gives, set by set, the model areas of area_balance."""
+    import numpy as np
+
+    from construct.constructions import piston_force as pf
+
+    g = dict(PF.figure(parts=6).replay.givens)
+    lengths = g["crank_radius"] * np.array([1.05, 1.3, 2.0, 5.0, 12.0, 50.0])
+    swept = pf.model_areas_sweep({**g, "rod_length": lengths})
+    for i, length in enumerate(lengths):
+        one = pf._model_areas({**g, "rod_length": float(length)})
+        for key, value in one.items():
+            assert abs(swept[key][i] - value) <= 1e-13 * abs(value), (length, key)

@@ -188,3 +188,18 @@ def test_a_sweep_names_the_step_and_the_failing_set_when_circles_do_not_meet():
 def test_rules_choose_element_by_element():
     rule = as_rule(["left", "A", "B"])
     assert rule.name == "left" and rule.refs == ("A", "B")
+
+
+def test_a_set_taken_from_a_sweep_holds_every_object_of_that_set(rod_ratio_sweep):
+    """Replay.take looks objects up lazily: the set still has every name, each object equal to its own take,
+    and it pickles and compares as a plain replay of its objects."""
+    import pickle
+
+    c, fig, sweep = rod_ratio_sweep("crank", RATIOS)
+    one = sweep.take(137)
+    assert set(one) == set(sweep) and len(one) == len(sweep)
+    for name in sweep:
+        assert one[name] == take(sweep[name], 137), name
+    assert "no such object" not in one and one.get("no such object") is None
+    again = pickle.loads(pickle.dumps(one))
+    assert dict(again.items()) == dict(one.items()) and again.givens == one.givens

@@ -4,6 +4,12 @@ The property tests run every registered construction over 1000 rod ratios
 in (1.01, 50] with one sweep each, then check every set of givens with the
 construction's own checks (the analytic formulas), and watch every
 intersection for a branch switch between neighbouring ratios.
+
+The checks of a sweep run through ``Construction.sweep_checks``: what they
+integrate from the givens (the exact model) is computed for all 1000 sets in
+one numpy pass, what they measure is read off each set.  Another test holds
+those checks equal to each sampled set's own scalar checks.  The sweeps are
+made once per session (``rod_ratio_sweep`` in conftest.py).
 """
 
 from __future__ import annotations

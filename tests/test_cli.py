@@ -9,29 +9,22 @@ import sys
 
 import pytest
 
-from construct.cli import main
 from construct.kernel.errors import OutputError
 
 
-def run(capsys, *argv):
-    code = main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
-
-
-def test_list_names_the_constructions(capsys):
-    code, out, _ = run(capsys, "list")
+def test_list_names_the_constructions(cli):
+    code, out, _ = cli("list")
     assert code == 0 and "crank " in out and "crank-angle" in out
 
 
-def test_replay_writes_frames_final_and_protocol(tmp_path, capsys):
+def test_replay_writes_frames_final_and_protocol(tmp_path, cli):
     # by default the layered final figure and no standalone frames
     plain = tmp_path / "plain"
-    code, _, err = run(capsys, "replay", "crank", "--parts", "6", "--rod-ratio", "4", "--out", str(plain))
+    code, _, err = cli("replay", "crank", "--parts", "6", "--rod-ratio", "4", "--out", str(plain))
     assert code == 0, err
     assert not (plain / "steps").exists() and 'data-step="1"' in (plain / "final.svg").read_text()
     out = tmp_path / "o"
-    code, _, err = run(capsys, "replay", "crank", "--parts", "6", "--rod-ratio", "4", "--frames", "all",
+    code, _, err = cli("replay", "crank", "--parts", "6", "--rod-ratio", "4", "--frames", "all",
                        "--out", str(out))
     assert code == 0, err
     proto = json.loads((out / "protocol.json").read_text())
@@ -48,48 +41,48 @@ def test_replay_writes_frames_final_and_protocol(tmp_path, capsys):
     assert ids(frames[9]) <= set(range(1, 11)) and ids(frames[-1]) == ids(out / "final.svg")
 
 
-def test_replay_of_an_exported_protocol_with_new_givens_equals_a_fresh_build(tmp_path, capsys):
+def test_replay_of_an_exported_protocol_with_new_givens_equals_a_fresh_build(tmp_path, cli):
     a, b, c = tmp_path / "a", tmp_path / "b", tmp_path / "c"
-    assert run(capsys, "replay", "crank", "--parts", "9", "--rod-ratio", "4", "--frames", "none", "--out", str(a))[0] == 0
-    assert run(capsys, "replay", "--protocol", str(a / "protocol.json"), "--rod-ratio", "6", "--frames", "none",
+    assert cli("replay", "crank", "--parts", "9", "--rod-ratio", "4", "--frames", "none", "--out", str(a))[0] == 0
+    assert cli("replay", "--protocol", str(a / "protocol.json"), "--rod-ratio", "6", "--frames", "none",
                "--out", str(b))[0] == 0
-    assert run(capsys, "replay", "crank", "--parts", "9", "--rod-ratio", "6", "--frames", "none", "--out", str(c))[0] == 0
+    assert cli("replay", "crank", "--parts", "9", "--rod-ratio", "6", "--frames", "none", "--out", str(c))[0] == 0
     assert json.loads((b / "protocol.json").read_text()) == json.loads((c / "protocol.json").read_text())
 
 
-def test_check_exit_codes_and_json(capsys, tmp_path):
-    code, out, _ = run(capsys, "check", "crank", "--json")
+def test_check_exit_codes_and_json(cli, tmp_path):
+    code, out, _ = cli("check", "crank", "--json")
     data = json.loads(out)
     assert code == 0 and data["construction"] == "crank" and data["params"]["parts"] == 18
     assert {"name", "measured", "expected", "error", "tolerance", "ok"} <= set(data["checks"][0])
     assert all(c["ok"] for c in data["checks"])
     # A protocol whose crosshead takes the wrong branch fails its checks: exit 1.
-    run(capsys, "replay", "crank", "--parts", "6", "--frames", "none", "--out", str(tmp_path / "p"))
+    cli("replay", "crank", "--parts", "6", "--frames", "none", "--out", str(tmp_path / "p"))
     proto = json.loads((tmp_path / "p" / "protocol.json").read_text())
     step = next(s for s in proto["steps"] if s["outputs"] == ["C2"])
     step["params"]["rule"] = ["toward", "O", None, 1.0, 0.0]
     (tmp_path / "bad.json").write_text(json.dumps(proto))
-    code, out, _ = run(capsys, "check", "--protocol", str(tmp_path / "bad.json"))
+    code, out, _ = cli("check", "--protocol", str(tmp_path / "bad.json"))
     assert code == 1 and "FAIL" in out
 
 
-def test_piston_path_table_csv(capsys):
-    code, out, _ = run(capsys, "table", "piston-path", "--rod-ratio", "4", "--parts", "18", "--format", "csv")
+def test_piston_path_table_csv(cli):
+    code, out, _ = cli("table", "piston-path", "--rod-ratio", "4", "--parts", "18", "--format", "csv")
     rows = list(csv.DictReader(io.StringIO(out)))
     assert code == 0 and list(rows[0]) == ["index", "crank_angle_deg", "x_constructed", "x_exact", "x_book"]
     assert len(rows) == 19 and float(rows[-1]["x_constructed"]) == pytest.approx(1.0, abs=1e-12)
     assert float(rows[9]["crank_angle_deg"]) == pytest.approx(90.0, abs=1e-9)
 
 
-def test_crank_angle_table_csv(capsys):
-    code, out, _ = run(capsys, "table", "crank-angle", "--rod-ratio", "5", "--format", "csv")
+def test_crank_angle_table_csv(cli):
+    code, out, _ = cli("table", "crank-angle", "--rod-ratio", "5", "--format", "csv")
     rows = list(csv.DictReader(io.StringIO(out)))
     assert code == 0 and list(rows[0])[:3] == ["x", "omega_constructed_deg", "omega_exact_deg"]
     assert len(rows) == 11 and float(rows[5]["omega_constructed_deg"]) == pytest.approx(84 + 15.65 / 60, abs=0.01 / 60)
 
 
-def test_bench_json_shape(capsys):
-    code, out, _ = run(capsys, "bench", "--json", "--parts", "6")
+def test_bench_json_shape(cli):
+    code, out, _ = cli("bench", "--json", "--parts", "6")
     data = json.loads(out)
     case = data["cases"][0]
     assert code == 0 and {"case", "steps", "build_s", "replay_s", "trial_step_s"} <= set(case) and case["steps"] > 0
@@ -127,43 +120,56 @@ BAD = [
 ]
 
 
-@pytest.mark.parametrize("argv", BAD, ids=[" ".join(a[:4]) for a in BAD])
-def test_bad_input_gives_one_line_exit_2_and_writes_nothing(argv, tmp_path):
+def _bad_args(argv, tmp_path):
     bad = tmp_path / "bad.json"
     bad.write_text('{"construction": "crank", "steps": 3}')
-    out = tmp_path / "out"
-    args = [a.format(out=out, bad=bad, missing=tmp_path / "missing.json") for a in argv]
-    proc = subprocess.run([sys.executable, "-m", "construct", *args], capture_output=True, text=True)
+    return [a.format(out=tmp_path / "out", bad=bad, missing=tmp_path / "missing.json") for a in argv]
+
+
+@pytest.mark.parametrize("argv", BAD, ids=[" ".join(a[:4]) for a in BAD])
+def test_bad_input_gives_one_line_exit_2_and_writes_nothing(argv, tmp_path, cli):
+    """In-process (an exception escaping main fails the test); the entry point itself is run below."""
+    code, out, err = cli(*_bad_args(argv, tmp_path))
+    assert code == 2, err
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("construct"), err
+    assert "Traceback" not in err and out == ""
+    assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("argv", [BAD[0], BAD[-1]], ids=["library error", "argparse error"])
+def test_python_m_construct_keeps_the_contract_in_its_own_process(argv, tmp_path):
+    """The same contract through the interpreter: exit status 2, one line, no traceback from Python."""
+    proc = subprocess.run([sys.executable, "-m", "construct", *_bad_args(argv, tmp_path)], capture_output=True,
+                          text=True)
     assert proc.returncode == 2, proc.stderr
     lines = proc.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("construct"), proc.stderr
-    assert "Traceback" not in proc.stderr
-    assert not out.exists()
+    assert "Traceback" not in proc.stderr and proc.stdout == ""
+    assert not (tmp_path / "out").exists()
 
 
-def test_unwritable_output_folder(tmp_path):
+def test_unwritable_output_folder(tmp_path, cli):
     blocker = tmp_path / "file"
     blocker.write_text("not a folder")
     for target in (blocker, blocker / "sub"):
-        proc = subprocess.run([sys.executable, "-m", "construct", "replay", "crank", "--parts", "2", "--out",
-                               str(target)], capture_output=True, text=True)
-        assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1, proc.stderr
+        code, _, err = cli("replay", "crank", "--parts", "2", "--out", str(target))
+        assert code == 2 and len(err.strip().splitlines()) == 1, err
     assert blocker.read_text() == "not a folder"
 
 
 @pytest.mark.skipif(os.geteuid() == 0, reason="root can write into read-only folders")
-def test_read_only_output_folder(tmp_path):
+def test_read_only_output_folder(tmp_path, cli):
     ro = tmp_path / "ro"
     ro.mkdir()
     ro.chmod(0o500)
-    proc = subprocess.run([sys.executable, "-m", "construct", "replay", "crank", "--parts", "2", "--out", str(ro / "x")],
-                          capture_output=True, text=True)
-    assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1
+    code, _, err = cli("replay", "crank", "--parts", "2", "--out", str(ro / "x"))
+    assert code == 2 and len(err.strip().splitlines()) == 1, err
 
 
-def test_a_failure_midway_leaves_the_previous_output_intact(tmp_path, capsys, monkeypatch):
+def test_a_failure_midway_leaves_the_previous_output_intact(tmp_path, cli, monkeypatch):
     out = tmp_path / "o"
-    assert run(capsys, "replay", "crank", "--parts", "3", "--frames", "none", "--out", str(out))[0] == 0
+    assert cli("replay", "crank", "--parts", "3", "--frames", "none", "--out", str(out))[0] == 0
     before = {p.name: p.read_bytes() for p in out.iterdir() if p.is_file()}
     import construct.render.output as ro
 
@@ -177,14 +183,14 @@ def test_a_failure_midway_leaves_the_previous_output_intact(tmp_path, capsys, mo
         real_write(path, text)
 
     monkeypatch.setattr(ro, "write_text", write_then_fail)
-    code, _, err = run(capsys, "replay", "crank", "--parts", "6", "--out", str(out))
+    code, _, err = cli("replay", "crank", "--parts", "6", "--out", str(out))
     assert code == 2 and "disk full" in err and len(calls) == 2
     assert {p.name: p.read_bytes() for p in out.iterdir() if p.is_file()} == before
     assert not [p for p in out.iterdir() if p.name.startswith(".construct-staging")]
 
 
 @pytest.mark.parametrize("other", ["/dev/zero", "fifo", "folder", "huge.svg"])
-def test_diff_reads_only_bounded_regular_files(tmp_path, capsys, other):
+def test_diff_reads_only_bounded_regular_files(tmp_path, cli, other):
     # Issue 12: 'construct diff a.json /dev/zero' read until memory ran out.  A device, a named pipe
     # (which would make the read wait for a writer), a folder and a file above the size limit are refused
     # before anything is read.
@@ -202,14 +208,14 @@ def test_diff_reads_only_bounded_regular_files(tmp_path, capsys, other):
         with open(other, "wb") as fh:  # sparse: no disk space used
             fh.write(b"<")
             fh.truncate(MAX_DRAWING_BYTES + 1)
-    code, _, err = run(capsys, "diff", str(a), str(other))
+    code, _, err = cli("diff", str(a), str(other))
     assert code == 2 and len(err.splitlines()) == 1 and str(other) in err, err
 
 
-def test_version_comes_from_the_installed_distribution(capsys):
+def test_version_comes_from_the_installed_distribution(cli):
     from importlib.metadata import version
 
-    code, out, _ = run(capsys, "--version")
+    code, out, _ = cli("--version")
     assert code == 0 and out.strip() == f"construct {version('construct-steam')}"
     assert construct_version() == version("construct-steam")
 
@@ -221,8 +227,8 @@ def construct_version() -> str:
 
 
 @pytest.mark.parametrize("argv", [("check", "crank", "--rod-ratio"), ("frob",), ("table",), ("check", "--bogus")])
-def test_usage_errors_name_the_program_once(capsys, argv):
-    code, _, err = run(capsys, *argv)
+def test_usage_errors_name_the_program_once(cli, argv):
+    code, _, err = cli(*argv)
     assert code == 2 and err.count("construct") == 1 and err.startswith("construct: error: "), err
 
 
@@ -233,7 +239,7 @@ def test_every_table_has_a_plot_of_its_own_columns():
 
 
 @pytest.mark.parametrize("suffix", [".png", ".svg", ".pdf"])
-def test_table_plot_draws_the_rows_it_prints(tmp_path, capsys, suffix):
+def test_table_plot_draws_the_rows_it_prints(tmp_path, cli, suffix):
     """The curve handed to matplotlib is the table's column; the file is written whole, by its suffix."""
     import math
 
@@ -248,7 +254,7 @@ def test_table_plot_draws_the_rows_it_prints(tmp_path, capsys, suffix):
     assert list(x) == [r["crank_angle_deg"] for r in rows] and abs(y[0]) < 1e-12
     assert abs(y[list(x).index(45.0)]) < 1e-9
     out = tmp_path / f"e{suffix}"
-    code, text, err = run(capsys, "table", "speed-fluctuation", "--infinite-rod", "--step", "15", "--plot", str(out))
+    code, text, err = cli("table", "speed-fluctuation", "--infinite-rod", "--step", "15", "--plot", str(out))
     assert code == 0 and err == "" and text.startswith("crank_angle_deg")
     head = out.read_bytes()[:8]
     assert head.startswith({".png": b"\x89PNG", ".svg": b"<?xml", ".pdf": b"%PDF"}[suffix])
@@ -256,9 +262,9 @@ def test_table_plot_draws_the_rows_it_prints(tmp_path, capsys, suffix):
 
 
 @pytest.mark.parametrize("target", ["x.gif", "no-such-folder/x.png", "."])
-def test_table_plot_refuses_a_file_it_cannot_write(tmp_path, capsys, monkeypatch, target):
+def test_table_plot_refuses_a_file_it_cannot_write(tmp_path, cli, monkeypatch, target):
     monkeypatch.chdir(tmp_path)
-    code, _, err = run(capsys, "table", "piston-path", "--rod-ratio", "5", "--plot", target)
+    code, _, err = cli("table", "piston-path", "--rod-ratio", "5", "--plot", target)
     assert code == 2 and len(err.splitlines()) == 1 and "Traceback" not in err
     assert list(tmp_path.iterdir()) == []
 
@@ -270,34 +276,34 @@ def test_table_plot_refuses_a_file_it_cannot_write(tmp_path, capsys, monkeypatch
     ("errata", "--seed", "002"),
     ("bench", "--parts", "6"),
 ])
-def test_every_command_that_prints_data_prints_json(capsys, argv):
-    code, out, err = run(capsys, *argv, "--format", "json")
+def test_every_command_that_prints_data_prints_json(cli, argv):
+    code, out, err = cli(*argv, "--format", "json")
     assert code == 0 and err == "", err
     data = json.loads(out)
     assert data  # a list or an object with content
-    code, alias, _ = run(capsys, *argv, "--json")  # the older spelling stays an alias
+    code, alias, _ = cli(*argv, "--json")  # the older spelling stays an alias
     assert code == 0 and json.loads(alias).__class__ is data.__class__
 
 
-def test_diff_prints_json(tmp_path, capsys):
+def test_diff_prints_json(tmp_path, cli):
     a = tmp_path / "a.svg"
     a.write_text('<svg xmlns="http://www.w3.org/2000/svg"><circle id="p" cx="1" cy="1" r="1"/></svg>')
-    code, out, _ = run(capsys, "diff", str(a), str(a), "--format", "json")
+    code, out, _ = cli("diff", str(a), str(a), "--format", "json")
     assert code == 0 and isinstance(json.loads(out), (dict, list))
 
 
-def test_table_json_holds_the_csv_rows(capsys):
-    _, text, _ = run(capsys, "table", "crank-angle", "--rod-ratio", "5", "--format", "csv")
-    _, data, _ = run(capsys, "table", "crank-angle", "--rod-ratio", "5", "--format", "json")
+def test_table_json_holds_the_csv_rows(cli):
+    _, text, _ = cli("table", "crank-angle", "--rod-ratio", "5", "--format", "csv")
+    _, data, _ = cli("table", "crank-angle", "--rod-ratio", "5", "--format", "json")
     rows = list(csv.DictReader(io.StringIO(text)))
     assert [list(r) for r in json.loads(data)] == [list(r) for r in rows]
     assert all(abs(float(r["omega_exact_deg"]) - d["omega_exact_deg"]) < 1e-12 for r, d in zip(rows, json.loads(data)))
 
 
-def test_list_is_an_aligned_table_of_names_and_titles(capsys):
+def test_list_is_an_aligned_table_of_names_and_titles(cli):
     from construct import get, names
 
-    _, out, _ = run(capsys, "list")
+    _, out, _ = cli("list")
     lines = out.splitlines()
     assert [l.split()[0] for l in lines] == names()
     column = {len(l) - len(l[len(l.split()[0]):].lstrip()) for l in lines}

@@ -12,21 +12,14 @@ import numpy as np
 import pytest
 
 from construct import Figure, get
-from construct.cli import main
 from construct.constructions import domain as D
 from construct.kernel.errors import InvalidParameter
 from construct.kernel.division import METHODS, check_parts, methods_for
 
 
-def cli(capsys, *argv):
-    code = main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
-
-
-def refused(capsys, *argv) -> str:
+def refused(cli, *argv) -> str:
     """Exit 2, one line on stderr, nothing on stdout: the line."""
-    code, out, err = cli(capsys, *argv)
+    code, out, err = cli(*argv)
     assert (code, out) == (2, ""), (code, out, err)
     assert len(err.splitlines()) == 1 and "Traceback" not in err, err
     return err
@@ -37,8 +30,8 @@ def refused(capsys, *argv) -> str:
 ROD = ["crank", "crank-angle", "inertia-curve", "inertia-stroke-fractions", "tangential-pressure", "two-cranks"]
 
 
-def test_a_rod_ratio_of_1e16_prints_no_table(capsys):
-    err = refused(capsys, "table", "piston-path", "--rod-ratio", "1e16", "--parts", "6")
+def test_a_rod_ratio_of_1e16_prints_no_table(cli):
+    err = refused(cli, "table", "piston-path", "--rod-ratio", "1e16", "--parts", "6")
     assert "rod ratio L/r = 1e+16" in err and "1.05 .. 1000" in err and "--infinite-rod" in err
 
 
@@ -70,9 +63,9 @@ def test_a_sweep_over_the_domain_is_refused_at_its_first_ratio_outside():
         get("crank").replay(get("crank").figure(parts=6).protocol, rod_ratio=np.array([5.0, 2000.0]))
 
 
-def test_given_on_a_protocol_of_a_book_construction_keeps_the_domain(capsys, tmp_path):
-    assert cli(capsys, "replay", "crank", "--parts", "6", "--frames", "none", "--out", str(tmp_path / "c"))[0] == 0
-    err = refused(capsys, "check", "--protocol", str(tmp_path / "c" / "protocol.json"), "--given", "rod_ratio=1e16")
+def test_given_on_a_protocol_of_a_book_construction_keeps_the_domain(cli, tmp_path):
+    assert cli("replay", "crank", "--parts", "6", "--frames", "none", "--out", str(tmp_path / "c"))[0] == 0
+    err = refused(cli, "check", "--protocol", str(tmp_path / "c" / "protocol.json"), "--given", "rod_ratio=1e16")
     assert "rod ratio L/r = 1e+16" in err
 
 
@@ -135,8 +128,8 @@ def test_extreme_finite_givens_are_named_not_failed_at_a_step(name):
     (["check", "two-cranks", "--magnify", "0.2"], "magnify x fluctuation = 0.05"),
     (["table", "flywheel-coefficients", "--kz", "1e308", "--v", "1e308"], "kz = 1e+308"),
 ])
-def test_extreme_values_on_the_command_line_name_the_parameter(capsys, argv, named):
-    assert named in refused(capsys, *argv)
+def test_extreme_values_on_the_command_line_name_the_parameter(cli, argv, named):
+    assert named in refused(cli, *argv)
 
 
 def test_the_inertia_curves_tangent_at_90_degrees_needs_q5_off_the_infinite_rod_line():
@@ -159,21 +152,21 @@ def test_the_division_advice_names_only_methods_that_accept_n(n):
                 assert check_parts(n, m) == m
 
 
-def test_exact_7_recommends_dividers_only(capsys):
-    err = refused(capsys, "replay", "crank", "--method", "exact", "--parts", "7", "--out", "unused")
+def test_exact_7_recommends_dividers_only(cli):
+    err = refused(cli, "replay", "crank", "--method", "exact", "--parts", "7", "--out", "unused")
     assert err.rstrip().endswith("use --method dividers") and "durer" not in err and "neusis" not in err
 
 
 @pytest.mark.parametrize("table,step", [("acceleration", "0.01"), ("speed-fluctuation", "0.01"),
                                         ("acceleration", "1e-300")])
-def test_a_small_step_is_named_as_step(capsys, table, step):
-    err = refused(capsys, "table", table, "--rod-ratio", "5", "--step", step)
+def test_a_small_step_is_named_as_step(cli, table, step):
+    err = refused(cli, "table", table, "--rod-ratio", "5", "--step", step)
     assert "--step must be at least 0.05 degrees" in err and "number of parts" not in err
 
 
 @pytest.mark.parametrize("table", ["acceleration", "speed-fluctuation"])
-def test_a_step_that_does_not_divide_is_named_as_step(capsys, table):
-    assert "--step must divide" in refused(capsys, "table", table, "--rod-ratio", "5", "--step", "7")
+def test_a_step_that_does_not_divide_is_named_as_step(cli, table):
+    assert "--step must divide" in refused(cli, "table", table, "--rod-ratio", "5", "--step", "7")
 
 
 @pytest.mark.parametrize("argv,says", [
@@ -183,13 +176,13 @@ def test_a_step_that_does_not_divide_is_named_as_step(capsys, table):
     (["--rod-ratio", "-1e-3"], "greater than 1"),
     (["--radius", "-1e-3"], "crank radius r must be finite and positive"),
 ])
-def test_negative_and_infinite_values_reach_the_real_message(capsys, argv, says):
-    err = refused(capsys, "check", "crank", *argv)
+def test_negative_and_infinite_values_reach_the_real_message(cli, argv, says):
+    err = refused(cli, "check", "crank", *argv)
     assert says in err and "expected one argument" not in err
 
 
-def test_a_negative_value_of_a_table_option_reaches_the_real_message(capsys):
-    err = refused(capsys, "table", "acceleration", "--rod-ratio", "5", "--step", "-1e-3")
+def test_a_negative_value_of_a_table_option_reaches_the_real_message(cli):
+    err = refused(cli, "table", "acceleration", "--rod-ratio", "5", "--step", "-1e-3")
     assert "--step must be between 0 and 180 degrees" in err
 
 
@@ -200,23 +193,21 @@ def test_a_negative_value_of_a_table_option_reaches_the_real_message(capsys):
     ["check", "indicator-diagram", "--divisions", "1000000000"], ["bench", "--parts", "1000000000"],
     ["check", "crank", "--parts", "2.5"],
 ])
-def test_counts_are_refused_at_their_stated_limit(capsys, argv):
-    err = refused(capsys, *argv)
+def test_counts_are_refused_at_their_stated_limit(cli, argv):
+    err = refused(cli, *argv)
     assert any(word in err for word in ("between 1 and 3600", "from 1 to 1000", "from 2 to 200", "whole number")), err
 
 
-def test_a_negative_tolerance_in_exponent_form_reaches_the_real_message(capsys, tmp_path):
+def test_a_negative_tolerance_in_exponent_form_reaches_the_real_message(cli, tmp_path):
     svg = tmp_path / "a.svg"
     svg.write_text('<svg xmlns="http://www.w3.org/2000/svg"><circle cx="1" cy="1" r="1"/></svg>', encoding="utf-8")
-    assert "--tolerance must be a finite number >= 0" in refused(capsys, "diff", str(svg), str(svg), "--tolerance", "-1e-3")
+    assert "--tolerance must be a finite number >= 0" in refused(cli, "diff", str(svg), str(svg), "--tolerance", "-1e-3")
 
 
 @pytest.mark.parametrize("option", [["--admission", "0.05"], ["--back-pressure", "5"]])
-def test_tangential_pressure_with_negative_work_names_the_givens(capsys, option):
+def test_tangential_pressure_with_negative_work_names_the_givens(cli, option):
     # Issue 12 (found by the domain pass): these failed naming only "step 1634 (planimeter ...)".  The
     # indicator work of Baumann's diagram is below its back-pressure work here, so no mean line exists.
-    from construct.cli import main
-
-    assert main(["check", "tangential-pressure", *option]) == 2
-    err = capsys.readouterr().err
+    code, _, err = cli("check", "tangential-pressure", *option)
+    assert code == 2
     assert len(err.splitlines()) == 1 and option[0] in err and "negative work" in err, err

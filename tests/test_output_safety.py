@@ -20,7 +20,6 @@ import pytest
 
 import construct.gallery as gallery
 import construct.regress.verify as verify_module
-from construct.cli import main
 from construct.constructions import get
 from construct.kernel.errors import OutputError
 import construct.io.staging as output
@@ -35,12 +34,6 @@ ROOT = os.geteuid() == 0 if hasattr(os, "geteuid") else False
 def small_plan(monkeypatch):
     """A gallery of one small figure, so that a build takes a moment."""
     monkeypatch.setattr(gallery, "gallery_plan", lambda: [("crank", {"parts": 3, "rod_ratio": 4.0})])
-
-
-def run(capsys, *argv: str) -> tuple[int, str]:
-    code = main(list(argv))
-    err = capsys.readouterr().err
-    return code, err
 
 
 def refused(code: int, err: str) -> bool:
@@ -60,58 +53,58 @@ def staging(folder: Path) -> list[str]:
 # --------------------------------------------------------------------------- gallery --out
 
 
-def test_gallery_refuses_a_folder_of_other_files(small_plan, tmp_path, capsys):
+def test_gallery_refuses_a_folder_of_other_files(small_plan, tmp_path, cli):
     p = tmp_path / "p"
     p.mkdir()
     (p / "notes.txt").write_text("x\n")
-    code, err = run(capsys, "gallery", "--out", str(p))
+    code, _, err = cli("gallery", "--out", str(p))
     assert refused(code, err) and "notes.txt" in err and "gallery" in err
     assert tree(p) == {"notes.txt": b"x\n"} and not staging(tmp_path)
 
 
-def test_gallery_refuses_the_current_folder_and_an_empty_path(small_plan, tmp_path, capsys, monkeypatch):
+def test_gallery_refuses_the_current_folder_and_an_empty_path(small_plan, tmp_path, cli, monkeypatch):
     p = tmp_path / "p"
     p.mkdir()
     (p / "notes.txt").write_text("x\n")
     monkeypatch.chdir(p)
     for out in (".", ""):
-        code, err = run(capsys, "gallery", "--out", out)
+        code, _, err = cli("gallery", "--out", out)
         assert refused(code, err), (out, err)
         assert tree(p) == {"notes.txt": b"x\n"}
     assert "empty path" in err
     # an empty path is never meant, not even in an empty folder
     (p / "notes.txt").unlink()
-    code, err = run(capsys, "gallery", "--out", "")
+    code, _, err = cli("gallery", "--out", "")
     assert refused(code, err) and os.listdir(p) == [] and not staging(tmp_path)
 
 
-def test_gallery_refuses_a_file(small_plan, tmp_path, capsys):
+def test_gallery_refuses_a_file(small_plan, tmp_path, cli):
     f = tmp_path / "f.txt"
     f.write_text("hi\n")
-    code, err = run(capsys, "gallery", "--out", str(f))
+    code, _, err = cli("gallery", "--out", str(f))
     assert refused(code, err) and "not a folder" in err
     assert f.read_text() == "hi\n" and not staging(tmp_path)
 
 
-def test_gallery_replaces_a_gallery_or_an_empty_folder(small_plan, tmp_path, capsys):
+def test_gallery_replaces_a_gallery_or_an_empty_folder(small_plan, tmp_path, cli):
     out = tmp_path / "g"
     out.mkdir()
-    assert run(capsys, "gallery", "--out", str(out))[0] == 0
+    assert cli("gallery", "--out", str(out))[0] == 0
     first = tree(out)
     (out / "crank-parts-3-rod-ratio-4" / "stale.svg").write_text("left by an older gallery")
     assert gallery.is_gallery(out)  # recognised by its README.md and index.html
-    assert run(capsys, "gallery", "--out", str(out))[0] == 0
+    assert cli("gallery", "--out", str(out))[0] == 0
     assert tree(out) == first and not staging(tmp_path)
 
 
-def test_a_readme_that_is_a_pipe_is_not_read(small_plan, tmp_path, capsys):
+def test_a_readme_that_is_a_pipe_is_not_read(small_plan, tmp_path, cli):
     if not hasattr(os, "mkfifo"):
         pytest.skip("no named pipes here")
     out = tmp_path / "g"
     out.mkdir()
     os.mkfifo(out / "README.md")  # reading it would wait for a writer forever
     (out / "index.html").write_text("x")
-    code, err = run(capsys, "gallery", "--out", str(out))
+    code, _, err = cli("gallery", "--out", str(out))
     assert refused(code, err) and sorted(os.listdir(out)) == ["README.md", "index.html"]
 
 
@@ -133,25 +126,25 @@ def _small_gallery(out: Path) -> None:
     (out / "index.html").write_text("<title>gallery</title>\n")
 
 
-def test_verify_update_refuses_a_folder_it_did_not_write(tmp_path, capsys, monkeypatch):
+def test_verify_update_refuses_a_folder_it_did_not_write(tmp_path, cli, monkeypatch):
     monkeypatch.setattr(verify_module, "default_builder", _small_gallery)
     p = tmp_path / "project"
     p.mkdir()
     (p / "notes.txt").write_text("x\n")
     (p / "index.html").write_text("my own page\n")
-    code, err = run(capsys, "verify", "--gallery", str(p), "--update")
+    code, _, err = cli("verify", "--gallery", str(p), "--update")
     assert refused(code, err) and "notes.txt" in err
     assert tree(p) == {"notes.txt": b"x\n", "index.html": b"my own page\n"} and not staging(tmp_path)
     monkeypatch.chdir(p)
-    code, err = run(capsys, "verify", "--gallery", "", "--update")
+    code, _, err = cli("verify", "--gallery", "", "--update")
     assert refused(code, err) and "empty path" in err
     assert tree(p) == {"notes.txt": b"x\n", "index.html": b"my own page\n"}
     # goldens it wrote are rewritten, stale ones with them
     g = tmp_path / "g"
-    assert run(capsys, "verify", "--gallery", str(g), "--update")[0] == 0
+    assert cli("verify", "--gallery", str(g), "--update")[0] == 0
     (g / "crank-3" / "steps").mkdir()
     (g / "crank-3" / "steps" / "007.svg").write_text("<svg/>")
-    assert run(capsys, "verify", "--gallery", str(g), "--update")[0] == 0
+    assert cli("verify", "--gallery", str(g), "--update")[0] == 0
     assert not (g / "crank-3" / "steps").exists()
 
 
@@ -177,27 +170,27 @@ def test_construct_update_refuses_a_folder_it_did_not_write(tmp_path):
 # --------------------------------------------------------------------------- replay --out
 
 
-def test_replay_refuses_an_empty_path_and_a_folder_of_other_files(tmp_path, capsys, monkeypatch):
+def test_replay_refuses_an_empty_path_and_a_folder_of_other_files(tmp_path, cli, monkeypatch):
     monkeypatch.chdir(tmp_path)
-    code, err = run(capsys, "replay", "crank", "--parts", "3", "--out", "")
+    code, _, err = cli("replay", "crank", "--parts", "3", "--out", "")
     assert refused(code, err) and "empty path" in err and os.listdir(tmp_path) == []
     (tmp_path / "notes.txt").write_text("x\n")
-    code, err = run(capsys, "replay", "crank", "--parts", "3", "--out", ".")
+    code, _, err = cli("replay", "crank", "--parts", "3", "--out", ".")
     assert refused(code, err) and "notes.txt" in err
     assert os.listdir(tmp_path) == ["notes.txt"]
 
 
-def test_a_second_replay_leaves_exactly_its_own_files(tmp_path, capsys):
+def test_a_second_replay_leaves_exactly_its_own_files(tmp_path, cli):
     out = tmp_path / "o"
-    assert run(capsys, "replay", "crank", "--parts", "6", "--frames", "all", "--out", str(out))[0] == 0
+    assert cli("replay", "crank", "--parts", "6", "--frames", "all", "--out", str(out))[0] == 0
     assert len(os.listdir(out / "steps")) > 50
-    assert run(capsys, "replay", "crank", "--parts", "3", "--frames", "none", "--out", str(out))[0] == 0
+    assert cli("replay", "crank", "--parts", "3", "--frames", "none", "--out", str(out))[0] == 0
     fresh = tmp_path / "fresh"
-    assert run(capsys, "replay", "crank", "--parts", "3", "--frames", "none", "--out", str(fresh))[0] == 0
+    assert cli("replay", "crank", "--parts", "3", "--frames", "none", "--out", str(fresh))[0] == 0
     assert tree(out) == tree(fresh)
     # a replay folder with something foreign in it is not ours any more
     (out / "notes.txt").write_text("x\n")
-    code, err = run(capsys, "replay", "crank", "--parts", "3", "--out", str(out))
+    code, _, err = cli("replay", "crank", "--parts", "3", "--out", str(out))
     assert refused(code, err) and (out / "notes.txt").exists()
 
 
@@ -205,38 +198,38 @@ def test_a_second_replay_leaves_exactly_its_own_files(tmp_path, capsys):
 
 
 @pytest.mark.parametrize("command", [["replay", "crank", "--parts", "3"], ["gallery"], ["verify", "--update"]])
-def test_unreachable_targets_give_one_line(command, small_plan, tmp_path, capsys, monkeypatch):
+def test_unreachable_targets_give_one_line(command, small_plan, tmp_path, cli, monkeypatch):
     monkeypatch.setattr(verify_module, "default_builder", _small_gallery)
     blocker = tmp_path / "file"
     blocker.write_text("not a folder")
     option = "--gallery" if command[0] == "verify" else "--out"
     for target in (tmp_path / ("x" * 300), tmp_path / ("x" * 300) / "sub", blocker / "sub", blocker / "a" / "b"):
-        code, err = run(capsys, *command, option, str(target))
+        code, _, err = cli(*command, option, str(target))
         assert refused(code, err), (target, err)
     assert sorted(os.listdir(tmp_path)) == ["file"] and blocker.read_text() == "not a folder"
 
 
 @pytest.mark.skipif(ROOT, reason="root enters folders whatever their mode")
 @pytest.mark.parametrize("command", [["replay", "crank", "--parts", "3"], ["gallery"]])
-def test_a_folder_that_cannot_be_entered(command, small_plan, tmp_path, capsys):
+def test_a_folder_that_cannot_be_entered(command, small_plan, tmp_path, cli):
     closed = tmp_path / "closed"
     closed.mkdir()
     closed.chmod(0)
     try:
-        code, err = run(capsys, *command, "--out", str(closed / "x"))
+        code, _, err = cli(*command, "--out", str(closed / "x"))
     finally:
         closed.chmod(0o700)
     assert refused(code, err) and "Permission denied" in err
 
 
 @pytest.mark.skipif(ROOT, reason="root writes into read-only folders")
-def test_a_gallery_whose_parent_is_read_only_names_what_cannot_be_written(small_plan, tmp_path, capsys):
+def test_a_gallery_whose_parent_is_read_only_names_what_cannot_be_written(small_plan, tmp_path, cli):
     parent = tmp_path / "ro"
     out = parent / "g"
     out.mkdir(parents=True)  # the target itself is writable
     parent.chmod(0o500)
     try:
-        code, err = run(capsys, "gallery", "--out", str(out))
+        code, _, err = cli("gallery", "--out", str(out))
     finally:
         parent.chmod(0o700)
     assert refused(code, err)
@@ -245,7 +238,7 @@ def test_a_gallery_whose_parent_is_read_only_names_what_cannot_be_written(small_
     assert os.listdir(out) == []
 
 
-def test_the_unwritable_parent_message_also_as_root(small_plan, tmp_path, capsys, monkeypatch):
+def test_the_unwritable_parent_message_also_as_root(small_plan, tmp_path, cli, monkeypatch):
     """The same case where root cannot be denied: the staging folder cannot be made in the parent."""
     parent, out = tmp_path / "ro", tmp_path / "ro" / "g"
     out.mkdir(parents=True)
@@ -257,7 +250,7 @@ def test_the_unwritable_parent_message_also_as_root(small_plan, tmp_path, capsys
         return real(folder, tag)
 
     monkeypatch.setattr(output, "_make_stage", denied)
-    code, err = run(capsys, "gallery", "--out", str(out))
+    code, _, err = cli("gallery", "--out", str(out))
     assert refused(code, err)
     assert f"parent folder {str(parent.resolve())!r} is not writable (Permission denied)" in err
     assert os.listdir(out) == []
@@ -284,7 +277,7 @@ def _dead_pid() -> int:
     return proc.pid
 
 
-def test_stale_staging_of_a_dead_run_is_removed_and_a_live_one_kept(small_plan, tmp_path, capsys):
+def test_stale_staging_of_a_dead_run_is_removed_and_a_live_one_kept(small_plan, tmp_path, cli):
     dead = tmp_path / f"{STAGING_PREFIX}{_dead_pid()}-12345-abc"
     (dead / "g").mkdir(parents=True)
     (dead / "g" / "big.svg").write_text("x" * 1000)
@@ -292,7 +285,7 @@ def test_stale_staging_of_a_dead_run_is_removed_and_a_live_one_kept(small_plan, 
     live.mkdir()
     foreign = tmp_path / f"{STAGING_PREFIX}abcdef"  # no pid in its name: whose it is cannot be told
     foreign.mkdir()
-    assert run(capsys, "gallery", "--out", str(tmp_path / "g"))[0] == 0
+    assert cli("gallery", "--out", str(tmp_path / "g"))[0] == 0
     assert not dead.exists() and live.is_dir() and foreign.is_dir()
     assert output.remove_stale_staging(tmp_path) == []
 

@@ -4,6 +4,12 @@ The property tests run every registered construction over 1000 rod ratios
 in (1.01, 50] with one sweep each, then check every set of givens with the
 construction's own checks (the analytic formulas), and watch every
 intersection for a branch switch between neighbouring ratios.
+
+The checks of a sweep run through ``Construction.sweep_checks``: what they
+integrate from the givens (the exact model) is computed for all 1000 sets in
+one numpy pass, what they measure is read off each set.  Another test holds
+those checks equal to each sampled set's own scalar checks.  The sweeps are
+made once per session (``rod_ratio_sweep`` in conftest.py).
 """
 
 from __future__ import annotations
@@ -16,13 +22,8 @@ from construct.kernel.geometry import ARRAY, Circle, Line, circle_circle, line_c
 from construct.kernel.rules import as_rule
 
 RATIOS = np.linspace(1.01, 50.0, 1001)[1:]  # 1000 ratios in (1.01, 50]
-SWEPT = [n for n in names() if get(n).rod_ratio_sweep(get(n).figure().replay.givens, RATIOS) is not None]
-
-
-def _sweep(name: str, ratios=RATIOS):
-    c = get(name)
-    fig = c.figure()
-    return c, fig, fig.protocol.replay(c.rod_ratio_sweep(dict(fig.replay.givens), ratios))
+SWEPT = [n for n in names() if get(n).rod_ratio_sweep(get(n).figure().replay.givens, RATIOS[:1]) is not None]
+SAMPLED = (0, 1, 137, 500, 998, 999)
 
 
 def test_every_construction_with_a_rod_is_swept():
@@ -34,24 +35,56 @@ def _stroke(fig) -> float:
     return 2.0 * fig.replay["O"].distance(fig.replay["D0"]) if "O" in fig.replay and "D0" in fig.replay else 2.0 * g["r"]
 
 
+@pytest.fixture(scope="module")
+def swept_checks(rod_ratio_sweep):
+    """The checks of every set of the 1,000-ratio sweep, per construction: the model in one numpy pass."""
+    made = {}
+
+    def checks(name):
+        if name not in made:
+            c, fig, sweep = rod_ratio_sweep(name, RATIOS)
+            made[name] = c.sweep_checks(Figure(fig.protocol, sweep))
+        return made[name]
+
+    return checks
+
+
 @pytest.mark.parametrize("name", SWEPT)
-def test_every_check_holds_over_a_thousand_rod_ratios(name):
-    c, fig, sweep = _sweep(name)
-    assert sweep.size == RATIOS.size
+def test_every_check_holds_over_a_thousand_rod_ratios(name, swept_checks):
+    per_set = swept_checks(name)
+    assert len(per_set) == RATIOS.size
     failed = []
-    for i in range(sweep.size):
-        for ch in c.checks(Figure(fig.protocol, sweep.take(i))):
+    for i, checks in enumerate(per_set):
+        assert checks, f"L/r = {RATIOS[i]:.4f}: no checks"
+        for ch in checks:
             if not ch.ok:
                 failed.append(f"L/r = {RATIOS[i]:.4f}: {ch.name} error {ch.error:.3g} > {ch.tolerance:.3g}")
     assert not failed, f"{len(failed)} checks fail, e.g. {failed[:5]}"
 
 
 @pytest.mark.parametrize("name", SWEPT)
-def test_sweep_equals_scalar_replays_at_sampled_points(name):
-    c, fig, sweep = _sweep(name)
+def test_a_sweeps_checks_are_the_checks_of_each_set(name, rod_ratio_sweep, swept_checks):
+    """The sweep's model (arrays, one pass) gives, set by set, the checks the set's own figure gives (scalars)."""
+    c, fig, sweep = rod_ratio_sweep(name, RATIOS)
+    per_set = swept_checks(name)
+    for i in SAMPLED:
+        single = c.check(Figure(fig.protocol, sweep.take(i)))
+        assert [ch.name for ch in per_set[i]] == [ch.name for ch in single], i
+        for a, b in zip(per_set[i], single):
+            assert a.measured == b.measured or abs(a.measured - b.measured) <= 1e-12 * max(1.0, abs(b.measured)), \
+                (i, b.name)
+            for x, y in ((a.expected, b.expected), (a.tolerance, b.tolerance)):
+                assert x == y or abs(x - y) <= 1e-12 * max(1.0, abs(y)), (i, b.name, x, y)
+            assert (a.ok, a.unit) == (b.ok, b.unit), (i, b.name)
+
+
+@pytest.mark.parametrize("name", SWEPT)
+def test_sweep_equals_scalar_replays_at_sampled_points(name, rod_ratio_sweep):
+    c, fig, sweep = rod_ratio_sweep(name, RATIOS)
     stroke = _stroke(fig)
-    for i in (0, 1, 137, 500, 998, 999):
-        single = fig.protocol.replay({k: take(v, i) for k, v in c.rod_ratio_sweep(dict(fig.replay.givens), RATIOS).items()})
+    givens = c.rod_ratio_sweep(dict(fig.replay.givens), RATIOS)
+    for i in SAMPLED:
+        single = fig.protocol.replay({k: take(v, i) for k, v in givens.items()})
         set_i = sweep.take(i)
         for obj_name, value in single.items():
             swept = set_i[obj_name]
@@ -114,8 +147,8 @@ def branch_jumps(protocol, sweep, scale):
 
 
 @pytest.mark.parametrize("name", SWEPT)
-def test_no_intersection_switches_branch_between_neighbouring_ratios(name):
-    c, fig, sweep = _sweep(name, np.linspace(1.02, 50.0, 2000))
+def test_no_intersection_switches_branch_between_neighbouring_ratios(name, rod_ratio_sweep):
+    c, fig, sweep = rod_ratio_sweep(name, np.linspace(1.02, 50.0, 2000))
     problems, checked = branch_jumps(fig.protocol, sweep, _stroke(fig))
     assert checked > 0
     assert not problems, problems[:3]
@@ -161,3 +194,18 @@ def test_a_sweep_names_the_step_and_the_failing_set_when_circles_do_not_meet():
 def test_rules_choose_element_by_element():
     rule = as_rule(["left", "A", "B"])
     assert rule.name == "left" and rule.refs == ("A", "B")
+
+
+def test_a_set_taken_from_a_sweep_holds_every_object_of_that_set(rod_ratio_sweep):
+    """Replay.take looks objects up lazily: the set still has every name, each object equal to its own take,
+    and it pickles and compares as a plain replay of its objects."""
+    import pickle
+
+    c, fig, sweep = rod_ratio_sweep("crank", RATIOS)
+    one = sweep.take(137)
+    assert set(one) == set(sweep) and len(one) == len(sweep)
+    for name in sweep:
+        assert one[name] == take(sweep[name], 137), name
+    assert "no such object" not in one and one.get("no such object") is None
+    again = pickle.loads(pickle.dumps(one))
+    assert dict(again.items()) == dict(one.items()) and again.givens == one.givens

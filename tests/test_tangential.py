@@ -169,3 +169,22 @@ def test_check_cli_and_bad_option(capsys):
     assert main(["check", "tangential-pressure", "--kappa", "-2"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "kappa" in err[0]
+
+
+@pytest.mark.parametrize("force", ["baumann", "unit"])
+def test_the_sweeps_model_equals_the_model_of_each_set(force):
+    """model_summary_sweep (one numpy pass over many rod ratios) gives, set by set, what model_summary gives."""
+    import numpy as np
+
+    from construct.constructions.tangential import model_summary, model_summary_sweep
+
+    ratios = np.array([1.05, 1.3, 2.0, 5.0, 12.0, 50.0])
+    g = dict(TP.figure(force=force, parts=6).replay.givens)
+    swept = model_summary_sweep({**g, "rod_ratio": ratios}, force)
+    for i, ratio in enumerate(ratios):
+        one = model_summary({**g, "rod_ratio": float(ratio)}, force)
+        for key in ("mean", "alpha1", "alpha2", "excess"):
+            assert abs(swept[key][i] - one[key]) <= 1e-13 * max(1.0, abs(one[key])), (force, ratio, key)
+        assert len(swept["kinks"]) == len(one["kinks"])
+        for a, b in zip(swept["kinks"], one["kinks"]):
+            assert abs(a[i] - b) <= 1e-14, (force, ratio)

@@ -9,6 +9,7 @@ import json
 import math
 
 import mpmath
+import numpy as np
 import pytest
 
 from construct.cli import main
@@ -220,3 +221,74 @@ def test_speed_without_either_simplification(finite):
             assert row["v_full"] == pytest.approx(float(want), abs=1e-11), row["index"]
     plain = speeds(finite)
     assert all(r["v_full"] == pytest.approx(r["v_exact"], abs=1e-15) for r in plain)
+
+
+def test_the_array_law_equals_the_scalar_law():
+    """excess_exact_array (grids, sweeps) is excess_exact with numpy: on both rods, all four quadrants and beyond."""
+    from construct.constructions.two_cranks import excess_exact, excess_exact_array
+
+    angles = np.linspace(0.0, 2.5 * math.pi, 301)
+    for ratio in (None, 1.05, 2.0, 5.0, 50.0):
+        swept = excess_exact_array(angles, ratio)
+        assert np.allclose(swept, [excess_exact(a, ratio) for a in angles], rtol=0.0, atol=1e-13), ratio
+    ratios = np.array([1.05, 3.0, 40.0])
+    grid = excess_exact_array(angles[None, :], ratios[:, None])
+    assert np.allclose(grid, [[excess_exact(a, k) for a in angles] for k in ratios], rtol=0.0, atol=1e-13)
+
+
+def test_quadrant_extremes_over_a_sweep_equal_a_dense_scalar_sampling():
+    """One numpy pass over many rod ratios gives, ratio by ratio, the scalar answer, and the extremes of the
+    law sampled point by point (4,000 points a quadrant) to within the sampling's error."""
+    from construct.constructions.two_cranks import excess_exact, quadrant_extremes
+
+    ratios = np.array([1.05, 2.0, 5.0, 50.0])
+    swept = quadrant_extremes(ratios)
+    for i, ratio in enumerate(ratios):
+        single = quadrant_extremes(float(ratio))
+        for q_sweep, q in zip(swept, single):
+            for key in ("start", "alpha_min", "e_min", "alpha_max", "e_max", "rise", "fall"):
+                assert abs(q_sweep[key][i] - q[key]) <= 1e-12, (ratio, q["quadrant"], key)
+            a0 = (q["quadrant"] - 1) * 0.5 * math.pi
+            vals = [excess_exact(a0 + 0.5 * math.pi * j / 4000, float(ratio)) for j in range(4001)]
+            # the refined extremes lie beyond the samples' by at most the sampling error (step^2 |e''| / 8)
+            assert -1e-6 <= min(vals) - q["e_min"] <= 1e-6 and -1e-6 <= q["e_max"] - max(vals) <= 1e-6
+            assert q["e_min"] <= min(vals) + 1e-12 and q["e_max"] >= max(vals) - 1e-12  # at an end: the end
+            assert q["start"] == vals[0] or abs(q["start"] - vals[0]) <= 1e-15
+
+
+def test_a_sweep_picks_each_ratios_magnification_as_a_single_figure_does():
+    """The sweep's magnifications (one numpy pass) are those auto_magnification picks ratio by ratio, the
+    fallback below the smallest nice value included."""
+    from construct.constructions.two_cranks import auto_magnification
+
+    ratios = np.concatenate([np.geomspace(1.001, 50.0, 40), [1.05, 1.1, 2.0, 5.0]])
+    for fluctuation in (0.05, 0.25, 1.0, 5.0):
+        swept = auto_magnification(ratios, fluctuation)
+        assert swept.tolist() == [auto_magnification(float(k), fluctuation) for k in ratios], fluctuation
+    g = dict(get("two-cranks").figure().replay.givens)
+    assert get("two-cranks").rod_ratio_sweep(g, ratios)["magnify"].tolist() == \
+        [auto_magnification(float(k), g["fluctuation"]) for k in ratios]
+
+
+def test_the_domain_check_of_a_sweep_names_the_first_set_a_single_check_refuses():
+    """_validate on a sweep's givens (one pass) refuses exactly when a set does, with that set's message."""
+    from construct.constructions import two_cranks as tc
+
+    g = dict(get("two-cranks").figure().replay.givens)
+    ratios = np.geomspace(1.05, 50.0, 40)
+    for fluctuation, magnify in ((0.25, None), (1.0, 8.0), (0.5, 3.0), (0.1, 8.0)):
+        mags = tc.auto_magnification(ratios, fluctuation) if magnify is None else np.full(ratios.size, magnify)
+        swept = {**g, "rod_ratio": ratios, "fluctuation": fluctuation, "magnify": mags}
+        first = None
+        for i in range(ratios.size):
+            try:
+                tc._validate({**g, "rod_ratio": float(ratios[i]), "fluctuation": fluctuation, "magnify": float(mags[i])})
+            except InvalidParameter as exc:
+                first = str(exc)
+                break
+        if first is None:
+            tc._validate(swept)
+        else:
+            with pytest.raises(InvalidParameter) as info:
+                tc._validate(swept)
+            assert str(info.value) == first

@@ -46,6 +46,13 @@ class Construction:
     #: The givens of a sweep over rod ratios L/r, from a figure's givens: for constructions that name the rod
     #: otherwise (a rod length in metres) or whose other givens follow the rod ratio.  None: set "rod_ratio".
     sweep: Callable[[Mapping[str, float], Any], dict[str, Any]] | None = None
+    #: What the checks compute numerically from the givens alone (the exact model's integrals, extremes),
+    #: for a sweep's givens in one numpy pass: (givens, params) -> names to arrays, element i for set i.
+    #: The checks take it as ``checks(figure, model=...)``.  None: the checks integrate nothing.
+    sweep_model: Callable[[Mapping[str, Any], Mapping[str, Any]], Mapping[str, Any]] | None = None
+    #: Whether its validator takes a sweep's givens (arrays) at once, naming the first set outside the domain;
+    #: else :meth:`sweep_checks` validates set by set.
+    validates_sweeps: bool = False
 
     def figure(self, **params: Any) -> Figure:
         unknown = sorted(set(params) - set(self.defaults))
@@ -73,6 +80,24 @@ class Construction:
             return None
         return {**givens, "rod_ratio": np.asarray(ratios, dtype=float)}
 
+    def sweep_checks(self, figure: Figure) -> list[list[Check]]:
+        """The checks of every set of givens of a sweep (a figure replayed with arrays of givens), set by set.
+
+        What the checks integrate from the givens (:attr:`sweep_model`) is
+        computed once for the whole sweep, on arrays; what they measure is read
+        off each set's objects, as :meth:`Figure.checks` reads them.
+        """
+        replay = figure.replay
+        sets = [replay.take(i) for i in range(replay.size)] if replay.size else [replay]
+        if self.validates_sweeps:  # every set is valid before the model is computed for all of them
+            _validate_givens(self.name, replay.givens)
+        else:
+            for one in sets:
+                _validate_givens(self.name, one.givens)
+        model = None if self.sweep_model is None else self.sweep_model(replay.givens, figure.params)
+        return [run_checks(self, Figure(figure.protocol, one), None if model is None else _take_model(model, i))
+                for i, one in enumerate(sets)]
+
     def validate(self, givens: Mapping[str, Any]) -> None:
         """Raise InvalidParameter if a set of givens (a protocol's, by their own names) lies outside the domain."""
         _validate_givens(self.name, givens)
@@ -92,6 +117,17 @@ class Construction:
                 values[key] = positive(key, value)
         _validate_givens(self.name, values)
         return Figure(protocol, protocol.replay(values), self.check)
+
+
+def _take_model(model: Any, i: int) -> Any:
+    """Element *i* of a sweep's model: arrays give their i-th value, mappings and sequences element by element."""
+    if isinstance(model, Mapping):
+        return {k: _take_model(v, i) for k, v in model.items()}
+    if isinstance(model, (list, tuple)):
+        return type(model)(_take_model(v, i) for v in model)
+    if isinstance(model, np.ndarray) and model.ndim:
+        return float(model[i])
+    return model
 
 
 _VALIDATORS: dict[str, Callable[[Mapping[str, float]], None]] = {}

@@ -88,14 +88,16 @@ def decisive_digits(a: float, b: float) -> tuple[str, str]:
     return repr(a), repr(b)
 
 
-def run_checks(construction: Any, figure: Any) -> list[Check]:
+def run_checks(construction: Any, figure: Any, model: Any = None) -> list[Check]:
     """The checks of a book construction on *figure*: where every caller runs them.
 
     The check functions read objects, givens and parameters by the names the
     construction's own build gives them.  A protocol that was truncated or
     edited may lack them or hold something else under a name; that is the
     protocol's fault, reported as a ProtocolFormatError naming what is missing,
-    not a KeyError from inside a check.
+    not a KeyError from inside a check.  *model*: what the checks would
+    otherwise compute from the givens (a sweep's, taken at this set; see
+    ``Construction.sweep_model``).
 
     >>> from construct import get
     >>> crank = get("crank")
@@ -108,7 +110,7 @@ def run_checks(construction: Any, figure: Any) -> list[Check]:
     """
     name = construction.name
     try:
-        return construction.checks(figure)
+        return construction.checks(figure) if model is None else construction.checks(figure, model=model)
     except UnknownObject as exc:  # a lookup in the replay: Replay[name]
         missing = exc.name if exc.name is not None else str(exc)
         raise ProtocolFormatError(f"the protocol of {name!r} lacks the object {missing!r} its checks need "

@@ -51,6 +51,8 @@ from __future__ import annotations
 import math
 from typing import Any, Mapping
 
+import numpy as np
+
 from . import analytic
 from .checking import EUCLIDEAN_TOLERANCE, Check
 from ..kernel.errors import InvalidParameter
@@ -68,6 +70,7 @@ from .inertia.build import _Ctx, _kind, _ordinate_line, _value
 
 __all__ = ["PISTON_FORCE", "TAFEL_I", "HP_DIAGRAM", "GRAVITY", "piston_area_mean", "build_piston_force",
            "piston_force_checks", "mass_force", "piston_force", "abscissa", "mass_force_rows", "area_balance",
+           "model_areas_sweep",
            "mass_force_scale", "j_abscissa"]
 
 #: g as the book uses it ("830/9,81").
@@ -328,6 +331,23 @@ def _exact_accel(w: float, lam: float) -> float:
     return analytic.inertia_exact(w, lam)
 
 
+def _two_term_array(w: Any, lam: float) -> Any:
+    """:func:`_two_term` on an array of angles."""
+    return np.cos(w) + lam * np.cos(2.0 * w)
+
+
+def _exact_accel_array(w: Any, lam: float) -> Any:
+    """:func:`_exact_accel` (analytic.inertia_exact) on an array of angles."""
+    s2 = np.sin(w) ** 2
+    return np.cos(w) + lam * (np.cos(2.0 * w) + lam * lam * s2 * s2) / (1.0 - lam * lam * s2) ** 1.5
+
+
+def _dx_dw_array(w: Any, lam: float) -> Any:
+    """:func:`_dx_dw` on an array of angles."""
+    s = np.sin(w)
+    return (s + lam * s * np.cos(w) / np.sqrt(1.0 - lam * lam * s * s)) / 2.0
+
+
 def _exact_path(w: float, lam: float) -> float:
     """Piston path over the stroke (exact)."""
     return (1.0 - math.cos(w) + (1.0 - math.sqrt(1.0 - lam * lam * math.sin(w) ** 2)) / lam) / 2.0
@@ -339,15 +359,14 @@ def _dx_dw(w: float, lam: float) -> float:
 
 
 def _gauss(fn, a: float, b: float, pieces: int = 16, order: int = 20) -> float:
-    import numpy as np
-
-    xs, ws = np.polynomial.legendre.leggauss(order)
-    total = 0.0
+    """Gauss-Legendre of *order* on *pieces* equal pieces of [a, b]; *fn* takes an array of angles."""
+    xs, ws = _LEGGAUSS[order] if order in _LEGGAUSS else np.polynomial.legendre.leggauss(order)
     h = (b - a) / pieces
-    for i in range(pieces):
-        lo = a + i * h
-        total += sum(w * fn(lo + (x + 1.0) * h / 2.0) for x, w in zip(xs, ws)) * h / 2.0
-    return float(total)
+    nodes = (a + h * np.arange(pieces))[:, None] + (xs + 1.0) * h / 2.0  # (piece, node)
+    return float(((fn(nodes) * ws).sum(axis=1) * h / 2.0).sum())
+
+
+_LEGGAUSS = {20: np.polynomial.legendre.leggauss(20)}
 
 
 def _zero(fn, a: float, b: float) -> float:
@@ -361,7 +380,62 @@ def _zero(fn, a: float, b: float) -> float:
     return 0.5 * (a + b)
 
 
-def area_balance(fig: Figure) -> dict[str, float]:
+def _model_areas(g: Mapping[str, float]) -> dict[str, float]:
+    """The areas of the models (eq. 298 and the exact kinematics) over the exact piston path, in kg m."""
+    lam = g["crank_radius"] / g["rod_length"]
+    A = mass_force_scale(g)
+    stroke_m = 2.0 * g["crank_radius"]
+    w0 = _zero(lambda w: _two_term(w, lam), 0.0, math.pi)
+    two_acc = A * stroke_m * _gauss(lambda w: _two_term_array(w, lam) * _dx_dw_array(w, lam), 0.0, w0)
+    two_dec = -A * stroke_m * _gauss(lambda w: _two_term_array(w, lam) * _dx_dw_array(w, lam), w0, math.pi)
+    we = _zero(lambda w: _exact_accel(w, lam), 0.0, math.pi)
+    exact_acc = A * stroke_m * _gauss(lambda w: _exact_accel_array(w, lam) * _dx_dw_array(w, lam), 0.0, we)
+    exact_dec = -A * stroke_m * _gauss(lambda w: _exact_accel_array(w, lam) * _dx_dw_array(w, lam), we, math.pi)
+    return {"two_term_acceleration": two_acc, "two_term_deceleration": two_dec,
+            "exact_acceleration": exact_acc, "exact_deceleration": exact_dec}
+
+
+def model_areas_sweep(g: Mapping[str, Any]) -> dict[str, Any]:
+    """The model areas of :func:`area_balance` for a sweep's givens (arrays) in one numpy pass.
+
+    The same rules as for one set of givens: the zeros by the same bisection,
+    the same Gauss-Legendre rule, with one row of nodes per set of givens.
+    Element i equals the areas of set i to rounding (the tests hold them equal).
+    """
+    lam = np.atleast_1d(np.asarray(g["crank_radius"] / g["rod_length"], dtype=float))
+    n = lam.size
+    A = np.broadcast_to(mass_force_scale(g), (n,))
+    stroke_m = np.broadcast_to(2.0 * np.asarray(g["crank_radius"], dtype=float), (n,))
+    L = lam[:, None]
+
+    def zero(fn):  # _zero, one bisection per set of givens
+        a, b = np.zeros(n), np.full(n, math.pi)
+        fa = fn(a)
+        for _ in range(200):
+            m = 0.5 * (a + b)
+            fm = fn(m)
+            same = (fm > 0) == (fa > 0)
+            a, fa, b = np.where(same, m, a), np.where(same, fm, fa), np.where(same, b, m)
+        return 0.5 * (a + b)
+
+    def gauss(fn, a, b, pieces: int = 16, order: int = 20):  # _gauss, one row of nodes per set of givens
+        xs, ws = _LEGGAUSS[order]
+        a, b = np.broadcast_to(a, (n,)), np.broadcast_to(b, (n,))
+        h = (b - a) / pieces
+        nodes = (a[:, None] + h[:, None] * np.arange(pieces))[:, :, None] + (xs + 1.0) * h[:, None, None] / 2.0
+        return ((fn(nodes.reshape(n, -1)).reshape(nodes.shape) * ws).sum(axis=2) * (h / 2.0)[:, None]).sum(axis=1)
+
+    two = lambda w: _two_term_array(w, L) * _dx_dw_array(w, L)  # noqa: E731
+    exact = lambda w: _exact_accel_array(w, L) * _dx_dw_array(w, L)  # noqa: E731
+    w0 = zero(lambda w: _two_term_array(w, lam))
+    we = zero(lambda w: _exact_accel_array(w, lam))
+    return {"two_term_acceleration": A * stroke_m * gauss(two, 0.0, w0),
+            "two_term_deceleration": -A * stroke_m * gauss(two, w0, math.pi),
+            "exact_acceleration": A * stroke_m * gauss(exact, 0.0, we),
+            "exact_deceleration": -A * stroke_m * gauss(exact, we, math.pi)}
+
+
+def area_balance(fig: Figure, model: Mapping[str, float] | None = None) -> dict[str, float]:
     """Acceleration area above the base and deceleration area below it, in kg m (= mkg of work).
 
     ``drawn_*``: the region between the mass-force line as drawn and the base line (an Area of the
@@ -369,10 +443,10 @@ def area_balance(fig: Figure) -> dict[str, float]:
     deceleration);
     ``two_term_*``: eq. (298) over the exact piston path (Gauss quadrature);
     ``exact_*``: the exact kinematics, (G/g) v_max^2 / 2 on each side.
+    *model*: the ``two_term_*`` and ``exact_*`` areas already computed for these givens (a sweep's, by
+    :func:`model_areas_sweep`).
     """
     g = fig.replay.givens
-    lam = g["crank_radius"] / g["rod_length"]
-    A = mass_force_scale(g)
     stroke_m = 2.0 * g["crank_radius"]
     _, _, _, _, s, unit = _base_frame(fig)
     to_kgm = stroke_m / s / unit  # drawn area: length along the base -> m, height -> kg
@@ -380,15 +454,8 @@ def area_balance(fig: Figure) -> dict[str, float]:
     drawn_acc = sum(p.area for sign, p in pieces if sign > 0) * to_kgm
     drawn_dec = sum(p.area for sign, p in pieces if sign < 0) * to_kgm
     drawn_balance = float(fig.replay["balance"]) * to_kgm  # the planimeter's reading
-    w0 = _zero(lambda w: _two_term(w, lam), 0.0, math.pi)
-    two_acc = A * stroke_m * _gauss(lambda w: _two_term(w, lam) * _dx_dw(w, lam), 0.0, w0)
-    two_dec = -A * stroke_m * _gauss(lambda w: _two_term(w, lam) * _dx_dw(w, lam), w0, math.pi)
-    we = _zero(lambda w: _exact_accel(w, lam), 0.0, math.pi)
-    exact_acc = A * stroke_m * _gauss(lambda w: _exact_accel(w, lam) * _dx_dw(w, lam), 0.0, we)
-    exact_dec = -A * stroke_m * _gauss(lambda w: _exact_accel(w, lam) * _dx_dw(w, lam), we, math.pi)
     return {"drawn_acceleration": drawn_acc, "drawn_deceleration": drawn_dec, "planimeter_balance": drawn_balance,
-            "two_term_acceleration": two_acc, "two_term_deceleration": two_dec,
-            "exact_acceleration": exact_acc, "exact_deceleration": exact_dec}
+            **(_model_areas(g) if model is None else {k: float(v) for k, v in model.items()})}
 
 
 # --------------------------------------------------------------------------
@@ -396,7 +463,8 @@ def area_balance(fig: Figure) -> dict[str, float]:
 # --------------------------------------------------------------------------
 
 
-def piston_force_checks(fig: Figure) -> list[Check]:
+def piston_force_checks(fig: Figure, model: Mapping[str, float] | None = None) -> list[Check]:
+    """The checks of a piston-force figure; *model*: the model areas of :func:`area_balance`, if known."""
     n = fig.params["parts"]
     g = fig.replay.givens
     lam = g["crank_radius"] / g["rod_length"]
@@ -441,7 +509,7 @@ def piston_force_checks(fig: Figure) -> list[Check]:
         checks.append(Check("p_ü at J", model_steam(xj, g) - model_back(xj, g), 0.0, 1e-12 * (g["admission"] + 1),
                             "J is the zero of the over-pressure", "at"))
     # the area balance: reported, not assumed
-    a = area_balance(fig)
+    a = area_balance(fig, model)
     curve_tol = _curve_area_tolerance(n, lam) * A * 2.0 * g["crank_radius"]
     for side in ("acceleration", "deceleration"):
         checks.append(Check(f"{side} area as drawn vs eq. (298) over the exact path", a[f"drawn_{side}"],
@@ -477,6 +545,7 @@ PISTON_FORCE = register(Construction(
     source="seed 001, Abb. 1054/1055, Gl. (297)-(299), Tafel I; seed 004 (Baumann's idealised diagram)",
     build=lambda parts, method, **v: build_piston_force(parts=parts, method=method, **v),
     checks=piston_force_checks,
+    sweep_model=lambda g, params: model_areas_sweep(g),
     defaults={"parts": 18, "method": "auto", **TAFEL_I, **HP_DIAGRAM, "scale": 2.5, "force_unit": 1.2e-4},
     book_params=({}, {"weight": 990.0}),  # Tafel I: high-pressure and low-pressure side
     structural=("parts", "method", "filling", "compression"),

@@ -64,6 +64,7 @@ from .inertia.build import _kind, _setup, _value
 
 __all__ = ["TANGENTIAL", "build_tangential", "tangential_checks", "ok_over_r", "t_over_unit", "free_force",
            "model_t", "drawn_model", "unrolled_angle", "mean_height", "excess_area", "crossing_angles", "model_summary",
+           "model_summary_sweep",
            "KAPPA", "FORCES"]
 
 #: Baumann's κ = P/B_max ("Verhältnis des Anfangsbeschleunigungsdrucks zum Anfangskolbendruck"), his first case.
@@ -363,16 +364,21 @@ def _kinks(g: Mapping[str, float], force: str) -> list[float]:
     return sorted(out)
 
 
-def _integrate(fn, a: float, b: float, breaks: list[float], m: int = 2000) -> float:
-    """Composite Simpson on each smooth piece (the kinks are break points); *fn* takes an array of angles."""
+#: Gauss-Legendre nodes and weights on [-1, 1] (order 20) and the pieces of each smooth stretch: the rule
+#: integrates the model (smooth between its kinks) to rounding; the sweep's array path uses the same rule.
+_NODES, _WEIGHTS = np.polynomial.legendre.leggauss(20)
+_PIECES = 16
+
+
+def _integrate(fn, a: float, b: float, breaks: list[float]) -> float:
+    """Composite Gauss-Legendre on each smooth piece (the kinks are break points); *fn* takes an array of angles."""
     edges = [a] + [t for t in breaks if a < t < b] + [b]
     total = 0.0
     for lo, hi in zip(edges, edges[1:]):
-        xs = np.linspace(lo, hi, 2 * m + 1)
-        ys = fn(xs)
-        h = (hi - lo) / (2 * m)
-        total += h / 3.0 * (ys[0] + ys[-1] + 4.0 * ys[1:-1:2].sum() + 2.0 * ys[2:-1:2].sum())
-    return float(total)
+        h = (hi - lo) / _PIECES
+        xs = (lo + h * np.arange(_PIECES))[:, None] + (_NODES + 1.0) * h / 2.0
+        total += float((fn(xs) * _WEIGHTS).sum() * h / 2.0)
+    return total
 
 
 def model_t_array(w: np.ndarray, g: Mapping[str, float], force: str) -> np.ndarray:
@@ -414,6 +420,63 @@ def model_summary(g: Mapping[str, float], force: str) -> dict[str, float]:
     return {"mean": mean, "alpha1": a1, "alpha2": a2, "excess": excess, "kinks": tuple(kinks)}
 
 
+def model_summary_sweep(g: Mapping[str, Any], force: str) -> dict[str, Any]:
+    """:func:`model_summary` for a sweep's givens (arrays) in one numpy pass: the same rules on 2-D arrays.
+
+    Kinks by bisection, Gauss-Legendre on each smooth piece (a kink outside the range
+    of an integral makes a piece of width 0), crossings of the mean line on
+    the same 3,601-point grid, refined by the same bisection.  Element i
+    equals model_summary of set i to rounding (the tests hold them equal).
+    """
+    sizes = {np.size(v) for v in g.values() if np.ndim(v)}
+    n = max(sizes, default=1)
+    col = {k: (np.broadcast_to(np.asarray(v, dtype=float), (n,)).reshape(n, 1) if np.ndim(v) else v)
+           for k, v in g.items()}
+    lam = 1.0 / col["rod_ratio"][:, 0] if np.ndim(col["rod_ratio"]) else np.full(n, 1.0 / col["rod_ratio"])
+    ts = lambda w: model_t_array(w, col, force)  # noqa: E731  (w: one row of angles per set of givens)
+
+    if force == "unit":
+        kinks: list[Any] = []
+    else:
+        kinks = []
+        for x in (np.broadcast_to(col["filling"], (n, 1))[:, 0], 1.0 - np.broadcast_to(col["compression"], (n, 1))[:, 0]):
+            lo, hi = np.zeros(n), np.full(n, math.pi)
+            for _ in range(200):
+                mid = 0.5 * (lo + hi)
+                below = 0.5 * (1.0 - np.cos(mid) + (1.0 - np.sqrt(1.0 - (lam * np.sin(mid)) ** 2)) / lam) < x
+                lo, hi = np.where(below, mid, lo), np.where(below, hi, mid)
+            kinks.append(0.5 * (lo + hi))
+        kinks = list(np.sort(np.stack(kinks), axis=0))
+
+    def integrate(fn, a, b):  # _integrate, one row per set of givens
+        a, b = np.broadcast_to(a, (n,)), np.broadcast_to(b, (n,))
+        edges = [a] + [np.clip(t, a, b) for t in kinks] + [b]
+        total = np.zeros(n)
+        for lo, hi in zip(edges, edges[1:]):
+            h = (hi - lo) / _PIECES
+            xs = ((lo[:, None] + h[:, None] * np.arange(_PIECES))[:, :, None] + (_NODES + 1.0) * h[:, None, None] / 2.0)
+            total += (fn(xs.reshape(n, -1)).reshape(xs.shape) * _WEIGHTS).sum(axis=(1, 2)) * h / 2.0
+        return total
+
+    mean = integrate(ts, 0.0, math.pi) / math.pi
+    grid = np.linspace(0.0, math.pi, 3601)
+    vals = ts(np.broadcast_to(grid, (n, grid.size))) - mean[:, None]
+    crossing = (vals[:, :-1] == 0.0) | (vals[:, :-1] * vals[:, 1:] < 0.0)
+    if not crossing.any(axis=1).all():
+        raise ArithmeticError("the model's tangential pressure does not cross its mean line")
+    roots = []
+    for i in (crossing.argmax(axis=1), crossing.shape[1] - 1 - crossing[:, ::-1].argmax(axis=1)):
+        lo, hi = grid[i], grid[i + 1]
+        for _ in range(80):
+            mid = 0.5 * (lo + hi)
+            left = (ts(lo[:, None])[:, 0] - mean) * (ts(mid[:, None])[:, 0] - mean) <= 0.0
+            lo, hi = np.where(left, lo, mid), np.where(left, mid, hi)
+        roots.append(0.5 * (lo + hi))
+    a1, a2 = roots
+    excess = integrate(lambda w: ts(w) - mean[:, None], a1, a2)
+    return {"mean": mean, "alpha1": a1, "alpha2": a2, "excess": excess, "kinks": tuple(kinks)}
+
+
 # --------------------------------------------------------------------------
 # Checks.
 # --------------------------------------------------------------------------
@@ -443,7 +506,8 @@ def drawn_model(g: Mapping[str, float], force: str, n: int) -> dict[str, float]:
     return {"mean": mean_height, "alpha1": a1.x, "alpha2": a2.x, "excess": excess}
 
 
-def tangential_checks(fig: Figure) -> list[Check]:
+def tangential_checks(fig: Figure, model: Mapping[str, float] | None = None) -> list[Check]:
+    """The checks of a tangential-pressure figure; *model*: :func:`model_summary` of its givens, if known."""
     g = fig.replay.givens
     n = fig.params["parts"]
     force = fig.params["force"]
@@ -473,7 +537,7 @@ def tangential_checks(fig: Figure) -> list[Check]:
                         f"{prov.method}; division error {why_w}", "r"))
     checks.append(Check("unrolled length (dividers)", length / r, n * chord / r, 10 * EUCLIDEAN_TOLERANCE,
                         "n equal steps of the chord as drawn: Euclidean once the opening is set", "r"))
-    model = model_summary(g, force)
+    model = model_summary(g, force) if model is None else model
     drawn = drawn_model(g, force, n)
     unit = "at" if force == "baumann" else "P"
     why = "the French curve through n + 1 points (twice its error on exact data) and the planimeter (1e-6)"
@@ -498,6 +562,7 @@ TANGENTIAL = register(Construction(
     source="seed 004 (Baumann 1902), Fig. 26/27; DESIGN §5",
     build=build_tangential,
     checks=tangential_checks,
+    sweep_model=lambda g, params: model_summary_sweep(g, params["force"]),
     defaults={"rod_ratio": 5.0, "parts": 18, "method": "auto", "r": 1.0, "force": "baumann", "kappa": KAPPA,
               **BAUMANN, "pressure_unit": 0.2},
     book_params=({"rod_ratio": 5.0, "parts": 18, "kappa": 8.0}, {"rod_ratio": 5.0, "parts": 18, "kappa": 2.0}),

@@ -143,49 +143,82 @@ def kochanski_angle_error() -> float:
     return abs(_alpha1_of(KOCHANSKI_RHO) - _alpha1_of(math.pi))
 
 
-def quadrant_extremes(rod_ratio: float | None, samples: int = 2000) -> list[dict[str, float]]:
+def excess_exact_array(alpha: Any, rod_ratio: Any) -> Any:
+    """:func:`excess_exact` on arrays: angles *alpha* and rod ratios (None: infinite rod) broadcast together.
+
+    The same law with numpy, for a grid of angles or a sweep of rod ratios in
+    one pass (held equal to the scalar function by the tests).
+    """
+    alpha = np.asarray(alpha, dtype=float)
+    half = 0.5 * math.pi
+
+    def position(w):
+        if rod_ratio is None:
+            return 1.0 - np.cos(w)
+        s = np.sin(w)
+        return 1.0 - np.cos(w) + s * s / (rod_ratio + np.sqrt(rod_ratio * rod_ratio - s * s))
+
+    def travel(theta):  # piston_travel: forward half turns from the dead centre, back ones from the other
+        n = np.floor(theta / math.pi)
+        rem = theta - n * math.pi
+        even = np.mod(n, 2.0) == 0.0
+        p = position(np.where(even, rem, math.pi - rem))
+        return 2.0 * n + np.where(even, p, 2.0 - p)
+
+    return travel(alpha) + travel(alpha + half) - position(half) - 4.0 * alpha / math.pi
+
+
+def quadrant_extremes(rod_ratio: Any, samples: int = 2000) -> list[dict[str, Any]]:
     """Per quadrant: where e is least and greatest, and by how much it rises and falls (exact law).
 
     Measured from the quadrant's start (§ 147: v1 there is the speed at its
     beginning); ``rise`` = max − start, ``fall`` = start − min.  Golden-section
-    refinement of a dense sample.
+    refinement of a dense sample, all quadrants (and, for an array of rod
+    ratios, all of them: the values are then arrays) in one numpy pass.
 
     >>> q = quadrant_extremes(None)[0]
     >>> round(math.degrees(q["alpha_min"]), 5), abs(q["rise"] - q["fall"]) < 1e-12
     (19.19968, True)
     """
-    out = []
-    for q in range(4):
-        a0 = q * 0.5 * math.pi
-        start = excess_exact(a0, rod_ratio)
-        grid = [a0 + 0.5 * math.pi * i / samples for i in range(samples + 1)]
-        vals = [excess_exact(a, rod_ratio) for a in grid]
-        i_min = min(range(len(vals)), key=vals.__getitem__)
-        i_max = max(range(len(vals)), key=vals.__getitem__)
-        a_min = _refine(grid, i_min, rod_ratio, -1.0)
-        a_max = _refine(grid, i_max, rod_ratio, 1.0)
-        e_min, e_max = excess_exact(a_min, rod_ratio), excess_exact(a_max, rod_ratio)
-        out.append({"quadrant": q + 1, "start": start, "alpha_min": a_min, "e_min": e_min, "alpha_max": a_max,
-                    "e_max": e_max, "rise": e_max - start, "fall": start - e_min})
-    return out
-
-
-def _refine(grid: list[float], i: int, rod_ratio: float | None, sign: float) -> float:
-    lo, hi = grid[max(i - 1, 0)], grid[min(i + 1, len(grid) - 1)]
+    scalar = rod_ratio is None or np.ndim(rod_ratio) == 0
+    ratio = None if rod_ratio is None else np.asarray(rod_ratio, dtype=float).reshape(-1, 1, 1)
+    step = 0.5 * math.pi / samples
+    a0 = (0.5 * math.pi * np.arange(4.0)).reshape(1, 4, 1)
+    grid = a0 + step * np.arange(samples + 1.0)  # (1, quadrant, sample)
+    vals = excess_exact_array(grid, ratio)  # (ratio, quadrant, sample)
+    start = vals[..., 0]
+    # golden-section search about the least and greatest sample: (ratio, quadrant, min/max)
+    i = np.stack([vals.argmin(axis=-1), vals.argmax(axis=-1)], axis=-1)
+    a00 = a0[..., 0][..., None]
+    lo = a00 + step * np.maximum(i - 1, 0)
+    hi = a00 + step * np.minimum(i + 1, samples)
+    sign = np.array([-1.0, 1.0])
+    r3 = None if ratio is None else ratio.reshape(-1, 1, 1)
     g = (math.sqrt(5.0) - 1.0) / 2.0
     for _ in range(80):
         a, b = hi - g * (hi - lo), lo + g * (hi - lo)
-        if sign * excess_exact(a, rod_ratio) > sign * excess_exact(b, rod_ratio):
-            hi = b
-        else:
-            lo = a
-    return 0.5 * (lo + hi)
+        ea, eb = excess_exact_array(np.stack([a, b]), r3)  # both probes in one pass
+        left = sign * ea > sign * eb
+        hi, lo = np.where(left, b, hi), np.where(left, lo, a)
+    best = 0.5 * (lo + hi)
+    e = excess_exact_array(best, r3)
+    out = []
+    for q in range(4):
+        row = {"quadrant": q + 1, "start": start[:, q], "alpha_min": best[:, q, 0], "e_min": e[:, q, 0],
+               "alpha_max": best[:, q, 1], "e_max": e[:, q, 1]}
+        row["rise"], row["fall"] = row["e_max"] - row["start"], row["start"] - row["e_min"]
+        out.append({k: (v if k == "quadrant" else float(v[0]) if scalar else v) for k, v in row.items()})
+    return out
 
 
-def max_magnification(rod_ratio: float | None) -> float:
-    """The largest g = G·k for which every speed radius r + g·e stays positive (exact law)."""
-    e_min = min(q["e_min"] for q in quadrant_extremes(rod_ratio, samples=400))
-    return math.inf if e_min >= 0.0 else 1.0 / -e_min
+def max_magnification(rod_ratio: Any) -> Any:
+    """The largest g = G·k for which every speed radius r + g·e stays positive (exact law); arrays for a sweep."""
+    if rod_ratio is None or np.ndim(rod_ratio) == 0:
+        e_min = min(q["e_min"] for q in quadrant_extremes(rod_ratio, samples=400))
+        return math.inf if e_min >= 0.0 else 1.0 / -e_min
+    e_min = np.min([q["e_min"] for q in quadrant_extremes(rod_ratio, samples=400)], axis=0)
+    with np.errstate(divide="ignore"):
+        return np.where(e_min >= 0.0, math.inf, 1.0 / -e_min)
 
 
 # --------------------------------------------------------------------------
@@ -233,31 +266,47 @@ def _givens(r: Any, rod_ratio: Any, fluctuation: Any, magnify: Any) -> dict[str,
     return g
 
 
-def _validate(givens: Mapping[str, float]) -> None:
+def _validate(givens: Mapping[str, Any]) -> None:
+    """The givens' domain; a sweep's (arrays) in one pass, the message naming its first set outside."""
     g = _givens(givens["r"], givens["rod_ratio"], givens["fluctuation"], givens["magnify"])
     limit = max_magnification(g["rod_ratio"])
-    if g["fluctuation"] * g["magnify"] >= limit:
+    gain = g["fluctuation"] * g["magnify"]
+    outside = np.flatnonzero(np.atleast_1d(gain >= limit))
+    if outside.size:
+        i = int(outside[0])
+        at = lambda v: float(np.asarray(v).flat[i]) if np.ndim(v) else v  # noqa: E731  (set i of a sweep)
+        gain_i, ratio_i, limit_i = at(gain), at(g["rod_ratio"]), at(limit)
         raise InvalidParameter(
-            f"fluctuation x magnify = {g['fluctuation'] * g['magnify']:.6g} makes a speed radius r + g*e vanish "
-            f"for L/r = {g['rod_ratio']:.6g} (e falls to {-1.0 / limit:.4g} Q r); keep --magnify times --fluctuation "
-            f"below {limit:.4g}")
+            f"fluctuation x magnify = {gain_i:.6g} makes a speed radius r + g*e vanish "
+            f"for L/r = {ratio_i:.6g} (e falls to {-1.0 / limit_i:.4g} Q r); keep --magnify times --fluctuation "
+            f"below {limit_i:.4g}")
 
 
 #: Magnifications a draftsman would pick for the speed deviations (largest first).
 NICE_MAGNIFICATIONS = (8.0, 5.0, 4.0, 2.0, 1.0, 0.5, 0.25, 0.1)
 
 
-def auto_magnification(rod_ratio: float, fluctuation: float) -> float:
+def auto_magnification(rod_ratio: Any, fluctuation: float) -> Any:
     """The largest of :data:`NICE_MAGNIFICATIONS` that keeps every speed radius above 0.4 r.
+
+    For an array of rod ratios (a sweep), an array of magnifications, in one pass.
 
     >>> auto_magnification(5.0, 0.25), auto_magnification(2.0, 0.25), auto_magnification(1.1, 0.25)
     (8.0, 4.0, 1.0)
+    >>> auto_magnification(np.array([5.0, 2.0, 1.1]), 0.25).tolist()
+    [8.0, 4.0, 1.0]
     """
-    e_min = min(q["e_min"] for q in quadrant_extremes(rod_ratio, samples=400))
-    for m in NICE_MAGNIFICATIONS:
-        if fluctuation * m * max(-e_min, 0.0) <= 0.6:
-            return m
-    return NICE_MAGNIFICATIONS[-1] * 0.6 / (fluctuation * -e_min) / 1.01
+    if rod_ratio is None or np.ndim(rod_ratio) == 0:
+        e_min = min(q["e_min"] for q in quadrant_extremes(rod_ratio, samples=400))
+        for m in NICE_MAGNIFICATIONS:
+            if fluctuation * m * max(-e_min, 0.0) <= 0.6:
+                return m
+        return NICE_MAGNIFICATIONS[-1] * 0.6 / (fluctuation * -e_min) / 1.01
+    e_min = np.min([q["e_min"] for q in quadrant_extremes(rod_ratio, samples=400)], axis=0)
+    out = NICE_MAGNIFICATIONS[-1] * 0.6 / (fluctuation * -e_min) / 1.01
+    for m in NICE_MAGNIFICATIONS[::-1]:  # the largest that fits is written last
+        out = np.where(fluctuation * m * np.maximum(-e_min, 0.0) <= 0.6, m, out)
+    return out
 
 
 def _check_parts(parts: Any, method: str) -> str:
@@ -663,7 +712,8 @@ def speeds(fig: Figure, *, infinite: bool | None = None, crosshead_share: float 
 # -- checks ----------------------------------------------------------------------------
 
 
-def two_cranks_checks(fig: Figure) -> list[Check]:
+def two_cranks_checks(fig: Figure, model: Mapping[str, Any] | None = None) -> list[Check]:
+    """The checks of a two-cranks figure; *model*: ``{"extremes": quadrant_extremes(rod ratio)}``, if known."""
     n = fig.params["parts"]
     g = fig.replay.givens
     K = g["rod_ratio"]
@@ -702,7 +752,7 @@ def two_cranks_checks(fig: Figure) -> list[Check]:
                                     work_excess(fig, j, infinite=True) + work_excess(fig, n // 2 - j, infinite=True),
                                     0.0, 2 * tol, "§ 146: v_max - v1 = v1 - v_min; e(90 - a) = -e(a)", "Q r"))
         else:
-            for q in quadrant_extremes(ratio):
+            for q in (quadrant_extremes(ratio) if model is None else model["extremes"]):
                 # The grid's own rise and fall in each quadrant, against the exact law on the same grid.
                 lo, hi = (q["quadrant"] - 1) * n // 2, q["quadrant"] * n // 2
                 es = [work_excess(fig, j) for j in range(lo, hi + 1)]
@@ -801,11 +851,13 @@ TWO_CRANKS = register(Construction(
     source="seed 002, § 146-147, Fig. 566",
     build=build_two_cranks,
     checks=two_cranks_checks,
+    validates_sweeps=True,
+    sweep_model=lambda g, params: {} if params["infinite_rod"] else {"extremes": quadrant_extremes(g["rod_ratio"])},
     defaults={"rod_ratio": 5.0, "infinite_rod": False, "parts": 12, "method": "auto", "r": 1.0,
               "fluctuation": 0.25, "magnify": None},
     book_params=({"rod_ratio": 5.0, "parts": 12}, {"infinite_rod": True, "parts": 12}),
     structural=("parts", "method", "infinite_rod"),
     # A draftsman picks the magnification of the speed deviations for the rod he draws: so does a sweep.
     sweep=lambda g, ratios: {**g, "rod_ratio": ratios,
-                             "magnify": np.array([auto_magnification(k, g["fluctuation"]) for k in ratios])},
+                             "magnify": auto_magnification(ratios, g["fluctuation"])},
 ), validate=_validate)

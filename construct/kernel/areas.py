@@ -23,7 +23,7 @@ import math
 from typing import Any, Iterable, Sequence
 
 from .errors import DegenerateObject, GeometryError
-from .geometry import Line, Point
+from .geometry import Line, Point, points
 
 __all__ = ["Area", "area_between", "graph_ordinate"]
 
@@ -37,20 +37,64 @@ class Area:
     style's default).
     """
 
-    __slots__ = ("pieces", "hatch_deg")
+    __slots__ = ("_pieces", "_coords", "hatch_deg", "_polygons")
     kind = "area"
 
     def __init__(self, pieces: Iterable[tuple[int, Sequence[Point]]], hatch_deg: float | None = None) -> None:
         out = []
         for sign, ring in pieces:
             ring = tuple(ring)
-            if len(ring) < 3 or not all(isinstance(p, Point) for p in ring):
+            if len(ring) < 3 or not all(type(p) is Point or isinstance(p, Point) for p in ring):
                 raise DegenerateObject(f"an area piece needs at least three points, got {len(ring)}")
             if sign not in (1, -1):
                 raise DegenerateObject(f"an area piece has sign +1 or -1, got {sign!r}")
             out.append((int(sign), ring))
-        object.__setattr__(self, "pieces", tuple(out))
+        object.__setattr__(self, "_pieces", tuple(out))
+        object.__setattr__(self, "_coords", None)
         object.__setattr__(self, "hatch_deg", None if hatch_deg is None else float(hatch_deg))
+        object.__setattr__(self, "_polygons", None)  # the shapely pieces, made on first use (both are immutable)
+
+    @classmethod
+    def from_coordinates(cls, pieces: Iterable[tuple[int, Any, Any]], hatch_deg: float | None = None) -> "Area":
+        """An area from (sign, xs, ys) per piece: coordinate arrays, checked at once; Points made when asked for.
+
+        What :func:`area_between` makes (rings of a thousand vertices, a
+        thousand areas in a sweep, most of them only measured).
+
+        >>> a = Area.from_coordinates([(1, [0.0, 1.0, 0.0], [0.0, 0.0, 1.0])])
+        >>> a.signed_area(), a.pieces[0][1][1]
+        (0.5, Point(1.0, 0.0))
+        >>> a == Area([(1, [Point(0, 0), Point(1, 0), Point(0, 1)])])
+        True
+        """
+        import numpy as np
+
+        out = []
+        for sign, xs, ys in pieces:
+            xs, ys = np.array(xs, dtype=float), np.array(ys, dtype=float)
+            if xs.shape != ys.shape or xs.ndim != 1 or xs.size < 3:
+                raise DegenerateObject(f"an area piece needs at least three points, got {xs.size}")
+            if sign not in (1, -1):
+                raise DegenerateObject(f"an area piece has sign +1 or -1, got {sign!r}")
+            bad = ~(np.isfinite(xs) & np.isfinite(ys))
+            if bad.any():
+                i = int(np.flatnonzero(bad)[0])
+                raise DegenerateObject(f"Point needs finite coordinates, got ({float(xs[i])!r}, {float(ys[i])!r})")
+            xs.flags.writeable = ys.flags.writeable = False
+            out.append((int(sign), xs, ys))
+        self = object.__new__(cls)
+        object.__setattr__(self, "_pieces", None)
+        object.__setattr__(self, "_coords", tuple(out))
+        object.__setattr__(self, "hatch_deg", None if hatch_deg is None else float(hatch_deg))
+        object.__setattr__(self, "_polygons", None)
+        return self
+
+    @property
+    def pieces(self) -> tuple[tuple[int, tuple[Point, ...]], ...]:
+        """(sign, ring) per piece, each ring a tuple of Points."""
+        if self._pieces is None:
+            object.__setattr__(self, "_pieces", tuple((s, points(xs, ys)) for s, xs, ys in self._coords))
+        return self._pieces
 
     def __setattr__(self, name: str, value: Any) -> None:
         raise AttributeError("Area is immutable")
@@ -71,9 +115,16 @@ class Area:
 
     def signed_pieces(self):
         """(sign, shapely Polygon) for each piece."""
-        from shapely.geometry import Polygon
+        if self._polygons is None:
+            import numpy as np
+            from shapely.geometry import Polygon
 
-        return [(s, Polygon([(p[0], p[1]) for p in ring])) for s, ring in self.pieces]
+            if self._coords is not None:
+                polys = tuple((s, Polygon(np.column_stack([xs, ys]))) for s, xs, ys in self._coords)
+            else:
+                polys = tuple((s, Polygon(np.array([(p.x, p.y) for p in ring]))) for s, ring in self._pieces)
+            object.__setattr__(self, "_polygons", polys)
+        return list(self._polygons)
 
     @property
     def area(self) -> float:
@@ -186,43 +237,34 @@ def area_between(upper: Any, lower: Any, x_from: float, x_to: float, hatch_deg: 
     inner = [g[0][(g[0] > lo) & (g[0] < hi)] for g in (gu, gl) if g is not None]
     xs = np.unique(np.concatenate([[lo, hi], *inner]))
     us, ls = _ordinates(upper, gu, xs), _ordinates(lower, gl, xs)
-    rows = list(zip(xs.tolist(), us.tolist(), ls.tolist()))
-    # Both graphs are straight between consecutive breakpoints: crossings are exact there.
-    fine: list[tuple[float, float, float]] = [rows[0]]
-    for (x0, u0, l0), (x1, u1, l1) in zip(rows, rows[1:]):
-        d0, d1 = u0 - l0, u1 - l1
-        if (d0 < 0.0 < d1) or (d1 < 0.0 < d0):
-            t = d0 / (d0 - d1)
-            xc = x0 + t * (x1 - x0)
-            yc = u0 + t * (u1 - u0)
-            fine.append((xc, yc, yc))
-        fine.append((x1, u1, l1))
-    pieces: list[tuple[int, list[tuple[float, float, float]]]] = []
-    run: list[tuple[float, float, float]] = [fine[0]]
-    d0 = fine[0][1] - fine[0][2]
-    sign = 1 if d0 > 0 else -1 if d0 < 0 else 0
-    for row in fine[1:]:
-        d = row[1] - row[2]
-        s = 1 if d > 0 else -1 if d < 0 else 0
-        run.append(row)
-        if s == 0:  # a crossing (or touching) closes the run
-            if sign:
-                pieces.append((sign, run))
-            run, sign = [row], 0
-        elif sign == 0:
-            sign = s
-    if sign and len(run) > 1:
-        pieces.append((sign, run))
+    # Both graphs are straight between consecutive breakpoints: crossings are exact there.  Where the
+    # difference changes sign strictly, the crossing is inserted (on it upper = lower, difference 0).
+    d = us - ls
+    d0, d1 = d[:-1], d[1:]
+    cross = np.flatnonzero(((d0 < 0.0) & (0.0 < d1)) | ((d1 < 0.0) & (0.0 < d0)))
+    t = d0[cross] / (d0[cross] - d1[cross])
+    xc = xs[cross] + t * (xs[cross + 1] - xs[cross])
+    yc = us[cross] + t * (us[cross + 1] - us[cross])
+    fx, fu, fl = (np.insert(v, cross + 1, c) for v, c in ((xs, xc), (us, yc), (ls, yc)))
+    sign = np.sign(fu - fl)
+    # A piece runs from one zero of the difference (a crossing, a touching, or the first row) to the
+    # next (or the last row); it has the sign of the rows inside it.
+    ends = np.unique(np.concatenate([[0], np.flatnonzero(sign == 0.0), [fx.size - 1]]))
     out = []
-    for s, rws in pieces:
-        ring = [(x, u) for x, u, _ in rws] + [(x, l) for x, _, l in reversed(rws)]
+    for a, b in zip(ends[:-1].tolist(), ends[1:].tolist()):
+        inside = sign[a:b + 1]
+        s = inside[inside != 0.0]
+        if not s.size:
+            continue
+        rx = np.concatenate([fx[a:b + 1], fx[a:b + 1][::-1]])
+        ry = np.concatenate([fu[a:b + 1], fl[a:b + 1][::-1]])
         # Drop the doubled points where a run starts or ends on a crossing.
-        dedup = [Point(*p) for i, p in enumerate(ring) if p != ring[i - 1]]
-        if len(dedup) >= 3:
-            out.append((s, dedup))
+        keep = (rx != np.roll(rx, 1)) | (ry != np.roll(ry, 1))
+        if keep.sum() >= 3:
+            out.append((int(s[0]), rx[keep], ry[keep]))
     if not out:
         raise GeometryError("the two curves enclose no area between the given abscissae")
-    return Area(out, hatch_deg)
+    return Area.from_coordinates(out, hatch_deg)
 
 
 # --------------------------------------------------------------------------

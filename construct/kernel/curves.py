@@ -207,8 +207,39 @@ def _cubic_roots01(c3: float, c2: float, c1: float, c0: float) -> list[float]:
         coeffs.pop(0)
     if len(coeffs) < 2:
         return []
+    return _polished01((c3, c2, c1, c0), np.roots(coeffs))
+
+
+def _cubic_roots01_many(polys: list[tuple[float, float, float, float]]) -> list[list[float]]:
+    """:func:`_cubic_roots01` of many cubics: the companion matrices of the true cubics in one eigvals call.
+
+    np.roots computes the roots of a cubic with nonzero ends as the eigenvalues
+    of its 3 x 3 companion matrix; here those matrices are stacked (LAPACK
+    runs on each as it would alone), the rest go through _cubic_roots01.
+    """
+    import numpy as np
+
+    out: list[list[float] | None] = [None] * len(polys)
+    full = []
+    for i, (c3, c2, c1, c0) in enumerate(polys):
+        if abs(c3) > 1e-15 * max(1.0, abs(c3), abs(c2), abs(c1), abs(c0)) and c0 != 0.0:
+            full.append(i)
+        else:
+            out[i] = _cubic_roots01(c3, c2, c1, c0)
+    if full:
+        p = np.array([polys[i] for i in full], dtype=float)
+        comp = np.zeros((len(full), 3, 3))
+        comp[:, 0, :] = -p[:, 1:] / p[:, :1]
+        comp[:, 1, 0] = comp[:, 2, 1] = 1.0
+        for i, roots in zip(full, np.linalg.eigvals(comp)):
+            out[i] = _polished01(polys[i], roots)
+    return out  # type: ignore[return-value]
+
+
+def _polished01(poly: tuple[float, float, float, float], roots: Any) -> list[float]:
+    c3, c2, c1, c0 = poly
     out = []
-    for r in np.roots(coeffs):
+    for r in roots:
         if abs(r.imag) > 1e-7:
             continue
         t = float(r.real)
@@ -246,13 +277,17 @@ def crossings(curve: Any, line: Line) -> tuple[Point, ...]:
         found.append(Point(x, y))
 
     if isinstance(curve, BezierCurve):
-        for seg in curve.segments():
+        segs = curve.segments()
+        polys = []
+        for seg in segs:
             s0, s1, s2, s3 = (side(p) for p in seg)
             # Bernstein to power basis of the signed distance.
             c3 = -s0 + 3 * s1 - 3 * s2 + s3
             c2 = 3 * s0 - 6 * s1 + 3 * s2
             c1 = -3 * s0 + 3 * s1
-            for t in _cubic_roots01(c3, c2, c1, s0):
+            polys.append((c3, c2, c1, s0))
+        for seg, roots in zip(segs, _cubic_roots01_many(polys)):
+            for t in roots:
                 add(*BezierCurve._at(seg, t))
     else:
         pts = curve.curve_points()

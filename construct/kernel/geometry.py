@@ -54,6 +54,7 @@ __all__ = [
     "is_sweep",
     "take",
     "stack",
+    "points",
 ]
 
 #: Two curves whose gap or overlap is at most this fraction of their size
@@ -271,6 +272,27 @@ def raw_point(x: Any, y: Any) -> Point:
     return p
 
 
+def points(xs: Any, ys: Any) -> tuple[Point, ...]:
+    """Points (xs[i], ys[i]) from two sequences of coordinates: one finiteness check for all of them.
+
+    What a long ring of vertices (an area's, a curve's) is built from; as
+    :class:`Point`, a non-finite coordinate is refused.
+
+    >>> points([0.0, 1.0], [2.0, 3.0])
+    (Point(0.0, 2.0), Point(1.0, 3.0))
+    >>> points([0.0], [float("inf")])
+    Traceback (most recent call last):
+    ...
+    construct.kernel.errors.DegenerateObject: Point needs finite coordinates, got (0.0, inf)
+    """
+    ax, ay = np.asarray(xs, dtype=float), np.asarray(ys, dtype=float)
+    bad = ~(np.isfinite(ax) & np.isfinite(ay))
+    if bad.any():
+        i = int(np.flatnonzero(bad)[0])
+        raise DegenerateObject(f"Point needs finite coordinates, got ({_num(ax[i])}, {_num(ay[i])})")
+    return tuple(raw_point(x, y) for x, y in zip(ax.tolist(), ay.tolist()))
+
+
 class Line(_Value):
     """The straight line through two distinct points (drawn as the segment between them).
 
@@ -368,6 +390,10 @@ Curve = Union[Line, Circle]
 
 def take(v: Any, i: int) -> Any:
     """Element *i* of a sweep value (a value that is no sweep is the same for every i)."""
+    if type(v) is Point:  # the commonest value of a sweep, taken without the dispatch below
+        x, y = v.x, v.y
+        return raw_point(x if type(x) is float else float(x[i]) if type(x) is np.ndarray and x.ndim else take(x, i),
+                   y if type(y) is float else float(y[i]) if type(y) is np.ndarray and y.ndim else take(y, i))
     if isinstance(v, float):
         return v
     if isinstance(v, np.ndarray):

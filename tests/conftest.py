@@ -1,0 +1,60 @@
+"""Set-ups the test files share: built once per session, never changed by a test.
+
+* ``rod_ratio_sweep(name, ratios)``: a registered construction, its default
+  figure and the replay of that figure over *ratios* (a sweep), cached per
+  construction and ratios -- the 1,000-ratio sweeps are the most expensive
+  objects of the suite, and three tests read each.
+* ``cli(*argv)``: ``construct``'s command line run in this process; the exit
+  code and what it printed on stdout and stderr.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Callable, NamedTuple
+
+import numpy as np
+import pytest
+
+
+class Run(NamedTuple):
+    """One run of the command line: exit code, stdout, stderr."""
+
+    code: int
+    out: str
+    err: str
+
+
+@pytest.fixture
+def cli(capsys) -> Callable[..., Run]:
+    """Run ``construct ARGV...`` in-process (``construct.cli.main``) and return (code, out, err)."""
+    from construct.cli import main
+
+    def run(*argv: Any) -> Run:
+        capsys.readouterr()  # what the test printed before is not the command's
+        try:
+            code = main([str(a) for a in argv])
+        except SystemExit as exc:  # --help and argparse's own errors exit, as they do in a process
+            code = exc.code
+        out, err = capsys.readouterr()
+        return Run(code, out, err)
+
+    return run
+
+
+@pytest.fixture(scope="session")
+def rod_ratio_sweep() -> Callable[[str, Any], tuple[Any, Any, Any]]:
+    """(construction, default figure, sweep replay over the ratios), made once per session for each pair."""
+    from construct import get
+
+    made: dict[tuple[str, bytes], tuple[Any, Any, Any]] = {}
+
+    def sweep(name: str, ratios: Any) -> tuple[Any, Any, Any]:
+        ratios = np.asarray(ratios, dtype=float)
+        key = (name, ratios.tobytes())
+        if key not in made:
+            c = get(name)
+            fig = c.figure()
+            made[key] = (c, fig, fig.protocol.replay(c.rod_ratio_sweep(dict(fig.replay.givens), ratios)))
+        return made[key]
+
+    return sweep

@@ -476,7 +476,12 @@ class _Reader:
                 sheet.strokes.append(Stroke(e.get("id"), step, chain, tuple(_pieces(lines)),
                                             look.stroke_width * scale / 2))
         if step is not None and not classes & {"leader", "halo", "brk", "brkline"}:
-            sheet.drawn.append(Drawn(step, e.get("id"), chain, _box_of(pts)))
+            box = _box_of(pts)
+            if tag == "circle":  # exact: the flattened outline's corners fall inside the circle
+                cx, cy = _at(ctm, _num(e.get("cx")), _num(e.get("cy")))
+                r = _num(e.get("r")) * scale
+                box = (cx - r, cy - r, cx + r, cy + r)
+            sheet.drawn.append(Drawn(step, e.get("id"), chain, box))
 
     def _text(self, e: ET.Element, chain: tuple[Node, ...], ctm: Matrix, step: int | None) -> None:
         sheet = self.sheet

@@ -312,7 +312,10 @@ def _finding(kind: str, sheet: Sheet, views: _Views, runs: Runs, labels, ids, me
 
 
 def _point_names(sheet: Sheet) -> dict[str, str]:
-    return {t.owner: t.text for t in sheet.texts if t.owner and t.kind == "label"}
+    """A point's letter (or, for an unlettered one, its name tag) by the point's id."""
+    names = {t.owner: t.text for t in sheet.texts if t.owner and t.kind == "tag"}
+    names.update({t.owner: t.text for t in sheet.texts if t.owner and t.kind == "label"})
+    return names
 
 
 def _overlaps(sheet: Sheet, views: _Views) -> list[Finding]:

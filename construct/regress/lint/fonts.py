@@ -60,43 +60,75 @@ def font_file(family: str, style: str = "normal", weight: str = "normal") -> str
     return font_manager.findfont(prop, fallback_to_default=True)
 
 
+#: The size glyphs are measured at (their metrics scale with the size: one measure serves every size).
+_EM = 64.0
+
+
 @functools.lru_cache(maxsize=65536)
 def text_extents(text: str, family: str, size: float, style: str = "normal", weight: str = "normal"
                  ) -> tuple[tuple[float, float, float, float], float]:
     """(ink box (x0, y0, x1, y1) relative to the start of the baseline, y down; advance width), in the units of *size*.
 
-    An empty or blank text has an empty ink box at the origin.
+    Each glyph's outline box is set at its pen position (the advances and kerning
+    before it); an empty or blank text has an empty ink box at the origin.
     """
-    from matplotlib import font_manager, ft2font
-    kerning = getattr(getattr(ft2font, "Kerning", None), "DEFAULT", 0)  # an enum since matplotlib 3.10
-    no_hinting = ft2font.LoadFlags.NO_HINTING if hasattr(ft2font, "LoadFlags") else ft2font.LOAD_NO_HINTING
-
     path = font_file(family, style, weight)
     if not text.strip():
         return (0.0, 0.0, 0.0, 0.0), 0.0
-    font = font_manager.get_font(path)
-    font.set_size(size, 72)  # 72 dpi: one point is one unit, as SVG's px
-    advance = 0.0
+    k = size / _EM
+    pen = 0.0
+    box = None
     previous = None
     for ch in text:
-        index = font.get_char_index(ord(ch))
+        advance, glyph, index = _glyph(path, ch)
         if previous is not None:
-            advance += font.get_kerning(previous, index, kerning) / 64.0  # 26.6 fixed point
-        advance += font.load_char(ord(ch), flags=no_hinting).linearHoriAdvance / 65536.0
+            pen += _kerning(path, previous, index)
+        if glyph is not None:
+            g = (pen + glyph[0], glyph[1], pen + glyph[2], glyph[3])
+            box = g if box is None else (min(box[0], g[0]), min(box[1], g[1]), max(box[2], g[2]), max(box[3], g[3]))
+        pen += advance
         previous = index
-    # the glyph outlines as TextPath lays them out; their points' extremes (control points of the
-    # quadratic pieces bulge a hair beyond the outline: the box errs by far under a pixel, on the safe side)
-    verts, codes = _TO_PATH().get_text_path(font_manager.FontProperties(fname=path), text)
-    pts = [v for v, c in zip(verts, codes) if c not in (0, 79)]  # STOP, CLOSEPOLY carry no point
+    if box is None:
+        return (0.0, 0.0, 0.0, 0.0), pen * k
+    return (box[0] * k, box[1] * k, box[2] * k, box[3] * k), pen * k
+
+
+@functools.lru_cache(maxsize=4096)
+def _glyph(path: str, ch: str) -> tuple[float, tuple[float, float, float, float] | None, int]:
+    """A character at :data:`_EM`: its advance, its outline's box (y down; None when it draws nothing), glyph index.
+
+    The box is the extremes of the outline's points as matplotlib's TextToPath
+    lays them out (the control points of the quadratic pieces bulge a hair
+    beyond the outline: the box errs by far under a pixel, on the safe side).
+    """
+    from matplotlib import font_manager, ft2font
+
+    no_hinting = ft2font.LoadFlags.NO_HINTING if hasattr(ft2font, "LoadFlags") else ft2font.LOAD_NO_HINTING
+    font = font_manager.get_font(path)
+    font.set_size(_EM, 72)  # 72 dpi: one point is one unit, as SVG's px
+    advance = font.load_char(ord(ch), flags=no_hinting).linearHoriAdvance / 65536.0
+    index = font.get_char_index(ord(ch))
+    verts, codes = _to_path().get_text_path(font_manager.FontProperties(fname=path, size=_EM), ch)
+    pts = [v for v, c in zip(verts, codes) if c not in (0, 79)]  # STOP and CLOSEPOLY carry no point
     if not pts:
-        return (0.0, 0.0, 0.0, 0.0), advance
-    k = size / _TO_PATH().FONT_SCALE
-    xs, ys = [float(p[0]) * k for p in pts], [float(p[1]) * k for p in pts]
-    return (min(xs), -max(ys), max(xs), -min(ys)), advance
+        return advance, None, index
+    scale = _EM / _to_path().FONT_SCALE
+    xs, ys = [float(p[0]) * scale for p in pts], [float(p[1]) * scale for p in pts]
+    return advance, (min(xs), -max(ys), max(xs), -min(ys)), index
+
+
+@functools.lru_cache(maxsize=65536)
+def _kerning(path: str, left: int, right: int) -> float:
+    from matplotlib import font_manager, ft2font
+
+    mode = getattr(getattr(ft2font, "Kerning", None), "UNFITTED", 1)  # an enum since matplotlib 3.10
+    font = font_manager.get_font(path)
+    font.set_size(_EM, 72)
+    return font.get_kerning(left, right, mode) / 64.0  # 26.6 fixed point
 
 
 @functools.lru_cache(maxsize=1)
-def _TO_PATH():
+def _to_path():
     from matplotlib.textpath import TextToPath
 
     return TextToPath()

@@ -249,8 +249,14 @@ def _at(m: Matrix, x: float, y: float) -> tuple[float, float]:
 
 
 def _num(raw: str | None, default: float = 0.0) -> float:
+    """The (first) number of an attribute; *default* when there is none."""
     if raw is None:
         return default
+    try:
+        v = float(raw)  # what our renderer writes: a plain number
+        return v if math.isfinite(v) else default
+    except ValueError:
+        pass
     first = re.split(r"[\s,]+", raw.strip())[0] if raw.strip() else ""
     m = re.match(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?", first)
     return float(m.group()) if m else default

@@ -309,3 +309,16 @@ def test_construct_golden_checks_legibility_unless_told_not_to(tmp_path):
         checker.check(fig)
     assert (tmp_path / "goldens" / "star" / "final.svg").is_file()  # the goldens are written all the same
     GoldenChecker(goldens=tmp_path / "goldens", default_name="star").check(fig, legible=False)
+
+
+def test_every_mark_of_the_current_step_is_seen_unless_a_ring_of_the_step_holds_it():
+    # step 2 marks two points far apart: each is a dot 7 px across, however far apart they are;
+    # step 3 marks a dot inside a ring of radius 10 (20 px across): the ring makes it seen
+    two = point("s0002-S1", 300, 300) + point("s0002-S2", 400, 300)
+    ringed = point("s0003-R", 500, 500) + '<circle class="ring" cx="500" cy="500" r="10"/>'
+    css = CSS + ".ring{fill:none;stroke:#e8590c;stroke-width:2}"
+    figure = steps_svg(group(1, '<line class="construction" x1="0" y1="900" x2="900" y2="900"/>'),
+                       group(2, two), group(3, ringed),
+                       group(4, '<line class="construction" x1="0" y1="800" x2="900" y2="800"/>'), css=css)
+    marks = [f for f in lint_svg(figure, "marks.svg") if f.kind == "small-mark"]
+    assert [f.steps for f in marks] == [((2, 2),)] and marks[0].ids == ("s0002-S1", "s0002-S2")

@@ -21,7 +21,8 @@ overlap        two labels (or a label and a caption line) cover each other
 on-point       a label covers the marker of a point that is not its own
 struck         a result line passes through a label (or its halo erases the line)
 small-label    labels smaller than 9 px on the screen
-small-mark     the current step's mark smaller than 12 px on the screen
+small-mark     a mark of the current step smaller than 12 px on the screen (unless a ring of
+               the step around it is larger)
 outside        a label (partly) outside the view
 =============  =====================================================================
 """
@@ -454,24 +455,32 @@ def _small_marks(sheet: Sheet, views: _Views) -> list[Finding]:
     state = None if sheet.frame is not None else "cur"
     out = []
     for k in steps:
-        box = None
-        ids = []
+        marks: list[tuple[Box, str | None]] = []
         for d in by_step.get(k, ()):
             look = sheet.look(d.chain, state)
-            if not (look.shown and look.opacity >= MIN_OPACITY):
-                continue
-            b = _grow(d.box, look.stroke_width / 2 if look.stroked else 0.0)
-            box = b if box is None else (min(box[0], b[0]), min(box[1], b[1]), max(box[2], b[2]), max(box[3], b[3]))
-            ids.append(d.ident)
-        if box is None:
+            if look.shown and look.opacity >= MIN_OPACITY:
+                marks.append((_grow(d.box, look.stroke_width / 2 if look.stroked else 0.0), d.ident))
+        if not marks:
             continue
-        px = max(box[2] - box[0], box[3] - box[1]) * views.scale(k)
-        if px < MIN_MARK_PX:
-            labels = tuple(letters.get(k, ()))
-            out.append(_finding("small-mark", sheet, views, [(k, k)], labels, tuple(ids),
-                                f"the current step's mark ({', '.join(i or '?' for i in ids)}) spans {px:.1f} px "
-                                f"(< {MIN_MARK_PX:g} px at {views.screen[0]:g}×{views.screen[1]:g})"))
+        scale = views.scale(k)
+        # each mark is seen as large as the largest of the step's marks around it (a ring round a dot)
+        small = []
+        for b, ident in marks:
+            seen = max(max(o[2] - o[0], o[3] - o[1]) for o, _ in marks if _holds(o, b)) * scale
+            if seen < MIN_MARK_PX:
+                small.append((seen, ident))
+        if small:
+            px = min(p for p, _ in small)
+            ids = tuple(i for _, i in small)
+            out.append(_finding("small-mark", sheet, views, [(k, k)], tuple(letters.get(k, ())), ids,
+                                f"the current step's mark{'s' if len(ids) > 1 else ''} "
+                                f"({', '.join(i or '?' for i in ids)}) {'span' if len(ids) > 1 else 'spans'} "
+                                f"{px:.1f} px (< {MIN_MARK_PX:g} px at {views.screen[0]:g}×{views.screen[1]:g})"))
     return out
+
+
+def _holds(outer: Box, inner: Box) -> bool:
+    return outer[0] <= inner[0] and outer[1] <= inner[1] and outer[2] >= inner[2] and outer[3] >= inner[3]
 
 
 def _inside(b: Box, view: Box) -> bool:

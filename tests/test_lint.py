@@ -322,3 +322,18 @@ def test_every_mark_of_the_current_step_is_seen_unless_a_ring_of_the_step_holds_
                        group(4, '<line class="construction" x1="0" y1="800" x2="900" y2="800"/>'), css=css)
     marks = [f for f in lint_svg(figure, "marks.svg") if f.kind == "small-mark"]
     assert [f.steps for f in marks] == [((2, 2),)] and marks[0].ids == ("s0002-S1", "s0002-S2")
+
+
+def test_a_replays_frames_are_one_figure_and_a_collision_in_frame_after_frame_is_one_finding(tmp_path):
+    stack = label("K6", 300, 300, "s0001-K6-label") + label("K7", 302, 300, "s0001-K7-label")
+    (tmp_path / "steps").mkdir()
+    (tmp_path / "final.svg").write_text(svg(label("A", 100, 100, "a")))
+    (tmp_path / "steps" / "001.svg").write_text(steps_svg(group(1, stack, cls="step cur")))
+    (tmp_path / "steps" / "002.svg").write_text(steps_svg(group(1, stack, cls="step old"),
+                                                          group(2, point("s0002-P", 600, 600), cls="step cur")))
+    report = lint_path(tmp_path)
+    assert report.figures == ["final.svg", "steps/*.svg"]
+    overlap = [f for f in report.findings if f.kind == "overlap"]
+    assert len(overlap) == 1 and overlap[0].steps == ((1, 2),) and overlap[0].figure == "steps/*.svg"
+    # frame 2's current mark is a dot 7 px across
+    assert [f.steps for f in report.findings if f.kind == "small-mark"] == [((2, 2),)]

@@ -110,7 +110,8 @@ def figure_files(path: str | Path) -> list[tuple[Path, str]]:
     """The drawings lint reads under *path*, with the names it reports them by.
 
     A file is itself.  A folder (a replay, a gallery) gives every ``final.svg``
-    in it and below, and the frames ``steps/*.svg`` beside them; the
+    in it and below, and the frames ``steps/*.svg`` beside them (reported
+    together as ``steps/*.svg``: a finding over the runs of frames showing it); the
     animation, the storyboard and the player carry the same elements again
     and are not read (the player's data is: the inputs of each step and the
     camera).  Raises :class:`LintInputError` when there is nothing to read.
@@ -142,10 +143,34 @@ def lint_path(path: str | Path, *, view: tuple[float, float] = VIEW) -> LintRepo
     if not (w > 0 and h > 0 and w < 1e6 and h < 1e6):
         raise LintInputError(f"the view size must be positive, got {w:g}×{h:g}")
     report = LintReport(str(path), (float(w), float(h)))
+    frames: dict[str, dict[tuple, list[Finding]]] = {}  # a replay's frames, reported together
     for file, name in figure_files(path):
         data = player_data(file.parent / "player.html") if file.name == "final.svg" else None
+        is_frame = file.name != "final.svg" and file.parent.name == "steps"
         sheet = read_sheet(file, name, data=data)
-        report.figures.append(name)
-        report.findings += check_sheet(sheet, report.view)
+        found = check_sheet(sheet, report.view)
         report.views += sum(b - a + 1 for a, b in _Views(sheet, report.view).all())
+        if not is_frame:
+            report.figures.append(name)
+            report.findings += found
+            continue
+        # the same collision in frame after frame is one finding over the runs of frames that show it
+        folder = name.rsplit("/", 1)[0] if "/" in name else "steps"
+        if folder not in frames:
+            frames[folder] = {}
+            report.figures.append(f"{folder}/*.svg")
+        for f in found:
+            frames[folder].setdefault((f.kind, f.ids, f.labels, f.message), []).append(f)
+    for folder, groups in frames.items():
+        for same in groups.values():
+            runs = sorted(r for f in same for r in f.steps)
+            merged: list[tuple[int, int]] = []
+            for a, b in runs:
+                if merged and a <= merged[-1][1] + 1:
+                    merged[-1] = (merged[-1][0], max(b, merged[-1][1]))
+                else:
+                    merged.append((a, b))
+            f = same[0]
+            report.findings.append(Finding(f.kind, f"{folder}/*.svg", tuple(merged), f.labels, f.ids, f.message,
+                                           sum(x.views for x in same)))
     return report

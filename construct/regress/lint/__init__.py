@@ -37,7 +37,7 @@ import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from .checks import KINDS, MIN_LABEL_PX, MIN_MARK_PX, VIEW, Finding, check_sheet
+from .checks import KINDS, MIN_LABEL_PX, MIN_MARK_PX, VIEW, Finding, check_sheet, view_count
 from .sheet import LintInputError, player_data, read_sheet
 
 __all__ = ["lint_svg", "lint_path", "LintReport", "Finding", "KINDS", "VIEW", "MIN_LABEL_PX", "MIN_MARK_PX",
@@ -120,7 +120,8 @@ def figure_files(path: str | Path) -> list[tuple[Path, str]]:
     if p.is_file():
         return [(p, p.name)]
     if not p.is_dir():
-        raise LintInputError(f"no such file or folder: {str(p)!r}")
+        what = "not a regular file or folder" if p.exists() else "no such file or folder"
+        raise LintInputError(f"{what}: {str(p)!r}")
     out: list[tuple[Path, str]] = []
     for folder, dirs, files in os.walk(p):
         dirs.sort()
@@ -137,8 +138,6 @@ def figure_files(path: str | Path) -> list[tuple[Path, str]]:
 
 def lint_path(path: str | Path, *, view: tuple[float, float] = VIEW) -> LintReport:
     """Lint every figure under *path* (a final.svg, a replay folder or a gallery)."""
-    from .checks import _Views
-
     w, h = view
     if not (w > 0 and h > 0 and w < 1e6 and h < 1e6):
         raise LintInputError(f"the view size must be positive, got {w:g}×{h:g}")
@@ -149,7 +148,7 @@ def lint_path(path: str | Path, *, view: tuple[float, float] = VIEW) -> LintRepo
         is_frame = file.name != "final.svg" and file.parent.name == "steps"
         sheet = read_sheet(file, name, data=data)
         found = check_sheet(sheet, report.view)
-        report.views += sum(b - a + 1 for a, b in _Views(sheet, report.view).all())
+        report.views += view_count(sheet, report.view)
         if not is_frame:
             report.figures.append(name)
             report.findings += found

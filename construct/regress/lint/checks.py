@@ -37,7 +37,7 @@ from typing import Iterable, Iterator
 
 from .sheet import Box, Sheet
 
-__all__ = ["Finding", "KINDS", "check_sheet", "MIN_LABEL_PX", "MIN_MARK_PX", "MIN_OPACITY", "VIEW"]
+__all__ = ["Finding", "KINDS", "check_sheet", "view_count", "MIN_LABEL_PX", "MIN_MARK_PX", "MIN_OPACITY", "VIEW"]
 
 KINDS = ("overlap", "on-point", "struck", "small-label", "small-mark", "outside")
 #: Letters smaller than this on the screen cannot be read from a seat in the classroom (px).
@@ -305,6 +305,11 @@ def check_sheet(sheet: Sheet, screen: tuple[float, float] = VIEW) -> list[Findin
     out += _small_marks(sheet, views)
     out += _outside(sheet, views)
     return out
+
+
+def view_count(sheet: Sheet, screen: tuple[float, float] = VIEW) -> int:
+    """How many views :func:`check_sheet` checks in *sheet*."""
+    return _count(_Views(sheet, screen).all())
 
 
 def _finding(kind: str, sheet: Sheet, views: _Views, runs: Runs, labels, ids, message: str) -> Finding:

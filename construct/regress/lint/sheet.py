@@ -38,7 +38,7 @@ from pathlib import Path
 
 from ...kernel.errors import ConstructError
 from ..svgdiff.geometry import arc_centre, parse_path, parse_transform
-from .cascade import PROPERTIES, Cascade, Look, Node, node
+from .cascade import PROPERTIES, Cascade, Look, Node, declarations
 from .fonts import text_extents
 
 __all__ = ["Sheet", "Text", "Dot", "Stroke", "read_sheet", "read_views", "player_data", "LintInputError",
@@ -63,6 +63,8 @@ _NOT_DRAWN = {"defs", "clipPath", "mask", "marker", "pattern", "symbol", "style"
               "desc", "linearGradient", "radialGradient", "filter", "foreignObject", "animate", "set",
               "animateTransform", "animateMotion"}
 _DRAWN = {"line", "path", "circle", "ellipse", "polyline", "polygon", "rect"}
+#: The largest drawing read (a 3600-part replay's final.svg is a few MB; as ``construct diff``).
+MAX_BYTES = 320 * 2**20
 #: Subtrees not read: the magnified inset of a frame is a second picture at another scale over the first.
 _SKIPPED_IDS = {"inset"}
 
@@ -355,6 +357,10 @@ def read_sheet(source: str | bytes | Path, name: str, *, data: dict | None = Non
     """Read a drawing (SVG text, bytes or a file) into a :class:`Sheet`; *data*: the player's, if any."""
     if isinstance(source, Path):
         try:
+            size = source.stat().st_size
+            if size > MAX_BYTES:
+                raise LintInputError(f"{name}: larger than {MAX_BYTES // 2**20} MiB ({size} bytes); "
+                                     f"no drawing this library writes is")
             source = source.read_bytes()
         except OSError as exc:
             raise LintInputError(f"{name}: cannot read: {exc.strerror or exc}") from None
@@ -417,8 +423,6 @@ class _Reader:
                 own.append(("@" + name, e.get(name)))
         style = e.get("style")
         if style:
-            from .cascade import declarations
-
             own.extend(declarations(style).items())
         if step is not None and e.get("data-step") is not None:
             own.append(_STEP_GROUP)  # the same for every step: elements that look alike share their chains

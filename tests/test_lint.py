@@ -337,3 +337,14 @@ def test_a_replays_frames_are_one_figure_and_a_collision_in_frame_after_frame_is
     assert len(overlap) == 1 and overlap[0].steps == ((1, 2),) and overlap[0].figure == "steps/*.svg"
     # frame 2's current mark is a dot 7 px across
     assert [f.steps for f in report.findings if f.kind == "small-mark"] == [((2, 2),)]
+
+
+def test_a_plate_layered_by_step_is_one_view():
+    # a plate's style sheet keeps the current letters' halo rule but marks no current step: never stepped through
+    plate_css = CSS.replace(".cur>*{stroke:#e8590c;stroke-width:2.6}", "").replace(
+        ".cur>.pt{fill:#e8590c;stroke:#e8590c;stroke-width:3}", ".cur>.lb.halo{fill:#fff}").replace(
+        ".cur>.tag{display:inline}", "")
+    figure = steps_svg(group(1, point("s0001-O", 100, 100)), group(2, label("K6", 300, 300, "a")),
+                       group(3, label("K7", 302, 300, "b")), css=plate_css)
+    found = lint_svg(figure, "plate.svg")
+    assert [(f.kind, f.steps, f.views) for f in found] == [("overlap", (), 1)]  # and no current mark to check

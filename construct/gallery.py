@@ -34,7 +34,7 @@ import os
 import signal
 import sys
 from pathlib import Path
-from typing import Any, Iterator, Mapping
+from typing import Any, Callable, Iterator, Mapping
 
 from .constructions.checking import summary
 from .constructions import get, names
@@ -193,8 +193,13 @@ def _first_of_its_construction(name: str, params: Mapping[str, Any]) -> bool:
     return next(p for n, p in gallery_plan() if n == name) == dict(params)
 
 
-def build_gallery(out: str | Path, *, progress: bool = False, workers: int | None = None) -> list[dict]:
+def build_gallery(out: str | Path, *, progress: bool = False, workers: int | None = None,
+                  before_swap: Callable[[Path], None] | None = None) -> list[dict]:
     """Build the whole gallery into *out* (swapped in whole); return one dict per (entry, style).
+
+    *before_swap* is called with the finished staging folder just before it
+    replaces *out* (``construct gallery`` lints it there); what it raises
+    leaves the previous gallery as it was.
 
     The figures are built by up to *workers* processes (default: one per CPU,
     at most 4); each writes its own folder, and the index is written from the
@@ -240,7 +245,9 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
             index.append(row)
         write_text(root / "README.md", _readme(index))
         write_text(root / "index.html", _index_html(index))
-    bar.close()
+        bar.close()
+        if before_swap is not None:
+            before_swap(root)
     return entries
 
 

@@ -238,3 +238,35 @@ def test_replay_output_is_the_same_in_another_process(tmp_path):
     assert a == b and len(a) > 10
     for rel in a:
         assert (outs[0] / rel).read_bytes() == (outs[1] / rel).read_bytes(), rel
+
+
+def test_a_polyline_is_drawn_with_straight_segments_through_its_corners():
+    """A hexagon drawn by ``Builder.polyline`` is six straight sides, as it is measured (y_at, length),
+    not a rounded blob: its path has only moves, lines and a close, and every side's midpoint
+    (the mean of two corners, worked out here from the corners) lies on the drawn path."""
+    import math
+
+    from construct import Builder
+
+    b = Builder("hexagon", givens={})
+    corners = [(math.cos(k * math.pi / 3), math.sin(k * math.pi / 3)) for k in range(6)]
+    names = [b.given_point(f"E{k}", x, y) for k, (x, y) in enumerate(corners)]
+    b.polyline("hex", names, closed=True)
+    fig = b.figure()
+    scene = build_scene(fig)
+    drawing = Drawing(scene)
+    svg = drawing.layered()
+    root = ET.fromstring(svg.encode("utf-8"))
+    path = next(e for e in root.iter(f"{SVG}path") if (e.get("id") or "").endswith("-hex"))
+    d = path.get("d")
+    assert set(re.findall(r"[A-Za-z]", d)) <= {"M", "L", "Z"}, d
+    # the drawn vertices, in pixels, and the pixel midpoints of the true sides
+    drawn = [tuple(map(float, xy)) for xy in re.findall(r"(-?[\d.]+) (-?[\d.]+)", d)]
+    assert len(drawn) == 6
+    for k in range(6):
+        (ax, ay), (bx, by) = corners[k], corners[(k + 1) % 6]
+        mx, my = drawing.vp.px((ax + bx) / 2, (ay + by) / 2)
+        # the midpoint lies on the segment between the two drawn corners (to the 0.01 px of the output)
+        (px, py), (qx, qy) = drawn[k], drawn[(k + 1) % 6]
+        cross = (qx - px) * (my - py) - (qy - py) * (mx - px)
+        assert abs(cross) / math.hypot(qx - px, qy - py) < 0.02

@@ -15,6 +15,10 @@ what changed) and a side-by-side page of expected and actual for every
 failing frame, written to ``.construct-failures/<name>.html`` beside the
 ``goldens`` folder; the message gives its path.
 
+The rendered figure must also be legible (:mod:`construct.regress.lint`:
+no labels on each other, on another point or struck by a result line, none
+too small or outside the view); ``check(..., legible=False)`` skips that.
+
 >>> safe_name("test_stroke[2.0-exact]")
 'test_stroke-2.0-exact'
 """
@@ -196,7 +200,8 @@ class GoldenChecker:
     written: list[Path] = field(default_factory=list)
 
     def check(self, figure: Any, name: str | None = None, *, style: Any = "plain", frames: str = "none",
-              title: tuple[str, str] | None = None, tolerance: float | None = None) -> Path:
+              title: tuple[str, str] | None = None, tolerance: float | None = None,
+              legible: bool = True) -> Path:
         """Render *figure* (the layered final.svg, the protocol) and compare it with ``goldens/<name>/``.
 
         *figure* is anything with ``.protocol`` and ``.replay`` (a
@@ -204,7 +209,9 @@ class GoldenChecker:
         ``<test module>.<test name>``; *style* is a style name (``plain``, ``teaching``, ``historical``)
         or a :class:`construct.render.svg.Style`; *frames* as for ``construct
         replay`` (standalone frames besides the layered figure; "none" by default: every step
-        is compared from ``final.svg`` already).  Returns the goldens folder.
+        is compared from ``final.svg`` already).  With *legible* (the default) the rendered
+        figure must also pass ``construct lint`` (:func:`construct.regress.lint.lint_path`): the
+        test fails naming the steps and labels a reader cannot read.  Returns the goldens folder.
         """
         __tracebackhide__ = True
         from .verify import DEFAULT_TOLERANCE, compare_trees
@@ -221,10 +228,13 @@ class GoldenChecker:
         with tempfile.TemporaryDirectory(prefix="construct-golden-") as tmp:
             actual = Path(tmp) / name
             render_goldens(figure, actual, style=style, frames=frames, title=title)
+            illegible = _illegible(name, actual) if legible else None
             if self.update:
                 _replace(golden_dir, actual)
                 _remove(page)
                 self.written.append(golden_dir)
+                if illegible:
+                    raise AssertionError(illegible)
                 return golden_dir
             if not golden_dir.is_dir():
                 pytest.fail(f"no goldens for {name!r} in {golden_dir}; create them with "
@@ -232,6 +242,8 @@ class GoldenChecker:
             found, files, _ = compare_trees(golden_dir, actual, tolerance=tol)
             if not found:
                 _remove(page)
+                if illegible:
+                    raise AssertionError(illegible)
                 return golden_dir
             # Paths from the goldens folder, so that reports read "<name> step 5 (<name>/steps/005.svg)".
             diffs = [replace(d, path=f"{name}/{d.path}") for d in found]
@@ -246,6 +258,21 @@ class GoldenChecker:
         lines.append(f"side by side: {page}")
         lines.append("if the change is intended, rewrite the goldens: pytest --construct-update")
         raise AssertionError("\n".join(lines))
+
+
+def _illegible(name: str, rendered: Path) -> str | None:
+    """The lint report of a rendered figure when it has findings (the message a test fails with), else None."""
+    from .lint import lint_path
+
+    report = lint_path(rendered)
+    if report.ok:
+        return None
+    lines = [f"construct golden {name!r}: the figure is not legible ({len(report.findings)} findings of "
+             f"'construct lint'; check(..., legible=False) skips this)"]
+    lines += [f.line() for f in report.findings[:MAX_REPORTED]]
+    if len(report.findings) > MAX_REPORTED:
+        lines.append(f"... and {len(report.findings) - MAX_REPORTED} more")
+    return "\n".join(lines)
 
 
 #: What :func:`render_goldens` writes into a figure's folder.

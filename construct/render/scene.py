@@ -41,7 +41,8 @@ class Mark:
 
     ``geom`` by kind: point (x, y); segment (x1, y1, x2, y2); circle (cx, cy, r);
     arc (cx, cy, r, start, sweep) with angles in radians, counter-clockwise in
-    the y-up drawing plane; curve ((x, y), ...) drawn smooth through its points.
+    the y-up drawing plane; curve ((x, y), ...) drawn smooth through its points,
+    or joined by straight segments when ``straight`` (a polyline: the straightedge).
     """
 
     id: str
@@ -58,6 +59,8 @@ class Mark:
     look: str = ""
     #: Areas: the direction of their hatching in degrees (None: the style's).
     hatch: float | None = None
+    #: Curves: the points are joined by straight segments (a polyline), not by a smooth curve.
+    straight: bool = False
 
 
 @dataclass(frozen=True)
@@ -408,7 +411,9 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                     marks.append(Mark(mid if j == 0 else f"{mid}-{j}", kind="area",
                                       geom=tuple((p[0], p[1]) for p in ring), hatch=obj.hatch_deg, **common))
             elif hasattr(obj, "curve_points"):
-                marks.append(Mark(mid, kind="curve", geom=tuple((p[0], p[1]) for p in obj.curve_points()), **common))
+                # a polyline is drawn as it is measured (y_at, length): straight from point to point
+                marks.append(Mark(mid, kind="curve", geom=tuple((p[0], p[1]) for p in obj.curve_points()),
+                                  straight=getattr(obj, "kind", "") == "polyline", **common))
     breaks: tuple[tuple[float, float, float], ...] = ()
     if break_axis and (shown is None or furniture):
         # a plate keeps more of the broken stretch: the rod drawn across it stays a shallow line

@@ -387,7 +387,7 @@ class Drawing:
         elif m.kind == "arc":
             yield layer, f.path(d=arc_path(vp, *g), class_=cls, **ids)
         elif m.kind == "curve":
-            yield layer, f.path(d=curve_path(vp, g), class_=cls, **ids)
+            yield layer, f.path(d=(polyline_path if m.straight else curve_path)(vp, g), class_=cls, **ids)
         elif m.kind == "area":
             yield "areas", f.path(d=polygon_path(vp, g), class_=f"area {cls}", **ids)
             if st.hatch:
@@ -747,6 +747,22 @@ def curve_path(vp: Viewport, pts: tuple) -> str:
         c2 = (p2[0] - (p3[0] - p1[0]) / 6.0, p2[1] - (p3[1] - p1[1]) / 6.0)
         d.append(f"C{fmt(c1[0])} {fmt(c1[1])} {fmt(c2[0])} {fmt(c2[1])} {fmt(p2[0])} {fmt(p2[1])}")
     return "".join(d)
+
+
+def polyline_path(vp: Viewport, pts: tuple) -> str:
+    """Straight segments from point to point, as the straightedge joins them (closed: back to the first by Z).
+
+    >>> vp = Viewport(0.0, 1.0, 10.0, 20.0, 20.0, 0.0)
+    >>> polyline_path(vp, ((0, 0), (1, 1), (1, 0))), polyline_path(vp, ((0, 0), (1, 1), (1, 0), (0, 0)))
+    ('M0 10L10 0L10 10', 'M0 10L10 0L10 10Z')
+    """
+    P = [vp.xy(x, y) for x, y in pts]
+    if len(P) < 2:
+        return ""
+    closed = len(pts) > 2 and tuple(pts[0]) == tuple(pts[-1])
+    if closed:
+        P = P[:-1]
+    return "M" + "L".join(f"{a} {b}" for a, b in P) + ("Z" if closed else "")
 
 
 def polygon_path(vp: Viewport, pts: tuple) -> str:

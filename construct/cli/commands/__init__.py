@@ -19,6 +19,7 @@ _NAMES = [
     "diff",
     "gallery",
     "verify",
+    "lint",
 ]
 
 MODULES = [importlib.import_module(f"{__name__}.{name}") for name in _NAMES]

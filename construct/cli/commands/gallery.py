@@ -1,22 +1,57 @@
-"""construct gallery: every construction at the books' parameters, in both styles, with an index."""
+"""construct gallery: every construction at the books' parameters, in both styles, with an index.
+
+What it builds is linted (:mod:`construct.regress.lint`) before it replaces
+the old gallery: the counts of findings by kind go to stderr.  With
+``--legible`` a gallery with findings is not written (the previous one stays)
+and the command exits 1.
+"""
 
 from __future__ import annotations
 
 import sys
 from pathlib import Path
 
+from ...kernel.errors import ConstructError
 from ...gallery import build_gallery
 
 NAME = "gallery"
 HELP = "build every construction at the books' parameters in the historical and teaching styles (default gallery/)"
 
 
+class IllegibleGallery(ConstructError):
+    """``construct gallery --legible`` found what a reader cannot read; the previous gallery was kept."""
+
+
 def add_arguments(p) -> None:
     p.add_argument("--out", default="gallery", metavar="DIR", help="output folder (default: gallery)")
+    p.add_argument("--legible", action="store_true",
+                   help="fail (exit 1, the previous gallery kept) when 'construct lint' finds anything in it")
+
+
+def _lint(strict: bool):
+    def check(root: Path) -> None:
+        from ...regress.lint import lint_path
+
+        report = lint_path(root)
+        if report.ok:
+            print(f"lint: no findings in {len(report.figures)} figures, {report.views} views", file=sys.stderr)
+            return
+        kinds = ", ".join(f"{k} {n}" for k, n in report.totals().items() if n)
+        print(f"lint: {len(report.findings)} findings in {len(report.figures)} figures, {report.views} views "
+              f"({kinds}); 'construct lint DIR' lists them", file=sys.stderr)
+        if strict:
+            raise IllegibleGallery(f"the gallery is not legible ({len(report.findings)} findings of "
+                                   f"'construct lint'); the previous gallery is kept")
+
+    return check
 
 
 def run(args) -> int:
-    entries = build_gallery(args.out, progress=True)
+    try:
+        entries = build_gallery(args.out, progress=True, before_swap=_lint(args.legible))
+    except IllegibleGallery as exc:
+        print(f"construct: {exc}", file=sys.stderr)
+        return 1
     figures = len({(e["construction"], tuple(sorted(e["params"].items()))) for e in entries})
     files = sum(1 for p in Path(args.out).rglob("*") if p.is_file())  # what is on disk, index and README too
     print(f"gallery: {figures} figures, {len(entries)} styled entries, {files} files written to {args.out}",

@@ -238,3 +238,8 @@ def _arc_centre(p0: Point, p1: Point, rx: float, ry: float, phi_deg: float, larg
     cx1, cy1 = k * rx * y1 / ry, -k * ry * x1 / rx
     centre = (c * cx1 - s * cy1 + (p0[0] + p1[0]) / 2, s * cx1 + c * cy1 + (p0[1] + p1[1]) / 2)
     return centre, rx, ry
+
+
+# Shared with :mod:`construct.regress.lint`, which reads the same drawings for their legibility.
+parse_path = _parse_path
+arc_centre = _arc_centre

@@ -1,0 +1,238 @@
+"""A drawing's style sheet applied to its elements: the few properties legibility depends on.
+
+Rules with type, class, id and universal selectors, compounds of them and the
+descendant and child combinators (all our style sheets use: ``.lb``,
+``.cur>.pt``, ``g.stage.cur>g>*``, ``#figure.zoomed .lb``) are applied in
+the order of their specificity and position; presentation attributes come
+before them and an element's ``style`` attribute after, as in a browser.
+Rules with other selectors (pseudo-classes, attributes) are not applied: a
+still view has no ``:hover``.
+
+An element is given as its *chain*, the nodes from the root down to it; a
+node is (tag, id, classes, own declarations).  Chains of elements that look
+alike are alike, so each look is worked out once.
+
+>>> c = Cascade(".lb{font-size:12px;font-family:'DejaVu Sans'}.tag{display:none;font-size:10px}"
+...             ".cur>.tag{display:inline}.old{opacity:0.5}")
+>>> root, step = node("svg"), node("g", classes="step cur")
+>>> look = c.look((root, step, node("text", classes="lb tag")))
+>>> look.shown, look.font_size, look.opacity
+(True, 10.0, 1.0)
+>>> c.look((root, node("g", classes="step old"), node("text", classes="lb tag"))).shown
+False
+>>> c.look((root, node("g", classes="step old"), node("text", classes="lb"))).opacity
+0.5
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Iterable
+
+__all__ = ["Cascade", "Look", "Node", "node", "PROPERTIES"]
+
+Node = tuple[str, "str | None", frozenset, tuple]
+"""(tag, id, classes, own declarations from presentation attributes and ``style``)."""
+
+#: The properties read (and, but for display and opacity, inherited).
+PROPERTIES = ("display", "visibility", "opacity", "font-size", "font-family", "font-style", "font-weight",
+              "text-anchor", "stroke", "stroke-width", "fill")
+_INHERITED = {"visibility", "font-size", "font-family", "font-style", "font-weight", "text-anchor", "stroke",
+              "stroke-width", "fill"}
+_INITIAL = {"visibility": "visible", "font-size": "16", "font-family": "serif", "font-style": "normal",
+            "font-weight": "normal", "text-anchor": "start", "stroke": "none", "stroke-width": "1",
+            "fill": "black"}
+
+
+def node(tag: str, ident: str | None = None, classes: str | Iterable[str] = "",
+         declarations: tuple[tuple[str, str], ...] = ()) -> Node:
+    """A chain node: *classes* a space-separated string or any iterable of names."""
+    names = classes.split() if isinstance(classes, str) else classes
+    return (tag, ident, frozenset(names), declarations)
+
+
+def declarations(text: str) -> dict[str, str]:
+    """``"a: b; c: d"`` as a dict of the properties read here (later wins; ``!important`` dropped)."""
+    out: dict[str, str] = {}
+    for decl in re.sub(r"/\*.*?\*/", "", text, flags=re.S).split(";"):
+        name, sep, value = decl.partition(":")
+        name = name.strip().lower()
+        value = re.sub(r"\s*!important\s*$", "", value.strip(), flags=re.I)
+        if sep and name in PROPERTIES and value:
+            out[name] = value
+    return out
+
+
+@dataclass(frozen=True, slots=True)
+class Look:
+    """What an element looks like, as far as legibility goes (lengths in user units)."""
+
+    shown: bool
+    opacity: float
+    font_size: float
+    font_family: str
+    font_style: str
+    font_weight: str
+    text_anchor: str
+    stroke: str
+    stroke_width: float
+
+    @property
+    def stroked(self) -> bool:
+        return self.stroke.strip().lower() not in ("none", "transparent") and self.stroke_width > 0
+
+
+_COMPOUND = re.compile(r"(\*|[A-Za-z][\w-]*)?((?:[.#][\w-]+)*)")
+
+
+@dataclass(frozen=True, slots=True)
+class _Rule:
+    #: (combinator before it, (tag, ids, classes)) from the leftmost compound to the subject.
+    parts: tuple[tuple[str, tuple[str | None, tuple[str, ...], tuple[str, ...]]], ...]
+    specificity: tuple[int, int, int, int]
+    declarations: tuple[tuple[str, str], ...]
+
+    def matches(self, chain: tuple[Node, ...]) -> bool:
+        parts = self.parts
+
+        def fits(compound, nd: Node) -> bool:
+            tag, ids, classes = compound
+            return ((tag is None or tag == nd[0]) and all(i == nd[1] for i in ids)
+                    and all(c in nd[2] for c in classes))
+
+        def match(i: int, j: int) -> bool:
+            if not fits(parts[i][1], chain[j]):
+                return False
+            if i == 0:
+                return True
+            if parts[i][0] == ">":
+                return j > 0 and match(i - 1, j - 1)
+            return any(match(i - 1, jj) for jj in range(j - 1, -1, -1))
+
+        return match(len(parts) - 1, len(chain) - 1)
+
+
+def _selector(text: str) -> tuple | None:
+    """A selector's parts, or None when it uses what is not applied here."""
+    parts = []
+    combinator = " "
+    for token in re.findall(r">|[^\s>]+", text):
+        if token == ">":
+            combinator = ">"
+            continue
+        m = _COMPOUND.fullmatch(token)
+        if not m or not token:
+            return None
+        tag = None if m.group(1) in (None, "*") else m.group(1)
+        parts.append((combinator, (tag, tuple(re.findall(r"#([\w-]+)", m.group(2))),
+                                   tuple(re.findall(r"\.([\w-]+)", m.group(2))))))
+        combinator = " "
+    return tuple(parts) or None
+
+
+class Cascade:
+    """The rules of a style sheet, and the look of an element given as its chain."""
+
+    def __init__(self, css: str = ""):
+        text = re.sub(r"/\*.*?\*/", "", css, flags=re.S)
+        text = re.sub(r"@[^{;]*(;|\{[^{}]*(\{[^{}]*\}[^{}]*)*\})", "", text)  # @media, @font-face, @import
+        rules: list[_Rule] = []
+        for n, block in enumerate(re.finditer(r"([^{}]+)\{([^{}]*)\}", text)):
+            decls = tuple(declarations(block.group(2)).items())
+            if not decls:
+                continue
+            for sel in block.group(1).split(","):
+                parts = _selector(" ".join(sel.split()))
+                if parts is None:
+                    continue
+                ids = sum(len(p[1][1]) for p in parts)
+                classes = sum(len(p[1][2]) for p in parts)
+                tags = sum(p[1][0] is not None for p in parts)
+                rules.append(_Rule(parts, (ids, classes, tags, n), decls))
+        rules.sort(key=lambda r: r.specificity)
+        self.rules = rules
+        #: Ids some rule names: only these need to stay in a chain (the others would spoil the sharing).
+        self.ids = frozenset(i for r in rules for p in r.parts for i in p[1][1])
+        #: Classes some rule names.
+        self.classes = frozenset(c for r in rules for p in r.parts for c in p[1][2])
+        self._looks: dict[tuple[Node, ...], Look] = {}
+        self._own: dict[tuple[Node, ...], dict[str, str]] = {}
+
+    def _declared(self, chain: tuple[Node, ...]) -> dict[str, str]:
+        """What the rules, the attributes and the style say about the last node of *chain*."""
+        got = self._own.get(chain)
+        if got is None:
+            last = chain[-1]
+            got = {}
+            own = dict(last[3])
+            for name in PROPERTIES:  # presentation attributes first, the style sheet over them
+                if ("@" + name) in own:
+                    got[name] = own["@" + name]
+            for rule in self.rules:
+                if rule.parts[-1][1][2] and not all(c in last[2] for c in rule.parts[-1][1][2]):
+                    continue  # the subject's classes are the cheap test
+                if rule.matches(chain):
+                    got.update(rule.declarations)
+            for name in PROPERTIES:  # the style attribute last
+                if name in own:
+                    got[name] = own[name]
+            self._own[chain] = got
+        return got
+
+    def look(self, chain: tuple[Node, ...]) -> Look:
+        """The look of the element whose chain (root first) is *chain*."""
+        got = self._looks.get(chain)
+        if got is not None:
+            return got
+        if len(chain) > 1:
+            parent = self.look(chain[:-1])
+            # a hidden parent hides its children (display), whatever they say (visibility: approximated alike)
+            inherited = {"visibility": "visible", "font-size": str(parent.font_size),
+                         "font-family": parent.font_family, "font-style": parent.font_style,
+                         "font-weight": parent.font_weight, "text-anchor": parent.text_anchor,
+                         "stroke": parent.stroke, "stroke-width": str(parent.stroke_width)}
+            shown, opacity = parent.shown, parent.opacity
+            parent_size = parent.font_size
+        else:
+            inherited = dict(_INITIAL)
+            shown, opacity, parent_size = True, 1.0, 16.0
+        values = dict(inherited)
+        values.update(self._declared(chain))
+        if values.get("display", "").strip().lower() == "none":
+            shown = False
+        if values.get("visibility", "").strip().lower() in ("hidden", "collapse"):
+            shown = False
+        opacity *= _number(values.get("opacity", "1"), 1.0, 1.0)
+        size = _length(values["font-size"], parent_size)
+        got = Look(shown=shown, opacity=max(0.0, min(1.0, opacity)), font_size=size,
+                   font_family=values["font-family"].strip(), font_style=values["font-style"].strip().lower(),
+                   font_weight=values["font-weight"].strip().lower(),
+                   text_anchor=values["text-anchor"].strip().lower(), stroke=values["stroke"].strip(),
+                   stroke_width=_length(values["stroke-width"], size))
+        self._looks[chain] = got
+        return got
+
+
+def _number(text: str, default: float, percent_of: float) -> float:
+    s = text.strip().lower()
+    try:
+        return float(s[:-1]) / 100 * percent_of if s.endswith("%") else float(s)
+    except ValueError:
+        return default
+
+
+_UNITS = {"": 1.0, "px": 1.0, "pt": 4 / 3, "pc": 16.0, "mm": 96 / 25.4, "cm": 96 / 2.54, "in": 96.0}
+
+
+def _length(text: str, em: float) -> float:
+    """A CSS length in user units (em and % of *em*); what cannot be read (``calc()``) is *em*."""
+    m = re.fullmatch(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?)\s*(px|pt|pc|mm|cm|in|em|%)?\s*", text, re.I)
+    if not m:
+        return em
+    value, unit = float(m.group(1)), (m.group(2) or "").lower()
+    if unit == "em":
+        return value * em
+    if unit == "%":
+        return value / 100 * em
+    return value * _UNITS[unit]

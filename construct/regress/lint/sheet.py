@@ -1,0 +1,524 @@
+"""A drawing read from its file for legibility: its letters, point markers, result lines and steps.
+
+What is read is what the renderer writes (:mod:`construct.render.svg`) and
+DESIGN §7 names as stable: ``text.lb`` a label (``text.lb.halo`` the paper
+coloured halo beneath it, ``text.lb.tag`` the name tag of a current step's
+point), ``text.cap`` a caption line, ``circle.pt`` a point marker (a label
+``X-label`` or ``X-tag`` names the point ``X``), elements of class
+``result`` the result lines, ``g[data-step=k]`` the groups of step k
+(``data-fade``: the last step of its group, after which its helpers fade).
+Nothing is rebuilt from a construction: any user's output folder can be read.
+
+How each element looks is worked out from the drawing's own style sheet
+(:mod:`.cascade`) for every state a step's group takes in the player
+(current ``cur``, earlier ``old``, faded ``done``, an input ``inp``), so that
+what a view shows is what a browser shows.  Text extents come from the font
+the style sheet names (:mod:`.fonts`).  Lengths are user units of the
+drawing, boxes (x0, y0, x1, y1) with y down.
+
+>>> svg = '''<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 200 100">
+... <style>.lb{font-family:'DejaVu Sans';font-size:12px;text-anchor:middle}.pt{fill:black}
+... .result{stroke:black;stroke-width:2;fill:none}</style>
+... <g class="step" data-step="1"><circle class="pt" id="s0001-A" cx="50" cy="50" r="2"/>
+... <text class="lb" id="s0001-A-label" x="60" y="45">A</text></g>
+... <g class="step" data-step="2"><line class="result" x1="0" y1="90" x2="200" y2="90"/></g></svg>'''
+>>> sh = read_sheet(svg, "demo")
+>>> [t.text for t in sh.texts], sh.texts[0].owner, sh.n, len(sh.dots), len(sh.strokes)
+(['A'], 's0001-A', 2, 1, 1)
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ...kernel.errors import ConstructError
+from ..svgdiff.geometry import arc_centre, parse_path, parse_transform
+from .cascade import PROPERTIES, Cascade, Look, Node, declarations
+from .fonts import text_extents
+
+__all__ = ["Sheet", "Text", "Dot", "Stroke", "read_sheet", "read_views", "player_data", "LintInputError",
+           "STATES", "Box"]
+
+Box = tuple[float, float, float, float]
+Matrix = tuple[float, float, float, float, float, float]
+_IDENTITY: Matrix = (1.0, 0.0, 0.0, 1.0, 0.0, 0.0)
+
+#: The classes the player gives a step's groups (besides ``step``); "" is the whole figure as the file has it.
+STATES = ("cur", "old", "done", "inp", "hid")
+
+#: A label's box reaches this far beyond its glyphs when it has no halo (user units): labels closer
+#: than twice this read as one word ("ω7ω6").
+MIN_MARGIN = 0.5
+#: The longest straight piece a result line is cut into for the spatial index (user units).
+PIECE = 24.0
+#: How far a flattened arc or curve may stray from the true one (user units).
+FLATNESS = 0.2
+
+_NOT_DRAWN = {"defs", "clipPath", "mask", "marker", "pattern", "symbol", "style", "script", "metadata", "title",
+              "desc", "linearGradient", "radialGradient", "filter", "foreignObject", "animate", "set",
+              "animateTransform", "animateMotion"}
+_DRAWN = {"line", "path", "circle", "ellipse", "polyline", "polygon", "rect"}
+#: The largest drawing read (a 3600-part replay's final.svg is a few MB; as ``construct diff``).
+MAX_BYTES = 320 * 2**20
+#: Subtrees not read: the magnified inset of a frame is a second picture at another scale over the first.
+_SKIPPED_IDS = {"inset"}
+
+
+#: Marks a step's group in a chain (its state classes are what a view changes).
+_STEP_GROUP = ("#step-group", "")
+_STATE_CLASSES = frozenset(STATES)
+
+
+class LintInputError(ConstructError, ValueError):
+    """What lint was given is not a drawing it can read (not XML, no <svg>, no such file or folder)."""
+
+
+@dataclass(frozen=True, slots=True)
+class Text:
+    """A label, a point's name tag or a caption line, with the box its glyphs and halo cover."""
+
+    index: int
+    text: str
+    kind: str  # "label", "tag" or "caption"
+    ident: str | None
+    owner: str | None  # the id of the point it names
+    step: int | None
+    chain: tuple[Node, ...]
+    box: Box
+    size: float  # font size, user units
+
+    @property
+    def name(self) -> str:
+        return f"{self.text!r} ({self.ident})" if self.ident else repr(self.text)
+
+
+@dataclass(frozen=True, slots=True)
+class Dot:
+    """A point marker: a disc of radius ``r`` (its stroke included)."""
+
+    ident: str | None
+    step: int | None
+    chain: tuple[Node, ...]
+    x: float
+    y: float
+    r: float
+
+
+@dataclass(frozen=True, slots=True)
+class Stroke:
+    """A drawn line of the result role: straight pieces and half its stroke width."""
+
+    ident: str | None
+    step: int | None
+    chain: tuple[Node, ...]
+    pieces: tuple[tuple[float, float, float, float], ...]
+    half: float
+
+
+@dataclass(frozen=True, slots=True)
+class Drawn:
+    """Any drawn element of a step (for the size of the current step's mark): its box without stroke."""
+
+    step: int
+    ident: str | None
+    chain: tuple[Node, ...]
+    box: Box
+
+
+@dataclass
+class Sheet:
+    """A drawing as lint reads it."""
+
+    name: str
+    viewbox: tuple[float, float, float, float]  # x, y, w, h
+    cascade: Cascade
+    texts: list[Text] = field(default_factory=list)
+    dots: list[Dot] = field(default_factory=list)
+    strokes: list[Stroke] = field(default_factory=list)
+    drawn: list[Drawn] = field(default_factory=list)
+    #: The steps that have groups, and the last of them (0: none).
+    steps: list[int] = field(default_factory=list)
+    n: int = 0
+    #: data-fade of a step's groups: the last step of its group (its helpers fade after it).
+    fades: dict[int, int] = field(default_factory=dict)
+    #: The state a step's groups have in the file ("" when none): the figure as it stands.
+    file_states: dict[int, str] = field(default_factory=dict)
+    #: A frame (one step's view, its groups marked in the file): that step; None for a layered figure.
+    frame: int | None = None
+    #: Whether the style sheet marks a current step: then every step's view is checked.
+    marks_steps: bool = False
+    #: Per step, the steps whose objects it is set on (from the player's data; empty when not known).
+    inputs: dict[int, tuple[int, ...]] = field(default_factory=dict)
+    #: The camera: per step its view box (x, y, w, h) when the output stores one.
+    views: dict[int, tuple[float, float, float, float]] = field(default_factory=dict)
+
+    def look(self, chain: tuple[Node, ...], state: str | None = None) -> Look:
+        """The look of an element (its chain) with its step's groups in *state* (None: as in the file)."""
+        if state is None:
+            return self.cascade.look(chain)
+        for i in range(len(chain) - 1, -1, -1):
+            nd = chain[i]
+            if _STEP_GROUP in nd[3]:
+                classes = nd[2] - _STATE_CLASSES
+                if state:
+                    classes = classes | {state}
+                changed = chain[:i] + ((nd[0], nd[1], classes, nd[3]),) + chain[i + 1:]
+                return self.cascade.look(changed)
+        return self.cascade.look(chain)
+
+
+# --------------------------------------------------------------------------- the camera
+
+def read_views(root: ET.Element, data: dict | None) -> dict[int, tuple[float, float, float, float]]:
+    """The camera's view of every step that has one: {step: (x, y, w, h)} in the drawing's user units.
+
+    Read from the output, in this order: a ``data-view="x y w h"`` on an element
+    of step k (``data-step="k"``, a step group or a view marker), then the
+    player's data (``views``: a list of boxes, each step's ``v`` an index into
+    it, or ``v`` the box itself).  A step without a view is shown whole (the
+    drawing's viewBox).  This is the one place that knows where the camera is
+    stored.
+    """
+    views: dict[int, tuple[float, float, float, float]] = {}
+    for e in root.iter():
+        raw, step = e.get("data-view"), e.get("data-step")
+        if raw is None or step is None:
+            continue
+        box = _four(raw)
+        if box is not None and step.strip().isdigit():
+            views.setdefault(int(step), box)
+    if data:
+        table = data.get("views") if isinstance(data.get("views"), list) else None
+        for k, st in enumerate(data.get("steps") or (), start=1):
+            v = st.get("v") if isinstance(st, dict) else None
+            if isinstance(v, int) and table is not None and 0 <= v < len(table):
+                v = table[v]
+            box = _four(" ".join(map(str, v))) if isinstance(v, (list, tuple)) else None
+            if box is not None:
+                views.setdefault(k, box)
+    return views
+
+
+def _four(text: str) -> tuple[float, float, float, float] | None:
+    try:
+        v = [float(t) for t in re.split(r"[\s,]+", text.strip()) if t]
+    except ValueError:
+        return None
+    if len(v) != 4 or not all(math.isfinite(x) for x in v) or v[2] <= 0 or v[3] <= 0:
+        return None
+    return (v[0], v[1], v[2], v[3])
+
+
+def player_data(path: Path) -> dict | None:
+    """The JSON data of a ``player.html`` (steps, their inputs and views), or None when there is none."""
+    try:
+        if not path.is_file():
+            return None
+        page = path.read_text(encoding="utf-8", errors="replace")
+    except OSError:
+        return None
+    m = re.search(r'<script type="application/json" id="data">(.*?)</script>', page, re.S)
+    if not m:
+        return None
+    try:
+        data = json.loads(m.group(1))
+    except ValueError:
+        return None
+    return data if isinstance(data, dict) else None
+
+
+# --------------------------------------------------------------------------- reading
+
+def _local(tag) -> str:
+    if not isinstance(tag, str):
+        return ""
+    return tag.rsplit("}", 1)[-1]
+
+
+def _mul(m: Matrix, n: Matrix) -> Matrix:
+    a, b, c, d, e, f = m
+    A, B, C, D, E, F = n
+    return (a * A + c * B, b * A + d * B, a * C + c * D, b * C + d * D, a * E + c * F + e, b * E + d * F + f)
+
+
+def _at(m: Matrix, x: float, y: float) -> tuple[float, float]:
+    return (m[0] * x + m[2] * y + m[4], m[1] * x + m[3] * y + m[5])
+
+
+def _num(raw: str | None, default: float = 0.0) -> float:
+    """The (first) number of an attribute; *default* when there is none."""
+    if raw is None:
+        return default
+    try:
+        v = float(raw)  # what our renderer writes: a plain number
+        return v if math.isfinite(v) else default
+    except ValueError:
+        pass
+    first = re.split(r"[\s,]+", raw.strip())[0] if raw.strip() else ""
+    m = re.match(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?", first)
+    return float(m.group()) if m else default
+
+
+def _box_of(points) -> Box:
+    xs = [p[0] for p in points]
+    ys = [p[1] for p in points]
+    return (min(xs), min(ys), max(xs), max(ys))
+
+
+def _arc_points(c, r, a0, sweep) -> list[tuple[float, float]]:
+    step = 2 * math.acos(max(-1.0, 1 - FLATNESS / r)) if r > FLATNESS else math.pi / 2
+    n = max(2, min(720, math.ceil(abs(sweep) / max(step, 1e-6))))
+    return [(c[0] + r * math.cos(a0 + sweep * i / n), c[1] + r * math.sin(a0 + sweep * i / n)) for i in range(n + 1)]
+
+
+def _polylines(tag: str, e: ET.Element, where: str) -> list[list[tuple[float, float]]]:
+    """The element's outline as polylines in its own coordinates (arcs and curves flattened)."""
+    if tag == "line":
+        return [[(_num(e.get("x1")), _num(e.get("y1"))), (_num(e.get("x2")), _num(e.get("y2")))]]
+    if tag in ("circle", "ellipse"):
+        cx, cy = _num(e.get("cx")), _num(e.get("cy"))
+        rx = _num(e.get("r") if tag == "circle" else e.get("rx"))
+        ry = rx if tag == "circle" else _num(e.get("ry"), rx)
+        if rx <= 0 or ry <= 0:
+            return [[(cx, cy)]]
+        pts = _arc_points((0.0, 0.0), max(rx, ry), 0.0, 2 * math.pi)
+        return [[(cx + x * rx / max(rx, ry), cy + y * ry / max(rx, ry)) for x, y in pts]]
+    if tag == "rect":
+        x, y, w, h = _num(e.get("x")), _num(e.get("y")), _num(e.get("width")), _num(e.get("height"))
+        return [[(x, y), (x + w, y), (x + w, y + h), (x, y + h), (x, y)]]
+    if tag in ("polyline", "polygon"):
+        v = [float(t) for t in re.findall(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?", e.get("points", ""))]
+        pts = [(v[i], v[i + 1]) for i in range(0, len(v) - 1, 2)]
+        if tag == "polygon" and pts:
+            pts.append(pts[0])
+        return [pts] if pts else []
+    # a path
+    out: list[list[tuple[float, float]]] = []
+    cur: list[tuple[float, float]] = []
+    for seg in parse_path(e.get("d", ""), where):
+        op = seg[0]
+        if op == "M":
+            if len(cur) > 1:
+                out.append(cur)
+            cur = [seg[1]]
+        elif op in ("L", "Z"):
+            cur = cur or [seg[1]]
+            cur.append(seg[2])
+        elif op in ("C", "Q"):
+            p = seg[1:]
+            cur = cur or [p[0]]
+            for i in range(1, 13):
+                t = i / 12
+                if op == "C":
+                    s = 1 - t
+                    w = (s * s * s, 3 * s * s * t, 3 * s * t * t, t * t * t)
+                else:
+                    s = 1 - t
+                    w = (s * s, 2 * s * t, t * t)
+                cur.append((sum(wi * q[0] for wi, q in zip(w, p)), sum(wi * q[1] for wi, q in zip(w, p))))
+        else:  # an arc
+            _, p0, p1, rx, ry, phi, large, sweep = seg
+            cur = cur or [p0]
+            (cx, cy), rx, ry = arc_centre(p0, p1, rx, ry, phi, large, sweep)
+            if abs(rx - ry) > 1e-9 * max(rx, 1.0) or phi % 180:
+                cur.append(p1)  # an ellipse turned: its chord (our drawings have none)
+                continue
+            a0 = math.atan2(p0[1] - cy, p0[0] - cx)
+            a1 = math.atan2(p1[1] - cy, p1[0] - cx)
+            d = a1 - a0
+            if sweep:  # positive angles (clockwise on the y-down sheet)
+                d = d % (2 * math.pi) or 2 * math.pi
+            else:
+                d = -((-d) % (2 * math.pi) or 2 * math.pi)
+            cur.extend(_arc_points((cx, cy), rx, a0, d)[1:])
+    if len(cur) > 1 or (cur and not out):
+        out.append(cur)
+    return out
+
+
+def _pieces(lines: list[list[tuple[float, float]]]) -> list[tuple[float, float, float, float]]:
+    """Straight pieces at most :data:`PIECE` long (so that each sits in a few cells of the index)."""
+    out = []
+    for pts in lines:
+        for (ax, ay), (bx, by) in zip(pts, pts[1:]):
+            n = max(1, math.ceil(math.hypot(bx - ax, by - ay) / PIECE))
+            for i in range(n):
+                out.append((ax + (bx - ax) * i / n, ay + (by - ay) * i / n,
+                            ax + (bx - ax) * (i + 1) / n, ay + (by - ay) * (i + 1) / n))
+    return out
+
+
+def read_sheet(source: str | bytes | Path, name: str, *, data: dict | None = None) -> Sheet:
+    """Read a drawing (SVG text, bytes or a file) into a :class:`Sheet`; *data*: the player's, if any."""
+    if isinstance(source, Path):
+        try:
+            size = source.stat().st_size
+            if size > MAX_BYTES:
+                raise LintInputError(f"{name}: larger than {MAX_BYTES // 2**20} MiB ({size} bytes); "
+                                     f"no drawing this library writes is")
+            source = source.read_bytes()
+        except OSError as exc:
+            raise LintInputError(f"{name}: cannot read: {exc.strerror or exc}") from None
+    try:
+        root = ET.fromstring(source)
+    except ET.ParseError as exc:
+        raise LintInputError(f"{name}: not well-formed XML: {exc}") from None
+    except (ValueError, UnicodeError) as exc:
+        raise LintInputError(f"{name}: cannot decode: {exc}") from None
+    if _local(root.tag) != "svg":
+        raise LintInputError(f"{name}: the root element is <{_local(root.tag)}>, not <svg>")
+    css = "\n".join("".join(e.itertext()) for e in root.iter() if _local(e.tag) == "style")
+    cascade = Cascade(css)
+    vb = _four(root.get("viewBox", "")) or (0.0, 0.0, _num(root.get("width"), 0.0), _num(root.get("height"), 0.0))
+    if vb[2] <= 0 or vb[3] <= 0:
+        raise LintInputError(f"{name}: the drawing has no size (no viewBox, width or height)")
+    sheet = Sheet(name=name, viewbox=vb, cascade=cascade)
+    sheet.marks_steps = _marks_steps(cascade)
+    _Reader(sheet).read(root)
+    sheet.steps = sorted(set(sheet.steps))
+    sheet.n = sheet.steps[-1] if sheet.steps else 0
+    current = [k for k, s in sheet.file_states.items() if s == "cur"]
+    sheet.frame = current[0] if len(current) == 1 else None
+    sheet.views = read_views(root, data)
+    if data:
+        for k, st in enumerate(data.get("steps") or (), start=1):
+            if isinstance(st, dict) and isinstance(st.get("i"), list):
+                sheet.inputs[k] = tuple(int(i) for i in st["i"] if isinstance(i, int))
+    return sheet
+
+
+def _marks_steps(cascade: Cascade) -> bool:
+    """Does the style sheet mark the current step's marks (a rule for ``.cur>*``, ``.cur>.pt``, a ring)?
+
+    Rules for the current step's letters alone (every style keeps their halo) do not count:
+    a plate, which is never stepped through, has them too.
+    """
+    text_only = {"lb", "halo", "leader", "tag"}
+    return any(any("cur" in part[1][2] for part in rule.parts) and not set(rule.parts[-1][1][2]) & text_only
+               for rule in cascade.rules)
+
+
+class _Reader:
+    def __init__(self, sheet: Sheet):
+        self.sheet = sheet
+        self.halos: dict[tuple, float] = {}
+        self.pending: list[tuple] = []
+
+    def read(self, root: ET.Element) -> None:
+        self._walk(root, (), _IDENTITY, None)
+        # the labels last: their halos (drawn before them) are known by then
+        for args in self.pending:
+            self._text(*args)
+
+    def _node(self, e: ET.Element, tag: str, step: int | None) -> Node:
+        c = self.sheet.cascade
+        own: list[tuple[str, str]] = []
+        for name in PROPERTIES:
+            if e.get(name) is not None:
+                own.append(("@" + name, e.get(name)))
+        style = e.get("style")
+        if style:
+            own.extend(declarations(style).items())
+        if step is not None and e.get("data-step") is not None:
+            own.append(_STEP_GROUP)  # the same for every step: elements that look alike share their chains
+        ident = e.get("id")
+        classes = frozenset(e.get("class", "").split())
+        return (tag, ident if ident in c.ids else None, classes, tuple(own))
+
+    def _walk(self, e: ET.Element, chain: tuple[Node, ...], ctm: Matrix, step: int | None) -> None:
+        tag = _local(e.tag)
+        if not tag or tag in _NOT_DRAWN or e.get("id") in _SKIPPED_IDS:
+            return
+        sheet = self.sheet
+        raw_step = e.get("data-step")
+        if raw_step is not None and raw_step.strip().isdigit() and tag == "g":
+            step = int(raw_step)
+            sheet.steps.append(step)
+            classes = set(e.get("class", "").split())
+            states = classes & set(STATES)
+            sheet.file_states.setdefault(step, next(iter(sorted(states)), ""))
+            fade = e.get("data-fade")
+            if fade is not None and fade.strip().isdigit():
+                sheet.fades[step] = int(fade)
+        if e.get("transform"):
+            try:
+                ctm = _mul(ctm, parse_transform(e.get("transform")))
+            except ConstructError:
+                pass  # a transform lint cannot read: the element is taken where it stands
+        chain = chain + (self._node(e, tag, step),)
+        if tag in ("svg", "g", "a", "switch"):
+            for child in e:
+                self._walk(child, chain, ctm, step)
+            return
+        classes = chain[-1][2]
+        if tag == "text":
+            if "halo" in classes:
+                look = sheet.look(chain)
+                self.halos[(_text_of(e), e.get("x"), e.get("y"), e.get("transform"))] = look.stroke_width / 2
+            else:
+                self.pending.append((e, chain, ctm, step))
+            return
+        if tag not in _DRAWN:
+            return
+        where = f"{sheet.name}: <{tag} {e.get('id') or ''}>"
+        try:
+            lines = _polylines(tag, e, where)
+        except ConstructError as exc:
+            raise LintInputError(str(exc)) from None
+        lines = [[_at(ctm, x, y) for x, y in pts] for pts in lines]
+        pts = [p for line in lines for p in line]
+        if not pts:
+            return
+        scale = math.sqrt(abs(ctm[0] * ctm[3] - ctm[1] * ctm[2]))
+        if tag == "circle" and "pt" in classes:
+            look = sheet.look(chain)
+            cx, cy = _at(ctm, _num(e.get("cx")), _num(e.get("cy")))
+            r = _num(e.get("r")) * scale + (look.stroke_width * scale / 2 if look.stroked else 0.0)
+            sheet.dots.append(Dot(e.get("id"), step, chain, cx, cy, r))
+        elif "result" in classes:
+            look = sheet.look(chain)
+            if look.stroked:
+                sheet.strokes.append(Stroke(e.get("id"), step, chain, tuple(_pieces(lines)),
+                                            look.stroke_width * scale / 2))
+        if step is not None and not classes & {"leader", "halo", "brk", "brkline"}:
+            box = _box_of(pts)
+            if tag == "circle":  # exact: the flattened outline's corners fall inside the circle
+                cx, cy = _at(ctm, _num(e.get("cx")), _num(e.get("cy")))
+                r = _num(e.get("r")) * scale
+                box = (cx - r, cy - r, cx + r, cy + r)
+            sheet.drawn.append(Drawn(step, e.get("id"), chain, box))
+
+    def _text(self, e: ET.Element, chain: tuple[Node, ...], ctm: Matrix, step: int | None) -> None:
+        sheet = self.sheet
+        text = _text_of(e)
+        if not text.strip():
+            return
+        classes = chain[-1][2]
+        kind = "caption" if "cap" in classes else ("tag" if "tag" in classes else "label")
+        look = sheet.look(chain)
+        (ix0, iy0, ix1, iy1), advance = text_extents(text, look.font_family, round(look.font_size, 3),
+                                                      look.font_style, look.font_weight)
+        x, y = _num(e.get("x")) + _num(e.get("dx")), _num(e.get("y")) + _num(e.get("dy"))
+        shift = {"middle": -advance / 2, "end": -advance}.get(look.text_anchor, 0.0)
+        margin = self.halos.get((text, e.get("x"), e.get("y"), e.get("transform")), MIN_MARGIN)
+        margin = max(margin, MIN_MARGIN)
+        corners = [_at(ctm, x + shift + a, y + b) for a in (ix0 - margin, ix1 + margin)
+                   for b in (iy0 - margin, iy1 + margin)]
+        ident = e.get("id")
+        owner = None
+        if ident:
+            for suffix in ("-label", "-tag"):
+                if ident.endswith(suffix):
+                    owner = ident[: -len(suffix)]
+        scale = math.sqrt(abs(ctm[0] * ctm[3] - ctm[1] * ctm[2]))
+        sheet.texts.append(Text(len(sheet.texts), text, kind, ident, owner, step, chain, _box_of(corners),
+                                look.font_size * scale))
+
+
+def _text_of(e: ET.Element) -> str:
+    return " ".join("".join(e.itertext()).split())

@@ -1,0 +1,350 @@
+"""``construct lint``: legibility findings on small drawings with collisions built in, and clean ones.
+
+The drawings are written here by hand, with the classes the renderer uses
+(DESIGN §7), so every expected finding follows from where the test put
+things: two labels on one spot, a label on a point, a result line through a
+label, a tiny label.  Sizes of letters are checked against the font's own
+outlines (matplotlib's TextPath), not against the code's output.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from construct.regress.lint import LintInputError, lint_path, lint_svg
+from construct.regress.lint.fonts import text_extents
+
+CSS = """.lb{fill:#000;stroke:none;font-family:'DejaVu Sans', Arial, sans-serif;font-size:12px;text-anchor:middle}
+.lb.halo{fill:#fff;stroke:#fff;stroke-width:3.5px}
+.pt{fill:#000;stroke:none}
+.result{stroke:#000;stroke-width:2;fill:none}
+.construction{stroke:#888;stroke-width:0.7;fill:none}
+.cap{font-family:'DejaVu Sans';font-size:14px}
+.old{opacity:0.45}
+.done{opacity:0.13}
+.cur>*{stroke:#e8590c;stroke-width:2.6}
+.cur>.pt{fill:#e8590c;stroke:#e8590c;stroke-width:3}
+.tag{display:none;font-size:10px}
+.cur>.tag{display:inline}"""
+
+
+def svg(body: str, *, width: float = 1400, height: float = 1000, css: str = CSS) -> str:
+    return (f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {width:g} {height:g}">'
+            f"<style>{css}</style>{body}</svg>")
+
+
+def label(text: str, x: float, y: float, ident: str, halo: bool = True, cls: str = "lb") -> str:
+    h = f'<text class="lb halo" x="{x:g}" y="{y:g}">{text}</text>' if halo else ""
+    return h + f'<text class="{cls}" id="{ident}" x="{x:g}" y="{y:g}">{text}</text>'
+
+
+def point(ident: str, x: float, y: float, r: float = 2.0) -> str:
+    return f'<circle class="pt" id="{ident}" cx="{x:g}" cy="{y:g}" r="{r:g}"/>'
+
+
+def kinds(findings) -> list[str]:
+    return sorted(f.kind for f in findings)
+
+
+# --------------------------------------------------------------------------- the font's metrics
+
+@pytest.mark.parametrize("text", ["K17", "q7", "ω7′", "Wj"])
+def test_text_extents_are_the_glyph_outlines(text):
+    from matplotlib.font_manager import FontProperties, findfont
+    from matplotlib.textpath import TextPath
+
+    (x0, y0, x1, y1), advance = text_extents(text, "'DejaVu Sans', sans-serif", 12.0)
+    ext = TextPath((0, 0), text, size=12.0, prop=FontProperties(fname=findfont("DejaVu Sans"))).get_extents()
+    # control points of the outline's quadratic pieces may stand a hair outside the outline itself
+    assert x0 == pytest.approx(ext.x0, abs=0.3) and x1 == pytest.approx(ext.x1, abs=0.3)
+    assert -y1 == pytest.approx(ext.y0, abs=0.3) and -y0 == pytest.approx(ext.y1, abs=0.3)
+    assert x1 <= advance + 1.0
+
+
+def test_widths_come_from_the_font_not_from_counting_characters():
+    # 'i' is a quarter em wide, 'W' a whole one: three of each at the same spacing
+    narrow = svg(label("iii", 100, 100, "a") + label("iii", 118, 100, "b"))
+    wide = svg(label("WWW", 100, 100, "a") + label("WWW", 130, 100, "b"))
+    assert lint_svg(narrow, "narrow.svg") == []
+    assert kinds(lint_svg(wide, "wide.svg")) == ["overlap"]
+
+
+# --------------------------------------------------------------------------- a plate: one view
+
+def test_a_clean_figure_has_no_findings():
+    body = (point("s0001-A", 200, 200) + label("A", 212, 196, "s0001-A-label")
+            + point("s0002-B", 400, 300) + label("B", 412, 296, "s0002-B-label")
+            + '<line class="result" id="s0003-g" x1="200" y1="200" x2="400" y2="300"/>'
+            + '<text class="cap" x="24" y="980">Fig. 1. A clean figure</text>')
+    assert lint_svg(svg(body), "clean.svg") == []
+
+
+def test_two_labels_on_one_spot_overlap_and_are_named():
+    body = label("K6", 300, 300, "s0040-K6-label") + label("K7", 303, 301, "s0041-K7-label")
+    (f,) = lint_svg(svg(body), "stack.svg")
+    assert f.kind == "overlap" and set(f.labels) == {"K6", "K7"}
+    assert set(f.ids) == {"s0040-K6-label", "s0041-K7-label"} and f.figure == "stack.svg" and f.steps == ()
+
+
+def test_labels_closer_than_their_halos_read_as_one_word():
+    # "ω7ω6": the two labels' glyphs do not touch, but their halos do (3.5 px stroke: 1.75 each side)
+    (_, _, x1, _), adv = text_extents("ω7", "'DejaVu Sans'", 12.0)
+    gap = 2.0  # between the ink of the first and the ink of the second, under two halves of a halo
+    x_second = 300 + (x1 - adv / 2) + gap + adv / 2 - text_extents("ω6", "'DejaVu Sans'", 12.0)[0][0]
+    body = label("ω7", 300, 300, "a") + label("ω6", x_second, 300, "b")
+    assert kinds(lint_svg(svg(body), "tight.svg")) == ["overlap"]
+    apart = label("ω7", 300, 300, "a") + label("ω6", x_second + 4.0, 300, "b")
+    assert lint_svg(svg(apart), "apart.svg") == []
+
+
+def test_a_label_on_another_point_but_not_on_its_own():
+    body = (point("s0001-A", 300, 300) + label("A", 300, 304, "s0001-A-label")  # on its own point: allowed
+            + point("s0002-B", 500, 300) + point("s0003-C", 520, 300) + label("B", 520, 304, "s0002-B-label"))
+    found = lint_svg(svg(body), "points.svg")
+    assert kinds(found) == ["on-point"]
+    assert found[0].ids == ("s0002-B-label", "s0003-C")
+
+
+def test_a_result_line_through_a_label_strikes_it_and_a_helper_line_does_not():
+    lab = label("q4", 300, 300, "s0009-q4-label")
+    through = '<line class="result" id="s0010-t" x1="250" y1="296" x2="350" y2="296"/>'
+    helper = '<line class="construction" id="s0010-h" x1="250" y1="296" x2="350" y2="296"/>'
+    # the label's ink reaches about 2.5 below the baseline, its halo 1.75 more, the line 1 wide each side
+    below = '<line class="result" id="s0010-b" x1="250" y1="310" x2="350" y2="310"/>'
+    found = lint_svg(svg(lab + through), "struck.svg")
+    assert kinds(found) == ["struck"] and found[0].ids == ("s0009-q4-label", "s0010-t")
+    assert lint_svg(svg(lab + helper), "helper.svg") == []
+    assert lint_svg(svg(lab + below), "below.svg") == []
+    # an arc through the label strikes it too (paths are flattened, arcs by their centre and radius)
+    arc = '<path class="result" id="s0011-k" d="M200 296A100 100 0 0 1 400 296"/>'  # centre (300, 296), top at y=196
+    assert lint_svg(svg(lab + arc), "arc.svg") == []
+    # from the bottom (300, 396) to the top (300, 196) in the positive sense (clockwise on the y-down sheet):
+    # through the left end (200, 296), not the right one
+    arc_left = '<path class="result" id="s0011-k" d="M300 396A100 100 0 0 1 300 196"/>'
+    assert kinds(lint_svg(svg(label("q4", 200, 300, "x") + arc_left), "left.svg")) == ["struck"]
+    assert lint_svg(svg(label("q4", 400, 300, "x") + arc_left), "right.svg") == []
+
+
+def test_small_labels_at_the_stated_view_size():
+    body = label("A", 300, 300, "s0001-A-label")
+    assert lint_svg(svg(body), "a.svg") == []  # 12 px on a 1400-wide view shown at 1400
+    # the same drawing twice as large in user units: shown at 1400 px, its 12-unit letters are 6 px
+    found = lint_svg(svg(body, width=2800, height=2000), "big.svg")
+    assert kinds(found) == ["small-label"] and "6 px" in found[0].message
+    # and shown on a larger screen it is legible again
+    assert lint_svg(svg(body, width=2800, height=2000), "big.svg", view=(2800, 2000)) == []
+    tiny = svg(body, css=CSS.replace("font-size:12px", "font-size:5px"))
+    assert kinds(lint_svg(tiny, "tiny.svg")) == ["small-label"]
+
+
+def test_a_label_outside_the_view():
+    body = label("Z", 5, 300, "s0001-Z-label")  # the letter's left half is left of x = 0
+    found = lint_svg(svg(body), "edge.svg")
+    assert kinds(found) == ["outside"] and found[0].labels == ("Z",)
+
+
+# --------------------------------------------------------------------------- steps and the camera
+
+def steps_svg(*groups: str, **kw) -> str:
+    return svg("".join(groups), **kw)
+
+
+def group(k: int, body: str, cls: str = "step", fade: int | None = None, view: str | None = None) -> str:
+    extra = (f' data-fade="{fade}"' if fade else "") + (f' data-view="{view}"' if view else "")
+    return f'<g class="{cls}" data-step="{k}"{extra}>{body}</g>'
+
+
+def test_collisions_are_reported_in_the_steps_that_show_both():
+    figure = steps_svg(
+        group(1, point("s0001-O", 100, 100)),
+        group(2, '<line class="construction" x1="0" y1="600" x2="900" y2="600"/>'),
+        group(3, label("K6", 300, 300, "s0003-K6-label")),
+        group(4, '<line class="construction" x1="0" y1="700" x2="900" y2="700"/>'),
+        group(5, label("K7", 302, 301, "s0005-K7-label")),
+        group(6, '<line class="construction" x1="0" y1="800" x2="900" y2="800"/>'))
+    found = lint_svg(figure, "steps.svg")
+    overlap = [f for f in found if f.kind == "overlap"]
+    assert len(overlap) == 1 and overlap[0].steps == ((5, 6),) and overlap[0].views == 2
+    # step 1's mark is a dot of radius 2 drawn with a 3-wide ring: 2 * (2 + 1.5) = 7 px (< 12);
+    # steps 3 and 5 draw only letters, the lines of 2 and 4 are long
+    marks = [f for f in found if f.kind == "small-mark"]
+    assert [f.steps for f in marks] == [((1, 1),)] and "7.0 px" in marks[0].message
+
+
+def test_a_faded_helper_no_longer_collides():
+    # step 3's label belongs to a group finished at step 4: from step 5 on it is faded (opacity 0.13)
+    figure = steps_svg(
+        group(1, label("K6", 300, 300, "s0001-K6-label")),
+        group(2, '<line class="construction" x1="0" y1="600" x2="900" y2="600"/>'),
+        group(3, label("M1", 302, 301, "s0003-M1-label"), cls="step done", fade=4),
+        group(4, '<line class="construction" x1="0" y1="700" x2="900" y2="700"/>'),
+        group(5, '<line class="construction" x1="0" y1="800" x2="900" y2="800"/>'),
+        group(6, '<line class="construction" x1="0" y1="900" x2="900" y2="900"/>'))
+    overlap = [f for f in lint_svg(figure, "fade.svg") if f.kind == "overlap"]
+    assert len(overlap) == 1 and overlap[0].steps == ((3, 4),)
+
+
+def test_name_tags_are_seen_only_while_their_step_is_current():
+    tag = '<text class="lb tag" id="s0002-M2-tag" x="301" y="300">M2</text>'
+    figure = steps_svg(group(1, label("A", 300, 300, "s0001-A-label")), group(2, tag),
+                       group(3, '<line class="construction" x1="0" y1="900" x2="900" y2="900"/>'))
+    overlap = [f for f in lint_svg(figure, "tags.svg") if f.kind == "overlap"]
+    assert len(overlap) == 1 and overlap[0].steps == ((2, 2),)
+
+
+def test_a_camera_view_stored_on_a_step_is_read():
+    # step 2 is seen through a camera box 140 x 100 (ten times magnified): its 12-unit letter is 120 px,
+    # and its tiny mark (a dot of radius 0.3) is 6 units = 60 px; without the camera the mark is 6 px
+    dot = '<circle class="pt" id="s0002-P" cx="300" cy="300" r="0.3"/>'
+    base = [group(1, label("A", 100, 100, "s0001-A-label")), None,
+            group(3, '<line class="construction" x1="0" y1="900" x2="900" y2="900"/>')]
+    plain = steps_svg(base[0], group(2, dot), base[2])
+    zoomed = steps_svg(base[0], group(2, dot, view="230 250 140 100"), base[2])
+    assert [f.steps for f in lint_svg(plain, "plain.svg") if f.kind == "small-mark"] == [((2, 2),)]
+    assert [f for f in lint_svg(zoomed, "zoomed.svg") if f.kind == "small-mark"] == []
+    # a label cut by the camera's edge in that view is outside it
+    cut = steps_svg(base[0], group(2, dot + label("P", 370, 300, "s0002-P-label"), view="230 250 140 100"), base[2])
+    out = [f for f in lint_svg(cut, "cut.svg") if f.kind == "outside"]
+    assert len(out) == 1 and out[0].steps == ((2, 2),) and out[0].labels == ("P",)
+
+
+def test_the_camera_may_come_from_the_players_data():
+    dot = '<circle class="pt" id="s0002-P" cx="300" cy="300" r="0.3"/>'
+    figure = steps_svg(group(1, label("A", 100, 100, "s0001-A-label")), group(2, dot),
+                       group(3, '<line class="construction" x1="0" y1="900" x2="900" y2="900"/>'))
+    data = {"n": 3, "steps": [{}, {"v": 0}, {}], "views": [[230, 250, 140, 100]]}
+    assert [f for f in lint_svg(figure, "p.svg", data=data) if f.kind == "small-mark"] == []
+
+
+# --------------------------------------------------------------------------- files, folders, the command
+
+def test_a_folder_is_every_final_svg_in_it(tmp_path):
+    (tmp_path / "a" / "teaching").mkdir(parents=True)
+    (tmp_path / "b").mkdir()
+    (tmp_path / "a" / "teaching" / "final.svg").write_text(svg(label("K6", 300, 300, "x") + label("K7", 302, 300, "y")))
+    (tmp_path / "b" / "final.svg").write_text(svg(label("A", 300, 300, "z")))
+    (tmp_path / "b" / "other.svg").write_text("not read")
+    report = lint_path(tmp_path)
+    assert report.figures == ["a/teaching/final.svg", "b/final.svg"]
+    assert report.totals()["overlap"] == 1 and report.counts()["b/final.svg"] == {}
+    assert not report.ok and "a/teaching/final.svg" in report.text()
+
+
+def test_bad_input_is_a_typed_error(tmp_path):
+    with pytest.raises(LintInputError, match="no final.svg"):
+        lint_path(tmp_path)
+    with pytest.raises(LintInputError, match="no such file"):
+        lint_path(tmp_path / "missing")
+    (tmp_path / "x.svg").write_text("<html/>")
+    with pytest.raises(LintInputError, match="not <svg>"):
+        lint_path(tmp_path / "x.svg")
+
+
+def _cli(*args: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "construct", "lint", *args], capture_output=True, text=True,
+                          timeout=300)
+
+
+def test_the_command_exits_0_clean_1_findings_2_bad_input(tmp_path):
+    clean, dirty = tmp_path / "clean.svg", tmp_path / "dirty.svg"
+    clean.write_text(svg(label("A", 300, 300, "a")))
+    dirty.write_text(svg(label("K6", 300, 300, "a") + label("K7", 302, 300, "b")))
+    ok = _cli(str(clean))
+    assert ok.returncode == 0 and "no findings" in ok.stdout
+    bad = _cli(str(dirty))
+    assert bad.returncode == 1 and "dirty.svg: figure: overlap: label 'K6' (a) and label 'K7' (b)" in bad.stdout
+    data = json.loads(_cli(str(dirty), "--format", "json").stdout)
+    assert data["totals"]["overlap"] == 1 and data["findings"][0]["labels"] == ["K6", "K7"]
+    for args in ((str(tmp_path / "nothing"),), (str(dirty), "--view", "wide")):
+        r = _cli(*args)
+        assert r.returncode == 2 and r.stdout == "" and len(r.stderr.strip().splitlines()) == 1
+
+
+def test_the_gallery_check_keeps_the_previous_gallery_when_asked(tmp_path):
+    from construct.cli.commands.gallery import IllegibleGallery, _lint
+
+    (tmp_path / "final.svg").write_text(svg(label("K6", 300, 300, "a") + label("K7", 302, 300, "b")))
+    _lint(False)(tmp_path)  # reports, does not fail
+    with pytest.raises(IllegibleGallery):
+        _lint(True)(tmp_path)
+
+
+# --------------------------------------------------------------------------- real output
+
+def _star():
+    """A point A with twelve result lines through it, every 15°: wherever its letter goes, a line crosses it."""
+    from construct import Builder
+
+    b = Builder("star", givens={})
+    b.given_point("A", 0.0, 0.0)
+    for i in range(12):
+        a = math.pi * i / 12
+        b.given_point(f"P{i}", math.cos(a), math.sin(a), label="")
+        b.given_point(f"Q{i}", -math.cos(a), -math.sin(a), label="")
+        b.line(f"l{i}", f"P{i}", f"Q{i}", role="result")
+    return b.figure()
+
+
+def test_the_renderers_output_is_read_and_its_collision_found(tmp_path):
+    from construct.render.scene import build_scene
+    from construct.render.svg import Drawing
+
+    text = Drawing(build_scene(_star())).layered()
+    found = lint_svg(text, "star.svg")
+    assert any(f.kind == "struck" and f.labels == ("A",) for f in found)
+
+
+def test_construct_golden_checks_legibility_unless_told_not_to(tmp_path):
+    from construct.regress.pytest_plugin import GoldenChecker
+
+    fig = _star()
+    checker = GoldenChecker(goldens=tmp_path / "goldens", default_name="star", update=True)
+    with pytest.raises(AssertionError, match="not legible"):
+        checker.check(fig)
+    assert (tmp_path / "goldens" / "star" / "final.svg").is_file()  # the goldens are written all the same
+    GoldenChecker(goldens=tmp_path / "goldens", default_name="star").check(fig, legible=False)
+
+
+def test_every_mark_of_the_current_step_is_seen_unless_a_ring_of_the_step_holds_it():
+    # step 2 marks two points far apart: each is a dot 7 px across, however far apart they are;
+    # step 3 marks a dot inside a ring of radius 10 (20 px across): the ring makes it seen
+    two = point("s0002-S1", 300, 300) + point("s0002-S2", 400, 300)
+    ringed = point("s0003-R", 500, 500) + '<circle class="ring" cx="500" cy="500" r="10"/>'
+    css = CSS + ".ring{fill:none;stroke:#e8590c;stroke-width:2}"
+    figure = steps_svg(group(1, '<line class="construction" x1="0" y1="900" x2="900" y2="900"/>'),
+                       group(2, two), group(3, ringed),
+                       group(4, '<line class="construction" x1="0" y1="800" x2="900" y2="800"/>'), css=css)
+    marks = [f for f in lint_svg(figure, "marks.svg") if f.kind == "small-mark"]
+    assert [f.steps for f in marks] == [((2, 2),)] and marks[0].ids == ("s0002-S1", "s0002-S2")
+
+
+def test_a_replays_frames_are_one_figure_and_a_collision_in_frame_after_frame_is_one_finding(tmp_path):
+    stack = label("K6", 300, 300, "s0001-K6-label") + label("K7", 302, 300, "s0001-K7-label")
+    (tmp_path / "steps").mkdir()
+    (tmp_path / "final.svg").write_text(svg(label("A", 100, 100, "a")))
+    (tmp_path / "steps" / "001.svg").write_text(steps_svg(group(1, stack, cls="step cur")))
+    (tmp_path / "steps" / "002.svg").write_text(steps_svg(group(1, stack, cls="step old"),
+                                                          group(2, point("s0002-P", 600, 600), cls="step cur")))
+    report = lint_path(tmp_path)
+    assert report.figures == ["final.svg", "steps/*.svg"]
+    overlap = [f for f in report.findings if f.kind == "overlap"]
+    assert len(overlap) == 1 and overlap[0].steps == ((1, 2),) and overlap[0].figure == "steps/*.svg"
+    # frame 2's current mark is a dot 7 px across
+    assert [f.steps for f in report.findings if f.kind == "small-mark"] == [((2, 2),)]
+
+
+def test_a_plate_layered_by_step_is_one_view():
+    # a plate's style sheet keeps the current letters' halo rule but marks no current step: never stepped through
+    plate_css = CSS.replace(".cur>*{stroke:#e8590c;stroke-width:2.6}", "").replace(
+        ".cur>.pt{fill:#e8590c;stroke:#e8590c;stroke-width:3}", ".cur>.lb.halo{fill:#fff}").replace(
+        ".cur>.tag{display:inline}", "")
+    figure = steps_svg(group(1, point("s0001-O", 100, 100)), group(2, label("K6", 300, 300, "a")),
+                       group(3, label("K7", 302, 300, "b")), css=plate_css)
+    found = lint_svg(figure, "plate.svg")
+    assert [(f.kind, f.steps, f.views) for f in found] == [("overlap", (), 1)]  # and no current mark to check

@@ -536,8 +536,9 @@ def test_reference_cycles_and_entity_declarations_are_bad_input():
         parse_svg(svg('<g id="loop"><circle r="1"/><use href="#loop"/></g>'))
     laughs = ('<?xml version="1.0"?><!DOCTYPE svg [<!ENTITY lol "lol"><!ENTITY lol2 "&lol;&lol;&lol;">]>'
               + svg("<text>&lol2;</text>"))
-    with pytest.raises(SvgFormatError, match="entity"):
-        parse_svg(laughs)
+    for spelled in (laughs, laughs.encode("utf-8"), laughs.encode("utf-16")):  # UTF-16 hides b"<!DOCTYPE"
+        with pytest.raises(SvgFormatError, match="entity"):
+            parse_svg(spelled)
     # A document type without entities (as editors write it) is read.
     doctype = '<!DOCTYPE svg PUBLIC "-//W3C//DTD SVG 1.1//EN" "http://www.w3.org/Graphics/SVG/1.1/DTD/svg11.dtd">'
     assert len(parse_svg(doctype + svg('<circle r="1"/>')).shapes) == 1
@@ -560,3 +561,50 @@ def test_the_diff_does_not_import_matplotlib(tmp_path):
             "print('matplotlib' in sys.modules); sys.exit(code)")
     done = run_construct(str(path), code=code)
     assert done.returncode == 0 and done.stdout.splitlines()[-1] == "False", done.stdout + done.stderr
+
+
+def test_a_style_sheet_with_a_rule_for_every_element_is_refused_past_the_budget(monkeypatch):
+    # Every rule needs class "a" and one more; every element has "a" and its own: rules x elements checks.
+    n = 300
+    sheet = "".join(f".a.b{k}{{stroke-width:{k + 2}}}" for k in range(n))
+    lines = "".join(f'<line class="a b{k}" x2="{k}"/>' for k in range(n))
+    drawing = svg(f"<style>{sheet}</style>{lines}")
+    shapes = parse_svg(drawing).shapes  # within the default budget: each line gets its own rule
+    assert [dict(s.style)["stroke-width"] for s in shapes[:3]] == [(2.0,), (3.0,), (4.0,)]
+    monkeypatch.setattr(svgvalues, "CSS_MATCH_BUDGET", n * n // 2)
+    with pytest.raises(SvgTooLargeError, match="rule checks"):
+        parse_svg(drawing, name="sheet.svg")
+
+
+def test_a_long_element_repeated_by_references_counts_by_its_length(monkeypatch):
+    # 2,000 points (about 16 KB) drawn 8 times through doubling <use>: 8 polylines, 128,000 characters.
+    points = " ".join(f"{k},{k % 7}" for k in range(2000))
+    chain = "".join(f'<g id="p{k}"><use href="#p{k - 1}"/><use href="#p{k - 1}"/></g>' for k in range(1, 4))
+    drawing = svg(f'<defs><polyline id="p0" points="{points}"/>{chain}</defs><use href="#p3"/>')
+    assert len(parse_svg(drawing).shapes) == 8
+    monkeypatch.setattr(svgvalues, "MAX_ELEMENTS", 200)  # 8 polylines, but 8 x 16 KB / 256 = 500 units
+    with pytest.raises(SvgTooLargeError, match="expands to more than 200 elements"):
+        parse_svg(drawing)
+
+
+def test_names_along_references_are_bounded(monkeypatch):
+    # Each level's key is the path of ids to it: 10 levels of 1,000-character ids, 1,024 circles.
+    long = "x" * 1000
+    chain = "".join(f'<g id="{long}{k}"><use href="#{long}{k - 1}"/><use href="#{long}{k - 1}"/></g>'
+                    for k in range(1, 11))
+    drawing = svg(f'<defs><circle id="{long}0" r="1"/>{chain}</defs><use href="#{long}10"/>')
+    assert len(parse_svg(drawing).shapes) == 1024
+    monkeypatch.setattr(svgvalues, "MAX_KEY_CHARS", 1_000_000)  # the circles' names alone: 1024 x 10,000
+    with pytest.raises(SvgTooLargeError, match="names"):
+        parse_svg(drawing)
+
+
+def test_a_hundred_thousand_equal_ids_are_named_in_linear_time(tmp_path):
+    # The duplicates are named id, id~2, id~3, ...; trying every suffix from 2 each time was quadratic.
+    a, b = tmp_path / "a.svg", tmp_path / "b.svg"
+    a.write_text(svg('<circle id="P" r="1"/>' * 100_000), encoding="utf-8")
+    b.write_text(svg('<circle id="P" r="1"/>' * 99_999 + '<circle id="P" r="2"/>'), encoding="utf-8")
+    done = run_construct("diff", str(a), str(b), "--json")
+    assert done.returncode == 1, done.stderr
+    (change,) = json.loads(done.stdout)["changes"]
+    assert (change["kind"], change["key"]) == ("resized", "P~100000")

@@ -35,7 +35,7 @@ references that double at every level -- is refused before it is worked out:
 >>> parse_svg(bomb)
 Traceback (most recent call last):
 ...
-construct.regress.svgdiff.SvgTooLargeError: <string>: the drawing expands to more than 2,000,000 elements (its <use> references repeat what they reference); refused
+construct.regress.svgdiff.SvgTooLargeError: <string>: the drawing expands to more than 2,000,000 elements (its <use> references repeat what they reference; ...); refused
 
 The package in four steps, each a module: :mod:`.parse` reads a document into
 shapes (with :mod:`.geometry` for transforms and paths, :mod:`.css` for

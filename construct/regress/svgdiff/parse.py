@@ -172,9 +172,74 @@ class _State:
     step: int | None = None  # from the nearest ancestor with data-step
 
 
+class _RuleIndex:
+    """The rules of the style sheets by the id, class or tag they need, and what they give each look.
+
+    An element meets only the rules that name its id, one of its classes or its
+    tag (and the universal ones), and elements that look alike to the sheet
+    (tag, classes, an id no rule names) share one answer: a drawing of a million
+    elements and a few classes matches a few times.  The checks of rules
+    against elements are counted; past :data:`CSS_MATCH_BUDGET` (a hostile
+    sheet: a rule per element, every element different) the drawing is refused.
+    """
+
+    def __init__(self, rules: list[_CssRule], name: str):
+        self.name = name
+        self.by_id: dict[str, list[_CssRule]] = {}
+        self.by_class: dict[str, list[_CssRule]] = {}
+        self.by_tag: dict[str, list[_CssRule]] = {}
+        self.anywhere: list[_CssRule] = []
+        for rule in rules:  # in specificity order; each rule filed under one thing it needs
+            if rule.ids:
+                self.by_id.setdefault(rule.ids[0], []).append(rule)
+            elif rule.classes:
+                self.by_class.setdefault(rule.classes[0], []).append(rule)
+            elif rule.tag is not None:
+                self.by_tag.setdefault(rule.tag, []).append(rule)
+            else:
+                self.anywhere.append(rule)
+        self.looks: dict[tuple[str, str | None, str], dict[str, str]] = {}
+        self.checks = 0
+
+    def declarations(self, tag: str, elem_id: str | None, classes: str) -> dict[str, str]:
+        look = (tag, elem_id if elem_id in self.by_id else None, classes)
+        got = self.looks.get(look)
+        if got is None:
+            got = self.looks[look] = self._work_out(tag, look[1], set(classes.split()))
+        return got
+
+    def _work_out(self, tag: str, elem_id: str | None, classes: set[str]) -> dict[str, str]:
+        candidates = list(self.anywhere)
+        candidates += self.by_tag.get(tag, ())
+        if elem_id is not None:
+            candidates += self.by_id.get(elem_id, ())
+        for c in classes:
+            candidates += self.by_class.get(c, ())
+        self.checks += len(candidates)
+        if self.checks > values.CSS_MATCH_BUDGET:
+            raise SvgTooLargeError(f"{self.name}: applying the style sheets takes more than "
+                                   f"{values.CSS_MATCH_BUDGET:,} rule checks; refused",
+                                   source=self.name, limit=values.CSS_MATCH_BUDGET)
+        out: dict[str, str] = {}
+        for rule in sorted(candidates, key=lambda r: r.specificity):
+            if rule.matches(tag, elem_id, classes):
+                out.update(rule.declarations)
+        return out
+
+
 #: One level of the walk: the children still to visit, their inherited state, key prefix, key counters
 #: and ``<use>`` depth.
 _Frame = tuple[Any, _State, str, dict[str, int], int]
+
+
+def _weight(elem: ET.Element) -> int:
+    """What an element counts towards :data:`MAX_ELEMENTS` when references repeat it: one per 256 characters.
+
+    A drawn element is shorter (one); a polyline of a million points repeated by
+    ``<use>`` a thousand times is a billion points, not a thousand elements.
+    """
+    chars = len(elem.text or "") + sum(len(v) for v in elem.attrib.values())
+    return 1 + chars // 256
 
 
 class _Parser:
@@ -196,8 +261,11 @@ class _Parser:
                 self.rules.extend(rules)
                 self.stylesheet.extend(canon)
         self.rules.sort(key=lambda r: r.specificity)
+        self.sheet = _RuleIndex(self.rules, self.name)
         self.shapes: list[Shape] = []
         self.used_keys: set[str] = set()
+        self.next_suffix: dict[str, int] = {}
+        self.key_chars = 0
         self._last: tuple[ET.Element | None, dict[str, str]] = (None, {})
         self._styles: dict[tuple, tuple[tuple[str, Any], ...]] = {}
         self._classed: dict[tuple, tuple[tuple[str, Any], ...]] = {}
@@ -242,9 +310,9 @@ class _Parser:
         """Refuse a drawing whose walk would visit more than :data:`MAX_ELEMENTS` elements.
 
         Counted before anything is worked out, each element once: what an element
-        expands to is one plus what its children expand to, and a ``<use>`` expands
-        to what it references (remembered, so a reference used a million times is
-        counted once).  The count follows the walk exactly: what the walk skips
+        expands to is its weight (:func:`_weight`: one, more for a long one) plus
+        what its children expand to, and a ``<use>`` expands to what it references
+        (remembered, so a reference used a million times is counted once).  The count follows the walk exactly: what the walk skips
         (``<defs>``, a dangling reference) counts one.  A reference cycle is
         refused here too.
         """
@@ -270,12 +338,12 @@ class _Parser:
                         stack.append((sub, None))
                 continue
             busy.discard(id(elem))
-            size[id(elem)] = min(limit + 1, 1 + sum(size[id(sub)] for sub in inner))
+            size[id(elem)] = min(limit + 1, _weight(elem) + sum(size[id(sub)] for sub in inner))
         total = size[id(self.root)]
         if total > limit:
             raise SvgTooLargeError(f"{self.name}: the drawing expands to more than {limit:,} elements "
-                                   f"(its <use> references repeat what they reference); refused",
-                                   source=self.name, limit=limit)
+                                   f"(its <use> references repeat what they reference; a long element "
+                                   f"counts one per 256 characters); refused", source=self.name, limit=limit)
 
     def _expands_to(self, elem: ET.Element) -> list[ET.Element]:
         """The elements the walk visits right below *elem* (its children, or what a ``<use>`` draws)."""
@@ -332,11 +400,10 @@ class _Parser:
     def _own_style(self, elem: ET.Element, tag: str) -> dict[str, str]:
         attrs = self._attrs(elem)
         own = {k: v for k, v in attrs.items() if k in _PRESENTATION}
-        classes = set(attrs.get("class", "").split())
-        for rule in self.rules:
-            if rule.matches(tag, attrs.get("id"), classes):
-                own.update(rule.declarations)
-        own.update(_declarations(attrs.get("style", "")))
+        if self.rules:
+            own.update(self.sheet.declarations(tag, attrs.get("id"), attrs.get("class", "")))
+        if "style" in attrs:
+            own.update(_declarations(attrs["style"]))
         return own
 
     def _own_state(self, elem: ET.Element, parent: _State, tag: str, extra: Matrix = IDENTITY) -> _State:
@@ -411,10 +478,21 @@ class _Parser:
             n = counters.get(tag, 0)
             counters[tag] = n + 1
             key, has_id = f"{prefix}{tag}[{n}]", False
-        base, k = key, 2
-        while key in self.used_keys:  # duplicate ids are invalid but exist
-            key, k = f"{base}~{k}", k + 1
+        if key in self.used_keys:  # duplicate ids are invalid but exist: id, id~2, id~3, ...
+            base = key
+            k = self.next_suffix.get(base, 2)  # remembered: a thousand equal ids are not a million tries
+            while f"{base}~{k}" in self.used_keys:
+                k += 1
+            self.next_suffix[base] = k + 1
+            key = f"{base}~{k}"
         self.used_keys.add(key)
+        self.key_chars += len(key)
+        if self.key_chars > values.MAX_KEY_CHARS:
+            # Keys grow with <use> nesting (outer/inner/id): long ids repeated by references
+            # could fill memory with names alone.
+            raise SvgTooLargeError(f"{self.name}: the names of the drawing's elements (ids along their <use> "
+                                   f"references) take more than {values.MAX_KEY_CHARS:,} characters; refused",
+                                   source=self.name, limit=values.MAX_KEY_CHARS)
         return key, has_id
 
     def _walk_tree(self, root: ET.Element, state: _State) -> None:

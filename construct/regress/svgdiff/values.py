@@ -45,6 +45,17 @@ def _too_large(message: str, source: str, limit: int) -> SvgTooLargeError:
 #: million elements take about 1 GB to read; our figures hold a few thousand.
 MAX_ELEMENTS = 2_000_000
 
+#: The most characters the names (keys) of a drawing's elements may take together: an element
+#: drawn through ``<use>`` is named by the ids along its references (``outer/inner/id``).
+#: A million elements named as our renderer names them take about 10,000,000.
+MAX_KEY_CHARS = 200_000_000
+
+#: The most checks of a style rule against an element a drawing may take (a few seconds of work).
+#: Rules are looked up by the id, class or tag they need and each look is worked out once, so our
+#: drawings take a few hundred; only a sheet with a rule for every one of many different elements
+#: comes near.
+CSS_MATCH_BUDGET = 10_000_000
+
 for _cls in (SvgFormatError, SvgTooLargeError):
     _cls.__module__ = "construct.regress.svgdiff"  # raised and documented as the package's own
 del _cls

@@ -12,7 +12,8 @@ from typing import Any
 
 import tinycss2.color4
 
-from .values import _NUMBER, _UNITS
+from . import values
+from .values import SvgTooLargeError, _NUMBER, _UNITS
 
 # --------------------------------------------------------------------------- colours and styles
 
@@ -166,3 +167,58 @@ def _parse_css(text: str, order_start: int = 0) -> tuple[list[_CssRule], list[tu
     rules.sort(key=lambda r: r.specificity)
     canon.sort()
     return rules, canon
+
+
+class RuleIndex:
+    """The rules of the style sheets by the id, class or tag they need, and what they give each look.
+
+    An element meets only the rules that name its id, one of its classes or its
+    tag (and the universal ones), and elements that look alike to the sheet
+    (tag, classes, an id no rule names) share one answer: a drawing of a million
+    elements and a few classes matches a few times.  The checks of rules
+    against elements are counted; past :data:`CSS_MATCH_BUDGET` (a hostile
+    sheet: a rule per element, every element different) the drawing is refused.
+    """
+
+    def __init__(self, rules: list[_CssRule], name: str):
+        self.name = name
+        self.by_id: dict[str, list[_CssRule]] = {}
+        self.by_class: dict[str, list[_CssRule]] = {}
+        self.by_tag: dict[str, list[_CssRule]] = {}
+        self.anywhere: list[_CssRule] = []
+        for rule in rules:  # in specificity order; each rule filed under one thing it needs
+            if rule.ids:
+                self.by_id.setdefault(rule.ids[0], []).append(rule)
+            elif rule.classes:
+                self.by_class.setdefault(rule.classes[0], []).append(rule)
+            elif rule.tag is not None:
+                self.by_tag.setdefault(rule.tag, []).append(rule)
+            else:
+                self.anywhere.append(rule)
+        self.looks: dict[tuple[str, str | None, str], dict[str, str]] = {}
+        self.checks = 0
+
+    def declarations(self, tag: str, elem_id: str | None, classes: str) -> dict[str, str]:
+        look = (tag, elem_id if elem_id in self.by_id else None, classes)
+        got = self.looks.get(look)
+        if got is None:
+            got = self.looks[look] = self._work_out(tag, look[1], set(classes.split()))
+        return got
+
+    def _work_out(self, tag: str, elem_id: str | None, classes: set[str]) -> dict[str, str]:
+        candidates = list(self.anywhere)
+        candidates += self.by_tag.get(tag, ())
+        if elem_id is not None:
+            candidates += self.by_id.get(elem_id, ())
+        for c in classes:
+            candidates += self.by_class.get(c, ())
+        self.checks += len(candidates)
+        if self.checks > values.CSS_MATCH_BUDGET:
+            raise SvgTooLargeError(f"{self.name}: applying the style sheets takes more than "
+                                   f"{values.CSS_MATCH_BUDGET:,} rule checks; refused",
+                                   source=self.name, limit=values.CSS_MATCH_BUDGET)
+        out: dict[str, str] = {}
+        for rule in sorted(candidates, key=lambda r: r.specificity):
+            if rule.matches(tag, elem_id, classes):
+                out.update(rule.declarations)
+        return out

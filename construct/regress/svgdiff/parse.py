@@ -20,7 +20,7 @@ import defusedxml.ElementTree as SafeET
 from . import values
 from .values import SvgFormatError, SvgTooLargeError, _LENGTH_RE, _UNITS, _fmt, _numbers, _show, _tokens
 from .geometry import IDENTITY, Matrix, Point, _apply, _arc_centre, _det, _ellipse_axes, _mul, _parse_path, _scale, parse_transform
-from .css import _CssRule, _GROUP_EFFECTS, _INITIAL, _PRESENTATION, _SCALED, _declarations, _parse_css, _style_value, normalise_colour
+from .css import RuleIndex, _CssRule, _GROUP_EFFECTS, _INITIAL, _PRESENTATION, _SCALED, _declarations, _parse_css, _style_value, normalise_colour
 
 SVG_NS = "http://www.w3.org/2000/svg"
 XLINK_NS = "http://www.w3.org/1999/xlink"
@@ -172,61 +172,6 @@ class _State:
     step: int | None = None  # from the nearest ancestor with data-step
 
 
-class _RuleIndex:
-    """The rules of the style sheets by the id, class or tag they need, and what they give each look.
-
-    An element meets only the rules that name its id, one of its classes or its
-    tag (and the universal ones), and elements that look alike to the sheet
-    (tag, classes, an id no rule names) share one answer: a drawing of a million
-    elements and a few classes matches a few times.  The checks of rules
-    against elements are counted; past :data:`CSS_MATCH_BUDGET` (a hostile
-    sheet: a rule per element, every element different) the drawing is refused.
-    """
-
-    def __init__(self, rules: list[_CssRule], name: str):
-        self.name = name
-        self.by_id: dict[str, list[_CssRule]] = {}
-        self.by_class: dict[str, list[_CssRule]] = {}
-        self.by_tag: dict[str, list[_CssRule]] = {}
-        self.anywhere: list[_CssRule] = []
-        for rule in rules:  # in specificity order; each rule filed under one thing it needs
-            if rule.ids:
-                self.by_id.setdefault(rule.ids[0], []).append(rule)
-            elif rule.classes:
-                self.by_class.setdefault(rule.classes[0], []).append(rule)
-            elif rule.tag is not None:
-                self.by_tag.setdefault(rule.tag, []).append(rule)
-            else:
-                self.anywhere.append(rule)
-        self.looks: dict[tuple[str, str | None, str], dict[str, str]] = {}
-        self.checks = 0
-
-    def declarations(self, tag: str, elem_id: str | None, classes: str) -> dict[str, str]:
-        look = (tag, elem_id if elem_id in self.by_id else None, classes)
-        got = self.looks.get(look)
-        if got is None:
-            got = self.looks[look] = self._work_out(tag, look[1], set(classes.split()))
-        return got
-
-    def _work_out(self, tag: str, elem_id: str | None, classes: set[str]) -> dict[str, str]:
-        candidates = list(self.anywhere)
-        candidates += self.by_tag.get(tag, ())
-        if elem_id is not None:
-            candidates += self.by_id.get(elem_id, ())
-        for c in classes:
-            candidates += self.by_class.get(c, ())
-        self.checks += len(candidates)
-        if self.checks > values.CSS_MATCH_BUDGET:
-            raise SvgTooLargeError(f"{self.name}: applying the style sheets takes more than "
-                                   f"{values.CSS_MATCH_BUDGET:,} rule checks; refused",
-                                   source=self.name, limit=values.CSS_MATCH_BUDGET)
-        out: dict[str, str] = {}
-        for rule in sorted(candidates, key=lambda r: r.specificity):
-            if rule.matches(tag, elem_id, classes):
-                out.update(rule.declarations)
-        return out
-
-
 #: One level of the walk: the children still to visit, their inherited state, key prefix, key counters
 #: and ``<use>`` depth.
 _Frame = tuple[Any, _State, str, dict[str, int], int]
@@ -261,7 +206,7 @@ class _Parser:
                 self.rules.extend(rules)
                 self.stylesheet.extend(canon)
         self.rules.sort(key=lambda r: r.specificity)
-        self.sheet = _RuleIndex(self.rules, self.name)
+        self.sheet = RuleIndex(self.rules, self.name)
         self.shapes: list[Shape] = []
         self.used_keys: set[str] = set()
         self.next_suffix: dict[str, int] = {}

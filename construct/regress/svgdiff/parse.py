@@ -257,9 +257,11 @@ class _Parser:
         Counted before anything is worked out, each element once: what an element
         expands to is its weight (:func:`_weight`: one, more for a long one) plus
         what its children expand to, and a ``<use>`` expands to what it references
-        (remembered, so a reference used a million times is counted once).  The count follows the walk exactly: what the walk skips
-        (``<defs>``, a dangling reference) counts one.  A reference cycle is
-        refused here too.
+        (remembered, so a reference used a million times is counted once).  The
+        count follows the walk: what the walk skips (``<defs>``, a dangling
+        reference) counts its own weight only.  A reference cycle is refused here
+        too.  Without any ``<use>`` there is nothing to count: the walk visits each
+        element at most once, and :func:`_read_tree` bounded their number.
         """
         limit = values.MAX_ELEMENTS
         if next(self.root.iter(f"{{{SVG_NS}}}use"), None) is None and next(self.root.iter("use"), None) is None:

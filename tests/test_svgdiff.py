@@ -413,3 +413,198 @@ def test_stylesheet_rules_apply_and_reformatting_them_is_equal():
     # The rule reaches the element: same as writing the presentation attributes directly.
     c = svg('<style>.k{stroke:#000;stroke-width:0.50}</style><line id="g" class="k" x2="1" stroke-width="2"/>')
     assert parse_svg(a).shapes[0].style == parse_svg(c).shapes[0].style
+
+
+# --------------------------------------------------------------------------- hostile drawings
+# Each case runs the command line in a fresh interpreter under a time bound the harness enforces
+# (subprocess timeout): a hang fails the test instead of stalling the suite.  The bound is generous
+# (the cases take a second or a few here); what it catches is a read that goes on for minutes.
+
+import os  # noqa: E402
+import subprocess  # noqa: E402
+import sys  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+import construct  # noqa: E402
+from construct.regress.svgdiff import MAX_ELEMENTS, SvgTooLargeError  # noqa: E402
+from construct.regress.svgdiff import values as svgvalues  # noqa: E402
+
+HARNESS_BOUND_S = 120
+ROOT = Path(construct.__file__).resolve().parent.parent
+
+
+def run_construct(*args: str, code: str | None = None) -> subprocess.CompletedProcess:
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")]))
+    argv = [sys.executable, "-c", code, *args] if code else [sys.executable, "-m", "construct", *args]
+    return subprocess.run(argv, capture_output=True, text=True, timeout=HARNESS_BOUND_S, env=env, cwd=ROOT)
+
+
+def doubling_bomb(levels: int = 24) -> str:
+    """Level k holds two <use> of level k - 1: the last level draws 2**levels circles from a 1.8 KB file."""
+    chain = "".join(f'<g id="a{k}"><use xlink:href="#a{k - 1}"/><use xlink:href="#a{k - 1}" x="1"/></g>'
+                    for k in range(1, levels + 1))
+    return svg(f'<defs><circle id="a0" r="1"/>{chain}</defs><use xlink:href="#a{levels}"/>')
+
+
+def nested_groups(depth: int, r: float = 1) -> str:
+    return svg("<g>" * depth + f'<circle id="deepest" r="{r}"/>' + "</g>" * depth)
+
+
+def test_the_doubling_bomb_is_small_and_expands_past_the_limit():
+    text = doubling_bomb()
+    assert len(text) < 2000 and 2 ** 24 > MAX_ELEMENTS  # the premise: a small file, more than the bound
+    with pytest.raises(SvgTooLargeError) as caught:
+        parse_svg(text, name="bomb.svg")
+    e = caught.value
+    assert isinstance(e, ConstructError) and e.source == "bomb.svg" and e.limit == MAX_ELEMENTS
+    assert "bomb.svg" in str(e) and f"{MAX_ELEMENTS:,}" in str(e)
+    # Below the bound the same structure is drawn in full: 2**10 circles.
+    assert len(parse_svg(doubling_bomb(10)).shapes) == 2 ** 10
+
+
+def test_the_doubling_bomb_is_refused_by_diff_with_one_line_and_exit_2(tmp_path):
+    bomb, plain = tmp_path / "bomb.svg", tmp_path / "plain.svg"
+    bomb.write_text(doubling_bomb(), encoding="utf-8")
+    plain.write_text(GOLDEN, encoding="utf-8")
+    for a, b in ((bomb, plain), (plain, bomb)):
+        done = run_construct("diff", str(a), str(b))
+        assert done.returncode == 2, done.stderr
+        assert done.stdout == "" and len(done.stderr.splitlines()) == 1, done.stderr
+        assert "expands to more than" in done.stderr and str(bomb) in done.stderr
+
+
+VERIFY_WITH_A_COPIED_REBUILD = """
+import shutil, sys
+import construct.regress.verify as verify
+from construct.cli import main
+golden, rebuilt = sys.argv[1], sys.argv[2]
+verify.default_builder = lambda out: shutil.copytree(rebuilt, out)
+sys.exit(main(["verify", "--gallery", golden]))
+"""
+
+
+def test_a_bomb_among_the_goldens_is_refused_by_verify_with_one_line_and_exit_2(tmp_path):
+    golden, rebuilt = tmp_path / "gallery", tmp_path / "rebuilt"
+    for tree, text in ((golden, doubling_bomb()), (rebuilt, GOLDEN)):
+        (tree / "crank-6").mkdir(parents=True)
+        (tree / "crank-6" / "final.svg").write_text(text, encoding="utf-8")
+    done = run_construct(str(golden), str(rebuilt), code=VERIFY_WITH_A_COPIED_REBUILD)
+    assert done.returncode == 2, done.stderr
+    assert len(done.stderr.splitlines()) == 1 and "expands to more than" in done.stderr, done.stderr
+    assert (golden / "crank-6" / "final.svg").read_text(encoding="utf-8") == doubling_bomb()  # left alone
+
+
+@pytest.mark.parametrize("depth", [500, 100_000])
+def test_deeply_nested_groups_are_read_without_recursion(tmp_path, depth):
+    # Python's recursion limit is 1,000: a recursive walk fails at the first case already.
+    a, b = tmp_path / "a.svg", tmp_path / "b.svg"
+    a.write_text(nested_groups(depth), encoding="utf-8")
+    b.write_text(nested_groups(depth, r=2), encoding="utf-8")
+    same = run_construct("diff", str(a), str(a))
+    assert (same.returncode, same.stderr) == (0, ""), same.stderr
+    assert "equal (1 element)" in same.stdout
+    changed = run_construct("diff", str(a), str(b), "--json")
+    assert changed.returncode == 1, changed.stderr
+    (change,) = json.loads(changed.stdout)["changes"]
+    assert (change["kind"], change["key"], change["magnitude"]) == ("resized", "deepest", 1.0)
+
+
+def test_deep_definitions_and_text_are_read_without_recursion(tmp_path):
+    depth = 100_000
+    deep_defs = svg('<defs><marker id="m">' + "<g>" * depth + "</g>" * depth + "</marker></defs>")
+    deep_text = svg('<text x="1">' + "<tspan>K" * depth + "</tspan>" * depth + "</text>")
+    for name, text in (("defs.svg", deep_defs), ("text.svg", deep_text)):
+        path = tmp_path / name
+        path.write_text(text, encoding="utf-8")
+        done = run_construct("diff", str(path), str(path))
+        assert (done.returncode, done.stderr) == (0, ""), done.stderr
+
+
+def test_the_element_count_is_bounded_as_the_file_is_read(monkeypatch):
+    monkeypatch.setattr(svgvalues, "MAX_ELEMENTS", 100)
+    circles = '<circle r="1"/>' * 100  # with the root, 101 elements
+    with pytest.raises(SvgTooLargeError, match="holds more than 100 elements") as caught:
+        parse_svg(svg(circles), name="many.svg")
+    assert (caught.value.source, caught.value.limit) == ("many.svg", 100)
+    # '<' in comments pass the quick bound of the bytes; the elements are then counted as read: 100 fit.
+    fits = svg("<!--" + "<" * 500 + "-->" + '<circle r="1"/>' * 99)
+    assert len(parse_svg(fits).shapes) == 99
+
+
+def test_reference_cycles_and_entity_declarations_are_bad_input():
+    with pytest.raises(SvgFormatError, match="cycle"):
+        parse_svg(svg('<g id="loop"><circle r="1"/><use href="#loop"/></g>'))
+    laughs = ('<?xml version="1.0"?><!DOCTYPE svg [<!ENTITY lol "lol"><!ENTITY lol2 "&lol;&lol;&lol;">]>'
+              + svg("<text>&lol2;</text>"))
+    for spelled in (laughs, laughs.encode("utf-8"), laughs.encode("utf-16")):  # UTF-16 hides b"<!DOCTYPE"
+        with pytest.raises(SvgFormatError, match="entity"):
+            parse_svg(spelled)
+    # A document type without entities (as editors write it) is read.
+    doctype = '<!DOCTYPE svg PUBLIC "-//W3C//DTD SVG 1.1//EN" "http://www.w3.org/Graphics/SVG/1.1/DTD/svg11.dtd">'
+    assert len(parse_svg(doctype + svg('<circle r="1"/>')).shapes) == 1
+
+
+@pytest.mark.parametrize("a, b", [
+    ('<circle r="1" fill="darkslategray"/>', '<circle r="1" fill="#2f4f4f"/>'),  # CSS named colour
+    ('<circle r="1" fill="rebeccapurple"/>', '<circle r="1" fill="rgb(102 51 153)"/>'),  # CSS Color 4 syntax
+    ('<circle r="1" fill="hsl(120deg 100% 25%)"/>', '<circle r="1" fill="#008000"/>'),
+    ('<circle r="1" fill="hwb(0 0% 0%)"/>', '<circle r="1" fill="red"/>'),
+])
+def test_colours_in_every_css_spelling_are_equal(a, b):
+    assert diff_svg(svg(a), svg(b)).equal, diff_svg(svg(a), svg(b)).report()
+
+
+def test_the_diff_does_not_import_matplotlib(tmp_path):
+    path = tmp_path / "a.svg"
+    path.write_text(svg('<circle r="1" fill="darkslategray" stroke="papayawhip"/>'), encoding="utf-8")
+    code = ("import sys; from construct.cli import main; code = main(['diff', sys.argv[1], sys.argv[1]]); "
+            "print('matplotlib' in sys.modules); sys.exit(code)")
+    done = run_construct(str(path), code=code)
+    assert done.returncode == 0 and done.stdout.splitlines()[-1] == "False", done.stdout + done.stderr
+
+
+def test_a_style_sheet_with_a_rule_for_every_element_is_refused_past_the_budget(monkeypatch):
+    # Every rule needs class "a" and one more; every element has "a" and its own: rules x elements checks.
+    n = 300
+    sheet = "".join(f".a.b{k}{{stroke-width:{k + 2}}}" for k in range(n))
+    lines = "".join(f'<line class="a b{k}" x2="{k}"/>' for k in range(n))
+    drawing = svg(f"<style>{sheet}</style>{lines}")
+    shapes = parse_svg(drawing).shapes  # within the default budget: each line gets its own rule
+    assert [dict(s.style)["stroke-width"] for s in shapes[:3]] == [(2.0,), (3.0,), (4.0,)]
+    monkeypatch.setattr(svgvalues, "CSS_MATCH_BUDGET", n * n // 2)
+    with pytest.raises(SvgTooLargeError, match="rule checks"):
+        parse_svg(drawing, name="sheet.svg")
+
+
+def test_a_long_element_repeated_by_references_counts_by_its_length(monkeypatch):
+    # 2,000 points (about 16 KB) drawn 8 times through doubling <use>: 8 polylines, 128,000 characters.
+    points = " ".join(f"{k},{k % 7}" for k in range(2000))
+    chain = "".join(f'<g id="p{k}"><use href="#p{k - 1}"/><use href="#p{k - 1}"/></g>' for k in range(1, 4))
+    drawing = svg(f'<defs><polyline id="p0" points="{points}"/>{chain}</defs><use href="#p3"/>')
+    assert len(parse_svg(drawing).shapes) == 8
+    monkeypatch.setattr(svgvalues, "MAX_ELEMENTS", 200)  # 8 polylines, but 8 x 16 KB / 256 = 500 units
+    with pytest.raises(SvgTooLargeError, match="expands to more than 200 elements"):
+        parse_svg(drawing)
+
+
+def test_names_along_references_are_bounded(monkeypatch):
+    # Each level's key is the path of ids to it: 10 levels of 1,000-character ids, 1,024 circles.
+    long = "x" * 1000
+    chain = "".join(f'<g id="{long}{k}"><use href="#{long}{k - 1}"/><use href="#{long}{k - 1}"/></g>'
+                    for k in range(1, 11))
+    drawing = svg(f'<defs><circle id="{long}0" r="1"/>{chain}</defs><use href="#{long}10"/>')
+    assert len(parse_svg(drawing).shapes) == 1024
+    monkeypatch.setattr(svgvalues, "MAX_KEY_CHARS", 1_000_000)  # the circles' names alone: 1024 x 10,000
+    with pytest.raises(SvgTooLargeError, match="names"):
+        parse_svg(drawing)
+
+
+def test_a_hundred_thousand_equal_ids_are_named_in_linear_time(tmp_path):
+    # The duplicates are named id, id~2, id~3, ...; trying every suffix from 2 each time was quadratic.
+    a, b = tmp_path / "a.svg", tmp_path / "b.svg"
+    a.write_text(svg('<circle id="P" r="1"/>' * 100_000), encoding="utf-8")
+    b.write_text(svg('<circle id="P" r="1"/>' * 99_999 + '<circle id="P" r="2"/>'), encoding="utf-8")
+    done = run_construct("diff", str(a), str(b), "--json")
+    assert done.returncode == 1, done.stderr
+    (change,) = json.loads(done.stdout)["changes"]
+    assert (change["kind"], change["key"]) == ("resized", "P~100000")

@@ -23,6 +23,20 @@ order-preserving alignment of equal elements, then by key, and what is left
 by kind and nearest geometry (a renamed element is "renamed", not
 missing + extra).  Every change says how its element was matched.
 
+Hostile drawings are bounded: the XML is read by :mod:`defusedxml` (no entity
+declarations, no external references), the tree is walked on a stack of its
+own (100,000 nested groups are no deeper for Python than one), and a drawing
+that holds or expands to more than :data:`MAX_ELEMENTS` elements -- ``<use>``
+references that double at every level -- is refused before it is worked out:
+
+>>> bomb = ('<svg xmlns="http://www.w3.org/2000/svg"><defs><circle id="a0" r="1"/>'
+...         + "".join(f'<g id="a{i}"><use href="#a{i - 1}"/><use href="#a{i - 1}"/></g>' for i in range(1, 25))
+...         + '</defs><use href="#a24"/></svg>')
+>>> parse_svg(bomb)
+Traceback (most recent call last):
+...
+construct.regress.svgdiff.SvgTooLargeError: <string>: the drawing expands to more than 2,000,000 elements (its <use> references repeat what they reference; ...); refused
+
 The package in four steps, each a module: :mod:`.parse` reads a document into
 shapes (with :mod:`.geometry` for transforms and paths, :mod:`.css` for
 colours and style sheets, :mod:`.values` for numbers), :mod:`.match` pairs the
@@ -36,9 +50,10 @@ from .geometry import parse_transform
 from .match import MATCH_BUDGET
 from .parse import SVG_NS, XLINK_NS, Drawing, Shape, parse_svg
 from .report import CHANGE_KINDS, SvgChange, SvgDiff, changes_by_step, diff_svg, iter_changes
-from .values import DEFAULT_TOLERANCE, SvgFormatError
+from .values import DEFAULT_TOLERANCE, MAX_ELEMENTS, SvgFormatError, SvgTooLargeError
 
-__all__ = ["DEFAULT_TOLERANCE", "SvgChange", "SvgDiff", "SvgFormatError", "diff_svg", "parse_svg",
+__all__ = ["DEFAULT_TOLERANCE", "MAX_ELEMENTS", "SvgChange", "SvgDiff", "SvgFormatError", "SvgTooLargeError",
+           "diff_svg", "parse_svg",
            "changes_by_step", "iter_changes", "Drawing", "Shape", "normalise_colour", "parse_transform",
            "MATCH_BUDGET", "SVG_NS", "XLINK_NS", "CHANGE_KINDS"]
 

@@ -5,30 +5,33 @@ Part of :mod:`construct.regress.svgdiff`.
 
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass
 from typing import Any
 
-from .values import _NUMBER, _UNITS
+import tinycss2.color4
+
+from . import values
+from .values import SvgTooLargeError, _NUMBER, _UNITS
 
 # --------------------------------------------------------------------------- colours and styles
 
-_BASIC_COLOURS = {
-    "black": "#000000", "silver": "#c0c0c0", "gray": "#808080", "grey": "#808080", "white": "#ffffff",
-    "maroon": "#800000", "red": "#ff0000", "purple": "#800080", "fuchsia": "#ff00ff", "magenta": "#ff00ff",
-    "green": "#008000", "lime": "#00ff00", "olive": "#808000", "yellow": "#ffff00", "navy": "#000080",
-    "blue": "#0000ff", "teal": "#008080", "aqua": "#00ffff", "cyan": "#00ffff", "orange": "#ffa500",
-}
 _COLOUR_PROPERTIES = {"fill", "stroke", "color", "stop-color", "flood-color", "lighting-color"}
+_HEX_RE = re.compile(r"#(?:[0-9a-f]{3,4}|[0-9a-f]{6}|[0-9a-f]{8})")
 
 
 def normalise_colour(raw: str, current: str = "#000000") -> str:
     """One spelling per colour: ``#rrggbb`` (``#rrggbbaa`` when not opaque), ``none`` or the text.
 
+    Hex is read here (nearly every colour of our drawings); names and functions
+    (``rgb()``, ``hsl()``, CSS Color 4's ``hwb()``, ``lab()``, ...) by tinycss2,
+    once per spelling.
+
     >>> {normalise_colour(c) for c in ("#000", "#000000", "black", "rgb(0,0,0)", "rgb(0%, 0%, 0%)", "hsl(0, 0%, 0%)")}
     {'#000000'}
-    >>> normalise_colour("rgba(255, 0, 0, 0.5)"), normalise_colour("URL(#Grad)")
-    ('#ff000080', 'url(#Grad)')
+    >>> normalise_colour("rgba(255, 0, 0, 0.5)"), normalise_colour("URL(#Grad)"), normalise_colour("RebeccaPurple")
+    ('#ff000080', 'url(#Grad)', '#663399')
     """
     s = raw.strip()
     low = s.lower()
@@ -36,48 +39,29 @@ def normalise_colour(raw: str, current: str = "#000000") -> str:
         return "none"
     if low == "currentcolor":
         return current
-    if re.fullmatch(r"#[0-9a-f]{3,4}", low):
-        return _rgba_hex(*(int(ch * 2, 16) for ch in low[1:]))
-    if re.fullmatch(r"#[0-9a-f]{6}([0-9a-f]{2})?", low):
-        return _rgba_hex(*(int(low[i:i + 2], 16) for i in range(1, len(low), 2)))
-    func = re.fullmatch(r"(rgba?|hsla?)\((.*)\)", low)
-    if func:
-        parts = [p for p in re.split(r"[\s,/]+", func.group(2).strip()) if p]
-        try:
-            return _functional_colour(func.group(1), parts)
-        except (ValueError, IndexError):
-            return low
-    if low in _BASIC_COLOURS:
-        return _BASIC_COLOURS[low]
-    if re.fullmatch(r"[a-z]+", low):
-        from matplotlib.colors import CSS4_COLORS  # the full CSS table, only when needed
+    if _HEX_RE.fullmatch(low):
+        digits = low[1:] if len(low) > 5 else "".join(ch * 2 for ch in low[1:])
+        return _rgba_hex(*(int(digits[i:i + 2], 16) for i in range(0, len(digits), 2)))
+    if low.startswith("url"):
+        return "url" + s[3:]  # references keep their case: ids are case-sensitive
+    return _named_or_function(low)
 
-        if low in CSS4_COLORS:
-            return CSS4_COLORS[low].lower()
+
+@functools.lru_cache(maxsize=1024)
+def _named_or_function(low: str) -> str:
+    """A colour name or function in ``#rrggbb[aa]``; what is no colour stays as written (lower case)."""
+    colour = tinycss2.color4.parse_color(low)
+    if colour is None or isinstance(colour, str):
         return low
-    # url(#id) references keep their case: ids are case-sensitive.
-    return re.sub(r"^url", "url", s, flags=re.I)
+    try:
+        channels = [min(255, max(0, round(255 * v))) for v in (*colour.to("srgb").coordinates, colour.alpha)]
+    except (NotImplementedError, ValueError, ArithmeticError):  # lab() and kin, or a NaN: not converted
+        return low
+    return _rgba_hex(*channels)
 
 
 def _rgba_hex(r: int, g: int, b: int, a: int = 255) -> str:
     return f"#{r:02x}{g:02x}{b:02x}" + ("" if a == 255 else f"{a:02x}")
-
-
-def _functional_colour(name: str, parts: list[str]) -> str:
-    def channel(p: str, full: float) -> float:
-        return float(p[:-1]) / 100 * full if p.endswith("%") else float(p)
-
-    alpha = channel(parts[3], 1.0) if len(parts) > 3 else 1.0
-    if name.startswith("rgb"):
-        rgb = [channel(p, 255.0) for p in parts[:3]]
-    else:
-        h = float(parts[0].removesuffix("deg")) / 360 % 1.0
-        s, lum = channel(parts[1], 1.0), channel(parts[2], 1.0)
-        import colorsys
-
-        rgb = [255 * v for v in colorsys.hls_to_rgb(h, lum, s)]
-    clamp = [min(255, max(0, round(v))) for v in rgb]
-    return _rgba_hex(*clamp, min(255, max(0, round(alpha * 255))))
 
 
 # Presentation attributes that may stand on an element instead of in `style`.
@@ -183,3 +167,58 @@ def _parse_css(text: str, order_start: int = 0) -> tuple[list[_CssRule], list[tu
     rules.sort(key=lambda r: r.specificity)
     canon.sort()
     return rules, canon
+
+
+class RuleIndex:
+    """The rules of the style sheets by the id, class or tag they need, and what they give each look.
+
+    An element meets only the rules that name its id, one of its classes or its
+    tag (and the universal ones), and elements that look alike to the sheet
+    (tag, classes, an id no rule names) share one answer: a drawing of a million
+    elements and a few classes matches a few times.  The checks of rules
+    against elements are counted; past :data:`CSS_MATCH_BUDGET` (a hostile
+    sheet: a rule per element, every element different) the drawing is refused.
+    """
+
+    def __init__(self, rules: list[_CssRule], name: str):
+        self.name = name
+        self.by_id: dict[str, list[_CssRule]] = {}
+        self.by_class: dict[str, list[_CssRule]] = {}
+        self.by_tag: dict[str, list[_CssRule]] = {}
+        self.anywhere: list[_CssRule] = []
+        for rule in rules:  # in specificity order; each rule filed under one thing it needs
+            if rule.ids:
+                self.by_id.setdefault(rule.ids[0], []).append(rule)
+            elif rule.classes:
+                self.by_class.setdefault(rule.classes[0], []).append(rule)
+            elif rule.tag is not None:
+                self.by_tag.setdefault(rule.tag, []).append(rule)
+            else:
+                self.anywhere.append(rule)
+        self.looks: dict[tuple[str, str | None, str], dict[str, str]] = {}
+        self.checks = 0
+
+    def declarations(self, tag: str, elem_id: str | None, classes: str) -> dict[str, str]:
+        look = (tag, elem_id if elem_id in self.by_id else None, classes)
+        got = self.looks.get(look)
+        if got is None:
+            got = self.looks[look] = self._work_out(tag, look[1], set(classes.split()))
+        return got
+
+    def _work_out(self, tag: str, elem_id: str | None, classes: set[str]) -> dict[str, str]:
+        candidates = list(self.anywhere)
+        candidates += self.by_tag.get(tag, ())
+        if elem_id is not None:
+            candidates += self.by_id.get(elem_id, ())
+        for c in classes:
+            candidates += self.by_class.get(c, ())
+        self.checks += len(candidates)
+        if self.checks > values.CSS_MATCH_BUDGET:
+            raise SvgTooLargeError(f"{self.name}: applying the style sheets takes more than "
+                                   f"{values.CSS_MATCH_BUDGET:,} rule checks; refused",
+                                   source=self.name, limit=values.CSS_MATCH_BUDGET)
+        out: dict[str, str] = {}
+        for rule in sorted(candidates, key=lambda r: r.specificity):
+            if rule.matches(tag, elem_id, classes):
+                out.update(rule.declarations)
+        return out

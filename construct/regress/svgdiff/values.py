@@ -18,7 +18,47 @@ class SvgFormatError(ConstructError, ValueError):
     """An input is not a readable SVG drawing (not XML, no <svg> root, malformed geometry)."""
 
 
-SvgFormatError.__module__ = "construct.regress.svgdiff"  # raised and documented as the package's own
+class SvgTooLargeError(SvgFormatError):
+    """A drawing would be larger than the reader's stated limit (:data:`MAX_ELEMENTS` elements).
+
+    Raised before the drawing is worked out, so that an SVG whose ``<use>``
+    references double at every level (a few KB that expand to millions of
+    elements) is refused in a moment instead of read until memory runs out.
+    *source* names the file, *limit* the bound it would pass.
+    """
+
+    def __init__(self, message: str, *, source: str, limit: int):
+        super().__init__(message)
+        self.source = source
+        self.limit = limit
+
+    def __reduce__(self):
+        return (_too_large, (str(self), self.source, self.limit))
+
+
+def _too_large(message: str, source: str, limit: int) -> SvgTooLargeError:
+    return SvgTooLargeError(message, source=source, limit=limit)
+
+
+#: The most elements a drawing may hold, counted after every ``<use>`` is expanded (and, as
+#: parsed, before): twice the largest drawing ``construct bench --diff-million`` reads.  A
+#: million elements take about 1 GB to read; our figures hold a few thousand.
+MAX_ELEMENTS = 2_000_000
+
+#: The most characters the names (keys) of a drawing's elements may take together: an element
+#: drawn through ``<use>`` is named by the ids along its references (``outer/inner/id``).
+#: A million elements named as our renderer names them take about 10,000,000.
+MAX_KEY_CHARS = 200_000_000
+
+#: The most checks of a style rule against an element a drawing may take (a few seconds of work).
+#: Rules are looked up by the id, class or tag they need and each look is worked out once, so our
+#: drawings take a few hundred; only a sheet with a rule for every one of many different elements
+#: comes near.
+CSS_MATCH_BUDGET = 10_000_000
+
+for _cls in (SvgFormatError, SvgTooLargeError):
+    _cls.__module__ = "construct.regress.svgdiff"  # raised and documented as the package's own
+del _cls
 
 
 # --------------------------------------------------------------------------- numbers

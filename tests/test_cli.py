@@ -309,3 +309,22 @@ def test_list_is_an_aligned_table_of_names_and_titles(cli):
     column = {len(l) - len(l[len(l.split()[0]):].lstrip()) for l in lines}
     assert len(column) == 1  # the titles start in one column
     assert all(get(l.split()[0]).title.en in l and len(l) < 100 for l in lines)
+
+
+def test_every_option_has_a_help_line_and_a_placeholder_that_names_its_quantity():
+    import argparse
+
+    from construct.cli.main import build_parser
+
+    parser = build_parser()
+    sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    bare = []
+    for command, p in sub.choices.items():
+        for action in p._actions:
+            if not action.option_strings or isinstance(action, argparse._HelpAction):
+                continue
+            if not action.help:
+                bare.append(f"{command} {action.option_strings[0]}: no help")
+            if action.nargs != 0 and action.choices is None and action.metavar in (None, action.dest.upper()):
+                bare.append(f"{command} {action.option_strings[0]}: placeholder {action.metavar or action.dest.upper()}")
+    assert not bare, bare

@@ -36,21 +36,23 @@ def add_format_option(p: argparse.ArgumentParser, formats: tuple[str, ...] = ("t
 
 
 def add_construction_options(p: argparse.ArgumentParser, *, name_optional: bool = True) -> None:
+    from ..constructions import names
+
     p.add_argument("name", nargs="?" if name_optional else None, metavar="CONSTRUCTION",
-                   help="crank, crank-angle, inertia-curve (see 'construct list')")
+                   help=f"{', '.join(names())} (titles: 'construct list')")
     p.add_argument("--protocol", metavar="FILE", help="replay an exported protocol.json instead of building afresh")
     from ..constructions.domain import ROD_RATIO
 
-    p.add_argument("--rod-ratio", type=_number, metavar="K", help=f"connecting rod length over crank radius, "
+    p.add_argument("--rod-ratio", type=_number, metavar="L/r", help=f"connecting rod length over crank radius, "
                    f"{ROD_RATIO.low:g} <= L/r <= {ROD_RATIO.high:g}")
     p.add_argument("--parts", type=_whole, metavar="N", help="parts of the semicircle (1..3600)")
-    p.add_argument("--method", metavar="M", help="division method: auto, exact, durer, neusis, dividers")
-    p.add_argument("--divisions", type=_whole, metavar="M", help="divisions of the stroke (crank-angle)")
-    p.add_argument("--radius", type=_number, metavar="R", help="crank radius r in drawing units")
+    p.add_argument("--method", metavar="DIVISION", help="how the semicircle is divided: auto, exact, durer, neusis, dividers")
+    p.add_argument("--divisions", type=_whole, metavar="N", help="divisions of the stroke (crank-angle)")
+    p.add_argument("--radius", type=_number, metavar="r", help="crank radius r in drawing units")
     p.add_argument("--pressure-ratio", type=_number, metavar="F/f", help="F/f of the inertia pressures")
     p.add_argument("--infinite-rod", action="store_true", default=None,
                    help="an infinitely long connecting rod (instead of --rod-ratio)")
-    p.add_argument("--fluctuation", type=_number, metavar="K", help="Qr/((m1+m2) v1^2) of the two cranks")
+    p.add_argument("--fluctuation", type=_number, metavar="k", help="k = Qr/((m1+m2) v1²) of the two cranks")
     p.add_argument("--magnify", type=_number, metavar="G", help="magnification of the speed deviations (two-cranks)")
     p.add_argument("--given", action="append", default=[], metavar="NAME=VALUE",
                    help="set a given of a --protocol by its own name (repeatable), e.g. --given s=10")
@@ -60,6 +62,19 @@ def add_construction_options(p: argparse.ArgumentParser, *, name_optional: bool 
 PARAM_OPTIONS = {"rod_ratio": "rod_ratio", "parts": "parts", "method": "method", "divisions": "divisions",
                  "radius": "r", "pressure_ratio": "pressure_ratio", "infinite_rod": "infinite_rod",
                  "fluctuation": "fluctuation", "magnify": "magnify"}
+
+
+#: The placeholder of each construction parameter without an option of its own: the book's symbol or unit.
+SYMBOLS = {"admission": "P", "back_pressure": "P0", "clearance": "s0/s", "compression": "s3/s",
+           "crank_radius": "R", "filling": "s1/s", "force": "baumann|unit", "force_unit": "LENGTH/kg",
+           "kappa": "kappa", "piston_area": "F", "pressure_unit": "LENGTH/at", "rod_length": "L", "rpm": "n",
+           "scale": "LENGTH/m", "weight": "G"}
+
+#: Help of parameters whose construction does not give one.
+HELPS = {"kappa": "Baumann's kappa = P/B_max, the piston force over the largest acceleration force "
+                  "(tangential-pressure: 8 or 2)",
+         "force": "the piston force: baumann (the indicator diagram less the acceleration force) or unit "
+                  "(a unit force; tangential-pressure)"}
 
 
 def _generic_params() -> dict[str, tuple[Any, str]]:
@@ -76,18 +91,19 @@ def _generic_params() -> dict[str, tuple[Any, str]]:
                 continue
             kind = _whole if isinstance(default, int) and not isinstance(default, bool) else (
                 _number if isinstance(default, float) else str)
-            out[key] = (kind, helps.get(key, f"{key.replace('_', ' ')} (default {default!r} in {name})"))
+            out[key] = (kind, helps.get(key) or HELPS.get(key, f"{key.replace('_', ' ')} (default {default!r} in {name})"))
     return out
 
 
 def _add_generic_options(p: argparse.ArgumentParser) -> None:
     for key, (kind, text) in sorted(_generic_params().items()):
-        p.add_argument(f"--{key.replace('_', '-')}", dest=key, type=kind, metavar=key.upper(), help=text)
+        p.add_argument(f"--{key.replace('_', '-')}", dest=key, type=kind, metavar=SYMBOLS.get(key, key.upper()),
+                       help=text)
 
 
 def given_options(args: argparse.Namespace) -> dict[str, Any]:
     if getattr(args, "infinite_rod", None) and getattr(args, "rod_ratio", None) is not None:
-        raise InvalidParameter("give either --rod-ratio K or --infinite-rod, not both")
+        raise InvalidParameter("give either --rod-ratio L/r or --infinite-rod, not both")
     out = {}
     options = {**PARAM_OPTIONS, **{key: key for key in _generic_params()}}
     for opt, param in options.items():

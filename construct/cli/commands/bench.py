@@ -14,7 +14,8 @@ HELP = ("benchmark building, replaying and sweeping the crank construction "
 
 def add_arguments(p) -> None:
     add_format_option(p)
-    p.add_argument("--parts", type=int, action="append", help="cases to run (dividers) instead of the standard set")
+    p.add_argument("--parts", type=int, action="append", metavar="N",
+                   help="cases to run (dividers, N parts; repeat) instead of the standard set")
     p.add_argument("--outputs", action="store_true",
                    help="time the outputs instead: replay at 360 and 1440 parts, gallery, verify (about a minute)")
     p.add_argument("--diff", action="store_true",

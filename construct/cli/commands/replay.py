@@ -15,7 +15,7 @@ HELP = ("build a construction and write DIR/final.svg (every step a layer), DIR/
 def add_arguments(p) -> None:
     add_construction_options(p)
     p.add_argument("--out", required=True, metavar="DIR", help="output folder")
-    p.add_argument("--style", default="plain", help="drawing style (plain, historical, teaching)")
+    p.add_argument("--style", default="plain", metavar="plain|historical|teaching", help="drawing style (default plain)")
     p.add_argument("--frames", default="none", choices=FRAME_MODES,
                    help="standalone frames besides the layered final.svg: none (default), a frame per step (all), "
                         "per group (groups); auto: all up to 1500 steps")

@@ -20,17 +20,21 @@ HELP = ("print a table (piston-path, crank-angle, acceleration, characteristic-p
 
 def add_arguments(p) -> None:
     p.add_argument("table", metavar="TABLE", help=", ".join(TABLES))
-    p.add_argument("--rod-ratio", type=_number, action="append", metavar="K", help="L/r (repeat for acceleration)")
-    p.add_argument("--parts", type=_whole, default=18, metavar="N")
-    p.add_argument("--method", default="auto")
-    p.add_argument("--divisions", type=_whole, default=10, metavar="M")
+    p.add_argument("--rod-ratio", type=_number, action="append", metavar="L/r",
+                   help="rod length over crank radius (repeat for the acceleration table)")
+    p.add_argument("--parts", type=_whole, default=18, metavar="N",
+                   help="parts of the semicircle the table is read off (default 18)")
+    p.add_argument("--method", default="auto", metavar="DIVISION",
+                   help="division of the semicircle: auto, exact, durer, neusis, dividers (default auto)")
+    p.add_argument("--divisions", type=_whole, default=10, metavar="N",
+                   help="divisions of the stroke (crank-angle; default 10, the book's tenths)")
     p.add_argument("--step", type=_number, default=10.0, metavar="DEG", help="angle step of the acceleration table")
     p.add_argument("--weight", type=_number, metavar="G", help="mass-forces: weight of the reciprocating parts, kg")
-    p.add_argument("--rpm", type=_number, metavar="N", help="mass-forces: revolutions per minute")
+    p.add_argument("--rpm", type=_number, metavar="n", help="mass-forces: revolutions per minute")
     p.add_argument("--crank-radius", type=_number, metavar="R", help="mass-forces: crank radius, m")
     p.add_argument("--rod-length", type=_number, metavar="L", help="mass-forces: connecting-rod length, m")
-    p.add_argument("--kz", type=_number, action="append", metavar="KG_CM2", help="allowed stress kz (flywheel; repeat)")
-    p.add_argument("--v", type=_number, action="append", metavar="M_S", help="rim speed v (flywheel; repeat)")
+    p.add_argument("--kz", type=_number, action="append", metavar="kz", help="allowed stress kz in kg/cm² (flywheel; repeat)")
+    p.add_argument("--v", type=_number, action="append", metavar="v", help="rim speed v in m/s (flywheel; repeat)")
     p.add_argument("--infinite-rod", action="store_true", help="an infinitely long rod (speed-fluctuation)")
     add_format_option(p, ("text", "csv", "json"))
     p.add_argument("--plot", metavar="FILE",
@@ -39,7 +43,7 @@ def add_arguments(p) -> None:
 
 def _one_ratio(args) -> float:
     if not args.rod_ratio:
-        raise InvalidParameter(f"table {args.table} needs --rod-ratio K")
+        raise InvalidParameter(f"table {args.table} needs --rod-ratio L/r")
     if len(args.rod_ratio) > 1:
         raise InvalidParameter(f"table {args.table} takes one --rod-ratio (the acceleration table takes several)")
     return args.rod_ratio[0]
@@ -69,7 +73,7 @@ def run(args) -> int:
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args), divisions=args.divisions)
     elif args.table == "acceleration":
         if not args.rod_ratio:
-            raise InvalidParameter("table acceleration needs at least one --rod-ratio K")
+            raise InvalidParameter("table acceleration needs at least one --rod-ratio L/r")
         _check_step(args.step, 180)
         cols, rows = TABLES[args.table](rod_ratios=args.rod_ratio, step=args.step)
     elif args.table == "mass-forces":
@@ -85,7 +89,7 @@ def run(args) -> int:
         cols, rows = TABLES[args.table](kz=args.kz, v=args.v)
     elif args.table == "speed-fluctuation":
         if args.infinite_rod and args.rod_ratio:
-            raise InvalidParameter("give either --rod-ratio K or --infinite-rod, not both")
+            raise InvalidParameter("give either --rod-ratio L/r or --infinite-rod, not both")
         _check_step(args.step, 90)
         cols, rows = TABLES[args.table](rod_ratio=None if args.infinite_rod else _one_ratio(args), step=args.step)
     else:

@@ -88,7 +88,7 @@ _BOOK_METHODS = {
     "neusis": ("Einschiebung (Archimedes)", "neusis (Archimedes)"),
     "dividers": ("Teilung mit dem Stechzirkel", "division with the dividers by trial"),
 }
-_HIDDEN = ("givens", "group_titles", "requested_method", "plate")
+_HIDDEN = ("givens", "group_titles", "requested_method", "plate", "captions")
 
 
 def _num(v) -> str:
@@ -187,7 +187,7 @@ def write_outputs(stage: Path, construction: Construction | None, figure: Figure
     if "player" in outputs:
         givens = {**dict(figure.replay.givens),
                   **{k: v for k, v in figure.params.items()
-                     if k not in ("givens", "group_titles", "requested_method", "plate")}}
+                     if k not in _HIDDEN}}
         write_text(stage / "player.html", player_html(scene, st, givens=givens, drawing=drawing))
     if "storyboard" in outputs:
         write_text(stage / "storyboard.svg", storyboard_svg(drawing))  # type: ignore[arg-type]

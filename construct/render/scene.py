@@ -125,8 +125,11 @@ class Scene:
         cached = self._captions[k - 1]
         if cached is None:
             s = self.steps[k - 1]
-            cached = self._captions[k - 1] = (self.readable(s.caption.de, "de", s.outputs),
-                                              self.readable(s.caption.en, "en", s.outputs))
+            if self.params.get("captions") == "letters":  # written in the figure's letters when built
+                cached = self._captions[k - 1] = (displayed(s.caption.de), displayed(s.caption.en))
+            else:  # a protocol from an older file: read here
+                cached = self._captions[k - 1] = (self.readable(s.caption.de, "de", s.outputs),
+                                                  self.readable(s.caption.en, "en", s.outputs))
         return cached
 
     # -- what a teaching frame shows at strength ----------------------------------------

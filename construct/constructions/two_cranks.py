@@ -796,8 +796,8 @@ def speed_fluctuation_rows(*, rod_ratio: float | None, step_deg: float = 15.0) -
 
 TWO_CRANKS = register(Construction(
     name="two-cranks",
-    title=Caption("Zwei Kurbeln unter 90°: Geschwindigkeitsschwankung (Fig. 566)",
-                  "Two cranks at 90 degrees: speed fluctuation (Fig. 566)"),
+    title=Caption("Zwei Kurbeln unter 90°: Geschwindigkeitsschwankung",
+                  "Two cranks at 90°: speed fluctuation"),
     source="seed 002, § 146-147, Fig. 566",
     build=build_two_cranks,
     checks=two_cranks_checks,

@@ -397,6 +397,8 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 continue
             mid = f"s{s.index:04d}-{_safe_id(name)}"
             label = labels.get(name)
+            if "unlettered" in (looks or {}).get(name, "").split():
+                label = None  # the plate letters it otherwise (an abscissa, as the book does)
             common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
                           group=s.group, label=label, look=(looks or {}).get(name, ""))
             if isinstance(obj, Point):

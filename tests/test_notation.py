@@ -191,3 +191,13 @@ def test_the_svg_keeps_the_provenance_for_the_machine(tmp_path):
     # ... and the visible caption does not
     caps = " ".join(t.text or "" for t in root.iter(f"{ns}text") if "cap" in (t.get("class") or ""))
     assert "Baumann" in caps and not REPOSITORY_NAMES.search(caps)
+
+
+@pytest.mark.parametrize("name, params", PLAN, ids=IDS)
+def test_group_titles_name_the_figures_letters(name, params):
+    from construct.render.svg import group_caption
+
+    sc = build_scene(_figure(name, params))
+    bad = {group_caption(sc, k) for k in range(1, len(sc.steps) + 1)}
+    bad = sorted(t for t in bad if DOTTED.search(t) or PYTHON_VALUE.search(t))
+    assert not bad, bad[:3]

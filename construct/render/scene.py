@@ -114,6 +114,8 @@ class Scene:
         for m in self.marks:
             s = makers[m.name]
             objects[m.name] = (kinds.get(m.kind, m.kind), m.label, s.op, tuple(s.inputs))
+        for name, s in makers.items():  # what is not drawn (a compass opening J.h1) goes by its short name
+            objects.setdefault(name, ("length", None, s.op, tuple(s.inputs)))
         return Reader(objects)
 
     @functools.cached_property

@@ -184,7 +184,8 @@ def test_the_svg_keeps_the_provenance_for_the_machine(tmp_path):
     write_replay(c, c.figure(), tmp_path / "out", style="historical")
     root = ET.parse(tmp_path / "out" / "final.svg").getroot()
     ns = "{http://www.w3.org/2000/svg}"
-    desc = root.find(f"{ns}metadata/{ns}desc")
+    desc = root.find(f"{ns}desc")
+    assert desc.get("id") == "provenance"
     data = json.loads(desc.text)
     assert data["construction"] == "indicator-diagram"
     assert data["source"] == c.source and data["givens"]["admission"] == 7.85

@@ -5,7 +5,7 @@ and units of the book it comes from -- the German line with the decimal comma
 (``G = 830 kg, n = 50/min, R = 0,4 m, L = 2,0 m``), the English line with the
 point -- and cites the book by author, title and figure, never by a file of
 this repository.  Which text and which parameters exactly (the machine's
-view) go into the SVG's ``<metadata>`` and the protocol.
+view) go into the SVG's ``<desc>`` and the protocol.
 
 :data:`BOOKS` lists the four source texts as they introduce themselves: the
 Baumann article names its author, title and volume; the three book excerpts
@@ -27,7 +27,6 @@ import json
 import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, Callable, Mapping
-from xml.sax.saxutils import escape
 
 if TYPE_CHECKING:
     from ..constructions import Construction
@@ -275,7 +274,7 @@ def caption(construction: "Construction | None", fig: "Figure", number_: int | s
 
 
 def provenance(construction: "Construction | None", fig: "Figure") -> dict[str, Any]:
-    """Which text and which parameters, for the machine: the SVG's ``<metadata>``."""
+    """Which text and which parameters, for the machine: the SVG's ``<desc id="provenance">``."""
     params = {k: v for k, v in fig.params.items() if k not in ("group_titles", "plate", "captions", "givens")}
     out: dict[str, Any] = {"construction": fig.protocol.construction, "params": params,
                            "givens": dict(fig.replay.givens)}
@@ -285,14 +284,21 @@ def provenance(construction: "Construction | None", fig: "Figure") -> dict[str, 
     return out
 
 
+#: The longest text the metadata keeps of any one value (a protocol of the user's own may name itself
+#: with megabytes): the figure stays bounded, the protocol keeps the whole.
+_META_TEXT = 200
+
+
 def _jsonable(v: Any) -> Any:
+    if isinstance(v, str):
+        return v if len(v) <= _META_TEXT else v[: _META_TEXT - 1] + "…"
     if isinstance(v, float):
         return v if math.isfinite(v) else str(v)
     if isinstance(v, (list, tuple)):
         return [_jsonable(x) for x in v]
     if isinstance(v, Mapping):
-        return {str(k): _jsonable(x) for k, x in v.items()}
-    if isinstance(v, (int, str, bool)) or v is None:
+        return {_jsonable(str(k)): _jsonable(x) for k, x in v.items()}
+    if isinstance(v, (int, bool)) or v is None:
         return v
     try:
         return _jsonable(v.tolist())
@@ -301,11 +307,19 @@ def _jsonable(v: Any) -> Any:
 
 
 def with_provenance(svg: str, construction: "Construction | None", fig: "Figure") -> str:
-    """*svg* with ``<metadata>`` (the provenance as JSON) right after its opening tag."""
+    """*svg* (a standalone file's text) with ``<desc id="provenance">`` holding the provenance as JSON, first in the root.
+
+    The element is serialised by ElementTree (which escapes the text) and set in after the root's
+    start tag, which follows the XML declaration.
+    """
+    import xml.etree.ElementTree as ET
+
     data = json.dumps(_jsonable(provenance(construction, fig)), sort_keys=True, ensure_ascii=False)
-    meta = f'<metadata id="provenance"><desc>{escape(data)}</desc></metadata>'
-    i = svg.find("<svg")
-    j = svg.find(">", i) if i >= 0 else -1
+    meta = ET.Element("desc", id="provenance")
+    meta.text = data
+    markup = ET.tostring(meta, encoding="unicode")
+    decl = svg.find("?>")
+    j = svg.find(">", decl + 2 if decl >= 0 else 0)
     if j < 0:
         return svg
-    return svg[: j + 1] + "\n" + meta + svg[j + 1:]
+    return svg[: j + 1] + "\n" + markup + svg[j + 1:]

@@ -484,7 +484,9 @@ def indicator_plate(fig: Figure) -> dict:
         furniture.append({"kind": "lettering", "at": (x - 2.6 * tick, i * unit), "text": str(i), "anchor": "end",
                           "size": 0.8})
     furniture.append({"kind": "lettering", "at": (x, (top + 0.7) * unit), "text": "at", "size": 0.85})
-    looks = {"expansion": "heavy", "compression": "heavy", "base": "medium"}
+    # C₂ lies on the heavy back-pressure line: lettered above it, clear of the line and the curve
+    furniture.append({"kind": "lettering", "at": (C2[0] - 0.018 * s, C2[1] + 0.024 * s), "text": "C₂"})
+    looks = {"expansion": "heavy", "compression": "heavy", "base": "medium", "C2": "unlettered"}
     return {"looks": looks, "furniture": furniture}
 
 

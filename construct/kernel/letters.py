@@ -133,10 +133,26 @@ def equation(text: str) -> str:
     >>> equation("Gl. 4_1, Tabelle 1; Gl. (h); Gl. 1")
     'Gl. (4₁), Tabelle 1; Gl. (h); Gl. (1)'
     """
+    if "Gl." not in text:
+        return text
+
     def sub(m: "re.Match[str]") -> str:
         num, low = m.group(1), m.group(2)
         return f"Gl. ({num}{low.translate(_SUB) if low else ''})"
     return re.sub(r"Gl\. \(?(\d+)(?:_(\d+))?\)?", sub, text)
+
+
+#: (pattern, replacement) in the order :func:`book_symbols` applies them, compiled once.
+_SYMBOLS = tuple((re.compile(p), r) for p, r in (
+    (r"(?<![A-Za-z])lam(?![A-Za-z])", "λ"),
+    (r"\b(omega|alpha|beta|kappa|delta|lambda|pi)\b", lambda m: _GREEK[m.group(1)]),
+    (r"(?<![A-Za-z])w(?=\d|\b)", "ω"),
+    (r"(?<=[\w)]) sqrt\b\s*(?=[(\dA-Za-z])", "√"),   # r sqrt 2 -> r√2
+    (r"\bsqrt\b\s*(?=[(\dA-Za-z])", "√"),
+    (r"(?<=[\s(=])-(?=[\w(])", "−"),   # a minus, not a hyphen
+    (r"\^(\d+)", lambda m: m.group(1).translate(_SUPER)),
+    (r"(\d) degrees\b", r"\1°"),
+))
 
 
 def book_symbols(text: str) -> str:
@@ -147,14 +163,8 @@ def book_symbols(text: str) -> str:
     >>> book_symbols("(4/pi) r alpha, omega^2 R, crank at 90 degrees")
     '(4/π) r α, ω² R, crank at 90°'
     """
-    text = re.sub(r"(?<![A-Za-z])lam(?![A-Za-z])", "λ", text)
-    text = re.sub(r"\b(omega|alpha|beta|kappa|delta|lambda|pi)\b", lambda m: _GREEK[m.group(1)], text)
-    text = re.sub(r"(?<![A-Za-z])w(?=\d|\b)", "ω", text)
-    text = re.sub(r"(?<=[\w)]) sqrt\b\s*(?=[(\dA-Za-z])", "√", text)   # r sqrt 2 -> r√2
-    text = re.sub(r"\bsqrt\b\s*(?=[(\dA-Za-z])", "√", text)
-    text = re.sub(r"(?<=[\s(=])-(?=[\w(])", "−", text)   # a minus, not a hyphen
-    text = re.sub(r"\^(\d+)", lambda m: m.group(1).translate(_SUPER), text)
-    text = re.sub(r"(\d) degrees\b", r"\1°", text)
+    for pattern, rep in _SYMBOLS:
+        text = pattern.sub(rep, text)
     return equation(text)
 
 
@@ -224,6 +234,17 @@ class Reader:
 
     def _split(self, token: str) -> tuple[str, str] | None:
         """``D0P6`` -> (D0, P6): two point names written together, if the token is exactly that."""
+        if len(token) > 64:  # no point name is this long: not cached, a caption of megabytes stays out of memory
+            return self._split_once(token)
+        cache = self.__dict__.setdefault("_split_cache", {})
+        got = cache.get(token, cache)
+        if got is cache:  # the words of the captions recur on every step ("Kreis", "durch")
+            got = cache[token] = self._split_once(token)
+            if len(cache) > 100_000:
+                cache.clear()
+        return got
+
+    def _split_once(self, token: str) -> tuple[str, str] | None:
         if token[1:].islower() and "." not in token and not any(c.isdigit() for c in token):
             return None  # a word ("Kreis", "durch"): not two names
         # Only cuts where both halves have the length of some point's name are tried, shortest

@@ -525,7 +525,7 @@ TANGENTIAL = register(Construction(
     name="tangential-pressure",
     title=Caption("Tangentialdruckdiagramm mit Ausgleichender und Überschussfläche",
                   "Tangential-pressure diagram with mean line and excess area"),
-    source="seed 004 (Baumann 1902), Fig. 26/27; DESIGN §5",
+    source="seed 004 (Baumann 1902), Fig. 26/27",
     build=build_tangential,
     checks=tangential_checks,
     defaults={"rod_ratio": 5.0, "parts": 18, "method": "auto", "r": 1.0, "force": "baumann", "kappa": KAPPA,

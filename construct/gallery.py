@@ -40,6 +40,8 @@ from .constructions.checking import summary
 from .constructions import get, names
 from .io.staging import replaced_folder, write_text
 from .render.output import params_text, write_outputs
+from .render.notation import citation
+from .render.notation import givens as book_givens
 from .render.styles import STYLES
 
 __all__ = ["build_gallery", "gallery_plan", "entry_slug", "is_gallery", "GALLERY_STYLES", "GALLERY_OUTPUTS",
@@ -87,8 +89,14 @@ def _value(v: Any) -> str:
 
 
 def entry_slug(name: str, params: Mapping[str, Any]) -> str:
-    """A folder name for a construction at *params*: stable, readable, no odd characters."""
-    parts = [name] + [f"{k}-{_value(v)}" for k, v in sorted(params.items())]
+    """A folder name for a construction at *params*: stable, readable, no odd characters.
+
+    A switch is named when it is on and left out when off (no Python ``True``/``False`` in a name).
+
+    >>> entry_slug("two-cranks", {"infinite_rod": True, "parts": 12}), entry_slug("crank", {"rod_ratio": 4.5})
+    ('two-cranks-infinite-rod-parts-12', 'crank-rod-ratio-4_5')
+    """
+    parts = [name] + [k if v is True else f"{k}-{_value(v)}" for k, v in sorted(params.items()) if v is not False]
     text = "-".join(parts).replace("_", "-").replace(".", "_")
     return "".join(c if c.isalnum() or c in "-_" else "-" for c in text)
 
@@ -163,7 +171,7 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
     edir.mkdir()
     write_text(edir / "protocol.json", fig.protocol.to_json(fig.replay))
     checks = c.checks(fig)
-    write_text(edir / "checks.md", _checks_md(f"{c.title.en} ({params_text(fig)})", checks))
+    write_text(edir / "checks.md", _checks_md(f"{c.title.en} ({book_givens(fig)[1] or params_text(fig)})", checks))
     write_text(edir / "checks.json", json.dumps(
         {"construction": name, "params": params, "summary": summary(checks),
          "ok": all(ch.ok for ch in checks), "checks": [ch.as_dict() for ch in checks]},
@@ -183,9 +191,9 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
                         "files": sorted(files), "steps": info["steps"], "frames": info["frames"],
                         "frame_mode": FRAME_MODE})
     row = {"number": number, "name": name, "slug": slug, "params": params, "title": c.title,
-           "source": c.source, "method": _method(fig), "checks": summary(checks),
+           "source": citation(name, "en") or c.source, "method": _method(fig), "checks": summary(checks),
            "ok": all(ch.ok for ch in checks), "steps": len(fig.protocol.steps),
-           "params_text": params_text(fig), "player": _first_of_its_construction(name, params)}
+           "params_text": book_givens(fig)[1] or params_text(fig), "player": _first_of_its_construction(name, params)}
     return entries, row
 
 

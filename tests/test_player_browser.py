@@ -130,7 +130,9 @@ def test_player_steps_show_exactly_the_steps_so_far(browser, player):
     assert page.eval_on_selector("#speed", "s => +s.value") == 1.0
     # the groups are collapsible and the givens are shown
     assert page.locator("#steps details").count() >= 3
-    assert "rod_ratio" in page.inner_text("#givens") and "4" in page.inner_text("#givens")
+    # in the book's symbols (seed 000 writes r/L), not the protocol's names
+    assert "r/L" in page.inner_text("#givens") and "1/4" in page.inner_text("#givens")
+    assert "rod_ratio" not in page.inner_text("#givens")
     shot = os.environ.get("CONSTRUCT_SCREENSHOT")
     page.keyboard.press("End")
     page.screenshot(path=shot or str(path.with_suffix(".png")), full_page=True)

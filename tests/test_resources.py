@@ -21,7 +21,7 @@ from hypothesis import strategies as st
 
 import construct
 from construct import Builder
-from construct.render import captions
+from construct.kernel import letters as captions  # the rules behind construct.render.captions
 from construct.render.captions import CAPTION_LIMIT, TITLE_LIMIT, Reader, displayed
 from construct.render.svg import wrap as wrap_px
 from construct.render.wrapping import shorten, wrap

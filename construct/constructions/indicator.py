@@ -152,16 +152,16 @@ def indicator_frame(b: Builder, *, base: str, head: str, crank: str, stroke: Seq
         adm = square(b, f"{p}adm", A0, head_ord, opening)
         back = square(b, f"{p}back", B0, head_ord, opening)
         k = b.circle_radius(f"{p}S1.k", head, s1, de="Füllung s1 abgetragen", en="filling s1 laid off")
-        S1 = b.intersect(f"{p}S1", base, k, rule=("toward", head, crank), labels={f"{p}S1": "s1"},
+        S1 = b.intersect(f"{p}S1", base, k, rule=("toward", head, crank), labels={f"{p}S1": "s₁"},
                          de="Ende der Füllung auf der Nulllinie", en="end of the filling on the zero line")
         cut_ord = square(b, f"{p}v.s1", S1, base, opening)
-        cutoff = b.intersect(f"{p}A1", adm, cut_ord, rule=("only",), role="result", labels={f"{p}A1": "A1"},
+        cutoff = b.intersect(f"{p}A1", adm, cut_ord, rule=("only",), role="result", labels={f"{p}A1": "A₁"},
                              de="Abschluss der Füllung A1", en="cut-off A1")
         k = b.circle_radius(f"{p}S2.k", crank, s3, de="s3 vom Kurbeltotpunkt zurück", en="s3 back from the crank-end dead centre")
-        S2 = b.intersect(f"{p}S2", base, k, rule=("toward", crank, head), labels={f"{p}S2": "s2"},
+        S2 = b.intersect(f"{p}S2", base, k, rule=("toward", crank, head), labels={f"{p}S2": "s₂"},
                          de="Beginn der Kompression s2 = s − s3", en="start of compression s2 = s - s3")
         comp_ord = square(b, f"{p}v.s2", S2, base, opening)
-        cstart = b.intersect(f"{p}C2", back, comp_ord, rule=("only",), role="result", labels={f"{p}C2": "C2"},
+        cstart = b.intersect(f"{p}C2", back, comp_ord, rule=("only",), role="result", labels={f"{p}C2": "C₂"},
                              de="Beginn der Kompression C2", en="start of compression C2")
     del head_ord, crank_ord
     return IndicatorDiagram(p, base, head, crank, Z0, Z1, adm, back, cutoff, cut_ord, cstart, comp_ord,
@@ -458,6 +458,38 @@ OPTION_HELP = {
 }
 
 
+def indicator_plate(fig: Figure) -> dict:
+    """Baumann's Fig. 25 as a plate: the diagram one closed outline at result weight -- admission line
+    (P + P0 from 0 to A₁), expansion, exhaust at the end of the stroke, back-pressure line (C₂ back to
+    the start), compression, and the admission vertical at the dead centre -- the construction thin, and
+    a pressure scale in at (absolute, from the zero line) beside the clearance line.
+
+    Every corner is a constructed point; the scale's divisions are the given drawn length of 1 at.
+    """
+    R = fig.replay
+    n = fig.params["divisions"]
+    A0, A1, B0, C2 = R["A0"], R["A1"], R["B0"], R["C2"]
+    end_exp, end_comp = R[f"E{n}"], R[f"R{n}"]
+    Z = R["Z0"]
+    s = R["A"].distance(R["B"])
+    unit = R.givens["pressure_unit"]
+    top = int(math.floor(A0[1] / unit + 1e-9))
+    x = Z[0] - 0.06 * s
+    tick = 0.012 * s
+    furniture: list[dict] = [{"kind": "stroke", "a": tuple(a), "b": tuple(b), "look": "heavy"}
+                             for a, b in ((B0, A0), (A0, A1), (end_exp, end_comp), (C2, B0))]
+    furniture.append({"kind": "stroke", "a": (x, 0.0), "b": (x, top * unit), "look": "medium"})
+    for i in range(top + 1):
+        furniture.append({"kind": "stroke", "a": (x - tick, i * unit), "b": (x, i * unit), "look": "medium"})
+        furniture.append({"kind": "lettering", "at": (x - 2.6 * tick, i * unit), "text": str(i), "anchor": "end",
+                          "size": 0.8})
+    furniture.append({"kind": "lettering", "at": (x, (top + 0.7) * unit), "text": "at", "size": 0.85})
+    # C₂ lies on the heavy back-pressure line: lettered above it, clear of the line and the curve
+    furniture.append({"kind": "lettering", "at": (C2[0] - 0.018 * s, C2[1] + 0.024 * s), "text": "C₂"})
+    looks = {"expansion": "heavy", "compression": "heavy", "base": "medium", "C2": "unlettered"}
+    return {"looks": looks, "furniture": furniture}
+
+
 def _validate(givens: Mapping[str, float]) -> None:
     bounded("stroke half r (drawing units)", givens["r"], DRAWN_LENGTH)
     indicator_givens(givens["filling"], givens["clearance"], givens["admission"], givens["back_pressure"],
@@ -476,5 +508,5 @@ INDICATOR = register(Construction(
     defaults={"r": 1.0, **BAUMANN, "pressure_unit": 0.12, "divisions": 10},
     book_params=({}, {"filling": 0.4}),  # Baumann's two worked cases: s1 = 10 % and 40 % (drawn for P = 7.85 at)
     structural=("divisions", "filling", "compression"),
-    extra={"help": OPTION_HELP},
+    extra={"help": OPTION_HELP, "plate": indicator_plate},
 ), validate=_validate)

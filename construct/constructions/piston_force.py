@@ -167,6 +167,50 @@ def _carry(b: Builder, name: str, foot: str, ordinate: str, a: str, z: str, *, d
     return b.intersect(name, ordinate, k, rule=("toward", a, z), role=role, de=de, en=en, labels=labels)
 
 
+def piston_force_plate(fig: Figure) -> dict:
+    """Abb. 1055 as a plate: the piston-force line and the mass-force line heavy over a thin piston-path
+    line, lettered as the book letters them -- J where the piston force changes sign, C the end of the
+    force line and O the end of the piston-path line ("zwischen J und C negativ", "von J bis O") -- the
+    lines named (P = F·pü, Pb the mass forces, eq. 297/298), and a force scale in kg beside the diagram.
+
+    Every position is a constructed point; the scale's divisions are the given drawn length per kg.
+    """
+    R = fig.replay
+    n = fig.params["parts"]
+    F0, Fn, Kn = R["F0"], R[f"F{n}"], R[f"K{n}"]
+    s = abs(Fn[0] - F0[0])
+    unit = R.givens["force_unit"]
+    y0 = F0[1]
+    ks = [R[f"K{k}"][1] for k in range(n + 1)] + [R[f"M{k}"][1] for k in range(n + 1)]
+    step = 2000.0
+    lo = int(math.floor((min(ks) - y0) / unit / step))
+    hi = int(math.floor((max(ks) - y0) / unit / step + 1e-9))
+    x = F0[0] - 0.07 * s
+    tick = 0.012 * s
+    furniture: list[dict] = [{"kind": "stroke", "a": (x, y0 + lo * step * unit), "b": (x, y0 + hi * step * unit),
+                              "look": "medium"}]
+    for i in range(lo, hi + 1):
+        y = y0 + i * step * unit
+        furniture.append({"kind": "stroke", "a": (x - tick, y), "b": (x, y), "look": "medium"})
+        furniture.append({"kind": "lettering", "at": (x - 2.2 * tick, y), "text": f"{int(i * step)}".replace("-", "−"),
+                          "anchor": "end",
+                          "size": 0.8})
+    furniture.append({"kind": "lettering", "at": (x, y0 + (hi + 0.6) * step * unit), "text": "kg", "size": 0.85})
+    d = 0.035 * s
+    furniture += [
+        {"kind": "lettering", "at": (Fn[0] + 0.45 * d, Fn[1] + 0.5 * d), "text": "O"},
+        {"kind": "lettering", "at": (Kn[0] + 0.5 * d, Kn[1] - 0.2 * d), "text": "C"},
+    ]
+    # the names of the lines, beside a quarter of the way along each
+    kq, mq = R[f"K{max(1, (3 * n) // 8)}"], R[f"M{max(1, n // 6)}"]
+    furniture += [
+        {"kind": "lettering", "at": (kq[0] + 1.8 * d, kq[1] + 1.2 * d), "text": "P = F·pü", "anchor": "start"},
+        {"kind": "lettering", "at": (mq[0] + 0.5 * d, mq[1] + 1.3 * d), "text": "Pb", "anchor": "start"},
+    ]
+    looks = {"forcea": "heavy", "forceb": "heavy", "forcec": "heavy", "mass": "heavy", "fbase": "thin"}
+    return {"looks": looks, "furniture": furniture}
+
+
 def build_piston_force(*, parts: int, method: str, **values: Any) -> Figure:
     givens = _givens(**values)
     used = check_parts(parts, method)
@@ -550,7 +594,7 @@ PISTON_FORCE = register(Construction(
     book_params=({}, {"weight": 990.0}),  # Tafel I: high-pressure and low-pressure side
     structural=("parts", "method", "filling", "compression"),
     sweep=lambda g, ratios: {**g, "rod_length": ratios * g["crank_radius"]},  # L = (L/R) R
-    extra={"help": {
+    extra={"plate": piston_force_plate, "help": {
         "weight": "weight G of the reciprocating parts in kg (Tafel I: 830 high-pressure, 990 low-pressure side)",
         "rpm": "revolutions per minute n (Tafel I: 50)",
         "crank_radius": "crank radius R in m (Tafel I: 0.4)",

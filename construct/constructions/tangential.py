@@ -245,15 +245,45 @@ def _unrolled(b: Builder, f: Mapping[str, str], points: list[str], n: int, heigh
                         en=f"{end}: mean height above the base", provenance=plan.combine(prov))
         b.line("mean", "M0", "Mn", role="result", de="Ausgleichende MM (Höhe 2Pᵢ/π)", en="mean line MM (height 2P_i/pi)")
         eye = _approx("crossings of the mean line with the drawn curve, read off the drawing", 1e-6)
-        for name, rule, label in (("A1", ("toward", None, None, -1.0, 0.0), "α1"),
-                                  ("A2", ("toward", None, None, 1.0, 0.0), "α2")):
+        for name, rule, label in (("A1", ("toward", None, None, -1.0, 0.0), "α₁"),
+                                  ("A2", ("toward", None, None, 1.0, 0.0), "α₂")):
             b.record("intersect", "intersect", ("tcurve", "mean"), (name,), {"rule": rule, "both": False},
                      f"{label}: die Ausgleichende schneidet die Tangentialdrucklinie ({'erster' if name == 'A1' else 'letzter'} Schnitt)",
                      f"{label}: where the mean line crosses the curve ({'first' if name == 'A1' else 'last'} crossing)",
                      provenance=eye.combine(plan).combine(prov), role="result", labels={name: label})
         b.area_between("excess", "tcurve", "mean", "A1", "A2", hatch_deg=90.0, role="result",
-                       de="Überschussfläche zwischen α1 und α2 (schraffiert)",
-                       en="excess area between alpha1 and alpha2 (hatched)")
+                       de="Überschussfläche zwischen α₁ und α₂ (schraffiert)",
+                       en="excess area between α₁ and α₂ (hatched)")
+
+
+def tangential_plate(fig: Figure) -> dict:
+    """Baumann's Fig. 26 as a plate: the diagram ABCD heavy (A the start, B the top at the cut-off,
+    D the end), the Ausgleichende MM lettered at both ends, and α₁, α₂ as he gives them -- abscissae,
+    lettered at the foot of thin ordinates below the base line, so that no letter sits on the crossings
+    or on the ends of the hatching.
+
+    Every position is a constructed point.
+    """
+    R = fig.replay
+    n = fig.params["parts"]
+    U0, Un, M0, Mn = R["U0"], R[f"U{n}"], R["M0"], R["Mn"]
+    span = abs(Un[0] - U0[0])
+    d = 0.018 * span
+    top = max(range(1, n), key=lambda k: R[f"T{k}"][1])
+    T = R[f"T{top}"]
+    furniture: list[dict] = [
+        {"kind": "lettering", "at": (U0[0] - 0.9 * d, U0[1] + 1.2 * d), "text": "A"},
+        {"kind": "lettering", "at": (T[0], T[1] + 1.6 * d), "text": "B"},
+        {"kind": "lettering", "at": (Un[0] + 0.9 * d, Un[1] + 1.4 * d), "text": "D"},
+        {"kind": "lettering", "at": (M0[0] - 1.2 * d, M0[1] + 1.0 * d), "text": "M"},
+        {"kind": "lettering", "at": (Mn[0] + 1.2 * d, Mn[1] + 1.0 * d), "text": "M"},
+    ]
+    for name, text in (("A1", "α₁"), ("A2", "α₂")):
+        P = R[name]
+        furniture.append({"kind": "stroke", "a": (P[0], P[1]), "b": (P[0], U0[1] - 1.0 * d), "look": "dashed thin"})
+        furniture.append({"kind": "lettering", "at": (P[0], U0[1] - 2.2 * d), "text": text})
+    looks = {"A1": "unlettered", "A2": "unlettered", "tcurve": "heavy", "mean": "medium", "tbase": "medium"}
+    return {"looks": looks, "furniture": furniture}
 
 
 # --------------------------------------------------------------------------
@@ -559,7 +589,7 @@ TANGENTIAL = register(Construction(
     name="tangential-pressure",
     title=Caption("Tangentialdruckdiagramm mit Ausgleichender und Überschussfläche",
                   "Tangential-pressure diagram with mean line and excess area"),
-    source="seed 004 (Baumann 1902), Fig. 26/27; DESIGN §5",
+    source="seed 004 (Baumann 1902), Fig. 26/27",
     build=build_tangential,
     checks=tangential_checks,
     sweep_model=lambda g, params: model_summary_sweep(g, params["force"]),
@@ -567,4 +597,5 @@ TANGENTIAL = register(Construction(
               **BAUMANN, "pressure_unit": 0.2},
     book_params=({"rod_ratio": 5.0, "parts": 18, "kappa": 8.0}, {"rod_ratio": 5.0, "parts": 18, "kappa": 2.0}),
     structural=("parts", "method", "force", "filling", "compression"),
+    extra={"plate": tangential_plate},
 ), validate=_validate)

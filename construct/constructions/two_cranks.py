@@ -580,7 +580,7 @@ def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method
             O2 = b.given_point("O'", 3.2, 0.0, unit="r", de="Wellenmittelpunkt O' (unendliche Stange)",
                                en="shaft centre O' (infinite rod)", label="O′ (l = ∞)")
             k2 = b.circle_radius("crank'", O2, f["r"], de="Kurbelkreis um O'", en="crank circle about O'", role="result")
-            A2 = b.intersect("iD0", f["axis"], k2, rule=("toward", O2, None, -1.0, 0.0), labels={"iD0": "A'"})
+            A2 = b.intersect("iD0", f["axis"], k2, rule=("toward", O2, None, -1.0, 0.0), labels={"iD0": "A′"})
             B2 = b.intersect("iD1", f["axis"], k2, rule=("toward", O2, None, 1.0, 0.0))
         up2, low2 = _copied_points(b, "i", O2, A2, B2, k2, upper, f["D0"], f["D1"])
         feet = _ordinates(b, "i", f["axis"], up2, low2)
@@ -606,7 +606,7 @@ def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method
             if _ahead(b, part.means[j], part.ends[j]) <= 0.0:
                 raise InvalidParameter(f"speed radius at crank position {j} would not be positive; "
                                        f"lower --magnify or the fluctuation")
-    b.params["plate"] = _plate_patterns(infinite_rod)
+    b.params["plate"] = _plate_patterns(infinite_rod, n)
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))
 
@@ -616,14 +616,40 @@ def _ahead(b: Builder, a: str, c: str) -> float:
     return b[c][0] - b[a][0]
 
 
-def _plate_patterns(infinite_rod: bool) -> list[str]:
+def _plate_patterns(infinite_rod: bool, n: int = 0) -> list[str]:
     """Fig. 566: the crank circles, the crank positions, the speed points and the wave, the extremes.
 
+    The rays along the stroke line (0 and n) are left to the plate's centre lines, one per diagram
+    (:func:`two_cranks_plate`): drawn as rays they would run on across the gap between the diagrams.
     (The same patterns serve both layouts: names of the second circle simply do not occur without it.)
     """
-    pats = [r"O", r"O'", r"crank", r"crank'", r"D0", r"D1", r"iD0", r"iD1", r"i?wave", r"i?Z\d+", r"i?ray\d+",
+    pats = [r"O", r"O'", r"crank", r"crank'", r"D0", r"D1", r"iD0", r"iD1", r"i?wave", r"i?Z\d+",
+            rf"i?ray(?!(?:0|{n})$)\d+",
             r"K\.W[12]", r"K\.ray[12]", r"P\d+", r"iP\d+", r"i?Q\d+", r"sc\.[ABCg]"]
     return pats
+
+
+def two_cranks_plate(fig: Figure) -> dict:
+    """Fig. 566 as a plate: the speed curve heavy over a lighter crank circle (the reference of the
+    mean speed), the stroke line and the vertical through each shaft centre dash-dotted as centre lines,
+    each ending at its own diagram -- none runs across the gap between the two.
+
+    Every position is a constructed point.
+    """
+    R = fig.replay
+    n = fig.params["parts"]
+    r = R["O"].distance(R["D1"])
+    furniture = []
+    looks = {"crank": "medium", "crank'": "medium", "wave": "heavy", "iwave": "heavy"}
+    for centre, pre in (("O", ""), ("O'", "i")):
+        if centre not in R:
+            continue
+        C = R[centre]
+        furniture.append({"kind": "stroke", "a": (C[0] - 1.22 * r, C[1]), "b": (C[0] + 1.22 * r, C[1]),
+                          "look": "centre"})
+        for j in (n // 2, 3 * n // 2):
+            looks[f"{pre}ray{j}"] = "centre"
+    return {"looks": looks, "furniture": furniture}
 
 
 # -- measurements on the figure ------------------------------------------------------
@@ -846,8 +872,8 @@ def speed_fluctuation_rows(*, rod_ratio: float | None, step_deg: float = 15.0) -
 
 TWO_CRANKS = register(Construction(
     name="two-cranks",
-    title=Caption("Zwei Kurbeln unter 90°: Geschwindigkeitsschwankung (Fig. 566)",
-                  "Two cranks at 90 degrees: speed fluctuation (Fig. 566)"),
+    title=Caption("Zwei Kurbeln unter 90°: Geschwindigkeitsschwankung",
+                  "Two cranks at 90°: speed fluctuation"),
     source="seed 002, § 146-147, Fig. 566",
     build=build_two_cranks,
     checks=two_cranks_checks,
@@ -857,6 +883,7 @@ TWO_CRANKS = register(Construction(
               "fluctuation": 0.25, "magnify": None},
     book_params=({"rod_ratio": 5.0, "parts": 12}, {"infinite_rod": True, "parts": 12}),
     structural=("parts", "method", "infinite_rod"),
+    extra={"plate": two_cranks_plate},
     # A draftsman picks the magnification of the speed deviations for the rod he draws: so does a sweep.
     sweep=lambda g, ratios: {**g, "rod_ratio": ratios,
                              "magnify": auto_magnification(ratios, g["fluctuation"])},

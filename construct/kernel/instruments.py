@@ -207,7 +207,10 @@ class Builder:
         problem = spec.check_inputs([self.objects[n] for n in step.inputs])
         if problem:
             raise WrongInput(f"step {index} ({tool}: {en}): {op} {problem}", **where)
-        values = run_step(entry, self.objects, self.givens)
+        try:
+            values = run_step(entry, self.objects, self.givens)
+        except StepError as exc:  # quote the caption as the protocol will write it: in the figure's letters
+            raise self._lettered(exc, step) from None
         if len(values) != len(outputs):
             raise StepError(f"step {index} ({tool}: {en}): {op} makes {len(values)} objects, "
                             f"{len(outputs)} names were given", **where)
@@ -218,6 +221,20 @@ class Builder:
             self.provenance[name] = step.provenance
             self._maker[name] = index - 1
         return values
+
+    def _lettered(self, exc: StepError, step: Step) -> StepError:
+        """*exc* quoting *step*'s caption in the figure's letters, as a replay of the protocol quotes it."""
+        import copy
+
+        from .letters import letter_steps
+
+        lettered = letter_steps([*self.steps, step], self.objects)[-1].caption.brief
+        raw = f"({step.tool}: {step.caption.brief})"
+        if lettered == step.caption.brief or not exc.args or raw not in str(exc.args[0]):
+            return exc
+        out = copy.copy(exc)
+        out.args = (str(exc.args[0]).replace(raw, f"({step.tool}: {lettered})", 1), *exc.args[1:])
+        return out
 
     def set_label(self, name: str, text: str) -> None:
         """Letter an object already made (the figure prints *text* beside it).
@@ -257,11 +274,16 @@ class Builder:
         >>> b.protocol().replay({"s": 3.0})["k"].radius
         3.0
         """
+        from .letters import letter_steps
+
         params = dict(self.params)
         params["givens"] = dict(self.givens)
         if self._group_titles:
             params["group_titles"] = dict(sorted(self._group_titles.items()))
-        return Protocol(self.construction, MappingProxyType(params), tuple(self.steps), self.replayable)
+        # The captions name what the figure letters (12, B, M1), not the objects' internal names.
+        steps = tuple(letter_steps(self.steps, self.objects))
+        params["captions"] = "letters"  # read once: a second reading would take a letter (S1) for a name
+        return Protocol(self.construction, MappingProxyType(params), steps, self.replayable)
 
     # -- givens ----------------------------------------------------------------
     def given_point(self, name: str, x: float, y: float, *, unit: str | None = None,

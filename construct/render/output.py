@@ -91,7 +91,7 @@ _BOOK_METHODS = {
     "neusis": ("Einschiebung (Archimedes)", "neusis (Archimedes)"),
     "dividers": ("Teilung mit dem Stechzirkel", "division with the dividers by trial"),
 }
-_HIDDEN = ("givens", "group_titles", "requested_method", "plate")
+_HIDDEN = ("givens", "group_titles", "requested_method", "plate", "captions")
 
 
 def _num(v) -> str:
@@ -126,27 +126,25 @@ def params_text(figure: Figure, lang: str = "en") -> str:
 
 
 def figure_title(construction: Construction | None, figure: Figure) -> tuple[str, str]:
-    from .captions import equation
+    """The figure's title lines in its book's notation (:func:`construct.render.notation.caption`)."""
+    from .notation import caption
 
     if construction is None:  # a protocol of the user's own: its name is its title
         name, p = figure.protocol.construction, params_text(figure)
         return (f"{name}; {p}" if p else name, f"{name}; {p}" if p else name)
-    title = construction.title
-    return (f"{title.de} ({equation(construction.source)}); {params_text(figure, 'de')}",
-            f"{title.en}; {params_text(figure)}")
+    return caption(construction, figure, plate=False)
 
 
 def plate_caption(construction: Construction | None, figure: Figure,
                   number: int | str | None = None) -> tuple[str, str]:
-    """A book plate's caption: "Fig. 1. Kolbenwege aus dem Kurbelkreis (L/r = 5, 18 Teile)." and the English."""
-    from .captions import equation
+    """A book plate's caption: "Fig. 12. Kolbenüberdrucklinie mit den Massenkräften. G = 830 kg, … — nach …" and the English."""
+    from .notation import caption
 
-    fig = f"Fig. {number}." if number is not None else "Fig."
     if construction is None:
+        fig = f"Fig. {number}." if number is not None else "Fig."
         name = figure.protocol.construction
         return (f"{fig} {name}.", f"{name} ({params_text(figure)})")
-    return (f"{fig} {construction.title.de} ({params_text(figure, 'de')}).",
-            f"{construction.title.en} ({params_text(figure)}; {equation(construction.source)})")
+    return caption(construction, figure, number)
 
 
 #: What a replay writes besides final.svg, steps/ and protocol.json.
@@ -176,7 +174,9 @@ def write_outputs(stage: Path, construction: Construction | None, figure: Figure
                            caption=plate_caption(construction, figure, fig_number))
     else:
         final = drawing.layered()  # type: ignore[union-attr]
-    write_text(stage / "final.svg", final)
+    from .notation import with_provenance
+
+    write_text(stage / "final.svg", with_provenance(final, construction, figure))
     width = max(3, len(str(len(scene.steps))))
     steps_dir = stage / "steps"
     if ks:
@@ -188,10 +188,9 @@ def write_outputs(stage: Path, construction: Construction | None, figure: Figure
     if "animated" in outputs:
         write_text(stage / "animated.svg", animated_svg(scene, st, drawing=drawing))
     if "player" in outputs:
-        givens = {**dict(figure.replay.givens),
-                  **{k: v for k, v in figure.params.items()
-                     if k not in ("givens", "group_titles", "requested_method", "plate")}}
-        write_text(stage / "player.html", player_html(scene, st, givens=givens, drawing=drawing))
+        from .notation import given_rows
+
+        write_text(stage / "player.html", player_html(scene, st, givens=given_rows(figure), drawing=drawing))
     if "storyboard" in outputs:
         write_text(stage / "storyboard.svg", storyboard_svg(drawing))  # type: ignore[arg-type]
     return {"steps": len(scene.steps), "frames": len(ks)}

@@ -133,7 +133,7 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
     title = title or scene.title
     giv = givens or {}
     givens_rows = "".join(f"<tr><th>{html.escape(str(k))}</th><td>{html.escape(_show(v))}</td></tr>"
-                          for k, v in sorted(giv.items()))
+                          for k, v in giv.items())  # in the caller's order (the book's, from notation.given_rows)
     values = dict((
         ("{{TITLE_DE}}", html.escape(title[0])),
         ("{{TITLE_EN}}", html.escape(title[1])),

@@ -117,6 +117,8 @@ class Scene:
         for m in self.marks:
             s = makers[m.name]
             objects[m.name] = (kinds.get(m.kind, m.kind), m.label, s.op, tuple(s.inputs))
+        for name, s in makers.items():  # what is not drawn (a compass opening J.h1) goes by its short name
+            objects.setdefault(name, ("length", None, s.op, tuple(s.inputs)))
         return Reader(objects)
 
     @functools.cached_property
@@ -128,8 +130,11 @@ class Scene:
         cached = self._captions[k - 1]
         if cached is None:
             s = self.steps[k - 1]
-            cached = self._captions[k - 1] = (self.readable(s.caption.de, "de", s.outputs),
-                                              self.readable(s.caption.en, "en", s.outputs))
+            if self.params.get("captions") == "letters":  # written in the figure's letters when built
+                cached = self._captions[k - 1] = (displayed(s.caption.de), displayed(s.caption.en))
+            else:  # a protocol from an older file: read here
+                cached = self._captions[k - 1] = (self.readable(s.caption.de, "de", s.outputs),
+                                                  self.readable(s.caption.en, "en", s.outputs))
         return cached
 
     # -- what a teaching frame shows at strength ----------------------------------------
@@ -397,6 +402,8 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 continue
             mid = f"s{s.index:04d}-{_safe_id(name)}"
             label = labels.get(name)
+            if "unlettered" in (looks or {}).get(name, "").split():
+                label = None  # the plate letters it otherwise (an abscissa, as the book does)
             common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
                           group=s.group, label=label, look=(looks or {}).get(name, ""))
             if isinstance(obj, Point):

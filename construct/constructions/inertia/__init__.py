@@ -43,7 +43,7 @@ from .. import Construction, register
 from .build import _validate, build_inertia
 from .checks import inertia_checks
 from .measure import abscissa, curve_deviation, ordinate
-from .stroke_fractions import build_q_at_stroke_fractions, stroke_fraction_checks
+from .stroke_fractions import build_q_at_stroke_fractions, stroke_fraction_checks, stroke_fractions_plate
 from .rows import acceleration_rows, characteristic_point_rows, q_at_crank_angle_rows
 
 __all__ = [
@@ -111,4 +111,5 @@ INERTIA_STROKE = register(Construction(
     defaults={"rod_ratio": 5.0, "divisions": 10, "r": 1.0, "pressure_ratio": 1.0, "pressure_unit": 0.8},
     book_params=({"rod_ratio": 5.0},),
     structural=("divisions",),
+    extra={"plate": stroke_fractions_plate},
 ), validate=_validate)

@@ -20,12 +20,50 @@ from ..crank import build_frame, inverse_tolerance
 from .build import _dir, _givens, _setup, _value
 from .measure import _offset
 
-__all__ = ["build_q_at_stroke_fractions", "stroke_fraction_checks", "PLATE"]
+__all__ = ["build_q_at_stroke_fractions", "stroke_fraction_checks", "stroke_fractions_plate", "PLATE"]
 
-#: What the plate shows: the stroke in tenths, the rod swung back to the crank circle, the crank
-#: positions, and the proportional angle's rays carrying each q to the F/f line.
-PLATE = (r"axis", r"crank", r"D[01]", r"O", r"vert", r"x\d+", r"rod\d+", r"W\d+", r"S", r"gf", r"gf\.U", r"Vt\d+",
-         r"Vt\d+\.s")
+#: What the plate shows of the construction: the stroke in tenths, the rod swung back to the crank
+#: circle, the crank positions; the q found at each are drawn as ordinates over the stroke
+#: (:func:`stroke_fractions_plate`) -- the proportional angle five crank radii below would leave the
+#: sheet empty.
+PLATE = (r"axis", r"crank", r"D[01]", r"O", r"x\d+", r"rod\d+", r"W\d+")
+
+
+def stroke_fractions_plate(fig: Figure) -> dict:
+    """Tabelle 2 as a plate: under the crank circle, on a base line of its own, each q as an ordinate at
+    its tenth of the stroke (heavy), projected down from the mark (thin, dashed), with its value in at
+    and its letter q₀ … q₁₀; a scale of 1 at beside it.
+
+    The ordinates are the constructed ones: each is the distance of the point Vt carried to the F/f line
+    from the line's start (gf.U), as the proportional angle gave it.
+    """
+    from .measure import _offset
+
+    R = fig.replay
+    m = fig.params["divisions"]
+    unit = R.givens["pressure_unit"]
+    r = R["O"].distance(R["D1"])
+    xs = [R["D0"][0]] + [R[f"x{j}"][0] for j in range(1, m)] + [R["D1"][0]]
+    qs = [_offset(fig, f"Vt{j}", "gf.U") for j in range(m + 1)]
+    y0 = R["O"][1] - 0.45 * r - max(max(qs), 0.0)
+    lo, hi = min(xs), max(xs)
+    pitch = (hi - lo) / m
+    small = pitch > 0.15 * r  # room for a value beside every ordinate
+    furniture: list[dict] = [{"kind": "stroke", "a": (lo - 0.12 * r, y0), "b": (hi + 0.12 * r, y0), "look": "medium"}]
+    for j, (x, q) in enumerate(zip(xs, qs)):
+        furniture.append({"kind": "stroke", "a": (x, R["O"][1]), "b": (x, y0), "look": "dashed thin"})
+        furniture.append({"kind": "stroke", "a": (x, y0), "b": (x, y0 + q), "look": "heavy"})
+        furniture.append({"kind": "dot", "at": (x, y0 + q)})
+        sign = 1.0 if q >= 0 else -1.0
+        sub = str(j).translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
+        furniture.append({"kind": "lettering", "at": (x, y0 - sign * 0.09 * r), "text": f"q{sub}", "size": 0.9})
+        if small or j % 2 == 0:
+            value = f"{abs(q) / unit:.3f}".replace(".", ",")
+            furniture.append({"kind": "lettering", "at": (x, y0 + q + sign * 0.08 * r),
+                              "text": ("−" if q < 0 else "+") + value, "size": 0.75})
+    sx = hi + 0.28 * r
+    furniture.append({"kind": "scale", "origin": (sx, y0), "end": (sx, y0 + unit), "text": "1 at"})
+    return {"looks": {"crank": "heavy", "axis": "centre"}, "furniture": furniture}
 
 
 def build_q_at_stroke_fractions(*, rod_ratio: float, divisions: int, r: float = 1.0, pressure_ratio: float = 1.0,

@@ -1,0 +1,402 @@
+"""Captions in the figure's own letters: what the reader sees, not what the code calls it.
+
+(Kernel module: :meth:`Builder.protocol <construct.kernel.instruments.Builder.protocol>`
+writes every step's caption and group title through :func:`letter_protocol`,
+so the protocol file, the player, the animation, the storyboard and the
+error messages name the same letters; :mod:`construct.render.captions`
+re-exports these names for the renderers.)
+
+A step's caption is written by the construction with object names
+(``Kreis um P12 durch D1``, ``T7.G.M1 im Schnitt von T7.G.Mr1 und T7.G.Mk1``,
+``Mittelsenkrechte von EinfFinf``).  The figure prints other letters: the
+division point P12 is lettered 12, the dead centre D1 is B (or 18), a helper
+point shows the last part of its name while it is in use, and a compass
+circle has no letter at all.  :class:`Reader` rewrites a caption once, from
+data only (the marks' labels, the step that made each curve), so a
+construction added later gets readable captions without writing any:
+
+* a lettered object is named by its letter (P12 -> 12, D0 -> A, K0 -> q1);
+* a helper point by the last part of its dotted name (T7.G.M1 -> M1), which
+  the teaching frames tag while the point is made or used;
+* a circle by its centre ("Kreis um 3"), a line by two of its points, the
+  stroke line and the crank circle by their names in the books; a curve's own
+  name in the caption of the step that draws it is left out (the figure has
+  no letter for it: "Mittelsenkrechte c6.N4.m von ..." -> "Mittelsenkrechte von ...");
+* two names written together (the segment ``D0P6``) are split and joined by a dash;
+* the English text gets the book's symbols: w -> ω, lam -> λ, sqrt -> √, ^2 -> ².
+
+One pass over each caption with an identifier pattern and dictionary
+look-ups: linear in the caption, independent of the number of steps; a name
+is looked at, its neighbours read only as far as a slot word or a noun can
+reach.  What a figure shows of a caption is bounded (:data:`CAPTION_LIMIT`,
+:func:`displayed`); the protocol keeps the whole text.
+
+>>> r = Reader({"P12": ("point", "12", None, ()), "D1": ("point", "B", None, ()),
+...             "T4.k": ("circle", None, "circle_through", ("P12", "D1"))})
+>>> r.text("Kreis um P12 durch D1", "de")
+'Kreis um 12 durch B'
+>>> r.text("D1 where T4.k meets axis", "en", outputs=("D1",))
+'B where the circle about 12 meets axis'
+>>> r.text("segment P12D1, angle w = 2w, sqrt(L^2 + 8 r^2), lam cos 2w", "en")
+'segment 12–B, angle ω = 2ω, √(L² + 8 r²), λ cos 2ω'
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+from typing import Mapping, Sequence
+
+__all__ = ["Reader", "book_symbols", "equation", "subscripts", "tag", "displayed", "CAPTION_LIMIT", "TITLE_LIMIT",
+           "letter_steps", "object_kind"]
+
+#: The most characters of a step's caption (or a group's title) a figure shows; a longer one is
+#: cut and ends in "…".  The books' step captions are at most 82 characters; 400 is about three
+#: lines of the default 960 px canvas.  Every frame of a figure is as tall as its longest
+#: caption, so one step's caption must not grow without bound.
+CAPTION_LIMIT = 400
+#: The same for a figure's title or plate caption, which lists every parameter: the gallery's
+#: longest is 366 characters; 1000 is about eight lines.
+TITLE_LIMIT = 1000
+#: How much of a caption is rewritten at most: rewriting shortens names (a helper ``T7.G.M1`` is
+#: shown as M1, a step's own curve not at all), so more than the limit is read -- but not all of a
+#: caption of megabytes, whose end no one sees.
+_READ_LIMIT = 16 * CAPTION_LIMIT
+
+#: An identifier as the constructions write object names: letters, digits, dots inside.
+_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*")
+#: Words after which the instruments' captions put an object's name ("Kreis um X durch Y", "X where a meets b").
+_SLOTS = {"um", "durch", "von", "und", "mit", "zu", "about", "through", "where", "meets", "and", "of", "from", "with", "for"}
+
+#: Nouns after which a lower-case name is a word of the sentence ("crank circle", "axis line").
+_NOUNS = {"circle", "line", "centre", "center", "kreis", "linie", "gerade"}
+#: The word after a name, read no further than the longest noun and one character beyond it
+#: (lower-casing never shortens a word, so a longer word is no noun).
+_NEXT_WORD = re.compile(r"\s*([^ ]{0,%d})" % (max(map(len, _NOUNS)) + 1))
+_LONGEST_SLOT = max(map(len, _SLOTS))
+
+#: How the books name the objects every crank figure has.
+_COMMON = {
+    "axis": ("Hubachse", "the stroke line"),
+    "crank": ("Kurbelkreis", "the crank circle"),
+    "vert": ("Senkrechte durch O", "the perpendicular through O"),
+}
+
+#: Greek letters the constructions spell out in ASCII ("(4/pi) r alpha", "omega^2").
+_GREEK = {"omega": "ω", "alpha": "α", "beta": "β", "kappa": "κ", "delta": "δ", "lambda": "λ", "pi": "π"}
+
+_SUPER = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
+_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def displayed(text: str, limit: int = CAPTION_LIMIT) -> str:
+    """*text* as a figure shows it: at most *limit* characters, a cut one ending in "…".
+
+    >>> displayed("Kreis um 3 durch 12"), displayed("x" * 1000, 10)
+    ('Kreis um 3 durch 12', 'xxxxxxxxx…')
+    """
+    return text if len(text) <= limit else text[: limit - 1] + "…"
+
+
+def tag(name: str, letters: "frozenset[str] | set[str]" = frozenset()) -> str:
+    """The short name of an unlettered point: the last part of its dotted name.
+
+    Where that is a letter the figure already uses (the helper ``ordD.A`` beside
+    the dead centre A), a single capital is written small and anything else keeps
+    the part before it.
+
+    >>> tag("T7.G.M1"), tag("ordD.A", {"A", "B"}), tag("D.2", {"2"}), tag("Dx")
+    ('M1', 'a', 'D2', 'Dx')
+    """
+    parts = name.split(".")
+    last = parts[-1]
+    if last in letters:
+        if len(last) == 1 and last.isupper():
+            return last.lower()
+        if len(parts) > 1:
+            return parts[-2].rsplit(".", 1)[-1] + last
+    return last
+
+
+def subscripts(text: str) -> str:
+    """Subscripts written with an underscore: digits as subscript digits, letters run on (p_ü -> pü).
+
+    >>> subscripts("F·p_ü, x_1, q_max")
+    'F·pü, x₁, qmax'
+    """
+    return re.sub(r"(?<=[^\W_])_([^\W_]+)", lambda m: m.group(1).translate(_SUB), text)
+
+
+def equation(text: str) -> str:
+    """Equation numbers as the book prints them: ``Gl. 4_1`` -> ``Gl. (4₁)``, ``Gl. (4_1)`` likewise.
+
+    >>> equation("Gl. 4_1, Tabelle 1; Gl. (h); Gl. 1")
+    'Gl. (4₁), Tabelle 1; Gl. (h); Gl. (1)'
+    """
+    if "Gl." not in text:
+        return text
+
+    def sub(m: "re.Match[str]") -> str:
+        num, low = m.group(1), m.group(2)
+        return f"Gl. ({num}{low.translate(_SUB) if low else ''})"
+    return re.sub(r"Gl\. \(?(\d+)(?:_(\d+))?\)?", sub, text)
+
+
+#: (pattern, replacement) in the order :func:`book_symbols` applies them, compiled once.
+_SYMBOLS = tuple((re.compile(p), r) for p, r in (
+    (r"(?<![A-Za-z])lam(?![A-Za-z])", "λ"),
+    (r"\b(omega|alpha|beta|kappa|delta|lambda|pi)\b", lambda m: _GREEK[m.group(1)]),
+    (r"(?<![A-Za-z])w(?=\d|\b)", "ω"),
+    (r"(?<=[\w)]) sqrt\b\s*(?=[(\dA-Za-z])", "√"),   # r sqrt 2 -> r√2
+    (r"\bsqrt\b\s*(?=[(\dA-Za-z])", "√"),
+    (r"(?<=[\s(=])-(?=[\w(])", "−"),   # a minus, not a hyphen
+    (r"\^(\d+)", lambda m: m.group(1).translate(_SUPER)),
+    (r"(\d) degrees\b", r"\1°"),
+))
+
+
+def book_symbols(text: str) -> str:
+    """ASCII stand-ins for the book's symbols replaced: ω, λ, √, exponents, subscripts.
+
+    >>> book_symbols("r cos w + lam r cos 2w (w = 0), r sqrt 2, L^2, w5 = AOW5, with w")
+    'r cos ω + λ r cos 2ω (ω = 0), r√2, L², ω5 = AOW5, with ω'
+    >>> book_symbols("(4/pi) r alpha, omega^2 R, crank at 90 degrees")
+    '(4/π) r α, ω² R, crank at 90°'
+    """
+    for pattern, rep in _SYMBOLS:
+        text = pattern.sub(rep, text)
+    return equation(text)
+
+
+class Reader:
+    """Rewrites captions for one figure.
+
+    *objects* maps each drawable object's name to (kind, label, maker op, maker inputs),
+    kind one of point, line, circle, curve, area.
+    """
+
+    def __init__(self, objects: Mapping[str, tuple[str, str | None, str | None, tuple[str, ...]]]):
+        self.objects = objects
+        self.points = {n for n, v in objects.items() if v[0] == "point"}
+
+    # -- one name -------------------------------------------------------------------------
+    def point(self, name: str) -> str:
+        """The letter a point goes by in the figure (see :func:`tag`)."""
+        label = self.objects[name][1]
+        if label:
+            return label
+        parts = name.rsplit(".", 1)
+        # the helper of a lettered point, named for it (X.c45: the piston position of 45°): X(45°)
+        other = self.objects.get(parts[-1]) if len(parts) == 2 and len(parts[0].rsplit(".", 1)[-1]) == 1 else None
+        if other is not None and other[1]:
+            return f"{parts[0].rsplit('.', 1)[-1]}({other[1]})"  # X.c45, the piston position of 45°: X(45°)
+        return tag(name, self.letters)
+
+    @functools.cached_property
+    def letters(self) -> frozenset[str]:
+        return frozenset(v[1] for v in self.objects.values() if v[1])
+
+    def curve_points(self, name: str) -> list[str]:
+        """The points the description of a curve names (a circle's centre, two points of a line)."""
+        kind, label, op, inputs = self.objects[name]
+        if label or name in _COMMON:
+            return []
+        pts = [p for p in inputs if p in self.points]
+        if kind == "line" and op == "line":
+            return pts[:2]
+        return pts[:1]
+
+    def curve(self, name: str, lang: str) -> str:
+        """A lettered or described line or circle."""
+        kind, label, op, inputs = self.objects[name]
+        if label:
+            return label
+        i = 0 if lang == "de" else 1
+        if name in _COMMON:
+            return _COMMON[name][i]
+        pts = [p for p in inputs if p in self.points]
+        if kind == "circle" and pts:
+            return ("Kreis um ", "the circle about ")[i] + self.point(pts[0])
+        if kind == "line" and len(pts) >= 2 and op == "line":
+            return ("Gerade ", "the line ")[i] + self._pair(self.point(pts[0]), self.point(pts[1]))
+        if kind == "line" and pts:
+            return ("Gerade durch ", "the line through ")[i] + self.point(pts[0])
+        return ("Kreis", "the circle")[i] if kind == "circle" else ("Gerade", "the line")[i]
+
+    @staticmethod
+    def _pair(a: str, b: str) -> str:
+        # Two single capitals read as a segment (AB); numbers and primes need a dash (3–6).
+        return a + b if len(a) == 1 == len(b) and a.isalpha() and b.isalpha() else f"{a}–{b}"
+
+    @functools.cached_property
+    def _point_lengths(self) -> tuple[int, ...]:
+        return tuple(sorted({len(p) for p in self.points}))
+
+    def _split(self, token: str) -> tuple[str, str] | None:
+        """``D0P6`` -> (D0, P6): two point names written together, if the token is exactly that."""
+        if len(token) > 64:  # no point name is this long: not cached, a caption of megabytes stays out of memory
+            return self._split_once(token)
+        cache = self.__dict__.setdefault("_split_cache", {})
+        got = cache.get(token, cache)
+        if got is cache:  # the words of the captions recur on every step ("Kreis", "durch")
+            got = cache[token] = self._split_once(token)
+            if len(cache) > 100_000:
+                cache.clear()
+        return got
+
+    def _split_once(self, token: str) -> tuple[str, str] | None:
+        if token[1:].islower() and "." not in token and not any(c.isdigit() for c in token):
+            return None  # a word ("Kreis", "durch"): not two names
+        # Only cuts where both halves have the length of some point's name are tried, shortest
+        # first: a token of megabytes is not sliced at every character.
+        lengths = self._point_lengths
+        n = len(token)
+        for i in lengths:
+            if i >= n:
+                break
+            if n - i in lengths and token[:i] in self.points and token[i:] in self.points:
+                return token[:i], token[i:]
+        return None
+
+    # -- a caption ------------------------------------------------------------------------
+    def mentioned(self, caption: str) -> set[str]:
+        """The points *caption* names, directly, as a pair (D0P6) or as the centre of a circle it names."""
+        out: set[str] = set()
+        for m in _NAME.finditer(caption):
+            token = m.group(0)
+            obj = self.objects.get(token)
+            if obj is None:
+                out.update(self._split(token) or ())
+            elif obj[0] == "point":
+                out.add(token)
+            elif obj[0] in ("circle", "line"):
+                out.update(self.curve_points(token))
+        return out
+
+    def text(self, caption: str, lang: str, outputs: Sequence[str] = (), *, whole: bool = False) -> str:
+        """*caption* (in *lang*, "de" or "en") in the figure's letters; *outputs* are the step's own objects.
+
+        What a figure shows: at most :data:`CAPTION_LIMIT` characters (:func:`displayed`);
+        *whole*: the whole text, as the protocol keeps it.
+        """
+        cut = len(caption) > _READ_LIMIT and not whole
+        if cut:
+            caption = caption[:_READ_LIMIT]
+        made = set(outputs)
+        out: list[str] = []
+        pos = 0
+        for m in _NAME.finditer(caption):
+            token = m.group(0)
+            start, end = m.span()
+            obj = self.objects.get(token)
+            rep: str | None = None
+            word = token.isalpha() and token.islower()
+            if obj is None:
+                pair = self._split(token)
+                if pair:
+                    rep = self._pair(self.point(pair[0]), self.point(pair[1]))
+            elif word and _NEXT_WORD.match(caption, end).group(1).lower() in _NOUNS:
+                rep = None  # a word of the sentence that names a thing ("crank circle about O")
+            elif (obj[0] in ("line", "circle") and token in made and not obj[1]
+                  and not (token.isalpha() and token.isupper())):
+                rep = ""  # the step's own helper line or circle: the figure has no letter for it
+            elif word and not self._names_slot(caption, start, end):
+                rep = None  # an ordinary word that is also a name ("crank centre", "the axis")
+            elif obj[0] in ("point", "length"):
+                rep = self.point(token)
+            elif obj[0] in ("line", "circle"):
+                rep = self.curve(token, lang)
+            if rep is None:
+                continue
+            out.append(caption[pos:start])
+            out.append(rep)
+            pos = end
+        out.append(caption[pos:])
+        text = "".join(out)
+        text = re.sub(r"  +", " ", text).replace(" :", ":").replace("( ", "(").strip()
+        # "im Schnitt von Kreis um 3" reads better with the article the English already has
+        if lang == "de":
+            text = text.replace("von Kreis um", "vom Kreis um").replace("und Kreis um", "und dem Kreis um")
+        else:
+            text = text.replace(" the the ", " the ")
+        text = subscripts(book_symbols(text))
+        if whole:
+            return text
+        if cut and not text.endswith("…"):
+            text = text[: CAPTION_LIMIT - 1] + "…"
+        return displayed(text)
+
+    @staticmethod
+    def _names_slot(text: str, start: int, end: int) -> bool:
+        """Is the word at text[start:end] where a caption names an object ("Kreis um top", "where axis meets")?
+
+        The word before it (``text[:start].rstrip().rsplit(" ", 1)[-1]``), read back no
+        further than the longest slot word: a caption's length is not read per name.
+        """
+        if text[end:end + 1] == "-":
+            return False
+        j = start
+        while j > 0 and text[j - 1].isspace():
+            j -= 1
+        lo = max(0, j - _LONGEST_SLOT - 1)
+        space = text.rfind(" ", lo, j)
+        if space < 0 and lo > 0:
+            return False  # longer than any slot word
+        return text[space + 1:j].lower() in _SLOTS
+
+
+def object_kind(obj: object) -> str | None:
+    """What a caption calls a constructed value: point, line, circle, curve, area, length (None: a number)."""
+    from .geometry import Circle, Length, Line, Point
+
+    if isinstance(obj, Point):
+        return "point"
+    if isinstance(obj, Line):
+        return "line"
+    if isinstance(obj, Circle):
+        return "circle"
+    if hasattr(obj, "rings"):
+        return "area"
+    if hasattr(obj, "curve_points"):
+        return "curve"
+    if isinstance(obj, Length):
+        return "length"  # a compass opening laid off: named like a helper point (J.h1 -> h1)
+    return None
+
+
+def letter_steps(steps: Sequence, objects: Mapping[str, object]) -> list:
+    """*steps* with every caption in the figure's letters.
+
+    *objects*: the values the steps made (name -> Point, Line, ...); each step's
+    ``labels`` letter its outputs.  A caption already in letters is left as it is
+    (the protocol marks itself ``captions = letters``: a second reading could take a
+    letter for another object's name).
+
+    >>> from construct.kernel.instruments import Builder
+    >>> b = Builder("demo", givens={})
+    >>> _ = b.given_point("A", 0.0, 0.0); _ = b.given_point("B", 2.0, 0.0, label="E")
+    >>> _ = b.circle_through("T7.k", "A", "B"); _ = b.circle_through("T7.m", "B", "A")
+    >>> from construct.kernel.rules import toward
+    >>> _ = b.intersect("T7.G.M1", "T7.k", "T7.m", rule=toward(dy=1.0))
+    >>> [s.caption.en for s in b.protocol().steps][1:]
+    ['point E given', 'circle about A through E', 'circle about E through A', 'M1 where the circle about A meets the circle about E']
+    """
+    from dataclasses import replace
+
+    from .protocol import Caption
+
+    makers = {n: s for s in steps for n in s.outputs}
+    table: dict[str, tuple[str, str | None, str | None, tuple[str, ...]]] = {}
+    for s in steps:
+        labels = dict(s.labels)
+        for name in s.outputs:
+            kind = object_kind(objects.get(name))
+            if kind is not None:
+                table[name] = (kind, labels.get(name), makers[name].op, tuple(makers[name].inputs))
+    reader = Reader(table)
+    out = []
+    for s in steps:
+        de = reader.text(s.caption.de, "de", s.outputs, whole=True)
+        en = reader.text(s.caption.en, "en", s.outputs, whole=True)
+        out.append(s if (de, en) == (s.caption.de, s.caption.en) else replace(s, caption=Caption(de, en)))
+    return out

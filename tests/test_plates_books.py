@@ -1,0 +1,138 @@
+"""The plates after the books: letters, scales, closed outlines and the line hierarchy the originals show.
+
+Expectations from the texts (seed 001: "Im Punkte J ... zwischen J und C negativ", Baumann's Fig. 26
+"Tangentialdruckdiagramm ABCD", "Ausgleichende MM", the abscissae α1, α2; Fig. 566's two diagrams) and
+from the analytic formulas, not from the plates' own output.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+import pytest
+
+from construct.constructions import analytic
+from construct.constructions import get
+from construct.render.output import plate_caption, scene_for
+from construct.render.styles import STYLES
+from construct.render.svg import render_svg
+
+
+def _plate_svg(name: str, **params) -> str:
+    c = get(name)
+    fig = c.figure(**params)
+    return render_svg(scene_for(c, fig, plate=True), style=STYLES["historical"], caption=plate_caption(c, fig, 1))
+
+
+def _texts(svg: str) -> list[str]:
+    return re.findall(r'<text[^>]*class="lb[^"]*"[^>]*>([^<]*)</text>', svg)
+
+
+def _furniture(name: str, **params):
+    c = get(name)
+    fig = c.figure(**params)
+    return fig, c.extra["plate"](fig)
+
+
+def test_indicator_diagram_is_one_closed_outline_at_result_weight():
+    fig, plate = _furniture("indicator-diagram")
+    R = fig.replay
+    n = fig.params["divisions"]
+    heavy = [(tuple(s["a"]), tuple(s["b"])) for s in plate["furniture"] if s["kind"] == "stroke" and s["look"] == "heavy"]
+    # the two curves run from the cut-off to the end of the stroke and from the start of compression to it
+    exp = [tuple(p) for p in R["expansion"].curve_points()]
+    comp = [tuple(p) for p in R["compression"].curve_points()]
+    edges = heavy + [(exp[0], exp[-1]), (comp[0], comp[-1])]
+    degree: dict[tuple, int] = {}
+    for a, b in edges:
+        for p in (a, b):
+            key = (round(p[0], 9), round(p[1], 9))
+            degree[key] = degree.get(key, 0) + 1
+    assert len(edges) == 6 and all(d == 2 for d in degree.values()), degree  # a closed loop of six pieces
+    assert {plate["looks"]["expansion"], plate["looks"]["compression"]} == {"heavy"}
+    # admission at P + P0 = 8 at absolute, back pressure at P0 = 0.15 at (Baumann's numbers), in the drawn scale
+    u = R.givens["pressure_unit"]
+    assert math.isclose(R["A0"][1] / u, 7.85 + 0.15, rel_tol=1e-12) and math.isclose(R["B0"][1] / u, 0.15, rel_tol=1e-12)
+
+
+def test_indicator_plate_letters_with_subscripts_and_a_pressure_scale():
+    texts = _texts(_plate_svg("indicator-diagram"))
+    assert {"s₁", "s₂", "A₁", "C₂"} <= set(texts) and not {"s1", "s2", "A1", "C2"} & set(texts)
+    assert "at" in texts and {"0", "4", "8"} <= set(texts)  # the scale from the zero line to P + P0 = 8 at
+
+
+def test_piston_force_plate_letters_scale_and_line_hierarchy():
+    svg = _plate_svg("piston-force")
+    texts = set(_texts(svg))
+    assert {"O", "C", "J", "kg", "P = F·pü", "Pb"} <= texts
+    assert "10000" in texts and "0" in texts  # P = F p at admission: 1529 cm² x 7 at = 10 700 kg
+    fig, plate = _furniture("piston-force")
+    looks = plate["looks"]
+    assert looks["forcea"] == looks["mass"] == "heavy" and looks["fbase"] == "thin"
+    # C is the end of the force line, below the base line (the force is negative there: "zwischen J und C negativ")
+    n = fig.params["parts"]
+    assert fig.replay[f"K{n}"][1] < fig.replay[f"F{n}"][1]
+
+
+def test_the_low_pressure_plate_says_it_shows_the_high_pressure_diagram():
+    c = get("piston-force")
+    de, en = plate_caption(c, c.figure(weight=990.0), 13)
+    assert "Dampfdiagramm der Hochdruckseite" in de and "high-pressure side's steam diagram" in en
+
+
+def test_tangential_plate_has_baumanns_letters_and_keeps_the_crossings_clear():
+    svg = _plate_svg("tangential-pressure", parts=18)
+    texts = _texts(svg)
+    assert {"A", "B", "D", "α₁", "α₂"} <= set(texts) and texts.count("M") >= 2
+    fig, plate = _furniture("tangential-pressure", parts=18)
+    assert plate["looks"]["A1"] == plate["looks"]["A2"] == "unlettered"
+    base_y = fig.replay["U0"][1]
+    mean_y = fig.replay["M0"][1]
+    for item in plate["furniture"]:
+        if item["kind"] == "lettering" and item["text"].startswith("α"):
+            assert item["at"][1] < base_y < mean_y  # lettered below the base line, away from the crossing
+
+
+def test_two_cranks_plate_no_line_runs_across_the_gap_and_the_reference_circle_is_lighter():
+    c = get("two-cranks")
+    fig = c.figure(parts=12)
+    sc = scene_for(c, fig, plate=True)
+    R = fig.replay
+    r = R["O"].distance(R["D1"])
+    gap = (R["O"][0] + 1.25 * r, R["O'"][0] - 1.25 * r)
+    for m in sc.marks:
+        if m.kind == "segment":
+            x0, _, x1, _ = m.geom
+            assert not (min(x0, x1) < gap[0] and max(x0, x1) > gap[1]), m.name
+    for it in sc.furniture:
+        if type(it).__name__ == "Stroke":
+            assert not (min(it.a[0], it.b[0]) < gap[0] and max(it.a[0], it.b[0]) > gap[1]), it
+    looks = {m.name: m.look for m in sc.marks}
+    assert looks["crank"] == "medium" and looks["wave"] == "heavy"
+
+
+def test_stroke_fraction_plate_draws_q_as_ordinates_with_their_values():
+    fig, plate = _furniture("inertia-stroke-fractions")
+    g = fig.replay.givens
+    r, L, u = g["r"], g["rod_ratio"] * g["r"], g["pressure_unit"]
+    heavy = [s for s in plate["furniture"] if s["kind"] == "stroke" and s["look"] == "heavy"]
+    assert len(heavy) == 11
+    for j, s in enumerate(heavy):
+        # Tabelle 2: q at j/10 of the stroke, the crank angle by Gl. (h), q by Gl. (4₁)
+        w = analytic.crank_angle_from_path(2.0 * r * j / 10, r, L)
+        q = analytic.inertia_two_term(w, r / L, g["pressure_ratio"])
+        assert math.isclose((s["b"][1] - s["a"][1]) / u, q, abs_tol=1e-6), (j, q)
+    values = [t["text"] for t in plate["furniture"] if t["kind"] == "lettering" and t["text"][:1] in "+−"]
+    assert values[0] == "+1,200" and values[-1] == "−0,800"  # 1 + r/L and -(1 - r/L) at the dead centres
+
+
+def test_stroke_fraction_plate_fills_its_sheet():
+    c = get("inertia-stroke-fractions")
+    fig = c.figure()
+    sc = scene_for(c, fig, plate=True)
+    x0, y0, x1, y1 = sc.bbox
+    r = fig.replay.givens["r"]
+    # the sheet holds the semicircle and the q diagram under it: no empty band of several crank radii
+    # (the proportional angle at SO = L = 5 r below the centre made it 60 % empty)
+    assert (y1 - y0) < 3.6 * r and (x1 - x0) > 2.0 * r

@@ -34,10 +34,10 @@ from .scene import Scene, _extreme_points
 
 __all__ = ["step_views", "ZOOM_LEVELS", "level", "level_css", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of"]
 
-#: A view never magnifies the whole figure more than this many times.
-MAX_ZOOM = 8.0
+#: A view never magnifies the whole figure more than this many times (more would lose where it sits).
+MAX_ZOOM = 4.0
 #: Room around a group's working region, as a fraction of its size on every side.
-CONTEXT = 0.45
+CONTEXT = 0.6
 #: A group whose padded region covers more than this fraction of the figure (in width or height) shows the whole.
 WHOLE_ABOVE = 0.6
 
@@ -66,6 +66,8 @@ def level_css() -> str:
     for i, z in enumerate(ZOOM_LEVELS[1:], start=1):
         rules.append(f".zl{i} .lbg>*,.zl{i} .pt{{transform:scale({fmt(1 / z, 4)})}}")
     rules.append(",".join(f".zl{i} .lbx" for i in range(THIN_FROM, len(ZOOM_LEVELS))) + "{display:inline}")
+    # a letter that would lie on another at a zoom level gives way there (svg.Drawing._zoom_hiding)
+    rules.append(",".join(f".zl{i} .h{i}" for i in range(1, len(ZOOM_LEVELS))) + "{display:none}")
     return "\n".join(rules)
 
 

@@ -314,6 +314,7 @@ class Drawing:
             self.vp = Viewport(win.xmin, win.ymax, win.scale, canvas.width, canvas.height, 0.0, win.left, win.top)
         self.doc = svgdoc.Writer()
         self._spots = self._letter_spots(self.vp)
+        self._hidden_at = self._zoom_hiding() if style.camera else {}
         # layer -> [(step, [element, ...]), ...] in step order: each step's elements of that layer.
         self.groups: dict[str, list[tuple[int, list[Any]]]] = {name: [] for name in self.LAYERS}
         placed: list[tuple[float, float, float, float]] = []
@@ -432,6 +433,7 @@ class Drawing:
                 pts = [vp.px(*q) for q in _polyline(m, vp.scale)]
                 lines.extend((a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:]))
         st = self.style
+        self._obstacles = (dots, lines)
         k = self.letter_scale
         size = k * st.label_size
         spots = place(items, size, dots, lines, font=st.label_font, italic=st.label_italic)
@@ -464,6 +466,44 @@ class Drawing:
             spots = {i: (pts[i][0] + (x - pts[i][0]) / k, pts[i][1] + (y - pts[i][1]) / k, d, thin)
                      for i, (x, y, d, thin) in spots.items()}
         return spots
+
+    def _zoom_hiding(self) -> dict[str, str]:
+        """Per letter, the zoom levels at which it gives way (classes ``h1`` ... ``h6``).
+
+        A magnified view keeps every letter at its screen size and distance from its
+        point while the points move apart, so two letters of nearby points may come
+        to lie on each other.  For every zoom level the letters are taken in the
+        placer's order (results, givens, the rest; by step) and one that would cover
+        a letter kept before it is hidden at that level: never a stack.
+        """
+        from .camera import THIN_FROM, ZOOM_LEVELS
+        from .lettering import RANK, _Grid, _Lines, label_box
+
+        st = self.style
+        size = st.label_size
+        dots, lines = self._obstacles
+        marks = {m.id: m for m in self.scene.marks if m.id in self._spots}
+        order = sorted(marks.values(), key=lambda m: (RANK.get(m.role, 2), m.step, m.id))
+        anchors = {i: self.vp.px(*m.geom) for i, m in marks.items()}
+        out: dict[str, str] = {}
+        r = 0.3 * size
+        for lvl, z in enumerate(ZOOM_LEVELS[1:], start=1):
+            grid = _Grid(2.0 * size)
+            for x, y in dots:
+                grid.add((x * z - r, y * z - r, x * z + r, y * z + r))
+            # the letters' own points are not obstacles to them: a letter sits beside its point
+            strokes = _Lines(1.5 * size, [tuple(c * z for c in seg) for seg in lines])
+            for m in order:
+                x, y, _d, thin = self._spots[m.id]
+                if thin and lvl < THIN_FROM:
+                    continue
+                px, py = anchors[m.id]
+                b = label_box(px * z + (x - px), py * z + (y - py), m.label or "", size, st.label_font, st.label_italic)
+                if grid.free(b) and not strokes.meets(b):
+                    grid.add(b)
+                else:
+                    out[m.id] = out.get(m.id, "") + f" h{lvl}"
+        return out
 
     @property
     def letter_scale(self) -> float:
@@ -500,7 +540,7 @@ class Drawing:
                     lid = {"id": f"{mid}-label"} if mid else {}
                     px, py = vp.px(*m.geom)
                     rel = (box[0] - px, box[1] - py, box[2] if len(box) > 2 else 0.0)
-                    extra = " lbx" if len(box) > 3 and box[3] else ""
+                    extra = (" lbx" if len(box) > 3 and box[3] else "") + self._hidden_at.get(m.id, "")
                     yield "labels", self._letter(vp, m, rel, m.label, "lb", lid, extra=extra)
             return
         layer = "results" if m.role == "result" else "construction"

@@ -87,7 +87,7 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
     w, h = fmt(d.vp.width), fmt(d.drawing_height)
     dwg = d.doc.drawing(size=(None, None), viewBox=f"0 0 {w} {h}", id="figure", role="img",
                         **{"data-full": f"0 0 {w} {h}"})
-    dwg.add(f.style("\n" + style.css() + "\n" + group_css(style) + "\n"))
+    dwg.add(f.style("\n" + style.css() + "\n" + group_css(style) + "\n" + (d.extra_css + "\n" if d.extra_css else "")))
     dwg.add(f.rect(insert=("-10000", "-10000"), size=("20000", "20000"), fill=style.background))
     for layer in d.LAYERS:
         lg = f.g(id=layer)

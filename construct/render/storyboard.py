@@ -223,7 +223,7 @@ def storyboard_svg(drawing: Drawing, *, columns: int = 4) -> str:
     cell_h = th + 2.6 * TILE_FONT + gap
     width, height = columns * (tw + gap) + gap, head + rows * cell_h
     dwg = doc.drawing(size=(fmt(width), fmt(height)), viewBox=f"0 0 {fmt(width)} {fmt(height)}")
-    css = (style.css() + f"\n.sheet{{fill:{style.ink};font-family:'DejaVu Sans',Arial,sans-serif;"
+    css = (style.css() + (f"\n{drawing.extra_css}" if drawing.extra_css else "") + f"\n.sheet{{fill:{style.ink};font-family:'DejaVu Sans',Arial,sans-serif;"
            f"font-size:{fmt(TILE_FONT)}px;text-anchor:middle}}\n.sheet.title{{font-size:{fmt(1.3 * TILE_FONT)}px}}"
            f"\n.frame{{fill:{style.background};stroke:#bbbbbb;stroke-width:0.5}}")
     dwg.add(f.style("\n" + css + "\n"))

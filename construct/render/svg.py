@@ -314,7 +314,7 @@ class Drawing:
             self.vp = Viewport(win.xmin, win.ymax, win.scale, canvas.width, canvas.height, 0.0, win.left, win.top)
         self.doc = svgdoc.Writer()
         self._spots = self._letter_spots(self.vp)
-        self._hidden_at = self._zoom_hiding() if style.camera else {}
+        self._hidden_at, self._level_rules = self._zoom_placing() if style.camera else ({}, [])
         # layer -> [(step, [element, ...]), ...] in step order: each step's elements of that layer.
         self.groups: dict[str, list[tuple[int, list[Any]]]] = {name: [] for name in self.LAYERS}
         placed: list[tuple[float, float, float, float]] = []
@@ -333,9 +333,8 @@ class Drawing:
             last = None
             for k, v in enumerate(self.views, start=1):
                 if v != last:
-                    text = view_text(v)
                     runs.append((k, [self.doc.frozen(f.rect(insert=(fmt(v[0]), fmt(v[1])), size=(fmt(v[2]), fmt(v[3])),
-                                                            class_="view", **{"data-view": text}))]))
+                                                            class_="view"))]))
                     last = v
         self._steps = {name: [k for k, _ in runs] for name, runs in self.groups.items()}
 
@@ -434,6 +433,7 @@ class Drawing:
                 lines.extend((a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:]))
         st = self.style
         self._obstacles = (dots, lines)
+        self._letter_items = items
         k = self.letter_scale
         size = k * st.label_size
         spots = place(items, size, dots, lines, font=st.label_font, italic=st.label_italic)
@@ -467,43 +467,51 @@ class Drawing:
                      for i, (x, y, d, thin) in spots.items()}
         return spots
 
-    def _zoom_hiding(self) -> dict[str, str]:
-        """Per letter, the zoom levels at which it gives way (classes ``h1`` ... ``h6``).
+    def _zoom_placing(self) -> tuple[dict[str, str], list[str]]:
+        """Letters placed again for every zoom level: (classes per letter, CSS rules).
 
-        A magnified view keeps every letter at its screen size and distance from its
-        point while the points move apart, so two letters of nearby points may come
-        to lie on each other.  For every zoom level the letters are taken in the
-        placer's order (results, givens, the rest; by step) and one that would cover
-        a letter kept before it is hidden at that level: never a stack.
+        A magnified view keeps letters at their screen size while the points move
+        apart, so the whole figure's spots may collide there.  For every zoom level
+        (:data:`construct.render.camera.ZOOM_LEVELS`) the placer runs again over all
+        letters with points and result lines spread by the level's zoom; a letter
+        whose spot differs gets a rule that moves it at that level (``.zlN
+        #id>*{transform:scale(..) translate(..)}``), one with no room hides there
+        (class ``hN``): a magnified view never stacks letters either.
         """
         from .camera import THIN_FROM, ZOOM_LEVELS
-        from .lettering import RANK, _Grid, _Lines, label_box
+        from .lettering import place
 
         st = self.style
         size = st.label_size
         dots, lines = self._obstacles
-        marks = {m.id: m for m in self.scene.marks if m.id in self._spots}
-        order = sorted(marks.values(), key=lambda m: (RANK.get(m.role, 2), m.step, m.id))
-        anchors = {i: self.vp.px(*m.geom) for i, m in marks.items()}
-        out: dict[str, str] = {}
-        r = 0.3 * size
+        items = self._letter_items
+        classes: dict[str, str] = {}
+        rules: list[str] = []
         for lvl, z in enumerate(ZOOM_LEVELS[1:], start=1):
-            grid = _Grid(2.0 * size)
-            for x, y in dots:
-                grid.add((x * z - r, y * z - r, x * z + r, y * z + r))
-            # the letters' own points are not obstacles to them: a letter sits beside its point
-            strokes = _Lines(1.5 * size, [tuple(c * z for c in seg) for seg in lines])
-            for m in order:
-                x, y, _d, thin = self._spots[m.id]
-                if thin and lvl < THIN_FROM:
+            its = [(i, r, s_, (p[0] * z, p[1] * z), d, t) for i, r, s_, p, d, t in items
+                   if i in self._spots and (lvl >= THIN_FROM or not self._spots[i][3])]
+            # letters at the size the player shows them at this level (on the zoomed canvas)
+            f = self.letter_scale_at(z) * z
+            got = place(its, size * f, [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
+                        font=st.label_font, italic=st.label_italic, keep=False)
+            for i, _r, _s, (zx, zy), _d, _t in its:
+                spot = got.get(i)
+                if spot is None:
+                    classes[i] = classes.get(i, "") + f" h{lvl}"
                     continue
-                px, py = anchors[m.id]
-                b = label_box(px * z + (x - px), py * z + (y - py), m.label or "", size, st.label_font, st.label_italic)
-                if grid.free(b) and not strokes.meets(b):
-                    grid.add(b)
-                else:
-                    out[m.id] = out.get(m.id, "") + f" h{lvl}"
-        return out
+                x, y = self._spots[i][0], self._spots[i][1]
+                px, py = zx / z, zy / z
+                ddx, ddy = (spot[0] - zx) / f - (x - px), (spot[1] - zy) / f - (y - py)
+                if abs(ddx) > 0.5 or abs(ddy) > 0.5:
+                    rules.append(f".zl{lvl} #{i}-lb>*{{transform:scale(var(--ls,{fmt(1 / z, 4)})) "
+                                 f"translate({fmt(ddx)}px,{fmt(ddy)}px)}}")
+                    classes[i] = classes.get(i, "") + " lbm"  # moved at some level: the group carries an id
+        return classes, rules
+
+    @property
+    def extra_css(self) -> str:
+        """The rules of this drawing alone (the letters moved per zoom level)."""
+        return "\n".join(self._level_rules)
 
     @property
     def letter_scale(self) -> float:
@@ -514,10 +522,15 @@ class Drawing:
         on the screen (its ``--ls``); a tall figure shown at half its size gets letters 1.6
         times their canvas size, and they are placed at that size.  1 without a camera.
         """
-        if not self.style.camera:
-            return 1.0
-        q = max(self.vp.width / PLAYER_FIGURE_PX[0], self.drawing_height / PLAYER_FIGURE_PX[1])
-        return min(max(1.0, 9.5 * q / self.style.label_size), q) if q > 1.0 else 1.0
+        return self.letter_scale_at(1.0) if self.style.camera else 1.0
+
+    def letter_scale_at(self, zoom: float) -> float:
+        """The player's letter scale (its ``--ls``: canvas units per letter unit) in a view magnifying *zoom*
+        times: letters at 12 px on the screen, never below 9.5 px (:attr:`letter_scale` for the whole)."""
+        q = max(self.vp.width / PLAYER_FIGURE_PX[0], self.drawing_height / PLAYER_FIGURE_PX[1]) / zoom
+        if zoom == 1.0 and q <= 1.0:
+            return 1.0  # the whole figure as drawn on the canvas
+        return min(max(1.0, 9.5 * q / self.style.label_size), q)
 
     def _elements(self, m: Mark, vp: Viewport, placed: list, mid: str | None):
         """(layer, svgwrite element) of a mark's elements; the label (if any) is a second one."""
@@ -541,7 +554,9 @@ class Drawing:
                     px, py = vp.px(*m.geom)
                     rel = (box[0] - px, box[1] - py, box[2] if len(box) > 2 else 0.0)
                     extra = (" lbx" if len(box) > 3 and box[3] else "") + self._hidden_at.get(m.id, "")
-                    yield "labels", self._letter(vp, m, rel, m.label, "lb", lid, extra=extra)
+                    gid = {"id": f"{mid}-lb"} if mid and " lbm" in extra else {}
+                    extra = extra.replace(" lbm", "")
+                    yield "labels", self._letter(vp, m, rel, m.label, "lb", lid, extra=extra, gid=gid)
             return
         layer = "results" if m.role == "result" else "construction"
         g = m.geom
@@ -562,14 +577,14 @@ class Drawing:
                     yield "areas", f.path(d=d, class_="hatch", **hid)
 
     def _letter(self, vp: Viewport, m: Mark, rel: tuple[float, float, float], text: str, cls: str,
-                ids: dict, *, halo: bool = True, extra: str = "") -> Any:
+                ids: dict, *, halo: bool = True, extra: str = "", gid: dict | None = None) -> Any:
         """A letter about its point: ``<g class="lbg" transform="translate(point)">`` holding (leader,) halo
         and letter at *rel* (offset in pixels, distance in letter heights), so that a zoomed view
         can keep letters at their screen size and distance from the point (its children scaled by CSS)."""
         st = self.style
         f = self.doc.factory
         px, py = vp.px(*m.geom)
-        outer = inner = f.g(class_="lbg" + extra, transform=f"translate({fmt(px)} {fmt(py)})")
+        outer = inner = f.g(class_="lbg" + extra, transform=f"translate({fmt(px)} {fmt(py)})", **(gid or {}))
         dx, dy, dist = rel
         xy = dict(x=[fmt(dx)], y=[fmt(dy)])
         if dist >= LEADER_FROM:
@@ -607,7 +622,7 @@ class Drawing:
         vp, st = self.vp, self.style
         h = fmt(vp.height if height is None else height)
         w = fmt(vp.width)
-        css = st.css() + ("\n" + extra_css if extra_css else "")
+        css = st.css() + "".join("\n" + c for c in (self.extra_css, extra_css) if c)
         f = self.doc.factory
         dwg = self.doc.drawing(size=(w, h), viewBox=f"0 0 {w} {h}", **attrs)
         dwg.add(f.style("\n" + css + "\n"))
@@ -620,7 +635,7 @@ class Drawing:
         With fading (``Style.done_opacity``) a step whose helpers fade carries ``data-fade``:
         the last step of its group, after which the player and animation fade it too.
         """
-        if self.style.done_opacity < 1.0:
+        if self.style.done_opacity < 1.0 and not (elems and _is_view(elems[0])):
             end = self.scene.fade_end(k)
             if end is not None:
                 attrs = {**attrs, "data-fade": str(end)}
@@ -640,8 +655,11 @@ class Drawing:
         sc = self.scene
         return frozenset(s for s in (sc.step_of(n) for n in sc.inputs(k) | sc.tagged(k)) if s is not None and s < k)
 
-    def step_class(self, s: int, k: int, *, mark_steps: bool, inputs: frozenset[int] = frozenset()) -> str:
+    def step_class(self, s: int, k: int, *, mark_steps: bool, inputs: frozenset[int] = frozenset(),
+                   layer: str = "") -> str:
         """The class of step s's groups in frame k: cur, old (with inp), done (a finished group's helpers)."""
+        if layer == "views":
+            return ""  # the camera's boxes are data, never drawn
         fade = self.style.done_opacity < 1.0
         if not mark_steps:
             # the whole figure: every group finished, its helpers faint (teaching)
@@ -659,7 +677,7 @@ class Drawing:
         for a finished group's helpers), made once: the layered figure and the player carry the same ones."""
         cache = self.__dict__.setdefault("_plain_groups", {})
         if name not in cache:
-            cache[name] = [self.doc.frozen(self.step_group(k, elems, self.step_class(k, 0, mark_steps=False)))
+            cache[name] = [self.doc.frozen(self.step_group(k, elems, self.step_class(k, 0, mark_steps=False, layer=name)))
                            for k, elems in self.groups[name]]
         return cache[name]
 
@@ -672,7 +690,7 @@ class Drawing:
                 g.add(group)
             return g
         for s, elems in self.step_runs(name, k):
-            g.add(self.step_group(s, elems, self.step_class(s, k, mark_steps=mark_steps, inputs=inputs)))
+            g.add(self.step_group(s, elems, self.step_class(s, k, mark_steps=mark_steps, inputs=inputs, layer=name)))
         return g
 
     def body(self, k: int, *, mark_steps: bool) -> list[Any]:
@@ -895,6 +913,12 @@ class Drawing:
         zoom = win.scale / vp.scale
         out.add(f.text(f"× {zoom:.0f}", x=[fmt(px0 + 6)], y=[fmt(py0 + side - 6)], class_="cap grp"))
         return out
+
+
+def _is_view(elem: Any) -> bool:
+    """Is *elem* a camera box of the ``views`` layer (frozen or not)?"""
+    xml = getattr(elem, "xml", None)
+    return (xml.get("class") if xml is not None else getattr(elem, "attribs", {}).get("class")) == "view"
 
 
 def camera_transform(view: Sequence[float], full: Sequence[float]) -> str:

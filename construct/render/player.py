@@ -234,9 +234,10 @@ li a.later{color:#bbb}
   var zoom = document.getElementById("zoom");
   var full = svg.getAttribute("data-full").split(" ").map(Number);
   var now = svg.getAttribute("viewBox").split(" ").map(Number), anim = null, ringAt = null;
-  function ratio(v) {  // canvas pixels per screen pixel in view *v*
-    var w = svg.getBoundingClientRect().width || full[2];
-    return v[2] / w;
+  function ratio(v) {  // canvas pixels per screen pixel in view *v* (the view is fitted into the element)
+    var r = svg.getBoundingClientRect();
+    if (!r.width || !r.height) { return 1; }
+    return Math.max(v[2] / r.width, v[3] / r.height);
   }
   function put(v) {  // show view *v*: letters and points at their screen size (12 px, never below 9.5 px)
     var q = ratio(v);

@@ -250,3 +250,47 @@ def test_player_shows_markup_in_captions_as_text(browser, tmp_path):
     assert page.evaluate("() => document.querySelectorAll('script').length") == 2
     assert dialogs == []
     page.close()
+
+
+LETTERS_JS = """() => Array.from(document.querySelectorAll('#figure text.lb[id$="-label"]'))
+    .filter(t => t.getBoundingClientRect().width > 0)
+    .map(t => { const p = document.getElementById(t.id.slice(0, -6)); const a = t.getBoundingClientRect();
+                const b = p.getBoundingClientRect();
+                return [t.id, a.x + a.width / 2 - (b.x + b.width / 2), a.y + a.height / 2 - (b.y + b.height / 2), a.height]; })"""
+
+
+def test_player_camera_keeps_letters_on_their_points(browser, tmp_path):
+    """Through a magnifying view a letter keeps its screen size and its place beside its point (issue 16)."""
+    import json
+    import re
+
+    c = get("crank")
+    fig = c.figure(parts=6, rod_ratio=5.0)
+    write_replay(c, fig, tmp_path, style="teaching", frames="none")
+    html = (tmp_path / "player.html").read_text()
+    data = json.loads(re.search(r'<script type="application/json" id="data">(.*?)</script>', html, re.S).group(1))
+    full_w = float(re.search(r'data-full="0 0 ([\d.]+)', html).group(1))
+    # a step whose view magnifies at least twice
+    k = next(i for i, st in enumerate(data["steps"], start=1) if full_w / data["views"][st["v"]][2] >= 2.0)
+    page = browser.new_page(viewport={"width": 1400, "height": 1000})
+    page.clock.install()
+    page.goto((tmp_path / "player.html").as_uri() + f"#{k}")
+    page.clock.run_for(1000)  # the camera glides for 350 ms
+    box = [float(v) for v in page.get_attribute("#figure", "viewBox").split()]
+    assert box == pytest.approx(data["views"][data["steps"][k - 1]["v"]], abs=0.02)
+    zoomed = {i: (dx, dy, h) for i, dx, dy, h in page.evaluate(LETTERS_JS)}
+    page.click("#zoom")  # the magnifier off: the whole figure
+    page.clock.run_for(1000)
+    whole = {i: (dx, dy, h) for i, dx, dy, h in page.evaluate(LETTERS_JS)}
+    common = set(zoomed) & set(whole)
+    assert len(common) >= 2
+    moved = 0
+    for i in common:
+        zx, zy, zh = zoomed[i]
+        wx, wy, wh = whole[i]
+        assert zh == pytest.approx(wh, rel=0.15), i  # the same size on the screen
+        assert (zx * zx + zy * zy) ** 0.5 < 4.5 * zh, i  # beside its point, not drifted away
+        moved += abs(zx - wx) > 1.5 or abs(zy - wy) > 1.5
+    # letters move only where a zoom level placed them again (never all of them)
+    assert moved < len(common)
+    page.close()

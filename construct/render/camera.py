@@ -64,7 +64,7 @@ def level_css() -> str:
              ".construction,.result,.auxiliary,.given,.hatch,.fur,.ring{vector-effect:non-scaling-stroke}",
              ".lbx{display:none}"]
     for i, z in enumerate(ZOOM_LEVELS[1:], start=1):
-        rules.append(f".zl{i} .lbg>*,.zl{i} .pt{{transform:scale({fmt(1 / z, 4)})}}")
+        rules.append(f".zl{i}{{--zs:{fmt(1 / z, 4)}}}.zl{i} .lbg>*,.zl{i} .pt{{transform:scale({fmt(1 / z, 4)})}}")
     rules.append(",".join(f".zl{i} .lbx" for i in range(THIN_FROM, len(ZOOM_LEVELS))) + "{display:inline}")
     # a letter with no room at a zoom level gives way there (svg.Drawing._zoom_placing)
     rules.append(",".join(f".zl{i} .h{i}" for i in range(1, len(ZOOM_LEVELS))) + "{display:none}")

@@ -186,7 +186,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
           size: float, dots: Iterable[tuple[float, float]] = (),
           lines: Sequence[tuple[float, float, float, float]] = (), *, font: str = DEFAULT_FONT,
           italic: bool = False, taken: Iterable[tuple[float, float, float, float]] = (),
-          keep: bool = True) -> dict[str, tuple]:
+          keep: bool = True, prefer: "dict[str, tuple[float, float, float]] | None" = None) -> dict[str, tuple]:
     """Baseline positions (pixels) for letters: {id: (x, y, distance in letter heights, thin)}.
 
     A letter set farther than :data:`LEADER_FROM` letter heights from its point gets a
@@ -197,7 +197,9 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     drawing's y-up sense, text).  *dots*: points (pixels) a letter must not cover.
     *lines*: result lines as segments (pixels) a letter must not be struck by.
     *taken*: boxes already taken by letters placed before.  Without *keep*
-    a letter that finds no free spot is left out, whatever its rank.
+    a letter that finds no free spot is left out, whatever its rank.  *prefer*:
+    per letter an offset from its point (and its distance in letter heights)
+    tried before the ring, so that a letter stays where it was when it can.
     """
     grid = _Grid(2.0 * size)
     for b in taken:
@@ -213,7 +215,12 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
         first = None
         spot = None
         w = text_width(text, size, font, italic)
-        for dist in _DISTANCES:
+        if prefer and mid in prefer:
+            ox, oy, od = prefer[mid]
+            box = label_box(px + ox, py + oy, text, size, font, italic)
+            if grid.free(box) and not strokes.meets(box):
+                spot = (px + ox, py + oy, box, od)
+        for dist in (() if spot else _DISTANCES):
             for turn in _TURNS:
                 a = base + math.radians(turn)
                 # the letter's centre sits *dist* letter heights from the point (plus half its

@@ -487,13 +487,17 @@ class Drawing:
         items = self._letter_items
         classes: dict[str, str] = {}
         rules: list[str] = []
+        moves: dict[tuple[str, str], list[int]] = {}
         for lvl, z in enumerate(ZOOM_LEVELS[1:], start=1):
             its = [(i, r, s_, (p[0] * z, p[1] * z), d, t) for i, r, s_, p, d, t in items
                    if i in self._spots and (lvl >= THIN_FROM or not self._spots[i][3])]
             # letters at the size the player shows them at this level (on the zoomed canvas)
             f = self.letter_scale_at(z) * z
+            # each letter where it stands in the whole figure if there is room for it there
+            prefer = {i: ((self._spots[i][0] - p[0] / z) * f, (self._spots[i][1] - p[1] / z) * f, self._spots[i][2])
+                      for i, _r, _s, p, _d, _t in its}
             got = place(its, size * f, [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
-                        font=st.label_font, italic=st.label_italic, keep=False)
+                        font=st.label_font, italic=st.label_italic, keep=False, prefer=prefer)
             for i, _r, _s, (zx, zy), _d, _t in its:
                 spot = got.get(i)
                 if spot is None:
@@ -503,9 +507,12 @@ class Drawing:
                 px, py = zx / z, zy / z
                 ddx, ddy = (spot[0] - zx) / f - (x - px), (spot[1] - zy) / f - (y - py)
                 if abs(ddx) > 0.5 or abs(ddy) > 0.5:
-                    rules.append(f".zl{lvl} #{i}-lb>*{{transform:scale(var(--ls,{fmt(1 / z, 4)})) "
-                                 f"translate({fmt(ddx)}px,{fmt(ddy)}px)}}")
+                    moves.setdefault((i, f"translate({fmt(ddx)}px,{fmt(ddy)}px)"), []).append(lvl)
                     classes[i] = classes.get(i, "") + " lbm"  # moved at some level: the group carries an id
+        # one rule per letter and move, listing the levels it holds at (--zs: the level's letter scale)
+        for (i, move), lvls in moves.items():
+            rules.append(",".join(f".zl{lvl} #{i}-lb>*" for lvl in lvls)
+                         + f"{{transform:scale(var(--ls,var(--zs))) {move}}}")
         return classes, rules
 
     @property
@@ -544,9 +551,9 @@ class Drawing:
             yield "points", f.circle(center=vp.xy(*m.geom), r=fmt(r), class_=f"pt {cls}", **ids)
             if st.name_tags and not m.label and self.scene.tag_shown(m.name):
                 # Shown only while its step is the current one (CSS), so it takes no place from the letters.
-                tid = {"id": f"{mid}-tag"} if mid else {}
+                # no id of its own: it is its point's name, and a gallery carries thousands of them
                 yield "labels", self._letter(vp, m, (0.6 * st.label_size, -0.5 * st.label_size, 0.0),
-                                             self.scene.display_name(m.name), "lb tag", tid, halo=False)
+                                             self.scene.display_name(m.name), "lb tag", {}, halo=False)
             if m.label:
                 box = self._place_label(m, vp, placed)
                 if box is not None:

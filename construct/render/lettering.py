@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import functools
 import math
+import os
 from typing import Any, Iterable, Sequence
 
 __all__ = ["place", "label_box", "text_box", "text_width", "RANK", "LEADER_FROM", "DEFAULT_FONT"]
@@ -47,17 +48,27 @@ LEADER_FROM = 2.0
 #: The font a letter is measured in when none is named (the teaching style's).
 DEFAULT_FONT = "'DejaVu Sans', Arial, sans-serif"
 
+_SHIPPED = {("DejaVu Sans", False): "DejaVuSans.ttf", ("DejaVu Sans", True): "DejaVuSans-Oblique.ttf",
+            ("DejaVu Serif", False): "DejaVuSerif.ttf", ("DejaVu Serif", True): "DejaVuSerif-Italic.ttf"}
 _GENERIC = {"serif": "DejaVu Serif", "sans-serif": "DejaVu Sans", "monospace": "DejaVu Sans Mono"}
 
 
 @functools.lru_cache(maxsize=16)
 def _face(font: str, italic: bool) -> Any:
     """The FreeType face of the first family of the CSS *font* list matplotlib has (DejaVu at worst)."""
-    from matplotlib import font_manager, ft2font
+    from matplotlib import ft2font
 
     path = None
     for name in [n.strip().strip("'\"") for n in font.split(",")] + ["DejaVu Sans"]:
         name = _GENERIC.get(name, name)
+        shipped = _SHIPPED.get((name, italic))
+        if shipped:  # the DejaVu faces matplotlib ships: no font manager (its font list) needed
+            import matplotlib
+
+            path = os.path.join(matplotlib.get_data_path(), "fonts", "ttf", shipped)
+            break
+        from matplotlib import font_manager
+
         try:
             path = font_manager.findfont(font_manager.FontProperties(family=name, style="italic" if italic else "normal"),
                                          fallback_to_default=False)
@@ -83,6 +94,14 @@ def _glyph(font: str, italic: bool, char: str) -> tuple[float, float, float]:
     return g.linearHoriAdvance / 65536.0 / 100.0, y1 / 6400.0, y0 / 6400.0
 
 
+@functools.lru_cache(maxsize=65536)
+def _metrics(text: str, font: str, italic: bool) -> tuple[float, float, float]:
+    """(advance, top, bottom) of *text* in em: a figure's letters recur, each is measured once."""
+    glyphs = [_glyph(font, italic, c) for c in text]
+    return (sum(g[0] for g in glyphs), max((g[1] for g in glyphs), default=0.7),
+            min(min((g[2] for g in glyphs), default=0.0), 0.0))
+
+
 def text_width(text: str, size: float, font: str = DEFAULT_FONT, italic: bool = False) -> float:
     """The advance width of *text* at *size* px in the font's real metrics.
 
@@ -91,17 +110,16 @@ def text_width(text: str, size: float, font: str = DEFAULT_FONT, italic: bool = 
     >>> round(text_width("K17", 12.0), 3) == round(12.0 * (1343 + 2 * 1303) / 2048, 3)
     True
     """
-    return size * sum(_glyph(font, italic, c)[0] for c in text)
+    return size * _metrics(text, font, italic)[0]
 
 
 def text_box(x: float, y: float, text: str, size: float, font: str = DEFAULT_FONT, italic: bool = False,
              anchor: str = "middle") -> tuple[float, float, float, float]:
     """The box (pixels, y down) the inked *text* covers when set at baseline (x, y) with *anchor*."""
-    w = text_width(text, size, font, italic)
-    tops = [_glyph(font, italic, c)[1] for c in text] or [0.7]
-    bottoms = [_glyph(font, italic, c)[2] for c in text] or [0.0]
+    adv, top, bottom = _metrics(text, font, italic)
+    w = size * adv
     x0 = x - w / 2 if anchor == "middle" else (x - w if anchor == "end" else x)
-    return (x0, y - max(tops) * size, x0 + w, y - min(min(bottoms), 0.0) * size)
+    return (x0, y - top * size, x0 + w, y - bottom * size)
 
 
 def label_box(x: float, y: float, text: str, size: float, font: str = DEFAULT_FONT,

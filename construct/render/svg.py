@@ -367,6 +367,12 @@ class Drawing:
         screen than the ring (:attr:`Style.ring_px`) at step k's view; None when it is large enough."""
         if not self.style.ring_px or not 1 <= k <= len(self.scene.steps):
             return None
+        done = self.__dict__.setdefault("_rings", {})
+        if k not in done:  # the player and the animation ask for every step
+            done[k] = self._ring(k)
+        return done[k]
+
+    def _ring(self, k: int) -> tuple[float, float, float] | None:
         from .camera import zoom_of
 
         spans = self.__dict__.get("_mark_spans")

@@ -38,6 +38,8 @@ __all__ = ["step_views", "ZOOM_LEVELS", "level", "level_css", "MAX_ZOOM", "CONTE
 MAX_ZOOM = 4.0
 #: Room around a group's working region, as a fraction of its size on every side.
 CONTEXT = 0.6
+#: Room round the clean figure of the last step (its letters stand outside its points).
+FINAL_CONTEXT = 0.1
 #: A group whose padded region covers more than this fraction of the figure (in width or height) shows the whole.
 WHOLE_ABOVE = 0.6
 
@@ -182,7 +184,7 @@ def step_views(scene: Scene, full: View, bbox: Box, px: Callable[[float, float],
     out: list[View] = []
     for i, s in enumerate(scene.steps):
         if i == n - 1 and collapse and n > 1:
-            out.append(view_of((), final_box(scene), 0.04))  # the clean figure of the results
+            out.append(view_of((), final_box(scene), FINAL_CONTEXT))  # the clean figure of the results
             continue
         if i == 0 or i == n - 1 or not s.group:
             out.append(full)

@@ -187,7 +187,9 @@ class Style:
             rules.append(level_css())
         else:
             rules.append(".lbx{display:none}")
-        halo = f"fill:{self.background};stroke:{self.background};stroke-width:3.5px;stroke-linejoin:round"
+        from .lettering import HALO_PX
+
+        halo = f"fill:{self.background};stroke:{self.background};stroke-width:{fmt(HALO_PX)}px;stroke-linejoin:round"
         rules.append(f".lb.halo,.cur .lb.halo,.inp .lb.halo{{{halo}}}")
         rules.append(f".leader,.cur .leader,.inp .leader{{fill:none;stroke:{self.ink};stroke-width:0.4px}}")
         return "\n".join(rules)

@@ -198,6 +198,17 @@ def test_animated_svg_plays_by_its_clock(browser, tmp_path):
         latest, caption = at((k - 1) * dt + dt / 2)
         assert latest == max(j for j in drawn if j <= k), k
         assert caption.count("Schritt ") == 1 and f"Schritt {k} von {n}" in caption, caption
+    # the camera: at a step whose view magnifies, the drawing is shown through that view
+    from construct.render.output import scene_for
+    from construct.render.styles import STYLES
+    from construct.render.svg import Drawing
+
+    d = Drawing(scene_for(c, fig), STYLES["teaching"])
+    k = next(i for i in range(1, n + 1) if d.camera_view(i)[2] < 0.8 * d.full_view[2])
+    page.evaluate(f"() => document.documentElement.setCurrentTime({(k - 1) * dt + dt / 2})")
+    root_scale = page.evaluate("() => document.documentElement.getScreenCTM().a")
+    cam_scale = page.evaluate("() => document.getElementById('camera').getScreenCTM().a")
+    assert cam_scale / root_scale == pytest.approx(d.full_view[2] / d.camera_view(k)[2], rel=0.01)
     early = page.evaluate("() => { document.documentElement.setCurrentTime(0.1); return 0; }")
     first = page.screenshot(clip={"x": 0, "y": 0, "width": 960, "height": 600})
     page.evaluate(f"() => document.documentElement.setCurrentTime({n * dt + 1})")  # the hold at the end

@@ -92,6 +92,25 @@ def _keyed(f, attribute: str, values: list[str], times: list[float], total: floa
                      dur=f"{fmt(total)}s", fill="freeze", **extra)
 
 
+def _stage_view(d: Drawing, first: int, last: int) -> tuple[float, float, float, float]:
+    """The view of a stage: its one step's view, or the box round the views of its steps in the canvas's aspect."""
+    if first >= last:
+        return d.camera_view(last)
+    vs = [d.camera_view(k) for k in range(first, last + 1)]
+    if len(set(vs)) == 1:
+        return vs[0]
+    full = d.full_view
+    x0, y0 = min(v[0] for v in vs), min(v[1] for v in vs)
+    x1, y1 = max(v[0] + v[2] for v in vs), max(v[1] + v[3] for v in vs)
+    w = max(x1 - x0, (y1 - y0) * full[2] / full[3])
+    h = w * full[3] / full[2]
+    if w >= full[2] or h >= full[3]:
+        return full
+    x = min(max((x0 + x1) / 2 - w / 2, 0.0), full[2] - w)
+    y = min(max((y0 + y1) / 2 - h / 2, 0.0), full[3] - h)
+    return (round(x, 2), round(y, 2), round(w, 2), round(h, 2))
+
+
 def _camera(d: Drawing, ends: list[int], dt: float, total: float) -> tuple[Any, Any, Any]:
     """(outer, camera, ring): the camera group (:meth:`Drawing.camera_group`) whose transform moves from
     view to view in the last moments before a stage whose view differs, its zoom level class and the
@@ -101,7 +120,7 @@ def _camera(d: Drawing, ends: list[int], dt: float, total: float) -> tuple[Any, 
 
     f = d.doc.factory
     full = d.full_view
-    views = [d.camera_view(k) for k in ends]
+    views = [_stage_view(d, (ends[i - 1] if i else 0) + 1, k) for i, k in enumerate(ends)]
     move = min(0.45, 0.3 * dt)
     times, keys = [0.0], [views[0]]
     lt, lv = [0.0], [f"zl{level(zoom_of(views[0], full))}"]
@@ -123,15 +142,17 @@ def _camera(d: Drawing, ends: list[int], dt: float, total: float) -> tuple[Any, 
         tr = [p[p.index("(") + 1:p.index(")")] for p in parts]
         sc = [p[p.rindex("(") + 1:-1] for p in parts]
         keyt = ";".join(fmt(min(max(t / total, 0.0), 1.0), 5) for t in times)
-        box.add(f.animateTransform("translate", values=";".join(tr), keyTimes=keyt,
-                                   begin="clock.begin", dur=f"{fmt(total)}s", fill="freeze"))
-        box.add(f.animateTransform("scale", values=";".join(sc), keyTimes=keyt,
-                                   begin="clock.begin", dur=f"{fmt(total)}s", fill="freeze", additive="sum"))
+        for kind, values, extra in (("translate", tr, {}), ("scale", sc, {"additive": "sum"})):
+            anim = f.animateTransform(kind, values=";".join(values), keyTimes=keyt, begin="clock.begin",
+                                      dur=f"{fmt(total)}s", fill="freeze", **extra)
+            anim["attributeName"] = "transform"  # svgwrite leaves it out
+            box.add(anim)
     if len(lv) > 1:
         box.add(_keyed(f, "class", lv, lt, total, discrete=True))
     ring = None
     if d.style.ring_px:
-        rings = [d.ring(k) if k < len(d.scene.steps) else None for k in ends]
+        rings = [d.ring(k) if k < len(d.scene.steps) and k == (ends[i - 1] if i else 0) + 1 else None
+                 for i, k in enumerate(ends)]  # a ring marks a single step, not a stage of several
         if any(rings):
             times = [i * dt for i in range(len(ends))]
             ring = f.circle(center=("0", "0"), r="0", class_="ring", visibility="hidden")

@@ -67,6 +67,33 @@ def _expected_visible(fig, k: int) -> set[str]:
     return names
 
 
+def _must_show(fig, k: int) -> set[str]:
+    """What step k cannot do without (levels of detail, issue 16): step k's own objects and its inputs,
+    every result and given, and the objects of every group still open at step k (its group at
+    depth two, up to the end of that group's run); the helpers of finished groups may collapse.
+    The last step shows the clean figure: every group finished, its results."""
+    steps = fig.protocol.steps
+    current = steps[k - 1]
+    if k == len(steps):
+        return {n for s in steps if s.role in ("result", "given") or not s.group for n in s.outputs
+                if isinstance(fig.replay.get(n), (Point, Line, Circle))}
+    open_groups = {current.group[:2]} if current.group else set()
+    names = set()
+    for s in steps[:k]:
+        keep = (s.index == k or s.role in ("result", "given") or not s.group or s.group[:2] in open_groups)
+        for name in s.outputs:
+            if keep and isinstance(fig.replay.get(name), (Point, Line, Circle)):
+                names.add(name)
+    return names | {n for n in current.inputs if isinstance(fig.replay.get(n), (Point, Line, Circle))}
+
+
+def _shows_step(page, fig, k: int) -> None:
+    """At step k the player shows what the step needs and nothing made later."""
+    shown = _visible_names(page, fig)
+    assert _must_show(fig, k) <= shown <= _expected_visible(fig, k), (
+        f"step {k}: missing {sorted(_must_show(fig, k) - shown)}, too many {sorted(shown - _expected_visible(fig, k))}")
+
+
 VISIBLE_JS = """() => Array.from(document.querySelectorAll('#figure [id^="s"]'))
     .filter(e => !e.id.endsWith('-label') && !e.id.endsWith('-tag') && e.getBoundingClientRect().width + e.getBoundingClientRect().height > 0
                  && getComputedStyle(e).visibility !== 'hidden')
@@ -102,17 +129,19 @@ def test_player_steps_show_exactly_the_steps_so_far(browser, player):
     for k in range(1, n + 1):
         page.keyboard.press("ArrowRight")
         assert page.get_attribute("#figure", "data-step") == str(k)
-        assert _visible_names(page, fig) == _expected_visible(fig, k), f"step {k}"
+        _shows_step(page, fig, k)
         step = fig.protocol.steps[k - 1]
         de, en = scene.caption(k)  # the caption the frames print: in the figure's letters (tests/test_look.py)
         assert page.inner_text("#cap-de") == f"Schritt {k}: {de}"
         assert page.inner_text("#cap-en") == f"Step {k}: {en}"
     # back again with the other arrow key, and the slider to a middle step
+    # the last step: finished groups have collapsed to their results (some helper is no longer drawn)
+    assert _visible_names(page, fig) < _expected_visible(fig, n)
     page.keyboard.press("ArrowLeft")
-    assert _visible_names(page, fig) == _expected_visible(fig, n - 1)
+    _shows_step(page, fig, n - 1)
     mid = n // 2
     page.eval_on_selector("#slider", f"(s) => {{ s.value = {mid}; s.dispatchEvent(new Event('input')); }}")
-    assert _visible_names(page, fig) == _expected_visible(fig, mid)
+    _shows_step(page, fig, mid)
     # play advances by itself at the chosen pace, pause stops it (the page's clock is driven, not slept through)
     step = lambda: int(page.get_attribute("#figure", "data-step"))  # noqa: E731
     assert page.eval_on_selector("#speed", "s => +s.value") == STEP_SECONDS
@@ -171,6 +200,17 @@ def test_animated_svg_plays_by_its_clock(browser, tmp_path):
         latest, caption = at((k - 1) * dt + dt / 2)
         assert latest == max(j for j in drawn if j <= k), k
         assert caption.count("Schritt ") == 1 and f"Schritt {k} von {n}" in caption, caption
+    # the camera: at a step whose view magnifies, the drawing is shown through that view
+    from construct.render.output import scene_for
+    from construct.render.styles import STYLES
+    from construct.render.svg import Drawing
+
+    d = Drawing(scene_for(c, fig), STYLES["teaching"])
+    k = next(i for i in range(1, n + 1) if d.camera_view(i)[2] < 0.8 * d.full_view[2])
+    page.evaluate(f"() => document.documentElement.setCurrentTime({(k - 1) * dt + dt / 2})")
+    root_scale = page.evaluate("() => document.documentElement.getScreenCTM().a")
+    cam_scale = page.evaluate("() => document.getElementById('camera').getScreenCTM().a")
+    assert cam_scale / root_scale == pytest.approx(d.full_view[2] / d.camera_view(k)[2], rel=0.01)
     early = page.evaluate("() => { document.documentElement.setCurrentTime(0.1); return 0; }")
     first = page.screenshot(clip={"x": 0, "y": 0, "width": 960, "height": 600})
     page.evaluate(f"() => document.documentElement.setCurrentTime({n * dt + 1})")  # the hold at the end
@@ -222,4 +262,48 @@ def test_player_shows_markup_in_captions_as_text(browser, tmp_path):
     assert shown.count() >= 1 and all(t == NASTY for t in shown.all_text_contents())
     assert page.evaluate("() => document.querySelectorAll('script').length") == 2
     assert dialogs == []
+    page.close()
+
+
+LETTERS_JS = """() => Array.from(document.querySelectorAll('#figure text.lb[id$="-label"]'))
+    .filter(t => t.getBoundingClientRect().width > 0)
+    .map(t => { const p = document.getElementById(t.id.slice(0, -6)); const a = t.getBoundingClientRect();
+                const b = p.getBoundingClientRect();
+                return [t.id, a.x + a.width / 2 - (b.x + b.width / 2), a.y + a.height / 2 - (b.y + b.height / 2), a.height]; })"""
+
+
+def test_player_camera_keeps_letters_on_their_points(browser, tmp_path):
+    """Through a magnifying view a letter keeps its screen size and its place beside its point (issue 16)."""
+    import json
+    import re
+
+    c = get("crank")
+    fig = c.figure(parts=6, rod_ratio=5.0)
+    write_replay(c, fig, tmp_path, style="teaching", frames="none")
+    html = (tmp_path / "player.html").read_text()
+    data = json.loads(re.search(r'<script type="application/json" id="data">(.*?)</script>', html, re.S).group(1))
+    full_w = float(re.search(r'data-full="0 0 ([\d.]+)', html).group(1))
+    # a step whose view magnifies at least twice
+    k = next(i for i, st in enumerate(data["steps"], start=1) if full_w / data["views"][st["v"]][2] >= 2.0)
+    page = browser.new_page(viewport={"width": 1400, "height": 1000})
+    page.clock.install()
+    page.goto((tmp_path / "player.html").as_uri() + f"#{k}")
+    page.clock.run_for(1000)  # the camera glides for 350 ms
+    box = [float(v) for v in page.get_attribute("#figure", "viewBox").split()]
+    assert box == pytest.approx(data["views"][data["steps"][k - 1]["v"]], abs=0.02)
+    zoomed = {i: (dx, dy, h) for i, dx, dy, h in page.evaluate(LETTERS_JS)}
+    page.click("#zoom")  # the magnifier off: the whole figure
+    page.clock.run_for(1000)
+    whole = {i: (dx, dy, h) for i, dx, dy, h in page.evaluate(LETTERS_JS)}
+    common = set(zoomed) & set(whole)
+    assert len(common) >= 2
+    moved = 0
+    for i in common:
+        zx, zy, zh = zoomed[i]
+        wx, wy, wh = whole[i]
+        assert zh == pytest.approx(wh, rel=0.15), i  # the same size on the screen
+        assert (zx * zx + zy * zy) ** 0.5 < 4.5 * zh, i  # beside its point, not drifted away
+        moved += abs(zx - wx) > 1.5 or abs(zy - wy) > 1.5
+    # letters move only where a zoom level placed them again (never all of them)
+    assert moved < len(common)
     page.close()

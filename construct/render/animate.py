@@ -38,7 +38,7 @@ MAX_STAGES = 1000
 #: Looks of the step groups, for players that switch classes on a whole step.
 STEP_GROUP_CSS = """g.hid{display:none}
 g.cur>*,g.stage.cur>g>*{stroke:%(hl)s;stroke-width:%(hw)s}
-g.cur>.pt,g.cur>.lb,g.stage.cur>g>.pt,g.stage.cur>g>.lb{fill:%(hl)s;stroke:none}
+g.cur>.pt,g.cur .lb,g.stage.cur>g>.pt,g.stage.cur>g .lb{fill:%(hl)s;stroke:none}
 g.old{opacity:%(op)s}"""
 
 
@@ -84,6 +84,84 @@ def _stage_caption(drawing: Drawing, first: int, last: int) -> list[tuple[str, s
     return [("de", f"Schritte {first}–{last} von {n}: {group}"), ("en", f"Steps {first}–{last} of {n}")]
 
 
+def _keyed(f, attribute: str, values: list[str], times: list[float], total: float, *, discrete: bool) -> Any:
+    """One ``<animate>`` of *attribute* through *values* at *times* (seconds) over the clock's period."""
+    keys = ";".join(fmt(min(max(t / total, 0.0), 1.0), 5) for t in times)
+    extra = {"calcMode": "discrete"} if discrete else {}
+    return f.animate(attributeName=attribute, values=";".join(values), keyTimes=keys, begin="clock.begin",
+                     dur=f"{fmt(total)}s", fill="freeze", **extra)
+
+
+def _stage_view(d: Drawing, first: int, last: int) -> tuple[float, float, float, float]:
+    """The view of a stage: its one step's view, or the box round the views of its steps in the canvas's aspect."""
+    if first >= last:
+        return d.camera_view(last)
+    vs = [d.camera_view(k) for k in range(first, last + 1)]
+    if len(set(vs)) == 1:
+        return vs[0]
+    full = d.full_view
+    x0, y0 = min(v[0] for v in vs), min(v[1] for v in vs)
+    x1, y1 = max(v[0] + v[2] for v in vs), max(v[1] + v[3] for v in vs)
+    w = max(x1 - x0, (y1 - y0) * full[2] / full[3])
+    h = w * full[3] / full[2]
+    if w >= full[2] or h >= full[3]:
+        return full
+    x = min(max((x0 + x1) / 2 - w / 2, 0.0), full[2] - w)
+    y = min(max((y0 + y1) / 2 - h / 2, 0.0), full[3] - h)
+    return (round(x, 2), round(y, 2), round(w, 2), round(h, 2))
+
+
+def _camera(d: Drawing, ends: list[int], dt: float, total: float) -> tuple[Any, Any, Any]:
+    """(outer, camera, ring): the camera group (:meth:`Drawing.camera_group`) whose transform moves from
+    view to view in the last moments before a stage whose view differs, its zoom level class and the
+    ring round a small current mark switching with the stages."""
+    from .camera import level, zoom_of
+    from .svg import camera_transform
+
+    f = d.doc.factory
+    full = d.full_view
+    views = [_stage_view(d, (ends[i - 1] if i else 0) + 1, k) for i, k in enumerate(ends)]
+    move = min(0.45, 0.3 * dt)
+    times, keys = [0.0], [views[0]]
+    lt, lv = [0.0], [f"zl{level(zoom_of(views[0], full))}"]
+    for i in range(1, len(ends)):
+        if views[i] != views[i - 1]:
+            start = i * dt
+            times += [start - move, start]
+            keys += [views[i - 1], views[i]]
+            lv_i = f"zl{level(zoom_of(views[i], full))}"
+            if lv_i != lv[-1]:
+                lt.append(start - move)
+                lv.append(lv_i)
+    times.append(total)
+    keys.append(keys[-1])
+    outer, box = d.camera_group(views[0])
+    if len(keys) > 2:
+        # translate and scale, each interpolated: the view glides from one group to the next
+        parts = [camera_transform(v, full) for v in keys]
+        tr = [p[p.index("(") + 1:p.index(")")] for p in parts]
+        sc = [p[p.rindex("(") + 1:-1] for p in parts]
+        keyt = ";".join(fmt(min(max(t / total, 0.0), 1.0), 5) for t in times)
+        for kind, values, extra in (("translate", tr, {}), ("scale", sc, {"additive": "sum"})):
+            anim = f.animateTransform(kind, values=";".join(values), keyTimes=keyt, begin="clock.begin",
+                                      dur=f"{fmt(total)}s", fill="freeze", **extra)
+            anim["attributeName"] = "transform"  # svgwrite leaves it out
+            box.add(anim)
+    if len(lv) > 1:
+        box.add(_keyed(f, "class", lv, lt, total, discrete=True))
+    ring = None
+    if d.style.ring_px:
+        rings = [d.ring(k) if k < len(d.scene.steps) and k == (ends[i - 1] if i else 0) + 1 else None
+                 for i, k in enumerate(ends)]  # a ring marks a single step, not a stage of several
+        if any(rings):
+            times = [i * dt for i in range(len(ends))]
+            ring = f.circle(center=("0", "0"), r="0", class_="ring", visibility="hidden")
+            ring.add(_keyed(f, "visibility", ["visible" if r else "hidden" for r in rings], times, total, discrete=True))
+            for j, attr in enumerate(("cx", "cy", "r")):
+                ring.add(_keyed(f, attr, [fmt(r[j]) if r else "0" for r in rings], times, total, discrete=True))
+    return outer, box, ring
+
+
 def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None = None,
                  drawing: Drawing | None = None, seconds: float = STEP_SECONDS) -> str:
     """The animation of *scene* (or of the already laid-out *drawing*) as SVG text."""
@@ -120,6 +198,7 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
         return sets
 
     by_step = n == len(d.scene.steps)
+    outer, camera, ring = _camera(d, ends, dt, total) if style.camera else (None, None, None)
     for layer in d.LAYERS:
         lg = f.g(id=layer)
         if by_step:
@@ -141,10 +220,14 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
                     for e in timing(i, "stage"):
                         stage.elements.insert(0, e)
                     lg.add(stage)
-        dwg.add(lg)
+        (camera if camera is not None else dwg).add(lg)
     furniture = d.furniture()  # the broken axis's marks (and a plate's furniture)
     if furniture is not None:
-        dwg.add(furniture)
+        (camera if camera is not None else dwg).add(furniture)
+    if camera is not None:
+        if ring is not None:
+            camera.add(ring)  # over the drawing
+        dwg.add(outer)
     # Captions: each stage's while it is drawn, the figure's title otherwise (and in still renderers).
     title_lines = d.title_lines(title or d.scene.title)[: d.n_caption]
     tg = d.caption_group(title_lines, id="title")

@@ -1,15 +1,22 @@
-"""Where the letters go: results first, helpers give way.
+"""Where the letters go: one placement pass over all letters, results first, helpers give way.
 
 A plate's letters are not all equal.  The piston positions 1′…17′, the
 characteristic points q1…q7, the crank positions of a crank-angle plate are
 what the figure is for; a helper's name is a convenience.  Letters are
 placed in order of that rank (results, then givens, then the rest; within a
 rank by step), each at the first free spot of a ring of candidates around
-its point, nearest first, starting radially outwards from the crank centre.
-A result's letter is never left out: when every spot is taken it goes to its
-preferred one all the same.  A helper's letter that finds no room is left
-out.  Collisions are looked up in a grid of cells one letter high, so the
-work grows with the number of letters, not with its square.
+its point (twelve directions, five distances, nearest first, starting
+radially outwards from the crank centre; from :data:`LEADER_FROM` letter
+heights on the renderer ties the letter to its point by a leader line).  A
+spot is free when its box meets no placed letter, no point marker and no
+result line (a halo may cover thin helpers, never a result line or a point).
+A letter that finds no free spot is not stacked on another: a result's or a
+given's letter is kept for the magnified views (``thin``: the whole figure
+leaves it out, so a dense family 1′…17′ shows every other letter), a
+helper's is left out.  Boxes come from the font's real metrics
+(:func:`text_box`: matplotlib's FreeType with the font the SVG names).
+Collisions are looked up in a grid of cells one letter high, so the work
+grows with the number of letters, not with its square.
 
 >>> spots = place([("a", "result", 1, (100.0, 100.0), (1.0, 0.0), "q1"),
 ...                ("b", "construction", 2, (104.0, 100.0), (1.0, 0.0), "M1"),
@@ -23,25 +30,107 @@ True
 
 from __future__ import annotations
 
+import functools
 import math
-from typing import Iterable
+import os
+from typing import Any, Iterable, Sequence
 
-__all__ = ["place", "label_box", "RANK", "LEADER_FROM"]
+__all__ = ["place", "label_box", "text_box", "text_width", "RANK", "LEADER_FROM", "DEFAULT_FONT"]
 
-#: Rank of a role: lower is placed first and is never dropped (0).
+#: Rank of a role: lower is placed first.
 RANK = {"result": 0, "given": 1}
 
 #: Directions tried, as turns from the preferred one (degrees), and distances in letter heights.
-_TURNS = (0, 35, -35, 70, -70, 110, -110, 180, 145, -145)
+_TURNS = (0, 30, -30, 60, -60, 90, -90, 120, -120, 150, -150, 180)
 _DISTANCES = (0.9, 1.45, 2.1, 2.8, 3.6)
 #: From this distance (letter heights) on, a letter is tied to its point by a leader line.
 LEADER_FROM = 2.0
+#: Width of the paper-coloured halo drawn beneath every letter (svg.Style.css: stroke-width 3.5px).
+HALO_PX = 3.5
+#: The font a letter is measured in when none is named (the teaching style's).
+DEFAULT_FONT = "'DejaVu Sans', Arial, sans-serif"
+
+_SHIPPED = {("DejaVu Sans", False): "DejaVuSans.ttf", ("DejaVu Sans", True): "DejaVuSans-Oblique.ttf",
+            ("DejaVu Serif", False): "DejaVuSerif.ttf", ("DejaVu Serif", True): "DejaVuSerif-Italic.ttf"}
+_GENERIC = {"serif": "DejaVu Serif", "sans-serif": "DejaVu Sans", "monospace": "DejaVu Sans Mono"}
 
 
-def label_box(x: float, y: float, text: str, size: float) -> tuple[float, float, float, float]:
-    """The box a centred letter at baseline (x, y) covers (pixels, y down)."""
-    w = 0.62 * size * max(1, len(text))
-    return (x - w / 2, y - 0.8 * size, x + w / 2, y + 0.2 * size)
+@functools.lru_cache(maxsize=16)
+def _face(font: str, italic: bool) -> Any:
+    """The FreeType face of the first family of the CSS *font* list matplotlib has (DejaVu at worst)."""
+    from matplotlib import ft2font
+
+    path = None
+    for name in [n.strip().strip("'\"") for n in font.split(",")] + ["DejaVu Sans"]:
+        name = _GENERIC.get(name, name)
+        shipped = _SHIPPED.get((name, italic))
+        if shipped:  # the DejaVu faces matplotlib ships: no font manager (its font list) needed
+            import matplotlib
+
+            path = os.path.join(matplotlib.get_data_path(), "fonts", "ttf", shipped)
+            break
+        from matplotlib import font_manager
+
+        try:
+            path = font_manager.findfont(font_manager.FontProperties(family=name, style="italic" if italic else "normal"),
+                                         fallback_to_default=False)
+            break
+        except ValueError:
+            continue
+    face = ft2font.FT2Font(path)
+    face.set_size(100.0, 72)  # 100 px to the em
+    return face
+
+
+@functools.lru_cache(maxsize=4096)
+def _glyph(font: str, italic: bool, char: str) -> tuple[float, float, float]:
+    """(advance, top, bottom) of one character in em, y up (cached: a figure has few distinct characters)."""
+    from matplotlib import ft2font
+
+    face = _face(font, italic)
+    flags = getattr(getattr(ft2font, "LoadFlags", None), "NO_HINTING", None)
+    if flags is None:
+        flags = ft2font.LOAD_NO_HINTING
+    g = face.load_char(ord(char), flags=flags)
+    x0, y0, x1, y1 = g.bbox  # 26.6 fixed point at 100 px
+    return g.linearHoriAdvance / 65536.0 / 100.0, y1 / 6400.0, y0 / 6400.0
+
+
+@functools.lru_cache(maxsize=65536)
+def _metrics(text: str, font: str, italic: bool) -> tuple[float, float, float]:
+    """(advance, top, bottom) of *text* in em: a figure's letters recur, each is measured once."""
+    glyphs = [_glyph(font, italic, c) for c in text]
+    return (sum(g[0] for g in glyphs), max((g[1] for g in glyphs), default=0.7),
+            min(min((g[2] for g in glyphs), default=0.0), 0.0))
+
+
+def text_width(text: str, size: float, font: str = DEFAULT_FONT, italic: bool = False) -> float:
+    """The advance width of *text* at *size* px in the font's real metrics.
+
+    DejaVu Sans advances (its hmtx table, 2048 units to the em): K 1343, every digit 1303.
+
+    >>> round(text_width("K17", 12.0), 3) == round(12.0 * (1343 + 2 * 1303) / 2048, 3)
+    True
+    """
+    return size * _metrics(text, font, italic)[0]
+
+
+def text_box(x: float, y: float, text: str, size: float, font: str = DEFAULT_FONT, italic: bool = False,
+             anchor: str = "middle") -> tuple[float, float, float, float]:
+    """The box (pixels, y down) the inked *text* covers when set at baseline (x, y) with *anchor*."""
+    adv, top, bottom = _metrics(text, font, italic)
+    w = size * adv
+    x0 = x - w / 2 if anchor == "middle" else (x - w if anchor == "end" else x)
+    return (x0, y - top * size, x0 + w, y - bottom * size)
+
+
+def label_box(x: float, y: float, text: str, size: float, font: str = DEFAULT_FONT,
+              italic: bool = False) -> tuple[float, float, float, float]:
+    """The box a centred letter at baseline (x, y) covers (pixels, y down) with its halo (3.5 px wide:
+    1.75 px round the ink), which may cover thin helpers but never a point or a result line."""
+    b = text_box(x, y, text or " ", size, font, italic)
+    m = HALO_PX / 2
+    return (b[0] - m, b[1] - m, b[2] + m, b[3] + m)
 
 
 class _Grid:
@@ -67,44 +156,111 @@ class _Grid:
             self.cells.setdefault(key, []).append(b)
 
 
+def _hits(box, seg) -> bool:
+    """Does the segment (x0, y0, x1, y1) cross the box? (Liang–Barsky clipping.)"""
+    x0, y0, x1, y1 = seg
+    dx, dy = x1 - x0, y1 - y0
+    t0, t1 = 0.0, 1.0
+    for p, q in ((-dx, x0 - box[0]), (dx, box[2] - x0), (-dy, y0 - box[1]), (dy, box[3] - y0)):
+        if p == 0:
+            if q < 0:
+                return False
+        else:
+            t = q / p
+            if p < 0:
+                t0 = max(t0, t)
+            else:
+                t1 = min(t1, t)
+            if t0 > t1:
+                return False
+    return True
+
+
+class _Lines:
+    """Result lines as short pieces in a grid, asked whether a box meets one."""
+
+    def __init__(self, cell: float, segments: Iterable[tuple[float, float, float, float]]):
+        self.cell = cell
+        self.cells: dict[tuple[int, int], list[tuple[float, float, float, float]]] = {}
+        for seg in segments:
+            x0, y0, x1, y1 = seg
+            n = max(1, int(math.hypot(x1 - x0, y1 - y0) / cell) + 1)
+            if n > 4000:
+                continue  # far beyond the sheet
+            for i in range(n):
+                a, b = i / n, (i + 1) / n
+                piece = (x0 + a * (x1 - x0), y0 + a * (y1 - y0), x0 + b * (x1 - x0), y0 + b * (y1 - y0))
+                key = (math.floor((piece[0] + piece[2]) / 2 / cell), math.floor((piece[1] + piece[3]) / 2 / cell))
+                self.cells.setdefault(key, []).append(piece)
+
+    def meets(self, box) -> bool:
+        c = self.cell
+        for i in range(math.floor(box[0] / c) - 1, math.floor(box[2] / c) + 2):
+            for j in range(math.floor(box[1] / c) - 1, math.floor(box[3] / c) + 2):
+                for seg in self.cells.get((i, j), ()):
+                    if _hits(box, seg):
+                        return True
+        return False
+
+
 def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float, float], str]],
-          size: float, dots: Iterable[tuple[float, float]] = ()) -> dict[str, tuple[float, float, float]]:
-    """Baseline positions (pixels) for letters: {id: (x, y, distance in letter heights)}.
+          size: float, dots: Iterable[tuple[float, float]] = (),
+          lines: Sequence[tuple[float, float, float, float]] = (), *, font: str = DEFAULT_FONT,
+          italic: bool = False, taken: Iterable[tuple[float, float, float, float]] = (),
+          keep: bool = True, prefer: "dict[str, tuple[float, float, float]] | None" = None) -> dict[str, tuple]:
+    """Baseline positions (pixels) for letters: {id: (x, y, distance in letter heights, thin)}.
 
     A letter set farther than :data:`LEADER_FROM` letter heights from its point gets a
-    leader line from the renderer, so that it is never read as another point's.
+    leader line from the renderer, so that it is never read as another point's; a
+    *thin* one found no free spot and is shown only in magnified views.
 
     *items*: (id, role, step, point in pixels, preferred direction (dx, dy) in the
-    drawing's y-up sense, text).  *dots*: other points (pixels) a letter should not cover.
+    drawing's y-up sense, text).  *dots*: points (pixels) a letter must not cover.
+    *lines*: result lines as segments (pixels) a letter must not be struck by.
+    *taken*: boxes already taken by letters placed before.  Without *keep*
+    a letter that finds no free spot is left out, whatever its rank.  *prefer*:
+    per letter an offset from its point (and its distance in letter heights)
+    tried before the ring, so that a letter stays where it was when it can.
     """
     grid = _Grid(2.0 * size)
-    r = 0.35 * size
+    for b in taken:
+        grid.add(b)
+    r = 0.3 * size
     for x, y in dots:
         grid.add((x - r, y - r, x + r, y + r))
-    out: dict[str, tuple[float, float]] = {}
+    strokes = _Lines(1.5 * size, lines)
+    out: dict[str, tuple] = {}
     ordered = sorted(items, key=lambda it: (RANK.get(it[1], 2), it[2], it[0]))
     for mid, role, _step, (px, py), (dx, dy), text in ordered:
         base = math.atan2(-dy, dx)  # y down on the sheet
         first = None
         spot = None
-        for dist in _DISTANCES:
+        w = text_width(text, size, font, italic)
+        if prefer and mid in prefer:
+            ox, oy, od = prefer[mid]
+            box = label_box(px + ox, py + oy, text, size, font, italic)
+            if grid.free(box) and not strokes.meets(box):
+                spot = (px + ox, py + oy, box, od)
+        for dist in (() if spot else _DISTANCES):
             for turn in _TURNS:
                 a = base + math.radians(turn)
-                # the letter's centre sits *dist* letter heights from the point; its baseline a third lower
-                lx = px + dist * size * math.cos(a) * (1.0 + 0.25 * (len(text) - 1) * abs(math.cos(a)))
+                # the letter's centre sits *dist* letter heights from the point (plus half its
+                # extra width sideways); its baseline a third of a letter lower
+                lx = px + math.cos(a) * (dist * size + max(0.0, w - 0.6 * size) / 2)
                 ly = py + dist * size * math.sin(a) + 0.35 * size
-                box = label_box(lx, ly, text, size)
+                box = label_box(lx, ly, text, size, font, italic)
                 if first is None:
                     first = (lx, ly, box, dist)
-                if grid.free(box):
+                if grid.free(box) and not strokes.meets(box):
                     spot = (lx, ly, box, dist)
                     break
             if spot:
                 break
-        if spot is None and RANK.get(role, 2) == 0 and first is not None:
-            spot = first  # a result's letter is never dropped
         if spot is None:
+            if keep and RANK.get(role, 2) <= 1 and first is not None:
+                # no room in the whole figure: kept for the magnified views, never stacked here
+                out[mid] = (first[0], first[1], first[3], True)
             continue
         grid.add(spot[2])
-        out[mid] = (spot[0], spot[1], spot[3])
+        out[mid] = (spot[0], spot[1], spot[3], False)
     return out

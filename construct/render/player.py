@@ -7,8 +7,11 @@ groups); a small script shows steps
 slider, the arrow keys (Home/End, space to play), a tempo control (seconds per
 step, keys + and -), a step list grouped by the
 construction's groups in collapsible ``<details>``, the givens, and each
-step's caption in German and English.  A "magnify" switch zooms to the
-current group when it is tiny in the whole figure.
+step's caption in German and English.  Every step is shown through its
+camera view (:mod:`construct.render.camera`, the same views the layered
+figure stores): the viewBox moves there smoothly, letters and points keep
+their screen size and stay on their points, a ring marks a small current
+mark; the "magnify" switch shows the whole figure instead.
 
 All text from the protocol reaches the page escaped: in the markup through
 :func:`html.escape`, in the embedded JSON with ``<``, ``>`` and ``&`` written
@@ -45,26 +48,6 @@ def json_for_script(data: Any) -> str:
     text = json.dumps(data, ensure_ascii=False, sort_keys=True)
     return text.replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026") \
         .replace("\u2028", "\\u2028").replace("\u2029", "\\u2029")
-
-
-def _zoom_box(drawing: Drawing, k: int) -> list[float] | None:
-    """The viewBox (pixels) for step k when magnified: its top-level group's region, or a tiny group in it."""
-    scene = drawing.scene
-    stage = scene.stage_box(k)
-    box = scene.group_box(k, drawing.style.zoom_below or 0.12, stage) or stage
-    if box == scene.bbox:
-        return None
-    w, h = box[2] - box[0], box[3] - box[1]
-    if max(w, h) <= 0:
-        return None
-    # a little room round the box, in the figure's own aspect ratio
-    vw, vh = drawing.vp.width, drawing.drawing_height
-    cx, cy = (box[0] + box[2]) / 2, (box[1] + box[3]) / 2
-    s = drawing.vp.scale
-    side_w = max(w * s * 1.15, h * s * 1.15 * vw / vh)
-    side_h = side_w * vh / vw
-    px, py = drawing.vp.px(cx, cy)
-    return [round(px - side_w / 2, 2), round(py - side_h / 2, 2), round(side_w, 2), round(side_h, 2)]
 
 
 def _step_list(scene) -> str:
@@ -104,7 +87,7 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
     w, h = fmt(d.vp.width), fmt(d.drawing_height)
     dwg = d.doc.drawing(size=(None, None), viewBox=f"0 0 {w} {h}", id="figure", role="img",
                         **{"data-full": f"0 0 {w} {h}"})
-    dwg.add(f.style("\n" + style.css() + "\n" + group_css(style) + "\n"))
+    dwg.add(f.style("\n" + style.css() + "\n" + group_css(style) + "\n" + (d.extra_css + "\n" if d.extra_css else "")))
     dwg.add(f.rect(insert=("-10000", "-10000"), size=("20000", "20000"), fill=style.background))
     for layer in d.LAYERS:
         lg = f.g(id=layer)
@@ -114,22 +97,28 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
     furniture = d.furniture()  # the broken axis's marks (and a plate's furniture)
     if furniture is not None:
         dwg.add(furniture)
+    if style.ring_px:
+        dwg.add(f.circle(center=("0", "0"), r="0", class_="ring", id="ring", visibility="hidden"))
     svg = d.doc.markup(dwg)
-    # Group captions and zoom boxes are shared by runs of steps: each is stored once, steps point to it.
+    # Group captions and camera views are shared by runs of steps: each is stored once, steps point to it.
     groups: dict[str, int] = {}
-    zooms: dict[tuple, int] = {}
+    views: dict[tuple, int] = {}
     steps = []
     for s in scene.steps:
         de, en = scene.caption(s.index)
-        z = _zoom_box(d, s.index)
         st = {"de": de, "en": en, "g": groups.setdefault(group_caption(scene, s.index), len(groups)),
-              "z": -1 if z is None else zooms.setdefault(tuple(z), len(zooms))}
+              "v": views.setdefault(tuple(d.camera_view(s.index)), len(views))}
+        ring = d.ring(s.index)
+        if ring is not None:  # a ring round the current mark where it is small on the screen
+            st["r"] = list(ring)
         inputs = sorted(d.input_steps(s.index))
         if inputs:  # the steps that made what this step's instrument is set on
             st["i"] = inputs
         steps.append(st)
-    data = {"n": n, "steps": steps, "groups": list(groups), "zooms": [list(z) for z in zooms],
-            "dt": round(1000 * STEP_SECONDS)}
+    from .camera import ZOOM_LEVELS
+
+    data = {"n": n, "steps": steps, "groups": list(groups), "views": [list(v) for v in views],
+            "levels": list(ZOOM_LEVELS), "dt": round(1000 * STEP_SECONDS)}
     title = title or scene.title
     giv = givens or {}
     givens_rows = "".join(f"<tr><th>{html.escape(str(k))}</th><td>{html.escape(_show(v))}</td></tr>"
@@ -144,8 +133,6 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         ("{{SVG}}", svg),
         ("{{DATA}}", json_for_script(data)),
         ("{{PAGE_BG}}", "#f7f3ea" if style.name == "historical" else "#f4f5f7"),
-        ("{{PR}}", fmt(style.point_radius)),
-        ("{{LS}}", fmt(style.label_size)),
         ("{{SPEEDS}}", _speed_options(data["dt"] / 1000)),
     ))
     # One pass, so that text from the protocol is never read as a placeholder.
@@ -181,10 +168,7 @@ h1 .en{display:block;font-size:14px;font-weight:normal;color:#555}
 main{display:flex;gap:12px;padding:8px 16px;align-items:flex-start}
 #stage{flex:1 1 auto;min-width:0}
 #figure{width:100%;height:auto;max-height:70vh;border:1px solid #ccc;background:#fff;display:block}
-#figure.zoomed .construction,#figure.zoomed .result,#figure.zoomed .auxiliary,#figure.zoomed .pt,
-#figure.zoomed .hatch{vector-effect:non-scaling-stroke}
-#figure.zoomed .pt{r:calc({{PR}}px / var(--z))}
-#figure.zoomed .lb{font-size:calc({{LS}}px / var(--z))}
+#figure .lbg>*,#figure .pt{transform:scale(var(--ls,1))}
 #controls{display:flex;gap:6px;align-items:center;margin:8px 0;flex-wrap:wrap}
 #controls button{font:inherit;padding:3px 10px;min-width:2.4em}
 #slider{flex:1 1 200px}
@@ -249,6 +233,39 @@ li a.later{color:#bbb}
   var slider = document.getElementById("slider");
   var zoom = document.getElementById("zoom");
   var full = svg.getAttribute("data-full").split(" ").map(Number);
+  var now = svg.getAttribute("viewBox").split(" ").map(Number), anim = null, ringAt = null;
+  function ratio(v) {  // canvas pixels per screen pixel in view *v* (the view is fitted into the element)
+    var r = svg.getBoundingClientRect();
+    if (!r.width || !r.height) { return 1; }
+    return Math.max(v[2] / r.width, v[3] / r.height);
+  }
+  function put(v) {  // show view *v*: letters and points at their screen size (12 px, never below 9.5 px)
+    var q = ratio(v);
+    svg.setAttribute("viewBox", v.map(function (x) { return x.toFixed(2); }).join(" "));
+    svg.style.setProperty("--ls", Math.min(Math.max(1, 9.5 * q / 12), q).toFixed(4));
+    var ring = document.getElementById("ring");
+    if (ring) {
+      ring.setAttribute("visibility", ringAt ? "visible" : "hidden");
+      if (ringAt) {
+        ring.setAttribute("cx", ringAt[0]); ring.setAttribute("cy", ringAt[1]);
+        ring.setAttribute("r", Math.max(ringAt[2], 9 * q).toFixed(2));
+      }
+    }
+  }
+  function move(to) {  // the viewBox from where it is to *to* in a third of a second
+    var from = now.slice(), t0 = null;
+    if (anim) { cancelAnimationFrame(anim); anim = null; }
+    if (!window.requestAnimationFrame || from.join(" ") === to.join(" ")) { now = to.slice(); put(now); return; }
+    function frame(t) {
+      if (t0 === null) { t0 = t; }
+      var u = Math.min(1, (t - t0) / 350), e = u * u * (3 - 2 * u);
+      now = from.map(function (a, i) { return a + (to[i] - a) * e; });
+      put(now);
+      anim = u < 1 ? requestAnimationFrame(frame) : null;
+    }
+    anim = requestAnimationFrame(frame);
+  }
+  window.addEventListener("resize", function () { put(now); });
   function text(id, s) { document.getElementById(id).textContent = s; }
   function show(j) {
     k = Math.max(0, Math.min(n, j));
@@ -270,16 +287,13 @@ li a.later{color:#bbb}
     text("cap-group", st ? data.groups[st.g] : "");
     text("cap-de", st ? "Schritt " + k + ": " + st.de : document.title);
     text("cap-en", st ? "Step " + k + ": " + st.en : "");
-    var box = st && zoom.checked && k < n && st.z >= 0 ? data.zooms[st.z] : null;
-    if (box) {
-      svg.setAttribute("viewBox", box.join(" "));
-      svg.classList.add("zoomed");
-      svg.style.setProperty("--z", (full[2] / box[2]).toFixed(3));
-    } else {
-      svg.setAttribute("viewBox", full.join(" "));
-      svg.classList.remove("zoomed");
-      svg.style.setProperty("--z", "1");
-    }
+    // the camera: the step's view (the whole figure at the ends or without the magnifier), reached smoothly
+    var view = st && zoom.checked ? data.views[st.v] : full;
+    var z = full[2] / view[2], lvl = 0;
+    data.levels.forEach(function (l, i) { if (z >= 0.93 * l) { lvl = i; } });
+    svg.setAttribute("class", "zl" + lvl);
+    ringAt = st && k < n ? (st.r || null) : null;
+    move(view);
     var cur = links[k - 1];
     if (cur) {
       for (var p = cur.parentNode; p && p.id !== "steps"; p = p.parentNode) {

@@ -33,6 +33,9 @@ from .captions import TITLE_LIMIT, Reader, displayed
 __all__ = ["Mark", "Scene", "build_scene", "label_offset_direction"]
 
 TWO_PI = 2.0 * math.pi
+#: What a letter of the figure looks like (:meth:`Scene.tag_shown`): a letter, a number below 20 or
+#: two digits with a prime, subscripts, primes.
+FIGURE_LETTER = re.compile(r"[A-Za-zΑ-Ωα-ω](?:[01]?[0-9])?[′″'₀-₉]*|[0-9]{1,2}[′″']?")
 
 
 @dataclass(frozen=True, slots=True)
@@ -225,6 +228,21 @@ class Scene:
     def display_name(self, name: str) -> str:
         """The letter or tag the reader sees for an object (the same one the captions use)."""
         return self._reader.point(name) if name in self._reader.points else name.rsplit(".", 1)[-1]
+
+    def tag_shown(self, name: str) -> bool:
+        """Whether an unlettered point's tag (:meth:`display_name`) reads as one of the figure's letters.
+
+        A figure is lettered with one letter, perhaps with a number of at most two
+        digits or a prime (M2, S1, q10, K17, 5′); the helpers' internal names
+        (``c90``: the crank at 90°, ``Nb17``, ``iP6``) are not letters and are not
+        shown, whatever the caption calls them.
+
+        >>> from construct.constructions import get
+        >>> sc = build_scene(get("crank").figure(parts=6))
+        >>> [FIGURE_LETTER.fullmatch(t) is not None for t in ("M2", "q10", "5′", "c90", "Nb17", "iP6")]
+        [True, True, True, False, False, False]
+        """
+        return FIGURE_LETTER.fullmatch(self.display_name(name)) is not None
 
     def stage_box(self, k: int) -> tuple[float, float, float, float]:
         """The region of step k's top-level group (all its steps), with a margin.

@@ -84,7 +84,7 @@ def storyboard_svg(drawing: Drawing, *, columns: int = 4) -> str:
     cell_h = th + 2.6 * TILE_FONT + gap
     width, height = columns * (tw + gap) + gap, head + rows * cell_h
     dwg = doc.drawing(size=(fmt(width), fmt(height)), viewBox=f"0 0 {fmt(width)} {fmt(height)}")
-    css = (style.css() + f"\n.sheet{{fill:{style.ink};font-family:'DejaVu Sans',Arial,sans-serif;"
+    css = (style.css() + (f"\n{drawing.extra_css}" if drawing.extra_css else "") + f"\n.sheet{{fill:{style.ink};font-family:'DejaVu Sans',Arial,sans-serif;"
            f"font-size:{fmt(TILE_FONT)}px;text-anchor:middle}}\n.sheet.title{{font-size:{fmt(1.3 * TILE_FONT)}px}}"
            f"\n.frame{{fill:{style.background};stroke:#bbbbbb;stroke-width:0.5}}")
     dwg.add(f.style("\n" + css + "\n"))
@@ -114,13 +114,24 @@ def storyboard_svg(drawing: Drawing, *, columns: int = 4) -> str:
     for i, k in enumerate(ks, start=1):
         col, row = (i - 1) % columns, (i - 1) // columns
         tx, ty = gap + col * (tw + gap), head + row * cell_h
-        sx0, sy0, sx1, sy1 = scene.stage_box(k)
-        cx, cy = (sx0 + sx1) / 2, (sy0 + sy1) / 2
-        half = max((sx1 - sx0) / 2, (sy1 - sy0) / 2 / aspect_t, 1e-12) * vp.scale
-        px, py = vp.px(cx, cy)
+        if style.camera:
+            # the camera's view of the tile's last step, as the player and the animation show it
+            v = drawing.camera_view(k)
+            half = max(v[2] / 2, v[3] / 2 / aspect_t, 1e-12)
+            px, py = v[0] + v[2] / 2, v[1] + v[3] / 2
+        else:
+            sx0, sy0, sx1, sy1 = scene.stage_box(k)
+            cx, cy = (sx0 + sx1) / 2, (sy0 + sy1) / 2
+            half = max((sx1 - sx0) / 2, (sy1 - sy0) / 2 / aspect_t, 1e-12) * vp.scale
+            px, py = vp.px(cx, cy)
         box = f"{fmt(px - half)} {fmt(py - half * aspect_t)} {fmt(2 * half)} {fmt(2 * half * aspect_t)}"
         dwg.add(f.rect(insert=(fmt(tx), fmt(ty)), size=(fmt(tw), fmt(th)), class_="frame"))
-        view = f.svg(insert=(fmt(tx), fmt(ty)), size=(fmt(tw), fmt(th)), viewBox=box)
+        extra = {}
+        if style.camera:
+            from .camera import level, zoom_of
+
+            extra["class_"] = f"zl{level(zoom_of(drawing.camera_view(k), drawing.full_view))}"
+        view = f.svg(insert=(fmt(tx), fmt(ty)), size=(fmt(tw), fmt(th)), viewBox=box, **extra)
         earlier = f.g(opacity=fmt(style.earlier_opacity)) if style.earlier_opacity < 1.0 else f.g()
         for name in drawing.LAYERS:
             for j in range(1, i):

@@ -8,9 +8,10 @@
                   shows the plate (results and what locates them).
 * ``teaching``    colour by instrument, the current step highlighted with its
                   caption and group, earlier steps quieter, later ones absent;
-                  each frame shows the region drawn so far in its top-level
-                  group, with a magnified inset when the current group is tiny;
-                  a finished group fades to its result, and the current step's
+                  each step is shown through a camera view of its group's
+                  working region (:mod:`construct.render.camera`), a ring
+                  round the current mark when it is small; a finished group
+                  collapses to its results, and the current step's
                   instrument inputs (centre, through point, curves cut) are
                   marked and named.
 
@@ -68,13 +69,13 @@ TEACHING = Style(
     highlight="#e8590c",
     highlight_width=2.6,
     earlier_opacity=0.45,
-    done_opacity=0.13,             # a finished group's helpers: faint, its results stay
+    done_opacity=0.0,              # a finished group collapses to its results: its helpers are not drawn
     input_colour="#c2255c",        # what the instrument is set on (centre, through point, curves cut)
     show_group=True,
     name_tags=True,
-    progressive_zoom=True,
+    camera=True,                   # every step through its group's view (construct.render.camera)
+    ring_px=9.0,                   # a ring round a small current mark: 18 px across on the screen
     min_drawing_px=620.0,
-    zoom_below=0.12,
     area_fill="#dbe7f3",
 )
 

@@ -33,12 +33,17 @@ from typing import Any, Mapping, Sequence
 
 from . import svgdoc
 from .captions import TITLE_LIMIT, displayed
+from .camera import view_text
 from .lettering import LEADER_FROM
 from .scene import Mark, Scene, label_offset_direction
 from .wrapping import wrap as wrap_chars
 
 __all__ = ["Style", "PLAIN", "render_svg", "fmt", "Viewport", "Drawing",
            "step_caption", "wrap"]
+
+
+#: The most the step player shows of the figure in a 1400 × 1000 window (width, height in screen px).
+PLAYER_FIGURE_PX = (985.0, 700.0)
 
 
 def fmt(v: float, decimals: int = 2) -> str:
@@ -104,6 +109,10 @@ class Style:
     #: Tag the current step's unlettered points with their names, so that the
     #: caption's "M2 where k1 meets k2" can be found in the figure.
     name_tags: bool = False
+    #: Every step is shown through a camera view (:mod:`construct.render.camera`): player, animation, frames.
+    camera: bool = False
+    #: Radius (screen px) of the ring round the current step's mark when that mark is small (0: none).
+    ring_px: float = 0.0
     width_px: float = 960.0
     #: Smallest height of the drawing area (wide figures get room for the stages of a progressive zoom).
     min_drawing_px: float = 0.0
@@ -147,18 +156,20 @@ class Style:
             rules.append(f".cur>*{{stroke:{self.highlight};stroke-width:{fmt(self.highlight_width)}}}")
             # a point is small: the current one gets a halo in the highlight colour
             rules.append(f".cur>.pt{{fill:{self.highlight};stroke:{self.highlight};stroke-width:3}}")
-            rules.append(f".cur>.lb{{fill:{self.highlight};stroke:none}}")
+            rules.append(f".cur .lb{{fill:{self.highlight};stroke:none}}")
         rules.append(f".inset{{fill:{self.background};stroke:{self.construction};stroke-width:0.8}}")
-        if self.done_opacity < 1.0:
+        if self.done_opacity <= 0.0:
+            rules.append(".done{display:none}")  # a finished group collapses to its results
+        elif self.done_opacity < 1.0:
             rules.append(f".done{{opacity:{fmt(self.done_opacity)}}}")
         if self.input_colour:
             ic = self.input_colour
             rules.append(f".inp>*{{stroke:{ic};stroke-width:{fmt(0.7 * self.highlight_width)}}}")
             rules.append(f".inp>.pt{{fill:{ic};stroke:{ic};stroke-width:2}}")
-            rules.append(f".inp>.lb{{fill:{ic};stroke:none}}")
+            rules.append(f".inp .lb{{fill:{ic};stroke:none}}")
         if self.name_tags:
             rules.append(f".tag{{display:none;font-size:{fmt(0.85 * self.label_size)}px}}")
-            rules.append(".cur>.tag,.inp>.tag{display:inline}")
+            rules.append(".cur .tag,.inp .tag{display:inline}")
         # Plate looks and furniture (construct.render.plate), and the paper-coloured halo
         # behind every letter, drawn as a copy beneath it (cairosvg has no paint-order).
         from .plate import LOOKS_CSS
@@ -166,9 +177,21 @@ class Style:
         rules.append(f".fur{{fill:none;stroke:{self.ink};stroke-width:0.6px}}.arrow{{fill:{self.ink};stroke:none}}")
         rules.extend(LOOKS_CSS)
         rules.append(f".brk{{fill:{self.background};stroke:none}}.brkline{{fill:none;stroke:{self.ink};stroke-width:0.8px}}")
-        halo = f"fill:{self.background};stroke:{self.background};stroke-width:3.5px;stroke-linejoin:round"
-        rules.append(f".lb.halo,.cur>.lb.halo,.inp>.lb.halo{{{halo}}}")
-        rules.append(f".leader,.cur>.leader,.inp>.leader{{fill:none;stroke:{self.ink};stroke-width:0.4px}}")
+        rules.append(".view{display:none}")
+        if self.ring_px and self.highlight:
+            rules.append(f".ring{{fill:none;stroke:{self.highlight};stroke-width:2.5px;opacity:0.85}}")
+        # letters drawn about their point (class lbg): set off by a screen distance at every zoom
+        if self.camera:
+            from .camera import level_css
+
+            rules.append(level_css())
+        else:
+            rules.append(".lbx{display:none}")
+        from .lettering import HALO_PX
+
+        halo = f"fill:{self.background};stroke:{self.background};stroke-width:{fmt(HALO_PX)}px;stroke-linejoin:round"
+        rules.append(f".lb.halo,.cur .lb.halo,.inp .lb.halo{{{halo}}}")
+        rules.append(f".leader,.cur .leader,.inp .leader{{fill:none;stroke:{self.ink};stroke-width:0.4px}}")
         return "\n".join(rules)
 
 
@@ -293,6 +316,7 @@ class Drawing:
             self.vp = Viewport(win.xmin, win.ymax, win.scale, canvas.width, canvas.height, 0.0, win.left, win.top)
         self.doc = svgdoc.Writer()
         self._spots = self._letter_spots(self.vp)
+        self._hidden_at, self._level_rules = self._zoom_placing() if style.camera else ({}, [])
         # layer -> [(step, [element, ...]), ...] in step order: each step's elements of that layer.
         self.groups: dict[str, list[tuple[int, list[Any]]]] = {name: [] for name in self.LAYERS}
         placed: list[tuple[float, float, float, float]] = []
@@ -302,7 +326,76 @@ class Drawing:
                 if not runs or runs[-1][0] != m.step:
                     runs.append((m.step, []))
                 runs[-1][1].append(self.doc.frozen(elem))
+        if style.camera:
+            # the camera: a hidden box per view change, in a layer of its own, so that a moved
+            # camera is a change of the step it moves at (construct verify, golden files)
+            self.LAYERS = Drawing.LAYERS + ("views",)
+            f = self.doc.factory
+            runs = self.groups["views"] = []
+            last = None
+            for k, v in enumerate(self.views, start=1):
+                if v != last:
+                    runs.append((k, [self.doc.frozen(f.rect(insert=(fmt(v[0]), fmt(v[1])), size=(fmt(v[2]), fmt(v[3])),
+                                                            class_="view"))]))
+                    last = v
         self._steps = {name: [k for k, _ in runs] for name, runs in self.groups.items()}
+
+    # -- camera -----------------------------------------------------------------------
+    @property
+    def full_view(self) -> tuple[float, float, float, float]:
+        """The whole drawing (without the caption) as a view: x, y, w, h in canvas pixels."""
+        return (0.0, 0.0, round(self.vp.width, 2), round(self.drawing_height, 2))
+
+    @property
+    def views(self) -> list[tuple[float, float, float, float]]:
+        """The camera view of every step (:func:`construct.render.camera.step_views`), computed once."""
+        got = self.__dict__.get("_views")
+        if got is None:
+            from .camera import step_views
+
+            n = len(self.scene.steps)
+            got = (step_views(self.scene, self.full_view, self.scene.bbox, self.vp.px, self.vp.scale,
+                              collapse=self.style.done_opacity <= 0.0)
+                   if self.style.camera else [self.full_view] * n)
+            self.__dict__["_views"] = got
+        return got
+
+    def camera_view(self, k: int) -> tuple[float, float, float, float]:
+        """Step k's view (the whole figure for k = 0 and past the end)."""
+        return self.views[k - 1] if 1 <= k <= len(self.views) else self.full_view
+
+    def ring(self, k: int) -> tuple[float, float, float] | None:
+        """(cx, cy, r) in canvas pixels of the ring round step k's mark when that mark is smaller on the
+        screen than the ring (:attr:`Style.ring_px`) at step k's view; None when it is large enough."""
+        if not self.style.ring_px or not 1 <= k <= len(self.scene.steps):
+            return None
+        done = self.__dict__.setdefault("_rings", {})
+        if k not in done:  # the player and the animation ask for every step
+            done[k] = self._ring(k)
+        return done[k]
+
+    def _ring(self, k: int) -> tuple[float, float, float] | None:
+        from .camera import zoom_of
+
+        spans = self.__dict__.get("_mark_spans")
+        if spans is None:
+            spans = self.__dict__["_mark_spans"] = {}
+            for i, m in enumerate(self.scene.marks):
+                lo, _ = spans.get(m.step, (i, i))
+                spans[m.step] = (lo, i + 1)
+        if k not in spans:
+            return None
+        pts = [self.vp.px(*p) for m in self.scene.marks[slice(*spans[k])] for p in _mark_points(m)]
+        if not pts:
+            return None
+        x0, x1 = min(p[0] for p in pts), max(p[0] for p in pts)
+        y0, y1 = min(p[1] for p in pts), max(p[1] for p in pts)
+        z = zoom_of(self.camera_view(k), self.full_view)
+        size = max(x1 - x0, y1 - y0) * z  # on the screen, at the view
+        if size >= 3.2 * self.style.ring_px:  # also on a figure the player shows at 0.6 of its size
+            return None
+        r = max(self.style.ring_px, size / 2 + 4.0) / z
+        return (round((x0 + x1) / 2, 2), round((y0 + y1) / 2, 2), round(r, 2))
 
     # -- layout ---------------------------------------------------------------------
     def caption_lines(self) -> int:
@@ -330,20 +423,129 @@ class Drawing:
         """The canvas height without the caption lines (the player shows its captions in HTML)."""
         return self.vp.height - self.n_caption * 1.45 * self.style.caption_size
 
-    def _letter_spots(self, vp: Viewport) -> dict[str, tuple[float, float]]:
-        """Where every letter goes in this viewport (:func:`construct.render.lettering.place`): results first."""
+    def _letter_spots(self, vp: Viewport) -> dict[str, tuple]:
+        """Where every letter goes in this viewport (:func:`construct.render.lettering.place`): results first,
+        clear of the other letters, the points and the result lines."""
         from .lettering import place
 
         scale = self.scene.bbox[2] - self.scene.bbox[0]
-        items, dots = [], []
+        items, dots, lines = [], [], []
         for m in self.scene.marks:
-            if m.kind != "point":
-                continue
-            p = vp.px(*m.geom)
-            dots.append(p)
-            if m.label:
-                items.append((m.id, m.role, m.step, p, label_offset_direction(m.geom, scale=scale), m.label))
-        return place(items, self.style.label_size, dots)
+            if m.kind == "point":
+                p = vp.px(*m.geom)
+                dots.append(p)
+                if m.label:
+                    items.append((m.id, m.role, m.step, p, label_offset_direction(m.geom, scale=scale), m.label))
+            elif m.role == "result" and m.kind in ("segment", "circle", "arc", "curve"):
+                pts = [vp.px(*q) for q in _polyline(m, vp.scale)]
+                lines.extend((a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:]))
+        st = self.style
+        self._obstacles = (dots, lines)
+        self._letter_items = items
+        k = self.letter_scale
+        size = k * st.label_size
+        spots = place(items, size, dots, lines, font=st.label_font, italic=st.label_italic)
+        thin = [it for it in items if spots.get(it[0], (0, 0, 0, False))[3]]
+        if thin and st.camera:
+            # the letters the whole figure has no room for, placed for the magnified views
+            # (from zoom level THIN_FROM on): points twice as far apart, letters at their size
+            from .camera import THIN_FROM, ZOOM_LEVELS
+            from .lettering import label_box
+
+            z = ZOOM_LEVELS[THIN_FROM]
+            byid = {it[0]: it for it in items}
+            taken = [label_box(byid[i][3][0] * z + (x - byid[i][3][0]), byid[i][3][1] * z + (y - byid[i][3][1]),
+                               byid[i][5], size, st.label_font, st.label_italic)
+                     for i, (x, y, _d, t) in spots.items() if not t]
+            again = place([(i, r, s_, (p[0] * z, p[1] * z), d, t) for i, r, s_, p, d, t in thin], size,
+                          [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
+                          font=st.label_font, italic=st.label_italic, taken=taken, keep=False)
+            for i, r, s_, p, d, t in thin:
+                got = again.get(i)
+                if got is None and r != "result":
+                    del spots[i]  # no room even magnified: left out, never stacked
+                elif got is None:
+                    pass  # a result's letter is never left out: the magnified views show it where it was
+                else:
+                    spots[i] = (p[0] + got[0] - p[0] * z, p[1] + got[1] - p[1] * z, got[2], True)
+        if k != 1.0:
+            # placed at the size the player shows the whole figure at; written for the canvas (offsets / k)
+            pts = {m.id: vp.px(*m.geom) for m in self.scene.marks if m.id in spots}
+            spots = {i: (pts[i][0] + (x - pts[i][0]) / k, pts[i][1] + (y - pts[i][1]) / k, d, thin)
+                     for i, (x, y, d, thin) in spots.items()}
+        return spots
+
+    def _zoom_placing(self) -> tuple[dict[str, str], list[str]]:
+        """Letters placed again for every zoom level: (classes per letter, CSS rules).
+
+        A magnified view keeps letters at their screen size while the points move
+        apart, so the whole figure's spots may collide there.  For every zoom level
+        (:data:`construct.render.camera.ZOOM_LEVELS`) the placer runs again over all
+        letters with points and result lines spread by the level's zoom; a letter
+        whose spot differs gets a rule that moves it at that level (``.zlN
+        #id>*{transform:scale(..) translate(..)}``), one with no room hides there
+        (class ``hN``): a magnified view never stacks letters either.
+        """
+        from .camera import THIN_FROM, ZOOM_LEVELS
+        from .lettering import place
+
+        st = self.style
+        size = st.label_size
+        dots, lines = self._obstacles
+        items = self._letter_items
+        classes: dict[str, str] = {}
+        rules: list[str] = []
+        moves: dict[tuple[str, str], list[int]] = {}
+        for lvl, z in enumerate(ZOOM_LEVELS[1:], start=1):
+            its = [(i, r, s_, (p[0] * z, p[1] * z), d, t) for i, r, s_, p, d, t in items
+                   if i in self._spots and (lvl >= THIN_FROM or not self._spots[i][3])]
+            # letters at the size the player shows them at this level (on the zoomed canvas)
+            f = self.letter_scale_at(z) * z
+            # each letter where it stands in the whole figure if there is room for it there
+            prefer = {i: ((self._spots[i][0] - p[0] / z) * f, (self._spots[i][1] - p[1] / z) * f, self._spots[i][2])
+                      for i, _r, _s, p, _d, _t in its}
+            got = place(its, size * f, [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
+                        font=st.label_font, italic=st.label_italic, keep=False, prefer=prefer)
+            for i, _r, _s, (zx, zy), _d, _t in its:
+                spot = got.get(i)
+                if spot is None:
+                    classes[i] = classes.get(i, "") + f" h{lvl}"
+                    continue
+                x, y = self._spots[i][0], self._spots[i][1]
+                px, py = zx / z, zy / z
+                ddx, ddy = (spot[0] - zx) / f - (x - px), (spot[1] - zy) / f - (y - py)
+                if abs(ddx) > 0.5 or abs(ddy) > 0.5:
+                    moves.setdefault((i, f"translate({fmt(ddx)}px,{fmt(ddy)}px)"), []).append(lvl)
+                    classes[i] = classes.get(i, "") + " lbm"  # moved at some level: the group carries an id
+        # one rule per letter and move, listing the levels it holds at (--zs: the level's letter scale)
+        for (i, move), lvls in moves.items():
+            rules.append(",".join(f".zl{lvl} #{i}-lb>*" for lvl in lvls)
+                         + f"{{transform:scale(var(--ls,var(--zs))) {move}}}")
+        return classes, rules
+
+    @property
+    def extra_css(self) -> str:
+        """The rules of this drawing alone (the letters moved per zoom level)."""
+        return "\n".join(self._level_rules)
+
+    @property
+    def letter_scale(self) -> float:
+        """How much larger than on the canvas the player draws letters in the whole-figure view.
+
+        The player (1400 × 1000 window) shows the figure at most about
+        :data:`PLAYER_FIGURE_PX` wide and tall and holds letters at 12 px, never below 9.5 px
+        on the screen (its ``--ls``); a tall figure shown at half its size gets letters 1.6
+        times their canvas size, and they are placed at that size.  1 without a camera.
+        """
+        return self.letter_scale_at(1.0) if self.style.camera else 1.0
+
+    def letter_scale_at(self, zoom: float) -> float:
+        """The player's letter scale (its ``--ls``: canvas units per letter unit) in a view magnifying *zoom*
+        times: letters at 12 px on the screen, never below 9.5 px (:attr:`letter_scale` for the whole)."""
+        q = max(self.vp.width / PLAYER_FIGURE_PX[0], self.drawing_height / PLAYER_FIGURE_PX[1]) / zoom
+        if zoom == 1.0 and q <= 1.0:
+            return 1.0  # the whole figure as drawn on the canvas
+        return min(max(1.0, 9.5 * q / self.style.label_size), q)
 
     def _elements(self, m: Mark, vp: Viewport, placed: list, mid: str | None):
         """(layer, svgwrite element) of a mark's elements; the label (if any) is a second one."""
@@ -355,28 +557,21 @@ class Drawing:
             aux = m.role == "auxiliary" or ("." in m.name and not m.label)
             r = st.aux_point_radius if aux else st.point_radius
             yield "points", f.circle(center=vp.xy(*m.geom), r=fmt(r), class_=f"pt {cls}", **ids)
-            if st.name_tags and not m.label:
+            if st.name_tags and not m.label and self.scene.tag_shown(m.name):
                 # Shown only while its step is the current one (CSS), so it takes no place from the letters.
-                tx, ty = vp.px(*m.geom)
-                tid = {"id": f"{mid}-tag"} if mid else {}
-                yield "labels", f.text(self.scene.display_name(m.name), x=[fmt(tx + 0.6 * st.label_size)],
-                                       y=[fmt(ty - 0.5 * st.label_size)], class_="lb tag", **tid)
+                # no id of its own: it is its point's name, and a gallery carries thousands of them
+                yield "labels", self._letter(vp, m, (0.6 * st.label_size, -0.5 * st.label_size, 0.0),
+                                             self.scene.display_name(m.name), "lb tag", {}, halo=False)
             if m.label:
                 box = self._place_label(m, vp, placed)
                 if box is not None:
                     lid = {"id": f"{mid}-label"} if mid else {}
-                    xy = dict(x=[fmt(box[0])], y=[fmt(box[1])])
-                    if len(box) > 2 and box[2] >= LEADER_FROM:
-                        # a letter set off from a crowded point is tied to it
-                        px, py = vp.px(*m.geom)
-                        cx, cy = box[0], box[1] - 0.35 * st.label_size
-                        dx, dy = cx - px, cy - py
-                        n = math.hypot(dx, dy) or 1.0
-                        a, b = 0.25 * st.label_size, n - 0.75 * st.label_size
-                        yield "labels", f.line(start=(fmt(px + a * dx / n), fmt(py + a * dy / n)),
-                                               end=(fmt(px + b * dx / n), fmt(py + b * dy / n)), class_="leader")
-                    yield "labels", f.text(m.label, class_="lb halo", **xy)
-                    yield "labels", f.text(m.label, class_="lb", **lid, **xy)
+                    px, py = vp.px(*m.geom)
+                    rel = (box[0] - px, box[1] - py, box[2] if len(box) > 2 else 0.0)
+                    extra = (" lbx" if len(box) > 3 and box[3] else "") + self._hidden_at.get(m.id, "")
+                    gid = {"id": f"{mid}-lb"} if mid and " lbm" in extra else {}
+                    extra = extra.replace(" lbm", "")
+                    yield "labels", self._letter(vp, m, rel, m.label, "lb", lid, extra=extra, gid=gid)
             return
         layer = "results" if m.role == "result" else "construction"
         g = m.geom
@@ -395,6 +590,29 @@ class Drawing:
                 if d:
                     hid = {"id": f"{mid}-hatch"} if mid else {}
                     yield "areas", f.path(d=d, class_="hatch", **hid)
+
+    def _letter(self, vp: Viewport, m: Mark, rel: tuple[float, float, float], text: str, cls: str,
+                ids: dict, *, halo: bool = True, extra: str = "", gid: dict | None = None) -> Any:
+        """A letter about its point: ``<g class="lbg" transform="translate(point)">`` holding (leader,) halo
+        and letter at *rel* (offset in pixels, distance in letter heights), so that a zoomed view
+        can keep letters at their screen size and distance from the point (its children scaled by CSS)."""
+        st = self.style
+        f = self.doc.factory
+        px, py = vp.px(*m.geom)
+        outer = inner = f.g(class_="lbg" + extra, transform=f"translate({fmt(px)} {fmt(py)})", **(gid or {}))
+        dx, dy, dist = rel
+        xy = dict(x=[fmt(dx)], y=[fmt(dy)])
+        if dist >= LEADER_FROM:
+            # a letter set off from a crowded point is tied to it
+            cx, cy = dx, dy - 0.35 * st.label_size
+            n = math.hypot(cx, cy) or 1.0
+            a, b = 0.25 * st.label_size, n - 0.75 * st.label_size
+            inner.add(f.line(start=(fmt(a * cx / n), fmt(a * cy / n)), end=(fmt(b * cx / n), fmt(b * cy / n)),
+                             class_="leader"))
+        if halo:
+            inner.add(f.text(text, class_=f"{cls} halo", **xy))
+        inner.add(f.text(text, class_=cls, **ids, **xy))
+        return outer
 
     def _place_label(self, m: Mark, vp: Viewport, placed: list) -> tuple[float, float] | None:
         # In the drawing's own viewport the letters were placed by rank (results first);
@@ -419,7 +637,7 @@ class Drawing:
         vp, st = self.vp, self.style
         h = fmt(vp.height if height is None else height)
         w = fmt(vp.width)
-        css = st.css() + ("\n" + extra_css if extra_css else "")
+        css = st.css() + "".join("\n" + c for c in (self.extra_css, extra_css) if c)
         f = self.doc.factory
         dwg = self.doc.drawing(size=(w, h), viewBox=f"0 0 {w} {h}", **attrs)
         dwg.add(f.style("\n" + css + "\n"))
@@ -432,7 +650,7 @@ class Drawing:
         With fading (``Style.done_opacity``) a step whose helpers fade carries ``data-fade``:
         the last step of its group, after which the player and animation fade it too.
         """
-        if self.style.done_opacity < 1.0:
+        if self.style.done_opacity < 1.0 and not (elems and _is_view(elems[0])):
             end = self.scene.fade_end(k)
             if end is not None:
                 attrs = {**attrs, "data-fade": str(end)}
@@ -452,8 +670,11 @@ class Drawing:
         sc = self.scene
         return frozenset(s for s in (sc.step_of(n) for n in sc.inputs(k) | sc.tagged(k)) if s is not None and s < k)
 
-    def step_class(self, s: int, k: int, *, mark_steps: bool, inputs: frozenset[int] = frozenset()) -> str:
+    def step_class(self, s: int, k: int, *, mark_steps: bool, inputs: frozenset[int] = frozenset(),
+                   layer: str = "") -> str:
         """The class of step s's groups in frame k: cur, old (with inp), done (a finished group's helpers)."""
+        if layer == "views":
+            return ""  # the camera's boxes are data, never drawn
         fade = self.style.done_opacity < 1.0
         if not mark_steps:
             # the whole figure: every group finished, its helpers faint (teaching)
@@ -471,7 +692,7 @@ class Drawing:
         for a finished group's helpers), made once: the layered figure and the player carry the same ones."""
         cache = self.__dict__.setdefault("_plain_groups", {})
         if name not in cache:
-            cache[name] = [self.doc.frozen(self.step_group(k, elems, self.step_class(k, 0, mark_steps=False)))
+            cache[name] = [self.doc.frozen(self.step_group(k, elems, self.step_class(k, 0, mark_steps=False, layer=name)))
                            for k, elems in self.groups[name]]
         return cache[name]
 
@@ -484,7 +705,7 @@ class Drawing:
                 g.add(group)
             return g
         for s, elems in self.step_runs(name, k):
-            g.add(self.step_group(s, elems, self.step_class(s, k, mark_steps=mark_steps, inputs=inputs)))
+            g.add(self.step_group(s, elems, self.step_class(s, k, mark_steps=mark_steps, inputs=inputs, layer=name)))
         return g
 
     def body(self, k: int, *, mark_steps: bool) -> list[Any]:
@@ -584,7 +805,7 @@ class Drawing:
 
     def view(self, k: int) -> "Drawing":
         """The drawing frame k is drawn with: this one, or (progressive zoom) one showing the stage so far."""
-        if not self.style.progressive_zoom or self.region is not None or k <= 0:
+        if self.style.camera or not self.style.progressive_zoom or self.region is not None or k <= 0:
             return self
         box = self.scene.stage_box(k)
         if box == self.scene.bbox:
@@ -603,9 +824,12 @@ class Drawing:
         if view is not self:
             return view.frame(k)
         dwg = self.document()
-        for e in self.body(k, mark_steps=True):
-            dwg.add(e)
-        if self.style.zoom_below > 0 and k > 0:
+        if self.style.camera:
+            dwg.add(self.camera_box(k, self.body(k, mark_steps=True)))
+        else:
+            for e in self.body(k, mark_steps=True):
+                dwg.add(e)
+        if self.style.zoom_below > 0 and k > 0 and not self.style.camera:
             inset = self.inset(k)
             if inset is not None:
                 dwg.add(inset)
@@ -614,6 +838,33 @@ class Drawing:
             if cap is not None:
                 dwg.add(cap)
         return self.doc.text(dwg)
+
+    def camera_group(self, view: tuple[float, float, float, float], **attrs: Any) -> tuple[Any, Any]:
+        """(outer, inner): ``<g>`` clipped to the drawing area holding ``<g id="camera">`` whose
+        transform shows *view* on the whole drawing area (a nested ``<svg>`` would be a time
+        container of its own in browsers, out of step with the animation's clock)."""
+        from .camera import level, zoom_of
+
+        f = self.doc.factory
+        full = self.full_view
+        clip = f.clipPath(id="camera-clip")
+        clip.add(f.rect(insert=("0", "0"), size=(fmt(full[2]), fmt(full[3]))))
+        outer = f.g(clip_path="url(#camera-clip)")
+        outer.add(clip)
+        inner = f.g(id="camera", class_=f"zl{level(zoom_of(view, full))}", transform=camera_transform(view, full),
+                    **attrs)
+        outer.add(inner)
+        return outer, inner
+
+    def camera_box(self, k: int, elems: Sequence[Any]) -> Any:
+        """The drawing shown through step k's view, with the ring round a small current mark."""
+        outer, inner = self.camera_group(self.camera_view(k))
+        for e in elems:
+            inner.add(e)
+        ring = self.ring(k)
+        if ring is not None:
+            inner.add(self.doc.factory.circle(center=(fmt(ring[0]), fmt(ring[1])), r=fmt(ring[2]), class_="ring"))
+        return outer
 
     def layered(self, caption: Sequence[str] | None = None, *, centred: bool = False) -> str:
         """The canonical figure: every step a ``data-step`` group, nothing highlighted, the figure's caption.
@@ -677,6 +928,42 @@ class Drawing:
         zoom = win.scale / vp.scale
         out.add(f.text(f"× {zoom:.0f}", x=[fmt(px0 + 6)], y=[fmt(py0 + side - 6)], class_="cap grp"))
         return out
+
+
+def _is_view(elem: Any) -> bool:
+    """Is *elem* a camera box of the ``views`` layer (frozen or not)?"""
+    xml = getattr(elem, "xml", None)
+    return (xml.get("class") if xml is not None else getattr(elem, "attribs", {}).get("class")) == "view"
+
+
+def camera_transform(view: Sequence[float], full: Sequence[float]) -> str:
+    """The transform that shows *view* (x, y, w, h) on the whole of *full*: translate, then scale.
+
+    >>> camera_transform((100, 50, 480, 334), (0, 0, 960, 668))
+    'translate(-200 -100) scale(2)'
+    """
+    z = full[2] / view[2]
+    return f"translate({fmt(-view[0] * z)} {fmt(-view[1] * z)}) scale({fmt(z, 5)})"
+
+
+def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
+    """A line mark as points (drawing units) joined by straight pieces no more than ~4 px off it."""
+    g = m.geom
+    if m.kind == "segment":
+        return [(g[0], g[1]), (g[2], g[3])]
+    if m.kind in ("circle", "arc"):
+        cx, cy, r = g[0], g[1], g[2]
+        a0, sw = (0.0, 2 * math.pi) if m.kind == "circle" else (g[3], g[4])
+        n = min(720, max(8, int(abs(sw) * math.sqrt(max(r * scale, 1.0) / 8.0)) + 1))
+        return [(cx + r * math.cos(a0 + sw * i / n), cy + r * math.sin(a0 + sw * i / n)) for i in range(n + 1)]
+    return list(g)
+
+
+def _mark_points(m: Mark) -> list[tuple[float, float]]:
+    """The points that bound a mark as drawn (a segment by its ends)."""
+    from .scene import _extreme_points
+
+    return _extreme_points(m)
 
 
 def _near(m: Mark, region: tuple[float, float, float, float]) -> bool:

@@ -1,0 +1,186 @@
+"""The teaching camera, the levels of detail and the label placer (issue 16, items 1-3).
+
+Expectations come from the protocol and the geometry (which points a group
+makes and which its instruments are set on, where the viewport puts them),
+from the font file's metrics and from the definition of the views -- never
+from the renderer's own numbers.
+"""
+
+from __future__ import annotations
+
+import itertools
+import json
+import re
+import xml.etree.ElementTree as ET
+
+import pytest
+
+from construct.constructions import get
+from construct.kernel.geometry import Point
+from construct.render import camera
+from construct.render.lettering import label_box, place, text_box
+from construct.render.output import scene_for, write_replay
+from construct.render.styles import STYLES
+from construct.render.svg import Drawing
+
+SVG = "{http://www.w3.org/2000/svg}"
+
+
+@pytest.fixture(scope="module")
+def crank():
+    c = get("crank")
+    fig = c.figure(parts=6, rod_ratio=5.0)
+    return c, fig, Drawing(scene_for(c, fig), STYLES["teaching"])
+
+
+def _points_of(fig, steps) -> list[tuple[float, float]]:
+    out = []
+    for s in steps:
+        for name in (*s.inputs, *s.outputs):
+            obj = fig.replay.get(name)
+            if isinstance(obj, Point):
+                out.append((obj[0], obj[1]))
+    return out
+
+
+def test_views_are_boxes_of_the_canvas_in_its_aspect(crank):
+    _c, fig, d = crank
+    full = d.full_view
+    views = d.views
+    assert len(views) == len(fig.protocol.steps)
+    assert views[0] == full  # the first step shows the whole figure
+    for v in views:
+        assert v[0] >= -0.01 and v[1] >= -0.01 and v[0] + v[2] <= full[2] + 0.01 and v[1] + v[3] <= full[3] + 0.01
+        assert v[3] / v[2] == pytest.approx(full[3] / full[2], rel=1e-3)
+        assert full[2] / v[2] <= camera.MAX_ZOOM + 1e-6
+    assert any(v[2] < 0.5 * full[2] for v in views)  # some group is seen magnified
+
+
+def test_a_view_frames_its_group_and_the_points_its_instruments_are_set_on(crank):
+    _c, fig, d = crank
+    steps = fig.protocol.steps
+    by_group = {}
+    for s in steps:
+        if s.group:
+            by_group.setdefault(s.group, []).append(s)
+    checked = 0
+    for i, s in enumerate(steps[1:-1], start=2):
+        v = d.camera_view(i)
+        if v == d.full_view or not s.group:
+            continue
+        # the innermost group with drawn points: all of them (and its inputs) are inside the view
+        pts = _points_of(fig, by_group[s.group])
+        for x, y in pts:
+            px, py = d.vp.px(x, y)
+            assert v[0] <= px <= v[0] + v[2] and v[1] <= py <= v[1] + v[3], (i, s.group)
+        checked += 1
+    assert checked > 5
+
+
+def test_the_camera_holds_still_inside_a_group(crank):
+    _c, fig, d = crank
+    steps = fig.protocol.steps
+    for i in range(2, len(steps) - 1):
+        if steps[i - 1].group == steps[i].group and steps[i].group:
+            assert d.camera_view(i) == d.camera_view(i + 1), i
+
+
+def test_the_camera_is_stored_with_the_step_in_the_layered_figure_and_the_player(tmp_path):
+    c = get("crank")
+    fig = c.figure(parts=6, rod_ratio=5.0)
+    write_replay(c, fig, tmp_path, style="teaching")
+    root = ET.parse(tmp_path / "final.svg").getroot()
+    layer = next(g for g in root.iter(f"{SVG}g") if g.get("id") == "views")
+    stored = {int(g.get("data-step")): tuple(float(r.get(a)) for a in ("x", "y", "width", "height"))
+              for g in layer for r in g}
+    html = (tmp_path / "player.html").read_text()
+    data = json.loads(re.search(r'<script type="application/json" id="data">(.*?)</script>', html, re.S).group(1))
+    views = [tuple(data["views"][st["v"]]) for st in data["steps"]]
+    # a box where the view changes, the same box the player shows from that step on
+    changes = [k for k in range(1, len(views) + 1) if k == 1 or views[k - 1] != views[k - 2]]
+    assert sorted(stored) == changes
+    for k in changes:
+        assert stored[k] == pytest.approx(views[k - 1], abs=0.006)
+
+
+def test_a_moved_camera_is_a_change_of_its_step(tmp_path):
+    from construct.regress.svgdiff import changes_by_step, diff_svg
+
+    c = get("crank")
+    fig = c.figure(parts=6, rod_ratio=5.0)
+    write_replay(c, fig, tmp_path, style="teaching")
+    text = (tmp_path / "final.svg").read_text()
+    root = ET.fromstring(text.encode())
+    layer = next(g for g in root.iter(f"{SVG}g") if g.get("id") == "views")
+    group = list(layer)[1]
+    k = int(group.get("data-step"))
+    rect = list(group)[0]
+    old = f'<rect class="view" height="{rect.get("height")}" width="{rect.get("width")}" x="{rect.get("x")}"'
+    assert old in text
+    moved = text.replace(old, f'<rect class="view" height="{rect.get("height")}" width="{rect.get("width")}" '
+                              f'x="{float(rect.get("x")) + 5:g}"')
+    diff = diff_svg(text, moved)
+    assert not diff.equal
+    assert list(changes_by_step(diff)) == [k]
+
+
+def test_camera_work_grows_with_the_steps_not_their_square(monkeypatch):
+    """The camera visits every mark and step a bounded number of times (counted, not timed)."""
+    calls = itertools.count()
+    real = camera._extreme_points
+
+    def counting(m):
+        next(calls)
+        return real(m)
+
+    monkeypatch.setattr(camera, "_extreme_points", counting)
+    counts = []
+    for parts in (90, 360):
+        fig = get("crank").figure(parts=parts)
+        sc = scene_for(get("crank"), fig)
+        before = next(calls)
+        views = camera.step_views(sc, (0.0, 0.0, 960.0, 700.0), sc.bbox, lambda x, y: (x, -y), 1.0, collapse=True)
+        counts.append((next(calls) - before, len(views)))
+    (c1, n1), (c2, n2) = counts
+    assert n2 > 3.5 * n1
+    assert c2 / c1 < 1.5 * n2 / n1  # linear, not quadratic (that would be ~16x)
+
+
+def test_finished_groups_collapse_to_their_results_in_the_style_sheet():
+    css = STYLES["teaching"].css()
+    assert ".done{display:none}" in css
+
+
+def test_letters_are_measured_in_the_fonts_metrics():
+    """DejaVu Sans (hmtx, 2048 units to the em): 'W' 2025, 'i' 569; a character count would make them equal."""
+    w = text_box(0, 0, "W", 100.0)
+    i = text_box(0, 0, "i", 100.0)
+    assert w[2] - w[0] == pytest.approx(100 * 2025 / 2048, abs=0.01)
+    assert i[2] - i[0] == pytest.approx(100 * 569 / 2048, abs=0.01)
+
+
+def test_a_dense_family_is_never_stacked_and_keeps_clear_of_result_lines():
+    """Forty result letters on points 3 px apart on a result line: placed ones never overlap, never touch
+    the line or another point; what finds no room is thin (shown only magnified), never dropped."""
+    size = 12.0
+    pts = [(100.0 + 3.0 * i, 200.0) for i in range(40)]
+    items = [(f"p{i}", "result", i, p, (0.0, -1.0), f"{i + 1}′") for i, p in enumerate(pts)]
+    line = [(50.0, 200.0, 250.0, 200.0)]
+    spots = place(items, size, pts, line)
+    assert set(spots) == {f"p{i}" for i in range(40)}
+    shown = [(i, label_box(x, y, items[int(i[1:])][5], size)) for i, (x, y, _d, thin) in spots.items() if not thin]
+    assert 3 <= len(shown) < 40
+    for (_a, b1), (_b, b2) in itertools.combinations(shown, 2):
+        assert not (b1[0] < b2[2] and b2[0] < b1[2] and b1[1] < b2[3] and b2[1] < b1[3])
+    for _i, b in shown:
+        assert not (b[1] < 200.0 < b[3])  # the line y = 200 does not strike the letter
+        assert not any(b[0] < x < b[2] and b[1] < y < b[3] for x, y in pts)
+
+
+def test_internal_names_are_never_shown_as_letters():
+    for name, params in (("inertia-curve", {}), ("two-cranks", {"parts": 12})):
+        c = get(name)
+        fig = c.figure(**params)
+        svg = Drawing(scene_for(c, fig), STYLES["teaching"]).layered()
+        texts = {"".join(t.itertext()) for t in ET.fromstring(svg.encode()).iter(f"{SVG}text")}
+        assert not {t for t in texts if re.fullmatch(r"c\d{2,}|Nb\d+|iP\d+", t)}, name

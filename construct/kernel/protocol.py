@@ -42,6 +42,7 @@ from .geometry import SCALAR, Circle, Length, Line, Point, Sweep, _Array, take
 from .ops import ACCEPTS, OPS, elementwise
 from .protocol_file import (KNOWN_FORMATS, PROTOCOL_FILE_FORMAT, PROTOCOL_FORMAT, PROVENANCE_KINDS, ROLES, TOOLS,
                             check_format, frozen, parse_protocol_json, read_protocol_bytes, step_fields)
+from .numeric import as_float, is_finite, shown
 from .rules import as_rule
 
 __all__ = [
@@ -337,19 +338,14 @@ def sweep_givens(givens: Mapping[str, Any]) -> tuple[dict[str, Any], Any]:
 
 
 def _shown(value: Any) -> str:
-    text = repr(value)
-    return text if len(text) <= 60 else text[:57] + "..."
+    return shown(value)
 
 
 def _given_number(name: Any, value: Any) -> float:
     """A given as a float: a finite real number, else an InvalidParameter naming it."""
     if type(value) is float and math.isfinite(value):
         return value
-    if isinstance(value, numbers.Real) and not isinstance(value, bool):
-        v = float(value)
-        if math.isfinite(v):
-            return v
-    raise InvalidParameter(f"the given {name!r} must be a finite number, got {_shown(value)}")
+    return as_float(value, f"the given {shown(name)}")
 
 
 def _given_array(name: Any, value: Any) -> Any:
@@ -357,7 +353,10 @@ def _given_array(name: Any, value: Any) -> Any:
     numeric = (value.dtype.kind in "fiu" if isinstance(value, np.ndarray)
                else all(isinstance(v, numbers.Real) and not isinstance(v, bool) for v in value))
     if not numeric:
-        raise InvalidParameter(f"the swept given {name!r} must be numbers, got {_shown(value)}")
+        raise InvalidParameter(f"the swept given {shown(name)} must be numbers, got {_shown(value)}")
+    if not isinstance(value, np.ndarray) or value.dtype.kind == "O":
+        for v in value:  # a huge int has no float: refused here, not by an OverflowError in numpy
+            as_float(v, f"the swept given {shown(name)}")
     a = np.asarray(value, dtype=float)
     if not np.isfinite(a).all():
         raise InvalidParameter(f"the swept given {name!r} must be finite numbers, got {a[~np.isfinite(a)][:3].tolist()}")
@@ -637,9 +636,7 @@ class Protocol:
         if not isinstance(stored, Mapping):
             raise ProtocolFormatError(f"protocol 'params.givens' must map names to numbers, got {_shown(stored)}")
         for key, value in stored.items():
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-                raise ProtocolFormatError(f"protocol 'params.givens': the given {key!r} must be a finite number, "
-                                          f"got {_shown(value)}")
+            as_float(value, f"protocol 'params.givens': the given {shown(key)}", ProtocolFormatError)
         givens = d.get("givens", [])
         if not isinstance(givens, list) or not all(isinstance(g, str) for g in givens):
             raise ProtocolFormatError(f"protocol 'givens' must be a list of names, got {_shown(givens)}")

@@ -25,6 +25,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from .errors import ProtocolFormatError
+from .numeric import as_float, shown
 
 __all__ = ["PROTOCOL_FORMAT", "PROTOCOL_FILE_FORMAT", "KNOWN_FORMATS", "TOOLS", "ROLES", "PROVENANCE_KINDS",
            "MAX_PROTOCOL_BYTES", "MAX_NESTING", "read_protocol_bytes", "parse_protocol_json", "check_format",
@@ -63,8 +64,7 @@ _STEP_KEYS = ("index", "tool", "op", "inputs", "outputs", "params", "caption", "
 
 
 def _short(value: Any, limit: int = 60) -> str:
-    text = repr(value)
-    return text if len(text) <= limit else text[:limit - 3] + "..."
+    return shown(value, limit)
 
 
 def read_protocol_bytes(path: Any) -> bytes:
@@ -264,10 +264,9 @@ def _provenance(prov: Any, where: str) -> tuple[str, str | None, float | None]:
     method, error = prov.get("method"), prov.get("error")
     if method is not None and not isinstance(method, str):
         raise ProtocolFormatError(f"{where}: provenance 'method' must be text or null, got {_short(method)}")
-    if error is not None and (isinstance(error, bool) or not isinstance(error, (int, float))
-                              or not math.isfinite(error)):
-        raise ProtocolFormatError(f"{where}: provenance 'error' must be a finite number or null, got {_short(error)}")
-    return (kind, method, None if error is None else float(error))
+    if error is not None:
+        error = as_float(error, f"{where}: provenance 'error'", ProtocolFormatError)
+    return (kind, method, error)
 
 
 def _group(g: Any, where: str, table: Any) -> tuple[str, ...]:

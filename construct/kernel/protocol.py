@@ -675,7 +675,7 @@ class Protocol:
         >>> Protocol.load("/dev/zero")
         Traceback (most recent call last):
         ...
-        construct.kernel.errors.ProtocolFormatError: protocol file '/dev/zero' is not a regular file (a pipe or a device); save the protocol to a file and name that
+        construct.kernel.errors.ProtocolFormatError: cannot read protocol file '/dev/zero': it is not a regular file (a device); name a regular file
         """
         data = read_protocol_bytes(path)
         return cls.from_dict(parse_protocol_json(data, f"protocol file {os.fsdecode(os.fspath(path))!r}"))

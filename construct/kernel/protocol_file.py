@@ -18,13 +18,12 @@ from __future__ import annotations
 
 import json
 import math
-import os
-import stat
 from types import MappingProxyType
 from collections.abc import Mapping
 from typing import Any
 
 from .errors import ProtocolFormatError
+from .files import read_regular_file
 from .numeric import as_float, shown
 
 __all__ = ["PROTOCOL_FORMAT", "PROTOCOL_FILE_FORMAT", "KNOWN_FORMATS", "TOOLS", "ROLES", "PROVENANCE_KINDS",
@@ -70,52 +69,11 @@ def _short(value: Any, limit: int = 60) -> str:
 def read_protocol_bytes(path: Any) -> bytes:
     """The bytes of a protocol file, at most :data:`MAX_PROTOCOL_BYTES` of them.
 
-    Only a regular file is read: its size is known before reading, and
-    nothing can make the read wait (a FIFO with no writer) or run on forever
-    (``/dev/zero``).  The file is opened without blocking and then checked,
-    so a path swapped for a FIFO cannot hang the open either.
+    Only a regular file is read (:func:`construct.kernel.files.read_regular_file`):
+    its size is known before reading, and nothing can make the read wait (a
+    FIFO with no writer) or run on forever (``/dev/zero``).
     """
-    try:
-        name = os.fsdecode(os.fspath(path))
-    except TypeError:
-        raise ProtocolFormatError(f"a protocol file is named by a path, got {_short(path)}") from None
-    if not name:
-        raise ProtocolFormatError("the protocol file name is empty")
-    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0)
-    try:
-        fd = os.open(name, flags)
-    except FileNotFoundError:
-        raise ProtocolFormatError(f"protocol file {name!r} does not exist") from None
-    except (OSError, ValueError) as exc:  # ValueError: a NUL byte in the name
-        raise ProtocolFormatError(f"cannot read protocol file {name!r}: {getattr(exc, 'strerror', None) or exc}") from None
-    try:
-        info = os.fstat(fd)
-        if stat.S_ISDIR(info.st_mode):
-            raise ProtocolFormatError(f"protocol file {name!r} is a folder")
-        if not stat.S_ISREG(info.st_mode):
-            raise ProtocolFormatError(f"protocol file {name!r} is not a regular file (a pipe or a device); "
-                                      f"save the protocol to a file and name that")
-        if info.st_size > MAX_PROTOCOL_BYTES:
-            raise ProtocolFormatError(_too_big(name, info.st_size))
-        chunks, total = [], 0
-        while total <= MAX_PROTOCOL_BYTES:  # a file that grows while read is cut off at the limit too
-            chunk = os.read(fd, min(1 << 20, MAX_PROTOCOL_BYTES + 1 - total))
-            if not chunk:
-                break
-            chunks.append(chunk)
-            total += len(chunk)
-        if total > MAX_PROTOCOL_BYTES:
-            raise ProtocolFormatError(_too_big(name, total))
-        return b"".join(chunks)
-    except OSError as exc:
-        raise ProtocolFormatError(f"cannot read protocol file {name!r}: {exc.strerror or exc}") from None
-    finally:
-        os.close(fd)
-
-
-def _too_big(name: str, size: int) -> str:
-    return (f"protocol file {name!r} is larger than {MAX_PROTOCOL_BYTES // 2**20} MiB "
-            f"({size if size <= MAX_PROTOCOL_BYTES else 'more'} bytes); no protocol this library writes is")
+    return read_regular_file(path, limit=MAX_PROTOCOL_BYTES, what="protocol file", error=ProtocolFormatError)
 
 
 def parse_protocol_json(text: str | bytes, label: str = "protocol") -> Any:

@@ -8,20 +8,22 @@ copy.  ``DIR/protocol.json``, ``DIR/animated.svg`` (plays without script),
 (contact sheet, made of the figure's own elements) come with it; standalone frames ``DIR/steps/NNN.svg`` (frame
 k shows steps 1..k) only when asked (``--frames all`` or ``groups``): all
 frames together grow with the square of the step count.  Everything is staged
-and moved into place only when all of it has been written
-(:func:`construct.io.staging.staged_output`); the folder then holds exactly this
-run's files.  A folder is written only when it is new, empty or a previous
-replay (:func:`is_replay_folder`): nothing else in it is ever replaced.
+in a folder beside the target and swapped in whole only when all of it has
+been written (:func:`construct.io.staging.replaced_folder`): an interrupted
+run leaves the previous replay or the new one, never a mix.  The folder
+then holds exactly this run's files and their manifest
+(``.construct-manifest.json``).  A folder is written only when it is new,
+empty or a previous replay whose every file is in its manifest, unchanged
+(:func:`is_replay_folder`): nothing else is ever replaced.
 """
 
 from __future__ import annotations
 
-import os
-import re
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from ..io.staging import staged_output, write_text
+from ..io.manifest import foreign_entries
+from ..io.staging import replaced_folder, write_text
 from .scene import Scene, build_scene
 from .svg import Drawing, Style, render_svg
 
@@ -197,26 +199,22 @@ def write_outputs(stage: Path, construction: Construction | None, figure: Figure
     return {"steps": len(scene.steps), "frames": len(ks)}
 
 
-#: Every name a replay writes in its folder (final.svg always).
-REPLAY_NAMES = frozenset({"final.svg", "protocol.json", "steps", "animated.svg", "player.html", "storyboard.svg"})
-_FRAME_NAME = re.compile(r"^\d+\.svg$")
+#: What a refusal says a replay folder would have been.
+REPLAY_DESCRIBED = ("a replay written by 'construct replay' (recognised by its .construct-manifest.json; "
+                    "one written before manifests is not: remove it once)")
 
 
 def is_replay_folder(folder: str | Path) -> bool:
-    """Whether *folder* holds a replay and nothing else: final.svg, and only names a replay writes
-    (its frames in steps/); what ``construct replay`` may replace.
+    """Whether *folder* holds a replay and nothing else: every file in it is listed, unchanged, in the
+    manifest ``construct replay`` wrote (what ``construct replay`` may replace).
 
     >>> is_replay_folder(Path(__file__).parent)
     False
     """
-    from ..io.staging import STAGING_PREFIX
-
-    folder = Path(folder)
-    names = {n for n in os.listdir(folder) if not n.startswith(STAGING_PREFIX)}
-    if "final.svg" not in names or not names <= REPLAY_NAMES:
+    try:
+        return foreign_entries(Path(folder), "replay") == []
+    except OSError:
         return False
-    steps = folder / "steps"
-    return not steps.exists() or (steps.is_dir() and all(_FRAME_NAME.match(n) for n in os.listdir(steps)))
 
 
 def write_replay(construction: Construction | None, figure: Figure, out_dir: str | Path, *, style: str = "plain",
@@ -230,7 +228,7 @@ def write_replay(construction: Construction | None, figure: Figure, out_dir: str
 
         raise InvalidParameter(f"unknown style {style!r}; choose one of {', '.join(sorted(table))}")
     st = table[style]
-    with staged_output(out_dir, recognise=is_replay_folder,
-                       described="a replay written by 'construct replay'") as stage:
+    with replaced_folder(out_dir, manifest="replay", described=REPLAY_DESCRIBED, what="replay folder") as stage:
+        stage.mkdir()
         info = write_outputs(stage, construction, figure, st, frames=frames)
     return {**info, "out": str(out_dir)}

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from types import MappingProxyType
 from collections.abc import Mapping
 from typing import Any
@@ -87,11 +88,47 @@ def parse_protocol_json(text: str | bytes, label: str = "protocol") -> Any:
     if not isinstance(text, (str, bytes, bytearray)):
         raise ProtocolFormatError(f"{label}: the text of a protocol is a str or bytes, got {type(text).__name__}")
     try:
-        return json.loads(text)
+        data = json.loads(text)
     except RecursionError:
         raise ProtocolFormatError(f"{label}: not a JSON protocol: nested too deeply") from None
     except ValueError as exc:  # JSONDecodeError, UnicodeDecodeError, an integer of more than 4300 digits
         raise ProtocolFormatError(f"{label}: not a JSON protocol: {exc}") from None
+    if _MAY_HOLD_SURROGATE.search(text if isinstance(text, str) else text.decode("latin-1")):
+        where = _lone_surrogate(data)
+        if where is not None:
+            raise ProtocolFormatError(f"{label}: {where} holds a lone surrogate (a half of a UTF-16 pair, "
+                                      f"\\ud800-\\udfff), which is not text; no name or caption can hold one")
+    return data
+
+
+#: A JSON escape of a surrogate, a surrogate itself (text given as str), or its bytes in a file read as
+#: bytes (json reads those too): only then are the strings searched, one by one.
+_MAY_HOLD_SURROGATE = re.compile(r"\\[uU][dD][89a-fA-F]|[\ud800-\udfff]|\xed[\xa0-\xbf]")
+
+
+def _lone_surrogate(data: Any) -> str | None:
+    """Where in parsed JSON a string (or a key) holds a lone surrogate, as a path; None when none does.
+
+    A surrogate pair written as two escapes is one character once parsed; what is left is a lone half,
+    which no UTF-8 file, terminal or SVG can hold.
+    """
+    stack: list[tuple[str, Any]] = [("the protocol", data)]
+    while stack:
+        where, v = stack.pop()
+        if isinstance(v, str):
+            if _SURROGATE.search(v):
+                return where
+        elif isinstance(v, dict):
+            for k, x in v.items():
+                if _SURROGATE.search(k):
+                    return f"a key of {where}"
+                stack.append((f"{where}.{k}" if where != "the protocol" else str(k), x))
+        elif isinstance(v, list):
+            stack.extend((f"{where}[{i}]", x) for i, x in enumerate(v))
+    return None
+
+
+_SURROGATE = re.compile("[\ud800-\udfff]")
 
 
 def check_format(d: Mapping[str, Any]) -> str:

@@ -76,7 +76,7 @@ def run(args: argparse.Namespace) -> int:
     differ = diff_svg if kind_a == "svg" else diff_protocol
     result = differ(Path(args.a), Path(args.b), **tol)  # paths, so that errors name the file
     if args.json:
-        print(json.dumps(result.as_dict(), indent=2, ensure_ascii=False))
+        print(json.dumps(result.as_dict(), indent=2, ensure_ascii=True))
     else:
         print(result.report())
     return 0 if result.equal else 1

@@ -228,7 +228,11 @@ def _restore_interrupted_swap(parent: Path, stage: Path) -> bool:
 
 
 def _remove_tree(path: Path) -> None:
-    shutil.rmtree(path, ignore_errors=True)
+    """Remove a staging folder; what cannot be removed stays for the next run (its process is gone then)."""
+    try:
+        shutil.rmtree(path, ignore_errors=True)
+    except OSError:
+        pass
 
 
 def _make_stage(folder: Path, tag: str = "") -> Path:
@@ -519,5 +523,10 @@ def write_text(path: Path, text: str) -> None:
         raise OutputError(f"cannot write {path.name}: its text holds {text[exc.start]!r} at character {exc.start}, "
                           f"which is not Unicode text (a lone surrogate); correct the name or caption") from None
     path.parent.mkdir(parents=True, exist_ok=True)
-    with open(path, "wb") as fh:
-        fh.write(data)
+    try:
+        with open(path, "wb") as fh:
+            fh.write(data)
+    except OSError as exc:  # a write error carries no file name: the message names the file
+        if exc.filename is None and exc.errno is not None:
+            raise OSError(exc.errno, exc.strerror, str(path)) from None
+        raise

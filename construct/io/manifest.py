@@ -3,11 +3,14 @@
 A folder that ``construct gallery`` or ``construct replay`` writes ends with
 ``.construct-manifest.json``: which command wrote it and every file it
 wrote, by relative path, with its SHA-256.  A later run replaces the folder
-only when everything in it is in that list, unchanged: a file the user put
-there, a file changed since it was written, a link, a pipe or an empty
-folder that no listed file lies in is not ours, and the run refuses and
-lists it.  A README that begins like ours, or a folder that holds every name
-a gallery holds, is not enough any more: those are what a user can make.
+only when everything in it is a file that list names: a file the user put
+there, a link, a pipe or an empty folder that no listed file lies in is not
+ours, and the run refuses and lists it.  A README that begins like ours, or
+a folder that holds every name a gallery holds, is not enough any more:
+those are what a user can make.  A listed file whose content has changed
+(a golden that a merge or a hand rewrote, which is what ``verify --update``
+is for) is still the file construct wrote there, and is replaced; the
+hashes say which files changed (:func:`changed_files`).
 
 A folder written before manifests existed has none and is not recognised;
 remove it (or name a new folder) once.
@@ -37,7 +40,8 @@ from typing import Callable
 from ..kernel.errors import ConstructError, OutputError
 from ..kernel.files import read_regular_file
 
-__all__ = ["MANIFEST_NAME", "MANIFEST_FORMAT", "write_manifest", "read_manifest", "foreign_entries", "recogniser"]
+__all__ = ["MANIFEST_NAME", "MANIFEST_FORMAT", "write_manifest", "read_manifest", "foreign_entries", "changed_files",
+           "recogniser"]
 
 MANIFEST_NAME = ".construct-manifest.json"
 MANIFEST_FORMAT = "construct-manifest/1"
@@ -122,14 +126,17 @@ def foreign_entries(folder: Path, writer: str) -> list[str] | None:
         return None
     files, other = _walk(folder)
     foreign = [f"{rel} (not a file)" if not rel.endswith("/") else f"{rel} (an empty folder)" for rel in other]
-    for rel in files:
-        if len(foreign) >= _MAX_FOREIGN:
-            break
-        if rel not in listed:
-            foreign.append(rel)
-        elif _hash(folder / rel) != listed[rel]:
-            foreign.append(f"{rel} (changed since construct wrote it)")
-    return foreign
+    foreign += [rel for rel in files if rel not in listed]
+    return foreign[:_MAX_FOREIGN]
+
+
+def changed_files(folder: Path, writer: str) -> list[str] | None:
+    """The listed files of *folder* whose content is no longer what construct wrote (None: no manifest)."""
+    listed = read_manifest(folder, writer)
+    if listed is None:
+        return None
+    return [rel for rel, digest in sorted(listed.items())
+            if os.path.isfile(folder / rel) and not os.path.islink(folder / rel) and _hash(folder / rel) != digest]
 
 
 def recogniser(writer: str, shown: int = 3) -> Callable[[Path], bool]:

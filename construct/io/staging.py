@@ -365,22 +365,20 @@ def replaced_folder(target: str | os.PathLike[str], *, recognise: Callable[[Path
         raise OutputError(f"cannot create the folder {str(parent)!r} for {what} {str(target)!r}: "
                           f"{_reason(exc)}") from None
     remove_stale_staging(parent)
-    stage = None
-    try:
-        stage = _make_stage(parent)
-        with open(stage / _TARGET_NOTE, "w", encoding="utf-8") as fh:  # for the next run, should this one be killed
-            fh.write(target.name)
-    except OSError as exc:
-        if stage is not None:
-            _release(stage)
-        if created is not None:
-            shutil.rmtree(created, ignore_errors=True)
-        # The target itself may well be writable: it is its parent that the whole-folder swap needs.
-        raise OutputError(f"cannot replace {what} {str(target)!r}: it is built beside it and swapped in whole, "
-                          f"and its parent folder {str(parent)!r} is not writable ({_reason(exc)})") from None
-    new = stage / target.name
+    stage: Path | None = None
     swapped = False
     try:
+        try:
+            with signals_deferred():  # made and noted as one: a signal in between would leave it unnoted
+                stage = _make_stage(parent)
+                with open(stage / _TARGET_NOTE, "w", encoding="utf-8") as fh:  # for the next run, if this is killed
+                    fh.write(target.name)
+        except OSError as exc:
+            # The target itself may well be writable: it is its parent that the whole-folder swap needs.
+            raise OutputError(f"cannot replace {what} {str(target)!r}: it is built beside it and swapped in "
+                              f"whole, and its parent folder {str(parent)!r} is not writable ({_reason(exc)})"
+                              ) from None
+        new = stage / target.name
         try:
             yield new
             if not new.is_dir():
@@ -398,9 +396,9 @@ def replaced_folder(target: str | os.PathLike[str], *, recognise: Callable[[Path
             _release(stage)
     except BaseException:
         if not swapped:
-            if os.path.isdir(stage / _OLD) and not os.path.lexists(target):
+            if stage is not None and os.path.isdir(stage / _OLD) and not os.path.lexists(target):
                 _ACTIVE.discard(str(stage))  # the previous folder could not be put back: the next run restores it
-            else:
+            elif stage is not None:
                 _release(stage)
             if created is not None and not os.path.lexists(target):
                 shutil.rmtree(created, ignore_errors=True)

@@ -428,22 +428,39 @@ def _state(out: Path, old: dict, new: dict) -> str:
 _FAULTS = [OSError(5, "Input/output error"), KeyboardInterrupt()]
 
 
-@pytest.mark.parametrize("exchange", [True, False], ids=["renameat2", "two-renames"])
-@pytest.mark.parametrize("fault", _FAULTS, ids=["OSError", "KeyboardInterrupt"])
-def test_a_replay_is_old_or_new_whichever_rename_or_rmtree_fails(exchange, fault, tmp_path, monkeypatch):
-    """Make each os.rename / os.replace / shutil.rmtree / exchange of a replay fail in turn (with an
-    error, or Ctrl-C): the folder is always the whole old replay or the whole new one, and what a
-    failed run leaves in staging the next run removes."""
+def _replay_writer(tmp_path, monkeypatch):
     from construct.render.output import write_replay
 
     c = construct.get("crank")
+    return lambda out, parts: write_replay(c, c.figure(parts=parts), out)
+
+
+def _gallery_writer(tmp_path, monkeypatch):
+    def write(out, parts):
+        monkeypatch.setattr(gallery, "gallery_plan", lambda: [("crank", {"parts": parts, "rod_ratio": 4.0})])
+        gallery.build_gallery(out, workers=1)
+    return write
+
+
+@pytest.mark.parametrize("writer,exchange,fault", [
+    (_replay_writer, True, _FAULTS[0]), (_replay_writer, True, _FAULTS[1]),
+    (_replay_writer, False, _FAULTS[0]), (_replay_writer, False, _FAULTS[1]),
+    (_gallery_writer, True, _FAULTS[0]), (_gallery_writer, False, _FAULTS[1]),
+], ids=["replay-renameat2-OSError", "replay-renameat2-Ctrl-C", "replay-two-renames-OSError",
+        "replay-two-renames-Ctrl-C", "gallery-renameat2-OSError", "gallery-two-renames-Ctrl-C"])
+def test_output_is_old_or_new_whichever_rename_or_rmtree_fails(writer, exchange, fault, tmp_path, monkeypatch):
+    """Make each os.rename / os.replace / shutil.rmtree / exchange of a replay or a gallery fail in turn
+    (with an error, or Ctrl-C): the folder is always the whole old output or the whole new one, and what
+    a failed run leaves in staging the next run removes."""
+    write = writer(tmp_path, monkeypatch)
     out = tmp_path / "o"
-    write_replay(c, c.figure(parts=3), out)
+    write(out, 3)
     old = {k: v for k, v in tree(out).items() if k != MANIFEST_NAME}
     fresh = tmp_path / "fresh"
-    write_replay(c, c.figure(parts=4), fresh)
+    write(fresh, 4)
     new = {k: v for k, v in tree(fresh).items() if k != MANIFEST_NAME}
     shutil.rmtree(fresh)
+    assert old != new
     if not exchange:
         monkeypatch.setattr(staging, "_exchange", lambda a, b: False)
     real = {"rename": os.rename, "replace": os.replace, "rmtree": shutil.rmtree, "exchange": staging._exchange}
@@ -464,22 +481,23 @@ def test_a_replay_is_old_or_new_whichever_rename_or_rmtree_fails(exchange, fault
         monkeypatch.setattr(staging.shutil, "rmtree", faulty("rmtree"))
         monkeypatch.setattr(staging, "_exchange", faulty("exchange"))
         try:
-            write_replay(c, c.figure(parts=4), out)
+            write(out, 4)
             result = "done"
         except (OutputError, KeyboardInterrupt) as exc:
             result = type(exc).__name__
-        for name in ("rename", "replace"):
-            monkeypatch.setattr(staging.os, name, real[name])
-        monkeypatch.setattr(staging.shutil, "rmtree", real["rmtree"])
-        monkeypatch.setattr(staging, "_exchange", real["exchange"])
+        finally:
+            for name in ("rename", "replace"):
+                monkeypatch.setattr(staging.os, name, real[name])
+            monkeypatch.setattr(staging.shutil, "rmtree", real["rmtree"])
+            monkeypatch.setattr(staging, "_exchange", real["exchange"])
         state = _state(out, old, new)
         assert state in ("old", "new"), (n, result, state)
         staging.remove_stale_staging(tmp_path)  # the next run
         assert staging_left(tmp_path) == [] and _state(out, old, new) == state, (n, result, staging_left(tmp_path))
         outcomes.append((result, state))
-        if state == "new":  # back to the old replay for the next fault
+        if state == "new":  # back to the old output for the next fault
             shutil.rmtree(out)
-            write_replay(c, c.figure(parts=3), out)
+            write(out, 3)
         if calls[0] < n:  # every call has had its turn
             break
     assert ("done", "new") in outcomes and any(s == "old" for _, s in outcomes), outcomes

@@ -637,6 +637,11 @@ class Protocol:
             raise ProtocolFormatError(f"protocol 'params.givens' must map names to numbers, got {_shown(stored)}")
         for key, value in stored.items():
             as_float(value, f"protocol 'params.givens': the given {shown(key)}", ProtocolFormatError)
+        titles = params.get("group_titles")  # read by every drawing of the protocol: checked here, once
+        if titles is not None and not (isinstance(titles, Mapping) and all(
+                isinstance(k, str) and isinstance(v, str) for k, v in titles.items())):
+            raise ProtocolFormatError(f"protocol 'params.group_titles' must map each English group title to its "
+                                      f"German one (text to text), got {_shown(titles)}")
         givens = d.get("givens", [])
         if not isinstance(givens, list) or not all(isinstance(g, str) for g in givens):
             raise ProtocolFormatError(f"protocol 'givens' must be a list of names, got {_shown(givens)}")

@@ -93,7 +93,7 @@ def parse_protocol_json(text: str | bytes, label: str = "protocol") -> Any:
         raise ProtocolFormatError(f"{label}: not a JSON protocol: nested too deeply") from None
     except ValueError as exc:  # JSONDecodeError, UnicodeDecodeError, an integer of more than 4300 digits
         raise ProtocolFormatError(f"{label}: not a JSON protocol: {exc}") from None
-    if _MAY_HOLD_SURROGATE.search(text if isinstance(text, str) else text.decode("latin-1")):
+    if _may_hold_surrogate(text):
         where = _lone_surrogate(data)
         if where is not None:
             raise ProtocolFormatError(f"{label}: {where} holds a lone surrogate (a half of a UTF-16 pair, "
@@ -101,9 +101,19 @@ def parse_protocol_json(text: str | bytes, label: str = "protocol") -> Any:
     return data
 
 
-#: A JSON escape of a surrogate, a surrogate itself (text given as str), or its bytes in a file read as
-#: bytes (json reads those too): only then are the strings searched, one by one.
-_MAY_HOLD_SURROGATE = re.compile(r"\\[uU][dD][89a-fA-F]|[\ud800-\udfff]|\xed[\xa0-\xbf]")
+def _may_hold_surrogate(text: str | bytes) -> bool:
+    """Whether the text of a file may hold a lone surrogate: a JSON escape (``\\u``), a surrogate itself
+    (text given as str) or its UTF-8-like bytes (lead byte 0xED; json reads those from bytes too).  Only
+    then are the parsed strings searched, one by one; the usual protocol is passed over in a scan."""
+    if isinstance(text, str):
+        if "\\u" in text:
+            return True
+        try:
+            text.encode("utf-8")
+        except UnicodeEncodeError:
+            return True
+        return False
+    return b"\\u" in text or b"\xed" in text
 
 
 def _lone_surrogate(data: Any) -> str | None:

@@ -44,10 +44,10 @@ import contextlib
 import errno
 import os
 import re
+import secrets
 import shutil
 import signal
 import stat
-import tempfile
 import threading
 from pathlib import Path
 from typing import Any, Callable, Iterator
@@ -236,9 +236,22 @@ def _remove_tree(path: Path) -> None:
 
 
 def _make_stage(folder: Path, tag: str = "") -> Path:
-    stage = Path(tempfile.mkdtemp(prefix=_staging_prefix(tag), dir=folder))
-    _ACTIVE.add(str(stage))
-    return stage
+    """A new staging folder in *folder*, known as this process's own before it exists (another thread's
+    clean-up must never take it for a leftover)."""
+    for _ in range(100):
+        stage = Path(folder) / (_staging_prefix(tag) + secrets.token_hex(4))
+        _ACTIVE.add(str(stage))
+        made = False
+        try:
+            os.mkdir(stage, 0o700)
+            made = True
+            return stage
+        except FileExistsError:
+            continue
+        finally:
+            if not made:
+                _ACTIVE.discard(str(stage))
+    raise FileExistsError(errno.EEXIST, "no free name for a staging folder", str(folder))
 
 
 def _release(stage: Path) -> None:

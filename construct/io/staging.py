@@ -196,7 +196,7 @@ def remove_stale_staging(folder: Path) -> list[str]:
             continue
         pid, token = int(m.group(1)), m.group(2)
         if pid == os.getpid() and token == (_start_token(pid) or "0"):
-            stale = str(folder / name) not in _ACTIVE
+            stale = _key(folder / name) not in _ACTIVE
         else:
             stale = not _alive(pid, token)
         if stale and _restore_interrupted_swap(folder, folder / name):
@@ -227,6 +227,11 @@ def _restore_interrupted_swap(parent: Path, stage: Path) -> bool:
     return True
 
 
+def _key(stage: Path) -> str:
+    """A staging folder as _ACTIVE knows it: one spelling, whatever path led to its folder."""
+    return os.path.join(os.path.realpath(os.path.dirname(stage)), os.path.basename(stage))
+
+
 def _remove_tree(path: Path) -> None:
     """Remove a staging folder; what cannot be removed stays for the next run (its process is gone then)."""
     try:
@@ -240,7 +245,7 @@ def _make_stage(folder: Path, tag: str = "") -> Path:
     clean-up must never take it for a leftover)."""
     for _ in range(100):
         stage = Path(folder) / (_staging_prefix(tag) + secrets.token_hex(4))
-        _ACTIVE.add(str(stage))
+        _ACTIVE.add(_key(stage))
         made = False
         try:
             os.mkdir(stage, 0o700)
@@ -250,7 +255,7 @@ def _make_stage(folder: Path, tag: str = "") -> Path:
             continue
         finally:
             if not made:
-                _ACTIVE.discard(str(stage))
+                _ACTIVE.discard(_key(stage))
     raise FileExistsError(errno.EEXIST, "no free name for a staging folder", str(folder))
 
 
@@ -259,7 +264,7 @@ def _release(stage: Path) -> None:
     try:
         _remove_tree(stage)
     finally:
-        _ACTIVE.discard(str(stage))
+        _ACTIVE.discard(_key(stage))
 
 
 # --------------------------------------------------------------------------- staging inside the target
@@ -410,7 +415,7 @@ def replaced_folder(target: str | os.PathLike[str], *, recognise: Callable[[Path
     except BaseException:
         if not swapped:
             if stage is not None and os.path.isdir(stage / _OLD) and not os.path.lexists(target):
-                _ACTIVE.discard(str(stage))  # the previous folder could not be put back: the next run restores it
+                _ACTIVE.discard(_key(stage))  # the previous folder could not be put back: the next run restores it
             elif stage is not None:
                 _release(stage)
             if created is not None and not os.path.lexists(target):

@@ -39,6 +39,7 @@ from typing import Callable
 
 from ..kernel.errors import ConstructError, OutputError
 from ..kernel.files import read_regular_file
+from .staging import STAGING_PREFIX
 
 __all__ = ["MANIFEST_NAME", "MANIFEST_FORMAT", "write_manifest", "read_manifest", "foreign_entries", "changed_files",
            "recogniser"]
@@ -50,7 +51,6 @@ MANIFEST_FORMAT = "construct-manifest/1"
 _MAX_MANIFEST_BYTES = 64 * 2**20
 #: Foreign entries gathered before the search stops (a refusal lists a few and counts the rest).
 _MAX_FOREIGN = 1000
-_STAGING_PREFIX = ".construct-staging-"  # (staging's own constant; staging imports this module)
 
 
 def _hash(path: Path) -> str:
@@ -74,7 +74,7 @@ def _walk(folder: Path) -> tuple[list[str], list[str]]:
         if prefix and not entries:
             other.append(prefix.rstrip("/") + "/")
         for e in entries:
-            if not prefix and (e.name == MANIFEST_NAME or e.name.startswith(_STAGING_PREFIX)):
+            if not prefix and (e.name == MANIFEST_NAME or e.name.startswith(STAGING_PREFIX)):
                 continue
             rel = prefix + e.name
             mode = e.stat(follow_symlinks=False).st_mode

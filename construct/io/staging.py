@@ -512,7 +512,7 @@ def signals_deferred() -> Iterator[None]:
     previous = {}
     for name in _DEFERRED:
         sig = getattr(signal, name, None)
-        if sig is None:
+        if sig is None or signal.getsignal(sig) is None:  # None: a handler set outside Python, not restorable
             continue
         try:
             previous[sig] = signal.signal(sig, lambda signum, frame: caught.append(signum))

@@ -14,11 +14,15 @@ gallery leaves them out, they carry the same elements again and the
 committed gallery stays small.)
     OUT/README.md, OUT/index.html         the index, with pictures, captions, methods and checks
 
+    OUT/.construct-manifest.json        every file above with its SHA-256: the mark of a gallery
+
 The whole folder is built in a staging folder next to *out* and swapped in
 as one piece (:func:`construct.io.staging.replaced_folder`), so a failure leaves
-the previous gallery as it was.  Only a gallery (recognised by its
-``README.md``, :func:`is_gallery`) or an empty folder is replaced; any other
-folder or file at *out* is refused and left as it is.  Output is deterministic:
+the previous gallery as it was.  Only an empty folder or a gallery whose every
+file is in its manifest, unchanged (:func:`is_gallery`), is replaced; any other
+folder or file at *out* is refused and left as it is, and a refusal lists what
+in it construct did not write.  (A gallery written before manifests has none:
+it is refused once; remove it and build again.)  Output is deterministic:
 no dates, entries in registry order, fixed number formats.
 
 >>> entry_slug("crank", {"rod_ratio": 5.0, "parts": 18})
@@ -38,6 +42,7 @@ from typing import Any, Callable, Iterator, Mapping
 
 from .constructions.checking import summary
 from .constructions import get, names
+from .io.manifest import foreign_entries
 from .io.staging import replaced_folder, write_text
 from .render.output import params_text, write_outputs
 from .render.notation import citation
@@ -62,24 +67,23 @@ GALLERY_OUTPUTS = {"historical": (), "teaching": ("player",)}
 DISPLAY_PX = 960
 
 
-#: The gallery's signature: the first lines of the README.md it writes (read back by :func:`is_gallery`).
+#: The first lines of the README.md the gallery writes (a heading for people; the gallery is recognised
+#: by its manifest, not by this).
 README_HEAD = "# Gallery\n\nBuilt by `construct gallery`; do not edit by hand."
+#: What a refusal says a gallery folder would have been.
+GALLERY_DESCRIBED = ("a gallery written by 'construct gallery' (recognised by its .construct-manifest.json; "
+                     "one written before manifests is not: remove it once)")
 
 
 def is_gallery(folder: str | Path) -> bool:
-    """Whether *folder* is a gallery written by ``construct gallery``: its README.md begins with the
-    gallery's signature and its index.html is there (what ``construct gallery`` may replace).
+    """Whether *folder* is a gallery written by ``construct gallery`` and nothing else: every file in it
+    is listed, unchanged, in its manifest (what ``construct gallery`` and ``verify --update`` may replace).
 
     >>> is_gallery(Path(__file__).parent), is_gallery("/nonexistent")
     (False, False)
     """
-    folder = Path(folder)
     try:
-        if not (folder / "README.md").is_file():  # a named pipe would block the read
-            return False
-        with open(folder / "README.md", "rb") as fh:  # a bounded read: the file may be anything
-            head = fh.read(len(README_HEAD.encode("utf-8")))
-        return head.decode("utf-8", "replace") == README_HEAD and (folder / "index.html").is_file()
+        return foreign_entries(Path(folder), "gallery") == []
     except OSError:
         return False
 
@@ -221,8 +225,7 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
     jobs = [(number, name, dict(params)) for number, (name, params) in enumerate(plan, start=1)]
     if workers is None:
         workers = min(4, os.cpu_count() or 1)
-    with replaced_folder(out, recognise=is_gallery, described="a gallery written by 'construct gallery'",
-                         what="gallery folder") as root:
+    with replaced_folder(out, manifest="gallery", described=GALLERY_DESCRIBED, what="gallery folder") as root:
         root.mkdir()
         if workers > 1 and len(jobs) > 1:
             import concurrent.futures

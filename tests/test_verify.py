@@ -51,9 +51,15 @@ def build_small_gallery(out: Path) -> None:
 
 @pytest.fixture(scope="module")
 def pristine(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The goldens as ``verify --update`` writes them: the builder's tree and its manifest."""
     g = tmp_path_factory.mktemp("pristine") / "gallery"
-    build_small_gallery(g)
+    verify(g, builder=build_small_gallery, update=True)
     return g
+
+
+def _files(root: Path) -> list[Path]:
+    """The goldens, without the manifests (.construct-manifest.json: what wrote them, not what is compared)."""
+    return [p for p in root.rglob("*") if p.is_file() and not p.name.startswith(".construct-")]
 
 
 @pytest.fixture()
@@ -86,7 +92,7 @@ def test_clean_gallery_is_equal(goldens: Path) -> None:
     assert result.equal, result.report()
     # Every file was looked at: 74 frames, final, protocol, storyboard, index, and
     # whatever else the renderer writes (animation, player), counted independently.
-    files = [p for p in goldens.rglob("*") if p.is_file()]
+    files = _files(goldens)
     assert len([p for p in files if p.parent.name == "steps"]) == 74
     assert result.compared == len(files)
     assert result.png_by_size == 1
@@ -213,19 +219,31 @@ def test_png_pixels_are_not_compared(goldens: Path, rebuild) -> None:
 def test_update_rewrites_the_goldens_as_a_whole(goldens: Path, rebuild) -> None:
     path = goldens / FRAME
     path.write_text(_move_circle(path.read_text(encoding="utf-8"), POINT, 0.5)[0], encoding="utf-8")
-    (goldens / "stale.md").write_text("not written by the builder\n")
+    (goldens / FIGURE / "steps" / "074.svg").unlink()  # a golden the rebuild writes again
     result = verify(goldens, builder=rebuild, update=True)
-    assert {d.path for d in result.differences} == {FRAME, "stale.md"} and result.updated
+    assert {d.path for d in result.differences} == {FRAME, f"{FIGURE}/steps/074.svg"} and result.updated
     assert "rewritten" in result.summary()
-    assert not (goldens / "stale.md").exists()
     assert not [p for p in goldens.parent.iterdir() if p.name.startswith(".construct-")]  # no leftovers
     assert verify(goldens, builder=rebuild).equal
+
+
+def test_update_refuses_goldens_beside_a_file_it_did_not_write(goldens: Path, rebuild) -> None:
+    """Issue 19: a file put among the goldens is not ours; --update lists it and changes nothing."""
+    from construct.kernel.errors import OutputError
+
+    (goldens / "stale.md").write_text("not written by the builder\n")
+    path = goldens / FRAME
+    path.write_text(_move_circle(path.read_text(encoding="utf-8"), POINT, 0.5)[0], encoding="utf-8")
+    before = {p: p.read_bytes() for p in _files(goldens)}
+    with pytest.raises(OutputError, match="stale.md"):
+        verify(goldens, builder=rebuild, update=True)
+    assert {p: p.read_bytes() for p in _files(goldens)} == before
 
 
 def test_update_creates_missing_goldens(tmp_path: Path, rebuild) -> None:
     target = tmp_path / "new" / "gallery"
     result = verify(target, builder=rebuild, update=True)
-    files = [p for p in target.rglob("*") if p.is_file()]
+    files = _files(target)
     assert len(result.differences) == len(files) >= 78 and all(d.status == "extra" for d in result.differences)
     assert verify(target, builder=rebuild).equal
 

@@ -447,6 +447,8 @@ def errata() -> list[Erratum]:
 
 def errata_of(seed: str = "all") -> list[Erratum]:
     """The errata of one seed ("000", "001", "002", "004") or of all of them, seed 000 first."""
+    if not isinstance(seed, str) or not seed.strip():  # an empty --seed '' is an unset variable, not "all"
+        raise InvalidParameter(f"name a seed (000, 001, 002, 004) or 'all', got {seed!r}")
     out = all_errata()
     if seed == "all":
         return out

@@ -11,6 +11,17 @@ from ..kernel.errors import InvalidParameter
 from ..kernel.protocol import Protocol
 
 
+def brief(text: str, limit: int = 80) -> str:
+    """A name read from a file (a protocol's construction, a path) as a report line quotes it: one line,
+    at most *limit* characters -- a protocol may name its construction with a megabyte.
+
+    >>> brief("crank"), len(brief("x" * 10**6)), brief("a\\nb")
+    ('crank', 80, 'a b')
+    """
+    text = " ".join(str(text).split())
+    return text if len(text) <= limit else text[:limit - 1] + "…"
+
+
 def _number(text: str) -> float:
     try:
         v = float(text)

@@ -10,7 +10,9 @@ because writers go through :mod:`construct.io.staging`.
 from __future__ import annotations
 
 import argparse
+import codecs
 import contextlib
+import os
 import signal
 import sys
 import threading
@@ -119,7 +121,93 @@ def _one_line(message: str, limit: int = 2000) -> str:
     return text if len(text) <= limit else text[:limit - 1] + "…"
 
 
+#: Plain-text stand-ins for the symbols the tool prints, on a stream that cannot encode them.
+_FALLBACK = {
+    "ω": "w", "φ": "phi", "α": "alpha", "β": "beta", "γ": "gamma", "δ": "delta", "ε": "eps", "κ": "kappa",
+    "λ": "lambda", "μ": "mu", "π": "pi", "ρ": "rho", "σ": "sigma", "τ": "tau", "θ": "theta", "Δ": "Delta",
+    "′": "'", "″": '"', "‘": "'", "’": "'", "‚": ",", "“": '"', "”": '"', "„": '"', "²": "^2", "³": "^3",
+    "°": " deg", "—": "--", "–": "-", "−": "-", "…": "...", "·": "*", "×": "x", "≈": "~", "≤": "<=", "≥": ">=",
+    "→": "->", "←": "<-", "√": "sqrt", "∞": "inf", "ä": "ae", "ö": "oe", "ü": "ue", "Ä": "Ae", "Ö": "Oe",
+    "Ü": "Ue", "ß": "ss", "✅": "[ok]", "❌": "[FAIL]", "\u00a0": " ",
+}
+_ERRORS = "construct-terminal"
+
+
+def _terminal_fallback(exc: UnicodeError) -> tuple[str, int]:
+    """What a stream prints for a character its encoding lacks: a plain stand-in (ω -> w, ′ -> '), the letter
+    without its accent, or a backslash escape (a lone surrogate, a symbol without a stand-in).
+
+    >>> "ω = 2π, ′ é \\ud800 ✓".encode("ascii", _ERRORS)
+    b"w = 2pi, ' e \\\\ud800 \\\\u2713"
+    """
+    import unicodedata
+
+    if not isinstance(exc, UnicodeEncodeError):
+        raise exc
+    out = []
+    for ch in exc.object[exc.start:exc.end]:
+        if ch in _FALLBACK:
+            out.append(_FALLBACK[ch])
+            continue
+        plain = "".join(c for c in unicodedata.normalize("NFKD", ch) if not unicodedata.combining(c))
+        if plain and plain.isascii() and plain != ch:
+            out.append(plain)
+        else:
+            out.append(ch.encode("ascii", "backslashreplace").decode("ascii")
+                       if not 0xD800 <= ord(ch) <= 0xDFFF else f"\\u{ord(ch):04x}")
+    return "".join(out), exc.end
+
+
+codecs.register_error(_ERRORS, _terminal_fallback)
+
+
+@contextlib.contextmanager
+def _streams_for_the_terminal():
+    """stdout and stderr print what they cannot encode as :func:`_terminal_fallback` says, for the command's
+    duration (an ASCII or Latin-1 terminal, a lone surrogate in a caption read from a file)."""
+    changed = []
+    for stream in (sys.stdout, sys.stderr):
+        reconfigure = getattr(stream, "reconfigure", None)
+        if reconfigure is None or getattr(stream, "errors", None) == _ERRORS:
+            continue
+        try:
+            previous = stream.errors
+            reconfigure(errors=_ERRORS)
+        except (ValueError, OSError, AttributeError, TypeError):
+            continue
+        changed.append((stream, previous))
+    try:
+        yield
+    finally:
+        for stream, previous in changed:
+            try:
+                stream.reconfigure(errors=previous)
+            except (ValueError, OSError):
+                pass
+
+
+def _write_failed(exc: OSError) -> str:
+    """A write to stdout (redirected to a full disk, a file over the size limit) as the CLI's one line; what
+    is still buffered goes nowhere, so that the exit does not fail on it a second time."""
+    try:
+        sys.stdout.flush()
+    except (OSError, ValueError):
+        try:
+            devnull = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(devnull, sys.stdout.fileno())
+            os.close(devnull)
+        except (OSError, ValueError, AttributeError):
+            pass
+    where = f" {exc.filename!r}" if getattr(exc, "filename", None) else " the output"
+    return f"cannot write{where}: {exc.strerror or exc}"
+
+
 def main(argv: Sequence[str] | None = None) -> int:
+    with _streams_for_the_terminal():
+        return _main(argv)
+
+
+def _main(argv: Sequence[str] | None) -> int:
     try:
         parser = build_parser()
         try:
@@ -127,7 +215,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         except SystemExit as exc:  # --help and --version print and exit 0: a return code, as for every command
             return int(exc.code or 0)
         with _terminate_cleanly():
-            return int(args._run(args))
+            code = int(args._run(args))
+            sys.stdout.flush()  # a full disk behind a redirected stdout shows here, not at exit
+            return code
     except ConstructError as exc:
         print(f"construct: error: {_one_line(str(exc))}", file=sys.stderr)
         return EXIT_BAD_INPUT
@@ -139,6 +229,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 128 + signal.SIGTERM
     except BrokenPipeError:
         return EXIT_OK
+    except OSError as exc:  # a write the staging helper does not see: stdout, redirected to a file
+        print(f"construct: error: {_one_line(_write_failed(exc))}", file=sys.stderr)
+        return EXIT_BAD_INPUT
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING, Any, Callable, Mapping
 
 from .checking import Check, run_checks
 from ..kernel.errors import InvalidParameter, ProtocolFormatError, UnknownConstruction
+from ..kernel.numeric import shown
 from ..figure import Figure
 from ..kernel.protocol import Caption, Protocol
 
@@ -181,8 +182,8 @@ def positive(name: str, value: Any) -> Any:
     if isinstance(value, (np.ndarray, list, tuple)):
         try:
             arr = np.asarray(value, dtype=float)
-        except (TypeError, ValueError):
-            raise InvalidParameter(f"{name} must be numbers, got {value!r}") from None
+        except (TypeError, ValueError, OverflowError):  # OverflowError: an integer beyond any float
+            raise InvalidParameter(f"{name} must be finite numbers, got {shown(value)}") from None
         bad = ~np.isfinite(arr) | ~(arr > 0.0)
         if arr.size == 0 or bad.any():
             raise InvalidParameter(f"{name} must be finite and positive, got {arr[bad][:3].tolist() or 'no values'}")
@@ -190,9 +191,11 @@ def positive(name: str, value: Any) -> Any:
     try:
         v = float(value)
     except (TypeError, ValueError):
-        raise InvalidParameter(f"{name} must be a number, got {value!r}") from None
+        raise InvalidParameter(f"{name} must be a number, got {shown(value)}") from None
+    except OverflowError:  # an integer beyond any float
+        raise InvalidParameter(f"{name} must be finite and positive, got {shown(value)}") from None
     if not math.isfinite(v) or v <= 0.0:
-        raise InvalidParameter(f"{name} must be finite and positive, got {value!r}")
+        raise InvalidParameter(f"{name} must be finite and positive, got {shown(value)}")
     return v
 
 
@@ -205,8 +208,8 @@ def rod_ratio_param(value: Any) -> Any:
     """L/r: the connecting rod must be longer than the crank (every value of a sweep), L/r in the stated domain."""
     try:
         v = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise InvalidParameter(f"rod ratio L/r must be a number, got {value!r}") from None
+    except (TypeError, ValueError, OverflowError):  # OverflowError: an integer beyond any float
+        raise InvalidParameter(f"rod ratio L/r must be a finite number, got {shown(value)}") from None
     if v.size and np.all(np.isfinite(v)) and np.any(v <= 1.0):
         raise InvalidParameter(f"rod ratio L/r must be greater than 1 (the rod must be longer than the crank), "
                                f"got {value!r}")

@@ -299,6 +299,28 @@ def inverse_tolerance(x: float) -> float:
     return 1e-12 + 3e-16 / edge
 
 
+#: The error of the stroke's division points, in units of eps x stroke x m^2 for m parts.  The points
+#: come from divide_segment: dividers stepped m times along a ray (after log2(m) halvings), so a
+#: point's error grows like m^2 eps.  Measured on the largest error of points 1..m-1 at L/r = 5:
+#: 0.0050 (m = 100), 0.0051 (200), 0.0046 (500), 0.0044 (1000); the bound is four times that.
+#: (Issue 19: at 1000 divisions 780 of 1001 checks failed by ~1.5e-12 -- the tolerance assumed points
+#: exact to 1e-15 of the stroke; the measured angle error is the division points' error carried
+#: through dw/dx, to within 1%.  The domain 1..1000 stands: the construction is honest there.)
+DIVISION_ERROR = 0.02
+
+
+def division_tolerance(m: int, x: float, r: float, L: float) -> float:
+    """The angle error a division point of m parts carries at x of the stroke: its position error
+    (DIVISION_ERROR m^2 eps of the stroke) times dw/dx, the sensitivity of the crank angle to the
+    piston path (from the analytic law x(w), not from the figure)."""
+    if m <= 1 or not 0.0 < x < 1.0:
+        return 0.0  # the dead centres are given, not divided
+    w = analytic.crank_angle_from_path(2 * r * x, r, L)
+    s, c = math.sin(w), math.cos(w)
+    dx_dw = r * s * (1.0 + r * c / math.sqrt(L * L - r * r * s * s))
+    return DIVISION_ERROR * m * m * 2.220446049250313e-16 * 2 * r / abs(dx_dw)
+
+
 def crank_angle_checks(fig: Figure) -> list[Check]:
     m = fig.params["divisions"]
     g = fig.replay.givens
@@ -308,8 +330,9 @@ def crank_angle_checks(fig: Figure) -> list[Check]:
         x = j / m
         w = crank_angle(fig, f"W{j}")
         checks.append(Check(f"crank angle at {j}/{m} stroke", w, analytic.crank_angle_from_path(2 * r * x, r, L),
-                            inverse_tolerance(x), "Euclidean; the rod arc meets the circle nearly tangentially at the ends",
-                            "rad"))
+                            inverse_tolerance(x) + division_tolerance(m, x, r, L),
+                            "Euclidean; the rod arc meets the circle nearly tangentially at the ends; the stroke's "
+                            "division points carry m^2 eps", "rad"))
     return checks
 
 

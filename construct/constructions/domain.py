@@ -42,6 +42,7 @@ from typing import Any
 import numpy as np
 
 from ..kernel.errors import InvalidParameter
+from ..kernel.numeric import shown
 
 __all__ = ["Domain", "ROD_RATIO", "DRAWN_LENGTH", "PRESSURE", "PRESSURE_RATIO", "STROKE_FRACTION", "CLEARANCE",
            "DRAWN_PRESSURE_RATIO", "DRAWN_M", "DRAWN_MASS_FORCE", "KAPPA_RANGE", "FLUCTUATION", "SPEED_GAIN", "WEIGHT", "RPM", "LENGTH_M", "PISTON_AREA",
@@ -59,14 +60,27 @@ class Domain:
 
     def check(self, name: str, value: Any) -> Any:
         """The value (or array of values, for a sweep) if it lies in the range, else InvalidParameter naming it."""
-        arr = np.asarray(value, dtype=float)
+        try:
+            arr = np.asarray(value, dtype=float)
+        except OverflowError:  # an integer beyond any float
+            raise InvalidParameter(f"{name} must be a finite number, got {shown(value)}") from None
         outside = ~((arr >= self.low) & (arr <= self.high))
         if outside.any():
             bad = float(arr[outside].flat[0])
             advice = f"; {self.advice}" if self.advice else ""
             where = f"outside {self.low:g} .. {self.high:g}" if math.isfinite(self.high) else f"below {self.low:g}"
-            raise InvalidParameter(f"{name} = {bad:.6g} is {where}, {self.why}{advice}")
+            raise InvalidParameter(f"{name} = {_distinct(bad, self.low, self.high)} is {where}, {self.why}{advice}")
         return value
+
+
+def _distinct(value: float, *bounds: float) -> str:
+    """*value* to 6 digits, or to all its digits when 6 would print it as a bound it lies beyond.
+
+    >>> _distinct(1000.0000000000001, 1.05, 1000.0), _distinct(1234.5678, 1.05, 1000.0)
+    ('1000.0000000000001', '1234.57')
+    """
+    text = f"{value:.6g}"
+    return repr(value) if any(float(text) == b or f"{b:g}" == text for b in bounds) else text
 
 
 #: L/r: see the module's docstring for the measurement.

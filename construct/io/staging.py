@@ -10,9 +10,16 @@ exist before is removed too.
 
 A writer replaces only what it recognises as its own: a folder that is
 missing, empty, or recognised by the writer's *recognise* function (a
-gallery by its index, a replay by its files); anything else is refused with
-an :class:`OutputError` and left untouched.  An empty path is never meant (an
-unset variable) and is refused.
+gallery or a replay by the manifest it wrote, :mod:`construct.io.manifest`);
+anything else is refused with an :class:`OutputError` and left untouched.
+An empty path is never meant (an unset variable) and is refused.
+
+The swap of a whole folder is one atomic exchange where the system has one
+(Linux ``renameat2``), else two renames undone on failure; Ctrl-C, SIGTERM
+and SIGHUP are held back while it and the clean-up run
+(:func:`signals_deferred`), so an interrupted run leaves the old folder or
+the new one, never neither or a mix.  A write that fails (a full disk, a
+quota, a permission) is one OutputError naming the target and the cause.
 
 Staging folders are named ``.construct-staging-<pid>-<start>-...`` (the
 process and its start time), so a later run can tell the leftovers of a run
@@ -34,18 +41,22 @@ construct.kernel.errors.OutputError: refusing to replace '...out': it is neither
 from __future__ import annotations
 
 import contextlib
+import errno
 import os
 import re
+import secrets
 import shutil
+import signal
 import stat
 import tempfile
+import threading
 from pathlib import Path
-from typing import Callable, Iterator
+from typing import Any, Callable, Iterator
 
 from ..kernel.errors import OutputError
 
 __all__ = ["STAGING_PREFIX", "staged_output", "replaced_folder", "output_path", "remove_stale_staging",
-           "write_text", "write_bytes"]
+           "write_text", "write_bytes", "write_failure", "signals_deferred"]
 
 STAGING_PREFIX = ".construct-staging-"
 _STAGING_NAME = re.compile(re.escape(STAGING_PREFIX) + r"(\d+)-(\d+)-")
@@ -113,6 +124,8 @@ def _check_replaceable(target: Path, recognise: Callable[[Path], bool], describe
         return True
     try:
         ours = recognise(target)
+    except OutputError:  # the recogniser's own refusal, listing what is not ours
+        raise
     except OSError:
         ours = False
     if not ours:
@@ -156,11 +169,22 @@ def _alive(pid: int, token: str) -> bool:
     return now is None or token == "0" or now == token
 
 
+#: The staging folders this process is using now; one of its own that is not here was left by an
+#: earlier run in this process that could not remove it (a failed clean-up), and is stale.
+_ACTIVE: set[str] = set()
+#: In a staging folder of a whole-folder swap: the target's name, written before the swap begins,
+#: and where the previous folder waits while the two renames of a swap without an atomic exchange
+#: are under way.
+_TARGET_NOTE, _OLD = ".target", ".old"
+
+
 def remove_stale_staging(folder: Path) -> list[str]:
     """Remove the staging folders in *folder* left by runs whose process is gone; return their names.
 
     Folders of runs still going are kept; so are names this version did not
-    write (no pid in them): whose they are cannot be told.
+    write (no pid in them): whose they are cannot be told.  A run killed
+    between the two renames of a swap left its target missing and the
+    previous folder in its staging folder: that folder is put back first.
     """
     removed = []
     try:
@@ -169,14 +193,79 @@ def remove_stale_staging(folder: Path) -> list[str]:
         return removed
     for name in names:
         m = _STAGING_NAME.match(name)
-        if m and not _alive(int(m.group(1)), m.group(2)):
-            shutil.rmtree(folder / name, ignore_errors=True)
+        if not m:
+            continue
+        pid, token = int(m.group(1)), m.group(2)
+        if pid == os.getpid() and token == (_start_token(pid) or "0"):
+            stale = _key(folder / name) not in _ACTIVE
+        else:
+            stale = not _alive(pid, token)
+        if stale and _restore_interrupted_swap(folder, folder / name):
+            _remove_tree(folder / name)
             removed.append(name)
     return removed
 
 
+def _restore_interrupted_swap(parent: Path, stage: Path) -> bool:
+    """Put back the previous folder a killed swap left in *stage*; False when it cannot (keep the stage)."""
+    old = stage / _OLD
+    if not os.path.isdir(old):
+        return True
+    try:
+        with open(stage / _TARGET_NOTE, encoding="utf-8") as fh:
+            name = fh.read()
+    except OSError:
+        return False  # which folder it was cannot be told: keep it rather than lose it
+    if "/" in name or name in ("", ".", ".."):
+        return False
+    target = parent / name
+    if os.path.lexists(target):
+        return True  # the new folder went in before the run was killed: the old one is what is left over
+    try:
+        os.rename(old, target)
+    except OSError:
+        return False
+    return True
+
+
+def _key(stage: Path) -> str:
+    """A staging folder as _ACTIVE knows it: one spelling, whatever path led to its folder."""
+    return os.path.join(os.path.realpath(os.path.dirname(stage)), os.path.basename(stage))
+
+
+def _remove_tree(path: Path) -> None:
+    """Remove a staging folder; what cannot be removed stays for the next run (its process is gone then)."""
+    try:
+        shutil.rmtree(path, ignore_errors=True)
+    except OSError:
+        pass
+
+
 def _make_stage(folder: Path, tag: str = "") -> Path:
-    return Path(tempfile.mkdtemp(prefix=_staging_prefix(tag), dir=folder))
+    """A new staging folder in *folder*, known as this process's own before it exists (another thread's
+    clean-up must never take it for a leftover)."""
+    for _ in range(100):
+        stage = Path(folder) / (_staging_prefix(tag) + secrets.token_hex(4))
+        _ACTIVE.add(_key(stage))
+        made = False
+        try:
+            os.mkdir(stage, 0o700)
+            made = True
+            return stage
+        except FileExistsError:
+            continue
+        finally:
+            if not made:
+                _ACTIVE.discard(_key(stage))
+    raise FileExistsError(errno.EEXIST, "no free name for a staging folder", str(folder))
+
+
+def _release(stage: Path) -> None:
+    """Remove a staging folder this process made (what cannot be removed, the next run removes)."""
+    try:
+        _remove_tree(stage)
+    finally:
+        _ACTIVE.discard(_key(stage))
 
 
 # --------------------------------------------------------------------------- staging inside the target
@@ -208,14 +297,19 @@ def staged_output(target: str | os.PathLike[str], *, recognise: Callable[[Path],
     except OSError as exc:
         raise OutputError(f"cannot write to {what} {str(target)!r}: {_reason(exc)}") from None
     try:
-        yield stage
+        try:
+            yield stage
+        except OSError as exc:
+            if isinstance(exc, OutputError):
+                raise
+            raise write_failure(exc, target, stage, what) from None
         _commit(stage, target, exact=recognise is not None)
     except BaseException:
-        shutil.rmtree(stage, ignore_errors=True)
+        _release(stage)
         if created is not None:
             shutil.rmtree(created, ignore_errors=True)
         raise
-    shutil.rmtree(stage, ignore_errors=True)
+    _release(stage)
 
 
 def _commit(stage: Path, target: Path, *, exact: bool = False) -> None:
@@ -228,7 +322,7 @@ def _commit(stage: Path, target: Path, *, exact: bool = False) -> None:
                 old = _make_stage(target, "old-")
                 os.replace(dest, old / entry.name)
                 os.replace(entry, dest)
-                shutil.rmtree(old, ignore_errors=True)
+                _release(old)
             else:
                 os.replace(entry, dest)
         if exact:  # what the previous run wrote and this one did not (recognised as ours before)
@@ -248,15 +342,25 @@ def _commit(stage: Path, target: Path, *, exact: bool = False) -> None:
 
 
 @contextlib.contextmanager
-def replaced_folder(target: str | os.PathLike[str], *, recognise: Callable[[Path], bool], described: str,
-                    what: str = "output folder") -> Iterator[Path]:
+def replaced_folder(target: str | os.PathLike[str], *, recognise: Callable[[Path], bool] | None = None,
+                    described: str, what: str = "output folder", manifest: str | None = None) -> Iterator[Path]:
     """Yield the path to build the new *target* at (beside it); on success swap it in whole.
 
     *target* must be missing, empty or recognised by *recognise* (else
-    OutputError).  The new folder is built in a staging folder in *target*'s
-    parent, so that folder must be writable; a failure leaves *target* as it
-    was.
+    OutputError).  With *manifest* (the writer: "gallery", "replay") the
+    folder is recognised by the manifest that writer left in it
+    (:mod:`construct.io.manifest`) and the new folder gets one.  The new
+    folder is built in a staging folder in *target*'s parent, so that folder
+    must be writable; a failure leaves *target* as it was, and a write that
+    fails (a full disk, a quota, a permission) is one OutputError naming the
+    path and the cause.
     """
+    if recognise is None:
+        if manifest is None:
+            raise TypeError("replaced_folder needs recognise= or manifest=")
+        from .manifest import recogniser
+
+        recognise = recogniser(manifest)
     target = output_path(target, what)
     existed = _check_replaceable(target, recognise, described, what)
     try:
@@ -280,48 +384,169 @@ def replaced_folder(target: str | os.PathLike[str], *, recognise: Callable[[Path
         raise OutputError(f"cannot create the folder {str(parent)!r} for {what} {str(target)!r}: "
                           f"{_reason(exc)}") from None
     remove_stale_staging(parent)
+    stage: Path | None = None
+    swapped = False
     try:
-        stage = _make_stage(parent)
-    except OSError as exc:
-        if created is not None:
-            shutil.rmtree(created, ignore_errors=True)
-        # The target itself may well be writable: it is its parent that the whole-folder swap needs.
-        raise OutputError(f"cannot replace {what} {str(target)!r}: it is built beside it and swapped in whole, "
-                          f"and its parent folder {str(parent)!r} is not writable ({_reason(exc)})") from None
-    new = stage / target.name
-    try:
-        yield new
-        if not new.is_dir():
-            raise OutputError(f"nothing was written for {what} {str(target)!r}")
-        _swap(stage, new, target, existed)
-    except BaseException:
-        shutil.rmtree(stage, ignore_errors=True)
-        if created is not None:
-            shutil.rmtree(created, ignore_errors=True)
-        raise
-    shutil.rmtree(stage, ignore_errors=True)
-
-
-def _swap(stage: Path, new: Path, target: Path, existed: bool) -> None:
-    old = stage / ".old"
-    try:
-        if existed:
-            os.replace(target, old)
         try:
-            os.replace(new, target)
-        except OSError:
-            if existed:
-                os.replace(old, target)  # put the previous folder back
+            with signals_deferred():  # made and noted as one: a signal in between would leave it unnoted
+                stage = _make_stage(parent)
+                with open(stage / _TARGET_NOTE, "w", encoding="utf-8") as fh:  # for the next run, if this is killed
+                    fh.write(target.name)
+        except OSError as exc:
+            # The target itself may well be writable: it is its parent that the whole-folder swap needs.
+            raise OutputError(f"cannot replace {what} {str(target)!r}: it is built beside it and swapped in "
+                              f"whole, and its parent folder {str(parent)!r} is not writable ({_reason(exc)})"
+                              ) from None
+        new = stage / target.name
+        try:
+            yield new
+            if not new.is_dir():
+                raise OutputError(f"nothing was written for {what} {str(target)!r}")
+            if manifest is not None:
+                from .manifest import write_manifest
+
+                write_manifest(new, manifest)
+        except OSError as exc:
+            if isinstance(exc, OutputError):
+                raise
+            raise write_failure(exc, target, new, what) from None
+        with signals_deferred():  # Ctrl-C or SIGTERM from here on waits until the old or the new is in place
+            swapped = _swap(stage, new, target, existed, what)
+            _release(stage)
+    except BaseException:
+        if not swapped:
+            if stage is not None and os.path.isdir(stage / _OLD) and not os.path.lexists(target):
+                _ACTIVE.discard(_key(stage))  # the previous folder could not be put back: the next run restores it
+            elif stage is not None:
+                _release(stage)
+            if created is not None and not os.path.lexists(target):
+                shutil.rmtree(created, ignore_errors=True)
+        raise
+
+
+def write_failure(exc: OSError, target: Path, stage: Path, what: str) -> OutputError:
+    """A write that failed while a folder was staged, as one line naming the target, the file and the cause."""
+    name = getattr(exc, "filename", None)
+    where = ""
+    if name:
+        try:
+            where = f" (writing {Path(os.fsdecode(name)).relative_to(stage).as_posix()})"
+        except ValueError:
+            where = f" (writing {os.fsdecode(name)})"
+    return OutputError(f"cannot write {what} {str(target)!r}: {_reason(exc)}{where}; "
+                       f"nothing was changed, the previous {what} is kept")
+
+
+#: renameat2's flag for an atomic exchange of two paths (Linux 3.15, glibc 2.28), and the "current folder" fd.
+_RENAME_EXCHANGE, _AT_FDCWD = 2, -100
+_renameat2: Any = None
+
+
+def _exchange(a: Path, b: Path) -> bool:
+    """Swap *a* and *b* in one atomic step where the system can (Linux); False where it cannot."""
+    global _renameat2
+    if _renameat2 is None:
+        try:
+            import ctypes
+
+            libc = ctypes.CDLL(None, use_errno=True)
+            fn = libc.renameat2
+            fn.argtypes = [ctypes.c_int, ctypes.c_char_p, ctypes.c_int, ctypes.c_char_p, ctypes.c_uint]
+            _renameat2 = (fn, ctypes)
+        except (OSError, AttributeError, ImportError):
+            _renameat2 = False
+    if not _renameat2:
+        return False
+    fn, ctypes = _renameat2
+    if fn(_AT_FDCWD, os.fsencode(a), _AT_FDCWD, os.fsencode(b), _RENAME_EXCHANGE) == 0:
+        return True
+    err = ctypes.get_errno()
+    if err in (errno.ENOSYS, errno.EINVAL, errno.ENOTSUP, errno.EOPNOTSUPP, errno.EPERM):
+        return False  # no exchange here (old kernel, a file system without it): two renames instead
+    raise OSError(err, os.strerror(err), os.fsdecode(b))
+
+
+def _swap(stage: Path, new: Path, target: Path, existed: bool, what: str) -> bool:
+    """Put *new* in place of *target*; True when done.  At every moment *target* is the old folder or
+    the new one: by one atomic exchange where the system has it; else by two renames, and if the
+    second fails the first is undone (should even that fail, the old folder stays in *stage* for the
+    next run to put back, and the message says where it is)."""
+    try:
+        if not existed or not os.path.lexists(target):
+            os.rename(new, target)
+            return True
+        if _exchange(new, target):
+            return True
+        old = stage / _OLD
+        os.rename(target, old)
+        try:
+            os.rename(new, target)
+        except BaseException:
+            try:
+                os.rename(old, target)  # put the previous folder back
+            except OSError as exc:
+                raise OutputError(f"cannot replace {str(target)!r}: {_reason(exc)}; the previous {what} is "
+                                  f"kept in {str(old)!r} and the next run puts it back") from None
             raise
+        return True
+    except OutputError:
+        raise
     except OSError as exc:
-        raise OutputError(f"cannot replace {str(target)!r}: {_reason(exc)}") from None
+        raise OutputError(f"cannot replace {str(target)!r}: {_reason(exc)}; the previous {what} is kept") from None
+
+
+_DEFERRED = ("SIGINT", "SIGTERM", "SIGHUP")
+
+
+@contextlib.contextmanager
+def signals_deferred() -> Iterator[None]:
+    """Ctrl-C, SIGTERM and SIGHUP wait until the block is done, then arrive as they would have.
+
+    For the moments a folder is swapped and its staging removed: a signal
+    there would leave the target missing or a staging folder behind.  Only
+    the main thread receives signals in Python; elsewhere nothing changes.
+    """
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    caught: list[int] = []
+    previous = {}
+    for name in _DEFERRED:
+        sig = getattr(signal, name, None)
+        if sig is None or signal.getsignal(sig) is None:  # None: a handler set outside Python, not restorable
+            continue
+        try:
+            previous[sig] = signal.signal(sig, lambda signum, frame: caught.append(signum))
+        except (ValueError, OSError):
+            pass
+    try:
+        yield
+    finally:
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
+        for sig in dict.fromkeys(caught):
+            signal.raise_signal(sig)  # now, under the handler that was there before
 
 
 def write_text(path: Path, text: str) -> None:
-    """Write *text* as UTF-8 with LF line ends, creating parent folders."""
+    """Write *text* as UTF-8 with LF line ends, creating parent folders.
+
+    Text that is not Unicode (a lone surrogate, from a caption or a name of a caller's) has no UTF-8:
+    an OutputError names the file and where in the text it is, nothing is written.
+    """
+    try:
+        data = text.encode("utf-8")
+    except UnicodeEncodeError as exc:
+        raise OutputError(f"cannot write {path.name}: its text holds {text[exc.start]!r} at character {exc.start}, "
+                          f"which is not Unicode text (a lone surrogate); correct the name or caption") from None
     path.parent.mkdir(parents=True, exist_ok=True)
-    with open(path, "w", encoding="utf-8", newline="\n") as fh:
-        fh.write(text)
+    try:
+        with open(path, "wb") as fh:
+            fh.write(data)
+    except OSError as exc:  # a write error carries no file name: the message names the file
+        if exc.filename is None and exc.errno is not None:
+            raise OSError(exc.errno, exc.strerror, str(path)) from None
+        raise
 
 
 def write_bytes(target: str | os.PathLike[str], data: bytes) -> Path:

@@ -20,6 +20,7 @@ __all__ = [
     "InvalidParameter",
     "UnknownConstruction",
     "ProtocolFormatError",
+    "InputFileError",
     "OutputError",
     "StepError",
     "GeometryError",
@@ -50,6 +51,10 @@ class UnknownConstruction(ConstructError, KeyError):
 
 class ProtocolFormatError(ConstructError, ValueError):
     """A protocol file is malformed or refers to objects it never made."""
+
+
+class InputFileError(ConstructError, ValueError):
+    """A file to read is missing, not a regular file (a pipe, a device, a folder) or larger than its limit."""
 
 
 class OutputError(ConstructError, OSError):

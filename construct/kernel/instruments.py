@@ -33,12 +33,15 @@ import numpy as np
 
 from .errors import DuplicateName, InvalidParameter, RuleError, StepError, UnknownObject, WrongInput
 from .protocol import EXACT, GIVEN, ROLES, TOOLS, Caption, Protocol, Provenance, Replay, Step, compile_step, run_step
+from .numeric import as_float, shown
+from .ops import MAX_PARTS
 from .rules import Rule, as_rule
 
 
 #: The most parts divide_segment draws: as many as the finest semicircle division (3600); each part
-#: costs a few steps, and 10**9 parts would fill the memory before the first one is drawn.
-MAX_SEGMENT_PARTS = 3600
+#: costs a few steps, and 10**9 parts would fill the memory before the first one is drawn.  The same
+#: bound as the dividers' trial_chord step (ops.MAX_PARTS).
+MAX_SEGMENT_PARTS = MAX_PARTS
 
 __all__ = ["Builder"]
 
@@ -702,7 +705,7 @@ class Builder:
         """
         if not isinstance(n, int) or isinstance(n, bool) or not 2 <= n <= MAX_SEGMENT_PARTS:
             raise InvalidParameter(f"divide_segment needs 2..{MAX_SEGMENT_PARTS} parts, got {n!r}")
-        wanted = list(range(1, n)) if only is None else list(only)
+        wanted = list(range(1, n)) if only is None else _division_points(only, n)
         halvings = max(0, math.ceil(math.log2(n)) - 2)
         with self.group(f"{a}{b} divided into {n} equal parts", f"{a}{b} in {n} gleiche Teile geteilt"):
             ab = line or self.line(self.fresh(f"{name}.g"), a, b)
@@ -782,8 +785,24 @@ class Builder:
 
 
 def _shown(value: Any) -> str:
-    text = repr(value)
-    return text if len(text) <= 60 else text[:57] + "..."
+    return shown(value)
+
+
+def _division_points(only: Any, n: int) -> list[int]:
+    """The division points *only* names (1..n-1, each once), else an InvalidParameter naming the argument.
+
+    >>> _division_points([0], 4)
+    Traceback (most recent call last):
+    ...
+    construct.kernel.errors.InvalidParameter: divide_segment(..., only=...) names division points 1..3 of 4 parts, each once; got [0]
+    """
+    ok = (not isinstance(only, (str, bytes, Mapping)) and isinstance(only, (Sequence, set, frozenset, range))
+          and all(isinstance(k, int) and not isinstance(k, bool) and 1 <= k < n for k in only)
+          and len(set(only)) == len(only))
+    if not ok:
+        raise InvalidParameter(f"divide_segment(..., only=...) names division points 1..{n - 1} of {n} parts, "
+                               f"each once; got {shown(only)}")
+    return sorted(only) if isinstance(only, (set, frozenset)) else list(only)
 
 
 def _check_given(name: Any, value: Any) -> None:
@@ -792,8 +811,7 @@ def _check_given(name: Any, value: Any) -> None:
         raise InvalidParameter(f"givens are named by non-empty strings, got {_shown(name)}")
     values = value if isinstance(value, (list, tuple, np.ndarray)) else (value,)
     for v in np.ravel(np.asarray(values, dtype=object)):
-        if isinstance(v, bool) or not isinstance(v, numbers.Real) or not math.isfinite(v):
-            raise InvalidParameter(f"the given {name!r} must be a finite number, got {_shown(value)}")
+        as_float(v, f"the given {shown(name)}")
 
 
 def _record_problem(tool: Any, inputs: Any, outputs: Any, de: Any, en: Any, role: Any, labels: Any,

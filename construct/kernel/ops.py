@@ -43,10 +43,11 @@ from .curves import BezierCurve, Polyline, crossings, french_curve_op, parabola_
 from .errors import GeometryError, NoIntersection
 from .geometry import (SCALAR, Circle, Length, Line, Point, Sweep, raw_circle, raw_point, circle_circle, line_circle,
                        line_line, stack, take)
+from .numeric import is_finite, shown
 from .rules import choose, choose_among
 from .trial import neusis_archimedes_op, trial_chord_op
 
-__all__ = ["Op", "OPS", "KINDS", "OBJECT_KINDS", "ACCEPTS", "PARAM_KINDS", "kind_of", "elementwise"]
+__all__ = ["MAX_PARTS", "Op", "OPS", "KINDS", "OBJECT_KINDS", "ACCEPTS", "PARAM_KINDS", "kind_of", "elementwise"]
 
 #: Input kinds an op declares, and the values that fill them.
 KINDS: dict[str, tuple[type, ...]] = {
@@ -85,7 +86,7 @@ def _real(v: Any) -> bool:
 
 
 def _finite(v: Any) -> bool:
-    return _real(v) and math.isfinite(v)
+    return is_finite(v)  # a 400-digit integer from a file is not finite: it has no float
 
 
 def _name(v: Any) -> bool:
@@ -96,12 +97,18 @@ def _whole(v: Any) -> bool:
     return isinstance(v, int) and not isinstance(v, bool)
 
 
+#: The most parts an instrument step divides into (dividers set by trial to 1/n of an arc; a segment
+#: divided by the intercept theorem): as many as the finest semicircle division.  The dividers step
+#: round n times per trial, so 10**7 parts in a file would run for minutes before failing.
+MAX_PARTS = 3600
+
 #: The kinds of step parameters: a test and what it asks for (for the error message).
 PARAM_KINDS: dict[str, tuple[Callable[[Any], bool], str]] = {
     "number": (_finite, "a finite number"),
     "number|null": (lambda v: v is None or _finite(v), "a finite number or null"),
     "positive": (lambda v: _finite(v) and v > 0, "a finite number > 0"),
     "count": (lambda v: _whole(v) and v >= 1, "a whole number >= 1"),
+    "parts": (lambda v: _whole(v) and 1 <= v <= MAX_PARTS, f"a whole number of parts 1..{MAX_PARTS}"),
     "flag": (lambda v: isinstance(v, bool), "true or false"),
     "given|null": (lambda v: v is None or _name(v), "the name of a given, or null"),
     "givens": (lambda v: isinstance(v, (list, tuple)) and all(_name(g) for g in v), "a list of names of givens"),
@@ -192,8 +199,7 @@ class Op:
 
 
 def _short(value: Any) -> str:
-    text = repr(value)
-    return text if len(text) <= 60 else text[:57] + "..."
+    return shown(value)
 
 
 # --------------------------------------------------------------------------
@@ -368,7 +374,7 @@ OPS: dict[str, Op] = {op.name: op for op in (
     Op("pick", _pick, ("point", "point"), rule=True, params={"rule": "rule"},
        doc="of two constructed points, the one a rule names (an envelope of two curves, point by point)"),
     Op("trial_chord", trial_chord_op, ("circle", "point", "point"), vector=False, outputs=("length",),
-       params={"parts": "count", "tolerance": "positive"},
+       params={"parts": "parts", "tolerance": "positive"},
        doc="dividers set by trial to 1/n of an arc"),
     Op("neusis_archimedes", neusis_archimedes_op, ("point", "point", "point", "circle"), vector=False,
        outputs=("point", "point"),

@@ -43,6 +43,7 @@ from .geometry import SCALAR, Circle, Length, Line, Point, Sweep, ArrayMath, tak
 from .ops import ACCEPTS, OPS, elementwise
 from .protocol_file import (KNOWN_FORMATS, PROTOCOL_FILE_FORMAT, PROTOCOL_FORMAT, PROVENANCE_KINDS, ROLES, TOOLS,
                             check_format, frozen, parse_protocol_json, read_protocol_bytes, step_fields)
+from .numeric import as_float, is_finite, shown
 from .rules import as_rule
 
 __all__ = [
@@ -363,19 +364,14 @@ def sweep_givens(givens: Mapping[str, Any]) -> tuple[dict[str, Any], Any]:
 
 
 def _shown(value: Any) -> str:
-    text = repr(value)
-    return text if len(text) <= 60 else text[:57] + "..."
+    return shown(value)
 
 
 def _given_number(name: Any, value: Any) -> float:
     """A given as a float: a finite real number, else an InvalidParameter naming it."""
     if type(value) is float and math.isfinite(value):
         return value
-    if isinstance(value, numbers.Real) and not isinstance(value, bool):
-        v = float(value)
-        if math.isfinite(v):
-            return v
-    raise InvalidParameter(f"the given {name!r} must be a finite number, got {_shown(value)}")
+    return as_float(value, f"the given {shown(name)}")
 
 
 def _given_array(name: Any, value: Any) -> Any:
@@ -383,7 +379,10 @@ def _given_array(name: Any, value: Any) -> Any:
     numeric = (value.dtype.kind in "fiu" if isinstance(value, np.ndarray)
                else all(isinstance(v, numbers.Real) and not isinstance(v, bool) for v in value))
     if not numeric:
-        raise InvalidParameter(f"the swept given {name!r} must be numbers, got {_shown(value)}")
+        raise InvalidParameter(f"the swept given {shown(name)} must be numbers, got {_shown(value)}")
+    if not isinstance(value, np.ndarray) or value.dtype.kind == "O":
+        for v in value:  # a huge int has no float: refused here, not by an OverflowError in numpy
+            as_float(v, f"the swept given {shown(name)}")
     a = np.asarray(value, dtype=float)
     if not np.isfinite(a).all():
         raise InvalidParameter(f"the swept given {name!r} must be finite numbers, got {a[~np.isfinite(a)][:3].tolist()}")
@@ -694,9 +693,12 @@ class Protocol:
         if not isinstance(stored, Mapping):
             raise ProtocolFormatError(f"protocol 'params.givens' must map names to numbers, got {_shown(stored)}")
         for key, value in stored.items():
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-                raise ProtocolFormatError(f"protocol 'params.givens': the given {key!r} must be a finite number, "
-                                          f"got {_shown(value)}")
+            as_float(value, f"protocol 'params.givens': the given {shown(key)}", ProtocolFormatError)
+        titles = params.get("group_titles")  # read by every drawing of the protocol: checked here, once
+        if titles is not None and not (isinstance(titles, Mapping) and all(
+                isinstance(k, str) and isinstance(v, str) for k, v in titles.items())):
+            raise ProtocolFormatError(f"protocol 'params.group_titles' must map each English group title to its "
+                                      f"German one (text to text), got {_shown(titles)}")
         givens = d.get("givens", [])
         if not isinstance(givens, list) or not all(isinstance(g, str) for g in givens):
             raise ProtocolFormatError(f"protocol 'givens' must be a list of names, got {_shown(givens)}")
@@ -735,7 +737,7 @@ class Protocol:
         >>> Protocol.load("/dev/zero")
         Traceback (most recent call last):
         ...
-        construct.kernel.errors.ProtocolFormatError: protocol file '/dev/zero' is not a regular file (a pipe or a device); save the protocol to a file and name that
+        construct.kernel.errors.ProtocolFormatError: cannot read protocol file '/dev/zero': it is not a regular file (a device); name a regular file
         """
         data = read_protocol_bytes(path)
         return cls.from_dict(parse_protocol_json(data, f"protocol file {os.fsdecode(os.fspath(path))!r}"))

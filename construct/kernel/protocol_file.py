@@ -18,13 +18,14 @@ from __future__ import annotations
 
 import json
 import math
-import os
-import stat
+import re
 from types import MappingProxyType
 from collections.abc import Mapping
 from typing import Any
 
 from .errors import ProtocolFormatError
+from .files import read_regular_file
+from .numeric import as_float, shown
 
 __all__ = ["PROTOCOL_FORMAT", "PROTOCOL_FILE_FORMAT", "KNOWN_FORMATS", "TOOLS", "ROLES", "PROVENANCE_KINDS",
            "MAX_PROTOCOL_BYTES", "MAX_NESTING", "read_protocol_bytes", "parse_protocol_json", "check_format",
@@ -63,59 +64,17 @@ _STEP_KEYS = ("index", "tool", "op", "inputs", "outputs", "params", "caption", "
 
 
 def _short(value: Any, limit: int = 60) -> str:
-    text = repr(value)
-    return text if len(text) <= limit else text[:limit - 3] + "..."
+    return shown(value, limit)
 
 
 def read_protocol_bytes(path: Any) -> bytes:
     """The bytes of a protocol file, at most :data:`MAX_PROTOCOL_BYTES` of them.
 
-    Only a regular file is read: its size is known before reading, and
-    nothing can make the read wait (a FIFO with no writer) or run on forever
-    (``/dev/zero``).  The file is opened without blocking and then checked,
-    so a path swapped for a FIFO cannot hang the open either.
+    Only a regular file is read (:func:`construct.kernel.files.read_regular_file`):
+    its size is known before reading, and nothing can make the read wait (a
+    FIFO with no writer) or run on forever (``/dev/zero``).
     """
-    try:
-        name = os.fsdecode(os.fspath(path))
-    except TypeError:
-        raise ProtocolFormatError(f"a protocol file is named by a path, got {_short(path)}") from None
-    if not name:
-        raise ProtocolFormatError("the protocol file name is empty")
-    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0)
-    try:
-        fd = os.open(name, flags)
-    except FileNotFoundError:
-        raise ProtocolFormatError(f"protocol file {name!r} does not exist") from None
-    except (OSError, ValueError) as exc:  # ValueError: a NUL byte in the name
-        raise ProtocolFormatError(f"cannot read protocol file {name!r}: {getattr(exc, 'strerror', None) or exc}") from None
-    try:
-        info = os.fstat(fd)
-        if stat.S_ISDIR(info.st_mode):
-            raise ProtocolFormatError(f"protocol file {name!r} is a folder")
-        if not stat.S_ISREG(info.st_mode):
-            raise ProtocolFormatError(f"protocol file {name!r} is not a regular file (a pipe or a device); "
-                                      f"save the protocol to a file and name that")
-        if info.st_size > MAX_PROTOCOL_BYTES:
-            raise ProtocolFormatError(_too_big(name, info.st_size))
-        chunks, total = [], 0
-        while total <= MAX_PROTOCOL_BYTES:  # a file that grows while read is cut off at the limit too
-            chunk = os.read(fd, min(1 << 20, MAX_PROTOCOL_BYTES + 1 - total))
-            if not chunk:
-                break
-            chunks.append(chunk)
-            total += len(chunk)
-        if total > MAX_PROTOCOL_BYTES:
-            raise ProtocolFormatError(_too_big(name, total))
-        return b"".join(chunks)
-    except OSError as exc:
-        raise ProtocolFormatError(f"cannot read protocol file {name!r}: {exc.strerror or exc}") from None
-    finally:
-        os.close(fd)
-
-
-def _too_big(name: str, size: int) -> str:
-    return (f"protocol file {name!r} is larger than {MAX_PROTOCOL_BYTES // 2**20} MiB "
-            f"({size if size <= MAX_PROTOCOL_BYTES else 'more'} bytes); no protocol this library writes is")
+    return read_regular_file(path, limit=MAX_PROTOCOL_BYTES, what="protocol file", error=ProtocolFormatError)
 
 
 def parse_protocol_json(text: str | bytes, label: str = "protocol") -> Any:
@@ -129,11 +88,57 @@ def parse_protocol_json(text: str | bytes, label: str = "protocol") -> Any:
     if not isinstance(text, (str, bytes, bytearray)):
         raise ProtocolFormatError(f"{label}: the text of a protocol is a str or bytes, got {type(text).__name__}")
     try:
-        return json.loads(text)
+        data = json.loads(text)
     except RecursionError:
         raise ProtocolFormatError(f"{label}: not a JSON protocol: nested too deeply") from None
     except ValueError as exc:  # JSONDecodeError, UnicodeDecodeError, an integer of more than 4300 digits
         raise ProtocolFormatError(f"{label}: not a JSON protocol: {exc}") from None
+    if _may_hold_surrogate(text):
+        where = _lone_surrogate(data)
+        if where is not None:
+            raise ProtocolFormatError(f"{label}: {where} holds a lone surrogate (a half of a UTF-16 pair, "
+                                      f"\\ud800-\\udfff), which is not text; no name or caption can hold one")
+    return data
+
+
+def _may_hold_surrogate(text: str | bytes) -> bool:
+    """Whether the text of a file may hold a lone surrogate: a JSON escape (``\\u``), a surrogate itself
+    (text given as str) or its UTF-8-like bytes (lead byte 0xED; json reads those from bytes too).  Only
+    then are the parsed strings searched, one by one; the usual protocol is passed over in a scan."""
+    if isinstance(text, str):
+        if "\\u" in text:
+            return True
+        try:
+            text.encode("utf-8")
+        except UnicodeEncodeError:
+            return True
+        return False
+    return b"\\u" in text or b"\xed" in text
+
+
+def _lone_surrogate(data: Any) -> str | None:
+    """Where in parsed JSON a string (or a key) holds a lone surrogate, as a path; None when none does.
+
+    A surrogate pair written as two escapes is one character once parsed; what is left is a lone half,
+    which no UTF-8 file, terminal or SVG can hold.
+    """
+    stack: list[tuple[str, Any]] = [("the protocol", data)]
+    while stack:
+        where, v = stack.pop()
+        if isinstance(v, str):
+            if _SURROGATE.search(v):
+                return where
+        elif isinstance(v, dict):
+            for k, x in v.items():
+                if _SURROGATE.search(k):
+                    return f"a key of {where}"
+                stack.append((f"{where}.{k}" if where != "the protocol" else str(k), x))
+        elif isinstance(v, list):
+            stack.extend((f"{where}[{i}]", x) for i, x in enumerate(v))
+    return None
+
+
+_SURROGATE = re.compile("[\ud800-\udfff]")
 
 
 def check_format(d: Mapping[str, Any]) -> str:
@@ -264,10 +269,9 @@ def _provenance(prov: Any, where: str) -> tuple[str, str | None, float | None]:
     method, error = prov.get("method"), prov.get("error")
     if method is not None and not isinstance(method, str):
         raise ProtocolFormatError(f"{where}: provenance 'method' must be text or null, got {_short(method)}")
-    if error is not None and (isinstance(error, bool) or not isinstance(error, (int, float))
-                              or not math.isfinite(error)):
-        raise ProtocolFormatError(f"{where}: provenance 'error' must be a finite number or null, got {_short(error)}")
-    return (kind, method, None if error is None else float(error))
+    if error is not None:
+        error = as_float(error, f"{where}: provenance 'error'", ProtocolFormatError)
+    return (kind, method, error)
 
 
 def _group(g: Any, where: str, table: Any) -> tuple[str, ...]:

@@ -31,6 +31,7 @@ from typing import Any, Sequence
 
 from .errors import RuleError
 from .geometry import raw_point
+from .numeric import is_finite, shown
 
 __all__ = ["Rule", "nearer", "farther", "left_of", "right_of", "toward", "only", "as_rule", "RULE_ARITY", "choose"]
 
@@ -105,29 +106,54 @@ def _direction(direction: Any) -> tuple[float, float]:
     except (TypeError, ValueError):
         raise RuleError(f"rule 'toward' takes a direction (dx, dy), got {direction!r}") from None
     for v in (dx, dy):
-        if isinstance(v, bool) or not isinstance(v, numbers.Real) or not math.isfinite(v):
-            raise RuleError(f"rule 'toward' needs a direction of two finite numbers, got ({dx!r}, {dy!r})")
+        if not is_finite(v):
+            raise RuleError(f"rule 'toward' needs a direction of two finite numbers, got ({shown(dx)}, {shown(dy)})")
     return float(dx), float(dy)
 
 
-def nearer(point: str) -> Rule:
-    """The intersection nearer to *point*."""
-    return Rule("nearer", (point,))
+def _points(fn: str, points: tuple[Any, ...], want: int) -> tuple[str, ...]:
+    """The point names a rule function was called with, else a RuleError naming the rule and what it takes.
+
+    Called as ``nearer()`` or ``left_of("A")`` Python's own TypeError would not say which rule of which
+    step; this one does.
+    """
+    if len(points) != want or not all(isinstance(p, str) and p for p in points):
+        takes = "one point name" if want == 1 else f"{want} point names"
+        got = ", ".join(shown(p) for p in points) or "nothing"
+        raise RuleError(f"rule {fn}() takes {takes}, got {got}")
+    return tuple(points)
 
 
-def farther(point: str) -> Rule:
-    """The intersection farther from *point*."""
-    return Rule("farther", (point,))
+def nearer(*point: str) -> Rule:
+    """The intersection nearer to *point* (one name).
+
+    >>> nearer()
+    Traceback (most recent call last):
+    ...
+    construct.kernel.errors.RuleError: rule nearer() takes one point name, got nothing
+    """
+    return Rule("nearer", _points("nearer", point, 1))
 
 
-def left_of(a: str, b: str) -> Rule:
-    """The intersection to the left of the directed line a→b."""
-    return Rule("left", (a, b))
+def farther(*point: str) -> Rule:
+    """The intersection farther from *point* (one name)."""
+    return Rule("farther", _points("farther", point, 1))
 
 
-def right_of(a: str, b: str) -> Rule:
-    """The intersection to the right of the directed line a→b."""
-    return Rule("right", (a, b))
+def left_of(*ab: str) -> Rule:
+    """The intersection to the left of the directed line a→b (two names).
+
+    >>> left_of("A")
+    Traceback (most recent call last):
+    ...
+    construct.kernel.errors.RuleError: rule left_of() takes 2 point names, got 'A'
+    """
+    return Rule("left", _points("left_of", ab, 2))
+
+
+def right_of(*ab: str) -> Rule:
+    """The intersection to the right of the directed line a→b (two names)."""
+    return Rule("right", _points("right_of", ab, 2))
 
 
 def toward(a: str | None = None, b: str | None = None, *, dx: float | None = None, dy: float | None = None) -> Rule:

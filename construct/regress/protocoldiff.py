@@ -33,6 +33,7 @@ from pathlib import Path
 from typing import Any, Mapping, Sequence
 
 from ..kernel.errors import InvalidParameter, ProtocolFormatError
+from ..kernel.numeric import json_number_problems, shown
 from ..kernel.protocol_file import (MAX_PROTOCOL_BYTES, check_format, check_nesting, parse_protocol_json,
                                     read_protocol_bytes)
 
@@ -59,7 +60,8 @@ def _is_num(x: Any) -> bool:
 def _close(x: Any, y: Any, tol: float) -> bool:
     """Equal JSON values, numbers within *tol* (``5`` equals ``5.0``)."""
     if _is_num(x) and _is_num(y):
-        return x == y or abs(float(x) - float(y)) <= tol
+        # NaN against NaN: the same value read twice (a file compared with itself is equal)
+        return x == y or abs(float(x) - float(y)) <= tol or (math.isnan(x) and math.isnan(y))
     if isinstance(x, list) and isinstance(y, list):
         return len(x) == len(y) and all(_close(p, q, tol) for p, q in zip(x, y))
     if isinstance(x, dict) and isinstance(y, dict):
@@ -129,7 +131,10 @@ def _read(source: str | Path | bytes | Mapping[str, Any]) -> tuple[Any, str]:
     if len(text) > MAX_PROTOCOL_BYTES:
         raise ProtocolFormatError(f"{label}: larger than {MAX_PROTOCOL_BYTES // 2**20} MiB; no protocol this "
                                   f"library writes is")
-    return parse_protocol_json(text, label), label
+    data = parse_protocol_json(text, label)
+    for where, value in json_number_problems(data):  # JSON allows integers no float can hold
+        raise ProtocolFormatError(f"{label}: {where} must be a finite number, got {shown(value)}")
+    return data, label
 
 
 def load_protocol(source: str | Path | bytes | Mapping[str, Any]) -> _Protocol:

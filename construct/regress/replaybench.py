@@ -93,9 +93,13 @@ def sweep_bench(size: int = 10_000, rod_ratio: float = 5.0) -> dict[str, Any]:
 
 def verdicts(results: list[dict[str, Any]], sweep: dict[str, Any] | None = None) -> list[str]:
     out = []
-    first = next(r for r in results if r["parts"] == 18 and r["method"] == "durer")
-    ok = first["replay_s"] <= 1e-3
-    out.append(f"target replay n=18 <= 1 ms: {first['replay_s'] * 1e3:.3f} ms -> {'met' if ok else 'MISSED'}")
+    # The 1 ms target is about the 18-part crank by Durer's division; `bench --parts N` may not run it.
+    first = next((r for r in results if r["parts"] == 18 and r["method"] == "durer"), None)
+    if first is not None:
+        ok = first["replay_s"] <= 1e-3
+        out.append(f"target replay n=18 <= 1 ms: {first['replay_s'] * 1e3:.3f} ms -> {'met' if ok else 'MISSED'}")
+    else:
+        out.append("target replay n=18 <= 1 ms: not measured (the 18-part crank by Dürer's division was not run)")
     for method in sorted({r["method"] for r in results}):
         same = [r for r in results if r["method"] == method]
         if len(same) < 2:

@@ -205,10 +205,27 @@ def _kind(path: str) -> str:
     return "text"
 
 
+#: The largest golden read, by kind: a drawing (a 3600-part replay's final.svg is a few MB, a
+#: million-element drawing about 80 MB) and any other file (the largest text golden is under 1 MB).
+#: A golden that is a pipe, a device or a link to one is refused before it is opened.
+MAX_GOLDEN_BYTES = {"svg": 320 * 2**20, "protocol": 64 * 2**20, "png": 64 * 2**20, "text": 64 * 2**20}
+
+
+def _check_readable(path: Path, kind: str) -> None:
+    """*path* is a regular file within its kind's limit, else VerifyInputError naming it (nothing is read)."""
+    from ..io.reading import open_regular_file
+
+    with open_regular_file(path, limit=MAX_GOLDEN_BYTES[kind], what="golden" if kind != "svg" else "drawing",
+                           error=VerifyInputError):
+        pass
+
+
 def png_size(path: Path) -> tuple[int, int] | None:
     """Width and height from a PNG header, or None when it is not a PNG."""
-    with open(path, "rb") as fh:
-        head = fh.read(24)
+    from ..io.reading import open_regular_file
+
+    with open_regular_file(path, limit=MAX_GOLDEN_BYTES["png"], what="image", error=VerifyInputError) as (fd, _):
+        head = os.read(fd, 24)
     if len(head) < 24 or head[:8] != b"\x89PNG\r\n\x1a\n" or head[12:16] != b"IHDR":
         return None
     w, h = struct.unpack(">II", head[16:24])
@@ -216,8 +233,11 @@ def png_size(path: Path) -> tuple[int, int] | None:
 
 
 def _read_text(path: Path) -> str | None:
+    from ..io.reading import read_regular_file
+
+    data = read_regular_file(path, limit=MAX_GOLDEN_BYTES["text"], what="golden", error=VerifyInputError)
     try:
-        return path.read_text(encoding="utf-8").replace("\r\n", "\n")
+        return data.decode("utf-8").replace("\r\n", "\n")
     except UnicodeDecodeError:
         return None
 
@@ -262,9 +282,11 @@ def compare_file(rel: str, golden: Path, actual: Path, *, tolerance: float = DEF
 def compare_file_by_step(rel: str, golden: Path, actual: Path, *, tolerance: float = DEFAULT_TOLERANCE
                          ) -> list[FileDifference]:
     """The differences between a golden file and its rebuilt twin: for a layered figure one per step."""
+    kind = _kind(rel)
+    for path in (golden, actual):  # a pipe would block the comparison, /dev/zero would never end it
+        _check_readable(path, kind)
     if filecmp.cmp(golden, actual, shallow=False):
         return []  # byte-identical: the common case, nothing to parse
-    kind = _kind(rel)
     if kind == "svg":
         from .svgdiff import changes_by_step, diff_svg
 
@@ -401,19 +423,14 @@ def verify(gallery: str | os.PathLike[str], *, update: bool = False,
 def _replace_tree(gallery: Path, rebuilt: Path) -> None:
     """Swap the rebuilt tree in for the goldens as one folder (nothing half-written).
 
-    Only goldens are replaced: a gallery written by ``construct gallery``, or a
-    folder holding every top-level entry the rebuild writes (a previous build
-    of the same builder, whose stale files go with it); any other folder is
-    refused, its files are not ours.
+    Only goldens are replaced: a folder whose every file is listed, unchanged,
+    in the gallery manifest (:mod:`construct.io.manifest`) that ``construct
+    gallery`` and this update write; anything else is refused and listed,
+    its files are not ours.  The new goldens get their manifest.
     """
     from ..io.staging import replaced_folder
 
-    def recognise(folder: Path) -> bool:
-        from ..gallery import is_gallery
-
-        built = set(os.listdir(rebuilt))
-        return is_gallery(folder) or (bool(built) and built <= set(os.listdir(folder)))
-
-    with replaced_folder(gallery, recognise=recognise, what="gallery folder",
-                         described="a gallery of goldens written by 'construct gallery' or by this builder") as new:
-        shutil.copytree(rebuilt, new)
+    with replaced_folder(gallery, manifest="gallery", what="gallery folder",
+                         described="a gallery of goldens written by 'construct gallery' or 'construct verify "
+                                   "--update' (recognised by its .construct-manifest.json)") as new:
+        shutil.copytree(rebuilt, new, symlinks=True)

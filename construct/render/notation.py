@@ -289,19 +289,19 @@ def provenance(construction: "Construction | None", fig: "Figure") -> dict[str, 
 _META_TEXT = 200
 
 
-def _jsonable(v: Any) -> Any:
+def jsonable(v: Any) -> Any:
     if isinstance(v, str):
         return v if len(v) <= _META_TEXT else v[: _META_TEXT - 1] + "…"
     if isinstance(v, float):
         return v if math.isfinite(v) else str(v)
     if isinstance(v, (list, tuple)):
-        return [_jsonable(x) for x in v]
+        return [jsonable(x) for x in v]
     if isinstance(v, Mapping):
-        return {_jsonable(str(k)): _jsonable(x) for k, x in v.items()}
+        return {jsonable(str(k)): jsonable(x) for k, x in v.items()}
     if isinstance(v, (int, bool)) or v is None:
         return v
     try:
-        return _jsonable(v.tolist())
+        return jsonable(v.tolist())
     except AttributeError:
         return str(v)
 
@@ -314,7 +314,7 @@ def with_provenance(svg: str, construction: "Construction | None", fig: "Figure"
     """
     import xml.etree.ElementTree as ET
 
-    data = json.dumps(_jsonable(provenance(construction, fig)), sort_keys=True, ensure_ascii=False)
+    data = json.dumps(jsonable(provenance(construction, fig)), sort_keys=True, ensure_ascii=False)
     meta = ET.Element("desc", id="provenance")
     meta.text = data
     markup = ET.tostring(meta, encoding="unicode")

@@ -8,20 +8,22 @@ copy.  ``DIR/protocol.json``, ``DIR/animated.svg`` (plays without script),
 (contact sheet, made of the figure's own elements) come with it; standalone frames ``DIR/steps/NNN.svg`` (frame
 k shows steps 1..k) only when asked (``--frames all`` or ``groups``): all
 frames together grow with the square of the step count.  Everything is staged
-and moved into place only when all of it has been written
-(:func:`construct.io.staging.staged_output`); the folder then holds exactly this
-run's files.  A folder is written only when it is new, empty or a previous
-replay (:func:`is_replay_folder`): nothing else in it is ever replaced.
+in a folder beside the target and swapped in whole only when all of it has
+been written (:func:`construct.io.staging.replaced_folder`): an interrupted
+run leaves the previous replay or the new one, never a mix.  The folder
+then holds exactly this run's files and their manifest
+(``.construct-manifest.json``).  A folder is written only when it is new,
+empty or a previous replay whose every file is in its manifest, unchanged
+(:func:`is_replay_folder`): nothing else is ever replaced.
 """
 
 from __future__ import annotations
 
-import os
-import re
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from ..io.staging import staged_output, write_text
+from ..io.manifest import foreign_entries
+from ..io.staging import replaced_folder, write_text
 from .scene import Scene, build_scene
 from .svg import Drawing, Style, render_svg
 
@@ -29,7 +31,8 @@ if TYPE_CHECKING:  # annotations only: the drawing layer sits below the figures 
     from ..constructions import Construction
     from ..figure import Figure
 
-__all__ = ["FRAME_MODES", "OUTPUTS", "frame_steps", "write_replay", "write_outputs", "scene_for",
+__all__ = ["FRAME_MODES", "OUTPUTS", "MAX_FRAME_BYTES", "frames_estimate", "check_frames_size", "frame_steps",
+           "write_replay", "write_outputs", "scene_for",
            "is_replay_folder", "figure_title", "plate_caption", "params_text"]
 
 FRAME_MODES = ("auto", "all", "groups", "none")
@@ -64,6 +67,60 @@ def frame_steps(scene: Scene, mode: str) -> list[int]:
         if len(ends) > most:
             ends = sorted({ends[round(i * (len(ends) - 1) / (most - 1))] for i in range(most)})
     return ends
+
+
+#: The most bytes of standalone frames a replay writes without --force (500 MB), and what a frame costs
+#: per mark it shows: measured on the crank, 174 bytes a mark at 18 parts (11.9 MB for 362 frames),
+#: 193 at 60 parts (54.5 MB for 752 frames); 200 rounds that up.
+MAX_FRAME_BYTES, FRAME_BYTES_PER_MARK = 500_000_000, 200
+
+
+def frames_estimate(figure: Figure, mode: str) -> tuple[int, int]:
+    """(frames, bytes) that *mode* would write for *figure*, from its protocol alone (no drawing is laid
+    out: at 3600 parts that takes a minute, the estimate a moment).  Frame k shows the marks of steps
+    1..k, about one per object made.
+
+    >>> from construct.constructions import get
+    >>> frames_estimate(get("crank").figure(parts=18), "all")
+    (362, 14016600)
+    """
+    steps = figure.protocol.steps
+    n = len(steps)
+    if mode == "none":
+        return 0, 0
+    upto, total = [], 0
+    for s in steps:
+        total += max(1, len(s.outputs))
+        upto.append(total)
+    if mode == "all" or (mode == "auto" and n <= AUTO_ALL_LIMIT):
+        ks = range(n)
+    else:
+        ks = [i for i in range(n) if i + 1 == n or steps[i + 1].group[:2] != steps[i].group[:2]]
+        if mode == "auto":
+            most = max(10, int(AUTO_BYTES / (BYTES_PER_MARK * total / 2 + 1)))
+            if len(ks) > most:
+                ks = sorted({ks[round(i * (len(ks) - 1) / (most - 1))] for i in range(most)})
+    return len(ks), FRAME_BYTES_PER_MARK * sum(upto[i] for i in ks)
+
+
+def check_frames_size(figure: Figure, mode: str, force: bool = False) -> None:
+    """Refuse (InvalidParameter) frames that would pass :data:`MAX_FRAME_BYTES`, with the estimate, unless *force*."""
+    frames, size = frames_estimate(figure, mode)
+    if size > MAX_FRAME_BYTES and not force:
+        from ..kernel.errors import InvalidParameter
+
+        raise InvalidParameter(f"--frames {mode} would write {frames} frames of about {_size(size)} in all "
+                               f"(frame k shows steps 1..k), more than {_size(MAX_FRAME_BYTES)}; take --frames "
+                               f"{'auto or ' if mode != 'auto' else ''}none (final.svg holds every step as a layer), "
+                               f"or add --force-frames")
+
+
+def _size(n: float) -> str:
+    for unit in ("bytes", "kB", "MB", "GB", "TB"):
+        if n < 1000 or unit == "TB":
+            return f"{n:.0f} {unit}" if unit == "bytes" else f"{n:.3g} {unit}"
+        n /= 1000
+    return f"{n:.3g} TB"
 
 
 def scene_for(construction: Construction | None, figure: Figure, *, plate: bool = False) -> Scene:
@@ -196,31 +253,30 @@ def write_outputs(stage: Path, construction: Construction | None, figure: Figure
     return {"steps": len(scene.steps), "frames": len(ks)}
 
 
-#: Every name a replay writes in its folder (final.svg always).
-REPLAY_NAMES = frozenset({"final.svg", "protocol.json", "steps", "animated.svg", "player.html", "storyboard.svg"})
-_FRAME_NAME = re.compile(r"^\d+\.svg$")
+#: What a refusal says a replay folder would have been.
+REPLAY_DESCRIBED = ("a replay written by 'construct replay' (recognised by its .construct-manifest.json; "
+                    "one written before manifests is not: remove it once)")
 
 
 def is_replay_folder(folder: str | Path) -> bool:
-    """Whether *folder* holds a replay and nothing else: final.svg, and only names a replay writes
-    (its frames in steps/); what ``construct replay`` may replace.
+    """Whether *folder* holds a replay and nothing else: every file in it is listed, unchanged, in the
+    manifest ``construct replay`` wrote (what ``construct replay`` may replace).
 
     >>> is_replay_folder(Path(__file__).parent)
     False
     """
-    from ..io.staging import STAGING_PREFIX
-
-    folder = Path(folder)
-    names = {n for n in os.listdir(folder) if not n.startswith(STAGING_PREFIX)}
-    if "final.svg" not in names or not names <= REPLAY_NAMES:
+    try:
+        return foreign_entries(Path(folder), "replay") == []
+    except OSError:
         return False
-    steps = folder / "steps"
-    return not steps.exists() or (steps.is_dir() and all(_FRAME_NAME.match(n) for n in os.listdir(steps)))
 
 
 def write_replay(construction: Construction | None, figure: Figure, out_dir: str | Path, *, style: str = "plain",
-                 frames: str = "none", styles: dict[str, Style] | None = None) -> dict[str, Any]:
-    """Write everything a replay produces; return a summary (counts, paths)."""
+                 frames: str = "none", styles: dict[str, Style] | None = None, force: bool = False) -> dict[str, Any]:
+    """Write everything a replay produces; return a summary (counts, paths).
+
+    Frames estimated above :data:`MAX_FRAME_BYTES` are refused before anything is drawn, unless *force*.
+    """
     from . import styles as style_module
 
     table = styles or style_module.STYLES
@@ -229,7 +285,12 @@ def write_replay(construction: Construction | None, figure: Figure, out_dir: str
 
         raise InvalidParameter(f"unknown style {style!r}; choose one of {', '.join(sorted(table))}")
     st = table[style]
-    with staged_output(out_dir, recognise=is_replay_folder,
-                       described="a replay written by 'construct replay'") as stage:
+    if frames not in FRAME_MODES:
+        from ..kernel.errors import InvalidParameter
+
+        raise InvalidParameter(f"unknown frames mode {frames!r}; choose one of {', '.join(FRAME_MODES)}")
+    check_frames_size(figure, frames, force)
+    with replaced_folder(out_dir, manifest="replay", described=REPLAY_DESCRIBED, what="replay folder") as stage:
+        stage.mkdir()
         info = write_outputs(stage, construction, figure, st, frames=frames)
     return {**info, "out": str(out_dir)}

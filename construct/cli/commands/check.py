@@ -6,7 +6,7 @@ import json
 
 from ...constructions.checking import run_checks, summary
 from ...kernel.protocol import jsonable
-from ..common import add_format_option, add_construction_options, figure_from_args
+from ..common import add_format_option, add_construction_options, brief, figure_from_args
 
 NAME = "check"
 HELP = "check a construction against the analytic formulas (exit 0 when all pass, 1 otherwise)"
@@ -24,9 +24,9 @@ def run(args) -> int:
         name = fig.protocol.construction
         if args.format == "json":
             print(json.dumps({"construction": name, "ok": True, "checks": [],
-                              "note": "not a book construction: replayed, no checks"}, indent=1, ensure_ascii=False))
+                              "note": "not a book construction: replayed, no checks"}, indent=1, ensure_ascii=True))
         else:
-            print(f"{name}: replayed {len(fig.protocol.steps)} steps; not a book construction, no checks")
+            print(f"{brief(name)}: replayed {len(fig.protocol.steps)} steps; not a book construction, no checks")
         return 0
     checks = run_checks(c, fig)
     ok = all(ch.ok for ch in checks)
@@ -34,7 +34,7 @@ def run(args) -> int:
     params["givens"] = dict(fig.replay.givens)
     if args.format == "json":
         print(json.dumps({"construction": c.name, "params": params, "ok": ok,
-                          "checks": [ch.as_dict() for ch in checks]}, indent=1, ensure_ascii=False))
+                          "checks": [ch.as_dict() for ch in checks]}, indent=1, ensure_ascii=True))
     else:
         for ch in checks:
             if args.all or not ch.ok:

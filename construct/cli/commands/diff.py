@@ -12,7 +12,6 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import stat
 from pathlib import Path
 
 from ...kernel.errors import ConstructError, InvalidParameter
@@ -46,28 +45,21 @@ def file_kind(path: str) -> str:
     bytes are read here: ``/dev/zero`` or a named pipe must not be read until
     memory runs out, nor make the command wait.
     """
+    from ...io.reading import open_regular_file
     from ...kernel.protocol_file import MAX_PROTOCOL_BYTES
 
-    try:
-        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
-    except (OSError, ValueError) as exc:
-        raise DiffInputError(f"cannot read {path!r}: {getattr(exc, 'strerror', None) or exc}") from None
-    try:
-        info = os.fstat(fd)
-        if not stat.S_ISREG(info.st_mode):
-            what = "a folder" if stat.S_ISDIR(info.st_mode) else "not a regular file"
-            raise DiffInputError(f"cannot read {path!r}: it is {what}")
-        head = os.read(fd, 4096).lstrip(b"\xef\xbb\xbf \t\r\n")[:1]
-    except OSError as exc:
-        raise DiffInputError(f"cannot read {path!r}: {exc.strerror or exc}") from None
-    finally:
-        os.close(fd)
+    with open_regular_file(path, limit=max(MAX_DRAWING_BYTES, MAX_PROTOCOL_BYTES), what="file",
+                           error=DiffInputError) as (fd, size):
+        try:
+            head = os.read(fd, 4096).lstrip(b"\xef\xbb\xbf \t\r\n")[:1]
+        except OSError as exc:
+            raise DiffInputError(f"cannot read {path!r}: {exc.strerror or exc}") from None
     kind = "svg" if head == b"<" else "protocol" if head == b"{" else None
     if kind is None:
         raise DiffInputError(f"{path!r} is neither an SVG drawing nor a JSON protocol")
     limit = MAX_DRAWING_BYTES if kind == "svg" else MAX_PROTOCOL_BYTES
-    if info.st_size > limit:
-        raise DiffInputError(f"{path!r} is larger than {limit // 2**20} MiB ({info.st_size} bytes); "
+    if size > limit:
+        raise DiffInputError(f"{path!r} is larger than {limit // 2**20} MiB ({size} bytes); "
                              f"no {'drawing' if kind == 'svg' else 'protocol'} this library writes is")
     return kind
 
@@ -85,7 +77,7 @@ def run(args: argparse.Namespace) -> int:
     differ = diff_svg if kind_a == "svg" else diff_protocol
     result = differ(Path(args.a), Path(args.b), **tol)  # paths, so that errors name the file
     if args.format == "json":
-        print(json.dumps(result.as_dict(), indent=2, ensure_ascii=False))
+        print(json.dumps(result.as_dict(), indent=2, ensure_ascii=True))
     else:
         print(result.report())
     return 0 if result.equal else 1

@@ -40,9 +40,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    entries = [e for e in errata_of(args.seed or "all") if args.class_ is None or e.class_ == args.class_]
+    entries = [e for e in errata_of("all" if args.seed is None else args.seed) if args.class_ is None or e.class_ == args.class_]
     if args.format == "json":
-        print(json.dumps([_json_record(e) for e in entries], ensure_ascii=False, indent=1))
+        print(json.dumps([_json_record(e) for e in entries], ensure_ascii=True, indent=1))
     else:
         print(_text_table(entries))
     return 0

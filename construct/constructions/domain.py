@@ -45,7 +45,8 @@ from ..kernel.errors import InvalidParameter
 
 __all__ = ["Domain", "ROD_RATIO", "DRAWN_LENGTH", "PRESSURE", "PRESSURE_RATIO", "STROKE_FRACTION", "CLEARANCE",
            "DRAWN_PRESSURE_RATIO", "DRAWN_M", "DRAWN_MASS_FORCE", "KAPPA_RANGE", "FLUCTUATION", "SPEED_GAIN", "WEIGHT", "RPM", "LENGTH_M", "PISTON_AREA",
-           "DRAWING_SCALE", "FORCE_UNIT", "FLYWHEEL_KZ", "RIM_SPEED"]
+           "DRAWING_SCALE", "FORCE_UNIT", "FLYWHEEL_KZ", "RIM_SPEED",
+           "FLYWHEEL_DIAMETER", "EXCESS_WORK", "IRREGULARITY"]
 
 
 @dataclass(frozen=True)
@@ -129,3 +130,11 @@ FORCE_UNIT = Domain(1e-8, 10.0, "drawn length per kg the forces are measured for
 #: v^2/kz finite and normal; these ranges keep it within 1e-15 .. 1e14 (his tables: kz 40..200, v 10..40).
 FLYWHEEL_KZ = Domain(1e-3, 1e6, "allowed stresses kz in kg/cm^2 for which v^2/kz stays a normal float")
 RIM_SPEED = Domain(1e-3, 1e4, "rim speeds v in m/s for which v^2/kz stays a normal float")
+#: The flywheel from the excess work (closed formulas): the rim's mean diameter in m, the excess work in kg m, and
+#: the degree of irregularity delta = (v_max - v_min)/v_mean.  Wide bounds around practice (D 1 .. 10 m, E 10 .. 1e5
+#: kg m, delta 1/300 .. 1/20): the formulas are plain products, the bounds only keep the float products normal and
+#: delta a small fraction, as the relation E = (G/g) v^2 delta assumes (it neglects delta^2 against 1).
+FLYWHEEL_DIAMETER = Domain(1e-3, 1e3, "rim diameters in m for which the flywheel products stay normal floats")
+EXCESS_WORK = Domain(1e-6, 1e12, "excess work in kg m for which the flywheel products stay normal floats")
+IRREGULARITY = Domain(1e-6, 0.2, "degrees of irregularity for which E = (G/g) v^2 delta holds (it neglects "
+                      "delta^2 against 1; practice: 1/300 .. 1/20)")

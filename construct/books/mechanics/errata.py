@@ -2,8 +2,8 @@
 
 Each number of :mod:`construct.books.mechanics.printed` beside the value it claims
 to be, judged as :mod:`construct.books.errata` judges seed 000 (distance in units of
-the last printed place: agrees within half a unit, slip up to 2, else
-misprint).  The true values come from the book's formulas solved exactly
+the last printed place: agrees within half a unit, slip up to 2, else the
+cause, "unexplained" until one is named).  The true values come from the book's formulas solved exactly
 (:func:`construct.constructions.two_cranks.excess_exact` is the exact
 piston law); the note adds what the construction gives (the extreme angles
 through Kochański's π) so the reader sees both errors side by side.

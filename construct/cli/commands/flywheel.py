@@ -22,7 +22,7 @@ or ``--rim-weight G_s`` skips it (Baumann's worked examples start there).
  "excess_work": null,
  "rim_weight": 2130.0,
  "arms_hub_weight": 648.0...,
- "total_weight": 2643.8...,
+ "total_weight": 2643.9...,
  "moment": 21811.2,
 ...
 0

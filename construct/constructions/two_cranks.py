@@ -38,8 +38,24 @@ What is constructed (layout y up, crank centre O at the origin):
 With a finite rod the figure has both diagrams side by side: the finite rod
 about O, the infinite rod about O' (§ 147: the quadrants differ).
 
+**Which dead centre.**  § 146 starts at B1 and writes the piston path
+s1 = r(1 − cos α) ∓ r² sin² α/2l, "the upper sign when the crank is in the
+Hingang": from B1 the rod correction *subtracts*, so B1 is the crank-end dead
+centre (the crank turned away from the cylinder).  That is the default,
+``dead_centre="crank-end"``: e(180°) = +0.202 Q·r at L/r = 5.  The other
+books (seeds 000, 001, 004) and this library's other constructions measure
+from the head-end dead centre, where the correction adds;
+``dead_centre="head-end"`` starts the first crank there, and the finite rod's
+diagram is the other one turned half a revolution (e(180°) = −0.202 Q·r).
+The first quadrant agrees in both, since the rod terms of the two cranks
+cancel there to first order; with the infinite rod both are the same.  The
+figure's caption names the dead centre.
+
 >>> fig = TWO_CRANKS.figure(parts=4, rod_ratio=5.0)
->>> [round(work_excess(fig, j), 12) for j in range(0, 9, 2)]   # 0, 90, 180, 270, 360 degrees
+>>> [round(work_excess(fig, j), 12) for j in range(0, 9, 2)]   # 0, 90, 180, 270, 360 degrees from B1
+[0.0, 0.0, 0.202041028867, 0.202041028867, 0.0]
+>>> fig = TWO_CRANKS.figure(parts=4, rod_ratio=5.0, dead_centre="head-end")
+>>> [round(work_excess(fig, j), 12) for j in range(0, 9, 2)]
 [0.0, 0.0, -0.202041028867, -0.202041028867, 0.0]
 >>> round(math.degrees(crank_angle(fig, "K.M1")), 4), round(math.degrees(crank_angle(fig, "K.M2")), 4)
 (19.2019, 70.7981)
@@ -83,7 +99,13 @@ __all__ = [
     "piston_speed_factor",
     "max_magnification",
     "auto_magnification",
+    "DEAD_CENTRES",
+    "excess_from",
 ]
+
+#: Where the first crank starts: § 146's B1 (the crank-end dead centre, the rod correction subtracting in the
+#: forward stroke: the default) or the head-end dead centre of the other books.
+DEAD_CENTRES = ("crank-end", "head-end")
 
 # --------------------------------------------------------------------------
 # The analytic side (used by the checks only, never to build).
@@ -128,6 +150,26 @@ def excess_exact(alpha: float, rod_ratio: float | None) -> float:
             - piston_travel(half, rod_ratio) - 4.0 * alpha / math.pi)
 
 
+def _start_angle(dead_centre: str) -> float:
+    """The first crank's starting angle from the head-end dead centre."""
+    if dead_centre not in DEAD_CENTRES:
+        raise InvalidParameter(f"dead centre must be one of {', '.join(DEAD_CENTRES)}, got {dead_centre!r}")
+    return math.pi if dead_centre == "crank-end" else 0.0
+
+
+def excess_from(alpha: float, rod_ratio: float | None, dead_centre: str = "crank-end") -> float:
+    """e(α)/(Q·r) with α counted from the given dead centre of the first crank (§ 146: the crank end, B1).
+
+    From the crank end it is the head-end excess turned half a revolution: e(π + α) − e(π).  At 180° § 146's
+    formula (upper sign in the Hingang) gives 2 − 4 + the rod terms; the exact law +0.2020 Q·r at L/r = 5.
+
+    >>> round(excess_from(math.pi, 5.0), 6), round(excess_from(math.pi, 5.0, "head-end"), 6)
+    (0.202041, -0.202041)
+    """
+    a0 = _start_angle(dead_centre)
+    return excess_exact(a0 + alpha, rod_ratio) - excess_exact(a0, rod_ratio)
+
+
 def extreme_angles_exact() -> tuple[float, float]:
     """α1, α2 of § 146 (radians): sin 2α = (4/π)² − 1."""
     a = 0.5 * math.asin((4.0 / math.pi) ** 2 - 1.0)
@@ -143,7 +185,8 @@ def kochanski_angle_error() -> float:
     return abs(_alpha1_of(KOCHANSKI_RHO) - _alpha1_of(math.pi))
 
 
-def quadrant_extremes(rod_ratio: float | None, samples: int = 2000) -> list[dict[str, float]]:
+def quadrant_extremes(rod_ratio: float | None, samples: int = 2000,
+                      dead_centre: str = "head-end") -> list[dict[str, float]]:
     """Per quadrant: where e is least and greatest, and by how much it rises and falls (exact law).
 
     Measured from the quadrant's start (§ 147: v1 there is the speed at its
@@ -157,25 +200,26 @@ def quadrant_extremes(rod_ratio: float | None, samples: int = 2000) -> list[dict
     out = []
     for q in range(4):
         a0 = q * 0.5 * math.pi
-        start = excess_exact(a0, rod_ratio)
+        e = lambda a: excess_from(a, rod_ratio, dead_centre)  # noqa: E731
+        start = e(a0)
         grid = [a0 + 0.5 * math.pi * i / samples for i in range(samples + 1)]
-        vals = [excess_exact(a, rod_ratio) for a in grid]
+        vals = [e(a) for a in grid]
         i_min = min(range(len(vals)), key=vals.__getitem__)
         i_max = max(range(len(vals)), key=vals.__getitem__)
-        a_min = _refine(grid, i_min, rod_ratio, -1.0)
-        a_max = _refine(grid, i_max, rod_ratio, 1.0)
-        e_min, e_max = excess_exact(a_min, rod_ratio), excess_exact(a_max, rod_ratio)
+        a_min = _refine(grid, i_min, e, -1.0)
+        a_max = _refine(grid, i_max, e, 1.0)
+        e_min, e_max = e(a_min), e(a_max)
         out.append({"quadrant": q + 1, "start": start, "alpha_min": a_min, "e_min": e_min, "alpha_max": a_max,
                     "e_max": e_max, "rise": e_max - start, "fall": start - e_min})
     return out
 
 
-def _refine(grid: list[float], i: int, rod_ratio: float | None, sign: float) -> float:
+def _refine(grid: list[float], i: int, e: Any, sign: float) -> float:
     lo, hi = grid[max(i - 1, 0)], grid[min(i + 1, len(grid) - 1)]
     g = (math.sqrt(5.0) - 1.0) / 2.0
     for _ in range(80):
         a, b = hi - g * (hi - lo), lo + g * (hi - lo)
-        if sign * excess_exact(a, rod_ratio) > sign * excess_exact(b, rod_ratio):
+        if sign * e(a) > sign * e(b):
             hi = b
         else:
             lo = a
@@ -355,7 +399,8 @@ def _speed_angle(b: Builder, S_at: tuple[float, float]) -> _Speed:
     return _Speed(ang, one, gain, lead)
 
 
-def _work(b: Builder, part: _Part, speed: _Speed, W_at: tuple[float, float], n: int, mstep: str) -> _Part:
+def _work(b: Builder, part: _Part, speed: _Speed, W_at: tuple[float, float], n: int, mstep: str,
+          start: int = 0) -> _Part:
     """Both pistons' paths stepped on along the work line; the mean-work marks beside them."""
     tag = part.tag
     m = 2 * n
@@ -371,8 +416,9 @@ def _work(b: Builder, part: _Part, speed: _Speed, W_at: tuple[float, float], n: 
         ends = [W0]
         for j in range(1, m + 1):
             with b.group(f"crank position {j}: work stepped on", f"Kurbelstellung {j}: Arbeit abgetragen"):
-                a1, c1 = part.pistons[(j - 1) % m], part.pistons[j % m]
-                a2, c2 = part.pistons[(j - 1 + half) % m], part.pistons[(j + half) % m]
+                # *start* is the first crank's starting index (N: § 146's B1, the crank-end dead centre)
+                a1, c1 = part.pistons[(start + j - 1) % m], part.pistons[(start + j) % m]
+                a2, c2 = part.pistons[(start + j - 1 + half) % m], part.pistons[(start + j + half) % m]
                 k1 = b.circle_segment(f"{tag}U{j}.k", ends[-1], a1, c1, de=f"Weg des ersten Kolbens, Schritt {j}",
                                       en=f"path of the first piston, step {j}")
                 U = b.intersect(f"{tag}U{j}", wl, k1, rule=("toward", W0, None) + _FWD)
@@ -387,7 +433,7 @@ def _work(b: Builder, part: _Part, speed: _Speed, W_at: tuple[float, float], n: 
     return _Part(**{**part.__dict__, "W0": W0, "ends": tuple(ends), "means": tuple(means)})
 
 
-def _radii(b: Builder, part: _Part, speed: _Speed, n: int) -> _Part:
+def _radii(b: Builder, part: _Part, speed: _Speed, n: int, start: int = 0) -> _Part:
     """For each crank position: M_j E_j = r/g + e carried to g·(r/g + e) = r + g e, laid on the crank position."""
     tag = part.tag
     m = 2 * n
@@ -401,15 +447,15 @@ def _radii(b: Builder, part: _Part, speed: _Speed, n: int) -> _Part:
                 V = b.intersect(f"{tag}V{j}", speed.one.line, k, rule=("toward", speed.angle.vertex, None, 0.0, -1.0))
                 Vg = carry_across(b, speed.angle, f"{tag}Vg{j}", V, speed.gain,
                                   de=f"auf die Maßlinie g·r: r + g·e{j}", en=f"onto the scale line g r: r + g e{j}")
-                ray = b.line(f"{tag}ray{j}", part.C, part.crank_points[j], de=f"Kurbelstellung {j}",
-                             en=f"crank position {j}")
+                point = part.crank_points[(start + j) % m]
+                ray = b.line(f"{tag}ray{j}", part.C, point, de=f"Kurbelstellung {j}", en=f"crank position {j}")
                 kz = b.circle_segment(f"{tag}Z{j}.k", part.C, speed.gain.origin, Vg,
                                       de=f"Halbmesser r + g·e{j} um den Wellenmittelpunkt",
                                       en=f"radius r + g e{j} about the shaft centre")
                 label = None
                 if j % (n // 2) == 0:
                     label = "B" + _SUB[j // (n // 2) + 1]
-                radii.append(b.intersect(f"{tag}Z{j}", ray, kz, rule=("toward", part.C, part.crank_points[j]),
+                radii.append(b.intersect(f"{tag}Z{j}", ray, kz, rule=("toward", part.C, point),
                                          role="result", de=f"Geschwindigkeitspunkt {j}", en=f"speed point {j}",
                                          labels={f"{tag}Z{j}": label} if label else None))
         closed_curve(b, f"{tag}wave", radii, de="Wellenlinie der Geschwindigkeiten (Kurvenlineal)",
@@ -502,8 +548,9 @@ def _scale_bar(b: Builder, at: tuple[float, float]) -> None:
 
 
 def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method: str, r: float,
-                     fluctuation: float, magnify: float) -> Figure:
+                     fluctuation: float, magnify: float, dead_centre: str = "crank-end") -> Figure:
     infinite_rod = bool(infinite_rod)
+    _start_angle(dead_centre)
     if magnify is None:
         magnify = auto_magnification(rod_ratio_param(rod_ratio),
                                      bounded("fluctuation Qr/((m1+m2) v1^2)", fluctuation, FLUCTUATION))
@@ -512,7 +559,8 @@ def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method
     used = _check_parts(parts, method)
     n = parts
     b = Builder("two-cranks", givens, {"parts": n, "method": used, "requested_method": method,
-                                       "infinite_rod": infinite_rod})
+                                       "infinite_rod": infinite_rod, "dead_centre": dead_centre})
+    start = n if dead_centre == "crank-end" else 0
     f = build_frame(b)
     upper = divide_semicircle(b, O=f["O"], D0=f["D0"], D1=f["D1"], circle=f["circle"], axis=f["axis"], n=n,
                               method=used)
@@ -547,8 +595,8 @@ def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method
         b.length_of("mstep", f["D0"], t1, de="Zirkel auf 4r/N", en="compass set to 4r/N")
     built = []
     for i, part in enumerate(parts_):
-        part = _work(b, part, speed, (-1.6, -1.6 - 0.5 * i), n, "mstep")
-        built.append(_radii(b, part, speed, n))
+        part = _work(b, part, speed, (-1.6, -1.6 - 0.5 * i), n, "mstep", start)
+        built.append(_radii(b, part, speed, n, start))
     _kochanski(b, inf, n)
     _label_extremes(b, inf)
     _scale_bar(b, (-1.2 if infinite_rod else 2.0, -1.55 if infinite_rod else 1.55))
@@ -614,6 +662,11 @@ def speed_radius(fig: Figure, j: int, *, infinite: bool | None = None) -> float:
     return fig.replay[centre].distance(fig.replay[f"{t}Z{j % (2 * fig.params['parts'])}"]) / fig.replay.givens["r"]
 
 
+def dead_centre_of(fig: Figure) -> str:
+    """The dead centre the figure's first crank starts from (a protocol from before the option: the head end)."""
+    return str(fig.params.get("dead_centre", "head-end"))
+
+
 def piston_speed_factor(w: float, rod_ratio: float | None) -> float:
     """c/v: the piston's speed over the crank-pin speed at crank angle *w* (exact law; None: infinite rod).
 
@@ -650,10 +703,11 @@ def speeds(fig: Figure, *, infinite: bool | None = None, crosshead_share: float 
         return piston_speed_factor(a, ratio) ** 2 + piston_speed_factor(a + 0.5 * math.pi, ratio) ** 2
 
     out = []
+    a0 = _start_angle(dead_centre_of(fig))
     for j in range(2 * n + 1):
         e = work_excess(fig, j, infinite=infinite)
-        a = math.pi * j / n
-        full = ((1.0 - mu) + mu * S(0.0) + 2.0 * k * e) / ((1.0 - mu) + mu * S(a))
+        a = a0 + math.pi * j / n
+        full = ((1.0 - mu) + mu * S(a0) + 2.0 * k * e) / ((1.0 - mu) + mu * S(a))
         out.append({"index": j, "crank_angle_deg": 180.0 * j / n, "work_excess": e, "v_book": 1.0 + k * e,
                     "v_exact": math.sqrt(1.0 + 2.0 * k * e) if 1.0 + 2.0 * k * e >= 0.0 else math.nan,
                     "v_full": math.sqrt(full) if full >= 0.0 else math.nan})
@@ -665,6 +719,7 @@ def speeds(fig: Figure, *, infinite: bool | None = None, crosshead_share: float 
 
 def two_cranks_checks(fig: Figure) -> list[Check]:
     n = fig.params["parts"]
+    dc = dead_centre_of(fig)
     g = fig.replay.givens
     K = g["rod_ratio"]
     gain = g["magnify"] * g["fluctuation"]
@@ -684,10 +739,11 @@ def two_cranks_checks(fig: Figure) -> list[Check]:
         for j in range(2 * n + 1):
             alpha = math.pi * j / n
             e = work_excess(fig, j, infinite=infinite)
-            checks.append(Check(f"work excess {j} ({word})", e, excess_exact(alpha, ratio), tol, why, "Q r"))
+            checks.append(Check(f"work excess {j} ({word}, from the {dc} dead centre)", e,
+                                excess_from(alpha, ratio, dc), tol, why, "Q r"))
             if j < 2 * n:
                 checks.append(Check(f"speed radius {j} ({word})", speed_radius(fig, j, infinite=infinite),
-                                    1.0 + gain * excess_exact(alpha, ratio), (1.0 + gain) * tol,
+                                    1.0 + gain * excess_from(alpha, ratio, dc), (1.0 + gain) * tol,
                                     "proportional angle and compass: the work excess times g, Euclidean", "r"))
         if infinite and n % 4 == 0:
             for j in range(0, 2 * n, n // 4):
@@ -702,11 +758,11 @@ def two_cranks_checks(fig: Figure) -> list[Check]:
                                     work_excess(fig, j, infinite=True) + work_excess(fig, n // 2 - j, infinite=True),
                                     0.0, 2 * tol, "§ 146: v_max - v1 = v1 - v_min; e(90 - a) = -e(a)", "Q r"))
         else:
-            for q in quadrant_extremes(ratio):
+            for q in quadrant_extremes(ratio, dead_centre=dc):
                 # The grid's own rise and fall in each quadrant, against the exact law on the same grid.
                 lo, hi = (q["quadrant"] - 1) * n // 2, q["quadrant"] * n // 2
                 es = [work_excess(fig, j) for j in range(lo, hi + 1)]
-                ex = [excess_exact(math.pi * j / n, ratio) for j in range(lo, hi + 1)]
+                ex = [excess_from(math.pi * j / n, ratio, dc) for j in range(lo, hi + 1)]
                 measured = (max(es) - es[0]) - (es[0] - min(es))
                 checks.append(Check(f"quadrant {q['quadrant']}: rise - fall of e ({word})", measured,
                                     (max(ex) - ex[0]) - (ex[0] - min(ex)), 2 * tol,
@@ -772,8 +828,9 @@ def _wave_checks(fig: Figure, centre: str) -> list[Check]:
 # -- the table ----------------------------------------------------------------------------
 
 
-def speed_fluctuation_rows(*, rod_ratio: float | None, step_deg: float = 15.0) -> list[dict[str, Any]]:
-    """e(α) in units of Q·r over 0…360°, read off the construction's work line.
+def speed_fluctuation_rows(*, rod_ratio: float | None, step_deg: float = 15.0,
+                           dead_centre: str = "crank-end") -> list[dict[str, Any]]:
+    """e(α) in units of Q·r over 0…360° from the given dead centre (§ 146's B1 by default), off the work line.
 
     >>> rows = speed_fluctuation_rows(rod_ratio=None, step_deg=45.0)
     >>> [row["crank_angle_deg"] for row in rows if abs(row["work_excess"]) < 1e-12]   # v = v1 every 45 degrees
@@ -787,9 +844,9 @@ def speed_fluctuation_rows(*, rod_ratio: float | None, step_deg: float = 15.0) -
     if n < 2 or n % 2 or abs(n * step - 180.0) > 1e-9:
         raise InvalidParameter(f"the angle step must divide 90 degrees, got {step_deg!r}")
     if rod_ratio is None:
-        fig = TWO_CRANKS.figure(parts=n, infinite_rod=True)
+        fig = TWO_CRANKS.figure(parts=n, infinite_rod=True, dead_centre=dead_centre)
     else:
-        fig = TWO_CRANKS.figure(parts=n, rod_ratio=rod_ratio)
+        fig = TWO_CRANKS.figure(parts=n, rod_ratio=rod_ratio, dead_centre=dead_centre)
     return [{"crank_angle_deg": 180.0 * j / n, "work_excess": work_excess(fig, j, infinite=rod_ratio is None)}
             for j in range(2 * n + 1)]
 
@@ -802,9 +859,11 @@ TWO_CRANKS = register(Construction(
     build=build_two_cranks,
     checks=two_cranks_checks,
     defaults={"rod_ratio": 5.0, "infinite_rod": False, "parts": 12, "method": "auto", "r": 1.0,
-              "fluctuation": 0.25, "magnify": None},
+              "fluctuation": 0.25, "magnify": None, "dead_centre": "crank-end"},
     book_params=({"rod_ratio": 5.0, "parts": 12}, {"infinite_rod": True, "parts": 12}),
-    structural=("parts", "method", "infinite_rod"),
+    structural=("parts", "method", "infinite_rod", "dead_centre"),
+    extra={"help": {"dead_centre": "where the first crank starts: crank-end (§ 146's B1, the default: upper sign "
+                                   "in the Hingang) or head-end (the other books' zero)"}},
     # A draftsman picks the magnification of the speed deviations for the rod he draws: so does a sweep.
     sweep=lambda g, ratios: {**g, "rod_ratio": ratios,
                              "magnify": np.array([auto_magnification(k, g["fluctuation"]) for k in ratios])},

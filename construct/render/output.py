@@ -91,6 +91,12 @@ _BOOK_METHODS = {
     "neusis": ("Einschiebung (Archimedes)", "neusis (Archimedes)"),
     "dividers": ("Teilung mit dem Stechzirkel", "division with the dividers by trial"),
 }
+#: Where the first of two cranks starts (two-cranks): named in words, with § 146's sign rule.
+_DEAD_CENTRES = {
+    "crank-end": ("ab der äußeren Totlage B₁ (§ 146: oberes Zeichen im Hingang)",
+                  "from the crank-end dead centre B1 (§ 146: upper sign in the forward stroke)"),
+    "head-end": ("ab der deckelseitigen Totlage", "from the head-end dead centre"),
+}
 _HIDDEN = ("givens", "group_titles", "requested_method", "plate")
 
 
@@ -117,6 +123,8 @@ def params_text(figure: Figure, lang: str = "en") -> str:
             continue
         if key == "method":
             out.append(_BOOK_METHODS.get(str(v), (str(v), str(v)))[i])
+        elif key == "dead_centre":
+            out.append(_DEAD_CENTRES.get(str(v), (str(v), str(v)))[i])
         elif key in _BOOK_PARAMS:
             text = _BOOK_PARAMS[key][i].format(v=_num(v))
             out.append(text.replace(".", ",") if lang == "de" and "kg" in text else text)

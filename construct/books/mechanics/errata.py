@@ -10,10 +10,12 @@ through Kochański's π) so the reader sees both errors side by side.
 
 A remark the numbers cannot carry: the seed writes the piston path as
 r(1 − cos α) ∓ r² sin² α/2l, upper sign on the forward stroke, i.e. measured
-from the crank-end dead centre; this library's α = 0 is the head-end dead
-centre (piston path r(1 − cos α) + …).  The excess work from one is the other
-shifted by half a turn; the first-quadrant cancellation of the r/2l terms
-holds in both (exactly to first order; the exact law leaves −(r/l)³ sin² 2α/16).
+from the crank-end dead centre B1; the two-cranks construction starts there
+by default (``dead_centre="crank-end"``), while the other books and the
+option ``dead_centre="head-end"`` count from the head-end dead centre (piston
+path r(1 − cos α) + …).  The excess work from one is the other shifted by
+half a turn; the first-quadrant cancellation of the r/2l terms holds in both
+(exactly to first order; the exact law leaves −(r/l)³ sin² 2α/16).
 
 >>> rows = {e.row: e for e in entries()}
 >>> e = rows["α₁ (kleinste Geschwindigkeit)"]

@@ -31,6 +31,9 @@ def add_arguments(p) -> None:
     p.add_argument("--kz", type=_number, action="append", metavar="KG_CM2", help="allowed stress kz (flywheel; repeat)")
     p.add_argument("--v", type=_number, action="append", metavar="M_S", help="rim speed v (flywheel; repeat)")
     p.add_argument("--infinite-rod", action="store_true", help="an infinitely long rod (speed-fluctuation)")
+    p.add_argument("--dead-centre", choices=("crank-end", "head-end"), default="crank-end",
+                   help="speed-fluctuation: the first crank starts at § 146's B1, the crank-end dead centre "
+                        "(default), or at the head-end one")
     p.add_argument("--format", choices=("text", "csv"), default="text")
 
 
@@ -84,7 +87,8 @@ def run(args) -> int:
         if args.infinite_rod and args.rod_ratio:
             raise InvalidParameter("give either --rod-ratio K or --infinite-rod, not both")
         _check_step(args.step, 90)
-        cols, rows = TABLES[args.table](rod_ratio=None if args.infinite_rod else _one_ratio(args), step=args.step)
+        cols, rows = TABLES[args.table](rod_ratio=None if args.infinite_rod else _one_ratio(args), step=args.step,
+                                        dead_centre=args.dead_centre)
     else:
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args))
     sys.stdout.write(format_table(cols, rows, args.format))

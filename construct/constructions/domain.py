@@ -46,7 +46,8 @@ from ..kernel.errors import InvalidParameter
 __all__ = ["Domain", "ROD_RATIO", "DRAWN_LENGTH", "PRESSURE", "PRESSURE_RATIO", "STROKE_FRACTION", "CLEARANCE",
            "DRAWN_PRESSURE_RATIO", "DRAWN_M", "DRAWN_MASS_FORCE", "KAPPA_RANGE", "FLUCTUATION", "SPEED_GAIN", "WEIGHT", "RPM", "LENGTH_M", "PISTON_AREA",
            "DRAWING_SCALE", "FORCE_UNIT", "FLYWHEEL_KZ", "RIM_SPEED",
-           "FLYWHEEL_DIAMETER", "EXCESS_WORK", "IRREGULARITY"]
+           "FLYWHEEL_DIAMETER", "EXCESS_WORK", "IRREGULARITY", "COMPRESSION_RATIO", "CUTOFF_RATIO",
+           "ENGINE_PRESSURE", "EXHAUST_PRESSURE", "POLYTROPE_EXPONENT", "SUCTION_PRESSURE"]
 
 
 @dataclass(frozen=True)
@@ -138,3 +139,18 @@ FLYWHEEL_DIAMETER = Domain(1e-3, 1e3, "rim diameters in m for which the flywheel
 EXCESS_WORK = Domain(1e-6, 1e12, "excess work in kg m for which the flywheel products stay normal floats")
 IRREGULARITY = Domain(1e-6, 0.2, "degrees of irregularity for which E = (G/g) v^2 delta holds (it neglects "
                       "delta^2 against 1; practice: 1/300 .. 1/20)")
+#: The four-stroke cycle (seed 001 c).  Compression ratio epsilon = (V_c + V_h)/V_c: gas engines 4..7, Diesel 12..16;
+#: 1.5 .. 30 keeps the clearance V_c = s/(epsilon - 1) between s/29 and 2 s, drawable beside the stroke.
+COMPRESSION_RATIO = Domain(1.5, 30.0, "compression ratios for which the clearance s/(epsilon - 1) is drawn beside "
+                           "the stroke (gas engines 4..7, Diesel 12..16)")
+#: Diesel cut-off ratio rho = V_d/V_c (combustion at constant pressure): above 1 (else no combustion line), below
+#: epsilon/1.05 (checked where it is used).
+CUTOFF_RATIO = Domain(1.01, 20.0, "cut-off ratios rho = V_d/V_c of the combustion at constant pressure")
+#: Polytropic exponent: between the isotherm (1) and the adiabat of a monatomic gas (5/3); practice 1.25..1.4.
+POLYTROPE_EXPONENT = Domain(1.0, 5.0 / 3.0, "polytropic exponents between the isotherm and the adiabat "
+                            "(practice 1.25 .. 1.4)")
+#: Suction (below the atmosphere) and exhaust (above it) pressures, absolute at.
+SUCTION_PRESSURE = Domain(0.3, 1.0, "suction pressures in at absolute (a slight vacuum: practice 0.85 .. 0.95)")
+EXHAUST_PRESSURE = Domain(1.0, 3.0, "exhaust pressures in at absolute (a slight over-pressure: practice 1.05 .. 1.2)")
+#: The highest pressure of the cycle, at: seed 001 names about 25 at for the explosion engine.
+ENGINE_PRESSURE = Domain(2.0, 150.0, "highest cycle pressures in at (seed 001: about 25 at for the explosion engine)")

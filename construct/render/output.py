@@ -97,6 +97,8 @@ _DEAD_CENTRES = {
                   "from the crank-end dead centre B1 (§ 146: upper sign in the forward stroke)"),
     "head-end": ("ab der deckelseitigen Totlage", "from the head-end dead centre"),
 }
+#: Givens a construction derives from the others for its steps (Brauer's ray slopes): not named in captions.
+_DERIVED = ("tan_alpha", "tan_beta", "tan_alpha_e", "tan_beta_e")
 _HIDDEN = ("givens", "group_titles", "requested_method", "plate")
 
 
@@ -114,7 +116,8 @@ def params_text(figure: Figure, lang: str = "en") -> str:
     ("L/r = 5, 18 parts, Dürer's division", 'L/r = 4, Hub in 10 Teilen')
     """
     i = 0 if lang == "de" else 1
-    values = {**dict(figure.replay.givens), **{k: v for k, v in figure.params.items() if k not in _HIDDEN}}
+    values = {**{k: v for k, v in figure.replay.givens.items() if k not in _DERIVED},
+              **{k: v for k, v in figure.params.items() if k not in _HIDDEN}}
     out = []
     order = ("rod_ratio", "pressure_ratio", "pressure_unit", "parts", "divisions", "method")
     for key in sorted(values, key=lambda k: (order.index(k) if k in order else len(order), k)):

@@ -111,7 +111,7 @@ def model_pressure(stroke: int, x: float, g: Mapping[str, float], engine: str) -
     >>> g = {"suction": 0.9, "exhaust": 1.1, "compression_ratio": 5.0, "clearance": 0.25, "exponent": 1.3,
     ...      "max_pressure": 25.0, "cutoff": 2.0}
     >>> round(model_pressure(1, 0.0, g, "explosion"), 6), round(model_pressure(2, 1.0, g, "explosion"), 6)
-    (7.429525, 3.116183)
+    (7.292955, 3.085169)
     """
     vc, n = g["clearance"], g["exponent"]
     v = vc + x

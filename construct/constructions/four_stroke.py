@@ -69,6 +69,7 @@ from . import Construction, Figure, bounded, register, rod_ratio_param
 from .crank import build_frame, rod_arcs
 from .domain import (COMPRESSION_RATIO, CUTOFF_RATIO, DRAWN_LENGTH, ENGINE_PRESSURE, EXHAUST_PRESSURE,
                      POLYTROPE_EXPONENT, PRESSURE_RATIO, SUCTION_PRESSURE)
+from .indicator import square
 from .inertia.build import inertia_scale, inertia_value, value_kind
 
 __all__ = ["FOUR_STROKE", "ENGINES", "build_four_stroke", "four_stroke_checks", "model_pressure", "pressure",
@@ -376,8 +377,16 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
         span = b.given_length("span", product=("r",), factor=8.0, de="720° als 8 r", en="720 degrees as 8 r")
         ks = b.circle_radius("T1.k", T0, span, de="8 r abgetragen", en="8 r laid off")
         T1 = b.intersect("T1", tbase, ks, rule=("toward", T0, None, 1.0, 0.0), labels={"T1": "720°"})
-        marks = [T0] + b.divide_segment("t", T0, T1, 4 * n, line=tbase) + [T1]
-        tords = [b.erect_perpendicular(f"to{t}", m, tbase, T1 if t == 0 else T0) for t, m in enumerate(marks)]
+        # 180° per stroke: the span halved twice, each stroke divided into N parts (a short auxiliary ray each)
+        half = b.midpoint("T.h", T0, T1, through=tbase)
+        quarters = [T0, b.midpoint("T.q1", T0, half, through=tbase), half, b.midpoint("T.q3", half, T1, through=tbase), T1]
+        marks = [T0]
+        for q in range(4):
+            marks += (b.divide_segment(f"t{q}.", quarters[q], quarters[q + 1], n, line=tbase) if n > 1 else [])
+            marks.append(quarters[q + 1])
+        opening = b.given_length("open", product=("r",), factor=0.1, de="Zirkelöffnung für die Senkrechten (r/10)",
+                                 en="compass opening for the perpendiculars (r/10)")
+        tords = [square(b, f"to{t}", m, tbase, opening) for t, m in enumerate(marks)]
         ka = b.circle_radius("tatm.k", T0, "one", de="1 at", en="1 at")
         tatm_p = b.intersect("tatm.p", tords[0], ka, rule=("toward", T0, None, 0.0, 1.0))
         b.erect_perpendicular("tatm", tatm_p, tords[0], T0)
@@ -556,7 +565,7 @@ OPTION_HELP = {
     "max_pressure": "four-stroke, explosion: maximum pressure after ignition, at (seed 001: about 25)",
     "cutoff": "four-stroke, diesel: cut-off ratio rho = V_d/V_c of the combustion at constant pressure (2)",
     "exponent": "four-stroke: polytropic exponent n of compression and expansion (1.3)",
-    "steps": "four-stroke: Brauer steps per polytrope (8)",
+    "steps": "four-stroke: Brauer steps per polytrope (12: the French curve then strays by 0.1 % of the diagram)",
 }
 
 
@@ -569,7 +578,7 @@ FOUR_STROKE = register(Construction(
     checks=four_stroke_checks,
     defaults={"engine": "explosion", "rod_ratio": 5.0, "parts": 12, "method": "auto", "r": 1.0,
               "compression_ratio": 5.0, "suction": 0.9, "exhaust": 1.1, "max_pressure": 25.0, "cutoff": 2.0,
-              "exponent": 1.3, "pressure_unit": 0.1, "pressure_ratio": 6.0, "steps": 8},
+              "exponent": 1.3, "pressure_unit": 0.1, "pressure_ratio": 6.0, "steps": 12},
     book_params=({}, {"engine": "diesel", "compression_ratio": 14.0}),
     structural=("engine", "parts", "method", "steps", "cutoff"),
     extra={"help": OPTION_HELP},

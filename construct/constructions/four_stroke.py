@@ -382,7 +382,7 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
         quarters = [T0, b.midpoint("T.q1", T0, half, through=tbase), half, b.midpoint("T.q3", half, T1, through=tbase), T1]
         marks = [T0]
         for q in range(4):
-            marks += (b.divide_segment(f"t{q}.", quarters[q], quarters[q + 1], n, line=tbase) if n > 1 else [])
+            marks += (b.divide_segment(f"t{q}", quarters[q], quarters[q + 1], n, line=tbase) if n > 1 else [])
             marks.append(quarters[q + 1])
         opening = b.given_length("open", product=("r",), factor=0.1, de="Zirkelöffnung für die Senkrechten (r/10)",
                                  en="compass opening for the perpendiculars (r/10)")

@@ -96,7 +96,7 @@ class Construction:
 
 _VALIDATORS: dict[str, Callable[[Mapping[str, float]], None]] = {}
 _REGISTRY: dict[str, Construction] = {}
-_MODULES = ("crank", "inertia", "indicator", "piston_force", "tangential", "two_cranks", "four_stroke")
+_MODULES = ("crank", "inertia", "indicator", "piston_force", "tangential", "two_cranks", "four_stroke", "flywheel_rim")
 
 
 def register(c: Construction, validate: Callable[[Mapping[str, float]], None] | None = None) -> Construction:

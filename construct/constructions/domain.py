@@ -47,7 +47,8 @@ __all__ = ["Domain", "ROD_RATIO", "DRAWN_LENGTH", "PRESSURE", "PRESSURE_RATIO", 
            "DRAWN_PRESSURE_RATIO", "DRAWN_M", "DRAWN_MASS_FORCE", "KAPPA_RANGE", "FLUCTUATION", "SPEED_GAIN", "WEIGHT", "RPM", "LENGTH_M", "PISTON_AREA",
            "DRAWING_SCALE", "FORCE_UNIT", "FLYWHEEL_KZ", "RIM_SPEED",
            "FLYWHEEL_DIAMETER", "EXCESS_WORK", "IRREGULARITY", "COMPRESSION_RATIO", "CUTOFF_RATIO",
-           "ENGINE_PRESSURE", "EXHAUST_PRESSURE", "POLYTROPE_EXPONENT", "SUCTION_PRESSURE"]
+           "ENGINE_PRESSURE", "EXHAUST_PRESSURE", "POLYTROPE_EXPONENT", "SUCTION_PRESSURE", "DISC_THICKNESS",
+           "RIM_SECTION"]
 
 
 @dataclass(frozen=True)
@@ -154,3 +155,9 @@ SUCTION_PRESSURE = Domain(0.3, 1.0, "suction pressures in at absolute (a slight 
 EXHAUST_PRESSURE = Domain(1.0, 3.0, "exhaust pressures in at absolute (a slight over-pressure: practice 1.05 .. 1.2)")
 #: The highest pressure of the cycle, at: seed 001 names about 25 at for the explosion engine.
 ENGINE_PRESSURE = Domain(2.0, 150.0, "highest cycle pressures in at (seed 001: about 25 at for the explosion engine)")
+#: Baumann's Fig. 28 over the rim radius r1: the disc thickness b1 (a real wheel's is a few thousandths of r1; the
+#: plate exaggerates) up to 1/30 r1, so that the hub (24 b1 long) stays within 0.8 r1; the rim's square side below
+#: r1/2 so that the rim clears the hub radius.
+DISC_THICKNESS = Domain(1e-3, 1.0 / 30.0, "disc thicknesses b1/r1 for which the hub (24 b1 long) stays within the "
+                        "wheel's width (real wheels: a few thousandths)")
+RIM_SECTION = Domain(1e-2, 0.5, "rim sections (side over r1) that clear the hub")

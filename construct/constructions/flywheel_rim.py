@@ -111,8 +111,10 @@ def build_flywheel_rim(*, r: float, b1: float, rim: float) -> Figure:
         rho = b.midpoint("rho", marks[2], R1, through=mid)
         b.set_label(rho, "ρ")
         rl = square(b, "rhol", rho, mid, "open")
-        b.intersect("rhoU", rl, "discU", rule=("only",), role="result")
-        b.intersect("rhoD", rl, "discD", rule=("only",), role="result")
+        b.intersect("rhoU", rl, "discU", rule=("only",), role="result", de="ρ auf der oberen Scheibenseite",
+                    en="rho on the upper face of the disc")
+        b.intersect("rhoD", rl, "discD", rule=("only",), role="result", de="ρ auf der unteren Scheibenseite",
+                    en="rho on the lower face of the disc")
     with b.group("the rim: a square section about r1", "der Kranz: quadratischer Querschnitt um r1"):
         b.given_length("a/2", product=("rim", "r"), factor=0.5, de="halbe Kranzbreite", en="half the rim's width")
         ku = b.circle_radius("rimM.k", R1, "a/2", de="a/2 beiderseits r1", en="a/2 either side of r1")

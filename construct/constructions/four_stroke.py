@@ -565,7 +565,7 @@ OPTION_HELP = {
     "max_pressure": "four-stroke, explosion: maximum pressure after ignition, at (seed 001: about 25)",
     "cutoff": "four-stroke, diesel: cut-off ratio rho = V_d/V_c of the combustion at constant pressure (2)",
     "exponent": "four-stroke: polytropic exponent n of compression and expansion (1.3)",
-    "steps": "four-stroke: Brauer steps per polytrope (12: the French curve then strays by 0.1 % of the diagram)",
+    "steps": "four-stroke: Brauer steps per polytrope (12: the French curve then strays by a thousandth of the diagram)",
 }
 
 

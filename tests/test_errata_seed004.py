@@ -179,3 +179,16 @@ def test_worked_arms_follow_exactly_and_rims_state_their_kz(by_key):
     rim = by_key["Beispiele", "Gs 19100, Ds 4,50, n 75", "Kranz (Richtige Werte)"]
     assert rim.class_ == "follows" and "kz = 85" in rim.note
     assert 23100 / (1 + 0.08075 * 17.65 ** 2 / 85) == pytest.approx(17825, abs=1)
+
+
+def test_cli_classes_and_formula_tables(capsys):
+    assert main(["errata", "--classes"]) == 0
+    out = capsys.readouterr().out
+    for name in CLASSES:
+        assert out.count(f"\n{name} ") + out.startswith(f"{name} ") == 1
+    assert main(["errata", "--seed", "004", "--class", "typesetting", "--format", "json"]) == 0
+    records = json.loads(capsys.readouterr().out)
+    rows = {(r["table"], r["row"], r["column"]) for r in records}
+    assert ("Formeln", "Formel B, Tandem I", "Gesamtgewicht") in rows
+    assert ("Formeln", "Formel E, Tandem II", "Kranzgewicht") in rows
+    assert all(r["class"] == "typesetting" for r in records)

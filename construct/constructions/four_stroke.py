@@ -263,7 +263,7 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
         vc = b.given_length("Vc", product=("clearance", "r"), factor=2.0, de="Verdichtungsraum V_c = s/(ε − 1)",
                             en="clearance volume V_c = s/(epsilon - 1)")
         k = b.circle_radius("O'.k", feet[0], vc, de="V_c vor dem Deckeltotpunkt", en="V_c beyond the head-end dead centre")
-        Ov = b.intersect("Ov", base, k, rule=("farther", feet[n]), role="result", labels={"Ov": "O"},
+        Ov = b.intersect("Ov", base, k, rule=("farther", feet[n]), role="result", labels={"Ov": "O′"},
                          de="Ursprung O des p-V-Diagramms", en="origin O of the p-V diagram")
         paxis = b.erect_perpendicular("paxis", Ov, base, feet[0])
         ku = b.circle_radius("U.k", Ov, f["r"], de="r auf der Volumenachse", en="r on the volume axis")

@@ -111,9 +111,13 @@ def flywheel_coefficients_table(*, kz: Sequence[float] | None = None, v: Sequenc
     return ("kz", "v", "arms_hub", "total_weight", "moment", "weight_for_moment"), coefficient_rows(kz, v)
 
 
-def speed_fluctuation_table(*, rod_ratio: float | None, step: float = 10.0) -> Table:
-    """Seed 002 § 146-147: the excess work of two cranks at 90 deg over a turn (units of Q r), from the construction."""
-    return ("crank_angle_deg", "work_excess"), speed_fluctuation_rows(rod_ratio=rod_ratio, step_deg=step)
+def speed_fluctuation_table(*, rod_ratio: float | None, step: float = 10.0, dead_centre: str = "crank-end") -> Table:
+    """Seed 002 § 146-147: the excess work of two cranks at 90 deg over a turn (units of Q r), from the construction.
+
+    The angle counts from § 146's B1, the crank-end dead centre, unless *dead_centre* is "head-end".
+    """
+    return ("crank_angle_deg", "work_excess"), speed_fluctuation_rows(rod_ratio=rod_ratio, step_deg=step,
+                                                                      dead_centre=dead_centre)
 
 
 #: How the books draw each table (construct table NAME --plot FILE); axis texts German / English.

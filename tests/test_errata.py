@@ -15,7 +15,8 @@ import mpmath
 import pytest
 
 from construct.cli import main
-from construct.books.errata import CLASSES, classify, errata, read_printed
+from construct.books.errata import CLASSES, WRONG, all_errata, classify, errata, read_printed
+from construct.kernel.errors import InvalidParameter
 from construct.books.anhang_ii import printed as seed000
 
 UNITS_TOL = 0.01  # units are compared after the hand computation's 7-digit rounding
@@ -46,9 +47,13 @@ def test_counts_per_table():
     assert tables == sorted(tables, key=seed000.TABLE_ORDER.index)
 
 
-def test_formula_entries_are_misprints_without_units():
+def test_formula_entries_are_wrong_without_units():
     formulas = [e for e in errata() if e.table == "formula"]
-    assert formulas and all(e.class_ == "misprint" and e.units is None and e.note for e in formulas)
+    assert formulas and all(e.class_ in WRONG and e.units is None and e.note for e in formulas)
+    classes = {e.row: e.class_ for e in formulas}
+    # the printed values follow from the right root (·4140 ...): the typesetter's; the dropped sign of ∂y/∂ω is
+    # carried into Gl. (i) and (i₁): the author's
+    assert classes["c) q7"] == "typesetting" and classes["d) ∂y/∂ω"] == classes["d) Gl. (i)"] == "arithmetic"
     assert all(isinstance(e.true, str) and e.true != e.printed for e in formulas)
 
 
@@ -58,11 +63,19 @@ def test_output_is_deterministic():
 
 @pytest.mark.parametrize(
     "units, expected",
-    [(0, "agrees"), (0.5, "agrees"), (-0.5, "agrees"), (0.51, "slip"), (-2, "slip"), (2.01, "misprint"), (-49.7, "misprint")],
+    [(0, "agrees"), (0.5, "agrees"), (-0.5, "agrees"), (0.51, "slip"), (-2, "slip"), (2.01, "unexplained"), (-49.7, "unexplained")],
 )
 def test_classify_boundaries(units, expected):
-    # "agrees" within half a unit, "slip" up to 2 units, "misprint" more (the definition).
+    # "agrees" within half a unit, "slip" up to 2 units, more: the cause, "unexplained" when none is named.
     assert classify(units) == expected
+    assert classify(units, "drawing") == (expected if expected in ("agrees", "slip") else "drawing")
+
+
+def test_classes_a_historian_can_cite():
+    assert CLASSES == ("agrees", "slip", "typesetting", "arithmetic", "follows", "drawing", "unexplained")
+    assert "misprint" not in {e.class_ for e in all_errata()}
+    with pytest.raises(InvalidParameter):
+        classify(5, "misprint")
 
 
 def test_units_are_measured_in_the_last_printed_place():
@@ -153,7 +166,7 @@ def test_misprint_one_digit_in_table_1(by_key):
     # 110°, L/r = 4: cos 110° = -0.3420201, cos 220° = -0.7660444, /4 = -0.1915111;
     # sum -0.5335312, the book's own columns give -0.3420 - 0.1915 = -0.5335.
     # Printed -0.5385: -49.7 units, a 3 set as 8.
-    e = _check(by_key, ("Tabelle 1", "110°", "cos ω + r/L·cos 2ω (L/r=4)"), "-0.5385", -0.5335312, -49.69, "misprint")
+    e = _check(by_key, ("Tabelle 1", "110°", "cos ω + r/L·cos 2ω (L/r=4)"), "-0.5385", -0.5335312, -49.69, "typesetting")
     assert "8 printed for 3" in e.note and "-0.3420 - 0.1915 = -0.5335" in e.note
 
 
@@ -172,7 +185,7 @@ def test_misprint_q7_position(by_key):
     # root 3.8950703, x = (4.5857864 - 3.8950703)/2 = 0.3453581. Printed ·3469: +15.4 units.
     true = _path_from_cos(math.sqrt(2) - 1, 4)
     assert true == pytest.approx(0.3453581, abs=1e-7)
-    _check(by_key, ("characteristic points", "q7", "x/2r (L/r=4)"), "·3469", true, 15.42, "misprint")
+    _check(by_key, ("characteristic points", "q7", "x/2r (L/r=4)"), "·3469", true, 15.42, "arithmetic")
 
 
 def test_misprint_q6_position(by_key):
@@ -181,20 +194,22 @@ def test_misprint_q6_position(by_key):
     # x ≈ 0.46174. Printed ·4659 is about +41 units off: no cause visible.
     true = _path_from_cos(1.5 * (math.sqrt(1 + 8 / 36) - 1), 6)
     assert true == pytest.approx(0.46174, abs=2e-5)
-    e = _check(by_key, ("characteristic points", "q6", "x/2r (L/r=6)"), "·4659", true, (0.4659 - true) * 1e4, "misprint")
-    assert "no cause found" in e.note
+    e = _check(by_key, ("characteristic points", "q6", "x/2r (L/r=6)"), "·4659", true, (0.4659 - true) * 1e4,
+               "arithmetic")
+    # no typesetting pattern, and his own printed cos ω gives 0.46175 by his Gl. (h₁): his arithmetic went wrong
+    assert "author's arithmetic" in e.note and "0.46175" in e.note
 
 
 def test_misprint_q7_cos_to_three_places(by_key):
     # √2 - 1 = 0.4142136: printed ·4140 is -2.14 units, i.e. ·414 padded with a zero.
-    e = _check(by_key, ("characteristic points", "q7", "cos ω (L/r=4)"), "·4140", math.sqrt(2) - 1, -2.14, "misprint")
+    e = _check(by_key, ("characteristic points", "q7", "cos ω (L/r=4)"), "·4140", math.sqrt(2) - 1, -2.14, "follows")
     assert "3 places" in e.note
 
 
 def test_misprints_found_by_reading_are_all_there_is(by_key):
     # Read off the tables by hand (values above and in the report): one in Tabelle 1,
     # four in section c); Tabelle 2 and the tangent values have none.
-    misprints = {(e.table, e.row, e.column) for e in errata() if e.class_ == "misprint" and e.table != "formula"}
+    misprints = {(e.table, e.row, e.column) for e in errata() if e.class_ in WRONG and e.table != "formula"}
     assert misprints == {
         ("Tabelle 1", "110°", "cos ω + r/L·cos 2ω (L/r=4)"),
         ("characteristic points", "q6", "x/2r (L/r=4)"),
@@ -305,10 +320,11 @@ def test_cli_text_table(capsys):
     lines = capsys.readouterr().out.splitlines()
     assert lines[0].split()[:5] == ["table", "row", "column", "printed", "true"]
     row = next(line for line in lines if "-0.5385" in line)
-    assert row.startswith("Tabelle 1") and "110°" in row and "misprint" in row
+    assert row.startswith("Tabelle 1") and "110°" in row and "typesetting" in row
     # seed 000's 251 numbers (the other seeds' are listed without --seed)
     assert lines[-1].startswith("251 printed numbers: ")
-    assert lines[-1].endswith("; 6 formula misprints")
+    assert lines[-1].endswith("; 6 wrong formulas")
+    assert "1 typesetting, 3 arithmetic, 1 follows, 0 drawing, 0 unexplained" in lines[-1]
 
 
 def test_cli_rejects_unknown_class(capsys):

@@ -46,6 +46,8 @@ FOLLOWS = {
     "piston-force": [("001", "Abb. 1055")],
     "tangential-pressure": [("004", "Fig. 26")],
     "two-cranks": [("002", "Fig. 566")],
+    "four-stroke": [("001", "Abb. 1056")],
+    "flywheel-rim": [("004", "Fig. 28")],
 }
 
 

@@ -27,23 +27,28 @@ def position_mp(w, ratio):
     return 1 - mpmath.cos(w) + L - mpmath.sqrt(L ** 2 - mpmath.sin(w) ** 2)
 
 
-def travel_mp(theta, ratio, samples_per_half=1):
-    """Distance travelled while the crank turns 0..theta: sum of |dx| over the monotone half turns."""
+def travel_mp(theta0, theta1, ratio):
+    """Distance travelled while the crank turns theta0..theta1: sum of |dx| over the monotone half turns
+    (the piston turns back at every multiple of pi)."""
     total = mpmath.mpf(0)
-    a = mpmath.mpf(0)
-    while a < theta:
-        b = min(a + mpmath.pi, theta)
+    a = mpmath.mpf(theta0)
+    while a < theta1:
+        b = min((mpmath.floor(a / mpmath.pi + mpmath.mpf("1e-30")) + 1) * mpmath.pi, theta1)
         total += abs(position_mp(b, ratio) - position_mp(a, ratio))
         a = b
     return total
 
 
-def excess_mp(j, n, ratio):
-    """e(alpha_j)/(Q r), alpha_j = j pi / n, 40 digits."""
+def excess_mp(j, n, ratio, dead_centre="crank-end"):
+    """e(alpha_j)/(Q r), alpha_j = j pi / n from the first crank's dead centre (§ 146's B1: the crank end), 40 digits.
+
+    The first crank turns from a0 to a0 + alpha, the second (90 degrees ahead) from a0 + 90 to a0 + 90 + alpha.
+    """
     with mpmath.workdps(40):
+        a0 = mpmath.pi if dead_centre == "crank-end" else mpmath.mpf(0)
         a = mpmath.pi * j / n
         h = mpmath.pi / 2
-        return float(travel_mp(a, ratio) + travel_mp(a + h, ratio) - travel_mp(h, ratio) - 4 * a / mpmath.pi)
+        return float(travel_mp(a0, a0 + a, ratio) + travel_mp(a0 + h, a0 + h + a, ratio) - 4 * a / mpmath.pi)
 
 
 @pytest.fixture(scope="module")
@@ -73,10 +78,11 @@ def test_infinite_rod_first_quadrant_is_the_books_formula(infinite):
 
 def test_equal_speed_every_45_degrees_for_the_infinite_rod_only(infinite, finite):
     assert all(abs(work_excess(infinite, j)) < 1e-12 for j in range(0, 25, 3))
-    # § 147: with a finite rod the half turn no longer closes: 180 degrees is below v1
+    # § 147: with a finite rod the half turn no longer closes: from B1 (§ 146's rule) 180 degrees is above v1
     lam = mpmath.mpf(1) / 5
-    e180 = float(-2 * (1 / lam - mpmath.sqrt(1 / lam ** 2 - 1)))  # both pistons lose 2(L - sqrt(L^2 - r^2))
+    e180 = float(2 * (1 / lam - mpmath.sqrt(1 / lam ** 2 - 1)))  # both pistons gain 2(L - sqrt(L^2 - r^2))
     assert work_excess(finite, 12) == pytest.approx(e180, abs=1e-12)
+    assert e180 == pytest.approx(0.2020, abs=1e-4)  # the issue's +0.20 Q r at L/r = 5
     assert work_excess(finite, 24) == pytest.approx(0.0, abs=1e-12)  # a whole turn: 8 r of work either way
 
 
@@ -215,9 +221,9 @@ def test_speed_without_either_simplification(finite):
             d2 = mpmath.diff(lambda w: position_mp(w, 5.0), a + mpmath.pi / 2)
             return d1 ** 2 + d2 ** 2
         for row in rows[::3]:
-            a = mpmath.pi * row["index"] / 12
+            a = mpmath.pi + mpmath.pi * row["index"] / 12     # from B1, the crank-end dead centre
             e = excess_mp(row["index"], 12, 5.0)
-            want = mpmath.sqrt(((1 - mu) + mu * share(0) + 2 * k * e) / ((1 - mu) + mu * share(a)))
+            want = mpmath.sqrt(((1 - mu) + mu * share(mpmath.pi) + 2 * k * e) / ((1 - mu) + mu * share(a)))
             assert row["v_full"] == pytest.approx(float(want), abs=1e-11), row["index"]
     plain = speeds(finite)
     assert all(r["v_full"] == pytest.approx(r["v_exact"], abs=1e-15) for r in plain)
@@ -292,3 +298,50 @@ def test_the_domain_check_of_a_sweep_names_the_first_set_a_single_check_refuses(
             with pytest.raises(InvalidParameter) as info:
                 tc._validate(swept)
             assert str(info.value) == first
+
+
+# -- § 146's sign rule and the other dead centre --------------------------------------------
+
+
+def test_section_146_sign_rule_first_order():
+    """§ 146 to first order in r/l, upper sign in the Hingang: from B1 the first piston has gone
+    r(1 − cos α) − r² sin² α/2l; at 180 degrees the second crank (from 90 to 270) has gone
+    r(1 + r/2l) + r(1 + r/2l) = 2r + r²/l, the first 2r: e = (4r + r²/l)/r − 4 = r/l = 0.2 at L/r = 5,
+    the exact law a little more (0.2020)."""
+    fig = get("two-cranks").figure(rod_ratio=5.0, parts=12)
+    assert work_excess(fig, 12) == pytest.approx(0.2, abs=0.003)
+    assert fig.params["dead_centre"] == "crank-end"
+
+
+@pytest.mark.parametrize("ratio", [5.0, 2.5])
+def test_head_end_option_is_the_other_diagram(ratio):
+    fig = get("two-cranks").figure(rod_ratio=ratio, parts=12, dead_centre="head-end")
+    for j in range(25):
+        assert work_excess(fig, j) == pytest.approx(excess_mp(j, 12, ratio, "head-end"), abs=1e-12), j
+    assert work_excess(fig, 12) < -0.1
+    assert all(ch.ok for ch in get("two-cranks").checks(fig))
+
+
+def test_first_quadrant_agrees_in_both_conventions():
+    a = get("two-cranks").figure(rod_ratio=5.0, parts=12)
+    b = get("two-cranks").figure(rod_ratio=5.0, parts=12, dead_centre="head-end")
+    # the rod terms of the two cranks cancel to first order: the difference is third order in r/l
+    assert all(abs(work_excess(a, j) - work_excess(b, j)) < 2e-3 for j in range(7))
+    assert abs(work_excess(a, 12) - work_excess(b, 12)) > 0.4
+
+
+def test_caption_names_the_dead_centre():
+    from construct.render.output import params_text
+
+    a = get("two-cranks").figure(rod_ratio=5.0, parts=8)
+    b = get("two-cranks").figure(rod_ratio=5.0, parts=8, dead_centre="head-end")
+    assert "crank-end dead centre B1 (§ 146" in params_text(a) and "B₁" in params_text(a, "de")
+    assert "head-end dead centre" in params_text(b)
+
+
+def test_table_dead_centre_option(capsys):
+    assert main(["table", "speed-fluctuation", "--rod-ratio", "5", "--step", "45", "--format", "csv",
+                 "--dead-centre", "head-end"]) == 0
+    rows = [tuple(map(float, line.split(","))) for line in capsys.readouterr().out.splitlines()[1:]]
+    assert rows[4][0] == 180.0 and rows[4][1] == pytest.approx(excess_mp(4, 4, 5.0, "head-end"), abs=1e-12)
+    assert main(["table", "speed-fluctuation", "--rod-ratio", "5", "--step", "45", "--dead-centre", "middle"]) == 2

@@ -7,12 +7,20 @@ value is judged by its distance in units of its last printed place:
 
 - ``agrees``: within half a unit (what correct rounding gives);
 - ``slip``: up to 2 units (truncation, rounding of an intermediate, slide rule);
-- ``misprint``: more.
+- more than 2 units: one of the classes a historian can cite (:data:`CLASS_MEANINGS`) --
+  ``typesetting`` (a digit, a sign, a stray figure: the author's own later use or
+  sums show the right value), ``arithmetic`` (the author's own computation from
+  his own inputs goes wrong), ``follows`` (the value follows from another printed,
+  rounded or itself wrong, value), ``drawing`` (probably read off a drawing: no
+  computation from the stated equations gives it), ``unexplained`` (none of these
+  found).
 
 Where a deviation's cause can be seen, the note names it: computed from the
 book's own printed (rounded) intermediates, truncated instead of rounded,
 sign dropped, adjacent digits swapped, a single wrong digit.  The printed
-formulas that are wrong come last, with table ``"formula"``.
+formulas that are wrong come last, with table ``"formula"``, classed
+``typesetting`` (the text goes on with the right form) or ``arithmetic`` (the
+author carries the wrong form on).
 
 >>> rows = {(e.table, e.row, e.column): e for e in errata()}
 >>> e = rows["Tabelle 1", "180°", "cos ω + r/L·cos 2ω (L/r=6)"]
@@ -21,7 +29,9 @@ formulas that are wrong come last, with table ``"formula"``.
 >>> e.note
 'computed from printed intermediates: -1 + 0.1666 = -0.8334'
 >>> classify(0.5), classify(-1.7), classify(2.01)
-('agrees', 'slip', 'misprint')
+('agrees', 'slip', 'unexplained')
+>>> classify(2.01, "typesetting"), classify(1.0, "typesetting")
+('typesetting', 'slip')
 """
 
 from __future__ import annotations
@@ -38,12 +48,26 @@ from ..kernel.errors import InvalidParameter
 from .anhang_ii import printed as seed000
 from .anhang_ii.printed import PrintedValue
 
-__all__ = ["Erratum", "Reading", "errata", "all_errata", "classify", "read_printed", "true_value", "CLASSES", "SOURCES", "errata_of"]
+__all__ = ["CLASS_MEANINGS", "WRONG", "Erratum", "Reading", "errata", "all_errata", "classify", "read_printed", "true_value", "CLASSES", "SOURCES", "errata_of"]
 
 #: The other seeds' errata modules (each has ``entries()``), listed after seed 000's by :func:`all_errata`.
 SOURCES = ("construct.books.handbook.errata", "construct.books.mechanics.errata", "construct.books.baumann.errata")
 
-CLASSES = ("agrees", "slip", "misprint")
+#: What each class says about a printed number (or formula); the first two by distance alone.
+CLASS_MEANINGS = {
+    "agrees": "within half a unit of the last printed place: correctly rounded",
+    "slip": "within 2 units: truncation, rounding of an intermediate, slide rule",
+    "typesetting": "a typesetting (or OCR) error: a digit, a sign, a stray figure; the author's own later use, "
+                   "sums or neighbours show the right value",
+    "arithmetic": "an arithmetic error of the author: his own computation from his own inputs goes wrong "
+                  "(and he carries it on)",
+    "follows": "follows from another printed value (rounded, or itself wrong) that the note names",
+    "drawing": "probably read off a drawing: no computation from the stated equations gives it",
+    "unexplained": "more than 2 units off and none of the causes above found",
+}
+CLASSES = tuple(CLASS_MEANINGS)
+#: The classes of a printed number that is wrong (more than 2 units off, or a wrong formula).
+WRONG = CLASSES[2:]
 
 # Boundaries in units of the last printed place.  They are compared exactly
 # (units are Fractions of the printed value minus the float true value), so a
@@ -140,14 +164,37 @@ def read_printed(text: str, resolution: str | None = None) -> Reading:
     raise InvalidParameter(f"cannot read the printed value {text!r} as a number")
 
 
-def classify(units: float | Fraction) -> str:
-    """Class of a deviation in units of the last printed place."""
+def classify(units: float | Fraction, cause: str | None = None) -> str:
+    """Class of a deviation in units of the last printed place; beyond a slip, *cause* (one of :data:`WRONG`)."""
     size = abs(Fraction(units))
     if size <= AGREES_WITHIN:
         return "agrees"
     if size <= SLIP_WITHIN:
         return "slip"
-    return "misprint"
+    if cause is None:
+        return "unexplained"
+    if cause not in WRONG:
+        raise InvalidParameter(f"cause {cause!r} is not one of {', '.join(WRONG)}")
+    return cause
+
+
+def cause_of(note: str) -> str | None:
+    """The class a cause in a note names: the typesetter's, the author's arithmetic, or a printed input.
+
+    >>> cause_of("one digit wrong (8 printed for 3; -0.5335): a type (or OCR) error")
+    'typesetting'
+    >>> cause_of("rounded to 3 places and padded with 0")
+    'follows'
+    """
+    if any(k in note for k in ("one digit wrong", "adjacent digits swapped", "sign dropped", "stray leading")):
+        return "typesetting"
+    if any(k in note for k in ("computed from printed intermediates", "padded with 0")):
+        return "follows"
+    if "truncated instead of rounded" in note:
+        return "arithmetic"
+    if "the printed intermediates give" in note:
+        return "arithmetic"
+    return None
 
 
 # --------------------------------------------------------------------------
@@ -324,8 +371,8 @@ def _causes(
             if approx(true_print, coarse) == reading.value:
                 causes.append(f"{how} to {reading.decimals - 1} places and padded with 0")
                 break
-    if not causes and verdict == "misprint":
-        # Only a misprint is worth a digit-level story: a slip of one unit always differs in one digit.
+    if not causes and verdict not in ("agrees", "slip"):
+        # Only an error beyond a slip is worth a digit-level story: a slip of one unit always differs in one digit.
         candidates = [_round_half_away(true_print, unit), _truncate(true_print, unit)]
         if reading.is_angle:
             texts = [_format_angle(c, int(unit)) for c in candidates]
@@ -372,11 +419,15 @@ def _entry(v: PrintedValue, lookup: Callable[[str, str, str], PrintedValue]) -> 
             notes.extend(causes)
         elif verdict == "slip":
             notes.append("rounding slip in the last place")
+        elif verdict == "unexplained" and intermediate is not None and not _chain_explains(reading, intermediate):
+            notes.append("no typesetting pattern; the author's arithmetic from his own inputs")
         else:
             notes.append("no cause found")
-        if verdict == "misprint" and intermediate is not None and not _chain_explains(reading, intermediate):
-            # Show the book's own chain even when it does not explain the misprint.
+        if verdict not in ("agrees", "slip") and intermediate is not None and not _chain_explains(reading, intermediate):
+            # Show the book's own chain even when it does not explain the error: then the author's arithmetic
+            # from his own printed inputs went wrong.
             notes.append(f"the printed intermediates give {intermediate[1]}")
+        verdict = classify(units, cause_of("; ".join(notes)))
     elif abs(units) == AGREES_WITHIN:
         notes.append("exactly half-way, rounded up" if units > 0 else "exactly half-way, rounded down")
     extra = _quantity_note(v, true, reading)
@@ -422,16 +473,28 @@ _FORMULA_CORRECTIONS: dict[str, tuple[str, str]] = {
 }
 
 
+#: Whose error each printed formula is: the typesetter's where the book goes on with the right form (its numbers
+#: follow from it), the author's where he carries the wrong form on.
+_FORMULA_CLASS = {
+    "b) Tabelle 2 header": "typesetting",      # Tabelle 1 heads the same values rightly
+    "c) q7": "typesetting",                    # his ·4140 ·3508 ·3028 follow from the right sign
+    "d) ∂y/∂ω": "arithmetic",                  # carried into Gl. (i) and (i₁)
+    "d) Gl. (i)": "arithmetic",
+    "d) Gl. (i₁) 90°": "arithmetic",
+    "d) Gl. (i₁) 180°": "arithmetic",
+}
+
+
 def _formula_entries() -> list[Erratum]:
     out = []
     for f in seed000.printed_formulas():
         true, note = _FORMULA_CORRECTIONS[f.row]
-        out.append(Erratum(seed000.SOURCE, f.table, f.row, f.column, f.text, true, None, "misprint", note))
+        out.append(Erratum(seed000.SOURCE, f.table, f.row, f.column, f.text, true, None, _FORMULA_CLASS[f.row], note))
     return out
 
 
 def errata() -> list[Erratum]:
-    """Every printed number of seed 000's appendix with its verdict, then the formula misprints.
+    """Every printed number of seed 000's appendix with its verdict, then the wrong formulas.
 
     Ordered as the book prints them: Tabelle 1, Tabelle 2, characteristic points,
     tangents (each row by row, column by column), then the formulas in text order.

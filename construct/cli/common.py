@@ -79,7 +79,9 @@ PARAM_OPTIONS = {"rod_ratio": "rod_ratio", "parts": "parts", "method": "method",
 SYMBOLS = {"admission": "P", "back_pressure": "P0", "clearance": "s0/s", "compression": "s3/s",
            "crank_radius": "R", "filling": "s1/s", "force": "baumann|unit", "force_unit": "LENGTH/kg",
            "kappa": "kappa", "piston_area": "F", "pressure_unit": "LENGTH/at", "rod_length": "L", "rpm": "n",
-           "scale": "LENGTH/m", "weight": "G"}
+           "scale": "LENGTH/m", "weight": "G", "b1": "b1/r1", "rim": "h/r1", "compression_ratio": "epsilon",
+           "cutoff": "rho", "dead_centre": "crank-end|head-end", "engine": "explosion|diesel", "exhaust": "p_g",
+           "exponent": "n", "max_pressure": "p", "steps": "N", "suction": "p_a"}
 
 #: Help of parameters whose construction does not give one.
 HELPS = {"kappa": "Baumann's kappa = P/B_max, the piston force over the largest acceleration force "

@@ -133,7 +133,7 @@ def _take_model(model: Any, i: int) -> Any:
 
 _VALIDATORS: dict[str, Callable[[Mapping[str, float]], None]] = {}
 _REGISTRY: dict[str, Construction] = {}
-_MODULES = ("crank", "inertia", "indicator", "piston_force", "tangential", "two_cranks")
+_MODULES = ("crank", "inertia", "indicator", "piston_force", "tangential", "two_cranks", "four_stroke", "flywheel_rim")
 
 
 def register(c: Construction, validate: Callable[[Mapping[str, float]], None] | None = None) -> Construction:

@@ -46,7 +46,10 @@ from ..kernel.numeric import shown
 
 __all__ = ["Domain", "ROD_RATIO", "DRAWN_LENGTH", "PRESSURE", "PRESSURE_RATIO", "STROKE_FRACTION", "CLEARANCE",
            "DRAWN_PRESSURE_RATIO", "DRAWN_M", "DRAWN_MASS_FORCE", "KAPPA_RANGE", "FLUCTUATION", "SPEED_GAIN", "WEIGHT", "RPM", "LENGTH_M", "PISTON_AREA",
-           "DRAWING_SCALE", "FORCE_UNIT", "FLYWHEEL_KZ", "RIM_SPEED"]
+           "DRAWING_SCALE", "FORCE_UNIT", "FLYWHEEL_KZ", "RIM_SPEED",
+           "FLYWHEEL_DIAMETER", "EXCESS_WORK", "IRREGULARITY", "COMPRESSION_RATIO", "CUTOFF_RATIO",
+           "ENGINE_PRESSURE", "EXHAUST_PRESSURE", "POLYTROPE_EXPONENT", "SUCTION_PRESSURE", "DISC_THICKNESS",
+           "RIM_SECTION"]
 
 
 @dataclass(frozen=True)
@@ -143,3 +146,32 @@ FORCE_UNIT = Domain(1e-8, 10.0, "drawn length per kg the forces are measured for
 #: v^2/kz finite and normal; these ranges keep it within 1e-15 .. 1e14 (his tables: kz 40..200, v 10..40).
 FLYWHEEL_KZ = Domain(1e-3, 1e6, "allowed stresses kz in kg/cm^2 for which v^2/kz stays a normal float")
 RIM_SPEED = Domain(1e-3, 1e4, "rim speeds v in m/s for which v^2/kz stays a normal float")
+#: The flywheel from the excess work (closed formulas): the rim's mean diameter in m, the excess work in kg m, and
+#: the degree of irregularity delta = (v_max - v_min)/v_mean.  Wide bounds around practice (D 1 .. 10 m, E 10 .. 1e5
+#: kg m, delta 1/300 .. 1/20): the formulas are plain products, the bounds only keep the float products normal and
+#: delta a small fraction, as the relation E = (G/g) v^2 delta assumes (it neglects delta^2 against 1).
+FLYWHEEL_DIAMETER = Domain(1e-3, 1e3, "rim diameters in m for which the flywheel products stay normal floats")
+EXCESS_WORK = Domain(1e-6, 1e12, "excess work in kg m for which the flywheel products stay normal floats")
+IRREGULARITY = Domain(1e-6, 0.2, "degrees of irregularity for which E = (G/g) v^2 delta holds (it neglects "
+                      "delta^2 against 1; practice: 1/300 .. 1/20)")
+#: The four-stroke cycle (seed 001 c).  Compression ratio epsilon = (V_c + V_h)/V_c: gas engines 4..7, Diesel 12..16;
+#: 1.5 .. 30 keeps the clearance V_c = s/(epsilon - 1) between s/29 and 2 s, drawable beside the stroke.
+COMPRESSION_RATIO = Domain(1.5, 30.0, "compression ratios for which the clearance s/(epsilon - 1) is drawn beside "
+                           "the stroke (gas engines 4..7, Diesel 12..16)")
+#: Diesel cut-off ratio rho = V_d/V_c (combustion at constant pressure): above 1 (else no combustion line), below
+#: epsilon/1.05 (checked where it is used).
+CUTOFF_RATIO = Domain(1.01, 20.0, "cut-off ratios rho = V_d/V_c of the combustion at constant pressure")
+#: Polytropic exponent: between the isotherm (1) and the adiabat of a monatomic gas (5/3); practice 1.25..1.4.
+POLYTROPE_EXPONENT = Domain(1.0, 5.0 / 3.0, "polytropic exponents between the isotherm and the adiabat "
+                            "(practice 1.25 .. 1.4)")
+#: Suction (below the atmosphere) and exhaust (above it) pressures, absolute at.
+SUCTION_PRESSURE = Domain(0.3, 1.0, "suction pressures in at absolute (a slight vacuum: practice 0.85 .. 0.95)")
+EXHAUST_PRESSURE = Domain(1.0, 3.0, "exhaust pressures in at absolute (a slight over-pressure: practice 1.05 .. 1.2)")
+#: The highest pressure of the cycle, at: seed 001 names about 25 at for the explosion engine.
+ENGINE_PRESSURE = Domain(2.0, 150.0, "highest cycle pressures in at (seed 001: about 25 at for the explosion engine)")
+#: Baumann's Fig. 28 over the rim radius r1: the disc thickness b1 (a real wheel's is a few thousandths of r1; the
+#: plate exaggerates) up to 1/30 r1, so that the hub (24 b1 long) stays within 0.8 r1; the rim's square side below
+#: r1/2 so that the rim clears the hub radius.
+DISC_THICKNESS = Domain(1e-3, 1.0 / 30.0, "disc thicknesses b1/r1 for which the hub (24 b1 long) stays within the "
+                        "wheel's width (real wheels: a few thousandths)")
+RIM_SECTION = Domain(1e-2, 0.5, "rim sections (side over r1) that clear the hub")

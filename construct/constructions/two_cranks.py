@@ -38,8 +38,24 @@ What is constructed (layout y up, crank centre O at the origin):
 With a finite rod the figure has both diagrams side by side: the finite rod
 about O, the infinite rod about O' (§ 147: the quadrants differ).
 
+**Which dead centre.**  § 146 starts at B1 and writes the piston path
+s1 = r(1 − cos α) ∓ r² sin² α/2l, "the upper sign when the crank is in the
+Hingang": from B1 the rod correction *subtracts*, so B1 is the crank-end dead
+centre (the crank turned away from the cylinder).  That is the default,
+``dead_centre="crank-end"``: e(180°) = +0.202 Q·r at L/r = 5.  The other
+books (seeds 000, 001, 004) and this library's other constructions measure
+from the head-end dead centre, where the correction adds;
+``dead_centre="head-end"`` starts the first crank there, and the finite rod's
+diagram is the other one turned half a revolution (e(180°) = −0.202 Q·r).
+The first quadrant agrees in both, since the rod terms of the two cranks
+cancel there to first order; with the infinite rod both are the same.  The
+figure's caption names the dead centre.
+
 >>> fig = TWO_CRANKS.figure(parts=4, rod_ratio=5.0)
->>> [round(work_excess(fig, j), 12) for j in range(0, 9, 2)]   # 0, 90, 180, 270, 360 degrees
+>>> [round(work_excess(fig, j), 12) for j in range(0, 9, 2)]   # 0, 90, 180, 270, 360 degrees from B1
+[0.0, 0.0, 0.202041028867, 0.202041028867, 0.0]
+>>> fig = TWO_CRANKS.figure(parts=4, rod_ratio=5.0, dead_centre="head-end")
+>>> [round(work_excess(fig, j), 12) for j in range(0, 9, 2)]
 [0.0, 0.0, -0.202041028867, -0.202041028867, 0.0]
 >>> round(math.degrees(crank_angle(fig, "K.M1")), 4), round(math.degrees(crank_angle(fig, "K.M2")), 4)
 (19.2019, 70.7981)
@@ -83,7 +99,13 @@ __all__ = [
     "piston_speed_factor",
     "max_magnification",
     "auto_magnification",
+    "DEAD_CENTRES",
+    "excess_from",
 ]
+
+#: Where the first crank starts: § 146's B1 (the crank-end dead centre, the rod correction subtracting in the
+#: forward stroke: the default) or the head-end dead centre of the other books.
+DEAD_CENTRES = ("crank-end", "head-end")
 
 # --------------------------------------------------------------------------
 # The analytic side (used by the checks only, never to build).
@@ -128,6 +150,26 @@ def excess_exact(alpha: float, rod_ratio: float | None) -> float:
             - piston_travel(half, rod_ratio) - 4.0 * alpha / math.pi)
 
 
+def _start_angle(dead_centre: str) -> float:
+    """The first crank's starting angle from the head-end dead centre."""
+    if dead_centre not in DEAD_CENTRES:
+        raise InvalidParameter(f"dead centre must be one of {', '.join(DEAD_CENTRES)}, got {dead_centre!r}")
+    return math.pi if dead_centre == "crank-end" else 0.0
+
+
+def excess_from(alpha: float, rod_ratio: float | None, dead_centre: str = "crank-end") -> float:
+    """e(α)/(Q·r) with α counted from the given dead centre of the first crank (§ 146: the crank end, B1).
+
+    From the crank end it is the head-end excess turned half a revolution: e(π + α) − e(π).  At 180° § 146's
+    formula (upper sign in the Hingang) gives 2 − 4 + the rod terms; the exact law +0.2020 Q·r at L/r = 5.
+
+    >>> round(excess_from(math.pi, 5.0), 6), round(excess_from(math.pi, 5.0, "head-end"), 6)
+    (0.202041, -0.202041)
+    """
+    a0 = _start_angle(dead_centre)
+    return excess_exact(a0 + alpha, rod_ratio) - excess_exact(a0, rod_ratio)
+
+
 def extreme_angles_exact() -> tuple[float, float]:
     """α1, α2 of § 146 (radians): sin 2α = (4/π)² − 1."""
     a = 0.5 * math.asin((4.0 / math.pi) ** 2 - 1.0)
@@ -168,7 +210,7 @@ def excess_exact_array(alpha: Any, rod_ratio: Any) -> Any:
     return travel(alpha) + travel(alpha + half) - position(half) - 4.0 * alpha / math.pi
 
 
-def quadrant_extremes(rod_ratio: Any, samples: int = 2000) -> list[dict[str, Any]]:
+def quadrant_extremes(rod_ratio: Any, samples: int = 2000, dead_centre: str = "head-end") -> list[dict[str, Any]]:
     """Per quadrant: where e is least and greatest, and by how much it rises and falls (exact law).
 
     Measured from the quadrant's start (§ 147: v1 there is the speed at its
@@ -181,11 +223,16 @@ def quadrant_extremes(rod_ratio: Any, samples: int = 2000) -> list[dict[str, Any
     (19.19968, True)
     """
     scalar = rod_ratio is None or np.ndim(rod_ratio) == 0
+    a_s = _start_angle(dead_centre)
+
+    def law(angle, r):  # e(α) with α counted from the chosen dead centre (excess_from, on arrays)
+        return excess_exact_array(a_s + angle, r) - excess_exact_array(a_s, r)
+
     ratio = None if rod_ratio is None else np.asarray(rod_ratio, dtype=float).reshape(-1, 1, 1)
     step = 0.5 * math.pi / samples
     a0 = (0.5 * math.pi * np.arange(4.0)).reshape(1, 4, 1)
     grid = a0 + step * np.arange(samples + 1.0)  # (1, quadrant, sample)
-    vals = excess_exact_array(grid, ratio)  # (ratio, quadrant, sample)
+    vals = law(grid, ratio)  # (ratio, quadrant, sample)
     start = vals[..., 0]
     # golden-section search about the least and greatest sample: (ratio, quadrant, min/max)
     i = np.stack([vals.argmin(axis=-1), vals.argmax(axis=-1)], axis=-1)
@@ -197,11 +244,11 @@ def quadrant_extremes(rod_ratio: Any, samples: int = 2000) -> list[dict[str, Any
     g = (math.sqrt(5.0) - 1.0) / 2.0
     for _ in range(80):
         a, b = hi - g * (hi - lo), lo + g * (hi - lo)
-        ea, eb = excess_exact_array(np.stack([a, b]), r3)  # both probes in one pass
+        ea, eb = law(np.stack([a, b]), r3)  # both probes in one pass
         left = sign * ea > sign * eb
         hi, lo = np.where(left, b, hi), np.where(left, lo, a)
     best = 0.5 * (lo + hi)
-    e = excess_exact_array(best, r3)
+    e = law(best, r3)
     out = []
     for q in range(4):
         row = {"quadrant": q + 1, "start": start[:, q], "alpha_min": best[:, q, 0], "e_min": e[:, q, 0],
@@ -404,7 +451,8 @@ def _speed_angle(b: Builder, S_at: tuple[float, float]) -> _Speed:
     return _Speed(ang, one, gain, lead)
 
 
-def _work(b: Builder, part: _Part, speed: _Speed, W_at: tuple[float, float], n: int, mstep: str) -> _Part:
+def _work(b: Builder, part: _Part, speed: _Speed, W_at: tuple[float, float], n: int, mstep: str,
+          start: int = 0) -> _Part:
     """Both pistons' paths stepped on along the work line; the mean-work marks beside them."""
     tag = part.tag
     m = 2 * n
@@ -420,8 +468,9 @@ def _work(b: Builder, part: _Part, speed: _Speed, W_at: tuple[float, float], n: 
         ends = [W0]
         for j in range(1, m + 1):
             with b.group(f"crank position {j}: work stepped on", f"Kurbelstellung {j}: Arbeit abgetragen"):
-                a1, c1 = part.pistons[(j - 1) % m], part.pistons[j % m]
-                a2, c2 = part.pistons[(j - 1 + half) % m], part.pistons[(j + half) % m]
+                # *start* is the first crank's starting index (N: § 146's B1, the crank-end dead centre)
+                a1, c1 = part.pistons[(start + j - 1) % m], part.pistons[(start + j) % m]
+                a2, c2 = part.pistons[(start + j - 1 + half) % m], part.pistons[(start + j + half) % m]
                 k1 = b.circle_segment(f"{tag}U{j}.k", ends[-1], a1, c1, de=f"Weg des ersten Kolbens, Schritt {j}",
                                       en=f"path of the first piston, step {j}")
                 U = b.intersect(f"{tag}U{j}", wl, k1, rule=("toward", W0, None) + _FWD)
@@ -436,7 +485,7 @@ def _work(b: Builder, part: _Part, speed: _Speed, W_at: tuple[float, float], n: 
     return _Part(**{**part.__dict__, "W0": W0, "ends": tuple(ends), "means": tuple(means)})
 
 
-def _radii(b: Builder, part: _Part, speed: _Speed, n: int) -> _Part:
+def _radii(b: Builder, part: _Part, speed: _Speed, n: int, start: int = 0) -> _Part:
     """For each crank position: M_j E_j = r/g + e carried to g·(r/g + e) = r + g e, laid on the crank position."""
     tag = part.tag
     m = 2 * n
@@ -450,15 +499,15 @@ def _radii(b: Builder, part: _Part, speed: _Speed, n: int) -> _Part:
                 V = b.intersect(f"{tag}V{j}", speed.one.line, k, rule=("toward", speed.angle.vertex, None, 0.0, -1.0))
                 Vg = carry_across(b, speed.angle, f"{tag}Vg{j}", V, speed.gain,
                                   de=f"auf die Maßlinie g·r: r + g·e{j}", en=f"onto the scale line g r: r + g e{j}")
-                ray = b.line(f"{tag}ray{j}", part.C, part.crank_points[j], de=f"Kurbelstellung {j}",
-                             en=f"crank position {j}")
+                point = part.crank_points[(start + j) % m]
+                ray = b.line(f"{tag}ray{j}", part.C, point, de=f"Kurbelstellung {j}", en=f"crank position {j}")
                 kz = b.circle_segment(f"{tag}Z{j}.k", part.C, speed.gain.origin, Vg,
                                       de=f"Halbmesser r + g·e{j} um den Wellenmittelpunkt",
                                       en=f"radius r + g e{j} about the shaft centre")
                 label = None
                 if j % (n // 2) == 0:
                     label = "B" + _SUB[j // (n // 2) + 1]
-                radii.append(b.intersect(f"{tag}Z{j}", ray, kz, rule=("toward", part.C, part.crank_points[j]),
+                radii.append(b.intersect(f"{tag}Z{j}", ray, kz, rule=("toward", part.C, point),
                                          role="result", de=f"Geschwindigkeitspunkt {j}", en=f"speed point {j}",
                                          labels={f"{tag}Z{j}": label} if label else None))
         closed_curve(b, f"{tag}wave", radii, de="Wellenlinie der Geschwindigkeiten (Kurvenlineal)",
@@ -551,8 +600,9 @@ def _scale_bar(b: Builder, at: tuple[float, float]) -> None:
 
 
 def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method: str, r: float,
-                     fluctuation: float, magnify: float) -> Figure:
+                     fluctuation: float, magnify: float, dead_centre: str = "crank-end") -> Figure:
     infinite_rod = bool(infinite_rod)
+    _start_angle(dead_centre)
     if magnify is None:
         magnify = auto_magnification(rod_ratio_param(rod_ratio),
                                      bounded("fluctuation Qr/((m1+m2) v1^2)", fluctuation, FLUCTUATION))
@@ -561,7 +611,8 @@ def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method
     used = _check_parts(parts, method)
     n = parts
     b = Builder("two-cranks", givens, {"parts": n, "method": used, "requested_method": method,
-                                       "infinite_rod": infinite_rod})
+                                       "infinite_rod": infinite_rod, "dead_centre": dead_centre})
+    start = n if dead_centre == "crank-end" else 0
     f = build_frame(b)
     upper = divide_semicircle(b, O=f["O"], D0=f["D0"], D1=f["D1"], circle=f["circle"], axis=f["axis"], n=n,
                               method=used)
@@ -596,8 +647,8 @@ def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method
         b.length_of("mstep", f["D0"], t1, de="Zirkel auf 4r/N", en="compass set to 4r/N")
     built = []
     for i, part in enumerate(parts_):
-        part = _work(b, part, speed, (-1.6, -1.6 - 0.5 * i), n, "mstep")
-        built.append(_radii(b, part, speed, n))
+        part = _work(b, part, speed, (-1.6, -1.6 - 0.5 * i), n, "mstep", start)
+        built.append(_radii(b, part, speed, n, start))
     _kochanski(b, inf, n)
     _label_extremes(b, inf)
     _scale_bar(b, (-1.2 if infinite_rod else 2.0, -1.55 if infinite_rod else 1.55))
@@ -689,6 +740,11 @@ def speed_radius(fig: Figure, j: int, *, infinite: bool | None = None) -> float:
     return fig.replay[centre].distance(fig.replay[f"{t}Z{j % (2 * fig.params['parts'])}"]) / fig.replay.givens["r"]
 
 
+def dead_centre_of(fig: Figure) -> str:
+    """The dead centre the figure's first crank starts from (a protocol from before the option: the head end)."""
+    return str(fig.params.get("dead_centre", "head-end"))
+
+
 def piston_speed_factor(w: float, rod_ratio: float | None) -> float:
     """c/v: the piston's speed over the crank-pin speed at crank angle *w* (exact law; None: infinite rod).
 
@@ -725,10 +781,11 @@ def speeds(fig: Figure, *, infinite: bool | None = None, crosshead_share: float 
         return piston_speed_factor(a, ratio) ** 2 + piston_speed_factor(a + 0.5 * math.pi, ratio) ** 2
 
     out = []
+    a0 = _start_angle(dead_centre_of(fig))
     for j in range(2 * n + 1):
         e = work_excess(fig, j, infinite=infinite)
-        a = math.pi * j / n
-        full = ((1.0 - mu) + mu * S(0.0) + 2.0 * k * e) / ((1.0 - mu) + mu * S(a))
+        a = a0 + math.pi * j / n
+        full = ((1.0 - mu) + mu * S(a0) + 2.0 * k * e) / ((1.0 - mu) + mu * S(a))
         out.append({"index": j, "crank_angle_deg": 180.0 * j / n, "work_excess": e, "v_book": 1.0 + k * e,
                     "v_exact": math.sqrt(1.0 + 2.0 * k * e) if 1.0 + 2.0 * k * e >= 0.0 else math.nan,
                     "v_full": math.sqrt(full) if full >= 0.0 else math.nan})
@@ -741,6 +798,7 @@ def speeds(fig: Figure, *, infinite: bool | None = None, crosshead_share: float 
 def two_cranks_checks(fig: Figure, model: Mapping[str, Any] | None = None) -> list[Check]:
     """The checks of a two-cranks figure; *model*: ``{"extremes": quadrant_extremes(rod ratio)}``, if known."""
     n = fig.params["parts"]
+    dc = dead_centre_of(fig)
     g = fig.replay.givens
     K = g["rod_ratio"]
     gain = g["magnify"] * g["fluctuation"]
@@ -760,10 +818,11 @@ def two_cranks_checks(fig: Figure, model: Mapping[str, Any] | None = None) -> li
         for j in range(2 * n + 1):
             alpha = math.pi * j / n
             e = work_excess(fig, j, infinite=infinite)
-            checks.append(Check(f"work excess {j} ({word})", e, excess_exact(alpha, ratio), tol, why, "Q r"))
+            checks.append(Check(f"work excess {j} ({word}, from the {dc} dead centre)", e,
+                                excess_from(alpha, ratio, dc), tol, why, "Q r"))
             if j < 2 * n:
                 checks.append(Check(f"speed radius {j} ({word})", speed_radius(fig, j, infinite=infinite),
-                                    1.0 + gain * excess_exact(alpha, ratio), (1.0 + gain) * tol,
+                                    1.0 + gain * excess_from(alpha, ratio, dc), (1.0 + gain) * tol,
                                     "proportional angle and compass: the work excess times g, Euclidean", "r"))
         if infinite and n % 4 == 0:
             for j in range(0, 2 * n, n // 4):
@@ -778,11 +837,11 @@ def two_cranks_checks(fig: Figure, model: Mapping[str, Any] | None = None) -> li
                                     work_excess(fig, j, infinite=True) + work_excess(fig, n // 2 - j, infinite=True),
                                     0.0, 2 * tol, "§ 146: v_max - v1 = v1 - v_min; e(90 - a) = -e(a)", "Q r"))
         else:
-            for q in (quadrant_extremes(ratio) if model is None else model["extremes"]):
+            for q in (quadrant_extremes(ratio, dead_centre=dc) if model is None else model["extremes"]):
                 # The grid's own rise and fall in each quadrant, against the exact law on the same grid.
                 lo, hi = (q["quadrant"] - 1) * n // 2, q["quadrant"] * n // 2
                 es = [work_excess(fig, j) for j in range(lo, hi + 1)]
-                ex = [excess_exact(math.pi * j / n, ratio) for j in range(lo, hi + 1)]
+                ex = [excess_from(math.pi * j / n, ratio, dc) for j in range(lo, hi + 1)]
                 measured = (max(es) - es[0]) - (es[0] - min(es))
                 checks.append(Check(f"quadrant {q['quadrant']}: rise - fall of e ({word})", measured,
                                     (max(ex) - ex[0]) - (ex[0] - min(ex)), 2 * tol,
@@ -848,8 +907,9 @@ def _wave_checks(fig: Figure, centre: str) -> list[Check]:
 # -- the table ----------------------------------------------------------------------------
 
 
-def speed_fluctuation_rows(*, rod_ratio: float | None, step_deg: float = 15.0) -> list[dict[str, Any]]:
-    """e(α) in units of Q·r over 0…360°, read off the construction's work line.
+def speed_fluctuation_rows(*, rod_ratio: float | None, step_deg: float = 15.0,
+                           dead_centre: str = "crank-end") -> list[dict[str, Any]]:
+    """e(α) in units of Q·r over 0…360° from the given dead centre (§ 146's B1 by default), off the work line.
 
     >>> rows = speed_fluctuation_rows(rod_ratio=None, step_deg=45.0)
     >>> [row["crank_angle_deg"] for row in rows if abs(row["work_excess"]) < 1e-12]   # v = v1 every 45 degrees
@@ -863,9 +923,9 @@ def speed_fluctuation_rows(*, rod_ratio: float | None, step_deg: float = 15.0) -
     if n < 2 or n % 2 or abs(n * step - 180.0) > 1e-9:
         raise InvalidParameter(f"the angle step must divide 90 degrees, got {step_deg!r}")
     if rod_ratio is None:
-        fig = TWO_CRANKS.figure(parts=n, infinite_rod=True)
+        fig = TWO_CRANKS.figure(parts=n, infinite_rod=True, dead_centre=dead_centre)
     else:
-        fig = TWO_CRANKS.figure(parts=n, rod_ratio=rod_ratio)
+        fig = TWO_CRANKS.figure(parts=n, rod_ratio=rod_ratio, dead_centre=dead_centre)
     return [{"crank_angle_deg": 180.0 * j / n, "work_excess": work_excess(fig, j, infinite=rod_ratio is None)}
             for j in range(2 * n + 1)]
 
@@ -878,12 +938,15 @@ TWO_CRANKS = register(Construction(
     build=build_two_cranks,
     checks=two_cranks_checks,
     validates_sweeps=True,
-    sweep_model=lambda g, params: {} if params["infinite_rod"] else {"extremes": quadrant_extremes(g["rod_ratio"])},
+    sweep_model=lambda g, params: {} if params["infinite_rod"] else {
+        "extremes": quadrant_extremes(g["rod_ratio"], dead_centre=params.get("dead_centre", "head-end"))},
     defaults={"rod_ratio": 5.0, "infinite_rod": False, "parts": 12, "method": "auto", "r": 1.0,
-              "fluctuation": 0.25, "magnify": None},
+              "fluctuation": 0.25, "magnify": None, "dead_centre": "crank-end"},
     book_params=({"rod_ratio": 5.0, "parts": 12}, {"infinite_rod": True, "parts": 12}),
-    structural=("parts", "method", "infinite_rod"),
-    extra={"plate": two_cranks_plate},
+    structural=("parts", "method", "infinite_rod", "dead_centre"),
+    extra={"plate": two_cranks_plate,
+           "help": {"dead_centre": "where the first crank starts: crank-end (§ 146's B1, the default: upper sign "
+                                   "in the Hingang) or head-end (the other books' zero)"}},
     # A draftsman picks the magnification of the speed deviations for the rod he draws: so does a sweep.
     sweep=lambda g, ratios: {**g, "rod_ratio": ratios,
                              "magnify": auto_magnification(ratios, g["fluctuation"])},

@@ -67,6 +67,8 @@ CITED: dict[str, tuple[tuple[str, str], ...]] = {
     "piston-force": (("001", "Abb. 1054/1055"), ("004", "Fig. 25")),
     "tangential-pressure": (("004", "Fig. 26/27"),),
     "two-cranks": (("002", "Fig. 566"),),
+    "four-stroke": (("001", "Abb. 1056–1058"),),
+    "flywheel-rim": (("004", "Fig. 28"),),
 }
 
 
@@ -183,16 +185,37 @@ def _two_cranks(fig: "Figure", lang: str) -> list[str]:
     rod = (("unendlich lange Schubstangen" if de else "infinitely long rods") if fig.params.get("infinite_rod")
            else _ratio("r/l", g["rod_ratio"], lang))
     n = fig.params.get("parts")
-    return [rod, f"Qr/((m₁ + m₂)v₁²) = {number(g['fluctuation'], lang)}",
+    start = ((("ab der äußeren Totlage B₁ (§ 146)" if de else "from the crank-end dead centre B₁ (§ 146)")
+              if fig.params.get("dead_centre", "head-end") == "crank-end"
+              else ("ab der deckelseitigen Totlage" if de else "from the head-end dead centre")))
+    return [rod, start, f"Qr/((m₁ + m₂)v₁²) = {number(g['fluctuation'], lang)}",
             (f"Schwankungen {number(g['magnify'], lang)}fach vergrößert" if de
              else f"speed deviations magnified {number(g['magnify'], lang)} times"),
             f"Kreis in {2 * int(n)} Teilen" if de else f"circle in {2 * int(n)} parts"]
 
 
+def _four_stroke(fig: "Figure", lang: str) -> list[str]:
+    g = fig.replay.givens
+    de = lang == "de"
+    diesel = fig.params.get("engine") == "diesel"
+    out = [("Gleichdruckmaschine" if de else "compression-ignition engine") if diesel
+           else ("Verpuffungsmaschine" if de else "explosion engine"),
+           f"ε = {number(g['compression_ratio'], lang)}", f"n = {number(g['exponent'], lang)}"]
+    out.append(f"ρ = {number(fig.params.get('cutoff', 2.0), lang)}" if diesel
+               else ("Höchstdruck " if de else "peak pressure ") + f"{number(g['max_pressure'], lang)} at")
+    out += [_ratio("r/L", g["rod_ratio"], lang), f"q = {number(g['pressure_ratio'], lang)} at"]
+    return out
+
+
+def _flywheel_rim(fig: "Figure", lang: str) -> list[str]:
+    g = fig.replay.givens
+    return [f"b₁ = {number(g['b1'], lang)} r₁", ("Kranz " if lang == "de" else "rim ") + f"{number(g['rim'], lang)} r₁"]
+
+
 _GIVENS: dict[str, Callable[["Figure", str], list[str]]] = {
     "crank": _crank, "crank-angle": _crank_angle, "inertia-curve": _inertia, "inertia-stroke-fractions": _inertia,
     "indicator-diagram": _indicator, "piston-force": _piston_force, "tangential-pressure": _tangential,
-    "two-cranks": _two_cranks,
+    "two-cranks": _two_cranks, "four-stroke": _four_stroke, "flywheel-rim": _flywheel_rim,
 }
 
 

@@ -148,6 +148,14 @@ _BOOK_METHODS = {
     "neusis": ("Einschiebung (Archimedes)", "neusis (Archimedes)"),
     "dividers": ("Teilung mit dem Stechzirkel", "division with the dividers by trial"),
 }
+#: Where the first of two cranks starts (two-cranks): named in words, with § 146's sign rule.
+_DEAD_CENTRES = {
+    "crank-end": ("ab der äußeren Totlage B₁ (§ 146: oberes Zeichen im Hingang)",
+                  "from the crank-end dead centre B1 (§ 146: upper sign in the forward stroke)"),
+    "head-end": ("ab der deckelseitigen Totlage", "from the head-end dead centre"),
+}
+#: Givens a construction derives from the others for its steps (Brauer's ray slopes): not named in captions.
+_DERIVED = ("tan_alpha", "tan_beta", "tan_alpha_e", "tan_beta_e")
 _HIDDEN = ("givens", "group_titles", "requested_method", "plate", "captions")
 
 
@@ -165,7 +173,8 @@ def params_text(figure: Figure, lang: str = "en") -> str:
     ("L/r = 5, 18 parts, Dürer's division", 'L/r = 4, Hub in 10 Teilen')
     """
     i = 0 if lang == "de" else 1
-    values = {**dict(figure.replay.givens), **{k: v for k, v in figure.params.items() if k not in _HIDDEN}}
+    values = {**{k: v for k, v in figure.replay.givens.items() if k not in _DERIVED},
+              **{k: v for k, v in figure.params.items() if k not in _HIDDEN}}
     out = []
     order = ("rod_ratio", "pressure_ratio", "pressure_unit", "parts", "divisions", "method")
     for key in sorted(values, key=lambda k: (order.index(k) if k in order else len(order), k)):
@@ -174,6 +183,8 @@ def params_text(figure: Figure, lang: str = "en") -> str:
             continue
         if key == "method":
             out.append(_BOOK_METHODS.get(str(v), (str(v), str(v)))[i])
+        elif key == "dead_centre":
+            out.append(_DEAD_CENTRES.get(str(v), (str(v), str(v)))[i])
         elif key in _BOOK_PARAMS:
             text = _BOOK_PARAMS[key][i].format(v=_num(v))
             out.append(text.replace(".", ",") if lang == "de" and "kg" in text else text)

@@ -5,7 +5,17 @@ equations (the error area f_x, his closed-form tangential integral, his
 series model of the crank for the angles, his flywheel assumptions and
 tables) by :mod:`construct.books.baumann.excess_error` and :mod:`construct.books.baumann.flywheel`;
 judged as for seed 000 (:func:`construct.books.errata.classify`: within half a unit
-of the last printed place ``agrees``, within 2 ``slip``, else ``misprint``).
+of the last printed place ``agrees``, within 2 ``slip``, else the cause: ``typesetting``,
+``arithmetic``, ``follows``, ``drawing`` or ``unexplained``, each entry's cause named in
+``_CAUSES`` and argued in its note).  Where the true value needs an assumption
+(kz = 5 v for his worked cases, which he does not state) the note says so.
+
+His comparison of the other formulas (Formeln A–E, Kás: totals, rim weights
+and arms and hub in brackets) is checked against itself
+(:func:`formula_table_check`): total = rim + arms and hub, and the factor
+total/rim against his "1,33 ÷ 1,35".  Two columns do not add up; the
+correction that restores the sum with the factor in his band and the fewest
+wrong digits is the likely slip.
 Where he carries a wrong number on, the later numbers are judged against the
 value his own (wrong) inputs give, so each error is counted where it is made;
 the note gives the value from the right inputs too.
@@ -13,7 +23,7 @@ the note gives the value from the right inputs too.
 >>> rows = {(e.table, e.row, e.column): e for e in entries()}
 >>> e = rows["Fehler f_x", "case p = 9,85", "k = 7,85/9,85"]
 >>> e.printed, round(e.true, 5), e.class_
-('0,805', 0.79695, 'misprint')
+('0,805', 0.79695, 'arithmetic')
 >>> rows["Tabelle Schwungmoment", "kz = 75, v = 15", "1 + 0,06 v²/kz"].class_
 'agrees'
 """
@@ -28,7 +38,7 @@ from . import flywheel as fw
 from ..errata import Erratum, classify, read_printed
 from . import printed as seed004
 
-__all__ = ["entries", "true_values"]
+__all__ = ["entries", "true_values", "formula_table_check", "factor_within", "FACTOR_BAND"]
 
 _P, _P0, _S0 = 7.85, 0.15, 0.05
 _MODEL = {"admission": _P, "back_pressure": _P0, "filling": 0.10, "clearance": _S0, "compression": 0.30}
@@ -132,14 +142,150 @@ def true_values() -> dict[str, tuple[float, str]]:
         out[f"t1_total:{i}"] = (1.0 + fw.ARMS_HUB * x, "1 + 0,08075 v²/kz")
         out[f"t2_moment:{i}"] = (1.0 + fw.MOMENT * x, "1 + 0,0218 v²/kz")
         out[f"t2_weight:{i}"] = (1.0 + fw.TOTAL * x, "1 + 0,06 v²/kz")
+    # His worked cases, judged along his own chain: the total from G_s and his printed (rounded) v, the rim from
+    # his printed total, arms and hub as printed total − printed rim.  kz = 5 v is an assumption (his tables pair
+    # kz and v so; he does not say which kz he takes here).
+    totals = [16800.0 if t == "116800" else float(t) for t in seed004.WORKED_TOTALS]
     for i, row in enumerate(fw.worked_totals()):
-        out[f"worked_v:{i}"] = (row["v"], "π D n/60")
-        pair = "kz = 5 v as his tables pair them"
-        out[f"worked_total:{i}"] = (row["total"], f"G_s(1 + 0,06 v²/kz), {pair}; to 50 kg")
-        out[f"worked_rim:{i}"] = (row["rim"], f"G_total/(1 + 0,08075 v²/kz), {pair}; to 50 kg (G_s/(1 + 0,0218 v²/kz) "
-                                  f"of his derivation gives {row['rim_by_moment']:.0f})")
-        out[f"worked_arms:{i}"] = (row["arms_hub"], "G_total − rim; to 50 kg")
+        v = float(seed004.WORKED_V[i].replace(",", "."))
+        out[f"worked_v:{i}"] = (row["v"], "π D n/60" + ("; 17,65 for 17,67: π taken as 3,14 gives 17,66, a slide "
+                                                       "rule's reading" if seed004.WORKED_V[i] == "17,65" else ""))
+        pair = "assuming kz = 5 v as his tables pair them"
+        gs = row["Gs"]
+        total = gs * (1.0 + fw.TOTAL * v / fw.KZ_PER_V)
+        out[f"worked_total:{i}"] = (total, f"G_s(1 + 0,06 v²/kz) with his printed v = {seed004.WORKED_V[i]}, {pair}; "
+                                    f"to 50 kg (with v = π D n/60: {row['total']:.0f})")
+        rim = totals[i] / (1.0 + fw.ARMS_HUB * v / fw.KZ_PER_V)
+        rim85 = totals[i] / (1.0 + fw.ARMS_HUB * v * v / 85.0)
+        alt = (f"; with kz = 85, his tables' column for v = 17, {rim85:.0f}: the printed value follows from that "
+               f"rounded kz" if round(rim85 / 50.0) * 50.0 == float(seed004.WORKED_RIMS[i][0]) and
+               abs(rim - float(seed004.WORKED_RIMS[i][0])) > 25.0 else "")
+        out[f"worked_rim:{i}"] = (rim, f"his printed total {totals[i]:.0f} / (1 + 0,08075 v²/kz), {pair}; to 50 kg"
+                                  f"{alt} (G_s/(1 + 0,0218 v²/kz) of his derivation gives {row['rim_by_moment']:.0f})")
+        arms = totals[i] - float(seed004.WORKED_RIMS[i][0])
+        out[f"worked_arms:{i}"] = (arms, f"follows exactly from his printed total − printed rim ({totals[i]:.0f} − "
+                                   f"{seed004.WORKED_RIMS[i][0]}); by the method, {pair}: {row['arms_hub']:.0f}")
+    out.update(_formula_table_values())
     return out
+
+
+#: His factor for arms and hub, "die errechneten Kranzgewichte, wie sonst allgemein üblich, mit 1,33 ÷ 1,35
+#: multipliziert": a factor that rounds to two decimals within it is within.
+FACTOR_BAND = (1.33, 1.35)
+
+
+def _digits_apart(a: str, b: str) -> int:
+    """How many digits a typesetter would have to get wrong: 1 for one wrong digit or two adjacent swapped."""
+    if len(a) != len(b):
+        return 99
+    diff = [i for i in range(len(a)) if a[i] != b[i]]
+    if len(diff) == 2 and diff[1] == diff[0] + 1 and a[diff[0]] == b[diff[1]] and a[diff[1]] == b[diff[0]]:
+        return 1
+    return len(diff)
+
+
+def _rounding_step(total: int) -> int:
+    """The step a printed total is rounded to, read off its trailing digits (he rounds to 500, 250, 50 kg)."""
+    return next(step for step in (500, 250, 50, 10, 1) if total % step == 0)
+
+
+def _factor_note(total: int, rim: int) -> tuple[float, str]:
+    f = total / rim
+    h = _rounding_step(total) / 2
+    low, high = (total - h) / rim, (total + h) / rim
+    inside = low <= FACTOR_BAND[1] and high >= FACTOR_BAND[0]
+    where = (f"within his 1,33–1,35 (the total rounded to {2 * h:.0f} kg: {low:.3f}–{high:.3f})" if inside else
+             f"outside his 1,33–1,35 even with the total's rounding to {2 * h:.0f} kg ({low:.3f}–{high:.3f}): this "
+             "formula's own allowance for arms and hub (he takes, for the formula that gives the total, the arms "
+             "and hub as its calculation gives)")
+    return f, f"factor total/rim {f:.3f}, {where}"
+
+
+def factor_within(total: int, rim: int) -> bool:
+    """Does the factor total/rim lie within his 1,33–1,35, allowing for the total's rounding?
+
+    >>> factor_within(28000, 20600), factor_within(20000, 12600)
+    (True, False)
+    """
+    return "within" in _factor_note(total, rim)[1]
+
+
+def formula_table_check(total: str, rim: str, arms: str) -> dict[str, object]:
+    """One column of his comparison checked against itself: total = rim + arms and hub, and his factor 1,33–1,35.
+
+    Returns ``true`` (the consistent triple: the printed one, or with the likely slip corrected), ``wrong``
+    (which of "total", "rim", "arms" is corrected, or None), ``cause`` and ``note``.  When the sum fails,
+    each single correction that restores it is weighed: the one that puts the factor within (or nearest) his
+    band and needs the fewest wrong digits is the likely slip -- a typesetting error when one digit (or two
+    adjacent swapped) is wrong, else the author's arithmetic.
+
+    >>> c = formula_table_check("20000", "21600", "7400")       # Formel B, third column
+    >>> c["wrong"], c["true"]["total"], c["cause"]
+    ('total', 29000, 'typesetting')
+    >>> c = formula_table_check("22500", "16000", "5900")       # Formel E, fourth column
+    >>> c["wrong"], c["true"]["rim"], c["cause"]
+    ('rim', 16600, 'typesetting')
+    """
+    t, r, a = int(total), int(rim), int(arms)
+    printed = {"total": t, "rim": r, "arms": a}
+    if t == r + a:
+        f, note = _factor_note(t, r)
+        return {"true": printed, "wrong": None, "cause": None, "note": note, "factor": f}
+    options = []
+    for which, value in (("total", r + a), ("rim", t - a), ("arms", t - r)):
+        triple = {**printed, which: value}
+        if min(triple.values()) <= 0:
+            continue
+        f = triple["total"] / triple["rim"]
+        off = 0.0 if factor_within(triple["total"], triple["rim"]) else min(abs(f - b) for b in FACTOR_BAND)
+        digits = _digits_apart(str(printed[which]), str(value))
+        options.append((off > 0.03, digits, off, which, triple, f))
+    options.sort(key=lambda o: o[:3])
+    far, digits, off, which, triple, f = options[0]
+    cause = "typesetting" if digits <= 1 else "arithmetic"
+    others = ", ".join(f"{w} {o[4][w]} (factor {o[5]:.3f})" for o in options[1:] for w in [o[3]])
+    note = (f"{r} + {a} = {r + a}, not {t}: the {which} {printed[which]} read as {triple[which]} restores the sum "
+            f"with factor {f:.3f} and {digits} wrong digit{'s' if digits != 1 else ''}"
+            + (f"; the other readings: {others}" if others else ""))
+    return {"true": triple, "wrong": which, "cause": cause, "note": note, "factor": f}
+
+
+def _formula_table_values() -> dict[str, tuple[float, str]]:
+    out: dict[str, tuple[float, str]] = {}
+    for name in seed004.FORMULA_ROWS:
+        for i in range(len(seed004.MACHINE_COLUMNS)):
+            if seed004.FORMULA_TOTALS[name][i] is None:
+                continue
+            rim, arms = seed004.FORMULA_RIMS[name][i]
+            c = formula_table_check(seed004.FORMULA_TOTALS[name][i], rim, arms)
+            true = c["true"]
+            sums = {"total": f"rim + arms and hub = {true['rim']} + {true['arms']}",
+                    "rim": f"total − arms and hub = {true['total']} − {true['arms']}",
+                    "arms": f"total − rim = {true['total']} − {true['rim']}"}
+            for part in ("total", "rim", "arms"):
+                note = c["note"] if c["wrong"] == part else (
+                    f"{sums[part]}" + (f"; {c['note']}" if c["wrong"] is None else
+                                       f"; agrees with the {c['wrong']} corrected ({c['wrong']} {true[c['wrong']]}, factor "
+                                       f"total/rim {c['factor']:.3f})"))
+                out[f"formula_{part}:{name}:{i}"] = (float(true[part]), note)
+                if c["wrong"] == part:
+                    _CAUSES[f"formula_{part}:{name}:{i}"] = str(c["cause"])
+    return out
+
+
+#: Why the printed numbers more than 2 units off are wrong (keys as in :func:`true_values`); the notes say more.
+_CAUSES: dict[str, str] = {
+    "k1": "arithmetic", "fx1": "arithmetic", "area1_assumed": "arithmetic", "k2": "arithmetic",
+    "coef_A": "arithmetic", "coef_B": "arithmetic", "coef_D": "arithmetic", "alpha_f": "arithmetic",
+    "alpha_c": "arithmetic",
+    "alpha1_k8": "drawing", "alpha2_k8": "drawing", "alpha1_k2": "drawing", "alpha2_k2": "drawing",
+    "cos_alpha2_k8": "typesetting", "cos_alpha2_k2": "typesetting",
+    "coef_C": "typesetting",          # 4,98 in the brackets for the 4,89 he prints two lines before
+    "f_k8": "arithmetic", "alpha1_k8_rad": "arithmetic", "fxc_k8": "follows", "f_k2": "arithmetic",
+    "shift_k2": "arithmetic", "fxc_k2": "follows", "centroid": "follows", "hub_coeff": "typesetting",
+    "worked_v:3": "arithmetic", "worked_v:5": "arithmetic", "worked_total:4": "typesetting",
+    "worked_rim:3": "follows", "worked_rim:5": "follows",
+}
 
 
 def _units(reading_value: Fraction, unit: Fraction, true: float) -> Fraction:
@@ -152,15 +298,15 @@ def _entry(p: seed004.Printed, true: float, note: str) -> Erratum:
     value = reading.value
     t = true * 60.0 if reading.is_angle else true
     units = _units(value, unit, t)
-    verdict = classify(units)
+    verdict = classify(units, _CAUSES.get(p.key, "unexplained"))
     notes = [note]
-    if verdict != "agrees" and classify(_units(-value, unit, t)) != "misprint":
+    if verdict != "agrees" and classify(_units(-value, unit, t)) in ("agrees", "slip"):
         notes.append("sign dropped: the magnitude is right")
     if verdict == "slip" and p.table.startswith("Tabelle") and abs(float(value) - t) <= 0.0025 * abs(t):
         notes.append("within a slide rule's three figures")
-    if verdict == "misprint" and not reading.is_angle and p.text.lstrip("-").startswith("1") and len(p.text) > 3:
+    if verdict not in ("agrees", "slip") and not reading.is_angle and p.text.lstrip("-").startswith("1") and len(p.text) > 3:
         shorter = Fraction(p.text.replace(",", ".").lstrip("-")[1:] or "0")
-        if classify(_units(shorter, unit, abs(t))) != "misprint":
+        if classify(_units(shorter, unit, abs(t))) in ("agrees", "slip"):
             notes.append("a stray leading 1: the rest agrees")
     return Erratum(seed004.SOURCE, p.table, p.row, p.column, p.text, true, float(units) + 0.0, verdict, "; ".join(notes))
 
@@ -187,11 +333,16 @@ _FORMULAS = {
 }
 
 
+#: Every wrong formula of his is the typesetter's: the next lines, his integrals and his numbers follow from the
+#: right form (the notes say which).
+_FORMULA_CLASS = {row: "typesetting" for row in _FORMULAS}
+
+
 def entries() -> list[Erratum]:
-    """Every printed number of seed 004 with its verdict, in the order of the text, then the formula misprints."""
+    """Every printed number of seed 004 with its verdict, in the order of the text, then the wrong formulas."""
     truth = true_values()
     out = [_entry(p, *truth[p.key]) for p in seed004.all_printed()]
     for f in seed004.printed_formulas():
         true, note = _FORMULAS[f.row]
-        out.append(Erratum(seed004.SOURCE, "formula", f.row, f.column, f.text, true, None, "misprint", note))
+        out.append(Erratum(seed004.SOURCE, "formula", f.row, f.column, f.text, true, None, _FORMULA_CLASS[f.row], note))
     return out

@@ -42,7 +42,7 @@ from ...kernel.errors import InvalidParameter
 
 __all__ = ["GAMMA", "G", "book_chain", "ARMS_HUB", "MOMENT", "TOTAL", "derived", "coefficient_rows", "BOOK_KZ", "BOOK_V",
            "required_moment", "moment_from_excess", "rim_speed", "total_weight", "WORKED", "worked_totals",
-           "ARMS_HUB_PRINTED_ASSUMPTIONS"]
+           "ARMS_HUB_PRINTED_ASSUMPTIONS", "design", "parse_fraction", "KZ_PER_V"]
 
 GAMMA = 7200.0  #: kg/m³, cast iron (seed 004)
 G = 9.81        #: m/s² (seed 004)
@@ -186,3 +186,94 @@ def worked_totals(kz_per_v: float = 5.0) -> list[dict[str, float]]:
 
 def as_mapping(rows: Sequence[Mapping[str, float]], key: str) -> list[float]:
     return [r[key] for r in rows]
+
+
+#: kz = 5 v (kz in kg/cm², v in m/s): the pairing of both his tables and of his worked totals.
+KZ_PER_V = 5.0
+
+
+def _in(domain_name: str, name: str, value: float) -> float:
+    from ...constructions import domain
+
+    return float(getattr(domain, domain_name).check(name, value))
+
+
+def design(*, rpm: float, diameter: float | None = None, v: float | None = None, kz: float | None = None,
+           excess_work: float | None = None, fluctuation: float | None = None,
+           rim_weight: float | None = None) -> dict[str, float | str]:
+    """The flywheel by Baumann's procedure, from the excess work (or from his G_s) to the total weight.
+
+    Give the excess work E (kg·m) with the degree of irregularity δ, or the rim weight G_s itself;
+    the rim's mean diameter D_s (m) or its speed v (m/s); the revolutions n (1/min); the allowed
+    stress kz (kg/cm², default his pairing kz = 5 v).  Returns (kg, m):
+
+    * ``excess_work`` E (None when G_s was given), ``rim_speed`` v = π D n/60, ``diameter`` D = 60 v/(π n), ``kz``;
+    * ``rim_weight`` G_s = g E/(v² δ), from E = (G_s/g)·v²·δ with g = 9.81: the rim that alone
+      would take up E;
+    * ``total_weight`` G_s(1 + 0.06 v²/kz) (his table 2, the first-order form of his quotient);
+    * ``rim_of_wheel`` G1 = G_total/(1 + 0.08075 v²/kz) and ``arms_hub_weight`` G_total − G1: the split
+      his list "Kranzgewichte (Arm- und Nabengewichte)" prints (the arms and hub carry part of the moment,
+      so the wheel's own rim is lighter than G_s);
+    * ``moment`` G_s·D² (kg m²), the Schwungmoment the diagram requires;
+    * ``kz_rule``: "given" or "kz = 5 v".
+
+    His first worked case (G_s = 2130 kg, D_s = 3.2 m, n = 120): total 2650 kg printed.
+
+    >>> d = design(rim_weight=2130.0, diameter=3.2, rpm=120.0)
+    >>> round(d["rim_speed"], 2), round(d["total_weight"]), round(d["rim_of_wheel"]), round(d["arms_hub_weight"])
+    (20.11, 2644, 1996, 648)
+    >>> d = design(excess_work=1000.0, fluctuation=1 / 50, diameter=3.0, rpm=120.0, kz=100.0)
+    >>> round(d["rim_weight"], 1), round(d["moment"], 1)    # G_s = g E/(v² δ); G_s D² = 3600 g E/(π² n² δ)
+    (1380.5, 12424.5)
+    """
+    n = _in("RPM", "rpm", rpm)
+    if (diameter is None) == (v is None):
+        raise InvalidParameter("give the rim's mean diameter D (--diameter) or its speed v (--v), one of them")
+    if diameter is not None:
+        d = _in("FLYWHEEL_DIAMETER", "diameter D", diameter)
+        speed = rim_speed(d, n)
+    else:
+        speed = _in("RIM_SPEED", "rim speed v", v)
+        d = 60.0 * speed / (math.pi * n)
+    _in("RIM_SPEED", "rim speed v", speed)
+    if kz is None:
+        stress, rule = KZ_PER_V * speed, "5 v, Baumann's pairing"
+    else:
+        stress, rule = _in("FLYWHEEL_KZ", "kz", kz), "given"
+    if (excess_work is None) == (rim_weight is None):
+        raise InvalidParameter("give the excess work E (--excess-work, with --fluctuation) or the rim weight G_s "
+                               "(--rim-weight), one of them")
+    if excess_work is not None:
+        if fluctuation is None:
+            raise InvalidParameter("the excess work needs the degree of irregularity δ (--fluctuation, e.g. 1/80)")
+        work = _in("EXCESS_WORK", "excess work E", excess_work)
+        delta = _in("IRREGULARITY", "degree of irregularity δ", fluctuation)
+        gs = G * work / (speed * speed * delta)
+    else:
+        if fluctuation is not None:
+            raise InvalidParameter("--fluctuation belongs to the excess work; with --rim-weight G_s it is not used")
+        work, delta = None, None
+        gs = _in("WEIGHT", "rim weight G_s", rim_weight)
+    x = speed * speed / stress
+    total = gs * (1.0 + TOTAL * x)
+    g1 = total / (1.0 + ARMS_HUB * x)
+    return {"excess_work": work, "fluctuation": delta, "rpm": n, "diameter": d, "rim_speed": speed, "kz": stress,
+            "kz_rule": rule, "rim_weight": gs, "total_weight": total, "rim_of_wheel": g1,
+            "arms_hub_weight": total - g1, "moment": gs * d * d, "total_quotient": total_weight(gs, speed, stress,
+                                                                                                exact=True)}
+
+
+def parse_fraction(text: str) -> float:
+    """A number or a fraction such as the books write δ: ``1/80`` or ``0.0125``.
+
+    >>> parse_fraction("1/80"), parse_fraction("0.02")
+    (0.0125, 0.02)
+    """
+    num, sep, den = text.partition("/")
+    try:
+        value = float(num) / float(den) if sep else float(text)
+    except (ValueError, ZeroDivisionError):
+        raise InvalidParameter(f"not a number or fraction: {text!r}") from None
+    if not math.isfinite(value):
+        raise InvalidParameter(f"not a finite number: {text!r}")
+    return value

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 __all__ = ["SOURCE", "Printed", "PrintedFormula", "all_printed", "printed_formulas", "TABLE_KZ", "TABLE_V",
            "TABLE_1_G2", "TABLE_1_TOTAL", "TABLE_2_MOMENT", "TABLE_2_WEIGHT", "WORKED_V", "WORKED_TOTALS",
-           "WORKED_RIMS"]
+           "WORKED_RIMS", "FORMULA_ROWS", "FORMULA_TOTALS", "FORMULA_RIMS", "MACHINE_COLUMNS"]
 
 SOURCE = "seed 004, Baumann 1902 (Schwungradgewichte)"
 
@@ -133,6 +133,36 @@ WORKED_CASES = ("Gs 2130, Ds 3,2, n 120", "Gs 11400, Ds 5,4, n 60", "Gs 17500, D
                 "Gs 19100, Ds 4,50, n 75", "Gs 12900, Ds 4,50, n 105", "Gs 11600, Ds 4,5, n 75")
 
 
+#: His comparison of the other formulas (seed text after the worked cases): the machine type of each of the six
+#: cases -- two single-cylinder, two tandem, two compound engines.
+MACHINE_COLUMNS = ("Eincylinder I", "Eincylinder II", "Tandem I", "Tandem II", "Verbund I", "Verbund II")
+FORMULA_ROWS = ("Formel A", "Formel B", "Formel C", "Formel D", "Nach Kás", "Formel E")
+#: Totals ("Gesamtgewichte") by each formula; None where he prints nothing.  The seed text loses the empty cells:
+#: D's two numbers stand under the compound engines and Kás's under the single-cylinder ones (their sizes match
+#: those columns of the other formulas: D 12000 beside C's 11000, Kás 36000 beside A's 41000).
+FORMULA_TOTALS = {
+    "Formel A": ("5750", "41000", "28000", "28000", "18000", "18000"),
+    "Formel B": ("5000", "30600", "20000", "22000", "15500", "15500"),
+    "Formel C": ("3250", "20500", "18500", "18000", "11000", "11000"),
+    "Formel D": (None, None, None, None, "12000", "12000"),
+    "Nach Kás": ("8750", "36000", None, None, None, None),
+    "Formel E": ("5100", "33500", "22500", "22500", "13500", "13500"),
+}
+#: "Kranzgewichte, wobei die Arm- und Nabengewichte in Klammern angegeben sind": (rim, arms and hub).
+FORMULA_RIMS = {
+    "Formel A": (("4250", "1500"), ("30300", "10700"), ("20800", "7200"), ("20600", "7400"), ("13500", "4500"),
+                 ("13500", "4500")),
+    "Formel B": (("3700", "1300"), ("23000", "7600"), ("21600", "7400"), ("16400", "5600"), ("11400", "4100"),
+                 ("11500", "4000")),
+    "Formel C": (("2320", "930"), ("15150", "5350"), ("13600", "4900"), ("13400", "4600"), ("8100", "2900"),
+                 ("8100", "2900")),
+    "Formel D": (None, None, None, None, ("9000", "3000"), ("8850", "3150")),
+    "Nach Kás": (("6500", "2250"), ("27000", "9000"), None, None, None, None),
+    "Formel E": (("3800", "1300"), ("24950", "8550"), ("16700", "5800"), ("16000", "5900"), ("9950", "3550"),
+                 ("9850", "3650")),
+}
+
+
 def _half_step(text: str) -> str | None:
     """The tables print three decimals, and four only where the fourth is a 5: read those to half a unit of the third."""
     return "0.0005" if len(text.split(",")[1]) == 4 else None
@@ -160,6 +190,16 @@ def all_printed() -> list[Printed]:
         out.append(Printed("Beispiele", case, "Kranz (Richtige Werte)", WORKED_RIMS[i][0], f"worked_rim:{i}", "50"))
         out.append(Printed("Beispiele", case, "Arme und Nabe (Richtige Werte)", WORKED_RIMS[i][1], f"worked_arms:{i}",
                            "50"))
+    for name in FORMULA_ROWS:
+        for i, column in enumerate(MACHINE_COLUMNS):
+            if FORMULA_TOTALS[name][i] is None:
+                continue
+            rim, arms = FORMULA_RIMS[name][i]
+            row = f"{name}, {column}"
+            out.append(Printed("Formeln", row, "Gesamtgewicht", FORMULA_TOTALS[name][i], f"formula_total:{name}:{i}",
+                               "50"))
+            out.append(Printed("Formeln", row, "Kranzgewicht", rim, f"formula_rim:{name}:{i}", "10"))
+            out.append(Printed("Formeln", row, "Arme und Nabe", arms, f"formula_arms:{name}:{i}", "10"))
     return out
 
 

@@ -2,18 +2,20 @@
 
 Each number of :mod:`construct.books.mechanics.printed` beside the value it claims
 to be, judged as :mod:`construct.books.errata` judges seed 000 (distance in units of
-the last printed place: agrees within half a unit, slip up to 2, else
-misprint).  The true values come from the book's formulas solved exactly
+the last printed place: agrees within half a unit, slip up to 2, else the
+cause, "unexplained" until one is named).  The true values come from the book's formulas solved exactly
 (:func:`construct.constructions.two_cranks.excess_exact` is the exact
 piston law); the note adds what the construction gives (the extreme angles
 through Kochański's π) so the reader sees both errors side by side.
 
 A remark the numbers cannot carry: the seed writes the piston path as
 r(1 − cos α) ∓ r² sin² α/2l, upper sign on the forward stroke, i.e. measured
-from the crank-end dead centre; this library's α = 0 is the head-end dead
-centre (piston path r(1 − cos α) + …).  The excess work from one is the other
-shifted by half a turn; the first-quadrant cancellation of the r/2l terms
-holds in both (exactly to first order; the exact law leaves −(r/l)³ sin² 2α/16).
+from the crank-end dead centre B1; the two-cranks construction starts there
+by default (``dead_centre="crank-end"``), while the other books and the
+option ``dead_centre="head-end"`` count from the head-end dead centre (piston
+path r(1 − cos α) + …).  The excess work from one is the other shifted by
+half a turn; the first-quadrant cancellation of the r/2l terms holds in both
+(exactly to first order; the exact law leaves −(r/l)³ sin² 2α/16).
 
 >>> rows = {e.row: e for e in entries()}
 >>> e = rows["α₁ (kleinste Geschwindigkeit)"]

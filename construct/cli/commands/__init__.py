@@ -16,6 +16,7 @@ _NAMES = [
     "bench",
     # one line per subcommand module, in the order `construct --help` lists them
     "errata",
+    "flywheel",
     "diff",
     "gallery",
     "verify",

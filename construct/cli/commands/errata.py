@@ -1,7 +1,9 @@
 """``construct errata``: every printed number of the seeds' tables and worked examples beside its true value.
 
 Text output is an aligned table, one line per printed number or formula, and
-a summary of the counts per class; ``--format json`` prints the list of
+a summary of the counts per class (``agrees``, ``slip``, and for what is wrong
+the cause: ``typesetting``, ``arithmetic``, ``follows``, ``drawing``,
+``unexplained``; ``--classes`` prints what each means); ``--format json`` prints the list of
 records (``true`` to 8 significant digits, ``units`` to 2 decimals);
 ``--class`` keeps one class only.
 
@@ -10,7 +12,7 @@ records (``true`` to 8 significant digits, ``units`` to 2 decimals);
 table ...
 Tabelle 1 ... 0° ... 0.1666 ... slip ... truncated instead of rounded
 ...
-21 printed numbers: 0 agrees, 21 slip, 0 misprint; 0 formula misprints
+21 printed numbers: 0 agrees, 21 slip, 0 typesetting, 0 arithmetic, 0 follows, 0 drawing, 0 unexplained; 0 wrong formulas
 0
 """
 
@@ -20,12 +22,12 @@ import argparse
 import json
 from collections import Counter
 
-from ...books.errata import CLASSES, Erratum, errata_of
+from ...books.errata import CLASS_MEANINGS, CLASSES, Erratum, errata_of
 from ..common import add_format_option
 
 NAME = "errata"
 HELP = ("List every printed number of the seeds' tables and worked examples with its true value and a verdict "
-        "(agrees/slip/misprint).")
+        "(agrees, slip, or the cause: typesetting, arithmetic, follows, drawing, unexplained).")
 
 _HEADINGS = ("table", "row", "column", "printed", "true", "units", "class", "note")
 
@@ -37,9 +39,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--seed", default=None, metavar="NNN",
                         help="show only one seed's entries (000, 001, 002, 004; default: all)")
+    parser.add_argument("--classes", action="store_true", help="print what each class means and stop")
 
 
 def run(args: argparse.Namespace) -> int:
+    if args.classes:
+        width = max(map(len, CLASS_MEANINGS))
+        print("\n".join(f"{name.ljust(width)}  {text}" for name, text in CLASS_MEANINGS.items()))
+        return 0
     entries = [e for e in errata_of("all" if args.seed is None else args.seed) if args.class_ is None or e.class_ == args.class_]
     if args.format == "json":
         print(json.dumps([_json_record(e) for e in entries], ensure_ascii=True, indent=1))
@@ -77,9 +84,9 @@ def _text_table(entries: list[Erratum]) -> str:
         # Whole formulas would stretch every column of the table: one block each instead.
         if lines:
             lines.append("")
-        lines.append("formula misprints")
+        lines.append("wrong formulas")
         for e in formulas:
-            lines += [f"  {e.row} ({e.column})", f"    printed: {e.printed}", f"    true:    {e.true}", f"    note:    {e.note}"]
+            lines += [f"  {e.row} ({e.column}): {e.class_}", f"    printed: {e.printed}", f"    true:    {e.true}", f"    note:    {e.note}"]
     lines.append(_summary(entries))
     return "\n".join(lines)
 
@@ -93,4 +100,4 @@ def _summary(entries: list[Erratum]) -> str:
     numbers = Counter(e.class_ for e in entries if e.table != "formula")
     formulas = sum(1 for e in entries if e.table == "formula")
     counts = ", ".join(f"{numbers[c]} {c}" for c in CLASSES)
-    return f"{sum(numbers.values())} printed numbers: {counts}; {formulas} formula misprints"
+    return f"{sum(numbers.values())} printed numbers: {counts}; {formulas} wrong formulas"

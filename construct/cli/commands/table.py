@@ -36,6 +36,9 @@ def add_arguments(p) -> None:
     p.add_argument("--kz", type=_number, action="append", metavar="kz", help="allowed stress kz in kg/cm² (flywheel; repeat)")
     p.add_argument("--v", type=_number, action="append", metavar="v", help="rim speed v in m/s (flywheel; repeat)")
     p.add_argument("--infinite-rod", action="store_true", help="an infinitely long rod (speed-fluctuation)")
+    p.add_argument("--dead-centre", choices=("crank-end", "head-end"), default="crank-end",
+                   help="speed-fluctuation: the first crank starts at § 146's B1, the crank-end dead centre "
+                        "(default), or at the head-end one")
     add_format_option(p, ("text", "csv", "json"))
     p.add_argument("--plot", metavar="FILE",
                    help="also plot the table as the book draws it into FILE (.png, .pdf or .svg by its suffix)")
@@ -91,7 +94,8 @@ def run(args) -> int:
         if args.infinite_rod and args.rod_ratio:
             raise InvalidParameter("give either --rod-ratio L/r or --infinite-rod, not both")
         _check_step(args.step, 90)
-        cols, rows = TABLES[args.table](rod_ratio=None if args.infinite_rod else _one_ratio(args), step=args.step)
+        cols, rows = TABLES[args.table](rod_ratio=None if args.infinite_rod else _one_ratio(args), step=args.step,
+                                        dead_centre=args.dead_centre)
     else:
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args))
     if args.plot is not None:

@@ -322,3 +322,10 @@ def _characteristic(b: Builder, c: _Ctx, n: int) -> None:
                      en="curve through the seven characteristic points along the three tangents")
         b.record("curve", "parabola_envelope", (E, D, F), ("parabola",), {},
                  "Parabel als Einhüllende auf q1–D–q2", "parabola enveloped by q1–D–q2", role="construction")
+
+
+#: Public names for the constructions that take the inertia ordinates over (four-stroke): the proportional
+#: angle for r/L and F/f, the ordinate (F/f)(cos w + r/L cos 2w) of a crank point, and its kind.
+inertia_scale = _setup
+inertia_value = _value
+value_kind = _kind

@@ -1,0 +1,136 @@
+"""``construct flywheel``: from the excess work of the tangential-pressure diagram to the flywheel's weight.
+
+Baumann's procedure (seed 004): the excess work E the flywheel takes up while
+the crank runs ahead gives the rim weight G_s from E = (G_s/g)·v²·δ (g = 9.81),
+v = π D n/60 the rim's mean speed and δ the degree of irregularity; his
+coefficients add arms and hub (total G_s(1 + 0.06 v²/kz); the wheel's own
+rim G_total/(1 + 0.08075 v²/kz), the rest arms and hub) and the moment is
+G_s·D².  The excess work comes
+
+* directly, ``--excess-work E`` (kg·m), or
+* from a diagram: ``--diagram tangential-pressure`` builds that construction
+  (its givens by ``--given NAME=VALUE``, e.g. ``--given kappa=2``) and measures its
+  excess area (at of piston area × radian), times ``--piston-area`` (cm²) and
+  ``--crank-radius`` (m);
+
+or ``--rim-weight G_s`` skips it (Baumann's worked examples start there).
+
+>>> from construct.cli import main
+>>> main(["flywheel", "--rim-weight", "2130", "--diameter", "3.2", "--rpm", "120", "--format", "json"])
+... # doctest: +ELLIPSIS
+{
+ "excess_work": null,
+ "rim_weight": 2130.0,
+ "arms_hub_weight": 648.0...,
+ "total_weight": 2643.9...,
+ "moment": 21811.2,
+...
+0
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+
+from ...books.baumann.flywheel import design, parse_fraction
+from ...kernel.errors import InvalidParameter
+from ..common import add_format_option, _is_number, _number
+
+NAME = "flywheel"
+HELP = ("size a flywheel by Baumann (seed 004): excess work -> rim weight G_s (E = G_s v² δ/g), arms and hub, "
+        "total weight and moment G·D²")
+
+KEYS = ("excess_work", "rim_weight", "arms_hub_weight", "total_weight", "moment")
+_MORE = ("rim_of_wheel", "rim_speed", "diameter", "rpm", "kz", "kz_rule", "fluctuation", "total_quotient")
+DIAGRAMS = ("tangential-pressure",)
+
+
+def _fraction(text: str) -> float:
+    try:
+        return parse_fraction(text)
+    except InvalidParameter as e:
+        raise argparse.ArgumentTypeError(str(e)) from None
+
+
+def add_arguments(p) -> None:
+    p.add_argument("--excess-work", type=_number, metavar="E", help="excess work in kg·m")
+    p.add_argument("--rim-weight", type=_number, metavar="GS", help="the rim weight G_s itself, kg (instead of E)")
+    p.add_argument("--diagram", choices=DIAGRAMS, help="measure E on this construction's excess area")
+    p.add_argument("--given", action="append", default=[], metavar="NAME=VALUE",
+                   help="a given of the --diagram construction (repeatable), e.g. --given kappa=2")
+    p.add_argument("--piston-area", type=_number, metavar="CM2", help="piston area F in cm² (with --diagram)")
+    p.add_argument("--crank-radius", type=_number, metavar="M", help="crank radius in m (with --diagram)")
+    p.add_argument("--rpm", type=_number, required=True, metavar="N", help="revolutions per minute")
+    p.add_argument("--fluctuation", type=_fraction, metavar="DELTA",
+                   help="degree of irregularity δ = (v_max − v_min)/v_mean, e.g. 1/80 (Ungleichförmigkeitsgrad)")
+    p.add_argument("--diameter", type=_number, metavar="D", help="mean diameter of the rim in m")
+    p.add_argument("--v", type=_number, metavar="M_S", help="rim speed in m/s (instead of --diameter)")
+    p.add_argument("--kz", type=_number, metavar="KG_CM2",
+                   help="allowed tensile stress of the cast iron, kg/cm² (default 5 v, Baumann's pairing)")
+    add_format_option(p)
+
+
+def _diagram_work(args) -> tuple[float, str]:
+    from ...books.baumann.flywheel import moment_from_excess  # noqa: F401  (same units as below)
+    from ...constructions import get
+    from ...constructions.domain import LENGTH_M, PISTON_AREA
+    from ...constructions.tangential import excess_area
+
+    missing = [o for o, v in (("--piston-area", args.piston_area), ("--crank-radius", args.crank_radius)) if v is None]
+    if missing:
+        raise InvalidParameter(f"--diagram needs {' and '.join(missing)} to turn the excess area into work")
+    if args.excess_work is not None or args.rim_weight is not None:
+        raise InvalidParameter("give --diagram, --excess-work or --rim-weight, one of them")
+    area = PISTON_AREA.check("piston area F (cm²)", args.piston_area)
+    radius = LENGTH_M.check("crank radius (m)", args.crank_radius)
+    givens = {}
+    for item in args.given:
+        name, sep, value = item.partition("=")
+        if not sep or not name or not _is_number(value) or not math.isfinite(_number(value)):
+            raise InvalidParameter(f"--given takes NAME=VALUE with a finite number, got {item!r}")
+        givens[name] = _number(value)
+    c = get(args.diagram)
+    givens.setdefault("force", "baumann")
+    if givens["force"] != "baumann":
+        raise InvalidParameter("the flywheel needs the pressure diagram (force=baumann), not the unit force")
+    fig = c.figure(**givens)
+    excess = excess_area(fig)
+    return excess * area * radius, (f"excess area {excess:.6g} at·rad measured on the {args.diagram} construction "
+                                    f"× F = {area:g} cm² × r = {radius:g} m")
+
+
+def run(args) -> int:
+    source = None
+    work = args.excess_work
+    if args.diagram is not None:
+        work, source = _diagram_work(args)
+    elif args.given or args.piston_area is not None or args.crank_radius is not None:
+        raise InvalidParameter("--given, --piston-area and --crank-radius belong to --diagram")
+    for opt in ("rpm", "diameter", "v", "kz", "excess_work", "rim_weight"):
+        value = getattr(args, opt)
+        if value is not None and not math.isfinite(value):
+            raise InvalidParameter(f"--{opt.replace('_', '-')} must be finite, got {value!r}")
+    d = design(rpm=args.rpm, diameter=args.diameter, v=args.v, kz=args.kz, excess_work=work,
+               fluctuation=args.fluctuation, rim_weight=args.rim_weight)
+    if args.format == "json":
+        record = {k: d[k] for k in KEYS + _MORE}
+        record["excess_source"] = source or ("given" if work is not None else None)
+        print(json.dumps(record, ensure_ascii=False, indent=1))
+        return 0
+    lines = []
+    if work is not None:
+        lines.append(f"excess work E          {d['excess_work']:12.1f} kg·m" + (f"   ({source})" if source else ""))
+        lines.append(f"irregularity δ         {d['fluctuation']:12.6g}       (1/{1 / d['fluctuation']:.4g})")
+    lines += [
+        f"rim speed v            {d['rim_speed']:12.2f} m/s   (D = {d['diameter']:.3f} m, n = {d['rpm']:g}/min)",
+        f"kz                     {d['kz']:12.1f} kg/cm²  ({d['kz_rule']})",
+        f"rim weight G_s         {d['rim_weight']:12.0f} kg" + ("     (E = (G_s/g) v² δ, g = 9.81)" if work else ""),
+        f"total weight           {d['total_weight']:12.0f} kg     (G_s (1 + 0.06 v²/kz))",
+        f"  rim of the wheel G1  {d['rim_of_wheel']:12.0f} kg     (G_total / (1 + 0.08075 v²/kz))",
+        f"  arms and hub         {d['arms_hub_weight']:12.0f} kg     (G_total − G1)",
+        f"moment G_s·D²          {d['moment']:12.0f} kg·m²",
+    ]
+    print("\n".join(lines))
+    return 0

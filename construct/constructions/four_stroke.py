@@ -1,0 +1,585 @@
+"""Four-stroke engines: pressure over two revolutions and the piston over-pressure (seed 001 c, Abb. 1056–1058).
+
+Seed 001 describes the explosion engine ("Viertakt-Verpuffungsmaschine",
+Abb. 1056): suction c–b under a slight vacuum, compression b–c, ignition in c
+"unter rascher Steigerung des Druckes" -- idealised at constant volume --,
+expansion c–d–e, release in e, exhaust f–g; "der höchste Druck ... pflegt bei
+25 at zu liegen".  The compression-ignition engine (Diesel, Abb. 1057) burns at
+constant pressure instead.  Abb. 1058 shows the piston over-pressure a–a
+without and b–b with the mass forces.
+
+The idealised cycle (absolute pressures in at, volumes in strokes):
+
+* suction at ``suction`` p_a, exhaust at ``exhaust`` p_g (horizontal lines);
+* compression p V^n = p_a (1 + V_c)^n from the crank-end dead centre to the
+  clearance V_c = 1/(ε − 1) (ε the ``compression_ratio``);
+* explosion: ignition at constant volume to ``max_pressure``, expansion
+  p V^n = const to the crank end; Diesel: combustion at constant pressure
+  (the compression-end pressure p_a ε^n) to the ``cutoff`` volume ρ·V_c, then
+  expansion;
+* release at the crank end at constant volume down to the exhaust line.
+
+**The polytropes by Brauer's construction** (E. Brauer, 1885; the period
+graphical method for p V^n = const): two rays from the origin O of the
+p–V diagram, OM below the volume axis at α and ON to the left of the pressure
+axis at β, with 1 + tg β = (1 + tg α)^n.  From a point (V, p) of the curve
+the next is (V(1 + tg α), p/(1 + tg β)): the vertical through V meets OM, the
+45° line from there meets the volume axis at V(1 + tg α); the 45° line from
+p on the pressure axis meets ON at the height p/(1 + tg β).  Inward (the
+compression) the steps run backwards.  Every point so found lies on
+p V^n = const exactly -- the rays are the method's givens: tg α = R^(1/m) − 1
+(m steps across the volume ratio R, so that the last point lands on the
+dead-centre ordinate) and tg β = R^(n/m) − 1, numbers a draftsman took from
+a table of powers or the slide rule; they are laid off as lengths (tg α·r
+under r), and every step after them is straightedge, compass and a 45° line
+drawn as a parallel.  The curve is drawn through the points with the French
+curve (its straying from the polytrope is checked against the same curve
+through the exact points).
+
+**Over 720°**: the crank circle is divided, the piston positions come from
+the rod arcs; each position's ordinate in the p–V diagram meets the branch of
+its stroke (suction, compression, expansion, exhaust), and the compass
+carries the height to the ordinate of that crank angle in the 720° diagram
+(abscissae: a length 8r divided into 4N equal parts).  Measured from its
+atmospheric line (1 at) the curve is the piston over-pressure a–a of a
+single-acting engine (open crank side).  b–b takes off the mass force per unit
+of piston area, q (cos θ + (r/L) cos 2θ), q = m ω² r/F in at (``pressure_ratio``),
+constructed as the inertia ordinates of seed 000 (the proportional angle for
+r/L and q).
+
+>>> fig = FOUR_STROKE.figure(parts=4, steps=4)
+>>> g = fig.replay.givens
+>>> round(pressure(fig, "cP4"), 10) == round(g["suction"] * g["compression_ratio"] ** g["exponent"], 10)
+True
+>>> round(volume(fig, "cP4"), 12) == round(g["clearance"], 12)     # the last Brauer point lands on V_c
+True
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping
+
+from .checking import EUCLIDEAN_TOLERANCE, Check
+from ..kernel.errors import InvalidParameter
+from ..kernel.division import check_parts, divide_semicircle
+from ..kernel.instruments import Builder
+from ..kernel.protocol import Caption
+from . import Construction, Figure, bounded, register, rod_ratio_param
+from .crank import build_frame, rod_arcs
+from .domain import (COMPRESSION_RATIO, CUTOFF_RATIO, DRAWN_LENGTH, ENGINE_PRESSURE, EXHAUST_PRESSURE,
+                     POLYTROPE_EXPONENT, PRESSURE_RATIO, SUCTION_PRESSURE)
+from .indicator import square
+from .inertia.build import inertia_scale, inertia_value, value_kind
+
+__all__ = ["FOUR_STROKE", "ENGINES", "build_four_stroke", "four_stroke_checks", "model_pressure", "pressure",
+           "volume", "brauer_tangents", "STROKES"]
+
+ENGINES = ("explosion", "diesel")
+#: The four strokes in order, from the head-end dead centre (top dead centre) at 0°.
+STROKES = ("suction", "compression", "expansion", "exhaust")
+
+#: Where the two diagrams stand (units of r): the p-V diagram's zero line above the crank circle, the 720°
+#: diagram to the right.
+_PV_ZERO = 1.4
+_T0 = (2.6, -1.2)
+
+
+# --------------------------------------------------------------------------
+# The model (for the checks only).
+# --------------------------------------------------------------------------
+
+
+def brauer_tangents(ratio: float, exponent: float, steps: int) -> tuple[float, float]:
+    """tg α and tg β of Brauer's rays for *steps* steps across the volume ratio *ratio*.
+
+    >>> ta, tb = brauer_tangents(5.0, 1.3, 8)
+    >>> round((1 + ta) ** 8, 12), round((1 + tb) - (1 + ta) ** 1.3, 15)
+    (5.0, 0.0)
+    """
+    return ratio ** (1.0 / steps) - 1.0, ratio ** (exponent / steps) - 1.0
+
+
+def _piston(theta: float, rod_ratio: float) -> float:
+    """Piston path from the head-end dead centre, fraction of the stroke (exact law)."""
+    s = math.sin(theta)
+    return 0.5 * (1.0 - math.cos(theta) + rod_ratio - math.sqrt(rod_ratio * rod_ratio - s * s))
+
+
+def model_pressure(stroke: int, x: float, g: Mapping[str, float], engine: str) -> float:
+    """Absolute pressure (at) of the idealised cycle on *stroke* (0..3) at piston path x (fraction of the stroke).
+
+    >>> g = {"suction": 0.9, "exhaust": 1.1, "compression_ratio": 5.0, "clearance": 0.25, "exponent": 1.3,
+    ...      "max_pressure": 25.0, "cutoff": 2.0}
+    >>> round(model_pressure(1, 0.0, g, "explosion"), 6), round(model_pressure(2, 1.0, g, "explosion"), 6)
+    (7.292955, 3.085169)
+    """
+    vc, n = g["clearance"], g["exponent"]
+    v = vc + x
+    if stroke == 0:
+        return g["suction"]
+    if stroke == 3:
+        return g["exhaust"]
+    if stroke == 1:
+        return g["suction"] * ((1.0 + vc) / v) ** n
+    if engine == "explosion":
+        return g["max_pressure"] * (vc / v) ** n
+    pc = g["suction"] * g["compression_ratio"] ** n
+    vd = g["cutoff"] * vc
+    return pc if v <= vd else pc * (vd / v) ** n
+
+
+# --------------------------------------------------------------------------
+# Givens.
+# --------------------------------------------------------------------------
+
+
+def _givens(engine: str, r: Any, rod_ratio: Any, compression_ratio: Any, suction: Any, exhaust: Any,
+            max_pressure: Any, cutoff: Any, exponent: Any, pressure_unit: Any, pressure_ratio: Any,
+            steps: int) -> dict[str, float]:
+    if engine not in ENGINES:
+        raise InvalidParameter(f"engine must be one of {', '.join(ENGINES)}, got {engine!r}")
+    g = {"r": bounded("crank radius r", r, DRAWN_LENGTH), "rod_ratio": rod_ratio_param(rod_ratio),
+         "compression_ratio": bounded("compression ratio ε", compression_ratio, COMPRESSION_RATIO),
+         "suction": bounded("suction pressure p_a (at)", suction, SUCTION_PRESSURE),
+         "exhaust": bounded("exhaust pressure p_g (at)", exhaust, EXHAUST_PRESSURE),
+         "exponent": bounded("polytropic exponent n", exponent, POLYTROPE_EXPONENT),
+         "pressure_unit": bounded("pressure-scale unit (drawn length of 1 at)", pressure_unit, DRAWN_LENGTH),
+         "pressure_ratio": bounded("mass pressure q = m ω² r/F (at)", pressure_ratio, PRESSURE_RATIO)}
+    eps, n = g["compression_ratio"], g["exponent"]
+    g["clearance"] = 1.0 / (eps - 1.0)
+    pc = g["suction"] * eps ** n
+    g["tan_alpha"], g["tan_beta"] = brauer_tangents(eps, n, steps)
+    if engine == "explosion":
+        g["max_pressure"] = bounded("maximum pressure (at)", max_pressure, ENGINE_PRESSURE)
+        if g["max_pressure"] <= pc:
+            raise InvalidParameter(f"maximum pressure {g['max_pressure']:g} at must exceed the compression end "
+                                   f"p_a ε^n = {pc:.4g} at (ignition raises the pressure)")
+    else:
+        g["cutoff"] = bounded("cut-off ratio ρ = V_d/V_c", cutoff, CUTOFF_RATIO)
+        if g["cutoff"] >= eps / 1.05:
+            raise InvalidParameter(f"cut-off ratio ρ = {g['cutoff']:g} must stay below ε/1.05 = {eps / 1.05:.4g} "
+                                   "(combustion ends before the crank-end dead centre)")
+        ENGINE_PRESSURE.check("compression-end pressure p_a ε^n (at)", pc)
+        g["tan_alpha_e"], g["tan_beta_e"] = brauer_tangents(eps / g["cutoff"], n, steps)
+    return g
+
+
+def _validate(givens: Mapping[str, float]) -> None:
+    engine = "diesel" if "cutoff" in givens else "explosion"
+    bounded("crank radius r", givens["r"], DRAWN_LENGTH)
+    rod_ratio_param(givens["rod_ratio"])
+    COMPRESSION_RATIO.check("compression ratio ε", givens["compression_ratio"])
+    POLYTROPE_EXPONENT.check("polytropic exponent n", givens["exponent"])
+    if engine == "explosion":
+        ENGINE_PRESSURE.check("maximum pressure (at)", givens["max_pressure"])
+
+
+# --------------------------------------------------------------------------
+# The construction.
+# --------------------------------------------------------------------------
+
+
+def _ray(b: Builder, name: str, O: str, U: str, perp: str, length: str, rule: tuple, what: tuple[str, str]) -> str:
+    """A ray from O through the point *length* off U along *perp* (the perpendicular at U): tg = length/r."""
+    k = b.circle_radius(f"{name}.k", U, length, de=f"{what[0]} an r angetragen", en=f"{what[1]} laid off at r")
+    T = b.intersect(f"{name}.T", perp, k, rule=rule)
+    return b.line(name, O, T, de=f"Strahl {name} ({what[0]})", en=f"ray {name} ({what[1]})")
+
+
+def _brauer(b: Builder, tag: str, *, O: str, OM: str, ON: str, d45: tuple[str, str], vdir: tuple[str, str],
+            hdir: tuple[str, str], base: str, paxis: str, V0: str, v0: str, p0: str, h0: str, steps: int,
+            outward: bool, what: tuple[str, str]) -> list[str]:
+    """m steps of Brauer's construction from the curve point on the vertical *v0* (foot *V0*) and the
+    horizontal *h0* (its mark *p0* on the pressure axis); returns the curve points, first the start."""
+    first = b.intersect(f"{tag}0", v0, h0, rule=("only",), role="result", de=f"{what[0]}: Anfangspunkt",
+                        en=f"{what[1]}: starting point")
+    pts = [first]
+    V, v, p, h = V0, v0, p0, h0
+    for j in range(1, steps + 1):
+        with b.group(f"{what[1]}: Brauer step {j}", f"{what[0]}: Brauersche Konstruktion, Schritt {j}"):
+            if outward:
+                Q = b.intersect(f"{tag}q{j}", v, OM, rule=("only",), de="Senkrechte trifft den Strahl OM",
+                                en="the vertical meets the ray OM")
+                s = b.parallel_through(f"{tag}s{j}", Q, *d45)
+                V = b.intersect(f"{tag}V{j}", s, base, rule=("only",), de="45°-Linie: V(1 + tg α)",
+                                en="45 degree line: V(1 + tan alpha)")
+                v = b.parallel_through(f"{tag}v{j}", V, *vdir)
+                t = b.parallel_through(f"{tag}t{j}", p, *d45)
+                R = b.intersect(f"{tag}r{j}", t, ON, rule=("only",), de="45°-Linie trifft den Strahl ON",
+                                en="the 45 degree line meets the ray ON")
+                h = b.parallel_through(f"{tag}h{j}", R, *hdir)
+                p = b.intersect(f"{tag}p{j}", h, paxis, rule=("only",), de="p/(1 + tg β) auf der Druckachse",
+                                en="p/(1 + tan beta) on the pressure axis")
+            else:
+                s = b.parallel_through(f"{tag}s{j}", V, *d45)
+                Q = b.intersect(f"{tag}q{j}", s, OM, rule=("only",), de="45°-Linie trifft den Strahl OM",
+                                en="the 45 degree line meets the ray OM")
+                v = b.parallel_through(f"{tag}v{j}", Q, *vdir)
+                V = b.intersect(f"{tag}V{j}", v, base, rule=("only",), de="V/(1 + tg α) auf der Volumenachse",
+                                en="V/(1 + tan alpha) on the volume axis")
+                R = b.intersect(f"{tag}r{j}", h, ON, rule=("only",), de="Waagerechte trifft den Strahl ON",
+                                en="the horizontal meets the ray ON")
+                t = b.parallel_through(f"{tag}t{j}", R, *d45)
+                p = b.intersect(f"{tag}p{j}", t, paxis, rule=("only",), de="p(1 + tg β) auf der Druckachse",
+                                en="p(1 + tan beta) on the pressure axis")
+                h = b.parallel_through(f"{tag}h{j}", p, *hdir)
+            pts.append(b.intersect(f"{tag}{j}", v, h, rule=("only",), role="result",
+                                   de=f"{what[0]}: Punkt {j}", en=f"{what[1]}: point {j}"))
+    return pts
+
+
+def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str, r: float, compression_ratio: float,
+                      suction: float, exhaust: float, max_pressure: float, cutoff: float, exponent: float,
+                      pressure_unit: float, pressure_ratio: float, steps: int) -> Figure:
+    if isinstance(steps, bool) or not isinstance(steps, int) or not 2 <= steps <= 40:
+        raise InvalidParameter(f"Brauer steps per polytrope must be a whole number from 2 to 40, got {steps!r}")
+    givens = _givens(engine, r, rod_ratio, compression_ratio, suction, exhaust, max_pressure, cutoff, exponent,
+                     pressure_unit, pressure_ratio, steps)
+    used = check_parts(parts, method)
+    n = parts
+    # Which ordinates of the expansion stroke lie on the constant-pressure line is decided here: the cut-off is
+    # structural for the Diesel engine.
+    b = Builder("four-stroke", givens, {"engine": engine, "parts": n, "method": used, "requested_method": method,
+                                        "steps": steps, "plate": PLATE,
+                                        **({"cutoff": givens["cutoff"]} if engine == "diesel" else {})})
+    f = build_frame(b)
+    upper = divide_semicircle(b, O=f["O"], D0=f["D0"], D1=f["D1"], circle=f["circle"], axis=f["axis"], n=n,
+                              method=used)
+    rod_arcs(b, f, upper)
+    unit = "pressure_unit"
+    with b.group("p-V diagram: zero line, clearance, pressure axis", "p-V-Diagramm: Nulllinie, Verdichtungsraum, Druckachse"):
+        Z = b.given_point("Z", -1.0, _PV_ZERO, unit="r", de="Nulllinie des Diagramms (absolutes Vakuum)",
+                          en="zero line of the diagram (absolute vacuum)", label="")
+        base = b.given_line("pvbase", Z, angle_deg=0.0, de="Nulllinie (Volumenachse)", en="zero line (volume axis)",
+                            role="result")
+        ords, feet = [], []
+        for k in range(n + 1):
+            o = b.erect_perpendicular(f"o{k}", f"X{k}", f["axis"], f["O"] if k not in (0, n) else
+                                      (f["D1"] if k == 0 else f["D0"]))
+            ords.append(o)
+            feet.append(b.intersect(f"F{k}", o, base, rule=("only",), de=f"Kolbenstellung {k} auf der Volumenachse",
+                                    en=f"piston position {k} on the volume axis"))
+        vc = b.given_length("Vc", product=("clearance", "r"), factor=2.0, de="Verdichtungsraum V_c = s/(ε − 1)",
+                            en="clearance volume V_c = s/(epsilon - 1)")
+        k = b.circle_radius("O'.k", feet[0], vc, de="V_c vor dem Deckeltotpunkt", en="V_c beyond the head-end dead centre")
+        Ov = b.intersect("Ov", base, k, rule=("farther", feet[n]), role="result", labels={"Ov": "O′"},
+                         de="Ursprung O des p-V-Diagramms", en="origin O of the p-V diagram")
+        paxis = b.erect_perpendicular("paxis", Ov, base, feet[0])
+        ku = b.circle_radius("U.k", Ov, f["r"], de="r auf der Volumenachse", en="r on the volume axis")
+        U = b.intersect("U", base, ku, rule=("toward", Ov, feet[0]))
+        vert_u = b.erect_perpendicular("u.v", U, base, Ov)
+        kw = b.circle_radius("W.k", U, f["r"], de="r über U", en="r above U")
+        W = b.intersect("W", vert_u, kw, rule=("toward", U, None, 0.0, 1.0))
+        b.line("d45", Ov, W, de="45°-Linie (Dreieck)", en="45 degree line (set square)")
+        kp = b.circle_radius("U'.k", Ov, f["r"], de="r auf der Druckachse", en="r on the pressure axis")
+        Up = b.intersect("U'", paxis, kp, rule=("toward", Ov, None, 0.0, 1.0))
+        hor_u = b.erect_perpendicular("u.h", Up, paxis, Ov)
+    d45, vdir, hdir = (Ov, W), (Ov, Up), (Ov, U)
+
+    def rays(tag: str, ta: str, tb: str) -> tuple[str, str]:
+        with b.group(f"Brauer's rays{tag and ' for the expansion'}", f"Brauersche Strahlen{tag and ' der Expansion'}"):
+            la = b.given_length(f"ta{tag}", product=(ta, "r"), de="tg α·r", en="tan alpha r")
+            lb = b.given_length(f"tb{tag}", product=(tb, "r"), de="tg β·r", en="tan beta r")
+            OM = _ray(b, f"OM{tag}", Ov, U, vert_u, la, ("toward", U, None, 0.0, -1.0), ("tg α", "tan alpha"))
+            ON = _ray(b, f"ON{tag}", Ov, Up, hor_u, lb, ("toward", Up, None, -1.0, 0.0), ("tg β", "tan beta"))
+        return OM, ON
+
+    OM, ON = rays("", "tan_alpha", "tan_beta")
+
+    def level(name: str, given: str, what: tuple[str, str]) -> tuple[str, str]:
+        ln = b.given_length(f"{name}.l", product=(given, unit), de=f"{what[0]} im Druckmaßstab",
+                            en=f"{what[1]} in the pressure scale")
+        kk = b.circle_radius(f"{name}.k", Ov, ln, de=f"{what[0]} auf der Druckachse", en=f"{what[1]} on the pressure axis")
+        mark = b.intersect(f"{name}.p", paxis, kk, rule=("toward", Ov, None, 0.0, 1.0))
+        return mark, b.erect_perpendicular(name, mark, paxis, Ov)
+
+    with b.group("suction, exhaust and atmospheric lines", "Saug-, Auspuff- und atmosphärische Linie"):
+        b.given_length("one", product=(unit,), de="1 at im Druckmaßstab", en="1 at in the pressure scale")
+        ka = b.circle_radius("atm.k", Ov, "one", de="1 at auf der Druckachse", en="1 at on the pressure axis")
+        atm_p = b.intersect("atm.p", paxis, ka, rule=("toward", Ov, None, 0.0, 1.0))
+        b.erect_perpendicular("atm", atm_p, paxis, Ov)
+        pa, suction_line = level("suct", "suction", ("Saugdruck p_a", "suction pressure p_a"))
+        pg, exhaust_line = level("exh", "exhaust", ("Auspuffdruck p_g", "exhaust pressure p_g"))
+    comp = _brauer(b, "cP", O=Ov, OM=OM, ON=ON, d45=d45, vdir=vdir, hdir=hdir, base=base, paxis=paxis, V0=feet[n],
+                   v0=ords[n], p0=pa, h0=suction_line, steps=steps, outward=False,
+                   what=("Verdichtungslinie", "compression line"))
+    c = comp[-1]
+    b.set_label(c, "c")
+    b.set_label(comp[0], "b")
+    if engine == "explosion":
+        with b.group("ignition at constant volume: the maximum pressure", "Zündung bei gleichem Volumen: Höchstdruck"):
+            pd, hd = level("pmax", "max_pressure", ("Höchstdruck", "maximum pressure"))
+        exp_ = _brauer(b, "eP", O=Ov, OM=OM, ON=ON, d45=d45, vdir=vdir, hdir=hdir, base=base, paxis=paxis,
+                       V0=feet[0], v0=ords[0], p0=pd, h0=hd, steps=steps, outward=True,
+                       what=("Expansionslinie", "expansion line"))
+        b.polyline("ignition", [c, exp_[0]], de="Verpuffung c–d bei gleichem Volumen", en="explosion c-d at constant volume")
+        comb_line = None
+    else:
+        OMe, ONe = rays("e", "tan_alpha_e", "tan_beta_e")
+        with b.group("combustion at constant pressure to the cut-off", "Verbrennung bei gleichem Druck bis zur Füllung"):
+            comb_line = f"cPh{steps}"   # the horizontal through c
+            lv = b.given_length("Vd", product=("cutoff", "clearance", "r"), factor=2.0, de="ρ·V_c", en="rho V_c")
+            kd = b.circle_radius("Vd.k", Ov, lv, de="ρ·V_c auf der Volumenachse", en="rho V_c on the volume axis")
+            Vd = b.intersect("Vd.V", base, kd, rule=("toward", Ov, feet[0]))
+            vd = b.parallel_through("vd", Vd, *vdir)
+            pc_mark = f"cPp{steps}"
+        exp_ = _brauer(b, "eP", O=Ov, OM=OMe, ON=ONe, d45=d45, vdir=vdir, hdir=hdir, base=base, paxis=paxis,
+                       V0=Vd, v0=vd, p0=pc_mark, h0=comb_line, steps=steps, outward=True,
+                       what=("Expansionslinie", "expansion line"))
+        b.polyline("ignition", [c, exp_[0]], de="Verbrennung c–d bei gleichem Druck", en="combustion c-d at constant pressure")
+    b.set_label(exp_[0], "d")
+    b.set_label(exp_[-1], "e")
+    with b.group("the curves and the closed diagram", "Die Linien und das geschlossene Diagramm"):
+        b.french_curve("compression", base, comp, de="Verdichtungslinie (Kurvenlineal)", en="compression line (French curve)")
+        b.french_curve("expansion", base, exp_, de="Expansionslinie (Kurvenlineal)", en="expansion line (French curve)")
+        a = b.intersect("a", ords[0], suction_line, rule=("only",), labels={"a": "a"}, de="Saugbeginn a", en="start of suction a")
+        fpt = b.intersect("f", ords[n], exhaust_line, rule=("only",), labels={"f": "f"}, de="Auspuffbeginn f",
+                          en="start of exhaust f")
+        gpt = b.intersect("g", ords[0], exhaust_line, rule=("only",), labels={"g": "g"}, de="Auspuffende g",
+                          en="end of exhaust g")
+        b.polyline("suction", [a, comp[0]], de="Sauglinie a–b", en="suction line a-b")
+        b.polyline("release", [exp_[-1], fpt], de="Auslass e–f", en="release e-f")
+        b.polyline("exhaust", [fpt, gpt], de="Auspufflinie f–g", en="exhaust line f-g")
+    # -- readings at the piston positions, stroke by stroke
+    readings: dict[tuple[int, int], str] = {}
+    on_line_count = 0   # Diesel: how many ordinates of the expansion stroke stand on the constant-pressure line
+    xs = [0.0] + [None] * (n - 1) + [1.0]  # where the piston stands, read off the figure when it matters
+    with b.group("pressures at the piston positions", "Drücke in den Kolbenstellungen"):
+        for k in range(n + 1):
+            readings[0, k] = a if k == 0 else comp[0] if k == n else b.intersect(
+                f"S{k}", ords[k], suction_line, rule=("only",), de=f"Saughub bei {k}", en=f"suction stroke at {k}")
+            readings[3, k] = gpt if k == 0 else fpt if k == n else b.intersect(
+                f"G{k}", ords[k], exhaust_line, rule=("only",), de=f"Auspuffhub bei {k}", en=f"exhaust stroke at {k}")
+            readings[1, k] = c if k == 0 else comp[0] if k == n else b.intersect(
+                f"K{k}", ords[k], "compression", rule=("only",), de=f"Verdichtungslinie bei {k}",
+                en=f"compression line at {k}")
+            if k == 0:
+                readings[2, k] = exp_[0] if engine == "explosion" else c
+                on_line_count += engine == "diesel"
+            elif k == n:
+                readings[2, k] = exp_[-1]
+            else:
+                x = (b[f"X{k}"][0] - b[f["D0"]][0]) / (2.0 * givens["r"])
+                xs[k] = x
+                on_line = engine == "diesel" and givens["clearance"] + x <= givens["cutoff"] * givens["clearance"]
+                on_line_count += on_line
+                readings[2, k] = b.intersect(f"P{k}x", ords[k], comb_line if on_line else "expansion", rule=("only",),
+                                             de=f"{'Verbrennungs' if on_line else 'Expansions'}linie bei {k}",
+                                             en=f"{'combustion' if on_line else 'expansion'} line at {k}")
+    # -- the 720° diagram
+    with b.group("720 degree diagram: base, divisions, atmospheric line",
+                 "Diagramm über 720°: Grundlinie, Teilung, atmosphärische Linie"):
+        T0 = b.given_point("T0", _T0[0], _T0[1], unit="r", de="Anfang der 720°-Grundlinie (Nulllinie)",
+                           en="start of the 720 degree base (zero line)", label="0°")
+        tbase = b.given_line("tbase", T0, angle_deg=0.0, de="Nulllinie über zwei Umdrehungen",
+                             en="zero line over two revolutions", role="result")
+        span = b.given_length("span", product=("r",), factor=8.0, de="720° als 8 r", en="720 degrees as 8 r")
+        ks = b.circle_radius("T1.k", T0, span, de="8 r abgetragen", en="8 r laid off")
+        T1 = b.intersect("T1", tbase, ks, rule=("toward", T0, None, 1.0, 0.0), labels={"T1": "720°"})
+        # 180° per stroke: the span halved twice, each stroke divided into N parts (a short auxiliary ray each)
+        half = b.midpoint("T.h", T0, T1, through=tbase)
+        quarters = [T0, b.midpoint("T.q1", T0, half, through=tbase), half, b.midpoint("T.q3", half, T1, through=tbase), T1]
+        marks = [T0]
+        for q in range(4):
+            marks += (b.divide_segment(f"t{q}", quarters[q], quarters[q + 1], n, line=tbase) if n > 1 else [])
+            marks.append(quarters[q + 1])
+        opening = b.given_length("open", product=("r",), factor=0.1, de="Zirkelöffnung für die Senkrechten (r/10)",
+                                 en="compass opening for the perpendiculars (r/10)")
+        tords = [square(b, f"to{t}", m, tbase, opening) for t, m in enumerate(marks)]
+        ka = b.circle_radius("tatm.k", T0, "one", de="1 at", en="1 at")
+        tatm_p = b.intersect("tatm.p", tords[0], ka, rule=("toward", T0, None, 0.0, 1.0))
+        b.erect_perpendicular("tatm", tatm_p, tords[0], T0)
+    ctx = inertia_scale(b, f)
+    values = {}
+    with b.group("mass pressures q(cos θ + r/L cos 2θ) at the crank points",
+                 "Massendrücke q(cos θ + r/L cos 2θ) in den Kurbelpunkten"):
+        for k in range(n + 1):
+            dc_p = ctx.D0 if 2 * k <= n else ctx.D1
+            dc_2 = ctx.D0 if (4 * k < n or 4 * k > 3 * n) else ctx.D1
+            values[k] = inertia_value(b, ctx, f"m{k}", upper[k], value_kind(k, n), dc_p, dc_2)
+    aa: dict[int, list[str]] = {}
+    bb: dict[int, list[str]] = {}
+    for s in range(4):
+        aa[s], bb[s] = [], []
+        with b.group(f"{STROKES[s]} stroke carried over ({180 * s}..{180 * (s + 1)} degrees)",
+                     f"{('Saug', 'Verdichtungs', 'Arbeits', 'Auspuff')[s]}hub übertragen ({180 * s}..{180 * (s + 1)}°)"):
+            for i in range(n + 1):
+                t = s * n + i
+                k = i if s % 2 == 0 else n - i
+                src = readings[s, k]
+                kk = b.circle_segment(f"A{s}.{i}.k", marks[t], feet[k], src, de="Druckhöhe mit dem Zirkel übertragen",
+                                      en="pressure height carried with the compass")
+                A = b.intersect(f"A{s}.{i}", tords[t], kk, rule=("toward", marks[t], None, 0.0, 1.0), role="result",
+                                de=f"a–a bei {t}/{4 * n} von 720°", en=f"a-a at {t}/{4 * n} of 720 degrees")
+                aa[s].append(A)
+                km = b.circle_segment(f"B{s}.{i}.k", A, ctx.gf.origin, values[k],
+                                      de="Massendruck abgezogen", en="mass pressure taken off")
+                bb[s].append(b.intersect(f"B{s}.{i}", tords[t], km, rule=("left", ctx.gf.origin, values[k]),
+                                         role="result", de=f"b–b bei {t}/{4 * n} von 720°",
+                                         en=f"b-b at {t}/{4 * n} of 720 degrees"))
+    with b.group("over-pressure lines a-a and b-b", "Überdrucklinien a–a und b–b"):
+        for s in range(4):
+            for name, pts in ((f"aa{s}", aa[s]), (f"bb{s}", bb[s])):
+                line = "a–a" if name.startswith("aa") else "b–b"
+                cut = on_line_count if s == 2 else 0
+                if cut:
+                    # Diesel: the constant-pressure part with the straightedge, then a chord across the cut-off
+                    # (a corner no French curve follows), then the curve along the expansion.
+                    b.polyline(f"{name}.line", pts[:cut], de=f"{line}, Verbrennung bei gleichem Druck",
+                               en=f"{line}, combustion at constant pressure")
+                    b.polyline(f"{name}.cut", pts[cut - 1:cut + 1], de=f"{line}, über die Füllung hinweg",
+                               en=f"{line}, across the cut-off")
+                    pts = pts[cut:]
+                if len(pts) >= 2:
+                    b.french_curve(name, tbase, pts, de=f"{line}, {STROKES[s]}", en=f"{line}, {STROKES[s]} stroke")
+        for s in range(3):
+            b.polyline(f"aa.j{s}", [aa[s][-1], aa[s + 1][0]], de="Sprung im Totpunkt", en="jump at the dead centre")
+            b.polyline(f"bb.j{s}", [bb[s][-1], bb[s + 1][0]], de="Sprung im Totpunkt", en="jump at the dead centre")
+        b.set_label(aa[0][0], "a")
+        b.set_label(aa[3][-1], "a")
+        b.set_label(bb[0][0], "b")
+        b.set_label(bb[3][-1], "b")
+    proto = b.protocol()
+    return Figure(proto, proto.replay(givens))
+
+
+#: The plate (Abb. 1056–1058): the p-V diagram with Brauer's rays and points, the crank circle with the piston
+#: positions, the 720° diagram with a-a and b-b.
+PLATE = (r"pvbase", r"paxis", r"Ov", r"OMe?|ONe?", r"[ce]P\d+", r"compression|expansion", r"ignition|suction|release|exhaust",
+         r"atm|suct|exh|pmax", r"[abfg]", r"crank", r"D[01]", r"X\d+", r"tbase", r"tatm", r"T[01]", r"aa\d|bb\d",
+         r"aa\.j\d|bb\.j\d|aa2\.\w+|bb2\.\w+", r"A\d\.\d+|B\d\.\d+")
+
+
+# --------------------------------------------------------------------------
+# Measurements and checks.
+# --------------------------------------------------------------------------
+
+
+def volume(fig: Figure, point: str) -> float:
+    """V of a point of the p-V diagram in strokes, measured from its origin O along the zero line."""
+    rp = fig.replay
+    return (rp[point][0] - rp["Ov"][0]) / (2.0 * rp.givens["r"])
+
+
+def pressure(fig: Figure, point: str) -> float:
+    """Absolute pressure (at) of a point of the p-V diagram: its height over the zero line."""
+    rp = fig.replay
+    return (rp[point][1] - rp["Ov"][1]) / rp.givens["pressure_unit"]
+
+
+def _height(fig: Figure, point: str) -> float:
+    rp = fig.replay
+    return (rp[point][1] - rp["T0"][1]) / rp.givens["pressure_unit"]
+
+
+def _curve_tolerance(fig: Figure, points: list[tuple[float, float]], xs: list[float], fn) -> list[float]:
+    """The method on exact data: how far the French curve through the exact points strays at each x (at)."""
+    from ..kernel.geometry import SCALAR, Line, Point
+    from ..kernel.ops import OPS
+
+    pts = [Point(v, p) for v, p in points]
+    base = Line(Point(0.0, 0.0), Point(1.0, 0.0))
+    curve, = OPS["french_curve"].fn((base, *pts), {"points": len(pts), "tangent_at": ()}, {}, (), SCALAR)
+    return [abs(curve.y_at(x) - fn(x)) for x in xs]
+
+
+def four_stroke_checks(fig: Figure) -> list[Check]:
+    rp = fig.replay
+    g = rp.givens
+    engine, n, m = fig.params["engine"], fig.params["parts"], fig.params["steps"]
+    vc, nexp, eps = g["clearance"], g["exponent"], g["compression_ratio"]
+    scale = max(1.0, g.get("max_pressure", g["suction"] * eps ** nexp) * g["pressure_unit"] / g["r"])
+    tol_p = 50 * EUCLIDEAN_TOLERANCE * scale * g["r"] / g["pressure_unit"]
+    tol_v = 50 * EUCLIDEAN_TOLERANCE * scale
+    checks: list[Check] = []
+    c0 = g["suction"] * (1.0 + vc) ** nexp
+    for j in range(m + 1):
+        checks.append(Check(f"compression point {j}: p V^n", pressure(fig, f"cP{j}") * volume(fig, f"cP{j}") ** nexp, c0,
+                            tol_p * (1.0 + vc) ** nexp * 2.0, "Brauer's construction: Euclidean after the two rays",
+                            "at·stroke^n"))
+    checks.append(Check("compression ends on the clearance V_c", volume(fig, f"cP{m}"), vc, tol_v,
+                        "m steps of 1 + tg α = ε^(1/m)", "stroke"))
+    checks.append(Check("compression end p_a ε^n", pressure(fig, f"cP{m}"), g["suction"] * eps ** nexp, tol_p * eps ** nexp,
+                        "Euclidean", "at"))
+    if engine == "explosion":
+        v_d, p_d = vc, g["max_pressure"]
+        checks.append(Check("maximum pressure (seed 001: about 25 at)", pressure(fig, "eP0"), g["max_pressure"], tol_p,
+                            "laid off on the pressure axis", "at"))
+    else:
+        v_d, p_d = g["cutoff"] * vc, g["suction"] * eps ** nexp
+        checks.append(Check("combustion at constant pressure: d at p_c", pressure(fig, "eP0"), p_d, tol_p * eps ** nexp,
+                            "the horizontal through c", "at"))
+        checks.append(Check("cut-off volume ρ V_c", volume(fig, "eP0"), v_d, tol_v, "laid off on the volume axis", "stroke"))
+    e0 = p_d * v_d ** nexp
+    for j in range(m + 1):
+        checks.append(Check(f"expansion point {j}: p V^n", pressure(fig, f"eP{j}") * volume(fig, f"eP{j}") ** nexp, e0,
+                            tol_p * max(1.0, v_d ** nexp) * 4.0 + abs(e0) * 1e-12,
+                            "Brauer's construction: Euclidean after the two rays", "at·stroke^n"))
+    checks.append(Check("expansion ends on the crank-end dead centre", volume(fig, f"eP{m}"), 1.0 + vc, tol_v,
+                        "m steps of 1 + tg α = (ε/ρ)^(1/m)", "stroke"))
+    # readings on the ordinates and the 720 degree diagram
+    xk = {k: volume(fig, f"F{k}") - vc for k in range(n + 1)}
+    comp_pts = [(volume(fig, f"cP{j}"), pressure(fig, f"cP{j}")) for j in range(m + 1)]
+    comp_exact = [(v, c0 / v ** nexp) for v, _ in comp_pts]
+    exp_pts = [(volume(fig, f"eP{j}"), pressure(fig, f"eP{j}")) for j in range(m + 1)]
+    exp_exact = [(v, e0 / v ** nexp) for v, _ in exp_pts]
+    inner = [k for k in range(1, n)]
+    dev_c = dict(zip(inner, _curve_tolerance(fig, sorted(comp_exact), [vc + xk[k] for k in inner],
+                                             lambda v: c0 / v ** nexp)))
+    on_exp = [k for k in inner if engine == "explosion" or vc + xk[k] > g["cutoff"] * vc]
+    dev_e = dict(zip(on_exp, _curve_tolerance(fig, exp_exact, [vc + xk[k] for k in on_exp], lambda v: e0 / v ** nexp)))
+    lam = 1.0 / g["rod_ratio"]
+    for s in range(4):
+        for i in range(n + 1):
+            t = s * n + i
+            k = i if s % 2 == 0 else n - i
+            theta = math.pi * t / n
+            x = _piston(theta, g["rod_ratio"])
+            want = model_pressure(s, x, g, engine)
+            if s == 1 and i == n:
+                want = model_pressure(1, 0.0, g, engine)
+            dev = {1: dev_c, 2: dev_e}.get(s, {}).get(k, 0.0)
+            tol = 2.0 * dev + tol_p * eps ** nexp * 4.0 + 1e-9 * want
+            a = _height(fig, f"A{s}.{i}")
+            checks.append(Check(f"a-a at {180 * t / n:g} deg ({STROKES[s]})", a, want, tol,
+                                "read on the French curve at the piston position (the same curve through the exact "
+                                "points strays by " f"{dev:.2e} at), carried with the compass" if dev else
+                                "a straight line or a constructed point, carried with the compass", "at"))
+            mass = g["pressure_ratio"] * (math.cos(theta) + lam * math.cos(2.0 * theta))
+            checks.append(Check(f"b-b at {180 * t / n:g} deg: a-a less q(cos θ + r/L cos 2θ)",
+                                a - _height(fig, f"B{s}.{i}"), mass, tol_p * 10.0 + 1e-9 * abs(mass),
+                                "the inertia ordinate of seed 000 (Euclidean), taken off with the compass", "at"))
+    checks.append(Check("piston position X_k against the exact law (stroke)", max(
+        abs(xk[k] - _piston(math.pi * k / n, g["rod_ratio"])) for k in range(n + 1)), 0.0,
+        1e-9, "rod arcs; the division of the circle", "stroke"))
+    return checks
+
+
+#: Command-line help for the givens (book terms).
+OPTION_HELP = {
+    "engine": "four-stroke: explosion (Abb. 1056, ignition at constant volume) or diesel (Abb. 1057, constant pressure)",
+    "compression_ratio": "four-stroke: compression ratio epsilon = (V_c + V_h)/V_c (explosion 5, Diesel 14)",
+    "suction": "four-stroke: suction pressure p_a, at absolute (0.9)",
+    "exhaust": "four-stroke: exhaust pressure p_g, at absolute (1.1)",
+    "max_pressure": "four-stroke, explosion: maximum pressure after ignition, at (seed 001: about 25)",
+    "cutoff": "four-stroke, diesel: cut-off ratio rho = V_d/V_c of the combustion at constant pressure (2)",
+    "exponent": "four-stroke: polytropic exponent n of compression and expansion (1.3)",
+    "steps": "four-stroke: Brauer steps per polytrope (12: the French curve then strays by a thousandth of the diagram)",
+}
+
+
+FOUR_STROKE = register(Construction(
+    name="four-stroke",
+    title=Caption("Druckverlauf im Viertakt über zwei Umdrehungen, Kolbenüberdruck a–a, b–b",
+                  "Four-stroke pressures over two turns, piston over-pressure a–a, b–b"),
+    source="seed 001 c, Abb. 1056-1058",
+    build=build_four_stroke,
+    checks=four_stroke_checks,
+    defaults={"engine": "explosion", "rod_ratio": 5.0, "parts": 12, "method": "auto", "r": 1.0,
+              "compression_ratio": 5.0, "suction": 0.9, "exhaust": 1.1, "max_pressure": 25.0, "cutoff": 2.0,
+              "exponent": 1.3, "pressure_unit": 0.1, "pressure_ratio": 6.0, "steps": 12},
+    book_params=({}, {"engine": "diesel", "compression_ratio": 14.0}),
+    structural=("engine", "parts", "method", "steps", "cutoff"),
+    extra={"help": OPTION_HELP},
+), validate=_validate)

@@ -64,7 +64,7 @@ from .crank import angle_tolerance, build_frame, crank_angle, point_name, rod_ar
 from .indicator import back_pressure as model_back
 from .indicator import indicator_frame, indicator_givens, pressures_at, square
 from .indicator import steam_pressure as model_steam
-from .inertia.build import _Ctx, _kind, _ordinate_line, _value
+from .ordinates import OrdinateFrame, ordinate_line, ordinate_value, point_kind
 
 __all__ = ["PISTON_FORCE", "TAFEL_I", "HP_DIAGRAM", "GRAVITY", "piston_area_mean", "build_piston_force",
            "piston_force_checks", "mass_force", "piston_force", "abscissa", "mass_force_rows", "area_balance",
@@ -139,7 +139,7 @@ def _frame(b: Builder) -> dict[str, str]:
     return build_frame(b, radius=("crank_radius", "scale"), rod=("rod_length", "scale"))
 
 
-def _mass_setup(b: Builder, f: Mapping[str, str]) -> _Ctx:
+def _mass_setup(b: Builder, f: Mapping[str, str]) -> OrdinateFrame:
     """The proportional angle of the inertia curve, its F/f line replaced by (G/g) omega^2 R in the force scale."""
     factor = (math.pi / 30.0) ** 2 / GRAVITY
     Ff = b.given_length("Ff", product=("weight", "rpm", "rpm", "crank_radius", "force_unit"), factor=factor,
@@ -154,7 +154,7 @@ def _mass_setup(b: Builder, f: Mapping[str, str]) -> _Ctx:
                         de="Marke R von S aus: Maßlinie für R/L", en="mark R from S: scale line for R/L")
         gf = scale_line(b, angle, "gf", length=Ff, toward=("toward", "S", f["O"]),
                         de="Marke (G/g)ω²R von S aus", en="mark (G/g) omega^2 R from S")
-    return _Ctx(f["O"], f["axis"], f["circle"], f["D0"], f["D1"], f["r"], f["L"], Ff, vert, top, angle, gr, gf)
+    return OrdinateFrame(f["O"], f["axis"], f["circle"], f["D0"], f["D1"], f["r"], f["L"], Ff, vert, top, angle, gr, gf)
 
 
 def _carry(b: Builder, name: str, foot: str, ordinate: str, a: str, z: str, *, de: str, en: str,
@@ -187,7 +187,7 @@ def build_piston_force(*, parts: int, method: str, **values: Any) -> Figure:
     ords: list[tuple[str, str]] = []
     with b.group(f"ordinates at all {n + 1} piston positions", f"Ordinaten an allen {n + 1} Kolbenstellungen"):
         for k in range(n + 1):
-            o = _ordinate_line(b, c, f"ord{k}", f"X{k}")
+            o = ordinate_line(b, c, f"ord{k}", f"X{k}")
             ords.append((str(k), o))
     # the cut-off and the start of compression: where the force line has its corners
     corners = [("s1", d.cutoff_ordinate), ("s2", d.compression_ordinate)]
@@ -202,11 +202,11 @@ def build_piston_force(*, parts: int, method: str, **values: Any) -> Figure:
                        en=f"piston force K{tag} = F p_ü (back pressure to steam line)")
     with b.group("mass forces (eq. 298) at all piston positions", "Massenkräfte (Gl. 298) an allen Kolbenstellungen"):
         for k, P in enumerate(points):
-            kind = _kind(k, n)
+            kind = point_kind(k, n)
             dc_p = c.D0 if 2 * k <= n else c.D1
             dc_2 = c.D0 if (4 * k < n or 4 * k > 3 * n) else c.D1
             with b.group(f"mass force at point {k}", f"Massenkraft zu Punkt {k}"):
-                V = _value(b, c, str(k), P, kind, dc_p, dc_2)
+                V = ordinate_value(b, c, str(k), P, kind, dc_p, dc_2)
                 k_ = b.circle_segment(f"M{k}.k", f"F{k}", c.gf.origin, V, de="Massenkraft mit dem Zirkel übertragen",
                                       en="mass force carried with the compass")
                 b.intersect(f"M{k}", f"ord{k}", k_, rule=("left", V, c.gf.origin), role="result",

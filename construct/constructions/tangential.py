@@ -60,7 +60,7 @@ from .crank import angle_tolerance, build_frame, crank_angle, point_name, rod_ar
 from .indicator import BAUMANN, indicator_frame, indicator_givens, pressures_at
 from .indicator import back_pressure as model_back_pressure
 from .indicator import steam_pressure as model_steam_pressure
-from .inertia.build import _kind, _setup, _value
+from .ordinates import inertia_setup, ordinate_value, point_kind
 
 __all__ = ["TANGENTIAL", "build_tangential", "tangential_checks", "ok_over_r", "t_over_unit", "free_force",
            "model_t", "drawn_model", "unrolled_angle", "mean_height", "excess_area", "crossing_angles", "model_summary",
@@ -126,7 +126,7 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
     rod_arcs(b, f, points)
     O, axis = f["O"], f["axis"]
     if force == "baumann":
-        ctx = _setup(b, f)  # vertical through O, 90° point, proportional angle for r/L and c v^2/r
+        ctx = inertia_setup(b, f)  # vertical through O, 90° point, proportional angle for r/L and c v^2/r
         vert = ctx.vert
         d = indicator_frame(b, base=axis, head=f["D0"], crank=f["D1"], prefix="ind.")
         scale = d.prefix + "v.crank"
@@ -173,7 +173,7 @@ def _free_force_mark(b: Builder, f: Mapping[str, str], ctx: Any, d: Any, scale: 
         E, R = pts["steam"], pts["back"]
         dc_p = ctx.D0 if 2 * k <= n else ctx.D1
         dc_2 = ctx.D0 if (4 * k < n or 4 * k > 3 * n) else ctx.D1
-        V = _value(b, ctx, f"b{k}", P, _kind(k, n), dc_p, dc_2)
+        V = ordinate_value(b, ctx, f"b{k}", P, point_kind(k, n), dc_p, dc_2)
         kF = b.circle_segment(f"F{k}.k", E, ctx.gf.origin, V, de="Beschleunigungsdruck von der Dampflinie abgezogen",
                               en="acceleration force taken off the steam line")
         F = b.intersect(f"F{k}", o, kF, rule=("left", ctx.gf.origin, V), role="result",

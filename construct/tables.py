@@ -84,11 +84,23 @@ def mass_forces_table(*, weight: float, rpm: float, crank_radius: float, rod_len
                                                             rod_length=rod_length, parts=parts)
 
 
-def tangential_pressure_table(*, rod_ratio: float, parts: int = 18, method: str = "auto") -> Table:
-    """T/P' for a unit piston force at each crank position: OK/r measured on the construction (seed 004, Fig. 26)."""
+def tangential_pressure_table(*, rod_ratio: float, parts: int = 18, method: str = "auto", revolution: bool = False,
+                              cranks: str = "", machine: str = "single") -> Table:
+    """T/P' for a unit piston force at each crank position: OK/r measured on the construction (seed 004, Fig. 26).
+
+    With *revolution*: over 0..360 degrees, a unit force in the direction of motion on each stroke, summed over
+    the cranks set *cranks* degrees ahead of the first (and the cylinders of a tandem *machine*).
+    """
     from .constructions.tangential import ok_over_r, t_over_unit
 
-    fig = get("tangential-pressure").figure(rod_ratio=rod_ratio, parts=parts, method=method, force="unit")
+    if revolution:
+        from .constructions.revolution import revolution_rows
+
+        fig = get("tangential-pressure").figure(rod_ratio=rod_ratio, parts=parts, method=method, force="unit",
+                                                revolution=True, cranks=cranks, machine=machine)
+        return ("crank_angle_deg", "T_over_P"), revolution_rows(fig)
+    fig = get("tangential-pressure").figure(rod_ratio=rod_ratio, parts=parts, method=method, force="unit",
+                                            cranks=cranks, machine=machine)
     rows = [{"crank_angle_deg": math.degrees(crank_angle(fig, point_name(fig, k))), "OK_over_r": ok_over_r(fig, k),
              "T_over_P": t_over_unit(fig, k)} for k in range(parts + 1)]
     return ("crank_angle_deg", "OK_over_r", "T_over_P"), rows

@@ -41,6 +41,8 @@ def add_construction_options(p: argparse.ArgumentParser, *, name_optional: bool 
     p.add_argument("--pressure-ratio", type=_number, metavar="F/f", help="F/f of the inertia pressures")
     p.add_argument("--infinite-rod", action="store_true", default=None,
                    help="an infinitely long connecting rod (instead of --rod-ratio)")
+    p.add_argument("--revolution", action="store_true", default=None,
+                   help="tangential-pressure, piston-force: both strokes over the whole revolution")
     p.add_argument("--fluctuation", type=_number, metavar="K", help="Qr/((m1+m2) v1^2) of the two cranks")
     p.add_argument("--magnify", type=_number, metavar="G", help="magnification of the speed deviations (two-cranks)")
     p.add_argument("--given", action="append", default=[], metavar="NAME=VALUE",
@@ -50,7 +52,7 @@ def add_construction_options(p: argparse.ArgumentParser, *, name_optional: bool 
 
 PARAM_OPTIONS = {"rod_ratio": "rod_ratio", "parts": "parts", "method": "method", "divisions": "divisions",
                  "radius": "r", "pressure_ratio": "pressure_ratio", "infinite_rod": "infinite_rod",
-                 "fluctuation": "fluctuation", "magnify": "magnify"}
+                 "fluctuation": "fluctuation", "magnify": "magnify", "revolution": "revolution"}
 
 
 def _generic_params() -> dict[str, tuple[Any, str]]:

@@ -45,7 +45,7 @@ from ..kernel.errors import InvalidParameter
 
 __all__ = ["Domain", "ROD_RATIO", "DRAWN_LENGTH", "PRESSURE", "PRESSURE_RATIO", "STROKE_FRACTION", "CLEARANCE",
            "DRAWN_PRESSURE_RATIO", "DRAWN_M", "DRAWN_MASS_FORCE", "KAPPA_RANGE", "FLUCTUATION", "SPEED_GAIN", "WEIGHT", "RPM", "LENGTH_M", "PISTON_AREA",
-           "DRAWING_SCALE", "FORCE_UNIT", "FLYWHEEL_KZ", "RIM_SPEED"]
+           "DRAWING_SCALE", "FORCE_UNIT", "FLYWHEEL_KZ", "RIM_SPEED", "CRANK_OFFSET", "CRANK_COUNT"]
 
 
 @dataclass(frozen=True)
@@ -129,3 +129,9 @@ FORCE_UNIT = Domain(1e-8, 10.0, "drawn length per kg the forces are measured for
 #: v^2/kz finite and normal; these ranges keep it within 1e-15 .. 1e14 (his tables: kz 40..200, v 10..40).
 FLYWHEEL_KZ = Domain(1e-3, 1e6, "allowed stresses kz in kg/cm^2 for which v^2/kz stays a normal float")
 RIM_SPEED = Domain(1e-3, 1e4, "rim speeds v in m/s for which v^2/kz stays a normal float")
+#: Crank offsets ahead of the first crank, in degrees (tangential pressure over a revolution): one turn; the offset
+#: must moreover be a multiple of the division 180/parts (the ordinates are added where both cranks have one).
+CRANK_OFFSET = Domain(0.0, 360.0, "degrees ahead of the first crank (one turn; 360 is the first crank again)")
+#: Cranks on one shaft: the books draw one, two (seed 002, compound engines) or three; the summed ordinates'
+#: error grows with their number (each addition is a compass transfer).
+CRANK_COUNT = Domain(1.0, 8.0, "cranks on one shaft the summed diagram is measured for")

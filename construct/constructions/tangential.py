@@ -61,6 +61,7 @@ from .indicator import BAUMANN, indicator_frame, indicator_givens, pressures_at
 from .indicator import back_pressure as model_back_pressure
 from .indicator import steam_pressure as model_steam_pressure
 from .ordinates import inertia_setup, ordinate_value, point_kind
+from .revolution import MACHINES, REVOLUTION_PLATE, build_revolution, crank_shifts, parse_cranks, revolution_checks
 
 __all__ = ["TANGENTIAL", "build_tangential", "tangential_checks", "ok_over_r", "t_over_unit", "free_force",
            "model_t", "drawn_model", "unrolled_angle", "mean_height", "excess_area", "crossing_angles", "model_summary",
@@ -105,9 +106,29 @@ def chord_shortfall(n: int, r: float = 1.0) -> float:
     return r * (math.pi - 2.0 * n * math.sin(math.pi / (2.0 * n)))
 
 
+def _engine(revolution: Any, cranks: Any, machine: Any, force: str, parts: int) -> dict[str, Any]:
+    """The revolution's params: crank offsets, their shifts in divisions, cylinders per rod (empty: forward stroke)."""
+    if machine not in MACHINES:
+        raise InvalidParameter(f"machine must be one of {', '.join(MACHINES)}, got {machine!r}")
+    if not revolution:
+        if cranks or machine != "single":
+            raise InvalidParameter("--cranks and --machine draw the whole revolution: add --revolution")
+        return {}
+    if force != "unit":
+        raise InvalidParameter("the revolution is built for a unit force (--force unit): Baumann's model on the "
+                               "return stroke is not built yet")
+    m = MACHINES[machine]
+    offsets = parse_cranks(cranks) if cranks else m.cranks
+    if machine == "compound" and len(offsets) != 2:
+        raise InvalidParameter(f"a compound engine has two cranks (high and low pressure), got --cranks {cranks!r}")
+    return {"revolution": True, "machine": machine, "cranks": ", ".join(f"{v:g}" for v in offsets),
+            "offsets": offsets, "shifts": crank_shifts(offsets, parts),
+            "cylinders": m.cylinders, "plate": REVOLUTION_PLATE}
+
+
 def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, force: str, kappa: float,
                      filling: float, clearance: float, admission: float, back_pressure: float, compression: float,
-                     pressure_unit: float) -> Figure:
+                     pressure_unit: float, revolution: bool = False, cranks: str = "", machine: str = "single") -> Figure:
     if force not in FORCES:
         raise InvalidParameter(f"force must be one of {', '.join(FORCES)}, got {force!r}")
     givens = _givens(r, rod_ratio, force, kappa, pressure_unit, filling=filling, clearance=clearance,
@@ -116,6 +137,8 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
     if parts < 2:
         raise InvalidParameter(f"the tangential-pressure diagram needs at least 2 parts, got {parts}")
     params = {"parts": parts, "method": used, "requested_method": method, "force": force, "plate": PLATE}
+    engine = _engine(revolution, cranks, machine, force, parts)
+    params.update(engine)
     if force == "baumann":
         params.update(filling=givens["filling"], compression=givens["compression"])
     b = Builder("tangential-pressure", givens, params)
@@ -159,7 +182,10 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
                 Q = b.intersect(f"Q{k}", ray, h, rule=("only",), de=f"Q{k}: P′·OK/r (Strahlensatz)",
                                 en=f"Q{k}: P'·OK/r (intercept theorem)")
                 heights[k] = (H, Q)
-    _unrolled(b, f, points, n, heights)
+    if engine:
+        build_revolution(b, f, points, n, heights, engine["shifts"], engine["cylinders"])
+    else:
+        _unrolled(b, f, points, n, heights)
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))
 
@@ -461,9 +487,11 @@ def tangential_checks(fig: Figure) -> list[Check]:
                                 "hyperbola rays, inertia ordinate and compass: Euclidean, read in at", "at"))
             checks.append(Check(f"T at {k}", t_over_unit(fig, k), model_t(w, g, force), 2 * tol,
                                 "P'·OK/r by the intercept theorem: Euclidean, read in at", "at"))
-        else:
+        elif not fig.params.get("revolution"):  # over a revolution the ordinates are checked as the sum's
             checks.append(Check(f"T/P at {k}", t_over_unit(fig, k), factor(w, lam), EUCLIDEAN_TOLERANCE,
                                 "proportional angle with P' = r: Euclidean", "P"))
+    if fig.params.get("revolution"):
+        return checks + revolution_checks(fig)
     r = g["r"]
     prov = made_by[f"U{n}"].provenance
     length = fig.replay["U0"].distance(fig.replay[f"U{n}"])
@@ -499,7 +527,15 @@ TANGENTIAL = register(Construction(
     build=build_tangential,
     checks=tangential_checks,
     defaults={"rod_ratio": 5.0, "parts": 18, "method": "auto", "r": 1.0, "force": "baumann", "kappa": KAPPA,
-              **BAUMANN, "pressure_unit": 0.2},
-    book_params=({"rod_ratio": 5.0, "parts": 18, "kappa": 8.0}, {"rod_ratio": 5.0, "parts": 18, "kappa": 2.0}),
-    structural=("parts", "method", "force", "filling", "compression"),
+              **BAUMANN, "pressure_unit": 0.2, "revolution": False, "cranks": "", "machine": "single"},
+    book_params=({"rod_ratio": 5.0, "parts": 18, "kappa": 8.0}, {"rod_ratio": 5.0, "parts": 18, "kappa": 2.0},
+                 # a compound engine, cranks at 90 degrees: the summed diagram over a revolution and its excess areas
+                 {"rod_ratio": 5.0, "parts": 18, "force": "unit", "revolution": True, "machine": "compound"}),
+    structural=("parts", "method", "force", "filling", "compression", "revolution", "cranks", "machine"),
+    extra={"help": {
+        "cranks": "tangential-pressure --revolution: crank offsets in degrees ahead of the first, e.g. 0,90 "
+                  "(multiples of 180/parts; default: the machine's)",
+        "machine": "tangential-pressure --revolution: single (default; cranks as --cranks says), tandem (two "
+                   "cylinders on one rod, forces added before the crank), compound (cranks at 0,90)",
+    }},
 ), validate=_validate)

@@ -84,6 +84,9 @@ _BOOK_PARAMS = {
     "pressure_unit": ("1 kg/cm² als {v} r gezeichnet", "1 kg/cm² drawn as {v} r"),
     "parts": ("{v} Teile", "{v} parts"),
     "divisions": ("Hub in {v} Teilen", "stroke in {v} parts"),
+    "revolution": ("ganze Umdrehung", "whole revolution"),
+    "cranks": ("Kurbeln bei {v} Grad", "cranks at {v} degrees"),
+    "machine": ("{v}-Maschine", "{v} engine"),
 }
 _BOOK_METHODS = {
     "durer": ("Dürers Teilung", "Dürer's division"),
@@ -91,7 +94,7 @@ _BOOK_METHODS = {
     "neusis": ("Einschiebung (Archimedes)", "neusis (Archimedes)"),
     "dividers": ("Teilung mit dem Stechzirkel", "division with the dividers by trial"),
 }
-_HIDDEN = ("givens", "group_titles", "requested_method", "plate")
+_HIDDEN = ("givens", "group_titles", "requested_method", "plate", "offsets", "shifts", "cylinders")
 
 
 def _num(v) -> str:

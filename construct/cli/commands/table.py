@@ -31,6 +31,12 @@ def add_arguments(p) -> None:
     p.add_argument("--kz", type=_number, action="append", metavar="KG_CM2", help="allowed stress kz (flywheel; repeat)")
     p.add_argument("--v", type=_number, action="append", metavar="M_S", help="rim speed v (flywheel; repeat)")
     p.add_argument("--infinite-rod", action="store_true", help="an infinitely long rod (speed-fluctuation)")
+    p.add_argument("--revolution", action="store_true",
+                   help="mass-forces, tangential-pressure: both strokes, 0..360 degrees")
+    p.add_argument("--cranks", default="", metavar="DEG,DEG",
+                   help="tangential-pressure --revolution: crank offsets ahead of the first, e.g. 0,90")
+    p.add_argument("--machine", default="single", metavar="TYPE",
+                   help="tangential-pressure --revolution: single (default), tandem, compound")
     p.add_argument("--format", choices=("text", "csv"), default="text")
 
 
@@ -77,7 +83,8 @@ def run(args) -> int:
         cols, rows = TABLES[args.table](weight=args.weight, rpm=args.rpm, crank_radius=args.crank_radius,
                                         rod_length=args.rod_length, parts=args.parts)
     elif args.table == "tangential-pressure":
-        cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args), parts=args.parts, method=args.method)
+        cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args), parts=args.parts, method=args.method,
+                                        revolution=args.revolution, cranks=args.cranks, machine=args.machine)
     elif args.table == "flywheel-coefficients":
         cols, rows = TABLES[args.table](kz=args.kz, v=args.v)
     elif args.table == "speed-fluctuation":

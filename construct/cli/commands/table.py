@@ -37,6 +37,10 @@ def add_arguments(p) -> None:
                    help="tangential-pressure --revolution: crank offsets ahead of the first, e.g. 0,90")
     p.add_argument("--machine", default="single", metavar="TYPE",
                    help="tangential-pressure --revolution: single (default), tandem, compound")
+    p.add_argument("--indicator", metavar="FILE.csv",
+                   help="tangential-pressure, mass-forces: a digitised indicator diagram of the cover side (x,p)")
+    p.add_argument("--indicator-crank-side", metavar="FILE.csv",
+                   help="the crank side's diagram (default: the cover side's mirrored, Baumann's assumption)")
     p.add_argument("--format", choices=("text", "csv"), default="text")
 
 
@@ -66,6 +70,10 @@ def _check_step(step: float, span: int) -> None:
 def run(args) -> int:
     if args.table not in TABLES:
         raise InvalidParameter(f"unknown table {args.table!r}; choose one of {', '.join(TABLES)}")
+    if (args.indicator or args.indicator_crank_side) and args.table not in ("tangential-pressure", "mass-forces"):
+        raise InvalidParameter(f"--indicator goes with the tables tangential-pressure and mass-forces, not {args.table}")
+    if args.revolution and args.table not in ("tangential-pressure", "mass-forces"):
+        raise InvalidParameter(f"--revolution goes with the tables tangential-pressure and mass-forces, not {args.table}")
     if args.table == "piston-path":
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args), parts=args.parts, method=args.method)
     elif args.table == "crank-angle":
@@ -84,7 +92,8 @@ def run(args) -> int:
                                         rod_length=args.rod_length, parts=args.parts)
     elif args.table == "tangential-pressure":
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args), parts=args.parts, method=args.method,
-                                        revolution=args.revolution, cranks=args.cranks, machine=args.machine)
+                                        revolution=args.revolution, cranks=args.cranks, machine=args.machine,
+                                        indicator=args.indicator, indicator_crank_side=args.indicator_crank_side)
     elif args.table == "flywheel-coefficients":
         cols, rows = TABLES[args.table](kz=args.kz, v=args.v)
     elif args.table == "speed-fluctuation":
@@ -94,7 +103,12 @@ def run(args) -> int:
         cols, rows = TABLES[args.table](rod_ratio=None if args.infinite_rod else _one_ratio(args), step=args.step)
     else:
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args))
-    sys.stdout.write(format_table(cols, rows, args.format))
+    text = format_table(cols, rows, args.format)
+    if args.indicator is not None:
+        from ...tables import indicator_note
+
+        print(f"construct: note: {indicator_note(args.indicator_crank_side)}", file=sys.stderr)
+    sys.stdout.write(text)
     return 0
 
 

@@ -78,10 +78,18 @@ def characteristic_points_table(*, rod_ratio: float) -> Table:
     return ("point", "omega_deg", "x", "q"), characteristic_point_rows(rod_ratio=rod_ratio)
 
 
-def mass_forces_table(*, weight: float, rpm: float, crank_radius: float, rod_length: float, parts: int = 18) -> Table:
-    """Seed 001, eq. (298): P_b (kg, + where the masses are accelerated) at each crank position, measured."""
-    from .constructions.piston_force import mass_force_rows
+def mass_forces_table(*, weight: float, rpm: float, crank_radius: float, rod_length: float, parts: int = 18,
+                      revolution: bool = False) -> Table:
+    """Seed 001, eq. (298): P_b (kg, + where the masses are accelerated) at each crank position, measured.
 
+    With *revolution*: both strokes over 0..360 degrees, a column ``stroke`` (forward, return); P_b positive
+    where the masses take up force in the direction of the current stroke; the dead-centre rows once per stroke.
+    """
+    from .constructions.piston_force import mass_force_rows, revolution_mass_force_rows
+
+    if revolution:
+        return ("crank_angle_deg", "stroke", "x", "P_b"), revolution_mass_force_rows(
+            weight=weight, rpm=rpm, crank_radius=crank_radius, rod_length=rod_length, parts=parts)
     return ("crank_angle_deg", "x", "P_b"), mass_force_rows(weight=weight, rpm=rpm, crank_radius=crank_radius,
                                                             rod_length=rod_length, parts=parts)
 

@@ -256,7 +256,10 @@ def pressures_at(b: Builder, d: IndicatorDiagram, ordinate: str, tag: str, *, ta
                                role="construction" if envelope else "result")
 
     if envelope:
-        down, up = ("toward", None, None, 0.0, -1.0), ("toward", None, None, 0.0, 1.0)
+        # "Up" is the side the diagram stands on: left of head -> crank (above a stroke line drawn left to right,
+        # below one drawn right to left -- the crank side's mirrored diagram).
+        side = 1.0 if b[d.crank][0] >= b[d.head][0] else -1.0
+        down, up = ("toward", None, None, 0.0, -side), ("toward", None, None, 0.0, side)
         out["steam"] = b.pick(f"{p}E{tag}", admission(f"{p}Ea{tag}"), expansion(f"{p}Eh{tag}"), rule=down,
                               role="result", de=f"Dampflinie bei {tag}: die untere von Admissionslinie und Expansionslinie",
                               en=f"steam line at {tag}: the lower of admission line and expansion hyperbola")

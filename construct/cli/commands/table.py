@@ -88,8 +88,11 @@ def run(args) -> int:
                    if getattr(args, k.replace("-", "_")) is None]
         if missing:
             raise InvalidParameter(f"table mass-forces needs {' '.join(missing)}")
+        if args.indicator or args.indicator_crank_side:
+            raise InvalidParameter("table mass-forces takes no --indicator: the mass forces do not depend on the "
+                                   "pressures (the piston-force construction takes the diagram)")
         cols, rows = TABLES[args.table](weight=args.weight, rpm=args.rpm, crank_radius=args.crank_radius,
-                                        rod_length=args.rod_length, parts=args.parts)
+                                        rod_length=args.rod_length, parts=args.parts, revolution=args.revolution)
     elif args.table == "tangential-pressure":
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args), parts=args.parts, method=args.method,
                                         revolution=args.revolution, cranks=args.cranks, machine=args.machine,

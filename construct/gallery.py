@@ -23,6 +23,8 @@ no dates, entries in registry order, fixed number formats.
 
 >>> entry_slug("crank", {"rod_ratio": 5.0, "parts": 18})
 'crank-parts-18-rod-ratio-5'
+>>> entry_slug("piston-force", {"revolution": True})
+'piston-force-revolution'
 """
 
 from __future__ import annotations
@@ -88,7 +90,8 @@ def _value(v: Any) -> str:
 
 def entry_slug(name: str, params: Mapping[str, Any]) -> str:
     """A folder name for a construction at *params*: stable, readable, no odd characters."""
-    parts = [name] + [f"{k}-{_value(v)}" for k, v in sorted(params.items())]
+    # a switch that is on reads as its name ("revolution"), not "revolution-True"
+    parts = [name] + [k if v is True else f"{k}-{_value(v)}" for k, v in sorted(params.items())]
     text = "-".join(parts).replace("_", "-").replace(".", "_")
     return "".join(c if c.isalnum() or c in "-_" else "-" for c in text)
 

@@ -24,7 +24,7 @@ from .constructions.inertia import acceleration_rows, characteristic_point_rows,
 from .constructions.two_cranks import speed_fluctuation_rows
 
 __all__ = ["TABLES", "piston_path_table", "crank_angle_table", "acceleration_table", "characteristic_points_table",
-           "over_pressure", "indicator_note"]
+           "indicator_note"]
 
 Table = tuple[tuple[str, ...], list[dict[str, Any]]]
 
@@ -104,47 +104,37 @@ def tangential_pressure_table(*, rod_ratio: float, parts: int = 18, method: str 
 
     With *indicator* (a digitised diagram of the cover side, :mod:`construct.constructions.indicator_card`; the
     crank side from *indicator_crank_side* or the same card mirrored): a column ``T`` in kg/cm² of piston area,
-    the over-pressure at the constructed piston position (read on the chords of the card) times T/P' -- every
-    cylinder of the engine with this diagram.
+    measured on the construction drawn with the card (the over-pressure read on the card's straightedge lines
+    at the constructed piston position, times OK/r) -- every cylinder of the engine with this diagram.
     """
     from .constructions.tangential import ok_over_r, t_over_unit
 
-    cards = _cards(indicator, indicator_crank_side)
     if indicator is None and indicator_crank_side is not None:
         raise InvalidParameter("--indicator-crank-side goes with --indicator (the cover side's diagram)")
+    tp = get("tangential-pressure")
+    engine = {"revolution": True, "cranks": cranks, "machine": machine} if revolution else \
+        {"cranks": cranks, "machine": machine}
+    card = None
+    if indicator is not None:
+        card = tp.figure(rod_ratio=rod_ratio, parts=parts, method=method, indicator=str(indicator),
+                         indicator_crank_side=str(indicator_crank_side or ""), **engine)
+    fig = tp.figure(rod_ratio=rod_ratio, parts=parts, method=method, force="unit", **engine)
     if revolution:
-        from .constructions.revolution import revolution_rows
+        from .constructions.revolution import revolution_ordinate, revolution_rows
 
-        fig = get("tangential-pressure").figure(rod_ratio=rod_ratio, parts=parts, method=method, force="unit",
-                                                revolution=True, cranks=cranks, machine=machine)
         rows = revolution_rows(fig)
-        if cards is None:
+        if card is None:
             return ("crank_angle_deg", "T_over_P"), rows
-        n, m = parts, 2 * parts
         for j, row in enumerate(rows):
-            row["T"] = fig.params["cylinders"] * sum(_card_t(fig, cards, (j + s) % m, n)
-                                                     for s in fig.params["shifts"])
+            row["T"] = revolution_ordinate(card, j)
         return ("crank_angle_deg", "T_over_P", "T"), rows
-    fig = get("tangential-pressure").figure(rod_ratio=rod_ratio, parts=parts, method=method, force="unit",
-                                            cranks=cranks, machine=machine)
     rows = [{"crank_angle_deg": math.degrees(crank_angle(fig, point_name(fig, k))), "OK_over_r": ok_over_r(fig, k),
              "T_over_P": t_over_unit(fig, k)} for k in range(parts + 1)]
-    if cards is None:
+    if card is None:
         return ("crank_angle_deg", "OK_over_r", "T_over_P"), rows
     for k, row in enumerate(rows):
-        row["T"] = _card_t(fig, cards, k, parts)
+        row["T"] = t_over_unit(card, k)
     return ("crank_angle_deg", "OK_over_r", "T_over_P", "T"), rows
-
-
-def _cards(indicator: Any, crank_side: Any) -> tuple[Any, Any] | None:
-    """(cover side, crank side) cards read from the files, the crank side mirrored when it has no file."""
-    if indicator is None:
-        return None
-    from .constructions.indicator_card import load_indicator
-
-    cover = load_indicator(indicator)
-    crank = load_indicator(crank_side) if crank_side is not None else cover.mirrored()
-    return cover, crank
 
 
 def indicator_note(crank_side: Any) -> str:
@@ -153,28 +143,6 @@ def indicator_note(crank_side: Any) -> str:
         return "crank side from its own indicator diagram"
     return ("crank side: the cover-side diagram mirrored (Baumann's assumption: the diagrams of both piston sides "
             "are equal)")
-
-
-def over_pressure(cards: tuple[Any, Any], x: float, stroke: str) -> float:
-    """p_ü in at on *stroke* at piston position x: the working side's pressure less the other side's.
-
-    Forward the cover side works against the crank side; on the return the crank side against the cover side
-    (positive: the force acts in the direction of the current stroke).
-    """
-    cover, crank = cards
-    if stroke == "forward":
-        return cover.pressure(x, "forward") - crank.pressure(x, "forward")
-    return crank.pressure(x, "return") - cover.pressure(x, "return")
-
-
-def _card_t(fig: Any, cards: tuple[Any, Any], m: int, n: int) -> float:
-    """T (kg/cm²) of one crank at position m of the revolution: p_ü at the constructed piston position times OK/r."""
-    from .constructions.crank import piston_fraction
-    from .constructions.tangential import ok_over_r
-
-    k = m if m <= n else 2 * n - m
-    return over_pressure(cards, piston_fraction(fig, k), "forward" if m < n or m == 2 * n else "return") * \
-        ok_over_r(fig, k)
 
 
 def flywheel_coefficients_table(*, kz: Sequence[float] | None = None, v: Sequence[float] | None = None) -> Table:

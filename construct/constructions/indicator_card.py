@@ -55,7 +55,8 @@ import numpy as np
 from ..io.reading import read_bounded_text
 from ..kernel.errors import InputFileError
 
-__all__ = ["IndicatorCard", "parse_indicator_csv", "load_indicator", "MAX_INDICATOR_BYTES", "MIN_POINTS",
+__all__ = ["IndicatorCard", "parse_indicator_csv", "load_indicator", "card_givens", "card_from_givens", "draw_card",
+           "DrawnCard", "MAX_INDICATOR_BYTES", "MIN_POINTS",
            "MAX_POINTS", "CLOSE_TOLERANCE", "MAX_CARD_PRESSURE", "STROKES"]
 
 #: The largest indicator file read (bytes): 5000 rows of two numbers need about 100 kB.
@@ -83,6 +84,8 @@ class IndicatorCard:
     forward: tuple[tuple[float, ...], tuple[float, ...]]   #: (x increasing, p) of the forward branch
     back: tuple[tuple[float, ...], tuple[float, ...]]      #: (x increasing, p) of the return branch
     mirror: bool = False
+    forward_index: tuple[int, ...] = ()   #: the points of the forward branch, x increasing (vertical runs thinned)
+    back_index: tuple[int, ...] = ()      #: the points of the return branch, x increasing
 
     def pressure(self, x: float, stroke: str) -> float:
         """Absolute pressure at piston position x (fraction of the stroke) on the *stroke*'s branch, in at."""
@@ -93,7 +96,8 @@ class IndicatorCard:
         """The same diagram for the other side of the piston: x -> 1 - x (Baumann's assumption)."""
         pts = tuple((1.0 - x, p) for x, p in self.points)
         card = _card(pts, self.rows, self.source)
-        return IndicatorCard(card.source, card.points, card.rows, card.forward, card.back, mirror=True)
+        return IndicatorCard(card.source, card.points, card.rows, card.forward, card.back, True,
+                             card.forward_index, card.back_index)
 
     def work(self) -> float:
         """The loop's area (at x stroke), positive when the forward branch lies above the return branch."""
@@ -181,7 +185,9 @@ def _card(pts: tuple[tuple[float, float], ...], rows: tuple[int, ...], source: s
         lo = (lo + 1) % n
     fwd = _walk(lo, hi, n)
     back = _walk(hi, lo, n)
-    return IndicatorCard(source, pts, rows, _branch(pts, rows, fwd, +1, source), _branch(pts, rows, back, -1, source))
+    f_xy, f_idx = _branch(pts, rows, fwd, +1, source)
+    b_xy, b_idx = _branch(pts, rows, back, -1, source)
+    return IndicatorCard(source, pts, rows, f_xy, b_xy, False, f_idx, b_idx)
 
 
 def _walk(a: int, b: int, n: int) -> list[int]:
@@ -191,9 +197,10 @@ def _walk(a: int, b: int, n: int) -> list[int]:
     return out
 
 
-def _branch(pts, rows, idx: Sequence[int], sign: int, source: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
-    """(x increasing, p) along one branch; x must not turn back; a vertical run keeps the pressure the piston meets."""
-    xs, ps = [], []
+def _branch(pts, rows, idx: Sequence[int], sign: int, source: str):
+    """(x increasing, p) along one branch and its point indices; x must not turn back; a vertical run keeps the
+    pressure the piston meets."""
+    xs, ps, kept = [], [], []
     for k, i in enumerate(idx):
         x, p = pts[i]
         if xs and (x - xs[-1]) * sign < 0.0:
@@ -203,13 +210,16 @@ def _branch(pts, rows, idx: Sequence[int], sign: int, source: str) -> tuple[tupl
         if xs and x == xs[-1]:
             if len(xs) == 1:  # the start of the branch: the piston leaves at the end of the run
                 ps[-1] = p
+                kept[-1] = i
             continue  # elsewhere: the pressure the piston met first
         xs.append(x)
         ps.append(p)
+        kept.append(i)
     if sign < 0:
         xs.reverse()
         ps.reverse()
-    return tuple(xs), tuple(ps)
+        kept.reverse()
+    return (tuple(xs), tuple(ps)), tuple(kept)
 
 
 def _no_crossing(pts, rows, height: float, source: str) -> None:
@@ -243,3 +253,106 @@ def load_indicator(path: Any) -> IndicatorCard:
     import os
 
     return parse_indicator_csv(text, repr(os.fsdecode(os.fspath(path))))
+
+
+# --------------------------------------------------------------------------
+# A card as givens of a construction, and drawn with compass and straightedge.
+# --------------------------------------------------------------------------
+
+
+def card_givens(card: IndicatorCard, prefix: str) -> dict[str, float]:
+    """The card's points as givens of a protocol: ``{prefix}x{i}``, ``{prefix}p{i}`` (a replay can change them)."""
+    out: dict[str, float] = {}
+    for i, (x, p) in enumerate(card.points):
+        out[f"{prefix}x{i}"] = x
+        out[f"{prefix}p{i}"] = p
+    return out
+
+
+def card_from_givens(givens: Any, prefix: str, source: str = "in the protocol") -> IndicatorCard | None:
+    """The card a protocol's givens hold under *prefix* (None if none), checked as a file is (rows = points + 1)."""
+    pts = []
+    while f"{prefix}x{len(pts)}" in givens:
+        i = len(pts)
+        pts.append((givens[f"{prefix}x{i}"], givens[f"{prefix}p{i}"]))
+    if not pts:
+        return None
+    pts.append(pts[0])  # the loop closed where it began (the card keeps its points without the repeat)
+    text = "x,p\n" + "".join(f"{float(x)!r},{float(p)!r}\n" for x, p in pts)
+    return parse_indicator_csv(text, source)
+
+
+@dataclass(frozen=True)
+class DrawnCard:
+    """Object names of a card drawn into a figure: the straightedge lines of its two strokes."""
+
+    forward: str   #: polyline of the forward stroke's branch (x increasing), continued level to both dead centres
+    back: str      #: polyline of the return stroke's branch
+
+
+def draw_card(b: Any, card: IndicatorCard, *, prefix: str, head: str, crank: str, axis: str,
+              stroke: Sequence[str] = ("r",), stroke_factor: float = 2.0,
+              pressure_scale: Sequence[str] = ("pressure_unit",), mirrored: bool = False,
+              up: tuple[str, str] | None = None, given_prefix: str | None = None, de: str = "",
+              en: str = "") -> DrawnCard:
+    """Plot the card's points from their givens (x by the compass along the stroke from *head*, p up the
+    perpendicular) and join each stroke's points with the straightedge.
+
+    *mirrored*: the same givens (named by *given_prefix*) plotted from the other dead centre (*head* is then the
+    crank end): the crank side's card under Baumann's assumption; its forward stroke is the cover card's return
+    branch.  *up* (two
+    points of the stroke line) says which side the pressures stand on (left of up[0] -> up[1]; default
+    head -> crank).  The branches are continued level to the dead centres where the card stops short (within
+    its stated tolerance) so every ordinate of the stroke meets them.
+    """
+    up = up or (head, crank)
+    gp = prefix if given_prefix is None else given_prefix  # the givens' names (a mirrored card reads another's)
+    pts: dict[int, str] = {}
+    with b.group(f"indicator card {en}: its points plotted", f"Indikatordiagramm {de}: die Punkte aufgetragen"):
+        v0 = b.erect_perpendicular(f"{prefix}v0", head, axis, crank)
+        v1 = b.erect_perpendicular(f"{prefix}v1", crank, axis, head)
+        for i, (x, p) in enumerate(card.points):
+            if x == 0.0:  # on a dead centre: no opening to take (a compass opened to nothing draws nothing)
+                foot, perp = head, v0
+            elif x == 1.0:
+                foot, perp = crank, v1
+            else:
+                lx = b.given_length(f"{prefix}lx{i}", product=(f"{gp}x{i}", *stroke), factor=stroke_factor,
+                                    de=f"Kolbenweg x{i}", en=f"piston path x{i}")
+                k = b.circle_radius(f"{prefix}F{i}.k", head, lx, de=f"x{i} vom Totpunkt aus", en=f"x{i} from the dead centre")
+                foot = b.intersect(f"{prefix}F{i}", axis, k, rule=("toward", head, crank), de=f"Fußpunkt {i}",
+                                   en=f"foot {i}")
+                perp = b.erect_perpendicular(f"{prefix}o{i}", foot, axis, head)
+            if p == 0.0:
+                pts[i] = foot
+                continue
+            lp = b.given_length(f"{prefix}lp{i}", product=(f"{gp}p{i}", *pressure_scale),
+                                de=f"Druck p{i}", en=f"pressure p{i}")
+            k = b.circle_radius(f"{prefix}C{i}.k", foot, lp, de=f"p{i} im Druckmaßstab", en=f"p{i} in the pressure scale")
+            pts[i] = b.intersect(f"{prefix}C{i}", perp, k, rule=("left", *up), role="result",
+                                 de=f"Punkt {i} des Diagramms", en=f"point {i} of the diagram")
+    fwd_idx, back_idx = (card.forward_index, card.back_index)
+    xs_f, xs_b = card.forward[0], card.back[0]
+    if mirrored:  # seen from the other dead centre the strokes change places
+        fwd_idx, back_idx = tuple(reversed(card.back_index)), tuple(reversed(card.forward_index))
+        xs_f, xs_b = tuple(1.0 - x for x in reversed(card.back[0])), tuple(1.0 - x for x in reversed(card.forward[0]))
+    out = []
+    with b.group(f"indicator card {en}: each stroke's line with the straightedge",
+                 f"Indikatordiagramm {de}: die Linie jedes Hubes mit dem Lineal"):
+        for name, idx, xs, what in (("fwd", fwd_idx, xs_f, ("Hingang", "forward stroke")),
+                                    ("back", back_idx, xs_b, ("Rückgang", "return stroke"))):
+            names = [pts[i] for i in idx]
+            ends = []
+            for end, x_end, target, perp in (("s", xs[0], 0.0, v0), ("e", xs[-1], 1.0, v1)):
+                if x_end == target:
+                    ends.append(None)
+                    continue
+                point = names[0] if end == "s" else names[-1]
+                level = b.parallel_through(f"{prefix}{name}.{end}.h", point, head, crank)
+                ends.append(b.intersect(f"{prefix}{name}.{end}", level, perp, rule=("only",),
+                                        de="Linie waagerecht bis zum Totpunkt fortgesetzt",
+                                        en="line continued level to the dead centre"))
+            line = ([ends[0]] if ends[0] else []) + names + ([ends[1]] if ends[1] else [])
+            out.append(b.polyline(f"{prefix}{name}", line, de=f"{what[0]}: Punkte mit dem Lineal verbunden",
+                                  en=f"{what[1]}: the points joined with the straightedge"))
+    return DrawnCard(out[0], out[1])

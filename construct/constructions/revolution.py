@@ -148,7 +148,8 @@ def dead_centres(shifts: Sequence[int], n: int) -> tuple[int, ...]:
 
 
 def build_revolution(b: Builder, f: Mapping[str, str], points: Sequence[str], n: int,
-                     heights: Mapping[int, tuple[str, str]], shifts: Sequence[int], cylinders: int) -> None:
+                     heights: Mapping[int, tuple[str, str]], shifts: Sequence[int], cylinders: int,
+                     return_heights: Mapping[int, tuple[str, str]] | None = None) -> None:
     """The revolution unrolled, each crank's diagram, the sum by the dividers, the mean line and excess areas.
 
     *heights* maps a forward division k (1..n-1) to the segment (H_k, Q_k) whose
@@ -164,6 +165,8 @@ def build_revolution(b: Builder, f: Mapping[str, str], points: Sequence[str], n:
             return None  # a dead centre: no tangential pressure
         if j < n:
             return heights[j]
+        if return_heights is not None:  # a force of the return stroke's own, at the mirrored crank point
+            return return_heights[m - j]
         return heights[m - j]  # the return stroke: OK of the mirrored crank point 360° - w
 
     with b.group("the whole revolution unrolled with the dividers", "Die ganze Umdrehung mit dem Stechzirkel abgewickelt"):
@@ -323,24 +326,37 @@ def unit_t(w: Any, lam: float) -> Any:
     return np.abs(np.sin(w + beta) / np.cos(beta))
 
 
-def summed_unit_t(w: Any, lam: float, offsets_deg: Sequence[float], cylinders: int = 1) -> Any:
-    """Σ over cranks set θ ahead of the first: unit_t(w + θ), times the cylinders on each rod."""
-    return cylinders * sum(unit_t(np.asarray(w, dtype=float) + math.radians(t), lam) for t in offsets_deg)
+def summed_unit_t(w: Any, lam: float, offsets_deg: Sequence[float], cylinders: int = 1, force: Any = None) -> Any:
+    """Σ over cranks set θ ahead of the first: unit_t(w + θ), times the cylinders on each rod.
+
+    *force*: the piston force along the motion as a function of the crank angle (an array of angles in, over
+    the whole turn); None for the unit force.
+    """
+    total = 0.0
+    for t in offsets_deg:
+        wt = np.asarray(w, dtype=float) + math.radians(t)
+        total = total + unit_t(wt, lam) * (1.0 if force is None else force(np.mod(wt, 2.0 * math.pi)))
+    return cylinders * total
 
 
-def revolution_model(lam: float, offsets_deg: Sequence[float], cylinders: int = 1, samples: int = 200_000) -> dict[str, float]:
-    """Mean, and the greatest swing of ∫(T − T_m) dw, of the summed unit diagram (trapezoids on a fine grid).
+def revolution_model(lam: float, offsets_deg: Sequence[float], cylinders: int = 1, samples: int = 200_000,
+                     force: Any = None) -> dict[str, float]:
+    """Mean, and the greatest swing of ∫(T − T_m) dw, of the summed diagram (trapezoids on a fine grid).
 
-    The mean is exactly 2/π per cylinder (4r of piston path per turn over 2πr).
+    For the unit force the mean is exactly 2/π per cylinder (4r of piston path per turn over 2πr).
     """
     w = np.linspace(0.0, 2.0 * math.pi, samples + 1)
-    t = summed_unit_t(w, lam, offsets_deg, cylinders)
-    mean = 2.0 / math.pi * cylinders * len(offsets_deg)
+    t = summed_unit_t(w, lam, offsets_deg, cylinders, force)
+    if force is None:
+        mean = 2.0 / math.pi * cylinders * len(offsets_deg)
+    else:
+        mean = float(np.sum((t[1:] + t[:-1]) * 0.5 * np.diff(w)) / (2.0 * math.pi))
     run = np.concatenate(([0.0], np.cumsum((t[1:] + t[:-1] - 2.0 * mean) * 0.5 * np.diff(w))))
     return {"mean": mean, "excess": float(run.max() - run.min())}
 
 
-def drawn_revolution(lam: float, offsets_deg: Sequence[float], cylinders: int, n: int) -> dict[str, float]:
+def drawn_revolution(lam: float, offsets_deg: Sequence[float], cylinders: int, n: int,
+                     force: Any = None) -> dict[str, float]:
     """The method on exact data: the French curve through the exact summed ordinates, read as the figure is."""
     from ..kernel.areas import area_between
     from ..kernel.geometry import SCALAR, Line, Point
@@ -348,7 +364,7 @@ def drawn_revolution(lam: float, offsets_deg: Sequence[float], cylinders: int, n
 
     m = 2 * n
     ws = [math.pi * k / n for k in range(m + 1)]
-    pts = [Point(w, float(summed_unit_t(w, lam, offsets_deg, cylinders))) for w in ws]
+    pts = [Point(w, float(summed_unit_t(w, lam, offsets_deg, cylinders, force))) for w in ws]
     base = Line(Point(0.0, 0.0), Point(2 * math.pi, 0.0))
     shifts = crank_shifts(offsets_deg, n)
     curve, = OPS["french_curve"].fn((base, *pts), {"points": m + 1, "tangent_at": (),
@@ -365,32 +381,39 @@ def drawn_revolution(lam: float, offsets_deg: Sequence[float], cylinders: int, n
 # --------------------------------------------------------------------------
 
 
-def revolution_checks(fig: Any) -> list[Check]:
-    """The summed ordinates against Σ sin(w + θ + β)/cos β, the mean line against 2/π per cylinder, the excess."""
+def revolution_checks(fig: Any, force: Any = None, scale: float = 1.0) -> list[Check]:
+    """The summed ordinates against Σ F(w + θ) sin(w + θ + β)/cos β (F = 1 for the unit force, else *force*, in
+    units of *scale*), the mean line (2/π per cylinder for the unit force), the excess work."""
     g = fig.replay.givens
     n = fig.params["parts"]
     lam = 1.0 / g["rod_ratio"]
     offsets = fig.params["offsets"]
     cyl = fig.params["cylinders"]
     made_by = fig.replay.made_by()
-    tol_w, why_w = angle_tolerance(fig, "P1", made_by)
     count = len(offsets) * cyl
+    unit = "P" if force is None else "at"
+    # each crank's position as drawn (its division point's angle; the return stroke's mirrored): the division's
+    # error drops out, and what is left is the float chain of the straightedge and compass steps
+    drawn_w = [crank_angle(fig, point_name(fig, k)) for k in range(n + 1)]
     checks: list[Check] = []
     for j in range(2 * n + 1):
-        w = math.pi * j / n
-        expected = float(summed_unit_t(w, lam, offsets, cyl))
-        checks.append(Check(f"summed T/P at {j} ({180 * j / n:g} deg)", revolution_ordinate(fig, j), expected,
-                            count * (10 * EUCLIDEAN_TOLERANCE + (1 + lam) * 2 * tol_w),
-                            f"OK by straightedge, carried and added with the compass; division: {why_w}", "P"))
-    model = revolution_model(lam, offsets, cyl)
-    drawn = drawn_revolution(lam, offsets, cyl, n)
+        expected = 0.0
+        for s in fig.params["shifts"]:
+            m = (j + s) % (2 * n)
+            w = drawn_w[m] if m <= n else 2.0 * math.pi - drawn_w[2 * n - m]
+            expected += cyl * float(summed_unit_t(w, lam, (0.0,), 1, force))
+        checks.append(Check(f"summed T at {j} ({180 * j / n:g} deg)", revolution_ordinate(fig, j), expected,
+                            count * 20 * EUCLIDEAN_TOLERANCE * scale,
+                            "OK by straightedge, carried and added with the compass: Euclidean", unit))
+    model = revolution_model(lam, offsets, cyl, force=force)
+    drawn = drawn_revolution(lam, offsets, cyl, n, force)
     why = "the French curve through 2n + 1 points (twice its error on exact data) and the planimeter (1e-6)"
     checks.append(Check("mean height over the revolution (planimeter)", revolution_mean(fig), model["mean"],
-                        2.0 * abs(drawn["mean"] - model["mean"]) + 1e-6 * count, why, "P"))
+                        2.0 * abs(drawn["mean"] - model["mean"]) + 1e-6 * count * scale, why, unit))
     chord_factor = 2 * n * math.sin(math.pi / (2 * n)) / math.pi
-    tol_e = 2.0 * abs(drawn["excess"] - model["excess"]) + model["excess"] * (1.0 - chord_factor) + 1e-5 * count
+    tol_e = 2.0 * abs(drawn["excess"] - model["excess"]) + model["excess"] * (1.0 - chord_factor) + 1e-5 * count * scale
     checks.append(Check("excess work (greatest swing of the excess areas)", excess_work(fig), model["excess"], tol_e,
-                        why + "; unrolled by chords: area scaled by n·chord/πr", "P·r"))
+                        why + "; unrolled by chords: area scaled by n·chord/πr", f"{unit}·r"))
     return checks
 
 

@@ -61,6 +61,7 @@ from .indicator import BAUMANN, indicator_frame, indicator_givens, pressures_at
 from .indicator import back_pressure as model_back_pressure
 from .indicator import steam_pressure as model_steam_pressure
 from .ordinates import inertia_setup, ordinate_value, point_kind
+from .indicator_card import IndicatorCard, card_from_givens, card_givens, draw_card, load_indicator
 from .revolution import MACHINES, REVOLUTION_PLATE, build_revolution, crank_shifts, parse_cranks, revolution_checks
 
 __all__ = ["TANGENTIAL", "build_tangential", "tangential_checks", "ok_over_r", "t_over_unit", "free_force",
@@ -69,16 +70,24 @@ __all__ = ["TANGENTIAL", "build_tangential", "tangential_checks", "ok_over_r", "
 
 #: Baumann's κ = P/B_max ("Verhältnis des Anfangsbeschleunigungsdrucks zum Anfangskolbendruck"), his first case.
 KAPPA = 8.0
-FORCES = ("baumann", "unit")
+FORCES = ("baumann", "unit", "indicator")
 
 #: What the Fig. 26/27-like plate shows: the unrolled base, the ordinates and points of T, the curve,
 #: the mean line, the crossings and the hatched excess area.
 PLATE = (r"tbase", r"U\d+", r"u\d+", r"T\d+", r"tcurve", r"M0|Mn", r"mean", r"A1|A2", r"excess")
 
 
-def _givens(r: Any, rod_ratio: Any, force: str, kappa: Any, pressure_unit: Any, **diagram: Any) -> dict[str, float]:
+def _givens(r: Any, rod_ratio: Any, force: str, kappa: Any, pressure_unit: Any, cards: Any = None,
+            **diagram: Any) -> dict[str, float]:
     g = {"r": bounded("crank radius r", r, DRAWN_LENGTH), "rod_ratio": rod_ratio_param(rod_ratio)}
     if force == "unit":
+        return g
+    if force == "indicator":
+        g["pressure_unit"] = bounded("pressure-scale unit (drawn length of 1 at)", pressure_unit, DRAWN_LENGTH)
+        cover, crank = cards
+        g.update(card_givens(cover, "card."))
+        if crank is not None:
+            g.update(card_givens(crank, "crank."))
         return g
     d = indicator_givens(diagram["filling"], diagram["clearance"], diagram["admission"], diagram["back_pressure"],
                          diagram["compression"], pressure_unit)
@@ -91,10 +100,46 @@ def _givens(r: Any, rod_ratio: Any, force: str, kappa: Any, pressure_unit: Any, 
 def _validate(givens: Mapping[str, float]) -> None:
     bounded("crank radius r", givens["r"], DRAWN_LENGTH)
     rod_ratio_param(givens["rod_ratio"])
+    if "card.x0" in givens:  # a digitised card: checked as a file is
+        bounded("pressure-scale unit (drawn length of 1 at)", givens["pressure_unit"], DRAWN_LENGTH)
+        card_pair(givens)
     if "admission" in givens:
         indicator_givens(givens["filling"], givens["clearance"], givens["admission"], givens["back_pressure"],
                          givens["compression"], givens["pressure_unit"])
         positive("c v^2/r (pressure_ratio)", givens["pressure_ratio"])
+
+
+def _card_key(givens: Mapping[str, float]) -> tuple:
+    return tuple(sorted((k, float(v)) for k, v in givens.items() if k.startswith(("card.", "crank."))))
+
+
+_CARDS: dict[tuple, tuple[IndicatorCard, IndicatorCard]] = {}
+
+
+def card_pair(givens: Mapping[str, float]) -> tuple[IndicatorCard, IndicatorCard]:
+    """(cover side, crank side) from a figure's givens: the crank side's own card, or the cover side's mirrored."""
+    key = _card_key(givens)
+    if key not in _CARDS:
+        if len(_CARDS) > 64:  # a small memo: the checks read the cards for every model value
+            _CARDS.clear()
+        cover = card_from_givens(givens, "card.", "(cover side) in the givens")
+        crank = card_from_givens(givens, "crank.", "(crank side) in the givens") or cover.mirrored()
+        _CARDS[key] = (cover, crank)
+    return _CARDS[key]
+
+
+def card_force(givens: Mapping[str, float], lam: float) -> Any:
+    """The over-pressure (at) along the motion as a function of the crank angle over the whole turn (arrays)."""
+    cover, crank = card_pair(givens)
+
+    def force(w: Any) -> Any:
+        w = np.asarray(w, dtype=float)
+        x = 0.5 * (1.0 - np.cos(w) + (1.0 - np.sqrt(1.0 - (lam * np.sin(w)) ** 2)) / lam)
+        fwd = np.interp(x, *cover.forward) - np.interp(x, *crank.forward)
+        back = np.interp(x, *crank.back) - np.interp(x, *cover.back)
+        return np.where(np.mod(w, 2.0 * math.pi) <= math.pi, fwd, back)
+
+    return force
 
 
 def _approx(method: str, error: float) -> Provenance:
@@ -114,9 +159,9 @@ def _engine(revolution: Any, cranks: Any, machine: Any, force: str, parts: int) 
         if cranks or machine != "single":
             raise InvalidParameter("--cranks and --machine draw the whole revolution: add --revolution")
         return {}
-    if force != "unit":
-        raise InvalidParameter("the revolution is built for a unit force (--force unit): Baumann's model on the "
-                               "return stroke is not built yet")
+    if force == "baumann":
+        raise InvalidParameter("the revolution is built for a unit force (--force unit) or a digitised diagram "
+                               "(--indicator FILE.csv): Baumann's model on the return stroke is not built yet")
     m = MACHINES[machine]
     offsets = parse_cranks(cranks) if cranks else m.cranks
     if machine == "compound" and len(offsets) != 2:
@@ -128,10 +173,21 @@ def _engine(revolution: Any, cranks: Any, machine: Any, force: str, parts: int) 
 
 def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, force: str, kappa: float,
                      filling: float, clearance: float, admission: float, back_pressure: float, compression: float,
-                     pressure_unit: float, revolution: bool = False, cranks: str = "", machine: str = "single") -> Figure:
+                     pressure_unit: float, revolution: bool = False, cranks: str = "", machine: str = "single",
+                     indicator: str = "", indicator_crank_side: str = "") -> Figure:
     if force not in FORCES:
         raise InvalidParameter(f"force must be one of {', '.join(FORCES)}, got {force!r}")
-    givens = _givens(r, rod_ratio, force, kappa, pressure_unit, filling=filling, clearance=clearance,
+    cards = None
+    if indicator_crank_side and not indicator:
+        raise InvalidParameter("--indicator-crank-side goes with --indicator (the cover side's diagram)")
+    if indicator:
+        if force == "unit":
+            raise InvalidParameter("--indicator gives the forces: leave out --force unit")
+        force = "indicator"
+        cards = (load_indicator(indicator), load_indicator(indicator_crank_side) if indicator_crank_side else None)
+    elif force == "indicator":
+        raise InvalidParameter("--force indicator needs --indicator FILE.csv")
+    givens = _givens(r, rod_ratio, force, kappa, pressure_unit, cards, filling=filling, clearance=clearance,
                      admission=admission, back_pressure=back_pressure, compression=compression)
     used = check_parts(parts, method)
     if parts < 2:
@@ -153,6 +209,21 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
         vert = ctx.vert
         d = indicator_frame(b, base=axis, head=f["D0"], crank=f["D1"], prefix="ind.")
         scale = d.prefix + "v.crank"
+    elif force == "indicator":
+        with b.group("perpendicular to the stroke through O", "Senkrechte zum Hub durch O"):
+            vert = b.perpendicular_bisector("vert", f["D0"], f["D1"])
+        cover = draw_card(b, cards[0], prefix="card.", head=f["D0"], crank=f["D1"], axis=axis,
+                          de="der Deckelseite", en="of the cover side")
+        if cards[1] is not None:
+            crank = draw_card(b, cards[1], prefix="crank.", head=f["D0"], crank=f["D1"], axis=axis,
+                              de="der Kurbelseite", en="of the crank side")
+        else:  # Baumann's assumption: the crank side's card is the cover side's, seen from the other dead centre
+            crank = draw_card(b, cards[0], prefix="crank.", given_prefix="card.", head=f["D1"], crank=f["D0"],
+                              axis=axis, mirrored=True, up=(f["D0"], f["D1"]),
+                              de="der Kurbelseite (die der Deckelseite gespiegelt)",
+                              en="of the crank side (the cover side's mirrored)")
+        scale = b.erect_perpendicular("v.crank", f["D1"], axis, O)
+        return_heights: dict[int, tuple[str, str]] = {}
     else:
         with b.group("perpendicular to the stroke through O", "Senkrechte zum Hub durch O"):
             vert = b.perpendicular_bisector("vert", f["D0"], f["D1"])
@@ -177,17 +248,53 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
                 if force == "baumann":
                     ray = b.line(f"ray{k}", O, _free_force_mark(b, f, ctx, d, scale, k, P, n),
                                  de=f"Strahl O–M{k}", en=f"ray O-M{k}")
+                elif force == "indicator":
+                    marks = _card_marks(b, f, cover, crank, scale, k, bool(engine))
+                    ray = b.line(f"ray{k}", O, marks[0], de=f"Strahl O–M{k}", en=f"ray O-M{k}")
+                    if engine:
+                        rray = b.line(f"rray{k}", O, marks[1], de=f"Strahl O–M′{k} (Rückgang)",
+                                      en=f"ray O-M'{k} (return stroke)")
+                        rQ = b.intersect(f"rQ{k}", rray, h, rule=("only",), de=f"rQ{k}: P′·OK/r im Rückgang",
+                                         en=f"rQ{k}: P'·OK/r on the return stroke")
+                        return_heights[k] = (H, rQ)
                 else:
                     ray = unit_ray
                 Q = b.intersect(f"Q{k}", ray, h, rule=("only",), de=f"Q{k}: P′·OK/r (Strahlensatz)",
                                 en=f"Q{k}: P'·OK/r (intercept theorem)")
                 heights[k] = (H, Q)
     if engine:
-        build_revolution(b, f, points, n, heights, engine["shifts"], engine["cylinders"])
+        build_revolution(b, f, points, n, heights, engine["shifts"], engine["cylinders"],
+                         return_heights if force == "indicator" else None)
     else:
         _unrolled(b, f, points, n, heights)
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))
+
+
+def _card_marks(b: Builder, f: Mapping[str, str], cover: Any, crank: Any, scale: str, k: int,
+                both: bool) -> tuple[str, str | None]:
+    """The over-pressure at crank position k read on the cards' straightedge lines, marked over B (up = along
+    the motion): forward the cover side's line less the crank side's; with *both*, also the return stroke's."""
+    X = f"X{k}"
+    with b.group(f"over-pressure at {k} from the indicator cards", f"Überdruck bei {k} aus den Indikatordiagrammen"):
+        o = b.erect_perpendicular(f"o{k}", X, f["axis"], f["O"])
+        up = ("toward", None, None, 0.0, 1.0)
+        out: list[str | None] = []
+        for tag, work, against, de, en in (("", cover.forward, crank.forward, "Hingang", "forward stroke"),
+                                            ("r", crank.back, cover.back, "Rückgang", "return stroke")):
+            if tag and not both:
+                out.append(None)
+                continue
+            E = b.intersect(f"{tag}E{k}", o, work, rule=up, de=f"Druck der arbeitenden Seite ({de})",
+                            en=f"pressure of the working side ({en})")
+            R = b.intersect(f"{tag}R{k}", o, against, rule=up, de=f"Druck der anderen Seite ({de})",
+                            en=f"pressure of the other side ({en})")
+            kM = b.circle_segment(f"{tag}M{k}.k", f["D1"], R, E, de="Überdruck auf die Senkrechte in B getragen",
+                                  en="over-pressure carried to the vertical through B")
+            out.append(b.intersect(f"{tag}M{k}", scale, kM, rule=("toward", R, E),
+                                   de=f"{tag}M{k}: Überdruck über B (oben: in der Bewegungsrichtung)",
+                                   en=f"{tag}M{k}: over-pressure above B (up: along the motion)"))
+        return out[0], out[1]
 
 
 def _free_force_mark(b: Builder, f: Mapping[str, str], ctx: Any, d: Any, scale: str, k: int, P: str, n: int) -> str:
@@ -365,6 +472,8 @@ def model_force(w: float, g: Mapping[str, float], force: str) -> float:
     if force == "unit":
         return 1.0
     lam = 1.0 / g["rod_ratio"]
+    if force == "indicator":
+        return float(card_force(g, lam)(w))
     x = piston_fraction(w, lam)
     return (model_steam_pressure(x, g) - model_back_pressure(x, g)
             - g["pressure_ratio"] * (math.cos(w) + lam * math.cos(2.0 * w)))
@@ -380,7 +489,12 @@ def _kinks(g: Mapping[str, float], force: str) -> list[float]:
         return []
     lam = 1.0 / g["rod_ratio"]
     out = []
-    for x in (g["filling"], 1.0 - g["compression"]):
+    if force == "indicator":  # the cards' corners: every digitised point of the forward stroke's lines
+        cover, crank = card_pair(g)
+        corners = sorted({x for x in cover.forward[0] + crank.forward[0] if 0.0 < x < 1.0})
+    else:
+        corners = [g["filling"], 1.0 - g["compression"]]
+    for x in corners:
         lo, hi = 0.0, math.pi
         for _ in range(200):
             mid = 0.5 * (lo + hi)
@@ -408,6 +522,8 @@ def model_t_array(w: np.ndarray, g: Mapping[str, float], force: str) -> np.ndarr
     factor_w = np.sin(w + beta) / np.cos(beta)
     if force == "unit":
         return factor_w
+    if force == "indicator":
+        return card_force(g, lam)(w) * factor_w
     x = 0.5 * (1.0 - np.cos(w) + (1.0 - np.sqrt(1.0 - (lam * np.sin(w)) ** 2)) / lam)
     s1, s0, P, P0, s3 = g["filling"], g["clearance"], g["admission"], g["back_pressure"], g["compression"]
     steam = np.where(x <= s1, P + P0, (P + P0) * (s1 + s0) / (x + s0))
@@ -476,21 +592,31 @@ def tangential_checks(fig: Figure) -> list[Check]:
     lam = 1.0 / g["rod_ratio"]
     made_by = fig.replay.made_by()
     checks: list[Check] = []
-    scale = 1.0 if force == "unit" else max(1.0, g["admission"] + g["back_pressure"])
+    if force == "unit":
+        scale = 1.0
+    elif force == "indicator":
+        scale = max(1.0, max(p for c in card_pair(g) for p in c.forward[1] + c.back[1]))
+    else:
+        scale = max(1.0, g["admission"] + g["back_pressure"])
     for k in range(1, n):
         w = crank_angle(fig, point_name(fig, k))  # the angle the point really has: the division's error drops out
         checks.append(Check(f"OK/r at {k}", ok_over_r(fig, k), factor(w, lam), EUCLIDEAN_TOLERANCE,
                             "rod line and perpendicular through O: straightedge steps", "r"))
-        if force == "baumann":
+        if force in ("baumann", "indicator"):
             tol = 10 * EUCLIDEAN_TOLERANCE * scale / g["pressure_unit"]
+            why = ("the cards' straightedge lines met by the ordinate, compass" if force == "indicator" else
+                   "hyperbola rays, inertia ordinate and compass")
             checks.append(Check(f"P' at {k}", free_force(fig, k), model_force(w, g, force), tol,
-                                "hyperbola rays, inertia ordinate and compass: Euclidean, read in at", "at"))
-            checks.append(Check(f"T at {k}", t_over_unit(fig, k), model_t(w, g, force), 2 * tol,
-                                "P'·OK/r by the intercept theorem: Euclidean, read in at", "at"))
+                                f"{why}: Euclidean, read in at", "at"))
+            if not fig.params.get("revolution"):  # over a revolution the ordinates are checked as the sum's
+                checks.append(Check(f"T at {k}", t_over_unit(fig, k), model_t(w, g, force), 2 * tol,
+                                    "P'·OK/r by the intercept theorem: Euclidean, read in at", "at"))
         elif not fig.params.get("revolution"):  # over a revolution the ordinates are checked as the sum's
             checks.append(Check(f"T/P at {k}", t_over_unit(fig, k), factor(w, lam), EUCLIDEAN_TOLERANCE,
                                 "proportional angle with P' = r: Euclidean", "P"))
     if fig.params.get("revolution"):
+        if force == "indicator":
+            return checks + revolution_checks(fig, card_force(g, lam), scale / g["pressure_unit"])
         return checks + revolution_checks(fig)
     r = g["r"]
     prov = made_by[f"U{n}"].provenance
@@ -503,7 +629,7 @@ def tangential_checks(fig: Figure) -> list[Check]:
                         "n equal steps of the chord as drawn: Euclidean once the opening is set", "r"))
     model = model_summary(g, force)
     drawn = drawn_model(g, force, n)
-    unit = "at" if force == "baumann" else "P"
+    unit = "P" if force == "unit" else "at"
     why = "the French curve through n + 1 points (twice its error on exact data) and the planimeter (1e-6)"
     tol_h = 2.0 * abs(drawn["mean"] - model["mean"]) + 1e-6 * scale
     checks.append(Check("mean height (planimeter)", mean_height(fig), model["mean"], tol_h, why, unit))
@@ -527,15 +653,21 @@ TANGENTIAL = register(Construction(
     build=build_tangential,
     checks=tangential_checks,
     defaults={"rod_ratio": 5.0, "parts": 18, "method": "auto", "r": 1.0, "force": "baumann", "kappa": KAPPA,
-              **BAUMANN, "pressure_unit": 0.2, "revolution": False, "cranks": "", "machine": "single"},
+              **BAUMANN, "pressure_unit": 0.2, "revolution": False, "cranks": "", "machine": "single",
+              "indicator": "", "indicator_crank_side": ""},
     book_params=({"rod_ratio": 5.0, "parts": 18, "kappa": 8.0}, {"rod_ratio": 5.0, "parts": 18, "kappa": 2.0},
                  # a compound engine, cranks at 90 degrees: the summed diagram over a revolution and its excess areas
                  {"rod_ratio": 5.0, "parts": 18, "force": "unit", "revolution": True, "machine": "compound"}),
-    structural=("parts", "method", "force", "filling", "compression", "revolution", "cranks", "machine"),
+    structural=("parts", "method", "force", "filling", "compression", "revolution", "cranks", "machine", "indicator",
+                "indicator_crank_side"),
     extra={"help": {
         "cranks": "tangential-pressure --revolution: crank offsets in degrees ahead of the first, e.g. 0,90 "
                   "(multiples of 180/parts; default: the machine's)",
         "machine": "tangential-pressure --revolution: single (default; cranks as --cranks says), tandem (two "
                    "cylinders on one rod, forces added before the crank), compound (cranks at 0,90)",
+        "indicator": "tangential-pressure: a digitised indicator diagram of the cover side, CSV x,p (the loop in "
+                     "drawing order; x from the head-end dead centre in strokes, p absolute in at)",
+        "indicator_crank_side": "tangential-pressure: the crank side's diagram (default: the cover side's mirrored, "
+                                "Baumann's assumption)",
     }},
 ), validate=_validate)

@@ -161,3 +161,40 @@ def test_pressure_on_the_chords():
     assert card.pressure(0.1, "forward") == pytest.approx(9 - 3 * (0.1 / 0.3), abs=1e-15)
     assert card.pressure(0.65, "forward") == pytest.approx(6 - 3 * 0.5, abs=1e-15)
     assert card.pressure(0.4, "return") == 1.0
+
+
+def test_construction_with_a_card_via_check_and_replay(tmp_path, capsys):
+    card = write(tmp_path, STRAIGHT)
+    assert main(["check", "tangential-pressure", "--indicator", card, "--parts", "6"]) == 0
+    assert main(["check", "tangential-pressure", "--indicator", card, "--revolution", "--machine", "compound"]) == 0
+    out = tmp_path / "tp"
+    assert main(["replay", "tangential-pressure", "--indicator", card, "--revolution", "--frames", "none",
+                 "--out", str(out)]) == 0
+    capsys.readouterr()
+    # the protocol holds the card: it replays and checks without the file
+    os.remove(card)
+    assert main(["check", "--protocol", str(out / "protocol.json")]) == 0
+    # ... and a card edited in the protocol's givens is checked as a file is: x outside 0..1 is named
+    assert main(["check", "--protocol", str(out / "protocol.json"), "--given", "card.x1=1.5"]) == 2
+    err = capsys.readouterr().err
+    assert "x = 1.5 is outside 0 .. 1" in err and len(err.strip().splitlines()) == 1
+
+
+def test_construction_refuses_a_broken_card_and_writes_nothing(tmp_path, capsys):
+    bad = write(tmp_path, "x,p\n0,8\n1,2\n1,1\n0.5,9\n0,1\n0,8\n")
+    out = tmp_path / "never"
+    assert main(["replay", "tangential-pressure", "--indicator", bad, "--frames", "none", "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert "crosses itself" in err and len(err.strip().splitlines()) == 1
+    assert not out.exists()
+
+
+def test_construction_card_ordinates_against_closed_form(tmp_path):
+    """The drawn card: P' at each crank position is the straight-line over-pressure at the constructed piston path."""
+    from construct.constructions import get
+    from construct.constructions.tangential import free_force
+
+    fig = get("tangential-pressure").figure(indicator=write(tmp_path, STRAIGHT), parts=6, method="exact")
+    for k in range(1, 6):
+        w = mpmath.pi * k / 6
+        assert free_force(fig, k) == pytest.approx(float(over_pressure_mp(w, 5)), abs=1e-10)

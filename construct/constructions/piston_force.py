@@ -256,7 +256,7 @@ def build_piston_force(*, parts: int, method: str, revolution: bool = False, **v
 #: What the two-sided plate adds: the crank side's diagram below the stroke line, the return stroke's base line,
 #: piston forces, mass forces, lines and hatched free forces.
 REVOLUTION_PLATE = (r"rbase", r"rF\d+", r"rK\d+|rKs[12]", r"rM\d+", r"rforce[abc]", r"rmass", r"rfree\.[abc]",
-                    r"axis", r"D[01]", r"(ind|crk)\.(steam|backline)", r"(ind|crk)\.[ER]r?\d+", r"(ind|crk)\.Z[01]")
+                    r"axis", r"D[01]", r"(ind|crk)\.(steam|backline)", r"(ind|crk)\.[ER]r?\d+", r"ind\.Z[01]")
 
 
 def _side_scales(b: Builder, c: OrdinateFrame) -> dict[str, Any]:

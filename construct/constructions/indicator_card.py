@@ -48,7 +48,7 @@ import csv
 import io
 import math
 from dataclasses import dataclass
-from typing import Any, Sequence
+from typing import Any, Mapping, Sequence
 
 import numpy as np
 
@@ -56,7 +56,7 @@ from ..io.reading import read_bounded_text
 from ..kernel.errors import InputFileError
 
 __all__ = ["IndicatorCard", "parse_indicator_csv", "load_indicator", "card_givens", "card_from_givens", "draw_card",
-           "DrawnCard", "MAX_INDICATOR_BYTES", "MIN_POINTS",
+           "DrawnCard", "card_pair", "card_force", "MAX_INDICATOR_BYTES", "MIN_POINTS",
            "MAX_POINTS", "CLOSE_TOLERANCE", "MAX_CARD_PRESSURE", "STROKES"]
 
 #: The largest indicator file read (bytes): 5000 rows of two numbers need about 100 kB.
@@ -356,3 +356,36 @@ def draw_card(b: Any, card: IndicatorCard, *, prefix: str, head: str, crank: str
             out.append(b.polyline(f"{prefix}{name}", line, de=f"{what[0]}: Punkte mit dem Lineal verbunden",
                                   en=f"{what[1]}: the points joined with the straightedge"))
     return DrawnCard(out[0], out[1])
+
+
+def _card_key(givens: Mapping[str, float]) -> tuple:
+    return tuple(sorted((k, float(v)) for k, v in givens.items() if k.startswith(("card.", "crank."))))
+
+
+_CARDS: dict[tuple, tuple[IndicatorCard, IndicatorCard]] = {}
+
+
+def card_pair(givens: Mapping[str, float]) -> tuple[IndicatorCard, IndicatorCard]:
+    """(cover side, crank side) from a figure's givens: the crank side's own card, or the cover side's mirrored."""
+    key = _card_key(givens)
+    if key not in _CARDS:
+        if len(_CARDS) > 64:  # a small memo: the checks read the cards for every model value
+            _CARDS.clear()
+        cover = card_from_givens(givens, "card.", "(cover side) in the givens")
+        crank = card_from_givens(givens, "crank.", "(crank side) in the givens") or cover.mirrored()
+        _CARDS[key] = (cover, crank)
+    return _CARDS[key]
+
+
+def card_force(givens: Mapping[str, float], lam: float) -> Any:
+    """The over-pressure (at) along the motion as a function of the crank angle over the whole turn (arrays)."""
+    cover, crank = card_pair(givens)
+
+    def force(w: Any) -> Any:
+        w = np.asarray(w, dtype=float)
+        x = 0.5 * (1.0 - np.cos(w) + (1.0 - np.sqrt(1.0 - (lam * np.sin(w)) ** 2)) / lam)
+        fwd = np.interp(x, *cover.forward) - np.interp(x, *crank.forward)
+        back = np.interp(x, *crank.back) - np.interp(x, *cover.back)
+        return np.where(np.mod(w, 2.0 * math.pi) <= math.pi, fwd, back)
+
+    return force

@@ -64,6 +64,7 @@ from .crank import angle_tolerance, build_frame, crank_angle, point_name, rod_ar
 from .indicator import back_pressure as model_back
 from .indicator import indicator_frame, indicator_givens, pressures_at, square
 from .indicator import steam_pressure as model_steam
+from .indicator_card import card_givens, card_pair, draw_card, load_indicator
 from .ordinates import OrdinateFrame, ordinate_line, ordinate_value, point_kind
 
 __all__ = ["PISTON_FORCE", "TAFEL_I", "HP_DIAGRAM", "GRAVITY", "piston_area_mean", "build_piston_force",
@@ -114,7 +115,7 @@ def mass_force_scale(g: Mapping[str, float]) -> float:
 def _givens(*, weight: Any, rpm: Any, crank_radius: Any, rod_length: Any, piston_area: Any, filling: Any,
             clearance: Any, admission: Any, back_pressure: Any, compression: Any, scale: Any,
             force_unit: Any, piston_area_cover: Any = None, piston_area_crank: Any = None,
-            revolution: bool = False) -> dict[str, float]:
+            revolution: bool = False, cards: Any = None) -> dict[str, float]:
     out = {"weight": bounded("weight G of the reciprocating parts (kg)", weight, WEIGHT),
            "rpm": bounded("revolutions per minute n", rpm, RPM),
            "crank_radius": bounded("crank radius R (m)", crank_radius, LENGTH_M),
@@ -134,18 +135,28 @@ def _givens(*, weight: Any, rpm: Any, crank_radius: Any, rod_length: Any, piston
     sides = {key: bounded(what, value, PISTON_AREA) for key, what, value in (
         ("piston_area_cover", "piston area F' of the cover side (cm^2)", piston_area_cover),
         ("piston_area_crank", "piston area F'' of the crank side (cm^2)", piston_area_crank)) if value is not None}
+    if cards is not None:  # a digitised card (and the crank side's own, if any): its points are givens
+        out.update(card_givens(cards[0], "card."))
+        if cards[1] is not None:
+            out.update(card_givens(cards[1], "crank."))
+        for key in HP_DIAGRAM:  # the idealised diagram's givens: the card replaces them
+            del out[key]
     if revolution:
         out.update(sides)
-        if out["filling"] + out["compression"] >= 1.0:
+        if cards is None and out["filling"] + out["compression"] >= 1.0:
             raise InvalidParameter(f"the compression must begin after the cut-off (s1 + s3 < s) for this figure, "
                                    f"got filling {filling!r} and compression {compression!r}")
     return out
 
 
 def _validate(g: Mapping[str, float]) -> None:
+    if "card.x0" in g:  # drawn from a card: the idealised diagram's givens are not in the protocol
+        g = {**HP_DIAGRAM, **g}
     _givens(**{k: g[k] for k in ("weight", "rpm", "crank_radius", "rod_length", "piston_area", "filling",
                                  "clearance", "admission", "back_pressure", "compression", "scale", "force_unit")},
             **{k: g[k] for k in ("piston_area_cover", "piston_area_crank") if k in g})
+    if "card.x0" in g:
+        card_pair(g)  # the card in the givens, checked as a file is
 
 
 # --------------------------------------------------------------------------
@@ -187,13 +198,24 @@ def _carry(b: Builder, name: str, foot: str, ordinate: str, a: str, z: str, *, d
     return b.intersect(name, ordinate, k, rule=("toward", a, z), role=role, de=de, en=en, labels=labels)
 
 
-def build_piston_force(*, parts: int, method: str, revolution: bool = False, **values: Any) -> Figure:
-    givens = _givens(revolution=bool(revolution), **values)
+def build_piston_force(*, parts: int, method: str, revolution: bool = False, indicator: str = "",
+                       indicator_crank_side: str = "", **values: Any) -> Figure:
+    cards = None
+    if indicator_crank_side and not indicator:
+        raise InvalidParameter("--indicator-crank-side goes with --indicator (the cover side's diagram)")
+    if indicator:
+        cards = (load_indicator(indicator), load_indicator(indicator_crank_side) if indicator_crank_side else None)
+    givens = _givens(revolution=bool(revolution), cards=cards, **values)
     used = check_parts(parts, method)
-    params = {"parts": parts, "method": used, "requested_method": method, "filling": givens["filling"],
-              "compression": givens["compression"], "plate": PLATE}
+    params = {"parts": parts, "method": used, "requested_method": method, "filling": values["filling"],
+              "compression": values["compression"], "plate": PLATE}
     if revolution:
         params.update(revolution=True, plate=PLATE + REVOLUTION_PLATE)
+    if cards is not None:
+        del params["filling"], params["compression"]  # the card replaces the idealised diagram
+        params.update(cards=True, plate=params["plate"] + CARD_PLATE)
+        if cards[1] is None:
+            params["mirrored"] = True
     b = Builder("piston-force", givens, params)
     f = _frame(b)
     c = _mass_setup(b, f)
@@ -204,8 +226,12 @@ def build_piston_force(*, parts: int, method: str, revolution: bool = False, **v
     for k, p in enumerate(points):
         b.set_label(p, str(k))
     rod_arcs(b, f, points)
-    d = indicator_frame(b, base=f["axis"], head=f["D0"], crank=f["D1"], stroke=("crank_radius", "scale"),
-                        prefix="ind.", pressure_scale=("piston_area_cover" if revolution else "piston_area", "force_unit"))
+    if cards is None:
+        d = indicator_frame(b, base=f["axis"], head=f["D0"], crank=f["D1"], stroke=("crank_radius", "scale"),
+                            prefix="ind.", pressure_scale=("piston_area_cover" if revolution else "piston_area",
+                                                           "force_unit"))
+    else:
+        d = _draw_cards(b, f, cards, revolution)
     with b.group("base line of the force diagram (Abb. 1055)", "Grundlinie des Kraftdiagramms (Abb. 1055)"):
         Of = b.given_point("Of", 0.0, -1.5 if revolution else -0.8, unit="scale",
                            de="Punkt der Kolbenweglinie des Kraftdiagramms",
@@ -217,10 +243,18 @@ def build_piston_force(*, parts: int, method: str, revolution: bool = False, **v
             o = ordinate_line(b, c, f"ord{k}", f"X{k}")
             ords.append((str(k), o))
     # the cut-off and the start of compression: where the force line has its corners
-    corners = [("s1", d.cutoff_ordinate), ("s2", d.compression_ordinate)]
+    corners = [("s1", d.cutoff_ordinate), ("s2", d.compression_ordinate)] if cards is None else []
     with b.group("piston forces from the steam diagram", "Kolbenkräfte aus dem Dampfdiagramm"):
         for tag, o in ords + corners:
             with b.group(f"piston force at {tag}", f"Kolbenkraft bei {tag}"):
+                if cards is not None:  # both cards drawn in their own side's area scale: the forces read directly
+                    pr = _card_points(b, d, o, tag, "forward")
+                    foot = b.intersect(f"F{tag}", o, fbase, rule=("only",), de=f"Fußpunkt F{tag}", en=f"foot F{tag}",
+                                       role="result")
+                    _carry(b, f"K{tag}", foot, o, pr["back"], pr["steam"],
+                           de=f"Kolbenkraft K{tag} = F′p′ − F″p″ (Kurbelseite bis Deckelseite)",
+                           en=f"piston force K{tag} = F'p' - F''p'' (crank side to cover side)")
+                    continue
                 pr = pressures_at(b, d, o, tag, envelope=True)
                 foot = b.intersect(f"F{tag}", o, fbase, rule=("only",), de=f"Fußpunkt F{tag}", en=f"foot F{tag}",
                                    role="result" if tag.isdigit() else "construction")
@@ -242,13 +276,14 @@ def build_piston_force(*, parts: int, method: str, revolution: bool = False, **v
                 b.intersect(f"M{k}", f"ord{k}", k_, rule=("left", V, c.gf.origin), role="result",
                             de=f"Massenkraft M{k} (oben: Beschleunigung)", en=f"mass force M{k} (up: acceleration)")
     if revolution:
-        _diagram_lines(b, d, f["axis"], n, "", "der Deckelseite", "of the cover side")
-        _return_stroke(b, f, c, sides, n, points)
-    else:  # J as seed 001 draws it: one piston area, the over-pressure's zero
+        if cards is None:
+            _diagram_lines(b, d, f["axis"], n, "", "der Deckelseite", "of the cover side")
+        _return_stroke(b, f, c, sides, n, points, d if cards is not None else None)
+    elif cards is None:  # J as seed 001 draws it: one piston area, the over-pressure's zero
         _pressure_change(b, d, fbase)
-    _curves(b, n, fbase)
+    _curves(b, n, fbase, smooth=cards is not None)
     if revolution:
-        _curves(b, n, "rbase", prefix="r", forward=False)
+        _curves(b, n, "rbase", prefix="r", forward=False, smooth=cards is not None)
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))
 
@@ -318,25 +353,67 @@ def _diagram_lines(b: Builder, d: Any, axis: str, n: int, tag: str, de: str, en:
                            de=f"{what[0]} {de}, an der Ecke abgesetzt", en=f"{what[1]} {en}, laid anew at its corner")
 
 
+#: What a figure drawn from cards adds: each card's points and its two strokes' straightedge lines.
+CARD_PLATE = (r"(card|crank)\.C\d+", r"(card|crank)\.(fwd|back)", r"axis", r"D[01]")
+
+
+def _draw_cards(b: Builder, f: Mapping[str, str], cards: Any, revolution: bool) -> dict[str, str]:
+    """The cover side's card and the crank side's (its own, or the cover side's mirrored), each in the scale of
+    its piston area (F' and F'' over the revolution; the mean F on the forward stroke alone, as seed 001's P = F p)."""
+    area = ("piston_area_cover", "piston_area_crank") if revolution else ("piston_area", "piston_area")
+    stroke = ("crank_radius", "scale")
+    cover = draw_card(b, cards[0], prefix="card.", head=f["D0"], crank=f["D1"], axis=f["axis"], stroke=stroke,
+                      pressure_scale=(area[0], "force_unit"), de="der Deckelseite", en="of the cover side")
+    if cards[1] is not None:
+        crank = draw_card(b, cards[1], prefix="crank.", head=f["D0"], crank=f["D1"], axis=f["axis"], stroke=stroke,
+                          pressure_scale=(area[1], "force_unit"), de="der Kurbelseite", en="of the crank side")
+    else:
+        crank = draw_card(b, cards[0], prefix="crank.", given_prefix="card.", head=f["D1"], crank=f["D0"],
+                          axis=f["axis"], stroke=stroke, pressure_scale=(area[1], "force_unit"), mirrored=True,
+                          up=(f["D0"], f["D1"]), de="der Kurbelseite (die der Deckelseite gespiegelt)",
+                          en="of the crank side (the cover side's mirrored)")
+    return {"cover.fwd": cover.forward, "cover.back": cover.back, "crank.fwd": crank.forward, "crank.back": crank.back}
+
+
+def _card_points(b: Builder, d: Mapping[str, str], ordinate: str, tag: str, stroke: str) -> dict[str, str]:
+    """Where the ordinate meets the working side's and the other side's line of this stroke."""
+    up = ("toward", None, None, 0.0, 1.0)
+    work, other = ("cover.fwd", "crank.fwd") if stroke == "forward" else ("crank.back", "cover.back")
+    steam = b.intersect(f"E{tag}", ordinate, d[work], rule=up, de="Linie der arbeitenden Seite",
+                        en="line of the working side")
+    back = b.intersect(f"R{tag}", ordinate, d[other], rule=up, de="Linie der anderen Seite", en="line of the other side")
+    return {"steam": steam, "back": back}
+
+
 def _foot_on_axis(b: Builder, f: Mapping[str, str], ordinate: str, tag: str) -> str:
     return b.intersect(f"{tag}.X", ordinate, f["axis"], rule=("only",), de=f"Fußpunkt der Ordinate {tag}",
                        en=f"foot of the ordinate {tag}")
 
 
 def _return_stroke(b: Builder, f: Mapping[str, str], c: OrdinateFrame, sides: Mapping[str, Any], n: int,
-                   points: list[str]) -> None:
+                   points: list[str], cards: Mapping[str, str] | None = None) -> None:
     """The return stroke: the crank side's diagram (the cover side's mirrored, drawn below the stroke line in the
-    scale of F''), its piston forces F'' p'' - F' p' and the mass forces of (298) with the minus sign."""
-    d = indicator_frame(b, base=f["axis"], head=f["D1"], crank=f["D0"], stroke=("crank_radius", "scale"),
-                        prefix="crk.", pressure_scale=("piston_area_crank", "force_unit"))
+    scale of F''), its piston forces F'' p'' - F' p' and the mass forces of (298) with the minus sign.  With
+    *cards* (drawn cards, each in its own side's area scale) the forces are read between their return lines."""
+    d = None if cards is not None else indicator_frame(
+        b, base=f["axis"], head=f["D1"], crank=f["D0"], stroke=("crank_radius", "scale"), prefix="crk.",
+        pressure_scale=("piston_area_crank", "force_unit"))
     with b.group("base line of the return stroke's force diagram", "Grundlinie des Kraftdiagramms für den Rückgang"):
         Or = b.given_point("Or", 0.0, -2.6, unit="scale", de="Punkt der Kolbenweglinie des Rückgangs",
                            en="point of the return stroke's piston-path line")
         rbase = b.parallel_through("rbase", Or, f["D0"], f["D1"], role="result")
-    corners = [("s1", d.cutoff_ordinate), ("s2", d.compression_ordinate)]
+    corners = [("s1", d.cutoff_ordinate), ("s2", d.compression_ordinate)] if d is not None else []
     with b.group("piston forces of the return stroke (crank side)", "Kolbenkräfte des Rückgangs (Kurbelseite)"):
         for tag, o in [(str(k), f"ord{k}") for k in range(n + 1)] + corners:
             with b.group(f"return-stroke piston force at {tag}", f"Kolbenkraft im Rückgang bei {tag}"):
+                if d is None:
+                    pr = _card_points(b, cards, o, f"r{tag}", "return")
+                    rf = b.intersect(f"rF{tag}", o, rbase, rule=("only",), de=f"Fußpunkt rF{tag}", en=f"foot rF{tag}",
+                                     role="result")
+                    _carry(b, f"rK{tag}", rf, o, pr["back"], pr["steam"],
+                           de=f"Kolbenkraft rK{tag} = F″p″ − F′p′ (oben: in Richtung des Rückgangs)",
+                           en=f"piston force rK{tag} = F''p'' - F'p' (up: in the direction of the return stroke)")
+                    continue
                 pr = pressures_at(b, d, o, f"r{tag}", envelope=True)
                 foot = f"X{tag}" if tag.isdigit() else _foot_on_axis(b, f, o, f"r{tag}")
                 back = _rescale(b, sides, f"rbk{tag}", foot, o, pr["back"], to_crank=False)
@@ -345,7 +422,8 @@ def _return_stroke(b: Builder, f: Mapping[str, str], c: OrdinateFrame, sides: Ma
                 _carry(b, f"rK{tag}", rf, o, pr["steam"], back,
                        de=f"Kolbenkraft rK{tag} = F″p″ − F′p′ (oben: in Richtung des Rückgangs)",
                        en=f"piston force rK{tag} = F''p'' - F'p' (up: in the direction of the return stroke)")
-    _diagram_lines(b, d, f["axis"], n, "r", "der Kurbelseite", "of the crank side")
+    if d is not None:
+        _diagram_lines(b, d, f["axis"], n, "r", "der Kurbelseite", "of the crank side")
     with b.group("mass forces of the return stroke: eq. (298) with the minus sign",
                  "Massenkräfte des Rückgangs: Gl. (298) mit dem Minuszeichen"):
         for k in range(n + 1):
@@ -387,13 +465,31 @@ def _down(d) -> tuple[str, str, str]:
 
 
 def _curves(b: Builder, n: int, fbase: str, *, prefix: str = "", corners: tuple[str, str] = ("s1", "s2"),
-            forward: bool = True) -> None:
+            forward: bool = True, smooth: bool = False) -> None:
     """The lines drawn through the points: piston force in three pieces (its corners at s1 and s2), mass forces.
 
     *prefix* names the stroke's points (``""`` forward, ``"r"`` return); on the return stroke the piece of the
     admission lies at the crank end, so the pieces are taken from that end (*forward* False).
     """
     p = prefix
+    if smooth:  # a measured diagram: no corners known in advance, one line through the points
+        with b.group("the lines drawn through the points", "Die Linien durch die Punkte gezogen"):
+            b.french_curve(f"{p}forcea", fbase, [f"{p}K{k}" for k in range(n + 1)], {},
+                           de="Kolbenkraftlinie", en="piston-force line")
+            b.french_curve(f"{p}mass", fbase, [f"{p}M{k}" for k in range(n + 1)], {},
+                           de="Linie der Massenkräfte", en="line of the mass forces")
+        with b.group("free forces hatched vertically; the mass-force areas",
+                     "Freie Kräfte senkrecht gestrichelt; Massenkraftflächen"):
+            b.area_between(f"{p}free.a", f"{p}forcea", f"{p}mass", f"{p}M0", f"{p}M{n}", hatch_deg=90.0,
+                           role="result", de="freie Kräfte zwischen Kolbenkraft- und Massenkraftlinie",
+                           en="free forces between the piston-force line and the mass-force line")
+            b.area_between(f"{p}massarea", f"{p}mass", fbase, f"{p}M0", f"{p}M{n}", role="construction",
+                           de="Beschleunigungsfläche über, Verzögerungsfläche unter der Kolbenweglinie",
+                           en="acceleration area above, deceleration area below the piston-path line")
+            b.planimeter(f"{p}balance", f"{p}massarea",
+                         de="mit dem Planimeter umfahren: Beschleunigungs- weniger Verzögerungsfläche",
+                         en="planimeter round it: acceleration less deceleration area")
+        return
     sign = 1.0 if forward else -1.0
     xs = {k: sign * b[f"X{k}"][0] for k in range(n + 1)}
     c1, c2 = f"{p}K{corners[0]}", f"{p}K{corners[1]}"
@@ -570,7 +666,12 @@ def piston_force_checks(fig: Figure) -> list[Check]:
     unit = g["force_unit"]
     stroke = 2.0 * g["crank_radius"] * g["scale"]
     # Euclidean float error ~1e-12 of the figure, read in kg: divide by the force unit.
-    size = max(stroke, (g["admission"] + g["back_pressure"]) * F * unit, A * unit, 1.0)
+    if "card.x0" in g:
+        top = max(p for c in card_pair(g) for p in c.forward[1] + c.back[1])
+        F = max(_areas(g))
+    else:
+        top = g["admission"] + g["back_pressure"]
+    size = max(stroke, top * F * unit, A * unit, 1.0)
     kg_tol = EUCLIDEAN_TOLERANCE * size / unit
     made_by = fig.replay.made_by()
     checks: list[Check] = []
@@ -596,15 +697,17 @@ def piston_force_checks(fig: Figure) -> list[Check]:
         checks.append(Check(f"free force {k}", piston_force(fig, k) - mass_force(fig, k),
                             force - A * _two_term(w_measured, lam), 2 * kg_tol, "difference of two Euclidean ordinates",
                             "kg"))
-    for tag, x in (("s1", g["filling"]), ("s2", 1.0 - g["compression"])):
+    cards = "card.x0" in g
+    for tag, x in () if cards else (("s1", g["filling"]), ("s2", 1.0 - g["compression"])):
         checks.append(Check(f"piston force at {tag}", piston_force(fig, tag), _forward_force(x, g),
                             kg_tol, "Euclidean", "kg"))
     if fig.params.get("revolution"):
         return checks + _return_checks(fig, kg_tol, lam, A, made_by)
-    xj = j_abscissa(g)
-    checks.append(Check("pressure change J (abscissa)", abscissa(fig, "J"), xj, EUCLIDEAN_TOLERANCE * 10,
-                        "fourth proportional and intercept theorem: Euclidean", "stroke"))
-    if g["filling"] < xj < 1.0 and xj > 1.0 - g["compression"]:
+    xj = None if cards else j_abscissa(g)
+    if not cards:  # J is constructed from the model's hyperbolas; a card has none
+        checks.append(Check("pressure change J (abscissa)", abscissa(fig, "J"), xj, EUCLIDEAN_TOLERANCE * 10,
+                            "fourth proportional and intercept theorem: Euclidean", "stroke"))
+    if not cards and g["filling"] < xj < 1.0 and xj > 1.0 - g["compression"]:
         checks.append(Check("p_ü at J", model_steam(xj, g) - model_back(xj, g), 0.0, 1e-12 * (g["admission"] + 1),
                             "J is the zero of the over-pressure", "at"))
     # the area balance: reported, not assumed
@@ -634,8 +737,18 @@ def piston_force_checks(fig: Figure) -> list[Check]:
     return checks
 
 
+def _areas(g: Mapping[str, float]) -> tuple[float, float]:
+    if "piston_area_cover" in g:
+        return g["piston_area_cover"], g["piston_area_crank"]
+    return g["piston_area"], g["piston_area"]
+
+
 def _forward_force(x: float, g: Mapping[str, float]) -> float:
     """The piston force on the forward stroke (kg): F p_ü with one area, F' p' - F'' p'' with both sides'."""
+    if "card.x0" in g:  # the cards' lines, straight between their points
+        cover, crank = card_pair(g)
+        f1, f2 = _areas(g)
+        return f1 * cover.pressure(x, "forward") - f2 * crank.pressure(x, "forward")
     if "piston_area_cover" in g:
         return g["piston_area_cover"] * model_steam(x, g) - g["piston_area_crank"] * model_back(x, g)
     return g["piston_area"] * (model_steam(x, g) - model_back(x, g))
@@ -643,6 +756,10 @@ def _forward_force(x: float, g: Mapping[str, float]) -> float:
 
 def _return_force(x: float, g: Mapping[str, float]) -> float:
     """F'' p'' - F' p' on the return stroke at piston position x: the crank side's diagram is the cover side's mirrored."""
+    if "card.x0" in g:
+        cover, crank = card_pair(g)
+        f1, f2 = _areas(g)
+        return f2 * crank.pressure(x, "return") - f1 * cover.pressure(x, "return")
     return g["piston_area_crank"] * model_steam(1.0 - x, g) - g["piston_area_cover"] * model_back(1.0 - x, g)
 
 
@@ -666,7 +783,7 @@ def _return_checks(fig: Figure, kg_tol: float, lam: float, A: float, made_by: Ma
         checks.append(Check(f"return piston force {k} (F''p'' - F'p')", return_piston_force(fig, k),
                             _return_force(x, g), 2 * kg_tol,
                             "Euclidean: mirrored diagram, proportional angle for F'/F'', compass transfer", "kg"))
-    for tag, x in (("s1", 1.0 - g["filling"]), ("s2", g["compression"])):
+    for tag, x in () if "card.x0" in g else (("s1", 1.0 - g["filling"]), ("s2", g["compression"])):
         checks.append(Check(f"return piston force at {tag}", return_piston_force(fig, tag), _return_force(x, g),
                             2 * kg_tol, "Euclidean", "kg"))
     curve_tol = _curve_area_tolerance(n, lam) * A * 2.0 * g["crank_radius"]
@@ -695,10 +812,11 @@ PISTON_FORCE = register(Construction(
     build=lambda parts, method, **v: build_piston_force(parts=parts, method=method, **v),
     checks=piston_force_checks,
     defaults={"parts": 18, "method": "auto", **TAFEL_I, **HP_DIAGRAM, "scale": 2.5, "force_unit": 1.2e-4,
-              "piston_area_cover": PISTON_AREA_COVER, "piston_area_crank": PISTON_AREA_CRANK, "revolution": False},
+              "piston_area_cover": PISTON_AREA_COVER, "piston_area_crank": PISTON_AREA_CRANK, "revolution": False,
+              "indicator": "", "indicator_crank_side": ""},
     # Tafel I: high-pressure and low-pressure side; and both strokes of the high-pressure side, F' and F''
     book_params=({}, {"weight": 990.0}, {"revolution": True}),
-    structural=("parts", "method", "filling", "compression", "revolution"),
+    structural=("parts", "method", "filling", "compression", "revolution", "indicator", "indicator_crank_side"),
     sweep=lambda g, ratios: {**g, "rod_length": ratios * g["crank_radius"]},  # L = (L/R) R
     extra={"help": {
         "weight": "weight G of the reciprocating parts in kg (Tafel I: 830 high-pressure, 990 low-pressure side)",

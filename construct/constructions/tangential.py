@@ -61,7 +61,7 @@ from .indicator import BAUMANN, indicator_frame, indicator_givens, pressures_at
 from .indicator import back_pressure as model_back_pressure
 from .indicator import steam_pressure as model_steam_pressure
 from .ordinates import inertia_setup, ordinate_value, point_kind
-from .indicator_card import IndicatorCard, card_from_givens, card_givens, draw_card, load_indicator
+from .indicator_card import card_force, card_givens, card_pair, draw_card, load_indicator
 from .revolution import MACHINES, REVOLUTION_PLATE, build_revolution, crank_shifts, parse_cranks, revolution_checks
 
 __all__ = ["TANGENTIAL", "build_tangential", "tangential_checks", "ok_over_r", "t_over_unit", "free_force",
@@ -107,39 +107,6 @@ def _validate(givens: Mapping[str, float]) -> None:
         indicator_givens(givens["filling"], givens["clearance"], givens["admission"], givens["back_pressure"],
                          givens["compression"], givens["pressure_unit"])
         positive("c v^2/r (pressure_ratio)", givens["pressure_ratio"])
-
-
-def _card_key(givens: Mapping[str, float]) -> tuple:
-    return tuple(sorted((k, float(v)) for k, v in givens.items() if k.startswith(("card.", "crank."))))
-
-
-_CARDS: dict[tuple, tuple[IndicatorCard, IndicatorCard]] = {}
-
-
-def card_pair(givens: Mapping[str, float]) -> tuple[IndicatorCard, IndicatorCard]:
-    """(cover side, crank side) from a figure's givens: the crank side's own card, or the cover side's mirrored."""
-    key = _card_key(givens)
-    if key not in _CARDS:
-        if len(_CARDS) > 64:  # a small memo: the checks read the cards for every model value
-            _CARDS.clear()
-        cover = card_from_givens(givens, "card.", "(cover side) in the givens")
-        crank = card_from_givens(givens, "crank.", "(crank side) in the givens") or cover.mirrored()
-        _CARDS[key] = (cover, crank)
-    return _CARDS[key]
-
-
-def card_force(givens: Mapping[str, float], lam: float) -> Any:
-    """The over-pressure (at) along the motion as a function of the crank angle over the whole turn (arrays)."""
-    cover, crank = card_pair(givens)
-
-    def force(w: Any) -> Any:
-        w = np.asarray(w, dtype=float)
-        x = 0.5 * (1.0 - np.cos(w) + (1.0 - np.sqrt(1.0 - (lam * np.sin(w)) ** 2)) / lam)
-        fwd = np.interp(x, *cover.forward) - np.interp(x, *crank.forward)
-        back = np.interp(x, *crank.back) - np.interp(x, *cover.back)
-        return np.where(np.mod(w, 2.0 * math.pi) <= math.pi, fwd, back)
-
-    return force
 
 
 def _approx(method: str, error: float) -> Provenance:

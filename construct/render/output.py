@@ -94,7 +94,8 @@ _BOOK_METHODS = {
     "neusis": ("Einschiebung (Archimedes)", "neusis (Archimedes)"),
     "dividers": ("Teilung mit dem Stechzirkel", "division with the dividers by trial"),
 }
-_HIDDEN = ("givens", "group_titles", "requested_method", "plate", "offsets", "shifts", "cylinders")
+_HIDDEN = ("givens", "group_titles", "requested_method", "plate", "offsets", "shifts", "cylinders", "cards",
+           "mirrored")
 
 
 def _num(v) -> str:
@@ -111,7 +112,11 @@ def params_text(figure: Figure, lang: str = "en") -> str:
     ("L/r = 5, 18 parts, Dürer's division", 'L/r = 4, Hub in 10 Teilen')
     """
     i = 0 if lang == "de" else 1
-    values = {**dict(figure.replay.givens), **{k: v for k, v in figure.params.items() if k not in _HIDDEN}}
+    givens = dict(figure.replay.givens)
+    # a digitised card's points are givens named card.x0, card.p0, ...: the caption counts them
+    cards = {k.split(".")[0] for k in givens if "." in k}
+    values = {**{k: v for k, v in givens.items() if "." not in k},
+              **{k: v for k, v in figure.params.items() if k not in _HIDDEN}}
     out = []
     order = ("rod_ratio", "pressure_ratio", "pressure_unit", "parts", "divisions", "method")
     for key in sorted(values, key=lambda k: (order.index(k) if k in order else len(order), k)):
@@ -125,6 +130,13 @@ def params_text(figure: Figure, lang: str = "en") -> str:
             out.append(text.replace(".", ",") if lang == "de" and "kg" in text else text)
         else:
             out.append(f"{key.replace('_', ' ')} = {_num(v)}")  # a parameter the books do not name
+    for side, (de, en) in (("card", ("Indikatordiagramm", "indicator card")),
+                           ("crank", ("Diagramm der Kurbelseite", "crank-side card"))):
+        if side in cards:
+            count = sum(1 for k in givens if k.startswith(f"{side}.x"))
+            out.append(f"{(de, en)[i]}: {count} {('Punkte', 'points')[i]}")
+    if "card" in cards and "crank" not in cards:
+        out.append(("Kurbelseite gespiegelt (Baumann)", "crank side mirrored (Baumann)")[i])
     return ", ".join(out)
 
 

@@ -408,7 +408,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                     marks.append(Mark(mid if j == 0 else f"{mid}-{j}", kind="area",
                                       geom=tuple((p[0], p[1]) for p in ring), hatch=obj.hatch_deg, **common))
             elif hasattr(obj, "curve_points"):
-                marks.append(Mark(mid, kind="curve", geom=tuple((p[0], p[1]) for p in obj.curve_points()), **common))
+                marks.append(Mark(mid, kind="curve", geom=_curve_geom(obj), **common))
     breaks: tuple[tuple[float, float, float], ...] = ()
     if break_axis and (shown is None or furniture):
         # a plate keeps more of the broken stretch: the rod drawn across it stays a shallow line
@@ -646,3 +646,15 @@ def _extreme_points(m: Mark) -> list[tuple[float, float]]:
     if m.kind in ("curve", "area"):
         return list(g)
     return []
+
+
+def _curve_geom(obj: Any) -> tuple[tuple[float, float], ...]:
+    """The points a curve mark is drawn through (smoothly): a straightedge polyline densely along its segments,
+    so that the smooth path stays on them (through its vertices alone it would swing past them)."""
+    pts = [(p[0], p[1]) for p in obj.curve_points()]
+    if type(obj).__name__ != "Polyline" or len(pts) < 2:
+        return tuple(pts)
+    out = [pts[0]]
+    for (ax, ay), (bx, by) in zip(pts, pts[1:]):
+        out += [(ax + (bx - ax) * t / 24.0, ay + (by - ay) * t / 24.0) for t in range(1, 25)]
+    return tuple(out)

@@ -129,3 +129,26 @@ def test_replay_and_check_cli(tmp_path, capsys):
     assert main(["replay", "piston-force", "--revolution", "--parts", "6", "--frames", "none",
                  "--out", str(tmp_path / "pf")]) == 0
     assert (tmp_path / "pf" / "final.svg").exists()
+
+
+STRAIGHT = "x,p\n0,8\n0.5,5\n1,2\n1,1\n0.5,1\n0,1\n0,8\n"
+
+
+def test_piston_force_from_a_card_against_closed_form(tmp_path):
+    """A straight card (cover side 8 - 6x forward, 1 at back; crank side mirrored): F'p' - F''p'' both strokes."""
+    card = tmp_path / "card.csv"
+    card.write_text(STRAIGHT)
+    fig = PF.figure(indicator=str(card), revolution=True, parts=6, method="exact")
+    for k in range(7):
+        x = mpmath.mpf(abscissa(fig, f"K{k}"))
+        forward = F1 * (8 - 6 * x) - F2 * 1          # crank side exhausts at 1 at (the cover's back line mirrored)
+        back = F2 * (8 - 6 * (1 - x)) - F1 * 1       # the crank side's steam line is the cover's mirrored
+        assert piston_force(fig, k) == pytest.approx(float(forward), abs=0.1)
+        assert return_piston_force(fig, k) == pytest.approx(float(back), abs=0.1)
+    assert not [c.name for c in PF.checks(fig) if not c.ok]
+    # forward stroke alone: one area, seed 001's P = F p_ü
+    fig = PF.figure(indicator=str(card), parts=6, method="exact")
+    F = (F1 + F2) / 2
+    for k in range(7):
+        x = mpmath.mpf(abscissa(fig, f"K{k}"))
+        assert piston_force(fig, k) == pytest.approx(float(F * (8 - 6 * x - 1)), abs=0.1)

@@ -198,3 +198,25 @@ def test_construction_card_ordinates_against_closed_form(tmp_path):
     for k in range(1, 6):
         w = mpmath.pi * k / 6
         assert free_force(fig, k) == pytest.approx(float(over_pressure_mp(w, 5)), abs=1e-10)
+
+
+def test_indicator_diagram_construction_draws_the_card(tmp_path, capsys):
+    """Each plotted point at its (x, p); the readings on the ordinates are the chords' (closed form here)."""
+    from construct.constructions import get
+    from construct.constructions.indicator import abscissa, pressure
+
+    c = get("indicator-diagram")
+    fig = c.figure(indicator=write(tmp_path, STRAIGHT), divisions=4)
+    assert all(ch.ok for ch in c.checks(fig))
+    for k in range(1, 4):
+        x = abscissa(fig, f"fE{k}")
+        assert x == pytest.approx(k / 4, abs=1e-12)
+        assert pressure(fig, f"fE{k}") == pytest.approx(8 - 6 * x, abs=1e-12)      # cover side, forward
+        assert pressure(fig, f"rW{k}") == pytest.approx(1.0, abs=1e-12)            # cover side, return
+        assert pressure(fig, f"fW{k}") == pytest.approx(1.0, abs=1e-12)            # crank side (mirrored), forward
+        assert pressure(fig, f"rE{k}") == pytest.approx(8 - 6 * (1 - x), abs=1e-12)  # crank side, return
+    assert main(["replay", "indicator-diagram", "--indicator", write(tmp_path, STRAIGHT), "--frames", "none",
+                 "--out", str(tmp_path / "ic")]) == 0
+    bad = write(tmp_path, "x,p\n0,8\n0.5,5\n1,2\n1,1\n0.5,1\n0,1\n", "open.csv")
+    assert main(["check", "indicator-diagram", "--indicator", bad]) == 2
+    assert "not closed" in capsys.readouterr().err

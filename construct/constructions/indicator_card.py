@@ -339,6 +339,8 @@ def draw_card(b: Any, card: IndicatorCard, *, prefix: str, head: str, crank: str
     out = []
     with b.group(f"indicator card {en}: each stroke's line with the straightedge",
                  f"Indikatordiagramm {de}: die Linie jedes Hubes mit dem Lineal"):
+        b.polyline(f"{prefix}loop", [pts[i] for i in range(len(card.points))], closed=True,
+                   de="das Diagramm, wie digitalisiert, geschlossen", en="the card as digitised, closed")
         for name, idx, xs, what in (("fwd", fwd_idx, xs_f, ("Hingang", "forward stroke")),
                                     ("back", back_idx, xs_b, ("Rückgang", "return stroke"))):
             names = [pts[i] for i in idx]

@@ -354,7 +354,7 @@ def _diagram_lines(b: Builder, d: Any, axis: str, n: int, tag: str, de: str, en:
 
 
 #: What a figure drawn from cards adds: each card's points and its two strokes' straightedge lines.
-CARD_PLATE = (r"(card|crank)\.C\d+", r"(card|crank)\.(fwd|back)", r"axis", r"D[01]")
+CARD_PLATE = (r"(card|crank)\.C\d+", r"(card|crank)\.(fwd|back|loop)", r"axis", r"D[01]")
 
 
 def _draw_cards(b: Builder, f: Mapping[str, str], cards: Any, revolution: bool) -> dict[str, str]:

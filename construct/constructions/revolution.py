@@ -230,7 +230,7 @@ def build_revolution(b: Builder, f: Mapping[str, str], points: Sequence[str], n:
                     name = f"S{j}" if last else f"S{j}.{t}"
                     top = carry(name, top, j, seg, de=f"Ordinate der Kurbel {i + 1} aufgesetzt" +
                                 (f" (Zylinder {c + 1})" if cylinders > 1 else ""),
-                                en=f"crank {i + 1}'s ordinate added on top" + (f" (cylinder {c + 1})" if cylinders > 1 else ""),
+                                en=f"crank {i + 1}'s ordinate added above the sum so far" + (f" (cylinder {c + 1})" if cylinders > 1 else ""),
                                 role="result" if last else "construction")
                 summed.append(top)
     with b.group("summed curve, mean line and excess areas", "Summenlinie, Ausgleichende und Überschussflächen"):

@@ -27,6 +27,8 @@ no dates, entries in registry order, fixed number formats.
 
 >>> entry_slug("crank", {"rod_ratio": 5.0, "parts": 18})
 'crank-parts-18-rod-ratio-5'
+>>> entry_slug("piston-force", {"revolution": True})
+'piston-force-revolution'
 """
 
 from __future__ import annotations

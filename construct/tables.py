@@ -19,6 +19,7 @@ from pathlib import Path
 from typing import Any, Mapping, Sequence
 
 from .constructions import analytic
+from .kernel.errors import InvalidParameter
 from .constructions import get
 from .constructions.crank import crank_angle, piston_fraction, point_name
 from .constructions.inertia import acceleration_rows, characteristic_point_rows, q_at_crank_angle_rows
@@ -26,7 +27,8 @@ from .constructions.two_cranks import speed_fluctuation_rows
 from .kernel.errors import InvalidParameter
 from .render.plotting import TablePlot, plot_table
 
-__all__ = ["TABLES", "PLOTS", "write_plot", "piston_path_table", "crank_angle_table", "acceleration_table", "characteristic_points_table"]
+__all__ = ["TABLES", "PLOTS", "write_plot", "piston_path_table", "crank_angle_table", "acceleration_table",
+           "characteristic_points_table", "indicator_note"]
 
 Table = tuple[tuple[str, ...], list[dict[str, Any]]]
 
@@ -80,22 +82,71 @@ def characteristic_points_table(*, rod_ratio: float) -> Table:
     return ("point", "omega_deg", "x", "q"), characteristic_point_rows(rod_ratio=rod_ratio)
 
 
-def mass_forces_table(*, weight: float, rpm: float, crank_radius: float, rod_length: float, parts: int = 18) -> Table:
-    """Seed 001, eq. (298): P_b (kg, + where the masses are accelerated) at each crank position, measured."""
-    from .constructions.piston_force import mass_force_rows
+def mass_forces_table(*, weight: float, rpm: float, crank_radius: float, rod_length: float, parts: int = 18,
+                      revolution: bool = False) -> Table:
+    """Seed 001, eq. (298): P_b (kg, + where the masses are accelerated) at each crank position, measured.
 
+    With *revolution*: both strokes over 0..360 degrees, a column ``stroke`` (forward, return); P_b positive
+    where the masses take up force in the direction of the current stroke; the dead-centre rows once per stroke.
+    """
+    from .constructions.piston_force import mass_force_rows, revolution_mass_force_rows
+
+    if revolution:
+        return ("crank_angle_deg", "stroke", "x", "P_b"), revolution_mass_force_rows(
+            weight=weight, rpm=rpm, crank_radius=crank_radius, rod_length=rod_length, parts=parts)
     return ("crank_angle_deg", "x", "P_b"), mass_force_rows(weight=weight, rpm=rpm, crank_radius=crank_radius,
                                                             rod_length=rod_length, parts=parts)
 
 
-def tangential_pressure_table(*, rod_ratio: float, parts: int = 18, method: str = "auto") -> Table:
-    """T/P' for a unit piston force at each crank position: OK/r measured on the construction (seed 004, Fig. 26)."""
+def tangential_pressure_table(*, rod_ratio: float, parts: int = 18, method: str = "auto", revolution: bool = False,
+                              cranks: str = "", machine: str = "single", indicator: Any = None,
+                              indicator_crank_side: Any = None) -> Table:
+    """T/P' for a unit piston force at each crank position: OK/r measured on the construction (seed 004, Fig. 26).
+
+    With *revolution*: over 0..360 degrees, a unit force in the direction of motion on each stroke, summed over
+    the cranks set *cranks* degrees ahead of the first (and the cylinders of a tandem *machine*).
+
+    With *indicator* (a digitised diagram of the cover side, :mod:`construct.constructions.indicator_card`; the
+    crank side from *indicator_crank_side* or the same card mirrored): a column ``T`` in kg/cm² of piston area,
+    measured on the construction drawn with the card (the over-pressure read on the card's straightedge lines
+    at the constructed piston position, times OK/r) -- every cylinder of the engine with this diagram.
+    """
     from .constructions.tangential import ok_over_r, t_over_unit
 
-    fig = get("tangential-pressure").figure(rod_ratio=rod_ratio, parts=parts, method=method, force="unit")
+    if indicator is None and indicator_crank_side is not None:
+        raise InvalidParameter("--indicator-crank-side goes with --indicator (the cover side's diagram)")
+    tp = get("tangential-pressure")
+    engine = {"revolution": True, "cranks": cranks, "machine": machine} if revolution else \
+        {"cranks": cranks, "machine": machine}
+    card = None
+    if indicator is not None:
+        card = tp.figure(rod_ratio=rod_ratio, parts=parts, method=method, indicator=str(indicator),
+                         indicator_crank_side=str(indicator_crank_side or ""), **engine)
+    fig = tp.figure(rod_ratio=rod_ratio, parts=parts, method=method, force="unit", **engine)
+    if revolution:
+        from .constructions.revolution import revolution_ordinate, revolution_rows
+
+        rows = revolution_rows(fig)
+        if card is None:
+            return ("crank_angle_deg", "T_over_P"), rows
+        for j, row in enumerate(rows):
+            row["T"] = revolution_ordinate(card, j)
+        return ("crank_angle_deg", "T_over_P", "T"), rows
     rows = [{"crank_angle_deg": math.degrees(crank_angle(fig, point_name(fig, k))), "OK_over_r": ok_over_r(fig, k),
              "T_over_P": t_over_unit(fig, k)} for k in range(parts + 1)]
-    return ("crank_angle_deg", "OK_over_r", "T_over_P"), rows
+    if card is None:
+        return ("crank_angle_deg", "OK_over_r", "T_over_P"), rows
+    for k, row in enumerate(rows):
+        row["T"] = t_over_unit(card, k)
+    return ("crank_angle_deg", "OK_over_r", "T_over_P", "T"), rows
+
+
+def indicator_note(crank_side: Any) -> str:
+    """What a table computed from a card says about the crank side."""
+    if crank_side is not None:
+        return "crank side from its own indicator diagram"
+    return ("crank side: the cover-side diagram mirrored (Baumann's assumption: the diagrams of both piston sides "
+            "are equal)")
 
 
 def flywheel_coefficients_table(*, kz: Sequence[float] | None = None, v: Sequence[float] | None = None) -> Table:

@@ -63,6 +63,8 @@ def add_construction_options(p: argparse.ArgumentParser, *, name_optional: bool 
     p.add_argument("--pressure-ratio", type=_number, metavar="F/f", help="F/f of the inertia pressures")
     p.add_argument("--infinite-rod", action="store_true", default=None,
                    help="an infinitely long connecting rod (instead of --rod-ratio)")
+    p.add_argument("--revolution", action="store_true", default=None,
+                   help="tangential-pressure, piston-force: both strokes over the whole revolution")
     p.add_argument("--fluctuation", type=_number, metavar="k", help="k = Qr/((m1+m2) v1²) of the two cranks")
     p.add_argument("--magnify", type=_number, metavar="G", help="magnification of the speed deviations (two-cranks)")
     p.add_argument("--given", action="append", default=[], metavar="NAME=VALUE",
@@ -72,7 +74,7 @@ def add_construction_options(p: argparse.ArgumentParser, *, name_optional: bool 
 
 PARAM_OPTIONS = {"rod_ratio": "rod_ratio", "parts": "parts", "method": "method", "divisions": "divisions",
                  "radius": "r", "pressure_ratio": "pressure_ratio", "infinite_rod": "infinite_rod",
-                 "fluctuation": "fluctuation", "magnify": "magnify"}
+                 "fluctuation": "fluctuation", "magnify": "magnify", "revolution": "revolution"}
 
 
 #: The placeholder of each construction parameter without an option of its own: the book's symbol or unit.
@@ -81,7 +83,9 @@ SYMBOLS = {"admission": "P", "back_pressure": "P0", "clearance": "s0/s", "compre
            "kappa": "kappa", "piston_area": "F", "pressure_unit": "LENGTH/at", "rod_length": "L", "rpm": "n",
            "scale": "LENGTH/m", "weight": "G", "b1": "b1/r1", "rim": "h/r1", "compression_ratio": "epsilon",
            "cutoff": "rho", "dead_centre": "crank-end|head-end", "engine": "explosion|diesel", "exhaust": "p_g",
-           "exponent": "n", "max_pressure": "p", "steps": "N", "suction": "p_a"}
+           "exponent": "n", "max_pressure": "p", "steps": "N", "suction": "p_a", "cranks": "DEG,DEG",
+           "indicator": "FILE.csv", "indicator_crank_side": "FILE.csv", "machine": "single|tandem|compound",
+           "piston_area_cover": "F'", "piston_area_crank": "F''"}
 
 #: Help of parameters whose construction does not give one.
 HELPS = {"kappa": "Baumann's kappa = P/B_max, the piston force over the largest acceleration force "

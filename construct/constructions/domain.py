@@ -49,7 +49,7 @@ __all__ = ["Domain", "ROD_RATIO", "DRAWN_LENGTH", "PRESSURE", "PRESSURE_RATIO", 
            "DRAWING_SCALE", "FORCE_UNIT", "FLYWHEEL_KZ", "RIM_SPEED",
            "FLYWHEEL_DIAMETER", "EXCESS_WORK", "IRREGULARITY", "COMPRESSION_RATIO", "CUTOFF_RATIO",
            "ENGINE_PRESSURE", "EXHAUST_PRESSURE", "POLYTROPE_EXPONENT", "SUCTION_PRESSURE", "DISC_THICKNESS",
-           "RIM_SECTION"]
+           "RIM_SECTION", "CRANK_OFFSET", "CRANK_COUNT"]
 
 
 @dataclass(frozen=True)
@@ -175,3 +175,9 @@ ENGINE_PRESSURE = Domain(2.0, 150.0, "highest cycle pressures in at (seed 001: a
 DISC_THICKNESS = Domain(1e-3, 1.0 / 30.0, "disc thicknesses b1/r1 for which the hub (24 b1 long) stays within the "
                         "wheel's width (real wheels: a few thousandths)")
 RIM_SECTION = Domain(1e-2, 0.5, "rim sections (side over r1) that clear the hub")
+#: Crank offsets ahead of the first crank, in degrees (tangential pressure over a revolution): one turn; the offset
+#: must moreover be a multiple of the division 180/parts (the ordinates are added where both cranks have one).
+CRANK_OFFSET = Domain(0.0, 360.0, "degrees ahead of the first crank (one turn; 360 is the first crank again)")
+#: Cranks on one shaft: the books draw one, two (seed 002, compound engines) or three; the summed ordinates'
+#: error grows with their number (each addition is a compass transfer).
+CRANK_COUNT = Domain(1.0, 8.0, "cranks on one shaft the summed diagram is measured for")

@@ -256,7 +256,10 @@ def pressures_at(b: Builder, d: IndicatorDiagram, ordinate: str, tag: str, *, ta
                                role="construction" if envelope else "result")
 
     if envelope:
-        down, up = ("toward", None, None, 0.0, -1.0), ("toward", None, None, 0.0, 1.0)
+        # "Up" is the side the diagram stands on: left of head -> crank (above a stroke line drawn left to right,
+        # below one drawn right to left -- the crank side's mirrored diagram).
+        side = 1.0 if b[d.crank][0] >= b[d.head][0] else -1.0
+        down, up = ("toward", None, None, 0.0, -side), ("toward", None, None, 0.0, side)
         out["steam"] = b.pick(f"{p}E{tag}", admission(f"{p}Ea{tag}"), expansion(f"{p}Eh{tag}"), rule=down,
                               role="result", de=f"Dampflinie bei {tag}: die untere von Admissionslinie und Expansionslinie",
                               en=f"steam line at {tag}: the lower of admission line and expansion hyperbola")
@@ -492,8 +495,92 @@ def indicator_plate(fig: Figure) -> dict:
 
 def _validate(givens: Mapping[str, float]) -> None:
     bounded("stroke half r (drawing units)", givens["r"], DRAWN_LENGTH)
+    if "card.x0" in givens:  # a digitised card in the protocol: checked as a file is
+        from .indicator_card import card_pair
+
+        bounded("pressure-scale unit (drawn length of 1 at)", givens["pressure_unit"], DRAWN_LENGTH)
+        card_pair(givens)
+        return
     indicator_givens(givens["filling"], givens["clearance"], givens["admission"], givens["back_pressure"],
                      givens["compression"], givens["pressure_unit"])
+
+
+#: What a card's plate shows: the stroke, the cards' points and lines, the ordinates and the readings on them.
+CARD_PLATE = (r"base", r"A", r"B", r"(card|crank)\.C\d+", r"(card|crank)\.(fwd|back|loop)", r"v\d+", r"[fr][EW]\d+")
+
+
+def build_indicator_card(*, r: float, pressure_unit: float, divisions: int, indicator: str,
+                         crank_side: str) -> Figure:
+    """A digitised card (and the crank side's, or the cover side's mirrored) drawn with compass and straightedge,
+    the stroke divided, and on every ordinate the pressures of both sides on both strokes read off the lines."""
+    from .indicator_card import card_givens, draw_card, load_indicator
+
+    if crank_side and not indicator:
+        raise InvalidParameter("--indicator-crank-side goes with --indicator (the cover side's diagram)")
+    cover = load_indicator(indicator)
+    crank = load_indicator(crank_side) if crank_side else None
+    givens = {"r": bounded("stroke half r (drawing units)", r, DRAWN_LENGTH),
+              "pressure_unit": bounded("pressure-scale unit (drawn length of 1 at)", pressure_unit, DRAWN_LENGTH),
+              **card_givens(cover, "card."), **(card_givens(crank, "crank.") if crank else {})}
+    if isinstance(divisions, bool) or not isinstance(divisions, int) or not 2 <= divisions <= 200:
+        raise InvalidParameter(f"divisions of the stroke must be a whole number from 2 to 200, got {divisions!r}")
+    b = Builder("indicator-diagram", givens, {"divisions": divisions, "cards": True, "plate": CARD_PLATE,
+                                               **({} if crank else {"mirrored": True})})
+    with b.group("stroke and zero line", "Hub und Nulllinie"):
+        A = b.given_point("A", 0.0, 0.0, de="Deckeltotpunkt A", en="head-end dead centre A", label="0")
+        B = b.given_point("B", 2.0, 0.0, unit="r", de="Kurbeltotpunkt B", en="crank-end dead centre B", label="s")
+        base = b.line("base", A, B, role="result", de="Nulllinie (absolutes Vakuum) = Kolbenweglinie",
+                      en="zero line (absolute vacuum) = piston-path line")
+    lines = draw_card(b, cover, prefix="card.", head=A, crank=B, axis=base, de="der Deckelseite", en="of the cover side")
+    if crank is not None:
+        other = draw_card(b, crank, prefix="crank.", head=A, crank=B, axis=base, de="der Kurbelseite",
+                          en="of the crank side")
+    else:
+        other = draw_card(b, cover, prefix="crank.", given_prefix="card.", head=B, crank=A, axis=base, mirrored=True,
+                          up=(A, B), de="der Kurbelseite (die der Deckelseite gespiegelt)",
+                          en="of the crank side (the cover side's mirrored)")
+    n = divisions
+    up = ("toward", None, None, 0.0, 1.0)
+    with b.group(f"stroke divided into {n} parts; the pressures read on every ordinate",
+                 f"Hub in {n} Teile geteilt; die Drücke auf jeder Ordinate abgelesen"):
+        marks = b.divide_segment("T", A, B, n, line=base)
+        for k, m in enumerate(marks, start=1):
+            o = b.erect_perpendicular(f"v{k}", m, base, A)
+            for tag, line, what in (("fE", lines.forward, ("Deckelseite, Hingang", "cover side, forward stroke")),
+                                    ("rW", lines.back, ("Deckelseite, Rückgang", "cover side, return stroke")),
+                                    ("fW", other.forward, ("Kurbelseite, Hingang", "crank side, forward stroke")),
+                                    ("rE", other.back, ("Kurbelseite, Rückgang", "crank side, return stroke"))):
+                b.intersect(f"{tag}{k}", o, line, rule=up, role="result", de=f"Druck {what[0]} bei {k}/{n}",
+                            en=f"pressure, {what[1]}, at {k}/{n}")
+    proto = b.protocol()
+    return Figure(proto, proto.replay(givens))
+
+
+def card_checks(fig: Figure) -> list[Check]:
+    """Every plotted point at its given (x, p); every reading on the straightedge line between two points."""
+    from .indicator_card import card_pair
+
+    g = fig.replay.givens
+    n = fig.params["divisions"]
+    cover, crank = card_pair(g)
+    tol = EUCLIDEAN_TOLERANCE * max(1.0, max(p for c in (cover, crank) for p in c.forward[1] + c.back[1])) * 10
+    checks = []
+    for i, (x, p) in enumerate(cover.points):
+        name = "card.C%d" % i
+        if name not in fig.replay.made_by():
+            continue  # a point on the zero line is its foot
+        checks.append(Check(f"card point {i}: x", abscissa(fig, name), x, EUCLIDEAN_TOLERANCE,
+                            "laid off with the compass from the dead centre", "stroke"))
+        checks.append(Check(f"card point {i}: p", pressure(fig, name), p, tol, "laid off up the perpendicular", "at"))
+    for k in range(1, n):
+        x = abscissa(fig, f"fE{k}")
+        for tag, card, stroke, what in (("fE", cover, "forward", "cover side forward"),
+                                        ("rW", cover, "return", "cover side return"),
+                                        ("fW", crank, "forward", "crank side forward"),
+                                        ("rE", crank, "return", "crank side return")):
+            checks.append(Check(f"{what} at {k}/{n}", pressure(fig, f"{tag}{k}"), card.pressure(x, stroke), tol,
+                                "the ordinate meets the straightedge line between two digitised points", "at"))
+    return checks
 
 
 INDICATOR = register(Construction(
@@ -501,12 +588,16 @@ INDICATOR = register(Construction(
     title=Caption("Ideelles Dampfdiagramm mit Expansions- und Kompressionshyperbel",
                   "Idealised indicator diagram with expansion and compression hyperbolas"),
     source="seed 004 (Baumann 1902, Fig. 25); seed 001, Abb. 1054",
-    build=lambda r, filling, clearance, admission, back_pressure, compression, pressure_unit, divisions: build_indicator(
+    build=lambda r, filling, clearance, admission, back_pressure, compression, pressure_unit, divisions, indicator,
+    indicator_crank_side: build_indicator_card(r=r, pressure_unit=pressure_unit, divisions=divisions,
+                                               indicator=indicator, crank_side=indicator_crank_side)
+    if indicator or indicator_crank_side else build_indicator(
         r=r, filling=filling, clearance=clearance, admission=admission, back_pressure=back_pressure,
         compression=compression, pressure_unit=pressure_unit, divisions=divisions),
-    checks=indicator_checks,
-    defaults={"r": 1.0, **BAUMANN, "pressure_unit": 0.12, "divisions": 10},
+    checks=lambda fig: card_checks(fig) if fig.params.get("cards") else indicator_checks(fig),
+    defaults={"r": 1.0, **BAUMANN, "pressure_unit": 0.12, "divisions": 10, "indicator": "",
+              "indicator_crank_side": ""},
     book_params=({}, {"filling": 0.4}),  # Baumann's two worked cases: s1 = 10 % and 40 % (drawn for P = 7.85 at)
-    structural=("divisions", "filling", "compression"),
+    structural=("divisions", "filling", "compression", "indicator", "indicator_crank_side"),
     extra={"help": OPTION_HELP, "plate": indicator_plate},
 ), validate=_validate)

@@ -58,7 +58,7 @@ from .checking import EUCLIDEAN_TOLERANCE, Check
 from ..kernel.errors import InvalidParameter
 from ..kernel.division import check_parts, divide_semicircle
 from ..kernel.instruments import Builder
-from ..kernel.proportional import fourth_proportional, scale_line, vertex_on
+from ..kernel.proportional import carry_across, fourth_proportional, scale_line, vertex_on
 from ..kernel.protocol import Caption
 from . import Construction, Figure, bounded, register
 from .domain import DRAWING_SCALE, DRAWN_MASS_FORCE, FORCE_UNIT, LENGTH_M, PISTON_AREA, ROD_RATIO, RPM, WEIGHT
@@ -66,12 +66,14 @@ from .crank import angle_tolerance, build_frame, crank_angle, point_name, rod_ar
 from .indicator import back_pressure as model_back
 from .indicator import indicator_frame, indicator_givens, pressures_at, square
 from .indicator import steam_pressure as model_steam
-from .inertia.build import _Ctx, _kind, _ordinate_line, _value
+from .indicator_card import card_givens, card_pair, draw_card, load_indicator
+from .ordinates import OrdinateFrame, ordinate_line, ordinate_value, point_kind
 
 __all__ = ["PISTON_FORCE", "TAFEL_I", "HP_DIAGRAM", "GRAVITY", "piston_area_mean", "build_piston_force",
            "piston_force_checks", "mass_force", "piston_force", "abscissa", "mass_force_rows", "area_balance",
            "model_areas_sweep",
-           "mass_force_scale", "j_abscissa"]
+           "mass_force_scale", "j_abscissa", "piston_area_sides", "return_mass_force", "return_piston_force",
+           "revolution_mass_force_rows", "PISTON_AREA_COVER", "PISTON_AREA_CRANK"]
 
 #: g as the book uses it ("830/9,81").
 GRAVITY = 9.81
@@ -87,6 +89,17 @@ def piston_area_mean(bore_cm: float = 45.0, tail_rod_cm: float = 7.5, piston_rod
     f2 = math.pi / 4.0 * (bore_cm ** 2 - piston_rod_cm ** 2)
     return (f1 + f2) / 2.0
 
+
+def piston_area_sides(bore_cm: float = 45.0, tail_rod_cm: float = 7.5, piston_rod_cm: float = 10.0) -> tuple[float, float]:
+    """F' (cover side, less the tail rod) and F'' (crank side, less the piston rod) in cm^2.
+
+    >>> [round(v, 2) for v in piston_area_sides()]    # Tafel I prints 1546,25 and 1511,89
+    [1546.25, 1511.89]
+    """
+    return (math.pi / 4.0 * (bore_cm ** 2 - tail_rod_cm ** 2), math.pi / 4.0 * (bore_cm ** 2 - piston_rod_cm ** 2))
+
+
+PISTON_AREA_COVER, PISTON_AREA_CRANK = piston_area_sides()
 
 #: The book's example, Tafel I, high-pressure side (seed 001).
 TAFEL_I = {"weight": 830.0, "rpm": 50.0, "crank_radius": 0.4, "rod_length": 2.0, "piston_area": piston_area_mean()}
@@ -104,7 +117,8 @@ def mass_force_scale(g: Mapping[str, float]) -> float:
 
 def _givens(*, weight: Any, rpm: Any, crank_radius: Any, rod_length: Any, piston_area: Any, filling: Any,
             clearance: Any, admission: Any, back_pressure: Any, compression: Any, scale: Any,
-            force_unit: Any) -> dict[str, float]:
+            force_unit: Any, piston_area_cover: Any = None, piston_area_crank: Any = None,
+            revolution: bool = False, cards: Any = None) -> dict[str, float]:
     out = {"weight": bounded("weight G of the reciprocating parts (kg)", weight, WEIGHT),
            "rpm": bounded("revolutions per minute n", rpm, RPM),
            "crank_radius": bounded("crank radius R (m)", crank_radius, LENGTH_M),
@@ -120,12 +134,32 @@ def _givens(*, weight: Any, rpm: Any, crank_radius: Any, rod_length: Any, piston
     # the indicator diagram's pressure unit is F * force_unit: checked there as a product of positives
     out.update(indicator_givens(filling, clearance, admission, back_pressure, compression, 1.0))
     del out["pressure_unit"]
+    # Both sides' piston areas (Tafel I: F' cover side, F'' crank side): checked always, kept for the revolution.
+    sides = {key: bounded(what, value, PISTON_AREA) for key, what, value in (
+        ("piston_area_cover", "piston area F' of the cover side (cm^2)", piston_area_cover),
+        ("piston_area_crank", "piston area F'' of the crank side (cm^2)", piston_area_crank)) if value is not None}
+    if cards is not None:  # a digitised card (and the crank side's own, if any): its points are givens
+        out.update(card_givens(cards[0], "card."))
+        if cards[1] is not None:
+            out.update(card_givens(cards[1], "crank."))
+        for key in HP_DIAGRAM:  # the idealised diagram's givens: the card replaces them
+            del out[key]
+    if revolution:
+        out.update(sides)
+        if cards is None and out["filling"] + out["compression"] >= 1.0:
+            raise InvalidParameter(f"the compression must begin after the cut-off (s1 + s3 < s) for this figure, "
+                                   f"got filling {filling!r} and compression {compression!r}")
     return out
 
 
 def _validate(g: Mapping[str, float]) -> None:
+    if "card.x0" in g:  # drawn from a card: the idealised diagram's givens are not in the protocol
+        g = {**HP_DIAGRAM, **g}
     _givens(**{k: g[k] for k in ("weight", "rpm", "crank_radius", "rod_length", "piston_area", "filling",
-                                 "clearance", "admission", "back_pressure", "compression", "scale", "force_unit")})
+                                 "clearance", "admission", "back_pressure", "compression", "scale", "force_unit")},
+            **{k: g[k] for k in ("piston_area_cover", "piston_area_crank") if k in g})
+    if "card.x0" in g:
+        card_pair(g)  # the card in the givens, checked as a file is
 
 
 # --------------------------------------------------------------------------
@@ -142,7 +176,7 @@ def _frame(b: Builder) -> dict[str, str]:
     return build_frame(b, radius=("crank_radius", "scale"), rod=("rod_length", "scale"))
 
 
-def _mass_setup(b: Builder, f: Mapping[str, str]) -> _Ctx:
+def _mass_setup(b: Builder, f: Mapping[str, str]) -> OrdinateFrame:
     """The proportional angle of the inertia curve, its F/f line replaced by (G/g) omega^2 R in the force scale."""
     factor = (math.pi / 30.0) ** 2 / GRAVITY
     Ff = b.given_length("Ff", product=("weight", "rpm", "rpm", "crank_radius", "force_unit"), factor=factor,
@@ -157,7 +191,7 @@ def _mass_setup(b: Builder, f: Mapping[str, str]) -> _Ctx:
                         de="Marke R von S aus: Maßlinie für R/L", en="mark R from S: scale line for R/L")
         gf = scale_line(b, angle, "gf", length=Ff, toward=("toward", "S", f["O"]),
                         de="Marke (G/g)ω²R von S aus", en="mark (G/g) omega^2 R from S")
-    return _Ctx(f["O"], f["axis"], f["circle"], f["D0"], f["D1"], f["r"], f["L"], Ff, vert, top, angle, gr, gf)
+    return OrdinateFrame(f["O"], f["axis"], f["circle"], f["D0"], f["D1"], f["r"], f["L"], Ff, vert, top, angle, gr, gf)
 
 
 def _carry(b: Builder, name: str, foot: str, ordinate: str, a: str, z: str, *, de: str, en: str,
@@ -211,57 +245,241 @@ def piston_force_plate(fig: Figure) -> dict:
     return {"looks": looks, "furniture": furniture}
 
 
-def build_piston_force(*, parts: int, method: str, **values: Any) -> Figure:
-    givens = _givens(**values)
+def build_piston_force(*, parts: int, method: str, revolution: bool = False, indicator: str = "",
+                       indicator_crank_side: str = "", **values: Any) -> Figure:
+    cards = None
+    if indicator_crank_side and not indicator:
+        raise InvalidParameter("--indicator-crank-side goes with --indicator (the cover side's diagram)")
+    if indicator:
+        cards = (load_indicator(indicator), load_indicator(indicator_crank_side) if indicator_crank_side else None)
+    givens = _givens(revolution=bool(revolution), cards=cards, **values)
     used = check_parts(parts, method)
-    b = Builder("piston-force", givens, {"parts": parts, "method": used, "requested_method": method,
-                                         "filling": givens["filling"], "compression": givens["compression"],
-                                         "plate": PLATE})
+    params = {"parts": parts, "method": used, "requested_method": method, "filling": values["filling"],
+              "compression": values["compression"], "plate": PLATE}
+    if revolution:
+        params.update(revolution=True, plate=PLATE + REVOLUTION_PLATE)
+    if cards is not None:
+        del params["filling"], params["compression"]  # the card replaces the idealised diagram
+        params.update(cards=True, plate=params["plate"] + CARD_PLATE)
+        if cards[1] is None:
+            params["mirrored"] = True
+    b = Builder("piston-force", givens, params)
     f = _frame(b)
     c = _mass_setup(b, f)
+    sides = _side_scales(b, c) if revolution else None
     n = parts
     points = divide_semicircle(b, O=f["O"], D0=f["D0"], D1=f["D1"], circle=f["circle"], axis=f["axis"],
                                n=n, method=used)
     for k, p in enumerate(points):
         b.set_label(p, str(k))
     rod_arcs(b, f, points)
-    d = indicator_frame(b, base=f["axis"], head=f["D0"], crank=f["D1"], stroke=("crank_radius", "scale"),
-                        prefix="ind.", pressure_scale=("piston_area", "force_unit"))
+    if cards is None:
+        d = indicator_frame(b, base=f["axis"], head=f["D0"], crank=f["D1"], stroke=("crank_radius", "scale"),
+                            prefix="ind.", pressure_scale=("piston_area_cover" if revolution else "piston_area",
+                                                           "force_unit"))
+    else:
+        d = _draw_cards(b, f, cards, revolution)
     with b.group("base line of the force diagram (Abb. 1055)", "Grundlinie des Kraftdiagramms (Abb. 1055)"):
-        Of = b.given_point("Of", 0.0, -0.8, unit="scale", de="Punkt der Kolbenweglinie des Kraftdiagramms",
+        Of = b.given_point("Of", 0.0, -1.5 if revolution else -0.8, unit="scale",
+                           de="Punkt der Kolbenweglinie des Kraftdiagramms",
                            en="point of the force diagram's piston-path line")
         fbase = b.parallel_through("fbase", Of, f["D0"], f["D1"], role="result")
     ords: list[tuple[str, str]] = []
     with b.group(f"ordinates at all {n + 1} piston positions", f"Ordinaten an allen {n + 1} Kolbenstellungen"):
         for k in range(n + 1):
-            o = _ordinate_line(b, c, f"ord{k}", f"X{k}")
+            o = ordinate_line(b, c, f"ord{k}", f"X{k}")
             ords.append((str(k), o))
     # the cut-off and the start of compression: where the force line has its corners
-    corners = [("s1", d.cutoff_ordinate), ("s2", d.compression_ordinate)]
+    corners = [("s1", d.cutoff_ordinate), ("s2", d.compression_ordinate)] if cards is None else []
     with b.group("piston forces from the steam diagram", "Kolbenkräfte aus dem Dampfdiagramm"):
         for tag, o in ords + corners:
             with b.group(f"piston force at {tag}", f"Kolbenkraft bei {tag}"):
+                if cards is not None:  # both cards drawn in their own side's area scale: the forces read directly
+                    pr = _card_points(b, d, o, tag, "forward")
+                    foot = b.intersect(f"F{tag}", o, fbase, rule=("only",), de=f"Fußpunkt F{tag}", en=f"foot F{tag}",
+                                       role="result")
+                    _carry(b, f"K{tag}", foot, o, pr["back"], pr["steam"],
+                           de=f"Kolbenkraft K{tag} = F′p′ − F″p″ (Kurbelseite bis Deckelseite)",
+                           en=f"piston force K{tag} = F'p' - F''p'' (crank side to cover side)")
+                    continue
                 pr = pressures_at(b, d, o, tag, envelope=True)
                 foot = b.intersect(f"F{tag}", o, fbase, rule=("only",), de=f"Fußpunkt F{tag}", en=f"foot F{tag}",
                                    role="result" if tag.isdigit() else "construction")
-                _carry(b, f"K{tag}", foot, o, pr["back"], pr["steam"],
+                back = pr["back"] if sides is None else _rescale(b, sides, f"bk{tag}", f"X{tag}" if tag.isdigit()
+                                                                   else _foot_on_axis(b, f, o, tag), o, pr["back"],
+                                                                   to_crank=True)
+                _carry(b, f"K{tag}", foot, o, back, pr["steam"],
                        de=f"Kolbenkraft K{tag} = F·p_ü (Gegendruck bis Dampflinie)",
                        en=f"piston force K{tag} = F p_ü (back pressure to steam line)")
     with b.group("mass forces (eq. 298) at all piston positions", "Massenkräfte (Gl. 298) an allen Kolbenstellungen"):
         for k, P in enumerate(points):
-            kind = _kind(k, n)
+            kind = point_kind(k, n)
             dc_p = c.D0 if 2 * k <= n else c.D1
             dc_2 = c.D0 if (4 * k < n or 4 * k > 3 * n) else c.D1
             with b.group(f"mass force at point {k}", f"Massenkraft zu Punkt {k}"):
-                V = _value(b, c, str(k), P, kind, dc_p, dc_2)
+                V = ordinate_value(b, c, str(k), P, kind, dc_p, dc_2)
                 k_ = b.circle_segment(f"M{k}.k", f"F{k}", c.gf.origin, V, de="Massenkraft mit dem Zirkel übertragen",
                                       en="mass force carried with the compass")
                 b.intersect(f"M{k}", f"ord{k}", k_, rule=("left", V, c.gf.origin), role="result",
                             de=f"Massenkraft M{k} (oben: Beschleunigung)", en=f"mass force M{k} (up: acceleration)")
-    _pressure_change(b, d, fbase)
-    _curves(b, n, fbase)
+    if revolution:
+        if cards is None:
+            _diagram_lines(b, d, f["axis"], n, "", "der Deckelseite", "of the cover side")
+        _return_stroke(b, f, c, sides, n, points, d if cards is not None else None)
+    elif cards is None:  # J as seed 001 draws it: one piston area, the over-pressure's zero
+        _pressure_change(b, d, fbase)
+    _curves(b, n, fbase, smooth=cards is not None)
+    if revolution:
+        _curves(b, n, "rbase", prefix="r", forward=False, smooth=cards is not None)
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))
+
+
+#: What the two-sided plate adds: the crank side's diagram below the stroke line, the return stroke's base line,
+#: piston forces, mass forces, lines and hatched free forces.
+REVOLUTION_PLATE = (r"rbase", r"rF\d+", r"rK\d+|rKs[12]", r"rM\d+", r"rforce[abc]", r"rmass", r"rfree\.[abc]",
+                    r"axis", r"D[01]", r"(ind|crk)\.(steam|backline)", r"(ind|crk)\.[ER]r?\d+", r"ind\.Z[01]")
+
+
+def _side_scales(b: Builder, c: OrdinateFrame) -> dict[str, Any]:
+    """F' and F'' in the force scale, as two more scale lines of the proportional angle: a height read in one
+    side's pressure scale is carried across to the other's (intercept theorem)."""
+    with b.group("the two piston areas on the proportional angle", "Die beiden Kolbenflächen am Proportionswinkel"):
+        FA = b.given_length("FA", product=("piston_area_cover", "force_unit"),
+                            de="F′ (Deckelseite) im Kraftmaßstab", en="F' (cover side) in the force scale")
+        FB = b.given_length("FB", product=("piston_area_crank", "force_unit"),
+                            de="F″ (Kurbelseite) im Kraftmaßstab", en="F'' (crank side) in the force scale")
+        cover = scale_line(b, c.angle, "gA", length=FA, toward=("toward", "S", c.O),
+                           de="Marke F′ von S aus", en="mark F' from S")
+        crank = scale_line(b, c.angle, "gB", length=FB, toward=("toward", "S", c.O),
+                           de="Marke F″ von S aus", en="mark F'' from S")
+    return {"angle": c.angle, "cover": cover, "crank": crank}
+
+
+def _rescale(b: Builder, sides: Mapping[str, Any], name: str, foot: str, ordinate: str, point: str, *,
+             to_crank: bool) -> str:
+    """The height foot -> point (a pressure drawn in one side's area scale) in the other side's scale, on the ordinate.
+
+    The back pressure acts on the other side of the piston: on the forward stroke the crank side's (area F''),
+    read on the cover side's diagram (drawn with F'); so its height is multiplied by F''/F' (and on the return
+    by F'/F'') with the proportional angle.
+    """
+    src, dst = (sides["cover"], sides["crank"]) if to_crank else (sides["crank"], sides["cover"])
+    what = ("F″/F′", "F''/F'") if to_crank else ("F′/F″", "F'/F''")
+    with b.group(f"back pressure at {name} times {what[1]}", f"Gegendruck bei {name} mal {what[0]}"):
+        k = b.circle_segment(f"{name}.k", src.origin, foot, point, de="Höhe auf die Maßlinie der einen Fläche getragen",
+                             en="height carried to the scale line of the one area")
+        a = b.intersect(f"{name}.a", src.line, k, rule=("toward", None, None, 1.0, 0.0),
+                        de="Höhe auf der Maßlinie", en="height on the scale line")
+        z = carry_across(b, sides["angle"], f"{name}.z", a, dst, de=f"mal {what[0]} (Strahlensatz)",
+                         en=f"times {what[1]} (intercept theorem)")
+        k2 = b.circle_segment(f"{name}.k2", foot, dst.origin, z, de="zurück auf die Ordinate", en="back onto the ordinate")
+        return b.intersect(name, ordinate, k2, rule=("toward", foot, point),
+                           de=f"Gegendruck der anderen Kolbenseite ({what[0]})",
+                           en=f"back pressure of the other side of the piston ({what[1]})")
+
+
+def _diagram_lines(b: Builder, d: Any, axis: str, n: int, tag: str, de: str, en: str) -> None:
+    """The side's indicator diagram drawn through its points: the steam line (its corner at the cut-off) and the
+    back-pressure line (its corner where the compression begins)."""
+    p = d.prefix
+    xs = {k: b[f"X{k}"][0] for k in range(n + 1)}
+    eps = 1e-9 * abs(xs[n] - xs[0])
+    with b.group(f"the indicator diagram {en} drawn through its points",
+                 f"Das Indikatordiagramm {de} durch seine Punkte gezogen"):
+        for line, letter, corner, what in (("steam", "E", "s1", ("Dampflinie", "steam line")),
+                                           ("backline", "R", "s2", ("Gegendrucklinie", "back-pressure line"))):
+            pts = [f"{p}{letter}{tag}{k}" for k in range(n + 1)]
+            x_corner = b[f"{p}{letter}{tag}{corner}"][0]
+            if all(abs(x_corner - x) > eps for x in xs.values()):  # a corner between the ordinates: a point of its own
+                pts.append(f"{p}{letter}{tag}{corner}")
+                corners = (len(pts) - 1,)
+            else:  # the corner falls on an ordinate: that point is the corner
+                corners = (min(range(n + 1), key=lambda k: abs(xs[k] - x_corner)),)
+            b.french_curve(f"{p}{line}", axis, pts, {}, corners=corners, role="result",
+                           de=f"{what[0]} {de}, an der Ecke abgesetzt", en=f"{what[1]} {en}, laid anew at its corner")
+
+
+#: What a figure drawn from cards adds: each card's points and its two strokes' straightedge lines.
+CARD_PLATE = (r"(card|crank)\.C\d+", r"(card|crank)\.(fwd|back|loop)", r"axis", r"D[01]")
+
+
+def _draw_cards(b: Builder, f: Mapping[str, str], cards: Any, revolution: bool) -> dict[str, str]:
+    """The cover side's card and the crank side's (its own, or the cover side's mirrored), each in the scale of
+    its piston area (F' and F'' over the revolution; the mean F on the forward stroke alone, as seed 001's P = F p)."""
+    area = ("piston_area_cover", "piston_area_crank") if revolution else ("piston_area", "piston_area")
+    stroke = ("crank_radius", "scale")
+    cover = draw_card(b, cards[0], prefix="card.", head=f["D0"], crank=f["D1"], axis=f["axis"], stroke=stroke,
+                      pressure_scale=(area[0], "force_unit"), de="der Deckelseite", en="of the cover side")
+    if cards[1] is not None:
+        crank = draw_card(b, cards[1], prefix="crank.", head=f["D0"], crank=f["D1"], axis=f["axis"], stroke=stroke,
+                          pressure_scale=(area[1], "force_unit"), de="der Kurbelseite", en="of the crank side")
+    else:
+        crank = draw_card(b, cards[0], prefix="crank.", given_prefix="card.", head=f["D1"], crank=f["D0"],
+                          axis=f["axis"], stroke=stroke, pressure_scale=(area[1], "force_unit"), mirrored=True,
+                          up=(f["D0"], f["D1"]), de="der Kurbelseite (die der Deckelseite gespiegelt)",
+                          en="of the crank side (the cover side's mirrored)")
+    return {"cover.fwd": cover.forward, "cover.back": cover.back, "crank.fwd": crank.forward, "crank.back": crank.back}
+
+
+def _card_points(b: Builder, d: Mapping[str, str], ordinate: str, tag: str, stroke: str) -> dict[str, str]:
+    """Where the ordinate meets the working side's and the other side's line of this stroke."""
+    up = ("toward", None, None, 0.0, 1.0)
+    work, other = ("cover.fwd", "crank.fwd") if stroke == "forward" else ("crank.back", "cover.back")
+    steam = b.intersect(f"E{tag}", ordinate, d[work], rule=up, de="Linie der arbeitenden Seite",
+                        en="line of the working side")
+    back = b.intersect(f"R{tag}", ordinate, d[other], rule=up, de="Linie der anderen Seite", en="line of the other side")
+    return {"steam": steam, "back": back}
+
+
+def _foot_on_axis(b: Builder, f: Mapping[str, str], ordinate: str, tag: str) -> str:
+    return b.intersect(f"{tag}.X", ordinate, f["axis"], rule=("only",), de=f"Fußpunkt der Ordinate {tag}",
+                       en=f"foot of the ordinate {tag}")
+
+
+def _return_stroke(b: Builder, f: Mapping[str, str], c: OrdinateFrame, sides: Mapping[str, Any], n: int,
+                   points: list[str], cards: Mapping[str, str] | None = None) -> None:
+    """The return stroke: the crank side's diagram (the cover side's mirrored, drawn below the stroke line in the
+    scale of F''), its piston forces F'' p'' - F' p' and the mass forces of (298) with the minus sign.  With
+    *cards* (drawn cards, each in its own side's area scale) the forces are read between their return lines."""
+    d = None if cards is not None else indicator_frame(
+        b, base=f["axis"], head=f["D1"], crank=f["D0"], stroke=("crank_radius", "scale"), prefix="crk.",
+        pressure_scale=("piston_area_crank", "force_unit"))
+    with b.group("base line of the return stroke's force diagram", "Grundlinie des Kraftdiagramms für den Rückgang"):
+        Or = b.given_point("Or", 0.0, -2.6, unit="scale", de="Punkt der Kolbenweglinie des Rückgangs",
+                           en="point of the return stroke's piston-path line")
+        rbase = b.parallel_through("rbase", Or, f["D0"], f["D1"], role="result")
+    corners = [("s1", d.cutoff_ordinate), ("s2", d.compression_ordinate)] if d is not None else []
+    with b.group("piston forces of the return stroke (crank side)", "Kolbenkräfte des Rückgangs (Kurbelseite)"):
+        for tag, o in [(str(k), f"ord{k}") for k in range(n + 1)] + corners:
+            with b.group(f"return-stroke piston force at {tag}", f"Kolbenkraft im Rückgang bei {tag}"):
+                if d is None:
+                    pr = _card_points(b, cards, o, f"r{tag}", "return")
+                    rf = b.intersect(f"rF{tag}", o, rbase, rule=("only",), de=f"Fußpunkt rF{tag}", en=f"foot rF{tag}",
+                                     role="result")
+                    _carry(b, f"rK{tag}", rf, o, pr["back"], pr["steam"],
+                           de=f"Kolbenkraft rK{tag} = F″p″ − F′p′ (oben: in Richtung des Rückgangs)",
+                           en=f"piston force rK{tag} = F''p'' - F'p' (up: in the direction of the return stroke)")
+                    continue
+                pr = pressures_at(b, d, o, f"r{tag}", envelope=True)
+                foot = f"X{tag}" if tag.isdigit() else _foot_on_axis(b, f, o, f"r{tag}")
+                back = _rescale(b, sides, f"rbk{tag}", foot, o, pr["back"], to_crank=False)
+                rf = b.intersect(f"rF{tag}", o, rbase, rule=("only",), de=f"Fußpunkt rF{tag}", en=f"foot rF{tag}",
+                                 role="result" if tag.isdigit() else "construction")
+                _carry(b, f"rK{tag}", rf, o, pr["steam"], back,
+                       de=f"Kolbenkraft rK{tag} = F″p″ − F′p′ (oben: in Richtung des Rückgangs)",
+                       en=f"piston force rK{tag} = F''p'' - F'p' (up: in the direction of the return stroke)")
+    if d is not None:
+        _diagram_lines(b, d, f["axis"], n, "r", "der Kurbelseite", "of the crank side")
+    with b.group("mass forces of the return stroke: eq. (298) with the minus sign",
+                 "Massenkräfte des Rückgangs: Gl. (298) mit dem Minuszeichen"):
+        for k in range(n + 1):
+            kk = b.circle_segment(f"rM{k}.k", f"rF{k}", c.gf.origin, f"V{k}",
+                                  de="Massenkraft mit dem Zirkel übertragen, Richtung umgekehrt",
+                                  en="mass force carried with the compass, direction reversed")
+            b.intersect(f"rM{k}", f"ord{k}", kk, rule=("right", f"V{k}", c.gf.origin), role="result",
+                        de=f"Massenkraft rM{k} (oben: Beschleunigung im Rückgang)",
+                        en=f"mass force rM{k} (up: accelerated on the return stroke)")
 
 
 def _pressure_change(b: Builder, d, fbase: str) -> None:
@@ -293,35 +511,65 @@ def _down(d) -> tuple[str, str, str]:
     return ("right", d.head, d.crank)
 
 
-def _curves(b: Builder, n: int, fbase: str) -> None:
-    """The lines drawn through the points: piston force in three pieces (its corners at s1 and s2), mass forces."""
-    xs = {k: b[f"X{k}"][0] for k in range(n + 1)}
-    x1, x2 = b["Ks1"][0], b["Ks2"][0]
+def _curves(b: Builder, n: int, fbase: str, *, prefix: str = "", corners: tuple[str, str] = ("s1", "s2"),
+            forward: bool = True, smooth: bool = False) -> None:
+    """The lines drawn through the points: piston force in three pieces (its corners at s1 and s2), mass forces.
+
+    *prefix* names the stroke's points (``""`` forward, ``"r"`` return); on the return stroke the piece of the
+    admission lies at the crank end, so the pieces are taken from that end (*forward* False).
+    """
+    p = prefix
+    if smooth:  # a measured diagram: no corners known in advance, one line through the points
+        with b.group("the lines drawn through the points", "Die Linien durch die Punkte gezogen"):
+            b.french_curve(f"{p}forcea", fbase, [f"{p}K{k}" for k in range(n + 1)], {},
+                           de="Kolbenkraftlinie", en="piston-force line")
+            b.french_curve(f"{p}mass", fbase, [f"{p}M{k}" for k in range(n + 1)], {},
+                           de="Linie der Massenkräfte", en="line of the mass forces")
+        with b.group("free forces hatched vertically; the mass-force areas",
+                     "Freie Kräfte senkrecht gestrichelt; Massenkraftflächen"):
+            b.area_between(f"{p}free.a", f"{p}forcea", f"{p}mass", f"{p}M0", f"{p}M{n}", hatch_deg=90.0,
+                           role="result", de="freie Kräfte zwischen Kolbenkraft- und Massenkraftlinie",
+                           en="free forces between the piston-force line and the mass-force line")
+            b.area_between(f"{p}massarea", f"{p}mass", fbase, f"{p}M0", f"{p}M{n}", role="construction",
+                           de="Beschleunigungsfläche über, Verzögerungsfläche unter der Kolbenweglinie",
+                           en="acceleration area above, deceleration area below the piston-path line")
+            b.planimeter(f"{p}balance", f"{p}massarea",
+                         de="mit dem Planimeter umfahren: Beschleunigungs- weniger Verzögerungsfläche",
+                         en="planimeter round it: acceleration less deceleration area")
+        return
+    sign = 1.0 if forward else -1.0
+    xs = {k: sign * b[f"X{k}"][0] for k in range(n + 1)}
+    c1, c2 = f"{p}K{corners[0]}", f"{p}K{corners[1]}"
+    x1, x2 = sign * b[c1][0], sign * b[c2][0]
     eps = 1e-9 * abs(xs[n] - xs[0])
-    with b.group("the lines drawn through the points", "Die Linien durch die Punkte gezogen"):
-        first = [f"K{k}" for k in range(n + 1) if xs[k] < x1 - eps] + ["Ks1"]
-        mid = ["Ks1"] + [f"K{k}" for k in range(n + 1) if x1 + eps < xs[k] < x2 - eps] + ["Ks2"]
-        last = ["Ks2"] + [f"K{k}" for k in range(n + 1) if xs[k] > x2 + eps]
+    stroke = ("", "") if forward else (" (Rückgang)", " (return stroke)")
+    with b.group("the lines drawn through the points" + stroke[1], "Die Linien durch die Punkte gezogen" + stroke[0]):
+        first = [f"{p}K{k}" for k in range(n + 1) if xs[k] < x1 - eps] + [c1]
+        mid = [c1] + [f"{p}K{k}" for k in range(n + 1) if x1 + eps < xs[k] < x2 - eps] + [c2]
+        last = [c2] + [f"{p}K{k}" for k in range(n + 1) if xs[k] > x2 + eps]
         if x2 <= x1 + eps:
             raise InvalidParameter("the compression must begin after the cut-off (s1 + s3 < s) for this figure")
-        b.line("forcea", first[0], first[-1], role="result", de="Kolbenkraft während der Füllung: Gerade",
+        b.line(f"{p}forcea", first[0], first[-1], role="result", de="Kolbenkraft während der Füllung: Gerade",
                en="piston force during admission: a straight line")
-        b.french_curve("forceb", fbase, mid, {}, de="Kolbenkraftlinie während der Expansion",
-                     en="piston-force line during expansion")
-        b.french_curve("forcec", fbase, last, {}, de="Kolbenkraftlinie während der Kompression",
-                     en="piston-force line during compression")
-        b.french_curve("mass", fbase, [f"M{k}" for k in range(n + 1)], {},
-                     de="Linie der Massenkräfte", en="line of the mass forces")
-    with b.group("free forces hatched vertically; the mass-force areas", "Freie Kräfte senkrecht gestrichelt; Massenkraftflächen"):
+        b.french_curve(f"{p}forceb", fbase, mid, {}, de="Kolbenkraftlinie während der Expansion",
+                       en="piston-force line during expansion")
+        b.french_curve(f"{p}forcec", fbase, last, {}, de="Kolbenkraftlinie während der Kompression",
+                       en="piston-force line during compression")
+        b.french_curve(f"{p}mass", fbase, [f"{p}M{k}" for k in range(n + 1)], {},
+                       de="Linie der Massenkräfte", en="line of the mass forces")
+    with b.group("free forces hatched vertically; the mass-force areas" + stroke[1],
+                 "Freie Kräfte senkrecht gestrichelt; Massenkraftflächen" + stroke[0]):
         for piece, (a, z) in zip(("forcea", "forceb", "forcec"), ((first[0], first[-1]), (mid[0], mid[-1]),
                                                                  (last[0], last[-1]))):
-            b.area_between(f"free.{piece[-1]}", piece, "mass", a, z, hatch_deg=90.0, role="result",
+            a, z = (a, z) if forward else (z, a)  # along the base from left to right
+            b.area_between(f"{p}free.{piece[-1]}", f"{p}{piece}", f"{p}mass", a, z, hatch_deg=90.0, role="result",
                            de="freie Kräfte zwischen Kolbenkraft- und Massenkraftlinie",
                            en="free forces between the piston-force line and the mass-force line")
-        b.area_between("massarea", "mass", fbase, "M0", f"M{n}", role="construction",
+        b.area_between(f"{p}massarea", f"{p}mass", fbase, f"{p}M0", f"{p}M{n}", role="construction",
                        de="Beschleunigungsfläche über, Verzögerungsfläche unter der Kolbenweglinie",
                        en="acceleration area above, deceleration area below the piston-path line")
-        b.planimeter("balance", "massarea", de="mit dem Planimeter umfahren: Beschleunigungs- weniger Verzögerungsfläche",
+        b.planimeter(f"{p}balance", f"{p}massarea",
+                     de="mit dem Planimeter umfahren: Beschleunigungs- weniger Verzögerungsfläche",
                      en="planimeter round it: acceleration less deceleration area")
 
 
@@ -330,8 +578,8 @@ def _curves(b: Builder, n: int, fbase: str) -> None:
 # --------------------------------------------------------------------------
 
 
-def _base_frame(fig: Figure) -> tuple[float, float, float, float, float, float]:
-    (ax, ay), (bx, by) = fig.replay["F0"], fig.replay[f"F{fig.params['parts']}"]
+def _base_frame(fig: Figure, prefix: str = "") -> tuple[float, float, float, float, float, float]:
+    (ax, ay), (bx, by) = fig.replay[f"{prefix}F0"], fig.replay[f"{prefix}F{fig.params['parts']}"]
     s = math.hypot(bx - ax, by - ay)
     return ax, ay, (bx - ax) / s, (by - ay) / s, s, fig.replay.givens["force_unit"]
 
@@ -343,8 +591,8 @@ def abscissa(fig: Figure, point: str) -> float:
     return ((p[0] - ax) * ux + (p[1] - ay) * uy) / s
 
 
-def _force(fig: Figure, point: str) -> float:
-    ax, ay, ux, uy, _, unit = _base_frame(fig)
+def _force(fig: Figure, point: str, prefix: str = "") -> float:
+    ax, ay, ux, uy, _, unit = _base_frame(fig, prefix)
     p = fig.replay[point]
     return ((p[0] - ax) * -uy + (p[1] - ay) * ux) / unit
 
@@ -357,6 +605,16 @@ def mass_force(fig: Figure, k: int) -> float:
 def piston_force(fig: Figure, tag: int | str) -> float:
     """F p_ü in kg at division point k (or "s1", "s2"), read off the force diagram."""
     return _force(fig, f"K{tag}")
+
+
+def return_mass_force(fig: Figure, k: int) -> float:
+    """P_b on the return stroke at the piston position of division point k, in kg (up = accelerated going back)."""
+    return _force(fig, f"rM{k}", "r")
+
+
+def return_piston_force(fig: Figure, tag: int | str) -> float:
+    """F'' p'' - F' p' on the return stroke at division point k (or "s1", "s2"), in kg (+ = towards the head end)."""
+    return _force(fig, f"rK{tag}", "r")
 
 
 def j_abscissa(g: Mapping[str, float]) -> float:
@@ -479,7 +737,7 @@ def model_areas_sweep(g: Mapping[str, Any]) -> dict[str, Any]:
             "exact_deceleration": -A * stroke_m * gauss(exact, we, math.pi)}
 
 
-def area_balance(fig: Figure, model: Mapping[str, float] | None = None) -> dict[str, float]:
+def area_balance(fig: Figure, model: Mapping[str, float] | None = None, stroke: str = "forward") -> dict[str, float]:
     """Acceleration area above the base and deceleration area below it, in kg m (= mkg of work).
 
     ``drawn_*``: the region between the mass-force line as drawn and the base line (an Area of the
@@ -492,14 +750,21 @@ def area_balance(fig: Figure, model: Mapping[str, float] | None = None) -> dict[
     """
     g = fig.replay.givens
     stroke_m = 2.0 * g["crank_radius"]
-    _, _, _, _, s, unit = _base_frame(fig)
+    p = "" if stroke == "forward" else "r"
+    _, _, _, _, s, unit = _base_frame(fig, p)
     to_kgm = stroke_m / s / unit  # drawn area: length along the base -> m, height -> kg
-    pieces = fig.replay["massarea"].signed_pieces()  # the region between the drawn line and the base, split
+    pieces = fig.replay[f"{p}massarea"].signed_pieces()  # the region between the drawn line and the base, split
     drawn_acc = sum(p.area for sign, p in pieces if sign > 0) * to_kgm
     drawn_dec = sum(p.area for sign, p in pieces if sign < 0) * to_kgm
-    drawn_balance = float(fig.replay["balance"]) * to_kgm  # the planimeter's reading
+    drawn_balance = float(fig.replay[f"{p}balance"]) * to_kgm  # the planimeter's reading
+    models = _model_areas(g) if model is None else {k: float(v) for k, v in model.items()}
+    if stroke != "forward":  # going back the masses are accelerated where they were decelerated coming
+        models = {"two_term_acceleration": models["two_term_deceleration"],
+                  "two_term_deceleration": models["two_term_acceleration"],
+                  "exact_acceleration": models["exact_deceleration"],
+                  "exact_deceleration": models["exact_acceleration"]}
     return {"drawn_acceleration": drawn_acc, "drawn_deceleration": drawn_dec, "planimeter_balance": drawn_balance,
-            **(_model_areas(g) if model is None else {k: float(v) for k, v in model.items()})}
+            **models}
 
 
 # --------------------------------------------------------------------------
@@ -517,7 +782,12 @@ def piston_force_checks(fig: Figure, model: Mapping[str, float] | None = None) -
     unit = g["force_unit"]
     stroke = 2.0 * g["crank_radius"] * g["scale"]
     # Euclidean float error ~1e-12 of the figure, read in kg: divide by the force unit.
-    size = max(stroke, (g["admission"] + g["back_pressure"]) * F * unit, A * unit, 1.0)
+    if "card.x0" in g:
+        top = max(p for c in card_pair(g) for p in c.forward[1] + c.back[1])
+        F = max(_areas(g))
+    else:
+        top = g["admission"] + g["back_pressure"]
+    size = max(stroke, top * F * unit, A * unit, 1.0)
     kg_tol = EUCLIDEAN_TOLERANCE * size / unit
     made_by = fig.replay.made_by()
     checks: list[Check] = []
@@ -537,19 +807,23 @@ def piston_force_checks(fig: Figure, model: Mapping[str, float] | None = None) -
                             A * _exact_accel(w, lam), A * bound + kg_tol + A * (1.0 + 4.0 * lam) * tol_w,
                             "eq. (298) drops the (R/L)^3 terms: |exact - two-term| <= 2.5 lam^3/(1 - lam^2)^2.5", "kg"))
         xk = abscissa(fig, f"K{k}")
-        p_u = model_steam(xk, g) - model_back(xk, g)
-        checks.append(Check(f"piston force {k} (F p_ü, eq. 297)", piston_force(fig, k), F * p_u, kg_tol,
+        force = _forward_force(xk, g)
+        checks.append(Check(f"piston force {k} (F p_ü, eq. 297)", piston_force(fig, k), force, kg_tol,
                             "Euclidean: ray-constructed hyperbolas, compass transfer", "kg"))
         checks.append(Check(f"free force {k}", piston_force(fig, k) - mass_force(fig, k),
-                            F * p_u - A * _two_term(w_measured, lam), 2 * kg_tol, "difference of two Euclidean ordinates",
+                            force - A * _two_term(w_measured, lam), 2 * kg_tol, "difference of two Euclidean ordinates",
                             "kg"))
-    for tag, x in (("s1", g["filling"]), ("s2", 1.0 - g["compression"])):
-        checks.append(Check(f"piston force at {tag}", piston_force(fig, tag), F * (model_steam(x, g) - model_back(x, g)),
+    cards = "card.x0" in g
+    for tag, x in () if cards else (("s1", g["filling"]), ("s2", 1.0 - g["compression"])):
+        checks.append(Check(f"piston force at {tag}", piston_force(fig, tag), _forward_force(x, g),
                             kg_tol, "Euclidean", "kg"))
-    xj = j_abscissa(g)
-    checks.append(Check("pressure change J (abscissa)", abscissa(fig, "J"), xj, EUCLIDEAN_TOLERANCE * 10,
-                        "fourth proportional and intercept theorem: Euclidean", "stroke"))
-    if g["filling"] < xj < 1.0 and xj > 1.0 - g["compression"]:
+    if fig.params.get("revolution"):
+        return checks + _return_checks(fig, kg_tol, lam, A, made_by)
+    xj = None if cards else j_abscissa(g)
+    if not cards:  # J is constructed from the model's hyperbolas; a card has none
+        checks.append(Check("pressure change J (abscissa)", abscissa(fig, "J"), xj, EUCLIDEAN_TOLERANCE * 10,
+                            "fourth proportional and intercept theorem: Euclidean", "stroke"))
+    if not cards and g["filling"] < xj < 1.0 and xj > 1.0 - g["compression"]:
         checks.append(Check("p_ü at J", model_steam(xj, g) - model_back(xj, g), 0.0, 1e-12 * (g["admission"] + 1),
                             "J is the zero of the over-pressure", "at"))
     # the area balance: reported, not assumed
@@ -579,6 +853,70 @@ def piston_force_checks(fig: Figure, model: Mapping[str, float] | None = None) -
     return checks
 
 
+def _areas(g: Mapping[str, float]) -> tuple[float, float]:
+    if "piston_area_cover" in g:
+        return g["piston_area_cover"], g["piston_area_crank"]
+    return g["piston_area"], g["piston_area"]
+
+
+def _forward_force(x: float, g: Mapping[str, float]) -> float:
+    """The piston force on the forward stroke (kg): F p_ü with one area, F' p' - F'' p'' with both sides'."""
+    if "card.x0" in g:  # the cards' lines, straight between their points
+        cover, crank = card_pair(g)
+        f1, f2 = _areas(g)
+        return f1 * cover.pressure(x, "forward") - f2 * crank.pressure(x, "forward")
+    if "piston_area_cover" in g:
+        return g["piston_area_cover"] * model_steam(x, g) - g["piston_area_crank"] * model_back(x, g)
+    return g["piston_area"] * (model_steam(x, g) - model_back(x, g))
+
+
+def _return_force(x: float, g: Mapping[str, float]) -> float:
+    """F'' p'' - F' p' on the return stroke at piston position x: the crank side's diagram is the cover side's mirrored."""
+    if "card.x0" in g:
+        cover, crank = card_pair(g)
+        f1, f2 = _areas(g)
+        return f2 * crank.pressure(x, "return") - f1 * cover.pressure(x, "return")
+    return g["piston_area_crank"] * model_steam(1.0 - x, g) - g["piston_area_cover"] * model_back(1.0 - x, g)
+
+
+def _return_checks(fig: Figure, kg_tol: float, lam: float, A: float, made_by: Mapping[str, Any]) -> list[Check]:
+    """The return stroke against (298) with the minus sign and the mirrored diagram, and its area balance."""
+    n = fig.params["parts"]
+    g = fig.replay.givens
+    checks: list[Check] = []
+    for k in range(n + 1):
+        w = math.pi * k / n
+        tol_w, why_w = angle_tolerance(fig, point_name(fig, k), made_by)
+        w_measured = crank_angle(fig, point_name(fig, k))
+        checks.append(Check(f"return mass force {k} (eq. 298, minus sign)", return_mass_force(fig, k),
+                            -A * _two_term(w, lam), kg_tol + A * (1.0 + 4.0 * lam) * tol_w,
+                            f"the forward ordinate carried the other way; {why_w}", "kg"))
+        checks.append(Check(f"return mass force {k} = -(forward)", return_mass_force(fig, k), -mass_force(fig, k),
+                            2 * kg_tol, "the same compass opening laid off the other way", "kg"))
+        checks.append(Check(f"return mass force {k} at the drawn angle", return_mass_force(fig, k),
+                            -A * _two_term(w_measured, lam), kg_tol, "Euclidean chain: float rounding only", "kg"))
+        x = abscissa(fig, f"rK{k}")
+        checks.append(Check(f"return piston force {k} (F''p'' - F'p')", return_piston_force(fig, k),
+                            _return_force(x, g), 2 * kg_tol,
+                            "Euclidean: mirrored diagram, proportional angle for F'/F'', compass transfer", "kg"))
+    for tag, x in () if "card.x0" in g else (("s1", 1.0 - g["filling"]), ("s2", g["compression"])):
+        checks.append(Check(f"return piston force at {tag}", return_piston_force(fig, tag), _return_force(x, g),
+                            2 * kg_tol, "Euclidean", "kg"))
+    curve_tol = _curve_area_tolerance(n, lam) * A * 2.0 * g["crank_radius"]
+    fwd, ret = area_balance(fig), area_balance(fig, stroke="return")
+    for side in ("acceleration", "deceleration"):
+        checks.append(Check(f"return stroke: {side} area as drawn vs eq. (298)", ret[f"drawn_{side}"],
+                            ret[f"two_term_{side}"], curve_tol, "French curve through the points (estimate), times "
+                            "the stroke", "kg m"))
+    checks.append(Check("return acceleration area = forward deceleration area (as drawn)", ret["drawn_acceleration"],
+                        fwd["drawn_deceleration"], 1e-9 * A * 2.0 * g["crank_radius"],
+                        "the same curve, mirrored in the base line", "kg m"))
+    checks.append(Check("return planimeter reading = acceleration - deceleration area", ret["planimeter_balance"],
+                        ret["drawn_acceleration"] - ret["drawn_deceleration"], 1e-9 * A * 2.0 * g["crank_radius"],
+                        "the same drawn region, measured whole and piece by piece", "kg m"))
+    return checks
+
+
 def _curve_area_tolerance(n: int, lam: float) -> float:
     return 2.0 * (math.pi / n) ** 3 * (1.0 + 4.0 * lam)
 
@@ -590,9 +928,12 @@ PISTON_FORCE = register(Construction(
     build=lambda parts, method, **v: build_piston_force(parts=parts, method=method, **v),
     checks=piston_force_checks,
     sweep_model=lambda g, params: model_areas_sweep(g),
-    defaults={"parts": 18, "method": "auto", **TAFEL_I, **HP_DIAGRAM, "scale": 2.5, "force_unit": 1.2e-4},
-    book_params=({}, {"weight": 990.0}),  # Tafel I: high-pressure and low-pressure side
-    structural=("parts", "method", "filling", "compression"),
+    defaults={"parts": 18, "method": "auto", **TAFEL_I, **HP_DIAGRAM, "scale": 2.5, "force_unit": 1.2e-4,
+              "piston_area_cover": PISTON_AREA_COVER, "piston_area_crank": PISTON_AREA_CRANK, "revolution": False,
+              "indicator": "", "indicator_crank_side": ""},
+    # Tafel I: high-pressure and low-pressure side; and both strokes of the high-pressure side, F' and F''
+    book_params=({}, {"weight": 990.0}, {"revolution": True}),
+    structural=("parts", "method", "filling", "compression", "revolution", "indicator", "indicator_crank_side"),
     sweep=lambda g, ratios: {**g, "rod_length": ratios * g["crank_radius"]},  # L = (L/R) R
     extra={"plate": piston_force_plate, "help": {
         "weight": "weight G of the reciprocating parts in kg (Tafel I: 830 high-pressure, 990 low-pressure side)",
@@ -600,6 +941,8 @@ PISTON_FORCE = register(Construction(
         "crank_radius": "crank radius R in m (Tafel I: 0.4)",
         "rod_length": "connecting-rod length L in m (Tafel I: 2.0)",
         "piston_area": "piston area F in cm^2 (Tafel I: (F' + F'')/2 = 1529.07)",
+        "piston_area_cover": "piston-force --revolution: F' of the cover side in cm^2 (Tafel I: 1546.25)",
+        "piston_area_crank": "piston-force --revolution: F'' of the crank side, less the rod, in cm^2 (Tafel I: 1511.89)",
         "scale": "drawn length per metre of stroke (piston-force; default 2.5)",
         "force_unit": "drawn length per kg of force (piston-force; default 1.2e-4)",
     }},
@@ -622,3 +965,30 @@ def mass_force_rows(*, weight: float, rpm: float, crank_radius: float, rod_lengt
     fig = PISTON_FORCE.figure(weight=weight, rpm=rpm, crank_radius=crank_radius, rod_length=rod_length, parts=parts)
     return [{"crank_angle_deg": math.degrees(crank_angle(fig, point_name(fig, k))), "x": abscissa(fig, f"M{k}"),
              "P_b": mass_force(fig, k)} for k in range(parts + 1)]
+
+
+def revolution_mass_force_rows(*, weight: float, rpm: float, crank_radius: float, rod_length: float,
+                               parts: int = 18) -> list[dict[str, Any]]:
+    """Both strokes: crank_angle_deg 0..360, stroke, x (from the head-end dead centre) and P_b (kg), measured.
+
+    P_b is positive where the masses take up force in the direction of the current stroke: eq. (298) forward,
+    and on the return (298) with the angle from the crank-end dead centre and the minus sign.  The dead
+    centres belong to both strokes: 180° closes the forward stroke (its row ``forward``) and opens the return
+    (``return``); 0° opens the forward stroke, 360° closes the return.
+
+    >>> rows = revolution_mass_force_rows(weight=830, rpm=50, crank_radius=0.4, rod_length=2.0, parts=2)
+    >>> [(round(r["crank_angle_deg"], 9), r["stroke"], round(r["x"], 9), round(r["P_b"], 3)) for r in rows]
+    ... # doctest: +NORMALIZE_WHITESPACE
+    [(0.0, 'forward', 0.0, 1113.391), (90.0, 'forward', 0.550510257, -185.565), (180.0, 'forward', 1.0, -742.26),
+     (180.0, 'return', 1.0, 742.26), (270.0, 'return', 0.550510257, 185.565), (360.0, 'return', 0.0, -1113.391)]
+    """
+    fig = PISTON_FORCE.figure(weight=weight, rpm=rpm, crank_radius=crank_radius, rod_length=rod_length, parts=parts,
+                              revolution=True)
+    rows = []
+    for k in range(parts + 1):
+        rows.append({"crank_angle_deg": math.degrees(crank_angle(fig, point_name(fig, k))), "stroke": "forward",
+                     "x": abscissa(fig, f"M{k}"), "P_b": mass_force(fig, k)})
+    for k in range(parts, -1, -1):
+        rows.append({"crank_angle_deg": 360.0 - math.degrees(crank_angle(fig, point_name(fig, k))), "stroke": "return",
+                     "x": abscissa(fig, f"rM{k}"), "P_b": return_mass_force(fig, k)})
+    return rows

@@ -60,7 +60,9 @@ from .crank import angle_tolerance, build_frame, crank_angle, point_name, rod_ar
 from .indicator import BAUMANN, indicator_frame, indicator_givens, pressures_at
 from .indicator import back_pressure as model_back_pressure
 from .indicator import steam_pressure as model_steam_pressure
-from .inertia.build import _kind, _setup, _value
+from .ordinates import inertia_setup, ordinate_value, point_kind
+from .indicator_card import card_force, card_givens, card_pair, draw_card, load_indicator
+from .revolution import MACHINES, REVOLUTION_PLATE, build_revolution, crank_shifts, parse_cranks, revolution_checks
 
 __all__ = ["TANGENTIAL", "build_tangential", "tangential_checks", "ok_over_r", "t_over_unit", "free_force",
            "model_t", "drawn_model", "unrolled_angle", "mean_height", "excess_area", "crossing_angles", "model_summary",
@@ -69,16 +71,24 @@ __all__ = ["TANGENTIAL", "build_tangential", "tangential_checks", "ok_over_r", "
 
 #: Baumann's κ = P/B_max ("Verhältnis des Anfangsbeschleunigungsdrucks zum Anfangskolbendruck"), his first case.
 KAPPA = 8.0
-FORCES = ("baumann", "unit")
+FORCES = ("baumann", "unit", "indicator")
 
 #: What the Fig. 26/27-like plate shows: the unrolled base, the ordinates and points of T, the curve,
 #: the mean line, the crossings and the hatched excess area.
 PLATE = (r"tbase", r"U\d+", r"u\d+", r"T\d+", r"tcurve", r"M0|Mn", r"mean", r"A1|A2", r"excess")
 
 
-def _givens(r: Any, rod_ratio: Any, force: str, kappa: Any, pressure_unit: Any, **diagram: Any) -> dict[str, float]:
+def _givens(r: Any, rod_ratio: Any, force: str, kappa: Any, pressure_unit: Any, cards: Any = None,
+            **diagram: Any) -> dict[str, float]:
     g = {"r": bounded("crank radius r", r, DRAWN_LENGTH), "rod_ratio": rod_ratio_param(rod_ratio)}
     if force == "unit":
+        return g
+    if force == "indicator":
+        g["pressure_unit"] = bounded("pressure-scale unit (drawn length of 1 at)", pressure_unit, DRAWN_LENGTH)
+        cover, crank = cards
+        g.update(card_givens(cover, "card."))
+        if crank is not None:
+            g.update(card_givens(crank, "crank."))
         return g
     d = indicator_givens(diagram["filling"], diagram["clearance"], diagram["admission"], diagram["back_pressure"],
                          diagram["compression"], pressure_unit)
@@ -91,6 +101,9 @@ def _givens(r: Any, rod_ratio: Any, force: str, kappa: Any, pressure_unit: Any, 
 def _validate(givens: Mapping[str, float]) -> None:
     bounded("crank radius r", givens["r"], DRAWN_LENGTH)
     rod_ratio_param(givens["rod_ratio"])
+    if "card.x0" in givens:  # a digitised card: checked as a file is
+        bounded("pressure-scale unit (drawn length of 1 at)", givens["pressure_unit"], DRAWN_LENGTH)
+        card_pair(givens)
     if "admission" in givens:
         indicator_givens(givens["filling"], givens["clearance"], givens["admission"], givens["back_pressure"],
                          givens["compression"], givens["pressure_unit"])
@@ -106,17 +119,50 @@ def chord_shortfall(n: int, r: float = 1.0) -> float:
     return r * (math.pi - 2.0 * n * math.sin(math.pi / (2.0 * n)))
 
 
+def _engine(revolution: Any, cranks: Any, machine: Any, force: str, parts: int) -> dict[str, Any]:
+    """The revolution's params: crank offsets, their shifts in divisions, cylinders per rod (empty: forward stroke)."""
+    if machine not in MACHINES:
+        raise InvalidParameter(f"machine must be one of {', '.join(MACHINES)}, got {machine!r}")
+    if not revolution:
+        if cranks or machine != "single":
+            raise InvalidParameter("--cranks and --machine draw the whole revolution: add --revolution")
+        return {}
+    if force == "baumann":
+        raise InvalidParameter("the revolution is built for a unit force (--force unit) or a digitised diagram "
+                               "(--indicator FILE.csv): Baumann's model on the return stroke is not built yet")
+    m = MACHINES[machine]
+    offsets = parse_cranks(cranks) if cranks else m.cranks
+    if machine == "compound" and len(offsets) != 2:
+        raise InvalidParameter(f"a compound engine has two cranks (high and low pressure), got --cranks {cranks!r}")
+    return {"revolution": True, "machine": machine, "cranks": ", ".join(f"{v:g}" for v in offsets),
+            "offsets": offsets, "shifts": crank_shifts(offsets, parts),
+            "cylinders": m.cylinders, "plate": REVOLUTION_PLATE}
+
+
 def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, force: str, kappa: float,
                      filling: float, clearance: float, admission: float, back_pressure: float, compression: float,
-                     pressure_unit: float) -> Figure:
+                     pressure_unit: float, revolution: bool = False, cranks: str = "", machine: str = "single",
+                     indicator: str = "", indicator_crank_side: str = "") -> Figure:
     if force not in FORCES:
         raise InvalidParameter(f"force must be one of {', '.join(FORCES)}, got {force!r}")
-    givens = _givens(r, rod_ratio, force, kappa, pressure_unit, filling=filling, clearance=clearance,
+    cards = None
+    if indicator_crank_side and not indicator:
+        raise InvalidParameter("--indicator-crank-side goes with --indicator (the cover side's diagram)")
+    if indicator:
+        if force == "unit":
+            raise InvalidParameter("--indicator gives the forces: leave out --force unit")
+        force = "indicator"
+        cards = (load_indicator(indicator), load_indicator(indicator_crank_side) if indicator_crank_side else None)
+    elif force == "indicator":
+        raise InvalidParameter("--force indicator needs --indicator FILE.csv")
+    givens = _givens(r, rod_ratio, force, kappa, pressure_unit, cards, filling=filling, clearance=clearance,
                      admission=admission, back_pressure=back_pressure, compression=compression)
     used = check_parts(parts, method)
     if parts < 2:
         raise InvalidParameter(f"the tangential-pressure diagram needs at least 2 parts, got {parts}")
     params = {"parts": parts, "method": used, "requested_method": method, "force": force, "plate": PLATE}
+    engine = _engine(revolution, cranks, machine, force, parts)
+    params.update(engine)
     if force == "baumann":
         params.update(filling=givens["filling"], compression=givens["compression"])
     b = Builder("tangential-pressure", givens, params)
@@ -127,10 +173,25 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
     rod_arcs(b, f, points)
     O, axis = f["O"], f["axis"]
     if force == "baumann":
-        ctx = _setup(b, f)  # vertical through O, 90° point, proportional angle for r/L and c v^2/r
+        ctx = inertia_setup(b, f)  # vertical through O, 90° point, proportional angle for r/L and c v^2/r
         vert = ctx.vert
         d = indicator_frame(b, base=axis, head=f["D0"], crank=f["D1"], prefix="ind.")
         scale = d.prefix + "v.crank"
+    elif force == "indicator":
+        with b.group("perpendicular to the stroke through O", "Senkrechte zum Hub durch O"):
+            vert = b.perpendicular_bisector("vert", f["D0"], f["D1"])
+        cover = draw_card(b, cards[0], prefix="card.", head=f["D0"], crank=f["D1"], axis=axis,
+                          de="der Deckelseite", en="of the cover side")
+        if cards[1] is not None:
+            crank = draw_card(b, cards[1], prefix="crank.", head=f["D0"], crank=f["D1"], axis=axis,
+                              de="der Kurbelseite", en="of the crank side")
+        else:  # Baumann's assumption: the crank side's card is the cover side's, seen from the other dead centre
+            crank = draw_card(b, cards[0], prefix="crank.", given_prefix="card.", head=f["D1"], crank=f["D0"],
+                              axis=axis, mirrored=True, up=(f["D0"], f["D1"]),
+                              de="der Kurbelseite (die der Deckelseite gespiegelt)",
+                              en="of the crank side (the cover side's mirrored)")
+        scale = b.erect_perpendicular("v.crank", f["D1"], axis, O)
+        return_heights: dict[int, tuple[str, str]] = {}
     else:
         with b.group("perpendicular to the stroke through O", "Senkrechte zum Hub durch O"):
             vert = b.perpendicular_bisector("vert", f["D0"], f["D1"])
@@ -155,14 +216,53 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
                 if force == "baumann":
                     ray = b.line(f"ray{k}", O, _free_force_mark(b, f, ctx, d, scale, k, P, n),
                                  de=f"Strahl O–M{k}", en=f"ray O-M{k}")
+                elif force == "indicator":
+                    marks = _card_marks(b, f, cover, crank, scale, k, bool(engine))
+                    ray = b.line(f"ray{k}", O, marks[0], de=f"Strahl O–M{k}", en=f"ray O-M{k}")
+                    if engine:
+                        rray = b.line(f"rray{k}", O, marks[1], de=f"Strahl O–M′{k} (Rückgang)",
+                                      en=f"ray O-M'{k} (return stroke)")
+                        rQ = b.intersect(f"rQ{k}", rray, h, rule=("only",), de=f"rQ{k}: P′·OK/r im Rückgang",
+                                         en=f"rQ{k}: P'·OK/r on the return stroke")
+                        return_heights[k] = (H, rQ)
                 else:
                     ray = unit_ray
                 Q = b.intersect(f"Q{k}", ray, h, rule=("only",), de=f"Q{k}: P′·OK/r (Strahlensatz)",
                                 en=f"Q{k}: P'·OK/r (intercept theorem)")
                 heights[k] = (H, Q)
-    _unrolled(b, f, points, n, heights)
+    if engine:
+        build_revolution(b, f, points, n, heights, engine["shifts"], engine["cylinders"],
+                         return_heights if force == "indicator" else None)
+    else:
+        _unrolled(b, f, points, n, heights)
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))
+
+
+def _card_marks(b: Builder, f: Mapping[str, str], cover: Any, crank: Any, scale: str, k: int,
+                both: bool) -> tuple[str, str | None]:
+    """The over-pressure at crank position k read on the cards' straightedge lines, marked over B (up = along
+    the motion): forward the cover side's line less the crank side's; with *both*, also the return stroke's."""
+    X = f"X{k}"
+    with b.group(f"over-pressure at {k} from the indicator cards", f"Überdruck bei {k} aus den Indikatordiagrammen"):
+        o = b.erect_perpendicular(f"o{k}", X, f["axis"], f["O"])
+        up = ("toward", None, None, 0.0, 1.0)
+        out: list[str | None] = []
+        for tag, work, against, de, en in (("", cover.forward, crank.forward, "Hingang", "forward stroke"),
+                                            ("r", crank.back, cover.back, "Rückgang", "return stroke")):
+            if tag and not both:
+                out.append(None)
+                continue
+            E = b.intersect(f"{tag}E{k}", o, work, rule=up, de=f"Druck der arbeitenden Seite ({de})",
+                            en=f"pressure of the working side ({en})")
+            R = b.intersect(f"{tag}R{k}", o, against, rule=up, de=f"Druck der anderen Seite ({de})",
+                            en=f"pressure of the other side ({en})")
+            kM = b.circle_segment(f"{tag}M{k}.k", f["D1"], R, E, de="Überdruck auf die Senkrechte in B getragen",
+                                  en="over-pressure carried to the vertical through B")
+            out.append(b.intersect(f"{tag}M{k}", scale, kM, rule=("toward", R, E),
+                                   de=f"{tag}M{k}: Überdruck über B (oben: in der Bewegungsrichtung)",
+                                   en=f"{tag}M{k}: over-pressure above B (up: along the motion)"))
+        return out[0], out[1]
 
 
 def _free_force_mark(b: Builder, f: Mapping[str, str], ctx: Any, d: Any, scale: str, k: int, P: str, n: int) -> str:
@@ -174,7 +274,7 @@ def _free_force_mark(b: Builder, f: Mapping[str, str], ctx: Any, d: Any, scale: 
         E, R = pts["steam"], pts["back"]
         dc_p = ctx.D0 if 2 * k <= n else ctx.D1
         dc_2 = ctx.D0 if (4 * k < n or 4 * k > 3 * n) else ctx.D1
-        V = _value(b, ctx, f"b{k}", P, _kind(k, n), dc_p, dc_2)
+        V = ordinate_value(b, ctx, f"b{k}", P, point_kind(k, n), dc_p, dc_2)
         kF = b.circle_segment(f"F{k}.k", E, ctx.gf.origin, V, de="Beschleunigungsdruck von der Dampflinie abgezogen",
                               en="acceleration force taken off the steam line")
         F = b.intersect(f"F{k}", o, kF, rule=("left", ctx.gf.origin, V), role="result",
@@ -266,6 +366,8 @@ def tangential_plate(fig: Figure) -> dict:
     """
     R = fig.replay
     n = fig.params["parts"]
+    if fig.params.get("revolution"):  # a revolution's diagrams are lettered by their own steps (each crank, the sum)
+        return {"looks": {}, "furniture": []}
     U0, Un, M0, Mn = R["U0"], R[f"U{n}"], R["M0"], R["Mn"]
     span = abs(Un[0] - U0[0])
     d = 0.018 * span
@@ -370,6 +472,8 @@ def model_force(w: float, g: Mapping[str, float], force: str) -> float:
     if force == "unit":
         return 1.0
     lam = 1.0 / g["rod_ratio"]
+    if force == "indicator":
+        return float(card_force(g, lam)(w))
     x = piston_fraction(w, lam)
     return (model_steam_pressure(x, g) - model_back_pressure(x, g)
             - g["pressure_ratio"] * (math.cos(w) + lam * math.cos(2.0 * w)))
@@ -385,7 +489,12 @@ def _kinks(g: Mapping[str, float], force: str) -> list[float]:
         return []
     lam = 1.0 / g["rod_ratio"]
     out = []
-    for x in (g["filling"], 1.0 - g["compression"]):
+    if force == "indicator":  # the cards' corners: every digitised point of the forward stroke's lines
+        cover, crank = card_pair(g)
+        corners = sorted({x for x in cover.forward[0] + crank.forward[0] if 0.0 < x < 1.0})
+    else:
+        corners = [g["filling"], 1.0 - g["compression"]]
+    for x in corners:
         lo, hi = 0.0, math.pi
         for _ in range(200):
             mid = 0.5 * (lo + hi)
@@ -418,6 +527,8 @@ def model_t_array(w: np.ndarray, g: Mapping[str, float], force: str) -> np.ndarr
     factor_w = np.sin(w + beta) / np.cos(beta)
     if force == "unit":
         return factor_w
+    if force == "indicator":
+        return card_force(g, lam)(w) * factor_w
     x = 0.5 * (1.0 - np.cos(w) + (1.0 - np.sqrt(1.0 - (lam * np.sin(w)) ** 2)) / lam)
     s1, s0, P, P0, s3 = g["filling"], g["clearance"], g["admission"], g["back_pressure"], g["compression"]
     steam = np.where(x <= s1, P + P0, (P + P0) * (s1 + s0) / (x + s0))
@@ -544,20 +655,32 @@ def tangential_checks(fig: Figure, model: Mapping[str, float] | None = None) -> 
     lam = 1.0 / g["rod_ratio"]
     made_by = fig.replay.made_by()
     checks: list[Check] = []
-    scale = 1.0 if force == "unit" else max(1.0, g["admission"] + g["back_pressure"])
+    if force == "unit":
+        scale = 1.0
+    elif force == "indicator":
+        scale = max(1.0, max(p for c in card_pair(g) for p in c.forward[1] + c.back[1]))
+    else:
+        scale = max(1.0, g["admission"] + g["back_pressure"])
     for k in range(1, n):
         w = crank_angle(fig, point_name(fig, k))  # the angle the point really has: the division's error drops out
         checks.append(Check(f"OK/r at {k}", ok_over_r(fig, k), factor(w, lam), EUCLIDEAN_TOLERANCE,
                             "rod line and perpendicular through O: straightedge steps", "r"))
-        if force == "baumann":
+        if force in ("baumann", "indicator"):
             tol = 10 * EUCLIDEAN_TOLERANCE * scale / g["pressure_unit"]
+            why = ("the cards' straightedge lines met by the ordinate, compass" if force == "indicator" else
+                   "hyperbola rays, inertia ordinate and compass")
             checks.append(Check(f"P' at {k}", free_force(fig, k), model_force(w, g, force), tol,
-                                "hyperbola rays, inertia ordinate and compass: Euclidean, read in at", "at"))
-            checks.append(Check(f"T at {k}", t_over_unit(fig, k), model_t(w, g, force), 2 * tol,
-                                "P'·OK/r by the intercept theorem: Euclidean, read in at", "at"))
-        else:
+                                f"{why}: Euclidean, read in at", "at"))
+            if not fig.params.get("revolution"):  # over a revolution the ordinates are checked as the sum's
+                checks.append(Check(f"T at {k}", t_over_unit(fig, k), model_t(w, g, force), 2 * tol,
+                                    "P'·OK/r by the intercept theorem: Euclidean, read in at", "at"))
+        elif not fig.params.get("revolution"):  # over a revolution the ordinates are checked as the sum's
             checks.append(Check(f"T/P at {k}", t_over_unit(fig, k), factor(w, lam), EUCLIDEAN_TOLERANCE,
                                 "proportional angle with P' = r: Euclidean", "P"))
+    if fig.params.get("revolution"):
+        if force == "indicator":
+            return checks + revolution_checks(fig, card_force(g, lam), scale / g["pressure_unit"])
+        return checks + revolution_checks(fig)
     r = g["r"]
     prov = made_by[f"U{n}"].provenance
     length = fig.replay["U0"].distance(fig.replay[f"U{n}"])
@@ -569,7 +692,7 @@ def tangential_checks(fig: Figure, model: Mapping[str, float] | None = None) -> 
                         "n equal steps of the chord as drawn: Euclidean once the opening is set", "r"))
     model = model_summary(g, force) if model is None else model
     drawn = drawn_model(g, force, n)
-    unit = "at" if force == "baumann" else "P"
+    unit = "P" if force == "unit" else "at"
     why = "the French curve through n + 1 points (twice its error on exact data) and the planimeter (1e-6)"
     tol_h = 2.0 * abs(drawn["mean"] - model["mean"]) + 1e-6 * scale
     checks.append(Check("mean height (planimeter)", mean_height(fig), model["mean"], tol_h, why, unit))
@@ -594,8 +717,21 @@ TANGENTIAL = register(Construction(
     checks=tangential_checks,
     sweep_model=lambda g, params: model_summary_sweep(g, params["force"]),
     defaults={"rod_ratio": 5.0, "parts": 18, "method": "auto", "r": 1.0, "force": "baumann", "kappa": KAPPA,
-              **BAUMANN, "pressure_unit": 0.2},
-    book_params=({"rod_ratio": 5.0, "parts": 18, "kappa": 8.0}, {"rod_ratio": 5.0, "parts": 18, "kappa": 2.0}),
-    structural=("parts", "method", "force", "filling", "compression"),
-    extra={"plate": tangential_plate},
+              **BAUMANN, "pressure_unit": 0.2, "revolution": False, "cranks": "", "machine": "single",
+              "indicator": "", "indicator_crank_side": ""},
+    book_params=({"rod_ratio": 5.0, "parts": 18, "kappa": 8.0}, {"rod_ratio": 5.0, "parts": 18, "kappa": 2.0},
+                 # a compound engine, cranks at 90 degrees: the summed diagram over a revolution and its excess areas
+                 {"rod_ratio": 5.0, "parts": 18, "force": "unit", "revolution": True, "machine": "compound"}),
+    structural=("parts", "method", "force", "filling", "compression", "revolution", "cranks", "machine", "indicator",
+                "indicator_crank_side"),
+    extra={"plate": tangential_plate, "help": {
+        "cranks": "tangential-pressure --revolution: crank offsets in degrees ahead of the first, e.g. 0,90 "
+                  "(multiples of 180/parts; default: the machine's)",
+        "machine": "tangential-pressure --revolution: single (default; cranks as --cranks says), tandem (two "
+                   "cylinders on one rod, forces added before the crank), compound (cranks at 0,90)",
+        "indicator": "tangential-pressure: a digitised indicator diagram of the cover side, CSV x,p (the loop in "
+                     "drawing order; x from the head-end dead centre in strokes, p absolute in at)",
+        "indicator_crank_side": "tangential-pressure: the crank side's diagram (default: the cover side's mirrored, "
+                                "Baumann's assumption)",
+    }},
 ), validate=_validate)

@@ -320,12 +320,16 @@ def french_curve_op(args, params, givens, refs, xp):
     Piecewise cubic Hermite in the frame of the axis: the slope at a point is
     the given tangent's where there is one, else that of the parabola through
     the point and its two neighbours (Bessel), as a draftsman lays a French
-    curve through three points at a time.
+    curve through three points at a time.  At a *corner* (``corners``: indices
+    of points, optional) the curve is laid anew: the pieces on either side end
+    there with their own one-sided slopes, as the draftsman stops the curve at a
+    kink (a dead centre of a crank in a summed tangential diagram).
     """
     axis = args[0]
     n = int(params["points"])
     pts = list(args[1:1 + n])
     tangents = dict(zip((int(i) for i in params["tangent_at"]), args[1 + n:]))
+    corners = {int(i) for i in params.get("corners", ())}
     ux, uy, nx, ny = _frame_of(axis)
     rows = sorted(((p.x * ux + p.y * uy, p.x * nx + p.y * ny, i, p) for i, p in enumerate(pts)),
                   key=lambda r: (r[0], r[2]))
@@ -335,10 +339,29 @@ def french_curve_op(args, params, givens, refs, xp):
     for a, c in zip(u, u[1:]):
         if c - a <= 1e-12 * scale:
             raise GeometryError("two points of the curve share an abscissa; a French curve cannot pass both")
+    cuts = [0] + [j for j in range(1, len(rows) - 1) if rows[j][2] in corners] + [len(rows) - 1]
+
+    def plane(a: float, b: float) -> Point:
+        return Point(a * ux + b * nx, a * uy + b * ny)
+
+    out = [rows[0][3]]
+    for lo, hi in zip(cuts, cuts[1:]):
+        pu, pv = u[lo:hi + 1], v[lo:hi + 1]
+        slopes = _slopes(pu, pv, [r[2] for r in rows[lo:hi + 1]], tangents, ux, uy, nx, ny)
+        for j in range(len(pu) - 1):
+            third = (pu[j + 1] - pu[j]) / 3.0
+            out += [plane(pu[j] + third, pv[j] + slopes[j] * third),
+                    plane(pu[j + 1] - third, pv[j + 1] - slopes[j + 1] * third), rows[lo + j + 1][3]]
+    return (BezierCurve(out),)
+
+
+def _slopes(u: list[float], v: list[float], index: list[int], tangents: dict, ux: float, uy: float, nx: float,
+            ny: float) -> list[float]:
+    """The slope at each point of one smooth piece: the given tangent's, else Bessel's (one-sided at the ends)."""
     h = [c - a for a, c in zip(u, u[1:])]
     d = [(v[i + 1] - v[i]) / h[i] for i in range(len(h))]
     slopes = []
-    for j, (_, _, i, _) in enumerate(rows):
+    for j, i in enumerate(index):
         if i in tangents:
             t = tangents[i]
             du = (t.q.x - t.p.x) * ux + (t.q.y - t.p.y) * uy
@@ -350,20 +373,11 @@ def french_curve_op(args, params, givens, refs, xp):
             slopes.append(d[0])
         elif j == 0:
             slopes.append(d[0] + (d[0] - d[1]) * h[0] / (h[0] + h[1]))
-        elif j == len(rows) - 1:
+        elif j == len(index) - 1:
             slopes.append(d[-1] + (d[-1] - d[-2]) * h[-1] / (h[-1] + h[-2]))
         else:
             slopes.append((h[j] * d[j - 1] + h[j - 1] * d[j]) / (h[j - 1] + h[j]))
-
-    def plane(a: float, b: float) -> Point:
-        return Point(a * ux + b * nx, a * uy + b * ny)
-
-    out = [rows[0][3]]
-    for j in range(len(h)):
-        third = h[j] / 3.0
-        out += [plane(u[j] + third, v[j] + slopes[j] * third),
-                plane(u[j + 1] - third, v[j + 1] - slopes[j + 1] * third), rows[j + 1][3]]
-    return (BezierCurve(out),)
+    return slopes
 
 
 def parabola_envelope_op(args, params, givens, refs, xp):

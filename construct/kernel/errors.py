@@ -31,6 +31,7 @@ __all__ = [
     "WrongInput",
     "MissingGiven",
     "DuplicateName",
+    "InputFileError",
 ]
 
 
@@ -126,3 +127,7 @@ class MissingGiven(StepError, InvalidParameter):
 
 class DuplicateName(StepError, InvalidParameter):
     """A step would make an object under a name an earlier step already used."""
+
+
+class InputFileError(ConstructError, ValueError):
+    """An input file (a digitised indicator diagram) cannot be read, or its contents are not what they must be."""

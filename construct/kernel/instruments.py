@@ -480,7 +480,8 @@ class Builder:
         return name
 
     def french_curve(self, name: str, axis: str, points: Sequence[str], tangents: Mapping[int, str] | None = None,
-                     *, de: str | None = None, en: str | None = None, role: str = "result") -> str:
+                     *, de: str | None = None, en: str | None = None, role: str = "result",
+                     corners: Sequence[int] = ()) -> str:
         """A smooth curve drawn through *points* with a French curve, along *tangents* (point index -> line).
 
         It constructs nothing: checks on it state how far a drawn curve may stray.
@@ -491,11 +492,15 @@ class Builder:
         ...     _ = b.given_point(n, x, y)
         >>> round(b[b.french_curve("c", "x", "ABC")].y_at(1.0), 12)
         1.0
+        >>> b[b.french_curve("v", "x", "ABC", corners=(1,))].y_at(0.5)   # laid anew at the corner B
+        0.5
         """
         tangents = dict(tangents or {})
         at = sorted(tangents)
-        self.record("curve", "french_curve", (axis, *points, *(tangents[i] for i in at)), (name,),
-                    {"points": len(points), "tangent_at": tuple(at)},
+        params: dict[str, Any] = {"points": len(points), "tangent_at": tuple(at)}
+        if corners:  # only when asked: the protocols of smooth curves stay as they were
+            params["corners"] = tuple(sorted(int(i) for i in corners))
+        self.record("curve", "french_curve", (axis, *points, *(tangents[i] for i in at)), (name,), params,
                     de or "Kurve mit dem Kurvenlineal gezogen", en or "curve drawn with a French curve", role=role)
         return name
 

@@ -152,6 +152,8 @@ def _diagram(g: Mapping[str, float], lang: str) -> list[str]:
 
 def _indicator(fig: "Figure", lang: str) -> list[str]:
     g = fig.replay.givens
+    if "admission" not in g:  # a digitised card, not Baumann's idealised diagram
+        return _card(fig, lang) + [_scale(g, lang, "r")]
     return _diagram(g, lang) + [_scale(g, lang, "r")]
 
 
@@ -160,20 +162,59 @@ def _piston_force(fig: "Figure", lang: str) -> list[str]:
     de = lang == "de"
     out = [f"G = {number(g['weight'], lang)} kg", f"n = {number(g['rpm'], lang)}/min",
            f"R = {_metres(g['crank_radius'], lang)} m", f"L = {_metres(g['rod_length'], lang)} m",
-           f"F = {number(g['piston_area'], lang, 5)} cm²",
-           f"p₁ = {number(g['admission'], lang)} at", f"p₂ = {number(g['back_pressure'], lang)} at",
-           ("Füllung " if de else "cut-off ") + _percent(g["filling"], lang),
-           ("schädlicher Raum " if de else "clearance ") + _percent(g["clearance"], lang),
-           ("Kompression " if de else "compression ") + _percent(g["compression"], lang),
-           _parts(fig, lang)]
+           f"F = {number(g['piston_area'], lang, 5)} cm²"]
+    if "admission" in g:  # Baumann's idealised diagram (a digitised card says itself, below)
+        out += [f"p₁ = {number(g['admission'], lang)} at", f"p₂ = {number(g['back_pressure'], lang)} at",
+                ("Füllung " if de else "cut-off ") + _percent(g["filling"], lang),
+                ("schädlicher Raum " if de else "clearance ") + _percent(g["clearance"], lang),
+                ("Kompression " if de else "compression ") + _percent(g["compression"], lang)]
+    out.append(_parts(fig, lang))
+    if fig.params.get("revolution"):  # both sides, each with its own area (Tafel I: F', F'')
+        out[4] = (f"F′ = {number(g['piston_area_cover'], lang, 6)} cm² (Deckelseite), "
+                  f"F″ = {number(g['piston_area_crank'], lang, 6)} cm² (Kurbelseite), Hin- und Rückgang" if de else
+                  f"F′ = {number(g['piston_area_cover'], lang, 6)} cm² (cover side), "
+                  f"F″ = {number(g['piston_area_crank'], lang, 6)} cm² (crank side), both strokes")
+    return out + _card(fig, lang)
+
+
+def _card(fig: "Figure", lang: str) -> list[str]:
+    """A digitised indicator card among the givens (card.x0, card.p0, ...): how many points, which side mirrored."""
+    g = fig.replay.givens
+    de = lang == "de"
+    out = []
+    for side, name in (("card", ("Indikatordiagramm", "indicator card")), ("crank", ("Kurbelseite", "crank side"))):
+        count = sum(1 for k in g if k.startswith(f"{side}.x"))
+        if count:
+            out.append(f"{name[0 if de else 1]} aus {count} Punkten" if de else f"{name[1]} of {count} points")
+    if out and not any(k.startswith("crank.x") for k in g):
+        out.append("Kurbelseite gespiegelt (Baumann)" if de else "crank side mirrored (Baumann)")
     return out
+
+
+def _revolution(fig: "Figure", lang: str) -> list[str]:
+    """A tangential diagram over the whole revolution: the machine and its cranks."""
+    if not fig.params.get("revolution"):
+        return []
+    de = lang == "de"
+    machine = str(fig.params.get("machine", "single"))
+    names = {"single": ("Eincylindermaschine", "single-cylinder engine"),
+             "tandem": ("Tandemmaschine", "tandem engine"), "compound": ("Verbundmaschine", "compound engine")}
+    offsets = [float(v) for v in (fig.params.get("offsets") or (0.0,))]
+    cranks = ", ".join(f"{number(v, lang)}°" for v in offsets)
+    return [names.get(machine, (machine, machine))[0 if de else 1],
+            (f"Kurbeln bei {cranks}" if de else f"cranks at {cranks}") if len(offsets) > 1 else "",
+            "über eine Umdrehung" if de else "over a revolution"]
 
 
 def _tangential(fig: "Figure", lang: str) -> list[str]:
     g = fig.replay.givens
     if fig.params.get("force") == "unit":
-        return [_ratio("r/L", g["rod_ratio"], lang), "P′ = r", _parts(fig, lang)]
+        return [x for x in [_ratio("r/L", g["rod_ratio"], lang), "P′ = r", *_revolution(fig, lang), _parts(fig, lang),
+                            *_card(fig, lang)] if x]
     # κ = P/B_max (Baumann): the construction keeps c v²/r = P/((1 + r/L) κ) as its given.
+    if "admission" not in g:  # a digitised card's force
+        return [x for x in [_ratio("r/L", g["rod_ratio"], lang), *_revolution(fig, lang), _parts(fig, lang),
+                            *_card(fig, lang)] if x]
     kappa = g["admission"] / (g["pressure_ratio"] * (1.0 + 1.0 / g["rod_ratio"]))
     return ([f"κ = P/Bmax = {number(round(kappa, 9), lang)}", _ratio("r/L", g["rod_ratio"], lang)]
             + _diagram(g, lang) + [_scale(g, lang), _parts(fig, lang)])

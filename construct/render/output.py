@@ -141,6 +141,9 @@ _BOOK_PARAMS = {
     "pressure_unit": ("1 kg/cm² als {v} r gezeichnet", "1 kg/cm² drawn as {v} r"),
     "parts": ("{v} Teile", "{v} parts"),
     "divisions": ("Hub in {v} Teilen", "stroke in {v} parts"),
+    "revolution": ("ganze Umdrehung", "whole revolution"),
+    "cranks": ("Kurbeln bei {v} Grad", "cranks at {v} degrees"),
+    "machine": ("{v}-Maschine", "{v} engine"),
 }
 _BOOK_METHODS = {
     "durer": ("Dürers Teilung", "Dürer's division"),
@@ -156,7 +159,8 @@ _DEAD_CENTRES = {
 }
 #: Givens a construction derives from the others for its steps (Brauer's ray slopes): not named in captions.
 _DERIVED = ("tan_alpha", "tan_beta", "tan_alpha_e", "tan_beta_e")
-_HIDDEN = ("givens", "group_titles", "requested_method", "plate", "captions")
+_HIDDEN = ("givens", "group_titles", "requested_method", "plate", "captions", "offsets", "shifts", "cylinders",
+           "cards", "mirrored")
 
 
 def _num(v) -> str:
@@ -173,7 +177,10 @@ def params_text(figure: Figure, lang: str = "en") -> str:
     ("L/r = 5, 18 parts, Dürer's division", 'L/r = 4, Hub in 10 Teilen')
     """
     i = 0 if lang == "de" else 1
-    values = {**{k: v for k, v in figure.replay.givens.items() if k not in _DERIVED},
+    givens = dict(figure.replay.givens)
+    # a digitised card's points are givens named card.x0, card.p0, ...: the caption counts them
+    cards = {k.split(".")[0] for k in givens if "." in k}
+    values = {**{k: v for k, v in givens.items() if "." not in k and k not in _DERIVED},
               **{k: v for k, v in figure.params.items() if k not in _HIDDEN}}
     out = []
     order = ("rod_ratio", "pressure_ratio", "pressure_unit", "parts", "divisions", "method")
@@ -190,6 +197,13 @@ def params_text(figure: Figure, lang: str = "en") -> str:
             out.append(text.replace(".", ",") if lang == "de" and "kg" in text else text)
         else:
             out.append(f"{key.replace('_', ' ')} = {_num(v)}")  # a parameter the books do not name
+    for side, (de, en) in (("card", ("Indikatordiagramm", "indicator card")),
+                           ("crank", ("Diagramm der Kurbelseite", "crank-side card"))):
+        if side in cards:
+            count = sum(1 for k in givens if k.startswith(f"{side}.x"))
+            out.append(f"{(de, en)[i]}: {count} {('Punkte', 'points')[i]}")
+    if "card" in cards and "crank" not in cards:
+        out.append(("Kurbelseite gespiegelt (Baumann)", "crank side mirrored (Baumann)")[i])
     return ", ".join(out)
 
 

@@ -676,3 +676,5 @@ def _extreme_points(m: Mark) -> list[tuple[float, float]]:
     if m.kind in ("curve", "area"):
         return list(g)
     return []
+
+

@@ -42,6 +42,16 @@ def add_arguments(p) -> None:
     add_format_option(p, ("text", "csv", "json"))
     p.add_argument("--plot", metavar="FILE",
                    help="also plot the table as the book draws it into FILE (.png, .pdf or .svg by its suffix)")
+    p.add_argument("--revolution", action="store_true",
+                   help="mass-forces, tangential-pressure: both strokes, 0..360 degrees")
+    p.add_argument("--cranks", default="", metavar="DEG,DEG",
+                   help="tangential-pressure --revolution: crank offsets ahead of the first, e.g. 0,90")
+    p.add_argument("--machine", default="single", metavar="single|tandem|compound",
+                   help="tangential-pressure --revolution: single (default), tandem, compound")
+    p.add_argument("--indicator", metavar="FILE.csv",
+                   help="tangential-pressure, mass-forces: a digitised indicator diagram of the cover side (x,p)")
+    p.add_argument("--indicator-crank-side", metavar="FILE.csv",
+                   help="the crank side's diagram (default: the cover side's mirrored, Baumann's assumption)")
 
 
 def _one_ratio(args) -> float:
@@ -70,6 +80,10 @@ def _check_step(step: float, span: int) -> None:
 def run(args) -> int:
     if args.table not in TABLES:
         raise InvalidParameter(f"unknown table {args.table!r}; choose one of {', '.join(TABLES)}")
+    if (args.indicator or args.indicator_crank_side) and args.table not in ("tangential-pressure", "mass-forces"):
+        raise InvalidParameter(f"--indicator goes with the tables tangential-pressure and mass-forces, not {args.table}")
+    if args.revolution and args.table not in ("tangential-pressure", "mass-forces"):
+        raise InvalidParameter(f"--revolution goes with the tables tangential-pressure and mass-forces, not {args.table}")
     if args.table == "piston-path":
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args), parts=args.parts, method=args.method)
     elif args.table == "crank-angle":
@@ -84,10 +98,15 @@ def run(args) -> int:
                    if getattr(args, k.replace("-", "_")) is None]
         if missing:
             raise InvalidParameter(f"table mass-forces needs {' '.join(missing)}")
+        if args.indicator or args.indicator_crank_side:
+            raise InvalidParameter("table mass-forces takes no --indicator: the mass forces do not depend on the "
+                                   "pressures (the piston-force construction takes the diagram)")
         cols, rows = TABLES[args.table](weight=args.weight, rpm=args.rpm, crank_radius=args.crank_radius,
-                                        rod_length=args.rod_length, parts=args.parts)
+                                        rod_length=args.rod_length, parts=args.parts, revolution=args.revolution)
     elif args.table == "tangential-pressure":
-        cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args), parts=args.parts, method=args.method)
+        cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args), parts=args.parts, method=args.method,
+                                        revolution=args.revolution, cranks=args.cranks, machine=args.machine,
+                                        indicator=args.indicator, indicator_crank_side=args.indicator_crank_side)
     elif args.table == "flywheel-coefficients":
         cols, rows = TABLES[args.table](kz=args.kz, v=args.v)
     elif args.table == "speed-fluctuation":
@@ -98,9 +117,14 @@ def run(args) -> int:
                                         dead_centre=args.dead_centre)
     else:
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args))
+    text = format_table(cols, rows, args.format)
+    if args.indicator is not None:
+        from ...tables import indicator_note
+
+        print(f"construct: note: {indicator_note(args.indicator_crank_side)}", file=sys.stderr)
     if args.plot is not None:
         write_plot(args.table, cols, rows, args.plot)
-    sys.stdout.write(format_table(cols, rows, args.format))
+    sys.stdout.write(text)
     return 0
 
 

@@ -3,9 +3,10 @@
 ``build_gallery(out)`` writes, for each construction in
 :func:`construct.constructions.names` and each of its ``book_params``::
 
-    OUT/<entry>/protocol.json            the protocol (same for both styles)
+    OUT/<entry>/protocol.json            the protocol (same for both styles; the first entry of a construction)
     OUT/<entry>/checks.md, checks.json    the check report against the analytic formulas
-    OUT/<entry>/<style>/final.svg         historical: the book plate; teaching: the whole construction,
+    OUT/<entry>/<style>/final.svg         historical: the book plate; teaching (the first entry of a construction):
+                                          the whole construction,
                                           every step a <g data-step="k"> group (the golden of every step)
     OUT/<entry>/teaching/player.html      the step player, one file (it plays the steps too)
 
@@ -175,7 +176,13 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
     slug = entry_slug(name, params)
     edir = root / slug
     edir.mkdir()
-    write_text(edir / "protocol.json", fig.protocol.to_json(fig.replay))
+    # The first of a construction's book parameters is built whole: its protocol, the teaching style (every step
+    # golden) and the player.  The others are the book's further figures of the same method: their plate and their
+    # checks (a replay writes the rest: `construct replay NAME --PARAM VALUE`).  The gallery stays small enough to
+    # commit (15 MB), and a teacher changes a given in the player rather than opening another copy.
+    first = _first_of_its_construction(name, params)
+    if first:
+        write_text(edir / "protocol.json", fig.protocol.to_json(fig.replay))
     checks = c.checks(fig)
     write_text(edir / "checks.md", _checks_md(f"{c.title.en} ({book_givens(fig)[1] or params_text(fig)})", checks))
     write_text(edir / "checks.json", json.dumps(
@@ -183,23 +190,20 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
          "ok": all(ch.ok for ch in checks), "checks": [ch.as_dict() for ch in checks]},
         indent=1, ensure_ascii=False, sort_keys=True) + "\n")
     entries = []
-    for style in GALLERY_STYLES:
+    for style in GALLERY_STYLES if first else GALLERY_STYLES[:1]:
         sdir = edir / style
         sdir.mkdir()
-        # The player for the first of a construction's book parameters: the others are the same steps with
-        # other numbers, golden in their layered final.svg and protocol (a replay writes their player).
-        outputs = GALLERY_OUTPUTS[style] if _first_of_its_construction(name, params) else ()
         info = write_outputs(sdir, c, fig, STYLES[style], frames=FRAME_MODE, fig_number=number, protocol=False,
-                             outputs=outputs)
+                             outputs=GALLERY_OUTPUTS[style])
         files = sorted(str(p.relative_to(root)) for p in sdir.rglob("*") if p.is_file())
-        files += [f"{slug}/protocol.json", f"{slug}/checks.md", f"{slug}/checks.json"]
+        files += [f"{slug}/protocol.json"] * first + [f"{slug}/checks.md", f"{slug}/checks.json"]
         entries.append({"construction": name, "params": dict(params), "style": style,
                         "files": sorted(files), "steps": info["steps"], "frames": info["frames"],
                         "frame_mode": FRAME_MODE})
     row = {"number": number, "name": name, "slug": slug, "params": params, "title": c.title,
            "source": citation(name, "en") or c.source, "method": _method(fig), "checks": summary(checks),
            "ok": all(ch.ok for ch in checks), "steps": len(fig.protocol.steps),
-           "params_text": book_givens(fig)[1] or params_text(fig), "player": _first_of_its_construction(name, params)}
+           "params_text": book_givens(fig)[1] or params_text(fig), "player": first}
     return entries, row
 
 
@@ -322,11 +326,11 @@ def _readme(index: list[dict]) -> str:
                   f"**Checks:** {'✅' if e['ok'] else '❌'} {_md(e['checks'])} ([report]({s}/checks.md))", "",
                   # one picture per row: at the page's width the letters stay at least 9 px (DISPLAY_PX)
                   f"![Fig. {e['number']}, historical plate]({s}/historical/final.svg)", "",
-                  f"![Fig. {e['number']}, teaching]({s}/teaching/final.svg)", "",
-                  (f"Teaching ({e['steps']} steps): [player]({s}/teaching/player.html) · "
-                   f"[final figure]({s}/teaching/final.svg)" if e["player"] else
-                   f"Teaching ({e['steps']} steps): [final figure]({s}/teaching/final.svg) (the player: "
-                   f"`construct replay {e['name']} --style teaching --out DIR`, or the first figure of its kind)"), ""]
+                  *([f"![Fig. {e['number']}, teaching]({s}/teaching/final.svg)", "",
+                     f"Teaching ({e['steps']} steps): [player]({s}/teaching/player.html) · "
+                     f"[final figure]({s}/teaching/final.svg)"] if e["player"] else
+                    [f"Teaching ({e['steps']} steps): the first figure of its kind, or "
+                     f"`construct replay {e['name']} --style teaching --out DIR`"]), ""]
     return "\n".join(lines)
 
 
@@ -335,8 +339,10 @@ def _index_html(index: list[dict]) -> str:
     cards = []
     for e in index:
         t, s = e["title"], esc(e["slug"])
-        target = f"{s}/teaching/player.html" if e["player"] else f"{s}/teaching/final.svg"
         player = f' · <a href="{s}/teaching/player.html">player</a>' if e["player"] else ""
+        teaching = (f"""<figure><a href="{s}/teaching/player.html"><img src="{s}/teaching/final.svg" alt="Fig. {e['number']}, teaching, every step"></a>
+<figcaption>teaching ({e['steps']} steps){player} · <a href="{s}/teaching/final.svg">final</a></figcaption></figure>
+""" if e["player"] else "")
         cards.append(f"""<section>
 <h2>Fig. {e['number']}. {esc(t.de)} <span class="en">{esc(t.en)}</span></h2>
 <p class="meta">{esc(e['params_text'])} — {esc(e['source'])}</p>
@@ -346,9 +352,7 @@ def _index_html(index: list[dict]) -> str:
 <div class="pics">
 <figure><a href="{s}/historical/final.svg"><img src="{s}/historical/final.svg" alt="Fig. {e['number']}, historical plate"></a>
 <figcaption>historical plate{player}</figcaption></figure>
-<figure><a href="{target}"><img src="{s}/teaching/final.svg" alt="Fig. {e['number']}, teaching, every step"></a>
-<figcaption>teaching ({e['steps']} steps){player} · <a href="{s}/teaching/final.svg">final</a></figcaption></figure>
-</div>
+{teaching}</div>
 </section>""")
     return ("""<!DOCTYPE html>
 <html lang="de"><head><meta charset="utf-8"><title>construct gallery</title>

@@ -91,8 +91,23 @@ def test_committed_gallery_has_every_construction():
     if not root.is_dir():
         pytest.skip("no committed gallery in this checkout")
     readme = (root / "README.md").read_text(encoding="utf-8")
+    seen = set()
     for name, params in gallery.gallery_plan():
         slug = gallery.entry_slug(name, params)
         assert (root / slug / "historical" / "final.svg").is_file(), slug
-        assert (root / slug / "teaching" / "final.svg").is_file(), slug
         assert f"({slug}/historical/final.svg)" in readme, slug
+        # a construction's first figure is there whole (every step golden, its player, its protocol); its
+        # further book figures as plates with their checks
+        first = name not in seen
+        seen.add(name)
+        for whole in ("teaching/final.svg", "teaching/player.html", "protocol.json"):
+            assert (root / slug / whole).is_file() == first, (slug, whole)
+        assert (root / slug / "checks.json").is_file(), slug
+
+
+def test_the_gallery_stays_small_enough_to_commit():
+    """15 MB (10**6 bytes each), the budget `construct bench --outputs` also reports."""
+    root = REPO / "gallery"
+    if not root.is_dir():
+        pytest.skip("no committed gallery in this checkout")
+    assert sum(p.stat().st_size for p in root.rglob("*") if p.is_file()) <= 15e6

@@ -69,8 +69,8 @@ def _case(a: str, b: str, n: int, ids: bool) -> dict[str, Any]:
     from pathlib import Path
 
     from .svgdiff import DEFAULT_TOLERANCE, parse_svg
-    from .svgdiff.match import _extent, _match
-    from .svgdiff.report import _diff_drawings
+    from .svgdiff.match import drawing_extent, match_shapes
+    from .svgdiff.report import diff_drawings
 
     def rss_mb() -> float:
         return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024  # kB on Linux
@@ -81,10 +81,10 @@ def _case(a: str, b: str, n: int, ids: bool) -> dict[str, Any]:
     da, db = parse_svg(Path(a)), parse_svg(Path(b))
     parse_wall, parse_cpu = clock() - t, time.process_time() - c
     t, c = clock(), time.process_time()
-    diff = _diff_drawings(da, db, DEFAULT_TOLERANCE, a, b)
+    diff = diff_drawings(da, db, DEFAULT_TOLERANCE, a, b)
     diff_wall, diff_cpu = clock() - t, time.process_time() - c
     t = time.process_time()
-    _match(da.shapes, db.shapes, DEFAULT_TOLERANCE, max(_extent(da), _extent(db)))
+    match_shapes(da.shapes, db.shapes, DEFAULT_TOLERANCE, max(drawing_extent(da), drawing_extent(db)))
     match_cpu = time.process_time() - t
     kinds = sorted({ch.kind for ch in diff.changes})
     return {"case": f"{n} {'ids' if ids else 'anonymous'}", "elements": n, "ids": ids,

@@ -11,11 +11,11 @@ from pathlib import Path
 from typing import Any, Iterator
 
 from ...kernel.errors import InvalidParameter
-from .values import DEFAULT_TOLERANCE, _close, _fmt, _mag, _num_diff, _show
+from .values import DEFAULT_TOLERANCE, format_magnitude, format_number, numeric_difference, show_value, values_close
 from .geometry import Point
-from .css import _INITIAL
-from .parse import Drawing, Shape, _label, parse_svg
-from .match import _bbox, _extent, _match
+from .css import INITIAL
+from .parse import Drawing, Shape, parse_svg, source_label
+from .match import bounding_box, drawing_extent, match_shapes
 
 # --------------------------------------------------------------------------- the diff
 
@@ -65,7 +65,7 @@ class SvgDiff:
 
     def report(self) -> str:
         """Readable text, one line per change."""
-        head = f"SVG diff {self.a} -> {self.b} (tolerance {_mag(self.tolerance)}): "
+        head = f"SVG diff {self.a} -> {self.b} (tolerance {format_magnitude(self.tolerance)}): "
         if self.equal:
             n = self.elements[0]
             return head + f"equal ({n} element{'s' if n != 1 else ''})"
@@ -87,13 +87,13 @@ def diff_svg(a: str | Path | bytes, b: str | Path | bytes, tolerance: float = DE
         raise InvalidParameter(f"diff_svg: tolerance must be a finite number >= 0, got {tolerance!r}")
     tol = float(tolerance)
     da, db = parse_svg(a), parse_svg(b)
-    return _diff_drawings(da, db, tol, _label(a), _label(b))
+    return diff_drawings(da, db, tol, source_label(a), source_label(b))
 
 
-def _diff_drawings(da: Drawing, db: Drawing, tol: float, name_a: str, name_b: str) -> SvgDiff:
+def diff_drawings(da: Drawing, db: Drawing, tol: float, name_a: str, name_b: str) -> SvgDiff:
     """The diff of two parsed drawings (what :func:`diff_svg` does after reading them)."""
     changes = _document_changes(da, db, tol) + _definition_changes(da, db, tol)
-    pairs = _match(da.shapes, db.shapes, tol, max(_extent(da), _extent(db)))
+    pairs = match_shapes(da.shapes, db.shapes, tol, max(drawing_extent(da), drawing_extent(db)))
     by_a = {id(sa): (sb, how) for sa, sb, how in pairs}
     matched_b = {id(sb) for _, sb, _ in pairs}
     for sa in da.shapes:
@@ -117,7 +117,7 @@ def _where(s: Shape) -> str:
 
 
 def raw_point(p: Point) -> str:
-    return f"({_fmt(p[0])}, {_fmt(p[1])})"
+    return f"({format_number(p[0])}, {format_number(p[1])})"
 
 
 def _document_changes(da: Drawing, db: Drawing, tol: float) -> list[SvgChange]:
@@ -126,13 +126,13 @@ def _document_changes(da: Drawing, db: Drawing, tol: float) -> list[SvgChange]:
     for prop in sorted(set(a) | set(b)):
         va, vb = a.get(prop), b.get(prop)
         if prop == "stylesheet":
-            if va != vb and not _close(va, vb, tol):
+            if va != vb and not values_close(va, vb, tol):
                 out.append(SvgChange("document", prop, "style sheet rules changed"))
             continue
-        if va is None or vb is None or not _close(va, vb, tol):
-            out.append(SvgChange("document", prop, f"{_show(va) if va is not None else '(none)'} -> "
-                                                   f"{_show(vb) if vb is not None else '(none)'}",
-                                 _num_diff(va, vb)))
+        if va is None or vb is None or not values_close(va, vb, tol):
+            out.append(SvgChange("document", prop, f"{show_value(va) if va is not None else '(none)'} -> "
+                                                   f"{show_value(vb) if vb is not None else '(none)'}",
+                                 numeric_difference(va, vb)))
     return out
 
 
@@ -144,9 +144,10 @@ def _definition_changes(da: Drawing, db: Drawing, tol: float) -> list[SvgChange]
             out.append(SvgChange("definition", key, f"<{a[key][0]}> only in A"))
         elif key not in a:
             out.append(SvgChange("definition", key, f"<{b[key][0]}> only in B"))
-        elif not _close(a[key], b[key], tol):
+        elif not values_close(a[key], b[key], tol):
             out.append(SvgChange("definition", key, f"<{a[key][0]}> changed"
-                                 + ("" if a[key][0] == b[key][0] else f" to <{b[key][0]}>"), _num_diff(a[key], b[key])))
+                                 + ("" if a[key][0] == b[key][0] else f" to <{b[key][0]}>"),
+                                 numeric_difference(a[key], b[key])))
     return out
 
 
@@ -173,9 +174,9 @@ def _compare(x: Shape, y: Shape, tol: float, how: str) -> list[SvgChange]:
             what = f"{x.kind} -> {y.kind}"
         else:
             sa, sb = dict(x.structure), dict(y.structure)
-            what = "; ".join(f"{k}: {_show(sa.get(k, '-'))} -> {_show(sb.get(k, '-'))}"
+            what = "; ".join(f"{k}: {show_value(sa.get(k, '-'))} -> {show_value(sb.get(k, '-'))}"
                              for k in sorted(set(sa) | set(sb)) if sa.get(k) != sb.get(k)) or "defining points differ"
-        ba, bb = _bbox(x), _bbox(y)
+        ba, bb = bounding_box(x), bounding_box(y)
         add("reshaped", f"{what}; bounding box {raw_point(ba[:2])}..{raw_point(ba[2:])} -> {raw_point(bb[:2])}..{raw_point(bb[2:])}",
             max(abs(u - v) for u, v in zip(ba, bb)) if x.points and y.points else None)
     else:
@@ -186,30 +187,31 @@ def _compare(x: Shape, y: Shape, tol: float, how: str) -> list[SvgChange]:
         if resized:
             d, name, u, v = max(resized, key=lambda m: m[0])
             more = f" ({len(resized)} sizes changed)" if len(resized) > 1 else ""
-            add("resized", f"{name} {_fmt(u)} -> {_fmt(v)} (by {_mag(d)}){more}", d)
+            add("resized", f"{name} {format_number(u)} -> {format_number(v)} (by {format_magnitude(d)}){more}", d)
     ang_a, ang_b = dict(x.angles), dict(y.angles)
     for name in [n for n, _ in x.angles if n in ang_b]:
         delta = (ang_b[name] - ang_a[name] + 180.0) % 360.0 - 180.0
         if abs(delta) > tol:
-            add("rotated", f"{name} {_fmt(ang_a[name])} -> {_fmt(ang_b[name])} degrees (by {_mag(abs(delta))})",
+            add("rotated", f"{name} {format_number(ang_a[name])} -> {format_number(ang_b[name])} degrees "
+                           f"(by {format_magnitude(abs(delta))})",
                 abs(delta))
     if x.text != y.text:
         add("text", f"{x.text!r} -> {y.text!r}")
     style_a, style_b = dict(x.style), dict(y.style)
     diffs, mags = [], []
     for prop in sorted(set(style_a) | set(style_b)):
-        va, vb = style_a.get(prop, _INITIAL.get(prop)), style_b.get(prop, _INITIAL.get(prop))
-        if va is None or vb is None or not _close(va, vb, tol):
-            diffs.append(f"{prop} {_show(va) if va is not None else '(unset)'} -> "
-                         f"{_show(vb) if vb is not None else '(unset)'}")
-            nd = _num_diff(va, vb)
+        va, vb = style_a.get(prop, INITIAL.get(prop)), style_b.get(prop, INITIAL.get(prop))
+        if va is None or vb is None or not values_close(va, vb, tol):
+            diffs.append(f"{prop} {show_value(va) if va is not None else '(unset)'} -> "
+                         f"{show_value(vb) if vb is not None else '(unset)'}")
+            nd = numeric_difference(va, vb)
             if nd is not None:
                 mags.append(nd)
     if diffs:
         add("restyled", "; ".join(diffs), max(mags) if mags else None)
-    if not _close(x.animations, y.animations, tol):
-        gone = [a for a in x.animations if not any(_close(a, b, tol) for b in y.animations)]
-        new = [b for b in y.animations if not any(_close(a, b, tol) for a in x.animations)]
+    if not values_close(x.animations, y.animations, tol):
+        gone = [a for a in x.animations if not any(values_close(a, b, tol) for b in y.animations)]
+        new = [b for b in y.animations if not any(values_close(a, b, tol) for a in x.animations)]
         parts = [f"-<{a[0]} {_anim(a)}>" for a in gone] + [f"+<{b[0]} {_anim(b)}>" for b in new]
         add("animated", "; ".join(parts) or "animation order changed")
     if x.described != y.described:
@@ -228,7 +230,7 @@ def _movement(moved: list[tuple[float, str, Point, Point]], tol: float) -> str:
     d = max(m[0] for m in moved)
     near_max = [m for m in moved if m[0] >= d - tol]
     _, name, p, q = next((m for m in near_max if m[1].endswith("centre")), near_max[0])
-    text = f"by {_mag(d)}: {name} {raw_point(p)} -> {raw_point(q)}"
+    text = f"by {format_magnitude(d)}: {name} {raw_point(p)} -> {raw_point(q)}"
     if len(moved) > 1:
         shifts = [(m[3][0] - m[2][0], m[3][1] - m[2][1]) for m in moved]
         if all(math.dist(s, shifts[0]) <= tol for s in shifts):
@@ -239,7 +241,7 @@ def _movement(moved: list[tuple[float, str, Point, Point]], tol: float) -> str:
 
 
 def _anim(a: tuple) -> str:
-    return " ".join(f'{k}="{_show(v)}"' for k, v in a[1])
+    return " ".join(f'{k}="{show_value(v)}"' for k, v in a[1])
 
 
 def changes_by_step(diff: SvgDiff) -> dict[int | None, list[SvgChange]]:

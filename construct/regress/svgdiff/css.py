@@ -130,6 +130,8 @@ def style_value(prop: str, raw: str, current: str) -> Any:
 
 @dataclass(frozen=True, slots=True)
 class CssRule:
+    """One selector of a style sheet with its declarations; *specificity* orders the rules as CSS does."""
+
     tag: str | None
     ids: tuple[str, ...]
     classes: tuple[str, ...]

@@ -26,10 +26,12 @@ def multiply(m: Matrix, n: Matrix) -> Matrix:
 
 
 def apply_matrix(m: Matrix, p: Point) -> Point:
+    """The point *p* transformed by the SVG matrix *m* ``(a, b, c, d, e, f)``."""
     return (m[0] * p[0] + m[2] * p[1] + m[4], m[1] * p[0] + m[3] * p[1] + m[5])
 
 
 def determinant(m: Matrix) -> float:
+    """The determinant of the linear part of *m*: negative where the transform mirrors."""
     return m[0] * m[3] - m[1] * m[2]
 
 

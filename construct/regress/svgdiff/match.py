@@ -285,6 +285,7 @@ def _diagonal(*drawings: Sequence[Shape]) -> float:
 
 
 def bounding_box(s: Shape) -> tuple[float, float, float, float]:
+    """(min x, min y, max x, max y) of the defining points of *s*."""
     xs = [p[0] for _, p in s.points] or [0.0]
     ys = [p[1] for _, p in s.points] or [0.0]
     return min(xs), min(ys), max(xs), max(ys)

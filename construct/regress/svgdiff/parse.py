@@ -818,6 +818,7 @@ def _read_tree(data: bytes | str, label: str) -> ET.Element:
 
 
 def source_label(source: str | Path | bytes) -> str:
+    """How a report names a source: its path, else ``<string>`` or ``<bytes>``."""
     if isinstance(source, bytes):
         return "<bytes>"
     if isinstance(source, str) and source.lstrip().startswith(("<", "\ufeff<")):

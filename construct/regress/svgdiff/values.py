@@ -83,6 +83,11 @@ def format_number(x: float) -> str:
 
 
 def format_magnitude(x: float) -> str:
+    """A size of a change as a report prints it: three significant digits.
+
+    >>> format_magnitude(0.0099999), format_magnitude(1234.5)
+    ('0.01', '1.23e+03')
+    """
     return format(x, ".3g")
 
 

@@ -14,7 +14,8 @@ import pytest
 
 from construct.cli import main
 from construct.kernel.errors import ConstructError, ProtocolFormatError
-from construct.regress.protocoldiff import ProtocolChange, diff_protocol
+from construct.regress.change import Change
+from construct.regress.protocoldiff import diff_protocol
 
 
 def step(index, tool, op, inputs, outputs, de, en, params=None, kind="exact", group=()):
@@ -165,7 +166,7 @@ def test_report_and_dict_are_deterministic():
     d1, d2 = diff_protocol(BASE, b), diff_protocol(json.dumps(BASE), json.dumps(b).encode())
     assert d1.changes == d2.changes
     assert json.dumps(d1.as_dict()) == json.dumps(diff_protocol(BASE, b).as_dict())
-    assert all(isinstance(c, ProtocolChange) for c in d1.changes)
+    assert all(isinstance(c, Change) for c in d1.changes)
 
 
 @pytest.mark.parametrize("bad", [

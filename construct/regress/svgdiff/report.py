@@ -6,11 +6,11 @@ Part of :mod:`construct.regress.svgdiff`.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Iterator
 
 from ...kernel.errors import InvalidParameter
+from ..change import Change, Diff
 from .values import DEFAULT_TOLERANCE, format_magnitude, format_number, numeric_difference, show_value, values_close
 from .geometry import Point
 from .css import INITIAL
@@ -23,65 +23,7 @@ CHANGE_KINDS = ("document", "definition", "missing", "extra", "renamed", "restep
                 "resized", "rotated", "text", "restyled", "animated", "described")
 
 
-@dataclass(frozen=True, slots=True)
-class SvgChange:
-    """One difference: its kind, the element key, a readable description and its size (drawing units)."""
-
-    kind: str
-    key: str
-    description: str
-    magnitude: float | None = None
-    shape: str = ""
-    matched_by: str = ""
-    key_b: str | None = None
-    #: The step of the element (its ``data-step`` group in a layered figure), None outside step groups.
-    step: int | None = None
-
-    def line(self) -> str:
-        how = []
-        if self.shape:
-            how.append(self.shape)
-        if self.matched_by:
-            how.append(f"matched by {self.matched_by}")
-        name = self.key if self.key_b in (None, self.key) else f"{self.key} -> {self.key_b}"
-        where = f"{name} ({', '.join(how)})" if how else name
-        return f"  {self.kind:<10} {where}: {self.description}"
-
-
-@dataclass(frozen=True, slots=True)
-class SvgDiff:
-    """The differences between two drawings, in a fixed order (document first, then A's order)."""
-
-    a: str
-    b: str
-    tolerance: float
-    changes: tuple[SvgChange, ...]
-    elements: tuple[int, int]
-
-    @property
-    def equal(self) -> bool:
-        """Do the drawings agree within the tolerance?"""
-        return not self.changes
-
-    def report(self) -> str:
-        """Readable text, one line per change."""
-        head = f"SVG diff {self.a} -> {self.b} (tolerance {format_magnitude(self.tolerance)}): "
-        if self.equal:
-            n = self.elements[0]
-            return head + f"equal ({n} element{'s' if n != 1 else ''})"
-        n = len(self.changes)
-        return "\n".join([head + f"{n} change{'s' if n != 1 else ''}"] + [c.line() for c in self.changes])
-
-    def as_dict(self) -> dict[str, Any]:
-        """Plain data for JSON."""
-        return {"kind": "svg", "a": self.a, "b": self.b, "tolerance": self.tolerance, "equal": self.equal,
-                "elements": {"a": self.elements[0], "b": self.elements[1]},
-                "changes": [{"kind": c.kind, "key": c.key, "key_b": c.key_b, "shape": c.shape,
-                             "matched_by": c.matched_by, "description": c.description, "magnitude": c.magnitude}
-                            for c in self.changes]}
-
-
-def diff_svg(a: str | Path | bytes, b: str | Path | bytes, tolerance: float = DEFAULT_TOLERANCE) -> SvgDiff:
+def diff_svg(a: str | Path | bytes, b: str | Path | bytes, tolerance: float = DEFAULT_TOLERANCE) -> Diff:
     """Compare two SVG drawings; differences at or below *tolerance* (drawing units) are equal."""
     if not (isinstance(tolerance, (int, float)) and math.isfinite(tolerance) and tolerance >= 0):
         raise InvalidParameter(f"diff_svg: tolerance must be a finite number >= 0, got {tolerance!r}")
@@ -90,7 +32,7 @@ def diff_svg(a: str | Path | bytes, b: str | Path | bytes, tolerance: float = DE
     return diff_drawings(da, db, tol, source_label(a), source_label(b))
 
 
-def diff_drawings(da: Drawing, db: Drawing, tol: float, name_a: str, name_b: str) -> SvgDiff:
+def diff_drawings(da: Drawing, db: Drawing, tol: float, name_a: str, name_b: str) -> Diff:
     """The diff of two parsed drawings (what :func:`diff_svg` does after reading them)."""
     changes = _document_changes(da, db, tol) + _definition_changes(da, db, tol)
     pairs = match_shapes(da.shapes, db.shapes, tol, max(drawing_extent(da), drawing_extent(db)))
@@ -101,13 +43,13 @@ def diff_drawings(da: Drawing, db: Drawing, tol: float, name_a: str, name_b: str
             sb, how = by_a[id(sa)]
             changes += _compare(sa, sb, tol, how)
         else:
-            changes.append(SvgChange("missing", sa.key, f"{sa.kind} only in A{_where(sa)}", None, sa.kind,
+            changes.append(Change("missing", sa.key, f"{sa.kind} only in A{_where(sa)}", None, sa.kind,
                                      step=sa.step))
     for sb in db.shapes:
         if id(sb) not in matched_b:
-            changes.append(SvgChange("extra", sb.key, f"{sb.kind} only in B{_where(sb)}", None, sb.kind,
+            changes.append(Change("extra", sb.key, f"{sb.kind} only in B{_where(sb)}", None, sb.kind,
                                      step=sb.step))
-    return SvgDiff(name_a, name_b, tol, tuple(changes), (len(da.shapes), len(db.shapes)))
+    return Diff("svg", name_a, name_b, tol, tuple(changes), "elements", (len(da.shapes), len(db.shapes)))
 
 
 def _where(s: Shape) -> str:
@@ -120,32 +62,32 @@ def raw_point(p: Point) -> str:
     return f"({format_number(p[0])}, {format_number(p[1])})"
 
 
-def _document_changes(da: Drawing, db: Drawing, tol: float) -> list[SvgChange]:
+def _document_changes(da: Drawing, db: Drawing, tol: float) -> list[Change]:
     out = []
     a, b = dict(da.document), dict(db.document)
     for prop in sorted(set(a) | set(b)):
         va, vb = a.get(prop), b.get(prop)
         if prop == "stylesheet":
             if va != vb and not values_close(va, vb, tol):
-                out.append(SvgChange("document", prop, "style sheet rules changed"))
+                out.append(Change("document", prop, "style sheet rules changed"))
             continue
         if va is None or vb is None or not values_close(va, vb, tol):
-            out.append(SvgChange("document", prop, f"{show_value(va) if va is not None else '(none)'} -> "
+            out.append(Change("document", prop, f"{show_value(va) if va is not None else '(none)'} -> "
                                                    f"{show_value(vb) if vb is not None else '(none)'}",
                                  numeric_difference(va, vb)))
     return out
 
 
-def _definition_changes(da: Drawing, db: Drawing, tol: float) -> list[SvgChange]:
+def _definition_changes(da: Drawing, db: Drawing, tol: float) -> list[Change]:
     out = []
     a, b = dict(da.definitions), dict(db.definitions)
     for key in sorted(set(a) | set(b)):
         if key not in b:
-            out.append(SvgChange("definition", key, f"<{a[key][0]}> only in A"))
+            out.append(Change("definition", key, f"<{a[key][0]}> only in A"))
         elif key not in a:
-            out.append(SvgChange("definition", key, f"<{b[key][0]}> only in B"))
+            out.append(Change("definition", key, f"<{b[key][0]}> only in B"))
         elif not values_close(a[key], b[key], tol):
-            out.append(SvgChange("definition", key, f"<{a[key][0]}> changed"
+            out.append(Change("definition", key, f"<{a[key][0]}> changed"
                                  + ("" if a[key][0] == b[key][0] else f" to <{b[key][0]}>"),
                                  numeric_difference(a[key], b[key])))
     return out
@@ -154,12 +96,12 @@ def _definition_changes(da: Drawing, db: Drawing, tol: float) -> list[SvgChange]
 
 # -- comparing one pair ----------------------------------------------------------------------------
 
-def _compare(x: Shape, y: Shape, tol: float, how: str) -> list[SvgChange]:
-    out: list[SvgChange] = []
+def _compare(x: Shape, y: Shape, tol: float, how: str) -> list[Change]:
+    out: list[Change] = []
     key_b = y.key if y.key != x.key else None
 
     def add(kind: str, description: str, magnitude: float | None = None) -> None:
-        out.append(SvgChange(kind, x.key, description, magnitude, x.kind, how, key_b,
+        out.append(Change(kind, x.key, description, magnitude, x.kind, how, key_b,
                              x.step if x.step is not None else y.step))
 
     if key_b is not None and (x.has_id or y.has_id):
@@ -244,25 +186,24 @@ def _anim(a: tuple) -> str:
     return " ".join(f'{k}="{show_value(v)}"' for k, v in a[1])
 
 
-def changes_by_step(diff: SvgDiff) -> dict[int | None, list[SvgChange]]:
+def changes_by_step(diff: Diff) -> dict[int | None, list[Change]]:
     """The changes of a layered figure gathered by the step that made each element (None: outside steps).
+
+    The same as :meth:`Diff.by_step <construct.regress.change.Diff.by_step>`.
 
     >>> a = ('<svg xmlns="http://www.w3.org/2000/svg"><g class="step" data-step="3">'
     ...      '<circle id="s0003-P" cx="1" cy="2" r="1"/></g></svg>')
     >>> {k: [c.key for c in v] for k, v in changes_by_step(diff_svg(a, a.replace('cx="1"', 'cx="2"'))).items()}
     {3: ['s0003-P']}
     """
-    out: dict[int | None, list[SvgChange]] = {}
-    for c in diff.changes:
-        out.setdefault(c.step, []).append(c)
-    return dict(sorted(out.items(), key=lambda kv: (kv[0] is not None, kv[0] or 0)))
+    return diff.by_step()
 
 
-def iter_changes(diff: SvgDiff, kind: str) -> Iterator[SvgChange]:
-    """The changes of one kind, in report order.
+def iter_changes(diff: Diff, kind: str) -> Iterator[Change]:
+    """The changes of one kind, in report order (:meth:`Diff.of_kind <construct.regress.change.Diff.of_kind>`).
 
     >>> d = diff_svg('<svg xmlns="http://www.w3.org/2000/svg"/>', '<svg xmlns="http://www.w3.org/2000/svg"><line x2="1"/></svg>')
     >>> [c.key for c in iter_changes(d, "extra")]
     ['line[0]']
     """
-    return (c for c in diff.changes if c.kind == kind)
+    return diff.of_kind(kind)

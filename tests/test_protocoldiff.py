@@ -193,3 +193,23 @@ def test_cli_on_protocol_files(tmp_path, capsys):
     assert main(["diff", str(a), str(b), "--json"]) == 1
     assert json.loads(capsys.readouterr().out)["method_changed"] is True
     assert main(["diff", str(a), str(broken)]) == 2
+
+
+def test_changes_read_like_the_svg_diffs():
+    """One Change type: a protocol's changes carry their step and serialise with the SVG diff's keys."""
+    from construct.regress.svgdiff import diff_svg
+
+    b = variant()
+    b["steps"][2]["caption"]["en"] = "the axis"  # step 3 changed
+    b["steps"].insert(1, step(2, "given", "point", [], ["Y"], "Punkt Y", "point Y", {"x": 0, "y": 3}))
+    for k, s in enumerate(b["steps"], 1):
+        s["index"] = k  # the old step 3 is now step 4
+    b["objects"]["T1"]["x"] = 5.5  # an object: no step
+    d = diff_protocol(BASE, b)
+    assert {k: [c.kind for c in v] for k, v in d.by_step().items()} == {
+        None: ["method", "moved"], 2: ["inserted"], 3: ["caption"]}
+    assert [c.key for c in d.of_kind("caption")] == ["step 3->4"]
+    svg = '<svg xmlns="http://www.w3.org/2000/svg"><circle id="P" r="1"/></svg>'
+    moved = diff_svg(svg, svg.replace('r="1"', 'r="1" cx="2"'))
+    assert list(d.as_dict()["changes"][0]) == list(moved.as_dict()["changes"][0])
+    assert d.steps == (5, 6) and moved.elements == (1, 1)

@@ -1,13 +1,13 @@
 """The differences of two drawings: each matched pair compared, the unmatched ones named.
 
-Part of :mod:`construct.regress.svgdiff`.
+Part of :mod:`construct.regress.svgdiff`; the result is a :class:`~construct.regress.change.Diff`.
 """
 
 from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import Any, Iterator
+from typing import Iterator
 
 from ...kernel.errors import InvalidParameter
 from ..change import Change, Diff

@@ -25,7 +25,7 @@ import tempfile
 from pathlib import Path
 from typing import Any
 
-__all__ = ["synthetic_svg", "run_diff_bench", "diff_verdicts", "SIZES", "FLAT_RATIO"]
+__all__ = ["synthetic_svg", "measure_case", "run_diff_bench", "diff_verdicts", "SIZES", "FLAT_RATIO"]
 
 #: Elements per drawing; ``--diff-million`` adds 1,000,000.
 SIZES = (10_000, 100_000)
@@ -62,7 +62,7 @@ def synthetic_svg(n: int, *, moved: int | None = None, ids: bool = False) -> str
     return w.text(dwg)
 
 
-def _case(a: str, b: str, n: int, ids: bool) -> dict[str, Any]:
+def measure_case(a: str, b: str, n: int, ids: bool) -> dict[str, Any]:
     """One case, in this process: read both files, diff them, and the matching alone."""
     import resource
     import time
@@ -104,8 +104,8 @@ def run_diff_bench(sizes: tuple[int, ...] = SIZES) -> list[dict[str, Any]]:
                 a, b = Path(tmp, "a.svg"), Path(tmp, "b.svg")
                 a.write_text(synthetic_svg(n, ids=ids), encoding="utf-8")
                 b.write_text(synthetic_svg(n, moved=n // 2 + 1, ids=ids), encoding="utf-8")
-                code = ("import json; from construct.regress.diffbench import _case; "
-                        f"print(json.dumps(_case({str(a)!r}, {str(b)!r}, {n}, {ids})))")
+                code = ("import json; from construct.regress.diffbench import measure_case; "
+                        f"print(json.dumps(measure_case({str(a)!r}, {str(b)!r}, {n}, {ids})))")
                 done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
                 if done.returncode != 0:
                     raise RuntimeError(f"diff bench case {n} failed: {done.stderr.strip().splitlines()[-1:]}")

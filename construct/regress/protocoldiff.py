@@ -209,7 +209,7 @@ def diff_protocol(a: str | Path | bytes | Mapping[str, Any], b: str | Path | byt
     changes: list[Change] = []
     if pa.data["construction"] != pb.data["construction"]:
         changes.append(Change("construction", "construction",
-                                      f"{pa.data['construction']!r} -> {pb.data['construction']!r}"))
+                              f"{pa.data['construction']!r} -> {pb.data['construction']!r}"))
     instruments = _instruments(pa.steps, pb.steps)
     method = _method_line(len(pa.steps), len(pb.steps), instruments)
     if method:
@@ -335,13 +335,13 @@ def _object_changes(oa: Mapping[str, dict], ob: Mapping[str, dict], tol: float) 
             if moves and max(m[0] for m in moves) > tol:
                 d, p, q, label = max(moves, key=lambda m: m[0])
                 out.append(Change("moved", name, f"{kind}{label} moved by {format(d, '.3g')}: "
-                                          f"({_fmt(p[0])}, {_fmt(p[1])}) -> ({_fmt(q[0])}, {_fmt(q[1])})", d))
+                                  f"({_fmt(p[0])}, {_fmt(p[1])}) -> ({_fmt(q[0])}, {_fmt(q[1])})", d))
             for f in _SIZES.get(kind, []):
                 handled.add(f)
                 u, v = float(x[f]), float(y[f])
                 if abs(u - v) > tol:
                     out.append(Change("resized", name, f"{kind} {f} {_fmt(u)} -> {_fmt(v)} "
-                                              f"(by {format(abs(u - v), '.3g')})", abs(u - v)))
+                                      f"(by {format(abs(u - v), '.3g')})", abs(u - v)))
         except (KeyError, TypeError, ValueError):
             handled = {"type"}  # not the documented shape: compare it field by field below
         rest_x = {k: v for k, v in x.items() if k not in handled}

@@ -44,11 +44,11 @@ def diff_drawings(da: Drawing, db: Drawing, tol: float, name_a: str, name_b: str
             changes += _compare(sa, sb, tol, how)
         else:
             changes.append(Change("missing", sa.key, f"{sa.kind} only in A{_where(sa)}", None, sa.kind,
-                                     step=sa.step))
+                                  step=sa.step))
     for sb in db.shapes:
         if id(sb) not in matched_b:
             changes.append(Change("extra", sb.key, f"{sb.kind} only in B{_where(sb)}", None, sb.kind,
-                                     step=sb.step))
+                                  step=sb.step))
     return Diff("svg", name_a, name_b, tol, tuple(changes), "elements", (len(da.shapes), len(db.shapes)))
 
 
@@ -73,8 +73,8 @@ def _document_changes(da: Drawing, db: Drawing, tol: float) -> list[Change]:
             continue
         if va is None or vb is None or not values_close(va, vb, tol):
             out.append(Change("document", prop, f"{show_value(va) if va is not None else '(none)'} -> "
-                                                   f"{show_value(vb) if vb is not None else '(none)'}",
-                                 numeric_difference(va, vb)))
+                                                f"{show_value(vb) if vb is not None else '(none)'}",
+                              numeric_difference(va, vb)))
     return out
 
 
@@ -88,8 +88,8 @@ def _definition_changes(da: Drawing, db: Drawing, tol: float) -> list[Change]:
             out.append(Change("definition", key, f"<{b[key][0]}> only in B"))
         elif not values_close(a[key], b[key], tol):
             out.append(Change("definition", key, f"<{a[key][0]}> changed"
-                                 + ("" if a[key][0] == b[key][0] else f" to <{b[key][0]}>"),
-                                 numeric_difference(a[key], b[key])))
+                              + ("" if a[key][0] == b[key][0] else f" to <{b[key][0]}>"),
+                              numeric_difference(a[key], b[key])))
     return out
 
 
@@ -102,7 +102,7 @@ def _compare(x: Shape, y: Shape, tol: float, how: str) -> list[Change]:
 
     def add(kind: str, description: str, magnitude: float | None = None) -> None:
         out.append(Change(kind, x.key, description, magnitude, x.kind, how, key_b,
-                             x.step if x.step is not None else y.step))
+                          x.step if x.step is not None else y.step))
 
     if key_b is not None and (x.has_id or y.has_id):
         add("renamed", f"id {x.key!r} -> {y.key!r}")

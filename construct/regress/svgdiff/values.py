@@ -68,7 +68,7 @@ NUMBER_RE = re.compile(NUMBER)
 # A number inside free text (animation values, CSS): not glued to a word or a '#'.
 _FREE_NUMBER_RE = re.compile(r"(?<![\w#.])" + NUMBER)
 UNITS = {"": 1.0, "px": 1.0, "mm": 96 / 25.4, "cm": 96 / 2.54, "in": 96.0, "pt": 96 / 72, "pc": 16.0,
-          "em": 16.0, "ex": 8.0}  # em/ex: the initial font size, 16 px; good enough for a diff
+         "em": 16.0, "ex": 8.0}  # em/ex: the initial font size, 16 px; good enough for a diff
 LENGTH_RE = re.compile(r"\s*(" + NUMBER + r")\s*(px|mm|cm|in|pt|pc|em|ex|%)?\s*", re.I)
 
 

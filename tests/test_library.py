@@ -192,3 +192,47 @@ def test_the_top_of_the_package_holds_few_modules():
     """Everything but the front door, the entry point and a few cross-layer modules lives in a package."""
     loose = sorted(p.name for p in PACKAGE.glob("*.py") if p.name not in ("__init__.py", "__main__.py"))
     assert len(loose) <= 3, loose
+
+
+# -- private names ----------------------------------------------------------------------------------
+
+#: Packages whose modules may still import ``_private`` names from one another.  They are being
+#: reworked on other branches (the constructions' shared helpers, the renderer), so their imports are
+#: left alone here; the list is to be emptied once those branches are merged.
+PRIVATE_IMPORTS_ALLOWED_IN = ("construct/constructions/", "construct/render/")
+
+
+def _private_imports(source: str) -> list[tuple[int, str, str]]:
+    """(line, module, name) of every ``from construct... import _name`` in *source*, inside functions too.
+
+    A name with a leading underscore is its module's own business; what two modules share is public.
+    Dunder names (``__version__``) are not private.
+    """
+    out = []
+    for node in ast.walk(ast.parse(source)):
+        if isinstance(node, ast.ImportFrom) and (node.level or (node.module or "").startswith("construct")):
+            module = "." * node.level + (node.module or "")
+            out += [(node.lineno, module, a.name) for a in node.names
+                    if a.name.startswith("_") and not (a.name.startswith("__") and a.name.endswith("__"))]
+    return out
+
+
+def test_no_private_name_is_imported_from_another_module():
+    bad = []
+    for path in sorted(PACKAGE.rglob("*.py")):
+        rel = path.relative_to(ROOT).as_posix()
+        if rel.startswith(PRIVATE_IMPORTS_ALLOWED_IN):
+            continue
+        bad += [f"{rel}:{line} imports {name} from {module}"
+                for line, module, name in _private_imports(path.read_text(encoding="utf-8"))]
+    assert not bad, "\n".join(bad)
+
+
+def test_the_private_import_test_sees_what_it_must():
+    source = ("from .values import _fmt, show_value\n"
+              "from construct.kernel import __version__\n"
+              "import os.path\n"
+              "from os import _exit\n"
+              "def f():\n"
+              "    from ..match import _bbox as box\n")
+    assert _private_imports(source) == [(1, ".values", "_fmt"), (6, "..match", "_bbox")]

@@ -14,7 +14,8 @@ import pytest
 
 from construct.cli import main
 from construct.kernel.errors import ConstructError, ProtocolFormatError
-from construct.regress.protocoldiff import ProtocolChange, diff_protocol
+from construct.regress.change import Change
+from construct.regress.protocoldiff import diff_protocol
 
 
 def step(index, tool, op, inputs, outputs, de, en, params=None, kind="exact", group=()):
@@ -165,7 +166,7 @@ def test_report_and_dict_are_deterministic():
     d1, d2 = diff_protocol(BASE, b), diff_protocol(json.dumps(BASE), json.dumps(b).encode())
     assert d1.changes == d2.changes
     assert json.dumps(d1.as_dict()) == json.dumps(diff_protocol(BASE, b).as_dict())
-    assert all(isinstance(c, ProtocolChange) for c in d1.changes)
+    assert all(isinstance(c, Change) for c in d1.changes)
 
 
 @pytest.mark.parametrize("bad", [
@@ -192,3 +193,23 @@ def test_cli_on_protocol_files(tmp_path, capsys):
     assert main(["diff", str(a), str(b), "--json"]) == 1
     assert json.loads(capsys.readouterr().out)["method_changed"] is True
     assert main(["diff", str(a), str(broken)]) == 2
+
+
+def test_changes_read_like_the_svg_diffs():
+    """One Change type: a protocol's changes carry their step and serialise with the SVG diff's keys."""
+    from construct.regress.svgdiff import diff_svg
+
+    b = variant()
+    b["steps"][2]["caption"]["en"] = "the axis"  # step 3 changed
+    b["steps"].insert(1, step(2, "given", "point", [], ["Y"], "Punkt Y", "point Y", {"x": 0, "y": 3}))
+    for k, s in enumerate(b["steps"], 1):
+        s["index"] = k  # the old step 3 is now step 4
+    b["objects"]["T1"]["x"] = 5.5  # an object: no step
+    d = diff_protocol(BASE, b)
+    assert {k: [c.kind for c in v] for k, v in d.by_step().items()} == {
+        None: ["method", "moved"], 2: ["inserted"], 3: ["caption"]}
+    assert [c.key for c in d.of_kind("caption")] == ["step 3->4"]
+    svg = '<svg xmlns="http://www.w3.org/2000/svg"><circle id="P" r="1"/></svg>'
+    moved = diff_svg(svg, svg.replace('r="1"', 'r="1" cx="2"'))
+    assert list(d.as_dict()["changes"][0]) == list(moved.as_dict()["changes"][0])
+    assert d.steps == (5, 6) and moved.elements == (1, 1)

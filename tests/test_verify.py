@@ -176,7 +176,8 @@ def test_reformatted_and_moved_golden_names_only_the_move(goldens: Path, rebuild
     moved, _ = _move_circle(path.read_text(encoding="utf-8"), POINT, -0.01)
     path.write_text(_reformat(moved), encoding="utf-8")
     d, = verify(goldens, builder=rebuild).differences
-    assert d.total == 1 and POINT in d.changes[0] and "by 0.01" in d.changes[0]
+    (change,) = d.changes
+    assert d.total == 1 and change.key == POINT and change.kind == "moved" and "by 0.01" in change.line()
 
 
 def test_protocol_point_moved_is_named(goldens: Path, rebuild) -> None:
@@ -186,7 +187,7 @@ def test_protocol_point_moved_is_named(goldens: Path, rebuild) -> None:
     proto.write_text(json.dumps(data, indent=1), encoding="utf-8")
     d, = verify(goldens, builder=rebuild).differences
     assert (d.path, d.kind, d.step) == (f"{FIGURE}/protocol.json", "protocol", None)
-    assert any(" O:" in c and "moved by 0.01" in c for c in d.changes), d.changes
+    assert any(c.key == "O" and " O:" in c.line() and "moved by 0.01" in c.line() for c in d.changes), d.lines()
 
 
 def test_missing_extra_text_and_png(goldens: Path, rebuild) -> None:
@@ -201,8 +202,8 @@ def test_missing_extra_text_and_png(goldens: Path, rebuild) -> None:
                              "index.html"]
     assert found["crank-6/steps/074.svg"].status == "extra"
     assert found["crank-6/steps/075.svg"].status == "missing"
-    assert "image 8x5 -> 8x4" in found["crank-6/storyboard.png"].changes[0]
-    text = "\n".join(found["index.html"].changes)
+    assert "image 8x5 -> 8x4" in found["crank-6/storyboard.png"].changes[0].line()
+    text = "\n".join(found["index.html"].lines())
     assert "-<p>crank, 8 parts</p>" in text and "+<p>crank, 6 parts</p>" in text
     report = result.report()
     assert "crank-6 step 74 (crank-6/steps/074.svg): extra" in report

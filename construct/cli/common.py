@@ -22,7 +22,12 @@ def brief(text: str, limit: int = 80) -> str:
     return text if len(text) <= limit else text[:limit - 1] + "…"
 
 
-def _number(text: str) -> float:
+def number(text: str) -> float:
+    """An option's number, as argparse's ``type=``: a word that is no number is a usage error.
+
+    >>> number("2.5"), number("1e3")
+    (2.5, 1000.0)
+    """
     try:
         v = float(text)
     except ValueError:
@@ -30,7 +35,12 @@ def _number(text: str) -> float:
     return v
 
 
-def _whole(text: str) -> int:
+def whole_number(text: str) -> int:
+    """An option's whole number (a count of parts, divisions), as argparse's ``type=``.
+
+    >>> whole_number("12")
+    12
+    """
     try:
         return int(text)
     except ValueError:
@@ -54,19 +64,19 @@ def add_construction_options(p: argparse.ArgumentParser, *, name_optional: bool 
     p.add_argument("--protocol", metavar="FILE", help="replay an exported protocol.json instead of building afresh")
     from ..constructions.domain import ROD_RATIO
 
-    p.add_argument("--rod-ratio", type=_number, metavar="L/r", help=f"connecting rod length over crank radius, "
+    p.add_argument("--rod-ratio", type=number, metavar="L/r", help=f"connecting rod length over crank radius, "
                    f"{ROD_RATIO.low:g} <= L/r <= {ROD_RATIO.high:g}")
-    p.add_argument("--parts", type=_whole, metavar="N", help="parts of the semicircle (1..3600)")
+    p.add_argument("--parts", type=whole_number, metavar="N", help="parts of the semicircle (1..3600)")
     p.add_argument("--method", metavar="DIVISION", help="how the semicircle is divided: auto, exact, durer, neusis, dividers")
-    p.add_argument("--divisions", type=_whole, metavar="N", help="divisions of the stroke (crank-angle)")
-    p.add_argument("--radius", type=_number, metavar="r", help="crank radius r in drawing units")
-    p.add_argument("--pressure-ratio", type=_number, metavar="F/f", help="F/f of the inertia pressures")
+    p.add_argument("--divisions", type=whole_number, metavar="N", help="divisions of the stroke (crank-angle)")
+    p.add_argument("--radius", type=number, metavar="r", help="crank radius r in drawing units")
+    p.add_argument("--pressure-ratio", type=number, metavar="F/f", help="F/f of the inertia pressures")
     p.add_argument("--infinite-rod", action="store_true", default=None,
                    help="an infinitely long connecting rod (instead of --rod-ratio)")
     p.add_argument("--revolution", action="store_true", default=None,
                    help="tangential-pressure, piston-force: both strokes over the whole revolution")
-    p.add_argument("--fluctuation", type=_number, metavar="k", help="k = Qr/((m1+m2) v1²) of the two cranks")
-    p.add_argument("--magnify", type=_number, metavar="G", help="magnification of the speed deviations (two-cranks)")
+    p.add_argument("--fluctuation", type=number, metavar="k", help="k = Qr/((m1+m2) v1²) of the two cranks")
+    p.add_argument("--magnify", type=number, metavar="G", help="magnification of the speed deviations (two-cranks)")
     p.add_argument("--given", action="append", default=[], metavar="NAME=VALUE",
                    help="set a given of a --protocol by its own name (repeatable), e.g. --given s=10")
     _add_generic_options(p)
@@ -106,8 +116,8 @@ def _generic_params() -> dict[str, tuple[Any, str]]:
         for key, default in c.defaults.items():
             if key in covered or key in out:
                 continue
-            kind = _whole if isinstance(default, int) and not isinstance(default, bool) else (
-                _number if isinstance(default, float) else str)
+            kind = whole_number if isinstance(default, int) and not isinstance(default, bool) else (
+                number if isinstance(default, float) else str)
             out[key] = (kind, helps.get(key) or HELPS.get(key, f"{key.replace('_', ' ')} (default {default!r} in {name})"))
     return out
 
@@ -143,14 +153,19 @@ def _named_givens(args: argparse.Namespace) -> dict[str, float]:
         name, sep, value = item.partition("=")
         if not sep or not name:
             raise InvalidParameter(f"--given takes NAME=VALUE, got {item!r}")
-        v = _number(value) if _is_number(value) else None
+        v = number(value) if is_number(value) else None
         if v is None or not math.isfinite(v):
             raise InvalidParameter(f"--given {name} must be a finite number, got {value!r}")
         out[name] = v
     return out
 
 
-def _is_number(text: str) -> bool:
+def is_number(text: str) -> bool:
+    """Does *text* read as a number (``-3`` after an option is its value, not an option)?
+
+    >>> is_number("-3"), is_number("-x")
+    (True, False)
+    """
     try:
         float(text)
     except ValueError:

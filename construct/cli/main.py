@@ -85,7 +85,7 @@ def _negative_values_attached(parser: argparse.ArgumentParser, argv: Sequence[st
     >>> _negative_values_attached(build_parser(), ["check", "crank", "--rod-ratio", "-inf", "--infinite-rod"])
     ['check', 'crank', '--rod-ratio=-inf', '--infinite-rod']
     """
-    from .common import _is_number
+    from .common import is_number
 
     subparsers = next((a for a in parser._actions if isinstance(a, argparse._SubParsersAction)), None)
     sub = subparsers.choices.get(argv[0]) if subparsers is not None and argv else None
@@ -98,7 +98,7 @@ def _negative_values_attached(parser: argparse.ArgumentParser, argv: Sequence[st
     while i < len(argv):
         token = argv[i]
         if (token in takes_value and i + 1 < len(argv) and argv[i + 1].startswith("-")
-                and _is_number(argv[i + 1])):
+                and is_number(argv[i + 1])):
             out.append(f"{token}={argv[i + 1]}")
             i += 2
             continue

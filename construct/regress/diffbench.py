@@ -25,7 +25,7 @@ import tempfile
 from pathlib import Path
 from typing import Any
 
-__all__ = ["synthetic_svg", "run_diff_bench", "diff_verdicts", "SIZES", "FLAT_RATIO"]
+__all__ = ["synthetic_svg", "measure_case", "run_diff_bench", "diff_verdicts", "SIZES", "FLAT_RATIO"]
 
 #: Elements per drawing; ``--diff-million`` adds 1,000,000.
 SIZES = (10_000, 100_000)
@@ -62,15 +62,15 @@ def synthetic_svg(n: int, *, moved: int | None = None, ids: bool = False) -> str
     return w.text(dwg)
 
 
-def _case(a: str, b: str, n: int, ids: bool) -> dict[str, Any]:
+def measure_case(a: str, b: str, n: int, ids: bool) -> dict[str, Any]:
     """One case, in this process: read both files, diff them, and the matching alone."""
     import resource
     import time
     from pathlib import Path
 
     from .svgdiff import DEFAULT_TOLERANCE, parse_svg
-    from .svgdiff.match import _extent, _match
-    from .svgdiff.report import _diff_drawings
+    from .svgdiff.match import drawing_extent, match_shapes
+    from .svgdiff.report import diff_drawings
 
     def rss_mb() -> float:
         return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024  # kB on Linux
@@ -81,10 +81,10 @@ def _case(a: str, b: str, n: int, ids: bool) -> dict[str, Any]:
     da, db = parse_svg(Path(a)), parse_svg(Path(b))
     parse_wall, parse_cpu = clock() - t, time.process_time() - c
     t, c = clock(), time.process_time()
-    diff = _diff_drawings(da, db, DEFAULT_TOLERANCE, a, b)
+    diff = diff_drawings(da, db, DEFAULT_TOLERANCE, a, b)
     diff_wall, diff_cpu = clock() - t, time.process_time() - c
     t = time.process_time()
-    _match(da.shapes, db.shapes, DEFAULT_TOLERANCE, max(_extent(da), _extent(db)))
+    match_shapes(da.shapes, db.shapes, DEFAULT_TOLERANCE, max(drawing_extent(da), drawing_extent(db)))
     match_cpu = time.process_time() - t
     kinds = sorted({ch.kind for ch in diff.changes})
     return {"case": f"{n} {'ids' if ids else 'anonymous'}", "elements": n, "ids": ids,
@@ -104,8 +104,8 @@ def run_diff_bench(sizes: tuple[int, ...] = SIZES) -> list[dict[str, Any]]:
                 a, b = Path(tmp, "a.svg"), Path(tmp, "b.svg")
                 a.write_text(synthetic_svg(n, ids=ids), encoding="utf-8")
                 b.write_text(synthetic_svg(n, moved=n // 2 + 1, ids=ids), encoding="utf-8")
-                code = ("import json; from construct.regress.diffbench import _case; "
-                        f"print(json.dumps(_case({str(a)!r}, {str(b)!r}, {n}, {ids})))")
+                code = ("import json; from construct.regress.diffbench import measure_case; "
+                        f"print(json.dumps(measure_case({str(a)!r}, {str(b)!r}, {n}, {ids})))")
                 done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
                 if done.returncode != 0:
                     raise RuntimeError(f"diff bench case {n} failed: {done.stderr.strip().splitlines()[-1:]}")

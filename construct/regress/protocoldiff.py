@@ -1,4 +1,4 @@
-"""Semantic diff of two construction protocols (``protocol.json``).
+"""Semantic diff of two construction protocols (``protocol.json``), as a :class:`~construct.regress.change.Diff`.
 
 What a reviewer of a changed construction wants to know: which steps were
 inserted or removed, which changed (instrument, operation, inputs, outputs,
@@ -36,8 +36,9 @@ from ..kernel.errors import InvalidParameter, ProtocolFormatError
 from ..kernel.numeric import json_number_problems, shown
 from ..kernel.protocol_file import (MAX_PROTOCOL_BYTES, check_format, check_nesting, parse_protocol_json,
                                     read_protocol_bytes)
+from .change import Change, Diff
 
-__all__ = ["DEFAULT_TOLERANCE", "ProtocolChange", "ProtocolDiff", "diff_protocol", "load_protocol"]
+__all__ = ["DEFAULT_TOLERANCE", "Change", "Diff", "diff_protocol", "load_protocol"]
 
 DEFAULT_TOLERANCE = 1e-9
 """Drawing units; a replay is deterministic, so only float noise is forgiven."""
@@ -203,83 +204,31 @@ def _check_step(s: Any, k: int, label: str, groups: list | None = None) -> dict[
 
 # --------------------------------------------------------------------------- the diff
 
-@dataclass(frozen=True, slots=True)
-class ProtocolChange:
-    """One difference: its kind, what it concerns (a step, an object, a param), a readable description."""
-
-    kind: str
-    key: str
-    description: str
-    magnitude: float | None = None
-
-    def line(self) -> str:
-        return f"  {self.kind:<10} {self.key}: {self.description}"
-
-
-@dataclass(frozen=True, slots=True)
-class ProtocolDiff:
-    """The differences between two protocols, in a fixed order."""
-
-    a: str
-    b: str
-    tolerance: float
-    changes: tuple[ProtocolChange, ...]
-    steps: tuple[int, int]
-    instruments: tuple[tuple[str, int, int], ...]  # (tool, count in A, count in B)
-
-    @property
-    def equal(self) -> bool:
-        """Do the protocols agree (numbers within the tolerance)?"""
-        return not self.changes
-
-    @property
-    def method_changed(self) -> bool:
-        """Did the number of steps or of uses of some instrument change?"""
-        return self.steps[0] != self.steps[1] or any(x != y for _, x, y in self.instruments)
-
-    def report(self) -> str:
-        """Readable text, one line per change."""
-        head = f"protocol diff {self.a} -> {self.b} (tolerance {format(self.tolerance, '.3g')}): "
-        if self.equal:
-            tools = ", ".join(f"{t} {x}" for t, x, _ in self.instruments)
-            return head + f"equal ({self.steps[0]} steps; {tools})"
-        n = len(self.changes)
-        return "\n".join([head + f"{n} change{'s' if n != 1 else ''}"] + [c.line() for c in self.changes])
-
-    def as_dict(self) -> dict[str, Any]:
-        """Plain data for JSON."""
-        return {"kind": "protocol", "a": self.a, "b": self.b, "tolerance": self.tolerance, "equal": self.equal,
-                "steps": {"a": self.steps[0], "b": self.steps[1]},
-                "instruments": {t: {"a": x, "b": y} for t, x, y in self.instruments},
-                "method_changed": self.method_changed,
-                "changes": [{"kind": c.kind, "key": c.key, "description": c.description, "magnitude": c.magnitude}
-                            for c in self.changes]}
-
-
 def diff_protocol(a: str | Path | bytes | Mapping[str, Any], b: str | Path | bytes | Mapping[str, Any],
-                  tolerance: float = DEFAULT_TOLERANCE) -> ProtocolDiff:
+                  tolerance: float = DEFAULT_TOLERANCE) -> Diff:
     """Compare two protocols; numbers differing by at most *tolerance* are equal."""
     if not (_is_num(tolerance) and math.isfinite(tolerance) and tolerance >= 0):
         raise InvalidParameter(f"diff_protocol: tolerance must be a finite number >= 0, got {tolerance!r}")
     tol = float(tolerance)
     pa, pb = load_protocol(a), load_protocol(b)
-    changes: list[ProtocolChange] = []
+    changes: list[Change] = []
     if pa.data["construction"] != pb.data["construction"]:
-        changes.append(ProtocolChange("construction", "construction",
-                                      f"{pa.data['construction']!r} -> {pb.data['construction']!r}"))
+        changes.append(Change("construction", "construction",
+                              f"{pa.data['construction']!r} -> {pb.data['construction']!r}"))
     instruments = _instruments(pa.steps, pb.steps)
     method = _method_line(len(pa.steps), len(pb.steps), instruments)
     if method:
-        changes.append(ProtocolChange("method", "steps", method, float(abs(len(pb.steps) - len(pa.steps)))))
+        changes.append(Change("method", "steps", method, float(abs(len(pb.steps) - len(pa.steps)))))
     for path, text, mag in _value_changes(pa.data.get("params", {}), pb.data.get("params", {}), tol):
-        changes.append(ProtocolChange("param", path, text, mag))
+        changes.append(Change("param", path, text, mag))
     other_a = {k: v for k, v in pa.data.items() if k not in _KNOWN_TOP}
     other_b = {k: v for k, v in pb.data.items() if k not in _KNOWN_TOP}
     for path, text, mag in _value_changes(other_a, other_b, tol):
-        changes.append(ProtocolChange("document", path, text, mag))
+        changes.append(Change("document", path, text, mag))
     changes += _step_changes(pa.steps, pb.steps, tol)
     changes += _object_changes(pa.objects, pb.objects, tol)
-    return ProtocolDiff(pa.label, pb.label, tol, tuple(changes), (len(pa.steps), len(pb.steps)), instruments)
+    return Diff("protocol", pa.label, pb.label, tol, tuple(changes), "steps", (len(pa.steps), len(pb.steps)),
+                instruments)
 
 
 def _tool_rank(tool: str) -> tuple[int, str]:
@@ -333,14 +282,14 @@ def _align(sa: Sequence[dict], sb: Sequence[dict]) -> list[tuple[int | None, int
     return out
 
 
-def _step_changes(sa: Sequence[dict], sb: Sequence[dict], tol: float) -> list[ProtocolChange]:
-    out: list[ProtocolChange] = []
+def _step_changes(sa: Sequence[dict], sb: Sequence[dict], tol: float) -> list[Change]:
+    out: list[Change] = []
     for i, j in _align(sa, sb):
         if j is None:
-            out.append(ProtocolChange("removed", f"step {sa[i]['index']}", _summary(sa[i])))
+            out.append(Change("removed", f"step {sa[i]['index']}", _summary(sa[i]), step=sa[i]["index"]))
             continue
         if i is None:
-            out.append(ProtocolChange("inserted", f"step {sb[j]['index']}", _summary(sb[j])))
+            out.append(Change("inserted", f"step {sb[j]['index']}", _summary(sb[j]), step=sb[j]["index"]))
             continue
         x, y = sa[i], sb[j]
         key = f"step {x['index']}" if x["index"] == y["index"] else f"step {x['index']}->{y['index']}"
@@ -351,13 +300,13 @@ def _step_changes(sa: Sequence[dict], sb: Sequence[dict], tol: float) -> list[Pr
             kind = "step-params" if field == "params" else field
             if isinstance(vx, dict) or isinstance(vy, dict):
                 for path, text, mag in _value_changes(vx or {}, vy or {}, tol):
-                    out.append(ProtocolChange(kind, key, f"{field}.{path} {text}", mag))
+                    out.append(Change(kind, key, f"{field}.{path} {text}", mag, step=x["index"]))
             else:
-                out.append(ProtocolChange(kind, key, f"{_show(vx)} -> {_show(vy)}"))
+                out.append(Change(kind, key, f"{_show(vx)} -> {_show(vy)}", step=x["index"]))
         rest_x = {k: v for k, v in x.items() if k not in _STEP_FIELDS and k != "index"}
         rest_y = {k: v for k, v in y.items() if k not in _STEP_FIELDS and k != "index"}
         for path, text, mag in _value_changes(rest_x, rest_y, tol):
-            out.append(ProtocolChange("step", key, f"{path} {text}", mag))
+            out.append(Change("step", key, f"{path} {text}", mag, step=x["index"]))
     return out
 
 
@@ -367,18 +316,18 @@ _POSITIONS = {"point": [("x", "y", "")], "line": [("x1", "y1", " start"), ("x2",
 _SIZES = {"circle": ["r"], "length": ["value"]}
 
 
-def _object_changes(oa: Mapping[str, dict], ob: Mapping[str, dict], tol: float) -> list[ProtocolChange]:
-    out: list[ProtocolChange] = []
+def _object_changes(oa: Mapping[str, dict], ob: Mapping[str, dict], tol: float) -> list[Change]:
+    out: list[Change] = []
     for name in list(oa) + [n for n in ob if n not in oa]:
         if name not in ob:
-            out.append(ProtocolChange("missing", name, f"{oa[name]['type']} only in A"))
+            out.append(Change("missing", name, f"{oa[name]['type']} only in A"))
             continue
         if name not in oa:
-            out.append(ProtocolChange("extra", name, f"{ob[name]['type']} only in B"))
+            out.append(Change("extra", name, f"{ob[name]['type']} only in B"))
             continue
         x, y = oa[name], ob[name]
         if x["type"] != y["type"]:
-            out.append(ProtocolChange("object", name, f"type {x['type']} -> {y['type']}"))
+            out.append(Change("object", name, f"type {x['type']} -> {y['type']}"))
             continue
         kind = x["type"]
         handled: set[str] = {"type"}
@@ -390,18 +339,18 @@ def _object_changes(oa: Mapping[str, dict], ob: Mapping[str, dict], tol: float) 
                 moves.append((math.dist(p, q), p, q, label))
             if moves and max(m[0] for m in moves) > tol:
                 d, p, q, label = max(moves, key=lambda m: m[0])
-                out.append(ProtocolChange("moved", name, f"{kind}{label} moved by {format(d, '.3g')}: "
-                                          f"({_fmt(p[0])}, {_fmt(p[1])}) -> ({_fmt(q[0])}, {_fmt(q[1])})", d))
+                out.append(Change("moved", name, f"{kind}{label} moved by {format(d, '.3g')}: "
+                                  f"({_fmt(p[0])}, {_fmt(p[1])}) -> ({_fmt(q[0])}, {_fmt(q[1])})", d))
             for f in _SIZES.get(kind, []):
                 handled.add(f)
                 u, v = float(x[f]), float(y[f])
                 if abs(u - v) > tol:
-                    out.append(ProtocolChange("resized", name, f"{kind} {f} {_fmt(u)} -> {_fmt(v)} "
-                                              f"(by {format(abs(u - v), '.3g')})", abs(u - v)))
+                    out.append(Change("resized", name, f"{kind} {f} {_fmt(u)} -> {_fmt(v)} "
+                                      f"(by {format(abs(u - v), '.3g')})", abs(u - v)))
         except (KeyError, TypeError, ValueError):
             handled = {"type"}  # not the documented shape: compare it field by field below
         rest_x = {k: v for k, v in x.items() if k not in handled}
         rest_y = {k: v for k, v in y.items() if k not in handled}
         for path, text, mag in _value_changes(rest_x, rest_y, tol):
-            out.append(ProtocolChange("object", name, f"{kind} {path} {text}", mag))
+            out.append(Change("object", name, f"{kind} {path} {text}", mag))
     return out

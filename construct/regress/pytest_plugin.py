@@ -157,7 +157,7 @@ def side_by_side_html(name: str, golden_root: Path, actual_root: Path, differenc
     for d in differences:
         g, a = golden_root / d.path, actual_root / d.path
         head = f"<h2>{esc(d.headline())}</h2>"
-        listed = "\n".join(d.changes[:MAX_REPORTED])
+        listed = "\n".join(d.lines()[:MAX_REPORTED])
         body = f"<pre>{esc(listed)}</pre>" if listed else ""
         if d.kind == "svg" and d.path in pictured:
             body += "<p class='none'>(drawn above)</p>"

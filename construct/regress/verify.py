@@ -48,6 +48,7 @@ from pathlib import Path, PurePosixPath
 from typing import Any, Callable
 
 from ..kernel.errors import ConstructError, InvalidParameter
+from .change import Change
 
 __all__ = ["DEFAULT_TOLERANCE", "PROTOCOL_TOLERANCE", "FileDifference", "VerifyResult", "VerifyInputError",
            "compare_trees", "compare_file", "compare_file_by_step", "locate", "verify", "default_builder"]
@@ -87,14 +88,19 @@ class VerifyInputError(InvalidParameter):
 
 @dataclass(frozen=True)
 class FileDifference:
-    """One file that differs: where it is, what kind of difference, the change lines."""
+    """One file that differs: where it is, what kind of difference, its changes.
+
+    The changes are those of the file's diff (:class:`~construct.regress.change.Change`, as
+    ``construct diff`` reports them); a text file adds an *excerpt* of its unified diff.
+    """
 
     path: str  # relative, with forward slashes
     status: str  # "changed", "missing" (only in the goldens) or "extra" (only in the rebuild)
     kind: str  # "svg", "protocol", "text", "png", "binary"
-    changes: tuple[str, ...] = ()  # readable lines, each naming the element, step or line
-    total: int = 0  # number of changes (may exceed len(changes) for text excerpts)
+    changes: tuple[Change, ...] = ()  # each naming the element, object, step or lines it concerns
+    total: int = 0  # number of changes (may exceed len(changes): at most KEPT_CHANGES are kept)
     at_step: int | None = None  # the step group of a layered figure the changes are in
+    excerpt: tuple[str, ...] = ()  # a text file's unified-diff lines, printed after its changes
 
     @property
     def figure(self) -> str:
@@ -114,9 +120,14 @@ class FileDifference:
         n = self.total
         return f"{where} ({self.path}): {n} change{'s' if n != 1 else ''}"
 
+    def lines(self) -> list[str]:
+        """The report lines under the headline: one per change, then the excerpt."""
+        return [c.line() for c in self.changes] + list(self.excerpt)
+
     def report(self, max_changes: int = MAX_CHANGES) -> str:
-        lines = [self.headline()] + list(self.changes[:max_changes])
-        hidden = self.total - min(len(self.changes), max_changes)
+        shown = self.lines()
+        lines = [self.headline()] + shown[:max_changes]
+        hidden = self.total - min(len(shown), max_changes)
         if self.status == "changed" and hidden > 0:
             lines.append(f"  ... and {hidden} more")
         return "\n".join(lines)
@@ -251,20 +262,19 @@ def _text_changes(rel: str, golden: Path, actual: Path) -> FileDifference | None
     a, b = _read_text(golden), _read_text(actual)
     if a is None or b is None:
         size = f"{golden.stat().st_size} -> {actual.stat().st_size} bytes"
-        return FileDifference(rel, "changed", "binary", (f"  bytes      content differs ({size})",), 1)
+        return FileDifference(rel, "changed", "binary", (Change("bytes", "", f"content differs ({size})"),), 1)
     if a == b:
         return None  # only the line ends differed
     la, lb = a.splitlines(keepends=True), b.splitlines(keepends=True)
     matcher = difflib.SequenceMatcher(None, la, lb, autojunk=False)
     blocks = [op for op in matcher.get_opcodes() if op[0] != "equal"]
     excerpt = list(difflib.unified_diff(la, lb, "golden/" + rel, "rebuilt/" + rel, n=1))
-    lines = []
-    for op, i1, i2, j1, j2 in blocks[:3]:
-        lines.append(f"  text       lines {i1 + 1}-{max(i1 + 1, i2)}: {op} ({i2 - i1} -> {j2 - j1} lines)")
-    lines += ["    " + _clip(x) for x in excerpt[2:14]]
+    changes = tuple(Change("text", f"lines {i1 + 1}-{max(i1 + 1, i2)}", f"{op} ({i2 - i1} -> {j2 - j1} lines)")
+                    for op, i1, i2, j1, j2 in blocks[:3])
+    lines = ["    " + _clip(x) for x in excerpt[2:14]]
     if len(excerpt) > 14:
         lines.append(f"    ... ({len(excerpt) - 14} more diff lines)")
-    return FileDifference(rel, "changed", "text", tuple(lines), len(blocks))
+    return FileDifference(rel, "changed", "text", changes, len(blocks), excerpt=tuple(lines))
 
 
 def compare_file(rel: str, golden: Path, actual: Path, *, tolerance: float = DEFAULT_TOLERANCE
@@ -275,8 +285,8 @@ def compare_file(rel: str, golden: Path, actual: Path, *, tolerance: float = DEF
         return None
     if len(found) == 1:
         return found[0]
-    lines = tuple(line for d in found for line in d.changes)
-    return FileDifference(rel, "changed", found[0].kind, lines[:KEPT_CHANGES], sum(d.total for d in found))
+    changes = tuple(c for d in found for c in d.changes)
+    return FileDifference(rel, "changed", found[0].kind, changes[:KEPT_CHANGES], sum(d.total for d in found))
 
 
 def compare_file_by_step(rel: str, golden: Path, actual: Path, *, tolerance: float = DEFAULT_TOLERANCE
@@ -288,7 +298,7 @@ def compare_file_by_step(rel: str, golden: Path, actual: Path, *, tolerance: flo
     if filecmp.cmp(golden, actual, shallow=False):
         return []  # byte-identical: the common case, nothing to parse
     if kind == "svg":
-        from .svgdiff import changes_by_step, diff_svg
+        from .svgdiff import diff_svg
 
         d = diff_svg(golden, actual, tolerance=tolerance)
         if d.equal:
@@ -297,23 +307,22 @@ def compare_file_by_step(rel: str, golden: Path, actual: Path, *, tolerance: flo
             # a standalone frame: every change is a change of that frame's step
             groups: dict[int | None, list] = {None: list(d.changes)}
         else:
-            groups = changes_by_step(d)
-        return [FileDifference(rel, "changed", "svg", tuple(c.line() for c in changes[:KEPT_CHANGES]),
-                               len(changes), at_step=step) for step, changes in groups.items()]
+            groups = d.by_step()
+        return [FileDifference(rel, "changed", "svg", tuple(changes[:KEPT_CHANGES]), len(changes), at_step=step)
+                for step, changes in groups.items()]
     if kind == "protocol":
         from .protocoldiff import diff_protocol
 
         p = diff_protocol(golden, actual, tolerance=PROTOCOL_TOLERANCE)
         if p.equal:
             return []
-        return [FileDifference(rel, "changed", "protocol", tuple(c.line() for c in p.changes[:KEPT_CHANGES]),
-                               len(p.changes))]
+        return [FileDifference(rel, "changed", "protocol", p.changes[:KEPT_CHANGES], len(p.changes))]
     if kind == "png":
         sa, sb = png_size(golden), png_size(actual)
         if sa == sb and sa is not None:
             return []  # pixels are not compared: see the module docstring
         show = lambda s: "not a PNG" if s is None else f"{s[0]}x{s[1]}"  # noqa: E731
-        return [FileDifference(rel, "changed", "png", (f"  size       image {show(sa)} -> {show(sb)}",), 1)]
+        return [FileDifference(rel, "changed", "png", (Change("size", "", f"image {show(sa)} -> {show(sb)}"),), 1)]
     found = _text_changes(rel, golden, actual)
     return [found] if found is not None else []
 
@@ -344,7 +353,7 @@ def compare_trees(golden: Path, actual: Path, *, tolerance: float = DEFAULT_TOLE
 
                 if isinstance(exc, SvgTooLargeError):
                     raise  # but a drawing past the reader's bounds (an expansion bomb) refuses the run
-                diffs.append(FileDifference(rel, "changed", _kind(rel), (f"  unreadable {exc}",), 1))
+                diffs.append(FileDifference(rel, "changed", _kind(rel), (Change("unreadable", "", str(exc)),), 1))
     return diffs, len(names), pngs
 
 

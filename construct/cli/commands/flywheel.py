@@ -36,7 +36,7 @@ import math
 
 from ...books.baumann.flywheel import design, parse_fraction
 from ...kernel.errors import InvalidParameter
-from ..common import add_format_option, _is_number, _number
+from ..common import add_format_option, is_number, number
 
 NAME = "flywheel"
 HELP = ("size a flywheel by Baumann (seed 004): excess work -> rim weight G_s (E = G_s v² δ/g), arms and hub, "
@@ -55,19 +55,19 @@ def _fraction(text: str) -> float:
 
 
 def add_arguments(p) -> None:
-    p.add_argument("--excess-work", type=_number, metavar="E", help="excess work in kg·m")
-    p.add_argument("--rim-weight", type=_number, metavar="GS", help="the rim weight G_s itself, kg (instead of E)")
+    p.add_argument("--excess-work", type=number, metavar="E", help="excess work in kg·m")
+    p.add_argument("--rim-weight", type=number, metavar="GS", help="the rim weight G_s itself, kg (instead of E)")
     p.add_argument("--diagram", choices=DIAGRAMS, help="measure E on this construction's excess area")
     p.add_argument("--given", action="append", default=[], metavar="NAME=VALUE",
                    help="a given of the --diagram construction (repeatable), e.g. --given kappa=2")
-    p.add_argument("--piston-area", type=_number, metavar="CM2", help="piston area F in cm² (with --diagram)")
-    p.add_argument("--crank-radius", type=_number, metavar="M", help="crank radius in m (with --diagram)")
-    p.add_argument("--rpm", type=_number, required=True, metavar="N", help="revolutions per minute")
+    p.add_argument("--piston-area", type=number, metavar="CM2", help="piston area F in cm² (with --diagram)")
+    p.add_argument("--crank-radius", type=number, metavar="M", help="crank radius in m (with --diagram)")
+    p.add_argument("--rpm", type=number, required=True, metavar="N", help="revolutions per minute")
     p.add_argument("--fluctuation", type=_fraction, metavar="DELTA",
                    help="degree of irregularity δ = (v_max − v_min)/v_mean, e.g. 1/80 (Ungleichförmigkeitsgrad)")
-    p.add_argument("--diameter", type=_number, metavar="D", help="mean diameter of the rim in m")
-    p.add_argument("--v", type=_number, metavar="M_S", help="rim speed in m/s (instead of --diameter)")
-    p.add_argument("--kz", type=_number, metavar="KG_CM2",
+    p.add_argument("--diameter", type=number, metavar="D", help="mean diameter of the rim in m")
+    p.add_argument("--v", type=number, metavar="M_S", help="rim speed in m/s (instead of --diameter)")
+    p.add_argument("--kz", type=number, metavar="KG_CM2",
                    help="allowed tensile stress of the cast iron, kg/cm² (default 5 v, Baumann's pairing)")
     add_format_option(p)
 
@@ -88,9 +88,9 @@ def _diagram_work(args) -> tuple[float, str]:
     givens = {}
     for item in args.given:
         name, sep, value = item.partition("=")
-        if not sep or not name or not _is_number(value) or not math.isfinite(_number(value)):
+        if not sep or not name or not is_number(value) or not math.isfinite(number(value)):
             raise InvalidParameter(f"--given takes NAME=VALUE with a finite number, got {item!r}")
-        givens[name] = _number(value)
+        givens[name] = number(value)
     c = get(args.diagram)
     givens.setdefault("force", "baumann")
     if givens["force"] != "baumann":

@@ -11,7 +11,7 @@ import sys
 from ...kernel.errors import InvalidParameter
 from ...kernel.division import MAX_PARTS
 from ...tables import TABLES, write_plot
-from ..common import add_format_option, _number, _whole
+from ..common import add_format_option, number, whole_number
 
 NAME = "table"
 HELP = ("print a table (piston-path, crank-angle, acceleration, characteristic-points, mass-forces, "
@@ -20,21 +20,21 @@ HELP = ("print a table (piston-path, crank-angle, acceleration, characteristic-p
 
 def add_arguments(p) -> None:
     p.add_argument("table", metavar="TABLE", help=", ".join(TABLES))
-    p.add_argument("--rod-ratio", type=_number, action="append", metavar="L/r",
+    p.add_argument("--rod-ratio", type=number, action="append", metavar="L/r",
                    help="rod length over crank radius (repeat for the acceleration table)")
-    p.add_argument("--parts", type=_whole, default=18, metavar="N",
+    p.add_argument("--parts", type=whole_number, default=18, metavar="N",
                    help="parts of the semicircle the table is read off (default 18)")
     p.add_argument("--method", default="auto", metavar="DIVISION",
                    help="division of the semicircle: auto, exact, durer, neusis, dividers (default auto)")
-    p.add_argument("--divisions", type=_whole, default=10, metavar="N",
+    p.add_argument("--divisions", type=whole_number, default=10, metavar="N",
                    help="divisions of the stroke (crank-angle; default 10, the book's tenths)")
-    p.add_argument("--step", type=_number, default=10.0, metavar="DEG", help="angle step of the acceleration table")
-    p.add_argument("--weight", type=_number, metavar="G", help="mass-forces: weight of the reciprocating parts, kg")
-    p.add_argument("--rpm", type=_number, metavar="n", help="mass-forces: revolutions per minute")
-    p.add_argument("--crank-radius", type=_number, metavar="R", help="mass-forces: crank radius, m")
-    p.add_argument("--rod-length", type=_number, metavar="L", help="mass-forces: connecting-rod length, m")
-    p.add_argument("--kz", type=_number, action="append", metavar="kz", help="allowed stress kz in kg/cm² (flywheel; repeat)")
-    p.add_argument("--v", type=_number, action="append", metavar="v", help="rim speed v in m/s (flywheel; repeat)")
+    p.add_argument("--step", type=number, default=10.0, metavar="DEG", help="angle step of the acceleration table")
+    p.add_argument("--weight", type=number, metavar="G", help="mass-forces: weight of the reciprocating parts, kg")
+    p.add_argument("--rpm", type=number, metavar="n", help="mass-forces: revolutions per minute")
+    p.add_argument("--crank-radius", type=number, metavar="R", help="mass-forces: crank radius, m")
+    p.add_argument("--rod-length", type=number, metavar="L", help="mass-forces: connecting-rod length, m")
+    p.add_argument("--kz", type=number, action="append", metavar="kz", help="allowed stress kz in kg/cm² (flywheel; repeat)")
+    p.add_argument("--v", type=number, action="append", metavar="v", help="rim speed v in m/s (flywheel; repeat)")
     p.add_argument("--infinite-rod", action="store_true", help="an infinitely long rod (speed-fluctuation)")
     p.add_argument("--dead-centre", choices=("crank-end", "head-end"), default="crank-end",
                    help="speed-fluctuation: the first crank starts at § 146's B1, the crank-end dead centre "

@@ -40,7 +40,9 @@ construct.regress.svgdiff.SvgTooLargeError: <string>: the drawing expands to mor
 The package in four steps, each a module: :mod:`.parse` reads a document into
 shapes (with :mod:`.geometry` for transforms and paths, :mod:`.css` for
 colours and style sheets, :mod:`.values` for numbers), :mod:`.match` pairs the
-shapes of A and B, :mod:`.report` compares each pair and says what changed.
+shapes of A and B, :mod:`.report` compares each pair and says what changed
+(a :class:`~construct.regress.change.Diff` of :class:`~construct.regress.change.Change` s, the types
+the protocol diff and ``construct verify`` report in too).
 """
 
 from __future__ import annotations
@@ -49,15 +51,16 @@ from .css import normalise_colour
 from .geometry import parse_transform
 from .match import MATCH_BUDGET
 from .parse import SVG_NS, XLINK_NS, Drawing, Shape, parse_svg
-from .report import CHANGE_KINDS, SvgChange, SvgDiff, changes_by_step, diff_svg, iter_changes
+from ..change import Change, Diff
+from .report import CHANGE_KINDS, changes_by_step, diff_svg, iter_changes
 from .values import DEFAULT_TOLERANCE, MAX_ELEMENTS, SvgFormatError, SvgTooLargeError
 
-__all__ = ["DEFAULT_TOLERANCE", "MAX_ELEMENTS", "SvgChange", "SvgDiff", "SvgFormatError", "SvgTooLargeError",
+__all__ = ["DEFAULT_TOLERANCE", "MAX_ELEMENTS", "Change", "Diff", "SvgFormatError", "SvgTooLargeError",
            "diff_svg", "parse_svg",
            "changes_by_step", "iter_changes", "Drawing", "Shape", "normalise_colour", "parse_transform",
            "MATCH_BUDGET", "SVG_NS", "XLINK_NS", "CHANGE_KINDS"]
 
-for _public in (SvgChange, SvgDiff, Drawing, Shape, diff_svg, parse_svg, changes_by_step, iter_changes,
+for _public in (Drawing, Shape, diff_svg, parse_svg, changes_by_step, iter_changes,
                 normalise_colour, parse_transform):
     _public.__module__ = __name__  # documented, pickled and shown as construct.regress.svgdiff.<name>
 del _public

@@ -13,7 +13,7 @@ from typing import Any
 import tinycss2.color4
 
 from . import values
-from .values import SvgTooLargeError, _NUMBER, _UNITS
+from .values import NUMBER, UNITS, SvgTooLargeError
 
 # --------------------------------------------------------------------------- colours and styles
 
@@ -65,7 +65,7 @@ def _rgba_hex(r: int, g: int, b: int, a: int = 255) -> str:
 
 
 # Presentation attributes that may stand on an element instead of in `style`.
-_PRESENTATION = {
+PRESENTATION = {
     "alignment-baseline", "baseline-shift", "clip", "clip-path", "clip-rule", "color", "color-interpolation",
     "color-interpolation-filters", "color-rendering", "cursor", "direction", "display", "dominant-baseline",
     "fill", "fill-opacity", "fill-rule", "filter", "flood-color", "flood-opacity", "font", "font-family",
@@ -77,8 +77,8 @@ _PRESENTATION = {
     "unicode-bidi", "vector-effect", "visibility", "word-spacing", "writing-mode",
 }
 # Not inherited by the children of a group, but still acting on them: combined instead.
-_GROUP_EFFECTS = {"opacity", "display", "clip-path", "mask", "filter", "overflow", "clip"}
-_INITIAL = {
+GROUP_EFFECTS = {"opacity", "display", "clip-path", "mask", "filter", "overflow", "clip"}
+INITIAL = {
     "fill": "#000000", "fill-opacity": (1.0,), "fill-rule": ("nonzero",), "stroke": "none", "stroke-width": (1.0,),
     "stroke-opacity": (1.0,), "stroke-linecap": ("butt",), "stroke-linejoin": ("miter",),
     "stroke-miterlimit": (4.0,), "stroke-dasharray": ("none",), "stroke-dashoffset": (0.0,),
@@ -88,10 +88,10 @@ _INITIAL = {
     "marker-mid": ("none",), "marker-end": ("none",), "vector-effect": ("none",),
 }
 # Lengths in the element's user units: a scaled element draws them scaled.
-_SCALED = {"stroke-width", "stroke-dasharray", "stroke-dashoffset", "font-size", "letter-spacing", "word-spacing"}
+SCALED = {"stroke-width", "stroke-dasharray", "stroke-dashoffset", "font-size", "letter-spacing", "word-spacing"}
 
 
-def _declarations(text: str) -> dict[str, str]:
+def parse_declarations(text: str) -> dict[str, str]:
     """``"a: b; c: d"`` as a dict (later wins; ``!important`` dropped)."""
     out: dict[str, str] = {}
     for decl in re.sub(r"/\*.*?\*/", "", text, flags=re.S).split(";"):
@@ -103,7 +103,7 @@ def _declarations(text: str) -> dict[str, str]:
     return out
 
 
-def _style_value(prop: str, raw: str, current: str) -> Any:
+def style_value(prop: str, raw: str, current: str) -> Any:
     """A property value in one spelling: a colour string or a tuple of words and numbers."""
     if prop in _COLOUR_PROPERTIES:
         return normalise_colour(raw, current)
@@ -118,18 +118,20 @@ def _style_value(prop: str, raw: str, current: str) -> Any:
             continue
         if words:
             words.append(" ")
-        m = re.fullmatch(r"(" + _NUMBER + r")(px|mm|cm|in|pt|pc|em|ex|%)?", part, flags=re.I)
+        m = re.fullmatch(r"(" + NUMBER + r")(px|mm|cm|in|pt|pc|em|ex|%)?", part, flags=re.I)
         if m:
             unit = (m.group(2) or "").lower()
             value = float(m.group(1))
-            words.extend([value * _UNITS[unit]] if unit != "%" else [value, "%"])
+            words.extend([value * UNITS[unit]] if unit != "%" else [value, "%"])
         else:
             words.append(part if part.lower().startswith("url(") else part.lower())
     return tuple(words)
 
 
 @dataclass(frozen=True, slots=True)
-class _CssRule:
+class CssRule:
+    """One selector of a style sheet with its declarations; *specificity* orders the rules as CSS does."""
+
     tag: str | None
     ids: tuple[str, ...]
     classes: tuple[str, ...]
@@ -141,7 +143,7 @@ class _CssRule:
                 and all(c in classes for c in self.classes))
 
 
-def _parse_css(text: str, order_start: int = 0) -> tuple[list[_CssRule], list[tuple[str, tuple]]]:
+def parse_css(text: str, order_start: int = 0) -> tuple[list[CssRule], list[tuple[str, tuple]]]:
     """Rules with simple selectors (``tag``, ``.class``, ``#id``, ``*`` and compounds) and a canonical form.
 
     Selectors with combinators or pseudo-classes are not applied, but they are
@@ -149,13 +151,13 @@ def _parse_css(text: str, order_start: int = 0) -> tuple[list[_CssRule], list[tu
     """
     text = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
     text = re.sub(r"@[^{;]*(;|\{[^{}]*(\{[^{}]*\}[^{}]*)*\})", "", text)  # @import, @media, @font-face
-    rules: list[_CssRule] = []
+    rules: list[CssRule] = []
     canon: list[tuple[str, tuple]] = []
     for n, block in enumerate(re.finditer(r"([^{}]+)\{([^{}]*)\}", text)):
-        decls = _declarations(block.group(2))
+        decls = parse_declarations(block.group(2))
         for sel in block.group(1).split(","):
             sel = " ".join(sel.split())
-            canon.append((sel, tuple(sorted((k, _style_value(k, v, "currentcolor")) for k, v in decls.items()))))
+            canon.append((sel, tuple(sorted((k, style_value(k, v, "currentcolor")) for k, v in decls.items()))))
             m = re.fullmatch(r"(\*|[A-Za-z][\w-]*)?((?:[.#][\w-]+)*)", sel)
             if not m or not sel:
                 continue
@@ -163,7 +165,7 @@ def _parse_css(text: str, order_start: int = 0) -> tuple[list[_CssRule], list[tu
             classes = tuple(re.findall(r"\.([\w-]+)", m.group(2)))
             tag = None if m.group(1) in (None, "*") else m.group(1)
             spec = (len(ids), len(classes), 0 if tag is None else 1, order_start + n)
-            rules.append(_CssRule(tag, ids, classes, spec, tuple(decls.items())))
+            rules.append(CssRule(tag, ids, classes, spec, tuple(decls.items())))
     rules.sort(key=lambda r: r.specificity)
     canon.sort()
     return rules, canon
@@ -180,12 +182,12 @@ class RuleIndex:
     sheet: a rule per element, every element different) the drawing is refused.
     """
 
-    def __init__(self, rules: list[_CssRule], name: str):
+    def __init__(self, rules: list[CssRule], name: str):
         self.name = name
-        self.by_id: dict[str, list[_CssRule]] = {}
-        self.by_class: dict[str, list[_CssRule]] = {}
-        self.by_tag: dict[str, list[_CssRule]] = {}
-        self.anywhere: list[_CssRule] = []
+        self.by_id: dict[str, list[CssRule]] = {}
+        self.by_class: dict[str, list[CssRule]] = {}
+        self.by_tag: dict[str, list[CssRule]] = {}
+        self.anywhere: list[CssRule] = []
         for rule in rules:  # in specificity order; each rule filed under one thing it needs
             if rule.ids:
                 self.by_id.setdefault(rule.ids[0], []).append(rule)

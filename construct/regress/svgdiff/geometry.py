@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 import re
 
-from .values import SvgFormatError, _NUMBER_RE, _numbers
+from .values import NUMBER_RE, SvgFormatError, parse_numbers
 
 # --------------------------------------------------------------------------- transforms
 
@@ -18,24 +18,26 @@ Point = tuple[float, float]
 IDENTITY: Matrix = (1.0, 0.0, 0.0, 1.0, 0.0, 0.0)
 
 
-def _mul(m: Matrix, n: Matrix) -> Matrix:
+def multiply(m: Matrix, n: Matrix) -> Matrix:
     """``m`` after ``n``."""
     a, b, c, d, e, f = m
     A, B, C, D, E, F = n
     return (a * A + c * B, b * A + d * B, a * C + c * D, b * C + d * D, a * E + c * F + e, b * E + d * F + f)
 
 
-def _apply(m: Matrix, p: Point) -> Point:
+def apply_matrix(m: Matrix, p: Point) -> Point:
+    """The point *p* transformed by the SVG matrix *m* ``(a, b, c, d, e, f)``."""
     return (m[0] * p[0] + m[2] * p[1] + m[4], m[1] * p[0] + m[3] * p[1] + m[5])
 
 
-def _det(m: Matrix) -> float:
+def determinant(m: Matrix) -> float:
+    """The determinant of the linear part of *m*: negative where the transform mirrors."""
     return m[0] * m[3] - m[1] * m[2]
 
 
-def _scale(m: Matrix) -> float:
+def scale_factor(m: Matrix) -> float:
     """The factor by which *m* scales lengths on average (sqrt of |det|)."""
-    return math.sqrt(abs(_det(m)))
+    return math.sqrt(abs(determinant(m)))
 
 
 _TRANSFORM_RE = re.compile(r"\s*,?\s*(matrix|translate|scale|rotate|skewX|skewY)\s*\(([^()]*)\)\s*")
@@ -55,8 +57,8 @@ def parse_transform(text: str, where: str = "transform") -> Matrix:
         found = _TRANSFORM_RE.match(text, pos)
         if not found:
             raise SvgFormatError(f"{where}: bad transform {text!r} at position {pos}")
-        name, args = found.group(1), _numbers(found.group(2), where)
-        m = _mul(m, _one_transform(name, args, where))
+        name, args = found.group(1), parse_numbers(found.group(2), where)
+        m = multiply(m, _one_transform(name, args, where))
         pos = found.end()
     return m
 
@@ -75,17 +77,18 @@ def _one_transform(name: str, v: list[float], where: str) -> Matrix:
         t = math.radians(v[0])
         r = (math.cos(t), math.sin(t), -math.sin(t), math.cos(t), 0.0, 0.0)
         if len(v) == 3:
-            return _mul(_mul((1.0, 0.0, 0.0, 1.0, v[1], v[2]), r), (1.0, 0.0, 0.0, 1.0, -v[1], -v[2]))
+            return multiply(multiply((1.0, 0.0, 0.0, 1.0, v[1], v[2]), r), (1.0, 0.0, 0.0, 1.0, -v[1], -v[2]))
         return r
     if name == "skewX":
         return (1.0, 0.0, math.tan(math.radians(v[0])), 1.0, 0.0, 0.0)
     return (1.0, math.tan(math.radians(v[0])), 0.0, 1.0, 0.0, 0.0)
 
 
-def _ellipse_axes(m: Matrix, rx: float, ry: float, phi_deg: float) -> tuple[float, float, float]:
+def ellipse_axes(m: Matrix, rx: float, ry: float, phi_deg: float) -> tuple[float, float, float]:
     """Radii and axis angle (degrees, in [0, 180)) of an ellipse after the linear part of *m*.
 
-    >>> _ellipse_axes((2.0, 0.0, 0.0, -3.0, 5.0, 7.0), 1.5, 1.0, 0.0), _ellipse_axes((0.0, 1.0, -1.0, 0.0, 0, 0), 2.0, 1.0, 0.0)
+    >>> (ellipse_axes((2.0, 0.0, 0.0, -3.0, 5.0, 7.0), 1.5, 1.0, 0.0),
+    ...  ellipse_axes((0.0, 1.0, -1.0, 0.0, 0, 0), 2.0, 1.0, 0.0))
     ((3.0, 3.0, 0.0), (2.0, 1.0, 90.0))
     """
     if m[1] == 0.0 and m[2] == 0.0 and phi_deg == 0.0:
@@ -111,15 +114,15 @@ _COMMANDS = set("MmZzLlHhVvCcSsQqTtAa")
 _ARGS = {"M": 2, "L": 2, "H": 1, "V": 1, "C": 6, "S": 4, "Q": 4, "T": 2, "A": 7, "Z": 0}
 
 
-def _parse_path(d: str, where: str) -> list[tuple]:
+def parse_path(d: str, where: str) -> list[tuple]:
     """Path data in absolute, normalised segments (local coordinates).
 
     H and V become L, S and T become C and Q with their reflected control
     points, a zero-radius arc becomes L; arcs stay arcs.
 
-    >>> _parse_path("m1 1h2v2z", "p")
+    >>> parse_path("m1 1h2v2z", "p")
     [('M', (1.0, 1.0)), ('L', (1.0, 1.0), (3.0, 1.0)), ('L', (3.0, 1.0), (3.0, 3.0)), ('Z', (3.0, 3.0), (1.0, 1.0))]
-    >>> _parse_path("M0 0a1 1 0 1110 0", "p")[1]
+    >>> parse_path("M0 0a1 1 0 1110 0", "p")[1]
     ('A', (0.0, 0.0), (10.0, 0.0), 1.0, 1.0, 0.0, True, True)
     """
     pos, n = 0, len(d)
@@ -138,7 +141,7 @@ def _parse_path(d: str, where: str) -> list[tuple]:
     def number() -> float:
         nonlocal pos
         skip()
-        m = _NUMBER_RE.match(d, pos)
+        m = NUMBER_RE.match(d, pos)
         if not m:
             raise SvgFormatError(f"{where}: bad path data at position {pos}: {d[pos:pos + 20]!r}")
         pos = m.end()
@@ -220,7 +223,7 @@ def _parse_path(d: str, where: str) -> list[tuple]:
     return out
 
 
-def _arc_centre(p0: Point, p1: Point, rx: float, ry: float, phi_deg: float, large: bool, sweep: bool
+def arc_centre(p0: Point, p1: Point, rx: float, ry: float, phi_deg: float, large: bool, sweep: bool
                 ) -> tuple[Point, float, float]:
     """Centre and (possibly enlarged) radii of an endpoint-parametrised arc (SVG 1.1, F.6.5)."""
     t = math.radians(phi_deg)
@@ -238,8 +241,3 @@ def _arc_centre(p0: Point, p1: Point, rx: float, ry: float, phi_deg: float, larg
     cx1, cy1 = k * rx * y1 / ry, -k * ry * x1 / rx
     centre = (c * cx1 - s * cy1 + (p0[0] + p1[0]) / 2, s * cx1 + c * cy1 + (p0[1] + p1[1]) / 2)
     return centre, rx, ry
-
-
-# Shared with :mod:`construct.regress.lint`, which reads the same drawings for their legibility.
-parse_path = _parse_path
-arc_centre = _arc_centre

@@ -32,7 +32,7 @@ from typing import Any, Callable, Hashable, Sequence
 
 from .parse import Drawing, Shape
 
-__all__ = ["MATCH_BUDGET"]
+__all__ = ["MATCH_BUDGET", "bounding_box", "drawing_extent", "match_shapes"]
 
 #: Distance computations the geometry pass makes at most.  All pairs of 2000 x 2000 leftover
 #: elements, as many as the all-pairs search allowed: within it the pass finds exactly what that
@@ -44,7 +44,7 @@ MATCH_BUDGET = 4_000_000
 _DIFFLIB_AREA = 1_000_000
 
 
-def _match(sa: Sequence[Shape], sb: Sequence[Shape], tol: float, extent: float = 0.0
+def match_shapes(sa: Sequence[Shape], sb: Sequence[Shape], tol: float, extent: float = 0.0
            ) -> list[tuple[Shape, Shape, str]]:
     """Pairs (a, b, how): by id, by aligned equal content, by key, by nearest geometry."""
     pairs: list[tuple[Shape, Shape, str]] = []
@@ -229,7 +229,7 @@ def _near_pairs(xs: Sequence[Shape], ys: Sequence[Shape], limit: float, budget: 
     def cell(s: Shape) -> tuple | None:
         if not all(math.isfinite(v) for _, p in s.points for v in p):
             return None
-        x0, y0, _, _ = _bbox(s)
+        x0, y0, _, _ = bounding_box(s)
         if limit <= 0:
             return (x0, y0)
         gx, gy = x0 / limit, y0 / limit
@@ -265,7 +265,7 @@ def _near_pairs(xs: Sequence[Shape], ys: Sequence[Shape], limit: float, budget: 
     return out
 
 
-def _extent(d: Drawing) -> float:
+def drawing_extent(d: Drawing) -> float:
     """The size of a drawing: its viewBox diagonal, or the largest radius or length drawn."""
     doc = dict(d.document)
     vb = doc.get("viewBox")
@@ -284,7 +284,8 @@ def _diagonal(*drawings: Sequence[Shape]) -> float:
     return math.hypot(x_span, max(ys) - min(ys))
 
 
-def _bbox(s: Shape) -> tuple[float, float, float, float]:
+def bounding_box(s: Shape) -> tuple[float, float, float, float]:
+    """(min x, min y, max x, max y) of the defining points of *s*."""
     xs = [p[0] for _, p in s.points] or [0.0]
     ys = [p[1] for _, p in s.points] or [0.0]
     return min(xs), min(ys), max(xs), max(ys)
@@ -298,5 +299,5 @@ def _distance(x: Shape, y: Shape) -> float:
     if [n for n, _ in x.points] == [n for n, _ in y.points] and [n for n, _ in x.sizes] == [n for n, _ in y.sizes]:
         d = max((math.dist(p, q) for (_, p), (_, q) in zip(x.points, y.points)), default=0.0)
         return max([d] + [abs(u - v) for (_, u), (_, v) in zip(x.sizes, y.sizes)])
-    ba, bb = _bbox(x), _bbox(y)
+    ba, bb = bounding_box(x), bounding_box(y)
     return max(abs(u - v) for u, v in zip(ba, bb))

@@ -18,9 +18,12 @@ import defusedxml
 import defusedxml.ElementTree as SafeET
 
 from . import values
-from .values import SvgFormatError, SvgTooLargeError, _LENGTH_RE, _UNITS, _fmt, _numbers, _show, _tokens
-from .geometry import IDENTITY, Matrix, Point, _apply, _arc_centre, _det, _ellipse_axes, _mul, _parse_path, _scale, parse_transform
-from .css import RuleIndex, _CssRule, _GROUP_EFFECTS, _INITIAL, _PRESENTATION, _SCALED, _declarations, _parse_css, _style_value, normalise_colour
+from .values import (LENGTH_RE, UNITS, SvgFormatError, SvgTooLargeError, format_number, parse_numbers, show_value,
+                     tokenise)
+from .geometry import (IDENTITY, Matrix, Point, apply_matrix, arc_centre, determinant, ellipse_axes, multiply,
+                       parse_path, parse_transform, scale_factor)
+from .css import (GROUP_EFFECTS, INITIAL, PRESENTATION, SCALED, CssRule, RuleIndex, normalise_colour, parse_css,
+                  parse_declarations, style_value)
 
 SVG_NS = "http://www.w3.org/2000/svg"
 XLINK_NS = "http://www.w3.org/1999/xlink"
@@ -121,9 +124,9 @@ def _canon(elem: ET.Element) -> tuple:
     ('marker', (('id', ('m',)),), (), ((1, 'g', (), ()), (2, 'circle', (('r', (2.0,)),), ())))
     """
     def row(e: ET.Element) -> tuple:
-        attrs = tuple(sorted((k, _tokens(v)) for k, v in _attrs(e).items()))
+        attrs = tuple(sorted((k, tokenise(v)) for k, v in _attrs(e).items()))
         text = " ".join((e.text or "").split())
-        return _local(e.tag)[1], attrs, _tokens(text) if text else ()
+        return _local(e.tag)[1], attrs, tokenise(text) if text else ()
 
     rows: list[tuple] = []
     stack = [(iter(elem), 1)]
@@ -198,11 +201,11 @@ class _Parser:
             i = _attrs(e).get("id") if _is_svg(e) else None
             if i is not None and i not in self.ids:
                 self.ids[i] = e
-        self.rules: list[_CssRule] = []
+        self.rules: list[CssRule] = []
         self.stylesheet: list[tuple[str, tuple]] = []
         for e in root.iter():
             if _is_svg(e) and _local(e.tag)[1] == "style":
-                rules, canon = _parse_css("".join(e.itertext()), len(self.rules))
+                rules, canon = parse_css("".join(e.itertext()), len(self.rules))
                 self.rules.extend(rules)
                 self.stylesheet.extend(canon)
         self.rules.sort(key=lambda r: r.specificity)
@@ -229,12 +232,12 @@ class _Parser:
         attrs = _attrs(self.root)
         doc: list[tuple[str, Any]] = []
         vb = attrs.get("viewBox")
-        viewbox = tuple(_numbers(vb, f"{self.name}: viewBox")) if vb else None
+        viewbox = tuple(parse_numbers(vb, f"{self.name}: viewBox")) if vb else None
         if viewbox is not None and len(viewbox) != 4:
             raise SvgFormatError(f"{self.name}: viewBox needs 4 numbers, got {vb!r}")
         for prop in ("width", "height"):
             if prop in attrs:
-                doc.append((prop, _style_value(prop, attrs[prop], "")))
+                doc.append((prop, style_value(prop, attrs[prop], "")))
         if viewbox is not None:
             doc.append(("viewBox", viewbox))
         if "preserveAspectRatio" in attrs:
@@ -336,34 +339,34 @@ class _Parser:
     def _length(self, raw: str | None, ref: float, where: str) -> float:
         if raw is None:
             return ref
-        m = _LENGTH_RE.fullmatch(raw)
+        m = LENGTH_RE.fullmatch(raw)
         if not m:
             raise SvgFormatError(f"{self.name}: {where}: not a length: {raw!r}")
         value, unit = float(m.group(1)), (m.group(2) or "").lower()
-        return value / 100 * ref if unit == "%" else value * _UNITS[unit]
+        return value / 100 * ref if unit == "%" else value * UNITS[unit]
 
     # -- styles -----------------------------------------------------------------------------
 
     def _own_style(self, elem: ET.Element, tag: str) -> dict[str, str]:
         attrs = self._attrs(elem)
-        own = {k: v for k, v in attrs.items() if k in _PRESENTATION}
+        own = {k: v for k, v in attrs.items() if k in PRESENTATION}
         if self.rules:
             own.update(self.sheet.declarations(tag, attrs.get("id"), attrs.get("class", "")))
         if "style" in attrs:
-            own.update(_declarations(attrs["style"]))
+            own.update(parse_declarations(attrs["style"]))
         return own
 
     def _own_state(self, elem: ET.Element, parent: _State, tag: str, extra: Matrix = IDENTITY) -> _State:
         attrs = self._attrs(elem)
         ctm = parent.ctm
         if "transform" in attrs:
-            ctm = _mul(ctm, parse_transform(attrs["transform"], f"{self.name}: <{tag}> transform"))
-        ctm = _mul(ctm, extra)
+            ctm = multiply(ctm, parse_transform(attrs["transform"], f"{self.name}: <{tag}> transform"))
+        ctm = multiply(ctm, extra)
         style = dict(parent.style)
         for prop, value in self._own_style(elem, tag).items():
             if value.strip().lower() == "inherit":
                 continue
-            if prop in _GROUP_EFFECTS and prop in style:
+            if prop in GROUP_EFFECTS and prop in style:
                 style[prop] = self._combine(prop, style[prop], value)
             else:
                 style[prop] = value
@@ -380,7 +383,7 @@ class _Parser:
     def _combine(prop: str, outer: str, inner: str) -> str:
         if prop == "opacity":
             try:
-                return _fmt(float(outer) * float(inner))
+                return format_number(float(outer) * float(inner))
             except ValueError:
                 return f"{outer} {inner}"
         if prop == "display":
@@ -394,7 +397,7 @@ class _Parser:
     def _effective_style(self, state: _State) -> tuple[tuple[str, Any], ...]:
         # Most elements of a drawing look alike: each look is worked out once and shared by them
         # (the time and the memory of a drawing of a million elements).
-        key = (tuple(sorted(state.style.items())), _scale(state.ctm))
+        key = (tuple(sorted(state.style.items())), scale_factor(state.ctm))
         got = self._styles.get(key)
         if got is None:
             got = self._styles[key] = self._work_out_style(state)
@@ -403,14 +406,14 @@ class _Parser:
     def _work_out_style(self, state: _State) -> tuple[tuple[str, Any], ...]:
         raw = state.style
         colour = normalise_colour(raw["color"]) if "color" in raw else "#000000"
-        scale = _scale(state.ctm)
+        scale = scale_factor(state.ctm)
         non_scaling = raw.get("vector-effect", "").strip() == "non-scaling-stroke"
         out: list[tuple[str, Any]] = []
         for prop in sorted(raw):
-            value = _style_value(prop, raw[prop], colour)
-            if prop in _SCALED and scale != 1.0 and not (non_scaling and prop.startswith("stroke")):
+            value = style_value(prop, raw[prop], colour)
+            if prop in SCALED and scale != 1.0 and not (non_scaling and prop.startswith("stroke")):
                 value = tuple(v * scale if isinstance(v, float) else v for v in value)
-            if _INITIAL.get(prop) == value:
+            if INITIAL.get(prop) == value:
                 continue
             out.append((prop, value))
         return tuple(out)
@@ -495,7 +498,7 @@ class _Parser:
         y = self._length(attrs.get("y"), parent.viewport[1], "y") if "y" in attrs else 0.0
         m: Matrix = (1.0, 0.0, 0.0, 1.0, x, y)
         if "viewBox" in attrs:
-            vb = _numbers(attrs["viewBox"], f"{self.name}: viewBox")
+            vb = parse_numbers(attrs["viewBox"], f"{self.name}: viewBox")
             if len(vb) == 4 and vb[2] > 0 and vb[3] > 0:
                 w = self._length(attrs.get("width"), parent.viewport[0], "width") if "width" in attrs else parent.viewport[0]
                 h = self._length(attrs.get("height"), parent.viewport[1], "height") if "height" in attrs else parent.viewport[1]
@@ -509,7 +512,7 @@ class _Parser:
                     sx = sy = s
                 else:
                     tx = ty = 0.0
-                m = _mul(m, (sx, 0.0, 0.0, sy, tx - sx * vb[0], ty - sy * vb[1]))
+                m = multiply(m, (sx, 0.0, 0.0, sy, tx - sx * vb[0], ty - sy * vb[1]))
         return m
 
     def _use(self, elem: ET.Element, attrs: dict[str, str], state: _State, prefix: str,
@@ -523,7 +526,7 @@ class _Parser:
             return None
         x = self._length(attrs.get("x"), state.viewport[0], "x") if "x" in attrs else 0.0
         y = self._length(attrs.get("y"), state.viewport[1], "y") if "y" in attrs else 0.0
-        inner = _State(_mul(state.ctm, (1.0, 0.0, 0.0, 1.0, x, y)), state.style, state.viewport, state.step)
+        inner = _State(multiply(state.ctm, (1.0, 0.0, 0.0, 1.0, x, y)), state.style, state.viewport, state.step)
         ttag = _local(target.tag)[1]
         if ttag in ("symbol", "svg"):
             sym_attrs = dict(_attrs(target))
@@ -552,10 +555,10 @@ class _Parser:
                 continue
             name = _local(child.tag)[1]
             if name in _ANIMATIONS:
-                animations.append((name, tuple(sorted((k, _tokens(v)) for k, v in _attrs(child).items()))))
+                animations.append((name, tuple(sorted((k, tokenise(v)) for k, v in _attrs(child).items()))))
             elif name in ("title", "desc"):
                 described.append((name, _plain_text(child)))
-        return tuple(sorted(animations, key=_show)), tuple(described)
+        return tuple(sorted(animations, key=show_value)), tuple(described)
 
     def _group_record(self, elem: ET.Element, key: str, has_id: bool, tag: str, state: _State) -> None:
         """A group is recorded only for what it carries itself: animations, title, desc."""
@@ -569,7 +572,7 @@ class _Parser:
         animations, described = self._decorations(elem)
         if extra_source is not None:
             more_a, more_d = self._decorations(extra_source)
-            animations, described = tuple(sorted(animations + more_a, key=_show)), described + more_d
+            animations, described = tuple(sorted(animations + more_a, key=show_value)), described + more_d
         style = self._effective_style(state)
         classes = " ".join(sorted(set(self._attrs(elem).get("class", "").split())))
         if classes:  # our renderer writes the instrument and provenance as classes
@@ -598,7 +601,7 @@ class _Parser:
     def _shape_line(self, elem, attrs, state, where):
         p1 = (self._coord(attrs, "x1", state, where), self._coord(attrs, "y1", state, where, 1))
         p2 = (self._coord(attrs, "x2", state, where), self._coord(attrs, "y2", state, where, 1))
-        a, b = _apply(state.ctm, p1), _apply(state.ctm, p2)
+        a, b = apply_matrix(state.ctm, p1), apply_matrix(state.ctm, p2)
         return {"kind": "segment", "points": (("start", a), ("end", b)),
                 "sizes": (("length", math.dist(a, b)),)}
 
@@ -616,8 +619,8 @@ class _Parser:
         return self._ellipse(c, rx, ry, state, circle=False)
 
     def _ellipse(self, c: Point, rx: float, ry: float, state: _State, circle: bool) -> dict[str, Any]:
-        centre = _apply(state.ctm, c)
-        ax, ay, angle = _ellipse_axes(state.ctm, rx, ry, 0.0)
+        centre = apply_matrix(state.ctm, c)
+        ax, ay, angle = ellipse_axes(state.ctm, rx, ry, 0.0)
         if circle and abs(ax - ay) <= 1e-9 * max(ax, 1.0):
             return {"kind": "circle", "points": (("centre", centre),), "sizes": (("radius", (ax + ay) / 2),)}
         if abs(ax - ay) <= 1e-9 * max(ax, 1.0):
@@ -632,17 +635,17 @@ class _Parser:
         ry = self._coord(attrs, "ry", state, where, 1, default=math.nan)
         rx, ry = (ry if math.isnan(rx) else rx), (rx if math.isnan(ry) else ry)
         rx, ry = min(0.0 if math.isnan(rx) else rx, w / 2), min(0.0 if math.isnan(ry) else ry, h / 2)
-        corners = [_apply(state.ctm, p) for p in ((x, y), (x + w, y), (x + w, y + h), (x, y + h))]
-        s = _scale(state.ctm)
+        corners = [apply_matrix(state.ctm, p) for p in ((x, y), (x + w, y), (x + w, y + h), (x, y + h))]
+        s = scale_factor(state.ctm)
         return {"kind": "rect", "points": tuple((f"corner {i + 1}", p) for i, p in enumerate(corners)),
                 "sizes": (("width", math.dist(corners[0], corners[1])), ("height", math.dist(corners[1], corners[2])),
                           ("corner rx", rx * s), ("corner ry", ry * s))}
 
     def _poly(self, attrs, state, where, kind):
-        values = _numbers(attrs.get("points", ""), f"{where} points")
+        values = parse_numbers(attrs.get("points", ""), f"{where} points")
         if len(values) % 2:
             values = values[:-1]  # the spec draws up to the odd number
-        pts = [_apply(state.ctm, (values[i], values[i + 1])) for i in range(0, len(values), 2)]
+        pts = [apply_matrix(state.ctm, (values[i], values[i + 1])) for i in range(0, len(values), 2)]
         return {"kind": kind, "points": tuple((f"point {i + 1}", p) for i, p in enumerate(pts)),
                 "structure": (("points", len(pts)),)}
 
@@ -653,9 +656,9 @@ class _Parser:
         return self._poly(attrs, state, where, "polygon")
 
     def _shape_path(self, elem, attrs, state, where):
-        segments = _parse_path(attrs.get("d", ""), where)
+        segments = parse_path(attrs.get("d", ""), where)
         m = state.ctm
-        flip = _det(m) < 0
+        flip = determinant(m) < 0
         points: list[tuple[str, Point]] = []
         sizes: list[tuple[str, float]] = []
         angles: list[tuple[str, float]] = []
@@ -664,27 +667,28 @@ class _Parser:
             op = seg[0]
             label = f"segment {i} ({op})"
             if op == "M":
-                points.append((f"{label} point", _apply(m, seg[1])))
+                points.append((f"{label} point", apply_matrix(m, seg[1])))
                 commands.append("M")
             elif op == "L":
-                points.append((f"{label} end", _apply(m, seg[2])))
+                points.append((f"{label} end", apply_matrix(m, seg[2])))
                 commands.append("L")
             elif op == "C":
-                points += [(f"{label} control 1", _apply(m, seg[2])), (f"{label} control 2", _apply(m, seg[3])),
-                           (f"{label} end", _apply(m, seg[4]))]
+                points += [(f"{label} control 1", apply_matrix(m, seg[2])),
+                           (f"{label} control 2", apply_matrix(m, seg[3])),
+                           (f"{label} end", apply_matrix(m, seg[4]))]
                 commands.append("C")
             elif op == "Q":
-                points += [(f"{label} control", _apply(m, seg[2])), (f"{label} end", _apply(m, seg[3]))]
+                points += [(f"{label} control", apply_matrix(m, seg[2])), (f"{label} end", apply_matrix(m, seg[3]))]
                 commands.append("Q")
             elif op == "Z":
                 commands.append("Z")
             else:
                 _, p0, p1, rx, ry, phi, large, sweep = seg
-                centre, rx, ry = _arc_centre(p0, p1, rx, ry, phi, large, sweep)
-                ax, ay, angle = _ellipse_axes(m, rx, ry, phi)
+                centre, rx, ry = arc_centre(p0, p1, rx, ry, phi, large, sweep)
+                ax, ay, angle = ellipse_axes(m, rx, ry, phi)
                 if abs(ax - ay) <= 1e-9 * max(ax, 1.0):
                     angle = 0.0
-                points += [(f"{label} centre", _apply(m, centre)), (f"{label} end", _apply(m, p1))]
+                points += [(f"{label} centre", apply_matrix(m, centre)), (f"{label} end", apply_matrix(m, p1))]
                 sizes += [(f"{label} rx", ax), (f"{label} ry", ay)]
                 angles.append((f"{label} axis", angle))
                 commands.append(f"A{int(large)}{int(sweep != flip)}")
@@ -699,7 +703,7 @@ class _Parser:
             return self._length(re.split(r"[\s,]+", raw)[0], state.viewport[axis], f"{where} {name}")
 
         anchor = (first("x", 0) + first("dx", 0), first("y", 1) + first("dy", 1))
-        points = [("anchor", _apply(state.ctm, anchor))]
+        points = [("anchor", apply_matrix(state.ctm, anchor))]
         n = 0
         for child in elem.iter():
             if child is not elem and _is_svg(child) and _local(child.tag)[1] == "tspan":
@@ -708,7 +712,7 @@ class _Parser:
                 if "x" in ca or "y" in ca:
                     cx = self._length(re.split(r"[\s,]+", ca["x"].strip())[0], state.viewport[0], where) if "x" in ca else anchor[0]
                     cy = self._length(re.split(r"[\s,]+", ca["y"].strip())[0], state.viewport[1], where) if "y" in ca else anchor[1]
-                    points.append((f"tspan {n} anchor", _apply(state.ctm, (cx, cy))))
+                    points.append((f"tspan {n} anchor", apply_matrix(state.ctm, (cx, cy))))
         angle = math.degrees(math.atan2(state.ctm[1], state.ctm[0]))
         text = " ".join(_text_content(elem).replace("\n", " ").replace("\t", " ").split())
         return {"kind": "text", "points": tuple(points), "angles": (("baseline", angle),), "text": text}
@@ -813,7 +817,8 @@ def _read_tree(data: bytes | str, label: str) -> ET.Element:
     return events.root
 
 
-def _label(source: str | Path | bytes) -> str:
+def source_label(source: str | Path | bytes) -> str:
+    """How a report names a source: its path, else ``<string>`` or ``<bytes>``."""
     if isinstance(source, bytes):
         return "<bytes>"
     if isinstance(source, str) and source.lstrip().startswith(("<", "\ufeff<")):

@@ -1,21 +1,21 @@
 """The differences of two drawings: each matched pair compared, the unmatched ones named.
 
-Part of :mod:`construct.regress.svgdiff`.
+Part of :mod:`construct.regress.svgdiff`; the result is a :class:`~construct.regress.change.Diff`.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Iterator
+from typing import Iterator
 
 from ...kernel.errors import InvalidParameter
-from .values import DEFAULT_TOLERANCE, _close, _fmt, _mag, _num_diff, _show
+from ..change import Change, Diff
+from .values import DEFAULT_TOLERANCE, format_magnitude, format_number, numeric_difference, show_value, values_close
 from .geometry import Point
-from .css import _INITIAL
-from .parse import Drawing, Shape, _label, parse_svg
-from .match import _bbox, _extent, _match
+from .css import INITIAL
+from .parse import Drawing, Shape, parse_svg, source_label
+from .match import bounding_box, drawing_extent, match_shapes
 
 # --------------------------------------------------------------------------- the diff
 
@@ -23,77 +23,19 @@ CHANGE_KINDS = ("document", "definition", "missing", "extra", "renamed", "restep
                 "resized", "rotated", "text", "restyled", "animated", "described")
 
 
-@dataclass(frozen=True, slots=True)
-class SvgChange:
-    """One difference: its kind, the element key, a readable description and its size (drawing units)."""
-
-    kind: str
-    key: str
-    description: str
-    magnitude: float | None = None
-    shape: str = ""
-    matched_by: str = ""
-    key_b: str | None = None
-    #: The step of the element (its ``data-step`` group in a layered figure), None outside step groups.
-    step: int | None = None
-
-    def line(self) -> str:
-        how = []
-        if self.shape:
-            how.append(self.shape)
-        if self.matched_by:
-            how.append(f"matched by {self.matched_by}")
-        name = self.key if self.key_b in (None, self.key) else f"{self.key} -> {self.key_b}"
-        where = f"{name} ({', '.join(how)})" if how else name
-        return f"  {self.kind:<10} {where}: {self.description}"
-
-
-@dataclass(frozen=True, slots=True)
-class SvgDiff:
-    """The differences between two drawings, in a fixed order (document first, then A's order)."""
-
-    a: str
-    b: str
-    tolerance: float
-    changes: tuple[SvgChange, ...]
-    elements: tuple[int, int]
-
-    @property
-    def equal(self) -> bool:
-        """Do the drawings agree within the tolerance?"""
-        return not self.changes
-
-    def report(self) -> str:
-        """Readable text, one line per change."""
-        head = f"SVG diff {self.a} -> {self.b} (tolerance {_mag(self.tolerance)}): "
-        if self.equal:
-            n = self.elements[0]
-            return head + f"equal ({n} element{'s' if n != 1 else ''})"
-        n = len(self.changes)
-        return "\n".join([head + f"{n} change{'s' if n != 1 else ''}"] + [c.line() for c in self.changes])
-
-    def as_dict(self) -> dict[str, Any]:
-        """Plain data for JSON."""
-        return {"kind": "svg", "a": self.a, "b": self.b, "tolerance": self.tolerance, "equal": self.equal,
-                "elements": {"a": self.elements[0], "b": self.elements[1]},
-                "changes": [{"kind": c.kind, "key": c.key, "key_b": c.key_b, "shape": c.shape,
-                             "matched_by": c.matched_by, "description": c.description, "magnitude": c.magnitude}
-                            for c in self.changes]}
-
-
-def diff_svg(a: str | Path | bytes, b: str | Path | bytes, tolerance: float = DEFAULT_TOLERANCE) -> SvgDiff:
+def diff_svg(a: str | Path | bytes, b: str | Path | bytes, tolerance: float = DEFAULT_TOLERANCE) -> Diff:
     """Compare two SVG drawings; differences at or below *tolerance* (drawing units) are equal."""
     if not (isinstance(tolerance, (int, float)) and math.isfinite(tolerance) and tolerance >= 0):
         raise InvalidParameter(f"diff_svg: tolerance must be a finite number >= 0, got {tolerance!r}")
     tol = float(tolerance)
     da, db = parse_svg(a), parse_svg(b)
-    return _diff_drawings(da, db, tol, _label(a), _label(b))
+    return diff_drawings(da, db, tol, source_label(a), source_label(b))
 
 
-def _diff_drawings(da: Drawing, db: Drawing, tol: float, name_a: str, name_b: str) -> SvgDiff:
+def diff_drawings(da: Drawing, db: Drawing, tol: float, name_a: str, name_b: str) -> Diff:
     """The diff of two parsed drawings (what :func:`diff_svg` does after reading them)."""
     changes = _document_changes(da, db, tol) + _definition_changes(da, db, tol)
-    pairs = _match(da.shapes, db.shapes, tol, max(_extent(da), _extent(db)))
+    pairs = match_shapes(da.shapes, db.shapes, tol, max(drawing_extent(da), drawing_extent(db)))
     by_a = {id(sa): (sb, how) for sa, sb, how in pairs}
     matched_b = {id(sb) for _, sb, _ in pairs}
     for sa in da.shapes:
@@ -101,13 +43,13 @@ def _diff_drawings(da: Drawing, db: Drawing, tol: float, name_a: str, name_b: st
             sb, how = by_a[id(sa)]
             changes += _compare(sa, sb, tol, how)
         else:
-            changes.append(SvgChange("missing", sa.key, f"{sa.kind} only in A{_where(sa)}", None, sa.kind,
-                                     step=sa.step))
+            changes.append(Change("missing", sa.key, f"{sa.kind} only in A{_where(sa)}", None, sa.kind,
+                                  step=sa.step))
     for sb in db.shapes:
         if id(sb) not in matched_b:
-            changes.append(SvgChange("extra", sb.key, f"{sb.kind} only in B{_where(sb)}", None, sb.kind,
-                                     step=sb.step))
-    return SvgDiff(name_a, name_b, tol, tuple(changes), (len(da.shapes), len(db.shapes)))
+            changes.append(Change("extra", sb.key, f"{sb.kind} only in B{_where(sb)}", None, sb.kind,
+                                  step=sb.step))
+    return Diff("svg", name_a, name_b, tol, tuple(changes), "elements", (len(da.shapes), len(db.shapes)))
 
 
 def _where(s: Shape) -> str:
@@ -117,49 +59,50 @@ def _where(s: Shape) -> str:
 
 
 def raw_point(p: Point) -> str:
-    return f"({_fmt(p[0])}, {_fmt(p[1])})"
+    return f"({format_number(p[0])}, {format_number(p[1])})"
 
 
-def _document_changes(da: Drawing, db: Drawing, tol: float) -> list[SvgChange]:
+def _document_changes(da: Drawing, db: Drawing, tol: float) -> list[Change]:
     out = []
     a, b = dict(da.document), dict(db.document)
     for prop in sorted(set(a) | set(b)):
         va, vb = a.get(prop), b.get(prop)
         if prop == "stylesheet":
-            if va != vb and not _close(va, vb, tol):
-                out.append(SvgChange("document", prop, "style sheet rules changed"))
+            if va != vb and not values_close(va, vb, tol):
+                out.append(Change("document", prop, "style sheet rules changed"))
             continue
-        if va is None or vb is None or not _close(va, vb, tol):
-            out.append(SvgChange("document", prop, f"{_show(va) if va is not None else '(none)'} -> "
-                                                   f"{_show(vb) if vb is not None else '(none)'}",
-                                 _num_diff(va, vb)))
+        if va is None or vb is None or not values_close(va, vb, tol):
+            out.append(Change("document", prop, f"{show_value(va) if va is not None else '(none)'} -> "
+                                                f"{show_value(vb) if vb is not None else '(none)'}",
+                              numeric_difference(va, vb)))
     return out
 
 
-def _definition_changes(da: Drawing, db: Drawing, tol: float) -> list[SvgChange]:
+def _definition_changes(da: Drawing, db: Drawing, tol: float) -> list[Change]:
     out = []
     a, b = dict(da.definitions), dict(db.definitions)
     for key in sorted(set(a) | set(b)):
         if key not in b:
-            out.append(SvgChange("definition", key, f"<{a[key][0]}> only in A"))
+            out.append(Change("definition", key, f"<{a[key][0]}> only in A"))
         elif key not in a:
-            out.append(SvgChange("definition", key, f"<{b[key][0]}> only in B"))
-        elif not _close(a[key], b[key], tol):
-            out.append(SvgChange("definition", key, f"<{a[key][0]}> changed"
-                                 + ("" if a[key][0] == b[key][0] else f" to <{b[key][0]}>"), _num_diff(a[key], b[key])))
+            out.append(Change("definition", key, f"<{b[key][0]}> only in B"))
+        elif not values_close(a[key], b[key], tol):
+            out.append(Change("definition", key, f"<{a[key][0]}> changed"
+                              + ("" if a[key][0] == b[key][0] else f" to <{b[key][0]}>"),
+                              numeric_difference(a[key], b[key])))
     return out
 
 
 
 # -- comparing one pair ----------------------------------------------------------------------------
 
-def _compare(x: Shape, y: Shape, tol: float, how: str) -> list[SvgChange]:
-    out: list[SvgChange] = []
+def _compare(x: Shape, y: Shape, tol: float, how: str) -> list[Change]:
+    out: list[Change] = []
     key_b = y.key if y.key != x.key else None
 
     def add(kind: str, description: str, magnitude: float | None = None) -> None:
-        out.append(SvgChange(kind, x.key, description, magnitude, x.kind, how, key_b,
-                             x.step if x.step is not None else y.step))
+        out.append(Change(kind, x.key, description, magnitude, x.kind, how, key_b,
+                          x.step if x.step is not None else y.step))
 
     if key_b is not None and (x.has_id or y.has_id):
         add("renamed", f"id {x.key!r} -> {y.key!r}")
@@ -173,9 +116,9 @@ def _compare(x: Shape, y: Shape, tol: float, how: str) -> list[SvgChange]:
             what = f"{x.kind} -> {y.kind}"
         else:
             sa, sb = dict(x.structure), dict(y.structure)
-            what = "; ".join(f"{k}: {_show(sa.get(k, '-'))} -> {_show(sb.get(k, '-'))}"
+            what = "; ".join(f"{k}: {show_value(sa.get(k, '-'))} -> {show_value(sb.get(k, '-'))}"
                              for k in sorted(set(sa) | set(sb)) if sa.get(k) != sb.get(k)) or "defining points differ"
-        ba, bb = _bbox(x), _bbox(y)
+        ba, bb = bounding_box(x), bounding_box(y)
         add("reshaped", f"{what}; bounding box {raw_point(ba[:2])}..{raw_point(ba[2:])} -> {raw_point(bb[:2])}..{raw_point(bb[2:])}",
             max(abs(u - v) for u, v in zip(ba, bb)) if x.points and y.points else None)
     else:
@@ -186,30 +129,31 @@ def _compare(x: Shape, y: Shape, tol: float, how: str) -> list[SvgChange]:
         if resized:
             d, name, u, v = max(resized, key=lambda m: m[0])
             more = f" ({len(resized)} sizes changed)" if len(resized) > 1 else ""
-            add("resized", f"{name} {_fmt(u)} -> {_fmt(v)} (by {_mag(d)}){more}", d)
+            add("resized", f"{name} {format_number(u)} -> {format_number(v)} (by {format_magnitude(d)}){more}", d)
     ang_a, ang_b = dict(x.angles), dict(y.angles)
     for name in [n for n, _ in x.angles if n in ang_b]:
         delta = (ang_b[name] - ang_a[name] + 180.0) % 360.0 - 180.0
         if abs(delta) > tol:
-            add("rotated", f"{name} {_fmt(ang_a[name])} -> {_fmt(ang_b[name])} degrees (by {_mag(abs(delta))})",
+            add("rotated", f"{name} {format_number(ang_a[name])} -> {format_number(ang_b[name])} degrees "
+                           f"(by {format_magnitude(abs(delta))})",
                 abs(delta))
     if x.text != y.text:
         add("text", f"{x.text!r} -> {y.text!r}")
     style_a, style_b = dict(x.style), dict(y.style)
     diffs, mags = [], []
     for prop in sorted(set(style_a) | set(style_b)):
-        va, vb = style_a.get(prop, _INITIAL.get(prop)), style_b.get(prop, _INITIAL.get(prop))
-        if va is None or vb is None or not _close(va, vb, tol):
-            diffs.append(f"{prop} {_show(va) if va is not None else '(unset)'} -> "
-                         f"{_show(vb) if vb is not None else '(unset)'}")
-            nd = _num_diff(va, vb)
+        va, vb = style_a.get(prop, INITIAL.get(prop)), style_b.get(prop, INITIAL.get(prop))
+        if va is None or vb is None or not values_close(va, vb, tol):
+            diffs.append(f"{prop} {show_value(va) if va is not None else '(unset)'} -> "
+                         f"{show_value(vb) if vb is not None else '(unset)'}")
+            nd = numeric_difference(va, vb)
             if nd is not None:
                 mags.append(nd)
     if diffs:
         add("restyled", "; ".join(diffs), max(mags) if mags else None)
-    if not _close(x.animations, y.animations, tol):
-        gone = [a for a in x.animations if not any(_close(a, b, tol) for b in y.animations)]
-        new = [b for b in y.animations if not any(_close(a, b, tol) for a in x.animations)]
+    if not values_close(x.animations, y.animations, tol):
+        gone = [a for a in x.animations if not any(values_close(a, b, tol) for b in y.animations)]
+        new = [b for b in y.animations if not any(values_close(a, b, tol) for a in x.animations)]
         parts = [f"-<{a[0]} {_anim(a)}>" for a in gone] + [f"+<{b[0]} {_anim(b)}>" for b in new]
         add("animated", "; ".join(parts) or "animation order changed")
     if x.described != y.described:
@@ -228,7 +172,7 @@ def _movement(moved: list[tuple[float, str, Point, Point]], tol: float) -> str:
     d = max(m[0] for m in moved)
     near_max = [m for m in moved if m[0] >= d - tol]
     _, name, p, q = next((m for m in near_max if m[1].endswith("centre")), near_max[0])
-    text = f"by {_mag(d)}: {name} {raw_point(p)} -> {raw_point(q)}"
+    text = f"by {format_magnitude(d)}: {name} {raw_point(p)} -> {raw_point(q)}"
     if len(moved) > 1:
         shifts = [(m[3][0] - m[2][0], m[3][1] - m[2][1]) for m in moved]
         if all(math.dist(s, shifts[0]) <= tol for s in shifts):
@@ -239,28 +183,27 @@ def _movement(moved: list[tuple[float, str, Point, Point]], tol: float) -> str:
 
 
 def _anim(a: tuple) -> str:
-    return " ".join(f'{k}="{_show(v)}"' for k, v in a[1])
+    return " ".join(f'{k}="{show_value(v)}"' for k, v in a[1])
 
 
-def changes_by_step(diff: SvgDiff) -> dict[int | None, list[SvgChange]]:
+def changes_by_step(diff: Diff) -> dict[int | None, list[Change]]:
     """The changes of a layered figure gathered by the step that made each element (None: outside steps).
+
+    The same as :meth:`Diff.by_step <construct.regress.change.Diff.by_step>`.
 
     >>> a = ('<svg xmlns="http://www.w3.org/2000/svg"><g class="step" data-step="3">'
     ...      '<circle id="s0003-P" cx="1" cy="2" r="1"/></g></svg>')
     >>> {k: [c.key for c in v] for k, v in changes_by_step(diff_svg(a, a.replace('cx="1"', 'cx="2"'))).items()}
     {3: ['s0003-P']}
     """
-    out: dict[int | None, list[SvgChange]] = {}
-    for c in diff.changes:
-        out.setdefault(c.step, []).append(c)
-    return dict(sorted(out.items(), key=lambda kv: (kv[0] is not None, kv[0] or 0)))
+    return diff.by_step()
 
 
-def iter_changes(diff: SvgDiff, kind: str) -> Iterator[SvgChange]:
-    """The changes of one kind, in report order.
+def iter_changes(diff: Diff, kind: str) -> Iterator[Change]:
+    """The changes of one kind, in report order (:meth:`Diff.of_kind <construct.regress.change.Diff.of_kind>`).
 
     >>> d = diff_svg('<svg xmlns="http://www.w3.org/2000/svg"/>', '<svg xmlns="http://www.w3.org/2000/svg"><line x2="1"/></svg>')
     >>> [c.key for c in iter_changes(d, "extra")]
     ['line[0]']
     """
-    return (c for c in diff.changes if c.kind == kind)
+    return diff.of_kind(kind)

@@ -63,45 +63,50 @@ del _cls
 
 # --------------------------------------------------------------------------- numbers
 
-_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
-_NUMBER_RE = re.compile(_NUMBER)
+NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+NUMBER_RE = re.compile(NUMBER)
 # A number inside free text (animation values, CSS): not glued to a word or a '#'.
-_FREE_NUMBER_RE = re.compile(r"(?<![\w#.])" + _NUMBER)
-_UNITS = {"": 1.0, "px": 1.0, "mm": 96 / 25.4, "cm": 96 / 2.54, "in": 96.0, "pt": 96 / 72, "pc": 16.0,
-          "em": 16.0, "ex": 8.0}  # em/ex: the initial font size, 16 px; good enough for a diff
-_LENGTH_RE = re.compile(r"\s*(" + _NUMBER + r")\s*(px|mm|cm|in|pt|pc|em|ex|%)?\s*", re.I)
+_FREE_NUMBER_RE = re.compile(r"(?<![\w#.])" + NUMBER)
+UNITS = {"": 1.0, "px": 1.0, "mm": 96 / 25.4, "cm": 96 / 2.54, "in": 96.0, "pt": 96 / 72, "pc": 16.0,
+         "em": 16.0, "ex": 8.0}  # em/ex: the initial font size, 16 px; good enough for a diff
+LENGTH_RE = re.compile(r"\s*(" + NUMBER + r")\s*(px|mm|cm|in|pt|pc|em|ex|%)?\s*", re.I)
 
 
-def _fmt(x: float) -> str:
+def format_number(x: float) -> str:
     """Fixed formatting for reports: up to 10 significant digits, no ``-0``.
 
-    >>> _fmt(0.010000000000000009), _fmt(-0.0), _fmt(123.0)
+    >>> format_number(0.010000000000000009), format_number(-0.0), format_number(123.0)
     ('0.01', '0', '123')
     """
     s = format(x, ".10g")
     return "0" if s in ("-0", "0") else s
 
 
-def _mag(x: float) -> str:
+def format_magnitude(x: float) -> str:
+    """A size of a change as a report prints it: three significant digits.
+
+    >>> format_magnitude(0.0099999), format_magnitude(1234.5)
+    ('0.01', '1.23e+03')
+    """
     return format(x, ".3g")
 
 
-def _numbers(text: str, where: str) -> list[float]:
+def parse_numbers(text: str, where: str) -> list[float]:
     """The numbers of a list like ``"1,2 3e1 -4"``; anything else is bad input."""
-    if re.sub(r"[\s,]", "", _NUMBER_RE.sub(" ", text)):
+    if re.sub(r"[\s,]", "", NUMBER_RE.sub(" ", text)):
         raise SvgFormatError(f"{where}: not a list of numbers: {text!r}")
-    return [float(t) for t in _NUMBER_RE.findall(text)]
+    return [float(t) for t in NUMBER_RE.findall(text)]
 
 
-def _tokens(text: str) -> tuple[Any, ...]:
+def tokenise(text: str) -> tuple[Any, ...]:
     """Free text as words and numbers, so ``1.50s`` equals ``1.5s`` and ``0;1`` equals ``0; 1``.
 
     Separators stay in the words (one space, none around punctuation), so
     ``"".join`` of the shown tokens reads like the source.
 
-    >>> _tokens(" 0;  1.50 ; 2e1s ")
+    >>> tokenise(" 0;  1.50 ; 2e1s ")
     (0.0, ';', 1.5, ';', 20.0, 's')
-    >>> _show(_tokens("translate(1.50, 2)  scale(2)"))
+    >>> show_value(tokenise("translate(1.50, 2)  scale(2)"))
     'translate(1.5,2) scale(2)'
     """
     out: list[Any] = []
@@ -126,41 +131,41 @@ def _tokens(text: str) -> tuple[Any, ...]:
     return tuple(w for w in out if w != "")
 
 
-def _close(x: Any, y: Any, tol: float) -> bool:
+def values_close(x: Any, y: Any, tol: float) -> bool:
     """Are two nested values equal, numbers within *tol*?"""
     if isinstance(x, float) and isinstance(y, float):
         return abs(x - y) <= tol or x == y
     if isinstance(x, tuple) and isinstance(y, tuple):
-        return len(x) == len(y) and all(_close(p, q, tol) for p, q in zip(x, y))
+        return len(x) == len(y) and all(values_close(p, q, tol) for p, q in zip(x, y))
     return x == y
 
 
-def _show(value: Any) -> str:
+def show_value(value: Any) -> str:
     """A normalised value as text.
 
-    >>> _show((0.0, 0.0, 960.0, 813.91)), _show(("xMidYMid", "meet")), _show((1.5, "s"))
+    >>> show_value((0.0, 0.0, 960.0, 813.91)), show_value(("xMidYMid", "meet")), show_value((1.5, "s"))
     ('0 0 960 813.91', 'xMidYMid meet', '1.5s')
     """
     if isinstance(value, float):
-        return _fmt(value)
+        return format_number(value)
     if isinstance(value, tuple):
-        # Words from _tokens carry their own separators; two numbers or two
+        # Words from tokenise carry their own separators; two numbers or two
         # plain words in a row (a viewBox, a split list) need a space.
         out = ""
         for i, v in enumerate(value):
             if i and isinstance(v, str) == isinstance(value[i - 1], str):
                 out += " "
-            out += _show(v)
+            out += show_value(v)
         return out
     return str(value)
 
 
-def _num_diff(x: Any, y: Any) -> float | None:
+def numeric_difference(x: Any, y: Any) -> float | None:
     """Largest numeric difference between two values of the same shape, else None."""
     if isinstance(x, float) and isinstance(y, float):
         return abs(x - y)
     if isinstance(x, tuple) and isinstance(y, tuple) and len(x) == len(y):
-        ds = [_num_diff(p, q) for p, q in zip(x, y)]
+        ds = [numeric_difference(p, q) for p, q in zip(x, y)]
         if all(d is not None for d in ds) and ds:
             return max(ds)  # type: ignore[type-var]
         if all(d is not None or p == q for d, p, q in zip(ds, x, y)):

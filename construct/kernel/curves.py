@@ -309,7 +309,7 @@ def crossings(curve: Any, line: Line) -> tuple[Point, ...]:
 # --------------------------------------------------------------------------
 
 
-def _frame_of(axis: Line) -> tuple[float, float, float, float]:
+def frame_of(axis: Line) -> tuple[float, float, float, float]:
     ux, uy = axis.direction()
     return ux, uy, -uy, ux  # along the axis, and its normal ("up")
 
@@ -330,7 +330,7 @@ def french_curve_op(args, params, givens, refs, xp):
     pts = list(args[1:1 + n])
     tangents = dict(zip((int(i) for i in params["tangent_at"]), args[1 + n:]))
     corners = {int(i) for i in params.get("corners", ())}
-    ux, uy, nx, ny = _frame_of(axis)
+    ux, uy, nx, ny = frame_of(axis)
     rows = sorted(((p.x * ux + p.y * uy, p.x * nx + p.y * ny, i, p) for i, p in enumerate(pts)),
                   key=lambda r: (r[0], r[2]))
     u = [r[0] for r in rows]

@@ -40,7 +40,7 @@ import math
 
 from ...kernel.protocol import Caption
 from .. import Construction, register
-from .build import _validate, build_inertia
+from .build import validate_inertia, build_inertia
 from .checks import inertia_checks
 from .measure import abscissa, curve_deviation, ordinate
 from .stroke_fractions import build_q_at_stroke_fractions, stroke_fraction_checks, stroke_fractions_plate
@@ -100,7 +100,7 @@ INERTIA = register(Construction(
     book_params=({"rod_ratio": 4.0}, {"rod_ratio": 5.0}, {"rod_ratio": 6.0}),
     structural=("parts", "method"),
     extra={"plate": inertia_plate},
-), validate=_validate)
+), validate=validate_inertia)
 
 INERTIA_STROKE = register(Construction(
     name="inertia-stroke-fractions",
@@ -112,4 +112,4 @@ INERTIA_STROKE = register(Construction(
     book_params=({"rod_ratio": 5.0},),
     structural=("divisions",),
     extra={"plate": stroke_fractions_plate},
-), validate=_validate)
+), validate=validate_inertia)

@@ -30,7 +30,7 @@ __all__ = ["build_inertia", "PLATE"]
 # --------------------------------------------------------------------------
 
 
-def _givens(r: Any, rod_ratio: Any, pressure_ratio: Any, pressure_unit: Any) -> dict[str, float]:
+def inertia_givens(r: Any, rod_ratio: Any, pressure_ratio: Any, pressure_unit: Any) -> dict[str, float]:
     g = {"r": bounded("crank radius r", r, DRAWN_LENGTH), "rod_ratio": rod_ratio_param(rod_ratio),
          "pressure_ratio": bounded("pressure ratio F/f", pressure_ratio, PRESSURE_RATIO),
          "pressure_unit": bounded("pressure-scale unit (drawn length of 1 kg/cm2)", pressure_unit, DRAWN_LENGTH)}
@@ -42,8 +42,8 @@ def _givens(r: Any, rod_ratio: Any, pressure_ratio: Any, pressure_unit: Any) -> 
     return g
 
 
-def _validate(givens: Mapping[str, float]) -> None:
-    _givens(givens["r"], givens["rod_ratio"], givens["pressure_ratio"], givens["pressure_unit"])
+def validate_inertia(givens: Mapping[str, float]) -> None:
+    inertia_givens(givens["r"], givens["rod_ratio"], givens["pressure_ratio"], givens["pressure_unit"])
 
 
 def _lay_off(b: Builder, c: _Ctx, tag: str, X: str, V: str, label: str | None = None) -> str:
@@ -100,7 +100,7 @@ PLATE = (
 
 def build_inertia(*, rod_ratio: float, parts: int, method: str, r: float, pressure_ratio: float,
                   pressure_unit: float) -> Figure:
-    givens = _givens(r, rod_ratio, pressure_ratio, pressure_unit)
+    givens = inertia_givens(r, rod_ratio, pressure_ratio, pressure_unit)
     used = check_parts(parts, method)
     b = Builder("inertia-curve", givens, {"parts": parts, "method": used, "requested_method": method,
                                           "plate": PLATE})

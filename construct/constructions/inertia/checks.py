@@ -8,7 +8,7 @@ from .. import analytic
 from ..checking import EUCLIDEAN_TOLERANCE, Check
 from .. import Figure
 from ..crank import angle_tolerance, crank_angle, point_name
-from .measure import _slope, abscissa, curve_deviation, ordinate
+from .measure import slope, abscissa, curve_deviation, ordinate
 
 __all__ = ["inertia_checks"]
 
@@ -62,10 +62,10 @@ def inertia_checks(fig: Figure) -> list[Check]:
     # Tangents (Gl. i with its sign), as r dq/dx in units of F/f: the book's "r tg beta".
     slope_tol = 10 * _euclid(per_ff)  # positions to 1e-12 of the stroke over bases of at least a tenth of it
     for line, w in (("tan0", 0.0), ("tan90", math.pi / 2), ("tan180", math.pi)):
-        checks.append(Check(f"tangent at {round(math.degrees(w))} deg (r tg beta)", _slope(fig, line) * r / Ff,
+        checks.append(Check(f"tangent at {round(math.degrees(w))} deg (r tg beta)", slope(fig, line) * r / Ff,
                             analytic.inertia_slope(w, r, lam) * r, slope_tol,
                             "Euclidean; Gl. (i): r tg beta = -(F/f)(1 + 4 lam cos w)/(1 + lam cos w)", "F/f"))
-    checks.append(Check("EF parallel to the infinite-rod line (r tg beta)", _slope(fig, "EF") * r / Ff, -1.0, slope_tol,
+    checks.append(Check("EF parallel to the infinite-rod line (r tg beta)", slope(fig, "EF") * r / Ff, -1.0, slope_tol,
                         "E and F differ by 2 F/f over the stroke", "F/f"))
     checks.append(Check("D abscissa", abscissa(fig, "D"), (1.0 + lam) / 2.0, EUCLIDEAN_TOLERANCE,
                         "EF crosses the axis at x = (1 + lam) r", "stroke"))

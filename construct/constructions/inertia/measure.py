@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...kernel.curves import _frame_of
+from ...kernel.curves import frame_of
 from ...kernel.geometry import Point
 from .. import Figure
 
@@ -14,7 +14,7 @@ __all__ = ["ordinate", "abscissa", "curve_deviation"]
 
 def _axis_frame(fig: Figure) -> tuple[Point, float, float, float, float]:
     o = fig.replay["D0"]
-    ux, uy, nx, ny = _frame_of(fig.replay["axis"])
+    ux, uy, nx, ny = frame_of(fig.replay["axis"])
     return o, ux, uy, nx, ny
 
 
@@ -32,14 +32,14 @@ def abscissa(fig: Figure, name: str) -> float:
     return ((p[0] - o[0]) * ux + (p[1] - o[1]) * uy) / o.distance(fig.replay["D1"])
 
 
-def _slope(fig: Figure, line: str) -> float:
+def slope(fig: Figure, line: str) -> float:
     """dy/dx of a drawn line in the frame of the stroke line."""
     _, ux, uy, nx, ny = _axis_frame(fig)
     (px, py), (qx, qy) = fig.replay[line]
     return ((qx - px) * nx + (qy - py) * ny) / ((qx - px) * ux + (qy - py) * uy)
 
 
-def _offset(fig: Figure, point: str, origin: str) -> float:
+def offset(fig: Figure, point: str, origin: str) -> float:
     """Signed offset of a point on a scale line from its origin, positive towards the head end (like r cos w)."""
     _, ux, uy, _, _ = _axis_frame(fig)
     p, o = fig.replay[point], fig.replay[origin]

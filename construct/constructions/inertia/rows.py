@@ -9,7 +9,7 @@ from ...kernel.errors import InvalidParameter
 from ...kernel.division import MAX_PARTS
 from .. import Figure, positive
 from ..crank import crank_angle, point_name
-from .measure import _offset, abscissa, ordinate
+from .measure import offset, abscissa, ordinate
 
 __all__ = ["acceleration_rows", "characteristic_point_rows", "q_at_crank_angle_rows"]
 
@@ -58,11 +58,11 @@ def acceleration_rows(rod_ratio: float, step_deg: float = 10.0) -> list[dict[str
         foot = _first(fig, f"Y{k}", {0: "D0", n: "D1"}.get(k, P))
         double = _first(fig, f"G{k}", f"N{k}", "D0")
         if f"W{k}" in fig.replay:
-            lam_cos = _offset(fig, f"W{k}", "gr.U") / r
+            lam_cos = offset(fig, f"W{k}", "gr.U") / r
         else:  # the doubled point lies on the leg of the proportional angle: its ray is the leg itself
-            lam_cos = _offset(fig, double, "O") / r * ratio
+            lam_cos = offset(fig, double, "O") / r * ratio
         rows.append({"rod_ratio": float(rod_ratio), "omega_deg": 180.0 * k / n,
-                     "cos_omega": _offset(fig, foot, "O") / r, "cos_2omega": _offset(fig, double, "O") / r,
+                     "cos_omega": offset(fig, foot, "O") / r, "cos_2omega": offset(fig, double, "O") / r,
                      "lambda_cos_2omega": lam_cos, "q": ordinate(fig, f"K{k}") / fig.replay.givens["pressure_unit"]})
     return rows
 
@@ -97,4 +97,4 @@ def q_at_crank_angle_rows(rod_ratio: float, divisions: int = 10) -> list[dict[st
     fig = INERTIA_STROKE.figure(rod_ratio=rod_ratio, divisions=divisions, pressure_ratio=1.0, pressure_unit=1.0, r=1.0)
     u = fig.replay.givens["pressure_unit"]
     marks = ["D0"] + [f"x{j}" for j in range(1, divisions)] + ["D1"]
-    return [{"x": abscissa(fig, mark), "q": _offset(fig, f"Vt{j}", "gf.U") / u} for j, mark in enumerate(marks)]
+    return [{"x": abscissa(fig, mark), "q": offset(fig, f"Vt{j}", "gf.U") / u} for j, mark in enumerate(marks)]

@@ -17,8 +17,9 @@ from ...kernel.errors import InvalidParameter
 from ...kernel.instruments import Builder
 from .. import Figure
 from ..crank import build_frame, inverse_tolerance
-from .build import _dir, _givens, _setup, _value
-from .measure import _offset
+from ..ordinates import inertia_setup, ordinate_value, stroke_direction
+from .build import inertia_givens
+from .measure import offset
 
 __all__ = ["build_q_at_stroke_fractions", "stroke_fraction_checks", "stroke_fractions_plate", "PLATE"]
 
@@ -37,14 +38,14 @@ def stroke_fractions_plate(fig: Figure) -> dict:
     The ordinates are the constructed ones: each is the distance of the point Vt carried to the F/f line
     from the line's start (gf.U), as the proportional angle gave it.
     """
-    from .measure import _offset
+    from .measure import offset
 
     R = fig.replay
     m = fig.params["divisions"]
     unit = R.givens["pressure_unit"]
     r = R["O"].distance(R["D1"])
     xs = [R["D0"][0]] + [R[f"x{j}"][0] for j in range(1, m)] + [R["D1"][0]]
-    qs = [_offset(fig, f"Vt{j}", "gf.U") for j in range(m + 1)]
+    qs = [offset(fig, f"Vt{j}", "gf.U") for j in range(m + 1)]
     y0 = R["O"][1] - 0.45 * r - max(max(qs), 0.0)
     lo, hi = min(xs), max(xs)
     pitch = (hi - lo) / m
@@ -71,15 +72,15 @@ def build_q_at_stroke_fractions(*, rod_ratio: float, divisions: int, r: float = 
     """Tabelle 2: the stroke in equal parts, the rod swung back to the crank circle, q constructed there.
 
     >>> fig = build_q_at_stroke_fractions(rod_ratio=5.0, divisions=10)
-    >>> round(_offset(fig, "Vt0", "gf.U") / fig.replay.givens["pressure_unit"], 12)   # q1 = 1 + r/L
+    >>> round(offset(fig, "Vt0", "gf.U") / fig.replay.givens["pressure_unit"], 12)   # q1 = 1 + r/L
     1.2
     """
-    givens = _givens(r, rod_ratio, pressure_ratio, pressure_unit)
+    givens = inertia_givens(r, rod_ratio, pressure_ratio, pressure_unit)
     if isinstance(divisions, bool) or not isinstance(divisions, int) or not 1 <= divisions <= 1000:
         raise InvalidParameter(f"number of stroke divisions must be a whole number from 1 to 1000, got {divisions!r}")
     b = Builder("inertia-stroke-fractions", givens, {"divisions": divisions, "plate": PLATE})
     f = build_frame(b)
-    c = _setup(b, f)
+    c = inertia_setup(b, f)
     m = divisions
     with b.group(f"stroke divided into {m} equal parts", f"Hub in {m} gleiche Teile geteilt"):
         marks = [c.D0] + (b.divide_segment("x", c.D0, c.D1, m, line=c.axis) if m > 1 else []) + [c.D1]
@@ -94,8 +95,8 @@ def build_q_at_stroke_fractions(*, rod_ratio: float, divisions: int, r: float = 
                 P = b.intersect(f"W{j}", back, c.crank, rule=("left", c.D0, c.D1), de=f"Kurbelstellung W{j}",
                                 en=f"crank position W{j}", labels={f"W{j}": str(j)})
                 kind = "generic"
-            dc_p = c.D0 if b[P][0] * _dir(b, c) < b[c.O][0] * _dir(b, c) else c.D1
-            _value(b, c, f"t{j}", P, kind, dc_p, None)
+            dc_p = c.D0 if b[P][0] * stroke_direction(b, c) < b[c.O][0] * stroke_direction(b, c) else c.D1
+            ordinate_value(b, c, f"t{j}", P, kind, dc_p, None)
             b.set_label(f"Vt{j}", f"q{j}")
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))
@@ -112,7 +113,7 @@ def stroke_fraction_checks(fig: Figure) -> list[Check]:
     for j in range(m + 1):
         x = j / m
         w = analytic.crank_angle_from_path(2.0 * r * x, r, L)
-        q = _offset(fig, f"Vt{j}", "gf.U") / u
+        q = offset(fig, f"Vt{j}", "gf.U") / u
         # the crank point is found where an arc meets the crank circle nearly tangentially near the dead centres:
         # its angle error (crank-angle's tolerance) times |dq/dw| <= F/f (1 + 2 lam), plus the float chain
         tol = 1e-11 * Ff + inverse_tolerance(x) * Ff * (1.0 + 2.0 * lam)

@@ -152,8 +152,11 @@ class BezierCurve(_Chain):
     @staticmethod
     def _at(seg: Sequence[Point], t: float) -> tuple[float, float]:
         s = 1.0 - t
-        w = (s * s * s, 3.0 * s * s * t, 3.0 * s * t * t, t * t * t)
-        return (sum(wi * p[0] for wi, p in zip(w, seg)), sum(wi * p[1] for wi, p in zip(w, seg)))
+        w0, w1, w2, w3 = s * s * s, 3.0 * s * s * t, 3.0 * s * t * t, t * t * t
+        a, b, c, d = seg
+        # written out (the same sums, in the same order, as a generator would add them: called a million times
+        # by y_at's bisection over a sweep)
+        return (w0 * a[0] + w1 * b[0] + w2 * c[0] + w3 * d[0], w0 * a[1] + w1 * b[1] + w2 * c[1] + w3 * d[1])
 
     def sample(self, per_segment: int = 16):
         """The curve as a polyline, as two numpy arrays xs, ys: *per_segment* pieces per segment, ends exact."""
@@ -181,9 +184,12 @@ class BezierCurve(_Chain):
             if min(x0, x3) <= x <= max(x0, x3):
                 lo, hi = 0.0, 1.0
                 rising = x3 >= x0
+                a, b, c, d = seg[0][0], seg[1][0], seg[2][0], seg[3][0]
                 for _ in range(60):  # bisection to 1e-18 of the segment: x(t) is monotone on a graph's segment
                     mid = 0.5 * (lo + hi)
-                    if (self._at(seg, mid)[0] < x) == rising:
+                    s = 1.0 - mid  # x(mid) as _at computes it
+                    xm = s * s * s * a + 3.0 * s * s * mid * b + 3.0 * s * mid * mid * c + mid * mid * mid * d
+                    if (xm < x) == rising:
                         lo = mid
                     else:
                         hi = mid
@@ -277,14 +283,22 @@ def crossings(curve: Any, line: Line) -> tuple[Point, ...]:
         found.append(Point(x, y))
 
     if isinstance(curve, BezierCurve):
-        segs = curve.segments()
+        segs = []
         polys = []
-        for seg in segs:
+        for seg in curve.segments():
             s0, s1, s2, s3 = (side(p) for p in seg)
+            # A Bézier segment lies inside the hull of its control points: if they are all clearly on one side of
+            # the line, the segment does not reach it and no cubic needs solving.  "Clearly": by more than the
+            # root polishing's reach, so that a crossing at a shared vertex (s = ±1e-17 on both sides of it) is
+            # still found as before.
+            margin = 1e-9 * max(1.0, abs(s0), abs(s3))
+            if min(s0, s1, s2, s3) > margin or max(s0, s1, s2, s3) < -margin:
+                continue
             # Bernstein to power basis of the signed distance.
             c3 = -s0 + 3 * s1 - 3 * s2 + s3
             c2 = 3 * s0 - 6 * s1 + 3 * s2
             c1 = -3 * s0 + 3 * s1
+            segs.append(seg)
             polys.append((c3, c2, c1, s0))
         for seg, roots in zip(segs, _cubic_roots01_many(polys)):
             for t in roots:

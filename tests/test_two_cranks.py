@@ -288,15 +288,15 @@ def test_the_domain_check_of_a_sweep_names_the_first_set_a_single_check_refuses(
         first = None
         for i in range(ratios.size):
             try:
-                tc._validate({**g, "rod_ratio": float(ratios[i]), "fluctuation": fluctuation, "magnify": float(mags[i])})
+                tc.validate_two_cranks({**g, "rod_ratio": float(ratios[i]), "fluctuation": fluctuation, "magnify": float(mags[i])})
             except InvalidParameter as exc:
                 first = str(exc)
                 break
         if first is None:
-            tc._validate(swept)
+            tc.validate_two_cranks(swept)
         else:
             with pytest.raises(InvalidParameter) as info:
-                tc._validate(swept)
+                tc.validate_two_cranks(swept)
             assert str(info.value) == first
 
 

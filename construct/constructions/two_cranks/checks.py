@@ -1,0 +1,123 @@
+"""The checks of two cranks at 90°: the constructed work, speeds and extremes against the exact law."""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping
+from ..checking import EUCLIDEAN_TOLERANCE, Check
+from .. import Figure
+from ..crank import angle_tolerance
+from .analytic import (KOCHANSKI_ERROR, KOCHANSKI_RHO, excess_exact, excess_from, extreme_angles_exact,
+                       kochanski_angle_error, quadrant_extremes)
+from .measure import crank_angle, dead_centre_of, speed_radius, work_excess
+
+def two_cranks_checks(fig: Figure, model: Mapping[str, Any] | None = None) -> list[Check]:
+    """The checks of a two-cranks figure; *model*: ``{"extremes": quadrant_extremes(rod ratio)}``, if known."""
+    n = fig.params["parts"]
+    dc = dead_centre_of(fig)
+    g = fig.replay.givens
+    K = g["rod_ratio"]
+    gain = g["magnify"] * g["fluctuation"]
+    made_by = fig.replay.made_by()
+    checks: list[Check] = []
+    kinds = [(True, None)] if fig.params["infinite_rod"] else [(False, K), (True, None)]
+    for infinite, ratio in kinds:
+        word = "infinite rod" if infinite else f"L/r = {K:g}"
+        # The division's error moves a crank point; |de/dalpha| <= 2(1 + lam) + 4/pi.
+        slope = 2.0 * (1.0 + (0.0 if ratio is None else 1.0 / ratio)) + 4.0 / math.pi
+        err_w = max(angle_tolerance(fig, p, made_by)[0] for p in made_by if p.startswith("P") and p[1:].isdigit()) \
+            if n > 1 else EUCLIDEAN_TOLERANCE
+        # 4N compass transfers along the work line, each rounding at ~1e-16 of its 8r length.
+        tol = max(EUCLIDEAN_TOLERANCE, 4e-15 * n) + slope * max(err_w - EUCLIDEAN_TOLERANCE, 0.0)
+        why = ("Euclidean chain: rod arcs / ordinates, compass steps on the work line" if tol < 1e-10 else
+               f"division of the circle not Euclidean ({fig.params['method']}): its angle error times |de/dalpha|")
+        for j in range(2 * n + 1):
+            alpha = math.pi * j / n
+            e = work_excess(fig, j, infinite=infinite)
+            checks.append(Check(f"work excess {j} ({word}, from the {dc} dead centre)", e,
+                                excess_from(alpha, ratio, dc), tol, why, "Q r"))
+            if j < 2 * n:
+                checks.append(Check(f"speed radius {j} ({word})", speed_radius(fig, j, infinite=infinite),
+                                    1.0 + gain * excess_from(alpha, ratio, dc), (1.0 + gain) * tol,
+                                    "proportional angle and compass: the work excess times g, Euclidean", "r"))
+        if infinite and n % 4 == 0:
+            for j in range(0, 2 * n, n // 4):
+                checks.append(Check(f"v = v1 at {180 * j // n} deg (infinite rod, § 146)",
+                                    work_excess(fig, j, infinite=True), 0.0, tol,
+                                    "the book: the same speed v1 every 45 degrees", "Q r"))
+        if infinite:
+            # The book's claim: v_max exceeds v1 as much as v_min falls short; the construction's wave
+            # is antisymmetric about 45 degrees in every quadrant.
+            for j in range(1, n // 2):
+                checks.append(Check(f"e({180 * j / n:g}) + e({90 - 180 * j / n:g}) = 0 (infinite rod)",
+                                    work_excess(fig, j, infinite=True) + work_excess(fig, n // 2 - j, infinite=True),
+                                    0.0, 2 * tol, "§ 146: v_max - v1 = v1 - v_min; e(90 - a) = -e(a)", "Q r"))
+        else:
+            for q in (quadrant_extremes(ratio, dead_centre=dc) if model is None else model["extremes"]):
+                # The grid's own rise and fall in each quadrant, against the exact law on the same grid.
+                lo, hi = (q["quadrant"] - 1) * n // 2, q["quadrant"] * n // 2
+                es = [work_excess(fig, j) for j in range(lo, hi + 1)]
+                ex = [excess_from(math.pi * j / n, ratio, dc) for j in range(lo, hi + 1)]
+                measured = (max(es) - es[0]) - (es[0] - min(es))
+                checks.append(Check(f"quadrant {q['quadrant']}: rise - fall of e ({word})", measured,
+                                    (max(ex) - ex[0]) - (ex[0] - min(ex)), 2 * tol,
+                                    f"§ 147: the quadrants differ; exact law: rise {q['rise']:.5f}, "
+                                    f"fall {q['fall']:.5f} Q r", "Q r"))
+    checks += _extreme_checks(fig)
+    return checks
+
+
+def _extreme_checks(fig: Figure) -> list[Check]:
+    rp = fig.replay
+    r = rp.givens["r"]
+    centre = "O'" if "O'" in rp else "O"
+    koch = KOCHANSKI_ERROR
+    rho = float(rp["BK"]) / r
+    a1x, a2x = extreme_angles_exact()
+    err = kochanski_angle_error()
+    s2 = (16.0 / KOCHANSKI_RHO ** 2 - 1.0) - ((4.0 / math.pi) ** 2 - 1.0)
+    a1 = crank_angle(fig, "K.M1")
+    a2 = crank_angle(fig, "K.M2")
+    height = (rp["K.G1"][1] - rp[centre][1]) / r
+    out = [
+        Check("Kochanski: BK / r against pi", rho, math.pi, 1.001 * koch + EUCLIDEAN_TOLERANCE,
+              f"Kochański's rectification falls short of pi r by {koch:.3e} r", "r"),
+        Check("(4/pi) r constructed", float(rp["4r/π"]) / r, 4.0 / math.pi,
+              1.001 * abs(4.0 / KOCHANSKI_RHO - 4.0 / math.pi) + EUCLIDEAN_TOLERANCE,
+              "Kochański's error carried: 4/BK - 4/pi", "r"),
+        Check("sin 2 alpha = (4/pi)^2 - 1 constructed", height, (4.0 / math.pi) ** 2 - 1.0,
+              1.001 * abs(s2) + EUCLIDEAN_TOLERANCE, f"Kochański's error carried: {s2:.3e}", ""),
+        Check("extreme angle alpha1 (constructed, deg)", math.degrees(a1), math.degrees(a1x),
+              math.degrees(1.001 * err + EUCLIDEAN_TOLERANCE),
+              f"Kochański's error carried into the angle: {math.degrees(err) * 3600:.1f}\" ({err:.2e} rad)", "deg"),
+        Check("extreme angle alpha2 (constructed, deg)", math.degrees(a2), math.degrees(a2x),
+              math.degrees(1.001 * err + EUCLIDEAN_TOLERANCE),
+              f"Kochański's error carried into the angle: {math.degrees(err) * 3600:.1f}\" ({err:.2e} rad)", "deg"),
+        *_wave_checks(fig, centre),
+        Check("alpha1 against the book's 19 deg 12'", math.degrees(a1), 19.2, 0.5 / 60.0,
+              "printed to the minute: half a minute", "deg"),
+        Check("alpha2 against the book's 70 deg 48'", math.degrees(a2), 70.8, 0.5 / 60.0,
+              "printed to the minute: half a minute", "deg"),
+    ]
+    return out
+
+
+def _wave_checks(fig: Figure, centre: str) -> list[Check]:
+    """v_min and v_max read off the drawn wave where the rays to the extremes cross it."""
+    rp = fig.replay
+    g = rp.givens
+    gain = g["magnify"] * g["fluctuation"]
+    n = fig.params["parts"]
+    amplitude = gain * -excess_exact(extreme_angles_exact()[0], None)
+    tol = amplitude * (6.0 / n) ** 3
+    out = []
+    for i, word in ((1, "v_min"), (2, "v_max")):
+        a = extreme_angles_exact()[i - 1]
+        out.append(Check(f"{word} / v1 read off the wave at M{i} (infinite rod, drawn radius)",
+                         rp[centre].distance(rp[f"K.W{i}"]) / g["r"], 1.0 + gain * excess_exact(a, None), tol,
+                         f"a French curve through points {180 / n:g} deg apart: within (6/N)^3 of the wave's "
+                         f"amplitude {amplitude:.4f} r (the radius is 1 + G k e, the book's law magnified)", "r"))
+    return out
+
+
+# -- the table ----------------------------------------------------------------------------

@@ -215,9 +215,12 @@ def test_a_camera_view_stored_on_a_step_is_read():
 
 
 def test_the_camera_may_come_from_the_players_data():
-    dot = '<circle class="pt" id="s0002-P" cx="300" cy="300" r="0.3"/>'
-    figure = steps_svg(group(1, label("A", 100, 100, "s0001-A-label")), group(2, dot),
+    # a small circle (2.4 units across: 2.4 px on the whole view) seen through a 140 x 100 view in the
+    # player's 985 x 700 px window: 17 px.  (A point would not grow: the player holds points at their size.)
+    mark = '<circle class="construction" id="s0002-c" cx="300" cy="300" r="1.2"/>'
+    figure = steps_svg(group(1, label("A", 100, 100, "s0001-A-label")), group(2, mark),
                        group(3, '<line class="construction" x1="0" y1="900" x2="900" y2="900"/>'))
+    assert [f.steps for f in lint_svg(figure, "p.svg") if f.kind == "small-mark"] == [((2, 2),)]
     data = {"n": 3, "steps": [{}, {"v": 0}, {}], "views": [[230, 250, 140, 100]]}
     assert [f for f in lint_svg(figure, "p.svg", data=data) if f.kind == "small-mark"] == []
 

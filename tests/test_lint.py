@@ -281,7 +281,7 @@ def test_the_gallery_check_keeps_the_previous_gallery_when_asked(tmp_path):
 # --------------------------------------------------------------------------- real output
 
 def _star():
-    """A point A with twelve result lines through it, every 15°: wherever its letter goes, a line crosses it."""
+    """A point A with twelve result lines through it, every 15°: wherever its letter goes near A, a line crosses it."""
     from construct import Builder
 
     b = Builder("star", givens={})
@@ -294,13 +294,44 @@ def _star():
     return b.figure()
 
 
-def test_the_renderers_output_is_read_and_its_collision_found(tmp_path):
+def _band():
+    """A lettered point A inside a band of result lines 0.008 apart (about 10 px on the canvas): a letter
+    with its halo is taller than the gap, so wherever the placer puts it, a result line runs through it."""
+    from construct import Builder
+    from construct.kernel.rules import left_of
+
+    b = Builder("band", givens={})
+    for i in range(101):
+        y = -0.4 + 0.008 * i
+        b.given_point(f"L{i}", 0.0, y, label="")
+        b.given_point(f"R{i}", 1.0, y, label="")
+        b.line(f"h{i}", f"L{i}", f"R{i}", role="result")
+    b.given_point("T", 0.5, 0.5, label="")
+    b.given_point("U", 0.5, -0.5, label="")
+    b.line("v", "T", "U", role="construction")
+    b.intersect("A", "v", "h50", rule=left_of("L50", "R50"), role="result", labels={"A": "A"})  # never left out
+    return b.figure()
+
+
+@pytest.mark.parametrize("style", ["plain", "historical"])
+def test_the_renderers_output_is_read_and_its_collision_found(tmp_path, style):
+    import re
+
+    from construct.regress.lint.sheet import read_sheet
     from construct.render.scene import build_scene
     from construct.render.svg import Drawing
+    from construct.render.styles import STYLES
 
-    text = Drawing(build_scene(_star())).layered()
-    found = lint_svg(text, "star.svg")
+    text = Drawing(build_scene(_band()), STYLES[style]).layered()
+    found = lint_svg(text, "band.svg")
     assert any(f.kind == "struck" and f.labels == ("A",) for f in found)
+    # the letter lint reads is the one drawn about A: its group's point is A's marker, its box beside it
+    (circle,) = re.findall(r'<circle[^>]*id="s\d+-A"[^>]*>', text)
+    cx, cy = (float(re.search(rf'{c}="([-\d.]+)"', circle).group(1)) for c in ("cx", "cy"))
+    (a,) = [t for t in read_sheet(text, "band.svg").texts if t.text == "A" and t.kind == "label"]
+    assert a.anchor == pytest.approx((cx, cy), abs=0.01) and a.owner and a.owner.endswith("-A")
+    x0, y0, x1, y1 = a.box
+    assert 0 < x1 - x0 < 20 and 0 < y1 - y0 < 20 and abs((x0 + x1) / 2 - cx) < 40 and abs((y0 + y1) / 2 - cy) < 40
 
 
 def test_construct_golden_checks_legibility_unless_told_not_to(tmp_path):

@@ -568,7 +568,10 @@ class Drawing:
                     lid = {"id": f"{mid}-label"} if mid else {}
                     px, py = vp.px(*m.geom)
                     rel = (box[0] - px, box[1] - py, box[2] if len(box) > 2 else 0.0)
-                    extra = (" lbx" if len(box) > 3 and box[3] else "") + self._hidden_at.get(m.id, "")
+                    # a letter with no room in the whole figure waits for the magnified views (lbx); without a
+                    # camera there are none, and a result's letter is drawn all the same (never left out)
+                    thin = len(box) > 3 and box[3] and (st.camera or m.role != "result")
+                    extra = (" lbx" if thin else "") + self._hidden_at.get(m.id, "")
                     gid = {"id": f"{mid}-lb"} if mid and " lbm" in extra else {}
                     extra = extra.replace(" lbm", "")
                     yield "labels", self._letter(vp, m, rel, m.label, "lb", lid, extra=extra, gid=gid)

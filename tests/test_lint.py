@@ -382,3 +382,15 @@ def test_a_plate_layered_by_step_is_one_view():
                        group(3, label("K7", 302, 300, "b")), css=plate_css)
     found = lint_svg(figure, "plate.svg")
     assert [(f.kind, f.steps, f.views) for f in found] == [("overlap", (), 1)]  # and no current mark to check
+
+
+def test_the_players_current_points_are_seen_at_once(tmp_path):
+    # crank: steps that mark two points far apart get no ring (the ring would span the figure); each point
+    # must then be 12 px on the player's screen by itself (its highlight halo), as lint measures it
+    from construct.constructions import get
+    from construct.render.output import write_replay
+
+    c = get("crank")
+    write_replay(c, c.figure(parts=9, rod_ratio=5.0), tmp_path, style="teaching", frames="none")
+    report = lint_path(tmp_path / "final.svg")
+    assert report.views > 50 and [f.line() for f in report.findings if f.kind == "small-mark"] == []

@@ -154,8 +154,10 @@ class Style:
         if self.highlight:
             # ``cur`` and ``old`` sit on a step's group (frames are views of the layered figure)
             rules.append(f".cur>*{{stroke:{self.highlight};stroke-width:{fmt(self.highlight_width)}}}")
-            # a point is small: the current one gets a halo in the highlight colour
-            rules.append(f".cur>.pt{{fill:{self.highlight};stroke:{self.highlight};stroke-width:3}}")
+            # a point is small: the current one gets a halo in the highlight colour, 16 units across or more with
+            # its dot (12.5 px on the screen at the player's smallest letter scale): seen at once
+            rules.append(f".cur>.pt{{fill:{self.highlight};stroke:{self.highlight};stroke-width:13;"
+                         f"stroke-opacity:0.35}}")
             rules.append(f".cur .lb{{fill:{self.highlight};stroke:none}}")
         rules.append(f".inset{{fill:{self.background};stroke:{self.construction};stroke-width:0.8}}")
         if self.done_opacity <= 0.0:

@@ -552,10 +552,11 @@ def _small_marks(sheet: Sheet, views: _Views) -> list[Finding]:
             look = sheet.look(d.chain, state, lay.level)
             if look.shown and look.opacity >= MIN_OPACITY:
                 b = d.box
-                if lay.letter != 1.0 and "pt" in d.chain[-1][2]:  # the player draws points at the letters' scale
+                point = "pt" in d.chain[-1][2]
+                if lay.letter != 1.0 and point:  # the player draws points (and their strokes) at the letters' scale
                     cx, cy, r = (b[0] + b[2]) / 2, (b[1] + b[3]) / 2, (b[2] - b[0]) / 2 * lay.letter
                     b = (cx - r, cy - r, cx + r, cy + r)
-                width = look.stroke_width * (lay.stroke if views.player else 1.0)
+                width = look.stroke_width * (lay.letter if point else lay.stroke)
                 marks.append((_grow(b, width / 2 if look.stroked else 0.0), d.ident))
         if not marks:
             continue

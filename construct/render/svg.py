@@ -319,6 +319,7 @@ class Drawing:
         self.doc = svgdoc.Writer()
         self._spots = self._letter_spots(self.vp)
         self._hidden_at, self._level_rules = self._zoom_placing() if style.camera else ({}, [])
+        self._tag_spots = self._place_tags() if style.name_tags else {}
         # layer -> [(step, [element, ...]), ...] in step order: each step's elements of that layer.
         self.groups: dict[str, list[tuple[int, list[Any]]]] = {name: [] for name in self.LAYERS}
         placed: list[tuple[float, float, float, float]] = []
@@ -525,6 +526,57 @@ class Drawing:
                          + f"{{transform:scale(var(--ls,var(--zs))) {move}}}")
         return classes, rules
 
+    def _place_tags(self) -> dict[str, tuple[float, float, float]]:
+        """Where each shown name tag goes: {point id: (dx, dy, distance in letter heights)} about its point.
+
+        A tag names an operand while its step is current or an input; it is placed like a letter
+        (:func:`construct.render.lettering.place`), clear of the points, the result lines, the letters
+        and the other tags, in the view of its own step (at that view's zoom level, where the points
+        stand farther apart than in the whole figure).  A tag with no free spot there is left out,
+        never stacked on another.
+        """
+        from .lettering import label_box, place
+
+        sc, st = self.scene, self.style
+        tags = [m for m in sc.marks if m.kind == "point" and not m.label and sc.tag_shown(m.name)]
+        if not tags:
+            return {}
+        if st.camera:
+            from .camera import THIN_FROM, ZOOM_LEVELS, level, zoom_of
+        else:
+            ZOOM_LEVELS, THIN_FROM = (1.0,), 0
+        dots, lines = self._obstacles
+        span = sc.bbox[2] - sc.bbox[0]
+        by_level: dict[int, list[Mark]] = {}
+        for m in tags:
+            lvl = level(zoom_of(self.camera_view(m.step), self.full_view)) if st.camera else 0
+            by_level.setdefault(lvl, []).append(m)
+        size = 0.85 * st.label_size
+        out: dict[str, tuple[float, float, float]] = {}
+        for lvl, ms in sorted(by_level.items()):
+            z = ZOOM_LEVELS[lvl]
+            f = self.letter_scale_at(z) * z if st.camera else 1.0
+            taken = []
+            for m in self.scene.marks:
+                spot = self._spots.get(m.id) if m.kind == "point" and m.label else None
+                if spot is None or (spot[3] and lvl < THIN_FROM) or f" h{lvl}" in self._hidden_at.get(m.id, ""):
+                    continue
+                px, py = self.vp.px(*m.geom)
+                taken.append(label_box(px * z + (spot[0] - px) * f, py * z + (spot[1] - py) * f, m.label,
+                                       st.label_size * f, st.label_font, st.label_italic))
+            items = []
+            for m in ms:
+                px, py = self.vp.px(*m.geom)
+                items.append((m.id, m.role, m.step, (px * z, py * z), label_offset_direction(m.geom, scale=span),
+                              sc.display_name(m.name)))
+            got = place(items, size * f, [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
+                        font=st.label_font, italic=st.label_italic, taken=taken, keep=False)
+            for i, _r, _s, (zx, zy), _d, _t in items:
+                if i in got:
+                    x, y, dist, _thin = got[i]
+                    out[i] = ((x - zx) / f, (y - zy) / f, dist)
+        return out
+
     @property
     def extra_css(self) -> str:
         """The rules of this drawing alone (the letters moved per zoom level)."""
@@ -559,11 +611,11 @@ class Drawing:
             aux = m.role == "auxiliary" or ("." in m.name and not m.label)
             r = st.aux_point_radius if aux else st.point_radius
             yield "points", f.circle(center=vp.xy(*m.geom), r=fmt(r), class_=f"pt {cls}", **ids)
-            if st.name_tags and not m.label and self.scene.tag_shown(m.name):
-                # Shown only while its step is the current one (CSS), so it takes no place from the letters.
+            tag = self._tag_spots.get(m.id) if vp is self.vp else None
+            if tag is not None:
+                # Shown only while its step is current or an input (CSS), placed clear of the letters.
                 # no id of its own: it is its point's name, and a gallery carries thousands of them
-                yield "labels", self._letter(vp, m, (0.6 * st.label_size, -0.5 * st.label_size, 0.0),
-                                             self.scene.display_name(m.name), "lb tag", {}, halo=False)
+                yield "labels", self._letter(vp, m, tag, self.scene.display_name(m.name), "lb tag", {}, halo=False)
             if m.label:
                 box = self._place_label(m, vp, placed)
                 if box is not None:

@@ -125,11 +125,12 @@ def text_box(x: float, y: float, text: str, size: float, font: str = DEFAULT_FON
 
 
 def label_box(x: float, y: float, text: str, size: float, font: str = DEFAULT_FONT,
-              italic: bool = False) -> tuple[float, float, float, float]:
+              italic: bool = False, halo: float = HALO_PX / 2) -> tuple[float, float, float, float]:
     """The box a centred letter at baseline (x, y) covers (pixels, y down) with its halo (3.5 px wide:
-    1.75 px round the ink), which may cover thin helpers but never a point or a result line."""
+    1.75 px round the ink), which may cover thin helpers but never a point or a result line.  *halo*:
+    the halo's reach round the ink at this size (a letter drawn larger has its halo drawn larger too)."""
     b = text_box(x, y, text or " ", size, font, italic)
-    m = HALO_PX / 2
+    m = halo
     return (b[0] - m, b[1] - m, b[2] + m, b[3] + m)
 
 
@@ -207,7 +208,8 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
           size: float, dots: Iterable[tuple[float, float]] = (),
           lines: Sequence[tuple[float, float, float, float]] = (), *, font: str = DEFAULT_FONT,
           italic: bool = False, taken: Iterable[tuple[float, float, float, float]] = (),
-          keep: bool = True, prefer: "dict[str, tuple[float, float, float]] | None" = None) -> dict[str, tuple]:
+          keep: bool = True, prefer: "dict[str, tuple[float, float, float]] | None" = None,
+          halo: float = HALO_PX / 2) -> dict[str, tuple]:
     """Baseline positions (pixels) for letters: {id: (x, y, distance in letter heights, thin)}.
 
     A letter set farther than :data:`LEADER_FROM` letter heights from its point gets a
@@ -220,7 +222,8 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     *taken*: boxes already taken by letters placed before.  Without *keep*
     a letter that finds no free spot is left out, whatever its rank.  *prefer*:
     per letter an offset from its point (and its distance in letter heights)
-    tried before the ring, so that a letter stays where it was when it can.
+    tried before the ring, so that a letter stays where it was when it can.  *halo*: how far
+    the halo reaches round the ink at *size* (the player scales a letter with its halo).
     """
     grid = _Grid(2.0 * size)
     for b in taken:
@@ -238,7 +241,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
         w = text_width(text, size, font, italic)
         if prefer and mid in prefer:
             ox, oy, od = prefer[mid]
-            box = label_box(px + ox, py + oy, text, size, font, italic)
+            box = label_box(px + ox, py + oy, text, size, font, italic, halo)
             if grid.free(box) and not strokes.meets(box):
                 spot = (px + ox, py + oy, box, od)
         for dist in (() if spot else _DISTANCES):
@@ -248,7 +251,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                 # extra width sideways); its baseline a third of a letter lower
                 lx = px + math.cos(a) * (dist * size + max(0.0, w - 0.6 * size) / 2)
                 ly = py + dist * size * math.sin(a) + 0.35 * size
-                box = label_box(lx, ly, text, size, font, italic)
+                box = label_box(lx, ly, text, size, font, italic, halo)
                 if first is None:
                     first = (lx, ly, box, dist)
                 if grid.free(box) and not strokes.meets(box):

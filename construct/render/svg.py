@@ -34,7 +34,7 @@ from typing import Any, Mapping, Sequence
 from . import svgdoc
 from .captions import TITLE_LIMIT, displayed
 from .camera import view_text
-from .lettering import LEADER_FROM
+from .lettering import HALO_PX, LEADER_FROM
 from .scene import Mark, Scene, label_offset_direction
 from .wrapping import wrap as wrap_chars
 
@@ -189,7 +189,6 @@ class Style:
             rules.append(level_css())
         else:
             rules.append(".lbx{display:none}")
-        from .lettering import HALO_PX
 
         halo = f"fill:{self.background};stroke:{self.background};stroke-width:{fmt(HALO_PX)}px;stroke-linejoin:round"
         rules.append(f".lb.halo,.cur .lb.halo,.inp .lb.halo{{{halo}}}")
@@ -447,7 +446,7 @@ class Drawing:
         self._letter_items = items
         k = self.letter_scale
         size = k * st.label_size
-        spots = place(items, size, dots, lines, font=st.label_font, italic=st.label_italic)
+        spots = place(items, size, dots, lines, font=st.label_font, italic=st.label_italic, halo=HALO_PX / 2 * k)
         thin = [it for it in items if spots.get(it[0], (0, 0, 0, False))[3]]
         if thin and st.camera:
             # the letters the whole figure has no room for, placed for the magnified views
@@ -458,11 +457,11 @@ class Drawing:
             z = ZOOM_LEVELS[THIN_FROM]
             byid = {it[0]: it for it in items}
             taken = [label_box(byid[i][3][0] * z + (x - byid[i][3][0]), byid[i][3][1] * z + (y - byid[i][3][1]),
-                               byid[i][5], size, st.label_font, st.label_italic)
+                               byid[i][5], size, st.label_font, st.label_italic, HALO_PX / 2 * k)
                      for i, (x, y, _d, t) in spots.items() if not t]
             again = place([(i, r, s_, (p[0] * z, p[1] * z), d, t) for i, r, s_, p, d, t in thin], size,
                           [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
-                          font=st.label_font, italic=st.label_italic, taken=taken, keep=False)
+                          font=st.label_font, italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * k)
             for i, r, s_, p, d, t in thin:
                 got = again.get(i)
                 if got is None and r != "result":
@@ -508,7 +507,7 @@ class Drawing:
             prefer = {i: ((self._spots[i][0] - p[0] / z) * f, (self._spots[i][1] - p[1] / z) * f, self._spots[i][2])
                       for i, _r, _s, p, _d, _t in its}
             got = place(its, size * f, [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
-                        font=st.label_font, italic=st.label_italic, keep=False, prefer=prefer)
+                        font=st.label_font, italic=st.label_italic, keep=False, prefer=prefer, halo=HALO_PX / 2 * f)
             for i, _r, _s, (zx, zy), _d, _t in its:
                 spot = got.get(i)
                 if spot is None:
@@ -563,14 +562,14 @@ class Drawing:
                     continue
                 px, py = self.vp.px(*m.geom)
                 taken.append(label_box(px * z + (spot[0] - px) * f, py * z + (spot[1] - py) * f, m.label,
-                                       st.label_size * f, st.label_font, st.label_italic))
+                                       st.label_size * f, st.label_font, st.label_italic, HALO_PX / 2 * f))
             items = []
             for m in ms:
                 px, py = self.vp.px(*m.geom)
                 items.append((m.id, m.role, m.step, (px * z, py * z), label_offset_direction(m.geom, scale=span),
                               sc.display_name(m.name)))
             got = place(items, size * f, [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
-                        font=st.label_font, italic=st.label_italic, taken=taken, keep=False)
+                        font=st.label_font, italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * f)
             for i, _r, _s, (zx, zy), _d, _t in items:
                 if i in got:
                     x, y, dist, _thin = got[i]

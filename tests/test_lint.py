@@ -394,3 +394,5 @@ def test_the_players_current_points_are_seen_at_once(tmp_path):
     write_replay(c, c.figure(parts=9, rod_ratio=5.0), tmp_path, style="teaching", frames="none")
     report = lint_path(tmp_path / "final.svg")
     assert report.views > 50 and [f.line() for f in report.findings if f.kind == "small-mark"] == []
+    # and its name tags (operands of the current step) are placed, not stacked on each other or on points
+    assert report.ok, report.text()

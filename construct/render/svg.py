@@ -546,16 +546,33 @@ class Drawing:
             ZOOM_LEVELS, THIN_FROM = (1.0,), 0
         dots, lines = self._obstacles
         span = sc.bbox[2] - sc.bbox[0]
+        # a tag is seen while its step is current and where its step is an input: it is placed at the
+        # least magnified of those views (where the letters are largest beside the points)
+        lowest: dict[int, int] = {}
+        if st.camera:
+            def lvl_of(k: int) -> int:
+                return level(zoom_of(self.camera_view(k), self.full_view))
+
+            steps = {m.step for m in tags}
+            for m in tags:
+                lowest[m.step] = lvl_of(m.step)
+            for k in range(1, len(sc.steps) + 1):
+                for s_ in self.input_steps(k):
+                    if s_ in steps:
+                        lowest[s_] = min(lowest[s_], lvl_of(k))
         by_level: dict[int, list[Mark]] = {}
         for m in tags:
-            lvl = level(zoom_of(self.camera_view(m.step), self.full_view)) if st.camera else 0
-            by_level.setdefault(lvl, []).append(m)
+            by_level.setdefault(lowest.get(m.step, 0), []).append(m)
         size = 0.85 * st.label_size
         out: dict[str, tuple[float, float, float]] = {}
+        placed: list[tuple[Mark, tuple[float, float, float]]] = []
         for lvl, ms in sorted(by_level.items()):
             z = ZOOM_LEVELS[lvl]
             f = self.letter_scale_at(z) * z if st.camera else 1.0
-            taken = []
+            # the tags placed at less magnified levels, as they stand at this one
+            taken = [label_box((px := self.vp.px(*m.geom))[0] * z + rel[0] * f, px[1] * z + rel[1] * f,
+                               sc.display_name(m.name), size * f, st.label_font, st.label_italic, HALO_PX / 2 * f)
+                     for m, rel in placed]
             for m in self.scene.marks:
                 spot = self._spots.get(m.id) if m.kind == "point" and m.label else None
                 if spot is None or (spot[3] and lvl < THIN_FROM) or f" h{lvl}" in self._hidden_at.get(m.id, ""):
@@ -570,10 +587,12 @@ class Drawing:
                               sc.display_name(m.name)))
             got = place(items, size * f, [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
                         font=st.label_font, italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * f)
+            byid = {m.id: m for m in ms}
             for i, _r, _s, (zx, zy), _d, _t in items:
                 if i in got:
                     x, y, dist, _thin = got[i]
                     out[i] = ((x - zx) / f, (y - zy) / f, dist)
+                    placed.append((byid[i], out[i]))
         return out
 
     @property
@@ -723,8 +742,13 @@ class Drawing:
         """The steps that made what step k's instrument is set on and what its caption names."""
         if not self.style.input_colour:
             return frozenset()
-        sc = self.scene
-        return frozenset(s for s in (sc.step_of(n) for n in sc.inputs(k) | sc.tagged(k)) if s is not None and s < k)
+        done = self.__dict__.setdefault("_input_steps", {})  # asked by the tags' placing and by the player
+        got = done.get(k)
+        if got is None:
+            sc = self.scene
+            got = done[k] = frozenset(s for s in (sc.step_of(n) for n in sc.inputs(k) | sc.tagged(k))
+                                      if s is not None and s < k)
+        return got
 
     def step_class(self, s: int, k: int, *, mark_steps: bool, inputs: frozenset[int] = frozenset(),
                    layer: str = "") -> str:

@@ -170,7 +170,8 @@ class Style:
             rules.append(f".inp>.pt{{fill:{ic};stroke:{ic};stroke-width:2}}")
             rules.append(f".inp .lb{{fill:{ic};stroke:none}}")
         if self.name_tags:
-            rules.append(f".tag{{display:none;font-size:{fmt(0.85 * self.label_size)}px}}")
+            # a tag at the letters' size: the player holds letters at 9.5 px at least, a smaller tag would fall below 9
+            rules.append(".tag{display:none}")
             rules.append(".cur .tag,.inp .tag{display:inline}")
         # Plate looks and furniture (construct.render.plate), and the paper-coloured halo
         # behind every letter, drawn as a copy beneath it (cairosvg has no paint-order).
@@ -563,7 +564,7 @@ class Drawing:
         by_level: dict[int, list[Mark]] = {}
         for m in tags:
             by_level.setdefault(lowest.get(m.step, 0), []).append(m)
-        size = 0.85 * st.label_size
+        size = st.label_size
         out: dict[str, tuple[float, float, float]] = {}
         placed: list[tuple[Mark, tuple[float, float, float]]] = []
         for lvl, ms in sorted(by_level.items()):

@@ -223,14 +223,19 @@ def player_window(screen: tuple[float, float]) -> tuple[float, float]:
     return (max(screen[0] - PLAYER_SIDE_PX, 1.0), screen[1] * PLAYER_HEIGHT)
 
 
-def player_letter_scale(q: float) -> float:
-    """The player's ``--ls`` in a view of *q* user units per screen pixel (its script's ``put``): letters
-    and points are drawn this many times their size about their points, 12 px on the screen, never below 9.5.
+def player_letter_scale(q: float, zoom: float = 1.0, level_zoom: float = 1.0) -> float:
+    """The player's ``--ls`` in a view of *q* user units per screen pixel magnifying *zoom* times, drawn at a
+    zoom level of *level_zoom* (its script's ``put``): letters and points are drawn this many times their
+    size about their points, 12 px on the screen, never below 9.5, as large beside the points as at the
+    level's own zoom.
 
     >>> player_letter_scale(2.0), player_letter_scale(1.1), player_letter_scale(0.5)
     (1.5833333333333333, 1.0, 0.5)
+    >>> round(player_letter_scale(1.0, 1.4, 1.0), 4)  # the whole figure's look magnified 1.4 times
+    0.7917
     """
-    return min(max(1.0, 9.5 * q / 12.0), q)
+    ql = q * zoom / level_zoom
+    return min(max(1.0, 9.5 * ql / 12.0), ql) * level_zoom / zoom
 
 
 def zoom_level(zoom: float, levels: tuple[float, ...]) -> int:
@@ -318,8 +323,9 @@ class _Views:
             w, h = player_window(self.screen)
             cx, cy = (b[0] + b[2]) / 2, (b[1] + b[3]) / 2
             seen = (cx - w * q / 2, cy - h * q / 2, cx + w * q / 2, cy + h * q / 2)
-            level = zoom_level(full_w / max(b[2] - b[0], 1e-12), self.sheet.levels)
-            out.append(_Layout(_runs(ks), seen, q, level, player_letter_scale(q), q))
+            zoom = full_w / max(b[2] - b[0], 1e-12)
+            level = zoom_level(zoom, self.sheet.levels)
+            out.append(_Layout(_runs(ks), seen, q, level, player_letter_scale(q, zoom, self.sheet.levels[level]), q))
         return out
 
     def text_box(self, t, lay: _Layout) -> Box:

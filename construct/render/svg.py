@@ -357,11 +357,73 @@ class Drawing:
             from .camera import step_views
 
             n = len(self.scene.steps)
-            got = (step_views(self.scene, self.full_view, self.scene.bbox, self.vp.px, self.vp.scale,
-                              collapse=self.style.done_opacity <= 0.0)
+            got = (self._clear_edges(step_views(self.scene, self.full_view, self.scene.bbox, self.vp.px,
+                                                self.vp.scale, collapse=self.style.done_opacity <= 0.0))
                    if self.style.camera else [self.full_view] * n)
             self.__dict__["_views"] = got
         return got
+
+    def _clear_edges(self, views: list) -> list:
+        """The views widened so that no letter stands across the edge of the player's window.
+
+        A magnified view cuts the figure, and a letter cut in half by the window's edge cannot be
+        read.  The player shows a view in its window (:data:`PLAYER_FIGURE_PX`, the view's box
+        widened to the window's shape) with letters at its letter scale about their points; a view
+        whose window cuts a letter is widened about its centre until it takes the letter in
+        (a few rounds: the letters shrink as the view grows), up to the whole figure.
+        """
+        import numpy as np
+
+        from .camera import ZOOM_LEVELS, level
+        from .lettering import label_box
+
+        st = self.style
+        rows = []
+        for m in self.scene.marks:
+            spot = self._spots.get(m.id) if m.kind == "point" and m.label else None
+            if spot is None:
+                continue
+            px, py = self.vp.px(*m.geom)
+            b = label_box(spot[0], spot[1], m.label, st.label_size, st.label_font, st.label_italic)
+            rows.append((px, py, b[0] - px, b[1] - py, b[2] - px, b[3] - py))
+        if not rows:
+            return views
+        a = np.array(rows)
+        full = self.full_view
+        W, H = PLAYER_FIGURE_PX
+        done: dict = {}
+        out = []
+        for v in views:
+            if v == full:
+                out.append(v)
+                continue
+            if v not in done:
+                x, y, w, h = v
+                cx, cy = x + w / 2, y + h / 2
+                for _ in range(6):
+                    z = full[2] / w
+                    zl = ZOOM_LEVELS[level(z)]
+                    q = max(w / W, h / H)
+                    ql = q * z / zl
+                    ls = min(max(1.0, 9.5 * ql / 12.0), ql) * zl / z  # the player's --ls
+                    hw, hh = W * q / 2, H * q / 2
+                    x0, y0 = a[:, 0] + ls * a[:, 2] - cx, a[:, 1] + ls * a[:, 3] - cy
+                    x1, y1 = a[:, 0] + ls * a[:, 4] - cx, a[:, 1] + ls * a[:, 5] - cy
+                    meet = (x0 < hw) & (x1 > -hw) & (y0 < hh) & (y1 > -hh)
+                    cut = meet & ((x0 < -hw) | (x1 > hw) | (y0 < -hh) | (y1 > hh))
+                    if not cut.any():
+                        break
+                    g = max(float(np.maximum(-x0[cut], x1[cut]).max()) / hw,
+                            float(np.maximum(-y0[cut], y1[cut]).max()) / hh) * 1.02
+                    w, h = w * g, h * g
+                    if w >= full[2] or h >= full[3]:
+                        break
+                if w >= full[2] or h >= full[3]:
+                    done[v] = full
+                else:
+                    done[v] = (round(cx - w / 2, 2), round(cy - h / 2, 2), round(w, 2), round(h, 2))
+            out.append(done[v])
+        return out
 
     def camera_view(self, k: int) -> tuple[float, float, float, float]:
         """Step k's view (the whole figure for k = 0 and past the end)."""

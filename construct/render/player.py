@@ -240,11 +240,11 @@ li a.later{color:#bbb}
     return Math.max(v[2] / r.width, v[3] / r.height);
   }
   function put(v) {  // show view *v*: letters and points at their screen size (12 px, never below 9.5 px)
-    // as large beside the points as at the zoom of the view's level (where the letters were placed): the
-    // screen size the level's zoom gives, the picture of the level magnified as a whole
+    // the letter scale of the view's zoom level (the letters were placed for it): the level's picture
+    // magnified as a whole, letters never smaller on the screen than at the level's own zoom
     var q = ratio(v), zr = full[2] / v[2], zl = data.levels[level] || 1, ql = q * zr / zl;
     svg.setAttribute("viewBox", v.map(function (x) { return x.toFixed(2); }).join(" "));
-    svg.style.setProperty("--ls", (Math.min(Math.max(1, 9.5 * ql / 12), ql) * zl / zr).toFixed(4));
+    svg.style.setProperty("--ls", Math.min(Math.max(1, 9.5 * ql / 12), ql).toFixed(4));
     var ring = document.getElementById("ring");
     if (ring) {
       ring.setAttribute("visibility", ringAt ? "visible" : "hidden");
@@ -292,7 +292,7 @@ li a.later{color:#bbb}
     // the camera: the step's view (the whole figure at the ends or without the magnifier), reached smoothly
     var view = st && zoom.checked ? data.views[st.v] : full;
     var z = full[2] / view[2], lvl = 0;
-    data.levels.forEach(function (l, i) { if (z >= 0.93 * l) { lvl = i; } });
+    data.levels.forEach(function (l, i) { if (z >= 0.999 * l) { lvl = i; } });
     svg.setAttribute("class", "zl" + lvl);
     level = lvl;
     ringAt = st && k < n ? (st.r || null) : null;

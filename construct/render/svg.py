@@ -405,7 +405,7 @@ class Drawing:
                     zl = ZOOM_LEVELS[level(z)]
                     q = max(w / W, h / H)
                     ql = q * z / zl
-                    ls = min(max(1.0, 9.5 * ql / 12.0), ql) * zl / z  # the player's --ls
+                    ls = min(max(1.0, 9.5 * ql / 12.0), ql)  # the player's --ls
                     hw, hh = W * q / 2, H * q / 2
                     x0, y0 = a[:, 0] + ls * a[:, 2] - cx, a[:, 1] + ls * a[:, 3] - cy
                     x1, y1 = a[:, 0] + ls * a[:, 4] - cx, a[:, 1] + ls * a[:, 5] - cy

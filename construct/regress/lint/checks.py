@@ -226,23 +226,23 @@ def player_window(screen: tuple[float, float]) -> tuple[float, float]:
 def player_letter_scale(q: float, zoom: float = 1.0, level_zoom: float = 1.0) -> float:
     """The player's ``--ls`` in a view of *q* user units per screen pixel magnifying *zoom* times, drawn at a
     zoom level of *level_zoom* (its script's ``put``): letters and points are drawn this many times their
-    size about their points, 12 px on the screen, never below 9.5, as large beside the points as at the
-    level's own zoom.
+    size about their points, 12 px on the screen at the level's own zoom, never below 9.5 there, and the
+    same in every view of the level (the level's picture, for which the letters were placed, magnified).
 
     >>> player_letter_scale(2.0), player_letter_scale(1.1), player_letter_scale(0.5)
     (1.5833333333333333, 1.0, 0.5)
     >>> round(player_letter_scale(1.0, 1.4, 1.0), 4)  # the whole figure's look magnified 1.4 times
-    0.7917
+    1.1083
     """
     ql = q * zoom / level_zoom
-    return min(max(1.0, 9.5 * ql / 12.0), ql) * level_zoom / zoom
+    return min(max(1.0, 9.5 * ql / 12.0), ql)
 
 
 def zoom_level(zoom: float, levels: tuple[float, ...]) -> int:
     """The player's class ``zlN`` for a view magnifying *zoom* times: the nearest level below (as its script)."""
     i = 0
     for j, z in enumerate(levels):
-        if zoom >= 0.93 * z:
+        if zoom >= 0.999 * z:
             i = j
     return i
 

@@ -318,7 +318,10 @@ class Drawing:
             self.vp = Viewport(win.xmin, win.ymax, win.scale, canvas.width, canvas.height, 0.0, win.left, win.top)
         self.doc = svgdoc.Writer()
         self._spots = self._letter_spots(self.vp)
+        #: per zoom level, every letter shown there: its offset from its point (canvas units, moves applied)
+        self._level_rel: dict[int, dict[str, tuple[float, float]]] = {}
         self._hidden_at, self._level_rules = self._zoom_placing() if style.camera else ({}, [])
+        self._tag_hidden: dict[str, str] = {}
         self._tag_spots = self._place_tags() if style.name_tags else {}
         # layer -> [(step, [element, ...]), ...] in step order: each step's elements of that layer.
         self.groups: dict[str, list[tuple[int, list[Any]]]] = {name: [] for name in self.LAYERS}
@@ -579,6 +582,9 @@ class Drawing:
                 x, y = self._spots[i][0], self._spots[i][1]
                 px, py = zx / z, zy / z
                 ddx, ddy = (spot[0] - zx) / f - (x - px), (spot[1] - zy) / f - (y - py)
+                if abs(ddx) <= 0.5 and abs(ddy) <= 0.5:
+                    ddx = ddy = 0.0
+                self._level_rel.setdefault(lvl, {})[i] = (x - px + ddx, y - py + ddy)
                 if abs(ddx) > 0.5 or abs(ddy) > 0.5:
                     moves.setdefault((i, f"translate({fmt(ddx)}px,{fmt(ddy)}px)"), []).append(lvl)
                     classes[i] = classes.get(i, "") + " lbm"  # moved at some level: the group carries an id
@@ -626,36 +632,72 @@ class Drawing:
         by_level: dict[int, list[Mark]] = {}
         for m in tags:
             by_level.setdefault(lowest.get(m.step, 0), []).append(m)
+        shown_at: dict[int, set[int]] = {m.step: {lowest.get(m.step, 0)} for m in tags}
+        if st.camera:
+            for m in tags:
+                shown_at[m.step].add(lvl_of(m.step))
+            for k in range(1, len(sc.steps) + 1):
+                for s_ in self.input_steps(k):
+                    if s_ in shown_at:
+                        shown_at[s_].add(lvl_of(k))
         size = st.label_size
-        out: dict[str, tuple[float, float, float]] = {}
-        placed: list[tuple[Mark, tuple[float, float, float]]] = []
-        for lvl, ms in sorted(by_level.items()):
+        pts = {m.id: self.vp.px(*m.geom) for m in sc.marks if m.kind == "point"}
+        labels = [m for m in sc.marks if m.kind == "point" and m.label and m.id in self._spots]
+
+        def frame(lvl: int):
+            """(zoom, letter factor, boxes of the letters shown at level *lvl*) in that level's geometry."""
             z = ZOOM_LEVELS[lvl]
             f = self.letter_scale_at(z) * z if st.camera else 1.0
-            # the tags placed at less magnified levels, as they stand at this one
-            taken = [label_box((px := self.vp.px(*m.geom))[0] * z + rel[0] * f, px[1] * z + rel[1] * f,
-                               sc.display_name(m.name), size * f, st.label_font, st.label_italic, HALO_PX / 2 * f)
-                     for m, rel in placed]
-            for m in self.scene.marks:
-                spot = self._spots.get(m.id) if m.kind == "point" and m.label else None
-                if spot is None or (spot[3] and lvl < THIN_FROM) or f" h{lvl}" in self._hidden_at.get(m.id, ""):
-                    continue
-                px, py = self.vp.px(*m.geom)
-                taken.append(label_box(px * z + (spot[0] - px) * f, py * z + (spot[1] - py) * f, m.label,
-                                       st.label_size * f, st.label_font, st.label_italic, HALO_PX / 2 * f))
+            rel = self._level_rel.get(lvl)
+            boxes = []
+            for m in labels:
+                if rel is not None:
+                    if m.id not in rel:
+                        continue
+                    dx, dy = rel[m.id]
+                else:
+                    spot = self._spots[m.id]
+                    if spot[3] and lvl < THIN_FROM:
+                        continue
+                    dx, dy = spot[0] - pts[m.id][0], spot[1] - pts[m.id][1]
+                px, py = pts[m.id]
+                boxes.append(label_box(px * z + dx * f, py * z + dy * f, m.label, st.label_size * f, st.label_font,
+                                       st.label_italic, HALO_PX / 2 * f))
+            return z, f, boxes
+
+        out: dict[str, tuple[float, float, float]] = {}
+        for lvl, ms in sorted(by_level.items()):
+            z, f, taken = frame(lvl)
             items = []
             for m in ms:
-                px, py = self.vp.px(*m.geom)
+                px, py = pts[m.id]
                 items.append((m.id, m.role, m.step, (px * z, py * z), label_offset_direction(m.geom, scale=span),
                               sc.display_name(m.name)))
+            # the tags are checked against each other level by level below
             got = place(items, size * f, [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
                         font=st.label_font, italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * f)
-            byid = {m.id: m for m in ms}
             for i, _r, _s, (zx, zy), _d, _t in items:
                 if i in got:
                     x, y, dist, _thin = got[i]
                     out[i] = ((x - zx) / f, (y - zy) / f, dist)
-                    placed.append((byid[i], out[i]))
+        # every level a tag is seen at: it holds its spot there, or it gives way there (class hN),
+        # never stacked on a letter, a point, a result line or a tag seen with it
+        hidden: dict[str, str] = {}
+        byid = {m.id: m for m in tags}
+        for lvl in sorted({v for vs in shown_at.values() for v in vs}):
+            z, f, taken = frame(lvl)
+            here = [byid[i] for i in out if lvl in shown_at[byid[i].step]]
+            items = [(m.id, m.role, m.step, (pts[m.id][0] * z, pts[m.id][1] * z), (1.0, 0.0), sc.display_name(m.name))
+                     for m in here]
+            prefer = {m.id: (out[m.id][0] * f, out[m.id][1] * f, out[m.id][2]) for m in here}
+            got = place(items, size * f, [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
+                        font=st.label_font, italic=st.label_italic, taken=taken, keep=False, prefer=prefer,
+                        halo=HALO_PX / 2 * f)
+            for i, _r, _s, (zx, zy), _d, _t in items:
+                spot = got.get(i)
+                if spot is None or abs(spot[0] - zx - prefer[i][0]) > 1e-6 or abs(spot[1] - zy - prefer[i][1]) > 1e-6:
+                    hidden[i] = hidden.get(i, "") + f" h{lvl}"
+        self._tag_hidden = hidden
         return out
 
     @property
@@ -696,7 +738,8 @@ class Drawing:
             if tag is not None:
                 # Shown only while its step is current or an input (CSS), placed clear of the letters.
                 # no id of its own: it is its point's name, and a gallery carries thousands of them
-                yield "labels", self._letter(vp, m, tag, self.scene.display_name(m.name), "lb tag", {}, halo=False)
+                yield "labels", self._letter(vp, m, tag, self.scene.display_name(m.name), "lb tag", {}, halo=False,
+                                             extra=self._tag_hidden.get(m.id, ""))
             if m.label:
                 box = self._place_label(m, vp, placed)
                 if box is not None:

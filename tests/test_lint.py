@@ -396,3 +396,15 @@ def test_the_players_current_points_are_seen_at_once(tmp_path):
     assert report.views > 50 and [f.line() for f in report.findings if f.kind == "small-mark"] == []
     # and its name tags (operands of the current step) are placed, not stacked on each other or on points
     assert report.ok, report.text()
+
+
+def test_the_placer_keeps_a_letters_halo_off_a_thick_result_line():
+    # a point on a result line 6 units wide: the letter's box (with its halo) keeps 3 units from the line's axis
+    from construct.render.lettering import label_box, place
+
+    for direction in ((0.0, 1.0), (1.0, 0.0), (0.0, -1.0)):
+        got = place([("a", "result", 1, (100.0, 100.0), direction, "A")], 12.0, lines=[(0.0, 100.0, 200.0, 100.0)],
+                    reach=3.0)
+        x, y, _dist, thin = got["a"]
+        box = label_box(x, y, "A", 12.0)
+        assert not thin and (box[3] <= 97.0 or box[1] >= 103.0)

@@ -194,8 +194,10 @@ class _Lines:
                 key = (math.floor((piece[0] + piece[2]) / 2 / cell), math.floor((piece[1] + piece[3]) / 2 / cell))
                 self.cells.setdefault(key, []).append(piece)
 
-    def meets(self, box) -> bool:
+    def meets(self, box, reach: float = 0.0) -> bool:
         c = self.cell
+        if reach:
+            box = (box[0] - reach, box[1] - reach, box[2] + reach, box[3] + reach)
         for i in range(math.floor(box[0] / c) - 1, math.floor(box[2] / c) + 2):
             for j in range(math.floor(box[1] / c) - 1, math.floor(box[3] / c) + 2):
                 for seg in self.cells.get((i, j), ()):
@@ -209,7 +211,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
           lines: Sequence[tuple[float, float, float, float]] = (), *, font: str = DEFAULT_FONT,
           italic: bool = False, taken: Iterable[tuple[float, float, float, float]] = (),
           keep: bool = True, prefer: "dict[str, tuple[float, float, float]] | None" = None,
-          halo: float = HALO_PX / 2) -> dict[str, tuple]:
+          halo: float = HALO_PX / 2, reach: float = 0.0) -> dict[str, tuple]:
     """Baseline positions (pixels) for letters: {id: (x, y, distance in letter heights, thin)}.
 
     A letter set farther than :data:`LEADER_FROM` letter heights from its point gets a
@@ -223,7 +225,8 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     a letter that finds no free spot is left out, whatever its rank.  *prefer*:
     per letter an offset from its point (and its distance in letter heights)
     tried before the ring, so that a letter stays where it was when it can.  *halo*: how far
-    the halo reaches round the ink at *size* (the player scales a letter with its halo).
+    the halo reaches round the ink at *size* (the player scales a letter with its halo).  *reach*:
+    half the width of a result line (a halo reaching over the line's edge erases part of it).
     """
     grid = _Grid(2.0 * size)
     for b in taken:
@@ -242,7 +245,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
         if prefer and mid in prefer:
             ox, oy, od = prefer[mid]
             box = label_box(px + ox, py + oy, text, size, font, italic, halo)
-            if grid.free(box) and not strokes.meets(box):
+            if grid.free(box) and not strokes.meets(box, reach):
                 spot = (px + ox, py + oy, box, od)
         for dist in (() if spot else _DISTANCES):
             for turn in _TURNS:
@@ -254,7 +257,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                 box = label_box(lx, ly, text, size, font, italic, halo)
                 if first is None:
                     first = (lx, ly, box, dist)
-                if grid.free(box) and not strokes.meets(box):
+                if grid.free(box) and not strokes.meets(box, reach):
                     spot = (lx, ly, box, dist)
                     break
             if spot:

@@ -512,7 +512,7 @@ class Drawing:
         self._letter_items = items
         k = self.letter_scale
         size = k * st.label_size
-        spots = place(items, size, dots, lines, font=st.label_font, italic=st.label_italic, halo=HALO_PX / 2 * k)
+        spots = place(items, size, dots, lines, font=st.label_font, italic=st.label_italic, halo=HALO_PX / 2 * k, reach=self.line_reach)
         thin = [it for it in items if spots.get(it[0], (0, 0, 0, False))[3]]
         if thin and st.camera:
             # the letters the whole figure has no room for, placed for the magnified views
@@ -527,7 +527,7 @@ class Drawing:
                      for i, (x, y, _d, t) in spots.items() if not t]
             again = place([(i, r, s_, (p[0] * z, p[1] * z), d, t) for i, r, s_, p, d, t in thin], size,
                           [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
-                          font=st.label_font, italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * k)
+                          font=st.label_font, italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * k, reach=self.line_reach)
             for i, r, s_, p, d, t in thin:
                 got = again.get(i)
                 if got is None and r != "result":
@@ -573,7 +573,7 @@ class Drawing:
             prefer = {i: ((self._spots[i][0] - p[0] / z) * f, (self._spots[i][1] - p[1] / z) * f, self._spots[i][2])
                       for i, _r, _s, p, _d, _t in its}
             got = place(its, size * f, [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
-                        font=st.label_font, italic=st.label_italic, keep=False, prefer=prefer, halo=HALO_PX / 2 * f)
+                        font=st.label_font, italic=st.label_italic, keep=False, prefer=prefer, halo=HALO_PX / 2 * f, reach=self.line_reach)
             for i, _r, _s, (zx, zy), _d, _t in its:
                 spot = got.get(i)
                 if spot is None:
@@ -675,7 +675,7 @@ class Drawing:
                               sc.display_name(m.name)))
             # the tags are checked against each other level by level below
             got = place(items, size * f, [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
-                        font=st.label_font, italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * f)
+                        font=st.label_font, italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * f, reach=self.line_reach)
             for i, _r, _s, (zx, zy), _d, _t in items:
                 if i in got:
                     x, y, dist, _thin = got[i]
@@ -692,13 +692,23 @@ class Drawing:
             prefer = {m.id: (out[m.id][0] * f, out[m.id][1] * f, out[m.id][2]) for m in here}
             got = place(items, size * f, [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
                         font=st.label_font, italic=st.label_italic, taken=taken, keep=False, prefer=prefer,
-                        halo=HALO_PX / 2 * f)
+                        halo=HALO_PX / 2 * f, reach=self.line_reach)
             for i, _r, _s, (zx, zy), _d, _t in items:
                 spot = got.get(i)
                 if spot is None or abs(spot[0] - zx - prefer[i][0]) > 1e-6 or abs(spot[1] - zy - prefer[i][1]) > 1e-6:
                     hidden[i] = hidden.get(i, "") + f" h{lvl}"
         self._tag_hidden = hidden
         return out
+
+    @property
+    def line_reach(self) -> float:
+        """Half the width of the widest result line, in the units letters are placed in: canvas pixels,
+        or with a camera the player's screen pixel at the whole figure (its strokes do not scale, and
+        the placing works in each zoom level's magnified canvas, where that pixel is the same)."""
+        half = max(self.style.result_width, 2.2) / 2  # 2.2: the plates' heavy look
+        if not self.style.camera:
+            return half
+        return half * max(self.vp.width / PLAYER_FIGURE_PX[0], self.drawing_height / PLAYER_FIGURE_PX[1])
 
     @property
     def extra_css(self) -> str:

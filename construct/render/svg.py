@@ -323,6 +323,8 @@ class Drawing:
         self._hidden_at, self._level_rules = self._zoom_placing() if style.camera else ({}, [])
         self._tag_hidden: dict[str, str] = {}
         self._tag_spots = self._place_tags() if style.name_tags else {}
+        if style.camera and self._tag_spots:
+            self._clear_tag_edges()
         # layer -> [(step, [element, ...]), ...] in step order: each step's elements of that layer.
         self.groups: dict[str, list[tuple[int, list[Any]]]] = {name: [] for name in self.LAYERS}
         placed: list[tuple[float, float, float, float]] = []
@@ -381,17 +383,33 @@ class Drawing:
         from .lettering import label_box
 
         st = self.style
-        rows = []
-        for m in self.scene.marks:
-            spot = self._spots.get(m.id) if m.kind == "point" and m.label else None
-            if spot is None:
-                continue
-            px, py = self.vp.px(*m.geom)
-            b = label_box(spot[0], spot[1], m.label, st.label_size, st.label_font, st.label_italic)
-            rows.append((px, py, b[0] - px, b[1] - py, b[2] - px, b[3] - py))
-        if not rows:
+        from .camera import THIN_FROM
+
+        marks = [m for m in self.scene.marks if m.kind == "point" and m.label and m.id in self._spots]
+        if not marks:
             return views
-        a = np.array(rows)
+        arrays: dict[int, Any] = {}
+
+        def letters_at(lvl: int):
+            """The letters level *lvl* shows, as (point, box about the point) rows, moves applied."""
+            if lvl not in arrays:
+                rel = self._level_rel.get(lvl)
+                rows = []
+                for m in marks:
+                    px, py = self.vp.px(*m.geom)
+                    spot = self._spots[m.id]
+                    if rel is not None:
+                        if m.id not in rel:
+                            continue
+                        dx, dy = rel[m.id]
+                    elif spot[3] and lvl < THIN_FROM:
+                        continue
+                    else:
+                        dx, dy = spot[0] - px, spot[1] - py
+                    b = label_box(px + dx, py + dy, m.label, st.label_size, st.label_font, st.label_italic)
+                    rows.append((px, py, b[0] - px, b[1] - py, b[2] - px, b[3] - py))
+                arrays[lvl] = np.array(rows) if rows else np.zeros((0, 6))
+            return arrays[lvl]
         full = self.full_view
         W, H = PLAYER_FIGURE_PX
         done: dict = {}
@@ -406,6 +424,7 @@ class Drawing:
                 for _ in range(6):
                     z = full[2] / w
                     zl = ZOOM_LEVELS[level(z)]
+                    a = letters_at(level(z))
                     q = max(w / W, h / H)
                     ql = q * z / zl
                     ls = min(max(1.0, 9.5 * ql / 12.0), ql)  # the player's --ls
@@ -427,6 +446,50 @@ class Drawing:
                     done[v] = (round(cx - w / 2, 2), round(cy - h / 2, 2), round(w, 2), round(h, 2))
             out.append(done[v])
         return out
+
+    def _clear_tag_edges(self) -> None:
+        """Widen a view whose window cuts a name tag it shows (its step current or an input), as far as
+        the view's zoom level allows (the tags were placed for that level)."""
+        from .camera import ZOOM_LEVELS, level, zoom_of
+        from .lettering import label_box
+
+        st, sc = self.style, self.scene
+        full = self.full_view
+        W, H = PLAYER_FIGURE_PX
+        marks = {m.step: m for m in sc.marks if m.id in self._tag_spots}
+        views = list(self.views)
+        by_view: dict[tuple, list[int]] = {}
+        for k, v in enumerate(views, start=1):
+            if v != full:
+                by_view.setdefault(v, []).append(k)
+        for v, ks in by_view.items():
+            x, y, w, h = v
+            cx, cy = x + w / 2, y + h / 2
+            lvl = level(zoom_of(v, full))
+            zl = ZOOM_LEVELS[lvl]
+            shown = [marks[s] for k in ks for s in {k} | set(self.input_steps(k)) if s in marks
+                     and f" h{lvl}" not in self._tag_hidden.get(marks[s].id, "")]
+            if not shown:
+                continue
+            q = max(w / W, h / H)
+            ls = (lambda ql: min(max(1.0, 9.5 * ql / 12.0), ql))(q * (full[2] / w) / zl)
+            grow = 1.0
+            for m in shown:
+                px, py = self.vp.px(*m.geom)
+                dx, dy, _d = self._tag_spots[m.id]
+                b = label_box(px + dx, py + dy, sc.display_name(m.name), st.label_size, st.label_font,
+                              st.label_italic)
+                b = (px + ls * (b[0] - px) - cx, py + ls * (b[1] - py) - cy, px + ls * (b[2] - px) - cx,
+                     py + ls * (b[3] - py) - cy)
+                hw, hh = W * q / 2, H * q / 2
+                if b[0] < hw and b[2] > -hw and b[1] < hh and b[3] > -hh and (
+                        b[0] < -hw or b[2] > hw or b[1] < -hh or b[3] > hh):
+                    grow = max(grow, max(-b[0], b[2]) / hw * 1.02, max(-b[1], b[3]) / hh * 1.02)
+            if grow > 1.0 and level(full[2] / (w * grow)) == lvl and w * grow < full[2]:
+                nv = (round(cx - w * grow / 2, 2), round(cy - h * grow / 2, 2), round(w * grow, 2), round(h * grow, 2))
+                for k in ks:
+                    views[k - 1] = nv
+        self.__dict__["_views"] = views
 
     def camera_view(self, k: int) -> tuple[float, float, float, float]:
         """Step k's view (the whole figure for k = 0 and past the end)."""

@@ -408,3 +408,19 @@ def test_the_placer_keeps_a_letters_halo_off_a_thick_result_line():
         x, y, _dist, thin = got["a"]
         box = label_box(x, y, "A", 12.0)
         assert not thin and (box[3] <= 97.0 or box[1] >= 103.0)
+
+
+def test_the_placers_box_holds_an_italic_letters_ink():
+    # an italic A leans out of its advance at the foot: the placer's box must hold its outline (matplotlib's
+    # TextPath of the same font), or a letter beside a line is placed with its foot on it
+    from matplotlib.font_manager import FontProperties, findfont
+    from matplotlib.textpath import TextPath
+
+    from construct.render.lettering import text_box
+
+    font = "'DejaVu Serif', serif"
+    prop = FontProperties(fname=findfont(FontProperties(family="DejaVu Serif", style="italic")))
+    for text in ("A₁", "f", "W"):
+        x0, y0, x1, y1 = text_box(0.0, 0.0, text, 12.0, font, True, anchor="start")
+        ext = TextPath((0, 0), text, size=12.0, prop=prop).get_extents()
+        assert x0 <= ext.x0 + 0.3 and x1 >= ext.x1 - 0.3, (text, (x0, x1), (ext.x0, ext.x1))

@@ -83,8 +83,9 @@ def _face(font: str, italic: bool) -> Any:
 
 
 @functools.lru_cache(maxsize=4096)
-def _glyph(font: str, italic: bool, char: str) -> tuple[float, float, float]:
-    """(advance, top, bottom) of one character in em, y up (cached: a figure has few distinct characters)."""
+def _glyph(font: str, italic: bool, char: str) -> tuple[float, float, float, float, float]:
+    """(advance, top, bottom, left, right) of one character in em, y up, left and right of its ink from
+    the pen (cached: a figure has few distinct characters)."""
     from matplotlib import ft2font
 
     face = _face(font, italic)
@@ -93,15 +94,23 @@ def _glyph(font: str, italic: bool, char: str) -> tuple[float, float, float]:
         flags = ft2font.LOAD_NO_HINTING
     g = face.load_char(ord(char), flags=flags)
     x0, y0, x1, y1 = g.bbox  # 26.6 fixed point at 100 px
-    return g.linearHoriAdvance / 65536.0 / 100.0, y1 / 6400.0, y0 / 6400.0
+    return g.linearHoriAdvance / 65536.0 / 100.0, y1 / 6400.0, y0 / 6400.0, x0 / 6400.0, x1 / 6400.0
 
 
 @functools.lru_cache(maxsize=65536)
-def _metrics(text: str, font: str, italic: bool) -> tuple[float, float, float]:
-    """(advance, top, bottom) of *text* in em: a figure's letters recur, each is measured once."""
+def _metrics(text: str, font: str, italic: bool) -> tuple[float, float, float, float, float]:
+    """(advance, top, bottom, left, right) of *text* in em: left and right the reach of its ink or its
+    advance, whichever is wider (an italic letter leans out of its advance); a figure's letters recur,
+    each is measured once."""
     glyphs = [_glyph(font, italic, c) for c in text]
-    return (sum(g[0] for g in glyphs), max((g[1] for g in glyphs), default=0.7),
-            min(min((g[2] for g in glyphs), default=0.0), 0.0))
+    adv = sum(g[0] for g in glyphs)
+    left, right, pen = 0.0, adv, 0.0
+    for g in glyphs:
+        if g[4] > g[3]:  # a glyph with ink
+            left, right = min(left, pen + g[3]), max(right, pen + g[4])
+        pen += g[0]
+    return (adv, max((g[1] for g in glyphs), default=0.7), min(min((g[2] for g in glyphs), default=0.0), 0.0),
+            left, right)
 
 
 def text_width(text: str, size: float, font: str = DEFAULT_FONT, italic: bool = False) -> float:
@@ -118,10 +127,10 @@ def text_width(text: str, size: float, font: str = DEFAULT_FONT, italic: bool = 
 def text_box(x: float, y: float, text: str, size: float, font: str = DEFAULT_FONT, italic: bool = False,
              anchor: str = "middle") -> tuple[float, float, float, float]:
     """The box (pixels, y down) the inked *text* covers when set at baseline (x, y) with *anchor*."""
-    adv, top, bottom = _metrics(text, font, italic)
+    adv, top, bottom, left, right = _metrics(text, font, italic)
     w = size * adv
     x0 = x - w / 2 if anchor == "middle" else (x - w if anchor == "end" else x)
-    return (x0, y - top * size, x0 + w, y - bottom * size)
+    return (x0 + left * size, y - top * size, x0 + right * size, y - bottom * size)
 
 
 def label_box(x: float, y: float, text: str, size: float, font: str = DEFAULT_FONT,

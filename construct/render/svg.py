@@ -1215,6 +1215,19 @@ def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
         a0, sw = (0.0, 2 * math.pi) if m.kind == "circle" else (g[3], g[4])
         n = min(720, max(8, int(abs(sw) * math.sqrt(max(r * scale, 1.0) / 8.0)) + 1))
         return [(cx + r * math.cos(a0 + sw * i / n), cy + r * math.sin(a0 + sw * i / n)) for i in range(n + 1)]
+    if m.kind == "curve" and not m.straight and len(g) > 2:
+        # as drawn (curve_path): the Catmull-Rom pieces, which leave the chords where the curve bends
+        out = [tuple(g[0])]
+        for i in range(len(g) - 1):
+            p0, p1, p2 = g[i - 1] if i > 0 else g[i], g[i], g[i + 1]
+            p3 = g[i + 2] if i + 2 < len(g) else g[i + 1]
+            c1 = (p1[0] + (p2[0] - p0[0]) / 6.0, p1[1] + (p2[1] - p0[1]) / 6.0)
+            c2 = (p2[0] - (p3[0] - p1[0]) / 6.0, p2[1] - (p3[1] - p1[1]) / 6.0)
+            for t in (0.25, 0.5, 0.75, 1.0):
+                s = 1 - t
+                out.append(tuple(s * s * s * a + 3 * s * s * t * b + 3 * s * t * t * c + t * t * t * d
+                                 for a, b, c, d in zip(p1, c1, c2, p2)))
+        return out
     return list(g)
 
 

@@ -474,6 +474,7 @@ class Drawing:
             q = max(w / W, h / H)
             ls = (lambda ql: min(max(1.0, 9.5 * ql / 12.0), ql))(q * (full[2] / w) / zl)
             grow = 1.0
+            pan = [0.0, 0.0]  # or, where growing would leave the level, the shift that takes the tag in
             for m in shown:
                 px, py = self.vp.px(*m.geom)
                 dx, dy, _d = self._tag_spots[m.id]
@@ -485,10 +486,19 @@ class Drawing:
                 if b[0] < hw and b[2] > -hw and b[1] < hh and b[3] > -hh and (
                         b[0] < -hw or b[2] > hw or b[1] < -hh or b[3] > hh):
                     grow = max(grow, max(-b[0], b[2]) / hw * 1.02, max(-b[1], b[3]) / hh * 1.02)
+                    for i, (lo, hi, half) in enumerate(((b[0], b[2], hw), (b[1], b[3], hh))):
+                        if lo < -half:
+                            pan[i] = min(pan[i], lo + half - 1.0)
+                        elif hi > half:
+                            pan[i] = max(pan[i], hi - half + 1.0)
             if grow > 1.0 and level(full[2] / (w * grow)) == lvl and w * grow < full[2]:
                 nv = (round(cx - w * grow / 2, 2), round(cy - h * grow / 2, 2), round(w * grow, 2), round(h * grow, 2))
-                for k in ks:
-                    views[k - 1] = nv
+            elif grow > 1.0:
+                nv = (round(x + pan[0], 2), round(y + pan[1], 2), w, h)
+            else:
+                continue
+            for k in ks:
+                views[k - 1] = nv
         self.__dict__["_views"] = views
 
     def camera_view(self, k: int) -> tuple[float, float, float, float]:

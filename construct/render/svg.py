@@ -760,6 +760,8 @@ class Drawing:
         for lvl in sorted({v for vs in shown_at.values() for v in vs}):
             z, f, taken = frame(lvl)
             here = [byid[i] for i in out if lvl in shown_at[byid[i].step]]
+            if all(lowest.get(m.step, 0) == lvl for m in here):
+                continue  # placed together at this level, against the same letters: nothing to check
             items = [(m.id, m.role, m.step, (pts[m.id][0] * z, pts[m.id][1] * z), (1.0, 0.0), sc.display_name(m.name))
                      for m in here]
             prefer = {m.id: (out[m.id][0] * f, out[m.id][1] * f, out[m.id][2]) for m in here}

@@ -459,10 +459,12 @@ def _on_points(sheet: Sheet, views: _Views, seen) -> list[Finding]:
     for i, d in enumerate(sheet.dots):
         grid.add((d.x - d.r, d.y - d.r, d.x + d.r, d.y + d.r), i)
     names = _point_names(sheet)
+    widest = max((d.r for d in sheet.dots), default=0.0)
     found: dict[tuple[int, int], list] = {}
     for lay, letters in seen:
+        reach = widest * max(lay.letter - 1.0, 0.0)  # the grid holds the discs at their drawn size
         for t, b, runs in letters:
-            for i in sorted(grid.near(_grow(b, CELL))):
+            for i in sorted(grid.near(_grow(b, reach) if reach else b)):
                 d = sheet.dots[i]
                 if d.ident is not None and d.ident == t.owner:
                     continue

@@ -692,8 +692,11 @@ class Drawing:
         # least magnified of those views (where the letters are largest beside the points)
         lowest: dict[int, int] = {}
         if st.camera:
+            full = self.full_view
+            step_levels = [level(zoom_of(v, full)) for v in self.views]
+
             def lvl_of(k: int) -> int:
-                return level(zoom_of(self.camera_view(k), self.full_view))
+                return step_levels[k - 1]
 
             steps = {m.step for m in tags}
             for m in tags:
@@ -738,6 +741,18 @@ class Drawing:
                                        st.label_italic, HALO_PX / 2 * f))
             return z, f, boxes
 
+        def near(items, z: float, f: float):
+            """The points and result lines (at zoom *z*) a tag of *items* could meet: within its reach."""
+            xs = [it[3][0] for it in items]
+            ys = [it[3][1] for it in items]
+            r = 8.0 * size * f
+            x0, y0, x1, y1 = min(xs) - r, min(ys) - r, max(xs) + r, max(ys) + r
+            ds = [(x * z, y * z) for x, y in dots if x0 <= x * z <= x1 and y0 <= y * z <= y1]
+            ls = [tuple(c * z for c in seg) for seg in lines
+                  if min(seg[0], seg[2]) * z <= x1 and max(seg[0], seg[2]) * z >= x0
+                  and min(seg[1], seg[3]) * z <= y1 and max(seg[1], seg[3]) * z >= y0]
+            return ds, ls
+
         out: dict[str, tuple[float, float, float]] = {}
         for lvl, ms in sorted(by_level.items()):
             z, f, taken = frame(lvl)
@@ -747,7 +762,7 @@ class Drawing:
                 items.append((m.id, m.role, m.step, (px * z, py * z), label_offset_direction(m.geom, scale=span),
                               sc.display_name(m.name)))
             # the tags are checked against each other level by level below
-            got = place(items, size * f, [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
+            got = place(items, size * f, *near(items, z, f),
                         font=st.label_font, italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * f, reach=self.line_reach)
             for i, _r, _s, (zx, zy), _d, _t in items:
                 if i in got:
@@ -765,7 +780,7 @@ class Drawing:
             items = [(m.id, m.role, m.step, (pts[m.id][0] * z, pts[m.id][1] * z), (1.0, 0.0), sc.display_name(m.name))
                      for m in here]
             prefer = {m.id: (out[m.id][0] * f, out[m.id][1] * f, out[m.id][2]) for m in here}
-            got = place(items, size * f, [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
+            got = place(items, size * f, *near(items, z, f),
                         font=st.label_font, italic=st.label_italic, taken=taken, keep=False, prefer=prefer,
                         halo=HALO_PX / 2 * f, reach=self.line_reach)
             for i, _r, _s, (zx, zy), _d, _t in items:

@@ -215,9 +215,12 @@ def test_a_camera_view_stored_on_a_step_is_read():
 
 
 def test_the_camera_may_come_from_the_players_data():
-    dot = '<circle class="pt" id="s0002-P" cx="300" cy="300" r="0.3"/>'
-    figure = steps_svg(group(1, label("A", 100, 100, "s0001-A-label")), group(2, dot),
+    # a small circle (2.4 units across: 2.4 px on the whole view) seen through a 140 x 100 view in the
+    # player's 985 x 700 px window: 17 px.  (A point would not grow: the player holds points at their size.)
+    mark = '<circle class="construction" id="s0002-c" cx="300" cy="300" r="1.2"/>'
+    figure = steps_svg(group(1, label("A", 100, 100, "s0001-A-label")), group(2, mark),
                        group(3, '<line class="construction" x1="0" y1="900" x2="900" y2="900"/>'))
+    assert [f.steps for f in lint_svg(figure, "p.svg") if f.kind == "small-mark"] == [((2, 2),)]
     data = {"n": 3, "steps": [{}, {"v": 0}, {}], "views": [[230, 250, 140, 100]]}
     assert [f for f in lint_svg(figure, "p.svg", data=data) if f.kind == "small-mark"] == []
 
@@ -277,38 +280,55 @@ def test_the_gallery_check_keeps_the_previous_gallery_when_asked(tmp_path):
 
 # --------------------------------------------------------------------------- real output
 
-def _star():
-    """A point A with twelve result lines through it, every 15°: wherever its letter goes, a line crosses it."""
+def _band():
+    """A lettered point A inside a band of result lines 0.008 apart (about 10 px on the canvas): a letter
+    with its halo is taller than the gap, so wherever the placer puts it, a result line runs through it."""
     from construct import Builder
+    from construct.kernel.rules import left_of
 
-    b = Builder("star", givens={})
-    b.given_point("A", 0.0, 0.0)
-    for i in range(12):
-        a = math.pi * i / 12
-        b.given_point(f"P{i}", math.cos(a), math.sin(a), label="")
-        b.given_point(f"Q{i}", -math.cos(a), -math.sin(a), label="")
-        b.line(f"l{i}", f"P{i}", f"Q{i}", role="result")
+    b = Builder("band", givens={})
+    for i in range(101):
+        y = -0.4 + 0.008 * i
+        b.given_point(f"L{i}", 0.0, y, label="")
+        b.given_point(f"R{i}", 1.0, y, label="")
+        b.line(f"h{i}", f"L{i}", f"R{i}", role="result")
+    b.given_point("T", 0.5, 0.5, label="")
+    b.given_point("U", 0.5, -0.5, label="")
+    b.line("v", "T", "U", role="construction")
+    b.intersect("A", "v", "h50", rule=left_of("L50", "R50"), role="result", labels={"A": "A"})  # never left out
     return b.figure()
 
 
-def test_the_renderers_output_is_read_and_its_collision_found(tmp_path):
+@pytest.mark.parametrize("style", ["plain", "historical"])
+def test_the_renderers_output_is_read_and_its_collision_found(tmp_path, style):
+    import re
+
+    from construct.regress.lint.sheet import read_sheet
     from construct.render.scene import build_scene
     from construct.render.svg import Drawing
+    from construct.render.styles import STYLES
 
-    text = Drawing(build_scene(_star())).layered()
-    found = lint_svg(text, "star.svg")
+    text = Drawing(build_scene(_band()), STYLES[style]).layered()
+    found = lint_svg(text, "band.svg")
     assert any(f.kind == "struck" and f.labels == ("A",) for f in found)
+    # the letter lint reads is the one drawn about A: its group's point is A's marker, its box beside it
+    (circle,) = re.findall(r'<circle[^>]*id="s\d+-A"[^>]*>', text)
+    cx, cy = (float(re.search(rf'{c}="([-\d.]+)"', circle).group(1)) for c in ("cx", "cy"))
+    (a,) = [t for t in read_sheet(text, "band.svg").texts if t.text == "A" and t.kind == "label"]
+    assert a.anchor == pytest.approx((cx, cy), abs=0.01) and a.owner and a.owner.endswith("-A")
+    x0, y0, x1, y1 = a.box
+    assert 0 < x1 - x0 < 20 and 0 < y1 - y0 < 20 and abs((x0 + x1) / 2 - cx) < 40 and abs((y0 + y1) / 2 - cy) < 40
 
 
 def test_construct_golden_checks_legibility_unless_told_not_to(tmp_path):
     from construct.regress.pytest_plugin import GoldenChecker
 
-    fig = _star()
-    checker = GoldenChecker(goldens=tmp_path / "goldens", default_name="star", update=True)
+    fig = _band()  # a collision no placement avoids
+    checker = GoldenChecker(goldens=tmp_path / "goldens", default_name="band", update=True)
     with pytest.raises(AssertionError, match="not legible"):
         checker.check(fig)
-    assert (tmp_path / "goldens" / "star" / "final.svg").is_file()  # the goldens are written all the same
-    GoldenChecker(goldens=tmp_path / "goldens", default_name="star").check(fig, legible=False)
+    assert (tmp_path / "goldens" / "band" / "final.svg").is_file()  # the goldens are written all the same
+    GoldenChecker(goldens=tmp_path / "goldens", default_name="band").check(fig, legible=False)
 
 
 def test_every_mark_of_the_current_step_is_seen_unless_a_ring_of_the_step_holds_it():
@@ -348,3 +368,45 @@ def test_a_plate_layered_by_step_is_one_view():
                        group(3, label("K7", 302, 300, "b")), css=plate_css)
     found = lint_svg(figure, "plate.svg")
     assert [(f.kind, f.steps, f.views) for f in found] == [("overlap", (), 1)]  # and no current mark to check
+
+
+def test_the_players_current_points_are_seen_at_once(tmp_path):
+    # crank: steps that mark two points far apart get no ring (the ring would span the figure); each point
+    # must then be 12 px on the player's screen by itself (its highlight halo), as lint measures it
+    from construct.constructions import get
+    from construct.render.output import write_replay
+
+    c = get("crank")
+    write_replay(c, c.figure(parts=9, rod_ratio=5.0), tmp_path, style="teaching", frames="none")
+    report = lint_path(tmp_path / "final.svg")
+    assert report.views > 50 and [f.line() for f in report.findings if f.kind == "small-mark"] == []
+    # and its name tags (operands of the current step) are placed, not stacked on each other or on points
+    assert report.ok, report.text()
+
+
+def test_the_placer_keeps_a_letters_halo_off_a_thick_result_line():
+    # a point on a result line 6 units wide: the letter's box (with its halo) keeps 3 units from the line's axis
+    from construct.render.lettering import label_box, place
+
+    for direction in ((0.0, 1.0), (1.0, 0.0), (0.0, -1.0)):
+        got = place([("a", "result", 1, (100.0, 100.0), direction, "A")], 12.0, lines=[(0.0, 100.0, 200.0, 100.0)],
+                    reach=3.0)
+        x, y, _dist, thin = got["a"]
+        box = label_box(x, y, "A", 12.0)
+        assert not thin and (box[3] <= 97.0 or box[1] >= 103.0)
+
+
+def test_the_placers_box_holds_an_italic_letters_ink():
+    # an italic A leans out of its advance at the foot: the placer's box must hold its outline (matplotlib's
+    # TextPath of the same font), or a letter beside a line is placed with its foot on it
+    from matplotlib.font_manager import FontProperties, findfont
+    from matplotlib.textpath import TextPath
+
+    from construct.render.lettering import text_box
+
+    font = "'DejaVu Serif', serif"
+    prop = FontProperties(fname=findfont(FontProperties(family="DejaVu Serif", style="italic")))
+    for text in ("A₁", "f", "W"):
+        x0, y0, x1, y1 = text_box(0.0, 0.0, text, 12.0, font, True, anchor="start")
+        ext = TextPath((0, 0), text, size=12.0, prop=prop).get_extents()
+        assert x0 <= ext.x0 + 0.3 and x1 >= ext.x1 - 0.3, (text, (x0, x1), (ext.x0, ext.x1))

@@ -53,7 +53,7 @@ def level(zoom: float) -> int:
     """The zoom level (index into :data:`ZOOM_LEVELS`) a view of *zoom* is drawn at: the nearest below."""
     i = 0
     for j, z in enumerate(ZOOM_LEVELS):
-        if zoom >= 0.93 * z:
+        if zoom >= 0.999 * z:  # never below the level: its letters were placed for that zoom
             i = j
     return i
 

@@ -83,8 +83,9 @@ def _face(font: str, italic: bool) -> Any:
 
 
 @functools.lru_cache(maxsize=4096)
-def _glyph(font: str, italic: bool, char: str) -> tuple[float, float, float]:
-    """(advance, top, bottom) of one character in em, y up (cached: a figure has few distinct characters)."""
+def _glyph(font: str, italic: bool, char: str) -> tuple[float, float, float, float, float]:
+    """(advance, top, bottom, left, right) of one character in em, y up, left and right of its ink from
+    the pen (cached: a figure has few distinct characters)."""
     from matplotlib import ft2font
 
     face = _face(font, italic)
@@ -93,15 +94,23 @@ def _glyph(font: str, italic: bool, char: str) -> tuple[float, float, float]:
         flags = ft2font.LOAD_NO_HINTING
     g = face.load_char(ord(char), flags=flags)
     x0, y0, x1, y1 = g.bbox  # 26.6 fixed point at 100 px
-    return g.linearHoriAdvance / 65536.0 / 100.0, y1 / 6400.0, y0 / 6400.0
+    return g.linearHoriAdvance / 65536.0 / 100.0, y1 / 6400.0, y0 / 6400.0, x0 / 6400.0, x1 / 6400.0
 
 
 @functools.lru_cache(maxsize=65536)
-def _metrics(text: str, font: str, italic: bool) -> tuple[float, float, float]:
-    """(advance, top, bottom) of *text* in em: a figure's letters recur, each is measured once."""
+def _metrics(text: str, font: str, italic: bool) -> tuple[float, float, float, float, float]:
+    """(advance, top, bottom, left, right) of *text* in em: left and right the reach of its ink or its
+    advance, whichever is wider (an italic letter leans out of its advance); a figure's letters recur,
+    each is measured once."""
     glyphs = [_glyph(font, italic, c) for c in text]
-    return (sum(g[0] for g in glyphs), max((g[1] for g in glyphs), default=0.7),
-            min(min((g[2] for g in glyphs), default=0.0), 0.0))
+    adv = sum(g[0] for g in glyphs)
+    left, right, pen = 0.0, adv, 0.0
+    for g in glyphs:
+        if g[4] > g[3]:  # a glyph with ink
+            left, right = min(left, pen + g[3]), max(right, pen + g[4])
+        pen += g[0]
+    return (adv, max((g[1] for g in glyphs), default=0.7), min(min((g[2] for g in glyphs), default=0.0), 0.0),
+            left, right)
 
 
 def text_width(text: str, size: float, font: str = DEFAULT_FONT, italic: bool = False) -> float:
@@ -118,18 +127,19 @@ def text_width(text: str, size: float, font: str = DEFAULT_FONT, italic: bool = 
 def text_box(x: float, y: float, text: str, size: float, font: str = DEFAULT_FONT, italic: bool = False,
              anchor: str = "middle") -> tuple[float, float, float, float]:
     """The box (pixels, y down) the inked *text* covers when set at baseline (x, y) with *anchor*."""
-    adv, top, bottom = _metrics(text, font, italic)
+    adv, top, bottom, left, right = _metrics(text, font, italic)
     w = size * adv
     x0 = x - w / 2 if anchor == "middle" else (x - w if anchor == "end" else x)
-    return (x0, y - top * size, x0 + w, y - bottom * size)
+    return (x0 + left * size, y - top * size, x0 + right * size, y - bottom * size)
 
 
 def label_box(x: float, y: float, text: str, size: float, font: str = DEFAULT_FONT,
-              italic: bool = False) -> tuple[float, float, float, float]:
+              italic: bool = False, halo: float = HALO_PX / 2) -> tuple[float, float, float, float]:
     """The box a centred letter at baseline (x, y) covers (pixels, y down) with its halo (3.5 px wide:
-    1.75 px round the ink), which may cover thin helpers but never a point or a result line."""
+    1.75 px round the ink), which may cover thin helpers but never a point or a result line.  *halo*:
+    the halo's reach round the ink at this size (a letter drawn larger has its halo drawn larger too)."""
     b = text_box(x, y, text or " ", size, font, italic)
-    m = HALO_PX / 2
+    m = halo
     return (b[0] - m, b[1] - m, b[2] + m, b[3] + m)
 
 
@@ -193,8 +203,10 @@ class _Lines:
                 key = (math.floor((piece[0] + piece[2]) / 2 / cell), math.floor((piece[1] + piece[3]) / 2 / cell))
                 self.cells.setdefault(key, []).append(piece)
 
-    def meets(self, box) -> bool:
+    def meets(self, box, reach: float = 0.0) -> bool:
         c = self.cell
+        if reach:
+            box = (box[0] - reach, box[1] - reach, box[2] + reach, box[3] + reach)
         for i in range(math.floor(box[0] / c) - 1, math.floor(box[2] / c) + 2):
             for j in range(math.floor(box[1] / c) - 1, math.floor(box[3] / c) + 2):
                 for seg in self.cells.get((i, j), ()):
@@ -207,7 +219,8 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
           size: float, dots: Iterable[tuple[float, float]] = (),
           lines: Sequence[tuple[float, float, float, float]] = (), *, font: str = DEFAULT_FONT,
           italic: bool = False, taken: Iterable[tuple[float, float, float, float]] = (),
-          keep: bool = True, prefer: "dict[str, tuple[float, float, float]] | None" = None) -> dict[str, tuple]:
+          keep: bool = True, prefer: "dict[str, tuple[float, float, float]] | None" = None,
+          halo: float = HALO_PX / 2, reach: float = 0.0) -> dict[str, tuple]:
     """Baseline positions (pixels) for letters: {id: (x, y, distance in letter heights, thin)}.
 
     A letter set farther than :data:`LEADER_FROM` letter heights from its point gets a
@@ -220,7 +233,9 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     *taken*: boxes already taken by letters placed before.  Without *keep*
     a letter that finds no free spot is left out, whatever its rank.  *prefer*:
     per letter an offset from its point (and its distance in letter heights)
-    tried before the ring, so that a letter stays where it was when it can.
+    tried before the ring, so that a letter stays where it was when it can.  *halo*: how far
+    the halo reaches round the ink at *size* (the player scales a letter with its halo).  *reach*:
+    half the width of a result line (a halo reaching over the line's edge erases part of it).
     """
     grid = _Grid(2.0 * size)
     for b in taken:
@@ -238,8 +253,8 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
         w = text_width(text, size, font, italic)
         if prefer and mid in prefer:
             ox, oy, od = prefer[mid]
-            box = label_box(px + ox, py + oy, text, size, font, italic)
-            if grid.free(box) and not strokes.meets(box):
+            box = label_box(px + ox, py + oy, text, size, font, italic, halo)
+            if grid.free(box) and not strokes.meets(box, reach):
                 spot = (px + ox, py + oy, box, od)
         for dist in (() if spot else _DISTANCES):
             for turn in _TURNS:
@@ -248,10 +263,10 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                 # extra width sideways); its baseline a third of a letter lower
                 lx = px + math.cos(a) * (dist * size + max(0.0, w - 0.6 * size) / 2)
                 ly = py + dist * size * math.sin(a) + 0.35 * size
-                box = label_box(lx, ly, text, size, font, italic)
+                box = label_box(lx, ly, text, size, font, italic, halo)
                 if first is None:
                     first = (lx, ly, box, dist)
-                if grid.free(box) and not strokes.meets(box):
+                if grid.free(box) and not strokes.meets(box, reach):
                     spot = (lx, ly, box, dist)
                     break
             if spot:

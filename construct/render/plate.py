@@ -350,7 +350,7 @@ def _item(it: Any, px: Callable[[float, float], XY], scale: float, size: float, 
                _line(f, (a[0] - t * nx, a[1] - t * ny), (a[0] + t * nx, a[1] + t * ny), "fur medium"),
                _line(f, (b[0] - t * nx, b[1] - t * ny), (b[0] + t * nx, b[1] + t * ny), "fur medium")]
         mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
-        return out + _text(f, (mid[0] + 0.6 * size, mid[1]), it.text, size, "start", 0.0, 0.85)
+        return out + _text(f, (mid[0] + 0.6 * size, mid[1]), it.text, size, "start", 0.0, 1.0)  # a scale is read: at the letters' size
     if isinstance(it, Lettering):
         return _text(f, px(*it.at), it.text, size, it.anchor, it.angle, it.size)
     if isinstance(it, Sign):

@@ -233,16 +233,18 @@ li a.later{color:#bbb}
   var slider = document.getElementById("slider");
   var zoom = document.getElementById("zoom");
   var full = svg.getAttribute("data-full").split(" ").map(Number);
-  var now = svg.getAttribute("viewBox").split(" ").map(Number), anim = null, ringAt = null;
+  var now = svg.getAttribute("viewBox").split(" ").map(Number), anim = null, ringAt = null, level = 0;
   function ratio(v) {  // canvas pixels per screen pixel in view *v* (the view is fitted into the element)
     var r = svg.getBoundingClientRect();
     if (!r.width || !r.height) { return 1; }
     return Math.max(v[2] / r.width, v[3] / r.height);
   }
   function put(v) {  // show view *v*: letters and points at their screen size (12 px, never below 9.5 px)
-    var q = ratio(v);
+    // the letter scale of the view's zoom level (the letters were placed for it): the level's picture
+    // magnified as a whole, letters never smaller on the screen than at the level's own zoom
+    var q = ratio(v), zr = full[2] / v[2], zl = data.levels[level] || 1, ql = q * zr / zl;
     svg.setAttribute("viewBox", v.map(function (x) { return x.toFixed(2); }).join(" "));
-    svg.style.setProperty("--ls", Math.min(Math.max(1, 9.5 * q / 12), q).toFixed(4));
+    svg.style.setProperty("--ls", Math.min(Math.max(1, 9.5 * ql / 12), ql).toFixed(4));
     var ring = document.getElementById("ring");
     if (ring) {
       ring.setAttribute("visibility", ringAt ? "visible" : "hidden");
@@ -290,8 +292,9 @@ li a.later{color:#bbb}
     // the camera: the step's view (the whole figure at the ends or without the magnifier), reached smoothly
     var view = st && zoom.checked ? data.views[st.v] : full;
     var z = full[2] / view[2], lvl = 0;
-    data.levels.forEach(function (l, i) { if (z >= 0.93 * l) { lvl = i; } });
+    data.levels.forEach(function (l, i) { if (z >= 0.999 * l) { lvl = i; } });
     svg.setAttribute("class", "zl" + lvl);
+    level = lvl;
     ringAt = st && k < n ? (st.r || null) : null;
     move(view);
     var cur = links[k - 1];

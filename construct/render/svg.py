@@ -34,7 +34,7 @@ from typing import Any, Mapping, Sequence
 from . import svgdoc
 from .captions import TITLE_LIMIT, displayed
 from .camera import view_text
-from .lettering import LEADER_FROM
+from .lettering import HALO_PX, LEADER_FROM
 from .scene import Mark, Scene, label_offset_direction
 from .wrapping import wrap as wrap_chars
 
@@ -154,8 +154,10 @@ class Style:
         if self.highlight:
             # ``cur`` and ``old`` sit on a step's group (frames are views of the layered figure)
             rules.append(f".cur>*{{stroke:{self.highlight};stroke-width:{fmt(self.highlight_width)}}}")
-            # a point is small: the current one gets a halo in the highlight colour
-            rules.append(f".cur>.pt{{fill:{self.highlight};stroke:{self.highlight};stroke-width:3}}")
+            # a point is small: the current one gets a halo in the highlight colour, 16 units across or more with
+            # its dot (12.5 px on the screen at the player's smallest letter scale): seen at once
+            rules.append(f".cur>.pt{{fill:{self.highlight};stroke:{self.highlight};stroke-width:13;"
+                         f"stroke-opacity:0.35}}")
             rules.append(f".cur .lb{{fill:{self.highlight};stroke:none}}")
         rules.append(f".inset{{fill:{self.background};stroke:{self.construction};stroke-width:0.8}}")
         if self.done_opacity <= 0.0:
@@ -168,7 +170,8 @@ class Style:
             rules.append(f".inp>.pt{{fill:{ic};stroke:{ic};stroke-width:2}}")
             rules.append(f".inp .lb{{fill:{ic};stroke:none}}")
         if self.name_tags:
-            rules.append(f".tag{{display:none;font-size:{fmt(0.85 * self.label_size)}px}}")
+            # a tag at the letters' size: the player holds letters at 9.5 px at least, a smaller tag would fall below 9
+            rules.append(".tag{display:none}")
             rules.append(".cur .tag,.inp .tag{display:inline}")
         # Plate looks and furniture (construct.render.plate), and the paper-coloured halo
         # behind every letter, drawn as a copy beneath it (cairosvg has no paint-order).
@@ -187,7 +190,6 @@ class Style:
             rules.append(level_css())
         else:
             rules.append(".lbx{display:none}")
-        from .lettering import HALO_PX
 
         halo = f"fill:{self.background};stroke:{self.background};stroke-width:{fmt(HALO_PX)}px;stroke-linejoin:round"
         rules.append(f".lb.halo,.cur .lb.halo,.inp .lb.halo{{{halo}}}")
@@ -316,7 +318,13 @@ class Drawing:
             self.vp = Viewport(win.xmin, win.ymax, win.scale, canvas.width, canvas.height, 0.0, win.left, win.top)
         self.doc = svgdoc.Writer()
         self._spots = self._letter_spots(self.vp)
+        #: per zoom level, every letter shown there: its offset from its point (canvas units, moves applied)
+        self._level_rel: dict[int, dict[str, tuple[float, float]]] = {}
         self._hidden_at, self._level_rules = self._zoom_placing() if style.camera else ({}, [])
+        self._tag_hidden: dict[str, str] = {}
+        self._tag_spots = self._place_tags() if style.name_tags else {}
+        if style.camera and self._tag_spots:
+            self._clear_tag_edges()
         # layer -> [(step, [element, ...]), ...] in step order: each step's elements of that layer.
         self.groups: dict[str, list[tuple[int, list[Any]]]] = {name: [] for name in self.LAYERS}
         placed: list[tuple[float, float, float, float]] = []
@@ -354,11 +362,144 @@ class Drawing:
             from .camera import step_views
 
             n = len(self.scene.steps)
-            got = (step_views(self.scene, self.full_view, self.scene.bbox, self.vp.px, self.vp.scale,
-                              collapse=self.style.done_opacity <= 0.0)
+            got = (self._clear_edges(step_views(self.scene, self.full_view, self.scene.bbox, self.vp.px,
+                                                self.vp.scale, collapse=self.style.done_opacity <= 0.0))
                    if self.style.camera else [self.full_view] * n)
             self.__dict__["_views"] = got
         return got
+
+    def _clear_edges(self, views: list) -> list:
+        """The views widened so that no letter stands across the edge of the player's window.
+
+        A magnified view cuts the figure, and a letter cut in half by the window's edge cannot be
+        read.  The player shows a view in its window (:data:`PLAYER_FIGURE_PX`, the view's box
+        widened to the window's shape) with letters at its letter scale about their points; a view
+        whose window cuts a letter is widened about its centre until it takes the letter in
+        (a few rounds: the letters shrink as the view grows), up to the whole figure.
+        """
+        import numpy as np
+
+        from .camera import ZOOM_LEVELS, level
+        from .lettering import label_box
+
+        st = self.style
+        from .camera import THIN_FROM
+
+        marks = [m for m in self.scene.marks if m.kind == "point" and m.label and m.id in self._spots]
+        if not marks:
+            return views
+        arrays: dict[int, Any] = {}
+
+        def letters_at(lvl: int):
+            """The letters level *lvl* shows, as (point, box about the point) rows, moves applied."""
+            if lvl not in arrays:
+                rel = self._level_rel.get(lvl)
+                rows = []
+                for m in marks:
+                    px, py = self.vp.px(*m.geom)
+                    spot = self._spots[m.id]
+                    if rel is not None:
+                        if m.id not in rel:
+                            continue
+                        dx, dy = rel[m.id]
+                    elif spot[3] and lvl < THIN_FROM:
+                        continue
+                    else:
+                        dx, dy = spot[0] - px, spot[1] - py
+                    b = label_box(px + dx, py + dy, m.label, st.label_size, st.label_font, st.label_italic)
+                    rows.append((px, py, b[0] - px, b[1] - py, b[2] - px, b[3] - py))
+                arrays[lvl] = np.array(rows) if rows else np.zeros((0, 6))
+            return arrays[lvl]
+        full = self.full_view
+        W, H = PLAYER_FIGURE_PX
+        done: dict = {}
+        out = []
+        for v in views:
+            if v == full:
+                out.append(v)
+                continue
+            if v not in done:
+                x, y, w, h = v
+                cx, cy = x + w / 2, y + h / 2
+                for _ in range(6):
+                    z = full[2] / w
+                    zl = ZOOM_LEVELS[level(z)]
+                    a = letters_at(level(z))
+                    q = max(w / W, h / H)
+                    ql = q * z / zl
+                    ls = min(max(1.0, 9.5 * ql / 12.0), ql)  # the player's --ls
+                    hw, hh = W * q / 2, H * q / 2
+                    x0, y0 = a[:, 0] + ls * a[:, 2] - cx, a[:, 1] + ls * a[:, 3] - cy
+                    x1, y1 = a[:, 0] + ls * a[:, 4] - cx, a[:, 1] + ls * a[:, 5] - cy
+                    meet = (x0 < hw) & (x1 > -hw) & (y0 < hh) & (y1 > -hh)
+                    cut = meet & ((x0 < -hw) | (x1 > hw) | (y0 < -hh) | (y1 > hh))
+                    if not cut.any():
+                        break
+                    g = max(float(np.maximum(-x0[cut], x1[cut]).max()) / hw,
+                            float(np.maximum(-y0[cut], y1[cut]).max()) / hh) * 1.02
+                    w, h = w * g, h * g
+                    if w >= full[2] or h >= full[3]:
+                        break
+                if w >= full[2] or h >= full[3]:
+                    done[v] = full
+                else:
+                    done[v] = (round(cx - w / 2, 2), round(cy - h / 2, 2), round(w, 2), round(h, 2))
+            out.append(done[v])
+        return out
+
+    def _clear_tag_edges(self) -> None:
+        """Widen a view whose window cuts a name tag it shows (its step current or an input), as far as
+        the view's zoom level allows (the tags were placed for that level)."""
+        from .camera import ZOOM_LEVELS, level, zoom_of
+        from .lettering import label_box
+
+        st, sc = self.style, self.scene
+        full = self.full_view
+        W, H = PLAYER_FIGURE_PX
+        marks = {m.step: m for m in sc.marks if m.id in self._tag_spots}
+        views = list(self.views)
+        by_view: dict[tuple, list[int]] = {}
+        for k, v in enumerate(views, start=1):
+            if v != full:
+                by_view.setdefault(v, []).append(k)
+        for v, ks in by_view.items():
+            x, y, w, h = v
+            cx, cy = x + w / 2, y + h / 2
+            lvl = level(zoom_of(v, full))
+            zl = ZOOM_LEVELS[lvl]
+            shown = [marks[s] for k in ks for s in {k} | set(self.input_steps(k)) if s in marks
+                     and f" h{lvl}" not in self._tag_hidden.get(marks[s].id, "")]
+            if not shown:
+                continue
+            q = max(w / W, h / H)
+            ls = (lambda ql: min(max(1.0, 9.5 * ql / 12.0), ql))(q * (full[2] / w) / zl)
+            grow = 1.0
+            pan = [0.0, 0.0]  # or, where growing would leave the level, the shift that takes the tag in
+            for m in shown:
+                px, py = self.vp.px(*m.geom)
+                dx, dy, _d = self._tag_spots[m.id]
+                b = label_box(px + dx, py + dy, sc.display_name(m.name), st.label_size, st.label_font,
+                              st.label_italic)
+                b = (px + ls * (b[0] - px) - cx, py + ls * (b[1] - py) - cy, px + ls * (b[2] - px) - cx,
+                     py + ls * (b[3] - py) - cy)
+                hw, hh = W * q / 2, H * q / 2
+                if b[0] < hw and b[2] > -hw and b[1] < hh and b[3] > -hh and (
+                        b[0] < -hw or b[2] > hw or b[1] < -hh or b[3] > hh):
+                    grow = max(grow, max(-b[0], b[2]) / hw * 1.02, max(-b[1], b[3]) / hh * 1.02)
+                    for i, (lo, hi, half) in enumerate(((b[0], b[2], hw), (b[1], b[3], hh))):
+                        if lo < -half:
+                            pan[i] = min(pan[i], lo + half - 1.0)
+                        elif hi > half:
+                            pan[i] = max(pan[i], hi - half + 1.0)
+            if grow > 1.0 and level(full[2] / (w * grow)) == lvl and w * grow < full[2]:
+                nv = (round(cx - w * grow / 2, 2), round(cy - h * grow / 2, 2), round(w * grow, 2), round(h * grow, 2))
+            elif grow > 1.0:
+                nv = (round(x + pan[0], 2), round(y + pan[1], 2), w, h)
+            else:
+                continue
+            for k in ks:
+                views[k - 1] = nv
+        self.__dict__["_views"] = views
 
     def camera_view(self, k: int) -> tuple[float, float, float, float]:
         """Step k's view (the whole figure for k = 0 and past the end)."""
@@ -444,7 +585,7 @@ class Drawing:
         self._letter_items = items
         k = self.letter_scale
         size = k * st.label_size
-        spots = place(items, size, dots, lines, font=st.label_font, italic=st.label_italic)
+        spots = place(items, size, dots, lines, font=st.label_font, italic=st.label_italic, halo=HALO_PX / 2 * k, reach=self.line_reach)
         thin = [it for it in items if spots.get(it[0], (0, 0, 0, False))[3]]
         if thin and st.camera:
             # the letters the whole figure has no room for, placed for the magnified views
@@ -455,11 +596,11 @@ class Drawing:
             z = ZOOM_LEVELS[THIN_FROM]
             byid = {it[0]: it for it in items}
             taken = [label_box(byid[i][3][0] * z + (x - byid[i][3][0]), byid[i][3][1] * z + (y - byid[i][3][1]),
-                               byid[i][5], size, st.label_font, st.label_italic)
+                               byid[i][5], size, st.label_font, st.label_italic, HALO_PX / 2 * k)
                      for i, (x, y, _d, t) in spots.items() if not t]
             again = place([(i, r, s_, (p[0] * z, p[1] * z), d, t) for i, r, s_, p, d, t in thin], size,
                           [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
-                          font=st.label_font, italic=st.label_italic, taken=taken, keep=False)
+                          font=st.label_font, italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * k, reach=self.line_reach)
             for i, r, s_, p, d, t in thin:
                 got = again.get(i)
                 if got is None and r != "result":
@@ -505,7 +646,7 @@ class Drawing:
             prefer = {i: ((self._spots[i][0] - p[0] / z) * f, (self._spots[i][1] - p[1] / z) * f, self._spots[i][2])
                       for i, _r, _s, p, _d, _t in its}
             got = place(its, size * f, [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
-                        font=st.label_font, italic=st.label_italic, keep=False, prefer=prefer)
+                        font=st.label_font, italic=st.label_italic, keep=False, prefer=prefer, halo=HALO_PX / 2 * f, reach=self.line_reach)
             for i, _r, _s, (zx, zy), _d, _t in its:
                 spot = got.get(i)
                 if spot is None:
@@ -514,6 +655,9 @@ class Drawing:
                 x, y = self._spots[i][0], self._spots[i][1]
                 px, py = zx / z, zy / z
                 ddx, ddy = (spot[0] - zx) / f - (x - px), (spot[1] - zy) / f - (y - py)
+                if abs(ddx) <= 0.5 and abs(ddy) <= 0.5:
+                    ddx = ddy = 0.0
+                self._level_rel.setdefault(lvl, {})[i] = (x - px + ddx, y - py + ddy)
                 if abs(ddx) > 0.5 or abs(ddy) > 0.5:
                     moves.setdefault((i, f"translate({fmt(ddx)}px,{fmt(ddy)}px)"), []).append(lvl)
                     classes[i] = classes.get(i, "") + " lbm"  # moved at some level: the group carries an id
@@ -522,6 +666,139 @@ class Drawing:
             rules.append(",".join(f".zl{lvl} #{i}-lb>*" for lvl in lvls)
                          + f"{{transform:scale(var(--ls,var(--zs))) {move}}}")
         return classes, rules
+
+    def _place_tags(self) -> dict[str, tuple[float, float, float]]:
+        """Where each shown name tag goes: {point id: (dx, dy, distance in letter heights)} about its point.
+
+        A tag names an operand while its step is current or an input; it is placed like a letter
+        (:func:`construct.render.lettering.place`), clear of the points, the result lines, the letters
+        and the other tags, in the view of its own step (at that view's zoom level, where the points
+        stand farther apart than in the whole figure).  A tag with no free spot there is left out,
+        never stacked on another.
+        """
+        from .lettering import label_box, place
+
+        sc, st = self.scene, self.style
+        tags = [m for m in sc.marks if m.kind == "point" and not m.label and sc.tag_shown(m.name)]
+        if not tags:
+            return {}
+        if st.camera:
+            from .camera import THIN_FROM, ZOOM_LEVELS, level, zoom_of
+        else:
+            ZOOM_LEVELS, THIN_FROM = (1.0,), 0
+        dots, lines = self._obstacles
+        span = sc.bbox[2] - sc.bbox[0]
+        # a tag is seen while its step is current and where its step is an input: it is placed at the
+        # least magnified of those views (where the letters are largest beside the points)
+        lowest: dict[int, int] = {}
+        if st.camera:
+            full = self.full_view
+            step_levels = [level(zoom_of(v, full)) for v in self.views]
+
+            def lvl_of(k: int) -> int:
+                return step_levels[k - 1]
+
+            steps = {m.step for m in tags}
+            for m in tags:
+                lowest[m.step] = lvl_of(m.step)
+            for k in range(1, len(sc.steps) + 1):
+                for s_ in self.input_steps(k):
+                    if s_ in steps:
+                        lowest[s_] = min(lowest[s_], lvl_of(k))
+        by_level: dict[int, list[Mark]] = {}
+        for m in tags:
+            by_level.setdefault(lowest.get(m.step, 0), []).append(m)
+        shown_at: dict[int, set[int]] = {m.step: {lowest.get(m.step, 0)} for m in tags}
+        if st.camera:
+            for m in tags:
+                shown_at[m.step].add(lvl_of(m.step))
+            for k in range(1, len(sc.steps) + 1):
+                for s_ in self.input_steps(k):
+                    if s_ in shown_at:
+                        shown_at[s_].add(lvl_of(k))
+        size = st.label_size
+        pts = {m.id: self.vp.px(*m.geom) for m in sc.marks if m.kind == "point"}
+        labels = [m for m in sc.marks if m.kind == "point" and m.label and m.id in self._spots]
+
+        def frame(lvl: int):
+            """(zoom, letter factor, boxes of the letters shown at level *lvl*) in that level's geometry."""
+            z = ZOOM_LEVELS[lvl]
+            f = self.letter_scale_at(z) * z if st.camera else 1.0
+            rel = self._level_rel.get(lvl)
+            boxes = []
+            for m in labels:
+                if rel is not None:
+                    if m.id not in rel:
+                        continue
+                    dx, dy = rel[m.id]
+                else:
+                    spot = self._spots[m.id]
+                    if spot[3] and lvl < THIN_FROM:
+                        continue
+                    dx, dy = spot[0] - pts[m.id][0], spot[1] - pts[m.id][1]
+                px, py = pts[m.id]
+                boxes.append(label_box(px * z + dx * f, py * z + dy * f, m.label, st.label_size * f, st.label_font,
+                                       st.label_italic, HALO_PX / 2 * f))
+            return z, f, boxes
+
+        def near(items, z: float, f: float):
+            """The points and result lines (at zoom *z*) a tag of *items* could meet: within its reach."""
+            xs = [it[3][0] for it in items]
+            ys = [it[3][1] for it in items]
+            r = 8.0 * size * f
+            x0, y0, x1, y1 = min(xs) - r, min(ys) - r, max(xs) + r, max(ys) + r
+            ds = [(x * z, y * z) for x, y in dots if x0 <= x * z <= x1 and y0 <= y * z <= y1]
+            ls = [tuple(c * z for c in seg) for seg in lines
+                  if min(seg[0], seg[2]) * z <= x1 and max(seg[0], seg[2]) * z >= x0
+                  and min(seg[1], seg[3]) * z <= y1 and max(seg[1], seg[3]) * z >= y0]
+            return ds, ls
+
+        out: dict[str, tuple[float, float, float]] = {}
+        for lvl, ms in sorted(by_level.items()):
+            z, f, taken = frame(lvl)
+            items = []
+            for m in ms:
+                px, py = pts[m.id]
+                items.append((m.id, m.role, m.step, (px * z, py * z), label_offset_direction(m.geom, scale=span),
+                              sc.display_name(m.name)))
+            # the tags are checked against each other level by level below
+            got = place(items, size * f, *near(items, z, f),
+                        font=st.label_font, italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * f, reach=self.line_reach)
+            for i, _r, _s, (zx, zy), _d, _t in items:
+                if i in got:
+                    x, y, dist, _thin = got[i]
+                    out[i] = ((x - zx) / f, (y - zy) / f, dist)
+        # every level a tag is seen at: it holds its spot there, or it gives way there (class hN),
+        # never stacked on a letter, a point, a result line or a tag seen with it
+        hidden: dict[str, str] = {}
+        byid = {m.id: m for m in tags}
+        for lvl in sorted({v for vs in shown_at.values() for v in vs}):
+            z, f, taken = frame(lvl)
+            here = [byid[i] for i in out if lvl in shown_at[byid[i].step]]
+            if all(lowest.get(m.step, 0) == lvl for m in here):
+                continue  # placed together at this level, against the same letters: nothing to check
+            items = [(m.id, m.role, m.step, (pts[m.id][0] * z, pts[m.id][1] * z), (1.0, 0.0), sc.display_name(m.name))
+                     for m in here]
+            prefer = {m.id: (out[m.id][0] * f, out[m.id][1] * f, out[m.id][2]) for m in here}
+            got = place(items, size * f, *near(items, z, f),
+                        font=st.label_font, italic=st.label_italic, taken=taken, keep=False, prefer=prefer,
+                        halo=HALO_PX / 2 * f, reach=self.line_reach)
+            for i, _r, _s, (zx, zy), _d, _t in items:
+                spot = got.get(i)
+                if spot is None or abs(spot[0] - zx - prefer[i][0]) > 1e-6 or abs(spot[1] - zy - prefer[i][1]) > 1e-6:
+                    hidden[i] = hidden.get(i, "") + f" h{lvl}"
+        self._tag_hidden = hidden
+        return out
+
+    @property
+    def line_reach(self) -> float:
+        """Half the width of the widest result line, in the units letters are placed in: canvas pixels,
+        or with a camera the player's screen pixel at the whole figure (its strokes do not scale, and
+        the placing works in each zoom level's magnified canvas, where that pixel is the same)."""
+        half = max(self.style.result_width, 2.2) / 2  # 2.2: the plates' heavy look
+        if not self.style.camera:
+            return half
+        return half * max(self.vp.width / PLAYER_FIGURE_PX[0], self.drawing_height / PLAYER_FIGURE_PX[1])
 
     @property
     def extra_css(self) -> str:
@@ -557,18 +834,22 @@ class Drawing:
             aux = m.role == "auxiliary" or ("." in m.name and not m.label)
             r = st.aux_point_radius if aux else st.point_radius
             yield "points", f.circle(center=vp.xy(*m.geom), r=fmt(r), class_=f"pt {cls}", **ids)
-            if st.name_tags and not m.label and self.scene.tag_shown(m.name):
-                # Shown only while its step is the current one (CSS), so it takes no place from the letters.
+            tag = self._tag_spots.get(m.id) if vp is self.vp else None
+            if tag is not None:
+                # Shown only while its step is current or an input (CSS), placed clear of the letters.
                 # no id of its own: it is its point's name, and a gallery carries thousands of them
-                yield "labels", self._letter(vp, m, (0.6 * st.label_size, -0.5 * st.label_size, 0.0),
-                                             self.scene.display_name(m.name), "lb tag", {}, halo=False)
+                yield "labels", self._letter(vp, m, tag, self.scene.display_name(m.name), "lb tag", {}, halo=False,
+                                             extra=self._tag_hidden.get(m.id, ""))
             if m.label:
                 box = self._place_label(m, vp, placed)
                 if box is not None:
                     lid = {"id": f"{mid}-label"} if mid else {}
                     px, py = vp.px(*m.geom)
                     rel = (box[0] - px, box[1] - py, box[2] if len(box) > 2 else 0.0)
-                    extra = (" lbx" if len(box) > 3 and box[3] else "") + self._hidden_at.get(m.id, "")
+                    # a letter with no room in the whole figure waits for the magnified views (lbx); without a
+                    # camera there are none, and a result's letter is drawn all the same (never left out)
+                    thin = len(box) > 3 and box[3] and (st.camera or m.role != "result")
+                    extra = (" lbx" if thin else "") + self._hidden_at.get(m.id, "")
                     gid = {"id": f"{mid}-lb"} if mid and " lbm" in extra else {}
                     extra = extra.replace(" lbm", "")
                     yield "labels", self._letter(vp, m, rel, m.label, "lb", lid, extra=extra, gid=gid)
@@ -667,8 +948,13 @@ class Drawing:
         """The steps that made what step k's instrument is set on and what its caption names."""
         if not self.style.input_colour:
             return frozenset()
-        sc = self.scene
-        return frozenset(s for s in (sc.step_of(n) for n in sc.inputs(k) | sc.tagged(k)) if s is not None and s < k)
+        done = self.__dict__.setdefault("_input_steps", {})  # asked by the tags' placing and by the player
+        got = done.get(k)
+        if got is None:
+            sc = self.scene
+            got = done[k] = frozenset(s for s in (sc.step_of(n) for n in sc.inputs(k) | sc.tagged(k))
+                                      if s is not None and s < k)
+        return got
 
     def step_class(self, s: int, k: int, *, mark_steps: bool, inputs: frozenset[int] = frozenset(),
                    layer: str = "") -> str:
@@ -956,6 +1242,19 @@ def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
         a0, sw = (0.0, 2 * math.pi) if m.kind == "circle" else (g[3], g[4])
         n = min(720, max(8, int(abs(sw) * math.sqrt(max(r * scale, 1.0) / 8.0)) + 1))
         return [(cx + r * math.cos(a0 + sw * i / n), cy + r * math.sin(a0 + sw * i / n)) for i in range(n + 1)]
+    if m.kind == "curve" and not m.straight and len(g) > 2:
+        # as drawn (curve_path): the Catmull-Rom pieces, which leave the chords where the curve bends
+        out = [tuple(g[0])]
+        for i in range(len(g) - 1):
+            p0, p1, p2 = g[i - 1] if i > 0 else g[i], g[i], g[i + 1]
+            p3 = g[i + 2] if i + 2 < len(g) else g[i + 1]
+            c1 = (p1[0] + (p2[0] - p0[0]) / 6.0, p1[1] + (p2[1] - p0[1]) / 6.0)
+            c2 = (p2[0] - (p3[0] - p1[0]) / 6.0, p2[1] - (p3[1] - p1[1]) / 6.0)
+            for t in (0.25, 0.5, 0.75, 1.0):
+                s = 1 - t
+                out.append(tuple(s * s * s * a + 3 * s * s * t * b + 3 * s * t * t * c + t * t * t * d
+                                 for a, b, c, d in zip(p1, c1, c2, p2)))
+        return out
     return list(g)
 
 

@@ -78,7 +78,7 @@ def inertia_plate(fig) -> dict:
     up, down = R[f"K{max(1, n // 6)}"], R[f"K{n - max(1, n // 6)}"]
     furniture = [
         {"kind": "dimension", "a": tuple(D0), "b": tuple(E), "text": "F/f", "offset": 0.12 * r},
-        {"kind": "dimension", "a": tuple(foot5), "b": tuple(q5), "text": "m", "offset": -0.1 * r},
+        {"kind": "dimension", "a": tuple(foot5), "b": tuple(q5), "text": "m", "offset": 0.1 * r},  # clear of the curve
         {"kind": "lettering", "at": (on_inf[0] + 0.06 * r, on_inf[1] + 0.09 * r), "text": "L = ∞", "angle": slope},
         {"kind": "scale", "origin": (D1[0] + 0.2 * r, 0.0), "end": (D1[0] + 0.2 * r, unit), "text": "1 kg/cm²"},
         {"kind": "sign", "at": (up[0], 0.4 * up[1]), "text": "+"},

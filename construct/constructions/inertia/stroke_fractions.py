@@ -57,11 +57,11 @@ def stroke_fractions_plate(fig: Figure) -> dict:
         furniture.append({"kind": "dot", "at": (x, y0 + q)})
         sign = 1.0 if q >= 0 else -1.0
         sub = str(j).translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
-        furniture.append({"kind": "lettering", "at": (x, y0 - sign * 0.09 * r), "text": f"q{sub}", "size": 0.9})
+        furniture.append({"kind": "lettering", "at": (x, y0 - sign * 0.09 * r), "text": f"q{sub}", "size": 1.0})
         if small or j % 2 == 0:
             value = f"{abs(q) / unit:.3f}".replace(".", ",")
             furniture.append({"kind": "lettering", "at": (x, y0 + q + sign * 0.08 * r),
-                              "text": ("−" if q < 0 else "+") + value, "size": 0.75})
+                              "text": ("−" if q < 0 else "+") + value, "size": 1.0})
     sx = hi + 0.28 * r
     furniture.append({"kind": "scale", "origin": (sx, y0), "end": (sx, y0 + unit), "text": "1 at"})
     return {"looks": {"crank": "heavy", "axis": "centre"}, "furniture": furniture}

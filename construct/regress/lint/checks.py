@@ -212,6 +212,57 @@ class _Grid:
 
 # --------------------------------------------------------------------------- views
 
+#: The player's page at the stated screen size: its side column, gaps and padding take this many px of the
+#: width, and the figure is at most this fraction of the height (``#figure{max-height:70vh}``).
+PLAYER_SIDE_PX = 415.0
+PLAYER_HEIGHT = 0.7
+
+
+def player_window(screen: tuple[float, float]) -> tuple[float, float]:
+    """The player's figure window (px) on a screen of *screen* px: (985, 700) at 1400×1000."""
+    return (max(screen[0] - PLAYER_SIDE_PX, 1.0), screen[1] * PLAYER_HEIGHT)
+
+
+def player_letter_scale(q: float, zoom: float = 1.0, level_zoom: float = 1.0) -> float:
+    """The player's ``--ls`` in a view of *q* user units per screen pixel magnifying *zoom* times, drawn at a
+    zoom level of *level_zoom* (its script's ``put``): letters and points are drawn this many times their
+    size about their points, 12 px on the screen at the level's own zoom, never below 9.5 there, and the
+    same in every view of the level (the level's picture, for which the letters were placed, magnified).
+
+    >>> player_letter_scale(2.0), player_letter_scale(1.1), player_letter_scale(0.5)
+    (1.5833333333333333, 1.0, 0.5)
+    >>> round(player_letter_scale(1.0, 1.4, 1.0), 4)  # the whole figure's look magnified 1.4 times
+    1.1083
+    """
+    ql = q * zoom / level_zoom
+    return min(max(1.0, 9.5 * ql / 12.0), ql)
+
+
+def zoom_level(zoom: float, levels: tuple[float, ...]) -> int:
+    """The player's class ``zlN`` for a view magnifying *zoom* times: the nearest level below (as its script)."""
+    i = 0
+    for j, z in enumerate(levels):
+        if zoom >= 0.999 * z:
+            i = j
+    return i
+
+
+@dataclass(frozen=True, slots=True)
+class _Layout:
+    """How a run of views shows the sheet: they show the same box at the same scale."""
+
+    runs: Runs
+    #: What the screen shows (user units): the view's box, widened to the window's shape by the player.
+    box: Box
+    #: User units per screen pixel.
+    q: float
+    #: The zoom level (the player's ``zlN``), the letters' and points' scale about their points, and the
+    #: factor on a line's stroke width (a non-scaling stroke in the player is as wide on every view's screen).
+    level: int = 0
+    letter: float = 1.0
+    stroke: float = 1.0
+
+
 class _Views:
     """Which views a sheet has, which of them show an element, and each view's box and scale."""
 
@@ -219,11 +270,13 @@ class _Views:
         self.sheet = sheet
         self.screen = screen
         n = sheet.n
-        self.stepped = sheet.marks_steps and sheet.frame is None and n > 1
+        self.stepped = sheet.marks_steps and sheet.frame is None and n > 1 and not sheet.unplayed
         self.single = sheet.frame if sheet.frame is not None else n
         x, y, w, h = sheet.viewbox
         self.whole = (x, y, x + w, y + h)
         self.cameras = {k: (v[0], v[1], v[0] + v[2], v[1] + v[3]) for k, v in sheet.views.items()}
+        #: Shown in the player: every view through its window, letters and points at the player's scale.
+        self.player = sheet.player and sheet.frame is None
         # the steps whose objects step k is set on, turned round: in which views step s is an input
         self.input_in: dict[int, list[int]] = defaultdict(list)
         for k, ss in sheet.inputs.items():
@@ -231,6 +284,11 @@ class _Views:
                 if s < k < n:
                     self.input_in[s].append(k)
         self._cache: dict[tuple, Runs] = {}
+        self.layouts = self._layouts()
+        self._of_step: dict[int, _Layout] = {}
+        for lay in self.layouts:
+            for k in _steps_of(lay.runs):
+                self._of_step[k] = lay
 
     def all(self) -> Runs:
         return [(1, self.sheet.n)] if self.stepped else [(self.single, self.single)]
@@ -239,53 +297,98 @@ class _Views:
         return self.cameras.get(k, self.whole)
 
     def scale(self, k: int) -> float:
-        """Screen pixels per user unit in view k: the view fitted into the screen."""
+        """Screen pixels per user unit in view k: the view fitted into the screen (the player's window)."""
         b = self.box(k)
-        return min(self.screen[0] / max(b[2] - b[0], 1e-12), self.screen[1] / max(b[3] - b[1], 1e-12))
+        w, h = player_window(self.screen) if self.player else self.screen
+        return min(w / max(b[2] - b[0], 1e-12), h / max(b[3] - b[1], 1e-12))
 
-    def _seen(self, chain, state: str | None) -> bool:
-        look = self.sheet.look(chain, state)
+    def layout(self, k: int) -> _Layout:
+        return self._of_step[k]
+
+    def _layouts(self) -> list[_Layout]:
+        everything = self.all()
+        if not self.cameras or (not self.stepped and self.single not in self.cameras):
+            return [_Layout(everything, self.whole, 1.0 / self.scale(everything[0][0]))]
+        by_box: dict[Box, list[int]] = defaultdict(list)
+        for k in _steps_of(everything):
+            by_box[self.box(k)].append(k)
+        out = []
+        full_w = self.sheet.viewbox[2]
+        for b, ks in by_box.items():
+            q = 1.0 / self.scale(ks[0])
+            if not self.player:
+                out.append(_Layout(_runs(ks), b, q))
+                continue
+            # the player fits the view into its window (preserveAspectRatio meet): what shows is wider or taller
+            w, h = player_window(self.screen)
+            cx, cy = (b[0] + b[2]) / 2, (b[1] + b[3]) / 2
+            seen = (cx - w * q / 2, cy - h * q / 2, cx + w * q / 2, cy + h * q / 2)
+            zoom = full_w / max(b[2] - b[0], 1e-12)
+            level = zoom_level(zoom, self.sheet.levels)
+            out.append(_Layout(_runs(ks), seen, q, level, player_letter_scale(q, zoom, self.sheet.levels[level]), q))
+        return out
+
+    def text_box(self, t, lay: _Layout) -> Box:
+        """Where a letter stands in a layout: scaled (and moved at its zoom level) about its point."""
+        move = self.sheet.moves.get((lay.level, t.group)) if lay.level and t.group else None
+        if t.anchor is None or (lay.letter == 1.0 and move is None):
+            return t.box
+        ax, ay = t.anchor
+        s = lay.letter
+        dx, dy = (move[0] * t.unit, move[1] * t.unit) if move else (0.0, 0.0)
+        b = t.box
+        return (ax + s * (b[0] - ax + dx), ay + s * (b[1] - ay + dy), ax + s * (b[2] - ax + dx),
+                ay + s * (b[3] - ay + dy))
+
+    def _seen(self, chain, state: str | None, level: int = 0) -> bool:
+        look = self.sheet.look(chain, state, level)
         return look.shown and look.opacity >= MIN_OPACITY
 
-    def shown(self, chain, step: int | None) -> Runs:
-        """The views (runs of steps) in which the element is seen."""
-        key = (chain, step)
+    def shown(self, chain, step: int | None, level: int = 0) -> Runs:
+        """The views (runs of steps) in which the element is seen (the drawing at zoom level *level*)."""
+        key = (chain, step, level)
         got = self._cache.get(key)
         if got is not None:
             return got
         sheet, n = self.sheet, self.sheet.n
         if not self.stepped:
-            got = [(self.single, self.single)] if self._seen(chain, None) else []
+            got = [(self.single, self.single)] if self._seen(chain, None, level) else []
         elif step is None:
-            got = [(1, n)] if self._seen(chain, None) else []
+            got = [(1, n)] if self._seen(chain, None, level) else []
         else:
             s = step
             runs: Runs = []
-            if s < n and self._seen(chain, "cur"):
+            if s < n and self._seen(chain, "cur", level):
                 runs.append((s, s))
             fade = sheet.fades.get(s)
             last_old = n - 1 if fade is None else min(fade, n - 1)
-            if self._seen(chain, "old"):
+            if self._seen(chain, "old", level):
                 runs.append((s + 1, last_old))
-            if fade is not None and self._seen(chain, "done"):
+            if fade is not None and self._seen(chain, "done", level):
                 runs.append((max(fade + 1, s + 1), n - 1))
-            if self._seen(chain, None):
+            if self._seen(chain, None, level):
                 runs.append((n, n))
             runs = _merge(runs)
-            as_input = self._seen(chain, "inp")
+            as_input = self._seen(chain, "inp", level)
             for k in self.input_in.get(s, ()):
                 runs = _merge(runs + [(k, k)]) if as_input else _without(runs, k)
             got = runs
         self._cache[key] = got
         return got
 
-    def where_seen(self, runs: Runs, region: Box) -> Runs:
-        """The views of *runs* whose box shows (part of) *region*."""
-        if not runs:
-            return []
-        if not self.cameras:
-            return runs if _meet_any(self.whole, region) else []
-        return _runs(k for k in _steps_of(runs) if _meet_any(self.box(k), region))
+    def letters(self, lay: _Layout, *, captions: bool = True) -> list[tuple]:
+        """The texts a layout shows: (text, its box there, the layout's steps that show it)."""
+        out = []
+        for t in self.sheet.texts:
+            if t.kind == "caption" and (self.player or not captions):
+                continue  # the player shows no caption lines on its figure
+            b = self.text_box(t, lay)
+            if not _meet_any(b, lay.box):
+                continue
+            runs = _both(self.shown(t.chain, t.step, lay.level), lay.runs)
+            if runs:
+                out.append((t, b, runs))
+        return out
 
 
 def _meet_any(a: Box, b: Box) -> bool:
@@ -297,13 +400,14 @@ def _meet_any(a: Box, b: Box) -> bool:
 def check_sheet(sheet: Sheet, screen: tuple[float, float] = VIEW) -> list[Finding]:
     """Every finding of every view of *sheet*, at the screen size *screen* (width, height px)."""
     views = _Views(sheet, screen)
+    seen = [(lay, views.letters(lay)) for lay in views.layouts]
     out: list[Finding] = []
-    out += _overlaps(sheet, views)
-    out += _on_points(sheet, views)
-    out += _struck(sheet, views)
-    out += _small_labels(sheet, views)
+    out += _overlaps(sheet, views, seen)
+    out += _on_points(sheet, views, seen)
+    out += _struck(sheet, views, seen)
+    out += _small_labels(sheet, views, seen)
     out += _small_marks(sheet, views)
-    out += _outside(sheet, views)
+    out += _outside(sheet, views, seen)
     return out
 
 
@@ -324,125 +428,115 @@ def _point_names(sheet: Sheet) -> dict[str, str]:
     return names
 
 
-def _overlaps(sheet: Sheet, views: _Views) -> list[Finding]:
-    grid = _Grid()
+def _overlaps(sheet: Sheet, views: _Views, seen) -> list[Finding]:
+    found: dict[tuple[int, int], list] = {}
+    for lay, letters in seen:
+        grid = _Grid()
+        for j, (t, b, runs) in enumerate(letters):
+            for i in sorted(grid.near(b)):
+                u, ub, uruns = letters[i]
+                if u.kind == "caption" and t.kind == "caption":
+                    continue
+                region = _meet(b, ub)
+                if region is None or not _meet_any(region, lay.box):
+                    continue
+                both = _both(runs, uruns)
+                if both:
+                    found.setdefault((u.index, t.index), []).extend(both)
+            grid.add(b, j)
     out = []
-    for t in sheet.texts:
-        for j in sorted(grid.near(t.box)):
-            u = sheet.texts[j]
-            if u.kind == "caption" and t.kind == "caption":
-                continue
-            region = _meet(t.box, u.box)
-            if region is None:
-                continue
-            runs = views.where_seen(_both(views.shown(t.chain, t.step), views.shown(u.chain, u.step)), region)
-            if runs:
-                what = "the caption line" if u.kind == "caption" else "label"
-                out.append(_finding("overlap", sheet, views, runs, (u.text, t.text), (u.ident, t.ident),
-                                    f"{what} {u.name} and {'the caption line ' if t.kind == 'caption' else 'label '}"
-                                    f"{t.name} cover each other"))
-        grid.add(t.box, t.index)
+    for (ui, ti), runs in sorted(found.items()):
+        u, t = sheet.texts[ui], sheet.texts[ti]
+        what = "the caption line" if u.kind == "caption" else "label"
+        out.append(_finding("overlap", sheet, views, _merge(runs), (u.text, t.text), (u.ident, t.ident),
+                            f"{what} {u.name} and {'the caption line ' if t.kind == 'caption' else 'label '}"
+                            f"{t.name} cover each other"))
     return out
 
 
-def _on_points(sheet: Sheet, views: _Views) -> list[Finding]:
+def _on_points(sheet: Sheet, views: _Views, seen) -> list[Finding]:
     grid = _Grid()
     for i, d in enumerate(sheet.dots):
         grid.add((d.x - d.r, d.y - d.r, d.x + d.r, d.y + d.r), i)
     names = _point_names(sheet)
+    widest = max((d.r for d in sheet.dots), default=0.0)
+    found: dict[tuple[int, int], list] = {}
+    for lay, letters in seen:
+        reach = widest * max(lay.letter - 1.0, 0.0)  # the grid holds the discs at their drawn size
+        for t, b, runs in letters:
+            for i in sorted(grid.near(_grow(b, reach) if reach else b)):
+                d = sheet.dots[i]
+                if d.ident is not None and d.ident == t.owner:
+                    continue
+                r = d.r * lay.letter
+                if not _disc_in_box(d.x, d.y, r, b):
+                    continue
+                if not _meet_any((d.x - r, d.y - r, d.x + r, d.y + r), lay.box):
+                    continue
+                both = _both(runs, views.shown(d.chain, d.step, lay.level))
+                if both:
+                    found.setdefault((t.index, i), []).extend(both)
     out = []
-    for t in sheet.texts:
-        for i in sorted(grid.near(t.box)):
-            d = sheet.dots[i]
-            if d.ident is not None and d.ident == t.owner:
-                continue
-            if not _disc_in_box(d.x, d.y, d.r, t.box):
-                continue
-            region = (d.x - d.r, d.y - d.r, d.x + d.r, d.y + d.r)
-            runs = views.where_seen(_both(views.shown(t.chain, t.step), views.shown(d.chain, d.step)), region)
-            if runs:
-                point = names.get(d.ident or "", "")
-                shown = f"point {point} ({d.ident})" if point else f"the point {d.ident or 'without id'}"
-                out.append(_finding("on-point", sheet, views, runs, (t.text,) + ((point,) if point else ()),
-                                    (t.ident, d.ident), f"{t.kind} {t.name} covers {shown}"))
+    for (ti, i), runs in sorted(found.items()):
+        t, d = sheet.texts[ti], sheet.dots[i]
+        point = names.get(d.ident or "", "")
+        shown = f"point {point} ({d.ident})" if point else f"the point {d.ident or 'without id'}"
+        out.append(_finding("on-point", sheet, views, _merge(runs), (t.text,) + ((point,) if point else ()),
+                            (t.ident, d.ident), f"{t.kind} {t.name} covers {shown}"))
     return out
 
 
-def _struck(sheet: Sheet, views: _Views) -> list[Finding]:
+def _struck(sheet: Sheet, views: _Views, seen) -> list[Finding]:
     grid = _Grid()
     pieces: list[tuple[int, tuple[float, float, float, float]]] = []
+    widest = max((s.half for s in sheet.strokes), default=0.0)
     for si, s in enumerate(sheet.strokes):
         for p in s.pieces:
-            grid.add(_grow((min(p[0], p[2]), min(p[1], p[3]), max(p[0], p[2]), max(p[1], p[3])), s.half),
-                     len(pieces))
+            grid.add((min(p[0], p[2]), min(p[1], p[3]), max(p[0], p[2]), max(p[1], p[3])), len(pieces))
             pieces.append((si, p))
+    found: dict[tuple[int, int], list] = {}
+    for lay, letters in seen:
+        for t, tb, runs in letters:
+            hit: set[int] = set()
+            for i in sorted(grid.near(_grow(tb, widest * lay.stroke))):
+                si, p = pieces[i]
+                if si in hit:
+                    continue
+                b = _grow(tb, sheet.strokes[si].half * lay.stroke - TOUCH)
+                if max(p[0], p[2]) < b[0] or min(p[0], p[2]) > b[2] or max(p[1], p[3]) < b[1] or min(p[1], p[3]) > b[3]:
+                    continue  # the cheap test first: most pieces near a label pass beside it
+                if _segment_in_box(p, b):
+                    hit.add(si)
+            for si in sorted(hit):
+                s = sheet.strokes[si]
+                both = _both(runs, views.shown(s.chain, s.step, lay.level))
+                if both:
+                    found.setdefault((t.index, si), []).extend(both)
     out = []
-    for t in sheet.texts:
-        hit: dict[int, Box] = {}
-        for i in sorted(grid.near(t.box)):
-            si, p = pieces[i]
-            if si in hit:
-                continue
-            b = _grow(t.box, sheet.strokes[si].half - TOUCH)
-            if max(p[0], p[2]) < b[0] or min(p[0], p[2]) > b[2] or max(p[1], p[3]) < b[1] or min(p[1], p[3]) > b[3]:
-                continue  # the cheap test first: most pieces near a label pass beside it
-            if _segment_in_box(p, b):
-                hit[si] = t.box
-        for si in sorted(hit):
-            s = sheet.strokes[si]
-            runs = views.where_seen(_both(views.shown(t.chain, t.step), views.shown(s.chain, s.step)), t.box)
-            if runs:
-                out.append(_finding("struck", sheet, views, runs, (t.text,), (t.ident, s.ident),
-                                    f"{t.kind} {t.name} is struck by the result line {s.ident or 'without id'}"))
+    for (ti, si), runs in sorted(found.items()):
+        t, s = sheet.texts[ti], sheet.strokes[si]
+        out.append(_finding("struck", sheet, views, _merge(runs), (t.text,), (t.ident, s.ident),
+                            f"{t.kind} {t.name} is struck by the result line {s.ident or 'without id'}"))
     return out
 
 
-def _small_labels(sheet: Sheet, views: _Views) -> list[Finding]:
-    letters = [t for t in sheet.texts if t.kind != "caption"]
-    out = []
-    if not views.cameras:
-        scale = views.scale(views.all()[0][0])
-        by_size: dict[float, list] = defaultdict(list)
-        for t in letters:
-            px = t.size * scale
+def _small_labels(sheet: Sheet, views: _Views, seen) -> list[Finding]:
+    found: dict[float, tuple[list, set]] = {}
+    for lay, letters in seen:
+        for t, b, runs in letters:
+            if t.kind == "caption":
+                continue
+            px = t.size * lay.letter / lay.q
             if px < MIN_LABEL_PX:
-                runs = views.shown(t.chain, t.step)
-                if runs:
-                    by_size[round(px, 1)].append((t, runs))
-        for px, items in sorted(by_size.items()):
-            runs = _merge(r for _, rs in items for r in rs)
-            texts = sorted({t.text for t, _ in items})
-            out.append(_finding("small-label", sheet, views, runs, texts, (),
-                                f"{len(items)} labels at {px:g} px (< {MIN_LABEL_PX:g} px at "
-                                f"{views.screen[0]:g}×{views.screen[1]:g}): {_few(texts)}"))
-        return out
-    # a camera: each view its own scale; the labels it shows are looked up in the grid of its box
-    grid = _Grid()
-    for i, t in enumerate(letters):
-        grid.add(t.box, i)
-    sizes = sorted({t.size for t in letters})
-    found: dict[float, dict[int, list]] = defaultdict(dict)  # px -> {step: examples}
-    for k in _steps_of(views.all()):
-        scale = views.scale(k)
-        small = {f for f in sizes if f * scale < MIN_LABEL_PX}
-        if not small:
-            continue
-        box = views.box(k)
-        seen: list = []
-        for i in grid.near(box):
-            t = letters[i]
-            if t.size in small and _meet_any(t.box, box) and _contains(views.shown(t.chain, t.step), k):
-                seen.append(t)
-                if len(seen) >= 8:
-                    break
-        for t in seen:
-            found[round(t.size * scale, 1)].setdefault(k, []).append(t.text)
-    for px, per_step in sorted(found.items()):
-        runs = _runs(per_step)
-        texts = sorted({x for xs in per_step.values() for x in xs})
-        out.append(_finding("small-label", sheet, views, runs, texts, (),
+                rs, texts = found.setdefault(round(px, 1), ([], set()))
+                rs.extend(runs)
+                texts.add(t.text)
+    out = []
+    for px, (runs, texts) in sorted(found.items()):
+        names = sorted(texts)
+        out.append(_finding("small-label", sheet, views, _merge(runs), names, (),
                             f"labels at {px:g} px (< {MIN_LABEL_PX:g} px at {views.screen[0]:g}×{views.screen[1]:g}), "
-                            f"e.g. {_few(texts)}"))
+                            f"e.g. {_few(names)}"))
     return out
 
 
@@ -460,14 +554,26 @@ def _small_marks(sheet: Sheet, views: _Views) -> list[Finding]:
     state = None if sheet.frame is not None else "cur"
     out = []
     for k in steps:
+        lay = views.layout(k)
         marks: list[tuple[Box, str | None]] = []
         for d in by_step.get(k, ()):
-            look = sheet.look(d.chain, state)
+            look = sheet.look(d.chain, state, lay.level)
             if look.shown and look.opacity >= MIN_OPACITY:
-                marks.append((_grow(d.box, look.stroke_width / 2 if look.stroked else 0.0), d.ident))
+                b = d.box
+                point = "pt" in d.chain[-1][2]
+                if lay.letter != 1.0 and point:  # the player draws points (and their strokes) at the letters' scale
+                    cx, cy, r = (b[0] + b[2]) / 2, (b[1] + b[3]) / 2, (b[2] - b[0]) / 2 * lay.letter
+                    b = (cx - r, cy - r, cx + r, cy + r)
+                width = look.stroke_width * (lay.letter if point else lay.stroke)
+                marks.append((_grow(b, width / 2 if look.stroked else 0.0), d.ident))
         if not marks:
             continue
-        scale = views.scale(k)
+        ring = sheet.rings.get(k) if views.player else None
+        if ring is not None:  # the player's ring round the step's mark, at least 9 px in radius (its put)
+            cx, cy, r = ring
+            r = max(r, 9.0 * lay.q)
+            marks.append(((cx - r, cy - r, cx + r, cy + r), "ring"))
+        scale = 1.0 / lay.q
         # each mark is seen as large as the largest of the step's marks around it (a ring round a dot)
         small = []
         for b, ident in marks:
@@ -492,42 +598,30 @@ def _inside(b: Box, view: Box) -> bool:
     return b[0] >= view[0] and b[1] >= view[1] and b[2] <= view[2] and b[3] <= view[3]
 
 
-def _outside(sheet: Sheet, views: _Views) -> list[Finding]:
-    letters = [t for t in sheet.texts if t.kind != "caption"]
-    out = []
-    if not views.cameras:
-        for t in letters:
-            if _inside(t.box, views.whole):
+def _outside(sheet: Sheet, views: _Views, seen) -> list[Finding]:
+    found: dict[int, list] = defaultdict(list)
+    for lay, letters in seen:
+        for t, b, runs in letters:
+            if t.kind != "caption" and not _inside(b, lay.box):
+                found[t.index].extend(runs)
+    if views.cameras:
+        # the current step's own letters a view leaves out altogether
+        own: dict[int, list] = defaultdict(list)
+        for t in sheet.texts:
+            if t.step is not None and t.kind != "caption":
+                own[t.step].append(t)
+        for k, ts in own.items():
+            if k not in views._of_step:
                 continue
-            runs = views.shown(t.chain, t.step)
-            if runs:
-                out.append(_finding("outside", sheet, views, runs, (t.text,), (t.ident,),
-                                    f"{t.kind} {t.name} reaches outside the view"))
-        return out
-    # a camera: the letters cut by the edge of each step's view, and the current step's letters it leaves out
-    grid = _Grid()
-    for i, t in enumerate(letters):
-        grid.add(t.box, i)
-    own: dict[int, list[int]] = defaultdict(list)
-    for i, t in enumerate(letters):
-        if t.step is not None:
-            own[t.step].append(i)
-    cut: dict[int, list[int]] = defaultdict(list)
-    for k in _steps_of(views.all()):
-        box = views.box(k)
-        edges = ((box[0], box[1], box[0], box[3]), (box[2], box[1], box[2], box[3]),
-                 (box[0], box[1], box[2], box[1]), (box[0], box[3], box[2], box[3]))
-        near: set[int] = set(own.get(k, ()))
-        for e in edges:
-            near |= grid.near(e)
-        for i in near:
-            t = letters[i]
-            if not _inside(t.box, box) and (_meet_any(t.box, box) or t.step == k) \
-                    and _contains(views.shown(t.chain, t.step), k):
-                cut[i].append(k)
-    for i in sorted(cut):
-        t = letters[i]
-        out.append(_finding("outside", sheet, views, _runs(cut[i]), (t.text,), (t.ident,),
+            lay = views.layout(k)
+            for t in ts:
+                b = views.text_box(t, lay)
+                if not _meet_any(b, lay.box) and _contains(views.shown(t.chain, t.step, lay.level), k):
+                    found[t.index].append((k, k))
+    out = []
+    for i in sorted(found):
+        t = sheet.texts[i]
+        out.append(_finding("outside", sheet, views, _merge(found[i]), (t.text,), (t.ident,),
                             f"{t.kind} {t.name} reaches outside the view"))
     return out
 

@@ -33,7 +33,7 @@ import json
 import math
 import re
 import xml.etree.ElementTree as ET
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from ...kernel.errors import ConstructError
@@ -42,7 +42,7 @@ from .cascade import PROPERTIES, Cascade, Look, Node, declarations
 from .fonts import text_extents
 
 __all__ = ["Sheet", "Text", "Dot", "Stroke", "read_sheet", "read_views", "player_data", "LintInputError",
-           "STATES", "Box"]
+           "STATES", "Box", "read_moves"]
 
 Box = tuple[float, float, float, float]
 Matrix = tuple[float, float, float, float, float, float]
@@ -91,6 +91,12 @@ class Text:
     chain: tuple[Node, ...]
     box: Box
     size: float  # font size, user units
+    #: A letter drawn about its point (``<g class="lbg" transform="translate(point)">``): the point, where
+    #: the player's letter scale and a zoom level's move are applied about; None for a text set on the sheet.
+    anchor: tuple[float, float] | None = None
+    #: The id of its letter group (a zoom level's rule moves it by that id), and the group's own scale.
+    group: str | None = None
+    unit: float = 1.0
 
     @property
     def name(self) -> str:
@@ -156,9 +162,24 @@ class Sheet:
     inputs: dict[int, tuple[int, ...]] = field(default_factory=dict)
     #: The camera: per step its view box (x, y, w, h) when the output stores one.
     views: dict[int, tuple[float, float, float, float]] = field(default_factory=dict)
+    #: Shown by the player (its data read): letters and points held at their screen size, views through its window.
+    player: bool = False
+    #: Its steps are seen only in its player: a layered figure with a camera but no player's data beside it is
+    #: seen as the file stands, through its last view (the player's look of its last step).
+    unplayed: bool = False
+    #: The zoom levels of the style sheet's ``.zlN`` classes (from the player's data; (1,) when none).
+    levels: tuple[float, ...] = (1.0,)
+    #: Per (zoom level, letter group id): the move (dx, dy) a ``.zlN #id>*`` rule gives the letter there.
+    moves: dict[tuple[int, str], tuple[float, float]] = field(default_factory=dict)
+    #: Per step, the ring the player draws round a small current mark: (cx, cy, r) as its data gives it.
+    rings: dict[int, tuple[float, float, float]] = field(default_factory=dict)
 
-    def look(self, chain: tuple[Node, ...], state: str | None = None) -> Look:
-        """The look of an element (its chain) with its step's groups in *state* (None: as in the file)."""
+    def look(self, chain: tuple[Node, ...], state: str | None = None, level: int = 0) -> Look:
+        """The look of an element (its chain) with its step's groups in *state* (None: as in the file), the
+        drawing shown at zoom level *level* (the player's class ``zlN`` on the root)."""
+        if level:
+            root = chain[0]
+            chain = ((root[0], root[1], root[2] | {f"zl{level}"}, root[3]),) + chain[1:]
         if state is None:
             return self.cascade.look(chain)
         for i in range(len(chain) - 1, -1, -1):
@@ -177,14 +198,42 @@ class Sheet:
 def read_views(root: ET.Element, data: dict | None) -> dict[int, tuple[float, float, float, float]]:
     """The camera's view of every step that has one: {step: (x, y, w, h)} in the drawing's user units.
 
-    Read from the output, in this order: a ``data-view="x y w h"`` on an element
-    of step k (``data-step="k"``, a step group or a view marker), then the
-    player's data (``views``: a list of boxes, each step's ``v`` an index into
-    it, or ``v`` the box itself).  A step without a view is shown whole (the
-    drawing's viewBox).  This is the one place that knows where the camera is
-    stored.
+    Read from the output, in this order: the ``views`` layer (``<g id="views">`` holding
+    ``<g class="step" data-step="k"><rect class="view" x y width height/></g>`` at each step
+    where the view changes; it holds until the next change), a ``data-view="x y w h"`` on an
+    element of step k, then the player's data (``views``: a list of boxes, each step's ``v``
+    an index into it, or ``v`` the box itself).  A step without a view is shown whole (the
+    drawing's viewBox).  This is the one place that knows where the camera is stored.
+
+    >>> svg = '<svg xmlns="http://www.w3.org/2000/svg"><g id="views"><g class="step" data-step="1">' \\
+    ...       '<rect class="view" x="0" y="0" width="100" height="50"/></g><g class="step" data-step="3">' \\
+    ...       '<rect class="view" x="10" y="5" width="20" height="10"/></g></g>' \\
+    ...       '<g class="step" data-step="4"/></svg>'
+    >>> read_views(ET.fromstring(svg), None)
+    {1: (0.0, 0.0, 100.0, 50.0), 2: (0.0, 0.0, 100.0, 50.0), 3: (10.0, 5.0, 20.0, 10.0), 4: (10.0, 5.0, 20.0, 10.0)}
     """
     views: dict[int, tuple[float, float, float, float]] = {}
+    changes: dict[int, tuple[float, float, float, float]] = {}
+    last = 0
+    for e in root.iter():
+        step = e.get("data-step")
+        if step is not None and step.strip().isdigit():
+            last = max(last, int(step))
+        if _local(e.tag) == "g" and e.get("id") == "views":
+            for g in e:
+                k = g.get("data-step")
+                if k is None or not k.strip().isdigit():
+                    continue
+                for r in g:
+                    if _local(r.tag) == "rect" and "view" in r.get("class", "").split():
+                        box = _four(" ".join(r.get(a, "") for a in ("x", "y", "width", "height")))
+                        if box is not None:
+                            changes[int(k)] = box
+    if changes:
+        keys = sorted(changes)
+        for i, k in enumerate(keys):
+            for j in range(k, (keys[i + 1] if i + 1 < len(keys) else last + 1)):
+                views[j] = changes[k]
     for e in root.iter():
         raw, step = e.get("data-view"), e.get("data-step")
         if raw is None or step is None:
@@ -202,6 +251,27 @@ def read_views(root: ET.Element, data: dict | None) -> dict[int, tuple[float, fl
             if box is not None:
                 views.setdefault(k, box)
     return views
+
+
+_MOVE = re.compile(r"translate\(\s*([-+\d.eE]+)(?:px)?\s*[, ]\s*([-+\d.eE]+)(?:px)?\s*\)")
+
+
+def read_moves(css: str) -> dict[tuple[int, str], tuple[float, float]]:
+    """The letters a zoom level moves: ``.zlN #id>*{transform:scale(..) translate(dx, dy)}`` rules.
+
+    >>> read_moves(".zl1 #a-lb>*,.zl3 #a-lb>*{transform:scale(var(--ls,var(--zs))) translate(-9.4px,2px)}")
+    {(1, 'a-lb'): (-9.4, 2.0), (3, 'a-lb'): (-9.4, 2.0)}
+    """
+    out: dict[tuple[int, str], tuple[float, float]] = {}
+    for block in re.finditer(r"([^{}]+)\{([^{}]*)\}", re.sub(r"/\*.*?\*/", "", css, flags=re.S)):
+        m = _MOVE.search(block.group(2))
+        if not m or "transform" not in block.group(2):
+            continue
+        for sel in block.group(1).split(","):
+            t = re.fullmatch(r"\s*\.zl(\d+)\s+#([\w-]+)\s*>\s*\*\s*", sel)
+            if t:
+                out[(int(t.group(1)), t.group(2))] = (float(m.group(1)), float(m.group(2)))
+    return out
 
 
 def _four(text: str) -> tuple[float, float, float, float] | None:
@@ -385,11 +455,35 @@ def read_sheet(source: str | bytes | Path, name: str, *, data: dict | None = Non
     current = [k for k, s in sheet.file_states.items() if s == "cur"]
     sheet.frame = current[0] if len(current) == 1 else None
     sheet.views = read_views(root, data)
+    sheet.moves = read_moves(css)
+    camera_layer = any(_local(e.tag) == "g" and e.get("id") == "views" for e in root)
+    sheet.player = bool(sheet.views) and (bool(data) or camera_layer)
+    sheet.unplayed = camera_layer and not data
     if data:
+        levels = data.get("levels")
+        if isinstance(levels, list) and levels and all(isinstance(z, (int, float)) and z > 0 for z in levels):
+            sheet.levels = tuple(float(z) for z in levels)
         for k, st in enumerate(data.get("steps") or (), start=1):
             if isinstance(st, dict) and isinstance(st.get("i"), list):
                 sheet.inputs[k] = tuple(int(i) for i in st["i"] if isinstance(i, int))
+            r = st.get("r") if isinstance(st, dict) else None
+            if isinstance(r, list) and len(r) == 3 and all(isinstance(v, (int, float)) for v in r):
+                sheet.rings[k] = (float(r[0]), float(r[1]), float(r[2]))
+    _own_points(sheet)
     return sheet
+
+
+def _own_points(sheet: Sheet) -> None:
+    """A letter group without a named owner (a name tag) names the point it is drawn about."""
+    at: dict[tuple[float, float], str] = {}
+    for d in sheet.dots:
+        if d.ident:
+            at.setdefault((round(d.x, 1), round(d.y, 1)), d.ident)
+    for i, t in enumerate(sheet.texts):
+        if t.owner is None and t.anchor is not None:
+            owner = at.get((round(t.anchor[0], 1), round(t.anchor[1], 1)))
+            if owner:
+                sheet.texts[i] = replace(t, owner=owner)
 
 
 def _marks_steps(cascade: Cascade) -> bool:
@@ -430,9 +524,10 @@ class _Reader:
         classes = frozenset(e.get("class", "").split())
         return (tag, ident if ident in c.ids else None, classes, tuple(own))
 
-    def _walk(self, e: ET.Element, chain: tuple[Node, ...], ctm: Matrix, step: int | None) -> None:
+    def _walk(self, e: ET.Element, chain: tuple[Node, ...], ctm: Matrix, step: int | None,
+              group: tuple | None = None) -> None:
         tag = _local(e.tag)
-        if not tag or tag in _NOT_DRAWN or e.get("id") in _SKIPPED_IDS:
+        if not tag or tag in _NOT_DRAWN or e.get("id") in _SKIPPED_IDS or e.get("id") == "views":
             return
         sheet = self.sheet
         raw_step = e.get("data-step")
@@ -452,8 +547,11 @@ class _Reader:
                 pass  # a transform lint cannot read: the element is taken where it stands
         chain = chain + (self._node(e, tag, step),)
         if tag in ("svg", "g", "a", "switch"):
+            if tag == "g" and "lbg" in chain[-1][2]:
+                # a letter about its point: the player scales (and a zoom level moves) its children about it
+                group = (_at(ctm, 0.0, 0.0), e.get("id"), math.sqrt(abs(ctm[0] * ctm[3] - ctm[1] * ctm[2])))
             for child in e:
-                self._walk(child, chain, ctm, step)
+                self._walk(child, chain, ctm, step, group)
             return
         classes = chain[-1][2]
         if tag == "text":
@@ -461,7 +559,7 @@ class _Reader:
                 look = sheet.look(chain)
                 self.halos[(_text_of(e), e.get("x"), e.get("y"), e.get("transform"))] = look.stroke_width / 2
             else:
-                self.pending.append((e, chain, ctm, step))
+                self.pending.append((e, chain, ctm, step, group))
             return
         if tag not in _DRAWN:
             return
@@ -493,7 +591,8 @@ class _Reader:
                 box = (cx - r, cy - r, cx + r, cy + r)
             sheet.drawn.append(Drawn(step, e.get("id"), chain, box))
 
-    def _text(self, e: ET.Element, chain: tuple[Node, ...], ctm: Matrix, step: int | None) -> None:
+    def _text(self, e: ET.Element, chain: tuple[Node, ...], ctm: Matrix, step: int | None,
+              group: tuple | None = None) -> None:
         sheet = self.sheet
         text = _text_of(e)
         if not text.strip():
@@ -516,8 +615,9 @@ class _Reader:
                 if ident.endswith(suffix):
                     owner = ident[: -len(suffix)]
         scale = math.sqrt(abs(ctm[0] * ctm[3] - ctm[1] * ctm[2]))
+        anchor, gid, unit = group if group is not None else (None, None, 1.0)
         sheet.texts.append(Text(len(sheet.texts), text, kind, ident, owner, step, chain, _box_of(corners),
-                                look.font_size * scale))
+                                look.font_size * scale, anchor, gid, unit))
 
 
 def _text_of(e: ET.Element) -> str:

@@ -196,9 +196,8 @@ def test_the_top_of_the_package_holds_few_modules():
 
 # -- private names ----------------------------------------------------------------------------------
 
-#: Packages whose modules may still import ``_private`` names from one another: the renderer, whose camera
-#: reads the scene's ``_extreme_points`` while the label placer is being reworked.  To be emptied.
-PRIVATE_IMPORTS_ALLOWED_IN = ("construct/render/",)
+#: Packages whose modules may still import ``_private`` names from one another: none.
+PRIVATE_IMPORTS_ALLOWED_IN: tuple[str, ...] = ()
 
 
 def _private_imports(source: str) -> list[tuple[int, str, str]]:

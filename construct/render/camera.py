@@ -30,7 +30,7 @@ from __future__ import annotations
 import math
 from typing import Callable, Sequence
 
-from .scene import Scene, _extreme_points
+from .scene import Scene, extreme_points
 
 __all__ = ["step_views", "ZOOM_LEVELS", "level", "level_css", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of"]
 
@@ -105,7 +105,7 @@ def _group_boxes(scene: Scene) -> dict[tuple[str, ...], Box]:
     for m in scene.marks:
         if m.kind == "segment" or not m.group:
             continue
-        pts = _extreme_points(m)
+        pts = extreme_points(m)
         for depth in range(1, len(m.group) + 1):
             key = m.group[:depth]
             b = boxes.get(key)
@@ -135,7 +135,7 @@ def final_box(scene: Scene) -> Box | None:
     for m in scene.marks:
         if m.kind == "segment" or scene.faded(m.step, n + 1):
             continue
-        for x, y in _extreme_points(m):
+        for x, y in extreme_points(m):
             b = _grow(b, x, y)
     return b
 

@@ -294,7 +294,7 @@ class Scene:
         # (the stroke line reaches the far crossheads) but say nothing about the stage.
         lo = bisect.bisect_left(self._mark_steps, start)
         hi = bisect.bisect_right(self._mark_steps, end)
-        pts = [p for m in self.marks[lo:hi] if m.kind != "segment" for p in _extreme_points(m)]
+        pts = [p for m in self.marks[lo:hi] if m.kind != "segment" for p in extreme_points(m)]
         if not pts:
             return self.bbox
         x0, x1 = min(p[0] for p in pts), max(p[0] for p in pts)
@@ -326,7 +326,7 @@ class Scene:
         if cached is None:
             cached = {}
             for m in self.marks:
-                pts = _extreme_points(m)
+                pts = extreme_points(m)
                 for depth in range(1, len(m.group) + 1):
                     key = m.group[:depth]
                     for x, y in pts:
@@ -455,7 +455,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
         if fx:
             bx0, by0, bx1, by1 = min(bx0, fx[0]), min(by0, fx[1]), max(bx1, fx[2]), max(by1, fx[3])
     for m in marks:
-        for x, y in _extreme_points(m):
+        for x, y in extreme_points(m):
             bx0, by0, bx1, by1 = min(bx0, x), min(by0, y), max(bx1, x), max(by1, y)
     pad = margin
     bbox = (bx0 - pad, by0 - pad, bx1 + pad, by1 + pad)
@@ -494,7 +494,7 @@ def _break(marks: list[Mark], furniture: tuple = (),
     for m in marks:
         if m.kind == "segment":
             continue  # the stroke line spans everything
-        xs = [p[0] for p in _extreme_points(m)]
+        xs = [p[0] for p in extreme_points(m)]
         if xs:
             ivals.append((min(xs), max(xs)))
     ivals.extend((x, x) for x, _ in anchors(furniture))
@@ -524,7 +524,7 @@ def _break(marks: list[Mark], furniture: tuple = (),
         elif m.kind == "segment":
             g = (sx(g[0]), g[1], sx(g[2]), g[3])
         elif m.kind in ("circle", "arc"):
-            if max(p[0] for p in _extreme_points(m)) <= lo:
+            if max(p[0] for p in extreme_points(m)) <= lo:
                 g = (g[0] + shift,) + tuple(g[1:])
         elif m.kind in ("curve", "area"):
             g = tuple((sx(x), y) for x, y in g)
@@ -657,7 +657,7 @@ def _circle_extent(circle: Circle, pts: list[Point], margin: float, role: str,
     return "arc", (cx, cy, r, start, sweep)
 
 
-def _extreme_points(m: Mark) -> list[tuple[float, float]]:
+def extreme_points(m: Mark) -> list[tuple[float, float]]:
     g = m.geom
     if m.kind == "point":
         return [g]

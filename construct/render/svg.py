@@ -1260,9 +1260,9 @@ def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
 
 def _mark_points(m: Mark) -> list[tuple[float, float]]:
     """The points that bound a mark as drawn (a segment by its ends)."""
-    from .scene import _extreme_points
+    from .scene import extreme_points
 
-    return _extreme_points(m)
+    return extreme_points(m)
 
 
 def _near(m: Mark, region: tuple[float, float, float, float]) -> bool:

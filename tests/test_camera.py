@@ -127,13 +127,13 @@ def test_a_moved_camera_is_a_change_of_its_step(tmp_path):
 def test_camera_work_grows_with_the_steps_not_their_square(monkeypatch):
     """The camera visits every mark and step a bounded number of times (counted, not timed)."""
     calls = itertools.count()
-    real = camera._extreme_points
+    real = camera.extreme_points
 
     def counting(m):
         next(calls)
         return real(m)
 
-    monkeypatch.setattr(camera, "_extreme_points", counting)
+    monkeypatch.setattr(camera, "extreme_points", counting)
     counts = []
     for parts in (90, 360):
         fig = get("crank").figure(parts=parts)

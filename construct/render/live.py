@@ -1,0 +1,167 @@
+"""The live given in the player page: a slider per continuous given, redrawing the figure from precomputed data.
+
+:func:`with_live` adds to a player page (:func:`construct.render.player.player_html`)
+an ``<input type="range" name="GIVEN">`` (log10 of the given over its stated
+domain: the rod ratio runs from 1.05 to 1000, and a teacher lives between 3 and
+8), the value in the book's notation, the construction's checks at the
+nearest grid value, and a script that interpolates every drawn coordinate
+between the grid values the data (:mod:`construct.constructions.live`) holds.
+The page stays one file: the coordinates travel deflated in base64 and are
+inflated with the browser's own ``DecompressionStream``.
+
+The script exposes ``window.constructLive``: ``set(value)`` moves the given,
+``ready`` is a promise for the inflated data, ``lastMs`` the last redraw's time.
+
+>>> page = "<html><body><aside>\\n</aside>\\n</body></html>"
+>>> out = with_live(page, {"given": "rod_ratio", "symbol": "L/r", "low": 1.05, "high": 1000.0,
+...                        "initial": 5.0, "checks": []})
+>>> 'name="rod_ratio"' in out and out.count("<script") == 2
+True
+"""
+
+from __future__ import annotations
+
+import html
+import math
+from typing import Any, Mapping
+
+from .player import json_for_script
+
+__all__ = ["with_live", "LIVE_SCRIPT"]
+
+
+def with_live(page: str, data: Mapping[str, Any]) -> str:
+    """*page* with the given's slider and checks at the top of its side panel and the live script before </body>."""
+    g = html.escape(str(data["given"]))
+    sym = html.escape(str(data["symbol"]))
+    lo, hi, v0 = math.log10(data["low"]), math.log10(data["high"]), math.log10(data["initial"])
+    controls = (f'<section id="live"><h2>Gegeben / given</h2>'
+                f'<label><span class="sym">{sym}</span> = <output id="live-value">'
+                f'{html.escape(_book(data["initial"]))}</output><br>'
+                f'<input type="range" name="{g}" id="live-{g}" min="{lo:.12g}" max="{hi:.12g}" step="any" '
+                f'value="{v0:.12g}" aria-label="{sym}" style="width:100%"></label>'
+                f'<div class="live-range">{html.escape(_book(data["low"]))} … {html.escape(_book(data["high"]))}'
+                f' (log. Skala / log scale)</div>'
+                f'<h2>Prüfungen / checks <span id="live-at"></span></h2>'
+                f'<table id="live-checks"><thead><tr><th>Größe</th><th>konstruiert</th><th>Formel</th>'
+                f'<th>Fehler</th><th></th></tr></thead><tbody></tbody></table></section>\n')
+    at = page.index("<aside>") + len("<aside>")
+    page = page[:at] + "\n" + controls + page[at:]
+    script = (f'<script type="application/json" id="live-data">{json_for_script(dict(data))}</script>\n'
+              f"<script>{LIVE_SCRIPT}</script>\n")
+    end = page.rindex("</body>")
+    return page[:end] + script + page[end:]
+
+
+def _book(v: float) -> str:
+    return f"{v:.4g}".replace(".", ",")
+
+
+#: The page's script (no external resource; text reaches the page through textContent only).
+LIVE_SCRIPT = r"""
+(function(){
+  "use strict";
+  var L = JSON.parse(document.getElementById("live-data").textContent);
+  var svg = document.getElementById("figure");
+  var input = document.querySelector('input[name="' + L.given + '"]');
+  var out = document.getElementById("live-value");
+  var api = window.constructLive = {lastMs: 0, value: L.initial};
+  var book = function(v){ return String(Number(v.toPrecision(4))).replace(".", ","); };
+  if (!L.data) { return; }
+  function inflate(b64){
+    var bin = atob(b64), bytes = new Uint8Array(bin.length);
+    for (var i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
+    var stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("deflate"));
+    return new Response(stream).arrayBuffer();
+  }
+  var rows = L.rows, cols = L.cols, D = null, slots = [], followers = [], pts = [];
+  function prepare(buf){
+    var delta = new Int32Array(buf);
+    D = new Float64Array(rows * cols);
+    for (var c = 0; c < cols; c++) {
+      var acc = 0, base = c * rows;
+      for (var r = 0; r < rows; r++) { acc += delta[base + r]; D[r * cols + c] = acc * L.q; }
+    }
+    var at = 0;
+    L.keys.forEach(function(k){
+      var el = k[0] ? document.getElementById(k[0]) : svg;
+      var parts = k[2].split("#");
+      slots.push({el: el, attr: k[1], parts: parts, at: at});
+      at += parts.length - 1;
+    });
+    // letters and leader lines follow the point they name: the nearest point of the built figure
+    svg.querySelectorAll("circle.pt[id]").forEach(function(c){
+      pts.push({el: c, x: +c.getAttribute("cx"), y: +c.getAttribute("cy")});
+    });
+    svg.querySelectorAll("text:not([id]), line:not([id])").forEach(function(t){
+      if (t.closest("#caption")) return;
+      var x = +(t.getAttribute("x") || t.getAttribute("x1")), y = +(t.getAttribute("y") || t.getAttribute("y1"));
+      var best = null, bd = Infinity;
+      pts.forEach(function(p){ var d = (p.x - x) * (p.x - x) + (p.y - y) * (p.y - y); if (d < bd) { bd = d; best = p; } });
+      if (best && bd < 60 * 60) followers.push({el: t, p: best, tf: t.getAttribute("transform") || ""});
+    });
+  }
+  function cell(u){
+    var g = L.grid, lo = 0, hi = g.length - 1;
+    if (u <= g[0]) return [0, 0];
+    if (u >= g[hi]) return [hi - 1, 1];
+    while (hi - lo > 1) { var m = (lo + hi) >> 1; if (g[m] <= u) lo = m; else hi = m; }
+    var t = (u - g[lo]) / (g[lo + 1] - g[lo]);
+    // across a jump of the drawing (the broken axis appearing) the nearer side is drawn, not a blend
+    var a = L.values[lo], b = L.values[lo + 1];
+    for (var j = 0; j < L.jumps.length; j++) if (L.jumps[j][0] === a && L.jumps[j][1] === b) t = t < 0.5 ? 0 : 1;
+    return [lo, t];
+  }
+  function redraw(value){
+    var t0 = performance.now();
+    var u = Math.log10(value), ct = cell(u), r0 = ct[0] * cols, r1 = Math.min(ct[0] + 1, rows - 1) * cols, t = ct[1];
+    var zoomed = svg.classList.contains("zoomed");
+    for (var s = 0; s < slots.length; s++) {
+      var sl = slots[s], parts = sl.parts, txt = parts[0];
+      for (var i = 1; i < parts.length; i++) {
+        var c = sl.at + i - 1, v = D[r0 + c] + (D[r1 + c] - D[r0 + c]) * t;
+        txt += (Math.round(v * 100) / 100) + parts[i];
+      }
+      if (sl.el === svg) { svg.setAttribute("data-full", txt); if (zoomed) continue; }
+      if (sl.el) sl.el.setAttribute(sl.attr, txt);
+    }
+    for (var f = 0; f < followers.length; f++) {
+      var fo = followers[f], p = fo.p;
+      var dx = +p.el.getAttribute("cx") - p.x, dy = +p.el.getAttribute("cy") - p.y;
+      fo.el.setAttribute("transform", "translate(" + dx.toFixed(2) + " " + dy.toFixed(2) + ")" + (fo.tf ? " " + fo.tf : ""));
+    }
+    api.value = value;
+    out.textContent = book(value);
+    showChecks(u);
+    api.lastMs = performance.now() - t0;
+  }
+  var body = document.querySelector("#live-checks tbody"), shownAt = -1;
+  function cellText(tr, text, cls){ var td = document.createElement("td"); td.textContent = text; if (cls) td.className = cls; tr.appendChild(td); }
+  function showChecks(u){
+    if (!L.checks.length) return;
+    var k = 0, bd = Infinity;  // the nearest value the checks were swept at, in log10
+    L.check_values.forEach(function(v, i){ var d = Math.abs(Math.log10(v) - u); if (d < bd) { bd = d; k = i; } });
+    if (k === shownAt) return;
+    shownAt = k;
+    document.getElementById("live-at").textContent = "(" + L.symbol + " = " + book(L.check_values[k]) + ")";
+    while (body.firstChild) body.removeChild(body.firstChild);
+    L.checks[k].forEach(function(c, i){
+      var tr = document.createElement("tr"), num = function(x){ return x === null ? "–" : x.toPrecision(8); };
+      cellText(tr, L.check_names[i]); cellText(tr, num(c[0])); cellText(tr, num(c[1]));
+      cellText(tr, c[2].toExponential(1)); cellText(tr, c[3] ? "✓" : "✗", c[3] ? "ok" : "bad");
+      body.appendChild(tr);
+    });
+  }
+  api.ready = inflate(L.data).then(function(buf){
+    prepare(buf);
+    input.addEventListener("input", function(){ redraw(Math.pow(10, +input.value)); });
+    showChecks(Math.log10(L.initial));
+  });
+  api.set = function(value){
+    value = Math.min(L.high, Math.max(L.low, value));
+    input.value = Math.log10(value);
+    redraw(value);
+    return api.lastMs;
+  };
+})();
+"""

@@ -15,7 +15,7 @@ import re
 import pytest
 
 from construct.constructions import get
-from construct.constructions.live import drawn_numbers, live_data, live_sweep, player_svg
+from construct.constructions.live import drawn_numbers, live_data, live_sweep, player_page
 from construct.render.live import with_live
 from construct.render.output import write_replay
 from construct.render.styles import STYLES
@@ -41,6 +41,8 @@ def live_player(tmp_path_factory):
 
 def _page_numbers(page, keys):
     return page.evaluate("""keys => keys.map(k => {
+        if (k[0] === '#zoom') { const z = window.constructPlayer.data.zooms[+k[1]];
+                                return z ? z.join(' ') : document.getElementById('figure').getAttribute('data-full'); }
         const el = k[0] ? document.getElementById(k[0]) : document.getElementById('figure');
         return k[1] === 'viewBox' ? el.getAttribute('data-full') : el.getAttribute(k[1]); })""", keys)
 
@@ -64,7 +66,7 @@ def test_the_slider_draws_what_a_fresh_replay_draws(browser, live_player):  # no
         page.evaluate("v => window.constructLive.set(v)", v)
         assert page.locator("#live-value").text_content() == f"{v:.4g}".replace(".", ",")
         shown = _page_numbers(page, keys)
-        fresh_keys, fresh, _ = drawn_numbers(player_svg(c, c.figure(parts=3, rod_ratio=v), STYLES["teaching"]))
+        fresh_keys, fresh, _ = drawn_numbers(player_page(c, c.figure(parts=3, rod_ratio=v), STYLES["teaching"]))
         at, expect = 0, {}
         for k in fresh_keys:
             n = k[2].count("#")

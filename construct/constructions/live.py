@@ -41,6 +41,7 @@ True
 from __future__ import annotations
 
 import base64
+import json
 import math
 import re
 import xml.etree.ElementTree as ET
@@ -56,7 +57,7 @@ from ..kernel.errors import InvalidParameter
 from .domain import Domain, ROD_RATIO
 
 __all__ = ["LIVE_GIVENS", "LiveSweep", "live_sweep", "drawn_numbers", "REFINE_PX", "QUANTUM_PX", "MIN_CELL",
-           "live_data", "live_givens"]
+           "live_data", "live_givens", "player_page"]
 
 #: The continuous givens a player can move: protocol name -> (stated domain, the book's symbol).
 LIVE_GIVENS: dict[str, tuple[Domain, str]] = {"rod_ratio": (ROD_RATIO, "L/r")}
@@ -88,19 +89,21 @@ def live_givens(construction: Construction, figure: Figure) -> list[str]:
     return out
 
 
-def drawn_numbers(svg: str) -> tuple[list[tuple[str, str, str]], list[float], dict[str, Any]]:
-    """The geometry of a player's figure: ((element id, attribute, template), ...), the numbers in order,
-    and the labels (text and id-less lines) with the mark each follows.
+def drawn_numbers(page: str) -> tuple[list[tuple[str, str, str]], list[float], dict[str, Any]]:
+    """The geometry of a player page's figure: ((element id, attribute, template), ...) and the numbers in order.
+
+    Every element with an id, the figure's view box and, when the page has the player's data, each step's
+    magnified view (key ``("#zoom", k, ...)``).
 
     >>> keys, nums, _ = drawn_numbers('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 5">'
     ...                               '<circle id="p" cx="1.5" cy="2" r="3"/></svg>')
     >>> keys, nums
     ([('', 'viewBox', '# # # #'), ('p', 'cx', '#'), ('p', 'cy', '#'), ('p', 'r', '#')], [0.0, 0.0, 10.0, 5.0, 1.5, 2.0, 3.0])
     """
+    svg = page[page.index("<svg"):page.index("</svg>") + len("</svg>")]
     root = ET.fromstring(svg)
     keys: list[tuple[str, str, str]] = []
     nums: list[float] = []
-    followers: list[tuple[str, float, float]] = []
     for e in root.iter():
         ident = e.get("id") or ""
         if e is not root and not ident:
@@ -113,6 +116,14 @@ def drawn_numbers(svg: str) -> tuple[list[tuple[str, str, str]], list[float], di
             if ns:
                 keys.append((ident, a, _NUM.sub("#", v)))
                 nums.extend(float(x) for x in ns)
+    marker = '<script type="application/json" id="data">'
+    if marker in page:
+        at = page.index(marker) + len(marker)
+        data = json.loads(page[at:page.index("</script>", at)])
+        full = [float(x) for x in root.get("data-full", root.get("viewBox", "")).split()]
+        for i, st in enumerate(data["steps"]):  # the whole view where a step is not magnified
+            keys.append(("#zoom", str(i), "# # # #"))
+            nums.extend(float(x) for x in data["zooms"][st["z"]]) if st["z"] >= 0 else nums.extend(full)
     return keys, nums, {}
 
 
@@ -155,15 +166,14 @@ def _frames(construction: Construction, figure: Figure, given: str, values: np.n
     return out, replay
 
 
-def player_svg(construction: Construction, figure: Figure, style: Any) -> str:
-    """The figure's markup as the player shows it (the same scene, drawing and fit)."""
+def player_page(construction: Construction, figure: Figure, style: Any) -> str:
+    """The player page of *figure* (the same scene, drawing and fit as ``construct replay`` writes)."""
     from ..render.output import scene_for
     from ..render.player import player_html
     from ..render.svg import Drawing
 
     scene = scene_for(construction, figure)
-    page = player_html(scene, style, drawing=Drawing(scene, style))
-    return page[page.index("<svg"):page.index("</svg>") + len("</svg>")]
+    return player_html(scene, style, drawing=Drawing(scene, style))
 
 
 def live_sweep(construction: Construction, figure: Figure, given: str, *, initial: float | None = None,
@@ -174,7 +184,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     style = style or STYLES["teaching"]
     domain, symbol = LIVE_GIVENS[given]
     initial = float(figure.replay.givens[given] if initial is None else initial)
-    draw = lambda f: player_svg(construction, f, style)  # noqa: E731
+    draw = lambda f: player_page(construction, f, style)  # noqa: E731
     lo, hi = math.log10(domain.low), math.log10(domain.high)
     us = list(np.linspace(lo, hi, start))
     values = lambda u: np.clip(10.0 ** np.asarray(u), domain.low, domain.high)  # noqa: E731

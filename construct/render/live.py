@@ -74,7 +74,7 @@ LIVE_SCRIPT = r"""
     var stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("deflate"));
     return new Response(stream).arrayBuffer();
   }
-  var rows = L.rows, cols = L.cols, D = null, slots = [], followers = [], pts = [];
+  var rows = L.rows, cols = L.cols, D = null, slots = [], followers = [], pts = [], player = null, zooms = null;
   function prepare(buf){
     var delta = new Int32Array(buf);
     D = new Float64Array(rows * cols);
@@ -83,7 +83,17 @@ LIVE_SCRIPT = r"""
       for (var r = 0; r < rows; r++) { acc += delta[base + r]; D[r * cols + c] = acc * L.q; }
     }
     var at = 0;
+    player = window.constructPlayer;
+    if (player) {  // each step's magnified view gets a box of its own, moved with the given
+      zooms = [];
+      player.data.steps.forEach(function(st, i){ zooms[i] = st.z >= 0 ? player.data.zooms[st.z].slice() : null; if (st.z >= 0) st.z = i; });
+      player.data.zooms = zooms;
+    }
     L.keys.forEach(function(k){
+      if (k[0] === "#zoom") {
+        var parts = k[2].split("#");
+        slots.push({zoom: +k[1], parts: parts, at: at}); at += parts.length - 1; return;
+      }
       var el = k[0] ? document.getElementById(k[0]) : svg;
       var parts = k[2].split("#");
       slots.push({el: el, attr: k[1], parts: parts, at: at});
@@ -93,8 +103,15 @@ LIVE_SCRIPT = r"""
     svg.querySelectorAll("circle.pt[id]").forEach(function(c){
       pts.push({el: c, x: +c.getAttribute("cx"), y: +c.getAttribute("cy")});
     });
-    svg.querySelectorAll("text:not([id]), line:not([id])").forEach(function(t){
+    svg.querySelectorAll("text, line:not([id])").forEach(function(t){
       if (t.closest("#caption")) return;
+      // a label follows its mark (id "NAME-label"), its halo (the text before it) the same mark
+      var named = t.id ? t : (t.nextElementSibling && t.nextElementSibling.tagName === "text" ? t.nextElementSibling : null);
+      var owner = named && named.id && /-label$/.test(named.id) ? document.getElementById(named.id.slice(0, -6)) : null;
+      if (owner && owner.tagName === "circle") {
+        followers.push({el: t, p: {el: owner, x: +owner.getAttribute("cx"), y: +owner.getAttribute("cy")}, tf: t.getAttribute("transform") || ""});
+        return;
+      }
       var x = +(t.getAttribute("x") || t.getAttribute("x1")), y = +(t.getAttribute("y") || t.getAttribute("y1"));
       var best = null, bd = Infinity;
       pts.forEach(function(p){ var d = (p.x - x) * (p.x - x) + (p.y - y) * (p.y - y); if (d < bd) { bd = d; best = p; } });
@@ -122,7 +139,12 @@ LIVE_SCRIPT = r"""
         var c = sl.at + i - 1, v = D[r0 + c] + (D[r1 + c] - D[r0 + c]) * t;
         txt += (Math.round(v * 100) / 100) + parts[i];
       }
-      if (sl.el === svg) { svg.setAttribute("data-full", txt); if (zoomed) continue; }
+      if (sl.zoom !== undefined) { zooms[sl.zoom] = txt.split(" ").map(Number); continue; }
+      if (sl.el === svg) {
+        svg.setAttribute("data-full", txt);
+        if (player) { var nf = txt.split(" ").map(Number); for (var q = 0; q < 4; q++) player.full[q] = nf[q]; }
+        if (zoomed) continue;
+      }
       if (sl.el) sl.el.setAttribute(sl.attr, txt);
     }
     for (var f = 0; f < followers.length; f++) {
@@ -130,6 +152,7 @@ LIVE_SCRIPT = r"""
       var dx = +p.el.getAttribute("cx") - p.x, dy = +p.el.getAttribute("cy") - p.y;
       fo.el.setAttribute("transform", "translate(" + dx.toFixed(2) + " " + dy.toFixed(2) + ")" + (fo.tf ? " " + fo.tf : ""));
     }
+    if (player) player.redraw();  // the step's view (magnified or whole) at the new value
     api.value = value;
     out.textContent = book(value);
     showChecks(u);

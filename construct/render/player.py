@@ -330,6 +330,8 @@ li a.later{color:#bbb}
   });
   var start = parseInt((location.hash || "").slice(1), 10);
   show(isNaN(start) ? n : start);
+  // live givens (construct/render/live.py) redraw the figure and its views in place, then show step k again
+  window.constructPlayer = {data: data, full: full, redraw: function () { show(k); }};
 })();
 </script>
 </body>

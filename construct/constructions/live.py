@@ -115,7 +115,8 @@ def drawn_numbers(page: str) -> tuple[list[tuple[str, str, str]], list[float], d
             ns = _NUM.findall(v)
             if ns:
                 keys.append((ident, a, _NUM.sub("#", v)))
-                nums.extend(float(x) for x in ns)
+                fs = [float(x) for x in ns]
+                nums.extend(_canonical_arc(fs) if a == "d" and keys[-1][2] == _ARC else fs)
     marker = '<script type="application/json" id="data">'
     if marker in page:
         at = page.index(marker) + len(marker)
@@ -125,6 +126,30 @@ def drawn_numbers(page: str) -> tuple[list[tuple[str, str, str]], list[float], d
             keys.append(("#zoom", str(i), "# # # #"))
             nums.extend(float(x) for x in data["zooms"][st["z"]]) if st["z"] >= 0 else nums.extend(full)
     return keys, nums, {}
+
+
+_ARC = "M# #A# # # # # # #"
+
+
+def arc_flags(keys: list[tuple[str, str, str]]) -> np.ndarray:
+    """Which of the numbers of *keys* are an arc's large-arc flag (taken from the nearer grid value, not blended).
+
+    >>> arc_flags([("a", "cx", "#"), ("b", "d", "M# #A# # # # # # #")]).nonzero()[0].tolist()
+    [6]
+    """
+    out: list[bool] = []
+    for k in keys:
+        n = k[2].count("#")
+        out += [k[1] == "d" and k[2] == _ARC and i == 5 for i in range(n)]
+    return np.asarray(out, dtype=bool)
+
+
+def _canonical_arc(ns: list[float]) -> list[float]:
+    """An arc path's numbers drawn counter-clockwise on the page (sweep flag 1): the same arc, its ends swapped
+    where it was drawn the other way, so that its numbers vary continuously with the given."""
+    if ns[6] == 0.0:
+        return [ns[7], ns[8], ns[2], ns[3], ns[4], ns[5], 1.0, ns[0], ns[1]]
+    return ns
 
 
 @dataclass
@@ -201,13 +226,22 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
             data[m] = fm
             ka, na = data[a]
             kb, nb = data[b]
+            flips = False
             if ka == kb == fm[0]:
+                flag = arc_flags(ka)
                 q = lambda n: np.round(np.asarray(n) / QUANTUM_PX) * QUANTUM_PX  # noqa: E731
-                err = float(np.max(np.abs((q(na) + q(nb)) / 2 - np.asarray(fm[1])))) if na else 0.0
+                na_, nb_ = np.asarray(na), np.asarray(nb)
+                # an arc's large-arc flag is taken from the nearer end, never blended
+                flips = bool(np.any(na_[flag] != nb_[flag]))
+                near = np.where(flag, na_, (q(na_) + q(nb_)) / 2)
+                err = float(np.max(np.abs(near - np.asarray(fm[1])), initial=0.0))
             else:
                 err = math.inf
-            if err <= REFINE_PX:
+            if err <= REFINE_PX and not (flips and b - a >= MIN_CELL):
                 bound = max(bound, err)
+                continue
+            if err <= REFINE_PX:  # a flag flips inside: the arc is a half circle there, split down to MIN_CELL
+                nxt += [(a, m), (m, b)]
                 continue
             if b - a < MIN_CELL or len(data) > max_values:
                 jumps.append((float(values(a)), float(values(b))))
@@ -280,7 +314,7 @@ def live_data(live: LiveSweep) -> dict[str, Any]:
             "initial": live.initial, "grid": [round(math.log10(v), 12) for v in live.grid],
             "values": [float(v) for v in live.grid],
             "keys": [list(k) for k in live.keys], "rows": int(live.drawn.shape[0]),
-            "cols": int(live.drawn.shape[1]), "q": QUANTUM_PX, "data": encode(live.drawn),
+            "cols": int(live.drawn.shape[1]), "q": QUANTUM_PX, "flags": arc_flags(live.keys).nonzero()[0].tolist(), "data": encode(live.drawn),
             "bound": round(live.bound + QUANTUM_PX / 2, 3), "jumps": live.jumps, **_check_table(live)}
 
 

@@ -74,7 +74,7 @@ LIVE_SCRIPT = r"""
     var stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("deflate"));
     return new Response(stream).arrayBuffer();
   }
-  var rows = L.rows, cols = L.cols, D = null, slots = [], followers = [], pts = [], player = null, zooms = null;
+  var rows = L.rows, cols = L.cols, D = null, slots = [], followers = [], pts = [], isFlag = null, player = null, zooms = null;
   function prepare(buf){
     var delta = new Int32Array(buf);
     D = new Float64Array(rows * cols);
@@ -82,6 +82,8 @@ LIVE_SCRIPT = r"""
       var acc = 0, base = c * rows;
       for (var r = 0; r < rows; r++) { acc += delta[base + r]; D[r * cols + c] = acc * L.q; }
     }
+    isFlag = new Uint8Array(cols);
+    (L.flags || []).forEach(function(c){ isFlag[c] = 1; });
     var at = 0;
     player = window.constructPlayer;
     if (player) {  // each step's magnified view gets a box of its own, moved with the given
@@ -136,7 +138,7 @@ LIVE_SCRIPT = r"""
     for (var s = 0; s < slots.length; s++) {
       var sl = slots[s], parts = sl.parts, txt = parts[0];
       for (var i = 1; i < parts.length; i++) {
-        var c = sl.at + i - 1, v = D[r0 + c] + (D[r1 + c] - D[r0 + c]) * t;
+        var c = sl.at + i - 1, v = isFlag[c] ? (t < 0.5 ? D[r0 + c] : D[r1 + c]) : D[r0 + c] + (D[r1 + c] - D[r0 + c]) * t;
         txt += (Math.round(v * 100) / 100) + parts[i];
       }
       if (sl.zoom !== undefined) { zooms[sl.zoom] = txt.split(" ").map(Number); continue; }

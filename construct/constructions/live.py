@@ -315,7 +315,8 @@ def live_data(live: LiveSweep) -> dict[str, Any]:
             "values": [float(v) for v in live.grid],
             "keys": [list(k) for k in live.keys], "rows": int(live.drawn.shape[0]),
             "cols": int(live.drawn.shape[1]), "q": QUANTUM_PX, "flags": arc_flags(live.keys).nonzero()[0].tolist(), "data": encode(live.drawn),
-            "bound": round(live.bound + QUANTUM_PX / 2, 3), "jumps": live.jumps, **_check_table(live)}
+            "bound": round(live.bound + QUANTUM_PX / 2, 3), "jumps": live.jumps,
+            "checks_z": base64.b64encode(zlib.compress(json.dumps(_check_table(live)).encode("utf-8"), 9)).decode("ascii")}
 
 
 #: The checks travel at this many grid values at most (the page shows the nearest: it says which).

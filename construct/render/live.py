@@ -106,7 +106,7 @@ LIVE_SCRIPT = r"""
       pts.push({el: c, x: +c.getAttribute("cx"), y: +c.getAttribute("cy")});
     });
     svg.querySelectorAll("text, line:not([id])").forEach(function(t){
-      if (t.closest("#caption")) return;
+      if (t.closest("#caption") || t.closest("#furniture")) return;
       // a label follows its mark (id "NAME-label"), its halo (the text before it) the same mark
       var named = t.id ? t : (t.nextElementSibling && t.nextElementSibling.tagName === "text" ? t.nextElementSibling : null);
       var owner = named && named.id && /-label$/.test(named.id) ? document.getElementById(named.id.slice(0, -6)) : null;
@@ -154,6 +154,9 @@ LIVE_SCRIPT = r"""
       var dx = +p.el.getAttribute("cx") - p.x, dy = +p.el.getAttribute("cy") - p.y;
       fo.el.setAttribute("transform", "translate(" + dx.toFixed(2) + " " + dy.toFixed(2) + ")" + (fo.tf ? " " + fo.tf : ""));
     }
+    // the broken axis's marks belong to the built value's break; elsewhere the break lies elsewhere or nowhere
+    var furniture = document.getElementById("furniture");
+    if (furniture) furniture.style.display = Math.abs(u - Math.log10(L.initial)) < 1e-9 ? "" : "none";
     if (player) player.redraw();  // the step's view (magnified or whole) at the new value
     api.value = value;
     out.textContent = book(value);
@@ -161,9 +164,10 @@ LIVE_SCRIPT = r"""
     api.lastMs = performance.now() - t0;
   }
   var body = document.querySelector("#live-checks tbody"), shownAt = -1;
+  L.checks = L.checks || [];
   function cellText(tr, text, cls){ var td = document.createElement("td"); td.textContent = text; if (cls) td.className = cls; tr.appendChild(td); }
   function showChecks(u){
-    if (!L.checks.length) return;
+    if (!L.checks || !L.checks.length) return;
     var k = 0, bd = Infinity;  // the nearest value the checks were swept at, in log10
     L.check_values.forEach(function(v, i){ var d = Math.abs(Math.log10(v) - u); if (d < bd) { bd = d; k = i; } });
     if (k === shownAt) return;
@@ -177,7 +181,9 @@ LIVE_SCRIPT = r"""
       body.appendChild(tr);
     });
   }
-  api.ready = inflate(L.data).then(function(buf){
+  api.ready = (L.checks_z ? inflate(L.checks_z).then(function(b){
+    var c = JSON.parse(new TextDecoder().decode(b)); L.check_names = c.check_names; L.check_values = c.check_values; L.checks = c.checks;
+  }) : Promise.resolve()).then(function(){ return inflate(L.data); }).then(function(buf){
     prepare(buf);
     input.addEventListener("input", function(){ redraw(Math.pow(10, +input.value)); });
     showChecks(Math.log10(L.initial));

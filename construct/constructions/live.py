@@ -27,8 +27,10 @@ is split down to :data:`MIN_CELL` and recorded in :attr:`LiveSweep.jumps`,
 and the page snaps to the nearer side there.
 
 What is interpolated: every element of the figure that carries an id (the
-marks: points, lines, circles, arcs, curves, areas and their hatching) and the
-figure's view box.  Letters and leader lines belong to the label placer, which
+marks: points, lines, circles, arcs, curves, areas and their hatching), the
+figure's view box, and each step's magnified view.  The bound holds for the
+marks and the view box; the magnified views jump where another group becomes
+the one too small to see, and are blended there (they frame, they are not drawn).  Letters and leader lines belong to the label placer, which
 may choose another spot from one value to the next; they move with the point
 they name (the offset of the built value kept).
 
@@ -144,6 +146,11 @@ def arc_flags(keys: list[tuple[str, str, str]]) -> np.ndarray:
     return np.asarray(out, dtype=bool)
 
 
+def _columns(keys: list[tuple[str, str, str]], pick) -> np.ndarray:
+    """Which numbers of *keys* belong to keys *pick* selects."""
+    return np.asarray([pick(k) for k in keys for _ in range(k[2].count("#"))], dtype=bool)
+
+
 def _canonical_arc(ns: list[float]) -> list[float]:
     """An arc path's numbers drawn counter-clockwise on the page (sweep flag 1): the same arc, its ends swapped
     where it was drawn the other way, so that its numbers vary continuously with the given."""
@@ -234,7 +241,9 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
                 # an arc's large-arc flag is taken from the nearer end, never blended
                 flips = bool(np.any(na_[flag] != nb_[flag]))
                 near = np.where(flag, na_, (q(na_) + q(nb_)) / 2)
-                err = float(np.max(np.abs(near - np.asarray(fm[1])), initial=0.0))
+                # the magnified views jump where another group becomes the tiny one: blended, not refined for
+                drawn = ~_columns(ka, lambda k: k[0] == "#zoom")
+                err = float(np.max(np.abs(near - np.asarray(fm[1]))[drawn], initial=0.0))
             else:
                 err = math.inf
             if err <= REFINE_PX and not (flips and b - a >= MIN_CELL):

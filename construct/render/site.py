@@ -49,6 +49,7 @@ _SORT = """<script>
         rows.sort(function(a, b){
           var x = a.cells[col].getAttribute("data-v") || a.cells[col].textContent;
           var y = b.cells[col].getAttribute("data-v") || b.cells[col].textContent;
+          if ((x.trim() === "") !== (y.trim() === "")) return x.trim() === "" ? 1 : -1;  // blanks last
           var nx = x.trim() === "" ? NaN : Number(x), ny = y.trim() === "" ? NaN : Number(y);
           var c = (!isNaN(nx) && !isNaN(ny)) ? nx - ny : x.localeCompare(y, "de");
           return dir * (c || (+a.getAttribute("data-i") - +b.getAttribute("data-i")));
@@ -119,7 +120,9 @@ def _num(v: Any) -> tuple[str, str]:
 def checks_page(title: str, checks: Sequence[Mapping[str, Any]], *, back: str) -> str:
     """One figure's checks: constructed value, formula, error, tolerance, verdict (sortable)."""
     rows = []
+    whys: dict[str, int] = {}  # each reason once, below the table: many checks share one
     for i, c in enumerate(checks):
+        w = whys.setdefault(c.get("why", ""), len(whys) + 1)
         m, mk = _num(c["measured"])
         x, xk = _num(c["expected"])
         err = c["error"]
@@ -127,11 +130,12 @@ def checks_page(title: str, checks: Sequence[Mapping[str, Any]], *, back: str) -
                     f'<td class="num" data-v="{xk}">{_esc(x)}</td>'
                     f'<td class="num" data-v="{abs(err)!r}">{err:.1e}</td><td class="num">{c["tolerance"]:.0e}</td>'
                     f'<td class="{"ok" if c["ok"] else "bad"}">{"✓" if c["ok"] else "✗"}</td>'
-                    f'<td>{_esc(c.get("why", ""))}</td></tr>')
+                    f'<td class="num">{w}</td></tr>')
     body = (f'<p><a href="{_esc(back)}">← gallery</a></p><h1>{_esc(title)}</h1>\n'
             '<table class="sortable"><thead><tr><th data-col>check</th><th data-col>constructed</th>'
             '<th data-col>formula</th><th data-col>error</th><th>tolerance</th><th data-col>verdict</th>'
-            '<th>why this tolerance</th></tr></thead><tbody>\n' + "\n".join(rows) + "\n</tbody></table>")
+            '<th data-col>why this tolerance</th></tr></thead><tbody>\n' + "\n".join(rows) + "\n</tbody></table>\n"
+            "<ol>" + "".join(f"<li>{_esc(w)}</li>" for w in whys) + "</ol>")
     return _page(title, body, script=_SORT)
 
 

@@ -41,7 +41,10 @@ def _interpolated(live, data, v: float) -> np.ndarray:
 def test_interpolation_is_within_half_a_pixel_of_a_fresh_build(crank_live):
     c, live = crank_live
     data = live_data(live)
-    drawn = np.asarray([k[0] != "#zoom" for k in live.keys for _ in range(k[2].count("#"))])
+    # held to 0.5 px: every mark but the few drawn from the nearer grid value (they jump; see live.py)
+    snapped = set(live.snapped)
+    assert len(snapped) <= 0.03 * len(live.keys)
+    drawn = np.asarray([k[0] != "#zoom" and k not in snapped for k in live.keys for _ in range(k[2].count("#"))])
     rng = np.random.default_rng(20)
     values = 10 ** rng.uniform(math.log10(1.05), 3.0, 30)
     values = [v for v in values if not any(a <= v <= b for a, b in live.jumps)]

@@ -67,6 +67,8 @@ LIVE_GIVENS: dict[str, tuple[Domain, str]] = {"rod_ratio": (ROD_RATIO, "L/r")}
 REFINE_PX = 0.4
 #: Stored coordinates are multiples of this (px).
 QUANTUM_PX = 0.05
+#: A jump caused by at most this many marks is theirs (they are drawn from the nearer grid value), not the figure's.
+SNAP_AT_MOST = 3
 #: A cell narrower than this (in log10 of the given) is not split further: it straddles a jump of the drawing.
 MIN_CELL = 1e-4
 
@@ -146,6 +148,33 @@ def arc_flags(keys: list[tuple[str, str, str]]) -> np.ndarray:
     return np.asarray(out, dtype=bool)
 
 
+def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray, snap: set[int]) -> tuple[float, list[int]]:
+    """The largest distance (px) between the page's drawing at a cell's midpoint and the exact one, and the
+    keys that exceed REFINE_PX.  Coordinates are blended from the quantised ends; large-arc flags and snapped
+    keys come from either end (the worse counts); a wrong flag moves the arc by the distance between the two
+    centres its ends and radius allow, 2 sqrt(r^2 - (c/2)^2)."""
+    owner = np.asarray([i for i, k in enumerate(keys) for _ in range(k[2].count("#"))], dtype=int)
+    if owner.size == 0:
+        return 0.0, []
+    q = lambda n: np.round(n / QUANTUM_PX) * QUANTUM_PX  # noqa: E731
+    blended = (q(na) + q(nb)) / 2
+    col_err = np.abs(blended - exact)
+    nearest = np.isin(owner, list(snap)) if snap else np.zeros(owner.size, dtype=bool)
+    col_err[nearest] = np.maximum(np.abs(na - exact), np.abs(nb - exact))[nearest]
+    col_err[_columns(keys, lambda k: k[0] == "#zoom")] = 0.0  # views frame the figure: blended, not refined for
+    flags = arc_flags(keys)
+    for c in np.nonzero(flags & ~nearest)[0]:
+        col_err[c] = 0.0
+        if na[c] != exact[c] or nb[c] != exact[c]:  # c is the flag: the arc's numbers are c-5 .. c+3
+            x0, y0, r, x1, y1 = exact[c - 5], exact[c - 4], exact[c - 3], exact[c + 2], exact[c + 3]
+            half = math.hypot(x1 - x0, y1 - y0) / 2
+            col_err[c] = 2 * math.sqrt(max(r * r - half * half, 0.0))
+    key_err = np.zeros(len(keys))
+    np.maximum.at(key_err, owner, col_err)
+    bad = np.nonzero(key_err > REFINE_PX)[0].tolist()
+    return float(col_err.max()), bad
+
+
 def _columns(keys: list[tuple[str, str, str]], pick) -> np.ndarray:
     """Which numbers of *keys* belong to keys *pick* selects."""
     return np.asarray([pick(k) for k in keys for _ in range(k[2].count("#"))], dtype=bool)
@@ -179,6 +208,13 @@ class LiveSweep:
     checks: list[list[list[Any]]] = field(default_factory=list)
     #: Elements whose geometry is not interpolated (their form changes across the domain): shown at the built value.
     fixed: list[str] = field(default_factory=list)
+    #: Marks drawn from the nearer grid value (they jump inside the domain: an arc drawn the other way round).
+    snapped: list[tuple[str, str, str]] = field(default_factory=list)
+
+    def nearest_columns(self) -> np.ndarray:
+        """The columns taken from the nearer grid value: large-arc flags and the snapped marks."""
+        snapped = set(self.snapped)
+        return arc_flags(self.keys) | _columns(self.keys, lambda k: k in snapped)
 
 
 def _frames(construction: Construction, figure: Figure, given: str, values: np.ndarray, draw) -> list[tuple]:
@@ -224,6 +260,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     data = dict(zip(us, frames))
     todo = list(zip(us[:-1], us[1:]))
     jumps: list[tuple[float, float]] = []
+    snap: set[int] = set()  # keys drawn from the nearer grid value
     bound = 0.0
     while todo:
         mids = [(a + b) / 2 for a, b in todo]
@@ -233,29 +270,22 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
             data[m] = fm
             ka, na = data[a]
             kb, nb = data[b]
-            flips = False
-            if ka == kb == fm[0]:
-                flag = arc_flags(ka)
-                q = lambda n: np.round(np.asarray(n) / QUANTUM_PX) * QUANTUM_PX  # noqa: E731
-                na_, nb_ = np.asarray(na), np.asarray(nb)
-                # an arc's large-arc flag is taken from the nearer end, never blended
-                flips = bool(np.any(na_[flag] != nb_[flag]))
-                near = np.where(flag, na_, (q(na_) + q(nb_)) / 2)
-                # the magnified views jump where another group becomes the tiny one: blended, not refined for
-                drawn = ~_columns(ka, lambda k: k[0] == "#zoom")
-                err = float(np.max(np.abs(near - np.asarray(fm[1]))[drawn], initial=0.0))
+            if not ka == kb == fm[0]:
+                err, culprits = math.inf, [-1]
             else:
-                err = math.inf
-            if err <= REFINE_PX and not (flips and b - a >= MIN_CELL):
+                err, culprits = _midpoint_error(ka, np.asarray(na), np.asarray(nb), np.asarray(fm[1]), snap)
+            if err <= REFINE_PX:
                 bound = max(bound, err)
                 continue
-            if err <= REFINE_PX:  # a flag flips inside: the arc is a half circle there, split down to MIN_CELL
+            if b - a >= MIN_CELL and len(data) <= max_values:
                 nxt += [(a, m), (m, b)]
                 continue
-            if b - a < MIN_CELL or len(data) > max_values:
-                jumps.append((float(values(a)), float(values(b))))
+            if 0 < len(culprits) <= SNAP_AT_MOST and culprits[0] >= 0:
+                # one or two marks jump here (an arc drawn the other way round): they are drawn from the nearer
+                # grid value everywhere, the rest stays blended
+                snap.update(culprits)
                 continue
-            nxt += [(a, m), (m, b)]
+            jumps.append((float(values(a)), float(values(b))))
         todo = nxt
     us = sorted(data)
     # The keys every grid value shares; a few elements change form (e.g. a curve's number of points):
@@ -274,9 +304,11 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
             at += n
         rows.append([x for k in keys for x in pos[k]])
     fixed = sorted({k[0] for u in us for k in data[u][0] if k not in shared})
+    first = data[us[0]][0]
+    snapped = [k for i, k in enumerate(first) if i in snap and k in shared]
     grid = values(us)
     live = LiveSweep(given, symbol, domain, initial, grid, keys, np.asarray(rows, dtype=float), bound, jumps,
-                     fixed=fixed)
+                     fixed=fixed, snapped=snapped)
     live.checks = _checks(construction, figure, given, grid)
     return live
 
@@ -323,7 +355,7 @@ def live_data(live: LiveSweep) -> dict[str, Any]:
             "initial": live.initial, "grid": [round(math.log10(v), 12) for v in live.grid],
             "values": [float(v) for v in live.grid],
             "keys": [list(k) for k in live.keys], "rows": int(live.drawn.shape[0]),
-            "cols": int(live.drawn.shape[1]), "q": QUANTUM_PX, "flags": arc_flags(live.keys).nonzero()[0].tolist(), "data": encode(live.drawn),
+            "cols": int(live.drawn.shape[1]), "q": QUANTUM_PX, "flags": live.nearest_columns().nonzero()[0].tolist(), "data": encode(live.drawn),
             "bound": round(live.bound + QUANTUM_PX / 2, 3), "jumps": live.jumps,
             "checks_z": base64.b64encode(zlib.compress(json.dumps(_check_table(live)).encode("utf-8"), 9)).decode("ascii")}
 

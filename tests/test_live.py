@@ -28,7 +28,7 @@ def crank_live():
 
 
 def _interpolated(live, data, v: float) -> np.ndarray:
-    rows = decode(data["data"], data["rows"], data["cols"])
+    rows = decode(data["data"], data["width"], data["rows"], data["cols"])
     u = math.log10(v)
     g = np.asarray(data["grid"])
     j = int(np.clip(np.searchsorted(g, u, side="right") - 1, 0, len(g) - 2))

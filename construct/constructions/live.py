@@ -322,22 +322,35 @@ def _checks(construction: Construction, figure: Figure, given: str, grid: np.nda
             for row in construction.sweep_checks(sweep)]
 
 
-def encode(drawn: np.ndarray) -> str:
-    """Coordinates quantised to QUANTUM_PX, delta-coded along the grid (column by column), int32, deflated, base64.
+def encode(drawn: np.ndarray) -> tuple[str, int]:
+    """Coordinates quantised to QUANTUM_PX, delta-coded along the grid column by column, deflated, base64;
+    and the width in bytes of a delta.
 
-    >>> a = np.array([[0.0, 10.0], [0.05, 10.0], [0.1, 12.5]])
-    >>> np.array_equal(decode(encode(a), *a.shape), np.round(a / QUANTUM_PX) * QUANTUM_PX)
+    The first row travels as int32; the deltas as int16 where they fit (else int32), split into byte planes
+    (all low bytes, then all high bytes: the high bytes of small deltas are runs of 0 and 255 that deflate
+    squeezes away).
+
+    >>> a = np.array([[0.0, 10.0], [0.05, 10.0], [0.1, 12.5], [-3000.0, 12.5]])
+    >>> np.array_equal(decode(*encode(a), *a.shape), np.round(a / QUANTUM_PX) * QUANTUM_PX)
     True
+    >>> encode(a[:3])[1], encode(a)[1]
+    (2, 4)
     """
     q = np.round(drawn / QUANTUM_PX).astype(np.int64)
-    delta = np.diff(q, axis=0, prepend=0)  # row 0 keeps its values
-    return base64.b64encode(zlib.compress(delta.T.astype("<i4").tobytes(), 9)).decode("ascii")
+    first, rest = q[0], np.diff(q, axis=0)
+    width = 2 if rest.size == 0 or np.abs(rest).max() < 2 ** 15 else 4
+    cols = np.ascontiguousarray(rest.T).astype(f"<i{width}").view(np.uint8).reshape(-1, width)
+    payload = first.astype("<i4").tobytes() + np.ascontiguousarray(cols.T).tobytes()
+    return base64.b64encode(zlib.compress(payload, 9)).decode("ascii"), width
 
 
-def decode(text: str, rows: int, cols: int) -> np.ndarray:
+def decode(text: str, width: int, rows: int, cols: int) -> np.ndarray:
     """The inverse of :func:`encode` (what the page does with DecompressionStream)."""
-    delta = np.frombuffer(zlib.decompress(base64.b64decode(text)), dtype="<i4").reshape(cols, rows).T
-    return np.cumsum(delta, axis=0) * QUANTUM_PX
+    raw = zlib.decompress(base64.b64decode(text))
+    first = np.frombuffer(raw[:4 * cols], dtype="<i4").astype(np.int64)
+    planes = np.frombuffer(raw[4 * cols:], dtype=np.uint8).reshape(width, -1)
+    rest = np.ascontiguousarray(planes.T).view(f"<i{width}").reshape(cols, rows - 1).T.astype(np.int64)
+    return np.cumsum(np.vstack([first, rest]), axis=0) * QUANTUM_PX
 
 
 def book_number(value: float) -> str:
@@ -355,7 +368,8 @@ def live_data(live: LiveSweep) -> dict[str, Any]:
             "initial": live.initial, "grid": [round(math.log10(v), 12) for v in live.grid],
             "values": [float(v) for v in live.grid],
             "keys": [list(k) for k in live.keys], "rows": int(live.drawn.shape[0]),
-            "cols": int(live.drawn.shape[1]), "q": QUANTUM_PX, "flags": live.nearest_columns().nonzero()[0].tolist(), "data": encode(live.drawn),
+            "cols": int(live.drawn.shape[1]), "q": QUANTUM_PX,
+            "flags": live.nearest_columns().nonzero()[0].tolist(), **dict(zip(("data", "width"), encode(live.drawn))),
             "bound": round(live.bound + QUANTUM_PX / 2, 3), "jumps": live.jumps,
             "checks_z": base64.b64encode(zlib.compress(json.dumps(_check_table(live)).encode("utf-8"), 9)).decode("ascii")}
 

@@ -76,11 +76,20 @@ LIVE_SCRIPT = r"""
   }
   var rows = L.rows, cols = L.cols, D = null, slots = [], followers = [], pts = [], isFlag = null, player = null, zooms = null;
   function prepare(buf){
-    var delta = new Int32Array(buf);
+    // the first row as int32, then the deltas along the grid column by column in byte planes (live.py: encode)
+    var first = new Int32Array(buf.slice(0, 4 * cols)), bytes = new Uint8Array(buf, 4 * cols);
+    var w = L.width, n = cols * (rows - 1);
     D = new Float64Array(rows * cols);
     for (var c = 0; c < cols; c++) {
-      var acc = 0, base = c * rows;
-      for (var r = 0; r < rows; r++) { acc += delta[base + r]; D[r * cols + c] = acc * L.q; }
+      var acc = first[c];
+      D[c] = acc * L.q;
+      for (var r = 1; r < rows; r++) {
+        var i = c * (rows - 1) + r - 1, v = 0;
+        for (var b = w - 1; b >= 0; b--) v = (v << 8) | bytes[b * n + i];
+        if (w === 2 && v >= 32768) v -= 65536;
+        acc += v;
+        D[r * cols + c] = acc * L.q;
+      }
     }
     isFlag = new Uint8Array(cols);
     (L.flags || []).forEach(function(c){ isFlag[c] = 1; });

@@ -65,6 +65,7 @@ def test_the_slider_draws_what_a_fresh_replay_draws(browser, live_player):  # no
         assert not any(a <= v <= b for a, b in live.jumps), v
         page.evaluate("v => window.constructLive.set(v)", v)
         assert page.locator("#live-value").text_content() == f"{v:.4g}".replace(".", ",")
+        assert f"L/r = {v:.4g}".replace(".", ",") in page.locator("h1").text_content()  # the title names it too
         shown = _page_numbers(page, keys)
         fresh_keys, fresh, _ = drawn_numbers(player_page(c, c.figure(parts=3, rod_ratio=v), STYLES["teaching"]))
         at, expect = 0, {}

@@ -12,7 +12,7 @@ inflated with the browser's own ``DecompressionStream``.
 The script exposes ``window.constructLive``: ``set(value)`` moves the given,
 ``ready`` is a promise for the inflated data, ``lastMs`` the last redraw's time.
 
->>> page = "<html><body><aside>\\n</aside>\\n</body></html>"
+>>> page = "<html><body><div id=stage></div>\\n<aside>\\n</aside>\\n</body></html>"
 >>> out = with_live(page, {"given": "rod_ratio", "symbol": "L/r", "low": 1.05, "high": 1000.0,
 ...                        "initial": 5.0, "checks": []})
 >>> 'name="rod_ratio"' in out and out.count("<script") == 2
@@ -35,18 +35,24 @@ def with_live(page: str, data: Mapping[str, Any]) -> str:
     g = html.escape(str(data["given"]))
     sym = html.escape(str(data["symbol"]))
     lo, hi, v0 = math.log10(data["low"]), math.log10(data["high"]), math.log10(data["initial"])
-    controls = (f'<section id="live"><h2>Gegeben / given</h2>'
-                f'<label><span class="sym">{sym}</span> = <output id="live-value">'
-                f'{html.escape(_book(data["initial"]))}</output><br>'
+    controls = (f'<section id="live" style="background:#fff;border:1px solid #ddd;margin-top:8px;padding:6px 10px">'
+                f'<label style="display:flex;gap:10px;align-items:center"><b class="sym">{sym}</b> '
                 f'<input type="range" name="{g}" id="live-{g}" min="{lo:.12g}" max="{hi:.12g}" step="any" '
-                f'value="{v0:.12g}" aria-label="{sym}" style="width:100%"></label>'
-                f'<div class="live-range">{html.escape(_book(data["low"]))} … {html.escape(_book(data["high"]))}'
-                f' (log. Skala / log scale)</div>'
-                f'<h2>Prüfungen / checks <span id="live-at"></span></h2>'
-                f'<table id="live-checks"><thead><tr><th>Größe</th><th>konstruiert</th><th>Formel</th>'
-                f'<th>Fehler</th><th></th></tr></thead><tbody></tbody></table></section>\n')
-    at = page.index("<aside>") + len("<aside>")
-    page = page[:at] + "\n" + controls + page[at:]
+                f'value="{v0:.12g}" aria-label="{sym}" style="flex:1 1 auto">'
+                f'<span>{sym} = <output id="live-value" style="font-variant-numeric:tabular-nums">'
+                f'{html.escape(_book(data["initial"]))}</output></span></label>'
+                f'<div class="live-range" style="color:#777;font-size:12px">{html.escape(_book(data["low"]))} … '
+                f'{html.escape(_book(data["high"]))} (log. Skala / log scale; gebaut / built: '
+                f'{html.escape(_book(data["initial"]))})</div>'
+                f'<details open><summary>Prüfungen / checks <span id="live-at"></span></summary>'
+                f'<div style="max-height:28vh;overflow:auto"><table id="live-checks" style="border-collapse:collapse;'
+                f'font-size:12px;font-variant-numeric:tabular-nums"><thead><tr><th>Größe / quantity</th>'
+                f'<th>konstruiert</th><th>Formel</th><th>Fehler</th><th></th></tr></thead><tbody></tbody></table>'
+                f'</div></details></section>\n')
+    # under the figure's caption, in the stage (the side panel scrolls with the step list)
+    aside = page.index("<aside>")
+    at = page.rindex("</div>", 0, aside)
+    page = page[:at] + controls + page[at:]
     script = (f'<script type="application/json" id="live-data">{json_for_script(dict(data))}</script>\n'
               f"<script>{LIVE_SCRIPT}</script>\n")
     end = page.rindex("</body>")
@@ -169,8 +175,21 @@ LIVE_SCRIPT = r"""
     if (player) player.redraw();  // the step's view (magnified or whole) at the new value
     api.value = value;
     out.textContent = book(value);
+    retitle(value);
     showChecks(u);
     api.lastMs = performance.now() - t0;
+  }
+  // the page's title and givens name the built value: they name the shown one
+  var titled = [];
+  document.querySelectorAll("header h1, header h1 *").forEach(function(e){
+    e.childNodes.forEach(function(t){ if (t.nodeType === 3 && t.nodeValue.indexOf(L.symbol + " = ") >= 0) titled.push({n: t, text: t.nodeValue}); });
+  });
+  var givenCell = null;
+  document.querySelectorAll("#givens th").forEach(function(th){ if (th.textContent === L.given) givenCell = th.nextElementSibling; });
+  var pattern = new RegExp(L.symbol.replace(/[.*+?^${}()|[\]\\/]/g, "\\$&") + " = [0-9]+(?:[.,][0-9]+)?");
+  function retitle(value){
+    titled.forEach(function(t){ t.n.nodeValue = t.text.replace(pattern, L.symbol + " = " + book(value)); });
+    if (givenCell) givenCell.textContent = String(Number(value.toPrecision(4)));
   }
   var body = document.querySelector("#live-checks tbody"), shownAt = -1;
   L.checks = L.checks || [];

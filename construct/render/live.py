@@ -146,6 +146,13 @@ LIVE_SCRIPT = r"""
     for (var j = 0; j < L.jumps.length; j++) if (L.jumps[j][0] === a && L.jumps[j][1] === b) t = t < 0.5 ? 0 : 1;
     return [lo, t];
   }
+  function view(){  // what the player's show(k) does with the view, without touching the steps (cheap)
+    var d = player.data, k = +(svg.getAttribute("data-step") || d.n), st = k > 0 ? d.steps[k - 1] : null;
+    var zoom = document.getElementById("zoom");
+    var box = st && zoom && zoom.checked && k < d.n && st.z >= 0 ? d.zooms[st.z] : null;
+    svg.setAttribute("viewBox", (box || player.full).join(" "));
+    svg.style.setProperty("--z", box ? (player.full[2] / box[2]).toFixed(3) : "1");
+  }
   function redraw(value){
     var t0 = performance.now();
     var u = Math.log10(value), ct = cell(u), r0 = ct[0] * cols, r1 = Math.min(ct[0] + 1, rows - 1) * cols, t = ct[1];
@@ -172,7 +179,7 @@ LIVE_SCRIPT = r"""
     // the broken axis's marks belong to the built value's break; elsewhere the break lies elsewhere or nowhere
     var furniture = document.getElementById("furniture");
     if (furniture) furniture.style.display = Math.abs(u - Math.log10(L.initial)) < 1e-9 ? "" : "none";
-    if (player) player.redraw();  // the step's view (magnified or whole) at the new value
+    if (player) view();  // the step's view (magnified or whole) at the new value
     api.value = value;
     out.textContent = book(value);
     retitle(value);

@@ -80,7 +80,7 @@ LIVE_SCRIPT = r"""
     var stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("deflate"));
     return new Response(stream).arrayBuffer();
   }
-  var rows = L.rows, cols = L.cols, D = null, slots = [], followers = [], pts = [], isFlag = null, player = null, zooms = null;
+  var rows = L.rows, cols = L.cols, D = null, slots = [], followers = [], pts = [], isFlag = null, player = null, zoomAt = [], cur = null, zooms = null;
   function prepare(buf){
     // the first row as int32, then the deltas along the grid column by column in byte planes (live.py: encode)
     var first = new Int32Array(buf.slice(0, 4 * cols)), bytes = new Uint8Array(buf, 4 * cols);
@@ -109,7 +109,7 @@ LIVE_SCRIPT = r"""
     L.keys.forEach(function(k){
       if (k[0] === "#zoom") {
         var parts = k[2].split("#");
-        slots.push({zoom: +k[1], parts: parts, at: at}); at += parts.length - 1; return;
+        zoomAt[+k[1]] = at; at += parts.length - 1; return;  // computed for the shown step only (view)
       }
       var el = k[0] ? document.getElementById(k[0]) : svg;
       var parts = k[2].split("#");
@@ -148,14 +148,21 @@ LIVE_SCRIPT = r"""
   }
   function view(){  // what the player's show(k) does with the view, without touching the steps (cheap)
     var d = player.data, k = +(svg.getAttribute("data-step") || d.n), st = k > 0 ? d.steps[k - 1] : null;
+    if (st && st.z >= 0 && cur && zoomAt[k - 1] !== undefined) {
+      for (var i = 0; i < 4; i++) d.zooms[st.z][i] = Math.round(valueAt(zoomAt[k - 1] + i) * 100) / 100;
+    }
     var zoom = document.getElementById("zoom");
     var box = st && zoom && zoom.checked && k < d.n && st.z >= 0 ? d.zooms[st.z] : null;
     svg.setAttribute("viewBox", (box || player.full).join(" "));
     svg.style.setProperty("--z", box ? (player.full[2] / box[2]).toFixed(3) : "1");
   }
+  function valueAt(c){  // column c at the shown value
+    return isFlag[c] ? (cur.t < 0.5 ? D[cur.r0 + c] : D[cur.r1 + c]) : D[cur.r0 + c] + (D[cur.r1 + c] - D[cur.r0 + c]) * cur.t;
+  }
   function redraw(value){
     var t0 = performance.now();
     var u = Math.log10(value), ct = cell(u), r0 = ct[0] * cols, r1 = Math.min(ct[0] + 1, rows - 1) * cols, t = ct[1];
+    cur = {r0: r0, r1: r1, t: t};
     var zoomed = svg.classList.contains("zoomed");
     for (var s = 0; s < slots.length; s++) {
       var sl = slots[s], parts = sl.parts, txt = parts[0];
@@ -163,7 +170,6 @@ LIVE_SCRIPT = r"""
         var c = sl.at + i - 1, v = isFlag[c] ? (t < 0.5 ? D[r0 + c] : D[r1 + c]) : D[r0 + c] + (D[r1 + c] - D[r0 + c]) * t;
         txt += (Math.round(v * 100) / 100) + parts[i];
       }
-      if (sl.zoom !== undefined) { zooms[sl.zoom] = txt.split(" ").map(Number); continue; }
       if (sl.el === svg) {
         svg.setAttribute("data-full", txt);
         if (player) { var nf = txt.split(" ").map(Number); for (var q = 0; q < 4; q++) player.full[q] = nf[q]; }
@@ -221,6 +227,8 @@ LIVE_SCRIPT = r"""
   }) : Promise.resolve()).then(function(){ return inflate(L.data); }).then(function(buf){
     prepare(buf);
     input.addEventListener("input", function(){ redraw(Math.pow(10, +input.value)); });
+    // a new step: its magnified view at the shown value (the player has just set the built one)
+    if (player) new MutationObserver(function(){ if (cur) view(); }).observe(svg, {attributes: true, attributeFilter: ["data-step"]});
     showChecks(Math.log10(L.initial));
   });
   api.set = function(value){

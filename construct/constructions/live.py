@@ -25,7 +25,14 @@ across the cell, which the refinement keeps small.  One thing in the drawing
 is not continuous: the broken axis (a gap wider than a fifth of the figure is
 broken out) appears at one rod ratio.  A cell across it never converges; it
 is split down to :data:`MIN_CELL` and recorded in :attr:`LiveSweep.jumps`,
-and the page snaps to the nearer side there.
+and the page snaps to the nearer side there.  An arc's large-arc flag is never
+blended: it comes from the nearer grid value, and a cell where it flips is
+refined while the other arc its ends allow lies more than 0.4 px away.  A mark
+that alone jumps inside the domain (the inertia curve's arc about D flips to
+its other side at several rod ratios) is drawn from the nearer grid value
+everywhere (:attr:`LiveSweep.snapped`) instead of forcing the grid down at every
+flip.  The grid stops growing at *max_values* values; a cell still too coarse
+then is recorded as a jump (measured: none for the crank and the inertia curve).
 
 What is interpolated: every element of the figure that carries an id (the
 marks: points, lines, circles, arcs, curves, areas and their hatching), the

@@ -123,14 +123,13 @@ def checks_page(title: str, checks: Sequence[Mapping[str, Any]], *, back: str) -
     whys: dict[str, int] = {}  # each reason once, below the table: many checks share one
     for i, c in enumerate(checks):
         w = whys.setdefault(c.get("why", ""), len(whys) + 1)
-        m, mk = _num(c["measured"])
-        x, xk = _num(c["expected"])
+        m, _ = _num(c["measured"])
+        x, _ = _num(c["expected"])
         err = c["error"]
-        rows.append(f'<tr data-i="{i}"><td>{_esc(c["name"])}</td><td class="num" data-v="{mk}">{_esc(m)}</td>'
-                    f'<td class="num" data-v="{xk}">{_esc(x)}</td>'
-                    f'<td class="num" data-v="{abs(err)!r}">{err:.1e}</td><td class="num">{c["tolerance"]:.0e}</td>'
-                    f'<td class="{"ok" if c["ok"] else "bad"}">{"✓" if c["ok"] else "✗"}</td>'
-                    f'<td class="num">{w}</td></tr>')
+        # the shown numbers sort as numbers (no second copy: the gallery counts its bytes)
+        rows.append(f'<tr data-i="{i}"><td>{_esc(c["name"])}<td class="num">{_esc(m)}<td class="num">{_esc(x)}'
+                    f'<td class="num">{err:.1e}<td class="num">{c["tolerance"]:.0e}'
+                    f'<td class="{"ok" if c["ok"] else "bad"}">{"✓" if c["ok"] else "✗"}<td class="num">{w}')
     body = (f'<p><a href="{_esc(back)}">← gallery</a></p><h1>{_esc(title)}</h1>\n'
             '<table class="sortable"><thead><tr><th data-col>check</th><th data-col>constructed</th>'
             '<th data-col>formula</th><th data-col>error</th><th>tolerance</th><th data-col>verdict</th>'

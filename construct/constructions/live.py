@@ -134,9 +134,12 @@ def drawn_numbers(page: str) -> tuple[list[tuple[str, str, str]], list[float], d
         at = page.index(marker) + len(marker)
         data = json.loads(page[at:page.index("</script>", at)])
         full = [float(x) for x in root.get("data-full", root.get("viewBox", "")).split()]
-        for i, st in enumerate(data["steps"]):  # the whole view where a step is not magnified
+        # each step's view: the camera's (``views``, ``v``) or the magnified box (``zooms``, ``z``; -1: the whole)
+        boxes, index = ("views", "v") if "views" in data else ("zooms", "z")
+        for i, st in enumerate(data["steps"]):
             keys.append(("#zoom", str(i), "# # # #"))
-            nums.extend(float(x) for x in data["zooms"][st["z"]]) if st["z"] >= 0 else nums.extend(full)
+            j = st.get(index, -1)
+            nums.extend(float(x) for x in data[boxes][j]) if j >= 0 else nums.extend(full)
     return keys, nums, {}
 
 

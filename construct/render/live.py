@@ -80,7 +80,7 @@ LIVE_SCRIPT = r"""
     var stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("deflate"));
     return new Response(stream).arrayBuffer();
   }
-  var rows = L.rows, cols = L.cols, D = null, slots = [], followers = [], pts = [], isFlag = null, player = null, zoomAt = [], cur = null, zooms = null;
+  var rows = L.rows, cols = L.cols, D = null, slots = [], followers = [], pts = [], isFlag = null, LIST = "zooms", IDX = "z", player = null, zoomAt = [], cur = null, zooms = null;
   function prepare(buf){
     // the first row as int32, then the deltas along the grid column by column in byte planes (live.py: encode)
     var first = new Int32Array(buf.slice(0, 4 * cols)), bytes = new Uint8Array(buf, 4 * cols);
@@ -101,10 +101,12 @@ LIVE_SCRIPT = r"""
     (L.flags || []).forEach(function(c){ isFlag[c] = 1; });
     var at = 0;
     player = window.constructPlayer;
-    if (player) {  // each step's magnified view gets a box of its own, moved with the given
+    if (player) {  // each step's view (the camera's, or the magnified box) gets a box of its own, moved with the given
+      LIST = player.data.views ? "views" : "zooms"; IDX = player.data.views ? "v" : "z";
       zooms = [];
-      player.data.steps.forEach(function(st, i){ zooms[i] = st.z >= 0 ? player.data.zooms[st.z].slice() : null; if (st.z >= 0) st.z = i; });
-      player.data.zooms = zooms;
+      player.data.steps.forEach(function(st, i){
+        zooms[i] = st[IDX] >= 0 ? player.data[LIST][st[IDX]].slice() : null; if (st[IDX] >= 0) st[IDX] = i; });
+      player.data[LIST] = zooms;
     }
     L.keys.forEach(function(k){
       if (k[0] === "#zoom") {
@@ -148,9 +150,10 @@ LIVE_SCRIPT = r"""
   }
   function view(){  // what the player's show(k) does with the view, without touching the steps (cheap)
     var d = player.data, k = +(svg.getAttribute("data-step") || d.n), st = k > 0 ? d.steps[k - 1] : null;
-    if (st && st.z >= 0 && cur && zoomAt[k - 1] !== undefined) {
-      for (var i = 0; i < 4; i++) d.zooms[st.z][i] = Math.round(valueAt(zoomAt[k - 1] + i) * 100) / 100;
+    if (st && st[IDX] >= 0 && cur && zoomAt[k - 1] !== undefined) {
+      for (var i = 0; i < 4; i++) d[LIST][st[IDX]][i] = Math.round(valueAt(zoomAt[k - 1] + i) * 100) / 100;
     }
+    if (player.move) { player.move(); return; }  // the camera's player moves its view there itself
     var zoom = document.getElementById("zoom");
     var box = st && zoom && zoom.checked && k < d.n && st.z >= 0 ? d.zooms[st.z] : null;
     svg.setAttribute("viewBox", (box || player.full).join(" "));
@@ -228,7 +231,11 @@ LIVE_SCRIPT = r"""
     prepare(buf);
     input.addEventListener("input", function(){ redraw(Math.pow(10, +input.value)); });
     // a new step: its magnified view at the shown value (the player has just set the built one)
-    if (player) new MutationObserver(function(){ if (cur) view(); }).observe(svg, {attributes: true, attributeFilter: ["data-step"]});
+    var seenStep = svg.getAttribute("data-step");
+    if (player) new MutationObserver(function(){
+      var now = svg.getAttribute("data-step");
+      if (now !== seenStep) { seenStep = now; if (cur) view(); }
+    }).observe(svg, {attributes: true, attributeFilter: ["data-step"]});
     showChecks(Math.log10(L.initial));
   });
   api.set = function(value){

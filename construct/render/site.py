@@ -83,17 +83,18 @@ def index_page(entries: Sequence[Mapping[str, Any]], sources: Sequence[Mapping[s
     cards = []
     for e in entries:
         t, s = e["title"], _esc(e["slug"])
-        player = (f'<a href="{s}/teaching/player.html">player</a>' if e["player"] else "")
-        target = f"{s}/teaching/player.html" if e["player"] else f"{s}/teaching/final.svg"
+        # a construction's first figure has its construction step by step and the player; the others are plates
+        teaching = (f'<a href="{s}/teaching/player.html"><img src="{s}/teaching/final.svg" loading="lazy" '
+                    f'alt="Fig. {e["number"]}, teaching, every step"></a>' if e["player"] else "")
+        links = (f'<a href="{s}/teaching/player.html">player</a><a href="{s}/teaching/final.svg">construction</a>'
+                 if e["player"] else "")
         cards.append(
             f'<section class="card" id="{s}">\n<h2>Fig. {e["number"]}. {_esc(t.de)}</h2>'
             f'<p class="en">{_esc(t.en)}</p>\n<p class="meta">{_esc(e["params_text"])} — {_esc(e["source"])}</p>\n'
             f'<div class="thumbs"><a href="{s}/historical/final.svg"><img src="{s}/historical/final.svg" '
-            f'loading="lazy" alt="Fig. {e["number"]}, historical plate"></a>'
-            f'<a href="{target}"><img src="{s}/teaching/final.svg" loading="lazy" '
-            f'alt="Fig. {e["number"]}, teaching, every step"></a></div>\n'
-            f'<p class="links"><a href="{s}/historical/final.svg">plate</a>{player}'
-            f'<a href="{s}/teaching/final.svg">construction</a><a href="{s}/checks.html">checks</a> '
+            f'loading="lazy" alt="Fig. {e["number"]}, historical plate"></a>{teaching}</div>\n'
+            f'<p class="links"><a href="{s}/historical/final.svg">plate</a>{links}'
+            f'<a href="{s}/checks.html">checks</a> '
             f'<span class="{"ok" if e["ok"] else "fail"}">{_esc(e["checks"])}</span></p>\n'
             f'<p class="meta"><b>Method:</b> {_esc(e["method"])}</p></section>')
     errata = "".join(

@@ -196,16 +196,25 @@ LIVE_SCRIPT = r"""
     api.lastMs = performance.now() - t0;
   }
   // the page's title and givens name the built value: they name the shown one
-  var titled = [];
+  var titled = [], NUM = "[0-9]+(?:[.,][0-9]+)?";
+  // the rod as the texts write it: L/r = 5, or r/L = 1/5 (seed 000, Baumann), r/l = 1/5 (§ 146)
+  var forms = L.given === "rod_ratio" ? [["L/r = ", ""], ["r/L = 1/", ""], ["r/l = 1/", ""]] : [[L.symbol + " = ", ""]];
+  forms.forEach(function(f){ f[1] = new RegExp(f[0].replace(/[.*+?^${}()|[\]\\/]/g, "\\$&") + NUM, "g"); });
   document.querySelectorAll("header h1, header h1 *").forEach(function(e){
-    e.childNodes.forEach(function(t){ if (t.nodeType === 3 && t.nodeValue.indexOf(L.symbol + " = ") >= 0) titled.push({n: t, text: t.nodeValue}); });
+    e.childNodes.forEach(function(t){
+      if (t.nodeType === 3 && forms.some(function(f){ f[1].lastIndex = 0; return f[1].test(t.nodeValue); }))
+        titled.push({n: t, text: t.nodeValue, en: !!(t.parentNode.closest && t.parentNode.closest(".en"))});
+    });
   });
   var givenCell = null;
   document.querySelectorAll("#givens th").forEach(function(th){ if (th.textContent === L.given) givenCell = th.nextElementSibling; });
-  var pattern = new RegExp(L.symbol.replace(/[.*+?^${}()|[\]\\/]/g, "\\$&") + " = [0-9]+(?:[.,][0-9]+)?");
   function retitle(value){
-    titled.forEach(function(t){ t.n.nodeValue = t.text.replace(pattern, L.symbol + " = " + book(value)); });
-    if (givenCell) givenCell.textContent = String(Number(value.toPrecision(4)));
+    titled.forEach(function(t){
+      var shown = t.en ? String(Number(value.toPrecision(4))) : book(value), text = t.text;
+      forms.forEach(function(f){ text = text.replace(f[1], f[0] + shown); });
+      t.n.nodeValue = text;
+    });
+    if (givenCell) givenCell.textContent = book(value);
   }
   var body = document.querySelector("#live-checks tbody"), shownAt = -1;
   L.checks = L.checks || [];

@@ -128,14 +128,21 @@ LIVE_SCRIPT = r"""
       var named = t.id ? t : (t.nextElementSibling && t.nextElementSibling.tagName === "text" ? t.nextElementSibling : null);
       var owner = named && named.id && /-label$/.test(named.id) ? document.getElementById(named.id.slice(0, -6)) : null;
       if (owner && owner.tagName === "circle") {
-        followers.push({el: t, p: {el: owner, x: +owner.getAttribute("cx"), y: +owner.getAttribute("cy")}, tf: t.getAttribute("transform") || ""});
+        followers.push({el: t, p: {el: owner, x: +owner.getAttribute("cx"), y: +owner.getAttribute("cy")}, at: coords(t)});
         return;
       }
       var x = +(t.getAttribute("x") || t.getAttribute("x1")), y = +(t.getAttribute("y") || t.getAttribute("y1"));
       var best = null, bd = Infinity;
       pts.forEach(function(p){ var d = (p.x - x) * (p.x - x) + (p.y - y) * (p.y - y); if (d < bd) { bd = d; best = p; } });
-      if (best && bd < 60 * 60) followers.push({el: t, p: best, tf: t.getAttribute("transform") || ""});
+      if (best && bd < 60 * 60) followers.push({el: t, p: best, at: coords(t)});
     });
+  }
+  function coords(e){  // a letter's x, y or a leader line's ends, as built; or its label group's translate
+    var out = {}, g = e.parentNode, m = g && g.classList && g.classList.contains("lbg") &&
+      /^translate\(([-0-9.e]+)[ ,]+([-0-9.e]+)\)$/.exec(g.getAttribute("transform") || "");
+    if (m) return {translate: [+m[1], +m[2]], g: g};
+    ["x", "y", "x1", "y1", "x2", "y2"].forEach(function(a){ var v = e.getAttribute(a); if (v !== null && v !== "" && !isNaN(+v)) out[a] = +v; });
+    return out;
   }
   function cell(u){
     var g = L.grid, lo = 0, hi = g.length - 1;
@@ -183,7 +190,12 @@ LIVE_SCRIPT = r"""
     for (var f = 0; f < followers.length; f++) {
       var fo = followers[f], p = fo.p;
       var dx = +p.el.getAttribute("cx") - p.x, dy = +p.el.getAttribute("cy") - p.y;
-      fo.el.setAttribute("transform", "translate(" + dx.toFixed(2) + " " + dy.toFixed(2) + ")" + (fo.tf ? " " + fo.tf : ""));
+      // moved by their own coordinates (a transform attribute would lose to the camera's CSS scale)
+      if (fo.at.g) {  // the camera's label group: its anchor moves (the letters scale about it)
+        fo.at.g.setAttribute("transform", "translate(" + (fo.at.translate[0] + dx).toFixed(2) + " " + (fo.at.translate[1] + dy).toFixed(2) + ")");
+        continue;
+      }
+      for (var a in fo.at) fo.el.setAttribute(a, (fo.at[a] + (a.charAt(0) === "x" ? dx : dy)).toFixed(2));
     }
     // the broken axis's marks belong to the built value's break; elsewhere the break lies elsewhere or nowhere
     var furniture = document.getElementById("furniture");

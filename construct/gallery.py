@@ -262,6 +262,7 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
             index.append(row)
         write_text(root / "README.md", _readme(index))
         write_text(root / "index.html", _index_html(index))
+        _site_pages(root, index)
         bar.close()
         if before_swap is not None:
             before_swap(root)
@@ -335,35 +336,34 @@ def _readme(index: list[dict]) -> str:
 
 
 def _index_html(index: list[dict]) -> str:
-    esc = html.escape
-    cards = []
+    """The front page (:func:`construct.render.site.index_page`): a card per figure, the errata of each text."""
+    from .render.site import index_page
+
+    return index_page(index, _errata_sources(), "Every construction at the books' parameters: the plate "
+                      "(historical style) and the construction step by step (teaching style); click a "
+                      "picture for the plate or the step player. Built by construct gallery; works offline.")
+
+
+def _errata_sources() -> list[dict]:
+    """Each source text with errata: its name, how many printed numbers, how many of each class, the rows."""
+    from .books.errata import CLASSES, all_errata
+
+    by_source: dict[str, list] = {}
+    for e in all_errata():
+        by_source.setdefault(e.source, []).append(e.as_dict())
+    return [{"source": src, "count": len(rows), "rows": rows,
+             "classes": {c: sum(r["class"] == c for r in rows) for c in CLASSES}}
+            for src, rows in sorted(by_source.items())]
+
+
+def _site_pages(root: Path, index: list[dict]) -> None:
+    """The gallery's other pages: each figure's checks (from its checks.json), each source text's errata."""
+    from .render.site import checks_page, errata_page, errata_slug
+
     for e in index:
-        t, s = e["title"], esc(e["slug"])
-        player = f' · <a href="{s}/teaching/player.html">player</a>' if e["player"] else ""
-        teaching = (f"""<figure><a href="{s}/teaching/player.html"><img src="{s}/teaching/final.svg" alt="Fig. {e['number']}, teaching, every step"></a>
-<figcaption>teaching ({e['steps']} steps){player} · <a href="{s}/teaching/final.svg">final</a></figcaption></figure>
-""" if e["player"] else "")
-        cards.append(f"""<section>
-<h2>Fig. {e['number']}. {esc(t.de)} <span class="en">{esc(t.en)}</span></h2>
-<p class="meta">{esc(e['params_text'])} — {esc(e['source'])}</p>
-<p><b>Method:</b> {esc(e['method'])}</p>
-<p><b>Checks:</b> <span class="{'ok' if e['ok'] else 'fail'}">{esc(e['checks'])}</span>
- (<a href="{s}/checks.md">report</a>)</p>
-<div class="pics">
-<figure><a href="{s}/historical/final.svg"><img src="{s}/historical/final.svg" alt="Fig. {e['number']}, historical plate"></a>
-<figcaption>historical plate{player}</figcaption></figure>
-{teaching}</div>
-</section>""")
-    return ("""<!DOCTYPE html>
-<html lang="de"><head><meta charset="utf-8"><title>construct gallery</title>
-<style>
-body{font:14px/1.45 'DejaVu Sans',Arial,sans-serif;margin:0 auto;max-width:1400px;padding:12px 20px;color:#222;background:#fafafa}
-h1{font-size:22px}h2{font-size:17px;margin-bottom:2px}h2 .en{font-weight:normal;color:#666}
-.meta{color:#666;margin-top:0}.ok{color:#1b7f3b}.fail{color:#b00020;font-weight:bold}
-section{border-top:1px solid #ddd;padding:6px 0 12px}
-.pics{display:flex;flex-direction:column;gap:16px}figure{margin:0;width:100%;max-width:""" + str(DISPLAY_PX) + """px}
-img{width:100%;height:auto;border:1px solid #ccc;background:#fff}figcaption{color:#555;font-size:13px}
-</style></head><body>
-<h1>construct — gallery</h1>
-<p>Every construction at the books' parameters: the plate (historical style) and the construction step by step (teaching style). Click it for the step player. Built by <code>construct gallery</code>.</p>
-""" + "\n".join(cards) + "\n</body></html>\n")
+        report = json.loads((root / e["slug"] / "checks.json").read_text(encoding="utf-8"))
+        write_text(root / e["slug"] / "checks.html", checks_page(
+            f"Fig. {e['number']}. {e['title'].de} ({e['params_text']}): checks", report["checks"],
+            back=f"../index.html#{e['slug']}"))
+    for src in _errata_sources():
+        write_text(root / errata_slug(src["source"]), errata_page(src["source"], src["rows"], back="index.html"))

@@ -10,6 +10,9 @@
 
 from __future__ import annotations
 
+import os
+import shutil
+from pathlib import Path
 from typing import Any, Callable, NamedTuple
 
 import numpy as np
@@ -58,3 +61,31 @@ def rod_ratio_sweep() -> Callable[[str, Any], tuple[Any, Any, Any]]:
         return made[key]
 
     return sweep
+
+
+# -- headless Chromium, for the player, the live player and the gallery site ---------------------------------
+
+CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
+CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+                 "--disable-background-networking", "--disable-component-update", "--disable-sync"]
+
+
+def _browser_unavailable(reason: str):
+    if os.environ.get("CI"):
+        pytest.fail(f"browser test cannot run in CI: {reason}")
+    pytest.skip(reason)
+
+
+@pytest.fixture(scope="session")
+def browser():
+    """Debian's chromium driven by Playwright (.ci/install-browser.sh); skipped without them, except in CI."""
+    try:
+        from playwright.sync_api import sync_playwright
+    except ImportError:
+        _browser_unavailable("playwright is not installed (.ci/install-browser.sh)")
+    if not Path(CHROMIUM).exists():
+        _browser_unavailable("chromium is not installed (.ci/install-browser.sh)")
+    with sync_playwright() as pw:
+        b = pw.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+        yield b
+        b.close()

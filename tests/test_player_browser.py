@@ -12,7 +12,6 @@ Set ``CONSTRUCT_SCREENSHOT=path.png`` to keep a screenshot for looking at.
 from __future__ import annotations
 
 import os
-import shutil
 from pathlib import Path
 
 import pytest
@@ -22,31 +21,6 @@ from construct.kernel.geometry import Circle, Line, Point
 from construct.kernel.geometry import Length
 from construct.render.animate import STEP_SECONDS, step_seconds
 from construct.render.output import write_replay
-
-CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
-ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-        "--disable-background-networking", "--disable-component-update", "--disable-sync"]
-
-
-def _unavailable(reason: str):
-    if os.environ.get("CI"):
-        pytest.fail(f"browser test cannot run in CI: {reason}")
-    pytest.skip(reason)
-
-
-@pytest.fixture(scope="module")
-def browser():
-    try:
-        from playwright.sync_api import sync_playwright
-    except ImportError:
-        _unavailable("playwright is not installed (.ci/install-browser.sh)")
-    if not Path(CHROMIUM).exists():
-        _unavailable("chromium is not installed (.ci/install-browser.sh)")
-    with sync_playwright() as pw:
-        b = pw.chromium.launch(executable_path=CHROMIUM, args=ARGS)
-        yield b
-        b.close()
-
 
 @pytest.fixture(scope="module")
 def player(tmp_path_factory):

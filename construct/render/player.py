@@ -347,6 +347,10 @@ li a.later{color:#bbb}
   });
   var start = parseInt((location.hash || "").slice(1), 10);
   show(isNaN(start) ? n : start);
+  // live givens (construct/render/live.py) redraw the figure and its views in place, then show step k again
+  // the live player's hook (construct.render.live): redraw the step, move the camera to the step's view
+  window.constructPlayer = {data: data, full: full, redraw: function () { show(k); }, move: function () {
+    var st = k > 0 ? data.steps[k - 1] : null; move(st && zoom.checked ? data.views[st.v] : full); }};
 })();
 </script>
 </body>

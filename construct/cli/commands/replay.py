@@ -21,11 +21,37 @@ def add_arguments(p) -> None:
                         "per group (groups); auto: all up to 1500 steps")
     p.add_argument("--force-frames", action="store_true",
                    help="(--frames) write frames even when they are estimated above 500 MB (refused with the estimate otherwise)")
+    p.add_argument("--live", action="store_true",
+                   help="the player gets a slider for the rod ratio L/r over its domain (1.05 .. 1000): the "
+                        "protocol swept over a grid fine enough that the page draws within 0.5 px (takes a minute)")
+
+
+def _live_page(c, fig, style: str):
+    """The live data of the player (construct.constructions.live), computed before anything is written."""
+    from ...constructions.live import live_data, live_givens, live_sweep
+    from ...kernel.errors import InvalidParameter
+    from ...render.styles import STYLES
+
+    givens = live_givens(c, fig) if c is not None else []
+    if not givens or style not in STYLES:
+        raise InvalidParameter(f"--live: {fig.protocol.construction} has no rod ratio to move"
+                               if not givens else f"unknown style {style!r}")
+    return live_data(live_sweep(c, fig, givens[0], style=STYLES[style]))
 
 
 def run(args) -> int:
     c, fig = figure_from_args(args)
+    live = _live_page(c, fig, args.style) if args.live else None
     info = write_replay(c, fig, args.out, style=args.style, frames=args.frames, force=args.force_frames)
+    if live is not None:
+        from pathlib import Path
+
+        from ...io.staging import write_bytes
+        from ...render.live import with_live
+
+        player = Path(args.out) / "player.html"  # whole or not at all: the replay is written already
+        write_bytes(player, with_live(player.read_text(encoding="utf-8"), live).encode("utf-8"))
+        player.chmod(0o644)  # as the replay's other files
     name = c.name if c is not None else fig.protocol.construction
     print(f"{brief(name)}: {info['steps']} steps, {info['frames']} frames written to {brief(info['out'], 400)}",
           file=sys.stderr)

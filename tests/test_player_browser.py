@@ -154,7 +154,7 @@ def test_animated_svg_plays_by_its_clock(browser, tmp_path):
     fig = c.figure(parts=3, rod_ratio=4.0)
     write_replay(c, fig, tmp_path, style="teaching", frames="none")
     n = len(fig.protocol.steps)
-    dt = step_seconds(n)
+    dt = step_seconds()
     assert dt >= 1.5
     page = browser.new_page(viewport={"width": 1000, "height": 800})
     page.goto((tmp_path / "animated.svg").as_uri())

@@ -18,7 +18,7 @@ crank has 7292 steps: three hours at that pace).
 >>> svg = animated_svg(build_scene(get("crank").figure(parts=6)))
 >>> svg.count('attributeName="visibility"') > 10 and "<script" not in svg
 True
->>> step_seconds(6) >= 1.5 and step_seconds(7000) >= 1.5
+>>> step_seconds() >= 1.5
 True
 """
 
@@ -42,7 +42,7 @@ g.cur>.pt,g.cur .lb,g.stage.cur>g>.pt,g.stage.cur>g .lb{fill:%(hl)s;stroke:none}
 g.old{opacity:%(op)s}"""
 
 
-def step_seconds(n_steps: int, seconds: float = STEP_SECONDS) -> float:
+def step_seconds(seconds: float = STEP_SECONDS) -> float:
     """Time per step of the animation: *seconds* whatever the length (the pace is the reader's, not the figure's)."""
     return max(float(seconds), 0.05)
 
@@ -50,11 +50,6 @@ def step_seconds(n_steps: int, seconds: float = STEP_SECONDS) -> float:
 def group_css(style: Style) -> str:
     return STEP_GROUP_CSS % {"hl": style.highlight or "inherit", "hw": fmt(style.highlight_width),
                              "op": fmt(style.earlier_opacity)}
-
-
-def step_groups(drawing: Drawing, layer: str) -> list[tuple[int, list[Any]]]:
-    """The layer's elements, gathered by step: [(k, [element, ...]), ...] in step order."""
-    return drawing.groups[layer]
 
 
 def stages(drawing: Drawing, most: int = MAX_STAGES) -> list[int]:
@@ -170,7 +165,7 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
     f = d.doc.factory
     ends = stages(d)
     n = len(ends)
-    dt = step_seconds(n, seconds)
+    dt = step_seconds(seconds)
     hold = 4.0
     total = n * dt + hold
     marks_steps = style.highlight is not None or style.earlier_opacity < 1.0

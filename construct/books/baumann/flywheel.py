@@ -36,7 +36,7 @@ From them, exactly:
 from __future__ import annotations
 
 import math
-from typing import Iterable, Mapping, Sequence
+from typing import Iterable, Sequence
 
 from ...kernel.errors import InvalidParameter
 
@@ -182,10 +182,6 @@ def worked_totals(kz_per_v: float = 5.0) -> list[dict[str, float]]:
                      "total_quotient": total_weight(gs, v, kz, exact=True), "rim": g1, "arms_hub": total - g1,
                      "rim_by_moment": gs / (1.0 + MOMENT * v * v / kz)})
     return rows
-
-
-def as_mapping(rows: Sequence[Mapping[str, float]], key: str) -> list[float]:
-    return [r[key] for r in rows]
 
 
 #: kz = 5 v (kz in kg/cm², v in m/s): the pairing of both his tables and of his worked totals.

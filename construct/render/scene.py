@@ -375,8 +375,7 @@ def _on_curve_points(steps: Iterable[Step], objects: Replay,
             for c in s.inputs:
                 for p in s.outputs:
                     add(c, p)
-        elif s.op == "neusis_archimedes":
-            pass
+        # neusis_archimedes marks no point on a curve it extends: the marked ruler's points are its own
     return on
 
 

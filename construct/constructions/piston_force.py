@@ -236,10 +236,11 @@ def piston_force_plate(fig: Figure) -> dict:
     kg_at = (x, y0 + (lo - 0.8) * step * unit) if two_sided else (x, y0 + (hi + 0.6) * step * unit)
     furniture.append({"kind": "lettering", "at": kg_at, "text": "kg", "size": 1.0 if two_sided else 0.85})
     d = 0.035 * s
-    furniture += [
-        {"kind": "lettering", "at": (Fn[0] + 0.45 * d, Fn[1] + 0.5 * d), "text": "O"},
-        {"kind": "lettering", "at": (Kn[0] + 0.5 * d, Kn[1] - 0.2 * d), "text": "C"},
-    ]
+    if not two_sided:  # the book's O and C end its one diagram; the two-sided plate is not the book's
+        furniture += [
+            {"kind": "lettering", "at": (Fn[0] + 0.45 * d, Fn[1] + 0.5 * d), "text": "O"},
+            {"kind": "lettering", "at": (Kn[0] + 0.5 * d, Kn[1] - 0.2 * d), "text": "C"},
+        ]
     # the names of the lines, beside a quarter of the way along each
     kq, mq = R[f"K{max(1, (3 * n) // 8)}"], R[f"M{max(1, n // 6)}"]
     furniture += [
@@ -342,7 +343,8 @@ def build_piston_force(*, parts: int, method: str, revolution: bool = False, ind
 
 #: What the two-sided plate adds: the crank side's diagram below the stroke line, the return stroke's base line,
 #: piston forces, mass forces, lines and hatched free forces.
-REVOLUTION_PLATE = (r"rbase", r"rF\d+", r"rK\d+|rKs[12]", r"rM\d+", r"rforce[abc]", r"rmass", r"rfree\.[abc]")
+REVOLUTION_PLATE = (r"rbase", r"rF\d+", r"rK\d+|rKs[12]", r"rM\d+", r"rforce[abc]", r"rmass", r"rfree\.[abc]",
+                    r"axis", r"D[01]", r"(ind|crk)\.(steam|backline)", r"(ind|crk)\.[ER]r?\d+", r"ind\.Z[01]")
 
 
 def _side_scales(b: Builder, c: OrdinateFrame) -> dict[str, Any]:

@@ -536,12 +536,7 @@ def _curves(b: Builder, n: int, fbase: str, *, prefix: str = "", corners: tuple[
             b.area_between(f"{p}free.a", f"{p}forcea", f"{p}mass", f"{p}M0", f"{p}M{n}", hatch_deg=90.0,
                            role="result", de="freie Kräfte zwischen Kolbenkraft- und Massenkraftlinie",
                            en="free forces between the piston-force line and the mass-force line")
-            b.area_between(f"{p}massarea", f"{p}mass", fbase, f"{p}M0", f"{p}M{n}", role="construction",
-                           de="Beschleunigungsfläche über, Verzögerungsfläche unter der Kolbenweglinie",
-                           en="acceleration area above, deceleration area below the piston-path line")
-            b.planimeter(f"{p}balance", f"{p}massarea",
-                         de="mit dem Planimeter umfahren: Beschleunigungs- weniger Verzögerungsfläche",
-                         en="planimeter round it: acceleration less deceleration area")
+            _mass_areas(b, p, fbase, n)
         return
     sign = 1.0 if forward else -1.0
     xs = {k: sign * b[f"X{k}"][0] for k in range(n + 1)}
@@ -571,12 +566,18 @@ def _curves(b: Builder, n: int, fbase: str, *, prefix: str = "", corners: tuple[
             b.area_between(f"{p}free.{piece[-1]}", f"{p}{piece}", f"{p}mass", a, z, hatch_deg=90.0, role="result",
                            de="freie Kräfte zwischen Kolbenkraft- und Massenkraftlinie",
                            en="free forces between the piston-force line and the mass-force line")
-        b.area_between(f"{p}massarea", f"{p}mass", fbase, f"{p}M0", f"{p}M{n}", role="construction",
-                       de="Beschleunigungsfläche über, Verzögerungsfläche unter der Kolbenweglinie",
-                       en="acceleration area above, deceleration area below the piston-path line")
-        b.planimeter(f"{p}balance", f"{p}massarea",
-                     de="mit dem Planimeter umfahren: Beschleunigungs- weniger Verzögerungsfläche",
-                     en="planimeter round it: acceleration less deceleration area")
+        _mass_areas(b, p, fbase, n)
+
+
+def _mass_areas(b: Builder, p: str, fbase: str, n: int) -> None:
+    """The region between the mass-force line and the base (acceleration above, deceleration below), and the
+    planimeter's reading round it: the same two steps for a drawn diagram and a digitised card's."""
+    b.area_between(f"{p}massarea", f"{p}mass", fbase, f"{p}M0", f"{p}M{n}", role="construction",
+                   de="Beschleunigungsfläche über, Verzögerungsfläche unter der Kolbenweglinie",
+                   en="acceleration area above, deceleration area below the piston-path line")
+    b.planimeter(f"{p}balance", f"{p}massarea",
+                 de="mit dem Planimeter umfahren: Beschleunigungs- weniger Verzögerungsfläche",
+                 en="planimeter round it: acceleration less deceleration area")
 
 
 # --------------------------------------------------------------------------

@@ -44,7 +44,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Mapping, Sequence
+from typing import Any, Mapping, NamedTuple, Sequence
 
 import numpy as np
 
@@ -52,12 +52,13 @@ from ..kernel.errors import InvalidParameter
 from ..kernel.instruments import Builder
 from ..kernel.protocol import Provenance
 from .checking import EUCLIDEAN_TOLERANCE, Check
-from .crank import angle_tolerance, crank_angle, point_name
+from .crank import crank_angle, point_name
 from .domain import CRANK_COUNT, CRANK_OFFSET
 
 __all__ = ["Machine", "MACHINES", "parse_cranks", "crank_shifts", "build_revolution", "unit_t", "summed_unit_t",
            "revolution_model", "revolution_ordinate", "revolution_mean", "excess_lobes", "excess_work",
-           "revolution_checks", "REVOLUTION_PLATE", "dead_centres", "drawn_revolution", "revolution_rows"]
+           "revolution_checks", "REVOLUTION_PLATE", "dead_centres", "drawn_revolution", "revolution_rows",
+           "unroll_by_chords", "Unrolled"]
 
 
 @dataclass(frozen=True)
@@ -147,6 +148,46 @@ def dead_centres(shifts: Sequence[int], n: int) -> tuple[int, ...]:
 # --------------------------------------------------------------------------
 
 
+
+class Unrolled(NamedTuple):
+    """The crank circle unrolled on a base line (:func:`unroll_by_chords`)."""
+
+    start: str  # U0
+    base: str
+    marks: list[str]  # U0 .. U<count>
+    ordinates: list[str]  # u0 .. u<count>
+    provenance: Provenance  # the stepping's, the chord's combined in
+
+
+def unroll_by_chords(b: Builder, D0: str, P1: str, count: int, provenance: Provenance, start: tuple[str, str],
+                     label: Any) -> Unrolled:
+    """The crank circle unrolled on a base line: the dividers set to the chord D0–P1 of one division and stepped
+    off *count* times from U0, and the compass erecting an ordinate at every mark (about each mark through its
+    neighbour: small circles, whatever the count).  *provenance* is the stepping's (the chord's is combined in),
+    *start* U0's caption (German, English), ``label(k)`` the letter of the k-th mark or None.
+
+    The marks' provenance (returned with them) is *provenance* combined with the chord's.
+    """
+    U0 = b.given_point("U0", 2.6, -1.2, unit="r", de=start[0], en=start[1], label="0")
+    base = b.given_line("tbase", U0, angle_deg=0.0, de="Grundlinie: abgewickelter Kurbelkreis",
+                        en="base line: the unrolled crank circle")
+    chord = b.length_of("chord", D0, P1, de="Stechzirkel auf die Sehne eines Teils gestellt",
+                        en="dividers set to the chord of one division")
+    prov = provenance.combine(b.provenance[chord])
+    marks = [U0]
+    for k in range(1, count + 1):
+        name = f"U{k}"
+        text = label(k)
+        b.record("dividers", "step_off", (base, marks[-1], chord), (name,),
+                 {"rule": ("toward", U0, None, 1.0, 0.0), "both": False},
+                 f"Sehne zum {k}. Mal abgetragen", f"chord stepped off for the {k}th time", provenance=prov,
+                 role="result", labels={name: text} if text is not None else None)
+        marks.append(name)
+    ords = [b.erect_perpendicular(f"u{k}", mk, base, marks[1] if k == 0 else marks[k - 1])
+            for k, mk in enumerate(marks)]
+    return Unrolled(U0, base, marks, ords, prov)
+
+
 def build_revolution(b: Builder, f: Mapping[str, str], points: Sequence[str], n: int,
                      heights: Mapping[int, tuple[str, str]], shifts: Sequence[int], cylinders: int,
                      return_heights: Mapping[int, tuple[str, str]] | None = None) -> None:
@@ -170,25 +211,12 @@ def build_revolution(b: Builder, f: Mapping[str, str], points: Sequence[str], n:
         return heights[m - j]  # the return stroke: OK of the mirrored crank point 360° - w
 
     with b.group("the whole revolution unrolled with the dividers", "Die ganze Umdrehung mit dem Stechzirkel abgewickelt"):
-        U0 = b.given_point("U0", 2.6, -1.2, unit="r", de="Anfang der Abwicklung (Deckeltotpunkt)",
-                           en="start of the unrolled revolution (head-end dead centre)", label="0")
-        base = b.given_line("tbase", U0, angle_deg=0.0, de="Grundlinie: abgewickelter Kurbelkreis",
-                            en="base line: the unrolled crank circle")
-        chord = b.length_of("chord", f["D0"], points[1], de="Stechzirkel auf die Sehne eines Teils gestellt",
-                            en="dividers set to the chord of one division")
-        prov = Provenance("approximate", f"dividers stepping the chord 2r·sin(π/2n) 2n times (n = {n}): the unrolled "
-                          f"revolution falls short of 2πr by 2r(π − 2n·sin(π/2n))", shortfall).combine(b.provenance[chord])
-        marks = [U0]
-        for k in range(1, m + 1):
-            name = f"U{k}"
-            b.record("dividers", "step_off", (base, marks[-1], chord), (name,),
-                     {"rule": ("toward", U0, None, 1.0, 0.0), "both": False},
-                     f"Sehne zum {k}. Mal abgetragen", f"chord stepped off for the {k}th time", provenance=prov,
-                     role="result", labels={name: f"{round(180 * k / n)}°"} if k in (n // 2, n, n + n // 2, m) and
-                     n % 2 == 0 else None)
-            marks.append(name)
-        ords = [b.erect_perpendicular(f"u{k}", mk, base, marks[1] if k == 0 else marks[k - 1])
-                for k, mk in enumerate(marks)]
+        U0, base, marks, ords, prov = unroll_by_chords(
+            b, f["D0"], points[1], m,
+            Provenance("approximate", f"dividers stepping the chord 2r·sin(π/2n) 2n times (n = {n}): the unrolled "
+                       f"revolution falls short of 2πr by 2r(π − 2n·sin(π/2n))", shortfall),
+            ("Anfang der Abwicklung (Deckeltotpunkt)", "start of the unrolled revolution (head-end dead centre)"),
+            lambda k: f"{round(180 * k / n)}°" if k in (n // 2, n, n + n // 2, m) and n % 2 == 0 else None)
 
     def carry(name: str, foot: str, j: int, seg: tuple[str, str], de: str, en: str, role: str = "construction") -> str:
         H, Q = seg
@@ -389,7 +417,6 @@ def revolution_checks(fig: Any, force: Any = None, scale: float = 1.0) -> list[C
     lam = 1.0 / g["rod_ratio"]
     offsets = fig.params["offsets"]
     cyl = fig.params["cylinders"]
-    made_by = fig.replay.made_by()
     count = len(offsets) * cyl
     unit = "P" if force is None else "at"
     # each crank's position as drawn (its division point's angle; the return stroke's mirrored): the division's

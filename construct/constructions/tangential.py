@@ -62,7 +62,8 @@ from .indicator import back_pressure as model_back_pressure
 from .indicator import steam_pressure as model_steam_pressure
 from .ordinates import inertia_setup, ordinate_value, point_kind
 from .indicator_card import card_force, card_givens, card_pair, draw_card, load_indicator
-from .revolution import MACHINES, REVOLUTION_PLATE, build_revolution, crank_shifts, parse_cranks, revolution_checks
+from .revolution import (MACHINES, REVOLUTION_PLATE, build_revolution, crank_shifts, parse_cranks, revolution_checks,
+                         unroll_by_chords)
 
 __all__ = ["TANGENTIAL", "build_tangential", "tangential_checks", "ok_over_r", "t_over_unit", "free_force",
            "model_t", "drawn_model", "unrolled_angle", "mean_height", "excess_area", "crossing_angles", "model_summary",
@@ -289,24 +290,11 @@ def _unrolled(b: Builder, f: Mapping[str, str], points: list[str], n: int, heigh
     r = b.givens["r"]
     shortfall = chord_shortfall(n, r)
     with b.group("the crank circle unrolled with the dividers", "Der Kurbelkreis mit dem Stechzirkel abgewickelt"):
-        U0 = b.given_point("U0", 2.6, -1.2, unit="r", de="Anfang der Abwicklung", en="start of the unrolled circle",
-                           label="0")
-        base = b.given_line("tbase", U0, angle_deg=0.0, de="Grundlinie: abgewickelter Kurbelkreis",
-                            en="base line: the unrolled crank circle")
-        chord = b.length_of("chord", f["D0"], points[1], de="Stechzirkel auf die Sehne eines Teils gestellt",
-                            en="dividers set to the chord of one division")
-        prov = _approx(f"dividers stepping the chord 2r·sin(π/2n) n times (n = {n}): the unrolled length falls "
-                       f"short of πr by r(π − 2n·sin(π/2n))", shortfall).combine(b.provenance[chord])
-        marks = [U0]
-        for k in range(1, n + 1):
-            name = f"U{k}"
-            b.record("dividers", "step_off", (base, marks[-1], chord), (name,),
-                     {"rule": ("toward", U0, None, 1.0, 0.0), "both": False},
-                     f"Sehne zum {k}. Mal abgetragen", f"chord stepped off for the {k}th time", provenance=prov,
-                     role="result", labels={name: str(k)} if k in (n // 2, n) else None)
-            marks.append(name)
-        # The compass about each mark through its neighbour: small circles, whatever n is.
-        ords = [b.erect_perpendicular(f"u{k}", m, base, marks[1] if k == 0 else marks[k - 1]) for k, m in enumerate(marks)]
+        U0, base, marks, ords, prov = unroll_by_chords(
+            b, f["D0"], points[1], n,
+            _approx(f"dividers stepping the chord 2r·sin(π/2n) n times (n = {n}): the unrolled length falls "
+                    f"short of πr by r(π − 2n·sin(π/2n))", shortfall),
+            ("Anfang der Abwicklung", "start of the unrolled circle"), lambda k: str(k) if k in (n // 2, n) else None)
     with b.group("tangential pressures carried to the unrolled circle", "Tangentialdrücke auf die Abwicklung getragen"):
         curve_pts = [U0]
         for k in range(1, n):

@@ -108,3 +108,7 @@ def test_replay_live_writes_a_player_with_the_slider(tmp_path):
     page = (out / "player.html").read_text(encoding="utf-8")
     assert 'type="range" name="rod_ratio"' in page and 'id="live-data"' in page and "http" not in \
         page.replace("http://www.w3.org", "")
+    # the live player is written with the replay: its manifest names the page as it is
+    from construct.io.manifest import changed_files
+
+    assert changed_files(out, "replay") == []

@@ -235,8 +235,11 @@ OUTPUTS = ("animated", "player", "storyboard")
 
 def write_outputs(stage: Path, construction: Construction | None, figure: Figure, st: Style, *, frames: str = "none",
                   fig_number: int | str | None = None, protocol: bool = True,
-                  outputs: tuple[str, ...] = OUTPUTS) -> dict[str, Any]:
+                  outputs: tuple[str, ...] = OUTPUTS, live: Any = None) -> dict[str, Any]:
     """Write final.svg, steps/ (when asked), protocol.json and *outputs*: animated.svg, player.html, storyboard.svg.
+
+    *live*: the data of a live player (:func:`construct.constructions.live.live_data`), whose slider the
+    player then carries (:func:`construct.render.live.with_live`).
 
     One :class:`Drawing` lays the construction out once; the layered final
     figure, the frames, the animation and the player all carry its elements.
@@ -272,7 +275,12 @@ def write_outputs(stage: Path, construction: Construction | None, figure: Figure
     if "player" in outputs:
         from .notation import given_rows
 
-        write_text(stage / "player.html", player_html(scene, st, givens=given_rows(figure), drawing=drawing))
+        page = player_html(scene, st, givens=given_rows(figure), drawing=drawing)
+        if live is not None:
+            from .live import with_live
+
+            page = with_live(page, live)
+        write_text(stage / "player.html", page)
     if "storyboard" in outputs:
         write_text(stage / "storyboard.svg", storyboard_svg(drawing))  # type: ignore[arg-type]
     return {"steps": len(scene.steps), "frames": len(ks)}
@@ -297,10 +305,12 @@ def is_replay_folder(folder: str | Path) -> bool:
 
 
 def write_replay(construction: Construction | None, figure: Figure, out_dir: str | Path, *, style: str = "plain",
-                 frames: str = "none", styles: dict[str, Style] | None = None, force: bool = False) -> dict[str, Any]:
+                 frames: str = "none", styles: dict[str, Style] | None = None, force: bool = False,
+                 live: Any = None) -> dict[str, Any]:
     """Write everything a replay produces; return a summary (counts, paths).
 
     Frames estimated above :data:`MAX_FRAME_BYTES` are refused before anything is drawn, unless *force*.
+    *live*: the data of a live player (a slider for a given), as for :func:`write_outputs`.
     """
     from . import styles as style_module
 
@@ -317,5 +327,5 @@ def write_replay(construction: Construction | None, figure: Figure, out_dir: str
     check_frames_size(figure, frames, force)
     with replaced_folder(out_dir, manifest="replay", described=REPLAY_DESCRIBED, what="replay folder") as stage:
         stage.mkdir()
-        info = write_outputs(stage, construction, figure, st, frames=frames)
+        info = write_outputs(stage, construction, figure, st, frames=frames, live=live)
     return {**info, "out": str(out_dir)}

@@ -42,16 +42,8 @@ def _live_page(c, fig, style: str):
 def run(args) -> int:
     c, fig = figure_from_args(args)
     live = _live_page(c, fig, args.style) if args.live else None
-    info = write_replay(c, fig, args.out, style=args.style, frames=args.frames, force=args.force_frames)
-    if live is not None:
-        from pathlib import Path
-
-        from ...io.staging import write_bytes
-        from ...render.live import with_live
-
-        player = Path(args.out) / "player.html"  # whole or not at all: the replay is written already
-        write_bytes(player, with_live(player.read_text(encoding="utf-8"), live).encode("utf-8"))
-        player.chmod(0o644)  # as the replay's other files
+    # the live player is written with the rest of the replay, in its staging folder (and its manifest)
+    info = write_replay(c, fig, args.out, style=args.style, frames=args.frames, force=args.force_frames, live=live)
     name = c.name if c is not None else fig.protocol.construction
     print(f"{brief(name)}: {info['steps']} steps, {info['frames']} frames written to {brief(info['out'], 400)}",
           file=sys.stderr)

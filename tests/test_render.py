@@ -26,7 +26,9 @@ from construct.render.output import scene_for, write_replay
 from construct.render.scene import build_scene
 from construct.render.styles import STYLES
 from construct.render import svgdoc
-from construct.render.svg import Drawing, hatch_path, Viewport
+from construct.render.paths import hatch_path
+from construct.render.svg import Drawing
+from construct.render.viewport import Viewport
 
 SVG = "{http://www.w3.org/2000/svg}"
 

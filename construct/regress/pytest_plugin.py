@@ -65,7 +65,7 @@ def safe_name(text: str) -> str:
 
 def _style(style: Any) -> Any:
     from ..render.styles import STYLES
-    from ..render.svg import Style
+    from ..render.styles import Style
 
     if isinstance(style, Style):
         return style
@@ -207,7 +207,7 @@ class GoldenChecker:
         *figure* is anything with ``.protocol`` and ``.replay`` (a
         :class:`construct.constructions.Figure`).  *name* defaults to
         ``<test module>.<test name>``; *style* is a style name (``plain``, ``teaching``, ``historical``)
-        or a :class:`construct.render.svg.Style`; *frames* as for ``construct
+        or a :class:`construct.render.styles.Style`; *frames* as for ``construct
         replay`` (standalone frames besides the layered figure; "none" by default: every step
         is compared from ``final.svg`` already).  With *legible* (the default) the rendered
         figure must also pass ``construct lint`` (:func:`construct.regress.lint.lint_path`): the

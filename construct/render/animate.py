@@ -26,7 +26,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from .svg import PLAIN, Drawing, Style, fmt, group_caption
+from .styles import PLAIN, Style
+from .svg import Drawing, group_caption
+from .svgdoc import fmt
+from .viewport import camera_transform
 
 __all__ = ["animated_svg", "step_seconds", "stages", "STEP_GROUP_CSS", "STEP_SECONDS", "MAX_STAGES"]
 
@@ -111,7 +114,6 @@ def _camera(d: Drawing, ends: list[int], dt: float, total: float) -> tuple[Any, 
     view to view in the last moments before a stage whose view differs, its zoom level class and the
     ring round a small current mark switching with the stages."""
     from .camera import level, zoom_of
-    from .svg import camera_transform
 
     f = d.doc.factory
     full = d.full_view

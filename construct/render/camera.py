@@ -27,10 +27,10 @@ the same figure gives the same views on every machine.
 
 from __future__ import annotations
 
-import math
 from typing import Callable, Sequence
 
 from .scene import Scene, extreme_points
+from .svgdoc import fmt
 
 __all__ = ["step_views", "ZOOM_LEVELS", "level", "level_css", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of"]
 
@@ -60,8 +60,6 @@ def level(zoom: float) -> int:
 
 def level_css() -> str:
     """The rules that keep letters, points and leaders at their screen size at each zoom level."""
-    from .svg import fmt
-
     rules = [".pt{transform-box:fill-box;transform-origin:center}",
              ".construction,.result,.auxiliary,.given,.hatch,.fur,.ring{vector-effect:non-scaling-stroke}",
              ".lbx{display:none}"]
@@ -79,8 +77,6 @@ View = tuple[float, float, float, float]
 
 def view_text(v: View) -> str:
     """A view as an SVG viewBox / ``data-view`` value: "x y w h", two decimals."""
-    from .svg import fmt
-
     return " ".join(fmt(c) for c in v)
 
 

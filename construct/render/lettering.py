@@ -45,7 +45,7 @@ _TURNS = (0, 30, -30, 60, -60, 90, -90, 120, -120, 150, -150, 180)
 _DISTANCES = (0.9, 1.45, 2.1, 2.8, 3.6)
 #: From this distance (letter heights) on, a letter is tied to its point by a leader line.
 LEADER_FROM = 2.0
-#: Width of the paper-coloured halo drawn beneath every letter (svg.Style.css: stroke-width 3.5px).
+#: Width of the paper-coloured halo drawn beneath every letter (styles.Style.css: stroke-width 3.5px).
 HALO_PX = 3.5
 #: The font a letter is measured in when none is named (the teaching style's).
 DEFAULT_FONT = "'DejaVu Sans', Arial, sans-serif"

@@ -25,7 +25,8 @@ from typing import TYPE_CHECKING, Any
 from ..io.manifest import foreign_entries
 from ..io.staging import replaced_folder, write_text
 from .scene import Scene, build_scene
-from .svg import Drawing, Style, render_svg
+from .styles import Style
+from .svg import Drawing, render_svg
 
 if TYPE_CHECKING:  # annotations only: the drawing layer sits below the figures and constructions it draws
     from ..constructions import Construction

@@ -34,7 +34,9 @@ from typing import Any, Mapping
 
 from .animate import STEP_SECONDS, group_css
 from .captions import displayed
-from .svg import PLAIN, Drawing, Style, fmt, group_caption
+from .styles import PLAIN, Style
+from .svg import Drawing, group_caption
+from .svgdoc import fmt
 
 __all__ = ["player_html", "json_for_script"]
 

@@ -316,25 +316,37 @@ class Scene:
         limit = below * max(x1 - x0, y1 - y0)
         path = self.steps[k - 1].group
         for depth in range(1, len(path) + 1):
-            box = self._group_boxes().get(path[:depth])
+            box = self.group_boxes.get(path[:depth])
             if box is not None and max(box[2] - box[0], box[3] - box[1]) < limit:
                 return box
         return None
 
-    def _group_boxes(self) -> dict[tuple[str, ...], tuple[float, float, float, float]]:
-        cached = self.__dict__.get("_boxes")
-        if cached is None:
-            cached = {}
-            for m in self.marks:
-                pts = extreme_points(m)
-                for depth in range(1, len(m.group) + 1):
-                    key = m.group[:depth]
-                    for x, y in pts:
-                        b = cached.get(key)
-                        cached[key] = (x, y, x, y) if b is None else (min(b[0], x), min(b[1], y),
-                                                                       max(b[2], x), max(b[3], y))
-            self.__dict__["_boxes"] = cached
-        return cached
+    @functools.cached_property
+    def group_boxes(self) -> dict[tuple[str, ...], tuple[float, float, float, float]]:
+        """The extent (x0, y0, x1, y1) of every group and its enclosing groups, by group path."""
+        boxes: dict[tuple[str, ...], tuple[float, float, float, float]] = {}
+        for m in self.marks:
+            pts = extreme_points(m)
+            for depth in range(1, len(m.group) + 1):
+                key = m.group[:depth]
+                for x, y in pts:
+                    b = boxes.get(key)
+                    boxes[key] = (x, y, x, y) if b is None else (min(b[0], x), min(b[1], y),
+                                                                 max(b[2], x), max(b[3], y))
+        return boxes
+
+    @functools.cached_property
+    def group_captions(self) -> dict[tuple[str, ...], str]:
+        """The caption of every step's group path ("Kurbelkreis › Teilung"), German titles where given.
+
+        Runs of steps share a group, so each path is written once.
+        """
+        titles = self.params.get("group_titles") or {}
+        out: dict[tuple[str, ...], str] = {}
+        for s in self.steps:
+            if s.group not in out:
+                out[s.group] = displayed(" › ".join(self.readable(titles.get(g, g)) for g in s.group))
+        return out
 
 
 def _safe_id(text: str) -> str:

@@ -28,7 +28,8 @@ from __future__ import annotations
 import math
 
 from .scene import Scene
-from .svg import PLAIN, Drawing, Style, fmt
+from .svg import Drawing
+from .svgdoc import fmt
 from .wrapping import shorten, wrap
 
 __all__ = ["storyboard_svg", "storyboard_steps", "MAX_TILES"]

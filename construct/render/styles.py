@@ -23,9 +23,155 @@
 
 from __future__ import annotations
 
-from .svg import PLAIN, Style
+from dataclasses import dataclass, field
+from typing import Mapping
 
-__all__ = ["STYLES", "HISTORICAL", "TEACHING", "PLAIN"]
+from .camera import level_css
+from .lettering import HALO_PX
+from .plate import LOOKS_CSS
+from .svgdoc import fmt
+
+__all__ = ["Style", "STYLES", "HISTORICAL", "TEACHING", "PLAIN"]
+
+
+@dataclass(frozen=True)
+class Style:
+    """How marks look.  Colours are CSS colours, widths in px at the drawing scale."""
+
+    name: str = "plain"
+    background: str = "#ffffff"
+    ink: str = "#000000"
+    construction: str = "#8a8a8a"
+    construction_width: float = 0.7
+    result_width: float = 1.8
+    auxiliary_dash: str | None = None
+    point_radius: float = 2.0
+    aux_point_radius: float = 1.1
+    #: Points are drawn as a ring of this stroke width (0: a filled dot).
+    point_ring: float = 0.0
+    label_font: str = "Georgia, 'DejaVu Serif', serif"
+    label_size: float = 13.0
+    label_italic: bool = False
+    caption_font: str = "'DejaVu Sans', Arial, sans-serif"
+    caption_size: float = 13.0
+    caption_italic: bool = False
+    #: Colour of marks by the provenance of what they show (approximate in a warm tone).
+    provenance_colours: Mapping[str, str] = field(default_factory=lambda: {"approximate": "#b35900", "trial": "#7a3fb0",
+                                                                            "neusis": "#00708a"})
+    #: Colour of marks by instrument (teaching style); empty: one construction colour.
+    tool_colours: Mapping[str, str] = field(default_factory=dict)
+    show_caption: bool = True
+    #: Colour of the current step's marks in frames (None: no highlight).
+    highlight: str | None = None
+    highlight_width: float = 2.4
+    #: Opacity of the steps before the current one in frames (1: no change).
+    earlier_opacity: float = 1.0
+    #: Opacity of the helpers of a finished group (:meth:`Scene.fade_end`; 1: they never fade).
+    done_opacity: float = 1.0
+    #: Colour of what the current step's instrument is set on (centre, through point, curves cut).
+    input_colour: str | None = None
+    #: The final figure shows a book plate (results and what locates them), not every step.
+    plate: bool = False
+    #: Caption of the final figure: "Fig." plate caption or the plain title lines.
+    fig_caption: bool = False
+    #: Hatch areas with fine lines (else a light fill).
+    hatch: bool = False
+    hatch_spacing: float = 5.0
+    area_fill: str = "#d9d9d9"
+    #: Frames whose current group is smaller than this fraction of the figure get a magnified inset.
+    zoom_below: float = 0.0
+    #: Frames show only the region drawn by the end of the current top-level group (same canvas size).
+    progressive_zoom: bool = False
+    #: The caption shows the group path of the current step above it.
+    show_group: bool = False
+    #: Tag the current step's unlettered points with their names, so that the
+    #: caption's "M2 where k1 meets k2" can be found in the figure.
+    name_tags: bool = False
+    #: Every step is shown through a camera view (:mod:`construct.render.camera`): player, animation, frames.
+    camera: bool = False
+    #: Radius (screen px) of the ring round the current step's mark when that mark is small (0: none).
+    ring_px: float = 0.0
+    width_px: float = 960.0
+    #: Smallest height of the drawing area (wide figures get room for the stages of a progressive zoom).
+    min_drawing_px: float = 0.0
+    margin_px: float = 24.0
+
+    def css(self) -> str:
+        """The style sheet every SVG in this style carries."""
+        rules = [
+            ".construction,.auxiliary,.result,.given{fill:none;stroke-linecap:round}",
+            f".construction,.auxiliary{{stroke:{self.construction};stroke-width:{fmt(self.construction_width)}}}",
+            f".result{{stroke:{self.ink};stroke-width:{fmt(self.result_width)}}}",
+        ]
+        if self.auxiliary_dash:
+            rules.append(f".auxiliary{{stroke-dasharray:{self.auxiliary_dash}}}")
+        for tool, colour in sorted(self.tool_colours.items()):
+            rules.append(f".{tool}{{stroke:{colour}}}")
+            rules.append(f".pt.{tool}{{fill:{colour}}}")
+        for prov, colour in sorted(self.provenance_colours.items()):
+            rules.append(f".{prov}{{stroke:{colour}}}")
+            rules.append(f".pt.{prov}{{fill:{colour}}}")
+        if self.point_ring:
+            rules.append(f".pt{{fill:{self.background};stroke:{self.ink};stroke-width:{fmt(self.point_ring)}}}")
+        else:
+            rules.append(f".pt{{fill:{self.ink};stroke:none}}")
+        rules.append(".result.pt{stroke:none}" if not self.point_ring else f".result.pt{{fill:{self.ink}}}")
+        rules.append(f".area{{fill:{self.area_fill};stroke:none}}")
+        rules.append(f".hatch{{fill:none;stroke:{self.ink};stroke-width:0.4}}")
+        italic = "font-style:italic;" if self.label_italic else ""
+        rules.append(f".lb{{fill:{self.ink};stroke:none;font-family:{self.label_font};"
+                     f"font-size:{fmt(self.label_size)}px;{italic}text-anchor:middle}}")
+        cap_italic = "font-style:italic;" if self.caption_italic else ""
+        rules.append(f".cap{{fill:{self.ink};stroke:none;font-family:{self.caption_font};"
+                     f"font-size:{fmt(self.caption_size)}px;{cap_italic}}}")
+        rules.append(f".cap.en{{fill:{self.construction}}}")
+        rules.append(f".cap.grp{{font-size:{fmt(0.85 * self.caption_size)}px;fill:{self.construction}}}")
+        rules.append(".cap.mid{text-anchor:middle}")
+        if self.earlier_opacity < 1.0:
+            rules.append(f".old{{opacity:{fmt(self.earlier_opacity)}}}")
+        if self.highlight:
+            # ``cur`` and ``old`` sit on a step's group (frames are views of the layered figure)
+            rules.append(f".cur>*{{stroke:{self.highlight};stroke-width:{fmt(self.highlight_width)}}}")
+            # a point is small: the current one gets a halo in the highlight colour, 16 units across or more with
+            # its dot (12.5 px on the screen at the player's smallest letter scale): seen at once
+            rules.append(f".cur>.pt{{fill:{self.highlight};stroke:{self.highlight};stroke-width:13;"
+                         f"stroke-opacity:0.35}}")
+            rules.append(f".cur .lb{{fill:{self.highlight};stroke:none}}")
+        rules.append(f".inset{{fill:{self.background};stroke:{self.construction};stroke-width:0.8}}")
+        if self.done_opacity <= 0.0:
+            rules.append(".done{display:none}")  # a finished group collapses to its results
+        elif self.done_opacity < 1.0:
+            rules.append(f".done{{opacity:{fmt(self.done_opacity)}}}")
+        if self.input_colour:
+            ic = self.input_colour
+            rules.append(f".inp>*{{stroke:{ic};stroke-width:{fmt(0.7 * self.highlight_width)}}}")
+            rules.append(f".inp>.pt{{fill:{ic};stroke:{ic};stroke-width:2}}")
+            rules.append(f".inp .lb{{fill:{ic};stroke:none}}")
+        if self.name_tags:
+            # a tag at the letters' size: the player holds letters at 9.5 px at least, a smaller tag would fall below 9
+            rules.append(".tag{display:none}")
+            rules.append(".cur .tag,.inp .tag{display:inline}")
+        # Plate looks and furniture (construct.render.plate), and the paper-coloured halo
+        # behind every letter, drawn as a copy beneath it (cairosvg has no paint-order).
+        rules.append(f".fur{{fill:none;stroke:{self.ink};stroke-width:0.6px}}.arrow{{fill:{self.ink};stroke:none}}")
+        rules.extend(LOOKS_CSS)
+        rules.append(f".brk{{fill:{self.background};stroke:none}}.brkline{{fill:none;stroke:{self.ink};stroke-width:0.8px}}")
+        rules.append(".view{display:none}")
+        if self.ring_px and self.highlight:
+            rules.append(f".ring{{fill:none;stroke:{self.highlight};stroke-width:2.5px;opacity:0.85}}")
+        # letters drawn about their point (class lbg): set off by a screen distance at every zoom
+        if self.camera:
+            rules.append(level_css())
+        else:
+            rules.append(".lbx{display:none}")
+
+        halo = f"fill:{self.background};stroke:{self.background};stroke-width:{fmt(HALO_PX)}px;stroke-linejoin:round"
+        rules.append(f".lb.halo,.cur .lb.halo,.inp .lb.halo{{{halo}}}")
+        rules.append(f".leader,.cur .leader,.inp .leader{{fill:none;stroke:{self.ink};stroke-width:0.4px}}")
+        return "\n".join(rules)
+
+
+PLAIN = Style()
 
 HISTORICAL = Style(
     name="historical",

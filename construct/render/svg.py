@@ -28,226 +28,19 @@ from __future__ import annotations
 
 import bisect
 import math
-from dataclasses import dataclass, field
-from typing import Any, Mapping, Sequence
+from typing import Any, Sequence
 
 from . import svgdoc
 from .captions import TITLE_LIMIT, displayed
-from .camera import view_text
 from .lettering import HALO_PX, LEADER_FROM
+from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
 from .scene import Mark, Scene, label_offset_direction
+from .styles import PLAIN, Style
+from .svgdoc import fmt
+from .viewport import PLAYER_FIGURE_PX, Viewport, camera_transform
 from .wrapping import wrap as wrap_chars
 
-__all__ = ["Style", "PLAIN", "render_svg", "fmt", "Viewport", "Drawing",
-           "step_caption", "wrap"]
-
-
-#: The most the step player shows of the figure in a 1400 × 1000 window (width, height in screen px).
-PLAYER_FIGURE_PX = (985.0, 700.0)
-
-
-def fmt(v: float, decimals: int = 2) -> str:
-    """Fixed-point with *decimals* decimals, trailing zeros trimmed; never '-0'.
-
-    >>> fmt(1.005), fmt(-0.0001), fmt(12.5), fmt(3.14159, 3)
-    ('1', '0', '12.5', '3.142')
-    """
-    text = f"{v:.{decimals}f}".rstrip("0").rstrip(".")
-    return "0" if text in ("-0", "") else text
-
-
-@dataclass(frozen=True)
-class Style:
-    """How marks look.  Colours are CSS colours, widths in px at the drawing scale."""
-
-    name: str = "plain"
-    background: str = "#ffffff"
-    ink: str = "#000000"
-    construction: str = "#8a8a8a"
-    construction_width: float = 0.7
-    result_width: float = 1.8
-    auxiliary_dash: str | None = None
-    point_radius: float = 2.0
-    aux_point_radius: float = 1.1
-    #: Points are drawn as a ring of this stroke width (0: a filled dot).
-    point_ring: float = 0.0
-    label_font: str = "Georgia, 'DejaVu Serif', serif"
-    label_size: float = 13.0
-    label_italic: bool = False
-    caption_font: str = "'DejaVu Sans', Arial, sans-serif"
-    caption_size: float = 13.0
-    caption_italic: bool = False
-    #: Colour of marks by the provenance of what they show (approximate in a warm tone).
-    provenance_colours: Mapping[str, str] = field(default_factory=lambda: {"approximate": "#b35900", "trial": "#7a3fb0",
-                                                                            "neusis": "#00708a"})
-    #: Colour of marks by instrument (teaching style); empty: one construction colour.
-    tool_colours: Mapping[str, str] = field(default_factory=dict)
-    show_caption: bool = True
-    #: Colour of the current step's marks in frames (None: no highlight).
-    highlight: str | None = None
-    highlight_width: float = 2.4
-    #: Opacity of the steps before the current one in frames (1: no change).
-    earlier_opacity: float = 1.0
-    #: Opacity of the helpers of a finished group (:meth:`Scene.fade_end`; 1: they never fade).
-    done_opacity: float = 1.0
-    #: Colour of what the current step's instrument is set on (centre, through point, curves cut).
-    input_colour: str | None = None
-    #: The final figure shows a book plate (results and what locates them), not every step.
-    plate: bool = False
-    #: Caption of the final figure: "Fig." plate caption or the plain title lines.
-    fig_caption: bool = False
-    #: Hatch areas with fine lines (else a light fill).
-    hatch: bool = False
-    hatch_spacing: float = 5.0
-    area_fill: str = "#d9d9d9"
-    #: Frames whose current group is smaller than this fraction of the figure get a magnified inset.
-    zoom_below: float = 0.0
-    #: Frames show only the region drawn by the end of the current top-level group (same canvas size).
-    progressive_zoom: bool = False
-    #: The caption shows the group path of the current step above it.
-    show_group: bool = False
-    #: Tag the current step's unlettered points with their names, so that the
-    #: caption's "M2 where k1 meets k2" can be found in the figure.
-    name_tags: bool = False
-    #: Every step is shown through a camera view (:mod:`construct.render.camera`): player, animation, frames.
-    camera: bool = False
-    #: Radius (screen px) of the ring round the current step's mark when that mark is small (0: none).
-    ring_px: float = 0.0
-    width_px: float = 960.0
-    #: Smallest height of the drawing area (wide figures get room for the stages of a progressive zoom).
-    min_drawing_px: float = 0.0
-    margin_px: float = 24.0
-
-    def css(self) -> str:
-        """The style sheet every SVG in this style carries."""
-        rules = [
-            ".construction,.auxiliary,.result,.given{fill:none;stroke-linecap:round}",
-            f".construction,.auxiliary{{stroke:{self.construction};stroke-width:{fmt(self.construction_width)}}}",
-            f".result{{stroke:{self.ink};stroke-width:{fmt(self.result_width)}}}",
-        ]
-        if self.auxiliary_dash:
-            rules.append(f".auxiliary{{stroke-dasharray:{self.auxiliary_dash}}}")
-        for tool, colour in sorted(self.tool_colours.items()):
-            rules.append(f".{tool}{{stroke:{colour}}}")
-            rules.append(f".pt.{tool}{{fill:{colour}}}")
-        for prov, colour in sorted(self.provenance_colours.items()):
-            rules.append(f".{prov}{{stroke:{colour}}}")
-            rules.append(f".pt.{prov}{{fill:{colour}}}")
-        if self.point_ring:
-            rules.append(f".pt{{fill:{self.background};stroke:{self.ink};stroke-width:{fmt(self.point_ring)}}}")
-        else:
-            rules.append(f".pt{{fill:{self.ink};stroke:none}}")
-        rules.append(".result.pt{stroke:none}" if not self.point_ring else f".result.pt{{fill:{self.ink}}}")
-        rules.append(f".area{{fill:{self.area_fill};stroke:none}}")
-        rules.append(f".hatch{{fill:none;stroke:{self.ink};stroke-width:0.4}}")
-        italic = "font-style:italic;" if self.label_italic else ""
-        rules.append(f".lb{{fill:{self.ink};stroke:none;font-family:{self.label_font};"
-                     f"font-size:{fmt(self.label_size)}px;{italic}text-anchor:middle}}")
-        cap_italic = "font-style:italic;" if self.caption_italic else ""
-        rules.append(f".cap{{fill:{self.ink};stroke:none;font-family:{self.caption_font};"
-                     f"font-size:{fmt(self.caption_size)}px;{cap_italic}}}")
-        rules.append(f".cap.en{{fill:{self.construction}}}")
-        rules.append(f".cap.grp{{font-size:{fmt(0.85 * self.caption_size)}px;fill:{self.construction}}}")
-        rules.append(".cap.mid{text-anchor:middle}")
-        if self.earlier_opacity < 1.0:
-            rules.append(f".old{{opacity:{fmt(self.earlier_opacity)}}}")
-        if self.highlight:
-            # ``cur`` and ``old`` sit on a step's group (frames are views of the layered figure)
-            rules.append(f".cur>*{{stroke:{self.highlight};stroke-width:{fmt(self.highlight_width)}}}")
-            # a point is small: the current one gets a halo in the highlight colour, 16 units across or more with
-            # its dot (12.5 px on the screen at the player's smallest letter scale): seen at once
-            rules.append(f".cur>.pt{{fill:{self.highlight};stroke:{self.highlight};stroke-width:13;"
-                         f"stroke-opacity:0.35}}")
-            rules.append(f".cur .lb{{fill:{self.highlight};stroke:none}}")
-        rules.append(f".inset{{fill:{self.background};stroke:{self.construction};stroke-width:0.8}}")
-        if self.done_opacity <= 0.0:
-            rules.append(".done{display:none}")  # a finished group collapses to its results
-        elif self.done_opacity < 1.0:
-            rules.append(f".done{{opacity:{fmt(self.done_opacity)}}}")
-        if self.input_colour:
-            ic = self.input_colour
-            rules.append(f".inp>*{{stroke:{ic};stroke-width:{fmt(0.7 * self.highlight_width)}}}")
-            rules.append(f".inp>.pt{{fill:{ic};stroke:{ic};stroke-width:2}}")
-            rules.append(f".inp .lb{{fill:{ic};stroke:none}}")
-        if self.name_tags:
-            # a tag at the letters' size: the player holds letters at 9.5 px at least, a smaller tag would fall below 9
-            rules.append(".tag{display:none}")
-            rules.append(".cur .tag,.inp .tag{display:inline}")
-        # Plate looks and furniture (construct.render.plate), and the paper-coloured halo
-        # behind every letter, drawn as a copy beneath it (cairosvg has no paint-order).
-        from .plate import LOOKS_CSS
-
-        rules.append(f".fur{{fill:none;stroke:{self.ink};stroke-width:0.6px}}.arrow{{fill:{self.ink};stroke:none}}")
-        rules.extend(LOOKS_CSS)
-        rules.append(f".brk{{fill:{self.background};stroke:none}}.brkline{{fill:none;stroke:{self.ink};stroke-width:0.8px}}")
-        rules.append(".view{display:none}")
-        if self.ring_px and self.highlight:
-            rules.append(f".ring{{fill:none;stroke:{self.highlight};stroke-width:2.5px;opacity:0.85}}")
-        # letters drawn about their point (class lbg): set off by a screen distance at every zoom
-        if self.camera:
-            from .camera import level_css
-
-            rules.append(level_css())
-        else:
-            rules.append(".lbx{display:none}")
-
-        halo = f"fill:{self.background};stroke:{self.background};stroke-width:{fmt(HALO_PX)}px;stroke-linejoin:round"
-        rules.append(f".lb.halo,.cur .lb.halo,.inp .lb.halo{{{halo}}}")
-        rules.append(f".leader,.cur .leader,.inp .leader{{fill:none;stroke:{self.ink};stroke-width:0.4px}}")
-        return "\n".join(rules)
-
-
-PLAIN = Style()
-
-
-@dataclass(frozen=True)
-class Viewport:
-    """The map from drawing coordinates (y up) to SVG user units (y down)."""
-
-    xmin: float
-    ymax: float
-    scale: float
-    width: float
-    height: float
-    margin: float
-    left: float = 0.0
-    top: float = 0.0
-
-    @classmethod
-    def fit(cls, bbox: tuple[float, float, float, float], style: Style, caption_lines: int) -> "Viewport":
-        x0, y0, x1, y1 = bbox
-        inner = style.width_px - 2 * style.margin_px
-        scale = inner / max(x1 - x0, 1e-12)
-        # Tall figures are limited to a page-like height.
-        max_h = 1.4 * style.width_px
-        if (y1 - y0) * scale > max_h:
-            scale = max_h / (y1 - y0)
-        # Narrow figures are centred (across and, with a minimum height, down).
-        left = (inner - (x1 - x0) * scale) / 2.0
-        drawing_h = max((y1 - y0) * scale, style.min_drawing_px)
-        top = (drawing_h - (y1 - y0) * scale) / 2.0
-        height = drawing_h + 2 * style.margin_px + caption_lines * 1.45 * style.caption_size
-        return cls(x0, y1, scale, style.width_px, height, style.margin_px, left, top)
-
-    @classmethod
-    def window(cls, bbox: tuple[float, float, float, float], box: tuple[float, float, float, float]) -> "Viewport":
-        """Map *bbox* (drawing units) into the pixel *box* (x0, y0, x1, y1), keeping the aspect ratio."""
-        x0, y0, x1, y1 = bbox
-        scale = min((box[2] - box[0]) / max(x1 - x0, 1e-12), (box[3] - box[1]) / max(y1 - y0, 1e-12))
-        left = box[0] + ((box[2] - box[0]) - (x1 - x0) * scale) / 2.0
-        top = box[1] + ((box[3] - box[1]) - (y1 - y0) * scale) / 2.0
-        return cls(x0, y1, scale, box[2] - box[0], box[3] - box[1], 0.0, left, top)
-
-    def px(self, x: float, y: float) -> tuple[float, float]:
-        return (self.margin + self.left + (x - self.xmin) * self.scale,
-                self.margin + self.top + (self.ymax - y) * self.scale)
-
-    def xy(self, x: float, y: float) -> tuple[str, str]:
-        a, b = self.px(x, y)
-        return fmt(a), fmt(b)
-
-    def length(self, d: float) -> str:
-        return fmt(d * self.scale)
+__all__ = ["render_svg", "Drawing", "step_caption", "group_caption", "wrap"]
 
 
 def wrap(text: str, width_px: float, size: float) -> list[str]:
@@ -278,13 +71,7 @@ def group_caption(scene: Scene, k: int) -> str:
     """The group path of step k, German titles where the construction gave them."""
     if k <= 0:
         return ""
-    path = scene.steps[k - 1].group
-    cache = scene.__dict__.setdefault("_group_captions", {})  # runs of steps share a group: once per group
-    text = cache.get(path)
-    if text is None:
-        titles = scene.params.get("group_titles") or {}
-        text = cache[path] = displayed(" › ".join(scene.readable(titles.get(g, g)) for g in path))
-    return text
+    return scene.group_captions[scene.steps[k - 1].group]
 
 
 class Drawing:
@@ -1222,16 +1009,6 @@ def _is_view(elem: Any) -> bool:
     return (xml.get("class") if xml is not None else getattr(elem, "attribs", {}).get("class")) == "view"
 
 
-def camera_transform(view: Sequence[float], full: Sequence[float]) -> str:
-    """The transform that shows *view* (x, y, w, h) on the whole of *full*: translate, then scale.
-
-    >>> camera_transform((100, 50, 480, 334), (0, 0, 960, 668))
-    'translate(-200 -100) scale(2)'
-    """
-    z = full[2] / view[2]
-    return f"translate({fmt(-view[0] * z)} {fmt(-view[1] * z)}) scale({fmt(z, 5)})"
-
-
 def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
     """A line mark as points (drawing units) joined by straight pieces no more than ~4 px off it."""
     g = m.geom
@@ -1308,84 +1085,3 @@ def _label_box(x: float, y: float, text: str, size: float) -> tuple[float, float
 def _overlaps(box, placed) -> bool:
     x0, y0, x1, y1 = box
     return any(x0 < b[2] and b[0] < x1 and y0 < b[3] and b[1] < y1 for b in placed)
-
-
-def arc_path(vp: Viewport, cx: float, cy: float, r: float, start: float, sweep: float) -> str:
-    """An SVG arc path; y is flipped, so counter-clockwise in the plane is sweep-flag 0."""
-    x0, y0 = vp.xy(cx + r * math.cos(start), cy + r * math.sin(start))
-    x1, y1 = vp.xy(cx + r * math.cos(start + sweep), cy + r * math.sin(start + sweep))
-    large = 1 if sweep > math.pi else 0
-    rr = vp.length(r)
-    return f"M{x0} {y0}A{rr} {rr} 0 {large} 0 {x1} {y1}"
-
-
-def curve_path(vp: Viewport, pts: tuple) -> str:
-    """A smooth curve through the points (Catmull-Rom as cubic Béziers)."""
-    P = [vp.px(x, y) for x, y in pts]
-    if len(P) < 2:
-        return ""
-    d = [f"M{fmt(P[0][0])} {fmt(P[0][1])}"]
-    for i in range(len(P) - 1):
-        p0 = P[i - 1] if i > 0 else P[i]
-        p1, p2 = P[i], P[i + 1]
-        p3 = P[i + 2] if i + 2 < len(P) else P[i + 1]
-        c1 = (p1[0] + (p2[0] - p0[0]) / 6.0, p1[1] + (p2[1] - p0[1]) / 6.0)
-        c2 = (p2[0] - (p3[0] - p1[0]) / 6.0, p2[1] - (p3[1] - p1[1]) / 6.0)
-        d.append(f"C{fmt(c1[0])} {fmt(c1[1])} {fmt(c2[0])} {fmt(c2[1])} {fmt(p2[0])} {fmt(p2[1])}")
-    return "".join(d)
-
-
-def polyline_path(vp: Viewport, pts: tuple) -> str:
-    """Straight segments from point to point, as the straightedge joins them (closed: back to the first by Z).
-
-    >>> vp = Viewport(0.0, 1.0, 10.0, 20.0, 20.0, 0.0)
-    >>> polyline_path(vp, ((0, 0), (1, 1), (1, 0))), polyline_path(vp, ((0, 0), (1, 1), (1, 0), (0, 0)))
-    ('M0 10L10 0L10 10', 'M0 10L10 0L10 10Z')
-    """
-    P = [vp.xy(x, y) for x, y in pts]
-    if len(P) < 2:
-        return ""
-    closed = len(pts) > 2 and tuple(pts[0]) == tuple(pts[-1])
-    if closed:
-        P = P[:-1]
-    return "M" + "L".join(f"{a} {b}" for a, b in P) + ("Z" if closed else "")
-
-
-def polygon_path(vp: Viewport, pts: tuple) -> str:
-    """A closed polygon through the points."""
-    return "M" + "L".join(f"{a} {b}" for a, b in (vp.xy(x, y) for x, y in pts)) + "Z"
-
-
-def hatch_path(vp: Viewport, pts: tuple, spacing_px: float, angle_deg: float = 45.0) -> str:
-    """Fine parallel lines at *angle_deg*, clipped to the polygon by shapely (the draftsman's hatching)."""
-    from shapely.geometry import LineString, MultiLineString, Polygon
-
-    poly = Polygon([vp.px(x, y) for x, y in pts]).buffer(0)
-    if poly.is_empty:
-        return ""
-    x0, y0, x1, y1 = poly.bounds
-    a = math.radians(angle_deg)
-    ux, uy = math.cos(a), -math.sin(a)  # along the hatch (y down)
-    nx, ny = -uy, ux                      # across it
-    corners = [(x0, y0), (x1, y0), (x0, y1), (x1, y1)]
-    ts = [cx * nx + cy * ny for cx, cy in corners]
-    reach = math.hypot(x1 - x0, y1 - y0)
-    lines = []
-    t = math.floor(min(ts) / spacing_px) * spacing_px
-    while t <= max(ts):
-        mx, my = t * nx, t * ny
-        # a point on the hatch line near the box centre, then a long segment both ways
-        cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-        s = (cx - mx) * ux + (cy - my) * uy
-        px, py = mx + s * ux, my + s * uy
-        lines.append(LineString([(px - reach * ux, py - reach * uy), (px + reach * ux, py + reach * uy)]))
-        t += spacing_px
-    clipped = MultiLineString(lines).intersection(poly)
-    parts = []
-    geoms = getattr(clipped, "geoms", [clipped])
-    for g in geoms:
-        if g.geom_type != "LineString" or g.length < 0.5:
-            continue
-        (ax, ay), (bx, by) = g.coords[0], g.coords[-1]
-        parts.append(f"M{fmt(ax)} {fmt(ay)}L{fmt(bx)} {fmt(by)}")
-    return "".join(parts)

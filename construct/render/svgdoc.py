@@ -8,7 +8,7 @@ the layered figure, the frames, the animation, the player -- so a mark costs
 one serialisation per document, never a rebuild.
 
 Output is byte-stable: svgwrite writes attributes in sorted order, numbers
-reach it already formatted (:func:`construct.render.svg.fmt`), ids are given
+reach it already formatted (:func:`fmt`), ids are given
 by the caller (step and object name) so svgwrite's own counter
 (``svgwrite.utils.AutoID``) is never asked, and every element after the
 root's opening tag starts a line of its own.
@@ -32,12 +32,22 @@ from typing import Any
 import svgwrite
 from svgwrite.etree import CDATA_TAG
 
-__all__ = ["Writer", "Frozen", "XML_DECLARATION", "MARKER"]
+__all__ = ["Writer", "Frozen", "XML_DECLARATION", "MARKER", "fmt"]
 
 #: What svgwrite's ``Drawing.write`` puts first.
 XML_DECLARATION = '<?xml version="1.0" encoding="utf-8" ?>\n'
 #: An attribute svgwrite's Drawing always writes and our own markup never did: tests look for it.
 MARKER = 'xmlns:ev="http://www.w3.org/2001/xml-events"'
+
+def fmt(v: float, decimals: int = 2) -> str:
+    """Fixed-point with *decimals* decimals, trailing zeros trimmed; never '-0'.
+
+    >>> fmt(1.005), fmt(-0.0001), fmt(12.5), fmt(3.14159, 3)
+    ('1', '0', '12.5', '3.142')
+    """
+    text = f"{v:.{decimals}f}".rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
+
 
 # Elements whose content is text: no line breaks are put inside them.
 _TEXTUAL = {"text", "tspan", "title", "desc", "style", "script", CDATA_TAG}

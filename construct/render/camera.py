@@ -29,7 +29,7 @@ from __future__ import annotations
 
 from typing import Callable, Sequence
 
-from .scene import Scene, extreme_points
+from .scene import MarkKind, Scene, extreme_points
 from .svgdoc import fmt
 
 __all__ = ["step_views", "ZOOM_LEVELS", "level", "level_css", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of"]
@@ -99,7 +99,7 @@ def _group_boxes(scene: Scene) -> dict[tuple[str, ...], Box]:
     boxes: dict[tuple[str, ...], Box] = {}
     drawn = {m.name: m for m in scene.marks}
     for m in scene.marks:
-        if m.kind == "segment" or not m.group:
+        if m.kind is MarkKind.SEGMENT or not m.group:
             continue
         pts = extreme_points(m)
         for depth in range(1, len(m.group) + 1):
@@ -111,8 +111,8 @@ def _group_boxes(scene: Scene) -> dict[tuple[str, ...], Box]:
     for s in scene.steps:
         if not s.group:
             continue
-        pts = [drawn[n].geom for n in s.inputs if n in drawn and drawn[n].kind == "point"]
-        pts += [drawn[n].geom for n in s.outputs if n in drawn and drawn[n].kind == "point"]
+        pts = [drawn[n].geom for n in s.inputs if n in drawn and drawn[n].kind is MarkKind.POINT]
+        pts += [drawn[n].geom for n in s.outputs if n in drawn and drawn[n].kind is MarkKind.POINT]
         if not pts:
             continue
         for depth in range(1, len(s.group) + 1):
@@ -129,7 +129,7 @@ def final_box(scene: Scene) -> Box | None:
     n = len(scene.steps)
     b: Box | None = None
     for m in scene.marks:
-        if m.kind == "segment" or scene.faded(m.step, n + 1):
+        if m.kind is MarkKind.SEGMENT or scene.faded(m.step, n + 1):
             continue
         for x, y in extreme_points(m):
             b = _grow(b, x, y)

@@ -17,7 +17,7 @@ import math
 from dataclasses import dataclass
 from typing import Any, Mapping, Sequence
 
-from .scene import Mark, Scene, build_scene
+from .scene import Mark, MarkKind, Scene, build_scene
 
 __all__ = ["plot_figure", "TablePlot", "plot_table", "mark_points"]
 
@@ -34,23 +34,22 @@ def mark_points(mark: Mark, fine: float) -> tuple[str, list[tuple[float, float]]
 
     Circles and arcs become polylines within *fine* of the curve; curves are their points in order.
 
-    >>> from construct.render.scene import Mark
-    >>> kind, pts = mark_points(Mark("m", 1, "k", "circle", (0.0, 0.0, 1.0), "construction", "compass", "exact"), 1e-3)
+    >>> kind, pts = mark_points(Mark("m", 1, "k", MarkKind.CIRCLE, (0.0, 0.0, 1.0), "construction", "compass", "exact"), 1e-3)
     >>> kind, math.dist(pts[0], pts[-1]) < 1e-12, max(abs(math.hypot(x, y) - 1.0) for x, y in pts) < 1e-12
     ('line', True, True)
     """
-    g = mark.geom
-    if mark.kind == "point":
-        return "point", [g]
-    if mark.kind == "segment":
-        return "line", [(g[0], g[1]), (g[2], g[3])]
-    if mark.kind == "circle":
-        return "line", _arc_points(g[0], g[1], g[2], 0.0, 2 * math.pi, fine)
-    if mark.kind == "arc":
-        return "line", _arc_points(*g, fine)
-    if mark.kind == "area":
-        return "area", list(g)
-    return "line", list(g)  # a curve: its points, joined in order
+    return _PLOTTED[mark.kind](mark.geom, fine)
+
+
+#: What a plotting library draws a mark with, by kind (:func:`mark_points`); a curve is its points, joined in order.
+_PLOTTED: dict[MarkKind, Any] = {
+    MarkKind.POINT: lambda g, fine: ("point", [g]),
+    MarkKind.SEGMENT: lambda g, fine: ("line", [(g[0], g[1]), (g[2], g[3])]),
+    MarkKind.CIRCLE: lambda g, fine: ("line", _arc_points(g[0], g[1], g[2], 0.0, 2 * math.pi, fine)),
+    MarkKind.ARC: lambda g, fine: ("line", _arc_points(*g, fine)),
+    MarkKind.CURVE: lambda g, fine: ("line", list(g)),
+    MarkKind.AREA: lambda g, fine: ("area", list(g)),
+}
 
 
 def plot_figure(figure: Any, ax: Any = None, *, style: str = "plain", upto: int | None = None,

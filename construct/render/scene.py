@@ -11,7 +11,7 @@ the first k steps of the final figure and frames line up.
 >>> fig = get("crank").figure(parts=6, rod_ratio=4.0)
 >>> sc = build_scene(fig)
 >>> sc.marks[0].kind, sc.marks[0].name
-('point', 'O')
+(<MarkKind.POINT: 'point'>, 'O')
 >>> len(sc.upto(5)) < len(sc.marks)
 True
 """
@@ -24,18 +24,58 @@ import functools
 import math
 import re
 from dataclasses import dataclass
-from typing import Any, Iterable
+from enum import Enum
+from typing import Any, Callable, Iterable
 
 from ..kernel.geometry import Circle, Length, Line, Point
 from ..kernel.protocol import Protocol, Replay, Step
 from .captions import TITLE_LIMIT, Reader, displayed
 
-__all__ = ["Mark", "Scene", "build_scene", "label_offset_direction"]
+__all__ = ["Mark", "MarkKind", "Scene", "build_scene", "label_offset_direction"]
 
 TWO_PI = 2.0 * math.pi
 #: What a letter of the figure looks like (:meth:`Scene.tag_shown`): a letter, a number below 20 or
 #: two digits with a prime, subscripts, primes.
 FIGURE_LETTER = re.compile(r"[A-Za-zΑ-Ωα-ω](?:[01]?[0-9])?[′″'₀-₉]*|[0-9]{1,2}[′″']?")
+
+
+class MarkKind(str, Enum):
+    """What a mark draws, which decides what its ``geom`` holds (:class:`Mark`).
+
+    A ``str`` whose value is the word the drawings have always used (in CSS
+    classes, JSON and captions), so that a kind compares, hashes, formats and
+    serialises as that word: ``MarkKind.ARC == "arc"``, ``f"{kind}"`` is
+    ``"arc"``, and a table keyed by kinds answers for the plain word too.
+
+    >>> MarkKind("arc") is MarkKind.ARC, f"{MarkKind.ARC}", MarkKind.ARC == "arc"
+    (True, 'arc', True)
+    >>> [k.value for k in MarkKind if k.round], [k.value for k in MarkKind if k.stroked]
+    (['circle', 'arc'], ['segment', 'circle', 'arc', 'curve'])
+    """
+
+    POINT = "point"
+    SEGMENT = "segment"
+    CIRCLE = "circle"
+    ARC = "arc"
+    CURVE = "curve"
+    AREA = "area"
+
+    # the word, not "MarkKind.ARC": on Python 3.11+ a str mix-in Enum would otherwise format by its name
+    def __str__(self) -> str:
+        return self.value
+
+    def __format__(self, spec: str) -> str:
+        return format(self.value, spec)
+
+    @property
+    def round(self) -> bool:
+        """A circle or an arc of one: ``geom`` begins (cx, cy, r)."""
+        return self is MarkKind.CIRCLE or self is MarkKind.ARC
+
+    @property
+    def stroked(self) -> bool:
+        """Drawn as one line by the pen (segment, circle, arc, curve): not a dot, not a filled area."""
+        return self is not MarkKind.POINT and self is not MarkKind.AREA
 
 
 @dataclass(frozen=True, slots=True)
@@ -45,13 +85,15 @@ class Mark:
     ``geom`` by kind: point (x, y); segment (x1, y1, x2, y2); circle (cx, cy, r);
     arc (cx, cy, r, start, sweep) with angles in radians, counter-clockwise in
     the y-up drawing plane; curve ((x, y), ...) drawn smooth through its points,
-    or joined by straight segments when ``straight`` (a polyline: the straightedge).
+    or joined by straight segments when ``straight`` (a polyline: the straightedge);
+    area ((x, y), ...) the ring of one hatched piece.  *kind* may be given as its
+    word (``"circle"``); it is kept as a :class:`MarkKind`.
     """
 
     id: str
     step: int
     name: str
-    kind: str
+    kind: MarkKind
     geom: tuple
     role: str
     tool: str
@@ -64,6 +106,10 @@ class Mark:
     hatch: float | None = None
     #: Curves: the points are joined by straight segments (a polyline), not by a smooth curve.
     straight: bool = False
+
+    def __post_init__(self) -> None:
+        if type(self.kind) is not MarkKind:  # the word, as a caller may write it: kept as the kind
+            object.__setattr__(self, "kind", MarkKind(self.kind))
 
 
 @dataclass(frozen=True)
@@ -114,12 +160,13 @@ class Scene:
 
     @functools.cached_property
     def _reader(self) -> Reader:
-        kinds = {"segment": "line", "arc": "circle"}
+        # the reader names lines and circles (an arc is part of its circle)
+        kinds = {MarkKind.SEGMENT: "line", MarkKind.ARC: "circle"}
         makers = {n: s for s in self.steps for n in s.outputs}
         objects = {}
         for m in self.marks:
             s = makers[m.name]
-            objects[m.name] = (kinds.get(m.kind, m.kind), m.label, s.op, tuple(s.inputs))
+            objects[m.name] = (kinds.get(m.kind, m.kind.value), m.label, s.op, tuple(s.inputs))
         for name, s in makers.items():  # what is not drawn (a compass opening J.h1) goes by its short name
             objects.setdefault(name, ("length", None, s.op, tuple(s.inputs)))
         return Reader(objects)
@@ -257,7 +304,7 @@ class Scene:
         if box is None:
             box = self._stage_cache[span] = self._box_of_steps(*span)
         # the instrument's inputs are in view even when they lie outside the stage (a far centre)
-        pts = [self._drawn[n].geom for n in self.inputs(k) if self._drawn[n].kind == "point"]
+        pts = [self._drawn[n].geom for n in self.inputs(k) if self._drawn[n].kind is MarkKind.POINT]
         if pts and not all(box[0] <= x <= box[2] and box[1] <= y <= box[3] for x, y in pts):
             x0 = min([box[0]] + [p[0] for p in pts])
             y0 = min([box[1]] + [p[1] for p in pts])
@@ -294,7 +341,7 @@ class Scene:
         # (the stroke line reaches the far crossheads) but say nothing about the stage.
         lo = bisect.bisect_left(self._mark_steps, start)
         hi = bisect.bisect_right(self._mark_steps, end)
-        pts = [p for m in self.marks[lo:hi] if m.kind != "segment" for p in extreme_points(m)]
+        pts = [p for m in self.marks[lo:hi] if m.kind is not MarkKind.SEGMENT for p in extreme_points(m)]
         if not pts:
             return self.bbox
         x0, x1 = min(p[0] for p in pts), max(p[0] for p in pts)
@@ -436,27 +483,27 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
             common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
                           group=s.group, label=label, look=(looks or {}).get(name, ""))
             if isinstance(obj, Point):
-                marks.append(Mark(mid, kind="point", geom=(obj[0], obj[1]), **common))
+                marks.append(Mark(mid, kind=MarkKind.POINT, geom=(obj[0], obj[1]), **common))
             elif isinstance(obj, Line):
-                marks.append(Mark(mid, kind="segment", geom=_segment_extent(obj, on.get(name, []), margin), **common))
+                marks.append(Mark(mid, kind=MarkKind.SEGMENT, geom=_segment_extent(obj, on.get(name, []), margin), **common))
             elif isinstance(obj, Circle):
                 kind, geom = _circle_extent(obj, on.get(name, []), margin, s.role, plate=shown is not None)
                 marks.append(Mark(mid, kind=kind, geom=geom, **common))
             elif hasattr(obj, "rings"):  # an Area: one mark per piece, each hatched
                 for j, ring in enumerate(obj.rings()):
-                    marks.append(Mark(mid if j == 0 else f"{mid}-{j}", kind="area",
+                    marks.append(Mark(mid if j == 0 else f"{mid}-{j}", kind=MarkKind.AREA,
                                       geom=tuple((p[0], p[1]) for p in ring), hatch=obj.hatch_deg, **common))
             elif hasattr(obj, "curve_points"):
                 # a polyline is drawn as it is measured (y_at, length): straight from point to point
-                marks.append(Mark(mid, kind="curve", geom=tuple((p[0], p[1]) for p in obj.curve_points()),
+                marks.append(Mark(mid, kind=MarkKind.CURVE, geom=tuple((p[0], p[1]) for p in obj.curve_points()),
                                   straight=getattr(obj, "kind", "") == "polyline", **common))
     breaks: tuple[tuple[float, float, float], ...] = ()
     if break_axis and (shown is None or furniture):
         # a plate keeps more of the broken stretch: the rod drawn across it stays a shallow line
         marks, furniture, breaks = _break(marks, tuple(furniture), BREAK_KEEP if shown is None else PLATE_BREAK_KEEP)
         if breaks:
-            xs = [x for m in marks if m.kind == "point" for x in (m.geom[0],)] or xs
-            ys = [y for m in marks if m.kind == "point" for y in (m.geom[1],)] or ys
+            xs = [x for m in marks if m.kind is MarkKind.POINT for x in (m.geom[0],)] or xs
+            ys = [y for m in marks if m.kind is MarkKind.POINT for y in (m.geom[1],)] or ys
     # Grow the box by what the curves reach (full circles, arcs, line ends), the plate's furniture and the margin.
     bx0, by0, bx1, by1 = min(xs), min(ys), max(xs), max(ys)
     if furniture:
@@ -503,7 +550,7 @@ def _break(marks: list[Mark], furniture: tuple = (),
     from .plate import anchors, shifted
     ivals = []
     for m in marks:
-        if m.kind == "segment":
+        if m.kind is MarkKind.SEGMENT:
             continue  # the stroke line spans everything
         xs = [p[0] for p in extreme_points(m)]
         if xs:
@@ -530,14 +577,14 @@ def _break(marks: list[Mark], furniture: tuple = (),
     out = []
     for m in marks:
         g = m.geom
-        if m.kind == "point":
+        if m.kind is MarkKind.POINT:
             g = (sx(g[0]), g[1])
-        elif m.kind == "segment":
+        elif m.kind is MarkKind.SEGMENT:
             g = (sx(g[0]), g[1], sx(g[2]), g[3])
-        elif m.kind in ("circle", "arc"):
+        elif m.kind.round:  # moved whole, or not at all: a circle is not stretched
             if max(p[0] for p in extreme_points(m)) <= lo:
                 g = (g[0] + shift,) + tuple(g[1:])
-        elif m.kind in ("curve", "area"):
+        else:  # a curve or an area: point by point
             g = tuple((sx(x), y) for x, y in g)
         out.append(m if g is m.geom else dataclasses.replace(m, geom=g))
     # the left stretch now ends at hi - keep: the kept piece of the broken axis is [hi - keep, hi]
@@ -635,7 +682,7 @@ def _segment_extent(line: Line, pts: list[Point], margin: float) -> tuple[float,
 
 
 def _circle_extent(circle: Circle, pts: list[Point], margin: float, role: str,
-                   plate: bool = False) -> tuple[str, tuple]:
+                   plate: bool = False) -> tuple[MarkKind, tuple]:
     """A full circle for results and unmarked circles, else the arc over the marked points.
 
     On a plate a result circle whose shown points cover at most a half turn
@@ -645,10 +692,10 @@ def _circle_extent(circle: Circle, pts: list[Point], margin: float, role: str,
     (cx, cy), r = circle
     if role == "result" and plate and len(pts) >= 3:
         kind, geom = _circle_extent(circle, pts, 0.0, "construction")
-        if kind == "arc" and geom[4] <= math.pi * (1.0 + 1e-9):
+        if kind is MarkKind.ARC and geom[4] <= math.pi * (1.0 + 1e-9):
             return kind, geom
     if role == "result" or not pts:
-        return "circle", (cx, cy, r)
+        return MarkKind.CIRCLE, (cx, cy, r)
     angles: list[float] = []
     for a in sorted(math.atan2(p[1] - cy, p[0] - cx) % TWO_PI for p in pts):
         if not angles or a - angles[-1] > 1e-9:  # the same point marked twice counts once
@@ -664,28 +711,35 @@ def _circle_extent(circle: Circle, pts: list[Point], margin: float, role: str,
     pad = min(margin / r, 0.6)
     start, sweep = start - pad, sweep + 2.0 * pad
     if sweep >= 0.92 * TWO_PI:
-        return "circle", (cx, cy, r)
-    return "arc", (cx, cy, r, start, sweep)
+        return MarkKind.CIRCLE, (cx, cy, r)
+    return MarkKind.ARC, (cx, cy, r, start, sweep)
+
+
+def _arc_extremes(g: tuple) -> list[tuple[float, float]]:
+    """An arc's ends and the quarter points it passes: its exact box, in at most six points."""
+    cx, cy, r, a0, sw = g
+    quarter = math.pi / 2
+    angles = [a0, a0 + sw] + [q * quarter for q in range(math.ceil(min(a0, a0 + sw) / quarter),
+                                                          math.floor(max(a0, a0 + sw) / quarter) + 1)]
+    return [(cx + r * math.cos(a), cy + r * math.sin(a)) for a in angles]
+
+
+#: The points that bound a mark's ``geom``, by kind (:func:`extreme_points`).
+_EXTREMES: dict[MarkKind, Callable[[tuple], list[tuple[float, float]]]] = {
+    MarkKind.POINT: lambda g: [g],
+    MarkKind.SEGMENT: lambda g: [(g[0], g[1]), (g[2], g[3])],
+    MarkKind.CIRCLE: lambda g: [(g[0] - g[2], g[1] - g[2]), (g[0] + g[2], g[1] + g[2])],
+    MarkKind.ARC: _arc_extremes,
+    MarkKind.CURVE: list,
+    MarkKind.AREA: list,
+}
 
 
 def extreme_points(m: Mark) -> list[tuple[float, float]]:
-    g = m.geom
-    if m.kind == "point":
-        return [g]
-    if m.kind == "segment":
-        return [(g[0], g[1]), (g[2], g[3])]
-    if m.kind == "circle":
-        cx, cy, r = g
-        return [(cx - r, cy - r), (cx + r, cy + r)]
-    if m.kind == "arc":
-        # its ends and the quarter points it passes: the exact box, in at most six points
-        cx, cy, r, a0, sw = g
-        quarter = math.pi / 2
-        angles = [a0, a0 + sw] + [q * quarter for q in range(math.ceil(min(a0, a0 + sw) / quarter),
-                                                              math.floor(max(a0, a0 + sw) / quarter) + 1)]
-        return [(cx + r * math.cos(a), cy + r * math.sin(a)) for a in angles]
-    if m.kind in ("curve", "area"):
-        return list(g)
-    return []
+    """The points that bound a mark as drawn: a segment by its ends, a circle by its box's corners.
 
-
+    >>> arc = Mark("m", 1, "k", MarkKind.ARC, (0.0, 0.0, 2.0, 0.0, math.pi / 2), "construction", "compass", "exact")
+    >>> [(round(x, 12), round(y, 12)) for x, y in extreme_points(arc)]
+    [(2.0, 0.0), (0.0, 2.0), (2.0, 0.0), (0.0, 2.0)]
+    """
+    return _EXTREMES[m.kind](m.geom)

@@ -34,7 +34,7 @@ from . import svgdoc
 from .captions import TITLE_LIMIT, displayed
 from .lettering import HALO_PX, LEADER_FROM
 from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
-from .scene import Mark, Scene, label_offset_direction
+from .scene import Mark, MarkKind, Scene, label_offset_direction
 from .styles import PLAIN, Style
 from .svgdoc import fmt
 from .viewport import PLAYER_FIGURE_PX, Viewport, camera_transform
@@ -172,7 +172,7 @@ class Drawing:
         st = self.style
         from .camera import THIN_FROM
 
-        marks = [m for m in self.scene.marks if m.kind == "point" and m.label and m.id in self._spots]
+        marks = [m for m in self.scene.marks if m.kind is MarkKind.POINT and m.label and m.id in self._spots]
         if not marks:
             return views
         arrays: dict[int, Any] = {}
@@ -359,12 +359,12 @@ class Drawing:
         scale = self.scene.bbox[2] - self.scene.bbox[0]
         items, dots, lines = [], [], []
         for m in self.scene.marks:
-            if m.kind == "point":
+            if m.kind is MarkKind.POINT:
                 p = vp.px(*m.geom)
                 dots.append(p)
                 if m.label:
                     items.append((m.id, m.role, m.step, p, label_offset_direction(m.geom, scale=scale), m.label))
-            elif m.role == "result" and m.kind in ("segment", "circle", "arc", "curve"):
+            elif m.role == "result" and m.kind.stroked:
                 pts = [vp.px(*q) for q in _polyline(m, vp.scale)]
                 lines.extend((a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:]))
         st = self.style
@@ -466,7 +466,7 @@ class Drawing:
         from .lettering import label_box, place
 
         sc, st = self.scene, self.style
-        tags = [m for m in sc.marks if m.kind == "point" and not m.label and sc.tag_shown(m.name)]
+        tags = [m for m in sc.marks if m.kind is MarkKind.POINT and not m.label and sc.tag_shown(m.name)]
         if not tags:
             return {}
         if st.camera:
@@ -504,8 +504,8 @@ class Drawing:
                     if s_ in shown_at:
                         shown_at[s_].add(lvl_of(k))
         size = st.label_size
-        pts = {m.id: self.vp.px(*m.geom) for m in sc.marks if m.kind == "point"}
-        labels = [m for m in sc.marks if m.kind == "point" and m.label and m.id in self._spots]
+        pts = {m.id: self.vp.px(*m.geom) for m in sc.marks if m.kind is MarkKind.POINT}
+        labels = [m for m in sc.marks if m.kind is MarkKind.POINT and m.label and m.id in self._spots]
 
         def frame(lvl: int):
             """(zoom, letter factor, boxes of the letters shown at level *lvl*) in that level's geometry."""
@@ -617,7 +617,7 @@ class Drawing:
         ids = {"id": mid} if mid else {}
         st = self.style
         f = self.doc.factory
-        if m.kind == "point":
+        if m.kind is MarkKind.POINT:
             aux = m.role == "auxiliary" or ("." in m.name and not m.label)
             r = st.aux_point_radius if aux else st.point_radius
             yield "points", f.circle(center=vp.xy(*m.geom), r=fmt(r), class_=f"pt {cls}", **ids)
@@ -641,17 +641,11 @@ class Drawing:
                     extra = extra.replace(" lbm", "")
                     yield "labels", self._letter(vp, m, rel, m.label, "lb", lid, extra=extra, gid=gid)
             return
-        layer = "results" if m.role == "result" else "construction"
         g = m.geom
-        if m.kind == "segment":
-            yield layer, f.line(start=vp.xy(g[0], g[1]), end=vp.xy(g[2], g[3]), class_=cls, **ids)
-        elif m.kind == "circle":
-            yield layer, f.circle(center=vp.xy(g[0], g[1]), r=vp.length(g[2]), class_=cls, **ids)
-        elif m.kind == "arc":
-            yield layer, f.path(d=arc_path(vp, *g), class_=cls, **ids)
-        elif m.kind == "curve":
-            yield layer, f.path(d=(polyline_path if m.straight else curve_path)(vp, g), class_=cls, **ids)
-        elif m.kind == "area":
+        if m.kind.stroked:
+            layer = "results" if m.role == "result" else "construction"
+            yield layer, _STROKES[m.kind](f, vp, m, {"class_": cls, **ids})
+        else:  # an area
             yield "areas", f.path(d=polygon_path(vp, g), class_=f"area {cls}", **ids)
             if st.hatch:
                 d = hatch_path(vp, g, st.hatch_spacing, *(() if m.hatch is None else (m.hatch,)))
@@ -813,7 +807,7 @@ class Drawing:
         f = self.doc.factory
         # the furniture first, the break marks over it (they open the rod and the axis for the gap)
         elems = furniture_elements(self.scene.furniture, self.vp.px, self.vp.scale, f, size=self.style.label_size)
-        lines = [m.geom for m in self.scene.marks if m.kind == "segment"]
+        lines = [m.geom for m in self.scene.marks if m.kind is MarkKind.SEGMENT]
         lines += [(*it.a, *it.b) for it in self.scene.furniture if isinstance(it, Stroke)]
         for x0, w, _left_out in self.scene.breaks:
             # on every line crossing the break: a gap in paper colour and two slanted strokes
@@ -1003,6 +997,15 @@ class Drawing:
         return out
 
 
+#: The SVG element of a mark the pen draws as one line, by kind: (factory, viewport, mark, attributes) -> element.
+_STROKES: dict[MarkKind, Any] = {
+    MarkKind.SEGMENT: lambda f, vp, m, kw: f.line(start=vp.xy(*m.geom[:2]), end=vp.xy(*m.geom[2:4]), **kw),
+    MarkKind.CIRCLE: lambda f, vp, m, kw: f.circle(center=vp.xy(*m.geom[:2]), r=vp.length(m.geom[2]), **kw),
+    MarkKind.ARC: lambda f, vp, m, kw: f.path(d=arc_path(vp, *m.geom), **kw),
+    MarkKind.CURVE: lambda f, vp, m, kw: f.path(d=(polyline_path if m.straight else curve_path)(vp, m.geom), **kw),
+}
+
+
 def _is_view(elem: Any) -> bool:
     """Is *elem* a camera box of the ``views`` layer (frozen or not)?"""
     xml = getattr(elem, "xml", None)
@@ -1012,14 +1015,14 @@ def _is_view(elem: Any) -> bool:
 def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
     """A line mark as points (drawing units) joined by straight pieces no more than ~4 px off it."""
     g = m.geom
-    if m.kind == "segment":
+    if m.kind is MarkKind.SEGMENT:
         return [(g[0], g[1]), (g[2], g[3])]
-    if m.kind in ("circle", "arc"):
+    if m.kind.round:
         cx, cy, r = g[0], g[1], g[2]
-        a0, sw = (0.0, 2 * math.pi) if m.kind == "circle" else (g[3], g[4])
+        a0, sw = (0.0, 2 * math.pi) if m.kind is MarkKind.CIRCLE else (g[3], g[4])
         n = min(720, max(8, int(abs(sw) * math.sqrt(max(r * scale, 1.0) / 8.0)) + 1))
         return [(cx + r * math.cos(a0 + sw * i / n), cy + r * math.sin(a0 + sw * i / n)) for i in range(n + 1)]
-    if m.kind == "curve" and not m.straight and len(g) > 2:
+    if m.kind is MarkKind.CURVE and not m.straight and len(g) > 2:
         # as drawn (curve_path): the Catmull-Rom pieces, which leave the chords where the curve bends
         out = [tuple(g[0])]
         for i in range(len(g) - 1):
@@ -1046,16 +1049,16 @@ def _near(m: Mark, region: tuple[float, float, float, float]) -> bool:
     """Could the mark show inside *region*?  (Bounding boxes meet; a circle must not enclose it all.)"""
     x0, y0, x1, y1 = region
     g = m.geom
-    if m.kind == "point":
+    if m.kind is MarkKind.POINT:
         return x0 <= g[0] <= x1 and y0 <= g[1] <= y1
-    if m.kind in ("circle", "arc"):
+    if m.kind.round:
         cx, cy, r = g[0], g[1], g[2]
         # distance from the centre to the nearest and farthest point of the region
         nx, ny = min(max(cx, x0), x1), min(max(cy, y0), y1)
         near = math.hypot(nx - cx, ny - cy)
         far = max(math.hypot(px - cx, py - cy) for px in (x0, x1) for py in (y0, y1))
         return near <= r <= far
-    if m.kind == "segment":
+    if m.kind is MarkKind.SEGMENT:
         bx0, bx1 = sorted((g[0], g[2]))
         by0, by1 = sorted((g[1], g[3]))
         return bx0 <= x1 and x0 <= bx1 and by0 <= y1 and y0 <= by1

@@ -273,3 +273,98 @@ def test_a_polyline_is_drawn_with_straight_segments_through_its_corners():
         (px, py), (qx, qy) = drawn[k], drawn[(k + 1) % 6]
         cross = (qx - px) * (my - py) - (qy - py) * (mx - px)
         assert abs(cross) / math.hypot(qx - px, qy - py) < 0.02
+
+
+def _lettered_helper_figure(*, role: str = "construction"):
+    """A user's figure: the segment AB as the result, its midpoint M lettered by the user (role *role*),
+    and a second lettered point N on the perpendicular through M, neither of which locates the result."""
+    from construct import Builder, left_of
+
+    b = Builder("lettered helpers", givens={})
+    b.given_point("A", 0.0, 0.0)
+    b.given_point("B", 4.0, 0.0)
+    b.midpoint("M", "A", "B")
+    b.set_label("M", "M")
+    b.circle_radius("k", "M", b.length_of("h", "A", "M"), role=role)
+    b.intersect("N", "k", b.perpendicular_bisector("p", "A", "B"), rule=left_of("A", "B"), labels={"N": "N"},
+                role=role)
+    b.line("g", "A", "B", role="result")
+    return b.figure()
+
+
+def _letters(svg: str) -> set[str]:
+    root = ET.fromstring(svg.encode("utf-8"))
+    return {"".join(t.itertext()) for t in root.iter(f"{SVG}text") if "lb" in (t.get("class") or "").split()
+            and "halo" not in (t.get("class") or "").split()}
+
+
+def test_the_plate_warns_once_naming_every_lettered_point_it_leaves_out():
+    """The historical plate shows the result AB and the given points; M and N (lettered by the user, default
+    role) locate nothing of it.  One HiddenLabelWarning names both, with their letters; the plain and teaching
+    styles, which draw every step, say nothing and letter both."""
+    from construct.kernel.errors import ConstructWarning, HiddenLabelWarning
+
+    fig = _lettered_helper_figure()
+    with pytest.warns(HiddenLabelWarning) as caught:
+        svg = fig.svg("historical")
+    assert len(caught) == 1 and issubclass(caught[0].category, ConstructWarning)
+    message = str(caught[0].message)
+    assert "M lettered 'M'" in message and "N lettered 'N'" in message and "2 points" in message
+    assert caught[0].filename == __file__  # it points at the line that asked for the drawing
+    assert {"M", "N"}.isdisjoint(_letters(svg)) and {"A", "B"} <= _letters(svg)
+    for style in ("plain", "teaching"):
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", HiddenLabelWarning)
+            assert {"M", "N", "A", "B"} <= _letters(fig.svg(style))
+    # a frame of the historical style draws the steps, not the plate: nothing is left out
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", HiddenLabelWarning)
+        fig.svg("historical", upto=len(fig.protocol.steps))
+
+
+def test_no_warning_when_the_plate_letters_the_point_or_the_protocol_names_its_plate():
+    """A lettered point that is a result is on the plate (and lettered there); a protocol that lists what
+    its plate shows (params["plate"], as every book construction does) leaves the rest out on purpose."""
+    from construct import Builder
+    from construct.kernel.errors import HiddenLabelWarning
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", HiddenLabelWarning)
+        b = Builder("lettered result", givens={})
+        b.given_point("A", 0.0, 0.0)
+        b.given_point("B", 4.0, 0.0)
+        b.perpendicular_bisector("p", "A", "B")
+        b.line("g", "A", "B", role="result")
+        b.intersect("M", "p", "g", rule=("only",), labels={"M": "M"}, role="result")
+        assert "M" in _letters(b.figure().svg("historical"))
+        b = Builder("named plate", givens={}, params={"plate": ["A", "B", "g"]})
+        b.given_point("A", 0.0, 0.0)
+        b.given_point("B", 4.0, 0.0)
+        b.midpoint("M", "A", "B")
+        b.set_label("M", "M")
+        b.line("g", "A", "B", role="result")
+        assert "M" not in _letters(b.figure().svg("historical"))
+
+
+def test_no_gallery_plate_leaves_out_a_letter_silently():
+    """Every figure of the gallery, drawn as its plate: no HiddenLabelWarning (the constructions name
+    their plates; the warning is for letters a user set)."""
+    from construct.gallery import gallery_plan
+    from construct.kernel.errors import HiddenLabelWarning
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", HiddenLabelWarning)
+        for name, params in gallery_plan():
+            c = get(name)
+            scene_for(c, c.figure(**params), plate=True)
+
+
+def test_the_command_line_prints_the_warning_as_one_line(tmp_path, cli):
+    """construct replay of a user's protocol in the historical style: written all the same (exit 0), the
+    warning on stderr as one line, as the command line prints its errors."""
+    path = tmp_path / "user.json"
+    path.write_text(_lettered_helper_figure().protocol.to_json(), encoding="utf-8")
+    run = cli("replay", "--protocol", path, "--style", "historical", "--out", tmp_path / "out")
+    assert run.code == 0 and (tmp_path / "out" / "final.svg").is_file()
+    lines = [line for line in run.err.splitlines() if "warning" in line]
+    assert len(lines) == 1 and lines[0].startswith("construct: warning: the plate") and "M lettered 'M'" in lines[0]

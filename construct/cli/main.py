@@ -16,9 +16,10 @@ import os
 import signal
 import sys
 import threading
+import warnings
 from typing import Sequence
 
-from ..kernel.errors import ConstructError
+from ..kernel.errors import ConstructError, ConstructWarning
 
 EXIT_OK, EXIT_BAD_INPUT = 0, 2  # a failed check exits 1: the commands that check return it
 
@@ -202,8 +203,27 @@ def _write_failed(exc: OSError) -> str:
     return f"cannot write{where}: {exc.strerror or exc}"
 
 
+@contextlib.contextmanager
+def _warnings_as_lines():
+    """For the command's duration, the library's own warnings (:class:`ConstructWarning`) print as one line
+    ``construct: warning: ...``, as its errors do, not as a source line of the library; others as Python prints."""
+    previous = warnings.showwarning
+
+    def show(message, category, filename, lineno, file=None, line=None):
+        if issubclass(category, ConstructWarning):
+            print(f"construct: warning: {_one_line(str(message))}", file=sys.stderr if file is None else file)
+        else:
+            previous(message, category, filename, lineno, file, line)
+
+    warnings.showwarning = show
+    try:
+        yield
+    finally:
+        warnings.showwarning = previous
+
+
 def main(argv: Sequence[str] | None = None) -> int:
-    with _streams_for_the_terminal():
+    with _streams_for_the_terminal(), _warnings_as_lines():
         return _main(argv)
 
 

@@ -31,7 +31,8 @@ __all__ = [
     "WrongInput",
     "MissingGiven",
     "DuplicateName",
-    "InputFileError",
+    "ConstructWarning",
+    "HiddenLabelWarning",
 ]
 
 
@@ -131,3 +132,12 @@ class DuplicateName(StepError, InvalidParameter):
 
 class InputFileError(ConstructError, ValueError):
     """An input file (a digitised indicator diagram) cannot be read, or its contents are not what they must be."""
+
+
+class ConstructWarning(UserWarning):
+    """Base class of every warning this library issues: it did what was asked, but not all of it shows."""
+
+
+class HiddenLabelWarning(ConstructWarning):
+    """A style leaves out points a user lettered: a plate (the historical style) shows the results and what
+    locates them, so a lettered construction point that locates no result is not drawn, nor is its letter."""

@@ -22,11 +22,15 @@ import bisect
 import dataclasses
 import functools
 import math
+import os
 import re
+import sys
+import warnings
 from dataclasses import dataclass
 from enum import Enum
 from typing import Any, Callable, Iterable
 
+from ..kernel.errors import HiddenLabelWarning
 from ..kernel.geometry import Circle, Length, Line, Point
 from ..kernel.protocol import Protocol, Replay, Step
 from .captions import TITLE_LIMIT, Reader, displayed
@@ -445,10 +449,14 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
     With *plate* the scene is what a book plate shows (:func:`plate_names`):
     the results and the curves and points that locate them, each curve drawn
     only as far as the shown points on it, every construction step left out.
+    A point lettered by the user that the plate leaves out is named in a
+    :class:`~construct.kernel.errors.HiddenLabelWarning` (:func:`warn_hidden_labels`).
     """
     protocol: Protocol = figure.protocol
     objects: Replay = figure.replay
     shown = plate_names(protocol, objects) if plate else None
+    if shown is not None:
+        warn_hidden_labels(protocol, objects, shown)
     points = [o for n, o in objects.items() if isinstance(o, Point) and (shown is None or n in shown)]
     curves_pts = _curve_points(objects, shown)
     xs = [p[0] for p in points] + [p[0] for p in curves_pts]
@@ -589,6 +597,58 @@ def _break(marks: list[Mark], furniture: tuple = (),
         out.append(m if g is m.geom else dataclasses.replace(m, geom=g))
     # the left stretch now ends at hi - keep: the kept piece of the broken axis is [hi - keep, hi]
     return out, tuple(shifted(it, sx) for it in furniture), ((hi - keep, keep, hi - lo),)
+
+
+def warn_hidden_labels(protocol: Protocol, objects: Replay, shown: set[str]) -> list[tuple[str, str]]:
+    """Warn once for the figure (:class:`~construct.kernel.errors.HiddenLabelWarning`) when its plate leaves out
+    lettered points; return them as (name, letter).
+
+    Only a plate the library chooses is asked (:func:`plate_names` without the protocol's ``plate`` list):
+    there a letter the user set on a point that locates no result would vanish without a word.  A
+    construction that names its plate's objects (every book construction) leaves its other letters out on
+    purpose, as its book does.
+
+    >>> from construct import Builder
+    >>> b = Builder("demo", givens={})
+    >>> _ = b.given_point("A", 0.0, 0.0); _ = b.given_point("B", 4.0, 0.0)
+    >>> _ = b.midpoint("M", "A", "B"); b.set_label("M", "M"); _ = b.line("g", "A", "B", role="result")
+    >>> fig = b.figure()
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     warn_hidden_labels(fig.protocol, fig.replay, plate_names(fig.protocol, fig.replay))
+    [('M', 'M')]
+    >>> print(caught[0].message)
+    the plate (historical style) leaves out point M lettered 'M': it shows the results and what locates them; give M role="result", or name what the plate shows in params["plate"], to letter it there
+    """
+    if protocol.params.get("plate"):
+        return []
+    hidden = [(name, text) for s in protocol.steps for name, text in s.labels
+              if name not in shown and isinstance(objects.get(name), Point)]
+    if hidden:
+        names = ", ".join(f"{n} lettered {t!r}" for n, t in hidden[:8]) + (", ..." if len(hidden) > 8 else "")
+        which = "point" if len(hidden) == 1 else f"{len(hidden)} points:"
+        them = hidden[0][0] if len(hidden) == 1 else "them"
+        warnings.warn(HiddenLabelWarning(
+            f"the plate (historical style) leaves out {which} {names}: it shows the results and what locates "
+            f'them; give {them} role="result", or name what the plate shows in params["plate"], to letter '
+            f"{'it' if len(hidden) == 1 else 'them'} there"), stacklevel=_caller_level())
+    return hidden
+
+
+#: This package's folder: a warning points at the first line outside it (the user's ``fig.svg(...)``).
+_PACKAGE = os.path.dirname(os.path.dirname(os.path.abspath(__file__))) + os.sep
+
+
+def _caller_level() -> int:
+    """The ``stacklevel`` (for a warning raised by this function's caller) of the first frame outside the package.
+
+    The drawing is reached by several paths (``Figure.svg``, ``construct.svg``, ``write_replay``), each
+    a different depth below the user's line; the warning should name that line, not ours.
+    """
+    frame, level = sys._getframe(2), 2  # 1 is the function that warns
+    while frame is not None and frame.f_code.co_filename.startswith(_PACKAGE):
+        frame, level = frame.f_back, level + 1
+    return level
 
 
 def plate_names(protocol: Protocol, objects: Replay) -> set[str]:

@@ -14,7 +14,9 @@ One import gives everything to build, replay, draw and check a construction:
 - Rules for which intersection a step takes: :func:`nearer`, :func:`farther`,
   :func:`left_of`, :func:`right_of`, :func:`toward`, :func:`only`.
 - Errors: every error is a :class:`ConstructError`; a failing step raises a
-  :class:`StepError` naming the step, its instrument and the values.
+  :class:`StepError` naming the step, its instrument and the values.  Every
+  warning is a :class:`ConstructWarning` (:class:`HiddenLabelWarning`: a plate
+  leaves out a point you lettered).
 
 A complete construction -- the midpoint of a segment -- drawn to SVG:
 
@@ -39,9 +41,9 @@ from __future__ import annotations
 from typing import Any
 
 from .constructions import Construction, get, names
-from .kernel.errors import (ConstructError, DegenerateObject, DuplicateName, GeometryError, InvalidParameter,
-                            MissingGiven, NoIntersection, OutputError, ProtocolFormatError, RuleError, StepError,
-                            UnknownConstruction, UnknownObject, WrongInput)
+from .kernel.errors import (ConstructError, ConstructWarning, DegenerateObject, DuplicateName, GeometryError,
+                            HiddenLabelWarning, InvalidParameter, MissingGiven, NoIntersection, OutputError,
+                            ProtocolFormatError, RuleError, StepError, UnknownConstruction, UnknownObject, WrongInput)
 
 from .kernel import version as _installed_version
 from .kernel.geometry import Circle, Length, Line, Point
@@ -91,6 +93,9 @@ __all__ = [
     "WrongInput",
     "MissingGiven",
     "DuplicateName",
+    # warnings
+    "ConstructWarning",
+    "HiddenLabelWarning",
 ]
 
 

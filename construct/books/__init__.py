@@ -9,8 +9,9 @@ One package per text, named after the book rather than the seed file:
 - :mod:`.baumann` -- seed 004, Baumann (1902) on flywheel weights, with his coefficients
   (:mod:`.baumann.flywheel`) and his error analysis (:mod:`.baumann.excess_error`).
 
-:mod:`.errata` holds what they share: reading a printed number, judging it against the true value, and
-collecting every text's errata.
+:mod:`.printed` holds the one type every text lists its printed numbers as (:class:`.printed.Printed`, and
+:class:`.printed.PrintedFormula` for a formula); :mod:`.errata` what they share besides: reading a printed
+number, judging it against the true value, and collecting every text's errata.
 
 >>> from construct.books.errata import errata_of
 >>> sorted({e.class_ for e in errata_of("000")})

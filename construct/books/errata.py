@@ -46,7 +46,7 @@ from typing import Callable
 from ..constructions import analytic
 from ..kernel.errors import InvalidParameter
 from .anhang_ii import printed as seed000
-from .anhang_ii.printed import PrintedValue
+from .printed import Printed
 
 __all__ = ["CLASS_MEANINGS", "WRONG", "Erratum", "Reading", "errata", "all_errata", "classify", "read_printed", "true_value", "CLASSES", "SOURCES", "errata_of"]
 
@@ -201,12 +201,12 @@ def cause_of(note: str) -> str | None:
 # True values: the quantity each printed number claims to be.
 
 
-def _lam(v: PrintedValue) -> float:
+def _lam(v: Printed) -> float:
     assert v.rod_ratio is not None
     return 1.0 / v.rod_ratio
 
 
-def true_value(v: PrintedValue) -> float:
+def true_value(v: Printed) -> float:
     """The exact value of what *v* claims to be (degrees for angles).
 
     >>> from construct.books.anhang_ii.printed import characteristic_points
@@ -245,7 +245,7 @@ def true_value(v: PrintedValue) -> float:
     raise InvalidParameter(f"no true value known for quantity {q!r} ({v.table}, {v.row}, {v.column})")
 
 
-def _table_2_angle(v: PrintedValue) -> float:
+def _table_2_angle(v: Printed) -> float:
     # Tabelle 2 uses 2r = 10 and x = tenths of the stroke; in units of r the path is 2·fraction.
     return analytic.crank_angle_from_path(2.0 * v.stroke_fraction, 1.0, float(v.rod_ratio))  # type: ignore[operator]
 
@@ -260,7 +260,7 @@ def _point_cos(point: str, lam: float) -> float:
 
 
 def _printed_intermediate(
-    v: PrintedValue, lookup: Callable[[str, str, str], PrintedValue]
+    v: Printed, lookup: Callable[[str, str, str], Printed]
 ) -> tuple[float, str] | None:
     """(value, description) of *v* recomputed from printed intermediates, if it has any."""
     q, table = v.quantity, v.table
@@ -352,7 +352,7 @@ def _chain_explains(reading: Reading, intermediate: tuple[float, str] | None) ->
 
 
 def _causes(
-    v: PrintedValue, reading: Reading, true_print: Fraction, intermediate: tuple[float, str] | None, verdict: str
+    v: Printed, reading: Reading, true_print: Fraction, intermediate: tuple[float, str] | None, verdict: str
 ) -> list[str]:
     """Causes that explain why *v* is not the correctly rounded true value."""
     unit = reading.unit
@@ -386,7 +386,7 @@ def _causes(
     return causes
 
 
-def _quantity_note(v: PrintedValue, true: float, reading: Reading) -> str:
+def _quantity_note(v: Printed, true: float, reading: Reading) -> str:
     """What the reader needs to know about the true value itself, whatever the verdict."""
     q = v.quantity
     if q == "s5":
@@ -404,7 +404,7 @@ def _quantity_note(v: PrintedValue, true: float, reading: Reading) -> str:
     return ""
 
 
-def _entry(v: PrintedValue, lookup: Callable[[str, str, str], PrintedValue]) -> Erratum:
+def _entry(v: Printed, lookup: Callable[[str, str, str], Printed]) -> Erratum:
     reading = read_printed(v.text, v.resolution)
     true = true_value(v)
     true_print = Fraction(true * 60) if reading.is_angle else Fraction(true)
@@ -502,7 +502,7 @@ def errata() -> list[Erratum]:
     printed = seed000.all_printed()
     index = {(p.table, p.row, p.column): p for p in printed}
 
-    def lookup(table: str, row: str, column: str) -> PrintedValue:
+    def lookup(table: str, row: str, column: str) -> Printed:
         return index[table, row, column]
 
     return [_entry(v, lookup) for v in printed] + _formula_entries()

@@ -6,7 +6,7 @@ writes as LaTeX ``\\cdot 563`` is kept as ``·563``, and angles are written
 ``79° 20'``.  Nothing is rounded, padded or "fixed" here; a wrong value stays
 wrong (the errata in :mod:`construct.books.errata` say which).
 
-What each number claims to be is stored beside it (:class:`PrintedValue`):
+What each number claims to be is stored beside it (:class:`~construct.books.printed.Printed`):
 the quantity, the rod ratio ``L/r`` and the crank angle or piston path of its
 row.  Units: crank angles in degrees, piston paths as fractions of the stroke
 ``2r`` ("des Hubes"), pressures for ``F/f = 1``, ``r·tg β`` in units of ``F/f``.
@@ -22,13 +22,11 @@ row.  Units: crank angles in degrees, piston paths as fractions of the stroke
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from ..printed import Printed, PrintedFormula
 
 __all__ = [
     "SOURCE",
     "ROD_RATIOS",
-    "PrintedValue",
-    "PrintedFormula",
     "TABLE_1",
     "TABLE_2",
     "table_1",
@@ -47,40 +45,6 @@ ROD_RATIOS = (4, 5, 6)
 
 #: Table names in the order the appendix prints them (also the errata order).
 TABLE_ORDER = ("Tabelle 1", "Tabelle 2", "characteristic points", "tangents", "formula")
-
-
-@dataclass(frozen=True, slots=True)
-class PrintedValue:
-    """One number as the book prints it, with what it claims to be.
-
-    ``quantity`` names the claim (``cos_omega``, ``cos_2omega``, ``lam_cos_2omega``,
-    ``q``, ``omega``, ``s5``, ``q6_cos``, ``q6_omega``, ``q6_x``, ``q7_cos``,
-    ``q7_omega``, ``q7_x``, ``r_tg_beta``).  ``omega_deg`` is the crank angle
-    of the row where the row is one (Tabelle 1, tangents); ``stroke_fraction``
-    the piston path x/2r where the row is one (Tabelle 2).  ``resolution`` is
-    set where the last printed digit does not tell the precision the book
-    works to (see :data:`CHARACTERISTIC_ANGLE_RESOLUTION`).
-    """
-
-    table: str
-    row: str
-    column: str
-    text: str
-    quantity: str
-    rod_ratio: int | None = None
-    omega_deg: float | None = None
-    stroke_fraction: float | None = None
-    resolution: str | None = None
-
-
-@dataclass(frozen=True, slots=True)
-class PrintedFormula:
-    """A printed formula (or header) quoted where the errata find fault with it."""
-
-    table: str
-    row: str
-    column: str
-    text: str
 
 
 # --------------------------------------------------------------------------
@@ -207,38 +171,38 @@ def _degrees(label: str) -> float:
     return float(label.rstrip("°"))
 
 
-def table_1() -> tuple[PrintedValue, ...]:
+def table_1() -> tuple[Printed, ...]:
     """Tabelle 1 as 19 rows × 8 printed numbers, row by row."""
     out = []
     for row, texts in TABLE_1:
         for (column, quantity, ratio), text in zip(TABLE_1_COLUMNS, texts, strict=True):
-            out.append(PrintedValue("Tabelle 1", row, column, text, quantity, ratio, omega_deg=_degrees(row)))
+            out.append(Printed("Tabelle 1", row, column, text, quantity, rod_ratio=ratio, omega_deg=_degrees(row)))
     return tuple(out)
 
 
-def table_2() -> tuple[PrintedValue, ...]:
+def table_2() -> tuple[Printed, ...]:
     """Tabelle 2 as 11 rows × 6 printed numbers (the path columns are row labels)."""
     out = []
     for row, texts, _return in TABLE_2:
         for (column, quantity, ratio), text in zip(TABLE_2_COLUMNS, texts, strict=True):
-            out.append(PrintedValue("Tabelle 2", row, column, text, quantity, ratio, stroke_fraction=float(row)))
+            out.append(Printed("Tabelle 2", row, column, text, quantity, rod_ratio=ratio, stroke_fraction=float(row)))
     return tuple(out)
 
 
-def characteristic_points() -> tuple[PrintedValue, ...]:
+def characteristic_points() -> tuple[Printed, ...]:
     """The values of section c): s5, and cos ω, ω and x/2r for q6 and q7."""
     out = []
     for row, column, quantity, texts in CHARACTERISTIC_POINTS:
         resolution = CHARACTERISTIC_ANGLE_RESOLUTION if quantity.endswith("_omega") else None
         for ratio, text in zip(ROD_RATIOS, texts, strict=True):
             out.append(
-                PrintedValue(
+                Printed(
                     "characteristic points",
                     row,
                     f"{column} (L/r={ratio})",
                     text,
                     quantity,
-                    ratio,
+                    rod_ratio=ratio,
                     omega_deg=90.0 if row == "s5" else None,
                     resolution=resolution,
                 )
@@ -246,7 +210,7 @@ def characteristic_points() -> tuple[PrintedValue, ...]:
     return tuple(out)
 
 
-def tangent_values() -> tuple[PrintedValue, ...]:
+def tangent_values() -> tuple[Printed, ...]:
     """The numbers r·tg β of section d), fractions and decimals, in units of F/f."""
     out = []
     for row, ratio, texts in TANGENT_VALUES:
@@ -254,12 +218,12 @@ def tangent_values() -> tuple[PrintedValue, ...]:
         for text in texts:
             kind = "r·tg β fraction" if "/" in text and text != "F/f" else "r·tg β"
             out.append(
-                PrintedValue("tangents", row, f"{kind} ({suffix})", text, "r_tg_beta", ratio, omega_deg=_degrees(row))
+                Printed("tangents", row, f"{kind} ({suffix})", text, "r_tg_beta", rod_ratio=ratio, omega_deg=_degrees(row))
             )
     return tuple(out)
 
 
-def all_printed() -> tuple[PrintedValue, ...]:
+def all_printed() -> tuple[Printed, ...]:
     """Every printed number of the appendix, in table, row and column order."""
     return table_1() + table_2() + characteristic_points() + tangent_values()
 

@@ -36,6 +36,7 @@ from fractions import Fraction
 from . import excess_error as ee
 from . import flywheel as fw
 from ..errata import Erratum, classify, read_printed
+from ..printed import Printed
 from . import printed as seed004
 
 __all__ = ["entries", "true_values", "formula_table_check", "factor_within", "FACTOR_BAND"]
@@ -292,13 +293,13 @@ def _units(reading_value: Fraction, unit: Fraction, true: float) -> Fraction:
     return (reading_value - Fraction(true)) / unit
 
 
-def _entry(p: seed004.Printed, true: float, note: str) -> Erratum:
+def _entry(p: Printed, true: float, note: str) -> Erratum:
     reading = read_printed(p.text.replace(",", "."))
     unit = Fraction(p.resolution) if p.resolution else reading.unit
     value = reading.value
     t = true * 60.0 if reading.is_angle else true
     units = _units(value, unit, t)
-    verdict = classify(units, _CAUSES.get(p.key, "unexplained"))
+    verdict = classify(units, _CAUSES.get(p.quantity, "unexplained"))
     notes = [note]
     if verdict != "agrees" and classify(_units(-value, unit, t)) in ("agrees", "slip"):
         notes.append("sign dropped: the magnitude is right")
@@ -341,7 +342,7 @@ _FORMULA_CLASS = {row: "typesetting" for row in _FORMULAS}
 def entries() -> list[Erratum]:
     """Every printed number of seed 004 with its verdict, in the order of the text, then the wrong formulas."""
     truth = true_values()
-    out = [_entry(p, *truth[p.key]) for p in seed004.all_printed()]
+    out = [_entry(p, *truth[p.quantity]) for p in seed004.all_printed()]
     for f in seed004.printed_formulas():
         true, note = _FORMULAS[f.row]
         out.append(Erratum(seed004.SOURCE, "formula", f.row, f.column, f.text, true, None, _FORMULA_CLASS[f.row], note))

@@ -5,8 +5,8 @@ as the seed text gives them (angles written ``33° 15'``); a sign the book
 leaves out stays left out.  Nothing is corrected here; the errata
 (:mod:`construct.books.baumann.errata`) say which are wrong.
 
-Each :class:`Printed` names where it stands (``table``: the section or
-table, ``row``, ``column``) and ``key``, the quantity it claims to be (the
+Each :class:`~construct.books.printed.Printed` names where it stands (``table``: the section or
+table, ``row``, ``column``) and ``quantity``, what it claims to be (the
 errata compute that quantity).  ``resolution`` overrides the last printed
 place where the book rounds to a coarser step (totals "to 50 kg").
 
@@ -18,31 +18,13 @@ place where the book rounds to a coarser step (totals "to 50 kg").
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from ..printed import Printed, PrintedFormula
 
-__all__ = ["SOURCE", "Printed", "PrintedFormula", "all_printed", "printed_formulas", "TABLE_KZ", "TABLE_V",
+__all__ = ["SOURCE", "all_printed", "printed_formulas", "TABLE_KZ", "TABLE_V",
            "TABLE_1_G2", "TABLE_1_TOTAL", "TABLE_2_MOMENT", "TABLE_2_WEIGHT", "WORKED_V", "WORKED_TOTALS",
            "WORKED_RIMS", "FORMULA_ROWS", "FORMULA_TOTALS", "FORMULA_RIMS", "MACHINE_COLUMNS"]
 
 SOURCE = "seed 004, Baumann 1902 (Schwungradgewichte)"
-
-
-@dataclass(frozen=True, slots=True)
-class Printed:
-    table: str
-    row: str
-    column: str
-    text: str
-    key: str
-    resolution: str | None = None
-
-
-@dataclass(frozen=True, slots=True)
-class PrintedFormula:
-    table: str
-    row: str
-    column: str
-    text: str
 
 
 # -- "Bestimmung des Fehlers": the error area f_x --------------------------------------
@@ -176,20 +158,20 @@ def all_printed() -> list[Printed]:
     for i, (kz, v) in enumerate(zip(TABLE_KZ, TABLE_V)):
         row = f"kz = {kz}, v = {v}"
         out.append(Printed("Tabelle G2", row, "v²", TABLE_V2[i], f"v2:{i}"))
-        out.append(Printed("Tabelle G2", row, "G2 = G1 mal", TABLE_1_G2[i], f"t1_g2:{i}", _half_step(TABLE_1_G2[i])))
+        out.append(Printed("Tabelle G2", row, "G2 = G1 mal", TABLE_1_G2[i], f"t1_g2:{i}", resolution=_half_step(TABLE_1_G2[i])))
         out.append(Printed("Tabelle G2", row, "Gtotal = G1 mal", TABLE_1_TOTAL[i], f"t1_total:{i}",
-                           _half_step(TABLE_1_TOTAL[i])))
+                           resolution=_half_step(TABLE_1_TOTAL[i])))
     for i, (kz, v) in enumerate(zip(TABLE_KZ, TABLE_V)):
         row = f"kz = {kz}, v = {v}"
         out.append(Printed("Tabelle Schwungmoment", row, "1 + 0,0218 v²/kz", TABLE_2_MOMENT[i], f"t2_moment:{i}",
-                           _half_step(TABLE_2_MOMENT[i])))
+                           resolution=_half_step(TABLE_2_MOMENT[i])))
         out.append(Printed("Tabelle Schwungmoment", row, "1 + 0,06 v²/kz", TABLE_2_WEIGHT[i], f"t2_weight:{i}"))
     for i, case in enumerate(WORKED_CASES):
         out.append(Printed("Beispiele", case, "v", WORKED_V[i], f"worked_v:{i}"))
-        out.append(Printed("Beispiele", case, "Gtotal (Richtige Werte)", WORKED_TOTALS[i], f"worked_total:{i}", "50"))
-        out.append(Printed("Beispiele", case, "Kranz (Richtige Werte)", WORKED_RIMS[i][0], f"worked_rim:{i}", "50"))
+        out.append(Printed("Beispiele", case, "Gtotal (Richtige Werte)", WORKED_TOTALS[i], f"worked_total:{i}", resolution="50"))
+        out.append(Printed("Beispiele", case, "Kranz (Richtige Werte)", WORKED_RIMS[i][0], f"worked_rim:{i}", resolution="50"))
         out.append(Printed("Beispiele", case, "Arme und Nabe (Richtige Werte)", WORKED_RIMS[i][1], f"worked_arms:{i}",
-                           "50"))
+                           resolution="50"))
     for name in FORMULA_ROWS:
         for i, column in enumerate(MACHINE_COLUMNS):
             if FORMULA_TOTALS[name][i] is None:
@@ -197,9 +179,9 @@ def all_printed() -> list[Printed]:
             rim, arms = FORMULA_RIMS[name][i]
             row = f"{name}, {column}"
             out.append(Printed("Formeln", row, "Gesamtgewicht", FORMULA_TOTALS[name][i], f"formula_total:{name}:{i}",
-                               "50"))
-            out.append(Printed("Formeln", row, "Kranzgewicht", rim, f"formula_rim:{name}:{i}", "10"))
-            out.append(Printed("Formeln", row, "Arme und Nabe", arms, f"formula_arms:{name}:{i}", "10"))
+                               resolution="50"))
+            out.append(Printed("Formeln", row, "Kranzgewicht", rim, f"formula_rim:{name}:{i}", resolution="10"))
+            out.append(Printed("Formeln", row, "Arme und Nabe", arms, f"formula_arms:{name}:{i}", resolution="10"))
     return out
 
 

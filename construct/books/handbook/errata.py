@@ -21,6 +21,7 @@ import math
 from fractions import Fraction
 
 from ..errata import Erratum, classify, read_printed
+from ..printed import Printed
 from . import printed as seed001
 
 __all__ = ["entries", "true_values"]
@@ -56,7 +57,7 @@ def true_values() -> dict[str, float]:
     }
 
 
-def _note(p: seed001.Printed, true: float, units: float) -> str:
+def _note(p: Printed, true: float, units: float) -> str:
     hp, lp, hp23, lp23 = _weights()
     if p.quantity == "speed":
         return f"pi D n / 60 = {true:.5f}; with pi = 22/7 it is {22 / 7 * 0.8 * 50 / 60:.5f}, which gives the printed 2.095"

@@ -14,9 +14,9 @@ the seed's with the decimal comma written as a point; nothing is rounded or
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from ..printed import Printed
 
-__all__ = ["SOURCE", "GIVEN", "PART_WEIGHTS", "Printed", "worked_example"]
+__all__ = ["SOURCE", "GIVEN", "PART_WEIGHTS", "worked_example"]
 
 SOURCE = "seed 001, Kolbenüberdrucklinie and Einfluß der Massenkräfte (Tafel I, Abb. 1054/1055)"
 
@@ -30,28 +30,17 @@ PART_WEIGHTS = {"hp_piston": 122.0, "lp_piston": 282.0, "piston_rod": 122.0, "pu
                 "crosshead": 190.0, "connecting_rod": 220.0}
 
 
-@dataclass(frozen=True, slots=True)
-class Printed:
-    """One printed number: where it stands, what it claims, the string."""
-
-    table: str
-    row: str
-    column: str
-    quantity: str
-    text: str
-
-
 def worked_example() -> list[Printed]:
     """The printed results of the example, in text order."""
     t = "Tafel I"
     return [
-        Printed(t, "F'", "cm²", "area_cover", "1546.3"),
-        Printed(t, "F''", "cm²", "area_crank", "1511.9"),
-        Printed(t, "G high-pressure side", "kg", "weight_hp", "830"),
-        Printed(t, "G low-pressure side", "kg", "weight_lp", "990"),
-        Printed(t, "v", "m/s", "speed", "2.095"),
-        Printed(t, "P_b,max high-pressure side", "kg", "pbmax_hp", "1115"),
-        Printed(t, "P_b,max low-pressure side", "kg", "pbmax_lp", "1330"),
-        Printed("semicircle", "9 parts", "degrees", "step_9", "20"),
-        Printed("semicircle", "18 parts", "degrees", "step_18", "10"),
+        Printed(t, "F'", "cm²", "1546.3", "area_cover"),
+        Printed(t, "F''", "cm²", "1511.9", "area_crank"),
+        Printed(t, "G high-pressure side", "kg", "830", "weight_hp"),
+        Printed(t, "G low-pressure side", "kg", "990", "weight_lp"),
+        Printed(t, "v", "m/s", "2.095", "speed"),
+        Printed(t, "P_b,max high-pressure side", "kg", "1115", "pbmax_hp"),
+        Printed(t, "P_b,max low-pressure side", "kg", "1330", "pbmax_lp"),
+        Printed("semicircle", "9 parts", "degrees", "20", "step_9"),
+        Printed("semicircle", "18 parts", "degrees", "10", "step_18"),
     ]

@@ -100,6 +100,6 @@ def entries() -> list[Erratum]:
             note = "infinite rod only; a finite rod shifts the zeros (§ 147)"
         elif p.quantity == "sin_2alpha":
             note = "(4/π)² − 1"
-        out.append(Erratum(seed002.SOURCE, p.section, p.row, "value", p.text, true, float(units) + 0.0,
+        out.append(Erratum(seed002.SOURCE, p.table, p.row, p.column, p.text, true, float(units) + 0.0,
                            classify(units), note))
     return out

@@ -22,9 +22,9 @@ centre of the first crank, the second 90° ahead, rods pushed by Q):
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from ..printed import Printed
 
-__all__ = ["SOURCE", "Printed", "PRINTED", "FIGURE"]
+__all__ = ["SOURCE", "PRINTED", "FIGURE"]
 
 SOURCE = "seed 002, § 146-147 (two cranks at 90°)"
 
@@ -32,20 +32,10 @@ SOURCE = "seed 002, § 146-147 (two cranks at 90°)"
 FIGURE = "Fig. 566"
 
 
-@dataclass(frozen=True, slots=True)
-class Printed:
-    """One printed number: where it stands, what it claims to be, and the text."""
-
-    section: str
-    row: str
-    quantity: str
-    text: str
-
-
 PRINTED: tuple[Printed, ...] = (
-    Printed("§ 146", "sin 2α = (4/π)² − 1", "sin_2alpha", "0,6211"),
-    Printed("§ 146", "α₁ (kleinste Geschwindigkeit)", "alpha1", "19° 12'"),
-    Printed("§ 146", "α₂ (größte Geschwindigkeit)", "alpha2", "70° 48'"),
-    Printed("§ 146", "v_min = v₁(1 − c·Qr/((m₁+m₂)v₁²))", "vmin_coefficient", "0,0422"),
-    Printed("§ 146", "v = v₁ in Abständen von", "equal_speed_spacing", "45°"),
+    Printed("§ 146", "sin 2α = (4/π)² − 1", "value", "0,6211", "sin_2alpha"),
+    Printed("§ 146", "α₁ (kleinste Geschwindigkeit)", "value", "19° 12'", "alpha1"),
+    Printed("§ 146", "α₂ (größte Geschwindigkeit)", "value", "70° 48'", "alpha2"),
+    Printed("§ 146", "v_min = v₁(1 − c·Qr/((m₁+m₂)v₁²))", "value", "0,0422", "vmin_coefficient"),
+    Printed("§ 146", "v = v₁ in Abständen von", "value", "45°", "equal_speed_spacing"),
 )

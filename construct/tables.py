@@ -19,7 +19,6 @@ from pathlib import Path
 from typing import Any, Mapping, Sequence
 
 from .constructions import analytic
-from .kernel.errors import InvalidParameter
 from .constructions import get
 from .constructions.crank import crank_angle, piston_fraction, point_name
 from .constructions.inertia import acceleration_rows, characteristic_point_rows, q_at_crank_angle_rows

@@ -241,8 +241,6 @@ def test_every_table_has_a_plot_of_its_own_columns():
 @pytest.mark.parametrize("suffix", [".png", ".svg", ".pdf"])
 def test_table_plot_draws_the_rows_it_prints(tmp_path, cli, suffix):
     """The curve handed to matplotlib is the table's column; the file is written whole, by its suffix."""
-    import math
-
     from construct.tables import PLOTS, speed_fluctuation_table
     from construct.render.plotting import plot_table
 

@@ -6,7 +6,6 @@ x = (1 − cos θ + L/r − sqrt((L/r)² − sin² θ))/2 and the mass pressure 
 "about 25 at" for the explosion engine's highest pressure.
 """
 
-import math
 
 import mpmath
 import pytest

@@ -234,3 +234,16 @@ def test_the_private_import_test_sees_what_it_must():
               "def f():\n"
               "    from ..match import _bbox as box\n")
     assert _private_imports(source) == [(1, ".values", "_fmt"), (6, "..match", "_bbox")]
+
+
+def test_no_unused_import_and_no_name_defined_twice():
+    """pyflakes finds nothing in the package and the tests: no unused import (a layer crossed for nothing), no
+    class or function defined twice (the second silently replaces the first).  pyflakes is a tool, not a
+    dependency: without it the test is skipped."""
+    api = pytest.importorskip("pyflakes.api")
+    from pyflakes.reporter import Reporter
+    import io
+
+    out, err = io.StringIO(), io.StringIO()
+    found = api.checkRecursive([str(PACKAGE), str(ROOT / "tests")], Reporter(out, err))
+    assert found == 0 and not err.getvalue(), out.getvalue() + err.getvalue()

@@ -10,10 +10,8 @@ outlines (matplotlib's TextPath), not against the code's output.
 from __future__ import annotations
 
 import json
-import math
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 

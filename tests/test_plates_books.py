@@ -10,7 +10,6 @@ from __future__ import annotations
 import math
 import re
 
-import pytest
 
 from construct.constructions import analytic
 from construct.constructions import get
@@ -38,7 +37,6 @@ def _furniture(name: str, **params):
 def test_indicator_diagram_is_one_closed_outline_at_result_weight():
     fig, plate = _furniture("indicator-diagram")
     R = fig.replay
-    n = fig.params["divisions"]
     heavy = [(tuple(s["a"]), tuple(s["b"])) for s in plate["furniture"] if s["kind"] == "stroke" and s["look"] == "heavy"]
     # the two curves run from the cut-off to the end of the stroke and from the start of compression to it
     exp = [tuple(p) for p in R["expansion"].curve_points()]

@@ -56,7 +56,8 @@ class ProtocolFormatError(ConstructError, ValueError):
 
 
 class InputFileError(ConstructError, ValueError):
-    """A file to read is missing, not a regular file (a pipe, a device, a folder) or larger than its limit."""
+    """A file to read is missing, not a regular file (a pipe, a device, a folder) or larger than its limit,
+    or its contents are not what they must be (a digitised indicator diagram that cannot be read)."""
 
 
 class OutputError(ConstructError, OSError):
@@ -128,10 +129,6 @@ class MissingGiven(StepError, InvalidParameter):
 
 class DuplicateName(StepError, InvalidParameter):
     """A step would make an object under a name an earlier step already used."""
-
-
-class InputFileError(ConstructError, ValueError):
-    """An input file (a digitised indicator diagram) cannot be read, or its contents are not what they must be."""
 
 
 class ConstructWarning(UserWarning):

@@ -23,16 +23,15 @@ from __future__ import annotations
 
 import contextlib
 import math
-import numbers
 from dataclasses import replace
 from types import MappingProxyType
 from collections.abc import Mapping, Sequence
-from typing import TYPE_CHECKING, Any, Iterator
+from typing import Any, Iterator
 
 import numpy as np
 
 from .errors import DuplicateName, InvalidParameter, RuleError, StepError, UnknownObject, WrongInput
-from .protocol import EXACT, GIVEN, ROLES, TOOLS, Caption, Protocol, Provenance, Replay, Step, compile_step, run_step
+from .protocol import EXACT, GIVEN, ROLES, TOOLS, Caption, Protocol, Provenance, Step, compile_step, run_step
 from .numeric import as_float, shown
 from .ops import MAX_PARTS
 from .rules import Rule, as_rule

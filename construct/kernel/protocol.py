@@ -28,7 +28,7 @@ import json
 import math
 import numbers
 import os
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from types import MappingProxyType
 from collections.abc import Mapping
 from typing import Any, Callable, NamedTuple
@@ -43,7 +43,7 @@ from .geometry import SCALAR, Circle, Length, Line, Point, Sweep, ArrayMath, tak
 from .ops import ACCEPTS, OPS, elementwise
 from .protocol_file import (KNOWN_FORMATS, PROTOCOL_FILE_FORMAT, PROTOCOL_FORMAT, PROVENANCE_KINDS, ROLES, TOOLS,
                             check_format, frozen, parse_protocol_json, read_protocol_bytes, step_fields)
-from .numeric import as_float, is_finite, shown
+from .numeric import as_float, shown
 from .rules import as_rule
 
 __all__ = [

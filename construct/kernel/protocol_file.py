@@ -17,7 +17,6 @@ construct.kernel.errors.ProtocolFormatError: step 4: 'index' must be the whole n
 from __future__ import annotations
 
 import json
-import math
 import re
 from types import MappingProxyType
 from collections.abc import Mapping

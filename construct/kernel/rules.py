@@ -25,8 +25,6 @@ construct.kernel.errors.RuleError: a rule is a value like left_of('A', 'B') or a
 
 from __future__ import annotations
 
-import math
-import numbers
 from typing import Any, Sequence
 
 from .errors import RuleError

@@ -73,7 +73,6 @@ def add_arguments(p) -> None:
 
 
 def _diagram_work(args) -> tuple[float, str]:
-    from ...books.baumann.flywheel import moment_from_excess  # noqa: F401  (same units as below)
     from ...constructions import get
     from ...constructions.domain import LENGTH_M, PISTON_AREA
     from ...constructions.tangential import excess_area

@@ -21,7 +21,6 @@ from ..ordinates import ordinate_line as _ordinate_line
 from ..ordinates import ordinate_value as _value
 from ..ordinates import point_kind as _kind
 from ..ordinates import project as _project
-from ..ordinates import stroke_direction as _dir
 
 __all__ = ["build_inertia", "PLATE"]
 

@@ -1,4 +1,4 @@
-"""The teaching camera, the levels of detail and the label placer (issue 16, items 1-3).
+"""The teaching camera: the view of each step, the levels of detail and the label placer.
 
 Expectations come from the protocol and the geometry (which points a group
 makes and which its instruments are set on, where the viewport puts them),

@@ -191,7 +191,7 @@ def test_a_failure_midway_leaves_the_previous_output_intact(tmp_path, cli, monke
 
 @pytest.mark.parametrize("other", ["/dev/zero", "fifo", "folder", "huge.svg"])
 def test_diff_reads_only_bounded_regular_files(tmp_path, cli, other):
-    # Issue 12: 'construct diff a.json /dev/zero' read until memory ran out.  A device, a named pipe
+    # 'construct diff a.json /dev/zero' once read until memory ran out.  A device, a named pipe
     # (which would make the read wait for a writer), a folder and a file above the size limit are refused
     # before anything is read.
     from construct.cli.commands.diff import MAX_DRAWING_BYTES

@@ -1,7 +1,7 @@
 """The stated domain of the givens: refused outside with the parameter named, every check passing inside.
 
-Issue 12, "silent wrong answers and misleading messages": a rod ratio of 1e16
-printed x = 0.5 on every row with exit 0; extreme finite values failed at
+No silent wrong answer and no misleading message at the edges: a rod ratio of
+1e16 once printed x = 0.5 on every row with exit 0; extreme finite values failed at
 "step 221 ... radius inf"; the division advice named methods that reject n;
 ``--step 0.01`` complained of "parts"; ``--rod-ratio -inf`` of a missing argument.
 """
@@ -206,7 +206,7 @@ def test_a_negative_tolerance_in_exponent_form_reaches_the_real_message(cli, tmp
 
 @pytest.mark.parametrize("option", [["--admission", "0.05"], ["--back-pressure", "5"]])
 def test_tangential_pressure_with_negative_work_names_the_givens(cli, option):
-    # Issue 12 (found by the domain pass): these failed naming only "step 1634 (planimeter ...)".  The
+    # These once failed naming only "step 1634 (planimeter ...)", not the givens that cause it.  The
     # indicator work of Baumann's diagram is below its back-pressure work here, so no mean line exists.
     code, _, err = cli("check", "tangential-pressure", *option)
     assert code == 2

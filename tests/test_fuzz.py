@@ -14,8 +14,8 @@ number, empty).  Every run must keep the contract of the README:
   failure the working folder is exactly as it was.
 
 The runs are derandomised so that CI sees the same cases every time; the
-examples that found the bugs of issues 12 and 19 are pinned with ``@example``
-(issue 19: integers beyond any float in each field that reads a number, a
+examples that once found bugs are pinned with ``@example``
+(integers beyond any float in each field that reads a number, a
 trial_chord of ten million parts, lone surrogates in captions and names, a
 megabyte name, ``errata --seed ''``, ``bench --parts N``, ``--frames all``
 of a 3600-part crank, ``check crank-angle --divisions 1000``).
@@ -256,7 +256,7 @@ FIELDS = ["params.givens.r", "op=given_point:params.x", "op=given_point:params.y
 @example(where="construction", value=LONE_SURROGATE, command="check")
 @example(where="construction", value="mine " + "x" * 10**6, command="replay")
 def test_a_protocol_with_one_hostile_value_keeps_the_contract(tmp_path, where, value, command):
-    """One field of a real protocol set to a hostile value (issue 19): refused in one line, or right."""
+    """One field of a real protocol set to a hostile value: refused in one line, or right."""
     if where == "steps.0.provenance.error":  # an error is read with a kind that takes one
         mutation = _one_value("steps.0.provenance", {"kind": "approximate", "error": value})
     else:
@@ -343,7 +343,7 @@ def test_a_hostile_command_line_keeps_the_contract(tmp_path, argv):
     if code != 0:
         assert after == before, "a failed run left its output folder behind"
     if argv[:2] == ["check", "crank-angle"] and "--divisions" in argv and "1000" in argv and len(argv) == 4:
-        assert code == 0, f"inside its domain every check must pass: {out[-300:]}"  # issue 19: 780 of 1001 failed
+        assert code == 0, f"inside its domain every check must pass: {out[-300:]}"  # once 780 of 1001 failed
     if argv[:3] == ["errata", "--seed", ""] or argv[:2] == ["replay", "crank"] and "3600" in argv:
         assert code == 2, err  # an empty seed is not "all"; 100 GB of frames are refused with the estimate
     if code == 0 and argv[:2] == ["table", "piston-path"] and "--format" not in argv:

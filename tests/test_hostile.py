@@ -1,6 +1,6 @@
-"""Hostile input, round two (issue 19): every case gives one line and exit 2, or the right answer.
+"""Hostile input at the command line: every case gives one line and exit 2, or the right answer.
 
-Grouped as the issue groups them: numbers too large for a float, files that
+Grouped by what is hostile: numbers too large for a float, files that
 are not regular files, writes that fail, text a terminal cannot show, library
 misuse, hangs (each bounded by the harness: a subprocess with ``timeout=``,
 never a timed assertion), output that must be old or new at every point of

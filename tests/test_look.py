@@ -97,7 +97,7 @@ def test_crank_finals_carry_every_piston_position(figures, key):
     assert want <= set(_texts(_plate_svg(c, fig)))
 
 
-#: Names of the code that must never reach a reader (issue 9).
+#: Names of the code that must never reach a reader (internal names, Python words, snake_case).
 CODE_WORDS = re.compile(r"EinfFinf|\bc45\b|\bc135\b|D0top|\bMr1\b|\bMk1\b|_|\bsqrt\b|\blam\b|\bvert\b|\btop\b")
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*[′']*")  # a letter may carry primes (J′)
 

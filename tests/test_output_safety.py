@@ -1,7 +1,7 @@
 """Output folders: a writer replaces only what it wrote, says why it cannot write, and leaves no staging behind.
 
-Issue 12 ("Data loss", the output-folder tracebacks, staging folders after a
-kill, the message about an unwritable parent).  The CLI runs in-process
+No data lost: no traceback for an output folder, no staging folder left after
+a kill, a message naming the unwritable parent.  The CLI runs in-process
 (``construct.cli.main``) with a one-figure gallery, except where a signal
 must reach a real process.
 """
@@ -94,7 +94,7 @@ def test_gallery_replaces_a_gallery_or_an_empty_folder(small_plan, tmp_path, cli
     assert gallery.is_gallery(out)  # recognised by its manifest
     assert cli("gallery", "--out", str(out))[0] == 0
     assert tree(out) == first and not staging(tmp_path)
-    # a file put into a gallery by hand is not ours: refused and named, nothing removed (issue 19)
+    # a file put into a gallery by hand is not ours: refused and named, nothing removed
     (out / "crank-parts-3-rod-ratio-4" / "stale.svg").write_text("put here by hand")
     assert not gallery.is_gallery(out)
     code, _, err = cli("gallery", "--out", str(out))
@@ -146,7 +146,7 @@ def test_verify_update_refuses_a_folder_it_did_not_write(tmp_path, cli, monkeypa
     code, _, err = cli("verify", "--gallery", "", "--update")
     assert refused(code, err) and "empty path" in err
     assert tree(p) == {"notes.txt": b"x\n", "index.html": b"my own page\n"}
-    # goldens it wrote are rewritten; a file put among them by hand is refused and named (issue 19)
+    # goldens it wrote are rewritten; a file put among them by hand is refused and named
     g = tmp_path / "g"
     assert cli("verify", "--gallery", str(g), "--update")[0] == 0
     (g / "crank-3" / "final.svg").write_text("<svg/>")  # a golden that changed is still ours: rewritten

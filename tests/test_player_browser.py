@@ -42,7 +42,7 @@ def _expected_visible(fig, k: int) -> set[str]:
 
 
 def _must_show(fig, k: int) -> set[str]:
-    """What step k cannot do without (levels of detail, issue 16): step k's own objects and its inputs,
+    """What step k cannot do without (the levels of detail of the camera): step k's own objects and its inputs,
     every result and given, and the objects of every group still open at step k (its group at
     depth two, up to the end of that group's run); the helpers of finished groups may collapse.
     The last step shows the clean figure: every group finished, its results."""
@@ -247,7 +247,7 @@ LETTERS_JS = """() => Array.from(document.querySelectorAll('#figure text.lb[id$=
 
 
 def test_player_camera_keeps_letters_on_their_points(browser, tmp_path):
-    """Through a magnifying view a letter keeps its screen size and its place beside its point (issue 16)."""
+    """Through a magnifying view a letter keeps its screen size and its place beside its point."""
     import json
     import re
 

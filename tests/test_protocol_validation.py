@@ -1,4 +1,4 @@
-"""Hostile protocols and misuse of the library: a construct error naming the cause, never a traceback (issue 12).
+"""Hostile protocols and misuse of the library: a construct error naming the cause, never a traceback.
 
 A protocol is checked whole when it is loaded -- its format, every field of
 every step, each step against its operation's declared inputs, outputs and
@@ -502,7 +502,7 @@ def test_fuzzed_protocols_load_and_replay_or_fail_with_a_construct_error(small_c
 
 
 def test_divide_segment_refuses_more_parts_than_it_can_draw():
-    # Issue 12 (left open by the protocol pass): divide_segment(..., 10**9) ran until memory ran out.
+    # divide_segment(..., 10**9) once ran until memory ran out: refused before the first part is drawn.
     from construct import Builder
     from construct.kernel.errors import InvalidParameter
 

@@ -229,7 +229,7 @@ def test_update_rewrites_the_goldens_as_a_whole(goldens: Path, rebuild) -> None:
 
 
 def test_update_refuses_goldens_beside_a_file_it_did_not_write(goldens: Path, rebuild) -> None:
-    """Issue 19: a file put among the goldens is not ours; --update lists it and changes nothing."""
+    """A file put among the goldens is not ours; --update lists it and changes nothing."""
     from construct.kernel.errors import OutputError
 
     (goldens / "stale.md").write_text("not written by the builder\n")

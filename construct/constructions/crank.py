@@ -303,7 +303,7 @@ def inverse_tolerance(x: float) -> float:
 #: come from divide_segment: dividers stepped m times along a ray (after log2(m) halvings), so a
 #: point's error grows like m^2 eps.  Measured on the largest error of points 1..m-1 at L/r = 5:
 #: 0.0050 (m = 100), 0.0051 (200), 0.0046 (500), 0.0044 (1000); the bound is four times that.
-#: (Issue 19: at 1000 divisions 780 of 1001 checks failed by ~1.5e-12 -- the tolerance assumed points
+#: (At 1000 divisions 780 of 1001 checks failed by ~1.5e-12 -- the tolerance assumed points
 #: exact to 1e-15 of the stroke; the measured angle error is the division points' error carried
 #: through dw/dx, to within 1%.  The domain 1..1000 stands: the construction is honest there.)
 DIVISION_ERROR = 0.02

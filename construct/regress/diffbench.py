@@ -10,7 +10,7 @@ time per element.  Two kinds of drawing: every element with an ``id`` (as the fi
 are written), and anonymous elements of a few repeated looks (matched by
 content, then key, then geometry).
 
-Target (issue 12): the time per element flat -- within 2x from n to 10 n;
+Target: the time per element flat -- within 2x from n to 10 n;
 the matching used to be quadratic (435 s and 2.5 GB at a million elements,
 17 s at 100,000).  Nothing here is a test: the numbers depend on the machine.
 """

@@ -4,7 +4,7 @@ Run with ``construct bench --outputs``.  Each case runs the real command in a
 fresh interpreter (so start-up and imports count, as they do for a user) in a
 temporary folder, and reports the wall time, the CPU time of the process
 and its children (on a busy machine the wall time says more about the
-neighbours than about us) and the bytes written.  Targets (issue 9):
+neighbours than about us) and the bytes written.  Targets:
 
 * ``replay crank --parts 1440 --frames none`` within 5x the time of ``--parts 360``
   (the output is linear in the steps; 1440 parts are 4x the steps);

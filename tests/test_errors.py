@@ -115,3 +115,13 @@ def test_every_error_is_a_construct_error():
     for cls in (StepError, NoIntersection, RuleError, UnknownObject, WrongInput, MissingGiven, DuplicateName,
                 ProtocolFormatError):
         assert issubclass(cls, construct.ConstructError)
+
+
+@pytest.mark.parametrize("replayable, named", [(["rod_ratio"], "'rod_ratio'"), ("r", "'r'"), ([7], "7")])
+def test_replayable_names_only_givens(replayable, named):
+    """``replayable`` is a list of the builder's givens: a name that is no given (or a bare string, which would be
+    read letter by letter) is refused when the builder is made, not found missing at some later replay."""
+    with pytest.raises(construct.InvalidParameter) as info:
+        Builder("crank", givens={"r": 0.4}, replayable=replayable)
+    assert named in str(info.value)
+    assert Builder("crank", givens={"r": 0.4, "n": 50.0}, replayable=("n",)).protocol().givens == ("n",)

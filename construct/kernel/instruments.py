@@ -57,11 +57,25 @@ class Builder:
       the animation show it ("Kreis um 7 durch A" / "circle about 7 through
       A").  Left out, the method writes one from the names of its inputs.
     - *role*: what the object is in the figure, which decides how a style
-      draws it: ``"construction"`` (a thin helper line), ``"result"`` (what
-      the construction is for: heavy, always lettered) or ``"auxiliary"`` (a
-      helper a plate may leave out).
-    - *label*: the letter printed beside the object; objects without one are
-      drawn unlettered.
+      draws it: ``"construction"`` (the default: a thin line, drawn in every
+      step; a plate -- the historical style's final figure -- keeps it only
+      where it locates a result), ``"result"`` (what the construction is for:
+      heavy, always on the plate and lettered) or ``"auxiliary"`` (a helper a
+      plate leaves out).  A letter on a point the plate leaves out is not
+      lost in silence: drawing the plate warns
+      (:class:`~construct.kernel.errors.HiddenLabelWarning`).
+    - *label* (:meth:`given_point`), *labels* (``{name: letter}``, for the
+      methods that make several points: :meth:`intersect`, :meth:`pick`) and
+      :meth:`set_label` (any object, afterwards): the letter printed beside
+      a point; points without one are drawn unlettered (the teaching style
+      tags them with their name while they are in use).
+
+    What a builder holds, read but not to be changed by hand: ``construction``
+    (its name), ``givens`` and ``params`` (see :meth:`__init__`),
+    ``replayable``, ``steps`` (the recorded steps, each a :class:`~construct.kernel.protocol.Step`),
+    ``objects`` (name -> the object a step made; ``b[name]`` reads one) and
+    ``provenance`` (name -> how exact it is).  :meth:`record` is the one door
+    every method goes through; call it for an op that has no method of its own.
 
     Objects are passed to methods by name (the strings they return), so that a
     step is data -- tool, op, inputs, outputs, parameters, caption -- which
@@ -85,10 +99,25 @@ class Builder:
                  replayable: Sequence[str] | None = None):
         """Start an empty construction named *construction*.
 
-        *givens* are the numbers a replay may change (``{"r": 1.0, "rod_ratio": 5.0}``): steps refer to them
-        by name, e.g. ``given_point(..., unit="r")``.  *params* are stored with the protocol but fixed for
-        its steps (the number of parts, the division method).  *replayable* names the givens a replay may set
-        (default: all of them).
+        *givens* are the numbers a replay may change (``{"r": 1.0, "rod_ratio": 5.0}``), each a finite
+        number: steps refer to them by name (``given_point(..., unit="r")``, ``given_length(...,
+        product=("r",))``), so that :meth:`Protocol.replay <construct.kernel.protocol.Protocol.replay>`
+        with other values redraws the same steps.  *params* are stored with the protocol but fixed for its
+        steps (the number of parts, the division method; ``"plate"``, a list of regular expressions over
+        object names, says what the historical plate shows).  The protocol adds ``"givens"``,
+        ``"captions"`` and ``"group_titles"`` itself.  *replayable* names the givens a replay is meant to
+        change, a subset of *givens* (default: all of them); the protocol lists them as
+        :attr:`Protocol.givens <construct.kernel.protocol.Protocol.givens>`.
+
+        >>> b = Builder("crank", givens={"r": 0.4}, params={"parts": 12})
+        >>> _ = b.given_point("O", 0.0, 0.0); _ = b.given_point("A", 1.0, 0.0, unit="r")
+        >>> p = b.protocol()
+        >>> p.givens, p.params["parts"], b["A"], p.replay({"r": 2.0})["A"]
+        (('r',), 12, Point(0.4, 0.0), Point(2.0, 0.0))
+        >>> Builder("crank", givens={"r": 0.4}, replayable=["rod_ratio"])
+        Traceback (most recent call last):
+        ...
+        construct.kernel.errors.InvalidParameter: replayable names givens of 'crank'; 'rod_ratio' is none (it has r)
         """
         if not isinstance(construction, str) or not construction:
             raise InvalidParameter(f"a construction is named by a non-empty string, got {construction!r}")
@@ -98,6 +127,14 @@ class Builder:
             _check_given(key, value)
         if params is not None and not isinstance(params, Mapping):
             raise InvalidParameter(f"params are a mapping of names to values, got {_shown(params)}")
+        if replayable is not None:
+            # a bare string would be read letter by letter
+            if isinstance(replayable, str) or not isinstance(replayable, Sequence):
+                raise InvalidParameter(f"replayable is a list of names of givens, got {_shown(replayable)}")
+            for name in replayable:
+                if not isinstance(name, str) or name not in givens:
+                    raise InvalidParameter(f"replayable names givens of {construction!r}; {_shown(name)} is none "
+                                           f"(it has {', '.join(givens) or 'no givens'})")
         self.construction = construction
         self.givens = dict(givens)
         self.params = dict(params or {})

@@ -1,5 +1,5 @@
 #!/bin/sh
-# Install what tests/test_player_browser.py needs: Debian's chromium and the
+# Install what tests/test_render_player_browser.py needs: Debian's chromium and the
 # Playwright Python client, which drives that system browser (never
 # `playwright install`: no browser downloads).
 #

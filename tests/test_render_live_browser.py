@@ -1,4 +1,4 @@
-"""The live rod-ratio slider in a real browser (headless Chromium, as tests/test_player_browser.py drives it).
+"""The live rod-ratio slider in a real browser (headless Chromium, as tests/test_render_player_browser.py drives it).
 
 For several rod ratios the slider is moved and every interpolated coordinate
 the page shows is compared with a fresh build at that rod ratio (what

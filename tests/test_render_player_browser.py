@@ -105,7 +105,7 @@ def test_player_steps_show_exactly_the_steps_so_far(browser, player):
         assert page.get_attribute("#figure", "data-step") == str(k)
         _shows_step(page, fig, k)
         step = fig.protocol.steps[k - 1]
-        de, en = scene.caption(k)  # the caption the frames print: in the figure's letters (tests/test_look.py)
+        de, en = scene.caption(k)  # the caption the frames print: in the figure's letters (tests/test_gallery_look.py)
         assert page.inner_text("#cap-de") == f"Schritt {k}: {de}"
         assert page.inner_text("#cap-en") == f"Step {k}: {en}"
     # back again with the other arrow key, and the slider to a middle step

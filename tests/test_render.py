@@ -220,6 +220,18 @@ def test_plot_draws_a_polyline_segment_by_segment():
     assert hexagon and np.min(np.hypot(hexagon[0][:, 0] + 1.0, hexagon[0][:, 1])) < 1e-12
 
 
+def test_a_user_figure_without_parameters_is_captioned_by_its_name_alone():
+    """No empty brackets ("demo ()") under a figure whose protocol carries no parameters."""
+    from construct import Builder
+    from construct.render.output import figure_title, plate_caption
+
+    b = Builder("demo", givens={})
+    b.given_point("A", 0.0, 0.0)
+    fig = b.figure()
+    assert plate_caption(None, fig, 3) == ("Fig. 3. demo.", "demo")
+    assert figure_title(None, fig) == ("demo", "demo")
+
+
 def test_notebook_svg_is_embeddable(crank6):
     _, fig = crank6
     svg = figure_repr_svg(fig)

@@ -225,8 +225,8 @@ def plate_caption(construction: Construction | None, figure: Figure,
 
     if construction is None:
         fig = f"Fig. {number}." if number is not None else "Fig."
-        name = figure.protocol.construction
-        return (f"{fig} {name}.", f"{name} ({params_text(figure)})")
+        name, p = figure.protocol.construction, params_text(figure)
+        return (f"{fig} {name}.", f"{name} ({p})" if p else name)
     return caption(construction, figure, number)
 
 

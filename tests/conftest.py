@@ -30,7 +30,10 @@ class Run(NamedTuple):
 @pytest.fixture
 def cli(capsys) -> Callable[..., Run]:
     """Run ``construct ARGV...`` in-process (``construct.cli.main``) and return (code, out, err)."""
-    from construct.cli import main
+    # from the module, not the package: collecting construct/cli/main.py's doctests re-imports the module
+    # and rebinds the package attribute ``construct.cli.main`` to it, so ``from construct.cli import main``
+    # may then give the module instead of the function
+    from construct.cli.main import main
 
     def run(*argv: Any) -> Run:
         capsys.readouterr()  # what the test printed before is not the command's

@@ -10,7 +10,7 @@ import math
 import mpmath
 import pytest
 
-from construct.cli import main
+from construct.cli.main import main
 from construct.books.errata import CLASSES, all_errata
 from construct.books.baumann.errata import entries
 from construct.books.baumann import printed as seed004

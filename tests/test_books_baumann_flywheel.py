@@ -8,7 +8,7 @@ import mpmath
 import pytest
 
 from construct.books.baumann import flywheel as fw
-from construct.cli import main
+from construct.cli.main import main
 from construct.kernel.errors import InvalidParameter
 from construct.books.baumann import printed as seed004
 

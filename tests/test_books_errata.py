@@ -14,7 +14,7 @@ from collections import Counter
 import mpmath
 import pytest
 
-from construct.cli import main
+from construct.cli.main import main
 from construct.books.errata import CLASSES, WRONG, all_errata, classify, errata, read_printed
 from construct.kernel.errors import InvalidParameter
 from construct.books.anhang_ii import printed as seed000

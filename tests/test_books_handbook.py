@@ -9,7 +9,7 @@ import json
 import mpmath
 import pytest
 
-from construct.cli import main
+from construct.cli.main import main
 from construct.books.handbook.errata import entries
 from construct.books.handbook import printed as seed001
 

@@ -6,7 +6,7 @@ from pathlib import Path
 import mpmath
 import pytest
 
-from construct.cli import main
+from construct.cli.main import main
 from construct.books.errata import CLASSES, errata_of
 from construct.books.mechanics.errata import entries
 from construct.books.mechanics import printed as seed002

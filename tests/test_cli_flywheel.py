@@ -12,7 +12,7 @@ import pytest
 
 from construct.books.baumann import flywheel as fw
 from construct.books.baumann import printed as seed004
-from construct.cli import main
+from construct.cli.main import main
 
 mpmath.mp.dps = 30
 

@@ -10,7 +10,7 @@ x = (1 − cos θ + L/r − sqrt((L/r)² − sin² θ))/2 and the mass pressure 
 import mpmath
 import pytest
 
-from construct.cli import main
+from construct.cli.main import main
 from construct.constructions import get
 from construct.constructions.four_stroke import pressure, volume
 from construct.kernel.errors import InvalidParameter

@@ -11,7 +11,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from construct.constructions.checking import all_ok
-from construct.cli import main
+from construct.cli.main import main
 from construct.constructions import get
 from construct.constructions.crank import build_frame
 from construct.constructions.indicator import (

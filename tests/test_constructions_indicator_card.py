@@ -12,7 +12,7 @@ import os
 import mpmath
 import pytest
 
-from construct.cli import main
+from construct.cli.main import main
 from construct.constructions.indicator_card import CLOSE_TOLERANCE, load_indicator, parse_indicator_csv
 from construct.io.reading import read_bounded_text
 from construct.kernel.errors import InputFileError

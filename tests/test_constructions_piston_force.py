@@ -18,7 +18,7 @@ import mpmath
 import pytest
 
 from construct.constructions.checking import all_ok
-from construct.cli import main
+from construct.cli.main import main
 from construct.constructions import get
 from construct.constructions.crank import crank_angle, point_name
 from construct.constructions.piston_force import (

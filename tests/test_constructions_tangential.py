@@ -10,7 +10,7 @@ import mpmath
 import pytest
 
 from construct.constructions.checking import all_ok
-from construct.cli import main
+from construct.cli.main import main
 from construct.constructions import get
 from construct.constructions.tangential import (
     chord_shortfall,

@@ -12,7 +12,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from construct.cli import main
+from construct.cli.main import main
 from construct.constructions import get
 from construct.constructions.two_cranks import crank_angle, speed_radius, speeds, work_excess
 from construct.kernel.errors import InvalidParameter

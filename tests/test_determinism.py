@@ -22,7 +22,7 @@ from pathlib import Path
 _SCRIPT = r"""
 import contextlib, io, sys
 from pathlib import Path
-from construct.cli import main
+from construct.cli.main import main
 from construct.render import styles
 
 out = Path(sys.argv[1])

@@ -22,7 +22,7 @@ import construct
 import construct.gallery as gallery
 import construct.io.staging as staging
 import construct.regress.verify as verify_module
-from construct.cli import main
+from construct.cli.main import main
 from construct.io.manifest import MANIFEST_NAME
 from construct.io.staging import STAGING_PREFIX
 from construct.kernel.errors import (ConstructError, InputFileError, InvalidParameter, OutputError,

@@ -24,7 +24,7 @@ import pytest
 import construct
 from construct import (Builder, ConstructError, InvalidParameter, Point, Protocol, ProtocolFormatError, RuleError,
                        StepError, UnknownConstruction, UnknownObject, WrongInput)
-from construct.cli import main
+from construct.cli.main import main
 from construct.kernel import protocol_file
 from construct.kernel.ops import OPS, kind_of
 from construct.kernel.protocol_file import MAX_PROTOCOL_BYTES
@@ -521,7 +521,7 @@ def test_an_error_quotes_a_huge_multiline_caption_on_one_short_line(tmp_path, ca
     import json as _json
 
     import construct
-    from construct.cli import main
+    from construct.cli.main import main
 
     fig = construct.get("crank").figure(parts=6)
     doc = _json.loads(fig.protocol.to_json(fig.replay))

@@ -12,7 +12,7 @@ import json
 
 import pytest
 
-from construct.cli import main
+from construct.cli.main import main
 from construct.kernel.errors import ConstructError, ProtocolFormatError
 from construct.regress.change import Change
 from construct.regress.protocoldiff import diff_protocol

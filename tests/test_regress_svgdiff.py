@@ -15,7 +15,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from construct.cli import main
+from construct.cli.main import main
 from construct.kernel.errors import ConstructError
 from construct.regress.change import Change
 from construct.regress.svgdiff import SvgFormatError, diff_svg, parse_svg
@@ -477,7 +477,7 @@ def test_the_doubling_bomb_is_refused_by_diff_with_one_line_and_exit_2(tmp_path)
 VERIFY_WITH_A_COPIED_REBUILD = """
 import shutil, sys
 import construct.regress.verify as verify
-from construct.cli import main
+from construct.cli.main import main
 golden, rebuilt = sys.argv[1], sys.argv[2]
 verify.default_builder = lambda out: shutil.copytree(rebuilt, out)
 sys.exit(main(["verify", "--gallery", golden]))

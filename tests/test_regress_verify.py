@@ -20,7 +20,7 @@ from pathlib import Path
 import pytest
 
 import construct.regress.verify as verify_module
-from construct.cli import main
+from construct.cli.main import main
 from construct.constructions import get
 from construct.render.output import write_replay
 from construct.regress.verify import DEFAULT_TOLERANCE, locate, verify

@@ -100,7 +100,7 @@ def mass_forces_table(*, weight: float, rpm: float, crank_radius: float, rod_len
 
 def tangential_pressure_table(*, rod_ratio: float, parts: int = 18, method: str = "auto", revolution: bool = False,
                               cranks: str = "", machine: str = "single", indicator: Any = None,
-                              indicator_crank_side: Any = None) -> Table:
+                              indicator_crank_side: Any = None, force: str = "unit", kappa: Any = None) -> Table:
     """T/P' for a unit piston force at each crank position: OK/r measured on the construction (seed 004, Fig. 26).
 
     With *revolution*: over 0..360 degrees, a unit force in the direction of motion on each stroke, summed over
@@ -110,6 +110,9 @@ def tangential_pressure_table(*, rod_ratio: float, parts: int = 18, method: str 
     crank side from *indicator_crank_side* or the same card mirrored): a column ``T`` in kg/cm² of piston area,
     measured on the construction drawn with the card (the over-pressure read on the card's straightedge lines
     at the constructed piston position, times OK/r) -- every cylinder of the engine with this diagram.
+
+    With *force* ``"baumann"``: the column ``T`` (at) from Baumann's idealised diagram less the acceleration
+    force (his κ = *kappa*, default 8), on the return stroke the same diagram mirrored (his assumption).
     """
     from .constructions.tangential import ok_over_r, t_over_unit
 
@@ -119,6 +122,15 @@ def tangential_pressure_table(*, rod_ratio: float, parts: int = 18, method: str 
     engine = {"revolution": True, "cranks": cranks, "machine": machine} if revolution else \
         {"cranks": cranks, "machine": machine}
     card = None
+    if force not in ("unit", "baumann"):
+        raise InvalidParameter(f"--force must be unit or baumann, got {force!r}")
+    if force == "unit" and kappa is not None:
+        raise InvalidParameter("--kappa belongs to Baumann's force: add --force baumann")
+    if force == "baumann":
+        if indicator is not None:
+            raise InvalidParameter("--indicator gives the pressures itself: leave out --force baumann")
+        card = tp.figure(rod_ratio=rod_ratio, parts=parts, method=method, force="baumann",
+                         **({} if kappa is None else {"kappa": kappa}), **engine)
     if indicator is not None:
         card = tp.figure(rod_ratio=rod_ratio, parts=parts, method=method, indicator=str(indicator),
                          indicator_crank_side=str(indicator_crank_side or ""), **engine)

@@ -66,7 +66,7 @@ from .revolution import (MACHINES, REVOLUTION_PLATE, build_revolution, crank_shi
                          unroll_by_chords)
 
 __all__ = ["TANGENTIAL", "build_tangential", "tangential_checks", "ok_over_r", "t_over_unit", "free_force",
-           "model_t", "drawn_model", "unrolled_angle", "mean_height", "excess_area", "crossing_angles", "model_summary",
+           "model_t", "baumann_force", "return_free_force", "drawn_model", "unrolled_angle", "mean_height", "excess_area", "crossing_angles", "model_summary",
            "model_summary_sweep",
            "KAPPA", "FORCES"]
 
@@ -128,9 +128,6 @@ def _engine(revolution: Any, cranks: Any, machine: Any, force: str, parts: int) 
         if cranks or machine != "single":
             raise InvalidParameter("--cranks and --machine draw the whole revolution: add --revolution")
         return {}
-    if force == "baumann":
-        raise InvalidParameter("the revolution is built for a unit force (--force unit) or a digitised diagram "
-                               "(--indicator FILE.csv): Baumann's model on the return stroke is not built yet")
     m = MACHINES[machine]
     offsets = parse_cranks(cranks) if cranks else m.cranks
     if machine == "compound" and len(offsets) != 2:
@@ -178,6 +175,16 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
         vert = ctx.vert
         d = indicator_frame(b, base=axis, head=f["D0"], crank=f["D1"], prefix="ind.")
         scale = d.prefix + "v.crank"
+        # Baumann's assumption ("die Tangentialdruckdiagramme des Hin- und Rückganges gleich"): the crank side's
+        # diagram is the cover side's, drawn from the other dead centre (below the stroke line).
+        d_return = None
+        if engine:
+            with b.group("the crank side's diagram: the cover side's, mirrored (Baumann's assumption: the diagrams "
+                         "of the forward and return strokes are equal)",
+                         "Das Diagramm der Kurbelseite: das der Deckelseite gespiegelt (Baumanns Annahme: die "
+                         "Diagramme des Hin- und Rückganges gleich)"):
+                d_return = indicator_frame(b, base=axis, head=f["D1"], crank=f["D0"], prefix="rind.")
+        return_heights = {}
     elif force == "indicator":
         with b.group("perpendicular to the stroke through O", "Senkrechte zum Hub durch O"):
             vert = b.perpendicular_bisector("vert", f["D0"], f["D1"])
@@ -215,17 +222,15 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
                 H = b.intersect(f"H{k}", axis, kH, rule=("toward", f["D0"], f["D1"]), de="H: OH = OK", en="H: OH = OK")
                 h = b.erect_perpendicular(f"h{k}", H, axis, O)
                 if force == "baumann":
-                    ray = b.line(f"ray{k}", O, _free_force_mark(b, f, ctx, d, scale, k, P, n),
-                                 de=f"Strahl O–M{k}", en=f"ray O-M{k}")
+                    marks = _free_force_mark(b, f, ctx, d, scale, k, P, n, d_return)
+                    ray = b.line(f"ray{k}", O, marks[0], de=f"Strahl O–M{k}", en=f"ray O-M{k}")
+                    if engine:
+                        return_heights[k] = _return_height(b, O, marks[1], h, k)
                 elif force == "indicator":
                     marks = _card_marks(b, f, cover, crank, scale, k, bool(engine))
                     ray = b.line(f"ray{k}", O, marks[0], de=f"Strahl O–M{k}", en=f"ray O-M{k}")
                     if engine:
-                        rray = b.line(f"rray{k}", O, marks[1], de=f"Strahl O–M′{k} (Rückgang)",
-                                      en=f"ray O-M'{k} (return stroke)")
-                        rQ = b.intersect(f"rQ{k}", rray, h, rule=("only",), de=f"rQ{k}: P′·OK/r im Rückgang",
-                                         en=f"rQ{k}: P'·OK/r on the return stroke")
-                        return_heights[k] = (H, rQ)
+                        return_heights[k] = _return_height(b, O, marks[1], h, k)
                 else:
                     ray = unit_ray
                 Q = b.intersect(f"Q{k}", ray, h, rule=("only",), de=f"Q{k}: P′·OK/r (Strahlensatz)",
@@ -233,7 +238,7 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
                 heights[k] = (H, Q)
     if engine:
         build_revolution(b, f, points, n, heights, engine["shifts"], engine["cylinders"],
-                         return_heights if force == "indicator" else None)
+                         return_heights if force != "unit" else None)
     else:
         _unrolled(b, f, points, n, heights)
     proto = b.protocol()
@@ -266,8 +271,25 @@ def _card_marks(b: Builder, f: Mapping[str, str], cover: Any, crank: Any, scale:
         return out[0], out[1]
 
 
-def _free_force_mark(b: Builder, f: Mapping[str, str], ctx: Any, d: Any, scale: str, k: int, P: str, n: int) -> str:
-    """P' at crank position k: over-pressure (indicator) less the acceleration force, marked on the r-scale line."""
+def _return_height(b: Builder, O: str, mark: str, h: str, k: int) -> tuple[str, str]:
+    """The return stroke's P'·OK/r at the mirrored crank point of k: the ray O–M′k meets the same ordinate h_k
+    (the rod line of the mirrored point meets the perpendicular through O at K's mirror image: OK is the same)."""
+    rray = b.line(f"rray{k}", O, mark, de=f"Strahl O–M′{k} (Rückgang)", en=f"ray O-M'{k} (return stroke)")
+    rQ = b.intersect(f"rQ{k}", rray, h, rule=("only",), de=f"rQ{k}: P′·OK/r im Rückgang",
+                     en=f"rQ{k}: P'·OK/r on the return stroke")
+    return f"H{k}", rQ
+
+
+def _free_force_mark(b: Builder, f: Mapping[str, str], ctx: Any, d: Any, scale: str, k: int, P: str, n: int,
+                     d_return: Any = None) -> tuple[str, str | None]:
+    """P' at crank position k: over-pressure (indicator) less the acceleration force, marked on the r-scale line.
+
+    With *d_return* (the crank side's diagram, drawn from the other dead centre below the stroke line) also
+    the return stroke's P' at the mirrored crank point 360° − ω_k: the piston stands where it stood at k and
+    its acceleration is the same, so the mass force along the (reversed) motion changes sign -- (298) with the
+    minus sign.  Drawn, the crank side's pressures point down, and "less B along the motion" is the same
+    drawn shift as on the forward stroke: the same compass step from its steam point.  Returns (M_k, M′_k).
+    """
     X = f"X{k}"
     with b.group(f"free piston force at {k}", f"freie Kolbenkraft bei {k}"):
         o = b.erect_perpendicular(f"o{k}", X, f["axis"], f["O"])
@@ -282,8 +304,24 @@ def _free_force_mark(b: Builder, f: Mapping[str, str], ctx: Any, d: Any, scale: 
                         de=f"F{k}: Rückdruck–F{k} = P′ (freie Kolbenkraft)", en=f"F{k}: back line to F{k} = P' (free force)")
         kM = b.circle_segment(f"M{k}.k", f["D1"], R, F, de="P′ auf die Senkrechte in B getragen",
                               en="P' carried to the vertical through B")
-        return b.intersect(f"M{k}", scale, kM, rule=("toward", R, F), de=f"M{k}: P′ über B (oben positiv)",
-                           en=f"M{k}: P' above B (up = positive)")
+        M = b.intersect(f"M{k}", scale, kM, rule=("toward", R, F), de=f"M{k}: P′ über B (oben positiv)",
+                        en=f"M{k}: P' above B (up = positive)")
+        if d_return is None:
+            return M, None
+    with b.group(f"free piston force on the return stroke at {k}", f"freie Kolbenkraft im Rückgang bei {k}"):
+        pts = pressures_at(b, d_return, o, f"r{k}", envelope=True)
+        E, R = pts["steam"], pts["back"]
+        kF = b.circle_segment(f"rF{k}.k", E, ctx.gf.origin, V,
+                              de="Beschleunigungsdruck mit umgekehrtem Vorzeichen an der Dampflinie der Kurbelseite",
+                              en="acceleration force, its sign reversed, at the crank side's steam line")
+        F = b.intersect(f"rF{k}", o, kF, rule=("left", ctx.gf.origin, V), role="result",
+                        de=f"rF{k}: Rückdruck–rF{k} = P′ im Rückgang", en=f"rF{k}: back line to rF{k} = P' (return)")
+        kM = b.circle_segment(f"rM{k}.k", f["D1"], R, F, de="P′ des Rückgangs auf die Senkrechte in B getragen",
+                              en="the return stroke's P' carried to the vertical through B")
+        # the crank side's diagram stands below the stroke line: along the return motion is R -> F pointing down
+        rM = b.intersect(f"rM{k}", scale, kM, rule=("toward", F, R), de=f"rM{k}: P′ des Rückgangs über B (oben positiv)",
+                         en=f"rM{k}: the return stroke's P' above B (up = positive)")
+        return M, rM
 
 
 def _unrolled(b: Builder, f: Mapping[str, str], points: list[str], n: int, heights: Mapping[int, tuple[str, str]]) -> None:
@@ -410,6 +448,11 @@ def free_force(fig: Figure, k: int) -> float:
     return _up(fig, f"M{k}", "D1") / fig.replay.givens["pressure_unit"]
 
 
+def return_free_force(fig: Figure, k: int) -> float:
+    """P' on the return stroke at the mirrored crank point of k, in at: the height of M′_k over B."""
+    return _up(fig, f"rM{k}", "D1") / fig.replay.givens["pressure_unit"]
+
+
 def unrolled_angle(fig: Figure, point: str) -> float:
     """The crank angle of a point of the unrolled circle, read in proportion to the drawn length U0..Un."""
     n = fig.params["parts"]
@@ -465,6 +508,41 @@ def model_force(w: float, g: Mapping[str, float], force: str) -> float:
     x = piston_fraction(w, lam)
     return (model_steam_pressure(x, g) - model_back_pressure(x, g)
             - g["pressure_ratio"] * (math.cos(w) + lam * math.cos(2.0 * w)))
+
+
+def baumann_force(g: Mapping[str, float], lam: float) -> Any:
+    """P' (at) along the motion over the whole turn, Baumann's model on both strokes (arrays of crank angles).
+
+    Forward: steam(x) − back(x) − c(cos ω + λ cos 2ω).  Return (his assumption: the crank side's diagram is
+    the cover side's): the over-pressure at the distance 1 − x from the crank-end dead centre, and the mass
+    force along the reversed motion, + c(cos ω + λ cos 2ω) -- eq. (298) with the minus sign, counted from
+    the crank-end dead centre.  Written here from the formulas, not from the figure.
+
+    >>> g = {"filling": 0.1, "clearance": 0.05, "admission": 7.85, "back_pressure": 0.15, "compression": 0.3,
+    ...      "pressure_ratio": 0.0}
+    >>> g["pressure_ratio"] = 0.9
+    >>> long_rod = baumann_force(g, 1e-9)      # infinite rod: the return stroke repeats the forward one
+    >>> bool(abs(long_rod(math.pi + 1.0) - long_rod(1.0)) < 1e-9)
+    True
+    >>> f = baumann_force(g, 0.2)              # L/r = 5: the rod's term changes sign with the stroke
+    >>> round(float(f(math.pi + 1.0) - f(1.0)), 3) != 0.0
+    True
+    """
+    s1, s0, P, P0, s3, c = (g["filling"], g["clearance"], g["admission"], g["back_pressure"], g["compression"],
+                            g["pressure_ratio"])
+
+    def over(x: Any) -> Any:
+        steam = np.where(x <= s1, P + P0, (P + P0) * (s1 + s0) / (x + s0))
+        back = np.where(x <= 1.0 - s3, P0, P0 * (s3 + s0) / (1.0 - x + s0))
+        return steam - back
+
+    def force(w: Any) -> Any:
+        w = np.asarray(w, dtype=float)
+        x = 0.5 * (1.0 - np.cos(w) + (1.0 - np.sqrt(1.0 - (lam * np.sin(w)) ** 2)) / lam)
+        mass = c * (np.cos(w) + lam * np.cos(2.0 * w))
+        return np.where(np.mod(w, 2.0 * math.pi) <= math.pi, over(x) - mass, over(1.0 - x) + mass)
+
+    return force
 
 
 def model_t(w: float, g: Mapping[str, float], force: str) -> float:
@@ -666,9 +744,16 @@ def tangential_checks(fig: Figure, model: Mapping[str, float] | None = None) -> 
             checks.append(Check(f"T/P at {k}", t_over_unit(fig, k), factor(w, lam), EUCLIDEAN_TOLERANCE,
                                 "proportional angle with P' = r: Euclidean", "P"))
     if fig.params.get("revolution"):
-        if force == "indicator":
-            return checks + revolution_checks(fig, card_force(g, lam), scale / g["pressure_unit"])
-        return checks + revolution_checks(fig)
+        if force == "unit":
+            return checks + revolution_checks(fig)
+        whole = card_force(g, lam) if force == "indicator" else baumann_force(g, lam)
+        tol = 10 * EUCLIDEAN_TOLERANCE * scale / g["pressure_unit"]
+        for k in range(1, n):  # the return stroke's P' at the mirrored crank point 360° − ω_k
+            w = 2.0 * math.pi - crank_angle(fig, point_name(fig, k))
+            checks.append(Check(f"P' on the return stroke at {2 * n - k}", return_free_force(fig, k),
+                                float(whole(w)), tol, "the crank side's lines met by the ordinate, compass: "
+                                "Euclidean, read in at", "at"))
+        return checks + revolution_checks(fig, whole, scale / g["pressure_unit"])
     r = g["r"]
     prov = made_by[f"U{n}"].provenance
     length = fig.replay["U0"].distance(fig.replay[f"U{n}"])

@@ -50,6 +50,11 @@ def add_arguments(p) -> None:
                    help="tangential-pressure --revolution: single (default), tandem, compound")
     p.add_argument("--indicator", metavar="FILE.csv",
                    help="tangential-pressure, mass-forces: a digitised indicator diagram of the cover side (x,p)")
+    p.add_argument("--force", default="unit", choices=("unit", "baumann"), metavar="unit|baumann",
+                   help="tangential-pressure: a unit piston force (default), or Baumann's idealised diagram less "
+                        "the acceleration force (a column T in at; return stroke: the diagram mirrored)")
+    p.add_argument("--kappa", type=number, metavar="kappa",
+                   help="tangential-pressure --force baumann: kappa = P/B_max, 0.1 .. 10000 (default 8; Baumann's 8 and 2)")
     p.add_argument("--indicator-crank-side", metavar="FILE.csv",
                    help="the crank side's diagram (default: the cover side's mirrored, Baumann's assumption)")
 
@@ -82,6 +87,8 @@ def run(args) -> int:
         raise InvalidParameter(f"unknown table {args.table!r}; choose one of {', '.join(TABLES)}")
     if (args.indicator or args.indicator_crank_side) and args.table not in ("tangential-pressure", "mass-forces"):
         raise InvalidParameter(f"--indicator goes with the tables tangential-pressure and mass-forces, not {args.table}")
+    if args.table != "tangential-pressure" and (args.force != "unit" or args.kappa is not None):
+        raise InvalidParameter(f"--force and --kappa go with the table tangential-pressure, not {args.table}")
     if args.revolution and args.table not in ("tangential-pressure", "mass-forces"):
         raise InvalidParameter(f"--revolution goes with the tables tangential-pressure and mass-forces, not {args.table}")
     if args.table == "piston-path":
@@ -106,7 +113,8 @@ def run(args) -> int:
     elif args.table == "tangential-pressure":
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args), parts=args.parts, method=args.method,
                                         revolution=args.revolution, cranks=args.cranks, machine=args.machine,
-                                        indicator=args.indicator, indicator_crank_side=args.indicator_crank_side)
+                                        indicator=args.indicator, indicator_crank_side=args.indicator_crank_side,
+                                        force=args.force, kappa=args.kappa)
     elif args.table == "flywheel-coefficients":
         cols, rows = TABLES[args.table](kz=args.kz, v=args.v)
     elif args.table == "speed-fluctuation":
@@ -118,6 +126,10 @@ def run(args) -> int:
     else:
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args))
     text = format_table(cols, rows, args.format)
+    if args.force == "baumann" and args.table == "tangential-pressure":
+        print("construct: note: T from Baumann's idealised diagram"
+              + ("; return stroke: the same diagram mirrored (his assumption: the diagrams of the forward and "
+                 "return strokes are equal)" if args.revolution else ""), file=sys.stderr)
     if args.indicator is not None:
         from ...tables import indicator_note
 

@@ -120,3 +120,113 @@ def test_table_force_refusals(capsys, args, says):
     assert main(["table", "tangential-pressure", "--rod-ratio", "5", *args]) == 2
     out, err = capsys.readouterr()
     assert out == "" and says in err and len(err.strip().splitlines()) == 1
+
+
+# --------------------------------------------------------------------------
+# 2. Compound and tandem engines, each cylinder with its own diagram.
+# --------------------------------------------------------------------------
+
+#: High pressure: steam line straight from 8 at to 2 at, exhaust at 1 at.  Low pressure: 3 at to 1.5 at,
+#: exhaust at 0.2 at.  Both crank sides the cover side's mirrored.
+HP_CARD = "x,p\n0,8\n0.5,5\n1,2\n1,1\n0.5,1\n0,1\n0,8\n"
+LP_CARD = "x,p\n0,3\n0.5,2.25\n1,1.5\n1,0.2\n0.5,0.2\n0,0.2\n0,3\n"
+
+
+def straight_over_mp(w, K, top, slope, exhaust):
+    x = piston_mp(mpmath.mpf(w), K)
+    if mpmath.sin(w) >= 0:
+        return top - slope * x - exhaust
+    return top - slope * (1 - x) - exhaust
+
+
+def compound_t_mp(w, K, ratio, lp_offset=90):
+    """Σ T: the high-pressure crank at w, the low-pressure crank lp_offset degrees ahead, its force × ratio."""
+    w = mpmath.mpf(w)
+    wl = w + mpmath.radians(lp_offset)
+    hp = unit_t_mp(w, K) * straight_over_mp(w, K, 8, 6, 1)
+    lp = unit_t_mp(wl, K) * straight_over_mp(wl, K, 3, 1.5, 0.2)
+    return hp + ratio * lp
+
+
+def test_compound_with_two_cards_table_in_kg(tmp_path, capsys):
+    hp, lp = tmp_path / "hp.csv", tmp_path / "lp.csv"
+    hp.write_text(HP_CARD)
+    lp.write_text(LP_CARD)
+    assert main(["table", "tangential-pressure", "--rod-ratio", "5", "--parts", "6", "--method", "exact",
+                 "--revolution", "--machine", "compound", "--indicator", str(hp), "--indicator-lp", str(lp),
+                 "--area-ratio", "2.5", "--piston-area", "1546.25", "--format", "csv"]) == 0
+    out, err = capsys.readouterr()
+    assert "low-pressure cylinder from its own" in err
+    lines = out.strip().splitlines()
+    assert lines[0] == "crank_angle_deg,T_over_P,T,T_kg"
+    for line in lines[1:]:
+        deg, _, t, kg = map(float, line.split(","))
+        expected = float(compound_t_mp(math.radians(deg), 5, 2.5))
+        if round(deg) % 180 == 0:  # the high-pressure crank at a dead centre: only the low-pressure one pushes
+            expected = float(2.5 * unit_t_mp(math.radians(deg + 90), 5)
+                             * straight_over_mp(math.radians(deg + 90), 5, 3, 1.5, 0.2))
+        assert t == pytest.approx(expected, abs=1e-9)
+        assert kg == pytest.approx(expected * 1546.25, abs=1e-6)
+
+
+def test_compound_cards_figure_against_an_independent_summation(tmp_path):
+    hp, lp = tmp_path / "hp.csv", tmp_path / "lp.csv"
+    hp.write_text(HP_CARD)
+    lp.write_text(LP_CARD)
+    fig = TP.figure(revolution=True, machine="compound", parts=18, rod_ratio=5.0, indicator=str(hp),
+                    indicator_lp=str(lp), area_ratio=2.5)
+    assert all(c.ok for c in fig.checks())
+    mean, work = swing(lambda w: compound_t_mp(w, 5, 2.5))
+    assert revolution_mean(fig) == pytest.approx(mean, rel=1e-3)
+    assert excess_work(fig) == pytest.approx(work, rel=0.02)
+    # the low-pressure diagram matters: with the high-pressure card in both cylinders the sum differs
+    same = TP.figure(revolution=True, machine="compound", parts=18, rod_ratio=5.0, indicator=str(hp))
+    assert abs(revolution_mean(same) - revolution_mean(fig)) > 0.5
+
+
+@pytest.mark.parametrize("machine, lp_offset", [("compound", 90), ("tandem", 0)])
+def test_baumann_low_pressure_cylinder_of_its_own(machine, lp_offset):
+    """Each cylinder its own idealised diagram: the high-pressure one Baumann's, the low-pressure one with its own
+    filling, pressures, κ, and piston 2.5 times as large; the sum against mpmath at every ordinate."""
+    K, ratio = 5.0, 2.5
+    lp = dict(s1=0.35, s0=S0, adm=1.6, back=0.15, s3=0.30)
+    fig = TP.figure(force="baumann", revolution=True, machine=machine, parts=18, rod_ratio=K)
+    n = 18
+
+    def total(w):
+        wl = mpmath.mpf(w) + mpmath.radians(lp_offset)
+        return (unit_t_mp(w, K) * baumann_force_mp(w, K, 8.0)
+                + ratio * unit_t_mp(wl, K) * baumann_force_mp(wl, K, 8.0, **lp))
+
+    for j in range(2 * n + 1):
+        w = math.pi * j / n
+        hp_dead = j in (0, n, 2 * n)
+        lp_dead = (j + lp_offset // 10) % n == 0
+        expected = 0.0 if hp_dead else float(unit_t_mp(w, K) * baumann_force_mp(w, K, 8.0))
+        if not lp_dead:
+            wl = w + math.radians(lp_offset)
+            expected += float(ratio * unit_t_mp(wl, K) * baumann_force_mp(wl, K, 8.0, **lp))
+        assert revolution_ordinate(fig, j) == pytest.approx(expected, abs=1e-4), j
+    mean, work = swing(total)
+    assert revolution_mean(fig) == pytest.approx(mean, rel=1e-3)
+    assert excess_work(fig) == pytest.approx(work, rel=0.02)
+    assert all(c.ok for c in fig.checks())
+
+
+@pytest.mark.parametrize("args, says", [
+    (["--indicator-lp", "LP"], "--indicator"),
+    (["--indicator", "HP", "--indicator-lp", "LP"], "compound or tandem"),
+    (["--indicator", "HP", "--indicator-lp", "LP", "--revolution", "--machine", "compound", "--area-ratio", "50"],
+     "area ratio"),
+    (["--indicator", "HP", "--indicator-lp", "BROKEN", "--revolution", "--machine", "compound"], "row"),
+    (["--piston-area", "100"], "--piston-area"),
+    (["--force", "baumann", "--piston-area", "-3"], "piston area"),
+])
+def test_compound_refusals(tmp_path, capsys, args, says):
+    files = {"HP": HP_CARD, "LP": LP_CARD, "BROKEN": "x,p\n0,1\n0.5,zwei\n1,1\n0,1\n"}
+    for name, text in files.items():
+        (tmp_path / name).write_text(text)
+    args = [str(tmp_path / a) if a in files else a for a in args]
+    assert main(["table", "tangential-pressure", "--rod-ratio", "5", "--parts", "6", *args]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and says in err and len(err.strip().splitlines()) == 1

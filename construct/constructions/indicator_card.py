@@ -360,28 +360,31 @@ def draw_card(b: Any, card: IndicatorCard, *, prefix: str, head: str, crank: str
     return DrawnCard(out[0], out[1])
 
 
-def _card_key(givens: Mapping[str, float]) -> tuple:
-    return tuple(sorted((k, float(v)) for k, v in givens.items() if k.startswith(("card.", "crank."))))
+def _card_key(givens: Mapping[str, float], prefix: str = "") -> tuple:
+    return (prefix,) + tuple(sorted((k, float(v)) for k, v in givens.items()
+                                    if k.startswith((f"{prefix}card.", f"{prefix}crank."))))
 
 
 _CARDS: dict[tuple, tuple[IndicatorCard, IndicatorCard]] = {}
 
 
-def card_pair(givens: Mapping[str, float]) -> tuple[IndicatorCard, IndicatorCard]:
-    """(cover side, crank side) from a figure's givens: the crank side's own card, or the cover side's mirrored."""
-    key = _card_key(givens)
+def card_pair(givens: Mapping[str, float], prefix: str = "") -> tuple[IndicatorCard, IndicatorCard]:
+    """(cover side, crank side) from a figure's givens: the crank side's own card, or the cover side's mirrored.
+
+    *prefix* names another cylinder's cards (``lp.``: a compound engine's low-pressure cylinder)."""
+    key = _card_key(givens, prefix)
     if key not in _CARDS:
         if len(_CARDS) > 64:  # a small memo: the checks read the cards for every model value
             _CARDS.clear()
-        cover = card_from_givens(givens, "card.", "(cover side) in the givens")
-        crank = card_from_givens(givens, "crank.", "(crank side) in the givens") or cover.mirrored()
+        cover = card_from_givens(givens, f"{prefix}card.", f"{prefix}(cover side) in the givens")
+        crank = card_from_givens(givens, f"{prefix}crank.", f"{prefix}(crank side) in the givens") or cover.mirrored()
         _CARDS[key] = (cover, crank)
     return _CARDS[key]
 
 
-def card_force(givens: Mapping[str, float], lam: float) -> Any:
+def card_force(givens: Mapping[str, float], lam: float, prefix: str = "") -> Any:
     """The over-pressure (at) along the motion as a function of the crank angle over the whole turn (arrays)."""
-    cover, crank = card_pair(givens)
+    cover, crank = card_pair(givens, prefix)
 
     def force(w: Any) -> Any:
         w = np.asarray(w, dtype=float)

@@ -516,7 +516,7 @@ def tangential_plate(fig: Figure) -> dict:
     R = fig.replay
     n = fig.params["parts"]
     if fig.params.get("revolution"):  # a revolution's diagrams are lettered by their own steps (each crank, the sum)
-        return {"looks": {}, "furniture": []}
+        return {"looks": {}, "furniture": _cylinder_letters(fig)}
     U0, Un, M0, Mn = R["U0"], R[f"U{n}"], R["M0"], R["Mn"]
     span = abs(Un[0] - U0[0])
     d = 0.018 * span
@@ -535,6 +535,31 @@ def tangential_plate(fig: Figure) -> dict:
         furniture.append({"kind": "lettering", "at": (P[0], U0[1] - 2.2 * d), "text": text})
     looks = {"A1": "unlettered", "A2": "unlettered", "tcurve": "heavy", "mean": "medium", "tbase": "medium"}
     return {"looks": looks, "furniture": furniture}
+
+
+def _cylinder_letters(fig: Figure) -> list[dict]:
+    """HD and ND at a compound's (or tandem's) two cylinder curves, each where it stands clearest of the others."""
+    if not fig.params.get("low_pressure"):
+        return []
+    R = fig.replay
+    n = fig.params["parts"]
+    m = 2 * n
+    d = 0.018 * abs(R[f"U{m}"][0] - R["U0"][0])
+    out = []
+    for i, text in ((0, "HD"), (1, "ND")):
+        best, spot = -1.0, None
+        for j in range(2, m - 1):
+            if f"c{i}.{j}" not in R or f"S{j}" not in R:
+                continue
+            x, y = R[f"c{i}.{j}"]
+            others = [R[f"S{j}"][1], R[f"U{j}"][1], R["M0"][1]] + [R[f"c{o}.{j}"][1] for o in (0, 1)
+                                                                    if o != i and f"c{o}.{j}" in R]
+            clear = min(abs(y - v) for v in others)
+            if clear > best:
+                best, spot = clear, (x, y)
+        if spot is not None:
+            out.append({"kind": "lettering", "at": (spot[0], spot[1] - 1.4 * d), "text": text})
+    return out
 
 
 # --------------------------------------------------------------------------
@@ -937,8 +962,10 @@ TANGENTIAL = register(Construction(
               "indicator": "", "indicator_crank_side": "", "indicator_lp": "", "indicator_lp_crank_side": "",
               **LOW_PRESSURE},
     book_params=({"rod_ratio": 5.0, "parts": 18, "kappa": 8.0}, {"rod_ratio": 5.0, "parts": 18, "kappa": 2.0},
-                 # a compound engine, cranks at 90 degrees: the summed diagram over a revolution and its excess areas
-                 {"rod_ratio": 5.0, "parts": 18, "force": "unit", "revolution": True, "machine": "compound"}),
+                 # a compound engine, cranks at 90 degrees, each cylinder with its own diagram (Baumann's for the
+                 # high-pressure one, the low-pressure one's own, its piston 2.5 times as large): the summed
+                 # diagram over a revolution and its excess areas
+                 {"rod_ratio": 5.0, "parts": 18, "revolution": True, "machine": "compound"}),
     structural=("parts", "method", "force", "filling", "compression", "revolution", "cranks", "machine", "indicator",
                 "indicator_crank_side", "indicator_lp", "indicator_lp_crank_side", "lp_filling", "lp_compression"),
     extra={"plate": tangential_plate, "help": {

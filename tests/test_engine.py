@@ -230,3 +230,37 @@ def test_compound_refusals(tmp_path, capsys, args, says):
     assert main(["table", "tangential-pressure", "--rod-ratio", "5", "--parts", "6", *args]) == 2
     out, err = capsys.readouterr()
     assert out == "" and says in err and len(err.strip().splitlines()) == 1
+
+
+# --------------------------------------------------------------------------
+# 3. J from a card.
+# --------------------------------------------------------------------------
+
+#: Cover side: admission to 0.2, expansion to 1.6 at; exhaust at 1.1 at, compression from 0.4 back to 6 at.
+#: The crank side (mirrored) compresses to 6 at near the crank end: the forward force changes sign there.
+COMPRESSING = "x,p\n0,8\n0.2,8\n0.6,3\n1,1.6\n1,1.1\n0.4,1.1\n0.1,3\n0,6\n0,8\n"
+
+
+def test_j_from_a_card_against_a_root_of_its_straight_lines(tmp_path):
+    from construct.constructions.piston_force import abscissa, piston_force
+    import numpy as np
+
+    card = tmp_path / "card.csv"
+    card.write_text(COMPRESSING)
+    fig = get("piston-force").figure(indicator=str(card))
+    # independent: the cover side's forward line and the mirrored return line, straight between the points
+    cover = lambda x: np.interp(x, [0, 0.2, 0.6, 1], [8, 8, 3, 1.6])  # noqa: E731
+    crank = lambda x: np.interp(1 - x, [0, 0.1, 0.4, 1], [6, 3, 1.1, 1.1])  # noqa: E731
+    root = mpmath.findroot(lambda x: float(cover(float(x)) - crank(float(x))), (0.6, 0.9), solver="bisect")
+    assert abscissa(fig, "J") == pytest.approx(float(root), abs=1e-10)
+    assert abscissa(fig, "J") == pytest.approx(0.6 + 1.9 / (3.5 + 1.9 / 0.3), abs=1e-12)  # the two chords by hand
+    assert all(c.ok for c in fig.checks())
+    assert any(c.name == "pressure change J (abscissa)" for c in fig.checks())
+
+
+def test_no_j_where_the_card_force_keeps_its_sign(tmp_path):
+    card = tmp_path / "card.csv"
+    card.write_text(HP_CARD)
+    fig = get("piston-force").figure(indicator=str(card))
+    assert "J" not in fig.replay
+    assert all(c.ok for c in fig.checks())

@@ -264,3 +264,97 @@ def test_no_j_where_the_card_force_keeps_its_sign(tmp_path):
     fig = get("piston-force").figure(indicator=str(card))
     assert "J" not in fig.replay
     assert all(c.ok for c in fig.checks())
+
+
+# --------------------------------------------------------------------------
+# 4. The flywheel from indicator cards.
+# --------------------------------------------------------------------------
+
+
+def card_t_numpy(w, K, cover_fwd, crank_fwd, cover_back, crank_back):
+    """T per unit piston area (at) over a revolution from straight-line cards: numpy, written here afresh."""
+    import numpy as np
+
+    lam = 1.0 / K
+    x = 0.5 * (1 - np.cos(w) + (1 - np.sqrt(1 - (lam * np.sin(w)) ** 2)) / lam)
+    fwd = np.interp(x, *cover_fwd) - np.interp(x, *crank_fwd)
+    back = np.interp(x, *crank_back) - np.interp(x, *cover_back)
+    over = np.where(np.sin(w) >= 0, fwd, back)
+    beta = np.arcsin(lam * np.sin(w))
+    return over * np.abs(np.sin(w + beta) / np.cos(beta))
+
+
+def numpy_swing(t, w):
+    import numpy as np
+
+    mean = np.trapezoid(t, w) / (2 * math.pi) if hasattr(np, "trapezoid") else np.trapz(t, w) / (2 * math.pi)
+    run = np.concatenate(([0.0], np.cumsum((t[1:] + t[:-1] - 2 * mean) * 0.5 * np.diff(w))))
+    return run.max() - run.min()
+
+
+def test_flywheel_from_a_card_against_numpy_integration(tmp_path, capsys):
+    import json
+
+    import numpy as np
+
+    card = tmp_path / "card.csv"
+    card.write_text(COMPRESSING)
+    assert main(["flywheel", "--indicator", str(card), "--rod-ratio", "5", "--piston-area", "1546.25",
+                 "--crank-radius", "0.4", "--rpm", "50", "--fluctuation", "1/80", "--diameter", "5",
+                 "--format", "json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    # the cover side's lines; the crank side's are them mirrored (x -> 1 - x, the strokes exchanged)
+    cover_fwd = ([0, 0.2, 0.6, 1], [8, 8, 3, 1.6])
+    cover_back = ([0, 0.1, 0.4, 1], [6, 3, 1.1, 1.1])
+    crank_fwd = ([0, 0.6, 0.9, 1], [1.1, 1.1, 3, 6])
+    crank_back = ([0, 0.4, 0.8, 1], [1.6, 3, 8, 8])
+    w = np.linspace(0, 2 * math.pi, 400001)
+    swing = numpy_swing(card_t_numpy(w, 5.0, cover_fwd, crank_fwd, cover_back, crank_back), w)
+    E = swing * 1546.25 * 0.4
+    # drawn: 37 ordinates over the revolution, the French curve with corners at the dead centres
+    assert rec["excess_work"] == pytest.approx(E, rel=0.02)
+    v = math.pi * 5 * 50 / 60
+    assert rec["rim_weight"] == pytest.approx(9.81 * rec["excess_work"] / (v * v / 80), rel=1e-12)
+    assert "mirrored" in rec["excess_source"]
+
+
+def test_flywheel_of_a_compound_from_two_cards(tmp_path, capsys):
+    import json
+
+    import numpy as np
+
+    hp, lp = tmp_path / "hp.csv", tmp_path / "lp.csv"
+    hp.write_text(HP_CARD)
+    lp.write_text(LP_CARD)
+    assert main(["flywheel", "--indicator", str(hp), "--indicator-lp", str(lp), "--machine", "compound",
+                 "--area-ratio", "2.5", "--rod-ratio", "5", "--piston-area", "1000", "--crank-radius", "0.5",
+                 "--rpm", "80", "--fluctuation", "1/100", "--diameter", "4", "--format", "json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    w = np.linspace(0, 2 * math.pi, 400001)
+    wl = w + math.pi / 2
+    hp_t = card_t_numpy(w, 5.0, ([0, 1], [8, 2]), ([0, 1], [1, 1]), ([0, 1], [1, 1]), ([0, 1], [2, 8]))
+    lp_t = card_t_numpy(wl, 5.0, ([0, 1], [3, 1.5]), ([0, 1], [0.2, 0.2]), ([0, 1], [0.2, 0.2]), ([0, 1], [1.5, 3]))
+    E = numpy_swing(hp_t + 2.5 * lp_t, w) * 1000 * 0.5
+    assert rec["excess_work"] == pytest.approx(E, rel=0.03)
+    assert "low-pressure cylinder from its own card" in rec["excess_source"]
+
+
+@pytest.mark.parametrize("argv, says", [
+    (["--indicator", "CARD", "--piston-area", "100", "--crank-radius", "0.4"], "--rod-ratio"),
+    (["--indicator", "CARD", "--rod-ratio", "5", "--crank-radius", "0.4"], "--piston-area"),
+    (["--indicator", "CARD", "--rod-ratio", "5", "--piston-area", "100", "--crank-radius", "0.4",
+      "--excess-work", "10"], "one of them"),
+    (["--indicator", "CARD", "--rod-ratio", "0.5", "--piston-area", "100", "--crank-radius", "0.4"], "L/r"),
+    (["--indicator", "BROKEN", "--rod-ratio", "5", "--piston-area", "100", "--crank-radius", "0.4"], "row"),
+    (["--rod-ratio", "5", "--excess-work", "10"], "--indicator"),
+    (["--indicator", "CARD", "--area-ratio", "2", "--rod-ratio", "5", "--piston-area", "100",
+      "--crank-radius", "0.4"], "--indicator-lp"),
+    (["--indicator", "CARD", "--rod-ratio", "5", "--piston-area", "0", "--crank-radius", "0.4"], "piston area"),
+])
+def test_flywheel_card_refusals(tmp_path, capsys, argv, says):
+    (tmp_path / "CARD").write_text(COMPRESSING)
+    (tmp_path / "BROKEN").write_text("x,p\n0,1\n2,1\n1,0\n0,1\n")
+    argv = [str(tmp_path / a) if a in ("CARD", "BROKEN") else a for a in argv]
+    assert main(["flywheel", *argv, "--rpm", "50", "--fluctuation", "1/80", "--diameter", "5"]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and says in err and len(err.strip().splitlines()) == 1

@@ -358,3 +358,15 @@ def test_flywheel_card_refusals(tmp_path, capsys, argv, says):
     assert main(["flywheel", *argv, "--rpm", "50", "--fluctuation", "1/80", "--diameter", "5"]) == 2
     out, err = capsys.readouterr()
     assert out == "" and says in err and len(err.strip().splitlines()) == 1
+
+
+@pytest.mark.parametrize("args, says", [
+    (["--lp-admission", "2"], "--lp-admission belongs to a compound"),
+    (["--area-ratio", "3", "--revolution", "--machine", "compound", "--force", "unit"], "--area-ratio belongs"),
+    (["--lp-admission", "-1", "--revolution", "--machine", "compound"], "low-pressure cylinder"),
+    (["--area-ratio", "50", "--revolution", "--machine", "tandem"], "area ratio F_lp/F_hp = 50"),
+])
+def test_low_pressure_givens_refused_where_they_do_not_apply(capsys, args, says):
+    assert main(["check", "tangential-pressure", *args]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and says in err and len(err.strip().splitlines()) == 1

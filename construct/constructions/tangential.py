@@ -117,8 +117,11 @@ def _low_givens(g: Mapping[str, float], force: str, low: Mapping[str, Any], card
         if crank is not None:
             out.update(card_givens(crank, "lp.crank."))
         return out
-    d = indicator_givens(low["lp_filling"], g["clearance"], low["lp_admission"], low["lp_back_pressure"],
-                         low["lp_compression"], g["pressure_unit"])
+    try:
+        d = indicator_givens(low["lp_filling"], g["clearance"], low["lp_admission"], low["lp_back_pressure"],
+                             low["lp_compression"], g["pressure_unit"])
+    except InvalidParameter as exc:  # the same rules as the first cylinder's, said of the low-pressure one
+        raise InvalidParameter(f"the low-pressure cylinder (--lp-*): {exc}") from None
     k = bounded("low-pressure kappa = P/B_max", low["lp_kappa"], KAPPA_RANGE)
     out.update({f"lp.{key}": d[key] for key in ("filling", "clearance", "admission", "back_pressure", "compression")})
     out["lp.pressure_ratio"] = d["admission"] / (k * (1.0 + 1.0 / g["rod_ratio"]))
@@ -230,6 +233,14 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
     if own_low:
         givens.update(_low_givens(givens, force, low, low_cards))
         params["low_pressure"] = True
+    else:  # a low-pressure given where there is no low-pressure cylinder of its own: say so, do not ignore it
+        _low_givens({"clearance": BAUMANN["clearance"], "pressure_unit": 1.0, "rod_ratio": givens["rod_ratio"]},
+                    "baumann", low)  # out of its domain first: named with its value
+        stray = [k for k, v in low.items() if v != LOW_PRESSURE[k]]
+        if stray:
+            raise InvalidParameter(f"--{stray[0].replace('_', '-')} belongs to a compound or tandem engine's "
+                                   f"low-pressure cylinder (--revolution --machine compound, under --force baumann "
+                                   f"or with --indicator-lp)")
     if force == "baumann":
         params.update(filling=givens["filling"], compression=givens["compression"])
     b = Builder("tangential-pressure", givens, params)

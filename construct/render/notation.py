@@ -234,6 +234,8 @@ def _tangential(fig: "Figure", lang: str) -> list[str]:
     kappa = g["admission"] / (g["pressure_ratio"] * (1.0 + 1.0 / g["rod_ratio"]))
     out = ([f"κ = P/Bmax = {number(round(kappa, 9), lang)}", _ratio("r/L", g["rod_ratio"], lang)]
            + _diagram(g, lang) + [_scale(g, lang), _parts(fig, lang)])
+    if "lp.admission" in g:  # two cylinders, two diagrams: say whose the first givens are
+        out[2] = ("Hochdruck: " if lang == "de" else "high pressure: ") + out[2]
     if fig.params.get("revolution"):  # the return stroke from the same diagram: Baumann's assumption, said
         out = [x for x in _revolution(fig, lang) if x] + out + [
             "Rückgang: dasselbe Diagramm gespiegelt (Baumanns Annahme)" if lang == "de"

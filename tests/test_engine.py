@@ -370,3 +370,16 @@ def test_low_pressure_givens_refused_where_they_do_not_apply(capsys, args, says)
     assert main(["check", "tangential-pressure", *args]) == 2
     out, err = capsys.readouterr()
     assert out == "" and says in err and len(err.strip().splitlines()) == 1
+
+
+def test_table_forward_stroke_with_baumann_force(capsys):
+    assert main(["table", "tangential-pressure", "--rod-ratio", "4", "--parts", "6", "--method", "exact",
+                 "--force", "baumann", "--format", "csv"]) == 0
+    out, err = capsys.readouterr()
+    assert "mirrored" not in err   # one stroke: nothing assumed about the other
+    lines = out.strip().splitlines()
+    assert lines[0] == "crank_angle_deg,OK_over_r,T_over_P,T"
+    for line in lines[2:-1]:
+        deg, _, _, t = map(float, line.split(","))
+        w = math.radians(deg)
+        assert t == pytest.approx(float(unit_t_mp(w, 4) * baumann_force_mp(w, 4, 8.0)), abs=1e-9)

@@ -559,7 +559,10 @@ def _card_pressure_change(b: Builder, f: Mapping[str, str], d: Mapping[str, Any]
                     en="the crank side's chord extended")
         Jx = b.intersect("Jx", g1, g2, rule=("only",), role="result", labels={"Jx": "J′"},
                          de="J′: die Drücke beider Seiten gleich", en="J': both sides' pressures equal")
-        perp, _ = b.drop_perpendicular("J.o", Jx, f["axis"], f["D0"], f["D1"])
+        # the perpendicular from J' with the compass about the piston positions on either side of it (two
+        # feet of the ordinates, near J': small circles, a view that stays on the diagram)
+        along = sorted((abs(b[f"X{k}"][0] - b[Jx][0]), f"X{k}") for k in range(b.params["parts"] + 1))[:2]
+        perp, _ = b.drop_perpendicular("J.o", Jx, f["axis"], along[0][1], along[1][1])
         b.intersect("J", perp, fbase, rule=("only",), role="result", labels={"J": "J"},
                     de="Druckwechsel J: Kolbenkraft null", en="pressure change J: piston force zero")
 

@@ -66,6 +66,10 @@ def add_arguments(p) -> None:
     p.add_argument("--diagram", choices=DIAGRAMS, help="measure E on this construction's excess area")
     p.add_argument("--given", action="append", default=[], metavar="NAME=VALUE",
                    help="a given of the --diagram construction (repeatable), e.g. --given kappa=2")
+    p.add_argument("--revolution", action="store_true",
+                   help="with --diagram: measure E over a whole revolution, the return stroke from his diagram "
+                        "mirrored (the greatest swing of the excess areas), instead of the forward stroke's excess "
+                        "area (Baumann's method, assuming both strokes equal)")
     p.add_argument("--piston-area", type=number, metavar="CM2",
                    help="piston area F in cm², 0.01 .. 1e7 (with --diagram or --indicator; the high-pressure "
                         "piston's for a compound)")
@@ -121,10 +125,22 @@ def _diagram_work(args) -> tuple[float, str]:
     givens.setdefault("force", "baumann")
     if givens["force"] != "baumann":
         raise InvalidParameter("the flywheel needs the pressure diagram (force=baumann), not the unit force")
+    if "revolution" in givens:
+        raise InvalidParameter("say --revolution, not --given revolution=...")
+    if args.revolution:
+        from ...constructions.revolution import excess_work
+
+        fig = c.figure(revolution=True, **givens)
+        excess = excess_work(fig)
+        return excess * area * radius, (
+            f"greatest swing of the excess areas {excess:.6g} at·rad over a revolution (the return stroke from "
+            f"the same diagram mirrored) measured on the {args.diagram} construction × F = {area:g} cm² × "
+            f"r = {radius:g} m")
     fig = c.figure(**givens)
     excess = excess_area(fig)
     return excess * area * radius, (f"excess area {excess:.6g} at·rad measured on the {args.diagram} construction "
-                                    f"× F = {area:g} cm² × r = {radius:g} m")
+                                    f"(the forward stroke; Baumann: the return stroke's equal) × F = {area:g} cm² "
+                                    f"× r = {radius:g} m")
 
 
 def _card_work(args) -> tuple[float, str]:
@@ -168,6 +184,9 @@ def run(args) -> int:
         raise InvalidParameter(f"{', '.join(card_only)} belong(s) to --indicator FILE.csv")
     if args.area_ratio is not None and args.indicator_lp is None:
         raise InvalidParameter("--area-ratio goes with --indicator-lp (the low-pressure cylinder's own card)")
+    if args.revolution and args.diagram is None:
+        raise InvalidParameter("--revolution goes with --diagram (with --indicator the whole revolution is measured "
+                               "anyway)")
     if args.indicator is not None:
         work, source = _card_work(args)
     elif args.diagram is not None:

@@ -405,3 +405,29 @@ def test_baumanns_claim_that_unequal_strokes_do_not_change_the_result(capsys):
     long_rod = lambda w: unit_t_mp(w, 1000) * baumann_force_mp(w, 1000, 8.0)  # noqa: E731
     long_fwd = lambda w: unit_t_mp(w % math.pi, 1000) * baumann_force_mp(w % math.pi, 1000, 8.0)  # noqa: E731
     assert swing(long_rod, 8000)[1] == pytest.approx(swing(long_fwd, 8000)[1], rel=2e-3)
+
+
+def test_low_pressure_crank_side_card(tmp_path, capsys):
+    """The low-pressure cylinder's crank side from a card of its own (not the cover side's mirrored)."""
+    import numpy as np
+
+    files = {"hp.csv": HP_CARD, "lp.csv": LP_CARD,
+             # crank side in head-end coordinates: exhaust 0.2 at forward, steam 3 -> 2 -> 1 at on the return
+             "lpk.csv": "x,p\n0,0.2\n1,0.2\n1,3\n0.5,2\n0,1\n0,0.2\n"}
+    for name, text in files.items():
+        (tmp_path / name).write_text(text)
+    assert main(["table", "tangential-pressure", "--rod-ratio", "5", "--parts", "6", "--method", "exact",
+                 "--revolution", "--machine", "tandem", "--indicator", str(tmp_path / "hp.csv"),
+                 "--indicator-lp", str(tmp_path / "lp.csv"), "--indicator-lp-crank-side", str(tmp_path / "lpk.csv"),
+                 "--area-ratio", "3", "--format", "csv"]) == 0
+    out = capsys.readouterr().out.strip().splitlines()
+    for line in out[1:]:
+        deg, _, t = map(float, line.split(","))
+        w = math.radians(deg)
+        if round(deg) % 180 == 0:
+            assert t == pytest.approx(0.0, abs=1e-9)
+            continue
+        x = float(piston_mp(w, 5))
+        lp = (3 - 1.5 * x) - 0.2 if deg < 180 else float(np.interp(x, [0, 0.5, 1], [1, 2, 3])) - 0.2
+        expected = float(unit_t_mp(w, 5)) * (float(straight_over_mp(w, 5, 8, 6, 1)) + 3 * lp)
+        assert t == pytest.approx(expected, abs=1e-9)

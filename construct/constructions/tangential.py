@@ -28,6 +28,15 @@ the inertia ordinates of seed 000 (:mod:`construct.constructions.inertia`),
 with c v²/r = P/((1 + r/L) κ) for Baumann's κ = P/B_max.  With
 ``force="unit"`` P' is the crank radius r itself: the ordinates are OK.
 
+Over a revolution (``revolution=True``, :mod:`construct.constructions.revolution`)
+the return stroke's P' comes from the crank side's diagram: under Baumann's force
+his diagram mirrored (drawn from the other dead centre, below the stroke line --
+his assumption, and the caption says so) with the mass force of (298)'s minus
+sign; with cards the crank side's card.  A compound or tandem engine's
+low-pressure cylinder has its own diagram (``lp_*`` givens, or ``indicator_lp``)
+drawn in the pressure scale times F_lp/F_hp (``area_ratio``), so that its
+ordinates are forces in the high-pressure piston's unit and add with the dividers.
+
 The curve is drawn through the points (French curve); the planimeter gives
 the mean line ("Ausgleichende", height = area / drawn length, = 2 P_i/π for
 the exact curve); where it crosses the curve are α1, α2; between them, above
@@ -68,9 +77,9 @@ from .revolution import (MACHINES, REVOLUTION_PLATE, build_revolution, crank_shi
                          revolution_checks, unroll_by_chords)
 
 __all__ = ["TANGENTIAL", "build_tangential", "tangential_checks", "ok_over_r", "t_over_unit", "free_force",
-           "model_t", "baumann_force", "return_free_force", "drawn_model", "unrolled_angle", "mean_height", "excess_area", "crossing_angles", "model_summary",
-           "model_summary_sweep",
-           "KAPPA", "FORCES", "LOW_PRESSURE", "low_force"]
+           "model_t", "baumann_force", "return_free_force", "drawn_model", "unrolled_angle", "mean_height",
+           "excess_area", "crossing_angles", "model_summary", "model_summary_sweep", "KAPPA", "FORCES",
+           "LOW_PRESSURE", "low_force"]
 
 #: Baumann's κ = P/B_max ("Verhältnis des Anfangsbeschleunigungsdrucks zum Anfangskolbendruck"), his first case.
 KAPPA = 8.0

@@ -242,7 +242,7 @@ COMPRESSING = "x,p\n0,8\n0.2,8\n0.6,3\n1,1.6\n1,1.1\n0.4,1.1\n0.1,3\n0,6\n0,8\n"
 
 
 def test_j_from_a_card_against_a_root_of_its_straight_lines(tmp_path):
-    from construct.constructions.piston_force import abscissa, piston_force
+    from construct.constructions.piston_force import abscissa
     import numpy as np
 
     card = tmp_path / "card.csv"

@@ -99,7 +99,9 @@ def mass_forces_table(*, weight: float, rpm: float, crank_radius: float, rod_len
 
 def tangential_pressure_table(*, rod_ratio: float, parts: int = 18, method: str = "auto", revolution: bool = False,
                               cranks: str = "", machine: str = "single", indicator: Any = None,
-                              indicator_crank_side: Any = None) -> Table:
+                              indicator_crank_side: Any = None, force: str = "unit", kappa: Any = None,
+                              indicator_lp: Any = None, indicator_lp_crank_side: Any = None, area_ratio: Any = None,
+                              piston_area: Any = None) -> Table:
     """T/P' for a unit piston force at each crank position: OK/r measured on the construction (seed 004, Fig. 26).
 
     With *revolution*: over 0..360 degrees, a unit force in the direction of motion on each stroke, summed over
@@ -109,6 +111,15 @@ def tangential_pressure_table(*, rod_ratio: float, parts: int = 18, method: str 
     crank side from *indicator_crank_side* or the same card mirrored): a column ``T`` in kg/cm² of piston area,
     measured on the construction drawn with the card (the over-pressure read on the card's straightedge lines
     at the constructed piston position, times OK/r) -- every cylinder of the engine with this diagram.
+
+    With *force* ``"baumann"``: the column ``T`` (at) from Baumann's idealised diagram less the acceleration
+    force (his κ = *kappa*, default 8), on the return stroke the same diagram mirrored (his assumption).
+
+    A compound or tandem engine's low-pressure cylinder has its own diagram: *indicator_lp* (and
+    *indicator_lp_crank_side*) with cards, its own idealised diagram under Baumann's force; its piston is
+    *area_ratio* times the first's, so its pressures count that many times in ``T`` (at of the high-pressure
+    piston's area).  With *piston_area* (the high-pressure piston's, cm²) a column ``T_kg``: the summed
+    tangential force in kg, each cylinder's pressure times its own piston area.
     """
     from .constructions.tangential import ok_over_r, t_over_unit
 
@@ -118,9 +129,36 @@ def tangential_pressure_table(*, rod_ratio: float, parts: int = 18, method: str 
     engine = {"revolution": True, "cranks": cranks, "machine": machine} if revolution else \
         {"cranks": cranks, "machine": machine}
     card = None
+    if force not in ("unit", "baumann"):
+        raise InvalidParameter(f"--force must be unit or baumann, got {force!r}")
+    if force == "unit" and kappa is not None:
+        raise InvalidParameter("--kappa belongs to Baumann's force: add --force baumann")
+    low = {} if area_ratio is None else {"area_ratio": area_ratio}
+    if (area_ratio is not None or indicator_lp is not None) and not (revolution and machine in ("compound", "tandem")):
+        raise InvalidParameter("--area-ratio and --indicator-lp belong to a compound or tandem engine's low-pressure "
+                               "cylinder: add --revolution --machine compound (or tandem)")
+    if area_ratio is not None and not (force == "baumann" or indicator_lp is not None):
+        raise InvalidParameter("--area-ratio goes with the low-pressure cylinder's own diagram: --indicator-lp "
+                               "FILE.csv, or --force baumann with --machine compound or tandem")
+    if force == "baumann":
+        if indicator is not None:
+            raise InvalidParameter("--indicator gives the pressures itself: leave out --force baumann")
+        card = tp.figure(rod_ratio=rod_ratio, parts=parts, method=method, force="baumann",
+                         **({} if kappa is None else {"kappa": kappa}), **engine, **low)
     if indicator is not None:
         card = tp.figure(rod_ratio=rod_ratio, parts=parts, method=method, indicator=str(indicator),
-                         indicator_crank_side=str(indicator_crank_side or ""), **engine)
+                         indicator_crank_side=str(indicator_crank_side or ""),
+                         indicator_lp=str(indicator_lp or ""), indicator_lp_crank_side=str(indicator_lp_crank_side or ""),
+                         **engine, **low)
+    elif indicator_lp is not None or indicator_lp_crank_side is not None:
+        raise InvalidParameter("--indicator-lp goes with --indicator (the high-pressure cylinder's diagram)")
+    if piston_area is not None:
+        from .constructions.domain import PISTON_AREA
+
+        piston_area = PISTON_AREA.check("--piston-area (the first cylinder's piston area, cm²)", piston_area)
+        if card is None:
+            raise InvalidParameter("--piston-area turns T (at) into kg: give the pressures (--indicator FILE.csv "
+                                   "or --force baumann)")
     fig = tp.figure(rod_ratio=rod_ratio, parts=parts, method=method, force="unit", **engine)
     if revolution:
         from .constructions.revolution import revolution_ordinate, revolution_rows
@@ -130,14 +168,18 @@ def tangential_pressure_table(*, rod_ratio: float, parts: int = 18, method: str 
             return ("crank_angle_deg", "T_over_P"), rows
         for j, row in enumerate(rows):
             row["T"] = revolution_ordinate(card, j)
-        return ("crank_angle_deg", "T_over_P", "T"), rows
+            if piston_area is not None:
+                row["T_kg"] = row["T"] * piston_area
+        return ("crank_angle_deg", "T_over_P", "T") + (("T_kg",) if piston_area is not None else ()), rows
     rows = [{"crank_angle_deg": math.degrees(crank_angle(fig, point_name(fig, k))), "OK_over_r": ok_over_r(fig, k),
              "T_over_P": t_over_unit(fig, k)} for k in range(parts + 1)]
     if card is None:
         return ("crank_angle_deg", "OK_over_r", "T_over_P"), rows
     for k, row in enumerate(rows):
         row["T"] = t_over_unit(card, k)
-    return ("crank_angle_deg", "OK_over_r", "T_over_P", "T"), rows
+        if piston_area is not None:
+            row["T_kg"] = row["T"] * piston_area
+    return ("crank_angle_deg", "OK_over_r", "T_over_P", "T") + (("T_kg",) if piston_area is not None else ()), rows
 
 
 def indicator_note(crank_side: Any) -> str:

@@ -95,7 +95,9 @@ SYMBOLS = {"admission": "P", "back_pressure": "P0", "clearance": "s0/s", "compre
            "cutoff": "rho", "dead_centre": "crank-end|head-end", "engine": "explosion|diesel", "exhaust": "p_g",
            "exponent": "n", "max_pressure": "p", "steps": "N", "suction": "p_a", "cranks": "DEG,DEG",
            "indicator": "FILE.csv", "indicator_crank_side": "FILE.csv", "machine": "single|tandem|compound",
-           "piston_area_cover": "F'", "piston_area_crank": "F''"}
+           "piston_area_cover": "F'", "piston_area_crank": "F''", "indicator_lp": "FILE.csv",
+           "indicator_lp_crank_side": "FILE.csv", "area_ratio": "F_lp/F_hp", "lp_filling": "s1/s",
+           "lp_admission": "P", "lp_back_pressure": "P0", "lp_compression": "s3/s", "lp_kappa": "kappa"}
 
 #: Help of parameters whose construction does not give one.
 HELPS = {"kappa": "Baumann's kappa = P/B_max, the piston force over the largest acceleration force "

@@ -44,7 +44,7 @@ import numpy as np
 from ..kernel.errors import InvalidParameter
 from ..kernel.numeric import shown
 
-__all__ = ["Domain", "ROD_RATIO", "DRAWN_LENGTH", "PRESSURE", "PRESSURE_RATIO", "STROKE_FRACTION", "CLEARANCE",
+__all__ = ["AREA_RATIO", "Domain", "ROD_RATIO", "DRAWN_LENGTH", "PRESSURE", "PRESSURE_RATIO", "STROKE_FRACTION", "CLEARANCE",
            "DRAWN_PRESSURE_RATIO", "DRAWN_M", "DRAWN_MASS_FORCE", "KAPPA_RANGE", "FLUCTUATION", "SPEED_GAIN", "WEIGHT", "RPM", "LENGTH_M", "PISTON_AREA",
            "DRAWING_SCALE", "FORCE_UNIT", "FLYWHEEL_KZ", "RIM_SPEED",
            "FLYWHEEL_DIAMETER", "EXCESS_WORK", "IRREGULARITY", "COMPRESSION_RATIO", "CUTOFF_RATIO",
@@ -180,4 +180,6 @@ RIM_SECTION = Domain(1e-2, 0.5, "rim sections (side over r1) that clear the hub"
 CRANK_OFFSET = Domain(0.0, 360.0, "degrees ahead of the first crank (one turn; 360 is the first crank again)")
 #: Cranks on one shaft: the books draw one, two (seed 002, compound engines) or three; the summed ordinates'
 #: error grows with their number (each addition is a compass transfer).
+AREA_RATIO = Domain(0.1, 20.0, "the low-pressure piston's area over the high-pressure one's (compound engines "
+                    "build 1.5 .. 4): the low-pressure diagram is drawn in that multiple of the pressure scale")
 CRANK_COUNT = Domain(1.0, 8.0, "cranks on one shaft the summed diagram is measured for")

@@ -102,7 +102,7 @@ def _up(d_head: str, d_crank: str) -> tuple[str, str, str]:
 
 def indicator_frame(b: Builder, *, base: str, head: str, crank: str, stroke: Sequence[str] = ("r",),
                     stroke_factor: float = 2.0, prefix: str = "",
-                    pressure_scale: Sequence[str] = ("pressure_unit",)) -> IndicatorDiagram:
+                    pressure_scale: Sequence[str] = ("pressure_unit",), given_prefix: str = "") -> IndicatorDiagram:
     """Add the diagram's fixed lines: clearance corners, admission and back-pressure lines, cut-off, s2.
 
     *base* is the absolute-zero line through *head* and *crank* (the two dead
@@ -113,24 +113,26 @@ def indicator_frame(b: Builder, *, base: str, head: str, crank: str, stroke: Seq
     ``filling``, ``clearance``, ``admission``, ``back_pressure``, ``compression``
     (as fractions of the stroke and in at) and the givens of *pressure_scale*, whose
     product is the drawn length of 1 at (``pressure_unit``; or e.g. piston area times
-    drawn length per kg, so that the diagram reads directly as piston force).
+    drawn length per kg, so that the diagram reads directly as piston force).  *given_prefix* names another
+    cylinder's givens (``lp.filling`` ...: a compound engine's low-pressure diagram).
     """
     p = prefix
+    q = given_prefix
     up = _up(head, crank)
     g = b.givens
     with b.group("indicator diagram: clearance, admission and back pressure",
                  "Dampfdiagramm: schädlicher Raum, Admissions- und Gegendrucklinie"):
-        s0 = b.given_length(f"{p}s0", product=("clearance", *stroke), factor=stroke_factor,
+        s0 = b.given_length(f"{p}s0", product=(f"{q}clearance", *stroke), factor=stroke_factor,
                             de="schädlicher Raum s0", en="clearance s0")
-        s1 = b.given_length(f"{p}s1", product=("filling", *stroke), factor=stroke_factor,
+        s1 = b.given_length(f"{p}s1", product=(f"{q}filling", *stroke), factor=stroke_factor,
                             de="Füllung s1", en="filling s1")
-        s3 = b.given_length(f"{p}s3", product=("compression", *stroke), factor=stroke_factor,
+        s3 = b.given_length(f"{p}s3", product=(f"{q}compression", *stroke), factor=stroke_factor,
                             de="Kompressionsweg s3 = s − s2", en="compression path s3 = s - s2")
-        P0 = b.given_length(f"{p}P0", product=("back_pressure", *pressure_scale),
+        P0 = b.given_length(f"{p}P0", product=(f"{q}back_pressure", *pressure_scale),
                             de="Gegendruck P0 im Druckmaßstab", en="back pressure P0 in the pressure scale")
         opening = b.given_length(f"{p}open", product=stroke, factor=stroke_factor / 20.0,
                                  de="Zirkelöffnung für die Senkrechten (s/20)", en="compass opening for the perpendiculars (s/20)")
-        P = b.given_length(f"{p}P", product=("admission", *pressure_scale),
+        P = b.given_length(f"{p}P", product=(f"{q}admission", *pressure_scale),
                            de="Admissionsdruck P (über dem Gegendruck)", en="admission pressure P (over the back pressure)")
         k = b.circle_radius(f"{p}Z0.k", head, s0, de="s0 vor dem Deckeltotpunkt", en="s0 beyond the head-end dead centre")
         Z0 = b.intersect(f"{p}Z0", base, k, rule=("farther", crank), role="result", labels={f"{p}Z0": "Z"},
@@ -165,7 +167,7 @@ def indicator_frame(b: Builder, *, base: str, head: str, crank: str, stroke: Seq
                              de="Beginn der Kompression C2", en="start of compression C2")
     del head_ord, crank_ord
     return IndicatorDiagram(p, base, head, crank, Z0, Z1, adm, back, cutoff, cut_ord, cstart, comp_ord,
-                            opening, g["filling"], g["compression"])
+                            opening, g[f"{q}filling"], g[f"{q}compression"])
 
 
 def square(b: Builder, name: str, point: str, line: str, opening: str) -> str:

@@ -288,6 +288,8 @@ class DrawnCard:
 
     forward: str   #: polyline of the forward stroke's branch (x increasing), continued level to both dead centres
     back: str      #: polyline of the return stroke's branch
+    forward_points: tuple[str, ...] = ()  #: the forward polyline's points in order (its chords' ends)
+    back_points: tuple[str, ...] = ()     #: the return polyline's points in order
 
 
 def draw_card(b: Any, card: IndicatorCard, *, prefix: str, head: str, crank: str, axis: str,
@@ -337,6 +339,7 @@ def draw_card(b: Any, card: IndicatorCard, *, prefix: str, head: str, crank: str
         fwd_idx, back_idx = tuple(reversed(card.back_index)), tuple(reversed(card.forward_index))
         xs_f, xs_b = tuple(1.0 - x for x in reversed(card.back[0])), tuple(1.0 - x for x in reversed(card.forward[0]))
     out = []
+    vertices = []
     with b.group(f"indicator card {en}: each stroke's line with the straightedge",
                  f"Indikatordiagramm {de}: die Linie jedes Hubes mit dem Lineal"):
         b.polyline(f"{prefix}loop", [pts[i] for i in range(len(card.points))], closed=True,
@@ -355,33 +358,37 @@ def draw_card(b: Any, card: IndicatorCard, *, prefix: str, head: str, crank: str
                                         de="Linie waagerecht bis zum Totpunkt fortgesetzt",
                                         en="line continued level to the dead centre"))
             line = ([ends[0]] if ends[0] else []) + names + ([ends[1]] if ends[1] else [])
+            vertices.append(tuple(line))
             out.append(b.polyline(f"{prefix}{name}", line, de=f"{what[0]}: Punkte mit dem Lineal verbunden",
                                   en=f"{what[1]}: the points joined with the straightedge"))
-    return DrawnCard(out[0], out[1])
+    return DrawnCard(out[0], out[1], vertices[0], vertices[1])
 
 
-def _card_key(givens: Mapping[str, float]) -> tuple:
-    return tuple(sorted((k, float(v)) for k, v in givens.items() if k.startswith(("card.", "crank."))))
+def _card_key(givens: Mapping[str, float], prefix: str = "") -> tuple:
+    return (prefix,) + tuple(sorted((k, float(v)) for k, v in givens.items()
+                                    if k.startswith((f"{prefix}card.", f"{prefix}crank."))))
 
 
 _CARDS: dict[tuple, tuple[IndicatorCard, IndicatorCard]] = {}
 
 
-def card_pair(givens: Mapping[str, float]) -> tuple[IndicatorCard, IndicatorCard]:
-    """(cover side, crank side) from a figure's givens: the crank side's own card, or the cover side's mirrored."""
-    key = _card_key(givens)
+def card_pair(givens: Mapping[str, float], prefix: str = "") -> tuple[IndicatorCard, IndicatorCard]:
+    """(cover side, crank side) from a figure's givens: the crank side's own card, or the cover side's mirrored.
+
+    *prefix* names another cylinder's cards (``lp.``: a compound engine's low-pressure cylinder)."""
+    key = _card_key(givens, prefix)
     if key not in _CARDS:
         if len(_CARDS) > 64:  # a small memo: the checks read the cards for every model value
             _CARDS.clear()
-        cover = card_from_givens(givens, "card.", "(cover side) in the givens")
-        crank = card_from_givens(givens, "crank.", "(crank side) in the givens") or cover.mirrored()
+        cover = card_from_givens(givens, f"{prefix}card.", f"{prefix}(cover side) in the givens")
+        crank = card_from_givens(givens, f"{prefix}crank.", f"{prefix}(crank side) in the givens") or cover.mirrored()
         _CARDS[key] = (cover, crank)
     return _CARDS[key]
 
 
-def card_force(givens: Mapping[str, float], lam: float) -> Any:
+def card_force(givens: Mapping[str, float], lam: float, prefix: str = "") -> Any:
     """The over-pressure (at) along the motion as a function of the crank angle over the whole turn (arrays)."""
-    cover, crank = card_pair(givens)
+    cover, crank = card_pair(givens, prefix)
 
     def force(w: Any) -> Any:
         w = np.asarray(w, dtype=float)

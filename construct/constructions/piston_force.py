@@ -49,7 +49,7 @@ diagram with an illustrative high-pressure setting (:data:`HP_DIAGRAM`).
 from __future__ import annotations
 
 import math
-from typing import Any, Mapping
+from typing import Any, Mapping, Sequence
 
 import numpy as np
 
@@ -72,7 +72,7 @@ from .ordinates import OrdinateFrame, ordinate_line, ordinate_value, point_kind
 __all__ = ["PISTON_FORCE", "TAFEL_I", "HP_DIAGRAM", "GRAVITY", "piston_area_mean", "build_piston_force",
            "piston_force_checks", "mass_force", "piston_force", "abscissa", "mass_force_rows", "area_balance",
            "model_areas_sweep",
-           "mass_force_scale", "j_abscissa", "piston_area_sides", "return_mass_force", "return_piston_force",
+           "mass_force_scale", "j_abscissa", "card_force_zero", "card_crossing_chords", "piston_area_sides", "return_mass_force", "return_piston_force",
            "revolution_mass_force_rows", "PISTON_AREA_COVER", "PISTON_AREA_CRANK"]
 
 #: g as the book uses it ("830/9,81").
@@ -334,6 +334,8 @@ def build_piston_force(*, parts: int, method: str, revolution: bool = False, ind
         _return_stroke(b, f, c, sides, n, points, d if cards is not None else None)
     elif cards is None:  # J as seed 001 draws it: one piston area, the over-pressure's zero
         _pressure_change(b, d, fbase)
+    else:  # J where the cards' forward lines cross: the piston force F p' - F p'' changes sign
+        _card_pressure_change(b, f, d, fbase)
     _curves(b, n, fbase, smooth=cards is not None)
     if revolution:
         _curves(b, n, "rbase", prefix="r", forward=False, smooth=cards is not None)
@@ -425,7 +427,8 @@ def _draw_cards(b: Builder, f: Mapping[str, str], cards: Any, revolution: bool) 
                           axis=f["axis"], stroke=stroke, pressure_scale=(area[1], "force_unit"), mirrored=True,
                           up=(f["D0"], f["D1"]), de="der Kurbelseite (die der Deckelseite gespiegelt)",
                           en="of the crank side (the cover side's mirrored)")
-    return {"cover.fwd": cover.forward, "cover.back": cover.back, "crank.fwd": crank.forward, "crank.back": crank.back}
+    return {"cover.fwd": cover.forward, "cover.back": cover.back, "crank.fwd": crank.forward, "crank.back": crank.back,
+            "cover.fwd.points": cover.forward_points, "crank.fwd.points": crank.forward_points}
 
 
 def _card_points(b: Builder, d: Mapping[str, str], ordinate: str, tag: str, stroke: str) -> dict[str, str]:
@@ -506,6 +509,61 @@ def _pressure_change(b: Builder, d, fbase: str) -> None:
                          de="Schnitt der Expansions- und Kompressionslinie", en="where expansion and compression lines cross")
         o = square(b, "J.o", Jx, d.base, d.opening)
         b.intersect("J", o, fbase, rule=("only",), role="result", labels={"J": "J"},
+                    de="Druckwechsel J: Kolbenkraft null", en="pressure change J: piston force zero")
+
+
+def card_crossing_chords(cover: Sequence[Any], crank: Sequence[Any]) -> tuple[int, int] | None:
+    """Of two polylines (points (x, y), x increasing), the chords (i, j) where the first passes from above the
+    second to below it for the last time along the stroke: the piston force's last change of sign from
+    pushing to braking.  None if it never does.
+
+    >>> card_crossing_chords([(0, 8), (1, 2)], [(0, 1), (0.9, 1), (1, 3)])
+    (0, 1)
+    >>> card_crossing_chords([(0, 8), (1, 5)], [(0, 1), (1, 1)]) is None
+    True
+    """
+    found = None
+    for i, (a, b) in enumerate(zip(cover, cover[1:])):
+        for j, (c, e) in enumerate(zip(crank, crank[1:])):
+            lo, hi = max(a[0], c[0]), min(b[0], e[0])
+            if hi <= lo:
+                continue
+
+            def gap(x: float) -> float:  # cover above crank (positive) at x, both chords straight
+                yc = a[1] + (b[1] - a[1]) * (x - a[0]) / (b[0] - a[0])
+                yk = c[1] + (e[1] - c[1]) * (x - c[0]) / (e[0] - c[0])
+                return yc - yk
+
+            if gap(lo) > 0.0 >= gap(hi) or (gap(lo) == 0.0 and gap(hi) < 0.0 and found is None):
+                found = (i, j)
+    return found
+
+
+def _card_pressure_change(b: Builder, f: Mapping[str, str], d: Mapping[str, Any], fbase: str) -> None:
+    """J from the cards: the chords of the two forward lines that cross (read off the figure when the step is
+    recorded, as the branch of an envelope is), each extended with the straightedge, their crossing J', and the
+    perpendicular from it to the stroke line carried down to the force diagram's base.  Both cards are drawn in
+    their piston area's scale, so J' is where F p' = F p'': the piston force's zero."""
+    cover, crank = d["cover.fwd.points"], d["crank.fwd.points"]
+    up = 1.0 if b[f["D1"]][0] > b[f["D0"]][0] else -1.0
+    pts = lambda names: [(up * b[p][0], b[p][1]) for p in names]  # noqa: E731  (x along the stroke)
+    chords = card_crossing_chords(pts(cover), pts(crank))
+    if chords is None:
+        return  # the piston force does not change sign: no J to draw (the caption's givens show why)
+    i, j = chords
+    with b.group("pressure change J: where the cards' forward lines cross", "Druckwechsel J: Schnitt der Linien "
+                 "des Hinganges beider Diagramme"):
+        g1 = b.line("J.g1", cover[i], cover[i + 1], de="Sehne der Deckelseite verlängert",
+                    en="the cover side's chord extended")
+        g2 = b.line("J.g2", crank[j], crank[j + 1], de="Sehne der Kurbelseite verlängert",
+                    en="the crank side's chord extended")
+        Jx = b.intersect("Jx", g1, g2, rule=("only",), role="result", labels={"Jx": "J′"},
+                         de="J′: die Drücke beider Seiten gleich", en="J': both sides' pressures equal")
+        # the perpendicular from J' with the compass about the piston positions on either side of it (two
+        # feet of the ordinates, near J': small circles, a view that stays on the diagram)
+        along = sorted((abs(b[f"X{k}"][0] - b[Jx][0]), f"X{k}") for k in range(b.params["parts"] + 1))[:2]
+        perp, _ = b.drop_perpendicular("J.o", Jx, f["axis"], along[0][1], along[1][1])
+        b.intersect("J", perp, fbase, rule=("only",), role="result", labels={"J": "J"},
                     de="Druckwechsel J: Kolbenkraft null", en="pressure change J: piston force zero")
 
 
@@ -622,6 +680,20 @@ def return_mass_force(fig: Figure, k: int) -> float:
 def return_piston_force(fig: Figure, tag: int | str) -> float:
     """F'' p'' - F' p' on the return stroke at division point k (or "s1", "s2"), in kg (+ = towards the head end)."""
     return _force(fig, f"rK{tag}", "r")
+
+
+def card_force_zero(g: Mapping[str, float]) -> float | None:
+    """The last x where the cards' forward piston force F p' − F p'' passes from pushing to braking (bisection
+    on the straight lines between the digitised points), or None."""
+    xs = sorted({x for c in card_pair(g) for x in c.forward[0]} | {0.0, 1.0})
+    zero = None
+    for lo, hi in zip(xs, xs[1:]):
+        if _forward_force(lo, g) > 0.0 >= _forward_force(hi, g):
+            for _ in range(200):
+                mid = 0.5 * (lo + hi)
+                lo, hi = (mid, hi) if _forward_force(mid, g) > 0.0 else (lo, mid)
+            zero = 0.5 * (lo + hi)
+    return zero
 
 
 def j_abscissa(g: Mapping[str, float]) -> float:
@@ -830,6 +902,12 @@ def piston_force_checks(fig: Figure, model: Mapping[str, float] | None = None) -
     if not cards:  # J is constructed from the model's hyperbolas; a card has none
         checks.append(Check("pressure change J (abscissa)", abscissa(fig, "J"), xj, EUCLIDEAN_TOLERANCE * 10,
                             "fourth proportional and intercept theorem: Euclidean", "stroke"))
+    elif "J" in fig.replay:  # the cards' straight lines: their forward force's last change of sign
+        xj = card_force_zero(g)
+        checks.append(Check("pressure change J (abscissa)", abscissa(fig, "J"), xj, EUCLIDEAN_TOLERANCE * 10,
+                            "two chords extended and crossed, the perpendicular dropped: Euclidean", "stroke"))
+        checks.append(Check("piston force at J", _forward_force(abscissa(fig, "J"), g), 0.0, kg_tol,
+                            "J is the zero of F p' - F p'' on the cards' lines", "kg"))
     if not cards and g["filling"] < xj < 1.0 and xj > 1.0 - g["compression"]:
         checks.append(Check("p_ü at J", model_steam(xj, g) - model_back(xj, g), 0.0, 1e-12 * (g["admission"] + 1),
                             "J is the zero of the over-pressure", "at"))

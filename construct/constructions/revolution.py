@@ -56,7 +56,7 @@ from .crank import crank_angle, point_name
 from .domain import CRANK_COUNT, CRANK_OFFSET
 
 __all__ = ["Machine", "MACHINES", "parse_cranks", "crank_shifts", "build_revolution", "unit_t", "summed_unit_t",
-           "revolution_model", "revolution_ordinate", "revolution_mean", "excess_lobes", "excess_work",
+           "revolution_model", "revolution_ordinate", "engine_t", "engine_cylinders", "revolution_mean", "excess_lobes", "excess_work",
            "revolution_checks", "REVOLUTION_PLATE", "dead_centres", "drawn_revolution", "revolution_rows",
            "unroll_by_chords", "Unrolled"]
 
@@ -188,27 +188,52 @@ def unroll_by_chords(b: Builder, D0: str, P1: str, count: int, provenance: Prove
     return Unrolled(U0, base, marks, ords, prov)
 
 
+def engine_cylinders(shifts: Sequence[int], cylinders: int, machine: str, own_low: bool) -> list[tuple[int, int]]:
+    """Each cylinder as (its crank's shift, which diagram drives it: 0 the first, 1 the low-pressure one).
+
+    Cylinders are listed crank by crank.  With *own_low* a compound engine's second crank and a tandem's second
+    cylinder have the low-pressure diagram; otherwise every cylinder has the first.
+
+    >>> engine_cylinders((0, 9), 1, "compound", True), engine_cylinders((0,), 2, "tandem", False)
+    ([(0, 0), (9, 1)], [(0, 0), (0, 0)])
+    """
+    out = []
+    for i, s in enumerate(shifts):
+        for c in range(cylinders):
+            low = own_low and ((machine == "compound" and i == 1) or (machine == "tandem" and c == 1))
+            out.append((s, 1 if low else 0))
+    return out
+
+
 def build_revolution(b: Builder, f: Mapping[str, str], points: Sequence[str], n: int,
                      heights: Mapping[int, tuple[str, str]], shifts: Sequence[int], cylinders: int,
-                     return_heights: Mapping[int, tuple[str, str]] | None = None) -> None:
+                     return_heights: Mapping[int, tuple[str, str]] | None = None,
+                     low: tuple[Mapping[int, tuple[str, str]], Mapping[int, tuple[str, str]] | None] | None = None,
+                     machine: str = "single") -> None:
     """The revolution unrolled, each crank's diagram, the sum by the dividers, the mean line and excess areas.
 
     *heights* maps a forward division k (1..n-1) to the segment (H_k, Q_k) whose
-    length is that crank position's tangential pressure.
+    length is that crank position's tangential pressure.  *low*: the low-pressure
+    cylinder's (heights, return heights) of a compound or tandem *machine*, already
+    in the force unit of the first (its pressures times its piston area over the first's).
     """
     r = b.givens["r"]
     m = 2 * n
     shortfall = 2.0 * r * (math.pi - 2.0 * n * math.sin(math.pi / (2.0 * n)))
 
-    def one_crank(j: int) -> tuple[str, str] | None:
+    sets = [(heights, return_heights)] + ([low] if low is not None else [])
+    layout = engine_cylinders(shifts, cylinders, machine, low is not None)
+
+    def one_crank(j: int, which: int = 0) -> tuple[str, str] | None:
+        fwd, ret = sets[which]
         j %= m
         if j in (0, n):
             return None  # a dead centre: no tangential pressure
         if j < n:
-            return heights[j]
-        if return_heights is not None:  # a force of the return stroke's own, at the mirrored crank point
-            return return_heights[m - j]
-        return heights[m - j]  # the return stroke: OK of the mirrored crank point 360° - w
+            return fwd[j]
+        if ret is not None:  # a force of the return stroke's own, at the mirrored crank point
+            return ret[m - j]
+        return fwd[m - j]  # the return stroke: OK of the mirrored crank point 360° - w
 
     with b.group("the whole revolution unrolled with the dividers", "Die ganze Umdrehung mit dem Stechzirkel abgewickelt"):
         U0, base, marks, ords, prov = unroll_by_chords(
@@ -224,24 +249,29 @@ def build_revolution(b: Builder, f: Mapping[str, str], points: Sequence[str], n:
         return b.intersect(name, ords[j], k, rule=("toward", H, Q), de=de, en=en, role=role)
 
     several = len(shifts) > 1 or cylinders > 1
+    distinct = list(dict.fromkeys(layout))  # each diagram drawn once: a tandem's equal cylinders share one
+    names = {0: ("", ""), 1: (" (Niederdruck)", " (low pressure)")} if low is not None else {0: ("", "")}
     with b.group("each crank's tangential pressures on the unrolled revolution",
                  "Die Tangentialdrücke jeder Kurbel auf der Abwicklung"):
-        for i, s in enumerate(shifts):
+        for i, (s, which) in enumerate(distinct):
+            crank = shifts.index(s) + 1
+            de_w, en_w = names[which]
             curve = []
             for j in range(m + 1):
-                seg = one_crank(j + s)
+                seg = one_crank(j + s, which)
                 if seg is None:
                     curve.append(marks[j])
                     continue
                 stroke = "Hingang" if (j + s) % m < n else "Rückgang"
                 curve.append(carry(f"c{i}.{j}", marks[j], j, seg,
-                                   de=f"Kurbel {i + 1} bei {j}: Tangentialdruck ({stroke})",
-                                   en=f"crank {i + 1} at {j}: tangential pressure "
+                                   de=f"Kurbel {crank}{de_w} bei {j}: Tangentialdruck ({stroke})",
+                                   en=f"crank {crank}{en_w} at {j}: tangential pressure "
                                       f"({'forward' if stroke == 'Hingang' else 'return'} stroke)",
                                    role="construction" if several else "result"))
             if several:
                 b.french_curve(f"c{i}.curve", base, curve, {}, role="construction", corners=dead_centres([s], n),
-                               de=f"Tangentialdrucklinie der Kurbel {i + 1}", en=f"tangential-pressure line of crank {i + 1}")
+                               de=f"Tangentialdrucklinie der Kurbel {crank}{de_w}",
+                               en=f"tangential-pressure line of crank {crank}{en_w}")
             else:
                 summed = curve
     if several:
@@ -250,9 +280,9 @@ def build_revolution(b: Builder, f: Mapping[str, str], points: Sequence[str], n:
             summed = []
             for j in range(m + 1):
                 top = marks[j]
-                adds = [(i, one_crank(j + s)) for i, s in enumerate(shifts)]
-                adds = [(i, seg) for i, seg in adds if seg is not None]
-                steps = [(i, seg, c) for i, seg in adds for c in range(cylinders)]
+                steps = [(shifts.index(s), one_crank(j + s, which), c % cylinders)
+                         for c, (s, which) in enumerate(layout)]
+                steps = [(i, seg, c) for i, seg, c in steps if seg is not None]
                 for t, (i, seg, c) in enumerate(steps):
                     last = t == len(steps) - 1
                     name = f"S{j}" if last else f"S{j}.{t}"
@@ -367,16 +397,33 @@ def summed_unit_t(w: Any, lam: float, offsets_deg: Sequence[float], cylinders: i
     return cylinders * total
 
 
+def engine_t(w: Any, lam: float, engine: Sequence[tuple[float, Any]]) -> Any:
+    """Σ over the cylinders (offset θ in degrees, force along the motion or None for the unit force) of
+    F(w + θ)·|sin(w + θ + β)/cos β|: each cylinder with a diagram of its own."""
+    total = 0.0
+    for t, force in engine:
+        wt = np.asarray(w, dtype=float) + math.radians(t)
+        total = total + unit_t(wt, lam) * (1.0 if force is None else force(np.mod(wt, 2.0 * math.pi)))
+    return total
+
+
+def _engine_list(offsets_deg: Sequence[float], cylinders: int, force: Any,
+                 engine: Sequence[tuple[float, Any]] | None) -> list[tuple[float, Any]]:
+    return list(engine) if engine is not None else [(t, force) for t in offsets_deg for _ in range(cylinders)]
+
+
 def revolution_model(lam: float, offsets_deg: Sequence[float], cylinders: int = 1, samples: int = 200_000,
-                     force: Any = None) -> dict[str, float]:
+                     force: Any = None, engine: Sequence[tuple[float, Any]] | None = None) -> dict[str, float]:
     """Mean, and the greatest swing of ∫(T − T_m) dw, of the summed diagram (trapezoids on a fine grid).
 
-    For the unit force the mean is exactly 2/π per cylinder (4r of piston path per turn over 2πr).
+    For the unit force the mean is exactly 2/π per cylinder (4r of piston path per turn over 2πr).  *engine*
+    (offset, force) per cylinder, when the cylinders have diagrams of their own.
     """
+    engine = _engine_list(offsets_deg, cylinders, force, engine)
     w = np.linspace(0.0, 2.0 * math.pi, samples + 1)
-    t = summed_unit_t(w, lam, offsets_deg, cylinders, force)
-    if force is None:
-        mean = 2.0 / math.pi * cylinders * len(offsets_deg)
+    t = engine_t(w, lam, engine)
+    if all(fn is None for _, fn in engine):
+        mean = 2.0 / math.pi * len(engine)
     else:
         mean = float(np.sum((t[1:] + t[:-1]) * 0.5 * np.diff(w)) / (2.0 * math.pi))
     run = np.concatenate(([0.0], np.cumsum((t[1:] + t[:-1] - 2.0 * mean) * 0.5 * np.diff(w))))
@@ -384,7 +431,7 @@ def revolution_model(lam: float, offsets_deg: Sequence[float], cylinders: int = 
 
 
 def drawn_revolution(lam: float, offsets_deg: Sequence[float], cylinders: int, n: int,
-                     force: Any = None) -> dict[str, float]:
+                     force: Any = None, engine: Sequence[tuple[float, Any]] | None = None) -> dict[str, float]:
     """The method on exact data: the French curve through the exact summed ordinates, read as the figure is."""
     from ..kernel.areas import area_between
     from ..kernel.geometry import SCALAR, Line, Point
@@ -392,7 +439,8 @@ def drawn_revolution(lam: float, offsets_deg: Sequence[float], cylinders: int, n
 
     m = 2 * n
     ws = [math.pi * k / n for k in range(m + 1)]
-    pts = [Point(w, float(summed_unit_t(w, lam, offsets_deg, cylinders, force))) for w in ws]
+    engine = _engine_list(offsets_deg, cylinders, force, engine)
+    pts = [Point(w, float(engine_t(w, lam, engine))) for w in ws]
     base = Line(Point(0.0, 0.0), Point(2 * math.pi, 0.0))
     shifts = crank_shifts(offsets_deg, n)
     curve, = OPS["french_curve"].fn((base, *pts), {"points": m + 1, "tangent_at": (),
@@ -409,31 +457,35 @@ def drawn_revolution(lam: float, offsets_deg: Sequence[float], cylinders: int, n
 # --------------------------------------------------------------------------
 
 
-def revolution_checks(fig: Any, force: Any = None, scale: float = 1.0) -> list[Check]:
+def revolution_checks(fig: Any, force: Any = None, scale: float = 1.0,
+                      engine: Sequence[tuple[float, Any]] | None = None) -> list[Check]:
     """The summed ordinates against Σ F(w + θ) sin(w + θ + β)/cos β (F = 1 for the unit force, else *force*, in
-    units of *scale*), the mean line (2/π per cylinder for the unit force), the excess work."""
+    units of *scale*; or each cylinder's own force, *engine* = (offset θ, force) per cylinder), the mean line
+    (2/π per cylinder for the unit force), the excess work."""
     g = fig.replay.givens
     n = fig.params["parts"]
     lam = 1.0 / g["rod_ratio"]
     offsets = fig.params["offsets"]
     cyl = fig.params["cylinders"]
     count = len(offsets) * cyl
-    unit = "P" if force is None else "at"
     # each crank's position as drawn (its division point's angle; the return stroke's mirrored): the division's
     # error drops out, and what is left is the float chain of the straightedge and compass steps
     drawn_w = [crank_angle(fig, point_name(fig, k)) for k in range(n + 1)]
     checks: list[Check] = []
+    engine = _engine_list(offsets, cyl, force, engine)
+    unit = "P" if all(fn is None for _, fn in engine) else "at"
+    shift_of = {t: s for t, s in zip(offsets, fig.params["shifts"])}
     for j in range(2 * n + 1):
         expected = 0.0
-        for s in fig.params["shifts"]:
-            m = (j + s) % (2 * n)
+        for t, fn in engine:
+            m = (j + shift_of[t]) % (2 * n)
             w = drawn_w[m] if m <= n else 2.0 * math.pi - drawn_w[2 * n - m]
-            expected += cyl * float(summed_unit_t(w, lam, (0.0,), 1, force))
+            expected += float(engine_t(w, lam, [(0.0, fn)]))
         checks.append(Check(f"summed T at {j} ({180 * j / n:g} deg)", revolution_ordinate(fig, j), expected,
                             count * 20 * EUCLIDEAN_TOLERANCE * scale,
                             "OK by straightedge, carried and added with the compass: Euclidean", unit))
-    model = revolution_model(lam, offsets, cyl, force=force)
-    drawn = drawn_revolution(lam, offsets, cyl, n, force)
+    model = revolution_model(lam, offsets, cyl, engine=engine)
+    drawn = drawn_revolution(lam, offsets, cyl, n, engine=engine)
     why = "the French curve through 2n + 1 points (twice its error on exact data) and the planimeter (1e-6)"
     checks.append(Check("mean height over the revolution (planimeter)", revolution_mean(fig), model["mean"],
                         2.0 * abs(drawn["mean"] - model["mean"]) + 1e-6 * count * scale, why, unit))

@@ -28,6 +28,15 @@ the inertia ordinates of seed 000 (:mod:`construct.constructions.inertia`),
 with c v²/r = P/((1 + r/L) κ) for Baumann's κ = P/B_max.  With
 ``force="unit"`` P' is the crank radius r itself: the ordinates are OK.
 
+Over a revolution (``revolution=True``, :mod:`construct.constructions.revolution`)
+the return stroke's P' comes from the crank side's diagram: under Baumann's force
+his diagram mirrored (drawn from the other dead centre, below the stroke line --
+his assumption, and the caption says so) with the mass force of (298)'s minus
+sign; with cards the crank side's card.  A compound or tandem engine's
+low-pressure cylinder has its own diagram (``lp_*`` givens, or ``indicator_lp``)
+drawn in the pressure scale times F_lp/F_hp (``area_ratio``), so that its
+ordinates are forces in the high-pressure piston's unit and add with the dividers.
+
 The curve is drawn through the points (French curve); the planimeter gives
 the mean line ("Ausgleichende", height = area / drawn length, = 2 P_i/π for
 the exact curve); where it crosses the curve are α1, α2; between them, above
@@ -45,6 +54,7 @@ True
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import Any, Mapping
 
 import numpy as np
@@ -53,22 +63,23 @@ from .checking import EUCLIDEAN_TOLERANCE, Check
 from ..kernel.errors import GeometryError, InvalidParameter
 from ..kernel.division import check_parts, divide_semicircle
 from ..kernel.instruments import Builder
+from ..kernel.proportional import scale_line
 from ..kernel.protocol import Caption, Provenance
 from . import Construction, Figure, bounded, positive, register, rod_ratio_param
-from .domain import DRAWN_LENGTH, KAPPA_RANGE
+from .domain import AREA_RATIO, DRAWN_LENGTH, KAPPA_RANGE
 from .crank import angle_tolerance, build_frame, crank_angle, point_name, rod_arcs
 from .indicator import BAUMANN, indicator_frame, indicator_givens, pressures_at
 from .indicator import back_pressure as model_back_pressure
 from .indicator import steam_pressure as model_steam_pressure
 from .ordinates import inertia_setup, ordinate_value, point_kind
 from .indicator_card import card_force, card_givens, card_pair, draw_card, load_indicator
-from .revolution import (MACHINES, REVOLUTION_PLATE, build_revolution, crank_shifts, parse_cranks, revolution_checks,
-                         unroll_by_chords)
+from .revolution import (MACHINES, REVOLUTION_PLATE, build_revolution, crank_shifts, engine_cylinders, parse_cranks,
+                         revolution_checks, unroll_by_chords)
 
 __all__ = ["TANGENTIAL", "build_tangential", "tangential_checks", "ok_over_r", "t_over_unit", "free_force",
-           "model_t", "drawn_model", "unrolled_angle", "mean_height", "excess_area", "crossing_angles", "model_summary",
-           "model_summary_sweep",
-           "KAPPA", "FORCES"]
+           "model_t", "baumann_force", "return_free_force", "drawn_model", "unrolled_angle", "mean_height",
+           "excess_area", "crossing_angles", "model_summary", "model_summary_sweep", "KAPPA", "FORCES",
+           "LOW_PRESSURE", "low_force"]
 
 #: Baumann's κ = P/B_max ("Verhältnis des Anfangsbeschleunigungsdrucks zum Anfangskolbendruck"), his first case.
 KAPPA = 8.0
@@ -99,6 +110,47 @@ def _givens(r: Any, rod_ratio: Any, force: str, kappa: Any, pressure_unit: Any, 
     return g
 
 
+#: The low-pressure cylinder of a compound or tandem engine under Baumann's force: illustrative defaults (the
+#: seeds print no compound's diagrams -- seed 004 gives only its totals): receiver admission 1.6 at over a
+#: condenser's 0.15 at, filling 0.35, compression 0.30, its piston 2.5 times the high-pressure one's.
+LOW_PRESSURE = {"lp_filling": 0.35, "lp_admission": 1.6, "lp_back_pressure": 0.15, "lp_compression": 0.30,
+                "lp_kappa": KAPPA, "area_ratio": 2.5}
+
+
+def _low_givens(g: Mapping[str, float], force: str, low: Mapping[str, Any], cards: Any = None) -> dict[str, float]:
+    """The low-pressure cylinder's givens (``lp.``): its own diagram or cards and its piston area over the first's."""
+    out = {"area_ratio": bounded("area ratio F_lp/F_hp", low["area_ratio"], AREA_RATIO)}
+    if force == "indicator":
+        cover, crank = cards
+        out.update(card_givens(cover, "lp.card."))
+        if crank is not None:
+            out.update(card_givens(crank, "lp.crank."))
+        return out
+    try:
+        d = indicator_givens(low["lp_filling"], g["clearance"], low["lp_admission"], low["lp_back_pressure"],
+                             low["lp_compression"], g["pressure_unit"])
+    except InvalidParameter as exc:  # the same rules as the first cylinder's, said of the low-pressure one
+        raise InvalidParameter(f"the low-pressure cylinder (--lp-*): {exc}") from None
+    k = bounded("low-pressure kappa = P/B_max", low["lp_kappa"], KAPPA_RANGE)
+    out.update({f"lp.{key}": d[key] for key in ("filling", "clearance", "admission", "back_pressure", "compression")})
+    out["lp.pressure_ratio"] = d["admission"] / (k * (1.0 + 1.0 / g["rod_ratio"]))
+    return out
+
+
+def low_force(g: Mapping[str, float], force: str, lam: float) -> Any:
+    """The low-pressure cylinder's force along the motion over the whole turn, in at of the first piston's area
+    (its own pressures times F_lp/F_hp); None if the engine has no low-pressure diagram of its own."""
+    if "area_ratio" not in g:
+        return None
+    ratio = g["area_ratio"]
+    if force == "indicator":
+        fn = card_force(g, lam, "lp.")
+    else:
+        fn = baumann_force({key: g[f"lp.{key}"] for key in ("filling", "clearance", "admission", "back_pressure",
+                                                             "compression", "pressure_ratio")}, lam)
+    return lambda w: ratio * fn(w)
+
+
 def _validate(givens: Mapping[str, float]) -> None:
     bounded("crank radius r", givens["r"], DRAWN_LENGTH)
     rod_ratio_param(givens["rod_ratio"])
@@ -109,6 +161,14 @@ def _validate(givens: Mapping[str, float]) -> None:
         indicator_givens(givens["filling"], givens["clearance"], givens["admission"], givens["back_pressure"],
                          givens["compression"], givens["pressure_unit"])
         positive("c v^2/r (pressure_ratio)", givens["pressure_ratio"])
+    if "area_ratio" in givens:
+        bounded("area ratio F_lp/F_hp", givens["area_ratio"], AREA_RATIO)
+    if "lp.card.x0" in givens:
+        card_pair(givens, "lp.")
+    if "lp.admission" in givens:
+        indicator_givens(givens["lp.filling"], givens["lp.clearance"], givens["lp.admission"],
+                         givens["lp.back_pressure"], givens["lp.compression"], givens["pressure_unit"])
+        positive("low-pressure c v^2/r (lp.pressure_ratio)", givens["lp.pressure_ratio"])
 
 
 def _approx(method: str, error: float) -> Provenance:
@@ -128,9 +188,6 @@ def _engine(revolution: Any, cranks: Any, machine: Any, force: str, parts: int) 
         if cranks or machine != "single":
             raise InvalidParameter("--cranks and --machine draw the whole revolution: add --revolution")
         return {}
-    if force == "baumann":
-        raise InvalidParameter("the revolution is built for a unit force (--force unit) or a digitised diagram "
-                               "(--indicator FILE.csv): Baumann's model on the return stroke is not built yet")
     m = MACHINES[machine]
     offsets = parse_cranks(cranks) if cranks else m.cranks
     if machine == "compound" and len(offsets) != 2:
@@ -143,7 +200,12 @@ def _engine(revolution: Any, cranks: Any, machine: Any, force: str, parts: int) 
 def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, force: str, kappa: float,
                      filling: float, clearance: float, admission: float, back_pressure: float, compression: float,
                      pressure_unit: float, revolution: bool = False, cranks: str = "", machine: str = "single",
-                     indicator: str = "", indicator_crank_side: str = "") -> Figure:
+                     indicator: str = "", indicator_crank_side: str = "", indicator_lp: str = "",
+                     indicator_lp_crank_side: str = "", **low: Any) -> Figure:
+    unknown = set(low) - set(LOW_PRESSURE)
+    if unknown:
+        raise InvalidParameter(f"tangential-pressure has no parameter {', '.join(sorted(unknown))}")
+    low = {**LOW_PRESSURE, **low}
     if force not in FORCES:
         raise InvalidParameter(f"force must be one of {', '.join(FORCES)}, got {force!r}")
     cards = None
@@ -156,6 +218,16 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
         cards = (load_indicator(indicator), load_indicator(indicator_crank_side) if indicator_crank_side else None)
     elif force == "indicator":
         raise InvalidParameter("--force indicator needs --indicator FILE.csv")
+    if indicator_lp_crank_side and not indicator_lp:
+        raise InvalidParameter("--indicator-lp-crank-side goes with --indicator-lp (the low-pressure cover side's "
+                               "diagram)")
+    if indicator_lp and not indicator:
+        raise InvalidParameter("--indicator-lp goes with --indicator (the high-pressure cylinder's diagram)")
+    if indicator_lp and not (revolution and machine in ("compound", "tandem")):
+        raise InvalidParameter("--indicator-lp is the low-pressure cylinder of a compound or tandem engine: add "
+                               "--revolution --machine compound (or tandem)")
+    low_cards = (load_indicator(indicator_lp), load_indicator(indicator_lp_crank_side)
+                 if indicator_lp_crank_side else None) if indicator_lp else None
     givens = _givens(r, rod_ratio, force, kappa, pressure_unit, cards, filling=filling, clearance=clearance,
                      admission=admission, back_pressure=back_pressure, compression=compression)
     used = check_parts(parts, method)
@@ -164,6 +236,20 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
     params = {"parts": parts, "method": used, "requested_method": method, "force": force, "plate": PLATE}
     engine = _engine(revolution, cranks, machine, force, parts)
     params.update(engine)
+    # A compound or tandem engine's low-pressure cylinder has its own diagram: always under Baumann's force
+    # (its own givens), with cards when --indicator-lp gives one.
+    own_low = bool(engine) and machine in ("compound", "tandem") and (force == "baumann" or low_cards is not None)
+    if own_low:
+        givens.update(_low_givens(givens, force, low, low_cards))
+        params["low_pressure"] = True
+    else:  # a low-pressure given where there is no low-pressure cylinder of its own: say so, do not ignore it
+        _low_givens({"clearance": BAUMANN["clearance"], "pressure_unit": 1.0, "rod_ratio": givens["rod_ratio"]},
+                    "baumann", low)  # out of its domain first: named with its value
+        stray = [k for k, v in low.items() if v != LOW_PRESSURE[k]]
+        if stray:
+            raise InvalidParameter(f"--{stray[0].replace('_', '-')} belongs to a compound or tandem engine's "
+                                   f"low-pressure cylinder (--revolution --machine compound, under --force baumann "
+                                   f"or with --indicator-lp)")
     if force == "baumann":
         params.update(filling=givens["filling"], compression=givens["compression"])
     b = Builder("tangential-pressure", givens, params)
@@ -178,6 +264,30 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
         vert = ctx.vert
         d = indicator_frame(b, base=axis, head=f["D0"], crank=f["D1"], prefix="ind.")
         scale = d.prefix + "v.crank"
+        # Baumann's assumption ("die Tangentialdruckdiagramme des Hin- und Rückganges gleich"): the crank side's
+        # diagram is the cover side's, drawn from the other dead centre (below the stroke line).
+        d_return = None
+        if engine:
+            with b.group("the crank side's diagram: the cover side's, mirrored (Baumann's assumption: the diagrams "
+                         "of the forward and return strokes are equal)",
+                         "Das Diagramm der Kurbelseite: das der Deckelseite gespiegelt (Baumanns Annahme: die "
+                         "Diagramme des Hin- und Rückganges gleich)"):
+                d_return = indicator_frame(b, base=axis, head=f["D1"], crank=f["D0"], prefix="rind.")
+        return_heights = {}
+        if own_low:
+            with b.group("the low-pressure cylinder: its diagrams in the pressure scale times F_lp/F_hp",
+                         "Der Niederdruckzylinder: seine Diagramme im Druckmaßstab mal F_nd/F_hd"):
+                lp_Ff = b.given_length("lp.Ff", product=("lp.pressure_ratio", "pressure_unit", "area_ratio"),
+                                       de="F/f des Niederdruckzylinders im Druckmaßstab",
+                                       en="the low-pressure cylinder's F/f in the pressure scale")
+                ctx_lp = replace(ctx, Ff=lp_Ff, gf=scale_line(
+                    b, ctx.angle, "lp.gf", length=lp_Ff, toward=("toward", "S", O),
+                    de="Marke F/f (Niederdruck) von S aus", en="mark F/f (low pressure) from S"))
+                lp_scale = ("pressure_unit", "area_ratio")
+                d_lp = indicator_frame(b, base=axis, head=f["D0"], crank=f["D1"], prefix="lp.ind.",
+                                       pressure_scale=lp_scale, given_prefix="lp.")
+                d_lp_return = indicator_frame(b, base=axis, head=f["D1"], crank=f["D0"], prefix="lp.rind.",
+                                              pressure_scale=lp_scale, given_prefix="lp.")
     elif force == "indicator":
         with b.group("perpendicular to the stroke through O", "Senkrechte zum Hub durch O"):
             vert = b.perpendicular_bisector("vert", f["D0"], f["D1"])
@@ -193,6 +303,21 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
                               en="of the crank side (the cover side's mirrored)")
         scale = b.erect_perpendicular("v.crank", f["D1"], axis, O)
         return_heights: dict[int, tuple[str, str]] = {}
+        if own_low:
+            lp_scale = ("pressure_unit", "area_ratio")
+            lp_cover = draw_card(b, low_cards[0], prefix="lp.card.", head=f["D0"], crank=f["D1"], axis=axis,
+                                 pressure_scale=lp_scale, de="der Niederdruck-Deckelseite (Druckmaßstab mal F_nd/F_hd)",
+                                 en="of the low-pressure cover side (pressure scale times F_lp/F_hp)")
+            if low_cards[1] is not None:
+                lp_crank = draw_card(b, low_cards[1], prefix="lp.crank.", head=f["D0"], crank=f["D1"], axis=axis,
+                                     pressure_scale=lp_scale, de="der Niederdruck-Kurbelseite",
+                                     en="of the low-pressure crank side")
+            else:
+                lp_crank = draw_card(b, low_cards[0], prefix="lp.crank.", given_prefix="lp.card.", head=f["D1"],
+                                     crank=f["D0"], axis=axis, mirrored=True, up=(f["D0"], f["D1"]),
+                                     pressure_scale=lp_scale,
+                                     de="der Niederdruck-Kurbelseite (die der Deckelseite gespiegelt)",
+                                     en="of the low-pressure crank side (the cover side's mirrored)")
     else:
         with b.group("perpendicular to the stroke through O", "Senkrechte zum Hub durch O"):
             vert = b.perpendicular_bisector("vert", f["D0"], f["D1"])
@@ -203,6 +328,8 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
                                     de="Marke der Einheitskraft P′ = r", en="mark of the unit force P' = r")
             unit_ray = b.line("ray", O, unit_mark, de="Strahl O–M (Proportionswinkel)", en="ray O-M (proportional angle)")
     heights: dict[int, tuple[str, str]] = {}
+    low_heights: dict[int, tuple[str, str]] = {}
+    low_return: dict[int, tuple[str, str]] = {}
     with b.group(f"tangential pressure at all {n + 1} crank positions", f"Tangentialdruck an allen {n + 1} Kurbelstellungen"):
         for k in range(1, n):
             P = points[k]
@@ -215,17 +342,24 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
                 H = b.intersect(f"H{k}", axis, kH, rule=("toward", f["D0"], f["D1"]), de="H: OH = OK", en="H: OH = OK")
                 h = b.erect_perpendicular(f"h{k}", H, axis, O)
                 if force == "baumann":
-                    ray = b.line(f"ray{k}", O, _free_force_mark(b, f, ctx, d, scale, k, P, n),
-                                 de=f"Strahl O–M{k}", en=f"ray O-M{k}")
+                    marks = _free_force_mark(b, f, ctx, d, scale, k, P, n, d_return)
+                    ray = b.line(f"ray{k}", O, marks[0], de=f"Strahl O–M{k}", en=f"ray O-M{k}")
+                    if engine:
+                        return_heights[k] = _return_height(b, O, marks[1], h, k)
+                    if own_low:
+                        lm = _free_force_mark(b, f, ctx_lp, d_lp, scale, k, P, n, d_lp_return, prefix="lp.",
+                                              ordinate=f"o{k}")
+                        low_heights[k] = _low_height(b, O, lm[0], h, k)
+                        low_return[k] = _return_height(b, O, lm[1], h, k, prefix="lp.")
                 elif force == "indicator":
                     marks = _card_marks(b, f, cover, crank, scale, k, bool(engine))
                     ray = b.line(f"ray{k}", O, marks[0], de=f"Strahl O–M{k}", en=f"ray O-M{k}")
                     if engine:
-                        rray = b.line(f"rray{k}", O, marks[1], de=f"Strahl O–M′{k} (Rückgang)",
-                                      en=f"ray O-M'{k} (return stroke)")
-                        rQ = b.intersect(f"rQ{k}", rray, h, rule=("only",), de=f"rQ{k}: P′·OK/r im Rückgang",
-                                         en=f"rQ{k}: P'·OK/r on the return stroke")
-                        return_heights[k] = (H, rQ)
+                        return_heights[k] = _return_height(b, O, marks[1], h, k)
+                    if own_low:
+                        lm = _card_marks(b, f, lp_cover, lp_crank, scale, k, True, prefix="lp.", ordinate=f"o{k}")
+                        low_heights[k] = _low_height(b, O, lm[0], h, k)
+                        low_return[k] = _return_height(b, O, lm[1], h, k, prefix="lp.")
                 else:
                     ray = unit_ray
                 Q = b.intersect(f"Q{k}", ray, h, rule=("only",), de=f"Q{k}: P′·OK/r (Strahlensatz)",
@@ -233,7 +367,8 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
                 heights[k] = (H, Q)
     if engine:
         build_revolution(b, f, points, n, heights, engine["shifts"], engine["cylinders"],
-                         return_heights if force == "indicator" else None)
+                         return_heights if force != "unit" else None,
+                         low=(low_heights, low_return) if own_low else None, machine=machine)
     else:
         _unrolled(b, f, points, n, heights)
     proto = b.protocol()
@@ -241,12 +376,15 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
 
 
 def _card_marks(b: Builder, f: Mapping[str, str], cover: Any, crank: Any, scale: str, k: int,
-                both: bool) -> tuple[str, str | None]:
+                both: bool, prefix: str = "", ordinate: str | None = None) -> tuple[str, str | None]:
     """The over-pressure at crank position k read on the cards' straightedge lines, marked over B (up = along
     the motion): forward the cover side's line less the crank side's; with *both*, also the return stroke's."""
     X = f"X{k}"
-    with b.group(f"over-pressure at {k} from the indicator cards", f"Überdruck bei {k} aus den Indikatordiagrammen"):
-        o = b.erect_perpendicular(f"o{k}", X, f["axis"], f["O"])
+    p = prefix
+    low = " (Niederdruck)" if p else ""
+    with b.group(f"over-pressure at {k} from the indicator cards" + (" (low pressure)" if p else ""),
+                 f"Überdruck bei {k} aus den Indikatordiagrammen{low}"):
+        o = ordinate or b.erect_perpendicular(f"o{k}", X, f["axis"], f["O"])
         up = ("toward", None, None, 0.0, 1.0)
         out: list[str | None] = []
         for tag, work, against, de, en in (("", cover.forward, crank.forward, "Hingang", "forward stroke"),
@@ -254,36 +392,79 @@ def _card_marks(b: Builder, f: Mapping[str, str], cover: Any, crank: Any, scale:
             if tag and not both:
                 out.append(None)
                 continue
-            E = b.intersect(f"{tag}E{k}", o, work, rule=up, de=f"Druck der arbeitenden Seite ({de})",
+            E = b.intersect(f"{p}{tag}E{k}", o, work, rule=up, de=f"Druck der arbeitenden Seite ({de})",
                             en=f"pressure of the working side ({en})")
-            R = b.intersect(f"{tag}R{k}", o, against, rule=up, de=f"Druck der anderen Seite ({de})",
+            R = b.intersect(f"{p}{tag}R{k}", o, against, rule=up, de=f"Druck der anderen Seite ({de})",
                             en=f"pressure of the other side ({en})")
-            kM = b.circle_segment(f"{tag}M{k}.k", f["D1"], R, E, de="Überdruck auf die Senkrechte in B getragen",
+            kM = b.circle_segment(f"{p}{tag}M{k}.k", f["D1"], R, E, de="Überdruck auf die Senkrechte in B getragen",
                                   en="over-pressure carried to the vertical through B")
-            out.append(b.intersect(f"{tag}M{k}", scale, kM, rule=("toward", R, E),
+            out.append(b.intersect(f"{p}{tag}M{k}", scale, kM, rule=("toward", R, E),
                                    de=f"{tag}M{k}: Überdruck über B (oben: in der Bewegungsrichtung)",
                                    en=f"{tag}M{k}: over-pressure above B (up: along the motion)"))
         return out[0], out[1]
 
 
-def _free_force_mark(b: Builder, f: Mapping[str, str], ctx: Any, d: Any, scale: str, k: int, P: str, n: int) -> str:
-    """P' at crank position k: over-pressure (indicator) less the acceleration force, marked on the r-scale line."""
+def _low_height(b: Builder, O: str, mark: str, h: str, k: int) -> tuple[str, str]:
+    """The low-pressure cylinder's P'·OK/r at crank position k (its P' already in the first piston's force unit)."""
+    ray = b.line(f"lp.ray{k}", O, mark, de=f"Strahl O–M{k} (Niederdruck)", en=f"ray O-M{k} (low pressure)")
+    Q = b.intersect(f"lp.Q{k}", ray, h, rule=("only",), de=f"Q{k}: P′·OK/r (Niederdruck)",
+                    en=f"Q{k}: P'·OK/r (low pressure)")
+    return f"H{k}", Q
+
+
+def _return_height(b: Builder, O: str, mark: str, h: str, k: int, prefix: str = "") -> tuple[str, str]:
+    """The return stroke's P'·OK/r at the mirrored crank point of k: the ray O–M′k meets the same ordinate h_k
+    (the rod line of the mirrored point meets the perpendicular through O at K's mirror image: OK is the same)."""
+    rray = b.line(f"{prefix}rray{k}", O, mark, de=f"Strahl O–M′{k} (Rückgang)", en=f"ray O-M'{k} (return stroke)")
+    rQ = b.intersect(f"{prefix}rQ{k}", rray, h, rule=("only",), de=f"rQ{k}: P′·OK/r im Rückgang",
+                     en=f"rQ{k}: P'·OK/r on the return stroke")
+    return f"H{k}", rQ
+
+
+def _free_force_mark(b: Builder, f: Mapping[str, str], ctx: Any, d: Any, scale: str, k: int, P: str, n: int,
+                     d_return: Any = None, prefix: str = "", ordinate: str | None = None) -> tuple[str, str | None]:
+    """P' at crank position k: over-pressure (indicator) less the acceleration force, marked on the r-scale line.
+
+    With *d_return* (the crank side's diagram, drawn from the other dead centre below the stroke line) also
+    the return stroke's P' at the mirrored crank point 360° − ω_k: the piston stands where it stood at k and
+    its acceleration is the same, so the mass force along the (reversed) motion changes sign -- (298) with the
+    minus sign.  Drawn, the crank side's pressures point down, and "less B along the motion" is the same
+    drawn shift as on the forward stroke: the same compass step from its steam point.  Returns (M_k, M′_k).
+    """
     X = f"X{k}"
-    with b.group(f"free piston force at {k}", f"freie Kolbenkraft bei {k}"):
-        o = b.erect_perpendicular(f"o{k}", X, f["axis"], f["O"])
+    p = prefix
+    low = (" (low pressure)", " (Niederdruck)") if p else ("", "")
+    with b.group(f"free piston force at {k}{low[0]}", f"freie Kolbenkraft bei {k}{low[1]}"):
+        o = ordinate or b.erect_perpendicular(f"o{k}", X, f["axis"], f["O"])
         pts = pressures_at(b, d, o, str(k), envelope=True)
         E, R = pts["steam"], pts["back"]
         dc_p = ctx.D0 if 2 * k <= n else ctx.D1
         dc_2 = ctx.D0 if (4 * k < n or 4 * k > 3 * n) else ctx.D1
-        V = ordinate_value(b, ctx, f"b{k}", P, point_kind(k, n), dc_p, dc_2)
-        kF = b.circle_segment(f"F{k}.k", E, ctx.gf.origin, V, de="Beschleunigungsdruck von der Dampflinie abgezogen",
+        V = ordinate_value(b, ctx, f"ND{k}" if p else f"b{k}", P, point_kind(k, n), dc_p, dc_2)
+        kF = b.circle_segment(f"{p}F{k}.k", E, ctx.gf.origin, V, de="Beschleunigungsdruck von der Dampflinie abgezogen",
                               en="acceleration force taken off the steam line")
-        F = b.intersect(f"F{k}", o, kF, rule=("left", ctx.gf.origin, V), role="result",
+        F = b.intersect(f"{p}F{k}", o, kF, rule=("left", ctx.gf.origin, V), role="result",
                         de=f"F{k}: Rückdruck–F{k} = P′ (freie Kolbenkraft)", en=f"F{k}: back line to F{k} = P' (free force)")
-        kM = b.circle_segment(f"M{k}.k", f["D1"], R, F, de="P′ auf die Senkrechte in B getragen",
+        kM = b.circle_segment(f"{p}M{k}.k", f["D1"], R, F, de="P′ auf die Senkrechte in B getragen",
                               en="P' carried to the vertical through B")
-        return b.intersect(f"M{k}", scale, kM, rule=("toward", R, F), de=f"M{k}: P′ über B (oben positiv)",
-                           en=f"M{k}: P' above B (up = positive)")
+        M = b.intersect(f"{p}M{k}", scale, kM, rule=("toward", R, F), de=f"M{k}: P′ über B (oben positiv)",
+                        en=f"M{k}: P' above B (up = positive)")
+        if d_return is None:
+            return M, None
+    with b.group(f"free piston force on the return stroke at {k}{low[0]}", f"freie Kolbenkraft im Rückgang bei {k}{low[1]}"):
+        pts = pressures_at(b, d_return, o, f"r{k}", envelope=True)
+        E, R = pts["steam"], pts["back"]
+        kF = b.circle_segment(f"{p}rF{k}.k", E, ctx.gf.origin, V,
+                              de="Beschleunigungsdruck mit umgekehrtem Vorzeichen an der Dampflinie der Kurbelseite",
+                              en="acceleration force, its sign reversed, at the crank side's steam line")
+        F = b.intersect(f"{p}rF{k}", o, kF, rule=("left", ctx.gf.origin, V), role="result",
+                        de=f"rF{k}: Rückdruck–rF{k} = P′ im Rückgang", en=f"rF{k}: back line to rF{k} = P' (return)")
+        kM = b.circle_segment(f"{p}rM{k}.k", f["D1"], R, F, de="P′ des Rückgangs auf die Senkrechte in B getragen",
+                              en="the return stroke's P' carried to the vertical through B")
+        # the crank side's diagram stands below the stroke line: along the return motion is R -> F pointing down
+        rM = b.intersect(f"{p}rM{k}", scale, kM, rule=("toward", F, R), de=f"rM{k}: P′ des Rückgangs über B (oben positiv)",
+                         en=f"rM{k}: the return stroke's P' above B (up = positive)")
+        return M, rM
 
 
 def _unrolled(b: Builder, f: Mapping[str, str], points: list[str], n: int, heights: Mapping[int, tuple[str, str]]) -> None:
@@ -355,7 +536,7 @@ def tangential_plate(fig: Figure) -> dict:
     R = fig.replay
     n = fig.params["parts"]
     if fig.params.get("revolution"):  # a revolution's diagrams are lettered by their own steps (each crank, the sum)
-        return {"looks": {}, "furniture": []}
+        return {"looks": {}, "furniture": _cylinder_letters(fig)}
     U0, Un, M0, Mn = R["U0"], R[f"U{n}"], R["M0"], R["Mn"]
     span = abs(Un[0] - U0[0])
     d = 0.018 * span
@@ -374,6 +555,31 @@ def tangential_plate(fig: Figure) -> dict:
         furniture.append({"kind": "lettering", "at": (P[0], U0[1] - 2.2 * d), "text": text})
     looks = {"A1": "unlettered", "A2": "unlettered", "tcurve": "heavy", "mean": "medium", "tbase": "medium"}
     return {"looks": looks, "furniture": furniture}
+
+
+def _cylinder_letters(fig: Figure) -> list[dict]:
+    """HD and ND at a compound's (or tandem's) two cylinder curves, each where it stands clearest of the others."""
+    if not fig.params.get("low_pressure"):
+        return []
+    R = fig.replay
+    n = fig.params["parts"]
+    m = 2 * n
+    d = 0.018 * abs(R[f"U{m}"][0] - R["U0"][0])
+    out = []
+    for i, text in ((0, "HD"), (1, "ND")):
+        best, spot = -1.0, None
+        for j in range(2, m - 1):
+            if f"c{i}.{j}" not in R or f"S{j}" not in R:
+                continue
+            x, y = R[f"c{i}.{j}"]
+            others = [R[f"S{j}"][1], R[f"U{j}"][1], R["M0"][1]] + [R[f"c{o}.{j}"][1] for o in (0, 1)
+                                                                    if o != i and f"c{o}.{j}" in R]
+            clear = min(abs(y - v) for v in others)
+            if clear > best:
+                best, spot = clear, (x, y)
+        if spot is not None:
+            out.append({"kind": "lettering", "at": (spot[0], spot[1] - 1.4 * d), "text": text})
+    return out
 
 
 # --------------------------------------------------------------------------
@@ -405,9 +611,16 @@ def t_over_unit(fig: Figure, k: int) -> float:
     return _up(fig, f"T{k}", f"U{k}") / unit
 
 
-def free_force(fig: Figure, k: int) -> float:
-    """P' at k in at (Baumann force), measured as the height of M_k over B."""
-    return _up(fig, f"M{k}", "D1") / fig.replay.givens["pressure_unit"]
+def free_force(fig: Figure, k: int, prefix: str = "") -> float:
+    """P' at k in at (Baumann force), measured as the height of M_k over B (*prefix* ``lp.``: the low-pressure
+    cylinder's, times F_lp/F_hp)."""
+    return _up(fig, f"{prefix}M{k}", "D1") / fig.replay.givens["pressure_unit"]
+
+
+def return_free_force(fig: Figure, k: int, prefix: str = "") -> float:
+    """P' on the return stroke at the mirrored crank point of k, in at: the height of M′_k over B (*prefix*
+    ``lp.``: the low-pressure cylinder's, times F_lp/F_hp)."""
+    return _up(fig, f"{prefix}rM{k}", "D1") / fig.replay.givens["pressure_unit"]
 
 
 def unrolled_angle(fig: Figure, point: str) -> float:
@@ -465,6 +678,41 @@ def model_force(w: float, g: Mapping[str, float], force: str) -> float:
     x = piston_fraction(w, lam)
     return (model_steam_pressure(x, g) - model_back_pressure(x, g)
             - g["pressure_ratio"] * (math.cos(w) + lam * math.cos(2.0 * w)))
+
+
+def baumann_force(g: Mapping[str, float], lam: float) -> Any:
+    """P' (at) along the motion over the whole turn, Baumann's model on both strokes (arrays of crank angles).
+
+    Forward: steam(x) − back(x) − c(cos ω + λ cos 2ω).  Return (his assumption: the crank side's diagram is
+    the cover side's): the over-pressure at the distance 1 − x from the crank-end dead centre, and the mass
+    force along the reversed motion, + c(cos ω + λ cos 2ω) -- eq. (298) with the minus sign, counted from
+    the crank-end dead centre.  Written here from the formulas, not from the figure.
+
+    >>> g = {"filling": 0.1, "clearance": 0.05, "admission": 7.85, "back_pressure": 0.15, "compression": 0.3,
+    ...      "pressure_ratio": 0.0}
+    >>> g["pressure_ratio"] = 0.9
+    >>> long_rod = baumann_force(g, 1e-9)      # infinite rod: the return stroke repeats the forward one
+    >>> bool(abs(long_rod(math.pi + 1.0) - long_rod(1.0)) < 1e-9)
+    True
+    >>> f = baumann_force(g, 0.2)              # L/r = 5: the rod's term changes sign with the stroke
+    >>> round(float(f(math.pi + 1.0) - f(1.0)), 3) != 0.0
+    True
+    """
+    s1, s0, P, P0, s3, c = (g["filling"], g["clearance"], g["admission"], g["back_pressure"], g["compression"],
+                            g["pressure_ratio"])
+
+    def over(x: Any) -> Any:
+        steam = np.where(x <= s1, P + P0, (P + P0) * (s1 + s0) / (x + s0))
+        back = np.where(x <= 1.0 - s3, P0, P0 * (s3 + s0) / (1.0 - x + s0))
+        return steam - back
+
+    def force(w: Any) -> Any:
+        w = np.asarray(w, dtype=float)
+        x = 0.5 * (1.0 - np.cos(w) + (1.0 - np.sqrt(1.0 - (lam * np.sin(w)) ** 2)) / lam)
+        mass = c * (np.cos(w) + lam * np.cos(2.0 * w))
+        return np.where(np.mod(w, 2.0 * math.pi) <= math.pi, over(x) - mass, over(1.0 - x) + mass)
+
+    return force
 
 
 def model_t(w: float, g: Mapping[str, float], force: str) -> float:
@@ -666,9 +914,34 @@ def tangential_checks(fig: Figure, model: Mapping[str, float] | None = None) -> 
             checks.append(Check(f"T/P at {k}", t_over_unit(fig, k), factor(w, lam), EUCLIDEAN_TOLERANCE,
                                 "proportional angle with P' = r: Euclidean", "P"))
     if fig.params.get("revolution"):
-        if force == "indicator":
-            return checks + revolution_checks(fig, card_force(g, lam), scale / g["pressure_unit"])
-        return checks + revolution_checks(fig)
+        if force == "unit":
+            return checks + revolution_checks(fig)
+        whole = card_force(g, lam) if force == "indicator" else baumann_force(g, lam)
+        low = low_force(g, force, lam)
+        if low is not None:  # the low-pressure cylinder's pressures, drawn times F_lp/F_hp
+            lp_cards = card_pair(g, "lp.") if force == "indicator" else ()
+            lp_top = max([p for c in lp_cards for p in c.forward[1] + c.back[1]]
+                         or [g.get("lp.admission", 0.0) + g.get("lp.back_pressure", 0.0)])
+            scale = max(scale, lp_top * g["area_ratio"])
+        tol = 10 * EUCLIDEAN_TOLERANCE * scale / g["pressure_unit"]
+        sides = [("", whole)] + ([("lp.", low)] if low is not None else [])
+        for k in range(1, n):  # the return stroke's P' at the mirrored crank point 360° − ω_k
+            w = crank_angle(fig, point_name(fig, k))
+            for p, fn in sides:
+                what = " (low pressure, times F_lp/F_hp)" if p else ""
+                if p:
+                    checks.append(Check(f"P' at {k}{what}", free_force(fig, k, p), float(fn(w)), tol,
+                                        "the low-pressure lines met by the ordinate, compass: Euclidean, read in at",
+                                        "at"))
+                checks.append(Check(f"P' on the return stroke at {2 * n - k}{what}", return_free_force(fig, k, p),
+                                    float(fn(2.0 * math.pi - w)), tol, "the crank side's lines met by the ordinate, "
+                                    "compass: Euclidean, read in at", "at"))
+        engine = None
+        if low is not None:
+            layout = engine_cylinders(fig.params["shifts"], fig.params["cylinders"], fig.params["machine"], True)
+            by_shift = dict(zip(fig.params["shifts"], fig.params["offsets"]))
+            engine = [(by_shift[sh], low if which else whole) for sh, which in layout]
+        return checks + revolution_checks(fig, whole, scale / g["pressure_unit"], engine=engine)
     r = g["r"]
     prov = made_by[f"U{n}"].provenance
     length = fig.replay["U0"].distance(fig.replay[f"U{n}"])
@@ -706,12 +979,15 @@ TANGENTIAL = register(Construction(
     sweep_model=lambda g, params: model_summary_sweep(g, params["force"]),
     defaults={"rod_ratio": 5.0, "parts": 18, "method": "auto", "r": 1.0, "force": "baumann", "kappa": KAPPA,
               **BAUMANN, "pressure_unit": 0.2, "revolution": False, "cranks": "", "machine": "single",
-              "indicator": "", "indicator_crank_side": ""},
+              "indicator": "", "indicator_crank_side": "", "indicator_lp": "", "indicator_lp_crank_side": "",
+              **LOW_PRESSURE},
     book_params=({"rod_ratio": 5.0, "parts": 18, "kappa": 8.0}, {"rod_ratio": 5.0, "parts": 18, "kappa": 2.0},
-                 # a compound engine, cranks at 90 degrees: the summed diagram over a revolution and its excess areas
-                 {"rod_ratio": 5.0, "parts": 18, "force": "unit", "revolution": True, "machine": "compound"}),
+                 # a compound engine, cranks at 90 degrees, each cylinder with its own diagram (Baumann's for the
+                 # high-pressure one, the low-pressure one's own, its piston 2.5 times as large): the summed
+                 # diagram over a revolution and its excess areas
+                 {"rod_ratio": 5.0, "parts": 18, "revolution": True, "machine": "compound"}),
     structural=("parts", "method", "force", "filling", "compression", "revolution", "cranks", "machine", "indicator",
-                "indicator_crank_side"),
+                "indicator_crank_side", "indicator_lp", "indicator_lp_crank_side", "lp_filling", "lp_compression"),
     extra={"plate": tangential_plate, "help": {
         "cranks": "tangential-pressure --revolution: crank offsets in degrees ahead of the first, e.g. 0,90 "
                   "(multiples of 180/parts; default: the machine's)",
@@ -721,5 +997,18 @@ TANGENTIAL = register(Construction(
                      "drawing order; x from the head-end dead centre in strokes, p absolute in at)",
         "indicator_crank_side": "tangential-pressure: the crank side's diagram (default: the cover side's mirrored, "
                                 "Baumann's assumption)",
+        "indicator_lp": "tangential-pressure --revolution --machine compound|tandem: the low-pressure cylinder's "
+                        "own cover-side diagram, CSV x,p as --indicator (default: every cylinder has --indicator's)",
+        "indicator_lp_crank_side": "tangential-pressure: the low-pressure crank side's diagram (default: the "
+                                   "low-pressure cover side's mirrored)",
+        "area_ratio": "tangential-pressure, compound/tandem with diagrams of their own: low-pressure piston area "
+                      "over the high-pressure one's, 0.1 .. 20 (default 2.5)",
+        "lp_filling": "tangential-pressure --force baumann, compound/tandem: the low-pressure cylinder's filling "
+                      "s1/s, 0.001 .. 1 (default 0.35, illustrative: the seeds print no compound's diagrams)",
+        "lp_admission": "the low-pressure cylinder's admission pressure in at over its back pressure, 0.001 .. 1000 "
+                        "(default 1.6, illustrative)",
+        "lp_back_pressure": "the low-pressure cylinder's back pressure in at absolute, 0.001 .. 1000 (default 0.15)",
+        "lp_compression": "the low-pressure cylinder's compression s3/s, 0.001 .. 1 (default 0.30)",
+        "lp_kappa": "the low-pressure cylinder's kappa = P/B_max, 0.1 .. 10000 (default 8)",
     }},
 ), validate=_validate)

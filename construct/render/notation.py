@@ -206,6 +206,22 @@ def _revolution(fig: "Figure", lang: str) -> list[str]:
             "über eine Umdrehung" if de else "over a revolution"]
 
 
+def _low_pressure(fig: "Figure", lang: str) -> list[str]:
+    """A compound or tandem engine's low-pressure cylinder with a diagram of its own: its givens, its area ratio."""
+    g = fig.replay.givens
+    if "area_ratio" not in g:
+        return []
+    de = lang == "de"
+    head = "Niederdruck: " if de else "low pressure: "
+    if "lp.admission" in g:
+        own = (f"P = {number(g['lp.admission'], lang)} at, P₀ = {number(g['lp.back_pressure'], lang)} at, "
+               f"s₁ = {_percent(g['lp.filling'], lang)} s, s₃ = {_percent(g['lp.compression'], lang)} s")
+    else:
+        count = sum(1 for k in g if k.startswith("lp.card.x"))
+        own = f"Indikatordiagramm aus {count} Punkten" if de else f"indicator card of {count} points"
+    return [head + own, ("Kolbenfläche ND/HD = " if de else "piston area LP/HP = ") + number(g["area_ratio"], lang)]
+
+
 def _tangential(fig: "Figure", lang: str) -> list[str]:
     g = fig.replay.givens
     if fig.params.get("force") == "unit":
@@ -214,10 +230,18 @@ def _tangential(fig: "Figure", lang: str) -> list[str]:
     # κ = P/B_max (Baumann): the construction keeps c v²/r = P/((1 + r/L) κ) as its given.
     if "admission" not in g:  # a digitised card's force
         return [x for x in [_ratio("r/L", g["rod_ratio"], lang), *_revolution(fig, lang), _parts(fig, lang),
-                            *_card(fig, lang)] if x]
+                            *_card(fig, lang), *_low_pressure(fig, lang)] if x]
     kappa = g["admission"] / (g["pressure_ratio"] * (1.0 + 1.0 / g["rod_ratio"]))
-    return ([f"κ = P/Bmax = {number(round(kappa, 9), lang)}", _ratio("r/L", g["rod_ratio"], lang)]
-            + _diagram(g, lang) + [_scale(g, lang), _parts(fig, lang)])
+    out = ([f"κ = P/Bmax = {number(round(kappa, 9), lang)}", _ratio("r/L", g["rod_ratio"], lang)]
+           + _diagram(g, lang) + [_scale(g, lang), _parts(fig, lang)])
+    if "lp.admission" in g:  # two cylinders, two diagrams: say whose the first givens are
+        out[2] = ("Hochdruck: " if lang == "de" else "high pressure: ") + out[2]
+    if fig.params.get("revolution"):  # the return stroke from the same diagram: Baumann's assumption, said
+        out = [x for x in _revolution(fig, lang) if x] + out + [
+            "Rückgang: dasselbe Diagramm gespiegelt (Baumanns Annahme)" if lang == "de"
+            else "return stroke: the same diagram mirrored (Baumann's assumption)"]
+        out += _low_pressure(fig, lang)
+    return out
 
 
 def _two_cranks(fig: "Figure", lang: str) -> list[str]:

@@ -12,6 +12,12 @@ G_s·D².  The excess work comes
   (its givens by ``--given NAME=VALUE``, e.g. ``--given kappa=2``) and measures its
   excess area (at of piston area × radian), times ``--piston-area`` (cm²) and
   ``--crank-radius`` (m);
+* from your own indicator diagrams, ``--indicator FILE.csv`` (the cover side's card, CSV ``x,p`` as
+  ``construct table tangential-pressure`` reads it; ``--indicator-crank-side``, else the card mirrored,
+  Baumann's assumption) with ``--rod-ratio``: the tangential-pressure construction over a whole
+  revolution (both strokes, each with its own card), the greatest swing of its excess areas
+  (at·rad) times the piston area and the crank radius.  ``--machine compound`` or ``tandem`` with
+  ``--indicator-lp`` and ``--area-ratio`` gives the low-pressure cylinder its own card;
 
 or ``--rim-weight G_s`` skips it (Baumann's worked examples start there).
 
@@ -39,7 +45,7 @@ from ...kernel.errors import InvalidParameter
 from ..common import add_format_option, is_number, number
 
 NAME = "flywheel"
-HELP = ("size a flywheel by Baumann (seed 004): excess work -> rim weight G_s (E = G_s v² δ/g), arms and hub, "
+HELP = ("size a flywheel by Baumann (seed 004): excess work (given, or measured on a diagram or your indicator cards) -> rim weight G_s (E = G_s v² δ/g), arms and hub, "
         "total weight and moment G·D²")
 
 KEYS = ("excess_work", "rim_weight", "arms_hub_weight", "total_weight", "moment")
@@ -60,8 +66,32 @@ def add_arguments(p) -> None:
     p.add_argument("--diagram", choices=DIAGRAMS, help="measure E on this construction's excess area")
     p.add_argument("--given", action="append", default=[], metavar="NAME=VALUE",
                    help="a given of the --diagram construction (repeatable), e.g. --given kappa=2")
-    p.add_argument("--piston-area", type=number, metavar="CM2", help="piston area F in cm² (with --diagram)")
-    p.add_argument("--crank-radius", type=number, metavar="M", help="crank radius in m (with --diagram)")
+    p.add_argument("--revolution", action="store_true",
+                   help="with --diagram: measure E over a whole revolution, the return stroke from his diagram "
+                        "mirrored (the greatest swing of the excess areas), instead of the forward stroke's excess "
+                        "area (Baumann's method, assuming both strokes equal)")
+    p.add_argument("--piston-area", type=number, metavar="CM2",
+                   help="piston area F in cm², 0.01 .. 1e7 (with --diagram or --indicator; the high-pressure "
+                        "piston's for a compound)")
+    p.add_argument("--crank-radius", type=number, metavar="M",
+                   help="crank radius in m, 0.001 .. 1000 (with --diagram or --indicator)")
+    p.add_argument("--indicator", metavar="FILE.csv",
+                   help="measure E on the tangential-pressure construction over a revolution drawn from this "
+                        "digitised indicator diagram of the cover side (CSV x,p: x from the head-end dead centre "
+                        "in strokes, p absolute in at)")
+    p.add_argument("--indicator-crank-side", metavar="FILE.csv",
+                   help="with --indicator: the crank side's diagram (default: the cover side's mirrored, "
+                        "Baumann's assumption)")
+    p.add_argument("--rod-ratio", type=number, metavar="L/r",
+                   help="with --indicator: connecting-rod length over crank radius, 1.05 .. 1000")
+    p.add_argument("--machine", choices=("single", "tandem", "compound"), metavar="single|tandem|compound",
+                   help="with --indicator: the engine (default single; compound: cranks at 0 and 90 degrees)")
+    p.add_argument("--indicator-lp", metavar="FILE.csv",
+                   help="with --indicator and --machine compound|tandem: the low-pressure cylinder's own cover-side "
+                        "diagram (default: every cylinder has --indicator's)")
+    p.add_argument("--area-ratio", type=number, metavar="F_lp/F_hp",
+                   help="with --indicator-lp: low-pressure piston area over the high-pressure one's, 0.1 .. 20 "
+                        "(default 2.5)")
     p.add_argument("--rpm", type=number, required=True, metavar="N", help="revolutions per minute")
     p.add_argument("--fluctuation", type=_fraction, metavar="DELTA",
                    help="degree of irregularity δ = (v_max − v_min)/v_mean, e.g. 1/80 (Ungleichförmigkeitsgrad)")
@@ -94,19 +124,74 @@ def _diagram_work(args) -> tuple[float, str]:
     givens.setdefault("force", "baumann")
     if givens["force"] != "baumann":
         raise InvalidParameter("the flywheel needs the pressure diagram (force=baumann), not the unit force")
+    if "revolution" in givens:
+        raise InvalidParameter("say --revolution, not --given revolution=...")
+    if args.revolution:
+        from ...constructions.revolution import excess_work
+
+        fig = c.figure(revolution=True, **givens)
+        excess = excess_work(fig)
+        return excess * area * radius, (
+            f"greatest swing of the excess areas {excess:.6g} at·rad over a revolution (the return stroke from "
+            f"the same diagram mirrored) measured on the {args.diagram} construction × F = {area:g} cm² × "
+            f"r = {radius:g} m")
     fig = c.figure(**givens)
     excess = excess_area(fig)
     return excess * area * radius, (f"excess area {excess:.6g} at·rad measured on the {args.diagram} construction "
-                                    f"× F = {area:g} cm² × r = {radius:g} m")
+                                    f"(the forward stroke; Baumann: the return stroke's equal) × F = {area:g} cm² "
+                                    f"× r = {radius:g} m")
+
+
+def _card_work(args) -> tuple[float, str]:
+    """E from the user's cards: the tangential-pressure construction over a revolution, its greatest swing."""
+    from ...constructions import get
+    from ...constructions.domain import LENGTH_M, PISTON_AREA
+    from ...constructions.revolution import excess_work
+
+    missing = [o for o, v in (("--piston-area", args.piston_area), ("--crank-radius", args.crank_radius),
+                              ("--rod-ratio", args.rod_ratio)) if v is None]
+    if missing:
+        raise InvalidParameter(f"--indicator needs {' and '.join(missing)} to turn the excess areas into work")
+    if args.excess_work is not None or args.rim_weight is not None or args.diagram is not None:
+        raise InvalidParameter("give --indicator, --diagram, --excess-work or --rim-weight, one of them")
+    if args.given:
+        raise InvalidParameter("--given belongs to --diagram; with --indicator the card gives the pressures")
+    area = PISTON_AREA.check("piston area F (cm²)", args.piston_area)
+    radius = LENGTH_M.check("crank radius (m)", args.crank_radius)
+    fig = get("tangential-pressure").figure(
+        rod_ratio=args.rod_ratio, revolution=True, machine=args.machine or "single", indicator=args.indicator,
+        indicator_crank_side=args.indicator_crank_side or "", indicator_lp=args.indicator_lp or "",
+        **({} if args.area_ratio is None else {"area_ratio": args.area_ratio}))
+    swing = excess_work(fig)
+    sides = "crank side from its own card" if args.indicator_crank_side else \
+        "crank side: the cover side's card mirrored (Baumann's assumption)"
+    if args.indicator_lp:
+        sides += (f"; {fig.params['machine']} engine, the low-pressure cylinder from its own card, its pressures "
+                  f"× F_lp/F_hp = {fig.replay.givens['area_ratio']:g}")
+    return swing * area * radius, (f"greatest swing of the excess areas {swing:.6g} at·rad on the tangential-pressure "
+                                   f"construction over a revolution from the card ({sides}) × F = {area:g} cm² × "
+                                   f"r = {radius:g} m")
 
 
 def run(args) -> int:
     source = None
     work = args.excess_work
-    if args.diagram is not None:
+    card_only = [o for o, v in (("--indicator-crank-side", args.indicator_crank_side), ("--rod-ratio", args.rod_ratio),
+                                ("--machine", args.machine), ("--indicator-lp", args.indicator_lp),
+                                ("--area-ratio", args.area_ratio)) if v is not None]
+    if args.indicator is None and card_only:
+        raise InvalidParameter(f"{', '.join(card_only)} belong(s) to --indicator FILE.csv")
+    if args.area_ratio is not None and args.indicator_lp is None:
+        raise InvalidParameter("--area-ratio goes with --indicator-lp (the low-pressure cylinder's own card)")
+    if args.revolution and args.diagram is None:
+        raise InvalidParameter("--revolution goes with --diagram (with --indicator the whole revolution is measured "
+                               "anyway)")
+    if args.indicator is not None:
+        work, source = _card_work(args)
+    elif args.diagram is not None:
         work, source = _diagram_work(args)
     elif args.given or args.piston_area is not None or args.crank_radius is not None:
-        raise InvalidParameter("--given, --piston-area and --crank-radius belong to --diagram")
+        raise InvalidParameter("--given, --piston-area and --crank-radius belong to --diagram or --indicator")
     for opt in ("rpm", "diameter", "v", "kz", "excess_work", "rim_weight"):
         value = getattr(args, opt)
         if value is not None and not math.isfinite(value):

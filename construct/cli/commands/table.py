@@ -50,6 +50,22 @@ def add_arguments(p) -> None:
                    help="tangential-pressure --revolution: single (default), tandem, compound")
     p.add_argument("--indicator", metavar="FILE.csv",
                    help="tangential-pressure, mass-forces: a digitised indicator diagram of the cover side (x,p)")
+    p.add_argument("--force", default="unit", choices=("unit", "baumann"), metavar="unit|baumann",
+                   help="tangential-pressure: a unit piston force (default), or Baumann's idealised diagram less "
+                        "the acceleration force (a column T in at; return stroke: the diagram mirrored)")
+    p.add_argument("--kappa", type=number, metavar="kappa",
+                   help="tangential-pressure --force baumann: kappa = P/B_max, 0.1 .. 10000 (default 8; Baumann's 8 and 2)")
+    p.add_argument("--indicator-lp", metavar="FILE.csv",
+                   help="tangential-pressure --revolution --machine compound|tandem: the low-pressure cylinder's own "
+                        "cover-side diagram (x,p as --indicator; default: every cylinder has --indicator's)")
+    p.add_argument("--indicator-lp-crank-side", metavar="FILE.csv",
+                   help="the low-pressure crank side's diagram (default: the low-pressure cover side's mirrored)")
+    p.add_argument("--area-ratio", type=number, metavar="F_lp/F_hp",
+                   help="tangential-pressure, compound/tandem: low-pressure piston area over the high-pressure one's, "
+                        "0.1 .. 20 (default 2.5)")
+    p.add_argument("--piston-area", type=number, metavar="F",
+                   help="tangential-pressure with --indicator or --force baumann: the (high-pressure) piston area in "
+                        "cm², 0.01 .. 1e7: a column T_kg, the tangential force in kg")
     p.add_argument("--indicator-crank-side", metavar="FILE.csv",
                    help="the crank side's diagram (default: the cover side's mirrored, Baumann's assumption)")
 
@@ -82,6 +98,10 @@ def run(args) -> int:
         raise InvalidParameter(f"unknown table {args.table!r}; choose one of {', '.join(TABLES)}")
     if (args.indicator or args.indicator_crank_side) and args.table not in ("tangential-pressure", "mass-forces"):
         raise InvalidParameter(f"--indicator goes with the tables tangential-pressure and mass-forces, not {args.table}")
+    if args.table != "tangential-pressure" and (args.force != "unit" or args.kappa is not None or any(
+            v is not None for v in (args.indicator_lp, args.indicator_lp_crank_side, args.area_ratio, args.piston_area))):
+        raise InvalidParameter(f"--force, --kappa, --indicator-lp, --area-ratio and --piston-area go with the table "
+                               f"tangential-pressure, not {args.table}")
     if args.revolution and args.table not in ("tangential-pressure", "mass-forces"):
         raise InvalidParameter(f"--revolution goes with the tables tangential-pressure and mass-forces, not {args.table}")
     if args.table == "piston-path":
@@ -106,7 +126,10 @@ def run(args) -> int:
     elif args.table == "tangential-pressure":
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args), parts=args.parts, method=args.method,
                                         revolution=args.revolution, cranks=args.cranks, machine=args.machine,
-                                        indicator=args.indicator, indicator_crank_side=args.indicator_crank_side)
+                                        indicator=args.indicator, indicator_crank_side=args.indicator_crank_side,
+                                        force=args.force, kappa=args.kappa, indicator_lp=args.indicator_lp,
+                                        indicator_lp_crank_side=args.indicator_lp_crank_side,
+                                        area_ratio=args.area_ratio, piston_area=args.piston_area)
     elif args.table == "flywheel-coefficients":
         cols, rows = TABLES[args.table](kz=args.kz, v=args.v)
     elif args.table == "speed-fluctuation":
@@ -118,6 +141,16 @@ def run(args) -> int:
     else:
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args))
     text = format_table(cols, rows, args.format)
+    if args.force == "baumann" and args.table == "tangential-pressure":
+        print("construct: note: T from Baumann's idealised diagram"
+              + ("; return stroke: the same diagram mirrored (his assumption: the diagrams of the forward and "
+                 "return strokes are equal)" if args.revolution else "")
+              + ("; the low-pressure cylinder: its own idealised diagram (illustrative defaults, see --help of "
+                 "construct replay tangential-pressure: --lp-*)" if args.machine in ("compound", "tandem") else ""),
+              file=sys.stderr)
+    if args.indicator_lp is not None:
+        print("construct: note: the low-pressure cylinder from its own indicator diagram, its pressures times "
+              "--area-ratio in T", file=sys.stderr)
     if args.indicator is not None:
         from ...tables import indicator_note
 

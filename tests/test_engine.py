@@ -13,7 +13,7 @@ import math
 import mpmath
 import pytest
 
-from construct.cli import main
+from construct.cli.main import main
 from construct.constructions import get
 from construct.constructions.revolution import excess_work, revolution_mean, revolution_ordinate
 

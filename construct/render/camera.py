@@ -2,20 +2,26 @@
 
 A group (a macro step: "trisect arc P3P6", "rod arc from 7") is the unit a
 student learns.  Step k is shown through a *view*, a box of the drawing's
-pixel canvas (x, y, w, h; y down) that frames the working region of the
-innermost group around step k -- the box of that group's marks and of the
-points its instruments are set on -- with room around it, so that the
-student sees where the group sits.  The first and the last step, steps
-outside every group, and groups that span most of the figure show the whole
-figure.  Views change only from group to group, never inside one, so the
-picture holds still while a group is drawn; the player and the animation
-move between views smoothly.
+pixel canvas (x, y, w, h; y down) round the place where the step works: its
+own marks, the points its instrument is set on and the points its frame tags
+(:func:`step_focus`), with room around it, so that the student sees where it
+sits.  The camera holds still over a *shot*, a run of steps seen through the
+view of all their working regions, and moves where the work moves
+(:func:`shots`): a group that works in far-apart places (the crank circle,
+then the proportional angle far below) is followed from place to place
+rather than shot as the union of its extent, and a step that reaches far (a
+rod arc struck from the crank circle onto the far crosshead) widens the view
+of the steps about it rather than swinging the camera out and back.  Shots
+end preferably where groups end.  The first step and steps outside every
+group show the whole figure; the last step frames the clean figure of the
+results (:func:`final_box`), not a lone far helper point.  The player and the
+animation move between views smoothly.
 
 Every view has the canvas's aspect ratio and magnifies at most
-:data:`MAX_ZOOM` times.  The work is one pass over the marks and the steps
-(boxes per group path, then one box per step), so it grows with the number
-of steps, not with its square.  Numbers are rounded to hundredths of a pixel:
-the same figure gives the same views on every machine.
+:data:`MAX_ZOOM` times.  The work is linear in the steps (one box per step,
+a dynamic programme that looks back a bounded number of steps).  Numbers are
+rounded to hundredths of a pixel: the same figure gives the same views on
+every machine.
 
 >>> from construct.constructions import get
 >>> from construct.render.scene import build_scene
@@ -148,11 +154,12 @@ def _depth(a: tuple[str, ...], b: tuple[str, ...]) -> int:
 class Framing:
     """How a region of the canvas is framed: the view round it, in the canvas's aspect.
 
-    Room on every side in proportion to the region (*context* of its size), at most
-    :data:`ROOM` of the canvas (a large region is its own context; padding it in
-    proportion would push it to the whole figure); at least a quarter of the canvas
-    wide (:data:`MAX_ZOOM`); the whole canvas where the view would cover more than
-    *whole_above* of it.  Regions are pixel boxes (x0, y0, x1, y1) of the canvas *full*.
+    Room on every side in proportion to the region (*context* of its
+    size), at most :data:`ROOM` of the canvas (a large region is its own context;
+    padding it in proportion would push it to the whole figure); at most
+    :data:`MAX_ZOOM` times magnified; the whole canvas where the view would
+    magnify less than 1 / *whole_above* times.
+    Regions are pixel boxes (x0, y0, x1, y1) of the canvas *full*.
     """
 
     def __init__(self, full: View):
@@ -166,12 +173,16 @@ class Framing:
         w, h = w + 2 * min(context * w, ROOM * fw), h + 2 * min(context * h, ROOM * fh)
         return max(w, h / self.aspect, self.min_w)
 
+    def limit(self, whole_above: float = WHOLE_ABOVE) -> float:
+        """From this view width on the whole canvas is shown."""
+        return whole_above * self.full[2]
+
     def zoom(self, b: Box | None) -> float:
-        """How many times the view of region *b* magnifies the canvas (1: the whole)."""
+        """How many times the view of region *b* magnifies the whole (1: the whole)."""
         if b is None:
             return 1.0
         w = self.width(b[2] - b[0], b[3] - b[1])
-        return 1.0 if w >= WHOLE_ABOVE * self.full[2] else self.full[2] / w
+        return 1.0 if w >= self.limit() else self.full[2] / w
 
     def view(self, b: Box | None, context: float = CONTEXT, whole_above: float = WHOLE_ABOVE) -> View:
         """The view round region *b*, slid inside the canvas where it can (the figure's edge is not a
@@ -181,7 +192,7 @@ class Framing:
             return self.full
         w = self.width(b[2] - b[0], b[3] - b[1], context)
         h = w * self.aspect
-        if w >= whole_above * fw or h >= whole_above * fh:
+        if w >= self.limit(whole_above):
             return self.full
         cx, cy = (b[0] + b[2]) / 2, (b[1] + b[3]) / 2
         x = min(max(cx - w / 2, fx), fx + fw - w)
@@ -230,7 +241,7 @@ def _partition(steps: Sequence, focus: Sequence[Box | None], framing: Framing, a
     """The cheapest shots of steps a..b (0-based, inclusive) as in :func:`shots`, as 1-based runs."""
     m = b - a + 1
     fw = framing.full[2]
-    whole = WHOLE_ABOVE * fw
+    whole = framing.limit()
     width = framing.width
     # log 2 of each step's own magnification (0: a step without a working region frames nothing)
     own = [math.log2(framing.zoom(focus[a + t])) if focus[a + t] is not None else 0.0 for t in range(m)]

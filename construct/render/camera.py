@@ -281,7 +281,7 @@ def _partition(steps: Sequence, focus: Sequence[Box | None], framing: Framing, a
     return runs[::-1]
 
 
-def final_box(scene: Scene) -> Box | None:
+def final_box(scene: Scene, within: Box | None = None) -> Box | None:
     """The box (drawing units) of what the last teaching frame frames: the results, as a plate shows them.
 
     Every mark but the finished groups' helpers remains in the last frame;
@@ -290,6 +290,8 @@ def final_box(scene: Scene) -> Box | None:
     point far off (the vertex S of a proportional angle below the figure) would
     shrink the results to a corner of an empty canvas.  Lines do not count
     (they reach as far as the construction's farthest points; the view cuts them).
+    A helper inside *within* (the view the box gives) counts too: a point the
+    view shows anyway is shown whole, not cut by its edge.
     """
     n = len(scene.steps)
     core: Box | None = None
@@ -310,7 +312,8 @@ def final_box(scene: Scene) -> Box | None:
     near = (core[0] - pad, core[1] - pad, core[2] + pad, core[3] + pad)
     b = core
     for x, y in rest:
-        if near[0] <= x <= near[2] and near[1] <= y <= near[3]:
+        if (near[0] <= x <= near[2] and near[1] <= y <= near[3]) or (
+                within is not None and within[0] <= x <= within[2] and within[1] <= y <= within[3]):
             b = _grow(b, x, y)
     return b
 
@@ -337,6 +340,10 @@ def step_views(scene: Scene, full: View, bbox: Box, px: Callable[[float, float],
         (x0, y1), (x1, y0) = px(b[0], b[1]), px(b[2], b[3])  # y flips
         return (min(x0, x1), min(y0, y1), max(x0, x1), max(y0, y1))
 
+    def to_drawing(x: float, y: float) -> tuple[float, float]:
+        ox, oy = px(0.0, 0.0)
+        return ((x - ox) / scale, (oy - y) / scale)
+
     focus = [to_px(b) for b in step_focus(scene)]
     out: list[View] = []
     for first, last in shots(scene, focus, framing):
@@ -349,7 +356,26 @@ def step_views(scene: Scene, full: View, bbox: Box, px: Callable[[float, float],
     if n > 1:
         # the clean figure of the results, and the last step's own work (its mark is the one the student
         # is looking for, even where the construction calls it a helper)
-        out[-1] = framing.view(_union(to_px(final_box(scene)), focus[-1]), FINAL_CONTEXT, 1.0) if collapse else full
+        out[-1] = full
+        if collapse:
+            b = final_box(scene)
+            for _ in range(3):
+                v = framing.view(_union(to_px(b), focus[-1]), FINAL_CONTEXT, 1.0)
+                if b is None or v == full:
+                    break
+                # what the player's window shows of the view, in drawing units (y flips): the helpers
+                # it shows anyway are framed whole
+                from .viewport import PLAYER_FIGURE_PX  # not at the top: viewport reads the styles, which read this
+
+                ww, wh = PLAYER_FIGURE_PX
+                sw, sh = max(v[2], v[3] * ww / wh), max(v[3], v[2] * wh / ww)
+                cx, cy = v[0] + v[2] / 2, v[1] + v[3] / 2
+                (x0, y1), (x1, y0) = to_drawing(cx - sw / 2, cy - sh / 2), to_drawing(cx + sw / 2, cy + sh / 2)
+                grown = final_box(scene, (x0, y0, x1, y1))
+                if grown == b:
+                    break
+                b = grown
+            out[-1] = v
     return out
 
 

@@ -56,6 +56,13 @@ def test_views_are_boxes_of_the_canvas_in_its_aspect(crank):
     assert any(v[2] < 0.5 * full[2] for v in views)  # some group is seen magnified
 
 
+def _drawn_points(d, steps) -> list[tuple[float, float]]:
+    """The points the steps make and are set on, where the figure draws them (a broken axis moves the far
+    crossheads in), by the protocol's names."""
+    at = {m.name: m.geom for m in d.scene.marks if m.kind == "point"}
+    return [at[n] for s in steps for n in (*s.inputs, *s.outputs) if n in at]
+
+
 def _inside(d, v, x: float, y: float) -> bool:
     px, py = d.vp.px(x, y)
     return v[0] <= px <= v[0] + v[2] and v[1] <= py <= v[1] + v[3]
@@ -70,7 +77,7 @@ def test_a_view_frames_its_steps_work(crank):
         v = d.camera_view(i)
         if v == d.full_view or not s.group:
             continue
-        for x, y in _points_of(fig, [s]):
+        for x, y in _drawn_points(d, [s]):
             assert _inside(d, v, x, y), (i, s.caption.en)
         checked += 1
     assert checked > 5
@@ -252,3 +259,21 @@ def test_internal_names_are_never_shown_as_letters():
         svg = Drawing(scene_for(c, fig), STYLES["teaching"]).layered()
         texts = {"".join(t.itertext()) for t in ET.fromstring(svg.encode()).iter(f"{SVG}text")}
         assert not {t for t in texts if re.fullmatch(r"c\d{2,}|Nb\d+|iP\d+", t)}, name
+
+
+def test_a_storyboard_tile_takes_in_the_work_of_all_its_steps(tangential):
+    """A tile of the storyboard shows the steps since the tile before (the animation's stage): every point
+    they make is in the tile's view, not only the last step's working place."""
+    from construct.render.storyboard import storyboard_steps, storyboard_svg
+
+    _c, fig, d = tangential
+    root = ET.fromstring(storyboard_svg(d).encode())
+    tiles = [e for e in root.iter(f"{SVG}svg") if e is not root and e.get("viewBox")]
+    ends = storyboard_steps(d.scene)
+    assert len(tiles) == len(ends) > 3
+    start = 2  # the first step shows the whole figure by convention, not for its work
+    for tile, end in zip(tiles, ends):
+        x, y, w, h = (float(t) for t in tile.get("viewBox").split())
+        for px, py in (d.vp.px(*p) for p in _drawn_points(d, fig.protocol.steps[start - 1:end])):
+            assert x - 0.01 <= px <= x + w + 0.01 and y - 0.01 <= py <= y + h + 0.01, (end, px, py)
+        start = end + 1

@@ -39,7 +39,7 @@ from typing import Callable, Sequence
 from .scene import Scene, extreme_points
 from .svgdoc import fmt
 
-__all__ = ["step_views", "shots", "step_focus", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of"]
+__all__ = ["step_views", "views_box", "shots", "step_focus", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of"]
 
 #: A view never magnifies the whole figure more than this many times (more would lose where it sits).
 MAX_ZOOM = 4.0
@@ -377,6 +377,26 @@ def step_views(scene: Scene, full: View, bbox: Box, px: Callable[[float, float],
                 b = grown
             out[-1] = v
     return out
+
+
+def views_box(views: Sequence[View], full: View) -> View:
+    """The view that takes in *views* (the steps of a stage of the animation, of a storyboard tile): their
+    one view, or the box round them in the canvas's aspect (the whole canvas where that reaches its edge).
+
+    >>> views_box([(0.0, 0.0, 100.0, 50.0), (300.0, 100.0, 100.0, 50.0)], (0.0, 0.0, 800.0, 400.0))
+    (0.0, 0.0, 400.0, 200.0)
+    """
+    if len(set(views)) == 1:
+        return views[0]
+    x0, y0 = min(v[0] for v in views), min(v[1] for v in views)
+    x1, y1 = max(v[0] + v[2] for v in views), max(v[1] + v[3] for v in views)
+    w = max(x1 - x0, (y1 - y0) * full[2] / full[3])
+    h = w * full[3] / full[2]
+    if w >= full[2] or h >= full[3]:
+        return full
+    x = min(max((x0 + x1) / 2 - w / 2, 0.0), full[2] - w)
+    y = min(max((y0 + y1) / 2 - h / 2, 0.0), full[3] - h)
+    return (round(x, 2), round(y, 2), round(w, 2), round(h, 2))
 
 
 def same_view(a: Sequence[float], b: Sequence[float]) -> bool:

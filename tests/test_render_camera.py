@@ -56,33 +56,108 @@ def test_views_are_boxes_of_the_canvas_in_its_aspect(crank):
     assert any(v[2] < 0.5 * full[2] for v in views)  # some group is seen magnified
 
 
-def test_a_view_frames_its_group_and_the_points_its_instruments_are_set_on(crank):
+def _drawn_points(d, steps) -> list[tuple[float, float]]:
+    """The points the steps make and are set on, where the figure draws them (a broken axis moves the far
+    crossheads in), by the protocol's names."""
+    at = {m.name: m.geom for m in d.scene.marks if m.kind == "point"}
+    return [at[n] for s in steps for n in (*s.inputs, *s.outputs) if n in at]
+
+
+def _inside(d, v, x: float, y: float) -> bool:
+    px, py = d.vp.px(x, y)
+    return v[0] <= px <= v[0] + v[2] and v[1] <= py <= v[1] + v[3]
+
+
+def test_a_view_frames_its_steps_work(crank):
+    """Every step's view holds what the step makes and the points its instrument is set on."""
     _c, fig, d = crank
     steps = fig.protocol.steps
-    by_group = {}
-    for s in steps:
-        if s.group:
-            by_group.setdefault(s.group, []).append(s)
     checked = 0
     for i, s in enumerate(steps[1:-1], start=2):
         v = d.camera_view(i)
         if v == d.full_view or not s.group:
             continue
-        # the innermost group with drawn points: all of them (and its inputs) are inside the view
-        pts = _points_of(fig, by_group[s.group])
-        for x, y in pts:
-            px, py = d.vp.px(x, y)
-            assert v[0] <= px <= v[0] + v[2] and v[1] <= py <= v[1] + v[3], (i, s.group)
+        for x, y in _drawn_points(d, [s]):
+            assert _inside(d, v, x, y), (i, s.caption.en)
         checked += 1
     assert checked > 5
 
 
-def test_the_camera_holds_still_inside_a_group(crank):
+def test_the_camera_holds_still_over_shots_and_never_swings_out_and_back(crank):
+    """The picture holds still while the work stays in one place: the camera does not move at every
+    step, and never goes somewhere for one step only to come back (a rod arc struck from the crank
+    circle onto the far crosshead, then its crossing: the whole stage is seen, not swung between)."""
     _c, fig, d = crank
+    views = d.views
+    n = len(views)
+    moves = sum(1 for k in range(1, n) if views[k] != views[k - 1])
+    assert n / (moves + 1) >= 5  # steps per view, on the average
+    assert not [k + 1 for k in range(1, n - 1) if views[k - 1] == views[k + 1] != views[k]]
+
+
+@pytest.fixture(scope="module")
+def tangential():
+    c = get("tangential-pressure")
+    fig = c.figure(rod_ratio=5.0, parts=18, kappa=8.0)  # the gallery's teaching figure (Baumann, Fig. 26/27)
+    return c, fig, Drawing(scene_for(c, fig), STYLES["teaching"])
+
+
+def _point(fig, name: str) -> tuple[float, float]:
+    p = fig.replay[name]
+    assert isinstance(p, Point)
+    return (p[0], p[1])
+
+
+def test_a_group_in_far_apart_places_is_followed_where_it_works(tangential):
+    """The ordinate at crank point b5 is one group working at the crank circle (Gb5 on the stroke) and at
+    the proportional angle far below (vertex S); the step that takes Vb5 off the proportional angle is
+    shot there, magnified, with S beside it -- not as the union of the group (the whole figure)."""
+    _c, fig, d = tangential
     steps = fig.protocol.steps
-    for i in range(2, len(steps) - 1):
-        if steps[i - 1].group == steps[i].group and steps[i].group:
-            assert d.camera_view(i) == d.camera_view(i + 1), i
+    k = next(s.index for s in steps if "Vb5" in s.outputs)
+    group = steps[k - 1].group
+    # the geometry makes the point of the test: the group reaches from the stroke line to S, far below
+    ys = [y for s in steps if s.group[:len(group)] == group for _x, y in _points_of(fig, [s])]
+    x0, y0, x1, y1 = d.scene.bbox
+    assert max(ys) - min(ys) > 0.4 * (y1 - y0)
+    v, full = d.camera_view(k), d.full_view
+    assert v[2] * v[3] <= 0.25 * full[2] * full[3]  # at least twice magnified
+    for name in ("Vb5", "S", *[n for n in steps[k - 1].inputs if isinstance(fig.replay.get(n), Point)]):
+        assert _inside(d, v, *_point(fig, name)), name
+    assert not _inside(d, v, *_point(fig, "Gb5")) and not _inside(d, v, *_point(fig, "O"))
+
+
+def _result_points(fig) -> list[str]:
+    return [n for s in fig.protocol.steps if s.role in ("result", "given") for n in s.outputs
+            if isinstance(fig.replay.get(n), Point)]
+
+
+@pytest.mark.parametrize("name, params", [("tangential-pressure", dict(rod_ratio=5.0, parts=18, kappa=8.0)),
+                                          ("inertia-curve", dict(rod_ratio=4.0))])
+def test_the_last_frame_frames_the_results_not_a_far_helper(name, params, tangential):
+    """The last teaching frame shows the results as a clean figure: every result and given point in view,
+    the vertex S of the proportional angle (a helper far below them) left out, so the results are seen
+    larger than in the whole figure; the whole figure is still the first step's view."""
+    c = get(name)
+    if name == "tangential-pressure":
+        _c, fig, d = tangential
+    else:
+        fig = c.figure(**params)
+        d = Drawing(scene_for(c, fig), STYLES["teaching"])
+    n = len(fig.protocol.steps)
+    last, full = d.camera_view(n), d.full_view
+    results = _result_points(fig)
+    assert len(results) > 10
+    for r in results:
+        assert _inside(d, last, *_point(fig, r)), r
+    # S is a helper (not a result), and lies farther below the results than they are high
+    assert "S" not in results
+    ry = [_point(fig, r)[1] for r in results]
+    sy = _point(fig, "S")[1]
+    assert min(ry) - sy > 0.5 * (max(ry) - min(ry))
+    assert not _inside(d, last, *_point(fig, "S"))
+    assert last[2] < 0.8 * full[2]
+    assert d.camera_view(1) == full
 
 
 def test_the_camera_is_stored_with_the_step_in_the_layered_figure_and_the_player(tmp_path):
@@ -184,3 +259,21 @@ def test_internal_names_are_never_shown_as_letters():
         svg = Drawing(scene_for(c, fig), STYLES["teaching"]).layered()
         texts = {"".join(t.itertext()) for t in ET.fromstring(svg.encode()).iter(f"{SVG}text")}
         assert not {t for t in texts if re.fullmatch(r"c\d{2,}|Nb\d+|iP\d+", t)}, name
+
+
+def test_a_storyboard_tile_takes_in_the_work_of_all_its_steps(tangential):
+    """A tile of the storyboard shows the steps since the tile before (the animation's stage): every point
+    they make is in the tile's view, not only the last step's working place."""
+    from construct.render.storyboard import storyboard_steps, storyboard_svg
+
+    _c, fig, d = tangential
+    root = ET.fromstring(storyboard_svg(d).encode())
+    tiles = [e for e in root.iter(f"{SVG}svg") if e is not root and e.get("viewBox")]
+    ends = storyboard_steps(d.scene)
+    assert len(tiles) == len(ends) > 3
+    start = 2  # the first step shows the whole figure by convention, not for its work
+    for tile, end in zip(tiles, ends):
+        x, y, w, h = (float(t) for t in tile.get("viewBox").split())
+        for px, py in (d.vp.px(*p) for p in _drawn_points(d, fig.protocol.steps[start - 1:end])):
+            assert x - 0.01 <= px <= x + w + 0.01 and y - 0.01 <= py <= y + h + 0.01, (end, px, py)
+        start = end + 1

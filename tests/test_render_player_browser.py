@@ -277,7 +277,9 @@ def test_player_camera_keeps_letters_on_their_points(browser, tmp_path):
         wx, wy, wh = whole[i]
         assert zh == pytest.approx(wh, rel=0.15), i  # the same size on the screen
         assert (zx * zx + zy * zy) ** 0.5 < 4.5 * zh, i  # beside its point, not drifted away
-        moved += abs(zx - wx) > 1.5 or abs(zy - wy) > 1.5
+        # placed again: another offset for its size (a view between two zoom levels shows the level's
+        # picture magnified, letters and their offsets alike, by up to the ratio of the levels)
+        moved += abs(zx / zh - wx / wh) > 0.125 or abs(zy / zh - wy / wh) > 0.125
     # letters move only where a zoom level placed them again (never all of them)
     assert moved < len(common)
     page.close()

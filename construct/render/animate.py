@@ -91,22 +91,12 @@ def _keyed(f, attribute: str, values: list[str], times: list[float], total: floa
 
 
 def _stage_view(d: Drawing, first: int, last: int) -> tuple[float, float, float, float]:
-    """The view of a stage: its one step's view, or the box round the views of its steps in the canvas's aspect."""
+    """The view of a stage: its one step's view, or the box round the views of its steps (:func:`views_box`)."""
+    from .camera import views_box
+
     if first >= last:
         return d.camera_view(last)
-    vs = [d.camera_view(k) for k in range(first, last + 1)]
-    if len(set(vs)) == 1:
-        return vs[0]
-    full = d.full_view
-    x0, y0 = min(v[0] for v in vs), min(v[1] for v in vs)
-    x1, y1 = max(v[0] + v[2] for v in vs), max(v[1] + v[3] for v in vs)
-    w = max(x1 - x0, (y1 - y0) * full[2] / full[3])
-    h = w * full[3] / full[2]
-    if w >= full[2] or h >= full[3]:
-        return full
-    x = min(max((x0 + x1) / 2 - w / 2, 0.0), full[2] - w)
-    y = min(max((y0 + y1) / 2 - h / 2, 0.0), full[3] - h)
-    return (round(x, 2), round(y, 2), round(w, 2), round(h, 2))
+    return views_box([d.camera_view(k) for k in range(first, last + 1)], d.full_view)
 
 
 def _camera(d: Drawing, ends: list[int], dt: float, total: float) -> tuple[Any, Any, Any]:

@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import math
 
+from .camera import views_box
 from .scene import Scene
 from .svg import Drawing
 from .svgdoc import fmt
@@ -116,8 +117,10 @@ def storyboard_svg(drawing: Drawing, *, columns: int = 4) -> str:
         col, row = (i - 1) % columns, (i - 1) // columns
         tx, ty = gap + col * (tw + gap), head + row * cell_h
         if style.camera:
-            # the camera's view of the tile's last step, as the player and the animation show it
-            v = drawing.camera_view(k)
+            # the camera's views of the tile's steps, taken in together as the animation shows a stage (but for
+            # the first step's: it shows the whole figure by convention, not for its work)
+            v = views_box([drawing.camera_view(j) for j in range(max(bounds[i - 1] + 1, min(2, k)), k + 1)],
+                          drawing.full_view)
             half = max(v[2] / 2, v[3] / 2 / aspect_t, 1e-12)
             px, py = v[0] + v[2] / 2, v[1] + v[3] / 2
         else:
@@ -131,7 +134,7 @@ def storyboard_svg(drawing: Drawing, *, columns: int = 4) -> str:
         if style.camera:
             from .camera import level, zoom_of
 
-            extra["class_"] = f"zl{level(zoom_of(drawing.camera_view(k), drawing.full_view))}"
+            extra["class_"] = f"zl{level(zoom_of(v, drawing.full_view))}"
         view = f.svg(insert=(fmt(tx), fmt(ty)), size=(fmt(tw), fmt(th)), viewBox=box, **extra)
         earlier = f.g(opacity=fmt(style.earlier_opacity)) if style.earlier_opacity < 1.0 else f.g()
         for name in drawing.LAYERS:

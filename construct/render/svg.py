@@ -208,7 +208,7 @@ class Drawing:
             if v not in done:
                 x, y, w, h = v
                 cx, cy = x + w / 2, y + h / 2
-                for _ in range(6):
+                for _ in range(12):  # the level can change as the view grows, moving other letters
                     z = full[2] / w
                     zl = ZOOM_LEVELS[level(z)]
                     a = letters_at(level(z))
@@ -243,7 +243,10 @@ class Drawing:
         st, sc = self.style, self.scene
         full = self.full_view
         W, H = PLAYER_FIGURE_PX
-        marks = {m.step: m for m in sc.marks if m.id in self._tag_spots}
+        marks: dict[int, list] = {}  # a step may tag several points (the ends S1, S2 of a perpendicular)
+        for m in sc.marks:
+            if m.id in self._tag_spots:
+                marks.setdefault(m.step, []).append(m)
         views = list(self.views)
         by_view: dict[tuple, list[int]] = {}
         for k, v in enumerate(views, start=1):
@@ -254,8 +257,8 @@ class Drawing:
             cx, cy = x + w / 2, y + h / 2
             lvl = level(zoom_of(v, full))
             zl = ZOOM_LEVELS[lvl]
-            shown = [marks[s] for k in ks for s in {k} | set(self.input_steps(k)) if s in marks
-                     and f" h{lvl}" not in self._tag_hidden.get(marks[s].id, "")]
+            shown = [m for k in ks for s in {k} | set(self.input_steps(k)) for m in marks.get(s, ())
+                     if f" h{lvl}" not in self._tag_hidden.get(m.id, "")]
             if not shown:
                 continue
             q = max(w / W, h / H)

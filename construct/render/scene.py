@@ -380,12 +380,15 @@ def _on_curve_points(steps: Iterable[Step], objects: Replay,
 
 
 def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: bool = False,
-                break_axis: bool = True, furniture: tuple = (), looks: "dict[str, str] | None" = None) -> Scene:
+                break_axis: bool = True, furniture: tuple = (), looks: "dict[str, str] | None" = None,
+                panels: tuple = ()) -> Scene:
     """The marks of a built or replayed figure (anything with ``.protocol`` and ``.replay``).
 
     With *plate* the scene is what a book plate shows (:func:`plate_names`):
     the results and the curves and points that locate them, each curve drawn
     only as far as the shown points on it, every construction step left out.
+    *panels* (:class:`construct.render.plate.Panel`) lay a plate's sheet out (:func:`lay_out`);
+    a sheet laid out so is not broken.
     """
     protocol: Protocol = figure.protocol
     objects: Replay = figure.replay
@@ -439,7 +442,11 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 marks.append(Mark(mid, kind="curve", geom=tuple((p[0], p[1]) for p in obj.curve_points()),
                                   straight=getattr(obj, "kind", "") == "polyline", **common))
     breaks: tuple[tuple[float, float, float], ...] = ()
-    if break_axis and (shown is None or furniture):
+    if panels:
+        marks = lay_out(marks, panels, margin, 1e-9 * max(span, 1.0))
+        xs = [m.geom[0] for m in marks if m.kind == "point"] or xs
+        ys = [m.geom[1] for m in marks if m.kind == "point"] or ys
+    elif break_axis and (shown is None or furniture):
         # a plate keeps more of the broken stretch: the rod drawn across it stays a shallow line
         marks, furniture, breaks = _break(marks, tuple(furniture), BREAK_KEEP if shown is None else PLATE_BREAK_KEEP)
         if breaks:
@@ -530,6 +537,80 @@ def _break(marks: list[Mark], furniture: tuple = (),
         out.append(m if g is m.geom else dataclasses.replace(m, geom=g))
     # the left stretch now ends at hi - keep: the kept piece of the broken axis is [hi - keep, hi]
     return out, tuple(shifted(it, sx) for it in furniture), ((hi - keep, keep, hi - lo),)
+
+
+def lay_out(marks: list[Mark], panels: tuple, margin: float, tol: float) -> list[Mark]:
+    """The marks laid out in a plate's panels: each mark drawn once in every panel whose patterns match its
+    name, moved by that panel's shift; a mark no panel names stays.
+
+    A line drawn in a panel reaches over that panel's points on it (plus *margin*, as every line does), so
+    the stroke line under two diagrams is drawn under each; copies that fall on one line (an ordinate through
+    two panels one above the other) are drawn as one line over all their points.  The first copy keeps the
+    mark's id, the others add ``-panel<j>``.
+
+    >>> from construct.render.plate import Panel
+    >>> p = Mark("p", 1, "P", "point", (0.0, 0.0), "result", "", "")
+    >>> q = Mark("q", 1, "Q", "point", (1.0, 0.0), "result", "", "")
+    >>> ax = Mark("ax", 1, "axis", "segment", (-9.0, 0.0, 9.0, 0.0), "result", "", "")
+    >>> out = lay_out([p, q, ax], (Panel(("P", "Q", "axis")), Panel(("Q", "axis"), (0.0, 3.0))), 0.5, 1e-9)
+    >>> [(m.id, m.geom) for m in out]  # doctest: +NORMALIZE_WHITESPACE
+    [('p', (0.0, 0.0)), ('q', (1.0, 0.0)), ('q-panel1', (1.0, 3.0)),
+     ('ax', (-0.5, 0.0, 1.5, 0.0)), ('ax-panel1', (-1.5, 3.0, 3.5, 3.0))]
+    """
+    pats = [[re.compile(p) for p in panel.names] for panel in panels]
+    homes = {m.id: [i for i, ps in enumerate(pats) if any(p.fullmatch(m.name) for p in ps)] for m in marks}
+    points = [[m.geom for m in marks if m.kind == "point" and i in homes[m.id]] for i in range(len(panels))]
+    out: list[Mark] = []
+    for m in marks:
+        ins = homes[m.id]
+        if not ins:
+            out.append(m)
+            continue
+        if m.kind == "segment":
+            geoms = _segment_copies(m.geom, [(tuple(panels[i].shift), points[i]) for i in ins], margin, tol)
+        else:
+            geoms = [_moved(m, tuple(panels[i].shift)) for i in ins]
+        out.extend(dataclasses.replace(m, id=m.id if j == 0 else f"{m.id}-panel{j}", geom=g)
+                   for j, g in enumerate(geoms))
+    return out
+
+
+def _moved(m: Mark, shift: tuple[float, float]) -> tuple:
+    dx, dy = shift
+    g = m.geom
+    if m.kind == "point":
+        return (g[0] + dx, g[1] + dy)
+    if m.kind == "segment":
+        return (g[0] + dx, g[1] + dy, g[2] + dx, g[3] + dy)
+    if m.kind in ("circle", "arc"):
+        return (g[0] + dx, g[1] + dy) + tuple(g[2:])
+    return tuple((x + dx, y + dy) for x, y in g)  # curve, area
+
+
+def _segment_copies(geom: tuple, homes: list, margin: float, tol: float) -> list[tuple]:
+    """A segment's copies, one per (shift, that panel's points): each over the points on it, collinear ones merged."""
+    x1, y1, x2, y2 = geom
+    length = math.hypot(x2 - x1, y2 - y1) or 1.0
+    ux, uy = (x2 - x1) / length, (y2 - y1) / length
+    nx, ny = -uy, ux
+    lines: list[list[float]] = []  # [offset across, t0, t1] in the frame of the unmoved line
+    for (dx, dy), pts in homes:
+        on = [(px - x1) * ux + (py - y1) * uy for px, py in pts
+              if abs((px - x1) * nx + (py - y1) * ny) <= tol * max(1.0, length)]
+        if on:
+            pad = margin * (5.0 if max(on) - min(on) <= tol * max(1.0, length) else 1.0)
+            t0, t1 = min(on) - pad, max(on) + pad
+        else:
+            t0, t1 = 0.0, length
+        off, along = dx * nx + dy * ny, dx * ux + dy * uy
+        for ln in lines:
+            if abs(ln[0] - off) <= tol * max(1.0, length):
+                ln[1], ln[2] = min(ln[1], t0 + along), max(ln[2], t1 + along)
+                break
+        else:
+            lines.append([off, t0 + along, t1 + along])
+    return [(x1 + off * nx + t0 * ux, y1 + off * ny + t0 * uy, x1 + off * nx + t1 * ux, y1 + off * ny + t1 * uy)
+            for off, t0, t1 in lines]
 
 
 def plate_names(protocol: Protocol, objects: Replay) -> set[str]:

@@ -345,3 +345,16 @@ def test_table_dead_centre_option(capsys):
     rows = [tuple(map(float, line.split(","))) for line in capsys.readouterr().out.splitlines()[1:]]
     assert rows[4][0] == 180.0 and rows[4][1] == pytest.approx(excess_mp(4, 4, 5.0, "head-end"), abs=1e-12)
     assert main(["table", "speed-fluctuation", "--rod-ratio", "5", "--step", "45", "--dead-centre", "middle"]) == 2
+
+
+def test_no_view_cuts_a_letter_of_the_stroke_line(tmp_path):
+    """Issue 16: at steps 620-624 (crank position 20 of the infinite rod, § 146's start at B1) the player's
+    window cut the letter 4′ in half: widening the view took in one piston position's letter per round and
+    cut the next along the row 3′…11′, and the widening stopped after six rounds."""
+    from construct.regress.lint import lint_path
+
+    out = tmp_path / "r"
+    assert main(["replay", "two-cranks", "--parts", "12", "--style", "teaching", "--frames", "none",
+                 "--out", str(out)]) == 0
+    report = lint_path(out)
+    assert [f.line() for f in report.findings if f.kind == "outside"] == []

@@ -65,6 +65,8 @@ LOOKS_CSS = (
     ".dashdot{stroke-dasharray:14 3 2 3;stroke-width:0.7px}",
     ".centre{stroke-dasharray:18 3 2 3;stroke-width:0.5px}",
     ".dashed{stroke-dasharray:6 4}",
+    # a result the plate shows otherwise (the stroke s, dimensioned with arrowheads over the centre line)
+    ".hidden{display:none}",
 )
 
 

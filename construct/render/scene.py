@@ -19,6 +19,7 @@ True
 from __future__ import annotations
 
 import bisect
+import collections
 import dataclasses
 import functools
 import math
@@ -117,9 +118,16 @@ class Scene:
         kinds = {"segment": "line", "arc": "circle"}
         makers = {n: s for s in self.steps for n in s.outputs}
         objects = {}
+        lettered_at = {}
         for m in self.marks:
-            s = makers[m.name]
+            s = makers.get(m.name)
+            if s is None:  # the point a straight line is lettered at (build_scene): the line goes by that letter
+                lettered_at[m.name[:-len(".at")]] = m.label
+                continue
             objects[m.name] = (kinds.get(m.kind, m.kind), m.label, s.op, tuple(s.inputs))
+        for name, text in lettered_at.items():
+            kind, _, op, inputs = objects[name]
+            objects[name] = (kind, text, op, inputs)
         for name, s in makers.items():  # what is not drawn (a compass opening J.h1) goes by its short name
             objects.setdefault(name, ("length", None, s.op, tuple(s.inputs)))
         return Reader(objects)
@@ -414,6 +422,11 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 have = on.setdefault(name, [])
                 have.extend(p for n, p in shown_pts if _on(obj, p, tol) and p not in have)
     marks: list[Mark] = []
+    lettered: dict[str, tuple[str, bool]] = {}  # lettered straight lines: their letter, whether in a fan
+    fans: dict[str, list[str]] = collections.defaultdict(list)  # lettered straight lines by their first point
+    for s in protocol.steps:
+        if s.op == "polyline" and s.outputs[0] in dict(s.labels):
+            fans[s.inputs[0]].append(s.outputs[0])
     for s in protocol.steps:
         labels = dict(s.labels)
         for name in s.outputs:
@@ -422,6 +435,8 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 continue
             mid = f"s{s.index:04d}-{_safe_id(name)}"
             label = labels.get(name)
+            if label and "{∠" in label:
+                label = reading(label, objects)
             if "unlettered" in (looks or {}).get(name, "").split():
                 label = None  # the plate letters it otherwise (an abscissa, as the book does)
             common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
@@ -439,8 +454,14 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                                       geom=tuple((p[0], p[1]) for p in ring), hatch=obj.hatch_deg, **common))
             elif hasattr(obj, "curve_points"):
                 # a polyline is drawn as it is measured (y_at, length): straight from point to point
-                marks.append(Mark(mid, kind="curve", geom=tuple((p[0], p[1]) for p in obj.curve_points()),
-                                  straight=getattr(obj, "kind", "") == "polyline", **common))
+                straight = getattr(obj, "kind", "") == "polyline"
+                pts = tuple((p[0], p[1]) for p in obj.curve_points())
+                if straight and label:
+                    # lettered at a point of its own on it, placed once the sheet is laid out (below)
+                    marks.append(Mark(mid, kind="curve", geom=pts, straight=True, **{**common, "label": None}))
+                    lettered[mid] = (label, len(fans[s.inputs[0]]) >= 3)
+                else:
+                    marks.append(Mark(mid, kind="curve", geom=pts, straight=straight, **common))
     breaks: tuple[tuple[float, float, float], ...] = ()
     if panels:
         marks = lay_out(marks, panels, margin, 1e-9 * max(span, 1.0))
@@ -452,6 +473,8 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
         if breaks:
             xs = [x for m in marks if m.kind == "point" for x in (m.geom[0],)] or xs
             ys = [y for m in marks if m.kind == "point" for y in (m.geom[1],)] or ys
+    if lettered:
+        marks = _letter_lines(marks, lettered, breaks)
     # Grow the box by what the curves reach (full circles, arcs, line ends), the plate's furniture and the margin.
     bx0, by0, bx1, by1 = min(xs), min(ys), max(xs), max(ys)
     if furniture:
@@ -498,8 +521,8 @@ def _break(marks: list[Mark], furniture: tuple = (),
     from .plate import anchors, shifted
     ivals = []
     for m in marks:
-        if m.kind == "segment":
-            continue  # the stroke line spans everything
+        if m.kind == "segment" or (m.kind == "curve" and m.straight and len(m.geom) == 2):
+            continue  # the stroke line spans everything; a rod drawn to its crosshead crosses the break
         xs = [p[0] for p in extreme_points(m)]
         if xs:
             ivals.append((min(xs), max(xs)))
@@ -537,6 +560,76 @@ def _break(marks: list[Mark], furniture: tuple = (),
         out.append(m if g is m.geom else dataclasses.replace(m, geom=g))
     # the left stretch now ends at hi - keep: the kept piece of the broken axis is [hi - keep, hi]
     return out, tuple(shifted(it, sx) for it in furniture), ((hi - keep, keep, hi - lo),)
+
+
+#: A label that is a reading of the figure: ``{∠A O B}`` is written as the angle AOB measured on the replayed
+#: figure, in degrees and minutes as the books print it (61°19′), so that a replay with other givens letters
+#: its own angles.
+READING = re.compile(r"\{∠(\S+) (\S+) (\S+)\}")
+
+
+def reading(label: str, objects: Any) -> str:
+    """*label* with every reading ``{∠A O B}`` replaced by the angle AOB measured on *objects*.
+
+    >>> from construct.kernel.geometry import Point
+    >>> reading("ω = {∠A O B}", {"A": Point(1.0, 0.0), "O": Point(0.0, 0.0), "B": Point(0.5, 3 ** 0.5 / 2)})
+    'ω = 60°00′'
+    """
+    from .plate import dms
+
+    def angle(m: re.Match) -> str:
+        a, o, b = (objects[n] for n in m.groups())
+        ua = math.atan2(a[1] - o[1], a[0] - o[0])
+        ub = math.atan2(b[1] - o[1], b[0] - o[0])
+        w = abs((ub - ua + math.pi) % TWO_PI - math.pi)
+        return dms(w)
+
+    return READING.sub(angle, label)
+
+
+def _letter_lines(marks: list[Mark], lettered: dict, breaks: tuple) -> list[Mark]:
+    """Each lettered straight line followed by the point its letter stands at.
+
+    A line (the crank r, the stroke s = 2r) is lettered at its middle -- a rod drawn across a broken axis
+    at the middle of its part beside the crank -- on a point of its own that the drawing does not show
+    (look ``hidden``; an auxiliary one).  A fan of lettered lines from one point (the cranks of Tabelle 2)
+    is lettered at the lines' far ends, where they stand furthest apart, beside the points they were
+    drawn to, with the lines' own role (their letters are placed with the results').
+    """
+    out: list[Mark] = []
+    for m in marks:
+        out.append(m)
+        got = lettered.get(m.id)
+        if got is None:
+            continue
+        label, fan = got
+        pts = m.geom
+        at = pts[-1] if fan else middle(pts)
+        for x0, w, _ in breaks:
+            (ax, ay), (bx, by) = pts[0], pts[-1]
+            if len(pts) == 2 and min(ax, bx) < x0 + w and max(ax, bx) > x0 + w and not fan:
+                x = (x0 + w + max(ax, bx)) / 2.0  # the middle of the part right of the break
+                at = (x, ay + (by - ay) * (x - ax) / (bx - ax))
+        out.append(dataclasses.replace(m, id=f"{m.id}-at", kind="point", geom=(at[0], at[1]),
+                                       name=f"{m.name}.at", role=m.role if fan else "auxiliary", label=label,
+                                       look="hidden", straight=False))
+    return out
+
+
+def middle(pts: tuple, at: float = 0.5) -> tuple[float, float]:
+    """The point half way (or the fraction *at* of the way) along a polyline.
+
+    >>> middle(((0.0, 0.0), (2.0, 0.0), (2.0, 2.0))), middle(((0.0, 0.0), (4.0, 0.0)), 0.75)
+    ((2.0, 0.0), (3.0, 0.0))
+    """
+    lengths = [math.dist(p, q) for p, q in zip(pts, pts[1:])]
+    half = sum(lengths) * at
+    for (p, q), d in zip(zip(pts, pts[1:]), lengths):
+        if half <= d and d > 0.0:
+            t = half / d
+            return (p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]))
+        half -= d
+    return (pts[-1][0], pts[-1][1])
 
 
 def lay_out(marks: list[Mark], panels: tuple, margin: float, tol: float) -> list[Mark]:

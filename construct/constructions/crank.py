@@ -292,6 +292,8 @@ def build_crank_angle(*, rod_ratio: float, divisions: int, r: float) -> Figure:
     m = divisions
     with b.group(f"stroke divided into {m} equal parts", f"Hub in {m} gleiche Teile geteilt"):
         marks = [f["D0"]] + (b.divide_segment("x", f["D0"], f["D1"], m, line=f["axis"]) if m > 1 else []) + [f["D1"]]
+        for j in range(1, m):  # numbered as their crank points: the tenth j of the stroke gives the crank point j
+            b.set_label(marks[j], str(j))
     with b.group("rod length swung back to the crank circle", "Schubstangenlänge auf den Kurbelkreis zurückgeschlagen"):
         for j, x in enumerate(marks):
             with b.group(f"crank angle for {j}/{m} of the stroke", f"Kurbelwinkel zu {j}/{m} Hub"):

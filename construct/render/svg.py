@@ -1030,8 +1030,6 @@ class Drawing:
         # the furniture first, the break marks over it (they open the rod and the axis for the gap)
         elems = furniture_elements(self.scene.furniture, self.vp.px, self.vp.scale, f, size=self.style.label_size)
         lines = [m.geom for m in self.scene.marks if m.kind == "segment"]
-        lines += [(*m.geom[0], *m.geom[1]) for m in self.scene.marks  # a rod drawn to its crosshead
-                  if m.kind == "curve" and m.straight and len(m.geom) == 2]
         lines += [(*it.a, *it.b) for it in self.scene.furniture if isinstance(it, Stroke)]
         for x0, w, _left_out in self.scene.breaks:
             # on every line crossing the break: a gap in paper colour and two slanted strokes

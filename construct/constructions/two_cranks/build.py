@@ -225,7 +225,10 @@ def _work(b: Builder, part: _Part, speed: _Speed, W_at: tuple[float, float], n: 
                 a2, c2 = part.pistons[(start + j - 1 + half) % m], part.pistons[(start + j + half) % m]
                 k1 = b.circle_segment(f"{tag}U{j}.k", ends[-1], a1, c1, de=f"Weg des ersten Kolbens, Schritt {j}",
                                       en=f"path of the first piston, step {j}")
-                U = b.intersect(f"{tag}U{j}", wl, k1, rule=("toward", W0, None) + _FWD)
+                # captions in the figure's letters: U, E, M as the text names them, whichever diagram
+                U = b.intersect(f"{tag}U{j}", wl, k1, rule=("toward", W0, None) + _FWD,
+                                de=f"U{j}: Weg des ersten Kolbens auf der Arbeitslinie",
+                                en=f"U{j}: the first piston's path along the work line")
                 k2 = b.circle_segment(f"{tag}E{j}.k", U, a2, c2, de=f"Weg des zweiten Kolbens, Schritt {j}",
                                       en=f"path of the second piston, step {j}")
                 ends.append(b.intersect(f"{tag}E{j}", wl, k2, rule=("toward", W0, None) + _FWD,
@@ -248,7 +251,8 @@ def _radii(b: Builder, part: _Part, speed: _Speed, n: int, start: int = 0) -> _P
             with b.group(f"speed at crank position {j}", f"Geschwindigkeit in Kurbelstellung {j}"):
                 k = b.circle_segment(f"{tag}V{j}.k", speed.one.origin, part.means[j], part.ends[j],
                                      de=f"M{j}E{j} auf die Maßlinie r", en=f"M{j}E{j} onto the scale line r")
-                V = b.intersect(f"{tag}V{j}", speed.one.line, k, rule=("toward", speed.angle.vertex, None, 0.0, -1.0))
+                V = b.intersect(f"{tag}V{j}", speed.one.line, k, rule=("toward", speed.angle.vertex, None, 0.0, -1.0),
+                                de=f"V{j}: M{j}E{j} auf der Maßlinie r", en=f"V{j}: M{j}E{j} on the scale line r")
                 Vg = carry_across(b, speed.angle, f"{tag}Vg{j}", V, speed.gain,
                                   de=f"auf die Maßlinie g·r: r + g·e{j}", en=f"onto the scale line g r: r + g e{j}")
                 point = part.crank_points[(start + j) % m]

@@ -358,3 +358,15 @@ def test_no_view_cuts_a_letter_of_the_stroke_line(tmp_path):
                  "--out", str(out)]) == 0
     report = lint_path(out)
     assert [f.line() for f in report.findings if f.kind == "outside"] == []
+
+
+def test_work_line_steps_are_captioned_in_the_figures_letters():
+    """Issue 16: 'iU19 im Schnitt von Gerade durch W₀ und dem Kreis um iE18' -- the steps that find U on the
+    work line and V on the speed scale named the internal objects; they say U19, V0 as the text does."""
+    import re
+
+    fig = get("two-cranks").figure(parts=12)
+    for s in fig.protocol.steps:
+        if any(re.fullmatch(r"i?[UV]\d+", o) for o in s.outputs):
+            for text in (s.caption.de, s.caption.en):
+                assert not re.search(r"\bi[A-Z]\w*", text), text

@@ -370,3 +370,20 @@ def test_work_line_steps_are_captioned_in_the_figures_letters():
         if any(re.fullmatch(r"i?[UV]\d+", o) for o in s.outputs):
             for text in (s.caption.de, s.caption.en):
                 assert not re.search(r"\bi[A-Z]\w*", text), text
+
+
+def test_the_work_line_keeps_its_marks_while_the_work_is_stepped_on():
+    """Issue 16: at step 620 (crank position 20 of the infinite rod) the work line and the works E1...E19
+    stepped on before had faded with their finished groups: the student saw one arc and one point in empty
+    paper.  The work line is one stage: it keeps its marks until every crank position is stepped on."""
+    from construct.render.output import scene_for
+
+    c = get("two-cranks")
+    fig = c.figure(parts=12)
+    scene = scene_for(c, fig)
+    step = {n: s.index for s in fig.protocol.steps for n in s.outputs}
+    k = step["iU20"]
+    for name in ["iwork"] + [f"iE{j}" for j in range(1, 20)] + [f"iM{j}" for j in range(1, 20)]:
+        assert not scene.faded(step[name], k), name
+    # once the stage is done its helpers collapse (the speeds are taken from M and E as inputs)
+    assert scene.faded(step["iE19"], len(fig.protocol.steps) + 1)

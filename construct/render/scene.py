@@ -574,10 +574,18 @@ def reading(label: str, objects: Any) -> str:
     >>> from construct.kernel.geometry import Point
     >>> reading("ω = {∠A O B}", {"A": Point(1.0, 0.0), "O": Point(0.0, 0.0), "B": Point(0.5, 3 ** 0.5 / 2)})
     'ω = 60°00′'
+    >>> reading("{∠A O X}", {"A": Point(1.0, 0.0), "O": Point(0.0, 0.0)})
+    Traceback (most recent call last):
+    construct.kernel.errors.InvalidParameter: the label '{∠A O X}' reads an angle at the points A, O, X; 'X' is no point of the figure
     """
+    from ..kernel.errors import InvalidParameter
     from .plate import dms
 
     def angle(m: re.Match) -> str:
+        missing = [n for n in m.groups() if not isinstance(objects.get(n), Point)]
+        if missing:
+            raise InvalidParameter(f"the label {label!r} reads an angle at the points {', '.join(m.groups())}; "
+                                   f"{missing[0]!r} is no point of the figure")
         a, o, b = (objects[n] for n in m.groups())
         ua = math.atan2(a[1] - o[1], a[0] - o[0])
         ub = math.atan2(b[1] - o[1], b[0] - o[0])

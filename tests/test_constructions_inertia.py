@@ -213,3 +213,23 @@ def test_bad_parameters_are_named(bad):
 def test_table_step_must_divide_180():
     with pytest.raises(InvalidParameter):
         acceleration_rows(5.0, 7.0)
+
+
+def test_crank_circle_stays_in_the_teaching_views():
+    """Issue 16: the crank circle faded after the frame's group (step 7), leaving the crank points 1...17 and
+    their ordinates in the air for the remaining 900 steps and in the last frame.  It stays, and every crank
+    point is on it; the plate still shows what the book plate shows."""
+    from construct.render.output import scene_for
+    from construct.render.scene import build_scene
+
+    c = get("inertia-curve")
+    fig = c.figure(rod_ratio=4.0)
+    scene = scene_for(c, fig)
+    n = len(scene.steps)
+    crank = next(m for m in scene.marks if m.name == "crank")
+    assert crank.kind == "circle" and not any(scene.faded(crank.step, k) for k in (100, n // 2, n + 1))
+    (cx, cy, r) = crank.geom
+    for k in range(1, 18):
+        P = fig.replay[f"P{k}"]
+        assert math.hypot(P[0] - cx, P[1] - cy) == pytest.approx(r, abs=1e-9)
+    assert "crank" not in {m.name for m in build_scene(fig, plate=True).marks}

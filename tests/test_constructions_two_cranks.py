@@ -345,3 +345,45 @@ def test_table_dead_centre_option(capsys):
     rows = [tuple(map(float, line.split(","))) for line in capsys.readouterr().out.splitlines()[1:]]
     assert rows[4][0] == 180.0 and rows[4][1] == pytest.approx(excess_mp(4, 4, 5.0, "head-end"), abs=1e-12)
     assert main(["table", "speed-fluctuation", "--rod-ratio", "5", "--step", "45", "--dead-centre", "middle"]) == 2
+
+
+def test_no_view_cuts_a_letter_of_the_stroke_line(tmp_path):
+    """Issue 16: at steps 620-624 (crank position 20 of the infinite rod, § 146's start at B1) the player's
+    window cut the letter 4′ in half: widening the view took in one piston position's letter per round and
+    cut the next along the row 3′…11′, and the widening stopped after six rounds."""
+    from construct.regress.lint import lint_path
+
+    out = tmp_path / "r"
+    assert main(["replay", "two-cranks", "--parts", "12", "--style", "teaching", "--frames", "none",
+                 "--out", str(out)]) == 0
+    report = lint_path(out)
+    assert [f.line() for f in report.findings if f.kind == "outside"] == []
+
+
+def test_work_line_steps_are_captioned_in_the_figures_letters():
+    """Issue 16: 'iU19 im Schnitt von Gerade durch W₀ und dem Kreis um iE18' -- the steps that find U on the
+    work line and V on the speed scale named the internal objects; they say U19, V0 as the text does."""
+    import re
+
+    fig = get("two-cranks").figure(parts=12)
+    for s in fig.protocol.steps:
+        if any(re.fullmatch(r"i?[UV]\d+", o) for o in s.outputs):
+            for text in (s.caption.de, s.caption.en):
+                assert not re.search(r"\bi[A-Z]\w*", text), text
+
+
+def test_the_work_line_keeps_its_marks_while_the_work_is_stepped_on():
+    """Issue 16: at step 620 (crank position 20 of the infinite rod) the work line and the works E1...E19
+    stepped on before had faded with their finished groups: the student saw one arc and one point in empty
+    paper.  The work line is one stage: it keeps its marks until every crank position is stepped on."""
+    from construct.render.output import scene_for
+
+    c = get("two-cranks")
+    fig = c.figure(parts=12)
+    scene = scene_for(c, fig)
+    step = {n: s.index for s in fig.protocol.steps for n in s.outputs}
+    k = step["iU20"]
+    for name in ["iwork"] + [f"iE{j}" for j in range(1, 20)] + [f"iM{j}" for j in range(1, 20)]:
+        assert not scene.faded(step[name], k), name
+    # once the stage is done its helpers collapse (the speeds are taken from M and E as inputs)
+    assert scene.faded(step["iE19"], len(fig.protocol.steps) + 1)

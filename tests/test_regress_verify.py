@@ -90,10 +90,10 @@ def _move_circle(svg: str, elem_id: str, dx: float) -> tuple[str, float]:
 def test_clean_gallery_is_equal(goldens: Path) -> None:
     result = verify(goldens, builder=build_small_gallery)
     assert result.equal, result.report()
-    # Every file was looked at: 74 frames, final, protocol, storyboard, index, and
+    # Every file was looked at: 77 frames, final, protocol, storyboard, index, and
     # whatever else the renderer writes (animation, player), counted independently.
     files = _files(goldens)
-    assert len([p for p in files if p.parent.name == "steps"]) == 74
+    assert len([p for p in files if p.parent.name == "steps"]) == 77
     assert result.compared == len(files)
     assert result.png_by_size == 1
     assert f"all {len(files)} files equal" in result.summary()
@@ -105,7 +105,7 @@ def test_point_moved_by_a_hundredth_is_caught_and_named(goldens: Path, rebuild) 
     path.write_text(text, encoding="utf-8")
     result = verify(goldens, builder=rebuild)
     assert not result.equal
-    assert [d.path for d in result.differences] == [FRAME]  # only that frame, not the other 73
+    assert [d.path for d in result.differences] == [FRAME]  # only that frame, not the other 76
     d = result.differences[0]
     assert (d.figure, d.step, d.status, d.kind) == (FIGURE, 5, "changed", "svg")
     report = result.report()
@@ -191,23 +191,23 @@ def test_protocol_point_moved_is_named(goldens: Path, rebuild) -> None:
 
 
 def test_missing_extra_text_and_png(goldens: Path, rebuild) -> None:
-    (goldens / FIGURE / "steps" / "074.svg").unlink()  # the rebuild writes it: extra
-    (goldens / FIGURE / "steps" / "075.svg").write_text("<svg xmlns='http://www.w3.org/2000/svg'/>")  # missing
+    (goldens / FIGURE / "steps" / "077.svg").unlink()  # the rebuild writes it: extra
+    (goldens / FIGURE / "steps" / "078.svg").write_text("<svg xmlns='http://www.w3.org/2000/svg'/>")  # missing
     index = goldens / "index.html"
     index.write_text(index.read_text(encoding="utf-8").replace("6 parts", "8 parts"), encoding="utf-8")
     (goldens / FIGURE / "storyboard.png").write_bytes(_png(8, 5, 200))  # another size
     result = verify(goldens, builder=rebuild)
     found = {d.path: d for d in result.differences}
-    assert sorted(found) == ["crank-6/steps/074.svg", "crank-6/steps/075.svg", "crank-6/storyboard.png",
+    assert sorted(found) == ["crank-6/steps/077.svg", "crank-6/steps/078.svg", "crank-6/storyboard.png",
                              "index.html"]
-    assert found["crank-6/steps/074.svg"].status == "extra"
-    assert found["crank-6/steps/075.svg"].status == "missing"
+    assert found["crank-6/steps/077.svg"].status == "extra"
+    assert found["crank-6/steps/078.svg"].status == "missing"
     assert "image 8x5 -> 8x4" in found["crank-6/storyboard.png"].changes[0].line()
     text = "\n".join(found["index.html"].lines())
     assert "-<p>crank, 8 parts</p>" in text and "+<p>crank, 6 parts</p>" in text
     report = result.report()
-    assert "crank-6 step 74 (crank-6/steps/074.svg): extra" in report
-    assert "crank-6 step 75 (crank-6/steps/075.svg): missing" in report
+    assert "crank-6 step 77 (crank-6/steps/077.svg): extra" in report
+    assert "crank-6 step 78 (crank-6/steps/078.svg): missing" in report
     assert "(gallery) index.html (index.html): 1 change" in report
 
 
@@ -220,9 +220,9 @@ def test_png_pixels_are_not_compared(goldens: Path, rebuild) -> None:
 def test_update_rewrites_the_goldens_as_a_whole(goldens: Path, rebuild) -> None:
     path = goldens / FRAME
     path.write_text(_move_circle(path.read_text(encoding="utf-8"), POINT, 0.5)[0], encoding="utf-8")
-    (goldens / FIGURE / "steps" / "074.svg").unlink()  # a golden the rebuild writes again
+    (goldens / FIGURE / "steps" / "077.svg").unlink()  # a golden the rebuild writes again
     result = verify(goldens, builder=rebuild, update=True)
-    assert {d.path for d in result.differences} == {FRAME, f"{FIGURE}/steps/074.svg"} and result.updated
+    assert {d.path for d in result.differences} == {FRAME, f"{FIGURE}/steps/077.svg"} and result.updated
     assert "rewritten" in result.summary()
     assert not [p for p in goldens.parent.iterdir() if p.name.startswith(".construct-")]  # no leftovers
     assert verify(goldens, builder=rebuild).equal

@@ -134,3 +134,42 @@ def test_stroke_fraction_plate_fills_its_sheet():
     # the sheet holds the semicircle and the q diagram under it: no empty band of several crank radii
     # (the proportional angle at SO = L = 5 r below the centre made it 60 % empty)
     assert (y1 - y0) < 3.6 * r and (x1 - x0) > 2.0 * r
+
+
+def test_two_sided_piston_force_plate_is_a_landscape_sheet_legible_at_1400_by_1000():
+    """Issue 16: stacked in portrait, the four diagrams came out at 7.8 px letters and the scale's 0 sat on the
+    base line.  Laid out as a book sets a cover-side and a crank-side diagram: side by side, no diagram over
+    another, every ordinate as long as the construction made it, the letters at 9 px or more."""
+    from construct.regress.lint import lint_svg
+    from construct.render.scene import extreme_points
+
+    c = get("piston-force")
+    fig = c.figure(parts=18, revolution=True)
+    scene = scene_for(c, fig, plate=True)
+    svg = render_svg(scene, style=STYLES["historical"], caption=plate_caption(c, fig, 1))
+    assert [f.line() for f in lint_svg(svg, view=(1400, 1000))] == []
+    x0, y0, x1, y1 = scene.bbox
+    assert x1 - x0 > y1 - y0  # landscape
+
+    def box(pattern):
+        pts = [p for m in scene.marks if re.fullmatch(pattern, m.name) for p in extreme_points(m)]
+        return min(p[0] for p in pts), min(p[1] for p in pts), max(p[0] for p in pts), max(p[1] for p in pts)
+
+    boxes = {"cover": box(r"ind\.(steam|backline|[ER]\d+)"), "forward": box(r"fbase|F\d+|K\d+|M\d+|force[abc]|mass"),
+             "crank": box(r"crk\.(steam|backline|[ER]r\d+)"), "return": box(r"rbase|rF\d+|rK\d+|rM\d+|rforce[abc]|rmass")}
+    names = sorted(boxes)
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            A, B = boxes[a], boxes[b]
+            assert A[2] < B[0] or B[2] < A[0] or A[3] < B[1] or B[3] < A[1], f"{a} and {b} overlap"
+    # the return stroke beside the forward stroke, on one base level; the cover side above its forward stroke
+    fb = next(m for m in scene.marks if m.name == "fbase").geom
+    rb = next(m for m in scene.marks if m.name == "rbase").geom
+    assert abs(fb[1] - rb[1]) < 1e-9 and min(rb[0], rb[2]) > max(fb[0], fb[2])
+    assert boxes["cover"][1] > boxes["forward"][3] and boxes["crank"][1] > boxes["return"][3]
+    # a diagram moves as a whole: every piston force keeps its height over its base line (the construction's)
+    at = {m.name: m.geom for m in scene.marks if m.kind == "point"}
+    for k in range(19):
+        for p in ("", "r"):
+            assert math.isclose(at[f"{p}K{k}"][1] - at[f"{p}F{k}"][1],
+                                fig.replay[f"{p}K{k}"][1] - fig.replay[f"{p}F{k}"][1], abs_tol=1e-12)

@@ -36,9 +36,14 @@ def _expected_visible(fig, k: int) -> set[str]:
     names = set()
     for s in fig.protocol.steps[:k]:
         for name in s.outputs:
-            if isinstance(fig.replay.get(name), (Point, Line, Circle)):
+            if _drawable(fig.replay.get(name)):
                 names.add(name)
     return names
+
+
+def _drawable(obj) -> bool:
+    """A point, a line, a circle, or a line joined by the straightedge (the crank, the rod of Fig. 1)."""
+    return isinstance(obj, (Point, Line, Circle)) or hasattr(obj, "curve_points")
 
 
 def _must_show(fig, k: int) -> set[str]:
@@ -50,15 +55,15 @@ def _must_show(fig, k: int) -> set[str]:
     current = steps[k - 1]
     if k == len(steps):
         return {n for s in steps if s.role in ("result", "given") or not s.group for n in s.outputs
-                if isinstance(fig.replay.get(n), (Point, Line, Circle))}
+                if _drawable(fig.replay.get(n))}
     open_groups = {current.group[:2]} if current.group else set()
     names = set()
     for s in steps[:k]:
         keep = (s.index == k or s.role in ("result", "given") or not s.group or s.group[:2] in open_groups)
         for name in s.outputs:
-            if keep and isinstance(fig.replay.get(name), (Point, Line, Circle)):
+            if keep and _drawable(fig.replay.get(name)):
                 names.add(name)
-    return names | {n for n in current.inputs if isinstance(fig.replay.get(n), (Point, Line, Circle))}
+    return names | {n for n in current.inputs if _drawable(fig.replay.get(n))}
 
 
 def _shows_step(page, fig, k: int) -> None:
@@ -180,7 +185,9 @@ def test_animated_svg_plays_by_its_clock(browser, tmp_path):
     from construct.render.svg import Drawing
 
     d = Drawing(scene_for(c, fig), STYLES["teaching"])
-    k = next(i for i in range(1, n + 1) if d.camera_view(i)[2] < 0.8 * d.full_view[2])
+    # the most magnified step (the clean figure of the last step: the crank, the rod to its crosshead)
+    k = min(range(1, n + 1), key=lambda i: d.camera_view(i)[2])
+    assert d.camera_view(k)[2] < 0.9 * d.full_view[2]
     page.evaluate(f"() => document.documentElement.setCurrentTime({(k - 1) * dt + dt / 2})")
     root_scale = page.evaluate("() => document.documentElement.getScreenCTM().a")
     cam_scale = page.evaluate("() => document.getElementById('camera').getScreenCTM().a")

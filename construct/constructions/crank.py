@@ -81,8 +81,28 @@ def build_crank(*, rod_ratio: float, parts: int, method: str, r: float) -> Figur
         b.set_label(p, str(k))  # the books number the division points 0, 1, ..., n
     rod_arcs(b, f, points)
     infinite_rod(b, f, points)
+    crank_and_rod(b, f, points)
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))
+
+
+def crank_position(n: int) -> int:
+    """The division point Fig. 1 draws the crank and the rod at: 40° (point 4 of 18)."""
+    return min(n, max(1, round(2 * n / 9)))
+
+
+def crank_and_rod(b: Builder, f: Mapping[str, str], points: list[str]) -> None:
+    """What the figure is for, drawn as its result: the stroke s = 2r between the dead centres, and the crank
+    and the connecting rod in one position (Fig. 1's 40°), each joined by the straightedge and lettered."""
+    j = crank_position(len(points) - 1)
+    with b.group("the stroke s = 2r; the crank and the rod in one position",
+                 "Hub s = 2r; Kurbel und Schubstange in einer Stellung"):
+        b.polyline("stroke", [f["D0"], f["D1"]], de="Hub s zwischen den Totpunkten", en="stroke s between the dead centres")
+        b.set_label("stroke", "s = 2r")
+        b.polyline("crankarm", [f["O"], points[j]], de=f"Kurbel O{j}", en=f"crank O{j}")
+        b.set_label("crankarm", "r")
+        b.polyline("rodline", [points[j], f"C{j}"], de=f"Schubstange {j}C{j}", en=f"connecting rod {j}C{j}")
+        b.set_label("rodline", "L")
 
 
 def rod_arcs(b: Builder, f: Mapping[str, str], points: list[str]) -> None:
@@ -234,11 +254,16 @@ def frame_furniture(fig: Figure, crank_point: str | None = None, crosshead: str 
 
 
 def crank_plate(fig: Figure) -> dict:
-    """Fig. 1: centre line dash-dotted, rod arcs and ordinates thin, s and r dimensioned, crank at 40°."""
+    """Fig. 1: centre line dash-dotted, rod arcs and ordinates thin, s and r dimensioned, crank at 40°.
+
+    The construction's own crank, rod and stroke are dimensioned here as the book does (arrowheads),
+    not lettered; the stroke is not drawn over the centre line.
+    """
     n = fig.params["parts"]
-    j = max(1, round(2 * n / 9))
+    j = crank_position(n)
     looks = {"axis": "centre", **{f"back{k}": "thin" for k in range(n + 1)},
-             **{f"ord{k}": "thin" for k in range(1, n)}}
+             **{f"ord{k}": "thin" for k in range(1, n)},
+             "stroke": "hidden unlettered", "crankarm": "heavy unlettered", "rodline": "heavy unlettered"}
     return {"looks": looks, "furniture": frame_furniture(fig, point_name(fig, j), f"C{j}")}
 
 
@@ -267,6 +292,8 @@ def build_crank_angle(*, rod_ratio: float, divisions: int, r: float) -> Figure:
     m = divisions
     with b.group(f"stroke divided into {m} equal parts", f"Hub in {m} gleiche Teile geteilt"):
         marks = [f["D0"]] + (b.divide_segment("x", f["D0"], f["D1"], m, line=f["axis"]) if m > 1 else []) + [f["D1"]]
+        for j in range(1, m):  # numbered as their crank points: the tenth j of the stroke gives the crank point j
+            b.set_label(marks[j], str(j))
     with b.group("rod length swung back to the crank circle", "Schubstangenlänge auf den Kurbelkreis zurückgeschlagen"):
         for j, x in enumerate(marks):
             with b.group(f"crank angle for {j}/{m} of the stroke", f"Kurbelwinkel zu {j}/{m} Hub"):
@@ -276,10 +303,16 @@ def build_crank_angle(*, rod_ratio: float, divisions: int, r: float) -> Figure:
                                 de=f"Kreuzkopf C{j}", en=f"crosshead C{j}")
                 back = b.circle_radius(f"rod{j}", C, f["L"], de=f"Bogen um C{j} mit L auf den Kurbelkreis",
                                        en=f"arc about C{j} with L onto the crank circle")
-                b.intersect(f"W{j}", back, f["circle"], rule=("left", f["D0"], f["D1"]), role="result",
-                            de=f"Kurbelstellung {j}: Kurbelwinkel ω{j} = ∠AO{j}",
-                            en=f"crank position {j}: crank angle ω{j} = ∠AO{j}",
-                            labels={f"W{j}": f"{j}"})
+                W = b.intersect(f"W{j}", back, f["circle"], rule=("left", f["D0"], f["D1"]), role="result",
+                                de=f"Kurbelstellung {j}: Kurbelwinkel ω{j} = ∠AO{j}",
+                                en=f"crank position {j}: crank angle ω{j} = ∠AO{j}",
+                                labels={f"W{j}": f"{j}"})
+                if 0 < j < m:  # the dead centres' cranks lie on the stroke line
+                    # the crank drawn to its point and lettered with its angle AOW as the figure measures it
+                    # (Tabelle 2's column): a reading of the constructed points, not the formula
+                    b.polyline(f"OW{j}", [f["O"], W], role="result", de=f"Kurbel O{j}, Winkel ω{j} gemessen",
+                               en=f"crank O{j}, its angle ω{j} measured")
+                    b.set_label(f"OW{j}", f"{{∠{f['D0']} {f['O']} {W}}}")
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))
 
@@ -361,7 +394,9 @@ def crank_angle_plate(fig: Figure) -> dict:
                  "radius": (0.12 + 0.45 * j / m) * r},
                 {"kind": "lettering", "at": (O[0] + 0.8 * r * ux - side * uy, O[1] + 0.8 * r * uy + side * ux),
                  "text": text, "angle": along, "size": 0.9}]
-    looks = {"axis": "centre", **{f"rod{j}": "thin" for j in range(m + 1)}}
+    # the construction's cranks are drawn here as the plate's thin radii with their angles along them
+    looks = {"axis": "centre", **{f"rod{j}": "thin" for j in range(m + 1)},
+             **{f"OW{j}": "hidden unlettered" for j in range(1, m)}}
     return {"looks": looks, "furniture": out}
 
 

@@ -131,7 +131,7 @@ def scene_for(construction: Construction | None, figure: Figure, *, plate: bool 
 
         p = plate_of(construction, figure)
         return build_scene(figure, title=figure_title(construction, figure), plate=True,
-                           furniture=p.furniture, looks=dict(p.looks))
+                           furniture=p.furniture, looks=dict(p.looks), panels=p.panels)
     return build_scene(figure, title=figure_title(construction, figure))
 
 

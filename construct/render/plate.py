@@ -21,6 +21,17 @@ Kinds: dimension (a, b, text, offset), angle (centre, start, end, radius,
 text, text_at), stroke (a, b, look, broken), lettering (at, text, anchor,
 angle, size), scale (origin, end, text), sign (at, text), dot (at).
 
+A plate may also lay its sheet out in *panels*, as a book sets a cover-side
+and a crank-side diagram side by side: ``{"panels": [{"names": [regex, ...],
+"shift": (dx, dy)}, ...]}`` draws every object whose name matches a panel's
+patterns moved by that panel's shift (drawing units).  An object named by
+several panels is drawn in each (the stroke line under both diagrams); a line
+drawn in a panel reaches over that panel's points on it only, and copies that
+fall on one line (an ordinate through two panels one above the other) are one
+line.  Objects no panel names stay where they are.  Furniture is given where it
+stands on the sheet.  A shift moves a diagram, never changes a length in it:
+every value read off a diagram is read from its own base line.
+
 Every value written on a plate is read off the constructed figure (the
 construction's own points), never from the formula the checks compare with.
 :func:`furniture_elements` draws the items in a style; all lettering gets a
@@ -40,7 +51,7 @@ import math
 from dataclasses import dataclass, field, fields, replace
 from typing import Any, Callable, Mapping, Sequence
 
-__all__ = ["Plate", "Dimension", "AngleArc", "Stroke", "Lettering", "ScaleBar", "Sign", "Dot", "dms", "extent",
+__all__ = ["Plate", "Panel", "Dimension", "AngleArc", "Stroke", "Lettering", "ScaleBar", "Sign", "Dot", "dms", "extent",
            "anchors", "shifted",
            "furniture_elements", "LOOKS_CSS", "plate_of"]
 
@@ -54,6 +65,8 @@ LOOKS_CSS = (
     ".dashdot{stroke-dasharray:14 3 2 3;stroke-width:0.7px}",
     ".centre{stroke-dasharray:18 3 2 3;stroke-width:0.5px}",
     ".dashed{stroke-dasharray:6 4}",
+    # a result the plate shows otherwise (the stroke s, dimensioned with arrowheads over the centre line)
+    ".hidden{display:none}",
 )
 
 
@@ -131,11 +144,20 @@ class Sign:
 
 
 @dataclass(frozen=True)
+class Panel:
+    """A part of the sheet: the objects whose names match *names* (regular expressions), moved by *shift*."""
+
+    names: tuple[str, ...]
+    shift: XY = (0.0, 0.0)
+
+
+@dataclass(frozen=True)
 class Plate:
-    """What a construction adds to its plate: looks of named objects, and furniture."""
+    """What a construction adds to its plate: looks of named objects, furniture, and the sheet's panels."""
 
     looks: Mapping[str, str] = field(default_factory=dict)
     furniture: tuple = ()
+    panels: tuple[Panel, ...] = ()
 
     @classmethod
     def from_data(cls, data: Mapping[str, Any] | None) -> "Plate":
@@ -158,7 +180,8 @@ class Plate:
 
                 raise InvalidParameter(f"unknown plate furniture {kind!r}; choose one of {', '.join(sorted(kinds))}")
             items.append(kinds[kind](**d))
-        return cls(dict(data.get("looks", {})), tuple(items))
+        panels = tuple(Panel(tuple(p["names"]), tuple(p.get("shift", (0.0, 0.0)))) for p in data.get("panels", ()))
+        return cls(dict(data.get("looks", {})), tuple(items), panels)
 
 
 def plate_of(construction: Any, figure: Any) -> Plate:

@@ -19,6 +19,7 @@ True
 from __future__ import annotations
 
 import bisect
+import collections
 import dataclasses
 import functools
 import math
@@ -168,9 +169,16 @@ class Scene:
         kinds = {MarkKind.SEGMENT: "line", MarkKind.ARC: "circle"}
         makers = {n: s for s in self.steps for n in s.outputs}
         objects = {}
+        lettered_at = {}
         for m in self.marks:
-            s = makers[m.name]
+            s = makers.get(m.name)
+            if s is None:  # the point a straight line is lettered at (build_scene): the line goes by that letter
+                lettered_at[m.name[:-len(".at")]] = m.label
+                continue
             objects[m.name] = (kinds.get(m.kind, m.kind.value), m.label, s.op, tuple(s.inputs))
+        for name, text in lettered_at.items():
+            kind, _, op, inputs = objects[name]
+            objects[name] = (kind, text, op, inputs)
         for name, s in makers.items():  # what is not drawn (a compass opening J.h1) goes by its short name
             objects.setdefault(name, ("length", None, s.op, tuple(s.inputs)))
         return Reader(objects)
@@ -443,7 +451,8 @@ def _on_curve_points(steps: Iterable[Step], objects: Replay,
 
 
 def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: bool = False,
-                break_axis: bool = True, furniture: tuple = (), looks: "dict[str, str] | None" = None) -> Scene:
+                break_axis: bool = True, furniture: tuple = (), looks: "dict[str, str] | None" = None,
+                panels: tuple = ()) -> Scene:
     """The marks of a built or replayed figure (anything with ``.protocol`` and ``.replay``).
 
     With *plate* the scene is what a book plate shows (:func:`plate_names`):
@@ -451,6 +460,8 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
     only as far as the shown points on it, every construction step left out.
     A point lettered by the user that the plate leaves out is named in a
     :class:`~construct.kernel.errors.HiddenLabelWarning` (:func:`warn_hidden_labels`).
+    *panels* (:class:`construct.render.plate.Panel`) lay a plate's sheet out (:func:`lay_out`);
+    a sheet laid out so is not broken.
     """
     protocol: Protocol = figure.protocol
     objects: Replay = figure.replay
@@ -478,6 +489,11 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 have = on.setdefault(name, [])
                 have.extend(p for n, p in shown_pts if _on(obj, p, tol) and p not in have)
     marks: list[Mark] = []
+    lettered: dict[str, tuple[str, bool]] = {}  # lettered straight lines: their letter, whether in a fan
+    fans: dict[str, list[str]] = collections.defaultdict(list)  # lettered straight lines by their first point
+    for s in protocol.steps:
+        if s.op == "polyline" and s.outputs[0] in dict(s.labels):
+            fans[s.inputs[0]].append(s.outputs[0])
     for s in protocol.steps:
         labels = dict(s.labels)
         for name in s.outputs:
@@ -486,6 +502,8 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 continue
             mid = f"s{s.index:04d}-{_safe_id(name)}"
             label = labels.get(name)
+            if label and "{∠" in label:
+                label = reading(label, objects)
             if "unlettered" in (looks or {}).get(name, "").split():
                 label = None  # the plate letters it otherwise (an abscissa, as the book does)
             common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
@@ -503,15 +521,27 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                                       geom=tuple((p[0], p[1]) for p in ring), hatch=obj.hatch_deg, **common))
             elif hasattr(obj, "curve_points"):
                 # a polyline is drawn as it is measured (y_at, length): straight from point to point
-                marks.append(Mark(mid, kind=MarkKind.CURVE, geom=tuple((p[0], p[1]) for p in obj.curve_points()),
-                                  straight=getattr(obj, "kind", "") == "polyline", **common))
+                straight = getattr(obj, "kind", "") == "polyline"
+                pts = tuple((p[0], p[1]) for p in obj.curve_points())
+                if straight and label:
+                    # lettered at a point of its own on it, placed once the sheet is laid out (below)
+                    marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=True, **{**common, "label": None}))
+                    lettered[mid] = (label, len(fans[s.inputs[0]]) >= 3)
+                else:
+                    marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=straight, **common))
     breaks: tuple[tuple[float, float, float], ...] = ()
-    if break_axis and (shown is None or furniture):
+    if panels:
+        marks = lay_out(marks, panels, margin, 1e-9 * max(span, 1.0))
+        xs = [m.geom[0] for m in marks if m.kind is MarkKind.POINT] or xs
+        ys = [m.geom[1] for m in marks if m.kind is MarkKind.POINT] or ys
+    elif break_axis and (shown is None or furniture):
         # a plate keeps more of the broken stretch: the rod drawn across it stays a shallow line
         marks, furniture, breaks = _break(marks, tuple(furniture), BREAK_KEEP if shown is None else PLATE_BREAK_KEEP)
         if breaks:
             xs = [x for m in marks if m.kind is MarkKind.POINT for x in (m.geom[0],)] or xs
             ys = [y for m in marks if m.kind is MarkKind.POINT for y in (m.geom[1],)] or ys
+    if lettered:
+        marks = _letter_lines(marks, lettered, breaks)
     # Grow the box by what the curves reach (full circles, arcs, line ends), the plate's furniture and the margin.
     bx0, by0, bx1, by1 = min(xs), min(ys), max(xs), max(ys)
     if furniture:
@@ -558,8 +588,8 @@ def _break(marks: list[Mark], furniture: tuple = (),
     from .plate import anchors, shifted
     ivals = []
     for m in marks:
-        if m.kind is MarkKind.SEGMENT:
-            continue  # the stroke line spans everything
+        if m.kind is MarkKind.SEGMENT or (m.kind is MarkKind.CURVE and m.straight and len(m.geom) == 2):
+            continue  # the stroke line spans everything; a rod drawn to its crosshead crosses the break
         xs = [p[0] for p in extreme_points(m)]
         if xs:
             ivals.append((min(xs), max(xs)))
@@ -649,6 +679,158 @@ def _caller_level() -> int:
     while frame is not None and frame.f_code.co_filename.startswith(_PACKAGE):
         frame, level = frame.f_back, level + 1
     return level
+
+
+#: A label that is a reading of the figure: ``{∠A O B}`` is written as the angle AOB measured on the replayed
+#: figure, in degrees and minutes as the books print it (61°19′), so that a replay with other givens letters
+#: its own angles.
+READING = re.compile(r"\{∠(\S+) (\S+) (\S+)\}")
+
+
+def reading(label: str, objects: Any) -> str:
+    """*label* with every reading ``{∠A O B}`` replaced by the angle AOB measured on *objects*.
+
+    >>> from construct.kernel.geometry import Point
+    >>> reading("ω = {∠A O B}", {"A": Point(1.0, 0.0), "O": Point(0.0, 0.0), "B": Point(0.5, 3 ** 0.5 / 2)})
+    'ω = 60°00′'
+    >>> reading("{∠A O X}", {"A": Point(1.0, 0.0), "O": Point(0.0, 0.0)})
+    Traceback (most recent call last):
+    construct.kernel.errors.InvalidParameter: the label '{∠A O X}' reads an angle at the points A, O, X; 'X' is no point of the figure
+    """
+    from ..kernel.errors import InvalidParameter
+    from .plate import dms
+
+    def angle(m: re.Match) -> str:
+        missing = [n for n in m.groups() if not isinstance(objects.get(n), Point)]
+        if missing:
+            raise InvalidParameter(f"the label {label!r} reads an angle at the points {', '.join(m.groups())}; "
+                                   f"{missing[0]!r} is no point of the figure")
+        a, o, b = (objects[n] for n in m.groups())
+        ua = math.atan2(a[1] - o[1], a[0] - o[0])
+        ub = math.atan2(b[1] - o[1], b[0] - o[0])
+        w = abs((ub - ua + math.pi) % TWO_PI - math.pi)
+        return dms(w)
+
+    return READING.sub(angle, label)
+
+
+def _letter_lines(marks: list[Mark], lettered: dict, breaks: tuple) -> list[Mark]:
+    """Each lettered straight line followed by the point its letter stands at.
+
+    A line (the crank r, the stroke s = 2r) is lettered at its middle -- a rod drawn across a broken axis
+    at the middle of its part beside the crank -- on a point of its own that the drawing does not show
+    (look ``hidden``; an auxiliary one).  A fan of lettered lines from one point (the cranks of Tabelle 2)
+    is lettered at the lines' far ends, where they stand furthest apart, beside the points they were
+    drawn to, with the lines' own role (their letters are placed with the results').
+    """
+    out: list[Mark] = []
+    for m in marks:
+        out.append(m)
+        got = lettered.get(m.id)
+        if got is None:
+            continue
+        label, fan = got
+        pts = m.geom
+        at = pts[-1] if fan else middle(pts)
+        for x0, w, _ in breaks:
+            (ax, ay), (bx, by) = pts[0], pts[-1]
+            if len(pts) == 2 and min(ax, bx) < x0 + w and max(ax, bx) > x0 + w and not fan:
+                x = (x0 + w + max(ax, bx)) / 2.0  # the middle of the part right of the break
+                at = (x, ay + (by - ay) * (x - ax) / (bx - ax))
+        out.append(dataclasses.replace(m, id=f"{m.id}-at", kind=MarkKind.POINT, geom=(at[0], at[1]),
+                                       name=f"{m.name}.at", role=m.role if fan else "auxiliary", label=label,
+                                       look="hidden", straight=False))
+    return out
+
+
+def middle(pts: tuple, at: float = 0.5) -> tuple[float, float]:
+    """The point half way (or the fraction *at* of the way) along a polyline.
+
+    >>> middle(((0.0, 0.0), (2.0, 0.0), (2.0, 2.0))), middle(((0.0, 0.0), (4.0, 0.0)), 0.75)
+    ((2.0, 0.0), (3.0, 0.0))
+    """
+    lengths = [math.dist(p, q) for p, q in zip(pts, pts[1:])]
+    half = sum(lengths) * at
+    for (p, q), d in zip(zip(pts, pts[1:]), lengths):
+        if half <= d and d > 0.0:
+            t = half / d
+            return (p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]))
+        half -= d
+    return (pts[-1][0], pts[-1][1])
+
+
+def lay_out(marks: list[Mark], panels: tuple, margin: float, tol: float) -> list[Mark]:
+    """The marks laid out in a plate's panels: each mark drawn once in every panel whose patterns match its
+    name, moved by that panel's shift; a mark no panel names stays.
+
+    A line drawn in a panel reaches over that panel's points on it (plus *margin*, as every line does), so
+    the stroke line under two diagrams is drawn under each; copies that fall on one line (an ordinate through
+    two panels one above the other) are drawn as one line over all their points.  The first copy keeps the
+    mark's id, the others add ``-panel<j>``.
+
+    >>> from construct.render.plate import Panel
+    >>> p = Mark("p", 1, "P", "point", (0.0, 0.0), "result", "", "")
+    >>> q = Mark("q", 1, "Q", "point", (1.0, 0.0), "result", "", "")
+    >>> ax = Mark("ax", 1, "axis", "segment", (-9.0, 0.0, 9.0, 0.0), "result", "", "")
+    >>> out = lay_out([p, q, ax], (Panel(("P", "Q", "axis")), Panel(("Q", "axis"), (0.0, 3.0))), 0.5, 1e-9)
+    >>> [(m.id, m.geom) for m in out]  # doctest: +NORMALIZE_WHITESPACE
+    [('p', (0.0, 0.0)), ('q', (1.0, 0.0)), ('q-panel1', (1.0, 3.0)),
+     ('ax', (-0.5, 0.0, 1.5, 0.0)), ('ax-panel1', (-1.5, 3.0, 3.5, 3.0))]
+    """
+    pats = [[re.compile(p) for p in panel.names] for panel in panels]
+    homes = {m.id: [i for i, ps in enumerate(pats) if any(p.fullmatch(m.name) for p in ps)] for m in marks}
+    points = [[m.geom for m in marks if m.kind is MarkKind.POINT and i in homes[m.id]] for i in range(len(panels))]
+    out: list[Mark] = []
+    for m in marks:
+        ins = homes[m.id]
+        if not ins:
+            out.append(m)
+            continue
+        if m.kind is MarkKind.SEGMENT:
+            geoms = _segment_copies(m.geom, [(tuple(panels[i].shift), points[i]) for i in ins], margin, tol)
+        else:
+            geoms = [_moved(m, tuple(panels[i].shift)) for i in ins]
+        out.extend(dataclasses.replace(m, id=m.id if j == 0 else f"{m.id}-panel{j}", geom=g)
+                   for j, g in enumerate(geoms))
+    return out
+
+
+def _moved(m: Mark, shift: tuple[float, float]) -> tuple:
+    dx, dy = shift
+    g = m.geom
+    if m.kind is MarkKind.POINT:
+        return (g[0] + dx, g[1] + dy)
+    if m.kind is MarkKind.SEGMENT:
+        return (g[0] + dx, g[1] + dy, g[2] + dx, g[3] + dy)
+    if m.kind.round:
+        return (g[0] + dx, g[1] + dy) + tuple(g[2:])
+    return tuple((x + dx, y + dy) for x, y in g)  # curve, area
+
+
+def _segment_copies(geom: tuple, homes: list, margin: float, tol: float) -> list[tuple]:
+    """A segment's copies, one per (shift, that panel's points): each over the points on it, collinear ones merged."""
+    x1, y1, x2, y2 = geom
+    length = math.hypot(x2 - x1, y2 - y1) or 1.0
+    ux, uy = (x2 - x1) / length, (y2 - y1) / length
+    nx, ny = -uy, ux
+    lines: list[list[float]] = []  # [offset across, t0, t1] in the frame of the unmoved line
+    for (dx, dy), pts in homes:
+        on = [(px - x1) * ux + (py - y1) * uy for px, py in pts
+              if abs((px - x1) * nx + (py - y1) * ny) <= tol * max(1.0, length)]
+        if on:
+            pad = margin * (5.0 if max(on) - min(on) <= tol * max(1.0, length) else 1.0)
+            t0, t1 = min(on) - pad, max(on) + pad
+        else:
+            t0, t1 = 0.0, length
+        off, along = dx * nx + dy * ny, dx * ux + dy * uy
+        for ln in lines:
+            if abs(ln[0] - off) <= tol * max(1.0, length):
+                ln[1], ln[2] = min(ln[1], t0 + along), max(ln[2], t1 + along)
+                break
+        else:
+            lines.append([off, t0 + along, t1 + along])
+    return [(x1 + off * nx + t0 * ux, y1 + off * ny + t0 * uy, x1 + off * nx + t1 * ux, y1 + off * ny + t1 * uy)
+            for off, t0, t1 in lines]
 
 
 def plate_names(protocol: Protocol, objects: Replay) -> set[str]:

@@ -162,7 +162,10 @@ class Drawing:
         read.  The player shows a view in its window (:data:`PLAYER_FIGURE_PX`, the view's box
         widened to the window's shape) with letters at its letter scale about their points; a view
         whose window cuts a letter is widened about its centre until it takes the letter in
-        (a few rounds: the letters shrink as the view grows), up to the whole figure.
+        (rounds until none is cut: the letters shrink as the view grows, and along a row of letters
+        -- the piston positions 1′…11′ on the stroke line -- each round takes in one letter and may
+        cut the next; every round grows the view by 2 % at least, so the rounds end), up to the
+        whole figure.
         """
         import numpy as np
 
@@ -208,7 +211,7 @@ class Drawing:
             if v not in done:
                 x, y, w, h = v
                 cx, cy = x + w / 2, y + h / 2
-                for _ in range(12):  # the level can change as the view grows, moving other letters
+                for _ in range(EDGE_ROUNDS):
                     z = full[2] / w
                     zl = ZOOM_LEVELS[level(z)]
                     a = letters_at(level(z))
@@ -1008,6 +1011,9 @@ _STROKES: dict[MarkKind, Any] = {
     MarkKind.CURVE: lambda f, vp, m, kw: f.path(d=(polyline_path if m.straight else curve_path)(vp, m.geom), **kw),
 }
 
+#: Rounds of widening a view whose window cuts a letter (Drawing._clear_edges): each grows the view by 2 %
+#: at least, so 80 rounds reach 4.9 times its width -- past the whole figure from any view (MAX_ZOOM = 4).
+EDGE_ROUNDS = 80
 
 def _is_view(elem: Any) -> bool:
     """Is *elem* a camera box of the ``views`` layer (frozen or not)?"""

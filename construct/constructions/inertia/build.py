@@ -103,7 +103,9 @@ def build_inertia(*, rod_ratio: float, parts: int, method: str, r: float, pressu
     used = check_parts(parts, method)
     b = Builder("inertia-curve", givens, {"parts": parts, "method": used, "requested_method": method,
                                           "plate": PLATE})
-    f = build_frame(b, result_circle=False)
+    # the crank circle stays in every teaching view (the points 1...17 stand on it; as a helper it faded
+    # after the frame's group, leaving the points in the air); the plate names what it shows (PLATE)
+    f = build_frame(b)
     c = _setup(b, f)
     points = divide_semicircle(b, O=f["O"], D0=f["D0"], D1=f["D1"], circle=f["circle"], axis=f["axis"],
                                n=parts, method=used)

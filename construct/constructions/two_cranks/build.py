@@ -211,29 +211,36 @@ def _work(b: Builder, part: _Part, speed: _Speed, W_at: tuple[float, float], n: 
     half = n // 2
     with b.group(f"work of the rods and mean work{' (infinite rod)' if part.infinite else ''}",
                  f"Arbeit der Stangen und mittlere Arbeit{' (unendliche Stange)' if part.infinite else ''}"):
-        W0 = b.given_point(f"{tag}W0", W_at[0], W_at[1], unit="r", de="Anfang W0 der Arbeitslinie",
-                           en="start W0 of the work line", label="W₀")
-        wl = b.given_line(f"{tag}work", W0, angle_deg=0.0, de="Arbeitslinie", en="work line")
-        back = b.circle_radius(f"{tag}M0.k", W0, speed.lead, de="r/g hinter W0", en="r/g behind W0")
-        means = [b.intersect(f"{tag}M0", wl, back, rule=("toward", W0, None, -1.0, 0.0),
-                             de="Anfang der mittleren Arbeit, r/g vor W0", en="start of the mean work, r/g before W0")]
-        ends = [W0]
-        for j in range(1, m + 1):
-            with b.group(f"crank position {j}: work stepped on", f"Kurbelstellung {j}: Arbeit abgetragen"):
-                # *start* is the first crank's starting index (N: § 146's B1, the crank-end dead centre)
-                a1, c1 = part.pistons[(start + j - 1) % m], part.pistons[(start + j) % m]
-                a2, c2 = part.pistons[(start + j - 1 + half) % m], part.pistons[(start + j + half) % m]
-                k1 = b.circle_segment(f"{tag}U{j}.k", ends[-1], a1, c1, de=f"Weg des ersten Kolbens, Schritt {j}",
-                                      en=f"path of the first piston, step {j}")
-                U = b.intersect(f"{tag}U{j}", wl, k1, rule=("toward", W0, None) + _FWD)
-                k2 = b.circle_segment(f"{tag}E{j}.k", U, a2, c2, de=f"Weg des zweiten Kolbens, Schritt {j}",
-                                      en=f"path of the second piston, step {j}")
-                ends.append(b.intersect(f"{tag}E{j}", wl, k2, rule=("toward", W0, None) + _FWD,
-                                        de=f"E{j}: Arbeit beider Stangen bis Stellung {j}",
-                                        en=f"E{j}: work of both rods up to position {j}"))
-                means.append(b.step_off(f"{tag}M{j}", wl, means[-1], mstep, rule=("toward", W0, None) + _FWD,
-                                        de=f"M{j}: mittlere Arbeit (4/π)·r·α, um 4r/N weiter",
-                                        en=f"M{j}: mean work (4/pi) r alpha, 4r/N further"))
+        # one stage the student watches grow: the work line keeps its marks until every crank position is
+        # stepped on (a finished group collapses, and each position alone would take the line's marks with it)
+        with b.group("the work line: both pistons' paths and the mean work stepped on",
+                     "Arbeitslinie: Wege beider Kolben und mittlere Arbeit abgetragen"):
+            W0 = b.given_point(f"{tag}W0", W_at[0], W_at[1], unit="r", de="Anfang W0 der Arbeitslinie",
+                               en="start W0 of the work line", label="W₀")
+            wl = b.given_line(f"{tag}work", W0, angle_deg=0.0, de="Arbeitslinie", en="work line")
+            back = b.circle_radius(f"{tag}M0.k", W0, speed.lead, de="r/g hinter W0", en="r/g behind W0")
+            means = [b.intersect(f"{tag}M0", wl, back, rule=("toward", W0, None, -1.0, 0.0),
+                                 de="Anfang der mittleren Arbeit, r/g vor W0", en="start of the mean work, r/g before W0")]
+            ends = [W0]
+            for j in range(1, m + 1):
+                with b.group(f"crank position {j}: work stepped on", f"Kurbelstellung {j}: Arbeit abgetragen"):
+                    # *start* is the first crank's starting index (N: § 146's B1, the crank-end dead centre)
+                    a1, c1 = part.pistons[(start + j - 1) % m], part.pistons[(start + j) % m]
+                    a2, c2 = part.pistons[(start + j - 1 + half) % m], part.pistons[(start + j + half) % m]
+                    k1 = b.circle_segment(f"{tag}U{j}.k", ends[-1], a1, c1, de=f"Weg des ersten Kolbens, Schritt {j}",
+                                          en=f"path of the first piston, step {j}")
+                    # captions in the figure's letters: U, E, M as the text names them, whichever diagram
+                    U = b.intersect(f"{tag}U{j}", wl, k1, rule=("toward", W0, None) + _FWD,
+                                    de=f"U{j}: Weg des ersten Kolbens auf der Arbeitslinie",
+                                    en=f"U{j}: the first piston's path along the work line")
+                    k2 = b.circle_segment(f"{tag}E{j}.k", U, a2, c2, de=f"Weg des zweiten Kolbens, Schritt {j}",
+                                          en=f"path of the second piston, step {j}")
+                    ends.append(b.intersect(f"{tag}E{j}", wl, k2, rule=("toward", W0, None) + _FWD,
+                                            de=f"E{j}: Arbeit beider Stangen bis Stellung {j}",
+                                            en=f"E{j}: work of both rods up to position {j}"))
+                    means.append(b.step_off(f"{tag}M{j}", wl, means[-1], mstep, rule=("toward", W0, None) + _FWD,
+                                            de=f"M{j}: mittlere Arbeit (4/π)·r·α, um 4r/N weiter",
+                                            en=f"M{j}: mean work (4/pi) r alpha, 4r/N further"))
     return _Part(**{**part.__dict__, "W0": W0, "ends": tuple(ends), "means": tuple(means)})
 
 
@@ -248,7 +255,8 @@ def _radii(b: Builder, part: _Part, speed: _Speed, n: int, start: int = 0) -> _P
             with b.group(f"speed at crank position {j}", f"Geschwindigkeit in Kurbelstellung {j}"):
                 k = b.circle_segment(f"{tag}V{j}.k", speed.one.origin, part.means[j], part.ends[j],
                                      de=f"M{j}E{j} auf die Maßlinie r", en=f"M{j}E{j} onto the scale line r")
-                V = b.intersect(f"{tag}V{j}", speed.one.line, k, rule=("toward", speed.angle.vertex, None, 0.0, -1.0))
+                V = b.intersect(f"{tag}V{j}", speed.one.line, k, rule=("toward", speed.angle.vertex, None, 0.0, -1.0),
+                                de=f"V{j}: M{j}E{j} auf der Maßlinie r", en=f"V{j}: M{j}E{j} on the scale line r")
                 Vg = carry_across(b, speed.angle, f"{tag}Vg{j}", V, speed.gain,
                                   de=f"auf die Maßlinie g·r: r + g·e{j}", en=f"onto the scale line g r: r + g e{j}")
                 point = part.crank_points[(start + j) % m]

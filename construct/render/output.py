@@ -51,7 +51,7 @@ def frame_steps(scene: Scene, mode: str) -> list[int]:
     >>> sc = build_scene(get("crank").figure(parts=360))
     >>> ks = frame_steps(sc, "auto")
     >>> len(sc.steps), len(ks) < 300, ks[-1] == len(sc.steps)
-    (7292, True, True)
+    (7295, True, True)
     """
     n = len(scene.steps)
     if mode == "none":
@@ -83,7 +83,7 @@ def frames_estimate(figure: Figure, mode: str) -> tuple[int, int]:
 
     >>> from construct.constructions import get
     >>> frames_estimate(get("crank").figure(parts=18), "all")
-    (362, 14016600)
+    (365, 14245800)
     """
     steps = figure.protocol.steps
     n = len(steps)

@@ -562,7 +562,7 @@ class Protocol:
         env: list[Any] = [None] * len(names)
         stop = len(entries) if upto is None else max(0, min(upto, len(entries)))
         if xp is SCALAR:
-            # run_step written out: the 18-part crank replays 362 steps in under a millisecond, and a call
+            # run_step written out: the 18-part crank replays 365 steps in under a millisecond, and a call
             # per step would be a tenth of that.  The same op functions, the same failure mapping.
             i = 0
             try:

@@ -11,7 +11,7 @@ figure with its title, since everything is visible by default.
 A step stays :data:`STEP_SECONDS` on screen by default: long enough to read
 its caption (the player lets the reader choose the pace).  A construction of
 more than :data:`MAX_STAGES` steps is animated a group at a time (the 360-part
-crank has 7292 steps: three hours at that pace).
+crank has 7295 steps: three hours at that pace).
 
 >>> from construct.constructions import get
 >>> from construct.render.scene import build_scene

@@ -349,3 +349,20 @@ def test_piston_force_from_a_card_against_closed_form(tmp_path):
     for k in range(7):
         x = mpmath.mpf(abscissa(fig, f"K{k}"))
         assert piston_force(fig, k) == pytest.approx(float(F * (8 - 6 * x - 1)), abs=0.1)
+
+
+@pytest.mark.parametrize("prefix, start", [("", -1.0), ("r", 1.0)])
+def test_the_free_forces_of_the_admission_are_hatched_over_the_whole_admission_on_both_strokes(revolution_fig,
+                                                                                             prefix, start):
+    """The hatched free forces of the admission reach from the dead centre the stroke starts at to the cut-off.
+
+    The drawing spans the stroke from x = -1 (head end) to x = +1 (crank end); the filling (30 % of the stroke,
+    Tafel I) ends 0.6 from the start -- at -0.4 forward, at +0.4 on the return.  On the return the pieces
+    were once taken in the forward order, and only 0.40...0.43 was hatched.
+    """
+    filling = 0.30  # Tafel I: 30 % Füllung, the figure's default
+    cut_off = start - 2.0 * filling * start
+    area = revolution_fig.replay[f"{prefix}free.a"]
+    xs = [p[0] for _, ring in area.pieces for p in ring]
+    assert min(xs) == pytest.approx(min(start, cut_off), abs=1e-9)
+    assert max(xs) == pytest.approx(max(start, cut_off), abs=1e-9)

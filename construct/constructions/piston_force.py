@@ -678,9 +678,11 @@ def _curves(b: Builder, n: int, fbase: str, *, prefix: str = "", corners: tuple[
     eps = 1e-9 * abs(xs[n] - xs[0])
     stroke = ("", "") if forward else (" (Rückgang)", " (return stroke)")
     with b.group("the lines drawn through the points" + stroke[1], "Die Linien durch die Punkte gezogen" + stroke[0]):
-        first = [f"{p}K{k}" for k in range(n + 1) if xs[k] < x1 - eps] + [c1]
-        mid = [c1] + [f"{p}K{k}" for k in range(n + 1) if x1 + eps < xs[k] < x2 - eps] + [c2]
-        last = [c2] + [f"{p}K{k}" for k in range(n + 1) if xs[k] > x2 + eps]
+        # the points in the order the piston meets them on this stroke (on the return from the crank end)
+        order = sorted(range(n + 1), key=lambda k: xs[k])
+        first = [f"{p}K{k}" for k in order if xs[k] < x1 - eps] + [c1]
+        mid = [c1] + [f"{p}K{k}" for k in order if x1 + eps < xs[k] < x2 - eps] + [c2]
+        last = [c2] + [f"{p}K{k}" for k in order if xs[k] > x2 + eps]
         if x2 <= x1 + eps:
             raise InvalidParameter("the compression must begin after the cut-off (s1 + s3 < s) for this figure")
         b.line(f"{p}forcea", first[0], first[-1], role="result", de="Kolbenkraft während der Füllung: Gerade",

@@ -15,8 +15,8 @@ import pytest
 
 from construct.cli.main import main
 from construct.constructions import get
-from construct.constructions.live import (QUANTUM_PX, arc_flags, decode, drawn_numbers, live_data, live_givens,
-                                          live_sweep, player_page)
+from construct.constructions.live import (QUANTUM_PX, arc_flags, decode, drawn_numbers, inflated, live_data,
+                                          live_givens, live_sweep, player_page)
 from construct.render.styles import STYLES
 
 
@@ -28,13 +28,14 @@ def crank_live():
 
 
 def _interpolated(live, data, v: float) -> np.ndarray:
-    rows = decode(data["data"], data["width"], data["rows"], data["cols"])
+    meta = inflated(data["meta_z"])
+    rows = decode(data, meta["grid"], data["rows"], data["cols"])
     u = math.log10(v)
-    g = np.asarray(data["grid"])
+    g = np.asarray(meta["grid"])
     j = int(np.clip(np.searchsorted(g, u, side="right") - 1, 0, len(g) - 2))
     t = (u - g[j]) / (g[j + 1] - g[j])
     flags = np.zeros(data["cols"], dtype=bool)
-    flags[data["flags"]] = True
+    flags[meta["flags"]] = True
     return np.where(flags, rows[j] if t < 0.5 else rows[j + 1], rows[j] + (rows[j + 1] - rows[j]) * t)
 
 

@@ -44,6 +44,11 @@ def with_live(page: str, data: Mapping[str, Any]) -> str:
                 f'<div class="live-range" style="color:#777;font-size:12px">{html.escape(_book(data["low"]))} … '
                 f'{html.escape(_book(data["high"]))} (log. Skala / log scale; gebaut / built: '
                 f'{html.escape(_book(data["initial"]))})</div>'
+                # why there is one slider (a teacher asks for the next given first)
+                f'<div class="live-held" style="color:#777;font-size:12px">Nur {sym} ist beweglich; die übrigen '
+                f'Gegebenen bleiben beim Buchwert. / Only {sym} moves here; the other givens stay at the book’s '
+                f'values: a second slider would need the sweep over both givens together, and the number of '
+                f'parts changes the steps themselves.</div>'
                 f'<details open><summary>Prüfungen / checks <span id="live-at"></span></summary>'
                 f'<div style="max-height:28vh;overflow:auto"><table id="live-checks" style="border-collapse:collapse;'
                 f'font-size:12px;font-variant-numeric:tabular-nums"><thead><tr><th>Größe / quantity</th>'
@@ -159,23 +164,36 @@ LIVE_SCRIPT = r"""
     svg.querySelectorAll("circle.pt[id]").forEach(function(c){
       pts.push({el: c, x: +c.getAttribute("cx"), y: +c.getAttribute("cy"), s: byId[c.id]});
     });
-    svg.querySelectorAll("text, line:not([id])").forEach(function(t){
-      if (t.closest("#caption") || t.closest("#furniture")) return;
-      // a label follows its mark (id "NAME-label"), its halo (the text before it) the same mark
+    function nearest(x, y){
+      var best = null, bd = 60 * 60;
+      pts.forEach(function(q){ var d = (q.x - x) * (q.x - x) + (q.y - y) * (q.y - y); if (d < bd) { bd = d; best = q; } });
+      return best;
+    }
+    function owned(t){  // the point a label names (its id "NAME-label"; a halo: the text after it)
       var named = t.id ? t : (t.nextElementSibling && t.nextElementSibling.tagName === "text" ? t.nextElementSibling : null);
       var owner = named && named.id && /-label$/.test(named.id) ? document.getElementById(named.id.slice(0, -6)) : null;
-      var p = null;
-      if (owner && owner.tagName === "circle") {
-        p = {el: owner, x: +owner.getAttribute("cx"), y: +owner.getAttribute("cy"), s: byId[owner.id]};
-      } else {
-        var x = +(t.getAttribute("x") || t.getAttribute("x1")), y = +(t.getAttribute("y") || t.getAttribute("y1"));
-        var bd = Infinity;
-        pts.forEach(function(q){ var d = (q.x - x) * (q.x - x) + (q.y - y) * (q.y - y); if (d < bd) { bd = d; p = q; } });
-        if (bd >= 60 * 60) p = null;
-      }
+      return owner && owner.tagName === "circle" ? {el: owner, x: +owner.getAttribute("cx"), y: +owner.getAttribute("cy"), s: byId[owner.id]} : null;
+    }
+    function add(t, p){
       if (!p || !p.s) return;  // no point, or one that does not move
       var host = t.closest("g[data-step]");
       followers.push({el: t, p: p, at: coords(t), step: host ? +host.getAttribute("data-step") : 0, text: {}});
+    }
+    // a label group (the camera's: letters, halo and leader about an anchor) moves as one, with its point
+    svg.querySelectorAll("g.lbg").forEach(function(g){
+      if (g.closest("#caption") || g.closest("#furniture")) return;
+      var m = /^translate\(([-0-9.e]+)[ ,]+([-0-9.e]+)\)$/.exec(g.getAttribute("transform") || "");
+      var first = g.querySelector("text, line");
+      if (!m || !first) return;
+      var p = null;
+      g.querySelectorAll("text").forEach(function(t){ p = p || owned(t); });
+      add(first, p || nearest(+m[1], +m[2]));
+    });
+    // letters and leader lines drawn where they stand follow the point they name, or the nearest point
+    svg.querySelectorAll("text, line:not([id])").forEach(function(t){
+      if (t.closest("#caption") || t.closest("#furniture") || t.closest("g.lbg")) return;
+      var x = +(t.getAttribute("x") || t.getAttribute("x1")), y = +(t.getAttribute("y") || t.getAttribute("y1"));
+      add(t, owned(t) || nearest(x, y));
     });
     followers.sort(function(a, b){ return a.step - b.step; });
   }

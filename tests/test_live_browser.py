@@ -195,3 +195,24 @@ def test_the_gallery_players_are_live_and_draw_what_a_fresh_replay_draws(browser
     assert not errors, errors
     assert worst > 0.0
     page.close()
+
+
+def test_letters_stay_with_their_points(browser, live_player):
+    """Each letter group's anchor keeps its distance to the nearest point as the slider moves (a letter
+    left where the built value put it would be far from every point)."""
+    _, _, path = live_player
+    page, errors = _open(browser, path)
+    near = """() => { const pts = Array.from(document.querySelectorAll('#figure circle.pt[id]'))
+        .map(c => [+c.getAttribute('cx'), +c.getAttribute('cy')]);
+      return Array.from(document.querySelectorAll('#figure g.lbg')).map(g => {
+        const m = /translate\\(([-0-9.e]+)[ ,]+([-0-9.e]+)\\)/.exec(g.getAttribute('transform'));
+        return Math.min(...pts.map(p => Math.hypot(p[0] - +m[1], p[1] - +m[2]))); }); }"""
+    built = page.evaluate(near)
+    assert len(built) > 10
+    for v in (1.3, 2.5, 12.0):
+        page.evaluate("v => window.constructLive.set(v)", v)
+        moved = page.evaluate(near)
+        off = [abs(a - b) for a, b in zip(built, moved) if a < 30]  # the letters placed at a point
+        assert len(off) > 10 and max(off) <= 1.0, (v, max(off))
+    assert not errors, errors
+    page.close()

@@ -34,6 +34,16 @@ everywhere (:attr:`LiveSweep.snapped`) instead of forcing the grid down at every
 flip.  The grid stops growing at *max_values* values; a cell still too coarse
 then is recorded as a jump (measured: none for the crank and the inertia curve).
 
+**What travels.**  The grid is shared, but most coordinates need few of its
+values: each coordinate keeps only the grid values where the line between
+its neighbours would miss the exact drawing by more than :data:`ROW_PX` at
+some grid value between (:func:`column_knots`), stored either as drawn or,
+through each grid value's fit to the view, in the construction's own units
+(the figure is rescaled to the view's width as L/r changes, so every drawn
+coordinate moves, though the crank circle and all on it do not move in the
+construction); identical coordinates travel once (:func:`encode`).  The page
+rebuilds every grid value from that, then blends as above.
+
 What is interpolated: every element of the figure that carries an id (the
 marks: points, lines, circles, arcs, curves, areas and their hatching), the
 figure's view box, and each step's magnified view.  The bound holds for the

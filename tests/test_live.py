@@ -113,3 +113,13 @@ def test_replay_live_writes_a_player_with_the_slider(tmp_path):
     from construct.io.manifest import changed_files
 
     assert changed_files(out, "replay") == []
+
+
+def test_the_page_has_the_checks_of_the_built_value(crank_live):
+    """A teacher back at the book's L/r = 5 sees the checks of the figure built at 5, not of a neighbour."""
+    c, live = crank_live
+    table = inflated(live_data(live)["checks_z"])
+    i = table["check_values"].index(5.0)
+    fresh = c.checks(c.figure(parts=3, rod_ratio=5.0))
+    assert [row[1] for row in table["checks"][i]] == [pytest.approx(f.expected, rel=1e-8, abs=1e-12) for f in fresh]
+    assert table["check_values"] == sorted(table["check_values"])

@@ -242,6 +242,8 @@ class LiveSweep:
     start: int = 0
     #: Per grid value, the drawing's fit to the view (ox, oy, s): (x, y) is drawn at (ox + s x, oy - s y) px.
     fit: np.ndarray | None = None
+    #: The checks at the built value, as :attr:`checks`.
+    built_checks: list[list[Any]] = field(default_factory=list)
 
     def nearest_columns(self) -> np.ndarray:
         """The columns taken from the nearer grid value: large-arc flags and the snapped marks."""
@@ -359,6 +361,9 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
                      # the fit travels as float32: the columns are checked against the drawing through it
                      fit=np.asarray([data[u][2] for u in us], dtype=np.float32).astype(float))
     live.checks = _checks(construction, figure, given, grid)
+    # and at the built value (the book's): a teacher who returns there sees its own checks
+    live.built_checks = [[c.name, c.measured, c.expected, c.error, c.tolerance, bool(c.ok)]
+                         for c in construction.checks(figure)]
     return live
 
 
@@ -620,7 +625,8 @@ def inflated(text: str) -> Any:
     return json.loads(zlib.decompress(base64.b64decode(text)))
 
 
-#: The checks travel at this many grid values at most (the page shows the nearest: it says which).
+#: The checks travel at this many grid values at most, and at the built value (the page shows the nearest: it
+#: says which).
 CHECK_VALUES = 48
 
 
@@ -631,6 +637,9 @@ def _check_table(live: LiveSweep) -> dict[str, Any]:
     n = len(live.grid)
     picks = sorted({int(round(i)) for i in np.linspace(0, n - 1, min(n, CHECK_VALUES))})
     g = lambda x: float(f"{x:.9g}") if math.isfinite(x) else None  # noqa: E731
+    at = [(float(live.grid[i]), live.checks[i]) for i in picks]
+    if live.built_checks and all(v != live.initial for v, _ in at):  # the book's value among them
+        at = sorted(at + [(float(live.initial), live.built_checks)], key=lambda x: x[0])
     return {"check_names": [c[0] for c in live.checks[0]],
-            "check_values": [float(live.grid[i]) for i in picks],
-            "checks": [[[g(c[1]), g(c[2]), float(f"{c[3]:.2g}"), c[5]] for c in live.checks[i]] for i in picks]}
+            "check_values": [v for v, _ in at],
+            "checks": [[[g(c[1]), g(c[2]), float(f"{c[3]:.2g}"), c[5]] for c in row] for _, row in at]}

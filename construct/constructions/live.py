@@ -128,7 +128,7 @@ def drawn_numbers(page: str) -> tuple[list[tuple[str, str, str]], list[float], d
     nums: list[float] = []
     for e in root.iter():
         ident = e.get("id") or ""
-        if e is not root and (not ident or ident == "ring"):  # the ring is the player's: it rings a step (below)
+        if e is not root and (not ident or ident == "ring"):  # the ring is the player's (the page moves it)
             continue
         for a in _GEOMETRY:
             v = e.get(a)
@@ -150,11 +150,7 @@ def drawn_numbers(page: str) -> tuple[list[tuple[str, str, str]], list[float], d
             keys.append(("#zoom", str(i), "# # # #"))
             j = st.get(index, -1)
             nums.extend(float(x) for x in data[boxes][j]) if j >= 0 else nums.extend(full)
-        # the ring about what a step makes (centre, radius): it moves with the given too
-        for i, st in enumerate(data["steps"]):
-            if st.get("r"):
-                keys.append(("#ring", str(i), "# # #"))
-                nums.extend(float(x) for x in st["r"])
+
     return keys, nums, {}
 
 
@@ -187,7 +183,7 @@ def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray, sna
     col_err = np.abs(blended - exact)
     nearest = np.isin(owner, list(snap)) if snap else np.zeros(owner.size, dtype=bool)
     col_err[nearest] = np.maximum(np.abs(na - exact), np.abs(nb - exact))[nearest]
-    col_err[_columns(keys, lambda k: k[0] in ("#zoom", "#ring"))] = 0.0  # they frame and ring: blended, not refined for
+    col_err[_columns(keys, lambda k: k[0] == "#zoom")] = 0.0  # views frame the figure: blended, not refined for
     flags = arc_flags(keys)
     for c in np.nonzero(flags & ~nearest)[0]:
         col_err[c] = 0.0
@@ -404,8 +400,6 @@ def column_kinds(keys: list[tuple[str, str, str]]) -> np.ndarray:
             out.append(LENGTH)
         elif ident == "#zoom" or attr == "viewBox":
             out += [X, Y, LENGTH, LENGTH]
-        elif ident == "#ring":
-            out += [X, Y, LENGTH]
         elif attr == "d" and template == _ARC:
             out += [X, Y, LENGTH, LENGTH, PX, PX, PX, X, Y]
         elif attr in ("d", "points") and _PATH.match(template):
@@ -603,9 +597,11 @@ def live_data(live: LiveSweep) -> dict[str, Any]:
     """What the page needs: the given and its domain in the open; deflated: the grid (log10), the keys, which
     columns are drawn from the nearer grid value, the jumps (``meta_z``), the coordinates (``data``,
     :func:`encode`) and the checks (``checks_z``)."""
-    meta = {"grid": [round(math.log10(v), 12) for v in live.grid], "values": [float(v) for v in live.grid],
+    # a jump: the index of its cell's lower grid value
+    where = {float(v): i for i, v in enumerate(live.grid)}
+    meta = {"grid": [round(math.log10(v), 12) for v in live.grid],
             "keys": [list(k) for k in live.keys], "flags": live.nearest_columns().nonzero()[0].tolist(),
-            "jumps": live.jumps}
+            "jumps": sorted(where[float(a)] for a, _ in live.jumps)}
     return {"given": live.given, "symbol": live.symbol, "low": live.domain.low, "high": live.domain.high,
             "initial": live.initial, "rows": int(live.drawn.shape[0]), "cols": int(live.drawn.shape[1]),
             "q": QUANTUM_PX, **encode(live), "bound": round(live.bound + QUANTUM_PX / 2, 3),

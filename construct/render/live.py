@@ -145,7 +145,6 @@ LIVE_SCRIPT = r"""
       var parts = k[2].split("#"), nn = parts.length - 1;
       // the view and the ring of a step: computed for the shown step only (view)
       if (k[0] === "#zoom") { zoomAt[+k[1]] = at; at += nn; return; }
-      if (k[0] === "#ring") { ringAt[+k[1]] = at; at += nn; return; }
       var el = k[0] ? document.getElementById(k[0]) : svg, cs = new Int32Array(nn), fl = new Uint8Array(nn), mv = false;
       for (var i = 0; i < nn; i++) { cs[i] = colmap[at + i]; fl[i] = isFlag[at + i]; if (moving[cs[i]]) mv = true; }
       at += nn;
@@ -196,6 +195,11 @@ LIVE_SCRIPT = r"""
       add(t, owned(t) || nearest(x, y));
     });
     followers.sort(function(a, b){ return a.step - b.step; });
+    // the ring of a step (round its mark where that is small on the screen) follows the nearest point
+    if (player) player.data.steps.forEach(function(st, i){
+      var p = st.r ? nearest(st.r[0], st.r[1]) : null;
+      if (p && p.s && p.s.cx && p.s.cy) ringAt[i] = {p: p, x: st.r[0], y: st.r[1]};
+    });
   }
   function coords(e){  // a letter's x, y or a leader line's ends, as built; or its label group's translate
     var out = {}, g = e.parentNode, m = g && g.classList && g.classList.contains("lbg") &&
@@ -211,25 +215,30 @@ LIVE_SCRIPT = r"""
     while (hi - lo > 1) { var m = (lo + hi) >> 1; if (g[m] <= u) lo = m; else hi = m; }
     var t = (u - g[lo]) / (g[lo + 1] - g[lo]);
     // across a jump of the drawing (the broken axis appearing) the nearer side is drawn, not a blend
-    var a = L.values[lo], b = L.values[lo + 1];
-    for (var j = 0; j < L.jumps.length; j++) if (L.jumps[j][0] === a && L.jumps[j][1] === b) t = t < 0.5 ? 0 : 1;
+    if (L.jumps.indexOf(lo) >= 0) t = t < 0.5 ? 0 : 1;
     return [lo, t];
   }
-  function view(now){  // what the player's show(k) does with the view, without touching the steps (cheap)
+  function view(dragging){  // what the player's show(k) does with the view, without touching the steps (cheap)
     var d = player.data, k = +(svg.getAttribute("data-step") || d.n), st = k > 0 ? d.steps[k - 1] : null;
     if (st && st[IDX] >= 0 && cur && zoomAt[k - 1] !== undefined) {
       for (var i = 0; i < 4; i++) d[LIST][st[IDX]][i] = Math.round(valueAt(zoomAt[k - 1] + i) * 100) / 100;
     }
-    if (st && st.r && cur && ringAt[k - 1] !== undefined) {  // the ring: the array the player rings with
-      for (var j = 0; j < 3; j++) st.r[j] = Math.round(valueAt(ringAt[k - 1] + j) * 100) / 100;
+    var rp = ringAt[k - 1];
+    if (st && st.r && rp && rp.p.s) {  // the ring (the array the player rings with) stays on its point
+      st.r[0] = Math.round((rp.x + now(rp.p.s.cx) - rp.p.x) * 100) / 100;
+      st.r[1] = Math.round((rp.y + now(rp.p.s.cy) - rp.p.y) * 100) / 100;
     }
     // the player moves its view there itself: at once while the given is dragged, smoothly to a new step
-    if (player.jump && now) { player.jump(); return; }
+    if (player.jump && dragging) { player.jump(); return; }
     if (player.move) { player.move(); return; }
     var zoom = document.getElementById("zoom");
     var box = st && zoom && zoom.checked && k < d.n && st.z >= 0 ? d.zooms[st.z] : null;
     svg.setAttribute("viewBox", (box || player.full).join(" "));
     svg.style.setProperty("--z", box ? (player.full[2] / box[2]).toFixed(3) : "1");
+  }
+  function now(sl){  // a one-number mark's value at the shown value (written or not yet)
+    var c = sl.cs[0];
+    return D[cur.r0 + c] + (D[cur.r1 + c] - D[cur.r0 + c]) * cur.t;
   }
   function valueAt(c){  // column c (of the keys) at the shown value
     var uc = colmap[c];
@@ -332,7 +341,7 @@ LIVE_SCRIPT = r"""
   }
   api.ready = inflate(L.meta_z).then(function(b){
     var m = JSON.parse(new TextDecoder().decode(b));
-    L.grid = m.grid; L.values = m.values; L.keys = m.keys; L.flags = m.flags; L.jumps = m.jumps;
+    L.grid = m.grid; L.keys = m.keys; L.flags = m.flags; L.jumps = m.jumps;
     return L.checks_z ? inflate(L.checks_z) : null;
   }).then(function(b){
     if (b) { var c = JSON.parse(new TextDecoder().decode(b)); L.check_names = c.check_names; L.check_values = c.check_values; L.checks = c.checks; }

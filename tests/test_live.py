@@ -123,3 +123,9 @@ def test_the_page_has_the_checks_of_the_built_value(crank_live):
     fresh = c.checks(c.figure(parts=3, rod_ratio=5.0))
     assert [row[1] for row in table["checks"][i]] == [pytest.approx(f.expected, rel=1e-8, abs=1e-12) for f in fresh]
     assert table["check_values"] == sorted(table["check_values"])
+
+
+def test_bench_live_without_a_player_refuses_in_one_line(tmp_path, capsys):
+    assert main(["bench", "--live", str(tmp_path / "none.html")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--live" in err and "none.html" in err and "Traceback" not in err

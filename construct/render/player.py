@@ -272,6 +272,12 @@ li a.later{color:#bbb}
   }
   window.addEventListener("resize", function () { put(now); });
   function text(id, s) { document.getElementById(id).textContent = s; }
+  function zoomLevel(view) {  // the zoom level of *view*: its letters (placed for it) and their scale
+    var z = full[2] / view[2], lvl = 0;
+    data.levels.forEach(function (l, i) { if (z >= 0.999 * l) { lvl = i; } });
+    if (svg.getAttribute("class") !== "zl" + lvl) { svg.setAttribute("class", "zl" + lvl); }
+    level = lvl;
+  }
   function show(j) {
     k = Math.max(0, Math.min(n, j));
     groups.forEach(function (g) {
@@ -294,10 +300,7 @@ li a.later{color:#bbb}
     text("cap-en", st ? "Step " + k + ": " + st.en : "");
     // the camera: the step's view (the whole figure at the ends or without the magnifier), reached smoothly
     var view = st && zoom.checked ? data.views[st.v] : full;
-    var z = full[2] / view[2], lvl = 0;
-    data.levels.forEach(function (l, i) { if (z >= 0.999 * l) { lvl = i; } });
-    svg.setAttribute("class", "zl" + lvl);
-    level = lvl;
+    zoomLevel(view);
     ringAt = st && k < n ? (st.r || null) : null;
     move(view);
     var cur = links[k - 1];
@@ -356,7 +359,9 @@ li a.later{color:#bbb}
   // (move: to the step's view, smoothly; jump: there at once, as a given's slider is dragged)
   function target() { var st = k > 0 ? data.steps[k - 1] : null; return st && zoom.checked ? data.views[st.v] : full; }
   window.constructPlayer = {data: data, full: full, redraw: function () { show(k); }, move: function () { move(target()); },
-    jump: function () { if (anim) { cancelAnimationFrame(anim); anim = null; } now = target().slice(); put(now); }};
+    jump: function () {
+      if (anim) { cancelAnimationFrame(anim); anim = null; }
+      now = target().slice(); zoomLevel(now); put(now); }};
 })();
 </script>
 </body>

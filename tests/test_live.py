@@ -121,7 +121,11 @@ def test_the_page_has_the_checks_of_the_built_value(crank_live):
     table = inflated(live_data(live)["checks_z"])
     i = table["check_values"].index(5.0)
     fresh = c.checks(c.figure(parts=3, rod_ratio=5.0))
-    assert [row[1] for row in table["checks"][i]] == [pytest.approx(f.expected, rel=1e-8, abs=1e-12) for f in fresh]
+    assert [row[0] for row in table["checks"][i]] == [pytest.approx(f.expected, rel=1e-8, abs=1e-12) for f in fresh]
+    # the constructed value: given, or the formula's plus the error, to the digits the page shows
+    made = [row[3] if len(row) > 3 else row[0] + row[1] for row in table["checks"][i]]
+    assert made == [pytest.approx(f.measured, rel=1e-8, abs=1e-12) for f in fresh]
+    assert [row[2] for row in table["checks"][i]] == [f.ok for f in fresh]
     assert table["check_values"] == sorted(table["check_values"])
 
 

@@ -76,15 +76,18 @@ from ..figure import Figure
 from ..kernel.errors import InvalidParameter
 from .domain import Domain, ROD_RATIO
 
-__all__ = ["LIVE_GIVENS", "LiveSweep", "live_sweep", "drawn_numbers", "column_knots", "column_kinds", "encode", "decode", "inflated", "ROW_PX", "REFINE_PX", "QUANTUM_PX", "MIN_CELL",
+__all__ = ["LIVE_GIVENS", "LiveSweep", "live_sweep", "drawn_numbers", "column_knots", "column_kinds", "encode", "decode", "inflated", "ROW_PX", "REFINE_PX", "QUANTUM_PX", "STORED_PX", "MIN_CELL",
            "live_data", "live_givens", "player_page"]
 
 #: The continuous givens a player can move: protocol name -> (stated domain, the book's symbol).
 LIVE_GIVENS: dict[str, tuple[Domain, str]] = {"rod_ratio": (ROD_RATIO, "L/r")}
 #: A cell is split while linear interpolation misses the exact drawing by more than this (px).
 REFINE_PX = 0.4
-#: Stored coordinates are multiples of this (px).
+#: The refinement blends coordinates rounded to multiples of this (px).
 QUANTUM_PX = 0.05
+#: The page's coordinates travel as multiples of this (px, or its share of the largest scale in the
+#: construction's units): the rounding is inside ROW_PX, which the columns are checked against.
+STORED_PX = 0.1
 #: A jump caused by at most this many marks is theirs (they are drawn from the nearer grid value), not the figure's.
 SNAP_AT_MOST = 3
 #: A cell narrower than this (in log10 of the given) is not split further: it straddles a jump of the drawing.
@@ -410,9 +413,9 @@ def column_kinds(keys: list[tuple[str, str, str]]) -> np.ndarray:
 
 
 def _quanta(live: LiveSweep, kinds: np.ndarray) -> np.ndarray:
-    """The quantum of each column in its stored units: QUANTUM_PX drawn, at most that at the largest scale."""
+    """The quantum of each column in its stored units: STORED_PX drawn, at most that at the largest scale."""
     smax = float(np.max(live.fit[:, 2])) if live.fit is not None and kinds.any() else 1.0
-    return np.where(kinds > 0, QUANTUM_PX / smax, QUANTUM_PX)
+    return np.where(kinds > 0, STORED_PX / smax, STORED_PX)
 
 
 def _stored(drawn: np.ndarray, fit: np.ndarray | None, kinds: np.ndarray) -> np.ndarray:
@@ -548,7 +551,7 @@ def encode(live: LiveSweep) -> dict[str, Any]:
                + np.packbits(ukeep.T.reshape(-1)).tobytes() + fit.astype("<f4").tobytes()
                + uq[0].astype("<i4").tobytes() + planes.tobytes())
     return {"data": base64.b64encode(zlib.compress(payload, 9)).decode("ascii"), "width": width, "mapw": mapw,
-            "ucols": int(uq.shape[1]), "qx": float(_quanta(live, np.ones(1, dtype=np.int8))[0])}
+            "ucols": int(uq.shape[1]), "q": STORED_PX, "qx": float(_quanta(live, np.ones(1, dtype=np.int8))[0])}
 
 
 def decode(data: Mapping[str, Any], grid: Any, rows: int, cols: int) -> np.ndarray:
@@ -573,7 +576,7 @@ def decode(data: Mapping[str, Any], grid: Any, rows: int, cols: int) -> np.ndarr
     deltas = np.ascontiguousarray(np.frombuffer(raw[at:], dtype=np.uint8).reshape(width, n).T).view(f"<i{width}")
     deltas = deltas.reshape(-1).astype(np.int64)
     g = np.asarray(grid, dtype=float)
-    quanta = np.where(kinds > 0, data.get("qx", QUANTUM_PX), QUANTUM_PX)
+    quanta = np.where(kinds > 0, data["qx"], data["q"])
     out = np.empty((rows, ucols))
     pos = 0
     for c in range(ucols):
@@ -604,7 +607,7 @@ def live_data(live: LiveSweep) -> dict[str, Any]:
             "jumps": sorted(where[float(a)] for a, _ in live.jumps)}
     return {"given": live.given, "symbol": live.symbol, "low": live.domain.low, "high": live.domain.high,
             "initial": live.initial, "rows": int(live.drawn.shape[0]), "cols": int(live.drawn.shape[1]),
-            "q": QUANTUM_PX, **encode(live), "bound": round(live.bound + QUANTUM_PX / 2, 3),
+            **encode(live), "bound": round(live.bound + QUANTUM_PX / 2, 3),
             "meta_z": _deflated(meta), "checks_z": _deflated(_check_table(live))}
 
 
@@ -636,6 +639,15 @@ def _check_table(live: LiveSweep) -> dict[str, Any]:
     at = [(float(live.grid[i]), live.checks[i]) for i in picks]
     if live.built_checks and all(v != live.initial for v, _ in at):  # the book's value among them
         at = sorted(at + [(float(live.initial), live.built_checks)], key=lambda x: x[0])
-    return {"check_names": [c[0] for c in live.checks[0]],
-            "check_values": [v for v, _ in at],
-            "checks": [[[g(c[1]), g(c[2]), float(f"{c[3]:.2g}"), c[5]] for c in row] for _, row in at]}
+
+    def row(c: list[Any]) -> list[Any]:
+        # [formula, error, ok] and the constructed value where formula + error does not give its 9 digits
+        # (a Euclidean chain's error is 1e-16: the constructed value is the formula's, to every digit shown)
+        expected, error = g(c[2]), float(f"{c[3]:.2g}") if math.isfinite(c[3]) else None
+        out = [expected, error, c[5]]
+        if expected is None or error is None or g(expected + error) != g(c[1]):
+            out.append(g(c[1]))
+        return out
+
+    return {"check_names": [c[0] for c in live.checks[0]], "check_values": [v for v, _ in at],
+            "checks": [[row(c) for c in cs] for _, cs in at]}

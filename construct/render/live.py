@@ -333,9 +333,11 @@ LIVE_SCRIPT = r"""
     document.getElementById("live-at").textContent = "(" + L.symbol + " = " + book(L.check_values[k]) + ")";
     while (body.firstChild) body.removeChild(body.firstChild);
     L.checks[k].forEach(function(c, i){
+      // [formula, error, ok, constructed value where formula + error does not give it] (live.py _check_table)
       var tr = document.createElement("tr"), num = function(x){ return x === null ? "–" : x.toPrecision(8); };
-      cellText(tr, L.check_names[i]); cellText(tr, num(c[0])); cellText(tr, num(c[1]));
-      cellText(tr, c[2].toExponential(1)); cellText(tr, c[3] ? "✓" : "✗", c[3] ? "ok" : "bad");
+      var made = c.length > 3 ? c[3] : (c[0] === null || c[1] === null ? null : c[0] + c[1]);
+      cellText(tr, L.check_names[i]); cellText(tr, num(made)); cellText(tr, num(c[0]));
+      cellText(tr, c[1] === null ? "–" : c[1].toExponential(1)); cellText(tr, c[2] ? "✓" : "✗", c[2] ? "ok" : "bad");
       body.appendChild(tr);
     });
   }

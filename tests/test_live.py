@@ -133,3 +133,12 @@ def test_bench_live_without_a_player_refuses_in_one_line(tmp_path, capsys):
     assert main(["bench", "--live", str(tmp_path / "none.html")]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "--live" in err and "none.html" in err and "Traceback" not in err
+
+
+def test_the_checks_travel_evenly_over_the_slider(crank_live):
+    """The page shows the checks at the nearest swept value: those are spread evenly over the slider (log10),
+    not over the grid, which is dense where the drawing bends."""
+    _, live = crank_live
+    u = np.log10(inflated(live_data(live)["checks_z"])["check_values"])
+    grid_gap = np.diff(np.log10(live.grid)).max()
+    assert np.diff(u).max() <= max(2 * (u[-1] - u[0]) / 47, grid_gap) + 1e-12

@@ -634,7 +634,9 @@ def _check_table(live: LiveSweep) -> dict[str, Any]:
     if not live.checks:
         return {"checks": [], "check_values": [], "check_names": []}
     n = len(live.grid)
-    picks = sorted({int(round(i)) for i in np.linspace(0, n - 1, min(n, CHECK_VALUES))})
+    # evenly in log10 of the given (the grid is dense where the drawing bends, the slider is not)
+    u = np.log10(live.grid)
+    picks = sorted({int(np.argmin(np.abs(u - t))) for t in np.linspace(u[0], u[-1], min(n, CHECK_VALUES))})
     g = lambda x: float(f"{x:.9g}") if math.isfinite(x) else None  # noqa: E731
     at = [(float(live.grid[i]), live.checks[i]) for i in picks]
     if live.built_checks and all(v != live.initial for v, _ in at):  # the book's value among them

@@ -115,6 +115,10 @@ def test_the_slider_draws_what_a_fresh_replay_draws(browser, live_player):
         assert page.locator("#live-value").text_content() == f"{v:.4g}".replace(".", ",")
         title = page.locator("h1").text_content()  # the title names it too, as the book writes the rod
         assert any(f"{form}{v:.4g}".replace(".", ",") in title for form in ("L/r = ", "r/L = 1/")), title
+        # and the givens beside the figure
+        rod = page.evaluate("""() => Array.from(document.querySelectorAll('#givens tr'))
+            .filter(r => /^(r\\/L|r\\/l|L\\/r)$/.test(r.cells[0].textContent.trim())).map(r => r.cells[1].textContent)""")
+        assert rod and all(t.endswith(f"{v:.4g}".replace(".", ",")) for t in rod), rod
         worst = max(worst, _compare(page, c, params, v, keys, snapped))
         rows = page.locator("#live-checks tbody tr")
         assert rows.count() == len(c.checks(c.figure(parts=3, rod_ratio=v)))

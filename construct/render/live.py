@@ -311,15 +311,20 @@ LIVE_SCRIPT = r"""
         titled.push({n: t, text: t.nodeValue, en: !!(t.parentNode.closest && t.parentNode.closest(".en"))});
     });
   });
-  var givenCell = null;
-  document.querySelectorAll("#givens th").forEach(function(th){ if (th.textContent === L.given) givenCell = th.nextElementSibling; });
+  // the givens table names the rod as the book does: L/r = 5, or r/L = 1/5 (r/l in § 146)
+  var givenCell = null, inverse = false;
+  document.querySelectorAll("#givens th").forEach(function(th){
+    var t = th.textContent.trim();
+    if (t === L.given || t === L.symbol) givenCell = th.nextElementSibling;
+    else if (L.given === "rod_ratio" && (t === "r/L" || t === "r/l")) { givenCell = th.nextElementSibling; inverse = true; }
+  });
   function retitle(value){
     titled.forEach(function(t){
       var shown = t.en ? String(Number(value.toPrecision(4))) : book(value), text = t.text;
       forms.forEach(function(f){ text = text.replace(f[1], f[0] + shown); });
       t.n.nodeValue = text;
     });
-    if (givenCell) givenCell.textContent = book(value);
+    if (givenCell) givenCell.textContent = (inverse ? "1/" : "") + book(value);
   }
   var body = document.querySelector("#live-checks tbody"), shownAt = -1;
   L.checks = L.checks || [];

@@ -53,7 +53,7 @@ from .render.notation import givens as book_givens
 from .render.styles import STYLES
 
 __all__ = ["build_gallery", "gallery_plan", "entry_slug", "is_gallery", "GALLERY_STYLES", "GALLERY_OUTPUTS",
-           "FRAME_MODE"]
+           "FRAME_MODE", "LIVE_PLAYERS"]
 
 GALLERY_STYLES = ("historical", "teaching")
 #: No standalone frames: frame k holds the marks of k steps, so all frames
@@ -65,6 +65,11 @@ FRAME_MODE = "none"
 #: the animation and storyboard of `construct replay` carry the same elements again); the historical
 #: style is the plate (the construction's views in the plate's ink would double the gallery).
 GALLERY_OUTPUTS = {"historical": (), "teaching": ("player",)}
+#: The constructions whose gallery player has a live rod-ratio slider (construct.constructions.live): the crank
+#: and the inertia curve, the two the issue names; the live data adds 0.1-0.3 MB a player (and a sweep of a
+#: few minutes to the build), and the gallery stays under its 15 MB.  `construct replay NAME --live` gives any
+#: construction with a rod ratio its slider.
+LIVE_PLAYERS = ("crank", "inertia-curve")
 #: The width (CSS px) at which the gallery page shows a figure: its own width, one figure per row,
 #: so that letters of 12 px and captions of 13-14 px are shown at that size (never under 9 px).
 DISPLAY_PX = 960
@@ -193,8 +198,9 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
     for style in GALLERY_STYLES if first else GALLERY_STYLES[:1]:
         sdir = edir / style
         sdir.mkdir()
+        live = _live(c, fig, style) if first and GALLERY_OUTPUTS[style] and name in LIVE_PLAYERS else None
         info = write_outputs(sdir, c, fig, STYLES[style], frames=FRAME_MODE, fig_number=number, protocol=False,
-                             outputs=GALLERY_OUTPUTS[style])
+                             outputs=GALLERY_OUTPUTS[style], live=live)
         files = sorted(str(p.relative_to(root)) for p in sdir.rglob("*") if p.is_file())
         files += [f"{slug}/protocol.json"] * first + [f"{slug}/checks.md", f"{slug}/checks.json"]
         entries.append({"construction": name, "params": dict(params), "style": style,
@@ -205,6 +211,14 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
            "ok": all(ch.ok for ch in checks), "steps": len(fig.protocol.steps),
            "params_text": book_givens(fig)[1] or params_text(fig), "player": first}
     return entries, row
+
+
+def _live(c, fig, style: str) -> dict[str, Any] | None:
+    """The live data of a gallery player: a slider for each continuous given the construction can sweep."""
+    from .constructions.live import live_data, live_givens, live_sweep
+
+    givens = live_givens(c, fig)
+    return live_data(live_sweep(c, fig, givens[0], style=STYLES[style])) if givens else None
 
 
 def _first_of_its_construction(name: str, params: Mapping[str, Any]) -> bool:

@@ -15,8 +15,8 @@ import pytest
 
 from construct.cli.main import main
 from construct.constructions import get
-from construct.constructions.live import (QUANTUM_PX, arc_flags, decode, drawn_numbers, live_data, live_givens,
-                                          live_sweep, player_page)
+from construct.constructions.live import (QUANTUM_PX, arc_flags, decode, drawn_numbers, inflated, live_data,
+                                          live_givens, live_sweep, player_page)
 from construct.render.styles import STYLES
 
 
@@ -28,13 +28,14 @@ def crank_live():
 
 
 def _interpolated(live, data, v: float) -> np.ndarray:
-    rows = decode(data["data"], data["width"], data["rows"], data["cols"])
+    meta = inflated(data["meta_z"])
+    rows = decode(data, meta["grid"], data["rows"], data["cols"])
     u = math.log10(v)
-    g = np.asarray(data["grid"])
+    g = np.asarray(meta["grid"])
     j = int(np.clip(np.searchsorted(g, u, side="right") - 1, 0, len(g) - 2))
     t = (u - g[j]) / (g[j + 1] - g[j])
     flags = np.zeros(data["cols"], dtype=bool)
-    flags[data["flags"]] = True
+    flags[meta["flags"]] = True
     return np.where(flags, rows[j] if t < 0.5 else rows[j + 1], rows[j] + (rows[j + 1] - rows[j]) * t)
 
 
@@ -112,3 +113,32 @@ def test_replay_live_writes_a_player_with_the_slider(tmp_path):
     from construct.io.manifest import changed_files
 
     assert changed_files(out, "replay") == []
+
+
+def test_the_page_has_the_checks_of_the_built_value(crank_live):
+    """A teacher back at the book's L/r = 5 sees the checks of the figure built at 5, not of a neighbour."""
+    c, live = crank_live
+    table = inflated(live_data(live)["checks_z"])
+    i = table["check_values"].index(5.0)
+    fresh = c.checks(c.figure(parts=3, rod_ratio=5.0))
+    assert [row[0] for row in table["checks"][i]] == [pytest.approx(f.expected, rel=1e-8, abs=1e-12) for f in fresh]
+    # the constructed value: given, or the formula's plus the error, to the digits the page shows
+    made = [row[3] if len(row) > 3 else row[0] + row[1] for row in table["checks"][i]]
+    assert made == [pytest.approx(f.measured, rel=1e-8, abs=1e-12) for f in fresh]
+    assert [row[2] for row in table["checks"][i]] == [f.ok for f in fresh]
+    assert table["check_values"] == sorted(table["check_values"])
+
+
+def test_bench_live_without_a_player_refuses_in_one_line(tmp_path, capsys):
+    assert main(["bench", "--live", str(tmp_path / "none.html")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--live" in err and "none.html" in err and "Traceback" not in err
+
+
+def test_the_checks_travel_evenly_over_the_slider(crank_live):
+    """The page shows the checks at the nearest swept value: those are spread evenly over the slider (log10),
+    not over the grid, which is dense where the drawing bends."""
+    _, live = crank_live
+    u = np.log10(inflated(live_data(live)["checks_z"])["check_values"])
+    grid_gap = np.diff(np.log10(live.grid)).max()
+    assert np.diff(u).max() <= max(2 * (u[-1] - u[0]) / 47, grid_gap) + 1e-12

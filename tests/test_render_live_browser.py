@@ -4,23 +4,28 @@ For several rod ratios the slider is moved and every interpolated coordinate
 the page shows is compared with a fresh build at that rod ratio (what
 ``construct replay --rod-ratio v`` draws: ``Construction.figure`` and the
 player's own drawing, fitted to the same view), which the page's data never
-saw: the values are chosen off the grid.
+saw: the values are chosen off the grid.  The same for the committed
+gallery's live players (the crank of 18 parts and the inertia curve).  And the
+keys: arrows on the given's slider move the given, not the steps; on the step
+slider or the page they step.
 """
 
 from __future__ import annotations
 
 import math
 import re
+from pathlib import Path
 
 import pytest
 
 from construct.constructions import get
-from construct.constructions.live import drawn_numbers, live_data, live_sweep, player_page
+from construct.constructions.live import drawn_numbers, inflated, live_data, live_sweep, player_page
+from construct.gallery import LIVE_PLAYERS, entry_slug, gallery_plan
 from construct.render.live import with_live
 from construct.render.output import write_replay
 from construct.render.styles import STYLES
 
-
+REPO = Path(__file__).resolve().parents[1]
 NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
 #: Off-grid rod ratios across the domain, the books' 4 to 6 among them.
 VALUES = (1.07, 1.9, 3.3, 4.37, 5.55, 7.1, 23.0, 410.0)
@@ -35,54 +40,183 @@ def live_player(tmp_path_factory):
     live = live_sweep(c, fig, "rod_ratio")
     page = out / "live.html"
     page.write_text(with_live((out / "player.html").read_text(), live_data(live)))
-    return c, live, page
+    return c, {}, page
 
 
-def _page_numbers(page, keys):
-    return page.evaluate("""keys => keys.map(k => {
-        if (k[0] === '#zoom') return '';  // the views are not held to 0.5 px (live.py)
-        const el = k[0] ? document.getElementById(k[0]) : document.getElementById('figure');
-        return k[1] === 'viewBox' ? el.getAttribute('data-full') : el.getAttribute(k[1]); })""", keys)
-
-
-def test_the_slider_draws_what_a_fresh_replay_draws(browser, live_player):  # noqa: F811
-    c, live, path = live_player
+def _open(browser, path):
     page = browser.new_page(viewport={"width": 1400, "height": 1000})
     errors: list[str] = []
     page.on("console", lambda m: errors.append(m.text) if m.type == "error" else None)
     page.on("pageerror", lambda e: errors.append(str(e)))
     page.goto(path.as_uri())
     page.evaluate("window.constructLive.ready")
+    return page, errors
+
+
+def _keys(page) -> tuple[list[list[str]], list[tuple]]:
+    """The page's own keys (from its deflated data) and the marks it draws from the nearer grid value."""
+    text = page.locator("#live-data").text_content()
+    import json
+
+    meta = inflated(json.loads(text)["meta_z"])
+    flags = set(meta["flags"])
+    keys, snapped, at = meta["keys"], [], 0
+    for k in keys:
+        n = k[2].count("#")
+        # a snapped mark: every number of it taken from the nearer grid value (not just an arc's flag)
+        if all(c in flags for c in range(at, at + n)):
+            snapped.append(tuple(k))
+        at += n
+    return keys, snapped
+
+
+def _page_numbers(page, keys):
+    return page.evaluate("""keys => keys.map(k => {
+        if (k[0].charAt(0) === '#') return '';  // a step's view and ring: in the player's data, for the shown step
+        const el = k[0] ? document.getElementById(k[0]) : document.getElementById('figure');
+        return k[1] === 'viewBox' ? el.getAttribute('data-full') : el.getAttribute(k[1]); })""", keys)
+
+
+def _compare(page, c, params, v, keys, snapped) -> float:
+    """The largest distance (px) between what the page shows and a fresh build at *v*."""
+    shown = _page_numbers(page, keys)
+    fresh_keys, fresh, _ = drawn_numbers(player_page(c, c.figure(**{**params, "rod_ratio": v}), STYLES["teaching"]))
+    at, expect = 0, {}
+    for k in fresh_keys:
+        n = k[2].count("#")
+        expect[k] = fresh[at:at + n]
+        at += n
+    worst = 0.0
+    for k, text in zip(keys, shown):
+        k = tuple(k)
+        if k[0] in ("#zoom", "#ring") or k in snapped:  # views frame the figure (blended where they jump; live.py)
+            continue
+        got = [float(x) for x in NUMBER.findall(text)]
+        want = expect[k]
+        assert len(got) == len(want), (v, k)
+        d = max((abs(a - b) for a, b in zip(got, want)), default=0.0)
+        assert d <= 0.5, f"L/r = {v}: {k[0]} {k[1]} off by {d:.3f} px"
+        worst = max(worst, d)
+    return worst
+
+
+def test_the_slider_draws_what_a_fresh_replay_draws(browser, live_player):
+    c, params, path = live_player
+    params = {"parts": 3}
+    page, errors = _open(browser, path)
     slider = page.locator('input[type="range"][name="rod_ratio"]')
     assert float(slider.get_attribute("min")) == pytest.approx(math.log10(1.05))
     assert float(slider.get_attribute("max")) == pytest.approx(3.0)
-    keys = [list(k) for k in live.keys]
+    keys, snapped = _keys(page)
     assert any(k[1] == "cx" for k in keys) and any(k[1] == "d" for k in keys)
     worst = 0.0
     for v in VALUES:
-        assert not any(a <= v <= b for a, b in live.jumps), v
         page.evaluate("v => window.constructLive.set(v)", v)
         assert page.locator("#live-value").text_content() == f"{v:.4g}".replace(".", ",")
         title = page.locator("h1").text_content()  # the title names it too, as the book writes the rod
         assert any(f"{form}{v:.4g}".replace(".", ",") in title for form in ("L/r = ", "r/L = 1/")), title
-        shown = _page_numbers(page, keys)
-        fresh_keys, fresh, _ = drawn_numbers(player_page(c, c.figure(parts=3, rod_ratio=v), STYLES["teaching"]))
-        at, expect = 0, {}
-        for k in fresh_keys:
-            n = k[2].count("#")
-            expect[k] = fresh[at:at + n]
-            at += n
-        for k, text in zip(live.keys, shown):
-            if k[0] == "#zoom" or k in live.snapped:  # views frame the figure (blended where they jump; live.py)
-                continue
-            got = [float(x) for x in NUMBER.findall(text)]
-            want = expect[k]
-            assert len(got) == len(want), (v, k)
-            d = max((abs(a - b) for a, b in zip(got, want)), default=0.0)
-            assert d <= 0.5, f"L/r = {v}: {k[0]} {k[1]} off by {d:.3f} px"
-            worst = max(worst, d)
+        # and the givens beside the figure
+        rod = page.evaluate("""() => Array.from(document.querySelectorAll('#givens tr'))
+            .filter(r => /^(r\\/L|r\\/l|L\\/r)$/.test(r.cells[0].textContent.trim())).map(r => r.cells[1].textContent)""")
+        assert rod and all(t.endswith(f"{v:.4g}".replace(".", ",")) for t in rod), rod
+        worst = max(worst, _compare(page, c, params, v, keys, snapped))
         rows = page.locator("#live-checks tbody tr")
         assert rows.count() == len(c.checks(c.figure(parts=3, rod_ratio=v)))
     assert not errors, errors
     assert worst > 0.0  # the comparison compared something that moved
+    page.close()
+
+
+def test_marks_of_later_steps_follow_when_their_step_is_shown(browser, live_player):
+    """The page redraws the steps shown; a later step, shown after the slider moved, is at the slider's value."""
+    c, _, path = live_player
+    page, errors = _open(browser, path)
+    keys, snapped = _keys(page)
+    page.evaluate("() => { const s = document.getElementById('slider'); s.value = 1; s.oninput(); }")
+    page.evaluate("v => window.constructLive.set(v)", 3.3)
+    page.keyboard.press("End")  # the page has the focus: the last step
+    assert page.locator("#figure").get_attribute("data-step") == page.locator("#slider").get_attribute("max")
+    assert _compare(page, c, {"parts": 3}, 3.3, keys, snapped) > 0.0
+    assert not errors, errors
+    page.close()
+
+
+def test_arrow_keys_move_the_given_on_its_slider_and_step_elsewhere(browser, live_player):
+    _, _, path = live_player
+    page, errors = _open(browser, path)
+    step = lambda: int(page.locator("#figure").get_attribute("data-step"))  # noqa: E731
+    given = page.locator('input[type="range"][name="rod_ratio"]')
+    n = step()
+    # the given's slider has the focus: the arrows move the given (the native range), the step stays
+    given.focus()
+    before = float(given.input_value())
+    page.keyboard.press("ArrowLeft")
+    page.keyboard.press("ArrowLeft")
+    assert float(given.input_value()) < before and step() == n
+    page.wait_for_function("document.getElementById('live-value').textContent !== '5'")  # drawn in the next frame
+    page.keyboard.press("ArrowRight")
+    assert step() == n
+    moved = float(given.input_value())
+    # the step slider has the focus: the arrows step, the given stays
+    page.locator("#slider").focus()
+    page.keyboard.press("ArrowLeft")
+    page.keyboard.press("ArrowLeft")
+    assert step() == n - 2 and float(given.input_value()) == moved
+    # the page has the focus: the arrows step
+    page.evaluate("document.activeElement.blur()")
+    page.keyboard.press("ArrowRight")
+    assert step() == n - 1 and float(given.input_value()) == moved
+    assert not errors, errors
+    page.close()
+
+
+def _gallery_players():
+    out = []
+    for name, params in gallery_plan():
+        if name in LIVE_PLAYERS and (name, params) == next((n, p) for n, p in gallery_plan() if n == name):
+            out.append((name, params))
+    return out
+
+
+@pytest.mark.parametrize("name,params", _gallery_players(), ids=lambda x: x if isinstance(x, str) else "")
+def test_the_gallery_players_are_live_and_draw_what_a_fresh_replay_draws(browser, name, params):
+    """The committed gallery's live players (rebuilt by `construct gallery`), at off-grid values."""
+    path = REPO / "gallery" / entry_slug(name, params) / "teaching" / "player.html"
+    if not path.is_file():
+        pytest.skip("no committed gallery in this checkout")
+    assert 'id="live-data"' in path.read_text(encoding="utf-8"), f"{path} has no slider: rebuild the gallery"
+    assert path.stat().st_size <= 2e6
+    page, errors = _open(browser, path)
+    keys, snapped = _keys(page)
+    c = get(name)
+    worst = 0.0
+    for v in (1.3, 3.7, 4.6, 6.8, 41.0):
+        page.evaluate("v => window.constructLive.set(v)", v)
+        worst = max(worst, _compare(page, c, params, v, keys, snapped))
+        # the checks beside the figure are the construction's checks at (the nearest swept) value
+        rows = page.locator("#live-checks tbody tr")
+        assert rows.count() == len(c.checks(c.figure(**{**params, "rod_ratio": v})))
+    assert not errors, errors
+    assert worst > 0.0
+    page.close()
+
+
+def test_letters_stay_with_their_points(browser, live_player):
+    """Each letter group's anchor keeps its distance to the nearest point as the slider moves (a letter
+    left where the built value put it would be far from every point)."""
+    _, _, path = live_player
+    page, errors = _open(browser, path)
+    near = """() => { const pts = Array.from(document.querySelectorAll('#figure circle.pt[id]'))
+        .map(c => [+c.getAttribute('cx'), +c.getAttribute('cy')]);
+      return Array.from(document.querySelectorAll('#figure g.lbg')).map(g => {
+        const m = /translate\\(([-0-9.e]+)[ ,]+([-0-9.e]+)\\)/.exec(g.getAttribute('transform'));
+        return Math.min(...pts.map(p => Math.hypot(p[0] - +m[1], p[1] - +m[2]))); }); }"""
+    built = page.evaluate(near)
+    assert len(built) > 10
+    for v in (1.3, 2.5, 12.0):
+        page.evaluate("v => window.constructLive.set(v)", v)
+        moved = page.evaluate(near)
+        off = [abs(a - b) for a, b in zip(built, moved) if a < 30]  # the letters placed at a point
+        assert len(off) > 10 and max(off) <= 1.0, (v, max(off))
+    assert not errors, errors
     page.close()

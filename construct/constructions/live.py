@@ -34,6 +34,16 @@ everywhere (:attr:`LiveSweep.snapped`) instead of forcing the grid down at every
 flip.  The grid stops growing at *max_values* values; a cell still too coarse
 then is recorded as a jump (measured: none for the crank and the inertia curve).
 
+**What travels.**  The grid is shared, but most coordinates need few of its
+values: each coordinate keeps only the grid values where the line between
+its neighbours would miss the exact drawing by more than :data:`ROW_PX` at
+some grid value between (:func:`column_knots`), stored either as drawn or,
+through each grid value's fit to the view, in the construction's own units
+(the figure is rescaled to the view's width as L/r changes, so every drawn
+coordinate moves, though the crank circle and all on it do not move in the
+construction); identical coordinates travel once (:func:`encode`).  The page
+rebuilds every grid value from that, then blends as above.
+
 What is interpolated: every element of the figure that carries an id (the
 marks: points, lines, circles, arcs, curves, areas and their hatching), the
 figure's view box, and each step's magnified view.  The bound holds for the
@@ -66,15 +76,18 @@ from ..figure import Figure
 from ..kernel.errors import InvalidParameter
 from .domain import Domain, ROD_RATIO
 
-__all__ = ["LIVE_GIVENS", "LiveSweep", "live_sweep", "drawn_numbers", "REFINE_PX", "QUANTUM_PX", "MIN_CELL",
+__all__ = ["LIVE_GIVENS", "LiveSweep", "live_sweep", "drawn_numbers", "column_knots", "column_kinds", "encode", "decode", "inflated", "ROW_PX", "REFINE_PX", "QUANTUM_PX", "STORED_PX", "MIN_CELL",
            "live_data", "live_givens", "player_page"]
 
 #: The continuous givens a player can move: protocol name -> (stated domain, the book's symbol).
 LIVE_GIVENS: dict[str, tuple[Domain, str]] = {"rod_ratio": (ROD_RATIO, "L/r")}
 #: A cell is split while linear interpolation misses the exact drawing by more than this (px).
 REFINE_PX = 0.4
-#: Stored coordinates are multiples of this (px).
+#: The refinement blends coordinates rounded to multiples of this (px).
 QUANTUM_PX = 0.05
+#: The page's coordinates travel as multiples of this (px, or its share of the largest scale in the
+#: construction's units): the rounding is inside ROW_PX, which the columns are checked against.
+STORED_PX = 0.1
 #: A jump caused by at most this many marks is theirs (they are drawn from the nearer grid value), not the figure's.
 SNAP_AT_MOST = 3
 #: A cell narrower than this (in log10 of the given) is not split further: it straddles a jump of the drawing.
@@ -118,7 +131,7 @@ def drawn_numbers(page: str) -> tuple[list[tuple[str, str, str]], list[float], d
     nums: list[float] = []
     for e in root.iter():
         ident = e.get("id") or ""
-        if e is not root and not ident:
+        if e is not root and (not ident or ident == "ring"):  # the ring is the player's (the page moves it)
             continue
         for a in _GEOMETRY:
             v = e.get(a)
@@ -140,6 +153,7 @@ def drawn_numbers(page: str) -> tuple[list[tuple[str, str, str]], list[float], d
             keys.append(("#zoom", str(i), "# # # #"))
             j = st.get(index, -1)
             nums.extend(float(x) for x in data[boxes][j]) if j >= 0 else nums.extend(full)
+
     return keys, nums, {}
 
 
@@ -221,6 +235,14 @@ class LiveSweep:
     fixed: list[str] = field(default_factory=list)
     #: Marks drawn from the nearer grid value (they jump inside the domain: an arc drawn the other way round).
     snapped: list[tuple[str, str, str]] = field(default_factory=list)
+    #: The grid in log10 of the given, exactly as refined (a cell (a, b) was split at (a + b) / 2), and how
+    #: many values the refinement started from: the cells of the refinement (:func:`column_knots`).
+    u: np.ndarray | None = None
+    start: int = 0
+    #: Per grid value, the drawing's fit to the view (ox, oy, s): (x, y) is drawn at (ox + s x, oy - s y) px.
+    fit: np.ndarray | None = None
+    #: The checks at the built value, as :attr:`checks`.
+    built_checks: list[list[Any]] = field(default_factory=list)
 
     def nearest_columns(self) -> np.ndarray:
         """The columns taken from the nearer grid value: large-arc flags and the snapped marks."""
@@ -240,8 +262,9 @@ def _frames(construction: Construction, figure: Figure, given: str, values: np.n
     replay = figure.protocol.replay(swept)
     out = []
     for i in range(len(values)):
-        keys, nums, _ = drawn_numbers(draw(Figure(figure.protocol, replay.take(i), construction.check)))
-        out.append((keys, nums))
+        page, fit = draw(Figure(figure.protocol, replay.take(i), construction.check))
+        keys, nums, _ = drawn_numbers(page)
+        out.append((keys, nums, fit))
     return out, replay
 
 
@@ -255,6 +278,20 @@ def player_page(construction: Construction, figure: Figure, style: Any) -> str:
     return player_html(scene, style, drawing=Drawing(scene, style))
 
 
+def player_page_and_fit(construction: Construction, figure: Figure, style: Any) -> tuple[str, tuple[float, float, float]]:
+    """:func:`player_page` and the fit of its drawing to the view: (ox, oy, s), a point (x, y) of the
+    construction is drawn at (ox + s x, oy - s y) px."""
+    from ..render.output import scene_for
+    from ..render.player import player_html
+    from ..render.svg import Drawing
+
+    scene = scene_for(construction, figure)
+    drawing = Drawing(scene, style)
+    vp = drawing.vp
+    fit = (vp.margin + vp.left - vp.xmin * vp.scale, vp.margin + vp.top + vp.ymax * vp.scale, vp.scale)
+    return player_html(scene, style, drawing=drawing), fit
+
+
 def live_sweep(construction: Construction, figure: Figure, given: str, *, initial: float | None = None,
                style: Any = None, start: int = 9, max_values: int = 400) -> LiveSweep:
     """The grid of *given* over its domain on which linear interpolation draws within 0.5 px (see the module)."""
@@ -263,7 +300,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     style = style or STYLES["teaching"]
     domain, symbol = LIVE_GIVENS[given]
     initial = float(figure.replay.givens[given] if initial is None else initial)
-    draw = lambda f: player_page(construction, f, style)  # noqa: E731
+    draw = lambda f: player_page_and_fit(construction, f, style)  # noqa: E731
     lo, hi = math.log10(domain.low), math.log10(domain.high)
     us = list(np.linspace(lo, hi, start))
     values = lambda u: np.clip(10.0 ** np.asarray(u), domain.low, domain.high)  # noqa: E731
@@ -279,8 +316,8 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
         nxt = []
         for (a, b), m, fm in zip(todo, mids, mframes):
             data[m] = fm
-            ka, na = data[a]
-            kb, nb = data[b]
+            ka, na = data[a][:2]
+            kb, nb = data[b][:2]
             if not ka == kb == fm[0]:
                 err, culprits = math.inf, [-1]
             else:
@@ -307,7 +344,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     keys = [k for k in data[us[0]][0] if k in shared]
     rows = []
     for u in us:
-        kk, nn = data[u]
+        kk, nn = data[u][:2]
         pos, at = {}, 0
         for k in kk:
             n = k[2].count("#")
@@ -319,8 +356,13 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     snapped = [k for i, k in enumerate(first) if i in snap and k in shared]
     grid = values(us)
     live = LiveSweep(given, symbol, domain, initial, grid, keys, np.asarray(rows, dtype=float), bound, jumps,
-                     fixed=fixed, snapped=snapped)
+                     fixed=fixed, snapped=snapped, u=np.asarray(us, dtype=float), start=start,
+                     # the fit travels as float32: the columns are checked against the drawing through it
+                     fit=np.asarray([data[u][2] for u in us], dtype=np.float32).astype(float))
     live.checks = _checks(construction, figure, given, grid)
+    # and at the built value (the book's): a teacher who returns there sees its own checks
+    live.built_checks = [[c.name, c.measured, c.expected, c.error, c.tolerance, bool(c.ok)]
+                         for c in construction.checks(figure)]
     return live
 
 
@@ -333,35 +375,216 @@ def _checks(construction: Construction, figure: Figure, given: str, grid: np.nda
             for row in construction.sweep_checks(sweep)]
 
 
-def encode(drawn: np.ndarray) -> tuple[str, int]:
-    """Coordinates quantised to QUANTUM_PX, delta-coded along the grid column by column, deflated, base64;
-    and the width in bytes of a delta.
+#: At every grid value, a coordinate the page computes from its column's kept values is within this of the
+#: exact drawing (px, quantisation included); between grid values the page blends two grid values, whose
+#: own blending error the refinement held under REFINE_PX at the parent cell's midpoint (about a quarter of
+#: that at a cell's own), so a drawn coordinate stays under 0.5 px (measured at fresh values by the tests).
+ROW_PX = 0.35
+#: How a column is stored: as drawn (px), or in the construction's own units through the row's fit to the
+#: view (:attr:`LiveSweep.fit`): an x (ox + s x), a y (oy - s y), a length (s l).
+PX, X, Y, LENGTH = 0, 1, 2, 3
+_PATH = re.compile(r"^[MLCZ# ,]*$")
 
-    The first row travels as int32; the deltas as int16 where they fit (else int32), split into byte planes
-    (all low bytes, then all high bytes: the high bytes of small deltas are runs of 0 and 255 that deflate
-    squeezes away).
 
-    >>> a = np.array([[0.0, 10.0], [0.05, 10.0], [0.1, 12.5], [-3000.0, 12.5]])
-    >>> np.array_equal(decode(*encode(a), *a.shape), np.round(a / QUANTUM_PX) * QUANTUM_PX)
-    True
-    >>> encode(a[:3])[1], encode(a)[1]
-    (2, 4)
+def column_kinds(keys: list[tuple[str, str, str]]) -> np.ndarray:
+    """What each number of *keys* is in the construction: x, y, a length, or a number of the drawing only.
+
+    >>> column_kinds([("a", "cx", "#"), ("a", "r", "#"), ("b", "d", "M# #A# # # # # # #"), ("#zoom", "0", "# # # #")]).tolist()
+    [1, 3, 1, 2, 3, 3, 0, 0, 0, 1, 2, 1, 2, 3, 3]
     """
-    q = np.round(drawn / QUANTUM_PX).astype(np.int64)
-    first, rest = q[0], np.diff(q, axis=0)
-    width = 2 if rest.size == 0 or np.abs(rest).max() < 2 ** 15 else 4
-    cols = np.ascontiguousarray(rest.T).astype(f"<i{width}").view(np.uint8).reshape(-1, width)
-    payload = first.astype("<i4").tobytes() + np.ascontiguousarray(cols.T).tobytes()
-    return base64.b64encode(zlib.compress(payload, 9)).decode("ascii"), width
+    out: list[int] = []
+    for ident, attr, template in keys:
+        n = template.count("#")
+        if attr in ("cx", "x1", "x2", "x"):
+            out.append(X)
+        elif attr in ("cy", "y1", "y2", "y"):
+            out.append(Y)
+        elif attr == "r":
+            out.append(LENGTH)
+        elif ident == "#zoom" or attr == "viewBox":
+            out += [X, Y, LENGTH, LENGTH]
+        elif attr == "d" and template == _ARC:
+            out += [X, Y, LENGTH, LENGTH, PX, PX, PX, X, Y]
+        elif attr in ("d", "points") and _PATH.match(template):
+            out += [X if i % 2 == 0 else Y for i in range(n)]
+        else:
+            out += [PX] * n
+    return np.asarray(out, dtype=np.int8)
 
 
-def decode(text: str, width: int, rows: int, cols: int) -> np.ndarray:
-    """The inverse of :func:`encode` (what the page does with DecompressionStream)."""
-    raw = zlib.decompress(base64.b64decode(text))
-    first = np.frombuffer(raw[:4 * cols], dtype="<i4").astype(np.int64)
-    planes = np.frombuffer(raw[4 * cols:], dtype=np.uint8).reshape(width, -1)
-    rest = np.ascontiguousarray(planes.T).view(f"<i{width}").reshape(cols, rows - 1).T.astype(np.int64)
-    return np.cumsum(np.vstack([first, rest]), axis=0) * QUANTUM_PX
+def _quanta(live: LiveSweep, kinds: np.ndarray) -> np.ndarray:
+    """The quantum of each column in its stored units: STORED_PX drawn, at most that at the largest scale."""
+    smax = float(np.max(live.fit[:, 2])) if live.fit is not None and kinds.any() else 1.0
+    return np.where(kinds > 0, STORED_PX / smax, STORED_PX)
+
+
+def _stored(drawn: np.ndarray, fit: np.ndarray | None, kinds: np.ndarray) -> np.ndarray:
+    """The drawn numbers in each column's stored units (the inverse of :func:`_drawn`)."""
+    if fit is None or not kinds.any():
+        return drawn
+    ox, oy, sc = (fit[:, i:i + 1] for i in range(3))
+    return np.select([kinds == X, kinds == Y, kinds == LENGTH], [(drawn - ox) / sc, (oy - drawn) / sc, drawn / sc],
+                     drawn)
+
+
+def _drawn(stored: np.ndarray, fit: np.ndarray | None, kinds: np.ndarray) -> np.ndarray:
+    """Stored numbers (rows of the grid x columns) as drawn, px."""
+    if fit is None or not kinds.any():
+        return stored
+    ox, oy, sc = (fit[:, i:i + 1] for i in range(3))
+    return np.select([kinds == X, kinds == Y, kinds == LENGTH], [ox + sc * stored, oy - sc * stored, sc * stored],
+                     stored)
+
+
+def _knots(live: LiveSweep, kinds: np.ndarray) -> np.ndarray:
+    """The grid values each column needs when stored as *kinds* says (see :func:`column_knots`)."""
+    drawn = live.drawn
+    rows, cols = drawn.shape
+    u = np.asarray(live.u if live.u is not None else np.log10(live.grid), dtype=float)
+    keep = np.zeros((rows, cols), dtype=bool)
+    keep[:, live.nearest_columns()] = True
+    quanta = _quanta(live, kinds)
+    q = np.round(_stored(drawn, live.fit, kinds) / quanta) * quanta
+    start = live.start or rows
+    # the starting values of the refinement: evenly spaced in log10 (live_sweep's np.linspace)
+    firsts = sorted({int(np.argmin(np.abs(u - x))) for x in np.linspace(u[0], u[-1], start)})
+
+    def mid_of(i: int, j: int) -> int | None:
+        m = (u[i] + u[j]) / 2
+        at = int(np.searchsorted(u, m))
+        for k in (at - 1, at, at + 1):
+            if i < k < j and abs(u[k] - m) <= 1e-12 * max(1.0, abs(m)):
+                return k
+        return None
+
+    todo = [(i, j, np.ones(cols, dtype=bool)) for i, j in zip(firsts[:-1], firsts[1:])]
+    while todo:
+        i, j, cs = todo.pop()
+        m = mid_of(i, j)
+        if m is None:  # a cell the refinement did not split: every column's own
+            keep[[i, j]] |= cs
+            continue
+        # the line between the cell's quantised ends, at every grid value inside the cell, as drawn
+        t = ((u[i + 1:j] - u[i]) / (u[j] - u[i]))[:, None]
+        fit = live.fit[i + 1:j] if live.fit is not None else None
+        err = np.abs(_drawn(q[i] + (q[j] - q[i]) * t, fit, kinds) - drawn[i + 1:j]).max(axis=0)
+        done = cs & (err <= ROW_PX)
+        keep[[i, j]] |= done
+        rest = cs & ~done
+        if rest.any():
+            todo += [(i, m, rest), (m, j, rest)]
+    return keep
+
+
+def column_knots(live: LiveSweep) -> tuple[np.ndarray, np.ndarray]:
+    """Which grid values each column of *live* needs (grid x columns, bool), and how it is stored.
+
+    The refinement splits a cell while any coordinate misses at the midpoint; most coordinates would not have
+    needed it.  Each column is walked down the same tree of cells, and a cell is that column's own (its ends
+    kept, the grid values inside it dropped) as soon as the line between the cell's quantised ends is within
+    :data:`ROW_PX` of the exact drawing at *every* grid value inside the cell (the midpoint, and every
+    midpoint the refinement drew below it).  Between its kept values a column is that line (the page
+    interpolates in log10 of the given).  Large-arc flags and snapped marks (drawn from the nearer grid
+    value) keep every grid value.
+
+    The fit to the view changes with the given (the figure is scaled to the view's width), so every drawn
+    coordinate moves, and kinks where another point becomes the one that bounds the figure; in the
+    construction's own units most coordinates do not move at all (the crank circle and everything on it) or
+    move smoothly.  So each column is stored either as drawn or, through the row's fit, as the construction's
+    x, y or length (:func:`column_kinds`), whichever needs fewer grid values.
+
+    >>> live = LiveSweep("rod_ratio", "L/r", ROD_RATIO, 5.0, np.array([1.0, 10 ** 0.5, 10.0]), [("p", "cx", "#"),
+    ...     ("q", "cx", "#")], np.array([[0.0, 0.0], [5.0, 7.0], [10.0, 10.0]]), 0.0, u=np.array([0.0, 0.5, 1.0]),
+    ...     start=2)
+    >>> column_knots(live)[0].T.astype(int).tolist()  # p is a line: its middle value is not needed; q is not
+    [[1, 0, 1], [1, 1, 1]]
+    """
+    cols = live.drawn.shape[1]
+    natural = column_kinds(live.keys) if live.fit is not None else np.zeros(cols, dtype=np.int8)
+    as_drawn = _knots(live, np.zeros(cols, dtype=np.int8))
+    if not natural.any():
+        return as_drawn, natural
+    as_built = _knots(live, natural)
+    built = as_built.sum(axis=0) < as_drawn.sum(axis=0)
+    return np.where(built, as_built, as_drawn), np.where(built, natural, 0).astype(np.int8)
+
+
+def encode(live: LiveSweep) -> dict[str, Any]:
+    """The coordinates of *live* for the page: identical columns once, each column at its own grid values and
+    in its own units (:func:`column_knots`), quantised, delta-coded, deflated, base64.
+
+    One deflated buffer: the column map (which stored column each coordinate is; uint16 or int32), each stored
+    column's kind (uint8), its kept grid values as bits, the fit of every grid value (3 float32), each stored
+    column's first value (int32), then the deltas between its kept values, all columns one after the other, as
+    int16 where they fit (else int32) in byte planes (all low bytes, then all high bytes: the high bytes of
+    small deltas are runs of 0 and 255 that deflate squeezes away).  :func:`decode` is what the page does.
+
+    >>> live = LiveSweep("rod_ratio", "L/r", ROD_RATIO, 5.0, np.array([1.0, 10 ** 0.5, 10.0]), [("p", "cx", "#"),
+    ...     ("q", "cx", "#"), ("r", "cx", "#")], np.array([[0.0, 0.0, 0], [5.0, 7.0, 5], [10.0, 10.0, 10]]), 0.0,
+    ...     u=np.array([0.0, 0.5, 1.0]), start=2)
+    >>> e = encode(live); (e["ucols"], e["width"]), decode(e, [0.0, 0.5, 1.0], 3, 3).tolist()
+    ((2, 2), [[0.0, 0.0, 0.0], [5.0, 7.0, 5.0], [10.0, 10.0, 10.0]])
+    """
+    rows, cols = live.drawn.shape
+    keep, kinds = column_knots(live)
+    quanta = _quanta(live, kinds)
+    q = np.round(_stored(live.drawn, live.fit, kinds) / quanta).astype(np.int64)
+    fit = live.fit if live.fit is not None else np.zeros((rows, 3))
+    # identical columns (a point's coordinate in its circle, its lines, its arcs) travel once, with the union
+    # of their kept values
+    _, first_at, colmap = np.unique(np.vstack([q, keep, kinds[None, :]]), axis=1, return_index=True,
+                                    return_inverse=True)
+    colmap = colmap.reshape(-1)
+    order = np.argsort(first_at)  # stored in the order the columns first appear (neighbours stay neighbours)
+    rank = np.empty_like(order)
+    rank[order] = np.arange(order.size)
+    colmap = rank[colmap]
+    pick = first_at[order]
+    uq, ukeep, ukinds = q[:, pick], keep[:, pick], kinds[pick]
+    ukeep[[0, -1]] = True
+    values = [uq[ukeep[:, c], c] for c in range(uq.shape[1])]
+    deltas = np.concatenate([np.diff(v) for v in values]) if values else np.zeros(0, dtype=np.int64)
+    width = 2 if deltas.size == 0 or np.abs(deltas).max() < 2 ** 15 else 4
+    mapw = 2 if uq.shape[1] < 2 ** 16 else 4
+    planes = np.ascontiguousarray(deltas.astype(f"<i{width}").view(np.uint8).reshape(-1, width).T)
+    payload = (colmap.astype(f"<u{mapw}").tobytes() + ukinds.astype(np.uint8).tobytes()
+               + np.packbits(ukeep.T.reshape(-1)).tobytes() + fit.astype("<f4").tobytes()
+               + uq[0].astype("<i4").tobytes() + planes.tobytes())
+    return {"data": base64.b64encode(zlib.compress(payload, 9)).decode("ascii"), "width": width, "mapw": mapw,
+            "ucols": int(uq.shape[1]), "q": STORED_PX, "qx": float(_quanta(live, np.ones(1, dtype=np.int8))[0])}
+
+
+def decode(data: Mapping[str, Any], grid: Any, rows: int, cols: int) -> np.ndarray:
+    """The inverse of :func:`encode`, on the whole grid (*grid*: log10 of the grid values), as the page does it
+    with DecompressionStream: each stored column between its kept values is the line between them in log10
+    of the given, drawn through the grid value's fit."""
+    raw = zlib.decompress(base64.b64decode(data["data"]))
+    ucols, width, mapw = data["ucols"], data["width"], data["mapw"]
+    at = cols * mapw
+    colmap = np.frombuffer(raw[:at], dtype=f"<u{mapw}").astype(np.int64)
+    kinds = np.frombuffer(raw[at:at + ucols], dtype=np.uint8).astype(np.int8)
+    at += ucols
+    nbits = rows * ucols
+    keep = np.unpackbits(np.frombuffer(raw[at:at + (nbits + 7) // 8], dtype=np.uint8))[:nbits]
+    keep = keep.reshape(ucols, rows).astype(bool)
+    at += (nbits + 7) // 8
+    fit = np.frombuffer(raw[at:at + 12 * rows], dtype="<f4").reshape(rows, 3).astype(float)
+    at += 12 * rows
+    first = np.frombuffer(raw[at:at + 4 * ucols], dtype="<i4").astype(np.int64)
+    at += 4 * ucols
+    n = int(keep.sum()) - ucols
+    deltas = np.ascontiguousarray(np.frombuffer(raw[at:], dtype=np.uint8).reshape(width, n).T).view(f"<i{width}")
+    deltas = deltas.reshape(-1).astype(np.int64)
+    g = np.asarray(grid, dtype=float)
+    quanta = np.where(kinds > 0, data["qx"], data["q"])
+    out = np.empty((rows, ucols))
+    pos = 0
+    for c in range(ucols):
+        idx = np.nonzero(keep[c])[0]
+        vals = first[c] + np.concatenate([[0], np.cumsum(deltas[pos:pos + idx.size - 1])])
+        pos += idx.size - 1
+        out[:, c] = np.interp(g, g[idx], vals * quanta[c])
+    return _drawn(out, fit, kinds)[:, colmap]
 
 
 def book_number(value: float) -> str:
@@ -374,18 +597,35 @@ def book_number(value: float) -> str:
 
 
 def live_data(live: LiveSweep) -> dict[str, Any]:
-    """What the page needs: the grid (log10), the keys, the encoded coordinates, the checks."""
+    """What the page needs: the given and its domain in the open; deflated: the grid (log10), the keys, which
+    columns are drawn from the nearer grid value, the jumps (``meta_z``), the coordinates (``data``,
+    :func:`encode`) and the checks (``checks_z``)."""
+    # a jump: the index of its cell's lower grid value
+    where = {float(v): i for i, v in enumerate(live.grid)}
+    meta = {"grid": [round(math.log10(v), 12) for v in live.grid],
+            "keys": [list(k) for k in live.keys], "flags": live.nearest_columns().nonzero()[0].tolist(),
+            "jumps": sorted(where[float(a)] for a, _ in live.jumps)}
     return {"given": live.given, "symbol": live.symbol, "low": live.domain.low, "high": live.domain.high,
-            "initial": live.initial, "grid": [round(math.log10(v), 12) for v in live.grid],
-            "values": [float(v) for v in live.grid],
-            "keys": [list(k) for k in live.keys], "rows": int(live.drawn.shape[0]),
-            "cols": int(live.drawn.shape[1]), "q": QUANTUM_PX,
-            "flags": live.nearest_columns().nonzero()[0].tolist(), **dict(zip(("data", "width"), encode(live.drawn))),
-            "bound": round(live.bound + QUANTUM_PX / 2, 3), "jumps": live.jumps,
-            "checks_z": base64.b64encode(zlib.compress(json.dumps(_check_table(live)).encode("utf-8"), 9)).decode("ascii")}
+            "initial": live.initial, "rows": int(live.drawn.shape[0]), "cols": int(live.drawn.shape[1]),
+            **encode(live), "bound": round(live.bound + QUANTUM_PX / 2, 3),
+            "meta_z": _deflated(meta), "checks_z": _deflated(_check_table(live))}
 
 
-#: The checks travel at this many grid values at most (the page shows the nearest: it says which).
+def _deflated(value: Any) -> str:
+    return base64.b64encode(zlib.compress(json.dumps(value, separators=(",", ":")).encode("utf-8"), 9)).decode("ascii")
+
+
+def inflated(text: str) -> Any:
+    """A deflated JSON field of :func:`live_data` read back.
+
+    >>> inflated(_deflated({"a": [1, 2]}))
+    {'a': [1, 2]}
+    """
+    return json.loads(zlib.decompress(base64.b64decode(text)))
+
+
+#: The checks travel at this many grid values at most, and at the built value (the page shows the nearest: it
+#: says which).
 CHECK_VALUES = 48
 
 
@@ -394,8 +634,22 @@ def _check_table(live: LiveSweep) -> dict[str, Any]:
     if not live.checks:
         return {"checks": [], "check_values": [], "check_names": []}
     n = len(live.grid)
-    picks = sorted({int(round(i)) for i in np.linspace(0, n - 1, min(n, CHECK_VALUES))})
+    # evenly in log10 of the given (the grid is dense where the drawing bends, the slider is not)
+    u = np.log10(live.grid)
+    picks = sorted({int(np.argmin(np.abs(u - t))) for t in np.linspace(u[0], u[-1], min(n, CHECK_VALUES))})
     g = lambda x: float(f"{x:.9g}") if math.isfinite(x) else None  # noqa: E731
-    return {"check_names": [c[0] for c in live.checks[0]],
-            "check_values": [float(live.grid[i]) for i in picks],
-            "checks": [[[g(c[1]), g(c[2]), float(f"{c[3]:.2g}"), c[5]] for c in live.checks[i]] for i in picks]}
+    at = [(float(live.grid[i]), live.checks[i]) for i in picks]
+    if live.built_checks and all(v != live.initial for v, _ in at):  # the book's value among them
+        at = sorted(at + [(float(live.initial), live.built_checks)], key=lambda x: x[0])
+
+    def row(c: list[Any]) -> list[Any]:
+        # [formula, error, ok] and the constructed value where formula + error does not give its 9 digits
+        # (a Euclidean chain's error is 1e-16: the constructed value is the formula's, to every digit shown)
+        expected, error = g(c[2]), float(f"{c[3]:.2g}") if math.isfinite(c[3]) else None
+        out = [expected, error, c[5]]
+        if expected is None or error is None or g(expected + error) != g(c[1]):
+            out.append(g(c[1]))
+        return out
+
+    return {"check_names": [c[0] for c in live.checks[0]], "check_values": [v for v, _ in at],
+            "checks": [[row(c) for c in cs] for _, cs in at]}

@@ -44,6 +44,11 @@ def with_live(page: str, data: Mapping[str, Any]) -> str:
                 f'<div class="live-range" style="color:#777;font-size:12px">{html.escape(_book(data["low"]))} … '
                 f'{html.escape(_book(data["high"]))} (log. Skala / log scale; gebaut / built: '
                 f'{html.escape(_book(data["initial"]))})</div>'
+                # why there is one slider (a teacher asks for the next given first)
+                f'<div class="live-held" style="color:#777;font-size:12px">Nur {sym} ist beweglich; die übrigen '
+                f'Gegebenen bleiben beim Buchwert. / Only {sym} moves here; the other givens stay at the book’s '
+                f'values: a second slider would need the sweep over both givens together, and the number of '
+                f'parts changes the steps themselves.</div>'
                 f'<details open><summary>Prüfungen / checks <span id="live-at"></span></summary>'
                 f'<div style="max-height:28vh;overflow:auto"><table id="live-checks" style="border-collapse:collapse;'
                 f'font-size:12px;font-variant-numeric:tabular-nums"><thead><tr><th>Größe / quantity</th>'
@@ -80,23 +85,50 @@ LIVE_SCRIPT = r"""
     var stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("deflate"));
     return new Response(stream).arrayBuffer();
   }
-  var rows = L.rows, cols = L.cols, D = null, slots = [], followers = [], pts = [], isFlag = null, LIST = "zooms", IDX = "z", player = null, zoomAt = [], cur = null, zooms = null;
-  function prepare(buf){
-    // the first row as int32, then the deltas along the grid column by column in byte planes (live.py: encode)
-    var first = new Int32Array(buf.slice(0, 4 * cols)), bytes = new Uint8Array(buf, 4 * cols);
-    var w = L.width, n = cols * (rows - 1);
-    D = new Float64Array(rows * cols);
-    for (var c = 0; c < cols; c++) {
-      var acc = first[c];
-      D[c] = acc * L.q;
-      for (var r = 1; r < rows; r++) {
-        var i = c * (rows - 1) + r - 1, v = 0;
-        for (var b = w - 1; b >= 0; b--) v = (v << 8) | bytes[b * n + i];
-        if (w === 2 && v >= 32768) v -= 65536;
-        acc += v;
-        D[r * cols + c] = acc * L.q;
+  var rows = L.rows, cols = L.cols, U = L.ucols, D = null, slots = [], followers = [], pts = [], LIST = "zooms", IDX = "z", player = null, zoomAt = [], ringAt = [], cur = null, zooms = null;
+  var colmap = null, isFlag = null, moving = null, fullSlot = null, shownStep = Infinity, doneTo = -1;
+  function expand(buf){
+    // live.py encode: the column map, each stored column's kind (drawn, or the construction's x, y, length
+    // through the grid value's fit to the view), its kept grid values (bits), the fits, the first values,
+    // then the deltas between kept values in byte planes; between kept values a column is a line in log10
+    var bytes = new Uint8Array(buf), dv = new DataView(buf), at = 0, c, r, b;
+    colmap = new Int32Array(cols);
+    for (c = 0; c < cols; c++) colmap[c] = L.mapw === 2 ? dv.getUint16(at + 2 * c, true) : dv.getInt32(at + 4 * c, true);
+    at += cols * L.mapw;
+    var kinds = bytes.subarray(at, at + U);
+    at += U;
+    var keepAt = at, nbits = rows * U, kept = 0;
+    at += (nbits + 7) >> 3;
+    for (b = keepAt; b < at; b++) { var x = bytes[b]; while (x) { kept += x & 1; x >>= 1; } }
+    var fit = new Float32Array(buf.slice(at, at + 12 * rows));
+    at += 12 * rows;
+    var firstAt = at, n = kept - U, w = L.width, planes = at + 4 * U, pos = 0, g = L.grid;
+    var X = new Float64Array(rows);
+    D = new Float32Array(rows * U);
+    moving = new Uint8Array(U);
+    for (c = 0; c < U; c++) {
+      var r0 = 0, v0 = dv.getInt32(firstAt + 4 * c, true), kind = kinds[c], q = kind ? L.qx : L.q;
+      X[0] = v0 * q;
+      for (r = 1; r < rows; r++) {
+        var bit = c * rows + r;
+        if (!((bytes[keepAt + (bit >> 3)] >> (7 - (bit & 7))) & 1)) continue;
+        var d = 0;
+        for (b = w - 1; b >= 0; b--) d = (d << 8) | bytes[planes + b * n + pos];
+        if (w === 2 && d >= 32768) d -= 65536;
+        pos++;
+        var v1 = v0 + d;
+        for (var m = r0 + 1; m <= r; m++) X[m] = (v0 + (v1 - v0) * (g[m] - g[r0]) / (g[r] - g[r0])) * q;
+        r0 = r; v0 = v1;
+      }
+      for (r = 0; r < rows; r++) {
+        var s = fit[3 * r + 2], v = kind === 1 ? fit[3 * r] + s * X[r] : kind === 2 ? fit[3 * r + 1] - s * X[r] : kind === 3 ? s * X[r] : X[r];
+        D[r * U + c] = v;
+        if (r > 0 && Math.abs(v - D[c]) > 0.004) moving[c] = 1;
       }
     }
+  }
+  function prepare(buf){
+    expand(buf);
     isFlag = new Uint8Array(cols);
     (L.flags || []).forEach(function(c){ isFlag[c] = 1; });
     var at = 0;
@@ -108,33 +140,65 @@ LIVE_SCRIPT = r"""
         zooms[i] = st[IDX] >= 0 ? player.data[LIST][st[IDX]].slice() : null; if (st[IDX] >= 0) st[IDX] = i; });
       player.data[LIST] = zooms;
     }
+    var byId = {};
     L.keys.forEach(function(k){
-      if (k[0] === "#zoom") {
-        var parts = k[2].split("#");
-        zoomAt[+k[1]] = at; at += parts.length - 1; return;  // computed for the shown step only (view)
-      }
-      var el = k[0] ? document.getElementById(k[0]) : svg;
-      var parts = k[2].split("#");
-      slots.push({el: el, attr: k[1], parts: parts, at: at});
-      at += parts.length - 1;
+      var parts = k[2].split("#"), nn = parts.length - 1;
+      // the view and the ring of a step: computed for the shown step only (view)
+      if (k[0] === "#zoom") { zoomAt[+k[1]] = at; at += nn; return; }
+      var el = k[0] ? document.getElementById(k[0]) : svg, cs = new Int32Array(nn), fl = new Uint8Array(nn), mv = false;
+      for (var i = 0; i < nn; i++) { cs[i] = colmap[at + i]; fl[i] = isFlag[at + i]; if (moving[cs[i]]) mv = true; }
+      at += nn;
+      // a mark whose numbers do not move over the domain keeps its attribute as built: never written
+      if (!el || (!mv && el !== svg)) return;
+      var host = el.closest ? el.closest("g[data-step]") : null;
+      var sl = {el: el, attr: k[1], parts: parts, cs: cs, fl: fl, v: new Float64Array(nn), text: el.getAttribute(k[1]),
+                step: host ? +host.getAttribute("data-step") : 0};
+      // the whole figure's box: written as data-full, and as the view by the player (or below without one)
+      if (el === svg) { fullSlot = sl; sl.el = null; sl.text = svg.getAttribute("data-full") || sl.text; } else slots.push(sl);
+      if (k[1] === "cx" || k[1] === "cy") (byId[k[0]] = byId[k[0]] || {})[k[1]] = sl;
     });
+    // the marks of later steps are drawn when their step is shown (they are hidden until then)
+    slots.sort(function(a, b){ return a.step - b.step; });
     // letters and leader lines follow the point they name: the nearest point of the built figure
     svg.querySelectorAll("circle.pt[id]").forEach(function(c){
-      pts.push({el: c, x: +c.getAttribute("cx"), y: +c.getAttribute("cy")});
+      pts.push({el: c, x: +c.getAttribute("cx"), y: +c.getAttribute("cy"), s: byId[c.id]});
     });
-    svg.querySelectorAll("text, line:not([id])").forEach(function(t){
-      if (t.closest("#caption") || t.closest("#furniture")) return;
-      // a label follows its mark (id "NAME-label"), its halo (the text before it) the same mark
+    function nearest(x, y){
+      var best = null, bd = 60 * 60;
+      pts.forEach(function(q){ var d = (q.x - x) * (q.x - x) + (q.y - y) * (q.y - y); if (d < bd) { bd = d; best = q; } });
+      return best;
+    }
+    function owned(t){  // the point a label names (its id "NAME-label"; a halo: the text after it)
       var named = t.id ? t : (t.nextElementSibling && t.nextElementSibling.tagName === "text" ? t.nextElementSibling : null);
       var owner = named && named.id && /-label$/.test(named.id) ? document.getElementById(named.id.slice(0, -6)) : null;
-      if (owner && owner.tagName === "circle") {
-        followers.push({el: t, p: {el: owner, x: +owner.getAttribute("cx"), y: +owner.getAttribute("cy")}, at: coords(t)});
-        return;
-      }
+      return owner && owner.tagName === "circle" ? {el: owner, x: +owner.getAttribute("cx"), y: +owner.getAttribute("cy"), s: byId[owner.id]} : null;
+    }
+    function add(t, p){
+      if (!p || !p.s) return;  // no point, or one that does not move
+      var host = t.closest("g[data-step]");
+      followers.push({el: t, p: p, at: coords(t), step: host ? +host.getAttribute("data-step") : 0, text: {}});
+    }
+    // a label group (the camera's: letters, halo and leader about an anchor) moves as one, with its point
+    svg.querySelectorAll("g.lbg").forEach(function(g){
+      if (g.closest("#caption") || g.closest("#furniture")) return;
+      var m = /^translate\(([-0-9.e]+)[ ,]+([-0-9.e]+)\)$/.exec(g.getAttribute("transform") || "");
+      var first = g.querySelector("text, line");
+      if (!m || !first) return;
+      var p = null;
+      g.querySelectorAll("text").forEach(function(t){ p = p || owned(t); });
+      add(first, p || nearest(+m[1], +m[2]));
+    });
+    // letters and leader lines drawn where they stand follow the point they name, or the nearest point
+    svg.querySelectorAll("text, line:not([id])").forEach(function(t){
+      if (t.closest("#caption") || t.closest("#furniture") || t.closest("g.lbg")) return;
       var x = +(t.getAttribute("x") || t.getAttribute("x1")), y = +(t.getAttribute("y") || t.getAttribute("y1"));
-      var best = null, bd = Infinity;
-      pts.forEach(function(p){ var d = (p.x - x) * (p.x - x) + (p.y - y) * (p.y - y); if (d < bd) { bd = d; best = p; } });
-      if (best && bd < 60 * 60) followers.push({el: t, p: best, at: coords(t)});
+      add(t, owned(t) || nearest(x, y));
+    });
+    followers.sort(function(a, b){ return a.step - b.step; });
+    // the ring of a step (round its mark where that is small on the screen) follows the nearest point
+    if (player) player.data.steps.forEach(function(st, i){
+      var p = st.r ? nearest(st.r[0], st.r[1]) : null;
+      if (p && p.s && p.s.cx && p.s.cy) ringAt[i] = {p: p, x: st.r[0], y: st.r[1]};
     });
   }
   function coords(e){  // a letter's x, y or a leader line's ends, as built; or its label group's translate
@@ -151,59 +215,88 @@ LIVE_SCRIPT = r"""
     while (hi - lo > 1) { var m = (lo + hi) >> 1; if (g[m] <= u) lo = m; else hi = m; }
     var t = (u - g[lo]) / (g[lo + 1] - g[lo]);
     // across a jump of the drawing (the broken axis appearing) the nearer side is drawn, not a blend
-    var a = L.values[lo], b = L.values[lo + 1];
-    for (var j = 0; j < L.jumps.length; j++) if (L.jumps[j][0] === a && L.jumps[j][1] === b) t = t < 0.5 ? 0 : 1;
+    if (L.jumps.indexOf(lo) >= 0) t = t < 0.5 ? 0 : 1;
     return [lo, t];
   }
-  function view(){  // what the player's show(k) does with the view, without touching the steps (cheap)
+  function view(dragging){  // what the player's show(k) does with the view, without touching the steps (cheap)
     var d = player.data, k = +(svg.getAttribute("data-step") || d.n), st = k > 0 ? d.steps[k - 1] : null;
     if (st && st[IDX] >= 0 && cur && zoomAt[k - 1] !== undefined) {
       for (var i = 0; i < 4; i++) d[LIST][st[IDX]][i] = Math.round(valueAt(zoomAt[k - 1] + i) * 100) / 100;
     }
-    if (player.move) { player.move(); return; }  // the camera's player moves its view there itself
+    var rp = ringAt[k - 1];
+    if (st && st.r && rp && rp.p.s) {  // the ring (the array the player rings with) stays on its point
+      st.r[0] = Math.round((rp.x + now(rp.p.s.cx) - rp.p.x) * 100) / 100;
+      st.r[1] = Math.round((rp.y + now(rp.p.s.cy) - rp.p.y) * 100) / 100;
+    }
+    // the player moves its view there itself: at once while the given is dragged, smoothly to a new step
+    if (player.jump && dragging) { player.jump(); return; }
+    if (player.move) { player.move(); return; }
     var zoom = document.getElementById("zoom");
     var box = st && zoom && zoom.checked && k < d.n && st.z >= 0 ? d.zooms[st.z] : null;
     svg.setAttribute("viewBox", (box || player.full).join(" "));
     svg.style.setProperty("--z", box ? (player.full[2] / box[2]).toFixed(3) : "1");
   }
-  function valueAt(c){  // column c at the shown value
-    return isFlag[c] ? (cur.t < 0.5 ? D[cur.r0 + c] : D[cur.r1 + c]) : D[cur.r0 + c] + (D[cur.r1 + c] - D[cur.r0 + c]) * cur.t;
+  function now(sl){  // a one-number mark's value at the shown value (written or not yet)
+    var c = sl.cs[0];
+    return D[cur.r0 + c] + (D[cur.r1 + c] - D[cur.r0 + c]) * cur.t;
+  }
+  function valueAt(c){  // column c (of the keys) at the shown value
+    var uc = colmap[c];
+    return isFlag[c] ? (cur.t < 0.5 ? D[cur.r0 + uc] : D[cur.r1 + uc]) : D[cur.r0 + uc] + (D[cur.r1 + uc] - D[cur.r0 + uc]) * cur.t;
+  }
+  function write(sl){  // one mark's attribute at the shown value; written only when its text changes
+    var parts = sl.parts, cs = sl.cs, txt = parts[0], r0 = cur.r0, r1 = cur.r1, t = cur.t;
+    for (var i = 1; i < parts.length; i++) {
+      var c = cs[i - 1], v = sl.fl[i - 1] ? (t < 0.5 ? D[r0 + c] : D[r1 + c]) : D[r0 + c] + (D[r1 + c] - D[r0 + c]) * t;
+      v = Math.round(v * 100) / 100;
+      sl.v[i - 1] = v;
+      txt += v + parts[i];
+    }
+    if (txt !== sl.text) { sl.text = txt; if (sl.el) sl.el.setAttribute(sl.attr, txt); }
+  }
+  function follow(fo){
+    var p = fo.p, dx = (p.s.cx ? p.s.cx.v[0] : p.x) - p.x, dy = (p.s.cy ? p.s.cy.v[0] : p.y) - p.y;
+    // moved by their own coordinates (a transform attribute would lose to the camera's CSS scale)
+    if (fo.at.g) {  // the camera's label group: its anchor moves (the letters scale about it)
+      var tr = "translate(" + (fo.at.translate[0] + dx).toFixed(2) + " " + (fo.at.translate[1] + dy).toFixed(2) + ")";
+      if (tr !== fo.text.t) { fo.text.t = tr; fo.at.g.setAttribute("transform", tr); }
+      return;
+    }
+    for (var a in fo.at) {
+      var s = (fo.at[a] + (a.charAt(0) === "x" ? dx : dy)).toFixed(2);
+      if (s !== fo.text[a]) { fo.text[a] = s; fo.el.setAttribute(a, s); }
+    }
+  }
+  function catchUp(k){  // the marks of the steps up to k at the shown value (later steps are hidden)
+    if (!cur || k <= doneTo) return;
+    for (var s = 0; s < slots.length; s++) if (slots[s].step > doneTo && slots[s].step <= k) write(slots[s]);
+    for (var f = 0; f < followers.length; f++) if (followers[f].step > doneTo && followers[f].step <= k) follow(followers[f]);
+    doneTo = k;
   }
   function redraw(value){
     var t0 = performance.now();
-    var u = Math.log10(value), ct = cell(u), r0 = ct[0] * cols, r1 = Math.min(ct[0] + 1, rows - 1) * cols, t = ct[1];
-    cur = {r0: r0, r1: r1, t: t};
-    var zoomed = svg.classList.contains("zoomed");
-    for (var s = 0; s < slots.length; s++) {
-      var sl = slots[s], parts = sl.parts, txt = parts[0];
-      for (var i = 1; i < parts.length; i++) {
-        var c = sl.at + i - 1, v = isFlag[c] ? (t < 0.5 ? D[r0 + c] : D[r1 + c]) : D[r0 + c] + (D[r1 + c] - D[r0 + c]) * t;
-        txt += (Math.round(v * 100) / 100) + parts[i];
+    var u = Math.log10(value), ct = cell(u), t = ct[1];
+    cur = {r0: ct[0] * U, r1: Math.min(ct[0] + 1, rows - 1) * U, t: t};
+    if (fullSlot) {  // the whole figure's box (the view when not magnified)
+      var was = fullSlot.text;
+      write(fullSlot);
+      if (fullSlot.text !== was) {
+        svg.setAttribute("data-full", fullSlot.text);
+        if (player) for (var q = 0; q < 4; q++) player.full[q] = fullSlot.v[q];
+        if (!player && !svg.classList.contains("zoomed")) svg.setAttribute("viewBox", fullSlot.text);
       }
-      if (sl.el === svg) {
-        svg.setAttribute("data-full", txt);
-        if (player) { var nf = txt.split(" ").map(Number); for (var q = 0; q < 4; q++) player.full[q] = nf[q]; }
-        if (zoomed) continue;
-      }
-      if (sl.el) sl.el.setAttribute(sl.attr, txt);
     }
-    for (var f = 0; f < followers.length; f++) {
-      var fo = followers[f], p = fo.p;
-      var dx = +p.el.getAttribute("cx") - p.x, dy = +p.el.getAttribute("cy") - p.y;
-      // moved by their own coordinates (a transform attribute would lose to the camera's CSS scale)
-      if (fo.at.g) {  // the camera's label group: its anchor moves (the letters scale about it)
-        fo.at.g.setAttribute("transform", "translate(" + (fo.at.translate[0] + dx).toFixed(2) + " " + (fo.at.translate[1] + dy).toFixed(2) + ")");
-        continue;
-      }
-      for (var a in fo.at) fo.el.setAttribute(a, (fo.at[a] + (a.charAt(0) === "x" ? dx : dy)).toFixed(2));
-    }
+    // the view first (the player reads the figure's size there: nothing written yet, no layout forced)
+    if (player) view(true);
+    var k = player ? +(svg.getAttribute("data-step") || player.data.n) : Infinity;
+    doneTo = -1;
+    catchUp(k);
     // the broken axis's marks belong to the built value's break; elsewhere the break lies elsewhere or nowhere
-    var furniture = document.getElementById("furniture");
-    if (furniture) furniture.style.display = Math.abs(u - Math.log10(L.initial)) < 1e-9 ? "" : "none";
-    if (player) view();  // the step's view (magnified or whole) at the new value
+    var furniture = document.getElementById("furniture"), shown = Math.abs(u - Math.log10(L.initial)) < 1e-9 ? "" : "none";
+    if (furniture && furniture.style.display !== shown) furniture.style.display = shown;
     api.value = value;
-    out.textContent = book(value);
-    retitle(value);
+    var said = book(value);
+    if (out.textContent !== said) { out.textContent = said; retitle(value); }
     showChecks(u);
     api.lastMs = performance.now() - t0;
   }
@@ -218,15 +311,20 @@ LIVE_SCRIPT = r"""
         titled.push({n: t, text: t.nodeValue, en: !!(t.parentNode.closest && t.parentNode.closest(".en"))});
     });
   });
-  var givenCell = null;
-  document.querySelectorAll("#givens th").forEach(function(th){ if (th.textContent === L.given) givenCell = th.nextElementSibling; });
+  // the givens table names the rod as the book does: L/r = 5, or r/L = 1/5 (r/l in § 146)
+  var givenCell = null, inverse = false;
+  document.querySelectorAll("#givens th").forEach(function(th){
+    var t = th.textContent.trim();
+    if (t === L.given || t === L.symbol) givenCell = th.nextElementSibling;
+    else if (L.given === "rod_ratio" && (t === "r/L" || t === "r/l")) { givenCell = th.nextElementSibling; inverse = true; }
+  });
   function retitle(value){
     titled.forEach(function(t){
       var shown = t.en ? String(Number(value.toPrecision(4))) : book(value), text = t.text;
       forms.forEach(function(f){ text = text.replace(f[1], f[0] + shown); });
       t.n.nodeValue = text;
     });
-    if (givenCell) givenCell.textContent = book(value);
+    if (givenCell) givenCell.textContent = (inverse ? "1/" : "") + book(value);
   }
   var body = document.querySelector("#live-checks tbody"), shownAt = -1;
   L.checks = L.checks || [];
@@ -240,22 +338,35 @@ LIVE_SCRIPT = r"""
     document.getElementById("live-at").textContent = "(" + L.symbol + " = " + book(L.check_values[k]) + ")";
     while (body.firstChild) body.removeChild(body.firstChild);
     L.checks[k].forEach(function(c, i){
+      // [formula, error, ok, constructed value where formula + error does not give it] (live.py _check_table)
       var tr = document.createElement("tr"), num = function(x){ return x === null ? "–" : x.toPrecision(8); };
-      cellText(tr, L.check_names[i]); cellText(tr, num(c[0])); cellText(tr, num(c[1]));
-      cellText(tr, c[2].toExponential(1)); cellText(tr, c[3] ? "✓" : "✗", c[3] ? "ok" : "bad");
+      var made = c.length > 3 ? c[3] : (c[0] === null || c[1] === null ? null : c[0] + c[1]);
+      cellText(tr, L.check_names[i]); cellText(tr, num(made)); cellText(tr, num(c[0]));
+      cellText(tr, c[1] === null ? "–" : c[1].toExponential(1)); cellText(tr, c[2] ? "✓" : "✗", c[2] ? "ok" : "bad");
       body.appendChild(tr);
     });
   }
-  api.ready = (L.checks_z ? inflate(L.checks_z).then(function(b){
-    var c = JSON.parse(new TextDecoder().decode(b)); L.check_names = c.check_names; L.check_values = c.check_values; L.checks = c.checks;
-  }) : Promise.resolve()).then(function(){ return inflate(L.data); }).then(function(buf){
+  api.ready = inflate(L.meta_z).then(function(b){
+    var m = JSON.parse(new TextDecoder().decode(b));
+    L.grid = m.grid; L.keys = m.keys; L.flags = m.flags; L.jumps = m.jumps;
+    return L.checks_z ? inflate(L.checks_z) : null;
+  }).then(function(b){
+    if (b) { var c = JSON.parse(new TextDecoder().decode(b)); L.check_names = c.check_names; L.check_values = c.check_values; L.checks = c.checks; }
+    return inflate(L.data);
+  }).then(function(buf){
     prepare(buf);
-    input.addEventListener("input", function(){ redraw(Math.pow(10, +input.value)); });
-    // a new step: its magnified view at the shown value (the player has just set the built one)
+    // a drag sends more input events than frames: the last value of each frame is drawn, once, just before it
+    var pending = false;
+    input.addEventListener("input", function(){
+      if (pending) return;
+      pending = true;
+      requestAnimationFrame(function(){ pending = false; redraw(Math.pow(10, +input.value)); });
+    });
+    // a new step: its marks and its view at the shown value (the player has just set the built view)
     var seenStep = svg.getAttribute("data-step");
     if (player) new MutationObserver(function(){
       var now = svg.getAttribute("data-step");
-      if (now !== seenStep) { seenStep = now; if (cur) view(); }
+      if (now !== seenStep) { seenStep = now; if (cur) { catchUp(+now); view(); } }
     }).observe(svg, {attributes: true, attributeFilter: ["data-step"]});
     showChecks(Math.log10(L.initial));
   });

@@ -245,8 +245,11 @@ li a.later{color:#bbb}
     // the letter scale of the view's zoom level (the letters were placed for it): the level's picture
     // magnified as a whole, letters never smaller on the screen than at the level's own zoom
     var q = ratio(v), zr = full[2] / v[2], zl = data.levels[level] || 1, ql = q * zr / zl;
-    svg.setAttribute("viewBox", v.map(function (x) { return x.toFixed(2); }).join(" "));
-    svg.style.setProperty("--ls", Math.min(Math.max(1, 9.5 * ql / 12), ql).toFixed(4));
+    // written only when changed: a new --ls restyles every letter, a new viewBox repaints the figure
+    var box = v.map(function (x) { return x.toFixed(2); }).join(" ");
+    var ls = Math.min(Math.max(1, 9.5 * ql / 12), ql).toFixed(4);
+    if (box !== svg.getAttribute("viewBox")) { svg.setAttribute("viewBox", box); }
+    if (ls !== svg.style.getPropertyValue("--ls")) { svg.style.setProperty("--ls", ls); }
     var ring = document.getElementById("ring");
     if (ring) {
       ring.setAttribute("visibility", ringAt ? "visible" : "hidden");
@@ -271,6 +274,12 @@ li a.later{color:#bbb}
   }
   window.addEventListener("resize", function () { put(now); });
   function text(id, s) { document.getElementById(id).textContent = s; }
+  function zoomLevel(view) {  // the zoom level of *view*: its letters (placed for it) and their scale
+    var z = full[2] / view[2], lvl = 0;
+    data.levels.forEach(function (l, i) { if (z >= 0.999 * l) { lvl = i; } });
+    if (svg.getAttribute("class") !== "zl" + lvl) { svg.setAttribute("class", "zl" + lvl); }
+    level = lvl;
+  }
   function show(j) {
     k = Math.max(0, Math.min(n, j));
     groups.forEach(function (g) {
@@ -293,10 +302,7 @@ li a.later{color:#bbb}
     text("cap-en", st ? "Step " + k + ": " + st.en : "");
     // the camera: the step's view (the whole figure at the ends or without the magnifier), reached smoothly
     var view = st && zoom.checked ? data.views[st.v] : full;
-    var z = full[2] / view[2], lvl = 0;
-    data.levels.forEach(function (l, i) { if (z >= 0.999 * l) { lvl = i; } });
-    svg.setAttribute("class", "zl" + lvl);
-    level = lvl;
+    zoomLevel(view);
     ringAt = st && k < n ? (st.r || null) : null;
     move(view);
     var cur = links[k - 1];
@@ -337,8 +343,9 @@ li a.later{color:#bbb}
     a.onclick = function (e) { e.preventDefault(); pause(); show(+a.getAttribute("data-k")); };
   });
   document.addEventListener("keydown", function (e) {
-    if (e.target && e.target.tagName === "INPUT" && e.target.type === "range" &&
-        (e.key === "ArrowLeft" || e.key === "ArrowRight")) { e.preventDefault(); }
+    // a given's slider (the live player's) moves its given with the keys, natively: they do not step too
+    if (e.target && e.target.tagName === "INPUT" && e.target.type === "range" && e.target !== slider) { return; }
+    if (e.target === slider && (e.key === "ArrowLeft" || e.key === "ArrowRight")) { e.preventDefault(); }
     if (e.key === "ArrowRight") { pause(); show(k + 1); }
     else if (e.key === "ArrowLeft") { pause(); show(k - 1); }
     else if (e.key === "Home") { pause(); show(0); }
@@ -351,8 +358,12 @@ li a.later{color:#bbb}
   show(isNaN(start) ? n : start);
   // live givens (construct/render/live.py) redraw the figure and its views in place, then show step k again
   // the live player's hook (construct.render.live): redraw the step, move the camera to the step's view
-  window.constructPlayer = {data: data, full: full, redraw: function () { show(k); }, move: function () {
-    var st = k > 0 ? data.steps[k - 1] : null; move(st && zoom.checked ? data.views[st.v] : full); }};
+  // (move: to the step's view, smoothly; jump: there at once, as a given's slider is dragged)
+  function target() { var st = k > 0 ? data.steps[k - 1] : null; return st && zoom.checked ? data.views[st.v] : full; }
+  window.constructPlayer = {data: data, full: full, redraw: function () { show(k); }, move: function () { move(target()); },
+    jump: function () {
+      if (anim) { cancelAnimationFrame(anim); anim = null; }
+      now = target().slice(); zoomLevel(now); put(now); }};
 })();
 </script>
 </body>

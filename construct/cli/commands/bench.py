@@ -21,11 +21,17 @@ def add_arguments(p) -> None:
     p.add_argument("--diff", action="store_true",
                    help="time 'construct diff' instead: two drawings of 10,000 and 100,000 elements, one moved "
                         "(time, peak memory, time per element; about a minute)")
+    p.add_argument("--live", nargs="*", metavar="PLAYER",
+                   help="time the live player's redraw in headless Chromium instead (median, p90, max ms per slider "
+                        "move, and how many inside one 16.7 ms frame) for the PLAYER pages given, by default the "
+                        "gallery's live players (gallery/*/teaching/player.html with a slider)")
     p.add_argument("--diff-million", action="store_true",
                    help="with --diff: also 1,000,000 elements (about 80 MB per drawing; minutes)")
 
 
 def run(args) -> int:
+    if args.live is not None:
+        return _live(args)
     if args.diff or args.diff_million:
         from ...regress.diffbench import SIZES, diff_verdicts, run_diff_bench
 
@@ -62,5 +68,29 @@ def run(args) -> int:
     if sweep is not None:
         print(f"{sweep['case']}: {sweep['sweep_s'] * 1e3:.1f} ms (one replay {sweep['scalar_replay_s'] * 1e3:.3f} ms)")
     for line in verdicts(results, sweep):
+        print(line)
+    return 0
+
+
+def _live(args) -> int:
+    from pathlib import Path
+
+    from ...kernel.errors import InvalidParameter
+    from ...regress.livebench import live_verdicts, run_live_bench
+
+    pages = [Path(p) for p in args.live] or sorted(
+        p for p in Path("gallery").glob("*/teaching/player.html") if 'id="live-data"' in p.read_text(encoding="utf-8"))
+    missing = [str(p) for p in pages if not p.is_file()]
+    if not pages or missing:
+        raise InvalidParameter(f"--live: no live player {'at ' + ', '.join(missing) if missing else 'in gallery/'} "
+                               "(write one with: construct replay crank --live --style teaching --out DIR)")
+    found = run_live_bench(pages)
+    if args.format == "json":
+        print(json.dumps(found, indent=1))
+        return 0
+    for r in found:
+        print(f"{r['page']}  {r['step']:18s} frame: median {r['median_ms']:6.1f} ms  p90 {r['p90_ms']:6.1f}  "
+              f"max {r['max_ms']:6.1f}  script: median {r['script_median_ms']:5.1f}  max {r['script_max_ms']:5.1f}")
+    for line in live_verdicts(found):
         print(line)
     return 0

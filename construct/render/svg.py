@@ -432,7 +432,7 @@ class Drawing:
             # each letter where it stands in the whole figure if there is room for it there
             prefer = {i: ((self._spots[i][0] - p[0] / z) * f, (self._spots[i][1] - p[1] / z) * f, self._spots[i][2])
                       for i, _r, _s, p, _d, _t in its}
-            got = place(its, size * f, [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
+            got = place(its, size * f, _scaled(dots, z, 2), _scaled(lines, z, 4),
                         font=st.label_font, italic=st.label_italic, keep=False, prefer=prefer, halo=HALO_PX / 2 * f, reach=self.line_reach)
             for i, _r, _s, (zx, zy), _d, _t in its:
                 spot = got.get(i)
@@ -463,6 +463,8 @@ class Drawing:
         stand farther apart than in the whole figure).  A tag with no free spot there is left out,
         never stacked on another.
         """
+        import numpy as np
+
         from .lettering import label_box, place
 
         sc, st = self.scene, self.style
@@ -528,17 +530,23 @@ class Drawing:
                                        st.label_italic, HALO_PX / 2 * f))
             return z, f, boxes
 
+        # the points and result lines as arrays, asked once per level and group of tags below
+        dot_a = np.array(dots, dtype=float).reshape(-1, 2)
+        line_a = np.array(lines, dtype=float).reshape(-1, 4)
+        line_lo = np.minimum(line_a[:, 0:2], line_a[:, 2:4])
+        line_hi = np.maximum(line_a[:, 0:2], line_a[:, 2:4])
+
         def near(items, z: float, f: float):
             """The points and result lines (at zoom *z*) a tag of *items* could meet: within its reach."""
             xs = [it[3][0] for it in items]
             ys = [it[3][1] for it in items]
             r = 8.0 * size * f
             x0, y0, x1, y1 = min(xs) - r, min(ys) - r, max(xs) + r, max(ys) + r
-            ds = [(x * z, y * z) for x, y in dots if x0 <= x * z <= x1 and y0 <= y * z <= y1]
-            ls = [tuple(c * z for c in seg) for seg in lines
-                  if min(seg[0], seg[2]) * z <= x1 and max(seg[0], seg[2]) * z >= x0
-                  and min(seg[1], seg[3]) * z <= y1 and max(seg[1], seg[3]) * z >= y0]
-            return ds, ls
+            dz = dot_a * z
+            ds = dz[(x0 <= dz[:, 0]) & (dz[:, 0] <= x1) & (y0 <= dz[:, 1]) & (dz[:, 1] <= y1)]
+            lo, hi = line_lo * z, line_hi * z
+            ls = line_a[(lo[:, 0] <= x1) & (hi[:, 0] >= x0) & (lo[:, 1] <= y1) & (hi[:, 1] >= y0)] * z
+            return list(map(tuple, ds.tolist())), list(map(tuple, ls.tolist()))
 
         out: dict[str, tuple[float, float, float]] = {}
         for lvl, ms in sorted(by_level.items()):
@@ -1033,6 +1041,14 @@ def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
                                  for a, b, c, d in zip(p1, c1, c2, p2)))
         return out
     return list(g)
+
+
+def _scaled(rows: Sequence[tuple[float, ...]], z: float, width: int) -> list[tuple[float, ...]]:
+    """Every coordinate of *rows* (points or segments, *width* numbers each) times *z*, as tuples
+    (the same numbers as multiplying one by one, made at once: a figure has thousands)."""
+    import numpy as np
+
+    return list(map(tuple, (np.array(rows, dtype=float).reshape(-1, width) * z).tolist()))
 
 
 def _mark_points(m: Mark) -> list[tuple[float, float]]:

@@ -28,11 +28,20 @@ def add_arguments(p) -> None:
                    help="fail (exit 1, the previous gallery kept) when 'construct lint' finds anything in it")
 
 
+def lint_figure(folder: Path) -> dict:
+    """Lint one figure's drawings where it was built: {name under the gallery: its lint}."""
+    from ...regress.lint import figure_files, lint_file
+
+    return {f"{folder.name}/{name}": lint_file(file, f"{folder.name}/{name}") for file, name in figure_files(folder)}
+
+
 def _lint(strict: bool):
-    def check(root: Path) -> None:
+    def check(root: Path, linted: list[dict] = ()) -> None:
         from ...regress.lint import lint_path
 
-        report = lint_path(root)
+        # the figures linted by the processes that built them (lint_figure) are not read again; what
+        # else the gallery holds is linted here, and the report is the one 'construct lint' gives
+        report = lint_path(root, linted={name: done for found in linted for name, done in found.items()})
         if report.ok:
             print(f"lint: no findings in {len(report.figures)} figures, {report.views} views", file=sys.stderr)
             return
@@ -48,7 +57,7 @@ def _lint(strict: bool):
 
 def run(args) -> int:
     try:
-        entries = build_gallery(args.out, progress=True, before_swap=_lint(args.legible))
+        entries = build_gallery(args.out, progress=True, before_swap=_lint(args.legible), check=lint_figure)
     except IllegibleGallery as exc:
         print(f"construct: {exc}", file=sys.stderr)
         return 1

@@ -148,22 +148,29 @@ class _Grid:
         self.cell = cell
         self.cells: dict[tuple[int, int], list[tuple[float, float, float, float]]] = {}
 
-    def _keys(self, b) -> Iterable[tuple[int, int]]:
-        c = self.cell
-        for i in range(math.floor(b[0] / c), math.floor(b[2] / c) + 1):
-            for j in range(math.floor(b[1] / c), math.floor(b[3] / c) + 1):
-                yield i, j
-
     def free(self, b) -> bool:
-        for key in self._keys(b):
-            for o in self.cells.get(key, ()):
-                if b[0] < o[2] and o[0] < b[2] and b[1] < o[3] and o[1] < b[3]:
-                    return False
+        c, cells = self.cell, self.cells
+        x0, y0, x1, y1 = b
+        js = range(math.floor(y0 / c), math.floor(y1 / c) + 1)
+        for i in range(math.floor(x0 / c), math.floor(x1 / c) + 1):
+            for j in js:
+                got = cells.get((i, j))
+                if got:
+                    for o in got:
+                        if x0 < o[2] and o[0] < x1 and y0 < o[3] and o[1] < y1:
+                            return False
         return True
 
     def add(self, b) -> None:
-        for key in self._keys(b):
-            self.cells.setdefault(key, []).append(b)
+        c, cells = self.cell, self.cells
+        js = range(math.floor(b[1] / c), math.floor(b[3] / c) + 1)
+        for i in range(math.floor(b[0] / c), math.floor(b[2] / c) + 1):
+            for j in js:
+                got = cells.get((i, j))
+                if got is None:
+                    cells[(i, j)] = [b]
+                else:
+                    got.append(b)
 
 
 def _hits(box, seg) -> bool:
@@ -192,24 +199,47 @@ class _Lines:
     def __init__(self, cell: float, segments: Iterable[tuple[float, float, float, float]]):
         self.cell = cell
         self.cells: dict[tuple[int, int], list[tuple[float, float, float, float]]] = {}
+        cells, floor, hypot = self.cells, math.floor, math.hypot
         for seg in segments:
             x0, y0, x1, y1 = seg
-            n = max(1, int(math.hypot(x1 - x0, y1 - y0) / cell) + 1)
+            dx, dy = x1 - x0, y1 - y0
+            n = max(1, int(hypot(dx, dy) / cell) + 1)
             if n > 4000:
                 continue  # far beyond the sheet
             for i in range(n):
-                a, b = i / n, (i + 1) / n
-                piece = (x0 + a * (x1 - x0), y0 + a * (y1 - y0), x0 + b * (x1 - x0), y0 + b * (y1 - y0))
-                key = (math.floor((piece[0] + piece[2]) / 2 / cell), math.floor((piece[1] + piece[3]) / 2 / cell))
-                self.cells.setdefault(key, []).append(piece)
+                if n == 1:  # most result lines are short pieces already: the numbers of the loop below
+                    piece = (x0 + 0.0 * dx, y0 + 0.0 * dy, x0 + 1.0 * dx, y0 + 1.0 * dy)
+                else:
+                    a, b = i / n, (i + 1) / n
+                    piece = (x0 + a * dx, y0 + a * dy, x0 + b * dx, y0 + b * dy)
+                key = (floor((piece[0] + piece[2]) / 2 / cell), floor((piece[1] + piece[3]) / 2 / cell))
+                got = cells.get(key)
+                if got is None:
+                    cells[key] = [piece]
+                else:
+                    got.append(piece)
 
     def meets(self, box, reach: float = 0.0) -> bool:
         c = self.cell
         if reach:
             box = (box[0] - reach, box[1] - reach, box[2] + reach, box[3] + reach)
-        for i in range(math.floor(box[0] / c) - 1, math.floor(box[2] / c) + 2):
-            for j in range(math.floor(box[1] / c) - 1, math.floor(box[3] / c) + 2):
-                for seg in self.cells.get((i, j), ()):
+        bx0, by0, bx1, by1 = box
+        # a piece whose ends lie both beyond one side of the box (by more than rounding) misses it;
+        # the others are clipped (the margin leaves every close call to the clipping)
+        e = 1e-9 * c
+        lx, ly, hx, hy = bx0 - e, by0 - e, bx1 + e, by1 + e
+        cells = self.cells
+        js = range(math.floor(by0 / c) - 1, math.floor(by1 / c) + 2)
+        for i in range(math.floor(bx0 / c) - 1, math.floor(bx1 / c) + 2):
+            for j in js:
+                got = cells.get((i, j))
+                if not got:
+                    continue
+                for seg in got:
+                    sx0, sy0, sx1, sy1 = seg
+                    if (sx0 < lx and sx1 < lx) or (sx0 > hx and sx1 > hx) or (sy0 < ly and sy1 < ly) \
+                            or (sy0 > hy and sy1 > hy):
+                        continue
                     if _hits(box, seg):
                         return True
         return False

@@ -33,7 +33,7 @@ import bisect
 import math
 from collections import defaultdict
 from dataclasses import dataclass
-from typing import Iterable, Iterator
+from typing import Any, Iterable, Iterator
 
 from .sheet import Box, Sheet
 
@@ -284,6 +284,7 @@ class _Views:
                 if s < k < n:
                     self.input_in[s].append(k)
         self._cache: dict[tuple, Runs] = {}
+        self._texts_at: dict[int, tuple] = {}
         self.layouts = self._layouts()
         self._of_step: dict[int, _Layout] = {}
         for lay in self.layouts:
@@ -376,17 +377,35 @@ class _Views:
         self._cache[key] = got
         return got
 
+    def _text_runs(self, level: int) -> tuple[list[Runs], Any]:
+        """Every text's views at zoom level *level*, and the first and last of them as arrays (the
+        texts a layout may show are picked at once: a long figure has thousands of texts and layouts)."""
+        got = self._texts_at.get(level)
+        if got is None:
+            import numpy as np
+
+            runs = [self.shown(t.chain, t.step, level) for t in self.sheet.texts]
+            lo = np.array([r[0][0] if r else math.inf for r in runs], dtype=float)
+            hi = np.array([r[-1][1] if r else -math.inf for r in runs], dtype=float)
+            got = self._texts_at[level] = (runs, lo, hi)
+        return got
+
     def letters(self, lay: _Layout, *, captions: bool = True) -> list[tuple]:
         """The texts a layout shows: (text, its box there, the layout's steps that show it)."""
+        import numpy as np
+
         out = []
-        for t in self.sheet.texts:
+        texts = self.sheet.texts
+        shown, lo, hi = self._text_runs(lay.level)
+        for i in np.flatnonzero((lo <= lay.runs[-1][1]) & (hi >= lay.runs[0][0])).tolist():
+            t = texts[i]
             if t.kind == "caption" and (self.player or not captions):
                 continue  # the player shows no caption lines on its figure
-            b = self.text_box(t, lay)
-            if not _meet_any(b, lay.box):
+            runs = _both(shown[i], lay.runs)
+            if not runs:
                 continue
-            runs = _both(self.shown(t.chain, t.step, lay.level), lay.runs)
-            if runs:
+            b = self.text_box(t, lay)
+            if _meet_any(b, lay.box):
                 out.append((t, b, runs))
         return out
 
@@ -487,23 +506,39 @@ def _on_points(sheet: Sheet, views: _Views, seen) -> list[Finding]:
 
 
 def _struck(sheet: Sheet, views: _Views, seen) -> list[Finding]:
-    grid = _Grid()
-    pieces: list[tuple[int, tuple[float, float, float, float]]] = []
+    # the grid of :class:`_Grid` (its cells and keys), written out here: every letter of every view asks it
+    cells: dict[tuple[int, int], list[int]] = defaultdict(list)
+    pieces: list[tuple[int, tuple[float, float, float, float], Box]] = []
     widest = max((s.half for s in sheet.strokes), default=0.0)
     for si, s in enumerate(sheet.strokes):
         for p in s.pieces:
-            grid.add((min(p[0], p[2]), min(p[1], p[3]), max(p[0], p[2]), max(p[1], p[3])), len(pieces))
-            pieces.append((si, p))
+            pb = (min(p[0], p[2]), min(p[1], p[3]), max(p[0], p[2]), max(p[1], p[3]))
+            for key in _Grid.keys(pb):
+                cells[key].append(len(pieces))
+            pieces.append((si, p, pb))
+    halves = [s.half for s in sheet.strokes]
+    floor = math.floor
     found: dict[tuple[int, int], list] = {}
     for lay, letters in seen:
+        stroke = lay.stroke
+        reach = widest * stroke
         for t, tb, runs in letters:
+            near: set[int] = set()
+            for i in range(floor((tb[0] - reach) / CELL), floor((tb[2] + reach) / CELL) + 1):
+                for j in range(floor((tb[1] - reach) / CELL), floor((tb[3] + reach) / CELL) + 1):
+                    got = cells.get((i, j))
+                    if got:
+                        near.update(got)
+            if not near:
+                continue
             hit: set[int] = set()
-            for i in sorted(grid.near(_grow(tb, widest * lay.stroke))):
-                si, p = pieces[i]
+            for i in sorted(near):
+                si, p, pb = pieces[i]
                 if si in hit:
                     continue
-                b = _grow(tb, sheet.strokes[si].half * lay.stroke - TOUCH)
-                if max(p[0], p[2]) < b[0] or min(p[0], p[2]) > b[2] or max(p[1], p[3]) < b[1] or min(p[1], p[3]) > b[3]:
+                d = halves[si] * stroke - TOUCH
+                b = (tb[0] - d, tb[1] - d, tb[2] + d, tb[3] + d)
+                if pb[2] < b[0] or pb[0] > b[2] or pb[3] < b[1] or pb[1] > b[3]:
                     continue  # the cheap test first: most pieces near a label pass beside it
                 if _segment_in_box(p, b):
                     hit.add(si)

@@ -56,6 +56,9 @@ def _lint(strict: bool):
 
 
 def run(args) -> int:
+    from ...regress.lint.fonts import load
+
+    load()  # once here: the workers are forked with the fonts the lint measures with
     try:
         entries = build_gallery(args.out, progress=True, before_swap=_lint(args.legible), check=lint_figure)
     except IllegibleGallery as exc:

@@ -284,7 +284,6 @@ class _Views:
                 if s < k < n:
                     self.input_in[s].append(k)
         self._cache: dict[tuple, Runs] = {}
-        self._texts_at: dict[int, tuple] = {}
         self.layouts = self._layouts()
         self._of_step: dict[int, _Layout] = {}
         for lay in self.layouts:
@@ -377,35 +376,65 @@ class _Views:
         self._cache[key] = got
         return got
 
-    def _text_runs(self, level: int) -> tuple[list[Runs], Any]:
-        """Every text's views at zoom level *level*, and the first and last of them as arrays (the
-        texts a layout may show are picked at once: a long figure has thousands of texts and layouts)."""
-        got = self._texts_at.get(level)
+    def _text_arrays(self) -> tuple:
+        """The texts' boxes, points and letter units as arrays (made once)."""
+        got = self.__dict__.get("_arrays")
         if got is None:
             import numpy as np
 
-            runs = [self.shown(t.chain, t.step, level) for t in self.sheet.texts]
-            lo = np.array([r[0][0] if r else math.inf for r in runs], dtype=float)
-            hi = np.array([r[-1][1] if r else -math.inf for r in runs], dtype=float)
-            got = self._texts_at[level] = (runs, lo, hi)
+            texts = self.sheet.texts
+            boxes = np.array([t.box for t in texts], dtype=float).reshape(-1, 4)
+            anchored = np.array([t.anchor is not None for t in texts], dtype=bool)
+            points = np.array([t.anchor or (0.0, 0.0) for t in texts], dtype=float).reshape(-1, 2)
+            units = np.array([t.unit for t in texts], dtype=float)
+            got = self.__dict__["_arrays"] = (boxes, anchored, points, units)
         return got
+
+    def _near_texts(self, lay: _Layout) -> list[int]:
+        """The texts whose box in *lay* (:meth:`text_box`, for all at once) may meet the layout's box: a
+        superset of those that do (a hair's margin), in order; :meth:`letters` tests each exactly."""
+        import numpy as np
+
+        boxes, anchored, points, units = self._text_arrays()
+        texts = self.sheet.texts
+        level_moves = self.__dict__.setdefault("_level_moves", {})
+        if lay.level not in level_moves:  # the texts a zoom level moves, and by how much
+            moves = self.sheet.moves
+            moved = np.zeros(len(texts), dtype=bool)
+            d = np.zeros((len(texts), 2))
+            if lay.level and moves:
+                for i, t in enumerate(texts):
+                    m = moves.get((lay.level, t.group)) if t.group else None
+                    if m is not None:
+                        moved[i] = True
+                        d[i] = (m[0] * t.unit, m[1] * t.unit)
+            level_moves[lay.level] = (moved, d)
+        moved, d = level_moves[lay.level]
+        if lay.letter == 1.0 and not moved.any():
+            b = boxes
+        else:
+            s = lay.letter
+            at = anchored & (moved | (s != 1.0))
+            scaled = np.concatenate((points + s * (boxes[:, 0:2] - points + d), points + s * (boxes[:, 2:4] - points + d)),
+                                    axis=1)
+            b = np.where(at[:, None], scaled, boxes)
+        e = 1e-6
+        x0, y0, x1, y1 = lay.box
+        return np.flatnonzero((b[:, 0] < x1 + e) & (x0 - e < b[:, 2]) & (b[:, 1] < y1 + e) & (y0 - e < b[:, 3])).tolist()
 
     def letters(self, lay: _Layout, *, captions: bool = True) -> list[tuple]:
         """The texts a layout shows: (text, its box there, the layout's steps that show it)."""
-        import numpy as np
-
         out = []
         texts = self.sheet.texts
-        shown, lo, hi = self._text_runs(lay.level)
-        for i in np.flatnonzero((lo <= lay.runs[-1][1]) & (hi >= lay.runs[0][0])).tolist():
+        for i in self._near_texts(lay):
             t = texts[i]
             if t.kind == "caption" and (self.player or not captions):
                 continue  # the player shows no caption lines on its figure
-            runs = _both(shown[i], lay.runs)
-            if not runs:
-                continue
             b = self.text_box(t, lay)
-            if _meet_any(b, lay.box):
+            if not _meet_any(b, lay.box):
+                continue
+            runs = _both(self.shown(t.chain, t.step, lay.level), lay.runs)
+            if runs:
                 out.append((t, b, runs))
         return out
 

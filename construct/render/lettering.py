@@ -35,7 +35,7 @@ import math
 import os
 from typing import Any, Iterable, Sequence
 
-__all__ = ["place", "label_box", "text_box", "text_width", "RANK", "LEADER_FROM", "DEFAULT_FONT"]
+__all__ = ["place", "LineIndex", "label_box", "text_box", "text_width", "RANK", "LEADER_FROM", "DEFAULT_FONT"]
 
 #: Rank of a role: lower is placed first.
 RANK = {"result": 0, "given": 1}
@@ -193,14 +193,23 @@ def _hits(box, seg) -> bool:
     return True
 
 
-class _Lines:
-    """Result lines as short pieces in a grid, asked whether a box meets one."""
+class LineIndex:
+    """Result lines as short pieces in a grid, asked whether a box meets one.
 
-    def __init__(self, cell: float, segments: Iterable[tuple[float, float, float, float]]):
+    Made for a letter size (cells of 1.5 letter heights) and handed to every
+    :func:`place` at that size, which may ask about a part of the lines only
+    (*only*: their numbers): the pieces of a line are the same whichever
+    lines are filed with it, so the answer is the one an index of that part
+    alone would give.
+    """
+
+    def __init__(self, size: float, segments: Iterable[tuple[float, float, float, float]]):
+        cell = 1.5 * size
+        self.size = size
         self.cell = cell
-        self.cells: dict[tuple[int, int], list[tuple[float, float, float, float]]] = {}
+        self.cells: dict[tuple[int, int], list[tuple[tuple[float, float, float, float], int]]] = {}
         cells, floor, hypot = self.cells, math.floor, math.hypot
-        for seg in segments:
+        for k, seg in enumerate(segments):
             x0, y0, x1, y1 = seg
             dx, dy = x1 - x0, y1 - y0
             n = max(1, int(hypot(dx, dy) / cell) + 1)
@@ -215,11 +224,12 @@ class _Lines:
                 key = (floor((piece[0] + piece[2]) / 2 / cell), floor((piece[1] + piece[3]) / 2 / cell))
                 got = cells.get(key)
                 if got is None:
-                    cells[key] = [piece]
+                    cells[key] = [(piece, k)]
                 else:
-                    got.append(piece)
+                    got.append((piece, k))
 
-    def meets(self, box, reach: float = 0.0) -> bool:
+    def meets(self, box, reach: float = 0.0, only: "Sequence[bool] | None" = None) -> bool:
+        """Does a piece of a line (of those *only* marks true, by number) cross *box* grown by *reach*?"""
         c = self.cell
         if reach:
             box = (box[0] - reach, box[1] - reach, box[2] + reach, box[3] + reach)
@@ -235,22 +245,22 @@ class _Lines:
                 got = cells.get((i, j))
                 if not got:
                     continue
-                for seg in got:
+                for seg, k in got:
                     sx0, sy0, sx1, sy1 = seg
                     if (sx0 < lx and sx1 < lx) or (sx0 > hx and sx1 > hx) or (sy0 < ly and sy1 < ly) \
                             or (sy0 > hy and sy1 > hy):
                         continue
-                    if _hits(box, seg):
+                    if (only is None or only[k]) and _hits(box, seg):
                         return True
         return False
 
 
 def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float, float], str]],
           size: float, dots: Iterable[tuple[float, float]] = (),
-          lines: Sequence[tuple[float, float, float, float]] = (), *, font: str = DEFAULT_FONT,
+          lines: "Sequence[tuple[float, float, float, float]] | LineIndex" = (), *, font: str = DEFAULT_FONT,
           italic: bool = False, taken: Iterable[tuple[float, float, float, float]] = (),
           keep: bool = True, prefer: "dict[str, tuple[float, float, float]] | None" = None,
-          halo: float = HALO_PX / 2, reach: float = 0.0) -> dict[str, tuple]:
+          halo: float = HALO_PX / 2, reach: float = 0.0, only: "Sequence[bool] | None" = None) -> dict[str, tuple]:
     """Baseline positions (pixels) for letters: {id: (x, y, distance in letter heights, thin)}.
 
     A letter set farther than :data:`LEADER_FROM` letter heights from its point gets a
@@ -266,6 +276,8 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     tried before the ring, so that a letter stays where it was when it can.  *halo*: how far
     the halo reaches round the ink at *size* (the player scales a letter with its halo).  *reach*:
     half the width of a result line (a halo reaching over the line's edge erases part of it).
+    *lines* may be a :class:`LineIndex` made at *size* (placings at one size share it), and
+    *only* the numbers of its lines that count (true), as if *lines* were those alone.
     """
     grid = _Grid(2.0 * size)
     for b in taken:
@@ -273,7 +285,14 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     r = 0.3 * size
     for x, y in dots:
         grid.add((x - r, y - r, x + r, y + r))
-    strokes = _Lines(1.5 * size, lines)
+    if isinstance(lines, LineIndex):
+        if lines.size != size:
+            raise ValueError(f"place: the line index is made for letters of {lines.size}, not {size}")
+        strokes = lines
+    elif only is not None:
+        raise ValueError("place: only= picks lines of a LineIndex")
+    else:
+        strokes = LineIndex(size, lines)
     out: dict[str, tuple] = {}
     ordered = sorted(items, key=lambda it: (RANK.get(it[1], 2), it[2], it[0]))
     for mid, role, _step, (px, py), (dx, dy), text in ordered:
@@ -284,7 +303,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
         if prefer and mid in prefer:
             ox, oy, od = prefer[mid]
             box = label_box(px + ox, py + oy, text, size, font, italic, halo)
-            if grid.free(box) and not strokes.meets(box, reach):
+            if grid.free(box) and not strokes.meets(box, reach, only):
                 spot = (px + ox, py + oy, box, od)
         for dist in (() if spot else _DISTANCES):
             for turn in _TURNS:
@@ -296,7 +315,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                 box = label_box(lx, ly, text, size, font, italic, halo)
                 if first is None:
                     first = (lx, ly, box, dist)
-                if grid.free(box) and not strokes.meets(box, reach):
+                if grid.free(box) and not strokes.meets(box, reach, only):
                     spot = (lx, ly, box, dist)
                     break
             if spot:

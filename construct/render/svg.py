@@ -372,7 +372,8 @@ class Drawing:
         self._letter_items = items
         k = self.letter_scale
         size = k * st.label_size
-        spots = place(items, size, dots, lines, font=st.label_font, italic=st.label_italic, halo=HALO_PX / 2 * k, reach=self.line_reach)
+        spots = place(items, size, dots, self._lines_at(1.0, size), font=st.label_font, italic=st.label_italic,
+                      halo=HALO_PX / 2 * k, reach=self.line_reach)
         thin = [it for it in items if spots.get(it[0], (0, 0, 0, False))[3]]
         if thin and st.camera:
             # the letters the whole figure has no room for, placed for the magnified views
@@ -432,7 +433,7 @@ class Drawing:
             # each letter where it stands in the whole figure if there is room for it there
             prefer = {i: ((self._spots[i][0] - p[0] / z) * f, (self._spots[i][1] - p[1] / z) * f, self._spots[i][2])
                       for i, _r, _s, p, _d, _t in its}
-            got = place(its, size * f, _scaled(dots, z, 2), _scaled(lines, z, 4),
+            got = place(its, size * f, _scaled(self._obstacle_arrays()[0], z), self._lines_at(z, size * f),
                         font=st.label_font, italic=st.label_italic, keep=False, prefer=prefer, halo=HALO_PX / 2 * f, reach=self.line_reach)
             for i, _r, _s, (zx, zy), _d, _t in its:
                 spot = got.get(i)
@@ -531,13 +532,13 @@ class Drawing:
             return z, f, boxes
 
         # the points and result lines as arrays, asked once per level and group of tags below
-        dot_a = np.array(dots, dtype=float).reshape(-1, 2)
-        line_a = np.array(lines, dtype=float).reshape(-1, 4)
+        dot_a, line_a = self._obstacle_arrays()
         line_lo = np.minimum(line_a[:, 0:2], line_a[:, 2:4])
         line_hi = np.maximum(line_a[:, 0:2], line_a[:, 2:4])
 
         def near(items, z: float, f: float):
-            """The points and result lines (at zoom *z*) a tag of *items* could meet: within its reach."""
+            """The points and the numbers of the result lines (at zoom *z*) a tag of *items* could meet:
+            within its reach (the lines as a mask over the level's :meth:`_lines_at`)."""
             xs = [it[3][0] for it in items]
             ys = [it[3][1] for it in items]
             r = 8.0 * size * f
@@ -545,8 +546,8 @@ class Drawing:
             dz = dot_a * z
             ds = dz[(x0 <= dz[:, 0]) & (dz[:, 0] <= x1) & (y0 <= dz[:, 1]) & (dz[:, 1] <= y1)]
             lo, hi = line_lo * z, line_hi * z
-            ls = line_a[(lo[:, 0] <= x1) & (hi[:, 0] >= x0) & (lo[:, 1] <= y1) & (hi[:, 1] >= y0)] * z
-            return list(map(tuple, ds.tolist())), list(map(tuple, ls.tolist()))
+            mask = (lo[:, 0] <= x1) & (hi[:, 0] >= x0) & (lo[:, 1] <= y1) & (hi[:, 1] >= y0)
+            return list(map(tuple, ds.tolist())), mask.tolist()
 
         out: dict[str, tuple[float, float, float]] = {}
         for lvl, ms in sorted(by_level.items()):
@@ -557,7 +558,8 @@ class Drawing:
                 items.append((m.id, m.role, m.step, (px * z, py * z), label_offset_direction(m.geom, scale=span),
                               sc.display_name(m.name)))
             # the tags are checked against each other level by level below
-            got = place(items, size * f, *near(items, z, f),
+            ds, only = near(items, z, f)
+            got = place(items, size * f, ds, self._lines_at(z, size * f), only=only,
                         font=st.label_font, italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * f, reach=self.line_reach)
             for i, _r, _s, (zx, zy), _d, _t in items:
                 if i in got:
@@ -575,7 +577,8 @@ class Drawing:
             items = [(m.id, m.role, m.step, (pts[m.id][0] * z, pts[m.id][1] * z), (1.0, 0.0), sc.display_name(m.name))
                      for m in here]
             prefer = {m.id: (out[m.id][0] * f, out[m.id][1] * f, out[m.id][2]) for m in here}
-            got = place(items, size * f, *near(items, z, f),
+            ds, only = near(items, z, f)
+            got = place(items, size * f, ds, self._lines_at(z, size * f), only=only,
                         font=st.label_font, italic=st.label_italic, taken=taken, keep=False, prefer=prefer,
                         halo=HALO_PX / 2 * f, reach=self.line_reach)
             for i, _r, _s, (zx, zy), _d, _t in items:
@@ -584,6 +587,28 @@ class Drawing:
                     hidden[i] = hidden.get(i, "") + f" h{lvl}"
         self._tag_hidden = hidden
         return out
+
+    def _obstacle_arrays(self) -> tuple[Any, Any]:
+        """The points and the result lines' segments the letters keep clear of, as arrays (made once)."""
+        got = self.__dict__.get("_obstacle_a")
+        if got is None:
+            import numpy as np
+
+            dots, lines = self._obstacles
+            got = self.__dict__["_obstacle_a"] = (np.array(dots, dtype=float).reshape(-1, 2),
+                                                  np.array(lines, dtype=float).reshape(-1, 4))
+        return got
+
+    def _lines_at(self, z: float, size: float) -> Any:
+        """The result lines magnified *z* times, indexed for letters of *size*
+        (:class:`construct.render.lettering.LineIndex`): made once for every placing at that zoom."""
+        from .lettering import LineIndex
+
+        cache = self.__dict__.setdefault("_line_index", {})
+        key = (z, size)
+        if key not in cache:
+            cache[key] = LineIndex(size, _scaled(self._obstacle_arrays()[1], z))
+        return cache[key]
 
     @property
     def line_reach(self) -> float:
@@ -1043,12 +1068,10 @@ def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
     return list(g)
 
 
-def _scaled(rows: Sequence[tuple[float, ...]], z: float, width: int) -> list[tuple[float, ...]]:
-    """Every coordinate of *rows* (points or segments, *width* numbers each) times *z*, as tuples
+def _scaled(rows: Any, z: float) -> list[tuple[float, ...]]:
+    """Every coordinate of *rows* (an array of points or segments) times *z*, as tuples
     (the same numbers as multiplying one by one, made at once: a figure has thousands)."""
-    import numpy as np
-
-    return list(map(tuple, (np.array(rows, dtype=float).reshape(-1, width) * z).tolist()))
+    return list(map(tuple, (rows * z).tolist()))
 
 
 def _mark_points(m: Mark) -> list[tuple[float, float]]:

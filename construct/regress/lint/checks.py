@@ -509,15 +509,29 @@ def _on_points(sheet: Sheet, views: _Views, seen) -> list[Finding]:
     names = _point_names(sheet)
     widest = max((d.r for d in sheet.dots), default=0.0)
     found: dict[tuple[int, int], list] = {}
+    cells, dots, floor, hypot = grid.cells, sheet.dots, math.floor, math.hypot
     for lay, letters in seen:
         reach = widest * max(lay.letter - 1.0, 0.0)  # the grid holds the discs at their drawn size
+        letter = lay.letter
         for t, b, runs in letters:
-            for i in sorted(grid.near(_grow(b, reach) if reach else b)):
-                d = sheet.dots[i]
-                if d.ident is not None and d.ident == t.owner:
+            g = _grow(b, reach) if reach else b
+            near: set[int] = set()
+            for ci in range(floor(g[0] / CELL), floor(g[2] / CELL) + 1):  # grid.near(g), written out
+                for cj in range(floor(g[1] / CELL), floor(g[3] / CELL) + 1):
+                    got = cells.get((ci, cj))
+                    if got:
+                        near.update(got)
+            if not near:
+                continue
+            owner = t.owner
+            for i in sorted(near):
+                d = dots[i]
+                if d.ident is not None and d.ident == owner:
                     continue
-                r = d.r * lay.letter
-                if not _disc_in_box(d.x, d.y, r, b):
+                r = d.r * letter
+                x, y = d.x, d.y
+                # _disc_in_box(x, y, r, b), written out
+                if not hypot(x - min(max(x, b[0]), b[2]), y - min(max(y, b[1]), b[3])) < r - TOUCH:
                     continue
                 if not _meet_any((d.x - r, d.y - r, d.x + r, d.y + r), lay.box):
                     continue

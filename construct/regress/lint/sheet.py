@@ -173,10 +173,19 @@ class Sheet:
     moves: dict[tuple[int, str], tuple[float, float]] = field(default_factory=dict)
     #: Per step, the ring the player draws round a small current mark: (cx, cy, r) as its data gives it.
     rings: dict[int, tuple[float, float, float]] = field(default_factory=dict)
+    #: The looks asked for, by (chain, state, level): every view asks again for the same few.
+    _looks: dict[tuple, Look] = field(default_factory=dict, repr=False, compare=False)
 
     def look(self, chain: tuple[Node, ...], state: str | None = None, level: int = 0) -> Look:
         """The look of an element (its chain) with its step's groups in *state* (None: as in the file), the
         drawing shown at zoom level *level* (the player's class ``zlN`` on the root)."""
+        key = (chain, state, level)
+        got = self._looks.get(key)
+        if got is None:
+            got = self._looks[key] = self._look(chain, state, level)
+        return got
+
+    def _look(self, chain: tuple[Node, ...], state: str | None, level: int) -> Look:
         if level:
             root = chain[0]
             chain = ((root[0], root[1], root[2] | {f"zl{level}"}, root[3]),) + chain[1:]

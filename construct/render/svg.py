@@ -420,7 +420,6 @@ class Drawing:
 
         st = self.style
         size = st.label_size
-        dots, lines = self._obstacles
         items = self._letter_items
         classes: dict[str, str] = {}
         rules: list[str] = []
@@ -476,7 +475,6 @@ class Drawing:
             from .camera import THIN_FROM, ZOOM_LEVELS, level, zoom_of
         else:
             ZOOM_LEVELS, THIN_FROM = (1.0,), 0
-        dots, lines = self._obstacles
         span = sc.bbox[2] - sc.bbox[0]
         # a tag is seen while its step is current and where its step is an input: it is placed at the
         # least magnified of those views (where the letters are largest beside the points)

@@ -33,7 +33,7 @@ import bisect
 import math
 from collections import defaultdict
 from dataclasses import dataclass
-from typing import Any, Iterable, Iterator
+from typing import Iterable, Iterator
 
 from .sheet import Box, Sheet
 
@@ -158,11 +158,6 @@ def _meet(a: Box, b: Box) -> Box | None:
 
 def _grow(b: Box, d: float) -> Box:
     return (b[0] - d, b[1] - d, b[2] + d, b[3] + d)
-
-
-def _disc_in_box(x: float, y: float, r: float, b: Box) -> bool:
-    nx, ny = min(max(x, b[0]), b[2]), min(max(y, b[1]), b[3])
-    return math.hypot(x - nx, y - ny) < r - TOUCH
 
 
 def _segment_in_box(p: tuple[float, float, float, float], b: Box) -> bool:
@@ -530,7 +525,7 @@ def _on_points(sheet: Sheet, views: _Views, seen) -> list[Finding]:
                     continue
                 r = d.r * letter
                 x, y = d.x, d.y
-                # _disc_in_box(x, y, r, b), written out
+                # does the disc reach into the box (from the box's nearest point to its centre)?
                 if not hypot(x - min(max(x, b[0]), b[2]), y - min(max(y, b[1]), b[3])) < r - TOUCH:
                     continue
                 if not _meet_any((d.x - r, d.y - r, d.x + r, d.y + r), lay.box):

@@ -543,17 +543,51 @@ def _on_points(sheet: Sheet, views: _Views, seen) -> list[Finding]:
     return out
 
 
+def _piece_cells(boxes: list[Box]) -> dict[tuple[int, int], list[int]]:
+    """The cells of :data:`CELL` (as :meth:`_Grid.keys` gives them) each box covers: {cell: box numbers}.
+
+    Made with numpy for the boxes that cover at most two cells each way (every piece of a result line,
+    at most :data:`sheet.PIECE` long), one by one for the others; a cell lists its boxes in order.
+    """
+    import numpy as np
+
+    cells: dict[tuple[int, int], list[int]] = defaultdict(list)
+    if not boxes:
+        return cells
+    b = np.array(boxes, dtype=float).reshape(-1, 4)
+    i0, j0 = np.floor(b[:, 0] / CELL).astype(np.int64), np.floor(b[:, 1] / CELL).astype(np.int64)
+    i1, j1 = np.floor(b[:, 2] / CELL).astype(np.int64), np.floor(b[:, 3] / CELL).astype(np.int64)
+    small = (i1 - i0 <= 1) & (j1 - j0 <= 1)
+    ks, ii, jj = [], [], []
+    for di in (0, 1):
+        for dj in (0, 1):
+            m = small & (i0 + di <= i1) & (j0 + dj <= j1)
+            ks.append(np.flatnonzero(m))
+            ii.append(i0[m] + di)
+            jj.append(j0[m] + dj)
+    k, i, j = np.concatenate(ks), np.concatenate(ii), np.concatenate(jj)
+    order = np.lexsort((k, j, i))
+    k, i, j = k[order], i[order], j[order]
+    if len(k):
+        cut = (np.flatnonzero((np.diff(i) != 0) | (np.diff(j) != 0)) + 1).tolist()
+        starts, ends = [0] + cut, cut + [len(k)]
+        listed = k.tolist()
+        for s0, s1, ci, cj in zip(starts, ends, i[starts].tolist(), j[starts].tolist()):
+            cells[(ci, cj)] = listed[s0:s1]
+    for n in np.flatnonzero(~small).tolist():  # a long box, cell by cell
+        for key in _Grid.keys(boxes[n]):
+            cells[key].append(n)
+    return cells
+
+
 def _struck(sheet: Sheet, views: _Views, seen) -> list[Finding]:
     # the grid of :class:`_Grid` (its cells and keys), written out here: every letter of every view asks it
-    cells: dict[tuple[int, int], list[int]] = defaultdict(list)
     pieces: list[tuple[int, tuple[float, float, float, float], Box]] = []
     widest = max((s.half for s in sheet.strokes), default=0.0)
     for si, s in enumerate(sheet.strokes):
         for p in s.pieces:
-            pb = (min(p[0], p[2]), min(p[1], p[3]), max(p[0], p[2]), max(p[1], p[3]))
-            for key in _Grid.keys(pb):
-                cells[key].append(len(pieces))
-            pieces.append((si, p, pb))
+            pieces.append((si, p, (min(p[0], p[2]), min(p[1], p[3]), max(p[0], p[2]), max(p[1], p[3]))))
+    cells = _piece_cells([pb for _, _, pb in pieces])
     halves = [s.half for s in sheet.strokes]
     floor = math.floor
     found: dict[tuple[int, int], list] = {}

@@ -3,7 +3,9 @@
 What it builds is linted (:mod:`construct.regress.lint`) before it replaces
 the old gallery: the counts of findings by kind go to stderr.  With
 ``--legible`` a gallery with findings is not written (the previous one stays)
-and the command exits 1.
+and the command exits 1.  Each figure is linted by the process that built it,
+right after it (:func:`lint_figure`), so that the lint shares the cores with
+the building; the report is the one ``construct lint`` gives for the folder.
 """
 
 from __future__ import annotations

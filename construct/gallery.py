@@ -256,6 +256,7 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
                     order = sorted(range(len(jobs)), key=lambda i: not _first_of_its_construction(*jobs[i][1:3]))
                     with _signals_held():  # the workers are forked here
                         futures = {pool.submit(_build_and_check, root, *jobs[i]): i for i in order}
+                    sources = _errata_sources()  # read while the workers build (the index shows them)
                     for fut in concurrent.futures.as_completed(futures):
                         bar.step(jobs[futures[fut]][1])
                     by_job = {i: fut.result() for fut, i in futures.items()}
@@ -265,6 +266,7 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
                     pool.shutdown(wait=True, cancel_futures=True)
                     raise
         else:
+            sources = _errata_sources()
             results = []
             for job in jobs:
                 bar.step(job[1])
@@ -274,7 +276,6 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
             index.append(row)
             checked.append(found)
         write_text(root / "README.md", _readme(index))
-        sources = _errata_sources()  # read once: the front page and the errata pages show them
         write_text(root / "index.html", _index_html(index, sources))
         _site_pages(root, index, sources)
         bar.close()

@@ -69,6 +69,7 @@ MAX_BYTES = 320 * 2**20
 _SKIPPED_IDS = {"inset"}
 
 
+_PROPERTY_SET = frozenset(PROPERTIES)
 #: Marks a step's group in a chain (its state classes are what a view changes).
 _STEP_GROUP = ("#step-group", "")
 _STATE_CLASSES = frozenset(STATES)
@@ -525,10 +526,12 @@ class _Reader:
     def _node(self, e: ET.Element, tag: str, step: int | None) -> Node:
         c = self.sheet.cascade
         own: list[tuple[str, str]] = []
-        for name in PROPERTIES:
-            if e.get(name) is not None:
-                own.append(("@" + name, e.get(name)))
-        style = e.get("style")
+        attrib = e.attrib
+        if not _PROPERTY_SET.isdisjoint(attrib):  # most elements carry none: their classes say it
+            for name in PROPERTIES:
+                if attrib.get(name) is not None:
+                    own.append(("@" + name, attrib[name]))
+        style = attrib.get("style")
         if style:
             own.extend(declarations(style).items())
         if step is not None and e.get("data-step") is not None:

@@ -226,23 +226,32 @@ def _first_of_its_construction(name: str, params: Mapping[str, Any]) -> bool:
 
 
 def build_gallery(out: str | Path, *, progress: bool = False, workers: int | None = None,
-                  before_swap: Callable[[Path], None] | None = None) -> list[dict]:
+                  before_swap: Callable[..., None] | None = None,
+                  check: Callable[[Path], Any] | None = None) -> list[dict]:
     """Build the whole gallery into *out* (swapped in whole); return one dict per (entry, style).
 
     *before_swap* is called with the finished staging folder just before it
     replaces *out* (``construct gallery`` lints it there); what it raises
-    leaves the previous gallery as it was.
+    leaves the previous gallery as it was.  *check*, a function of a figure's
+    folder (a module's own function: the workers are handed it), is called
+    in the process that built the figure, right after it (``construct
+    gallery`` lints each figure there, so that the checking shares the cores
+    with the building); then *before_swap* is called with the staging folder
+    and the list of what *check* returned, in plan order.
 
     The figures are built by up to *workers* processes (default: one per CPU,
     at most 4); each writes its own folder, and the index is written from the
     results in plan order, so the bytes do not depend on which process
-    finished first.
+    finished first.  The first figure of each construction (the whole
+    teaching figure and its player, the longest to build) is handed out
+    first, so that no process is left with a long one at the end.
     """
     plan = gallery_plan()
     bar = _Progress(len(plan), progress)
     entries: list[dict] = []
     index: list[dict] = []
-    jobs = [(number, name, dict(params)) for number, (name, params) in enumerate(plan, start=1)]
+    checked: list[Any] = []
+    jobs = [(number, name, dict(params), check) for number, (name, params) in enumerate(plan, start=1)]
     if workers is None:
         workers = min(4, os.cpu_count() or 1)
     with replaced_folder(out, manifest="gallery", described=GALLERY_DESCRIBED, what="gallery folder") as root:
@@ -257,30 +266,43 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
             with concurrent.futures.ProcessPoolExecutor(min(workers, len(jobs)), mp_context=context,
                                                         initializer=_worker_init, initargs=(os.getpid(),)) as pool:
                 try:
+                    # the long ones first (each result goes to its own place in plan order)
+                    order = sorted(range(len(jobs)), key=lambda i: not _first_of_its_construction(*jobs[i][1:3]))
                     with _signals_held():  # the workers are forked here
-                        futures = [pool.submit(_build_entry, root, *job) for job in jobs]
+                        futures = {pool.submit(_build_and_check, root, *jobs[i]): i for i in order}
+                    sources = _errata_sources()  # read while the workers build (the index shows them)
                     for fut in concurrent.futures.as_completed(futures):
-                        bar.step(jobs[futures.index(fut)][1])
-                    results = [fut.result() for fut in futures]
+                        bar.step(jobs[futures[fut]][1])
+                    by_job = {i: fut.result() for fut, i in futures.items()}
+                    results = [by_job[i] for i in range(len(jobs))]
                 except BaseException:
                     # interrupted or failed: the figures not yet begun are not built for nothing
                     pool.shutdown(wait=True, cancel_futures=True)
                     raise
         else:
+            sources = _errata_sources()
             results = []
             for job in jobs:
                 bar.step(job[1])
-                results.append(_build_entry(root, *job))
-        for figure_entries, row in results:
+                results.append(_build_and_check(root, *job))
+        for figure_entries, row, found in results:
             entries += figure_entries
             index.append(row)
+            checked.append(found)
         write_text(root / "README.md", _readme(index))
-        write_text(root / "index.html", _index_html(index))
-        _site_pages(root, index)
+        write_text(root / "index.html", _index_html(index, sources))
+        _site_pages(root, index, sources)
         bar.close()
         if before_swap is not None:
-            before_swap(root)
+            before_swap(*((root, checked) if check is not None else (root,)))
     return entries
+
+
+def _build_and_check(root: Path, number: int, name: str, params: dict[str, Any],
+                     check: Callable[[Path], Any] | None) -> tuple[list[dict], dict, Any]:
+    """:func:`_build_entry`, then *check* on the figure's folder (None without one)."""
+    figure_entries, row = _build_entry(root, number, name, params)
+    return figure_entries, row, (check(root / row["slug"]) if check is not None else None)
 
 
 _HELD = ("SIGINT", "SIGTERM")
@@ -309,9 +331,16 @@ def _signals_held() -> Iterator[None]:
 def _worker_init(parent: int) -> None:
     """In a worker process: SIGTERM ends it (a forked worker would inherit the CLI's handler, which
     unwinds the command in the main process; the main process cleans up after its workers), the
-    signals held while it was forked are let in again, and it ends when its parent has gone."""
+    signals held while it was forked are let in again, it ends when its parent has gone, and its
+    garbage collector runs less often."""
+    import gc
     import threading
 
+    # A worker builds figures of tens of thousands of objects that live until the figure is written: the
+    # collector's young passes would walk them again and again (a tenth of the build), and what the worker
+    # was forked with (construct, imported) is never garbage.  This process is the gallery's own.
+    gc.freeze()
+    gc.set_threshold(50_000, 20, 20)
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
     if hasattr(signal, "pthread_sigmask"):
         signal.pthread_sigmask(signal.SIG_UNBLOCK, [getattr(signal, s) for s in _HELD])
@@ -349,11 +378,11 @@ def _readme(index: list[dict]) -> str:
     return "\n".join(lines)
 
 
-def _index_html(index: list[dict]) -> str:
+def _index_html(index: list[dict], sources: list[dict] | None = None) -> str:
     """The front page (:func:`construct.render.site.index_page`): a card per figure, the errata of each text."""
     from .render.site import index_page
 
-    return index_page(index, _errata_sources(), "Every construction at the books' parameters: the plate "
+    return index_page(index, _errata_sources() if sources is None else sources, "Every construction at the books' parameters: the plate "
                       "(historical style) and the construction step by step (teaching style); click a "
                       "picture for the plate or the step player. Built by construct gallery; works offline.")
 
@@ -370,7 +399,7 @@ def _errata_sources() -> list[dict]:
             for src, rows in sorted(by_source.items())]
 
 
-def _site_pages(root: Path, index: list[dict]) -> None:
+def _site_pages(root: Path, index: list[dict], sources: list[dict] | None = None) -> None:
     """The gallery's other pages: each figure's checks (from its checks.json), each source text's errata."""
     from .render.site import checks_page, errata_page, errata_slug
 
@@ -379,5 +408,5 @@ def _site_pages(root: Path, index: list[dict]) -> None:
         write_text(root / e["slug"] / "checks.html", checks_page(
             f"Fig. {e['number']}. {e['title'].de} ({e['params_text']}): checks", report["checks"],
             back=f"../index.html#{e['slug']}"))
-    for src in _errata_sources():
+    for src in _errata_sources() if sources is None else sources:
         write_text(root / errata_slug(src["source"]), errata_page(src["source"], src["rows"], back="index.html"))

@@ -124,6 +124,8 @@ def subscripts(text: str) -> str:
     >>> subscripts("F·p_ü, x_1, q_max")
     'F·pü, x₁, qmax'
     """
+    if "_" not in text:
+        return text  # nothing to lower (most captions): no pattern run
     return re.sub(r"(?<=[^\W_])_([^\W_]+)", lambda m: m.group(1).translate(_SUB), text)
 
 
@@ -142,16 +144,19 @@ def equation(text: str) -> str:
     return re.sub(r"Gl\. \(?(\d+)(?:_(\d+))?\)?", sub, text)
 
 
-#: (pattern, replacement) in the order :func:`book_symbols` applies them, compiled once.
-_SYMBOLS = tuple((re.compile(p), r) for p, r in (
-    (r"(?<![A-Za-z])lam(?![A-Za-z])", "λ"),
-    (r"\b(omega|alpha|beta|kappa|delta|lambda|pi)\b", lambda m: _GREEK[m.group(1)]),
-    (r"(?<![A-Za-z])w(?=\d|\b)", "ω"),
-    (r"(?<=[\w)]) sqrt\b\s*(?=[(\dA-Za-z])", "√"),   # r sqrt 2 -> r√2
-    (r"\bsqrt\b\s*(?=[(\dA-Za-z])", "√"),
-    (r"(?<=[\s(=])-(?=[\w(])", "−"),   # a minus, not a hyphen
-    (r"\^(\d+)", lambda m: m.group(1).translate(_SUPER)),
-    (r"(\d) degrees\b", r"\1°"),
+#: (what a text must hold for the pattern to match, pattern, replacement) in the order
+#: :func:`book_symbols` applies them, compiled once; a text without the first is not searched
+#: (the captions of a long figure are read by the ten thousand).
+_SYMBOLS = tuple((need, re.compile(p), r) for need, p, r in (
+    (("lam",), r"(?<![A-Za-z])lam(?![A-Za-z])", "λ"),
+    (("omega", "alpha", "beta", "kappa", "delta", "lambda", "pi"),
+     r"\b(omega|alpha|beta|kappa|delta|lambda|pi)\b", lambda m: _GREEK[m.group(1)]),
+    (("w",), r"(?<![A-Za-z])w(?=\d|\b)", "ω"),
+    (("sqrt",), r"(?<=[\w)]) sqrt\b\s*(?=[(\dA-Za-z])", "√"),   # r sqrt 2 -> r√2
+    (("sqrt",), r"\bsqrt\b\s*(?=[(\dA-Za-z])", "√"),
+    (("-",), r"(?<=[\s(=])-(?=[\w(])", "−"),   # a minus, not a hyphen
+    (("^",), r"\^(\d+)", lambda m: m.group(1).translate(_SUPER)),
+    ((" degrees",), r"(\d) degrees\b", r"\1°"),
 ))
 
 
@@ -163,8 +168,9 @@ def book_symbols(text: str) -> str:
     >>> book_symbols("(4/pi) r alpha, omega^2 R, crank at 90 degrees")
     '(4/π) r α, ω² R, crank at 90°'
     """
-    for pattern, rep in _SYMBOLS:
-        text = pattern.sub(rep, text)
+    for need, pattern, rep in _SYMBOLS:
+        if any(n in text for n in need):
+            text = pattern.sub(rep, text)
     return equation(text)
 
 

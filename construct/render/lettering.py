@@ -35,7 +35,7 @@ import math
 import os
 from typing import Any, Iterable, Sequence
 
-__all__ = ["place", "label_box", "text_box", "text_width", "RANK", "LEADER_FROM", "DEFAULT_FONT"]
+__all__ = ["place", "LineIndex", "label_box", "text_box", "text_width", "RANK", "LEADER_FROM", "DEFAULT_FONT"]
 
 #: Rank of a role: lower is placed first.
 RANK = {"result": 0, "given": 1}
@@ -148,22 +148,29 @@ class _Grid:
         self.cell = cell
         self.cells: dict[tuple[int, int], list[tuple[float, float, float, float]]] = {}
 
-    def _keys(self, b) -> Iterable[tuple[int, int]]:
-        c = self.cell
-        for i in range(math.floor(b[0] / c), math.floor(b[2] / c) + 1):
-            for j in range(math.floor(b[1] / c), math.floor(b[3] / c) + 1):
-                yield i, j
-
     def free(self, b) -> bool:
-        for key in self._keys(b):
-            for o in self.cells.get(key, ()):
-                if b[0] < o[2] and o[0] < b[2] and b[1] < o[3] and o[1] < b[3]:
-                    return False
+        c, cells = self.cell, self.cells
+        x0, y0, x1, y1 = b
+        js = range(math.floor(y0 / c), math.floor(y1 / c) + 1)
+        for i in range(math.floor(x0 / c), math.floor(x1 / c) + 1):
+            for j in js:
+                got = cells.get((i, j))
+                if got:
+                    for o in got:
+                        if x0 < o[2] and o[0] < x1 and y0 < o[3] and o[1] < y1:
+                            return False
         return True
 
     def add(self, b) -> None:
-        for key in self._keys(b):
-            self.cells.setdefault(key, []).append(b)
+        c, cells = self.cell, self.cells
+        js = range(math.floor(b[1] / c), math.floor(b[3] / c) + 1)
+        for i in range(math.floor(b[0] / c), math.floor(b[2] / c) + 1):
+            for j in js:
+                got = cells.get((i, j))
+                if got is None:
+                    cells[(i, j)] = [b]
+                else:
+                    got.append(b)
 
 
 def _hits(box, seg) -> bool:
@@ -186,41 +193,74 @@ def _hits(box, seg) -> bool:
     return True
 
 
-class _Lines:
-    """Result lines as short pieces in a grid, asked whether a box meets one."""
+class LineIndex:
+    """Result lines as short pieces in a grid, asked whether a box meets one.
 
-    def __init__(self, cell: float, segments: Iterable[tuple[float, float, float, float]]):
+    Made for a letter size (cells of 1.5 letter heights) and handed to every
+    :func:`place` at that size, which may ask about a part of the lines only
+    (*only*: their numbers): the pieces of a line are the same whichever
+    lines are filed with it, so the answer is the one an index of that part
+    alone would give.
+    """
+
+    def __init__(self, size: float, segments: Iterable[tuple[float, float, float, float]]):
+        cell = 1.5 * size
+        self.size = size
         self.cell = cell
-        self.cells: dict[tuple[int, int], list[tuple[float, float, float, float]]] = {}
-        for seg in segments:
+        self.cells: dict[tuple[int, int], list[tuple[tuple[float, float, float, float], int]]] = {}
+        cells, floor, hypot = self.cells, math.floor, math.hypot
+        for k, seg in enumerate(segments):
             x0, y0, x1, y1 = seg
-            n = max(1, int(math.hypot(x1 - x0, y1 - y0) / cell) + 1)
+            dx, dy = x1 - x0, y1 - y0
+            n = max(1, int(hypot(dx, dy) / cell) + 1)
             if n > 4000:
                 continue  # far beyond the sheet
             for i in range(n):
-                a, b = i / n, (i + 1) / n
-                piece = (x0 + a * (x1 - x0), y0 + a * (y1 - y0), x0 + b * (x1 - x0), y0 + b * (y1 - y0))
-                key = (math.floor((piece[0] + piece[2]) / 2 / cell), math.floor((piece[1] + piece[3]) / 2 / cell))
-                self.cells.setdefault(key, []).append(piece)
+                if n == 1:  # most result lines are short pieces already: the numbers of the loop below
+                    piece = (x0 + 0.0 * dx, y0 + 0.0 * dy, x0 + 1.0 * dx, y0 + 1.0 * dy)
+                else:
+                    a, b = i / n, (i + 1) / n
+                    piece = (x0 + a * dx, y0 + a * dy, x0 + b * dx, y0 + b * dy)
+                key = (floor((piece[0] + piece[2]) / 2 / cell), floor((piece[1] + piece[3]) / 2 / cell))
+                got = cells.get(key)
+                if got is None:
+                    cells[key] = [(piece, k)]
+                else:
+                    got.append((piece, k))
 
-    def meets(self, box, reach: float = 0.0) -> bool:
+    def meets(self, box, reach: float = 0.0, only: "Sequence[bool] | None" = None) -> bool:
+        """Does a piece of a line (of those *only* marks true, by number) cross *box* grown by *reach*?"""
         c = self.cell
         if reach:
             box = (box[0] - reach, box[1] - reach, box[2] + reach, box[3] + reach)
-        for i in range(math.floor(box[0] / c) - 1, math.floor(box[2] / c) + 2):
-            for j in range(math.floor(box[1] / c) - 1, math.floor(box[3] / c) + 2):
-                for seg in self.cells.get((i, j), ()):
-                    if _hits(box, seg):
+        bx0, by0, bx1, by1 = box
+        # a piece whose ends lie both beyond one side of the box (by more than rounding) misses it;
+        # the others are clipped (the margin leaves every close call to the clipping)
+        e = 1e-9 * c
+        lx, ly, hx, hy = bx0 - e, by0 - e, bx1 + e, by1 + e
+        cells = self.cells
+        js = range(math.floor(by0 / c) - 1, math.floor(by1 / c) + 2)
+        for i in range(math.floor(bx0 / c) - 1, math.floor(bx1 / c) + 2):
+            for j in js:
+                got = cells.get((i, j))
+                if not got:
+                    continue
+                for seg, k in got:
+                    sx0, sy0, sx1, sy1 = seg
+                    if (sx0 < lx and sx1 < lx) or (sx0 > hx and sx1 > hx) or (sy0 < ly and sy1 < ly) \
+                            or (sy0 > hy and sy1 > hy):
+                        continue
+                    if (only is None or only[k]) and _hits(box, seg):
                         return True
         return False
 
 
 def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float, float], str]],
           size: float, dots: Iterable[tuple[float, float]] = (),
-          lines: Sequence[tuple[float, float, float, float]] = (), *, font: str = DEFAULT_FONT,
+          lines: "Sequence[tuple[float, float, float, float]] | LineIndex" = (), *, font: str = DEFAULT_FONT,
           italic: bool = False, taken: Iterable[tuple[float, float, float, float]] = (),
           keep: bool = True, prefer: "dict[str, tuple[float, float, float]] | None" = None,
-          halo: float = HALO_PX / 2, reach: float = 0.0) -> dict[str, tuple]:
+          halo: float = HALO_PX / 2, reach: float = 0.0, only: "Sequence[bool] | None" = None) -> dict[str, tuple]:
     """Baseline positions (pixels) for letters: {id: (x, y, distance in letter heights, thin)}.
 
     A letter set farther than :data:`LEADER_FROM` letter heights from its point gets a
@@ -236,6 +276,8 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     tried before the ring, so that a letter stays where it was when it can.  *halo*: how far
     the halo reaches round the ink at *size* (the player scales a letter with its halo).  *reach*:
     half the width of a result line (a halo reaching over the line's edge erases part of it).
+    *lines* may be a :class:`LineIndex` made at *size* (placings at one size share it), and
+    *only* the numbers of its lines that count (true), as if *lines* were those alone.
     """
     grid = _Grid(2.0 * size)
     for b in taken:
@@ -243,7 +285,14 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     r = 0.3 * size
     for x, y in dots:
         grid.add((x - r, y - r, x + r, y + r))
-    strokes = _Lines(1.5 * size, lines)
+    if isinstance(lines, LineIndex):
+        if lines.size != size:
+            raise ValueError(f"place: the line index is made for letters of {lines.size}, not {size}")
+        strokes = lines
+    elif only is not None:
+        raise ValueError("place: only= picks lines of a LineIndex")
+    else:
+        strokes = LineIndex(size, lines)
     out: dict[str, tuple] = {}
     ordered = sorted(items, key=lambda it: (RANK.get(it[1], 2), it[2], it[0]))
     for mid, role, _step, (px, py), (dx, dy), text in ordered:
@@ -254,7 +303,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
         if prefer and mid in prefer:
             ox, oy, od = prefer[mid]
             box = label_box(px + ox, py + oy, text, size, font, italic, halo)
-            if grid.free(box) and not strokes.meets(box, reach):
+            if grid.free(box) and not strokes.meets(box, reach, only):
                 spot = (px + ox, py + oy, box, od)
         for dist in (() if spot else _DISTANCES):
             for turn in _TURNS:
@@ -266,7 +315,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                 box = label_box(lx, ly, text, size, font, italic, halo)
                 if first is None:
                     first = (lx, ly, box, dist)
-                if grid.free(box) and not strokes.meets(box, reach):
+                if grid.free(box) and not strokes.meets(box, reach, only):
                     spot = (lx, ly, box, dist)
                     break
             if spot:

@@ -251,9 +251,10 @@ def write_outputs(stage: Path, construction: Construction | None, figure: Figure
     from .player import player_html
     from .storyboard import storyboard_svg
 
-    scene = scene_for(construction, figure)
-    ks = frame_steps(scene, frames)
-    # The plate style's final figure is the plate: the construction's drawing only serves frames and views.
+    # The plate style's final figure is the plate: the construction's drawing only serves frames and views
+    # (a plate alone does not lay the construction out at all).
+    scene = scene_for(construction, figure) if (frames != "none" or outputs or not st.plate) else None
+    ks = frame_steps(scene, frames) if scene is not None else []
     drawing = Drawing(scene, st) if (ks or outputs or not st.plate) else None
     if st.plate:
         final = render_svg(scene_for(construction, figure, plate=True), style=st,
@@ -263,7 +264,8 @@ def write_outputs(stage: Path, construction: Construction | None, figure: Figure
     from .notation import with_provenance
 
     write_text(stage / "final.svg", with_provenance(final, construction, figure))
-    width = max(3, len(str(len(scene.steps))))
+    n = len(figure.protocol.steps)  # the scene's steps
+    width = max(3, len(str(n)))
     steps_dir = stage / "steps"
     if ks:
         steps_dir.mkdir()
@@ -284,7 +286,7 @@ def write_outputs(stage: Path, construction: Construction | None, figure: Figure
         write_text(stage / "player.html", page)
     if "storyboard" in outputs:
         write_text(stage / "storyboard.svg", storyboard_svg(drawing))  # type: ignore[arg-type]
-    return {"steps": len(scene.steps), "frames": len(ks)}
+    return {"steps": n, "frames": len(ks)}
 
 
 #: What a refusal says a replay folder would have been.

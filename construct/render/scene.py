@@ -875,13 +875,21 @@ def plate_names(protocol: Protocol, objects: Replay) -> set[str]:
     pts = [(n, o) for n, o in objects.items() if isinstance(o, Point) and n not in shown
            and "." not in n and maker[n].role != "auxiliary"]
     if pts:
+        import numpy as np
+
         xs = [o[0] for _, o in objects.items() if isinstance(o, Point)]
         tol = 1e-9 * max(max(xs) - min(xs), 1.0)
+        px, py = np.array([o[0] for _, o in pts], dtype=float), np.array([o[1] for _, o in pts], dtype=float)
         for name in sorted(curves):
             obj = objects[name]
             if not isinstance(obj, Circle):
                 continue
-            for n, o in pts:
+            # every circle against every point at once (a 1440-part crank has thousands of each); numpy's
+            # hypot may differ from math's in the last bit, so it only picks the candidates, _on decides
+            (cx, cy), r = obj
+            near = np.abs(np.hypot(px - cx, py - cy) - r) <= 2.0 * tol * max(1.0, r)
+            for i in np.flatnonzero(near).tolist():
+                n, o = pts[i]
                 if n not in shown and _on(obj, o, tol):
                     shown.add(n)
     return shown

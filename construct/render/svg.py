@@ -378,7 +378,8 @@ class Drawing:
         self._letter_items = items
         k = self.letter_scale
         size = k * st.label_size
-        spots = place(items, size, dots, lines, font=st.label_font, italic=st.label_italic, halo=HALO_PX / 2 * k, reach=self.line_reach)
+        spots = place(items, size, dots, self._lines_at(1.0, size), font=st.label_font, italic=st.label_italic,
+                      halo=HALO_PX / 2 * k, reach=self.line_reach)
         thin = [it for it in items if spots.get(it[0], (0, 0, 0, False))[3]]
         if thin and st.camera:
             # the letters the whole figure has no room for, placed for the magnified views
@@ -425,7 +426,6 @@ class Drawing:
 
         st = self.style
         size = st.label_size
-        dots, lines = self._obstacles
         items = self._letter_items
         classes: dict[str, str] = {}
         rules: list[str] = []
@@ -438,7 +438,7 @@ class Drawing:
             # each letter where it stands in the whole figure if there is room for it there
             prefer = {i: ((self._spots[i][0] - p[0] / z) * f, (self._spots[i][1] - p[1] / z) * f, self._spots[i][2])
                       for i, _r, _s, p, _d, _t in its}
-            got = place(its, size * f, [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
+            got = place(its, size * f, _scaled(self._obstacle_arrays()[0], z), self._lines_at(z, size * f),
                         font=st.label_font, italic=st.label_italic, keep=False, prefer=prefer, halo=HALO_PX / 2 * f, reach=self.line_reach)
             for i, _r, _s, (zx, zy), _d, _t in its:
                 spot = got.get(i)
@@ -469,6 +469,8 @@ class Drawing:
         stand farther apart than in the whole figure).  A tag with no free spot there is left out,
         never stacked on another.
         """
+        import numpy as np
+
         from .lettering import label_box, place
 
         sc, st = self.scene, self.style
@@ -479,7 +481,6 @@ class Drawing:
             from .camera import THIN_FROM, ZOOM_LEVELS, level, zoom_of
         else:
             ZOOM_LEVELS, THIN_FROM = (1.0,), 0
-        dots, lines = self._obstacles
         span = sc.bbox[2] - sc.bbox[0]
         # a tag is seen while its step is current and where its step is an input: it is placed at the
         # least magnified of those views (where the letters are largest beside the points)
@@ -534,17 +535,23 @@ class Drawing:
                                        st.label_italic, HALO_PX / 2 * f))
             return z, f, boxes
 
+        # the points and result lines as arrays, asked once per level and group of tags below
+        dot_a, line_a = self._obstacle_arrays()
+        line_lo = np.minimum(line_a[:, 0:2], line_a[:, 2:4])
+        line_hi = np.maximum(line_a[:, 0:2], line_a[:, 2:4])
+
         def near(items, z: float, f: float):
-            """The points and result lines (at zoom *z*) a tag of *items* could meet: within its reach."""
+            """The points and the numbers of the result lines (at zoom *z*) a tag of *items* could meet:
+            within its reach (the lines as a mask over the level's :meth:`_lines_at`)."""
             xs = [it[3][0] for it in items]
             ys = [it[3][1] for it in items]
             r = 8.0 * size * f
             x0, y0, x1, y1 = min(xs) - r, min(ys) - r, max(xs) + r, max(ys) + r
-            ds = [(x * z, y * z) for x, y in dots if x0 <= x * z <= x1 and y0 <= y * z <= y1]
-            ls = [tuple(c * z for c in seg) for seg in lines
-                  if min(seg[0], seg[2]) * z <= x1 and max(seg[0], seg[2]) * z >= x0
-                  and min(seg[1], seg[3]) * z <= y1 and max(seg[1], seg[3]) * z >= y0]
-            return ds, ls
+            dz = dot_a * z
+            ds = dz[(x0 <= dz[:, 0]) & (dz[:, 0] <= x1) & (y0 <= dz[:, 1]) & (dz[:, 1] <= y1)]
+            lo, hi = line_lo * z, line_hi * z
+            mask = (lo[:, 0] <= x1) & (hi[:, 0] >= x0) & (lo[:, 1] <= y1) & (hi[:, 1] >= y0)
+            return list(map(tuple, ds.tolist())), mask.tolist()
 
         out: dict[str, tuple[float, float, float]] = {}
         for lvl, ms in sorted(by_level.items()):
@@ -555,7 +562,8 @@ class Drawing:
                 items.append((m.id, m.role, m.step, (px * z, py * z), label_offset_direction(m.geom, scale=span),
                               sc.display_name(m.name)))
             # the tags are checked against each other level by level below
-            got = place(items, size * f, *near(items, z, f),
+            ds, only = near(items, z, f)
+            got = place(items, size * f, ds, self._lines_at(z, size * f), only=only,
                         font=st.label_font, italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * f, reach=self.line_reach)
             for i, _r, _s, (zx, zy), _d, _t in items:
                 if i in got:
@@ -573,7 +581,8 @@ class Drawing:
             items = [(m.id, m.role, m.step, (pts[m.id][0] * z, pts[m.id][1] * z), (1.0, 0.0), sc.display_name(m.name))
                      for m in here]
             prefer = {m.id: (out[m.id][0] * f, out[m.id][1] * f, out[m.id][2]) for m in here}
-            got = place(items, size * f, *near(items, z, f),
+            ds, only = near(items, z, f)
+            got = place(items, size * f, ds, self._lines_at(z, size * f), only=only,
                         font=st.label_font, italic=st.label_italic, taken=taken, keep=False, prefer=prefer,
                         halo=HALO_PX / 2 * f, reach=self.line_reach)
             for i, _r, _s, (zx, zy), _d, _t in items:
@@ -582,6 +591,28 @@ class Drawing:
                     hidden[i] = hidden.get(i, "") + f" h{lvl}"
         self._tag_hidden = hidden
         return out
+
+    def _obstacle_arrays(self) -> tuple[Any, Any]:
+        """The points and the result lines' segments the letters keep clear of, as arrays (made once)."""
+        got = self.__dict__.get("_obstacle_a")
+        if got is None:
+            import numpy as np
+
+            dots, lines = self._obstacles
+            got = self.__dict__["_obstacle_a"] = (np.array(dots, dtype=float).reshape(-1, 2),
+                                                  np.array(lines, dtype=float).reshape(-1, 4))
+        return got
+
+    def _lines_at(self, z: float, size: float) -> Any:
+        """The result lines magnified *z* times, indexed for letters of *size*
+        (:class:`construct.render.lettering.LineIndex`): made once for every placing at that zoom."""
+        from .lettering import LineIndex
+
+        cache = self.__dict__.setdefault("_line_index", {})
+        key = (z, size)
+        if key not in cache:
+            cache[key] = LineIndex(size, _scaled(self._obstacle_arrays()[1], z))
+        return cache[key]
 
     @property
     def line_reach(self) -> float:
@@ -1045,6 +1076,12 @@ def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
                                  for a, b, c, d in zip(p1, c1, c2, p2)))
         return out
     return list(g)
+
+
+def _scaled(rows: Any, z: float) -> list[tuple[float, ...]]:
+    """Every coordinate of *rows* (an array of points or segments) times *z*, as tuples
+    (the same numbers as multiplying one by one, made at once: a figure has thousands)."""
+    return list(map(tuple, (rows * z).tolist()))
 
 
 def _mark_points(m: Mark) -> list[tuple[float, float]]:

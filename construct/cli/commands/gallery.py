@@ -3,7 +3,9 @@
 What it builds is linted (:mod:`construct.regress.lint`) before it replaces
 the old gallery: the counts of findings by kind go to stderr.  With
 ``--legible`` a gallery with findings is not written (the previous one stays)
-and the command exits 1.
+and the command exits 1.  Each figure is linted by the process that built it,
+right after it (:func:`lint_figure`), so that the lint shares the cores with
+the building; the report is the one ``construct lint`` gives for the folder.
 """
 
 from __future__ import annotations
@@ -28,11 +30,20 @@ def add_arguments(p) -> None:
                    help="fail (exit 1, the previous gallery kept) when 'construct lint' finds anything in it")
 
 
+def lint_figure(folder: Path) -> dict:
+    """Lint one figure's drawings where it was built: {name under the gallery: its lint}."""
+    from ...regress.lint import figure_files, lint_file
+
+    return {f"{folder.name}/{name}": lint_file(file, f"{folder.name}/{name}") for file, name in figure_files(folder)}
+
+
 def _lint(strict: bool):
-    def check(root: Path) -> None:
+    def check(root: Path, linted: list[dict] = ()) -> None:
         from ...regress.lint import lint_path
 
-        report = lint_path(root)
+        # the figures linted by the processes that built them (lint_figure) are not read again; what
+        # else the gallery holds is linted here, and the report is the one 'construct lint' gives
+        report = lint_path(root, linted={name: done for found in linted for name, done in found.items()})
         if report.ok:
             print(f"lint: no findings in {len(report.figures)} figures, {report.views} views", file=sys.stderr)
             return
@@ -47,8 +58,11 @@ def _lint(strict: bool):
 
 
 def run(args) -> int:
+    from ...regress.lint.fonts import load
+
+    load()  # once here: the workers are forked with the fonts the lint measures with
     try:
-        entries = build_gallery(args.out, progress=True, before_swap=_lint(args.legible))
+        entries = build_gallery(args.out, progress=True, before_swap=_lint(args.legible), check=lint_figure)
     except IllegibleGallery as exc:
         print(f"construct: {exc}", file=sys.stderr)
         return 1

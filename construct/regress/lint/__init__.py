@@ -40,7 +40,7 @@ from pathlib import Path
 from .checks import KINDS, MIN_LABEL_PX, MIN_MARK_PX, VIEW, Finding, check_sheet, view_count
 from .sheet import LintInputError, player_data, read_sheet
 
-__all__ = ["lint_svg", "lint_path", "LintReport", "Finding", "KINDS", "VIEW", "MIN_LABEL_PX", "MIN_MARK_PX",
+__all__ = ["lint_svg", "lint_path", "lint_file", "report_of", "FileLint", "LintReport", "Finding", "KINDS", "VIEW", "MIN_LABEL_PX", "MIN_MARK_PX",
            "LintInputError", "figure_files"]
 
 
@@ -136,20 +136,38 @@ def figure_files(path: str | Path) -> list[tuple[Path, str]]:
     return out
 
 
-def lint_path(path: str | Path, *, view: tuple[float, float] = VIEW) -> LintReport:
-    """Lint every figure under *path* (a final.svg, a replay folder or a gallery)."""
-    w, h = view
-    if not (w > 0 and h > 0 and w < 1e6 and h < 1e6):
-        raise LintInputError(f"the view size must be positive, got {w:g}×{h:g}")
-    report = LintReport(str(path), (float(w), float(h)))
+@dataclass(frozen=True)
+class FileLint:
+    """What lint found in one drawing: its findings and how many views it checked (see :func:`lint_file`)."""
+
+    name: str
+    #: A frame ``steps/NNN.svg``: its findings are merged with its folder's other frames'.
+    frame: bool
+    findings: tuple[Finding, ...]
+    views: int
+
+
+def lint_file(file: Path, name: str, *, view: tuple[float, float] = VIEW) -> FileLint:
+    """Lint one drawing of :func:`figure_files` (with its player's data beside it, if any).
+
+    The drawings under a folder can be linted one by one, anywhere (a gallery's
+    figures in the processes that built them), and put together by
+    :func:`report_of` as :func:`lint_path` puts them together.
+    """
+    data = player_data(file.parent / "player.html") if file.name == "final.svg" else None
+    is_frame = file.name != "final.svg" and file.parent.name == "steps"
+    sheet = read_sheet(file, name, data=data)
+    return FileLint(name, is_frame, tuple(check_sheet(sheet, view)), view_count(sheet, view))
+
+
+def report_of(root: str | Path, linted, *, view: tuple[float, float] = VIEW) -> LintReport:
+    """The report of the drawings *linted* (:class:`FileLint`, in the order of :func:`figure_files`)."""
+    report = LintReport(str(root), (float(view[0]), float(view[1])))
     frames: dict[str, dict[tuple, list[Finding]]] = {}  # a replay's frames, reported together
-    for file, name in figure_files(path):
-        data = player_data(file.parent / "player.html") if file.name == "final.svg" else None
-        is_frame = file.name != "final.svg" and file.parent.name == "steps"
-        sheet = read_sheet(file, name, data=data)
-        found = check_sheet(sheet, report.view)
-        report.views += view_count(sheet, report.view)
-        if not is_frame:
+    for done in linted:
+        name, found = done.name, done.findings
+        report.views += done.views
+        if not done.frame:
             report.figures.append(name)
             report.findings += found
             continue
@@ -173,3 +191,23 @@ def lint_path(path: str | Path, *, view: tuple[float, float] = VIEW) -> LintRepo
             report.findings.append(Finding(f.kind, f"{folder}/*.svg", tuple(merged), f.labels, f.ids, f.message,
                                            sum(x.views for x in same)))
     return report
+
+
+def _view_size(view: tuple[float, float]) -> tuple[float, float]:
+    w, h = view
+    if not (w > 0 and h > 0 and w < 1e6 and h < 1e6):
+        raise LintInputError(f"the view size must be positive, got {w:g}×{h:g}")
+    return (float(w), float(h))
+
+
+def lint_path(path: str | Path, *, view: tuple[float, float] = VIEW,
+              linted: "dict[str, FileLint] | None" = None) -> LintReport:
+    """Lint every figure under *path* (a final.svg, a replay folder or a gallery).
+
+    *linted*: drawings already linted at this view size (by :func:`lint_file`, named as
+    :func:`figure_files` names them under *path*), not read again.
+    """
+    view = _view_size(view)
+    done = linted or {}
+    return report_of(path, [done.get(name) or lint_file(file, name, view=view) for file, name in figure_files(path)],
+                     view=view)

@@ -160,11 +160,6 @@ def _grow(b: Box, d: float) -> Box:
     return (b[0] - d, b[1] - d, b[2] + d, b[3] + d)
 
 
-def _disc_in_box(x: float, y: float, r: float, b: Box) -> bool:
-    nx, ny = min(max(x, b[0]), b[2]), min(max(y, b[1]), b[3])
-    return math.hypot(x - nx, y - ny) < r - TOUCH
-
-
 def _segment_in_box(p: tuple[float, float, float, float], b: Box) -> bool:
     """Does the segment cross the box's inside (Liang–Barsky)?"""
     x0, y0, x1, y1 = p
@@ -376,10 +371,58 @@ class _Views:
         self._cache[key] = got
         return got
 
+    def _text_arrays(self) -> tuple:
+        """The texts' boxes, points and letter units as arrays (made once)."""
+        got = self.__dict__.get("_arrays")
+        if got is None:
+            import numpy as np
+
+            texts = self.sheet.texts
+            boxes = np.array([t.box for t in texts], dtype=float).reshape(-1, 4)
+            anchored = np.array([t.anchor is not None for t in texts], dtype=bool)
+            points = np.array([t.anchor or (0.0, 0.0) for t in texts], dtype=float).reshape(-1, 2)
+            units = np.array([t.unit for t in texts], dtype=float)
+            got = self.__dict__["_arrays"] = (boxes, anchored, points, units)
+        return got
+
+    def _near_texts(self, lay: _Layout) -> list[int]:
+        """The texts whose box in *lay* (:meth:`text_box`, for all at once) may meet the layout's box: a
+        superset of those that do (a hair's margin), in order; :meth:`letters` tests each exactly."""
+        import numpy as np
+
+        boxes, anchored, points, units = self._text_arrays()
+        texts = self.sheet.texts
+        level_moves = self.__dict__.setdefault("_level_moves", {})
+        if lay.level not in level_moves:  # the texts a zoom level moves, and by how much
+            moves = self.sheet.moves
+            moved = np.zeros(len(texts), dtype=bool)
+            d = np.zeros((len(texts), 2))
+            if lay.level and moves:
+                for i, t in enumerate(texts):
+                    m = moves.get((lay.level, t.group)) if t.group else None
+                    if m is not None:
+                        moved[i] = True
+                        d[i] = (m[0] * t.unit, m[1] * t.unit)
+            level_moves[lay.level] = (moved, d)
+        moved, d = level_moves[lay.level]
+        if lay.letter == 1.0 and not moved.any():
+            b = boxes
+        else:
+            s = lay.letter
+            at = anchored & (moved | (s != 1.0))
+            scaled = np.concatenate((points + s * (boxes[:, 0:2] - points + d), points + s * (boxes[:, 2:4] - points + d)),
+                                    axis=1)
+            b = np.where(at[:, None], scaled, boxes)
+        e = 1e-6
+        x0, y0, x1, y1 = lay.box
+        return np.flatnonzero((b[:, 0] < x1 + e) & (x0 - e < b[:, 2]) & (b[:, 1] < y1 + e) & (y0 - e < b[:, 3])).tolist()
+
     def letters(self, lay: _Layout, *, captions: bool = True) -> list[tuple]:
         """The texts a layout shows: (text, its box there, the layout's steps that show it)."""
         out = []
-        for t in self.sheet.texts:
+        texts = self.sheet.texts
+        for i in self._near_texts(lay):
+            t = texts[i]
             if t.kind == "caption" and (self.player or not captions):
                 continue  # the player shows no caption lines on its figure
             b = self.text_box(t, lay)
@@ -461,15 +504,29 @@ def _on_points(sheet: Sheet, views: _Views, seen) -> list[Finding]:
     names = _point_names(sheet)
     widest = max((d.r for d in sheet.dots), default=0.0)
     found: dict[tuple[int, int], list] = {}
+    cells, dots, floor, hypot = grid.cells, sheet.dots, math.floor, math.hypot
     for lay, letters in seen:
         reach = widest * max(lay.letter - 1.0, 0.0)  # the grid holds the discs at their drawn size
+        letter = lay.letter
         for t, b, runs in letters:
-            for i in sorted(grid.near(_grow(b, reach) if reach else b)):
-                d = sheet.dots[i]
-                if d.ident is not None and d.ident == t.owner:
+            g = _grow(b, reach) if reach else b
+            near: set[int] = set()
+            for ci in range(floor(g[0] / CELL), floor(g[2] / CELL) + 1):  # grid.near(g), written out
+                for cj in range(floor(g[1] / CELL), floor(g[3] / CELL) + 1):
+                    got = cells.get((ci, cj))
+                    if got:
+                        near.update(got)
+            if not near:
+                continue
+            owner = t.owner
+            for i in sorted(near):
+                d = dots[i]
+                if d.ident is not None and d.ident == owner:
                     continue
-                r = d.r * lay.letter
-                if not _disc_in_box(d.x, d.y, r, b):
+                r = d.r * letter
+                x, y = d.x, d.y
+                # does the disc reach into the box (from the box's nearest point to its centre)?
+                if not hypot(x - min(max(x, b[0]), b[2]), y - min(max(y, b[1]), b[3])) < r - TOUCH:
                     continue
                 if not _meet_any((d.x - r, d.y - r, d.x + r, d.y + r), lay.box):
                     continue
@@ -486,24 +543,74 @@ def _on_points(sheet: Sheet, views: _Views, seen) -> list[Finding]:
     return out
 
 
+def _piece_cells(boxes: list[Box]) -> dict[tuple[int, int], list[int]]:
+    """The cells of :data:`CELL` (as :meth:`_Grid.keys` gives them) each box covers: {cell: box numbers}.
+
+    Made with numpy for the boxes that cover at most two cells each way (every piece of a result line,
+    at most :data:`sheet.PIECE` long), one by one for the others; a cell lists its boxes in order.
+    """
+    import numpy as np
+
+    cells: dict[tuple[int, int], list[int]] = defaultdict(list)
+    if not boxes:
+        return cells
+    b = np.array(boxes, dtype=float).reshape(-1, 4)
+    i0, j0 = np.floor(b[:, 0] / CELL).astype(np.int64), np.floor(b[:, 1] / CELL).astype(np.int64)
+    i1, j1 = np.floor(b[:, 2] / CELL).astype(np.int64), np.floor(b[:, 3] / CELL).astype(np.int64)
+    small = (i1 - i0 <= 1) & (j1 - j0 <= 1)
+    ks, ii, jj = [], [], []
+    for di in (0, 1):
+        for dj in (0, 1):
+            m = small & (i0 + di <= i1) & (j0 + dj <= j1)
+            ks.append(np.flatnonzero(m))
+            ii.append(i0[m] + di)
+            jj.append(j0[m] + dj)
+    k, i, j = np.concatenate(ks), np.concatenate(ii), np.concatenate(jj)
+    order = np.lexsort((k, j, i))
+    k, i, j = k[order], i[order], j[order]
+    if len(k):
+        cut = (np.flatnonzero((np.diff(i) != 0) | (np.diff(j) != 0)) + 1).tolist()
+        starts, ends = [0] + cut, cut + [len(k)]
+        listed = k.tolist()
+        for s0, s1, ci, cj in zip(starts, ends, i[starts].tolist(), j[starts].tolist()):
+            cells[(ci, cj)] = listed[s0:s1]
+    for n in np.flatnonzero(~small).tolist():  # a long box, cell by cell
+        for key in _Grid.keys(boxes[n]):
+            cells[key].append(n)
+    return cells
+
+
 def _struck(sheet: Sheet, views: _Views, seen) -> list[Finding]:
-    grid = _Grid()
-    pieces: list[tuple[int, tuple[float, float, float, float]]] = []
+    # the grid of :class:`_Grid` (its cells and keys), written out here: every letter of every view asks it
+    pieces: list[tuple[int, tuple[float, float, float, float], Box]] = []
     widest = max((s.half for s in sheet.strokes), default=0.0)
     for si, s in enumerate(sheet.strokes):
         for p in s.pieces:
-            grid.add((min(p[0], p[2]), min(p[1], p[3]), max(p[0], p[2]), max(p[1], p[3])), len(pieces))
-            pieces.append((si, p))
+            pieces.append((si, p, (min(p[0], p[2]), min(p[1], p[3]), max(p[0], p[2]), max(p[1], p[3]))))
+    cells = _piece_cells([pb for _, _, pb in pieces])
+    halves = [s.half for s in sheet.strokes]
+    floor = math.floor
     found: dict[tuple[int, int], list] = {}
     for lay, letters in seen:
+        stroke = lay.stroke
+        reach = widest * stroke
         for t, tb, runs in letters:
+            near: set[int] = set()
+            for i in range(floor((tb[0] - reach) / CELL), floor((tb[2] + reach) / CELL) + 1):
+                for j in range(floor((tb[1] - reach) / CELL), floor((tb[3] + reach) / CELL) + 1):
+                    got = cells.get((i, j))
+                    if got:
+                        near.update(got)
+            if not near:
+                continue
             hit: set[int] = set()
-            for i in sorted(grid.near(_grow(tb, widest * lay.stroke))):
-                si, p = pieces[i]
+            for i in sorted(near):
+                si, p, pb = pieces[i]
                 if si in hit:
                     continue
-                b = _grow(tb, sheet.strokes[si].half * lay.stroke - TOUCH)
-                if max(p[0], p[2]) < b[0] or min(p[0], p[2]) > b[2] or max(p[1], p[3]) < b[1] or min(p[1], p[3]) > b[3]:
+                d = halves[si] * stroke - TOUCH
+                b = (tb[0] - d, tb[1] - d, tb[2] + d, tb[3] + d)
+                if pb[2] < b[0] or pb[0] > b[2] or pb[3] < b[1] or pb[1] > b[3]:
                     continue  # the cheap test first: most pieces near a label pass beside it
                 if _segment_in_box(p, b):
                     hit.add(si)

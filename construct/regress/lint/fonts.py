@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import functools
 
-__all__ = ["text_extents", "font_file"]
+__all__ = ["text_extents", "font_file", "load"]
 
 #: What the generic CSS families are measured with (the fonts matplotlib ships).
 GENERIC = {"serif": "DejaVu Serif", "sans-serif": "DejaVu Sans", "monospace": "DejaVu Sans Mono",
@@ -58,6 +58,19 @@ def font_file(family: str, style: str = "normal", weight: str = "normal") -> str
     prop = font_manager.FontProperties(family=chosen, style=style if style in ("italic", "oblique") else "normal",
                                        weight=weight)
     return font_manager.findfont(prop, fallback_to_default=True)
+
+
+def load(families: "tuple[str, ...]" = ("serif", "sans-serif")) -> None:
+    """Load what measuring text needs (matplotlib's font manager, its font list, the faces of
+    *families*) now, in this process: processes forked after it (``construct gallery``'s workers,
+    which lint what they build) share them instead of each loading them again.
+
+    >>> load()
+    """
+    _families()
+    for family in families:
+        text_extents("A", family, 12.0)
+        text_extents("A", family, 12.0, "italic")
 
 
 #: The size glyphs are measured at (their metrics scale with the size: one measure serves every size).

@@ -69,6 +69,7 @@ MAX_BYTES = 320 * 2**20
 _SKIPPED_IDS = {"inset"}
 
 
+_PROPERTY_SET = frozenset(PROPERTIES)
 #: Marks a step's group in a chain (its state classes are what a view changes).
 _STEP_GROUP = ("#step-group", "")
 _STATE_CLASSES = frozenset(STATES)
@@ -173,10 +174,19 @@ class Sheet:
     moves: dict[tuple[int, str], tuple[float, float]] = field(default_factory=dict)
     #: Per step, the ring the player draws round a small current mark: (cx, cy, r) as its data gives it.
     rings: dict[int, tuple[float, float, float]] = field(default_factory=dict)
+    #: The looks asked for, by (chain, state, level): every view asks again for the same few.
+    _looks: dict[tuple, Look] = field(default_factory=dict, repr=False, compare=False)
 
     def look(self, chain: tuple[Node, ...], state: str | None = None, level: int = 0) -> Look:
         """The look of an element (its chain) with its step's groups in *state* (None: as in the file), the
         drawing shown at zoom level *level* (the player's class ``zlN`` on the root)."""
+        key = (chain, state, level)
+        got = self._looks.get(key)
+        if got is None:
+            got = self._looks[key] = self._look(chain, state, level)
+        return got
+
+    def _look(self, chain: tuple[Node, ...], state: str | None, level: int) -> Look:
         if level:
             root = chain[0]
             chain = ((root[0], root[1], root[2] | {f"zl{level}"}, root[3]),) + chain[1:]
@@ -379,18 +389,16 @@ def _polylines(tag: str, e: ET.Element, where: str) -> list[list[tuple[float, fl
         elif op in ("L", "Z"):
             cur = cur or [seg[1]]
             cur.append(seg[2])
-        elif op in ("C", "Q"):
-            p = seg[1:]
-            cur = cur or [p[0]]
-            for i in range(1, 13):
-                t = i / 12
-                if op == "C":
-                    s = 1 - t
-                    w = (s * s * s, 3 * s * s * t, 3 * s * t * t, t * t * t)
-                else:
-                    s = 1 - t
-                    w = (s * s, 2 * s * t, t * t)
-                cur.append((sum(wi * q[0] for wi, q in zip(w, p)), sum(wi * q[1] for wi, q in zip(w, p))))
+        elif op == "C":
+            (ax, ay), (bx, by), (cx, cy), (dx, dy) = seg[1:]
+            cur = cur or [seg[1]]
+            # the sums in the order sum() adds them (0 + w0 p0 + w1 p1 + ...): the same numbers, without its calls
+            cur.extend((0 + w0 * ax + w1 * bx + w2 * cx + w3 * dx, 0 + w0 * ay + w1 * by + w2 * cy + w3 * dy)
+                       for w0, w1, w2, w3 in _CUBIC)
+        elif op == "Q":
+            (ax, ay), (bx, by), (cx, cy) = seg[1:]
+            cur = cur or [seg[1]]
+            cur.extend((0 + w0 * ax + w1 * bx + w2 * cx, 0 + w0 * ay + w1 * by + w2 * cy) for w0, w1, w2 in _QUADRATIC)
         else:  # an arc
             _, p0, p1, rx, ry, phi, large, sweep = seg
             cur = cur or [p0]
@@ -409,6 +417,12 @@ def _polylines(tag: str, e: ET.Element, where: str) -> list[list[tuple[float, fl
     if len(cur) > 1 or (cur and not out):
         out.append(cur)
     return out
+
+
+#: The weights a cubic and a quadratic Bézier piece is flattened with (12 points each, the end included).
+_CUBIC = tuple(((1 - i / 12) * (1 - i / 12) * (1 - i / 12), 3 * (1 - i / 12) * (1 - i / 12) * (i / 12),
+                3 * (1 - i / 12) * (i / 12) * (i / 12), (i / 12) * (i / 12) * (i / 12)) for i in range(1, 13))
+_QUADRATIC = tuple(((1 - i / 12) * (1 - i / 12), 2 * (1 - i / 12) * (i / 12), (i / 12) * (i / 12)) for i in range(1, 13))
 
 
 def _pieces(lines: list[list[tuple[float, float]]]) -> list[tuple[float, float, float, float]]:
@@ -512,10 +526,12 @@ class _Reader:
     def _node(self, e: ET.Element, tag: str, step: int | None) -> Node:
         c = self.sheet.cascade
         own: list[tuple[str, str]] = []
-        for name in PROPERTIES:
-            if e.get(name) is not None:
-                own.append(("@" + name, e.get(name)))
-        style = e.get("style")
+        attrib = e.attrib
+        if not _PROPERTY_SET.isdisjoint(attrib):  # most elements carry none: their classes say it
+            for name in PROPERTIES:
+                if attrib.get(name) is not None:
+                    own.append(("@" + name, attrib[name]))
+        style = attrib.get("style")
         if style:
             own.extend(declarations(style).items())
         if step is not None and e.get("data-step") is not None:
@@ -563,15 +579,19 @@ class _Reader:
             return
         if tag not in _DRAWN:
             return
-        where = f"{sheet.name}: <{tag} {e.get('id') or ''}>"
-        try:
-            lines = _polylines(tag, e, where)
-        except ConstructError as exc:
-            raise LintInputError(str(exc)) from None
-        lines = [[_at(ctm, x, y) for x, y in pts] for pts in lines]
-        pts = [p for line in lines for p in line]
-        if not pts:
-            return
+        if tag == "circle" and ("pt" in classes or "result" not in classes):
+            # a point marker or a thin circle: its centre and radius are all that is read (its box is exact)
+            lines = pts = []
+        else:
+            where = f"{sheet.name}: <{tag} {e.get('id') or ''}>"
+            try:
+                lines = _polylines(tag, e, where)
+            except ConstructError as exc:
+                raise LintInputError(str(exc)) from None
+            lines = [[_at(ctm, x, y) for x, y in pts] for pts in lines]
+            pts = [p for line in lines for p in line]
+            if not pts:
+                return
         scale = math.sqrt(abs(ctm[0] * ctm[3] - ctm[1] * ctm[2]))
         if tag == "circle" and "pt" in classes:
             look = sheet.look(chain)
@@ -584,11 +604,12 @@ class _Reader:
                 sheet.strokes.append(Stroke(e.get("id"), step, chain, tuple(_pieces(lines)),
                                             look.stroke_width * scale / 2))
         if step is not None and not classes & {"leader", "halo", "brk", "brkline"}:
-            box = _box_of(pts)
             if tag == "circle":  # exact: the flattened outline's corners fall inside the circle
                 cx, cy = _at(ctm, _num(e.get("cx")), _num(e.get("cy")))
                 r = _num(e.get("r")) * scale
                 box = (cx - r, cy - r, cx + r, cy + r)
+            else:
+                box = _box_of(pts)
             sheet.drawn.append(Drawn(step, e.get("id"), chain, box))
 
     def _text(self, e: ET.Element, chain: tuple[Node, ...], ctm: Matrix, step: int | None,

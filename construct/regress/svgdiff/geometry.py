@@ -111,6 +111,8 @@ def ellipse_axes(m: Matrix, rx: float, ry: float, phi_deg: float) -> tuple[float
 # --------------------------------------------------------------------------- paths
 
 _COMMANDS = set("MmZzLlHhVvCcSsQqTtAa")
+#: What may stand between a path's numbers (``\s`` is what ``str.isspace`` calls a space).
+_SEPARATORS = re.compile(r"[\s,]*")
 _ARGS = {"M": 2, "L": 2, "H": 1, "V": 1, "C": 6, "S": 4, "Q": 4, "T": 2, "A": 7, "Z": 0}
 
 
@@ -135,8 +137,7 @@ def parse_path(d: str, where: str) -> list[tuple]:
 
     def skip() -> None:
         nonlocal pos
-        while pos < n and (d[pos].isspace() or d[pos] == ","):
-            pos += 1
+        pos = _SEPARATORS.match(d, pos).end()  # spaces (as str.isspace) and commas
 
     def number() -> float:
         nonlocal pos

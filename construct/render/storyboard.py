@@ -132,9 +132,11 @@ def storyboard_svg(drawing: Drawing, *, columns: int = 4) -> str:
         dwg.add(f.rect(insert=(fmt(tx), fmt(ty)), size=(fmt(tw), fmt(th)), class_="frame"))
         extra = {}
         if style.camera:
-            from .camera import level, zoom_of
+            from .camera import level
 
-            extra["class_"] = f"zl{level(zoom_of(v, drawing.full_view))}"
+            # the level of the tile's own magnification (its box in the tile's shape)
+            full = drawing.full_view
+            extra["class_"] = f"zl{level(max(full[2], full[3] / aspect_t) / (2 * half))}"
         view = f.svg(insert=(fmt(tx), fmt(ty)), size=(fmt(tw), fmt(th)), viewBox=box, **extra)
         earlier = f.g(opacity=fmt(style.earlier_opacity)) if style.earlier_opacity < 1.0 else f.g()
         for name in drawing.LAYERS:

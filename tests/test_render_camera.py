@@ -16,7 +16,7 @@ import xml.etree.ElementTree as ET
 import pytest
 
 from construct.constructions import get
-from construct.kernel.geometry import Point
+from construct.kernel.geometry import Circle, Line, Point
 from construct.render import camera
 from construct.render.lettering import label_box, place, text_box
 from construct.render.output import scene_for, write_replay
@@ -307,3 +307,42 @@ def test_a_storyboard_tile_takes_in_the_work_of_all_its_steps(tangential):
             assert x - 0.01 <= px <= x + w + 0.01 and y - 0.01 <= py <= y + h + 0.01, (end, px, py)
         start = end + 1
 
+
+def _struck_onto(fig, k: int) -> set[str]:
+    """The lines and circles step k's arc is struck onto, from the protocol: those the next step taking up what
+    step k makes cuts it with (where that step makes a point: the crossing)."""
+    steps = fig.protocol.steps
+    made = {n for n in steps[k - 1].outputs if isinstance(fig.replay.get(n), (Line, Circle))}
+    for s in steps[k:] if made else ():
+        if made & set(s.inputs):
+            if all(isinstance(fig.replay.get(n), Point) for n in s.outputs):
+                return {n for n in s.inputs if n not in made and isinstance(fig.replay.get(n), (Line, Circle))}
+            return set()
+    return set()
+
+
+@pytest.mark.parametrize("name, params", __import__("construct.gallery", fromlist=["gallery_plan"]).gallery_plan(),
+                         ids=lambda p: p if isinstance(p, str) else ",".join(f"{k}={v}" for k, v in p.items()))
+def test_every_input_of_a_step_is_drawn_at_that_step(name, params):
+    """Levels of detail hide a finished group's helpers, never what the current step is set on, cuts or
+    strikes its arc onto (tangential-pressure step 821 carries O–Yb7 onto the scale line r, which step 822
+    cuts: the line was not drawn while the arc was struck onto it)."""
+    c = get(name)
+    fig = c.figure(**params)
+    d = Drawing(scene_for(c, fig), STYLES["teaching"])
+    made_by = {}
+    for s in fig.protocol.steps:
+        for n in s.outputs:
+            made_by.setdefault(n, s.index)
+    missing = []
+    n = len(fig.protocol.steps)
+    for s in fig.protocol.steps[:-1]:  # the last frame is the clean figure of the results
+        k = s.index
+        inputs = d.input_steps(k)
+        for obj in set(s.inputs) | _struck_onto(fig, k):
+            j = made_by.get(obj)
+            if j is None or j >= k or d.scene.step_of(obj) is None:
+                continue  # a given not drawn, or a length
+            if d.step_class(j, k, mark_steps=True, inputs=inputs) == "done":
+                missing.append((k, obj, j))
+    assert not missing, f"{len(missing)} of {n} steps: {missing[:8]}"

@@ -763,14 +763,17 @@ class Drawing:
         return self.groups[name][:bisect.bisect_right(self._steps[name], k)]
 
     def input_steps(self, k: int) -> frozenset[int]:
-        """The steps that made what step k's instrument is set on and what its caption names."""
+        """The steps that made what step k's instrument is set on, what its caption names and what its arc is
+        struck onto (:meth:`Scene.struck_onto`)."""
         if not self.style.input_colour:
             return frozenset()
         done = self.__dict__.setdefault("_input_steps", {})  # asked by the tags' placing and by the player
         got = done.get(k)
         if got is None:
             sc = self.scene
-            got = done[k] = frozenset(s for s in (sc.step_of(n) for n in sc.inputs(k) | sc.tagged(k))
+            # and the lines its arc is struck onto (cut by the next step): drawn while it strikes it
+            got = done[k] = frozenset(s for s in (sc.step_of(n) for n in sc.inputs(k) | sc.tagged(k)
+                                                  | sc.struck_onto(k))
                                       if s is not None and s < k)
         return got
 

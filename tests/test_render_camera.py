@@ -346,3 +346,31 @@ def test_every_input_of_a_step_is_drawn_at_that_step(name, params):
             if d.step_class(j, k, mark_steps=True, inputs=inputs) == "done":
                 missing.append((k, obj, j))
     assert not missing, f"{len(missing)} of {n} steps: {missing[:8]}"
+
+
+
+def test_the_operands_of_a_step_are_tagged_in_its_view():
+    """crank step 181 ('line through M1 and T2'): both operands carry their name tags in the step's view.  M1
+    gave way there to tags never shown with it (the level's tags were checked all together), and was placed
+    without regard to the tags placed at a lower level that are seen with it."""
+    c = get("crank")
+    fig = c.figure(parts=18, rod_ratio=5.0)
+    d = Drawing(scene_for(c, fig), STYLES["teaching"])
+    k = 181
+    step = fig.protocol.steps[k - 1]
+    assert step.caption.en == "line through M1 and T2"
+    z = camera.zoom_of(d.camera_view(k), d.full_view)
+    lvl = max(i for i, lv in enumerate(camera.ZOOM_LEVELS) if lv <= z * 1.001)
+    svg = ET.fromstring(d.layered())
+    tags = {}  # (text, point on the canvas) -> the classes of its letter group
+    for g in svg.iter(f"{SVG}g"):
+        m = re.fullmatch(r"translate\(([-\d.]+) ([-\d.]+)\)", g.get("transform") or "")
+        for t in g.findall(f"{SVG}text"):
+            cls = (t.get("class") or "").split()
+            if m and "tag" in cls and "halo" not in cls:
+                tags[("".join(t.itertext()), float(m.group(1)), float(m.group(2)))] = (g.get("class") or "").split()
+    for name, letters in zip(step.inputs, ("M1", "T2")):
+        px, py = d.vp.px(*fig.replay.get(name))
+        got = [cls for (text, x, y), cls in tags.items() if text == letters and abs(x - px) < 0.02 and abs(y - py) < 0.02]
+        assert got, (letters, px, py)
+        assert f"h{lvl}" not in got[0], (letters, got[0])  # not hidden at the view's zoom level

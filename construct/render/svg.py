@@ -577,9 +577,25 @@ class Drawing:
                   and min(seg[1], seg[3]) * z <= y1 and max(seg[1], seg[3]) * z >= y0]
             return ds, ls
 
+        # per level, the tags' steps seen together in some view of that level (a step and its inputs)
+        seen_with: dict[int, dict[int, set[int]]] = {}
+        if st.camera:
+            tag_steps = {m.step for m in tags}
+            for k in range(1, len(sc.steps) + 1):
+                together = ({k} | self.input_steps(k)) & tag_steps
+                mates = seen_with.setdefault(lvl_of(k), {})
+                for s_ in together:
+                    mates.setdefault(s_, set()).update(together)
+        byid = {m.id: m for m in tags}
         out: dict[str, tuple[float, float, float]] = {}
         for lvl, ms in sorted(by_level.items()):
             z, f, taken = frame(lvl)
+            # clear of the tags placed at a lower level that are seen with these at this one
+            mates_here = set().union(*(seen_with.get(lvl, {}).get(m.step, set()) for m in ms))
+            taken = taken + [label_box(pts[i][0] * z + out[i][0] * f, pts[i][1] * z + out[i][1] * f,
+                                       sc.display_name(byid[i].name), size * f, st.label_font, st.label_italic,
+                                       HALO_PX / 2 * f)
+                             for i in out if byid[i].step in mates_here and lvl in shown_at[byid[i].step]]
             items = []
             for m in ms:
                 px, py = pts[m.id]
@@ -595,7 +611,6 @@ class Drawing:
         # every level a tag is seen at: it holds its spot there, or it gives way there (class hN),
         # never stacked on a letter, a point, a result line or a tag seen with it
         hidden: dict[str, str] = {}
-        byid = {m.id: m for m in tags}
         for lvl in sorted({v for vs in shown_at.values() for v in vs}):
             z, f, taken = frame(lvl)
             here = [byid[i] for i in out if lvl in shown_at[byid[i].step]]
@@ -607,10 +622,28 @@ class Drawing:
             got = place(items, size * f, *near(items, z, f),
                         font=st.label_font, italic=st.label_italic, taken=taken, keep=False, prefer=prefer,
                         halo=HALO_PX / 2 * f, reach=self.line_reach)
-            for i, _r, _s, (zx, zy), _d, _t in items:
-                spot = got.get(i)
-                if spot is None or abs(spot[0] - zx - prefer[i][0]) > 1e-6 or abs(spot[1] - zy - prefer[i][1]) > 1e-6:
-                    hidden[i] = hidden.get(i, "") + f" h{lvl}"
+            def kept(got, items) -> set[str]:
+                return {i for i, _r, _s, (zx, zy), _d, _t in items if (spot := got.get(i)) is not None
+                        and abs(spot[0] - zx - prefer[i][0]) <= 1e-6 and abs(spot[1] - zy - prefer[i][1]) <= 1e-6}
+
+            holds = kept(got, items)
+            for it in items:
+                i = it[0]
+                if i in holds:
+                    continue
+                # it lost its spot to all the tags of the level together; it holds it where it is seen only
+                # with the tags seen together with it (crank step 181: M1 gave way to tags never shown with it)
+                mates = seen_with.get(lvl, {}).get(byid[i].step, set())
+                local = [o for o in items if byid[o[0]].step in mates and (o[0] in holds or o[0] == i)]
+                if len(local) < len(items):
+                    near_local = near(local, z, f)
+                    got_l = place(local, size * f, *near_local, font=st.label_font, italic=st.label_italic,
+                                  taken=taken, keep=False, prefer=prefer, halo=HALO_PX / 2 * f, reach=self.line_reach)
+                    held = kept(got_l, local)
+                    if i in held and all(o[0] in held for o in local if o[0] in holds):
+                        holds.add(i)  # the tags it is seen with after it are placed with it
+                        continue
+                hidden[i] = hidden.get(i, "") + f" h{lvl}"
         self._tag_hidden = hidden
         return out
 

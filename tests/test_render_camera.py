@@ -374,3 +374,24 @@ def test_the_operands_of_a_step_are_tagged_in_its_view():
         got = [cls for (text, x, y), cls in tags.items() if text == letters and abs(x - px) < 0.02 and abs(y - py) < 0.02]
         assert got, (letters, px, py)
         assert f"h{lvl}" not in got[0], (letters, got[0])  # not hidden at the view's zoom level
+
+
+def test_a_storyboard_tiles_letters_are_not_flooded_by_the_highlight(crank):
+    """The highlight tints the current tile's new marks by flooding its colour through their alpha; letters
+    drawn through it came out as blobs of that colour (their halos filled too).  They are drawn beside it."""
+    from construct.render.storyboard import storyboard_svg
+
+    _c, _fig, d = crank
+    assert d.style.highlight
+    root = ET.fromstring(storyboard_svg(d).encode())
+    parent = {c: p for p in root.iter() for c in p}
+    XLINK = "{http://www.w3.org/1999/xlink}href"
+    letters = [u for u in root.iter(f"{SVG}use") if (u.get(XLINK) or u.get("href") or "").endswith("-labels")]
+    assert letters
+    for u in letters:
+        p = parent.get(u)
+        while p is not None:
+            assert p.get("filter") is None, u.get(XLINK)
+            p = parent.get(p)
+    # the marks are still tinted
+    assert any(g.get("filter") == "url(#now)" for g in root.iter(f"{SVG}g"))

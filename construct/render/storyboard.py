@@ -145,10 +145,13 @@ def storyboard_svg(drawing: Drawing, *, columns: int = 4) -> str:
                     earlier.add(f.use(f"#tile{j}-{name}"))
         view.add(earlier)
         now = f.g(filter="url(#now)") if style.highlight else f.g()
+        # the letters stay letters: the highlight's flood through their alpha would fill their halos too
+        letters = f.g()
         for name in drawing.LAYERS:
             if (i, name) in present:
-                now.add(f.use(f"#tile{i}-{name}"))
+                (letters if name == "labels" else now).add(f.use(f"#tile{i}-{name}"))
         view.add(now)
+        view.add(letters)
         dwg.add(view)
         text = shorten(_tile_text(scene, bounds[i - 1] + 1, k), 110, placeholder=" …")
         for n, line in enumerate(wrap(text, 54, break_on_hyphens=True)[:2]):

@@ -500,6 +500,8 @@ class Drawing:
         stand farther apart than in the whole figure).  A tag with no free spot there is left out,
         never stacked on another.
         """
+        import numpy as np
+
         from .lettering import label_box, place
 
         sc, st = self.scene, self.style
@@ -619,7 +621,8 @@ class Drawing:
             items = [(m.id, m.role, m.step, (pts[m.id][0] * z, pts[m.id][1] * z), (1.0, 0.0), sc.display_name(m.name))
                      for m in here]
             prefer = {m.id: (out[m.id][0] * f, out[m.id][1] * f, out[m.id][2]) for m in here}
-            got = place(items, size * f, *near(items, z, f),
+            obstacles = near(items, z, f)
+            got = place(items, size * f, *obstacles,
                         font=st.label_font, italic=st.label_italic, taken=taken, keep=False, prefer=prefer,
                         halo=HALO_PX / 2 * f, reach=self.line_reach)
             def kept(got, items) -> set[str]:
@@ -627,6 +630,7 @@ class Drawing:
                         and abs(spot[0] - zx - prefer[i][0]) <= 1e-6 and abs(spot[1] - zy - prefer[i][1]) <= 1e-6}
 
             holds = kept(got, items)
+            arrays = None
             for it in items:
                 i = it[0]
                 if i in holds:
@@ -636,11 +640,40 @@ class Drawing:
                 mates = seen_with.get(lvl, {}).get(byid[i].step, set())
                 local = [o for o in items if byid[o[0]].step in mates and (o[0] in holds or o[0] == i)]
                 if len(local) < len(items):
-                    near_local = near(local, z, f)
-                    got_l = place(local, size * f, *near_local, font=st.label_font, italic=st.label_italic,
-                                  taken=taken, keep=False, prefer=prefer, halo=HALO_PX / 2 * f, reach=self.line_reach)
-                    held = kept(got_l, local)
-                    if i in held and all(o[0] in held for o in local if o[0] in holds):
+                    # it holds its spot where the spot is free of the level's letters, points and result
+                    # lines (as the placer asks) and of the tags seen with it (arrays made once per level)
+                    if arrays is None:
+                        arrays = (np.array(obstacles[0], dtype=float).reshape(-1, 2),
+                                  np.array(obstacles[1], dtype=float).reshape(-1, 4),
+                                  np.array(taken, dtype=float).reshape(-1, 4))
+                    ds, ls_, tk = arrays
+
+                    def spot_box(o):
+                        return label_box(o[3][0] + prefer[o[0]][0], o[3][1] + prefer[o[0]][1], o[5], size * f,
+                                         st.label_font, st.label_italic, HALO_PX / 2 * f)
+
+                    b = spot_box(it)
+                    rr = 0.3 * size * f
+                    e = self.line_reach
+                    free = not any(b[0] < c[2] and c[0] < b[2] and b[1] < c[3] and c[1] < b[3]
+                                   for c in (spot_box(o) for o in local if o[0] != i))
+                    free = free and not ((tk[:, 0] < b[2]) & (b[0] < tk[:, 2]) & (tk[:, 1] < b[3])
+                                         & (b[1] < tk[:, 3])).any()
+                    free = free and not ((ds[:, 0] - rr < b[2]) & (b[0] < ds[:, 0] + rr) & (ds[:, 1] - rr < b[3])
+                                         & (b[1] < ds[:, 1] + rr)).any()
+                    if free and len(ls_):
+                        # a result line crossing the box widened by the line's half width (clipped to it)
+                        p0, dv = ls_[:, :2], ls_[:, 2:] - ls_[:, :2]
+                        with np.errstate(divide="ignore", invalid="ignore"):
+                            ta = (np.array([b[0] - e, b[1] - e]) - p0) / dv
+                            tb = (np.array([b[2] + e, b[3] + e]) - p0) / dv
+                            t_in = np.nan_to_num(np.minimum(ta, tb), nan=-np.inf)
+                            t_out = np.nan_to_num(np.maximum(ta, tb), nan=np.inf)
+                        inside = (dv != 0) | ((p0 >= np.array([b[0] - e, b[1] - e])) & (p0 <= np.array([b[2] + e, b[3] + e])))
+                        t0 = np.maximum(0.0, np.where(dv != 0, t_in, -np.inf).max(axis=1))
+                        t1 = np.minimum(1.0, np.where(dv != 0, t_out, np.inf).min(axis=1))
+                        free = not ((t0 <= t1) & inside.all(axis=1)).any()
+                    if free:
                         holds.add(i)  # the tags it is seen with after it are placed with it
                         continue
                 hidden[i] = hidden.get(i, "") + f" h{lvl}"

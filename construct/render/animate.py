@@ -29,7 +29,7 @@ from typing import Any
 from .styles import PLAIN, Style
 from .svg import Drawing, group_caption
 from .svgdoc import fmt
-from .viewport import camera_transform
+from .viewport import camera_transform, camera_zoom
 
 __all__ = ["animated_svg", "step_seconds", "stages", "STEP_GROUP_CSS", "STEP_SECONDS", "MAX_STAGES"]
 
@@ -103,20 +103,20 @@ def _camera(d: Drawing, ends: list[int], dt: float, total: float) -> tuple[Any, 
     """(outer, camera, ring): the camera group (:meth:`Drawing.camera_group`) whose transform moves from
     view to view in the last moments before a stage whose view differs, its zoom level class and the
     ring round a small current mark switching with the stages."""
-    from .camera import level, zoom_of
+    from .camera import level
 
     f = d.doc.factory
     full = d.full_view
     views = [_stage_view(d, (ends[i - 1] if i else 0) + 1, k) for i, k in enumerate(ends)]
     move = min(0.45, 0.3 * dt)
     times, keys = [0.0], [views[0]]
-    lt, lv = [0.0], [f"zl{level(zoom_of(views[0], full))}"]
+    lt, lv = [0.0], [f"zl{level(camera_zoom(views[0], full))}"]
     for i in range(1, len(ends)):
         if views[i] != views[i - 1]:
             start = i * dt
             times += [start - move, start]
             keys += [views[i - 1], views[i]]
-            lv_i = f"zl{level(zoom_of(views[i], full))}"
+            lv_i = f"zl{level(camera_zoom(views[i], full))}"
             if lv_i != lv[-1]:
                 lt.append(start - move)
                 lv.append(lv_i)

@@ -39,7 +39,11 @@ from typing import Callable, Sequence
 from .scene import MarkKind, Scene, extreme_points
 from .svgdoc import fmt
 
-__all__ = ["step_views", "views_box", "shots", "step_focus", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of"]
+__all__ = ["step_views", "views_box", "shots", "step_focus", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX"]
+
+#: The most the step player shows of the figure in a 1400 × 1000 window (width, height in screen px): the
+#: window the views are shaped for and their magnification is measured in (:func:`zoom_of`).
+PLAYER_FIGURE_PX = (985.0, 700.0)
 
 #: A view never magnifies the whole figure more than this many times (more would lose where it sits).
 MAX_ZOOM = 4.0
@@ -98,9 +102,33 @@ def view_text(v: View) -> str:
     return " ".join(fmt(c) for c in v)
 
 
-def zoom_of(v: View, full: View) -> float:
-    """How many times the view magnifies the whole canvas."""
-    return full[2] / max(v[2], 1e-12)
+def zoom_of(v: View, full: View, window: tuple[float, float] = PLAYER_FIGURE_PX) -> float:
+    """How many times the player's *window* shows view *v* larger on the screen than the whole canvas *full*
+    (each fitted into the window, keeping its aspect): the zoom the letters are held at their size for.
+
+    A view of the canvas's shape magnifies as many times as it is narrower; a view of the
+    window's shape in a tall canvas (960 × 1390, which the window shows at half its size)
+    magnifies by its height:
+
+    >>> zoom_of((0, 0, 480, 334), (0, 0, 960, 668)), round(zoom_of((0, 0, 960, 682.23), (0, 0, 960, 1390)), 3)
+    (2.0, 2.037)
+    """
+    ww, wh = window
+    whole = max(full[2] / ww, full[3] / wh)
+    return whole / max(v[2] / ww, v[3] / wh, 1e-12)
+
+
+def clip_view(cx: float, cy: float, w: float, h: float, full: View) -> View:
+    """The view *w* × *h* about (cx, cy), cut to the canvas where it is wider or taller than *full*: the
+    window shows as much (it fits the view's box, keeping its aspect), and the whole canvas that way.
+
+    >>> clip_view(480, 300, 1200, 800, (0, 0, 960, 1390))
+    (0.0, -100.0, 960.0, 800.0)
+    """
+    x = full[0] if w >= full[2] else cx - w / 2
+    y = full[1] if h >= full[3] else cy - h / 2
+    w, h = min(w, full[2]), min(h, full[3])
+    return (round(float(x), 2), round(float(y), 2), round(float(w), 2), round(float(h), 2))
 
 
 def _grow(b: Box | None, x: float, y: float) -> Box:
@@ -152,20 +180,28 @@ def _depth(a: tuple[str, ...], b: tuple[str, ...]) -> int:
 
 
 class Framing:
-    """How a region of the canvas is framed: the view round it, in the canvas's aspect.
+    """How a region of the canvas is framed: the view round it, in the shape of the player's *window*.
 
     Room on every side in proportion to the region (*context* of its
     size), at most :data:`ROOM` of the canvas (a large region is its own context;
     padding it in proportion would push it to the whole figure); at most
     :data:`MAX_ZOOM` times magnified; the whole canvas where the view would
-    magnify less than 1 / *whole_above* times.
+    magnify less than 1 / *whole_above* times.  Magnification is the window's
+    (:func:`zoom_of`): a view of the window's shape fills it, so that a tall
+    figure, which the window shows at half its size, is seen magnified in its
+    views (a view of the canvas's shape would be letterboxed).  Widths are those
+    of the window-shaped box (:attr:`span` for the whole); a view wider or taller
+    than the canvas is cut to it (:func:`clip_view`).
     Regions are pixel boxes (x0, y0, x1, y1) of the canvas *full*.
     """
 
-    def __init__(self, full: View):
+    def __init__(self, full: View, window: tuple[float, float] | None = PLAYER_FIGURE_PX):
         self.full = full
-        self.aspect = full[3] / max(full[2], 1e-12)
-        self.min_w = full[2] / MAX_ZOOM
+        ww, wh = window or (full[2], full[3])
+        self.aspect = wh / max(ww, 1e-12)
+        #: The width of the window-shaped box that shows the whole canvas.
+        self.span = max(full[2], full[3] / self.aspect)
+        self.min_w = self.span / MAX_ZOOM
 
     def width(self, w: float, h: float, context: float = CONTEXT) -> float:
         """The width of the view round a region *w* x *h* px (before the whole-figure rule)."""
@@ -175,14 +211,14 @@ class Framing:
 
     def limit(self, whole_above: float = WHOLE_ABOVE) -> float:
         """From this view width on the whole canvas is shown."""
-        return whole_above * self.full[2]
+        return whole_above * self.span
 
     def zoom(self, b: Box | None) -> float:
         """How many times the view of region *b* magnifies the whole (1: the whole)."""
         if b is None:
             return 1.0
         w = self.width(b[2] - b[0], b[3] - b[1])
-        return 1.0 if w >= self.limit() else self.full[2] / w
+        return 1.0 if w >= self.limit() else self.span / w
 
     def view(self, b: Box | None, context: float = CONTEXT, whole_above: float = WHOLE_ABOVE) -> View:
         """The view round region *b*, slid inside the canvas where it can (the figure's edge is not a
@@ -194,6 +230,7 @@ class Framing:
         h = w * self.aspect
         if w >= self.limit(whole_above):
             return self.full
+        w, h = min(w, fw), min(h, fh)  # the window shows as much of the canvas about the view's centre
         cx, cy = (b[0] + b[2]) / 2, (b[1] + b[3]) / 2
         x = min(max(cx - w / 2, fx), fx + fw - w)
         y = min(max(cy - h / 2, fy), fy + fh - h)
@@ -240,7 +277,7 @@ def shots(scene: Scene, focus: Sequence[Box | None], framing: Framing) -> list[t
 def _partition(steps: Sequence, focus: Sequence[Box | None], framing: Framing, a: int, b: int) -> list[tuple[int, int]]:
     """The cheapest shots of steps a..b (0-based, inclusive) as in :func:`shots`, as 1-based runs."""
     m = b - a + 1
-    fw = framing.full[2]
+    fw = framing.span
     whole = framing.limit()
     width = framing.width
     # log 2 of each step's own magnification (0: a step without a working region frames nothing)
@@ -365,8 +402,6 @@ def step_views(scene: Scene, full: View, bbox: Box, px: Callable[[float, float],
                     break
                 # what the player's window shows of the view, in drawing units (y flips): the helpers
                 # it shows anyway are framed whole
-                from .viewport import PLAYER_FIGURE_PX  # not at the top: viewport reads the styles, which read this
-
                 ww, wh = PLAYER_FIGURE_PX
                 sw, sh = max(v[2], v[3] * ww / wh), max(v[3], v[2] * wh / ww)
                 cx, cy = v[0] + v[2] / 2, v[1] + v[3] / 2

@@ -169,7 +169,7 @@ h1{font-size:18px;margin:0}
 h1 .en{display:block;font-size:14px;font-weight:normal;color:#555}
 main{display:flex;gap:12px;padding:8px 16px;align-items:flex-start}
 #stage{flex:1 1 auto;min-width:0}
-#figure{width:100%;height:auto;max-height:70vh;border:1px solid #ccc;background:#fff;display:block}
+#figure{width:100%;height:auto;aspect-ratio:985/700;max-height:70vh;border:1px solid #ccc;background:#fff;display:block}
 #figure .lbg>*,#figure .pt{transform:scale(var(--ls,1))}
 #controls{display:flex;gap:6px;align-items:center;margin:8px 0;flex-wrap:wrap}
 #controls button{font:inherit;padding:3px 10px;min-width:2.4em}
@@ -244,7 +244,8 @@ li a.later{color:#bbb}
   function put(v) {  // show view *v*: letters and points at their screen size (12 px, never below 9.5 px)
     // the letter scale of the view's zoom level (the letters were placed for it): the level's picture
     // magnified as a whole, letters never smaller on the screen than at the level's own zoom
-    var q = ratio(v), zr = full[2] / v[2], zl = data.levels[level] || 1, ql = q * zr / zl;
+    // (q times the view's magnification is the whole figure's canvas pixels per screen pixel)
+    var q = ratio(v), zl = data.levels[level] || 1, ql = ratio(full) / zl;
     // written only when changed: a new --ls restyles every letter, a new viewBox repaints the figure
     var box = v.map(function (x) { return x.toFixed(2); }).join(" ");
     var ls = Math.min(Math.max(1, 9.5 * ql / 12), ql).toFixed(4);
@@ -275,7 +276,9 @@ li a.later{color:#bbb}
   window.addEventListener("resize", function () { put(now); });
   function text(id, s) { document.getElementById(id).textContent = s; }
   function zoomLevel(view) {  // the zoom level of *view*: its letters (placed for it) and their scale
-    var z = full[2] / view[2], lvl = 0;
+    // how many times the window shows it larger than the whole figure (a view of the window's shape in a
+    // tall figure is magnified more than its width says)
+    var z = ratio(full) / ratio(view), lvl = 0;
     data.levels.forEach(function (l, i) { if (z >= 0.999 * l) { lvl = i; } });
     if (svg.getAttribute("class") !== "zl" + lvl) { svg.setAttribute("class", "zl" + lvl); }
     level = lvl;

@@ -268,6 +268,44 @@ class Scene:
             return frozenset()
         return frozenset(n for n in self.steps[k - 1].inputs if n in self._drawn)
 
+    def struck_onto(self, k: int) -> frozenset[str]:
+        """The lines and curves step k's arc is struck onto: those the step that next takes up what step k
+        makes cuts it with (the scale line an arc is carried to is cut by the following step, which takes
+        the crossing).  Without them the student would see an arc struck onto nothing.
+
+        >>> from construct.constructions import get
+        >>> sc = build_scene(get("tangential-pressure").figure())
+        >>> sorted(sc.struck_onto(821))  # 'r cos ω = O–Yb7 carried to the scale line r'
+        ['gr']
+        """
+        if not 1 <= k <= len(self.steps):
+            return frozenset()
+        made = {n for n in self.steps[k - 1].outputs
+                if n in self._drawn and self._drawn[n].kind is not MarkKind.POINT}
+        if not made:
+            return frozenset()
+        for s in self._takers.get(k, ()):
+            step = self.steps[s - 1]
+            if made & set(step.inputs) and all(n not in self._drawn or self._drawn[n].kind is MarkKind.POINT
+                                               for n in step.outputs):
+                return frozenset(n for n in step.inputs if n not in made and n in self._drawn
+                                 and self._drawn[n].kind is not MarkKind.POINT and self._drawn[n].step < k)
+            return frozenset()  # the next step that takes it up draws with it: what it is struck onto is its own
+        return frozenset()
+
+    @functools.cached_property
+    def _takers(self) -> dict[int, list[int]]:
+        """Per step, the later steps that take up what it makes (in step order)."""
+        maker: dict[str, int] = {}
+        for s in self.steps:
+            for n in s.outputs:
+                maker.setdefault(n, s.index)
+        got: dict[int, list[int]] = {}
+        for s in self.steps:
+            for k in sorted({maker[n] for n in s.inputs if n in maker and maker[n] < s.index}):
+                got.setdefault(k, []).append(s.index)
+        return got
+
     def tagged(self, k: int) -> frozenset[str]:
         """The points a teaching frame tags at step k: what the step makes, what its instrument is set on
         (also the centre of a circle it cuts), and every point its caption names."""

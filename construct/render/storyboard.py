@@ -132,9 +132,11 @@ def storyboard_svg(drawing: Drawing, *, columns: int = 4) -> str:
         dwg.add(f.rect(insert=(fmt(tx), fmt(ty)), size=(fmt(tw), fmt(th)), class_="frame"))
         extra = {}
         if style.camera:
-            from .camera import level, zoom_of
+            from .camera import level
 
-            extra["class_"] = f"zl{level(zoom_of(v, drawing.full_view))}"
+            # the level of the tile's own magnification (its box in the tile's shape)
+            full = drawing.full_view
+            extra["class_"] = f"zl{level(max(full[2], full[3] / aspect_t) / (2 * half))}"
         view = f.svg(insert=(fmt(tx), fmt(ty)), size=(fmt(tw), fmt(th)), viewBox=box, **extra)
         earlier = f.g(opacity=fmt(style.earlier_opacity)) if style.earlier_opacity < 1.0 else f.g()
         for name in drawing.LAYERS:
@@ -143,10 +145,13 @@ def storyboard_svg(drawing: Drawing, *, columns: int = 4) -> str:
                     earlier.add(f.use(f"#tile{j}-{name}"))
         view.add(earlier)
         now = f.g(filter="url(#now)") if style.highlight else f.g()
+        # the letters stay letters: the highlight's flood through their alpha would fill their halos too
+        letters = f.g()
         for name in drawing.LAYERS:
             if (i, name) in present:
-                now.add(f.use(f"#tile{i}-{name}"))
+                (letters if name == "labels" else now).add(f.use(f"#tile{i}-{name}"))
         view.add(now)
+        view.add(letters)
         dwg.add(view)
         text = shorten(_tile_text(scene, bounds[i - 1] + 1, k), 110, placeholder=" …")
         for n, line in enumerate(wrap(text, 54, break_on_hyphens=True)[:2]):

@@ -37,7 +37,7 @@ from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
 from .scene import Mark, MarkKind, Scene, label_offset_direction
 from .styles import PLAIN, Style
 from .svgdoc import fmt
-from .viewport import PLAYER_FIGURE_PX, Viewport, camera_transform
+from .viewport import PLAYER_FIGURE_PX, Viewport, camera_transform, camera_zoom
 from .wrapping import wrap as wrap_chars
 
 __all__ = ["render_svg", "Drawing", "step_caption", "group_caption", "wrap"]
@@ -169,7 +169,7 @@ class Drawing:
         """
         import numpy as np
 
-        from .camera import ZOOM_LEVELS, level
+        from .camera import ZOOM_LEVELS, clip_view, level, zoom_of
         from .lettering import label_box
 
         st = self.style
@@ -200,6 +200,7 @@ class Drawing:
                     rows.append((px, py, b[0] - px, b[1] - py, b[2] - px, b[3] - py))
                 arrays[lvl] = np.array(rows) if rows else np.zeros((0, 6))
             return arrays[lvl]
+        self.__dict__["_letters_at"] = letters_at  # the tags' edges keep them in view (_clear_tag_edges)
         full = self.full_view
         W, H = PLAYER_FIGURE_PX
         done: dict = {}
@@ -211,8 +212,10 @@ class Drawing:
             if v not in done:
                 x, y, w, h = v
                 cx, cy = x + w / 2, y + h / 2
-                for _ in range(EDGE_ROUNDS):
-                    z = full[2] / w
+                for _ in range(EDGE_ROUNDS):  # the level can change as the view grows, moving other letters
+                    z = zoom_of((0.0, 0.0, w, h), full)  # the window's magnification
+                    if z <= 1.0:
+                        break
                     zl = ZOOM_LEVELS[level(z)]
                     a = letters_at(level(z))
                     q = max(w / W, h / H)
@@ -228,24 +231,18 @@ class Drawing:
                     g = max(float(np.maximum(-x0[cut], x1[cut]).max()) / hw,
                             float(np.maximum(-y0[cut], y1[cut]).max()) / hh) * 1.02
                     w, h = w * g, h * g
-                    if w >= full[2] or h >= full[3]:
-                        break
-                if w >= full[2] or h >= full[3]:
+                if zoom_of((0.0, 0.0, w, h), full) <= 1.0:
                     done[v] = full
                 else:
-                    done[v] = (round(cx - w / 2, 2), round(cy - h / 2, 2), round(w, 2), round(h, 2))
+                    done[v] = v if (w, h) == (v[2], v[3]) else clip_view(cx, cy, w, h, full)
             out.append(done[v])
         return out
 
     def _clear_tag_edges(self) -> None:
         """Widen a view whose window cuts a name tag it shows (its step current or an input), as far as
         the view's zoom level allows (the tags were placed for that level)."""
-        from .camera import ZOOM_LEVELS, level, zoom_of
-        from .lettering import label_box
-
-        st, sc = self.style, self.scene
+        sc = self.scene
         full = self.full_view
-        W, H = PLAYER_FIGURE_PX
         marks: dict[int, list] = {}  # a step may tag several points (the ends S1, S2 of a perpendicular)
         for m in sc.marks:
             if m.id in self._tag_spots:
@@ -255,44 +252,81 @@ class Drawing:
         for k, v in enumerate(views, start=1):
             if v != full:
                 by_view.setdefault(v, []).append(k)
-        for v, ks in by_view.items():
-            x, y, w, h = v
-            cx, cy = x + w / 2, y + h / 2
-            lvl = level(zoom_of(v, full))
-            zl = ZOOM_LEVELS[lvl]
-            shown = [m for k in ks for s in {k} | set(self.input_steps(k)) for m in marks.get(s, ())
-                     if f" h{lvl}" not in self._tag_hidden.get(m.id, "")]
-            if not shown:
-                continue
-            q = max(w / W, h / H)
-            ls = (lambda ql: min(max(1.0, 9.5 * ql / 12.0), ql))(q * (full[2] / w) / zl)
-            grow = 1.0
-            pan = [0.0, 0.0]  # or, where growing would leave the level, the shift that takes the tag in
-            for m in shown:
-                px, py = self.vp.px(*m.geom)
-                dx, dy, _d = self._tag_spots[m.id]
-                b = label_box(px + dx, py + dy, sc.display_name(m.name), st.label_size, st.label_font,
-                              st.label_italic)
-                b = (px + ls * (b[0] - px) - cx, py + ls * (b[1] - py) - cy, px + ls * (b[2] - px) - cx,
-                     py + ls * (b[3] - py) - cy)
-                hw, hh = W * q / 2, H * q / 2
-                if b[0] < hw and b[2] > -hw and b[1] < hh and b[3] > -hh and (
-                        b[0] < -hw or b[2] > hw or b[1] < -hh or b[3] > hh):
-                    grow = max(grow, max(-b[0], b[2]) / hw * 1.02, max(-b[1], b[3]) / hh * 1.02)
-                    for i, (lo, hi, half) in enumerate(((b[0], b[2], hw), (b[1], b[3], hh))):
-                        if lo < -half:
-                            pan[i] = min(pan[i], lo + half - 1.0)
-                        elif hi > half:
-                            pan[i] = max(pan[i], hi - half + 1.0)
-            if grow > 1.0 and level(full[2] / (w * grow)) == lvl and w * grow < full[2]:
-                nv = (round(cx - w * grow / 2, 2), round(cy - h * grow / 2, 2), round(w * grow, 2), round(h * grow, 2))
-            elif grow > 1.0:
-                nv = (round(x + pan[0], 2), round(y + pan[1], 2), w, h)
-            else:
-                continue
-            for k in ks:
-                views[k - 1] = nv
+        for v0, ks in by_view.items():
+            v = v0
+            for _ in range(4):  # a view grown or shifted may take in part of another tag: again
+                nv = self._tag_edge_view(v, ks, marks)
+                if nv is None or nv == v:
+                    break
+                v = nv
+            if v != v0:
+                for k in ks:
+                    views[k - 1] = v
         self.__dict__["_views"] = views
+
+    def _tag_edge_view(self, v: tuple, ks: list[int], marks: dict) -> tuple | None:
+        """View *v* (of steps *ks*) grown or shifted to take in the tags its window cuts (None: none cut)."""
+        from .camera import ZOOM_LEVELS, clip_view, level, zoom_of
+        from .lettering import label_box
+
+        st, sc = self.style, self.scene
+        full = self.full_view
+        W, H = PLAYER_FIGURE_PX
+        x, y, w, h = v
+        cx, cy = x + w / 2, y + h / 2
+        lvl = level(zoom_of(v, full))
+        zl = ZOOM_LEVELS[lvl]
+        shown = [m for k in ks for s in {k} | set(self.input_steps(k)) for m in marks.get(s, ())
+                 if f" h{lvl}" not in self._tag_hidden.get(m.id, "")]
+        if not shown:
+            return None
+        q = max(w / W, h / H)
+        ls = (lambda ql: min(max(1.0, 9.5 * ql / 12.0), ql))(q * zoom_of(v, full) / zl)
+        grow = 1.0
+        hw, hh = W * q / 2, H * q / 2
+        own, inside, cut = [], [], []  # boxes about the view's centre: the views' own steps' tags first
+        for m in shown:
+            px, py = self.vp.px(*m.geom)
+            dx, dy, _d = self._tag_spots[m.id]
+            b = label_box(px + dx, py + dy, sc.display_name(m.name), st.label_size, st.label_font,
+                          st.label_italic)
+            b = (px + ls * (b[0] - px) - cx, py + ls * (b[1] - py) - cy, px + ls * (b[2] - px) - cx,
+                 py + ls * (b[3] - py) - cy)
+            # the views' own steps' tags are taken in wherever they stand, the inputs' where the window cuts them
+            if m.step in ks or (b[0] < hw and b[2] > -hw and b[1] < hh and b[3] > -hh):
+                (own if m.step in ks else inside if (-hw <= b[0] and b[2] <= hw and -hh <= b[1] and b[3] <= hh)
+                 else cut).append(b)
+                if b[0] < -hw or b[2] > hw or b[1] < -hh or b[3] > hh:
+                    grow = max(grow, max(-b[0], b[2]) / hw * 1.02, max(-b[1], b[3]) / hh * 1.02)
+        # the letters: none is cut by the view (_clear_edges), and none may be by the view grown or shifted
+        letters = self.__dict__.get("_letters_at")
+        boxes = [(r[0] + ls * r[2] - cx, r[1] + ls * r[3] - cy, r[0] + ls * r[4] - cx, r[1] + ls * r[5] - cy)
+                 for r in (letters(lvl) if letters is not None else ())]
+        for b in boxes:
+            if (b[0] < hw and b[2] > -hw and b[1] < hh and b[3] > -hh) and (
+                    b[0] < -hw or b[2] > hw or b[1] < -hh or b[3] > hh):
+                grow = max(grow, max(-b[0], b[2]) / hw * 1.02, max(-b[1], b[3]) / hh * 1.02)
+        if grow == 1.0:
+            return None
+        grown = (0.0, 0.0, w * grow, h * grow)
+        if level(zoom_of(grown, full)) == lvl and zoom_of(grown, full) > 1.0:
+            nv = clip_view(cx, cy, w * grow, h * grow, full)
+        else:
+            # where growing would leave the level, the shift that takes the tags in: the views' own steps'
+            # tags first, then it keeps in what it shows whole (the letters too), then the inputs' tags
+            inside += [b for b in boxes if -hw <= b[0] and b[2] <= hw and -hh <= b[1] and b[3] <= hh]
+            pan = [0.0, 0.0]
+            for i, half in ((0, hw), (1, hh)):
+                lo, hi = -math.inf, math.inf  # the shifts that keep in what is taken so far
+                for b in own + inside + cut:
+                    nlo, nhi = max(lo, b[i + 2] - half + 1.0), min(hi, b[i] + half - 1.0)
+                    if nlo <= nhi:
+                        lo, hi = nlo, nhi
+                pan[i] = min(max(0.0, lo), hi)
+            if pan == [0.0, 0.0]:
+                return None
+            nv = (round(x + pan[0], 2), round(y + pan[1], 2), w, h)
+        return nv
 
     def camera_view(self, k: int) -> tuple[float, float, float, float]:
         """Step k's view (the whole figure for k = 0 and past the end)."""
@@ -553,9 +587,25 @@ class Drawing:
             mask = (lo[:, 0] <= x1) & (hi[:, 0] >= x0) & (lo[:, 1] <= y1) & (hi[:, 1] >= y0)
             return list(map(tuple, ds.tolist())), mask.tolist()
 
+        # per level, the tags' steps seen together in some view of that level (a step and its inputs)
+        seen_with: dict[int, dict[int, set[int]]] = {}
+        if st.camera:
+            tag_steps = {m.step for m in tags}
+            for k in range(1, len(sc.steps) + 1):
+                together = ({k} | self.input_steps(k)) & tag_steps
+                mates = seen_with.setdefault(lvl_of(k), {})
+                for s_ in together:
+                    mates.setdefault(s_, set()).update(together)
+        byid = {m.id: m for m in tags}
         out: dict[str, tuple[float, float, float]] = {}
         for lvl, ms in sorted(by_level.items()):
             z, f, taken = frame(lvl)
+            # clear of the tags placed at a lower level that are seen with these at this one
+            mates_here = set().union(*(seen_with.get(lvl, {}).get(m.step, set()) for m in ms))
+            taken = taken + [label_box(pts[i][0] * z + out[i][0] * f, pts[i][1] * z + out[i][1] * f,
+                                       sc.display_name(byid[i].name), size * f, st.label_font, st.label_italic,
+                                       HALO_PX / 2 * f)
+                             for i in out if byid[i].step in mates_here and lvl in shown_at[byid[i].step]]
             items = []
             for m in ms:
                 px, py = pts[m.id]
@@ -572,7 +622,6 @@ class Drawing:
         # every level a tag is seen at: it holds its spot there, or it gives way there (class hN),
         # never stacked on a letter, a point, a result line or a tag seen with it
         hidden: dict[str, str] = {}
-        byid = {m.id: m for m in tags}
         for lvl in sorted({v for vs in shown_at.values() for v in vs}):
             z, f, taken = frame(lvl)
             here = [byid[i] for i in out if lvl in shown_at[byid[i].step]]
@@ -585,10 +634,58 @@ class Drawing:
             got = place(items, size * f, ds, self._lines_at(z, size * f), only=only,
                         font=st.label_font, italic=st.label_italic, taken=taken, keep=False, prefer=prefer,
                         halo=HALO_PX / 2 * f, reach=self.line_reach)
-            for i, _r, _s, (zx, zy), _d, _t in items:
-                spot = got.get(i)
-                if spot is None or abs(spot[0] - zx - prefer[i][0]) > 1e-6 or abs(spot[1] - zy - prefer[i][1]) > 1e-6:
-                    hidden[i] = hidden.get(i, "") + f" h{lvl}"
+            def kept(got, items) -> set[str]:
+                return {i for i, _r, _s, (zx, zy), _d, _t in items if (spot := got.get(i)) is not None
+                        and abs(spot[0] - zx - prefer[i][0]) <= 1e-6 and abs(spot[1] - zy - prefer[i][1]) <= 1e-6}
+
+            holds = kept(got, items)
+            arrays = None
+            for it in items:
+                i = it[0]
+                if i in holds:
+                    continue
+                # it lost its spot to all the tags of the level together; it holds it where it is seen only
+                # with the tags seen together with it (crank step 181: M1 gave way to tags never shown with it)
+                mates = seen_with.get(lvl, {}).get(byid[i].step, set())
+                local = [o for o in items if byid[o[0]].step in mates and (o[0] in holds or o[0] == i)]
+                if len(local) < len(items):
+                    # it holds its spot where the spot is free of the level's letters, points and result
+                    # lines (as the placer asks) and of the tags seen with it (arrays made once per level)
+                    if arrays is None:
+                        arrays = (np.array(ds, dtype=float).reshape(-1, 2),
+                                  (line_a[np.array(only, dtype=bool)] * z).reshape(-1, 4),
+                                  np.array(taken, dtype=float).reshape(-1, 4))
+                    ds, ls_, tk = arrays
+
+                    def spot_box(o):
+                        return label_box(o[3][0] + prefer[o[0]][0], o[3][1] + prefer[o[0]][1], o[5], size * f,
+                                         st.label_font, st.label_italic, HALO_PX / 2 * f)
+
+                    b = spot_box(it)
+                    rr = 0.3 * size * f
+                    e = self.line_reach
+                    free = not any(b[0] < c[2] and c[0] < b[2] and b[1] < c[3] and c[1] < b[3]
+                                   for c in (spot_box(o) for o in local if o[0] != i))
+                    free = free and not ((tk[:, 0] < b[2]) & (b[0] < tk[:, 2]) & (tk[:, 1] < b[3])
+                                         & (b[1] < tk[:, 3])).any()
+                    free = free and not ((ds[:, 0] - rr < b[2]) & (b[0] < ds[:, 0] + rr) & (ds[:, 1] - rr < b[3])
+                                         & (b[1] < ds[:, 1] + rr)).any()
+                    if free and len(ls_):
+                        # a result line crossing the box widened by the line's half width (clipped to it)
+                        p0, dv = ls_[:, :2], ls_[:, 2:] - ls_[:, :2]
+                        with np.errstate(divide="ignore", invalid="ignore"):
+                            ta = (np.array([b[0] - e, b[1] - e]) - p0) / dv
+                            tb = (np.array([b[2] + e, b[3] + e]) - p0) / dv
+                            t_in = np.nan_to_num(np.minimum(ta, tb), nan=-np.inf)
+                            t_out = np.nan_to_num(np.maximum(ta, tb), nan=np.inf)
+                        inside = (dv != 0) | ((p0 >= np.array([b[0] - e, b[1] - e])) & (p0 <= np.array([b[2] + e, b[3] + e])))
+                        t0 = np.maximum(0.0, np.where(dv != 0, t_in, -np.inf).max(axis=1))
+                        t1 = np.minimum(1.0, np.where(dv != 0, t_out, np.inf).min(axis=1))
+                        free = not ((t0 <= t1) & inside.all(axis=1)).any()
+                    if free:
+                        holds.add(i)  # the tags it is seen with after it are placed with it
+                        continue
+                hidden[i] = hidden.get(i, "") + f" h{lvl}"
         self._tag_hidden = hidden
         return out
 
@@ -763,14 +860,17 @@ class Drawing:
         return self.groups[name][:bisect.bisect_right(self._steps[name], k)]
 
     def input_steps(self, k: int) -> frozenset[int]:
-        """The steps that made what step k's instrument is set on and what its caption names."""
+        """The steps that made what step k's instrument is set on, what its caption names and what its arc is
+        struck onto (:meth:`Scene.struck_onto`)."""
         if not self.style.input_colour:
             return frozenset()
         done = self.__dict__.setdefault("_input_steps", {})  # asked by the tags' placing and by the player
         got = done.get(k)
         if got is None:
             sc = self.scene
-            got = done[k] = frozenset(s for s in (sc.step_of(n) for n in sc.inputs(k) | sc.tagged(k))
+            # and the lines its arc is struck onto (cut by the next step): drawn while it strikes it
+            got = done[k] = frozenset(s for s in (sc.step_of(n) for n in sc.inputs(k) | sc.tagged(k)
+                                                  | sc.struck_onto(k))
                                       if s is not None and s < k)
         return got
 
@@ -947,7 +1047,7 @@ class Drawing:
         """(outer, inner): ``<g>`` clipped to the drawing area holding ``<g id="camera">`` whose
         transform shows *view* on the whole drawing area (a nested ``<svg>`` would be a time
         container of its own in browsers, out of step with the animation's clock)."""
-        from .camera import level, zoom_of
+        from .camera import level
 
         f = self.doc.factory
         full = self.full_view
@@ -955,7 +1055,7 @@ class Drawing:
         clip.add(f.rect(insert=("0", "0"), size=(fmt(full[2]), fmt(full[3]))))
         outer = f.g(clip_path="url(#camera-clip)")
         outer.add(clip)
-        inner = f.g(id="camera", class_=f"zl{level(zoom_of(view, full))}", transform=camera_transform(view, full),
+        inner = f.g(id="camera", class_=f"zl{level(camera_zoom(view, full))}", transform=camera_transform(view, full),
                     **attrs)
         outer.add(inner)
         return outer, inner

@@ -14,14 +14,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Sequence
 
+from .camera import PLAYER_FIGURE_PX
 from .styles import Style
 from .svgdoc import fmt
 
-__all__ = ["Viewport", "camera_transform", "PLAYER_FIGURE_PX"]
+__all__ = ["Viewport", "camera_transform", "camera_zoom", "PLAYER_FIGURE_PX"]
 
-
-#: The most the step player shows of the figure in a 1400 × 1000 window (width, height in screen px).
-PLAYER_FIGURE_PX = (985.0, 700.0)
 @dataclass(frozen=True)
 class Viewport:
     """The map from drawing coordinates (y up) to SVG user units (y down)."""
@@ -70,11 +68,25 @@ class Viewport:
 
     def length(self, d: float) -> str:
         return fmt(d * self.scale)
+def camera_zoom(view: Sequence[float], full: Sequence[float]) -> float:
+    """How many times :func:`camera_transform` magnifies *view* to show it whole on *full*.
+
+    >>> camera_zoom((100, 50, 480, 334), (0, 0, 960, 668)), camera_zoom((0, 0, 960, 682), (0, 0, 960, 1390))
+    (2.0, 1.0)
+    """
+    return min(full[2] / max(view[2], 1e-12), full[3] / max(view[3], 1e-12))
+
+
 def camera_transform(view: Sequence[float], full: Sequence[float]) -> str:
-    """The transform that shows *view* (x, y, w, h) on the whole of *full*: translate, then scale.
+    """The transform that shows *view* (x, y, w, h) on the whole of *full*: translate, then scale; a view of
+    another shape than *full* (the player's window's) is shown whole about its centre, as the player does.
 
     >>> camera_transform((100, 50, 480, 334), (0, 0, 960, 668))
     'translate(-200 -100) scale(2)'
+    >>> camera_transform((0, 100, 960, 500), (0, 0, 960, 1390))
+    'translate(0 345) scale(1)'
     """
-    z = full[2] / view[2]
-    return f"translate({fmt(-view[0] * z)} {fmt(-view[1] * z)}) scale({fmt(z, 5)})"
+    z = camera_zoom(view, full)
+    tx = full[0] + full[2] / 2 - (view[0] + view[2] / 2) * z
+    ty = full[1] + full[3] / 2 - (view[1] + view[3] / 2) * z
+    return f"translate({fmt(tx)} {fmt(ty)}) scale({fmt(z, 5)})"

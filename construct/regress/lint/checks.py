@@ -308,7 +308,12 @@ class _Views:
         for k in _steps_of(everything):
             by_box[self.box(k)].append(k)
         out = []
-        full_w = self.sheet.viewbox[2]
+        # the whole figure the camera moves over (its widest and tallest view: the first step's is the whole
+        # drawing, without the caption), and its user units per screen pixel in the window
+        ww, wh = player_window(self.screen)
+        cams = list(self.cameras.values())
+        fw, fh = max(c[2] - c[0] for c in cams), max(c[3] - c[1] for c in cams)
+        q_whole = max(fw / ww, fh / wh)
         for b, ks in by_box.items():
             q = 1.0 / self.scale(ks[0])
             if not self.player:
@@ -318,7 +323,7 @@ class _Views:
             w, h = player_window(self.screen)
             cx, cy = (b[0] + b[2]) / 2, (b[1] + b[3]) / 2
             seen = (cx - w * q / 2, cy - h * q / 2, cx + w * q / 2, cy + h * q / 2)
-            zoom = full_w / max(b[2] - b[0], 1e-12)
+            zoom = q_whole / q  # how many times the window shows the view larger than the whole figure
             level = zoom_level(zoom, self.sheet.levels)
             out.append(_Layout(_runs(ks), seen, q, level, player_letter_scale(q, zoom, self.sheet.levels[level]), q))
         return out

@@ -300,3 +300,26 @@ def test_player_camera_keeps_letters_on_their_points(browser, tmp_path):
     # letters move only where a zoom level placed them again (never all of them)
     assert moved < len(common)
     page.close()
+
+
+LEADERS_WITHOUT_LETTER_JS = """() => Array.from(document.querySelectorAll('#figure line.leader'))
+  .filter(ln => ln.getClientRects().length && getComputedStyle(ln).display !== 'none')
+  .filter(ln => !Array.from(ln.parentNode.querySelectorAll('text'))
+                    .some(t => t.getClientRects().length && getComputedStyle(t).display !== 'none'))
+  .map(ln => ln.parentNode.id)"""
+
+
+def test_no_leader_line_is_drawn_without_its_letter(browser, tmp_path):
+    """A leader ties a letter to its point: where the letter is not shown (a name tag after its step, a letter
+    that gives way at a zoom level) its leader is not drawn either -- at every step of a crowded figure."""
+    c = get("tangential-pressure")
+    fig = c.figure(parts=6)
+    write_replay(c, fig, tmp_path, style="teaching", frames="none")
+    page = browser.new_page(viewport={"width": 1400, "height": 1000})
+    page.goto((tmp_path / "player.html").as_uri())
+    n = int(page.eval_on_selector("#slider", "s => s.max"))
+    for k in sorted({1, n // 4, n // 2, 3 * n // 4, n - 1, n}):
+        page.eval_on_selector("#slider", f"(s) => {{ s.value = {k}; s.dispatchEvent(new Event('input')); }}")
+        page.wait_for_timeout(450)  # the camera's glide (350 ms)
+        assert page.evaluate(LEADERS_WITHOUT_LETTER_JS) == [], f"step {k}"
+    page.close()

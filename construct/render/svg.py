@@ -803,8 +803,9 @@ class Drawing:
             cx, cy = dx, dy - 0.35 * st.label_size
             n = math.hypot(cx, cy) or 1.0
             a, b = 0.25 * st.label_size, n - 0.75 * st.label_size
+            # a name tag's leader is shown and hidden with its tag (the style shows tags at their step only)
             inner.add(f.line(start=(fmt(a * cx / n), fmt(a * cy / n)), end=(fmt(b * cx / n), fmt(b * cy / n)),
-                             class_="leader"))
+                             class_="leader tag" if "tag" in cls.split() else "leader"))
         if halo:
             inner.add(f.text(text, class_=f"{cls} halo", **xy))
         inner.add(f.text(text, class_=cls, **ids, **xy))

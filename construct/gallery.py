@@ -265,18 +265,26 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
             context = multiprocessing.get_context("fork" if "fork" in methods else None)
             with concurrent.futures.ProcessPoolExecutor(min(workers, len(jobs)), mp_context=context,
                                                         initializer=_worker_init, initargs=(os.getpid(),)) as pool:
+                ours: list[Any] = []  # the pool's worker processes, once forked
                 try:
                     # the long ones first (each result goes to its own place in plan order)
                     order = sorted(range(len(jobs)), key=lambda i: not _first_of_its_construction(*jobs[i][1:3]))
+                    before = set(multiprocessing.active_children())
                     with _signals_held():  # the workers are forked here
                         futures = {pool.submit(_build_and_check, root, *jobs[i]): i for i in order}
+                    ours = [p for p in multiprocessing.active_children() if p not in before]
                     sources = _errata_sources()  # read while the workers build (the index shows them)
                     for fut in concurrent.futures.as_completed(futures):
                         bar.step(jobs[futures[fut]][1])
                     by_job = {i: fut.result() for fut, i in futures.items()}
                     results = [by_job[i] for i in range(len(jobs))]
                 except BaseException:
-                    # interrupted or failed: the figures not yet begun are not built for nothing
+                    # interrupted or failed: the figures not yet begun are not built for nothing, and the
+                    # ones being built are stopped -- a live player's sweep takes minutes, and Ctrl-C or
+                    # SIGTERM must not wait for it (SIGTERM ends a worker: _worker_init)
+                    for worker in ours:
+                        if worker.is_alive():
+                            worker.terminate()
                     pool.shutdown(wait=True, cancel_futures=True)
                     raise
         else:

@@ -230,7 +230,9 @@ def test_a_full_disk_behind_stdout_is_one_line(tmp_path):
 
 @pytest.fixture
 def small_plan(monkeypatch):
+    """A gallery of one small figure without a live player's sweep: these tests are about the folder."""
     monkeypatch.setattr(gallery, "gallery_plan", lambda: [("crank", {"parts": 3, "rod_ratio": 4.0})])
+    monkeypatch.setattr(gallery, "LIVE_PLAYERS", ())
 
 
 def _failing_writes(monkeypatch, after: int):
@@ -438,6 +440,7 @@ def _replay_writer(tmp_path, monkeypatch):
 def _gallery_writer(tmp_path, monkeypatch):
     def write(out, parts):
         monkeypatch.setattr(gallery, "gallery_plan", lambda: [("crank", {"parts": parts, "rod_ratio": 4.0})])
+        monkeypatch.setattr(gallery, "LIVE_PLAYERS", ())  # the folder is the point, not the live sweep
         gallery.build_gallery(out, workers=1)
     return write
 

@@ -62,7 +62,8 @@ def test_the_limits_leave_the_gallerys_titles_whole():
         for lang in ("de", "en"):
             lines = re.findall(rf'class="cap {lang}[^"]*"[^>]*>([^<]*)<', text)
             longest = max(longest, len(" ".join(lines)))
-    assert 300 < longest < TITLE_LIMIT / 2
+    # the compound engine's caption names both cylinders' diagrams (529 characters): 40 % to spare
+    assert 300 < longest < 0.6 * TITLE_LIMIT
 
 
 def test_wrap_gives_textwraps_lines_for_every_gallery_caption():

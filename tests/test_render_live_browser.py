@@ -220,3 +220,30 @@ def test_letters_stay_with_their_points(browser, live_player):
         assert len(off) > 10 and max(off) <= 1.0, (v, max(off))
     assert not errors, errors
     page.close()
+
+
+def test_angles_read_off_the_figure_are_shown_at_the_built_value_only(browser, tmp_path):
+    """crank-angle letters each crank with the angle AOW read off the replayed figure (61°19′).  Between grid
+    values a blend of two readings would print minutes the figure does not have, so the page shows them at the
+    built value only, and says so; the plain letters stay.  The readings are found by the sweep itself: they
+    are the labels whose protocol text reads an angle ("{∠A O B}")."""
+    c = get("crank-angle")
+    fig = c.figure(rod_ratio=4.0)
+    write_replay(c, fig, tmp_path, style="teaching", frames="none")
+    live = live_sweep(c, fig, "rod_ratio", max_values=12)  # a coarse grid: the readings are the point here
+    reads = {name for s in fig.protocol.steps for name, text in s.labels if "{∠" in text}
+    assert reads and {i.split("-")[1] for i in live.readings} == reads
+    path = tmp_path / "live.html"
+    path.write_text(with_live((tmp_path / "player.html").read_text(), live_data(live)))
+    page, errors = _open(browser, path)
+    shown = """ids => ids.map(id => { const t = document.getElementById(id);
+                                    return !!t && t.getClientRects().length > 0 && getComputedStyle(t).display !== 'none'; })"""
+    letters = [f"{i}" for i in live.readings] + ["s0001-O-label"]
+    assert all(page.evaluate(shown, letters))
+    page.evaluate("v => window.constructLive.set(v)", 6.5)
+    assert page.evaluate(shown, letters) == [False] * len(live.readings) + [True]
+    assert "beim Buchwert" in page.inner_text("#live")
+    page.evaluate("v => window.constructLive.set(v)", 4.0)
+    assert all(page.evaluate(shown, letters))
+    assert errors == []
+    page.close()

@@ -118,7 +118,8 @@ def drawn_numbers(page: str) -> tuple[list[tuple[str, str, str]], list[float], d
     """The geometry of a player page's figure: ((element id, attribute, template), ...) and the numbers in order.
 
     Every element with an id, the figure's view box and, when the page has the player's data, each step's
-    magnified view (key ``("#zoom", k, ...)``).
+    magnified view (key ``("#zoom", k, ...)``).  The third value holds the text of every lettered element by
+    id (``texts``): a letter that is a measured value (an angle read off the figure) changes with the given.
 
     >>> keys, nums, _ = drawn_numbers('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 5">'
     ...                               '<circle id="p" cx="1.5" cy="2" r="3"/></svg>')
@@ -129,8 +130,11 @@ def drawn_numbers(page: str) -> tuple[list[tuple[str, str, str]], list[float], d
     root = ET.fromstring(svg)
     keys: list[tuple[str, str, str]] = []
     nums: list[float] = []
+    texts: dict[str, str] = {}
     for e in root.iter():
         ident = e.get("id") or ""
+        if ident and e.tag.rsplit("}", 1)[-1] == "text":
+            texts[ident] = "".join(e.itertext())
         if e is not root and (not ident or ident == "ring"):  # the ring is the player's (the page moves it)
             continue
         for a in _GEOMETRY:
@@ -154,7 +158,7 @@ def drawn_numbers(page: str) -> tuple[list[tuple[str, str, str]], list[float], d
             j = st.get(index, -1)
             nums.extend(float(x) for x in data[boxes][j]) if j >= 0 else nums.extend(full)
 
-    return keys, nums, {}
+    return keys, nums, {"texts": texts}
 
 
 _ARC = "M# #A# # # # # # #"
@@ -233,6 +237,9 @@ class LiveSweep:
     checks: list[list[list[Any]]] = field(default_factory=list)
     #: Elements whose geometry is not interpolated (their form changes across the domain): shown at the built value.
     fixed: list[str] = field(default_factory=list)
+    #: Letters whose text changes with the given (readings of the figure, e.g. the angle AOW): shown at the
+    #: built value only.
+    readings: list[str] = field(default_factory=list)
     #: Marks drawn from the nearer grid value (they jump inside the domain: an arc drawn the other way round).
     snapped: list[tuple[str, str, str]] = field(default_factory=list)
     #: The grid in log10 of the given, exactly as refined (a cell (a, b) was split at (a + b) / 2), and how
@@ -263,8 +270,8 @@ def _frames(construction: Construction, figure: Figure, given: str, values: np.n
     out = []
     for i in range(len(values)):
         page, fit = draw(Figure(figure.protocol, replay.take(i), construction.check))
-        keys, nums, _ = drawn_numbers(page)
-        out.append((keys, nums, fit))
+        keys, nums, extra = drawn_numbers(page)
+        out.append((keys, nums, fit, extra["texts"]))
     return out, replay
 
 
@@ -352,11 +359,16 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
             at += n
         rows.append([x for k in keys for x in pos[k]])
     fixed = sorted({k[0] for u in us for k in data[u][0] if k not in shared})
+    # letters whose text is not the same at every grid value: values read off the figure (an angle in degrees
+    # and minutes); a blend of two grid values' readings would print minutes the figure does not have
+    idents = set().union(*(data[u][3] for u in us))
+    # (a letter left out at some values -- no room there -- is not one of them)
+    varying = sorted(i for i in idents if len({data[u][3][i] for u in us if i in data[u][3]}) > 1)
     first = data[us[0]][0]
     snapped = [k for i, k in enumerate(first) if i in snap and k in shared]
     grid = values(us)
     live = LiveSweep(given, symbol, domain, initial, grid, keys, np.asarray(rows, dtype=float), bound, jumps,
-                     fixed=fixed, snapped=snapped, u=np.asarray(us, dtype=float), start=start,
+                     fixed=fixed, snapped=snapped, u=np.asarray(us, dtype=float), start=start, readings=varying,
                      # the fit travels as float32: the columns are checked against the drawing through it
                      fit=np.asarray([data[u][2] for u in us], dtype=np.float32).astype(float))
     live.checks = _checks(construction, figure, given, grid)
@@ -607,6 +619,7 @@ def live_data(live: LiveSweep) -> dict[str, Any]:
             "jumps": sorted(where[float(a)] for a, _ in live.jumps)}
     return {"given": live.given, "symbol": live.symbol, "low": live.domain.low, "high": live.domain.high,
             "initial": live.initial, "rows": int(live.drawn.shape[0]), "cols": int(live.drawn.shape[1]),
+            **({"readings": live.readings} if live.readings else {}),
             **encode(live), "bound": round(live.bound + QUANTUM_PX / 2, 3),
             "meta_z": _deflated(meta), "checks_z": _deflated(_check_table(live))}
 

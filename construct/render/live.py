@@ -49,11 +49,16 @@ def with_live(page: str, data: Mapping[str, Any]) -> str:
                 f'Gegebenen bleiben beim Buchwert. / Only {sym} moves here; the other givens stay at the book’s '
                 f'values: a second slider would need the sweep over both givens together, and the number of '
                 f'parts changes the steps themselves.</div>'
-                f'<details open><summary>Prüfungen / checks <span id="live-at"></span></summary>'
-                f'<div style="max-height:28vh;overflow:auto"><table id="live-checks" style="border-collapse:collapse;'
-                f'font-size:12px;font-variant-numeric:tabular-nums"><thead><tr><th>Größe / quantity</th>'
-                f'<th>konstruiert</th><th>Formel</th><th>Fehler</th><th></th></tr></thead><tbody></tbody></table>'
-                f'</div></details></section>\n')
+                # a reading (an angle read off the figure, to the minute) blended between grid values would
+                # print minutes the figure does not have
+                + ('<div class="live-readings" style="color:#777;font-size:12px">Abgelesene Werte (Winkel) '
+                   'stehen nur beim Buchwert. / Values read off the figure (angles) are shown at the book’s '
+                   'value only.</div>' if data.get("readings") else '')
+                + '<details open><summary>Prüfungen / checks <span id="live-at"></span></summary>'
+                '<div style="max-height:28vh;overflow:auto"><table id="live-checks" style="border-collapse:collapse;'
+                'font-size:12px;font-variant-numeric:tabular-nums"><thead><tr><th>Größe / quantity</th>'
+                '<th>konstruiert</th><th>Formel</th><th>Fehler</th><th></th></tr></thead><tbody></tbody></table>'
+                '</div></details></section>\n')
     # under the figure's caption, in the stage (the side panel scrolls with the step list)
     aside = page.index("<aside>")
     at = page.rindex("</div>", 0, aside)
@@ -86,7 +91,7 @@ LIVE_SCRIPT = r"""
     return new Response(stream).arrayBuffer();
   }
   var rows = L.rows, cols = L.cols, U = L.ucols, D = null, slots = [], followers = [], pts = [], LIST = "zooms", IDX = "z", player = null, zoomAt = [], ringAt = [], cur = null, zooms = null;
-  var colmap = null, isFlag = null, moving = null, fullSlot = null, shownStep = Infinity, doneTo = -1;
+  var colmap = null, isFlag = null, moving = null, fullSlot = null, shownStep = Infinity, doneTo = -1, readings = [];
   function expand(buf){
     // live.py encode: the column map, each stored column's kind (drawn, or the construction's x, y, length
     // through the grid value's fit to the view), its kept grid values (bits), the fits, the first values,
@@ -195,6 +200,11 @@ LIVE_SCRIPT = r"""
       add(t, owned(t) || nearest(x, y));
     });
     followers.sort(function(a, b){ return a.step - b.step; });
+    // letters that are readings of the figure (an angle read off it): true at the built value only
+    (L.readings || []).forEach(function(id){
+      var t = document.getElementById(id);
+      if (t) readings.push(t.closest("g.lbg") || t);
+    });
     // the ring of a step (round its mark where that is small on the screen) follows the nearest point
     if (player) player.data.steps.forEach(function(st, i){
       var p = st.r ? nearest(st.r[0], st.r[1]) : null;
@@ -294,6 +304,7 @@ LIVE_SCRIPT = r"""
     // the broken axis's marks belong to the built value's break; elsewhere the break lies elsewhere or nowhere
     var furniture = document.getElementById("furniture"), shown = Math.abs(u - Math.log10(L.initial)) < 1e-9 ? "" : "none";
     if (furniture && furniture.style.display !== shown) furniture.style.display = shown;
+    for (var j = 0; j < readings.length; j++) if (readings[j].style.display !== shown) readings[j].style.display = shown;
     api.value = value;
     var said = book(value);
     if (out.textContent !== said) { out.textContent = said; retitle(value); }

@@ -99,7 +99,7 @@ def test_tabelle_2_angles_reproduced_at_the_books_precision(ratio):
             assert abs(diff) <= 0.5, (ratio, j, diff)
 
 
-# -- the teaching finals show the results (issue 16) ------------------------------------------
+# -- the teaching finals show the results -----------------------------------------------------
 
 
 def _final(tmp_path, *args):

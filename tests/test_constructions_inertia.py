@@ -216,7 +216,7 @@ def test_table_step_must_divide_180():
 
 
 def test_crank_circle_stays_in_the_teaching_views():
-    """Issue 16: the crank circle faded after the frame's group (step 7), leaving the crank points 1...17 and
+    """The crank circle faded after the frame's group (step 7), leaving the crank points 1...17 and
     their ordinates in the air for the remaining 900 steps and in the last frame.  It stays, and every crank
     point is on it; the plate still shows what the book plate shows."""
     from construct.render.output import scene_for

@@ -348,7 +348,7 @@ def test_table_dead_centre_option(capsys):
 
 
 def test_no_view_cuts_a_letter_of_the_stroke_line(tmp_path):
-    """Issue 16: at steps 620-624 (crank position 20 of the infinite rod, § 146's start at B1) the player's
+    """At steps 620-624 (crank position 20 of the infinite rod, § 146's start at B1) the player's
     window cut the letter 4′ in half: widening the view took in one piston position's letter per round and
     cut the next along the row 3′…11′, and the widening stopped after six rounds."""
     from construct.regress.lint import lint_path
@@ -361,7 +361,7 @@ def test_no_view_cuts_a_letter_of_the_stroke_line(tmp_path):
 
 
 def test_work_line_steps_are_captioned_in_the_figures_letters():
-    """Issue 16: 'iU19 im Schnitt von Gerade durch W₀ und dem Kreis um iE18' -- the steps that find U on the
+    """'iU19 im Schnitt von Gerade durch W₀ und dem Kreis um iE18' -- the steps that find U on the
     work line and V on the speed scale named the internal objects; they say U19, V0 as the text does."""
     import re
 
@@ -373,7 +373,7 @@ def test_work_line_steps_are_captioned_in_the_figures_letters():
 
 
 def test_the_work_line_keeps_its_marks_while_the_work_is_stepped_on():
-    """Issue 16: at step 620 (crank position 20 of the infinite rod) the work line and the works E1...E19
+    """At step 620 (crank position 20 of the infinite rod) the work line and the works E1...E19
     stepped on before had faded with their finished groups: the student saw one arc and one point in empty
     paper.  The work line is one stage: it keeps its marks until every crank position is stepped on."""
     from construct.render.output import scene_for

@@ -1,4 +1,4 @@
-"""The whole engine (issue 17): Baumann's force on the return stroke, compound engines with their own
+"""The whole engine: Baumann's force on the return stroke, compound engines with their own
 high- and low-pressure diagrams, J from a card, the flywheel from a card.
 
 References, never this code's output: Baumann's idealised diagram (seed 004: admission line to the

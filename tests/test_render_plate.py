@@ -137,7 +137,7 @@ def test_stroke_fraction_plate_fills_its_sheet():
 
 
 def test_two_sided_piston_force_plate_is_a_landscape_sheet_legible_at_1400_by_1000():
-    """Issue 16: stacked in portrait, the four diagrams came out at 7.8 px letters and the scale's 0 sat on the
+    """Stacked in portrait, the four diagrams came out at 7.8 px letters and the scale's 0 sat on the
     base line.  Laid out as a book sets a cover-side and a crank-side diagram: side by side, no diagram over
     another, every ordinate as long as the construction made it, the letters at 9 px or more."""
     from construct.regress.lint import lint_svg

@@ -215,8 +215,10 @@ def _work(b: Builder, part: _Part, speed: _Speed, W_at: tuple[float, float], n: 
         # stepped on (a finished group collapses, and each position alone would take the line's marks with it)
         with b.group("the work line: both pistons' paths and the mean work stepped on",
                      "Arbeitslinie: Wege beider Kolben und mittlere Arbeit abgetragen"):
+            # the second diagram's work line (the infinite rod beside the finite one) starts at W0′: two
+            # points lettered alike would send the student to the wrong line
             W0 = b.given_point(f"{tag}W0", W_at[0], W_at[1], unit="r", de="Anfang W0 der Arbeitslinie",
-                               en="start W0 of the work line", label="W₀")
+                               en="start W0 of the work line", label="W₀′" if tag else "W₀")
             wl = b.given_line(f"{tag}work", W0, angle_deg=0.0, de="Arbeitslinie", en="work line")
             back = b.circle_radius(f"{tag}M0.k", W0, speed.lead, de="r/g hinter W0", en="r/g behind W0")
             means = [b.intersect(f"{tag}M0", wl, back, rule=("toward", W0, None, -1.0, 0.0),

@@ -272,7 +272,8 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
                     before = set(multiprocessing.active_children())
                     with _signals_held():  # the workers are forked here
                         futures = {pool.submit(_build_and_check, root, *jobs[i]): i for i in order}
-                    ours = [p for p in multiprocessing.active_children() if p not in before]
+                        # known before a held signal comes in (at the end of this block), so that it stops them
+                        ours = [p for p in multiprocessing.active_children() if p not in before]
                     sources = _errata_sources()  # read while the workers build (the index shows them)
                     for fut in concurrent.futures.as_completed(futures):
                         bar.step(jobs[futures[fut]][1])

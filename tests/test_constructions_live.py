@@ -142,3 +142,15 @@ def test_the_checks_travel_evenly_over_the_slider(crank_live):
     u = np.log10(inflated(live_data(live)["checks_z"])["check_values"])
     grid_gap = np.diff(np.log10(live.grid)).max()
     assert np.diff(u).max() <= max(2 * (u[-1] - u[0]) / 47, grid_gap) + 1e-12
+
+
+def test_the_live_data_is_the_same_bytes_on_every_build():
+    """A gallery is rebuilt byte for byte (tests/test_gallery.py), its live players too: the sweep, its
+    refinement and the encoding depend on nothing but the figure (a coarse grid: the bytes are the point)."""
+    import json
+
+    c = get("crank")
+    fig = c.figure(parts=3, rod_ratio=4.0)
+    first, again = (json.dumps(live_data(live_sweep(c, fig, "rod_ratio", max_values=16)), sort_keys=True)
+                    for _ in range(2))
+    assert first == again and len(first) > 1000

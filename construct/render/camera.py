@@ -169,16 +169,6 @@ def _union(a: Box | None, b: Box | None) -> Box | None:
     return (min(a[0], b[0]), min(a[1], b[1]), max(a[2], b[2]), max(a[3], b[3]))
 
 
-def _depth(a: tuple[str, ...], b: tuple[str, ...]) -> int:
-    """How many enclosing groups two group paths share (0: they part at the top)."""
-    d = 0
-    for p, q in zip(a, b):
-        if p != q:
-            break
-        d += 1
-    return d
-
-
 class Framing:
     """How a region of the canvas is framed: the view round it, in the shape of the player's *window*.
 
@@ -433,6 +423,3 @@ def views_box(views: Sequence[View], full: View) -> View:
     y = min(max((y0 + y1) / 2 - h / 2, 0.0), full[3] - h)
     return (round(x, 2), round(y, 2), round(w, 2), round(h, 2))
 
-
-def same_view(a: Sequence[float], b: Sequence[float]) -> bool:
-    return all(abs(p - q) < 0.005 for p, q in zip(a, b))

@@ -32,12 +32,13 @@ from typing import Any, Sequence
 
 from . import svgdoc
 from .captions import TITLE_LIMIT, displayed
+from .camera import PLAYER_FIGURE_PX, THIN_FROM, ZOOM_LEVELS, clip_view, level, step_views, zoom_of
 from .lettering import HALO_PX, LEADER_FROM
 from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
 from .scene import Mark, MarkKind, Scene, label_offset_direction
 from .styles import PLAIN, Style
 from .svgdoc import fmt
-from .viewport import PLAYER_FIGURE_PX, Viewport, camera_transform, camera_zoom
+from .viewport import Viewport, camera_transform, camera_zoom
 from .wrapping import wrap as wrap_chars
 
 __all__ = ["render_svg", "Drawing", "step_caption", "group_caption", "wrap"]
@@ -146,8 +147,6 @@ class Drawing:
         """The camera view of every step (:func:`construct.render.camera.step_views`), computed once."""
         got = self.__dict__.get("_views")
         if got is None:
-            from .camera import step_views
-
             n = len(self.scene.steps)
             got = (self._clear_edges(step_views(self.scene, self.full_view, self.scene.bbox, self.vp.px,
                                                 self.vp.scale, collapse=self.style.done_opacity <= 0.0))
@@ -169,12 +168,9 @@ class Drawing:
         """
         import numpy as np
 
-        from .camera import ZOOM_LEVELS, clip_view, level, zoom_of
         from .lettering import label_box
 
         st = self.style
-        from .camera import THIN_FROM
-
         marks = [m for m in self.scene.marks if m.kind is MarkKind.POINT and m.label and m.id in self._spots]
         if not marks:
             return views
@@ -266,7 +262,6 @@ class Drawing:
 
     def _tag_edge_view(self, v: tuple, ks: list[int], marks: dict) -> tuple | None:
         """View *v* (of steps *ks*) grown or shifted to take in the tags its window cuts (None: none cut)."""
-        from .camera import ZOOM_LEVELS, clip_view, level, zoom_of
         from .lettering import label_box
 
         st, sc = self.style, self.scene
@@ -343,8 +338,6 @@ class Drawing:
         return done[k]
 
     def _ring(self, k: int) -> tuple[float, float, float] | None:
-        from .camera import zoom_of
-
         spans = self.__dict__.get("_mark_spans")
         if spans is None:
             spans = self.__dict__["_mark_spans"] = {}
@@ -418,7 +411,6 @@ class Drawing:
         if thin and st.camera:
             # the letters the whole figure has no room for, placed for the magnified views
             # (from zoom level THIN_FROM on): points twice as far apart, letters at their size
-            from .camera import THIN_FROM, ZOOM_LEVELS
             from .lettering import label_box
 
             z = ZOOM_LEVELS[THIN_FROM]
@@ -455,7 +447,6 @@ class Drawing:
         #id>*{transform:scale(..) translate(..)}``), one with no room hides there
         (class ``hN``): a magnified view never stacks letters either.
         """
-        from .camera import THIN_FROM, ZOOM_LEVELS
         from .lettering import place
 
         st = self.style
@@ -512,8 +503,8 @@ class Drawing:
         if not tags:
             return {}
         if st.camera:
-            from .camera import THIN_FROM, ZOOM_LEVELS, level, zoom_of
-        else:
+            from .camera import THIN_FROM, ZOOM_LEVELS
+        else:  # the one level of an unmagnified figure (local names: the function reads them either way)
             ZOOM_LEVELS, THIN_FROM = (1.0,), 0
         span = sc.bbox[2] - sc.bbox[0]
         # a tag is seen while its step is current and where its step is an input: it is placed at the
@@ -1048,8 +1039,6 @@ class Drawing:
         """(outer, inner): ``<g>`` clipped to the drawing area holding ``<g id="camera">`` whose
         transform shows *view* on the whole drawing area (a nested ``<svg>`` would be a time
         container of its own in browsers, out of step with the animation's clock)."""
-        from .camera import level
-
         f = self.doc.factory
         full = self.full_view
         clip = f.clipPath(id="camera-clip")

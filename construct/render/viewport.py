@@ -14,11 +14,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Sequence
 
-from .camera import PLAYER_FIGURE_PX
 from .styles import Style
 from .svgdoc import fmt
 
-__all__ = ["Viewport", "camera_transform", "camera_zoom", "PLAYER_FIGURE_PX"]
+__all__ = ["Viewport", "camera_transform", "camera_zoom"]
 
 @dataclass(frozen=True)
 class Viewport:

@@ -6,6 +6,9 @@
   objects of the suite, and three tests read each.
 * ``cli(*argv)``: ``construct``'s command line run in this process; the exit
   code and what it printed on stdout and stderr.
+* ``small_plan``: ``construct gallery`` builds one small figure without a live
+  player's sweep, for the tests about the gallery's folder (tests/test_gallery.py
+  has its own, with the sweep).
 """
 
 from __future__ import annotations
@@ -25,6 +28,15 @@ class Run(NamedTuple):
     code: int
     out: str
     err: str
+
+
+@pytest.fixture
+def small_plan(monkeypatch):
+    """A gallery of one small figure without a live player's sweep: a build takes a moment."""
+    import construct.gallery as gallery
+
+    monkeypatch.setattr(gallery, "gallery_plan", lambda: [("crank", {"parts": 3, "rod_ratio": 4.0})])
+    monkeypatch.setattr(gallery, "LIVE_PLAYERS", ())
 
 
 @pytest.fixture

@@ -228,13 +228,6 @@ def test_a_full_disk_behind_stdout_is_one_line(tmp_path):
     assert "File too large" in proc.stderr and "Traceback" not in proc.stderr
 
 
-@pytest.fixture
-def small_plan(monkeypatch):
-    """A gallery of one small figure without a live player's sweep: these tests are about the folder."""
-    monkeypatch.setattr(gallery, "gallery_plan", lambda: [("crank", {"parts": 3, "rod_ratio": 4.0})])
-    monkeypatch.setattr(gallery, "LIVE_PLAYERS", ())
-
-
 def _failing_writes(monkeypatch, after: int):
     """write_text raises ENOSPC after *after* files (in this process and in forked gallery workers)."""
     import errno

@@ -30,13 +30,6 @@ REPO = Path(__file__).resolve().parents[1]
 ROOT = os.geteuid() == 0 if hasattr(os, "geteuid") else False
 
 
-@pytest.fixture
-def small_plan(monkeypatch):
-    """A gallery of one small figure without a live player's sweep, so that a build takes a moment."""
-    monkeypatch.setattr(gallery, "gallery_plan", lambda: [("crank", {"parts": 3, "rod_ratio": 4.0})])
-    monkeypatch.setattr(gallery, "LIVE_PLAYERS", ())
-
-
 def refused(code: int, err: str) -> bool:
     """Exit 2 with exactly one line on stderr and no traceback."""
     lines = err.strip().splitlines()

@@ -41,7 +41,7 @@ from .svgdoc import fmt
 from .viewport import Viewport, camera_transform, camera_zoom
 from .wrapping import wrap as wrap_chars
 
-__all__ = ["render_svg", "Drawing", "step_caption", "group_caption", "wrap"]
+__all__ = ["render_svg", "Drawing", "step_caption", "group_caption", "wrap", "mark_geometry"]
 
 
 def wrap(text: str, width_px: float, size: float) -> list[str]:
@@ -742,10 +742,10 @@ class Drawing:
         ids = {"id": mid} if mid else {}
         st = self.style
         f = self.doc.factory
+        shapes = mark_geometry(m, vp, st)
         if m.kind is MarkKind.POINT:
-            aux = m.role == "auxiliary" or ("." in m.name and not m.label)
-            r = st.aux_point_radius if aux else st.point_radius
-            yield "points", f.circle(center=vp.xy(*m.geom), r=fmt(r), class_=f"pt {cls}", **ids)
+            a = shapes[0][2]
+            yield "points", f.circle(center=(a["cx"], a["cy"]), r=a["r"], class_=f"pt {cls}", **ids)
             tag = self._tag_spots.get(m.id) if vp is self.vp else None
             if tag is not None:
                 # Shown only while its step is current or an input (CSS), placed clear of the letters.
@@ -766,17 +766,14 @@ class Drawing:
                     extra = extra.replace(" lbm", "")
                     yield "labels", self._letter(vp, m, rel, m.label, "lb", lid, extra=extra, gid=gid)
             return
-        g = m.geom
         if m.kind.stroked:
             layer = "results" if m.role == "result" else "construction"
-            yield layer, _STROKES[m.kind](f, vp, m, {"class_": cls, **ids})
-        else:  # an area
-            yield "areas", f.path(d=polygon_path(vp, g), class_=f"area {cls}", **ids)
-            if st.hatch:
-                d = hatch_path(vp, g, st.hatch_spacing, *(() if m.hatch is None else (m.hatch,)))
-                if d:
-                    hid = {"id": f"{mid}-hatch"} if mid else {}
-                    yield "areas", f.path(d=d, class_="hatch", **hid)
+            yield layer, _STROKES[m.kind](f, shapes[0][2], {"class_": cls, **ids})
+        else:  # an area, and its hatching if the style hatches and the lines meet it
+            yield "areas", f.path(d=shapes[0][2]["d"], class_=f"area {cls}", **ids)
+            for _, _, a in shapes[1:]:
+                hid = {"id": f"{mid}-hatch"} if mid else {}
+                yield "areas", f.path(d=a["d"], class_="hatch", **hid)
 
     def _letter(self, vp: Viewport, m: Mark, rel: tuple[float, float, float], text: str, cls: str,
                 ids: dict, *, halo: bool = True, extra: str = "", gid: dict | None = None) -> Any:
@@ -1125,12 +1122,52 @@ class Drawing:
 
 
 #: The SVG element of a mark the pen draws as one line, by kind: (factory, viewport, mark, attributes) -> element.
+#: The svgwrite element of a stroked mark from its geometry's attributes (:func:`mark_geometry`).
 _STROKES: dict[MarkKind, Any] = {
-    MarkKind.SEGMENT: lambda f, vp, m, kw: f.line(start=vp.xy(*m.geom[:2]), end=vp.xy(*m.geom[2:4]), **kw),
-    MarkKind.CIRCLE: lambda f, vp, m, kw: f.circle(center=vp.xy(*m.geom[:2]), r=vp.length(m.geom[2]), **kw),
-    MarkKind.ARC: lambda f, vp, m, kw: f.path(d=arc_path(vp, *m.geom), **kw),
-    MarkKind.CURVE: lambda f, vp, m, kw: f.path(d=(polyline_path if m.straight else curve_path)(vp, m.geom), **kw),
+    MarkKind.SEGMENT: lambda f, a, kw: f.line(start=(a["x1"], a["y1"]), end=(a["x2"], a["y2"]), **kw),
+    MarkKind.CIRCLE: lambda f, a, kw: f.circle(center=(a["cx"], a["cy"]), r=a["r"], **kw),
+    MarkKind.ARC: lambda f, a, kw: f.path(d=a["d"], **kw),
+    MarkKind.CURVE: lambda f, a, kw: f.path(d=a["d"], **kw),
 }
+
+
+def mark_geometry(m: Mark, vp: Viewport, style: Style) -> list[tuple[str, str, dict[str, str]]]:
+    """What a mark draws on the canvas *vp*, without its letter: (id suffix, element, {attribute: text}).
+
+    The one place that turns a mark's geometry into SVG attributes: the :class:`Drawing` builds its
+    elements from it, and the live player's sweep (:mod:`construct.constructions.live`) reads the same
+    numbers at every grid value of a given without laying out a whole page.  An area is its outline and,
+    when the style hatches it and the hatching meets it, a second element (suffix ``-hatch``).
+
+    >>> vp = Viewport(0.0, 1.0, 10.0, 20.0, 20.0, 0.0)
+    >>> seg = Mark("s", 1, "g", MarkKind.SEGMENT, (0.0, 0.0, 1.0, 1.0), "construction", "straightedge", "exact")
+    >>> mark_geometry(seg, vp, PLAIN)
+    [('', 'line', {'x1': '0', 'y1': '10', 'x2': '10', 'y2': '0'})]
+    >>> pt = Mark("p", 1, "P", MarkKind.POINT, (0.5, 0.5), "result", "compass", "exact")
+    >>> mark_geometry(pt, vp, PLAIN)
+    [('', 'circle', {'cx': '5', 'cy': '5', 'r': '2'})]
+    """
+    g, kind = m.geom, m.kind
+    if kind is MarkKind.POINT:
+        aux = m.role == "auxiliary" or ("." in m.name and not m.label)
+        x, y = vp.xy(*g)
+        return [("", "circle", {"cx": x, "cy": y, "r": fmt(style.aux_point_radius if aux else style.point_radius)})]
+    if kind is MarkKind.SEGMENT:
+        (x1, y1), (x2, y2) = vp.xy(*g[:2]), vp.xy(*g[2:4])
+        return [("", "line", {"x1": x1, "y1": y1, "x2": x2, "y2": y2})]
+    if kind is MarkKind.CIRCLE:
+        x, y = vp.xy(*g[:2])
+        return [("", "circle", {"cx": x, "cy": y, "r": vp.length(g[2])})]
+    if kind is MarkKind.ARC:
+        return [("", "path", {"d": arc_path(vp, *g)})]
+    if kind is MarkKind.CURVE:
+        return [("", "path", {"d": (polyline_path if m.straight else curve_path)(vp, g)})]
+    out = [("", "path", {"d": polygon_path(vp, g)})]
+    if style.hatch:
+        d = hatch_path(vp, g, style.hatch_spacing, *(() if m.hatch is None else (m.hatch,)))
+        if d:
+            out.append(("-hatch", "path", {"d": d}))
+    return out
 
 #: Rounds of widening a view whose window cuts a letter (Drawing._clear_edges): each grows the view by 2 %
 #: at least, so 80 rounds reach 4.9 times its width -- past the whole figure from any view (MAX_ZOOM = 4).

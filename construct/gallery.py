@@ -244,7 +244,8 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
     results in plan order, so the bytes do not depend on which process
     finished first.  The first figure of each construction (the whole
     teaching figure and its player, the longest to build) is handed out
-    first, so that no process is left with a long one at the end.
+    first, the live players (their sweeps) before the others, so that no
+    process is left with a long one at the end.
     """
     plan = gallery_plan()
     bar = _Progress(len(plan), progress)
@@ -267,8 +268,11 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
                                                         initializer=_worker_init, initargs=(os.getpid(),)) as pool:
                 ours: list[Any] = []  # the pool's worker processes, once forked
                 try:
-                    # the long ones first (each result goes to its own place in plan order)
-                    order = sorted(range(len(jobs)), key=lambda i: not _first_of_its_construction(*jobs[i][1:3]))
+                    # the long ones first, the live players' sweeps before them all (each result goes to its
+                    # own place in plan order)
+                    firsts = [_first_of_its_construction(*job[1:3]) for job in jobs]
+                    order = sorted(range(len(jobs)), key=lambda i: (not (firsts[i] and jobs[i][1] in LIVE_PLAYERS),
+                                                                    not firsts[i]))
                     before = set(multiprocessing.active_children())
                     with _signals_held():  # the workers are forked here
                         futures = {pool.submit(_build_and_check, root, *jobs[i]): i for i in order}

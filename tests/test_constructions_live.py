@@ -154,3 +154,81 @@ def test_the_live_data_is_the_same_bytes_on_every_build():
     first, again = (json.dumps(live_data(live_sweep(c, fig, "rod_ratio", max_values=16)), sort_keys=True)
                     for _ in range(2))
     assert first == again and len(first) > 1000
+
+
+def _by_key(keys, nums) -> dict:
+    out, at = {}, 0
+    for k in keys:
+        n = k[2].count("#")
+        out[k] = nums[at:at + n]
+        at += n
+    return out
+
+
+@pytest.mark.parametrize("name, params", [("crank", {"parts": 6}), ("inertia-curve", {})])
+def test_the_sweep_measures_what_the_player_page_draws(name, params):
+    """The sweep does not lay a page out at every grid value: it reads the marks' numbers off the drawing's
+    own geometry (Measure).  Held here against the page itself (drawn_numbers of player_page, the page
+    ``construct replay --rod-ratio v`` writes) at the built value and at values across the domain: every
+    mark's numbers, in the page's order, the fit and the letters' texts; the views at the built value are
+    the camera's own."""
+    from construct.constructions.live import Measure, player_page_and_fit
+
+    c = get(name)
+    built = c.figure(**params)
+    measure = Measure(c, built, STYLES["teaching"])
+    for v in (None, 1.3, 3.1, 7.7, 40.0):
+        fig = built if v is None else c.figure(**params, rod_ratio=v)
+        keys, nums, fit, texts = measure(fig)
+        page, page_fit = player_page_and_fit(c, fig, STYLES["teaching"])
+        pkeys, pnums, extra = drawn_numbers(page)
+        assert keys == pkeys  # the same elements, attributes and templates, in the same order
+        got, want = _by_key(keys, nums), _by_key(pkeys, pnums)
+        for k in keys:
+            if k[0] != "#zoom" or v is None:
+                assert got[k] == want[k], (v, k)
+        assert fit == pytest.approx(page_fit, rel=1e-12)
+        # every letter the page shows, with its text (the sweep knows the letters the page had no room for too)
+        assert all(texts.get(i) == t for i, t in extra["texts"].items())
+
+
+def test_a_carried_view_still_frames_its_marks():
+    """Away from the built value each step's view is the built view carried along with the marks of the
+    steps it shows: where the built view held those marks whole, the carried one does at every rod ratio
+    (or is the whole figure), measured from the marks' numbers on the page at that value."""
+    from construct.constructions.live import Measure
+
+    c = get("crank")
+    built = c.figure(parts=6)
+    measure = Measure(c, built, STYLES["teaching"])
+
+    def holds(view, box, slack=0.5):
+        return (view[0] - slack <= box[0] and view[1] - slack <= box[1] and box[2] <= view[0] + view[2] + slack
+                and box[3] <= view[1] + view[3] + slack)
+
+    held = [j for j, (v, b) in enumerate(zip(measure.views, measure.boxes)) if b is not None and holds(v, b)]
+    assert len(held) >= 0.8 * len(measure.views) and held
+    for v in (1.2, 2.5, 12.0, 300.0):
+        keys, nums, _, _ = measure(c.figure(parts=6, rod_ratio=v))
+        got = _by_key(keys, nums)
+        full = got[("figure", "viewBox", "# # # #")]
+        pts = {}
+        for k, ns in got.items():  # each mark's extreme numbers on the page: a point, a circle's box, line ends
+            if k[1] in ("cx", "x1"):
+                pts.setdefault(k[0], []).append(ns[0])
+        for j in held:
+            steps = [i for i, w in enumerate(measure.view_of) if w == j]
+            view = got[("#zoom", str(steps[0]), "# # # #")]
+            # the marks it frames, as drawn at v: circles by their box, lines and points by their ends
+            xs, ys = [], []
+            for mid in measure.framed[j]:
+                cx, cy, r = (got.get((mid, a, "#"), [None])[0] for a in ("cx", "cy", "r"))
+                if cx is not None:
+                    xs += [cx - r, cx + r] if (mid, "r", "#") in got and r > 3 else [cx]
+                    ys += [cy - r, cy + r] if (mid, "r", "#") in got and r > 3 else [cy]
+                x1 = got.get((mid, "x1", "#"))
+                if x1 is not None:
+                    xs += [x1[0], got[(mid, "x2", "#")][0]]
+                    ys += [got[(mid, "y1", "#")][0], got[(mid, "y2", "#")][0]]
+            if xs and list(view) != [0.0, 0.0, full[2], full[3]]:
+                assert holds(view, (min(xs), min(ys), max(xs), max(ys)), slack=1.0), (v, j)

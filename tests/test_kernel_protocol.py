@@ -108,3 +108,22 @@ def test_builder_refuses_a_name_used_twice():
     b.given_point("A", 0.0, 0.0)
     with pytest.raises(InvalidParameter, match="used twice"):
         b.given_point("A", 1.0, 0.0)
+
+
+def test_a_whole_take_is_the_lazy_take():
+    """take(i, whole=True) takes every object at once (a drawing reads them all): the same objects as
+    looking each up in the lazy take, and as the figure built at that value."""
+    from construct.kernel.protocol import object_json
+
+    c = get("crank")
+    fig = c.figure(parts=6)
+    sweep = fig.protocol.replay(c.rod_ratio_sweep(dict(fig.replay.givens), [2.0, 4.0]))
+    whole, lazy = sweep.take(1, whole=True), sweep.take(1)
+    fresh = c.figure(parts=6, rod_ratio=4.0).replay
+    assert list(whole) == list(lazy) == list(fresh)
+    for name in whole:
+        assert object_json(whole[name]) == object_json(lazy[name])
+        got, want = object_json(whole[name]), object_json(fresh[name])
+        assert got.keys() == want.keys()
+        for k in got:
+            assert got[k] == (pytest.approx(want[k], abs=1e-12) if isinstance(want[k], float) else want[k]), name

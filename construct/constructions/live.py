@@ -3,9 +3,11 @@
 A teacher moves the rod ratio in the player and the whole construction follows.
 The page does not construct anything: the protocol is replayed here over a grid
 of the given in one numpy pass (``Protocol.replay`` with an array, the same
-kernel as ``construct replay``), every grid value is laid out as the player
-lays it out (the same :class:`~construct.render.svg.Drawing`, fitted to the
-same view), and the page interpolates linearly between grid values.
+kernel as ``construct replay``), every grid value is measured as the player
+draws it (:class:`Measure`: the scene and the drawing's own mark geometry on
+the same fit to the view, without laying out a page -- a test holds the
+numbers equal to the page's), and the page interpolates linearly between grid
+values.
 
 **The bound.**  The grid is chosen, not guessed: starting from a coarse grid in
 log10 of the given, every cell's midpoint is replayed and drawn, the linear
@@ -46,11 +48,18 @@ rebuilds every grid value from that, then blends as above.
 
 What is interpolated: every element of the figure that carries an id (the
 marks: points, lines, circles, arcs, curves, areas and their hatching), the
-figure's view box, and each step's magnified view.  The bound holds for the
-marks and the view box; the magnified views jump where another group becomes
-the one too small to see, and are blended there (they frame, they are not drawn).  Letters and leader lines belong to the label placer, which
+figure's view box, and each step's camera view.  The bound holds for the
+marks and the view box; the views are the built value's, carried along with
+the marks they frame (:class:`Measure`), and blended (they frame, they are
+not drawn).  Letters and leader lines belong to the label placer, which
 may choose another spot from one value to the next; they move with the point
 they name (the offset of the built value kept).
+
+**Cost.**  A grid value costs a scene and the marks' numbers (crank, 18 parts:
+about 15 ms; inertia curve: about 50 ms), not a page (0.25 and 0.5 s: the
+letters' placing and the camera).  A mark that jumps (an arc that flips to its
+other side) is recognised when halving its cell twice does not shrink its miss,
+instead of being refined down to :data:`MIN_CELL`.
 
 >>> from construct.constructions import get
 >>> live = live_sweep(get("crank"), get("crank").figure(parts=3), "rod_ratio", initial=5)
@@ -61,6 +70,7 @@ True
 from __future__ import annotations
 
 import base64
+import functools
 import json
 import math
 import re
@@ -76,7 +86,7 @@ from ..figure import Figure
 from ..kernel.errors import InvalidParameter
 from .domain import Domain, ROD_RATIO
 
-__all__ = ["LIVE_GIVENS", "LiveSweep", "live_sweep", "drawn_numbers", "column_knots", "column_kinds", "encode", "decode", "inflated", "ROW_PX", "REFINE_PX", "QUANTUM_PX", "STORED_PX", "MIN_CELL",
+__all__ = ["LIVE_GIVENS", "LiveSweep", "Measure", "live_sweep", "drawn_numbers", "column_knots", "column_kinds", "encode", "decode", "inflated", "ROW_PX", "REFINE_PX", "QUANTUM_PX", "STORED_PX", "MIN_CELL",
            "live_data", "live_givens", "player_page"]
 
 #: The continuous givens a player can move: protocol name -> (stated domain, the book's symbol).
@@ -90,6 +100,11 @@ QUANTUM_PX = 0.05
 STORED_PX = 0.1
 #: A jump caused by at most this many marks is theirs (they are drawn from the nearer grid value), not the figure's.
 SNAP_AT_MOST = 3
+#: A mark whose miss at a cell's midpoint stays above this share of its miss in the cell split into it, twice
+#: running, jumps there (a smooth mark's miss falls to a quarter at each halving, a kink's to a half).
+JUMPING = 0.85
+#: ... and misses by more than this (px): a smaller step is refined like the rest.
+JUMP_PX = 2.0
 #: A cell narrower than this (in log10 of the given) is not split further: it straddles a jump of the drawing.
 MIN_CELL = 1e-4
 
@@ -177,21 +192,29 @@ def arc_flags(keys: list[tuple[str, str, str]]) -> np.ndarray:
     return np.asarray(out, dtype=bool)
 
 
-def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray, snap: set[int]) -> tuple[float, list[int]]:
+@functools.lru_cache(maxsize=4)
+def _key_columns(keys: tuple[tuple[str, str, str], ...]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Which key each number of *keys* belongs to, which numbers are views, which are large-arc flags
+    (asked at every cell of the refinement, for the same keys)."""
+    owner = np.asarray([i for i, k in enumerate(keys) for _ in range(k[2].count("#"))], dtype=int)
+    return owner, _columns(keys, lambda k: k[0] == "#zoom"), arc_flags(keys)
+
+
+def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
+                    snap: set[int]) -> tuple[float, dict[int, float]]:
     """The largest distance (px) between the page's drawing at a cell's midpoint and the exact one, and the
-    keys that exceed REFINE_PX.  Coordinates are blended from the quantised ends; large-arc flags and snapped
+    keys that exceed REFINE_PX with the distance of their coordinates (without large-arc flags).  Coordinates are blended from the quantised ends; large-arc flags and snapped
     keys come from either end (the worse counts); a wrong flag moves the arc by the distance between the two
     centres its ends and radius allow, 2 sqrt(r^2 - (c/2)^2)."""
-    owner = np.asarray([i for i, k in enumerate(keys) for _ in range(k[2].count("#"))], dtype=int)
+    owner, views, flags = _key_columns(tuple(keys))
     if owner.size == 0:
-        return 0.0, []
+        return 0.0, {}
     q = lambda n: np.round(n / QUANTUM_PX) * QUANTUM_PX  # noqa: E731
     blended = (q(na) + q(nb)) / 2
     col_err = np.abs(blended - exact)
     nearest = np.isin(owner, list(snap)) if snap else np.zeros(owner.size, dtype=bool)
     col_err[nearest] = np.maximum(np.abs(na - exact), np.abs(nb - exact))[nearest]
-    col_err[_columns(keys, lambda k: k[0] == "#zoom")] = 0.0  # views frame the figure: blended, not refined for
-    flags = arc_flags(keys)
+    col_err[views] = 0.0  # views frame the figure: blended, not refined for
     for c in np.nonzero(flags & ~nearest)[0]:
         col_err[c] = 0.0
         if na[c] != exact[c] or nb[c] != exact[c]:  # c is the flag: the arc's numbers are c-5 .. c+3
@@ -200,8 +223,12 @@ def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray, sna
             col_err[c] = 2 * math.sqrt(max(r * r - half * half, 0.0))
     key_err = np.zeros(len(keys))
     np.maximum.at(key_err, owner, col_err)
+    # what a culprit misses by in its coordinates (a large-arc flag that flips is not a jump of the arc: the
+    # two arcs its ends allow meet as it flips, and refining converges there)
+    coord_err = np.zeros(len(keys))
+    np.maximum.at(coord_err, owner, np.where(flags & ~nearest, 0.0, col_err))
     bad = np.nonzero(key_err > REFINE_PX)[0].tolist()
-    return float(col_err.max()), bad
+    return float(col_err.max()), {k: float(coord_err[k]) for k in bad}
 
 
 def _columns(keys: list[tuple[str, str, str]], pick) -> np.ndarray:
@@ -257,8 +284,8 @@ class LiveSweep:
         return arc_flags(self.keys) | _columns(self.keys, lambda k: k in snapped)
 
 
-def _frames(construction: Construction, figure: Figure, given: str, values: np.ndarray, draw) -> list[tuple]:
-    """(keys, numbers) of the player's figure at every value, from one sweep of the protocol."""
+def _frames(construction: Construction, figure: Figure, given: str, values: np.ndarray, measure) -> list[tuple]:
+    """(keys, numbers, fit, texts) of the player's figure at every value, from one sweep of the protocol."""
     givens = dict(figure.replay.givens)
     if given == "rod_ratio":
         swept = construction.rod_ratio_sweep(givens, values)
@@ -267,12 +294,136 @@ def _frames(construction: Construction, figure: Figure, given: str, values: np.n
     if swept is None:
         raise InvalidParameter(f"{construction.name} has no given {given} to sweep")
     replay = figure.protocol.replay(swept)
-    out = []
-    for i in range(len(values)):
-        page, fit = draw(Figure(figure.protocol, replay.take(i), construction.check))
-        keys, nums, extra = drawn_numbers(page)
-        out.append((keys, nums, fit, extra["texts"]))
-    return out, replay
+    return [measure(Figure(figure.protocol, replay.take(i, whole=True), construction.check))
+            for i in range(len(values))], replay
+
+
+#: The order of the player's layers in its figure (Drawing.LAYERS): the document order of the marks' elements.
+_LAYER_ORDER = {"areas": 0, "construction": 1, "results": 2, "points": 3}
+
+
+class Measure:
+    """What the player page draws at a value of the given, without laying the page out: the same numbers as
+    :func:`drawn_numbers` of :func:`player_page` (tests/test_constructions_live.py holds them equal).
+
+    The marks are drawn by the drawing's own code (:func:`~construct.render.svg.mark_geometry`) on the
+    drawing's own fit to the view.  Letters are not placed: the page moves them with their points.  Each
+    step's camera view is the built value's view carried along with the marks it frames: the box of the
+    marks of the steps it shows moves and grows or shrinks, and the view with it (its room round them kept
+    in proportion, cut to the canvas as the camera cuts it, never past the camera's greatest magnification).
+    The camera's own choice at another value is not computed (it places every letter of the figure, 0.2 to
+    0.5 s a value); a teacher who moves the rod ratio keeps the shots of the book's figure.
+
+    >>> from construct.constructions import get
+    >>> c = get("crank"); fig = c.figure(parts=3)
+    >>> keys, nums, fit, texts = Measure(c, fig)(fig)
+    >>> keys[0], texts["s0001-O-label"]
+    (('figure', 'viewBox', '# # # #'), 'O')
+    """
+
+    def __init__(self, construction: Construction, built: Figure, style: Any = None):
+        from ..render.camera import MAX_ZOOM
+        from ..render.output import scene_for
+        from ..render.styles import STYLES
+        from ..render.svg import Drawing
+
+        self.construction = construction
+        self.style = style or STYLES["teaching"]
+        scene = scene_for(construction, built)
+        drawing = Drawing(scene, self.style)
+        full = drawing.full_view
+        self.steps = [s.index for s in scene.steps]
+        views = [drawing.camera_view(k) for k in self.steps]
+        #: per step, which of the distinct views it shows (-1: the whole figure)
+        distinct: dict[tuple, int] = {}
+        self.view_of = [-1 if v == full else distinct.setdefault(v, len(distinct)) for v in views]
+        shows: list[set[int]] = [set() for _ in distinct]
+        for k, j in zip(self.steps, self.view_of):
+            if j >= 0:
+                shows[j].add(k)
+        self.framed = [[m.id for m in scene.marks if m.step in ks] for ks in shows]
+        self.views = list(distinct)
+        self.boxes = self._boxes(scene, drawing.vp)
+        self.least = 1.0 / MAX_ZOOM
+
+    def _boxes(self, scene, vp) -> list[tuple[float, float, float, float] | None]:
+        """Per distinct view, the box (canvas px: x0, y0, x1, y1) of the marks it frames."""
+        from ..render.scene import extreme_points
+
+        by_id = {m.id: m for m in scene.marks}
+        out = []
+        for ids in self.framed:
+            pts = [p for i in ids if i in by_id for p in extreme_points(by_id[i])]
+            if not pts:
+                out.append(None)
+                continue
+            xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+            (x0, y0), (x1, y1) = vp.px(min(xs), max(ys)), vp.px(max(xs), min(ys))  # y runs down the canvas
+            out.append((x0, y0, x1, y1))
+        return out
+
+    def _carried(self, j: int, box, full: tuple) -> list[float]:
+        """View j of the built value carried along with its marks, now in *box*.
+
+        The view moves with the marks' box and grows or shrinks with it, by the larger of the two sides'
+        ratios (a side shorter than a quarter of the view counts as that quarter, so that a box of one point
+        is not a division by nothing): a view that held its marks holds them still.  It shrinks no further
+        than the camera's greatest magnification."""
+        from ..render.camera import clip_view
+
+        x, y, w, h = self.views[j]
+        b0 = self.boxes[j]
+        if b0 is None or box is None:
+            return list(full)
+        fw, fh = 0.25 * w, 0.25 * h
+        s = max(max(box[2] - box[0], fw) / max(b0[2] - b0[0], fw), max(box[3] - box[1], fh) / max(b0[3] - b0[1], fh))
+        if s < 1.0:
+            s = max(s, min(1.0, self.least * max(full[2] / w, full[3] / h)))
+        if w * s >= full[2] and h * s >= full[3]:
+            return list(full)
+        cx = (box[0] + box[2]) / 2 + (x + w / 2 - (b0[0] + b0[2]) / 2) * s
+        cy = (box[1] + box[3]) / 2 + (y + h / 2 - (b0[1] + b0[3]) / 2) * s
+        return list(clip_view(cx, cy, w * s, h * s, full))
+
+    def __call__(self, figure: Figure) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:
+        from ..render.output import scene_for
+        from ..render.svg import mark_geometry
+        from ..render.svgdoc import fmt
+        from ..render.viewport import Viewport
+
+        st = self.style
+        scene = scene_for(self.construction, figure)
+        vp = Viewport.fit(scene.bbox, st, 0)
+        full = (0.0, 0.0, round(vp.width, 2), round(vp.height, 2))
+        out: list[tuple[int, tuple[str, str, str], list[float]]] = []
+        texts: dict[str, str] = {}
+        for m in scene.marks:
+            if m.label:
+                texts[f"{m.id}-label"] = m.label
+            layer = (3 if m.kind.name == "POINT" else 0 if not m.kind.stroked
+                     else _LAYER_ORDER["results" if m.role == "result" else "construction"])
+            for suffix, _, attrs in mark_geometry(m, vp, st):
+                for a, v in attrs.items():
+                    if a != "d":  # one number (cx, r, x1, ...)
+                        out.append((layer, (m.id + suffix, a, "#"), [float(v)]))
+                        continue
+                    ns = [float(x) for x in _NUM.findall(v)]
+                    if ns:
+                        t = _NUM.sub("#", v)
+                        out.append((layer, (m.id + suffix, a, t), _canonical_arc(ns) if t == _ARC else ns))
+        out.sort(key=lambda e: e[0])  # stable: each layer's elements in the order of the marks
+        keys = [("figure", "viewBox", "# # # #")]
+        nums = [0.0, 0.0, float(fmt(vp.width)), float(fmt(vp.height))]
+        for _, k, ns in out:
+            keys.append(k)
+            nums += ns
+        boxes = self._boxes(scene, vp)
+        carried = [self._carried(j, box, full) for j, box in enumerate(boxes)] + [list(full)]  # [-1]: the whole
+        for i, j in enumerate(self.view_of):
+            keys.append(("#zoom", str(i), "# # # #"))
+            nums += carried[j]
+        fit = (vp.margin + vp.left - vp.xmin * vp.scale, vp.margin + vp.top + vp.ymax * vp.scale, vp.scale)
+        return keys, nums, fit, texts
 
 
 def player_page(construction: Construction, figure: Figure, style: Any) -> str:
@@ -307,7 +458,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     style = style or STYLES["teaching"]
     domain, symbol = LIVE_GIVENS[given]
     initial = float(figure.replay.givens[given] if initial is None else initial)
-    draw = lambda f: player_page_and_fit(construction, f, style)  # noqa: E731
+    draw = Measure(construction, figure, style)
     lo, hi = math.log10(domain.low), math.log10(domain.high)
     us = list(np.linspace(lo, hi, start))
     values = lambda u: np.clip(10.0 ** np.asarray(u), domain.low, domain.high)  # noqa: E731
@@ -317,6 +468,9 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     jumps: list[tuple[float, float]] = []
     snap: set[int] = set()  # keys drawn from the nearer grid value
     bound = 0.0
+    # per cell, its culprits' errors in the cell it was split from and in that one's parent: a mark that
+    # jumps misses by the same at every depth, a smooth one by a quarter at each halving
+    before: dict[tuple[float, float], tuple[dict[int, float], dict[int, float]]] = {}
     while todo:
         mids = [(a + b) / 2 for a, b in todo]
         mframes, _ = _frames(construction, figure, given, values(mids), draw)
@@ -326,18 +480,26 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
             ka, na = data[a][:2]
             kb, nb = data[b][:2]
             if not ka == kb == fm[0]:
-                err, culprits = math.inf, [-1]
+                err, culprits = math.inf, {-1: math.inf}
             else:
                 err, culprits = _midpoint_error(ka, np.asarray(na), np.asarray(nb), np.asarray(fm[1]), snap)
             if err <= REFINE_PX:
                 bound = max(bound, err)
                 continue
+            parent, grand = before.pop((a, b), ({}, {}))
+            if 0 < len(culprits) <= SNAP_AT_MOST and -1 not in culprits and all(ka[c][0] != "figure" and
+                    c in parent and c in grand and e > JUMPING * parent[c] and parent[c] > JUMPING * grand[c]
+                    and e > JUMP_PX for c, e in culprits.items()):
+                # one or two marks jump here (an arc drawn the other way round): halving the cell twice did not
+                # shrink what they miss by, so they are drawn from the nearer grid value everywhere (the rest
+                # stays blended) rather than refined down to the floor
+                snap.update(culprits)
+                continue
             if b - a >= MIN_CELL and len(data) <= max_values:
                 nxt += [(a, m), (m, b)]
+                before[(a, m)] = before[(m, b)] = (culprits, parent)
                 continue
-            if 0 < len(culprits) <= SNAP_AT_MOST and culprits[0] >= 0:
-                # one or two marks jump here (an arc drawn the other way round): they are drawn from the nearer
-                # grid value everywhere, the rest stays blended
+            if 0 < len(culprits) <= SNAP_AT_MOST and -1 not in culprits:
                 snap.update(culprits)
                 continue
             jumps.append((float(values(a)), float(values(b))))

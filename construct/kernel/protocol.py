@@ -470,8 +470,12 @@ class Replay(Mapping[str, Any]):
         kind = f"sweep of {self.size}" if self.size else "replay"
         return f"<Replay ({kind}) of {self.protocol.construction!r}: {len(self._objects)} objects>"
 
-    def take(self, i: int) -> "Replay":
-        """Set *i* of a sweep as a plain replay (a plain replay is its own only set)."""
+    def take(self, i: int, *, whole: bool = False) -> "Replay":
+        """Set *i* of a sweep as a plain replay (a plain replay is its own only set).
+
+        Its objects are taken from the sweep's arrays as they are looked up (a check reads a few of them);
+        *whole* takes them all at once, for a reader of every object (a drawing reads each several times).
+        """
         if isinstance(i, bool) or not isinstance(i, numbers.Integral):
             raise InvalidParameter(f"a set of a sweep is taken by its number, got {_shown(i)}")
         if not self.size:
@@ -479,7 +483,8 @@ class Replay(Mapping[str, Any]):
         if not -self.size <= i < self.size:
             raise InvalidParameter(f"sweep of {self.size} has no set {i}")
         i %= self.size
-        return Replay(self.protocol, TakenSet(self._objects, i), {k: take(v, i) for k, v in self._givens.items()})
+        objects = {n: take(v, i) for n, v in self._objects.items()} if whole else TakenSet(self._objects, i)
+        return Replay(self.protocol, objects, {k: take(v, i) for k, v in self._givens.items()})
 
     def made_by(self) -> dict[str, Step]:
         """The step that made each object."""

@@ -446,6 +446,7 @@ class Scene:
         return out
 
 
+@functools.lru_cache(maxsize=65536)  # a live sweep names the same objects at hundreds of values
 def _safe_id(text: str) -> str:
     return "".join(c if c.isalnum() or c in "-_" else "-" for c in text)
 
@@ -886,8 +887,7 @@ def plate_names(protocol: Protocol, objects: Replay) -> set[str]:
     explicit = protocol.params.get("plate")
     if explicit:
         # The construction names what its book figure shows (regular expressions over object names).
-        patterns = [re.compile(p) for p in explicit]
-        return {n for n in objects if any(p.fullmatch(n) for p in patterns)}
+        return set(_named(tuple(explicit), tuple(objects)))
     maker = {n: s for s in protocol.steps for n in s.outputs}
     shown: set[str] = set()
     curves: set[str] = set()
@@ -931,6 +931,13 @@ def plate_names(protocol: Protocol, objects: Replay) -> set[str]:
                 if n not in shown and _on(obj, o, tol):
                     shown.add(n)
     return shown
+
+
+@functools.lru_cache(maxsize=8)
+def _named(patterns: tuple[str, ...], names: tuple[str, ...]) -> frozenset[str]:
+    """The *names* some pattern matches whole (a live sweep draws the same objects hundreds of times)."""
+    compiled = [re.compile(p) for p in patterns]
+    return frozenset(n for n in names if any(p.fullmatch(n) for p in compiled))
 
 
 def _on(curve: Any, p: Point, tol: float) -> bool:

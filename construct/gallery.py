@@ -66,8 +66,8 @@ FRAME_MODE = "none"
 #: style is the plate (the construction's views in the plate's ink would double the gallery).
 GALLERY_OUTPUTS = {"historical": (), "teaching": ("player",)}
 #: The constructions whose gallery player has a live rod-ratio slider (construct.constructions.live): the crank
-#: and the inertia curve, the two the issue names; the live data adds 0.1-0.3 MB a player (and a sweep of a
-#: few minutes to the build), and the gallery stays under its 15 MB.  `construct replay NAME --live` gives any
+#: and the inertia curve, the two the issue names; the live data adds 0.1-0.3 MB a player (and a sweep of
+#: 5-15 s to the build), and the gallery stays under its 15 MB.  `construct replay NAME --live` gives any
 #: construction with a rod ratio its slider.
 LIVE_PLAYERS = ("crank", "inertia-curve")
 #: The width (CSS px) at which the gallery page shows a figure: its own width, one figure per row,
@@ -285,7 +285,7 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
                     results = [by_job[i] for i in range(len(jobs))]
                 except BaseException:
                     # interrupted or failed: the figures not yet begun are not built for nothing, and the
-                    # ones being built are stopped -- a live player's sweep takes minutes, and Ctrl-C or
+                    # ones being built are stopped -- a live player's sweep takes seconds, and Ctrl-C or
                     # SIGTERM must not wait for it (SIGTERM ends a worker: _worker_init)
                     for worker in ours:
                         if worker.is_alive():

@@ -323,7 +323,7 @@ def test_sigterm_during_gallery_removes_its_staging(tmp_path):
     proc = _start_gallery(out)
     _wait_for_staging(tmp_path, proc)
     proc.send_signal(signal.SIGTERM)  # to the main process only, as `kill PID` does
-    # the figures being built are stopped, not waited for: the live players' sweeps take minutes of CPU
+    # the figures being built are stopped, not waited for: the live players' sweeps take many seconds of CPU
     # (a bound far above the tenth of a second it takes, far below the sweeps it once waited for)
     _, err = proc.communicate(timeout=60)
     assert proc.returncode != 0 and "Traceback" not in err, err

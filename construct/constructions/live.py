@@ -387,6 +387,7 @@ class Measure:
 
     def __call__(self, figure: Figure) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:
         from ..render.output import scene_for
+        from ..render.scene import MarkKind
         from ..render.svg import mark_geometry
         from ..render.svgdoc import fmt
         from ..render.viewport import Viewport
@@ -395,28 +396,33 @@ class Measure:
         scene = scene_for(self.construction, figure)
         vp = Viewport.fit(scene.bbox, st, 0)
         full = (0.0, 0.0, round(vp.width, 2), round(vp.height, 2))
-        out: list[tuple[int, tuple[str, str, str], list[float]]] = []
+        # each layer's elements in the order of the marks, the layers in the page's order
+        layers: list[tuple[list, list]] = [([], []) for _ in _LAYER_ORDER]
         texts: dict[str, str] = {}
+        point, results, construction = _LAYER_ORDER["points"], _LAYER_ORDER["results"], _LAYER_ORDER["construction"]
         for m in scene.marks:
             if m.label:
                 texts[f"{m.id}-label"] = m.label
-            layer = (3 if m.kind.name == "POINT" else 0 if not m.kind.stroked
-                     else _LAYER_ORDER["results" if m.role == "result" else "construction"])
+            kind = m.kind
+            lk, ln = layers[point if kind is MarkKind.POINT else _LAYER_ORDER["areas"] if not kind.stroked
+                            else results if m.role == "result" else construction]
             for suffix, _, attrs in mark_geometry(m, vp, st):
+                ident = m.id + suffix
                 for a, v in attrs.items():
                     if a != "d":  # one number (cx, r, x1, ...)
-                        out.append((layer, (m.id + suffix, a, "#"), [float(v)]))
+                        lk.append((ident, a, "#"))
+                        ln.append(float(v))
                         continue
                     ns = [float(x) for x in _NUM.findall(v)]
                     if ns:
                         t = _NUM.sub("#", v)
-                        out.append((layer, (m.id + suffix, a, t), _canonical_arc(ns) if t == _ARC else ns))
-        out.sort(key=lambda e: e[0])  # stable: each layer's elements in the order of the marks
+                        lk.append((ident, a, t))
+                        ln.extend(_canonical_arc(ns) if t == _ARC else ns)
         keys = [("figure", "viewBox", "# # # #")]
         nums = [0.0, 0.0, float(fmt(vp.width)), float(fmt(vp.height))]
-        for _, k, ns in out:
-            keys.append(k)
-            nums += ns
+        for lk, ln in layers:
+            keys += lk
+            nums += ln
         boxes = self._boxes(scene, vp)
         carried = [self._carried(j, box, full) for j, box in enumerate(boxes)] + [list(full)]  # [-1]: the whole
         for i, j in enumerate(self.view_of):

@@ -626,12 +626,15 @@ def _break(marks: list[Mark], furniture: tuple = (),
     """
     from .plate import anchors, shifted
     ivals = []
-    for m in marks:
+    right: dict[int, float] = {}  # a circle's or arc's right end, by its place in *marks* (asked again below)
+    for i, m in enumerate(marks):
         if m.kind is MarkKind.SEGMENT or (m.kind is MarkKind.CURVE and m.straight and len(m.geom) == 2):
             continue  # the stroke line spans everything; a rod drawn to its crosshead crosses the break
         xs = [p[0] for p in extreme_points(m)]
         if xs:
             ivals.append((min(xs), max(xs)))
+            if m.kind.round:
+                right[i] = ivals[-1][1]
     ivals.extend((x, x) for x, _ in anchors(furniture))
     if len(ivals) < 2:
         return marks, furniture, ()
@@ -652,20 +655,32 @@ def _break(marks: list[Mark], furniture: tuple = (),
         return x + shift if x <= lo else x
 
     out = []
-    for m in marks:
+    for i, m in enumerate(marks):
         g = m.geom
         if m.kind is MarkKind.POINT:
             g = (sx(g[0]), g[1])
         elif m.kind is MarkKind.SEGMENT:
             g = (sx(g[0]), g[1], sx(g[2]), g[3])
         elif m.kind.round:  # moved whole, or not at all: a circle is not stretched
-            if max(p[0] for p in extreme_points(m)) <= lo:
+            if right[i] <= lo:
                 g = (g[0] + shift,) + tuple(g[1:])
         else:  # a curve or an area: point by point
             g = tuple((sx(x), y) for x, y in g)
-        out.append(m if g is m.geom else dataclasses.replace(m, geom=g))
+        out.append(m if g is m.geom else _with_geom(m, g))
     # the left stretch now ends at hi - keep: the kept piece of the broken axis is [hi - keep, hi]
     return out, tuple(shifted(it, sx) for it in furniture), ((hi - keep, keep, hi - lo),)
+
+
+def _with_geom(m: Mark, geom: tuple) -> Mark:
+    """*m* with another geometry (dataclasses.replace asks every field by name: a live sweep moves a thousand
+    marks at hundreds of rod ratios)."""
+    return Mark(m.id, m.step, m.name, m.kind, geom, m.role, m.tool, m.provenance, m.label, m.group, m.look, m.hatch,
+                m.straight)
+
+
+# _with_geom names every field of a Mark: a field added without it would be lost on the broken axis
+assert [f.name for f in dataclasses.fields(Mark)] == ["id", "step", "name", "kind", "geom", "role", "tool",
+                                                      "provenance", "label", "group", "look", "hatch", "straight"]
 
 
 def warn_hidden_labels(protocol: Protocol, objects: Replay, shown: set[str]) -> list[tuple[str, str]]:

@@ -16,7 +16,7 @@ import textwrap
 from collections import Counter
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 import construct
@@ -329,6 +329,8 @@ _COORD = st.one_of(st.floats(-30, 30, allow_nan=False), st.sampled_from([0.0, 1.
        st.lists(st.tuples(st.sampled_from(["circle", "line", "rect"]), _COORD, _COORD, st.floats(0, 3)),
                 min_size=1, max_size=25),
        st.sampled_from([0.0, 0.5, 1.0, 2.5]))
+# found by hypothesis: corners 1.0 and -7e-29 are 1.0 apart in floating point, but landed two grid cells apart
+@example([("rect", 1.0, 0.0, 0.0)], [("circle", 0.0, 0.0, 0.0), ("rect", -6.913952398153846e-29, 0.0, 0.0)], 1.0)
 def test_the_grid_finds_every_pair_the_all_pairs_search_finds(xs, ys, limit):
     def shapes(items):
         out = []

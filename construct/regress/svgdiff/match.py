@@ -226,13 +226,17 @@ def _near_pairs(xs: Sequence[Shape], ys: Sequence[Shape], limit: float, budget: 
     >>> sorted(_near_pairs(d.shapes, e.shapes, 1.0, 100))
     [(0.2, 0, 1), (0.5, 1, 0)]
     """
+    # cells a little wider than the limit: two corners whose difference rounds to the limit may differ by a
+    # hair more (1.0 and -7e-29 are 1.0 apart in floating point), and would land two cells apart
+    size = limit * (1.0 + 1e-9)
+
     def cell(s: Shape) -> tuple | None:
         if not all(math.isfinite(v) for _, p in s.points for v in p):
             return None
         x0, y0, _, _ = bounding_box(s)
         if limit <= 0:
             return (x0, y0)
-        gx, gy = x0 / limit, y0 / limit
+        gx, gy = x0 / size, y0 / size
         return (math.floor(gx), math.floor(gy)) if math.isfinite(gx) and math.isfinite(gy) else None
 
     grid: dict[Hashable, dict[tuple, list[int]]] = defaultdict(lambda: defaultdict(list))

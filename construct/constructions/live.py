@@ -203,9 +203,11 @@ def _key_columns(keys: tuple[tuple[str, str, str], ...]) -> tuple[np.ndarray, np
 def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
                     snap: set[int]) -> tuple[float, dict[int, float]]:
     """The largest distance (px) between the page's drawing at a cell's midpoint and the exact one, and the
-    keys that exceed REFINE_PX with the distance of their coordinates (without large-arc flags).  Coordinates are blended from the quantised ends; large-arc flags and snapped
-    keys come from either end (the worse counts); a wrong flag moves the arc by the distance between the two
-    centres its ends and radius allow, 2 sqrt(r^2 - (c/2)^2)."""
+    keys that exceed REFINE_PX with the distance of their coordinates (without large-arc flags).
+
+    Coordinates are blended from the quantised ends; large-arc flags and snapped keys come from either end
+    (the worse counts); a wrong flag moves the arc by the distance between the two centres its ends and
+    radius allow, 2 sqrt(r^2 - (c/2)^2)."""
     owner, views, flags = _key_columns(tuple(keys))
     if owner.size == 0:
         return 0.0, {}
@@ -464,11 +466,11 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     style = style or STYLES["teaching"]
     domain, symbol = LIVE_GIVENS[given]
     initial = float(figure.replay.givens[given] if initial is None else initial)
-    draw = Measure(construction, figure, style)
+    measure = Measure(construction, figure, style)
     lo, hi = math.log10(domain.low), math.log10(domain.high)
     us = list(np.linspace(lo, hi, start))
     values = lambda u: np.clip(10.0 ** np.asarray(u), domain.low, domain.high)  # noqa: E731
-    frames, _ = _frames(construction, figure, given, values(us), draw)
+    frames, _ = _frames(construction, figure, given, values(us), measure)
     data = dict(zip(us, frames))
     todo = list(zip(us[:-1], us[1:]))
     jumps: list[tuple[float, float]] = []
@@ -479,12 +481,13 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     before: dict[tuple[float, float], tuple[dict[int, float], dict[int, float]]] = {}
     while todo:
         mids = [(a + b) / 2 for a, b in todo]
-        mframes, _ = _frames(construction, figure, given, values(mids), draw)
+        mframes, _ = _frames(construction, figure, given, values(mids), measure)
         nxt = []
         for (a, b), m, fm in zip(todo, mids, mframes):
             data[m] = fm
             ka, na = data[a][:2]
             kb, nb = data[b][:2]
+            parent, grand = before.pop((a, b), ({}, {}))
             if not ka == kb == fm[0]:
                 err, culprits = math.inf, {-1: math.inf}
             else:
@@ -492,7 +495,6 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
             if err <= REFINE_PX:
                 bound = max(bound, err)
                 continue
-            parent, grand = before.pop((a, b), ({}, {}))
             if 0 < len(culprits) <= SNAP_AT_MOST and -1 not in culprits and all(ka[c][0] != "figure" and
                     c in parent and c in grand and e > JUMPING * parent[c] and parent[c] > JUMPING * grand[c]
                     and e > JUMP_PX for c, e in culprits.items()):
@@ -713,7 +715,6 @@ def encode(live: LiveSweep) -> dict[str, Any]:
     q = np.round(_stored(live.drawn, live.fit, kinds) / quanta).astype(np.int64)
     fit = live.fit if live.fit is not None else np.zeros((rows, 3))
     # identical columns (a point's coordinate in its circle, its lines, its arcs) travel once, with the union
-    # of their kept values
     # of their kept values; stored in the order the columns first appear (neighbours stay neighbours).  A
     # column is known by its bytes (np.unique over columns sorts them all: half the encoding's time)
     whole = np.ascontiguousarray(np.vstack([q, keep, kinds[None, :]]).T)

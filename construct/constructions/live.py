@@ -55,11 +55,16 @@ not drawn).  Letters and leader lines belong to the label placer, which
 may choose another spot from one value to the next; they move with the point
 they name (the offset of the built value kept).
 
-**Cost.**  A grid value costs a scene and the marks' numbers (crank, 18 parts:
-about 15 ms; inertia curve: about 50 ms), not a page (0.25 and 0.5 s: the
-letters' placing and the camera).  A mark that jumps (an arc that flips to its
-other side) is recognised when halving its cell twice does not shrink its miss,
-instead of being refined down to :data:`MIN_CELL`.
+**Cost.**  A grid value is not a page (0.25 s for the 18-part crank, 0.5 s for
+the inertia curve: the letters' placing and the camera): the marks' numbers of
+all the values a round of the refinement asks for are drawn at once
+(:class:`~construct.render.sweepdraw.SweepDrawing`, each kind of mark one
+array over the values), and only a value where a mark changes its form, or a
+figure the sweep does not draw (hatched areas), is drawn value by value (a
+scene and the marks' numbers: 15 to 30 ms).  The whole sweep of the 18-part
+crank takes about 1 s, of the inertia curve about 4 s.  A mark that jumps (an
+arc that flips to its other side) is recognised when halving its cell twice
+does not shrink its miss, instead of being refined down to :data:`MIN_CELL`.
 
 >>> from construct.constructions import get
 >>> live = live_sweep(get("crank"), get("crank").figure(parts=3), "rod_ratio", initial=5)
@@ -87,7 +92,7 @@ from ..kernel.errors import InvalidParameter
 from .domain import Domain, ROD_RATIO
 
 __all__ = ["LIVE_GIVENS", "LiveSweep", "Measure", "live_sweep", "drawn_numbers", "column_knots", "column_kinds", "encode", "decode", "inflated", "ROW_PX", "REFINE_PX", "QUANTUM_PX", "STORED_PX", "MIN_CELL",
-           "live_data", "live_givens", "player_page"]
+           "live_data", "live_givens", "player_page", "check_picks"]
 
 #: The continuous givens a player can move: protocol name -> (stated domain, the book's symbol).
 LIVE_GIVENS: dict[str, tuple[Domain, str]] = {"rod_ratio": (ROD_RATIO, "L/r")}
@@ -262,8 +267,9 @@ class LiveSweep:
     bound: float
     #: Cells (low, high) across which the drawing jumps (the broken axis appearing).
     jumps: list[tuple[float, float]] = field(default_factory=list)
-    #: Per grid value: [[name, measured, expected, error, tolerance, ok], ...].
-    checks: list[list[list[Any]]] = field(default_factory=list)
+    #: At the grid values the page shows checks for (:func:`check_picks`), by their index in the grid:
+    #: [[name, measured, expected, error, tolerance, ok], ...].
+    checks: dict[int, list[list[Any]]] = field(default_factory=dict)
     #: Elements whose geometry is not interpolated (their form changes across the domain): shown at the built value.
     fixed: list[str] = field(default_factory=list)
     #: Letters whose text changes with the given (readings of the figure, e.g. the angle AOW): shown at the
@@ -296,8 +302,7 @@ def _frames(construction: Construction, figure: Figure, given: str, values: np.n
     if swept is None:
         raise InvalidParameter(f"{construction.name} has no given {given} to sweep")
     replay = figure.protocol.replay(swept)
-    return [measure(Figure(figure.protocol, replay.take(i, whole=True), construction.check))
-            for i in range(len(values))], replay
+    return measure.frames(figure.protocol, replay, len(values)), replay
 
 
 #: The order of the player's layers in its figure (Drawing.LAYERS): the document order of the marks' elements.
@@ -314,7 +319,8 @@ class Measure:
     marks of the steps it shows moves and grows or shrinks, and the view with it (its room round them kept
     in proportion, cut to the canvas as the camera cuts it, never past the camera's greatest magnification).
     The camera's own choice at another value is not computed (it places every letter of the figure, 0.2 to
-    0.5 s a value); a teacher who moves the rod ratio keeps the shots of the book's figure.
+    0.5 s a value); a teacher who moves the rod ratio keeps the shots of the book's figure.  A sweep's values
+    are measured together by :meth:`frames`.
 
     >>> from construct.constructions import get
     >>> c = get("crank"); fig = c.figure(parts=3)
@@ -347,6 +353,20 @@ class Measure:
         self.views = list(distinct)
         self.boxes = self._boxes(scene, drawing.vp)
         self.least = 1.0 / MAX_ZOOM
+        self.template = scene
+        # the marks' keys as this value's page has them: each mark's numbers are a run of them, the runs in the
+        # page's order (a sweep draws each mark's numbers for every value at once, :meth:`frames`)
+        self.keys, _, _, texts = self(built)
+        self.runs: list[tuple[str, int]] = []
+        for k in self.keys[1:len(self.keys) - len(self.view_of)]:
+            if self.runs and self.runs[-1][0] == k[0]:
+                self.runs[-1] = (k[0], self.runs[-1][1] + k[2].count("#"))
+            else:
+                self.runs.append((k[0], k[2].count("#")))
+        # the letters whose text is read off the figure (an angle), by the id of their letter
+        readings = {name: label for st in built.protocol.steps for name, label in st.labels if "{∠" in label}
+        self.readings = {f"{m.id}-label": readings[m.name] for m in scene.marks if m.name in readings and m.label}
+        self.texts = {k: v for k, v in texts.items() if k not in self.readings}  # the same at every value
 
     def _boxes(self, scene, vp) -> list[tuple[float, float, float, float] | None]:
         """Per distinct view, the box (canvas px: x0, y0, x1, y1) of the marks it frames."""
@@ -386,6 +406,53 @@ class Measure:
         cx = (box[0] + box[2]) / 2 + (x + w / 2 - (b0[0] + b0[2]) / 2) * s
         cy = (box[1] + box[3]) / 2 + (y + h / 2 - (b0[1] + b0[3]) / 2) * s
         return list(clip_view(cx, cy, w * s, h * s, full))
+
+    def frames(self, protocol: Any, replay: Any, size: int) -> list[tuple]:
+        """:meth:`__call__` at every value of the sweep *replay* (of *size* values): the marks' numbers drawn for
+        all values at once (:class:`~construct.render.sweepdraw.SweepDrawing`) where that draws what the drawing
+        draws, value by value elsewhere (a value where a mark changes its form, a figure the sweep does not
+        draw)."""
+        from ..render.scene import reading
+        from ..render.sweepdraw import SweepDrawing, sweep_drawable
+
+        at_once = None
+        if sweep_drawable(self.template):
+            try:
+                at_once = SweepDrawing(self.template, protocol, replay, size, self.style)
+            except ValueError:  # a mark of another kind than the built figure's: value by value
+                at_once = None
+        if at_once is not None and any(at_once.numbers.get(i, np.zeros((0, 0))).shape[1:] != (n,)
+                                       for i, n in self.runs):
+            at_once = None
+        if at_once is None or not at_once.ok.any():
+            return [self(Figure(protocol, replay.take(i, whole=True), self.construction.check)) for i in range(size)]
+        rows = np.hstack([at_once.numbers[i] for i, _ in self.runs])
+        width, height = (np.round(v, 2) for v in at_once.size)
+        px = at_once.page_px
+        boxes = []
+        for ids in self.framed:  # each view's marks' box, on the page of every value
+            e = [at_once.extremes[i] for i in ids if i in at_once.extremes]
+            if not e:
+                boxes.append(None)
+                continue
+            (x0, y0), (x1, y1) = (px(np.min([b[0] for b in e], 0), np.max([b[3] for b in e], 0)),
+                                  px(np.max([b[1] for b in e], 0), np.min([b[2] for b in e], 0)))
+            boxes.append((x0, y0, x1, y1))
+        out = []
+        for i in range(size):
+            if not at_once.ok[i]:
+                out.append(self(Figure(protocol, replay.take(i, whole=True), self.construction.check)))
+                continue
+            full = (0.0, 0.0, float(width[i]), float(height[i]))
+            nums = [0.0, 0.0, float(width[i]), float(height[i])] + rows[i].tolist()
+            carried = [self._carried(j, None if b is None else tuple(float(c[i]) for c in b), full)
+                       for j, b in enumerate(boxes)] + [list(full)]
+            for j in self.view_of:
+                nums += carried[j]
+            taken = replay.take(i)
+            texts = {**self.texts, **{k: reading(label, taken) for k, label in self.readings.items()}}
+            out.append((self.keys, nums, tuple(float(v) for v in at_once.fit[i]), texts))
+        return out
 
     def __call__(self, figure: Figure) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:
         from ..render.output import scene_for
@@ -541,7 +608,8 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
                      fixed=fixed, snapped=snapped, u=np.asarray(us, dtype=float), start=start, readings=varying,
                      # the fit travels as float32: the columns are checked against the drawing through it
                      fit=np.asarray([data[u][2] for u in us], dtype=np.float32).astype(float))
-    live.checks = _checks(construction, figure, given, grid)
+    picks = check_picks(grid)
+    live.checks = dict(zip(picks, _checks(construction, figure, given, grid[picks])))
     # and at the built value (the book's): a teacher who returns there sees its own checks
     live.built_checks = [[c.name, c.measured, c.expected, c.error, c.tolerance, bool(c.ok)]
                          for c in construction.checks(figure)]
@@ -549,7 +617,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
 
 
 def _checks(construction: Construction, figure: Figure, given: str, grid: np.ndarray) -> list[list[list[Any]]]:
-    """The construction's checks at every grid value, from one sweep (:meth:`Construction.sweep_checks`)."""
+    """The construction's checks at every value of *grid*, from one sweep (:meth:`Construction.sweep_checks`)."""
     givens = dict(figure.replay.givens)
     swept = construction.rod_ratio_sweep(givens, grid) if given == "rod_ratio" else {**givens, given: grid}
     sweep = Figure(figure.protocol, figure.protocol.replay(swept), construction.check)
@@ -816,16 +884,25 @@ def inflated(text: str) -> Any:
 CHECK_VALUES = 48
 
 
+def check_picks(grid: np.ndarray) -> list[int]:
+    """The grid values (indices) the page shows checks at: up to CHECK_VALUES, evenly in log10 of the given
+    (the grid is dense where the drawing bends, the slider is not), the first and the last among them.
+
+    >>> check_picks(np.array([1.0, 1.1, 1.2, 10.0, 100.0]))  # 1.1 and 1.2 are one place on the slider
+    [0, 2, 3, 4]
+    >>> len(check_picks(10 ** np.linspace(0, 3, 500))), check_picks(10 ** np.linspace(0, 3, 500))[-1]
+    (48, 499)
+    """
+    u = np.log10(grid)
+    return sorted({int(np.argmin(np.abs(u - t))) for t in np.linspace(u[0], u[-1], min(len(u), CHECK_VALUES))})
+
+
 def _check_table(live: LiveSweep) -> dict[str, Any]:
     """The checks at up to CHECK_VALUES grid values, evenly in log10: names once, numbers to 9 digits."""
     if not live.checks:
         return {"checks": [], "check_values": [], "check_names": []}
-    n = len(live.grid)
-    # evenly in log10 of the given (the grid is dense where the drawing bends, the slider is not)
-    u = np.log10(live.grid)
-    picks = sorted({int(np.argmin(np.abs(u - t))) for t in np.linspace(u[0], u[-1], min(n, CHECK_VALUES))})
     g = lambda x: float(f"{x:.9g}") if math.isfinite(x) else None  # noqa: E731
-    at = [(float(live.grid[i]), live.checks[i]) for i in picks]
+    at = [(float(live.grid[i]), live.checks[i]) for i in sorted(live.checks)]
     if live.built_checks and all(v != live.initial for v, _ in at):  # the book's value among them
         at = sorted(at + [(float(live.initial), live.built_checks)], key=lambda x: x[0])
 
@@ -838,5 +915,5 @@ def _check_table(live: LiveSweep) -> dict[str, Any]:
             out.append(g(c[1]))
         return out
 
-    return {"check_names": [c[0] for c in live.checks[0]], "check_values": [v for v, _ in at],
+    return {"check_names": [c[0] for c in at[0][1]], "check_values": [v for v, _ in at],
             "checks": [[row(c) for c in cs] for _, cs in at]}

@@ -36,7 +36,7 @@ from ..kernel.geometry import Circle, Length, Line, Point
 from ..kernel.protocol import Protocol, Replay, Step
 from .captions import TITLE_LIMIT, Reader, displayed
 
-__all__ = ["Mark", "MarkKind", "Scene", "build_scene", "label_offset_direction"]
+__all__ = ["Mark", "MarkKind", "Scene", "build_scene", "label_offset_direction", "on_curve_names", "extreme_points", "middle"]
 
 TWO_PI = 2.0 * math.pi
 #: What a letter of the figure looks like (:meth:`Scene.tag_shown`): a letter, a number below 20 or
@@ -464,14 +464,26 @@ def label_offset_direction(p: tuple[float, float], origin: tuple[float, float] =
 def _on_curve_points(steps: Iterable[Step], objects: Replay,
                      shown: set[str] | None = None) -> dict[str, list[Point]]:
     """For every line and circle, the points the construction marks on it (only *shown* ones, if given)."""
-    on: dict[str, list[Point]] = {}
+    points = {n for n, o in objects.items() if isinstance(o, Point)}
+    return {c: [objects[p] for p in ps] for c, ps in on_curve_names(steps, points, shown).items()}
+
+
+def on_curve_names(steps: Iterable[Step], points: set[str], shown: set[str] | None = None) -> dict[str, list[str]]:
+    """For every line and circle, the names of the points (of *points*) the construction marks on it, in the
+    order it marks them (only *shown* ones, if given).
+
+    >>> from construct.constructions import get
+    >>> fig = get("crank").figure(parts=6)
+    >>> on_curve_names(fig.protocol.steps, {n for n in fig.replay if n in ("O", "D0", "D1")})["crank"]
+    ['D0', 'D1']
+    """
+    on: dict[str, list[str]] = {}
 
     def add(curve: str, point: str) -> None:
         if shown is not None and point not in shown:
             return
-        obj = objects.get(point)
-        if isinstance(obj, Point):
-            on.setdefault(curve, []).append(obj)
+        if point in points:
+            on.setdefault(curve, []).append(point)
 
     for s in steps:
         if s.op == "line":

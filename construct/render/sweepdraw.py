@@ -1,0 +1,370 @@
+"""The marks' numbers over a whole sweep of the givens at once: what the drawing draws, value by value, in numpy.
+
+A live player's sweep (:mod:`construct.constructions.live`) asks what the player draws at
+hundreds of rod ratios.  :func:`~construct.render.scene.build_scene` and
+:func:`~construct.render.svg.mark_geometry` answer for one value at a time (a scene of a thousand
+marks: 15 to 30 ms); this module answers for every value of a sweep in one pass over the marks,
+each mark's numbers a numpy column over the values.  It follows the drawing step by step -- the
+figure's margin, each line drawn as far as the points marked on it, each circle as the arc over its
+marked points (or whole), the broken axis, the letters' points on lettered lines, the bounding box,
+the fit to the page, the numbers as the SVG writes them (two decimals) -- for the figures a live
+player moves: points, lines, circles, arcs and curves, no hatched areas, no plate.
+
+It answers only where it is sure to draw what the drawing draws: a value at which a mark changes its
+form (an arc that closes into a whole circle, a curve of another number of points, two marked points
+that coincide on a circle) is left out (:attr:`SweepDrawing.ok` false there), and the caller draws it
+value by value.  The numbers may differ from the drawing's in the last written digit (numpy rounds
+x * 100, the writer the exact decimal; hypot and atan2 may differ in the last bit): at most 0.01 px
+(tests/test_constructions_live.py holds them to that, at values across the domain).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from ..kernel.geometry import Circle, Line, Point, take
+from .scene import BREAK_FRACTION, BREAK_KEEP, TWO_PI, MarkKind, Scene, middle, on_curve_names
+from .styles import Style
+
+__all__ = ["SweepDrawing", "sweep_drawable"]
+
+
+def sweep_drawable(scene: Scene) -> bool:
+    """Can :class:`SweepDrawing` draw *scene*'s figure over a sweep (points, lines, circles, arcs, curves on an
+    axis that may be broken; no areas, no plate furniture)?"""
+    return not scene.furniture and all(m.kind is not MarkKind.AREA for m in scene.marks)
+
+
+_ATAN2 = np.frompyfunc(math.atan2, 2, 1)
+
+
+def _atan2(y: np.ndarray, x: np.ndarray) -> np.ndarray:
+    return _ATAN2(y, x).astype(float)
+
+
+def _r2(v: np.ndarray) -> np.ndarray:
+    """Numbers as the SVG writer writes them (svgdoc.fmt: two decimals)."""
+    return np.round(v, 2) + 0.0  # + 0.0: no -0
+
+
+class SweepDrawing:
+    """The drawing's numbers at every value of a sweep: ``numbers[mark id]`` is a (values × numbers) array in
+    the order :func:`~construct.render.svg.mark_geometry` writes them (an arc's as the live data reads it:
+    drawn counter-clockwise on the page), ``extremes[mark id]`` its box (x0, x1, y0, y1 in drawing units),
+    ``fit`` the page's (ox, oy, scale), ``size`` its (width, height), ``ok`` where all of it holds.
+
+    *template* is the scene of one value (its marks, their order, kinds and ids); *objects* the sweep's replay.
+    The marks of one kind are drawn together, as rows of one array (kinds x values).
+    """
+
+    def __init__(self, template: Scene, protocol: Any, objects: Any, size: int, style: Style):
+        self.n = n = size
+        self.ok = np.ones(n, dtype=bool)
+        self.style = style
+        vec = lambda v: np.broadcast_to(np.asarray(v, dtype=float), (n,))  # noqa: E731
+        self._vec = vec
+        # a lettered straight line's letter point (scene._letter_lines): placed below, once the axis is broken
+        ids = {m.id for m in template.marks}
+        self._at = {m.id + "-at" for m in template.marks if m.kind is MarkKind.CURVE and m.straight} & ids
+        points = {k: (vec(o.x), vec(o.y)) for k, o in objects.items() if isinstance(o, Point)}
+        on = on_curve_names(protocol.steps, set(points))
+        # the figure's extent before the marks are drawn: every point, every curve's points
+        xs, ys = [np.vstack([p[0] for p in points.values()])], [np.vstack([p[1] for p in points.values()])]
+        curves: dict[str, list[tuple]] = {}
+        for name, o in objects.items():
+            if isinstance(o, (Point, Line, Circle)):
+                continue
+            first = take(o, 0)
+            if hasattr(first, "rings"):  # an area's pieces count for the extent (scene._curve_points)
+                rows = [tuple((p[0], p[1]) for ring in take(o, i).rings() for p in ring) for i in range(n)]
+            elif hasattr(first, "curve_points"):
+                rows = curves[name] = [tuple((p[0], p[1]) for p in take(o, i).curve_points()) for i in range(n)]
+            else:
+                continue
+            if rows and all(rows):
+                xs += [np.array([[min(p[0] for p in r) for r in rows], [max(p[0] for p in r) for r in rows]])]
+                ys += [np.array([[min(p[1] for p in r) for r in rows], [max(p[1] for p in r) for r in rows]])]
+        X, Y = np.vstack(xs), np.vstack(ys)
+        span = np.maximum(np.maximum(X.max(0) - X.min(0), Y.max(0) - Y.min(0)), 1e-9)
+        margin = 0.035 * span
+        # each mark's geometry, its kind's rows
+        self.marks = [m for m in template.marks if m.id not in self._at]
+        by: dict[MarkKind, list] = {k: [] for k in MarkKind}
+        curve_geoms: dict[str, tuple] = {}
+        for m in self.marks:
+            obj = objects.get(m.name)
+            marked = [points[p] for p in dict.fromkeys(on.get(m.name, []))]
+            if m.kind is MarkKind.POINT and m.name in points:
+                by[m.kind].append(points[m.name])
+            elif m.kind is MarkKind.SEGMENT and isinstance(obj, Line):
+                by[m.kind].append(self._segment(obj, marked, margin))
+            elif m.kind.round and isinstance(obj, Circle):
+                by[m.kind].append(self._circle(m, obj, marked, margin))
+            elif m.kind is MarkKind.CURVE and m.name in curves:
+                rows = curves[m.name]
+                count = len(m.geom)
+                self.ok &= np.array([len(r) == count for r in rows])
+                curve_geoms[m.id] = tuple((np.array([r[k][0] if len(r) == count else np.nan for r in rows]),
+                                           np.array([r[k][1] if len(r) == count else np.nan for r in rows]))
+                                          for k in range(count))
+            else:
+                raise ValueError(f"{m.id}: a {m.kind.value} the sweep does not draw")
+        self.rows = {k: [m for m in self.marks if m.kind is k and m.id not in curve_geoms] for k in MarkKind}
+        self.geoms = {k: tuple(np.vstack(c) for c in zip(*by[k])) if by[k] else () for k in MarkKind}
+        self.curves = curve_geoms
+        self.curve_marks = [m for m in self.marks if m.id in curve_geoms]
+        self._broken = None
+        self._break()
+        self._letter_lines(template, protocol)
+        ext = self._extremes()
+        if self._broken is not None:  # the box of a broken figure: its points, where they now stand
+            PX, PY = self.geoms[MarkKind.POINT]
+            brk = self._broken
+            bx0, bx1 = np.where(brk, PX.min(0), X.min(0)), np.where(brk, PX.max(0), X.max(0))
+            by0, by1 = np.where(brk, PY.min(0), Y.min(0)), np.where(brk, PY.max(0), Y.max(0))
+        else:
+            bx0, bx1, by0, by1 = X.min(0), X.max(0), Y.min(0), Y.max(0)
+        for e in ext.values():
+            bx0, bx1 = np.minimum(bx0, e[0].min(0)), np.maximum(bx1, e[1].max(0))
+            by0, by1 = np.minimum(by0, e[2].min(0)), np.maximum(by1, e[3].max(0))
+        self._fit(bx0 - margin, by0 - margin, bx1 + margin, by1 + margin)
+        self.extremes = {}
+        self.numbers = {}
+        for key, e in ext.items():
+            for i, m in enumerate(self._members(key)):
+                self.extremes[m.id] = (e[0][i], e[1][i], e[2][i], e[3][i])
+        for key, nums in self._numbers().items():
+            for i, m in enumerate(self._members(key)):
+                self.numbers[m.id] = nums[i]
+
+    def _members(self, key) -> list:
+        """The marks of one row block: a kind's marks, or one curve (its id), or the lettered lines' points."""
+        if isinstance(key, MarkKind):
+            return self.rows[key]
+        return [m for m in self.curve_marks if m.id == key] if key != "-at" else self.at_marks
+
+    # -- the marks ---------------------------------------------------------------------------------------
+    def _segment(self, line: Line, marked: list, margin: np.ndarray) -> tuple:
+        """scene._segment_extent over the sweep: the line as far as its marked points, and a margin."""
+        vec = self._vec
+        px, py, qx, qy = vec(line.p.x), vec(line.p.y), vec(line.q.x), vec(line.q.y)
+        dx, dy = qx - px, qy - py
+        h = np.hypot(dx, dy)
+        ux, uy = dx / h, dy / h
+        ts = (np.vstack([(x - px) * ux + (y - py) * uy for x, y in marked]) if marked
+              else np.vstack([np.zeros(self.n), np.ones(self.n)]))
+        lo, hi = ts.min(0), ts.max(0)
+        # a line through one point only (a tangent at its point of contact) is drawn long enough to be seen
+        m = np.where(hi - lo <= 1e-9 * np.maximum(1.0, np.abs(ts[0])), 5.0 * margin, margin)
+        t0, t1 = lo - m, hi + m
+        return (px + t0 * ux, py + t0 * uy, px + t1 * ux, py + t1 * uy)
+
+    def _circle(self, m, circle: Circle, marked: list, margin: np.ndarray) -> tuple:
+        """scene._circle_extent over the sweep: whole, or the arc over its marked points; a value where the
+        arc would be whole (or a whole one an arc) is not drawn here."""
+        vec = self._vec
+        cx, cy, r = vec(circle.center.x), vec(circle.center.y), vec(circle.radius)
+        if m.role == "result" or not marked:
+            if m.kind is not MarkKind.CIRCLE:
+                self.ok[:] = False
+            return (cx, cy, r)
+        # math's atan2, not numpy's: two points marked half a turn apart (a diameter) leave two equal gaps, and
+        # the drawing takes the first of them as its floating point has it, to the last bit
+        a = np.sort(np.vstack([np.mod(_atan2(y - cy, x - cx), TWO_PI) for x, y in marked]), axis=0)
+        k = a.shape[0]
+        if k == 1:
+            start, sweep = a[0], np.zeros(self.n)
+        else:
+            # points marked at one place (a dead centre found twice) count once: a run of equal angles adds
+            # gaps of nothing, and the gap after it is the gap after the one it stands for; angles a hair apart
+            # (not one place, not two) are left to the drawing
+            step = np.diff(a, axis=0)
+            self.ok &= ~((step > 0) & (step <= 1e-9)).any(0) & (a[0] + TWO_PI - a[-1] > 1e-9)
+            gaps = np.mod(np.vstack([a[1:], a[:1]]) - a, TWO_PI)
+            i = np.argmax(gaps, axis=0)
+            cols = np.arange(self.n)
+            one = a[-1] == a[0]  # every marked point at one place: the arc is that place (and its margin)
+            start = np.where(one, a[0], a[(i + 1) % k, cols])
+            sweep = np.where(one, 0.0, TWO_PI - gaps[i, cols])
+        pad = np.minimum(margin / r, 0.6)
+        start, sweep = start - pad, sweep + 2.0 * pad
+        whole = sweep >= 0.92 * TWO_PI
+        self.ok &= whole if m.kind is MarkKind.CIRCLE else ~whole
+        return (cx, cy, r) if m.kind is MarkKind.CIRCLE else (cx, cy, r, start, sweep)
+
+    def _extremes(self) -> dict:
+        """scene.extreme_points over the sweep, as boxes: {block: (x0, x1, y0, y1)}, each (marks x values)."""
+        out: dict[Any, tuple] = {}
+        g = self.geoms
+        if g[MarkKind.POINT]:
+            x, y = g[MarkKind.POINT]
+            out[MarkKind.POINT] = (x, x, y, y)
+        if g[MarkKind.SEGMENT]:
+            x1, y1, x2, y2 = g[MarkKind.SEGMENT]
+            out[MarkKind.SEGMENT] = (np.minimum(x1, x2), np.maximum(x1, x2), np.minimum(y1, y2), np.maximum(y1, y2))
+        if g[MarkKind.CIRCLE]:
+            cx, cy, r = g[MarkKind.CIRCLE]
+            out[MarkKind.CIRCLE] = (cx - r, cx + r, cy - r, cy + r)
+        if g[MarkKind.ARC]:
+            out[MarkKind.ARC] = _arc_box(*g[MarkKind.ARC])
+        for m in self.curve_marks:
+            X, Y = np.vstack([p[0] for p in self.curves[m.id]]), np.vstack([p[1] for p in self.curves[m.id]])
+            out[m.id] = (X.min(0)[None], X.max(0)[None], Y.min(0)[None], Y.max(0)[None])
+        if getattr(self, "at_marks", None):
+            x, y = self.at_geom
+            out["-at"] = (x, x, y, y)
+        return out
+
+    # -- the broken axis, the lettered lines ---------------------------------------------------------------
+    def _break(self) -> None:
+        """scene._break over the sweep: the widest empty stretch broken out where it is wider than a fifth."""
+        ext = self._extremes()
+        spans = [(e[0], e[1]) for key, e in ext.items() if key is not MarkKind.SEGMENT
+                 and not (key in self.curves and self._members(key)[0].straight and len(self.curves[key]) == 2)]
+        if sum(s.shape[0] for s, _ in spans) < 2:
+            return
+        # the spans in the order of the marks (ties in the sort below are equal spans: either order)
+        S, E = np.vstack([s for s, _ in spans]), np.vstack([e for _, e in spans])
+        order = np.lexsort((E, S), axis=0)
+        S, E = np.take_along_axis(S, order, 0), np.take_along_axis(E, order, 0)
+        total = E[-1] - S[0]
+        reach = np.maximum.accumulate(E, axis=0)
+        gaps = S[1:] - reach[:-1]
+        j = np.argmax(gaps, axis=0)
+        cols = np.arange(self.n)
+        width = gaps[j, cols]
+        lo, hi = reach[j, cols], S[j + 1, cols]
+        brk = (width > 0) & (width > BREAK_FRACTION * total)
+        if not brk.any():
+            return
+        keep = np.minimum(BREAK_KEEP * (total - width), 0.8 * width)
+        shift = np.where(brk, width - keep, 0.0)
+        sx = lambda x: np.where(brk & (x <= lo), x + shift, x)  # noqa: E731
+        g = self.geoms
+        if g[MarkKind.POINT]:
+            g[MarkKind.POINT] = (sx(g[MarkKind.POINT][0]), g[MarkKind.POINT][1])
+        if g[MarkKind.SEGMENT]:
+            x1, y1, x2, y2 = g[MarkKind.SEGMENT]
+            g[MarkKind.SEGMENT] = (sx(x1), y1, sx(x2), y2)
+        for kind in (MarkKind.CIRCLE, MarkKind.ARC):  # moved whole, or not at all
+            if g[kind]:
+                moved = brk & (ext[kind][1] <= lo)
+                g[kind] = (np.where(moved, g[kind][0] + shift, g[kind][0]),) + tuple(g[kind][1:])
+        for mid, pts in self.curves.items():
+            self.curves[mid] = tuple((sx(x), y) for x, y in pts)
+        self._broken = brk
+        self._breaks = (hi - keep, keep)
+
+    def _letter_lines(self, template: Scene, protocol: Any) -> None:
+        """scene._letter_lines over the sweep: each lettered straight line's letter point."""
+        fans: dict[str, list[str]] = {}
+        for s in protocol.steps:
+            if s.op == "polyline" and s.outputs[0] in dict(s.labels):
+                fans.setdefault(s.inputs[0], []).append(s.outputs[0])
+        fan_of = {name: len(v) >= 3 for v in fans.values() for name in v}
+        self.at_marks = [m for m in template.marks if m.id in self._at]
+        xs, ys = [], []
+        for m in self.at_marks:
+            line = self.curves[m.id[:-3]]
+            fan = fan_of.get(m.name[:-3], False)
+            ats = []
+            for i in range(self.n):
+                pts = tuple((float(x[i]), float(y[i])) for x, y in line)
+                at = pts[-1] if fan else middle(pts)
+                if self._broken is not None and self._broken[i]:
+                    x0, w = float(self._breaks[0][i]), float(self._breaks[1][i])
+                    (ax, ay), (bx, by) = pts[0], pts[-1]
+                    if len(pts) == 2 and min(ax, bx) < x0 + w and max(ax, bx) > x0 + w and not fan:
+                        x = (x0 + w + max(ax, bx)) / 2.0
+                        at = (x, ay + (by - ay) * (x - ax) / (bx - ax))
+                ats.append(at)
+            xs.append([a[0] for a in ats])
+            ys.append([a[1] for a in ats])
+        if self.at_marks:
+            self.at_geom = (np.array(xs, dtype=float), np.array(ys, dtype=float))
+
+    # -- the page ----------------------------------------------------------------------------------------
+    def _fit(self, x0, y0, x1, y1) -> None:
+        """Viewport.fit over the sweep (no caption lines: the player writes its captions in HTML)."""
+        st = self.style
+        inner = st.width_px - 2 * st.margin_px
+        scale = inner / np.maximum(x1 - x0, 1e-12)
+        max_h = 1.4 * st.width_px
+        scale = np.where((y1 - y0) * scale > max_h, max_h / (y1 - y0), scale)
+        left = (inner - (x1 - x0) * scale) / 2.0
+        drawing_h = np.maximum((y1 - y0) * scale, st.min_drawing_px)
+        top = (drawing_h - (y1 - y0) * scale) / 2.0
+        self._page = (x0, y1, scale, left, top)
+        m = st.margin_px
+        self.fit = np.column_stack([m + left - x0 * scale, m + top + y1 * scale, scale])
+        self.size = (np.full(self.n, float(st.width_px)), drawing_h + 2 * m)
+
+    def page_px(self, x, y) -> tuple[np.ndarray, np.ndarray]:
+        """Points (drawing units) on the page of every value (Viewport.px over the sweep)."""
+        return self._px(x, y)
+
+    def _px(self, x, y) -> tuple[np.ndarray, np.ndarray]:
+        xmin, ymax, scale, left, top = self._page
+        m = self.style.margin_px
+        return m + left + (x - xmin) * scale, m + top + (ymax - y) * scale
+
+    def _numbers(self) -> dict:
+        """Every mark's numbers as mark_geometry writes them (an arc's drawn counter-clockwise on the page):
+        {block: (marks x values x numbers)}."""
+        st, g, out = self.style, self.geoms, {}
+        scale = self._page[2]
+        stack = lambda *cols: np.stack([_r2(c) for c in cols], axis=-1)  # noqa: E731
+        if g[MarkKind.POINT]:
+            x, y = self._px(*g[MarkKind.POINT])
+            r = np.array([[st.aux_point_radius if m.role == "auxiliary" or ("." in m.name and not m.label)
+                           else st.point_radius] for m in self.rows[MarkKind.POINT]]) + np.zeros(x.shape)
+            out[MarkKind.POINT] = stack(x, y, r)
+        if g[MarkKind.SEGMENT]:
+            x1, y1, x2, y2 = g[MarkKind.SEGMENT]
+            out[MarkKind.SEGMENT] = stack(*self._px(x1, y1), *self._px(x2, y2))
+        if g[MarkKind.CIRCLE]:
+            cx, cy, r = g[MarkKind.CIRCLE]
+            out[MarkKind.CIRCLE] = stack(*self._px(cx, cy), r * scale)
+        if g[MarkKind.ARC]:
+            cx, cy, r, a0, sw = g[MarkKind.ARC]
+            x0, y0 = self._px(cx + r * np.cos(a0), cy + r * np.sin(a0))
+            x1, y1 = self._px(cx + r * np.cos(a0 + sw), cy + r * np.sin(a0 + sw))
+            rr = r * scale
+            out[MarkKind.ARC] = stack(x1, y1, rr, rr, 0.0 * rr, (sw > math.pi) * 1.0, 0.0 * rr + 1.0, x0, y0)
+        for m in self.curve_marks:
+            P = [self._px(x, y) for x, y in self.curves[m.id]]
+            if m.straight:
+                closed = len(P) > 2 and tuple(m.geom[0]) == tuple(m.geom[-1])
+                cols = [c for p in (P[:-1] if closed else P) for c in p]
+            else:
+                cols = [P[0][0], P[0][1]]
+                for i in range(len(P) - 1):
+                    p0 = P[i - 1] if i > 0 else P[i]
+                    p1, p2 = P[i], P[i + 1]
+                    p3 = P[i + 2] if i + 2 < len(P) else P[i + 1]
+                    cols += [p1[0] + (p2[0] - p0[0]) / 6.0, p1[1] + (p2[1] - p0[1]) / 6.0,
+                             p2[0] - (p3[0] - p1[0]) / 6.0, p2[1] - (p3[1] - p1[1]) / 6.0, p2[0], p2[1]]
+            out[m.id] = stack(*cols)[None]
+        if getattr(self, "at_marks", None):
+            x, y = self._px(*self.at_geom)
+            r = np.array([[st.aux_point_radius if m.role == "auxiliary" or ("." in m.name and not m.label)
+                           else st.point_radius] for m in self.at_marks]) + np.zeros(x.shape)
+            out["-at"] = stack(x, y, r)
+        return out
+
+
+def _arc_box(cx, cy, r, a0, sw) -> tuple:
+    """scene._arc_extremes over arrays: an arc's ends and the quarter points it passes, as a box."""
+    lo, hi = np.minimum(a0, a0 + sw), np.maximum(a0, a0 + sw)
+    xs, ys = [cx + r * np.cos(a0), cx + r * np.cos(a0 + sw)], [cy + r * np.sin(a0), cy + r * np.sin(a0 + sw)]
+    quarter = math.pi / 2
+    first, last = np.ceil(lo / quarter), np.floor(hi / quarter)
+    for q in range(int(np.nanmin(first)), int(np.nanmax(last)) + 1):
+        inside = (q >= first) & (q <= last)
+        xs.append(np.where(inside, cx + r * math.cos(q * quarter), xs[0]))
+        ys.append(np.where(inside, cy + r * math.sin(q * quarter), ys[0]))
+    X, Y = np.stack(xs), np.stack(ys)
+    return (X.min(0), X.max(0), Y.min(0), Y.max(0))

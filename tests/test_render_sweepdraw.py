@@ -1,0 +1,76 @@
+"""The drawing over a whole sweep at once (render/sweepdraw.py) against the drawing one value at a time.
+
+The reference is the scalar path: the scene of each value and the drawing's own mark geometry
+(``Measure`` of construct.constructions.live, itself held to the player page in
+tests/test_constructions_live.py).  The values spread over the whole stated domain of the rod ratio,
+past the broken axis and close to L/r = 1.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from construct.constructions import get
+from construct.constructions.live import Measure
+from construct.figure import Figure
+from construct.render.output import scene_for
+from construct.render.styles import STYLES
+from construct.render.sweepdraw import SweepDrawing, sweep_drawable
+
+VALUES = np.concatenate([10 ** np.linspace(np.log10(1.05), 3.0, 37), [1.06, 4.0, 5.0]])
+
+
+def _sweep(name: str, params: dict):
+    c = get(name)
+    built = c.figure(**params)
+    replay = built.protocol.replay(c.rod_ratio_sweep(dict(built.replay.givens), VALUES))
+    return c, built, replay
+
+
+@pytest.mark.parametrize("name, params", [("crank", {"parts": 6}), ("crank", {"parts": 18}), ("inertia-curve", {})])
+def test_every_mark_is_drawn_where_the_drawing_draws_it_value_by_value(name, params):
+    c, built, replay = _sweep(name, params)
+    measure = Measure(c, built, STYLES["teaching"])
+    drawn = SweepDrawing(scene_for(c, built), built.protocol, replay, len(VALUES), STYLES["teaching"])
+    assert drawn.ok.mean() >= 0.9  # where it is not sure (a mark changing its form), the caller draws
+    for i in np.flatnonzero(drawn.ok):
+        keys, nums, fit, _ = measure(Figure(built.protocol, replay.take(int(i), whole=True), c.check))
+        at, by_mark = 0, {}
+        for k in keys:
+            n = k[2].count("#")
+            by_mark.setdefault(k[0], []).extend(nums[at:at + n])
+            at += n
+        for mid, got in drawn.numbers.items():
+            # numpy rounds x * 100, the writer the exact decimal: at most a unit of the last written digit
+            assert np.abs(np.asarray(by_mark[mid]) - got[i]).max() <= 0.0101, (VALUES[i], mid)
+        assert np.allclose(drawn.fit[i], fit, rtol=1e-12, atol=1e-9)
+        assert by_mark["figure"][3] == pytest.approx(drawn.size[1][i], abs=0.0051)
+
+
+@pytest.mark.parametrize("name, params", [("inertia-curve", {}), ("piston-force", {})])
+def test_a_sweeps_frames_are_the_frames_of_each_value(name, params):
+    """Measure.frames (the sweep at once where it can, value by value where not) gives each value's frame:
+    the same keys, numbers within the last written digit (views too: they are carried from the same
+    boxes), the same fit and letters."""
+    c = get(name)
+    built = c.figure(**params)
+    values = VALUES[::4]
+    swept = c.rod_ratio_sweep(dict(built.replay.givens), values)
+    if swept is None:
+        pytest.skip(f"{name} has no rod ratio to sweep")
+    replay = built.protocol.replay(swept)
+    measure = Measure(c, built, STYLES["teaching"])
+    frames = measure.frames(built.protocol, replay, len(values))
+    for i, (keys, nums, fit, texts) in enumerate(frames):
+        want = measure(Figure(built.protocol, replay.take(i, whole=True), c.check))
+        assert keys == want[0]
+        assert np.abs(np.asarray(nums) - np.asarray(want[1])).max() <= 0.0101
+        assert np.allclose(fit, want[2], rtol=1e-12, atol=1e-9)
+        assert texts == want[3]
+
+
+def test_a_figure_with_hatched_areas_is_left_to_the_drawing():
+    c = get("tangential-pressure")
+    scene = scene_for(c, c.figure(parts=6))
+    assert not sweep_drawable(scene) and sweep_drawable(scene_for(get("crank"), get("crank").figure(parts=3)))

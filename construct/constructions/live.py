@@ -589,6 +589,9 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     rows = []
     for u in us:
         kk, nn = data[u][:2]
+        if kk == keys:  # (the commonest: every mark at every value) the numbers as they are
+            rows.append(nn)
+            continue
         pos, at = {}, 0
         for k in kk:
             n = k[2].count("#")

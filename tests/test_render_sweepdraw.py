@@ -48,11 +48,11 @@ def test_every_mark_is_drawn_where_the_drawing_draws_it_value_by_value(name, par
         assert by_mark["figure"][3] == pytest.approx(drawn.size[1][i], abs=0.0051)
 
 
-@pytest.mark.parametrize("name, params", [("inertia-curve", {}), ("piston-force", {})])
+@pytest.mark.parametrize("name, params", [("inertia-curve", {}), ("piston-force", {}), ("crank-angle", {})])
 def test_a_sweeps_frames_are_the_frames_of_each_value(name, params):
     """Measure.frames (the sweep at once where it can, value by value where not) gives each value's frame:
     the same keys, numbers within the last written digit (views too: they are carried from the same
-    boxes), the same fit and letters."""
+    boxes), the same fit and letters (crank-angle's are angles read off the figure, on its lettered lines)."""
     c = get(name)
     built = c.figure(**params)
     values = VALUES[::4]

@@ -363,9 +363,11 @@ class Measure:
                 self.runs[-1] = (k[0], self.runs[-1][1] + k[2].count("#"))
             else:
                 self.runs.append((k[0], k[2].count("#")))
-        # the letters whose text is read off the figure (an angle), by the id of their letter
+        # the letters whose text is read off the figure (an angle), by the id of their letter (a lettered line's
+        # letter stands at a point of its own, "NAME.at")
         readings = {name: label for st in built.protocol.steps for name, label in st.labels if "{∠" in label}
-        self.readings = {f"{m.id}-label": readings[m.name] for m in scene.marks if m.name in readings and m.label}
+        of = lambda m: m.name[:-3] if m.id.endswith("-at") and m.name.endswith(".at") else m.name  # noqa: E731
+        self.readings = {f"{m.id}-label": readings[of(m)] for m in scene.marks if of(m) in readings and m.label}
         self.texts = {k: v for k, v in texts.items() if k not in self.readings}  # the same at every value
 
     def _boxes(self, scene, vp) -> list[tuple[float, float, float, float] | None]:

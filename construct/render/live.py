@@ -157,7 +157,8 @@ LIVE_SCRIPT = r"""
       if (!el || (!mv && el !== svg)) return;
       var host = el.closest ? el.closest("g[data-step]") : null;
       var sl = {el: el, attr: k[1], parts: parts, cs: cs, fl: fl, v: new Float64Array(nn), text: el.getAttribute(k[1]),
-                step: host ? +host.getAttribute("data-step") : 0};
+                step: host ? +host.getAttribute("data-step") : 0, len: lengthOf(el, k[1], parts)};
+      if (sl.len) sl.v[0] = sl.len.value;
       // the whole figure's box: written as data-full, and as the view by the player (or below without one)
       if (el === svg) { fullSlot = sl; sl.el = null; sl.text = svg.getAttribute("data-full") || sl.text; } else slots.push(sl);
       if (k[1] === "cx" || k[1] === "cy") (byId[k[0]] = byId[k[0]] || {})[k[1]] = sl;
@@ -181,7 +182,9 @@ LIVE_SCRIPT = r"""
     function add(t, p){
       if (!p || !p.s) return;  // no point, or one that does not move
       var host = t.closest("g[data-step]");
-      followers.push({el: t, p: p, at: coords(t), step: host ? +host.getAttribute("data-step") : 0, text: {}});
+      var at = coords(t), len = {};
+      for (var a in at) if (a !== "g" && a !== "translate" && a !== "shift") len[a] = lengthOf(t, a, ["", ""]);
+      followers.push({el: t, p: p, at: at, step: host ? +host.getAttribute("data-step") : 0, text: {}, len: len});
     }
     // a label group (the camera's: letters, halo and leader about an anchor) moves as one, with its point
     svg.querySelectorAll("g.lbg").forEach(function(g){
@@ -211,10 +214,17 @@ LIVE_SCRIPT = r"""
       if (p && p.s && p.s.cx && p.s.cy) ringAt[i] = {p: p, x: st.r[0], y: st.r[1]};
     });
   }
+  function lengthOf(el, attr, parts){  // the SVG length an attribute of one bare number is (cx, cy, r, x1, …)
+    var a = parts.length === 2 && !parts[0] && !parts[1] && el !== svg && el[attr];
+    return a && a.baseVal && typeof a.baseVal.value === "number" && a.baseVal.unitType === 1 ? a.baseVal : null;
+  }
   function coords(e){  // a letter's x, y or a leader line's ends, as built; or its label group's translate
     var out = {}, g = e.parentNode, m = g && g.classList && g.classList.contains("lbg") &&
       /^translate\(([-0-9.e]+)[ ,]+([-0-9.e]+)\)$/.exec(g.getAttribute("transform") || "");
-    if (m) return {translate: [+m[1], +m[2]], g: g};
+    if (m) {
+      var list = g.transform && g.transform.baseVal, one = list && list.numberOfItems === 1 ? list.getItem(0) : null;
+      return {translate: [+m[1], +m[2]], g: g, shift: one && one.type === 2 ? one : null};  // 2: SVG_TRANSFORM_TRANSLATE
+    }
     ["x", "y", "x1", "y1", "x2", "y2"].forEach(function(a){ var v = e.getAttribute(a); if (v !== null && v !== "" && !isNaN(+v)) out[a] = +v; });
     return out;
   }
@@ -228,7 +238,10 @@ LIVE_SCRIPT = r"""
     if (L.jumps.indexOf(lo) >= 0) t = t < 0.5 ? 0 : 1;
     return [lo, t];
   }
-  function view(dragging){  // what the player's show(k) does with the view, without touching the steps (cheap)
+  // while the given is dragged, the letters keep their scale until it is 1 % off (a new scale restyles and
+  // lays out every letter again); the exact scale is set when the slider is let go
+  var SLACK = 0.01;
+  function view(dragging, slack){  // what the player's show(k) does with the view, without touching the steps (cheap)
     var d = player.data, k = +(svg.getAttribute("data-step") || d.n), st = k > 0 ? d.steps[k - 1] : null;
     if (st && st[IDX] >= 0 && cur && zoomAt[k - 1] !== undefined) {
       for (var i = 0; i < 4; i++) d[LIST][st[IDX]][i] = Math.round(valueAt(zoomAt[k - 1] + i) * 100) / 100;
@@ -239,7 +252,7 @@ LIVE_SCRIPT = r"""
       st.r[1] = Math.round((rp.y + now(rp.p.s.cy) - rp.p.y) * 100) / 100;
     }
     // the player moves its view there itself: at once while the given is dragged, smoothly to a new step
-    if (player.jump && dragging) { player.jump(); return; }
+    if (player.jump && dragging) { player.jump(slack || 0); return; }
     if (player.move) { player.move(); return; }
     var zoom = document.getElementById("zoom");
     var box = st && zoom && zoom.checked && k < d.n && st.z >= 0 ? d.zooms[st.z] : null;
@@ -254,10 +267,19 @@ LIVE_SCRIPT = r"""
     var uc = colmap[c];
     return isFlag[c] ? (cur.t < 0.5 ? D[cur.r0 + uc] : D[cur.r1 + uc]) : D[cur.r0 + uc] + (D[cur.r1 + uc] - D[cur.r0 + uc]) * cur.t;
   }
-  function write(sl){  // one mark's attribute at the shown value; written only when its text changes
-    var parts = sl.parts, cs = sl.cs, txt = parts[0], r0 = cur.r0, r1 = cur.r1, t = cur.t;
+  function write(sl){  // one mark's attribute at the shown value; written only when it changes
+    var parts = sl.parts, cs = sl.cs, r0 = cur.r0, r1 = cur.r1, t = cur.t, v;
+    if (sl.len) {  // one length (a point's centre, a line's end): its number, set without text to parse
+      var c0 = cs[0];
+      v = sl.fl[0] ? (t < 0.5 ? D[r0 + c0] : D[r1 + c0]) : D[r0 + c0] + (D[r1 + c0] - D[r0 + c0]) * t;
+      v = Math.round(v * 100) / 100;
+      if (v !== sl.v[0]) { sl.v[0] = v; sl.len.value = v; }
+      return;
+    }
+    var txt = parts[0];
     for (var i = 1; i < parts.length; i++) {
-      var c = cs[i - 1], v = sl.fl[i - 1] ? (t < 0.5 ? D[r0 + c] : D[r1 + c]) : D[r0 + c] + (D[r1 + c] - D[r0 + c]) * t;
+      var c = cs[i - 1];
+      v = sl.fl[i - 1] ? (t < 0.5 ? D[r0 + c] : D[r1 + c]) : D[r0 + c] + (D[r1 + c] - D[r0 + c]) * t;
       v = Math.round(v * 100) / 100;
       sl.v[i - 1] = v;
       txt += v + parts[i];
@@ -268,13 +290,17 @@ LIVE_SCRIPT = r"""
     var p = fo.p, dx = (p.s.cx ? p.s.cx.v[0] : p.x) - p.x, dy = (p.s.cy ? p.s.cy.v[0] : p.y) - p.y;
     // moved by their own coordinates (a transform attribute would lose to the camera's CSS scale)
     if (fo.at.g) {  // the camera's label group: its anchor moves (the letters scale about it)
-      var tr = "translate(" + (fo.at.translate[0] + dx).toFixed(2) + " " + (fo.at.translate[1] + dy).toFixed(2) + ")";
-      if (tr !== fo.text.t) { fo.text.t = tr; fo.at.g.setAttribute("transform", tr); }
+      var gx = Math.round((fo.at.translate[0] + dx) * 100) / 100, gy = Math.round((fo.at.translate[1] + dy) * 100) / 100;
+      if (gx !== fo.text.x || gy !== fo.text.y) {
+        fo.text.x = gx; fo.text.y = gy;
+        // the group's one translate, set as numbers (no transform text to parse)
+        if (fo.at.shift) fo.at.shift.setTranslate(gx, gy); else fo.at.g.setAttribute("transform", "translate(" + gx + " " + gy + ")");
+      }
       return;
     }
     for (var a in fo.at) {
-      var s = (fo.at[a] + (a.charAt(0) === "x" ? dx : dy)).toFixed(2);
-      if (s !== fo.text[a]) { fo.text[a] = s; fo.el.setAttribute(a, s); }
+      var v = Math.round((fo.at[a] + (a.charAt(0) === "x" ? dx : dy)) * 100) / 100;
+      if (v !== fo.text[a]) { fo.text[a] = v; if (fo.len[a]) fo.len[a].value = v; else fo.el.setAttribute(a, String(v)); }
     }
   }
   function catchUp(k){  // the marks of the steps up to k at the shown value (later steps are hidden)
@@ -283,7 +309,7 @@ LIVE_SCRIPT = r"""
     for (var f = 0; f < followers.length; f++) if (followers[f].step > doneTo && followers[f].step <= k) follow(followers[f]);
     doneTo = k;
   }
-  function redraw(value){
+  function redraw(value, dragging){
     var t0 = performance.now();
     var u = Math.log10(value), ct = cell(u), t = ct[1];
     cur = {r0: ct[0] * U, r1: Math.min(ct[0] + 1, rows - 1) * U, t: t};
@@ -297,7 +323,7 @@ LIVE_SCRIPT = r"""
       }
     }
     // the view first (the player reads the figure's size there: nothing written yet, no layout forced)
-    if (player) view(true);
+    if (player) view(true, dragging ? SLACK : 0);
     var k = player ? +(svg.getAttribute("data-step") || player.data.n) : Infinity;
     doneTo = -1;
     catchUp(k);
@@ -337,24 +363,34 @@ LIVE_SCRIPT = r"""
     });
     if (givenCell) givenCell.textContent = (inverse ? "1/" : "") + book(value);
   }
-  var body = document.querySelector("#live-checks tbody"), shownAt = -1;
+  var body = document.querySelector("#live-checks tbody"), shownAt = -1, cells = [];
   L.checks = L.checks || [];
-  function cellText(tr, text, cls){ var td = document.createElement("td"); td.textContent = text; if (cls) td.className = cls; tr.appendChild(td); }
+  function put(td, text, cls){  // a cell's text (and class) written only when it changes: no row is rebuilt
+    if (td.textContent !== text) td.textContent = text;
+    if (cls !== undefined && td.className !== cls) td.className = cls;
+  }
   function showChecks(u){
     if (!L.checks || !L.checks.length) return;
     var k = 0, bd = Infinity;  // the nearest value the checks were swept at, in log10
     L.check_values.forEach(function(v, i){ var d = Math.abs(Math.log10(v) - u); if (d < bd) { bd = d; k = i; } });
     if (k === shownAt) return;
     shownAt = k;
-    document.getElementById("live-at").textContent = "(" + L.symbol + " = " + book(L.check_values[k]) + ")";
-    while (body.firstChild) body.removeChild(body.firstChild);
-    L.checks[k].forEach(function(c, i){
-      // [formula, error, ok, constructed value where formula + error does not give it] (live.py _check_table)
-      var tr = document.createElement("tr"), num = function(x){ return x === null ? "–" : x.toPrecision(8); };
-      var made = c.length > 3 ? c[3] : (c[0] === null || c[1] === null ? null : c[0] + c[1]);
-      cellText(tr, L.check_names[i]); cellText(tr, num(made)); cellText(tr, num(c[0]));
-      cellText(tr, c[1] === null ? "–" : c[1].toExponential(1)); cellText(tr, c[2] ? "✓" : "✗", c[2] ? "ok" : "bad");
+    put(document.getElementById("live-at"), "(" + L.symbol + " = " + book(L.check_values[k]) + ")");
+    var rows = L.checks[k];
+    // the rows are made once (a rebuilt table is laid out anew, at the cost of a frame); their cells change
+    while (cells.length > rows.length) body.removeChild(cells.pop()[0].parentNode);
+    while (cells.length < rows.length) {
+      var tr = document.createElement("tr"), row = [];
+      for (var j = 0; j < 5; j++) row.push(tr.appendChild(document.createElement("td")));
       body.appendChild(tr);
+      cells.push(row);
+    }
+    rows.forEach(function(c, i){
+      // [formula, error, ok, constructed value where formula + error does not give it] (live.py _check_table)
+      var td = cells[i], num = function(x){ return x === null ? "–" : x.toPrecision(8); };
+      var made = c.length > 3 ? c[3] : (c[0] === null || c[1] === null ? null : c[0] + c[1]);
+      put(td[0], L.check_names[i]); put(td[1], num(made)); put(td[2], num(c[0]));
+      put(td[3], c[1] === null ? "–" : c[1].toExponential(1)); put(td[4], c[2] ? "✓" : "✗", c[2] ? "ok" : "bad");
     });
   }
   api.ready = inflate(L.meta_z).then(function(b){
@@ -371,7 +407,11 @@ LIVE_SCRIPT = r"""
     input.addEventListener("input", function(){
       if (pending) return;
       pending = true;
-      requestAnimationFrame(function(){ pending = false; redraw(Math.pow(10, +input.value)); });
+      requestAnimationFrame(function(){ pending = false; redraw(Math.pow(10, +input.value), true); });
+    });
+    // let go (or a key's step): the letters at their exact scale
+    input.addEventListener("change", function(){
+      requestAnimationFrame(function(){ redraw(Math.pow(10, +input.value), false); });
     });
     // a new step: its marks and its view at the shown value (the player has just set the built view)
     var seenStep = svg.getAttribute("data-step");
@@ -381,10 +421,10 @@ LIVE_SCRIPT = r"""
     }).observe(svg, {attributes: true, attributeFilter: ["data-step"]});
     showChecks(Math.log10(L.initial));
   });
-  api.set = function(value){
+  api.set = function(value, dragging){  // dragging: drawn as a drag draws it (see SLACK)
     value = Math.min(L.high, Math.max(L.low, value));
     input.value = Math.log10(value);
-    redraw(value);
+    redraw(value, !!dragging);
     return api.lastMs;
   };
 })();

@@ -247,3 +247,68 @@ def test_angles_read_off_the_figure_are_shown_at_the_built_value_only(browser, t
     assert all(page.evaluate(shown, letters))
     assert errors == []
     page.close()
+
+
+def test_the_checks_table_keeps_its_rows_and_rewrites_their_cells(browser, live_player):
+    """The checks beside the figure change in place: a table rebuilt on every nearer swept value is laid out
+    anew at the cost of a frame.  The rows stay the same nodes, and every cell shows the value it shows when
+    the slider comes straight to that value."""
+    _, _, path = live_player
+    page, errors = _open(browser, path)
+    rows = "() => Array.from(document.querySelectorAll('#live-checks tbody tr')).map(r => Array.from(r.cells).map(c => c.textContent + '|' + c.className))"
+    page.evaluate("v => window.constructLive.set(v)", 1.3)
+    at_13 = page.evaluate(rows)
+    page.evaluate("() => document.querySelectorAll('#live-checks tbody tr').forEach(r => { r.kept = true; })")
+    page.evaluate("v => window.constructLive.set(v)", 41.0)
+    at_41 = page.evaluate(rows)
+    assert at_41 != at_13 and len(at_41) == len(at_13) > 0
+    assert page.evaluate("() => Array.from(document.querySelectorAll('#live-checks tbody tr')).every(r => r.kept)")
+    page.evaluate("v => window.constructLive.set(v)", 1.3)
+    assert page.evaluate(rows) == at_13
+    fresh, _ = _open(browser, path)  # the same value reached straight from the built one
+    fresh.evaluate("v => window.constructLive.set(v)", 41.0)
+    assert fresh.evaluate(rows) == at_41
+    fresh.close()
+    assert not errors, errors
+    page.close()
+
+
+def test_while_dragging_the_letters_keep_a_scale_within_one_percent_and_take_the_exact_one_when_let_go(browser, live_player):
+    """A new letter scale restyles and lays out every letter: while the given is dragged the camera keeps the
+    shown scale until it is 1 % off the exact one, and the exact one is set when the slider is let go.  The
+    figure is shown whole in a low window, so that its height sets the scale (which then follows the box)."""
+    _, _, path = live_player
+    page = browser.new_page(viewport={"width": 1400, "height": 600})
+    errors: list[str] = []
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    page.goto(path.as_uri())
+    page.evaluate("window.constructLive.ready")
+    page.evaluate("() => { const z = document.getElementById('zoom'); z.checked = false; z.onchange(); }")
+    page.wait_for_timeout(500)  # the camera's glide to the whole figure
+    scale = "() => +getComputedStyle(document.querySelector('#figure .pt')).getPropertyValue('--ls')"
+    grow = """([f, slack]) => { const p = window.constructPlayer; p.full[2] *= f; p.full[3] *= f; p.jump(slack); }"""
+    built = page.evaluate(scale)
+    assert built > 1.0  # letters at 9.5 px: the scale follows the view
+    page.evaluate(grow, [1.005, 0.01])  # a drag's frame: half a percent off, kept
+    assert page.evaluate(scale) == built
+    page.evaluate(grow, [1.0, 0])  # the same view drawn exactly
+    assert page.evaluate(scale) == pytest.approx(built * 1.005, abs=2e-4)
+    page.evaluate(grow, [1.004, 0.01])
+    page.evaluate(grow, [1.004, 0.01])  # 0.8 % off the shown one: kept
+    assert page.evaluate(scale) == pytest.approx(built * 1.005, abs=2e-4)
+    page.evaluate(grow, [1.004, 0.01])  # 1.2 % off: drawn
+    assert page.evaluate(scale) == pytest.approx(built * 1.005 * 1.004 ** 3, abs=2e-4)
+    # the live slider: dragged, then let go ('change'): the exact scale of the value (as set() draws it)
+    page.evaluate("v => window.constructLive.set(v)", 3.3)
+    exact = page.evaluate(scale)
+    page.evaluate("v => window.constructLive.set(v, true)", 3.3)
+    page.evaluate("() => { window.kept = window.constructPlayer.full.slice(); }")
+    page.evaluate(grow, [0.994, 0])  # an earlier frame of the drag drew a scale 0.6 % off
+    page.evaluate("() => { window.kept.forEach((x, i) => { window.constructPlayer.full[i] = x; }); }")
+    page.evaluate(grow, [1.0, 0.01])  # the drag's last frame, at 3.3: kept
+    assert page.evaluate(scale) == pytest.approx(exact * 0.994, abs=2e-4)
+    page.evaluate("""() => new Promise(r => { const i = document.querySelector('#live input[type=range]');
+        i.dispatchEvent(new Event('change')); requestAnimationFrame(() => requestAnimationFrame(r)); })""")
+    assert page.evaluate(scale) == exact
+    assert not errors, errors
+    page.close()

@@ -83,6 +83,11 @@ LIVE_SCRIPT = r"""
   var out = document.getElementById("live-value");
   var api = window.constructLive = {lastMs: 0, value: L.initial};
   var book = function(v){ return String(Number(v.toPrecision(4))).replace(".", ","); };
+  function setText(e, text){  // an element's one text node changed in place (no node replaced), if it changed
+    var t = e.firstChild;
+    if (t && t.nodeType === 3 && !t.nextSibling) { if (t.nodeValue !== text) t.nodeValue = text; }
+    else if (e.textContent !== text) e.textContent = text;
+  }
   if (!L.data) { return; }
   function inflate(b64){
     var bin = atob(b64), bytes = new Uint8Array(bin.length);
@@ -333,7 +338,7 @@ LIVE_SCRIPT = r"""
     for (var j = 0; j < readings.length; j++) if (readings[j].style.display !== shown) readings[j].style.display = shown;
     api.value = value;
     var said = book(value);
-    if (out.textContent !== said) { out.textContent = said; retitle(value); }
+    if (out.textContent !== said) { setText(out, said); retitle(value); }
     showChecks(u);
     api.lastMs = performance.now() - t0;
   }
@@ -361,12 +366,12 @@ LIVE_SCRIPT = r"""
       forms.forEach(function(f){ text = text.replace(f[1], f[0] + shown); });
       t.n.nodeValue = text;
     });
-    if (givenCell) givenCell.textContent = (inverse ? "1/" : "") + book(value);
+    if (givenCell) setText(givenCell, (inverse ? "1/" : "") + book(value));
   }
   var body = document.querySelector("#live-checks tbody"), shownAt = -1, cells = [];
   L.checks = L.checks || [];
   function put(td, text, cls){  // a cell's text (and class) written only when it changes: no row is rebuilt
-    if (td.textContent !== text) td.textContent = text;
+    setText(td, text);
     if (cls !== undefined && td.className !== cls) td.className = cls;
   }
   function showChecks(u){

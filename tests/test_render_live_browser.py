@@ -312,3 +312,61 @@ def test_while_dragging_the_letters_keep_a_scale_within_one_percent_and_take_the
     assert page.evaluate(scale) == exact
     assert not errors, errors
     page.close()
+
+
+_SEEN = """keys => { const svg = document.getElementById('figure'), R = svg.getBoundingClientRect();
+    return keys.map(k => {
+      if (k[0].charAt(0) === '#' || !k[0] || k[0] === 'figure') return [null, false];
+      const el = document.getElementById(k[0]), r = el.getBoundingClientRect();
+      const shown = r.width + r.height > 0 && r.right >= R.left && r.left <= R.right && r.bottom >= R.top && r.top <= R.bottom;
+      return [el.getAttribute(k[1]), shown]; }); }"""
+
+
+def test_a_drag_draws_every_mark_in_the_window_and_the_rest_when_let_go(browser, live_player):
+    """While the given is dragged the page draws the marks the window shows (a hidden group's marks, or marks
+    outside the window, cost a restyle and a layout all the same): each of those is where a fresh replay draws
+    it; the others follow when the slider is let go, and when a step is shown."""
+    c, _, path = live_player
+    page, errors = _open(browser, path)
+    keys, snapped = _keys(page)
+    fresh_of = {}
+
+    def fresh(v):
+        if v not in fresh_of:
+            fk, fv, _ = drawn_numbers(player_page(c, c.figure(parts=3, rod_ratio=v), STYLES["teaching"]))
+            at, out = 0, {}
+            for k in fk:
+                n = k[2].count("#")
+                out[k] = fv[at:at + n]
+                at += n
+            fresh_of[v] = out
+        return fresh_of[v]
+
+    page.evaluate("() => { const s = document.getElementById('slider'); s.value = 30; s.oninput(); }")
+    page.wait_for_timeout(500)  # the camera's glide to the step's view
+    seen_total = left = 0
+    for v in (1.9, 3.3, 4.37, 7.1):
+        page.evaluate("v => window.constructLive.set(v, true)", v)
+        want = fresh(v)
+        for k, (text, seen) in zip(keys, page.evaluate(_SEEN, keys)):
+            k = tuple(k)
+            if text is None or k in snapped:
+                continue
+            d = max(abs(a - b) for a, b in zip((float(x) for x in NUMBER.findall(text)), want[k]))
+            if seen:
+                assert d <= 0.5, f"L/r = {v}: {k[0]} {k[1]} in the window off by {d:.3f} px while dragging"
+                seen_total += 1
+            left += d > 0.5
+    assert seen_total > 0 and left > 0  # marks in the window compared, and others left while dragging
+    # let go: every mark where a fresh replay draws it
+    page.evaluate("""() => new Promise(r => { const i = document.querySelector('#live input[type=range]');
+        i.dispatchEvent(new Event('change')); requestAnimationFrame(() => requestAnimationFrame(r)); })""")
+    page.keyboard.press("End")  # the later steps too (they are drawn when shown)
+    assert _compare(page, c, {"parts": 3}, 7.1, keys, snapped) > 0.0
+    # dragged again, then a step shown (no let-go): the marks of the steps shown follow at once
+    page.evaluate("() => { const s = document.getElementById('slider'); s.value = 30; s.oninput(); }")
+    page.evaluate("v => window.constructLive.set(v, true)", 2.6)
+    page.keyboard.press("End")
+    assert _compare(page, c, {"parts": 3}, 2.6, keys, snapped) > 0.0
+    assert not errors, errors
+    page.close()

@@ -208,6 +208,7 @@ LIVE_SCRIPT = r"""
       add(t, owned(t) || nearest(x, y));
     });
     followers.sort(function(a, b){ return a.step - b.step; });
+    group();
     // letters that are readings of the figure (an angle read off it): true at the built value only
     (L.readings || []).forEach(function(id){
       var t = document.getElementById(id);
@@ -218,6 +219,101 @@ LIVE_SCRIPT = r"""
       var p = st.r ? nearest(st.r[0], st.r[1]) : null;
       if (p && p.s && p.s.cx && p.s.cy) ringAt[i] = {p: p, x: st.r[0], y: st.r[1]};
     });
+  }
+  // While the given is dragged only the marks in the window are drawn (at a magnified step most of the figure
+  // lies outside it: 1222 of the inertia curve's 1405 moving marks at its last step); each mark's box at the
+  // value is computed from its numbers, and a mark is drawn if that box or the one it was last drawn at meets
+  // the window (widened by a margin).  The others are drawn when the drag ends ('change'), the step or the view
+  // changes (the camera, the magnifier, the window's size): never seen behind.
+  var elems = [], MARGIN_PX = 40, LABEL_PX = 150, ownBox = null, stale = false, visKey = null, hid = new Map();
+  // A mark in a group the step hides (display:none: later steps, finished groups, letters of another zoom
+  // level) is not drawn either while dragging, yet a new attribute there costs the browser a restyle and a
+  // layout all the same: at the inertia curve's last step 907 of its 1156 moving marks are hidden so.
+  function hidden(node){  // the node or a group round it not displayed (known per step and zoom level)
+    if (!node || node === svg || node.nodeType !== 1) return false;
+    var h = hid.get(node);
+    if (h === undefined) { h = hidden(node.parentNode) || getComputedStyle(node).display === "none"; hid.set(node, h); }
+    return h;
+  }
+  function shownNow(){  // what is displayed changes with the step and the zoom level's class only
+    var key = svg.getAttribute("data-step") + "|" + svg.getAttribute("class");
+    if (key !== visKey) { visKey = key; hid = new Map(); }
+  }
+  // what each number of a path's commands is: 1 an x, 2 a y, 3 a radius, 0 neither (arcs' angle and flags)
+  var ROLES = {M: "12", L: "12", T: "12", H: "1", V: "2", C: "121212", S: "1212", Q: "1212", A: "3300012"};
+  function rolesOf(attr, parts){  // null: numbers the box cannot be told from (the mark is always drawn)
+    if (attr === "cx" || attr === "x1" || attr === "x2" || attr === "x") return parts.length === 2 ? [1] : null;
+    if (attr === "cy" || attr === "y1" || attr === "y2" || attr === "y") return parts.length === 2 ? [2] : null;
+    if (attr === "r") return parts.length === 2 ? [3] : null;
+    if (attr !== "d") return null;
+    var out = [], cmd = null, k = 0;
+    for (var i = 0; i < parts.length - 1; i++) {
+      var letters = parts[i].match(/[A-Za-z]/g);
+      if (letters) { cmd = letters[letters.length - 1]; k = 0; }
+      var pat = cmd && ROLES[cmd];
+      if (!pat) return null;  // a relative command (lower case), or none: not told
+      out.push(+pat.charAt(k % pat.length));
+      k++;
+    }
+    return out;
+  }
+  var FIXED = {circle: ["cx", "cy", "r"], line: ["x1", "y1", "x2", "y2"], path: ["d"]};
+  function group(){  // the slots of each mark together, with the numbers of its box that do not move
+    var byEl = new Map();
+    slots.forEach(function(sl){
+      var e = byEl.get(sl.el);
+      if (!e) { e = {el: sl.el, slots: [], step: sl.step, cull: true, fixed: [], box: null, stale: false}; byEl.set(sl.el, e); elems.push(e); }
+      e.slots.push(sl);
+      sl.roles = rolesOf(sl.attr, sl.parts);
+      if (!sl.roles) e.cull = false;
+    });
+    byEl.forEach(function(e, el){
+      var names = FIXED[el.tagName];
+      // a mark under a transform of its own (other than its step's) is drawn in other coordinates: always drawn
+      if (!names || el.hasAttribute("transform") || (el.parentNode && el.parentNode.closest && el.parentNode.closest("[transform]"))) { e.cull = false; return; }
+      names.forEach(function(a){
+        if (e.slots.some(function(sl){ return sl.attr === a; })) return;
+        if (a === "d") { e.cull = false; return; }  // (a path's d is one slot or none)
+        var v = +el.getAttribute(a);
+        if (isNaN(v)) e.cull = false; else e.fixed.push(a === "r" ? 3 : a.charAt(0) === "x" || a === "cx" ? 1 : 2, v);
+      });
+    });
+  }
+  function numAt(sl, i){  // the i-th number of a slot at the shown value, as written (to the hundredth)
+    var c = sl.cs[i], v = sl.fl[i] ? (cur.t < 0.5 ? D[cur.r0 + c] : D[cur.r1 + c]) : D[cur.r0 + c] + (D[cur.r1 + c] - D[cur.r0 + c]) * cur.t;
+    return Math.round(v * 100) / 100;
+  }
+  function boxNow(e){  // the mark's box at the shown value (its arcs' and circles' radii round its points)
+    var x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity, r = 0, j, v, role;
+    function add(role, v){
+      if (role === 1) { if (v < x0) x0 = v; if (v > x1) x1 = v; }
+      else if (role === 2) { if (v < y0) y0 = v; if (v > y1) y1 = v; }
+      else if (role === 3 && Math.abs(v) > r) r = Math.abs(v);
+    }
+    for (j = 0; j < e.fixed.length; j += 2) add(e.fixed[j], e.fixed[j + 1]);
+    for (var s = 0; s < e.slots.length; s++) {
+      var sl = e.slots[s];
+      for (j = 0; j < sl.roles.length; j++) if ((role = sl.roles[j])) add(role, numAt(sl, j));
+    }
+    return [x0 - 2 * r, y0 - 2 * r, x1 + 2 * r, y1 + 2 * r];
+  }
+  function meets(b, w, m){ return !!b && b[0] <= w[2] + m && b[2] >= w[0] - m && b[1] <= w[3] + m && b[3] >= w[1] - m; }
+  function visible(r){  // the figure's coordinates the window shows (the view fitted into it, centred) and px
+    var vb = svg.viewBox && svg.viewBox.baseVal;
+    if (!r || !r.width || !r.height || !vb || !vb.width || !vb.height) return null;
+    var s = Math.min(r.width / vb.width, r.height / vb.height), hw = r.width / s / 2, hh = r.height / s / 2;
+    var cx = vb.x + vb.width / 2, cy = vb.y + vb.height / 2;
+    return [cx - hw, cy - hh, cx + hw, cy + hh, 1 / s];
+  }
+  function drawElem(e, w){  // a mark at the shown value: all of it, or (w: the window while dragging) if seen
+    if (w && hidden(e.el)) { e.stale = stale = true; return; }
+    if (w && e.cull) {
+      var b = boxNow(e);
+      if (!meets(b, w, MARGIN_PX * w[4]) && !meets(e.box, w, MARGIN_PX * w[4])) { e.stale = stale = true; return; }
+      e.box = b;
+    } else if (e.cull) e.box = boxNow(e);
+    for (var s = 0; s < e.slots.length; s++) write(e.slots[s]);
+    e.stale = false;
   }
   function lengthOf(el, attr, parts){  // the SVG length an attribute of one bare number is (cx, cy, r, x1, …)
     var a = parts.length === 2 && !parts[0] && !parts[1] && el !== svg && el[attr];
@@ -291,8 +387,15 @@ LIVE_SCRIPT = r"""
     }
     if (txt !== sl.text) { sl.text = txt; if (sl.el) sl.el.setAttribute(sl.attr, txt); }
   }
-  function follow(fo){
-    var p = fo.p, dx = (p.s.cx ? p.s.cx.v[0] : p.x) - p.x, dy = (p.s.cy ? p.s.cy.v[0] : p.y) - p.y;
+  function follow(fo, w){  // a letter or leader line with its point (w: the window while dragging: if seen)
+    var p = fo.p, dx = (p.s.cx ? numAt(p.s.cx, 0) : p.x) - p.x, dy = (p.s.cy ? numAt(p.s.cy, 0) : p.y) - p.y;
+    if (w && hidden(fo.el)) { fo.stale = stale = true; return; }
+    if (w) {  // its point moved by the same as the letter, its box about its point (LABEL_PX)
+      var m = LABEL_PX * w[4], b = [p.x + dx, p.y + dy, p.x + dx, p.y + dy];
+      if (!meets(b, w, m) && !meets(fo.box, w, m)) { fo.stale = stale = true; return; }
+      fo.box = b;
+    } else fo.box = [p.x + dx, p.y + dy, p.x + dx, p.y + dy];
+    fo.stale = false;
     // moved by their own coordinates (a transform attribute would lose to the camera's CSS scale)
     if (fo.at.g) {  // the camera's label group: its anchor moves (the letters scale about it)
       var gx = Math.round((fo.at.translate[0] + dx) * 100) / 100, gy = Math.round((fo.at.translate[1] + dy) * 100) / 100;
@@ -308,14 +411,25 @@ LIVE_SCRIPT = r"""
       if (v !== fo.text[a]) { fo.text[a] = v; if (fo.len[a]) fo.len[a].value = v; else fo.el.setAttribute(a, String(v)); }
     }
   }
-  function catchUp(k){  // the marks of the steps up to k at the shown value (later steps are hidden)
-    if (!cur || k <= doneTo) return;
-    for (var s = 0; s < slots.length; s++) if (slots[s].step > doneTo && slots[s].step <= k) write(slots[s]);
-    for (var f = 0; f < followers.length; f++) if (followers[f].step > doneTo && followers[f].step <= k) follow(followers[f]);
-    doneTo = k;
+  function catchUp(k, w){  // the marks of the steps up to k at the shown value (later steps are hidden): those
+    // not drawn yet, and those a drag left (w: the window while dragging, only the marks seen in it)
+    if (!cur || (k <= doneTo && !stale && !w)) return;
+    var was = stale;
+    stale = false;
+    for (var s = 0; s < elems.length; s++) {
+      var e = elems[s];
+      if (e.step <= k && (w || e.step > doneTo || (was && e.stale))) drawElem(e, w);
+      else if (e.stale) stale = true;  // left by a drag in a step now hidden: drawn when it is shown
+    }
+    for (var f = 0; f < followers.length; f++) {
+      var fo = followers[f];
+      if (fo.step <= k && (w || fo.step > doneTo || (was && fo.stale))) follow(fo, w);
+      else if (fo.stale) stale = true;
+    }
+    doneTo = Math.max(doneTo, k);
   }
   function redraw(value, dragging){
-    var t0 = performance.now();
+    var t0 = performance.now(), shape = dragging && player ? svg.getBoundingClientRect() : null;  // read before any write
     var u = Math.log10(value), ct = cell(u), t = ct[1];
     cur = {r0: ct[0] * U, r1: Math.min(ct[0] + 1, rows - 1) * U, t: t};
     if (fullSlot) {  // the whole figure's box (the view when not magnified)
@@ -331,7 +445,9 @@ LIVE_SCRIPT = r"""
     if (player) view(true, dragging ? SLACK : 0);
     var k = player ? +(svg.getAttribute("data-step") || player.data.n) : Infinity;
     doneTo = -1;
-    catchUp(k);
+    if (shape) shownNow();
+    catchUp(k, shape ? visible(shape) : null);
+    ownBox = svg.getAttribute("viewBox");
     // the broken axis's marks belong to the built value's break; elsewhere the break lies elsewhere or nowhere
     var furniture = document.getElementById("furniture"), shown = Math.abs(u - Math.log10(L.initial)) < 1e-9 ? "" : "none";
     if (furniture && furniture.style.display !== shown) furniture.style.display = shown;
@@ -423,7 +539,10 @@ LIVE_SCRIPT = r"""
     if (player) new MutationObserver(function(){
       var now = svg.getAttribute("data-step");
       if (now !== seenStep) { seenStep = now; if (cur) { catchUp(+now); view(); } }
-    }).observe(svg, {attributes: true, attributeFilter: ["data-step"]});
+      // a view the drag did not draw (the camera gliding to a step, the magnifier): the marks the drag left
+      else if (stale && svg.getAttribute("viewBox") !== ownBox) catchUp(+now);
+    }).observe(svg, {attributes: true, attributeFilter: ["data-step", "viewBox"]});
+    window.addEventListener("resize", function(){ if (stale) catchUp(+(svg.getAttribute("data-step") || Infinity)); });
     showChecks(Math.log10(L.initial));
   });
   api.set = function(value, dragging){  // dragging: drawn as a drag draws it (see SLACK)

@@ -9,8 +9,15 @@ between the grid values the data (:mod:`construct.constructions.live`) holds.
 The page stays one file: the coordinates travel deflated in base64 and are
 inflated with the browser's own ``DecompressionStream``.
 
-The script exposes ``window.constructLive``: ``set(value)`` moves the given,
-``ready`` is a promise for the inflated data, ``lastMs`` the last redraw's time.
+The script exposes ``window.constructLive``: ``set(value)`` moves the given
+(``set(value, true)``: as a drag draws it), ``ready`` is a promise for the
+inflated data, ``lastMs`` the last redraw's time.
+
+A drag is drawn inside one animation frame (``construct bench --live``): each
+frame draws only the marks and letters displayed in the window, the rest when
+the slider is let go, a step is shown or the view changes; numbers are set as
+SVG lengths, not parsed text; the letter scale is kept while it stays within
+1 % (exact on let-go); the checks' cells change in place.
 
 >>> page = "<html><body><div id=stage></div>\\n<aside>\\n</aside>\\n</body></html>"
 >>> out = with_live(page, {"given": "rod_ratio", "symbol": "L/r", "low": 1.05, "high": 1000.0,
@@ -220,11 +227,11 @@ LIVE_SCRIPT = r"""
       if (p && p.s && p.s.cx && p.s.cy) ringAt[i] = {p: p, x: st.r[0], y: st.r[1]};
     });
   }
-  // While the given is dragged only the marks in the window are drawn (at a magnified step most of the figure
-  // lies outside it: 1222 of the inertia curve's 1405 moving marks at its last step); each mark's box at the
-  // value is computed from its numbers, and a mark is drawn if that box or the one it was last drawn at meets
-  // the window (widened by a margin).  The others are drawn when the drag ends ('change'), the step or the view
-  // changes (the camera, the magnifier, the window's size): never seen behind.
+  // While the given is dragged only the marks in the window are drawn (at a magnified step much of the figure
+  // lies outside it); each mark's box at the value is computed from its numbers, and a mark is drawn if that
+  // box or the one it was last drawn at meets the window (widened by a margin).  The others are drawn when the
+  // drag ends ('change'), the step or the view changes (the camera, the magnifier, the window's size): never
+  // seen behind.
   var elems = [], MARGIN_PX = 40, LABEL_PX = 150, ownBox = null, stale = false, visKey = null, hid = new Map();
   // A mark in a group the step hides (display:none: later steps, finished groups, letters of another zoom
   // level) is not drawn either while dragging, yet a new attribute there costs the browser a restyle and a

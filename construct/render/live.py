@@ -396,7 +396,7 @@ LIVE_SCRIPT = r"""
   }
   function follow(fo, w){  // a letter or leader line with its point (w: the window while dragging: if seen)
     var p = fo.p, dx = (p.s.cx ? numAt(p.s.cx, 0) : p.x) - p.x, dy = (p.s.cy ? numAt(p.s.cy, 0) : p.y) - p.y;
-    if (w && hidden(fo.el)) { fo.stale = stale = true; return; }
+    if (w && hidden(fo.at.g || fo.el)) { fo.stale = stale = true; return; }  // (a group: its own display)
     if (w) {  // its point moved by the same as the letter, its box about its point (LABEL_PX)
       var m = LABEL_PX * w[4], b = [p.x + dx, p.y + dy, p.x + dx, p.y + dy];
       if (!meets(b, w, m) && !meets(fo.box, w, m)) { fo.stale = stale = true; return; }
@@ -452,13 +452,13 @@ LIVE_SCRIPT = r"""
     if (player) view(true, dragging ? SLACK : 0);
     var k = player ? +(svg.getAttribute("data-step") || player.data.n) : Infinity;
     doneTo = -1;
-    if (shape) shownNow();
-    catchUp(k, shape ? visible(shape) : null);
-    ownBox = svg.getAttribute("viewBox");
     // the broken axis's marks belong to the built value's break; elsewhere the break lies elsewhere or nowhere
     var furniture = document.getElementById("furniture"), shown = Math.abs(u - Math.log10(L.initial)) < 1e-9 ? "" : "none";
     if (furniture && furniture.style.display !== shown) furniture.style.display = shown;
-    for (var j = 0; j < readings.length; j++) if (readings[j].style.display !== shown) readings[j].style.display = shown;
+    for (var j = 0; j < readings.length; j++) if (readings[j].style.display !== shown) { readings[j].style.display = shown; visKey = null; }
+    if (shape) shownNow();
+    catchUp(k, shape ? visible(shape) : null);
+    ownBox = svg.getAttribute("viewBox");
     api.value = value;
     var said = book(value);
     if (out.textContent !== said) { setText(out, said); retitle(value); }

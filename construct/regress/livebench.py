@@ -178,11 +178,13 @@ def run_live_bench(pages: list[Path], positions: int = POSITIONS, breakdown: boo
 def page_name(page: str) -> str:
     """A player's name in the report: its figure's folder in a gallery (NAME/STYLE/player.html), else its path.
 
-    >>> page_name("gallery/crank-parts-18-rod-ratio-5/teaching/player.html"), page_name("/tmp/x/crank.html")
-    ('crank-parts-18-rod-ratio-5', '/tmp/x/crank.html')
+    >>> page_name("gallery/crank-parts-18-rod-ratio-5/teaching/player.html"), page_name("/tmp/crank/player.html")
+    ('crank-parts-18-rod-ratio-5', '/tmp/crank/player.html')
     """
+    from ..render.styles import STYLES
+
     p = Path(page)
-    return p.parent.parent.name if p.name == "player.html" and p.parent.parent.name else str(p)
+    return p.parent.parent.name if p.name == "player.html" and p.parent.name in STYLES and p.parent.parent.name else str(p)
 
 
 def live_verdicts(found: list[dict[str, Any]]) -> list[str]:

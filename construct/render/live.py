@@ -17,7 +17,7 @@ A drag is drawn inside one animation frame (``construct bench --live``): each
 frame draws only the marks and letters displayed in the window, the rest when
 the slider is let go, a step is shown or the view changes; numbers are set as
 SVG lengths, not parsed text; the letter scale is kept while it stays within
-1 % (exact on let-go); the checks' cells change in place.
+4 % (exact on let-go); the checks' cells change in place.
 
 >>> page = "<html><body><div id=stage></div>\\n<aside>\\n</aside>\\n</body></html>"
 >>> out = with_live(page, {"given": "rod_ratio", "symbol": "L/r", "low": 1.05, "high": 1000.0,
@@ -346,9 +346,10 @@ LIVE_SCRIPT = r"""
     if (L.jumps.indexOf(lo) >= 0) t = t < 0.5 ? 0 : 1;
     return [lo, t];
   }
-  // while the given is dragged, the letters keep their scale until it is 1 % off (a new scale restyles and
-  // lays out every letter again); the exact scale is set when the slider is let go
-  var SLACK = 0.01;
+  // while the given is dragged, the letters keep their scale until it is 4 % off (a 12 px letter within half a
+  // pixel of its size): a new scale restyles and lays out every letter and point again (a frame of its own in
+  // a fast drag); the exact scale is set when the slider is let go
+  var SLACK = 0.04;
   function view(dragging, slack){  // what the player's show(k) does with the view, without touching the steps (cheap)
     var d = player.data, k = +(svg.getAttribute("data-step") || d.n), st = k > 0 ? d.steps[k - 1] : null;
     if (st && st[IDX] >= 0 && cur && zoomAt[k - 1] !== undefined) {

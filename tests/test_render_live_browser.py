@@ -247,3 +247,127 @@ def test_angles_read_off_the_figure_are_shown_at_the_built_value_only(browser, t
     assert all(page.evaluate(shown, letters))
     assert errors == []
     page.close()
+
+
+def test_the_checks_table_keeps_its_rows_and_rewrites_their_cells(browser, live_player):
+    """The checks beside the figure change in place: a table rebuilt on every nearer swept value is laid out
+    anew at the cost of a frame.  The rows stay the same nodes, and every cell shows the value it shows when
+    the slider comes straight to that value."""
+    _, _, path = live_player
+    page, errors = _open(browser, path)
+    rows = "() => Array.from(document.querySelectorAll('#live-checks tbody tr')).map(r => Array.from(r.cells).map(c => c.textContent + '|' + c.className))"
+    page.evaluate("v => window.constructLive.set(v)", 1.3)
+    at_13 = page.evaluate(rows)
+    page.evaluate("() => document.querySelectorAll('#live-checks tbody tr').forEach(r => { r.kept = true; })")
+    page.evaluate("v => window.constructLive.set(v)", 41.0)
+    at_41 = page.evaluate(rows)
+    assert at_41 != at_13 and len(at_41) == len(at_13) > 0
+    assert page.evaluate("() => Array.from(document.querySelectorAll('#live-checks tbody tr')).every(r => r.kept)")
+    page.evaluate("v => window.constructLive.set(v)", 1.3)
+    assert page.evaluate(rows) == at_13
+    fresh, _ = _open(browser, path)  # the same value reached straight from the built one
+    fresh.evaluate("v => window.constructLive.set(v)", 41.0)
+    assert fresh.evaluate(rows) == at_41
+    fresh.close()
+    assert not errors, errors
+    page.close()
+
+
+def test_while_dragging_the_letters_keep_a_scale_within_four_percent_and_take_the_exact_one_when_let_go(browser, live_player):
+    """A new letter scale restyles and lays out every letter: while the given is dragged the camera keeps the
+    shown scale until it is 4 % off the exact one (a 12 px letter within half a pixel of its size), and the
+    exact one is set when the slider is let go.  The
+    figure is shown whole in a low window, so that its height sets the scale (which then follows the box)."""
+    _, _, path = live_player
+    page = browser.new_page(viewport={"width": 1400, "height": 600})
+    errors: list[str] = []
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    page.goto(path.as_uri())
+    page.evaluate("window.constructLive.ready")
+    page.evaluate("() => { const z = document.getElementById('zoom'); z.checked = false; z.onchange(); }")
+    page.wait_for_timeout(500)  # the camera's glide to the whole figure
+    scale = "() => +getComputedStyle(document.querySelector('#figure .pt')).getPropertyValue('--ls')"
+    grow = """([f, slack]) => { const p = window.constructPlayer; p.full[2] *= f; p.full[3] *= f; p.jump(slack); }"""
+    built = page.evaluate(scale)
+    assert built > 1.0  # letters at 9.5 px: the scale follows the view
+    page.evaluate(grow, [1.02, 0.04])  # a drag's frame: 2 % off, kept
+    assert page.evaluate(scale) == built
+    page.evaluate(grow, [1.0, 0])  # the same view drawn exactly
+    assert page.evaluate(scale) == pytest.approx(built * 1.02, abs=2e-4)
+    page.evaluate(grow, [1.015, 0.04])
+    page.evaluate(grow, [1.015, 0.04])  # 3 % off the shown one: kept
+    assert page.evaluate(scale) == pytest.approx(built * 1.02, abs=2e-4)
+    page.evaluate(grow, [1.015, 0.04])  # 4.6 % off: drawn
+    assert page.evaluate(scale) == pytest.approx(built * 1.02 * 1.015 ** 3, abs=2e-4)
+    # the live slider: dragged, then let go ('change'): the exact scale of the value (as set() draws it)
+    page.evaluate("v => window.constructLive.set(v)", 3.3)
+    exact = page.evaluate(scale)
+    page.evaluate("v => window.constructLive.set(v, true)", 3.3)
+    page.evaluate("() => { window.kept = window.constructPlayer.full.slice(); }")
+    page.evaluate(grow, [0.975, 0])  # an earlier frame of the drag drew a scale 2.5 % off
+    page.evaluate("() => { window.kept.forEach((x, i) => { window.constructPlayer.full[i] = x; }); }")
+    page.evaluate(grow, [1.0, 0.04])  # the drag's last frame, at 3.3: kept
+    assert page.evaluate(scale) == pytest.approx(exact * 0.975, abs=2e-4)
+    page.evaluate("""() => new Promise(r => { const i = document.querySelector('#live input[type=range]');
+        i.dispatchEvent(new Event('change')); requestAnimationFrame(() => requestAnimationFrame(r)); })""")
+    assert page.evaluate(scale) == exact
+    assert not errors, errors
+    page.close()
+
+
+_SEEN = """keys => { const svg = document.getElementById('figure'), R = svg.getBoundingClientRect();
+    return keys.map(k => {
+      if (k[0].charAt(0) === '#' || !k[0] || k[0] === 'figure') return [null, false];
+      const el = document.getElementById(k[0]), r = el.getBoundingClientRect();
+      const shown = r.width + r.height > 0 && r.right >= R.left && r.left <= R.right && r.bottom >= R.top && r.top <= R.bottom;
+      return [el.getAttribute(k[1]), shown]; }); }"""
+
+
+def test_a_drag_draws_every_mark_in_the_window_and_the_rest_when_let_go(browser, live_player):
+    """While the given is dragged the page draws the marks the window shows (a hidden group's marks, or marks
+    outside the window, cost a restyle and a layout all the same): each of those is where a fresh replay draws
+    it; the others follow when the slider is let go, and when a step is shown."""
+    c, _, path = live_player
+    page, errors = _open(browser, path)
+    keys, snapped = _keys(page)
+    fresh_of = {}
+
+    def fresh(v):
+        if v not in fresh_of:
+            fk, fv, _ = drawn_numbers(player_page(c, c.figure(parts=3, rod_ratio=v), STYLES["teaching"]))
+            at, out = 0, {}
+            for k in fk:
+                n = k[2].count("#")
+                out[k] = fv[at:at + n]
+                at += n
+            fresh_of[v] = out
+        return fresh_of[v]
+
+    page.evaluate("() => { const s = document.getElementById('slider'); s.value = 30; s.oninput(); }")
+    page.wait_for_timeout(500)  # the camera's glide to the step's view
+    seen_total = left = 0
+    for v in (1.9, 3.3, 4.37, 7.1):
+        page.evaluate("v => window.constructLive.set(v, true)", v)
+        want = fresh(v)
+        for k, (text, seen) in zip(keys, page.evaluate(_SEEN, keys)):
+            k = tuple(k)
+            if text is None or k in snapped:
+                continue
+            d = max(abs(a - b) for a, b in zip((float(x) for x in NUMBER.findall(text)), want[k]))
+            if seen:
+                assert d <= 0.5, f"L/r = {v}: {k[0]} {k[1]} in the window off by {d:.3f} px while dragging"
+                seen_total += 1
+            left += d > 0.5
+    assert seen_total > 0 and left > 0  # marks in the window compared, and others left while dragging
+    # let go: every mark where a fresh replay draws it
+    page.evaluate("""() => new Promise(r => { const i = document.querySelector('#live input[type=range]');
+        i.dispatchEvent(new Event('change')); requestAnimationFrame(() => requestAnimationFrame(r)); })""")
+    page.keyboard.press("End")  # the later steps too (they are drawn when shown)
+    assert _compare(page, c, {"parts": 3}, 7.1, keys, snapped) > 0.0
+    # dragged again, then a step shown (no let-go): the marks of the steps shown follow at once
+    page.evaluate("() => { const s = document.getElementById('slider'); s.value = 30; s.oninput(); }")
+    page.evaluate("v => window.constructLive.set(v, true)", 2.6)
+    page.keyboard.press("End")
+    assert _compare(page, c, {"parts": 3}, 2.6, keys, snapped) > 0.0
+    assert not errors, errors
+    page.close()

@@ -9,8 +9,15 @@ between the grid values the data (:mod:`construct.constructions.live`) holds.
 The page stays one file: the coordinates travel deflated in base64 and are
 inflated with the browser's own ``DecompressionStream``.
 
-The script exposes ``window.constructLive``: ``set(value)`` moves the given,
-``ready`` is a promise for the inflated data, ``lastMs`` the last redraw's time.
+The script exposes ``window.constructLive``: ``set(value)`` moves the given
+(``set(value, true)``: as a drag draws it), ``ready`` is a promise for the
+inflated data, ``lastMs`` the last redraw's time.
+
+A drag is drawn inside one animation frame (``construct bench --live``): each
+frame draws only the marks and letters displayed in the window, the rest when
+the slider is let go, a step is shown or the view changes; numbers are set as
+SVG lengths, not parsed text; the letter scale is kept while it stays within
+4 % (exact on let-go); the checks' cells change in place.
 
 >>> page = "<html><body><div id=stage></div>\\n<aside>\\n</aside>\\n</body></html>"
 >>> out = with_live(page, {"given": "rod_ratio", "symbol": "L/r", "low": 1.05, "high": 1000.0,
@@ -83,6 +90,11 @@ LIVE_SCRIPT = r"""
   var out = document.getElementById("live-value");
   var api = window.constructLive = {lastMs: 0, value: L.initial};
   var book = function(v){ return String(Number(v.toPrecision(4))).replace(".", ","); };
+  function setText(e, text){  // an element's one text node changed in place (no node replaced), if it changed
+    var t = e.firstChild;
+    if (t && t.nodeType === 3 && !t.nextSibling) { if (t.nodeValue !== text) t.nodeValue = text; }
+    else if (e.textContent !== text) e.textContent = text;
+  }
   if (!L.data) { return; }
   function inflate(b64){
     var bin = atob(b64), bytes = new Uint8Array(bin.length);
@@ -157,7 +169,8 @@ LIVE_SCRIPT = r"""
       if (!el || (!mv && el !== svg)) return;
       var host = el.closest ? el.closest("g[data-step]") : null;
       var sl = {el: el, attr: k[1], parts: parts, cs: cs, fl: fl, v: new Float64Array(nn), text: el.getAttribute(k[1]),
-                step: host ? +host.getAttribute("data-step") : 0};
+                step: host ? +host.getAttribute("data-step") : 0, len: lengthOf(el, k[1], parts)};
+      if (sl.len) sl.v[0] = sl.len.value;
       // the whole figure's box: written as data-full, and as the view by the player (or below without one)
       if (el === svg) { fullSlot = sl; sl.el = null; sl.text = svg.getAttribute("data-full") || sl.text; } else slots.push(sl);
       if (k[1] === "cx" || k[1] === "cy") (byId[k[0]] = byId[k[0]] || {})[k[1]] = sl;
@@ -181,7 +194,9 @@ LIVE_SCRIPT = r"""
     function add(t, p){
       if (!p || !p.s) return;  // no point, or one that does not move
       var host = t.closest("g[data-step]");
-      followers.push({el: t, p: p, at: coords(t), step: host ? +host.getAttribute("data-step") : 0, text: {}});
+      var at = coords(t), len = {};
+      for (var a in at) if (a !== "g" && a !== "translate" && a !== "shift") len[a] = lengthOf(t, a, ["", ""]);
+      followers.push({el: t, p: p, at: at, step: host ? +host.getAttribute("data-step") : 0, text: {}, len: len});
     }
     // a label group (the camera's: letters, halo and leader about an anchor) moves as one, with its point
     svg.querySelectorAll("g.lbg").forEach(function(g){
@@ -200,6 +215,7 @@ LIVE_SCRIPT = r"""
       add(t, owned(t) || nearest(x, y));
     });
     followers.sort(function(a, b){ return a.step - b.step; });
+    group();
     // letters that are readings of the figure (an angle read off it): true at the built value only
     (L.readings || []).forEach(function(id){
       var t = document.getElementById(id);
@@ -211,10 +227,112 @@ LIVE_SCRIPT = r"""
       if (p && p.s && p.s.cx && p.s.cy) ringAt[i] = {p: p, x: st.r[0], y: st.r[1]};
     });
   }
+  // While the given is dragged only the marks in the window are drawn (at a magnified step much of the figure
+  // lies outside it); each mark's box at the value is computed from its numbers, and a mark is drawn if that
+  // box or the one it was last drawn at meets the window (widened by a margin).  The others are drawn when the
+  // drag ends ('change'), the step or the view changes (the camera, the magnifier, the window's size): never
+  // seen behind.
+  var elems = [], MARGIN_PX = 40, LABEL_PX = 150, ownBox = null, stale = false, visKey = null, hid = new Map();
+  // A mark in a group the step hides (display:none: later steps, finished groups, letters of another zoom
+  // level) is not drawn either while dragging, yet a new attribute there costs the browser a restyle and a
+  // layout all the same: at the inertia curve's last step 907 of its 1156 moving marks are hidden so.
+  function hidden(node){  // the node or a group round it not displayed (known per step and zoom level)
+    if (!node || node === svg || node.nodeType !== 1) return false;
+    var h = hid.get(node);
+    if (h === undefined) { h = hidden(node.parentNode) || getComputedStyle(node).display === "none"; hid.set(node, h); }
+    return h;
+  }
+  function shownNow(){  // what is displayed changes with the step and the zoom level's class only
+    var key = svg.getAttribute("data-step") + "|" + svg.getAttribute("class");
+    if (key !== visKey) { visKey = key; hid = new Map(); }
+  }
+  // what each number of a path's commands is: 1 an x, 2 a y, 3 a radius, 0 neither (arcs' angle and flags)
+  var ROLES = {M: "12", L: "12", T: "12", H: "1", V: "2", C: "121212", S: "1212", Q: "1212", A: "3300012"};
+  function rolesOf(attr, parts){  // null: numbers the box cannot be told from (the mark is always drawn)
+    if (attr === "cx" || attr === "x1" || attr === "x2" || attr === "x") return parts.length === 2 ? [1] : null;
+    if (attr === "cy" || attr === "y1" || attr === "y2" || attr === "y") return parts.length === 2 ? [2] : null;
+    if (attr === "r") return parts.length === 2 ? [3] : null;
+    if (attr !== "d") return null;
+    var out = [], cmd = null, k = 0;
+    for (var i = 0; i < parts.length - 1; i++) {
+      var letters = parts[i].match(/[A-Za-z]/g);
+      if (letters) { cmd = letters[letters.length - 1]; k = 0; }
+      var pat = cmd && ROLES[cmd];
+      if (!pat) return null;  // a relative command (lower case), or none: not told
+      out.push(+pat.charAt(k % pat.length));
+      k++;
+    }
+    return out;
+  }
+  var FIXED = {circle: ["cx", "cy", "r"], line: ["x1", "y1", "x2", "y2"], path: ["d"]};
+  function group(){  // the slots of each mark together, with the numbers of its box that do not move
+    var byEl = new Map();
+    slots.forEach(function(sl){
+      var e = byEl.get(sl.el);
+      if (!e) { e = {el: sl.el, slots: [], step: sl.step, cull: true, fixed: [], box: null, stale: false}; byEl.set(sl.el, e); elems.push(e); }
+      e.slots.push(sl);
+      sl.roles = rolesOf(sl.attr, sl.parts);
+      if (!sl.roles) e.cull = false;
+    });
+    byEl.forEach(function(e, el){
+      var names = FIXED[el.tagName];
+      // a mark under a transform of its own (other than its step's) is drawn in other coordinates: always drawn
+      if (!names || el.hasAttribute("transform") || (el.parentNode && el.parentNode.closest && el.parentNode.closest("[transform]"))) { e.cull = false; return; }
+      names.forEach(function(a){
+        if (e.slots.some(function(sl){ return sl.attr === a; })) return;
+        if (a === "d") { e.cull = false; return; }  // (a path's d is one slot or none)
+        var v = +el.getAttribute(a);
+        if (isNaN(v)) e.cull = false; else e.fixed.push(a === "r" ? 3 : a.charAt(0) === "x" || a === "cx" ? 1 : 2, v);
+      });
+    });
+  }
+  function numAt(sl, i){  // the i-th number of a slot at the shown value, as written (to the hundredth)
+    var c = sl.cs[i], v = sl.fl[i] ? (cur.t < 0.5 ? D[cur.r0 + c] : D[cur.r1 + c]) : D[cur.r0 + c] + (D[cur.r1 + c] - D[cur.r0 + c]) * cur.t;
+    return Math.round(v * 100) / 100;
+  }
+  function boxNow(e){  // the mark's box at the shown value (its arcs' and circles' radii round its points)
+    var x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity, r = 0, j, v, role;
+    function add(role, v){
+      if (role === 1) { if (v < x0) x0 = v; if (v > x1) x1 = v; }
+      else if (role === 2) { if (v < y0) y0 = v; if (v > y1) y1 = v; }
+      else if (role === 3 && Math.abs(v) > r) r = Math.abs(v);
+    }
+    for (j = 0; j < e.fixed.length; j += 2) add(e.fixed[j], e.fixed[j + 1]);
+    for (var s = 0; s < e.slots.length; s++) {
+      var sl = e.slots[s];
+      for (j = 0; j < sl.roles.length; j++) if ((role = sl.roles[j])) add(role, numAt(sl, j));
+    }
+    return [x0 - 2 * r, y0 - 2 * r, x1 + 2 * r, y1 + 2 * r];
+  }
+  function meets(b, w, m){ return !!b && b[0] <= w[2] + m && b[2] >= w[0] - m && b[1] <= w[3] + m && b[3] >= w[1] - m; }
+  function visible(r){  // the figure's coordinates the window shows (the view fitted into it, centred) and px
+    var vb = svg.viewBox && svg.viewBox.baseVal;
+    if (!r || !r.width || !r.height || !vb || !vb.width || !vb.height) return null;
+    var s = Math.min(r.width / vb.width, r.height / vb.height), hw = r.width / s / 2, hh = r.height / s / 2;
+    var cx = vb.x + vb.width / 2, cy = vb.y + vb.height / 2;
+    return [cx - hw, cy - hh, cx + hw, cy + hh, 1 / s];
+  }
+  function drawElem(e, w){  // a mark at the shown value: all of it, or (w: the window while dragging) if seen
+    if (w && hidden(e.el)) { e.stale = stale = true; return; }
+    if (w && e.cull) {
+      var b = boxNow(e);
+      if (!meets(b, w, MARGIN_PX * w[4]) && !meets(e.box, w, MARGIN_PX * w[4])) { e.stale = stale = true; return; }
+      e.box = b;
+    } else if (e.cull) e.box = boxNow(e);
+    for (var s = 0; s < e.slots.length; s++) write(e.slots[s]);
+    e.stale = false;
+  }
+  function lengthOf(el, attr, parts){  // the SVG length an attribute of one bare number is (cx, cy, r, x1, …)
+    var a = parts.length === 2 && !parts[0] && !parts[1] && el !== svg && el[attr];
+    return a && a.baseVal && typeof a.baseVal.value === "number" && a.baseVal.unitType === 1 ? a.baseVal : null;
+  }
   function coords(e){  // a letter's x, y or a leader line's ends, as built; or its label group's translate
     var out = {}, g = e.parentNode, m = g && g.classList && g.classList.contains("lbg") &&
       /^translate\(([-0-9.e]+)[ ,]+([-0-9.e]+)\)$/.exec(g.getAttribute("transform") || "");
-    if (m) return {translate: [+m[1], +m[2]], g: g};
+    if (m) {
+      var list = g.transform && g.transform.baseVal, one = list && list.numberOfItems === 1 ? list.getItem(0) : null;
+      return {translate: [+m[1], +m[2]], g: g, shift: one && one.type === 2 ? one : null};  // 2: SVG_TRANSFORM_TRANSLATE
+    }
     ["x", "y", "x1", "y1", "x2", "y2"].forEach(function(a){ var v = e.getAttribute(a); if (v !== null && v !== "" && !isNaN(+v)) out[a] = +v; });
     return out;
   }
@@ -228,7 +346,11 @@ LIVE_SCRIPT = r"""
     if (L.jumps.indexOf(lo) >= 0) t = t < 0.5 ? 0 : 1;
     return [lo, t];
   }
-  function view(dragging){  // what the player's show(k) does with the view, without touching the steps (cheap)
+  // while the given is dragged, the letters keep their scale until it is 4 % off (a 12 px letter within half a
+  // pixel of its size): a new scale restyles and lays out every letter and point again (a frame of its own in
+  // a fast drag); the exact scale is set when the slider is let go
+  var SLACK = 0.04;
+  function view(dragging, slack){  // what the player's show(k) does with the view, without touching the steps (cheap)
     var d = player.data, k = +(svg.getAttribute("data-step") || d.n), st = k > 0 ? d.steps[k - 1] : null;
     if (st && st[IDX] >= 0 && cur && zoomAt[k - 1] !== undefined) {
       for (var i = 0; i < 4; i++) d[LIST][st[IDX]][i] = Math.round(valueAt(zoomAt[k - 1] + i) * 100) / 100;
@@ -239,7 +361,7 @@ LIVE_SCRIPT = r"""
       st.r[1] = Math.round((rp.y + now(rp.p.s.cy) - rp.p.y) * 100) / 100;
     }
     // the player moves its view there itself: at once while the given is dragged, smoothly to a new step
-    if (player.jump && dragging) { player.jump(); return; }
+    if (player.jump && dragging) { player.jump(slack || 0); return; }
     if (player.move) { player.move(); return; }
     var zoom = document.getElementById("zoom");
     var box = st && zoom && zoom.checked && k < d.n && st.z >= 0 ? d.zooms[st.z] : null;
@@ -254,37 +376,68 @@ LIVE_SCRIPT = r"""
     var uc = colmap[c];
     return isFlag[c] ? (cur.t < 0.5 ? D[cur.r0 + uc] : D[cur.r1 + uc]) : D[cur.r0 + uc] + (D[cur.r1 + uc] - D[cur.r0 + uc]) * cur.t;
   }
-  function write(sl){  // one mark's attribute at the shown value; written only when its text changes
-    var parts = sl.parts, cs = sl.cs, txt = parts[0], r0 = cur.r0, r1 = cur.r1, t = cur.t;
+  function write(sl){  // one mark's attribute at the shown value; written only when it changes
+    var parts = sl.parts, cs = sl.cs, r0 = cur.r0, r1 = cur.r1, t = cur.t, v;
+    if (sl.len) {  // one length (a point's centre, a line's end): its number, set without text to parse
+      var c0 = cs[0];
+      v = sl.fl[0] ? (t < 0.5 ? D[r0 + c0] : D[r1 + c0]) : D[r0 + c0] + (D[r1 + c0] - D[r0 + c0]) * t;
+      v = Math.round(v * 100) / 100;
+      if (v !== sl.v[0]) { sl.v[0] = v; sl.len.value = v; }
+      return;
+    }
+    var txt = parts[0];
     for (var i = 1; i < parts.length; i++) {
-      var c = cs[i - 1], v = sl.fl[i - 1] ? (t < 0.5 ? D[r0 + c] : D[r1 + c]) : D[r0 + c] + (D[r1 + c] - D[r0 + c]) * t;
+      var c = cs[i - 1];
+      v = sl.fl[i - 1] ? (t < 0.5 ? D[r0 + c] : D[r1 + c]) : D[r0 + c] + (D[r1 + c] - D[r0 + c]) * t;
       v = Math.round(v * 100) / 100;
       sl.v[i - 1] = v;
       txt += v + parts[i];
     }
     if (txt !== sl.text) { sl.text = txt; if (sl.el) sl.el.setAttribute(sl.attr, txt); }
   }
-  function follow(fo){
-    var p = fo.p, dx = (p.s.cx ? p.s.cx.v[0] : p.x) - p.x, dy = (p.s.cy ? p.s.cy.v[0] : p.y) - p.y;
+  function follow(fo, w){  // a letter or leader line with its point (w: the window while dragging: if seen)
+    var p = fo.p, dx = (p.s.cx ? numAt(p.s.cx, 0) : p.x) - p.x, dy = (p.s.cy ? numAt(p.s.cy, 0) : p.y) - p.y;
+    if (w && hidden(fo.at.g || fo.el)) { fo.stale = stale = true; return; }  // (a group: its own display)
+    if (w) {  // its point moved by the same as the letter, its box about its point (LABEL_PX)
+      var m = LABEL_PX * w[4], b = [p.x + dx, p.y + dy, p.x + dx, p.y + dy];
+      if (!meets(b, w, m) && !meets(fo.box, w, m)) { fo.stale = stale = true; return; }
+      fo.box = b;
+    } else fo.box = [p.x + dx, p.y + dy, p.x + dx, p.y + dy];
+    fo.stale = false;
     // moved by their own coordinates (a transform attribute would lose to the camera's CSS scale)
     if (fo.at.g) {  // the camera's label group: its anchor moves (the letters scale about it)
-      var tr = "translate(" + (fo.at.translate[0] + dx).toFixed(2) + " " + (fo.at.translate[1] + dy).toFixed(2) + ")";
-      if (tr !== fo.text.t) { fo.text.t = tr; fo.at.g.setAttribute("transform", tr); }
+      var gx = Math.round((fo.at.translate[0] + dx) * 100) / 100, gy = Math.round((fo.at.translate[1] + dy) * 100) / 100;
+      if (gx !== fo.text.x || gy !== fo.text.y) {
+        fo.text.x = gx; fo.text.y = gy;
+        // the group's one translate, set as numbers (no transform text to parse)
+        if (fo.at.shift) fo.at.shift.setTranslate(gx, gy); else fo.at.g.setAttribute("transform", "translate(" + gx + " " + gy + ")");
+      }
       return;
     }
     for (var a in fo.at) {
-      var s = (fo.at[a] + (a.charAt(0) === "x" ? dx : dy)).toFixed(2);
-      if (s !== fo.text[a]) { fo.text[a] = s; fo.el.setAttribute(a, s); }
+      var v = Math.round((fo.at[a] + (a.charAt(0) === "x" ? dx : dy)) * 100) / 100;
+      if (v !== fo.text[a]) { fo.text[a] = v; if (fo.len[a]) fo.len[a].value = v; else fo.el.setAttribute(a, String(v)); }
     }
   }
-  function catchUp(k){  // the marks of the steps up to k at the shown value (later steps are hidden)
-    if (!cur || k <= doneTo) return;
-    for (var s = 0; s < slots.length; s++) if (slots[s].step > doneTo && slots[s].step <= k) write(slots[s]);
-    for (var f = 0; f < followers.length; f++) if (followers[f].step > doneTo && followers[f].step <= k) follow(followers[f]);
-    doneTo = k;
+  function catchUp(k, w){  // the marks of the steps up to k at the shown value (later steps are hidden): those
+    // not drawn yet, and those a drag left (w: the window while dragging, only the marks seen in it)
+    if (!cur || (k <= doneTo && !stale && !w)) return;
+    var was = stale;
+    stale = false;
+    for (var s = 0; s < elems.length; s++) {
+      var e = elems[s];
+      if (e.step <= k && (w || e.step > doneTo || (was && e.stale))) drawElem(e, w);
+      else if (e.stale) stale = true;  // left by a drag in a step now hidden: drawn when it is shown
+    }
+    for (var f = 0; f < followers.length; f++) {
+      var fo = followers[f];
+      if (fo.step <= k && (w || fo.step > doneTo || (was && fo.stale))) follow(fo, w);
+      else if (fo.stale) stale = true;
+    }
+    doneTo = Math.max(doneTo, k);
   }
-  function redraw(value){
-    var t0 = performance.now();
+  function redraw(value, dragging){
+    var t0 = performance.now(), shape = dragging && player ? svg.getBoundingClientRect() : null;  // read before any write
     var u = Math.log10(value), ct = cell(u), t = ct[1];
     cur = {r0: ct[0] * U, r1: Math.min(ct[0] + 1, rows - 1) * U, t: t};
     if (fullSlot) {  // the whole figure's box (the view when not magnified)
@@ -297,17 +450,19 @@ LIVE_SCRIPT = r"""
       }
     }
     // the view first (the player reads the figure's size there: nothing written yet, no layout forced)
-    if (player) view(true);
+    if (player) view(true, dragging ? SLACK : 0);
     var k = player ? +(svg.getAttribute("data-step") || player.data.n) : Infinity;
     doneTo = -1;
-    catchUp(k);
     // the broken axis's marks belong to the built value's break; elsewhere the break lies elsewhere or nowhere
     var furniture = document.getElementById("furniture"), shown = Math.abs(u - Math.log10(L.initial)) < 1e-9 ? "" : "none";
     if (furniture && furniture.style.display !== shown) furniture.style.display = shown;
-    for (var j = 0; j < readings.length; j++) if (readings[j].style.display !== shown) readings[j].style.display = shown;
+    for (var j = 0; j < readings.length; j++) if (readings[j].style.display !== shown) { readings[j].style.display = shown; visKey = null; }
+    if (shape) shownNow();
+    catchUp(k, shape ? visible(shape) : null);
+    ownBox = svg.getAttribute("viewBox");
     api.value = value;
     var said = book(value);
-    if (out.textContent !== said) { out.textContent = said; retitle(value); }
+    if (out.textContent !== said) { setText(out, said); retitle(value); }
     showChecks(u);
     api.lastMs = performance.now() - t0;
   }
@@ -335,26 +490,36 @@ LIVE_SCRIPT = r"""
       forms.forEach(function(f){ text = text.replace(f[1], f[0] + shown); });
       t.n.nodeValue = text;
     });
-    if (givenCell) givenCell.textContent = (inverse ? "1/" : "") + book(value);
+    if (givenCell) setText(givenCell, (inverse ? "1/" : "") + book(value));
   }
-  var body = document.querySelector("#live-checks tbody"), shownAt = -1;
+  var body = document.querySelector("#live-checks tbody"), shownAt = -1, cells = [];
   L.checks = L.checks || [];
-  function cellText(tr, text, cls){ var td = document.createElement("td"); td.textContent = text; if (cls) td.className = cls; tr.appendChild(td); }
+  function put(td, text, cls){  // a cell's text (and class) written only when it changes: no row is rebuilt
+    setText(td, text);
+    if (cls !== undefined && td.className !== cls) td.className = cls;
+  }
   function showChecks(u){
     if (!L.checks || !L.checks.length) return;
     var k = 0, bd = Infinity;  // the nearest value the checks were swept at, in log10
     L.check_values.forEach(function(v, i){ var d = Math.abs(Math.log10(v) - u); if (d < bd) { bd = d; k = i; } });
     if (k === shownAt) return;
     shownAt = k;
-    document.getElementById("live-at").textContent = "(" + L.symbol + " = " + book(L.check_values[k]) + ")";
-    while (body.firstChild) body.removeChild(body.firstChild);
-    L.checks[k].forEach(function(c, i){
-      // [formula, error, ok, constructed value where formula + error does not give it] (live.py _check_table)
-      var tr = document.createElement("tr"), num = function(x){ return x === null ? "–" : x.toPrecision(8); };
-      var made = c.length > 3 ? c[3] : (c[0] === null || c[1] === null ? null : c[0] + c[1]);
-      cellText(tr, L.check_names[i]); cellText(tr, num(made)); cellText(tr, num(c[0]));
-      cellText(tr, c[1] === null ? "–" : c[1].toExponential(1)); cellText(tr, c[2] ? "✓" : "✗", c[2] ? "ok" : "bad");
+    put(document.getElementById("live-at"), "(" + L.symbol + " = " + book(L.check_values[k]) + ")");
+    var rows = L.checks[k];
+    // the rows are made once (a rebuilt table is laid out anew, at the cost of a frame); their cells change
+    while (cells.length > rows.length) body.removeChild(cells.pop()[0].parentNode);
+    while (cells.length < rows.length) {
+      var tr = document.createElement("tr"), row = [];
+      for (var j = 0; j < 5; j++) row.push(tr.appendChild(document.createElement("td")));
       body.appendChild(tr);
+      cells.push(row);
+    }
+    rows.forEach(function(c, i){
+      // [formula, error, ok, constructed value where formula + error does not give it] (live.py _check_table)
+      var td = cells[i], num = function(x){ return x === null ? "–" : x.toPrecision(8); };
+      var made = c.length > 3 ? c[3] : (c[0] === null || c[1] === null ? null : c[0] + c[1]);
+      put(td[0], L.check_names[i]); put(td[1], num(made)); put(td[2], num(c[0]));
+      put(td[3], c[1] === null ? "–" : c[1].toExponential(1)); put(td[4], c[2] ? "✓" : "✗", c[2] ? "ok" : "bad");
     });
   }
   api.ready = inflate(L.meta_z).then(function(b){
@@ -371,20 +536,27 @@ LIVE_SCRIPT = r"""
     input.addEventListener("input", function(){
       if (pending) return;
       pending = true;
-      requestAnimationFrame(function(){ pending = false; redraw(Math.pow(10, +input.value)); });
+      requestAnimationFrame(function(){ pending = false; redraw(Math.pow(10, +input.value), true); });
+    });
+    // let go (or a key's step): the letters at their exact scale
+    input.addEventListener("change", function(){
+      requestAnimationFrame(function(){ redraw(Math.pow(10, +input.value), false); });
     });
     // a new step: its marks and its view at the shown value (the player has just set the built view)
     var seenStep = svg.getAttribute("data-step");
     if (player) new MutationObserver(function(){
       var now = svg.getAttribute("data-step");
       if (now !== seenStep) { seenStep = now; if (cur) { catchUp(+now); view(); } }
-    }).observe(svg, {attributes: true, attributeFilter: ["data-step"]});
+      // a view the drag did not draw (the camera gliding to a step, the magnifier): the marks the drag left
+      else if (stale && svg.getAttribute("viewBox") !== ownBox) catchUp(+now);
+    }).observe(svg, {attributes: true, attributeFilter: ["data-step", "viewBox"]});
+    window.addEventListener("resize", function(){ if (stale) catchUp(+(svg.getAttribute("data-step") || Infinity)); });
     showChecks(Math.log10(L.initial));
   });
-  api.set = function(value){
+  api.set = function(value, dragging){  // dragging: drawn as a drag draws it (see SLACK)
     value = Math.min(L.high, Math.max(L.low, value));
     input.value = Math.log10(value);
-    redraw(value);
+    redraw(value, !!dragging);
     return api.lastMs;
   };
 })();

@@ -170,7 +170,7 @@ h1 .en{display:block;font-size:14px;font-weight:normal;color:#555}
 main{display:flex;gap:12px;padding:8px 16px;align-items:flex-start}
 #stage{flex:1 1 auto;min-width:0}
 #figure{width:100%;height:auto;aspect-ratio:985/700;max-height:70vh;border:1px solid #ccc;background:#fff;display:block}
-#figure .lbg>*,#figure .pt{transform:scale(var(--ls,1))}
+#figure .lbg>*,#figure .pt{--ls:1;transform:scale(var(--ls))}
 #controls{display:flex;gap:6px;align-items:center;margin:8px 0;flex-wrap:wrap}
 #controls button{font:inherit;padding:3px 10px;min-width:2.4em}
 #slider{flex:1 1 200px}
@@ -236,21 +236,33 @@ li a.later{color:#bbb}
   var zoom = document.getElementById("zoom");
   var full = svg.getAttribute("data-full").split(" ").map(Number);
   var now = svg.getAttribute("viewBox").split(" ").map(Number), anim = null, ringAt = null, level = 0;
-  function ratio(v) {  // canvas pixels per screen pixel in view *v* (the view is fitted into the element)
-    var r = svg.getBoundingClientRect();
+  function ratio(v, r) {  // canvas pixels per screen pixel in view *v* (the view is fitted into the element)
+    r = r || svg.getBoundingClientRect();
     if (!r.width || !r.height) { return 1; }
     return Math.max(v[2] / r.width, v[3] / r.height);
   }
-  function put(v) {  // show view *v*: letters and points at their screen size (12 px, never below 9.5 px)
+  // the letter scale --ls is declared on the letters and points themselves (this rule), not inherited
+  // from the figure: a new value then restyles those, not every element of the figure (a third of them)
+  var lsRule = null;
+  Array.prototype.forEach.call(document.styleSheets, function (sh) {
+    Array.prototype.forEach.call(sh.cssRules, function (r) {
+      if (!lsRule && r.selectorText && r.selectorText.indexOf("#figure .lbg") === 0) { lsRule = r; }
+    });
+  });
+  function put(v, r, slack) {  // show view *v*: letters and points at their screen size (12 px, never below 9.5 px)
     // the letter scale of the view's zoom level (the letters were placed for it): the level's picture
     // magnified as a whole, letters never smaller on the screen than at the level's own zoom
     // (q times the view's magnification is the whole figure's canvas pixels per screen pixel)
-    var q = ratio(v), zl = data.levels[level] || 1, ql = ratio(full) / zl;
+    // (*r*: the figure's box on the screen, if read before anything was written: no layout forced here;
+    // *slack*: while a given is dragged, a letter scale within this fraction of the shown one is kept)
+    r = r || svg.getBoundingClientRect();
+    var q = ratio(v, r), zl = data.levels[level] || 1, ql = ratio(full, r) / zl;
     // written only when changed: a new --ls restyles every letter, a new viewBox repaints the figure
     var box = v.map(function (x) { return x.toFixed(2); }).join(" ");
-    var ls = Math.min(Math.max(1, 9.5 * ql / 12), ql).toFixed(4);
+    var ls = Math.min(Math.max(1, 9.5 * ql / 12), ql).toFixed(4), lsAt = lsRule ? lsRule.style : svg.style;
     if (box !== svg.getAttribute("viewBox")) { svg.setAttribute("viewBox", box); }
-    if (ls !== svg.style.getPropertyValue("--ls")) { svg.style.setProperty("--ls", ls); }
+    var was = lsAt.getPropertyValue("--ls").trim();
+    if (ls !== was && !(slack && was && Math.abs(ls / was - 1) <= slack)) { lsAt.setProperty("--ls", ls); }
     var ring = document.getElementById("ring");
     if (ring) {
       ring.setAttribute("visibility", ringAt ? "visible" : "hidden");
@@ -275,15 +287,17 @@ li a.later{color:#bbb}
   }
   window.addEventListener("resize", function () { put(now); });
   function text(id, s) { document.getElementById(id).textContent = s; }
-  function zoomLevel(view) {  // the zoom level of *view*: its letters (placed for it) and their scale
+  function zoomLevel(view, r) {  // the zoom level of *view*: its letters (placed for it) and their scale
     // how many times the window shows it larger than the whole figure (a view of the window's shape in a
     // tall figure is magnified more than its width says)
-    var z = ratio(full) / ratio(view), lvl = 0;
+    r = r || svg.getBoundingClientRect();
+    var z = ratio(full, r) / ratio(view, r), lvl = 0;
     data.levels.forEach(function (l, i) { if (z >= 0.999 * l) { lvl = i; } });
     if (svg.getAttribute("class") !== "zl" + lvl) { svg.setAttribute("class", "zl" + lvl); }
     level = lvl;
   }
   function show(j) {
+    var box = svg.getBoundingClientRect();  // read before the classes change (a read after them forces a restyle)
     k = Math.max(0, Math.min(n, j));
     groups.forEach(function (g) {
       var s = +g.getAttribute("data-step");
@@ -305,7 +319,7 @@ li a.later{color:#bbb}
     text("cap-en", st ? "Step " + k + ": " + st.en : "");
     // the camera: the step's view (the whole figure at the ends or without the magnifier), reached smoothly
     var view = st && zoom.checked ? data.views[st.v] : full;
-    zoomLevel(view);
+    zoomLevel(view, box);
     ringAt = st && k < n ? (st.r || null) : null;
     move(view);
     var cur = links[k - 1];
@@ -364,9 +378,11 @@ li a.later{color:#bbb}
   // (move: to the step's view, smoothly; jump: there at once, as a given's slider is dragged)
   function target() { var st = k > 0 ? data.steps[k - 1] : null; return st && zoom.checked ? data.views[st.v] : full; }
   window.constructPlayer = {data: data, full: full, redraw: function () { show(k); }, move: function () { move(target()); },
-    jump: function () {
+    jump: function (slack) {
       if (anim) { cancelAnimationFrame(anim); anim = null; }
-      now = target().slice(); zoomLevel(now); put(now); }};
+      // the figure's box read once, before the level's class is set (a read after it would restyle the figure twice)
+      var r = svg.getBoundingClientRect();
+      now = target().slice(); zoomLevel(now, r); put(now, r, slack); }};
 })();
 </script>
 </body>

@@ -25,6 +25,10 @@ def add_arguments(p) -> None:
                    help="time the live player's redraw in headless Chromium instead (median, p90, max ms per slider "
                         "move, and how many inside one 16.7 ms frame) for the PLAYER pages given, by default the "
                         "gallery's live players (gallery/*/teaching/player.html with a slider)")
+    p.add_argument("--breakdown", action="store_true",
+                   help="with --live: also trace each drag in Chromium and split the frame's main-thread time into "
+                        "script, style, layout, pre-paint, paint and commit (with the elements restyled and the "
+                        "objects laid out per frame, and the raster time on the worker threads beside it)")
     p.add_argument("--diff-million", action="store_true",
                    help="with --diff: also 1,000,000 elements (about 80 MB per drawing; minutes)")
 
@@ -76,7 +80,7 @@ def _live(args) -> int:
     from pathlib import Path
 
     from ...kernel.errors import InvalidParameter
-    from ...regress.livebench import live_verdicts, run_live_bench
+    from ...regress.livebench import live_verdicts, page_name, run_live_bench
 
     pages = [Path(p) for p in args.live] or sorted(
         p for p in Path("gallery").glob("*/teaching/player.html") if 'id="live-data"' in p.read_text(encoding="utf-8"))
@@ -84,13 +88,19 @@ def _live(args) -> int:
     if not pages or missing:
         raise InvalidParameter(f"--live: no live player {'at ' + ', '.join(missing) if missing else 'in gallery/'} "
                                "(write one with: construct replay crank --live --style teaching --out DIR)")
-    found = run_live_bench(pages)
+    found = run_live_bench(pages, breakdown=args.breakdown)
     if args.format == "json":
         print(json.dumps(found, indent=1))
         return 0
     for r in found:
-        print(f"{r['page']}  {r['step']:18s} frame: median {r['median_ms']:6.1f} ms  p90 {r['p90_ms']:6.1f}  "
-              f"max {r['max_ms']:6.1f}  script: median {r['script_median_ms']:5.1f}  max {r['script_max_ms']:5.1f}")
+        print(f"{page_name(r['page'])}  {r['step']:18s} frame: median {r['median_ms']:6.1f} ms  "
+              f"p95 {r['p95_ms']:6.1f}  max {r['max_ms']:6.1f}  script: median {r['script_median_ms']:5.1f}  "
+              f"p95 {r['script_p95_ms']:5.1f}")
+        if "breakdown" in r:
+            b = r["breakdown"]
+            print("    traced, ms a frame: " + "  ".join(f"{k[:-3]} {b[k]:.1f}" for k in b if k.endswith("_ms"))
+                  + f"  (raster on the workers, beside the frame); restyled {b['restyled']:.0f} elements, "
+                  f"laid out {b['laid_out']:.0f} objects a frame")
     for line in live_verdicts(found):
         print(line)
     return 0

@@ -85,8 +85,13 @@ def level_css() -> str:
     rules = [".pt{transform-box:fill-box;transform-origin:center}",
              ".construction,.result,.auxiliary,.given,.hatch,.fur,.ring{vector-effect:non-scaling-stroke}",
              ".lbx{display:none}"]
+    # --zs (the level's letter scale) is declared on the letters, leaders and points themselves, and the
+    # selectors end in their classes: a class of the figure's root that changes (the player's zoom level) then
+    # restyles those, not every element of the figure (an inherited custom property, or a selector ending
+    # in *, restyles the whole tree)
     for i, z in enumerate(ZOOM_LEVELS[1:], start=1):
-        rules.append(f".zl{i}{{--zs:{fmt(1 / z, 4)}}}.zl{i} .lbg>*,.zl{i} .pt{{transform:scale({fmt(1 / z, 4)})}}")
+        rules.append(f".zl{i} .lbg>.lb,.zl{i} .lbg>.leader,.zl{i} .pt"
+                     f"{{--zs:{fmt(1 / z, 4)};transform:scale({fmt(1 / z, 4)})}}")
     rules.append(",".join(f".zl{i} .lbx" for i in range(THIN_FROM, len(ZOOM_LEVELS))) + "{display:inline}")
     # a letter with no room at a zoom level gives way there (svg.Drawing._zoom_placing)
     rules.append(",".join(f".zl{i} .h{i}" for i in range(1, len(ZOOM_LEVELS))) + "{display:none}")

@@ -481,7 +481,7 @@ class Drawing:
                     classes[i] = classes.get(i, "") + " lbm"  # moved at some level: the group carries an id
         # one rule per letter and move, listing the levels it holds at (--zs: the level's letter scale)
         for (i, move), lvls in moves.items():
-            rules.append(",".join(f".zl{lvl} #{i}-lb>*" for lvl in lvls)
+            rules.append(",".join(f".zl{lvl} #{i}-lb>.lb,.zl{lvl} #{i}-lb>.leader" for lvl in lvls)
                          + f"{{transform:scale(var(--ls,var(--zs))) {move}}}")
         return classes, rules
 

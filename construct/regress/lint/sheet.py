@@ -170,7 +170,7 @@ class Sheet:
     unplayed: bool = False
     #: The zoom levels of the style sheet's ``.zlN`` classes (from the player's data; (1,) when none).
     levels: tuple[float, ...] = (1.0,)
-    #: Per (zoom level, letter group id): the move (dx, dy) a ``.zlN #id>*`` rule gives the letter there.
+    #: Per (zoom level, letter group id): the move (dx, dy) a ``.zlN #id>.lb`` rule gives the letter there.
     moves: dict[tuple[int, str], tuple[float, float]] = field(default_factory=dict)
     #: Per step, the ring the player draws round a small current mark: (cx, cy, r) as its data gives it.
     rings: dict[int, tuple[float, float, float]] = field(default_factory=dict)
@@ -267,10 +267,14 @@ _MOVE = re.compile(r"translate\(\s*([-+\d.eE]+)(?:px)?\s*[, ]\s*([-+\d.eE]+)(?:p
 
 
 def read_moves(css: str) -> dict[tuple[int, str], tuple[float, float]]:
-    """The letters a zoom level moves: ``.zlN #id>*{transform:scale(..) translate(dx, dy)}`` rules.
+    """The letters a zoom level moves: ``.zlN #id>.lb,.zlN #id>.leader{transform:scale(..) translate(dx, dy)}``
+    rules (earlier drawings wrote ``#id>*``).
 
-    >>> read_moves(".zl1 #a-lb>*,.zl3 #a-lb>*{transform:scale(var(--ls,var(--zs))) translate(-9.4px,2px)}")
+    >>> read_moves(".zl1 #a-lb>.lb,.zl1 #a-lb>.leader,.zl3 #a-lb>.lb{transform:scale(var(--ls,var(--zs))) "
+    ...            "translate(-9.4px,2px)}")
     {(1, 'a-lb'): (-9.4, 2.0), (3, 'a-lb'): (-9.4, 2.0)}
+    >>> read_moves(".zl2 #b-lb>*{transform:scale(var(--ls,var(--zs))) translate(1px,0px)}")
+    {(2, 'b-lb'): (1.0, 0.0)}
     """
     out: dict[tuple[int, str], tuple[float, float]] = {}
     for block in re.finditer(r"([^{}]+)\{([^{}]*)\}", re.sub(r"/\*.*?\*/", "", css, flags=re.S)):
@@ -278,7 +282,7 @@ def read_moves(css: str) -> dict[tuple[int, str], tuple[float, float]]:
         if not m or "transform" not in block.group(2):
             continue
         for sel in block.group(1).split(","):
-            t = re.fullmatch(r"\s*\.zl(\d+)\s+#([\w-]+)\s*>\s*\*\s*", sel)
+            t = re.fullmatch(r"\s*\.zl(\d+)\s+#([\w-]+)\s*>\s*(?:\*|\.lb|\.leader)\s*", sel)
             if t:
                 out[(int(t.group(1)), t.group(2))] = (float(m.group(1)), float(m.group(2)))
     return out

@@ -67,7 +67,7 @@ FRAME_MODE = "none"
 GALLERY_OUTPUTS = {"historical": (), "teaching": ("player",)}
 #: The constructions whose gallery player has a live rod-ratio slider (construct.constructions.live): the crank
 #: and the inertia curve, the two the issue names; the live data adds 0.1-0.3 MB a player (and a sweep of
-#: 5-15 s to the build), and the gallery stays under its 15 MB.  `construct replay NAME --live` gives any
+#: 1-3 s to the build), and the gallery stays under its 15 MB.  `construct replay NAME --live` gives any
 #: construction with a rod ratio its slider.
 LIVE_PLAYERS = ("crank", "inertia-curve")
 #: The width (CSS px) at which the gallery page shows a figure: its own width, one figure per row,

@@ -198,9 +198,10 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
     for style in GALLERY_STYLES if first else GALLERY_STYLES[:1]:
         sdir = edir / style
         sdir.mkdir()
-        live = _live(c, fig, style) if first and GALLERY_OUTPUTS[style] and name in LIVE_PLAYERS else None
+        live, drawing = (_live(c, fig, style) if first and GALLERY_OUTPUTS[style] and name in LIVE_PLAYERS
+                         else (None, None))
         info = write_outputs(sdir, c, fig, STYLES[style], frames=FRAME_MODE, fig_number=number, protocol=False,
-                             outputs=GALLERY_OUTPUTS[style], live=live)
+                             outputs=GALLERY_OUTPUTS[style], live=live, drawing=drawing)
         files = sorted(str(p.relative_to(root)) for p in sdir.rglob("*") if p.is_file())
         files += [f"{slug}/protocol.json"] * first + [f"{slug}/checks.md", f"{slug}/checks.json"]
         entries.append({"construction": name, "params": dict(params), "style": style,
@@ -213,12 +214,18 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
     return entries, row
 
 
-def _live(c, fig, style: str) -> dict[str, Any] | None:
-    """The live data of a gallery player: a slider for each continuous given the construction can sweep."""
+def _live(c, fig, style: str) -> tuple[dict[str, Any] | None, Any]:
+    """The live data of a gallery player (a slider for each continuous given the construction can sweep) and
+    the figure's drawing, laid out once for the sweep's camera views and the player."""
     from .constructions.live import live_data, live_givens, live_sweep
+    from .render.output import scene_for
+    from .render.svg import Drawing
 
     givens = live_givens(c, fig)
-    return live_data(live_sweep(c, fig, givens[0], style=STYLES[style])) if givens else None
+    if not givens:
+        return None, None
+    drawing = Drawing(scene_for(c, fig), STYLES[style])
+    return live_data(live_sweep(c, fig, givens[0], style=STYLES[style], drawing=drawing)), drawing
 
 
 def _first_of_its_construction(name: str, params: Mapping[str, Any]) -> bool:

@@ -329,7 +329,7 @@ class Measure:
     (('figure', 'viewBox', '# # # #'), 'O')
     """
 
-    def __init__(self, construction: Construction, built: Figure, style: Any = None):
+    def __init__(self, construction: Construction, built: Figure, style: Any = None, *, drawing: Any = None):
         from ..render.camera import MAX_ZOOM
         from ..render.output import scene_for
         from ..render.styles import STYLES
@@ -337,8 +337,10 @@ class Measure:
 
         self.construction = construction
         self.style = style or STYLES["teaching"]
-        scene = scene_for(construction, built)
-        drawing = Drawing(scene, self.style)
+        # *drawing*: the built figure's drawing in this style, if the caller has it (the player's own)
+        if drawing is None:
+            drawing = Drawing(scene_for(construction, built), self.style)
+        scene = drawing.scene
         full = drawing.full_view
         self.steps = [s.index for s in scene.steps]
         views = [drawing.camera_view(k) for k in self.steps]
@@ -528,14 +530,17 @@ def player_page_and_fit(construction: Construction, figure: Figure, style: Any) 
 
 
 def live_sweep(construction: Construction, figure: Figure, given: str, *, initial: float | None = None,
-               style: Any = None, start: int = 9, max_values: int = 400) -> LiveSweep:
-    """The grid of *given* over its domain on which linear interpolation draws within 0.5 px (see the module)."""
+               style: Any = None, start: int = 9, max_values: int = 400, drawing: Any = None) -> LiveSweep:
+    """The grid of *given* over its domain on which linear interpolation draws within 0.5 px (see the module).
+
+    *drawing*: the figure's :class:`~construct.render.svg.Drawing` in *style*, if the caller lays it out anyway
+    (the player's): its camera views are the ones carried along."""
     from ..render.styles import STYLES
 
     style = style or STYLES["teaching"]
     domain, symbol = LIVE_GIVENS[given]
     initial = float(figure.replay.givens[given] if initial is None else initial)
-    measure = Measure(construction, figure, style)
+    measure = Measure(construction, figure, style, drawing=drawing)
     lo, hi = math.log10(domain.low), math.log10(domain.high)
     us = list(np.linspace(lo, hi, start))
     values = lambda u: np.clip(10.0 ** np.asarray(u), domain.low, domain.high)  # noqa: E731

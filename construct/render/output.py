@@ -236,11 +236,12 @@ OUTPUTS = ("animated", "player", "storyboard")
 
 def write_outputs(stage: Path, construction: Construction | None, figure: Figure, st: Style, *, frames: str = "none",
                   fig_number: int | str | None = None, protocol: bool = True,
-                  outputs: tuple[str, ...] = OUTPUTS, live: Any = None) -> dict[str, Any]:
+                  outputs: tuple[str, ...] = OUTPUTS, live: Any = None, drawing: Drawing | None = None) -> dict[str, Any]:
     """Write final.svg, steps/ (when asked), protocol.json and *outputs*: animated.svg, player.html, storyboard.svg.
 
     *live*: the data of a live player (:func:`construct.constructions.live.live_data`), whose slider the
-    player then carries (:func:`construct.render.live.with_live`).
+    player then carries (:func:`construct.render.live.with_live`).  *drawing*: the figure's drawing in *st*,
+    if the caller has laid it out already (a live player's sweep carries its camera views).
 
     One :class:`Drawing` lays the construction out once; the layered final
     figure, the frames, the animation and the player all carry its elements.
@@ -253,9 +254,13 @@ def write_outputs(stage: Path, construction: Construction | None, figure: Figure
 
     # The plate style's final figure is the plate: the construction's drawing only serves frames and views
     # (a plate alone does not lay the construction out at all).
-    scene = scene_for(construction, figure) if (frames != "none" or outputs or not st.plate) else None
+    if drawing is not None:
+        scene = drawing.scene
+    else:
+        scene = scene_for(construction, figure) if (frames != "none" or outputs or not st.plate) else None
     ks = frame_steps(scene, frames) if scene is not None else []
-    drawing = Drawing(scene, st) if (ks or outputs or not st.plate) else None
+    if drawing is None:
+        drawing = Drawing(scene, st) if (ks or outputs or not st.plate) else None
     if st.plate:
         final = render_svg(scene_for(construction, figure, plate=True), style=st,
                            caption=plate_caption(construction, figure, fig_number))

@@ -75,7 +75,9 @@ class SweepDrawing:
         self.n = n = size
         self.ok = np.ones(n, dtype=bool)
         self.style = style
-        vec = lambda v: np.broadcast_to(np.asarray(v, dtype=float), (n,))  # noqa: E731
+        def vec(v: Any) -> np.ndarray:  # a coordinate over the values (a sweep's array, or one number for all)
+            return v if type(v) is np.ndarray and v.shape == (n,) else np.full(n, float(v))
+
         self._vec = vec
         # a lettered straight line's letter point (scene._letter_lines): placed below, once the axis is broken
         ids = {m.id for m in template.marks}

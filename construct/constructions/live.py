@@ -545,7 +545,9 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     us = list(np.linspace(lo, hi, start))
     values = lambda u: np.clip(10.0 ** np.asarray(u), domain.low, domain.high)  # noqa: E731
     frames, _ = _frames(construction, figure, given, values(us), measure)
-    data = dict(zip(us, frames))
+    # each value's numbers as one array, made once (every cell it bounds reads them)
+    as_arrays = lambda fs: [(f[0], np.asarray(f[1], dtype=float), *f[2:]) for f in fs]  # noqa: E731
+    data = dict(zip(us, as_arrays(frames)))
     todo = list(zip(us[:-1], us[1:]))
     jumps: list[tuple[float, float]] = []
     snap: set[int] = set()  # keys drawn from the nearer grid value
@@ -556,6 +558,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     while todo:
         mids = [(a + b) / 2 for a, b in todo]
         mframes, _ = _frames(construction, figure, given, values(mids), measure)
+        mframes = as_arrays(mframes)
         nxt = []
         for (a, b), m, fm in zip(todo, mids, mframes):
             data[m] = fm
@@ -565,7 +568,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
             if not ka == kb == fm[0]:
                 err, culprits = math.inf, {-1: math.inf}
             else:
-                err, culprits = _midpoint_error(ka, np.asarray(na), np.asarray(nb), np.asarray(fm[1]), snap)
+                err, culprits = _midpoint_error(ka, na, nb, fm[1], snap)
             if err <= REFINE_PX:
                 bound = max(bound, err)
                 continue

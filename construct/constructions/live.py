@@ -305,10 +305,6 @@ def _frames(construction: Construction, figure: Figure, given: str, values: np.n
     return measure.frames(figure.protocol, replay, len(values)), replay
 
 
-#: The order of the player's layers in its figure (Drawing.LAYERS): the document order of the marks' elements.
-_LAYER_ORDER = {"areas": 0, "construction": 1, "results": 2, "points": 3}
-
-
 class Measure:
     """What the player page draws at a value of the given, without laying the page out: the same numbers as
     :func:`drawn_numbers` of :func:`player_page` (tests/test_constructions_live.py holds them equal).
@@ -460,8 +456,7 @@ class Measure:
 
     def __call__(self, figure: Figure) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:
         from ..render.output import scene_for
-        from ..render.scene import MarkKind
-        from ..render.svg import mark_geometry
+        from ..render.svg import Drawing, mark_geometry, mark_layer
         from ..render.svgdoc import fmt
         from ..render.viewport import Viewport
 
@@ -470,15 +465,12 @@ class Measure:
         vp = Viewport.fit(scene.bbox, st, 0)
         full = (0.0, 0.0, round(vp.width, 2), round(vp.height, 2))
         # each layer's elements in the order of the marks, the layers in the page's order
-        layers: list[tuple[list, list]] = [([], []) for _ in _LAYER_ORDER]
+        layers: dict[str, tuple[list, list]] = {name: ([], []) for name in Drawing.LAYERS}
         texts: dict[str, str] = {}
-        point, results, construction = _LAYER_ORDER["points"], _LAYER_ORDER["results"], _LAYER_ORDER["construction"]
         for m in scene.marks:
             if m.label:
                 texts[f"{m.id}-label"] = m.label
-            kind = m.kind
-            lk, ln = layers[point if kind is MarkKind.POINT else _LAYER_ORDER["areas"] if not kind.stroked
-                            else results if m.role == "result" else construction]
+            lk, ln = layers[mark_layer(m)]
             for suffix, _, attrs in mark_geometry(m, vp, st):
                 ident = m.id + suffix
                 for a, v in attrs.items():
@@ -493,7 +485,7 @@ class Measure:
                         ln.extend(_canonical_arc(ns) if t == _ARC else ns)
         keys = [("figure", "viewBox", "# # # #")]
         nums = [0.0, 0.0, float(fmt(vp.width)), float(fmt(vp.height))]
-        for lk, ln in layers:
+        for lk, ln in layers.values():
             keys += lk
             nums += ln
         boxes = self._boxes(scene, vp)

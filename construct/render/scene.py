@@ -36,7 +36,8 @@ from ..kernel.geometry import Circle, Length, Line, Point
 from ..kernel.protocol import Protocol, Replay, Step
 from .captions import TITLE_LIMIT, Reader, displayed
 
-__all__ = ["Mark", "MarkKind", "Scene", "build_scene", "label_offset_direction", "on_curve_names", "extreme_points", "middle"]
+__all__ = ["Mark", "MarkKind", "Scene", "build_scene", "label_offset_direction", "on_curve_names", "extreme_points", "middle",
+           "fanned_lines", "letter_point"]
 
 TWO_PI = 2.0 * math.pi
 #: What a letter of the figure looks like (:meth:`Scene.tag_shown`): a letter, a number below 20 or
@@ -541,10 +542,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 have.extend(p for n, p in shown_pts if _on(obj, p, tol) and p not in have)
     marks: list[Mark] = []
     lettered: dict[str, tuple[str, bool]] = {}  # lettered straight lines: their letter, whether in a fan
-    fans: dict[str, list[str]] = collections.defaultdict(list)  # lettered straight lines by their first point
-    for s in protocol.steps:
-        if s.op == "polyline" and s.outputs[0] in dict(s.labels):
-            fans[s.inputs[0]].append(s.outputs[0])
+    in_fan = fanned_lines(protocol.steps)
     for s in protocol.steps:
         labels = dict(s.labels)
         for name in s.outputs:
@@ -577,7 +575,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 if straight and label:
                     # lettered at a point of its own on it, placed once the sheet is laid out (below)
                     marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=True, **{**common, "label": None}))
-                    lettered[mid] = (label, len(fans[s.inputs[0]]) >= 3)
+                    lettered[mid] = (label, in_fan[name])
                 else:
                     marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=straight, **common))
     breaks: tuple[tuple[float, float, float], ...] = ()
@@ -796,17 +794,47 @@ def _letter_lines(marks: list[Mark], lettered: dict, breaks: tuple) -> list[Mark
         if got is None:
             continue
         label, fan = got
-        pts = m.geom
-        at = pts[-1] if fan else middle(pts)
-        for x0, w, _ in breaks:
-            (ax, ay), (bx, by) = pts[0], pts[-1]
-            if len(pts) == 2 and min(ax, bx) < x0 + w and max(ax, bx) > x0 + w and not fan:
-                x = (x0 + w + max(ax, bx)) / 2.0  # the middle of the part right of the break
-                at = (x, ay + (by - ay) * (x - ax) / (bx - ax))
+        at = letter_point(m.geom, fan, [(x0, w) for x0, w, _ in breaks])
         out.append(dataclasses.replace(m, id=f"{m.id}-at", kind=MarkKind.POINT, geom=(at[0], at[1]),
                                        name=f"{m.name}.at", role=m.role if fan else "auxiliary", label=label,
                                        look="hidden", straight=False))
     return out
+
+
+def fanned_lines(steps: Iterable[Step]) -> dict[str, bool]:
+    """Each lettered straight line (polyline) of *steps*: is it one of a fan of three or more drawn from one
+    point (the cranks of Tabelle 2), lettered at its far end rather than its middle?
+
+    >>> from construct.constructions import get
+    >>> fanned_lines(get("crank-angle").figure().protocol.steps)["OW1"]  # the cranks AOW of Tabelle 2
+    True
+    >>> sorted(fanned_lines(get("crank").figure(parts=3).protocol.steps).items())  # r, L and s = 2r
+    [('crankarm', False), ('rodline', False), ('stroke', False)]
+    """
+    fans: dict[str, list[str]] = collections.defaultdict(list)  # lettered straight lines by their first point
+    for s in steps:
+        if s.op == "polyline" and s.outputs[0] in dict(s.labels):
+            fans[s.inputs[0]].append(s.outputs[0])
+    return {name: len(lines) >= 3 for lines in fans.values() for name in lines}
+
+
+def letter_point(pts: tuple, fan: bool, breaks: Iterable[tuple[float, float]] = ()) -> tuple[float, float]:
+    """Where a lettered straight line's letter stands: at its middle, or (one of a fan) at its far end; a
+    line drawn across a broken axis (*breaks*: where the drawn break starts, its drawn width) at the middle of
+    its part right of the break.
+
+    >>> letter_point(((0.0, 0.0), (4.0, 0.0)), False), letter_point(((0.0, 0.0), (4.0, 2.0)), True)
+    ((2.0, 0.0), (4.0, 2.0))
+    >>> letter_point(((0.0, 0.0), (4.0, 0.0)), False, [(1.0, 1.0)])
+    (3.0, 0.0)
+    """
+    at = pts[-1] if fan else middle(pts)
+    for x0, w in breaks:
+        (ax, ay), (bx, by) = pts[0], pts[-1]
+        if len(pts) == 2 and min(ax, bx) < x0 + w and max(ax, bx) > x0 + w and not fan:
+            x = (x0 + w + max(ax, bx)) / 2.0  # the middle of the part right of the break
+            at = (x, ay + (by - ay) * (x - ax) / (bx - ax))
+    return at
 
 
 def middle(pts: tuple, at: float = 0.5) -> tuple[float, float]:

@@ -41,7 +41,8 @@ from .svgdoc import fmt
 from .viewport import Viewport, camera_transform, camera_zoom
 from .wrapping import wrap as wrap_chars
 
-__all__ = ["render_svg", "Drawing", "step_caption", "group_caption", "wrap", "mark_geometry"]
+__all__ = ["render_svg", "Drawing", "step_caption", "group_caption", "wrap", "mark_geometry", "mark_layer",
+           "point_radius"]
 
 
 def wrap(text: str, width_px: float, size: float) -> list[str]:
@@ -767,8 +768,7 @@ class Drawing:
                     yield "labels", self._letter(vp, m, rel, m.label, "lb", lid, extra=extra, gid=gid)
             return
         if m.kind.stroked:
-            layer = "results" if m.role == "result" else "construction"
-            yield layer, _STROKES[m.kind](f, shapes[0][2], {"class_": cls, **ids})
+            yield mark_layer(m), _STROKES[m.kind](f, shapes[0][2], {"class_": cls, **ids})
         else:  # an area, and its hatching if the style hatches and the lines meet it
             yield "areas", f.path(d=shapes[0][2]["d"], class_=f"area {cls}", **ids)
             for _, _, a in shapes[1:]:
@@ -1131,6 +1131,21 @@ _STROKES: dict[MarkKind, Any] = {
 }
 
 
+def point_radius(m: Mark, style: Style) -> float:
+    """The drawn radius of a point mark: small for an auxiliary one or an unlettered helper (a dotted name)."""
+    aux = m.role == "auxiliary" or ("." in m.name and not m.label)
+    return style.aux_point_radius if aux else style.point_radius
+
+
+def mark_layer(m: Mark) -> str:
+    """The layer of :attr:`Drawing.LAYERS` a mark's drawing (not its letter) goes into."""
+    if m.kind is MarkKind.POINT:
+        return "points"
+    if not m.kind.stroked:
+        return "areas"
+    return "results" if m.role == "result" else "construction"
+
+
 def mark_geometry(m: Mark, vp: Viewport, style: Style) -> list[tuple[str, str, dict[str, str]]]:
     """What a mark draws on the canvas *vp*, without its letter: (id suffix, element, {attribute: text}).
 
@@ -1149,9 +1164,8 @@ def mark_geometry(m: Mark, vp: Viewport, style: Style) -> list[tuple[str, str, d
     """
     g, kind = m.geom, m.kind
     if kind is MarkKind.POINT:
-        aux = m.role == "auxiliary" or ("." in m.name and not m.label)
         x, y = vp.xy(*g)
-        return [("", "circle", {"cx": x, "cy": y, "r": fmt(style.aux_point_radius if aux else style.point_radius)})]
+        return [("", "circle", {"cx": x, "cy": y, "r": fmt(point_radius(m, style))})]
     if kind is MarkKind.SEGMENT:
         (x1, y1), (x2, y2) = vp.xy(*g[:2]), vp.xy(*g[2:4])
         return [("", "line", {"x1": x1, "y1": y1, "x2": x2, "y2": y2})]

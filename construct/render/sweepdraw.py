@@ -27,7 +27,8 @@ from typing import Any
 import numpy as np
 
 from ..kernel.geometry import Circle, Line, Point, take
-from .scene import BREAK_FRACTION, BREAK_KEEP, TWO_PI, MarkKind, Scene, middle, on_curve_names
+from .scene import BREAK_FRACTION, BREAK_KEEP, TWO_PI, MarkKind, Scene, fanned_lines, letter_point, on_curve_names
+from .svg import point_radius
 from .styles import Style
 
 __all__ = ["SweepDrawing", "sweep_drawable"]
@@ -272,28 +273,20 @@ class SweepDrawing:
         self._breaks = (hi - keep, keep)
 
     def _letter_lines(self, template: Scene, protocol: Any) -> None:
-        """scene._letter_lines over the sweep: each lettered straight line's letter point."""
-        fans: dict[str, list[str]] = {}
-        for s in protocol.steps:
-            if s.op == "polyline" and s.outputs[0] in dict(s.labels):
-                fans.setdefault(s.inputs[0], []).append(s.outputs[0])
-        fan_of = {name: len(v) >= 3 for v in fans.values() for name in v}
+        """scene._letter_lines over the sweep: each lettered straight line's letter point (value by value: a
+        handful of lines)."""
+        in_fan = fanned_lines(protocol.steps)
         self.at_marks = [m for m in template.marks if m.id in self._at]
         xs, ys = [], []
         for m in self.at_marks:
             line = self.curves[m.id[:-3]]
-            fan = fan_of.get(m.name[:-3], False)
+            fan = in_fan.get(m.name[:-3], False)
             ats = []
             for i in range(self.n):
                 pts = tuple((float(x[i]), float(y[i])) for x, y in line)
-                at = pts[-1] if fan else middle(pts)
-                if self._broken is not None and self._broken[i]:
-                    x0, w = float(self._breaks[0][i]), float(self._breaks[1][i])
-                    (ax, ay), (bx, by) = pts[0], pts[-1]
-                    if len(pts) == 2 and min(ax, bx) < x0 + w and max(ax, bx) > x0 + w and not fan:
-                        x = (x0 + w + max(ax, bx)) / 2.0
-                        at = (x, ay + (by - ay) * (x - ax) / (bx - ax))
-                ats.append(at)
+                broken = self._broken is not None and self._broken[i]
+                ats.append(letter_point(pts, fan, [(float(self._breaks[0][i]), float(self._breaks[1][i]))]
+                                        if broken else ()))
             xs.append([a[0] for a in ats])
             ys.append([a[1] for a in ats])
         if self.at_marks:
@@ -332,8 +325,7 @@ class SweepDrawing:
         stack = lambda *cols: np.stack([_r2(c) for c in cols], axis=-1)  # noqa: E731
         if g[MarkKind.POINT]:
             x, y = self._px(*g[MarkKind.POINT])
-            r = np.array([[st.aux_point_radius if m.role == "auxiliary" or ("." in m.name and not m.label)
-                           else st.point_radius] for m in self.rows[MarkKind.POINT]]) + np.zeros(x.shape)
+            r = np.array([[point_radius(m, st)] for m in self.rows[MarkKind.POINT]]) + np.zeros(x.shape)
             out[MarkKind.POINT] = stack(x, y, r)
         if g[MarkKind.SEGMENT]:
             x1, y1, x2, y2 = g[MarkKind.SEGMENT]
@@ -363,8 +355,7 @@ class SweepDrawing:
             out[m.id] = stack(*cols)[None]
         if getattr(self, "at_marks", None):
             x, y = self._px(*self.at_geom)
-            r = np.array([[st.aux_point_radius if m.role == "auxiliary" or ("." in m.name and not m.label)
-                           else st.point_radius] for m in self.at_marks]) + np.zeros(x.shape)
+            r = np.array([[point_radius(m, st)] for m in self.at_marks]) + np.zeros(x.shape)
             out["-at"] = stack(x, y, r)
         return out
 

@@ -73,7 +73,8 @@ def _keys(page) -> tuple[list[list[str]], list[tuple]]:
 def _page_numbers(page, keys):
     return page.evaluate("""keys => keys.map(k => {
         if (k[0].charAt(0) === '#') return '';  // a step's view and ring: in the player's data, for the shown step
-        const el = k[0] ? document.getElementById(k[0]) : document.getElementById('figure');
+        // (the player keeps the groups a step hides out of the document: find looks there too)
+        const el = k[0] ? window.constructPlayer.find(k[0]) : document.getElementById('figure');
         return k[1] === 'viewBox' ? el.getAttribute('data-full') : el.getAttribute(k[1]); })""", keys)
 
 
@@ -273,11 +274,13 @@ def test_the_checks_table_keeps_its_rows_and_rewrites_their_cells(browser, live_
     page.close()
 
 
-def test_while_dragging_the_letters_keep_a_scale_within_four_percent_and_take_the_exact_one_when_let_go(browser, live_player):
-    """A new letter scale restyles and lays out every letter: while the given is dragged the camera keeps the
-    shown scale until it is 4 % off the exact one (a 12 px letter within half a pixel of its size), and the
-    exact one is set when the slider is let go.  The
-    figure is shown whole in a low window, so that its height sets the scale (which then follows the box)."""
+def test_while_dragging_the_letters_keep_their_scale_within_a_band_and_take_the_exact_one_when_let_go(browser, live_player):
+    """A new letter scale restyles and lays out every letter shown: while the given is dragged the camera keeps
+    the shown scale while the letters stay between 4 % smaller (a 9.5 px letter above 9 px) and 20 % larger
+    than exact, and a scale it must change it sets near the far side of that band from where the drag is
+    heading (18 % larger while the figure grows on the screen, 3 % smaller while it shrinks); the exact one is
+    set when the slider is let go.  The figure is shown whole in a low window, so that its height sets the
+    scale (which then follows the box: 9.5 px letters)."""
     _, _, path = live_player
     page = browser.new_page(viewport={"width": 1400, "height": 600})
     errors: list[str] = []
@@ -287,26 +290,33 @@ def test_while_dragging_the_letters_keep_a_scale_within_four_percent_and_take_th
     page.evaluate("() => { const z = document.getElementById('zoom'); z.checked = false; z.onchange(); }")
     page.wait_for_timeout(500)  # the camera's glide to the whole figure
     scale = "() => +getComputedStyle(document.querySelector('#figure .pt')).getPropertyValue('--ls')"
-    grow = """([f, slack]) => { const p = window.constructPlayer; p.full[2] *= f; p.full[3] *= f; p.jump(slack); }"""
+    grow = """([f, drag]) => { const p = window.constructPlayer; p.full[2] *= f; p.full[3] *= f; p.jump(drag); }"""
     built = page.evaluate(scale)
     assert built > 1.0  # letters at 9.5 px: the scale follows the view
-    page.evaluate(grow, [1.02, 0.04])  # a drag's frame: 2 % off, kept
+    page.evaluate(grow, [1.02, True])  # a drag's frame: the letters 2 % small, kept
     assert page.evaluate(scale) == built
-    page.evaluate(grow, [1.0, 0])  # the same view drawn exactly
-    assert page.evaluate(scale) == pytest.approx(built * 1.02, abs=2e-4)
-    page.evaluate(grow, [1.015, 0.04])
-    page.evaluate(grow, [1.015, 0.04])  # 3 % off the shown one: kept
-    assert page.evaluate(scale) == pytest.approx(built * 1.02, abs=2e-4)
-    page.evaluate(grow, [1.015, 0.04])  # 4.6 % off: drawn
-    assert page.evaluate(scale) == pytest.approx(built * 1.02 * 1.015 ** 3, abs=2e-4)
+    page.evaluate(grow, [1.0, False])  # the same view drawn exactly
+    exact = built * 1.02
+    assert page.evaluate(scale) == pytest.approx(exact, abs=2e-4)
+    page.evaluate(grow, [1.015, True])
+    page.evaluate(grow, [1.015, True])  # 3 % small: kept
+    assert page.evaluate(scale) == pytest.approx(exact, abs=2e-4)
+    page.evaluate(grow, [1.015, True])  # 4.4 % small: set, 18 % large (the figure grows on the screen)
+    exact *= 1.015 ** 3
+    assert page.evaluate(scale) == pytest.approx(exact * 1.18, abs=2e-4)
+    page.evaluate(grow, [0.99, True])  # the drag turns: 19.2 % large, kept
+    assert page.evaluate(scale) == pytest.approx(exact * 1.18, abs=2e-4)
+    page.evaluate(grow, [0.99, True])  # 20.4 % large: set, 3 % small (the figure shrinks on the screen)
+    exact *= 0.99 ** 2
+    assert page.evaluate(scale) == pytest.approx(exact * 0.97, abs=2e-4)
     # the live slider: dragged, then let go ('change'): the exact scale of the value (as set() draws it)
     page.evaluate("v => window.constructLive.set(v)", 3.3)
     exact = page.evaluate(scale)
     page.evaluate("v => window.constructLive.set(v, true)", 3.3)
     page.evaluate("() => { window.kept = window.constructPlayer.full.slice(); }")
-    page.evaluate(grow, [0.975, 0])  # an earlier frame of the drag drew a scale 2.5 % off
+    page.evaluate(grow, [0.975, False])  # an earlier frame of the drag drew a scale 2.5 % off
     page.evaluate("() => { window.kept.forEach((x, i) => { window.constructPlayer.full[i] = x; }); }")
-    page.evaluate(grow, [1.0, 0.04])  # the drag's last frame, at 3.3: kept
+    page.evaluate(grow, [1.0, True])  # the drag's last frame, at 3.3: kept
     assert page.evaluate(scale) == pytest.approx(exact * 0.975, abs=2e-4)
     page.evaluate("""() => new Promise(r => { const i = document.querySelector('#live input[type=range]');
         i.dispatchEvent(new Event('change')); requestAnimationFrame(() => requestAnimationFrame(r)); })""")
@@ -315,10 +325,51 @@ def test_while_dragging_the_letters_keep_a_scale_within_four_percent_and_take_th
     page.close()
 
 
+def test_while_dragging_the_camera_and_the_zoom_level_stay_while_near_and_let_go_glides_to_the_step(browser, live_player):
+    """A new view lays every letter out again for its screen scale and repaints the whole figure, and a new
+    zoom level swaps the letters: while the given is dragged the camera keeps its view while the step's view
+    lies inside it (a twentieth to spare) and fills more than two thirds of it, and keeps the zoom level while
+    the magnification is within a fifth of that level's range.  Let go, the camera glides to the step's view
+    and the level is the exact one.  (The step's view is moved here by hand, as the given would move it.)"""
+    _, _, path = live_player
+    page, errors = _open(browser, path)
+    n = page.evaluate("window.constructPlayer.data.n")
+    page.evaluate("() => { const s = document.getElementById('slider'); s.value = %d; s.oninput(); }" % (n // 2))
+    page.wait_for_timeout(600)  # the camera's glide
+    state = """() => [document.getElementById('figure').getAttribute('viewBox').split(' ').map(Number),
+                      document.getElementById('figure').getAttribute('class')]"""
+    view, level = page.evaluate(state)
+    step_view = """([dx, f]) => { const p = window.constructPlayer, k = +document.getElementById('figure').getAttribute('data-step');
+        const v = p.data.views[p.data.steps[k - 1].v];
+        v[0] += dx * v[2]; v[2] *= f; v[3] *= f; }"""
+    page.evaluate(step_view, [0.03, 1.0])  # moved by 3 % of its width: held
+    page.evaluate("() => window.constructPlayer.jump(true)")
+    assert page.evaluate(state) == [view, level]
+    page.evaluate(step_view, [0.0, 0.8])  # and shrunk to 80 %: held (the level too)
+    page.evaluate("() => window.constructPlayer.jump(true)")
+    assert page.evaluate(state) == [view, level]
+    page.evaluate(step_view, [0.0, 0.8])  # to 64 %: the camera goes to it
+    page.evaluate("() => window.constructPlayer.jump(true)")
+    moved, _ = page.evaluate(state)
+    target = page.evaluate("""() => { const p = window.constructPlayer, k = +document.getElementById('figure').getAttribute('data-step');
+        return p.data.views[p.data.steps[k - 1].v]; }""")
+    assert moved == pytest.approx(target, abs=0.01)
+    page.evaluate(step_view, [0.04, 1.0])  # held again at the new view
+    page.evaluate("() => window.constructPlayer.jump(true)")
+    assert page.evaluate(state)[0] == moved
+    page.evaluate("() => window.constructPlayer.move()")  # let go: a glide to the step's view
+    page.wait_for_timeout(600)
+    target = page.evaluate("""() => { const p = window.constructPlayer, k = +document.getElementById('figure').getAttribute('data-step');
+        return p.data.views[p.data.steps[k - 1].v]; }""")
+    assert page.evaluate(state)[0] == pytest.approx(target, abs=0.01)
+    assert not errors, errors
+    page.close()
+
+
 _SEEN = """keys => { const svg = document.getElementById('figure'), R = svg.getBoundingClientRect();
     return keys.map(k => {
       if (k[0].charAt(0) === '#' || !k[0] || k[0] === 'figure') return [null, false];
-      const el = document.getElementById(k[0]), r = el.getBoundingClientRect();
+      const el = window.constructPlayer.find(k[0]), r = el.getBoundingClientRect();
       const shown = r.width + r.height > 0 && r.right >= R.left && r.left <= R.right && r.bottom >= R.top && r.top <= R.bottom;
       return [el.getAttribute(k[1]), shown]; }); }"""
 

@@ -16,8 +16,8 @@ inflated data, ``lastMs`` the last redraw's time.
 A drag is drawn inside one animation frame (``construct bench --live``): each
 frame draws only the marks and letters displayed in the window, the rest when
 the slider is let go, a step is shown or the view changes; numbers are set as
-SVG lengths, not parsed text; the letter scale is kept while it stays within
-4 % (exact on let-go); the checks' cells change in place.
+SVG lengths, not parsed text; the letters' scale and zoom level are kept while near
+the exact ones (exact on let-go); the checks' cells change in place.
 
 >>> page = "<html><body><div id=stage></div>\\n<aside>\\n</aside>\\n</body></html>"
 >>> out = with_live(page, {"given": "rod_ratio", "symbol": "L/r", "low": 1.05, "high": 1000.0,
@@ -238,6 +238,7 @@ LIVE_SCRIPT = r"""
   // layout all the same: at the inertia curve's last step 907 of its 1156 moving marks are hidden so.
   function hidden(node){  // the node or a group round it not displayed (known per step and zoom level)
     if (!node || node === svg || node.nodeType !== 1) return false;
+    if (!node.isConnected) return true;  // in a group the player has taken out of the document (lean)
     var h = hid.get(node);
     if (h === undefined) { h = hidden(node.parentNode) || getComputedStyle(node).display === "none"; hid.set(node, h); }
     return h;
@@ -346,11 +347,7 @@ LIVE_SCRIPT = r"""
     if (L.jumps.indexOf(lo) >= 0) t = t < 0.5 ? 0 : 1;
     return [lo, t];
   }
-  // while the given is dragged, the letters keep their scale until it is 4 % off (a 12 px letter within half a
-  // pixel of its size): a new scale restyles and lays out every letter and point again (a frame of its own in
-  // a fast drag); the exact scale is set when the slider is let go
-  var SLACK = 0.04;
-  function view(dragging, slack){  // what the player's show(k) does with the view, without touching the steps (cheap)
+  function view(atOnce, drag){  // what the player's show(k) does with the view, without touching the steps (cheap)
     var d = player.data, k = +(svg.getAttribute("data-step") || d.n), st = k > 0 ? d.steps[k - 1] : null;
     if (st && st[IDX] >= 0 && cur && zoomAt[k - 1] !== undefined) {
       for (var i = 0; i < 4; i++) d[LIST][st[IDX]][i] = Math.round(valueAt(zoomAt[k - 1] + i) * 100) / 100;
@@ -361,7 +358,7 @@ LIVE_SCRIPT = r"""
       st.r[1] = Math.round((rp.y + now(rp.p.s.cy) - rp.p.y) * 100) / 100;
     }
     // the player moves its view there itself: at once while the given is dragged, smoothly to a new step
-    if (player.jump && dragging) { player.jump(slack || 0); return; }
+    if (player.jump && atOnce) { player.jump(!!drag); return; }
     if (player.move) { player.move(); return; }
     var zoom = document.getElementById("zoom");
     var box = st && zoom && zoom.checked && k < d.n && st.z >= 0 ? d.zooms[st.z] : null;
@@ -436,7 +433,7 @@ LIVE_SCRIPT = r"""
     }
     doneTo = Math.max(doneTo, k);
   }
-  function redraw(value, dragging){
+  function redraw(value, dragging, glide){  // glide: the camera to the step's view smoothly (let go)
     var t0 = performance.now(), shape = dragging && player ? svg.getBoundingClientRect() : null;  // read before any write
     var u = Math.log10(value), ct = cell(u), t = ct[1];
     cur = {r0: ct[0] * U, r1: Math.min(ct[0] + 1, rows - 1) * U, t: t};
@@ -450,7 +447,7 @@ LIVE_SCRIPT = r"""
       }
     }
     // the view first (the player reads the figure's size there: nothing written yet, no layout forced)
-    if (player) view(true, dragging ? SLACK : 0);
+    if (player) view(!glide, dragging);
     var k = player ? +(svg.getAttribute("data-step") || player.data.n) : Infinity;
     doneTo = -1;
     // the broken axis's marks belong to the built value's break; elsewhere the break lies elsewhere or nowhere
@@ -531,6 +528,8 @@ LIVE_SCRIPT = r"""
     return inflate(L.data);
   }).then(function(buf){
     prepare(buf);
+    // the groups the step hides leave the document (a new letter scale restyles them all the same)
+    if (player && player.lean) player.lean();
     // a drag sends more input events than frames: the last value of each frame is drawn, once, just before it
     var pending = false;
     input.addEventListener("input", function(){
@@ -538,9 +537,9 @@ LIVE_SCRIPT = r"""
       pending = true;
       requestAnimationFrame(function(){ pending = false; redraw(Math.pow(10, +input.value), true); });
     });
-    // let go (or a key's step): the letters at their exact scale
+    // let go (or a key's step): the letters at their exact scale, the camera gliding to the step's view
     input.addEventListener("change", function(){
-      requestAnimationFrame(function(){ redraw(Math.pow(10, +input.value), false); });
+      requestAnimationFrame(function(){ redraw(Math.pow(10, +input.value), false, true); });
     });
     // a new step: its marks and its view at the shown value (the player has just set the built view)
     var seenStep = svg.getAttribute("data-step");
@@ -553,7 +552,7 @@ LIVE_SCRIPT = r"""
     window.addEventListener("resize", function(){ if (stale) catchUp(+(svg.getAttribute("data-step") || Infinity)); });
     showChecks(Math.log10(L.initial));
   });
-  api.set = function(value, dragging){  // dragging: drawn as a drag draws it (see SLACK)
+  api.set = function(value, dragging){  // dragging: drawn as a drag draws it (the player's DRAG_LARGER)
     value = Math.min(L.high, Math.max(L.low, value));
     input.value = Math.log10(value);
     redraw(value, !!dragging);

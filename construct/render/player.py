@@ -243,26 +243,43 @@ li a.later{color:#bbb}
   }
   // the letter scale --ls is declared on the letters and points themselves (this rule), not inherited
   // from the figure: a new value then restyles those, not every element of the figure (a third of them)
+  // (and of a live player, only those of the steps shown: see lean)
   var lsRule = null;
   Array.prototype.forEach.call(document.styleSheets, function (sh) {
     Array.prototype.forEach.call(sh.cssRules, function (r) {
       if (!lsRule && r.selectorText && r.selectorText.indexOf("#figure .lbg") === 0) { lsRule = r; }
     });
   });
-  function put(v, r, slack) {  // show view *v*: letters and points at their screen size (12 px, never below 9.5 px)
+  // While a given is dragged (jump(true)), a new letter scale or zoom level is a frame of its own: it restyles
+  // and lays out every letter and point shown.  So a drag keeps the shown scale while the letters stay between
+  // 4 % smaller (a 9.5 px letter above 9 px) and 20 % larger than exact, and when it must change sets it near
+  // the far side of that band from where the drag is heading (18 % larger, 3 % smaller), which lasts a change
+  // of a quarter in the figure's size, not of 4 %; it keeps the shown zoom level while the magnification is
+  // within a fifth of that level's range.  Letting go of the slider sets both exactly.
+  var DRAG_SMALLER = 0.04, DRAG_LARGER = 0.2, DRAG_SET_SMALLER = 0.03, DRAG_SET_LARGER = 0.18, DRAG_LEVEL = 1.2;
+  var dragFrom = null;  // the whole figure's canvas pixels per screen pixel at the last view shown
+  function put(v, r, drag) {  // show view *v*: letters and points at their screen size (12 px, never below 9.5 px)
     // the letter scale of the view's zoom level (the letters were placed for it): the level's picture
     // magnified as a whole, letters never smaller on the screen than at the level's own zoom
     // (q times the view's magnification is the whole figure's canvas pixels per screen pixel)
     // (*r*: the figure's box on the screen, if read before anything was written: no layout forced here;
-    // *slack*: while a given is dragged, a letter scale within this fraction of the shown one is kept)
+    // *drag*: a given is being dragged, see DRAG_LARGER)
     r = r || svg.getBoundingClientRect();
-    var q = ratio(v, r), zl = data.levels[level] || 1, ql = ratio(full, r) / zl;
+    var q = ratio(v, r), zl = data.levels[level] || 1, qf = ratio(full, r), ql = qf / zl;
     // written only when changed: a new --ls restyles every letter, a new viewBox repaints the figure
     var box = v.map(function (x) { return x.toFixed(2); }).join(" ");
-    var ls = Math.min(Math.max(1, 9.5 * ql / 12), ql).toFixed(4), lsAt = lsRule ? lsRule.style : svg.style;
+    var exact = Math.min(Math.max(1, 9.5 * ql / 12), ql), ls = exact.toFixed(4), lsAt = lsRule ? lsRule.style : svg.style;
     if (box !== svg.getAttribute("viewBox")) { svg.setAttribute("viewBox", box); }
     var was = lsAt.getPropertyValue("--ls").trim();
-    if (ls !== was && !(slack && was && Math.abs(ls / was - 1) <= slack)) { lsAt.setProperty("--ls", ls); }
+    if (drag && was) {
+      if (was >= exact * (1 - DRAG_SMALLER) && was <= exact * (1 + DRAG_LARGER)) { ls = was; }
+      else {  // the scale grows with the whole figure's canvas pixels per screen pixel (a new level aside)
+        var up = qf !== dragFrom ? qf > dragFrom : was < exact;
+        ls = (exact * (up ? 1 + DRAG_SET_LARGER : 1 - DRAG_SET_SMALLER)).toFixed(4);
+      }
+    }
+    dragFrom = qf;
+    if (ls !== was) { lsAt.setProperty("--ls", ls); }
     var ring = document.getElementById("ring");
     if (ring) {
       ring.setAttribute("visibility", ringAt ? "visible" : "hidden");
@@ -287,25 +304,57 @@ li a.later{color:#bbb}
   }
   window.addEventListener("resize", function () { put(now); });
   function text(id, s) { document.getElementById(id).textContent = s; }
-  function zoomLevel(view, r) {  // the zoom level of *view*: its letters (placed for it) and their scale
+  function zoomLevel(view, r, drag) {  // the zoom level of *view*: its letters (placed for it) and their scale
     // how many times the window shows it larger than the whole figure (a view of the window's shape in a
     // tall figure is magnified more than its width says)
     r = r || svg.getBoundingClientRect();
-    var z = ratio(full, r) / ratio(view, r), lvl = 0;
-    data.levels.forEach(function (l, i) { if (z >= 0.999 * l) { lvl = i; } });
+    var z = ratio(full, r) / ratio(view, r), lvl = 0, L = data.levels;
+    L.forEach(function (l, i) { if (z >= 0.999 * l) { lvl = i; } });
+    // a drag keeps the shown level while near its range (see DRAG_LEVEL)
+    if (drag && lvl !== level && level < L.length && z >= L[level] / DRAG_LEVEL
+        && (level + 1 >= L.length || z < L[level + 1] * DRAG_LEVEL)) { lvl = level; }
     if (svg.getAttribute("class") !== "zl" + lvl) { svg.setAttribute("class", "zl" + lvl); }
     level = lvl;
+  }
+  // Once a live given asks (lean()), the groups the step hides leave the document, a comment keeping each
+  // one's place: Chromium restyles the matches of a changed rule or class inside display:none SVG groups too,
+  // so a new letter scale or zoom level at the inertia curve's last step restyled 1,060 letters and points of
+  // which 219 are shown (10 ms, not 4; a drag's frame has 16).  Which classes hide a group the stylesheet says
+  // (asked of a probe group once).  find(id) finds an element of the figure, in the document or out of it.
+  var lean = false, places = [], hides = {};
+  function hiding(cls) {
+    if (!(cls in hides)) {
+      var probe = document.createElementNS("http://www.w3.org/2000/svg", "g");
+      probe.setAttribute("class", cls);
+      svg.appendChild(probe);
+      hides[cls] = getComputedStyle(probe).display === "none";
+      svg.removeChild(probe);
+    }
+    return hides[cls];
+  }
+  function place(i) {  // group i in the document if it is shown, out of it (its place kept) if not
+    var g = groups[i], shown = !hiding(g.getAttribute("class") || "");
+    if (shown && !g.isConnected) { places[i].replaceWith(g); }
+    else if (!shown && g.isConnected) { g.replaceWith(places[i]); }
+  }
+  function find(id) {
+    var e = document.getElementById(id);
+    for (var i = 0; !e && i < groups.length; i++) {
+      if (!groups[i].isConnected) { e = groups[i].id === id ? groups[i] : groups[i].querySelector("#" + CSS.escape(id)); }
+    }
+    return e;
   }
   function show(j) {
     var box = svg.getBoundingClientRect();  // read before the classes change (a read after them forces a restyle)
     k = Math.max(0, Math.min(n, j));
-    groups.forEach(function (g) {
+    groups.forEach(function (g, i) {
       var s = +g.getAttribute("data-step");
       // earlier steps: an input of step k, faded once their group is finished (data-fade), or old
       var fade = +(g.getAttribute("data-fade") || 0), inp = k > 0 && k < n ? (data.steps[k - 1].i || []) : [];
       g.setAttribute("class", "step" + (s > k ? " hid" : (s === k && k < n ? " cur" :
         (s < k && inp.indexOf(s) >= 0 ? " inp" : (fade && fade < k + (k === n ? 1 : 0) && s < k + (k === n ? 1 : 0) ? " done" :
         (k < n ? " old" : ""))))));
+      if (lean) { place(i); }
     });
     links.forEach(function (a) {
       var s = +a.getAttribute("data-k");
@@ -377,12 +426,27 @@ li a.later{color:#bbb}
   // the live player's hook (construct.render.live): redraw the step, move the camera to the step's view
   // (move: to the step's view, smoothly; jump: there at once, as a given's slider is dragged)
   function target() { var st = k > 0 ? data.steps[k - 1] : null; return st && zoom.checked ? data.views[st.v] : full; }
+  // A drag keeps the shown view while the step's view lies inside it (a twentieth of its size to spare) and
+  // fills more than two thirds of it.  A camera that stays put shows the construction move, as a teacher
+  // dragging a given expects; and a new view is dear: its new screen scale lays every letter out again and
+  // repaints the whole figure (half of a drag's frame).  Letting go glides to the step's exact view.
+  function holds(v, t) {  // does view *v* hold view *t* while a given is dragged?
+    var mx = v[2] / 20, my = v[3] / 20;
+    return t[0] >= v[0] - mx && t[1] >= v[1] - my && t[0] + t[2] <= v[0] + v[2] + mx
+      && t[1] + t[3] <= v[1] + v[3] + my && Math.max(t[2] / v[2], t[3] / v[3]) >= 2 / 3;
+  }
   window.constructPlayer = {data: data, full: full, redraw: function () { show(k); }, move: function () { move(target()); },
-    jump: function (slack) {
+    find: find, lean: function () {
+      if (lean) { return; }
+      lean = true;
+      groups.forEach(function (g, i) { places[i] = document.createComment("step " + g.getAttribute("data-step")); place(i); });
+    },
+    jump: function (drag) {  // *drag*: as a given's drag draws it (the view, the letters' scale and level kept near)
       if (anim) { cancelAnimationFrame(anim); anim = null; }
       // the figure's box read once, before the level's class is set (a read after it would restyle the figure twice)
-      var r = svg.getBoundingClientRect();
-      now = target().slice(); zoomLevel(now, r); put(now, r, slack); }};
+      var r = svg.getBoundingClientRect(), to = target();
+      if (!(drag && holds(now, to))) { now = to.slice(); }
+      zoomLevel(now, r, !!drag); put(now, r, !!drag); }};
 })();
 </script>
 </body>

@@ -4,9 +4,9 @@ A teacher drags the rod-ratio slider across the whole domain; every position
 must be drawn inside one animation frame (16.7 ms at 60 Hz).  The page is opened
 in headless Chromium (Debian's ``chromium`` driven by Playwright, as the
 browser tests drive it), the construction shown at a few steps (the last step,
-its middle step, its first quarter), and at each step the slider is dragged
-through 120 values evenly spread in log10 over the domain (drawn as a drag
-draws them: ``constructLive.set(v, true)``).  Each redraw is timed from inside
+its middle step, its first quarter), and at each step the slider, taken to the
+domain's low end first, is dragged through 120 values evenly spread in log10
+up to its high end (drawn as a drag draws them: ``constructLive.set(v, true)``).  Each redraw is timed from inside
 an animation-frame callback to a task queued behind the frame, so the time
 counts the script *and* the style, layout, paint and commit work the frame
 then does on the page's main thread (``script_ms`` is the script alone).
@@ -55,11 +55,15 @@ _MEASURE = """async ([n, at]) => {
   const lo = +input.min, hi = +input.max;
   if (p && at !== null) { document.getElementById("slider").value = at; document.getElementById("slider").oninput(); }
   await new Promise(r => setTimeout(r, 500));  // the camera's glide to the step's view
+  // the slider taken to the domain's low end and let go there (a drag starts where the slider is: the jump
+  // from the built value, or from the last drag's end, is not a frame of the drag)
+  live.set(Math.pow(10, lo));
+  await new Promise(r => setTimeout(r, 500));
   await new Promise(r => requestAnimationFrame(() => setTimeout(r, 0)));
   performance.mark("live-drag-start");
   const out = [];
-  for (let i = 0; i < n; i++) {
-    const v = Math.pow(10, lo + (hi - lo) * i / (n - 1));
+  for (let i = 1; i <= n; i++) {
+    const v = Math.pow(10, lo + (hi - lo) * i / n);
     out.push(await new Promise(res => requestAnimationFrame(() => {
       const t0 = performance.now();
       live.set(v, true);

@@ -16,8 +16,11 @@ inflated data, ``lastMs`` the last redraw's time.
 A drag is drawn inside one animation frame (``construct bench --live``): each
 frame draws only the marks and letters displayed in the window, the rest when
 the slider is let go, a step is shown or the view changes; numbers are set as
-SVG lengths, not parsed text; the letters' scale and zoom level are kept while near
-the exact ones (exact on let-go); the checks' cells change in place.
+SVG lengths, not parsed text; the camera keeps its view while the step's view
+stays near it, and the letters their scale and zoom level (the player's
+``holds`` and ``DRAG_LARGER``; exact, the camera gliding, on let-go); the
+groups the step hides are out of the document (the player's ``lean``); the
+checks' cells change in place.
 
 >>> page = "<html><body><div id=stage></div>\\n<aside>\\n</aside>\\n</body></html>"
 >>> out = with_live(page, {"given": "rod_ratio", "symbol": "L/r", "low": 1.05, "high": 1000.0,

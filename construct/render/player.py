@@ -435,7 +435,8 @@ li a.later{color:#bbb}
     return t[0] >= v[0] - mx && t[1] >= v[1] - my && t[0] + t[2] <= v[0] + v[2] + mx
       && t[1] + t[3] <= v[1] + v[3] + my && Math.max(t[2] / v[2], t[3] / v[3]) >= 2 / 3;
   }
-  window.constructPlayer = {data: data, full: full, redraw: function () { show(k); }, move: function () { move(target()); },
+  window.constructPlayer = {data: data, full: full, redraw: function () { show(k); },
+    move: function () { zoomLevel(target()); move(target()); },  // (the level a drag kept, made exact)
     find: find, lean: function () {
       if (lean) { return; }
       lean = true;

@@ -317,12 +317,11 @@ LIVE_SCRIPT = r"""
     return [cx - hw, cy - hh, cx + hw, cy + hh, 1 / s];
   }
   function drawElem(e, w){  // a mark at the shown value: all of it, or (w: the window while dragging) if seen
+    // (outside the window first: that is arithmetic, while whether it is displayed may ask the browser)
+    var b = e.cull ? boxNow(e) : null;
+    if (w && e.cull && !meets(b, w, MARGIN_PX * w[4]) && !meets(e.box, w, MARGIN_PX * w[4])) { e.stale = stale = true; return; }
     if (w && hidden(e.el)) { e.stale = stale = true; return; }
-    if (w && e.cull) {
-      var b = boxNow(e);
-      if (!meets(b, w, MARGIN_PX * w[4]) && !meets(e.box, w, MARGIN_PX * w[4])) { e.stale = stale = true; return; }
-      e.box = b;
-    } else if (e.cull) e.box = boxNow(e);
+    if (e.cull) e.box = b;
     for (var s = 0; s < e.slots.length; s++) write(e.slots[s]);
     e.stale = false;
   }
@@ -397,12 +396,10 @@ LIVE_SCRIPT = r"""
   }
   function follow(fo, w){  // a letter or leader line with its point (w: the window while dragging: if seen)
     var p = fo.p, dx = (p.s.cx ? numAt(p.s.cx, 0) : p.x) - p.x, dy = (p.s.cy ? numAt(p.s.cy, 0) : p.y) - p.y;
+    var b = [p.x + dx, p.y + dy, p.x + dx, p.y + dy];  // its point moved by as much as the letter (LABEL_PX about it)
+    if (w && !meets(b, w, LABEL_PX * w[4]) && !meets(fo.box, w, LABEL_PX * w[4])) { fo.stale = stale = true; return; }
     if (w && hidden(fo.at.g || fo.el)) { fo.stale = stale = true; return; }  // (a group: its own display)
-    if (w) {  // its point moved by the same as the letter, its box about its point (LABEL_PX)
-      var m = LABEL_PX * w[4], b = [p.x + dx, p.y + dy, p.x + dx, p.y + dy];
-      if (!meets(b, w, m) && !meets(fo.box, w, m)) { fo.stale = stale = true; return; }
-      fo.box = b;
-    } else fo.box = [p.x + dx, p.y + dy, p.x + dx, p.y + dy];
+    fo.box = b;
     fo.stale = false;
     // moved by their own coordinates (a transform attribute would lose to the camera's CSS scale)
     if (fo.at.g) {  // the camera's label group: its anchor moves (the letters scale about it)

@@ -430,6 +430,7 @@ li a.later{color:#bbb}
   // fills more than two thirds of it.  A camera that stays put shows the construction move, as a teacher
   // dragging a given expects; and a new view is dear: its new screen scale lays every letter out again and
   // repaints the whole figure (half of a drag's frame).  Letting go glides to the step's exact view.
+  var DRAG_ROOM = 0.04;
   function holds(v, t) {  // does view *v* hold view *t* while a given is dragged?
     var mx = v[2] / 20, my = v[3] / 20;
     return t[0] >= v[0] - mx && t[1] >= v[1] - my && t[0] + t[2] <= v[0] + v[2] + mx
@@ -446,7 +447,10 @@ li a.later{color:#bbb}
       if (anim) { cancelAnimationFrame(anim); anim = null; }
       // the figure's box read once, before the level's class is set (a read after it would restyle the figure twice)
       var r = svg.getBoundingClientRect(), to = target();
-      if (!(drag && holds(now, to))) { now = to.slice(); }
+      if (!drag) { now = to.slice(); }
+      // a new view while dragging: the step's view with a little room about it (it can grow by a fifth before
+      // the next), not the step's view exactly (which it would leave at once)
+      else if (!holds(now, to)) { now = [to[0] - to[2] * DRAG_ROOM, to[1] - to[3] * DRAG_ROOM, to[2] * (1 + 2 * DRAG_ROOM), to[3] * (1 + 2 * DRAG_ROOM)]; }
       zoomLevel(now, r, !!drag); put(now, r, !!drag); }};
 })();
 </script>

@@ -4,9 +4,10 @@ A teacher drags the rod-ratio slider across the whole domain; every position
 must be drawn inside one animation frame (16.7 ms at 60 Hz).  The page is opened
 in headless Chromium (Debian's ``chromium`` driven by Playwright, as the
 browser tests drive it), the construction shown at a few steps (the last step,
-its middle step, its first quarter), and at each step the slider, taken to the
-domain's low end first, is dragged through 120 values evenly spread in log10
-up to its high end (drawn as a drag draws them: ``constructLive.set(v, true)``).  Each redraw is timed from inside
+its middle step, its first quarter), and at each step the slider, taken to a
+drag's low end first, is dragged through 120 values evenly spread in log10 up
+to its high end (drawn as a drag draws them: ``constructLive.set(v, true)``):
+across the whole domain, and between 3 and 8 (:data:`DRAGS`).  Each redraw is timed from inside
 an animation-frame callback to a task queued behind the frame, so the time
 counts the script *and* the style, layout, paint and commit work the frame
 then does on the page's main thread (``script_ms`` is the script alone).
@@ -23,17 +24,21 @@ reported here, never a test.
 from __future__ import annotations
 
 import collections
+import itertools
 import json
 import statistics
 from pathlib import Path
 from typing import Any
 
-__all__ = ["FRAME_MS", "POSITIONS", "PHASES", "run_live_bench", "live_verdicts", "trace_phases"]
+__all__ = ["FRAME_MS", "POSITIONS", "DRAGS", "PHASES", "run_live_bench", "live_verdicts", "trace_phases"]
 
 #: One frame at 60 Hz.
 FRAME_MS = 1000 / 60
 #: Slider positions per step.
 POSITIONS = 120
+#: The drags timed at each step: across the whole domain (the most the letters and the camera change in a
+#: frame: 6 % of L/r a frame), and a teacher's between 3 and 8 (both in 120 frames, two seconds).
+DRAGS = {"domain": (None, None), "3 to 8": (3.0, 8.0)}
 #: The main thread's phases of a frame: trace event names (self time) per phase.
 PHASES = {
     "script": ("FunctionCall", "EvaluateScript", "v8.callFunction", "TimerFire", "FireAnimationFrame",
@@ -48,14 +53,15 @@ PHASES = {
     "commit": ("ProxyMain::BeginMainFrame::commit", "Commit"),
 }
 
-_MEASURE = """async ([n, at]) => {
+_MEASURE = """async ([n, at, from, to]) => {
   const live = window.constructLive, p = window.constructPlayer;
   await live.ready;
   const input = document.querySelector('#live input[type="range"]');
-  const lo = +input.min, hi = +input.max;
+  const clip = x => Math.min(+input.max, Math.max(+input.min, x));
+  const lo = from === null ? +input.min : clip(Math.log10(from)), hi = to === null ? +input.max : clip(Math.log10(to));
   if (p && at !== null) { document.getElementById("slider").value = at; document.getElementById("slider").oninput(); }
   await new Promise(r => setTimeout(r, 500));  // the camera's glide to the step's view
-  // the slider taken to the domain's low end and let go there (a drag starts where the slider is: the jump
+  // the slider taken to the drag's low end and let go there (a drag starts where the slider is: the jump
   // from the built value, or from the last drag's end, is not a frame of the drag)
   live.set(Math.pow(10, lo));
   await new Promise(r => setTimeout(r, 500));
@@ -159,17 +165,18 @@ def run_live_bench(pages: list[Path], positions: int = POSITIONS, breakdown: boo
                 page = browser.new_page(viewport={"width": 1400, "height": 1000})
                 page.goto(Path(path).resolve().as_uri())
                 n = page.evaluate("window.constructPlayer ? window.constructPlayer.data.n : 0")
-                for label, at in (("last", None), ("middle", n // 2), ("quarter", n // 4)):
-                    got = page.evaluate(_MEASURE, [positions, at])
+                for (label, at), (drag, (lo, hi)) in itertools.product(
+                        (("last", None), ("middle", n // 2), ("quarter", n // 4)), DRAGS.items()):
+                    got = page.evaluate(_MEASURE, [positions, at, lo, hi])
                     frame = [t[0] for t in got["times"]]
                     script = [t[1] for t in got["times"]]
-                    row = {"page": str(path), "step": label if at is None else f"{label} ({at}/{n})",
+                    row = {"page": str(path), "step": label if at is None else f"{label} ({at}/{n})", "drag": drag,
                            **_figures(frame), "script_median_ms": statistics.median(script),
                            "script_p95_ms": _percentile(sorted(script), 0.95), "script_max_ms": max(script),
                            "script_within_frame": sum(t <= FRAME_MS for t in script)}
                     if breakdown:
                         browser.start_tracing(page=page, categories=_TRACE_CATEGORIES)
-                        page.evaluate(_MEASURE, [positions, at])
+                        page.evaluate(_MEASURE, [positions, at, lo, hi])
                         events = json.loads(browser.stop_tracing())["traceEvents"]
                         row["breakdown"] = trace_phases(events, positions)
                     found.append(row)
@@ -196,7 +203,7 @@ def live_verdicts(found: list[dict[str, Any]]) -> list[str]:
     out = []
     for r in found:
         ok = r["within_frame"] == r["count"]
-        out.append(f"{'ok' if ok else 'SLOW'}: {page_name(r['page'])} at {r['step']}: "
+        out.append(f"{'ok' if ok else 'SLOW'}: {page_name(r['page'])} at {r['step']}, drag {r.get('drag', 'domain')}: "
                    f"{r['within_frame']}/{r['count']} frames within {FRAME_MS:.1f} ms (script alone: "
                    f"{r['script_within_frame']}/{r['count']})")
     return out

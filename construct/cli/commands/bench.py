@@ -93,7 +93,7 @@ def _live(args) -> int:
         print(json.dumps(found, indent=1))
         return 0
     for r in found:
-        print(f"{page_name(r['page'])}  {r['step']:18s} frame: median {r['median_ms']:6.1f} ms  "
+        print(f"{page_name(r['page'])}  {r['step']:18s} {r['drag']:7s} frame: median {r['median_ms']:6.1f} ms  "
               f"p95 {r['p95_ms']:6.1f}  max {r['max_ms']:6.1f}  script: median {r['script_median_ms']:5.1f}  "
               f"p95 {r['script_p95_ms']:5.1f}")
         if "breakdown" in r:

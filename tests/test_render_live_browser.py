@@ -342,26 +342,22 @@ def test_while_dragging_the_camera_and_the_zoom_level_stay_while_near_and_let_go
     view, level = page.evaluate(state)
     step_view = """([dx, f]) => { const p = window.constructPlayer, k = +document.getElementById('figure').getAttribute('data-step');
         const v = p.data.views[p.data.steps[k - 1].v];
-        v[0] += dx * v[2]; v[2] *= f; v[3] *= f; }"""
+        v[0] += dx * v[2]; v[2] *= f; v[3] *= f; return v.slice(); }"""  # (and gives it)
     page.evaluate(step_view, [0.03, 1.0])  # moved by 3 % of its width: held
     page.evaluate("() => window.constructPlayer.jump(true)")
     assert page.evaluate(state) == [view, level]
     page.evaluate(step_view, [0.0, 0.8])  # and shrunk to 80 %: held (the level too)
     page.evaluate("() => window.constructPlayer.jump(true)")
     assert page.evaluate(state) == [view, level]
-    page.evaluate(step_view, [0.0, 0.8])  # to 64 %: the camera goes to it, with 4 % of room on each side
+    t = page.evaluate(step_view, [0.0, 0.8])  # to 64 %: the camera goes to it, with 4 % of room on each side
     page.evaluate("() => window.constructPlayer.jump(true)")
     moved, _ = page.evaluate(state)
-    t = page.evaluate("""() => { const p = window.constructPlayer, k = +document.getElementById('figure').getAttribute('data-step');
-        return p.data.views[p.data.steps[k - 1].v]; }""")
     assert moved == pytest.approx([t[0] - 0.04 * t[2], t[1] - 0.04 * t[3], 1.08 * t[2], 1.08 * t[3]], abs=0.01)
-    page.evaluate(step_view, [0.04, 1.0])  # held again at the new view
+    target = page.evaluate(step_view, [0.04, 1.0])  # held again at the new view
     page.evaluate("() => window.constructPlayer.jump(true)")
     assert page.evaluate(state)[0] == moved
     page.evaluate("() => window.constructPlayer.move()")  # let go: a glide to the step's view
     page.wait_for_timeout(600)
-    target = page.evaluate("""() => { const p = window.constructPlayer, k = +document.getElementById('figure').getAttribute('data-step');
-        return p.data.views[p.data.steps[k - 1].v]; }""")
     shown = page.evaluate(state)
     assert shown[0] == pytest.approx(target, abs=0.01)
     page.evaluate("() => window.constructPlayer.jump(false)")  # the view and level exactly: as the glide left them

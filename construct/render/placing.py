@@ -527,16 +527,11 @@ def place_outwards(m: Mark, vp: Viewport, style: Style, span: float,
     px, py = vp.px(*m.geom)
     for sign in (1.0, -1.0):
         lx, ly = px + sign * dx * off, py - sign * dy * off + style.label_size * 0.35
-        box = _label_box(lx, ly, m.label or "", style.label_size)
+        box = label_box(lx, ly, m.label or "", style.label_size, style.label_font, style.label_italic)
         if not _overlaps(box, placed):
             placed.append(box)
             return lx, ly
     return None
-
-
-def _label_box(x: float, y: float, text: str, size: float) -> tuple[float, float, float, float]:
-    w = 0.62 * size * len(text)
-    return (x - w / 2, y - 0.8 * size, x + w / 2, y + 0.2 * size)
 
 
 def _overlaps(box, placed) -> bool:

@@ -260,7 +260,8 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
           lines: "Sequence[tuple[float, float, float, float]] | LineIndex" = (), *, font: str = DEFAULT_FONT,
           italic: bool = False, taken: Iterable[tuple[float, float, float, float]] = (),
           keep: bool = True, prefer: "dict[str, tuple[float, float, float]] | None" = None,
-          halo: float = HALO_PX / 2, reach: float = 0.0, only: "Sequence[bool] | None" = None) -> dict[str, tuple]:
+          halo: float = HALO_PX / 2, reach: float = 0.0, only: "Sequence[bool] | None" = None,
+          soft: "LineIndex | None" = None) -> dict[str, tuple]:
     """Baseline positions (pixels) for letters: {id: (x, y, distance in letter heights, thin)}.
 
     A letter set farther than :data:`LEADER_FROM` letter heights from its point gets a
@@ -277,7 +278,10 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     the halo reaches round the ink at *size* (the player scales a letter with its halo).  *reach*:
     half the width of a result line (a halo reaching over the line's edge erases part of it).
     *lines* may be a :class:`LineIndex` made at *size* (placings at one size share it), and
-    *only* the numbers of its lines that count (true), as if *lines* were those alone.
+    *only* the numbers of its lines that count (true), as if *lines* were those alone.  *soft*: the
+    other lines (a plate's construction lines, ticks, axes), which a letter keeps clear of where a spot
+    nearer than :data:`LEADER_FROM` allows it; where none does it takes the first free spot all the
+    same, and the plate breaks those lines for it (:mod:`construct.render.gaps`).
     """
     grid = _Grid(2.0 * size)
     for b in taken:
@@ -305,6 +309,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
             box = label_box(px + ox, py + oy, text, size, font, italic, halo)
             if grid.free(box) and not strokes.meets(box, reach, only):
                 spot = (px + ox, py + oy, box, od)
+        clear = None  # with soft lines: the first free spot near the point that no line crosses
         for dist in (() if spot else _DISTANCES):
             for turn in _TURNS:
                 a = base + math.radians(turn)
@@ -316,10 +321,17 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                 if first is None:
                     first = (lx, ly, box, dist)
                 if grid.free(box) and not strokes.meets(box, reach, only):
-                    spot = (lx, ly, box, dist)
-                    break
-            if spot:
+                    if soft is None:
+                        spot = (lx, ly, box, dist)
+                        break
+                    if spot is None:
+                        spot = (lx, ly, box, dist)
+                    if dist < LEADER_FROM and not soft.meets(box):
+                        clear = (lx, ly, box, dist)
+                        break
+            if clear or (spot and (soft is None or dist >= LEADER_FROM)):
                 break
+        spot = clear or spot
         if spot is None:
             if keep and RANK.get(role, 2) <= 1 and first is not None:
                 # no room in the whole figure: kept for the magnified views, never stacked here

@@ -28,16 +28,18 @@ from __future__ import annotations
 
 import bisect
 import math
+import re
 from typing import Any, Sequence
 
 from . import captions as _captions
 from . import svgdoc
 from .camera import clear_edges, clear_tag_edges, level, ring_round, step_views
 from .captions import Captions
-from .lettering import LEADER_FROM
+from .gaps import CLEARANCE, Gap, GapFactory, arc_parts, curve_d, polyline_d
+from .lettering import LEADER_FROM, text_box
 from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
-from .placing import Placing, PlacedLabel, place_outwards
-from .plate import Stroke, break_elements, furniture_elements
+from .placing import Placing, PlacedLabel, place_outwards, text_gap
+from .plate import Stroke, break_elements, furniture_elements, furniture_pieces
 from .scene import Mark, MarkKind, Scene, extreme_points
 from .styles import PLAIN, Style
 from .svgdoc import fmt
@@ -63,9 +65,12 @@ class Drawing:
     LAYERS = ("areas", "construction", "results", "points", "labels")
 
     def __init__(self, scene: Scene, style: Style = PLAIN, *, caption_lines: int | None = None,
-                 region: tuple[float, float, float, float] | None = None, canvas: "Viewport | None" = None):
+                 region: tuple[float, float, float, float] | None = None, canvas: "Viewport | None" = None,
+                 plate: bool = False):
         self.scene = scene
         self.style = style
+        #: a book plate: its letters stand beside the lines, or the lines are broken for them (:attr:`gaps`)
+        self.plate = plate
         #: the caption lines, wrapped to the canvas
         self.captions = Captions(scene, width=style.width_px - 2 * style.margin_px, size=style.caption_size,
                                  groups=style.show_group)
@@ -83,7 +88,11 @@ class Drawing:
             self.vp = Viewport(win.xmin, win.ymax, win.scale, canvas.width, canvas.height, 0.0, win.left, win.top)
         self.doc = svgdoc.Writer()
         #: where the letters and the name tags stand (:class:`construct.render.placing.Placing`)
-        self.placing = pl = Placing(scene, style, self.vp, self.drawing_height)
+        pieces = furniture_pieces(scene.furniture, self.vp.px, self.vp.scale, size=style.label_size) if plate else []
+        self.placing = pl = Placing(scene, style, self.vp, self.drawing_height, plate=plate, furniture=pieces)
+        #: where the plate's lines are broken for its letters (:mod:`construct.render.gaps`): the ink of every
+        #: letter shown and of the furniture's lettering, with a margin of white
+        self.gaps: list[Gap] = self._gaps(pieces) if plate else []
         if style.name_tags:
             pl.place_tags(self.views if style.camera else (), self.full_view, self.input_steps)
             if style.camera and pl.tag_spots:
@@ -208,12 +217,55 @@ class Drawing:
                     yield "labels", self._letter(vp, m, rel, m.label, "lb", lid, extra=extra, gid=gid)
             return
         if m.kind.stroked:
-            yield mark_layer(m), _STROKES[m.kind](f, shapes[0][2], {"class_": cls, **ids})
+            d = self._gapped(m) if self.gaps and vp is self.vp else None
+            if d is not None:  # broken for the letters it passes
+                yield mark_layer(m), f.path(d=d, class_=cls, **ids)
+            else:
+                yield mark_layer(m), _STROKES[m.kind](f, shapes[0][2], {"class_": cls, **ids})
         else:  # an area, and its hatching if the style hatches and the lines meet it
             yield "areas", f.path(d=shapes[0][2]["d"], class_=f"area {cls}", **ids)
             for _, _, a in shapes[1:]:
                 hid = {"id": f"{mid}-hatch"} if mid else {}
-                yield "areas", f.path(d=a["d"], class_="hatch", **hid)
+                d = a["d"]
+                if self.gaps and vp is self.vp:
+                    d = "".join(polyline_d(run, self.gaps) for run in _runs(d))
+                yield "areas", f.path(d=d, class_="hatch", **hid)
+
+    def _gaps(self, pieces: Sequence[Any]) -> list[Gap]:
+        """The gaps a plate's lines leave for its letters: round the ink of every letter the plate shows and of
+        the furniture's lettering (:data:`construct.render.gaps.CLEARANCE` of white)."""
+        st = self.style
+        grow = CLEARANCE * st.label_size
+        out = []
+        for p in self.labels():
+            if p.shown:
+                box = text_box(p.point[0] + p.offset[0], p.point[1] + p.offset[1], p.text, st.label_size,
+                               st.label_font, st.label_italic)
+                out.append(Gap.around(box, grow))
+        out += [text_gap(p, st, CLEARANCE * st.label_size * p.size) for p in pieces if p.kind == "text"]
+        return out
+
+    def _gapped(self, m: Mark) -> str | None:
+        """The path of a plate's line *m* broken for the letters it passes (None: it passes none)."""
+        vp, g = self.vp, m.geom
+        if m.look == "hidden":
+            return None
+        if m.kind is MarkKind.SEGMENT:
+            ends = [vp.px(g[0], g[1]), vp.px(g[2], g[3])]
+            d = polyline_d(ends, self.gaps)
+            return d if d != polyline_d(ends, ()) else None
+        if m.kind.round:
+            start, sweep = (0.0, 2 * math.pi) if m.kind is MarkKind.CIRCLE else (g[3], g[4])
+            # on the canvas (y down) the arc's angles turn the other way
+            parts = arc_parts(vp.px(g[0], g[1]), g[2] * vp.scale, -start, -sweep, self.gaps)
+            if parts is None:
+                return None
+            return "".join(arc_path(vp, g[0], g[1], g[2], -a, -s) for a, s in parts)
+        if m.straight:
+            pts = [vp.px(*q) for q in g]
+            d = polyline_d(pts, self.gaps)
+            return d if d != polyline_d(pts, ()) else None
+        return curve_d([vp.px(*q) for q in g], self.gaps)
 
     def _letter(self, vp: Viewport, m: Mark, rel: tuple[float, float, float], text: str, cls: str,
                 ids: dict, *, halo: bool = True, extra: str = "", gid: dict | None = None) -> Any:
@@ -354,7 +406,8 @@ class Drawing:
         f = self.doc.factory
         sc = self.scene
         # the furniture first, the break marks over it (they open the rod and the axis for the gap)
-        elems = furniture_elements(sc.furniture, self.vp.px, self.vp.scale, f, size=self.style.label_size)
+        elems = furniture_elements(sc.furniture, self.vp.px, self.vp.scale, GapFactory(f, self.gaps) if self.gaps else f,
+                                   size=self.style.label_size)
         lines = [m.geom for m in sc.marks if m.kind is MarkKind.SEGMENT]
         lines += [(*it.a, *it.b) for it in sc.furniture if isinstance(it, Stroke)]
         elems += break_elements(sc.breaks, lines, self.vp.px, f, size=self.style.label_size)
@@ -569,6 +622,16 @@ def mark_geometry(m: Mark, vp: Viewport, style: Style) -> list[tuple[str, str, d
             out.append(("-hatch", "path", {"d": d}))
     return out
 
+def _runs(d: str) -> list[list[tuple[float, float]]]:
+    """The polylines of a path of straight pieces only (``M x y L x y ...``, as :func:`hatch_path` writes)."""
+    out: list[list[tuple[float, float]]] = []
+    for op, x, y in re.findall(r"([ML])\s*([-\d.e]+)[\s,]+([-\d.e]+)", d):
+        if op == "M" or not out:
+            out.append([])
+        out[-1].append((float(x), float(y)))
+    return out
+
+
 def _is_view(elem: Any) -> bool:
     """Is *elem* a camera box of the ``views`` layer (frozen or not)?"""
     xml = getattr(elem, "xml", None)
@@ -604,7 +667,8 @@ def render_svg(scene: Scene, *, upto: int | None = None, style: Style = PLAIN,
             # a plate: its own size, the "Fig." caption centred beneath
             n = len(Captions(scene, width=style.width_px - 2 * style.margin_px, size=style.caption_size)
                     .title_lines(caption))
-            return Drawing(scene, style, caption_lines=n).final(caption, centred=True, plate=style.plate)
+            return Drawing(scene, style, caption_lines=n, plate=style.plate).final(caption, centred=True,
+                                                                                    plate=style.plate)
         return Drawing(scene, style).final(caption)
     return Drawing(scene, style).frame(upto)
 

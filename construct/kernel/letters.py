@@ -47,7 +47,7 @@ import functools
 import re
 from typing import Mapping, Sequence
 
-__all__ = ["Reader", "book_symbols", "equation", "subscripts", "tag", "displayed", "CAPTION_LIMIT", "TITLE_LIMIT",
+__all__ = ["Reader", "book_symbols", "equation", "subscripts", "lowered", "tag", "displayed", "CAPTION_LIMIT", "TITLE_LIMIT",
            "letter_steps", "object_kind"]
 
 #: The most characters of a step's caption (or a group's title) a figure shows; a longer one is
@@ -129,6 +129,17 @@ def subscripts(text: str) -> str:
     return re.sub(r"(?<=[^\W_])_([^\W_]+)", lambda m: m.group(1).translate(_SUB), text)
 
 
+def lowered(letter: str) -> str:
+    """A figure's letter with its number set as the books set it, below the line: q5 -> q₅, ω6 -> ω₆, K17 -> K₁₇.
+
+    A name stays a name (the protocol's q5); this is its lettering.
+
+    >>> lowered("q5"), lowered("ω6"), lowered("K17"), lowered("5′"), lowered("A")
+    ('q₅', 'ω₆', 'K₁₇', '5′', 'A')
+    """
+    return re.sub(r"(?<=[^\W\d_])(\d+)$", lambda m: m.group(1).translate(_SUB), letter)
+
+
 def equation(text: str) -> str:
     """Equation numbers as the book prints them: ``Gl. 4_1`` -> ``Gl. (4₁)``, ``Gl. (4_1)`` likewise.
 
@@ -157,6 +168,9 @@ _SYMBOLS = tuple((need, re.compile(p), r) for need, p, r in (
     (("-",), r"(?<=[\s(=])-(?=[\w(])", "−"),   # a minus, not a hyphen
     (("^",), r"\^(\d+)", lambda m: m.group(1).translate(_SUPER)),
     ((" degrees",), r"(\d) degrees\b", r"\1°"),
+    # the books' indexed symbols written flat in a caption (P0, s1, r1, b2, ω6): their index below the line
+    (("P0", "p0", "s0", "s1", "s2", "s3", "r1", "b1", "b2", "p1", "p2", "v1", "ω"),
+     r"(?<![\w.])(P0|p0|s[0-3]|r1|b[12]|p[12]|v1|ω\d{1,2})(?![\w′'])", lambda m: lowered(m.group(1))),
 ))
 
 
@@ -164,9 +178,11 @@ def book_symbols(text: str) -> str:
     """ASCII stand-ins for the book's symbols replaced: ω, λ, √, exponents, subscripts.
 
     >>> book_symbols("r cos w + lam r cos 2w (w = 0), r sqrt 2, L^2, w5 = AOW5, with w")
-    'r cos ω + λ r cos 2ω (ω = 0), r√2, L², ω5 = AOW5, with ω'
+    'r cos ω + λ r cos 2ω (ω = 0), r√2, L², ω₅ = AOW5, with ω'
     >>> book_symbols("(4/pi) r alpha, omega^2 R, crank at 90 degrees")
     '(4/π) r α, ω² R, crank at 90°'
+    >>> book_symbols("Gegendruck P0, Füllung s1, r1/12, b2/2 = 3 b1 (G2, K17 and M2 are tags)")
+    'Gegendruck P₀, Füllung s₁, r₁/12, b₂/2 = 3 b₁ (G2, K17 and M2 are tags)'
     """
     for need, pattern, rep in _SYMBOLS:
         if any(n in text for n in need):

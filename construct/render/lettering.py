@@ -255,6 +255,15 @@ class LineIndex:
         return False
 
 
+def _nearer_dot(box, own: tuple[float, float], dots) -> bool:
+    """Is some point of *dots* nearer the letter's *box* than its own point *own*?"""
+    def far(p):
+        return math.hypot(max(box[0] - p[0], 0.0, p[0] - box[2]), max(box[1] - p[1], 0.0, p[1] - box[3]))
+
+    mine = far(own)
+    return any(far(p) < mine - 0.5 for p in dots if abs(p[0] - own[0]) > 1e-6 or abs(p[1] - own[1]) > 1e-6)
+
+
 def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float, float], str]],
           size: float, dots: Iterable[tuple[float, float]] = (),
           lines: "Sequence[tuple[float, float, float, float]] | LineIndex" = (), *, font: str = DEFAULT_FONT,
@@ -283,6 +292,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     nearer than :data:`LEADER_FROM` allows it; where none does it takes the first free spot all the
     same, and the plate breaks those lines for it (:mod:`construct.render.gaps`).
     """
+    dots = list(dots)
     grid = _Grid(2.0 * size)
     for b in taken:
         grid.add(b)
@@ -326,12 +336,16 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                         break
                     if spot is None:
                         spot = (lx, ly, box, dist)
-                    if dist < LEADER_FROM and not soft.meets(box):
+                    # beside the line, but on the side the letter belongs (outwards, not across its own figure)
+                    if dist < LEADER_FROM and abs(turn) <= 90 and not soft.meets(box):
                         clear = (lx, ly, box, dist)
                         break
             if clear or (spot and (soft is None or dist >= LEADER_FROM)):
                 break
         spot = clear or spot
+        if spot is not None and soft is not None and spot[3] < LEADER_FROM and _nearer_dot(spot[2], (px, py), dots):
+            # another point stands nearer the letter than its own (17′ beside B): tied to its own by a leader
+            spot = (spot[0], spot[1], spot[2], LEADER_FROM)
         if spot is None:
             if keep and RANK.get(role, 2) <= 1 and first is not None:
                 # no room in the whole figure: kept for the magnified views, never stacked here

@@ -33,6 +33,7 @@ import numpy as np
 from .camera import PLAYER_FIGURE_PX, THIN_FROM, ZOOM_LEVELS, View, level, zoom_of
 from .gaps import Gap
 from .lettering import HALO_PX, LEADER_FROM, LineIndex, label_box, place, text_box
+from .plate import plain
 from .scene import Mark, MarkKind, Scene, label_offset_direction
 from .styles import Style
 from .svgdoc import fmt
@@ -543,7 +544,7 @@ def text_gap(p: Any, style: Style, grow: float) -> Gap:
     middle of its height) covers, grown by *grow* pixels round its ink, turned with it: a :class:`Gap`."""
     size = style.label_size * p.size
     (x, y), = p.points
-    box = text_box(x, y + 0.35 * size, p.text, size, style.label_font, style.label_italic, p.anchor)
+    box = text_box(x, y + 0.35 * size, plain(p.text), size, style.label_font, style.label_italic, p.anchor)
     return Gap.around(box, grow, p.angle, about=(x, y))
 
 

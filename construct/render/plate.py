@@ -17,9 +17,9 @@ that :meth:`Plate.from_data` reads::
 
     Construction(..., extra={"plate": my_plate})
 
-Kinds: dimension (a, b, text, offset), angle (centre, start, end, radius,
+Kinds: dimension (a, b, text, offset, text_at), angle (centre, start, end, radius,
 text, text_at), stroke (a, b, look, broken), lettering (at, text, anchor,
-angle, size), scale (origin, end, text), sign (at, text), dot (at).
+angle, size, to), scale (origin, end, text), sign (at, text), dot (at).
 
 A plate may also lay its sheet out in *panels*, as a book sets a cover-side
 and a crank-side diagram side by side: ``{"panels": [{"names": [regex, ...],
@@ -48,13 +48,14 @@ True
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field, fields, replace
 from typing import Any, Callable, Mapping, NamedTuple, Sequence
 
 __all__ = ["Plate", "Panel", "Dimension", "AngleArc", "Stroke", "Lettering", "ScaleBar", "Sign", "Dot", "dms", "extent",
            "anchors", "shifted",
            "furniture_elements", "break_elements", "LOOKS_CSS", "plate_of", "Piece", "PIECES", "furniture_pieces",
-           "crossing_lines", "DASHES"]
+           "crossing_lines", "DASHES", "subscript_runs", "plain"]
 
 XY = tuple[float, float]
 
@@ -76,12 +77,17 @@ LOOKS_CSS = (
 
 @dataclass(frozen=True)
 class Dimension:
-    """A dimension line from *a* to *b* with arrowheads, set off by *offset* (drawing units, + = left of a->b)."""
+    """A dimension line from *a* to *b* with arrowheads, set off by *offset* (drawing units, + = left of a->b).
+
+    The text stands on the line, which is broken for it; or, for a short dimension (a thickness), upright
+    at *text_at* beside the whole line.
+    """
 
     a: XY
     b: XY
     text: str
     offset: float = 0.0
+    text_at: XY | None = None
 
 
 @dataclass(frozen=True)
@@ -114,13 +120,15 @@ class Stroke:
 
 @dataclass(frozen=True)
 class Lettering:
-    """Text at *at*; *anchor* start, middle or end; *angle* in degrees (counter-clockwise), *size* relative."""
+    """Text at *at*; *anchor* start, middle or end; *angle* in degrees (counter-clockwise), *size* relative;
+    *to*: the point it names, tied to it by a leader (a letter set off from a crowded line)."""
 
     at: XY
     text: str
     anchor: str = "middle"
     angle: float = 0.0
     size: float = 1.0
+    to: XY | None = None
 
 
 @dataclass(frozen=True)
@@ -206,14 +214,17 @@ def _points(item: Any) -> list[XY]:
         (ax, ay), (bx, by) = item.a, item.b
         nx, ny = _normal(item.a, item.b)
         o = item.offset
-        return [item.a, item.b, (ax + o * nx, ay + o * ny), (bx + o * nx, by + o * ny)]
+        return [item.a, item.b, (ax + o * nx, ay + o * ny), (bx + o * nx, by + o * ny)] + (
+            [item.text_at] if item.text_at else [])
     if isinstance(item, AngleArc):
         cx, cy = item.centre
         pts = [(cx + item.radius * math.cos(t), cy + item.radius * math.sin(t)) for t in _arc_angles(item, 9)]
         return pts + ([item.text_at] if item.text_at else [])
     if isinstance(item, (Stroke, ScaleBar)):
         return [item.origin, item.end] if isinstance(item, ScaleBar) else [item.a, item.b]
-    if isinstance(item, (Lettering, Sign, Dot)):
+    if isinstance(item, Lettering):
+        return [item.at] + ([item.to] if item.to else [])
+    if isinstance(item, (Sign, Dot)):
         return [item.at]
     return []
 
@@ -383,7 +394,46 @@ def _text(f: Any, at: XY, text: str, size: float, anchor: str = "middle", angle:
     own = ([f"font-size:{_f(size * rel)}px"] if rel != 1.0 else []) + ([f"text-anchor:{anchor}"] if anchor != "middle" else [])
     if own:
         attrs["style"] = ";".join(own)
-    return [f.text(text, class_="lb halo", **attrs), f.text(text, class_="lb fur-text", **attrs)]
+    runs = subscript_runs(text)
+    if len(runs) == 1:
+        return [f.text(text, class_="lb halo", **attrs), f.text(text, class_="lb fur-text", **attrs)]
+    out = []
+    for cls in ("lb halo", "lb fur-text"):
+        # an index the font has no subscript glyph for (P_b, p_ü): a smaller run set below the line
+        t = f.text("", class_=cls, **attrs)
+        down = 0.0
+        for part, low in runs:
+            shift = 0.25 * size * rel if low else 0.0
+            kw = {"dy": [_f(shift - down)]} if shift != down else {}
+            if low:
+                kw["style"] = f"font-size:{_f(0.7 * size * rel)}px"
+            t.add(f.tspan(part, **kw))
+            down = shift
+        out.append(t)
+    return out
+
+
+def subscript_runs(text: str) -> list[tuple[str, bool]]:
+    """*text* as runs (text, set below the line?): an index is written ``_x`` or ``_{xyz}`` (P_b, F·p_ü).
+
+    >>> subscript_runs("P = F·p_ü"), subscript_runs("B_{max} t"), subscript_runs("s₁")
+    ([('P = F·p', False), ('ü', True)], [('B', False), ('max', True), (' t', False)], [('s₁', False)])
+    """
+    out: list[tuple[str, bool]] = []
+    pos = 0
+    for m in re.finditer(r"_(\{[^}]*\}|[^\W_])", text):
+        if m.start() > pos:
+            out.append((text[pos:m.start()], False))
+        out.append((m.group(1).strip("{}"), True))
+        pos = m.end()
+    if pos < len(text) or not out:
+        out.append((text[pos:], False))
+    return out
+
+
+def plain(text: str) -> str:
+    """*text* without its index marks, as a reader sees it (P_b -> Pb)."""
+    return "".join(part for part, _ in subscript_runs(text))
 
 
 def _item(it: Any, px: Callable[[float, float], XY], scale: float, size: float, f: Any) -> list[Any]:
@@ -402,6 +452,9 @@ def _item(it: Any, px: Callable[[float, float], XY], scale: float, size: float, 
                 out.append(_line(f, (p[0] + 3 * dx / n, p[1] + 3 * dy / n), (q[0] + 4 * dx / n, q[1] + 4 * dy / n),
                                  "fur thin"))
         mid = ((a2[0] + b2[0]) / 2, (a2[1] + b2[1]) / 2)
+        if it.text_at is not None:  # a short dimension: the whole line, the text upright beside it
+            return out + [_line(f, a2, b2, "fur"), _arrow(f, a2, b2, size), _arrow(f, b2, a2, size)] + _text(
+                f, px(*it.text_at), it.text, size)
         # the dimension line stops either side of its text, as a draftsman leaves room for the figure
         length = math.hypot(b2[0] - a2[0], b2[1] - a2[1]) or 1.0
         gap = min(0.5 * length - 1.0, 0.33 * size * len(it.text) + 0.4 * size)
@@ -456,7 +509,15 @@ def _item(it: Any, px: Callable[[float, float], XY], scale: float, size: float, 
         mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
         return out + _text(f, (mid[0] + 0.6 * size, mid[1]), it.text, size, "start", 0.0, 1.0)  # a scale is read: at the letters' size
     if isinstance(it, Lettering):
-        return _text(f, px(*it.at), it.text, size, it.anchor, it.angle, it.size)
+        out = []
+        if it.to is not None:
+            # the leader runs from beside the point to the letter's middle: the plate breaks it at the letter's
+            # white (construct.render.gaps), so it ends there whatever the letter's width
+            (ax, ay), (bx, by) = px(*it.to), px(*it.at)
+            n = math.hypot(bx - ax, by - ay) or 1.0
+            start = 0.3 * size
+            out.append(_line(f, (ax + start * (bx - ax) / n, ay + start * (by - ay) / n), (bx, by), "fur leader"))
+        return out + _text(f, px(*it.at), it.text, size, it.anchor, it.angle, it.size)
     if isinstance(it, Sign):
         return _text(f, px(*it.at), it.text, size, "middle", 0.0, 2.0)
     if isinstance(it, Dot):

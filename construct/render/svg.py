@@ -27,6 +27,7 @@ True
 from __future__ import annotations
 
 import bisect
+import dataclasses
 import math
 import re
 from typing import Any, Sequence
@@ -36,10 +37,10 @@ from . import svgdoc
 from .camera import clear_edges, clear_tag_edges, level, ring_round, step_views
 from .captions import Captions
 from .gaps import CLEARANCE, Gap, GapFactory, arc_parts, curve_d, polyline_d
-from .lettering import LEADER_FROM, text_box
+from .lettering import LEADER_FROM, text_box, text_width
 from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
 from .placing import Placing, PlacedLabel, place_outwards, text_gap
-from .plate import Stroke, break_elements, furniture_elements, furniture_pieces
+from .plate import Lettering, Stroke, break_elements, furniture_elements, furniture_pieces, plain, subscript_runs
 from .scene import Mark, MarkKind, Scene, extreme_points
 from .styles import PLAIN, Style
 from .svgdoc import fmt
@@ -88,7 +89,9 @@ class Drawing:
             self.vp = Viewport(win.xmin, win.ymax, win.scale, canvas.width, canvas.height, 0.0, win.left, win.top)
         self.doc = svgdoc.Writer()
         #: where the letters and the name tags stand (:class:`construct.render.placing.Placing`)
-        pieces = furniture_pieces(scene.furniture, self.vp.px, self.vp.scale, size=style.label_size) if plate else []
+        #: the plate's furniture as drawn (an end-anchored lettering with an index set from its start)
+        self.furniture_items = _start_anchored(scene.furniture, self.vp.scale, style)
+        pieces = furniture_pieces(self.furniture_items, self.vp.px, self.vp.scale, size=style.label_size) if plate else []
         self.placing = pl = Placing(scene, style, self.vp, self.drawing_height, plate=plate, furniture=pieces)
         #: where the plate's lines are broken for its letters (:mod:`construct.render.gaps`): the ink of every
         #: letter shown and of the furniture's lettering, with a margin of white
@@ -406,8 +409,8 @@ class Drawing:
         f = self.doc.factory
         sc = self.scene
         # the furniture first, the break marks over it (they open the rod and the axis for the gap)
-        elems = furniture_elements(sc.furniture, self.vp.px, self.vp.scale, GapFactory(f, self.gaps) if self.gaps else f,
-                                   size=self.style.label_size)
+        elems = furniture_elements(self.furniture_items, self.vp.px, self.vp.scale,
+                                   GapFactory(f, self.gaps) if self.gaps else f, size=self.style.label_size)
         lines = [m.geom for m in sc.marks if m.kind is MarkKind.SEGMENT]
         lines += [(*it.a, *it.b) for it in sc.furniture if isinstance(it, Stroke)]
         elems += break_elements(sc.breaks, lines, self.vp.px, f, size=self.style.label_size)
@@ -621,6 +624,19 @@ def mark_geometry(m: Mark, vp: Viewport, style: Style) -> list[tuple[str, str, d
         if d:
             out.append(("-hatch", "path", {"d": d}))
     return out
+
+def _start_anchored(items: Sequence[Any], scale: float, style: Style) -> tuple:
+    """*items* with every lettering that has an index (P = F·p_ü) and is set at its end moved to be set at its
+    start: a renderer may lay out each run of an end-anchored text by itself (cairosvg sets the index apart)."""
+    out = []
+    for it in items:
+        if isinstance(it, Lettering) and it.anchor == "end" and len(subscript_runs(it.text)) > 1:
+            w = text_width(plain(it.text), style.label_size * it.size, style.label_font, style.label_italic) / scale
+            a = math.radians(it.angle)
+            it = dataclasses.replace(it, at=(it.at[0] - w * math.cos(a), it.at[1] - w * math.sin(a)), anchor="start")
+        out.append(it)
+    return tuple(out)
+
 
 def _runs(d: str) -> list[list[tuple[float, float]]]:
     """The polylines of a path of straight pieces only (``M x y L x y ...``, as :func:`hatch_path` writes)."""

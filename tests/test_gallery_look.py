@@ -101,9 +101,10 @@ def test_no_plate_runs_a_line_through_a_letter(plates, key):
 
 @pytest.mark.parametrize("key", [k for k in IDS if k.startswith("inertia-curve")])
 def test_inertia_finals_carry_the_seven_characteristic_points(figures, plates, key):
-    """Seed 000 c: q1 ... q7, both in the teaching final and on the plate."""
+    """Seed 000 c: $q_1$ ... $q_7$ (set below the line, as the book sets them), both in the teaching final and on
+    the plate."""
     c, fig = figures[key]
-    want = {f"q{i}" for i in range(1, 8)}
+    want = {"q" + "₁₂₃₄₅₆₇"[i] for i in range(7)}
     assert want <= set(_texts(Drawing(scene_for(c, fig), STYLES["teaching"]).final()))
     assert want <= set(_texts(plates[key]))
 
@@ -200,7 +201,7 @@ def test_crank_angle_plate_carries_each_angle(ratio):
 def test_inertia_plate_marks_m_the_scale_and_the_zones(figures):
     c, fig = figures["inertia-curve-rod_ratio5"]
     texts = set(_texts(_plate_svg(c, fig)))
-    assert {"m", "F/f", "1 kg/cm²", "+", "−", "L = ∞"} <= texts
+    assert {"m", "F/f", "1 at", "+", "−", "L = ∞"} <= texts  # "1 Kilogr. per 1 cm² = 1 Atm."
 
 
 def test_crank_plate_dimensions_stroke_radius_and_rod(figures):

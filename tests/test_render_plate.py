@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import re
+import xml.etree.ElementTree as ET
 
 
 from construct.constructions import analytic
@@ -18,6 +19,9 @@ from construct.render.styles import STYLES
 from construct.render.svg import render_svg
 
 
+SVG = "{http://www.w3.org/2000/svg}"
+
+
 def _plate_svg(name: str, **params) -> str:
     c = get(name)
     fig = c.figure(**params)
@@ -25,7 +29,10 @@ def _plate_svg(name: str, **params) -> str:
 
 
 def _texts(svg: str) -> list[str]:
-    return re.findall(r'<text[^>]*class="lb[^"]*"[^>]*>([^<]*)</text>', svg)
+    """The letters of a plate as a reader sees them (an index set in a smaller run below the line read on)."""
+    root = ET.fromstring(svg.encode("utf-8"))
+    return ["".join(t.itertext()) for t in root.iter(f"{SVG}text")
+            if "lb" in (t.get("class") or "").split() and "halo" not in (t.get("class") or "")]
 
 
 def _furniture(name: str, **params):
@@ -64,6 +71,11 @@ def test_piston_force_plate_letters_scale_and_line_hierarchy():
     svg = _plate_svg("piston-force")
     texts = set(_texts(svg))
     assert {"O", "C", "J", "kg", "P = F·pü", "Pb"} <= texts
+    # seed 001's p_ü and P_b: the index below the line, smaller (no font has a subscript b or ü)
+    root = ET.fromstring(svg.encode("utf-8"))
+    low = {s.text: s for t in root.iter(f"{SVG}text") if "halo" not in t.get("class", "") for s in t.iter(f"{SVG}tspan")
+           if float(s.get("dy", "0")) > 0}
+    assert set(low) == {"ü", "b"} and all("font-size" in s.get("style", "") for s in low.values())
     assert "10000" in texts and "0" in texts  # P = F p at admission: 1529 cm² x 7 at = 10 700 kg
     fig, plate = _furniture("piston-force")
     looks = plate["looks"]

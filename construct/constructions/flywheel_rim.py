@@ -41,7 +41,7 @@ from .indicator import hyperbola_point, square
 __all__ = ["FLYWHEEL_RIM", "build_flywheel_rim", "flywheel_rim_checks", "disc_half_width"]
 
 PLATE = (r"axis|mid", r"O", r"R1", r"rim\d", r"disc[UD]", r"hub\d", r"shaft", r"rho[UD]?", r"[UD]\d+", r"K[UD]",
-         r"section")
+         r"(hub|rim|disc)section")
 
 
 def _givens(r: Any, b1: Any, rim: Any) -> dict[str, float]:
@@ -131,6 +131,17 @@ def build_flywheel_rim(*, r: float, b1: float, rim: float) -> Figure:
     with b.group("the planimeter: the disc's section", "Planimeter: Querschnitt der Scheibe"):
         b.area_between("section", "discU", "discD", "U2", "KU", hatch_deg=45.0, role="result",
                        de="Scheibenquerschnitt zwischen r1/6 und r1", en="section of the disc between r1/6 and r1")
+    with b.group("the sections hatched: hub, disc up to the rim, rim",
+                 "die Schnitte schraffiert: Nabe, Scheibe bis an den Kranz, Kranz"):
+        # the disc is counted up to r1 (Baumann: "bewusstermassen ... zu viel gerechnet"), drawn up to the rim
+        b.intersect("rimIdisc", "rimvI", "discU", rule=("only",), de="Scheibenseite am inneren Kranzrand",
+                    en="face of the disc at the rim's inner edge")
+        b.area_between("discsection", "discU", "discD", "U2", "rimIdisc", hatch_deg=135.0, role="result",
+                       de="Scheibe im Schnitt, bis an den Kranz", en="the disc in section, up to the rim")
+        b.area_between("hubsection", "hub0", "hub2", "HSU", "HU2", hatch_deg=45.0, role="result",
+                       de="Nabe im Schnitt", en="the hub in section")
+        b.area_between("rimsection", "rim0", "rim2", "rimIU", "rimOU", hatch_deg=45.0, role="result",
+                       de="Kranz im Schnitt", en="the rim in section")
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))
 
@@ -171,6 +182,34 @@ def flywheel_rim_checks(fig: Figure) -> list[Check]:
     return checks
 
 
+def flywheel_rim_plate(fig: Figure) -> dict:
+    """Fig. 28 as a half section: the centre lines dash-dotted, hub, disc and rim hatched and named, the disc's
+    thickness dimensioned where Baumann names it -- b₂ = 6 b₁ at the hub, b at a radius between, b₁ at r₁
+    (outside the rim, which covers it) -- every length read off the constructed points."""
+    R = fig.replay
+    r1 = R["R1"][0] - R["O"][0]
+    a = R["rimOU"][1] - R["R1"][1]  # half the rim's side
+    hub_top = R["HSU"][1]
+    gap = 0.025 * r1
+
+    def thickness(top: str, bottom: str, text: str, offset: float, side: float) -> dict:
+        # a vertical dimension between the two faces, its letter upright beside it
+        (x, y0), (_, y1) = R[top], R[bottom]
+        return {"kind": "dimension", "a": (x, y0), "b": (x, y1), "text": text, "offset": offset,
+                "text_at": (x + offset + side, (y0 + y1) / 2)}
+
+    x_hub = R["HU2"][0]
+    furniture = [
+        thickness("U2", "D2", "b₂", gap, 0.03 * r1),
+        thickness("U5", "D5", "b", 0.0, 0.022 * r1),
+        thickness("KU", "KD", "b₁", (R["rimOU"][0] - R["R1"][0]) + gap, 0.025 * r1),
+        {"kind": "lettering", "at": ((R["HSU"][0] + x_hub) / 2, hub_top + 0.025 * r1), "text": "Nabe"},
+        {"kind": "lettering", "at": (R["R1"][0], R["R1"][1] + a + 0.025 * r1), "text": "Kranz"},
+        {"kind": "lettering", "at": (R["rho"][0], R["rhoU"][1] + 0.03 * r1), "text": "Armscheibe"},
+    ]
+    return {"looks": {"axis": "centre", "mid": "centre"}, "furniture": furniture}
+
+
 FLYWHEEL_RIM = register(Construction(
     name="flywheel-rim",
     title=Caption("Schwungrad: Kranz, Armscheibe gleicher Festigkeit und Nabe (Fig. 28)",
@@ -180,6 +219,7 @@ FLYWHEEL_RIM = register(Construction(
     checks=flywheel_rim_checks,
     defaults={"r": 1.0, "b1": 0.02, "rim": 0.14},
     book_params=({},),
-    extra={"help": {"b1": "flywheel-rim: disc thickness b1 at the rim, over r1 (drawn exaggerated: 0.02)",
+    extra={"plate": flywheel_rim_plate,
+           "help": {"b1": "flywheel-rim: disc thickness b1 at the rim, over r1 (drawn exaggerated: 0.02)",
                     "rim": "flywheel-rim: side of the rim's square section, over r1 (0.14)"}},
 ), validate=_validate)

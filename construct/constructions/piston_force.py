@@ -70,6 +70,7 @@ from .indicator import indicator_frame, indicator_givens, pressures_at, square
 from .indicator import steam_pressure as model_steam
 from .indicator_card import card_givens, card_pair, draw_card, load_indicator
 from .ordinates import OrdinateFrame, ordinate_line, ordinate_value, point_kind
+from .scales import scale_furniture
 
 __all__ = ["PISTON_FORCE", "TAFEL_I", "HP_DIAGRAM", "GRAVITY", "piston_area_mean", "build_piston_force",
            "piston_force_checks", "mass_force", "piston_force", "abscissa", "mass_force_rows", "area_balance",
@@ -233,18 +234,19 @@ def piston_force_plate(fig: Figure) -> dict:
     # line strikes its figures
     x = F0[0] - (0.25 if two_sided else 0.07) * s
     tick = 0.012 * s
-    furniture: list[dict] = [{"kind": "stroke", "a": (x, y0 + lo * step * unit), "b": (x, y0 + hi * step * unit),
-                              "look": "medium"}]
-    size = 1.0 if two_sided else 0.8
-    for i in range(lo, hi + 1):
-        y = y0 + i * step * unit
-        furniture.append({"kind": "stroke", "a": (x - tick, y), "b": (x, y), "look": "medium"})
-        furniture.append({"kind": "lettering", "at": (x - 2.2 * tick, y), "text": f"{int(i * step)}".replace("-", "−"),
-                          "anchor": "end", "size": size})
-    # "kg" under the scale on the two-sided plate: the admission line runs past its top
-    kg_at = (x, y0 + (lo - 0.8) * step * unit) if two_sided else (x, y0 + (hi + 0.6) * step * unit)
-    furniture.append({"kind": "lettering", "at": kg_at, "text": "kg", "size": 1.0 if two_sided else 0.85})
+    # "kg" over the scale, as Abb. 1055 has it
+    kg_at = (x, y0 + (hi + 0.6) * step * unit)
+    furniture: list[dict] = scale_furniture(x=x, zero=y0, unit=unit, values=[i * step for i in range(lo, hi + 1)],
+                                            tick=tick, text="kg", size=1.0 if two_sided else 0.8,
+                                            text_size=1.0 if two_sided else 0.85, gap=2.2, text_at=kg_at)
     d = 0.035 * s
+    # the dead centres, where the stroke begins and ends: a heavy tick across the piston-path line
+    ends = [(F0[0], y0), (Fn[0], y0)]
+    if two_sided:
+        (rx, ry) = panels[3]["shift"]
+        ends += [(R["rF0"][0] + rx, R["rF0"][1] + ry), (R[f"rF{n}"][0] + rx, R[f"rF{n}"][1] + ry)]
+    furniture += [{"kind": "stroke", "a": (ex, ey - 0.6 * d), "b": (ex, ey + 0.6 * d), "look": "heavy"}
+                  for ex, ey in ends]
     if not two_sided:  # the book's O and C end its one diagram; the two-sided plate is not the book's
         furniture += [
             {"kind": "lettering", "at": (Fn[0] + 0.45 * d, Fn[1] + 0.5 * d), "text": "O"},
@@ -253,18 +255,26 @@ def piston_force_plate(fig: Figure) -> dict:
     # the names of the lines, beside a quarter of the way along each
     kq, mq = R[f"K{max(1, (3 * n) // 8)}"], R[f"M{max(1, n // 6)}"]
     furniture += [
-        {"kind": "lettering", "at": (kq[0] + 1.8 * d, kq[1] + fdy + 1.2 * d), "text": "P = F·pü", "anchor": "start"},
-        {"kind": "lettering", "at": (mq[0] + 0.5 * d, mq[1] + fdy + 1.3 * d), "text": "Pb", "anchor": "start"},
+        {"kind": "lettering", "at": (kq[0] + 1.8 * d, kq[1] + fdy + 1.2 * d), "text": "P = F·p_ü", "anchor": "start"},
+        {"kind": "lettering", "at": (mq[0] + 0.5 * d, mq[1] + fdy + 1.3 * d), "text": "P_b", "anchor": "start"},
     ]
     looks = {"forcea": "heavy", "forceb": "heavy", "forcec": "heavy", "mass": "heavy", "fbase": "thin"}
     if two_sided:
-        (rx, ry) = panels[3]["shift"]
         # the return stroke runs from the crank end: its lines named a quarter of the way from there
         rk, rm = R[f"rK{n - max(1, (3 * n) // 8)}"], R[f"rM{n - max(1, n // 6)}"]
         furniture += [
-            {"kind": "lettering", "at": (rk[0] + rx - 1.8 * d, rk[1] + ry + 1.2 * d), "text": "P = F·pü",
+            {"kind": "lettering", "at": (rk[0] + rx - 1.8 * d, rk[1] + ry + 1.2 * d), "text": "P = F·p_ü",
              "anchor": "end"},
-            {"kind": "lettering", "at": (rm[0] + rx - 0.5 * d, rm[1] + ry + 1.3 * d), "text": "Pb", "anchor": "end"},
+            {"kind": "lettering", "at": (rm[0] + rx - 0.5 * d, rm[1] + ry + 1.3 * d), "text": "P_b", "anchor": "end"},
+        ]
+        # each side's steam diagram named over it; the crank side's is drawn downwards from its stroke line (as
+        # Abb. 1054 draws it under the cover side's, the over-pressure between them)
+        (cx, cy) = panels[2]["shift"]
+        top = R["ind.A0"][1] if "ind.A0" in R else R["D0"][1] + 0.6 * s  # the admission line (a card has none)
+        furniture += [
+            {"kind": "lettering", "at": ((F0[0] + Fn[0]) / 2, top + 1.6 * d), "text": "Deckelseite"},
+            {"kind": "lettering", "at": ((F0[0] + Fn[0]) / 2 + cx, R["D0"][1] + cy + 2.6 * d),
+             "text": "Kurbelseite, nach unten aufgetragen"},
         ]
         # each column named under its force diagram
         bottom = min(y0 + (lo - 1.6) * step * unit, min(R[f"rK{k}"][1] + ry for k in range(n + 1)) - 3 * d)

@@ -18,7 +18,7 @@ from construct.gallery import DISPLAY_PX, gallery_plan
 from construct.kernel.geometry import Point
 from construct.books.anhang_ii.printed import TABLE_2
 from construct.regress.lint import lint_svg
-from construct.render.output import plate_caption, scene_for
+from construct.render.output import plate_caption, printed_caption, scene_for
 from construct.render.scene import plate_names
 from construct.render.styles import STYLES
 from construct.render.svg import Drawing, render_svg
@@ -66,7 +66,7 @@ def _result_letters(fig, names=None) -> set[str]:
 
 
 def _plate_svg(c, fig) -> str:
-    return render_svg(scene_for(c, fig, plate=True), style=STYLES["historical"], caption=plate_caption(c, fig, 1))
+    return render_svg(scene_for(c, fig, plate=True), style=STYLES["historical"], caption=printed_caption(c, fig, 1))
 
 
 def test_the_gallery_has_the_books_figures():
@@ -90,6 +90,22 @@ def test_every_result_letter_is_on_the_plate(figures, plates, key):
     texts = set(_texts(plates[key]))
     want = _result_letters(fig, plate_names(fig.protocol, fig.replay))
     assert want and want <= texts, sorted(want - texts)
+
+
+@pytest.mark.parametrize("key", IDS)
+def test_a_plate_prints_one_caption_as_a_book_does(figures, plates, key):
+    # one language (the book's), upright, the number once, at most three lines, none broken in a number or
+    # formula (construct lint's caption checks); the givens it leaves out are in the whole caption it carries
+    root = ET.fromstring(plates[key].encode("utf-8"))
+    lines = ["".join(t.itertext()) for t in root.iter(f"{SVG}text") if "cap" in (t.get("class") or "").split()]
+    text = " ".join(lines)
+    assert 1 <= len(lines) <= 3
+    assert text.startswith("Fig. 1. ") and text.count("Fig. 1.") == 1
+    c, fig = figures[key]
+    title = re.sub(r" \(Fig\. \d+\)$", "", c.title.de.rstrip("."))  # the book's figure named once, in the citation
+    assert title in text and c.title.en.rstrip(".") not in text
+    assert "font-style:italic" not in re.search(r"\.cap\{[^}]*\}", plates[key]).group(0)
+    assert [f.line() for f in lint_svg(plates[key], key) if f.kind.startswith("caption")] == []
 
 
 @pytest.mark.parametrize("key", IDS)

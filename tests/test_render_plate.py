@@ -14,7 +14,7 @@ import xml.etree.ElementTree as ET
 
 from construct.constructions import analytic
 from construct.constructions import get
-from construct.render.output import plate_caption, scene_for
+from construct.render.output import plate_caption, printed_caption, scene_for
 from construct.render.styles import STYLES
 from construct.render.svg import render_svg
 
@@ -25,7 +25,7 @@ SVG = "{http://www.w3.org/2000/svg}"
 def _plate_svg(name: str, **params) -> str:
     c = get(name)
     fig = c.figure(**params)
-    return render_svg(scene_for(c, fig, plate=True), style=STYLES["historical"], caption=plate_caption(c, fig, 1))
+    return render_svg(scene_for(c, fig, plate=True), style=STYLES["historical"], caption=printed_caption(c, fig, 1))
 
 
 def _texts(svg: str) -> list[str]:
@@ -158,7 +158,7 @@ def test_two_sided_piston_force_plate_is_a_landscape_sheet_legible_at_1400_by_10
     c = get("piston-force")
     fig = c.figure(parts=18, revolution=True)
     scene = scene_for(c, fig, plate=True)
-    svg = render_svg(scene, style=STYLES["historical"], caption=plate_caption(c, fig, 1))
+    svg = render_svg(scene, style=STYLES["historical"], caption=printed_caption(c, fig, 1))
     assert [f.line() for f in lint_svg(svg, view=(1400, 1000))] == []
     x0, y0, x1, y1 = scene.bbox
     assert x1 - x0 > y1 - y0  # landscape

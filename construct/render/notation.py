@@ -191,14 +191,18 @@ def caption(construction: Described | None, fig: Drawn, number_: int | str | Non
     return out[0], out[1]
 
 
-def provenance(construction: Described | None, fig: Drawn) -> dict[str, Any]:
-    """Which text and which parameters, for the machine: the SVG's ``<desc id="provenance">``."""
+def provenance(construction: Described | None, fig: Drawn,
+               full: tuple[str, str] | None = None) -> dict[str, Any]:
+    """Which text and which parameters, for the machine: the SVG's ``<desc id="provenance">``; *full*: the
+    figure's whole caption (German, English) where the figure prints less of it (a plate)."""
     params = {k: v for k, v in fig.params.items() if k not in ("group_titles", "plate", "captions", "givens")}
     out: dict[str, Any] = {"construction": fig.protocol.construction, "params": params,
                            "givens": dict(fig.replay.givens)}
     if construction is not None:
         out["source"] = construction.source
         out["texts"] = [{"text": f"seeds/{c.book.key}", "figure": c.figure} for c in construction.cites]
+    if full is not None:
+        out["caption"] = {"de": full[0], "en": full[1]}
     return out
 
 
@@ -224,15 +228,17 @@ def jsonable(v: Any) -> Any:
         return str(v)
 
 
-def with_provenance(svg: str, construction: Described | None, fig: Drawn) -> str:
-    """*svg* (a standalone file's text) with ``<desc id="provenance">`` holding the provenance as JSON, first in the root.
+def with_provenance(svg: str, construction: Described | None, fig: Drawn,
+                    full: tuple[str, str] | None = None) -> str:
+    """*svg* (a standalone file's text) with ``<desc id="provenance">`` holding the provenance as JSON, first in the root
+    (*full*: the whole caption of a plate, :func:`provenance`).
 
     The element is serialised by ElementTree (which escapes the text) and set in after the root's
     start tag, which follows the XML declaration.
     """
     import xml.etree.ElementTree as ET
 
-    data = json.dumps(jsonable(provenance(construction, fig)), sort_keys=True, ensure_ascii=False)
+    data = json.dumps(jsonable(provenance(construction, fig, full)), sort_keys=True, ensure_ascii=False)
     meta = ET.Element("desc", id="provenance")
     meta.text = data
     markup = ET.tostring(meta, encoding="unicode")

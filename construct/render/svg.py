@@ -35,9 +35,9 @@ from typing import Any, Sequence
 from . import captions as _captions
 from . import svgdoc
 from .camera import clear_edges, clear_tag_edges, level, ring_round, step_views
-from .captions import Captions
+from .captions import Captions, PlateCaption
 from .gaps import CLEARANCE, Gap, GapFactory, arc_parts, curve_d, polyline_d
-from .lettering import LEADER_FROM, text_box, text_width
+from .lettering import LEADER_FROM, label_box, text_box, text_width
 from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
 from .placing import Placing, PlacedLabel, place_outwards, text_gap
 from .plate import Lettering, Stroke, break_elements, furniture_elements, furniture_pieces, plain, subscript_runs
@@ -285,7 +285,9 @@ class Drawing:
             # a letter set off from a crowded point is tied to it
             cx, cy = dx, dy - 0.35 * st.label_size
             n = math.hypot(cx, cy) or 1.0
-            a, b = 0.25 * st.label_size, n - 0.75 * st.label_size
+            # it ends where it meets the letter's white, or sooner: a wide letter (M₁ 19°12′) is not run into
+            box = label_box(dx, dy, text, st.label_size, st.label_font, st.label_italic)
+            a, b = 0.25 * st.label_size, min(n - 0.75 * st.label_size, _entry(box, cx / n, cy / n))
             # a name tag's leader is shown and hidden with its tag (the style shows tags at their step only)
             inner.add(f.line(start=(fmt(a * cx / n), fmt(a * cy / n)), end=(fmt(b * cx / n), fmt(b * cy / n)),
                              class_="leader tag" if "tag" in cls.split() else "leader"))
@@ -638,6 +640,19 @@ def _start_anchored(items: Sequence[Any], scale: float, style: Style) -> tuple:
     return tuple(out)
 
 
+def _entry(box: tuple[float, float, float, float], ux: float, uy: float) -> float:
+    """How far along the unit direction (ux, uy) from the origin a ray enters *box* (infinity: it misses)."""
+    t_in, t_out = 0.0, math.inf
+    for u, lo, hi in ((ux, box[0], box[2]), (uy, box[1], box[3])):
+        if abs(u) < 1e-12:
+            if not lo <= 0.0 <= hi:
+                return math.inf
+            continue
+        t0, t1 = sorted((lo / u, hi / u))
+        t_in, t_out = max(t_in, t0), min(t_out, t1)
+    return t_in if t_in <= t_out else math.inf
+
+
 def _runs(d: str) -> list[list[tuple[float, float]]]:
     """The polylines of a path of straight pieces only (``M x y L x y ...``, as :func:`hatch_path` writes)."""
     out: list[list[tuple[float, float]]] = []
@@ -676,8 +691,9 @@ def _near(m: Mark, region: tuple[float, float, float, float]) -> bool:
 
 
 def render_svg(scene: Scene, *, upto: int | None = None, style: Style = PLAIN,
-               caption: tuple[str, str] | None = None) -> str:
-    """The figure after steps 1..upto (all steps when None), as SVG text."""
+               caption: "tuple[str, str] | PlateCaption | None" = None) -> str:
+    """The figure after steps 1..upto (all steps when None), as SVG text; *caption*: its caption lines, or a
+    plate's (:class:`construct.render.captions.PlateCaption`, one language in at most three lines)."""
     if upto is None:
         if style.fig_caption:
             # a plate: its own size, the "Fig." caption centred beneath

@@ -23,8 +23,8 @@ is taken at its stroke width, in the letter's own frame (a turned letter's
 core is a turned box), and as drawn: a line broken for the letter (a gap
 in the path under it) does not pass through it, a paper-coloured halo
 round the glyphs does not hide it (the line still runs through the
-letter's counters and between its glyphs).  A letter's own leader is not
-counted.
+letter's counters and between its glyphs).  A letter's own leader counts
+too: it should end where the letter's white begins.
 
 >>> svg = '''<svg xmlns="http://www.w3.org/2000/svg" class="plate" viewBox="0 0 200 100">
 ... <style>.lb{font-family:'DejaVu Serif';font-size:12px;text-anchor:middle}.thin{stroke:black;stroke-width:0.5}</style>
@@ -42,6 +42,7 @@ from __future__ import annotations
 import math
 import re
 
+from ...kernel.letters import PLATE_CAPTION_LINES, formula_break
 from .sheet import Sheet, Text
 
 __all__ = ["KINDS", "CORE_MARGIN", "CAPTION_LINES", "check_plate", "core_of", "through", "caption_breaks"]
@@ -50,21 +51,7 @@ KINDS = ("through", "caption-lines", "caption-break")
 #: How far a letter's core lies inside its ink box, in letter sizes (an em): a line nearer the edge grazes it.
 CORE_MARGIN = 0.12
 #: The most lines a plate's caption runs to (a book's: the figure number, its title, what it shows).
-CAPTION_LINES = 3
-
-#: A line that ends with one of these (alone, or last in its token) leaves a formula open.
-_OPEN_END = ("=", "+", "−", "-", "·", "×", "/", "≈", "(", "[", "{", ":")
-#: A line that starts with one of these continues a formula of the line before.
-_OPEN_START = ("=", "+", "−", "·", "×", "/", "≈", ")", "]", "}")
-#: Words a number follows: "Fig. 77", "Abb. 1055", "Gl. (298)", "§ 146", "Tafel I".
-_NUMBERED = {"fig.", "abb.", "gl.", "§", "§§", "tafel", "tabelle", "nr.", "no.", "bd.", "s.", "seite", "p.",
-             "formel", "table", "plate", "eq."}
-_NUMBER = re.compile(r"[−+\-]?(?:\d+(?:[.,]\d+)*(?:/\d+)?|[IVX]+)[.,;]?$")
-#: The units a number is followed by on our plates and in the books.
-_UNITS = {"at", "atm", "atm.", "kg", "t", "m", "cm", "mm", "cm²", "m²", "mm²", "m/s", "kg/cm²", "%", "°", "/min",
-          "ps", "r", "s", "r₁", "s.", "at.", "kg.", "m.", "mal", "fach", "teilen", "teile", "parts", "times",
-          "min", "sek", "sec", "u/min"}
-
+CAPTION_LINES = PLATE_CAPTION_LINES
 
 def core_of(t: Text) -> tuple[float, float, float, float]:
     """The core of letter *t* in its own coordinates: its ink box less :data:`CORE_MARGIN` of its size."""
@@ -171,7 +158,7 @@ def _struck_letters(sheet: Sheet) -> list[tuple[Text, list[str | None]]]:
         for j in near.tolist():
             li = owners[j]
             ln = sheet.lines[li]
-            if li in hit or (ln.lbg is not None and ln.lbg == t.lbg):
+            if li in hit:
                 continue
             x0, y0, x1, y1 = pieces[j]
             local = (inv[0] * x0 + inv[2] * y0 + inv[4], inv[1] * x0 + inv[3] * y0 + inv[5],
@@ -184,43 +171,18 @@ def _struck_letters(sheet: Sheet) -> list[tuple[Text, list[str | None]]]:
 
 
 def caption_breaks(lines: list[str]) -> list[tuple[int, str]]:
-    """The lines (by number) that end inside a number or a formula, each with what it breaks.
+    """The lines (by number) that end inside a number or a formula, each with what it breaks
+    (:func:`construct.kernel.letters.formula_break`, the rule the plates' captions are wrapped by).
 
     >>> caption_breaks(["G", "= 990 kg", "Füllung 25", "at, (m₁ +", "m₂)v₁²", "(Dürers", "Dreiteilung)"])
     [(0, "ends inside the formula 'G / ='"), (2, "ends inside '25 / at,'"), (3, "ends inside the formula '(m₁ + / m₂)v₁²'")]
     """
     out = []
     for i in range(len(lines) - 1):
-        words, nxt = lines[i].split(), lines[i + 1].split()
-        if not words or not nxt:
-            continue
-        last, first = words[-1], nxt[0]
-        pair = f"{last} / {first}"
-        if last.endswith(_OPEN_END) or first.startswith(_OPEN_START) or _open_bracket(lines[i]):
-            start = max(0, len(words) - 2) if last in _OPEN_END else len(words) - 1
-            pair = f"{' '.join(words[start:])} / {first}"
-            out.append((i, f"ends inside the formula {pair!r}"))
-        elif last.lower().lstrip("([„") in _NUMBERED and re.match(r"\(?[\dIVX]", first):
-            out.append((i, f"ends inside {pair!r}"))
-        elif _NUMBER.match(last) and first.lower().rstrip(".,;)") in _UNITS | {u.rstrip(".") for u in _UNITS}:
-            out.append((i, f"ends inside {pair!r}"))
+        why = formula_break(lines[i], lines[i + 1])
+        if why is not None:
+            out.append((i, f"ends inside {why}"))
     return out
-
-
-def _open_bracket(line: str) -> bool:
-    """Does *line* leave a bracket open whose content so far is a formula (an operator or a digit in it)?"""
-    depth, start = 0, None
-    for j, c in enumerate(line):
-        if c in "([":
-            if depth == 0:
-                start = j
-            depth += 1
-        elif c in ")]" and depth:
-            depth -= 1
-    if depth <= 0 or start is None:
-        return False
-    inside = line[start + 1:]
-    return any(op in inside for op in ("=", "+", "−", "·", "×", "/")) or bool(re.search(r"\d", inside))
 
 
 def check_plate(sheet: Sheet, finding) -> list:

@@ -102,8 +102,6 @@ class Text:
     #: a turned letter's ink is a turned box on the sheet (a plate's core test, :mod:`.plates`).
     ink: Box = (0.0, 0.0, 0.0, 0.0)
     ctm: Matrix = (1.0, 0.0, 0.0, 1.0, 0.0, 0.0)
-    #: The number of the letter group (``lbg``) it is drawn in: its own leader is in the same one.
-    lbg: int | None = None
 
     @property
     def name(self) -> str:
@@ -136,13 +134,12 @@ class Stroke:
 @dataclass(frozen=True, slots=True)
 class Line:
     """Any stroked line of a plate (construction, result, furniture, hatching, a leader): its straight
-    pieces and half its stroke width; *lbg* the letter group a leader is drawn in (None for the others)."""
+    pieces and half its stroke width."""
 
     ident: str | None
     chain: tuple[Node, ...]
     pieces: tuple[tuple[float, float, float, float], ...]
     half: float
-    lbg: int | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -543,7 +540,6 @@ class _Reader:
         self.sheet = sheet
         self.halos: dict[tuple, float] = {}
         self.pending: list[tuple] = []
-        self.lbgs = 0  # letter groups met so far: each gets a number (its leader and its letter share it)
 
     def read(self, root: ET.Element) -> None:
         self._walk(root, (), _IDENTITY, None)
@@ -593,9 +589,7 @@ class _Reader:
         if tag in ("svg", "g", "a", "switch"):
             if tag == "g" and "lbg" in chain[-1][2]:
                 # a letter about its point: the player scales (and a zoom level moves) its children about it
-                group = (_at(ctm, 0.0, 0.0), e.get("id"), math.sqrt(abs(ctm[0] * ctm[3] - ctm[1] * ctm[2])),
-                         self.lbgs)
-                self.lbgs += 1
+                group = (_at(ctm, 0.0, 0.0), e.get("id"), math.sqrt(abs(ctm[0] * ctm[3] - ctm[1] * ctm[2])))
             for child in e:
                 self._walk(child, chain, ctm, step, group)
             return
@@ -636,8 +630,7 @@ class _Reader:
         if sheet.plate and not (tag == "circle" and "pt" in classes) and not classes & {"halo", "brk"}:
             look = sheet.look(chain)
             if look.stroked and look.shown and look.opacity > 0:
-                sheet.lines.append(Line(e.get("id"), chain, tuple(_pieces(lines)), look.stroke_width * scale / 2,
-                                        group[3] if group is not None and "leader" in classes else None))
+                sheet.lines.append(Line(e.get("id"), chain, tuple(_pieces(lines)), look.stroke_width * scale / 2))
         if step is not None and not classes & {"leader", "halo", "brk", "brkline"}:
             if tag == "circle":  # exact: the flattened outline's corners fall inside the circle
                 cx, cy = _at(ctm, _num(e.get("cx")), _num(e.get("cy")))
@@ -672,9 +665,9 @@ class _Reader:
                 if ident.endswith(suffix):
                     owner = ident[: -len(suffix)]
         scale = math.sqrt(abs(ctm[0] * ctm[3] - ctm[1] * ctm[2]))
-        anchor, gid, unit, lbg = group if group is not None else (None, None, 1.0, None)
+        anchor, gid, unit = group if group is not None else (None, None, 1.0)
         sheet.texts.append(Text(len(sheet.texts), text, kind, ident, owner, step, chain, _box_of(corners),
-                                look.font_size * scale, anchor, gid, unit, ink, ctm, lbg))
+                                look.font_size * scale, anchor, gid, unit, ink, ctm))
 
 
 def _text_of(e: ET.Element) -> str:

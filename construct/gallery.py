@@ -45,8 +45,8 @@ from typing import Any, Callable, Iterator, Mapping
 
 from .constructions.checking import summary
 from .constructions import get, names
-from .io.manifest import foreign_entries
-from .io.staging import replaced_folder, write_text
+from .io.manifest import foreign_entries, replaced_with_manifest
+from .io.staging import write_text
 from .render.output import write_outputs
 from .render.notation import citation
 from .render.notation import givens as book_givens
@@ -262,7 +262,7 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
     jobs = [(number, name, dict(params), check) for number, (name, params) in enumerate(plan, start=1)]
     if workers is None:
         workers = min(4, os.cpu_count() or 1)
-    with replaced_folder(out, manifest="gallery", described=GALLERY_DESCRIBED, what="gallery folder") as root:
+    with replaced_with_manifest(out, "gallery", described=GALLERY_DESCRIBED, what="gallery folder") as root:
         root.mkdir()
         if workers > 1 and len(jobs) > 1:
             import concurrent.futures

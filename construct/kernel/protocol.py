@@ -425,14 +425,17 @@ class TakenSet(Mapping[str, Any]):
 class Replay(Mapping[str, Any]):
     """The objects a replay made, by name (arrays of coordinates in a sweep)."""
 
-    __slots__ = ("protocol", "_objects", "_givens", "size")
+    __slots__ = ("protocol", "_objects", "_givens", "size", "elementwise")
 
-    def __init__(self, protocol: "Protocol", objects: dict[str, Any], givens: Mapping[str, Any], size: int = 0):
+    def __init__(self, protocol: "Protocol", objects: dict[str, Any], givens: Mapping[str, Any], size: int = 0,
+                 elementwise: tuple[str, ...] = ()):
         self.protocol = protocol
         self._objects = objects
         self._givens = dict(givens)
         #: 0 for a plain replay, else the number of sets of givens swept.
         self.size = size
+        #: The ops a sweep ran once per set of givens, having no array form (none of the op table's).
+        self.elementwise = elementwise
 
     @property
     def givens(self) -> Mapping[str, Any]:
@@ -464,7 +467,7 @@ class Replay(Mapping[str, Any]):
         return len(self._objects)
 
     def __reduce__(self):
-        return (Replay, (self.protocol, self._objects, self._givens, self.size))
+        return (Replay, (self.protocol, self._objects, self._givens, self.size, self.elementwise))
 
     def __repr__(self) -> str:
         kind = f"sweep of {self.size}" if self.size else "replay"
@@ -578,11 +581,12 @@ class Protocol:
                         env[k] = v
             except _STEP_FAILURES as exc:
                 raise step_failure(entries[i].step, exc) from exc
-        else:
-            for i in range(stop):
-                run_step(entries[i], env, givens, xp)
+            return Replay(self, {names[k]: env[k] for k in range(len(names)) if env[k] is not None}, givens)
+        for i in range(stop):
+            run_step(entries[i], env, givens, xp)
         objects = {names[k]: env[k] for k in range(len(names)) if env[k] is not None}
-        return Replay(self, objects, givens, getattr(xp, "n", 0))
+        by_element = tuple(dict.fromkeys(e.step.op for e in entries[:stop] if not e.op.vector))
+        return Replay(self, objects, givens, xp.n, by_element)
 
     # -- inspection ---------------------------------------------------------
     def instrument_counts(self) -> dict[str, int]:

@@ -45,7 +45,7 @@ from .areas import Area, area_between_op, planimeter_height_op, planimeter_op
 from .closed_curves import closed_french_curve_op
 from .curves import (BezierCurve, Polyline, crossings, crossings_of_sweeps, french_curve_op, parabola_envelope_op,
                      polyline_op)
-from .errors import GeometryError, NoIntersection
+from .errors import DegenerateObject, GeometryError, NoIntersection
 from .geometry import (SCALAR, Circle, Length, Line, Point, Sweep, raw_circle, raw_point, circle_circle, line_circle,
                        line_line, sets_where, stack, take)
 from .numeric import is_finite, shown
@@ -240,21 +240,16 @@ def _line(args, params, givens, refs, xp):
     return (Line(args[0], args[1]),)
 
 
-def _radius(r: Any, xp: Any, what: Any) -> Any:
-    """*r* when positive everywhere; else a DegenerateObject (its message made only then: reprs cost)."""
-    if xp is SCALAR:
-        if r > 0.0:
-            return r
-    elif not xp.any(~(r > 0.0)):
-        return r
-    from .errors import DegenerateObject
-
-    raise DegenerateObject(f"{what()} has no radius (its two points coincide)")
+def _no_radius(what: str) -> DegenerateObject:
+    return DegenerateObject(f"{what} has no radius (its two points coincide)")
 
 
 def _circle_through(args, params, givens, refs, xp):
     c, p = args
-    return (raw_circle(c, _radius(xp.hypot(p.x - c.x, p.y - c.y), xp, lambda: f"circle about {c!r} through {p!r}")),)
+    r = xp.hypot(p.x - c.x, p.y - c.y)
+    if not (r > 0.0 if xp is SCALAR else np.all(r > 0.0)):  # written out: a call per circle is a tenth of it
+        raise _no_radius(f"circle about {c!r} through {p!r}")
+    return (raw_circle(c, r),)
 
 
 def _circle_radius(args, params, givens, refs, xp):
@@ -264,7 +259,10 @@ def _circle_radius(args, params, givens, refs, xp):
 
 def _circle_segment(args, params, givens, refs, xp):
     c, a, b = args
-    return (raw_circle(c, _radius(xp.hypot(b.x - a.x, b.y - a.y), xp, lambda: f"compass set to {a!r}{b!r}")),)
+    r = xp.hypot(b.x - a.x, b.y - a.y)
+    if not (r > 0.0 if xp is SCALAR else np.all(r > 0.0)):
+        raise _no_radius(f"compass set to {a!r}{b!r}")
+    return (raw_circle(c, r),)
 
 
 def _length_of(args, params, givens, refs, xp):
@@ -272,17 +270,17 @@ def _length_of(args, params, givens, refs, xp):
     return (Length(xp.hypot(b.x - a.x, b.y - a.y)),)
 
 
-def _swap(fn):
-    return lambda a, b, xp: fn(b, a, xp)
+def _circle_line(circle, line, xp):
+    return line_circle(line, circle, xp)
+
+
+def _line_line(a, b, xp):
+    return (line_line(a, b, xp),)
 
 
 #: Which core meets two curves of these kinds (the order of the points follows the first-named curve).
-_MEET = {
-    (Circle, Circle): circle_circle,
-    (Line, Circle): line_circle,
-    (Circle, Line): _swap(line_circle),
-    (Line, Line): lambda a, b, xp: (line_line(a, b, xp),),
-}
+_MEET = {(Circle, Circle): circle_circle, (Line, Circle): line_circle, (Circle, Line): _circle_line,
+         (Line, Line): _line_line}
 
 
 def _intersect(args, params, givens, refs, xp):

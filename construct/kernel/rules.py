@@ -28,7 +28,7 @@ from __future__ import annotations
 from typing import Any, Sequence
 
 from .errors import RuleError
-from .geometry import raw_point
+from .geometry import SCALAR, raw_point
 from .numeric import is_finite, shown
 
 __all__ = ["Rule", "nearer", "farther", "left_of", "right_of", "toward", "only", "as_rule", "RULE_ARITY", "choose",
@@ -231,7 +231,7 @@ def choose(points: Sequence[Any], rule: Rule, refs: Sequence[Any], xp: Any) -> t
         first = a.x * dx + a.y * dy >= b.x * dx + b.y * dy
     else:  # "only": the caller has checked that the two points coincide
         return a, b
-    if xp.name == "scalar":
+    if xp is SCALAR:
         return (a, b) if first else (b, a)
     w = xp.where
     return raw_point(w(first, a.x, b.x), w(first, a.y, b.y)), raw_point(w(first, b.x, a.x), w(first, b.y, a.y))

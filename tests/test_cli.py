@@ -95,6 +95,7 @@ def test_bench_sweep_is_measured_against_a_loop():
     s = sweep_bench(size=200)
     assert s["size"] == 200 and s["sweep_s"] > 0 and s["speedup_over_loop"] == pytest.approx(
         s["scalar_replay_s"] * 200 / s["sweep_s"])
+    assert s["elementwise"] == []  # every op of the crank on arrays
 
 
 BAD = [

@@ -32,44 +32,101 @@ if TYPE_CHECKING:
     from ..constructions import Construction
     from ..figure import Figure
 
-__all__ = ["Book", "BOOKS", "CITED", "givens", "given_rows", "citation", "caption", "provenance", "with_provenance", "number"]
+__all__ = ["Book", "BOOKS", "CITED", "book", "cited_as", "givens", "given_rows", "citation", "caption", "provenance", "with_provenance", "number"]
 
 
 @dataclass(frozen=True)
 class Book:
-    """A source text as it names itself: author (when it says), title, where it was printed."""
+    """A source text as it names itself: author (when it says), title, where it was printed, what it teaches."""
 
+    #: What a reader types and finds: ``construct errata --book baumann``, ``errata-baumann.html``.
+    name: str
     author: str | None
     title_de: str
     title_en: str
     where: str = ""
     #: The title a caption cites (the full one is long for a line under a figure).
     short: str = ""
+    #: When it was printed, as the text says, or what dates an excerpt that does not say.
+    year: str = ""
+    #: What a reader learns from it, in a sentence (the gallery's front page).
+    teaches: str = ""
+    #: The number of its text among the project's sources (``shared/seeds/NNN_*.txt``): the old
+    #: ``--seed NNN`` still names it.  Never shown to a reader.
+    number: str = ""
 
 
-#: The four source texts (the seed files' numbers are the keys; they appear only in the metadata).
-BOOKS: dict[str, Book] = {
-    "000": Book(None, "Anhang II, „Darstellung der Massendrücke“", "Anhang II, „Darstellung der Massendrücke“"),
-    "001": Book(None, "„Einfluß der Massenkräfte“, Maschine Tafel I", "„Einfluß der Massenkräfte“, engine of Tafel I"),
-    "002": Book(None, "§ 146–147, Zwei Kurbeln unter 90°", "§ 146–147, two cranks at 90°"),
-    "004": Book("A. Baumann", "Ein neues Verfahren zur Bestimmung der Schwungradgewichte von Dampfmaschinen",
-                "Ein neues Verfahren zur Bestimmung der Schwungradgewichte von Dampfmaschinen",
-                "Bd. 317, 1902", short="Schwungradgewichte (1902)"),
-}
+#: The four source texts, in the order of their files.  The Baumann article names its author, title and
+#: volume; the three book excerpts carry no title page, so they are cited by the section and figures they
+#: print (and dated by their spelling where they say nothing).
+BOOKS: dict[str, Book] = {b.name: b for b in (
+    Book("anhang-ii", None, "Anhang II, „Darstellung der Massendrücke“",
+         "Anhang II, „Darstellung der Massendrücke“",
+         year="undated; its spelling (Werthe, Curve, construiren) is that of before 1901",
+         teaches="the curve of the inertia pressures of the reciprocating masses over the stroke: by calculation "
+                 "(Tabellen 1 and 2), by construction (Fig. 77–79), its characteristic points and its tangents",
+         number="000"),
+    Book("handbook", None, "„Einfluß der Massenkräfte“, Maschine Tafel I",
+         "„Einfluß der Massenkräfte“, engine of Tafel I",
+         year="undated; it names Diesel engines and spells Zylinder: after 1900",
+         teaches="the piston over-pressure line of a compound engine's high-pressure cylinder with the mass forces "
+                 "(Abb. 1051–1055), and the pressures of four-stroke engines (Abb. 1056–1058)",
+         number="001"),
+    Book("mechanics", None, "§ 146–147, Zwei Kurbeln unter 90°", "§ 146–147, two cranks at 90°",
+         year="undated; its spelling (Todtlage, Ueberschuß) is that of before 1901",
+         teaches="two cranks at right angles on one shaft: the work the masses take up and give back, and the "
+                 "shaft's speed fluctuation as a polar diagram (Fig. 566), for infinite and finite rods",
+         number="002"),
+    Book("baumann", "A. Baumann", "Ein neues Verfahren zur Bestimmung der Schwungradgewichte von Dampfmaschinen",
+         "Ein neues Verfahren zur Bestimmung der Schwungradgewichte von Dampfmaschinen",
+         "Dinglers Polytechnisches Journal, Bd. 317, S. 341", short="Schwungradgewichte (1902)", year="1902",
+         teaches="a new method for flywheel weights: the steam diagram, the tangential-pressure diagram and its "
+                 "excess area, rim, arms and hub, with his own error analysis and tables",
+         number="004"),
+)}
 
-#: Per construction: the (text, figure) pairs it follows, the figure as the text numbers it.
+#: Per construction: the (book, figure) pairs it follows, the figure as the text numbers it.
 CITED: dict[str, tuple[tuple[str, str], ...]] = {
-    "crank": (("001", "Abb. 1051/1054"), ("000", "Fig. 77")),
-    "crank-angle": (("000", "Fig. 77, Tabelle 2"),),
-    "inertia-curve": (("000", "Fig. 78/79, Tabelle 1"),),
-    "inertia-stroke-fractions": (("000", "Tabelle 2"),),
-    "indicator-diagram": (("004", "Fig. 25"),),
-    "piston-force": (("001", "Abb. 1054/1055"), ("004", "Fig. 25")),
-    "tangential-pressure": (("004", "Fig. 26/27"),),
-    "two-cranks": (("002", "Fig. 566"),),
-    "four-stroke": (("001", "Abb. 1056–1058"),),
-    "flywheel-rim": (("004", "Fig. 28"),),
+    "crank": (("handbook", "Abb. 1051/1054"), ("anhang-ii", "Fig. 77")),
+    "crank-angle": (("anhang-ii", "Fig. 77, Tabelle 2"),),
+    "inertia-curve": (("anhang-ii", "Fig. 78/79, Tabelle 1"),),
+    "inertia-stroke-fractions": (("anhang-ii", "Tabelle 2"),),
+    "indicator-diagram": (("baumann", "Fig. 25"),),
+    "piston-force": (("handbook", "Abb. 1054/1055"), ("baumann", "Fig. 25")),
+    "tangential-pressure": (("baumann", "Fig. 26/27"),),
+    "two-cranks": (("mechanics", "Fig. 566"),),
+    "four-stroke": (("handbook", "Abb. 1056–1058"),),
+    "flywheel-rim": (("baumann", "Fig. 28"),),
 }
+
+
+def book(name: str) -> Book:
+    """The source text a reader names: by its name, or by the number of its text file (the old ``--seed``).
+
+    >>> book("baumann").author, book("004").name
+    ('A. Baumann', 'baumann')
+    >>> book("003")
+    Traceback (most recent call last):
+    ...
+    construct.kernel.errors.InvalidParameter: no book '003'; the books: anhang-ii, handbook, mechanics, baumann
+    """
+    from ..kernel.errors import InvalidParameter
+
+    found = BOOKS.get(name) if isinstance(name, str) else None
+    found = found or next((b for b in BOOKS.values() if isinstance(name, str) and name == b.number), None)
+    if found is None:
+        raise InvalidParameter(f"no book {name!r}; the books: {', '.join(BOOKS)}")
+    return found
+
+
+def cited_as(b: Book, lang: str = "en") -> str:
+    """A book as a reader cites it: author, title (the short one where there is one), year.
+
+    >>> cited_as(BOOKS["baumann"]), cited_as(BOOKS["mechanics"], "de")
+    ('A. Baumann, Schwungradgewichte (1902)', '§ 146–147, Zwei Kurbeln unter 90°')
+    """
+    title = b.short or (b.title_de if lang == "de" else b.title_en)
+    return ", ".join(x for x in (b.author, title) if x)
 
 
 def number(v: float, lang: str, digits: int = 4) -> str:
@@ -95,7 +152,7 @@ def _percent(v: float, lang: str) -> str:
 
 
 def _ratio(name: str, rod_ratio: float, lang: str) -> str:
-    """The rod as the text writes it: r/L = 1/5 (seed 000, Baumann), r/l = 1/5 (§ 146)."""
+    """The rod as the text writes it: r/L = 1/5 (Anhang II, Baumann), r/l = 1/5 (§ 146)."""
     return f"{name} = 1/{number(rod_ratio, lang)}"
 
 
@@ -314,22 +371,18 @@ def given_rows(fig: "Figure") -> dict[str, str]:
     return rows
 
 
-def citation(name: str, lang: str) -> str:
-    """The texts a construction follows, as a reader finds them: author, title, figure.
+def citation(name: str, lang: str, *, after: bool = True) -> str:
+    """The texts a construction follows, as a reader finds them: author, title, figure ("after" them, or not).
 
     >>> citation("tangential-pressure", "de")
     'nach A. Baumann, Schwungradgewichte (1902), Fig. 26/27'
-    >>> citation("two-cranks", "en")
-    'after § 146–147, two cranks at 90°, Fig. 566'
+    >>> citation("two-cranks", "en", after=False)
+    '§ 146–147, two cranks at 90°, Fig. 566'
     """
-    parts = []
-    for key, fig in CITED.get(name, ()):
-        b = BOOKS[key]
-        title = b.short or (b.title_de if lang == "de" else b.title_en)
-        parts.append(", ".join(x for x in (b.author, title, fig) if x))
-    if not parts:
-        return ""
-    return ("nach " if lang == "de" else "after ") + "; ".join(parts)
+    parts = "; ".join(f"{cited_as(BOOKS[key], lang)}, {fig}" for key, fig in CITED.get(name, ()))
+    if not parts or not after:
+        return parts
+    return ("nach " if lang == "de" else "after ") + parts
 
 
 def _special(fig: "Figure", lang: str) -> str:
@@ -367,8 +420,9 @@ def provenance(construction: "Construction | None", fig: "Figure") -> dict[str, 
     out: dict[str, Any] = {"construction": fig.protocol.construction, "params": params,
                            "givens": dict(fig.replay.givens)}
     if construction is not None:
-        out["source"] = construction.source
-        out["texts"] = [{"text": f"seeds/{key}", "figure": figfig} for key, figfig in CITED.get(construction.name, ())]
+        # the texts as a reader cites them (a construction's own source string is the developers')
+        out["source"] = citation(construction.name, "en", after=False) or construction.source
+        out["texts"] = [{"book": key, "figure": figfig} for key, figfig in CITED.get(construction.name, ())]
     return out
 
 

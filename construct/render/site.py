@@ -217,7 +217,7 @@ def thumbnail_view(drawing: Any, aspect: float = 174 / 130, margin: float = 24.0
     full_w, full_h = drawing.full_view[2], drawing.full_view[3]
     st = drawing.style
     if st.show_caption:  # the figure's caption (as Drawing.caption_group sets it) is no part of the drawing
-        lines = len(drawing.title_lines())
+        lines = len(drawing.captions.title_lines())
         full_h = min(full_h, drawing.vp.height - st.margin_px * 0.6 - (lines - 1) * 1.45 * st.caption_size
                      - 1.2 * st.caption_size)
     if not pts:

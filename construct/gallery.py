@@ -394,8 +394,8 @@ def _exit_with_parent(parent: int) -> None:
 
 def _readme(index: list[dict], sources: list[dict]) -> str:
     """The gallery's README (what a repository browser shows): the books, then the plates with their links."""
-    from .render.notation import BOOKS, cited_as
-    from .render.site import errata_slug
+    from .render.notation import BOOKS
+    from .render.site import book_title, book_where, errata_slug
 
     lines = [README_HEAD + "  The graphical methods of four German texts on steam-engine design from around "
              "1900, redrawn as the books draw them and checked against their formulas: every figure as a plate "
@@ -403,7 +403,7 @@ def _readme(index: list[dict], sources: list[dict]) -> str:
              "(`*/teaching/player.html`). `index.html` is the same for a browser.", "", "## The books", ""]
     errata = {src["book"] for src in sources}
     for name, b in BOOKS.items():
-        lines.append(f"- **{_md(cited_as(b))}** ({_md(b.year)}): {_md(b.teaches)}."
+        lines.append(f"- **{_md(book_title(b))}** — {_md(book_where(b))}. Teaches {_md(b.teaches)}."
                      + (f" [Errata]({errata_slug(name)})." if name in errata else ""))
     lines += ["", "## The plates", ""]
     for e in index:

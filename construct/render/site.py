@@ -27,7 +27,7 @@ from typing import Any, Mapping, Sequence
 from .mathml import formula_html, with_subscripts
 from .notation import BOOKS, Book, cited_as
 
-__all__ = ["index_page", "checks_page", "errata_page", "errata_slug", "thumbnail_view"]
+__all__ = ["index_page", "checks_page", "errata_page", "errata_slug", "thumbnail_view", "book_title", "book_where"]
 
 _esc = html.escape
 
@@ -45,7 +45,7 @@ _FRONT = """h3{font-size:15px;margin:0 0 4px}.who,.books{display:grid;gap:12px}.
 padding:8px 12px}.who p{margin:0;font-size:14px}.books p{margin:2px 0;font-size:13.5px}
 .cards{display:grid;grid-template-columns:repeat(auto-fill,minmax(410px,1fr));gap:16px}
 .card h3{margin-top:6px}.card .en{margin:0}.plate img{display:block;width:100%;height:300px;object-fit:contain}
-.under{display:flex;gap:12px;align-items:flex-start}.under>div{flex:1}
+.under{display:flex;gap:12px;align-items:flex-start}.under>div{flex:1;min-width:0}.under h3{hyphens:auto;overflow-wrap:break-word}
 .teach{flex:0 0 176px;font-size:12.5px;text-align:center;text-decoration:none}
 .teach img{display:block;width:174px;height:130px;border:1px solid #ccc;background:#fff}.links a{margin-right:12px}"""
 _ERRATA = """tbody th{background:#f7f0f0;font-weight:normal}.filters{margin:8px 0}.filters label{margin-right:16px}
@@ -113,19 +113,27 @@ def errata_slug(book: str) -> str:
     return f"errata-{''.join(ch for ch in book if ch.isalnum() or ch == '-')}.html"
 
 
-def _book_title(b: Book) -> str:
-    """A book by its author and its title in the book's words (a section's title is quoted in it already)."""
+def book_title(b: Book) -> str:
+    """A book by its author and its title in the book's words (a section's title is quoted in it already).
+
+    >>> book_title(BOOKS["baumann"])[:44], book_title(BOOKS["mechanics"])
+    ('A. Baumann, „Ein neues Verfahren zur Bestimm', '§ 146–147, Zwei Kurbeln unter 90°')
+    """
     return ", ".join(x for x in (b.author, f"„{b.title_de}“" if b.author else b.title_de) if x)
 
 
-def _book_where(b: Book) -> str:
-    """Where and when a book was printed, or what dates an excerpt that does not say."""
+def book_where(b: Book) -> str:
+    """Where and when a book was printed, or what dates an excerpt that does not say.
+
+    >>> book_where(BOOKS["baumann"])
+    'Dinglers Polytechnisches Journal, Bd. 317, S. 341, 1902'
+    """
     return ", ".join(x for x in (b.where, b.year) if x)
 
 
 def _book_heading(b: Book) -> str:
     """A book as a page's heading cites it: author, title, where and when it was printed."""
-    return _book_title(b) + (f" ({_book_where(b)})" if b.year[:1].isdigit() else "")
+    return book_title(b) + (f" ({book_where(b)})" if b.year[:1].isdigit() else "")
 
 
 # -- the front page ---------------------------------------------------------------------------------------
@@ -158,7 +166,7 @@ def index_page(entries: Sequence[Mapping[str, Any]], sources: Sequence[Mapping[s
         src = errata.get(name)
         bad = sum(n for c, n in src["classes"].items() if c in wrong) if src else 0
         books.append(
-            f'<div><h3>{_esc(_book_title(b))}</h3><p class="meta">{_esc(_book_where(b))}</p>'
+            f'<div><h3>{_esc(book_title(b))}</h3><p class="meta">{_esc(book_where(b))}</p>'
             f"<p>Teaches {_esc(b.teaches)}.</p>"
             + (f"<p>Figures here: {figs}</p>" if figs else "")
             + (f'<p><a href="{errata_slug(name)}">Errata</a>: {src["count"]} printed numbers and formulas checked, '
@@ -193,7 +201,7 @@ def _card(e: Mapping[str, Any]) -> str:
     links.append(f'<a href="{s}/checks.html">checks</a>'
                  + ("" if e["ok"] else ' <span class="bad">a check fails</span>'))
     return (f'<section class="card" id="{s}"><a class="plate" href="{plate}"><img src="{plate}" loading="lazy" '
-            f'alt="Fig. {n}, {_esc(t.en)}, plate"></a>\n<div class="under"><div><h3>Fig. {n}. {_esc(t.de)}</h3>'
+            f'alt="Fig. {n}, {_esc(t.en)}, plate"></a>\n<div class="under"><div><h3 lang="de">Fig. {n}. {_esc(t.de)}</h3>'
             f'<p class="en">{_esc(t.en)}</p><p class="meta">{_esc(e["params_text"])} — {_esc(e["source"])}</p>'
             f'<p class="links">{"".join(links)}</p></div>{teach}</div></section>')
 

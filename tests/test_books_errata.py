@@ -352,8 +352,8 @@ def test_cli_text_cites_each_book_by_author_and_title_never_seed(capsys):
     assert "seed" not in out.lower()
     # seeds/004: "Autor: A. Baumann", "Titel: Ein neues Verfahren zur Bestimmung der Schwungradgewichte ..."
     assert "A. Baumann, Schwungradgewichte (1902)" in out.splitlines()
-    # a deviation that rounds to nothing is 0.00, never -0.00
-    assert "-0.00" not in out and "+0.00" not in out
+    # a deviation that rounds to nothing is 0.00, never -0.00; cos 90° (6e-17 in floats) is 0
+    assert "-0.00" not in out and "+0.00" not in out and "e-17" not in out
 
 
 def test_cli_rejects_unknown_class(capsys):

@@ -32,7 +32,7 @@ if TYPE_CHECKING:
     from ..constructions import Construction
     from ..figure import Figure
 
-__all__ = ["Book", "BOOKS", "CITED", "book", "cited_as", "givens", "given_rows", "citation", "caption", "provenance", "with_provenance", "number"]
+__all__ = ["Book", "BOOKS", "CITED", "book", "cited_as", "signed", "givens", "given_rows", "citation", "caption", "provenance", "with_provenance", "number"]
 
 
 @dataclass(frozen=True)
@@ -139,6 +139,18 @@ def number(v: float, lang: str, digits: int = 4) -> str:
     if "e" in text:
         text = f"{float(v):.{digits}f}".rstrip("0").rstrip(".")
     return text.replace(".", ",") if lang == "de" else text
+
+
+def signed(v: float, decimals: int = 2, *, minus: str = "-") -> str:
+    """*v* with its sign to *decimals* places; a value that rounds to nothing has none (0.00, never -0.00).
+
+    >>> signed(-0.67), signed(0.67), signed(0.004), signed(-0.004), signed(-2.5, 1, minus="−")
+    ('-0.67', '+0.67', '0.00', '0.00', '−2.5')
+    """
+    text = f"{v:+.{decimals}f}"
+    if float(text) == 0.0:
+        return f"{0.0:.{decimals}f}"
+    return text.replace("-", minus)
 
 
 def _metres(v: float, lang: str) -> str:

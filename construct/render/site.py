@@ -25,7 +25,7 @@ import re
 from typing import Any, Mapping, Sequence
 
 from .mathml import formula_html, with_subscripts
-from .notation import BOOKS, Book, cited_as
+from .notation import BOOKS, Book, cited_as, signed
 
 __all__ = ["index_page", "checks_page", "errata_page", "errata_slug", "thumbnail_view", "book_title", "book_where"]
 
@@ -302,15 +302,12 @@ _WRONG_HEADINGS = {"typesetting": "Typesetting errors", "arithmetic": "The autho
 
 
 def _units(units: float | None) -> str:
-    """The deviation in units of the last printed place, signed; one that rounds to nothing is 0.00.
+    """The deviation in units of the last printed place, signed (none when it rounds to nothing).
 
     >>> _units(-0.004), _units(-0.67), _units(None)
     ('0.00', '−0.67', '')
     """
-    if units is None:
-        return ""
-    text = f"{units:+.2f}"
-    return "0.00" if float(text) == 0.0 else text.replace("-", "−")
+    return "" if units is None else signed(units, minus="−")
 
 
 def _true(e: Mapping[str, Any]) -> tuple[str, str]:

@@ -27,7 +27,7 @@ import json
 from collections import Counter
 
 from ...books.errata import CLASS_MEANINGS, CLASSES, Erratum, errata_of
-from ...render.notation import BOOKS, cited_as
+from ...render.notation import BOOKS, cited_as, signed
 from ..common import add_format_option
 
 NAME = "errata"
@@ -72,7 +72,8 @@ def _json_record(e: Erratum) -> dict[str, object]:
 
 
 def _format_true(e: Erratum) -> str:
-    return e.true if isinstance(e.true, str) else f"{e.true:.8g}"
+    # cos 90° computes to 6e-17: a value below the last place of any printed number is 0
+    return e.true if isinstance(e.true, str) else f"{e.true:.8g}" if abs(e.true) >= 1e-12 else "0"
 
 
 def _text_table(entries: list[Erratum]) -> str:
@@ -87,23 +88,13 @@ def _text_table(entries: list[Erratum]) -> str:
     return "\n".join(lines)
 
 
-def _units(units: float) -> str:
-    """A deviation to 2 decimals with its sign; one that rounds to nothing is 0.00, never -0.00.
-
-    >>> _units(-0.004), _units(0.0), _units(-0.67)
-    ('0.00', '0.00', '-0.67')
-    """
-    text = f"{units:+.2f}"
-    return "0.00" if float(text) == 0.0 else text
-
-
 def _book_table(entries: list[Erratum]) -> list[str]:
     numbers = [e for e in entries if e.table != "formula"]
     formulas = [e for e in entries if e.table == "formula"]
     lines = []
     if numbers:
         rows = [
-            (e.table, e.row, e.column, e.printed, _format_true(e), _units(e.units), e.class_, e.note)  # type: ignore[arg-type]
+            (e.table, e.row, e.column, e.printed, _format_true(e), signed(e.units), e.class_, e.note)  # type: ignore[arg-type]
             for e in numbers
         ]
         widths = [max([len(h)] + [len(r[i]) for r in rows]) for i, h in enumerate(_HEADINGS[:-1])]

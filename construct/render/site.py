@@ -40,12 +40,14 @@ table{border-collapse:collapse;background:#fff;margin:6px 0}th,td{border:1px sol
 text-align:left;vertical-align:top}th{background:#f0f0f0}th[data-col]{cursor:pointer}
 td.num{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}dl{margin:4px 0}
 dt{font-weight:bold;float:left;clear:left;width:11em}dd{margin:0 0 3px 11.5em}"""
-_FRONT = """h3{font-size:15px;margin:0 0 4px}.who,.books{display:grid;gap:12px}.who{grid-template-columns:repeat(3,1fr);margin:0 0 4px}
+_FRONT = """h3{font-size:15px;margin:0 0 4px}.who,.books{display:grid;gap:12px}
+.who{grid-template-columns:repeat(3,1fr);margin:0 0 4px}
 .books{grid-template-columns:repeat(4,1fr)}.books>div,.card{background:#fff;border:1px solid #ddd;
 padding:8px 12px}.who p{margin:0;font-size:14px}.books p{margin:2px 0;font-size:13.5px}
 .cards{display:grid;grid-template-columns:repeat(auto-fill,minmax(410px,1fr));gap:16px}
 .card h3{margin-top:6px}.card .en{margin:0}.plate img{display:block;width:100%;height:300px;object-fit:contain}
-.under{display:flex;gap:12px;align-items:flex-start}.under>div{flex:1;min-width:0}.under h3{hyphens:auto;overflow-wrap:break-word}
+.under{display:flex;gap:12px;align-items:flex-start}.under>div{flex:1;min-width:0}
+.under h3{hyphens:auto;overflow-wrap:break-word}
 .teach{flex:0 0 176px;font-size:12.5px;text-align:center;text-decoration:none}
 .teach img{display:block;width:174px;height:130px;border:1px solid #ccc;background:#fff}.links a{margin-right:12px}"""
 _ERRATA = """tbody th{background:#f7f0f0;font-weight:normal}.filters{margin:8px 0}.filters label{margin-right:16px}
@@ -201,7 +203,8 @@ def _card(e: Mapping[str, Any]) -> str:
     links.append(f'<a href="{s}/checks.html">checks</a>'
                  + ("" if e["ok"] else ' <span class="bad">a check fails</span>'))
     return (f'<section class="card" id="{s}"><a class="plate" href="{plate}"><img src="{plate}" loading="lazy" '
-            f'alt="Fig. {n}, {_esc(t.en)}, plate"></a>\n<div class="under"><div><h3 lang="de">Fig. {n}. {_esc(t.de)}</h3>'
+            f'alt="Fig. {n}, {_esc(t.en)}, plate"></a>\n'
+            f'<div class="under"><div><h3 lang="de">Fig. {n}. {_esc(t.de)}</h3>'
             f'<p class="en">{_esc(t.en)}</p><p class="meta">{_esc(e["params_text"])} — {_esc(e["source"])}</p>'
             f'<p class="links">{"".join(links)}</p></div>{teach}</div></section>')
 

@@ -94,7 +94,7 @@ def _book_table(entries: list[Erratum]) -> list[str]:
     lines = []
     if numbers:
         rows = [
-            (e.table, e.row, e.column, e.printed, _format_true(e), signed(e.units), e.class_, e.note)  # type: ignore[arg-type]
+            (e.table, e.row, e.column, e.printed, _format_true(e), signed(e.units or 0.0), e.class_, e.note)
             for e in numbers
         ]
         widths = [max([len(h)] + [len(r[i]) for r in rows]) for i, h in enumerate(_HEADINGS[:-1])]

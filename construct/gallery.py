@@ -49,8 +49,8 @@ from .constructions.checking import summary
 from .constructions import get, names
 from .io.manifest import foreign_entries
 from .io.staging import replaced_folder, write_text
-from .render.output import params_text, write_outputs
-from .render.notation import CITED, citation
+from .render.output import write_outputs
+from .render.notation import citation
 from .render.notation import givens as book_givens
 from .render.styles import STYLES
 
@@ -193,8 +193,7 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
         write_text(edir / "protocol.json", fig.protocol.to_json(fig.replay))
     checks = c.checks(fig)
     method = _method(fig)
-    write_text(edir / "checks.md", _checks_md(f"{c.title.en} ({book_givens(fig)[1] or params_text(fig)})", checks,
-                                              method))
+    write_text(edir / "checks.md", _checks_md(f"{c.title.en} ({book_givens(fig, c)[1]})", checks, method))
     write_text(edir / "checks.json", json.dumps(
         {"construction": name, "params": params, "summary": summary(checks),
          "ok": all(ch.ok for ch in checks), "checks": [ch.as_dict() for ch in checks]},
@@ -222,10 +221,10 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
                         "files": sorted(files), "steps": info["steps"], "frames": info["frames"],
                         "frame_mode": FRAME_MODE})
     row = {"number": number, "name": name, "slug": slug, "params": params, "title": c.title,
-           "source": citation(name, "en") or c.source, "books": [book for book, _ in CITED.get(name, ())],
+           "source": citation(c, "en") or c.source, "books": [cite.book.key for cite in c.cites],
            "method": method, "checks": summary(checks), "ok": all(ch.ok for ch in checks),
-           "steps": len(fig.protocol.steps), "params_text": book_givens(fig)[1] or params_text(fig),
-           "player": first, "thumb": thumb}
+           "steps": len(fig.protocol.steps), "params_text": book_givens(fig, c)[1], "player": first,
+           "thumb": thumb}
     return entries, row
 
 
@@ -394,7 +393,7 @@ def _exit_with_parent(parent: int) -> None:
 
 def _readme(index: list[dict], sources: list[dict]) -> str:
     """The gallery's README (what a repository browser shows): the books, then the plates with their links."""
-    from .render.notation import BOOKS
+    from .constructions.phrases import BOOKS
     from .render.site import book_title, book_where, errata_slug
 
     lines = [README_HEAD + "  The graphical methods of four German texts on steam-engine design from around "
@@ -423,9 +422,10 @@ def _readme(index: list[dict], sources: list[dict]) -> str:
 def _index_html(index: list[dict], sources: list[dict] | None = None) -> str:
     """The front page (:func:`construct.render.site.index_page`): the books, the plates, the errata."""
     from .books.errata import WRONG
+    from .constructions.phrases import BOOKS
     from .render.site import index_page
 
-    return index_page(index, _errata_sources() if sources is None else sources, wrong=WRONG)
+    return index_page(index, _errata_sources() if sources is None else sources, list(BOOKS.values()), wrong=WRONG)
 
 
 def _errata_sources() -> list[dict]:
@@ -443,6 +443,7 @@ def _errata_sources() -> list[dict]:
 def _site_pages(root: Path, index: list[dict], sources: list[dict] | None = None) -> None:
     """The gallery's other pages: each figure's checks (from its checks.json), each book's errata."""
     from .books.errata import CLASS_MEANINGS, WRONG
+    from .constructions.phrases import BOOKS
     from .render.site import checks_page, errata_page, errata_slug
 
     for e in index:
@@ -451,5 +452,6 @@ def _site_pages(root: Path, index: list[dict], sources: list[dict] | None = None
             f"Fig. {e['number']}. {e['title'].de} ({e['params_text']}): checks", report["checks"],
             back=f"../index.html#{e['slug']}", summary=report["summary"], method=e["method"]))
     for src in _errata_sources() if sources is None else sources:
-        write_text(root / errata_slug(src["book"]), errata_page(src["book"], src["rows"], back="index.html",
-                                                                meanings=CLASS_MEANINGS, wrong=WRONG))
+        write_text(root / errata_slug(src["book"]), errata_page(
+            BOOKS[src["book"]], src["rows"], back="index.html", meanings=CLASS_MEANINGS, wrong=WRONG,
+            books=list(BOOKS.values())))

@@ -14,6 +14,7 @@ import pytest
 
 from construct.books.errata import CLASS_MEANINGS, WRONG, all_errata
 from construct.cli.main import main
+from construct.constructions.phrases import BOOKS
 from construct.kernel.protocol import Caption
 from construct.render.site import checks_page, errata_page, errata_slug, index_page
 
@@ -76,13 +77,14 @@ def _rows(book: str) -> list[dict]:
 def pages() -> dict[str, tuple[str, _Page]]:
     out = {}
     for book in BOOK_NAMES:
-        text = errata_page(book, _rows(book), back="index.html", meanings=CLASS_MEANINGS, wrong=WRONG)
+        text = errata_page(BOOKS[book], _rows(book), back="index.html", meanings=CLASS_MEANINGS, wrong=WRONG,
+                           books=list(BOOKS.values()))
         out[book] = (text, _Page(text))
     return out
 
 
 def test_each_book_has_errata_and_its_page_is_named_after_it():
-    assert {e.source for e in all_errata()} == set(BOOK_NAMES)
+    assert {e.source for e in all_errata()} == set(BOOK_NAMES) == set(BOOKS)
     assert [errata_slug(b) for b in BOOK_NAMES] == [f"errata-{b}.html" for b in BOOK_NAMES]
 
 
@@ -147,7 +149,7 @@ def test_formulas_are_mathml_and_no_raw_latex_is_shown(pages, book):
 def test_baumanns_fraction_is_a_fraction():
     # errata-004 showed `\frac{s_1 - s_a}{s_a + s_1}` as source; its true form has s_a + s_0 below the line
     e = next(e for e in _rows("baumann") if e["row"] == "df_x")
-    page = errata_page("baumann", [e], back="index.html", meanings=CLASS_MEANINGS, wrong=WRONG)
+    page = errata_page(BOOKS["baumann"], [e], back="index.html", meanings=CLASS_MEANINGS, wrong=WRONG)
     frac = re.findall(r"<mfrac>(.*?)</mfrac>", page)
     assert ("<msub><mi>s</mi><mi>a</mi></msub><mo>+</mo><msub><mi>s</mi><mn>0</mn></msub>" in frac[-1]
             and "<msub><mi>s</mi><mn>1</mn></msub><mo>−</mo><msub><mi>s</mi><mi>a</mi></msub>" in frac[-1])
@@ -207,7 +209,7 @@ def test_the_front_page_says_what_the_site_is_and_shows_the_plates():
     entries = [_entry(1, True), _entry(2, False)]
     sources = [{"book": b, "count": len(_rows(b)), "classes": {c: sum(e["class"] == c for e in _rows(b))
                                                                 for c in CLASS_MEANINGS}} for b in BOOK_NAMES]
-    text = index_page(entries, sources, wrong=WRONG)
+    text = index_page(entries, sources, list(BOOKS.values()), wrong=WRONG)
     page = _Page(text)
     visible = page.text
     # what the books are: author, title, year (seeds/004: "Autor: A. Baumann", "Jahrgang 1902"), what they teach

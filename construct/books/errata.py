@@ -515,14 +515,14 @@ def errata_of(book: str = "all") -> list[Erratum]:
     >>> {e.source for e in errata_of("baumann")} == {e.source for e in errata_of("004")} == {"baumann"}
     True
     """
-    from ..render.notation import book as named
+    from ..constructions.phrases import book as named
 
     if not isinstance(book, str) or not book.strip():  # an empty --book '' is an unset variable, not "all"
         raise InvalidParameter(f"name a book (anhang-ii, handbook, mechanics, baumann) or 'all', got {book!r}")
     out = all_errata()
     if book == "all":
         return out
-    name = named(book).name
+    name = named(book).key
     return [e for e in out if e.source == name]
 
 

@@ -10,7 +10,8 @@ on a click on its heading (a few lines of script; without script it is
 shown whole, in the book's order).  The books' formulas are MathML
 (:mod:`construct.render.mathml`).
 
->>> page = errata_page("anhang-ii", [{"table": "T1", "row": "0°", "column": "cos ω", "printed": "1",
+>>> from construct.constructions.phrases import ANHANG_II
+>>> page = errata_page(ANHANG_II, [{"table": "T1", "row": "0°", "column": "cos ω", "printed": "1",
 ...                    "true": 1.0, "units": 0.0, "class": "agrees", "note": ""}], back="index.html",
 ...                    meanings={"agrees": "correctly rounded"}, wrong=())
 >>> page.count("<tr") == 2 and 'href="index.html"' in page and "Darstellung der Massendrücke" in page
@@ -22,12 +23,31 @@ from __future__ import annotations
 import html
 import math
 import re
-from typing import Any, Mapping, Sequence
+from typing import Any, Mapping, Protocol, Sequence
 
 from .mathml import formula_html, with_subscripts
-from .notation import BOOKS, Book, cited_as, signed
+from .notation import signed
 
-__all__ = ["index_page", "checks_page", "errata_page", "errata_slug", "thumbnail_view", "book_title", "book_where"]
+__all__ = ["Source", "index_page", "checks_page", "errata_page", "errata_slug", "thumbnail_view", "book_title",
+           "book_where"]
+
+
+class Source(Protocol):
+    """A book as the site shows it (:class:`construct.constructions.phrases.Book` is one)."""
+
+    @property
+    def key(self) -> str: ...
+    @property
+    def author(self) -> str | None: ...
+    @property
+    def title_de(self) -> str: ...
+    @property
+    def where(self) -> str: ...
+    @property
+    def year(self) -> str: ...
+    @property
+    def teaches(self) -> str: ...
+    def cited(self, lang: str = "en") -> str: ...
 
 _esc = html.escape
 
@@ -115,25 +135,27 @@ def errata_slug(book: str) -> str:
     return f"errata-{''.join(ch for ch in book if ch.isalnum() or ch == '-')}.html"
 
 
-def book_title(b: Book) -> str:
+def book_title(b: Source) -> str:
     """A book by its author and its title in the book's words (a section's title is quoted in it already).
 
+    >>> from construct.constructions.phrases import BOOKS
     >>> book_title(BOOKS["baumann"])[:44], book_title(BOOKS["mechanics"])
     ('A. Baumann, „Ein neues Verfahren zur Bestimm', '§ 146–147, Zwei Kurbeln unter 90°')
     """
     return ", ".join(x for x in (b.author, f"„{b.title_de}“" if b.author else b.title_de) if x)
 
 
-def book_where(b: Book) -> str:
+def book_where(b: Source) -> str:
     """Where and when a book was printed, or what dates an excerpt that does not say.
 
+    >>> from construct.constructions.phrases import BOOKS
     >>> book_where(BOOKS["baumann"])
     'Dinglers Polytechnisches Journal, Bd. 317, S. 341, 1902'
     """
     return ", ".join(x for x in (b.where, b.year) if x)
 
 
-def _book_heading(b: Book) -> str:
+def _book_heading(b: Source) -> str:
     """A book as a page's heading cites it: author, title, where and when it was printed."""
     return book_title(b) + (f" ({book_where(b)})" if b.year[:1].isdigit() else "")
 
@@ -150,31 +172,32 @@ _WHO = (
 )
 
 
-def index_page(entries: Sequence[Mapping[str, Any]], sources: Sequence[Mapping[str, Any]], *,
-               wrong: Sequence[str] = ()) -> str:
+def index_page(entries: Sequence[Mapping[str, Any]], sources: Sequence[Mapping[str, Any]], books: Sequence[Source],
+               *, wrong: Sequence[str] = ()) -> str:
     """The gallery's front page: what the books are, whom the site serves, the plates as a grid, the errata.
 
     *entries*: one per figure (number, slug, title, params_text, source, books, ok, steps, player, thumb);
-    *sources*: one per book with errata (book, count, classes); *wrong*: the classes of a wrong number.
+    *sources*: one per book with errata (book, count, classes); *books*: the source texts in order;
+    *wrong*: the classes of a wrong number.
     """
     figures: dict[str, list[Mapping[str, Any]]] = {}
     for e in entries:
         for name in e.get("books", ()):
             figures.setdefault(name, []).append(e)
     errata = {src["book"]: src for src in sources}
-    books = []
-    for name, b in BOOKS.items():
+    cards = []
+    for b in books:
+        name = b.key
         figs = ", ".join(f'<a href="#{_esc(e["slug"])}">{e["number"]}</a>' for e in figures.get(name, ()))
         src = errata.get(name)
         bad = sum(n for c, n in src["classes"].items() if c in wrong) if src else 0
-        books.append(
+        cards.append(
             f'<div><h3>{_esc(book_title(b))}</h3><p class="meta">{_esc(book_where(b))}</p>'
             f"<p>Teaches {_esc(b.teaches)}.</p>"
             + (f"<p>Figures here: {figs}</p>" if figs else "")
             + (f'<p><a href="{errata_slug(name)}">Errata</a>: {src["count"]} printed numbers and formulas checked, '
                f'{bad} wrong</p>' if src else "") + "</div>")
     who = "".join(f"<p><b>{_esc(h)}</b>: {_esc(t)}</p>" for h, t in _WHO)
-    cards = [_card(e) for e in entries]
     body = (
         "<header><h1>Steam-engine figures by compass and straightedge</h1>\n"
         '<p class="lead">The graphical methods of four German texts on steam-engine design from around 1900, '
@@ -182,8 +205,9 @@ def index_page(entries: Sequence[Mapping[str, Any]], sources: Sequence[Mapping[s
         'value checked against the books\' formulas. <a href="#plates">The plates</a> are below: click one to open '
         "it; a step player shows how it is constructed.</p></header>\n"
         f'<section class="who">{who}</section>\n'
-        f'<h2 id="books">The books</h2>\n<section class="books">{"".join(books)}</section>\n'
-        f'<h2 id="plates">The plates ({len(entries)} figures)</h2>\n<div class="cards">\n' + "\n".join(cards)
+        f'<h2 id="books">The books</h2>\n<section class="books">{"".join(cards)}</section>\n'
+        f'<h2 id="plates">The plates ({len(entries)} figures)</h2>\n<div class="cards">\n'
+        + "\n".join(map(_card, entries))
         + "\n</div>\n"
         '<p class="meta">Built by <code>construct gallery</code>; every page works offline.</p>')
     return _page("Steam-engine figures by compass and straightedge", body, style=_FRONT)
@@ -359,16 +383,15 @@ def _where(e: Mapping[str, Any]) -> str:
     return " · ".join(with_subscripts(str(e[k])) for k in ("table", "row", "column") if e[k] and e[k] != "value")
 
 
-def errata_page(source: str, errata: Sequence[Mapping[str, Any]], *, back: str, meanings: Mapping[str, str],
-                wrong: Sequence[str]) -> str:
+def errata_page(book: Source, errata: Sequence[Mapping[str, Any]], *, back: str, meanings: Mapping[str, str],
+                wrong: Sequence[str], books: Sequence[Source] = ()) -> str:
     """A book's errata for a historian: what is wrong first (each with its true value and likely cause),
     the classes, then every printed number beside its true value, filtered by table and class, sortable.
 
-    *source* is the book's name (:data:`construct.render.notation.BOOKS`); *meanings* what each class means
-    (the legend ``construct errata --classes`` prints), *wrong* the classes of what is wrong.
+    *meanings* is what each class means (the legend ``construct errata --classes`` prints), *wrong* the
+    classes of what is wrong, *books* all the books (the page links to the others' errata).
     """
-    b = BOOKS.get(source)
-    heading = _book_heading(b) if b is not None else source
+    heading = _book_heading(book)
     numbers = [e for e in errata if e["table"] != "formula"]
     count = {c: sum(e["class"] == c for e in numbers) for c in meanings}
     bad = [e for e in errata if e["class"] in wrong]
@@ -413,8 +436,8 @@ def errata_page(source: str, errata: Sequence[Mapping[str, Any]], *, back: str, 
                + ('<option value="*">wrong (any cause)</option>' if bad else "")
                + "".join(f"<option>{_esc(c)}</option>" for c in present)
                + f'</select></label> <span id="shown">{len(errata)}</span> of {len(errata)} shown</form>')
-    others = " · ".join(f'<a href="{errata_slug(n)}">{_esc(cited_as(o))}</a>' if n != source
-                        else f"<b>{_esc(cited_as(o))}</b>" for n, o in BOOKS.items())
+    others = " · ".join(f'<a href="{errata_slug(o.key)}">{_esc(o.cited())}</a>' if o.key != book.key
+                        else f"<b>{_esc(o.cited())}</b>" for o in books or (book,))
     body = (f'<p><a href="{_esc(back)}">← gallery</a> · errata of the books: {others}</p>\n'
             f"<h1>Errata: {_esc(heading)}</h1>\n<p class=\"lead\">{_esc(lead)}</p>\n{summary}\n{legend}\n"
             "<h2>Every printed number</h2>\n<p>Each beside its true value (from the formula the text names); "

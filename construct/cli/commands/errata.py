@@ -27,7 +27,8 @@ import json
 from collections import Counter
 
 from ...books.errata import CLASS_MEANINGS, CLASSES, Erratum, errata_of
-from ...render.notation import BOOKS, cited_as, signed
+from ...constructions.phrases import BOOKS
+from ...render.notation import signed
 from ..common import add_format_option
 
 NAME = "errata"
@@ -82,7 +83,7 @@ def _text_table(entries: list[Erratum]) -> str:
     for name in dict.fromkeys(e.source for e in entries):
         if lines:
             lines.append("")
-        lines += [cited_as(BOOKS[name]) if name in BOOKS else name, ""]
+        lines += [BOOKS[name].cited() if name in BOOKS else name, ""]
         lines += _book_table([e for e in entries if e.source == name])
     lines.append(_summary(entries))
     return "\n".join(lines)

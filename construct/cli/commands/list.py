@@ -6,7 +6,7 @@ import json
 
 from ...constructions import get, names
 from ...kernel.protocol import jsonable
-from ...render.notation import CITED, citation
+from ...render.notation import citation
 from ..common import add_format_option
 
 NAME = "list"
@@ -22,8 +22,8 @@ def run(args) -> int:
     if args.format == "json":
         # the source as a reader cites it (author, title, figure) and the books by the names --book takes
         print(json.dumps([{"name": c.name, "title": {"en": c.title.en, "de": c.title.de},
-                           "source": citation(c.name, "en", after=False) or c.source,
-                           "books": [book for book, _ in CITED.get(c.name, ())],
+                           "source": citation(c, "en", after=False) or c.source,
+                           "books": [cite.book.key for cite in c.cites],
                            "parameters": jsonable(dict(c.defaults))} for c in found], indent=1, ensure_ascii=False))
         return 0
     width = max(len(c.name) for c in found)

@@ -38,7 +38,7 @@ __all__ = [
     "TABLE_ORDER",
 ]
 
-#: The book's name (construct.render.notation.BOOKS: author, title, year): ``construct errata --book anhang-ii``.
+#: The book's name (construct.constructions.phrases.BOOKS: author, title, year): ``construct errata --book anhang-ii``.
 SOURCE = "anhang-ii"
 
 #: The three rod ratios L/r every table of the appendix is computed for.

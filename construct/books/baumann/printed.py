@@ -24,7 +24,7 @@ __all__ = ["SOURCE", "all_printed", "printed_formulas", "TABLE_KZ", "TABLE_V",
            "TABLE_1_G2", "TABLE_1_TOTAL", "TABLE_2_MOMENT", "TABLE_2_WEIGHT", "WORKED_V", "WORKED_TOTALS",
            "WORKED_RIMS", "FORMULA_ROWS", "FORMULA_TOTALS", "FORMULA_RIMS", "MACHINE_COLUMNS"]
 
-#: The book's name (construct.render.notation.BOOKS: author, title, year): ``construct errata --book baumann``.
+#: The book's name (construct.constructions.phrases.BOOKS: author, title, year): ``construct errata --book baumann``.
 SOURCE = "baumann"
 
 

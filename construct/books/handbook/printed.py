@@ -18,7 +18,7 @@ from ..printed import Printed
 
 __all__ = ["SOURCE", "GIVEN", "PART_WEIGHTS", "worked_example"]
 
-#: The book's name (construct.render.notation.BOOKS: author, title, year): ``construct errata --book handbook``.
+#: The book's name (construct.constructions.phrases.BOOKS: author, title, year): ``construct errata --book handbook``.
 SOURCE = "handbook"
 
 #: The data the example starts from, as printed (not results: nothing to check).

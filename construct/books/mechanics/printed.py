@@ -26,7 +26,7 @@ from ..printed import Printed
 
 __all__ = ["SOURCE", "PRINTED", "FIGURE"]
 
-#: The book's name (construct.render.notation.BOOKS: author, title, year): ``construct errata --book mechanics``.
+#: The book's name (construct.constructions.phrases.BOOKS: author, title, year): ``construct errata --book mechanics``.
 SOURCE = "mechanics"
 
 #: The figure the seed refers to: the speeds as radii on the crank positions.

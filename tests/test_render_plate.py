@@ -185,3 +185,24 @@ def test_two_sided_piston_force_plate_is_a_landscape_sheet_legible_at_1400_by_10
         for p in ("", "r"):
             assert math.isclose(at[f"{p}K{k}"][1] - at[f"{p}F{k}"][1],
                                 fig.replay[f"{p}K{k}"][1] - fig.replay[f"{p}F{k}"][1], abs_tol=1e-12)
+
+
+def test_a_plate_carries_its_whole_caption_and_the_legend_of_its_letters(tmp_path):
+    # the plate prints the German caption with the givens three lines hold; the desc keeps both languages whole
+    # and what J, C, O and P_b stand for (seed 001: "Im Punkte J ... wird die Kolbenkraft Null")
+    import json
+
+    from construct.render.output import write_outputs
+
+    c = get("piston-force")
+    fig = c.figure(weight=990.0)
+    write_outputs(tmp_path, c, fig, STYLES["historical"], fig_number=16, outputs=(), protocol=False)
+    svg = (tmp_path / "final.svg").read_text(encoding="utf-8")
+    desc = json.loads(ET.fromstring(svg.encode("utf-8")).find(f"{SVG}desc").text)
+    printed = " ".join("".join(t.itertext()) for t in ET.fromstring(svg.encode("utf-8")).iter(f"{SVG}text")
+                       if "cap" in t.get("class", ""))
+    whole_de, whole_en = plate_caption(c, fig, 16)
+    assert desc["caption"] == {"de": whole_de, "en": whole_en}
+    assert "Halbkreis in 18 Teilen" in whole_de and "Halbkreis in 18 Teilen" not in printed  # cut on the plate
+    assert printed.startswith("Fig. 16. Kolbenüberdrucklinie") and "piston" not in printed.lower()
+    assert desc["legend"]["J"]["de"].startswith("Druckwechsel") and set(desc["legend"]) >= {"O", "C", "J", "P_b"}

@@ -27,6 +27,7 @@ from ..io.manifest import foreign_entries, replaced_with_manifest
 from ..io.staging import write_text
 from .captions import PlateCaption
 from .notation import Described, Drawn, caption, citation, given_rows, givens, phrases, with_provenance
+from .plate import Plate, plate_of
 from .scene import Scene, build_scene, thin
 from .styles import Style
 from .svg import Drawing, render_svg
@@ -117,12 +118,11 @@ def _size(n: float) -> str:
     return f"{n:.3g} TB"
 
 
-def scene_for(construction: Described | None, figure: Drawn, *, plate: bool = False) -> Scene:
-    """The figure's scene; a plate carries the construction's furniture and line looks (:mod:`.plate`)."""
+def scene_for(construction: Described | None, figure: Drawn, *, plate: "bool | Plate" = False) -> Scene:
+    """The figure's scene; a plate carries the construction's furniture and line looks (:mod:`.plate`; *plate*
+    may be the construction's :class:`~construct.render.plate.Plate` already made)."""
     if plate:
-        from .plate import plate_of
-
-        p = plate_of(construction, figure)
+        p = plate if isinstance(plate, Plate) else plate_of(construction, figure)
         return build_scene(figure, title=figure_title(construction, figure), plate=True,
                            furniture=p.furniture, looks=dict(p.looks), panels=p.panels)
     return build_scene(figure, title=figure_title(construction, figure))
@@ -216,10 +216,12 @@ def write_outputs(stage: Path, construction: Described | None, figure: Drawn, st
     if drawing is None:
         drawing = Drawing(scene, st) if (ks or outputs or not st.plate) else None
     if st.plate:
-        final = render_svg(scene_for(construction, figure, plate=True), style=st,
+        drawn = plate_of(construction, figure)
+        final = render_svg(scene_for(construction, figure, plate=drawn), style=st,
                            caption=printed_caption(construction, figure, fig_number))
-        # the plate prints one language and the givens that fit: both captions whole go with it
-        final = with_provenance(final, construction, figure, plate_caption(construction, figure, fig_number))
+        # the plate prints one language and the givens that fit: both captions whole go with it, and its legend
+        final = with_provenance(final, construction, figure, plate_caption(construction, figure, fig_number),
+                                drawn.legend)
     else:
         final = with_provenance(drawing.layered(), construction, figure)  # type: ignore[union-attr]
     write_text(stage / "final.svg", final)

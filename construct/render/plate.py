@@ -165,11 +165,14 @@ class Panel:
 
 @dataclass(frozen=True)
 class Plate:
-    """What a construction adds to its plate: looks of named objects, furniture, and the sheet's panels."""
+    """What a construction adds to its plate: looks of named objects, furniture, the sheet's panels, and the
+    legend of its letters (letter -> (German, English): what J or P_b stands for, as the book's text says it;
+    it goes with the plate's whole caption into its ``<desc>``, not onto the sheet)."""
 
     looks: Mapping[str, str] = field(default_factory=dict)
     furniture: tuple = ()
     panels: tuple[Panel, ...] = ()
+    legend: Mapping[str, tuple[str, str]] = field(default_factory=dict)
 
     @classmethod
     def from_data(cls, data: Mapping[str, Any] | None) -> "Plate":
@@ -193,7 +196,8 @@ class Plate:
                 raise InvalidParameter(f"unknown plate furniture {kind!r}; choose one of {', '.join(sorted(kinds))}")
             items.append(kinds[kind](**d))
         panels = tuple(Panel(tuple(p["names"]), tuple(p.get("shift", (0.0, 0.0)))) for p in data.get("panels", ()))
-        return cls(dict(data.get("looks", {})), tuple(items), panels)
+        legend = {str(k): (str(v[0]), str(v[1])) for k, v in dict(data.get("legend", {})).items()}
+        return cls(dict(data.get("looks", {})), tuple(items), panels, legend)
 
 
 def plate_of(construction: Any, figure: Any) -> Plate:

@@ -104,7 +104,14 @@ def piston_force_plate(fig: Figure) -> dict:
                 Z = R[name]
                 looks[name] = "unlettered"
                 furniture.append({"kind": "lettering", "at": (Z[0], Z[1] + 2.2 * d), "text": letters[name]})
-    return {"looks": looks, "furniture": furniture, "panels": panels}
+    # what the letters stand for, in the words of seed 001 ("Im Punkte J ... wird die Kolbenkraft Null und zwischen
+    # J und C negativ", "von J bis O")
+    legend = {"P = F·p_ü": ("Kolbenkraft, Gl. (297)", "piston force, eq. (297)"),
+              "P_b": ("Massenkräfte, Gl. (298)", "mass forces, eq. (298)"),
+              "J": ("Druckwechsel: die Kolbenkraft wird null", "reversal: the piston force is zero"),
+              "C": ("Ende der Kolbenkraftlinie", "end of the piston-force line"),
+              "O": ("Ende der Kolbenweglinie (Totpunkt)", "end of the piston-path line (dead centre)")}
+    return {"looks": looks, "furniture": furniture, "panels": panels, "legend": legend}
 
 
 #: The two-sided plate's panels: each side's indicator diagram over its stroke's force diagram.  The stroke

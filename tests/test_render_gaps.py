@@ -12,7 +12,8 @@ import re
 
 import pytest
 
-from construct.render.gaps import Gap, arc_parts, bezier_controls, curve_d, polyline_d, segment_parts
+from construct.render.gaps import Gap, arc_parts, curve_d, polyline_d, segment_parts
+from construct.render.paths import bezier_controls
 
 
 def _cubic(q, t):

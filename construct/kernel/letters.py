@@ -214,14 +214,19 @@ def formula_break(before: str, after: str) -> str | None:
 
 def unbroken(text: str) -> str:
     """*text* with a no-break space wherever a line break would split a number or a formula
-    (:func:`formula_break`): a caption wrapped at its spaces then breaks only between words.
+    (:func:`formula_break`), and after an initial (A. Baumann): a caption wrapped at its spaces then breaks
+    only between words.
 
     >>> unbroken("Fig. 7. Höchstdruck 25 at, r/L = 1/5, Qr/((m₁ + m₂)v₁²) = 0,25.").split(" ")
     ['Fig.\xa07.', 'Höchstdruck', '25\xa0at,', 'r/L\xa0=\xa01/5,', 'Qr/((m₁\xa0+\xa0m₂)v₁²)\xa0=\xa00,25.']
     """
     out = list(text)
     for i, c in enumerate(text):
-        if c == " " and formula_break(text[:i], text[i + 1:]) is not None:
+        if c != " ":
+            continue
+        # a formula, or an initial from its name (A. Baumann): kept on one line
+        if formula_break(text[:i], text[i + 1:]) is not None or re.search(r"(?:^|\s)[A-ZÄÖÜ]\.$", text[:i]) \
+                and text[i + 1:i + 2].isupper():
             out[i] = "\u00a0"
     return "".join(out)
 

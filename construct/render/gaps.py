@@ -21,9 +21,10 @@ from __future__ import annotations
 import math
 from typing import NamedTuple, Sequence
 
+from .paths import bezier_controls
 from .svgdoc import fmt
 
-__all__ = ["Gap", "GapFactory", "segment_parts", "polyline_d", "arc_parts", "curve_d", "bezier_controls", "CLEARANCE"]
+__all__ = ["Gap", "GapFactory", "segment_parts", "polyline_d", "arc_parts", "curve_d", "CLEARANCE"]
 
 XY = tuple[float, float]
 
@@ -199,20 +200,6 @@ def _ring_meets(c: XY, r: float, g: Gap) -> bool:
     near = math.hypot(max(x0 - c[0], 0.0, c[0] - x1), max(y0 - c[1], 0.0, c[1] - y1))
     far = max(math.hypot(x - c[0], y - c[1]) for x in (x0, x1) for y in (y0, y1))
     return near <= r <= far
-
-
-def bezier_controls(P: Sequence[XY]) -> list[tuple[XY, XY, XY, XY]]:
-    """The cubic pieces of the smooth curve through *P* (Catmull-Rom, as :func:`construct.render.paths.curve_path`
-    draws it): (p1, c1, c2, p2) per piece."""
-    out = []
-    for i in range(len(P) - 1):
-        p0 = P[i - 1] if i > 0 else P[i]
-        p1, p2 = P[i], P[i + 1]
-        p3 = P[i + 2] if i + 2 < len(P) else P[i + 1]
-        c1 = (p1[0] + (p2[0] - p0[0]) / 6.0, p1[1] + (p2[1] - p0[1]) / 6.0)
-        c2 = (p2[0] - (p3[0] - p1[0]) / 6.0, p2[1] - (p3[1] - p1[1]) / 6.0)
-        out.append((p1, c1, c2, p2))
-    return out
 
 
 def _cubic(q, t: float) -> XY:

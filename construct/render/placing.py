@@ -33,6 +33,7 @@ import numpy as np
 from .camera import PLAYER_FIGURE_PX, THIN_FROM, ZOOM_LEVELS, View, level, zoom_of
 from .gaps import Gap
 from .lettering import HALO_PX, LEADER_FROM, LineIndex, label_box, place, text_box
+from .paths import bezier_controls
 from .plate import plain
 from .scene import Mark, MarkKind, Scene, label_offset_direction
 from .styles import Style
@@ -516,11 +517,7 @@ def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
     if m.kind is MarkKind.CURVE and not m.straight and len(g) > 2:
         # as drawn (curve_path): the Catmull-Rom pieces, which leave the chords where the curve bends
         out = [tuple(g[0])]
-        for i in range(len(g) - 1):
-            p0, p1, p2 = g[i - 1] if i > 0 else g[i], g[i], g[i + 1]
-            p3 = g[i + 2] if i + 2 < len(g) else g[i + 1]
-            c1 = (p1[0] + (p2[0] - p0[0]) / 6.0, p1[1] + (p2[1] - p0[1]) / 6.0)
-            c2 = (p2[0] - (p3[0] - p1[0]) / 6.0, p2[1] - (p3[1] - p1[1]) / 6.0)
+        for p1, c1, c2, p2 in bezier_controls(g):
             for t in (0.25, 0.5, 0.75, 1.0):
                 s = 1 - t
                 out.append(tuple(s * s * s * a + 3 * s * s * t * b + 3 * s * t * t * c + t * t * t * d

@@ -43,7 +43,7 @@ import math
 import re
 
 from ...kernel.letters import PLATE_CAPTION_LINES, formula_break
-from .sheet import Sheet, Text
+from .sheet import Sheet, Text, segment_in_box
 
 __all__ = ["KINDS", "CORE_MARGIN", "CAPTION_LINES", "check_plate", "core_of", "through", "caption_breaks"]
 
@@ -88,26 +88,6 @@ def _dist_point_segment(px: float, py: float, ax: float, ay: float, bx: float, b
     return math.hypot(ax + t * dx - px, ay + t * dy - py)
 
 
-def _crosses(seg, b) -> bool:
-    """Does the segment (x0, y0, x1, y1) enter the box (Liang–Barsky)?"""
-    x0, y0, x1, y1 = seg
-    dx, dy = x1 - x0, y1 - y0
-    t0, t1 = 0.0, 1.0
-    for p, q in ((-dx, x0 - b[0]), (dx, b[2] - x0), (-dy, y0 - b[1]), (dy, b[3] - y0)):
-        if p == 0:
-            if q < 0:
-                return False
-        else:
-            t = q / p
-            if p < 0:
-                t0 = max(t0, t)
-            else:
-                t1 = min(t1, t)
-            if t0 > t1:
-                return False
-    return True
-
-
 def through(seg, half: float, core) -> bool:
     """Does a stroke along *seg* of half width *half* cover any of the box *core* (the same coordinates)?
 
@@ -116,7 +96,7 @@ def through(seg, half: float, core) -> bool:
     """
     if core[2] <= core[0] or core[3] <= core[1]:
         return False
-    if _crosses(seg, core):
+    if segment_in_box(seg, core):
         return True
     x0, y0, x1, y1 = seg
     d = min(_dist_point_box(x0, y0, core), _dist_point_box(x1, y1, core),

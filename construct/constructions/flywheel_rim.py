@@ -42,7 +42,7 @@ from .phrases import BAUMANN_1902, Cite, number
 __all__ = ["FLYWHEEL_RIM", "build_flywheel_rim", "flywheel_rim_checks", "disc_half_width"]
 
 PLATE = (r"axis|mid", r"O", r"R1", r"rim\d", r"disc[UD]", r"hub\d", r"shaft", r"rho[UD]?", r"[UD]\d+", r"K[UD]",
-         r"(hub|rim|disc)section")
+         r"section", r"(hub|rim)section")
 
 
 def _givens(r: Any, b1: Any, rim: Any) -> dict[str, float]:
@@ -132,16 +132,12 @@ def build_flywheel_rim(*, r: float, b1: float, rim: float) -> Figure:
     with b.group("the planimeter: the disc's section", "Planimeter: Querschnitt der Scheibe"):
         b.area_between("section", "discU", "discD", "U2", "KU", hatch_deg=45.0, role="result",
                        de="Scheibenquerschnitt zwischen r1/6 und r1", en="section of the disc between r1/6 and r1")
-    with b.group("the sections hatched: hub, disc up to the rim, rim",
-                 "die Schnitte schraffiert: Nabe, Scheibe bis an den Kranz, Kranz"):
-        # the disc is counted up to r1 (Baumann: "bewusstermassen ... zu viel gerechnet"), drawn up to the rim
-        b.intersect("rimIdisc", "rimvI", "discU", rule=("only",), de="Scheibenseite am inneren Kranzrand",
-                    en="face of the disc at the rim's inner edge")
-        b.area_between("discsection", "discU", "discD", "U2", "rimIdisc", hatch_deg=135.0, role="result",
-                       de="Scheibe im Schnitt, bis an den Kranz", en="the disc in section, up to the rim")
-        b.area_between("hubsection", "hub0", "hub2", "HSU", "HU2", hatch_deg=45.0, role="result",
+    with b.group("hub and rim in section", "Nabe und Kranz im Schnitt"):
+        # hatched across the disc; the disc, counted up to r1 (Baumann: "bewusstermassen ... zu viel gerechnet"),
+        # is hatched on the plate up to the rim, whose section lies over it
+        b.area_between("hubsection", "hub0", "hub2", "HSU", "HU2", hatch_deg=135.0, role="result",
                        de="Nabe im Schnitt", en="the hub in section")
-        b.area_between("rimsection", "rim0", "rim2", "rimIU", "rimOU", hatch_deg=45.0, role="result",
+        b.area_between("rimsection", "rim0", "rim2", "rimIU", "rimOU", hatch_deg=135.0, role="result",
                        de="Kranz im Schnitt", en="the rim in section")
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))

@@ -19,12 +19,16 @@ gap, as the ``d`` of one path (canvas pixels, y down).
 from __future__ import annotations
 
 import math
+import re
 from typing import NamedTuple, Sequence
 
-from .paths import bezier_controls
+from .paths import arc_path, bezier_controls
+from .scene import Mark, MarkKind
 from .svgdoc import fmt
+from .viewport import Viewport
 
-__all__ = ["Gap", "GapFactory", "segment_parts", "polyline_d", "arc_parts", "curve_d", "CLEARANCE"]
+__all__ = ["Gap", "GapFactory", "segment_parts", "polyline_d", "arc_parts", "curve_d", "gapped_mark", "gapped_hatch",
+           "CLEARANCE"]
 
 XY = tuple[float, float]
 
@@ -288,3 +292,34 @@ class GapFactory:
             if got != polyline_d(pts, (), closed):
                 d = got
         return self._f.path(d=d, class_=class_, **kw)
+
+
+def gapped_mark(m: Mark, vp: Viewport, gaps: Sequence[Gap]) -> str | None:
+    """The path of the line *m* drawn through *vp*, broken where it crosses *gaps* (None: it crosses none, or it
+    is not drawn at all)."""
+    g = m.geom
+    if m.look == "hidden":
+        return None
+    if m.kind is MarkKind.SEGMENT or m.straight:
+        pts = [vp.px(g[0], g[1]), vp.px(g[2], g[3])] if m.kind is MarkKind.SEGMENT else [vp.px(*q) for q in g]
+        d = polyline_d(pts, gaps)
+        return d if d != polyline_d(pts, ()) else None
+    if m.kind.round:
+        start, sweep = (0.0, 2 * math.pi) if m.kind is MarkKind.CIRCLE else (g[3], g[4])
+        # on the canvas (y down) the arc's angles turn the other way
+        parts = arc_parts(vp.px(g[0], g[1]), g[2] * vp.scale, -start, -sweep, gaps)
+        if parts is None:
+            return None
+        return "".join(arc_path(vp, g[0], g[1], g[2], -a, -s) for a, s in parts)
+    return curve_d([vp.px(*q) for q in g], gaps)
+
+
+def gapped_hatch(d: str, gaps: Sequence[Gap]) -> str:
+    """Hatching (a path of straight pieces, ``M x y L x y ...``, as :func:`construct.render.paths.hatch_path`
+    writes it) broken where it crosses *gaps*."""
+    runs: list[list[XY]] = []
+    for op, x, y in re.findall(r"([ML])\s*([-\d.e]+)[\s,]+([-\d.e]+)", d):
+        if op == "M" or not runs:
+            runs.append([])
+        runs[-1].append((float(x), float(y)))
+    return "".join(polyline_d(run, gaps) for run in runs)

@@ -173,15 +173,15 @@ class _Grid:
                     got.append(b)
 
 
-def _hits(box, seg) -> bool:
-    """Does the segment (x0, y0, x1, y1) cross the box? (Liang–Barsky clipping.)"""
+def _clipped(box, seg) -> tuple[float, float] | None:
+    """The part (t0, t1) of the segment (x0, y0, x1, y1) inside the box, or None (Liang–Barsky clipping)."""
     x0, y0, x1, y1 = seg
     dx, dy = x1 - x0, y1 - y0
     t0, t1 = 0.0, 1.0
     for p, q in ((-dx, x0 - box[0]), (dx, box[2] - x0), (-dy, y0 - box[1]), (dy, box[3] - y0)):
         if p == 0:
             if q < 0:
-                return False
+                return None
         else:
             t = q / p
             if p < 0:
@@ -189,8 +189,13 @@ def _hits(box, seg) -> bool:
             else:
                 t1 = min(t1, t)
             if t0 > t1:
-                return False
-    return True
+                return None
+    return (t0, t1)
+
+
+def _hits(box, seg) -> bool:
+    """Does the segment (x0, y0, x1, y1) cross the box? (Liang–Barsky clipping.)"""
+    return _clipped(box, seg) is not None
 
 
 class LineIndex:
@@ -227,6 +232,21 @@ class LineIndex:
                     cells[key] = [(piece, k)]
                 else:
                     got.append((piece, k))
+
+    def length_in(self, box) -> float:
+        """How much of the lines lies inside *box*: what a plate would break them by for a letter there."""
+        c, total = self.cell, 0.0
+        seen: set[int] = set()
+        for i in range(math.floor(box[0] / c) - 1, math.floor(box[2] / c) + 2):
+            for j in range(math.floor(box[1] / c) - 1, math.floor(box[3] / c) + 2):
+                for seg, _k in self.cells.get((i, j), ()):
+                    if id(seg) in seen:
+                        continue
+                    seen.add(id(seg))
+                    t = _clipped(box, seg)
+                    if t is not None:
+                        total += (t[1] - t[0]) * math.hypot(seg[2] - seg[0], seg[3] - seg[1])
+        return total
 
     def meets(self, box, reach: float = 0.0, only: "Sequence[bool] | None" = None) -> bool:
         """Does a piece of a line (of those *only* marks true, by number) cross *box* grown by *reach*?"""
@@ -320,6 +340,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
             if grid.free(box) and not strokes.meets(box, reach, only):
                 spot = (px + ox, py + oy, box, od)
         clear = None  # with soft lines: the first free spot near the point that no line crosses
+        least = None  # else the near free spot the least of those lines would be broken for: (length, spot)
         for dist in (() if spot else _DISTANCES):
             for turn in _TURNS:
                 a = base + math.radians(turn)
@@ -337,12 +358,17 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                     if spot is None:
                         spot = (lx, ly, box, dist)
                     # beside the line, but on the side the letter belongs (outwards, not across its own figure)
-                    if dist < LEADER_FROM and abs(turn) <= 90 and not soft.meets(box):
-                        clear = (lx, ly, box, dist)
-                        break
+                    if dist < LEADER_FROM and abs(turn) <= 90:
+                        broken = soft.length_in(box)
+                        if broken == 0.0:
+                            clear = (lx, ly, box, dist)
+                            break
+                        # (not along the line the point lies on: a letter on its own axis, turned a right angle)
+                        if abs(turn) <= 60 and (least is None or broken < least[0] - 1e-9):
+                            least = (broken, (lx, ly, box, dist))
             if clear or (spot and (soft is None or dist >= LEADER_FROM)):
                 break
-        spot = clear or spot
+        spot = clear or (least[1] if least is not None else spot)
         if spot is not None and soft is not None and spot[3] < LEADER_FROM and _nearer_dot(spot[2], (px, py), dots):
             # another point stands nearer the letter than its own (17′ beside B): tied to its own by a leader
             spot = (spot[0], spot[1], spot[2], LEADER_FROM)

@@ -80,11 +80,14 @@ def polygon_path(vp: Viewport, pts: tuple) -> str:
     return "M" + "L".join(f"{a} {b}" for a, b in (vp.xy(x, y) for x, y in pts)) + "Z"
 
 
-def hatch_path(vp: Viewport, pts: tuple, spacing_px: float, angle_deg: float = 45.0) -> str:
-    """Fine parallel lines at *angle_deg*, clipped to the polygon by shapely (the draftsman's hatching)."""
+def hatch_path(vp: Viewport, pts: tuple, spacing_px: float, angle_deg: float = 45.0, under: tuple = ()) -> str:
+    """Fine parallel lines at *angle_deg*, clipped to the polygon by shapely (the draftsman's hatching); *under*:
+    the polygons (drawing units) of sections drawn over this one, which its hatching does not run into."""
     from shapely.geometry import LineString, MultiLineString, Polygon
 
     poly = Polygon([vp.px(x, y) for x, y in pts]).buffer(0)
+    for other in under:
+        poly = poly.difference(Polygon([vp.px(x, y) for x, y in other]).buffer(0))
     if poly.is_empty:
         return ""
     x0, y0, x1, y1 = poly.bounds

@@ -29,14 +29,13 @@ from __future__ import annotations
 import bisect
 import dataclasses
 import math
-import re
 from typing import Any, Sequence
 
 from . import captions as _captions
 from . import svgdoc
 from .camera import clear_edges, clear_tag_edges, level, ring_round, step_views
 from .captions import Captions, PlateCaption
-from .gaps import CLEARANCE, Gap, GapFactory, arc_parts, curve_d, polyline_d
+from .gaps import CLEARANCE, Gap, GapFactory, gapped_hatch, gapped_mark
 from .lettering import LEADER_FROM, label_box, text_box, text_width
 from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
 from .placing import Placing, PlacedLabel, place_outwards, text_gap
@@ -217,10 +216,12 @@ class Drawing:
                     extra = (" lbx" if thin else "") + self.placing.hidden_at.get(m.id, "")
                     gid = {"id": f"{mid}-lb"} if mid and " lbm" in extra else {}
                     extra = extra.replace(" lbm", "")
-                    yield "labels", self._letter(vp, m, rel, m.label, "lb", lid, extra=extra, gid=gid)
+                    # a plate breaks its lines for its letters: no paper-coloured halo beneath them
+                    yield "labels", self._letter(vp, m, rel, m.label, "lb", lid, extra=extra, gid=gid,
+                                                 halo=not (self.plate and vp is self.vp))
             return
         if m.kind.stroked:
-            d = self._gapped(m) if self.gaps and vp is self.vp else None
+            d = gapped_mark(m, self.vp, self.gaps) if self.gaps and vp is self.vp else None
             if d is not None:  # broken for the letters it passes
                 yield mark_layer(m), f.path(d=d, class_=cls, **ids)
             else:
@@ -229,10 +230,19 @@ class Drawing:
             yield "areas", f.path(d=shapes[0][2]["d"], class_=f"area {cls}", **ids)
             for _, _, a in shapes[1:]:
                 hid = {"id": f"{mid}-hatch"} if mid else {}
-                d = a["d"]
-                if self.gaps and vp is self.vp:
-                    d = "".join(polyline_d(run, self.gaps) for run in _runs(d))
-                yield "areas", f.path(d=d, class_="hatch", **hid)
+                yield "areas", f.path(d=self._plate_hatch(m, a["d"]) if self.plate and vp is self.vp else a["d"],
+                                      class_="hatch", **hid)
+
+    def _plate_hatch(self, m: Mark, d: str) -> str:
+        """A plate's hatching of area *m* (*d* as the style hatches it): not run into a section drawn over it (the
+        flywheel's disc into its rim), broken for the letters in it."""
+        x0, y0, x1, y1 = _box(m.geom)
+        over = [o.geom for o in self.scene.marks if o.kind is MarkKind.AREA and o.step > m.step
+                and _meets((x0, y0, x1, y1), _box(o.geom))]
+        if over:
+            d = hatch_path(self.vp, m.geom, self.style.hatch_spacing, *(() if m.hatch is None else (m.hatch,)),
+                           under=tuple(over))
+        return gapped_hatch(d, self.gaps) if self.gaps else d
 
     def _gaps(self, pieces: Sequence[Any]) -> list[Gap]:
         """The gaps a plate's lines leave for its letters: round the ink of every letter the plate shows and of
@@ -247,28 +257,6 @@ class Drawing:
                 out.append(Gap.around(box, grow))
         out += [text_gap(p, st, CLEARANCE * st.label_size * p.size) for p in pieces if p.kind == "text"]
         return out
-
-    def _gapped(self, m: Mark) -> str | None:
-        """The path of a plate's line *m* broken for the letters it passes (None: it passes none)."""
-        vp, g = self.vp, m.geom
-        if m.look == "hidden":
-            return None
-        if m.kind is MarkKind.SEGMENT:
-            ends = [vp.px(g[0], g[1]), vp.px(g[2], g[3])]
-            d = polyline_d(ends, self.gaps)
-            return d if d != polyline_d(ends, ()) else None
-        if m.kind.round:
-            start, sweep = (0.0, 2 * math.pi) if m.kind is MarkKind.CIRCLE else (g[3], g[4])
-            # on the canvas (y down) the arc's angles turn the other way
-            parts = arc_parts(vp.px(g[0], g[1]), g[2] * vp.scale, -start, -sweep, self.gaps)
-            if parts is None:
-                return None
-            return "".join(arc_path(vp, g[0], g[1], g[2], -a, -s) for a, s in parts)
-        if m.straight:
-            pts = [vp.px(*q) for q in g]
-            d = polyline_d(pts, self.gaps)
-            return d if d != polyline_d(pts, ()) else None
-        return curve_d([vp.px(*q) for q in g], self.gaps)
 
     def _letter(self, vp: Viewport, m: Mark, rel: tuple[float, float, float], text: str, cls: str,
                 ids: dict, *, halo: bool = True, extra: str = "", gid: dict | None = None) -> Any:
@@ -413,6 +401,8 @@ class Drawing:
         # the furniture first, the break marks over it (they open the rod and the axis for the gap)
         elems = furniture_elements(self.furniture_items, self.vp.px, self.vp.scale,
                                    GapFactory(f, self.gaps) if self.gaps else f, size=self.style.label_size)
+        if self.plate:  # its lines are broken for its lettering: the lettering's halos go
+            elems = [e for e in elems if e.attribs.get("class") != "lb halo"]
         lines = [m.geom for m in sc.marks if m.kind is MarkKind.SEGMENT]
         lines += [(*it.a, *it.b) for it in sc.furniture if isinstance(it, Stroke)]
         elems += break_elements(sc.breaks, lines, self.vp.px, f, size=self.style.label_size)
@@ -653,14 +643,12 @@ def _entry(box: tuple[float, float, float, float], ux: float, uy: float) -> floa
     return t_in if t_in <= t_out else math.inf
 
 
-def _runs(d: str) -> list[list[tuple[float, float]]]:
-    """The polylines of a path of straight pieces only (``M x y L x y ...``, as :func:`hatch_path` writes)."""
-    out: list[list[tuple[float, float]]] = []
-    for op, x, y in re.findall(r"([ML])\s*([-\d.e]+)[\s,]+([-\d.e]+)", d):
-        if op == "M" or not out:
-            out.append([])
-        out[-1].append((float(x), float(y)))
-    return out
+def _box(pts: tuple) -> tuple[float, float, float, float]:
+    return (min(p[0] for p in pts), min(p[1] for p in pts), max(p[0] for p in pts), max(p[1] for p in pts))
+
+
+def _meets(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
 
 def _is_view(elem: Any) -> bool:

@@ -206,3 +206,72 @@ def test_a_plate_carries_its_whole_caption_and_the_legend_of_its_letters(tmp_pat
     assert "Halbkreis in 18 Teilen" in whole_de and "Halbkreis in 18 Teilen" not in printed  # cut on the plate
     assert printed.startswith("Fig. 16. Kolbenüberdrucklinie") and "piston" not in printed.lower()
     assert desc["legend"]["J"]["de"].startswith("Druckwechsel") and set(desc["legend"]) >= {"O", "C", "J", "P_b"}
+
+
+def _elements(svg: str, tag: str, cls: str) -> list:
+    return [e for e in ET.fromstring(svg.encode("utf-8")).iter(f"{SVG}{tag}") if cls in (e.get("class") or "").split()]
+
+
+def _xs(d: str) -> list[float]:
+    return [float(x) for x in re.findall(r"[ML](-?[\d.]+)", d)]
+
+
+def test_flywheel_plate_is_baumanns_half_section_lettered_and_hatched():
+    # Fig. 28: b1 at the rim, b = b1 r1/r between, b2 = 6 b1 at the hub; hub and rim in section, the disc hatched up
+    # to the rim (it is counted to r1, "zu viel gerechnet", but drawn to where the rim begins); centre lines
+    svg = _plate_svg("flywheel-rim")
+    assert {"b₁", "b", "b₂", "Nabe", "Kranz", "Armscheibe"} <= set(_texts(svg))
+    hatch = {re.sub(r"^s\d+-", "", e.get("id")): e.get("d") for e in _elements(svg, "path", "hatch")}
+    assert set(hatch) == {"section-hatch", "hubsection-hatch", "rimsection-hatch"}
+    rim_inner = min(_xs(next(e.get("d") for e in _elements(svg, "path", "area") if e.get("id").endswith("-rimsection"))))
+    assert max(_xs(hatch["section-hatch"])) <= rim_inner + 0.5
+    for name in ("axis", "mid"):
+        assert "centre" in next(e for e in ET.fromstring(svg.encode("utf-8")).iter()
+                                if (e.get("id") or "").endswith(f"-{name}")).get("class").split()
+
+
+def test_four_stroke_plate_marks_the_dead_centres_and_carries_a_pressure_scale():
+    # Abb. 1056: over two revolutions the strokes change at 180°, 360°, 540°; the over-pressure read in at
+    texts = set(_texts(_plate_svg("four-stroke")))
+    assert {"0°", "180°", "360°", "540°", "720°", "at", "0", "5", "10", "15", "20"} <= texts
+    assert {"Ansaugen", "Verdichten", "Arbeiten", "Auspuffen"} <= texts
+
+
+def test_indicator_plate_letters_what_its_caption_names():
+    assert {"P", "P₀", "s₀", "s₃"} <= set(_texts(_plate_svg("indicator-diagram")))
+
+
+def test_the_inertia_plate_sets_l_infinite_upright_and_its_scale_in_at():
+    svg = _plate_svg("inertia-curve", rod_ratio=4.0)
+    (inf,) = [t for t in _elements(svg, "text", "fur-text") if "".join(t.itertext()) == "L = ∞"]
+    assert "rotate" not in (inf.get("transform") or "")  # turned along the line the ∞ read as an 8
+    assert "1 at" in _texts(svg)
+
+
+def test_the_crank_plate_has_one_dot_per_division_on_the_stroke():
+    # seed 001: each division point's piston position (finite rod, 1' ...) is the one dot on the stroke line; the
+    # infinite rod's foot is where its ordinate crosses the line
+    svg = _plate_svg("crank", parts=18)
+    dots = [e for e in _elements(svg, "circle", "pt") if "hidden" not in e.get("class").split()]
+    y_axis = next(float(e.get("cy")) for e in dots if e.get("id").endswith("-O"))
+    on_axis = {round(float(e.get("cx")), 1) for e in dots if abs(float(e.get("cy")) - y_axis) < 0.01}
+    assert len(on_axis) == 18 + 2  # X0 ... X18 (X0, X18 the dead centres) and O
+    assert not [e for e in dots if re.search(r"-Y\d+$", e.get("id"))]
+
+
+def test_the_compound_plate_hatches_its_plus_and_minus_areas_apart_and_ties_nd_hd_to_their_curves():
+    svg = _plate_svg("tangential-pressure", parts=18, revolution=True, machine="compound")
+    slopes = set()
+    for e in _elements(svg, "path", "hatch"):
+        nums = [float(v) for v in re.findall(r"-?[\d.]+", e.get("d"))][:4]
+        slopes.add("vertical" if abs(nums[0] - nums[2]) < 0.01 else "slanted")
+    assert slopes == {"vertical", "slanted"}  # the work taken up and the work given back
+    texts = set(_texts(svg))
+    assert {"ND", "HD", "at"} <= texts and len(_elements(svg, "path", "leader") + _elements(svg, "line", "leader")) >= 2
+
+
+def test_the_two_sided_force_plate_sets_kg_over_its_scale_and_says_why_the_crank_side_hangs():
+    svg = _plate_svg("piston-force", parts=18, revolution=True)
+    at = {"".join(t.itertext()): float(t.get("y")) for t in _elements(svg, "text", "fur-text")}
+    assert at["kg"] < at["10000"]  # over the scale, as in Abb. 1055 (y down)
+    assert "Kurbelseite, nach unten aufgetragen" in at and "Deckelseite" in at

@@ -34,8 +34,9 @@ every value read off a diagram is read from its own base line.
 
 Every value written on a plate is read off the constructed figure (the
 construction's own points), never from the formula the checks compare with.
-:func:`furniture_elements` draws the items in a style; all lettering gets a
-paper-coloured halo, so that no line strikes through a letter.
+:func:`furniture_elements` draws the items in a style, each lettering on a
+paper-coloured halo of itself; a plate's drawing (:class:`construct.render.svg.Drawing`)
+breaks every line for the lettering instead (:mod:`construct.render.gaps`) and leaves the halos out.
 
 >>> d = Dimension((0.0, 0.0), (2.0, 0.0), "s", offset=-0.3)
 >>> ext = extent((d,))

@@ -137,7 +137,7 @@ TANGENTIAL = register(Construction(
         "area_ratio": "tangential-pressure, compound/tandem with diagrams of their own: low-pressure piston area "
                       "over the high-pressure one's, 0.1 .. 20 (default 2.5)",
         "lp_filling": "tangential-pressure --force baumann, compound/tandem: the low-pressure cylinder's filling "
-                      "s1/s, 0.001 .. 1 (default 0.35, illustrative: the seeds print no compound's diagrams)",
+                      "s1/s, 0.001 .. 1 (default 0.35, illustrative: the books print no compound's diagrams)",
         "lp_admission": "the low-pressure cylinder's admission pressure in at over its back pressure, 0.001 .. 1000 "
                         "(default 1.6, illustrative)",
         "lp_back_pressure": "the low-pressure cylinder's back pressure in at absolute, 0.001 .. 1000 (default 0.15)",

@@ -14,7 +14,7 @@ import xml.etree.ElementTree as ET
 import pytest
 
 from construct.constructions import get
-from construct.render.lettering import LEADER_FROM, label_box
+from construct.render.lettering import label_box
 from construct.render.placing import PlacedLabel, place_outwards
 from construct.render.scene import Mark, build_scene
 from construct.render.styles import PLAIN

@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import json
 from dataclasses import replace
-from pathlib import Path
 from typing import Any, Mapping
 
 from .change import Diff

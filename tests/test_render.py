@@ -12,18 +12,10 @@ import re
 import xml.etree.ElementTree as ET
 
 import numpy as np
-import pytest
 
-from construct.constructions import get
 from construct.render.notebook import figure_repr_svg
 from construct.render.paths import hatch_path
 from construct.render.viewport import Viewport
-
-
-@pytest.fixture(scope="module")
-def crank6():
-    c = get("crank")
-    return c, c.figure(parts=6, rod_ratio=5.0)
 
 
 def test_hatching_lies_inside_the_area():

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 
-import pytest
 
 from construct.constructions import get
 from construct.render.animate import MAX_STAGES, animated_svg, stages
@@ -18,12 +17,6 @@ from construct.render.styles import STYLES
 from construct.render.svg import Drawing
 
 SVG = "{http://www.w3.org/2000/svg}"
-
-
-@pytest.fixture(scope="module")
-def crank6():
-    c = get("crank")
-    return c, c.figure(parts=6, rod_ratio=5.0)
 
 
 def test_animated_svg_hides_each_step_until_its_time(crank6):
@@ -44,8 +37,6 @@ def test_animated_svg_hides_each_step_until_its_time(crank6):
     # a step is shown at least 1.5 s (time to read its caption), the pace of the steps is even
     assert all(b - a >= 1.5 * (kb - ka) - 1e-9 for (ka, a), (kb, b) in zip(zip(ks, durs), zip(ks[1:], durs[1:])))
     assert "<script" not in svg
-
-
 
 
 def test_a_long_construction_is_animated_by_its_groups():

@@ -13,19 +13,11 @@ import warnings
 import xml.etree.ElementTree as ET
 
 import cairosvg
-import pytest
 
-from construct.constructions import get
 from construct.render import svgdoc
 from construct.render.output import frame_steps, is_replay_folder, write_replay
 from construct.render.scene import build_scene
 from construct.render.styles import STYLES
-
-
-@pytest.fixture(scope="module")
-def crank6():
-    c = get("crank")
-    return c, c.figure(parts=6, rod_ratio=5.0)
 
 
 def _render_clean(svg: str, width: int | None = None) -> bytes:
@@ -80,7 +72,6 @@ def test_replay_output_is_the_same_in_another_process(tmp_path):
     assert a == b and len(a) > 10
     for rel in a:
         assert (outs[0] / rel).read_bytes() == (outs[1] / rel).read_bytes(), rel
-
 
 
 def test_frames_are_every_step_or_the_ends_of_the_groups(crank6):

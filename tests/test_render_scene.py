@@ -20,12 +20,6 @@ from construct.render.scene import MarkKind, build_scene, extreme_points, label_
 SVG = "{http://www.w3.org/2000/svg}"
 
 
-@pytest.fixture(scope="module")
-def crank6():
-    c = get("crank")
-    return c, c.figure(parts=6, rod_ratio=5.0)
-
-
 def test_historical_plate_shows_results_and_what_locates_them(crank6):
     c, fig = crank6
     sc = build_scene(fig, plate=True)

@@ -12,7 +12,6 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from construct.constructions import get
 from construct.kernel.geometry import Circle, Line, Point
 from construct.render.output import scene_for
 from construct.render.scene import Mark, MarkKind, build_scene
@@ -21,12 +20,6 @@ from construct.render.svg import Drawing, mark_geometry, mark_layer, point_radiu
 from construct.render.viewport import Viewport
 
 SVG = "{http://www.w3.org/2000/svg}"
-
-
-@pytest.fixture(scope="module")
-def crank6():
-    c = get("crank")
-    return c, c.figure(parts=6, rod_ratio=5.0)
 
 
 def _ids(svg: str) -> set[str]:
@@ -106,8 +99,6 @@ def test_a_polyline_is_drawn_with_straight_segments_through_its_corners():
         (px, py), (qx, qy) = drawn[k], drawn[(k + 1) % 6]
         cross = (qx - px) * (my - py) - (qy - py) * (mx - px)
         assert abs(cross) / math.hypot(qx - px, qy - py) < 0.02
-
-
 
 
 def test_a_marks_geometry_is_its_drawing_coordinates_through_the_viewport():

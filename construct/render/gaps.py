@@ -23,7 +23,7 @@ import re
 from typing import NamedTuple, Sequence
 
 from .paths import arc_path, bezier_controls
-from .scene import Mark, MarkKind
+from .marks import Mark, MarkKind
 from .svgdoc import fmt
 from .viewport import Viewport
 

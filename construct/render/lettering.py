@@ -35,7 +35,8 @@ import math
 import os
 from typing import Any, Iterable, Sequence
 
-__all__ = ["place", "LineIndex", "label_box", "text_box", "text_width", "RANK", "LEADER_FROM", "DEFAULT_FONT"]
+__all__ = ["place", "LineIndex", "label_box", "text_box", "text_width", "segment_meets_box", "clipped_segment", "RANK", "LEADER_FROM",
+           "DEFAULT_FONT"]
 
 #: Rank of a role: lower is placed first.
 RANK = {"result": 0, "given": 1}
@@ -173,8 +174,13 @@ class _Grid:
                     got.append(b)
 
 
-def _clipped(box, seg) -> tuple[float, float] | None:
-    """The part (t0, t1) of the segment (x0, y0, x1, y1) inside the box, or None (Liang–Barsky clipping)."""
+def clipped_segment(box, seg) -> tuple[float, float] | None:
+    """The part (t0, t1) of the segment (x0, y0, x1, y1) inside the box (x0, y0, x1, y1), or None when it misses
+    (Liang–Barsky clipping).
+
+    >>> clipped_segment((0, 0, 2, 2), (-1, 1, 3, 1)), clipped_segment((0, 0, 2, 2), (3, 0, 3, 5))
+    ((0.25, 0.75), None)
+    """
     x0, y0, x1, y1 = seg
     dx, dy = x1 - x0, y1 - y0
     t0, t1 = 0.0, 1.0
@@ -193,9 +199,13 @@ def _clipped(box, seg) -> tuple[float, float] | None:
     return (t0, t1)
 
 
-def _hits(box, seg) -> bool:
-    """Does the segment (x0, y0, x1, y1) cross the box? (Liang–Barsky clipping.)"""
-    return _clipped(box, seg) is not None
+def segment_meets_box(box, seg) -> bool:
+    """Does the segment (x0, y0, x1, y1) cross the box (x0, y0, x1, y1)?  (:func:`clipped_segment`)
+
+    >>> segment_meets_box((0, 0, 2, 2), (-1, 1, 3, 1)), segment_meets_box((0, 0, 2, 2), (3, 0, 3, 5))
+    (True, False)
+    """
+    return clipped_segment(box, seg) is not None
 
 
 class LineIndex:
@@ -243,7 +253,7 @@ class LineIndex:
                     if id(seg) in seen:
                         continue
                     seen.add(id(seg))
-                    t = _clipped(box, seg)
+                    t = clipped_segment(box, seg)
                     if t is not None:
                         total += (t[1] - t[0]) * math.hypot(seg[2] - seg[0], seg[3] - seg[1])
         return total
@@ -270,7 +280,7 @@ class LineIndex:
                     if (sx0 < lx and sx1 < lx) or (sx0 > hx and sx1 > hx) or (sy0 < ly and sy1 < ly) \
                             or (sy0 > hy and sy1 > hy):
                         continue
-                    if (only is None or only[k]) and _hits(box, seg):
+                    if (only is None or only[k]) and segment_meets_box(box, seg):
                         return True
         return False
 

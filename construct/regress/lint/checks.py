@@ -38,8 +38,9 @@ from collections import defaultdict
 from dataclasses import dataclass
 from typing import Iterable, Iterator
 
+from ...render.lettering import segment_meets_box
 from . import plates
-from .sheet import Box, Sheet, segment_in_box
+from .sheet import Box, Sheet
 
 __all__ = ["Finding", "KINDS", "check_sheet", "view_count", "MIN_LABEL_PX", "MIN_MARK_PX", "MIN_OPACITY", "VIEW"]
 
@@ -603,7 +604,7 @@ def _struck(sheet: Sheet, views: _Views, seen) -> list[Finding]:
                 b = (tb[0] - d, tb[1] - d, tb[2] + d, tb[3] + d)
                 if pb[2] < b[0] or pb[0] > b[2] or pb[3] < b[1] or pb[1] > b[3]:
                     continue  # the cheap test first: most pieces near a label pass beside it
-                if segment_in_box(p, b):
+                if segment_meets_box(b, p):
                     hit.add(si)
             for si in sorted(hit):
                 s = sheet.strokes[si]

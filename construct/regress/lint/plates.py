@@ -40,10 +40,10 @@ too: it should end where the letter's white begins.
 from __future__ import annotations
 
 import math
-import re
 
 from ...kernel.letters import PLATE_CAPTION_LINES, formula_break
-from .sheet import Sheet, Text, segment_in_box
+from ...render.lettering import segment_meets_box
+from .sheet import Sheet, Text
 
 __all__ = ["KINDS", "CORE_MARGIN", "CAPTION_LINES", "check_plate", "core_of", "through", "caption_breaks"]
 
@@ -96,7 +96,7 @@ def through(seg, half: float, core) -> bool:
     """
     if core[2] <= core[0] or core[3] <= core[1]:
         return False
-    if segment_in_box(seg, core):
+    if segment_meets_box(core, seg):
         return True
     x0, y0, x1, y1 = seg
     d = min(_dist_point_box(x0, y0, core), _dist_point_box(x1, y1, core),

@@ -41,7 +41,7 @@ from ..svgdiff.geometry import arc_centre, parse_path, parse_transform
 from .cascade import PROPERTIES, Cascade, Look, Node, declarations
 from .fonts import text_extents
 
-__all__ = ["Sheet", "Text", "Dot", "Stroke", "Line", "segment_in_box", "read_sheet", "read_views", "player_data", "LintInputError",
+__all__ = ["Sheet", "Text", "Dot", "Stroke", "Line", "read_sheet", "read_views", "player_data", "LintInputError",
            "STATES", "Box", "read_moves"]
 
 Box = tuple[float, float, float, float]
@@ -365,30 +365,6 @@ def _num(raw: str | None, default: float = 0.0) -> float:
     first = re.split(r"[\s,]+", raw.strip())[0] if raw.strip() else ""
     m = re.match(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?", first)
     return float(m.group()) if m else default
-
-
-def segment_in_box(p: tuple[float, float, float, float], b: Box) -> bool:
-    """Does the segment (x0, y0, x1, y1) cross the box's inside (Liang–Barsky)?
-
-    >>> segment_in_box((0.0, 5.0, 10.0, 5.0), (4.0, 4.0, 6.0, 6.0)), segment_in_box((0.0, 9.0, 10.0, 9.0), (4.0, 4.0, 6.0, 6.0))
-    (True, False)
-    """
-    x0, y0, x1, y1 = p
-    dx, dy = x1 - x0, y1 - y0
-    t0, t1 = 0.0, 1.0
-    for q, d in ((x0 - b[0], -dx), (b[2] - x0, dx), (y0 - b[1], -dy), (b[3] - y0, dy)):
-        if d == 0:
-            if q < 0:
-                return False
-            continue
-        t = q / d
-        if d < 0:
-            t0 = max(t0, t)
-        else:
-            t1 = min(t1, t)
-        if t0 > t1:
-            return False
-    return True
 
 
 def _box_of(points) -> Box:

@@ -491,13 +491,13 @@ class Drawing:
             inner.add(self.doc.factory.circle(center=(fmt(ring[0]), fmt(ring[1])), r=fmt(ring[2]), class_="ring"))
         return outer
 
-    def layered(self, caption: Sequence[str] | None = None, *, centred: bool = False, plate: bool = False) -> str:
+    def layered(self, caption: Sequence[str] | None = None, *, centred: bool = False) -> str:
         """The canonical figure: every step a ``data-step`` group, nothing highlighted, the figure's caption.
 
-        Still renderers show the whole figure; frame k is the view of steps 1..k.  A *plate* says so on its
+        Still renderers show the whole figure; frame k is the view of steps 1..k.  A plate says so on its
         root (``<svg class="plate">``): ``construct lint`` holds it to what a printed plate never shows.
         """
-        dwg = self.document(**({"class_": "plate"} if plate else {}))
+        dwg = self.document(**({"class_": "plate"} if self.plate else {}))
         for e in self.body(len(self.scene.steps), mark_steps=False):
             dwg.add(e)
         if self.style.show_caption:
@@ -506,9 +506,9 @@ class Drawing:
                 dwg.add(cap)
         return self.doc.text(dwg)
 
-    def final(self, caption: Sequence[str] | None = None, *, centred: bool = False, plate: bool = False) -> str:
+    def final(self, caption: Sequence[str] | None = None, *, centred: bool = False) -> str:
         """All steps, nothing highlighted, with the figure's caption lines (the layered figure)."""
-        return self.layered(caption, centred=centred, plate=plate)
+        return self.layered(caption, centred=centred)
 
     # -- magnified inset -------------------------------------------------------------
     def inset(self, k: int) -> Any | None:
@@ -667,8 +667,7 @@ def render_svg(scene: Scene, *, upto: int | None = None, style: Style = PLAIN,
             # a plate: its own size, the "Fig." caption centred beneath
             n = len(Captions(scene, width=style.width_px - 2 * style.margin_px, size=style.caption_size)
                     .title_lines(caption))
-            return Drawing(scene, style, caption_lines=n, plate=style.plate).final(caption, centred=True,
-                                                                                    plate=style.plate)
+            return Drawing(scene, style, caption_lines=n, plate=style.plate).final(caption, centred=True)
         return Drawing(scene, style).final(caption)
     return Drawing(scene, style).frame(upto)
 

@@ -259,13 +259,15 @@ def write_outputs(stage: Path, construction: Construction | None, figure: Figure
     else:
         scene = scene_for(construction, figure) if (frames != "none" or outputs or not st.plate) else None
     ks = frame_steps(scene, frames) if scene is not None else []
+    # the frames, the animation, the player and the storyboard are for the screen: on its paper (the cream tint
+    # of the historical style); final.svg is the figure as printed
     if drawing is None:
-        drawing = Drawing(scene, st) if (ks or outputs or not st.plate) else None
+        drawing = Drawing(scene, st.for_screen()) if (ks or outputs or not st.plate) else None
     if st.plate:
         final = render_svg(scene_for(construction, figure, plate=True), style=st,
                            caption=plate_caption(construction, figure, fig_number))
     else:
-        final = drawing.layered()  # type: ignore[union-attr]
+        final = (drawing if drawing.style == st else Drawing(scene, st)).layered()  # type: ignore[union-attr]
     from .notation import with_provenance
 
     write_text(stage / "final.svg", with_provenance(final, construction, figure))

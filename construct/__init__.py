@@ -42,8 +42,9 @@ from typing import Any
 
 from .constructions import Construction, get, names
 from .kernel.errors import (ConstructError, ConstructWarning, DegenerateObject, DuplicateName, GeometryError,
-                            HiddenLabelWarning, InvalidParameter, MissingGiven, NoIntersection, OutputError,
-                            ProtocolFormatError, RuleError, StepError, UnknownConstruction, UnknownObject, WrongInput)
+                            HiddenLabelWarning, InvalidParameter, MissingDependency, MissingGiven, NoIntersection,
+                            OutputError, ProtocolFormatError, RuleError, StepError, UnknownConstruction, UnknownObject,
+                            WrongInput)
 
 from .kernel import version as _installed_version
 from .kernel.geometry import Circle, Length, Line, Point
@@ -84,6 +85,7 @@ __all__ = [
     "UnknownConstruction",
     "ProtocolFormatError",
     "OutputError",
+    "MissingDependency",
     "StepError",
     "GeometryError",
     "NoIntersection",

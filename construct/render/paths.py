@@ -17,7 +17,7 @@ import math
 from .svgdoc import fmt
 from .viewport import Viewport
 
-__all__ = ["arc_path", "curve_path", "polyline_path", "polygon_path", "hatch_path"]
+__all__ = ["arc_path", "curve_path", "polyline_path", "polygon_path", "hatch_path", "hatch_segments", "curve_controls"]
 
 
 def arc_path(vp: Viewport, cx: float, cy: float, r: float, start: float, sweep: float) -> str:
@@ -35,14 +35,27 @@ def curve_path(vp: Viewport, pts: tuple) -> str:
     if len(P) < 2:
         return ""
     d = [f"M{fmt(P[0][0])} {fmt(P[0][1])}"]
+    for c1, c2, p2 in curve_controls(P):
+        d.append(f"C{fmt(c1[0])} {fmt(c1[1])} {fmt(c2[0])} {fmt(c2[1])} {fmt(p2[0])} {fmt(p2[1])}")
+    return "".join(d)
+
+
+def curve_controls(P: list) -> list[tuple[tuple[float, float], tuple[float, float], tuple[float, float]]]:
+    """The smooth curve through the points *P* (Catmull-Rom) as cubic Bézier pieces: (control 1, control 2,
+    end) of each piece from one point to the next (an affine map of the points maps the curve with them).
+
+    >>> curve_controls([(0.0, 0.0), (6.0, 0.0)])
+    [((1.0, 0.0), (5.0, 0.0), (6.0, 0.0))]
+    """
+    out = []
     for i in range(len(P) - 1):
         p0 = P[i - 1] if i > 0 else P[i]
         p1, p2 = P[i], P[i + 1]
         p3 = P[i + 2] if i + 2 < len(P) else P[i + 1]
         c1 = (p1[0] + (p2[0] - p0[0]) / 6.0, p1[1] + (p2[1] - p0[1]) / 6.0)
         c2 = (p2[0] - (p3[0] - p1[0]) / 6.0, p2[1] - (p3[1] - p1[1]) / 6.0)
-        d.append(f"C{fmt(c1[0])} {fmt(c1[1])} {fmt(c2[0])} {fmt(c2[1])} {fmt(p2[0])} {fmt(p2[1])}")
-    return "".join(d)
+        out.append((c1, c2, (p2[0], p2[1])))
+    return out
 
 
 def polyline_path(vp: Viewport, pts: tuple) -> str:
@@ -68,11 +81,23 @@ def polygon_path(vp: Viewport, pts: tuple) -> str:
 
 def hatch_path(vp: Viewport, pts: tuple, spacing_px: float, angle_deg: float = 45.0) -> str:
     """Fine parallel lines at *angle_deg*, clipped to the polygon by shapely (the draftsman's hatching)."""
+    return "".join(f"M{fmt(ax)} {fmt(ay)}L{fmt(bx)} {fmt(by)}"
+                   for (ax, ay), (bx, by) in hatch_segments([vp.px(x, y) for x, y in pts], spacing_px, angle_deg))
+
+
+def hatch_segments(ring: list[tuple[float, float]], spacing: float,
+                   angle_deg: float = 45.0) -> list[tuple[tuple[float, float], tuple[float, float]]]:
+    """The hatching of the polygon *ring* (canvas units, y down): lines *spacing* apart at *angle_deg*, each
+    clipped to the polygon, as (start, end) pairs; pieces shorter than half a unit are left out.
+
+    >>> hatch_segments([(1, 1), (9, 1), (9, 9), (1, 9)], 5.0, 0.0)
+    [((1.0, 5.0), (9.0, 5.0))]
+    """
     from shapely.geometry import LineString, MultiLineString, Polygon
 
-    poly = Polygon([vp.px(x, y) for x, y in pts]).buffer(0)
+    poly = Polygon(ring).buffer(0)
     if poly.is_empty:
-        return ""
+        return []
     x0, y0, x1, y1 = poly.bounds
     a = math.radians(angle_deg)
     ux, uy = math.cos(a), -math.sin(a)  # along the hatch (y down)
@@ -81,7 +106,7 @@ def hatch_path(vp: Viewport, pts: tuple, spacing_px: float, angle_deg: float = 4
     ts = [cx * nx + cy * ny for cx, cy in corners]
     reach = math.hypot(x1 - x0, y1 - y0)
     lines = []
-    t = math.floor(min(ts) / spacing_px) * spacing_px
+    t = math.floor(min(ts) / spacing) * spacing
     while t <= max(ts):
         mx, my = t * nx, t * ny
         # a point on the hatch line near the box centre, then a long segment both ways
@@ -89,13 +114,11 @@ def hatch_path(vp: Viewport, pts: tuple, spacing_px: float, angle_deg: float = 4
         s = (cx - mx) * ux + (cy - my) * uy
         px, py = mx + s * ux, my + s * uy
         lines.append(LineString([(px - reach * ux, py - reach * uy), (px + reach * ux, py + reach * uy)]))
-        t += spacing_px
+        t += spacing
     clipped = MultiLineString(lines).intersection(poly)
-    parts = []
-    geoms = getattr(clipped, "geoms", [clipped])
-    for g in geoms:
+    out = []
+    for g in getattr(clipped, "geoms", [clipped]):
         if g.geom_type != "LineString" or g.length < 0.5:
             continue
-        (ax, ay), (bx, by) = g.coords[0], g.coords[-1]
-        parts.append(f"M{fmt(ax)} {fmt(ay)}L{fmt(bx)} {fmt(by)}")
-    return "".join(parts)
+        out.append((tuple(g.coords[0]), tuple(g.coords[-1])))
+    return out

@@ -49,22 +49,25 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field, fields, replace
-from typing import Any, Callable, Mapping, Sequence
+from typing import Any, Callable, Mapping, NamedTuple, Sequence
 
 __all__ = ["Plate", "Panel", "Dimension", "AngleArc", "Stroke", "Lettering", "ScaleBar", "Sign", "Dot", "dms", "extent",
            "anchors", "shifted",
-           "furniture_elements", "LOOKS_CSS", "plate_of"]
+           "furniture_elements", "LOOKS_CSS", "plate_of", "Piece", "furniture_pieces", "DASHES"]
 
 XY = tuple[float, float]
+
+#: The dash patterns of the line looks (canvas units: dash, gap, dash, gap).
+DASHES = {"dashdot": (14, 3, 2, 3), "centre": (18, 3, 2, 3), "dashed": (6, 4)}
 
 #: Line looks a plate may give its objects (CSS classes on the marks).
 LOOKS_CSS = (
     ".heavy{stroke-width:2.2px}",
     ".medium{stroke-width:1px}",
     ".thin{stroke-width:0.45px}",
-    ".dashdot{stroke-dasharray:14 3 2 3;stroke-width:0.7px}",
-    ".centre{stroke-dasharray:18 3 2 3;stroke-width:0.5px}",
-    ".dashed{stroke-dasharray:6 4}",
+    f".dashdot{{stroke-dasharray:{' '.join(map(str, DASHES['dashdot']))};stroke-width:0.7px}}",
+    f".centre{{stroke-dasharray:{' '.join(map(str, DASHES['centre']))};stroke-width:0.5px}}",
+    f".dashed{{stroke-dasharray:{' '.join(map(str, DASHES['dashed']))}}}",
     # a result the plate shows otherwise (the stroke s, dimensioned with arrowheads over the centre line)
     ".hidden{display:none}",
 )
@@ -275,11 +278,47 @@ def furniture_elements(items: Sequence[Any], px: Callable[[float, float], XY], s
     return out
 
 
+class Piece(NamedTuple):
+    """One piece of a plate's furniture on the canvas (pixels, y down), for a writer other than SVG (TikZ).
+
+    *kind*: ``line`` (two points), ``poly`` (a polyline, *closed* or not), ``text`` (at its point: the middle
+    of the text's height, *anchor* start/middle/end, *angle* in degrees counter-clockwise, *size* relative to
+    the letters'), ``dot`` (a filled dot of radius *size* px).  *cls*: the SVG classes it would carry.
+    """
+
+    kind: str
+    points: tuple[XY, ...]
+    cls: str
+    text: str = ""
+    anchor: str = "middle"
+    angle: float = 0.0
+    size: float = 1.0
+    closed: bool = False
+
+
+class _Pieces:
+    """Takes the place of svgwrite's factory where the furniture is wanted as :class:`Piece` values."""
+
+
+def furniture_pieces(items: Sequence[Any], px: Callable[[float, float], XY], scale: float, *,
+                     size: float = 12.0) -> list[Piece]:
+    """The furniture as :class:`Piece` values: what :func:`furniture_elements` draws, as data.
+
+    >>> [p.kind for p in furniture_pieces([Sign((0.0, 0.0), "+"), Dot((1.0, 0.0))], lambda x, y: (x, y), 1.0)]
+    ['text', 'dot']
+    """
+    return furniture_elements(items, px, scale, _Pieces(), size=size)
+
+
 def _line(f: Any, a: XY, b: XY, cls: str = "fur") -> Any:
+    if isinstance(f, _Pieces):
+        return Piece("line", (a, b), cls)
     return f.line(start=(_f(a[0]), _f(a[1])), end=(_f(b[0]), _f(b[1])), class_=cls)
 
 
 def _poly(f: Any, pts: Sequence[XY], cls: str, close: bool = False) -> Any:
+    if isinstance(f, _Pieces):
+        return Piece("poly", tuple(pts), cls, closed=close)
     return f.path(d="M" + "L".join(f"{_f(x)} {_f(y)}" for x, y in pts) + ("Z" if close else ""), class_=cls)
 
 
@@ -295,6 +334,8 @@ def _arrow(f: Any, tip: XY, frm: XY, size: float) -> Any:
 
 def _text(f: Any, at: XY, text: str, size: float, anchor: str = "middle", angle: float = 0.0,
           rel: float = 1.0) -> list[Any]:
+    if isinstance(f, _Pieces):  # its halo is the writer's (a TikZ node's white ground)
+        return [Piece("text", (at,), "lb fur-text", text, anchor, angle, rel)]
     attrs: dict[str, Any] = {"x": [_f(at[0])], "y": [_f(at[1] + 0.35 * size * rel)]}
     if anchor != "middle":
         attrs["text_anchor"] = anchor
@@ -380,5 +421,7 @@ def _item(it: Any, px: Callable[[float, float], XY], scale: float, size: float, 
         return _text(f, px(*it.at), it.text, size, "middle", 0.0, 2.0)
     if isinstance(it, Dot):
         x, y = px(*it.at)
+        if isinstance(f, _Pieces):
+            return [Piece("dot", ((x, y),), "arrow", size=0.22 * size)]
         return [f.circle(center=(_f(x), _f(y)), r=_f(0.22 * size), class_="arrow")]
     return []

@@ -30,10 +30,10 @@ from dataclasses import dataclass, replace
 from typing import Any, NamedTuple
 
 from ..kernel.errors import InvalidParameter
-from .captions import TITLE_LIMIT, displayed
+from .captions import Captions
 from .scene import MarkKind, Scene
 from .styles import STYLES, Style
-from .svg import Drawing, wrap
+from .svg import Drawing
 
 __all__ = ["Sheet", "PrintPlate", "PlatePoint", "lay_out", "CAPTIONS", "TIKZ_STYLES", "PT_PER_MM", "tex_name"]
 
@@ -209,6 +209,6 @@ def lay_out(figure: Any, *, construction: Any = None, style: str | Style = "hist
     caption = () if sheet.caption == "none" else (title[CAPTIONS.index(sheet.caption) - 1],)
     if not caption:
         st = replace(st, show_caption=False)
-    width = st.width_px - 2 * st.margin_px
-    n = sum(len(wrap(displayed(line, TITLE_LIMIT), width, st.caption_size)) for line in caption)
+    n = len(Captions(scene, width=st.width_px - 2 * st.margin_px, size=st.caption_size).title_lines(caption)) \
+        if caption else 0
     return PrintPlate(Drawing(scene, st, caption_lines=n), sheet, caption, title)

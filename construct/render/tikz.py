@@ -30,7 +30,7 @@ from typing import Any, Iterable
 
 from .lettering import HALO_PX, LEADER_FROM, text_box
 from .paths import curve_controls, hatch_segments
-from .plate import DASHES, Piece, furniture_pieces
+from .plate import DASHES, PIECES, Piece, break_elements, crossing_lines, furniture_pieces
 from .scene import Mark, MarkKind
 from .sheet import PT_PER_MM, PrintPlate
 from .styles import PRINT_STROKES, Style
@@ -296,7 +296,7 @@ def _letters(w: _Writer, named: dict[str, str]) -> None:
     """Every shown letter: a node anchored on its side towards its point, set off from it by points."""
     st, pt = w.st, w.pt
     size = st.label_size
-    labels = [lb for lb in _placed_labels(w.plate) if lb.shown]
+    labels = [lb for lb in w.plate.drawing.labels() if lb.shown]
     if labels:
         w.add("% the letters, set by TeX where the letter placer put them")
     h = HALO_PX / 2
@@ -326,6 +326,7 @@ def _furniture(w: _Writer) -> None:
     """The plate's furniture (dimensions, angle arcs, scales, signs, lettering) and the broken axis's marks."""
     sc, vp, st = w.plate.scene, w.vp, w.st
     pieces = furniture_pieces(sc.furniture, vp.px, vp.scale, size=st.label_size)
+    pieces += break_elements(sc.breaks, crossing_lines(sc.marks, sc.furniture), vp.px, PIECES, size=st.label_size)
     if not pieces:
         return
     w.add("% the plate's furniture")
@@ -368,23 +369,6 @@ def _caption(w: _Writer) -> None:
     w.add(f"\\node[anchor=north, text width={w.num((vp.width - 2 * vp.margin) * w.pt, 2)}pt, align=center, "
           f"inner sep=0pt, font={italic}\\fontsize{{{w.num(size, 2)}}}{{{w.num(1.45 * size, 2)}}}\\selectfont] "
           f"at {w.canvas(vp.width / 2, top + 0.2 * st.caption_size)} {{{text}}};")
-
-
-def _placed_labels(plate: PrintPlate) -> list[Any]:
-    """The plate's placed letters as data (each: id, text, point, offset, distance, shown)."""
-    from types import SimpleNamespace
-
-    d = plate.drawing
-    out = []
-    for m in plate.scene.marks:
-        spot = d._spots.get(m.id) if m.kind is MarkKind.POINT and m.label else None
-        if spot is None:
-            continue
-        px, py = d.vp.px(*m.geom)
-        thin = len(spot) > 3 and spot[3] and (d.style.camera or m.role != "result")
-        out.append(SimpleNamespace(id=m.id, text=m.label, point=(px, py), offset=(spot[0] - px, spot[1] - py),
-                                   distance=spot[2], shown=not thin))
-    return out
 
 
 def tikz_document(plate: PrintPlate) -> str:

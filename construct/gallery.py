@@ -14,6 +14,7 @@
 gallery leaves them out, they carry the same elements again and the
 committed gallery stays small.)
     OUT/README.md, OUT/index.html         the index, with pictures, captions, methods and checks
+    OUT/latex/plates.tex, OUT/latex/*.tikz  two plates as TikZ, set on one LaTeX page (:data:`LATEX_PLATES`)
 
     OUT/.construct-manifest.json        every file above with its SHA-256: the mark of a gallery
 
@@ -53,7 +54,7 @@ from .render.notation import givens as book_givens
 from .render.styles import STYLES
 
 __all__ = ["build_gallery", "gallery_plan", "entry_slug", "is_gallery", "GALLERY_STYLES", "GALLERY_OUTPUTS",
-           "FRAME_MODE", "LIVE_PLAYERS"]
+           "FRAME_MODE", "LIVE_PLAYERS", "LATEX_PLATES"]
 
 GALLERY_STYLES = ("historical", "teaching")
 #: No standalone frames: frame k holds the marks of k steps, so all frames
@@ -70,6 +71,9 @@ GALLERY_OUTPUTS = {"historical": (), "teaching": ("player",)}
 #: 1-3 s to the build), and the gallery stays under its 15 MB.  `construct replay NAME --live` gives any
 #: construction with a rod ratio its slider.
 LIVE_PLAYERS = ("crank", "inertia-curve")
+#: The plates the gallery's LaTeX example sets on one page (``latex/plates.tex``, beside their ``.tikz``
+#: files): the crank and Abb. 1055, the piston-force line over the whole revolution.
+LATEX_PLATES = (("crank", {"rod_ratio": 5.0, "parts": 18}), ("piston-force", {"revolution": True}))
 #: The width (CSS px) at which the gallery page shows a figure: its own width, one figure per row,
 #: so that letters of 12 px and captions of 13-14 px are shown at that size (never under 9 px).
 DISPLAY_PX = 960
@@ -309,6 +313,7 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
             entries += figure_entries
             index.append(row)
             checked.append(found)
+        _latex_example(root, plan)
         write_text(root / "README.md", _readme(index))
         write_text(root / "index.html", _index_html(index, sources))
         _site_pages(root, index, sources)
@@ -316,6 +321,25 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
         if before_swap is not None:
             before_swap(*((root, checked) if check is not None else (root,)))
     return entries
+
+
+def _latex_example(root: Path, plan: list[tuple[str, dict[str, Any]]]) -> None:
+    """``latex/plates.tex``: the plates of :data:`LATEX_PLATES` the plan builds, as TikZ, on one LaTeX page."""
+    from .render.output import figure_title
+    from .render.sheet import lay_out
+    from .render.tikz import tikz_example, tikz_picture
+
+    chosen = [(name, params) for name, params in LATEX_PLATES if (name, params) in plan]
+    if not chosen:
+        return
+    plates = []
+    for name, params in chosen:
+        c = get(name)
+        fig = c.figure(**params)
+        file = f"{entry_slug(name, params)}.tikz"
+        write_text(root / "latex" / file, tikz_picture(lay_out(fig, construction=c)))
+        plates.append((file, figure_title(c, fig)[0]))
+    write_text(root / "latex" / "plates.tex", tikz_example(plates))
 
 
 def _build_and_check(root: Path, number: int, name: str, params: dict[str, Any],

@@ -35,7 +35,7 @@ from .scene import Mark, MarkKind
 from .sheet import PT_PER_MM, PrintPlate
 from .styles import PRINT_STROKES, Style
 
-__all__ = ["tikz_picture", "tikz_document", "tex_text", "LETTER_MACRO"]
+__all__ = ["tikz_picture", "tikz_document", "tikz_example", "tex_text", "LETTER_MACRO"]
 
 #: The command that sets the letters' face; the document may define it before the ``\input`` (e.g. upright:
 #: ``\newcommand\plateletters{\upshape}``); the picture defines it only where the document has not.
@@ -378,12 +378,38 @@ def tikz_document(plate: PrintPlate) -> str:
     num = _Writer(plate).num
     return ("% The plate alone on a page of its size: pdflatex or lualatex this file.\n"
             "\\documentclass{article}\n"
-            "\\ifdefined\\directlua\\else\\usepackage[T1]{fontenc}\\fi  % lualatex sets Unicode fonts itself\n"
-            "\\usepackage{lmodern}  % fonts at every size\n"
             f"\\usepackage[paperwidth={num(w, 3)}mm, paperheight={num(h, 3)}mm, margin=0pt]{{geometry}}\n"
-            "\\usepackage{tikz}\n"
+            + PREAMBLE +
             "\\pagestyle{empty}\n"
             "\\begin{document}\n"
             "\\noindent\n"
             + tikz_picture(plate) +
+            "\\end{document}\n")
+
+
+#: The preamble every document of plates needs: TikZ, and fonts at every size (Latin Modern; T1 under pdflatex,
+#: lualatex sets Unicode fonts itself).
+PREAMBLE = ("\\ifdefined\\directlua\\else\\usepackage[T1]{fontenc}\\fi\n"
+            "\\usepackage{lmodern}\n"
+            "\\usepackage{tikz}\n")
+
+
+def tikz_example(plates: list[tuple[str, str]]) -> str:
+    """A one-page LaTeX document that ``\\input``\\ s each plate's picture (*plates*: its ``.tikz`` file's
+    name and its caption) as a figure of an A4 page with a type area 150 mm wide.
+
+    >>> print(tikz_example([("crank.tikz", "Kolbenwege")]).splitlines()[-4])
+      \\input{crank.tikz}
+    """
+    body = "".join("\\begin{figure}[!ht]\n  \\centering\n"
+                   f"  \\input{{{name}}}\n  \\caption{{{tex_text(caption)}}}\n\\end{{figure}}\n"
+                   for name, caption in plates)
+    return ("% Plates drawn by construct (construct replay NAME --style historical --format tikz), set by LaTeX:\n"
+            "% each picture is \\input where the figure goes; its letters are set in the document's font.\n"
+            "% pdflatex or lualatex this file beside the .tikz files.\n"
+            "\\documentclass[10pt]{article}\n"
+            "\\usepackage[a4paper, textwidth=150mm, textheight=250mm]{geometry}\n"
+            + PREAMBLE +
+            "\\begin{document}\n"
+            + body +
             "\\end{document}\n")

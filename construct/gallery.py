@@ -178,7 +178,8 @@ def _method(fig) -> str:
     return f"{head}{' (' + '; '.join(methods) + ')' if methods else ''}; steps by provenance: {mix}; instruments: {tools}"
 
 
-def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> tuple[list[dict], dict]:
+def _build_entry(root: Path, number: int, name: str, params: dict[str, Any],
+                 formats: tuple[str, ...] = ("svg",)) -> tuple[list[dict], dict]:
     """Build one figure's folder (protocol, checks, both styles) under *root*; return its entries and index row."""
     c = get(name)
     fig = c.figure(**params)
@@ -204,8 +205,10 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
         sdir.mkdir()
         live, drawing = (_live(c, fig, style) if first and GALLERY_OUTPUTS[style] and name in LIVE_PLAYERS
                          else (None, None))
+        # the plates also as PDF or TikZ when asked (construct gallery --format): the historical style's
         info = write_outputs(sdir, c, fig, STYLES[style], frames=FRAME_MODE, fig_number=number, protocol=False,
-                             outputs=GALLERY_OUTPUTS[style], live=live, drawing=drawing)
+                             outputs=GALLERY_OUTPUTS[style], live=live, drawing=drawing,
+                             formats=("svg", *formats) if style == "historical" else ("svg",))
         files = sorted(str(p.relative_to(root)) for p in sdir.rglob("*") if p.is_file())
         files += [f"{slug}/protocol.json"] * first + [f"{slug}/checks.md", f"{slug}/checks.json"]
         entries.append({"construction": name, "params": dict(params), "style": style,
@@ -238,8 +241,11 @@ def _first_of_its_construction(name: str, params: Mapping[str, Any]) -> bool:
 
 def build_gallery(out: str | Path, *, progress: bool = False, workers: int | None = None,
                   before_swap: Callable[..., None] | None = None,
-                  check: Callable[[Path], Any] | None = None) -> list[dict]:
+                  check: Callable[[Path], Any] | None = None, formats: Any = ("svg",)) -> list[dict]:
     """Build the whole gallery into *out* (swapped in whole); return one dict per (entry, style).
+
+    *formats*: besides the SVG figures, each plate (the historical style) also as ``final.pdf`` or
+    ``final.tikz`` and ``final.tex`` at its final size (:data:`construct.render.output.FORMATS`).
 
     *before_swap* is called with the finished staging folder just before it
     replaces *out* (``construct gallery`` lints it there); what it raises
@@ -258,12 +264,15 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
     first, the live players (their sweeps) before the others, so that no
     process is left with a long one at the end.
     """
+    from .render.output import check_formats
+
+    extra = tuple(f for f in check_formats(formats) if f != "svg")
     plan = gallery_plan()
     bar = _Progress(len(plan), progress)
     entries: list[dict] = []
     index: list[dict] = []
     checked: list[Any] = []
-    jobs = [(number, name, dict(params), check) for number, (name, params) in enumerate(plan, start=1)]
+    jobs = [(number, name, dict(params), check, extra) for number, (name, params) in enumerate(plan, start=1)]
     if workers is None:
         workers = min(4, os.cpu_count() or 1)
     with replaced_folder(out, manifest="gallery", described=GALLERY_DESCRIBED, what="gallery folder") as root:
@@ -343,9 +352,10 @@ def _latex_example(root: Path, plan: list[tuple[str, dict[str, Any]]]) -> None:
 
 
 def _build_and_check(root: Path, number: int, name: str, params: dict[str, Any],
-                     check: Callable[[Path], Any] | None) -> tuple[list[dict], dict, Any]:
+                     check: Callable[[Path], Any] | None,
+                     formats: tuple[str, ...] = ()) -> tuple[list[dict], dict, Any]:
     """:func:`_build_entry`, then *check* on the figure's folder (None without one)."""
-    figure_entries, row = _build_entry(root, number, name, params)
+    figure_entries, row = _build_entry(root, number, name, params, formats)
     return figure_entries, row, (check(root / row["slug"]) if check is not None else None)
 
 

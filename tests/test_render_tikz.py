@@ -249,3 +249,22 @@ def test_the_compiled_page_has_the_svg_plates_points_within_a_tenth_of_a_millime
             i, j = round(y / 25.4 * 600), round(x / 25.4 * 600)
             r = round(0.3 / 25.4 * 600)
             assert page[i - r:i + r + 1, j - r:j + r + 1].min() < 128, (name, x, y)
+
+
+def test_the_tkz_euclide_plate_defines_its_points_with_tkz_euclide_and_compiles(tmp_path):
+    c = get("crank")
+    plate = lay_out(c.figure(parts=6), construction=c, sheet=Sheet(tikz_style="tkz-euclide"))
+    tex = tikz_document(plate)
+    assert "\\usepackage{tkz-euclide}" in tex and "\\tkzDefPoint(0,0){O}" in tex and "\\coordinate" not in tex
+    from construct.regress.printdiff import diff_tikz_text
+
+    # the same points, by name and place, as the plain picture's coordinates
+    d = diff_tikz_text(tikz_picture(lay_out(c.figure(parts=6), construction=c)), tikz_picture(plate), "a", "b")
+    assert d.sizes == (13, 13) and not [ch for ch in d.changes if ch.kind in ("moved", "added", "removed")]
+    tex_installed("pdflatex", "kpsewhich")
+    if subprocess.run(["kpsewhich", "xpatch.sty"], capture_output=True).returncode != 0:
+        if os.environ.get("CI"):
+            pytest.fail("tkz-euclide's xpatch missing under CI: .ci/install-tex.sh installs texlive-latex-extra")
+        pytest.skip("tkz-euclide needs xpatch (texlive-latex-extra)")
+    (tmp_path / "p.tex").write_text(tex, encoding="utf-8")
+    assert "Missing character" not in compile_tex(tmp_path, "p.tex", "pdflatex")

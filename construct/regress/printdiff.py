@@ -1,6 +1,7 @@
 """What changed between two printed plates, by named point: two TikZ pictures or two PDFs written by construct.
 
-A TikZ plate names every lettered point (``\\coordinate (X4) at (0.61803,0);``, in units of
+A TikZ plate names every lettered point (``\\coordinate (X4) at (0.61803,0);`` or tkz-euclide's
+``\\tkzDefPoint(0.61803,0){X4}``, in units of
 ``x=27.77594mm``) and a PDF plate makes each a named destination at its place on the page
 (:mod:`construct.render.pdf`): both are read as {name: (x, y) in millimetres on the page}, and
 :func:`diff_points` reports each point moved, added or removed.  A TikZ picture's other lines
@@ -32,7 +33,8 @@ TOLERANCE_MM = 0.001
 MAX_BYTES = 64 * 2**20
 
 _UNIT = re.compile(r"\\begin\{tikzpicture\}\[x=([0-9.]+)mm")
-_COORDINATE = re.compile(r"^\\coordinate \(([^)]+)\) at \(([-0-9.]+),([-0-9.]+)\);$", re.M)
+_COORDINATE = re.compile(r"^(?:\\coordinate \(([^)]+)\) at \(([-0-9.]+),([-0-9.]+)\);"
+                         r"|\\tkzDefPoint\(([-0-9.]+),([-0-9.]+)\)\{([^}]+)\})$", re.M)
 _NUMBER = re.compile(r"-?[0-9]+(?:\.[0-9]+)?")
 #: Lines of a TikZ picture compared at most (the rest are counted).
 SHOWN_LINES = 20
@@ -49,7 +51,11 @@ def tikz_points(text: str, where: str = "the picture") -> tuple[float, dict[str,
         raise PrintDiffError(f"{where} is no TikZ plate written by construct (no tikzpicture with x=...mm): "
                              f"it cannot be compared by named point")
     mm = float(unit.group(1))
-    return mm, {m[1]: (float(m[2]) * mm, float(m[3]) * mm) for m in _COORDINATE.finditer(text)}
+    out = {}
+    for m in _COORDINATE.finditer(text):  # \coordinate (NAME) at (x,y); or \tkzDefPoint(x,y){NAME}
+        name, x, y = (m[1], m[2], m[3]) if m[1] else (m[6], m[4], m[5])
+        out[name] = (float(x) * mm, float(y) * mm)
+    return mm, out
 
 
 def pdf_points(path: Path) -> tuple[tuple[float, float], dict[str, tuple[float, float]]]:

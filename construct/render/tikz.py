@@ -6,6 +6,8 @@ sheet's size, for pdflatex or lualatex).  The picture is written for a person to
 
 * every lettered point is a named coordinate, ``\\coordinate (X4) at (0.61803, 0);`` under its
   TeX-safe name (:func:`construct.render.sheet.tex_name`: primes, subscripts and Greek spelled out);
+  with the sheet's ``tikz_style="tkz-euclide"`` defined by ``\\tkzDefPoint(0.61803,0){X4}`` instead
+  (the steps stay TikZ paths: tkz-euclide cannot state the branch rules that chose the intersections);
 * coordinates are in the construction's own units (the crank radius, mostly), one unit set once in
   the picture's options (``x=28.5714mm``), to the stated precision (0.001 mm on the page);
 * lines, arcs, curves, hatching and the plate's furniture are drawn in the style's weights in
@@ -189,7 +191,13 @@ def tikz_picture(plate: PrintPlate) -> str:
     w.add(f"\\path[use as bounding box] {w.canvas(0, vp.height)} rectangle {w.canvas(vp.width, 0)};")
     points = plate.points()
     named = {p.mark.id: p.name for p in points}
-    if points:
+    if points and plate.sheet.tikz_style == "tkz-euclide":
+        # tkz-euclide's own definitions; the steps stay TikZ paths: the construction found its intersections
+        # by branch rules (nearer, left of, ...) that tkz-euclide's \tkzInter... macros cannot state
+        w.add("% the lettered points, defined with tkz-euclide")
+        for p in points:
+            w.add(f"\\tkzDefPoint{w.xy(*p.mark.geom)}{{{p.name}}}")
+    elif points:
         w.add("% the lettered points")
         for p in points:
             w.add(f"\\coordinate ({p.name}) at {w.xy(*p.mark.geom)};")
@@ -379,7 +387,7 @@ def tikz_document(plate: PrintPlate) -> str:
     return ("% The plate alone on a page of its size: pdflatex or lualatex this file.\n"
             "\\documentclass{article}\n"
             f"\\usepackage[paperwidth={num(w, 3)}mm, paperheight={num(h, 3)}mm, margin=0pt]{{geometry}}\n"
-            + PREAMBLE +
+            + PREAMBLE + ("\\usepackage{tkz-euclide}\n" if plate.sheet.tikz_style == "tkz-euclide" else "") +
             "\\pagestyle{empty}\n"
             "\\begin{document}\n"
             "\\noindent\n"

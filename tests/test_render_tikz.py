@@ -2,6 +2,7 @@
 letters as TeX text beside them, the same bytes every run; compiled with pdflatex and lualatex where TeX is
 installed (under CI it must be: .ci/install-tex.sh), the LaTeX example of the README and the gallery with them."""
 
+import math
 import os
 import re
 import shutil
@@ -268,3 +269,35 @@ def test_the_tkz_euclide_plate_defines_its_points_with_tkz_euclide_and_compiles(
         pytest.skip("tkz-euclide needs xpatch (texlive-latex-extra)")
     (tmp_path / "p.tex").write_text(tex, encoding="utf-8")
     assert "Missing character" not in compile_tex(tmp_path, "p.tex", "pdflatex")
+
+
+def pgf_smooth_pieces(points, tension):
+    """The Bézier pieces pgf's smooth plot makes of *points* (pgflibraryplothandlers.code.tex, curveto handler:
+    a point's supports 0.2775 * tension of the chord between its neighbours away; the plot's first piece starts
+    with its first point as support, the last ends with its last), written out again here, independently."""
+    k = 0.2775 * tension
+    pieces, first, support, second = [], points[0], points[0], points[1]
+    for current in points[2:]:
+        d = (k * (current[0] - first[0]), k * (current[1] - first[1]))
+        pieces.append((first, support, (second[0] - d[0], second[1] - d[1]), second))
+        first, support, second = second, (second[0] + d[0], second[1] + d[1]), current
+    pieces.append((first, support, second, second))
+    return pieces
+
+
+def test_a_smooth_curve_in_tikz_is_the_svgs_curve():
+    """TikZ's smooth plot through the curve's points, its ends written twice, draws the SVG's Bézier pieces
+    (within 1e-4 of a unit: pgf's tension is a decimal), and two pieces of no length at the ends, each turning
+    back less than a thirteenth of its chord: under the line's round cap."""
+    from construct.render.paths import curve_controls
+    from construct.render.tikz import SMOOTH_TENSION
+
+    rng = np.random.default_rng(29)
+    pts = [tuple(p) for p in np.cumsum(rng.uniform(0.2, 1.0, size=(9, 2)), axis=0)]
+    got = pgf_smooth_pieces([pts[0], *pts, pts[-1]], float(SMOOTH_TENSION))
+    ours = curve_controls(pts)
+    assert len(got) == len(ours) + 2
+    for (p0, c1, c2, p1), (d1, d2, e1) in zip(got[1:-1], ours):
+        assert np.allclose([c1, c2, p1], [d1, d2, e1], atol=1e-4)
+    for p0, c1, c2, p1 in (got[0], got[-1]):
+        assert p0 == p1 and math.dist(p0, c1) + math.dist(p0, c2) < math.dist(pts[0], pts[1]) / 5 + math.dist(pts[-1], pts[-2]) / 5

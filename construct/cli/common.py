@@ -62,7 +62,7 @@ def add_print_options(p: argparse.ArgumentParser, *, formats: bool = True) -> No
     from ..render.sheet import CAPTIONS, TIKZ_STYLES, Sheet
 
     if formats:
-        p.add_argument("--format", default="svg", metavar="FORMAT",
+        p.add_argument("--format", default="svg", metavar="svg|pdf|tikz",
                        help=f"what the plate is written as: {', '.join(FORMATS)}, or several joined by commas "
                             f"(default svg: the figure and its screen pages)")
     p.add_argument("--width-mm", type=number, default=Sheet.width_mm, metavar="MM",

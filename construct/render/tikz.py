@@ -46,6 +46,9 @@ LETTER_MACRO = "\\plateletters"
 PT_DECIMALS = 2
 #: The largest error of a coordinate on the page, in millimetres (the decimals of a unit follow from it).
 PRECISION_MM = 0.001
+#: The tension of TikZ's smooth plot that puts a point's controls a sixth of the chord between its neighbours
+#: away (pgf takes 0.2775 * tension of it: 1 / (6 * 0.2775)), as the SVG's curves (:func:`paths.curve_controls`).
+SMOOTH_TENSION = "0.6006"
 
 #: The German opening quotes: the closing ones lowered to the baseline (kernel commands only: \quotedblbase
 #: needs a T1 font, which a document in the default OT1 encoding does not have).
@@ -266,10 +269,17 @@ def _mark(w: _Writer, m: Mark, named: dict[str, str]) -> None:
         if m.straight:
             pieces = [w.xy(*p) for p in (g[:-1] if closed else g)]
             w.add(f"\\draw[{opts}] " + _wrapped(" -- ".join(pieces)) + (" -- cycle;" if closed else ";"))
+        elif len(g) == 2:
+            (c1, c2, p2), = curve_controls(list(g))
+            w.add(f"\\draw[{opts}] {w.xy(*g[0])} .. controls {w.xy(*c1)} and {w.xy(*c2)} .. {w.xy(*p2)};")
         else:
-            parts = [w.xy(*g[0])] + [f".. controls {w.xy(*c1)} and {w.xy(*c2)} .. {w.xy(*p2)}"
-                                     for c1, c2, p2 in curve_controls(list(g))]
-            w.add(f"\\draw[{opts}] " + "\n    ".join(parts) + ";")
+            # TikZ's smooth plot is the SVG's curve (Catmull-Rom: a point's controls a sixth of the chord
+            # between its neighbours away, pgf's 0.2775 * tension) once the first and last points are written
+            # twice: the plot's own ends would set their controls on the points themselves
+            ends = [g[0], *g, g[-1]]
+            coords = [w.xy(*q) for q in ends]
+            rows = [" ".join(coords[i:i + 6]) for i in range(0, len(coords), 6)]
+            w.add(f"\\draw[{opts}] plot[smooth, tension={SMOOTH_TENSION}] coordinates {{" + "\n    ".join(rows) + "};")
     else:  # an area: hatched as the style hatches, or filled
         if st.hatch:
             vp = w.vp

@@ -28,7 +28,7 @@ def add_arguments(p) -> None:
     p.add_argument("--out", default="gallery", metavar="DIR", help="output folder (default: gallery)")
     from ...render.output import FORMATS
 
-    p.add_argument("--format", default="svg", metavar="FORMAT",
+    p.add_argument("--format", default="svg", metavar="svg|pdf|tikz",
                    help=f"the plates also as {', '.join(FORMATS[1:])} at 120 mm (final.pdf; final.tikz and "
                         f"final.tex beside each historical final.svg), several joined by commas (default svg)")
     p.add_argument("--legible", action="store_true",

@@ -105,12 +105,13 @@ class Figure:
         return text
 
     def _plate(self, style: str, width_mm: float, letter_pt: float, caption: str, **how: Any) -> Any:
-        """The figure laid out on a sheet (:func:`construct.render.sheet.lay_out`), with the plate of the book
+        """The figure laid out on a sheet (:func:`construct.render.output.print_plate`), with the plate of the book
         construction that built it (the owner of its checker), if one did."""
-        from .render.sheet import Sheet, lay_out
+        from .render.output import print_plate
+        from .render.sheet import Sheet
 
         sheet = Sheet(width_mm=width_mm, letter_pt=letter_pt, caption=caption, **how)
-        return lay_out(self, construction=getattr(self.checker, "__self__", None), style=style, sheet=sheet)
+        return print_plate(self, construction=getattr(self.checker, "__self__", None), style=style, sheet=sheet)
 
     def checks(self) -> list:
         """The construction's checks, when a book construction built or replayed the figure; else none.

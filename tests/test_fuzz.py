@@ -13,11 +13,13 @@ number, empty).  Every run must keep the contract of the README:
   user's file and a folder of notes that --out may point at), and after a
   failure the working folder is exactly as it was.
 
-The runs are derandomised so that CI sees the same cases every time; the
+How many cases each property draws follows the Hypothesis profile
+(conftest.py): CI draws five times as many as the README's command.  The runs
+are derandomised so that CI sees the same cases every time; the
 examples that once found bugs are pinned with ``@example``
 (integers beyond any float in each field that reads a number, a
 trial_chord of ten million parts, lone surrogates in captions and names, a
-megabyte name, ``errata --seed ''``, ``bench --parts N``, ``--frames all``
+megabyte name, ``errata --book ''``, ``bench --parts N``, ``--frames all``
 of a 3600-part crank, ``check crank-angle --divisions 1000``).
 """
 
@@ -201,13 +203,13 @@ def _check_protocol(mutation: Mutation, tmp: Path, command: str) -> None:
         assert "out" not in after, "a failed replay left its output folder behind"
 
 
-@settings(max_examples=300, **SETTINGS)
+@settings(max_examples=3 * settings.default.max_examples, **SETTINGS)  # 300 in CI
 @given(data=st.data())
 def test_check_of_a_mutated_protocol_keeps_the_contract(tmp_path, data):
     _check_protocol(data.draw(mutated_protocol(protocol_text())), tmp_path, "check")
 
 
-@settings(max_examples=100, **SETTINGS)
+@settings(max_examples=settings.default.max_examples, **SETTINGS)  # 100 in CI
 @given(data=st.data())
 def test_replay_of_a_mutated_protocol_keeps_the_contract(tmp_path, data):
     _check_protocol(data.draw(mutated_protocol(protocol_text())), tmp_path, "replay")
@@ -275,7 +277,7 @@ CONSTRUCTIONS = ["crank", "crank-angle", "inertia-curve", "inertia-stroke-fracti
                  "piston-force", "tangential-pressure", "two-cranks", "no-such-construction", ""]
 OPTIONS = ["--rod-ratio", "--parts", "--method", "--divisions", "--radius", "--pressure-ratio", "--fluctuation",
            "--magnify", "--given", "--kappa", "--filling", "--compression", "--rpm", "--weight", "--scale",
-           "--step", "--style", "--format", "--seed", "--no-such-option"]
+           "--step", "--style", "--format", "--book", "--seed", "--no-such-option"]
 FLAGS = ["--infinite-rod", "--json", "-h"]
 TABLES = ["piston-path", "crank-angle", "acceleration", "characteristic-points", "mass-forces",
           "tangential-pressure", "flywheel-coefficients", "speed-fluctuation", "no-such-table"]
@@ -315,7 +317,7 @@ def _populate(work: Path) -> None:
     (work / "notes" / "draft.txt").write_text("a user's draft\n")
 
 
-@settings(max_examples=500, **SETTINGS)
+@settings(max_examples=5 * settings.default.max_examples, **SETTINGS)  # 500 in CI
 @given(argv=command_line())
 @example(argv=["table", "piston-path", "--rod-ratio", "1e16", "--parts", "6"])
 @example(argv=["check", "crank", "--rod-ratio", "1e308"])
@@ -326,7 +328,7 @@ def _populate(work: Path) -> None:
 @example(argv=["replay", "crank", "--method", "exact", "--parts", "7", "--frames", "none", "--out", "out"])
 @example(argv=["table", "acceleration", "--step", "0.01"])
 @example(argv=["check", "crank", "--parts", "1000000000"])
-@example(argv=["errata", "--seed", ""])
+@example(argv=["errata", "--book", ""])
 @example(argv=["bench", "--parts", "6"])
 @example(argv=["replay", "crank", "--parts", "3600", "--frames", "all", "--out", "out"])
 @example(argv=["check", "crank-angle", "--divisions", "1000"])
@@ -344,8 +346,8 @@ def test_a_hostile_command_line_keeps_the_contract(tmp_path, argv):
         assert after == before, "a failed run left its output folder behind"
     if argv[:2] == ["check", "crank-angle"] and "--divisions" in argv and "1000" in argv and len(argv) == 4:
         assert code == 0, f"inside its domain every check must pass: {out[-300:]}"  # once 780 of 1001 failed
-    if argv[:3] == ["errata", "--seed", ""] or argv[:2] == ["replay", "crank"] and "3600" in argv:
-        assert code == 2, err  # an empty seed is not "all"; 100 GB of frames are refused with the estimate
+    if argv[:3] == ["errata", "--book", ""] or argv[:2] == ["replay", "crank"] and "3600" in argv:
+        assert code == 2, err  # an empty book is not "all"; 100 GB of frames are refused with the estimate
     if code == 0 and argv[:2] == ["table", "piston-path"] and "--format" not in argv:
         # A table printed with exit 0 is right: the constructed piston path is the exact one.
         rows = [line.split() for line in out.splitlines()[1:] if line.strip()]

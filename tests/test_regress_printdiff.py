@@ -11,7 +11,7 @@ import pytest
 from construct.constructions import get
 from construct.regress.printdiff import PrintDiffError, diff_pdf, diff_tikz, diff_tikz_text
 from construct.regress.verify import compare_file
-from construct.render.sheet import lay_out
+from construct.render.output import print_plate
 from construct.render.tikz import tikz_picture
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -20,7 +20,7 @@ ROOT = Path(__file__).resolve().parents[1]
 @pytest.fixture(scope="module")
 def crank_tikz():
     c = get("crank")
-    return tikz_picture(lay_out(c.figure(parts=9), construction=c))
+    return tikz_picture(print_plate(c.figure(parts=9), construction=c))
 
 
 def moved(text: str, name: str, dx: float) -> str:

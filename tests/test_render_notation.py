@@ -160,13 +160,13 @@ def test_the_players_givens_are_in_book_symbols():
     from construct.render.notation import given_rows
 
     fig = _figure("two-cranks", (("infinite_rod", True), ("parts", 12)))
-    rows = given_rows(fig)
+    rows = given_rows(fig, get("two-cranks"))
     page = player_html(build_scene(fig), givens=rows)
     table = page[page.index('<table id="givens">'):]
     table = table[: table.index("</table>")]
     assert not _clean(table), _clean(table)
     assert "infinite_rod" not in table and "magnify" not in table and "unendlich" in table
-    rows = given_rows(_figure("indicator-diagram", ()))
+    rows = given_rows(_figure("indicator-diagram", ()), get("indicator-diagram"))
     assert rows["P"] == "7,85 at / 7.85 at" and rows["P₀"] == "0,15 at / 0.15 at"
 
 
@@ -190,7 +190,10 @@ def test_the_svg_keeps_the_provenance_for_the_machine(tmp_path):
     assert desc.get("id") == "provenance"
     data = json.loads(desc.text)
     assert data["construction"] == "indicator-diagram"
-    assert data["source"] == c.source and data["givens"]["admission"] == 7.85
+    assert data["givens"]["admission"] == 7.85
+    # the text as a reader cites it and the book by the name --book takes (seeds/004: "Autor: A. Baumann")
+    assert data["source"].startswith("A. Baumann, Schwungradgewichte (1902)") and "Fig. 25" in data["source"]
+    assert data["texts"] == [{"book": "baumann", "figure": "Fig. 25"}]
     # ... and the visible caption does not
     caps = " ".join(t.text or "" for t in root.iter(f"{ns}text") if "cap" in (t.get("class") or ""))
     assert "Baumann" in caps and not REPOSITORY_NAMES.search(caps)

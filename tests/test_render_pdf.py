@@ -15,7 +15,8 @@ from construct.constructions import get
 from construct.kernel.errors import InvalidParameter, MissingDependency
 from construct.render.output import plate_caption, scene_for
 from construct.render.pdf import pdf_bytes
-from construct.render.sheet import PT_PER_MM, Sheet, lay_out
+from construct.render.output import print_plate
+from construct.render.sheet import PT_PER_MM, Sheet
 from construct.render.styles import HISTORICAL
 from construct.render.svg import render_svg
 
@@ -149,7 +150,7 @@ def test_the_pdf_is_the_svg_plate_at_another_scale():
     fig = c.figure(parts=18)
     svg = render_svg(scene_for(c, fig, plate=True), style=HISTORICAL, caption=plate_caption(c, fig))
     at_svg = svg_points(svg)
-    plate = lay_out(fig, construction=c)
+    plate = print_plate(fig, construction=c)
     reader, page, _ = read(pdf_bytes(plate))
     dests = reader.named_destinations
     pairs = [(at_svg[p.mark.id], dests[p.name]) for p in plate.points()]
@@ -167,20 +168,20 @@ def test_the_pdf_is_the_svg_plate_at_another_scale():
 
 def test_outlined_letters_leave_no_font_in_the_file():
     c = get("crank")
-    plate = lay_out(c.figure(parts=6), construction=c, sheet=Sheet(outline=True, caption="de"))
+    plate = print_plate(c.figure(parts=6), construction=c, sheet=Sheet(outline=True, caption="de"))
     _, page, drawn = read(pdf_bytes(plate))
     assert "/Font" not in page["/Resources"]
-    embedded = lay_out(c.figure(parts=6), construction=c, sheet=Sheet(caption="de"))
+    embedded = print_plate(c.figure(parts=6), construction=c, sheet=Sheet(caption="de"))
     assert len(drawn.fills) > len(read(pdf_bytes(embedded))[2].fills) + 20  # every letter a filled outline
 
 
 def test_a_caption_is_asked_for_by_language():
     c = get("crank")
     fig = c.figure(parts=6)
-    de, en = (lay_out(fig, construction=c, sheet=Sheet(caption=lang)) for lang in ("de", "en"))
+    de, en = (print_plate(fig, construction=c, sheet=Sheet(caption=lang)) for lang in ("de", "en"))
     assert "Kolbenwege" in de.svg() and "Kolbenwege" not in en.svg() and "Piston" in en.svg()
-    assert "Kolbenwege" not in lay_out(fig, construction=c).svg()
-    assert de.height_mm > lay_out(fig, construction=c).height_mm
+    assert "Kolbenwege" not in print_plate(fig, construction=c).svg()
+    assert de.height_mm > print_plate(fig, construction=c).height_mm
 
 
 def test_a_pdf_of_a_figure_of_ones_own(tmp_path):
@@ -200,9 +201,9 @@ def test_a_pdf_of_a_figure_of_ones_own(tmp_path):
 def test_the_same_date_gives_the_same_bytes(monkeypatch):
     monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")
     c = get("crank")
-    plate = lay_out(c.figure(parts=6), construction=c)
+    plate = print_plate(c.figure(parts=6), construction=c)
     first = pdf_bytes(plate)
-    assert first == pdf_bytes(lay_out(c.figure(parts=6), construction=c))
+    assert first == pdf_bytes(print_plate(c.figure(parts=6), construction=c))
     assert b"20231114" in first
 
 

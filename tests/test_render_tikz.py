@@ -16,7 +16,8 @@ import pytest
 from construct.constructions import get
 from construct.kernel.errors import InvalidParameter
 from construct.render.output import plate_caption, scene_for
-from construct.render.sheet import Sheet, lay_out, tex_name
+from construct.render.output import print_plate
+from construct.render.sheet import Sheet, tex_name
 from construct.render.styles import HISTORICAL
 from construct.render.svg import Drawing, render_svg
 from construct.render.tikz import tex_text, tikz_document, tikz_picture
@@ -78,7 +79,7 @@ def test_the_letters_are_tex_text_anchored_beside_their_named_points():
     """Every shown letter is a node at its named point, set off in points (not in the picture's units, so that
     it stays at its point at any scale), with the letter as TeX text."""
     c = get("crank")
-    plate = lay_out(c.figure(parts=18), construction=c)
+    plate = print_plate(c.figure(parts=18), construction=c)
     tikz = tikz_picture(plate)
     names = {p.mark.id: p.name for p in plate.points()}
     shown = [lb for lb in plate.drawing.labels() if lb.shown]
@@ -98,14 +99,14 @@ def test_the_letters_are_tex_text_anchored_beside_their_named_points():
 
 def test_the_same_plate_gives_the_same_bytes():
     c = get("crank")
-    first = tikz_picture(lay_out(c.figure(parts=9), construction=c))
-    assert first == tikz_picture(lay_out(c.figure(parts=9), construction=c))
+    first = tikz_picture(print_plate(c.figure(parts=9), construction=c))
+    assert first == tikz_picture(print_plate(c.figure(parts=9), construction=c))
 
 
 def test_numbers_are_to_the_stated_precision():
     """A coordinate's last decimal is under 0.001 mm on the page; lengths in points have two decimals."""
     c = get("crank")
-    tikz = tikz_picture(lay_out(c.figure(parts=9), construction=c))
+    tikz = tikz_picture(print_plate(c.figure(parts=9), construction=c))
     mm = unit_mm(tikz)
     decimals = max(len(x.split(".")[1]) if "." in x else 0 for _, x, _ in COORDINATE.findall(tikz))
     assert 10 ** -decimals * mm <= 0.001 < 10 ** -(decimals - 1) * mm
@@ -237,7 +238,7 @@ def test_the_compiled_page_has_the_svg_plates_points_within_a_tenth_of_a_millime
         scene = scene_for(c, fig, plate=True)
         at_svg = svg_points(render_svg(scene, style=HISTORICAL, caption=plate_caption(c, fig)))
         tikz = (example / f"{entry_slug(name, params)}.tikz").read_text(encoding="utf-8")
-        plate = lay_out(fig, construction=c)
+        plate = print_plate(fig, construction=c)
         points = plate.points()
         assert points
         a = np.array([at_svg[p.mark.id] for p in points]) / Drawing(scene, HISTORICAL).vp.scale * unit_mm(tikz)
@@ -254,13 +255,13 @@ def test_the_compiled_page_has_the_svg_plates_points_within_a_tenth_of_a_millime
 
 def test_the_tkz_euclide_plate_defines_its_points_with_tkz_euclide_and_compiles(tmp_path):
     c = get("crank")
-    plate = lay_out(c.figure(parts=6), construction=c, sheet=Sheet(tikz_style="tkz-euclide"))
+    plate = print_plate(c.figure(parts=6), construction=c, sheet=Sheet(tikz_style="tkz-euclide"))
     tex = tikz_document(plate)
     assert "\\usepackage{tkz-euclide}" in tex and "\\tkzDefPoint(0,0){O}" in tex and "\\coordinate" not in tex
     from construct.regress.printdiff import diff_tikz_text
 
     # the same points, by name and place, as the plain picture's coordinates
-    d = diff_tikz_text(tikz_picture(lay_out(c.figure(parts=6), construction=c)), tikz_picture(plate), "a", "b")
+    d = diff_tikz_text(tikz_picture(print_plate(c.figure(parts=6), construction=c)), tikz_picture(plate), "a", "b")
     assert d.sizes == (13, 13) and not [ch for ch in d.changes if ch.kind in ("moved", "added", "removed")]
     tex_installed("pdflatex", "kpsewhich")
     if subprocess.run(["kpsewhich", "xpatch.sty"], capture_output=True).returncode != 0:

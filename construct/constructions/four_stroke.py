@@ -62,6 +62,7 @@ from typing import Any, Mapping
 
 from .checking import EUCLIDEAN_TOLERANCE, Check
 from ..kernel.errors import InvalidParameter
+from ..kernel.division import NAMES as DIVISION_NAMES
 from ..kernel.division import check_parts, divide_semicircle
 from ..kernel.instruments import Builder
 from ..kernel.protocol import Caption
@@ -71,6 +72,7 @@ from .domain import (COMPRESSION_RATIO, CUTOFF_RATIO, DRAWN_LENGTH, ENGINE_PRESS
                      POLYTROPE_EXPONENT, PRESSURE_RATIO, SUCTION_PRESSURE)
 from .indicator import square
 from .inertia.build import inertia_scale, inertia_value, value_kind
+from .phrases import HANDBOOK, Cite, number, ratio
 
 __all__ = ["FOUR_STROKE", "ENGINES", "build_four_stroke", "four_stroke_checks", "model_pressure", "pressure",
            "volume", "brauer_tangents", "STROKES"]
@@ -504,7 +506,7 @@ def four_stroke_checks(fig: Figure) -> list[Check]:
                         "Euclidean", "at"))
     if engine == "explosion":
         v_d, p_d = vc, g["max_pressure"]
-        checks.append(Check("maximum pressure (seed 001: about 25 at)", pressure(fig, "eP0"), g["max_pressure"], tol_p,
+        checks.append(Check("maximum pressure (the handbook: about 25 at)", pressure(fig, "eP0"), g["max_pressure"], tol_p,
                             "laid off on the pressure axis", "at"))
     else:
         v_d, p_d = g["cutoff"] * vc, g["suction"] * eps ** nexp
@@ -549,7 +551,7 @@ def four_stroke_checks(fig: Figure) -> list[Check]:
             mass = g["pressure_ratio"] * (math.cos(theta) + lam * math.cos(2.0 * theta))
             checks.append(Check(f"b-b at {180 * t / n:g} deg: a-a less q(cos θ + r/L cos 2θ)",
                                 a - _height(fig, f"B{s}.{i}"), mass, tol_p * 10.0 + 1e-9 * abs(mass),
-                                "the inertia ordinate of seed 000 (Euclidean), taken off with the compass", "at"))
+                                "the inertia ordinate of Anhang II (Euclidean), taken off with the compass", "at"))
     checks.append(Check("piston position X_k against the exact law (stroke)", max(
         abs(xk[k] - _piston(math.pi * k / n, g["rod_ratio"])) for k in range(n + 1)), 0.0,
         1e-9, "rod arcs; the division of the circle", "stroke"))
@@ -562,11 +564,25 @@ OPTION_HELP = {
     "compression_ratio": "four-stroke: compression ratio epsilon = (V_c + V_h)/V_c (explosion 5, Diesel 14)",
     "suction": "four-stroke: suction pressure p_a, at absolute (0.9)",
     "exhaust": "four-stroke: exhaust pressure p_g, at absolute (1.1)",
-    "max_pressure": "four-stroke, explosion: maximum pressure after ignition, at (seed 001: about 25)",
+    "max_pressure": "four-stroke, explosion: maximum pressure after ignition, at (the handbook: about 25)",
     "cutoff": "four-stroke, diesel: cut-off ratio rho = V_d/V_c of the combustion at constant pressure (2)",
     "exponent": "four-stroke: polytropic exponent n of compression and expansion (1.3)",
     "steps": "four-stroke: Brauer steps per polytrope (12: the French curve then strays by a thousandth of the diagram)",
 }
+
+
+def four_stroke_wording(fig: Figure, lang: str) -> list[str]:
+    """The givens as the handbook writes them: the engine, ε and n, its peak pressure or ρ, the rod, q."""
+    g = fig.replay.givens
+    de = lang == "de"
+    diesel = fig.params.get("engine") == "diesel"
+    out = [("Gleichdruckmaschine" if de else "compression-ignition engine") if diesel
+           else ("Verpuffungsmaschine" if de else "explosion engine"),
+           f"ε = {number(g['compression_ratio'], lang)}", f"n = {number(g['exponent'], lang)}"]
+    out.append(f"ρ = {number(fig.params.get('cutoff', 2.0), lang)}" if diesel
+               else ("Höchstdruck " if de else "peak pressure ") + f"{number(g['max_pressure'], lang)} at")
+    out += [ratio("r/L", g["rod_ratio"], lang), f"q = {number(g['pressure_ratio'], lang)} at"]
+    return out
 
 
 FOUR_STROKE = register(Construction(
@@ -581,5 +597,9 @@ FOUR_STROKE = register(Construction(
               "exponent": 1.3, "pressure_unit": 0.1, "pressure_ratio": 6.0, "steps": 12},
     book_params=({}, {"engine": "diesel", "compression_ratio": 14.0}),
     structural=("engine", "parts", "method", "steps", "cutoff"),
-    extra={"help": OPTION_HELP},
-), validate=_validate)
+    cites=(Cite(HANDBOOK, "Abb. 1056–1058"),),
+    wording=four_stroke_wording,
+    methods=DIVISION_NAMES,
+    validator=_validate,
+    help=OPTION_HELP,
+))

@@ -40,12 +40,15 @@ import math
 from dataclasses import dataclass
 from typing import Any, Mapping, Sequence
 
+import numpy as np
+
 from .checking import EUCLIDEAN_TOLERANCE, Check
 from ..kernel.errors import InvalidParameter
 from ..kernel.instruments import Builder
 from ..kernel.protocol import Caption
 from . import Construction, Figure, bounded, positive, register
 from .domain import CLEARANCE, DRAWN_LENGTH, PRESSURE, STROKE_FRACTION
+from .phrases import BAUMANN_1902, Cite, card, diagram, scale
 
 __all__ = ["INDICATOR", "IndicatorDiagram", "indicator_frame", "pressures_at", "hyperbola_point", "square",
            "indicator_givens", "BAUMANN", "abscissa", "pressure", "steam_pressure", "back_pressure"]
@@ -380,16 +383,20 @@ def pressure(fig: Figure, point: str, head: str = "A", crank: str = "B") -> floa
     return ((p[0] - ax) * -uy + (p[1] - ay) * ux) / unit
 
 
-def steam_pressure(x: float, g: Mapping[str, float]) -> float:
-    """Absolute pressure on the cover side at piston path x (fraction of the stroke): Baumann's model."""
+def steam_pressure(x: Any, g: Mapping[str, Any]) -> Any:
+    """Absolute pressure on the cover side at piston path x (fraction of the stroke; numbers or arrays):
+    Baumann's model, P + P0 up to the cut-off s1, then the hyperbola through it."""
     s1, s0, P, P0 = g["filling"], g["clearance"], g["admission"], g["back_pressure"]
-    return P + P0 if x <= s1 else (P + P0) * (s1 + s0) / (x + s0)
+    p = np.where(x <= s1, P + P0, (P + P0) * (s1 + s0) / (x + s0))
+    return float(p) if np.ndim(p) == 0 else p
 
 
-def back_pressure(x: float, g: Mapping[str, float]) -> float:
-    """Absolute pressure on the crank side at piston path x: P0, compressed from s2 = s - s3 on."""
+def back_pressure(x: Any, g: Mapping[str, Any]) -> Any:
+    """Absolute pressure on the crank side at piston path x (numbers or arrays): P0, compressed from
+    s2 = s - s3 on."""
     s3, s0, P0 = g["compression"], g["clearance"], g["back_pressure"]
-    return P0 if x <= 1.0 - s3 else P0 * (s3 + s0) / (1.0 - x + s0)
+    p = np.where(x <= 1.0 - s3, P0, P0 * (s3 + s0) / (1.0 - x + s0))
+    return float(p) if np.ndim(p) == 0 else p
 
 
 def _pressure_tolerance(g: Mapping[str, float], unit_scale: float) -> float:
@@ -585,6 +592,14 @@ def card_checks(fig: Figure) -> list[Check]:
     return checks
 
 
+def indicator_wording(fig: Figure, lang: str) -> list[str]:
+    """The givens as Baumann writes them (P, P₀, s₁, s₀, s₃), or a digitised card's; the pressure scale."""
+    g = fig.replay.givens
+    if "admission" not in g:  # a digitised card, not Baumann's idealised diagram
+        return card(fig, lang) + [scale(g, lang, "r")]
+    return diagram(g, lang) + [scale(g, lang, "r")]
+
+
 INDICATOR = register(Construction(
     name="indicator-diagram",
     title=Caption("Ideelles Dampfdiagramm mit Expansions- und Kompressionshyperbel",
@@ -601,5 +616,9 @@ INDICATOR = register(Construction(
               "indicator_crank_side": ""},
     book_params=({}, {"filling": 0.4}),  # Baumann's two worked cases: s1 = 10 % and 40 % (drawn for P = 7.85 at)
     structural=("divisions", "filling", "compression", "indicator", "indicator_crank_side"),
-    extra={"help": OPTION_HELP, "plate": indicator_plate},
-), validate=_validate)
+    cites=(Cite(BAUMANN_1902, "Fig. 25"),),
+    wording=indicator_wording,
+    plate=indicator_plate,
+    validator=_validate,
+    help=OPTION_HELP,
+))

@@ -29,8 +29,8 @@ PDF's creation date is taken from it, as reproducible builds do); otherwise
 cairo dates the file.
 
 >>> from construct.constructions import get
->>> from construct.render.sheet import lay_out
->>> pdf = pdf_bytes(lay_out(get("crank").figure(parts=6), construction=get("crank")))
+>>> from construct.render.output import print_plate
+>>> pdf = pdf_bytes(print_plate(get("crank").figure(parts=6), construction=get("crank")))
 >>> pdf[:5], b"/FontFile2" in pdf, b"/Dests" in pdf
 (b'%PDF-', True, True)
 """

@@ -10,12 +10,14 @@ places them for that density, and every line gets its weight in points.  The
 geometry is the SVG plate's: every named point stands where it stands there,
 up to the scale.
 
-:func:`lay_out` gives the laid-out :class:`PrintPlate`, from which the PDF
+:func:`lay_out` gives the laid-out :class:`PrintPlate` (of a figure:
+:func:`construct.render.output.print_plate`), from which the PDF
 (:mod:`construct.render.pdf`) and the TikZ picture (:mod:`construct.render.tikz`)
 are written.
 
 >>> from construct.constructions import get
->>> plate = lay_out(get("crank").figure(parts=6), construction=get("crank"))
+>>> from construct.render.output import print_plate
+>>> plate = print_plate(get("crank").figure(parts=6), construction=get("crank"))
 >>> round(plate.width_mm, 6), plate.sheet.caption, plate.svg().count('class="cap')
 (120.0, 'none', 0)
 >>> [p.name for p in plate.points()][:3]
@@ -32,7 +34,7 @@ from typing import Any, NamedTuple
 from ..kernel.errors import InvalidParameter
 from .captions import Captions
 from .scene import MarkKind, Scene
-from .styles import STYLES, Style
+from .styles import Style
 from .svg import Drawing
 
 __all__ = ["Sheet", "PrintPlate", "PlatePoint", "lay_out", "CAPTIONS", "TIKZ_STYLES", "PT_PER_MM", "tex_name"]
@@ -189,23 +191,12 @@ def tex_name(name: str) -> str:
     return "".join(out) or "point"
 
 
-def lay_out(figure: Any, *, construction: Any = None, style: str | Style = "historical", sheet: Sheet = Sheet(),
-            fig_number: int | str | None = None) -> PrintPlate:
-    """*figure* laid out on *sheet* in *style* (a plate style: its plate, with the construction's furniture).
-
-    *construction*: the book construction that built the figure (its plate's furniture and caption), if any.
-    """
-    from .output import figure_title, plate_caption, scene_for
-
-    if isinstance(style, str):
-        if style not in STYLES:
-            raise InvalidParameter(f"unknown style {style!r}; choose one of {', '.join(sorted(STYLES))}")
-        style = STYLES[style]
+def lay_out(scene: Scene, title: tuple[str, str], *, style: Style, sheet: Sheet = Sheet()) -> PrintPlate:
+    """*scene* (titled *title*: German, English) laid out on *sheet* in *style*: the caption the sheet asks for
+    beneath it.  :func:`construct.render.output.print_plate` lays a figure out so, as a book plate."""
     if not isinstance(sheet, Sheet):
         raise InvalidParameter(f"sheet must be a Sheet, got {type(sheet).__name__}")
     st = style.for_print(sheet.width_pt, sheet.letter_pt)
-    scene = scene_for(construction, figure, plate=st.plate)
-    title = plate_caption(construction, figure, fig_number) if st.plate else figure_title(construction, figure)
     caption = () if sheet.caption == "none" else (title[CAPTIONS.index(sheet.caption) - 1],)
     if not caption:
         st = replace(st, show_caption=False)

@@ -19,8 +19,8 @@ sheet's size, for pdflatex or lualatex).  The picture is written for a person to
 * the same plate gives the same bytes: no dates, marks in the figure's order, fixed number formats.
 
 >>> from construct.constructions import get
->>> from construct.render.sheet import lay_out
->>> tikz = tikz_picture(lay_out(get("crank").figure(parts=6), construction=get("crank")))
+>>> from construct.render.output import print_plate
+>>> tikz = tikz_picture(print_plate(get("crank").figure(parts=6), construction=get("crank")))
 >>> "\\\\coordinate (X2) at (" in tikz and "\\\\node[plate letter" in tikz and tikz.endswith("\\\\end{tikzpicture}\\n")
 True
 """
@@ -209,6 +209,9 @@ def tikz_picture(plate: PrintPlate) -> str:
         marks = [m for m in sc.marks if _layer(m) == layer and "hidden" not in m.look.split()]
         if marks:
             w.add(f"% {title_}")
+        if layer == "points":
+            _points(w, marks, named)
+            continue
         for m in marks:
             _mark(w, m, named)
     _furniture(w)
@@ -242,16 +245,6 @@ def _draw_options(w: _Writer, m: Mark) -> str:
 def _mark(w: _Writer, m: Mark, named: dict[str, str]) -> None:
     g, kind = m.geom, m.kind
     st = w.st
-    if kind is MarkKind.POINT:
-        at = f"({named[m.id]})" if m.id in named else w.xy(*g)
-        aux = m.role == "auxiliary" or ("." in m.name and not m.label)
-        r = st.aux_point_radius if aux else st.point_radius
-        style = "plate point" + (", plate result point" if m.role == "result" else "")
-        colour = st.tool_colours.get(m.tool) or st.provenance_colours.get(m.provenance)
-        if colour:
-            style += f", fill={_colour_name(colour)}"
-        w.add(f"\\path[{style}] {at} circle[radius={w.pts(r)}];")
-        return
     opts = _draw_options(w, m)
     if kind is MarkKind.SEGMENT:
         w.add(f"\\draw[{opts}] {w.xy(g[0], g[1])} -- {w.xy(g[2], g[3])};")
@@ -290,6 +283,23 @@ def _mark(w: _Writer, m: Mark, named: dict[str, str]) -> None:
         elif st.area_fill not in ("none", ""):
             w.add(f"\\fill[color={{rgb,255:red,{int(st.area_fill[1:3], 16)};green,{int(st.area_fill[3:5], 16)};"
                   f"blue,{int(st.area_fill[5:7], 16)}}}] " + " -- ".join(w.xy(*p) for p in g) + " -- cycle;")
+
+
+def _points(w: _Writer, marks: list[Mark], named: dict[str, str]) -> None:
+    """The points, those of one look and size in one list: ``\\foreach \\p in {(X4),(0.5,1),...}``."""
+    st = w.st
+    looks: dict[tuple[str, str], list[str]] = {}
+    for m in marks:
+        aux = m.role == "auxiliary" or ("." in m.name and not m.label)
+        style = "plate point" + (", plate result point" if m.role == "result" else "")
+        colour = st.tool_colours.get(m.tool) or st.provenance_colours.get(m.provenance)
+        if colour:
+            style += f", fill={_colour_name(colour)}"
+        key = (style, w.pts(st.aux_point_radius if aux else st.point_radius))
+        looks.setdefault(key, []).append(f"({named[m.id]})" if m.id in named else w.xy(*m.geom))
+    for (style, r), at in looks.items():
+        rows = [",".join(at[i:i + 8]) for i in range(0, len(at), 8)]
+        w.add(f"\\foreach \\p in {{" + ",\n    ".join(rows) + f"}}\n  \\path[{style}] \\p circle[radius={r}];")
 
 
 def _wrapped(text: str, width: int = 100) -> str:

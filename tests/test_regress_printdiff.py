@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from construct.constructions import get
-from construct.regress.printdiff import PrintDiffError, diff_pdf, diff_tikz, diff_tikz_text
+from construct.regress.printdiff import PrintDiffError, diff_pdf, diff_tikz_text
 from construct.regress.verify import compare_file
 from construct.render.output import print_plate
 from construct.render.tikz import tikz_picture

@@ -28,14 +28,15 @@ True
 from __future__ import annotations
 
 import math
-from typing import Any, Iterable
+from typing import Iterable
 
 from .lettering import HALO_PX, LEADER_FROM, text_box
 from .paths import curve_controls, hatch_segments
 from .plate import DASHES, PIECES, Piece, break_elements, crossing_lines, furniture_pieces
 from .scene import Mark, MarkKind
-from .sheet import PT_PER_MM, PrintPlate
+from .sheet import PrintPlate
 from .styles import PRINT_STROKES, Style
+from .svg import mark_layer, point_radius
 
 __all__ = ["tikz_picture", "tikz_document", "tikz_example", "tex_text", "LETTER_MACRO"]
 
@@ -175,7 +176,7 @@ def tikz_picture(plate: PrintPlate) -> str:
     st, sc = w.st, plate.scene
     title = " / ".join(t for t in plate.title if t)
     w.add(f"% {tex_comment(title)}")
-    w.add(f"% construct: {tex_comment(sc.params.get('construction', '') or '')}{plate.style.name} style, "
+    w.add(f"% construct: {plate.style.name} style, "
           f"{w.num(plate.sheet.width_mm, 3)} mm wide, letters {w.num(plate.sheet.letter_pt, 2)} pt.")
     w.add(f"% Coordinates in the construction's units (1 unit = {w.num(plate.mm_per_unit, 4)} mm on the page), "
           f"to {PRECISION_MM} mm; lengths of letters and points in pt.")
@@ -206,7 +207,7 @@ def tikz_picture(plate: PrintPlate) -> str:
             w.add(f"\\coordinate ({p.name}) at {w.xy(*p.mark.geom)};")
     for title_, layer in (("areas", "areas"), ("the construction", "construction"), ("the results", "results"),
                           ("the points", "points")):
-        marks = [m for m in sc.marks if _layer(m) == layer and "hidden" not in m.look.split()]
+        marks = [m for m in sc.marks if mark_layer(m) == layer and "hidden" not in m.look.split()]
         if marks:
             w.add(f"% {title_}")
         if layer == "points":
@@ -225,14 +226,6 @@ def tikz_picture(plate: PrintPlate) -> str:
 def tex_comment(text: str) -> str:
     """*text* on one comment line (no line break ends the comment early)."""
     return " ".join(str(text).split())
-
-
-def _layer(m: Mark) -> str:
-    if m.kind is MarkKind.POINT:
-        return "points"
-    if not m.kind.stroked:
-        return "areas"
-    return "results" if m.role == "result" else "construction"
 
 
 def _draw_options(w: _Writer, m: Mark) -> str:
@@ -290,16 +283,15 @@ def _points(w: _Writer, marks: list[Mark], named: dict[str, str]) -> None:
     st = w.st
     looks: dict[tuple[str, str], list[str]] = {}
     for m in marks:
-        aux = m.role == "auxiliary" or ("." in m.name and not m.label)
         style = "plate point" + (", plate result point" if m.role == "result" else "")
         colour = st.tool_colours.get(m.tool) or st.provenance_colours.get(m.provenance)
         if colour:
             style += f", fill={_colour_name(colour)}"
-        key = (style, w.pts(st.aux_point_radius if aux else st.point_radius))
+        key = (style, w.pts(point_radius(m, st)))
         looks.setdefault(key, []).append(f"({named[m.id]})" if m.id in named else w.xy(*m.geom))
     for (style, r), at in looks.items():
         rows = [",".join(at[i:i + 8]) for i in range(0, len(at), 8)]
-        w.add(f"\\foreach \\p in {{" + ",\n    ".join(rows) + f"}}\n  \\path[{style}] \\p circle[radius={r}];")
+        w.add("\\foreach \\p in {" + ",\n    ".join(rows) + f"}}\n  \\path[{style}] \\p circle[radius={r}];")
 
 
 def _wrapped(text: str, width: int = 100) -> str:
@@ -322,7 +314,7 @@ _ANCHORS = ("base west", "south west", "south", "south east", "base east", "nort
 
 def _letters(w: _Writer, named: dict[str, str]) -> None:
     """Every shown letter: a node anchored on its side towards its point, set off from it by points."""
-    st, pt = w.st, w.pt
+    st = w.st
     size = st.label_size
     labels = [lb for lb in w.plate.drawing.labels() if lb.shown]
     if labels:
@@ -347,7 +339,6 @@ def _letters(w: _Writer, named: dict[str, str]) -> None:
                   f"([shift={{({w.pts(b * cx / n)},{w.pts(-b * cy / n)})}}]{at[1:-1]});")
         w.add(f"\\node[plate letter, anchor={anchor}, xshift={w.pts(ax - px)}, yshift={w.pts(py - ay)}] "
               f"at {at} {{{tex_text(lb.text)}}};")
-    del pt
 
 
 def _furniture(w: _Writer) -> None:

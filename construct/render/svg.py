@@ -40,7 +40,8 @@ from .lettering import LEADER_FROM, label_box, text_box, text_width
 from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
 from .marks import could_show
 from .placing import Placing, PlacedLabel, place_outwards, text_gap
-from .plate import Lettering, Stroke, break_elements, furniture_elements, furniture_pieces, plain, subscript_runs
+from .plate import (Lettering, Stroke, break_elements, crossing_lines, furniture_elements, furniture_pieces, plain,
+                    subscript_runs)
 from .scene import Mark, MarkKind, Scene, extreme_points
 from .styles import PLAIN, Style
 from .svgdoc import fmt
@@ -404,9 +405,8 @@ class Drawing:
                                    GapFactory(f, self.gaps) if self.gaps else f, size=self.style.label_size)
         if self.plate:  # its lines are broken for its lettering: the lettering's halos go
             elems = [e for e in elems if e.attribs.get("class") != "lb halo"]
-        lines = [m.geom for m in sc.marks if m.kind is MarkKind.SEGMENT]
-        lines += [(*it.a, *it.b) for it in sc.furniture if isinstance(it, Stroke)]
-        elems += break_elements(sc.breaks, lines, self.vp.px, f, size=self.style.label_size)
+        elems += break_elements(sc.breaks, crossing_lines(sc.marks, sc.furniture), self.vp.px, f,
+                                size=self.style.label_size)
         if not elems:
             return None
         g = f.g(id="furniture")

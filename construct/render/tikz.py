@@ -270,7 +270,8 @@ def _mark(w: _Writer, m: Mark, named: dict[str, str]) -> None:
         if st.hatch:
             vp = w.vp
             segs = hatch_segments([vp.px(x, y) for x, y in g], st.hatch_spacing,
-                                  *(() if m.hatch is None else (m.hatch,)))
+                                  *(() if m.hatch is None else (m.hatch,)),
+                                  under=[[vp.px(x, y) for x, y in o] for o in w.plate.scene.areas_over(m)])
             if segs:
                 w.add("\\draw[plate fine] " + "\n    ".join(f"{w.canvas(*a)} -- {w.canvas(*b)}" for a, b in segs) + ";")
         elif st.area_fill not in ("none", ""):

@@ -272,7 +272,7 @@ def test_table_plot_refuses_a_file_it_cannot_write(tmp_path, cli, monkeypatch, t
     ("list",),
     ("check", "crank", "--parts", "6"),
     ("table", "crank-angle", "--rod-ratio", "5"),
-    ("errata", "--seed", "002"),
+    ("errata", "--book", "mechanics"),
     ("bench", "--parts", "6"),
 ])
 def test_every_command_that_prints_data_prints_json(cli, argv):

@@ -242,30 +242,32 @@ def choose(points: Sequence[Any], rule: Rule, refs: Sequence[Any], xp: Any) -> t
     return raw_point(w(first, a.x, b.x), w(first, a.y, b.y)), raw_point(w(first, b.x, a.x), w(first, b.y, a.y))
 
 
+def _ranking(rule: Rule, refs: Sequence[Any], x: Any, y: Any) -> tuple[Any, bool]:
+    """What a rule ranks a point (x, y) by, floats or arrays alike, and whether the smallest wins (not "only")."""
+    name = rule.name
+    if name in ("nearer", "farther"):
+        (r,) = refs
+        return (x - r.x) ** 2 + (y - r.y) ** 2, name == "nearer"
+    if name in ("left", "right"):
+        p0, q0 = refs
+        return (q0.x - p0.x) * (y - p0.y) - (q0.y - p0.y) * (x - p0.x), name == "right"
+    if rule.direction is None:
+        p0, q0 = refs
+        dx, dy = q0.x - p0.x, q0.y - p0.y
+    else:
+        dx, dy = rule.direction
+    return x * dx + y * dy, False
+
+
 def choose_among(points: Sequence[Any], rule: Rule, refs: Sequence[Any]) -> Any:
     """Pick one of any number of points (the crossings of a drawn curve) by *rule*; scalar values only."""
     if not points:
         raise ValueError("no points to choose from")
     if len(points) == 1 or rule.name == "only":
         return points[0]
-    name = rule.name
-    if name in ("nearer", "farther"):
-        (r,) = refs
-        key = [(p.x - r.x) ** 2 + (p.y - r.y) ** 2 for p in points]
-        best = min if name == "nearer" else max
-    elif name in ("left", "right"):
-        p0, q0 = refs
-        key = [(q0.x - p0.x) * (p.y - p0.y) - (q0.y - p0.y) * (p.x - p0.x) for p in points]
-        best = max if name == "left" else min
-    else:
-        if rule.direction is None:
-            p0, q0 = refs
-            dx, dy = q0.x - p0.x, q0.y - p0.y
-        else:
-            dx, dy = rule.direction
-        key = [p.x * dx + p.y * dy for p in points]
-        best = max
-    target = best(key)
+    ranked = [_ranking(rule, refs, p.x, p.y) for p in points]
+    key = [k for k, _ in ranked]
+    target = (min if ranked[0][1] else max)(key)
     return points[key.index(target)]
 
 
@@ -284,25 +286,9 @@ def choose_among_sets(xs: Any, ys: Any, found: Any, rule: Rule, refs: Sequence[A
     """
     import numpy as np
 
-    name = rule.name
-    if name == "only":
+    if rule.name == "only":
         return np.argmax(found, axis=0)  # the first point found
-    if name in ("nearer", "farther"):
-        (r,) = refs
-        key = (xs - r.x) ** 2 + (ys - r.y) ** 2
-        smallest = name == "nearer"
-    elif name in ("left", "right"):
-        p0, q0 = refs
-        key = (q0.x - p0.x) * (ys - p0.y) - (q0.y - p0.y) * (xs - p0.x)
-        smallest = name == "right"
-    else:
-        if rule.direction is None:
-            p0, q0 = refs
-            dx, dy = q0.x - p0.x, q0.y - p0.y
-        else:
-            dx, dy = rule.direction
-        key = xs * dx + ys * dy
-        smallest = False
+    key, smallest = _ranking(rule, refs, xs, ys)
     if smallest:
         return np.argmin(np.where(found, key, np.inf), axis=0)
     return np.argmax(np.where(found, key, -np.inf), axis=0)

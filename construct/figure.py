@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping
 
 from .kernel import instruments
-from .kernel.errors import InvalidParameter
+from .kernel.errors import InvalidParameter, did_you_mean
 from .kernel.protocol import Protocol, Replay
 
 __all__ = ["Figure", "Builder"]
@@ -54,7 +54,7 @@ class Figure:
         from .render.styles import STYLES
 
         if not isinstance(style, str) or style not in STYLES:
-            raise InvalidParameter(f"unknown style {style!r}; choose one of {', '.join(sorted(STYLES))}")
+            raise InvalidParameter(f"unknown style {style!r}{did_you_mean(style, STYLES)}; choose one of {', '.join(sorted(STYLES))}")
         if upto is not None and (isinstance(upto, bool) or not isinstance(upto, numbers.Integral)):
             raise InvalidParameter(f"upto is a step number, got {upto!r}")
         return figure_svg(self, style=style, upto=upto)

@@ -232,6 +232,22 @@ def test_usage_errors_name_the_program_once(cli, argv):
     assert code == 2 and err.count("construct") == 1 and err.startswith("construct: error: "), err
 
 
+@pytest.mark.parametrize("argv, nearest", [
+    (("chek", "crank"), "'check'"), (("check", "crnk"), "'crank'"), (("table", "piston-pth"), "'piston-path'"),
+    (("check", "crank", "--rod-ration", "5"), "'--rod-ratio'"), (("check", "crank", "--method", "durr"), "'durer'"),
+    (("check", "four-stroke", "--engine", "disel"), "'diesel'"),
+    (("check", "two-cranks", "--dead-centre", "head-nd"), "'head-end'"),
+])
+def test_a_misspelt_name_gets_the_nearest_one(cli, argv, nearest):
+    code, out, err = cli(*argv)
+    assert code == 2 and out == "" and f"(did you mean {nearest}?)" in err and err.count("\n") == 1, err
+
+
+def test_a_name_near_nothing_gets_no_guess(cli):
+    code, _, err = cli("check", "zzzzzz")
+    assert code == 2 and "did you mean" not in err and "available: crank" in err
+
+
 def test_every_table_has_a_plot_of_its_own_columns():
     from construct.tables import PLOTS, TABLES
 

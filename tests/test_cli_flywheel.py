@@ -94,3 +94,29 @@ def test_bad_input_one_line_exit_2(capsys, argv, words):
     assert main(["flywheel"] + argv) == 2
     out, err = capsys.readouterr()
     assert out == "" and words in err and err.count("\n") == 1
+
+
+def test_a_count_given_to_the_diagram_is_a_whole_number(capsys):
+    """``--given parts=N`` reaches the construction as the count it is (it was stored as 18.0 and refused)."""
+    from construct.constructions import get
+    from construct.constructions.tangential import model_summary
+
+    base = ["flywheel", "--diagram", "tangential-pressure", "--piston-area", "1000", "--crank-radius", "0.5",
+            "--rpm", "100", "--fluctuation", "1/60", "--diameter", "4"]
+    default = _json(capsys, base)
+    eighteen = _json(capsys, base + ["--given", "parts=18"])
+    assert eighteen["excess_work"] == default["excess_work"]        # 18 parts is the default
+    finer = _json(capsys, base + ["--given", "parts=36"])
+    exact = model_summary(get("tangential-pressure").figure().replay.givens, "baumann")["excess"] * 1000 * 0.5
+    assert finer["excess_work"] == pytest.approx(exact, rel=1e-2)   # the drawn area, 36 ordinates
+
+
+@pytest.mark.parametrize("given, words", [
+    ("parts=18.5", "whole number"), ("kapa=3", "did you mean 'kappa'"), ("kappa=x", "finite number"),
+    ("force=unit", "force=baumann"), ("parts", "NAME=VALUE"),
+])
+def test_a_bad_given_to_the_diagram_is_named(capsys, given, words):
+    assert main(["flywheel", "--diagram", "tangential-pressure", "--given", given, "--piston-area", "1000",
+                 "--crank-radius", "0.5", "--rpm", "100", "--fluctuation", "1/60", "--diameter", "4"]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and words in err and err.count("\n") == 1

@@ -7,7 +7,7 @@ import math
 from typing import Any
 
 from ..constructions import Construction, Figure, find, get
-from ..kernel.errors import InvalidParameter
+from ..kernel.errors import InvalidParameter, did_you_mean
 from ..kernel.protocol import Protocol
 
 
@@ -160,6 +160,47 @@ def _named_givens(args: argparse.Namespace) -> dict[str, float]:
             raise InvalidParameter(f"--given {name} must be a finite number, got {value!r}")
         out[name] = v
     return out
+
+
+def construction_given(c: Construction, item: str, *, option: str = "--given") -> tuple[str, Any]:
+    """``NAME=VALUE`` for a parameter of *c*, the value read as the parameter's own kind (its default's type).
+
+    A count (``parts``) takes a whole number, a choice (``force``, ``method``) a word, a switch ``true`` or
+    ``false``, everything else a finite number; a name the construction does not take is refused with the
+    names it does take (and the nearest, when one is near).
+
+    >>> from construct.constructions import get
+    >>> c = get("tangential-pressure")
+    >>> construction_given(c, "parts=18"), construction_given(c, "kappa=2"), construction_given(c, "force=unit")
+    (('parts', 18), ('kappa', 2.0), ('force', 'unit'))
+    >>> construction_given(c, "parts=18.5")
+    Traceback (most recent call last):
+    ...
+    construct.kernel.errors.InvalidParameter: --given parts takes a whole number (a count), got '18.5'
+    """
+    name, sep, value = item.partition("=")
+    name, value = name.strip(), value.strip()
+    if not sep or not name:
+        raise InvalidParameter(f"{option} takes NAME=VALUE, got {item!r}")
+    if name not in c.defaults:
+        raise InvalidParameter(f"{c.name} has no parameter {name!r}{did_you_mean(name, c.defaults)}; "
+                               f"it takes {', '.join(sorted(c.defaults))}")
+    default = c.defaults[name]
+    if isinstance(default, bool):
+        if value.lower() not in ("true", "false"):
+            raise InvalidParameter(f"{option} {name} takes true or false, got {value!r}")
+        return name, value.lower() == "true"
+    if isinstance(default, int):
+        try:
+            return name, int(value)
+        except ValueError:
+            raise InvalidParameter(f"{option} {name} takes a whole number (a count), got {value!r}") from None
+    if isinstance(default, str):
+        return name, value
+    v = number(value) if is_number(value) else None
+    if v is None or not math.isfinite(v):
+        raise InvalidParameter(f"{option} {name} takes a finite number, got {value!r}")
+    return name, v
 
 
 def is_number(text: str) -> bool:

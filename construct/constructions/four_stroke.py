@@ -61,7 +61,7 @@ import math
 from typing import Any, Mapping
 
 from .checking import EUCLIDEAN_TOLERANCE, Check
-from ..kernel.errors import InvalidParameter
+from ..kernel.errors import InvalidParameter, did_you_mean
 from ..kernel.division import check_parts, divide_semicircle
 from ..kernel.instruments import Builder
 from ..kernel.protocol import Caption
@@ -138,7 +138,7 @@ def _givens(engine: str, r: Any, rod_ratio: Any, compression_ratio: Any, suction
             max_pressure: Any, cutoff: Any, exponent: Any, pressure_unit: Any, pressure_ratio: Any,
             steps: int) -> dict[str, float]:
     if engine not in ENGINES:
-        raise InvalidParameter(f"engine must be one of {', '.join(ENGINES)}, got {engine!r}")
+        raise InvalidParameter(f"engine must be one of {', '.join(ENGINES)}, got {engine!r}{did_you_mean(engine, ENGINES)}")
     g = {"r": bounded("crank radius r", r, DRAWN_LENGTH), "rod_ratio": rod_ratio_param(rod_ratio),
          "compression_ratio": bounded("compression ratio ε", compression_ratio, COMPRESSION_RATIO),
          "suction": bounded("suction pressure p_a (at)", suction, SUCTION_PRESSURE),

@@ -42,7 +42,7 @@ import math
 
 from ...books.baumann.flywheel import design, parse_fraction
 from ...kernel.errors import InvalidParameter
-from ..common import add_format_option, is_number, number
+from ..common import add_format_option, construction_given, number
 
 NAME = "flywheel"
 HELP = ("size a flywheel by Baumann (seed 004): excess work (given, or measured on a diagram or your indicator cards) -> rim weight G_s (E = G_s v² δ/g), arms and hub, "
@@ -114,13 +114,8 @@ def _diagram_work(args) -> tuple[float, str]:
         raise InvalidParameter("give --diagram, --excess-work or --rim-weight, one of them")
     area = PISTON_AREA.check("piston area F (cm²)", args.piston_area)
     radius = LENGTH_M.check("crank radius (m)", args.crank_radius)
-    givens = {}
-    for item in args.given:
-        name, sep, value = item.partition("=")
-        if not sep or not name or not is_number(value) or not math.isfinite(number(value)):
-            raise InvalidParameter(f"--given takes NAME=VALUE with a finite number, got {item!r}")
-        givens[name] = number(value)
     c = get(args.diagram)
+    givens = dict(construction_given(c, item) for item in args.given)
     givens.setdefault("force", "baumann")
     if givens["force"] != "baumann":
         raise InvalidParameter("the flywheel needs the pressure diagram (force=baumann), not the unit force")

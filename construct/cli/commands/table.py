@@ -8,7 +8,7 @@ import io
 import math
 import sys
 
-from ...kernel.errors import InvalidParameter
+from ...kernel.errors import InvalidParameter, did_you_mean
 from ...kernel.division import MAX_PARTS
 from ...tables import TABLES, write_plot
 from ..common import add_format_option, number, whole_number
@@ -95,7 +95,7 @@ def _check_step(step: float, span: int) -> None:
 
 def run(args) -> int:
     if args.table not in TABLES:
-        raise InvalidParameter(f"unknown table {args.table!r}; choose one of {', '.join(TABLES)}")
+        raise InvalidParameter(f"unknown table {args.table!r}{did_you_mean(args.table, TABLES)}; choose one of {', '.join(TABLES)}")
     if (args.indicator or args.indicator_crank_side) and args.table not in ("tangential-pressure", "mass-forces"):
         raise InvalidParameter(f"--indicator goes with the tables tangential-pressure and mass-forces, not {args.table}")
     if args.table != "tangential-pressure" and (args.force != "unit" or args.kappa is not None or any(

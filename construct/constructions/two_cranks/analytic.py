@@ -7,7 +7,7 @@ from typing import Any
 
 import numpy as np
 
-from ...kernel.errors import InvalidParameter
+from ...kernel.errors import InvalidParameter, did_you_mean
 
 
 #: Where the first crank starts: § 146's B1 (the crank-end dead centre, the rod correction subtracting in the
@@ -60,7 +60,7 @@ def excess_exact(alpha: float, rod_ratio: float | None) -> float:
 def start_angle(dead_centre: str) -> float:
     """The first crank's starting angle from the head-end dead centre."""
     if dead_centre not in DEAD_CENTRES:
-        raise InvalidParameter(f"dead centre must be one of {', '.join(DEAD_CENTRES)}, got {dead_centre!r}")
+        raise InvalidParameter(f"dead centre must be one of {', '.join(DEAD_CENTRES)}, got {dead_centre!r}{did_you_mean(dead_centre, DEAD_CENTRES)}")
     return math.pi if dead_centre == "crank-end" else 0.0
 
 

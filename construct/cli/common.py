@@ -92,7 +92,7 @@ SYMBOLS = {"admission": "P", "back_pressure": "P0", "clearance": "s0/s", "compre
            "crank_radius": "R", "filling": "s1/s", "force": "baumann|unit", "force_unit": "LENGTH/kg",
            "kappa": "kappa", "piston_area": "F", "pressure_unit": "LENGTH/at", "rod_length": "L", "rpm": "n",
            "scale": "LENGTH/m", "weight": "G", "b1": "b1/r1", "rim": "h/r1", "compression_ratio": "epsilon",
-           "cutoff": "rho", "dead_centre": "crank-end|head-end", "engine": "explosion|diesel", "exhaust": "p_g",
+           "cutoff": "rho", "release": "x_e/s", "dead_centre": "crank-end|head-end", "engine": "explosion|diesel", "exhaust": "p_g",
            "exponent": "n", "max_pressure": "p", "steps": "N", "suction": "p_a", "cranks": "DEG,DEG",
            "indicator": "FILE.csv", "indicator_crank_side": "FILE.csv", "machine": "single|tandem|compound",
            "piston_area_cover": "F'", "piston_area_crank": "F''", "indicator_lp": "FILE.csv",
@@ -107,7 +107,12 @@ HELPS = {"kappa": "Baumann's kappa = P/B_max, the piston force over the largest 
 
 
 def _generic_params() -> dict[str, tuple[Any, str]]:
-    """Every other construction parameter, as --its-name-with-dashes: (type of its default, help)."""
+    """Every other construction parameter, as --its-name-with-dashes: (type of its default, help).
+
+    A switch (a bool, or a construction's ``extra["switches"]`` whose default follows from other givens) is
+    ``bool``: ``--name`` and ``--no-name``; a default of None is an optional number (its value follows from
+    other givens, as the four-stroke's compression ratio from the engine).
+    """
     from ..constructions import names
 
     covered = set(PARAM_OPTIONS.values())
@@ -118,16 +123,24 @@ def _generic_params() -> dict[str, tuple[Any, str]]:
         for key, default in c.defaults.items():
             if key in covered or key in out:
                 continue
-            kind = whole_number if isinstance(default, int) and not isinstance(default, bool) else (
-                number if isinstance(default, float) else str)
+            if isinstance(default, bool) or key in c.extra.get("switches", ()):
+                kind: Any = bool
+            elif isinstance(default, int):
+                kind = whole_number
+            else:
+                kind = number if default is None or isinstance(default, float) else str
             out[key] = (kind, helps.get(key) or HELPS.get(key, f"{key.replace('_', ' ')} (default {default!r} in {name})"))
     return out
 
 
 def _add_generic_options(p: argparse.ArgumentParser) -> None:
     for key, (kind, text) in sorted(_generic_params().items()):
-        p.add_argument(f"--{key.replace('_', '-')}", dest=key, type=kind, metavar=SYMBOLS.get(key, key.upper()),
-                       help=text)
+        if kind is bool:
+            p.add_argument(f"--{key.replace('_', '-')}", dest=key, action=argparse.BooleanOptionalAction,
+                           default=None, help=text)
+        else:
+            p.add_argument(f"--{key.replace('_', '-')}", dest=key, type=kind, metavar=SYMBOLS.get(key, key.upper()),
+                           help=text)
 
 
 def given_options(args: argparse.Namespace) -> dict[str, Any]:

@@ -14,10 +14,18 @@ The idealised cycle (absolute pressures in at, volumes in strokes):
 * compression p V^n = p_a (1 + V_c)^n from the crank-end dead centre to the
   clearance V_c = 1/(ε − 1) (ε the ``compression_ratio``);
 * explosion: ignition at constant volume to ``max_pressure``, expansion
-  p V^n = const to the crank end; Diesel: combustion at constant pressure
-  (the compression-end pressure p_a ε^n) to the ``cutoff`` volume ρ·V_c, then
-  expansion;
-* release at the crank end at constant volume down to the exhaust line.
+  p V^n = const; Diesel: combustion at constant pressure (the compression-end
+  pressure p_a ε^n) to the ``cutoff`` volume ρ·V_c, then expansion;
+* release early, as the seed has it: "In *e* wurde die Auslaßöffnung
+  freigegeben, durch welche die verbrannten Gase während des vierten, des
+  Auspuffhubes, von *f* bis *g* vom Kolben hinausgeschoben werden" -- the
+  expansion ends at e, the piston path ``release`` (x_e/s, default 0.9, about
+  37° before the crank-end dead centre at L/r = 5), and the pressure falls
+  along the straight line e–f to the exhaust line at the dead centre f
+  (``release`` 1 releases at the dead centre, at constant volume).
+
+The compression ratio is the engine's own unless given: ε = 5 for the explosion
+engine, 14 for the Diesel (gas engines 4 to 7, Diesel 12 to 16).
 
 **The polytropes by Brauer's construction** (E. Brauer, 1885; the period
 graphical method for p V^n = const): two rays from the origin O of the
@@ -36,7 +44,9 @@ drawn as a parallel.  The curve is drawn through the points with the French
 curve (its straying from the polytrope is checked against the same curve
 through the exact points).
 
-**Over 720°**: the crank circle is divided, the piston positions come from
+**Over 720°** (Abb. 1058, which the seed draws for the engine with
+self-ignition: ``over_pressure`` defaults to the Diesel's, and the explosion
+engine's plate is Abb. 1056's diagram alone unless asked): the crank circle is divided, the piston positions come from
 the rod arcs; each position's ordinate in the p–V diagram meets the branch of
 its stroke (suction, compression, expansion, exhaust), and the compass
 carries the height to the ordinate of that crank angle in the 720° diagram
@@ -47,7 +57,7 @@ of piston area, q (cos θ + (r/L) cos 2θ), q = m ω² r/F in at (``pressure_rat
 constructed as the inertia ordinates of seed 000 (the proportional angle for
 r/L and q).
 
->>> fig = FOUR_STROKE.figure(parts=4, steps=4)
+>>> fig = FOUR_STROKE.figure(parts=4, steps=4, over_pressure=True)
 >>> g = fig.replay.givens
 >>> round(pressure(fig, "cP4"), 10) == round(g["suction"] * g["compression_ratio"] ** g["exponent"], 10)
 True
@@ -68,14 +78,16 @@ from ..kernel.protocol import Caption
 from . import Construction, Figure, bounded, register, rod_ratio_param
 from .crank import build_frame, rod_arcs
 from .domain import (COMPRESSION_RATIO, CUTOFF_RATIO, DRAWN_LENGTH, ENGINE_PRESSURE, EXHAUST_PRESSURE,
-                     POLYTROPE_EXPONENT, PRESSURE_RATIO, SUCTION_PRESSURE)
+                     POLYTROPE_EXPONENT, PRESSURE_RATIO, RELEASE, SUCTION_PRESSURE)
 from .indicator import square
 from .inertia.build import inertia_scale, inertia_value, value_kind
 
-__all__ = ["FOUR_STROKE", "ENGINES", "build_four_stroke", "four_stroke_checks", "model_pressure", "pressure",
-           "volume", "brauer_tangents", "STROKES"]
+__all__ = ["FOUR_STROKE", "ENGINES", "COMPRESSION_RATIOS", "build_four_stroke", "four_stroke_checks",
+           "model_pressure", "pressure", "volume", "brauer_tangents", "STROKES"]
 
 ENGINES = ("explosion", "diesel")
+#: Each engine's compression ratio when none is given (explosion engines 4..7, Diesel 12..16).
+COMPRESSION_RATIOS = {"explosion": 5.0, "diesel": 14.0}
 #: The four strokes in order, from the head-end dead centre (top dead centre) at 0°.
 STROKES = ("suction", "compression", "expansion", "exhaust")
 
@@ -109,19 +121,29 @@ def _piston(theta: float, rod_ratio: float) -> float:
 def model_pressure(stroke: int, x: float, g: Mapping[str, float], engine: str) -> float:
     """Absolute pressure (at) of the idealised cycle on *stroke* (0..3) at piston path x (fraction of the stroke).
 
+    On the expansion stroke beyond the release point x_e (``release``) the pressure falls on the straight
+    line from e to the exhaust pressure at the dead centre.
+
     >>> g = {"suction": 0.9, "exhaust": 1.1, "compression_ratio": 5.0, "clearance": 0.25, "exponent": 1.3,
-    ...      "max_pressure": 25.0, "cutoff": 2.0}
+    ...      "max_pressure": 25.0, "cutoff": 2.0, "release": 1.0}
     >>> round(model_pressure(1, 0.0, g, "explosion"), 6), round(model_pressure(2, 1.0, g, "explosion"), 6)
     (7.292955, 3.085169)
+    >>> g["release"] = 0.9
+    >>> round(model_pressure(2, 0.9, g, "explosion"), 6), model_pressure(2, 1.0, g, "explosion")
+    (3.438388, 1.1)
     """
     vc, n = g["clearance"], g["exponent"]
-    v = vc + x
     if stroke == 0:
         return g["suction"]
     if stroke == 3:
         return g["exhaust"]
     if stroke == 1:
-        return g["suction"] * ((1.0 + vc) / v) ** n
+        return g["suction"] * ((1.0 + vc) / (vc + x)) ** n
+    xe = g["release"]
+    if x > xe:  # released: the straight line e-f
+        pe = model_pressure(2, xe, g, engine)
+        return pe + (g["exhaust"] - pe) * (x - xe) / (1.0 - xe)
+    v = vc + x
     if engine == "explosion":
         return g["max_pressure"] * (vc / v) ** n
     pc = g["suction"] * g["compression_ratio"] ** n
@@ -135,12 +157,15 @@ def model_pressure(stroke: int, x: float, g: Mapping[str, float], engine: str) -
 
 
 def _givens(engine: str, r: Any, rod_ratio: Any, compression_ratio: Any, suction: Any, exhaust: Any,
-            max_pressure: Any, cutoff: Any, exponent: Any, pressure_unit: Any, pressure_ratio: Any,
+            max_pressure: Any, cutoff: Any, exponent: Any, pressure_unit: Any, pressure_ratio: Any, release: Any,
             steps: int) -> dict[str, float]:
     if engine not in ENGINES:
         raise InvalidParameter(f"engine must be one of {', '.join(ENGINES)}, got {engine!r}{did_you_mean(engine, ENGINES)}")
+    if compression_ratio is None:
+        compression_ratio = COMPRESSION_RATIOS[engine]
     g = {"r": bounded("crank radius r", r, DRAWN_LENGTH), "rod_ratio": rod_ratio_param(rod_ratio),
          "compression_ratio": bounded("compression ratio ε", compression_ratio, COMPRESSION_RATIO),
+         "release": bounded("release x_e/s", release, RELEASE),
          "suction": bounded("suction pressure p_a (at)", suction, SUCTION_PRESSURE),
          "exhaust": bounded("exhaust pressure p_g (at)", exhaust, EXHAUST_PRESSURE),
          "exponent": bounded("polytropic exponent n", exponent, POLYTROPE_EXPONENT),
@@ -150,24 +175,30 @@ def _givens(engine: str, r: Any, rod_ratio: Any, compression_ratio: Any, suction
     g["clearance"] = 1.0 / (eps - 1.0)
     pc = g["suction"] * eps ** n
     g["tan_alpha"], g["tan_beta"] = brauer_tangents(eps, n, steps)
+    v_e = g["clearance"] + g["release"]   # the volume at release e
     if engine == "explosion":
         g["max_pressure"] = bounded("maximum pressure (at)", max_pressure, ENGINE_PRESSURE)
         if g["max_pressure"] <= pc:
             raise InvalidParameter(f"maximum pressure {g['max_pressure']:g} at must exceed the compression end "
                                    f"p_a ε^n = {pc:.4g} at (ignition raises the pressure)")
+        v_d = g["clearance"]
     else:
         g["cutoff"] = bounded("cut-off ratio ρ = V_d/V_c", cutoff, CUTOFF_RATIO)
-        if g["cutoff"] >= eps / 1.05:
-            raise InvalidParameter(f"cut-off ratio ρ = {g['cutoff']:g} must stay below ε/1.05 = {eps / 1.05:.4g} "
-                                   "(combustion ends before the crank-end dead centre)")
+        v_d = g["cutoff"] * g["clearance"]
+        if v_e / v_d < 1.05:
+            raise InvalidParameter(f"cut-off ratio ρ = {g['cutoff']:g} must leave room for the expansion: ρ V_c "
+                                   f"below V_e/1.05 = {v_e / 1.05:.4g} strokes (combustion ends before the release "
+                                   f"e at x_e = {g['release']:g} s)")
         ENGINE_PRESSURE.check("compression-end pressure p_a ε^n (at)", pc)
-        g["tan_alpha_e"], g["tan_beta_e"] = brauer_tangents(eps / g["cutoff"], n, steps)
+    # the expansion's own rays: from d (V_d) to the release e (V_e) in the same number of steps
+    g["tan_alpha_e"], g["tan_beta_e"] = brauer_tangents(v_e / v_d, n, steps)
     return g
 
 
 def _validate(givens: Mapping[str, float]) -> None:
     engine = "diesel" if "cutoff" in givens else "explosion"
     bounded("crank radius r", givens["r"], DRAWN_LENGTH)
+    RELEASE.check("release x_e/s", givens["release"])
     rod_ratio_param(givens["rod_ratio"])
     COMPRESSION_RATIO.check("compression ratio ε", givens["compression_ratio"])
     POLYTROPE_EXPONENT.check("polytropic exponent n", givens["exponent"])
@@ -229,19 +260,25 @@ def _brauer(b: Builder, tag: str, *, O: str, OM: str, ON: str, d45: tuple[str, s
     return pts
 
 
-def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str, r: float, compression_ratio: float,
-                      suction: float, exhaust: float, max_pressure: float, cutoff: float, exponent: float,
-                      pressure_unit: float, pressure_ratio: float, steps: int) -> Figure:
+def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str, r: float,
+                      compression_ratio: float | None, suction: float, exhaust: float, max_pressure: float,
+                      cutoff: float, exponent: float, pressure_unit: float, pressure_ratio: float, release: float,
+                      over_pressure: bool | None, steps: int) -> Figure:
     if isinstance(steps, bool) or not isinstance(steps, int) or not 2 <= steps <= 40:
         raise InvalidParameter(f"Brauer steps per polytrope must be a whole number from 2 to 40, got {steps!r}")
     givens = _givens(engine, r, rod_ratio, compression_ratio, suction, exhaust, max_pressure, cutoff, exponent,
-                     pressure_unit, pressure_ratio, steps)
+                     pressure_unit, pressure_ratio, release, steps)
+    if over_pressure is None:   # Abb. 1058 is the Diesel's
+        over_pressure = engine == "diesel"
+    if not isinstance(over_pressure, bool):
+        raise InvalidParameter(f"over_pressure must be true or false, got {over_pressure!r}")
     used = check_parts(parts, method)
     n = parts
-    # Which ordinates of the expansion stroke lie on the constant-pressure line is decided here: the cut-off is
-    # structural for the Diesel engine.
+    # Which ordinates of the expansion stroke lie on the constant-pressure line and which beyond the release is
+    # decided here: the cut-off and the release are structural.
     b = Builder("four-stroke", givens, {"engine": engine, "parts": n, "method": used, "requested_method": method,
-                                        "steps": steps, "plate": PLATE,
+                                        "steps": steps, "plate": PLATE, "release": givens["release"],
+                                        "over_pressure": over_pressure,
                                         **({"cutoff": givens["cutoff"]} if engine == "diesel" else {})})
     f = build_frame(b)
     upper = divide_semicircle(b, O=f["O"], D0=f["D0"], D1=f["D1"], circle=f["circle"], axis=f["axis"], n=n,
@@ -286,6 +323,7 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
         return OM, ON
 
     OM, ON = rays("", "tan_alpha", "tan_beta")
+    OMe, ONe = rays("e", "tan_alpha_e", "tan_beta_e")
 
     def level(name: str, given: str, what: tuple[str, str]) -> tuple[str, str]:
         ln = b.given_length(f"{name}.l", product=(given, unit), de=f"{what[0]} im Druckmaßstab",
@@ -310,13 +348,12 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
     if engine == "explosion":
         with b.group("ignition at constant volume: the maximum pressure", "Zündung bei gleichem Volumen: Höchstdruck"):
             pd, hd = level("pmax", "max_pressure", ("Höchstdruck", "maximum pressure"))
-        exp_ = _brauer(b, "eP", O=Ov, OM=OM, ON=ON, d45=d45, vdir=vdir, hdir=hdir, base=base, paxis=paxis,
+        exp_ = _brauer(b, "eP", O=Ov, OM=OMe, ON=ONe, d45=d45, vdir=vdir, hdir=hdir, base=base, paxis=paxis,
                        V0=feet[0], v0=ords[0], p0=pd, h0=hd, steps=steps, outward=True,
                        what=("Expansionslinie", "expansion line"))
         b.polyline("ignition", [c, exp_[0]], de="Verpuffung c–d bei gleichem Volumen", en="explosion c-d at constant volume")
         comb_line = None
     else:
-        OMe, ONe = rays("e", "tan_alpha_e", "tan_beta_e")
         with b.group("combustion at constant pressure to the cut-off", "Verbrennung bei gleichem Druck bis zur Füllung"):
             comb_line = f"cPh{steps}"   # the horizontal through c
             lv = b.given_length("Vd", product=("cutoff", "clearance", "r"), factor=2.0, de="ρ·V_c", en="rho V_c")
@@ -339,12 +376,13 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
         gpt = b.intersect("g", ords[0], exhaust_line, rule=("only",), labels={"g": "g"}, de="Auspuffende g",
                           en="end of exhaust g")
         b.polyline("suction", [a, comp[0]], de="Sauglinie a–b", en="suction line a-b")
-        b.polyline("release", [exp_[-1], fpt], de="Auslass e–f", en="release e-f")
+        b.polyline("release", [exp_[-1], fpt], de="Auslass in e, Druckabfall e–f", en="release at e, pressure drop e-f")
         b.polyline("exhaust", [fpt, gpt], de="Auspufflinie f–g", en="exhaust line f-g")
     # -- readings at the piston positions, stroke by stroke
     readings: dict[tuple[int, int], str] = {}
     on_line_count = 0   # Diesel: how many ordinates of the expansion stroke stand on the constant-pressure line
-    xs = [0.0] + [None] * (n - 1) + [1.0]  # where the piston stands, read off the figure when it matters
+    released_count = 0  # how many stand beyond the release e, on the line e-f
+    early = givens["release"] < 1.0
     with b.group("pressures at the piston positions", "Drücke in den Kolbenstellungen"):
         for k in range(n + 1):
             readings[0, k] = a if k == 0 else comp[0] if k == n else b.intersect(
@@ -358,15 +396,28 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
                 readings[2, k] = exp_[0] if engine == "explosion" else c
                 on_line_count += engine == "diesel"
             elif k == n:
-                readings[2, k] = exp_[-1]
+                readings[2, k] = fpt if early else exp_[-1]
+                released_count += early
             else:
                 x = (b[f"X{k}"][0] - b[f["D0"]][0]) / (2.0 * givens["r"])
-                xs[k] = x
                 on_line = engine == "diesel" and givens["clearance"] + x <= givens["cutoff"] * givens["clearance"]
+                released = x > givens["release"]
                 on_line_count += on_line
-                readings[2, k] = b.intersect(f"P{k}x", ords[k], comb_line if on_line else "expansion", rule=("only",),
-                                             de=f"{'Verbrennungs' if on_line else 'Expansions'}linie bei {k}",
-                                             en=f"{'combustion' if on_line else 'expansion'} line at {k}")
+                released_count += released
+                line, what = ((comb_line, ("Verbrennungslinie", "combustion line")) if on_line else
+                              ("release", ("Auslasslinie e–f", "release line e-f")) if released else
+                              ("expansion", ("Expansionslinie", "expansion line")))
+                readings[2, k] = b.intersect(f"P{k}x", ords[k], line, rule=("only",), de=f"{what[0]} bei {k}",
+                                             en=f"{what[1]} at {k}")
+    if over_pressure:
+        _over_pressure(b, f, upper, n, feet, readings, on_line_count, released_count)
+    proto = b.protocol()
+    return Figure(proto, proto.replay(givens))
+
+
+def _over_pressure(b: Builder, f: Mapping[str, str], upper: list[str], n: int, feet: list[str],
+                   readings: Mapping[tuple[int, int], str], on_line_count: int, released_count: int) -> None:
+    """Abb. 1058: the pressures carried to the 720° diagram (a–a) and less the mass pressures (b–b)."""
     # -- the 720° diagram
     with b.group("720 degree diagram: base, divisions, atmospheric line",
                  "Diagramm über 720°: Grundlinie, Teilung, atmosphärische Linie"):
@@ -423,14 +474,25 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
             for name, pts in ((f"aa{s}", aa[s]), (f"bb{s}", bb[s])):
                 line = "a–a" if name.startswith("aa") else "b–b"
                 cut = on_line_count if s == 2 else 0
+                rel = released_count if s == 2 else 0
                 if cut:
                     # Diesel: the constant-pressure part with the straightedge, then a chord across the cut-off
                     # (a corner no French curve follows), then the curve along the expansion.
-                    b.polyline(f"{name}.line", pts[:cut], de=f"{line}, Verbrennung bei gleichem Druck",
-                               en=f"{line}, combustion at constant pressure")
+                    if cut >= 2:
+                        b.polyline(f"{name}.line", pts[:cut], de=f"{line}, Verbrennung bei gleichem Druck",
+                                   en=f"{line}, combustion at constant pressure")
                     b.polyline(f"{name}.cut", pts[cut - 1:cut + 1], de=f"{line}, über die Füllung hinweg",
                                en=f"{line}, across the cut-off")
                     pts = pts[cut:]
+                if rel:
+                    # the release e between two ordinates: a corner again, so the pressure drop is its own curve
+                    after = pts[len(pts) - rel:]
+                    pts = pts[:len(pts) - rel]
+                    b.polyline(f"{name}.rel", [pts[-1], after[0]], de=f"{line}, über den Auslass e hinweg",
+                               en=f"{line}, across the release e")
+                    if len(after) >= 2:
+                        b.french_curve(f"{name}.drop", tbase, after, de=f"{line}, Druckabfall nach e",
+                                       en=f"{line}, pressure drop after e")
                 if len(pts) >= 2:
                     b.french_curve(name, tbase, pts, de=f"{line}, {STROKES[s]}", en=f"{line}, {STROKES[s]} stroke")
         for s in range(3):
@@ -440,8 +502,6 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
         b.set_label(aa[3][-1], "a")
         b.set_label(bb[0][0], "b")
         b.set_label(bb[3][-1], "b")
-    proto = b.protocol()
-    return Figure(proto, proto.replay(givens))
 
 
 #: The plate (Abb. 1056–1058): the p-V diagram with Brauer's rays and points, the crank circle with the piston
@@ -516,8 +576,12 @@ def four_stroke_checks(fig: Figure) -> list[Check]:
         checks.append(Check(f"expansion point {j}: p V^n", pressure(fig, f"eP{j}") * volume(fig, f"eP{j}") ** nexp, e0,
                             tol_p * max(1.0, v_d ** nexp) * 4.0 + abs(e0) * 1e-12,
                             "Brauer's construction: Euclidean after the two rays", "at·stroke^n"))
-    checks.append(Check("expansion ends on the crank-end dead centre", volume(fig, f"eP{m}"), 1.0 + vc, tol_v,
-                        "m steps of 1 + tg α = (ε/ρ)^(1/m)", "stroke"))
+    xe = g["release"]
+    checks.append(Check("expansion ends at the release e (x_e)" if xe < 1.0 else
+                        "expansion ends on the crank-end dead centre", volume(fig, f"eP{m}"), vc + xe, tol_v,
+                        "m steps of 1 + tg α = (V_e/V_d)^(1/m)", "stroke"))
+    checks.append(Check("release e: p_d (V_d/V_e)^n", pressure(fig, f"eP{m}"), p_d * (v_d / (vc + xe)) ** nexp,
+                        tol_p * eps ** nexp * 4.0, "the last Brauer point", "at"))
     # readings on the ordinates and the 720 degree diagram
     xk = {k: volume(fig, f"F{k}") - vc for k in range(n + 1)}
     comp_pts = [(volume(fig, f"cP{j}"), pressure(fig, f"cP{j}")) for j in range(m + 1)]
@@ -527,10 +591,10 @@ def four_stroke_checks(fig: Figure) -> list[Check]:
     inner = [k for k in range(1, n)]
     dev_c = dict(zip(inner, _curve_tolerance(fig, sorted(comp_exact), [vc + xk[k] for k in inner],
                                              lambda v: c0 / v ** nexp)))
-    on_exp = [k for k in inner if engine == "explosion" or vc + xk[k] > g["cutoff"] * vc]
+    on_exp = [k for k in inner if (engine == "explosion" or vc + xk[k] > g["cutoff"] * vc) and xk[k] <= xe]
     dev_e = dict(zip(on_exp, _curve_tolerance(fig, exp_exact, [vc + xk[k] for k in on_exp], lambda v: e0 / v ** nexp)))
     lam = 1.0 / g["rod_ratio"]
-    for s in range(4):
+    for s in range(4 if fig.params.get("over_pressure") else 0):
         for i in range(n + 1):
             t = s * n + i
             k = i if s % 2 == 0 else n - i
@@ -559,7 +623,11 @@ def four_stroke_checks(fig: Figure) -> list[Check]:
 #: Command-line help for the givens (book terms).
 OPTION_HELP = {
     "engine": "four-stroke: explosion (Abb. 1056, ignition at constant volume) or diesel (Abb. 1057, constant pressure)",
-    "compression_ratio": "four-stroke: compression ratio epsilon = (V_c + V_h)/V_c (explosion 5, Diesel 14)",
+    "compression_ratio": "four-stroke: compression ratio epsilon = (V_c + V_h)/V_c (default: explosion 5, Diesel 14)",
+    "release": "four-stroke: piston path x_e/s where the exhaust opens (seed 001: early, at e; default 0.9; 1 "
+               "releases at the dead centre)",
+    "over_pressure": "four-stroke: draw the over-pressure a-a, b-b over 720 degrees (Abb. 1058; default: the "
+                     "Diesel's, as the seed)",
     "suction": "four-stroke: suction pressure p_a, at absolute (0.9)",
     "exhaust": "four-stroke: exhaust pressure p_g, at absolute (1.1)",
     "max_pressure": "four-stroke, explosion: maximum pressure after ignition, at (seed 001: about 25)",
@@ -577,9 +645,10 @@ FOUR_STROKE = register(Construction(
     build=build_four_stroke,
     checks=four_stroke_checks,
     defaults={"engine": "explosion", "rod_ratio": 5.0, "parts": 12, "method": "auto", "r": 1.0,
-              "compression_ratio": 5.0, "suction": 0.9, "exhaust": 1.1, "max_pressure": 25.0, "cutoff": 2.0,
-              "exponent": 1.3, "pressure_unit": 0.1, "pressure_ratio": 6.0, "steps": 12},
-    book_params=({}, {"engine": "diesel", "compression_ratio": 14.0}),
-    structural=("engine", "parts", "method", "steps", "cutoff"),
-    extra={"help": OPTION_HELP},
+              "compression_ratio": None, "suction": 0.9, "exhaust": 1.1, "max_pressure": 25.0, "cutoff": 2.0,
+              "exponent": 1.3, "pressure_unit": 0.1, "pressure_ratio": 6.0, "release": 0.9, "over_pressure": None,
+              "steps": 12},
+    book_params=({}, {"engine": "diesel"}),
+    structural=("engine", "parts", "method", "steps", "cutoff", "release", "over_pressure"),
+    extra={"help": OPTION_HELP, "switches": ("over_pressure",)},
 ), validate=_validate)

@@ -69,9 +69,24 @@ def test_check_exit_codes_and_json(cli, tmp_path):
 def test_piston_path_table_csv(cli):
     code, out, _ = cli("table", "piston-path", "--rod-ratio", "4", "--parts", "18", "--format", "csv")
     rows = list(csv.DictReader(io.StringIO(out)))
-    assert code == 0 and list(rows[0]) == ["index", "crank_angle_deg", "x_constructed", "x_exact", "x_book"]
+    assert code == 0 and list(rows[0]) == ["index", "crank_angle_deg", "crank_angle_constructed_deg", "x_constructed",
+                                           "x_exact", "x_book"]
     assert len(rows) == 19 and float(rows[-1]["x_constructed"]) == pytest.approx(1.0, abs=1e-12)
     assert float(rows[9]["crank_angle_deg"]) == pytest.approx(90.0, abs=1e-9)
+
+
+@pytest.mark.parametrize("argv", [
+    ("piston-path", "--rod-ratio", "5"), ("tangential-pressure", "--rod-ratio", "5"),
+    ("tangential-pressure", "--rod-ratio", "5", "--revolution"),
+    ("mass-forces", "--weight", "830", "--rpm", "50", "--crank-radius", "0.4", "--rod-length", "2.0"),
+    ("mass-forces", "--weight", "830", "--rpm", "50", "--crank-radius", "0.4", "--rod-length", "2.0", "--revolution"),
+])
+def test_tables_are_keyed_by_the_division_angle(cli, argv):
+    """Dürer's trisection draws 10° as 9.99999803554437°: the key is the 10° the row stands for."""
+    code, out, _ = cli("table", *argv, "--format", "csv")
+    keys = [row["crank_angle_deg"] for row in csv.DictReader(io.StringIO(out))]
+    assert code == 0 and keys[:4] == ["0", "10", "20", "30"]
+    assert all(float(k) == 10 * round(float(k) / 10) for k in keys)
 
 
 def test_crank_angle_table_csv(cli):

@@ -208,3 +208,16 @@ def test_cli_bad_engine_one_line(capsys, tmp_path):
     assert main(["replay", "four-stroke", "--engine", "steam", "--out", str(out)]) == 2
     err = capsys.readouterr().err
     assert len(err.strip().splitlines()) == 1 and "engine" in err and not out.exists()
+
+
+@pytest.mark.parametrize("engine", ["explosion", "diesel"])
+def test_a_sweep_over_the_rod_ratio_reads_every_ordinate(engine):
+    """The working line (c–d, d–e, e–f) is one drawn line: however the rod moves the piston, each ordinate of the
+    working stroke meets it (read off the expansion curve or the drop e–f as the piston stands)."""
+    c = get("four-stroke")
+    fig = c.figure(engine=engine, parts=12, steps=6, over_pressure=True)
+    sweep = fig.protocol.replay(c.rod_ratio_sweep(dict(fig.replay.givens), [1.5, 3.0, 12.0]))
+    from construct.figure import Figure
+
+    for checks in c.sweep_checks(Figure(fig.protocol, sweep)):
+        assert all(ch.ok for ch in checks), [ch.name for ch in checks if not ch.ok]

@@ -351,8 +351,6 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
         exp_ = _brauer(b, "eP", O=Ov, OM=OMe, ON=ONe, d45=d45, vdir=vdir, hdir=hdir, base=base, paxis=paxis,
                        V0=feet[0], v0=ords[0], p0=pd, h0=hd, steps=steps, outward=True,
                        what=("Expansionslinie", "expansion line"))
-        b.polyline("ignition", [c, exp_[0]], de="Verpuffung c–d bei gleichem Volumen", en="explosion c-d at constant volume")
-        comb_line = None
     else:
         with b.group("combustion at constant pressure to the cut-off", "Verbrennung bei gleichem Druck bis zur Füllung"):
             comb_line = f"cPh{steps}"   # the horizontal through c
@@ -364,25 +362,38 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
         exp_ = _brauer(b, "eP", O=Ov, OM=OMe, ON=ONe, d45=d45, vdir=vdir, hdir=hdir, base=base, paxis=paxis,
                        V0=Vd, v0=vd, p0=pc_mark, h0=comb_line, steps=steps, outward=True,
                        what=("Expansionslinie", "expansion line"))
-        b.polyline("ignition", [c, exp_[0]], de="Verbrennung c–d bei gleichem Druck", en="combustion c-d at constant pressure")
     b.set_label(exp_[0], "d")
     b.set_label(exp_[-1], "e")
+    early = givens["release"] < 1.0
+    diesel = engine == "diesel"
     with b.group("the curves and the closed diagram", "Die Linien und das geschlossene Diagramm"):
         b.french_curve("compression", base, comp, de="Verdichtungslinie (Kurvenlineal)", en="compression line (French curve)")
-        b.french_curve("expansion", base, exp_, de="Expansionslinie (Kurvenlineal)", en="expansion line (French curve)")
         a = b.intersect("a", ords[0], suction_line, rule=("only",), labels={"a": "a"}, de="Saugbeginn a", en="start of suction a")
         fpt = b.intersect("f", ords[n], exhaust_line, rule=("only",), labels={"f": "f"}, de="Auspuffbeginn f",
                           en="start of exhaust f")
         gpt = b.intersect("g", ords[0], exhaust_line, rule=("only",), labels={"g": "g"}, de="Auspuffende g",
                           en="end of exhaust g")
+        # The working stroke's line drawn in one: (the Diesel's constant-pressure line c-d,) the curve d..e and
+        # (released early) the straight drop e-f, laid anew at each corner, so that every ordinate meets it
+        # wherever the rod ratio puts the piston.
+        pts = ([c] if diesel else []) + list(exp_) + ([fpt] if early else [])
+        corners = ([1] if diesel else []) + ([len(pts) - 2] if early else [])
+        b.french_curve("expansion", base, pts, corners=corners,
+                       de="Arbeitslinie: " + ("Verbrennung c–d, " if diesel else "") + "Expansion d–e (Kurvenlineal)"
+                          + (", Auslass e–f" if early else ""),
+                       en="working line: " + ("combustion c-d, " if diesel else "") + "expansion d-e (French curve)"
+                          + (", release e-f" if early else ""))
+        if not diesel:
+            b.polyline("ignition", [c, exp_[0]], de="Verpuffung c–d bei gleichem Volumen",
+                       en="explosion c-d at constant volume")
+        if not early:
+            b.polyline("release", [exp_[-1], fpt], de="Auslass im Totpunkt e–f", en="release at the dead centre e-f")
         b.polyline("suction", [a, comp[0]], de="Sauglinie a–b", en="suction line a-b")
-        b.polyline("release", [exp_[-1], fpt], de="Auslass in e, Druckabfall e–f", en="release at e, pressure drop e-f")
         b.polyline("exhaust", [fpt, gpt], de="Auspufflinie f–g", en="exhaust line f-g")
     # -- readings at the piston positions, stroke by stroke
     readings: dict[tuple[int, int], str] = {}
     on_line_count = 0   # Diesel: how many ordinates of the expansion stroke stand on the constant-pressure line
     released_count = 0  # how many stand beyond the release e, on the line e-f
-    early = givens["release"] < 1.0
     with b.group("pressures at the piston positions", "Drücke in den Kolbenstellungen"):
         for k in range(n + 1):
             readings[0, k] = a if k == 0 else comp[0] if k == n else b.intersect(
@@ -404,10 +415,9 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
                 released = x > givens["release"]
                 on_line_count += on_line
                 released_count += released
-                line, what = ((comb_line, ("Verbrennungslinie", "combustion line")) if on_line else
-                              ("release", ("Auslasslinie e–f", "release line e-f")) if released else
-                              ("expansion", ("Expansionslinie", "expansion line")))
-                readings[2, k] = b.intersect(f"P{k}x", ords[k], line, rule=("only",), de=f"{what[0]} bei {k}",
+                what = (("Verbrennungslinie", "combustion line") if on_line else
+                        ("Auslasslinie e–f", "release line e-f") if released else ("Expansionslinie", "expansion line"))
+                readings[2, k] = b.intersect(f"P{k}x", ords[k], "expansion", rule=("only",), de=f"{what[0]} bei {k}",
                                              en=f"{what[1]} at {k}")
     if over_pressure:
         _over_pressure(b, f, upper, n, feet, readings, on_line_count, released_count)

@@ -1,9 +1,9 @@
 """``construct errata``: every printed number of the seeds' tables and worked examples beside its true value.
 
 Text output is an aligned table, one line per printed number or formula, and
-a summary of the counts per class (``agrees``, ``slip``, and for what is wrong
-the cause: ``typesetting``, ``arithmetic``, ``follows``, ``drawing``,
-``unexplained``; ``--classes`` prints what each means); ``--format json`` prints the list of
+a summary of the counts per class (``agrees``, ``slip``, ``follows``, and for what is
+wrong the cause: ``typesetting``, ``arithmetic``, ``drawing``, ``ambiguous``,
+``unexplained``; ``--classes`` prints what each means and the rules they follow); ``--format json`` prints the list of
 records (``true`` to 8 significant digits, ``units`` to 2 decimals);
 ``--class`` keeps one class only.
 
@@ -12,7 +12,7 @@ records (``true`` to 8 significant digits, ``units`` to 2 decimals);
 table ...
 Tabelle 1 ... 0° ... 0.1666 ... slip ... truncated instead of rounded
 ...
-21 printed numbers: 0 agrees, 21 slip, 0 typesetting, 0 arithmetic, 0 follows, 0 drawing, 0 unexplained; 0 wrong formulas
+... printed numbers: 0 agrees, ... slip, 0 follows, 0 typesetting, 0 arithmetic, 0 drawing, 0 ambiguous, 0 unexplained; 0 wrong formulas
 0
 """
 
@@ -22,12 +22,12 @@ import argparse
 import json
 from collections import Counter
 
-from ...books.errata import CLASS_MEANINGS, CLASSES, Erratum, errata_of
+from ...books.errata import CLASS_MEANINGS, CLASSES, RULES, Erratum, errata_of
 from ..common import add_format_option
 
 NAME = "errata"
 HELP = ("List every printed number of the seeds' tables and worked examples with its true value and a verdict "
-        "(agrees, slip, or the cause: typesetting, arithmetic, follows, drawing, unexplained).")
+        "(agrees, slip, follows, or the cause: typesetting, arithmetic, drawing, ambiguous, unexplained).")
 
 _HEADINGS = ("table", "row", "column", "printed", "true", "units", "class", "note")
 
@@ -39,13 +39,16 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--seed", default=None, metavar="NNN",
                         help="show only one seed's entries (000, 001, 002, 004; default: all)")
-    parser.add_argument("--classes", action="store_true", help="print what each class means and stop")
+    parser.add_argument("--classes", action="store_true",
+                        help="print what each class means and the rules of the verdicts, and stop")
 
 
 def run(args: argparse.Namespace) -> int:
     if args.classes:
         width = max(map(len, CLASS_MEANINGS))
         print("\n".join(f"{name.ljust(width)}  {text}" for name, text in CLASS_MEANINGS.items()))
+        print("\nRules:")
+        print("\n".join(f"- {rule}" for rule in RULES))
         return 0
     entries = [e for e in errata_of("all" if args.seed is None else args.seed) if args.class_ is None or e.class_ == args.class_]
     if args.format == "json":

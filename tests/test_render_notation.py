@@ -198,7 +198,7 @@ def test_the_svg_keeps_the_provenance_for_the_machine(tmp_path):
 
 @pytest.mark.parametrize("name, params", PLAN, ids=IDS)
 def test_group_titles_name_the_figures_letters(name, params):
-    from construct.render.svg import group_caption
+    from construct.render.captions import group_caption
 
     sc = build_scene(_figure(name, params))
     bad = {group_caption(sc, k) for k in range(1, len(sc.steps) + 1)}

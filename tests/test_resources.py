@@ -23,7 +23,7 @@ import construct
 from construct import Builder
 from construct.kernel import letters as captions  # the rules behind construct.render.captions
 from construct.render.captions import CAPTION_LIMIT, TITLE_LIMIT, Reader, displayed
-from construct.render.svg import wrap as wrap_px
+from construct.render.captions import wrap as wrap_px
 from construct.render.wrapping import shorten, wrap
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))

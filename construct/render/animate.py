@@ -26,8 +26,9 @@ from __future__ import annotations
 
 from typing import Any
 
+from .captions import group_caption
 from .styles import PLAIN, Style
-from .svg import Drawing, group_caption
+from .svg import Drawing
 from .svgdoc import fmt
 from .viewport import camera_transform, camera_zoom
 
@@ -76,7 +77,7 @@ def stages(drawing: Drawing, most: int = MAX_STAGES) -> list[int]:
 def _stage_caption(drawing: Drawing, first: int, last: int) -> list[tuple[str, str]]:
     """The caption of a stage of several steps: its group and the span of steps."""
     if first == last:
-        return [line for line in drawing.frame_caption_lines(last) if line[0] != "grp"]
+        return [line for line in drawing.captions.frame_lines(last) if line[0] != "grp"]
     n = len(drawing.scene.steps)
     group = group_caption(drawing.scene, last)
     return [("de", f"Schritte {first}–{last} von {n}: {group}"), ("en", f"Steps {first}–{last} of {n}")]
@@ -216,7 +217,7 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
             camera.add(ring)  # over the drawing
         dwg.add(outer)
     # Captions: each stage's while it is drawn, the figure's title otherwise (and in still renderers).
-    title_lines = d.title_lines(title or d.scene.title)[: d.n_caption]
+    title_lines = d.captions.title_lines(title or d.scene.title)[: d.n_caption]
     tg = d.caption_group(title_lines, id="title")
     if tg is not None:
         tg.add(f.set(attributeName="visibility", to="hidden", begin="clock.begin", dur=f"{fmt(n * dt)}s"))

@@ -34,12 +34,15 @@ every machine.
 from __future__ import annotations
 
 import math
-from typing import Callable, Sequence
+from typing import Any, Callable, Sequence
+
+import numpy as np
 
 from .scene import MarkKind, Scene, extreme_points
 from .svgdoc import fmt
 
-__all__ = ["step_views", "views_box", "shots", "step_focus", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX"]
+__all__ = ["step_views", "views_box", "shots", "step_focus", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
+           "clear_edges", "clear_tag_edges", "player_letter_scale", "EDGE_ROUNDS", "ring_round"]
 
 #: The most the step player shows of the figure in a 1400 × 1000 window (width, height in screen px): the
 #: window the views are shaped for and their magnification is measured in (:func:`zoom_of`).
@@ -93,7 +96,7 @@ def level_css() -> str:
         rules.append(f".zl{i} .lbg>.lb,.zl{i} .lbg>.leader,.zl{i} .pt"
                      f"{{--zs:{fmt(1 / z, 4)};transform:scale({fmt(1 / z, 4)})}}")
     rules.append(",".join(f".zl{i} .lbx" for i in range(THIN_FROM, len(ZOOM_LEVELS))) + "{display:inline}")
-    # a letter with no room at a zoom level gives way there (svg.Drawing._zoom_placing)
+    # a letter with no room at a zoom level gives way there (placing.Placing._zoom_placing)
     rules.append(",".join(f".zl{i} .h{i}" for i in range(1, len(ZOOM_LEVELS))) + "{display:none}")
     return "\n".join(rules)
 
@@ -409,6 +412,27 @@ def step_views(scene: Scene, full: View, bbox: Box, px: Callable[[float, float],
     return out
 
 
+def ring_round(points: Sequence[tuple[float, float]], view: View, full: View,
+               ring_px: float) -> tuple[float, float, float] | None:
+    """(cx, cy, r), canvas pixels, of the ring round a mark through *points* (canvas pixels) when the mark is
+    smaller on the screen than the ring (*ring_px* across) at *view*; None when it is large enough (or has no
+    points).
+
+    >>> ring_round([(100.0, 100.0), (102.0, 101.0)], (0, 0, 480, 334), (0, 0, 960, 668), 18.0)
+    (101.0, 100.5, 9.0)
+    """
+    if not points:
+        return None
+    x0, x1 = min(p[0] for p in points), max(p[0] for p in points)
+    y0, y1 = min(p[1] for p in points), max(p[1] for p in points)
+    z = zoom_of(view, full)
+    size = max(x1 - x0, y1 - y0) * z  # on the screen, at the view
+    if size >= 3.2 * ring_px:  # also on a figure the player shows at 0.6 of its size
+        return None
+    r = max(ring_px, size / 2 + 4.0) / z
+    return (round((x0 + x1) / 2, 2), round((y0 + y1) / 2, 2), round(r, 2))
+
+
 def views_box(views: Sequence[View], full: View) -> View:
     """The view that takes in *views* (the steps of a stage of the animation, of a storyboard tile): their
     one view, or the box round them in the canvas's aspect (the whole canvas where that reaches its edge).
@@ -428,3 +452,149 @@ def views_box(views: Sequence[View], full: View) -> View:
     y = min(max((y0 + y1) / 2 - h / 2, 0.0), full[3] - h)
     return (round(x, 2), round(y, 2), round(w, 2), round(h, 2))
 
+
+
+# -- letters at the window's edge --------------------------------------------------------------
+
+#: Rounds of widening a view whose window cuts a letter (:func:`clear_edges`): each grows the view by 2 %
+#: at least, so 80 rounds reach 4.9 times its width -- past the whole figure from any view (MAX_ZOOM = 4).
+EDGE_ROUNDS = 80
+
+#: What a level shows as letters about their points: rows (x, y, then the letter's box x0, y0, x1, y1
+#: less x, y), canvas pixels (:meth:`construct.render.placing.Placing.letters_at`).
+Letters = Callable[[int], Any]
+
+
+def player_letter_scale(q: float) -> float:
+    """The player's letter scale (its ``--ls``) where a canvas pixel of the level's picture is *q* screen
+    pixels: letters at 12 px on the screen, never below 9.5 px.
+
+    >>> player_letter_scale(2.0), player_letter_scale(1.1), player_letter_scale(0.5)
+    (1.5833333333333333, 1.0, 0.5)
+    """
+    return min(max(1.0, 9.5 * q / 12.0), q)
+
+
+def clear_edges(views: list[View], full: View, letters_at: Letters) -> list[View]:
+    """The *views* widened so that no letter stands across the edge of the player's window.
+
+    A magnified view cuts the figure, and a letter cut in half by the window's edge cannot be
+    read.  The player shows a view in its window (:data:`PLAYER_FIGURE_PX`, the view's box
+    widened to the window's shape) with letters at its letter scale about their points; a view
+    whose window cuts a letter is widened about its centre until it takes the letter in
+    (rounds until none is cut: the letters shrink as the view grows, and along a row of letters
+    -- the piston positions 1′…11′ on the stroke line -- each round takes in one letter and may
+    cut the next; every round grows the view by 2 % at least, so the rounds end), up to the
+    whole figure.  *letters_at*: the letters each zoom level shows.
+    """
+    W, H = PLAYER_FIGURE_PX
+    done: dict = {}
+    out = []
+    for v in views:
+        if v == full:
+            out.append(v)
+            continue
+        if v not in done:
+            x, y, w, h = v
+            cx, cy = x + w / 2, y + h / 2
+            for _ in range(EDGE_ROUNDS):  # the level can change as the view grows, moving other letters
+                z = zoom_of((0.0, 0.0, w, h), full)  # the window's magnification
+                if z <= 1.0:
+                    break
+                zl = ZOOM_LEVELS[level(z)]
+                a = letters_at(level(z))
+                q = max(w / W, h / H)
+                ls = player_letter_scale(q * z / zl)
+                hw, hh = W * q / 2, H * q / 2
+                x0, y0 = a[:, 0] + ls * a[:, 2] - cx, a[:, 1] + ls * a[:, 3] - cy
+                x1, y1 = a[:, 0] + ls * a[:, 4] - cx, a[:, 1] + ls * a[:, 5] - cy
+                meet = (x0 < hw) & (x1 > -hw) & (y0 < hh) & (y1 > -hh)
+                cut = meet & ((x0 < -hw) | (x1 > hw) | (y0 < -hh) | (y1 > hh))
+                if not cut.any():
+                    break
+                g = max(float(np.maximum(-x0[cut], x1[cut]).max()) / hw,
+                        float(np.maximum(-y0[cut], y1[cut]).max()) / hh) * 1.02
+                w, h = w * g, h * g
+            if zoom_of((0.0, 0.0, w, h), full) <= 1.0:
+                done[v] = full
+            else:
+                done[v] = v if (w, h) == (v[2], v[3]) else clip_view(cx, cy, w, h, full)
+        out.append(done[v])
+    return out
+
+
+#: The name tags a view of some steps at a zoom level shows: (row as in :data:`Letters`, is it a tag of
+#: the view's own steps?) (:meth:`construct.render.placing.Placing.tags_at`).
+Tags = Callable[[Sequence[int], int], list[tuple[tuple[float, ...], bool]]]
+
+
+def clear_tag_edges(views: list[View], full: View, tags_at: Tags, letters_at: Letters) -> list[View]:
+    """The *views* widened or shifted to take in the name tags their windows cut (of their steps or inputs),
+    as far as each view's zoom level allows (the tags were placed for that level)."""
+    views = list(views)
+    by_view: dict[tuple, list[int]] = {}
+    for k, v in enumerate(views, start=1):
+        if v != full:
+            by_view.setdefault(v, []).append(k)
+    for v0, ks in by_view.items():
+        v = v0
+        for _ in range(4):  # a view grown or shifted may take in part of another tag: again
+            nv = _tag_edge_view(v, ks, full, tags_at, letters_at)
+            if nv is None or nv == v:
+                break
+            v = nv
+        if v != v0:
+            for k in ks:
+                views[k - 1] = v
+    return views
+
+
+def _tag_edge_view(v: View, ks: list[int], full: View, tags_at: Tags, letters_at: Letters) -> View | None:
+    """View *v* (of steps *ks*) grown or shifted to take in the tags its window cuts (None: none cut)."""
+    W, H = PLAYER_FIGURE_PX
+    x, y, w, h = v
+    cx, cy = x + w / 2, y + h / 2
+    lvl = level(zoom_of(v, full))
+    zl = ZOOM_LEVELS[lvl]
+    shown = tags_at(ks, lvl)
+    if not shown:
+        return None
+    q = max(w / W, h / H)
+    ls = player_letter_scale(q * zoom_of(v, full) / zl)
+    grow = 1.0
+    hw, hh = W * q / 2, H * q / 2
+    own, inside, cut = [], [], []  # boxes about the view's centre: the views' own steps' tags first
+    for r, is_own in shown:
+        b = (r[0] + ls * r[2] - cx, r[1] + ls * r[3] - cy, r[0] + ls * r[4] - cx, r[1] + ls * r[5] - cy)
+        # the views' own steps' tags are taken in wherever they stand, the inputs' where the window cuts them
+        if is_own or (b[0] < hw and b[2] > -hw and b[1] < hh and b[3] > -hh):
+            (own if is_own else inside if (-hw <= b[0] and b[2] <= hw and -hh <= b[1] and b[3] <= hh)
+             else cut).append(b)
+            if b[0] < -hw or b[2] > hw or b[1] < -hh or b[3] > hh:
+                grow = max(grow, max(-b[0], b[2]) / hw * 1.02, max(-b[1], b[3]) / hh * 1.02)
+    # the letters: none is cut by the view (clear_edges), and none may be by the view grown or shifted
+    boxes = [(r[0] + ls * r[2] - cx, r[1] + ls * r[3] - cy, r[0] + ls * r[4] - cx, r[1] + ls * r[5] - cy)
+             for r in letters_at(lvl)]
+    for b in boxes:
+        if (b[0] < hw and b[2] > -hw and b[1] < hh and b[3] > -hh) and (
+                b[0] < -hw or b[2] > hw or b[1] < -hh or b[3] > hh):
+            grow = max(grow, max(-b[0], b[2]) / hw * 1.02, max(-b[1], b[3]) / hh * 1.02)
+    if grow == 1.0:
+        return None
+    grown = (0.0, 0.0, w * grow, h * grow)
+    if level(zoom_of(grown, full)) == lvl and zoom_of(grown, full) > 1.0:
+        return clip_view(cx, cy, w * grow, h * grow, full)
+    # where growing would leave the level, the shift that takes the tags in: the views' own steps'
+    # tags first, then it keeps in what it shows whole (the letters too), then the inputs' tags
+    inside += [b for b in boxes if -hw <= b[0] and b[2] <= hw and -hh <= b[1] and b[3] <= hh]
+    pan = [0.0, 0.0]
+    for i, half in ((0, hw), (1, hh)):
+        lo, hi = -math.inf, math.inf  # the shifts that keep in what is taken so far
+        for b in own + inside + cut:
+            nlo, nhi = max(lo, b[i + 2] - half + 1.0), min(hi, b[i] + half - 1.0)
+            if nlo <= nhi:
+                lo, hi = nlo, nhi
+        pan[i] = min(max(0.0, lo), hi)
+    if pan == [0.0, 0.0]:
+        return None
+    return (round(x + pan[0], 2), round(y + pan[1], 2), w, h)

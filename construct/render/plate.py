@@ -53,7 +53,7 @@ from typing import Any, Callable, Mapping, Sequence
 
 __all__ = ["Plate", "Panel", "Dimension", "AngleArc", "Stroke", "Lettering", "ScaleBar", "Sign", "Dot", "dms", "extent",
            "anchors", "shifted",
-           "furniture_elements", "LOOKS_CSS", "plate_of"]
+           "furniture_elements", "break_elements", "LOOKS_CSS", "plate_of"]
 
 XY = tuple[float, float]
 
@@ -272,6 +272,35 @@ def furniture_elements(items: Sequence[Any], px: Callable[[float, float], XY], s
     out: list[Any] = []
     for it in items:
         out.extend(_item(it, px, scale, size, f))
+    return out
+
+
+def break_elements(breaks: Sequence[tuple[float, float, float]], lines: Sequence[tuple[float, float, float, float]],
+                   px: Callable[[float, float], XY], f: Any, *, size: float = 12.0) -> list[Any]:
+    """The marks of a broken axis (:attr:`construct.render.scene.Scene.breaks`: x where a break starts, its
+    drawn width, drawing units) on every one of *lines* (segments, drawing units) crossing it: a gap in paper
+    colour (class ``brk``) and two slanted strokes (``brkline``), sized by the letters' *size*."""
+    out: list[Any] = []
+    for x0, w, _left_out in breaks:
+        for ax, ay, bx, by in lines:
+            if min(ax, bx) < x0 + 0.3 * w and max(ax, bx) > x0 + 0.7 * w and abs(bx - ax) > 1e-12:
+                # the classic break: a short gap along the line, a slanted tick at each side
+                xm = x0 + w / 2
+                ym = ay + (by - ay) * (xm - ax) / (bx - ax)
+                cx, cy = px(xm, ym)
+                ex, ey = px(bx, by)
+                sx, sy = px(ax, ay)
+                n = math.hypot(ex - sx, ey - sy) or 1.0
+                ux, uy = (ex - sx) / n, (ey - sy) / n
+                nx, ny = -uy, ux
+                h, gap = 0.6 * size, 0.45 * size
+                corners = [(cx + su * gap * ux + sn * h * nx, cy + su * gap * uy + sn * h * ny)
+                           for su, sn in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+                out.append(_poly(f, corners, "brk", close=True))
+                for su in (-1, 1):
+                    tx, ty = cx + su * gap * ux, cy + su * gap * uy
+                    out.append(_line(f, (tx - 0.35 * h * ux - h * nx, ty - 0.35 * h * uy - h * ny),
+                                     (tx + 0.35 * h * ux + h * nx, ty + 0.35 * h * uy + h * ny), "brkline"))
     return out
 
 

@@ -33,9 +33,9 @@ import re
 from typing import Any, Mapping
 
 from .animate import STEP_SECONDS, group_css
-from .captions import displayed
+from .captions import displayed, group_caption
 from .styles import PLAIN, Style
-from .svg import Drawing, group_caption
+from .svg import Drawing
 from .svgdoc import fmt
 
 __all__ = ["player_html", "json_for_script"]

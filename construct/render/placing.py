@@ -1,0 +1,539 @@
+"""Where a drawing's letters and name tags stand: :func:`construct.render.lettering.place` run over a scene.
+
+A :class:`Placing` places every letter of a scene on its canvas once (results
+first, clear of the points and the result lines), again for each zoom level of
+the player's camera (a letter that moves or gives way there gets a class and a
+rule), and the name tags in the views that show them.  The drawing
+(:class:`construct.render.svg.Drawing`) writes the letters where this says;
+:meth:`Placing.labels` hands the same answer to any other writer (a TikZ
+picture, a test) as data: each letter's point, text, anchor and offset.
+
+>>> from construct.constructions import get
+>>> from construct.render.scene import build_scene
+>>> from construct.render.viewport import Viewport
+>>> from construct.render.styles import PLAIN
+>>> sc = build_scene(get("crank").figure(parts=6))
+>>> vp = Viewport.fit(sc.bbox, PLAIN, 0)
+>>> labels = Placing(sc, PLAIN, vp, vp.height).labels()
+>>> o = next(p for p in labels if p.name == "O")
+>>> o.text, o.anchor, o.shown, o.leader
+('O', 'middle', True, False)
+>>> abs(o.offset[0]) < 3 * PLAIN.label_size and abs(o.offset[1]) < 3 * PLAIN.label_size
+True
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, Callable, Sequence
+
+import numpy as np
+
+from .camera import PLAYER_FIGURE_PX, THIN_FROM, ZOOM_LEVELS, View, level, zoom_of
+from .lettering import HALO_PX, LEADER_FROM, LineIndex, label_box, place
+from .scene import Mark, MarkKind, Scene, label_offset_direction
+from .styles import Style
+from .svgdoc import fmt
+from .viewport import Viewport
+
+__all__ = ["PlacedLabel", "Placing"]
+
+
+@dataclass(frozen=True, slots=True)
+class PlacedLabel:
+    """Where one point's letter stands on the canvas (pixels, y down).
+
+    The text is set with *anchor* at ``point + offset`` (its baseline); *distance* is how far that
+    is from the point in letter heights, and a letter from :data:`~construct.render.lettering.LEADER_FROM`
+    on is tied to its point by a leader.  *shown*: the whole figure shows it (a letter the whole
+    figure has no room for waits for a magnified view).
+    """
+
+    id: str
+    name: str
+    text: str
+    role: str
+    point: tuple[float, float]
+    offset: tuple[float, float]
+    distance: float
+    shown: bool
+    anchor: str = "middle"
+
+    @property
+    def leader(self) -> bool:
+        """Is the letter tied to its point by a leader line?"""
+        return self.distance >= LEADER_FROM
+
+
+class Placing:
+    """Where the letters and the name tags of *scene* stand on the canvas *vp* in *style*.
+
+    *drawing_height*: the canvas without its caption lines (the part the player's window shows).
+    On making: :attr:`spots` (every letter's baseline on the canvas, its distance in letter heights and
+    whether the whole figure has no room for it), and with a camera :attr:`level_rel`, :attr:`hidden_at`
+    and :attr:`level_rules` (the letters placed again at every zoom level).  :meth:`place_tags` places
+    the name tags once the camera's views are known.
+    """
+
+    def __init__(self, scene: Scene, style: Style, vp: Viewport, drawing_height: float):
+        self.scene = scene
+        self.style = style
+        self.vp = vp
+        self.drawing_height = drawing_height
+        self._line_index: dict[tuple[float, float], LineIndex] = {}
+        self._rows: dict[int, Any] = {}
+        self._obstacle_a: tuple[Any, Any] | None = None
+        self._tags_by_step: dict[int, list[Mark]] | None = None
+        self.spots = self._letter_spots()
+        #: the lettered points that have a spot (in mark order)
+        self.lettered = [m for m in scene.marks if m.kind is MarkKind.POINT and m.label and m.id in self.spots]
+        #: per zoom level, every letter shown there: its offset from its point (canvas units, moves applied)
+        self.level_rel: dict[int, dict[str, tuple[float, float]]] = {}
+        self.hidden_at, self.level_rules = self._zoom_placing() if style.camera else ({}, [])
+        #: name tags: {point id: (dx, dy, distance in letter heights)}, and the levels each gives way at
+        self.tag_spots: dict[str, tuple[float, float, float]] = {}
+        self.tag_hidden: dict[str, str] = {}
+
+    def labels(self) -> tuple[PlacedLabel, ...]:
+        """Every placed letter of the whole figure, in mark order, as data (:class:`PlacedLabel`)."""
+        camera = self.style.camera
+        out = []
+        for m in self.lettered:
+            x, y, dist, thin = self.spots[m.id]
+            px, py = self.vp.px(*m.geom)
+            out.append(PlacedLabel(m.id, m.name, m.label or "", m.role, (px, py), (x - px, y - py), dist,
+                                   not (thin and (camera or m.role != "result"))))
+        return tuple(out)
+
+    def letters_at(self, lvl: int) -> Any:
+        """The letters zoom level *lvl* shows, moves applied: an array of rows (point x, y, then the box of the
+        letter about the point: x0, y0, x1, y1 less the point's x, y), canvas pixels (made once a level)."""
+        got = self._rows.get(lvl)
+        if got is None:
+            st = self.style
+            rel = self.level_rel.get(lvl)
+            rows = []
+            for m in self.lettered:
+                px, py = self.vp.px(*m.geom)
+                spot = self.spots[m.id]
+                if rel is not None:
+                    if m.id not in rel:
+                        continue
+                    dx, dy = rel[m.id]
+                elif spot[3] and lvl < THIN_FROM:
+                    continue
+                else:
+                    dx, dy = spot[0] - px, spot[1] - py
+                b = label_box(px + dx, py + dy, m.label, st.label_size, st.label_font, st.label_italic)
+                rows.append((px, py, b[0] - px, b[1] - py, b[2] - px, b[3] - py))
+            got = self._rows[lvl] = np.array(rows) if rows else np.zeros((0, 6))
+        return got
+
+    def tags_at(self, ks: Sequence[int], lvl: int,
+                input_steps: Callable[[int], frozenset[int]]) -> list[tuple[tuple[float, ...], bool]]:
+        """The name tags a view of steps *ks* at zoom level *lvl* shows (of its steps and of their inputs):
+        (row as in :meth:`letters_at`, is it a tag of the view's own steps?)."""
+        by_step = self._tags_by_step
+        if by_step is None:
+            by_step = self._tags_by_step = {}  # a step may tag several points (the ends S1, S2 of a perpendicular)
+            for m in self.scene.marks:
+                if m.id in self.tag_spots:
+                    by_step.setdefault(m.step, []).append(m)
+        st, sc = self.style, self.scene
+        out = []
+        for m in [m for k in ks for s in {k} | set(input_steps(k)) for m in by_step.get(s, ())
+                  if f" h{lvl}" not in self.tag_hidden.get(m.id, "")]:
+            px, py = self.vp.px(*m.geom)
+            dx, dy, _d = self.tag_spots[m.id]
+            b = label_box(px + dx, py + dy, sc.display_name(m.name), st.label_size, st.label_font,
+                          st.label_italic)
+            out.append(((px, py, b[0] - px, b[1] - py, b[2] - px, b[3] - py), m.step in ks))
+        return out
+
+    def _letter_spots(self) -> dict[str, tuple]:
+        """Where every letter goes on the canvas (:func:`construct.render.lettering.place`): results first,
+        clear of the other letters, the points and the result lines."""
+        vp = self.vp
+        scale = self.scene.bbox[2] - self.scene.bbox[0]
+        items, dots, lines = [], [], []
+        for m in self.scene.marks:
+            if m.kind is MarkKind.POINT:
+                p = vp.px(*m.geom)
+                dots.append(p)
+                if m.label:
+                    items.append((m.id, m.role, m.step, p, label_offset_direction(m.geom, scale=scale), m.label))
+            elif m.role == "result" and m.kind.stroked:
+                pts = [vp.px(*q) for q in _polyline(m, vp.scale)]
+                lines.extend((a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:]))
+        st = self.style
+        self._obstacles = (dots, lines)
+        self._letter_items = items
+        k = self.letter_scale
+        size = k * st.label_size
+        spots = place(items, size, dots, self._lines_at(1.0, size), font=st.label_font, italic=st.label_italic,
+                      halo=HALO_PX / 2 * k, reach=self.line_reach)
+        thin = [it for it in items if spots.get(it[0], (0, 0, 0, False))[3]]
+        if thin and st.camera:
+            # the letters the whole figure has no room for, placed for the magnified views
+            # (from zoom level THIN_FROM on): points twice as far apart, letters at their size
+            z = ZOOM_LEVELS[THIN_FROM]
+            byid = {it[0]: it for it in items}
+            taken = [label_box(byid[i][3][0] * z + (x - byid[i][3][0]), byid[i][3][1] * z + (y - byid[i][3][1]),
+                               byid[i][5], size, st.label_font, st.label_italic, HALO_PX / 2 * k)
+                     for i, (x, y, _d, t) in spots.items() if not t]
+            again = place([(i, r, s_, (p[0] * z, p[1] * z), d, t) for i, r, s_, p, d, t in thin], size,
+                          [(x * z, y * z) for x, y in dots], [tuple(c * z for c in seg) for seg in lines],
+                          font=st.label_font, italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * k, reach=self.line_reach)
+            for i, r, s_, p, d, t in thin:
+                got = again.get(i)
+                if got is None and r != "result":
+                    del spots[i]  # no room even magnified: left out, never stacked
+                elif got is None:
+                    pass  # a result's letter is never left out: the magnified views show it where it was
+                else:
+                    spots[i] = (p[0] + got[0] - p[0] * z, p[1] + got[1] - p[1] * z, got[2], True)
+        if k != 1.0:
+            # placed at the size the player shows the whole figure at; written for the canvas (offsets / k)
+            pts = {m.id: vp.px(*m.geom) for m in self.scene.marks if m.id in spots}
+            spots = {i: (pts[i][0] + (x - pts[i][0]) / k, pts[i][1] + (y - pts[i][1]) / k, d, thin)
+                     for i, (x, y, d, thin) in spots.items()}
+        return spots
+
+    def _zoom_placing(self) -> tuple[dict[str, str], list[str]]:
+        """Letters placed again for every zoom level: (classes per letter, CSS rules).
+
+        A magnified view keeps letters at their screen size while the points move
+        apart, so the whole figure's spots may collide there.  For every zoom level
+        (:data:`construct.render.camera.ZOOM_LEVELS`) the placer runs again over all
+        letters with points and result lines spread by the level's zoom; a letter
+        whose spot differs gets a rule that moves it at that level (``.zlN
+        #id>*{transform:scale(..) translate(..)}``), one with no room hides there
+        (class ``hN``): a magnified view never stacks letters either.
+        """
+        st = self.style
+        size = st.label_size
+        items = self._letter_items
+        classes: dict[str, str] = {}
+        rules: list[str] = []
+        moves: dict[tuple[str, str], list[int]] = {}
+        for lvl, z in enumerate(ZOOM_LEVELS[1:], start=1):
+            its = [(i, r, s_, (p[0] * z, p[1] * z), d, t) for i, r, s_, p, d, t in items
+                   if i in self.spots and (lvl >= THIN_FROM or not self.spots[i][3])]
+            # letters at the size the player shows them at this level (on the zoomed canvas)
+            f = self.letter_scale_at(z) * z
+            # each letter where it stands in the whole figure if there is room for it there
+            prefer = {i: ((self.spots[i][0] - p[0] / z) * f, (self.spots[i][1] - p[1] / z) * f, self.spots[i][2])
+                      for i, _r, _s, p, _d, _t in its}
+            got = place(its, size * f, _scaled(self._obstacle_arrays()[0], z), self._lines_at(z, size * f),
+                        font=st.label_font, italic=st.label_italic, keep=False, prefer=prefer, halo=HALO_PX / 2 * f, reach=self.line_reach)
+            for i, _r, _s, (zx, zy), _d, _t in its:
+                spot = got.get(i)
+                if spot is None:
+                    classes[i] = classes.get(i, "") + f" h{lvl}"
+                    continue
+                x, y = self.spots[i][0], self.spots[i][1]
+                px, py = zx / z, zy / z
+                ddx, ddy = (spot[0] - zx) / f - (x - px), (spot[1] - zy) / f - (y - py)
+                if abs(ddx) <= 0.5 and abs(ddy) <= 0.5:
+                    ddx = ddy = 0.0
+                self.level_rel.setdefault(lvl, {})[i] = (x - px + ddx, y - py + ddy)
+                if abs(ddx) > 0.5 or abs(ddy) > 0.5:
+                    moves.setdefault((i, f"translate({fmt(ddx)}px,{fmt(ddy)}px)"), []).append(lvl)
+                    classes[i] = classes.get(i, "") + " lbm"  # moved at some level: the group carries an id
+        # one rule per letter and move, listing the levels it holds at (--zs: the level's letter scale)
+        for (i, move), lvls in moves.items():
+            rules.append(",".join(f".zl{lvl} #{i}-lb>.lb,.zl{lvl} #{i}-lb>.leader" for lvl in lvls)
+                         + f"{{transform:scale(var(--ls,var(--zs))) {move}}}")
+        return classes, rules
+
+    def place_tags(self, views: Sequence[View], full: View,
+                   input_steps: Callable[[int], frozenset[int]]) -> None:
+        """Where each shown name tag goes: {point id: (dx, dy, distance in letter heights)} about its point.
+
+        A tag names an operand while its step is current or an input; it is placed like a letter
+        (:func:`construct.render.lettering.place`), clear of the points, the result lines, the letters
+        and the other tags, in the view of its own step (at that view's zoom level, where the points
+        stand farther apart than in the whole figure).  A tag with no free spot there is left out,
+        never stacked on another.
+        """
+        sc, st = self.scene, self.style
+        tags = [m for m in sc.marks if m.kind is MarkKind.POINT and not m.label and sc.tag_shown(m.name)]
+        if not tags:
+            return
+        # the levels of the player's views; the one level of an unmagnified figure
+        levels, thin_from = (ZOOM_LEVELS, THIN_FROM) if st.camera else ((1.0,), 0)
+        span = sc.bbox[2] - sc.bbox[0]
+        # a tag is seen while its step is current and where its step is an input: it is placed at the
+        # least magnified of those views (where the letters are largest beside the points)
+        lowest: dict[int, int] = {}
+        if st.camera:
+            step_levels = [level(zoom_of(v, full)) for v in views]
+
+            def lvl_of(k: int) -> int:
+                return step_levels[k - 1]
+
+            steps = {m.step for m in tags}
+            for m in tags:
+                lowest[m.step] = lvl_of(m.step)
+            for k in range(1, len(sc.steps) + 1):
+                for s_ in input_steps(k):
+                    if s_ in steps:
+                        lowest[s_] = min(lowest[s_], lvl_of(k))
+        by_level: dict[int, list[Mark]] = {}
+        for m in tags:
+            by_level.setdefault(lowest.get(m.step, 0), []).append(m)
+        shown_at: dict[int, set[int]] = {m.step: {lowest.get(m.step, 0)} for m in tags}
+        if st.camera:
+            for m in tags:
+                shown_at[m.step].add(lvl_of(m.step))
+            for k in range(1, len(sc.steps) + 1):
+                for s_ in input_steps(k):
+                    if s_ in shown_at:
+                        shown_at[s_].add(lvl_of(k))
+        size = st.label_size
+        pts = {m.id: self.vp.px(*m.geom) for m in sc.marks if m.kind is MarkKind.POINT}
+        labels = [m for m in sc.marks if m.kind is MarkKind.POINT and m.label and m.id in self.spots]
+
+        def frame(lvl: int):
+            """(zoom, letter factor, boxes of the letters shown at level *lvl*) in that level's geometry."""
+            z = levels[lvl]
+            f = self.letter_scale_at(z) * z if st.camera else 1.0
+            rel = self.level_rel.get(lvl)
+            boxes = []
+            for m in labels:
+                if rel is not None:
+                    if m.id not in rel:
+                        continue
+                    dx, dy = rel[m.id]
+                else:
+                    spot = self.spots[m.id]
+                    if spot[3] and lvl < thin_from:
+                        continue
+                    dx, dy = spot[0] - pts[m.id][0], spot[1] - pts[m.id][1]
+                px, py = pts[m.id]
+                boxes.append(label_box(px * z + dx * f, py * z + dy * f, m.label, st.label_size * f, st.label_font,
+                                       st.label_italic, HALO_PX / 2 * f))
+            return z, f, boxes
+
+        # the points and result lines as arrays, asked once per level and group of tags below
+        dot_a, line_a = self._obstacle_arrays()
+        line_lo = np.minimum(line_a[:, 0:2], line_a[:, 2:4])
+        line_hi = np.maximum(line_a[:, 0:2], line_a[:, 2:4])
+
+        def near(items, z: float, f: float):
+            """The points and the numbers of the result lines (at zoom *z*) a tag of *items* could meet:
+            within its reach (the lines as a mask over the level's :meth:`_lines_at`)."""
+            xs = [it[3][0] for it in items]
+            ys = [it[3][1] for it in items]
+            r = 8.0 * size * f
+            x0, y0, x1, y1 = min(xs) - r, min(ys) - r, max(xs) + r, max(ys) + r
+            dz = dot_a * z
+            ds = dz[(x0 <= dz[:, 0]) & (dz[:, 0] <= x1) & (y0 <= dz[:, 1]) & (dz[:, 1] <= y1)]
+            lo, hi = line_lo * z, line_hi * z
+            mask = (lo[:, 0] <= x1) & (hi[:, 0] >= x0) & (lo[:, 1] <= y1) & (hi[:, 1] >= y0)
+            return list(map(tuple, ds.tolist())), mask.tolist()
+
+        # per level, the tags' steps seen together in some view of that level (a step and its inputs)
+        seen_with: dict[int, dict[int, set[int]]] = {}
+        if st.camera:
+            tag_steps = {m.step for m in tags}
+            for k in range(1, len(sc.steps) + 1):
+                together = ({k} | input_steps(k)) & tag_steps
+                mates = seen_with.setdefault(lvl_of(k), {})
+                for s_ in together:
+                    mates.setdefault(s_, set()).update(together)
+        byid = {m.id: m for m in tags}
+        out: dict[str, tuple[float, float, float]] = {}
+        for lvl, ms in sorted(by_level.items()):
+            z, f, taken = frame(lvl)
+            # clear of the tags placed at a lower level that are seen with these at this one
+            mates_here = set().union(*(seen_with.get(lvl, {}).get(m.step, set()) for m in ms))
+            taken = taken + [label_box(pts[i][0] * z + out[i][0] * f, pts[i][1] * z + out[i][1] * f,
+                                       sc.display_name(byid[i].name), size * f, st.label_font, st.label_italic,
+                                       HALO_PX / 2 * f)
+                             for i in out if byid[i].step in mates_here and lvl in shown_at[byid[i].step]]
+            items = []
+            for m in ms:
+                px, py = pts[m.id]
+                items.append((m.id, m.role, m.step, (px * z, py * z), label_offset_direction(m.geom, scale=span),
+                              sc.display_name(m.name)))
+            # the tags are checked against each other level by level below
+            ds, only = near(items, z, f)
+            got = place(items, size * f, ds, self._lines_at(z, size * f), only=only,
+                        font=st.label_font, italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * f, reach=self.line_reach)
+            for i, _r, _s, (zx, zy), _d, _t in items:
+                if i in got:
+                    x, y, dist, _thin = got[i]
+                    out[i] = ((x - zx) / f, (y - zy) / f, dist)
+        # every level a tag is seen at: it holds its spot there, or it gives way there (class hN),
+        # never stacked on a letter, a point, a result line or a tag seen with it
+        hidden: dict[str, str] = {}
+        for lvl in sorted({v for vs in shown_at.values() for v in vs}):
+            z, f, taken = frame(lvl)
+            here = [byid[i] for i in out if lvl in shown_at[byid[i].step]]
+            if all(lowest.get(m.step, 0) == lvl for m in here):
+                continue  # placed together at this level, against the same letters: nothing to check
+            items = [(m.id, m.role, m.step, (pts[m.id][0] * z, pts[m.id][1] * z), (1.0, 0.0), sc.display_name(m.name))
+                     for m in here]
+            prefer = {m.id: (out[m.id][0] * f, out[m.id][1] * f, out[m.id][2]) for m in here}
+            ds, only = near(items, z, f)
+            got = place(items, size * f, ds, self._lines_at(z, size * f), only=only,
+                        font=st.label_font, italic=st.label_italic, taken=taken, keep=False, prefer=prefer,
+                        halo=HALO_PX / 2 * f, reach=self.line_reach)
+            def kept(got, items) -> set[str]:
+                return {i for i, _r, _s, (zx, zy), _d, _t in items if (spot := got.get(i)) is not None
+                        and abs(spot[0] - zx - prefer[i][0]) <= 1e-6 and abs(spot[1] - zy - prefer[i][1]) <= 1e-6}
+
+            holds = kept(got, items)
+            arrays = None
+            for it in items:
+                i = it[0]
+                if i in holds:
+                    continue
+                # it lost its spot to all the tags of the level together; it holds it where it is seen only
+                # with the tags seen together with it (crank step 181: M1 gave way to tags never shown with it)
+                mates = seen_with.get(lvl, {}).get(byid[i].step, set())
+                local = [o for o in items if byid[o[0]].step in mates and (o[0] in holds or o[0] == i)]
+                if len(local) < len(items):
+                    # it holds its spot where the spot is free of the level's letters, points and result
+                    # lines (as the placer asks) and of the tags seen with it (arrays made once per level)
+                    if arrays is None:
+                        arrays = (np.array(ds, dtype=float).reshape(-1, 2),
+                                  (line_a[np.array(only, dtype=bool)] * z).reshape(-1, 4),
+                                  np.array(taken, dtype=float).reshape(-1, 4))
+                    ds, ls_, tk = arrays
+
+                    def spot_box(o):
+                        return label_box(o[3][0] + prefer[o[0]][0], o[3][1] + prefer[o[0]][1], o[5], size * f,
+                                         st.label_font, st.label_italic, HALO_PX / 2 * f)
+
+                    b = spot_box(it)
+                    rr = 0.3 * size * f
+                    e = self.line_reach
+                    free = not any(b[0] < c[2] and c[0] < b[2] and b[1] < c[3] and c[1] < b[3]
+                                   for c in (spot_box(o) for o in local if o[0] != i))
+                    free = free and not ((tk[:, 0] < b[2]) & (b[0] < tk[:, 2]) & (tk[:, 1] < b[3])
+                                         & (b[1] < tk[:, 3])).any()
+                    free = free and not ((ds[:, 0] - rr < b[2]) & (b[0] < ds[:, 0] + rr) & (ds[:, 1] - rr < b[3])
+                                         & (b[1] < ds[:, 1] + rr)).any()
+                    if free and len(ls_):
+                        # a result line crossing the box widened by the line's half width (clipped to it)
+                        p0, dv = ls_[:, :2], ls_[:, 2:] - ls_[:, :2]
+                        with np.errstate(divide="ignore", invalid="ignore"):
+                            ta = (np.array([b[0] - e, b[1] - e]) - p0) / dv
+                            tb = (np.array([b[2] + e, b[3] + e]) - p0) / dv
+                            t_in = np.nan_to_num(np.minimum(ta, tb), nan=-np.inf)
+                            t_out = np.nan_to_num(np.maximum(ta, tb), nan=np.inf)
+                        inside = (dv != 0) | ((p0 >= np.array([b[0] - e, b[1] - e])) & (p0 <= np.array([b[2] + e, b[3] + e])))
+                        t0 = np.maximum(0.0, np.where(dv != 0, t_in, -np.inf).max(axis=1))
+                        t1 = np.minimum(1.0, np.where(dv != 0, t_out, np.inf).min(axis=1))
+                        free = not ((t0 <= t1) & inside.all(axis=1)).any()
+                    if free:
+                        holds.add(i)  # the tags it is seen with after it are placed with it
+                        continue
+                hidden[i] = hidden.get(i, "") + f" h{lvl}"
+        self.tag_hidden = hidden
+        self.tag_spots = out
+
+    def _obstacle_arrays(self) -> tuple[Any, Any]:
+        """The points and the result lines' segments the letters keep clear of, as arrays (made once)."""
+        got = self._obstacle_a
+        if got is None:
+            dots, lines = self._obstacles
+            got = self._obstacle_a = (np.array(dots, dtype=float).reshape(-1, 2),
+                                                  np.array(lines, dtype=float).reshape(-1, 4))
+        return got
+
+    def _lines_at(self, z: float, size: float) -> Any:
+        """The result lines magnified *z* times, indexed for letters of *size*
+        (:class:`construct.render.lettering.LineIndex`): made once for every placing at that zoom."""
+        cache = self._line_index
+        key = (z, size)
+        if key not in cache:
+            cache[key] = LineIndex(size, _scaled(self._obstacle_arrays()[1], z))
+        return cache[key]
+
+    @property
+    def line_reach(self) -> float:
+        """Half the width of the widest result line, in the units letters are placed in: canvas pixels,
+        or with a camera the player's screen pixel at the whole figure (its strokes do not scale, and
+        the placing works in each zoom level's magnified canvas, where that pixel is the same)."""
+        half = max(self.style.result_width, 2.2) / 2  # 2.2: the plates' heavy look
+        if not self.style.camera:
+            return half
+        return half * max(self.vp.width / PLAYER_FIGURE_PX[0], self.drawing_height / PLAYER_FIGURE_PX[1])
+
+    @property
+    def letter_scale(self) -> float:
+        """How much larger than on the canvas the player draws letters in the whole-figure view.
+
+        The player (1400 × 1000 window) shows the figure at most about
+        :data:`PLAYER_FIGURE_PX` wide and tall and holds letters at 12 px, never below 9.5 px
+        on the screen (its ``--ls``); a tall figure shown at half its size gets letters 1.6
+        times their canvas size, and they are placed at that size.  1 without a camera.
+        """
+        return self.letter_scale_at(1.0) if self.style.camera else 1.0
+
+    def letter_scale_at(self, zoom: float) -> float:
+        """The player's letter scale (its ``--ls``: canvas units per letter unit) in a view magnifying *zoom*
+        times: letters at 12 px on the screen, never below 9.5 px (:attr:`letter_scale` for the whole)."""
+        q = max(self.vp.width / PLAYER_FIGURE_PX[0], self.drawing_height / PLAYER_FIGURE_PX[1]) / zoom
+        if zoom == 1.0 and q <= 1.0:
+            return 1.0  # the whole figure as drawn on the canvas
+        return min(max(1.0, 9.5 * q / self.style.label_size), q)
+
+
+def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
+    """A line mark as points (drawing units) joined by straight pieces no more than ~4 px off it."""
+    g = m.geom
+    if m.kind is MarkKind.SEGMENT:
+        return [(g[0], g[1]), (g[2], g[3])]
+    if m.kind.round:
+        cx, cy, r = g[0], g[1], g[2]
+        a0, sw = (0.0, 2 * math.pi) if m.kind is MarkKind.CIRCLE else (g[3], g[4])
+        n = min(720, max(8, int(abs(sw) * math.sqrt(max(r * scale, 1.0) / 8.0)) + 1))
+        return [(cx + r * math.cos(a0 + sw * i / n), cy + r * math.sin(a0 + sw * i / n)) for i in range(n + 1)]
+    if m.kind is MarkKind.CURVE and not m.straight and len(g) > 2:
+        # as drawn (curve_path): the Catmull-Rom pieces, which leave the chords where the curve bends
+        out = [tuple(g[0])]
+        for i in range(len(g) - 1):
+            p0, p1, p2 = g[i - 1] if i > 0 else g[i], g[i], g[i + 1]
+            p3 = g[i + 2] if i + 2 < len(g) else g[i + 1]
+            c1 = (p1[0] + (p2[0] - p0[0]) / 6.0, p1[1] + (p2[1] - p0[1]) / 6.0)
+            c2 = (p2[0] - (p3[0] - p1[0]) / 6.0, p2[1] - (p3[1] - p1[1]) / 6.0)
+            for t in (0.25, 0.5, 0.75, 1.0):
+                s = 1 - t
+                out.append(tuple(s * s * s * a + 3 * s * s * t * b + 3 * s * t * t * c + t * t * t * d
+                                 for a, b, c, d in zip(p1, c1, c2, p2)))
+        return out
+    return list(g)
+
+
+def _scaled(rows: Any, z: float) -> list[tuple[float, ...]]:
+    """Every coordinate of *rows* (an array of points or segments) times *z*, as tuples
+    (the same numbers as multiplying one by one, made at once: a figure has thousands)."""
+    return list(map(tuple, (rows * z).tolist()))
+
+
+
+def place_outwards(m: Mark, vp: Viewport, style: Style, span: float,
+                   placed: list[tuple[float, float, float, float]]) -> tuple[float, float] | None:
+    """Where *m*'s letter goes in a viewport of its own (the magnified inset), where the letters are not
+    placed by rank: radially outwards from its point, else the other side, else left out (None).  *span*:
+    the width of the figure (drawing units); *placed*: the boxes taken so far, to which the letter's is added."""
+    dx, dy = label_offset_direction(m.geom, scale=span)
+    off = style.label_size * 0.9
+    px, py = vp.px(*m.geom)
+    for sign in (1.0, -1.0):
+        lx, ly = px + sign * dx * off, py - sign * dy * off + style.label_size * 0.35
+        box = label_box(lx, ly, m.label or "", style.label_size, style.label_font, style.label_italic)
+        if not _overlaps(box, placed):
+            placed.append(box)
+            return lx, ly
+    return None
+
+
+def _overlaps(box, placed) -> bool:
+    x0, y0, x1, y1 = box
+    return any(x0 < b[2] and b[0] < x1 and y0 < b[3] and b[1] < y1 for b in placed)

@@ -100,8 +100,8 @@ SYMBOLS = {"admission": "P", "back_pressure": "P0", "clearance": "s0/s", "compre
            "lp_admission": "P", "lp_back_pressure": "P0", "lp_compression": "s3/s", "lp_kappa": "kappa"}
 
 #: Help of parameters whose construction does not give one.
-HELPS = {"kappa": "Baumann's kappa = P/B_max, the piston force over the largest acceleration force "
-                  "(tangential-pressure: 8 or 2)",
+HELPS = {"kappa": "Baumann's kappa = P/B_max, the piston force over the largest acceleration force of the rod "
+                  "drawn, B_max = c v²/r (1 + r/L) (his 1,2 for r/L = 1/5; tangential-pressure: 8 or 2)",
          "force": "the piston force: baumann (the indicator diagram less the acceleration force) or unit "
                   "(a unit force; tangential-pressure)"}
 

@@ -47,7 +47,7 @@ from ..kernel.numeric import shown
 __all__ = ["AREA_RATIO", "Domain", "ROD_RATIO", "DRAWN_LENGTH", "PRESSURE", "PRESSURE_RATIO", "STROKE_FRACTION", "CLEARANCE",
            "DRAWN_PRESSURE_RATIO", "DRAWN_M", "DRAWN_MASS_FORCE", "KAPPA_RANGE", "FLUCTUATION", "SPEED_GAIN", "WEIGHT", "RPM", "LENGTH_M", "PISTON_AREA",
            "DRAWING_SCALE", "FORCE_UNIT", "FLYWHEEL_KZ", "RIM_SPEED",
-           "FLYWHEEL_DIAMETER", "EXCESS_WORK", "IRREGULARITY", "COMPRESSION_RATIO", "CUTOFF_RATIO",
+           "FLYWHEEL_DIAMETER", "FLYWHEEL_RPM", "FLYWHEEL_WEIGHT", "EXCESS_WORK", "IRREGULARITY", "COMPRESSION_RATIO", "CUTOFF_RATIO",
            "ENGINE_PRESSURE", "EXHAUST_PRESSURE", "RELEASE", "POLYTROPE_EXPONENT", "SUCTION_PRESSURE", "DISC_THICKNESS",
            "RIM_SECTION", "CRANK_OFFSET", "CRANK_COUNT"]
 
@@ -151,6 +151,8 @@ RIM_SPEED = Domain(1e-3, 1e4, "rim speeds v in m/s for which v^2/kz stays a norm
 #: kg m, delta 1/300 .. 1/20): the formulas are plain products, the bounds only keep the float products normal and
 #: delta a small fraction, as the relation E = (G/g) v^2 delta assumes (it neglects delta^2 against 1).
 FLYWHEEL_DIAMETER = Domain(1e-3, 1e3, "rim diameters in m for which the flywheel products stay normal floats")
+FLYWHEEL_RPM = Domain(0.1, 1e4, "revolutions per minute of a flywheel for which its products stay normal floats")
+FLYWHEEL_WEIGHT = Domain(0.1, 1e9, "kg of flywheel rim for which its products stay normal floats")
 EXCESS_WORK = Domain(1e-6, 1e12, "excess work in kg m for which the flywheel products stay normal floats")
 IRREGULARITY = Domain(1e-6, 0.2, "degrees of irregularity for which E = (G/g) v^2 delta holds (it neglects "
                       "delta^2 against 1; practice: 1/300 .. 1/20)")

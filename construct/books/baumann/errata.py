@@ -140,15 +140,21 @@ def true_values() -> dict[str, tuple[float, str]]:
                         f"(0,0625·49/144 + 0,01825·3/144 = {bc['moment']:.6f}, with 0,01835 {with_true:.6f}: both "
                         f"0,0216 beside his 0,0218)")
     out["moment"] = (bc["moment"], f"0,0625·49/144 + 0,01825·3/144 from his printed coefficients; from his exact "
-                     f"assumptions {d['moment']:.5f} (the hub's 3/144 itself is not derivable from them)")
-    out["total_first_order"] = (fw.ARMS_HUB - fw.MOMENT, "(1 + a x)/(1 + m x) ≈ 1 + (a − m) x")
+                     f"assumptions {d['moment']:.5f} (the hub's 3/144 itself is not derivable from them).  Not "
+                     f"the wheel's moment: ρ = 7/12 r1 halves the disc's mass, its radius of gyration is "
+                     f"k² = 215/540 r1² = {fw.DISC_GYRATION:.4f} r1² (not 49/144 = 0,3403), the hub's 2,5/144: "
+                     f"the moment coefficient is {d['moment_gyration']:.4f} (construct flywheel: the exact column)")
+    out["total_first_order"] = (fw.ARMS_HUB - fw.MOMENT, "(1 + a x)/(1 + m x) ≈ 1 + (a − m) x; he computes with "
+                                "1 + 0,06 x, not the quotient (construct flywheel prints both)")
     for i, (kz, v) in enumerate(zip(seed004.TABLE_KZ, seed004.TABLE_V)):
         x = float(v) ** 2 / float(kz)
         out[f"v2:{i}"] = (float(v) ** 2, "v²")
         out[f"t1_g2:{i}"] = (fw.ARMS_HUB * x, "0,08075 v²/kz")
         out[f"t1_total:{i}"] = (1.0 + fw.ARMS_HUB * x, "1 + 0,08075 v²/kz")
         out[f"t2_moment:{i}"] = (1.0 + fw.MOMENT * x, "1 + 0,0218 v²/kz")
-        out[f"t2_weight:{i}"] = (1.0 + fw.TOTAL * x, "1 + 0,06 v²/kz")
+        quotient = (1.0 + fw.ARMS_HUB * x) / (1.0 + fw.MOMENT * x)
+        out[f"t2_weight:{i}"] = (1.0 + fw.TOTAL * x, f"1 + 0,06 v²/kz as his formula; his own quotient "
+                                 f"(1 + 0,08075 x)/(1 + 0,0218 x) of which it is the expansion is {quotient:.4f}")
     # His worked cases, judged along his own chain: the total from G_s and his printed (rounded) v, the rim from
     # his printed total, arms and hub as printed total − printed rim.  kz = 5 v is an assumption (his tables pair
     # kz and v so; he does not say which kz he takes here).

@@ -17,7 +17,11 @@ from construct.constructions.indicator_card import CLOSE_TOLERANCE, load_indicat
 from construct.io.reading import read_bounded_text
 from construct.kernel.errors import InputFileError
 
-mpmath.mp.dps = 30
+
+@pytest.fixture(autouse=True)
+def thirty_digits():
+    with mpmath.workdps(30):
+        yield
 
 #: Cover side: steam line straight from 8 at at x = 0 to 2 at at x = 1; exhaust at 1 at, straight back.
 STRAIGHT = "x,p\n0,8\n0.5,5\n1,2\n1,1\n0.5,1\n0,1\n0,8\n"
@@ -63,6 +67,28 @@ def test_forward_stroke_t_against_closed_form(tmp_path, capsys):
     for row in rows:
         w = math.radians(float(row["crank_angle_deg"]))
         assert float(row["T"]) == pytest.approx(float(over_pressure_mp(w, 5) * t_mp(w, 5)), abs=1e-10)
+
+
+@pytest.mark.parametrize("data", [
+    "\ufeffx;p\r\n0;8\r\n0,5;5\r\n1;2\r\n1;1\r\n0,5;1\r\n0;1\r\n0;8\r\n".encode("utf-8"),  # Excel, German
+    "x;p\n0;8,0\n0,5;5,0\n1;2\n1;1\n0,5;1\n0;1\n0;8\n".encode("utf-8"),
+    "x\tp\n0\t8\n0,5\t5\n1\t2\n1\t1\n0,5\t1\n0\t1\n0\t8\n".encode("utf-8"),            # tab-separated
+], ids=["bom-crlf-semicolon", "semicolon", "tab"])
+def test_a_german_spreadsheets_card_reads_as_the_same_card(tmp_path, capsys, data):
+    """'x;p' with decimal commas, a byte-order mark, CRLF: the same card as STRAIGHT, the same table."""
+    path = tmp_path / "karte.csv"
+    path.write_bytes(data)
+    german = table(["--parts", "6", "--method", "exact", "--indicator", str(path)], capsys)
+    plain = table(["--parts", "6", "--method", "exact", "--indicator", write(tmp_path, STRAIGHT)], capsys)
+    assert german[0] == plain[0] == 0 and german[1].out == plain[1].out
+    assert load_indicator(str(path)).points == load_indicator(write(tmp_path, STRAIGHT)).points
+
+
+def test_decimal_commas_without_semicolons_are_explained(tmp_path, capsys):
+    code, out = table(["--indicator", write(tmp_path, "x,p\n0,8\n0,5,5\n1,2\n")], capsys)
+    assert code == 2 and "decimal commas need ';'" in out.err and out.err.count("\n") == 1
+    code, out = table(["--indicator", write(tmp_path, "x p\n0 8\n")], capsys)
+    assert code == 2 and "'x;p' with decimal commas" in out.err
 
 
 def test_revolution_with_cranks_against_closed_form(tmp_path, capsys):

@@ -4,7 +4,11 @@ Seed 001 (Abb. 1054) takes the piston's over-pressure from the *measured*
 diagrams of the cover side and the crank side.  A card is given as a CSV
 file with the header ``x,p``: the closed loop of one cylinder side in drawing
 order, ``x`` the piston position from the head-end dead centre as a fraction
-of the stroke, ``p`` the absolute pressure in kg/cm² (at).
+of the stroke, ``p`` the absolute pressure in kg/cm² (at).  What a German
+spreadsheet exports reads as well: the header ``x;p`` (or tab-separated) says
+the fields are separated by semicolons (tabs), and then a decimal comma
+(``0,5;4,85``) is a decimal point; a byte-order mark and Windows line ends
+are allowed (:func:`csv_dialect` tells which a file is).
 
 How it is read:
 
@@ -36,6 +40,9 @@ loop that does not reach both dead centres (x = 0 and 1 within
 (8.0, 1.1)
 >>> card.mirrored().pressure(0.85, "return")     # the crank side's steam line, mirrored
 8.0
+>>> parse_indicator_csv("\\ufeffx;p\\r\\n0;8\\r\\n0,3;8\\r\\n1;2,5\\r\\n1;1,1\\r\\n0,1;1,1\\r\\n0;2\\r\\n0;8\\r\\n",
+...                     "demo").pressure(0.15, "forward")          # as a German spreadsheet writes it
+8.0
 >>> parse_indicator_csv("x,p\\n0,8\\n0.3,eight\\n1,2\\n0,1\\n0,8\\n", "demo")
 Traceback (most recent call last):
 ...
@@ -55,7 +62,7 @@ import numpy as np
 from ..io.reading import read_bounded_text
 from ..kernel.errors import InputFileError
 
-__all__ = ["IndicatorCard", "parse_indicator_csv", "load_indicator", "card_givens", "card_from_givens", "draw_card",
+__all__ = ["IndicatorCard", "parse_indicator_csv", "csv_dialect", "DIALECTS", "load_indicator", "card_givens", "card_from_givens", "draw_card",
            "DrawnCard", "card_pair", "card_force", "MAX_INDICATOR_BYTES", "MIN_POINTS",
            "MAX_POINTS", "CLOSE_TOLERANCE", "MAX_CARD_PRESSURE", "STROKES"]
 
@@ -111,27 +118,57 @@ def _fail(source: str, row: int | None, what: str) -> InputFileError:
     return InputFileError(f"indicator diagram {source}{where}: {what}")
 
 
+#: The field separators a card may use, by what its header shows: the comma (decimal points), or -- as German
+#: spreadsheets export -- the semicolon or the tab (decimal commas allowed).
+DIALECTS = {",": "comma-separated, decimal points", ";": "semicolon-separated, decimal commas allowed",
+            "\t": "tab-separated, decimal commas allowed"}
+
+
+def csv_dialect(text: str) -> str:
+    """The field separator of a card, read off its header line: ``;`` or a tab where the header has one, else ``,``.
+
+    >>> csv_dialect("x,p\\n0,1\\n"), csv_dialect("\\ufeffx;p\\r\\n0,5;4,85\\r\\n"), csv_dialect("x\\tp\\n")
+    (',', ';', '\\t')
+    """
+    header = text.lstrip("\ufeff").split("\n", 1)[0]
+    return ";" if ";" in header else "\t" if "\t" in header else ","
+
+
+def _number(cell: str, delimiter: str) -> float:
+    """A cell as a number: with ``;`` or tab between the fields a decimal comma (4,85) is a decimal point."""
+    cell = cell.strip()
+    if delimiter != "," and "," in cell and "." not in cell:
+        cell = cell.replace(",", ".", 1) if cell.count(",") == 1 else cell
+    return float(cell)
+
+
 def parse_indicator_csv(text: str, source: str) -> IndicatorCard:
-    """The card in *text* (a CSV with header ``x,p``), checked as described in the module; *source* names it."""
-    reader = csv.reader(io.StringIO(text))
+    """The card in *text* (a CSV with header ``x,p``, or ``x;p`` with decimal commas), checked as described in the
+    module; *source* names it."""
+    text = text.lstrip("\ufeff")
+    delimiter = csv_dialect(text)
+    reader = csv.reader(io.StringIO(text), delimiter=delimiter)
     try:
         table = list(reader)
     except csv.Error as exc:
         raise _fail(source, reader.line_num, f"not a CSV file ({exc})") from None
     if not table or [c.strip().lower() for c in table[0]] != ["x", "p"]:
-        got = ",".join(table[0])[:40] if table else "an empty file"
-        raise _fail(source, 1, f"the header must be 'x,p', got {got!r}")
+        got = delimiter.join(table[0])[:40] if table else "an empty file"
+        raise _fail(source, 1, f"the header must be 'x,p' (or 'x;p' with decimal commas, as a German spreadsheet "
+                               f"exports it), got {got!r}")
     pts: list[tuple[float, float]] = []
     rows: list[int] = []
     for i, cells in enumerate(table[1:], start=2):
         if not cells or all(not c.strip() for c in cells):
             continue  # a blank line
         if len(cells) != 2:
-            raise _fail(source, i, f"a row holds two numbers x,p; this one has {len(cells)} fields")
+            hint = (" (decimal commas need ';' between the fields: a header 'x;p')"
+                    if delimiter == "," and len(cells) in (3, 4) else "")
+            raise _fail(source, i, f"a row holds two numbers x{delimiter}p; this one has {len(cells)} fields{hint}")
         vals = []
         for name, cell in zip("xp", cells):
             try:
-                v = float(cell)
+                v = _number(cell, delimiter)
             except ValueError:
                 raise _fail(source, i, f"{name} = {cell.strip()[:20]!r} is not a number") from None
             if not math.isfinite(v):
@@ -142,7 +179,7 @@ def parse_indicator_csv(text: str, source: str) -> IndicatorCard:
             raise _fail(source, i, f"x = {x:g} is outside 0 .. 1 (the piston position as a fraction of the stroke)")
         if not 0.0 <= p <= MAX_CARD_PRESSURE:
             raise _fail(source, i, f"p = {p:g} at is outside 0 .. {MAX_CARD_PRESSURE:g} (absolute pressure in at)")
-        if len(pts) >= MAX_POINTS:
+        if len(pts) > MAX_POINTS or (len(pts) == MAX_POINTS and (x, p) != pts[0]):  # the closing repeat is free
             raise _fail(source, i, f"more than {MAX_POINTS} points")
         pts.append((x, p))
         rows.append(i)

@@ -1,8 +1,11 @@
 """The README's promises: its two commands, and its library example runs as written."""
 
 import doctest
+import os
 import re
 from pathlib import Path
+
+import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -54,3 +57,89 @@ def test_readme_renders_as_written():
 def _inside_fence(text: str, offset: int) -> bool:
     """Whether *offset* lies between an opening and a closing ``` line (counted as a reader counts them)."""
     return len(re.findall(r"^```", text[:offset], re.M)) % 2 == 1
+
+
+# --------------------------------------------------------------------------
+# Every shell line of the README, run as written.
+
+import shlex
+import shutil
+import subprocess
+import sys
+
+#: The two install blocks: CI runs the second verbatim (test above); they install, which a test cannot.
+INSTALL_BLOCKS = 2
+#: Commands whose exit 1 reports a finding, not a broken example (lint findings, drawings that differ, a missed
+#: speed target).
+FINDINGS = ("lint", "diff", "bench")
+#: The benchmarks time themselves for minutes: their lines are parsed here and run when CONSTRUCT_README_BENCH=1.
+SLOW = ("bench",)
+
+
+def commands(block: str) -> list[str]:
+    """The commands of one ```sh block: continuation lines joined, comments and comment-only lines dropped."""
+    joined = block.replace("\\\n", " ")
+    out = []
+    for line in joined.splitlines():
+        words = shlex.split(line, comments=True)
+        if words:
+            out.append(shlex.join(words))
+    return out
+
+
+def construct_blocks() -> list[list[str]]:
+    return [commands(b) for b in shell_blocks()[INSTALL_BLOCKS:] if commands(b)]
+
+
+def test_every_shell_line_is_a_command_this_file_runs():
+    """No placeholder (E, F, D), no optional part in brackets ([--json]), no file the repository does not ship."""
+    lines = [c for block in construct_blocks() for c in block]
+    assert lines and all(c.split()[0] in ("construct", "pytest") for c in lines), lines
+    assert not [c for c in lines if "[" in c or " E " in c or c.endswith((" D", " N", " F", " R"))]
+    for c in lines:
+        for word in shlex.split(c):
+            if word.endswith(".csv"):
+                assert (ROOT / word).is_file(), word
+
+
+@pytest.mark.parametrize("block", range(len(construct_blocks())))
+def test_readme_commands_run_as_written(block, tmp_path, monkeypatch, capsys):
+    """Each block's commands in order, in a fresh folder holding the shipped examples: exit 0 (1 only for a
+    finding of lint or bench), and what they write stays in that folder."""
+    from construct.cli.main import build_parser, main
+
+    shutil.copytree(ROOT / "examples", tmp_path / "examples")
+    monkeypatch.chdir(tmp_path)
+    for command in construct_blocks()[block]:
+        argv = shlex.split(command)
+        if argv[0] == "pytest":
+            continue   # the golden walkthrough, below
+        if argv[1] in SLOW and not os.environ.get("CONSTRUCT_README_BENCH"):
+            build_parser().parse_args(argv[1:])   # the line parses; timing it is bench's own business
+            continue
+        code = main(argv[1:])
+        out, err = capsys.readouterr()
+        allowed = (0, 1) if argv[1] in FINDINGS else (0,)
+        assert code in allowed, f"{command}: exit {code}\n{err[-2000:]}"
+
+
+def test_the_golden_walkthrough_shows_what_it_promises(tmp_path):
+    """The README's test file, its goldens written, then ROD changed to 3.5: pytest fails with the step diff."""
+    source = re.search(r"A complete test, e\.g\. `tests/test_stroke\.py`:\n\n```python\n(.*?)```",
+                       (ROOT / "README.md").read_text(encoding="utf-8"), re.S).group(1)
+    tests = tmp_path / "tests"
+    tests.mkdir()
+    (tests / "test_stroke.py").write_text(source, encoding="utf-8")
+    run = [sys.executable, "-B", "-m", "pytest", "-q", "-p", "no:cacheprovider", "-p", "no:xdist", str(tests)]
+    env = {**os.environ, "PYTHONDONTWRITEBYTECODE": "1"}
+    first = subprocess.run(run + ["--construct-update"], cwd=tmp_path, capture_output=True, text=True, env=env)
+    assert first.returncode == 0, first.stdout[-2000:]
+    assert (tests / "goldens" / "middle-of-stroke").is_dir()
+    again = subprocess.run(run, cwd=tmp_path, capture_output=True, text=True, env=env)
+    assert again.returncode == 0, again.stdout[-2000:]
+    (tests / "test_stroke.py").write_text(source.replace("ROD = 4.0", "ROD = 3.5"), encoding="utf-8")
+    moved = subprocess.run(run, cwd=tmp_path, capture_output=True, text=True, env=env)
+    assert moved.returncode == 1
+    assert "construct golden 'middle-of-stroke'" in moved.stdout and "param      givens.L: 4 -> 3.5" in moved.stdout
+    assert "moved      M: point moved by 0.5: (4, 0) -> (3.5, 0)" in moved.stdout
+    assert "assert 3.5 == 4.0" not in moved.stdout

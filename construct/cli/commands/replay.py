@@ -45,6 +45,18 @@ def run(args) -> int:
     # the live player is written with the rest of the replay, in its staging folder (and its manifest)
     info = write_replay(c, fig, args.out, style=args.style, frames=args.frames, force=args.force_frames, live=live)
     name = c.name if c is not None else fig.protocol.construction
-    print(f"{brief(name)}: {info['steps']} steps, {info['frames']} frames written to {brief(info['out'], 400)}",
-          file=sys.stderr)
+    print(written(brief(name), info["steps"], info["frames"], brief(info["out"], 400)), file=sys.stderr)
     return 0
+
+
+def written(name: str, steps: int, frames: int, out: str) -> str:
+    """What a replay wrote and where to look, in one line.
+
+    >>> written("crank", 365, 0, "out/crank")
+    'crank: 365 steps written to out/crank: final.svg (every step a layer), protocol.json, animated.svg, player.html, storyboard.svg -- open out/crank/player.html to step through it'
+    >>> written("crank", 365, 365, "out/crank").split(", storyboard.svg")[1]
+    ' and 365 frames in steps/ -- open out/crank/player.html to step through it'
+    """
+    files = "final.svg (every step a layer), protocol.json, animated.svg, player.html, storyboard.svg"
+    frames_text = f" and {frames} frame{'s' if frames != 1 else ''} in steps/" if frames else ""
+    return f"{name}: {steps} steps written to {out}: {files}{frames_text} -- open {out}/player.html to step through it"

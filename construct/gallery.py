@@ -47,7 +47,7 @@ from .constructions.checking import summary
 from .constructions import get, names
 from .io.manifest import foreign_entries
 from .io.staging import replaced_folder, write_text
-from .render.output import params_text, write_outputs
+from .render.output import write_outputs
 from .render.notation import citation
 from .render.notation import givens as book_givens
 from .render.styles import STYLES
@@ -189,7 +189,7 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
     if first:
         write_text(edir / "protocol.json", fig.protocol.to_json(fig.replay))
     checks = c.checks(fig)
-    write_text(edir / "checks.md", _checks_md(f"{c.title.en} ({book_givens(fig)[1] or params_text(fig)})", checks))
+    write_text(edir / "checks.md", _checks_md(f"{c.title.en} ({book_givens(fig, c)[1]})", checks))
     write_text(edir / "checks.json", json.dumps(
         {"construction": name, "params": params, "summary": summary(checks),
          "ok": all(ch.ok for ch in checks), "checks": [ch.as_dict() for ch in checks]},
@@ -208,9 +208,9 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
                         "files": sorted(files), "steps": info["steps"], "frames": info["frames"],
                         "frame_mode": FRAME_MODE})
     row = {"number": number, "name": name, "slug": slug, "params": params, "title": c.title,
-           "source": citation(name, "en") or c.source, "method": _method(fig), "checks": summary(checks),
+           "source": citation(c, "en") or c.source, "method": _method(fig), "checks": summary(checks),
            "ok": all(ch.ok for ch in checks), "steps": len(fig.protocol.steps),
-           "params_text": book_givens(fig)[1] or params_text(fig), "player": first}
+           "params_text": book_givens(fig, c)[1], "player": first}
     return entries, row
 
 

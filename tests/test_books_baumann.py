@@ -15,12 +15,7 @@ from construct.books.errata import CLASSES, all_errata
 from construct.books.baumann.errata import entries
 from construct.books.baumann import printed as seed004
 
-
-
-@pytest.fixture(autouse=True)
-def twenty_digits():
-    with mpmath.workdps(20):
-        yield
+MPMATH_DPS = 20  # the digits of the mpmath references: each test runs under mpmath.workdps (conftest.py)
 
 
 @pytest.fixture(scope="module")

@@ -17,6 +17,7 @@ from construct.constructions import get
 from construct.constructions.four_stroke import pressure, volume
 from construct.kernel.errors import InvalidParameter
 
+MPMATH_DPS = 30  # the digits of the mpmath references: each test runs under mpmath.workdps (conftest.py)
 
 
 def piston(theta, k):
@@ -48,14 +49,7 @@ def cycle(stroke, x, g, engine):
 
 @pytest.fixture(scope="module", params=["explosion", "diesel"])
 def case(request):
-    with mpmath.workdps(30):
-        yield request.param, get("four-stroke").figure(engine=request.param, parts=12, over_pressure=True)
-
-
-@pytest.fixture(autouse=True)
-def digits():
-    with mpmath.workdps(30):
-        yield
+    return request.param, get("four-stroke").figure(engine=request.param, parts=12, over_pressure=True)
 
 
 def _height(fig, name):

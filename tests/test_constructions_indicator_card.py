@@ -17,11 +17,7 @@ from construct.constructions.indicator_card import CLOSE_TOLERANCE, load_indicat
 from construct.io.reading import read_bounded_text
 from construct.kernel.errors import InputFileError
 
-
-@pytest.fixture(autouse=True)
-def thirty_digits():
-    with mpmath.workdps(30):
-        yield
+MPMATH_DPS = 30  # the digits of the mpmath references: each test runs under mpmath.workdps (conftest.py)
 
 #: Cover side: steam line straight from 8 at at x = 0 to 2 at at x = 1; exhaust at 1 at, straight back.
 STRAIGHT = "x,p\n0,8\n0.5,5\n1,2\n1,1\n0.5,1\n0,1\n0,8\n"
@@ -128,7 +124,7 @@ BROKEN = [
     ("x,p\n0,8\n0.5,5\n0.3,4\n1,2\n1,1\n0,1\n0,8\n", "row 4: x = 0.3 turns back on the forward"),
     ("x,p\n0.2,8\n0.5,5\n1,2\n1,1\n0.2,1\n0.2,8\n", "must reach both dead centres"),
     ("x,p\n0,3\n0.5,3\n1,3\n0.2,3\n0,3\n", "encloses nothing"),
-    ("", "the header must be 'x,p', got 'an empty file'"),
+    ("", "the header must be 'x,p' (or 'x;p' with decimal commas, as a German spreadsheet exports it), got 'an empty file'"),
 ]
 
 

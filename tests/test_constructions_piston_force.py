@@ -32,14 +32,15 @@ from construct.constructions.piston_force import (
 )
 from construct.kernel.errors import InvalidParameter
 
-mpmath.mp.dps = 30
+MPMATH_DPS = 30  # the digits of the mpmath references: each test runs under mpmath.workdps (conftest.py)
 PF = get("piston-force")
-G_HP, G_LP, N, R, L = 830, 990, 50, mpmath.mpf("0.4"), mpmath.mpf("2.0")
-LAM = R / L
-#: Tafel I as printed (seed 001): F' = 1546,25 cm², F'' = 1511,89 cm²
-F1, F2 = mpmath.mpf("1546.25"), mpmath.mpf("1511.89")
-#: the plate's high-pressure diagram (piston_force.HP_DIAGRAM), written out: admission P over P0 absolute
-P, P0, S1, S0, S3 = 7, 2, mpmath.mpf("0.3"), mpmath.mpf("0.08"), mpmath.mpf("0.15")
+with mpmath.workdps(MPMATH_DPS):  # the constants at the references' digits, the process's mpmath left alone
+    G_HP, G_LP, N, R, L = 830, 990, 50, mpmath.mpf("0.4"), mpmath.mpf("2.0")
+    LAM = R / L
+    #: Tafel I as printed (seed 001): F' = 1546,25 cm², F'' = 1511,89 cm²
+    F1, F2 = mpmath.mpf("1546.25"), mpmath.mpf("1511.89")
+    #: the plate's high-pressure diagram (piston_force.HP_DIAGRAM), written out: admission P over P0 absolute
+    P, P0, S1, S0, S3 = 7, 2, mpmath.mpf("0.3"), mpmath.mpf("0.08"), mpmath.mpf("0.15")
 
 
 def A_mp():

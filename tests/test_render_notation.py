@@ -33,6 +33,7 @@ REPOSITORY_NAMES = re.compile(r"\bseed\b|DESIGN|§ ?5\b", re.I)
 BOOK_TITLES = {
     "000": "Darstellung der Massendrücke",   # seeds/000: "## Anhang II. ### Darstellung der Massendrücke."
     "001": "Einfluß der Massenkräfte",       # seeds/001: "#### b) Einfluß der Massenkräfte."
+    "001 c": "Die Kraftwirkungen in Verbrennungsmaschinen",   # seeds/001: "c) Die Kraftwirkungen in ..."
     "002": "§ 146",                          # seeds/002: "§. 146", "§. 147. Einfluss der Länge der Schubstangen"
     "004": "Baumann",                        # seeds/004: "Autor: A. Baumann"
 }
@@ -46,7 +47,7 @@ FOLLOWS = {
     "piston-force": [("001", "Abb. 1055")],
     "tangential-pressure": [("004", "Fig. 26")],
     "two-cranks": [("002", "Fig. 566")],
-    "four-stroke": [("001", "Abb. 1056")],
+    "four-stroke": [("001 c", "Abb. 1056")],
     "flywheel-rim": [("004", "Fig. 28")],
 }
 
@@ -160,13 +161,13 @@ def test_the_players_givens_are_in_book_symbols():
     from construct.render.notation import given_rows
 
     fig = _figure("two-cranks", (("infinite_rod", True), ("parts", 12)))
-    rows = given_rows(fig)
+    rows = given_rows(fig, get("two-cranks"))
     page = player_html(build_scene(fig), givens=rows)
     table = page[page.index('<table id="givens">'):]
     table = table[: table.index("</table>")]
     assert not _clean(table), _clean(table)
     assert "infinite_rod" not in table and "magnify" not in table and "unendlich" in table
-    rows = given_rows(_figure("indicator-diagram", ()))
+    rows = given_rows(_figure("indicator-diagram", ()), get("indicator-diagram"))
     assert rows["P"] == "7,85 at / 7.85 at" and rows["P₀"] == "0,15 at / 0.15 at"
 
 

@@ -72,6 +72,7 @@ from typing import Any, Mapping
 
 from .checking import EUCLIDEAN_TOLERANCE, Check
 from ..kernel.errors import InvalidParameter, did_you_mean
+from ..kernel.division import NAMES as DIVISION_NAMES
 from ..kernel.division import check_parts, divide_semicircle
 from ..kernel.instruments import Builder
 from ..kernel.protocol import Caption
@@ -81,9 +82,15 @@ from .domain import (COMPRESSION_RATIO, CUTOFF_RATIO, DRAWN_LENGTH, ENGINE_PRESS
                      POLYTROPE_EXPONENT, PRESSURE_RATIO, RELEASE, SUCTION_PRESSURE)
 from .indicator import square
 from .inertia.build import inertia_scale, inertia_value, value_kind
+from .phrases import Book, Cite, number, ratio
 
 __all__ = ["FOUR_STROKE", "ENGINES", "COMPRESSION_RATIOS", "build_four_stroke", "four_stroke_checks",
            "model_pressure", "pressure", "volume", "brauer_tangents", "STROKES"]
+
+#: Seed 001's section on combustion engines: "c) Die Kraftwirkungen in Verbrennungsmaschinen" of the same
+#: handbook as Tafel I's steam engine (its figures Abb. 1056-1058 are the engines', not Tafel I's).
+COMBUSTION = Book("001", None, "„Die Kraftwirkungen in Verbrennungsmaschinen“",
+                  "„Die Kraftwirkungen in Verbrennungsmaschinen“ (force effects in combustion engines)")
 
 ENGINES = ("explosion", "diesel")
 #: Each engine's compression ratio when none is given (explosion engines 4..7, Diesel 12..16).
@@ -647,10 +654,30 @@ OPTION_HELP = {
 }
 
 
+def four_stroke_wording(fig: Figure, lang: str) -> list[str]:
+    """The givens as the handbook writes them: the engine, ε and n, its peak pressure or ρ, the release, the rod,
+    and -- where the figure draws Abb. 1058's over-pressure -- a–a, b–b and q."""
+    g = fig.replay.givens
+    de = lang == "de"
+    diesel = fig.params.get("engine") == "diesel"
+    out = [("Gleichdruckmaschine" if de else "compression-ignition engine") if diesel
+           else ("Verpuffungsmaschine" if de else "explosion engine"),
+           f"ε = {number(g['compression_ratio'], lang)}", f"n = {number(g['exponent'], lang)}"]
+    out.append(f"ρ = {number(fig.params.get('cutoff', 2.0), lang)}" if diesel
+               else ("Höchstdruck " if de else "peak pressure ") + f"{number(g['max_pressure'], lang)} at")
+    release = g.get("release", 1.0)
+    out.append(("Auslass bei " if de else "release at ") + f"{number(release, lang)} s" if release < 1.0 else
+               ("Auslass im Totpunkt" if de else "release at the dead centre"))
+    out.append(ratio("r/L", g["rod_ratio"], lang))
+    if fig.params.get("over_pressure", True):   # a protocol from before the option drew a-a and b-b
+        out += [("Kolbenüberdruck a–a, b–b über zwei Umdrehungen" if de else
+                 "piston over-pressure a–a, b–b over two turns"), f"q = {number(g['pressure_ratio'], lang)} at"]
+    return out
+
+
 FOUR_STROKE = register(Construction(
     name="four-stroke",
-    title=Caption("Druckverlauf im Viertakt über zwei Umdrehungen, Kolbenüberdruck a–a, b–b",
-                  "Four-stroke pressures over two turns, piston over-pressure a–a, b–b"),
+    title=Caption("Druckverlauf im Viertakt", "Four-stroke pressures"),
     source="seed 001 c, Abb. 1056-1058",
     build=build_four_stroke,
     checks=four_stroke_checks,
@@ -660,5 +687,10 @@ FOUR_STROKE = register(Construction(
               "steps": 12},
     book_params=({}, {"engine": "diesel"}),
     structural=("engine", "parts", "method", "steps", "cutoff", "release", "over_pressure"),
-    extra={"help": OPTION_HELP, "switches": ("over_pressure",)},
-), validate=_validate)
+    cites=(Cite(COMBUSTION, "Abb. 1056–1058"),),
+    wording=four_stroke_wording,
+    methods=DIVISION_NAMES,
+    validator=_validate,
+    help=OPTION_HELP,
+    extra={"switches": ("over_pressure",)},
+))

@@ -58,6 +58,7 @@ from . import analytic
 from .checking import EUCLIDEAN_TOLERANCE, Check
 from ..kernel.errors import InvalidParameter
 from ..kernel.geometry import Point
+from ..kernel.division import NAMES as DIVISION_NAMES
 from ..kernel.division import check_parts, divide_semicircle
 from ..kernel.instruments import Builder
 from ..kernel.proportional import carry_across, fourth_proportional, scale_line, vertex_on
@@ -70,6 +71,7 @@ from .indicator import indicator_frame, indicator_givens, pressures_at, square
 from .indicator import steam_pressure as model_steam
 from .indicator_card import card_givens, card_pair, draw_card, load_indicator
 from .ordinates import OrdinateFrame, ordinate_line, ordinate_value, point_kind
+from .phrases import BAUMANN_1902, HANDBOOK, Cite, card, division, metres, number, percent
 
 __all__ = ["PISTON_FORCE", "TAFEL_I", "HP_DIAGRAM", "GRAVITY", "piston_area_mean", "build_piston_force",
            "piston_force_checks", "mass_force", "piston_force", "abscissa", "mass_force_rows", "area_balance",
@@ -1083,6 +1085,36 @@ def _curve_area_tolerance(n: int, lam: float) -> float:
     return 2.0 * (math.pi / n) ** 3 * (1.0 + 4.0 * lam)
 
 
+def piston_force_wording(fig: Figure, lang: str) -> list[str]:
+    """The givens as Tafel I writes them (G, n, R, L, F; F′ and F″ over both strokes), Baumann's diagram or a
+    digitised card's, and the semicircle's division."""
+    g = fig.replay.givens
+    de = lang == "de"
+    out = [f"G = {number(g['weight'], lang)} kg", f"n = {number(g['rpm'], lang)}/min",
+           f"R = {metres(g['crank_radius'], lang)} m", f"L = {metres(g['rod_length'], lang)} m",
+           f"F = {number(g['piston_area'], lang, 5)} cm²"]
+    if "admission" in g:  # Baumann's idealised diagram (a digitised card says itself, below)
+        out += [f"p₁ = {number(g['admission'], lang)} at", f"p₂ = {number(g['back_pressure'], lang)} at",
+                ("Füllung " if de else "cut-off ") + percent(g["filling"], lang),
+                ("schädlicher Raum " if de else "clearance ") + percent(g["clearance"], lang),
+                ("Kompression " if de else "compression ") + percent(g["compression"], lang)]
+    out.append(division(fig, lang))
+    if fig.params.get("revolution"):  # both sides, each with its own area (Tafel I: F', F'')
+        out[4] = (f"F′ = {number(g['piston_area_cover'], lang, 6)} cm² (Deckelseite), "
+                  f"F″ = {number(g['piston_area_crank'], lang, 6)} cm² (Kurbelseite), Hin- und Rückgang" if de else
+                  f"F′ = {number(g['piston_area_cover'], lang, 6)} cm² (cover side), "
+                  f"F″ = {number(g['piston_area_crank'], lang, 6)} cm² (crank side), both strokes")
+    return out + card(fig, lang)
+
+
+def piston_force_note(fig: Figure, lang: str) -> str:
+    """What the 990-kg plate must say beyond its givens: it shows the high-pressure side's diagram."""
+    if fig.replay.givens.get("weight") == 990.0:
+        return ("Massen der Niederdruckseite (990 kg) über dem Dampfdiagramm der Hochdruckseite" if lang == "de" else
+                "low-pressure side's masses (990 kg) over the high-pressure side's steam diagram")
+    return ""
+
+
 PISTON_FORCE = register(Construction(
     name="piston-force",
     title=Caption("Kolbenüberdrucklinie mit den Massenkräften", "Piston-force line with the mass forces"),
@@ -1097,7 +1129,13 @@ PISTON_FORCE = register(Construction(
     book_params=({}, {"weight": 990.0}, {"revolution": True}),
     structural=("parts", "method", "filling", "compression", "revolution", "indicator", "indicator_crank_side"),
     sweep=lambda g, ratios: {**g, "rod_length": ratios * g["crank_radius"]},  # L = (L/R) R
-    extra={"plate": piston_force_plate, "help": {
+    cites=(Cite(HANDBOOK, "Abb. 1054/1055"), Cite(BAUMANN_1902, "Fig. 25")),
+    wording=piston_force_wording,
+    note=piston_force_note,
+    methods=DIVISION_NAMES,
+    plate=piston_force_plate,
+    validator=_validate,
+    help={
         "weight": "weight G of the reciprocating parts in kg (Tafel I: 830 high-pressure, 990 low-pressure side)",
         "rpm": "revolutions per minute n (Tafel I: 50)",
         "crank_radius": "crank radius R in m (Tafel I: 0.4)",
@@ -1107,8 +1145,8 @@ PISTON_FORCE = register(Construction(
         "piston_area_crank": "piston-force --revolution: F'' of the crank side, less the rod, in cm^2 (Tafel I: 1511.89)",
         "scale": "drawn length per metre of stroke (piston-force; default 2.5)",
         "force_unit": "drawn length per kg of force (piston-force; default 1.2e-4)",
-    }},
-), validate=_validate)
+    },
+))
 
 
 # --------------------------------------------------------------------------

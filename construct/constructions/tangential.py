@@ -60,7 +60,8 @@ from typing import Any, Mapping
 import numpy as np
 
 from .checking import EUCLIDEAN_TOLERANCE, Check
-from ..kernel.errors import GeometryError, InvalidParameter
+from ..kernel.errors import GeometryError, InvalidParameter, did_you_mean
+from ..kernel.division import NAMES as DIVISION_NAMES
 from ..kernel.division import check_parts, divide_semicircle
 from ..kernel.instruments import Builder
 from ..kernel.proportional import scale_line
@@ -73,6 +74,7 @@ from .indicator import back_pressure as model_back_pressure
 from .indicator import steam_pressure as model_steam_pressure
 from .ordinates import inertia_setup, ordinate_value, point_kind
 from .indicator_card import card_force, card_givens, card_pair, draw_card, load_indicator
+from .phrases import BAUMANN_1902, Cite, card, diagram, division, low_pressure, number, ratio, revolution, scale
 from .revolution import (MACHINES, REVOLUTION_PLATE, build_revolution, crank_shifts, engine_cylinders, parse_cranks,
                          revolution_checks, unroll_by_chords)
 
@@ -183,7 +185,8 @@ def chord_shortfall(n: int, r: float = 1.0) -> float:
 def _engine(revolution: Any, cranks: Any, machine: Any, force: str, parts: int) -> dict[str, Any]:
     """The revolution's params: crank offsets, their shifts in divisions, cylinders per rod (empty: forward stroke)."""
     if machine not in MACHINES:
-        raise InvalidParameter(f"machine must be one of {', '.join(MACHINES)}, got {machine!r}")
+        raise InvalidParameter(f"machine must be one of {', '.join(MACHINES)}, got {machine!r}"
+                               f"{did_you_mean(machine, MACHINES)}")
     if not revolution:
         if cranks or machine != "single":
             raise InvalidParameter("--cranks and --machine draw the whole revolution: add --revolution")
@@ -207,7 +210,7 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
         raise InvalidParameter(f"tangential-pressure has no parameter {', '.join(sorted(unknown))}")
     low = {**LOW_PRESSURE, **low}
     if force not in FORCES:
-        raise InvalidParameter(f"force must be one of {', '.join(FORCES)}, got {force!r}")
+        raise InvalidParameter(f"force must be one of {', '.join(FORCES)}, got {force!r}{did_you_mean(force, FORCES)}")
     cards = None
     if indicator_crank_side and not indicator:
         raise InvalidParameter("--indicator-crank-side goes with --indicator (the cover side's diagram)")
@@ -972,6 +975,30 @@ def tangential_checks(fig: Figure, model: Mapping[str, float] | None = None) -> 
     return checks
 
 
+def tangential_wording(fig: Figure, lang: str) -> list[str]:
+    """The givens as Baumann writes them: κ = P/Bmax, the rod, the diagram (or a digitised card), the scale and
+    the division; over a revolution the machine, its cranks and the low-pressure cylinder."""
+    g = fig.replay.givens
+    if fig.params.get("force") == "unit":
+        return [x for x in [ratio("r/L", g["rod_ratio"], lang), "P′ = r", *revolution(fig, lang), division(fig, lang),
+                            *card(fig, lang)] if x]
+    # κ = P/B_max (Baumann): the construction keeps c v²/r = P/((1 + r/L) κ) as its given.
+    if "admission" not in g:  # a digitised card's force
+        return [x for x in [ratio("r/L", g["rod_ratio"], lang), *revolution(fig, lang), division(fig, lang),
+                            *card(fig, lang), *low_pressure(fig, lang)] if x]
+    kappa = g["admission"] / (g["pressure_ratio"] * (1.0 + 1.0 / g["rod_ratio"]))
+    out = ([f"κ = P/Bmax = {number(round(kappa, 9), lang)}", ratio("r/L", g["rod_ratio"], lang)]
+           + diagram(g, lang) + [scale(g, lang), division(fig, lang)])
+    if "lp.admission" in g:  # two cylinders, two diagrams: say whose the first givens are
+        out[2] = ("Hochdruck: " if lang == "de" else "high pressure: ") + out[2]
+    if fig.params.get("revolution"):  # the return stroke from the same diagram: Baumann's assumption, said
+        out = [x for x in revolution(fig, lang) if x] + out + [
+            "Rückgang: dasselbe Diagramm gespiegelt (Baumanns Annahme)" if lang == "de"
+            else "return stroke: the same diagram mirrored (Baumann's assumption)"]
+        out += low_pressure(fig, lang)
+    return out
+
+
 TANGENTIAL = register(Construction(
     name="tangential-pressure",
     title=Caption("Tangentialdruckdiagramm mit Ausgleichender und Überschussfläche",
@@ -991,7 +1018,12 @@ TANGENTIAL = register(Construction(
                  {"rod_ratio": 5.0, "parts": 18, "revolution": True, "machine": "compound"}),
     structural=("parts", "method", "force", "filling", "compression", "revolution", "cranks", "machine", "indicator",
                 "indicator_crank_side", "indicator_lp", "indicator_lp_crank_side", "lp_filling", "lp_compression"),
-    extra={"plate": tangential_plate, "help": {
+    cites=(Cite(BAUMANN_1902, "Fig. 26/27"),),
+    wording=tangential_wording,
+    methods=DIVISION_NAMES,
+    plate=tangential_plate,
+    validator=_validate,
+    help={
         "cranks": "tangential-pressure --revolution: crank offsets in degrees ahead of the first, e.g. 0,90 "
                   "(multiples of 180/parts; default: the machine's)",
         "machine": "tangential-pressure --revolution: single (default; cranks as --cranks says), tandem (two "
@@ -1013,5 +1045,5 @@ TANGENTIAL = register(Construction(
         "lp_back_pressure": "the low-pressure cylinder's back pressure in at absolute, 0.001 .. 1000 (default 0.15)",
         "lp_compression": "the low-pressure cylinder's compression s3/s, 0.001 .. 1 (default 0.30)",
         "lp_kappa": "the low-pressure cylinder's kappa = P/B_max, 0.1 .. 10000 (default 8)",
-    }},
-), validate=_validate)
+    },
+))

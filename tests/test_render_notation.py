@@ -48,6 +48,7 @@ FOLLOWS = {
     "tangential-pressure": [("004", "Fig. 26")],
     "two-cranks": [("002", "Fig. 566")],
     "four-stroke": [("001 c", "Abb. 1056")],
+    "effective-work": [("004", "Fig. 27")],
     "flywheel-rim": [("004", "Fig. 28")],
 }
 

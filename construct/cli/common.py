@@ -92,7 +92,7 @@ SYMBOLS = {"admission": "P", "back_pressure": "P0", "clearance": "s0/s", "compre
            "crank_radius": "R", "filling": "s1/s", "force": "baumann|unit", "force_unit": "LENGTH/kg",
            "kappa": "kappa", "piston_area": "F", "pressure_unit": "LENGTH/at", "rod_length": "L", "rpm": "n",
            "scale": "LENGTH/m", "weight": "G", "b1": "b1/r1", "rim": "h/r1", "compression_ratio": "epsilon",
-           "cutoff": "rho", "release": "x_e/s", "drive": "engine|pump", "dead_centre": "crank-end|head-end", "engine": "explosion|diesel", "exhaust": "p_g",
+           "cutoff": "rho", "release": "x_e/s", "drive": "engine|pump", "efficiency": "eta", "dead_centre": "crank-end|head-end", "engine": "explosion|diesel", "exhaust": "p_g",
            "exponent": "n", "max_pressure": "p", "steps": "N", "suction": "p_a", "cranks": "DEG,DEG",
            "indicator": "FILE.csv", "indicator_crank_side": "FILE.csv", "machine": "single|tandem|compound",
            "piston_area_cover": "F'", "piston_area_crank": "F''", "indicator_lp": "FILE.csv",

@@ -48,7 +48,7 @@ __all__ = ["AREA_RATIO", "Domain", "ROD_RATIO", "DRAWN_LENGTH", "PRESSURE", "PRE
            "DRAWN_PRESSURE_RATIO", "DRAWN_M", "DRAWN_MASS_FORCE", "KAPPA_RANGE", "FLUCTUATION", "SPEED_GAIN", "WEIGHT", "RPM", "LENGTH_M", "PISTON_AREA",
            "DRAWING_SCALE", "FORCE_UNIT", "FLYWHEEL_KZ", "RIM_SPEED",
            "FLYWHEEL_DIAMETER", "FLYWHEEL_RPM", "FLYWHEEL_WEIGHT", "EXCESS_WORK", "IRREGULARITY", "COMPRESSION_RATIO", "CUTOFF_RATIO",
-           "ENGINE_PRESSURE", "EXHAUST_PRESSURE", "RELEASE", "POLYTROPE_EXPONENT", "SUCTION_PRESSURE", "DISC_THICKNESS",
+           "ENGINE_PRESSURE", "EXHAUST_PRESSURE", "RELEASE", "MECHANICAL_EFFICIENCY", "POLYTROPE_EXPONENT", "SUCTION_PRESSURE", "DISC_THICKNESS",
            "RIM_SECTION", "CRANK_OFFSET", "CRANK_COUNT"]
 
 
@@ -174,6 +174,10 @@ EXHAUST_PRESSURE = Domain(1.0, 3.0, "exhaust pressures in at absolute (a slight 
 #: release at constant volume); practice 0.85 .. 0.95 (35 to 50 degrees before the dead centre).
 RELEASE = Domain(0.5, 1.0, "piston paths x_e/s where the exhaust opens, between the middle of the stroke and the "
                  "crank-end dead centre (practice 0.85 .. 0.95)")
+#: The mechanical efficiency of an engine, effective over indicated work (Baumann's Fig. 27): a steam engine's
+#: 0.75 .. 0.92; below 0.3 the effective line falls far below the base, above 1 friction would give work.
+MECHANICAL_EFFICIENCY = Domain(0.3, 1.0, "mechanical efficiencies, effective over indicated work (steam engines "
+                               "0.75 .. 0.92)")
 #: The highest pressure of the cycle, at: seed 001 names about 25 at for the explosion engine.
 ENGINE_PRESSURE = Domain(2.0, 150.0, "highest cycle pressures in at (seed 001: about 25 at for the explosion engine)")
 #: Baumann's Fig. 28 over the rim radius r1: the disc thickness b1 (a real wheel's is a few thousandths of r1; the

@@ -65,7 +65,7 @@ FRAME_MODE = "none"
 #: the animation and storyboard of `construct replay` carry the same elements again); the historical
 #: style is the plate (the construction's views in the plate's ink would double the gallery).
 GALLERY_OUTPUTS = {"historical": (), "teaching": ("player",)}
-#: The constructions whose gallery player has a live rod-ratio slider (construct.constructions.live): the crank
+#: The constructions whose gallery player has a live rod-ratio slider (construct.live): the crank
 #: and the inertia curve, the two the issue names; the live data adds 0.1-0.3 MB a player (and a sweep of
 #: 1-3 s to the build), and the gallery stays under its 15 MB.  `construct replay NAME --live` gives any
 #: construction with a rod ratio its slider.
@@ -217,7 +217,7 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
 def _live(c, fig, style: str) -> tuple[dict[str, Any] | None, Any]:
     """The live data of a gallery player (a slider for each continuous given the construction can sweep) and
     the figure's drawing, laid out once for the sweep's camera views and the player."""
-    from .constructions.live import live_data, live_givens, live_sweep
+    from .live import live_data, live_givens, live_sweep
     from .render.output import scene_for
     from .render.svg import Drawing
 

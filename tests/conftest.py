@@ -36,6 +36,7 @@ import resource
 import shutil
 import signal
 import sys
+import tempfile
 from pathlib import Path
 from typing import Any, Callable, NamedTuple
 
@@ -43,11 +44,15 @@ import mpmath
 import numpy as np
 import pytest
 from hypothesis import settings
+from hypothesis.configuration import set_hypothesis_home_dir
 
 # -- Hypothesis: how far the property tests search -----------------------------------------------------------
 
-# database=None: a failing example is printed with the failure (and pinned with @example when it is fixed);
-# Hypothesis's example database would be a folder (.hypothesis) written into the checkout under test.
+# No test writes into the checkout, Hypothesis neither: its home (by default .hypothesis in the working folder,
+# where it caches the constants it reads from the sources) is a folder of the system's temporary files, and
+# there is no example database (a failing example is printed with the failure, and pinned with @example when
+# it is fixed).
+set_hypothesis_home_dir(Path(tempfile.gettempdir()) / "construct-tests-hypothesis")
 settings.register_profile("ci", max_examples=100, database=None)   # Hypothesis's own default count
 settings.register_profile("dev", max_examples=20, database=None)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE") or ("ci" if os.environ.get("CI") else "dev"))

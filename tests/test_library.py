@@ -114,6 +114,7 @@ LAYERS = [
     ("render", ["construct.render"]),
     ("figure", ["construct.figure"]),
     ("constructions", ["construct.constructions"]),
+    ("live", ["construct.live"]),
     ("books", ["construct.books"]),
     ("tables", ["construct.tables"]),
     ("gallery", ["construct.gallery"]),

@@ -64,8 +64,7 @@ from ..kernel.protocol import Caption
 from . import Construction, Figure, bounded, register
 from .domain import MECHANICAL_EFFICIENCY
 from .phrases import BAUMANN_1902, Cite, number
-from .tangential import (TANGENTIAL, model_summary_sweep, tangential_checks, tangential_plate,
-                         tangential_wording)
+from .tangential import TANGENTIAL, model_summary_sweep, tangential_checks
 
 __all__ = ["EFFECTIVE_WORK", "build_effective_work", "effective_work_checks", "planimetered", "flywheel_share",
            "EFFICIENCY"]
@@ -196,14 +195,14 @@ def _letters(fig: Figure) -> dict[str, str]:
 def effective_work_wording(fig: Figure, lang: str) -> list[str]:
     """The tangential diagram's givens as Baumann writes them, and the efficiency."""
     eta = fig.replay.givens["efficiency"]
-    return tangential_wording(fig, lang) + [
+    return list(TANGENTIAL.wording(fig, lang)) + [
         (f"Wirkungsgrad η = {number(eta, lang)}" if lang == "de" else f"efficiency η = {number(eta, lang)}")]
 
 
 def effective_work_plate(fig: Figure) -> dict:
     """Fig. 27 as a plate: Fig. 26's diagram with E, B, F for α₁, the top and α₂, the effective line below it with
     L, H, M, and N on the base."""
-    plate = tangential_plate(fig)
+    plate = TANGENTIAL.plate(fig)
     R = fig.replay
     n = fig.params["parts"]
     span = abs(R[f"U{n}"][0] - R["U0"][0])

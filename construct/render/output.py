@@ -171,7 +171,7 @@ def write_outputs(stage: Path, construction: Described | None, figure: Drawn, st
                   outputs: tuple[str, ...] = OUTPUTS, live: Any = None, drawing: Drawing | None = None) -> dict[str, Any]:
     """Write final.svg, steps/ (when asked), protocol.json and *outputs*: animated.svg, player.html, storyboard.svg.
 
-    *live*: the data of a live player (:func:`construct.constructions.live.live_data`), whose slider the
+    *live*: the data of a live player (:func:`construct.live.wire.live_data`), whose slider the
     player then carries (:func:`construct.render.live.with_live`).  *drawing*: the figure's drawing in *st*,
     if the caller has laid it out already (a live player's sweep carries its camera views).
 

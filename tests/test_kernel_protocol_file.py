@@ -533,3 +533,21 @@ def test_an_error_quotes_a_huge_multiline_caption_on_one_short_line(tmp_path, ca
     assert main(["check", "--protocol", str(path)]) == 2
     err = capsys.readouterr().err
     assert len(err.splitlines()) == 1 and len(err) < 2100 and "first line second line" in err, err[:300]
+
+
+def test_what_this_library_writes_it_reads_back(tmp_path, monkeypatch, cli):
+    """A protocol larger than the reader's limit is refused when written, before the folder is touched: the same
+    limit as construct check and replay --protocol read (a 280,000-step protocol of 71 MB was written, then
+    refused by both)."""
+    import construct.kernel.protocol as protocol_module
+    from construct.constructions import get
+    from construct.kernel.errors import OutputError
+
+    text = get("crank").figure(parts=6).protocol.to_json()
+    monkeypatch.setattr(protocol_module, "MAX_PROTOCOL_BYTES", len(text.encode()) - 1)
+    with pytest.raises(OutputError, match="more than the 0 MiB a protocol file may have to be read back"):
+        get("crank").figure(parts=6).protocol.to_json()
+    code, _, err = cli("replay", "crank", "--parts", "6", "--out", tmp_path / "c")
+    assert code == 2 and "read back" in err and not (tmp_path / "c").exists()
+    monkeypatch.setattr(protocol_module, "MAX_PROTOCOL_BYTES", len(text.encode()))
+    assert get("crank").figure(parts=6).protocol.to_json() == text

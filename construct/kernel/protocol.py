@@ -37,12 +37,13 @@ import numpy as np
 
 from .areas import Area
 from .curves import BezierCurve, Polyline
-from .errors import (ConstructError, InvalidParameter, MissingGiven, ProtocolFormatError, RuleError, StepError,
-                     UnknownObject, WrongInput)
+from .errors import (ConstructError, InvalidParameter, MissingGiven, OutputError, ProtocolFormatError, RuleError,
+                     StepError, UnknownObject, WrongInput)
 from .geometry import SCALAR, Circle, Length, Line, Point, Sweep, ArrayMath, take
 from .ops import ACCEPTS, OPS, elementwise
-from .protocol_file import (KNOWN_FORMATS, PROTOCOL_FILE_FORMAT, PROTOCOL_FORMAT, PROVENANCE_KINDS, ROLES, TOOLS,
-                            check_format, frozen, parse_protocol_json, read_protocol_bytes, step_fields)
+from .protocol_file import (KNOWN_FORMATS, MAX_PROTOCOL_BYTES, PROTOCOL_FILE_FORMAT, PROTOCOL_FORMAT,
+                            PROVENANCE_KINDS, ROLES, TOOLS, check_format, frozen, parse_protocol_json,
+                            read_protocol_bytes, step_fields)
 from .numeric import as_float, shown
 from .rules import as_rule
 
@@ -661,7 +662,14 @@ class Protocol:
         head += ',\n "groups": [' + "".join(f"\n  {line(g)}," for g in groups).rstrip(",") + "\n ]"
         body = ",\n".join(f"  {line(s)}" for s in steps)
         objs = ",\n".join(f"  {line(k)}: {line(v)}" for k, v in objects.items())
-        return f'{head},\n "steps": [\n{body}\n ],\n "objects": {{\n{objs}\n }}}}\n'
+        text = f'{head},\n "steps": [\n{body}\n ],\n "objects": {{\n{objs}\n }}}}\n'
+        size = len(text.encode("utf-8"))
+        if size > MAX_PROTOCOL_BYTES:  # what this library writes, it reads back: the reader's limit, here
+            raise OutputError(f"the protocol of {self.construction!r} ({len(self.steps)} steps) would be "
+                              f"{size / 2**20:.1f} MiB, more than the {MAX_PROTOCOL_BYTES // 2**20} MiB a protocol "
+                              f"file may have to be read back (construct check, replay --protocol); fewer steps "
+                              f"(parts, divisions) make it smaller")
+        return text
 
     @classmethod
     def from_dict(cls, d: Any) -> "Protocol":

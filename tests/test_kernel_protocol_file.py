@@ -201,7 +201,15 @@ def test_the_op_table_declares_the_kinds_its_functions_make():
     b.polyline("q", ["D", "E", "F"])
     b.area_between("between", "q", "p", "A", "C")
     b.planimeter("reading", "between")
-    figs.append(b.figure())
+    # a traced card and a point picked off it (the indicator card's trace, the piston force's J)
+    b2 = Builder("traced", givens={"s": 1.0, "u": 1.0, "x0": 0.0, "p0": 2.0, "x1": 1.0, "p1": 1.0})
+    b2.given_point("H", 0.0, 0.0)
+    b2.given_point("K", 2.0, 0.0)
+    b2.record("curve", "trace", ("H", "K", "H", "K"), ("t",), {"xs": ("x0", "x1"), "ps": ("p0", "p1"), "stroke": ("s",),
+              "pressure": ("u",), "stroke_factor": 2.0}, "übertragen", "traced")
+    b2.record("curve", "vertex", ("t",), ("v",), {"index": 1}, "Punkt", "point")
+    assert b2["v"] == construct.Point(2.0, 1.0)
+    figs += [b.figure(), b2.figure()]
     seen = set()
     for fig in figs:
         for step in fig.protocol.steps:

@@ -29,6 +29,8 @@ from __future__ import annotations
 import math
 from typing import Any, Sequence
 
+import numpy as np
+
 from .errors import DegenerateObject, GeometryError
 from .geometry import Line, Point
 
@@ -305,14 +307,20 @@ def crossings(curve: Any, line: Line) -> tuple[Point, ...]:
                 add(*BezierCurve._at(seg, t))
     else:
         pts = curve.curve_points()
-        for a, b in zip(pts, pts[1:]):
-            sa, sb = side(a), side(b)
-            if sa == 0.0:
+        # every vertex's side in one numpy pass (the same arithmetic as side(), element by element); only the
+        # chords that touch or cross the line are cut -- a traced card has thousands of chords, two of them cross
+        xy = np.asarray(pts, dtype=float)
+        s = (xy[:, 0] - px) * nx + (xy[:, 1] - py) * ny
+        sa, sb = s[:-1], s[1:]
+        for k in np.flatnonzero((sa == 0.0) | ((sa < 0.0) & (sb > 0.0)) | ((sb < 0.0) & (sa > 0.0))):
+            a, b = pts[k], pts[k + 1]
+            ta, tb = float(sa[k]), float(sb[k])
+            if ta == 0.0:
                 add(a[0], a[1])
-            if (sa < 0.0 < sb) or (sb < 0.0 < sa):
-                t = sa / (sa - sb)
+            if (ta < 0.0 < tb) or (tb < 0.0 < ta):
+                t = ta / (ta - tb)
                 add(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
-        if side(pts[-1]) == 0.0:
+        if float(s[-1]) == 0.0:
             add(pts[-1][0], pts[-1][1])
     return tuple(found)
 
@@ -405,3 +413,46 @@ def parabola_envelope_op(args, params, givens, refs, xp):
 def polyline_op(args, params, givens, refs, xp):
     """The constructed points joined in order by the straightedge."""
     return (Polyline(args, closed=bool(params.get("closed"))),)
+
+
+def trace_op(args, params, givens, refs, xp):
+    """A digitised diagram traced onto the drawing and its points joined by the straightedge.
+
+    Inputs: the stroke's ends *head* and *crank*, and two points *up0*, *up1* whose left side the pressures
+    stand on.  Each point i: x_i (the given ``xs[i]``) times the stroke length (the product of the givens
+    ``stroke`` times ``stroke_factor``) from *head* towards *crank*, p_i (``ps[i]``) times the pressure scale
+    (the product of ``pressure``) up the perpendicular.  ``extend`` continues the line level to both dead
+    centres where it stops short of them (x = 0, 1); ``closed`` joins the last point to the first.
+    """
+    head, crank, up0, up1 = args
+    length = math.hypot(crank.x - head.x, crank.y - head.y)
+    ux, uy = (crank.x - head.x) / length, (crank.y - head.y) / length
+    vx, vy = up1.x - up0.x, up1.y - up0.y
+    norm = math.hypot(vx, vy)
+    nx, ny = -vy / norm, vx / norm   # the left normal of up0 -> up1
+    stroke = float(params.get("stroke_factor", 1.0))
+    for name in params["stroke"]:
+        stroke *= givens[name]
+    scale = 1.0
+    for name in params["pressure"]:
+        scale *= givens[name]
+    xs = [float(givens[n]) for n in params["xs"]]
+    ps = [float(givens[n]) for n in params["ps"]]
+    if params.get("extend"):  # each end to the dead centre it is nearer: 0 (head) or 1 (crank)
+        first, last = (0.0, 1.0) if xs[0] <= xs[-1] else (1.0, 0.0)
+        if xs[0] != first:
+            xs, ps = [first] + xs, [ps[0]] + ps
+        if xs[-1] != last:
+            xs, ps = xs + [last], ps + [ps[-1]]
+    pts = [Point(head.x + ux * x * stroke + nx * p * scale, head.y + uy * x * stroke + ny * p * scale)
+           for x, p in zip(xs, ps)]
+    return (Polyline(pts, closed=bool(params.get("closed"))),)
+
+
+def vertex_op(args, params, givens, refs, xp):
+    """A point of a drawn chain: its vertex ``index`` (the end of a chord the draftsman lays a straightedge on)."""
+    (chain,) = args
+    i = int(params["index"])
+    if not 0 <= i < len(chain.points):
+        raise DegenerateObject(f"the chain has {len(chain.points)} points, no point {i}")
+    return (chain.points[i],)

@@ -208,7 +208,7 @@ def effective_work_plate(fig: Figure) -> dict:
     span = abs(R[f"U{n}"][0] - R["U0"][0])
     d = 0.018 * span
     top = max(range(1, n), key=lambda k: R[f"T{k}"][1])
-    letters = [(R["A1"], "E", (-1.2, 1.2)), (R["A2"], "F", (1.2, 1.2)), (R[f"eff{top}"], "H", (0.0, 1.6))]
+    letters = [(R["A1"], "E", (-1.2, 1.2)), (R["A2"], "F", (1.2, 1.2)), (R[f"eff{top}"], "H", (0.0, -2.2))]
     # Fig. 26's letters A, D and the mean line's M, M give way to Fig. 27's (its M is the effective crossing)
     furniture = [f for f in plate["furniture"] if f.get("text") not in ("α₁", "α₂", "A", "D", "M")]
     furniture += [{"kind": "lettering", "at": (p[0] + dx * d, p[1] + dy * d), "text": t} for p, t, (dx, dy) in letters]

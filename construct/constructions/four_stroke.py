@@ -284,26 +284,34 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
     # Which ordinates of the expansion stroke lie on the constant-pressure line and which beyond the release is
     # decided here: the cut-off and the release are structural.
     b = Builder("four-stroke", givens, {"engine": engine, "parts": n, "method": used, "requested_method": method,
-                                        "steps": steps, "plate": PLATE, "release": givens["release"],
+                                        "steps": steps, "plate": PLATE if over_pressure else PV_PLATE,
+                                        "release": givens["release"],
                                         "over_pressure": over_pressure,
                                         **({"cutoff": givens["cutoff"]} if engine == "diesel" else {})})
     f = build_frame(b)
-    upper = divide_semicircle(b, O=f["O"], D0=f["D0"], D1=f["D1"], circle=f["circle"], axis=f["axis"], n=n,
-                              method=used)
-    rod_arcs(b, f, upper)
+    # the piston positions are read where the 720° diagram needs them: Abb. 1056's diagram alone needs the dead
+    # centres only (its Brauer points are constructed in the p-V plane)
+    upper: list[str] = []
+    if over_pressure:
+        upper = divide_semicircle(b, O=f["O"], D0=f["D0"], D1=f["D1"], circle=f["circle"], axis=f["axis"], n=n,
+                                  method=used)
+        rod_arcs(b, f, upper)
+    positions = range(n + 1) if over_pressure else (0, n)
     unit = "pressure_unit"
     with b.group("p-V diagram: zero line, clearance, pressure axis", "p-V-Diagramm: Nulllinie, Verdichtungsraum, Druckachse"):
         Z = b.given_point("Z", -1.0, _PV_ZERO, unit="r", de="Nulllinie des Diagramms (absolutes Vakuum)",
                           en="zero line of the diagram (absolute vacuum)", label="")
         base = b.given_line("pvbase", Z, angle_deg=0.0, de="Nulllinie (Volumenachse)", en="zero line (volume axis)",
                             role="result")
-        ords, feet = [], []
-        for k in range(n + 1):
-            o = b.erect_perpendicular(f"o{k}", f"X{k}", f["axis"], f["O"] if k not in (0, n) else
+        ords: dict[int, str] = {}
+        feet: dict[int, str] = {}
+        for k in positions:
+            at = f"X{k}" if over_pressure else (f["D0"] if k == 0 else f["D1"])
+            o = b.erect_perpendicular(f"o{k}", at, f["axis"], f["O"] if k not in (0, n) else
                                       (f["D1"] if k == 0 else f["D0"]))
-            ords.append(o)
-            feet.append(b.intersect(f"F{k}", o, base, rule=("only",), de=f"Kolbenstellung {k} auf der Volumenachse",
-                                    en=f"piston position {k} on the volume axis"))
+            ords[k] = o
+            feet[k] = b.intersect(f"F{k}", o, base, rule=("only",), de=f"Kolbenstellung {k} auf der Volumenachse",
+                                  en=f"piston position {k} on the volume axis")
         vc = b.given_length("Vc", product=("clearance", "r"), factor=2.0, de="Verdichtungsraum V_c = s/(ε − 1)",
                             en="clearance volume V_c = s/(epsilon - 1)")
         k = b.circle_radius("O'.k", feet[0], vc, de="V_c vor dem Deckeltotpunkt", en="V_c beyond the head-end dead centre")
@@ -397,7 +405,18 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
             b.polyline("release", [exp_[-1], fpt], de="Auslass im Totpunkt e–f", en="release at the dead centre e-f")
         b.polyline("suction", [a, comp[0]], de="Sauglinie a–b", en="suction line a-b")
         b.polyline("exhaust", [fpt, gpt], de="Auspufflinie f–g", en="exhaust line f-g")
-    # -- readings at the piston positions, stroke by stroke
+    if over_pressure:
+        _readings_and_over_pressure(b, f, engine, givens, upper, n, ords, feet, a, c, comp, exp_, fpt, gpt, early,
+                                    suction_line, exhaust_line)
+    proto = b.protocol()
+    return Figure(proto, proto.replay(givens))
+
+
+def _readings_and_over_pressure(b: Builder, f: Mapping[str, str], engine: str, givens: Mapping[str, float],
+                                upper: list[str], n: int, ords: Mapping[int, str], feet: Mapping[int, str], a: str,
+                                c: str, comp: list[str], exp_: list[str], fpt: str, gpt: str, early: bool,
+                                suction_line: str, exhaust_line: str) -> None:
+    """The pressures read on every piston position's ordinate, stroke by stroke, and Abb. 1058 from them."""
     readings: dict[tuple[int, int], str] = {}
     on_line_count = 0   # Diesel: how many ordinates of the expansion stroke stand on the constant-pressure line
     released_count = 0  # how many stand beyond the release e, on the line e-f
@@ -426,13 +445,10 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
                         ("Auslasslinie e–f", "release line e-f") if released else ("Expansionslinie", "expansion line"))
                 readings[2, k] = b.intersect(f"P{k}x", ords[k], "expansion", rule=("only",), de=f"{what[0]} bei {k}",
                                              en=f"{what[1]} at {k}")
-    if over_pressure:
-        _over_pressure(b, f, upper, n, feet, readings, on_line_count, released_count)
-    proto = b.protocol()
-    return Figure(proto, proto.replay(givens))
+    _over_pressure(b, f, upper, n, feet, readings, on_line_count, released_count)
 
 
-def _over_pressure(b: Builder, f: Mapping[str, str], upper: list[str], n: int, feet: list[str],
+def _over_pressure(b: Builder, f: Mapping[str, str], upper: list[str], n: int, feet: Mapping[int, str],
                    readings: Mapping[tuple[int, int], str], on_line_count: int, released_count: int) -> None:
     """Abb. 1058: the pressures carried to the 720° diagram (a–a) and less the mass pressures (b–b)."""
     # -- the 720° diagram
@@ -521,6 +537,25 @@ def _over_pressure(b: Builder, f: Mapping[str, str], upper: list[str], n: int, f
         b.set_label(bb[3][-1], "b")
 
 
+def four_stroke_plate(fig: Figure) -> dict:
+    """b and f stand at the crank-end dead centre a few tenths of an atmosphere apart (the suction and the
+    exhaust line): both lettered right of the dead centre, the lower one well below the upper, clear of each
+    other, of e above them and of the curves that leave them to the left."""
+    R = fig.replay
+    # a letter's size follows the whole plate's width: the p-V diagram alone, or with the 720° diagram beside it
+    d = 0.03 * abs(R["Ov"][0] - R["f"][0]) * (2.6 if "T1" in R else 1.0)
+    b_, f_ = R["cP0"], R["f"]
+    upper, lower = (b_, f_) if b_[1] >= f_[1] else (f_, b_)
+    return {"looks": {"cP0": "unlettered", "f": "unlettered"},
+            "furniture": [{"kind": "lettering", "at": (upper[0] + 1.6 * d, upper[1] + 0.2 * d),
+                           "text": "b" if upper is b_ else "f"},
+                          {"kind": "lettering", "at": (lower[0] + 1.6 * d, lower[1] - 2.6 * d),
+                           "text": "f" if lower is f_ else "b"}]}
+
+
+#: The plate of Abb. 1056 or 1057 alone: the p-V diagram with Brauer's rays and points over the stroke.
+PV_PLATE = (r"pvbase", r"paxis", r"Ov", r"OMe?|ONe?", r"[ce]P\d+", r"compression|expansion",
+            r"ignition|suction|release|exhaust", r"atm|suct|exh|pmax", r"[abfg]")
 #: The plate (Abb. 1056–1058): the p-V diagram with Brauer's rays and points, the crank circle with the piston
 #: positions, the 720° diagram with a-a and b-b.
 PLATE = (r"pvbase", r"paxis", r"Ov", r"OMe?|ONe?", r"[ce]P\d+", r"compression|expansion", r"ignition|suction|release|exhaust",
@@ -599,6 +634,8 @@ def four_stroke_checks(fig: Figure) -> list[Check]:
                         "m steps of 1 + tg α = (V_e/V_d)^(1/m)", "stroke"))
     checks.append(Check("release e: p_d (V_d/V_e)^n", pressure(fig, f"eP{m}"), p_d * (v_d / (vc + xe)) ** nexp,
                         tol_p * eps ** nexp * 4.0, "the last Brauer point", "at"))
+    if not fig.params.get("over_pressure", True):   # Abb. 1056/1057 alone: no readings, no 720° diagram
+        return checks
     # readings on the ordinates and the 720 degree diagram
     xk = {k: volume(fig, f"F{k}") - vc for k in range(n + 1)}
     comp_pts = [(volume(fig, f"cP{j}"), pressure(fig, f"cP{j}")) for j in range(m + 1)]
@@ -611,7 +648,7 @@ def four_stroke_checks(fig: Figure) -> list[Check]:
     on_exp = [k for k in inner if (engine == "explosion" or vc + xk[k] > g["cutoff"] * vc) and xk[k] <= xe]
     dev_e = dict(zip(on_exp, _curve_tolerance(fig, exp_exact, [vc + xk[k] for k in on_exp], lambda v: e0 / v ** nexp)))
     lam = 1.0 / g["rod_ratio"]
-    for s in range(4 if fig.params.get("over_pressure") else 0):
+    for s in range(4):
         for i in range(n + 1):
             t = s * n + i
             k = i if s % 2 == 0 else n - i
@@ -689,6 +726,7 @@ FOUR_STROKE = register(Construction(
     structural=("engine", "parts", "method", "steps", "cutoff", "release", "over_pressure"),
     cites=(Cite(COMBUSTION, "Abb. 1056–1058"),),
     wording=four_stroke_wording,
+    plate=four_stroke_plate,
     methods=DIVISION_NAMES,
     validator=_validate,
     help=OPTION_HELP,

@@ -145,20 +145,19 @@ def _wheel_mp(gs, v, kz_cm2, r1=mpmath.mpf("1.6")):
 def test_the_exact_wheel_beside_baumanns(capsys):
     """His method is not consistent in itself; the exact column is: its wheel has the moment G_s·D² it is sized for
     (the arms' radius of gyration, not ρ = 7/12 r1), arms and hub from 13/6 π, not his 2.2 π."""
-    with mpmath.workdps(30):
-        g1, arms, total = _wheel_mp(2130, "20.1", "100.5")
-        rec = _json(capsys, ["flywheel", "--rim-weight", "2130", "--v", "20.1", "--rpm", "120"])
-        assert rec["exact_rim"] == pytest.approx(float(g1), rel=1e-12)
-        assert rec["exact_arms_hub"] == pytest.approx(float(arms), rel=1e-12)
-        assert rec["exact_total"] == pytest.approx(float(total), rel=1e-12)
-        x = mpmath.mpf("20.1") ** 2 / mpmath.mpf("100.5")
-        # his own figures: the total from 1 + 0.06 x, his quotient, his derivation's rim, his summary's rim
-        assert rec["total_weight"] == pytest.approx(float(2130 * (1 + mpmath.mpf("0.06") * x)), rel=1e-14)
-        quotient = (1 + mpmath.mpf("0.08075") * x) / (1 + mpmath.mpf("0.0218") * x)
-        assert rec["total_quotient"] == pytest.approx(float(2130 * quotient), rel=1e-14)
-        assert rec["rim_by_moment"] == pytest.approx(float(2130 / (1 + mpmath.mpf("0.0218") * x)), rel=1e-14)
-        assert rec["rim_of_wheel"] == pytest.approx(rec["total_weight"] / float(1 + mpmath.mpf("0.08075") * x),
-                                                    rel=1e-14)
+    g1, arms, total = _wheel_mp(2130, "20.1", "100.5")
+    rec = _json(capsys, ["flywheel", "--rim-weight", "2130", "--v", "20.1", "--rpm", "120"])
+    assert rec["exact_rim"] == pytest.approx(float(g1), rel=1e-12)
+    assert rec["exact_arms_hub"] == pytest.approx(float(arms), rel=1e-12)
+    assert rec["exact_total"] == pytest.approx(float(total), rel=1e-12)
+    x = mpmath.mpf("20.1") ** 2 / mpmath.mpf("100.5")
+    # his own figures: the total from 1 + 0.06 x, his quotient, his derivation's rim, his summary's rim
+    assert rec["total_weight"] == pytest.approx(float(2130 * (1 + mpmath.mpf("0.06") * x)), rel=1e-14)
+    quotient = (1 + mpmath.mpf("0.08075") * x) / (1 + mpmath.mpf("0.0218") * x)
+    assert rec["total_quotient"] == pytest.approx(float(2130 * quotient), rel=1e-14)
+    assert rec["rim_by_moment"] == pytest.approx(float(2130 / (1 + mpmath.mpf("0.0218") * x)), rel=1e-14)
+    assert rec["rim_of_wheel"] == pytest.approx(rec["total_weight"] / float(1 + mpmath.mpf("0.08075") * x),
+                                                rel=1e-14)
     assert main(["flywheel", "--rim-weight", "2130", "--v", "20.1", "--rpm", "120"]) == 0
     out = capsys.readouterr().out
     assert "Baumann, as printed" in out and "exact, from his assumptions" in out and "not consistent" in out
@@ -169,31 +168,29 @@ def test_his_factor_against_his_quotient():
     """At v = 17 m/s, kz = 85 (his tables' column): 1 + 0.06 x = 1.204 against his own quotient 1.1866."""
     from construct.books.baumann.flywheel import design
 
-    with mpmath.workdps(30):
-        x = mpmath.mpf(17) ** 2 / 85
-        d = design(rim_weight=1000.0, v=17.0, rpm=100.0, kz=85.0)
-        assert d["total_weight"] / 1000 == pytest.approx(1.204, abs=1e-12)
-        assert d["total_quotient"] / 1000 == pytest.approx(
-            float((1 + mpmath.mpf("0.08075") * x) / (1 + mpmath.mpf("0.0218") * x)), rel=1e-14)
-        assert round(d["total_quotient"] / 1000, 4) == 1.1866
-        # and his two rims: his derivation's G_s/(1 + 0.0218 x), his summary's total/(1 + 0.08075 x)
-        assert d["rim_by_moment"] == pytest.approx(float(1000 / (1 + mpmath.mpf("0.0218") * x)), rel=1e-14)
-        assert d["rim_of_wheel"] == pytest.approx(float(1204 / (1 + mpmath.mpf("0.08075") * x)), rel=1e-14)
+    x = mpmath.mpf(17) ** 2 / 85
+    d = design(rim_weight=1000.0, v=17.0, rpm=100.0, kz=85.0)
+    assert d["total_weight"] / 1000 == pytest.approx(1.204, abs=1e-12)
+    assert d["total_quotient"] / 1000 == pytest.approx(
+        float((1 + mpmath.mpf("0.08075") * x) / (1 + mpmath.mpf("0.0218") * x)), rel=1e-14)
+    assert round(d["total_quotient"] / 1000, 4) == 1.1866
+    # and his two rims: his derivation's G_s/(1 + 0.0218 x), his summary's total/(1 + 0.08075 x)
+    assert d["rim_by_moment"] == pytest.approx(float(1000 / (1 + mpmath.mpf("0.0218") * x)), rel=1e-14)
+    assert d["rim_of_wheel"] == pytest.approx(float(1204 / (1 + mpmath.mpf("0.08075") * x)), rel=1e-14)
 
 
 def test_the_rim_moment_of_his_last_paragraph(capsys):
     """G1(Da² + Di²)/2 against his G1 D1², and the disc counted inside the rim, by quadrature."""
     rec = _json(capsys, ["flywheel", "--rim-weight", "2130", "--v", "20.1", "--rpm", "120", "--rim-height", "0.16"])
     c = rec["rim_moment"]
-    with mpmath.workdps(30):
-        d1, h, g1 = mpmath.mpf(rec["diameter"]), mpmath.mpf("0.16"), mpmath.mpf(rec["rim_of_wheel"])
-        da, di = d1 + h, d1 - h
-        assert c["rim_moment_true"] == pytest.approx(float(g1 * (da ** 2 + di ** 2) / 2), rel=1e-13)
-        assert c["too_little"] == pytest.approx(float(g1 * (da ** 2 + di ** 2) / 2 - g1 * d1 ** 2), rel=1e-12)
-        r1 = d1 / 2
-        disc = mpmath.mpf(rec["arms_hub_weight"]) * (mpmath.mpf(5) / 3) / (mpmath.mpf(13) / 6)
-        inside = mpmath.quad(lambda r: disc / (5 * r1 / 6) * (2 * r) ** 2, [r1 - h / 2, r1])
-        assert c["too_much"] == pytest.approx(float(inside), rel=1e-12)
+    d1, h, g1 = mpmath.mpf(rec["diameter"]), mpmath.mpf("0.16"), mpmath.mpf(rec["rim_of_wheel"])
+    da, di = d1 + h, d1 - h
+    assert c["rim_moment_true"] == pytest.approx(float(g1 * (da ** 2 + di ** 2) / 2), rel=1e-13)
+    assert c["too_little"] == pytest.approx(float(g1 * (da ** 2 + di ** 2) / 2 - g1 * d1 ** 2), rel=1e-12)
+    r1 = d1 / 2
+    disc = mpmath.mpf(rec["arms_hub_weight"]) * (mpmath.mpf(5) / 3) / (mpmath.mpf(13) / 6)
+    inside = mpmath.quad(lambda r: disc / (5 * r1 / 6) * (2 * r) ** 2, [r1 - h / 2, r1])
+    assert c["too_much"] == pytest.approx(float(inside), rel=1e-12)
     assert main(["flywheel", "--rim-weight", "2130", "--v", "20.1", "--rpm", "120", "--rim-height", "0.16"]) == 0
     assert "too little" in capsys.readouterr().out
 

@@ -82,15 +82,10 @@ from .domain import (COMPRESSION_RATIO, CUTOFF_RATIO, DRAWN_LENGTH, ENGINE_PRESS
                      POLYTROPE_EXPONENT, PRESSURE_RATIO, RELEASE, SUCTION_PRESSURE)
 from .indicator import square
 from .inertia.build import inertia_scale, inertia_value, value_kind
-from .phrases import Book, Cite, number, ratio
+from .phrases import COMBUSTION, Cite, number, ratio
 
 __all__ = ["FOUR_STROKE", "ENGINES", "COMPRESSION_RATIOS", "build_four_stroke", "four_stroke_checks",
            "model_pressure", "pressure", "volume", "brauer_tangents", "STROKES"]
-
-#: Seed 001's section on combustion engines: "c) Die Kraftwirkungen in Verbrennungsmaschinen" of the same
-#: handbook as Tafel I's steam engine (its figures Abb. 1056-1058 are the engines', not Tafel I's).
-COMBUSTION = Book("001", None, "„Die Kraftwirkungen in Verbrennungsmaschinen“",
-                  "„Die Kraftwirkungen in Verbrennungsmaschinen“ (force effects in combustion engines)")
 
 ENGINES = ("explosion", "diesel")
 #: Each engine's compression ratio when none is given (explosion engines 4..7, Diesel 12..16).

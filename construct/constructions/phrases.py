@@ -23,7 +23,7 @@ from typing import Any, Mapping
 from ..kernel.division import NAMES as DIVISION_NAMES
 from ..kernel.letters import number
 
-__all__ = ["Book", "Cite", "ANHANG_II", "HANDBOOK", "MECHANICS", "BAUMANN_1902", "BOOKS", "number", "ratio", "metres",
+__all__ = ["Book", "Cite", "ANHANG_II", "HANDBOOK", "COMBUSTION", "MECHANICS", "BAUMANN_1902", "BOOKS", "number", "ratio", "metres",
            "percent", "division", "stroke_parts", "scale", "diagram", "card", "revolution", "low_pressure"]
 
 
@@ -61,8 +61,13 @@ MECHANICS = Book("002", None, "§ 146–147, Zwei Kurbeln unter 90°", "§ 146�
 BAUMANN_1902 = Book("004", "A. Baumann", "Ein neues Verfahren zur Bestimmung der Schwungradgewichte von Dampfmaschinen",
                "Ein neues Verfahren zur Bestimmung der Schwungradgewichte von Dampfmaschinen",
                "Bd. 317, 1902", short="Schwungradgewichte (1902)")
-#: The four source texts by their seed files' numbers.
-BOOKS: dict[str, Book] = {b.key: b for b in (ANHANG_II, HANDBOOK, MECHANICS, BAUMANN_1902)}
+#: The handbook's section on combustion engines, "c) Die Kraftwirkungen in Verbrennungsmaschinen" (seed 001, the
+#: same text as Tafel I's steam engine; its figures Abb. 1056-1058 are the engines', not Tafel I's).
+COMBUSTION = Book("001", None, "„Die Kraftwirkungen in Verbrennungsmaschinen“",
+                  "„Die Kraftwirkungen in Verbrennungsmaschinen“ (force effects in combustion engines)")
+#: The source texts, and the sections cited by their own titles, by their seed files' numbers (a section by
+#: its letter after the number).
+BOOKS: dict[str, Book] = {**{b.key: b for b in (ANHANG_II, HANDBOOK, MECHANICS, BAUMANN_1902)}, "001 c": COMBUSTION}
 
 
 def metres(v: float, lang: str) -> str:

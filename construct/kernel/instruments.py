@@ -146,7 +146,7 @@ class Builder:
         self._group: list[str] = []
         self._group_titles: dict[str, str] = {}
         self._counter: dict[str, int] = {}
-        self._lettered = 0  # the first steps, taken over from a protocol, whose captions are lettered already
+        self._taken_over = 0  # the first steps, taken over from a protocol, whose captions are lettered already
 
     @classmethod
     def continuing(cls, protocol: Protocol, objects: Mapping[str, Any], construction: str,
@@ -177,7 +177,7 @@ class Builder:
                 b.provenance[name] = step.provenance
                 b._maker[name] = step.index - 1
         b._group_titles.update(titles)
-        b._lettered = len(b.steps)
+        b._taken_over = len(b.steps)
         return b
 
     # -- bookkeeping ----------------------------------------------------------
@@ -355,7 +355,7 @@ class Builder:
         # The captions name what the figure letters (12, B, M1), not the objects' internal names; steps taken
         # over from another protocol (continuing) are lettered already.
         lettered = letter_steps(self.steps, self.objects)
-        steps = tuple(self.steps[:self._lettered]) + tuple(lettered[self._lettered:])
+        steps = tuple(self.steps[:self._taken_over]) + tuple(lettered[self._taken_over:])
         params["captions"] = "letters"  # read once: a second reading would take a letter (S1) for a name
         return Protocol(self.construction, MappingProxyType(params), steps, self.replayable)
 

@@ -40,7 +40,7 @@ import argparse
 import json
 import math
 
-from ...books.baumann.flywheel import design, parse_fraction, rim_moment_correction
+from ...books.baumann.flywheel import DISC_GYRATION, derived, design, parse_fraction, rim_moment_correction
 from ...kernel.errors import InvalidParameter
 from ..common import add_format_option, construction_given, number
 
@@ -231,6 +231,8 @@ def _text(d: dict, work: float | None, source: str | None, correction: dict | No
     """The text report: his figures beside the exact ones, and what each is."""
     v = d["rim_speed"]
     x = v * v / d["kz"]
+    exact = derived()
+    a, m = f"{exact['arms_hub']:.4f}", f"{exact['moment_gyration']:.4f}"   # 0.0795, 0.0247
     lines = []
     if work is not None:
         lines.append(f"excess work E          {_sig(d['excess_work']):>12} kg·m" + (f"   ({source})" if source else ""))
@@ -242,10 +244,10 @@ def _text(d: dict, work: float | None, source: str | None, correction: dict | No
         f"moment G_s·D²          {_sig(d['moment']):>12} kg·m²",
     ]
     rows = [("", "Baumann, as printed", "", "exact, from his assumptions", ""),
-            ("total weight", _sig(d["total_weight"]), "G_s(1 + 0.06 x)", _sig(d["exact_total"]), "G1(1 + 0.0795 x)"),
+            ("total weight", _sig(d["total_weight"]), "G_s(1 + 0.06 x)", _sig(d["exact_total"]), f"G1(1 + {a} x)"),
             ("  rim of the wheel G1", _sig(d["rim_of_wheel"]), "G_total/(1 + 0.08075 x)", _sig(d["exact_rim"]),
-             "G_s/(1 + 0.0247 x)"),
-            ("  arms and hub", _sig(d["arms_hub_weight"]), "G_total − G1", _sig(d["exact_arms_hub"]), "G1·0.0795 x")]
+             f"G_s/(1 + {m} x)"),
+            ("  arms and hub", _sig(d["arms_hub_weight"]), "G_total − G1", _sig(d["exact_arms_hub"]), f"G1·{a} x")]
     w = [max(len(r[i]) for r in rows[1:]) for i in range(5)]
     lines.append("")
     lines.append(f"{'':{w[0]}}  {rows[0][1]:<{w[1] + w[2] + 5}}  {rows[0][3]}")
@@ -259,9 +261,9 @@ def _text(d: dict, work: float | None, source: str | None, correction: dict | No
         f"{d['total_quotient'] / d['rim_weight']:.4f} (total {_sig(d['total_quotient'])} kg);",
         f"  his derivation's rim G_s/(1 + 0.0218 x) = {_sig(d['rim_by_moment'])} kg, his summary's "
         f"G_total/(1 + 0.08075 x) = {_sig(d['rim_of_wheel'])} kg;",
-        "  ρ = 7/12 r1 halves the arms' mass but is not their radius of gyration (k² = 0.398 r1², not 0.340): "
-        "the moment coefficient is 0.0247, not 0.0218; the arms and hub from 13/6 π, not his 2.2 π: 0.0795, "
-        "not 0.08075.",
+        f"  ρ = 7/12 r1 halves the arms' mass but is not their radius of gyration (k² = {DISC_GYRATION:.3f} r1², "
+        f"not 0.340): the moment coefficient is {m}, not 0.0218; the arms and hub from 13/6 π, not his 2.2 π: "
+        f"{a}, not 0.08075.",
     ]
     if correction is not None:
         lines += [

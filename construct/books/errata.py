@@ -32,7 +32,7 @@ author carries the wrong form on).
 >>> rows = {(e.table, e.row, e.column): e for e in errata()}
 >>> e = rows["Tabelle 1", "180°", "cos ω + r/L·cos 2ω (L/r=6)"]
 >>> e.printed, round(e.true, 6), round(e.units, 2), e.class_
-('-0.8334', -0.833333, -0.67, 'slip')
+('-0.8334', -0.833333, -0.67, 'follows')
 >>> e.note
 'computed from printed intermediates: -1 + 0.1666 = -0.8334'
 >>> classify(0.5), classify(-1.7), classify(2.01)

@@ -92,6 +92,9 @@ def build_effective_work(*, efficiency: float, **tangential: Any) -> Figure:
     n = base.params["parts"]
     b = Builder.continuing(base.protocol, base.replay, "effective-work", givens={"efficiency": eta},
                            params={"plate": PLATE})
+    # Fig. 27 letters Fig. 26's crossings α₁, α₂ E and F
+    b.set_label("A1", "E")
+    b.set_label("A2", "F")
     with b.group("the effective mean line: η times the mean height (proportional angle)",
                  "Die effektive Ausgleichende: η mal die mittlere Höhe (Proportionswinkel)"):
         S = b.given_point("S.eff", -1.4, -2.2, unit="r", de="Scheitel S des Proportionswinkels",
@@ -208,17 +211,20 @@ def effective_work_plate(fig: Figure) -> dict:
     span = abs(R[f"U{n}"][0] - R["U0"][0])
     d = 0.018 * span
     top = max(range(1, n), key=lambda k: R[f"T{k}"][1])
-    letters = [(R["A1"], "E", (-1.2, 1.2)), (R["A2"], "F", (1.2, 1.2)), (R[f"eff{top}"], "H", (0.0, -2.2))]
-    # Fig. 26's letters A, D and the mean line's M, M give way to Fig. 27's (its M is the effective crossing)
-    furniture = [f for f in plate["furniture"] if f.get("text") not in ("α₁", "α₂", "A", "D", "M")]
+    letters = [(R[f"eff{top}"], "H", (0.0, -2.2))]
+    # Fig. 26's α₁, α₂ (and their dashed ordinates) are Fig. 27's E and F, lettered at their points; its A, D and
+    # the mean line's M, M give way to Fig. 27's letters (its M is the effective crossing)
+    furniture = [f for f in plate["furniture"] if f.get("text") not in ("α₁", "α₂", "A", "D", "M")
+                 and not (f.get("kind") == "stroke" and f.get("look") == "dashed thin")]
     furniture += [{"kind": "lettering", "at": (p[0] + dx * d, p[1] + dy * d), "text": t} for p, t, (dx, dy) in letters]
-    looks = {**plate["looks"], "ecurve": "heavy", "emean": "medium", "N.eff": "dashed thin"}
+    looks = {**{k: v for k, v in plate["looks"].items() if k not in ("A1", "A2")}, "ecurve": "heavy",
+             "emean": "medium", "N.eff": "dashed thin"}
     return {"looks": looks, "furniture": furniture}
 
 
 #: The plate: Fig. 26's diagram, the effective line and mean line, the areas EBF, LHM, FCODP, N.
 PLATE = (r"tbase", r"tcurve", r"mean", r"excess", r"A[12]", r"U\d+", r"ecurve", r"emean", r"effective", r"[LM]\.eff",
-         r"deficit\.\w+", r"e\d+", r"N.eff", r"N27\.F")
+         r"deficit\.\w+", r"eff\d+", r"N\.eff", r"N\.eff\.F")
 
 
 def _validate(givens: Mapping[str, float]) -> None:
@@ -238,7 +244,8 @@ EFFECTIVE_WORK = register(Construction(
                  if k in ("rod_ratio", "parts", "method", "r", "kappa", "filling", "clearance", "admission",
                           "back_pressure", "compression", "pressure_unit")},
               "efficiency": EFFICIENCY},
-    book_params=({"rod_ratio": 5.0, "parts": 18, "kappa": 8.0},),
+    # Fig. 27 is a sketch over Fig. 26's diagram: twelve parts (15°) draw it, and keep its player small
+    book_params=({"rod_ratio": 5.0, "parts": 12, "kappa": 8.0},),
     structural=("parts", "method", "filling", "compression"),
     cites=(Cite(BAUMANN_1902, "Fig. 27"),),
     wording=effective_work_wording,

@@ -10,9 +10,9 @@ records (``true`` to 8 significant digits, ``units`` to 2 decimals);
 >>> from construct.cli import main
 >>> main(["errata", "--class", "slip", "--seed", "000"])  # doctest: +ELLIPSIS
 table ...
-Tabelle 1 ... 0° ... 0.1666 ... slip ... truncated instead of rounded
+Tabelle 1 ... 0.1666 ... slip ... truncated instead of rounded
 ...
-... printed numbers: 0 agrees, ... slip, 0 follows, 0 typesetting, 0 arithmetic, 0 drawing, 0 ambiguous, 0 unexplained; 0 wrong formulas
+10 printed numbers: 0 agrees, 10 slip, 0 follows, 0 typesetting, 0 arithmetic, 0 drawing, 0 ambiguous, 0 unexplained; 0 wrong formulas
 0
 """
 

@@ -244,8 +244,9 @@ EFFECTIVE_WORK = register(Construction(
                  if k in ("rod_ratio", "parts", "method", "r", "kappa", "filling", "clearance", "admission",
                           "back_pressure", "compression", "pressure_unit")},
               "efficiency": EFFICIENCY},
-    # Fig. 27 is a sketch over Fig. 26's diagram: twelve parts (15°) draw it, and keep its player small
-    book_params=({"rod_ratio": 5.0, "parts": 12, "kappa": 8.0},),
+    # Fig. 27 is a sketch over Fig. 26's diagram: nine parts (20°, seed 001's "9 oder 18 Teile") draw it, and
+    # keep its player small
+    book_params=({"rod_ratio": 5.0, "parts": 9, "kappa": 8.0},),
     structural=("parts", "method", "filling", "compression"),
     cites=(Cite(BAUMANN_1902, "Fig. 27"),),
     wording=effective_work_wording,

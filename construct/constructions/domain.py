@@ -179,7 +179,7 @@ RELEASE = Domain(0.5, 1.0, "piston paths x_e/s where the exhaust opens, between 
 MECHANICAL_EFFICIENCY = Domain(0.3, 1.0, "mechanical efficiencies, effective over indicated work (steam engines "
                                "0.75 .. 0.92)")
 #: The highest pressure of the cycle, at: seed 001 names about 25 at for the explosion engine.
-ENGINE_PRESSURE = Domain(2.0, 150.0, "highest cycle pressures in at (seed 001: about 25 at for the explosion engine)")
+ENGINE_PRESSURE = Domain(2.0, 150.0, "highest cycle pressures in at (the handbook: about 25 at for the explosion engine)")
 #: Baumann's Fig. 28 over the rim radius r1: the disc thickness b1 (a real wheel's is a few thousandths of r1; the
 #: plate exaggerates) up to 1/30 r1, so that the hub (24 b1 long) stays within 0.8 r1; the rim's square side below
 #: r1/2 so that the rim clears the hub radius.

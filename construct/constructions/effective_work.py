@@ -64,7 +64,7 @@ from ..kernel.protocol import Caption
 from . import Construction, Figure, bounded, register
 from .domain import MECHANICAL_EFFICIENCY
 from .phrases import BAUMANN_1902, Cite, number
-from .tangential import TANGENTIAL, model_summary_sweep, tangential_checks
+from .tangential import TANGENTIAL, model_summary, tangential_checks
 
 __all__ = ["EFFECTIVE_WORK", "build_effective_work", "effective_work_checks", "planimetered", "flywheel_share",
            "EFFICIENCY"]
@@ -239,7 +239,7 @@ EFFECTIVE_WORK = register(Construction(
     source="seed 004 (Baumann 1902), Fig. 27",
     build=build_effective_work,
     checks=effective_work_checks,
-    sweep_model=lambda g, params: model_summary_sweep(g, "baumann"),
+    sweep_model=lambda g, params: model_summary(g, "baumann"),
     defaults={**{k: v for k, v in TANGENTIAL.defaults.items()
                  if k in ("rod_ratio", "parts", "method", "r", "kappa", "filling", "clearance", "admission",
                           "back_pressure", "compression", "pressure_unit")},

@@ -16,7 +16,7 @@ The idealised cycle (absolute pressures in at, volumes in strokes):
 * explosion: ignition at constant volume to ``max_pressure``, expansion
   p V^n = const; Diesel: combustion at constant pressure (the compression-end
   pressure p_a ε^n) to the ``cutoff`` volume ρ·V_c, then expansion;
-* release early, as the seed has it: "In *e* wurde die Auslaßöffnung
+* release early, as the handbook has it: "In *e* wurde die Auslaßöffnung
   freigegeben, durch welche die verbrannten Gase während des vierten, des
   Auspuffhubes, von *f* bis *g* vom Kolben hinausgeschoben werden" -- the
   expansion ends at e, the piston path ``release`` (x_e/s, default 0.9, about
@@ -44,7 +44,7 @@ drawn as a parallel.  The curve is drawn through the points with the French
 curve (its straying from the polytrope is checked against the same curve
 through the exact points).
 
-**Over 720°** (Abb. 1058, which the seed draws for the engine with
+**Over 720°** (Abb. 1058, which the handbook draws for the engine with
 self-ignition: ``over_pressure`` defaults to the Diesel's, and the explosion
 engine's plate is Abb. 1056's diagram alone unless asked): the crank circle is divided, the piston positions come from
 the rod arcs; each position's ordinate in the p–V diagram meets the branch of
@@ -611,7 +611,7 @@ def four_stroke_checks(fig: Figure) -> list[Check]:
                         "Euclidean", "at"))
     if engine == "explosion":
         v_d, p_d = vc, g["max_pressure"]
-        checks.append(Check("maximum pressure (seed 001: about 25 at)", pressure(fig, "eP0"), g["max_pressure"], tol_p,
+        checks.append(Check("maximum pressure (the handbook: about 25 at)", pressure(fig, "eP0"), g["max_pressure"], tol_p,
                             "laid off on the pressure axis", "at"))
     else:
         v_d, p_d = g["cutoff"] * vc, g["suction"] * eps ** nexp
@@ -662,7 +662,7 @@ def four_stroke_checks(fig: Figure) -> list[Check]:
             mass = g["pressure_ratio"] * (math.cos(theta) + lam * math.cos(2.0 * theta))
             checks.append(Check(f"b-b at {180 * t / n:g} deg: a-a less q(cos θ + r/L cos 2θ)",
                                 a - _height(fig, f"B{s}.{i}"), mass, tol_p * 10.0 + 1e-9 * abs(mass),
-                                "the inertia ordinate of seed 000 (Euclidean), taken off with the compass", "at"))
+                                "the inertia ordinate of Anhang II (Euclidean), taken off with the compass", "at"))
     checks.append(Check("piston position X_k against the exact law (stroke)", max(
         abs(xk[k] - _piston(math.pi * k / n, g["rod_ratio"])) for k in range(n + 1)), 0.0,
         1e-9, "rod arcs; the division of the circle", "stroke"))
@@ -673,13 +673,13 @@ def four_stroke_checks(fig: Figure) -> list[Check]:
 OPTION_HELP = {
     "engine": "four-stroke: explosion (Abb. 1056, ignition at constant volume) or diesel (Abb. 1057, constant pressure)",
     "compression_ratio": "four-stroke: compression ratio epsilon = (V_c + V_h)/V_c (default: explosion 5, Diesel 14)",
-    "release": "four-stroke: piston path x_e/s where the exhaust opens (seed 001: early, at e; default 0.9; 1 "
+    "release": "four-stroke: piston path x_e/s where the exhaust opens (the handbook: early, at e; default 0.9; 1 "
                "releases at the dead centre)",
     "over_pressure": "four-stroke: draw the over-pressure a-a, b-b over 720 degrees (Abb. 1058; default: the "
-                     "Diesel's, as the seed)",
+                     "Diesel's, as the handbook)",
     "suction": "four-stroke: suction pressure p_a, at absolute (0.9)",
     "exhaust": "four-stroke: exhaust pressure p_g, at absolute (1.1)",
-    "max_pressure": "four-stroke, explosion: maximum pressure after ignition, at (seed 001: about 25)",
+    "max_pressure": "four-stroke, explosion: maximum pressure after ignition, at (the handbook: about 25)",
     "cutoff": "four-stroke, diesel: cut-off ratio rho = V_d/V_c of the combustion at constant pressure (2)",
     "exponent": "four-stroke: polytropic exponent n of compression and expansion (1.3)",
     "steps": "four-stroke: Brauer steps per polytrope (12: the French curve then strays by a thousandth of the diagram)",

@@ -28,10 +28,11 @@ from __future__ import annotations
 from typing import Any, Sequence
 
 from .errors import RuleError, did_you_mean
-from .geometry import raw_point
+from .geometry import SCALAR, raw_point
 from .numeric import is_finite, shown
 
-__all__ = ["Rule", "nearer", "farther", "left_of", "right_of", "toward", "only", "as_rule", "RULE_ARITY", "choose"]
+__all__ = ["Rule", "nearer", "farther", "left_of", "right_of", "toward", "only", "as_rule", "RULE_ARITY", "choose",
+           "choose_among", "choose_among_sets"]
 
 #: How many object names each rule refers to.
 RULE_ARITY = {"nearer": 1, "farther": 1, "left": 2, "right": 2, "toward": 2, "only": 0}
@@ -230,7 +231,7 @@ def choose(points: Sequence[Any], rule: Rule, refs: Sequence[Any], xp: Any) -> t
         first = a.x * dx + a.y * dy >= b.x * dx + b.y * dy
     else:  # "only": the caller has checked that the two points coincide
         return a, b
-    if xp.name == "scalar":
+    if xp is SCALAR:
         return (a, b) if first else (b, a)
     w = xp.where
     return raw_point(w(first, a.x, b.x), w(first, a.y, b.y)), raw_point(w(first, b.x, a.x), w(first, b.y, a.y))
@@ -261,3 +262,42 @@ def choose_among(points: Sequence[Any], rule: Rule, refs: Sequence[Any]) -> Any:
         best = max
     target = best(key)
     return points[key.index(target)]
+
+
+def choose_among_sets(xs: Any, ys: Any, found: Any, rule: Rule, refs: Sequence[Any]) -> Any:
+    """:func:`choose_among` for every set of a sweep: the row chosen in each column.
+
+    *xs*, *ys* are the candidates, one row per place a point can be, in the
+    curve's order; *found* where each set has a point there.  The key is
+    choose_among's, and of equal keys the first wins, as there.
+
+    >>> import numpy as np
+    >>> xs, ys = np.array([[0.0, 0.0], [2.0, 2.0]]), np.array([[1.0, 1.0], [1.0, 1.0]])
+    >>> found = np.array([[True, False], [True, True]])
+    >>> choose_among_sets(xs, ys, found, toward(dx=-1.0, dy=0.0), ()).tolist()
+    [0, 1]
+    """
+    import numpy as np
+
+    name = rule.name
+    if name == "only":
+        return np.argmax(found, axis=0)  # the first point found
+    if name in ("nearer", "farther"):
+        (r,) = refs
+        key = (xs - r.x) ** 2 + (ys - r.y) ** 2
+        smallest = name == "nearer"
+    elif name in ("left", "right"):
+        p0, q0 = refs
+        key = (q0.x - p0.x) * (ys - p0.y) - (q0.y - p0.y) * (xs - p0.x)
+        smallest = name == "right"
+    else:
+        if rule.direction is None:
+            p0, q0 = refs
+            dx, dy = q0.x - p0.x, q0.y - p0.y
+        else:
+            dx, dy = rule.direction
+        key = xs * dx + ys * dy
+        smallest = False
+    if smallest:
+        return np.argmin(np.where(found, key, np.inf), axis=0)
+    return np.argmax(np.where(found, key, -np.inf), axis=0)

@@ -437,9 +437,9 @@ def _replace_tree(gallery: Path, rebuilt: Path) -> None:
     gallery`` and this update write; anything else is refused and listed,
     its files are not ours.  The new goldens get their manifest.
     """
-    from ..io.staging import replaced_folder
+    from ..io.manifest import replaced_with_manifest
 
-    with replaced_folder(gallery, manifest="gallery", what="gallery folder",
+    with replaced_with_manifest(gallery, "gallery", what="gallery folder",
                          described="a gallery of goldens written by 'construct gallery' or 'construct verify "
                                    "--update' (recognised by its .construct-manifest.json)") as new:
         shutil.copytree(rebuilt, new, symlinks=True)

@@ -29,7 +29,7 @@ import sys
 import warnings
 from dataclasses import dataclass
 from enum import Enum
-from typing import Any, Callable, Iterable
+from typing import Any, Callable, Iterable, Sequence
 
 from ..kernel.errors import HiddenLabelWarning
 from ..kernel.geometry import Circle, Length, Line, Point
@@ -37,7 +37,7 @@ from ..kernel.protocol import Protocol, Replay, Step
 from .captions import TITLE_LIMIT, Reader, displayed
 
 __all__ = ["Mark", "MarkKind", "Scene", "build_scene", "label_offset_direction", "on_curve_names", "extreme_points", "middle",
-           "fanned_lines", "letter_point"]
+           "fanned_lines", "letter_point", "thin"]
 
 TWO_PI = 2.0 * math.pi
 #: What a letter of the figure looks like (:meth:`Scene.tag_shown`): a letter, a number below 20 or
@@ -222,6 +222,12 @@ class Scene:
     def step_of(self, name: str) -> int | None:
         m = self._drawn.get(name)
         return m.step if m is not None else None
+
+    def group_ends(self) -> list[int]:
+        """The last step of every run of steps in one group at depth two (a run of ungrouped steps is one
+        too): where a stage of the animation, or a frame of a long construction, ends."""
+        steps = self.steps
+        return [s.index for i, s in enumerate(steps) if i + 1 == len(steps) or steps[i + 1].group[:2] != s.group[:2]]
 
     @functools.cached_property
     def _ends(self) -> list[int]:
@@ -445,6 +451,17 @@ class Scene:
             if s.group not in out:
                 out[s.group] = displayed(" › ".join(self.readable(titles.get(g, g)) for g in s.group))
         return out
+
+
+def thin(items: Sequence[int], most: int) -> list[int]:
+    """*items* thinned evenly to at most *most* of them, the first and the last kept.
+
+    >>> thin(list(range(1, 11)), 4), thin([3, 5], 4)
+    ([1, 4, 7, 10], [3, 5])
+    """
+    if len(items) <= most:
+        return list(items)
+    return sorted({items[round(i * (len(items) - 1) / (most - 1))] for i in range(most)})
 
 
 @functools.lru_cache(maxsize=65536)  # a live sweep names the same objects at hundreds of values

@@ -155,8 +155,9 @@ def _extremes_of(points, O, D0, r: float, gain: float, start: float, samples: in
     *within* from the first dead centre, if given): the radii, the angles and e read off them (a draftsman's
     circles about O touching the curve)."""
     from ...kernel.closed_curves import closed_french_curve_op
+    from ...kernel.geometry import SCALAR
 
-    curve, = closed_french_curve_op(tuple(points), {"points": len(points)}, {}, (), None)
+    curve, = closed_french_curve_op(tuple(points), {"points": len(points)}, {}, (), SCALAR)
     pts = curve.curve_points(samples)
     if within is not None:
         lo_a, hi_a = within

@@ -10,6 +10,7 @@ import math
 import os
 
 import mpmath
+import numpy as np
 import pytest
 
 from construct.cli.main import main
@@ -263,3 +264,46 @@ def test_a_card_of_thousands_of_points_costs_no_more_steps(tmp_path):
     code = main(["table", "tangential-pressure", "--rod-ratio", "5", "--parts", "6", "--method", "exact",
                  "--indicator", write(tmp_path, _dense_card(2500), "big.csv"), "--format", "csv"])
     assert code == 0
+
+
+def test_a_traced_card_replays_in_a_sweep_as_set_by_set(tmp_path):
+    """The trace runs on arrays like every op of the table: a tangential-pressure figure from a card, replayed over
+    three rod ratios at once, reads in each set what the figure made at that ratio alone reads."""
+    from construct.constructions import get
+
+    c = get("tangential-pressure")
+    card = write(tmp_path, STRAIGHT)
+    fig = c.figure(indicator=card, parts=6, method="exact")
+    ratios = [4.0, 5.0, 6.0]
+    sweep = fig.protocol.replay({**fig.replay.givens, "rod_ratio": np.asarray(ratios)})
+    assert not sweep.elementwise  # no op ran once per set
+    for i, ratio in enumerate(ratios):
+        alone = c.figure(indicator=card, parts=6, method="exact", rod_ratio=ratio)
+        ours, theirs = sweep.take(i), alone.replay
+        traced = [name for step in alone.protocol.steps if step.op in ("trace", "vertex") for name in step.outputs]
+        assert len(traced) >= 2
+        for name in traced:
+            a, b = ours[name], theirs[name]
+            pa, pb = (getattr(a, "points", [a]), getattr(b, "points", [b]))
+            assert len(pa) == len(pb) > 0
+            assert all(math.isclose(float(u.x), v.x, abs_tol=1e-12) and math.isclose(float(u.y), v.y, abs_tol=1e-12)
+                       for u, v in zip(pa, pb)), name
+        assert [ch.measured for ch in c.checks(type(alone)(alone.protocol, ours))] == pytest.approx(
+            [ch.measured for ch in alone.checks()], rel=1e-9, abs=1e-12)
+
+
+def test_a_trace_that_would_differ_in_length_between_sets_is_refused():
+    """A card whose first point reaches the dead centre in one set of a sweep and not in another would be a chain of
+    another length per set: the trace names the sets instead of drawing one wrong."""
+    from construct.kernel.curves import trace_op
+    from construct.kernel.errors import GeometryError
+    from construct.kernel.geometry import ArrayMath, Point
+
+    head, crank = Point(np.zeros(2), np.zeros(2)), Point(np.ones(2), np.zeros(2))
+    givens = {"x0": np.array([0.0, 0.1]), "x1": 1.0, "p0": 2.0, "p1": 1.0, "s": 1.0, "u": 1.0}
+    params = {"xs": ["x0", "x1"], "ps": ["p0", "p1"], "stroke": ["s"], "pressure": ["u"], "extend": True}
+    with pytest.raises(GeometryError, match="1 of 2 sets"):
+        trace_op((head, crank, head, crank), params, givens, {}, ArrayMath(2))
+    givens["x0"] = np.array([0.1, 0.2])  # short of the head end in both: extended in both, values set by set
+    (chain,) = trace_op((head, crank, head, crank), params, givens, {}, ArrayMath(2))
+    assert len(chain.points) == 3 and np.allclose(chain.points[1].x, [0.1, 0.2])

@@ -586,11 +586,11 @@ def card_checks(fig: Figure) -> list[Check]:
         checks.append(Check(f"card point {i}: p", pressure(fig, name), p, tol, "laid off up the perpendicular", "at"))
     for k in range(1, n):
         x = abscissa(fig, f"fE{k}")
-        for tag, card, stroke, what in (("fE", cover, "forward", "cover side forward"),
+        for tag, side, stroke, what in (("fE", cover, "forward", "cover side forward"),
                                         ("rW", cover, "return", "cover side return"),
                                         ("fW", crank, "forward", "crank side forward"),
                                         ("rE", crank, "return", "crank side return")):
-            checks.append(Check(f"{what} at {k}/{n}", pressure(fig, f"{tag}{k}"), card.pressure(x, stroke), tol,
+            checks.append(Check(f"{what} at {k}/{n}", pressure(fig, f"{tag}{k}"), side.pressure(x, stroke), tol,
                                 "the ordinate meets the straightedge line between two digitised points", "at"))
     return checks
 

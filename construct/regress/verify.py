@@ -311,9 +311,9 @@ def compare_file_by_step(rel: str, golden: Path, actual: Path, *, tolerance: flo
         return [FileDifference(rel, "changed", "svg", tuple(changes[:KEPT_CHANGES]), len(changes), at_step=step)
                 for step, changes in groups.items()]
     if kind == "protocol":
-        from .protocoldiff import diff_protocol
+        from .testing import figures_diff  # what construct.testing.assert_figures_equal compares
 
-        p = diff_protocol(golden, actual, tolerance=PROTOCOL_TOLERANCE)
+        p = figures_diff(golden, actual, tolerance=PROTOCOL_TOLERANCE)
         if p.equal:
             return []
         return [FileDifference(rel, "changed", "protocol", p.changes[:KEPT_CHANGES], len(p.changes))]

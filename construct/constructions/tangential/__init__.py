@@ -43,6 +43,7 @@ the exact curve); where it crosses the curve are α1, α2; between them, above
 the mean line, the excess area ("Überschussfläche", hatched), the work the
 flywheel must take up.
 
+>>> import math
 >>> fig = TANGENTIAL.figure(force="unit", parts=6, rod_ratio=5.0)
 >>> round(ok_over_r(fig, 3), 12)   # 90 degrees: sin(90° + β)/cos β = 1
 1.0
@@ -52,8 +53,6 @@ True
 """
 
 from __future__ import annotations
-
-import math
 
 from ...kernel.division import NAMES as DIVISION_NAMES
 from ...kernel.protocol import Caption

@@ -19,19 +19,22 @@ empty or a previous replay whose every file is in its manifest, unchanged
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 from typing import Any
 
 from ..io.manifest import foreign_entries, replaced_with_manifest
 from ..io.staging import write_text
-from .notation import Described, Drawn, caption, given_rows, givens, with_provenance
+from .captions import PlateCaption
+from .notation import Described, Drawn, caption, citation, given_rows, givens, phrases, with_provenance
+from .plate import Plate, plate_of
 from .scene import Scene, build_scene, thin
 from .styles import Style
 from .svg import Drawing, render_svg
 
 __all__ = ["FRAME_MODES", "OUTPUTS", "MAX_FRAME_BYTES", "frames_estimate", "check_frames_size", "frame_steps",
            "write_replay", "write_outputs", "scene_for",
-           "is_replay_folder", "figure_title", "plate_caption", "params_text"]
+           "is_replay_folder", "figure_title", "plate_caption", "printed_caption", "params_text"]
 
 FRAME_MODES = ("auto", "all", "groups", "none")
 #: Up to this many steps "auto" writes a frame per step.  Frame k holds k
@@ -115,12 +118,11 @@ def _size(n: float) -> str:
     return f"{n:.3g} TB"
 
 
-def scene_for(construction: Described | None, figure: Drawn, *, plate: bool = False) -> Scene:
-    """The figure's scene; a plate carries the construction's furniture and line looks (:mod:`.plate`)."""
+def scene_for(construction: Described | None, figure: Drawn, *, plate: "bool | Plate" = False) -> Scene:
+    """The figure's scene; a plate carries the construction's furniture and line looks (:mod:`.plate`; *plate*
+    may be the construction's :class:`~construct.render.plate.Plate` already made)."""
     if plate:
-        from .plate import plate_of
-
-        p = plate_of(construction, figure)
+        p = plate if isinstance(plate, Plate) else plate_of(construction, figure)
         return build_scene(figure, title=figure_title(construction, figure), plate=True,
                            furniture=p.furniture, looks=dict(p.looks), panels=p.panels)
     return build_scene(figure, title=figure_title(construction, figure))
@@ -156,6 +158,32 @@ def plate_caption(construction: Described | None, figure: Drawn,
     return caption(construction, figure, number)
 
 
+def printed_caption(construction: Described | None, figure: Drawn,
+                    number: int | str | None = None) -> PlateCaption:
+    """What a plate prints under its figure (:class:`construct.render.captions.PlateCaption`): in its book's
+    language, "Fig. 12. Kolbenüberdrucklinie mit den Massenkräften. G = 830 kg, … — nach …", as many givens as
+    three lines hold; the whole caption in both languages (:func:`plate_caption`) stands in its ``<desc>``.
+
+    >>> from construct.constructions import get
+    >>> c = get("crank-angle")
+    >>> cap = printed_caption(c, c.figure(rod_ratio=4.0), 3)
+    >>> cap.head, cap.givens, cap.cite
+    ('Fig. 3. Kurbelwinkel aus den Zehnteln des Hubes', ('r/L = 1/4', 'Hub in 10 Teilen'), 'nach Anhang II, „Darstellung der Massendrücke“, Fig. 77, Tabelle 2')
+    """
+    head = f"Fig. {number}. " if number is not None else "Fig. "
+    if construction is None:
+        return PlateCaption(head + figure.protocol.construction, tuple(p for p in params_text(figure).split(", ") if p))
+    note = construction.note(figure, "de") if construction.note is not None else ""
+    cite = citation(construction, "de")
+    # a title that names the book's figure ("… und Nabe (Fig. 28)") leaves it to the citation: one "Fig. 28"
+    title = re.sub(r"\s*\((?:Fig|Abb)\.\s*([^)]*)\)$", lambda m: "" if m.group(1) in cite else m.group(0),
+                   construction.title.de.rstrip("."))
+    shown = phrases(figure, "de", construction)
+    if shown and shown[0][:2].isalpha():  # a word ("unendlich lange Schubstangen") begins a sentence
+        shown[0] = shown[0][:1].upper() + shown[0][1:]
+    return PlateCaption(head + title + (f"; {note}" if note else ""), tuple(shown), cite)
+
+
 #: What a replay writes besides final.svg, steps/ and protocol.json.
 OUTPUTS = ("animated", "player", "storyboard")
 
@@ -188,11 +216,15 @@ def write_outputs(stage: Path, construction: Described | None, figure: Drawn, st
     if drawing is None:
         drawing = Drawing(scene, st) if (ks or outputs or not st.plate) else None
     if st.plate:
-        final = render_svg(scene_for(construction, figure, plate=True), style=st,
-                           caption=plate_caption(construction, figure, fig_number))
+        drawn = plate_of(construction, figure)
+        final = render_svg(scene_for(construction, figure, plate=drawn), style=st,
+                           caption=printed_caption(construction, figure, fig_number))
+        # the plate prints one language and the givens that fit: both captions whole go with it, and its legend
+        final = with_provenance(final, construction, figure, plate_caption(construction, figure, fig_number),
+                                drawn.legend)
     else:
-        final = drawing.layered()  # type: ignore[union-attr]
-    write_text(stage / "final.svg", with_provenance(final, construction, figure))
+        final = with_provenance(drawing.layered(), construction, figure)  # type: ignore[union-attr]
+    write_text(stage / "final.svg", final)
     n = len(figure.protocol.steps)  # the scene's steps
     width = max(3, len(str(n)))
     steps_dir = stage / "steps"

@@ -17,7 +17,7 @@ import math
 from .svgdoc import fmt
 from .viewport import Viewport
 
-__all__ = ["arc_path", "curve_path", "polyline_path", "polygon_path", "hatch_path"]
+__all__ = ["arc_path", "bezier_controls", "curve_path", "polyline_path", "polygon_path", "hatch_path"]
 
 
 def arc_path(vp: Viewport, cx: float, cy: float, r: float, start: float, sweep: float) -> str:
@@ -29,18 +29,32 @@ def arc_path(vp: Viewport, cx: float, cy: float, r: float, start: float, sweep: 
     return f"M{x0} {y0}A{rr} {rr} 0 {large} 0 {x1} {y1}"
 
 
-def curve_path(vp: Viewport, pts: tuple) -> str:
-    """A smooth curve through the points (Catmull-Rom as cubic Béziers)."""
-    P = [vp.px(x, y) for x, y in pts]
-    if len(P) < 2:
-        return ""
-    d = [f"M{fmt(P[0][0])} {fmt(P[0][1])}"]
+def bezier_controls(P) -> list[tuple[tuple[float, float], ...]]:
+    """The cubic pieces (p1, c1, c2, p2) of the smooth curve through the points *P* (Catmull-Rom): the one
+    rule a curve is drawn by (:func:`curve_path`), placed round (the letters keep off it) and broken by (a
+    plate's gap for a letter).
+
+    >>> bezier_controls([(0.0, 0.0), (6.0, 0.0)])
+    [((0.0, 0.0), (1.0, 0.0), (5.0, 0.0), (6.0, 0.0))]
+    """
+    out = []
     for i in range(len(P) - 1):
         p0 = P[i - 1] if i > 0 else P[i]
         p1, p2 = P[i], P[i + 1]
         p3 = P[i + 2] if i + 2 < len(P) else P[i + 1]
         c1 = (p1[0] + (p2[0] - p0[0]) / 6.0, p1[1] + (p2[1] - p0[1]) / 6.0)
         c2 = (p2[0] - (p3[0] - p1[0]) / 6.0, p2[1] - (p3[1] - p1[1]) / 6.0)
+        out.append((p1, c1, c2, p2))
+    return out
+
+
+def curve_path(vp: Viewport, pts: tuple) -> str:
+    """A smooth curve through the points (Catmull-Rom as cubic Béziers, :func:`bezier_controls`)."""
+    P = [vp.px(x, y) for x, y in pts]
+    if len(P) < 2:
+        return ""
+    d = [f"M{fmt(P[0][0])} {fmt(P[0][1])}"]
+    for _, c1, c2, p2 in bezier_controls(P):
         d.append(f"C{fmt(c1[0])} {fmt(c1[1])} {fmt(c2[0])} {fmt(c2[1])} {fmt(p2[0])} {fmt(p2[1])}")
     return "".join(d)
 
@@ -66,11 +80,14 @@ def polygon_path(vp: Viewport, pts: tuple) -> str:
     return "M" + "L".join(f"{a} {b}" for a, b in (vp.xy(x, y) for x, y in pts)) + "Z"
 
 
-def hatch_path(vp: Viewport, pts: tuple, spacing_px: float, angle_deg: float = 45.0) -> str:
-    """Fine parallel lines at *angle_deg*, clipped to the polygon by shapely (the draftsman's hatching)."""
+def hatch_path(vp: Viewport, pts: tuple, spacing_px: float, angle_deg: float = 45.0, under: tuple = ()) -> str:
+    """Fine parallel lines at *angle_deg*, clipped to the polygon by shapely (the draftsman's hatching); *under*:
+    the polygons (drawing units) of sections drawn over this one, which its hatching does not run into."""
     from shapely.geometry import LineString, MultiLineString, Polygon
 
     poly = Polygon([vp.px(x, y) for x, y in pts]).buffer(0)
+    for other in under:
+        poly = poly.difference(Polygon([vp.px(x, y) for x, y in other]).buffer(0))
     if poly.is_empty:
         return ""
     x0, y0, x1, y1 = poly.bounds

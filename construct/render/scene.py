@@ -505,9 +505,14 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 kind, geom = circle_extent(obj, on.get(name, []), margin, s.role, plate=shown is not None)
                 marks.append(Mark(mid, kind=kind, geom=geom, **common))
             elif hasattr(obj, "rings"):  # an Area: one mark per piece, each hatched
-                for j, ring in enumerate(obj.rings()):
+                # a look "signed": the pieces under the lower line hatched across those over it (+ and −)
+                signed = "signed" in common["look"].split()
+                for j, (sign, ring) in enumerate(obj.pieces):
+                    hatch = obj.hatch_deg
+                    if signed and sign < 0:
+                        hatch = (90.0 if hatch is None else hatch) - 45.0
                     marks.append(Mark(mid if j == 0 else f"{mid}-{j}", kind=MarkKind.AREA,
-                                      geom=tuple((p[0], p[1]) for p in ring), hatch=obj.hatch_deg, **common))
+                                      geom=tuple((p[0], p[1]) for p in ring), hatch=hatch, **common))
             elif hasattr(obj, "curve_points"):
                 # a polyline is drawn as it is measured (y_at, length): straight from point to point
                 straight = getattr(obj, "kind", "") == "polyline"

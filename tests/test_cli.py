@@ -264,6 +264,7 @@ def test_usage_errors_name_the_program_once(cli, argv):
     (("check", "crank", "--rod-ration", "5"), "'--rod-ratio'"), (("check", "crank", "--method", "durr"), "'durer'"),
     (("check", "four-stroke", "--engine", "disel"), "'diesel'"),
     (("check", "two-cranks", "--dead-centre", "head-nd"), "'head-end'"),
+    (("replay", "crank", "--format", "tkz", "--out", "never-written"), "'tikz'"),
 ])
 def test_a_misspelt_name_gets_the_nearest_one(cli, argv, nearest):
     code, out, err = cli(*argv)

@@ -13,11 +13,12 @@ and returns the ``d`` attribute of one ``<path>``, numbers formatted by
 from __future__ import annotations
 
 import math
+from typing import Sequence
 
 from .svgdoc import fmt
 from .viewport import Viewport
 
-__all__ = ["arc_path", "bezier_controls", "curve_path", "polyline_path", "polygon_path", "hatch_path"]
+__all__ = ["arc_path", "bezier_controls", "curve_path", "polyline_path", "polygon_path", "hatch_path", "hatch_segments"]
 
 
 def arc_path(vp: Viewport, cx: float, cy: float, r: float, start: float, sweep: float) -> str:
@@ -83,13 +84,28 @@ def polygon_path(vp: Viewport, pts: tuple) -> str:
 def hatch_path(vp: Viewport, pts: tuple, spacing_px: float, angle_deg: float = 45.0, under: tuple = ()) -> str:
     """Fine parallel lines at *angle_deg*, clipped to the polygon by shapely (the draftsman's hatching); *under*:
     the polygons (drawing units) of sections drawn over this one, which its hatching does not run into."""
+    return "".join(f"M{fmt(ax)} {fmt(ay)}L{fmt(bx)} {fmt(by)}"
+                   for (ax, ay), (bx, by) in hatch_segments([vp.px(x, y) for x, y in pts], spacing_px, angle_deg,
+                                                            under=[[vp.px(x, y) for x, y in o] for o in under]))
+
+
+def hatch_segments(ring: list[tuple[float, float]], spacing: float, angle_deg: float = 45.0,
+                   under: Sequence[Sequence[tuple[float, float]]] = (),
+                   ) -> list[tuple[tuple[float, float], tuple[float, float]]]:
+    """The hatching of the polygon *ring* (canvas units, y down): lines *spacing* apart at *angle_deg*, each
+    clipped to the polygon less the polygons *under* (sections drawn over it), as (start, end) pairs; pieces
+    shorter than half a unit are left out.
+
+    >>> hatch_segments([(1, 1), (9, 1), (9, 9), (1, 9)], 5.0, 0.0)
+    [((1.0, 5.0), (9.0, 5.0))]
+    """
     from shapely.geometry import LineString, MultiLineString, Polygon
 
-    poly = Polygon([vp.px(x, y) for x, y in pts]).buffer(0)
+    poly = Polygon(ring).buffer(0)
     for other in under:
-        poly = poly.difference(Polygon([vp.px(x, y) for x, y in other]).buffer(0))
+        poly = poly.difference(Polygon(other).buffer(0))
     if poly.is_empty:
-        return ""
+        return []
     x0, y0, x1, y1 = poly.bounds
     a = math.radians(angle_deg)
     ux, uy = math.cos(a), -math.sin(a)  # along the hatch (y down)
@@ -98,7 +114,7 @@ def hatch_path(vp: Viewport, pts: tuple, spacing_px: float, angle_deg: float = 4
     ts = [cx * nx + cy * ny for cx, cy in corners]
     reach = math.hypot(x1 - x0, y1 - y0)
     lines = []
-    t = math.floor(min(ts) / spacing_px) * spacing_px
+    t = math.floor(min(ts) / spacing) * spacing
     while t <= max(ts):
         mx, my = t * nx, t * ny
         # a point on the hatch line near the box centre, then a long segment both ways
@@ -106,13 +122,11 @@ def hatch_path(vp: Viewport, pts: tuple, spacing_px: float, angle_deg: float = 4
         s = (cx - mx) * ux + (cy - my) * uy
         px, py = mx + s * ux, my + s * uy
         lines.append(LineString([(px - reach * ux, py - reach * uy), (px + reach * ux, py + reach * uy)]))
-        t += spacing_px
+        t += spacing
     clipped = MultiLineString(lines).intersection(poly)
-    parts = []
-    geoms = getattr(clipped, "geoms", [clipped])
-    for g in geoms:
+    out = []
+    for g in getattr(clipped, "geoms", [clipped]):
         if g.geom_type != "LineString" or g.length < 0.5:
             continue
-        (ax, ay), (bx, by) = g.coords[0], g.coords[-1]
-        parts.append(f"M{fmt(ax)} {fmt(ay)}L{fmt(bx)} {fmt(by)}")
-    return "".join(parts)
+        out.append((tuple(g.coords[0]), tuple(g.coords[-1])))
+    return out

@@ -146,6 +146,12 @@ class Scene:
         m = self._drawn.get(name)
         return m.step if m is not None else None
 
+    def areas_over(self, m: Mark) -> list[tuple]:
+        """The areas drawn after area *m* whose boxes meet its box: sections over it (a flywheel's rim over its
+        disc), which its hatching does not run into (the SVG plate and the TikZ picture alike)."""
+        a = _box(m.geom)
+        return [o.geom for o in self.marks if o.kind is MarkKind.AREA and o.step > m.step and _meets(a, _box(o.geom))]
+
     def group_ends(self) -> list[int]:
         """The last step of every run of steps in one group at depth two (a run of ungrouped steps is one
         too): where a stage of the animation, or a frame of a long construction, ends."""
@@ -589,3 +595,11 @@ def reading(label: str, objects: Any) -> str:
         return dms(w)
 
     return READING.sub(angle, label)
+
+
+def _box(pts: Sequence[tuple[float, float]]) -> tuple[float, float, float, float]:
+    return (min(p[0] for p in pts), min(p[1] for p in pts), max(p[0] for p in pts), max(p[1] for p in pts))
+
+
+def _meets(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]

@@ -40,7 +40,8 @@ from .lettering import LEADER_FROM, label_box, text_box, text_width
 from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
 from .marks import could_show
 from .placing import Placing, PlacedLabel, place_outwards, text_gap
-from .plate import Lettering, Stroke, break_elements, furniture_elements, furniture_pieces, plain, subscript_runs
+from .plate import (Lettering, Stroke, break_elements, crossing_lines, furniture_elements, furniture_pieces, plain,
+                    subscript_runs)
 from .scene import Mark, MarkKind, Scene, extreme_points
 from .styles import PLAIN, Style
 from .svgdoc import fmt
@@ -237,9 +238,7 @@ class Drawing:
     def _plate_hatch(self, m: Mark, d: str) -> str:
         """A plate's hatching of area *m* (*d* as the style hatches it): not run into a section drawn over it (the
         flywheel's disc into its rim), broken for the letters in it."""
-        x0, y0, x1, y1 = _box(m.geom)
-        over = [o.geom for o in self.scene.marks if o.kind is MarkKind.AREA and o.step > m.step
-                and _meets((x0, y0, x1, y1), _box(o.geom))]
+        over = self.scene.areas_over(m)
         if over:
             d = hatch_path(self.vp, m.geom, self.style.hatch_spacing, *(() if m.hatch is None else (m.hatch,)),
                            under=tuple(over))
@@ -404,9 +403,8 @@ class Drawing:
                                    GapFactory(f, self.gaps) if self.gaps else f, size=self.style.label_size)
         if self.plate:  # its lines are broken for its lettering: the lettering's halos go
             elems = [e for e in elems if e.attribs.get("class") != "lb halo"]
-        lines = [m.geom for m in sc.marks if m.kind is MarkKind.SEGMENT]
-        lines += [(*it.a, *it.b) for it in sc.furniture if isinstance(it, Stroke)]
-        elems += break_elements(sc.breaks, lines, self.vp.px, f, size=self.style.label_size)
+        elems += break_elements(sc.breaks, crossing_lines(sc.marks, sc.furniture), self.vp.px, f,
+                                size=self.style.label_size)
         if not elems:
             return None
         g = f.g(id="furniture")
@@ -643,13 +641,6 @@ def _entry(box: tuple[float, float, float, float], ux: float, uy: float) -> floa
         t_in, t_out = max(t_in, t0), min(t_out, t1)
     return t_in if t_in <= t_out else math.inf
 
-
-def _box(pts: tuple) -> tuple[float, float, float, float]:
-    return (min(p[0] for p in pts), min(p[1] for p in pts), max(p[0] for p in pts), max(p[1] for p in pts))
-
-
-def _meets(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
-    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
 
 def _is_view(elem: Any) -> bool:

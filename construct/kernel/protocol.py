@@ -629,7 +629,8 @@ class Protocol:
         return [(k, a, b) for k, (a, b) in spans.items()]
 
     # -- JSON ---------------------------------------------------------------
-    def as_dict(self, replay: Replay | None = None, *, with_objects: bool = True) -> dict[str, Any]:
+    def as_dict(self, replay: Replay | None = None, *, with_objects: bool = True,
+                with_steps: bool = True) -> dict[str, Any]:
         params = dict(self.params)
         d: dict[str, Any] = {"format": PROTOCOL_FORMAT, "construction": self.construction}
         if with_objects:
@@ -640,8 +641,9 @@ class Protocol:
             "params": jsonable(params),
             "givens": list(self.givens),
             "instruments": self.instrument_counts(),
-            "steps": [s.as_dict() for s in self.steps],
         })
+        if with_steps:
+            d["steps"] = [s.as_dict() for s in self.steps]
         if with_objects:
             d["objects"] = replay.objects_json()
         return d
@@ -669,9 +671,8 @@ class Protocol:
          }}
         <BLANKLINE>
         """
-        d = self.as_dict(replay)
+        d = self.as_dict(replay, with_steps=False)  # the steps are written compactly below
         objects = d.pop("objects")
-        del d["steps"]
         group_ids: dict[tuple[str, ...], int] = {}
         for st in self.steps:
             if st.group and st.group not in group_ids:
@@ -680,9 +681,7 @@ class Protocol:
         d["groups"] = [list(g) for g in group_ids]
         steps = [st.compact_dict(group_ids) for st in self.steps]
 
-        def line(v: Any) -> str:
-            return json.dumps(v, ensure_ascii=False, separators=(", ", ": "))
-
+        line = _LINE.encode
         groups = d.pop("groups")
         head = line(d)[:-1]
         head += ',\n "groups": [' + "".join(f"\n  {line(g)}," for g in groups).rstrip(",") + "\n ]"
@@ -780,6 +779,11 @@ class Protocol:
         """
         data = read_protocol_bytes(path)
         return cls.from_dict(parse_protocol_json(data, f"protocol file {os.fsdecode(os.fspath(path))!r}"))
+
+
+#: One line of a protocol file: json.dumps(v, ensure_ascii=False, separators=(", ", ": ")), with one encoder for
+#: every line (json.dumps makes an encoder per call for any options but the defaults).
+_LINE = json.JSONEncoder(ensure_ascii=False, separators=(", ", ": "))
 
 
 def _unpickle(d: Mapping[str, Any]) -> Protocol:

@@ -169,8 +169,9 @@ def test_size_bound(tmp_path):
         read_bounded_text(p, 50)
     big = tmp_path / "big.csv"
     big.write_bytes(b"x,p\n" + b"0" * 1_000_001)
-    with pytest.raises(InputFileError, match="larger than"):
+    with pytest.raises(InputFileError, match="larger than") as err:
         load_indicator(str(big))
+    assert "the most an indicator diagram is read" in str(err.value)   # it said "a indicator diagram"
 
 
 def test_indicator_only_where_it_applies(tmp_path, capsys):

@@ -7,7 +7,6 @@ N "senkrecht unter F und M"; "Fläche EBF und damit LHM = Fläche FCODP" -- and 
 of his equations (the tangential-pressure tests' model, written out here again).
 """
 
-import math
 
 import mpmath
 import pytest

@@ -21,7 +21,6 @@ from __future__ import annotations
 import os
 import stat
 from importlib import resources
-from pathlib import Path
 
 from ..kernel.errors import OutputError
 from .staging import output_path, staged_output

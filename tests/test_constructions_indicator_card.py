@@ -296,7 +296,7 @@ def test_a_traced_card_replays_in_a_sweep_as_set_by_set(tmp_path):
 def test_a_trace_that_would_differ_in_length_between_sets_is_refused():
     """A card whose first point reaches the dead centre in one set of a sweep and not in another would be a chain of
     another length per set: the trace names the sets instead of drawing one wrong."""
-    from construct.kernel.curves import trace_op
+    from construct.kernel.curve_ops import trace_op
     from construct.kernel.errors import GeometryError
     from construct.kernel.geometry import ArrayMath, Point
 

@@ -3,8 +3,9 @@
 Elements come from svgwrite's element factory with validation off
 (``debug=False``: checking every attribute of every mark costs more than the
 drawing itself); the plentiful plain ones (groups, points' circles, ``<set>``)
-are :class:`Element`, which gives svgwrite's element without its machinery.  Each mark's element is turned into an ElementTree element
-once (:meth:`Writer.frozen`) and shared by every document that shows it --
+are :class:`Element`, which gives svgwrite's element without its machinery.
+Each mark's element is turned into an ElementTree element once
+(:meth:`Writer.frozen`) and shared by every document that shows it --
 the layered figure, the frames, the animation, the player -- and its markup
 is written once too, the first time a document holds it: a mark costs one
 serialisation in all, never a rebuild.  The serialiser writes what

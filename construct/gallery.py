@@ -232,6 +232,12 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any],
            "method": method, "checks": summary(checks), "ok": all(ch.ok for ch in checks),
            "steps": len(fig.protocol.steps), "params_text": book_givens(fig, c)[1], "player": first,
            "thumb": thumb}
+    if (name, params) in LATEX_PLATES:
+        # the LaTeX example's plate made here, from the figure just built (the index writes it: _latex_example)
+        from .render.output import figure_title, print_plate
+        from .render.tikz import tikz_picture
+
+        row["latex"] = (tikz_picture(print_plate(fig, construction=c)), figure_title(c, fig)[0])
     return entries, row
 
 
@@ -336,7 +342,7 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
             entries += figure_entries
             index.append(row)
             checked.append(found)
-        _latex_example(root, plan)
+        _latex_example(root, index)
         write_text(root / "README.md", _readme(index, sources))
         write_text(root / "index.html", _index_html(index, sources))
         _site_pages(root, index, sources)
@@ -346,23 +352,20 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
     return entries
 
 
-def _latex_example(root: Path, plan: list[tuple[str, dict[str, Any]]]) -> None:
-    """``latex/plates.tex``: the plates of :data:`LATEX_PLATES` the plan builds, as TikZ, on one LaTeX page."""
-    from .render.output import figure_title
-    from .render.output import print_plate
-    from .render.tikz import tikz_example, tikz_picture
+def _latex_example(root: Path, index: list[dict]) -> None:
+    """``latex/plates.tex``: the plates of :data:`LATEX_PLATES` the plan builds, as TikZ, on one LaTeX page
+    (each TikZ picture made where its figure was built: the index row's ``latex``)."""
+    from .render.tikz import tikz_example
 
-    chosen = [(name, params) for name, params in LATEX_PLATES if (name, params) in plan]
-    if not chosen:
-        return
     plates = []
-    for name, params in chosen:
-        c = get(name)
-        fig = c.figure(**params)
-        file = f"{entry_slug(name, params)}.tikz"
-        write_text(root / "latex" / file, tikz_picture(print_plate(fig, construction=c)))
-        plates.append((file, figure_title(c, fig)[0]))
-    write_text(root / "latex" / "plates.tex", tikz_example(plates))
+    for row in sorted((row for row in index if "latex" in row),
+                      key=lambda row: LATEX_PLATES.index((row["name"], row["params"]))):
+        picture, title = row["latex"]
+        file = f"{row['slug']}.tikz"
+        write_text(root / "latex" / file, picture)
+        plates.append((file, title))
+    if plates:
+        write_text(root / "latex" / "plates.tex", tikz_example(plates))
 
 
 def _build_and_check(root: Path, number: int, name: str, params: dict[str, Any],

@@ -30,6 +30,7 @@ Two things hold for every test without being asked for:
 
 from __future__ import annotations
 
+import gc
 import locale
 import os
 import resource
@@ -74,6 +75,7 @@ def _process_state() -> dict[str, Any]:
         "locale": locale.setlocale(locale.LC_ALL),
         "sys.path": list(sys.path),
         "file-size limit": resource.getrlimit(resource.RLIMIT_FSIZE),
+        "garbage collector": (gc.isenabled(), gc.get_threshold(), gc.get_freeze_count()),
     }
 
 

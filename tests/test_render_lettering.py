@@ -79,3 +79,48 @@ def test_a_letter_is_set_on_its_baseline_and_centred():
     assert (b[0] + b[2]) / 2 == pytest.approx(50.0, abs=0.01) and b[3] == pytest.approx(80.0, abs=1e-9) and b[1] < 80.0
     halo = label_box(50.0, 80.0, "H", 20.0, halo=2.0)
     assert halo == pytest.approx((b[0] - 2.0, b[1] - 2.0, b[2] + 2.0, b[3] + 2.0))
+
+
+class _Looked(tuple):
+    """A filed box that counts how often the grid reads it."""
+
+    reads = 0
+
+    def __getitem__(self, k):
+        _Looked.reads += 1
+        return tuple.__getitem__(self, k)
+
+
+def test_the_collision_grid_answers_as_a_search_of_every_box_and_looks_in_the_spots_own_cell_first():
+    """The grid the placer asks whether a spot is free gives the answer a look at every filed box gives (boxes
+    on cell borders, at negative coordinates, a dense ring of points); and a spot blocked by a box in the cell
+    of its centre is answered there, not after a crowd filed in a corner cell it barely reaches (a circle
+    divided in 3600 parts tried sixty spots for each of its 3600 numbers)."""
+    import math
+
+    from construct.render.lettering import _Grid
+
+    rng = random.Random(11)
+    boxes = []
+    for k in range(900):  # a dense ring, 0.7 px apart, points 6 px across
+        a = 2 * math.pi * k / 900
+        x, y = 100 * math.cos(a), 100 * math.sin(a)
+        boxes.append((x - 3, y - 3, x + 3, y + 3))
+    boxes += [(float(i), float(j), float(i) + 10, float(j) + 10) for i in (-30, 0, 30) for j in (-20, 10)]
+    grid = _Grid(10.0)
+    for b in boxes:
+        grid.add(b)
+    spots = [(x, y, x + rng.choice((0.0, 6.0, 10.0)), y + rng.choice((0.0, 4.0, 10.0)))
+             for x, y in ((rng.choice((rng.uniform(-120, 120), 10.0 * rng.randint(-12, 12))),
+                           rng.choice((rng.uniform(-120, 120), 10.0 * rng.randint(-12, 12)))) for _ in range(3000))]
+    expected = [not any(s[0] < b[2] and b[0] < s[2] and s[1] < b[3] and b[1] < s[3] for b in boxes) for s in spots]
+    assert [grid.free(s) for s in spots] == expected
+    assert 0 < sum(expected) < len(spots)
+
+    crowded = _Grid(10.0)
+    for k in range(500):  # a crowd in the far corner of cell (0, 0)
+        crowded.add(_Looked((0.1 + k * 1e-3, 0.1, 0.2 + k * 1e-3, 0.2)))
+    crowded.add(_Looked((14.0, 14.0, 16.0, 16.0)))  # in cell (1, 1)
+    _Looked.reads = 0
+    assert not crowded.free((8.0, 8.0, 18.0, 18.0))  # centre (13, 13): cell (1, 1)
+    assert _Looked.reads <= 4  # the one box beside the centre, not the five hundred in the corner

@@ -1,10 +1,11 @@
 """svgwrite writes every SVG the project emits.
 
-Three checks that can fail: no module but the writer builds SVG markup from
+Checks that can fail: no module but the writer builds SVG markup from
 strings (a string constant in the code that opens an SVG element is a
 hand-made element), every SVG a replay writes carries the attributes
 svgwrite's ``Drawing`` always writes and our old string templates never did,
-and the writer's serialiser writes what ElementTree's ``tostring`` writes.
+the writer's serialiser writes what ElementTree's ``tostring`` writes, and the
+elements the writer makes itself are the ones svgwrite makes.
 """
 
 from __future__ import annotations
@@ -107,3 +108,27 @@ def test_the_writer_writes_what_elementtree_writes(tmp_path, monkeypatch):
     for style in sorted(STYLES):
         write_replay(c, fig, tmp_path / style, style=style, frames="all")
     assert len(checked) > 3 * 10
+
+
+def test_the_factorys_plain_elements_are_svgwrites():
+    """The writer makes groups, points' circles and animations' <set> itself (svgdoc.Element): each gives the
+    ElementTree element svgwrite's own class gives for the same arguments, children and empty or None
+    attributes included, and a <set> naming its target is svgwrite's."""
+    import xml.etree.ElementTree as ET
+
+    import svgwrite
+
+    ref = svgwrite.Drawing(debug=False, profile="full")  # svgwrite's factory, untouched
+    f = svgdoc.Writer().factory
+    cases = [("g", dict(class_="step cur", id="g1", data_fade="7", **{"data-step": "3"}, fill=None, stroke="")),
+             ("g", {}),
+             ("circle", dict(center=("1.5", "-2"), r="0.25", class_="pt result", id="s0001-O")),
+             ("circle", dict(center=(3, 4.5), r=2)),
+             ("set", dict(attributeName="class", to="step old", begin="clock.begin+1.5s", fill="freeze")),
+             ("set", dict(href="#s0002", attributeName="visibility", to="hidden"))]
+    for name, kw in cases:
+        mine, theirs = getattr(f, name)(**kw), getattr(ref, name)(**kw)
+        for parent in (mine, theirs):
+            parent.add(ref.circle(center=("0", "0"), r="1"))
+        assert ET.tostring(mine.get_xml()) == ET.tostring(theirs.get_xml()), (name, kw)
+    assert type(f.g()) is svgdoc.Element and type(f.circle()) is svgdoc.Element

@@ -224,7 +224,7 @@ def _live(c, fig, style: str) -> tuple[dict[str, Any] | None, Any]:
     givens = live_givens(c, fig)
     if not givens:
         return None, None
-    drawing = Drawing(scene_for(c, fig), STYLES[style])
+    drawing = Drawing(scene_for(c, fig, ending=STYLES[style].camera), STYLES[style])
     return live_data(live_sweep(c, fig, givens[0], style=STYLES[style], drawing=drawing)), drawing
 
 

@@ -335,7 +335,7 @@ class Measure:
         self.style = style or STYLES["teaching"]
         # *drawing*: the built figure's drawing in this style, if the caller has it (the player's own)
         if drawing is None:
-            drawing = Drawing(scene_for(construction, built), self.style)
+            drawing = Drawing(scene_for(construction, built, ending=self.style.camera), self.style)
         scene = drawing.scene
         full = drawing.full_view
         self.steps = [s.index for s in scene.steps]
@@ -503,7 +503,7 @@ def player_page(construction: Construction, figure: Figure, style: Any) -> str:
     from ..render.player import player_html
     from ..render.svg import Drawing
 
-    scene = scene_for(construction, figure)
+    scene = scene_for(construction, figure, ending=style.camera)
     return player_html(scene, style, drawing=Drawing(scene, style))
 
 
@@ -514,7 +514,7 @@ def player_page_and_fit(construction: Construction, figure: Figure, style: Any) 
     from ..render.player import player_html
     from ..render.svg import Drawing
 
-    scene = scene_for(construction, figure)
+    scene = scene_for(construction, figure, ending=style.camera)
     drawing = Drawing(scene, style)
     vp = drawing.vp
     fit = (vp.margin + vp.left - vp.xmin * vp.scale, vp.margin + vp.top + vp.ymax * vp.scale, vp.scale)

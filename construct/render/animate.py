@@ -121,6 +121,10 @@ def _camera(d: Drawing, ends: list[int], dt: float, total: float) -> tuple[Any, 
             if lv_i != lv[-1]:
                 lt.append(start - move)
                 lv.append(lv_i)
+    if d.end is not None and ends[-1] == len(d.scene.steps):
+        # the last stage shows the end state (class fin)
+        lt.append((len(ends) - 1) * dt)
+        lv.append(f"zl{level(camera_zoom(views[-1], full))} fin")
     times.append(total)
     keys.append(keys[-1])
     outer, box = d.camera_group(views[0])
@@ -209,7 +213,9 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
                         stage.elements.insert(0, e)
                     lg.add(stage)
         (camera if camera is not None else dwg).add(lg)
-    furniture = d.furniture()  # the broken axis's marks (and a plate's furniture)
+    # the broken axis's marks (and a plate's furniture), each line's with its step
+    furniture = d.furniture(timed=(lambda k: timing(k, "step", d.scene.fade_end(k) if style.done_opacity < 1.0
+                                                    else None)) if by_step else None)
     if furniture is not None:
         (camera if camera is not None else dwg).add(furniture)
     if camera is not None:

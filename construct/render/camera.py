@@ -96,6 +96,11 @@ def level_css() -> str:
         rules.append(f".zl{i} .lbg>.lb,.zl{i} .lbg>.leader,.zl{i} .pt"
                      f"{{--zs:{fmt(1 / z, 4)};transform:scale({fmt(1 / z, 4)})}}")
     rules.append(",".join(f".zl{i} .lbx" for i in range(THIN_FROM, len(ZOOM_LEVELS))) + "{display:inline}")
+    # a letter that moves at a level has a leader of its own there (lvN), the whole figure's hidden (mN)
+    levels = range(1, len(ZOOM_LEVELS))
+    rules.append(",".join(f".lv{i}" for i in levels) + ",.lvf{display:none}")
+    rules.append(",".join(f".zl{i} .lv{i}" for i in levels) + "{display:inline}")
+    rules.append(",".join(f".zl{i} .m{i}" for i in levels) + "{display:none}")
     # a letter with no room at a zoom level gives way there (placing.Placing._zoom_placing)
     rules.append(",".join(f".zl{i} .h{i}" for i in range(1, len(ZOOM_LEVELS))) + "{display:none}")
     return "\n".join(rules)
@@ -193,13 +198,13 @@ class Framing:
     Regions are pixel boxes (x0, y0, x1, y1) of the canvas *full*.
     """
 
-    def __init__(self, full: View, window: tuple[float, float] | None = PLAYER_FIGURE_PX):
+    def __init__(self, full: View, window: tuple[float, float] | None = PLAYER_FIGURE_PX, max_zoom: float = MAX_ZOOM):
         self.full = full
         ww, wh = window or (full[2], full[3])
         self.aspect = wh / max(ww, 1e-12)
         #: The width of the window-shaped box that shows the whole canvas.
         self.span = max(full[2], full[3] / self.aspect)
-        self.min_w = self.span / MAX_ZOOM
+        self.min_w = self.span / max_zoom
 
     def width(self, w: float, h: float, context: float = CONTEXT) -> float:
         """The width of the view round a region *w* x *h* px (before the whole-figure rule)."""
@@ -330,6 +335,18 @@ def final_box(scene: Scene, within: Box | None = None) -> Box | None:
     """
     n = len(scene.steps)
     core: Box | None = None
+    if scene.ending:
+        # the end state: the figure as the book draws it, its furniture included, and nothing else
+        from .plate import extent
+
+        for m in [m for m in scene.marks if scene.in_end(m)] + list(scene.end_marks):
+            if "hidden" not in m.look.split():
+                for x, y in extreme_points(m):
+                    core = _grow(core, x, y)
+        fx = extent(scene.end_furniture)
+        if fx is not None:
+            core = _union(core, fx)
+        return core
     rest: list[tuple[float, float]] = []
     for m in scene.marks:
         if m.kind is MarkKind.SEGMENT or scene.faded(m.step, n + 1):
@@ -394,8 +411,14 @@ def step_views(scene: Scene, full: View, bbox: Box, px: Callable[[float, float],
         out[-1] = full
         if collapse:
             b = final_box(scene)
+            if scene.ending:  # the end state is framed as large as the window shows it (its letters held)
+                framing = Framing(full, max_zoom=ZOOM_LEVELS[-1])
             for _ in range(3):
-                v = framing.view(_union(to_px(b), focus[-1]), FINAL_CONTEXT, 1.0)
+                # an end state is the lesson's summary: the last step's work is in it, or far from it (the
+                # proportional angle below the figure) and its result is
+                v = framing.view(to_px(b) if scene.ending else _union(to_px(b), focus[-1]), FINAL_CONTEXT, 1.0)
+                if scene.ending:
+                    break
                 if b is None or v == full:
                     break
                 # what the player's window shows of the view, in drawing units (y flips): the helpers

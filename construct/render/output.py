@@ -124,12 +124,21 @@ def _size(n: float) -> str:
     return f"{n:.3g} TB"
 
 
-def scene_for(construction: Construction | None, figure: Figure, *, plate: bool = False) -> Scene:
-    """The figure's scene; a plate carries the construction's furniture and line looks (:mod:`.plate`)."""
-    if plate:
+def scene_for(construction: Construction | None, figure: Figure, *, plate: bool = False,
+              ending: bool = False) -> Scene:
+    """The figure's scene; a plate carries the construction's furniture and line looks (:mod:`.plate`).
+
+    With *ending* (a teaching sequence) the scene carries its end state: the plate's objects, looks and
+    furniture on the construction's sheet (:meth:`construct.render.scene.Scene.in_end`); a plate laid out in
+    panels gives its looks only (its furniture stands where the panels move the diagrams).
+    """
+    if plate or ending:
         from .plate import plate_of
 
         p = plate_of(construction, figure)
+        if ending:
+            return build_scene(figure, title=figure_title(construction, figure), ending=True,
+                               end_furniture=() if p.panels else p.furniture, end_looks=dict(p.looks))
         return build_scene(figure, title=figure_title(construction, figure), plate=True,
                            furniture=p.furniture, looks=dict(p.looks), panels=p.panels)
     return build_scene(figure, title=figure_title(construction, figure))
@@ -257,7 +266,8 @@ def write_outputs(stage: Path, construction: Construction | None, figure: Figure
     if drawing is not None:
         scene = drawing.scene
     else:
-        scene = scene_for(construction, figure) if (frames != "none" or outputs or not st.plate) else None
+        scene = scene_for(construction, figure, ending=st.camera) if (frames != "none" or outputs or not st.plate) \
+            else None
     ks = frame_steps(scene, frames) if scene is not None else []
     if drawing is None:
         drawing = Drawing(scene, st) if (ks or outputs or not st.plate) else None

@@ -90,7 +90,13 @@ class Placing:
         self.lettered = [m for m in scene.marks if m.kind is MarkKind.POINT and m.label and m.id in self.spots]
         #: per zoom level, every letter shown there: its offset from its point (canvas units, moves applied)
         self.level_rel: dict[int, dict[str, tuple[float, float]]] = {}
+        #: per letter, the zoom levels it moves at: {level: its offset there and its distance in letter heights}
+        self.level_moves: dict[str, dict[int, tuple[float, float, float]]] = {}
         self.hidden_at, self.level_rules = self._zoom_placing() if style.camera else ({}, [])
+        #: the end state's letters (:meth:`place_end`): {id: (dx, dy, distance)} about their points, in the
+        #: letters' own units, and the rules that set them there
+        self.end_spots: dict[str, tuple[float, float, float]] = {}
+        self.end_rules: list[str] = []
         #: name tags: {point id: (dx, dy, distance in letter heights)}, and the levels each gives way at
         self.tag_spots: dict[str, tuple[float, float, float]] = {}
         self.tag_hidden: dict[str, str] = {}
@@ -241,11 +247,85 @@ class Placing:
                 if abs(ddx) > 0.5 or abs(ddy) > 0.5:
                     moves.setdefault((i, f"translate({fmt(ddx)}px,{fmt(ddy)}px)"), []).append(lvl)
                     classes[i] = classes.get(i, "") + " lbm"  # moved at some level: the group carries an id
-        # one rule per letter and move, listing the levels it holds at (--zs: the level's letter scale)
+                    # the letter's leader is drawn anew there, from the point to where the letter stands
+                    self.level_moves.setdefault(i, {})[lvl] = (x - px + ddx, y - py + ddy, spot[2])
+        # one rule per letter and move, listing the levels it holds at (--zs: the level's letter scale); the
+        # letter moves, its leader does not (the level has a leader of its own, :meth:`leaders`)
         for (i, move), lvls in moves.items():
-            rules.append(",".join(f".zl{lvl} #{i}-lb>.lb,.zl{lvl} #{i}-lb>.leader" for lvl in lvls)
+            rules.append(",".join(f".zl{lvl} #{i}-lb>.lb" for lvl in lvls)
                          + f"{{transform:scale(var(--ls,var(--zs))) {move}}}")
         return classes, rules
+
+    def leaders(self, mid: str, rel: tuple[float, float, float]) -> list[tuple[tuple[float, float, float, float], str]]:
+        """The leaders of letter *mid* standing at *rel* (offset, distance in letter heights) in the whole
+        figure: ((x1, y1, x2, y2) about its point in the letter's units, classes), one for every place it
+        stands at -- the whole figure's (hidden at the levels it moves at: ``mN``), each zoom level it
+        moves at (``lvN``, shown at that level only) and the end state's (``lvf``) -- each from its point to
+        the letter there, and none where the letter stands close enough to be read as its point's.
+        """
+        out = []
+        moved = self.level_moves.get(mid, {})
+        if rel[2] >= LEADER_FROM:
+            out.append((self.leader_line(rel[0], rel[1]), "".join(f" m{lvl}" for lvl in sorted(moved))))
+        for lvl, (dx, dy, dist) in sorted(moved.items()):
+            if dist >= LEADER_FROM:
+                out.append((self.leader_line(dx, dy), f" lv{lvl}"))
+        end = self.end_spots.get(mid)
+        if end is not None and end[2] >= LEADER_FROM:
+            out.append((self.leader_line(end[0], end[1]), " lvf"))
+        return out
+
+    def leader_line(self, dx: float, dy: float) -> tuple[float, float, float, float]:
+        """A leader from a point to its letter set at (dx, dy) from it (the baseline's middle, letter units):
+        from a quarter letter off the point to three quarters short of the letter's middle."""
+        size = self.style.label_size
+        cx, cy = dx, dy - 0.35 * size
+        n = math.hypot(cx, cy) or 1.0
+        a, b = 0.25 * size, n - 0.75 * size
+        return (a * cx / n, a * cy / n, b * cx / n, b * cy / n)
+
+    def place_end(self, letter: float, marks: Sequence[Mark], taken: Sequence[tuple[float, float, float, float]]) -> None:
+        """Place the end state's letters (:meth:`construct.render.scene.Scene.in_end`): the lettered points of
+        its *marks*, among its points and result lines and clear of the boxes *taken* (canvas px: its
+        furniture's lettering), at *letter* canvas units a letter unit (the player's letter scale at the end
+        view).  Each stays where the whole figure set it when there is room; one with
+        none is left out of the end state (class ``pf`` marks the placed).  Sets :attr:`end_spots` and
+        :attr:`end_rules`.
+        """
+        st = self.style
+        size = st.label_size * letter
+        span = self.scene.bbox[2] - self.scene.bbox[0]
+        dots = [self.vp.px(*m.geom) for m in marks if m.kind is MarkKind.POINT and "hidden" not in m.look.split()]
+        lines = []
+        for m in marks:
+            if m.role == "result" and m.kind.stroked and "hidden" not in m.look.split():
+                pts = [self.vp.px(*q) for q in _polyline(m, self.vp.scale)]
+                lines.extend((a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:]))
+        items, prefer = [], {}
+        for m in marks:
+            if not m.label:
+                continue
+            p = self.vp.px(*m.geom)
+            items.append((m.id, m.role, m.step, p, label_offset_direction(m.geom, scale=span), m.label))
+            spot = self.spots.get(m.id)
+            if spot is not None:
+                prefer[m.id] = ((spot[0] - p[0]) * letter, (spot[1] - p[1]) * letter, spot[2])
+        got = place(items, size, dots, LineIndex(size, lines), font=st.label_font, italic=st.label_italic,
+                    taken=list(taken), keep=False, prefer=prefer, halo=HALO_PX / 2 * letter, reach=self.line_reach)
+        spots, rules = {}, []
+        for mid, _r, _s, (px, py), _d, _t in items:
+            spot = got.get(mid)
+            if spot is None:
+                continue
+            rel = ((spot[0] - px) / letter, (spot[1] - py) / letter, spot[2])
+            spots[mid] = rel
+            base = self.spots.get(mid)
+            if base is None:
+                continue  # an end mark's letter: drawn where it stands here (it stands nowhere else)
+            dx, dy = rel[0] - (base[0] - px), rel[1] - (base[1] - py)
+            rules.append(f".fin #{mid}-lb>.lb{{transform:scale(var(--ls,var(--zs,1))) "
+                         f"translate({fmt(dx)}px,{fmt(dy)}px)}}")
+        self.end_spots, self.end_rules = spots, rules
 
     def place_tags(self, views: Sequence[View], full: View,
                    input_steps: Callable[[int], frozenset[int]]) -> None:

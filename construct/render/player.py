@@ -121,6 +121,8 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
 
     data = {"n": n, "steps": steps, "groups": list(groups), "views": [list(v) for v in views],
             "levels": list(ZOOM_LEVELS), "dt": round(1000 * STEP_SECONDS)}
+    if d.end is not None:
+        data["end"] = 1  # the last step shows the end state (the figure's class fin)
     title = title or scene.title
     giv = givens or {}
     givens_rows = "".join(f"<tr><th>{html.escape(str(k))}</th><td>{html.escape(_show(v))}</td></tr>"
@@ -313,7 +315,8 @@ li a.later{color:#bbb}
     // a drag keeps the shown level while near its range (see DRAG_LEVEL)
     if (drag && lvl !== level && level < L.length && z >= L[level] / DRAG_LEVEL
         && (level + 1 >= L.length || z < L[level + 1] * DRAG_LEVEL)) { lvl = level; }
-    if (svg.getAttribute("class") !== "zl" + lvl) { svg.setAttribute("class", "zl" + lvl); }
+    var cls = "zl" + lvl + (data.end && k === n ? " fin" : "");  // the last step: the end state
+    if (svg.getAttribute("class") !== cls) { svg.setAttribute("class", cls); }
     level = lvl;
   }
   // Once a live given asks (lean()), the groups the step hides leave the document, a comment keeping each

@@ -37,7 +37,7 @@ from ..kernel.protocol import Protocol, Replay, Step
 from .captions import TITLE_LIMIT, Reader, displayed
 
 __all__ = ["Mark", "MarkKind", "Scene", "build_scene", "label_offset_direction", "on_curve_names", "extreme_points", "middle",
-           "fanned_lines", "letter_point"]
+           "fanned_lines", "letter_point", "break_shift"]
 
 TWO_PI = 2.0 * math.pi
 #: What a letter of the figure looks like (:meth:`Scene.tag_shown`): a letter, a number below 20 or
@@ -133,10 +133,28 @@ class Scene:
     furniture: tuple = ()
     #: What the book plate shows (:func:`plate_names`): what a finished group collapses to.
     essentials: frozenset = frozenset()
+    #: The end state (:meth:`in_end`): the last teaching frame shows the figure as the book draws it.
+    ending: bool = False
+    #: Marks only the end state draws: the plate's look of a result whose teaching mark is drawn otherwise
+    #: (a line as far as the points the book shows on it, the crank circle as the book's half circle).
+    end_marks: tuple[Mark, ...] = ()
+    #: The ids of the marks the end state draws otherwise (by a mark of :attr:`end_marks`).
+    end_replaced: frozenset = frozenset()
+    #: The plate's furniture the end state adds (ordinates with their values, scales, signs).
+    end_furniture: tuple = ()
 
     def upto(self, k: int) -> list[Mark]:
         """The marks made by steps 1..k."""
         return [m for m in self.marks if m.step <= k]
+
+    def in_end(self, m: Mark) -> bool:
+        """Does the end state (the last teaching frame, :attr:`ending`) draw mark *m* as it stands?
+
+        The end state is the figure as the book's plate shows it (:attr:`essentials`): the results and
+        what locates them, the helpers gone, a result the plate draws otherwise replaced by its
+        :attr:`end_marks`.  Without an end state every mark stays.
+        """
+        return not self.ending or (m.name in self.essentials and m.id not in self.end_replaced)
 
     def readable(self, text: str, lang: str = "de", outputs: tuple[str, ...] = ()) -> str:
         """*text* in the figure's letters (:class:`construct.render.captions.Reader`).
@@ -504,7 +522,8 @@ def on_curve_names(steps: Iterable[Step], points: set[str], shown: set[str] | No
 
 def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: bool = False,
                 break_axis: bool = True, furniture: tuple = (), looks: "dict[str, str] | None" = None,
-                panels: tuple = ()) -> Scene:
+                panels: tuple = (), ending: bool = False, end_furniture: tuple = (),
+                end_looks: "dict[str, str] | None" = None, _warn: bool = True) -> Scene:
     """The marks of a built or replayed figure (anything with ``.protocol`` and ``.replay``).
 
     With *plate* the scene is what a book plate shows (:func:`plate_names`):
@@ -514,11 +533,15 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
     :class:`~construct.kernel.errors.HiddenLabelWarning` (:func:`warn_hidden_labels`).
     *panels* (:class:`construct.render.plate.Panel`) lay a plate's sheet out (:func:`lay_out`);
     a sheet laid out so is not broken.
+
+    With *ending* the scene carries its end state (:meth:`Scene.in_end`): what the plate shows, drawn as
+    the plate draws it (*end_looks*: the plate's looks), with the plate's furniture *end_furniture*, on the
+    scene's own sheet (its broken axis).
     """
     protocol: Protocol = figure.protocol
     objects: Replay = figure.replay
     shown = plate_names(protocol, objects) if plate else None
-    if shown is not None:
+    if shown is not None and _warn:
         warn_hidden_labels(protocol, objects, shown)
     points = [o for n, o in objects.items() if isinstance(o, Point) and (shown is None or n in shown)]
     curves_pts = _curve_points(objects, shown)
@@ -609,8 +632,88 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
     # a figure shows a bounded title; the protocol keeps the name
     title = (displayed(title[0], TITLE_LIMIT), displayed(title[1], TITLE_LIMIT))
     essentials = frozenset(shown if shown is not None else plate_names(protocol, objects))
+    end: dict[str, Any] = {}
+    if ending and shown is None:
+        end = _end_state(figure, marks, breaks, end_furniture, end_looks)
     return Scene(tuple(marks), bbox, protocol.steps, title, dict(protocol.params), breaks, tuple(furniture),
-                 essentials)
+                 essentials, **end)
+
+
+def _end_state(figure: Any, marks: list[Mark], breaks: tuple, furniture: tuple,
+               looks: "dict[str, str] | None") -> dict[str, Any]:
+    """The end state of a teaching scene (:meth:`Scene.in_end`): the plate's marks on the teaching sheet.
+
+    The plate's scene is drawn on the teaching scene's broken axis; each of its marks that the teaching
+    scene draws otherwise (a line drawn as far as every point the construction marks on it, the crank
+    circle whole, a look the plate gives) becomes an end mark that replaces it in the end state.
+    """
+    from .plate import shifted
+
+    plate = build_scene(figure, plate=True, break_axis=False, looks=looks, _warn=False)
+    sx = break_shift(breaks)
+    span = max(plate.bbox[2] - plate.bbox[0], plate.bbox[3] - plate.bbox[1], 1e-9)
+    tol = 1e-9 * span
+    teaching: dict[str, list[Mark]] = collections.defaultdict(list)
+    for m in marks:
+        teaching[m.name].append(m)
+    seen: dict[str, int] = collections.defaultdict(int)
+    end_marks, replaced = [], set()
+    for pm in plate.marks:
+        pm = _with_geom(pm, _shift_geom(pm, sx))
+        i = seen[pm.name]
+        seen[pm.name] += 1
+        tm = teaching[pm.name][i] if i < len(teaching[pm.name]) else None
+        if tm is not None and tm.kind is pm.kind and tm.look == pm.look and tm.label == pm.label \
+                and _same_geom(tm.geom, pm.geom, tol):
+            continue
+        if tm is not None:
+            replaced.add(tm.id)
+        end_marks.append(dataclasses.replace(pm, id=f"{(tm or pm).id}-end"))
+    return {"ending": True, "end_marks": tuple(end_marks), "end_replaced": frozenset(replaced),
+            "end_furniture": tuple(shifted(it, sx) for it in furniture)}
+
+
+def break_shift(breaks: tuple) -> Callable[[float], float]:
+    """The map of x that a broken axis (:attr:`Scene.breaks`) applies to what lies left of its gap.
+
+    >>> sx = break_shift(((10.0, 1.0, 6.0),))  # drawn from 10 to 11, standing for 6: [5, 11] became [10, 11]
+    >>> sx(2.0), sx(12.0)
+    (7.0, 12.0)
+    """
+    moves = [(x0 + w - left, left - w) for x0, w, left in breaks]
+
+    def sx(x: float) -> float:
+        for lo, shift in moves:
+            if x <= lo:
+                x += shift
+        return x
+
+    return sx
+
+
+def _shift_geom(m: Mark, sx: Callable[[float], float]) -> tuple:
+    """A mark's geometry on a broken sheet (as :func:`_break` moves it: a circle whole, or not at all)."""
+    g = m.geom
+    if m.kind is MarkKind.POINT:
+        return (sx(g[0]), g[1])
+    if m.kind is MarkKind.SEGMENT:
+        return (sx(g[0]), g[1], sx(g[2]), g[3])
+    if m.kind.round:
+        right = max(p[0] for p in extreme_points(m))
+        return (g[0] + (sx(right) - right),) + tuple(g[1:])
+    return tuple((sx(x), y) for x, y in g)
+
+
+def _same_geom(a: tuple, b: tuple, tol: float) -> bool:
+    if len(a) != len(b):
+        return False
+    for u, v in zip(a, b):
+        if isinstance(u, tuple):
+            if not isinstance(v, tuple) or not _same_geom(u, v, tol):
+                return False
+        elif abs(u - v) > tol * max(1.0, abs(u)):
+            return False
+    return True
 
 
 #: A gap wider than this fraction of the figure, with nothing drawn in it, is broken out of the axis.

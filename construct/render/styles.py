@@ -31,7 +31,7 @@ from .lettering import HALO_PX
 from .plate import LOOKS_CSS
 from .svgdoc import fmt
 
-__all__ = ["Style", "STYLES", "HISTORICAL", "TEACHING", "PLAIN"]
+__all__ = ["Style", "STYLES", "HISTORICAL", "TEACHING", "PLAIN", "END_CSS"]
 
 
 @dataclass(frozen=True)
@@ -162,6 +162,7 @@ class Style:
         # letters drawn about their point (class lbg): set off by a screen distance at every zoom
         if self.camera:
             rules.append(level_css())
+            rules.append(END_CSS)
         else:
             rules.append(".lbx{display:none}")
 
@@ -170,6 +171,16 @@ class Style:
         rules.append(f".leader,.cur .leader,.inp .leader{{fill:none;stroke:{self.ink};stroke-width:0.4px}}")
         return "\n".join(rules)
 
+
+#: The end state of a teaching sequence (class ``fin`` on the figure, :meth:`construct.render.scene.Scene.in_end`):
+#: what it leaves out (``nf``) hidden, what it alone draws (``fo``) shown, only its letters (``pf``) at their
+#: places there with their own leaders (``lvf``), scaled by the player's letter scale (``--ls``).
+END_CSS = "\n".join((
+    ".fo{display:none}", ".fin .fo{display:inline}", ".fin .nf{display:none}",
+    ".fin .lbg{display:none}", ".fin .lbg.pf{display:inline}",
+    ".fin .leader{display:none}", ".fin .leader.lvf{display:inline}",
+    ".fin .lbg>.lb,.fin .lbg>.leader,.fin .pt{transform:scale(var(--ls,var(--zs,1)))}",
+))
 
 PLAIN = Style()
 
@@ -222,7 +233,9 @@ TEACHING = Style(
     camera=True,                   # every step through its group's view (construct.render.camera)
     ring_px=9.0,                   # a ring round a small current mark: 18 px across on the screen
     min_drawing_px=620.0,
-    area_fill="#dbe7f3",
+    hatch=True,                    # hatched, as the books hatch (free forces, the excess area), over a tint
+    hatch_spacing=5.0,
+    area_fill="#eef3f9",
 )
 
 STYLES: dict[str, Style] = {"plain": PLAIN, "historical": HISTORICAL, "teaching": TEACHING}

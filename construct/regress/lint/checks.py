@@ -35,7 +35,7 @@ from collections import defaultdict
 from dataclasses import dataclass
 from typing import Iterable, Iterator
 
-from .sheet import Box, Sheet
+from .sheet import END_LEVEL, Box, Sheet
 
 __all__ = ["Finding", "KINDS", "check_sheet", "view_count", "MIN_LABEL_PX", "MIN_MARK_PX", "MIN_OPACITY", "VIEW"]
 
@@ -256,6 +256,13 @@ class _Layout:
     level: int = 0
     letter: float = 1.0
     stroke: float = 1.0
+    #: The end state's view (the last step of a figure that has one): its letters stand where it sets them.
+    fin: bool = False
+
+    @property
+    def moves_key(self) -> int:
+        """The key of the letter moves this layout applies (:attr:`Sheet.moves`): its level's, or the end's."""
+        return END_LEVEL if self.fin else self.level
 
 
 class _Views:
@@ -304,9 +311,10 @@ class _Views:
         everything = self.all()
         if not self.cameras or (not self.stepped and self.single not in self.cameras):
             return [_Layout(everything, self.whole, 1.0 / self.scale(everything[0][0]))]
-        by_box: dict[Box, list[int]] = defaultdict(list)
+        by_box: dict[tuple, list[int]] = defaultdict(list)
+        end = self.sheet.end and self.stepped
         for k in _steps_of(everything):
-            by_box[self.box(k)].append(k)
+            by_box[(self.box(k), end and k == self.sheet.n)].append(k)
         out = []
         # the whole figure the camera moves over (its widest and tallest view: the first step's is the whole
         # drawing, without the caption), and its user units per screen pixel in the window
@@ -314,10 +322,10 @@ class _Views:
         cams = list(self.cameras.values())
         fw, fh = max(c[2] - c[0] for c in cams), max(c[3] - c[1] for c in cams)
         q_whole = max(fw / ww, fh / wh)
-        for b, ks in by_box.items():
+        for (b, fin), ks in by_box.items():
             q = 1.0 / self.scale(ks[0])
             if not self.player:
-                out.append(_Layout(_runs(ks), b, q))
+                out.append(_Layout(_runs(ks), b, q, fin=fin))
                 continue
             # the player fits the view into its window (preserveAspectRatio meet): what shows is wider or taller
             w, h = player_window(self.screen)
@@ -325,12 +333,13 @@ class _Views:
             seen = (cx - w * q / 2, cy - h * q / 2, cx + w * q / 2, cy + h * q / 2)
             zoom = q_whole / q  # how many times the window shows the view larger than the whole figure
             level = zoom_level(zoom, self.sheet.levels)
-            out.append(_Layout(_runs(ks), seen, q, level, player_letter_scale(q, zoom, self.sheet.levels[level]), q))
+            out.append(_Layout(_runs(ks), seen, q, level, player_letter_scale(q, zoom, self.sheet.levels[level]), q,
+                               fin))
         return out
 
     def text_box(self, t, lay: _Layout) -> Box:
         """Where a letter stands in a layout: scaled (and moved at its zoom level) about its point."""
-        move = self.sheet.moves.get((lay.level, t.group)) if lay.level and t.group else None
+        move = self.sheet.moves.get((lay.moves_key, t.group)) if lay.moves_key and t.group else None
         if t.anchor is None or (lay.letter == 1.0 and move is None):
             return t.box
         ax, ay = t.anchor
@@ -353,8 +362,9 @@ class _Views:
         sheet, n = self.sheet, self.sheet.n
         if not self.stepped:
             got = [(self.single, self.single)] if self._seen(chain, None, level) else []
-        elif step is None:
-            got = [(1, n)] if self._seen(chain, None, level) else []
+        elif step is None:  # outside the steps: the end state's own furniture is seen at the last step only
+            got = _merge(([(1, n - 1)] if self._seen(chain, "", level) else [])
+                         + ([(n, n)] if self._seen(chain, None, level) else []))
         else:
             s = step
             runs: Runs = []
@@ -398,18 +408,19 @@ class _Views:
         boxes, anchored, points, units = self._text_arrays()
         texts = self.sheet.texts
         level_moves = self.__dict__.setdefault("_level_moves", {})
-        if lay.level not in level_moves:  # the texts a zoom level moves, and by how much
+        key = lay.moves_key
+        if key not in level_moves:  # the texts a zoom level (or the end state) moves, and by how much
             moves = self.sheet.moves
             moved = np.zeros(len(texts), dtype=bool)
             d = np.zeros((len(texts), 2))
-            if lay.level and moves:
+            if key and moves:
                 for i, t in enumerate(texts):
-                    m = moves.get((lay.level, t.group)) if t.group else None
+                    m = moves.get((key, t.group)) if t.group else None
                     if m is not None:
                         moved[i] = True
                         d[i] = (m[0] * t.unit, m[1] * t.unit)
-            level_moves[lay.level] = (moved, d)
-        moved, d = level_moves[lay.level]
+            level_moves[key] = (moved, d)
+        moved, d = level_moves[key]
         if lay.letter == 1.0 and not moved.any():
             b = boxes
         else:
@@ -638,7 +649,8 @@ def _small_labels(sheet: Sheet, views: _Views, seen) -> list[Finding]:
         for t, b, runs in letters:
             if t.kind == "caption":
                 continue
-            px = t.size * lay.letter / lay.q
+            # a letter about its point is drawn at the player's letter scale; lettering set on the sheet is not
+            px = t.size * (lay.letter if t.anchor is not None else 1.0) / lay.q
             if px < MIN_LABEL_PX:
                 rs, texts = found.setdefault(round(px, 1), ([], set()))
                 rs.extend(runs)

@@ -42,7 +42,7 @@ from .cascade import PROPERTIES, Cascade, Look, Node, declarations
 from .fonts import text_extents
 
 __all__ = ["Sheet", "Text", "Dot", "Stroke", "read_sheet", "read_views", "player_data", "LintInputError",
-           "STATES", "Box", "read_moves"]
+           "STATES", "Box", "read_moves", "END", "END_LEVEL"]
 
 Box = tuple[float, float, float, float]
 Matrix = tuple[float, float, float, float, float, float]
@@ -70,6 +70,12 @@ _SKIPPED_IDS = {"inset"}
 
 
 _PROPERTY_SET = frozenset(PROPERTIES)
+#: The class of a figure's root (or camera group) that shows its end state: the player's last step.
+END = "fin"
+#: A zoom level's class (``zl3``).
+_ZOOM_CLASS = re.compile(r"zl\d+")
+#: The key of the end state's letter moves in :attr:`Sheet.moves` (in place of a zoom level).
+END_LEVEL = -1
 #: Marks a step's group in a chain (its state classes are what a view changes).
 _STEP_GROUP = ("#step-group", "")
 _STATE_CLASSES = frozenset(STATES)
@@ -174,6 +180,9 @@ class Sheet:
     moves: dict[tuple[int, str], tuple[float, float]] = field(default_factory=dict)
     #: Per step, the ring the player draws round a small current mark: (cx, cy, r) as its data gives it.
     rings: dict[int, tuple[float, float, float]] = field(default_factory=dict)
+    #: The file shows an end state (class ``fin`` on its root): the last step's view; the steps before show
+    #: the figure without it (the player sets the class at the last step only).
+    end: bool = False
     #: The looks asked for, by (chain, state, level): every view asks again for the same few.
     _looks: dict[tuple, Look] = field(default_factory=dict, repr=False, compare=False)
 
@@ -187,9 +196,14 @@ class Sheet:
         return got
 
     def _look(self, chain: tuple[Node, ...], state: str | None, level: int) -> Look:
-        if level:
-            root = chain[0]
-            chain = ((root[0], root[1], root[2] | {f"zl{level}"}, root[3]),) + chain[1:]
+        root = chain[0]
+        classes = root[2]
+        if state is not None:
+            classes = classes - {END}  # a step's view before the last: the player shows no end state
+        if level or any(c.startswith("zl") for c in classes):  # the view's zoom level, in place of the file's
+            classes = frozenset(c for c in classes if not _ZOOM_CLASS.fullmatch(c)) | ({f"zl{level}"} if level else set())
+        if classes is not root[2]:
+            chain = ((root[0], root[1], classes, root[3]),) + chain[1:]
         if state is None:
             return self.cascade.look(chain)
         for i in range(len(chain) - 1, -1, -1):
@@ -282,9 +296,10 @@ def read_moves(css: str) -> dict[tuple[int, str], tuple[float, float]]:
         if not m or "transform" not in block.group(2):
             continue
         for sel in block.group(1).split(","):
-            t = re.fullmatch(r"\s*\.zl(\d+)\s+#([\w-]+)\s*>\s*(?:\*|\.lb|\.leader)\s*", sel)
+            t = re.fullmatch(r"\s*\.(zl\d+|fin)\s+#([\w-]+)\s*>\s*(?:\*|\.lb|\.leader)\s*", sel)
             if t:
-                out[(int(t.group(1)), t.group(2))] = (float(m.group(1)), float(m.group(2)))
+                lvl = END_LEVEL if t.group(1) == END else int(t.group(1)[2:])
+                out[(lvl, t.group(2))] = (float(m.group(1)), float(m.group(2)))
     return out
 
 
@@ -477,7 +492,10 @@ def read_sheet(source: str | bytes | Path, name: str, *, data: dict | None = Non
     camera_layer = any(_local(e.tag) == "g" and e.get("id") == "views" for e in root)
     sheet.player = bool(sheet.views) and (bool(data) or camera_layer)
     sheet.unplayed = camera_layer and not data
+    sheet.end = END in root.get("class", "").split()
     if data:
+        if isinstance(data.get("steps"), list):
+            sheet.n = max(sheet.n, len(data["steps"]))  # a last step that draws nothing is still a view
         levels = data.get("levels")
         if isinstance(levels, list) and levels and all(isinstance(z, (int, float)) and z > 0 for z in levels):
             sheet.levels = tuple(float(z) for z in levels)

@@ -42,7 +42,8 @@ MAX_STAGES = 1000
 #: Looks of the step groups, for players that switch classes on a whole step.
 STEP_GROUP_CSS = """g.hid{display:none}
 g.cur>*,g.stage.cur>g>*{stroke:%(hl)s;stroke-width:%(hw)s}
-g.cur>.pt,g.cur .lb,g.stage.cur>g>.pt,g.stage.cur>g .lb{fill:%(hl)s;stroke:none}
+g.cur .lb,g.stage.cur>g .lb{fill:%(hl)s;stroke:none}
+g.cur>.pt,g.stage.cur>g>.pt{fill:%(hl)s}
 g.old{opacity:%(op)s}"""
 
 
@@ -192,6 +193,9 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
     by_step = n == len(d.scene.steps)
     outer, camera, ring = _camera(d, ends, dt, total) if style.camera else (None, None, None)
     for layer in d.LAYERS:
+        if layer == "labels" and camera is not None and ring is not None:
+            camera.add(ring)  # over the drawing, under the letters (a letter's halo opens it)
+            ring = None
         lg = f.g(id=layer)
         if by_step:
             for k, elems in d.groups[layer]:
@@ -220,7 +224,7 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
         (camera if camera is not None else dwg).add(furniture)
     if camera is not None:
         if ring is not None:
-            camera.add(ring)  # over the drawing
+            camera.add(ring)
         dwg.add(outer)
     # Captions: each stage's while it is drawn, the figure's title otherwise (and in still renderers).
     title_lines = d.captions.title_lines(title or d.scene.title)[: d.n_caption]

@@ -41,7 +41,7 @@ import numpy as np
 from .scene import MarkKind, Scene, extreme_points
 from .svgdoc import fmt
 
-__all__ = ["step_views", "views_box", "shots", "step_focus", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
+__all__ = ["step_views", "views_box", "shots", "step_focus", "step_zooms", "step_insets", "DETAIL_PX", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
            "clear_edges", "clear_tag_edges", "player_letter_scale", "EDGE_ROUNDS", "ring_round"]
 
 #: The most the step player shows of the figure in a 1400 × 1000 window (width, height in screen px): the
@@ -150,7 +150,7 @@ def _grow(b: Box | None, x: float, y: float) -> Box:
 
 def step_focus(scene: Scene) -> list[Box | None]:
     """Per step, the box of where it works: its own marks, the points its instrument is set on and the points
-    a frame tags with it (:meth:`Scene.tagged`).
+    its caption names (:meth:`Scene.named`).
 
     Lines are left out of the marks: a line is drawn as far as all the points the
     whole construction ever marks on it (the stroke line reaches the far
@@ -166,9 +166,9 @@ def step_focus(scene: Scene) -> list[Box | None]:
             if m is not None and m.kind is not MarkKind.SEGMENT:
                 for x, y in extreme_points(m):
                     b = _grow(b, x, y)
-        # the points its instrument is set on, and those a frame tags with the step (the points naming
-        # the curves it cuts, the points its caption names): the student looks for them too
-        for n in s.inputs:
+        # the points its instrument is set on, and those its caption names: the student looks for them too,
+        # and a caption names only what the view shows
+        for n in set(s.inputs) | scene.named(s.index):
             m = drawn.get(n)
             if m is not None and m.kind is MarkKind.POINT:
                 b = _grow(b, *m.geom)
@@ -206,11 +206,12 @@ class Framing:
         self.span = max(full[2], full[3] / self.aspect)
         self.min_w = self.span / max_zoom
 
-    def width(self, w: float, h: float, context: float = CONTEXT) -> float:
-        """The width of the view round a region *w* x *h* px (before the whole-figure rule)."""
+    def width(self, w: float, h: float, context: float = CONTEXT, max_zoom: float | None = None) -> float:
+        """The width of the view round a region *w* x *h* px (before the whole-figure rule); *max_zoom*: the
+        most it magnifies (the framing's own by default)."""
         fw, fh = self.full[2], self.full[3]
         w, h = w + 2 * min(context * w, ROOM * fw), h + 2 * min(context * h, ROOM * fh)
-        return max(w, h / self.aspect, self.min_w)
+        return max(w, h / self.aspect, self.min_w if max_zoom is None else self.span / max_zoom)
 
     def limit(self, whole_above: float = WHOLE_ABOVE) -> float:
         """From this view width on the whole canvas is shown."""
@@ -223,13 +224,14 @@ class Framing:
         w = self.width(b[2] - b[0], b[3] - b[1])
         return 1.0 if w >= self.limit() else self.span / w
 
-    def view(self, b: Box | None, context: float = CONTEXT, whole_above: float = WHOLE_ABOVE) -> View:
+    def view(self, b: Box | None, context: float = CONTEXT, whole_above: float = WHOLE_ABOVE,
+             max_zoom: float | None = None) -> View:
         """The view round region *b*, slid inside the canvas where it can (the figure's edge is not a
         reason to show paper); numbers to hundredths of a pixel."""
         fx, fy, fw, fh = self.full
         if b is None:
             return self.full
-        w = self.width(b[2] - b[0], b[3] - b[1], context)
+        w = self.width(b[2] - b[0], b[3] - b[1], context, max_zoom)
         h = w * self.aspect
         if w >= self.limit(whole_above):
             return self.full
@@ -240,7 +242,48 @@ class Framing:
         return (round(x, 2), round(y, 2), round(w, 2), round(h, 2))
 
 
-def shots(scene: Scene, focus: Sequence[Box | None], framing: Framing) -> list[tuple[int, int]]:
+#: The smallest distance the student must tell apart on the screen (px), letters beside them: two points a step works with, the
+#: radius of a circle it strikes.  Where the whole figure shows them closer, the step's view may magnify up
+#: to the last zoom level (:func:`step_zooms`), past :data:`MAX_ZOOM`.
+DETAIL_PX = 20.0
+
+
+#: What a step whose finest detail its shot shows smaller than :data:`DETAIL_PX` costs in :func:`shots`, per
+#: halving of the magnification it lacks (two moves of the camera: a cluster of points is worth a shot).
+UNSEEN = 2 * MOVE
+
+
+def step_zooms(scene: Scene, framing: Framing, px: Callable[[float, float], tuple[float, float]]) -> list[float]:
+    """Per step, how much its view must magnify for its finest detail to be :data:`DETAIL_PX` on the screen
+    (the two closest points it works with, the smallest circle it strikes; 0: nothing finer than the whole
+    figure shows), at most the last zoom level; a view may magnify past :data:`MAX_ZOOM` as far as that.  A cluster of points within a few pixels of each other (a trisection's
+    thirds, a compass step of a few pixels) is seen magnified, not as one dot.
+    """
+    drawn = {m.name: m for m in scene.marks}
+    whole = PLAYER_FIGURE_PX[0] / framing.span  # screen px per canvas px in the whole figure's view
+    out = []
+    for s in scene.steps:
+        pts: list[tuple[float, float]] = []
+        fine = math.inf
+        for n in set(s.outputs) | set(s.inputs) | scene.named(s.index):
+            m = drawn.get(n)
+            if m is None:
+                continue
+            if m.kind is MarkKind.POINT:
+                pts.append(px(*m.geom))
+            elif m.kind.round and n in s.outputs:
+                fine = min(fine, abs(px(m.geom[0] + m.geom[2], m.geom[1])[0] - px(*m.geom[:2])[0]))
+        pts = sorted(set((round(x, 1), round(y, 1)) for x, y in pts))
+        for i, a in enumerate(pts):
+            for b in pts[i + 1:i + 8]:
+                fine = min(fine, math.hypot(a[0] - b[0], a[1] - b[1]))
+        need = DETAIL_PX / (fine * whole) if 0.0 < fine < math.inf else 0.0
+        out.append(min(ZOOM_LEVELS[-1], need))
+    return out
+
+
+def shots(scene: Scene, focus: Sequence[Box | None], framing: Framing,
+          zooms: Sequence[float] | None = None) -> list[tuple[int, int]]:
     """The shots of the sequence: runs (first, last) of steps (1-based) seen through one view.
 
     A shot is seen through the view (*framing*) of all its steps' working regions
@@ -258,7 +301,8 @@ def shots(scene: Scene, focus: Sequence[Box | None], framing: Framing) -> list[t
 
     Dynamic programming over the steps, each looking back over at most
     :data:`LONGEST` steps and no further than a shot can still pay: linear in
-    the steps.
+    the steps.  *zooms*: per step the most its view may magnify (:func:`step_zooms`; a shot magnifies as much
+    as its finest step may).
     """
     steps = scene.steps
     n = len(steps)
@@ -272,19 +316,28 @@ def shots(scene: Scene, focus: Sequence[Box | None], framing: Framing) -> list[t
         j = i
         while j + 1 < n and steps[j + 1].group and steps[j + 1].group[:1] == steps[i].group[:1]:
             j += 1
-        out.extend(_partition(steps, focus, framing, i, j))
+        out.extend(_partition(steps, focus, framing, i, j, zooms))
         i = j + 1
     return out
 
 
-def _partition(steps: Sequence, focus: Sequence[Box | None], framing: Framing, a: int, b: int) -> list[tuple[int, int]]:
+def _partition(steps: Sequence, focus: Sequence[Box | None], framing: Framing, a: int, b: int,
+               zooms: Sequence[float] | None = None) -> list[tuple[int, int]]:
     """The cheapest shots of steps a..b (0-based, inclusive) as in :func:`shots`, as 1-based runs."""
     m = b - a + 1
     fw = framing.span
     whole = framing.limit()
     width = framing.width
+    need = [0.0] * m if zooms is None else list(zooms[a:b + 1])
+    zs = [max(MAX_ZOOM, z) for z in need]
+
+    def own_zoom(t: int) -> float:
+        f = focus[a + t]
+        w = width(f[2] - f[0], f[3] - f[1], max_zoom=zs[t])
+        return 1.0 if w >= whole else fw / w
+
     # log 2 of each step's own magnification (0: a step without a working region frames nothing)
-    own = [math.log2(framing.zoom(focus[a + t])) if focus[a + t] is not None else 0.0 for t in range(m)]
+    own = [math.log2(own_zoom(t)) if focus[a + t] is not None else 0.0 for t in range(m)]
     framed = [focus[a + t] is not None for t in range(m)]
     logs, counts = [0.0], [0]
     for t in range(m):
@@ -297,16 +350,22 @@ def _partition(steps: Sequence, focus: Sequence[Box | None], framing: Framing, a
     for t in range(m):
         x0 = y0 = math.inf
         x1 = y1 = -math.inf
+        deepest = MAX_ZOOM
+        finest = 0.0
         for s in range(t, max(-1, t - LONGEST), -1):
             f = focus[a + s]
             if f is not None:
                 x0, y0, x1, y1 = min(x0, f[0]), min(y0, f[1]), max(x1, f[2]), max(y1, f[3])
+            deepest = max(deepest, zs[s])
+            finest = max(finest, need[s])
             if x0 <= x1:
-                w = width(x1 - x0, y1 - y0)
+                w = width(x1 - x0, y1 - y0, max_zoom=deepest)
                 lz = 0.0 if w >= whole else math.log2(fw / w)
             else:
                 lz = 0.0
             loss = (logs[t + 1] - logs[s]) - (counts[t + 1] - counts[s]) * lz
+            if finest > 1.0:  # a step's finest detail, unseen in the shot: the shot pays for it
+                loss += UNSEEN * max(0.0, math.log2(finest) - lz)
             cost = best[s] + moves[s] + loss
             if cost < best[t + 1]:
                 best[t + 1], start[t + 1] = cost, s
@@ -397,12 +456,13 @@ def step_views(scene: Scene, full: View, bbox: Box, px: Callable[[float, float],
         return ((x - ox) / scale, (oy - y) / scale)
 
     focus = [to_px(b) for b in step_focus(scene)]
+    zooms = step_zooms(scene, framing, px)
     out: list[View] = []
-    for first, last in shots(scene, focus, framing):
+    for first, last in shots(scene, focus, framing, zooms):
         u: Box | None = None
         for k in range(first, last + 1):
             u = _union(u, focus[k - 1])
-        v = framing.view(u) if scene.steps[first - 1].group else full
+        v = framing.view(u, max_zoom=max([MAX_ZOOM] + zooms[first - 1:last])) if scene.steps[first - 1].group else full
         out.extend([v] * (last - first + 1))
     out[0] = full
     if n > 1:
@@ -432,6 +492,47 @@ def step_views(scene: Scene, full: View, bbox: Box, px: Callable[[float, float],
                     break
                 b = grown
             out[-1] = v
+    return out
+
+
+#: A step's work is a sliver where its region is thinner on the screen than this (px) and at least
+#: :data:`SLIVER_RATIO` times as long: no view of the window's shape shows both its length and its
+#: thickness, so the player shows the thickness in an inset (:func:`step_insets`).
+SLIVER_PX = 10.0
+SLIVER_RATIO = 5.0
+#: The inset's window on the screen (px) and how thick the sliver is made there at least.
+INSET_PX = (300.0, 210.0)
+INSET_DETAIL_PX = 28.0
+
+
+def step_insets(scene: Scene, views: Sequence[View], px: Callable[[float, float], tuple[float, float]]) -> list[View | None]:
+    """Per step, the region (canvas px, x y w h) the player shows magnified in an inset, or None.
+
+    A step working on a sliver -- the thin rectangle O r₁ of a disc 0,02 r₁ thick, a pressure of 0,15 at
+    laid off over a stroke of 24 cm -- is seen whole in its view only a few pixels thick.  The inset
+    shows the place where the step makes its point (or the point its line is aimed at) magnified until
+    the sliver is :data:`INSET_DETAIL_PX` thick, while the view keeps its whole length in sight.
+    """
+    drawn = {m.name: m for m in scene.marks}
+    focus = step_focus(scene)
+    out: list[View | None] = []
+    for s, f, v in zip(scene.steps, focus, views):
+        box = None
+        if f is not None and s.group:
+            (x0, y1), (x1, y0) = px(f[0], f[1]), px(f[2], f[3])
+            q = min(PLAYER_FIGURE_PX[0] / v[2], PLAYER_FIGURE_PX[1] / v[3])  # screen px per canvas px
+            thin, long = min(x1 - x0, y1 - y0) * q, max(x1 - x0, y1 - y0) * q
+            if 0.75 < thin < SLIVER_PX and long >= SLIVER_RATIO * thin:  # (points on one line are no sliver)
+                own = [drawn[n].geom for n in s.outputs if n in drawn and drawn[n].kind is MarkKind.POINT]
+                if not own:
+                    own = [drawn[n].geom for n in s.inputs if n in drawn and drawn[n].kind is MarkKind.POINT][-1:]
+                if own:
+                    cx = sum(px(*p)[0] for p in own) / len(own)
+                    cy = sum(px(*p)[1] for p in own) / len(own)
+                    m = min(max(INSET_DETAIL_PX / max(thin, 0.5), 2.0), 16.0)  # the inset's magnification
+                    w, h = INSET_PX[0] / (q * m), INSET_PX[1] / (q * m)
+                    box = (round(cx - w / 2, 2), round(cy - h / 2, 2), round(w, 2), round(h, 2))
+        out.append(box)
     return out
 
 

@@ -100,6 +100,8 @@ class Placing:
         #: name tags: {point id: (dx, dy, distance in letter heights)}, and the levels each gives way at
         self.tag_spots: dict[str, tuple[float, float, float]] = {}
         self.tag_hidden: dict[str, str] = {}
+        #: the levels a name tag stands elsewhere at: {point id: {level: (dx, dy, distance)}}
+        self.tag_moves: dict[str, dict[int, tuple[float, float, float]]] = {}
 
     def labels(self) -> tuple[PlacedLabel, ...]:
         """Every placed letter of the whole figure, in mark order, as data (:class:`PlacedLabel`)."""
@@ -151,7 +153,7 @@ class Placing:
         for m in [m for k in ks for s in {k} | set(input_steps(k)) for m in by_step.get(s, ())
                   if f" h{lvl}" not in self.tag_hidden.get(m.id, "")]:
             px, py = self.vp.px(*m.geom)
-            dx, dy, _d = self.tag_spots[m.id]
+            dx, dy, _d = self.tag_moves.get(m.id, {}).get(lvl) or self.tag_spots[m.id]
             b = label_box(px + dx, py + dy, sc.display_name(m.name), st.label_size, st.label_font,
                           st.label_italic)
             out.append(((px, py, b[0] - px, b[1] - py, b[2] - px, b[3] - py), m.step in ks))
@@ -449,6 +451,7 @@ class Placing:
         # every level a tag is seen at: it holds its spot there, or it gives way there (class hN),
         # never stacked on a letter, a point, a result line or a tag seen with it
         hidden: dict[str, str] = {}
+        moves: dict[str, dict[int, tuple[float, float, float]]] = {}
         for lvl in sorted({v for vs in shown_at.values() for v in vs}):
             z, f, taken = frame(lvl)
             here = [byid[i] for i in out if lvl in shown_at[byid[i].step]]
@@ -467,6 +470,7 @@ class Placing:
 
             holds = kept(got, items)
             arrays = None
+            losers = []
             for it in items:
                 i = it[0]
                 if i in holds:
@@ -512,8 +516,24 @@ class Placing:
                     if free:
                         holds.add(i)  # the tags it is seen with after it are placed with it
                         continue
-                hidden[i] = hidden.get(i, "") + f" h{lvl}"
+                losers.append(it)
+            if losers:
+                # a tag with no room at its spot stands elsewhere at this level, clear of the letters and of the
+                # tags that hold theirs (a step's caption names it: it is never left out while there is room)
+                held = [label_box(o[3][0] + prefer[o[0]][0], o[3][1] + prefer[o[0]][1], o[5], size * f, st.label_font,
+                                  st.label_italic, HALO_PX / 2 * f) for o in items if o[0] in holds]
+                again = place(losers, size * f, ds, self._lines_at(z, size * f), only=only, font=st.label_font,
+                              italic=st.label_italic, taken=taken + held, keep=False, halo=HALO_PX / 2 * f,
+                              reach=self.line_reach)
+                for it in losers:
+                    i, (zx, zy) = it[0], it[3]
+                    spot = again.get(i)
+                    if spot is None:
+                        hidden[i] = hidden.get(i, "") + f" h{lvl}"
+                    else:
+                        moves.setdefault(i, {})[lvl] = ((spot[0] - zx) / f, (spot[1] - zy) / f, spot[2])
         self.tag_hidden = hidden
+        self.tag_moves = moves
         self.tag_spots = out
 
     def _obstacle_arrays(self) -> tuple[Any, Any]:

@@ -92,6 +92,10 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
     dwg.add(f.style("\n" + style.css() + "\n" + group_css(style) + "\n" + (d.extra_css + "\n" if d.extra_css else "")))
     dwg.add(f.rect(insert=("-10000", "-10000"), size=("20000", "20000"), fill=style.background))
     for layer in d.LAYERS:
+        if layer == "labels" and style.ring_px:
+            # the ring round a small current mark, under the letters: a letter's halo opens it, never the
+            # ring a letter
+            dwg.add(f.circle(center=("0", "0"), r="0", class_="ring", id="ring", visibility="hidden"))
         lg = f.g(id=layer)
         for group in d.plain_groups(layer):
             lg.add(group)
@@ -99,8 +103,9 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
     furniture = d.furniture()  # the broken axis's marks (and a plate's furniture)
     if furniture is not None:
         dwg.add(furniture)
-    if style.ring_px:
-        dwg.add(f.circle(center=("0", "0"), r="0", class_="ring", id="ring", visibility="hidden"))
+    insets = any(z is not None for z in d.insets)
+    if insets:  # where the inset magnifies (the player moves it)
+        dwg.add(f.rect(insert=("0", "0"), size=("0", "0"), class_="insetbox", id="insetbox", visibility="hidden"))
     svg = d.doc.markup(dwg)
     # Group captions and camera views are shared by runs of steps: each is stored once, steps point to it.
     groups: dict[str, int] = {}
@@ -116,6 +121,9 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         inputs = sorted(d.input_steps(s.index))
         if inputs:  # the steps that made what this step's instrument is set on
             st["i"] = inputs
+        inset = d.insets[s.index - 1]
+        if inset is not None:  # a sliver: its place magnified beside the view
+            st["z"] = list(inset)
         steps.append(st)
     from .camera import ZOOM_LEVELS
 
@@ -134,7 +142,7 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         ("{{STYLE}}", html.escape(style.name)),
         ("{{GIVENS}}", givens_rows),
         ("{{STEPLIST}}", _step_list(scene)),
-        ("{{SVG}}", svg),
+        ("{{SVG}}", svg + (_INSET if insets else "")),
         ("{{DATA}}", json_for_script(data)),
         ("{{PAGE_BG}}", "#f7f3ea" if style.name == "historical" else "#f4f5f7"),
         ("{{SPEEDS}}", _speed_options(data["dt"] / 1000)),
@@ -158,6 +166,13 @@ def _show(v: Any) -> str:
     return str(v)
 
 
+#: The inset of a sliver (:func:`construct.render.camera.step_insets`): the figure's lines and areas again,
+#: magnified (its own <use> of the figure's layers, which show each step as the figure does); letters and
+#: points stay in the view beside it.
+_INSET = ('\n<svg id="inset" xmlns="http://www.w3.org/2000/svg" viewBox="0 0 1 1" role="img" '
+          'aria-label="magnified">\n<use href="#areas"/><use href="#construction"/><use href="#results"/>\n'
+          '<circle id="inset-pt" cx="0" cy="0" r="0"/>\n</svg>')
+
 _TEMPLATE = """<!DOCTYPE html>
 <html lang="de">
 <head>
@@ -170,7 +185,10 @@ header{padding:10px 16px 4px}
 h1{font-size:18px;margin:0}
 h1 .en{display:block;font-size:14px;font-weight:normal;color:#555}
 main{display:flex;gap:12px;padding:8px 16px;align-items:flex-start}
-#stage{flex:1 1 auto;min-width:0}
+#stage{flex:1 1 auto;min-width:0;position:relative}
+#inset{position:absolute;top:8px;right:8px;width:300px;height:210px;background:#fff;border:1px solid #888;display:none}
+.insetbox{fill:none;stroke:#888;stroke-width:1px;stroke-dasharray:4 3;vector-effect:non-scaling-stroke}
+#inset-pt{fill:#e8590c}
 #figure{width:100%;height:auto;aspect-ratio:985/700;max-height:70vh;border:1px solid #ccc;background:#fff;display:block}
 #figure .lbg>*,#figure .pt{--ls:1;transform:scale(var(--ls))}
 #controls{display:flex;gap:6px;align-items:center;margin:8px 0;flex-wrap:wrap}
@@ -372,6 +390,19 @@ li a.later{color:#bbb}
     // the camera: the step's view (the whole figure at the ends or without the magnifier), reached smoothly
     var view = st && zoom.checked ? data.views[st.v] : full;
     zoomLevel(view, box);
+    var inset = document.getElementById("inset"), ibox = document.getElementById("insetbox");
+    if (inset) {  // a sliver's place magnified beside the view
+      var z = st && zoom.checked && k < n ? st.z : null;
+      inset.style.display = z ? "block" : "none";
+      ibox.setAttribute("visibility", z ? "visible" : "hidden");
+      if (z) {
+        inset.setAttribute("viewBox", z.join(" "));
+        var dot = document.getElementById("inset-pt");  // the place the step works at, in the middle
+        dot.setAttribute("cx", z[0] + z[2] / 2); dot.setAttribute("cy", z[1] + z[3] / 2); dot.setAttribute("r", z[2] / 70);
+        ibox.setAttribute("x", z[0]); ibox.setAttribute("y", z[1]);
+        ibox.setAttribute("width", z[2]); ibox.setAttribute("height", z[3]);
+      }
+    }
     ringAt = st && k < n ? (st.r || null) : null;
     move(view);
     var cur = links[k - 1];

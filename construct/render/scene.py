@@ -40,6 +40,9 @@ __all__ = ["Mark", "MarkKind", "Scene", "build_scene", "label_offset_direction",
            "fanned_lines", "letter_point", "break_shift"]
 
 TWO_PI = 2.0 * math.pi
+#: A word of a caption written in the figure's letters that may name a point (a letter with what follows it).
+#: (Not a letter of a formula: F/f, r/L, r·cos.)
+_LETTERED = re.compile(r"(?<![\w′'″/·])[A-Za-zΑ-Ωα-ω][A-Za-z0-9Α-Ωα-ω′'″₀-₉∞]*(?![/·])")
 #: What a letter of the figure looks like (:meth:`Scene.tag_shown`): a letter, a number below 20 or
 #: two digits with a prime, subscripts, primes.
 FIGURE_LETTER = re.compile(r"[A-Za-zΑ-Ωα-ω](?:[01]?[0-9])?[′″'₀-₉]*|[0-9]{1,2}[′″']?")
@@ -331,11 +334,59 @@ class Scene:
         if not 1 <= k <= len(self.steps):
             return frozenset()
         s = self.steps[k - 1]
-        names = set(s.outputs) | set(s.inputs) | self._reader.mentioned(s.caption.de) | self._reader.mentioned(s.caption.en)
+        names = set(s.outputs) | set(s.inputs) | self.named(k)
         for n in s.inputs:
             if n in self._reader.objects and n not in self._reader.points:
                 names.update(self._reader.curve_points(n))
         return frozenset(n for n in names if n in self._reader.points)
+
+    def named(self, k: int) -> frozenset[str]:
+        """The points step k's caption names (and its group's title, in a protocol written in letters)."""
+        if not 1 <= k <= len(self.steps):
+            return frozenset()
+        s = self.steps[k - 1]
+        if self.params.get("captions") == "letters":  # the caption names points by their letters
+            got = self._named_points(k)
+        else:
+            got = self._reader.mentioned(s.caption.de) | self._reader.mentioned(s.caption.en)
+        return frozenset(n for n in got if n in self._reader.points)
+
+    def _named_points(self, k: int) -> set[str]:
+        """The points step k's caption and its group's title (written in the figure's letters) name by a letter
+        or a tag.
+
+        A tag may stand for several helpers (the F of every trisection): the caption means the one of its
+        own group, made by then (the latest of them); a helper of another top-level group is another F.  A
+        lettered point is the figure's, whatever its group.
+        """
+        s = self.steps[k - 1]
+        out: set[str] = set()
+        # the step's caption and its group's title (the innermost, which the player shows with it)
+        group = self.group_captions[s.group].rsplit(" › ", 1)[-1] if s.group else ""
+        for token in set(_LETTERED.findall(s.caption.de)) | set(_LETTERED.findall(s.caption.en)) | set(
+                _LETTERED.findall(group)):
+            best = None
+            for step, name, group, lettered in self._by_letter.get(token, ()):
+                if step > k:
+                    break
+                shared = 0
+                while shared < min(len(group), len(s.group)) and group[shared] == s.group[shared]:
+                    shared += 1
+                if (lettered or shared) and (best is None or shared >= best[0]):
+                    best = (shared, name)
+            if best is not None:
+                out.add(best[1])
+        return out
+
+    @functools.cached_property
+    def _by_letter(self) -> dict[str, list[tuple[int, str, tuple[str, ...], bool]]]:
+        """The points by the letter or tag a caption names them by: (step made, name, group, lettered?), in step
+        order."""
+        out: dict[str, list[tuple[int, str, tuple[str, ...], bool]]] = collections.defaultdict(list)
+        for m in self.marks:
+            if m.kind is MarkKind.POINT and m.name in self._reader.points:
+                out[m.label or self.display_name(m.name)].append((m.step, m.name, m.group, bool(m.label)))
+        return out
 
     @functools.cached_property
     def _drawn(self) -> dict[str, Mark]:

@@ -132,10 +132,11 @@ class Style:
         if self.highlight:
             # ``cur`` and ``old`` sit on a step's group (frames are views of the layered figure)
             rules.append(f".cur>*{{stroke:{self.highlight};stroke-width:{fmt(self.highlight_width)}}}")
-            # a point is small: the current one gets a halo in the highlight colour, 16 units across or more with
-            # its dot (12.5 px on the screen at the player's smallest letter scale): seen at once
-            rules.append(f".cur>.pt{{fill:{self.highlight};stroke:{self.highlight};stroke-width:13;"
-                         f"stroke-opacity:0.35}}")
+            # a point is small: the current one gets a halo in the highlight colour, 18 units across or more with
+            # its dot (14 px on the screen at the player's smallest letter scale), stronger than any line the
+            # step is set on: the current mark is the loudest thing in view
+            rules.append(f".cur>.pt{{fill:{self.highlight};stroke:{self.highlight};stroke-width:16;"
+                         f"stroke-opacity:0.55}}")
             rules.append(f".cur .lb{{fill:{self.highlight};stroke:none}}")
         rules.append(f".inset{{fill:{self.background};stroke:{self.construction};stroke-width:0.8}}")
         if self.done_opacity <= 0.0:
@@ -144,7 +145,8 @@ class Style:
             rules.append(f".done{{opacity:{fmt(self.done_opacity)}}}")
         if self.input_colour:
             ic = self.input_colour
-            rules.append(f".inp>*{{stroke:{ic};stroke-width:{fmt(0.7 * self.highlight_width)}}}")
+            # what the instrument is set on, marked, but thinner than the current step's own line
+            rules.append(f".inp>*{{stroke:{ic};stroke-width:{fmt(0.5 * self.highlight_width)}}}")
             rules.append(f".inp>.pt{{fill:{ic};stroke:{ic};stroke-width:2}}")
             rules.append(f".inp .lb{{fill:{ic};stroke:none}}")
         if self.name_tags:

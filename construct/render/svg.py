@@ -36,7 +36,7 @@ from typing import Any, Callable, Sequence
 from . import captions as _captions
 from . import svgdoc
 from .camera import (FINAL_CONTEXT, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, clear_edges, clear_tag_edges, level,
-                     player_letter_scale, ring_round, step_views, zoom_of)
+                     player_letter_scale, ring_round, step_insets, step_views, zoom_of)
 from .captions import Captions
 from .lettering import HALO_PX, LEADER_FROM, label_box, text_width
 from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
@@ -177,6 +177,15 @@ class Drawing:
             self.__dict__["_views"] = got
         return got
 
+    @property
+    def insets(self) -> list[tuple[float, float, float, float] | None]:
+        """Per step, the region the player magnifies in an inset (:func:`construct.render.camera.step_insets`)."""
+        got = self.__dict__.get("_insets")
+        if got is None:
+            got = self.__dict__["_insets"] = (step_insets(self.scene, self.views, self.vp.px) if self.style.camera
+                                              else [None] * len(self.scene.steps))
+        return got
+
     def labels(self) -> tuple[PlacedLabel, ...]:
         """Every letter of the whole figure where it stands (:meth:`construct.render.placing.Placing.labels`)."""
         return self.placing.labels()
@@ -304,9 +313,15 @@ class Drawing:
             tag = self.placing.tag_spots.get(m.id) if vp is self.vp else None
             if tag is not None:
                 # Shown only while its step is current or an input (CSS), placed clear of the letters.
-                # no id of its own: it is its point's name, and a gallery carries thousands of them
-                yield "labels", self._letter(vp, m, tag, self.scene.display_name(m.name), "lb tag", {}, halo=False,
-                                             extra=self.placing.tag_hidden.get(m.id, "") + out)
+                # no id of its own: it is its point's name, and a gallery carries thousands of them; at a zoom
+                # level where its spot is taken it stands elsewhere, a copy of its own there (lvN, the other mN)
+                name = self.scene.display_name(m.name)
+                moves = self.placing.tag_moves.get(m.id, {})
+                yield "labels", self._letter(vp, m, tag, name, "lb tag", {}, halo=False,
+                                             extra=self.placing.tag_hidden.get(m.id, "") + out
+                                             + "".join(f" m{lvl}" for lvl in sorted(moves)))
+                for lvl, rel in sorted(moves.items()):
+                    yield "labels", self._letter(vp, m, rel, name, "lb tag", {}, halo=False, extra=f" lv{lvl}{out}")
             if m.label and end:
                 # an end state's own letter: it stands where the end state's placing set it, or nowhere
                 rel = self.placing.end_spots.get(m.id)
@@ -592,9 +607,13 @@ class Drawing:
         """The drawing shown through step k's view, with the ring round a small current mark (the last step:
         the end state, when the scene has one)."""
         outer, inner = self.camera_group(self.camera_view(k), fin=self.end is not None and k == len(self.scene.steps))
-        for e in elems:
-            inner.add(e)
         ring = self.ring(k)
+        for e in elems:
+            if ring is not None and getattr(e, "attribs", {}).get("id") == "labels":
+                # under the letters: a letter's halo opens the ring, never the ring a letter
+                inner.add(self.doc.factory.circle(center=(fmt(ring[0]), fmt(ring[1])), r=fmt(ring[2]), class_="ring"))
+                ring = None
+            inner.add(e)
         if ring is not None:
             inner.add(self.doc.factory.circle(center=(fmt(ring[0]), fmt(ring[1])), r=fmt(ring[2]), class_="ring"))
         return outer

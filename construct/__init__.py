@@ -40,7 +40,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from .constructions import Construction, get, names
+from .constructions import Construction, find, get, names
 from .kernel.errors import (ConstructError, ConstructWarning, DegenerateObject, DuplicateName, GeometryError,
                             HiddenLabelWarning, InvalidParameter, MissingGiven, NoIntersection, OutputError,
                             ProtocolFormatError, RuleError, StepError, UnknownConstruction, UnknownObject, WrongInput)
@@ -114,7 +114,11 @@ def write_replay(figure: Figure, out_dir, *, style: str = "plain", frames: str =
 
     if frames not in ("auto", "all", "groups", "none"):
         raise InvalidParameter(f"frames is one of auto, all, groups, none; got {frames!r}")
-    return _write(None, _figure(figure, "write_replay"), out_dir, style=style, frames=frames)
+    fig = _figure(figure, "write_replay")
+    book = find(fig.protocol.construction)
+    # captioned as its book writes it when a book construction built or replayed it (it checks the figure)
+    return _write(book if book is not None and fig.checker == book.check else None, fig, out_dir, style=style,
+                  frames=frames)
 
 
 def _figure(figure: Any, what: str) -> Figure:

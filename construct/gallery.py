@@ -47,7 +47,7 @@ from .constructions.checking import summary
 from .constructions import get, names
 from .io.manifest import foreign_entries
 from .io.staging import replaced_folder, write_text
-from .render.output import params_text, write_outputs
+from .render.output import write_outputs
 from .render.notation import citation
 from .render.notation import givens as book_givens
 from .render.styles import STYLES
@@ -65,7 +65,7 @@ FRAME_MODE = "none"
 #: the animation and storyboard of `construct replay` carry the same elements again); the historical
 #: style is the plate (the construction's views in the plate's ink would double the gallery).
 GALLERY_OUTPUTS = {"historical": (), "teaching": ("player",)}
-#: The constructions whose gallery player has a live rod-ratio slider (construct.constructions.live): the crank
+#: The constructions whose gallery player has a live rod-ratio slider (construct.live): the crank
 #: and the inertia curve, the two the issue names; the live data adds 0.1-0.3 MB a player (and a sweep of
 #: 1-3 s to the build), and the gallery stays under its 15 MB.  `construct replay NAME --live` gives any
 #: construction with a rod ratio its slider.
@@ -189,7 +189,7 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
     if first:
         write_text(edir / "protocol.json", fig.protocol.to_json(fig.replay))
     checks = c.checks(fig)
-    write_text(edir / "checks.md", _checks_md(f"{c.title.en} ({book_givens(fig)[1] or params_text(fig)})", checks))
+    write_text(edir / "checks.md", _checks_md(f"{c.title.en} ({book_givens(fig, c)[1]})", checks))
     write_text(edir / "checks.json", json.dumps(
         {"construction": name, "params": params, "summary": summary(checks),
          "ok": all(ch.ok for ch in checks), "checks": [ch.as_dict() for ch in checks]},
@@ -208,16 +208,16 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
                         "files": sorted(files), "steps": info["steps"], "frames": info["frames"],
                         "frame_mode": FRAME_MODE})
     row = {"number": number, "name": name, "slug": slug, "params": params, "title": c.title,
-           "source": citation(name, "en") or c.source, "method": _method(fig), "checks": summary(checks),
+           "source": citation(c, "en") or c.source, "method": _method(fig), "checks": summary(checks),
            "ok": all(ch.ok for ch in checks), "steps": len(fig.protocol.steps),
-           "params_text": book_givens(fig)[1] or params_text(fig), "player": first}
+           "params_text": book_givens(fig, c)[1], "player": first}
     return entries, row
 
 
 def _live(c, fig, style: str) -> tuple[dict[str, Any] | None, Any]:
     """The live data of a gallery player (a slider for each continuous given the construction can sweep) and
     the figure's drawing, laid out once for the sweep's camera views and the player."""
-    from .constructions.live import live_data, live_givens, live_sweep
+    from .live import live_data, live_givens, live_sweep
     from .render.output import scene_for
     from .render.svg import Drawing
 

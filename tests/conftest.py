@@ -9,17 +9,101 @@
 * ``small_plan``: ``construct gallery`` builds one small figure without a live
   player's sweep, for the tests about the gallery's folder (tests/test_gallery.py
   has its own, with the sweep).
+
+Two things hold for every test without being asked for:
+
+* **It leaves no trace in the process** (``_leaves_the_process_as_it_found_it``):
+  mpmath's precision, the signal handlers, the working folder, the environment,
+  numpy's error handling, the locale, ``sys.path`` and the file-size limit are
+  the same after each test as before the session -- so that the suite passes
+  serially, in parallel and shuffled.  A test module whose mpmath references
+  work at 30 digits says ``MPMATH_DPS = 30`` (each of its tests then runs under
+  ``mpmath.workdps(30)``), never ``mpmath.mp.dps = 30``.
+* **Hypothesis searches as far as the profile says.**  Locally (the README's
+  test command) the ``dev`` profile; in CI (``CI`` set, as CI services set it)
+  the ``ci`` profile, five times as many examples; ``HYPOTHESIS_PROFILE``
+  chooses either.  A property test whose count is a matter of cost asks for a
+  multiple of the profile's count (``settings.default.max_examples``), so that
+  every property still runs here, with its pinned ``@example`` cases, and CI
+  keeps the full search.
 """
 
 from __future__ import annotations
 
+import locale
 import os
+import resource
 import shutil
+import signal
+import sys
+import tempfile
 from pathlib import Path
 from typing import Any, Callable, NamedTuple
 
+import mpmath
 import numpy as np
 import pytest
+from hypothesis import settings
+from hypothesis.configuration import set_hypothesis_home_dir
+
+# -- Hypothesis: how far the property tests search -----------------------------------------------------------
+
+# No test writes into the checkout, Hypothesis neither: its home (by default .hypothesis in the working folder,
+# where it caches the constants it reads from the sources) is a folder of the system's temporary files, and
+# there is no example database (a failing example is printed with the failure, and pinned with @example when
+# it is fixed).
+set_hypothesis_home_dir(Path(tempfile.gettempdir()) / "construct-tests-hypothesis")
+settings.register_profile("ci", max_examples=100, database=None)   # Hypothesis's own default count
+settings.register_profile("dev", max_examples=20, database=None)
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE") or ("ci" if os.environ.get("CI") else "dev"))
+
+
+# -- no test leaves a trace in the process ------------------------------------------------------------------
+
+_SIGNALS = tuple(getattr(signal, n) for n in ("SIGINT", "SIGTERM", "SIGHUP") if hasattr(signal, n))
+
+
+def _process_state() -> dict[str, Any]:
+    """What a test could change for every test after it (in the same worker process)."""
+    return {
+        "mpmath precision": mpmath.mp.prec,
+        "signal handlers": [signal.getsignal(s) for s in _SIGNALS],
+        "working folder": os.getcwd(),
+        "environment": {k: v for k, v in os.environ.items() if k != "PYTEST_CURRENT_TEST"},  # pytest's own
+        "numpy error handling": np.geterr(),
+        "locale": locale.setlocale(locale.LC_ALL),
+        "sys.path": list(sys.path),
+        "file-size limit": resource.getrlimit(resource.RLIMIT_FSIZE),
+    }
+
+
+_BEFORE_THE_SESSION = _process_state()
+
+
+@pytest.fixture(autouse=True)
+def _leaves_the_process_as_it_found_it():
+    """Each test finds the process as it was before the session, and leaves it so (checked after its own
+    fixtures, monkeypatch's included, have been torn down: this fixture is set up first)."""
+    before = _process_state()
+    changed = [k for k in before if before[k] != _BEFORE_THE_SESSION[k]]
+    assert not changed, f"an earlier test or a test module's import changed {', '.join(changed)}"
+    yield
+    after = _process_state()
+    changed = [k for k in after if after[k] != before[k]]
+    assert not changed, f"the test changed {', '.join(changed)}: " + "; ".join(
+        f"{k} {before[k]!r} -> {after[k]!r}" for k in changed)[:2000]
+
+
+@pytest.fixture(autouse=True)
+def _mpmath_digits(request):
+    """A test module's ``MPMATH_DPS``: the digits its mpmath references work at, for each of its tests
+    (``mpmath.workdps``: restored after the test, whatever it raised)."""
+    dps = getattr(request.module, "MPMATH_DPS", None)
+    if dps is None:
+        yield
+        return
+    with mpmath.workdps(dps):
+        yield
 
 
 class Run(NamedTuple):

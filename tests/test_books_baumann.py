@@ -15,7 +15,7 @@ from construct.books.errata import CLASSES, all_errata
 from construct.books.baumann.errata import entries
 from construct.books.baumann import printed as seed004
 
-mpmath.mp.dps = 20
+MPMATH_DPS = 20  # the digits of the mpmath references: each test runs under mpmath.workdps (conftest.py)
 
 
 @pytest.fixture(scope="module")

@@ -12,7 +12,7 @@ from construct.cli.main import main
 from construct.kernel.errors import InvalidParameter
 from construct.books.baumann import printed as seed004
 
-mpmath.mp.dps = 30
+MPMATH_DPS = 30  # the digits of the mpmath references: each test runs under mpmath.workdps (conftest.py)
 
 
 @pytest.fixture(scope="module")

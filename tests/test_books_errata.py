@@ -19,6 +19,7 @@ from construct.books.errata import CLASSES, WRONG, all_errata, classify, errata,
 from construct.kernel.errors import InvalidParameter
 from construct.books.anhang_ii import printed as seed000
 
+MPMATH_DPS = 30  # the digits of the mpmath references: each test runs under mpmath.workdps (conftest.py)
 UNITS_TOL = 0.01  # units are compared after the hand computation's 7-digit rounding
 
 
@@ -235,8 +236,6 @@ def test_formula_misprints_of_the_tangent_section(by_key):
 
 # --------------------------------------------------------------------------
 # True values on an independent path (mpmath, 30 digits).
-
-mpmath.mp.dps = 30
 
 
 def test_table_1_true_values_against_mpmath():

@@ -13,7 +13,7 @@ from construct.cli.main import main
 from construct.books.handbook.errata import entries
 from construct.books.handbook import printed as seed001
 
-mpmath.mp.dps = 30
+MPMATH_DPS = 30  # the digits of the mpmath references: each test runs under mpmath.workdps (conftest.py)
 
 
 @pytest.fixture(scope="module")

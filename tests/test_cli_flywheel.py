@@ -14,7 +14,7 @@ from construct.books.baumann import flywheel as fw
 from construct.books.baumann import printed as seed004
 from construct.cli.main import main
 
-mpmath.mp.dps = 30
+MPMATH_DPS = 30  # the digits of the mpmath references: each test runs under mpmath.workdps (conftest.py)
 
 
 def _json(capsys, argv):

@@ -15,7 +15,7 @@ from construct.constructions import get
 from construct.constructions.four_stroke import pressure, volume
 from construct.kernel.errors import InvalidParameter
 
-mpmath.mp.dps = 30
+MPMATH_DPS = 30  # the digits of the mpmath references: each test runs under mpmath.workdps (conftest.py)
 
 
 def piston(theta, k):

@@ -25,7 +25,7 @@ from construct.constructions.indicator import (
 from construct.kernel.errors import InvalidParameter
 from construct.kernel.instruments import Builder
 
-mpmath.mp.dps = 30
+MPMATH_DPS = 30  # the digits of the mpmath references: each test runs under mpmath.workdps (conftest.py)
 INDICATOR = get("indicator-diagram")
 
 

@@ -17,7 +17,7 @@ from construct.constructions.indicator_card import CLOSE_TOLERANCE, load_indicat
 from construct.io.reading import read_bounded_text
 from construct.kernel.errors import InputFileError
 
-mpmath.mp.dps = 30
+MPMATH_DPS = 30  # the digits of the mpmath references: each test runs under mpmath.workdps (conftest.py)
 
 #: Cover side: steam line straight from 8 at at x = 0 to 2 at at x = 1; exhaust at 1 at, straight back.
 STRAIGHT = "x,p\n0,8\n0.5,5\n1,2\n1,1\n0.5,1\n0,1\n0,8\n"

@@ -22,7 +22,7 @@ from construct.constructions.inertia import (
 from construct.kernel.errors import InvalidParameter
 from construct.kernel.protocol import Protocol
 
-mpmath.mp.dps = 30
+MPMATH_DPS = 30  # the digits of the mpmath references: each test runs under mpmath.workdps (conftest.py)
 INERTIA = get("inertia-curve")
 
 

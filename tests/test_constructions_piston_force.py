@@ -32,14 +32,15 @@ from construct.constructions.piston_force import (
 )
 from construct.kernel.errors import InvalidParameter
 
-mpmath.mp.dps = 30
+MPMATH_DPS = 30  # the digits of the mpmath references: each test runs under mpmath.workdps (conftest.py)
 PF = get("piston-force")
-G_HP, G_LP, N, R, L = 830, 990, 50, mpmath.mpf("0.4"), mpmath.mpf("2.0")
-LAM = R / L
-#: Tafel I as printed (seed 001): F' = 1546,25 cm², F'' = 1511,89 cm²
-F1, F2 = mpmath.mpf("1546.25"), mpmath.mpf("1511.89")
-#: the plate's high-pressure diagram (piston_force.HP_DIAGRAM), written out: admission P over P0 absolute
-P, P0, S1, S0, S3 = 7, 2, mpmath.mpf("0.3"), mpmath.mpf("0.08"), mpmath.mpf("0.15")
+with mpmath.workdps(MPMATH_DPS):  # the constants at the references' digits, the process's mpmath left alone
+    G_HP, G_LP, N, R, L = 830, 990, 50, mpmath.mpf("0.4"), mpmath.mpf("2.0")
+    LAM = R / L
+    #: Tafel I as printed (seed 001): F' = 1546,25 cm², F'' = 1511,89 cm²
+    F1, F2 = mpmath.mpf("1546.25"), mpmath.mpf("1511.89")
+    #: the plate's high-pressure diagram (piston_force.HP_DIAGRAM), written out: admission P over P0 absolute
+    P, P0, S1, S0, S3 = 7, 2, mpmath.mpf("0.3"), mpmath.mpf("0.08"), mpmath.mpf("0.15")
 
 
 def A_mp():
@@ -208,18 +209,18 @@ def test_the_area_integrals_on_arrays_equal_the_scalar_integrands_point_by_point
 
     import numpy as np
 
-    from construct.constructions import piston_force as pf
+    from construct.constructions.piston_force import analytic as pf
 
     xs, ws = np.polynomial.legendre.leggauss(20)
     for lam in (1 / 1.05, 0.2, 0.02):
-        for scalar, array in ((pf._two_term, pf._two_term_array), (pf._exact_accel, pf._exact_accel_array)):
+        for scalar, array in ((pf.two_term, pf._two_term_array), (pf.exact_acceleration, pf._exact_accel_array)):
             def one(w, f=scalar):
                 return f(w, lam) * pf._dx_dw(w, lam)
             h = math.pi / 16
             by_node = sum(w * one(i * h + (x + 1.0) * h / 2.0) for i in range(16) for x, w in zip(xs, ws)) * h / 2
             on_array = pf._gauss(lambda w, f=array: f(w, lam) * pf._dx_dw_array(w, lam), 0.0, math.pi)
             assert abs(on_array - by_node) <= 1e-14, (lam, scalar.__name__)
-        we = pf._zero(lambda w: pf._exact_accel(w, lam), 0.0, math.pi)
+        we = pf._zero(lambda w: pf.exact_acceleration(w, lam), 0.0, math.pi)
         acc = pf._gauss(lambda w: pf._exact_accel_array(w, lam) * pf._dx_dw_array(w, lam), 0.0, we)
         x = lambda w: (1 - mpmath.cos(w) + (1 - mpmath.sqrt(1 - lam ** 2 * mpmath.sin(w) ** 2)) / lam) / 2  # noqa: E731
         v_max = mpmath.diff(x, we)  # the speed dx/dw is greatest where the acceleration changes sign
@@ -231,13 +232,13 @@ def test_the_sweeps_model_areas_equal_the_areas_of_each_set():
     """model_areas_sweep (one numpy pass over many rods) gives, set by set, the model areas of area_balance."""
     import numpy as np
 
-    from construct.constructions import piston_force as pf
+    from construct.constructions.piston_force import analytic as pf
 
     g = dict(PF.figure(parts=6).replay.givens)
     lengths = g["crank_radius"] * np.array([1.05, 1.3, 2.0, 5.0, 12.0, 50.0])
     swept = pf.model_areas_sweep({**g, "rod_length": lengths})
     for i, length in enumerate(lengths):
-        one = pf._model_areas({**g, "rod_length": float(length)})
+        one = pf.model_areas({**g, "rod_length": float(length)})
         for key, value in one.items():
             assert abs(swept[key][i] - value) <= 1e-13 * abs(value), (length, key)
 

@@ -25,7 +25,7 @@ from construct.constructions.revolution import (
 )
 from construct.kernel.errors import InvalidParameter
 
-mpmath.mp.dps = 30
+MPMATH_DPS = 30  # the digits of the mpmath references: each test runs under mpmath.workdps (conftest.py)
 TP = get("tangential-pressure")
 
 

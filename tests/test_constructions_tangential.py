@@ -24,7 +24,7 @@ from construct.constructions.tangential import (
 from construct.kernel.errors import InvalidParameter
 from construct.kernel.protocol import Protocol
 
-mpmath.mp.dps = 30
+MPMATH_DPS = 30  # the digits of the mpmath references: each test runs under mpmath.workdps (conftest.py)
 TP = get("tangential-pressure")
 
 
@@ -84,14 +84,11 @@ def _model_summary_mp(K, kappa):
     path = lambda w: (1 - mpmath.cos(w) + (1 - mpmath.sqrt(1 - (lam * mpmath.sin(w)) ** 2)) / lam) / 2  # noqa: E731
     wf = mpmath.findroot(lambda w: path(w) - mpmath.mpf("0.10"), 0.6)
     wc = mpmath.findroot(lambda w: path(w) - mpmath.mpf("0.70"), 1.9)
-    mpmath.mp.dps = 15
-    try:
+    with mpmath.workdps(15):
         mean = mpmath.quad(t, [0, wf, wc, mpmath.pi]) / mpmath.pi
         a1 = mpmath.findroot(lambda w: t(w) - mean, (0.05, wf), solver="bisect")
         a2 = mpmath.findroot(lambda w: t(w) - mean, (wc - 0.2, mpmath.pi - 0.05), solver="bisect")
         excess = mpmath.quad(lambda w: t(w) - mean, [a1, wf, a2])
-    finally:
-        mpmath.mp.dps = 30
     return float(mean), float(a1), float(a2), float(excess)
 
 

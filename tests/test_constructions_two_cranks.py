@@ -331,12 +331,13 @@ def test_first_quadrant_agrees_in_both_conventions():
 
 
 def test_caption_names_the_dead_centre():
-    from construct.render.output import params_text
+    from construct.render.notation import givens
 
-    a = get("two-cranks").figure(rod_ratio=5.0, parts=8)
-    b = get("two-cranks").figure(rod_ratio=5.0, parts=8, dead_centre="head-end")
-    assert "crank-end dead centre B1 (§ 146" in params_text(a) and "B₁" in params_text(a, "de")
-    assert "head-end dead centre" in params_text(b)
+    c = get("two-cranks")
+    a = c.figure(rod_ratio=5.0, parts=8)
+    b = c.figure(rod_ratio=5.0, parts=8, dead_centre="head-end")
+    assert "crank-end dead centre B₁ (§ 146" in givens(a, c)[1] and "äußeren Totlage B₁" in givens(a, c)[0]
+    assert "head-end dead centre" in givens(b, c)[1]
 
 
 def test_table_dead_centre_option(capsys):

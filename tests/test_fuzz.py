@@ -13,7 +13,9 @@ number, empty).  Every run must keep the contract of the README:
   user's file and a folder of notes that --out may point at), and after a
   failure the working folder is exactly as it was.
 
-The runs are derandomised so that CI sees the same cases every time; the
+How many cases each property draws follows the Hypothesis profile
+(conftest.py): CI draws five times as many as the README's command.  The runs
+are derandomised so that CI sees the same cases every time; the
 examples that once found bugs are pinned with ``@example``
 (integers beyond any float in each field that reads a number, a
 trial_chord of ten million parts, lone surrogates in captions and names, a
@@ -201,13 +203,13 @@ def _check_protocol(mutation: Mutation, tmp: Path, command: str) -> None:
         assert "out" not in after, "a failed replay left its output folder behind"
 
 
-@settings(max_examples=300, **SETTINGS)
+@settings(max_examples=3 * settings.default.max_examples, **SETTINGS)  # 300 in CI
 @given(data=st.data())
 def test_check_of_a_mutated_protocol_keeps_the_contract(tmp_path, data):
     _check_protocol(data.draw(mutated_protocol(protocol_text())), tmp_path, "check")
 
 
-@settings(max_examples=100, **SETTINGS)
+@settings(max_examples=settings.default.max_examples, **SETTINGS)  # 100 in CI
 @given(data=st.data())
 def test_replay_of_a_mutated_protocol_keeps_the_contract(tmp_path, data):
     _check_protocol(data.draw(mutated_protocol(protocol_text())), tmp_path, "replay")
@@ -315,7 +317,7 @@ def _populate(work: Path) -> None:
     (work / "notes" / "draft.txt").write_text("a user's draft\n")
 
 
-@settings(max_examples=500, **SETTINGS)
+@settings(max_examples=5 * settings.default.max_examples, **SETTINGS)  # 500 in CI
 @given(argv=command_line())
 @example(argv=["table", "piston-path", "--rod-ratio", "1e16", "--parts", "6"])
 @example(argv=["check", "crank", "--rod-ratio", "1e308"])

@@ -62,7 +62,7 @@ def test_gallery_entry_files_and_index(small_plan, tmp_path):
 
 
 def test_gallery_is_idempotent(small_plan, tmp_path, monkeypatch):
-    # the live player's data is held to the same bytes on its own (tests/test_constructions_live.py), at a
+    # the live player's data is held to the same bytes on its own (tests/test_live.py), at a
     # fraction of a gallery build's sweep
     monkeypatch.setattr(gallery, "LIVE_PLAYERS", ())
     out = tmp_path / "g"

@@ -465,7 +465,8 @@ def small_crank() -> dict:
     return d
 
 
-@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(max_examples=3 * settings.default.max_examples, deadline=None,  # 300 in CI (conftest.py)
+          suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(data=st.data())
 def test_fuzzed_protocols_load_and_replay_or_fail_with_a_construct_error(small_crank, data):
     d = copy.deepcopy(small_crank)

@@ -1,14 +1,17 @@
 """The pytest plugin, used the way the README tells a user to use it, in a fresh project.
 
 The test file of the fresh project *is* the README's example (read from
-README.md, so the documentation cannot drift from what works), run in a
-separate pytest process that finds the plugin through its ``pytest11``
-entry point, as a user's would.
+README.md, so the documentation cannot drift from what works).  Its first run
+is a separate pytest process that finds the plugin through its ``pytest11``
+entry point, as a user's would; the runs after it are pytest sessions of
+their own in this process (``runpytest_inprocess``: the same entry point and
+plugin code, without starting Python, pytest and its plugins five more times).
 """
 
 from __future__ import annotations
 
 import re
+import shutil
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
@@ -59,12 +62,12 @@ def project(pytester: pytest.Pytester) -> pytest.Pytester:
 
 def test_readme_example_in_a_fresh_project(project: pytest.Pytester) -> None:
     # 1. No goldens yet: the test fails and says how to make them.
-    first = project.runpytest_subprocess()
+    first = project.runpytest_subprocess()  # the entry point, as a user's pytest finds it
     first.assert_outcomes(failed=1)
     first.stdout.fnmatch_lines([f"*no goldens for '{NAME}'*--construct-update*"])
 
     # 2. --construct-update writes the layered figure (every step a group) and the protocol, and says so.
-    update = project.runpytest_subprocess("--construct-update")
+    update = project.runpytest_inprocess("--construct-update")
     update.assert_outcomes(passed=1)
     goldens = project.path / "goldens" / NAME
     update.stdout.fnmatch_lines(["*construct goldens written*", f"{goldens}: final.svg, protocol.json"])
@@ -73,13 +76,13 @@ def test_readme_example_in_a_fresh_project(project: pytest.Pytester) -> None:
     steps = {int(g.get("data-step")) for g in layered.iter("{http://www.w3.org/2000/svg}g") if g.get("data-step")}
     # O, D0, D1 given + midpoint of D0D1 (2 circles + their crossing + line + line D0D1 + M) = 9 steps
     assert steps == set(range(1, 10))
-    project.runpytest_subprocess().assert_outcomes(passed=1)
+    project.runpytest_inprocess().assert_outcomes(passed=1)
 
     # 3. One point of the layered golden moved by 0.01: caught, with its step and element named.
     frame = goldens / "final.svg"
     original = frame.read_text(encoding="utf-8")
     frame.write_text(_move_point(original, "s0003-D1", 0.01), encoding="utf-8")
-    failed = project.runpytest_subprocess()
+    failed = project.runpytest_inprocess()
     failed.assert_outcomes(failed=1)
     out = failed.stdout.str()
     assert f"construct golden '{NAME}': 1 of 2 files differ" in out
@@ -101,7 +104,7 @@ def test_readme_example_in_a_fresh_project(project: pytest.Pytester) -> None:
     respelled = _respell(original)
     assert respelled != original and "e+0" in respelled
     frame.write_text(respelled, encoding="utf-8")
-    project.runpytest_subprocess().assert_outcomes(passed=1)
+    project.runpytest_inprocess().assert_outcomes(passed=1)
     assert not page.exists() and not page.parent.exists()  # no empty failures folder left behind
 
     # 5. The README's change: a shorter rod slides the stroke towards the shaft -- a geometric change, not a
@@ -110,7 +113,10 @@ def test_readme_example_in_a_fresh_project(project: pytest.Pytester) -> None:
     source = project.path / "test_stroke.py"
     source.write_text(source.read_text(encoding="utf-8").replace("middle_of_stroke(4.0)", "middle_of_stroke(3.5)")
                       .replace("pytest.approx(4.0)", "pytest.approx(3.5)"), encoding="utf-8")
-    moved = project.runpytest_subprocess()
+    # the edit keeps the file's size, and the runs before may have cached its bytecode within the same second:
+    # a cache that looks current would run the old test
+    shutil.rmtree(project.path / "__pycache__", ignore_errors=True)
+    moved = project.runpytest_inprocess()
     moved.assert_outcomes(failed=1)
     out = moved.stdout.str()
     assert re.search(r"moved +s0002-D0 \(circle, matched by id\): by \d", out), out
@@ -131,5 +137,5 @@ def test_update_drops_stale_frames_and_name_collisions(pytester: pytest.Pytester
     stale = goldens / "steps" / "999.svg"
     stale.parent.mkdir()
     stale.write_text((goldens / "final.svg").read_text(encoding="utf-8"))
-    pytester.runpytest_subprocess("--construct-update")
+    pytester.runpytest_inprocess("--construct-update")
     assert not stale.exists()

@@ -19,7 +19,8 @@ from pathlib import Path
 import pytest
 
 from construct.constructions import get
-from construct.constructions.live import drawn_numbers, inflated, live_data, live_sweep, player_page
+from construct.live import live_data, live_sweep, player_page
+from construct.render.wire import drawn_numbers, inflated
 from construct.gallery import LIVE_PLAYERS, entry_slug, gallery_plan
 from construct.render.live import with_live
 from construct.render.output import write_replay

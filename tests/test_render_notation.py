@@ -160,13 +160,13 @@ def test_the_players_givens_are_in_book_symbols():
     from construct.render.notation import given_rows
 
     fig = _figure("two-cranks", (("infinite_rod", True), ("parts", 12)))
-    rows = given_rows(fig)
+    rows = given_rows(fig, get("two-cranks"))
     page = player_html(build_scene(fig), givens=rows)
     table = page[page.index('<table id="givens">'):]
     table = table[: table.index("</table>")]
     assert not _clean(table), _clean(table)
     assert "infinite_rod" not in table and "magnify" not in table and "unendlich" in table
-    rows = given_rows(_figure("indicator-diagram", ()))
+    rows = given_rows(_figure("indicator-diagram", ()), get("indicator-diagram"))
     assert rows["P"] == "7,85 at / 7.85 at" and rows["P₀"] == "0,15 at / 0.15 at"
 
 

@@ -31,7 +31,7 @@ def _texts(svg: str) -> list[str]:
 def _furniture(name: str, **params):
     c = get(name)
     fig = c.figure(**params)
-    return fig, c.extra["plate"](fig)
+    return fig, c.plate(fig)
 
 
 def test_indicator_diagram_is_one_closed_outline_at_result_weight():

@@ -1,8 +1,8 @@
 """The drawing over a whole sweep at once (render/sweepdraw.py) against the drawing one value at a time.
 
 The reference is the scalar path: the scene of each value and the drawing's own mark geometry
-(``Measure`` of construct.constructions.live, itself held to the player page in
-tests/test_constructions_live.py).  The values spread over the whole stated domain of the rod ratio,
+(``Measure`` of construct.live, itself held to the player page in
+tests/test_live.py).  The values spread over the whole stated domain of the rod ratio,
 past the broken axis and close to L/r = 1.
 """
 
@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from construct.constructions import get
-from construct.constructions.live import Measure
+from construct.live import Measure
 from construct.figure import Figure
 from construct.render.output import scene_for
 from construct.render.styles import STYLES

@@ -114,7 +114,7 @@ def _generic_params() -> dict[str, tuple[Any, str]]:
     out: dict[str, tuple[Any, str]] = {}
     for name in names():
         c = get(name)
-        helps = c.extra.get("help", {})
+        helps = c.help
         for key, default in c.defaults.items():
             if key in covered or key in out:
                 continue

@@ -1,5 +1,14 @@
 """The registry of constructions: each book method by name.
 
+A construction knows itself: how it is built and checked, its parameters and
+their domain, the texts it follows, how its books write its givens, methods
+and conventions, and its plate (:class:`Construction`).  The drawing layer
+reads all of that off the construction and keeps no table of constructions,
+so adding one is adding one module: a module of this package that calls
+:func:`register` is found by :func:`names` and :func:`get`, and so is one of
+another package that names itself under the entry point group
+``construct.constructions``.
+
 >>> sorted(names())[:2]
 ['crank', 'crank-angle']
 >>> get("nonsense")
@@ -12,26 +21,31 @@ from __future__ import annotations
 
 import importlib
 import math
+import pkgutil
+import warnings
 
 import numpy as np
-from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Callable, Mapping
+from dataclasses import dataclass, field, replace
+from typing import Any, Callable, Mapping, Sequence
 
 from .checking import Check, run_checks
+from .domain import ROD_RATIO, Domain
+from .phrases import Cite
 from ..kernel.errors import InvalidParameter, ProtocolFormatError, UnknownConstruction
 from ..kernel.numeric import shown
 from ..figure import Figure
 from ..kernel.protocol import Caption, Protocol
 
-if TYPE_CHECKING:  # the module itself is imported where it is used: 'import construct' loads no construction
-    from .domain import Domain
+__all__ = ["Figure", "Construction", "Cite", "register", "get", "find", "names", "positive", "bounded",
+           "rod_ratio_param", "ENTRY_POINTS"]
 
-__all__ = ["Figure", "Construction", "register", "get", "find", "names", "positive", "bounded", "rod_ratio_param"]
+#: The entry point group under which another package names the modules that register its constructions.
+ENTRY_POINTS = "construct.constructions"
 
 
 @dataclass(frozen=True)
 class Construction:
-    """A book method: how to build it, how to check it, and its parameters."""
+    """A book method: how to build it, how to check it, its parameters, and how its books write it."""
 
     name: str
     title: Caption
@@ -43,7 +57,28 @@ class Construction:
     book_params: tuple[Mapping[str, Any], ...] = ()
     #: Structural params: changing them changes the steps, not just their values.
     structural: tuple[str, ...] = ()
+    #: Anything else a caller keeps with it (read by no one here).
     extra: Mapping[str, Any] = field(default_factory=dict)
+    #: The texts and the figures in them it follows, as a caption cites them.
+    cites: tuple[Cite, ...] = ()
+    #: Its givens as its book writes them, in the book's symbols and units: (figure, "de" or "en") -> phrases
+    #: ("r/L = 1/5", "Halbkreis in 18 Teilen").  None: each given and parameter in turn, by :attr:`symbols`.
+    wording: Callable[[Figure, str], Sequence[str]] | None = None
+    #: How its book writes a given or parameter, "{v}" the value ("rod_ratio": Caption("L/r = {v}", ...)),
+    #: where it has no :attr:`wording`.
+    symbols: Mapping[str, Caption] = field(default_factory=dict)
+    #: The names of its methods, the values of its parameter "method".
+    methods: Mapping[str, Caption] = field(default_factory=dict)
+    #: The names of its conventions: parameter -> value -> name (where two cranks start: "dead_centre").
+    conventions: Mapping[str, Mapping[str, Caption]] = field(default_factory=dict)
+    #: What a figure must say beyond its givens, (figure, lang) -> text ("" for nothing).
+    note: Callable[[Figure, str], str] | None = None
+    #: Its plate's looks and furniture as plain data (:meth:`construct.render.plate.Plate.from_data`).
+    plate: Callable[[Figure], Mapping[str, Any]] | None = None
+    #: Raises InvalidParameter when a set of givens (a protocol's, by their own names) is outside its domain.
+    validator: Callable[[Mapping[str, Any]], None] | None = None
+    #: A line of help per parameter, for the command line.
+    help: Mapping[str, str] = field(default_factory=dict)
     #: The givens of a sweep over rod ratios L/r, from a figure's givens: for constructions that name the rod
     #: otherwise (a rod length in metres) or whose other givens follow the rod ratio.  None: set "rod_ratio".
     sweep: Callable[[Mapping[str, float], Any], dict[str, Any]] | None = None
@@ -54,6 +89,15 @@ class Construction:
     #: Whether its validator takes a sweep's givens (arrays) at once, naming the first set outside the domain;
     #: else :meth:`sweep_checks` validates set by set.
     validates_sweeps: bool = False
+
+    def __post_init__(self) -> None:
+        # where a construction kept its plate and its parameters' help before they were fields of their own
+        moved = [key for key in ("plate", "help") if key in self.extra and not getattr(self, key)]
+        if moved:
+            warnings.warn(f"Construction(extra={{{', '.join(map(repr, moved))}: ...}}) is deprecated; pass "
+                          f"{'= and '.join(moved)}= itself", DeprecationWarning, stacklevel=3)
+        for key in moved:
+            object.__setattr__(self, key, self.extra[key])
 
     def figure(self, **params: Any) -> Figure:
         unknown = sorted(set(params) - set(self.defaults))
@@ -70,7 +114,7 @@ class Construction:
         A figure replayed from a protocol by hand has not met the construction's own check of its givens (a rod
         no longer than the crank, say): the checks' formulas assume it, so it is made here first.
         """
-        _validate_givens(self.name, figure.replay.givens)
+        self.validate(figure.replay.givens)
         return run_checks(self, figure)
 
     def rod_ratio_sweep(self, givens: Mapping[str, float], ratios: Any) -> dict[str, Any] | None:
@@ -91,17 +135,23 @@ class Construction:
         replay = figure.replay
         sets = [replay.take(i) for i in range(replay.size)] if replay.size else [replay]
         if self.validates_sweeps:  # every set is valid before the model is computed for all of them
-            _validate_givens(self.name, replay.givens)
+            self.validate(replay.givens)
         else:
             for one in sets:
-                _validate_givens(self.name, one.givens)
+                self.validate(one.givens)
         model = None if self.sweep_model is None else self.sweep_model(replay.givens, figure.params)
         return [run_checks(self, Figure(figure.protocol, one), None if model is None else _take_model(model, i))
                 for i, one in enumerate(sets)]
 
     def validate(self, givens: Mapping[str, Any]) -> None:
         """Raise InvalidParameter if a set of givens (a protocol's, by their own names) lies outside the domain."""
-        _validate_givens(self.name, givens)
+        if self.validator is None:
+            return
+        try:
+            self.validator(givens)
+        except KeyError as exc:  # a protocol (truncated, edited) that no longer stores a given the construction has
+            raise ProtocolFormatError(f"the protocol of {self.name!r} lacks the given {exc.args[0]!r} of the "
+                                      f"construction (it has {', '.join(sorted(givens)) or 'none'})") from None
 
     def replay(self, protocol: Protocol, **givens: Any) -> Figure:
         """Replay an existing protocol with new givens (only those that keep the steps)."""
@@ -116,7 +166,7 @@ class Construction:
                     f"{'' if value is True else ' ' + str(value)}'")
             if key in values:
                 values[key] = positive(key, value)
-        _validate_givens(self.name, values)
+        self.validate(values)
         return Figure(protocol, protocol.replay(values), self.check)
 
 
@@ -131,31 +181,36 @@ def _take_model(model: Any, i: int) -> Any:
     return model
 
 
-_VALIDATORS: dict[str, Callable[[Mapping[str, float]], None]] = {}
 _REGISTRY: dict[str, Construction] = {}
-_MODULES = ("crank", "inertia", "indicator", "piston_force", "tangential", "two_cranks", "four_stroke", "flywheel_rim")
+_loaded = False
 
 
-def register(c: Construction, validate: Callable[[Mapping[str, float]], None] | None = None) -> Construction:
-    _REGISTRY[c.name] = c
+def register(c: Construction, validate: Callable[[Mapping[str, Any]], None] | None = None) -> Construction:
+    """Register *c* under its name (a later one of the same name replaces it) and return it.
+
+    *validate*: the old place of :attr:`Construction.validator` (deprecated).
+    """
     if validate is not None:
-        _VALIDATORS[c.name] = validate
+        warnings.warn("register(c, validate=f) is deprecated; give the construction validator=f",
+                      DeprecationWarning, stacklevel=2)
+        c = replace(c, validator=validate)
+    _REGISTRY[c.name] = c
     return c
 
 
-def _validate_givens(name: str, givens: Mapping[str, float]) -> None:
-    if name in _VALIDATORS:
-        try:
-            _VALIDATORS[name](givens)
-        except KeyError as exc:  # a protocol (truncated, edited) that no longer stores a given the construction has
-            raise ProtocolFormatError(f"the protocol of {name!r} lacks the given {exc.args[0]!r} of the construction "
-                                      f"(it has {', '.join(sorted(givens)) or 'none'})") from None
-
-
 def _load() -> None:
-    # Imported on first use, not at import time: the construction modules import this one.
-    for mod in _MODULES:
-        importlib.import_module(f"{__name__}.{mod}")
+    """Import every module of this package and every module named under :data:`ENTRY_POINTS`: each registers
+    the constructions it defines.  On first use, not at import time: the construction modules import this one."""
+    global _loaded
+    if _loaded:
+        return
+    for info in pkgutil.iter_modules(__path__):
+        importlib.import_module(f"{__name__}.{info.name}")
+    from importlib.metadata import entry_points
+
+    for ep in entry_points(group=ENTRY_POINTS):
+        ep.load()
+    _loaded = True
 
 
 def names() -> list[str]:
@@ -213,6 +268,4 @@ def rod_ratio_param(value: Any) -> Any:
     if v.size and np.all(np.isfinite(v)) and np.any(v <= 1.0):
         raise InvalidParameter(f"rod ratio L/r must be greater than 1 (the rod must be longer than the crank), "
                                f"got {value!r}")
-    from .domain import ROD_RATIO
-
     return bounded("rod ratio L/r", value, ROD_RATIO)

@@ -27,11 +27,13 @@ from typing import Any, Mapping
 from . import analytic
 from .checking import EUCLIDEAN_TOLERANCE, Check
 from ..kernel.errors import InvalidParameter
+from ..kernel.division import NAMES as DIVISION_NAMES
 from ..kernel.division import TRIAL_TOLERANCE, check_parts, divide_semicircle
 from ..kernel.instruments import Builder
 from ..kernel.protocol import Caption
 from . import Construction, Figure, bounded, register, rod_ratio_param
 from .domain import DRAWN_LENGTH
+from .phrases import ANHANG_II, HANDBOOK, Cite, division, ratio, stroke_parts
 
 __all__ = ["CRANK", "CRANK_ANGLE", "piston_fraction", "crank_angle", "build_frame"]
 
@@ -267,6 +269,11 @@ def crank_plate(fig: Figure) -> dict:
     return {"looks": looks, "furniture": frame_furniture(fig, point_name(fig, j), f"C{j}")}
 
 
+def crank_wording(fig: Figure, lang: str) -> list[str]:
+    """The givens as the books write them: the rod (r/L = 1/5) and the semicircle's division."""
+    return [ratio("r/L", fig.replay.givens["rod_ratio"], lang), division(fig, lang)]
+
+
 CRANK = register(Construction(
     name="crank",
     title=Caption("Kolbenwege aus dem Kurbelkreis", "Piston paths from the crank circle"),
@@ -276,8 +283,12 @@ CRANK = register(Construction(
     defaults={"rod_ratio": 5.0, "parts": 18, "method": "auto", "r": 1.0},
     book_params=({"rod_ratio": 5.0, "parts": 18}, {"rod_ratio": 5.0, "parts": 9}),
     structural=("parts", "method"),
-    extra={"plate": crank_plate},
-), validate=_validate)
+    cites=(Cite(HANDBOOK, "Abb. 1051/1054"), Cite(ANHANG_II, "Fig. 77")),
+    wording=crank_wording,
+    methods=DIVISION_NAMES,
+    plate=crank_plate,
+    validator=_validate,
+))
 
 
 # -- the inverse: tenths of the stroke back to crank angles ----------------------------
@@ -400,6 +411,11 @@ def crank_angle_plate(fig: Figure) -> dict:
     return {"looks": looks, "furniture": out}
 
 
+def crank_angle_wording(fig: Figure, lang: str) -> list[str]:
+    """The givens as seed 000 writes them: the rod (r/L = 1/5) and the stroke's tenths."""
+    return [ratio("r/L", fig.replay.givens["rod_ratio"], lang), stroke_parts(fig, lang)]
+
+
 CRANK_ANGLE = register(Construction(
     name="crank-angle",
     title=Caption("Kurbelwinkel aus den Zehnteln des Hubes", "Crank angles from tenths of the stroke"),
@@ -409,5 +425,8 @@ CRANK_ANGLE = register(Construction(
     defaults={"rod_ratio": 5.0, "divisions": 10, "r": 1.0},
     book_params=({"rod_ratio": 4.0}, {"rod_ratio": 5.0}, {"rod_ratio": 6.0}),
     structural=("divisions",),
-    extra={"plate": crank_angle_plate},
-), validate=_validate)
+    cites=(Cite(ANHANG_II, "Fig. 77, Tabelle 2"),),
+    wording=crank_angle_wording,
+    plate=crank_angle_plate,
+    validator=_validate,
+))

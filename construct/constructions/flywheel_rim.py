@@ -37,6 +37,7 @@ from ..kernel.protocol import Caption
 from . import Construction, Figure, bounded, register
 from .domain import DISC_THICKNESS, DRAWN_LENGTH, RIM_SECTION
 from .indicator import hyperbola_point, square
+from .phrases import BAUMANN_1902, Cite, number
 
 __all__ = ["FLYWHEEL_RIM", "build_flywheel_rim", "flywheel_rim_checks", "disc_half_width"]
 
@@ -171,6 +172,12 @@ def flywheel_rim_checks(fig: Figure) -> list[Check]:
     return checks
 
 
+def flywheel_rim_wording(fig: Figure, lang: str) -> list[str]:
+    """The givens as Baumann writes them: b₁ and the rim's side, in r₁."""
+    g = fig.replay.givens
+    return [f"b₁ = {number(g['b1'], lang)} r₁", ("Kranz " if lang == "de" else "rim ") + f"{number(g['rim'], lang)} r₁"]
+
+
 FLYWHEEL_RIM = register(Construction(
     name="flywheel-rim",
     title=Caption("Schwungrad: Kranz, Armscheibe gleicher Festigkeit und Nabe (Fig. 28)",
@@ -180,6 +187,9 @@ FLYWHEEL_RIM = register(Construction(
     checks=flywheel_rim_checks,
     defaults={"r": 1.0, "b1": 0.02, "rim": 0.14},
     book_params=({},),
-    extra={"help": {"b1": "flywheel-rim: disc thickness b1 at the rim, over r1 (drawn exaggerated: 0.02)",
-                    "rim": "flywheel-rim: side of the rim's square section, over r1 (0.14)"}},
-), validate=_validate)
+    cites=(Cite(BAUMANN_1902, "Fig. 28"),),
+    wording=flywheel_rim_wording,
+    validator=_validate,
+    help={"b1": "flywheel-rim: disc thickness b1 at the rim, over r1 (drawn exaggerated: 0.02)",
+          "rim": "flywheel-rim: side of the rim's square section, over r1 (0.14)"},
+))

@@ -62,6 +62,7 @@ from typing import Any, Mapping
 
 from .checking import EUCLIDEAN_TOLERANCE, Check
 from ..kernel.errors import InvalidParameter
+from ..kernel.division import NAMES as DIVISION_NAMES
 from ..kernel.division import check_parts, divide_semicircle
 from ..kernel.instruments import Builder
 from ..kernel.protocol import Caption
@@ -71,6 +72,7 @@ from .domain import (COMPRESSION_RATIO, CUTOFF_RATIO, DRAWN_LENGTH, ENGINE_PRESS
                      POLYTROPE_EXPONENT, PRESSURE_RATIO, SUCTION_PRESSURE)
 from .indicator import square
 from .inertia.build import inertia_scale, inertia_value, value_kind
+from .phrases import HANDBOOK, Cite, number, ratio
 
 __all__ = ["FOUR_STROKE", "ENGINES", "build_four_stroke", "four_stroke_checks", "model_pressure", "pressure",
            "volume", "brauer_tangents", "STROKES"]
@@ -569,6 +571,20 @@ OPTION_HELP = {
 }
 
 
+def four_stroke_wording(fig: Figure, lang: str) -> list[str]:
+    """The givens as the handbook writes them: the engine, ε and n, its peak pressure or ρ, the rod, q."""
+    g = fig.replay.givens
+    de = lang == "de"
+    diesel = fig.params.get("engine") == "diesel"
+    out = [("Gleichdruckmaschine" if de else "compression-ignition engine") if diesel
+           else ("Verpuffungsmaschine" if de else "explosion engine"),
+           f"ε = {number(g['compression_ratio'], lang)}", f"n = {number(g['exponent'], lang)}"]
+    out.append(f"ρ = {number(fig.params.get('cutoff', 2.0), lang)}" if diesel
+               else ("Höchstdruck " if de else "peak pressure ") + f"{number(g['max_pressure'], lang)} at")
+    out += [ratio("r/L", g["rod_ratio"], lang), f"q = {number(g['pressure_ratio'], lang)} at"]
+    return out
+
+
 FOUR_STROKE = register(Construction(
     name="four-stroke",
     title=Caption("Druckverlauf im Viertakt über zwei Umdrehungen, Kolbenüberdruck a–a, b–b",
@@ -581,5 +597,9 @@ FOUR_STROKE = register(Construction(
               "exponent": 1.3, "pressure_unit": 0.1, "pressure_ratio": 6.0, "steps": 12},
     book_params=({}, {"engine": "diesel", "compression_ratio": 14.0}),
     structural=("engine", "parts", "method", "steps", "cutoff"),
-    extra={"help": OPTION_HELP},
-), validate=_validate)
+    cites=(Cite(HANDBOOK, "Abb. 1056–1058"),),
+    wording=four_stroke_wording,
+    methods=DIVISION_NAMES,
+    validator=_validate,
+    help=OPTION_HELP,
+))

@@ -46,6 +46,7 @@ from ..kernel.instruments import Builder
 from ..kernel.protocol import Caption
 from . import Construction, Figure, bounded, positive, register
 from .domain import CLEARANCE, DRAWN_LENGTH, PRESSURE, STROKE_FRACTION
+from .phrases import BAUMANN_1902, Cite, card, diagram, scale
 
 __all__ = ["INDICATOR", "IndicatorDiagram", "indicator_frame", "pressures_at", "hyperbola_point", "square",
            "indicator_givens", "BAUMANN", "abscissa", "pressure", "steam_pressure", "back_pressure"]
@@ -585,6 +586,14 @@ def card_checks(fig: Figure) -> list[Check]:
     return checks
 
 
+def indicator_wording(fig: Figure, lang: str) -> list[str]:
+    """The givens as Baumann writes them (P, P₀, s₁, s₀, s₃), or a digitised card's; the pressure scale."""
+    g = fig.replay.givens
+    if "admission" not in g:  # a digitised card, not Baumann's idealised diagram
+        return card(fig, lang) + [scale(g, lang, "r")]
+    return diagram(g, lang) + [scale(g, lang, "r")]
+
+
 INDICATOR = register(Construction(
     name="indicator-diagram",
     title=Caption("Ideelles Dampfdiagramm mit Expansions- und Kompressionshyperbel",
@@ -601,5 +610,9 @@ INDICATOR = register(Construction(
               "indicator_crank_side": ""},
     book_params=({}, {"filling": 0.4}),  # Baumann's two worked cases: s1 = 10 % and 40 % (drawn for P = 7.85 at)
     structural=("divisions", "filling", "compression", "indicator", "indicator_crank_side"),
-    extra={"help": OPTION_HELP, "plate": indicator_plate},
-), validate=_validate)
+    cites=(Cite(BAUMANN_1902, "Fig. 25"),),
+    wording=indicator_wording,
+    plate=indicator_plate,
+    validator=_validate,
+    help=OPTION_HELP,
+))

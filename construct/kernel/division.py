@@ -25,12 +25,19 @@ from typing import Any
 
 from .errors import InvalidParameter
 from .instruments import Builder
-from .protocol import Provenance
+from .protocol import Caption, Provenance
 
-__all__ = ["METHODS", "MAX_PARTS", "choose_method", "exact_supported", "accepts", "methods_for", "divide_semicircle",
+__all__ = ["METHODS", "NAMES", "MAX_PARTS", "choose_method", "exact_supported", "accepts", "methods_for", "divide_semicircle",
            "durer_error_bound"]
 
 METHODS = ("auto", "exact", "durer", "neusis", "dividers")
+#: What a caption calls each method (German, English).
+NAMES = {
+    "durer": Caption("Dürers Dreiteilung", "Dürer's trisection"),
+    "exact": Caption("mit Zirkel und Lineal", "by compass and straightedge"),
+    "neusis": Caption("Einschiebung", "neusis"),
+    "dividers": Caption("mit dem Stechzirkel probiert", "with the dividers by trial"),
+}
 MAX_PARTS = 3600
 FERMAT_PRIMES = (3, 5, 17, 257, 65537)
 #: Odd parts of n for which this module has an exact construction.

@@ -47,8 +47,8 @@ import functools
 import re
 from typing import Mapping, Sequence
 
-__all__ = ["Reader", "book_symbols", "equation", "subscripts", "tag", "displayed", "CAPTION_LIMIT", "TITLE_LIMIT",
-           "letter_steps", "object_kind"]
+__all__ = ["Reader", "book_symbols", "equation", "subscripts", "tag", "displayed", "number", "CAPTION_LIMIT",
+           "TITLE_LIMIT", "letter_steps", "object_kind"]
 
 #: The most characters of a step's caption (or a group's title) a figure shows; a longer one is
 #: cut and ends in "…".  The books' step captions are at most 82 characters; 400 is about three
@@ -87,6 +87,18 @@ _GREEK = {"omega": "ω", "alpha": "α", "beta": "β", "kappa": "κ", "delta": "�
 
 _SUPER = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def number(v: float, lang: str, digits: int = 4) -> str:
+    """*v* as the books print it: at most *digits* significant digits, the decimal comma in German.
+
+    >>> number(0.4, "de"), number(0.4, "en"), number(1529.0720493, "de", 5), number(50.0, "de")
+    ('0,4', '0.4', '1529,1', '50')
+    """
+    text = f"{float(v):.{digits}g}"
+    if "e" in text:
+        text = f"{float(v):.{digits}f}".rstrip("0").rstrip(".")
+    return text.replace(".", ",") if lang == "de" else text
 
 
 def displayed(text: str, limit: int = CAPTION_LIMIT) -> str:

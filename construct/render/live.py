@@ -5,7 +5,8 @@ an ``<input type="range" name="GIVEN">`` (log10 of the given over its stated
 domain: the rod ratio runs from 1.05 to 1000, and a teacher lives between 3 and
 8), the value in the book's notation, the construction's checks at the
 nearest grid value, and a script that interpolates every drawn coordinate
-between the grid values the data (:mod:`construct.constructions.live`) holds.
+between the grid values the data (:mod:`construct.live`) holds, in the wire format of
+:mod:`construct.render.wire`.
 The page stays one file: the coordinates travel deflated in base64 and are
 inflated with the browser's own ``DecompressionStream``.
 
@@ -35,6 +36,7 @@ import html
 import math
 from typing import Any, Mapping
 
+from ..kernel.letters import number
 from .player import json_for_script
 
 __all__ = ["with_live", "LIVE_SCRIPT"]
@@ -50,10 +52,10 @@ def with_live(page: str, data: Mapping[str, Any]) -> str:
                 f'<input type="range" name="{g}" id="live-{g}" min="{lo:.12g}" max="{hi:.12g}" step="any" '
                 f'value="{v0:.12g}" aria-label="{sym}" style="flex:1 1 auto">'
                 f'<span>{sym} = <output id="live-value" style="font-variant-numeric:tabular-nums">'
-                f'{html.escape(_book(data["initial"]))}</output></span></label>'
-                f'<div class="live-range" style="color:#777;font-size:12px">{html.escape(_book(data["low"]))} … '
-                f'{html.escape(_book(data["high"]))} (log. Skala / log scale; gebaut / built: '
-                f'{html.escape(_book(data["initial"]))})</div>'
+                f'{html.escape(number(data["initial"], "de"))}</output></span></label>'
+                f'<div class="live-range" style="color:#777;font-size:12px">{html.escape(number(data["low"], "de"))} … '
+                f'{html.escape(number(data["high"], "de"))} (log. Skala / log scale; gebaut / built: '
+                f'{html.escape(number(data["initial"], "de"))})</div>'
                 # why there is one slider (a teacher asks for the next given first)
                 f'<div class="live-held" style="color:#777;font-size:12px">Nur {sym} ist beweglich; die übrigen '
                 f'Gegebenen bleiben beim Buchwert. / Only {sym} moves here; the other givens stay at the book’s '
@@ -77,10 +79,6 @@ def with_live(page: str, data: Mapping[str, Any]) -> str:
               f"<script>{LIVE_SCRIPT}</script>\n")
     end = page.rindex("</body>")
     return page[:end] + script + page[end:]
-
-
-def _book(v: float) -> str:
-    return f"{v:.4g}".replace(".", ",")
 
 
 #: The page's script (no external resource; text reaches the page through textContent only).

@@ -7,14 +7,15 @@ point -- and cites the book by author, title and figure, never by a file of
 this repository.  Which text and which parameters exactly (the machine's
 view) go into the SVG's ``<desc>`` and the protocol.
 
-:data:`BOOKS` lists the four source texts as they introduce themselves: the
-Baumann article names its author, title and volume; the three book excerpts
-carry no title page, so they are cited by the section and figures they print.
-:func:`givens` writes a construction's givens as its book does (Baumann's κ
-for the tangential pressure, r/L where the book writes r/L, r/l in § 146).
+The construction knows all of that itself (:class:`Described`: its
+citations, the wording of its givens, the names of its methods and
+conventions); this module writes it out and keeps no table of constructions.
+A figure without a construction (a protocol of the user's own) is captioned
+by its name and its givens by their names.
 
 >>> from construct.constructions import get
->>> de, en = givens(get("piston-force").figure(parts=9))
+>>> c = get("piston-force")
+>>> de, en = givens(c.figure(parts=9), c)
 >>> de
 'G = 830 kg, n = 50/min, R = 0,4 m, L = 2,0 m, F = 1529,1 cm², p₁ = 7 at, p₂ = 2 at, Füllung 30 %, schädlicher Raum 8 %, Kompression 15 %, Halbkreis in 9 Teilen (Dürers Dreiteilung)'
 >>> en.split(", ")[:4]
@@ -25,286 +26,124 @@ from __future__ import annotations
 
 import json
 import math
-from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, Callable, Mapping
+from typing import Any, Callable, Mapping, Protocol, Sequence
 
-if TYPE_CHECKING:
-    from ..constructions import Construction
-    from ..figure import Figure
+from ..kernel.letters import number
+from ..kernel.protocol import Caption
+from ..kernel.protocol import Protocol as StepProtocol
+from ..kernel.protocol import Replay
 
-__all__ = ["Book", "BOOKS", "CITED", "givens", "given_rows", "citation", "caption", "provenance", "with_provenance", "number"]
-
-
-@dataclass(frozen=True)
-class Book:
-    """A source text as it names itself: author (when it says), title, where it was printed."""
-
-    author: str | None
-    title_de: str
-    title_en: str
-    where: str = ""
-    #: The title a caption cites (the full one is long for a line under a figure).
-    short: str = ""
+__all__ = ["Described", "Drawn", "Cited", "givens", "phrases", "given_rows", "citation", "caption", "provenance",
+           "with_provenance", "number"]
 
 
-#: The four source texts (the seed files' numbers are the keys; they appear only in the metadata).
-BOOKS: dict[str, Book] = {
-    "000": Book(None, "Anhang II, „Darstellung der Massendrücke“", "Anhang II, „Darstellung der Massendrücke“"),
-    "001": Book(None, "„Einfluß der Massenkräfte“, Maschine Tafel I", "„Einfluß der Massenkräfte“, engine of Tafel I"),
-    "002": Book(None, "§ 146–147, Zwei Kurbeln unter 90°", "§ 146–147, two cranks at 90°"),
-    "004": Book("A. Baumann", "Ein neues Verfahren zur Bestimmung der Schwungradgewichte von Dampfmaschinen",
-                "Ein neues Verfahren zur Bestimmung der Schwungradgewichte von Dampfmaschinen",
-                "Bd. 317, 1902", short="Schwungradgewichte (1902)"),
-}
+class Drawn(Protocol):
+    """What the drawing reads of a figure (:class:`construct.figure.Figure` is one)."""
 
-#: Per construction: the (text, figure) pairs it follows, the figure as the text numbers it.
-CITED: dict[str, tuple[tuple[str, str], ...]] = {
-    "crank": (("001", "Abb. 1051/1054"), ("000", "Fig. 77")),
-    "crank-angle": (("000", "Fig. 77, Tabelle 2"),),
-    "inertia-curve": (("000", "Fig. 78/79, Tabelle 1"),),
-    "inertia-stroke-fractions": (("000", "Tabelle 2"),),
-    "indicator-diagram": (("004", "Fig. 25"),),
-    "piston-force": (("001", "Abb. 1054/1055"), ("004", "Fig. 25")),
-    "tangential-pressure": (("004", "Fig. 26/27"),),
-    "two-cranks": (("002", "Fig. 566"),),
-    "four-stroke": (("001", "Abb. 1056–1058"),),
-    "flywheel-rim": (("004", "Fig. 28"),),
-}
+    @property
+    def protocol(self) -> StepProtocol: ...
+    @property
+    def replay(self) -> Replay: ...
+    @property
+    def params(self) -> Mapping[str, Any]: ...
 
 
-def number(v: float, lang: str, digits: int = 4) -> str:
-    """*v* as the books print it: at most *digits* significant digits, the decimal comma in German.
+class Text(Protocol):
+    """A source text as a caption cites it (:class:`construct.constructions.phrases.Book` is one)."""
 
-    >>> number(0.4, "de"), number(0.4, "en"), number(1529.0720493, "de", 5), number(50.0, "de")
-    ('0,4', '0.4', '1529,1', '50')
-    """
-    text = f"{float(v):.{digits}g}"
-    if "e" in text:
-        text = f"{float(v):.{digits}f}".rstrip("0").rstrip(".")
-    return text.replace(".", ",") if lang == "de" else text
+    @property
+    def key(self) -> str: ...
+    @property
+    def author(self) -> str | None: ...
+    def title(self, lang: str) -> str: ...
 
 
-def _metres(v: float, lang: str) -> str:
-    """A length in metres with one decimal at least, as Tafel I writes R = 0,4 m, L = 2,0 m."""
-    text = f"{float(v):.1f}" if abs(v - round(v, 1)) < 1e-9 else number(v, "en")
-    return text.replace(".", ",") if lang == "de" else text
+class Cited(Protocol):
+    """A text and the figure in it (:class:`construct.constructions.phrases.Cite` is one)."""
+
+    @property
+    def book(self) -> Text: ...
+    @property
+    def figure(self) -> str: ...
 
 
-def _percent(v: float, lang: str) -> str:
-    return number(100.0 * v, lang, 3) + " %"
+class Described(Protocol):
+    """What the drawing reads of a construction (:class:`construct.constructions.Construction` is one)."""
+
+    @property
+    def name(self) -> str: ...
+    @property
+    def title(self) -> Caption: ...
+    @property
+    def source(self) -> str: ...
+    @property
+    def cites(self) -> Sequence[Cited]: ...
+    @property
+    def wording(self) -> Callable[[Any, str], Sequence[str]] | None: ...
+    @property
+    def symbols(self) -> Mapping[str, Caption]: ...
+    @property
+    def methods(self) -> Mapping[str, Caption]: ...
+    @property
+    def conventions(self) -> Mapping[str, Mapping[str, Caption]]: ...
+    @property
+    def note(self) -> Callable[[Any, str], str] | None: ...
+    @property
+    def plate(self) -> Callable[[Any], Mapping[str, Any]] | None: ...
 
 
-def _ratio(name: str, rod_ratio: float, lang: str) -> str:
-    """The rod as the text writes it: r/L = 1/5 (seed 000, Baumann), r/l = 1/5 (§ 146)."""
-    return f"{name} = 1/{number(rod_ratio, lang)}"
+#: What the kernel and the constructions keep in a protocol's parameters besides what they are built with.
+_PROTOCOL_KEYS = ("givens", "group_titles", "captions", "plate")
 
 
-_DIVISION = {
-    "durer": ("Dürers Dreiteilung", "Dürer's trisection"),
-    "exact": ("mit Zirkel und Lineal", "by compass and straightedge"),
-    "neusis": ("Einschiebung", "neusis"),
-    "dividers": ("mit dem Stechzirkel probiert", "with the dividers by trial"),
-}
-
-
-def _parts(fig: "Figure", lang: str) -> str:
-    n = fig.params.get("parts")
-    method = _DIVISION.get(str(fig.params.get("method")))
-    de, en = f"Halbkreis in {n} Teilen", f"semicircle in {n} parts"
-    if method and fig.params.get("method") != "exact":  # compass and straightedge go without saying
-        de, en = f"{de} ({method[0]})", f"{en} ({method[1]})"
-    return de if lang == "de" else en
-
-
-def _scale(g: Mapping[str, float], lang: str, unit: str = "r") -> str:
-    v = number(g["pressure_unit"], lang)
-    return f"1 at als {v} {unit} gezeichnet" if lang == "de" else f"1 at drawn as {v} {unit}"
-
-
-def _crank(fig: "Figure", lang: str) -> list[str]:
-    return [_ratio("r/L", fig.replay.givens["rod_ratio"], lang), _parts(fig, lang)]
-
-
-def _crank_angle(fig: "Figure", lang: str) -> list[str]:
-    n = fig.params.get("divisions", 10)
-    return [_ratio("r/L", fig.replay.givens["rod_ratio"], lang),
-            f"Hub in {n} Teilen" if lang == "de" else f"stroke in {n} parts"]
-
-
-def _inertia(fig: "Figure", lang: str) -> list[str]:
-    g = fig.replay.givens
-    out = [_ratio("r/L", g["rod_ratio"], lang), f"F/f = {number(g['pressure_ratio'], lang)} at", _scale(g, lang)]
-    if "parts" in fig.params:
-        out.append(_parts(fig, lang))
-    else:
-        n = fig.params.get("divisions", 10)
-        out.append(f"Hub in {n} Teilen" if lang == "de" else f"stroke in {n} parts")
-    return out
-
-
-def _diagram(g: Mapping[str, float], lang: str) -> list[str]:
-    """Baumann's givens of the steam diagram: P, P0, s1, s0, s3 (as fractions of the stroke s)."""
-    de = lang == "de"
-    return [f"P = {number(g['admission'], lang)} at", f"P₀ = {number(g['back_pressure'], lang)} at",
-            f"s₁ = {_percent(g['filling'], lang)} s", f"s₀ = {_percent(g['clearance'], lang)} s",
-            f"s₃ = {_percent(g['compression'], lang)} s" + (" (Kompression)" if de else " (compression)")]
-
-
-def _indicator(fig: "Figure", lang: str) -> list[str]:
-    g = fig.replay.givens
-    if "admission" not in g:  # a digitised card, not Baumann's idealised diagram
-        return _card(fig, lang) + [_scale(g, lang, "r")]
-    return _diagram(g, lang) + [_scale(g, lang, "r")]
-
-
-def _piston_force(fig: "Figure", lang: str) -> list[str]:
-    g = fig.replay.givens
-    de = lang == "de"
-    out = [f"G = {number(g['weight'], lang)} kg", f"n = {number(g['rpm'], lang)}/min",
-           f"R = {_metres(g['crank_radius'], lang)} m", f"L = {_metres(g['rod_length'], lang)} m",
-           f"F = {number(g['piston_area'], lang, 5)} cm²"]
-    if "admission" in g:  # Baumann's idealised diagram (a digitised card says itself, below)
-        out += [f"p₁ = {number(g['admission'], lang)} at", f"p₂ = {number(g['back_pressure'], lang)} at",
-                ("Füllung " if de else "cut-off ") + _percent(g["filling"], lang),
-                ("schädlicher Raum " if de else "clearance ") + _percent(g["clearance"], lang),
-                ("Kompression " if de else "compression ") + _percent(g["compression"], lang)]
-    out.append(_parts(fig, lang))
-    if fig.params.get("revolution"):  # both sides, each with its own area (Tafel I: F', F'')
-        out[4] = (f"F′ = {number(g['piston_area_cover'], lang, 6)} cm² (Deckelseite), "
-                  f"F″ = {number(g['piston_area_crank'], lang, 6)} cm² (Kurbelseite), Hin- und Rückgang" if de else
-                  f"F′ = {number(g['piston_area_cover'], lang, 6)} cm² (cover side), "
-                  f"F″ = {number(g['piston_area_crank'], lang, 6)} cm² (crank side), both strokes")
-    return out + _card(fig, lang)
-
-
-def _card(fig: "Figure", lang: str) -> list[str]:
-    """A digitised indicator card among the givens (card.x0, card.p0, ...): how many points, which side mirrored."""
-    g = fig.replay.givens
-    de = lang == "de"
+def _listed(fig: Drawn, lang: str, construction: Described | None) -> list[str]:
+    """Each given and parameter in turn: as the construction's symbols, methods and conventions name it, else
+    by its name (a given written ``card.x0`` is one of a digitised card's points, not named here)."""
+    symbols = construction.symbols if construction is not None else {}
+    methods = construction.methods if construction is not None else {}
+    conventions = construction.conventions if construction is not None else {}
+    values = {**{k: v for k, v in fig.replay.givens.items() if "." not in k},
+              **{k: v for k, v in fig.params.items()
+                 if k not in _PROTOCOL_KEYS and isinstance(v, (bool, int, float, str))}}
     out = []
-    for side, name in (("card", ("Indikatordiagramm", "indicator card")), ("crank", ("Kurbelseite", "crank side"))):
-        count = sum(1 for k in g if k.startswith(f"{side}.x"))
-        if count:
-            out.append(f"{name[0 if de else 1]} aus {count} Punkten" if de else f"{name[1]} of {count} points")
-    if out and not any(k.startswith("crank.x") for k in g):
-        out.append("Kurbelseite gespiegelt (Baumann)" if de else "crank side mirrored (Baumann)")
+    for key, v in values.items():
+        text = number(v, lang, 6) if isinstance(v, float) else str(v)
+        named = methods.get(text) if key == "method" else conventions.get(key, {}).get(text)
+        if named is not None:
+            out.append(named.de if lang == "de" else named.en)
+        elif key in symbols:
+            out.append((symbols[key].de if lang == "de" else symbols[key].en).format(v=text))
+        else:
+            out.append(f"{key.replace('_', ' ')} = {text}")
     return out
 
 
-def _revolution(fig: "Figure", lang: str) -> list[str]:
-    """A tangential diagram over the whole revolution: the machine and its cranks."""
-    if not fig.params.get("revolution"):
-        return []
-    de = lang == "de"
-    machine = str(fig.params.get("machine", "single"))
-    names = {"single": ("Eincylindermaschine", "single-cylinder engine"),
-             "tandem": ("Tandemmaschine", "tandem engine"), "compound": ("Verbundmaschine", "compound engine")}
-    offsets = [float(v) for v in (fig.params.get("offsets") or (0.0,))]
-    cranks = ", ".join(f"{number(v, lang)}°" for v in offsets)
-    return [names.get(machine, (machine, machine))[0 if de else 1],
-            (f"Kurbeln bei {cranks}" if de else f"cranks at {cranks}") if len(offsets) > 1 else "",
-            "über eine Umdrehung" if de else "over a revolution"]
+def phrases(fig: Drawn, lang: str, construction: Described | None = None) -> list[str]:
+    """The figure's givens in *lang* as its book writes them (the construction's :attr:`wording`), or each
+    in turn (:attr:`symbols`, or by name)."""
+    if construction is not None and construction.wording is not None:
+        return list(construction.wording(fig, lang))
+    return _listed(fig, lang, construction)
 
 
-def _low_pressure(fig: "Figure", lang: str) -> list[str]:
-    """A compound or tandem engine's low-pressure cylinder with a diagram of its own: its givens, its area ratio."""
-    g = fig.replay.givens
-    if "area_ratio" not in g:
-        return []
-    de = lang == "de"
-    head = "Niederdruck: " if de else "low pressure: "
-    if "lp.admission" in g:
-        own = (f"P = {number(g['lp.admission'], lang)} at, P₀ = {number(g['lp.back_pressure'], lang)} at, "
-               f"s₁ = {_percent(g['lp.filling'], lang)} s, s₃ = {_percent(g['lp.compression'], lang)} s")
-    else:
-        count = sum(1 for k in g if k.startswith("lp.card.x"))
-        own = f"Indikatordiagramm aus {count} Punkten" if de else f"indicator card of {count} points"
-    return [head + own, ("Kolbenfläche ND/HD = " if de else "piston area LP/HP = ") + number(g["area_ratio"], lang)]
+def givens(fig: Drawn, construction: Described | None = None) -> tuple[str, str]:
+    """The figure's givens in its book's symbols and units: (German, English) (:func:`phrases`)."""
+    return ", ".join(phrases(fig, "de", construction)), ", ".join(phrases(fig, "en", construction))
 
 
-def _tangential(fig: "Figure", lang: str) -> list[str]:
-    g = fig.replay.givens
-    if fig.params.get("force") == "unit":
-        return [x for x in [_ratio("r/L", g["rod_ratio"], lang), "P′ = r", *_revolution(fig, lang), _parts(fig, lang),
-                            *_card(fig, lang)] if x]
-    # κ = P/B_max (Baumann): the construction keeps c v²/r = P/((1 + r/L) κ) as its given.
-    if "admission" not in g:  # a digitised card's force
-        return [x for x in [_ratio("r/L", g["rod_ratio"], lang), *_revolution(fig, lang), _parts(fig, lang),
-                            *_card(fig, lang), *_low_pressure(fig, lang)] if x]
-    kappa = g["admission"] / (g["pressure_ratio"] * (1.0 + 1.0 / g["rod_ratio"]))
-    out = ([f"κ = P/Bmax = {number(round(kappa, 9), lang)}", _ratio("r/L", g["rod_ratio"], lang)]
-           + _diagram(g, lang) + [_scale(g, lang), _parts(fig, lang)])
-    if "lp.admission" in g:  # two cylinders, two diagrams: say whose the first givens are
-        out[2] = ("Hochdruck: " if lang == "de" else "high pressure: ") + out[2]
-    if fig.params.get("revolution"):  # the return stroke from the same diagram: Baumann's assumption, said
-        out = [x for x in _revolution(fig, lang) if x] + out + [
-            "Rückgang: dasselbe Diagramm gespiegelt (Baumanns Annahme)" if lang == "de"
-            else "return stroke: the same diagram mirrored (Baumann's assumption)"]
-        out += _low_pressure(fig, lang)
-    return out
-
-
-def _two_cranks(fig: "Figure", lang: str) -> list[str]:
-    g = fig.replay.givens
-    de = lang == "de"
-    rod = (("unendlich lange Schubstangen" if de else "infinitely long rods") if fig.params.get("infinite_rod")
-           else _ratio("r/l", g["rod_ratio"], lang))
-    n = fig.params.get("parts")
-    start = ((("ab der äußeren Totlage B₁ (§ 146)" if de else "from the crank-end dead centre B₁ (§ 146)")
-              if fig.params.get("dead_centre", "head-end") == "crank-end"
-              else ("ab der deckelseitigen Totlage" if de else "from the head-end dead centre")))
-    return [rod, start, f"Qr/((m₁ + m₂)v₁²) = {number(g['fluctuation'], lang)}",
-            (f"Schwankungen {number(g['magnify'], lang)}fach vergrößert" if de
-             else f"speed deviations magnified {number(g['magnify'], lang)} times"),
-            f"Kreis in {2 * int(n)} Teilen" if de else f"circle in {2 * int(n)} parts"]
-
-
-def _four_stroke(fig: "Figure", lang: str) -> list[str]:
-    g = fig.replay.givens
-    de = lang == "de"
-    diesel = fig.params.get("engine") == "diesel"
-    out = [("Gleichdruckmaschine" if de else "compression-ignition engine") if diesel
-           else ("Verpuffungsmaschine" if de else "explosion engine"),
-           f"ε = {number(g['compression_ratio'], lang)}", f"n = {number(g['exponent'], lang)}"]
-    out.append(f"ρ = {number(fig.params.get('cutoff', 2.0), lang)}" if diesel
-               else ("Höchstdruck " if de else "peak pressure ") + f"{number(g['max_pressure'], lang)} at")
-    out += [_ratio("r/L", g["rod_ratio"], lang), f"q = {number(g['pressure_ratio'], lang)} at"]
-    return out
-
-
-def _flywheel_rim(fig: "Figure", lang: str) -> list[str]:
-    g = fig.replay.givens
-    return [f"b₁ = {number(g['b1'], lang)} r₁", ("Kranz " if lang == "de" else "rim ") + f"{number(g['rim'], lang)} r₁"]
-
-
-_GIVENS: dict[str, Callable[["Figure", str], list[str]]] = {
-    "crank": _crank, "crank-angle": _crank_angle, "inertia-curve": _inertia, "inertia-stroke-fractions": _inertia,
-    "indicator-diagram": _indicator, "piston-force": _piston_force, "tangential-pressure": _tangential,
-    "two-cranks": _two_cranks, "four-stroke": _four_stroke, "flywheel-rim": _flywheel_rim,
-}
-
-
-def givens(fig: "Figure") -> tuple[str, str]:
-    """The figure's givens in its book's symbols and units: (German, English); ("", "") for an unknown construction."""
-    fn = _GIVENS.get(fig.protocol.construction)
-    if fn is None:
-        return "", ""
-    return ", ".join(fn(fig, "de")), ", ".join(fn(fig, "en"))
-
-
-def given_rows(fig: "Figure") -> dict[str, str]:
+def given_rows(fig: Drawn, construction: Described | None = None) -> dict[str, str]:
     """The givens as the player's table shows them: symbol -> value, German / English where they differ.
 
     >>> from construct.constructions import get
-    >>> rows = given_rows(get("piston-force").figure(parts=9))
+    >>> c = get("piston-force")
+    >>> rows = given_rows(c.figure(parts=9), c)
     >>> rows["R"], rows["Füllung 30 %"], list(rows)[:3]
     ('0,4 m / 0.4 m', 'cut-off 30 %', ['G', 'n', 'R'])
     """
-    fn = _GIVENS.get(fig.protocol.construction)
-    if fn is None:  # a protocol of the user's own: its givens by name
+    if construction is None:  # a protocol of the user's own: its givens by name
         return {k: number(v, "en", 6) if isinstance(v, float) else str(v) for k, v in sorted(fig.replay.givens.items())}
     rows: dict[str, str] = {}
-    for de, en in zip(fn(fig, "de"), fn(fig, "en")):
+    for de, en in zip(phrases(fig, "de", construction), phrases(fig, "en", construction)):
         if " = " in de and " = " in en:
             k, v_de = de.split(" = ", 1)
             v_en = en.split(" = ", 1)[1]
@@ -314,61 +153,52 @@ def given_rows(fig: "Figure") -> dict[str, str]:
     return rows
 
 
-def citation(name: str, lang: str) -> str:
+def citation(construction: Described | None, lang: str) -> str:
     """The texts a construction follows, as a reader finds them: author, title, figure.
 
-    >>> citation("tangential-pressure", "de")
+    >>> from construct.constructions import get
+    >>> citation(get("tangential-pressure"), "de")
     'nach A. Baumann, Schwungradgewichte (1902), Fig. 26/27'
-    >>> citation("two-cranks", "en")
+    >>> citation(get("two-cranks"), "en")
     'after § 146–147, two cranks at 90°, Fig. 566'
     """
-    parts = []
-    for key, fig in CITED.get(name, ()):
-        b = BOOKS[key]
-        title = b.short or (b.title_de if lang == "de" else b.title_en)
-        parts.append(", ".join(x for x in (b.author, title, fig) if x))
+    parts = [", ".join(x for x in (c.book.author, c.book.title(lang), c.figure) if x)
+             for c in (construction.cites if construction is not None else ())]
     if not parts:
         return ""
     return ("nach " if lang == "de" else "after ") + "; ".join(parts)
 
 
-def _special(fig: "Figure", lang: str) -> str:
-    """What a figure must say beyond its givens (the 990-kg plate shows the high-pressure diagram)."""
-    if fig.protocol.construction == "piston-force" and fig.replay.givens.get("weight") == 990.0:
-        return ("Massen der Niederdruckseite (990 kg) über dem Dampfdiagramm der Hochdruckseite" if lang == "de" else
-                "low-pressure side's masses (990 kg) over the high-pressure side's steam diagram")
-    return ""
-
-
-def caption(construction: "Construction | None", fig: "Figure", number_: int | str | None = None,
+def caption(construction: Described | None, fig: Drawn, number_: int | str | None = None,
             *, plate: bool = True) -> tuple[str, str]:
     """A figure's caption lines: "Fig. 12. Title. Givens. — after the book, figure." in German and English."""
     head = f"Fig. {number_}. " if number_ is not None else ("Fig. " if plate else "")
     if construction is None:
         name = fig.protocol.construction
         return (f"{head}{name}.", f"{head}{name}.")
-    de_g, en_g = givens(fig)
+    de_g, en_g = givens(fig, construction)
     out = []
     for lang, title, g in (("de", construction.title.de, de_g), ("en", construction.title.en, en_g)):
-        special = _special(fig, lang)
+        # what a figure must say beyond its givens (the 990-kg plate shows the high-pressure diagram)
+        special = construction.note(fig, lang) if construction.note is not None else ""
         body = f"{head}{title.rstrip('.')}"
         body += f"; {special}" if special else ""
         if g[:2].isalpha():  # a word ("unendlich lange Schubstangen"), not a symbol (r/L, κ)
             g = g[:1].upper() + g[1:]
         body += f". {g}" if g else ""
-        cite = citation(construction.name, lang)
+        cite = citation(construction, lang)
         out.append(f"{body}. — {cite}." if cite else f"{body}.")
     return out[0], out[1]
 
 
-def provenance(construction: "Construction | None", fig: "Figure") -> dict[str, Any]:
+def provenance(construction: Described | None, fig: Drawn) -> dict[str, Any]:
     """Which text and which parameters, for the machine: the SVG's ``<desc id="provenance">``."""
     params = {k: v for k, v in fig.params.items() if k not in ("group_titles", "plate", "captions", "givens")}
     out: dict[str, Any] = {"construction": fig.protocol.construction, "params": params,
                            "givens": dict(fig.replay.givens)}
     if construction is not None:
         out["source"] = construction.source
-        out["texts"] = [{"text": f"seeds/{key}", "figure": figfig} for key, figfig in CITED.get(construction.name, ())]
+        out["texts"] = [{"text": f"seeds/{c.book.key}", "figure": c.figure} for c in construction.cites]
     return out
 
 
@@ -394,7 +224,7 @@ def jsonable(v: Any) -> Any:
         return str(v)
 
 
-def with_provenance(svg: str, construction: "Construction | None", fig: "Figure") -> str:
+def with_provenance(svg: str, construction: Described | None, fig: Drawn) -> str:
     """*svg* (a standalone file's text) with ``<desc id="provenance">`` holding the provenance as JSON, first in the root.
 
     The element is serialised by ElementTree (which escapes the text) and set in after the root's

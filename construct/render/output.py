@@ -20,17 +20,14 @@ empty or a previous replay whose every file is in its manifest, unchanged
 from __future__ import annotations
 
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from ..io.manifest import foreign_entries
 from ..io.staging import replaced_folder, write_text
+from .notation import Described, Drawn, caption, given_rows, givens, with_provenance
 from .scene import Scene, build_scene
 from .styles import Style
 from .svg import Drawing, render_svg
-
-if TYPE_CHECKING:  # annotations only: the drawing layer sits below the figures and constructions it draws
-    from ..constructions import Construction
-    from ..figure import Figure
 
 __all__ = ["FRAME_MODES", "OUTPUTS", "MAX_FRAME_BYTES", "frames_estimate", "check_frames_size", "frame_steps",
            "write_replay", "write_outputs", "scene_for",
@@ -76,7 +73,7 @@ def frame_steps(scene: Scene, mode: str) -> list[int]:
 MAX_FRAME_BYTES, FRAME_BYTES_PER_MARK = 500_000_000, 200
 
 
-def frames_estimate(figure: Figure, mode: str) -> tuple[int, int]:
+def frames_estimate(figure: Drawn, mode: str) -> tuple[int, int]:
     """(frames, bytes) that *mode* would write for *figure*, from its protocol alone (no drawing is laid
     out: at 3600 parts that takes a minute, the estimate a moment).  Frame k shows the marks of steps
     1..k, about one per object made.
@@ -104,7 +101,7 @@ def frames_estimate(figure: Figure, mode: str) -> tuple[int, int]:
     return len(ks), FRAME_BYTES_PER_MARK * sum(upto[i] for i in ks)
 
 
-def check_frames_size(figure: Figure, mode: str, force: bool = False) -> None:
+def check_frames_size(figure: Drawn, mode: str, force: bool = False) -> None:
     """Refuse (InvalidParameter) frames that would pass :data:`MAX_FRAME_BYTES`, with the estimate, unless *force*."""
     frames, size = frames_estimate(figure, mode)
     if size > MAX_FRAME_BYTES and not force:
@@ -124,8 +121,7 @@ def _size(n: float) -> str:
     return f"{n:.3g} TB"
 
 
-def scene_for(construction: Construction | None, figure: Figure, *, plate: bool = False,
-              ending: bool = False) -> Scene:
+def scene_for(construction: Described | None, figure: Drawn, *, plate: bool = False, ending: bool = False) -> Scene:
     """The figure's scene; a plate carries the construction's furniture and line looks (:mod:`.plate`).
 
     With *ending* (a teaching sequence) the scene carries its end state: the plate's objects, looks and
@@ -144,94 +140,29 @@ def scene_for(construction: Construction | None, figure: Figure, *, plate: bool 
     return build_scene(figure, title=figure_title(construction, figure))
 
 
-#: How the books write the parameters: (German, English) per name; "{v}" is the value.
-_BOOK_PARAMS = {
-    "rod_ratio": ("L/r = {v}", "L/r = {v}"),
-    "pressure_ratio": ("F/f = {v}", "F/f = {v}"),
-    "pressure_unit": ("1 kg/cm² als {v} r gezeichnet", "1 kg/cm² drawn as {v} r"),
-    "parts": ("{v} Teile", "{v} parts"),
-    "divisions": ("Hub in {v} Teilen", "stroke in {v} parts"),
-    "revolution": ("ganze Umdrehung", "whole revolution"),
-    "cranks": ("Kurbeln bei {v} Grad", "cranks at {v} degrees"),
-    "machine": ("{v}-Maschine", "{v} engine"),
-}
-_BOOK_METHODS = {
-    "durer": ("Dürers Teilung", "Dürer's division"),
-    "exact": ("Teilung mit Zirkel und Lineal", "division by compass and straightedge"),
-    "neusis": ("Einschiebung (Archimedes)", "neusis (Archimedes)"),
-    "dividers": ("Teilung mit dem Stechzirkel", "division with the dividers by trial"),
-}
-#: Where the first of two cranks starts (two-cranks): named in words, with § 146's sign rule.
-_DEAD_CENTRES = {
-    "crank-end": ("ab der äußeren Totlage B₁ (§ 146: oberes Zeichen im Hingang)",
-                  "from the crank-end dead centre B1 (§ 146: upper sign in the forward stroke)"),
-    "head-end": ("ab der deckelseitigen Totlage", "from the head-end dead centre"),
-}
-#: Givens a construction derives from the others for its steps (Brauer's ray slopes): not named in captions.
-_DERIVED = ("tan_alpha", "tan_beta", "tan_alpha_e", "tan_beta_e")
-_HIDDEN = ("givens", "group_titles", "requested_method", "plate", "captions", "offsets", "shifts", "cylinders",
-           "cards", "mirrored")
-
-
-def _num(v) -> str:
-    return f"{v:g}" if isinstance(v, float) else str(v)
-
-
-def params_text(figure: Figure, lang: str = "en") -> str:
-    """The figure's givens and parameters in the books' notation, e.g. ``L/r = 5, 18 parts, Dürer's division``.
-
-    The crank radius is the unit of the drawing and is named only when it is not 1.
+def params_text(figure: Drawn, lang: str = "en", construction: Described | None = None) -> str:
+    """The figure's givens and parameters in *lang*: as its construction's book writes them
+    (:func:`construct.render.notation.phrases`), else each by its name.
 
     >>> from construct.constructions import get
-    >>> params_text(get("crank").figure(parts=18)), params_text(get("crank-angle").figure(rod_ratio=4.0), "de")
-    ("L/r = 5, 18 parts, Dürer's division", 'L/r = 4, Hub in 10 Teilen')
+    >>> c = get("crank")
+    >>> params_text(c.figure(parts=18), construction=c), params_text(c.figure(parts=18))
+    ("r/L = 1/5, semicircle in 18 parts (Dürer's trisection)", 'r = 1, rod ratio = 5, parts = 18, method = durer, requested method = auto')
     """
-    i = 0 if lang == "de" else 1
-    givens = dict(figure.replay.givens)
-    # a digitised card's points are givens named card.x0, card.p0, ...: the caption counts them
-    cards = {k.split(".")[0] for k in givens if "." in k}
-    values = {**{k: v for k, v in givens.items() if "." not in k and k not in _DERIVED},
-              **{k: v for k, v in figure.params.items() if k not in _HIDDEN}}
-    out = []
-    order = ("rod_ratio", "pressure_ratio", "pressure_unit", "parts", "divisions", "method")
-    for key in sorted(values, key=lambda k: (order.index(k) if k in order else len(order), k)):
-        v = values[key]
-        if key == "r" and v == 1.0:
-            continue
-        if key == "method":
-            out.append(_BOOK_METHODS.get(str(v), (str(v), str(v)))[i])
-        elif key == "dead_centre":
-            out.append(_DEAD_CENTRES.get(str(v), (str(v), str(v)))[i])
-        elif key in _BOOK_PARAMS:
-            text = _BOOK_PARAMS[key][i].format(v=_num(v))
-            out.append(text.replace(".", ",") if lang == "de" and "kg" in text else text)
-        else:
-            out.append(f"{key.replace('_', ' ')} = {_num(v)}")  # a parameter the books do not name
-    for side, (de, en) in (("card", ("Indikatordiagramm", "indicator card")),
-                           ("crank", ("Diagramm der Kurbelseite", "crank-side card"))):
-        if side in cards:
-            count = sum(1 for k in givens if k.startswith(f"{side}.x"))
-            out.append(f"{(de, en)[i]}: {count} {('Punkte', 'points')[i]}")
-    if "card" in cards and "crank" not in cards:
-        out.append(("Kurbelseite gespiegelt (Baumann)", "crank side mirrored (Baumann)")[i])
-    return ", ".join(out)
+    return givens(figure, construction)[0 if lang == "de" else 1]
 
 
-def figure_title(construction: Construction | None, figure: Figure) -> tuple[str, str]:
+def figure_title(construction: Described | None, figure: Drawn) -> tuple[str, str]:
     """The figure's title lines in its book's notation (:func:`construct.render.notation.caption`)."""
-    from .notation import caption
-
     if construction is None:  # a protocol of the user's own: its name is its title
         name, p = figure.protocol.construction, params_text(figure)
         return (f"{name}; {p}" if p else name, f"{name}; {p}" if p else name)
     return caption(construction, figure, plate=False)
 
 
-def plate_caption(construction: Construction | None, figure: Figure,
+def plate_caption(construction: Described | None, figure: Drawn,
                   number: int | str | None = None) -> tuple[str, str]:
     """A book plate's caption: "Fig. 12. Kolbenüberdrucklinie mit den Massenkräften. G = 830 kg, … — nach …" and the English."""
-    from .notation import caption
-
     if construction is None:
         fig = f"Fig. {number}." if number is not None else "Fig."
         name, p = figure.protocol.construction, params_text(figure)
@@ -243,12 +174,12 @@ def plate_caption(construction: Construction | None, figure: Figure,
 OUTPUTS = ("animated", "player", "storyboard")
 
 
-def write_outputs(stage: Path, construction: Construction | None, figure: Figure, st: Style, *, frames: str = "none",
+def write_outputs(stage: Path, construction: Described | None, figure: Drawn, st: Style, *, frames: str = "none",
                   fig_number: int | str | None = None, protocol: bool = True,
                   outputs: tuple[str, ...] = OUTPUTS, live: Any = None, drawing: Drawing | None = None) -> dict[str, Any]:
     """Write final.svg, steps/ (when asked), protocol.json and *outputs*: animated.svg, player.html, storyboard.svg.
 
-    *live*: the data of a live player (:func:`construct.constructions.live.live_data`), whose slider the
+    *live*: the data of a live player (:func:`construct.live.wire.live_data`), whose slider the
     player then carries (:func:`construct.render.live.with_live`).  *drawing*: the figure's drawing in *st*,
     if the caller has laid it out already (a live player's sweep carries its camera views).
 
@@ -276,8 +207,6 @@ def write_outputs(stage: Path, construction: Construction | None, figure: Figure
                            caption=plate_caption(construction, figure, fig_number))
     else:
         final = drawing.layered()  # type: ignore[union-attr]
-    from .notation import with_provenance
-
     write_text(stage / "final.svg", with_provenance(final, construction, figure))
     n = len(figure.protocol.steps)  # the scene's steps
     width = max(3, len(str(n)))
@@ -291,9 +220,7 @@ def write_outputs(stage: Path, construction: Construction | None, figure: Figure
     if "animated" in outputs:
         write_text(stage / "animated.svg", animated_svg(scene, st, drawing=drawing))
     if "player" in outputs:
-        from .notation import given_rows
-
-        page = player_html(scene, st, givens=given_rows(figure), drawing=drawing)
+        page = player_html(scene, st, givens=given_rows(figure, construction), drawing=drawing)
         if live is not None:
             from .live import with_live
 
@@ -322,7 +249,7 @@ def is_replay_folder(folder: str | Path) -> bool:
         return False
 
 
-def write_replay(construction: Construction | None, figure: Figure, out_dir: str | Path, *, style: str = "plain",
+def write_replay(construction: Described | None, figure: Drawn, out_dir: str | Path, *, style: str = "plain",
                  frames: str = "none", styles: dict[str, Style] | None = None, force: bool = False,
                  live: Any = None) -> dict[str, Any]:
     """Write everything a replay produces; return a summary (counts, paths).

@@ -15,7 +15,7 @@ that :meth:`Plate.from_data` reads::
         return {"looks": {"axis": "centre", "curve": "heavy"},
                 "furniture": [{"kind": "dimension", "a": (-1, 0), "b": (1, 0), "text": "s", "offset": -0.3}]}
 
-    Construction(..., extra={"plate": my_plate})
+    Construction(..., plate=my_plate)
 
 Kinds: dimension (a, b, text, offset), angle (centre, start, end, radius,
 text, text_at), stroke (a, b, look, broken), lettering (at, text, anchor,
@@ -185,8 +185,8 @@ class Plate:
 
 
 def plate_of(construction: Any, figure: Any) -> Plate:
-    """The construction's plate description (``extra["plate"](figure)``), or an empty one."""
-    make: Callable[[Any], Any] | None = (getattr(construction, "extra", None) or {}).get("plate")
+    """The construction's plate (its ``plate(figure)``, plain data), or an empty one (no construction, or none)."""
+    make: Callable[[Any], Any] | None = getattr(construction, "plate", None)
     return Plate.from_data(make(figure)) if make else Plate()
 
 

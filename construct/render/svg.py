@@ -744,7 +744,7 @@ def mark_geometry(m: Mark, vp: Viewport, style: Style) -> list[tuple[str, str, d
     """What a mark draws on the canvas *vp*, without its letter: (id suffix, element, {attribute: text}).
 
     The one place that turns a mark's geometry into SVG attributes: the :class:`Drawing` builds its
-    elements from it, and the live player's sweep (:mod:`construct.constructions.live`) reads the same
+    elements from it, and the live player's sweep (:mod:`construct.live`) reads the same
     numbers at every grid value of a given without laying out a whole page.  An area is its outline and,
     when the style hatches it and the hatching meets it, a second element (suffix ``-hatch``).
 

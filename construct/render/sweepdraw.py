@@ -1,6 +1,6 @@
 """The marks' numbers over a whole sweep of the givens at once: what the drawing draws, value by value, in numpy.
 
-A live player's sweep (:mod:`construct.constructions.live`) asks what the player draws at
+A live player's sweep (:mod:`construct.live`) asks what the player draws at
 hundreds of rod ratios.  :func:`~construct.render.scene.build_scene` and
 :func:`~construct.render.svg.mark_geometry` answer for one value at a time (a scene of a thousand
 marks: 15 to 30 ms); this module answers for every value of a sweep in one pass over the marks,

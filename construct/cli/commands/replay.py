@@ -27,8 +27,8 @@ def add_arguments(p) -> None:
 
 
 def _live_page(c, fig, style: str):
-    """The live data of the player (construct.constructions.live), computed before anything is written."""
-    from ...constructions.live import live_data, live_givens, live_sweep
+    """The live data of the player (construct.live), computed before anything is written."""
+    from ...live import live_data, live_givens, live_sweep
     from ...kernel.errors import InvalidParameter
     from ...render.styles import STYLES
 

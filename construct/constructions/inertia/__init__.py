@@ -38,8 +38,10 @@ from __future__ import annotations
 
 import math
 
+from ...kernel.division import NAMES as DIVISION_NAMES
 from ...kernel.protocol import Caption
-from .. import Construction, register
+from .. import Construction, Figure, register
+from ..phrases import ANHANG_II, Cite, division, number, ratio, scale, stroke_parts
 from .build import validate_inertia, build_inertia
 from .checks import inertia_checks
 from .measure import abscissa, curve_deviation, ordinate
@@ -88,6 +90,14 @@ def inertia_plate(fig) -> dict:
     return {"looks": looks, "furniture": furniture}
 
 
+def inertia_wording(fig: Figure, lang: str) -> list[str]:
+    """The givens as seed 000 writes them: the rod, F/f, the pressure scale, and the division (of the
+    semicircle, or of the stroke into tenths)."""
+    g = fig.replay.givens
+    return [ratio("r/L", g["rod_ratio"], lang), f"F/f = {number(g['pressure_ratio'], lang)} at", scale(g, lang),
+            division(fig, lang) if "parts" in fig.params else stroke_parts(fig, lang)]
+
+
 INERTIA = register(Construction(
     name="inertia-curve",
     title=Caption("Curve der Massendrücke", "Curve of the inertia pressures"),
@@ -99,8 +109,12 @@ INERTIA = register(Construction(
     defaults={"rod_ratio": 5.0, "parts": 18, "method": "auto", "r": 1.0, "pressure_ratio": 1.0, "pressure_unit": 0.8},
     book_params=({"rod_ratio": 4.0}, {"rod_ratio": 5.0}, {"rod_ratio": 6.0}),
     structural=("parts", "method"),
-    extra={"plate": inertia_plate},
-), validate=validate_inertia)
+    cites=(Cite(ANHANG_II, "Fig. 78/79, Tabelle 1"),),
+    wording=inertia_wording,
+    methods=DIVISION_NAMES,
+    plate=inertia_plate,
+    validator=validate_inertia,
+))
 
 INERTIA_STROKE = register(Construction(
     name="inertia-stroke-fractions",
@@ -111,5 +125,8 @@ INERTIA_STROKE = register(Construction(
     defaults={"rod_ratio": 5.0, "divisions": 10, "r": 1.0, "pressure_ratio": 1.0, "pressure_unit": 0.8},
     book_params=({"rod_ratio": 5.0},),
     structural=("divisions",),
-    extra={"plate": stroke_fractions_plate},
-), validate=validate_inertia)
+    cites=(Cite(ANHANG_II, "Tabelle 2"),),
+    wording=inertia_wording,
+    plate=stroke_fractions_plate,
+    validator=validate_inertia,
+))

@@ -67,9 +67,11 @@ from __future__ import annotations
 from typing import Any
 
 from ...kernel.division import MAX_PARTS
+from ...kernel.division import NAMES as DIVISION_NAMES
 from ...kernel.errors import InvalidParameter
 from ...kernel.protocol import Caption
-from .. import Construction, positive, register
+from .. import Construction, Figure, positive, register
+from ..phrases import MECHANICS, Cite, number, ratio
 from .analytic import (DEAD_CENTRES, KOCHANSKI_ERROR, KOCHANSKI_RHO, excess_exact, excess_exact_array, excess_from,
                        extreme_angles_exact, kochanski_angle_error, max_magnification, piston_speed_factor,
                        piston_travel, quadrant_extremes)
@@ -105,6 +107,28 @@ __all__ = [
 ]
 
 
+#: Where the first crank starts, named (the parameter dead_centre): § 146's B₁ or the other books' zero.
+START = {
+    "crank-end": Caption("ab der äußeren Totlage B₁ (§ 146)", "from the crank-end dead centre B₁ (§ 146)"),
+    "head-end": Caption("ab der deckelseitigen Totlage", "from the head-end dead centre"),
+}
+
+
+def two_cranks_wording(fig: Figure, lang: str) -> list[str]:
+    """The givens as § 146 writes them: the rods (r/l), where the first crank starts, Qr/((m₁ + m₂)v₁²), the
+    magnification of the speed deviations, the circle's division."""
+    g = fig.replay.givens
+    de = lang == "de"
+    rod = (("unendlich lange Schubstangen" if de else "infinitely long rods") if fig.params.get("infinite_rod")
+           else ratio("r/l", g["rod_ratio"], lang))
+    n = fig.params.get("parts")
+    start = START["crank-end" if fig.params.get("dead_centre", "head-end") == "crank-end" else "head-end"]
+    return [rod, start.de if de else start.en, f"Qr/((m₁ + m₂)v₁²) = {number(g['fluctuation'], lang)}",
+            (f"Schwankungen {number(g['magnify'], lang)}fach vergrößert" if de
+             else f"speed deviations magnified {number(g['magnify'], lang)} times"),
+            f"Kreis in {2 * int(n)} Teilen" if de else f"circle in {2 * int(n)} parts"]
+
+
 TWO_CRANKS = register(Construction(
     name="two-cranks",
     title=Caption("Zwei Kurbeln unter 90°: Geschwindigkeitsschwankung",
@@ -119,13 +143,18 @@ TWO_CRANKS = register(Construction(
               "fluctuation": 0.25, "magnify": None, "dead_centre": "crank-end"},
     book_params=({"rod_ratio": 5.0, "parts": 12}, {"infinite_rod": True, "parts": 12}),
     structural=("parts", "method", "infinite_rod", "dead_centre"),
-    extra={"plate": two_cranks_plate,
-           "help": {"dead_centre": "where the first crank starts: crank-end (§ 146's B1, the default: upper sign "
-                                   "in the Hingang) or head-end (the other books' zero)"}},
+    cites=(Cite(MECHANICS, "Fig. 566"),),
+    wording=two_cranks_wording,
+    methods=DIVISION_NAMES,
+    conventions={"dead_centre": START},
+    plate=two_cranks_plate,
+    validator=validate_two_cranks,
+    help={"dead_centre": "where the first crank starts: crank-end (§ 146's B1, the default: upper sign "
+                         "in the Hingang) or head-end (the other books' zero)"},
     # A draftsman picks the magnification of the speed deviations for the rod he draws: so does a sweep.
     sweep=lambda g, ratios: {**g, "rod_ratio": ratios,
                              "magnify": auto_magnification(ratios, g["fluctuation"])},
-), validate=validate_two_cranks)
+))
 
 
 

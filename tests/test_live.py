@@ -15,8 +15,9 @@ import pytest
 
 from construct.cli.main import main
 from construct.constructions import get
-from construct.constructions.live import (QUANTUM_PX, arc_flags, decode, drawn_numbers, inflated, live_data,
-                                          live_givens, live_sweep, player_page)
+from construct.live import live_data, live_givens, live_sweep, player_page
+from construct.live.sweep import QUANTUM_PX
+from construct.render.wire import arc_flags, decode, drawn_numbers, inflated
 from construct.render.styles import STYLES
 
 
@@ -172,7 +173,7 @@ def test_the_sweep_measures_what_the_player_page_draws(name, params):
     ``construct replay --rod-ratio v`` writes) at the built value and at values across the domain: every
     mark's numbers, in the page's order, the fit and the letters' texts; the views at the built value are
     the camera's own."""
-    from construct.constructions.live import Measure, player_page_and_fit
+    from construct.live import Measure, player_page_and_fit
 
     c = get(name)
     built = c.figure(**params)
@@ -196,7 +197,7 @@ def test_a_carried_view_still_frames_its_marks():
     """Away from the built value each step's view is the built view carried along with the marks of the
     steps it shows: where the built view held those marks whole, the carried one does at every rod ratio
     (or is the whole figure), measured from the marks' numbers on the page at that value."""
-    from construct.constructions.live import Measure
+    from construct.live import Measure
 
     c = get("crank")
     built = c.figure(parts=6)

@@ -1,0 +1,69 @@
+"""The tangential-pressure plate (Fig. 26/27): what it shows, its looks and lettering."""
+
+from __future__ import annotations
+
+from .. import Figure
+
+__all__ = ["PLATE", "tangential_plate"]
+
+
+#: What the Fig. 26/27-like plate shows: the unrolled base, the ordinates and points of T, the curve,
+#: the mean line, the crossings and the hatched excess area.
+PLATE = (r"tbase", r"U\d+", r"u\d+", r"T\d+", r"tcurve", r"M0|Mn", r"mean", r"A1|A2", r"excess")
+
+
+def tangential_plate(fig: Figure) -> dict:
+    """Baumann's Fig. 26 as a plate: the diagram ABCD heavy (A the start, B the top at the cut-off,
+    D the end), the Ausgleichende MM lettered at both ends, and α₁, α₂ as he gives them -- abscissae,
+    lettered at the foot of thin ordinates below the base line, so that no letter sits on the crossings
+    or on the ends of the hatching.
+
+    Every position is a constructed point.
+    """
+    R = fig.replay
+    n = fig.params["parts"]
+    if fig.params.get("revolution"):  # a revolution's diagrams are lettered by their own steps (each crank, the sum)
+        return {"looks": {}, "furniture": _cylinder_letters(fig)}
+    U0, Un, M0, Mn = R["U0"], R[f"U{n}"], R["M0"], R["Mn"]
+    span = abs(Un[0] - U0[0])
+    d = 0.018 * span
+    top = max(range(1, n), key=lambda k: R[f"T{k}"][1])
+    T = R[f"T{top}"]
+    furniture: list[dict] = [
+        {"kind": "lettering", "at": (U0[0] - 0.9 * d, U0[1] + 1.2 * d), "text": "A"},
+        {"kind": "lettering", "at": (T[0], T[1] + 1.6 * d), "text": "B"},
+        {"kind": "lettering", "at": (Un[0] + 0.9 * d, Un[1] + 1.4 * d), "text": "D"},
+        {"kind": "lettering", "at": (M0[0] - 1.2 * d, M0[1] + 1.0 * d), "text": "M"},
+        {"kind": "lettering", "at": (Mn[0] + 1.2 * d, Mn[1] + 1.0 * d), "text": "M"},
+    ]
+    for name, text in (("A1", "α₁"), ("A2", "α₂")):
+        P = R[name]
+        furniture.append({"kind": "stroke", "a": (P[0], P[1]), "b": (P[0], U0[1] - 1.0 * d), "look": "dashed thin"})
+        furniture.append({"kind": "lettering", "at": (P[0], U0[1] - 2.2 * d), "text": text})
+    looks = {"A1": "unlettered", "A2": "unlettered", "tcurve": "heavy", "mean": "medium", "tbase": "medium"}
+    return {"looks": looks, "furniture": furniture}
+
+
+def _cylinder_letters(fig: Figure) -> list[dict]:
+    """HD and ND at a compound's (or tandem's) two cylinder curves, each where it stands clearest of the others."""
+    if not fig.params.get("low_pressure"):
+        return []
+    R = fig.replay
+    n = fig.params["parts"]
+    m = 2 * n
+    d = 0.018 * abs(R[f"U{m}"][0] - R["U0"][0])
+    out = []
+    for i, text in ((0, "HD"), (1, "ND")):
+        best, spot = -1.0, None
+        for j in range(2, m - 1):
+            if f"c{i}.{j}" not in R or f"S{j}" not in R:
+                continue
+            x, y = R[f"c{i}.{j}"]
+            others = [R[f"S{j}"][1], R[f"U{j}"][1], R["M0"][1]] + [R[f"c{o}.{j}"][1] for o in (0, 1)
+                                                                    if o != i and f"c{o}.{j}" in R]
+            clear = min(abs(y - v) for v in others)
+            if clear > best:
+                best, spot = clear, (x, y)
+        if spot is not None:
+            out.append({"kind": "lettering", "at": (spot[0], spot[1] - 1.4 * d), "text": text})
+    return out

@@ -1,0 +1,227 @@
+"""What the player page draws at a value of a given, without laying the page out (:class:`Measure`).
+
+**Cost.**  A grid value is not a page (0.25 s for the 18-part crank, 0.5 s for
+the inertia curve: the letters' placing and the camera): the marks' numbers of
+all the values a round of the refinement asks for are drawn at once
+(:class:`~construct.render.sweepdraw.SweepDrawing`, each kind of mark one
+array over the values), and only a value where a mark changes its form, or a
+figure the sweep does not draw (hatched areas), is drawn value by value (a
+scene and the marks' numbers: 15 to 30 ms).  The whole sweep of the 18-part
+crank takes about 1 s, of the inertia curve about 4 s.  A mark that jumps (an
+arc that flips to its other side) is recognised when halving its cell twice
+does not shrink its miss, instead of being refined down to :data:`MIN_CELL`.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from ..constructions import Construction
+from ..figure import Figure
+from ..render.camera import MAX_ZOOM, clip_view
+from ..render.output import scene_for
+from ..render.player import player_html
+from ..render.scene import extreme_points, reading
+from ..render.styles import STYLES
+from ..render.svg import Drawing, mark_geometry, mark_layer
+from ..render.svgdoc import fmt
+from ..render.sweepdraw import SweepDrawing, sweep_drawable
+from ..render.viewport import Viewport
+from ..render.wire import ARC, NUMBER, canonical_arc
+
+__all__ = ["Measure", "player_page", "player_page_and_fit", "fit_of"]
+
+
+class Measure:
+    """What the player page draws at a value of the given, without laying the page out: the same numbers as
+    :func:`~construct.render.wire.drawn_numbers` of :func:`player_page` (tests/test_live.py holds them equal).
+
+    The marks are drawn by the drawing's own code (:func:`~construct.render.svg.mark_geometry`) on the
+    drawing's own fit to the view.  Letters are not placed: the page moves them with their points.  Each
+    step's camera view is the built value's view carried along with the marks it frames: the box of the
+    marks of the steps it shows moves and grows or shrinks, and the view with it (its room round them kept
+    in proportion, cut to the canvas as the camera cuts it, never past the camera's greatest magnification).
+    The camera's own choice at another value is not computed (it places every letter of the figure, 0.2 to
+    0.5 s a value); a teacher who moves the rod ratio keeps the shots of the book's figure.  A sweep's values
+    are measured together by :meth:`frames`.
+
+    >>> from construct.constructions import get
+    >>> c = get("crank"); fig = c.figure(parts=3)
+    >>> keys, nums, fit, texts = Measure(c, fig)(fig)
+    >>> keys[0], texts["s0001-O-label"]
+    (('figure', 'viewBox', '# # # #'), 'O')
+    """
+
+    def __init__(self, construction: Construction, built: Figure, style: Any = None, *, drawing: Any = None):
+        self.construction = construction
+        self.style = style or STYLES["teaching"]
+        # *drawing*: the built figure's drawing in this style, if the caller has it (the player's own)
+        if drawing is None:
+            drawing = Drawing(scene_for(construction, built, ending=self.style.camera), self.style)
+        scene = drawing.scene
+        full = drawing.full_view
+        self.steps = [s.index for s in scene.steps]
+        views = [drawing.camera_view(k) for k in self.steps]
+        #: per step, which of the distinct views it shows (-1: the whole figure)
+        distinct: dict[tuple, int] = {}
+        self.view_of = [-1 if v == full else distinct.setdefault(v, len(distinct)) for v in views]
+        shows: list[set[int]] = [set() for _ in distinct]
+        for k, j in zip(self.steps, self.view_of):
+            if j >= 0:
+                shows[j].add(k)
+        self.framed = [[m.id for m in scene.marks if m.step in ks] for ks in shows]
+        self.views = list(distinct)
+        self.boxes = self._boxes(scene, drawing.vp)
+        self.least = 1.0 / MAX_ZOOM
+        self.template = scene
+        # the marks' keys as this value's page has them: each mark's numbers are a run of them, the runs in the
+        # page's order (a sweep draws each mark's numbers for every value at once, :meth:`frames`)
+        self.keys, _, _, texts = self(built)
+        self.runs: list[tuple[str, int]] = []
+        for k in self.keys[1:len(self.keys) - len(self.view_of)]:
+            if self.runs and self.runs[-1][0] == k[0]:
+                self.runs[-1] = (k[0], self.runs[-1][1] + k[2].count("#"))
+            else:
+                self.runs.append((k[0], k[2].count("#")))
+        # the letters whose text is read off the figure (an angle), by the id of their letter (a lettered line's
+        # letter stands at a point of its own, "NAME.at")
+        readings = {name: label for st in built.protocol.steps for name, label in st.labels if "{∠" in label}
+        of = lambda m: m.name[:-3] if m.id.endswith("-at") and m.name.endswith(".at") else m.name  # noqa: E731
+        self.readings = {f"{m.id}-label": readings[of(m)] for m in scene.marks if of(m) in readings and m.label}
+        self.texts = {k: v for k, v in texts.items() if k not in self.readings}  # the same at every value
+
+    def _boxes(self, scene, vp) -> list[tuple[float, float, float, float] | None]:
+        """Per distinct view, the box (canvas px: x0, y0, x1, y1) of the marks it frames."""
+        by_id = {m.id: m for m in scene.marks}
+        out = []
+        for ids in self.framed:
+            pts = [p for i in ids if i in by_id for p in extreme_points(by_id[i])]
+            if not pts:
+                out.append(None)
+                continue
+            xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+            (x0, y0), (x1, y1) = vp.px(min(xs), max(ys)), vp.px(max(xs), min(ys))  # y runs down the canvas
+            out.append((x0, y0, x1, y1))
+        return out
+
+    def _carried(self, j: int, box, full: tuple) -> list[float]:
+        """View j of the built value carried along with its marks, now in *box*.
+
+        The view moves with the marks' box and grows or shrinks with it, by the larger of the two sides'
+        ratios (a side shorter than a quarter of the view counts as that quarter, so that a box of one point
+        is not a division by nothing): a view that held its marks holds them still.  It shrinks no further
+        than the camera's greatest magnification."""
+        x, y, w, h = self.views[j]
+        b0 = self.boxes[j]
+        if b0 is None or box is None:
+            return list(full)
+        fw, fh = 0.25 * w, 0.25 * h
+        s = max(max(box[2] - box[0], fw) / max(b0[2] - b0[0], fw), max(box[3] - box[1], fh) / max(b0[3] - b0[1], fh))
+        if s < 1.0:
+            s = max(s, min(1.0, self.least * max(full[2] / w, full[3] / h)))
+        if w * s >= full[2] and h * s >= full[3]:
+            return list(full)
+        cx = (box[0] + box[2]) / 2 + (x + w / 2 - (b0[0] + b0[2]) / 2) * s
+        cy = (box[1] + box[3]) / 2 + (y + h / 2 - (b0[1] + b0[3]) / 2) * s
+        return list(clip_view(cx, cy, w * s, h * s, full))
+
+    def frames(self, protocol: Any, replay: Any, size: int) -> list[tuple]:
+        """:meth:`__call__` at every value of the sweep *replay* (of *size* values): the marks' numbers drawn for
+        all values at once (:class:`~construct.render.sweepdraw.SweepDrawing`) where that draws what the drawing
+        draws, value by value elsewhere (a value where a mark changes its form, a figure the sweep does not
+        draw)."""
+        at_once = None
+        if sweep_drawable(self.template):
+            try:
+                at_once = SweepDrawing(self.template, protocol, replay, size, self.style)
+            except ValueError:  # a mark of another kind than the built figure's: value by value
+                at_once = None
+        if at_once is not None and any(at_once.numbers.get(i, np.zeros((0, 0))).shape[1:] != (n,)
+                                       for i, n in self.runs):
+            at_once = None
+        if at_once is None or not at_once.ok.any():
+            return [self(Figure(protocol, replay.take(i, whole=True), self.construction.check)) for i in range(size)]
+        rows = np.hstack([at_once.numbers[i] for i, _ in self.runs])
+        width, height = (np.round(v, 2) for v in at_once.size)
+        px = at_once.page_px
+        boxes = []
+        for ids in self.framed:  # each view's marks' box, on the page of every value
+            e = [at_once.extremes[i] for i in ids if i in at_once.extremes]
+            if not e:
+                boxes.append(None)
+                continue
+            (x0, y0), (x1, y1) = (px(np.min([b[0] for b in e], 0), np.max([b[3] for b in e], 0)),
+                                  px(np.max([b[1] for b in e], 0), np.min([b[2] for b in e], 0)))
+            boxes.append((x0, y0, x1, y1))
+        out = []
+        for i in range(size):
+            if not at_once.ok[i]:
+                out.append(self(Figure(protocol, replay.take(i, whole=True), self.construction.check)))
+                continue
+            full = (0.0, 0.0, float(width[i]), float(height[i]))
+            nums = [0.0, 0.0, float(width[i]), float(height[i])] + rows[i].tolist()
+            carried = [self._carried(j, None if b is None else tuple(float(c[i]) for c in b), full)
+                       for j, b in enumerate(boxes)] + [list(full)]
+            for j in self.view_of:
+                nums += carried[j]
+            taken = replay.take(i)
+            texts = {**self.texts, **{k: reading(label, taken) for k, label in self.readings.items()}}
+            out.append((self.keys, nums, tuple(float(v) for v in at_once.fit[i]), texts))
+        return out
+
+    def __call__(self, figure: Figure) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:
+        st = self.style
+        scene = scene_for(self.construction, figure)
+        vp = Viewport.fit(scene.bbox, st, 0)
+        full = (0.0, 0.0, round(vp.width, 2), round(vp.height, 2))
+        # each layer's elements in the order of the marks, the layers in the page's order
+        layers: dict[str, tuple[list, list]] = {name: ([], []) for name in Drawing.LAYERS}
+        texts: dict[str, str] = {}
+        for m in scene.marks:
+            if m.label:
+                texts[f"{m.id}-label"] = m.label
+            lk, ln = layers[mark_layer(m)]
+            for suffix, _, attrs in mark_geometry(m, vp, st):
+                ident = m.id + suffix
+                for a, v in attrs.items():
+                    if a != "d":  # one number (cx, r, x1, ...)
+                        lk.append((ident, a, "#"))
+                        ln.append(float(v))
+                        continue
+                    ns = [float(x) for x in NUMBER.findall(v)]
+                    if ns:
+                        t = NUMBER.sub("#", v)
+                        lk.append((ident, a, t))
+                        ln.extend(canonical_arc(ns) if t == ARC else ns)
+        keys = [("figure", "viewBox", "# # # #")]
+        nums = [0.0, 0.0, float(fmt(vp.width)), float(fmt(vp.height))]
+        for lk, ln in layers.values():
+            keys += lk
+            nums += ln
+        boxes = self._boxes(scene, vp)
+        carried = [self._carried(j, box, full) for j, box in enumerate(boxes)] + [list(full)]  # [-1]: the whole
+        for i, j in enumerate(self.view_of):
+            keys.append(("#zoom", str(i), "# # # #"))
+            nums += carried[j]
+        return keys, nums, fit_of(vp), texts
+
+
+def player_page(construction: Construction, figure: Figure, style: Any) -> str:
+    """The player page of *figure* (the same scene, drawing and fit as ``construct replay`` writes)."""
+    scene = scene_for(construction, figure, ending=style.camera)
+    return player_html(scene, style, drawing=Drawing(scene, style))
+
+
+def player_page_and_fit(construction: Construction, figure: Figure, style: Any) -> tuple[str, tuple[float, float, float]]:
+    """:func:`player_page` and the fit of its drawing to the view: (ox, oy, s), a point (x, y) of the
+    construction is drawn at (ox + s x, oy - s y) px."""
+    scene = scene_for(construction, figure, ending=style.camera)
+    drawing = Drawing(scene, style)
+    return player_html(scene, style, drawing=drawing), fit_of(drawing.vp)
+
+
+def fit_of(vp: Viewport) -> tuple[float, float, float]:
+    """A drawing's fit to the view, (ox, oy, s): a point (x, y) of the construction is drawn at (ox + s x, oy - s y)."""
+    return (vp.margin + vp.left - vp.xmin * vp.scale, vp.margin + vp.top + vp.ymax * vp.scale, vp.scale)

@@ -1,0 +1,305 @@
+"""The grid of a live given: chosen so that the page's linear interpolation draws within 0.5 px.
+
+**The bound.**  The grid is chosen, not guessed: starting from a coarse grid in
+log10 of the given, every cell's midpoint is replayed and drawn, the linear
+interpolation of the cell's ends is compared there with the exact drawing,
+coordinate by coordinate (pixels of the player's 1400-wide view), and a cell
+whose error exceeds :data:`REFINE_PX` is split, until none does.  Stored
+coordinates are quantised to :data:`QUANTUM_PX`, which adds at most half a
+quantum; so every drawn coordinate the page shows at a midpoint is within
+``REFINE_PX + QUANTUM_PX / 2`` = 0.425 px < 0.5 px of the exact drawing
+(:attr:`LiveSweep.bound` is the measured maximum).  The drawing depends
+smoothly on the given between grid values -- no intersection of the
+constructions switches branch between neighbouring rod ratios
+(tests/test_sweep.py, ``test_no_intersection_switches_branch_between_neighbouring_ratios``,
+2000 ratios from 1.02 to 50; above 50 the refinement below would see a jump) --
+so the midpoint error bounds the cell's error up to the curvature's variation
+across the cell, which the refinement keeps small.  One thing in the drawing
+is not continuous: the broken axis (a gap wider than a fifth of the figure is
+broken out) appears at one rod ratio.  A cell across it never converges; it
+is split down to :data:`MIN_CELL` and recorded in :attr:`LiveSweep.jumps`,
+and the page snaps to the nearer side there.  An arc's large-arc flag is never
+blended: it comes from the nearer grid value, and a cell where it flips is
+refined while the other arc its ends allow lies more than 0.4 px away.  A mark
+that alone jumps inside the domain (the inertia curve's arc about D flips to
+its other side at several rod ratios) is drawn from the nearer grid value
+everywhere (:attr:`LiveSweep.snapped`) instead of forcing the grid down at every
+flip.  The grid stops growing at *max_values* values; a cell still too coarse
+then is recorded as a jump (measured: none for the crank and the inertia curve).
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..constructions import Construction
+from ..constructions.domain import ROD_RATIO, Domain
+from ..figure import Figure
+from ..kernel.errors import InvalidParameter
+from ..render.styles import STYLES
+from ..render.wire import arc_flags
+from .measure import Measure
+
+__all__ = ["LIVE_GIVENS", "LiveSweep", "live_givens", "live_sweep", "check_picks", "REFINE_PX", "QUANTUM_PX",
+           "MIN_CELL", "CHECK_VALUES"]
+
+#: The continuous givens a player can move: protocol name -> (stated domain, the book's symbol).
+LIVE_GIVENS: dict[str, tuple[Domain, str]] = {"rod_ratio": (ROD_RATIO, "L/r")}
+#: A cell is split while linear interpolation misses the exact drawing by more than this (px).
+REFINE_PX = 0.4
+#: The refinement blends coordinates rounded to multiples of this (px).
+QUANTUM_PX = 0.05
+#: A jump caused by at most this many marks is theirs (they are drawn from the nearer grid value), not the figure's.
+SNAP_AT_MOST = 3
+#: A mark whose miss at a cell's midpoint stays above this share of its miss in the cell split into it, twice
+#: running, jumps there (a smooth mark's miss falls to a quarter at each halving, a kink's to a half).
+JUMPING = 0.85
+#: ... and misses by more than this (px): a smaller step is refined like the rest.
+JUMP_PX = 2.0
+#: A cell narrower than this (in log10 of the given) is not split further: it straddles a jump of the drawing.
+MIN_CELL = 1e-4
+
+
+def live_givens(construction: Construction, figure: Figure) -> list[str]:
+    """The continuous givens of *figure* a player offers a slider for (those a sweep can replay).
+
+    >>> from construct.constructions import get
+    >>> live_givens(get("crank"), get("crank").figure()), live_givens(get("indicator-diagram"), get("indicator-diagram").figure())
+    (['rod_ratio'], [])
+    """
+    givens = dict(figure.replay.givens)
+    out = []
+    for name in LIVE_GIVENS:
+        if name == "rod_ratio" and construction.rod_ratio_sweep(givens, [1.0]) is not None:
+            out.append(name)
+    return out
+
+
+@functools.lru_cache(maxsize=4)
+def _key_columns(keys: tuple[tuple[str, str, str], ...]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Which key each number of *keys* belongs to, which numbers are views, which are large-arc flags
+    (asked at every cell of the refinement, for the same keys)."""
+    owner = np.asarray([i for i, k in enumerate(keys) for _ in range(k[2].count("#"))], dtype=int)
+    return owner, _columns(keys, lambda k: k[0] == "#zoom"), arc_flags(keys)
+
+
+def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
+                    snap: set[int]) -> tuple[float, dict[int, float]]:
+    """The largest distance (px) between the page's drawing at a cell's midpoint and the exact one, and the
+    keys that exceed REFINE_PX with the distance of their coordinates (without large-arc flags).
+
+    Coordinates are blended from the quantised ends; large-arc flags and snapped keys come from either end
+    (the worse counts); a wrong flag moves the arc by the distance between the two centres its ends and
+    radius allow, 2 sqrt(r^2 - (c/2)^2)."""
+    owner, views, flags = _key_columns(tuple(keys))
+    if owner.size == 0:
+        return 0.0, {}
+    q = lambda n: np.round(n / QUANTUM_PX) * QUANTUM_PX  # noqa: E731
+    blended = (q(na) + q(nb)) / 2
+    col_err = np.abs(blended - exact)
+    nearest = np.isin(owner, list(snap)) if snap else np.zeros(owner.size, dtype=bool)
+    col_err[nearest] = np.maximum(np.abs(na - exact), np.abs(nb - exact))[nearest]
+    col_err[views] = 0.0  # views frame the figure: blended, not refined for
+    for c in np.nonzero(flags & ~nearest)[0]:
+        col_err[c] = 0.0
+        if na[c] != exact[c] or nb[c] != exact[c]:  # c is the flag: the arc's numbers are c-5 .. c+3
+            x0, y0, r, x1, y1 = exact[c - 5], exact[c - 4], exact[c - 3], exact[c + 2], exact[c + 3]
+            half = math.hypot(x1 - x0, y1 - y0) / 2
+            col_err[c] = 2 * math.sqrt(max(r * r - half * half, 0.0))
+    key_err = np.zeros(len(keys))
+    np.maximum.at(key_err, owner, col_err)
+    # what a culprit misses by in its coordinates (a large-arc flag that flips is not a jump of the arc: the
+    # two arcs its ends allow meet as it flips, and refining converges there)
+    coord_err = np.zeros(len(keys))
+    np.maximum.at(coord_err, owner, np.where(flags & ~nearest, 0.0, col_err))
+    bad = np.nonzero(key_err > REFINE_PX)[0].tolist()
+    return float(col_err.max()), {k: float(coord_err[k]) for k in bad}
+
+
+def _columns(keys: list[tuple[str, str, str]], pick) -> np.ndarray:
+    """Which numbers of *keys* belong to keys *pick* selects."""
+    return np.asarray([pick(k) for k in keys for _ in range(k[2].count("#"))], dtype=bool)
+
+
+@dataclass
+class LiveSweep:
+    """A given's grid and what the player draws at every grid value."""
+
+    given: str
+    symbol: str
+    domain: Domain
+    initial: float
+    grid: np.ndarray
+    keys: list[tuple[str, str, str]]
+    #: grid x numbers, pixels of the player's view.
+    drawn: np.ndarray
+    #: The measured maximum of |interpolated - exact| over every midpoint tested (px, after quantisation).
+    bound: float
+    #: Cells (low, high) across which the drawing jumps (the broken axis appearing).
+    jumps: list[tuple[float, float]] = field(default_factory=list)
+    #: At the grid values the page shows checks for (:func:`check_picks`), by their index in the grid:
+    #: [[name, measured, expected, error, tolerance, ok], ...].
+    checks: dict[int, list[list[Any]]] = field(default_factory=dict)
+    #: Elements whose geometry is not interpolated (their form changes across the domain): shown at the built value.
+    fixed: list[str] = field(default_factory=list)
+    #: Letters whose text changes with the given (readings of the figure, e.g. the angle AOW): shown at the
+    #: built value only.
+    readings: list[str] = field(default_factory=list)
+    #: Marks drawn from the nearer grid value (they jump inside the domain: an arc drawn the other way round).
+    snapped: list[tuple[str, str, str]] = field(default_factory=list)
+    #: The grid in log10 of the given, exactly as refined (a cell (a, b) was split at (a + b) / 2), and how
+    #: many values the refinement started from: the cells of the refinement (:func:`column_knots`).
+    u: np.ndarray | None = None
+    start: int = 0
+    #: Per grid value, the drawing's fit to the view (ox, oy, s): (x, y) is drawn at (ox + s x, oy - s y) px.
+    fit: np.ndarray | None = None
+    #: The checks at the built value, as :attr:`checks`.
+    built_checks: list[list[Any]] = field(default_factory=list)
+
+    def nearest_columns(self) -> np.ndarray:
+        """The columns taken from the nearer grid value: large-arc flags and the snapped marks."""
+        snapped = set(self.snapped)
+        return arc_flags(self.keys) | _columns(self.keys, lambda k: k in snapped)
+
+
+def _frames(construction: Construction, figure: Figure, given: str, values: np.ndarray, measure) -> list[tuple]:
+    """(keys, numbers, fit, texts) of the player's figure at every value, from one sweep of the protocol."""
+    givens = dict(figure.replay.givens)
+    if given == "rod_ratio":
+        swept = construction.rod_ratio_sweep(givens, values)
+    else:
+        swept = {**givens, given: np.asarray(values, dtype=float)}
+    if swept is None:
+        raise InvalidParameter(f"{construction.name} has no given {given} to sweep")
+    replay = figure.protocol.replay(swept)
+    return measure.frames(figure.protocol, replay, len(values)), replay
+
+
+def live_sweep(construction: Construction, figure: Figure, given: str, *, initial: float | None = None,
+               style: Any = None, start: int = 9, max_values: int = 400, drawing: Any = None) -> LiveSweep:
+    """The grid of *given* over its domain on which linear interpolation draws within 0.5 px (see the module).
+
+    *drawing*: the figure's :class:`~construct.render.svg.Drawing` in *style*, if the caller lays it out anyway
+    (the player's): its camera views are the ones carried along."""
+    style = style or STYLES["teaching"]
+    domain, symbol = LIVE_GIVENS[given]
+    initial = float(figure.replay.givens[given] if initial is None else initial)
+    measure = Measure(construction, figure, style, drawing=drawing)
+    lo, hi = math.log10(domain.low), math.log10(domain.high)
+    us = list(np.linspace(lo, hi, start))
+    values = lambda u: np.clip(10.0 ** np.asarray(u), domain.low, domain.high)  # noqa: E731
+    frames, _ = _frames(construction, figure, given, values(us), measure)
+    # each value's numbers as one array, made once (every cell it bounds reads them)
+    as_arrays = lambda fs: [(f[0], np.asarray(f[1], dtype=float), *f[2:]) for f in fs]  # noqa: E731
+    data = dict(zip(us, as_arrays(frames)))
+    todo = list(zip(us[:-1], us[1:]))
+    jumps: list[tuple[float, float]] = []
+    snap: set[int] = set()  # keys drawn from the nearer grid value
+    bound = 0.0
+    # per cell, its culprits' errors in the cell it was split from and in that one's parent: a mark that
+    # jumps misses by the same at every depth, a smooth one by a quarter at each halving
+    before: dict[tuple[float, float], tuple[dict[int, float], dict[int, float]]] = {}
+    while todo:
+        mids = [(a + b) / 2 for a, b in todo]
+        mframes, _ = _frames(construction, figure, given, values(mids), measure)
+        mframes = as_arrays(mframes)
+        nxt = []
+        for (a, b), m, fm in zip(todo, mids, mframes):
+            data[m] = fm
+            ka, na = data[a][:2]
+            kb, nb = data[b][:2]
+            parent, grand = before.pop((a, b), ({}, {}))
+            if not ka == kb == fm[0]:
+                err, culprits = math.inf, {-1: math.inf}
+            else:
+                err, culprits = _midpoint_error(ka, na, nb, fm[1], snap)
+            if err <= REFINE_PX:
+                bound = max(bound, err)
+                continue
+            if 0 < len(culprits) <= SNAP_AT_MOST and -1 not in culprits and all(ka[c][0] != "figure" and
+                    c in parent and c in grand and e > JUMPING * parent[c] and parent[c] > JUMPING * grand[c]
+                    and e > JUMP_PX for c, e in culprits.items()):
+                # one or two marks jump here (an arc drawn the other way round): halving the cell twice did not
+                # shrink what they miss by, so they are drawn from the nearer grid value everywhere (the rest
+                # stays blended) rather than refined down to the floor
+                snap.update(culprits)
+                continue
+            if b - a >= MIN_CELL and len(data) <= max_values:
+                nxt += [(a, m), (m, b)]
+                before[(a, m)] = before[(m, b)] = (culprits, parent)
+                continue
+            if 0 < len(culprits) <= SNAP_AT_MOST and -1 not in culprits:
+                snap.update(culprits)
+                continue
+            jumps.append((float(values(a)), float(values(b))))
+        todo = nxt
+    us = sorted(data)
+    # The keys every grid value shares; a few elements change form (e.g. a curve's number of points):
+    # they stay at the built value.
+    shared = set(data[us[0]][0])
+    for u in us:
+        shared &= set(data[u][0])
+    keys = [k for k in data[us[0]][0] if k in shared]
+    rows = []
+    for u in us:
+        kk, nn = data[u][:2]
+        if kk == keys:  # (the commonest: every mark at every value) the numbers as they are
+            rows.append(nn)
+            continue
+        pos, at = {}, 0
+        for k in kk:
+            n = k[2].count("#")
+            pos[k] = nn[at:at + n]
+            at += n
+        rows.append([x for k in keys for x in pos[k]])
+    fixed = sorted({k[0] for u in us for k in data[u][0] if k not in shared})
+    # letters whose text is not the same at every grid value: values read off the figure (an angle in degrees
+    # and minutes); a blend of two grid values' readings would print minutes the figure does not have
+    idents = set().union(*(data[u][3] for u in us))
+    # (a letter left out at some values -- no room there -- is not one of them)
+    varying = sorted(i for i in idents if len({data[u][3][i] for u in us if i in data[u][3]}) > 1)
+    first = data[us[0]][0]
+    snapped = [k for i, k in enumerate(first) if i in snap and k in shared]
+    grid = values(us)
+    live = LiveSweep(given, symbol, domain, initial, grid, keys, np.asarray(rows, dtype=float), bound, jumps,
+                     fixed=fixed, snapped=snapped, u=np.asarray(us, dtype=float), start=start, readings=varying,
+                     # the fit travels as float32: the columns are checked against the drawing through it
+                     fit=np.asarray([data[u][2] for u in us], dtype=np.float32).astype(float))
+    picks = check_picks(grid)
+    live.checks = dict(zip(picks, _checks(construction, figure, given, grid[picks])))
+    # and at the built value (the book's): a teacher who returns there sees its own checks
+    live.built_checks = [[c.name, c.measured, c.expected, c.error, c.tolerance, bool(c.ok)]
+                         for c in construction.checks(figure)]
+    return live
+
+
+def _checks(construction: Construction, figure: Figure, given: str, grid: np.ndarray) -> list[list[list[Any]]]:
+    """The construction's checks at every value of *grid*, from one sweep (:meth:`Construction.sweep_checks`)."""
+    givens = dict(figure.replay.givens)
+    swept = construction.rod_ratio_sweep(givens, grid) if given == "rod_ratio" else {**givens, given: grid}
+    sweep = Figure(figure.protocol, figure.protocol.replay(swept), construction.check)
+    return [[[c.name, c.measured, c.expected, c.error, c.tolerance, bool(c.ok)] for c in row]
+            for row in construction.sweep_checks(sweep)]
+
+
+#: The checks travel at this many grid values at most, and at the built value (the page shows the nearest: it
+#: says which).
+CHECK_VALUES = 48
+
+
+def check_picks(grid: np.ndarray) -> list[int]:
+    """The grid values (indices) the page shows checks at: up to CHECK_VALUES, evenly in log10 of the given
+    (the grid is dense where the drawing bends, the slider is not), the first and the last among them.
+
+    >>> check_picks(np.array([1.0, 1.1, 1.2, 10.0, 100.0]))  # 1.1 and 1.2 are one place on the slider
+    [0, 2, 3, 4]
+    >>> len(check_picks(10 ** np.linspace(0, 3, 500))), check_picks(10 ** np.linspace(0, 3, 500))[-1]
+    (48, 499)
+    """
+    u = np.log10(grid)
+    return sorted({int(np.argmin(np.abs(u - t))) for t in np.linspace(u[0], u[-1], min(len(u), CHECK_VALUES))})

@@ -1,0 +1,235 @@
+"""What travels to the live page: the sweep's coordinates, each at the grid values it needs, and the checks.
+
+**What travels.**  The grid is shared, but most coordinates need few of its
+values: each coordinate keeps only the grid values where the line between
+its neighbours would miss the exact drawing by more than :data:`ROW_PX` at
+some grid value between (:func:`column_knots`), stored either as drawn or,
+through each grid value's fit to the view, in the construction's own units
+(the figure is rescaled to the view's width as L/r changes, so every drawn
+coordinate moves, though the crank circle and all on it do not move in the
+construction); identical coordinates travel once (:func:`encode`).  The page
+rebuilds every grid value from that, then blends as above.
+
+The format is the page's (:mod:`construct.render.wire` reads it back as the page's script does).
+"""
+
+from __future__ import annotations
+
+import base64
+import math
+import re
+import zlib
+from typing import Any
+
+import numpy as np
+
+from ..render.wire import ARC, LENGTH, PX, X, Y, as_drawn, as_stored, deflated
+from .sweep import QUANTUM_PX, LiveSweep
+
+__all__ = ["ROW_PX", "STORED_PX", "column_kinds", "column_knots", "encode", "live_data"]
+
+#: The page's coordinates travel as multiples of this (px, or its share of the largest scale in the
+#: construction's units): the rounding is inside ROW_PX, which the columns are checked against.
+STORED_PX = 0.1
+#: At every grid value, a coordinate the page computes from its column's kept values is within this of the
+#: exact drawing (px, quantisation included); between grid values the page blends two grid values, whose
+#: own blending error the refinement held under REFINE_PX at the parent cell's midpoint (about a quarter of
+#: that at a cell's own), so a drawn coordinate stays under 0.5 px (measured at fresh values by the tests).
+ROW_PX = 0.35
+_PATH = re.compile(r"^[MLCZ# ,]*$")
+
+
+def column_kinds(keys: list[tuple[str, str, str]]) -> np.ndarray:
+    """What each number of *keys* is in the construction: x, y, a length, or a number of the drawing only.
+
+    >>> column_kinds([("a", "cx", "#"), ("a", "r", "#"), ("b", "d", "M# #A# # # # # # #"), ("#zoom", "0", "# # # #")]).tolist()
+    [1, 3, 1, 2, 3, 3, 0, 0, 0, 1, 2, 1, 2, 3, 3]
+    """
+    out: list[int] = []
+    for ident, attr, template in keys:
+        n = template.count("#")
+        if attr in ("cx", "x1", "x2", "x"):
+            out.append(X)
+        elif attr in ("cy", "y1", "y2", "y"):
+            out.append(Y)
+        elif attr == "r":
+            out.append(LENGTH)
+        elif ident == "#zoom" or attr == "viewBox":
+            out += [X, Y, LENGTH, LENGTH]
+        elif attr == "d" and template == ARC:
+            out += [X, Y, LENGTH, LENGTH, PX, PX, PX, X, Y]
+        elif attr in ("d", "points") and _PATH.match(template):
+            out += [X if i % 2 == 0 else Y for i in range(n)]
+        else:
+            out += [PX] * n
+    return np.asarray(out, dtype=np.int8)
+
+
+def _quanta(live: LiveSweep, kinds: np.ndarray) -> np.ndarray:
+    """The quantum of each column in its stored units: STORED_PX drawn, at most that at the largest scale."""
+    smax = float(np.max(live.fit[:, 2])) if live.fit is not None and kinds.any() else 1.0
+    return np.where(kinds > 0, STORED_PX / smax, STORED_PX)
+
+
+def _knots(live: LiveSweep, kinds: np.ndarray) -> np.ndarray:
+    """The grid values each column needs when stored as *kinds* says (see :func:`column_knots`)."""
+    drawn = live.drawn
+    rows, cols = drawn.shape
+    u = np.asarray(live.u if live.u is not None else np.log10(live.grid), dtype=float)
+    keep = np.zeros((rows, cols), dtype=bool)
+    keep[:, live.nearest_columns()] = True
+    quanta = _quanta(live, kinds)
+    q = np.round(as_stored(drawn, live.fit, kinds) / quanta) * quanta
+    start = live.start or rows
+    # the starting values of the refinement: evenly spaced in log10 (live_sweep's np.linspace)
+    firsts = sorted({int(np.argmin(np.abs(u - x))) for x in np.linspace(u[0], u[-1], start)})
+
+    def mid_of(i: int, j: int) -> int | None:
+        m = (u[i] + u[j]) / 2
+        at = int(np.searchsorted(u, m))
+        for k in (at - 1, at, at + 1):
+            if i < k < j and abs(u[k] - m) <= 1e-12 * max(1.0, abs(m)):
+                return k
+        return None
+
+    todo = [(i, j, np.ones(cols, dtype=bool)) for i, j in zip(firsts[:-1], firsts[1:])]
+    while todo:
+        i, j, cs = todo.pop()
+        m = mid_of(i, j)
+        if m is None:  # a cell the refinement did not split: every column's own
+            keep[[i, j]] |= cs
+            continue
+        # the line between the cell's quantised ends, at every grid value inside the cell, as drawn
+        t = ((u[i + 1:j] - u[i]) / (u[j] - u[i]))[:, None]
+        fit = live.fit[i + 1:j] if live.fit is not None else None
+        at = np.flatnonzero(cs)  # only the columns still open here (deep in the tree, a few of thousands)
+        err = np.abs(as_drawn(q[i, at] + (q[j, at] - q[i, at]) * t, fit, kinds[at]) - drawn[i + 1:j, at]).max(axis=0)
+        done = np.zeros(cols, dtype=bool)
+        done[at[err <= ROW_PX]] = True
+        keep[[i, j]] |= done
+        rest = cs & ~done
+        if rest.any():
+            todo += [(i, m, rest), (m, j, rest)]
+    return keep
+
+
+def column_knots(live: LiveSweep) -> tuple[np.ndarray, np.ndarray]:
+    """Which grid values each column of *live* needs (grid x columns, bool), and how it is stored.
+
+    The refinement splits a cell while any coordinate misses at the midpoint; most coordinates would not have
+    needed it.  Each column is walked down the same tree of cells, and a cell is that column's own (its ends
+    kept, the grid values inside it dropped) as soon as the line between the cell's quantised ends is within
+    :data:`ROW_PX` of the exact drawing at *every* grid value inside the cell (the midpoint, and every
+    midpoint the refinement drew below it).  Between its kept values a column is that line (the page
+    interpolates in log10 of the given).  Large-arc flags and snapped marks (drawn from the nearer grid
+    value) keep every grid value.
+
+    The fit to the view changes with the given (the figure is scaled to the view's width), so every drawn
+    coordinate moves, and kinks where another point becomes the one that bounds the figure; in the
+    construction's own units most coordinates do not move at all (the crank circle and everything on it) or
+    move smoothly.  So each column is stored either as drawn or, through the row's fit, as the construction's
+    x, y or length (:func:`column_kinds`), whichever needs fewer grid values.
+
+    >>> from construct.constructions.domain import ROD_RATIO
+    >>> live = LiveSweep("rod_ratio", "L/r", ROD_RATIO, 5.0, np.array([1.0, 10 ** 0.5, 10.0]), [("p", "cx", "#"),
+    ...     ("q", "cx", "#")], np.array([[0.0, 0.0], [5.0, 7.0], [10.0, 10.0]]), 0.0, u=np.array([0.0, 0.5, 1.0]),
+    ...     start=2)
+    >>> column_knots(live)[0].T.astype(int).tolist()  # p is a line: its middle value is not needed; q is not
+    [[1, 0, 1], [1, 1, 1]]
+    """
+    cols = live.drawn.shape[1]
+    natural = column_kinds(live.keys) if live.fit is not None else np.zeros(cols, dtype=np.int8)
+    as_drawn = _knots(live, np.zeros(cols, dtype=np.int8))
+    if not natural.any():
+        return as_drawn, natural
+    as_built = _knots(live, natural)
+    built = as_built.sum(axis=0) < as_drawn.sum(axis=0)
+    return np.where(built, as_built, as_drawn), np.where(built, natural, 0).astype(np.int8)
+
+
+def encode(live: LiveSweep) -> dict[str, Any]:
+    """The coordinates of *live* for the page: identical columns once, each column at its own grid values and
+    in its own units (:func:`column_knots`), quantised, delta-coded, deflated, base64.
+
+    One deflated buffer: the column map (which stored column each coordinate is; uint16 or int32), each stored
+    column's kind (uint8), its kept grid values as bits, the fit of every grid value (3 float32), each stored
+    column's first value (int32), then the deltas between its kept values, all columns one after the other, as
+    int16 where they fit (else int32) in byte planes (all low bytes, then all high bytes: the high bytes of
+    small deltas are runs of 0 and 255 that deflate squeezes away).  :func:`construct.render.wire.decode` is
+    what the page does.
+
+    >>> from construct.constructions.domain import ROD_RATIO
+    >>> from construct.render.wire import decode
+    >>> live = LiveSweep("rod_ratio", "L/r", ROD_RATIO, 5.0, np.array([1.0, 10 ** 0.5, 10.0]), [("p", "cx", "#"),
+    ...     ("q", "cx", "#"), ("r", "cx", "#")], np.array([[0.0, 0.0, 0], [5.0, 7.0, 5], [10.0, 10.0, 10]]), 0.0,
+    ...     u=np.array([0.0, 0.5, 1.0]), start=2)
+    >>> e = encode(live); (e["ucols"], e["width"]), decode(e, [0.0, 0.5, 1.0], 3, 3).tolist()
+    ((2, 2), [[0.0, 0.0, 0.0], [5.0, 7.0, 5.0], [10.0, 10.0, 10.0]])
+    """
+    rows, cols = live.drawn.shape
+    keep, kinds = column_knots(live)
+    quanta = _quanta(live, kinds)
+    q = np.round(as_stored(live.drawn, live.fit, kinds) / quanta).astype(np.int64)
+    fit = live.fit if live.fit is not None else np.zeros((rows, 3))
+    # identical columns (a point's coordinate in its circle, its lines, its arcs) travel once, with the union
+    # of their kept values; stored in the order the columns first appear (neighbours stay neighbours).  A
+    # column is known by its bytes (np.unique over columns sorts them all: half the encoding's time)
+    whole = np.ascontiguousarray(np.vstack([q, keep, kinds[None, :]]).T)
+    seen: dict[bytes, int] = {}
+    colmap = np.empty(cols, dtype=np.int64)
+    firsts: list[int] = []
+    for c in range(cols):
+        colmap[c] = seen.setdefault(whole[c].tobytes(), len(firsts))
+        if colmap[c] == len(firsts):
+            firsts.append(c)
+    pick = np.asarray(firsts, dtype=np.int64)
+    uq, ukeep, ukinds = q[:, pick], keep[:, pick], kinds[pick]
+    ukeep[[0, -1]] = True
+    values = [uq[ukeep[:, c], c] for c in range(uq.shape[1])]
+    deltas = np.concatenate([np.diff(v) for v in values]) if values else np.zeros(0, dtype=np.int64)
+    width = 2 if deltas.size == 0 or np.abs(deltas).max() < 2 ** 15 else 4
+    mapw = 2 if uq.shape[1] < 2 ** 16 else 4
+    planes = np.ascontiguousarray(deltas.astype(f"<i{width}").view(np.uint8).reshape(-1, width).T)
+    payload = (colmap.astype(f"<u{mapw}").tobytes() + ukinds.astype(np.uint8).tobytes()
+               + np.packbits(ukeep.T.reshape(-1)).tobytes() + fit.astype("<f4").tobytes()
+               + uq[0].astype("<i4").tobytes() + planes.tobytes())
+    return {"data": base64.b64encode(zlib.compress(payload, 9)).decode("ascii"), "width": width, "mapw": mapw,
+            "ucols": int(uq.shape[1]), "q": STORED_PX, "qx": float(_quanta(live, np.ones(1, dtype=np.int8))[0])}
+
+
+def live_data(live: LiveSweep) -> dict[str, Any]:
+    """What the page needs: the given and its domain in the open; deflated: the grid (log10), the keys, which
+    columns are drawn from the nearer grid value, the jumps (``meta_z``), the coordinates (``data``,
+    :func:`encode`) and the checks (``checks_z``)."""
+    # a jump: the index of its cell's lower grid value
+    where = {float(v): i for i, v in enumerate(live.grid)}
+    meta = {"grid": [round(math.log10(v), 12) for v in live.grid],
+            "keys": [list(k) for k in live.keys], "flags": live.nearest_columns().nonzero()[0].tolist(),
+            "jumps": sorted(where[float(a)] for a, _ in live.jumps)}
+    return {"given": live.given, "symbol": live.symbol, "low": live.domain.low, "high": live.domain.high,
+            "initial": live.initial, "rows": int(live.drawn.shape[0]), "cols": int(live.drawn.shape[1]),
+            **({"readings": live.readings} if live.readings else {}),
+            **encode(live), "bound": round(live.bound + QUANTUM_PX / 2, 3),
+            "meta_z": deflated(meta), "checks_z": deflated(_check_table(live))}
+
+
+def _check_table(live: LiveSweep) -> dict[str, Any]:
+    """The checks at up to CHECK_VALUES grid values, evenly in log10: names once, numbers to 9 digits."""
+    if not live.checks:
+        return {"checks": [], "check_values": [], "check_names": []}
+    g = lambda x: float(f"{x:.9g}") if math.isfinite(x) else None  # noqa: E731
+    at = [(float(live.grid[i]), live.checks[i]) for i in sorted(live.checks)]
+    if live.built_checks and all(v != live.initial for v, _ in at):  # the book's value among them
+        at = sorted(at + [(float(live.initial), live.built_checks)], key=lambda x: x[0])
+
+    def row(c: list[Any]) -> list[Any]:
+        # [formula, error, ok] and the constructed value where formula + error does not give its 9 digits
+        # (a Euclidean chain's error is 1e-16: the constructed value is the formula's, to every digit shown)
+        expected, error = g(c[2]), float(f"{c[3]:.2g}") if math.isfinite(c[3]) else None
+        out = [expected, error, c[5]]
+        if expected is None or error is None or g(expected + error) != g(c[1]):
+            out.append(g(c[1]))
+        return out
+
+    return {"check_names": [c[0] for c in at[0][1]], "check_values": [v for v, _ in at],
+            "checks": [[row(c) for c in cs] for _, cs in at]}

@@ -1,0 +1,171 @@
+"""The live player's wire format, as the page's script reads it (:data:`construct.render.live.LIVE_SCRIPT`).
+
+A live player's data (:func:`construct.live.wire.live_data`) names every number of the drawn figure by a key
+``(element id, attribute, template)``: the attribute's text with each number written ``#``, so that the page
+writes the numbers of a grid value back into the template.  :func:`drawn_numbers` reads those keys and numbers
+out of a player page's SVG (an arc's numbers as drawn counter-clockwise, :func:`canonical_arc`, so that they vary
+continuously with the given).  The coordinates travel deflated: each stored column in its own units (drawn, or
+the construction's x, y or length through the grid value's fit to the view, :func:`as_drawn`), between its kept
+grid values a line in log10 of the given.  :func:`decode` is what the script's ``expand`` does, in numpy: the
+tests hold the two to the same numbers.
+
+>>> keys, nums, _ = drawn_numbers('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 5">'
+...                               '<path id="a" d="M1 0A1 1 0 0 0 0 1"/></svg>')
+>>> keys[1], nums[4:]      # drawn clockwise: read as the same arc counter-clockwise
+(('a', 'd', 'M# #A# # # # # # #'), [0.0, 1.0, 1.0, 1.0, 0.0, 0.0, 1.0, 1.0, 0.0])
+>>> inflated(deflated({"a": [1, 2]}))
+{'a': [1, 2]}
+"""
+
+from __future__ import annotations
+
+import base64
+import json
+import re
+import xml.etree.ElementTree as ET
+import zlib
+from typing import Any, Mapping
+
+import numpy as np
+
+__all__ = ["drawn_numbers", "arc_flags", "canonical_arc", "decode", "as_drawn", "as_stored", "deflated", "inflated",
+           "ARC", "NUMBER", "PX", "X", "Y", "LENGTH"]
+
+#: A number as the drawing writes it.
+NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
+#: The attributes that carry geometry.
+_GEOMETRY = ("cx", "cy", "r", "x1", "y1", "x2", "y2", "d", "points", "viewBox")
+#: The template of an arc's path: its start, radii, rotation, large-arc and sweep flags, end.
+ARC = "M# #A# # # # # # #"
+#: How a column is stored: as drawn (px), or in the construction's own units through the row's fit to the
+#: view (ox, oy, s): an x (ox + s x), a y (oy - s y), a length (s l).
+PX, X, Y, LENGTH = 0, 1, 2, 3
+
+
+def drawn_numbers(page: str) -> tuple[list[tuple[str, str, str]], list[float], dict[str, Any]]:
+    """The geometry of a player page's figure: ((element id, attribute, template), ...) and the numbers in order.
+
+    Every element with an id, the figure's view box and, when the page has the player's data, each step's
+    magnified view (key ``("#zoom", k, ...)``).  The third value holds the text of every lettered element by
+    id (``texts``): a letter that is a measured value (an angle read off the figure) changes with the given.
+
+    >>> keys, nums, _ = drawn_numbers('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 5">'
+    ...                               '<circle id="p" cx="1.5" cy="2" r="3"/></svg>')
+    >>> keys, nums
+    ([('', 'viewBox', '# # # #'), ('p', 'cx', '#'), ('p', 'cy', '#'), ('p', 'r', '#')], [0.0, 0.0, 10.0, 5.0, 1.5, 2.0, 3.0])
+    """
+    svg = page[page.index("<svg"):page.index("</svg>") + len("</svg>")]
+    root = ET.fromstring(svg)
+    keys: list[tuple[str, str, str]] = []
+    nums: list[float] = []
+    texts: dict[str, str] = {}
+    for e in root.iter():
+        ident = e.get("id") or ""
+        if ident and e.tag.rsplit("}", 1)[-1] == "text":
+            texts[ident] = "".join(e.itertext())
+        if e is not root and (not ident or ident == "ring"):  # the ring is the player's (the page moves it)
+            continue
+        for a in _GEOMETRY:
+            v = e.get(a)
+            if v is None or (e is root) != (a == "viewBox"):
+                continue
+            ns = NUMBER.findall(v)
+            if ns:
+                keys.append((ident, a, NUMBER.sub("#", v)))
+                fs = [float(x) for x in ns]
+                nums.extend(canonical_arc(fs) if a == "d" and keys[-1][2] == ARC else fs)
+    marker = '<script type="application/json" id="data">'
+    if marker in page:
+        at = page.index(marker) + len(marker)
+        data = json.loads(page[at:page.index("</script>", at)])
+        full = [float(x) for x in root.get("data-full", root.get("viewBox", "")).split()]
+        # each step's view: the camera's (``views``, ``v``) or the magnified box (``zooms``, ``z``; -1: the whole)
+        boxes, index = ("views", "v") if "views" in data else ("zooms", "z")
+        for i, st in enumerate(data["steps"]):
+            keys.append(("#zoom", str(i), "# # # #"))
+            j = st.get(index, -1)
+            nums.extend(float(x) for x in data[boxes][j]) if j >= 0 else nums.extend(full)
+
+    return keys, nums, {"texts": texts}
+
+
+def arc_flags(keys: list[tuple[str, str, str]]) -> np.ndarray:
+    """Which of the numbers of *keys* are an arc's large-arc flag (taken from the nearer grid value, not blended).
+
+    >>> arc_flags([("a", "cx", "#"), ("b", "d", "M# #A# # # # # # #")]).nonzero()[0].tolist()
+    [6]
+    """
+    out: list[bool] = []
+    for k in keys:
+        n = k[2].count("#")
+        out += [k[1] == "d" and k[2] == ARC and i == 5 for i in range(n)]
+    return np.asarray(out, dtype=bool)
+
+
+def canonical_arc(ns: list[float]) -> list[float]:
+    """An arc path's numbers drawn counter-clockwise on the page (sweep flag 1): the same arc, its ends swapped
+    where it was drawn the other way, so that its numbers vary continuously with the given."""
+    if ns[6] == 0.0:
+        return [ns[7], ns[8], ns[2], ns[3], ns[4], ns[5], 1.0, ns[0], ns[1]]
+    return ns
+
+
+def as_stored(drawn: np.ndarray, fit: np.ndarray | None, kinds: np.ndarray) -> np.ndarray:
+    """The drawn numbers in each column's stored units (the inverse of :func:`as_drawn`)."""
+    if fit is None or not kinds.any():
+        return drawn
+    ox, oy, sc = (fit[:, i:i + 1] for i in range(3))
+    return np.select([kinds == X, kinds == Y, kinds == LENGTH], [(drawn - ox) / sc, (oy - drawn) / sc, drawn / sc],
+                     drawn)
+
+
+def as_drawn(stored: np.ndarray, fit: np.ndarray | None, kinds: np.ndarray) -> np.ndarray:
+    """Stored numbers (rows of the grid x columns) as drawn, px: the script's ``expand`` after its lines."""
+    if fit is None or not kinds.any():
+        return stored
+    ox, oy, sc = (fit[:, i:i + 1] for i in range(3))
+    return np.select([kinds == X, kinds == Y, kinds == LENGTH], [ox + sc * stored, oy - sc * stored, sc * stored],
+                     stored)
+
+
+def decode(data: Mapping[str, Any], grid: Any, rows: int, cols: int) -> np.ndarray:
+    """The inverse of :func:`construct.live.wire.encode`, on the whole grid (*grid*: log10 of the grid values),
+    as the page does it with DecompressionStream: each stored column between its kept values is the line
+    between them in log10 of the given, drawn through the grid value's fit."""
+    raw = zlib.decompress(base64.b64decode(data["data"]))
+    ucols, width, mapw = data["ucols"], data["width"], data["mapw"]
+    at = cols * mapw
+    colmap = np.frombuffer(raw[:at], dtype=f"<u{mapw}").astype(np.int64)
+    kinds = np.frombuffer(raw[at:at + ucols], dtype=np.uint8).astype(np.int8)
+    at += ucols
+    nbits = rows * ucols
+    keep = np.unpackbits(np.frombuffer(raw[at:at + (nbits + 7) // 8], dtype=np.uint8))[:nbits]
+    keep = keep.reshape(ucols, rows).astype(bool)
+    at += (nbits + 7) // 8
+    fit = np.frombuffer(raw[at:at + 12 * rows], dtype="<f4").reshape(rows, 3).astype(float)
+    at += 12 * rows
+    first = np.frombuffer(raw[at:at + 4 * ucols], dtype="<i4").astype(np.int64)
+    at += 4 * ucols
+    n = int(keep.sum()) - ucols
+    deltas = np.ascontiguousarray(np.frombuffer(raw[at:], dtype=np.uint8).reshape(width, n).T).view(f"<i{width}")
+    deltas = deltas.reshape(-1).astype(np.int64)
+    g = np.asarray(grid, dtype=float)
+    quanta = np.where(kinds > 0, data["qx"], data["q"])
+    out = np.empty((rows, ucols))
+    pos = 0
+    for c in range(ucols):
+        idx = np.nonzero(keep[c])[0]
+        vals = first[c] + np.concatenate([[0], np.cumsum(deltas[pos:pos + idx.size - 1])])
+        pos += idx.size - 1
+        out[:, c] = np.interp(g, g[idx], vals * quanta[c])
+    return as_drawn(out, fit, kinds)[:, colmap]
+
+
+def deflated(value: Any) -> str:
+    """*value* as JSON, deflated and in base64 (a field of the live data)."""
+    return base64.b64encode(zlib.compress(json.dumps(value, separators=(",", ":")).encode("utf-8"), 9)).decode("ascii")
+
+
+def inflated(text: str) -> Any:
+    """A deflated JSON field of the live data read back (:func:`deflated`)."""
+    return json.loads(zlib.decompress(base64.b64decode(text)))

@@ -104,7 +104,8 @@ _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*[′']*")  # a let
 
 @pytest.mark.parametrize("key", IDS)
 def test_captions_name_only_what_the_figure_letters(figures, key):
-    """Every name in a step's caption is a letter of the figure so far, or a tag the frame shows.
+    """Every name in a step's caption is a letter of the figure so far, or a tag the frame shows, or the
+    letter of a point a later step makes (what the step's group sets out to make: "crank point for q7").
 
     The frame tags the points of the current step, of its instrument's inputs and those
     its caption names (:meth:`Scene.tagged`); the letters are the labels of the steps so far.  A name of the protocol that is
@@ -115,8 +116,11 @@ def test_captions_name_only_what_the_figure_letters(figures, key):
     names = {m.name for m in sc.marks}  # what is drawn (a length such as L is not)
     letters: set[str] = set()
     by_step: dict[int, list] = {}
+    first: dict[str, int] = {}  # each letter or tag: the step that makes the first point it names
     for m in sc.marks:
         by_step.setdefault(m.step, []).append(m)
+        if m.kind == "point":
+            first.setdefault(m.label or sc.display_name(m.name), m.step)
     bad = []
     for k in range(1, len(sc.steps) + 1):
         letters.update(m.label for m in by_step.get(k, ()) if m.label)
@@ -128,7 +132,7 @@ def test_captions_name_only_what_the_figure_letters(figures, key):
             for letter in sorted((x for x in letters if not (x.isalnum() and x.isascii())), key=len, reverse=True):
                 text = text.replace(letter, " ")  # a letter of several words ("O (l = ∞)") is the figure's own
             for tok in _NAME.findall(text):
-                if tok in letters or tok in tags:
+                if tok in letters or tok in tags or first.get(tok, 0) > k:
                     continue
                 tok = tok.rstrip("′'")
                 if tok in names and tok not in letters and tok not in tags and not (tok.isalpha() and tok.islower()):

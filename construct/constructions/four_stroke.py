@@ -376,6 +376,7 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
                            en="start of the 720 degree base (zero line)", label="0°")
         tbase = b.given_line("tbase", T0, angle_deg=0.0, de="Nulllinie über zwei Umdrehungen",
                              en="zero line over two revolutions", role="result")
+        b.call(tbase, "Nulllinie", "the zero line")
         span = b.given_length("span", product=("r",), factor=8.0, de="720° als 8 r", en="720 degrees as 8 r")
         ks = b.circle_radius("T1.k", T0, span, de="8 r abgetragen", en="8 r laid off")
         T1 = b.intersect("T1", tbase, ks, rule=("toward", T0, None, 1.0, 0.0), labels={"T1": "720°"})
@@ -383,8 +384,8 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
         half = b.midpoint("T.h", T0, T1, through=tbase)
         quarters = [T0, b.midpoint("T.q1", T0, half, through=tbase), half, b.midpoint("T.q3", half, T1, through=tbase), T1]
         marks = [T0]
-        for q in range(4):
-            marks += (b.divide_segment(f"t{q}", quarters[q], quarters[q + 1], n, line=tbase) if n > 1 else [])
+        for q in range(4):  # each stroke's division points go by a letter of their own: u1…, v1…, w1…, y1…
+            marks += (b.divide_segment("uvwy"[q], quarters[q], quarters[q + 1], n, line=tbase) if n > 1 else [])
             marks.append(quarters[q + 1])
         opening = b.given_length("open", product=("r",), factor=0.1, de="Zirkelöffnung für die Senkrechten (r/10)",
                                  en="compass opening for the perpendiculars (r/10)")

@@ -76,7 +76,9 @@ def ordinate_line(b: Builder, c: OrdinateFrame, name: str, X: str) -> str:
     with b.group(f"ordinate at {X}", f"Ordinate in {X}"):
         k = b.circle_radius(f"{name}.k", X, c.r, de=f"Kreis um {X} mit r", en=f"circle about {X} with radius r")
         a, a2 = b.intersect((f"{name}.A", f"{name}.B"), c.axis, k, rule=("toward", c.O, None, -1.0, 0.0))
-        return b.perpendicular_bisector(name, a, a2)
+        line = b.perpendicular_bisector(name, a, a2)
+    b.call(line, f"Ordinate in {X}", f"the ordinate at {X}")
+    return line
 
 
 def ordinate_value(b: Builder, c: OrdinateFrame, tag: str, P: str, kind: str, dc_p: str, dc_2: str | None) -> str:

@@ -41,7 +41,7 @@ import numpy as np
 from .scene import MarkKind, Scene, extreme_points
 from .svgdoc import fmt
 
-__all__ = ["step_views", "views_box", "shots", "step_focus", "step_zooms", "step_insets", "DETAIL_PX", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
+__all__ = ["step_views", "views_box", "shots", "step_focus", "step_zooms", "step_details", "step_insets", "DETAIL_PX", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
            "clear_edges", "clear_tag_edges", "player_letter_scale", "EDGE_ROUNDS", "ring_round"]
 
 #: The most the step player shows of the figure in a 1400 × 1000 window (width, height in screen px): the
@@ -253,18 +253,20 @@ DETAIL_PX = 20.0
 UNSEEN = 2 * MOVE
 
 
-def step_zooms(scene: Scene, framing: Framing, px: Callable[[float, float], tuple[float, float]]) -> list[float]:
+def step_details(scene: Scene, framing: Framing,
+                 px: Callable[[float, float], tuple[float, float]]) -> list[tuple[float, tuple[float, float] | None]]:
     """Per step, how much its view must magnify for its finest detail to be :data:`DETAIL_PX` on the screen
     (the two closest points it works with, the smallest circle it strikes; 0: nothing finer than the whole
-    figure shows), at most the last zoom level; a view may magnify past :data:`MAX_ZOOM` as far as that.  A cluster of points within a few pixels of each other (a trisection's
-    thirds, a compass step of a few pixels) is seen magnified, not as one dot.
+    figure shows), at most :data:`INSET_MAX`, and where that detail is (canvas px).  A cluster of points
+    within a few pixels of each other (a trisection's thirds, a compass step of a few pixels) is seen
+    magnified, not as one dot.
     """
     drawn = {m.name: m for m in scene.marks}
     whole = PLAYER_FIGURE_PX[0] / framing.span  # screen px per canvas px in the whole figure's view
-    out = []
+    out: list[tuple[float, tuple[float, float] | None]] = []
     for s in scene.steps:
         pts: list[tuple[float, float]] = []
-        fine = math.inf
+        fine, at = math.inf, None
         for n in set(s.outputs) | set(s.inputs) | scene.named(s.index):
             m = drawn.get(n)
             if m is None:
@@ -272,14 +274,25 @@ def step_zooms(scene: Scene, framing: Framing, px: Callable[[float, float], tupl
             if m.kind is MarkKind.POINT:
                 pts.append(px(*m.geom))
             elif m.kind.round and n in s.outputs:
-                fine = min(fine, abs(px(m.geom[0] + m.geom[2], m.geom[1])[0] - px(*m.geom[:2])[0]))
+                c = px(*m.geom[:2])
+                r = abs(px(m.geom[0] + m.geom[2], m.geom[1])[0] - c[0])
+                if r < fine:
+                    fine, at = r, c
         pts = sorted(set((round(x, 1), round(y, 1)) for x, y in pts))
         for i, a in enumerate(pts):
             for b in pts[i + 1:i + 8]:
-                fine = min(fine, math.hypot(a[0] - b[0], a[1] - b[1]))
+                d = math.hypot(a[0] - b[0], a[1] - b[1])
+                if d < fine:
+                    fine, at = d, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
         need = DETAIL_PX / (fine * whole) if 0.0 < fine < math.inf else 0.0
-        out.append(min(ZOOM_LEVELS[-1], need))
+        out.append((min(INSET_MAX, need), at if need > 1.0 else None))
     return out
+
+
+def step_zooms(scene: Scene, framing: Framing, px: Callable[[float, float], tuple[float, float]]) -> list[float]:
+    """Per step, how much its view must magnify for its finest detail to be seen (:func:`step_details`); a view
+    may magnify past :data:`MAX_ZOOM` as far as that, up to the last zoom level (beyond, an inset shows it)."""
+    return [min(ZOOM_LEVELS[-1], need) for need, _ in step_details(scene, framing, px)]
 
 
 def shots(scene: Scene, focus: Sequence[Box | None], framing: Framing,
@@ -500,25 +513,38 @@ def step_views(scene: Scene, full: View, bbox: Box, px: Callable[[float, float],
 #: thickness, so the player shows the thickness in an inset (:func:`step_insets`).
 SLIVER_PX = 10.0
 SLIVER_RATIO = 5.0
+#: The most a step's finest detail is magnified (in an inset, past the last zoom level).
+INSET_MAX = 64.0
 #: The inset's window on the screen (px) and how thick the sliver is made there at least.
 INSET_PX = (300.0, 210.0)
 INSET_DETAIL_PX = 28.0
 
 
-def step_insets(scene: Scene, views: Sequence[View], px: Callable[[float, float], tuple[float, float]]) -> list[View | None]:
+def step_insets(scene: Scene, views: Sequence[View], full: View,
+                px: Callable[[float, float], tuple[float, float]]) -> list[View | None]:
     """Per step, the region (canvas px, x y w h) the player shows magnified in an inset, or None.
 
-    A step working on a sliver -- the thin rectangle O r₁ of a disc 0,02 r₁ thick, a pressure of 0,15 at
+    A step whose finest detail its view shows smaller than it must be seen (:func:`step_details`: its view
+    widened to take in its letters, or shared with its shot) gets it magnified beside the view.  A step
+    working on a sliver -- the thin rectangle O r₁ of a disc 0,02 r₁ thick, a pressure of 0,15 at
     laid off over a stroke of 24 cm -- is seen whole in its view only a few pixels thick.  The inset
     shows the place where the step makes its point (or the point its line is aimed at) magnified until
     the sliver is :data:`INSET_DETAIL_PX` thick, while the view keeps its whole length in sight.
     """
     drawn = {m.name: m for m in scene.marks}
     focus = step_focus(scene)
+    details = step_details(scene, Framing(full), px)
     out: list[View | None] = []
-    for s, f, v in zip(scene.steps, focus, views):
+    for s, f, v, (need, at) in zip(scene.steps, focus, views, details):
         box = None
-        if f is not None and s.group:
+        z = zoom_of(v, full)
+        if at is not None and s.group and need > 1.25 * z:
+            # a cluster the view (widened for its letters, or its shot's) shows smaller than it must be seen
+            q = min(PLAYER_FIGURE_PX[0] / v[2], PLAYER_FIGURE_PX[1] / v[3])
+            m = max(2.0, need / z)
+            w, h = INSET_PX[0] / (q * m), INSET_PX[1] / (q * m)
+            box = (round(at[0] - w / 2, 2), round(at[1] - h / 2, 2), round(w, 2), round(h, 2))
+        elif f is not None and s.group:
             (x0, y1), (x1, y0) = px(f[0], f[1]), px(f[2], f[3])
             q = min(PLAYER_FIGURE_PX[0] / v[2], PLAYER_FIGURE_PX[1] / v[3])  # screen px per canvas px
             thin, long = min(x1 - x0, y1 - y0) * q, max(x1 - x0, y1 - y0) * q

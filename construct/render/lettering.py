@@ -260,7 +260,8 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
           lines: "Sequence[tuple[float, float, float, float]] | LineIndex" = (), *, font: str = DEFAULT_FONT,
           italic: bool = False, taken: Iterable[tuple[float, float, float, float]] = (),
           keep: bool = True, prefer: "dict[str, tuple[float, float, float]] | None" = None,
-          halo: float = HALO_PX / 2, reach: float = 0.0, only: "Sequence[bool] | None" = None) -> dict[str, tuple]:
+          halo: float = HALO_PX / 2, reach: float = 0.0, only: "Sequence[bool] | None" = None,
+          distances: Sequence[float] = ()) -> dict[str, tuple]:
     """Baseline positions (pixels) for letters: {id: (x, y, distance in letter heights, thin)}.
 
     A letter set farther than :data:`LEADER_FROM` letter heights from its point gets a
@@ -277,7 +278,9 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     the halo reaches round the ink at *size* (the player scales a letter with its halo).  *reach*:
     half the width of a result line (a halo reaching over the line's edge erases part of it).
     *lines* may be a :class:`LineIndex` made at *size* (placings at one size share it), and
-    *only* the numbers of its lines that count (true), as if *lines* were those alone.
+    *only* the numbers of its lines that count (true), as if *lines* were those alone.  *distances*: farther
+    rings tried after the usual ones (letter heights; a name tag a caption names is set off with a leader
+    rather than left out).
     """
     grid = _Grid(2.0 * size)
     for b in taken:
@@ -305,7 +308,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
             box = label_box(px + ox, py + oy, text, size, font, italic, halo)
             if grid.free(box) and not strokes.meets(box, reach, only):
                 spot = (px + ox, py + oy, box, od)
-        for dist in (() if spot else _DISTANCES):
+        for dist in (() if spot else _DISTANCES + tuple(distances)):
             for turn in _TURNS:
                 a = base + math.radians(turn)
                 # the letter's centre sits *dist* letter heights from the point (plus half its

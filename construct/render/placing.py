@@ -37,7 +37,11 @@ from .styles import Style
 from .svgdoc import fmt
 from .viewport import Viewport
 
-__all__ = ["PlacedLabel", "Placing"]
+__all__ = ["PlacedLabel", "Placing", "TAG_FARTHER"]
+
+#: The farther rings (letter heights) a name tag tries, tied by a leader, before it gives way: a tag the
+#: step's caption names is worth a longer leader.
+TAG_FARTHER = (4.5, 5.5, 6.5)
 
 
 @dataclass(frozen=True, slots=True)
@@ -286,24 +290,31 @@ class Placing:
         a, b = 0.25 * size, n - 0.75 * size
         return (a * cx / n, a * cy / n, b * cx / n, b * cy / n)
 
-    def place_end(self, letter: float, marks: Sequence[Mark], taken: Sequence[tuple[float, float, float, float]]) -> None:
+    def place_end(self, letter: float, marks: Sequence[Mark], taken: Sequence[tuple[float, float, float, float]],
+                  lettering: Sequence[tuple[str, tuple[float, float], str]] = (),
+                  strokes: Sequence[tuple[float, float, float, float]] = ()) -> None:
         """Place the end state's letters (:meth:`construct.render.scene.Scene.in_end`): the lettered points of
         its *marks*, among its points and result lines and clear of the boxes *taken* (canvas px: its
-        furniture's lettering), at *letter* canvas units a letter unit (the player's letter scale at the end
-        view).  Each stays where the whole figure set it when there is room; one with
-        none is left out of the end state (class ``pf`` marks the placed).  Sets :attr:`end_spots` and
-        :attr:`end_rules`.
+        furniture's scales and dimensions), at *letter* canvas units a letter unit (the player's letter scale
+        at the end view).  Each stays where the whole figure set it when there is room; one with none is left
+        out of the end state (class ``pf`` marks the placed).  The plate's *lettering* (id, the point it is
+        written at, canvas px, text: the values of its ordinates) is placed with them, first where the plate
+        writes it, else beside it; the plate's *strokes* (canvas px: its ordinates) are kept clear of as its
+        result lines are.  Sets :attr:`end_spots` and :attr:`end_rules`.
         """
         st = self.style
         size = st.label_size * letter
         span = self.scene.bbox[2] - self.scene.bbox[0]
         dots = [self.vp.px(*m.geom) for m in marks if m.kind is MarkKind.POINT and "hidden" not in m.look.split()]
-        lines = []
+        lines = list(strokes)
         for m in marks:
             if m.role == "result" and m.kind.stroked and "hidden" not in m.look.split():
                 pts = [self.vp.px(*q) for q in _polyline(m, self.vp.scale)]
                 lines.extend((a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:]))
         items, prefer = [], {}
+        for fid, at, text in lettering:
+            items.append((fid, "result", 0, at, (0.0, 1.0), text))
+            prefer[fid] = (0.0, 0.35 * size, 0.0)
         for m in marks:
             if not m.label:
                 continue
@@ -443,7 +454,8 @@ class Placing:
             # the tags are checked against each other level by level below
             ds, only = near(items, z, f)
             got = place(items, size * f, ds, self._lines_at(z, size * f), only=only,
-                        font=st.label_font, italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * f, reach=self.line_reach)
+                        font=st.label_font, italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * f,
+                        reach=self.line_reach, distances=TAG_FARTHER)
             for i, _r, _s, (zx, zy), _d, _t in items:
                 if i in got:
                     x, y, dist, _thin = got[i]
@@ -524,7 +536,7 @@ class Placing:
                                   st.label_italic, HALO_PX / 2 * f) for o in items if o[0] in holds]
                 again = place(losers, size * f, ds, self._lines_at(z, size * f), only=only, font=st.label_font,
                               italic=st.label_italic, taken=taken + held, keep=False, halo=HALO_PX / 2 * f,
-                              reach=self.line_reach)
+                              reach=self.line_reach, distances=TAG_FARTHER)
                 for it in losers:
                     i, (zx, zy) = it[0], it[3]
                     spot = again.get(i)

@@ -67,7 +67,8 @@ def _step_list(scene) -> str:
         for depth in range(common, len(path)):
             g = path[depth]
             de = titles.get(g, g)
-            label = scene.readable(g if de == g else f"{g} / {de}")
+            # each language read in its own words (the lines a construction calls by name, its own way)
+            label = scene.readable(g, "en") if de == g else f"{scene.readable(g, 'en')} / {scene.readable(de)}"
             where = displayed(" › ".join(path[:depth + 1]))  # the group's path, as bounded as its caption
             out.append(f'<details data-g="{html.escape(where)}"><summary>'
                        f'{html.escape(label)}</summary><ul>')
@@ -142,7 +143,7 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         ("{{STYLE}}", html.escape(style.name)),
         ("{{GIVENS}}", givens_rows),
         ("{{STEPLIST}}", _step_list(scene)),
-        ("{{SVG}}", svg + (_INSET if insets else "")),
+        ("{{SVG}}", svg + ("\n" + _inset(d) if insets else "")),
         ("{{DATA}}", json_for_script(data)),
         ("{{PAGE_BG}}", "#f7f3ea" if style.name == "historical" else "#f4f5f7"),
         ("{{SPEEDS}}", _speed_options(data["dt"] / 1000)),
@@ -160,18 +161,23 @@ def _speed_options(default: float) -> str:
     return "".join(f'<option value="{v:g}"{" selected" if v == default else ""}>{v:g} s</option>' for v in SPEEDS)
 
 
+def _inset(d: Drawing) -> str:
+    """The inset of a sliver or a cluster (:func:`construct.render.camera.step_insets`): the figure's lines and
+    areas again, magnified (a ``<use>`` of each of the figure's layers, which show each step as the figure
+    does), and a dot where the step works; the letters and points stay in the view beside it."""
+    f = d.doc.factory
+    ins = d.doc.drawing(size=(None, None), viewBox="0 0 1 1", id="inset", role="img", **{"aria-label": "magnified"})
+    for layer in ("areas", "construction", "results"):
+        ins.add(f.use(href=f"#{layer}"))
+    ins.add(f.circle(center=("0", "0"), r="0", id="inset-pt"))
+    return d.doc.markup(ins)
+
+
 def _show(v: Any) -> str:
     if isinstance(v, float):
         return f"{v:g}"
     return str(v)
 
-
-#: The inset of a sliver (:func:`construct.render.camera.step_insets`): the figure's lines and areas again,
-#: magnified (its own <use> of the figure's layers, which show each step as the figure does); letters and
-#: points stay in the view beside it.
-_INSET = ('\n<svg id="inset" xmlns="http://www.w3.org/2000/svg" viewBox="0 0 1 1" role="img" '
-          'aria-label="magnified">\n<use href="#areas"/><use href="#construction"/><use href="#results"/>\n'
-          '<circle id="inset-pt" cx="0" cy="0" r="0"/>\n</svg>')
 
 _TEMPLATE = """<!DOCTYPE html>
 <html lang="de">

@@ -34,6 +34,7 @@ from typing import Any, Callable, Iterable
 from ..kernel.errors import HiddenLabelWarning
 from ..kernel.geometry import Circle, Length, Line, Point
 from ..kernel.protocol import Protocol, Replay, Step
+from ..kernel.letters import FIGURE_LETTER
 from .captions import TITLE_LIMIT, Reader, displayed
 
 __all__ = ["Mark", "MarkKind", "Scene", "build_scene", "label_offset_direction", "on_curve_names", "extreme_points", "middle",
@@ -43,9 +44,6 @@ TWO_PI = 2.0 * math.pi
 #: A word of a caption written in the figure's letters that may name a point (a letter with what follows it).
 #: (Not a letter of a formula: F/f, r/L, r·cos.)
 _LETTERED = re.compile(r"(?<![\w′'″/·])[A-Za-zΑ-Ωα-ω][A-Za-z0-9Α-Ωα-ω′'″₀-₉∞]*(?![/·])")
-#: What a letter of the figure looks like (:meth:`Scene.tag_shown`): a letter, a number below 20 or
-#: two digits with a prime, subscripts, primes.
-FIGURE_LETTER = re.compile(r"[A-Za-zΑ-Ωα-ω](?:[01]?[0-9])?[′″'₀-₉]*|[0-9]{1,2}[′″']?")
 
 
 class MarkKind(str, Enum):
@@ -203,7 +201,7 @@ class Scene:
             objects[name] = (kind, text, op, inputs)
         for name, s in makers.items():  # what is not drawn (a compass opening J.h1) goes by its short name
             objects.setdefault(name, ("length", None, s.op, tuple(s.inputs)))
-        return Reader(objects)
+        return Reader(objects, self.params.get("called"))
 
     @functools.cached_property
     def _captions(self) -> list[tuple[str, str] | None]:
@@ -356,8 +354,8 @@ class Scene:
         or a tag.
 
         A tag may stand for several helpers (the F of every trisection): the caption means the one of its
-        own group, made by then (the latest of them); a helper of another top-level group is another F.  A
-        lettered point is the figure's, whatever its group.
+        own group, made by then (the latest of them); a lone letter of another top-level group is another F
+        (a numbered tag, M2, is the latest made).  A lettered point is the figure's, whatever its group.
         """
         s = self.steps[k - 1]
         out: set[str] = set()
@@ -372,7 +370,8 @@ class Scene:
                 shared = 0
                 while shared < min(len(group), len(s.group)) and group[shared] == s.group[shared]:
                     shared += 1
-                if (lettered or shared) and (best is None or shared >= best[0]):
+                # a lone letter (the F of a trisection) is its own group's; a numbered tag may be another's
+                if (lettered or shared or len(token) > 1) and (best is None or shared >= best[0]):
                     best = (shared, name)
             if best is not None:
                 out.add(best[1])
@@ -401,12 +400,12 @@ class Scene:
 
         A figure is lettered with one letter, perhaps with a number of at most two
         digits or a prime (M2, S1, q10, K17, 5′); the helpers' internal names
-        (``c90``: the crank at 90°, ``Nb17``, ``iP6``) are not letters and are not
+        (``c135``: the crank at 135°, ``Nb17``, ``iP6``) are not letters and are not
         shown, whatever the caption calls them.
 
         >>> from construct.constructions import get
         >>> sc = build_scene(get("crank").figure(parts=6))
-        >>> [FIGURE_LETTER.fullmatch(t) is not None for t in ("M2", "q10", "5′", "c90", "Nb17", "iP6")]
+        >>> [FIGURE_LETTER.fullmatch(t) is not None for t in ("M2", "q10", "5′", "c135", "Nb17", "iP6")]
         [True, True, True, False, False, False]
         """
         return FIGURE_LETTER.fullmatch(self.display_name(name)) is not None

@@ -178,7 +178,7 @@ class Style:
 #: what it leaves out (``nf``) hidden, what it alone draws (``fo``) shown, only its letters (``pf``) at their
 #: places there with their own leaders (``lvf``), scaled by the player's letter scale (``--ls``).
 END_CSS = "\n".join((
-    ".fo{display:none}", ".fin .fo{display:inline}", ".fin .nf{display:none}",
+    ".fo{display:none}", ".fin .fo{display:inline}", ".fin .nf,.fin .fo.hidden{display:none}",
     ".fin .lbg{display:none}", ".fin .lbg.pf{display:inline}",
     ".fin .leader{display:none}", ".fin .leader.lvf{display:inline}",
     ".fin .lbg>.lb,.fin .lbg>.leader,.fin .pt{transform:scale(var(--ls,var(--zs,1)))}",

@@ -41,7 +41,7 @@ from .captions import Captions
 from .lettering import HALO_PX, LEADER_FROM, label_box, text_width
 from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
 from .placing import Placing, PlacedLabel, place_outwards
-from .plate import Stroke, break_elements, extent, furniture_elements
+from .plate import Lettering, Stroke, break_elements, extent, furniture_elements
 from .scene import Mark, MarkKind, Scene, extreme_points
 from .styles import PLAIN, Style
 from .svgdoc import fmt
@@ -182,7 +182,7 @@ class Drawing:
         """Per step, the region the player magnifies in an inset (:func:`construct.render.camera.step_insets`)."""
         got = self.__dict__.get("_insets")
         if got is None:
-            got = self.__dict__["_insets"] = (step_insets(self.scene, self.views, self.vp.px) if self.style.camera
+            got = self.__dict__["_insets"] = (step_insets(self.scene, self.views, self.full_view, self.vp.px) if self.style.camera
                                               else [None] * len(self.scene.steps))
         return got
 
@@ -248,9 +248,12 @@ class Drawing:
             q = max(v[2] / PLAYER_FIGURE_PX[0], v[3] / PLAYER_FIGURE_PX[1])  # canvas px per screen px
             ls = player_letter_scale(q * z / ZOOM_LEVELS[lvl])
             size = st.label_size * ls
-            texts = [b for e in furniture_elements(sc.end_furniture, self.vp.px, self.vp.scale, self.doc.factory,
+            texts = [b for e in furniture_elements(self._end_fixed, self.vp.px, self.vp.scale, self.doc.factory,
                                                    size=size) if (b := self._text_box(e, size)) is not None]
-            pl.place_end(ls, marks, texts)
+            # the plate's own lines that are results (its ordinates), not its thin and dashed helpers
+            strokes = [(*self.vp.px(*it.a), *self.vp.px(*it.b)) for it in sc.end_furniture
+                       if isinstance(it, Stroke) and not {"thin", "dashed", "hidden"} & set(it.look.split())]
+            pl.place_end(ls, marks, texts, self._end_lettering(size), strokes)
             box = None
             for m in marks:
                 if "hidden" not in m.look.split():
@@ -260,6 +263,11 @@ class Drawing:
                 box = _grown(box, [self.vp.px(fx[0], fx[1]), self.vp.px(fx[2], fx[3])])
             for b in texts:
                 box = _grown(box, [b[:2], b[2:]])
+            for fid, (px, py), text in self._end_lettering(size):
+                rel = pl.end_spots.get(fid)
+                if rel is not None:
+                    b = label_box(px + ls * rel[0], py + ls * rel[1], text, size, st.label_font, st.label_italic)
+                    box = _grown(box, [b[:2], b[2:]])
             for m in marks:
                 rel = pl.end_spots.get(m.id)
                 if rel is not None:
@@ -278,6 +286,24 @@ class Drawing:
         crop = (box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad) if box is not None else \
             (full[0], full[1], full[0] + full[2], full[1] + full[3])
         return EndView(v, lvl, round(ls, 4), round(1.0 / q, 6), tuple(round(c, 2) for c in crop), size)
+
+    @property
+    def _end_fixed(self) -> tuple:
+        """The end state's furniture that stands where the plate sets it (all but its lettering)."""
+        return tuple(it for it in self.scene.end_furniture if not isinstance(it, Lettering))
+
+    def _end_lettering(self, size: float) -> list[tuple[str, tuple[float, float], str]]:
+        """The plate's lettering in the end state, placed as letters are (:meth:`Placing.place_end`): (id, the
+        middle of where the plate writes it, canvas px, its text)."""
+        st = self.style
+        out = []
+        for i, it in enumerate(self.scene.end_furniture):
+            if isinstance(it, Lettering):
+                x, y = self.vp.px(*it.at)
+                w = text_width(it.text, size * it.size, st.label_font, st.label_italic)
+                x += {"start": w / 2, "end": -w / 2}.get(it.anchor, 0.0)
+                out.append((f"fur{i}", (x, y), it.text))
+        return out
 
     def _text_box(self, elem: Any, size: float) -> tuple[float, float, float, float] | None:
         """The box (canvas px) of a furniture lettering element made at *size* (not turned; its halo, a copy
@@ -525,9 +551,25 @@ class Drawing:
             if marks:
                 elems.append(_wrapped(f.g(class_="fo"), marks))
         if self.end is not None and sc.end_furniture:
-            # the plate's furniture in the end state, its letters at the size of the end state's
-            elems.append(_wrapped(f.g(class_="fo end"), furniture_elements(sc.end_furniture, self.vp.px, self.vp.scale,
-                                                                            f, size=self.end.size)))
+            # the plate's furniture in the end state, its letters at the size of the end state's, its lettering
+            # where the end state's placing set it (upright; tied to its place by a leader when set off)
+            g = _wrapped(f.g(class_="fo end"), furniture_elements(self._end_fixed, self.vp.px, self.vp.scale, f,
+                                                                  size=self.end.size))
+            ls, pl = self.end.letter, self.placing
+            for (fid, (px, py), text), it in zip(self._end_lettering(self.end.size),
+                                                [it for it in sc.end_furniture if isinstance(it, Lettering)]):
+                rel = pl.end_spots.get(fid)
+                if rel is None:
+                    continue
+                x, y = px + ls * rel[0], py + ls * rel[1]
+                if rel[2] >= LEADER_FROM:
+                    x1, y1, x2, y2 = pl.leader_line(rel[0], rel[1])
+                    g.add(f.line(start=(fmt(px + ls * x1), fmt(py + ls * y1)), end=(fmt(px + ls * x2), fmt(py + ls * y2)),
+                                 class_="fur thin"))
+                attrs = {"style": f"font-size:{fmt(self.end.size * it.size)}px"} if it.size != 1.0 else {}
+                for cls in ("lb halo", "lb fur-text"):
+                    g.add(f.text(text, x=[fmt(x)], y=[fmt(y)], class_=cls, **attrs))
+            elems.append(g)
         if not elems:
             return None
         g = f.g(id="furniture")

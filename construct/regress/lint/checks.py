@@ -57,11 +57,11 @@ LEADER_REACH = 0.6
 MIN_FILL = 0.6
 #: A letter of the figure as a caption names it: one letter, a number below 20 or two digits with a prime,
 #: subscripts, primes (:data:`construct.render.scene.FIGURE_LETTER`, written out here: lint reads files).
-FIGURE_LETTER = re.compile(r"[A-Za-zΑ-Ωα-ω](?:[01]?[0-9])?[′″'₀-₉]*|[0-9]{1,2}[′″']?")
+FIGURE_LETTER = re.compile(r"[A-Za-zΑ-Ωα-ω][0-9]{0,2}[′″'₀-₉]*|[0-9]{1,2}[′″']?")
 #: A word of a caption that names something: a letter with digits, primes or subscripts, or a lone letter
 #: (not a letter of a formula: F/f, r/L, r·cos; not an angle's name, ∠AO5).
-_NAMED = re.compile(r"(?<![\w′'″₀-₉./·∠])([A-Za-zΑ-Ωα-ω][A-Za-zΑ-Ωα-ω0-9₀-₉]*[′'″]*)(?![\w′'″₀-₉/·])")
-#: An internal name: letters and digits run together the way no figure letters them (c90, cPV10, to42a, t110).
+_NAMED = re.compile(r"(?<![\w′'″₀-₉./·∠])([A-Za-zΑ-Ωα-ω][A-Za-zΑ-Ωα-ω0-9₀-₉∞]*[′'″]*)(?![\w′'″₀-₉/·∞])")
+#: An internal name: letters and digits run together the way no figure letters them (c135, cPV10, to42a, t110).
 _INTERNAL = re.compile(r"[A-Za-z]+[0-9]+[A-Za-z0-9]*|[a-z]+[A-Z][A-Za-z0-9]*")
 #: Cell of the spatial index, user units (about two letters).
 CELL = 32.0
@@ -822,11 +822,12 @@ def _leaders(sheet: Sheet, views: _Views) -> list[Finding]:
 
 
 def _caption_names(sheet: Sheet, views: _Views, seen) -> list[Finding]:
-    """A step's caption names only letters its view shows, and never an internal name (c90, cPV10).
+    """A step's caption names only letters its view shows, and never an internal name (c135, cPV10).
 
     A name the figure letters somewhere (a letter or a name tag) must be seen in the step's view; a name no
     letter of the figure carries is a quantity of the caption (s1, P0) unless it is written the way no figure
-    letters a point (letters and digits run together: an object's internal name).  The German caption and
+    letters a point (letters and digits run together: an object's internal name); a point named before the
+    step that makes it is what the group sets out to make.  The German caption and
     the title of the step's own group (the last of the group path) are read whole; in the English one a lone
     "a" is the article.
     """
@@ -835,7 +836,10 @@ def _caption_names(sheet: Sheet, views: _Views, seen) -> list[Finding]:
     # the letters of points (a lettered line's letter, r or L, stands at a point of its own that is never
     # drawn: in a caption it is a length)
     drawn = {d.ident for d in sheet.dots if d.ident and sheet.look(d.chain).shown}
-    lettered = {t.text for t in sheet.texts if t.kind == "tag" or (t.kind == "label" and t.owner in drawn)}
+    lettered: dict[str, int] = {}  # a point's letter: from the step that makes the point on
+    for t in sheet.texts:
+        if t.kind == "tag" or (t.kind == "label" and t.owner in drawn):
+            lettered[t.text] = min(lettered.get(t.text, sheet.n + 1), t.step or 0)
     shown: dict[int, set[str]] = defaultdict(set)
     for lay, letters in seen:
         for t, _b, runs in letters:
@@ -851,7 +855,8 @@ def _caption_names(sheet: Sheet, views: _Views, seen) -> list[Finding]:
                 if j == 1 and name == "a":
                     continue
                 if name in lettered:
-                    if name not in shown.get(k, ()) and (FIGURE_LETTER.fullmatch(name) or len(name) > 1):
+                    # (a point named before it is made is the group's goal: "Hyperbelpunkt U5 durch …")
+                    if lettered[name] <= k and name not in shown.get(k, ()):
                         found[(name, "unlettered")].append((k, k))
                 elif _INTERNAL.fullmatch(name) and not FIGURE_LETTER.fullmatch(name):
                     found[(name, "internal")].append((k, k))

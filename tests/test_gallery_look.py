@@ -216,3 +216,29 @@ def test_gallery_page_letters_are_at_least_9px_as_displayed(figures, style):
     width = float(re.search(r'width="([\d.]+)"', svg).group(1))
     shown = min(DISPLAY_PX, width) / width
     assert min(_font_sizes(svg)) * shown >= 9.0
+
+
+@pytest.mark.parametrize("key", IDS)
+def test_a_figure_letters_its_rod_one_way(figures, key):
+    """The rod length is L in the figures after Anhang II and "Einfluß der Massenkräfte" (r/L) and l in those
+    after § 146 (r/l): one letter in a figure's title, its steps' captions and its groups' titles alike (the
+    crank's captions wrote l where the figure letters L: the length's letter was taken for a helper's)."""
+    c, fig = figures[key]
+    sc = scene_for(c, fig)
+    texts = list(sc.title) + [t for k in range(1, len(sc.steps) + 1) for t in sc.caption(k)]
+    texts += list(sc.group_captions.values())
+    rods = {m.group(1) for t in texts for m in re.finditer(r"(?:r/|[Ss]chubstangenlänge |rod length )([Ll])(?!\w)", t)}
+    assert len(rods) <= 1, rods
+
+
+def test_words_of_a_title_stay_words_and_an_equation_keeps_its_parentheses(figures):
+    """A word of the title that is also an object's name ("back" of the back-pressure line) is left a word
+    where it runs on into a phrase, and "(Gl. 298)" reads "(Gl. (298))", both parentheses closed."""
+    c, fig = figures[IDS[PLAN.index(("indicator-diagram", {}))]]
+    sc = scene_for(c, fig)
+    assert sc.readable("indicator diagram: clearance, admission and back pressure", "en") == \
+        "indicator diagram: clearance, admission and back pressure"
+    c, fig = figures[IDS[PLAN.index(("piston-force", {}))]]
+    sc = scene_for(c, fig)
+    titles = [t for t in sc.group_captions.values() if "Gl." in t]
+    assert titles and all(t.count("(") == t.count(")") for t in titles), titles

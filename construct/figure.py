@@ -27,6 +27,7 @@ from typing import Any, Callable, Mapping
 from .kernel import instruments
 from .kernel.errors import InvalidParameter
 from .kernel.protocol import Protocol, Replay
+from .render.notation import Described
 
 __all__ = ["Figure", "Builder"]
 
@@ -40,6 +41,9 @@ class Figure:
     #: Compares the figure's constructed quantities with the analytic formulas; set by the book construction
     #: that built or replayed the figure (:meth:`construct.constructions.Construction.check`), None otherwise.
     checker: Callable[["Figure"], list] | None = field(default=None, compare=False, repr=False)
+    #: The book construction that built or replayed the figure (:class:`construct.constructions.Construction`):
+    #: its citation and wording caption the figure, its domain bounds the givens.  None for a figure of your own.
+    construction: Described | None = field(default=None, compare=False, repr=False)
 
     @property
     def params(self) -> Mapping[str, Any]:
@@ -82,10 +86,32 @@ class Figure:
         return plot_figure(self, ax, style=style, upto=upto)
 
     def with_givens(self, **givens: Any) -> "Figure":
-        """The same steps replayed with other givens (arrays make a sweep)."""
+        """The same steps replayed with other givens (arrays make a sweep); a book construction's figure keeps
+        to the construction's domain.
+
+        >>> import construct
+        >>> fig = construct.get("crank").figure(parts=6)
+        >>> again = fig.with_givens(rod_ratio=4.0)
+        >>> again.replay.givens["rod_ratio"], again.protocol is fig.protocol
+        (4.0, True)
+        >>> fig.with_givens(rod_ratio=0.5)
+        Traceback (most recent call last):
+        ...
+        construct.kernel.errors.InvalidParameter: rod ratio L/r must be greater than 1 (the rod must be longer than the crank), got 0.5
+        """
         values = dict(self.replay.givens)
         values.update(givens)
-        return Figure(self.protocol, self.protocol.replay(values), self.checker)
+        if self.construction is not None:
+            self.construction.validate(values)
+        return Figure(self.protocol, self.protocol.replay(values), self.checker, self.construction)
+
+    def write(self, out_dir: Any, *, style: str = "plain", frames: str = "auto") -> dict:
+        """Write the figure's outputs into *out_dir* (made or replaced whole, never half-written): the layered
+        final.svg, protocol.json, the animation, the player, the storyboard and *frames* (auto, all, groups,
+        none: standalone frames).  Returns what was written (counts, the folder)."""
+        from .render.output import write_replay  # the rendering layer, loaded when a drawing is asked for
+
+        return write_replay(self.construction, self, out_dir, style=style, frames=frames)
 
     def _repr_svg_(self) -> str:
         """Inline display in Jupyter: the final figure in the teaching style."""

@@ -13,7 +13,9 @@
 (``construct replay`` also writes animated.svg and storyboard.svg; the
 gallery leaves them out, they carry the same elements again and the
 committed gallery stays small.)
-    OUT/README.md, OUT/index.html         the index, with pictures, captions, methods and checks
+    OUT/README.md, OUT/index.html         the front page: the books, the plates (and players), the errata
+    OUT/<entry>/checks.html               the checks and the construction's method, steps and instruments
+    OUT/errata-<book>.html                a book's errata: what is wrong first, then every printed number
 
     OUT/.construct-manifest.json        every file above with its SHA-256: the mark of a gallery
 
@@ -45,8 +47,8 @@ from typing import Any, Callable, Iterator, Mapping
 
 from .constructions.checking import summary
 from .constructions import get, names
-from .io.manifest import foreign_entries
-from .io.staging import replaced_folder, write_text
+from .io.manifest import foreign_entries, replaced_with_manifest
+from .io.staging import write_text
 from .render.output import write_outputs
 from .render.notation import citation
 from .render.notation import givens as book_givens
@@ -145,8 +147,9 @@ class _Progress:
             sys.stderr.write(f"\r[{'#' * 30}] {self.total}/{self.total} {'done':40s}\n")
 
 
-def _checks_md(title: str, checks: list) -> str:
+def _checks_md(title: str, checks: list, method: list[tuple[str, str]]) -> str:
     lines = [f"# Checks: {title}", "", f"**{summary(checks)}**", "",
+             *[f"- {what}: {_md(how)}" for what, how in method], "",
              "| | quantity | measured | expected | error | tolerance | why |",
              "|---|---|---:|---:|---:|---:|---|"]
     for ch in checks:
@@ -162,16 +165,16 @@ def _md(text: str) -> str:
     return html.escape(text, quote=False).replace("|", "\\|").replace("\n", " ")
 
 
-def _method(fig) -> str:
-    """What method the figure uses: the division method (if any), and its provenance mix."""
+def _method(fig) -> list[tuple[str, str]]:
+    """What method the figure uses: the division method (if any), its steps by provenance, its instruments."""
     kinds: dict[str, int] = {}
     for s in fig.protocol.steps:
         kinds[s.provenance.kind] = kinds.get(s.provenance.kind, 0) + 1
     methods = sorted({s.provenance.method for s in fig.protocol.steps if s.provenance.method})
-    head = str(fig.params.get("method", "Euclidean construction"))
-    mix = ", ".join(f"{k} {v}" for k, v in sorted(kinds.items()))
-    tools = ", ".join(f"{k} {v}" for k, v in fig.protocol.instrument_counts().items())
-    return f"{head}{' (' + '; '.join(methods) + ')' if methods else ''}; steps by provenance: {mix}; instruments: {tools}"
+    # the division's method by its name (Dürer's trisection (1525)), else the params' word for it
+    return [("method", "; ".join(methods) or str(fig.params.get("method", "Euclidean construction"))),
+            ("steps by provenance", ", ".join(f"{k} {v}" for k, v in sorted(kinds.items()))),
+            ("instruments", ", ".join(f"{k} {v}" for k, v in fig.protocol.instrument_counts().items()))]
 
 
 def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> tuple[list[dict], dict]:
@@ -189,17 +192,27 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
     if first:
         write_text(edir / "protocol.json", fig.protocol.to_json(fig.replay))
     checks = c.checks(fig)
-    write_text(edir / "checks.md", _checks_md(f"{c.title.en} ({book_givens(fig, c)[1]})", checks))
+    method = _method(fig)
+    write_text(edir / "checks.md", _checks_md(f"{c.title.en} ({book_givens(fig, c)[1]})", checks, method))
     write_text(edir / "checks.json", json.dumps(
         {"construction": name, "params": params, "summary": summary(checks),
          "ok": all(ch.ok for ch in checks), "checks": [ch.as_dict() for ch in checks]},
         indent=1, ensure_ascii=False, sort_keys=True) + "\n")
     entries = []
+    thumb = ""
     for style in GALLERY_STYLES if first else GALLERY_STYLES[:1]:
         sdir = edir / style
         sdir.mkdir()
         live, drawing = (_live(c, fig, style) if first and GALLERY_OUTPUTS[style] and name in LIVE_PLAYERS
                          else (None, None))
+        if style == "teaching":
+            # laid out here (once: the outputs carry it) for the front page's thumbnail of what it keeps
+            from .render.output import scene_for
+            from .render.site import thumbnail_view
+            from .render.svg import Drawing
+
+            drawing = drawing or Drawing(scene_for(c, fig), STYLES[style])
+            thumb = thumbnail_view(drawing)
         info = write_outputs(sdir, c, fig, STYLES[style], frames=FRAME_MODE, fig_number=number, protocol=False,
                              outputs=GALLERY_OUTPUTS[style], live=live, drawing=drawing)
         files = sorted(str(p.relative_to(root)) for p in sdir.rglob("*") if p.is_file())
@@ -208,9 +221,10 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
                         "files": sorted(files), "steps": info["steps"], "frames": info["frames"],
                         "frame_mode": FRAME_MODE})
     row = {"number": number, "name": name, "slug": slug, "params": params, "title": c.title,
-           "source": citation(c, "en") or c.source, "method": _method(fig), "checks": summary(checks),
-           "ok": all(ch.ok for ch in checks), "steps": len(fig.protocol.steps),
-           "params_text": book_givens(fig, c)[1], "player": first}
+           "source": citation(c, "en") or c.source, "books": [cite.book.key for cite in c.cites],
+           "method": method, "checks": summary(checks), "ok": all(ch.ok for ch in checks),
+           "steps": len(fig.protocol.steps), "params_text": book_givens(fig, c)[1], "player": first,
+           "thumb": thumb}
     return entries, row
 
 
@@ -262,7 +276,7 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
     jobs = [(number, name, dict(params), check) for number, (name, params) in enumerate(plan, start=1)]
     if workers is None:
         workers = min(4, os.cpu_count() or 1)
-    with replaced_folder(out, manifest="gallery", described=GALLERY_DESCRIBED, what="gallery folder") as root:
+    with replaced_with_manifest(out, "gallery", described=GALLERY_DESCRIBED, what="gallery folder") as root:
         root.mkdir()
         if workers > 1 and len(jobs) > 1:
             import concurrent.futures
@@ -309,7 +323,7 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
             entries += figure_entries
             index.append(row)
             checked.append(found)
-        write_text(root / "README.md", _readme(index))
+        write_text(root / "README.md", _readme(index, sources))
         write_text(root / "index.html", _index_html(index, sources))
         _site_pages(root, index, sources)
         bar.close()
@@ -377,56 +391,67 @@ def _exit_with_parent(parent: int) -> None:
     os._exit(1)
 
 
-def _readme(index: list[dict]) -> str:
-    lines = [README_HEAD + "  Every construction at the parameters the "
-             "books print, as a plate in the historical style and step by step in the teaching style. "
-             "Open `*/teaching/player.html` to step through a construction or let it play.", ""]
+def _readme(index: list[dict], sources: list[dict]) -> str:
+    """The gallery's README (what a repository browser shows): the books, then the plates with their links."""
+    from .constructions.phrases import BOOKS
+    from .render.site import book_title, book_where, errata_slug
+
+    lines = [README_HEAD + "  The graphical methods of four German texts on steam-engine design from around "
+             "1900, redrawn as the books draw them and checked against their formulas: every figure as a plate "
+             "(the historical style) and, for the first figure of each method, step by step in the step player "
+             "(`*/teaching/player.html`). `index.html` is the same for a browser.", "", "## The books", ""]
+    errata = {src["book"] for src in sources}
+    for name, b in BOOKS.items():
+        lines.append(f"- **{_md(book_title(b))}** — {_md(book_where(b))}. Teaches {_md(b.teaches)}."
+                     + (f" [Errata]({errata_slug(name)})." if name in errata else ""))
+    lines += ["", "## The plates", ""]
     for e in index:
         t = e["title"]
         s = e["slug"]
-        lines += [f"## Fig. {e['number']}. {_md(t.de)} / {_md(t.en)}", "",
+        lines += [f"### Fig. {e['number']}. {_md(t.de)} / {_md(t.en)}", "",
                   f"*{_md(e['params_text'])}* — {_md(e['source'])}", "",
-                  f"**Method:** {_md(e['method'])}", "",
-                  f"**Checks:** {'✅' if e['ok'] else '❌'} {_md(e['checks'])} ([report]({s}/checks.md))", "",
                   # one picture per row: at the page's width the letters stay at least 9 px (DISPLAY_PX)
                   f"![Fig. {e['number']}, historical plate]({s}/historical/final.svg)", "",
-                  *([f"![Fig. {e['number']}, teaching]({s}/teaching/final.svg)", "",
-                     f"Teaching ({e['steps']} steps): [player]({s}/teaching/player.html) · "
-                     f"[final figure]({s}/teaching/final.svg)"] if e["player"] else
-                    [f"Teaching ({e['steps']} steps): the first figure of its kind, or "
-                     f"`construct replay {e['name']} --style teaching --out DIR`"]), ""]
+                  " · ".join([f"[plate]({s}/historical/final.svg)"]
+                             + ([f"[step player]({s}/teaching/player.html) ({e['steps']} steps)",
+                                 f"[construction]({s}/teaching/final.svg)"] if e["player"] else [])
+                             + [f"[checks]({s}/checks.md){'' if e['ok'] else ' (a check fails)'}"]), ""]
     return "\n".join(lines)
 
 
 def _index_html(index: list[dict], sources: list[dict] | None = None) -> str:
-    """The front page (:func:`construct.render.site.index_page`): a card per figure, the errata of each text."""
+    """The front page (:func:`construct.render.site.index_page`): the books, the plates, the errata."""
+    from .books.errata import WRONG
+    from .constructions.phrases import BOOKS
     from .render.site import index_page
 
-    return index_page(index, _errata_sources() if sources is None else sources, "Every construction at the books' parameters: the plate "
-                      "(historical style) and the construction step by step (teaching style); click a "
-                      "picture for the plate or the step player. Built by construct gallery; works offline.")
+    return index_page(index, _errata_sources() if sources is None else sources, list(BOOKS.values()), wrong=WRONG)
 
 
 def _errata_sources() -> list[dict]:
-    """Each source text with errata: its name, how many printed numbers, how many of each class, the rows."""
+    """Each book with errata, in the books' order: its name, how many printed numbers, of each class, the rows."""
     from .books.errata import CLASSES, all_errata
 
-    by_source: dict[str, list] = {}
+    by_book: dict[str, list] = {}
     for e in all_errata():
-        by_source.setdefault(e.source, []).append(e.as_dict())
-    return [{"source": src, "count": len(rows), "rows": rows,
+        by_book.setdefault(e.source, []).append(e.as_dict())
+    return [{"book": name, "count": len(rows), "rows": rows,
              "classes": {c: sum(r["class"] == c for r in rows) for c in CLASSES}}
-            for src, rows in sorted(by_source.items())]
+            for name, rows in by_book.items()]
 
 
 def _site_pages(root: Path, index: list[dict], sources: list[dict] | None = None) -> None:
-    """The gallery's other pages: each figure's checks (from its checks.json), each source text's errata."""
+    """The gallery's other pages: each figure's checks (from its checks.json), each book's errata."""
+    from .books.errata import CLASS_MEANINGS, WRONG
+    from .constructions.phrases import BOOKS
     from .render.site import checks_page, errata_page, errata_slug
 
     for e in index:
         report = json.loads((root / e["slug"] / "checks.json").read_text(encoding="utf-8"))
         write_text(root / e["slug"] / "checks.html", checks_page(
             f"Fig. {e['number']}. {e['title'].de} ({e['params_text']}): checks", report["checks"],
-            back=f"../index.html#{e['slug']}"))
+            back=f"../index.html#{e['slug']}", summary=report["summary"], method=e["method"]))
     for src in _errata_sources() if sources is None else sources:
-        write_text(root / errata_slug(src["source"]), errata_page(src["source"], src["rows"], back="index.html"))
+        write_text(root / errata_slug(src["book"]), errata_page(
+            BOOKS[src["book"]], src["rows"], back="index.html", meanings=CLASS_MEANINGS, wrong=WRONG,
+            books=list(BOOKS.values())))

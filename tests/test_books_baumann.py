@@ -112,9 +112,9 @@ def test_wrong_formulas():
     assert "sin 2α" in rows["sin(α + β)/cos β"].true and "cos 2α" in rows["sin(α + β)/cos β"].printed
 
 
-def test_construct_errata_lists_seed_004(capsys):
+def test_construct_errata_lists_baumann(capsys):
     assert any(e.source == seed004.SOURCE for e in all_errata())
-    assert main(["errata", "--seed", "004", "--format", "json"]) == 0
+    assert main(["errata", "--book", "baumann", "--format", "json"]) == 0
     records = json.loads(capsys.readouterr().out)
     assert records and {r["source"] for r in records} == {seed004.SOURCE}
     assert len(records) == len(seed004.all_printed()) + 9
@@ -186,7 +186,7 @@ def test_cli_classes_and_formula_tables(capsys):
     out = capsys.readouterr().out
     for name in CLASSES:
         assert out.count(f"\n{name} ") + out.startswith(f"{name} ") == 1
-    assert main(["errata", "--seed", "004", "--class", "typesetting", "--format", "json"]) == 0
+    assert main(["errata", "--book", "baumann", "--class", "typesetting", "--format", "json"]) == 0
     records = json.loads(capsys.readouterr().out)
     rows = {(r["table"], r["row"], r["column"]) for r in records}
     assert ("Formeln", "Formel B, Tandem I", "Gesamtgewicht") in rows

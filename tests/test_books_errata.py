@@ -281,11 +281,11 @@ def test_table_2_angles_against_mpmath():
 
 
 def test_cli_json_shape(capsys):
-    assert main(["errata", "--seed", "000", "--format", "json"]) == 0
+    assert main(["errata", "--book", "anhang-ii", "--format", "json"]) == 0
     records = json.loads(capsys.readouterr().out)
-    # seed 000's numbers and formulas; the other seeds' entries follow, each naming its seed
-    assert len([r for r in records if r["source"].startswith("seed 000")]) == 251 + 6
-    assert all(r["source"].startswith("seed 0") for r in records)
+    # Anhang II's numbers and formulas, each naming its book
+    assert len(records) == 251 + 6
+    assert {r["source"] for r in records} == {"anhang-ii"}
     keys = {"source", "table", "row", "column", "printed", "true", "units", "class", "note"}
     for r in records:
         assert set(r) == keys
@@ -315,15 +315,44 @@ def test_cli_class_filter(capsys):
 
 
 def test_cli_text_table(capsys):
-    assert main(["errata", "--seed", "000"]) == 0
+    assert main(["errata", "--book", "anhang-ii"]) == 0
     lines = capsys.readouterr().out.splitlines()
-    assert lines[0].split()[:5] == ["table", "row", "column", "printed", "true"]
+    # the book as a reader cites it (seeds/000: "## Anhang II. ### Darstellung der Massendrücke."), then its table
+    assert "Anhang II" in lines[0] and "Darstellung der Massendrücke" in lines[0] and lines[1] == ""
+    assert lines[2].split()[:5] == ["table", "row", "column", "printed", "true"]
     row = next(line for line in lines if "-0.5385" in line)
     assert row.startswith("Tabelle 1") and "110°" in row and "typesetting" in row
-    # seed 000's 251 numbers (the other seeds' are listed without --seed)
+    # Anhang II's 251 numbers (the other books' are listed without --book)
     assert lines[-1].startswith("251 printed numbers: ")
     assert lines[-1].endswith("; 6 wrong formulas")
     assert "1 typesetting, 3 arithmetic, 1 follows, 0 drawing, 0 unexplained" in lines[-1]
+
+
+def test_cli_takes_the_books_by_their_names_and_the_old_numbers_as_an_alias(capsys):
+    """--book NAME for each of the four texts; --seed NNN (the number of its text file) still works, unlisted."""
+    outputs = {}
+    for name, number in (("anhang-ii", "000"), ("handbook", "001"), ("mechanics", "002"), ("baumann", "004")):
+        assert main(["errata", "--book", name, "--format", "json"]) == 0
+        by_name = json.loads(capsys.readouterr().out)
+        assert main(["errata", "--seed", number, "--format", "json"]) == 0
+        assert json.loads(capsys.readouterr().out) == by_name
+        assert by_name and {r["source"] for r in by_name} == {name}
+        outputs[name] = len(by_name)
+    assert main(["errata", "--format", "json"]) == 0
+    assert len(json.loads(capsys.readouterr().out)) == sum(outputs.values())
+    assert main(["errata", "--help"]) == 0
+    helptext = capsys.readouterr().out
+    assert "--book" in helptext and "baumann" in helptext and "seed" not in helptext.lower()
+
+
+def test_cli_text_cites_each_book_by_author_and_title_never_seed(capsys):
+    assert main(["errata"]) == 0
+    out = capsys.readouterr().out
+    assert "seed" not in out.lower()
+    # seeds/004: "Autor: A. Baumann", "Titel: Ein neues Verfahren zur Bestimmung der Schwungradgewichte ..."
+    assert "A. Baumann, Schwungradgewichte (1902)" in out.splitlines()
+    # a deviation that rounds to nothing is 0.00, never -0.00; cos 90° (6e-17 in floats) is 0
+    assert "-0.00" not in out and "+0.00" not in out and "e-17" not in out
 
 
 def test_cli_rejects_unknown_class(capsys):

@@ -63,10 +63,10 @@ def test_no_misprints_in_the_worked_example():
     assert {e.class_ for e in entries()} <= {"agrees", "slip"}
 
 
-def test_source_names_the_seed_in_the_cli(capsys):
+def test_source_names_the_book_in_the_cli(capsys):
     assert main(["errata", "--format", "json"]) == 0
     records = json.loads(capsys.readouterr().out)
-    mine = [r for r in records if r["source"].startswith("seed 001")]
+    mine = [r for r in records if r["source"] == "handbook"]
     assert len(mine) == len(seed001.worked_example())
     assert {r["table"] for r in mine} == {"Tafel I", "semicircle"}
 

@@ -201,42 +201,15 @@ def test_replay_equals_a_fresh_build():
         assert piston_force(again, k) == pytest.approx(piston_force(fresh, k), abs=1e-9)
 
 
-def test_the_area_integrals_on_arrays_equal_the_scalar_integrands_point_by_point():
-    """area_balance integrates on an array of Gauss nodes; the same rule summed node by node with the scalar
-    formulas (math, one angle at a time) gives the same areas, and the exact acceleration area is the
-    kinetic energy at the greatest speed, found independently by mpmath's derivative of the piston path."""
-    import math
-
-    import numpy as np
-
-    from construct.constructions.piston_force import analytic as pf
-
-    xs, ws = np.polynomial.legendre.leggauss(20)
-    for lam in (1 / 1.05, 0.2, 0.02):
-        for scalar, array in ((pf.two_term, pf._two_term_array), (pf.exact_acceleration, pf._exact_accel_array)):
-            def one(w, f=scalar):
-                return f(w, lam) * pf._dx_dw(w, lam)
-            h = math.pi / 16
-            by_node = sum(w * one(i * h + (x + 1.0) * h / 2.0) for i in range(16) for x, w in zip(xs, ws)) * h / 2
-            on_array = pf._gauss(lambda w, f=array: f(w, lam) * pf._dx_dw_array(w, lam), 0.0, math.pi)
-            assert abs(on_array - by_node) <= 1e-14, (lam, scalar.__name__)
-        we = pf._zero(lambda w: pf.exact_acceleration(w, lam), 0.0, math.pi)
-        acc = pf._gauss(lambda w: pf._exact_accel_array(w, lam) * pf._dx_dw_array(w, lam), 0.0, we)
-        x = lambda w: (1 - mpmath.cos(w) + (1 - mpmath.sqrt(1 - lam ** 2 * mpmath.sin(w) ** 2)) / lam) / 2  # noqa: E731
-        v_max = mpmath.diff(x, we)  # the speed dx/dw is greatest where the acceleration changes sign
-        # a is d2(x R)/dw2 over R = 2 d2x/dw2 (x in strokes): the integral of a dx is (2 v)^2 / 4 = v^2
-        assert abs(acc - float(v_max) ** 2) <= 1e-12, lam
-
-
 def test_the_sweeps_model_areas_equal_the_areas_of_each_set():
-    """model_areas_sweep (one numpy pass over many rods) gives, set by set, the model areas of area_balance."""
+    """model_areas of a sweep's givens (one numpy pass over many rods) gives, set by set, its areas of one set."""
     import numpy as np
 
     from construct.constructions.piston_force import analytic as pf
 
     g = dict(PF.figure(parts=6).replay.givens)
     lengths = g["crank_radius"] * np.array([1.05, 1.3, 2.0, 5.0, 12.0, 50.0])
-    swept = pf.model_areas_sweep({**g, "rod_length": lengths})
+    swept = pf.model_areas({**g, "rod_length": lengths})
     for i, length in enumerate(lengths):
         one = pf.model_areas({**g, "rod_length": float(length)})
         for key, value in one.items():

@@ -170,14 +170,15 @@ def test_check_cli_and_bad_option(capsys):
 
 @pytest.mark.parametrize("force", ["baumann", "unit"])
 def test_the_sweeps_model_equals_the_model_of_each_set(force):
-    """model_summary_sweep (one numpy pass over many rod ratios) gives, set by set, what model_summary gives."""
+    """model_summary of a sweep's givens (one numpy pass over many rod ratios) gives, set by set, what it gives
+    for one set."""
     import numpy as np
 
-    from construct.constructions.tangential import model_summary, model_summary_sweep
+    from construct.constructions.tangential import model_summary
 
     ratios = np.array([1.05, 1.3, 2.0, 5.0, 12.0, 50.0])
     g = dict(TP.figure(force=force, parts=6).replay.givens)
-    swept = model_summary_sweep({**g, "rod_ratio": ratios}, force)
+    swept = model_summary({**g, "rod_ratio": ratios}, force)
     for i, ratio in enumerate(ratios):
         one = model_summary({**g, "rod_ratio": float(ratio)}, force)
         for key in ("mean", "alpha1", "alpha2", "excess"):

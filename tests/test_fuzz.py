@@ -19,7 +19,7 @@ are derandomised so that CI sees the same cases every time; the
 examples that once found bugs are pinned with ``@example``
 (integers beyond any float in each field that reads a number, a
 trial_chord of ten million parts, lone surrogates in captions and names, a
-megabyte name, ``errata --seed ''``, ``bench --parts N``, ``--frames all``
+megabyte name, ``errata --book ''``, ``bench --parts N``, ``--frames all``
 of a 3600-part crank, ``check crank-angle --divisions 1000``).
 """
 
@@ -277,7 +277,7 @@ CONSTRUCTIONS = ["crank", "crank-angle", "inertia-curve", "inertia-stroke-fracti
                  "piston-force", "tangential-pressure", "two-cranks", "no-such-construction", ""]
 OPTIONS = ["--rod-ratio", "--parts", "--method", "--divisions", "--radius", "--pressure-ratio", "--fluctuation",
            "--magnify", "--given", "--kappa", "--filling", "--compression", "--rpm", "--weight", "--scale",
-           "--step", "--style", "--format", "--seed", "--no-such-option"]
+           "--step", "--style", "--format", "--book", "--seed", "--no-such-option"]
 FLAGS = ["--infinite-rod", "--json", "-h"]
 TABLES = ["piston-path", "crank-angle", "acceleration", "characteristic-points", "mass-forces",
           "tangential-pressure", "flywheel-coefficients", "speed-fluctuation", "no-such-table"]
@@ -328,7 +328,7 @@ def _populate(work: Path) -> None:
 @example(argv=["replay", "crank", "--method", "exact", "--parts", "7", "--frames", "none", "--out", "out"])
 @example(argv=["table", "acceleration", "--step", "0.01"])
 @example(argv=["check", "crank", "--parts", "1000000000"])
-@example(argv=["errata", "--seed", ""])
+@example(argv=["errata", "--book", ""])
 @example(argv=["bench", "--parts", "6"])
 @example(argv=["replay", "crank", "--parts", "3600", "--frames", "all", "--out", "out"])
 @example(argv=["check", "crank-angle", "--divisions", "1000"])
@@ -346,8 +346,8 @@ def test_a_hostile_command_line_keeps_the_contract(tmp_path, argv):
         assert after == before, "a failed run left its output folder behind"
     if argv[:2] == ["check", "crank-angle"] and "--divisions" in argv and "1000" in argv and len(argv) == 4:
         assert code == 0, f"inside its domain every check must pass: {out[-300:]}"  # once 780 of 1001 failed
-    if argv[:3] == ["errata", "--seed", ""] or argv[:2] == ["replay", "crank"] and "3600" in argv:
-        assert code == 2, err  # an empty seed is not "all"; 100 GB of frames are refused with the estimate
+    if argv[:3] == ["errata", "--book", ""] or argv[:2] == ["replay", "crank"] and "3600" in argv:
+        assert code == 2, err  # an empty book is not "all"; 100 GB of frames are refused with the estimate
     if code == 0 and argv[:2] == ["table", "piston-path"] and "--format" not in argv:
         # A table printed with exit 0 is right: the constructed piston path is the exact one.
         rows = [line.split() for line in out.splitlines()[1:] if line.strip()]

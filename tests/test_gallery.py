@@ -52,12 +52,16 @@ def test_gallery_entry_files_and_index(small_plan, tmp_path):
              if any(not isinstance(fig.replay.get(o), Length) for o in s.outputs if fig.replay.get(o) is not None)}
     assert {int(k) for k in re.findall(r'data-step="(\d+)"', final)} == drawn
     readme = (out / "README.md").read_text(encoding="utf-8")
-    # every picture the index shows exists, with its caption, method and checks
+    # every picture the index shows exists (the plate), with its caption and links to the player and the checks
     pics = re.findall(r"!\[[^\]]*\]\(([^)]+)\)", readme)
-    assert len(pics) == 2 and all((out / p).is_file() for p in pics)
-    assert "Kolbenwege aus dem Kurbelkreis" in readme and "**Method:**" in readme and "**Checks:**" in readme
+    links = re.findall(r"\]\(([^)]+)\)", readme)
+    assert pics == ["crank-parts-3-rod-ratio-4/historical/final.svg"] and all((out / p).is_file() for p in links)
+    assert "Kolbenwege aus dem Kurbelkreis" in readme and "crank-parts-3-rod-ratio-4/teaching/player.html" in links
+    # the method's figures are the checks page's, not the index's
+    assert "steps by provenance" not in readme and "- steps by provenance: exact " in (
+        out / "crank-parts-3-rod-ratio-4" / "checks.md").read_text(encoding="utf-8")
     html = (out / "index.html").read_text(encoding="utf-8")
-    assert all(f'src="{p}"' in html for p in pics)
+    assert all(f'src="{p}"' in html for p in pics) and "steps by provenance" not in html
     assert "Fig. 1." in (out / "crank-parts-3-rod-ratio-4" / "historical" / "final.svg").read_text()
 
 
@@ -115,3 +119,24 @@ def test_the_gallery_stays_small_enough_to_commit():
     if not root.is_dir():
         pytest.skip("no committed gallery in this checkout")
     assert sum(p.stat().st_size for p in root.rglob("*") if p.is_file()) <= 15e6
+
+
+def test_the_committed_gallery_names_the_books_and_never_a_seed():
+    """Pages, captions and metadata cite author and title; the errata pages are named after the books."""
+    root = REPO / "gallery"
+    if not root.is_dir():
+        pytest.skip("no committed gallery in this checkout")
+    assert sorted(p.name for p in root.glob("errata-*.html")) == [
+        "errata-anhang-ii.html", "errata-baumann.html", "errata-handbook.html", "errata-mechanics.html"]
+    seed = re.compile(r"\bseeds?\b", re.I)
+    said = []
+    for p in sorted(root.rglob("*")):
+        if p.suffix not in (".html", ".md", ".svg", ".json"):
+            continue
+        text = p.read_text(encoding="utf-8")
+        # what a reader (or a reader's tool) meets: everything but the scripts' code and encoded data
+        text = re.sub(r"<script\b.*?</script>", "", text, flags=re.S)
+        said += [f"{p.relative_to(root)}: {m.group(0)!r}" for m in seed.finditer(text)]
+    assert not said, said[:10]
+    index = (root / "index.html").read_text(encoding="utf-8")
+    assert "A. Baumann" in index and "Schwungradgewichte" in index and "seed" not in index.lower()

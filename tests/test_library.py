@@ -22,8 +22,42 @@ def test_public_names_exist_and_are_documented():
     for name in construct.__all__:
         assert hasattr(construct, name), name
     for name in ("Builder", "Figure", "Protocol", "get", "nearer", "farther", "toward", "left_of", "StepError",
-                 "NoIntersection", "svg"):
+                 "NoIntersection", "Check", "Style"):
         assert name in construct.__all__
+
+
+def test_every_error_and_warning_is_at_the_front_door():
+    """What the library raises or warns, a user catches with one import (InputFileError was missing once)."""
+    import inspect
+
+    from construct.kernel import errors
+
+    kinds = [c for _, c in inspect.getmembers(errors, inspect.isclass)
+             if c.__module__ == errors.__name__ and issubclass(c, (errors.ConstructError, Warning))]
+    assert len(kinds) >= 17
+    assert [c.__name__ for c in kinds if getattr(construct, c.__name__, None) is not c
+            or c.__name__ not in construct.__all__] == []
+
+
+def test_what_a_figure_gives_and_takes_is_at_the_front_door():
+    import construct.constructions.checking
+    import construct.render.styles
+
+    fig = construct.get("crank").figure(parts=6)
+    assert type(fig.checks()[0]) is construct.Check is construct.constructions.checking.Check
+    assert construct.Style is construct.render.styles.Style
+    assert {"Check", "Style", "testing"} <= set(dir(construct))
+
+
+def test_old_names_still_work_and_say_what_to_use():
+    fig = construct.get("crank").figure(parts=6)
+    with pytest.warns(DeprecationWarning, match="figure.svg"):
+        svg = construct.svg(fig, style="plain")
+    assert svg == fig.svg(style="plain")
+    with pytest.warns(DeprecationWarning, match=r"figure.write\(out\)"), pytest.raises(construct.InvalidParameter):
+        construct.write_replay(fig, "unused", frames="x")
+    with pytest.raises(AttributeError):
+        construct.no_such_name  # noqa: B018
 
 
 def test_every_public_builder_method_has_a_runnable_example():
@@ -120,7 +154,7 @@ LAYERS = [
     ("gallery", ["construct.gallery"]),
     ("regress", ["construct.regress"]),
     ("cli", ["construct.cli", "construct.__main__"]),
-    ("front door", ["construct"]),
+    ("front door", ["construct", "construct.testing"]),
 ]
 
 
@@ -136,30 +170,75 @@ def _module_name(path: Path) -> str:
 
 
 def _imports(path: Path, text: str | None = None) -> list[tuple[str, int]]:
-    """The construct-internal modules a file imports, anywhere in it: at module level and inside functions.
+    """The construct-internal modules a file imports, anywhere in it: at module level, inside functions and
+    under ``if TYPE_CHECKING:`` (read by type checkers only, but still an arrow a reader follows: the layers
+    and the circles count them too).
 
-    *text* is the file's source (read from *path* when None; *path* places it in the package).  Imports
-    under ``if TYPE_CHECKING:`` are left out: they are read by type checkers only and never run, so they
-    make no arrow between layers at run time.
+    *text* is the file's source (read from *path* when None; *path* places it in the package).
+    ``from package import name`` names the module package.name when there is one, else the package.
     """
     tree = ast.parse(path.read_text(encoding="utf-8") if text is None else text)
     pkg = path.relative_to(ROOT).with_suffix("").parts[:-1]
-    typing_only = {id(n) for node in ast.walk(tree) if isinstance(node, ast.If)
-                   and ast.unparse(node.test).endswith("TYPE_CHECKING") for n in ast.walk(node)}
     out = []
     for node in ast.walk(tree):
-        if id(node) in typing_only:
-            continue
-        if isinstance(node, ast.ImportFrom) and node.level:
-            base = list(pkg[: len(pkg) - node.level + 1])
-            target = ".".join(base + (node.module.split(".") if node.module else []))
-            # "from . import x" names a module when x is one
-            out += [(f"{target}.{a.name}" if node.module is None else target, node.lineno) for a in node.names]
-        elif isinstance(node, ast.ImportFrom) and (node.module or "").startswith("construct"):
-            out.append((node.module, node.lineno))
+        if isinstance(node, ast.ImportFrom) and (node.level or (node.module or "").startswith("construct")):
+            if node.level:
+                base = list(pkg[: len(pkg) - node.level + 1])
+                target = ".".join(base + (node.module.split(".") if node.module else []))
+            else:
+                target = node.module
+            out += [(f"{target}.{a.name}" if f"{target}.{a.name}" in _MODULES else target, node.lineno)
+                    for a in node.names]
         elif isinstance(node, ast.Import):
             out += [(a.name, node.lineno) for a in node.names if a.name.startswith("construct")]
     return out
+
+
+#: Every module of the package by its dotted name.
+_MODULES = {".".join(p.relative_to(ROOT).with_suffix("").parts[:-1] if p.name == "__init__.py"
+                     else p.relative_to(ROOT).with_suffix("").parts): p for p in PACKAGE.rglob("*.py")}
+
+
+def _circles(graph: dict[str, set[str]]) -> list[list[str]]:
+    """The groups of modules that import one another round a circle (strongly connected, more than one)."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    out = []
+    for root in sorted(graph):  # Tarjan's algorithm, without recursion
+        if root in index:
+            continue
+        work = [(root, iter(sorted(graph.get(root, ()))))]
+        index[root] = low[root] = len(index)
+        stack.append(root)
+        while work:
+            v, edges = work[-1]
+            w = next(edges, None)
+            if w is not None:
+                if w not in index:
+                    index[w] = low[w] = len(index)
+                    stack.append(w)
+                    work.append((w, iter(sorted(graph.get(w, ())))))
+                elif w in stack:
+                    low[v] = min(low[v], index[w])
+                continue
+            work.pop()
+            if work:
+                low[work[-1][0]] = min(low[work[-1][0]], low[v])
+            if low[v] == index[v]:
+                group = []
+                while True:
+                    w = stack.pop()
+                    group.append(w)
+                    if w == v:
+                        break
+                if len(group) > 1:
+                    out.append(sorted(group))
+    return out
+
+
+def _import_graph() -> dict[str, set[str]]:
+    return {name: {t for t, _ in _imports(path) if t in _MODULES and t != name} for name, path in _MODULES.items()}
 
 
 def test_every_module_sits_in_a_layer():
@@ -183,12 +262,31 @@ def test_the_layer_test_sees_imports_inside_functions():
     probe = PACKAGE / "kernel" / "_probe_for_layer_test.py"  # read as if it were there; nothing is written
     text = "def f():\n    from ..render import svg\n    return svg\n"
     targets = [t for t, _ in _imports(probe, text)]
-    assert targets == ["construct.render"] and _layer(targets[0]) > _layer("construct.kernel.ops")
+    assert targets == ["construct.render.svg"] and _layer(targets[0]) > _layer("construct.kernel.ops")
+
+
+def test_the_layer_test_sees_typing_only_imports():
+    """An import under TYPE_CHECKING is an arrow too: a renderer typed against a construction depends on it."""
+    probe = PACKAGE / "render" / "_probe_for_layer_test.py"  # read as if it were there; nothing is written
+    text = "from typing import TYPE_CHECKING\nif TYPE_CHECKING:\n    from ..constructions import Construction\n"
+    assert [t for t, _ in _imports(probe, text)] == ["construct.constructions"]
+
+
+def test_no_modules_import_one_another_round_a_circle():
+    """Inside a layer too: no module imports one that imports it back, directly or round a longer circle."""
+    circles = _circles(_import_graph())
+    assert not circles, "\n".join(" -> ".join(c) for c in circles)
+
+
+def test_the_circle_test_sees_a_circle():
+    graph = {"a": {"b"}, "b": {"c"}, "c": {"a", "d"}, "d": set(), "e": {"e"}}
+    assert _circles(graph) == [["a", "b", "c"]]
 
 
 def test_the_top_of_the_package_holds_few_modules():
-    """Everything but the front door, the entry point and a few cross-layer modules lives in a package."""
-    loose = sorted(p.name for p in PACKAGE.glob("*.py") if p.name not in ("__init__.py", "__main__.py"))
+    """Everything but the front door (with its test helpers, construct.testing, as shapely.testing), the entry
+    point and a few cross-layer modules lives in a package."""
+    loose = sorted(p.name for p in PACKAGE.glob("*.py") if p.name not in ("__init__.py", "__main__.py", "testing.py"))
     assert len(loose) <= 3, loose
 
 

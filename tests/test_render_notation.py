@@ -190,7 +190,10 @@ def test_the_svg_keeps_the_provenance_for_the_machine(tmp_path):
     assert desc.get("id") == "provenance"
     data = json.loads(desc.text)
     assert data["construction"] == "indicator-diagram"
-    assert data["source"] == c.source and data["givens"]["admission"] == 7.85
+    assert data["givens"]["admission"] == 7.85
+    # the text as a reader cites it and the book by the name --book takes (seeds/004: "Autor: A. Baumann")
+    assert data["source"].startswith("A. Baumann, Schwungradgewichte (1902)") and "Fig. 25" in data["source"]
+    assert data["texts"] == [{"book": "baumann", "figure": "Fig. 25"}]
     # ... and the visible caption does not
     caps = " ".join(t.text or "" for t in root.iter(f"{ns}text") if "cap" in (t.get("class") or ""))
     assert "Baumann" in caps and not REPOSITORY_NAMES.search(caps)

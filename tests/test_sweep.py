@@ -209,3 +209,137 @@ def test_a_set_taken_from_a_sweep_holds_every_object_of_that_set(rod_ratio_sweep
     assert "no such object" not in one and one.get("no such object") is None
     again = pickle.loads(pickle.dumps(one))
     assert dict(again.items()) == dict(one.items()) and again.givens == one.givens
+
+
+# -- every op on arrays -----------------------------------------------------------------------------------------
+
+#: Each book construction, and the variants that reach the ops its default figure does not (the dividers'
+#: trial, the marked ruler, the revolution's corners): every op of the table a book construction uses.
+BOOK_FIGURES = [(n, {}) for n in names()] + [
+    ("crank", {"parts": 7, "method": "dividers"}), ("crank", {"parts": 9, "method": "neusis"}),
+    ("inertia-curve", {"parts": 7, "method": "dividers"}), ("tangential-pressure", {"revolution": True}),
+    ("piston-force", {"revolution": True}),
+]
+
+
+def _few_sets(c, fig):
+    """Givens for a sweep of four sets: rod ratios far apart (the order of points changes) and, where the figure
+    has a unit r, other units (the dividers' trial and the marked ruler work on the crank circle)."""
+    givens = dict(fig.replay.givens)
+    swept = c.rod_ratio_sweep(givens, [1.3, 3.0, 7.5, 60.0]) or givens
+    return {**swept, "r": np.array([0.8, 1.0, 1.7, 3.0]) * givens["r"]} if "r" in givens else swept
+
+
+def assert_sets_equal_their_replays(protocol, givens):
+    """Each set of the sweep of *givens* holds every object its own scalar replay makes, to 1e-12 of the largest
+    number that replay holds (a coordinate, or an area's reading); return the sweep."""
+    sweep = protocol.replay(givens)
+    for i in range(sweep.size):
+        single = protocol.replay({k: take(v, i) for k, v in givens.items()})
+        set_i = sweep.take(i)
+        assert set(set_i) == set(single)
+        numbers = {name: _coords(value) for name, value in single.items()}
+        scale = max((abs(c) for cs in numbers.values() for c in cs), default=1.0)
+        for name, a in numbers.items():
+            b = _coords(set_i[name])
+            assert len(a) == len(b), (name, i)
+            worst = max((abs(x - y) for x, y in zip(a, b)), default=0.0)
+            assert worst <= 1e-12 * scale, (name, i, worst, scale)
+    return sweep
+
+
+@pytest.mark.parametrize("name, params", BOOK_FIGURES, ids=[f"{n}{'-' + '-'.join(map(str, p.values())) if p else ''}"
+                                                          for n, p in BOOK_FIGURES])
+def test_every_op_of_a_book_figure_runs_on_arrays_and_gives_each_sets_replay(name, params):
+    """No op of a book construction runs element by element in a sweep (Replay.elementwise names those that do);
+    each op's array form gives, set by set, what the scalar replay of that set gives."""
+    c = get(name)
+    fig = c.figure(**params)
+    givens = _few_sets(c, fig)
+    sweep = assert_sets_equal_their_replays(fig.protocol, givens)
+    assert sweep.elementwise == (), f"ran element by element in a sweep: {', '.join(sweep.elementwise)}"
+
+
+def test_an_op_without_an_array_form_runs_element_by_element_and_is_named():
+    """What Replay.elementwise reports: an op marked vector=False runs once per set, and the sweep says which."""
+    import dataclasses
+
+    from construct.kernel import ops
+
+    from construct.kernel.protocol import Protocol
+
+    text = get("crank").figure(parts=6).protocol.to_json()
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setitem(ops.OPS, "polyline", dataclasses.replace(ops.OPS["polyline"], vector=False))
+        proto = Protocol.from_json(text)  # compiled with the op table as it is now
+        sweep = assert_sets_equal_their_replays(proto, {"r": 1.0, "rod_ratio": np.array([3.0, 5.0])})
+    assert sweep.elementwise == ("polyline",)
+
+
+def _builder_sweep(build, values):
+    """A small protocol built by *build* (a Builder with the given k), replayed over k = *values*."""
+    from construct import Builder
+
+    b = Builder("probe", givens={"k": float(values[0])})
+    build(b)
+    return assert_sets_equal_their_replays(b.protocol(), {"k": np.asarray(values, dtype=float)})
+
+
+def test_a_french_curve_whose_points_change_their_order_along_the_axis():
+    """The points are sorted along the axis in each set on its own: P passes Q as k grows."""
+    from construct import nearer
+
+    def build(b):
+        b.given_point("O", 0.0, 0.0)
+        b.given_point("X", 1.0, 0.0)
+        axis = b.line("axis", "O", "X")
+        pts = [b.given_point("A", 0.0, 0.0), b.given_point("P", 0.5, 1.0, unit="k"), b.given_point("Q", 1.5, 0.5),
+               b.given_point("B", 3.0, 0.2)]
+        b.french_curve("curve", axis, pts, {})
+        b.given_point("T", 1.0, -1.0)
+        b.given_point("U", 1.0, 3.0)
+        b.line("cut", "T", "U")
+        b.intersect("Y", "curve", "cut", rule=nearer("U"))
+
+    _builder_sweep(build, [0.5, 1.0, 2.0, 3.5, 5.0])
+
+
+def test_curves_crossed_where_their_pieces_meet_and_both_crossings():
+    """A line through a point where two pieces of a curve meet finds it once (a polyline's vertex, a French
+    curve's point ends one Bézier segment and starts the next), so that ``both`` gives the other crossing, in
+    each set as in its replay."""
+    from construct import toward
+
+    def build(b):
+        b.given_point("O", 0.0, 0.0)
+        b.given_point("X", 1.0, 0.0)
+        b.line("axis", "O", "X")
+        pts = [b.given_point("A", 0.0, 0.0), b.given_point("B", 1.0, 1.0, unit="k"), b.given_point("C", 2.0, 0.0),
+               b.given_point("D", 3.0, 1.0)]
+        b.polyline("zigzag", pts)
+        b.french_curve("wave", "axis", pts, {})
+        b.given_point("Z", 3.5, 0.2)
+        b.line("through_B", "B", "Z")  # through B exactly: B is a vertex, and a point of the French curve
+        left = toward(dx=-1.0, dy=0.0)
+        b.intersect(("P1", "P2"), "zigzag", "through_B", rule=left)  # B first, then the next crossing
+        b.intersect(("W1", "W2"), "wave", "through_B", rule=left)
+
+    sweep = _builder_sweep(build, [0.6, 0.8, 1.0])  # B the first crossing from the left (at 1.2 it is not)
+    for name in ("P", "W"):  # the second crossing is another point, not B found again
+        b_x, second_x = sweep["B"].x, sweep[f"{name}2"].x
+        assert np.all(np.abs(second_x - b_x) > 0.1), (name, b_x, second_x)
+
+
+def test_a_sweep_names_the_first_set_where_a_drawn_curve_misses_its_line():
+    from construct import Builder, nearer
+    from construct.kernel.errors import NoIntersection
+
+    b = Builder("probe", givens={"k": 0.5})
+    pts = [b.given_point("A", 0.0, 0.0), b.given_point("B", 1.0, 1.0), b.given_point("C", 2.0, 0.0)]
+    b.polyline("roof", pts)
+    b.given_point("L", -1.0, 1.0, unit="k")
+    b.given_point("R", 3.0, 1.0, unit="k")
+    b.line("level", "L", "R")  # at height k: above the roof's ridge for k > 1
+    b.intersect("X", "roof", "level", rule=nearer("L"))
+    with pytest.raises(NoIntersection, match=r"step \d+ .*for 2 of 4 sets of givens, first at index 2"):
+        b.protocol().replay({"k": np.array([0.25, 0.5, 1.5, 2.0])})

@@ -50,7 +50,7 @@ from .printed import Printed
 
 __all__ = ["CLASS_MEANINGS", "WRONG", "Erratum", "Reading", "errata", "all_errata", "classify", "read_printed", "true_value", "CLASSES", "SOURCES", "errata_of"]
 
-#: The other seeds' errata modules (each has ``entries()``), listed after seed 000's by :func:`all_errata`.
+#: The other books' errata modules (each has ``entries()``), listed after Anhang II's by :func:`all_errata`.
 SOURCES = ("construct.books.handbook.errata", "construct.books.mechanics.errata", "construct.books.baumann.errata")
 
 #: What each class says about a printed number (or formula); the first two by distance alone.
@@ -508,22 +508,26 @@ def errata() -> list[Erratum]:
     return [_entry(v, lookup) for v in printed] + _formula_entries()
 
 
-def errata_of(seed: str = "all") -> list[Erratum]:
-    """The errata of one seed ("000", "001", "002", "004") or of all of them, seed 000 first."""
-    if not isinstance(seed, str) or not seed.strip():  # an empty --seed '' is an unset variable, not "all"
-        raise InvalidParameter(f"name a seed (000, 001, 002, 004) or 'all', got {seed!r}")
+def errata_of(book: str = "all") -> list[Erratum]:
+    """The errata of one book, by its name ("anhang-ii", "handbook", "mechanics", "baumann"; the number of its
+    text, "000" ... "004", is the old name), or of all of them, Anhang II first.
+
+    >>> {e.source for e in errata_of("baumann")} == {e.source for e in errata_of("004")} == {"baumann"}
+    True
+    """
+    from ..constructions.phrases import book as named
+
+    if not isinstance(book, str) or not book.strip():  # an empty --book '' is an unset variable, not "all"
+        raise InvalidParameter(f"name a book (anhang-ii, handbook, mechanics, baumann) or 'all', got {book!r}")
     out = all_errata()
-    if seed == "all":
+    if book == "all":
         return out
-    picked = [e for e in out if e.source.startswith(f"seed {seed}")]
-    if not picked:
-        raise InvalidParameter(f"no errata for seed {seed!r}; known: "
-                               f"{', '.join(sorted({e.source.split()[1].rstrip(',') for e in out}))}")
-    return picked
+    name = named(book).key
+    return [e for e in out if e.source == name]
 
 
 def all_errata() -> list[Erratum]:
-    """Seed 000's errata, then those of every module in :data:`SOURCES` (``source`` names the seed)."""
+    """Anhang II's errata, then those of every module in :data:`SOURCES` (``source`` is the book's name)."""
     import importlib
 
     out = errata()

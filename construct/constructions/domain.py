@@ -168,7 +168,7 @@ POLYTROPE_EXPONENT = Domain(1.0, 5.0 / 3.0, "polytropic exponents between the is
 SUCTION_PRESSURE = Domain(0.3, 1.0, "suction pressures in at absolute (a slight vacuum: practice 0.85 .. 0.95)")
 EXHAUST_PRESSURE = Domain(1.0, 3.0, "exhaust pressures in at absolute (a slight over-pressure: practice 1.05 .. 1.2)")
 #: The highest pressure of the cycle, at: seed 001 names about 25 at for the explosion engine.
-ENGINE_PRESSURE = Domain(2.0, 150.0, "highest cycle pressures in at (seed 001: about 25 at for the explosion engine)")
+ENGINE_PRESSURE = Domain(2.0, 150.0, "highest cycle pressures in at (the handbook: about 25 at for the explosion engine)")
 #: Baumann's Fig. 28 over the rim radius r1: the disc thickness b1 (a real wheel's is a few thousandths of r1; the
 #: plate exaggerates) up to 1/30 r1, so that the hub (24 b1 long) stays within 0.8 r1; the rim's square side below
 #: r1/2 so that the rim clears the hub radius.

@@ -507,7 +507,7 @@ def four_stroke_checks(fig: Figure) -> list[Check]:
                         "Euclidean", "at"))
     if engine == "explosion":
         v_d, p_d = vc, g["max_pressure"]
-        checks.append(Check("maximum pressure (seed 001: about 25 at)", pressure(fig, "eP0"), g["max_pressure"], tol_p,
+        checks.append(Check("maximum pressure (the handbook: about 25 at)", pressure(fig, "eP0"), g["max_pressure"], tol_p,
                             "laid off on the pressure axis", "at"))
     else:
         v_d, p_d = g["cutoff"] * vc, g["suction"] * eps ** nexp
@@ -552,7 +552,7 @@ def four_stroke_checks(fig: Figure) -> list[Check]:
             mass = g["pressure_ratio"] * (math.cos(theta) + lam * math.cos(2.0 * theta))
             checks.append(Check(f"b-b at {180 * t / n:g} deg: a-a less q(cos θ + r/L cos 2θ)",
                                 a - _height(fig, f"B{s}.{i}"), mass, tol_p * 10.0 + 1e-9 * abs(mass),
-                                "the inertia ordinate of seed 000 (Euclidean), taken off with the compass", "at"))
+                                "the inertia ordinate of Anhang II (Euclidean), taken off with the compass", "at"))
     checks.append(Check("piston position X_k against the exact law (stroke)", max(
         abs(xk[k] - _piston(math.pi * k / n, g["rod_ratio"])) for k in range(n + 1)), 0.0,
         1e-9, "rod arcs; the division of the circle", "stroke"))
@@ -565,7 +565,7 @@ OPTION_HELP = {
     "compression_ratio": "four-stroke: compression ratio epsilon = (V_c + V_h)/V_c (explosion 5, Diesel 14)",
     "suction": "four-stroke: suction pressure p_a, at absolute (0.9)",
     "exhaust": "four-stroke: exhaust pressure p_g, at absolute (1.1)",
-    "max_pressure": "four-stroke, explosion: maximum pressure after ignition, at (seed 001: about 25)",
+    "max_pressure": "four-stroke, explosion: maximum pressure after ignition, at (the handbook: about 25)",
     "cutoff": "four-stroke, diesel: cut-off ratio rho = V_d/V_c of the combustion at constant pressure (2)",
     "exponent": "four-stroke: polytropic exponent n of compression and expansion (1.3)",
     "steps": "four-stroke: Brauer steps per polytrope (12: the French curve then strays by a thousandth of the diagram)",

@@ -40,6 +40,8 @@ import math
 from dataclasses import dataclass
 from typing import Any, Mapping, Sequence
 
+import numpy as np
+
 from .checking import EUCLIDEAN_TOLERANCE, Check
 from ..kernel.errors import InvalidParameter
 from ..kernel.instruments import Builder
@@ -385,16 +387,20 @@ def pressure(fig: Figure, point: str, head: str = "A", crank: str = "B") -> floa
     return ((p[0] - ax) * -uy + (p[1] - ay) * ux) / unit
 
 
-def steam_pressure(x: float, g: Mapping[str, float]) -> float:
-    """Absolute pressure on the cover side at piston path x (fraction of the stroke): Baumann's model."""
+def steam_pressure(x: Any, g: Mapping[str, Any]) -> Any:
+    """Absolute pressure on the cover side at piston path x (fraction of the stroke; numbers or arrays):
+    Baumann's model, P + P0 up to the cut-off s1, then the hyperbola through it."""
     s1, s0, P, P0 = g["filling"], g["clearance"], g["admission"], g["back_pressure"]
-    return P + P0 if x <= s1 else (P + P0) * (s1 + s0) / (x + s0)
+    p = np.where(x <= s1, P + P0, (P + P0) * (s1 + s0) / (x + s0))
+    return float(p) if np.ndim(p) == 0 else p
 
 
-def back_pressure(x: float, g: Mapping[str, float]) -> float:
-    """Absolute pressure on the crank side at piston path x: P0, compressed from s2 = s - s3 on."""
+def back_pressure(x: Any, g: Mapping[str, Any]) -> Any:
+    """Absolute pressure on the crank side at piston path x (numbers or arrays): P0, compressed from
+    s2 = s - s3 on."""
     s3, s0, P0 = g["compression"], g["clearance"], g["back_pressure"]
-    return P0 if x <= 1.0 - s3 else P0 * (s3 + s0) / (1.0 - x + s0)
+    p = np.where(x <= 1.0 - s3, P0, P0 * (s3 + s0) / (1.0 - x + s0))
+    return float(p) if np.ndim(p) == 0 else p
 
 
 def _pressure_tolerance(g: Mapping[str, float], unit_scale: float) -> float:
@@ -581,11 +587,11 @@ def card_checks(fig: Figure) -> list[Check]:
         checks.append(Check(f"card point {i}: p", pressure(fig, name), p, tol, "laid off up the perpendicular", "at"))
     for k in range(1, n):
         x = abscissa(fig, f"fE{k}")
-        for tag, card, stroke, what in (("fE", cover, "forward", "cover side forward"),
+        for tag, side, stroke, what in (("fE", cover, "forward", "cover side forward"),
                                         ("rW", cover, "return", "cover side return"),
                                         ("fW", crank, "forward", "crank side forward"),
                                         ("rE", crank, "return", "crank side return")):
-            checks.append(Check(f"{what} at {k}/{n}", pressure(fig, f"{tag}{k}"), card.pressure(x, stroke), tol,
+            checks.append(Check(f"{what} at {k}/{n}", pressure(fig, f"{tag}{k}"), side.pressure(x, stroke), tol,
                                 "the ordinate meets the straightedge line between two digitised points", "at"))
     return checks
 

@@ -53,6 +53,7 @@ from typing import Any, Mapping, Sequence
 import numpy as np
 
 from ..io.reading import read_bounded_text
+from . import analytic
 from ..kernel.errors import InputFileError
 
 __all__ = ["IndicatorCard", "parse_indicator_csv", "load_indicator", "card_givens", "card_from_givens", "draw_card",
@@ -392,7 +393,7 @@ def card_force(givens: Mapping[str, float], lam: float, prefix: str = "") -> Any
 
     def force(w: Any) -> Any:
         w = np.asarray(w, dtype=float)
-        x = 0.5 * (1.0 - np.cos(w) + (1.0 - np.sqrt(1.0 - (lam * np.sin(w)) ** 2)) / lam)
+        x = analytic.piston_fraction(w, lam)
         fwd = np.interp(x, *cover.forward) - np.interp(x, *crank.forward)
         back = np.interp(x, *crank.back) - np.interp(x, *cover.back)
         return np.where(np.mod(w, 2.0 * math.pi) <= math.pi, fwd, back)

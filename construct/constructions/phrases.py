@@ -5,7 +5,7 @@ Every construction carries its own notation (:class:`construct.constructions.Con
 no table of constructions.  This module holds what several constructions share: the four source
 texts as they introduce themselves (the Baumann article names its author, title and volume; the three
 book excerpts carry no title page, so they are cited by the section and figures they print), and the
-phrases their givens are written in -- the rod as the text writes it (r/L = 1/5 in seed 000 and in
+phrases their givens are written in -- the rod as the text writes it (r/L = 1/5 in Anhang II and in
 Baumann, r/l in § 146), the semicircle's division and its method, Baumann's diagram, a digitised
 card, the cranks of a revolution -- the German with the decimal comma, the English with the point.
 
@@ -21,17 +21,20 @@ from dataclasses import dataclass
 from typing import Any, Mapping
 
 from ..kernel.division import NAMES as DIVISION_NAMES
+from ..kernel.errors import InvalidParameter
 from ..kernel.letters import number
 
-__all__ = ["Book", "Cite", "ANHANG_II", "HANDBOOK", "MECHANICS", "BAUMANN_1902", "BOOKS", "number", "ratio", "metres",
-           "percent", "division", "stroke_parts", "scale", "diagram", "card", "revolution", "low_pressure"]
+__all__ = ["Book", "Cite", "ANHANG_II", "HANDBOOK", "MECHANICS", "BAUMANN_1902", "BOOKS", "book", "number", "ratio",
+           "metres", "percent", "division", "stroke_parts", "scale", "diagram", "card", "revolution", "low_pressure"]
 
 
 @dataclass(frozen=True)
 class Book:
-    """A source text as it names itself: author (when it says), title, where it was printed.
+    """A source text as it names itself: author (when it says), title, where and when it was printed, what it teaches.
 
-    *key*: the number of its seed file, which only the metadata shows (``seeds/004``).
+    *key*: its name, what a reader types and finds (``construct errata --book baumann``,
+    ``errata-baumann.html``); *number*: the number of its text among the project's sources, which the old
+    ``--seed NNN`` still takes and no reader is shown.
     """
 
     key: str
@@ -41,10 +44,23 @@ class Book:
     where: str = ""
     #: The title a caption cites (the full one is long for a line under a figure).
     short: str = ""
+    #: When it was printed, as the text says, or what dates an excerpt that does not say.
+    year: str = ""
+    #: What a reader learns from it, in a sentence (the gallery's front page).
+    teaches: str = ""
+    number: str = ""
 
     def title(self, lang: str) -> str:
         """The title a caption cites in *lang* ("de" or "en")."""
         return self.short or (self.title_de if lang == "de" else self.title_en)
+
+    def cited(self, lang: str = "en") -> str:
+        """The book as a line cites it: author and title.
+
+        >>> BAUMANN_1902.cited(), MECHANICS.cited("de")
+        ('A. Baumann, Schwungradgewichte (1902)', '§ 146–147, Zwei Kurbeln unter 90°')
+        """
+        return ", ".join(x for x in (self.author, self.title(lang)) if x)
 
 
 @dataclass(frozen=True)
@@ -55,14 +71,50 @@ class Cite:
     figure: str
 
 
-ANHANG_II = Book("000", None, "Anhang II, „Darstellung der Massendrücke“", "Anhang II, „Darstellung der Massendrücke“")
-HANDBOOK = Book("001", None, "„Einfluß der Massenkräfte“, Maschine Tafel I", "„Einfluß der Massenkräfte“, engine of Tafel I")
-MECHANICS = Book("002", None, "§ 146–147, Zwei Kurbeln unter 90°", "§ 146–147, two cranks at 90°")
-BAUMANN_1902 = Book("004", "A. Baumann", "Ein neues Verfahren zur Bestimmung der Schwungradgewichte von Dampfmaschinen",
-               "Ein neues Verfahren zur Bestimmung der Schwungradgewichte von Dampfmaschinen",
-               "Bd. 317, 1902", short="Schwungradgewichte (1902)")
-#: The four source texts by their seed files' numbers.
+# The Baumann article names its author, title and volume; the three book excerpts carry no title page, so they
+# are cited by the section and figures they print, and dated by their spelling where they say nothing.
+ANHANG_II = Book("anhang-ii", None, "Anhang II, „Darstellung der Massendrücke“",
+                 "Anhang II, „Darstellung der Massendrücke“",
+                 year="undated; its spelling (Werthe, Curve, construiren) is that of before 1901",
+                 teaches="the curve of the inertia pressures of the reciprocating masses over the stroke: by "
+                         "calculation (Tabellen 1 and 2), by construction (Fig. 77–79), its characteristic points "
+                         "and its tangents", number="000")
+HANDBOOK = Book("handbook", None, "„Einfluß der Massenkräfte“, Maschine Tafel I",
+                "„Einfluß der Massenkräfte“, engine of Tafel I",
+                year="undated; it names Diesel engines and spells Zylinder: after 1900",
+                teaches="the piston over-pressure line of a compound engine's high-pressure cylinder with the mass "
+                        "forces (Abb. 1051–1055), and the pressures of four-stroke engines (Abb. 1056–1058)",
+                number="001")
+MECHANICS = Book("mechanics", None, "§ 146–147, Zwei Kurbeln unter 90°", "§ 146–147, two cranks at 90°",
+                 year="undated; its spelling (Todtlage, Ueberschuß) is that of before 1901",
+                 teaches="two cranks at right angles on one shaft: the work the masses take up and give back, and "
+                         "the shaft's speed fluctuation as a polar diagram (Fig. 566), for infinite and finite rods",
+                 number="002")
+BAUMANN_1902 = Book("baumann", "A. Baumann", "Ein neues Verfahren zur Bestimmung der Schwungradgewichte von Dampfmaschinen",
+                    "Ein neues Verfahren zur Bestimmung der Schwungradgewichte von Dampfmaschinen",
+                    "Dinglers Polytechnisches Journal, Bd. 317, S. 341", short="Schwungradgewichte (1902)",
+                    year="1902", teaches="a new method for flywheel weights: the steam diagram, the "
+                    "tangential-pressure diagram and its excess area, rim, arms and hub, with his own error "
+                    "analysis and tables", number="004")
+#: The four source texts by their names, in the order of their files.
 BOOKS: dict[str, Book] = {b.key: b for b in (ANHANG_II, HANDBOOK, MECHANICS, BAUMANN_1902)}
+
+
+def book(name: str) -> Book:
+    """The source text a reader names: by its name, or by the number of its text (the old ``--seed``).
+
+    >>> book("baumann").author, book("004").key
+    ('A. Baumann', 'baumann')
+    >>> book("003")
+    Traceback (most recent call last):
+    ...
+    construct.kernel.errors.InvalidParameter: no book '003'; the books: anhang-ii, handbook, mechanics, baumann
+    """
+    found = BOOKS.get(name) if isinstance(name, str) else None
+    found = found or next((b for b in BOOKS.values() if isinstance(name, str) and name == b.number), None)
+    if found is None:
+        raise InvalidParameter(f"no book {name!r}; the books: {', '.join(BOOKS)}")
+    return found
 
 
 def metres(v: float, lang: str) -> str:
@@ -76,7 +128,7 @@ def percent(v: float, lang: str) -> str:
 
 
 def ratio(name: str, rod_ratio: float, lang: str) -> str:
-    """The rod as the text writes it: r/L = 1/5 (seed 000, Baumann), r/l = 1/5 (§ 146)."""
+    """The rod as the text writes it: r/L = 1/5 (Anhang II, Baumann), r/l = 1/5 (§ 146)."""
     return f"{name} = 1/{number(rod_ratio, lang)}"
 
 

@@ -35,14 +35,14 @@ import json
 import os
 import stat
 from pathlib import Path
-from typing import Callable
+from typing import Callable, ContextManager
 
 from ..kernel.errors import ConstructError, OutputError
 from ..kernel.files import read_regular_file
-from .staging import STAGING_PREFIX
+from .staging import STAGING_PREFIX, replaced_folder
 
 __all__ = ["MANIFEST_NAME", "MANIFEST_FORMAT", "write_manifest", "read_manifest", "foreign_entries", "changed_files",
-           "recogniser"]
+           "recogniser", "replaced_with_manifest"]
 
 MANIFEST_NAME = ".construct-manifest.json"
 MANIFEST_FORMAT = "construct-manifest/1"
@@ -158,3 +158,20 @@ def recogniser(writer: str, shown: int = 3) -> Callable[[Path], bool]:
         return True
 
     return recognise
+
+
+def replaced_with_manifest(target: str | os.PathLike[str], writer: str, *, described: str,
+                           what: str = "output folder") -> ContextManager[Path]:
+    """:func:`construct.io.staging.replaced_folder` for a folder *writer* ("gallery", "replay") owns: the old
+    folder is recognised by the manifest *writer* left in it, and the new one gets its own before it is
+    swapped in.
+
+    >>> import tempfile
+    >>> out = Path(tempfile.mkdtemp()) / "replay"
+    >>> with replaced_with_manifest(out, "replay", described="a demo") as new:
+    ...     new.mkdir(); _ = (new / "final.svg").write_text("<svg/>")
+    >>> sorted(p.name for p in out.iterdir()), foreign_entries(out, "replay")
+    (['.construct-manifest.json', 'final.svg'], [])
+    """
+    return replaced_folder(target, recognise=recogniser(writer), described=described, what=what,
+                           before_swap=lambda new: write_manifest(new, writer))

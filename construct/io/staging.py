@@ -342,25 +342,19 @@ def _commit(stage: Path, target: Path, *, exact: bool = False) -> None:
 
 
 @contextlib.contextmanager
-def replaced_folder(target: str | os.PathLike[str], *, recognise: Callable[[Path], bool] | None = None,
-                    described: str, what: str = "output folder", manifest: str | None = None) -> Iterator[Path]:
+def replaced_folder(target: str | os.PathLike[str], *, recognise: Callable[[Path], bool], described: str,
+                    what: str = "output folder", before_swap: Callable[[Path], None] | None = None) -> Iterator[Path]:
     """Yield the path to build the new *target* at (beside it); on success swap it in whole.
 
     *target* must be missing, empty or recognised by *recognise* (else
-    OutputError).  With *manifest* (the writer: "gallery", "replay") the
-    folder is recognised by the manifest that writer left in it
-    (:mod:`construct.io.manifest`) and the new folder gets one.  The new
-    folder is built in a staging folder in *target*'s parent, so that folder
-    must be writable; a failure leaves *target* as it was, and a write that
-    fails (a full disk, a quota, a permission) is one OutputError naming the
-    path and the cause.
+    OutputError).  *before_swap* is called with the new folder once it is
+    written, before it is swapped in (a writer's manifest goes in there:
+    :func:`construct.io.manifest.replaced_with_manifest`).  The new folder is
+    built in a staging folder in *target*'s parent, so that folder must be
+    writable; a failure leaves *target* as it was, and a write that fails (a
+    full disk, a quota, a permission) is one OutputError naming the path and
+    the cause.
     """
-    if recognise is None:
-        if manifest is None:
-            raise TypeError("replaced_folder needs recognise= or manifest=")
-        from .manifest import recogniser
-
-        recognise = recogniser(manifest)
     target = output_path(target, what)
     existed = _check_replaceable(target, recognise, described, what)
     try:
@@ -402,10 +396,8 @@ def replaced_folder(target: str | os.PathLike[str], *, recognise: Callable[[Path
             yield new
             if not new.is_dir():
                 raise OutputError(f"nothing was written for {what} {str(target)!r}")
-            if manifest is not None:
-                from .manifest import write_manifest
-
-                write_manifest(new, manifest)
+            if before_swap is not None:
+                before_swap(new)
         except OSError as exc:
             if isinstance(exc, OutputError):
                 raise

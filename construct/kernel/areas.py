@@ -15,6 +15,10 @@ shapely measures and clips it; the renderer hatches it.
 [(1, 0.5), (-1, 0.5)]
 >>> a.signed_area(), a.area
 (0.0, 1.0)
+
+In a sweep the region between two graphs is an :class:`Areas`: the planimeter's
+reading of every set computed at once on arrays, each set's pieces made when
+that set is looked at (``take(i)``, for a drawing of it).
 """
 
 from __future__ import annotations
@@ -22,10 +26,12 @@ from __future__ import annotations
 import math
 from typing import Any, Iterable, Sequence
 
-from .errors import DegenerateObject, GeometryError
-from .geometry import Line, Point, points
+import numpy as np
 
-__all__ = ["Area", "area_between", "graph_ordinate"]
+from .errors import DegenerateObject, GeometryError
+from .geometry import SCALAR, Length, Line, Point, points, sets_where, take
+
+__all__ = ["Area", "Areas", "area_between", "graph_ordinate"]
 
 
 class Area:
@@ -67,8 +73,6 @@ class Area:
         >>> a == Area([(1, [Point(0, 0), Point(1, 0), Point(0, 1)])])
         True
         """
-        import numpy as np
-
         out = []
         for sign, xs, ys in pieces:
             xs, ys = np.array(xs, dtype=float), np.array(ys, dtype=float)
@@ -116,7 +120,6 @@ class Area:
     def signed_pieces(self):
         """(sign, shapely Polygon) for each piece."""
         if self._polygons is None:
-            import numpy as np
             from shapely.geometry import Polygon
 
             if self._coords is not None:
@@ -193,8 +196,6 @@ def graph_ordinate(curve: Any, x: float) -> float:
 
 def _graph(curve: Any):
     """A graph as drawn: None for a line (evaluated exactly), else its vertices (x ascending) as arrays."""
-    import numpy as np
-
     if isinstance(curve, Line):
         graph_ordinate(curve, 0.0)  # refuses a vertical line
         return None
@@ -208,8 +209,6 @@ def _graph(curve: Any):
 
 
 def _ordinates(curve: Any, graph, xs):
-    import numpy as np
-
     if graph is None:
         (px, py), (qx, qy) = curve
         return py + (xs - px) * (qy - py) / (qx - px)
@@ -228,8 +227,6 @@ def area_between(upper: Any, lower: Any, x_from: float, x_to: float, hatch_deg: 
     segment's sag, is far below the planimeter's).  Pieces where *upper* lies
     above *lower* have sign +1.
     """
-    import numpy as np
-
     lo, hi = min(x_from, x_to), max(x_from, x_to)
     if not hi > lo:
         raise DegenerateObject(f"an area between curves needs two different abscissae, got {x_from!r} twice")
@@ -267,6 +264,132 @@ def area_between(upper: Any, lower: Any, x_from: float, x_to: float, hatch_deg: 
     return Area.from_coordinates(out, hatch_deg)
 
 
+class Areas:
+    """The regions between two graphs over a sweep: one :class:`Area` per set of givens.
+
+    What a later step reads -- the planimeter's signed area -- is computed for
+    every set at once (:func:`areas_between`); set *i*'s pieces, which only a
+    drawing of that set needs, are made by :func:`area_between` when it is
+    taken (``take(i)``), from that set's graphs.
+    """
+
+    __slots__ = ("_graphs", "hatch_deg", "_signed")
+    kind = "area"
+
+    def __init__(self, upper: Any, lower: Any, x_from: Any, x_to: Any, hatch_deg: float | None, signed: Any) -> None:
+        object.__setattr__(self, "_graphs", (upper, lower, x_from, x_to))
+        object.__setattr__(self, "hatch_deg", hatch_deg)
+        object.__setattr__(self, "_signed", signed)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise AttributeError("Areas is immutable")
+
+    def __reduce__(self):
+        return (Areas, (*self._graphs, self.hatch_deg, self._signed))
+
+    def __len__(self) -> int:
+        return len(self._signed)
+
+    def __repr__(self) -> str:
+        return f"Areas({len(self._signed)} sets, signed {np.min(self._signed):.6g}..{np.max(self._signed):.6g})"
+
+    def signed_area(self) -> Any:
+        """Positive pieces less negative ones, for every set: an array."""
+        return self._signed
+
+    def take(self, i: int) -> Area:
+        upper, lower, x_from, x_to = (take(v, i) for v in self._graphs)
+        return area_between(upper, lower, x_from, x_to, self.hatch_deg)
+
+
+def _graph_rows(curve: Any, n: int) -> tuple[np.ndarray, np.ndarray] | None:
+    """:func:`_graph` for every set of a sweep: the vertices (x ascending in each set), arrays (vertices, n)."""
+    if isinstance(curve, Line):
+        (px, py), (qx, qy) = curve
+        vertical = np.abs(qx - px) <= 1e-15 * np.maximum(1.0, np.maximum(np.abs(px), np.abs(qx)))
+        if np.any(vertical):
+            raise GeometryError("a vertical line is not a graph over the x axis"
+                                + sets_where(np.broadcast_to(vertical, (n,))))
+        return None
+    if curve.kind == "bezier":
+        segs = curve.segments()
+        ctrl = np.empty((len(segs), 4, 2, n))
+        for k, seg in enumerate(segs):
+            for j, p in enumerate(seg):
+                ctrl[k, j, 0], ctrl[k, j, 1] = p.x, p.y
+        t = np.arange(65)[:, None] / 64  # sample(64), set by set
+        s = 1.0 - t
+        weights = np.hstack([s ** 3, 3.0 * s * s * t, 3.0 * s * t * t, t ** 3])
+        pts = np.einsum("tj,kjdn->ktdn", weights, ctrl)
+        pts[:, 0], pts[:, -1] = ctrl[:, 0], ctrl[:, 3]
+        flat = np.concatenate([pts[:, :-1].reshape(-1, 2, n), ctrl[-1:, 3]])
+        xs, ys = flat[:, 0], flat[:, 1]
+    else:
+        pts = curve.curve_points()
+        xs, ys = np.empty((len(pts), n)), np.empty((len(pts), n))
+        for k, p in enumerate(pts):
+            xs[k], ys[k] = p.x, p.y
+    if np.all(xs[1:] >= xs[:-1]):  # as a graph's vertices mostly are: sorting would change nothing
+        return xs, ys
+    order = np.argsort(xs, axis=0, kind="stable")
+    return np.take_along_axis(xs, order, 0), np.take_along_axis(ys, order, 0)
+
+
+def _ordinate_rows(graph, x: np.ndarray) -> np.ndarray:
+    """The graph's ordinate at *x* (one abscissa per set), as np.interp gives it from the sorted vertices."""
+    gx, gy = graph
+    j = np.clip((gx <= x).sum(axis=0) - 1, 0, gx.shape[0] - 2)[None]
+    x0, x1 = np.take_along_axis(gx, j, 0)[0], np.take_along_axis(gx, j + 1, 0)[0]
+    y0, y1 = np.take_along_axis(gy, j, 0)[0], np.take_along_axis(gy, j + 1, 0)[0]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(x == x0, y0, np.where(x == x1, y1, (y1 - y0) / (x1 - x0) * (x - x0) + y0))
+
+
+def _integral_rows(curve: Any, graph, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """The integral of a graph from lo to hi in every set: the trapezoids of its vertices, cut at lo and hi."""
+    if graph is None:  # a line: exact
+        (px, py), (qx, qy) = curve
+        at_lo, at_hi = py + (lo - px) * (qy - py) / (qx - px), py + (hi - px) * (qy - py) / (qx - px)
+        return (hi - lo) * (at_lo + at_hi) * 0.5
+    gx, gy = graph
+    at_lo, at_hi = _ordinate_rows(graph, lo), _ordinate_rows(graph, hi)
+    # a vertex before lo counts as the point of the graph at lo, one after hi as the point at hi
+    x = np.concatenate([lo[None], np.clip(gx, lo, hi), hi[None]])
+    y = np.concatenate([at_lo[None], np.where(gx < lo, at_lo, np.where(gx > hi, at_hi, gy)), at_hi[None]])
+    return (0.5 * (x[1:] - x[:-1]) * (y[1:] + y[:-1])).sum(axis=0)
+
+
+def areas_between(upper: Any, lower: Any, x_from: Any, x_to: Any, hatch_deg: float | None, n: int) -> Areas:
+    """:func:`area_between` for every set of a sweep of *n* sets: the signed areas at once, on arrays.
+
+    Both graphs are straight between their (sampled) vertices, so the signed
+    area -- the pieces above less those below -- is the integral of the upper
+    graph less that of the lower one, each the trapezoids' sum of its own
+    vertices.  The same refusals as area_between, naming the sets; where a
+    set's signed area is exactly 0 (the curves may coincide) that set's area
+    is made as area_between makes it, which refuses an area of nothing.
+    """
+    lo = np.minimum(x_from, x_to) * np.ones(n)
+    hi = np.maximum(x_from, x_to) * np.ones(n)
+    same = ~(hi > lo)
+    if same.any():
+        raise DegenerateObject("an area between curves needs two different abscissae" + sets_where(same))
+    gu, gl = _graph_rows(upper, n), _graph_rows(lower, n)
+    for g in (gu, gl):
+        if g is not None:
+            first, last = g[0][0], g[0][-1]
+            out = ((lo < first - 1e-12 * np.maximum(1.0, np.abs(first)))
+                   | (hi > last + 1e-12 * np.maximum(1.0, np.abs(last))))
+            if out.any():
+                i = int(np.flatnonzero(out)[0])
+                raise GeometryError(f"abscissae {lo[i]:.6g}..{hi[i]:.6g} reach outside the drawn curve "
+                                    f"({first[i]:.6g}..{last[i]:.6g}){sets_where(out)}")
+    signed = _integral_rows(upper, gu, lo, hi) - _integral_rows(lower, gl, lo, hi)
+    for i in np.flatnonzero(signed == 0.0):
+        area_between(take(upper, i), take(lower, i), take(x_from, i), take(x_to, i))  # raises for no area at all
+    return Areas(upper, lower, x_from, x_to, None if hatch_deg is None else float(hatch_deg), signed)
+
+
 # --------------------------------------------------------------------------
 # The operations (entries of the op table, construct.kernel.ops).
 # --------------------------------------------------------------------------
@@ -275,6 +398,8 @@ def area_between(upper: Any, lower: Any, x_from: float, x_to: float, hatch_deg: 
 def area_between_op(args, params, givens, refs, xp):
     """The region between two graphs, from the abscissa of one point to that of another."""
     upper, lower, a, b = args
+    if xp is not SCALAR:
+        return (areas_between(upper, lower, a.x, b.x, params.get("hatch_deg"), xp.n),)
     return (area_between(upper, lower, a.x, b.x, params.get("hatch_deg")),)
 
 
@@ -287,10 +412,14 @@ def planimeter_op(args, params, givens, refs, xp):
 def planimeter_height_op(args, params, givens, refs, xp):
     """The planimeter's reading divided by the base ab: the height of the rectangle of equal area."""
     area, a, b = args
-    base = math.hypot(b.x - a.x, b.y - a.y)
-    height = area.signed_area() / base
-    if not height > 0.0:
-        raise GeometryError(f"the area's net reading {area.signed_area():.6g} gives no positive mean height")
-    from .geometry import Length
-
+    base = xp.hypot(b.x - a.x, b.y - a.y)
+    reading = area.signed_area()
+    height = reading / base
+    if xp is SCALAR:
+        if not height > 0.0:
+            raise GeometryError(f"the area's net reading {reading:.6g} gives no positive mean height")
+    elif not np.all(height > 0.0):
+        bad = ~(height > 0.0)
+        raise GeometryError(f"the area's net reading {reading[bad][0]:.6g} gives no positive mean height"
+                            f"{sets_where(bad)}")
     return (Length(height),)

@@ -12,6 +12,13 @@ asks of them: where does a line cross the curve (:func:`crossings`), what
 ordinate does it have at an abscissa (``y_at``), and which polyline draws it
 (``curve_points``).
 
+In a sweep (a replay over arrays of givens) a chain's points hold one
+coordinate per set of givens, as any point of a sweep does; ``take(i)`` is the
+chain of set *i*.  The operations that draw and cross curves have array forms
+beside their scalar ones (:func:`crossings_of_sweeps`, the French curve's
+``_french_curve_sweep``): the same steps on all sets at once, held equal to the
+scalar ones set by set (tests/test_sweep.py).
+
 >>> c = BezierCurve((Point(0, 0), Point(1, 1), Point(2, 1), Point(3, 0)))
 >>> c.kind, len(c.segments()), c.curve_points(2)
 ('bezier', 1, (Point(0.0, 0.0), Point(1.5, 0.75), Point(3.0, 0.0)))
@@ -29,10 +36,12 @@ from __future__ import annotations
 import math
 from typing import Any, Sequence
 
-from .errors import DegenerateObject, GeometryError
-from .geometry import Line, Point
+import numpy as np
 
-__all__ = ["Polyline", "BezierCurve", "crossings", "CURVE_TYPES"]
+from .errors import DegenerateObject, GeometryError
+from .geometry import SCALAR, Line, Point, raw_point, sets_where, take
+
+__all__ = ["Polyline", "BezierCurve", "crossings", "crossings_of_sweeps", "CURVE_TYPES"]
 
 
 class _Chain:
@@ -70,6 +79,14 @@ class _Chain:
     def as_json(self) -> dict[str, Any]:
         return {"type": self.kind, "points": [[p[0], p[1]] for p in self.points]}
 
+    def take(self, i: int) -> "_Chain":
+        """Set *i* of a sweep's chain (a chain of one replay is the same for every set)."""
+        return type(self)(tuple(take(p, i) for p in self.points))
+
+    def sets(self) -> int:
+        """How many sets of givens the chain holds a point for: 0 for a chain of one replay."""
+        return next((c.size for p in self.points for c in (p.x, p.y) if isinstance(c, np.ndarray) and c.ndim), 0)
+
     def y_at(self, x: float) -> float:
         """The ordinate where the curve passes the abscissa *x* (drawing coordinates; a graph over x)."""
         pts = self.curve_points() if self.kind != "polyline" else self.points
@@ -102,6 +119,9 @@ class Polyline(_Chain):
     def __reduce__(self):
         return (Polyline, (self.points, self.closed))
 
+    def take(self, i: int) -> "Polyline":
+        return Polyline(tuple(take(p, i) for p in self.points), self.closed)
+
     def __eq__(self, other: object) -> bool:
         if type(other) is not Polyline:
             return NotImplemented
@@ -124,7 +144,11 @@ class Polyline(_Chain):
         return d
 
     def __repr__(self) -> str:
-        return f"Polyline({len(self.points)} points from ({self.points[0][0]:.6g}, {self.points[0][1]:.6g}))"
+        sets = self.sets()
+        if sets:
+            return f"Polyline({len(self.points)} points, a sweep of {sets} sets)"
+        x, y = self.points[0]
+        return f"Polyline({len(self.points)} points from ({x:.6g}, {y:.6g}))"
 
 
 class BezierCurve(_Chain):
@@ -160,8 +184,6 @@ class BezierCurve(_Chain):
 
     def sample(self, per_segment: int = 16):
         """The curve as a polyline, as two numpy arrays xs, ys: *per_segment* pieces per segment, ends exact."""
-        import numpy as np
-
         t = np.arange(per_segment + 1)[:, None] / per_segment
         s = 1.0 - t
         weights = np.hstack([s ** 3, 3.0 * s * s * t, 3.0 * s * t * t, t ** 3])  # Bernstein basis
@@ -197,6 +219,9 @@ class BezierCurve(_Chain):
         raise GeometryError(f"abscissa {x!r} is outside the drawn curve")
 
     def __repr__(self) -> str:
+        sets = self.sets()
+        if sets:
+            return f"BezierCurve({len(self.segments())} segments, a sweep of {sets} sets)"
         a, b = self.points[0], self.points[-1]
         return f"BezierCurve({len(self.segments())} segments, ({a[0]:.6g}, {a[1]:.6g})..({b[0]:.6g}, {b[1]:.6g}))"
 
@@ -206,8 +231,6 @@ CURVE_TYPES = (Polyline, BezierCurve)
 
 def _cubic_roots01(c3: float, c2: float, c1: float, c0: float) -> list[float]:
     """Real roots in [0, 1] of c3 t^3 + c2 t^2 + c1 t + c0, polished by Newton's method."""
-    import numpy as np  # numpy is a core dependency; imported here to keep geometry import light
-
     coeffs = [c3, c2, c1, c0]
     while coeffs and abs(coeffs[0]) <= 1e-15 * max(1.0, *(abs(c) for c in coeffs)):
         coeffs.pop(0)
@@ -223,8 +246,6 @@ def _cubic_roots01_many(polys: list[tuple[float, float, float, float]]) -> list[
     of its 3 x 3 companion matrix; here those matrices are stacked (LAPACK
     runs on each as it would alone), the rest go through _cubic_roots01.
     """
-    import numpy as np
-
     out: list[list[float] | None] = [None] * len(polys)
     full = []
     for i, (c3, c2, c1, c0) in enumerate(polys):
@@ -317,6 +338,133 @@ def crossings(curve: Any, line: Line) -> tuple[Point, ...]:
     return tuple(found)
 
 
+def _rows(values: Sequence[Any], n: int) -> np.ndarray:
+    """Coordinates (a float, or one per set of givens) as rows of an array of shape (len(values), n)."""
+    out = np.empty((len(values), n))
+    for k, v in enumerate(values):
+        out[k] = v
+    return out
+
+
+def crossings_of_sweeps(curve: Any, line: Line, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`crossings` for every set of givens of a sweep of *n* sets at once.
+
+    Every place a crossing can be (each vertex and each segment of a
+    polyline, three roots of each Bézier segment) is a row, in the curve's
+    order: the x and y arrays of shape (rows, n), and where each set has a
+    crossing there (a shared vertex counted once, as :func:`crossings` does).
+    The same arithmetic in the same order as the scalar function, on arrays.
+    """
+    (px, py), (qx, qy) = line
+    dx, dy = qx - px, qy - py
+    norm = np.hypot(dx, dy)
+    nx, ny = -dy / norm, dx / norm
+    if isinstance(curve, BezierCurve):
+        xs, ys, found = _bezier_crossings(curve, px, py, nx, ny, n)
+    else:
+        pts = curve.curve_points()
+        vx, vy = _rows([p[0] for p in pts], n), _rows([p[1] for p in pts], n)
+        side = (vx - px) * nx + (vy - py) * ny
+        sa, sb = side[:-1], side[1:]
+        cut = ((sa < 0.0) & (0.0 < sb)) | ((sb < 0.0) & (0.0 < sa))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = np.where(cut, sa / np.where(cut, sa - sb, 1.0), 0.0)
+        cx, cy = vx[:-1] + t * (vx[1:] - vx[:-1]), vy[:-1] + t * (vy[1:] - vy[:-1])
+        # per segment: its first vertex when on the line, then the cut inside it; the last vertex at the end
+        rows = 2 * (len(pts) - 1) + 1
+        xs, ys, found = np.empty((rows, n)), np.empty((rows, n)), np.empty((rows, n), dtype=bool)
+        xs[0:-1:2], ys[0:-1:2], found[0:-1:2] = vx[:-1], vy[:-1], sa == 0.0
+        xs[1::2], ys[1::2], found[1::2] = cx, cy, cut
+        xs[-1], ys[-1], found[-1] = vx[-1], vy[-1], side[-1] == 0.0
+    return xs, ys, _first_of_repeats(xs, ys, found)
+
+
+def _first_of_repeats(xs: np.ndarray, ys: np.ndarray, found: np.ndarray) -> np.ndarray:
+    """*found* without a crossing that repeats the one found before it (crossings' ``add``), set by set."""
+    rows = np.arange(xs.shape[0])[:, None]
+    while True:
+        last = np.maximum.accumulate(np.where(found, rows, -1), axis=0)
+        before = np.vstack([np.full((1, xs.shape[1]), -1), last[:-1]])
+        at = np.maximum(before, 0)
+        bx, by = np.take_along_axis(xs, at, 0), np.take_along_axis(ys, at, 0)
+        with np.errstate(invalid="ignore"):
+            near = np.hypot(bx - xs, by - ys) <= 1e-12 * np.maximum(1.0, np.maximum(np.abs(xs), np.abs(ys)))
+        repeat = found & (before >= 0) & near
+        if not repeat.any():
+            return found
+        found = found & ~repeat
+
+
+def _bezier_crossings(curve: "BezierCurve", px, py, nx, ny, n: int):
+    """The Bézier part of :func:`crossings_of_sweeps`: three root rows per segment."""
+    segs = curve.segments()
+    k = len(segs)
+    cx = _rows([p[0] for seg in segs for p in seg], n).reshape(k, 4, n)
+    cy = _rows([p[1] for seg in segs for p in seg], n).reshape(k, 4, n)
+    side = (cx - px) * nx + (cy - py) * ny
+    s0, s1, s2, s3 = side[:, 0], side[:, 1], side[:, 2], side[:, 3]
+    margin = 1e-9 * np.maximum(1.0, np.maximum(np.abs(s0), np.abs(s3)))
+    reach = ~((side.min(axis=1) > margin) | (side.max(axis=1) < -margin))  # the hull reaches the line
+    c3 = -s0 + 3 * s1 - 3 * s2 + s3
+    c2 = 3 * s0 - 6 * s1 + 3 * s2
+    c1 = -3 * s0 + 3 * s1
+    roots = np.full((k, 3, n), np.inf)
+    seg_i, set_i = np.nonzero(reach)
+    if seg_i.size:
+        polys = np.stack([c3[seg_i, set_i], c2[seg_i, set_i], c1[seg_i, set_i], s0[seg_i, set_i]], axis=1)
+        roots[seg_i, :, set_i] = _cubic_roots01_rows(polys)
+    t = np.where(np.isfinite(roots), roots, 0.0)
+    s = 1.0 - t
+    w0, w1, w2, w3 = s * s * s, 3.0 * s * s * t, 3.0 * s * t * t, t * t * t
+    xs = w0 * cx[:, None, 0] + w1 * cx[:, None, 1] + w2 * cx[:, None, 2] + w3 * cx[:, None, 3]
+    ys = w0 * cy[:, None, 0] + w1 * cy[:, None, 1] + w2 * cy[:, None, 2] + w3 * cy[:, None, 3]
+    return xs.reshape(3 * k, n), ys.reshape(3 * k, n), np.isfinite(roots).reshape(3 * k, n)
+
+
+def _cubic_roots01_rows(polys: np.ndarray) -> np.ndarray:
+    """:func:`_cubic_roots01` of each row (c3, c2, c1, c0): its roots in [0, 1], ascending, padded with inf.
+
+    As the scalar function does it, row by row, but on arrays: the leading
+    coefficients negligible beside the others are dropped, np.roots' companion
+    matrices of what is left go through one eigvals call per degree (its
+    trailing zero coefficients are roots at 0), and every root is polished by
+    the same Newton steps on the whole cubic.
+    """
+    rows = polys.shape[0]
+    size = np.abs(polys)
+    lead = np.zeros(rows, dtype=int)  # the first coefficient kept
+    for j in range(4):
+        big = np.maximum(1.0, size[:, j:].max(axis=1))
+        lead[(lead == j) & (size[:, j] <= 1e-15 * big)] = j + 1
+    nonzero = polys != 0.0
+    last = np.where(nonzero[:, ::-1].any(axis=1), 3 - np.argmax(nonzero[:, ::-1], axis=1), -1)  # last nonzero
+    roots = np.full((rows, 3), np.nan, dtype=complex)
+    for first in range(3):
+        for end in range(first, 4):
+            at = np.flatnonzero((lead == first) & (last == end))
+            if not at.size:
+                continue
+            degree = end - first  # np.roots: the companion of the kept coefficients, and 3 - end roots at 0
+            if degree:
+                comp = np.zeros((at.size, degree, degree))
+                comp[:, 0, :] = -polys[at, first + 1:end + 1] / polys[at, first:first + 1]
+                for k in range(1, degree):
+                    comp[:, k, k - 1] = 1.0
+                roots[at, :degree] = np.linalg.eigvals(comp)
+            roots[at, degree:degree + 3 - end] = 0.0
+    real = np.abs(roots.imag) <= 1e-7  # NaN (no root there) is not
+    t = np.where(real, roots.real, 0.0)
+    a3, a2, a1, a0 = (polys[:, j:j + 1] for j in range(4))
+    active = real.copy()
+    for _ in range(3):  # _polished01's Newton steps, each root stopping where the derivative vanishes
+        f = ((a3 * t + a2) * t + a1) * t + a0
+        df = (3 * a3 * t + 2 * a2) * t + a1
+        active &= df != 0.0
+        t = np.where(active, t - f / np.where(df == 0.0, 1.0, df), t)
+    keep = real & (t >= -1e-12) & (t <= 1.0 + 1e-12)
+    return np.sort(np.where(keep, np.clip(t, 0.0, 1.0), np.inf), axis=1)
+
+
 # --------------------------------------------------------------------------
 # The operations that draw curves (entries of the op table, construct.kernel.ops).
 # Each takes (args, params, givens, refs, xp) and returns its outputs.
@@ -339,6 +487,8 @@ def french_curve_op(args, params, givens, refs, xp):
     there with their own one-sided slopes, as the draftsman stops the curve at a
     kink (a dead centre of a crank in a summed tangential diagram).
     """
+    if xp is not SCALAR:
+        return (_french_curve_sweep(args, params, xp.n),)
     axis = args[0]
     n = int(params["points"])
     pts = list(args[1:1 + n])
@@ -367,6 +517,70 @@ def french_curve_op(args, params, givens, refs, xp):
             out += [plane(pu[j] + third, pv[j] + slopes[j] * third),
                     plane(pu[j + 1] - third, pv[j + 1] - slopes[j + 1] * third), rows[lo + j + 1][3]]
     return (BezierCurve(out),)
+
+
+def _french_curve_sweep(args, params, sets: int) -> "BezierCurve":
+    """french_curve_op for every set of a sweep at once: the same curve, set by set, on arrays.
+
+    The points are sorted along the axis in each set on its own (their order may change with the givens);
+    a corner lays the curve anew wherever its point comes in that set's order.
+    """
+    axis = args[0]
+    m = int(params["points"])
+    pts = list(args[1:1 + m])
+    tangent_at = [int(i) for i in params["tangent_at"]]
+    corners = {int(i) for i in params.get("corners", ())}
+    ux, uy, nx, ny = frame_of(axis)
+    px, py = _rows([p.x for p in pts], sets), _rows([p.y for p in pts], sets)
+    order = np.argsort(px * ux + py * uy, axis=0, kind="stable")  # by abscissa, then by index: as sorted() does
+    px, py = np.take_along_axis(px, order, 0), np.take_along_axis(py, order, 0)
+    u, v = px * ux + py * uy, px * nx + py * ny
+    scale = np.maximum(np.abs(u).max(axis=0), np.abs(v).max(axis=0))
+    scale = np.where(scale == 0.0, 1.0, scale)
+    h = u[1:] - u[:-1]
+    close = (h <= 1e-12 * scale).any(axis=0)
+    if close.any():
+        raise GeometryError("two points of the curve share an abscissa; a French curve cannot pass both"
+                            + sets_where(close))
+    d = (v[1:] - v[:-1]) / h
+    # each set's slope at each sorted position: the tangent's where its point has one, else Bessel's, one-sided
+    # where a piece starts or ends (the first and last points, and the corners)
+    given = np.full((m, sets), np.nan)
+    for i, t in zip(tangent_at, args[1 + m:]):
+        du = (t.q.x - t.p.x) * ux + (t.q.y - t.p.y) * uy
+        dv = (t.q.x - t.p.x) * nx + (t.q.y - t.p.y) * ny
+        steep = np.abs(du) <= 1e-12 * np.hypot(du, dv)
+        if np.any(steep):
+            raise GeometryError("a tangent of the curve is perpendicular to the axis" + sets_where(
+                np.broadcast_to(steep, (sets,))))
+        given[i] = dv / du
+    given = np.take_along_axis(given, order, 0)
+    cut = np.isin(order, list(corners)) if corners else np.zeros((m, sets), dtype=bool)
+    cut[0] = cut[-1] = True  # where a piece starts or ends
+    start = np.empty((m - 1, sets))  # the slope at the first point of each segment, within its piece
+    end = np.empty((m - 1, sets))  # and at its last point
+    alone = cut[:-1] & cut[1:]  # a piece of one segment
+    with np.errstate(divide="ignore", invalid="ignore"):
+        if m > 2:
+            # segment j from position j to j + 1; a piece's last segment has no next one, its first no previous
+            # one: there the one-sided slope is not needed (the piece is that segment alone: d)
+            first = d[:-1] + (d[:-1] - d[1:]) * h[:-1] / (h[:-1] + h[1:])  # at a piece's start, j = 0 .. m-3
+            last = d[1:] + (d[1:] - d[:-1]) * h[1:] / (h[1:] + h[:-1])  # at a piece's end, j = 1 .. m-2
+            inner = (h[1:] * d[:-1] + h[:-1] * d[1:]) / (h[:-1] + h[1:])  # Bessel's, at positions 1 .. m-2
+            start[:] = np.where(cut[:-1], np.vstack([first, d[-1:]]), np.vstack([d[:1], inner]))
+            end[:] = np.where(cut[1:], np.vstack([d[:1], last]), np.vstack([inner, d[-1:]]))
+        start = np.where(alone, d, start)
+        end = np.where(alone, d, end)
+    start = np.where(np.isnan(given[:-1]), start, given[:-1])
+    end = np.where(np.isnan(given[1:]), end, given[1:])
+    third = h / 3.0
+    c1u, c1v = u[:-1] + third, v[:-1] + start * third
+    c2u, c2v = u[1:] - third, v[1:] - end * third
+    out = [raw_point(px[0], py[0])]
+    for j in range(m - 1):
+        out += [Point(c1u[j] * ux + c1v[j] * nx, c1u[j] * uy + c1v[j] * ny),
+                Point(c2u[j] * ux + c2v[j] * nx, c2u[j] * uy + c2v[j] * ny), raw_point(px[j + 1], py[j + 1])]
+    return BezierCurve(out)
 
 
 def _slopes(u: list[float], v: list[float], index: list[int], tangents: dict, ux: float, uy: float, nx: float,

@@ -52,6 +52,7 @@ __all__ = [
     "intersect_circles",
     "distance",
     "is_sweep",
+    "sets_where",
     "take",
     "stack",
     "points",
@@ -464,7 +465,12 @@ def _describe(obj: Any) -> str:
     return repr(obj)
 
 
-def _where_bad(bad: Any) -> str:
+def sets_where(bad: Any) -> str:
+    """Which sets of givens of a sweep a failure happened for, as an error message adds it ("" for a replay).
+
+    >>> sets_where(np.array([False, True, True]))
+    ' (for 2 of 3 sets of givens, first at index 1)'
+    """
     if isinstance(bad, np.ndarray):
         idx = np.flatnonzero(bad)
         return f" (for {idx.size} of {bad.size} sets of givens, first at index {idx[0]})"
@@ -483,7 +489,7 @@ def line_line(l1: Line, l2: Line, xp: Any = SCALAR) -> Point:
     den = d1x * d2y - d1y * d2x
     bad = xp.abs(den) <= TANGENCY_TOLERANCE * xp.hypot(d1x, d1y) * xp.hypot(d2x, d2y)
     if xp.any(bad):
-        raise NoIntersection(f"{_describe(l1)} and {_describe(l2)} are parallel{_where_bad(bad)}")
+        raise NoIntersection(f"{_describe(l1)} and {_describe(l2)} are parallel{sets_where(bad)}")
     t = ((u.x - p.x) * d2y - (u.y - p.y) * d2x) / den
     return raw_point(p.x + t * d1x, p.y + t * d1y)
 
@@ -505,7 +511,7 @@ def line_circle(line: Line, circle: Circle, xp: Any = SCALAR) -> tuple[Point, Po
     tol = TANGENCY_TOLERANCE * r
     bad = gap < -tol
     if xp.any(bad):
-        raise NoIntersection(f"{_describe(line)} and {_describe(circle)} do not meet{_where_bad(bad)}")
+        raise NoIntersection(f"{_describe(line)} and {_describe(circle)} do not meet{sets_where(bad)}")
     # (r - d)(r + d) rather than r^2 - d^2: no cancellation when nearly tangent.
     h = xp.where(gap <= tol, 0.0, xp.sqrt(xp.maximum(gap, 0.0) * (r + delta)))
     return raw_point(fx - h * ux, fy - h * uy), raw_point(fx + h * ux, fy + h * uy)
@@ -572,7 +578,7 @@ def circle_circle(c1: Circle, c2: Circle, xp: Any = SCALAR) -> tuple[Point, Poin
     inner = d - xp.abs(r1 - r2)  # > 0 when neither lies inside the other
     bad = concentric | (outer < -tol) | (inner < -tol)
     if xp.any(bad):
-        raise NoIntersection(f"{_describe(c1)} and {_describe(c2)} do not meet{_where_bad(bad)}")
+        raise NoIntersection(f"{_describe(c1)} and {_describe(c2)} do not meet{sets_where(bad)}")
     ux, uy = dx / d, dy / d
     # Touching from outside: the point r1 along the centre line; from inside: r1 towards the smaller.
     a_touch_inner = xp.where(r1 >= r2, r1, -r1)

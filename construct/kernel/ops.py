@@ -11,9 +11,12 @@ objects, the step's parameters, the givens, the objects its branch rule
 names (``()`` without a rule) and the array namespace -- :data:`SCALAR`
 for plain floats, :data:`ARRAY` for a sweep over many givens at once.  It
 returns the tuple of its outputs and computes only what its instrument does.
-Operations that iterate (dividers by trial, the marked ruler) or draw curves
-through points are marked ``vector=False``: in a sweep they run once per set
-of givens and their results are stacked.
+Every operation of the table runs on arrays in a sweep -- those that iterate
+(dividers by trial, the marked ruler), draw curves through points, cross them
+or measure areas by array forms of their own beside the scalar ones.  An op
+marked ``vector=False`` (none of the table's: one a caller adds) runs once per
+set of givens instead (:func:`elementwise`), and the sweep's replay names it
+(``Replay.elementwise``), so that a slow sweep says why.
 
 >>> sorted(OPS)[:6]
 ['area_between', 'circle_radius', 'circle_segment', 'circle_through', 'french_curve', 'given_length']
@@ -36,14 +39,17 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping
 
+import numpy as np
+
 from .areas import Area, area_between_op, planimeter_height_op, planimeter_op
 from .closed_curves import closed_french_curve_op
-from .curves import BezierCurve, Polyline, crossings, french_curve_op, parabola_envelope_op, polyline_op
-from .errors import GeometryError, NoIntersection
+from .curves import (BezierCurve, Polyline, crossings, crossings_of_sweeps, french_curve_op, parabola_envelope_op,
+                     polyline_op)
+from .errors import DegenerateObject, GeometryError, NoIntersection
 from .geometry import (SCALAR, Circle, Length, Line, Point, Sweep, raw_circle, raw_point, circle_circle, line_circle,
-                       line_line, stack, take)
+                       line_line, sets_where, stack, take)
 from .numeric import is_finite, shown
-from .rules import choose, choose_among
+from .rules import choose, choose_among, choose_among_sets
 from .trial import neusis_archimedes_op, trial_chord_op
 
 __all__ = ["MAX_PARTS", "Op", "OPS", "KINDS", "OBJECT_KINDS", "ACCEPTS", "PARAM_KINDS", "kind_of", "elementwise"]
@@ -234,21 +240,16 @@ def _line(args, params, givens, refs, xp):
     return (Line(args[0], args[1]),)
 
 
-def _radius(r: Any, xp: Any, what: Any) -> Any:
-    """*r* when positive everywhere; else a DegenerateObject (its message made only then: reprs cost)."""
-    if xp is SCALAR:
-        if r > 0.0:
-            return r
-    elif not xp.any(~(r > 0.0)):
-        return r
-    from .errors import DegenerateObject
-
-    raise DegenerateObject(f"{what()} has no radius (its two points coincide)")
+def _no_radius(what: str) -> DegenerateObject:
+    return DegenerateObject(f"{what} has no radius (its two points coincide)")
 
 
 def _circle_through(args, params, givens, refs, xp):
     c, p = args
-    return (raw_circle(c, _radius(xp.hypot(p.x - c.x, p.y - c.y), xp, lambda: f"circle about {c!r} through {p!r}")),)
+    r = xp.hypot(p.x - c.x, p.y - c.y)
+    if not (r > 0.0 if xp is SCALAR else np.all(r > 0.0)):  # written out: a call per circle is a tenth of it
+        raise _no_radius(f"circle about {c!r} through {p!r}")
+    return (raw_circle(c, r),)
 
 
 def _circle_radius(args, params, givens, refs, xp):
@@ -258,7 +259,10 @@ def _circle_radius(args, params, givens, refs, xp):
 
 def _circle_segment(args, params, givens, refs, xp):
     c, a, b = args
-    return (raw_circle(c, _radius(xp.hypot(b.x - a.x, b.y - a.y), xp, lambda: f"compass set to {a!r}{b!r}")),)
+    r = xp.hypot(b.x - a.x, b.y - a.y)
+    if not (r > 0.0 if xp is SCALAR else np.all(r > 0.0)):
+        raise _no_radius(f"compass set to {a!r}{b!r}")
+    return (raw_circle(c, r),)
 
 
 def _length_of(args, params, givens, refs, xp):
@@ -266,17 +270,17 @@ def _length_of(args, params, givens, refs, xp):
     return (Length(xp.hypot(b.x - a.x, b.y - a.y)),)
 
 
-def _swap(fn):
-    return lambda a, b, xp: fn(b, a, xp)
+def _circle_line(circle, line, xp):
+    return line_circle(line, circle, xp)
+
+
+def _line_line(a, b, xp):
+    return (line_line(a, b, xp),)
 
 
 #: Which core meets two curves of these kinds (the order of the points follows the first-named curve).
-_MEET = {
-    (Circle, Circle): circle_circle,
-    (Line, Circle): line_circle,
-    (Circle, Line): _swap(line_circle),
-    (Line, Line): lambda a, b, xp: (line_line(a, b, xp),),
-}
+_MEET = {(Circle, Circle): circle_circle, (Line, Circle): line_circle, (Circle, Line): _circle_line,
+         (Line, Line): _line_line}
 
 
 def _intersect(args, params, givens, refs, xp):
@@ -285,7 +289,7 @@ def _intersect(args, params, givens, refs, xp):
     core = _MEET.get((type(c1), type(c2)))
     if core is None:  # a drawn curve: any number of crossings
         if xp is not SCALAR:
-            return elementwise(_intersect)(args, params, givens, refs, xp)
+            return _cross_curve_sweep(c1, c2, rule, refs, bool(params.get("both")), xp.n)
         return _cross_curve(c1, c2, rule, refs, bool(params.get("both")))
     pts = core(c1, c2, xp)
     if len(pts) == 1:
@@ -317,6 +321,26 @@ def _cross_curve(c1, c2, rule, refs, both):
     return (chosen,)
 
 
+def _cross_curve_sweep(c1, c2, rule, refs, both, n):
+    """_cross_curve for every set of a sweep at once (crossings_of_sweeps, choose_among_sets)."""
+    curve, line = (c1, c2) if isinstance(c2, Line) else (c2, c1)
+    if not isinstance(line, Line):
+        raise GeometryError("a drawn curve can only be crossed with a straight line")
+    xs, ys, found = crossings_of_sweeps(curve, line, n)
+    none = ~found.any(axis=0)
+    if none.any():
+        raise NoIntersection(f"{curve!r} and the line do not meet{sets_where(none)}")
+    sets = np.arange(n)
+    row = choose_among_sets(xs, ys, found, rule, refs)
+    chosen = raw_point(xs[row, sets], ys[row, sets])
+    if not both:
+        return (chosen,)
+    rest = found.copy()
+    rest[row, sets] = False
+    other = np.where(rest.any(axis=0), choose_among_sets(xs, ys, rest, rule, refs), row)
+    return (chosen, raw_point(xs[other, sets], ys[other, sets]))
+
+
 def _pick(args, params, givens, refs, xp):
     """Of two constructed points, the one the rule names (the lower of two curves' points, say)."""
     chosen, _ = choose(tuple(args), params["rule"], refs, xp)
@@ -335,7 +359,8 @@ def _step_off(args, params, givens, refs, xp):
 
 
 def elementwise(fn: Callable[..., tuple]) -> Callable[..., tuple]:
-    """Run *fn* once per set of givens of a sweep (``xp.n`` of them) and stack the results."""
+    """Run *fn* once per set of givens of a sweep (``xp.n`` of them) and stack the results: how a sweep runs
+    an op without an array form (``vector=False``; every op of the table has one)."""
 
     def run(args, params, givens, refs, xp):
         n = xp.n
@@ -372,25 +397,24 @@ OPS: dict[str, Op] = {op.name: op for op in (
        params={"rule": "rule", "both?": "flag"}, doc="dividers stepped along a curve"),
     Op("pick", _pick, ("point", "point"), rule=True, params={"rule": "rule"},
        doc="of two constructed points, the one a rule names (an envelope of two curves, point by point)"),
-    Op("trial_chord", trial_chord_op, ("circle", "point", "point"), vector=False, outputs=("length",),
+    Op("trial_chord", trial_chord_op, ("circle", "point", "point"), outputs=("length",),
        params={"parts": "parts", "tolerance": "positive"},
        doc="dividers set by trial to 1/n of an arc"),
-    Op("neusis_archimedes", neusis_archimedes_op, ("point", "point", "point", "circle"), vector=False,
-       outputs=("point", "point"),
+    Op("neusis_archimedes", neusis_archimedes_op, ("point", "point", "point", "circle"), outputs=("point", "point"),
        doc="Archimedes' marked ruler slid into place"),
-    Op("french_curve", french_curve_op, ("line", "point", "any*"), vector=False, outputs=("bezier",),
+    Op("french_curve", french_curve_op, ("line", "point", "any*"), outputs=("bezier",),
        params={"points": "count", "tangent_at": "indices", "corners?": "indices"},
        doc="a smooth curve through points along tangents (the tangent lines follow the points), laid anew at corners"),
-    Op("parabola_envelope", parabola_envelope_op, ("point", "point", "point"), vector=False, outputs=("bezier",),
+    Op("parabola_envelope", parabola_envelope_op, ("point", "point", "point"), outputs=("bezier",),
        doc="the parabola enveloped by the joins of equal divisions of ED and DF"),
-    Op("polyline", polyline_op, ("point", "point", "point*"), vector=False, outputs=("polyline",),
+    Op("polyline", polyline_op, ("point", "point", "point*"), outputs=("polyline",),
        params={"closed?": "flag"}, doc="points joined by the straightedge"),
-    Op("smooth_loop", closed_french_curve_op, ("point", "point", "point*"), vector=False, outputs=("bezier",),
+    Op("smooth_loop", closed_french_curve_op, ("point", "point", "point*"), outputs=("bezier",),
        params={"points?": "count"}, doc="a closed French curve through points in order"),
-    Op("area_between", area_between_op, ("graph", "graph", "point", "point"), vector=False, outputs=("area",),
+    Op("area_between", area_between_op, ("graph", "graph", "point", "point"), outputs=("area",),
        params={"hatch_deg?": "number|null"},
        doc="the region between two graphs between two abscissae"),
-    Op("planimeter", planimeter_op, ("area",), vector=False, outputs=("number",), doc="a planimeter's reading of an area"),
-    Op("planimeter_height", planimeter_height_op, ("area", "point", "point"), vector=False, outputs=("length",),
+    Op("planimeter", planimeter_op, ("area",), outputs=("number",), doc="a planimeter's reading of an area"),
+    Op("planimeter_height", planimeter_height_op, ("area", "point", "point"), outputs=("length",),
        doc="the mean height of an area over a base"),
 )}

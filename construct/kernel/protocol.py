@@ -27,6 +27,7 @@ import functools
 import json
 import math
 import numbers
+import operator
 import os
 from dataclasses import dataclass
 from types import MappingProxyType
@@ -229,10 +230,30 @@ class CompiledStep(NamedTuple):
 
 
 class Program(NamedTuple):
-    """A protocol compiled for replay: one entry per step, and the object name of every list slot."""
+    """A protocol compiled for replay: one entry per step, the object name of every list slot, and the loop's
+    own form of each entry (:func:`_loop_entry`)."""
 
     entries: tuple[CompiledStep, ...]
     names: tuple[str, ...]
+    loop: tuple[tuple, ...]
+
+
+def _loop_entry(entry: CompiledStep) -> tuple:
+    """What the scalar replay loop needs of an entry, each part ready to run in C: (function, inputs of the
+    environment, first and end slot of the outputs, parameters, points of the rule).
+
+    Inputs and rule points are gathered by ``operator.itemgetter`` -- a tuple of several slots, a slice for one
+    or none (a list) -- instead of a comprehension per step (a call of its own in this Python); the outputs are
+    consecutive slots (made so by Protocol.program), set by one slice assignment.
+    """
+    def getter(slots: tuple) -> Callable[[list], Any]:
+        if len(slots) > 1:
+            return operator.itemgetter(*slots)
+        first = slots[0] if slots else 0
+        return operator.itemgetter(slice(first, first + len(slots)))
+
+    first, end = (entry.outs[0], entry.outs[-1] + 1) if entry.outs else (0, 0)
+    return (entry.fn, getter(entry.ins), first, end, entry.params, getter(entry.refs))
 
 
 def compile_step(step: Step, slot: Mapping[str, Any] | None = None) -> CompiledStep:
@@ -425,14 +446,17 @@ class TakenSet(Mapping[str, Any]):
 class Replay(Mapping[str, Any]):
     """The objects a replay made, by name (arrays of coordinates in a sweep)."""
 
-    __slots__ = ("protocol", "_objects", "_givens", "size")
+    __slots__ = ("protocol", "_objects", "_givens", "size", "elementwise")
 
-    def __init__(self, protocol: "Protocol", objects: dict[str, Any], givens: Mapping[str, Any], size: int = 0):
+    def __init__(self, protocol: "Protocol", objects: dict[str, Any], givens: Mapping[str, Any], size: int = 0,
+                 elementwise: tuple[str, ...] = ()):
         self.protocol = protocol
         self._objects = objects
         self._givens = dict(givens)
         #: 0 for a plain replay, else the number of sets of givens swept.
         self.size = size
+        #: The ops a sweep ran once per set of givens, having no array form (none of the op table's).
+        self.elementwise = elementwise
 
     @property
     def givens(self) -> Mapping[str, Any]:
@@ -464,7 +488,7 @@ class Replay(Mapping[str, Any]):
         return len(self._objects)
 
     def __reduce__(self):
-        return (Replay, (self.protocol, self._objects, self._givens, self.size))
+        return (Replay, (self.protocol, self._objects, self._givens, self.size, self.elementwise))
 
     def __repr__(self) -> str:
         kind = f"sweep of {self.size}" if self.size else "replay"
@@ -550,7 +574,7 @@ class Protocol:
                 slot[name] = len(slot)
                 outs.append(slot[name])
             entries.append(entry._replace(outs=tuple(outs)))
-        return Program(tuple(entries), tuple(slot))
+        return Program(tuple(entries), tuple(slot), tuple(_loop_entry(e) for e in entries))
 
     def replay(self, givens: Mapping[str, Any] | None = None, *, upto: int | None = None) -> Replay:
         """Evaluate the steps (all, or 1..upto) with *givens*; return the objects by name.
@@ -563,26 +587,28 @@ class Protocol:
         if upto is not None and (isinstance(upto, bool) or not isinstance(upto, numbers.Integral)):
             raise InvalidParameter(f"upto is a step number, got {_shown(upto)}")
         givens, xp = sweep_givens(dict(self.params.get("givens", {}) if givens is None else givens))
-        entries, names = self.program
+        entries, names, loop = self.program
         env: list[Any] = [None] * len(names)
         stop = len(entries) if upto is None else max(0, min(upto, len(entries)))
         if xp is SCALAR:
-            # run_step written out: the 18-part crank replays 365 steps in under a millisecond, and a call
-            # per step would be a tenth of that.  The same op functions, the same failure mapping.
-            i = 0
+            # run_step written out, on the loop's own form of the entries: the 18-part crank replays 365 steps in
+            # half a millisecond, and a call per step would be a tenth of that.  The same op functions, the same
+            # failure mapping.
             try:
-                for i in range(stop):
-                    fn, ins, outs, params, refs, _, _ = entries[i]
-                    values = fn([env[k] for k in ins], params, givens, [env[k] for k in refs] if refs else (), SCALAR)
-                    for k, v in zip(outs, values):
-                        env[k] = v
+                for fn, ins, first, end, params, refs in loop[:stop] if upto is not None else loop:
+                    env[first:end] = fn(ins(env), params, givens, refs(env), SCALAR)
             except _STEP_FAILURES as exc:
-                raise step_failure(entries[i].step, exc) from exc
-        else:
-            for i in range(stop):
-                run_step(entries[i], env, givens, xp)
+                # the failing step is the first whose outputs are not made (every step makes at least one)
+                failed = next(e for e in entries if env[e.outs[0]] is None)
+                raise step_failure(failed.step, exc) from exc
+            if upto is None or stop == len(entries):
+                return Replay(self, dict(zip(names, env)), givens)
+            return Replay(self, {names[k]: env[k] for k in range(len(names)) if env[k] is not None}, givens)
+        for i in range(stop):
+            run_step(entries[i], env, givens, xp)
         objects = {names[k]: env[k] for k in range(len(names)) if env[k] is not None}
-        return Replay(self, objects, givens, getattr(xp, "n", 0))
+        by_element = tuple(dict.fromkeys(e.step.op for e in entries[:stop] if not e.op.vector))
+        return Replay(self, objects, givens, xp.n, by_element)
 
     # -- inspection ---------------------------------------------------------
     def instrument_counts(self) -> dict[str, int]:

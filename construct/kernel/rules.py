@@ -28,10 +28,11 @@ from __future__ import annotations
 from typing import Any, Sequence
 
 from .errors import RuleError
-from .geometry import raw_point
+from .geometry import SCALAR, raw_point
 from .numeric import is_finite, shown
 
-__all__ = ["Rule", "nearer", "farther", "left_of", "right_of", "toward", "only", "as_rule", "RULE_ARITY", "choose"]
+__all__ = ["Rule", "nearer", "farther", "left_of", "right_of", "toward", "only", "as_rule", "RULE_ARITY", "choose",
+           "choose_among", "choose_among_sets"]
 
 #: How many object names each rule refers to.
 RULE_ARITY = {"nearer": 1, "farther": 1, "left": 2, "right": 2, "toward": 2, "only": 0}
@@ -194,6 +195,30 @@ def as_rule(rule: Any) -> Rule:
     return Rule(name, tuple(rule[1:]))
 
 
+def rule_key(rule: Rule, refs: Sequence[Any], x: Any, y: Any) -> tuple[Any, bool]:
+    """What *rule* ranks a point (x, y) by, and whether the smallest wins: the squared distance from the point it
+    names (nearer: the smallest), the signed area to the left of its line (left: the largest), the distance along
+    its direction (toward: the largest).  *x*, *y*: numbers or arrays.
+
+    >>> from .geometry import Point
+    >>> rule_key(nearer("Q"), (Point(0.0, 3.0),), 4.0, 0.0), rule_key(left_of("A", "B"), (Point(0, 0), Point(1, 0)), 2.0, -1.0)
+    ((25.0, True), (-1.0, False))
+    """
+    name = rule.name
+    if name in ("nearer", "farther"):
+        (r,) = refs
+        return (x - r.x) ** 2 + (y - r.y) ** 2, name == "nearer"
+    if name in ("left", "right"):
+        p, q = refs
+        return (q.x - p.x) * (y - p.y) - (q.y - p.y) * (x - p.x), name == "right"
+    if rule.direction is None:
+        p, q = refs
+        dx, dy = q.x - p.x, q.y - p.y
+    else:
+        dx, dy = rule.direction
+    return x * dx + y * dy, False
+
+
 def choose(points: Sequence[Any], rule: Rule, refs: Sequence[Any], xp: Any) -> tuple[Any, Any]:
     """Pick one of two points by *rule*; return (chosen, other).  Vectorised with ``xp.where``.
 
@@ -210,27 +235,12 @@ def choose(points: Sequence[Any], rule: Rule, refs: Sequence[Any], xp: Any) -> t
     if len(points) == 1:
         return points[0], None
     a, b = points
-    name = rule.name
-    if name in ("nearer", "farther"):
-        (r,) = refs
-        da = (a.x - r.x) ** 2 + (a.y - r.y) ** 2
-        db = (b.x - r.x) ** 2 + (b.y - r.y) ** 2
-        first = da <= db if name == "nearer" else da >= db
-    elif name in ("left", "right"):
-        p, q = refs
-        sa = (q.x - p.x) * (a.y - p.y) - (q.y - p.y) * (a.x - p.x)
-        sb = (q.x - p.x) * (b.y - p.y) - (q.y - p.y) * (b.x - p.x)
-        first = sa >= sb if name == "left" else sa <= sb
-    elif name == "toward":
-        if rule.direction is None:
-            p, q = refs
-            dx, dy = q.x - p.x, q.y - p.y
-        else:
-            dx, dy = rule.direction
-        first = a.x * dx + a.y * dy >= b.x * dx + b.y * dy
-    else:  # "only": the caller has checked that the two points coincide
+    if rule.name == "only":  # the caller has checked that the two points coincide
         return a, b
-    if xp.name == "scalar":
+    ka, smallest = rule_key(rule, refs, a.x, a.y)
+    kb, _ = rule_key(rule, refs, b.x, b.y)
+    first = ka <= kb if smallest else ka >= kb
+    if xp is SCALAR:
         return (a, b) if first else (b, a)
     w = xp.where
     return raw_point(w(first, a.x, b.x), w(first, a.y, b.y)), raw_point(w(first, b.x, a.x), w(first, b.y, a.y))
@@ -242,22 +252,31 @@ def choose_among(points: Sequence[Any], rule: Rule, refs: Sequence[Any]) -> Any:
         raise ValueError("no points to choose from")
     if len(points) == 1 or rule.name == "only":
         return points[0]
-    name = rule.name
-    if name in ("nearer", "farther"):
-        (r,) = refs
-        key = [(p.x - r.x) ** 2 + (p.y - r.y) ** 2 for p in points]
-        best = min if name == "nearer" else max
-    elif name in ("left", "right"):
-        p0, q0 = refs
-        key = [(q0.x - p0.x) * (p.y - p0.y) - (q0.y - p0.y) * (p.x - p0.x) for p in points]
-        best = max if name == "left" else min
-    else:
-        if rule.direction is None:
-            p0, q0 = refs
-            dx, dy = q0.x - p0.x, q0.y - p0.y
-        else:
-            dx, dy = rule.direction
-        key = [p.x * dx + p.y * dy for p in points]
-        best = max
+    ranked = [rule_key(rule, refs, p.x, p.y) for p in points]
+    key = [k for k, _ in ranked]
+    best = min if ranked[0][1] else max
     target = best(key)
     return points[key.index(target)]
+
+
+def choose_among_sets(xs: Any, ys: Any, found: Any, rule: Rule, refs: Sequence[Any]) -> Any:
+    """:func:`choose_among` for every set of a sweep: the row chosen in each column.
+
+    *xs*, *ys* are the candidates, one row per place a point can be, in the
+    curve's order; *found* where each set has a point there.  The key is
+    choose_among's, and of equal keys the first wins, as there.
+
+    >>> import numpy as np
+    >>> xs, ys = np.array([[0.0, 0.0], [2.0, 2.0]]), np.array([[1.0, 1.0], [1.0, 1.0]])
+    >>> found = np.array([[True, False], [True, True]])
+    >>> choose_among_sets(xs, ys, found, toward(dx=-1.0, dy=0.0), ()).tolist()
+    [0, 1]
+    """
+    import numpy as np
+
+    if rule.name == "only":
+        return np.argmax(found, axis=0)  # the first point found
+    key, smallest = rule_key(rule, refs, xs, ys)
+    if smallest:
+        return np.argmin(np.where(found, key, np.inf), axis=0)
+    return np.argmax(np.where(found, key, -np.inf), axis=0)

@@ -5,15 +5,20 @@ the dividers are opened, stepped round and corrected until they close, as a
 draftsman divides a circle into 7 or 9 parts; the marked ruler is slid until
 its marks sit on a circle and a line.  Each is an entry of the op table
 (:mod:`construct.kernel.ops`) taking ``(args, params, givens, refs, xp)``.
-They iterate, so in a sweep they run once per set of givens.
+They iterate; in a sweep every set of givens iterates at once on arrays, each
+set stopping where its own trial closes (the same rounds, steps and tests as
+the scalar loop, held equal to it set by set in tests/test_sweep.py).
 """
 
 from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from .errors import GeometryError
-from .geometry import Circle, Length, Line, Point, intersect_line_circle
+from .geometry import (ARRAY, SCALAR, Circle, Length, Line, Point, intersect_line_circle, line_circle, raw_point,
+                       sets_where)
 
 __all__ = ["trial_chord_op", "neusis_archimedes_op"]
 
@@ -22,6 +27,8 @@ def trial_chord_op(args, params, givens, refs, xp):
     """Set the dividers by trial so that *parts* steps from start round *circle* close on end."""
     circle, start, end = args
     n = int(params["parts"])
+    if xp is not SCALAR:
+        return (Length(_trial_chord_sweep(circle, start, end, n, float(params["tolerance"]), xp.n)),)
     r = circle.radius
     tol = float(params["tolerance"]) * r
     # First guess, the draftsman's rule of thumb: half as much again as the
@@ -82,6 +89,8 @@ def _step_round(circle: Circle, start: Point, end: Point, opening: float, n: int
 def neusis_archimedes_op(args, params, givens, refs, xp):
     """Archimedes' marked ruler: through b, a line meeting the circle at C and line aO beyond O at D with CD = r."""
     o, a, b, circle = args
+    if xp is not SCALAR:
+        return _neusis_sweep(o, a, b, circle, xp.n)
     r = circle.radius
     ux, uy = (o.x - a.x) / r, (o.y - a.y) / r  # direction from a through O, beyond O
 
@@ -106,3 +115,103 @@ def neusis_archimedes_op(args, params, givens, refs, xp):
             break
     _, d, c = excess(0.5 * (lo + hi))
     return (d, c)
+
+
+# --------------------------------------------------------------------------
+# The same instruments for every set of a sweep at once.
+# --------------------------------------------------------------------------
+
+
+def _sets(v, n: int) -> np.ndarray:
+    return np.broadcast_to(np.asarray(v, dtype=float), (n,))
+
+
+def _trial_chord_sweep(circle: Circle, start: Point, end: Point, n: int, tolerance: float, sets: int) -> np.ndarray:
+    """trial_chord_op's opening for every set: each set's trial runs its own rounds, all sets at once."""
+    ox, oy, r = (_sets(v, sets) for v in (circle.center.x, circle.center.y, circle.radius))
+    sx, sy, ex, ey = (_sets(v, sets) for v in (start.x, start.y, end.x, end.y))
+    tol = tolerance * r
+    opening = 1.5 * np.hypot(ex - sx, ey - sy) / n
+    todo = np.arange(sets)  # the sets whose dividers do not close yet
+    for _ in range(200):
+        at = (ox[todo], oy[todo], r[todo], sx[todo], sy[todo], ex[todo], ey[todo])
+        lx, ly = _step_round_sets(*at, opening[todo], n, todo, sets)
+        gap = np.hypot(ex[todo] - lx, ey[todo] - ly)
+        closed = gap <= tol[todo]
+        short = ((ex[todo] - sx[todo]) * (ly - sy[todo]) - (ey[todo] - sy[todo]) * (lx - sx[todo]) > 0) | closed
+        todo, gap, short = todo[~closed], gap[~closed], short[~closed]
+        if not todo.size:
+            return opening
+        opening[todo] += np.where(short, gap / n, -gap / n)
+        off = ~((0.0 < opening[todo]) & (opening[todo] < 2.0 * r[todo]))
+        if off.any():
+            i = todo[off][0]
+            raise GeometryError(f"dividers by trial diverged (opening {opening[i]:.6g} for radius {r[i]:.6g})"
+                                + _at_sets(todo[off], sets))
+    raise GeometryError(f"dividers by trial did not close to {tol[todo[0]]:.3g} in 200 rounds" + _at_sets(todo, sets))
+
+
+def _at_sets(which: np.ndarray, sets: int) -> str:
+    bad = np.zeros(sets, dtype=bool)
+    bad[which] = True
+    return sets_where(bad)
+
+
+def _step_round_sets(ox, oy, r, sx, sy, ex, ey, opening, n: int, which: np.ndarray, sets: int):
+    """_step_round for the sets *which* at once: where n steps of the dividers land, as arrays."""
+    ex, ey = ex - sx, ey - sy
+    px, py = sx, sy
+    hx, hy = sx, sy
+    for i in range(n):
+        dx, dy = hx - ox, hy - oy
+        d = np.hypot(dx, dy)
+        outer = r + opening - d
+        inner = d - np.abs(r - opening)
+        short = (outer < 0.0) | (inner < 0.0)
+        if short.any():
+            raise GeometryError(f"dividers opening {opening[short][0]:.6g} does not reach round the circle"
+                                + _at_sets(which[short], sets))
+        ux, uy = dx / d, dy / d
+        a = 0.5 * (d + (r - opening) * (r + opening) / d)
+        h = np.sqrt(outer * (r + opening + d) * inner * (d + np.abs(r - opening))) / (2.0 * d)
+        mx, my = ox + a * ux, oy + a * uy
+        ax, ay = mx + h * uy, my - h * ux
+        bx, by = mx - h * uy, my + h * ux
+        if i == 0:
+            first = ex * (ay - sy) - ey * (ax - sx) >= ex * (by - sy) - ey * (bx - sx)
+        else:
+            first = (ax - px) ** 2 + (ay - py) ** 2 >= (bx - px) ** 2 + (by - py) ** 2
+        px, py = hx, hy
+        hx, hy = np.where(first, ax, bx), np.where(first, ay, by)
+    return hx, hy
+
+
+def _neusis_sweep(o: Point, a: Point, b: Point, circle: Circle, sets: int) -> tuple[Point, Point]:
+    """neusis_archimedes_op for every set: the marked ruler slid by bisection in all sets at once."""
+    r = _sets(circle.radius, sets)
+    ux, uy = (o.x - a.x) / r, (o.y - a.y) / r
+
+    def excess(t):
+        d = raw_point(o.x + t * ux, o.y + t * uy)
+        p, q = line_circle(Line(d, b), circle, ARRAY)
+        near = np.hypot(p.x - d.x, p.y - d.y) <= np.hypot(q.x - d.x, q.y - d.y)
+        c = raw_point(np.where(near, p.x, q.x), np.where(near, p.y, q.y))
+        return np.hypot(c.x - d.x, c.y - d.y) - r, d, c
+
+    lo, hi = r * (1.0 + 1e-12), 2.0 * r * (1.0 - 1e-12)
+    f_lo, f_hi = excess(lo)[0], excess(hi)[0]
+    none = f_lo * f_hi > 0
+    if none.any():
+        raise GeometryError("the marked ruler finds no position (arc larger than a semicircle?)" + sets_where(none))
+    sliding = np.ones(sets, dtype=bool)
+    for _ in range(200):  # slide the ruler until the marks sit on circle and line
+        mid = 0.5 * (lo + hi)
+        f_mid = excess(mid)[0]
+        up = sliding & ((f_mid > 0) == (f_lo > 0))
+        lo, f_lo = np.where(up, mid, lo), np.where(up, f_mid, f_lo)
+        hi = np.where(sliding & ~up, mid, hi)
+        sliding &= ~(hi - lo <= 1e-15 * r)
+        if not sliding.any():
+            break
+    _, d, c = excess(0.5 * (lo + hi))
+    return d, c

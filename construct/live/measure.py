@@ -142,7 +142,8 @@ class Measure:
                                        for i, n in self.runs):
             at_once = None
         if at_once is None or not at_once.ok.any():
-            return [self(Figure(protocol, replay.take(i, whole=True), self.construction.check)) for i in range(size)]
+            return [self(Figure(protocol, replay.take(i, whole=True), self.construction.check, self.construction))
+                    for i in range(size)]
         rows = np.hstack([at_once.numbers[i] for i, _ in self.runs])
         width, height = (np.round(v, 2) for v in at_once.size)
         px = at_once.page_px
@@ -158,7 +159,8 @@ class Measure:
         out = []
         for i in range(size):
             if not at_once.ok[i]:
-                out.append(self(Figure(protocol, replay.take(i, whole=True), self.construction.check)))
+                out.append(self(Figure(protocol, replay.take(i, whole=True), self.construction.check,
+                                       self.construction)))
                 continue
             full = (0.0, 0.0, float(width[i]), float(height[i]))
             nums = [0.0, 0.0, float(width[i]), float(height[i])] + rows[i].tolist()

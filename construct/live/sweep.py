@@ -282,7 +282,7 @@ def _checks(construction: Construction, figure: Figure, given: str, grid: np.nda
     """The construction's checks at every value of *grid*, from one sweep (:meth:`Construction.sweep_checks`)."""
     givens = dict(figure.replay.givens)
     swept = construction.rod_ratio_sweep(givens, grid) if given == "rod_ratio" else {**givens, given: grid}
-    sweep = Figure(figure.protocol, figure.protocol.replay(swept), construction.check)
+    sweep = Figure(figure.protocol, figure.protocol.replay(swept), construction.check, construction)
     return [[[c.name, c.measured, c.expected, c.error, c.tolerance, bool(c.ok)] for c in row]
             for row in construction.sweep_checks(sweep)]
 

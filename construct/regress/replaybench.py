@@ -1,17 +1,18 @@
 """The speed benchmark of the kernel: build, replay and sweep the crank construction.
 
-Targets (issue "A kernel that is a library"), printed with a verdict by
+Targets (issues "A kernel that is a library" and 28), printed with a verdict by
 ``construct bench``:
 
-- replaying the 18-part crank with new givens in at most 1 ms;
+- replaying the 18-part crank with new givens in at most 0.5 ms;
 - replay time per step flat (within 2x) from 18 to 3600 parts *for the same
   division method* -- the dividers, which divide any n; their trial step
   (setting the dividers by trial, O(n) by nature) is timed on its own and left
   out of the per-step figure;
 - build time per step flat within 2x over the same cases;
-- a sweep of the 18-part crank over 10,000 rod ratios in at most 100x the time
-  of one scalar replay (that is >= 100x faster than looping), measured in the
-  same run.
+- a sweep of the 18-part crank over 10,000 rod ratios in at most 30x the time
+  of one scalar replay (that is >= 330x faster than looping), measured in the
+  same run, with every op on arrays: an op the sweep ran element by element
+  (``Replay.elementwise``) is named, and the target is then missed.
 
 Timings are the best of several runs; a busy machine shows in them.
 """
@@ -25,7 +26,11 @@ import numpy as np
 
 from ..constructions import get
 
-__all__ = ["run_bench", "sweep_bench", "verdicts", "CASES"]
+__all__ = ["run_bench", "sweep_bench", "verdicts", "CASES", "REPLAY_S", "SWEEP_RATIO", "FLAT"]
+
+#: The targets: one replay of the 18-part crank (seconds), a sweep of 10,000 rod ratios against it, and the spread of
+#: the time per step (replay and build) over the cases of one method.
+REPLAY_S, SWEEP_RATIO, FLAT = 0.5e-3, 30.0, 2.0
 
 #: (parts, method): Dürer's division where it applies, and the dividers for 18 .. 3600 parts.
 CASES = ((18, "durer"), (360, "durer"), (18, "dividers"), (360, "dividers"), (3600, "dividers"))
@@ -88,7 +93,8 @@ def sweep_bench(size: int = 10_000, rod_ratio: float = 5.0) -> dict[str, Any]:
     scalar = _best(lambda: proto.replay(one), 40)
     sweep = _best(lambda: proto.replay(many), 3)
     return {"case": f"crank n=18 sweep over {size} rod ratios", "size": size, "scalar_replay_s": scalar,
-            "sweep_s": sweep, "sweep_over_scalar": sweep / scalar, "speedup_over_loop": scalar * size / sweep}
+            "sweep_s": sweep, "sweep_over_scalar": sweep / scalar, "speedup_over_loop": scalar * size / sweep,
+            "elementwise": list(proto.replay(many).elementwise)}
 
 
 def verdicts(results: list[dict[str, Any]], sweep: dict[str, Any] | None = None) -> list[str]:
@@ -96,10 +102,12 @@ def verdicts(results: list[dict[str, Any]], sweep: dict[str, Any] | None = None)
     # The 1 ms target is about the 18-part crank by Durer's division; `bench --parts N` may not run it.
     first = next((r for r in results if r["parts"] == 18 and r["method"] == "durer"), None)
     if first is not None:
-        ok = first["replay_s"] <= 1e-3
-        out.append(f"target replay n=18 <= 1 ms: {first['replay_s'] * 1e3:.3f} ms -> {'met' if ok else 'MISSED'}")
+        ok = first["replay_s"] <= REPLAY_S
+        out.append(f"target replay n=18 <= {REPLAY_S * 1e3:g} ms: {first['replay_s'] * 1e3:.3f} ms -> "
+                   f"{'met' if ok else 'MISSED'}")
     else:
-        out.append("target replay n=18 <= 1 ms: not measured (the 18-part crank by Dürer's division was not run)")
+        out.append(f"target replay n=18 <= {REPLAY_S * 1e3:g} ms: not measured (the 18-part crank by Dürer's division "
+                   f"was not run)")
     for method in sorted({r["method"] for r in results}):
         same = [r for r in results if r["method"] == method]
         if len(same) < 2:
@@ -108,14 +116,17 @@ def verdicts(results: list[dict[str, Any]], sweep: dict[str, Any] | None = None)
             per = [r[key] for r in same]
             spread = max(per) / min(per)
             sizes = "/".join(str(r["parts"]) for r in same)
-            out.append(f"target {what} time per step flat within 2x ({method}, n = {sizes}): "
-                       f"{min(per):.2f}..{max(per):.2f} us/step (x{spread:.2f}) -> {'met' if spread <= 2 else 'MISSED'}")
+            verdict = "met" if spread <= FLAT else "MISSED"
+            out.append(f"target {what} time per step flat within {FLAT:g}x ({method}, n = {sizes}): "
+                       f"{min(per):.2f}..{max(per):.2f} us/step (x{spread:.2f}) -> {verdict}")
         trials = [f"n={r['parts']}: {r['trial_step_s'] * 1e3:.2f} ms" for r in same if r["trial_step_s"]]
         if trials:
             out.append(f"  the dividers' trial step alone (O(n) by nature): {', '.join(trials)}")
     if sweep is not None:
-        ok = sweep["sweep_over_scalar"] <= 100.0
-        out.append(f"target sweep of {sweep['size']} rod ratios <= 100x one replay: "
-                   f"{sweep['sweep_s'] * 1e3:.1f} ms = x{sweep['sweep_over_scalar']:.1f} of {sweep['scalar_replay_s'] * 1e3:.3f} ms, "
-                   f"{sweep['speedup_over_loop']:.0f}x faster than looping -> {'met' if ok else 'MISSED'}")
+        slow = sweep["elementwise"]
+        ok = sweep["sweep_over_scalar"] <= SWEEP_RATIO and not slow
+        out.append(f"target sweep of {sweep['size']} rod ratios <= {SWEEP_RATIO:g}x one replay, every op on arrays: "
+                   f"{sweep['sweep_s'] * 1e3:.1f} ms = x{sweep['sweep_over_scalar']:.1f} of "
+                   f"{sweep['scalar_replay_s'] * 1e3:.3f} ms, {sweep['speedup_over_loop']:.0f}x faster than looping"
+                   f"{', element by element: ' + ', '.join(slow) if slow else ''} -> {'met' if ok else 'MISSED'}")
     return out

@@ -311,9 +311,9 @@ def compare_file_by_step(rel: str, golden: Path, actual: Path, *, tolerance: flo
         return [FileDifference(rel, "changed", "svg", tuple(changes[:KEPT_CHANGES]), len(changes), at_step=step)
                 for step, changes in groups.items()]
     if kind == "protocol":
-        from .protocoldiff import diff_protocol
+        from .testing import figures_diff  # what construct.testing.assert_figures_equal compares
 
-        p = diff_protocol(golden, actual, tolerance=PROTOCOL_TOLERANCE)
+        p = figures_diff(golden, actual, tolerance=PROTOCOL_TOLERANCE)
         if p.equal:
             return []
         return [FileDifference(rel, "changed", "protocol", p.changes[:KEPT_CHANGES], len(p.changes))]
@@ -437,9 +437,9 @@ def _replace_tree(gallery: Path, rebuilt: Path) -> None:
     gallery`` and this update write; anything else is refused and listed,
     its files are not ours.  The new goldens get their manifest.
     """
-    from ..io.staging import replaced_folder
+    from ..io.manifest import replaced_with_manifest
 
-    with replaced_folder(gallery, manifest="gallery", what="gallery folder",
+    with replaced_with_manifest(gallery, "gallery", what="gallery folder",
                          described="a gallery of goldens written by 'construct gallery' or 'construct verify "
                                    "--update' (recognised by its .construct-manifest.json)") as new:
         shutil.copytree(rebuilt, new, symlinks=True)

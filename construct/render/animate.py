@@ -27,6 +27,7 @@ from __future__ import annotations
 from typing import Any
 
 from .captions import group_caption
+from .scene import thin
 from .styles import PLAIN, Style
 from .svg import Drawing
 from .svgdoc import fmt
@@ -64,15 +65,10 @@ def stages(drawing: Drawing, most: int = MAX_STAGES) -> list[int]:
     animation would run for hours at a readable pace, so a stage is a group
     (the ends of the groups up to depth 2, thinned evenly to *most*).
     """
-    from .output import frame_steps
-
     n = len(drawing.scene.steps)
     if n <= most:
         return list(range(1, n + 1))
-    ends = frame_steps(drawing.scene, "groups")
-    if len(ends) > most:
-        ends = sorted({ends[round(i * (len(ends) - 1) / (most - 1))] for i in range(most)})
-    return ends
+    return thin(drawing.scene.group_ends(), most)
 
 
 def _stage_caption(drawing: Drawing, first: int, last: int) -> list[tuple[str, str]]:

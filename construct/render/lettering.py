@@ -35,7 +35,8 @@ import math
 import os
 from typing import Any, Iterable, Sequence
 
-__all__ = ["place", "LineIndex", "label_box", "text_box", "text_width", "RANK", "LEADER_FROM", "DEFAULT_FONT"]
+__all__ = ["place", "LineIndex", "label_box", "text_box", "text_width", "segment_meets_box", "RANK", "LEADER_FROM",
+           "DEFAULT_FONT"]
 
 #: Rank of a role: lower is placed first.
 RANK = {"result": 0, "given": 1}
@@ -173,8 +174,12 @@ class _Grid:
                     got.append(b)
 
 
-def _hits(box, seg) -> bool:
-    """Does the segment (x0, y0, x1, y1) cross the box? (Liang–Barsky clipping.)"""
+def segment_meets_box(box, seg) -> bool:
+    """Does the segment (x0, y0, x1, y1) cross the box (x0, y0, x1, y1)?  (Liang–Barsky clipping.)
+
+    >>> segment_meets_box((0, 0, 2, 2), (-1, 1, 3, 1)), segment_meets_box((0, 0, 2, 2), (3, 0, 3, 5))
+    (True, False)
+    """
     x0, y0, x1, y1 = seg
     dx, dy = x1 - x0, y1 - y0
     t0, t1 = 0.0, 1.0
@@ -250,7 +255,7 @@ class LineIndex:
                     if (sx0 < lx and sx1 < lx) or (sx0 > hx and sx1 > hx) or (sy0 < ly and sy1 < ly) \
                             or (sy0 > hy and sy1 > hy):
                         continue
-                    if (only is None or only[k]) and _hits(box, seg):
+                    if (only is None or only[k]) and segment_meets_box(box, seg):
                         return True
         return False
 

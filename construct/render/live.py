@@ -463,7 +463,7 @@ LIVE_SCRIPT = r"""
   }
   // the page's title and givens name the built value: they name the shown one
   var titled = [], NUM = "[0-9]+(?:[.,][0-9]+)?";
-  // the rod as the texts write it: L/r = 5, or r/L = 1/5 (seed 000, Baumann), r/l = 1/5 (§ 146)
+  // the rod as the texts write it: L/r = 5, or r/L = 1/5 (Anhang II, Baumann), r/l = 1/5 (§ 146)
   var forms = L.given === "rod_ratio" ? [["L/r = ", ""], ["r/L = 1/", ""], ["r/l = 1/", ""]] : [[L.symbol + " = ", ""]];
   forms.forEach(function(f){ f[1] = new RegExp(f[0].replace(/[.*+?^${}()|[\]\\/]/g, "\\$&") + NUM, "g"); });
   document.querySelectorAll("header h1, header h1 *").forEach(function(e){

@@ -34,7 +34,7 @@ from ..kernel.protocol import Protocol as StepProtocol
 from ..kernel.protocol import Replay
 
 __all__ = ["Described", "Drawn", "Cited", "givens", "phrases", "given_rows", "citation", "caption", "provenance",
-           "with_provenance", "number"]
+           "with_provenance", "number", "signed"]
 
 
 class Drawn(Protocol):
@@ -153,20 +153,32 @@ def given_rows(fig: Drawn, construction: Described | None = None) -> dict[str, s
     return rows
 
 
-def citation(construction: Described | None, lang: str) -> str:
-    """The texts a construction follows, as a reader finds them: author, title, figure.
+def citation(construction: Described | None, lang: str, *, after: bool = True) -> str:
+    """The texts a construction follows, as a reader finds them: author, title, figure ("after" them, or not).
 
     >>> from construct.constructions import get
     >>> citation(get("tangential-pressure"), "de")
     'nach A. Baumann, Schwungradgewichte (1902), Fig. 26/27'
-    >>> citation(get("two-cranks"), "en")
-    'after § 146–147, two cranks at 90°, Fig. 566'
+    >>> citation(get("two-cranks"), "en", after=False)
+    '§ 146–147, two cranks at 90°, Fig. 566'
     """
-    parts = [", ".join(x for x in (c.book.author, c.book.title(lang), c.figure) if x)
-             for c in (construction.cites if construction is not None else ())]
-    if not parts:
-        return ""
-    return ("nach " if lang == "de" else "after ") + "; ".join(parts)
+    parts = "; ".join(", ".join(x for x in (c.book.author, c.book.title(lang), c.figure) if x)
+                      for c in (construction.cites if construction is not None else ()))
+    if not parts or not after:
+        return parts
+    return ("nach " if lang == "de" else "after ") + parts
+
+
+def signed(v: float, decimals: int = 2, *, minus: str = "-") -> str:
+    """*v* with its sign to *decimals* places; a value that rounds to nothing has none (0.00, never -0.00).
+
+    >>> signed(-0.67), signed(0.67), signed(0.004), signed(-0.004), signed(-2.5, 1, minus="−")
+    ('-0.67', '+0.67', '0.00', '0.00', '−2.5')
+    """
+    text = f"{v:+.{decimals}f}"
+    if float(text) == 0.0:
+        return f"{0.0:.{decimals}f}"
+    return text.replace("-", minus)
 
 
 def caption(construction: Described | None, fig: Drawn, number_: int | str | None = None,
@@ -197,8 +209,10 @@ def provenance(construction: Described | None, fig: Drawn) -> dict[str, Any]:
     out: dict[str, Any] = {"construction": fig.protocol.construction, "params": params,
                            "givens": dict(fig.replay.givens)}
     if construction is not None:
-        out["source"] = construction.source
-        out["texts"] = [{"text": f"seeds/{c.book.key}", "figure": c.figure} for c in construction.cites]
+        # the texts as a reader cites them, and by the names ``construct errata --book`` takes (a construction's
+        # own source string is the developers')
+        out["source"] = citation(construction, "en", after=False) or construction.source
+        out["texts"] = [{"book": c.book.key, "figure": c.figure} for c in construction.cites]
     return out
 
 

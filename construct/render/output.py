@@ -22,10 +22,10 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from ..io.manifest import foreign_entries
-from ..io.staging import replaced_folder, write_text
+from ..io.manifest import foreign_entries, replaced_with_manifest
+from ..io.staging import write_text
 from .notation import Described, Drawn, caption, given_rows, givens, with_provenance
-from .scene import Scene, build_scene
+from .scene import Scene, build_scene, thin
 from .styles import Style
 from .svg import Drawing, render_svg
 
@@ -55,15 +55,9 @@ def frame_steps(scene: Scene, mode: str) -> list[int]:
         return []
     if mode == "all" or (mode == "auto" and n <= AUTO_ALL_LIMIT):
         return list(range(1, n + 1))
-    ends = []
-    for i, s in enumerate(scene.steps):
-        nxt = scene.steps[i + 1] if i + 1 < n else None
-        if nxt is None or nxt.group[:2] != s.group[:2]:
-            ends.append(s.index)
+    ends = scene.group_ends()
     if mode == "auto":
-        most = max(10, int(AUTO_BYTES / (BYTES_PER_MARK * len(scene.marks) / 2 + 1)))
-        if len(ends) > most:
-            ends = sorted({ends[round(i * (len(ends) - 1) / (most - 1))] for i in range(most)})
+        return thin(ends, max(10, int(AUTO_BYTES / (BYTES_PER_MARK * len(scene.marks) / 2 + 1))))
     return ends
 
 
@@ -270,7 +264,7 @@ def write_replay(construction: Described | None, figure: Drawn, out_dir: str | P
 
         raise InvalidParameter(f"unknown frames mode {frames!r}; choose one of {', '.join(FRAME_MODES)}")
     check_frames_size(figure, frames, force)
-    with replaced_folder(out_dir, manifest="replay", described=REPLAY_DESCRIBED, what="replay folder") as stage:
+    with replaced_with_manifest(out_dir, "replay", described=REPLAY_DESCRIBED, what="replay folder") as stage:
         stage.mkdir()
         info = write_outputs(stage, construction, figure, st, frames=frames, live=live)
     return {**info, "out": str(out_dir)}

@@ -46,7 +46,7 @@ TAG_FARTHER = (4.5, 5.5, 6.5)
 
 @dataclass(frozen=True, slots=True)
 class PlacedLabel:
-    """Where one point's letter stands on the canvas (pixels, y down).
+    """Where one point's letter stands on the canvas (pixels, y down), and the point in the figure's units (*at*).
 
     The text is set with *anchor* at ``point + offset`` (its baseline); *distance* is how far that
     is from the point in letter heights, and a letter from :data:`~construct.render.lettering.LEADER_FROM`
@@ -63,6 +63,8 @@ class PlacedLabel:
     distance: float
     shown: bool
     anchor: str = "middle"
+    #: The point in the figure's own units (y up), for a writer that maps the figure itself (TikZ).
+    at: tuple[float, float] = (0.0, 0.0)
 
     @property
     def leader(self) -> bool:
@@ -115,7 +117,7 @@ class Placing:
             x, y, dist, thin = self.spots[m.id]
             px, py = self.vp.px(*m.geom)
             out.append(PlacedLabel(m.id, m.name, m.label or "", m.role, (px, py), (x - px, y - py), dist,
-                                   not (thin and (camera or m.role != "result"))))
+                                   not (thin and (camera or m.role != "result")), at=tuple(m.geom)))
         return tuple(out)
 
     def letters_at(self, lvl: int) -> Any:

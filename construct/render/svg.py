@@ -42,6 +42,7 @@ from .lettering import HALO_PX, LEADER_FROM, label_box, text_width
 from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
 from .placing import Placing, PlacedLabel, place_outwards
 from .plate import Lettering, Stroke, break_elements, extent, furniture_elements
+from .marks import could_show
 from .scene import Mark, MarkKind, Scene, extreme_points
 from .styles import PLAIN, Style
 from .svgdoc import fmt
@@ -744,7 +745,7 @@ class Drawing:
         for mk in self.scene.marks:
             if mk.step > k:
                 break
-            if not _near(mk, region):
+            if not could_show(mk, region):
                 continue
             for layer, elem in self._elements(mk, win, placed, None):
                 by_layer[layer].append((mk.step, elem))
@@ -823,27 +824,6 @@ def _is_view(elem: Any) -> bool:
     """Is *elem* a camera box of the ``views`` layer (frozen or not)?"""
     xml = getattr(elem, "xml", None)
     return (xml.get("class") if xml is not None else getattr(elem, "attribs", {}).get("class")) == "view"
-
-
-def _near(m: Mark, region: tuple[float, float, float, float]) -> bool:
-    """Could the mark show inside *region*?  (Bounding boxes meet; a circle must not enclose it all.)"""
-    x0, y0, x1, y1 = region
-    g = m.geom
-    if m.kind is MarkKind.POINT:
-        return x0 <= g[0] <= x1 and y0 <= g[1] <= y1
-    if m.kind.round:
-        cx, cy, r = g[0], g[1], g[2]
-        # distance from the centre to the nearest and farthest point of the region
-        nx, ny = min(max(cx, x0), x1), min(max(cy, y0), y1)
-        near = math.hypot(nx - cx, ny - cy)
-        far = max(math.hypot(px - cx, py - cy) for px in (x0, x1) for py in (y0, y1))
-        return near <= r <= far
-    if m.kind is MarkKind.SEGMENT:
-        bx0, bx1 = sorted((g[0], g[2]))
-        by0, by1 = sorted((g[1], g[3]))
-        return bx0 <= x1 and x0 <= bx1 and by0 <= y1 and y0 <= by1
-    pts = g
-    return any(x0 <= p[0] <= x1 and y0 <= p[1] <= y1 for p in pts)
 
 
 def render_svg(scene: Scene, *, upto: int | None = None, style: Style = PLAIN,

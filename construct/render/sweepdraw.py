@@ -27,7 +27,9 @@ from typing import Any
 import numpy as np
 
 from ..kernel.geometry import Circle, Line, Point, take
-from .scene import BREAK_FRACTION, BREAK_KEEP, TWO_PI, MarkKind, Scene, fanned_lines, letter_point, on_curve_names
+from .marks import TWO_PI, MarkKind, fanned_lines, letter_point
+from .scene import Scene, on_curve_names
+from .sheet import BREAK_FRACTION, BREAK_KEEP
 from .svg import point_radius
 from .styles import Style
 
@@ -80,7 +82,7 @@ class SweepDrawing:
             return v if type(v) is np.ndarray and v.shape == (n,) else np.full(n, float(v))
 
         self._vec = vec
-        # a lettered straight line's letter point (scene._letter_lines): placed below, once the axis is broken
+        # a lettered straight line's letter point (marks.letter_lines): placed below, once the axis is broken
         ids = {m.id for m in template.marks}
         self._at = {m.id + "-at" for m in template.marks if m.kind is MarkKind.CURVE and m.straight} & ids
         points = {k: (vec(o.x), vec(o.y)) for k, o in objects.items() if isinstance(o, Point)}
@@ -92,7 +94,7 @@ class SweepDrawing:
             if isinstance(o, (Point, Line, Circle)):
                 continue
             first = take(o, 0)
-            if hasattr(first, "rings"):  # an area's pieces count for the extent (scene._curve_points)
+            if hasattr(first, "rings"):  # an area's pieces count for the extent (marks.curve_points)
                 rows = [tuple((p[0], p[1]) for ring in take(o, i).rings() for p in ring) for i in range(n)]
             elif hasattr(first, "curve_points"):
                 rows = curves[name] = [tuple((p[0], p[1]) for p in take(o, i).curve_points()) for i in range(n)]
@@ -162,7 +164,7 @@ class SweepDrawing:
 
     # -- the marks ---------------------------------------------------------------------------------------
     def _segment(self, line: Line, marked: list, margin: np.ndarray) -> tuple:
-        """scene._segment_extent over the sweep: the line as far as its marked points, and a margin."""
+        """marks.segment_extent over the sweep: the line as far as its marked points, and a margin."""
         vec = self._vec
         px, py, qx, qy = vec(line.p.x), vec(line.p.y), vec(line.q.x), vec(line.q.y)
         dx, dy = qx - px, qy - py
@@ -177,7 +179,7 @@ class SweepDrawing:
         return (px + t0 * ux, py + t0 * uy, px + t1 * ux, py + t1 * uy)
 
     def _circle(self, m, circle: Circle, marked: list, margin: np.ndarray) -> tuple:
-        """scene._circle_extent over the sweep: whole, or the arc over its marked points; a value where the
+        """marks.circle_extent over the sweep: whole, or the arc over its marked points; a value where the
         arc would be whole (or a whole one an arc) is not drawn here."""
         vec = self._vec
         cx, cy, r = vec(circle.center.x), vec(circle.center.y), vec(circle.radius)
@@ -234,7 +236,7 @@ class SweepDrawing:
 
     # -- the broken axis, the lettered lines ---------------------------------------------------------------
     def _break(self) -> None:
-        """scene._break over the sweep: the widest empty stretch broken out where it is wider than a fifth."""
+        """sheet.broken_axis over the sweep: the widest empty stretch broken out where it is wider than a fifth."""
         ext = self._extremes()
         spans = [(e[0], e[1]) for key, e in ext.items() if key is not MarkKind.SEGMENT
                  and not (key in self.curves and self._members(key)[0].straight and len(self.curves[key]) == 2)]
@@ -273,7 +275,7 @@ class SweepDrawing:
         self._breaks = (hi - keep, keep)
 
     def _letter_lines(self, template: Scene, protocol: Any) -> None:
-        """scene._letter_lines over the sweep: each lettered straight line's letter point (value by value: a
+        """marks.letter_lines over the sweep: each lettered straight line's letter point (value by value: a
         handful of lines)."""
         in_fan = fanned_lines(protocol.steps)
         self.at_marks = [m for m in template.marks if m.id in self._at]
@@ -361,7 +363,7 @@ class SweepDrawing:
 
 
 def _arc_box(cx, cy, r, a0, sw) -> tuple:
-    """scene._arc_extremes over arrays: an arc's ends and the quarter points it passes, as a box."""
+    """marks._arc_extremes over arrays: an arc's ends and the quarter points it passes, as a box."""
     lo, hi = np.minimum(a0, a0 + sw), np.maximum(a0, a0 + sw)
     xs, ys = [cx + r * np.cos(a0), cx + r * np.cos(a0 + sw)], [cy + r * np.sin(a0), cy + r * np.sin(a0 + sw)]
     quarter = math.pi / 2

@@ -38,7 +38,8 @@ __all__ = [
     "TABLE_ORDER",
 ]
 
-SOURCE = "seed 000, Anhang II (Darstellung der Massendrücke)"
+#: The book's name (construct.constructions.phrases.BOOKS: author, title, year): ``construct errata --book anhang-ii``.
+SOURCE = "anhang-ii"
 
 #: The three rod ratios L/r every table of the appendix is computed for.
 ROD_RATIOS = (4, 5, 6)

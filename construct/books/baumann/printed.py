@@ -24,7 +24,8 @@ __all__ = ["SOURCE", "all_printed", "printed_formulas", "TABLE_KZ", "TABLE_V",
            "TABLE_1_G2", "TABLE_1_TOTAL", "TABLE_2_MOMENT", "TABLE_2_WEIGHT", "WORKED_V", "WORKED_TOTALS",
            "WORKED_RIMS", "FORMULA_ROWS", "FORMULA_TOTALS", "FORMULA_RIMS", "MACHINE_COLUMNS"]
 
-SOURCE = "seed 004, Baumann 1902 (Schwungradgewichte)"
+#: The book's name (construct.constructions.phrases.BOOKS: author, title, year): ``construct errata --book baumann``.
+SOURCE = "baumann"
 
 
 # -- "Bestimmung des Fehlers": the error area f_x --------------------------------------

@@ -18,7 +18,8 @@ from ..printed import Printed
 
 __all__ = ["SOURCE", "GIVEN", "PART_WEIGHTS", "worked_example"]
 
-SOURCE = "seed 001, Kolbenüberdrucklinie and Einfluß der Massenkräfte (Tafel I, Abb. 1054/1055)"
+#: The book's name (construct.constructions.phrases.BOOKS: author, title, year): ``construct errata --book handbook``.
+SOURCE = "handbook"
 
 #: The data the example starts from, as printed (not results: nothing to check).
 GIVEN = {"bore_cm": 45.0, "tail_rod_cm": 7.5, "piston_rod_cm": 10.0, "rpm": 50.0, "crank_radius_m": 0.4,

@@ -26,7 +26,8 @@ from ..printed import Printed
 
 __all__ = ["SOURCE", "PRINTED", "FIGURE"]
 
-SOURCE = "seed 002, § 146-147 (two cranks at 90°)"
+#: The book's name (construct.constructions.phrases.BOOKS: author, title, year): ``construct errata --book mechanics``.
+SOURCE = "mechanics"
 
 #: The figure the seed refers to: the speeds as radii on the crank positions.
 FIGURE = "Fig. 566"

@@ -1,6 +1,6 @@
 """``construct flywheel``: from the excess work of the tangential-pressure diagram to the flywheel's weight.
 
-Baumann's procedure (seed 004): the excess work E the flywheel takes up while
+Baumann's procedure (1902): the excess work E the flywheel takes up while
 the crank runs ahead gives the rim weight G_s from E = (G_s/g)·v²·δ (g = 9.81),
 v = π D n/60 the rim's mean speed and δ the degree of irregularity; his
 coefficients add arms and hub (total G_s(1 + 0.06 v²/kz); the wheel's own
@@ -45,7 +45,7 @@ from ...kernel.errors import InvalidParameter
 from ..common import add_format_option, is_number, number
 
 NAME = "flywheel"
-HELP = ("size a flywheel by Baumann (seed 004): excess work (given, or measured on a diagram or your indicator cards) -> rim weight G_s (E = G_s v² δ/g), arms and hub, "
+HELP = ("size a flywheel by Baumann (1902): excess work (given, or measured on a diagram or your indicator cards) -> rim weight G_s (E = G_s v² δ/g), arms and hub, "
         "total weight and moment G·D²")
 
 KEYS = ("excess_work", "rim_weight", "arms_hub_weight", "total_weight", "moment")

@@ -75,7 +75,7 @@ def inertia_checks(fig: Figure) -> list[Check]:
                         _euclid(per_ff), "r/L then F/f through the proportional angle", "F/f"))
     checks.append(Check("m (dead-centre ordinates, finite less infinite rod)",
                         fig.replay["Einf"].distance(fig.replay["K0"]) / Ff, lam, _euclid(per_ff),
-                        "q1 - F/f = m (seed 000 c)", "F/f"))
+                        "q1 - F/f = m (Anhang II c)", "F/f"))
     # The curves as drawn: how far they stray from the analytic curve.
     para = _parabola_bound(lam)
     checks.append(Check("parabola E-D-F vs analytic curve (max, F/f)", curve_deviation(fig, "parabola"), 0.0,

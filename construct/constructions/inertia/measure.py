@@ -7,7 +7,7 @@ import numpy as np
 
 from ...kernel.curves import frame_of
 from ...kernel.geometry import Point
-from .. import Figure
+from .. import Figure, analytic
 
 __all__ = ["ordinate", "abscissa", "curve_deviation"]
 
@@ -67,6 +67,5 @@ def curve_deviation(fig: Figure, curve: str, per_segment: int = 64) -> float:
     x = (pts[:, 0] - o.x) * ux + (pts[:, 1] - o.y) * uy
     y = (pts[:, 0] - o.x) * nx + (pts[:, 1] - o.y) * ny
     x = np.clip(x, 0.0, 2.0 * r)
-    c = (x / (2.0 * r)) * (2.0 * L - x) / (x - r - L) + 1.0  # Gl. (h), as analytic.crank_angle_from_path
-    w = np.arccos(np.clip(c, -1.0, 1.0))
-    return float(np.max(np.abs(y - Ff * (np.cos(w) + lam * np.cos(2.0 * w)))) / Ff)
+    w = analytic.crank_angle_from_path(x, r, L)
+    return float(np.max(np.abs(y - analytic.inertia_two_term(w, lam, Ff))) / Ff)

@@ -7,7 +7,7 @@ from typing import Any
 
 from ...kernel.errors import InvalidParameter
 from ...kernel.division import MAX_PARTS
-from .. import Figure, positive
+from .. import Figure, get, positive
 from ..crank import crank_angle, point_name
 from .measure import offset, abscissa, ordinate
 
@@ -21,9 +21,7 @@ __all__ = ["acceleration_rows", "characteristic_point_rows", "q_at_crank_angle_r
 
 def _table_figure(rod_ratio: float, parts: int) -> Figure:
     """The construction for F/f = 1 with 1 kg/cm^2 drawn as long as the crank radius."""
-    from . import INERTIA
-
-    return INERTIA.figure(rod_ratio=rod_ratio, parts=parts, pressure_ratio=1.0, pressure_unit=1.0, r=1.0)
+    return get("inertia-curve").figure(rod_ratio=rod_ratio, parts=parts, pressure_ratio=1.0, pressure_unit=1.0, r=1.0)
 
 
 def _first(fig: Figure, *names: str) -> str:
@@ -92,9 +90,7 @@ def q_at_crank_angle_rows(rod_ratio: float, divisions: int = 10) -> list[dict[st
     >>> [round(row["q"], 4) for row in q_at_crank_angle_rows(5.0, 10)][:3]
     [1.2, 0.9073, 0.6299]
     """
-    from . import INERTIA_STROKE
-
-    fig = INERTIA_STROKE.figure(rod_ratio=rod_ratio, divisions=divisions, pressure_ratio=1.0, pressure_unit=1.0, r=1.0)
+    fig = get("inertia-stroke-fractions").figure(rod_ratio=rod_ratio, divisions=divisions, pressure_ratio=1.0, pressure_unit=1.0, r=1.0)
     u = fig.replay.givens["pressure_unit"]
     marks = ["D0"] + [f"x{j}" for j in range(1, divisions)] + ["D1"]
     return [{"x": abscissa(fig, mark), "q": offset(fig, f"Vt{j}", "gf.U") / u} for j, mark in enumerate(marks)]

@@ -56,7 +56,7 @@ from ...kernel.protocol import Caption
 from .. import Construction, Figure, register
 from ..crank import crank_angle, point_name
 from ..phrases import BAUMANN_1902, Cite, HANDBOOK, card, division, metres, number, percent
-from .analytic import card_force_zero, j_abscissa, model_areas_sweep
+from .analytic import card_force_zero, j_abscissa, model_areas
 from .build import (GRAVITY, HP_DIAGRAM, PISTON_AREA_COVER, PISTON_AREA_CRANK, TAFEL_I, build_piston_force,
                     card_crossing_chords, mass_force_scale, piston_area_mean, piston_area_sides, validate_piston_force)
 from .checks import piston_force_checks
@@ -65,7 +65,7 @@ from .plate import piston_force_plate
 
 __all__ = ["PISTON_FORCE", "TAFEL_I", "HP_DIAGRAM", "GRAVITY", "piston_area_mean", "build_piston_force",
            "piston_force_checks", "mass_force", "piston_force", "abscissa", "mass_force_rows", "area_balance",
-           "model_areas_sweep", "mass_force_scale", "j_abscissa", "card_force_zero", "card_crossing_chords",
+           "model_areas", "mass_force_scale", "j_abscissa", "card_force_zero", "card_crossing_chords",
            "piston_area_sides", "return_mass_force", "return_piston_force", "revolution_mass_force_rows",
            "PISTON_AREA_COVER", "PISTON_AREA_CRANK"]
 
@@ -106,7 +106,7 @@ PISTON_FORCE = register(Construction(
     source="seed 001, Abb. 1054/1055, Gl. (297)-(299), Tafel I; seed 004 (Baumann's idealised diagram)",
     build=lambda parts, method, **v: build_piston_force(parts=parts, method=method, **v),
     checks=piston_force_checks,
-    sweep_model=lambda g, params: model_areas_sweep(g),
+    sweep_model=lambda g, params: model_areas(g),
     defaults={"parts": 18, "method": "auto", **TAFEL_I, **HP_DIAGRAM, "scale": 2.5, "force_unit": 1.2e-4,
               "piston_area_cover": PISTON_AREA_COVER, "piston_area_crank": PISTON_AREA_CRANK, "revolution": False,
               "indicator": "", "indicator_crank_side": ""},

@@ -11,8 +11,8 @@ from ..crank import angle_tolerance, crank_angle, point_name
 from ..indicator import back_pressure as model_back
 from ..indicator import steam_pressure as model_steam
 from ..indicator_card import card_pair
-from .analytic import (card_force_zero, exact_acceleration, exact_path, forward_force, j_abscissa, piston_areas,
-                       return_force, two_term)
+from ..analytic import inertia_exact, inertia_two_term, piston_fraction
+from .analytic import card_force_zero, forward_force, j_abscissa, piston_areas, return_force
 from .build import mass_force_scale
 from .measure import abscissa, area_balance, mass_force, piston_force, return_mass_force, return_piston_force
 
@@ -43,23 +43,25 @@ def piston_force_checks(fig: Figure, model: Mapping[str, float] | None = None) -
         tol_w, why_w = angle_tolerance(fig, point_name(fig, k), made_by)
         w_measured = crank_angle(fig, point_name(fig, k))
         x = abscissa(fig, f"M{k}")
-        checks.append(Check(f"abscissa {k} (rod arcs)", x, exact_path(w, lam), EUCLIDEAN_TOLERANCE + 0.5 * (1 + lam) * tol_w,
+        checks.append(Check(f"abscissa {k} (rod arcs)", x, piston_fraction(w, lam),
+                            EUCLIDEAN_TOLERANCE + 0.5 * (1 + lam) * tol_w,
                             "rod arcs are Euclidean; division error times |dx/dw|", "stroke"))
-        checks.append(Check(f"mass force {k} (eq. 298)", mass_force(fig, k), A * two_term(w, lam),
+        checks.append(Check(f"mass force {k} (eq. 298)", mass_force(fig, k), A * inertia_two_term(w, lam),
                             kg_tol + A * (1.0 + 4.0 * lam) * tol_w, f"Euclidean chain as the inertia curve; {why_w}", "kg"))
         checks.append(Check(f"mass force {k} at the drawn angle (eq. 298)", mass_force(fig, k),
-                            A * two_term(w_measured, lam), kg_tol, "Euclidean chain: float rounding only", "kg"))
+                            A * inertia_two_term(w_measured, lam), kg_tol, "Euclidean chain: float rounding only",
+                            "kg"))
         bound = 2.5 * lam ** 3 / (1.0 - lam * lam) ** 2.5
         checks.append(Check(f"mass force {k} vs exact kinematics (information)", mass_force(fig, k),
-                            A * exact_acceleration(w, lam), A * bound + kg_tol + A * (1.0 + 4.0 * lam) * tol_w,
+                            A * inertia_exact(w, lam), A * bound + kg_tol + A * (1.0 + 4.0 * lam) * tol_w,
                             "eq. (298) drops the (R/L)^3 terms: |exact - two-term| <= 2.5 lam^3/(1 - lam^2)^2.5", "kg"))
         xk = abscissa(fig, f"K{k}")
         force = forward_force(xk, g)
         checks.append(Check(f"piston force {k} (F p_ü, eq. 297)", piston_force(fig, k), force, kg_tol,
                             "Euclidean: ray-constructed hyperbolas, compass transfer", "kg"))
         checks.append(Check(f"free force {k}", piston_force(fig, k) - mass_force(fig, k),
-                            force - A * two_term(w_measured, lam), 2 * kg_tol, "difference of two Euclidean ordinates",
-                            "kg"))
+                            force - A * inertia_two_term(w_measured, lam), 2 * kg_tol,
+                            "difference of two Euclidean ordinates", "kg"))
     cards = "card.x0" in g
     for tag, x in () if cards else (("s1", g["filling"]), ("s2", 1.0 - g["compression"])):
         checks.append(Check(f"piston force at {tag}", piston_force(fig, tag), forward_force(x, g),
@@ -116,12 +118,13 @@ def _return_checks(fig: Figure, kg_tol: float, lam: float, A: float, made_by: Ma
         tol_w, why_w = angle_tolerance(fig, point_name(fig, k), made_by)
         w_measured = crank_angle(fig, point_name(fig, k))
         checks.append(Check(f"return mass force {k} (eq. 298, minus sign)", return_mass_force(fig, k),
-                            -A * two_term(w, lam), kg_tol + A * (1.0 + 4.0 * lam) * tol_w,
+                            -A * inertia_two_term(w, lam), kg_tol + A * (1.0 + 4.0 * lam) * tol_w,
                             f"the forward ordinate carried the other way; {why_w}", "kg"))
         checks.append(Check(f"return mass force {k} = -(forward)", return_mass_force(fig, k), -mass_force(fig, k),
                             2 * kg_tol, "the same compass opening laid off the other way", "kg"))
         checks.append(Check(f"return mass force {k} at the drawn angle", return_mass_force(fig, k),
-                            -A * two_term(w_measured, lam), kg_tol, "Euclidean chain: float rounding only", "kg"))
+                            -A * inertia_two_term(w_measured, lam), kg_tol, "Euclidean chain: float rounding only",
+                            "kg"))
         x = abscissa(fig, f"rK{k}")
         checks.append(Check(f"return piston force {k} (F''p'' - F'p')", return_piston_force(fig, k),
                             return_force(x, g), 2 * kg_tol,

@@ -59,7 +59,7 @@ def area_balance(fig: Figure, model: Mapping[str, float] | None = None, stroke: 
     ``two_term_*``: eq. (298) over the exact piston path (Gauss quadrature);
     ``exact_*``: the exact kinematics, (G/g) v_max^2 / 2 on each side.
     *model*: the ``two_term_*`` and ``exact_*`` areas already computed for these givens (a sweep's, by
-    :func:`model_areas_sweep`).
+    :func:`~construct.constructions.piston_force.analytic.model_areas` of arrays).
     """
     g = fig.replay.givens
     stroke_m = 2.0 * g["crank_radius"]

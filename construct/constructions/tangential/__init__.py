@@ -43,6 +43,7 @@ the exact curve); where it crosses the curve are α1, α2; between them, above
 the mean line, the excess area ("Überschussfläche", hatched), the work the
 flywheel must take up.
 
+>>> import math
 >>> fig = TANGENTIAL.figure(force="unit", parts=6, rod_ratio=5.0)
 >>> round(ok_over_r(fig, 3), 12)   # 90 degrees: sin(90° + β)/cos β = 1
 1.0
@@ -53,14 +54,12 @@ True
 
 from __future__ import annotations
 
-import math
-
 from ...kernel.division import NAMES as DIVISION_NAMES
 from ...kernel.protocol import Caption
 from .. import Construction, Figure, register
 from ..indicator import BAUMANN
 from ..phrases import BAUMANN_1902, Cite, card, diagram, division, low_pressure, number, ratio, revolution, scale
-from .analytic import baumann_force, low_force, model_summary, model_summary_sweep, model_t
+from .analytic import baumann_force, low_force, model_summary, model_t
 from .build import FORCES, KAPPA, LOW_PRESSURE, build_tangential, chord_shortfall, validate_tangential
 from .checks import drawn_model, tangential_checks
 from .measure import (crossing_angles, excess_area, free_force, mean_height, ok_over_r, return_free_force, t_over_unit,
@@ -69,7 +68,7 @@ from .plate import tangential_plate
 
 __all__ = ["TANGENTIAL", "build_tangential", "tangential_checks", "ok_over_r", "t_over_unit", "free_force",
            "model_t", "baumann_force", "return_free_force", "drawn_model", "unrolled_angle", "mean_height",
-           "excess_area", "crossing_angles", "model_summary", "model_summary_sweep", "KAPPA", "FORCES",
+           "excess_area", "crossing_angles", "model_summary", "KAPPA", "FORCES",
            "LOW_PRESSURE", "low_force", "chord_shortfall"]
 
 
@@ -104,7 +103,7 @@ TANGENTIAL = register(Construction(
     source="seed 004 (Baumann 1902), Fig. 26/27",
     build=build_tangential,
     checks=tangential_checks,
-    sweep_model=lambda g, params: model_summary_sweep(g, params["force"]),
+    sweep_model=lambda g, params: model_summary(g, params["force"]),
     defaults={"rod_ratio": 5.0, "parts": 18, "method": "auto", "r": 1.0, "force": "baumann", "kappa": KAPPA,
               **BAUMANN, "pressure_unit": 0.2, "revolution": False, "cranks": "", "machine": "single",
               "indicator": "", "indicator_crank_side": "", "indicator_lp": "", "indicator_lp_crank_side": "",
@@ -137,7 +136,7 @@ TANGENTIAL = register(Construction(
         "area_ratio": "tangential-pressure, compound/tandem with diagrams of their own: low-pressure piston area "
                       "over the high-pressure one's, 0.1 .. 20 (default 2.5)",
         "lp_filling": "tangential-pressure --force baumann, compound/tandem: the low-pressure cylinder's filling "
-                      "s1/s, 0.001 .. 1 (default 0.35, illustrative: the seeds print no compound's diagrams)",
+                      "s1/s, 0.001 .. 1 (default 0.35, illustrative: the books print no compound's diagrams)",
         "lp_admission": "the low-pressure cylinder's admission pressure in at over its back pressure, 0.001 .. 1000 "
                         "(default 1.6, illustrative)",
         "lp_back_pressure": "the low-pressure cylinder's back pressure in at absolute, 0.001 .. 1000 (default 0.15)",

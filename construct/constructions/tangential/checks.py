@@ -15,7 +15,8 @@ from .. import Figure
 from ..crank import angle_tolerance, crank_angle, point_name
 from ..indicator_card import card_force, card_pair
 from ..revolution import engine_cylinders, revolution_checks
-from .analytic import baumann_force, factor, low_force, model_force, model_summary, model_t
+from .. import analytic
+from .analytic import baumann_force, low_force, model_force, model_summary, model_t
 from .build import chord_shortfall
 from .measure import crossing_angles, excess_area, free_force, mean_height, ok_over_r, return_free_force, t_over_unit
 
@@ -57,7 +58,7 @@ def tangential_checks(fig: Figure, model: Mapping[str, float] | None = None) -> 
         scale = max(1.0, g["admission"] + g["back_pressure"])
     for k in range(1, n):
         w = crank_angle(fig, point_name(fig, k))  # the angle the point really has: the division's error drops out
-        checks.append(Check(f"OK/r at {k}", ok_over_r(fig, k), factor(w, lam), EUCLIDEAN_TOLERANCE,
+        checks.append(Check(f"OK/r at {k}", ok_over_r(fig, k), analytic.tangential_factor(w, lam), EUCLIDEAN_TOLERANCE,
                             "rod line and perpendicular through O: straightedge steps", "r"))
         if force in ("baumann", "indicator"):
             tol = 10 * EUCLIDEAN_TOLERANCE * scale / g["pressure_unit"]
@@ -69,7 +70,7 @@ def tangential_checks(fig: Figure, model: Mapping[str, float] | None = None) -> 
                 checks.append(Check(f"T at {k}", t_over_unit(fig, k), model_t(w, g, force), 2 * tol,
                                     "P'·OK/r by the intercept theorem: Euclidean, read in at", "at"))
         elif not fig.params.get("revolution"):  # over a revolution the ordinates are checked as the sum's
-            checks.append(Check(f"T/P at {k}", t_over_unit(fig, k), factor(w, lam), EUCLIDEAN_TOLERANCE,
+            checks.append(Check(f"T/P at {k}", t_over_unit(fig, k), analytic.tangential_factor(w, lam), EUCLIDEAN_TOLERANCE,
                                 "proportional angle with P' = r: Euclidean", "P"))
     if fig.params.get("revolution"):
         if force == "unit":

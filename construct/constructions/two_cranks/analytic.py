@@ -8,6 +8,7 @@ from typing import Any
 import numpy as np
 
 from ...kernel.errors import InvalidParameter
+from ..analytic import piston_fraction, piston_rate
 
 
 #: Where the first crank starts: § 146's B1 (the crank-end dead centre, the rod correction subtracting in the
@@ -24,12 +25,14 @@ KOCHANSKI_RHO = math.sqrt(40.0 / 3.0 - 2.0 * math.sqrt(3.0))
 KOCHANSKI_ERROR = math.pi - KOCHANSKI_RHO
 
 
-def _position(w: float, rod_ratio: float | None) -> float:
+def _lam(rod_ratio: Any) -> Any:
+    """r/l of a rod ratio l/r (None: the infinite rod, r/l = 0)."""
+    return 0.0 if rod_ratio is None else 1.0 / np.asarray(rod_ratio, dtype=float)
+
+
+def _position(w: Any, rod_ratio: Any) -> Any:
     """Piston position from the head-end dead centre, units of r (exact law; None: infinite rod)."""
-    if rod_ratio is None:
-        return 1.0 - math.cos(w)
-    s = math.sin(w)
-    return 1.0 - math.cos(w) + s * s / (rod_ratio + math.sqrt(rod_ratio * rod_ratio - s * s))
+    return 2.0 * piston_fraction(w, _lam(rod_ratio))
 
 
 def piston_travel(theta: float, rod_ratio: float | None) -> float:
@@ -102,10 +105,7 @@ def excess_exact_array(alpha: Any, rod_ratio: Any) -> Any:
     half = 0.5 * math.pi
 
     def position(w):
-        if rod_ratio is None:
-            return 1.0 - np.cos(w)
-        s = np.sin(w)
-        return 1.0 - np.cos(w) + s * s / (rod_ratio + np.sqrt(rod_ratio * rod_ratio - s * s))
+        return _position(w, rod_ratio)
 
     def travel(theta):  # piston_travel: forward half turns from the dead centre, back ones from the other
         n = np.floor(theta / math.pi)
@@ -182,7 +182,4 @@ def piston_speed_factor(w: float, rod_ratio: float | None) -> float:
     >>> round(piston_speed_factor(math.pi / 2, 5.0), 12), round(piston_speed_factor(math.pi / 4, 4.0), 6)
     (1.0, 0.834107)
     """
-    s, c = math.sin(w), math.cos(w)
-    if rod_ratio is None:
-        return s
-    return s + s * c / math.sqrt(rod_ratio * rod_ratio - s * s)
+    return 2.0 * piston_rate(w, _lam(rod_ratio))

@@ -732,12 +732,16 @@ class Builder:
         self.call(perp, f"Lot von {p}", f"the perpendicular from {p}")
         return perp, foot
 
-    def parallel_through(self, name: str, p: str, a: str, b: str, *, role: str = "construction") -> str:
+    def parallel_through(self, name: str, p: str, a: str, b: str, *, role: str = "construction",
+                         along: tuple[str, str] | None = None) -> str:
         """The parallel to ab through p, by completing the parallelogram a b Q p.
 
         Q lies at distance |ab| from p and |ap| from b, on the other side of
         the diagonal pb than a; that side is read off the figure once, when
-        the step is recorded, and stored as the step's rule.
+        the step is recorded, and stored as the step's rule.  *along*: what the
+        direction ab is, where the figure says so (German, English: ``("zur
+        45°-Linie", "to the 45 degree line")``): the steps' titles name that, not
+        a point a far corner of the figure letters.
 
         >>> b = Builder("demo", givens={})
         >>> for n, (x, y) in zip("ABC", ((0, 0), (4, 0), (0, 3))):
@@ -746,14 +750,15 @@ class Builder:
         >>> round(par.q.y, 12)
         3.0
         """
-        with self.group(f"parallel to {a}{b} through {p}", f"Parallele zu {a}{b} durch {p}"):
+        de, en = along or (f"zu {a}{b}", f"to {a}{b}")
+        with self.group(f"parallel {en} through {p}", f"Parallele {de} durch {p}"):
             k1 = self.circle_segment(self.fresh(f"{name}.k"), p, a, b)
             k2 = self.circle_segment(self.fresh(f"{name}.k"), b, a, p)
             (px, py), (bx, by), (ax, ay) = self[p], self[b], self[a]
             a_left = (bx - px) * (ay - py) - (by - py) * (ax - px) > 0
             q = self.intersect(self.fresh(f"{name}.Q"), k1, k2, rule=("right" if a_left else "left", p, b))
             line = self.line(name, p, q, role=role)
-        self.call(line, f"Parallele zu {a}{b} durch {p}", f"the parallel to {a}{b} through {p}")
+        self.call(line, f"Parallele {de} durch {p}", f"the parallel {en} through {p}")
         return line
 
     def divide_segment(self, name: str, a: str, b: str, n: int, *, line: str | None = None,

@@ -68,8 +68,9 @@ TITLE_LIMIT = 1000
 #: caption of megabytes, whose end no one sees.
 _READ_LIMIT = 16 * CAPTION_LIMIT
 
-#: An identifier as the constructions write object names: letters, digits, dots inside.
-_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*")
+#: An identifier as the constructions write object names: letters, digits, dots inside, a prime (U', U'.k;
+#: not the English genitive: crank's).
+_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?:'(?![A-Za-z]))?(?:\.[A-Za-z0-9_]+)*")
 #: Words after which the instruments' captions put an object's name ("Kreis um X durch Y", "X where a meets b",
 #: "perpendicular to X at Y").
 _SLOTS = {"um", "durch", "von", "und", "mit", "zu", "zur", "in", "auf", "about", "through", "where", "meets", "and",
@@ -125,15 +126,15 @@ def tag(name: str, letters: "frozenset[str] | set[str]" = frozenset()) -> str:
     ``Ehs1``: E1), small letters before a capital name the family by its last letter (``cPq3``, Brauer's
     point on the ray q: Q3; ``iV0``: V0).  Where the letter is one the figure already uses (the helper
     ``ordD.A`` beside the dead centre A), a single capital is written small, a small letter takes a prime,
-    and anything else keeps the part before it.
+    and anything else keeps the part before it.  A name's ASCII prime is written as the figure's (U' : U′).
 
     >>> tag("T7.G.M1"), tag("ordD.A", {"A", "B"}), tag("D.2", {"2"}), tag("Dx"), tag("to42.a", {"a"})
     ('M1', 'a', 'D2', 'Dx', 'a′')
-    >>> tag("Ab1"), tag("Zt10"), tag("Ehs1"), tag("cPq3"), tag("ePV10"), tag("iV0")
-    ('A1', 'Z10', 'E1', 'Q3', 'V10', 'V0')
+    >>> tag("Ab1"), tag("Zt10"), tag("Ehs1"), tag("cPq3"), tag("ePV10"), tag("iV0"), tag("U'")
+    ('A1', 'Z10', 'E1', 'Q3', 'V10', 'V0', 'U′')
     """
     parts = name.split(".")
-    last = _as_letter(parts[-1])
+    last = _as_letter(parts[-1]).replace("'", "′")
     if last in letters:
         if len(last) == 1 and last.isupper():
             return last.lower()
@@ -244,8 +245,10 @@ class Reader:
         if label:
             return label
         parts = name.rsplit(".", 1)
-        # the helper of a lettered point, named for it (X.c45: the piston position of 45°): X(45°)
-        other = self.objects.get(parts[-1]) if len(parts) == 2 and len(parts[0].rsplit(".", 1)[-1]) == 1 else None
+        # the helper of a lettered point, named for it (X.c45: the piston position of 45°): X(45°); a small
+        # letter before it names a family of helpers (u.T1: the apex T1 of the division u), not the point
+        head = parts[0].rsplit(".", 1)[-1] if len(parts) == 2 else ""
+        other = self.objects.get(parts[-1]) if len(head) == 1 and head.isupper() else None
         if other is not None and other[1]:
             return f"{parts[0].rsplit('.', 1)[-1]}({other[1]})"  # X.c45, the piston position of 45°: X(45°)
         return tag(name, self.letters)

@@ -181,7 +181,7 @@ def _characteristic(b: Builder, c: _Ctx, n: int) -> None:
         E, F = "K0", f"K{n}"
         ef = b.line("EF", E, F, de="EF ist parallel zur Geraden für unendliche Stange",
                     en="EF is parallel to the infinite-rod line")
-        Dx = b.intersect("Dx", ef, c.axis, rule=("only",), de="EF schneidet die Achse bei x = (1 + r/L)·r",
+        Dx = b.intersect("D.1", ef, c.axis, rule=("only",), de="EF schneidet die Achse bei x = (1 + r/L)·r",
                          en="EF crosses the axis at x = (1 + r/L) r")
         ordD = _ordinate_line(b, c, "ordD", Dx)
         I = b.intersect("D.I", ordD, inf, rule=("only",), de="dort hat die Gerade die Ordinate −m",

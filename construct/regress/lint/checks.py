@@ -60,8 +60,8 @@ MIN_FILL = 0.6
 #: subscripts, primes (:data:`construct.render.scene.FIGURE_LETTER`, written out here: lint reads files).
 FIGURE_LETTER = re.compile(r"[A-Za-zΑ-Ωα-ω][0-9]{0,2}[′″'₀-₉]*|[0-9]{1,2}[′″']?")
 #: A word of a caption that names something: a letter with digits, primes or subscripts, or a lone letter
-#: (not a letter of a formula: F/f, r/L, r·cos; not an angle's name, ∠AO5).
-_NAMED = re.compile(r"(?<![\w′'″₀-₉./·∠])([A-Za-zΑ-Ωα-ω][A-Za-zΑ-Ωα-ω0-9₀-₉∞]*[′'″]*)(?![\w′'″₀-₉/·∞])")
+#: (not a letter of a formula: F/f, r/L, r·cos, p(1 + tg β); not an angle's name, ∠AO5).
+_NAMED = re.compile(r"(?<![\w′'″₀-₉./·∠])([A-Za-zΑ-Ωα-ω][A-Za-zΑ-Ωα-ω0-9₀-₉∞]*[′'″]*)(?![\w′'″₀-₉/·∞(])")
 #: An internal name: letters and digits run together the way no figure letters them (c135, cPV10, to42a, t110).
 _INTERNAL = re.compile(r"[A-Za-z]+[0-9]+[A-Za-z0-9]*|[a-z]+[A-Z][A-Za-z0-9]*")
 #: Cell of the spatial index, user units (about two letters).

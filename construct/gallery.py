@@ -211,7 +211,7 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
             from .render.site import thumbnail_view
             from .render.svg import Drawing
 
-            drawing = drawing or Drawing(scene_for(c, fig), STYLES[style])
+            drawing = drawing or Drawing(scene_for(c, fig, ending=STYLES[style].camera), STYLES[style])
             thumb = thumbnail_view(drawing)
         info = write_outputs(sdir, c, fig, STYLES[style], frames=FRAME_MODE, fig_number=number, protocol=False,
                              outputs=GALLERY_OUTPUTS[style], live=live, drawing=drawing)

@@ -67,6 +67,8 @@ class Scene:
     end_replaced: frozenset = frozenset()
     #: The plate's furniture the end state adds (ordinates with their values, scales, signs).
     end_furniture: tuple = ()
+    #: The looks the end state gives marks it draws where they stand ({mark id: look}: the curve heavy).
+    end_looks: "dict[str, str]" = dataclasses.field(default_factory=dict)
 
     def upto(self, k: int) -> list[Mark]:
         """The marks made by steps 1..k."""
@@ -80,6 +82,10 @@ class Scene:
         :attr:`end_marks`.  Without an end state every mark stays.
         """
         return not self.ending or (m.name in self.essentials and m.id not in self.end_replaced)
+
+    def end_look(self, m: Mark) -> str:
+        """The look mark *m* has in the end state (the plate's, where it gives one)."""
+        return self.end_looks.get(m.id, m.look)
 
     def readable(self, text: str, lang: str = "de", outputs: tuple[str, ...] = ()) -> str:
         """*text* in the figure's letters (:class:`construct.render.captions.Reader`).
@@ -648,21 +654,22 @@ def _end_state(figure: Any, marks: list[Mark], breaks: tuple, furniture: tuple,
     for m in marks:
         teaching.setdefault(m.name, []).append(m)
     seen: dict[str, int] = {}
-    end_marks, replaced = [], set()
+    end_marks, replaced, looks_at = [], set(), {}
     for pm in plate.marks:
         pm = with_geom(pm, _shift_geom(pm, sx))
         i = seen.get(pm.name, 0)
         seen[pm.name] = i + 1
         same = teaching.get(pm.name, [])
         tm = same[i] if i < len(same) else None
-        if tm is not None and tm.kind is pm.kind and tm.look == pm.look and tm.label == pm.label \
-                and _same_geom(tm.geom, pm.geom, tol):
+        if tm is not None and tm.kind is pm.kind and tm.label == pm.label and _same_geom(tm.geom, pm.geom, tol):
+            if tm.look != pm.look:  # drawn where it stands, in the plate's look (not drawn twice)
+                looks_at[tm.id] = pm.look
             continue
         if tm is not None:
             replaced.add(tm.id)
         end_marks.append(dataclasses.replace(pm, id=f"{(tm or pm).id}-end"))
     return {"ending": True, "end_marks": tuple(end_marks), "end_replaced": frozenset(replaced),
-            "end_furniture": tuple(shifted(it, sx) for it in furniture)}
+            "end_furniture": tuple(shifted(it, sx) for it in furniture), "end_looks": looks_at}
 
 
 def break_shift(breaks: tuple) -> Callable[[float], float]:

@@ -182,6 +182,8 @@ END_CSS = "\n".join((
     ".fin .lbg{display:none}", ".fin .lbg.pf{display:inline}",
     ".fin .leader{display:none}", ".fin .leader.lvf{display:inline}",
     ".fin .lbg>.lb,.fin .lbg>.leader,.fin .pt{transform:scale(var(--ls,var(--zs,1)))}",
+    # the plate's looks (construct.render.plate.LOOKS_CSS) on what the end state draws where it stands
+    *(".fin .fl-" + rule[1:] for rule in LOOKS_CSS),
 ))
 
 PLAIN = Style()

@@ -28,7 +28,6 @@ from __future__ import annotations
 
 import bisect
 import heapq
-import math
 import re
 from dataclasses import dataclass
 from typing import Any, Callable, Sequence
@@ -257,7 +256,7 @@ class Drawing:
             pl.place_end(ls, marks, texts, self._end_lettering(size), strokes)
             box = None
             for m in marks:
-                if "hidden" not in m.look.split():
+                if "hidden" not in sc.end_look(m).split():
                     box = _grown(box, [self.vp.px(*p) for p in extreme_points(m)])
             fx = extent(sc.end_furniture)
             if fx is not None:
@@ -329,7 +328,7 @@ class Drawing:
         cls = f"{m.role} {m.tool} {m.provenance}" + (f" {m.look}" if m.look else "")
         sc = self.scene
         out = " fo" if end else (" nf" if sc.ending and not sc.in_end(m) else "")
-        cls += out
+        cls += out + "".join(f" fl-{w}" for w in sc.end_looks.get(m.id, "").split())
         ids = {"id": mid} if mid else {}
         st = self.style
         f = self.doc.factory
@@ -387,7 +386,6 @@ class Drawing:
         """A letter about its point: ``<g class="lbg" transform="translate(point)">`` holding (leader,) halo
         and letter at *rel* (offset in pixels, distance in letter heights), so that a zoomed view
         can keep letters at their screen size and distance from the point (its children scaled by CSS)."""
-        st = self.style
         f = self.doc.factory
         px, py = vp.px(*m.geom)
         outer = inner = f.g(class_="lbg" + extra, transform=f"translate({fmt(px)} {fmt(py)})", **(gid or {}))

@@ -419,7 +419,7 @@ def test_the_players_last_step_is_the_end_state(fractions):
     assert last[3] < 0.75 * full[3]
 
 
-@pytest.mark.parametrize("name, params", [("crank", dict(parts=9, rod_ratio=5.0)), ("flywheel-rim", {}),
+@pytest.mark.parametrize("name, params", [("crank", dict(parts=18, rod_ratio=5.0)), ("flywheel-rim", {}),
                                           ("indicator-diagram", {})])
 def test_fine_work_is_seen_magnified(name, params):
     """A step's finest detail -- the two closest points it works with, the smallest circle it strikes -- is at
@@ -444,6 +444,8 @@ def test_fine_work_is_seen_magnified(name, params):
         inset = d.insets[s.index - 1]
         assert seen >= 0.79 * min(camera.DETAIL_PX, min(gaps) * whole * camera.ZOOM_LEVELS[-1]) or inset, \
             (s.index, sc.caption(s.index)[0], seen)
+        if inset is not None and seen < 12.0:  # the inset shows the points apart (Dürer's thirds, 0.1 px apart)
+            assert min(gaps) * camera.INSET_PX[0] / inset[2] >= 12.0, (s.index, sc.caption(s.index)[0])
     assert fine_steps > 3
     if name == "flywheel-rim":  # the ray of the rectangle's diagonal, over the sliver O r₁
         k = next(s.index for s in sc.steps if s.outputs == ("U6.s",))

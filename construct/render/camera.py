@@ -102,7 +102,7 @@ def level_css() -> str:
     rules.append(",".join(f".zl{i} .lv{i}" for i in levels) + "{display:inline}")
     rules.append(",".join(f".zl{i} .m{i}" for i in levels) + "{display:none}")
     # a letter with no room at a zoom level gives way there (placing.Placing._zoom_placing)
-    rules.append(",".join(f".zl{i} .h{i}" for i in range(1, len(ZOOM_LEVELS))) + "{display:none}")
+    rules.append(",".join(f".zl{i} .h{i}" for i in range(len(ZOOM_LEVELS))) + "{display:none}")
     return "\n".join(rules)
 
 
@@ -412,7 +412,7 @@ def final_box(scene: Scene, within: Box | None = None) -> Box | None:
         from .plate import extent
 
         for m in [m for m in scene.marks if scene.in_end(m)] + list(scene.end_marks):
-            if "hidden" not in m.look.split():
+            if "hidden" not in scene.end_look(m).split():
                 for x, y in extreme_points(m):
                     core = _grow(core, x, y)
         fx = extent(scene.end_furniture)
@@ -513,8 +513,10 @@ def step_views(scene: Scene, full: View, bbox: Box, px: Callable[[float, float],
 #: thickness, so the player shows the thickness in an inset (:func:`step_insets`).
 SLIVER_PX = 10.0
 SLIVER_RATIO = 5.0
-#: The most a step's finest detail is magnified (in an inset, past the last zoom level).
-INSET_MAX = 64.0
+#: The most a step's finest detail is magnified (in an inset, past the last zoom level): Dürer's trisection
+#: moves its thirds by a tenth of a canvas pixel (crank of 18 parts, step 54: 0.14 px), which the inset
+#: shows 12 px apart; points equal but for rounding (0.1 px) never.
+INSET_MAX = 128.0
 #: The inset's window on the screen (px) and how thick the sliver is made there at least.
 INSET_PX = (300.0, 210.0)
 INSET_DETAIL_PX = 28.0
@@ -637,7 +639,6 @@ def clear_edges(views: list[View], full: View, letters_at: Letters) -> list[View
     cut the next; every round grows the view by 2 % at least, so the rounds end), up to the
     whole figure.  *letters_at*: the letters each zoom level shows.
     """
-    W, H = PLAYER_FIGURE_PX
     done: dict = {}
     out = []
     for v in views:
@@ -651,19 +652,9 @@ def clear_edges(views: list[View], full: View, letters_at: Letters) -> list[View
                 z = zoom_of((0.0, 0.0, w, h), full)  # the window's magnification
                 if z <= 1.0:
                     break
-                zl = ZOOM_LEVELS[level(z)]
-                a = letters_at(level(z))
-                q = max(w / W, h / H)
-                ls = player_letter_scale(q * z / zl)
-                hw, hh = W * q / 2, H * q / 2
-                x0, y0 = a[:, 0] + ls * a[:, 2] - cx, a[:, 1] + ls * a[:, 3] - cy
-                x1, y1 = a[:, 0] + ls * a[:, 4] - cx, a[:, 1] + ls * a[:, 5] - cy
-                meet = (x0 < hw) & (x1 > -hw) & (y0 < hh) & (y1 > -hh)
-                cut = meet & ((x0 < -hw) | (x1 > hw) | (y0 < -hh) | (y1 > hh))
-                if not cut.any():
+                g = _letter_cut((cx - w / 2, cy - h / 2, w, h), full, level(z), letters_at(level(z)))
+                if g == 1.0:
                     break
-                g = max(float(np.maximum(-x0[cut], x1[cut]).max()) / hw,
-                        float(np.maximum(-y0[cut], y1[cut]).max()) / hh) * 1.02
                 w, h = w * g, h * g
             if zoom_of((0.0, 0.0, w, h), full) <= 1.0:
                 done[v] = full
@@ -699,6 +690,24 @@ def clear_tag_edges(views: list[View], full: View, tags_at: Tags, letters_at: Le
     return views
 
 
+def _letter_cut(v: View, full: View, lvl: int, a: Any) -> float:
+    """How much view *v* must grow about its centre to take in the letters *a* (rows as in :data:`Letters`) of
+    level *lvl* its window cuts (1.0: it cuts none; as :func:`clear_edges` grows a view, 2 % more)."""
+    W, H = PLAYER_FIGURE_PX
+    x, y, w, h = v
+    q = max(w / W, h / H)
+    ls = player_letter_scale(q * zoom_of(v, full) / ZOOM_LEVELS[lvl])
+    hw, hh = W * q / 2, H * q / 2
+    cx, cy = x + w / 2, y + h / 2
+    x0, y0 = a[:, 0] + ls * a[:, 2] - cx, a[:, 1] + ls * a[:, 3] - cy
+    x1, y1 = a[:, 0] + ls * a[:, 4] - cx, a[:, 1] + ls * a[:, 5] - cy
+    meet = (x0 < hw) & (x1 > -hw) & (y0 < hh) & (y1 > -hh)
+    cut = meet & ((x0 < -hw) | (x1 > hw) | (y0 < -hh) | (y1 > hh))
+    if not cut.any():
+        return 1.0
+    return max(float(np.maximum(-x0[cut], x1[cut]).max()) / hw, float(np.maximum(-y0[cut], y1[cut]).max()) / hh) * 1.02
+
+
 def _tag_edge_view(v: View, ks: list[int], full: View, tags_at: Tags, letters_at: Letters) -> View | None:
     """View *v* (of steps *ks*) grown or shifted to take in the tags its window cuts (None: none cut)."""
     W, H = PLAYER_FIGURE_PX
@@ -731,9 +740,16 @@ def _tag_edge_view(v: View, ks: list[int], full: View, tags_at: Tags, letters_at
             grow = max(grow, max(-b[0], b[2]) / hw * 1.02, max(-b[1], b[3]) / hh * 1.02)
     if grow == 1.0:
         return None
-    grown = (0.0, 0.0, w * grow, h * grow)
-    if level(zoom_of(grown, full)) == lvl and zoom_of(grown, full) > 1.0:
-        return clip_view(cx, cy, w * grow, h * grow, full)
+    # grown about its centre, and on while it cuts a letter (a row of letters at its edge), within its level
+    for _ in range(EDGE_ROUNDS):
+        grown = (0.0, 0.0, w * grow, h * grow)
+        if level(zoom_of(grown, full)) != lvl or zoom_of(grown, full) <= 1.0:
+            break
+        nv = clip_view(cx, cy, w * grow, h * grow, full)
+        more = _letter_cut(nv, full, lvl, letters_at(lvl))
+        if more == 1.0:
+            return nv
+        grow *= more
     # where growing would leave the level, the shift that takes the tags in: the views' own steps'
     # tags first, then it keeps in what it shows whole (the letters too), then the inputs' tags
     inside += [b for b in boxes if -hw <= b[0] and b[2] <= hw and -hh <= b[1] and b[3] <= hh]
@@ -745,6 +761,15 @@ def _tag_edge_view(v: View, ks: list[int], full: View, tags_at: Tags, letters_at
             if nlo <= nhi:
                 lo, hi = nlo, nhi
         pan[i] = min(max(0.0, lo), hi)
-    if pan == [0.0, 0.0]:
-        return None
-    return (round(x + pan[0], 2), round(y + pan[1], 2), w, h)
+    # a shift that brings a letter outside the window part way in cuts it: the shift is shortened until none
+    # is cut (piston force steps 1216-1222: the row of piston positions at the window's top)
+    arr = np.array(boxes, dtype=float).reshape(-1, 4)
+    for _ in range(6):
+        if pan == [0.0, 0.0]:
+            return None
+        a = arr - np.array(pan * 2)
+        meet = (a[:, 0] < hw) & (a[:, 2] > -hw) & (a[:, 1] < hh) & (a[:, 3] > -hh)
+        if not (meet & ((a[:, 0] < -hw) | (a[:, 2] > hw) | (a[:, 1] < -hh) | (a[:, 3] > hh))).any():
+            return (round(x + pan[0], 2), round(y + pan[1], 2), w, h)
+        pan = [pan[0] / 2, pan[1] / 2]
+    return None

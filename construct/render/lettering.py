@@ -35,6 +35,8 @@ import math
 import os
 from typing import Any, Iterable, Sequence
 
+import numpy as np
+
 __all__ = ["place", "LineIndex", "label_box", "text_box", "text_width", "segment_meets_box", "RANK", "LEADER_FROM",
            "DEFAULT_FONT"]
 
@@ -43,6 +45,8 @@ RANK = {"result": 0, "given": 1}
 
 #: Directions tried, as turns from the preferred one (degrees), and distances in letter heights.
 _TURNS = (0, 30, -30, 60, -60, 90, -90, 120, -120, 150, -150, 180)
+#: On the farther rings (place's *distances*) the directions lie twice as close: a ring there is long.
+_TURNS_FAR = (0,) + tuple(t for a in range(15, 180, 15) for t in (a, -a)) + (180,)
 _DISTANCES = (0.9, 1.45, 2.1, 2.8, 3.6)
 #: From this distance (letter heights) on, a letter is tied to its point by a leader line.
 LEADER_FROM = 2.0
@@ -174,6 +178,22 @@ class _Grid:
                     got.append(b)
 
 
+class _Boxes:
+    """The boxes a single letter must keep clear of, asked all at once (numpy): a letter placed alone tries a
+    few spots among a few hundred boxes, where filing them in a :class:`_Grid` costs more than the asking."""
+
+    def __init__(self, boxes: list[tuple[float, float, float, float]]):
+        a = np.array(boxes, dtype=float).reshape(-1, 4)
+        self.x0, self.y0, self.x1, self.y1 = a[:, 0], a[:, 1], a[:, 2], a[:, 3]
+
+    def free(self, b) -> bool:
+        x0, y0, x1, y1 = b
+        return not ((x0 < self.x1) & (self.x0 < x1) & (y0 < self.y1) & (self.y0 < y1)).any()
+
+    def add(self, b) -> None:  # the letter is placed alone: nothing is asked after it
+        pass
+
+
 def segment_meets_box(box, seg) -> bool:
     """Does the segment (x0, y0, x1, y1) cross the box (x0, y0, x1, y1)?  (Liang–Barsky clipping.)
 
@@ -287,12 +307,16 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     rings tried after the usual ones (letter heights; a name tag a caption names is set off with a leader
     rather than left out).
     """
-    grid = _Grid(2.0 * size)
-    for b in taken:
-        grid.add(b)
     r = 0.3 * size
-    for x, y in dots:
-        grid.add((x - r, y - r, x + r, y + r))
+    items = list(items)
+    if len(items) == 1:
+        grid: "_Grid | _Boxes" = _Boxes(list(taken) + [(x - r, y - r, x + r, y + r) for x, y in dots])
+    else:
+        grid = _Grid(2.0 * size)
+        for b in taken:
+            grid.add(b)
+        for x, y in dots:
+            grid.add((x - r, y - r, x + r, y + r))
     if isinstance(lines, LineIndex):
         if lines.size != size:
             raise ValueError(f"place: the line index is made for letters of {lines.size}, not {size}")
@@ -314,7 +338,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
             if grid.free(box) and not strokes.meets(box, reach, only):
                 spot = (px + ox, py + oy, box, od)
         for dist in (() if spot else _DISTANCES + tuple(distances)):
-            for turn in _TURNS:
+            for turn in (_TURNS if dist in _DISTANCES else _TURNS_FAR):
                 a = base + math.radians(turn)
                 # the letter's centre sits *dist* letter heights from the point (plus half its
                 # extra width sideways); its baseline a third of a letter lower

@@ -31,7 +31,7 @@ from typing import Any, Callable, Sequence
 import numpy as np
 
 from .camera import PLAYER_FIGURE_PX, THIN_FROM, ZOOM_LEVELS, View, level, zoom_of
-from .lettering import HALO_PX, LEADER_FROM, LineIndex, label_box, place
+from .lettering import HALO_PX, LEADER_FROM, RANK, LineIndex, label_box, place
 from .scene import Mark, MarkKind, Scene, label_offset_direction
 from .styles import Style
 from .svgdoc import fmt
@@ -41,7 +41,7 @@ __all__ = ["PlacedLabel", "Placing", "TAG_FARTHER"]
 
 #: The farther rings (letter heights) a name tag tries, tied by a leader, before it gives way: a tag the
 #: step's caption names is worth a longer leader.
-TAG_FARTHER = (4.5, 5.5, 6.5)
+TAG_FARTHER = (4.5, 5.5, 6.5, 8.0, 10.0, 12.0, 14.0)
 
 
 @dataclass(frozen=True, slots=True)
@@ -189,6 +189,17 @@ class Placing:
                       halo=HALO_PX / 2 * k, reach=self.line_reach)
         thin = [it for it in items if spots.get(it[0], (0, 0, 0, False))[3]]
         if thin and st.camera:
+            # a letter with no room beside its point stands farther off, tied by a leader, when there is room
+            # there: the whole figure's view is the one the steps far apart are seen in, and their captions
+            # name it (inertia curve: q6, q7 inside the crank circle's crowd)
+            text = {it[0]: it[5] for it in items}
+            held = [label_box(x, y, text[i], size, st.label_font, st.label_italic, HALO_PX / 2 * k)
+                    for i, (x, y, _d, t) in spots.items() if not t]
+            far = place(thin, size, dots, self._lines_at(1.0, size), font=st.label_font, italic=st.label_italic,
+                        taken=held, keep=False, halo=HALO_PX / 2 * k, reach=self.line_reach, distances=TAG_FARTHER)
+            spots.update(far)
+            thin = [it for it in thin if it[0] not in far]
+        if thin and st.camera:
             # the letters the whole figure has no room for, placed for the magnified views
             # (from zoom level THIN_FROM on): points twice as far apart, letters at their size
             z = ZOOM_LEVELS[THIN_FROM]
@@ -307,10 +318,11 @@ class Placing:
         st = self.style
         size = st.label_size * letter
         span = self.scene.bbox[2] - self.scene.bbox[0]
-        dots = [self.vp.px(*m.geom) for m in marks if m.kind is MarkKind.POINT and "hidden" not in m.look.split()]
+        look = self.scene.end_look
+        dots = [self.vp.px(*m.geom) for m in marks if m.kind is MarkKind.POINT and "hidden" not in look(m).split()]
         lines = list(strokes)
         for m in marks:
-            if m.role == "result" and m.kind.stroked and "hidden" not in m.look.split():
+            if m.role == "result" and m.kind.stroked and "hidden" not in look(m).split():
                 pts = [self.vp.px(*q) for q in _polyline(m, self.vp.scale)]
                 lines.extend((a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:]))
         items, prefer = [], {}
@@ -440,31 +452,53 @@ class Placing:
                     mates.setdefault(s_, set()).update(together)
         byid = {m.id: m for m in tags}
         out: dict[str, tuple[float, float, float]] = {}
-        for lvl, ms in sorted(by_level.items()):
-            z, f, taken = frame(lvl)
-            # clear of the tags placed at a lower level that are seen with these at this one
-            mates_here = set().union(*(seen_with.get(lvl, {}).get(m.step, set()) for m in ms))
-            taken = taken + [label_box(pts[i][0] * z + out[i][0] * f, pts[i][1] * z + out[i][1] * f,
-                                       sc.display_name(byid[i].name), size * f, st.label_font, st.label_italic,
-                                       HALO_PX / 2 * f)
-                             for i in out if byid[i].step in mates_here and lvl in shown_at[byid[i].step]]
-            items = []
-            for m in ms:
-                px, py = pts[m.id]
-                items.append((m.id, m.role, m.step, (px * z, py * z), label_offset_direction(m.geom, scale=span),
-                              sc.display_name(m.name)))
-            # the tags are checked against each other level by level below
-            ds, only = near(items, z, f)
-            got = place(items, size * f, ds, self._lines_at(z, size * f), only=only,
-                        font=st.label_font, italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * f,
+        frames: dict[int, tuple] = {}
+        tags_of: dict[int, list[Mark]] = {}
+        for m in tags:
+            tags_of.setdefault(m.step, []).append(m)
+        reach = (max(TAG_FARTHER) + 3.0) * size  # how far from its point a tag's box may reach (letter units)
+
+        def place_at(m: Mark, lvl: int) -> bool:
+            """Place tag *m* at level *lvl*, clear of the letters there and of the tags placed so far that are
+            seen with it at that level (tags never seen together may share a spot)."""
+            if lvl not in frames:
+                z, f, boxes = frame(lvl)
+                frames[lvl] = (z, f, np.array(boxes, dtype=float).reshape(-1, 4))
+            z, f, boxes = frames[lvl]
+            x, y = pts[m.id][0] * z, pts[m.id][1] * z
+            r = reach * f
+            near_ = boxes[(boxes[:, 2] >= x - r) & (boxes[:, 0] <= x + r) & (boxes[:, 3] >= y - r) & (boxes[:, 1] <= y + r)]
+            taken = list(map(tuple, near_.tolist())) + [
+                label_box(pts[o.id][0] * z + out[o.id][0] * f, pts[o.id][1] * z + out[o.id][1] * f,
+                          sc.display_name(o.name), size * f, st.label_font, st.label_italic, HALO_PX / 2 * f)
+                for k in seen_with.get(lvl, {}).get(m.step, ()) if lvl in shown_at[k]
+                for o in tags_of.get(k, ()) if o.id in out]
+            item = (m.id, m.role, m.step, (x, y), label_offset_direction(m.geom, scale=span), sc.display_name(m.name))
+            ds, only = near([item], z, f)
+            got = place([item], size * f, ds, self._lines_at(z, size * f), only=only, font=st.label_font,
+                        italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * f,
                         reach=self.line_reach, distances=TAG_FARTHER)
-            for i, _r, _s, (zx, zy), _d, _t in items:
-                if i in got:
-                    x, y, dist, _thin = got[i]
-                    out[i] = ((x - zx) / f, (y - zy) / f, dist)
+            if m.id not in got:
+                return False
+            gx, gy, dist, _thin = got[m.id]
+            out[m.id] = ((gx - x) / f, (gy - y) / f, dist)
+            return True
+
+        # each tag at the least magnified level it is seen at, in the placer's order (results first)
+        hidden: dict[str, str] = {}
+        for lvl, ms in sorted(by_level.items()):
+            for m in sorted(ms, key=lambda m: (RANK.get(m.role, 2), m.step, m.id)):
+                place_at(m, lvl)
+        # a tag with no room there takes its spot at the next level that has room (a step's caption names it),
+        # given way at the levels below
+        for m in tags:
+            if m.id not in out:
+                for lvl in sorted(shown_at[m.step] - {lowest.get(m.step, 0)}):
+                    if place_at(m, lvl):
+                        hidden[m.id] = "".join(f" h{lo}" for lo in sorted(shown_at[m.step]) if lo < lvl)
+                        break
         # every level a tag is seen at: it holds its spot there, or it gives way there (class hN),
         # never stacked on a letter, a point, a result line or a tag seen with it
-        hidden: dict[str, str] = {}
         moves: dict[str, dict[int, tuple[float, float, float]]] = {}
         for lvl in sorted({v for vs in shown_at.values() for v in vs}):
             z, f, taken = frame(lvl)

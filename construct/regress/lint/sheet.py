@@ -229,7 +229,7 @@ class Sheet:
         if state is not None:
             classes = classes - {END}  # a step's view before the last: the player shows no end state
         if level or any(c.startswith("zl") for c in classes):  # the view's zoom level, in place of the file's
-            classes = frozenset(c for c in classes if not _ZOOM_CLASS.fullmatch(c)) | ({f"zl{level}"} if level else set())
+            classes = frozenset(c for c in classes if not _ZOOM_CLASS.fullmatch(c)) | {f"zl{level}"}
         if classes is not root[2]:
             chain = ((root[0], root[1], classes, root[3]),) + chain[1:]
         if state is None:

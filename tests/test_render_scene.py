@@ -185,3 +185,29 @@ def test_an_arcs_extreme_points_bound_it():
         assert xs.min() >= pts[:, 0].min() - 1e-12 and xs.max() <= pts[:, 0].max() + 1e-12
         assert ys.min() >= pts[:, 1].min() - 1e-12 and ys.max() <= pts[:, 1].max() + 1e-12
         assert xs.min() <= pts[:, 0].min() + 1e-6 and ys.max() >= pts[:, 1].max() - 1e-6
+
+
+def test_a_section_drawn_over_an_area_keeps_its_hatching_out():
+    """The flywheel's rim and hub are drawn over its disc: the disc's hatching (SVG and TikZ alike, through
+    paths.hatch_segments) stops at them, as a draftsman hatches each section up to the next one's outline."""
+    from shapely.geometry import LineString, Polygon
+
+    from construct.render.paths import hatch_segments
+
+    fig = get("flywheel-rim").figure()
+    scene = scene_for(get("flywheel-rim"), fig, plate=True)
+    areas = [m for m in scene.marks if m.kind is MarkKind.AREA]
+    assert len(areas) >= 3  # disc, hub, rim
+    disc = max(areas, key=lambda m: len(m.geom))  # the disc's outline follows its curve of equal strength
+    over = scene.areas_over(disc)
+    assert over and all(o is not disc.geom for o in over)
+    ring = [(1000.0 * x, -1000.0 * y) for x, y in disc.geom]  # canvas units: the rim overlaps 70 x 20
+    under = [[(1000.0 * x, -1000.0 * y) for x, y in o] for o in over]
+    kept = Polygon(ring).buffer(0)
+    for o in under:
+        kept = kept.difference(Polygon(o).buffer(0))
+    segs = hatch_segments(ring, 2.0, 45.0, under=under)
+    assert segs and all(kept.buffer(1e-6).covers(LineString(s)) for s in segs)
+    # without the sections the same hatching runs into them
+    whole = hatch_segments(ring, 2.0, 45.0)
+    assert any(Polygon(o).buffer(-1e-3).intersects(LineString(s)) for s in whole for o in under)

@@ -31,13 +31,16 @@ from typing import Any, Callable, Sequence
 import numpy as np
 
 from .camera import PLAYER_FIGURE_PX, THIN_FROM, ZOOM_LEVELS, View, level, zoom_of
-from .lettering import HALO_PX, LEADER_FROM, RANK, LineIndex, label_box, place
+from .gaps import Gap
+from .lettering import HALO_PX, LEADER_FROM, RANK, LineIndex, label_box, place, text_box
+from .paths import bezier_controls
+from .plate import plain
 from .scene import Mark, MarkKind, Scene, label_offset_direction
 from .styles import Style
 from .svgdoc import fmt
 from .viewport import Viewport
 
-__all__ = ["PlacedLabel", "Placing", "TAG_FARTHER"]
+__all__ = ["PlacedLabel", "Placing", "furniture_text_box", "text_gap", "TAG_FARTHER"]
 
 #: The farther rings (letter heights) a name tag tries, tied by a leader, before it gives way: a tag the
 #: step's caption names is worth a longer leader.
@@ -82,11 +85,16 @@ class Placing:
     the name tags once the camera's views are known.
     """
 
-    def __init__(self, scene: Scene, style: Style, vp: Viewport, drawing_height: float):
+    def __init__(self, scene: Scene, style: Style, vp: Viewport, drawing_height: float, *,
+                 plate: bool = False, furniture: "Sequence[Any]" = ()):
         self.scene = scene
         self.style = style
         self.vp = vp
         self.drawing_height = drawing_height
+        #: a plate: the letters stand clear of every line where they can, never on the furniture's lettering
+        #: (*furniture*: the plate's furniture as data, :class:`construct.render.plate.Piece`)
+        self.plate = plate
+        self.furniture = tuple(furniture)
         self._line_index: dict[tuple[float, float], LineIndex] = {}
         self._rows: dict[int, Any] = {}
         self._obstacle_a: tuple[Any, Any] | None = None
@@ -185,8 +193,20 @@ class Placing:
         self._letter_items = items
         k = self.letter_scale
         size = k * st.label_size
+        soft, taken = None, []
+        if self.plate:
+            # a plate's letters stand beside every line where they can (a construction line, a tick, an axis
+            # as much as a result), and off the furniture's lettering
+            thin = [seg for m in self.scene.marks if m.kind.stroked and m.role != "result" and m.look != "hidden"
+                    for seg in _segments([vp.px(*q) for q in _polyline(m, vp.scale)])]
+            for p in self.furniture:
+                if p.kind == "line" or (p.kind == "poly" and "arrow" not in p.cls):
+                    thin += _segments(list(p.points) + ([p.points[0]] if p.closed else []))
+                elif p.kind == "text":
+                    taken.append(furniture_text_box(p, st))
+            soft = LineIndex(size, thin)
         spots = place(items, size, dots, self._lines_at(1.0, size), font=st.label_font, italic=st.label_italic,
-                      halo=HALO_PX / 2 * k, reach=self.line_reach)
+                      halo=HALO_PX / 2 * k, reach=self.line_reach, soft=soft, taken=taken)
         thin = [it for it in items if spots.get(it[0], (0, 0, 0, False))[3]]
         if thin and st.camera:
             # a letter with no room beside its point stands farther off, tied by a leader, when there is room
@@ -275,32 +295,37 @@ class Placing:
                          + f"{{transform:scale(var(--ls,var(--zs))) {move}}}")
         return classes, rules
 
-    def leaders(self, mid: str, rel: tuple[float, float, float]) -> list[tuple[tuple[float, float, float, float], str]]:
+    def leaders(self, mid: str, rel: tuple[float, float, float],
+                text: str = "") -> list[tuple[tuple[float, float, float, float], str]]:
         """The leaders of letter *mid* standing at *rel* (offset, distance in letter heights) in the whole
         figure: ((x1, y1, x2, y2) about its point in the letter's units, classes), one for every place it
         stands at -- the whole figure's (hidden at the levels it moves at: ``mN``), each zoom level it
         moves at (``lvN``, shown at that level only) and the end state's (``lvf``) -- each from its point to
-        the letter there, and none where the letter stands close enough to be read as its point's.
+        the letter *text* there, and none where the letter stands close enough to be read as its point's.
         """
         out = []
         moved = self.level_moves.get(mid, {})
         if rel[2] >= LEADER_FROM:
-            out.append((self.leader_line(rel[0], rel[1]), "".join(f" m{lvl}" for lvl in sorted(moved))))
+            out.append((self.leader_line(rel[0], rel[1], text), "".join(f" m{lvl}" for lvl in sorted(moved))))
         for lvl, (dx, dy, dist) in sorted(moved.items()):
             if dist >= LEADER_FROM:
-                out.append((self.leader_line(dx, dy), f" lv{lvl}"))
+                out.append((self.leader_line(dx, dy, text), f" lv{lvl}"))
         end = self.end_spots.get(mid)
         if end is not None and end[2] >= LEADER_FROM:
-            out.append((self.leader_line(end[0], end[1]), " lvf"))
+            out.append((self.leader_line(end[0], end[1], text), " lvf"))
         return out
 
-    def leader_line(self, dx: float, dy: float) -> tuple[float, float, float, float]:
-        """A leader from a point to its letter set at (dx, dy) from it (the baseline's middle, letter units):
-        from a quarter letter off the point to three quarters short of the letter's middle."""
-        size = self.style.label_size
+    def leader_line(self, dx: float, dy: float, text: str = "") -> tuple[float, float, float, float]:
+        """A leader from a point to its letter *text* set at (dx, dy) from it (the baseline's middle, letter
+        units): from a quarter letter off the point to three quarters short of the letter's middle, or sooner,
+        where it meets the letter's white (a wide letter, M₁ 19°12′, is not run into)."""
+        st = self.style
+        size = st.label_size
         cx, cy = dx, dy - 0.35 * size
         n = math.hypot(cx, cy) or 1.0
         a, b = 0.25 * size, n - 0.75 * size
+        if text:
+            b = min(b, _entry(label_box(dx, dy, text, size, st.label_font, st.label_italic), cx / n, cy / n))
         return (a * cx / n, a * cy / n, b * cx / n, b * cy / n)
 
     def place_end(self, letter: float, marks: Sequence[Mark], taken: Sequence[tuple[float, float, float, float]],
@@ -645,17 +670,32 @@ def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
     if m.kind is MarkKind.CURVE and not m.straight and len(g) > 2:
         # as drawn (curve_path): the Catmull-Rom pieces, which leave the chords where the curve bends
         out = [tuple(g[0])]
-        for i in range(len(g) - 1):
-            p0, p1, p2 = g[i - 1] if i > 0 else g[i], g[i], g[i + 1]
-            p3 = g[i + 2] if i + 2 < len(g) else g[i + 1]
-            c1 = (p1[0] + (p2[0] - p0[0]) / 6.0, p1[1] + (p2[1] - p0[1]) / 6.0)
-            c2 = (p2[0] - (p3[0] - p1[0]) / 6.0, p2[1] - (p3[1] - p1[1]) / 6.0)
+        for p1, c1, c2, p2 in bezier_controls(g):
             for t in (0.25, 0.5, 0.75, 1.0):
                 s = 1 - t
                 out.append(tuple(s * s * s * a + 3 * s * s * t * b + 3 * s * t * t * c + t * t * t * d
                                  for a, b, c, d in zip(p1, c1, c2, p2)))
         return out
     return list(g)
+
+
+def _segments(pts: Sequence[tuple[float, float]]) -> list[tuple[float, float, float, float]]:
+    return [(a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:])]
+
+
+def furniture_text_box(p: Any, style: Style, grow: float = HALO_PX / 2) -> tuple[float, float, float, float]:
+    """The upright box (pixels) a plate's lettering (a ``text`` :class:`construct.render.plate.Piece`) covers
+    with its halo, turned or not."""
+    return text_gap(p, style, grow).reach()
+
+
+def text_gap(p: Any, style: Style, grow: float) -> Gap:
+    """The box a plate's lettering (a ``text`` :class:`construct.render.plate.Piece`: set about its point, the
+    middle of its height) covers, grown by *grow* pixels round its ink, turned with it: a :class:`Gap`."""
+    size = style.label_size * p.size
+    (x, y), = p.points
+    box = text_box(x, y + 0.35 * size, plain(p.text), size, style.label_font, style.label_italic, p.anchor)
+    return Gap.around(box, grow, p.angle, about=(x, y))
 
 
 def _scaled(rows: Any, z: float) -> list[tuple[float, ...]]:
@@ -685,3 +725,16 @@ def place_outwards(m: Mark, vp: Viewport, style: Style, span: float,
 def _overlaps(box, placed) -> bool:
     x0, y0, x1, y1 = box
     return any(x0 < b[2] and b[0] < x1 and y0 < b[3] and b[1] < y1 for b in placed)
+
+
+def _entry(box: tuple[float, float, float, float], ux: float, uy: float) -> float:
+    """How far along the unit direction (ux, uy) from the origin a ray enters *box* (infinity: it misses)."""
+    t_in, t_out = 0.0, math.inf
+    for u, lo, hi in ((ux, box[0], box[2]), (uy, box[1], box[3])):
+        if abs(u) < 1e-12:
+            if not lo <= 0.0 <= hi:
+                return math.inf
+            continue
+        t0, t1 = sorted((lo / u, hi / u))
+        t_in, t_out = max(t_in, t0), min(t_out, t1)
+    return t_in if t_in <= t_out else math.inf

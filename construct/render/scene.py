@@ -172,6 +172,12 @@ class Scene:
         m = self._drawn.get(name)
         return m.step if m is not None else None
 
+    def areas_over(self, m: Mark) -> list[tuple]:
+        """The areas drawn after area *m* whose boxes meet its box: sections over it (a flywheel's rim over its
+        disc), which its hatching does not run into (the SVG plate and the TikZ picture alike)."""
+        a = _box(m.geom)
+        return [o.geom for o in self.marks if o.kind is MarkKind.AREA and o.step > m.step and _meets(a, _box(o.geom))]
+
     def group_ends(self) -> list[int]:
         """The last step of every run of steps in one group at depth two (a run of ungrouped steps is one
         too): where a stage of the animation, or a frame of a long construction, ends."""
@@ -585,9 +591,14 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 kind, geom = circle_extent(obj, on.get(name, []), margin, s.role, plate=shown is not None)
                 marks.append(Mark(mid, kind=kind, geom=geom, **common))
             elif hasattr(obj, "rings"):  # an Area: one mark per piece, each hatched
-                for j, ring in enumerate(obj.rings()):
+                # a look "signed": the pieces under the lower line hatched across those over it (+ and −)
+                signed = "signed" in common["look"].split()
+                for j, (sign, ring) in enumerate(obj.pieces):
+                    hatch = obj.hatch_deg
+                    if signed and sign < 0:
+                        hatch = (90.0 if hatch is None else hatch) - 45.0
                     marks.append(Mark(mid if j == 0 else f"{mid}-{j}", kind=MarkKind.AREA,
-                                      geom=tuple((p[0], p[1]) for p in ring), hatch=obj.hatch_deg, **common))
+                                      geom=tuple((p[0], p[1]) for p in ring), hatch=hatch, **common))
             elif hasattr(obj, "curve_points"):
                 # a polyline is drawn as it is measured (y_at, length): straight from point to point
                 straight = getattr(obj, "kind", "") == "polyline"
@@ -746,3 +757,11 @@ def reading(label: str, objects: Any) -> str:
         return dms(w)
 
     return READING.sub(angle, label)
+
+
+def _box(pts: Sequence[tuple[float, float]]) -> tuple[float, float, float, float]:
+    return (min(p[0] for p in pts), min(p[1] for p in pts), max(p[0] for p in pts), max(p[1] for p in pts))
+
+
+def _meets(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]

@@ -27,7 +27,9 @@ True
 from __future__ import annotations
 
 import bisect
+import dataclasses
 import heapq
+import math
 import re
 from dataclasses import dataclass
 from typing import Any, Callable, Sequence
@@ -36,12 +38,14 @@ from . import captions as _captions
 from . import svgdoc
 from .camera import (FINAL_CONTEXT, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, clear_edges, clear_tag_edges, level,
                      player_letter_scale, ring_round, step_insets, step_views, zoom_of)
-from .captions import Captions
-from .lettering import HALO_PX, LEADER_FROM, label_box, text_width
+from .captions import Captions, PlateCaption
+from .gaps import CLEARANCE, Gap, GapFactory, gapped_hatch, gapped_mark
+from .lettering import HALO_PX, LEADER_FROM, label_box, text_box, text_width
 from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
-from .placing import Placing, PlacedLabel, place_outwards
-from .plate import Lettering, Stroke, break_elements, extent, furniture_elements
 from .marks import could_show
+from .placing import Placing, PlacedLabel, place_outwards, text_gap
+from .plate import (Lettering, Stroke, break_elements, crossing_lines, extent, furniture_elements, furniture_pieces, plain,
+                    subscript_runs)
 from .scene import Mark, MarkKind, Scene, extreme_points
 from .styles import PLAIN, Style
 from .svgdoc import fmt
@@ -102,9 +106,12 @@ class Drawing:
     LAYERS = ("areas", "construction", "results", "points", "labels")
 
     def __init__(self, scene: Scene, style: Style = PLAIN, *, caption_lines: int | None = None,
-                 region: tuple[float, float, float, float] | None = None, canvas: "Viewport | None" = None):
+                 region: tuple[float, float, float, float] | None = None, canvas: "Viewport | None" = None,
+                 plate: bool = False):
         self.scene = scene
         self.style = style
+        #: a book plate: its letters stand beside the lines, or the lines are broken for them (:attr:`gaps`)
+        self.plate = plate
         #: the caption lines, wrapped to the canvas
         self.captions = Captions(scene, width=style.width_px - 2 * style.margin_px, size=style.caption_size,
                                  groups=style.show_group)
@@ -122,7 +129,13 @@ class Drawing:
             self.vp = Viewport(win.xmin, win.ymax, win.scale, canvas.width, canvas.height, 0.0, win.left, win.top)
         self.doc = svgdoc.Writer()
         #: where the letters and the name tags stand (:class:`construct.render.placing.Placing`)
-        self.placing = pl = Placing(scene, style, self.vp, self.drawing_height)
+        #: the plate's furniture as drawn (an end-anchored lettering with an index set from its start)
+        self.furniture_items = _start_anchored(scene.furniture, self.vp.scale, style)
+        pieces = furniture_pieces(self.furniture_items, self.vp.px, self.vp.scale, size=style.label_size) if plate else []
+        self.placing = pl = Placing(scene, style, self.vp, self.drawing_height, plate=plate, furniture=pieces)
+        #: where the plate's lines are broken for its letters (:mod:`construct.render.gaps`): the ink of every
+        #: letter shown and of the furniture's lettering, with a margin of white
+        self.gaps: list[Gap] = self._gaps(pieces) if plate else []
         if style.name_tags:
             pl.place_tags(self.views if style.camera else (), self.full_view, self.input_steps)
             if style.camera and pl.tag_spots:
@@ -371,15 +384,45 @@ class Drawing:
                         extra += " pf lbm"  # it stands in the end state, where it may move
                     gid = {"id": f"{mid}-lb"} if mid and " lbm" in extra else {}
                     extra = extra.replace(" lbm", "")
-                    yield "labels", self._letter(vp, m, rel, m.label, "lb", lid, extra=extra, gid=gid)
+                    # a plate breaks its lines for its letters: no paper-coloured halo beneath them
+                    yield "labels", self._letter(vp, m, rel, m.label, "lb", lid, extra=extra, gid=gid,
+                                                 halo=not (self.plate and vp is self.vp))
             return
         if m.kind.stroked:
-            yield mark_layer(m), _STROKES[m.kind](f, shapes[0][2], {"class_": cls, **ids})
+            d = gapped_mark(m, self.vp, self.gaps) if self.gaps and vp is self.vp else None
+            if d is not None:  # broken for the letters it passes
+                yield mark_layer(m), f.path(d=d, class_=cls, **ids)
+            else:
+                yield mark_layer(m), _STROKES[m.kind](f, shapes[0][2], {"class_": cls, **ids})
         else:  # an area, and its hatching if the style hatches and the lines meet it
             yield "areas", f.path(d=shapes[0][2]["d"], class_=f"area {cls}", **ids)
             for _, _, a in shapes[1:]:
                 hid = {"id": f"{mid}-hatch"} if mid else {}
-                yield "areas", f.path(d=a["d"], class_="hatch", **hid)
+                yield "areas", f.path(d=self._plate_hatch(m, a["d"]) if self.plate and vp is self.vp else a["d"],
+                                      class_="hatch", **hid)
+
+    def _plate_hatch(self, m: Mark, d: str) -> str:
+        """A plate's hatching of area *m* (*d* as the style hatches it): not run into a section drawn over it (the
+        flywheel's disc into its rim), broken for the letters in it."""
+        over = self.scene.areas_over(m)
+        if over:
+            d = hatch_path(self.vp, m.geom, self.style.hatch_spacing, *(() if m.hatch is None else (m.hatch,)),
+                           under=tuple(over))
+        return gapped_hatch(d, self.gaps) if self.gaps else d
+
+    def _gaps(self, pieces: Sequence[Any]) -> list[Gap]:
+        """The gaps a plate's lines leave for its letters: round the ink of every letter the plate shows and of
+        the furniture's lettering (:data:`construct.render.gaps.CLEARANCE` of white)."""
+        st = self.style
+        grow = CLEARANCE * st.label_size
+        out = []
+        for p in self.labels():
+            if p.shown:
+                box = text_box(p.point[0] + p.offset[0], p.point[1] + p.offset[1], p.text, st.label_size,
+                               st.label_font, st.label_italic)
+                out.append(Gap.around(box, grow))
+        out += [text_gap(p, st, CLEARANCE * st.label_size * p.size) for p in pieces if p.kind == "text"]
+        return out
 
     def _letter(self, vp: Viewport, m: Mark, rel: tuple[float, float, float], text: str, cls: str,
                 ids: dict, *, halo: bool = True, extra: str = "", gid: dict | None = None) -> Any:
@@ -394,12 +437,12 @@ class Drawing:
         pl = self.placing
         if "tag" in cls.split() or vp is not self.vp:
             # a name tag's leader is shown and hidden with its tag (the style shows tags at their step only)
-            leaders = [(pl.leader_line(dx, dy), " tag" if "tag" in cls.split() else "")] if dist >= LEADER_FROM else []
+            leaders = [(pl.leader_line(dx, dy, text), " tag" if "tag" in cls.split() else "")] if dist >= LEADER_FROM else []
         elif " fo" in extra:
-            leaders = [(pl.leader_line(dx, dy), " lvf")] if dist >= LEADER_FROM else []
+            leaders = [(pl.leader_line(dx, dy, text), " lvf")] if dist >= LEADER_FROM else []
         else:
             # a letter set off from a crowded point is tied to it, wherever it stands (each zoom level, the end)
-            leaders = pl.leaders(m.id, rel)
+            leaders = pl.leaders(m.id, rel, text)
         for (x1, y1, x2, y2), more in leaders:
             inner.add(f.line(start=(fmt(x1), fmt(y1)), end=(fmt(x2), fmt(y2)), class_="leader" + more))
         if halo:
@@ -526,13 +569,17 @@ class Drawing:
         sc = self.scene
         # the furniture first, the break marks over it (they open the rod and the axis for the gap)
         size = self.style.label_size
-        elems = furniture_elements(sc.furniture, self.vp.px, self.vp.scale, f, size=size)
-        # a line's break marks are shown when and where the line is: in a step group of the line's step (the
-        # player gives it the line's state), not in the end state where that leaves the line out (nf); those
-        # of the end state's own lines there only (fo)
-        elems += break_elements(sc.breaks, [(*it.a, *it.b) for it in sc.furniture if isinstance(it, Stroke)],
-                                self.vp.px, f, size=size)
-        if sc.breaks:
+        elems = furniture_elements(self.furniture_items, self.vp.px, self.vp.scale,
+                                   GapFactory(f, self.gaps) if self.gaps else f, size=size)
+        if self.plate:  # its lines are broken for its lettering: the lettering's halos go
+            elems = [e for e in elems if e.attribs.get("class") != "lb halo"]
+            elems += break_elements(sc.breaks, crossing_lines(sc.marks, sc.furniture), self.vp.px, f, size=size)
+        else:
+            # a line's break marks are shown when and where the line is: in a step group of the line's step
+            # (the player gives it the line's state), not in the end state where that leaves the line out
+            # (nf); those of the end state's own lines there only (fo)
+            elems += break_elements(sc.breaks, crossing_lines((), sc.furniture), self.vp.px, f, size=size)
+        if sc.breaks and not self.plate:
             n = len(sc.steps)
             inputs = self.input_steps(k) if mark_steps and k is not None else frozenset()
             for m in sc.marks:
@@ -562,7 +609,7 @@ class Drawing:
                     continue
                 x, y = px + ls * rel[0], py + ls * rel[1]
                 if rel[2] >= LEADER_FROM:
-                    x1, y1, x2, y2 = pl.leader_line(rel[0], rel[1])
+                    x1, y1, x2, y2 = pl.leader_line(rel[0], rel[1], text)
                     g.add(f.line(start=(fmt(px + ls * x1), fmt(py + ls * y1)), end=(fmt(px + ls * x2), fmt(py + ls * y2)),
                                  class_="fur thin"))
                 attrs = {"style": f"font-size:{fmt(self.end.size * it.size)}px"} if it.size != 1.0 else {}
@@ -664,11 +711,13 @@ class Drawing:
 
         Still renderers show the whole figure; frame k is the view of steps 1..k.  With an end state
         (:class:`EndView`) the file shows that: its sheet is the end state's drawing (the root's
-        ``viewBox``, class ``fin`` and the end view's zoom level), every step's group still in it.
+        ``viewBox``, class ``fin`` and the end view's zoom level), every step's group still in it.  A plate
+        says so on its root (``<svg class="plate">``): ``construct lint`` holds it to what a printed plate
+        never shows.
         """
         if self.end is not None:
             return self._end_document(caption)
-        dwg = self.document()
+        dwg = self.document(**({"class_": "plate"} if self.plate else {}))
         for e in self.body(len(self.scene.steps), mark_steps=False):
             dwg.add(e)
         if self.style.show_caption:
@@ -818,6 +867,19 @@ def mark_geometry(m: Mark, vp: Viewport, style: Style) -> list[tuple[str, str, d
             out.append(("-hatch", "path", {"d": d}))
     return out
 
+def _start_anchored(items: Sequence[Any], scale: float, style: Style) -> tuple:
+    """*items* with every lettering that has an index (P = F·p_ü) and is set at its end moved to be set at its
+    start: a renderer may lay out each run of an end-anchored text by itself (cairosvg sets the index apart)."""
+    out = []
+    for it in items:
+        if isinstance(it, Lettering) and it.anchor == "end" and len(subscript_runs(it.text)) > 1:
+            w = text_width(plain(it.text), style.label_size * it.size, style.label_font, style.label_italic) / scale
+            a = math.radians(it.angle)
+            it = dataclasses.replace(it, at=(it.at[0] - w * math.cos(a), it.at[1] - w * math.sin(a)), anchor="start")
+        out.append(it)
+    return tuple(out)
+
+
 def _is_view(elem: Any) -> bool:
     """Is *elem* a camera box of the ``views`` layer (frozen or not)?"""
     xml = getattr(elem, "xml", None)
@@ -825,14 +887,15 @@ def _is_view(elem: Any) -> bool:
 
 
 def render_svg(scene: Scene, *, upto: int | None = None, style: Style = PLAIN,
-               caption: tuple[str, str] | None = None) -> str:
-    """The figure after steps 1..upto (all steps when None), as SVG text."""
+               caption: "tuple[str, str] | PlateCaption | None" = None) -> str:
+    """The figure after steps 1..upto (all steps when None), as SVG text; *caption*: its caption lines, or a
+    plate's (:class:`construct.render.captions.PlateCaption`, one language in at most three lines)."""
     if upto is None:
         if style.fig_caption:
             # a plate: its own size, the "Fig." caption centred beneath
             n = len(Captions(scene, width=style.width_px - 2 * style.margin_px, size=style.caption_size)
                     .title_lines(caption))
-            return Drawing(scene, style, caption_lines=n).final(caption, centred=True)
+            return Drawing(scene, style, caption_lines=n, plate=style.plate).final(caption, centred=True)
         return Drawing(scene, style).final(caption)
     return Drawing(scene, style).frame(upto)
 

@@ -89,11 +89,17 @@ class SweepDrawing:
         on = on_curve_names(protocol.steps, set(points))
         # the figure's extent before the marks are drawn: every point, every curve's points
         xs, ys = [np.vstack([p[0] for p in points.values()])], [np.vstack([p[1] for p in points.values()])]
-        curves: dict[str, list[tuple]] = {}
+        curves: dict[str, Any] = {}  # a curve's drawn points: (xs, ys) arrays (points, values), or rows per value
         for name, o in objects.items():
             if isinstance(o, (Point, Line, Circle)):
                 continue
             first = take(o, 0)
+            if hasattr(first, "curve_points") and getattr(o, "sets", lambda: 0)() == n:
+                # a sweep's chain (its points hold arrays): every value's drawn points at once
+                cx, cy = curves[name] = _chain_points(o, n)
+                xs += [np.array([cx.min(0), cx.max(0)])]
+                ys += [np.array([cy.min(0), cy.max(0)])]
+                continue
             if hasattr(first, "rings"):  # an area's pieces count for the extent (marks.curve_points)
                 rows = [tuple((p[0], p[1]) for ring in take(o, i).rings() for p in ring) for i in range(n)]
             elif hasattr(first, "curve_points"):
@@ -119,6 +125,13 @@ class SweepDrawing:
                 by[m.kind].append(self._segment(obj, marked, margin))
             elif m.kind.round and isinstance(obj, Circle):
                 by[m.kind].append(self._circle(m, obj, marked, margin))
+            elif m.kind is MarkKind.CURVE and m.name in curves and isinstance(curves[m.name], tuple):
+                cx, cy = curves[m.name]
+                if cx.shape[0] == len(m.geom):
+                    curve_geoms[m.id] = tuple(zip(cx, cy))
+                else:  # the sweep's curve has another number of points than the template's: drawn value by value
+                    self.ok[:] = False
+                    curve_geoms[m.id] = tuple((np.full(n, np.nan), np.full(n, np.nan)) for _ in m.geom)
             elif m.kind is MarkKind.CURVE and m.name in curves:
                 rows = curves[m.name]
                 count = len(m.geom)
@@ -374,3 +387,26 @@ def _arc_box(cx, cy, r, a0, sw) -> tuple:
         ys.append(np.where(inside, cy + r * math.sin(q * quarter), ys[0]))
     X, Y = np.stack(xs), np.stack(ys)
     return (X.min(0), X.max(0), Y.min(0), Y.max(0))
+
+
+def _chain_points(chain: Any, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """The points a swept chain is drawn through at every value, as ``take(chain, i).curve_points()`` gives
+    them value by value: arrays (points, values).  A French curve's samples by the same Bernstein weights and
+    einsum as :meth:`~construct.kernel.curves.BezierCurve.sample`, its ends exact."""
+    if chain.kind != "bezier":
+        pts = chain.curve_points()
+        return (np.array([np.broadcast_to(p.x, (n,)) for p in pts], dtype=float),
+                np.array([np.broadcast_to(p.y, (n,)) for p in pts], dtype=float))
+    segs = chain.segments()
+    ctrl = np.empty((len(segs), 4, 2, n))
+    for k, seg in enumerate(segs):
+        for j, p in enumerate(seg):
+            ctrl[k, j, 0], ctrl[k, j, 1] = p.x, p.y
+    per = 16  # curve_points' pieces per segment
+    t = np.arange(per + 1)[:, None] / per
+    s = 1.0 - t
+    weights = np.hstack([s ** 3, 3.0 * s * s * t, 3.0 * s * t * t, t ** 3])
+    pts = np.einsum("tj,kjdn->ktdn", weights, ctrl)
+    pts[:, 0], pts[:, -1] = ctrl[:, 0], ctrl[:, 3]
+    flat = np.concatenate([pts[:, :-1].reshape(-1, 2, n), ctrl[-1:, 3]])
+    return flat[:, 0], flat[:, 1]

@@ -36,7 +36,6 @@ the analytic curve.
 
 from __future__ import annotations
 
-import math
 
 from ...kernel.division import NAMES as DIVISION_NAMES
 from ...kernel.protocol import Caption
@@ -65,7 +64,7 @@ def inertia_plate(fig) -> dict:
     """Fig. 78/79: the curve heavy, tangents thin, the infinite-rod line dash-dotted and lettered,
     F/f and m dimensioned, the pressure scale beside the diagram, the signs of the zones.
 
-    Positions are the constructed points; the scale bar is the given drawn length of 1 kg/cm².
+    Positions are the constructed points; the scale bar is the given drawn length of 1 at (1 kg/cm²).
     """
     R = fig.replay
     n = fig.params["parts"]
@@ -76,13 +75,14 @@ def inertia_plate(fig) -> dict:
     foot5, q5 = R["X.top"], R["q5"]
     t = 0.42
     on_inf = (E[0] + t * (F[0] - E[0]), E[1] + t * (F[1] - E[1]))
-    slope = math.degrees(math.atan2(F[1] - E[1], F[0] - E[0]))
     up, down = R[f"K{max(1, n // 6)}"], R[f"K{n - max(1, n // 6)}"]
     furniture = [
         {"kind": "dimension", "a": tuple(D0), "b": tuple(E), "text": "F/f", "offset": 0.12 * r},
         {"kind": "dimension", "a": tuple(foot5), "b": tuple(q5), "text": "m", "offset": 0.1 * r},  # clear of the curve
-        {"kind": "lettering", "at": (on_inf[0] + 0.06 * r, on_inf[1] + 0.09 * r), "text": "L = ∞", "angle": slope},
-        {"kind": "scale", "origin": (D1[0] + 0.2 * r, 0.0), "end": (D1[0] + 0.2 * r, unit), "text": "1 kg/cm²"},
+        # upright: turned along the line the ∞ read as an 8
+        {"kind": "lettering", "at": (on_inf[0] + 0.03 * r, on_inf[1] + 0.05 * r), "text": "L = ∞", "anchor": "start"},
+        # the pressure scale close beside the diagram, in the unit the caption names (F/f = 1 at)
+        {"kind": "scale", "origin": (D1[0] + 0.09 * r, 0.0), "end": (D1[0] + 0.09 * r, unit), "text": "1 at"},
         {"kind": "sign", "at": (up[0], 0.4 * up[1]), "text": "+"},
         {"kind": "sign", "at": (down[0], 0.4 * down[1]), "text": "−"},
     ]

@@ -73,7 +73,7 @@ __all__ = ["TANGENTIAL", "build_tangential", "tangential_checks", "ok_over_r", "
 
 
 def tangential_wording(fig: Figure, lang: str) -> list[str]:
-    """The givens as Baumann writes them: κ = P/Bmax, the rod, the diagram (or a digitised card), the scale and
+    """The givens as Baumann writes them: κ = P/Bₘₐₓ, the rod, the diagram (or a digitised card), the scale and
     the division; over a revolution the machine, its cranks and the low-pressure cylinder."""
     g = fig.replay.givens
     if fig.params.get("force") == "unit":
@@ -84,7 +84,7 @@ def tangential_wording(fig: Figure, lang: str) -> list[str]:
         return [x for x in [ratio("r/L", g["rod_ratio"], lang), *revolution(fig, lang), division(fig, lang),
                             *card(fig, lang), *low_pressure(fig, lang)] if x]
     kappa = g["admission"] / (g["pressure_ratio"] * (1.0 + 1.0 / g["rod_ratio"]))
-    out = ([f"κ = P/Bmax = {number(round(kappa, 9), lang)}", ratio("r/L", g["rod_ratio"], lang)]
+    out = ([f"κ = P/Bₘₐₓ = {number(round(kappa, 9), lang)}", ratio("r/L", g["rod_ratio"], lang)]
            + diagram(g, lang) + [scale(g, lang), division(fig, lang)])
     if "lp.admission" in g:  # two cylinders, two diagrams: say whose the first givens are
         out[2] = ("Hochdruck: " if lang == "de" else "high pressure: ") + out[2]

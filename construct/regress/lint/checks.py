@@ -24,6 +24,9 @@ small-label    labels smaller than 9 px on the screen
 small-mark     a mark of the current step smaller than 12 px on the screen (unless a ring of
                the step around it is larger)
 outside        a label (partly) outside the view
+through, caption-lines, caption-break
+               on a plate: a stroke through a letter's core, a caption too long or broken
+               inside a number or a formula (:mod:`.plates`)
 =============  =====================================================================
 """
 
@@ -37,11 +40,13 @@ from dataclasses import dataclass
 from typing import Iterable, Iterator
 
 from ...render.lettering import segment_meets_box
+from . import plates
 from .sheet import END_LEVEL, Box, Sheet
 
 __all__ = ["Finding", "KINDS", "check_sheet", "view_count", "MIN_LABEL_PX", "MIN_MARK_PX", "MIN_OPACITY", "VIEW"]
 
-KINDS = ("overlap", "on-point", "struck", "small-label", "small-mark", "outside", "leader", "caption-name", "fill")
+KINDS = ("overlap", "on-point", "struck", "small-label", "small-mark", "outside", "leader", "caption-name",
+         "fill") + plates.KINDS
 #: Letters smaller than this on the screen cannot be read from a seat in the classroom (px).
 MIN_LABEL_PX = 9.0
 #: The current step's mark must be at least this large on the screen to be seen at once (px).
@@ -464,6 +469,8 @@ def check_sheet(sheet: Sheet, screen: tuple[float, float] = VIEW) -> list[Findin
     out += _leaders(sheet, views)
     out += _caption_names(sheet, views, seen)
     out += _fill(sheet, views)
+    out += plates.check_plate(sheet, lambda kind, labels, ids, message: _finding(kind, sheet, views, views.all(),
+                                                                                 labels, ids, message))
     return out
 
 

@@ -41,8 +41,8 @@ from ..svgdiff.geometry import arc_centre, parse_path, parse_transform
 from .cascade import PROPERTIES, Cascade, Look, Node, declarations
 from .fonts import text_extents
 
-__all__ = ["Sheet", "Text", "Dot", "Stroke", "Leader", "read_sheet", "read_views", "player_data", "LintInputError",
-           "STATES", "Box", "read_moves", "END", "END_LEVEL"]
+__all__ = ["Sheet", "Text", "Dot", "Stroke", "Line", "Leader", "read_sheet", "read_views", "player_data",
+           "LintInputError", "STATES", "Box", "read_moves", "END", "END_LEVEL"]
 
 Box = tuple[float, float, float, float]
 Matrix = tuple[float, float, float, float, float, float]
@@ -106,6 +106,10 @@ class Text:
     unit: float = 1.0
     #: Its letter group, numbered in the order the groups stand in the file (None: set on the sheet).
     lbg: int | None = None
+    #: The box its glyphs' ink covers in its own coordinates (before its transforms), and those transforms:
+    #: a turned letter's ink is a turned box on the sheet (a plate's core test, :mod:`.plates`).
+    ink: Box = (0.0, 0.0, 0.0, 0.0)
+    ctm: Matrix = (1.0, 0.0, 0.0, 1.0, 0.0, 0.0)
 
     @property
     def name(self) -> str:
@@ -152,6 +156,17 @@ class Leader:
     group: str | None
     unit: float
     lbg: int
+
+
+@dataclass(frozen=True, slots=True)
+class Line:
+    """Any stroked line of a plate (construction, result, furniture, hatching, a leader): its straight
+    pieces and half its stroke width."""
+
+    ident: str | None
+    chain: tuple[Node, ...]
+    pieces: tuple[tuple[float, float, float, float], ...]
+    half: float
 
 
 @dataclass(frozen=True, slots=True)
@@ -211,6 +226,10 @@ class Sheet:
     end: bool = False
     #: Per step, what the player writes beside the figure: its caption (German, English) and its group's.
     captions: dict[int, tuple[str, ...]] = field(default_factory=dict)
+    #: A plate (the root ``<svg class="plate">``): one still view, read for every stroked line (:attr:`lines`).
+    plate: bool = False
+    #: A plate's stroked lines of every kind (read for plates only: a stepped figure has thousands).
+    lines: list[Line] = field(default_factory=list)
     #: The looks asked for, by (chain, state, level): every view asks again for the same few.
     _looks: dict[tuple, Look] = field(default_factory=dict, repr=False, compare=False)
 
@@ -513,6 +532,7 @@ def read_sheet(source: str | bytes | Path, name: str, *, data: dict | None = Non
         raise LintInputError(f"{name}: the drawing has no size (no viewBox, width or height)")
     sheet = Sheet(name=name, viewbox=vb, cascade=cascade)
     sheet.marks_steps = _marks_steps(cascade)
+    sheet.plate = "plate" in root.get("class", "").split()
     _Reader(sheet).read(root)
     sheet.steps = sorted(set(sheet.steps))
     sheet.n = sheet.steps[-1] if sheet.steps else 0
@@ -644,7 +664,7 @@ class _Reader:
             anchor, gid, unit, serial = group
             line = tuple(_num(e.get(a)) for a in ("x1", "y1", "x2", "y2"))
             sheet.leaders.append(Leader(e.get("id"), step, chain, anchor, line, gid, unit, serial))  # type: ignore[arg-type]
-        if tag == "circle" and ("pt" in classes or "result" not in classes):
+        if tag == "circle" and ("pt" in classes or ("result" not in classes and not sheet.plate)):
             # a point marker or a thin circle: its centre and radius are all that is read (its box is exact)
             lines = pts = []
         else:
@@ -676,6 +696,10 @@ class _Reader:
             if look.stroked:
                 sheet.strokes.append(Stroke(e.get("id"), step, chain, tuple(_pieces(lines)),
                                             look.stroke_width * scale / 2))
+        if sheet.plate and not (tag == "circle" and "pt" in classes) and not classes & {"halo", "brk"}:
+            look = sheet.look(chain)
+            if look.stroked and look.shown and look.opacity > 0:
+                sheet.lines.append(Line(e.get("id"), chain, tuple(_pieces(lines)), look.stroke_width * scale / 2))
         if step is not None and not classes & {"leader", "halo", "brk", "brkline"}:
             if tag == "circle":  # exact: the flattened outline's corners fall inside the circle
                 cx, cy = _at(ctm, _num(e.get("cx")), _num(e.get("cy")))
@@ -702,6 +726,7 @@ class _Reader:
         margin = max(margin, MIN_MARGIN)
         corners = [_at(ctm, x + shift + a, y + b) for a in (ix0 - margin, ix1 + margin)
                    for b in (iy0 - margin, iy1 + margin)]
+        ink = (x + shift + ix0, y + iy0, x + shift + ix1, y + iy1)
         ident = e.get("id")
         owner = None
         if ident:
@@ -711,7 +736,7 @@ class _Reader:
         scale = math.sqrt(abs(ctm[0] * ctm[3] - ctm[1] * ctm[2]))
         anchor, gid, unit, serial = group if group is not None else (None, None, 1.0, None)
         sheet.texts.append(Text(len(sheet.texts), text, kind, ident, owner, step, chain, _box_of(corners),
-                                look.font_size * scale, anchor, gid, unit, serial))
+                                look.font_size * scale, anchor, gid, unit, serial, ink, ctm))
 
 
 def _text_of(e: ET.Element) -> str:

@@ -194,16 +194,18 @@ def flywheel_rim_plate(fig: Figure) -> dict:
     hub_top = R["HSU"][1]
     gap = 0.025 * r1
 
-    def thickness(top: str, bottom: str, text: str, offset: float, side: float) -> dict:
-        # a vertical dimension between the two faces, its letter upright beside it
+    def thickness(top: str, bottom: str, text: str, offset: float, side: float, up: float = 0.0) -> dict:
+        # a vertical dimension between the two faces, its letter upright beside it (*up*: raised off the centre
+        # line, which would run through it)
         (x, y0), (_, y1) = R[top], R[bottom]
         return {"kind": "dimension", "a": (x, y0), "b": (x, y1), "text": text, "offset": offset,
-                "text_at": (x + offset + side, (y0 + y1) / 2)}
+                "text_at": (x + offset + side, (y0 + y1) / 2 + up)}
 
     x_hub = R["U.H3"][0]
     furniture = [
-        thickness("U2", "D2", "b₂", gap, 0.03 * r1),
-        thickness("U5", "D5", "b", 0.0, 0.022 * r1),
+        thickness("U2", "D2", "b₂", gap, 0.03 * r1, 0.022 * r1),
+        # (the disc is thinner there than the letter is high: b stands above its face)
+        thickness("U5", "D5", "b", 0.0, 0.022 * r1, (R["U5"][1] - R["D5"][1]) / 2 + 0.016 * r1),
         thickness("KU", "KD", "b₁", (R["rim.K1"][0] - R["R1"][0]) + gap, 0.025 * r1),
         {"kind": "lettering", "at": ((R["HSU"][0] + x_hub) / 2, hub_top + 0.025 * r1), "text": "Nabe"},
         {"kind": "lettering", "at": (R["R1"][0], R["R1"][1] + a + 0.025 * r1), "text": "Kranz"},

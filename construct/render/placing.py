@@ -317,15 +317,18 @@ class Placing:
 
     def leader_line(self, dx: float, dy: float, text: str = "") -> tuple[float, float, float, float]:
         """A leader from a point to its letter *text* set at (dx, dy) from it (the baseline's middle, letter
-        units): from a quarter letter off the point to three quarters short of the letter's middle, or sooner,
-        where it meets the letter's white (a wide letter, M₁ 19°12′, is not run into)."""
+        units): from a quarter letter off the point to where it meets the letter's white -- a wide letter
+        (M₁ 19°12′) is not run into, a narrow one (I) not left short of -- or, without *text*, to three quarters
+        short of the letter's middle."""
         st = self.style
         size = st.label_size
         cx, cy = dx, dy - 0.35 * size
         n = math.hypot(cx, cy) or 1.0
         a, b = 0.25 * size, n - 0.75 * size
         if text:
-            b = min(b, _entry(label_box(dx, dy, text, size, st.label_font, st.label_italic), cx / n, cy / n))
+            entry = _entry(label_box(dx, dy, text, size, st.label_font, st.label_italic), cx / n, cy / n)
+            if math.isfinite(entry):
+                b = max(a, entry)
         return (a * cx / n, a * cy / n, b * cx / n, b * cy / n)
 
     def place_end(self, letter: float, marks: Sequence[Mark], taken: Sequence[tuple[float, float, float, float]],

@@ -53,6 +53,16 @@ from .viewport import Viewport, camera_transform, camera_zoom
 
 __all__ = ["render_svg", "Drawing", "EndView", "mark_geometry", "mark_layer", "point_radius", "END_MARGIN_PX"]
 
+#: The player's letter scale in a style rule (``var(--ls)``, ``var(--ls,var(--zs,1))``), which the end state's own
+#: file writes out as its number.
+_LETTER_SCALE = re.compile(r"var\(--ls(?:,var\(--zs(?:,1)?\))?\)")
+
+#: The end state's points scaled by the letter scale (:data:`construct.render.styles.END_CSS`); its own file draws
+#: them at that scale instead (:data:`_POINT_R`).
+_END_POINTS = ".fin .lbg>.lb,.fin .lbg>.leader,.fin .pt{"
+_END_POINTS_OWN = ".fin .pt{transform:none}\n.fin .lbg>.lb,.fin .lbg>.leader{"
+_POINT_R = re.compile(r'(<circle class="pt[^"]*"[^>]*? r=")([0-9.]+)"')
+
 #: The margin round the end state's drawing on its sheet (screen px at the end view).
 END_MARGIN_PX = 14.0
 
@@ -741,6 +751,9 @@ class Drawing:
         h = (y1 - y0) * s + foot
         f = self.doc.factory
         css = st.css() + "".join("\n" + c for c in (self.extra_css,) if c)
+        # the letter scale written out: every letter inherits the root's --ls here, and a renderer without CSS
+        # variables (cairosvg, Inkscape's import) would drop each element scaled by var() -- letters and points
+        css = _LETTER_SCALE.sub(fmt(e.letter, 4), css).replace(_END_POINTS, _END_POINTS_OWN)
         dwg = self.doc.drawing(size=(fmt(w), fmt(h)), viewBox=f"{fmt(x0)} {fmt(y0)} {fmt(x1 - x0)} {fmt(h / s)}",
                                class_=f"fin zl{e.level}", style=f"--ls:{fmt(e.letter, 4)}")
         dwg.add(f.style("\n" + css + "\n"))
@@ -753,7 +766,9 @@ class Drawing:
                 g.add(f.text(text, x=[fmt(m)], y=[fmt(st.caption_size + i * step)],
                              class_=f"cap{(' ' + kind) if kind else ''}"))
             dwg.add(g)
-        return self.doc.text(dwg)
+        # (and a point's marker at that scale in its radius: such a renderer scales about the origin, not the
+        # marker's centre)
+        return _POINT_R.sub(lambda m: f"{m.group(1)}{fmt(float(m.group(2)) * e.letter, 3)}\"", self.doc.text(dwg))
 
     def final(self, caption: Sequence[str] | None = None, *, centred: bool = False) -> str:
         """All steps, nothing highlighted, with the figure's caption lines (the layered figure)."""

@@ -419,6 +419,33 @@ def test_the_players_last_step_is_the_end_state(fractions):
     assert last[3] < 0.75 * full[3]
 
 
+def test_the_end_states_file_shows_its_letters_and_points_without_css_variables(fractions):
+    """final.svg shows the end state in a renderer without CSS variables or transform-origin (cairosvg): no
+    element is scaled by var(--ls), and each point marker is drawn at the letter scale in its radius, at its place."""
+    import cairosvg
+    import numpy as np
+    from PIL import Image
+
+    _c, fig, out = fractions
+    text = (out / "final.svg").read_text(encoding="utf-8")
+    assert "var(--ls" not in text
+    ls = float(re.search(r'style="--ls:([0-9.]+)"', text).group(1))
+    radii = {float(r) for r in re.findall(r'<circle class="pt[^"]*"[^>]*? r="([0-9.]+)"', text)}
+    # the markers' radii (2.4 and 1.6 canvas px: results and the rest) at the letter scale
+    assert radii and all(min(abs(r - 2.4 * ls), abs(r - 1.6 * ls)) < 2e-3 for r in radii), (radii, ls)
+    # rasterised, every point marker is drawn where it stands: ink at its centre
+    png = out / "final.png"
+    svg_w = float(re.search(r'<svg[^>]*? width="([0-9.]+)"', text).group(1))
+    x0, y0 = (float(v) for v in re.search(r'viewBox="([-0-9.]+) ([-0-9.]+)', text).groups())
+    vb_w = float(re.search(r'viewBox="[-0-9.]+ [-0-9.]+ ([0-9.]+)', text).group(1))
+    cairosvg.svg2png(url=str(out / "final.svg"), write_to=str(png), output_width=round(svg_w))
+    ink = np.asarray(Image.open(png).convert("L")) < 128
+    k = svg_w / vb_w
+    centres = [(float(x), float(y)) for x, y in re.findall(r'<circle class="pt result[^"]*" cx="([-0-9.]+)" cy="([-0-9.]+)"', text)]
+    assert centres
+    assert all(ink[round((y - y0) * k), round((x - x0) * k)] for x, y in centres)
+
+
 @pytest.mark.parametrize("name, params", [("crank", dict(parts=18, rod_ratio=5.0)), ("flywheel-rim", {}),
                                           ("indicator-diagram", {})])
 def test_fine_work_is_seen_magnified(name, params):

@@ -45,7 +45,7 @@ from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
 from .marks import could_show
 from .placing import Placing, PlacedLabel, place_outwards, text_gap
 from .plate import (Lettering, Stroke, break_elements, crossing_lines, extent, furniture_elements, furniture_pieces, plain,
-                    subscript_runs)
+                    subscript_runs, text_elements)
 from .scene import Mark, MarkKind, Scene, extreme_points
 from .styles import PLAIN, Style
 from .svgdoc import fmt
@@ -323,9 +323,10 @@ class Drawing:
         for i, it in enumerate(self.scene.end_furniture):
             if isinstance(it, Lettering):
                 x, y = self.vp.px(*it.at)
-                w = text_width(it.text, size * it.size, st.label_font, st.label_italic)
+                text = plain(it.text)  # as a reader sees it (P_b: Pb, its b a smaller run)
+                w = text_width(text, size * it.size, st.label_font, st.label_italic)
                 x += {"start": w / 2, "end": -w / 2}.get(it.anchor, 0.0)
-                out.append((f"fur{i}", (x, y), it.text))
+                out.append((f"fur{i}", (x, y), text))
         return out
 
     def _text_box(self, elem: Any, size: float) -> tuple[float, float, float, float] | None:
@@ -622,9 +623,10 @@ class Drawing:
                     x1, y1, x2, y2 = pl.leader_line(rel[0], rel[1], text)
                     g.add(f.line(start=(fmt(px + ls * x1), fmt(py + ls * y1)), end=(fmt(px + ls * x2), fmt(py + ls * y2)),
                                  class_="fur thin"))
-                attrs = {"style": f"font-size:{fmt(self.end.size * it.size)}px"} if it.size != 1.0 else {}
-                for cls in ("lb halo", "lb fur-text"):
-                    g.add(f.text(text, x=[fmt(x)], y=[fmt(y)], class_=cls, **attrs))
+                # (its index set below the line as the plate sets it: P_b, F·p_ü)
+                for el in text_elements(f, (x, y - 0.35 * self.end.size * it.size), it.text, self.end.size,
+                                        rel=it.size):
+                    g.add(el)
             elems.append(g)
         if not elems:
             return None

@@ -43,8 +43,8 @@ import numpy as np
 
 from .areas import Area, area_between_op, planimeter_height_op, planimeter_op
 from .closed_curves import closed_french_curve_op
-from .curves import (BezierCurve, Polyline, crossings, crossings_of_sweeps, french_curve_op, parabola_envelope_op,
-                     polyline_op)
+from .curves import BezierCurve, Polyline, crossings, crossings_of_sweeps
+from .curve_ops import french_curve_op, parabola_envelope_op, polyline_op
 from .errors import DegenerateObject, GeometryError, NoIntersection
 from .geometry import (SCALAR, Circle, Length, Line, Point, Sweep, raw_circle, raw_point, circle_circle, line_circle,
                        line_line, sets_where, stack, take)

@@ -501,6 +501,10 @@ class Placing:
                           sc.display_name(o.name), size * f, st.label_font, st.label_italic, HALO_PX / 2 * f)
                 for k in seen_with.get(lvl, {}).get(m.step, ()) if lvl in shown_at[k]
                 for o in tags_of.get(k, ()) if o.id in out]
+            if st.ring_px and lvl == lowest.get(m.step, 0):
+                # the ring the player draws round the point while its step is current: the tag beside it, not under
+                rr = st.ring_px * f
+                taken.append((x - rr, y - rr, x + rr, y + rr))
             item = (m.id, m.role, m.step, (x, y), label_offset_direction(m.geom, scale=span), sc.display_name(m.name))
             ds, only = near([item], z, f)
             got = place([item], size * f, ds, self._lines_at(z, size * f), only=only, font=st.label_font,

@@ -58,10 +58,9 @@ __all__ = ["render_svg", "Drawing", "EndView", "mark_geometry", "mark_layer", "p
 _LETTER_SCALE = re.compile(r"var\(--ls(?:,var\(--zs(?:,1)?\))?\)")
 
 #: The end state's points scaled by the letter scale (:data:`construct.render.styles.END_CSS`); its own file draws
-#: them at that scale instead (:data:`_POINT_R`).
+#: them at that scale in their radius instead.
 _END_POINTS = ".fin .lbg>.lb,.fin .lbg>.leader,.fin .pt{"
 _END_POINTS_OWN = ".fin .pt{transform:none}\n.fin .lbg>.lb,.fin .lbg>.leader{"
-_POINT_R = re.compile(r'(<circle class="pt[^"]*"[^>]*? r=")([0-9.]+)"')
 
 #: The margin round the end state's drawing on its sheet (screen px at the end view).
 END_MARGIN_PX = 14.0
@@ -770,7 +769,11 @@ class Drawing:
             dwg.add(g)
         # (and a point's marker at that scale in its radius: such a renderer scales about the origin, not the
         # marker's centre)
-        return _POINT_R.sub(lambda m: f"{m.group(1)}{fmt(float(m.group(2)) * e.letter, 3)}\"", self.doc.text(dwg))
+        root = self.doc.own_tree(dwg)
+        for c in root.iter("circle"):
+            if "pt" in (c.get("class") or "").split():
+                c.set("r", fmt(float(c.get("r")) * e.letter, 3))
+        return self.doc.tree_text(root)
 
     def final(self, caption: Sequence[str] | None = None, *, centred: bool = False) -> str:
         """All steps, nothing highlighted, with the figure's caption lines (the layered figure)."""

@@ -1,6 +1,7 @@
 """The operations that draw curves through constructed points: entries of the op table
 (:mod:`construct.kernel.ops`), each taking (args, params, givens, refs, xp) and returning its outputs -- the
-French curve along an axis (with its array form for a sweep), the parabola's envelope, the polyline.
+French curve along an axis (with its array form for a sweep), the parabola's envelope, the polyline, a
+digitised diagram traced from its givens (trace) and a vertex of a drawn chain.
 
 The curves themselves, and where a line crosses them, are :mod:`construct.kernel.curves`.
 
@@ -12,14 +13,15 @@ The curves themselves, and where a line crosses them, are :mod:`construct.kernel
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
 from .curves import BezierCurve, Polyline, coordinate_rows
-from .errors import GeometryError
+from .errors import DegenerateObject, GeometryError
 from .geometry import SCALAR, Line, Point, raw_point, sets_where
 
-__all__ = ["frame_of", "french_curve_op", "parabola_envelope_op", "polyline_op"]
+__all__ = ["frame_of", "french_curve_op", "parabola_envelope_op", "polyline_op", "trace_op", "vertex_op"]
 
 
 def frame_of(axis: Line) -> tuple[float, float, float, float]:
@@ -170,3 +172,61 @@ def parabola_envelope_op(args, params, givens, refs, xp):
 def polyline_op(args, params, givens, refs, xp):
     """The constructed points joined in order by the straightedge."""
     return (Polyline(args, closed=bool(params.get("closed"))),)
+
+
+def trace_op(args, params, givens, refs, xp):
+    """A digitised diagram traced onto the drawing and its points joined by the straightedge.
+
+    Inputs: the stroke's ends *head* and *crank*, and two points *up0*, *up1* whose left side the pressures
+    stand on.  Each point i: x_i (the given ``xs[i]``) times the stroke length (the product of the givens
+    ``stroke`` times ``stroke_factor``) from *head* towards *crank*, p_i (``ps[i]``) times the pressure scale
+    (the product of ``pressure``) up the perpendicular.  ``extend`` continues the line level to both dead
+    centres where it stops short of them (x = 0, 1); ``closed`` joins the last point to the first.  In a
+    sweep the same, set by set, on arrays; the extension must then be the same in every set (the chain's
+    points are the same in number).
+    """
+    head, crank, up0, up1 = args
+    length = xp.hypot(crank.x - head.x, crank.y - head.y)
+    ux, uy = (crank.x - head.x) / length, (crank.y - head.y) / length
+    vx, vy = up1.x - up0.x, up1.y - up0.y
+    norm = xp.hypot(vx, vy)
+    nx, ny = -vy / norm, vx / norm   # the left normal of up0 -> up1
+    stroke = float(params.get("stroke_factor", 1.0))
+    for name in params["stroke"]:
+        stroke = stroke * givens[name]
+    scale = 1.0
+    for name in params["pressure"]:
+        scale = scale * givens[name]
+    number = float if xp is SCALAR else (lambda v: np.asarray(v, dtype=float))
+    xs = [number(givens[n]) for n in params["xs"]]
+    ps = [number(givens[n]) for n in params["ps"]]
+    if params.get("extend"):  # each end to the dead centre it is nearer: 0 (head) or 1 (crank)
+        forward = _same_in_all(xs[0] <= xs[-1], "runs from the head end in some sets and not in others")
+        first, last = (0.0, 1.0) if forward else (1.0, 0.0)
+        if _same_in_all(xs[0] != first, "reaches its first dead centre in some sets and not in others"):
+            xs, ps = [first] + xs, [ps[0]] + ps
+        if _same_in_all(xs[-1] != last, "reaches its last dead centre in some sets and not in others"):
+            xs, ps = xs + [last], ps + [ps[-1]]
+    pts = [Point(head.x + ux * x * stroke + nx * p * scale, head.y + uy * x * stroke + ny * p * scale)
+           for x, p in zip(xs, ps)]
+    return (Polyline(pts, closed=bool(params.get("closed"))),)
+
+
+def _same_in_all(cond: Any, what: str) -> bool:
+    """A decision of the trace that fixes how many points it has: one value, or the same in every set of a sweep."""
+    if isinstance(cond, np.ndarray):
+        if cond.any() and not cond.all():
+            raise GeometryError("the traced diagram " + what + sets_where(~cond if cond[0] else cond))
+        return bool(cond.all())
+    return bool(cond)
+
+
+def vertex_op(args, params, givens, refs, xp):
+    """A point of a drawn chain: its vertex ``index`` (the end of a chord the draftsman lays a straightedge on)."""
+    (chain,) = args
+    if not isinstance(chain, Polyline):
+        raise GeometryError("a vertex is a point of a chain of chords; this graph is not one")
+    i = int(params["index"])
+    if not 0 <= i < len(chain.points):
+        raise DegenerateObject(f"the chain has {len(chain.points)} points, no point {i}")
+    return (chain.points[i],)

@@ -326,14 +326,20 @@ def crossings(curve: Any, line: Line) -> tuple[Point, ...]:
                 add(*BezierCurve._at(seg, t))
     else:
         pts = curve.curve_points()
-        for a, b in zip(pts, pts[1:]):
-            sa, sb = side(a), side(b)
-            if sa == 0.0:
+        # every vertex's side in one numpy pass (the same arithmetic as side(), element by element); only the
+        # chords that touch or cross the line are cut -- a traced card has thousands of chords, two of them cross
+        xy = np.asarray(pts, dtype=float)
+        s = (xy[:, 0] - px) * nx + (xy[:, 1] - py) * ny
+        sa, sb = s[:-1], s[1:]
+        for k in np.flatnonzero((sa == 0.0) | ((sa < 0.0) & (sb > 0.0)) | ((sb < 0.0) & (sa > 0.0))):
+            a, b = pts[k], pts[k + 1]
+            ta, tb = float(sa[k]), float(sb[k])
+            if ta == 0.0:
                 add(a[0], a[1])
-            if (sa < 0.0 < sb) or (sb < 0.0 < sa):
-                t = sa / (sa - sb)
+            if (ta < 0.0 < tb) or (tb < 0.0 < ta):
+                t = ta / (ta - tb)
                 add(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
-        if side(pts[-1]) == 0.0:
+        if float(s[-1]) == 0.0:
             add(pts[-1][0], pts[-1][1])
     return tuple(found)
 

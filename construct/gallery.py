@@ -216,7 +216,7 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any],
             from .render.site import thumbnail_view
             from .render.svg import Drawing
 
-            drawing = drawing or Drawing(scene_for(c, fig), STYLES[style])
+            drawing = drawing or Drawing(scene_for(c, fig, ending=STYLES[style].camera), STYLES[style])
             thumb = thumbnail_view(drawing)
         # the plates also as PDF or TikZ when asked (construct gallery --format): the historical style's
         info = write_outputs(sdir, c, fig, STYLES[style], frames=FRAME_MODE, fig_number=number, protocol=False,
@@ -251,7 +251,7 @@ def _live(c, fig, style: str) -> tuple[dict[str, Any] | None, Any]:
     givens = live_givens(c, fig)
     if not givens:
         return None, None
-    drawing = Drawing(scene_for(c, fig), STYLES[style])
+    drawing = Drawing(scene_for(c, fig, ending=STYLES[style].camera), STYLES[style])
     return live_data(live_sweep(c, fig, givens[0], style=STYLES[style], drawing=drawing)), drawing
 
 

@@ -238,6 +238,9 @@ def test_angles_read_off_the_figure_are_shown_at_the_built_value_only(browser, t
     path = tmp_path / "live.html"
     path.write_text(with_live((tmp_path / "player.html").read_text(), live_data(live)))
     page, errors = _open(browser, path)
+    # the step before the last: the last shows the end state, which letters the angles as the plate does
+    page.evaluate("() => { const s = document.getElementById('slider'); s.value = +s.max - 1; "
+                  "s.dispatchEvent(new Event('input')); }")
     shown = """ids => ids.map(id => { const t = document.getElementById(id);
                                     return !!t && t.getClientRects().length > 0 && getComputedStyle(t).display !== 'none'; })"""
     letters = [f"{i}" for i in live.readings] + ["s0001-O-label"]

@@ -59,7 +59,7 @@ class Measure:
         self.style = style or STYLES["teaching"]
         # *drawing*: the built figure's drawing in this style, if the caller has it (the player's own)
         if drawing is None:
-            drawing = Drawing(scene_for(construction, built), self.style)
+            drawing = Drawing(scene_for(construction, built, ending=self.style.camera), self.style)
         scene = drawing.scene
         full = drawing.full_view
         self.steps = [s.index for s in scene.steps]
@@ -212,14 +212,14 @@ class Measure:
 
 def player_page(construction: Construction, figure: Figure, style: Any) -> str:
     """The player page of *figure* (the same scene, drawing and fit as ``construct replay`` writes)."""
-    scene = scene_for(construction, figure)
+    scene = scene_for(construction, figure, ending=style.camera)
     return player_html(scene, style, drawing=Drawing(scene, style))
 
 
 def player_page_and_fit(construction: Construction, figure: Figure, style: Any) -> tuple[str, tuple[float, float, float]]:
     """:func:`player_page` and the fit of its drawing to the view: (ox, oy, s), a point (x, y) of the
     construction is drawn at (ox + s x, oy - s y) px."""
-    scene = scene_for(construction, figure)
+    scene = scene_for(construction, figure, ending=style.camera)
     drawing = Drawing(scene, style)
     return player_html(scene, style, drawing=drawing), fit_of(drawing.vp)
 

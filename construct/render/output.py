@@ -124,11 +124,20 @@ def _size(n: float) -> str:
     return f"{n:.3g} TB"
 
 
-def scene_for(construction: Described | None, figure: Drawn, *, plate: "bool | Plate" = False) -> Scene:
+def scene_for(construction: Described | None, figure: Drawn, *, plate: "bool | Plate" = False,
+              ending: bool = False) -> Scene:
     """The figure's scene; a plate carries the construction's furniture and line looks (:mod:`.plate`; *plate*
-    may be the construction's :class:`~construct.render.plate.Plate` already made)."""
-    if plate:
+    may be the construction's :class:`~construct.render.plate.Plate` already made).
+
+    With *ending* (a teaching sequence) the scene carries its end state: the plate's objects, looks and
+    furniture on the construction's sheet (:meth:`construct.render.scene.Scene.in_end`); a plate laid out in
+    panels gives its looks only (its furniture stands where the panels move the diagrams).
+    """
+    if plate or ending:
         p = plate if isinstance(plate, Plate) else plate_of(construction, figure)
+        if ending:
+            return build_scene(figure, title=figure_title(construction, figure), ending=True,
+                               end_furniture=() if p.panels else p.furniture, end_looks=dict(p.looks))
         return build_scene(figure, title=figure_title(construction, figure), plate=True,
                            furniture=p.furniture, looks=dict(p.looks), panels=p.panels)
     return build_scene(figure, title=figure_title(construction, figure))
@@ -285,7 +294,8 @@ def write_outputs(stage: Path, construction: Described | None, figure: Drawn, st
     if drawing is not None:
         scene = drawing.scene
     else:
-        scene = scene_for(construction, figure) if (frames != "none" or outputs or not st.plate) else None
+        scene = scene_for(construction, figure, ending=st.camera) if (frames != "none" or outputs or not st.plate) \
+            else None
     ks = frame_steps(scene, frames) if scene is not None else []
     # the frames, the animation, the player and the storyboard are for the screen: on its paper (the cream tint
     # of the historical style); final.svg is the figure as printed

@@ -418,6 +418,12 @@ def _text(f: Any, at: XY, text: str, size: float, anchor: str = "middle", angle:
     return out
 
 
+def text_elements(f: Any, at: XY, text: str, size: float, *, rel: float = 1.0) -> list[Any]:
+    """A piece of the plate's lettering as it draws it: halo and text centred on *at* (canvas px), an index
+    (P_b, F·p_ü) set below the line as a smaller run; *rel*: its size relative to the letters' *size*."""
+    return _text(f, at, text, size, rel=rel)
+
+
 def subscript_runs(text: str) -> list[tuple[str, bool]]:
     """*text* as runs (text, set below the line?): an index is written ``_x`` or ``_{xyz}`` (P_b, F·p_ü).
 

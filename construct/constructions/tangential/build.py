@@ -371,7 +371,7 @@ def _free_force_mark(b: Builder, f: Mapping[str, str], ctx: Any, d: Any, scale: 
         E, R = pts["steam"], pts["back"]
         dc_p = ctx.D0 if 2 * k <= n else ctx.D1
         dc_2 = ctx.D0 if (4 * k < n or 4 * k > 3 * n) else ctx.D1
-        V = ordinate_value(b, ctx, f"ND{k}" if p else f"b{k}", P, point_kind(k, n), dc_p, dc_2)
+        V = ordinate_value(b, ctx, f"ND{k}" if p else f"b{k}", P, point_kind(k, n), dc_p, dc_2, number=str(k))
         kF = b.circle_segment(f"{p}F{k}.k", E, ctx.gf.origin, V, de="Beschleunigungsdruck von der Dampflinie abgezogen",
                               en="acceleration force taken off the steam line")
         F = b.intersect(f"{p}F{k}", o, kF, rule=("left", ctx.gf.origin, V), role="result",

@@ -29,7 +29,7 @@ import sys
 import warnings
 from dataclasses import dataclass
 from enum import Enum
-from typing import Any, Callable, Iterable, Sequence
+from typing import Any, Callable, Iterable, NamedTuple, Sequence
 
 from ..kernel.errors import HiddenLabelWarning
 from ..kernel.geometry import Circle, Length, Line, Point
@@ -127,8 +127,9 @@ class Scene:
     steps: tuple[Step, ...]
     title: tuple[str, str]
     params: dict
-    #: Broken axis: (x where the break starts, its drawn width, the length it leaves out), drawing units.
-    breaks: tuple[tuple[float, float, float], ...] = ()
+    #: Broken axes (:class:`Break`: where the break starts, its drawn width, the length it leaves out, which
+    #: axis), drawing units.
+    breaks: tuple[Break, ...] = ()
     #: Plate furniture (:mod:`construct.render.plate`): dimensions, angle arcs, scale bars, signs.
     furniture: tuple = ()
     #: What the book plate shows (:func:`plate_names`): what a finished group collapses to.
@@ -557,52 +558,69 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
             if isinstance(obj, Circle) or (isinstance(obj, Line) and protocol.params.get("plate")):
                 have = on.setdefault(name, [])
                 have.extend(p for n, p in shown_pts if _on(obj, p, tol) and p not in have)
-    marks: list[Mark] = []
-    lettered: dict[str, tuple[str, bool]] = {}  # lettered straight lines: their letter, whether in a fan
     in_fan = fanned_lines(protocol.steps)
-    for s in protocol.steps:
-        labels = dict(s.labels)
-        for name in s.outputs:
-            obj = objects.get(name)
-            if obj is None or isinstance(obj, Length) or (shown is not None and name not in shown):
-                continue
-            mid = f"s{s.index:04d}-{_safe_id(name)}"
-            label = labels.get(name)
-            if label and "{∠" in label:
-                label = reading(label, objects)
-            if "unlettered" in (looks or {}).get(name, "").split():
-                label = None  # the plate letters it otherwise (an abscissa, as the book does)
-            common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
-                          group=s.group, label=label, look=(looks or {}).get(name, ""))
-            if isinstance(obj, Point):
-                marks.append(Mark(mid, kind=MarkKind.POINT, geom=(obj[0], obj[1]), **common))
-            elif isinstance(obj, Line):
-                marks.append(Mark(mid, kind=MarkKind.SEGMENT, geom=_segment_extent(obj, on.get(name, []), margin), **common))
-            elif isinstance(obj, Circle):
-                kind, geom = _circle_extent(obj, on.get(name, []), margin, s.role, plate=shown is not None)
-                marks.append(Mark(mid, kind=kind, geom=geom, **common))
-            elif hasattr(obj, "rings"):  # an Area: one mark per piece, each hatched
-                for j, ring in enumerate(obj.rings()):
-                    marks.append(Mark(mid if j == 0 else f"{mid}-{j}", kind=MarkKind.AREA,
-                                      geom=tuple((p[0], p[1]) for p in ring), hatch=obj.hatch_deg, **common))
-            elif hasattr(obj, "curve_points"):
-                # a polyline is drawn as it is measured (y_at, length): straight from point to point
-                straight = getattr(obj, "kind", "") == "polyline"
-                pts = tuple((p[0], p[1]) for p in obj.curve_points())
-                if straight and label:
-                    # lettered at a point of its own on it, placed once the sheet is laid out (below)
-                    marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=True, **{**common, "label": None}))
-                    lettered[mid] = (label, in_fan[name])
-                else:
-                    marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=straight, **common))
-    breaks: tuple[tuple[float, float, float], ...] = ()
+
+    def draw(margin: float) -> tuple[list[Mark], dict[str, tuple[str, bool]]]:
+        """The marks, each line and arc reaching *margin* past the points marked on it."""
+        marks: list[Mark] = []
+        lettered: dict[str, tuple[str, bool]] = {}  # lettered straight lines: their letter, whether in a fan
+        for s in protocol.steps:
+            labels = dict(s.labels)
+            for name in s.outputs:
+                obj = objects.get(name)
+                if obj is None or isinstance(obj, Length) or (shown is not None and name not in shown):
+                    continue
+                mid = f"s{s.index:04d}-{_safe_id(name)}"
+                label = labels.get(name)
+                if label and "{∠" in label:
+                    label = reading(label, objects)
+                if "unlettered" in (looks or {}).get(name, "").split():
+                    label = None  # the plate letters it otherwise (an abscissa, as the book does)
+                common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
+                              group=s.group, label=label, look=(looks or {}).get(name, ""))
+                if isinstance(obj, Point):
+                    marks.append(Mark(mid, kind=MarkKind.POINT, geom=(obj[0], obj[1]), **common))
+                elif isinstance(obj, Line):
+                    marks.append(Mark(mid, kind=MarkKind.SEGMENT, geom=_segment_extent(obj, on.get(name, []), margin), **common))
+                elif isinstance(obj, Circle):
+                    kind, geom = _circle_extent(obj, on.get(name, []), margin, s.role, plate=shown is not None)
+                    marks.append(Mark(mid, kind=kind, geom=geom, **common))
+                elif hasattr(obj, "rings"):  # an Area: one mark per piece, each hatched
+                    for j, ring in enumerate(obj.rings()):
+                        marks.append(Mark(mid if j == 0 else f"{mid}-{j}", kind=MarkKind.AREA,
+                                          geom=tuple((p[0], p[1]) for p in ring), hatch=obj.hatch_deg, **common))
+                elif hasattr(obj, "curve_points"):
+                    # a polyline is drawn as it is measured (y_at, length): straight from point to point
+                    straight = getattr(obj, "kind", "") == "polyline"
+                    pts = tuple((p[0], p[1]) for p in obj.curve_points())
+                    if straight and label:
+                        # lettered at a point of its own on it, placed once the sheet is laid out (below)
+                        marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=True, **{**common, "label": None}))
+                        lettered[mid] = (label, in_fan[name])
+                    else:
+                        marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=straight, **common))
+        return marks, lettered
+
+    marks, lettered = draw(margin)
+    breaks: tuple[Break, ...] = ()
     if panels:
         marks = lay_out(marks, panels, margin, 1e-9 * max(span, 1.0))
         xs = [m.geom[0] for m in marks if m.kind is MarkKind.POINT] or xs
         ys = [m.geom[1] for m in marks if m.kind is MarkKind.POINT] or ys
     elif break_axis and (shown is None or furniture):
         # a plate keeps more of the broken stretch: the rod drawn across it stays a shallow line
-        marks, furniture, breaks = _break(marks, tuple(furniture), BREAK_KEEP if shown is None else PLATE_BREAK_KEEP)
+        broken = _broken(marks, tuple(furniture), shown is None)
+        if shown is None and broken[2]:
+            # a broken figure is drawn at the size it keeps: its lines reach past their points by a margin of
+            # what is left of it (its points and curves, broken alone), not of the length broken out (at
+            # L/r = 50 that would be 1.8 r)
+            kept = 0.035 * _kept_span(marks)
+            if kept < margin:
+                again, letters = draw(kept)
+                smaller = _broken(again, tuple(furniture), True)
+                if smaller[2]:
+                    margin, lettered, broken = kept, letters, smaller
+        marks, furniture, breaks = broken
         if breaks:
             xs = [x for m in marks if m.kind is MarkKind.POINT for x in (m.geom[0],)] or xs
             ys = [y for m in marks if m.kind is MarkKind.POINT for y in (m.geom[1],)] or ys
@@ -632,14 +650,54 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
 
 #: A gap wider than this fraction of the figure, with nothing drawn in it, is broken out of the axis.
 BREAK_FRACTION = 0.2
+#: The same across the figure (a far point below it: the proportional angle's vertex S a rod's length under the
+#: crank, Fig. 27): a tall figure is broken only where the gap is wider than this, so that the books' own
+#: figures (at their rod ratios, S up to 6 r below) are drawn whole, as the books draw them.
+BREAK_FRACTION_Y = 0.3
 #: Width the broken-out stretch keeps, as a fraction of what remains of the figure.
 BREAK_KEEP = 0.07
 #: The same on a plate, where the rod is drawn across the break to its crosshead.
 PLATE_BREAK_KEEP = 0.55
 
 
-def _break(marks: list[Mark], furniture: tuple = (),
-           keep_fraction: float = 0.07) -> tuple[list[Mark], tuple, tuple[tuple[float, float, float], ...]]:
+class Break(NamedTuple):
+    """A stretch broken out of the figure: where the drawn break starts (x, or y for ``axis`` 1; drawing units),
+    its drawn width, and the length it leaves out."""
+
+    start: float
+    width: float
+    left_out: float
+    axis: int = 0
+
+
+def _broken(marks: list[Mark], furniture: tuple, whole: bool) -> tuple[list[Mark], tuple, tuple[Break, ...]]:
+    """The figure broken along x (:func:`_break`) and, unless a plate (*whole* false: a plate keeps its sheet,
+    the books draw S whole), across it."""
+    marks, furniture, breaks = _break(marks, furniture, BREAK_KEEP if whole else PLATE_BREAK_KEEP)
+    if whole and not furniture:
+        marks, _, across = _break(marks, (), BREAK_KEEP, axis=1, fraction=BREAK_FRACTION_Y)
+        breaks += across
+    return marks, furniture, breaks
+
+
+def _kept_span(marks: list[Mark]) -> float:
+    """What the figure's points and curves span once broken alone (:func:`_broken`; as they are, unbroken)."""
+    drawn = [m for m in marks if m.kind in (MarkKind.POINT, MarkKind.CURVE, MarkKind.AREA)]
+    return _span(_broken(drawn, (), True)[0])
+
+
+def _span(marks: list[Mark]) -> float:
+    """The larger side of the box of the marks' points and curves (what the margin is a share of)."""
+    pts = [m.geom for m in marks if m.kind is MarkKind.POINT]
+    pts += [p for m in marks if m.kind in (MarkKind.CURVE, MarkKind.AREA) for p in m.geom]
+    if not pts:
+        return 1e-9
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    return max(max(xs) - min(xs), max(ys) - min(ys), 1e-9)
+
+
+def _break(marks: list[Mark], furniture: tuple = (), keep_fraction: float = 0.07, axis: int = 0,
+           fraction: float = BREAK_FRACTION) -> tuple[list[Mark], tuple, tuple[Break, ...]]:
     """Break the widest empty stretch out of the figure, as a draftsman breaks a long axis.
 
     The crossheads lie a rod length (5 r) to the left of the crank circle;
@@ -647,22 +705,23 @@ def _break(marks: list[Mark], furniture: tuple = (),
     wholly left of the empty stretch move right by what it loses; lines
     that cross it (the stroke line) keep their right end and move their
     left one.  A plate's furniture (the rod drawn to its crosshead) is
-    broken the same way.  Returns the marks, the furniture and ((x where the
-    drawn break starts, its drawn width, the length it stands for),) or ()
-    when there is no such gap.
+    broken the same way.  *axis* 1 breaks across the figure instead: marks
+    wholly below the stretch move up (a vertex a rod's length below the
+    crank).  Returns the marks, the furniture and (:class:`Break`,) or ()
+    when there is no gap wider than *fraction* of the figure.
     """
     from .plate import anchors, shifted
     ivals = []
-    right: dict[int, float] = {}  # a circle's or arc's right end, by its place in *marks* (asked again below)
+    far: dict[int, float] = {}  # a circle's or arc's far end, by its place in *marks* (asked again below)
     for i, m in enumerate(marks):
         if m.kind is MarkKind.SEGMENT or (m.kind is MarkKind.CURVE and m.straight and len(m.geom) == 2):
             continue  # the stroke line spans everything; a rod drawn to its crosshead crosses the break
-        xs = [p[0] for p in extreme_points(m)]
-        if xs:
-            ivals.append((min(xs), max(xs)))
+        cs = [p[axis] for p in extreme_points(m)]
+        if cs:
+            ivals.append((min(cs), max(cs)))
             if m.kind.round:
-                right[i] = ivals[-1][1]
-    ivals.extend((x, x) for x, _ in anchors(furniture))
+                far[i] = ivals[-1][1]
+    ivals.extend((p[axis], p[axis]) for p in anchors(furniture))
     if len(ivals) < 2:
         return marks, furniture, ()
     ivals.sort()
@@ -672,7 +731,7 @@ def _break(marks: list[Mark], furniture: tuple = (),
         if a > reach and (best is None or a - reach > best[1] - best[0]):
             best = (reach, a)
         reach = max(reach, b)
-    if best is None or best[1] - best[0] <= BREAK_FRACTION * total:
+    if best is None or best[1] - best[0] <= fraction * total:
         return marks, furniture, ()
     lo, hi = best
     keep = min(keep_fraction * (total - (hi - lo)), 0.8 * (hi - lo))
@@ -681,21 +740,25 @@ def _break(marks: list[Mark], furniture: tuple = (),
     def sx(x: float) -> float:
         return x + shift if x <= lo else x
 
+    def end(x: float) -> float:  # a line's end, drawn a margin past its last point: with the side it is nearer
+        return x + shift if x <= (lo + hi) / 2 else x
+
     out = []
     for i, m in enumerate(marks):
         g = m.geom
         if m.kind is MarkKind.POINT:
-            g = (sx(g[0]), g[1])
+            g = (sx(g[0]), g[1]) if axis == 0 else (g[0], sx(g[1]))
         elif m.kind is MarkKind.SEGMENT:
-            g = (sx(g[0]), g[1], sx(g[2]), g[3])
+            g = (end(g[0]), g[1], end(g[2]), g[3]) if axis == 0 else (g[0], end(g[1]), g[2], end(g[3]))
         elif m.kind.round:  # moved whole, or not at all: a circle is not stretched
-            if right[i] <= lo:
-                g = (g[0] + shift,) + tuple(g[1:])
+            if far[i] <= lo:
+                g = (g[0] + shift,) + tuple(g[1:]) if axis == 0 else (g[0], g[1] + shift) + tuple(g[2:])
         else:  # a curve or an area: point by point
-            g = tuple((sx(x), y) for x, y in g)
+            g = tuple((sx(x), y) for x, y in g) if axis == 0 else tuple((x, sx(y)) for x, y in g)
         out.append(m if g is m.geom else _with_geom(m, g))
-    # the left stretch now ends at hi - keep: the kept piece of the broken axis is [hi - keep, hi]
-    return out, tuple(shifted(it, sx) for it in furniture), ((hi - keep, keep, hi - lo),)
+    # the near stretch now ends at hi - keep: the kept piece of the broken axis is [hi - keep, hi]
+    moved = tuple(shifted(it, sx) for it in furniture) if axis == 0 else furniture
+    return out, moved, (Break(hi - keep, keep, hi - lo, axis),)
 
 
 def _with_geom(m: Mark, geom: tuple) -> Mark:
@@ -811,7 +874,7 @@ def _letter_lines(marks: list[Mark], lettered: dict, breaks: tuple) -> list[Mark
         if got is None:
             continue
         label, fan = got
-        at = letter_point(m.geom, fan, [(x0, w) for x0, w, _ in breaks])
+        at = letter_point(m.geom, fan, breaks)
         out.append(dataclasses.replace(m, id=f"{m.id}-at", kind=MarkKind.POINT, geom=(at[0], at[1]),
                                        name=f"{m.name}.at", role=m.role if fan else "auxiliary", label=label,
                                        look="hidden", straight=False))
@@ -835,22 +898,26 @@ def fanned_lines(steps: Iterable[Step]) -> dict[str, bool]:
     return {name: len(lines) >= 3 for lines in fans.values() for name in lines}
 
 
-def letter_point(pts: tuple, fan: bool, breaks: Iterable[tuple[float, float]] = ()) -> tuple[float, float]:
+def letter_point(pts: tuple, fan: bool, breaks: Iterable[tuple] = ()) -> tuple[float, float]:
     """Where a lettered straight line's letter stands: at its middle, or (one of a fan) at its far end; a
-    line drawn across a broken axis (*breaks*: where the drawn break starts, its drawn width) at the middle of
-    its part right of the break.
+    line drawn across a broken axis (*breaks*: where the drawn break starts, its drawn width, and the axis if
+    it is not x: :class:`Break`) at the middle of its part beyond the break (right of it, or above it).
 
     >>> letter_point(((0.0, 0.0), (4.0, 0.0)), False), letter_point(((0.0, 0.0), (4.0, 2.0)), True)
     ((2.0, 0.0), (4.0, 2.0))
     >>> letter_point(((0.0, 0.0), (4.0, 0.0)), False, [(1.0, 1.0)])
     (3.0, 0.0)
+    >>> letter_point(((0.0, 0.0), (0.0, 4.0)), False, [Break(1.0, 1.0, 5.0, 1)])
+    (0.0, 3.0)
     """
     at = pts[-1] if fan else middle(pts)
-    for x0, w in breaks:
-        (ax, ay), (bx, by) = pts[0], pts[-1]
-        if len(pts) == 2 and min(ax, bx) < x0 + w and max(ax, bx) > x0 + w and not fan:
-            x = (x0 + w + max(ax, bx)) / 2.0  # the middle of the part right of the break
-            at = (x, ay + (by - ay) * (x - ax) / (bx - ax))
+    for b in breaks:
+        x0, w, axis = b[0], b[1], (b[3] if len(b) > 3 else 0)
+        a, c = pts[0], pts[-1]
+        if len(pts) == 2 and min(a[axis], c[axis]) < x0 + w and max(a[axis], c[axis]) > x0 + w and not fan:
+            t = (x0 + w + max(a[axis], c[axis])) / 2.0  # the middle of the part beyond the break
+            s = a[1 - axis] + (c[1 - axis] - a[1 - axis]) * (t - a[axis]) / (c[axis] - a[axis])
+            at = (t, s) if axis == 0 else (s, t)
     return at
 
 

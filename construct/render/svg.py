@@ -356,6 +356,9 @@ class Drawing:
         # the furniture first, the break marks over it (they open the rod and the axis for the gap)
         elems = furniture_elements(sc.furniture, self.vp.px, self.vp.scale, f, size=self.style.label_size)
         lines = [m.geom for m in sc.marks if m.kind is MarkKind.SEGMENT]
+        # and a straight line drawn from point to point (a rod lettered L): broken where it crosses the break
+        lines += [(*m.geom[0], *m.geom[1]) for m in sc.marks if m.kind is MarkKind.CURVE and m.straight
+                  and len(m.geom) == 2]
         lines += [(*it.a, *it.b) for it in sc.furniture if isinstance(it, Stroke)]
         elems += break_elements(sc.breaks, lines, self.vp.px, f, size=self.style.label_size)
         if not elems:

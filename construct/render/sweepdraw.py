@@ -27,7 +27,7 @@ from typing import Any
 import numpy as np
 
 from ..kernel.geometry import Circle, Line, Point, take
-from .scene import BREAK_FRACTION, BREAK_KEEP, TWO_PI, MarkKind, Scene, fanned_lines, letter_point, on_curve_names
+from .scene import BREAK_FRACTION, BREAK_FRACTION_Y, BREAK_KEEP, TWO_PI, MarkKind, Scene, fanned_lines, letter_point, on_curve_names
 from .svg import point_radius
 from .styles import Style
 
@@ -74,7 +74,6 @@ class SweepDrawing:
 
     def __init__(self, template: Scene, protocol: Any, objects: Any, size: int, style: Style):
         self.n = n = size
-        self.ok = np.ones(n, dtype=bool)
         self.style = style
         def vec(v: Any) -> np.ndarray:  # a coordinate over the values (a sweep's array, or one number for all)
             return v if type(v) is np.ndarray and v.shape == (n,) else np.full(n, float(v))
@@ -106,6 +105,81 @@ class SweepDrawing:
         margin = 0.035 * span
         # each mark's geometry, its kind's rows
         self.marks = [m for m in template.marks if m.id not in self._at]
+        self._sources = (objects, points, on, curves)
+        self._draw(margin)
+        if self._broken is not None:
+            # scene.build_scene: a broken figure is drawn again with the margin of what is left of it (its
+            # points and curves, broken alone), where it is broken so too
+            kept = 0.035 * self._kept_span()
+            smaller = self._broken & (kept < margin)
+            if smaller.any():
+                first = (self.geoms, self.curves, self._broken, self._breaks, self.ok)
+                self._draw(np.where(smaller, kept, margin))
+                # where the figure drawn so is not broken, it is drawn as before
+                keep = smaller & self._broken
+                margin = np.where(keep, kept, margin)
+                if not keep[smaller].all():
+                    self._choose(keep, first)
+        self._letter_lines(template, protocol)
+        ext = self._extremes()
+        if self._broken is not None:  # the box of a broken figure: its points, where they now stand
+            PX, PY = self.geoms[MarkKind.POINT]
+            brk = self._broken
+            bx0, bx1 = np.where(brk, PX.min(0), X.min(0)), np.where(brk, PX.max(0), X.max(0))
+            by0, by1 = np.where(brk, PY.min(0), Y.min(0)), np.where(brk, PY.max(0), Y.max(0))
+        else:
+            bx0, bx1, by0, by1 = X.min(0), X.max(0), Y.min(0), Y.max(0)
+        for e in ext.values():
+            bx0, bx1 = np.minimum(bx0, e[0].min(0)), np.maximum(bx1, e[1].max(0))
+            by0, by1 = np.minimum(by0, e[2].min(0)), np.maximum(by1, e[3].max(0))
+        self._fit(bx0 - margin, by0 - margin, bx1 + margin, by1 + margin)
+        self.extremes = {}
+        self.numbers = {}
+        for key, e in ext.items():
+            for i, m in enumerate(self._members(key)):
+                self.extremes[m.id] = (e[0][i], e[1][i], e[2][i], e[3][i])
+        for key, nums in self._numbers().items():
+            for i, m in enumerate(self._members(key)):
+                self.numbers[m.id] = nums[i]
+
+    def _kept_span(self) -> np.ndarray:
+        """scene._kept_span over the sweep: what the points and curves span once broken alone."""
+        objects, points, on, curves = self._sources
+        P = tuple(np.vstack(c) for c in zip(*[points[m.name] for m in self.marks
+                                               if m.kind is MarkKind.POINT and m.name in points]))
+        saved = (self.geoms, self.curves, self._broken, self._breaks)
+        self.geoms = {k: (P if k is MarkKind.POINT else ()) for k in MarkKind}
+        self.curves = {mid: tuple(pts) for mid, pts in self._unbroken_curves.items()}
+        self._broken, self._breaks = None, {}
+        self._break()
+        self._break(axis=1)
+        cx = [self.geoms[MarkKind.POINT][0]] + [np.vstack([c[0] for c in pts]) for pts in self.curves.values()]
+        cy = [self.geoms[MarkKind.POINT][1]] + [np.vstack([c[1] for c in pts]) for pts in self.curves.values()]
+        self.geoms, self.curves, self._broken, self._breaks = saved
+        KX, KY = np.vstack(cx), np.vstack(cy)
+        with np.errstate(invalid="ignore"):  # (a curve of another number of points: not ok there)
+            return np.maximum(np.maximum(np.nanmax(KX, 0) - np.nanmin(KX, 0), np.nanmax(KY, 0) - np.nanmin(KY, 0)),
+                              1e-9)
+
+    def _choose(self, which: np.ndarray, other: tuple) -> None:
+        """This drawing at the values *which* says, *other* (geoms, curves, broken, breaks, ok) elsewhere."""
+        geoms, curves, broken, breaks, ok = other
+        pick = lambda a, b: np.where(which, a, b)  # noqa: E731
+        self.geoms = {k: tuple(pick(a, b) for a, b in zip(self.geoms[k], geoms[k])) for k in MarkKind}
+        self.curves = {mid: tuple((pick(x, ox), pick(y, oy)) for (x, y), (ox, oy) in zip(pts, curves[mid]))
+                       for mid, pts in self.curves.items()}
+        self._broken = pick(self._broken, broken if broken is not None else False)
+        for axis in set(self._breaks) | set(breaks):
+            a = self._breaks.get(axis, (np.zeros(self.n, dtype=bool),) + (np.zeros(self.n),) * 3)
+            b = breaks.get(axis, (np.zeros(self.n, dtype=bool),) + (np.zeros(self.n),) * 3)
+            self._breaks[axis] = tuple(pick(x, y) for x, y in zip(a, b))
+        self.ok = pick(self.ok, ok)
+
+    def _draw(self, margin: np.ndarray) -> None:
+        """The marks' geometry with lines and arcs reaching *margin* past their marked points, broken."""
+        objects, points, on, curves = self._sources
+        n = self.n
+        self.ok = np.ones(n, dtype=bool)
         by: dict[MarkKind, list] = {k: [] for k in MarkKind}
         curve_geoms: dict[str, tuple] = {}
         for m in self.marks:
@@ -129,30 +203,13 @@ class SweepDrawing:
         self.rows = {k: [m for m in self.marks if m.kind is k and m.id not in curve_geoms] for k in MarkKind}
         self.geoms = {k: tuple(np.vstack(c) for c in zip(*by[k])) if by[k] else () for k in MarkKind}
         self.curves = curve_geoms
+        self._unbroken_curves = dict(curve_geoms)
         self.curve_marks = [m for m in self.marks if m.id in curve_geoms]
         self._broken = None
+        #: per axis: (broken at which values, where the drawn break starts, its drawn width, what it leaves out)
+        self._breaks: dict[int, tuple] = {}
         self._break()
-        self._letter_lines(template, protocol)
-        ext = self._extremes()
-        if self._broken is not None:  # the box of a broken figure: its points, where they now stand
-            PX, PY = self.geoms[MarkKind.POINT]
-            brk = self._broken
-            bx0, bx1 = np.where(brk, PX.min(0), X.min(0)), np.where(brk, PX.max(0), X.max(0))
-            by0, by1 = np.where(brk, PY.min(0), Y.min(0)), np.where(brk, PY.max(0), Y.max(0))
-        else:
-            bx0, bx1, by0, by1 = X.min(0), X.max(0), Y.min(0), Y.max(0)
-        for e in ext.values():
-            bx0, bx1 = np.minimum(bx0, e[0].min(0)), np.maximum(bx1, e[1].max(0))
-            by0, by1 = np.minimum(by0, e[2].min(0)), np.maximum(by1, e[3].max(0))
-        self._fit(bx0 - margin, by0 - margin, bx1 + margin, by1 + margin)
-        self.extremes = {}
-        self.numbers = {}
-        for key, e in ext.items():
-            for i, m in enumerate(self._members(key)):
-                self.extremes[m.id] = (e[0][i], e[1][i], e[2][i], e[3][i])
-        for key, nums in self._numbers().items():
-            for i, m in enumerate(self._members(key)):
-                self.numbers[m.id] = nums[i]
+        self._break(axis=1)
 
     def _members(self, key) -> list:
         """The marks of one row block: a kind's marks, or one curve (its id), or the lettered lines' points."""
@@ -233,10 +290,12 @@ class SweepDrawing:
         return out
 
     # -- the broken axis, the lettered lines ---------------------------------------------------------------
-    def _break(self) -> None:
-        """scene._break over the sweep: the widest empty stretch broken out where it is wider than a fifth."""
+    def _break(self, axis: int = 0) -> None:
+        """scene._break over the sweep: the widest empty stretch broken out where it is wider than a fifth
+        (*axis* 1: across the figure, where wider than BREAK_FRACTION_Y)."""
         ext = self._extremes()
-        spans = [(e[0], e[1]) for key, e in ext.items() if key is not MarkKind.SEGMENT
+        lo_at, hi_at = (0, 1) if axis == 0 else (2, 3)
+        spans = [(e[lo_at], e[hi_at]) for key, e in ext.items() if key is not MarkKind.SEGMENT
                  and not (key in self.curves and self._members(key)[0].straight and len(self.curves[key]) == 2)]
         if sum(s.shape[0] for s, _ in spans) < 2:
             return
@@ -251,26 +310,30 @@ class SweepDrawing:
         cols = np.arange(self.n)
         width = gaps[j, cols]
         lo, hi = reach[j, cols], S[j + 1, cols]
-        brk = (width > 0) & (width > BREAK_FRACTION * total)
+        brk = (width > 0) & (width > (BREAK_FRACTION if axis == 0 else BREAK_FRACTION_Y) * total)
         if not brk.any():
             return
         keep = np.minimum(BREAK_KEEP * (total - width), 0.8 * width)
         shift = np.where(brk, width - keep, 0.0)
         sx = lambda x: np.where(brk & (x <= lo), x + shift, x)  # noqa: E731
+        end = lambda x: np.where(brk & (x <= (lo + hi) / 2), x + shift, x)  # noqa: E731  (a line's end)
         g = self.geoms
         if g[MarkKind.POINT]:
-            g[MarkKind.POINT] = (sx(g[MarkKind.POINT][0]), g[MarkKind.POINT][1])
+            p = g[MarkKind.POINT]
+            g[MarkKind.POINT] = (sx(p[0]), p[1]) if axis == 0 else (p[0], sx(p[1]))
         if g[MarkKind.SEGMENT]:
             x1, y1, x2, y2 = g[MarkKind.SEGMENT]
-            g[MarkKind.SEGMENT] = (sx(x1), y1, sx(x2), y2)
+            g[MarkKind.SEGMENT] = (end(x1), y1, end(x2), y2) if axis == 0 else (x1, end(y1), x2, end(y2))
         for kind in (MarkKind.CIRCLE, MarkKind.ARC):  # moved whole, or not at all
             if g[kind]:
-                moved = brk & (ext[kind][1] <= lo)
-                g[kind] = (np.where(moved, g[kind][0] + shift, g[kind][0]),) + tuple(g[kind][1:])
+                moved = brk & (ext[kind][hi_at] <= lo)
+                c = list(g[kind])
+                c[axis] = np.where(moved, c[axis] + shift, c[axis])
+                g[kind] = tuple(c)
         for mid, pts in self.curves.items():
-            self.curves[mid] = tuple((sx(x), y) for x, y in pts)
-        self._broken = brk
-        self._breaks = (hi - keep, keep)
+            self.curves[mid] = tuple((sx(x), y) if axis == 0 else (x, sx(y)) for x, y in pts)
+        self._broken = brk if self._broken is None else (self._broken | brk)
+        self._breaks[axis] = (brk, hi - keep, keep, width)
 
     def _letter_lines(self, template: Scene, protocol: Any) -> None:
         """scene._letter_lines over the sweep: each lettered straight line's letter point (value by value: a
@@ -284,9 +347,9 @@ class SweepDrawing:
             ats = []
             for i in range(self.n):
                 pts = tuple((float(x[i]), float(y[i])) for x, y in line)
-                broken = self._broken is not None and self._broken[i]
-                ats.append(letter_point(pts, fan, [(float(self._breaks[0][i]), float(self._breaks[1][i]))]
-                                        if broken else ()))
+                breaks = [(float(b[1][i]), float(b[2][i]), float(b[3][i]), axis)
+                          for axis, b in sorted(self._breaks.items()) if b[0][i]]
+                ats.append(letter_point(pts, fan, breaks))
             xs.append([a[0] for a in ats])
             ys.append([a[1] for a in ats])
         if self.at_marks:
@@ -311,6 +374,27 @@ class SweepDrawing:
     def page_px(self, x, y) -> tuple[np.ndarray, np.ndarray]:
         """Points (drawing units) on the page of every value (Viewport.px over the sweep)."""
         return self._px(x, y)
+
+    def px_at(self, i: int, x: float, y: float) -> tuple[float, float]:
+        """A point (drawing units) on the page of value *i*."""
+        xmin, ymax, scale, left, top = (float(v[i]) for v in self._page)
+        m = self.style.margin_px
+        return m + left + (x - xmin) * scale, m + top + (ymax - y) * scale
+
+    def breaks_px(self, i: int) -> list[float]:
+        """Where value *i*'s breaks stand on its page: [x, width, top, height] of their bands (canvas px, two
+        decimals), 0 0 for an axis not broken there (live.measure.breaks_px)."""
+        out: list[float] = []
+        scale = float(self._page[2][i])
+        for axis in (0, 1):
+            b = self._breaks.get(axis)
+            if b is None or not b[0][i]:
+                out += [0.0, 0.0]
+                continue
+            start, keep = float(b[1][i]), float(b[2][i])
+            at = self.px_at(i, start, 0.0)[0] if axis == 0 else self.px_at(i, 0.0, start + keep)[1]
+            out += [round(at, 2), round(scale * keep, 2)]
+        return out
 
     def _px(self, x, y) -> tuple[np.ndarray, np.ndarray]:
         xmin, ymax, scale, left, top = self._page

@@ -73,6 +73,10 @@ class Measure:
                 shows[j].add(k)
         self.framed = [[m.id for m in scene.marks if m.step in ks] for ks in shows]
         self.views = list(distinct)
+        #: the steps whose current mark is ringed (small on the screen at the built value), by their index, and
+        #: the marks the ring goes round: the ring's centre is carried (the centre of their box)
+        self.rings = [(i, [m.id for m in scene.marks if m.step == k]) for i, k in enumerate(self.steps)
+                      if drawing.ring(k) is not None]
         self.boxes = self._boxes(scene, drawing.vp)
         self.least = 1.0 / MAX_ZOOM
         self.template = scene
@@ -80,7 +84,7 @@ class Measure:
         # page's order (a sweep draws each mark's numbers for every value at once, :meth:`frames`)
         self.keys, _, _, texts = self(built)
         self.runs: list[tuple[str, int]] = []
-        for k in self.keys[1:len(self.keys) - len(self.view_of)]:
+        for k in self.keys[1:len(self.keys) - len(self.view_of) - len(self.rings) - 2]:
             if self.runs and self.runs[-1][0] == k[0]:
                 self.runs[-1] = (k[0], self.runs[-1][1] + k[2].count("#"))
             else:
@@ -166,6 +170,12 @@ class Measure:
                        for j, b in enumerate(boxes)] + [list(full)]
             for j in self.view_of:
                 nums += carried[j]
+            for _, ids in self.rings:
+                e = [at_once.extremes[m] for m in ids if m in at_once.extremes]
+                nums += _ring_centre(*at_once.px_at(i, min(float(b[0][i]) for b in e), max(float(b[3][i]) for b in e)),
+                                     *at_once.px_at(i, max(float(b[1][i]) for b in e), min(float(b[2][i]) for b in e))) \
+                    if e else [0.0, 0.0]
+            nums += at_once.breaks_px(i)
             taken = replay.take(i)
             texts = {**self.texts, **{k: reading(label, taken) for k, label in self.readings.items()}}
             out.append((self.keys, nums, tuple(float(v) for v in at_once.fit[i]), texts))
@@ -205,7 +215,32 @@ class Measure:
         for i, j in enumerate(self.view_of):
             keys.append(("#zoom", str(i), "# # # #"))
             nums += carried[j]
+        by_id = {m.id: m for m in scene.marks}
+        for i, ids in self.rings:
+            keys.append(("#ring", str(i), "# #"))
+            pts = [vp.px(*p) for m in ids if m in by_id for p in extreme_points(by_id[m])]
+            nums += _ring_centre(min(p[0] for p in pts), min(p[1] for p in pts), max(p[0] for p in pts),
+                                 max(p[1] for p in pts)) if pts else [0.0, 0.0]
+        for axis in (0, 1):
+            keys.append(("#break", str(axis), "# #"))
+            nums += breaks_px(scene.breaks, axis, fit_of(vp))
         return keys, nums, fit_of(vp), texts
+
+
+def _ring_centre(x0: float, y0: float, x1: float, y1: float) -> list[float]:
+    """The centre of a ring round a box (canvas px, as the player's data writes it: camera.ring_round)."""
+    return [round((x0 + x1) / 2, 2), round((y0 + y1) / 2, 2)]
+
+
+def breaks_px(breaks: Any, axis: int, fit: tuple[float, float, float]) -> list[float]:
+    """Where the figure's break across *axis* stands on the page: [the start of its band, its width] (canvas px:
+    x and width, or top and height), or [0, 0] where the figure is not broken so."""
+    ox, oy, s = fit
+    for b in breaks:
+        if (b[3] if len(b) > 3 else 0) == axis:
+            start = ox + s * b[0] if axis == 0 else oy - s * (b[0] + b[1])
+            return [round(start, 2), round(s * b[1], 2)]
+    return [0.0, 0.0]
 
 
 def player_page(construction: Construction, figure: Figure, style: Any) -> str:

@@ -42,7 +42,7 @@ from ..constructions.domain import ROD_RATIO, Domain
 from ..figure import Figure
 from ..kernel.errors import InvalidParameter
 from ..render.styles import STYLES
-from ..render.wire import arc_flags
+from ..render.wire import arc_flags, blend, radii
 from .measure import Measure
 
 __all__ = ["LIVE_GIVENS", "LiveSweep", "live_givens", "live_sweep", "check_picks", "REFINE_PX", "QUANTUM_PX",
@@ -85,7 +85,7 @@ def _key_columns(keys: tuple[tuple[str, str, str], ...]) -> tuple[np.ndarray, np
     """Which key each number of *keys* belongs to, which numbers are views, which are large-arc flags
     (asked at every cell of the refinement, for the same keys)."""
     owner = np.asarray([i for i, k in enumerate(keys) for _ in range(k[2].count("#"))], dtype=int)
-    return owner, _columns(keys, lambda k: k[0] == "#zoom"), arc_flags(keys)
+    return owner, _columns(keys, lambda k: k[0] == "#zoom"), arc_flags(keys), radii(keys)
 
 
 def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
@@ -93,14 +93,15 @@ def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
     """The largest distance (px) between the page's drawing at a cell's midpoint and the exact one, and the
     keys that exceed REFINE_PX with the distance of their coordinates (without large-arc flags).
 
-    Coordinates are blended from the quantised ends; large-arc flags and snapped keys come from either end
+    Coordinates are blended from the quantised ends (radii geometrically, as the page blends them);
+    large-arc flags and snapped keys come from either end
     (the worse counts); a wrong flag moves the arc by the distance between the two centres its ends and
     radius allow, 2 sqrt(r^2 - (c/2)^2)."""
-    owner, views, flags = _key_columns(tuple(keys))
+    owner, views, flags, geometric = _key_columns(tuple(keys))
     if owner.size == 0:
         return 0.0, {}
     q = lambda n: np.round(n / QUANTUM_PX) * QUANTUM_PX  # noqa: E731
-    blended = (q(na) + q(nb)) / 2
+    blended = blend(q(na), q(nb), 0.5, geometric)
     col_err = np.abs(blended - exact)
     nearest = np.isin(owner, list(snap)) if snap else np.zeros(owner.size, dtype=bool)
     col_err[nearest] = np.maximum(np.abs(na - exact), np.abs(nb - exact))[nearest]
@@ -160,6 +161,8 @@ class LiveSweep:
     fit: np.ndarray | None = None
     #: The checks at the built value, as :attr:`checks`.
     built_checks: list[list[Any]] = field(default_factory=list)
+    #: The style's letter size (px): the page sizes the marks of a break by it, as the drawing does.
+    label_px: float = 12.0
 
     def nearest_columns(self) -> np.ndarray:
         """The columns taken from the nearer grid value: large-arc flags and the snapped marks."""
@@ -269,7 +272,8 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     live = LiveSweep(given, symbol, domain, initial, grid, keys, np.asarray(rows, dtype=float), bound, jumps,
                      fixed=fixed, snapped=snapped, u=np.asarray(us, dtype=float), start=start, readings=varying,
                      # the fit travels as float32: the columns are checked against the drawing through it
-                     fit=np.asarray([data[u][2] for u in us], dtype=np.float32).astype(float))
+                     fit=np.asarray([data[u][2] for u in us], dtype=np.float32).astype(float),
+                     label_px=float(style.label_size))
     picks = check_picks(grid)
     live.checks = dict(zip(picks, _checks(construction, figure, given, grid[picks])))
     # and at the built value (the book's): a teacher who returns there sees its own checks

@@ -228,9 +228,9 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
     return entries, row
 
 
-def _live(c, fig, style: str) -> tuple[dict[str, Any] | None, Any]:
+def _live(c, fig, style: str) -> tuple[list[dict[str, Any]] | None, Any]:
     """The live data of a gallery player (a slider for each continuous given the construction can sweep) and
-    the figure's drawing, laid out once for the sweep's camera views and the player."""
+    the figure's drawing, laid out once for the sweeps' camera views and the player."""
     from .live import live_data, live_givens, live_sweep
     from .render.output import scene_for
     from .render.svg import Drawing
@@ -238,8 +238,12 @@ def _live(c, fig, style: str) -> tuple[dict[str, Any] | None, Any]:
     givens = live_givens(c, fig)
     if not givens:
         return None, None
+    from .live import Measure
+
     drawing = Drawing(scene_for(c, fig), STYLES[style])
-    return live_data(live_sweep(c, fig, givens[0], style=STYLES[style], drawing=drawing)), drawing
+    measure = Measure(c, fig, STYLES[style], drawing=drawing)  # (the givens' sweeps share it)
+    return [live_data(live_sweep(c, fig, g.name, style=STYLES[style], drawing=drawing, measure=measure))
+            for g in givens], drawing
 
 
 def _first_of_its_construction(name: str, params: Mapping[str, Any]) -> bool:

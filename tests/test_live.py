@@ -92,9 +92,11 @@ def test_arc_flags_are_the_large_arc_numbers():
     assert arc_flags(keys).nonzero()[0].tolist() == [5, 15]
 
 
-def test_only_a_rod_ratio_is_live():
-    assert live_givens(get("crank"), get("crank").figure(parts=3)) == ["rod_ratio"]
-    assert live_givens(get("indicator-diagram"), get("indicator-diagram").figure()) == []
+def test_the_rod_and_kappa_are_live():
+    names = lambda c, **p: [g.name for g in live_givens(get(c), get(c).figure(**p))]  # noqa: E731
+    assert names("crank", parts=3) == ["rod_ratio"] and names("tangential-pressure") == ["rod_ratio", "kappa"]
+    assert names("piston-force") == ["rod_length"]  # Tafel I's L = 2 m beside R = 0.4 m
+    assert names("indicator-diagram") == []  # its filling changes the steps: a switch, not a slider
 
 
 def test_replay_live_without_a_rod_refuses_and_writes_nothing(tmp_path, capsys):

@@ -23,7 +23,7 @@ from ..figure import Figure
 from ..render.camera import MAX_ZOOM, clip_view
 from ..render.output import scene_for
 from ..render.player import player_html
-from ..render.scene import extreme_points, reading
+from ..render.scene import MarkKind, extreme_points, reading
 from ..render.styles import STYLES
 from ..render.svg import Drawing, mark_geometry, mark_layer
 from ..render.svgdoc import fmt
@@ -31,7 +31,7 @@ from ..render.sweepdraw import SweepDrawing, sweep_drawable
 from ..render.viewport import Viewport
 from ..render.wire import ARC, NUMBER, canonical_arc
 
-__all__ = ["Measure", "player_page", "player_page_and_fit", "fit_of"]
+__all__ = ["Measure", "player_page", "player_page_and_fit", "fit_of", "areas_of", "breaks_px"]
 
 
 class Measure:
@@ -73,6 +73,8 @@ class Measure:
                 shows[j].add(k)
         self.framed = [[m.id for m in scene.marks if m.step in ks] for ks in shows]
         self.views = list(distinct)
+        #: the areas between curves: drawn by the page from the curves that bound them (:func:`areas_of`)
+        self.areas = areas_of(built.protocol, scene)
         #: the steps whose current mark is ringed (small on the screen at the built value), by their index, and
         #: the marks the ring goes round: the ring's centre is carried (the centre of their box)
         self.rings = [(i, [m.id for m in scene.marks if m.step == k]) for i, k in enumerate(self.steps)
@@ -137,7 +139,7 @@ class Measure:
         draws, value by value elsewhere (a value where a mark changes its form, a figure the sweep does not
         draw)."""
         at_once = None
-        if sweep_drawable(self.template):
+        if sweep_drawable(self.template, self.style):
             try:
                 at_once = SweepDrawing(self.template, protocol, replay, size, self.style)
             except ValueError:  # a mark of another kind than the built figure's: value by value
@@ -150,36 +152,56 @@ class Measure:
         rows = np.hstack([at_once.numbers[i] for i, _ in self.runs])
         width, height = (np.round(v, 2) for v in at_once.size)
         px = at_once.page_px
-        boxes = []
-        for ids in self.framed:  # each view's marks' box, on the page of every value
+
+        def box_of(ids: list[str]) -> tuple | None:  # the box of marks on the page of every value (canvas px)
             e = [at_once.extremes[i] for i in ids if i in at_once.extremes]
             if not e:
-                boxes.append(None)
-                continue
+                return None
             (x0, y0), (x1, y1) = (px(np.min([b[0] for b in e], 0), np.max([b[3] for b in e], 0)),
                                   px(np.max([b[1] for b in e], 0), np.min([b[2] for b in e], 0)))
-            boxes.append((x0, y0, x1, y1))
+            return x0, y0, x1, y1
+
+        carried = [self._carried_all(j, box_of(ids), width, height) for j, ids in enumerate(self.framed)]
+        carried.append([np.zeros(size), np.zeros(size), width, height])  # [-1]: the whole figure
+        blocks = [np.zeros((size, 2)), width[:, None], height[:, None], rows]
+        blocks += [np.column_stack(carried[j]) for j in self.view_of]
+        for _, ids in self.rings:  # the ring's centre: of the box of the step's marks
+            b = box_of(ids)
+            blocks.append(np.zeros((size, 2)) if b is None else
+                          np.column_stack([np.round((b[0] + b[2]) / 2, 2), np.round((b[1] + b[3]) / 2, 2)]))
+        blocks.append(at_once.breaks_page())
+        table = np.hstack(blocks)
         out = []
         for i in range(size):
             if not at_once.ok[i]:
                 out.append(self(Figure(protocol, replay.take(i, whole=True), self.construction.check)))
                 continue
-            full = (0.0, 0.0, float(width[i]), float(height[i]))
-            nums = [0.0, 0.0, float(width[i]), float(height[i])] + rows[i].tolist()
-            carried = [self._carried(j, None if b is None else tuple(float(c[i]) for c in b), full)
-                       for j, b in enumerate(boxes)] + [list(full)]
-            for j in self.view_of:
-                nums += carried[j]
-            for _, ids in self.rings:
-                e = [at_once.extremes[m] for m in ids if m in at_once.extremes]
-                nums += _ring_centre(*at_once.px_at(i, min(float(b[0][i]) for b in e), max(float(b[3][i]) for b in e)),
-                                     *at_once.px_at(i, max(float(b[1][i]) for b in e), min(float(b[2][i]) for b in e))) \
-                    if e else [0.0, 0.0]
-            nums += at_once.breaks_px(i)
-            taken = replay.take(i)
-            texts = {**self.texts, **{k: reading(label, taken) for k, label in self.readings.items()}}
-            out.append((self.keys, nums, tuple(float(v) for v in at_once.fit[i]), texts))
+            texts = self.texts
+            if self.readings:
+                taken = replay.take(i)
+                texts = {**self.texts, **{k: reading(label, taken) for k, label in self.readings.items()}}
+            out.append((self.keys, table[i].tolist(), tuple(float(v) for v in at_once.fit[i]), texts))
         return out
+
+    def _carried_all(self, j: int, box: tuple | None, W: np.ndarray, H: np.ndarray) -> list[np.ndarray]:
+        """:meth:`_carried` over a sweep: view j carried along with its marks' boxes *box* (arrays over the values),
+        on pages W x H."""
+        x, y, w, h = self.views[j]
+        b0 = self.boxes[j]
+        zero = np.zeros(W.shape)
+        if b0 is None or box is None:
+            return [zero, zero, W, H]
+        fw, fh = 0.25 * w, 0.25 * h
+        s = np.maximum(np.maximum(box[2] - box[0], fw) / max(b0[2] - b0[0], fw),
+                       np.maximum(box[3] - box[1], fh) / max(b0[3] - b0[1], fh))
+        s = np.where(s < 1.0, np.maximum(s, np.minimum(1.0, self.least * np.maximum(W / w, H / h))), s)
+        whole = (w * s >= W) & (h * s >= H)
+        cx = (box[0] + box[2]) / 2 + (x + w / 2 - (b0[0] + b0[2]) / 2) * s
+        cy = (box[1] + box[3]) / 2 + (y + h / 2 - (b0[1] + b0[3]) / 2) * s
+        vw, vh = w * s, h * s  # camera.clip_view over the sweep
+        view = [np.where(vw >= W, 0.0, cx - vw / 2), np.where(vh >= H, 0.0, cy - vh / 2),
+                np.minimum(vw, W), np.minimum(vh, H)]
+        return [np.where(whole, f, np.round(v, 2) + 0.0) for f, v in zip((zero, zero, W, H), view)]
 
     def __call__(self, figure: Figure) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:
         st = self.style
@@ -192,6 +214,8 @@ class Measure:
         for m in scene.marks:
             if m.label:
                 texts[f"{m.id}-label"] = m.label
+            if m.kind is MarkKind.AREA:  # drawn by the page from the curves that bound it (areas_of)
+                continue
             lk, ln = layers[mark_layer(m)]
             for suffix, _, attrs in mark_geometry(m, vp, st):
                 ident = m.id + suffix
@@ -225,6 +249,29 @@ class Measure:
             keys.append(("#break", str(axis), "# #"))
             nums += breaks_px(scene.breaks, axis, fit_of(vp))
         return keys, nums, fit_of(vp), texts
+
+
+def areas_of(protocol: Any, scene: Any) -> list[list[str]]:
+    """Each area between two graphs the figure draws (``area_between``) as the page draws it from the marks that
+    bound it: [its first piece's id, the upper graph's, the lower graph's, the points whose abscissae end it].
+    Its pieces come and go and hold as many points as the graphs have breakpoints between those abscissae, so
+    no sweep can blend them; they are drawn anew from the graphs at every value (the script's ``areaPieces``,
+    the twin of :func:`construct.kernel.areas.area_between`).
+
+    >>> from construct.constructions import get
+    >>> from construct.render.output import scene_for
+    >>> c = get("tangential-pressure"); fig = c.figure(parts=6)
+    >>> areas_of(fig.protocol, scene_for(c, fig))[1]
+    ['s0526-excess', 's0516-tcurve', 's0523-mean', 's0524-A1', 's0525-A2']
+    """
+    first: dict[str, str] = {}
+    for m in scene.marks:
+        first.setdefault(m.name, m.id)
+    out = []
+    for st in protocol.steps:
+        if st.op == "area_between" and st.outputs[0] in first and all(n in first for n in st.inputs):
+            out.append([first[st.outputs[0]], *(first[n] for n in st.inputs)])
+    return out
 
 
 def _ring_centre(x0: float, y0: float, x1: float, y1: float) -> list[float]:

@@ -30,6 +30,7 @@ then is recorded as a jump (measured: none for the crank and the inertia curve).
 
 from __future__ import annotations
 
+import collections
 import functools
 import math
 from dataclasses import dataclass, field
@@ -38,24 +39,46 @@ from typing import Any
 import numpy as np
 
 from ..constructions import Construction
-from ..constructions.domain import ROD_RATIO, Domain
+from ..constructions.domain import KAPPA_RANGE, ROD_RATIO, Domain
 from ..figure import Figure
 from ..kernel.errors import InvalidParameter
 from ..render.styles import STYLES
 from ..render.wire import arc_flags, blend, radii
 from .measure import Measure
 
-__all__ = ["LIVE_GIVENS", "LiveSweep", "live_givens", "live_sweep", "check_picks", "REFINE_PX", "QUANTUM_PX",
+__all__ = ["LiveGiven", "LiveSweep", "live_givens", "live_sweep", "reach", "check_picks", "REFINE_PX", "QUANTUM_PX",
            "MIN_CELL", "CHECK_VALUES"]
 
-#: The continuous givens a player can move: protocol name -> (stated domain, the book's symbol).
-LIVE_GIVENS: dict[str, tuple[Domain, str]] = {"rod_ratio": (ROD_RATIO, "L/r")}
+
+@dataclass(frozen=True)
+class LiveGiven:
+    """A continuous given a player moves: its name in the protocol (the slider's name), the book's symbol, its
+    stated domain, the unit it is written in, and how the page's texts write it (the title's and the givens'
+    "L/r = 5", "r/L = 1/5": the value follows each prefix)."""
+
+    name: str
+    symbol: str
+    domain: Domain
+    unit: str = ""
+    written: tuple[str, ...] = ()
+    #: How the rod's length is written at a broken axis, "{v}" the value ("L = {v} r"); "": not a rod.
+    rod: str = ""
+
+
+#: The rod ratio, as the books write it: L/r = 5, r/L = 1/5 (Anhang II, Baumann), r/l = 1/5 (§ 146).
+ROD = LiveGiven("rod_ratio", "L/r", ROD_RATIO, "", ("L/r = ", "r/L = 1/", "r/l = 1/"), "L = {v} r")
+#: Baumann's κ = P/B_max (Fig. 26/27: 8 and 2): the slider spans two decades about them, from an engine whose
+#: masses press at the dead centre as hard as its steam (κ = 1) to one where they hardly count (100); the
+#: construction holds from 0.1 to 10,000 (KAPPA_RANGE), a replay takes any of those.
+KAPPA = LiveGiven("kappa", "κ", Domain(1.0, 100.0, KAPPA_RANGE.why, KAPPA_RANGE.advice), "", ("κ = P/Bmax = ", "κ = "))
 #: A cell is split while linear interpolation misses the exact drawing by more than this (px).
 REFINE_PX = 0.4
 #: The refinement blends coordinates rounded to multiples of this (px).
 QUANTUM_PX = 0.05
 #: A jump caused by at most this many marks is theirs (they are drawn from the nearer grid value), not the figure's.
 SNAP_AT_MOST = 3
+#: ... and this many, where each is drawn at the cell's midpoint as at one of its ends (a jump, plainly).
+SNAP_AT_ONCE = 12
 #: A mark whose miss at a cell's midpoint stays above this share of its miss in the cell split into it, twice
 #: running, jumps there (a smooth mark's miss falls to a quarter at each halving, a kink's to a half).
 JUMPING = 0.85
@@ -65,19 +88,62 @@ JUMP_PX = 2.0
 MIN_CELL = 1e-4
 
 
-def live_givens(construction: Construction, figure: Figure) -> list[str]:
-    """The continuous givens of *figure* a player offers a slider for (those a sweep can replay).
+def live_givens(construction: Construction, figure: Figure) -> list[LiveGiven]:
+    """The continuous givens of *figure* a player offers a slider for: the rod (as a ratio L/r, or a length in
+    metres beside the crank radius R: Tafel I's L = 2 m), and Baumann's κ.
 
     >>> from construct.constructions import get
-    >>> live_givens(get("crank"), get("crank").figure()), live_givens(get("indicator-diagram"), get("indicator-diagram").figure())
-    (['rod_ratio'], [])
+    >>> [g.name for g in live_givens(get("tangential-pressure"), get("tangential-pressure").figure())]
+    ['rod_ratio', 'kappa']
+    >>> live_givens(get("piston-force"), get("piston-force").figure())[0].domain.high, \
+    ...     live_givens(get("indicator-diagram"), get("indicator-diagram").figure())
+    (400.0, [])
+    """
+    g = figure.replay.givens
+    out = []
+    if "rod_ratio" in g:
+        out.append(ROD)
+    elif "rod_length" in g and "crank_radius" in g:
+        R = float(g["crank_radius"])
+        out.append(LiveGiven("rod_length", "L", Domain(ROD_RATIO.low * R, ROD_RATIO.high * R, ROD_RATIO.why,
+                                                       ROD_RATIO.advice), "m", ("L = ",), "L = {v} m"))
+    if "kappa" in g:
+        out.append(KAPPA)
+    return out
+
+
+def reach(construction: Construction, figure: Figure, given: str, domain: Domain, initial: float) -> Domain:
+    """The part of *domain* about *initial* where the construction holds with the figure's other givens (the two
+    cranks' magnified speed radius vanishes below L/r = 2.5 at the book's fluctuation): its validator asked,
+    each end found by bisection in log10 to three significant digits (rounded inwards).
+
+    >>> from construct.constructions import get
+    >>> c = get("two-cranks"); fig = c.figure(parts=12)
+    >>> reach(c, fig, "rod_ratio", ROD_RATIO, 5.0).low, reach(get("crank"), get("crank").figure(), "rod_ratio", ROD_RATIO, 5.0).low
+    (2.29, 1.05)
     """
     givens = dict(figure.replay.givens)
-    out = []
-    for name in LIVE_GIVENS:
-        if name == "rod_ratio" and construction.rod_ratio_sweep(givens, [1.0]) is not None:
-            out.append(name)
-    return out
+
+    def holds(v: float) -> bool:
+        try:
+            construction.validate({k: (float(x[0]) if isinstance(x, np.ndarray) else x)
+                                   for k, x in construction.given_sweep(givens, given, [v]).items()})
+        except InvalidParameter:
+            return False
+        return True
+
+    def edge(inside: float, outside: float, up: bool) -> float:
+        a, b = math.log10(inside), math.log10(outside)
+        for _ in range(24):  # to 1e-7 of a decade: below the three digits kept
+            m = (a + b) / 2
+            a, b = (m, b) if holds(10 ** m) else (a, m)
+        digits = 2 - math.floor(b)  # three significant digits, rounded towards the inside
+        v = (math.ceil if not up else math.floor)(10 ** a * 10 ** digits) / 10 ** digits
+        return v if holds(v) else 10 ** a
+
+    low = domain.low if holds(domain.low) else edge(initial, domain.low, False)
+    high = domain.high if holds(domain.high) else edge(initial, domain.high, True)
+    return domain if (low, high) == (domain.low, domain.high) else Domain(low, high, domain.why, domain.advice)
 
 
 @functools.lru_cache(maxsize=4)
@@ -122,6 +188,19 @@ def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
     return float(col_err.max()), {k: float(coord_err[k]) for k in bad}
 
 
+def _at_an_end(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray, culprits: dict[int, float]) -> bool:
+    """Is each culprit (a mark, not the figure or a view) drawn at the midpoint as at one end of the cell
+    (within REFINE_PX) while it misses the blend by more than JUMP_PX: a jump, not a bend?"""
+    owner = _key_columns(tuple(keys))[0]
+    for c, e in culprits.items():
+        if keys[c][0] in ("figure", "#zoom") or e <= JUMP_PX:
+            return False
+        at = owner == c
+        if min(np.abs(exact[at] - na[at]).max(), np.abs(exact[at] - nb[at]).max()) > REFINE_PX:
+            return False
+    return True
+
+
 def _columns(keys: list[tuple[str, str, str]], pick) -> np.ndarray:
     """Which numbers of *keys* belong to keys *pick* selects."""
     return np.asarray([pick(k) for k in keys for _ in range(k[2].count("#"))], dtype=bool)
@@ -163,6 +242,10 @@ class LiveSweep:
     built_checks: list[list[Any]] = field(default_factory=list)
     #: The style's letter size (px): the page sizes the marks of a break by it, as the drawing does.
     label_px: float = 12.0
+    #: The given as its book writes it (unit, the texts' forms, the rod at a break): :class:`LiveGiven`.
+    live: LiveGiven | None = None
+    #: The areas the page draws from the graphs that bound them (:func:`construct.live.measure.areas_of`).
+    areas: list[list[str]] = field(default_factory=list)
 
     def nearest_columns(self) -> np.ndarray:
         """The columns taken from the nearer grid value: large-arc flags and the snapped marks."""
@@ -172,27 +255,27 @@ class LiveSweep:
 
 def _frames(construction: Construction, figure: Figure, given: str, values: np.ndarray, measure) -> list[tuple]:
     """(keys, numbers, fit, texts) of the player's figure at every value, from one sweep of the protocol."""
-    givens = dict(figure.replay.givens)
-    if given == "rod_ratio":
-        swept = construction.rod_ratio_sweep(givens, values)
-    else:
-        swept = {**givens, given: np.asarray(values, dtype=float)}
-    if swept is None:
-        raise InvalidParameter(f"{construction.name} has no given {given} to sweep")
-    replay = figure.protocol.replay(swept)
+    replay = figure.protocol.replay(construction.given_sweep(dict(figure.replay.givens), given, values))
     return measure.frames(figure.protocol, replay, len(values)), replay
 
 
 def live_sweep(construction: Construction, figure: Figure, given: str, *, initial: float | None = None,
-               style: Any = None, start: int = 9, max_values: int = 400, drawing: Any = None) -> LiveSweep:
+               style: Any = None, start: int = 9, max_values: int = 800, drawing: Any = None,
+               measure: Measure | None = None) -> LiveSweep:
     """The grid of *given* over its domain on which linear interpolation draws within 0.5 px (see the module).
 
     *drawing*: the figure's :class:`~construct.render.svg.Drawing` in *style*, if the caller lays it out anyway
-    (the player's): its camera views are the ones carried along."""
+    (the player's): its camera views are the ones carried along.  *measure*: the figure's :class:`Measure`, if
+    another given's sweep made it (it depends on the figure, not on the given)."""
     style = style or STYLES["teaching"]
-    domain, symbol = LIVE_GIVENS[given]
+    live = next((g for g in live_givens(construction, figure) if g.name == given), None)
+    if live is None:
+        raise InvalidParameter(f"{construction.name} has no given {given!r} a player can move; it moves "
+                               f"{', '.join(g.name for g in live_givens(construction, figure)) or 'none'}")
+    symbol = live.symbol
     initial = float(figure.replay.givens[given] if initial is None else initial)
-    measure = Measure(construction, figure, style, drawing=drawing)
+    domain = reach(construction, figure, given, live.domain, initial)
+    measure = measure or Measure(construction, figure, style, drawing=drawing)
     lo, hi = math.log10(domain.low), math.log10(domain.high)
     us = list(np.linspace(lo, hi, start))
     values = lambda u: np.clip(10.0 ** np.asarray(u), domain.low, domain.high)  # noqa: E731
@@ -209,11 +292,21 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     before: dict[tuple[float, float], tuple[dict[int, float], dict[int, float]]] = {}
     while todo:
         mids = [(a + b) / 2 for a, b in todo]
-        mframes, _ = _frames(construction, figure, given, values(mids), measure)
-        mframes = as_arrays(mframes)
+        # and the midpoints of their halves, drawn ahead: a cell that must be split has its halves tested in the
+        # same round (a round draws every mark of the figure once, over all its values: its cost is the marks',
+        # not the values'); what no cell needed is dropped
+        ahead = [q for a, b in todo for q in ((3 * a + b) / 4, (a + 3 * b) / 4)]
+        drawn, _ = _frames(construction, figure, given, values(mids + ahead), measure)
+        got = dict(zip(mids + ahead, as_arrays(drawn)))
         nxt = []
-        for (a, b), m, fm in zip(todo, mids, mframes):
-            data[m] = fm
+        queue = collections.deque(todo)
+        while queue:
+            a, b = queue.popleft()
+            m = (a + b) / 2
+            if m not in got:  # a half of a half: next round
+                nxt.append((a, b))
+                continue
+            fm = data[m] = got.pop(m)
             ka, na = data[a][:2]
             kb, nb = data[b][:2]
             parent, grand = before.pop((a, b), ({}, {}))
@@ -224,6 +317,12 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
             if err <= REFINE_PX:
                 bound = max(bound, err)
                 continue
+            if 0 < len(culprits) <= SNAP_AT_ONCE and -1 not in culprits and _at_an_end(ka, na, nb, fm[1], culprits):
+                # marks drawn at the midpoint as at one end of the cell and far from the blend: they jump inside
+                # it (an arc round nearly all its circle leaves out the other of two gaps of nearly one size: a
+                # fresh replay jumps there as well), drawn from the nearer grid value everywhere
+                snap.update(culprits)
+                continue
             if 0 < len(culprits) <= SNAP_AT_MOST and -1 not in culprits and all(ka[c][0] != "figure" and
                     c in parent and c in grand and e > JUMPING * parent[c] and parent[c] > JUMPING * grand[c]
                     and e > JUMP_PX for c, e in culprits.items()):
@@ -233,7 +332,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
                 snap.update(culprits)
                 continue
             if b - a >= MIN_CELL and len(data) <= max_values:
-                nxt += [(a, m), (m, b)]
+                queue += [(a, m), (m, b)]
                 before[(a, m)] = before[(m, b)] = (culprits, parent)
                 continue
             if 0 < len(culprits) <= SNAP_AT_MOST and -1 not in culprits:
@@ -273,7 +372,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
                      fixed=fixed, snapped=snapped, u=np.asarray(us, dtype=float), start=start, readings=varying,
                      # the fit travels as float32: the columns are checked against the drawing through it
                      fit=np.asarray([data[u][2] for u in us], dtype=np.float32).astype(float),
-                     label_px=float(style.label_size))
+                     label_px=float(style.label_size), live=live, areas=measure.areas)
     picks = check_picks(grid)
     live.checks = dict(zip(picks, _checks(construction, figure, given, grid[picks])))
     # and at the built value (the book's): a teacher who returns there sees its own checks
@@ -284,8 +383,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
 
 def _checks(construction: Construction, figure: Figure, given: str, grid: np.ndarray) -> list[list[list[Any]]]:
     """The construction's checks at every value of *grid*, from one sweep (:meth:`Construction.sweep_checks`)."""
-    givens = dict(figure.replay.givens)
-    swept = construction.rod_ratio_sweep(givens, grid) if given == "rod_ratio" else {**givens, given: grid}
+    swept = construction.given_sweep(dict(figure.replay.givens), given, grid)
     sweep = Figure(figure.protocol, figure.protocol.replay(swept), construction.check)
     return [[[c.name, c.measured, c.expected, c.error, c.tolerance, bool(c.ok)] for c in row]
             for row in construction.sweep_checks(sweep)]

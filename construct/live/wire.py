@@ -223,9 +223,11 @@ def live_data(live: LiveSweep) -> dict[str, Any]:
     meta = {"grid": [round(math.log10(v), 12) for v in live.grid],
             "keys": [list(k) for k in live.keys], "flags": live.nearest_columns().nonzero()[0].tolist(),
             "jumps": sorted(where[float(a)] for a, _ in live.jumps)}
+    given = live.live
     return {"given": live.given, "symbol": live.symbol, "low": live.domain.low, "high": live.domain.high,
+            **({"unit": given.unit, "written": list(given.written), "rod": given.rod} if given is not None else {}),
             "initial": live.initial, "rows": int(live.drawn.shape[0]), "cols": int(live.drawn.shape[1]),
-            "label_px": live.label_px,
+            "label_px": live.label_px, **({"areas": live.areas} if live.areas else {}),
             **({"readings": live.readings} if live.readings else {}),
             **encode(live), "bound": round(live.bound + QUANTUM_PX / 2, 3),
             "meta_z": deflated(meta), "checks_z": deflated(_check_table(live))}

@@ -71,8 +71,8 @@ def _slider(data: Mapping[str, Any], first: bool) -> str:
             f'<input type="range" name="{g}" id="live-{g}" min="{lo:.12g}" max="{hi:.12g}" step="any" '
             f'value="{v0:.12g}" aria-label="{sym}" style="flex:1 1 auto">'
             f'<span>{sym} = <output id="{out_id}" class="live-value" data-given="{g}" '
-            f'style="font-variant-numeric:tabular-nums">{html.escape(number(data["initial"], "de"))}</output></span>'
-            f'</label>'
+            f'style="font-variant-numeric:tabular-nums">{html.escape(number(data["initial"], "de"))}</output>'
+            f'{" " + html.escape(data["unit"]) if data.get("unit") else ""}</span></label>'
             f'<div class="live-range" style="{_NOTE}">{html.escape(number(data["low"], "de"))} … '
             f'{html.escape(number(data["high"], "de"))} (log. Skala / log scale; Buchwert / book: '
             f'{html.escape(number(data["initial"], "de"))})</div>')
@@ -389,7 +389,7 @@ LIVE_SCRIPT = r"""
       }
     }
     // the rod's length written at each break (a broken rod is drawn short: the figure says how long it is)
-    var rod = sweeps.filter(function(w){ return w.L.given === "rod_ratio"; })[0];
+    var rod = sweeps.filter(function(w){ return w.L.rod; })[0];
     for (axis = 0; axis < 2; axis++) {
       var lab = rodLabels[axis], at = first[axis];
       if (!rod || !at) { if (lab) lab.g.setAttribute("display", "none"); continue; }
@@ -401,8 +401,94 @@ LIVE_SCRIPT = r"""
       }
       lab.g.removeAttribute("display");
       lab.g.setAttribute("transform", "translate(" + round2(at[0]) + " " + round2(at[1]) + ")");
-      var said = "L = " + book(rod.value) + " " + rod.L.symbol.split("/")[1];
+      var said = rod.L.rod.replace("{v}", book(rod.value));
       setText(lab.halo, said); setText(lab.text, said);
+    }
+  }
+  // ---- areas between two graphs: drawn anew from the graphs that bound them (kernel/areas.py area_between) ----
+  var areas = [];
+  var NUMS = /-?[0-9]+(?:\.[0-9]+)?(?:e[-+]?[0-9]+)?/g;
+  function graph(e){  // a graph as drawn: a line (null: evaluated exactly) or its vertices, x ascending
+    if (e.tagName === "line") return {line: [e.x1.baseVal.value, e.y1.baseVal.value, e.x2.baseVal.value, e.y2.baseVal.value]};
+    var d = e.getAttribute("d"), n = (d.match(NUMS) || []).map(Number), xs = [], ys = [], i, k;
+    if (d.indexOf("C") < 0) { for (i = 0; i + 1 < n.length; i += 2) { xs.push(n[i]); ys.push(n[i + 1]); } }
+    else {  // a French curve drawn through its points: each piece in four, as the area's 64 to a Bézier segment
+      xs.push(n[0]); ys.push(n[1]);
+      for (i = 2; i + 5 < n.length; i += 6) {
+        var x0 = xs[xs.length - 1], y0 = ys[ys.length - 1];
+        for (k = 1; k <= 4; k++) {
+          var t = k / 4, s = 1 - t, a = s * s * s, b = 3 * s * s * t, c = 3 * s * t * t, w = t * t * t;
+          xs.push(a * x0 + b * n[i] + c * n[i + 2] + w * n[i + 4]); ys.push(a * y0 + b * n[i + 1] + c * n[i + 3] + w * n[i + 5]);
+        }
+      }
+    }
+    var order = xs.map(function(_, j){ return j; }).sort(function(p, q){ return xs[p] - xs[q] || p - q; });
+    return {xs: order.map(function(j){ return xs[j]; }), ys: order.map(function(j){ return ys[j]; })};
+  }
+  function ordinate(g, x){
+    if (g.line) { var l = g.line; return l[1] + (x - l[0]) * (l[3] - l[1]) / (l[2] - l[0]); }
+    var xs = g.xs, lo = 0, hi = xs.length - 1;
+    if (x <= xs[0]) return g.ys[0];
+    if (x >= xs[hi]) return g.ys[hi];
+    while (hi - lo > 1) { var m = (lo + hi) >> 1; if (xs[m] <= x) lo = m; else hi = m; }
+    return xs[hi] === xs[lo] ? g.ys[lo] : g.ys[lo] + (x - xs[lo]) * (g.ys[hi] - g.ys[lo]) / (xs[hi] - xs[lo]);
+  }
+  function areaPieces(up, low, xa, xb){  // the region between two graphs from xa to xb, split where they cross
+    var lo = Math.min(xa, xb), hi = Math.max(xa, xb), xs = [lo, hi], i;
+    [up, low].forEach(function(g){ if (g.xs) g.xs.forEach(function(x){ if (x > lo && x < hi) xs.push(x); }); });
+    xs.sort(function(a, b){ return a - b; });
+    xs = xs.filter(function(x, j){ return j === 0 || x !== xs[j - 1]; });
+    var fx = [], fu = [], fl = [];
+    for (i = 0; i < xs.length; i++) {
+      var u = ordinate(up, xs[i]), l = ordinate(low, xs[i]);
+      if (i > 0) {  // a strict change of sign between breakpoints: the crossing (both straight there)
+        var d0 = fu[fu.length - 1] - fl[fl.length - 1], d1 = u - l;
+        if ((d0 < 0 && 0 < d1) || (d1 < 0 && 0 < d0)) {
+          var t = d0 / (d0 - d1), xc = xs[i - 1] + t * (xs[i] - xs[i - 1]), yc = fu[fu.length - 1] + t * (u - fu[fu.length - 1]);
+          fx.push(xc); fu.push(yc); fl.push(yc);
+        }
+      }
+      fx.push(xs[i]); fu.push(u); fl.push(l);
+    }
+    var sign = fu.map(function(u, j){ return Math.sign(u - fl[j]); }), ends = [0], out = [];
+    sign.forEach(function(sg, j){ if (sg === 0 && j > 0 && j < sign.length - 1) ends.push(j); });
+    ends.push(sign.length - 1);
+    ends = ends.filter(function(e, j){ return j === 0 || e !== ends[j - 1]; });
+    for (var p = 0; p + 1 < ends.length; p++) {
+      var a = ends[p], b = ends[p + 1], any = false;
+      for (i = a; i <= b; i++) if (sign[i] !== 0) any = true;
+      if (!any) continue;
+      var rx = [], ry = [];
+      for (i = a; i <= b; i++) { rx.push(fx[i]); ry.push(fu[i]); }
+      for (i = b; i >= a; i--) { rx.push(fx[i]); ry.push(fl[i]); }
+      var ring = [];  // the doubled points where a run starts or ends on a crossing dropped
+      for (i = 0; i < rx.length; i++) {
+        var q = (i + rx.length - 1) % rx.length;
+        if (rx[i] !== rx[q] || ry[i] !== ry[q]) ring.push(round2(rx[i]) + " " + round2(ry[i]));
+      }
+      if (ring.length >= 3) out.push("M" + ring.join("L") + "Z");
+    }
+    return out;
+  }
+  function drawAreas(){
+    for (var i = 0; i < areas.length; i++) {
+      var A = areas[i], e = A.els, pieces;
+      if (!e.every(function(x){ return x; })) continue;
+      var key = e.map(function(x){ return x.tagName === "line" ? x.getAttribute("x1") + x.getAttribute("y1") + x.getAttribute("x2") + x.getAttribute("y2") : x.tagName === "circle" ? x.getAttribute("cx") : x.getAttribute("d"); }).join("|");
+      if (key === A.key) continue;
+      A.key = key;
+      pieces = areaPieces(graph(e[0]), graph(e[1]), e[2].cx.baseVal.value, e[3].cx.baseVal.value);
+      for (var j = 0; j < Math.max(pieces.length, A.pieces.length); j++) {
+        var el = A.pieces[j];
+        if (!el) {  // a piece more than the book's value has: the first one's like, beside the others
+          el = A.pieces[0].cloneNode(false);
+          el.setAttribute("id", A.id + "-" + j);
+          A.pieces[j - 1].parentNode.insertBefore(el, A.pieces[j - 1].nextSibling);
+          A.pieces.push(el);
+        }
+        if (j < pieces.length) { if (el.getAttribute("d") !== pieces[j]) el.setAttribute("d", pieces[j]); el.removeAttribute("display"); }
+        else el.setAttribute("display", "none");
+      }
     }
   }
   // ---- the camera: the shown step's view and ring at the shown value --------------------------------------------
@@ -483,6 +569,7 @@ LIVE_SCRIPT = r"""
     if (player) view(!glide, dragging);
     for (var i = 0; i < S.slots.length; i++) write(S.slots[i]);
     for (i = 0; i < followers.length; i++) follow(followers[i]);
+    drawAreas();
     breakMarks();
     // readings of the figure (an angle to the minute): true at the book's values only
     var atBook = sweeps.every(function(w){ return Math.abs(Math.log10(w.value) - Math.log10(w.L.initial)) < 1e-9; });
@@ -509,9 +596,9 @@ LIVE_SCRIPT = r"""
   // ---- the page's title, givens and checks name the shown values -------------------------------------------
   var titled = [], NUM = "[0-9]+(?:[.,][0-9]+)?", forms = {};
   LIST.forEach(function(L){
-    // the rod as the texts write it: L/r = 5, or r/L = 1/5 (Anhang II, Baumann), r/l = 1/5 (§ 146)
-    forms[L.given] = (L.given === "rod_ratio" ? [["L/r = ", ""], ["r/L = 1/", ""], ["r/l = 1/", ""]] : [[L.symbol + " = ", ""]])
-      .map(function(f){ return [f[0], new RegExp(f[0].replace(/[.*+?^${}()|[\]\\/]/g, "\\$&") + NUM, "g")]; });
+    // the given as the texts write it (live/sweep.py LiveGiven.written): L/r = 5, r/L = 1/5, κ = P/Bmax = 8
+    forms[L.given] = (L.written && L.written.length ? L.written : [L.symbol + " = "])
+      .map(function(f){ return [f, new RegExp(f.replace(/[.*+?^${}()|[\]\\/]/g, "\\$&") + NUM, "g")]; });
   });
   document.querySelectorAll("header h1, header h1 *").forEach(function(e){
     e.childNodes.forEach(function(t){
@@ -535,9 +622,10 @@ LIVE_SCRIPT = r"""
       });
       if (t.n.nodeValue !== text) t.n.nodeValue = text;
     });
-    cells.forEach(function(c){
+    cells.forEach(function(c){  // each number of the cell as written, in its own language (2,0 m / 2.0 m)
       var w = sweeps.filter(function(x){ return x.L.given === c[1]; })[0];
-      setText(c[0], (c[2] ? "1/" : "") + book(w.value));
+      setText(c[0], c[2] ? "1/" + book(w.value) : c[3].replace(new RegExp(NUM, "g"), function(n){
+        return n.indexOf(".") >= 0 ? String(Number(w.value.toPrecision(4))) : book(w.value); }));
     });
   }
   var body = document.querySelector("#live-checks tbody"), shownAt = -1, rowsOf = [];
@@ -599,6 +687,13 @@ LIVE_SCRIPT = r"""
     // the rod lettered L, too)
     svg.querySelectorAll("line[id], path[id]").forEach(function(l){
       if (!l.closest("g.lbg") && !l.closest("#furniture") && (l.tagName === "line" || TWO.test(l.getAttribute("d")))) lines.push(l); });
+    // the areas: their pieces and the marks they are drawn from
+    (LIST[0].areas || []).forEach(function(a){
+      var find = function(id){ return player && player.find ? player.find(id) : document.getElementById(id); };
+      var pieces = [], el;
+      for (var j = 0; (el = find(j ? a[0] + "-" + j : a[0])); j++) pieces.push(el);
+      if (pieces.length) areas.push({id: a[0], pieces: pieces, els: a.slice(1).map(find), key: null});
+    });
     // the break marks as built give way to the page's own (drawn at every value, the built one too)
     svg.querySelectorAll("#furniture .brk, #furniture .brkline").forEach(function(e){ e.parentNode.removeChild(e); });
     (LIST[0].readings || []).forEach(function(id){

@@ -1103,6 +1103,27 @@ def _curve_points(objects: Replay, shown: set[str] | None = None) -> list[tuple[
     return pts
 
 
+#: Two gaps between the points marked on a circle are one gap's width apart by less than this (rad): a tie.
+GAP_TIE = 1e-9
+
+
+def widest_gap(angles: Sequence[float], gaps: Sequence[float]) -> int:
+    """Which gap between the points marked on a circle (at *angles*, sorted) the drawn arc leaves out: the widest,
+    and of two as wide (a circle cut by a line through its centre: a half circle either way) the one about the
+    circle's rightmost point (angle 0; of two as near, the one about its top), never the other by a rounding --
+    the arc stays on one side as a given moves.
+
+    >>> widest_gap([math.pi / 2, 3 * math.pi / 2], [math.pi, math.pi]), widest_gap([0.0, 1.0], [1.0, TWO_PI - 1.0])
+    (1, 1)
+    """
+    widest = max(gaps)
+    tied = [j for j, g in enumerate(gaps) if g >= widest - GAP_TIE]
+    if len(tied) == 1:
+        return tied[0]
+    mid = lambda j: angles[j] + gaps[j] / 2  # noqa: E731
+    return max(tied, key=lambda j: (round(math.cos(mid(j)), 9), round(math.sin(mid(j)), 9), -j))
+
+
 def _segment_extent(line: Line, pts: list[Point], margin: float) -> tuple[float, float, float, float]:
     (px, py), _ = line
     ux, uy = line.direction()
@@ -1139,7 +1160,7 @@ def _circle_extent(circle: Circle, pts: list[Point], margin: float, role: str,
     # The drawn arc is the complement of the largest empty gap between marked points.
     gaps = [(angles[(i + 1) % len(angles)] - a) % TWO_PI or (TWO_PI if len(angles) == 1 else 0.0)
             for i, a in enumerate(angles)]
-    i = max(range(len(gaps)), key=gaps.__getitem__)
+    i = widest_gap(angles, gaps)
     start = angles[(i + 1) % len(angles)]
     sweep = TWO_PI - gaps[i]
     pad = min(margin / r, 0.6)

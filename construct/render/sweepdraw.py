@@ -26,21 +26,51 @@ from typing import Any
 
 import numpy as np
 
+from ..kernel.curves import BezierCurve, Polyline
 from ..kernel.geometry import Circle, Line, Point, take
-from .scene import BREAK_FRACTION, BREAK_FRACTION_Y, BREAK_KEEP, TWO_PI, MarkKind, Scene, fanned_lines, letter_point, on_curve_names
+from .scene import BREAK_FRACTION, BREAK_FRACTION_Y, BREAK_KEEP, GAP_TIE, TWO_PI, MarkKind, Scene, fanned_lines, letter_point, on_curve_names
 from .svg import point_radius
 from .styles import Style
 
 __all__ = ["SweepDrawing", "sweep_drawable"]
 
 
-def sweep_drawable(scene: Scene) -> bool:
-    """Can :class:`SweepDrawing` draw *scene*'s figure over a sweep (points, lines, circles, arcs, curves on an
-    axis that may be broken; no areas, no plate furniture)?"""
-    return not scene.furniture and all(m.kind is not MarkKind.AREA for m in scene.marks)
+def sweep_drawable(scene: Scene, style: Style | None = None) -> bool:
+    """Can :class:`SweepDrawing` draw *scene*'s figure over a sweep (points, lines, circles, arcs, curves and
+    areas on axes that may be broken; no plate furniture, no hatching: a style that hatches draws its hatching
+    value by value, as many lines as each area's size holds)?"""
+    hatched = style is None or style.hatch
+    return not scene.furniture and not (hatched and any(m.kind is MarkKind.AREA for m in scene.marks))
 
 
 _ATAN2 = np.frompyfunc(math.atan2, 2, 1)
+
+
+def _curve_rows(o: Any, n: int, vec: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A curve's drawn points (its ``curve_points``) at every value of a sweep: x and y (points x values), and
+    how many points each value has (the rows past that are nan).  A French curve or a polyline whose points
+    are the sweep's arrays is sampled for all values at once (BezierCurve.sample, Polyline.curve_points);
+    another curve value by value."""
+    if isinstance(o, BezierCurve):
+        ctrl = np.stack([np.stack([np.stack([vec(p.x), vec(p.y)]) for p in seg]) for seg in o.segments()])
+        t = np.arange(17)[:, None] / 16
+        u = 1.0 - t
+        weights = np.hstack([u ** 3, 3.0 * u * u * t, 3.0 * u * t * t, t ** 3])
+        pts = np.einsum("tj,kjdn->ktdn", weights, ctrl)  # (segments, 17, 2, values)
+        pts[:, 0], pts[:, -1] = ctrl[:, 0], ctrl[:, 3]
+        flat = np.concatenate([pts[:, :-1].reshape(-1, 2, n), ctrl[-1:, 3]])
+        return flat[:, 0], flat[:, 1], np.full(n, flat.shape[0])
+    if isinstance(o, Polyline):
+        pts = o.points + ((o.points[0],) if o.closed else ())
+        X, Y = np.vstack([vec(p.x) for p in pts]), np.vstack([vec(p.y) for p in pts])
+        return X, Y, np.full(n, len(pts))
+    rows = [take(o, i).curve_points() for i in range(n)]
+    counts = np.array([len(r) for r in rows])
+    X, Y = np.full((counts.max(), n), np.nan), np.full((counts.max(), n), np.nan)
+    for i, r in enumerate(rows):
+        X[:len(r), i] = [p[0] for p in r]
+        Y[:len(r), i] = [p[1] for p in r]
+    return X, Y, counts
 
 
 def _atan2(y: np.ndarray, x: np.ndarray) -> np.ndarray:
@@ -87,14 +117,29 @@ class SweepDrawing:
         # the figure's extent before the marks are drawn: every point, every curve's points
         xs, ys = [np.vstack([p[0] for p in points.values()])], [np.vstack([p[1] for p in points.values()])]
         curves: dict[str, list[tuple]] = {}
+        areas: dict[str, list[tuple]] = {}  # an area's pieces at each value, each a ring of points
         for name, o in objects.items():
             if isinstance(o, (Point, Line, Circle)):
                 continue
             first = take(o, 0)
             if hasattr(first, "rings"):  # an area's pieces count for the extent (scene._curve_points)
-                rows = [tuple((p[0], p[1]) for ring in take(o, i).rings() for p in ring) for i in range(n)]
+                if hasattr(o, "extent"):  # a sweep's areas: their boxes without their pieces
+                    areas[name] = x0, x1, y0, y1 = o.extent()
+                    xs += [np.vstack([x0, x1])]
+                    ys += [np.vstack([y0, y1])]
+                    continue
+                rings = [[p for ring in take(o, i).rings() for p in ring] for i in range(n)]
+                areas[name] = tuple(np.array([f(p[c] for p in r) for r in rings]) for c, f in
+                                    ((0, min), (0, max), (1, min), (1, max)))
+                rows = [tuple(r) for r in rings]
             elif hasattr(first, "curve_points"):
-                rows = curves[name] = [tuple((p[0], p[1]) for p in take(o, i).curve_points()) for i in range(n)]
+                curves[name] = _curve_rows(o, n, vec)
+                CX, CY, counts = curves[name]
+                if (counts > 0).all():
+                    with np.errstate(invalid="ignore"):
+                        xs += [np.vstack([np.nanmin(CX, 0), np.nanmax(CX, 0)])]
+                        ys += [np.vstack([np.nanmin(CY, 0), np.nanmax(CY, 0)])]
+                continue
             else:
                 continue
             if rows and all(rows):
@@ -105,7 +150,7 @@ class SweepDrawing:
         margin = 0.035 * span
         # each mark's geometry, its kind's rows
         self.marks = [m for m in template.marks if m.id not in self._at]
-        self._sources = (objects, points, on, curves)
+        self._sources = (objects, points, on, curves, areas)
         self._draw(margin)
         if self._broken is not None:
             # scene.build_scene: a broken figure is drawn again with the margin of what is left of it (its
@@ -144,7 +189,7 @@ class SweepDrawing:
 
     def _kept_span(self) -> np.ndarray:
         """scene._kept_span over the sweep: what the points and curves span once broken alone."""
-        objects, points, on, curves = self._sources
+        objects, points, on, curves, areas = self._sources
         P = tuple(np.vstack(c) for c in zip(*[points[m.name] for m in self.marks
                                                if m.kind is MarkKind.POINT and m.name in points]))
         saved = (self.geoms, self.curves, self._broken, self._breaks)
@@ -177,8 +222,9 @@ class SweepDrawing:
 
     def _draw(self, margin: np.ndarray) -> None:
         """The marks' geometry with lines and arcs reaching *margin* past their marked points, broken."""
-        objects, points, on, curves = self._sources
-        n = self.n
+        objects, points, on, curves, areas = self._sources
+        n, vec = self.n, self._vec
+        piece: dict[str, int] = {}  # the areas whose extent is drawn (on their first piece)
         self.ok = np.ones(n, dtype=bool)
         by: dict[MarkKind, list] = {k: [] for k in MarkKind}
         curve_geoms: dict[str, tuple] = {}
@@ -191,13 +237,24 @@ class SweepDrawing:
                 by[m.kind].append(self._segment(obj, marked, margin))
             elif m.kind.round and isinstance(obj, Circle):
                 by[m.kind].append(self._circle(m, obj, marked, margin))
+            elif m.kind is MarkKind.AREA and m.name in areas:
+                # an area's pieces come and go and hold as many points as their curves' breakpoints: the page
+                # draws them from those curves (live.py areaPieces); here they count for the figure's extent, as
+                # the box of all its pieces (two corners, broken point by point as the pieces are), on its first
+                if m.name in piece:
+                    continue
+                piece[m.name] = 0
+                x0, x1, y0, y1 = areas[m.name]
+                curve_geoms[m.id] = ((vec(x0), vec(y0)), (vec(x1), vec(y1)))
             elif m.kind is MarkKind.CURVE and m.name in curves:
-                rows = curves[m.name]
+                CX, CY, counts = curves[m.name]
                 count = len(m.geom)
-                self.ok &= np.array([len(r) == count for r in rows])
-                curve_geoms[m.id] = tuple((np.array([r[k][0] if len(r) == count else np.nan for r in rows]),
-                                           np.array([r[k][1] if len(r) == count else np.nan for r in rows]))
-                                          for k in range(count))
+                self.ok &= counts == count
+                if CX.shape[0] < count:  # (nowhere as many points as the built figure's: not drawn here)
+                    CX = np.vstack([CX, np.full((count - CX.shape[0], n), np.nan)])
+                    CY = np.vstack([CY, np.full((count - CY.shape[0], n), np.nan)])
+                ok = counts == count
+                curve_geoms[m.id] = tuple((np.where(ok, CX[k], np.nan), np.where(ok, CY[k], np.nan)) for k in range(count))
             else:
                 raise ValueError(f"{m.id}: a {m.kind.value} the sweep does not draw")
         self.rows = {k: [m for m in self.marks if m.kind is k and m.id not in curve_geoms] for k in MarkKind}
@@ -255,7 +312,11 @@ class SweepDrawing:
             step = np.diff(a, axis=0)
             self.ok &= ~((step > 0) & (step <= 1e-9)).any(0) & (a[0] + TWO_PI - a[-1] > 1e-9)
             gaps = np.mod(np.vstack([a[1:], a[:1]]) - a, TWO_PI)
-            i = np.argmax(gaps, axis=0)
+            # scene.widest_gap: the widest, and of two as wide the one about angle 0
+            tied = gaps >= gaps.max(axis=0) - GAP_TIE
+            mid = a + gaps / 2
+            score = np.round(np.cos(mid), 9) + 1e-10 * np.round(np.sin(mid), 9) - 1e-12 * np.arange(k)[:, None]
+            i = np.argmax(np.where(tied, score, -np.inf), axis=0)
             cols = np.arange(self.n)
             one = a[-1] == a[0]  # every marked point at one place: the arc is that place (and its margin)
             start = np.where(one, a[0], a[(i + 1) % k, cols])
@@ -381,6 +442,19 @@ class SweepDrawing:
         m = self.style.margin_px
         return m + left + (x - xmin) * scale, m + top + (ymax - y) * scale
 
+    def breaks_page(self) -> np.ndarray:
+        """:meth:`breaks_px` of every value: (values x 4)."""
+        out = []
+        for axis in (0, 1):
+            b = self._breaks.get(axis)
+            if b is None:
+                out += [np.zeros(self.n), np.zeros(self.n)]
+                continue
+            brk, start, keep = b[0], b[1], b[2]
+            at = self._px(start, 0.0)[0] if axis == 0 else self._px(0.0, start + keep)[1]
+            out += [np.where(brk, np.round(at, 2), 0.0), np.where(brk, np.round(self._page[2] * keep, 2), 0.0)]
+        return np.column_stack(out) + 0.0
+
     def breaks_px(self, i: int) -> list[float]:
         """Where value *i*'s breaks stand on its page: [x, width, top, height] of their bands (canvas px, two
         decimals), 0 0 for an axis not broken there (live.measure.breaks_px)."""
@@ -425,6 +499,8 @@ class SweepDrawing:
             out[MarkKind.ARC] = stack(x1, y1, rr, rr, 0.0 * rr, (sw > math.pi) * 1.0, 0.0 * rr + 1.0, x0, y0)
         for m in self.curve_marks:
             P = [self._px(x, y) for x, y in self.curves[m.id]]
+            if m.kind is MarkKind.AREA:  # (the page draws areas from their curves)
+                continue
             if m.straight:
                 closed = len(P) > 2 and tuple(m.geom[0]) == tuple(m.geom[-1])
                 cols = [c for p in (P[:-1] if closed else P) for c in p]

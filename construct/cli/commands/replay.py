@@ -22,8 +22,9 @@ def add_arguments(p) -> None:
     p.add_argument("--force-frames", action="store_true",
                    help="(--frames) write frames even when they are estimated above 500 MB (refused with the estimate otherwise)")
     p.add_argument("--live", action="store_true",
-                   help="the player gets a slider for the rod ratio L/r over its domain (1.05 .. 1000): the "
-                        "protocol swept over a grid fine enough that the page draws within 0.5 px (takes a minute)")
+                   help="the player gets a slider for each continuous given over its domain (the rod ratio L/r, "
+                        "1.05 .. 1000; the rod in metres; Baumann's kappa): the protocol swept over a grid fine enough "
+                        "that the page draws within 0.5 px (takes seconds)")
 
 
 def _live_page(c, fig, style: str):
@@ -34,9 +35,12 @@ def _live_page(c, fig, style: str):
 
     givens = live_givens(c, fig) if c is not None else []
     if not givens or style not in STYLES:
-        raise InvalidParameter(f"--live: {fig.protocol.construction} has no rod ratio to move"
+        raise InvalidParameter(f"--live: {fig.protocol.construction} has no continuous given to move (the rod, κ)"
                                if not givens else f"unknown style {style!r}")
-    return live_data(live_sweep(c, fig, givens[0], style=STYLES[style]))
+    from ...live import Measure
+
+    measure = Measure(c, fig, STYLES[style])  # (the givens' sweeps share it)
+    return [live_data(live_sweep(c, fig, g.name, style=STYLES[style], measure=measure)) for g in givens]
 
 
 def run(args) -> int:

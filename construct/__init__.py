@@ -13,10 +13,14 @@ One import gives everything to build, replay, draw and check a construction:
   ``crank-angle``, ``inertia-curve``, ...).
 - Rules for which intersection a step takes: :func:`nearer`, :func:`farther`,
   :func:`left_of`, :func:`right_of`, :func:`toward`, :func:`only`.
+- :class:`Check`: what ``figure.checks()`` gives, a measured quantity against
+  its analytic value; :class:`Style`: how a figure is drawn.
 - Errors: every error is a :class:`ConstructError`; a failing step raises a
   :class:`StepError` naming the step, its instrument and the values.  Every
   warning is a :class:`ConstructWarning` (:class:`HiddenLabelWarning`: a plate
-  leaves out a point you lettered).
+  leaves out a point you lettered).  All of :mod:`construct.kernel.errors` is here.
+- :mod:`construct.testing`: :func:`~construct.testing.assert_figures_equal` for
+  your own tests.
 
 A complete construction -- the midpoint of a segment -- drawn to SVG:
 
@@ -38,91 +42,73 @@ True
 
 from __future__ import annotations
 
+import importlib
+import warnings
 from typing import Any
 
-from .constructions import Construction, find, get, names
-from .kernel.errors import (ConstructError, ConstructWarning, DegenerateObject, DuplicateName, GeometryError,
-                            HiddenLabelWarning, InvalidParameter, MissingGiven, NoIntersection, OutputError,
-                            ProtocolFormatError, RuleError, StepError, UnknownConstruction, UnknownObject, WrongInput)
-
-from .kernel import version as _installed_version
-from .kernel.geometry import Circle, Length, Line, Point
+from .constructions import Construction, get, names
+from .constructions.checking import Check
 from .figure import Builder, Figure
+from .kernel import errors as _errors
+from .kernel import version as _installed_version
+from .kernel.errors import InvalidParameter
+from .kernel.geometry import Circle, Length, Line, Point
 from .kernel.protocol import Protocol, Replay
 from .kernel.rules import farther, left_of, nearer, only, right_of, toward
 
-
 __version__ = _installed_version()
+
+# every error and warning, as kernel/errors.py lists them (one list: a new error is at the front door at once)
+globals().update((name, getattr(_errors, name)) for name in _errors.__all__)
 
 __all__ = [
     "__version__",
-    # building, replaying, drawing
-    "Builder",
-    "Protocol",
-    "Replay",
-    "Figure",
-    "Construction",
-    "get",
-    "names",
-    "svg",
-    "write_replay",
+    # building, replaying, drawing, checking
+    "Builder", "Protocol", "Replay", "Figure", "Construction", "Check", "Style", "get", "names",
     # values
-    "Point",
-    "Line",
-    "Circle",
-    "Length",
+    "Point", "Line", "Circle", "Length",
     # rules
-    "nearer",
-    "farther",
-    "left_of",
-    "right_of",
-    "toward",
-    "only",
-    # errors
-    "ConstructError",
-    "InvalidParameter",
-    "UnknownConstruction",
-    "ProtocolFormatError",
-    "OutputError",
-    "StepError",
-    "GeometryError",
-    "NoIntersection",
-    "DegenerateObject",
-    "RuleError",
-    "UnknownObject",
-    "WrongInput",
-    "MissingGiven",
-    "DuplicateName",
-    # warnings
-    "ConstructWarning",
-    "HiddenLabelWarning",
+    "nearer", "farther", "left_of", "right_of", "toward", "only",
+    # errors and warnings
+    *_errors.__all__,
 ]
 
-
-def svg(figure: Figure, style: str = "plain", *, upto: int | None = None) -> str:
-    """A figure (or its steps 1..upto) as SVG text in a named style: ``plain``, ``historical``, ``teaching``."""
-    return _figure(figure, "svg").svg(style=style, upto=upto)
-
-
-def write_replay(figure: Figure, out_dir, *, style: str = "plain", frames: str = "auto") -> dict:
-    """Write a figure's outputs (final SVG, frames, protocol.json, animation, player) into *out_dir*.
-
-    The folder is written whole or not at all.  Works for registered book
-    constructions and for protocols of your own.
-    """
-    from .render.output import write_replay as _write
-
-    if frames not in ("auto", "all", "groups", "none"):
-        raise InvalidParameter(f"frames is one of auto, all, groups, none; got {frames!r}")
-    fig = _figure(figure, "write_replay")
-    book = find(fig.protocol.construction)
-    # captioned as its book writes it when a book construction built or replayed it (it checks the figure)
-    return _write(book if book is not None and fig.checker == book.check else None, fig, out_dir, style=style,
-                  frames=frames)
+#: Names loaded when first asked for (``Style`` loads the drawing layer, which ``import construct`` does not).
+_LAZY = {"Style": ("construct.render.styles", "Style")}
+#: Old names that still work, with a DeprecationWarning, and what to use instead.
+_DEPRECATED = {"svg": ("construct", "_svg", "construct.svg(figure) is deprecated; use figure.svg()"),
+               "write_replay": ("construct", "_write_replay",
+                                "construct.write_replay(figure, out) is deprecated; use figure.write(out)")}
 
 
-def _figure(figure: Any, what: str) -> Figure:
+def __getattr__(name: str) -> Any:
+    if name in _LAZY:
+        module, attr = _LAZY[name]
+        value = getattr(importlib.import_module(module), attr)
+        globals()[name] = value
+        return value
+    if name in _DEPRECATED:
+        module, attr, message = _DEPRECATED[name]
+        warnings.warn(message, DeprecationWarning, stacklevel=2)
+        return getattr(importlib.import_module(module), attr)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY) | {"testing"})
+
+
+def _svg(figure: Figure, style: str = "plain", *, upto: int | None = None) -> str:
+    """What ``construct.svg(figure)`` did: ``figure.svg()``."""
     if not isinstance(figure, Figure):
-        raise InvalidParameter(f"{what}() takes a Figure (from Builder.figure() or get(name).figure()), "
+        raise InvalidParameter(f"svg() takes a Figure (from Builder.figure() or get(name).figure()), "
                                f"got {type(figure).__name__}")
-    return figure
+    return figure.svg(style=style, upto=upto)
+
+
+def _write_replay(figure: Figure, out_dir, *, style: str = "plain", frames: str = "auto") -> dict:
+    """What ``construct.write_replay(figure, out)`` did: ``figure.write(out)``."""
+    if not isinstance(figure, Figure):
+        raise InvalidParameter(f"write_replay() takes a Figure (from Builder.figure() or get(name).figure()), "
+                               f"got {type(figure).__name__}")
+    return figure.write(out_dir, style=style, frames=frames)

@@ -27,6 +27,7 @@ from typing import Any, Callable, Mapping
 from .kernel import instruments
 from .kernel.errors import InvalidParameter
 from .kernel.protocol import Protocol, Replay
+from .render.notation import Described
 
 __all__ = ["Figure", "Builder"]
 
@@ -40,6 +41,9 @@ class Figure:
     #: Compares the figure's constructed quantities with the analytic formulas; set by the book construction
     #: that built or replayed the figure (:meth:`construct.constructions.Construction.check`), None otherwise.
     checker: Callable[["Figure"], list] | None = field(default=None, compare=False, repr=False)
+    #: The book construction that built or replayed the figure (:class:`construct.constructions.Construction`):
+    #: its citation and wording caption the figure, its domain bounds the givens.  None for a figure of your own.
+    construction: Described | None = field(default=None, compare=False, repr=False)
 
     @property
     def params(self) -> Mapping[str, Any]:
@@ -58,6 +62,60 @@ class Figure:
         if upto is not None and (isinstance(upto, bool) or not isinstance(upto, numbers.Integral)):
             raise InvalidParameter(f"upto is a step number, got {upto!r}")
         return figure_svg(self, style=style, upto=upto)
+
+    def pdf(self, path: Any = None, *, style: str = "historical", width_mm: float = 120.0, letter_pt: float = 7.0,
+            caption: str = "none", outline: bool = False) -> bytes:
+        """The figure's plate as a PDF at its final size; written to *path* (whole or not at all) when given.
+
+        The page is *width_mm* wide, the letters *letter_pt* points high (placed for that size), every
+        line in the style's weights in points, the fonts embedded (*outline*: drawn as outlines), the
+        caption beneath it *none*, *de* or *en* (:mod:`construct.render.pdf`).  Needs cairosvg.
+
+        >>> pdf = Builder("demo", givens={}).figure().pdf(width_mm=80)
+        >>> pdf[:5]
+        b'%PDF-'
+        """
+        from .render.pdf import pdf_bytes
+
+        data = pdf_bytes(self._plate(style, width_mm, letter_pt, caption, outline=outline))
+        if path is not None:
+            from .io.staging import write_bytes
+
+            write_bytes(path, data)
+        return data
+
+    def tikz(self, path: Any = None, *, style: str = "historical", width_mm: float = 120.0, letter_pt: float = 7.0,
+             caption: str = "none", standalone: bool = False, tikz_style: str = "tikz") -> str:
+        """The figure's plate as a TikZ picture to ``\\input`` (or, *standalone*, a whole LaTeX document);
+        written to *path* when given (:mod:`construct.render.tikz`).
+
+        Every lettered point is a named coordinate, every letter TeX text placed beside its point.
+
+        >>> b = Builder("demo", givens={})
+        >>> _ = b.given_point("A", 0.0, 0.0, label="A"); _ = b.given_point("B", 2.0, 0.0, label="B")
+        >>> "\\\\coordinate (A) at (0,0);" in b.figure().tikz()
+        True
+        """
+        from .render.tikz import tikz_document, tikz_picture
+
+        if not isinstance(standalone, bool):
+            raise InvalidParameter(f"standalone is True or False, got {standalone!r}")
+        plate = self._plate(style, width_mm, letter_pt, caption, tikz_style=tikz_style)
+        text = tikz_document(plate) if standalone else tikz_picture(plate)
+        if path is not None:
+            from .io.staging import write_bytes
+
+            write_bytes(path, text.encode("utf-8"))
+        return text
+
+    def _plate(self, style: str, width_mm: float, letter_pt: float, caption: str, **how: Any) -> Any:
+        """The figure laid out on a sheet (:func:`construct.render.output.print_plate`), with the plate of the book
+        construction that built it (the owner of its checker), if one did."""
+        from .render.output import print_plate
+        from .render.page import Sheet
+
+        sheet = Sheet(width_mm=width_mm, letter_pt=letter_pt, caption=caption, **how)
+        return print_plate(self, construction=getattr(self.checker, "__self__", None), style=style, sheet=sheet)
 
     def checks(self) -> list:
         """The construction's checks, when a book construction built or replayed the figure; else none.
@@ -82,10 +140,32 @@ class Figure:
         return plot_figure(self, ax, style=style, upto=upto)
 
     def with_givens(self, **givens: Any) -> "Figure":
-        """The same steps replayed with other givens (arrays make a sweep)."""
+        """The same steps replayed with other givens (arrays make a sweep); a book construction's figure keeps
+        to the construction's domain.
+
+        >>> import construct
+        >>> fig = construct.get("crank").figure(parts=6)
+        >>> again = fig.with_givens(rod_ratio=4.0)
+        >>> again.replay.givens["rod_ratio"], again.protocol is fig.protocol
+        (4.0, True)
+        >>> fig.with_givens(rod_ratio=0.5)
+        Traceback (most recent call last):
+        ...
+        construct.kernel.errors.InvalidParameter: rod ratio L/r must be greater than 1 (the rod must be longer than the crank), got 0.5
+        """
         values = dict(self.replay.givens)
         values.update(givens)
-        return Figure(self.protocol, self.protocol.replay(values), self.checker)
+        if self.construction is not None:
+            self.construction.validate(values)
+        return Figure(self.protocol, self.protocol.replay(values), self.checker, self.construction)
+
+    def write(self, out_dir: Any, *, style: str = "plain", frames: str = "auto") -> dict:
+        """Write the figure's outputs into *out_dir* (made or replaced whole, never half-written): the layered
+        final.svg, protocol.json, the animation, the player, the storyboard and *frames* (auto, all, groups,
+        none: standalone frames).  Returns what was written (counts, the folder)."""
+        from .render.output import write_replay  # the rendering layer, loaded when a drawing is asked for
+
+        return write_replay(self.construction, self, out_dir, style=style, frames=frames)
 
     def _repr_svg_(self) -> str:
         """Inline display in Jupyter: the final figure in the teaching style."""

@@ -16,6 +16,7 @@ committed gallery stays small.)
     OUT/README.md, OUT/index.html         the front page: the books, the plates (and players), the errata
     OUT/<entry>/checks.html               the checks and the construction's method, steps and instruments
     OUT/errata-<book>.html                a book's errata: what is wrong first, then every printed number
+    OUT/latex/plates.tex, OUT/latex/*.tikz  two plates as TikZ, set on one LaTeX page (:data:`LATEX_PLATES`)
 
     OUT/.construct-manifest.json        every file above with its SHA-256: the mark of a gallery
 
@@ -55,7 +56,7 @@ from .render.notation import givens as book_givens
 from .render.styles import STYLES
 
 __all__ = ["build_gallery", "gallery_plan", "entry_slug", "is_gallery", "GALLERY_STYLES", "GALLERY_OUTPUTS",
-           "FRAME_MODE", "LIVE_PLAYERS"]
+           "FRAME_MODE", "LIVE_PLAYERS", "LATEX_PLATES"]
 
 GALLERY_STYLES = ("historical", "teaching")
 #: No standalone frames: frame k holds the marks of k steps, so all frames
@@ -72,6 +73,9 @@ GALLERY_OUTPUTS = {"historical": (), "teaching": ("player",)}
 #: 1-3 s to the build), and the gallery stays under its 15 MB.  `construct replay NAME --live` gives any
 #: construction with a rod ratio its slider.
 LIVE_PLAYERS = ("crank", "inertia-curve")
+#: The plates the gallery's LaTeX example sets on one page (``latex/plates.tex``, beside their ``.tikz``
+#: files): the crank and Abb. 1055, the piston-force line over the whole revolution.
+LATEX_PLATES = (("crank", {"rod_ratio": 5.0, "parts": 18}), ("piston-force", {"revolution": True}))
 #: The width (CSS px) at which the gallery page shows a figure: its own width, one figure per row,
 #: so that letters of 12 px and captions of 13-14 px are shown at that size (never under 9 px).
 DISPLAY_PX = 960
@@ -177,7 +181,8 @@ def _method(fig) -> list[tuple[str, str]]:
             ("instruments", ", ".join(f"{k} {v}" for k, v in fig.protocol.instrument_counts().items()))]
 
 
-def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> tuple[list[dict], dict]:
+def _build_entry(root: Path, number: int, name: str, params: dict[str, Any],
+                 formats: tuple[str, ...] = ("svg",)) -> tuple[list[dict], dict]:
     """Build one figure's folder (protocol, checks, both styles) under *root*; return its entries and index row."""
     c = get(name)
     fig = c.figure(**params)
@@ -213,8 +218,10 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any]) -> 
 
             drawing = drawing or Drawing(scene_for(c, fig), STYLES[style])
             thumb = thumbnail_view(drawing)
+        # the plates also as PDF or TikZ when asked (construct gallery --format): the historical style's
         info = write_outputs(sdir, c, fig, STYLES[style], frames=FRAME_MODE, fig_number=number, protocol=False,
-                             outputs=GALLERY_OUTPUTS[style], live=live, drawing=drawing)
+                             outputs=GALLERY_OUTPUTS[style], live=live, drawing=drawing,
+                             formats=("svg", *formats) if style == "historical" else ("svg",))
         files = sorted(str(p.relative_to(root)) for p in sdir.rglob("*") if p.is_file())
         files += [f"{slug}/protocol.json"] * first + [f"{slug}/checks.md", f"{slug}/checks.json"]
         entries.append({"construction": name, "params": dict(params), "style": style,
@@ -252,8 +259,11 @@ def _first_of_its_construction(name: str, params: Mapping[str, Any]) -> bool:
 
 def build_gallery(out: str | Path, *, progress: bool = False, workers: int | None = None,
                   before_swap: Callable[..., None] | None = None,
-                  check: Callable[[Path], Any] | None = None) -> list[dict]:
+                  check: Callable[[Path], Any] | None = None, formats: Any = ("svg",)) -> list[dict]:
     """Build the whole gallery into *out* (swapped in whole); return one dict per (entry, style).
+
+    *formats*: besides the SVG figures, each plate (the historical style) also as ``final.pdf`` or
+    ``final.tikz`` and ``final.tex`` at its final size (:data:`construct.render.output.FORMATS`).
 
     *before_swap* is called with the finished staging folder just before it
     replaces *out* (``construct gallery`` lints it there); what it raises
@@ -272,12 +282,15 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
     first, the live players (their sweeps) before the others, so that no
     process is left with a long one at the end.
     """
+    from .render.output import check_formats
+
+    extra = tuple(f for f in check_formats(formats) if f != "svg")
     plan = gallery_plan()
     bar = _Progress(len(plan), progress)
     entries: list[dict] = []
     index: list[dict] = []
     checked: list[Any] = []
-    jobs = [(number, name, dict(params), check) for number, (name, params) in enumerate(plan, start=1)]
+    jobs = [(number, name, dict(params), check, extra) for number, (name, params) in enumerate(plan, start=1)]
     if workers is None:
         workers = min(4, os.cpu_count() or 1)
     with replaced_with_manifest(out, "gallery", described=GALLERY_DESCRIBED, what="gallery folder") as root:
@@ -327,6 +340,7 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
             entries += figure_entries
             index.append(row)
             checked.append(found)
+        _latex_example(root, plan)
         write_text(root / "README.md", _readme(index, sources))
         write_text(root / "index.html", _index_html(index, sources))
         _site_pages(root, index, sources)
@@ -336,10 +350,30 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
     return entries
 
 
+def _latex_example(root: Path, plan: list[tuple[str, dict[str, Any]]]) -> None:
+    """``latex/plates.tex``: the plates of :data:`LATEX_PLATES` the plan builds, as TikZ, on one LaTeX page."""
+    from .render.output import figure_title
+    from .render.output import print_plate
+    from .render.tikz import tikz_example, tikz_picture
+
+    chosen = [(name, params) for name, params in LATEX_PLATES if (name, params) in plan]
+    if not chosen:
+        return
+    plates = []
+    for name, params in chosen:
+        c = get(name)
+        fig = c.figure(**params)
+        file = f"{entry_slug(name, params)}.tikz"
+        write_text(root / "latex" / file, tikz_picture(print_plate(fig, construction=c)))
+        plates.append((file, figure_title(c, fig)[0]))
+    write_text(root / "latex" / "plates.tex", tikz_example(plates))
+
+
 def _build_and_check(root: Path, number: int, name: str, params: dict[str, Any],
-                     check: Callable[[Path], Any] | None) -> tuple[list[dict], dict, Any]:
+                     check: Callable[[Path], Any] | None,
+                     formats: tuple[str, ...] = ()) -> tuple[list[dict], dict, Any]:
     """:func:`_build_entry`, then *check* on the figure's folder (None without one)."""
-    figure_entries, row = _build_entry(root, number, name, params)
+    figure_entries, row = _build_entry(root, number, name, params, formats)
     return figure_entries, row, (check(root / row["slug"]) if check is not None else None)
 
 

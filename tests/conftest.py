@@ -162,6 +162,16 @@ def rod_ratio_sweep() -> Callable[[str, Any], tuple[Any, Any, Any]]:
     return sweep
 
 
+@pytest.fixture(scope="session")
+def crank6():
+    """The crank construction and its figure at 6 parts, L/r = 5: small, with every kind of step (the renderers'
+    tests share it)."""
+    from construct import get
+
+    c = get("crank")
+    return c, c.figure(parts=6, rod_ratio=5.0)
+
+
 # -- headless Chromium, for the player, the live player and the gallery site ---------------------------------
 
 CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"

@@ -9,6 +9,7 @@ import pytest
 
 import construct.gallery as gallery
 from construct.constructions import get, names
+from construct.kernel.errors import InvalidParameter
 from construct.kernel.geometry import Length
 
 REPO = Path(__file__).resolve().parents[1]
@@ -114,11 +115,27 @@ def test_committed_gallery_has_every_construction():
 
 
 def test_the_gallery_stays_small_enough_to_commit():
-    """15 MB (10**6 bytes each), the budget `construct bench --outputs` also reports."""
+    """15 MB (10**6 bytes each), the budget `construct bench --outputs` also reports, and the LaTeX example's
+    two TikZ plates (latex/, 71 kB: Abb. 1055's force curves are 2,000 points) beside it, at most 0.1 MB."""
     root = REPO / "gallery"
     if not root.is_dir():
         pytest.skip("no committed gallery in this checkout")
-    assert sum(p.stat().st_size for p in root.rglob("*") if p.is_file()) <= 15e6
+    latex = sum(p.stat().st_size for p in (root / "latex").rglob("*") if p.is_file())
+    assert latex <= 0.1e6
+    assert sum(p.stat().st_size for p in root.rglob("*") if p.is_file()) - latex <= 15e6
+
+
+def test_gallery_plates_also_for_print(small_plan, tmp_path):
+    """``construct gallery --format pdf,tikz``: each plate also at its final size, beside its final.svg."""
+    pytest.importorskip("pypdf")
+    out = tmp_path / "g"
+    entries = gallery.build_gallery(out, formats=("svg", "pdf", "tikz"))
+    plate = out / "crank-parts-3-rod-ratio-4" / "historical"
+    assert {p.name for p in plate.iterdir()} == {"final.svg", "final.pdf", "final.tikz", "final.tex"}
+    assert {"final.pdf"} <= {Path(f).name for e in entries if e["style"] == "historical" for f in e["files"]}
+    assert not list((out / "crank-parts-3-rod-ratio-4" / "teaching").glob("final.pdf"))
+    with pytest.raises(InvalidParameter, match="unknown format"):
+        gallery.build_gallery(tmp_path / "h", formats=("png",))
 
 
 def test_the_committed_gallery_names_the_books_and_never_a_seed():

@@ -22,8 +22,42 @@ def test_public_names_exist_and_are_documented():
     for name in construct.__all__:
         assert hasattr(construct, name), name
     for name in ("Builder", "Figure", "Protocol", "get", "nearer", "farther", "toward", "left_of", "StepError",
-                 "NoIntersection", "svg"):
+                 "NoIntersection", "Check", "Style"):
         assert name in construct.__all__
+
+
+def test_every_error_and_warning_is_at_the_front_door():
+    """What the library raises or warns, a user catches with one import (InputFileError was missing once)."""
+    import inspect
+
+    from construct.kernel import errors
+
+    kinds = [c for _, c in inspect.getmembers(errors, inspect.isclass)
+             if c.__module__ == errors.__name__ and issubclass(c, (errors.ConstructError, Warning))]
+    assert len(kinds) >= 17
+    assert [c.__name__ for c in kinds if getattr(construct, c.__name__, None) is not c
+            or c.__name__ not in construct.__all__] == []
+
+
+def test_what_a_figure_gives_and_takes_is_at_the_front_door():
+    import construct.constructions.checking
+    import construct.render.styles
+
+    fig = construct.get("crank").figure(parts=6)
+    assert type(fig.checks()[0]) is construct.Check is construct.constructions.checking.Check
+    assert construct.Style is construct.render.styles.Style
+    assert {"Check", "Style", "testing"} <= set(dir(construct))
+
+
+def test_old_names_still_work_and_say_what_to_use():
+    fig = construct.get("crank").figure(parts=6)
+    with pytest.warns(DeprecationWarning, match="figure.svg"):
+        svg = construct.svg(fig, style="plain")
+    assert svg == fig.svg(style="plain")
+    with pytest.warns(DeprecationWarning, match=r"figure.write\(out\)"), pytest.raises(construct.InvalidParameter):
+        construct.write_replay(fig, "unused", frames="x")
+    with pytest.raises(AttributeError):
+        construct.no_such_name  # noqa: B018
 
 
 def test_every_public_builder_method_has_a_runnable_example():
@@ -120,7 +154,7 @@ LAYERS = [
     ("gallery", ["construct.gallery"]),
     ("regress", ["construct.regress"]),
     ("cli", ["construct.cli", "construct.__main__"]),
-    ("front door", ["construct"]),
+    ("front door", ["construct", "construct.testing"]),
 ]
 
 
@@ -250,8 +284,9 @@ def test_the_circle_test_sees_a_circle():
 
 
 def test_the_top_of_the_package_holds_few_modules():
-    """Everything but the front door, the entry point and a few cross-layer modules lives in a package."""
-    loose = sorted(p.name for p in PACKAGE.glob("*.py") if p.name not in ("__init__.py", "__main__.py"))
+    """Everything but the front door (with its test helpers, construct.testing, as shapely.testing), the entry
+    point and a few cross-layer modules lives in a package."""
+    loose = sorted(p.name for p in PACKAGE.glob("*.py") if p.name not in ("__init__.py", "__main__.py", "testing.py"))
     assert len(loose) <= 3, loose
 
 

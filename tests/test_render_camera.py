@@ -18,7 +18,6 @@ import pytest
 from construct.constructions import get
 from construct.kernel.geometry import Circle, Line, Point
 from construct.render import camera
-from construct.render.lettering import label_box, place, text_box
 from construct.render.output import scene_for, write_replay
 from construct.render.styles import STYLES
 from construct.render.svg import Drawing
@@ -253,32 +252,6 @@ def test_camera_work_grows_with_the_steps_not_their_square(monkeypatch):
 def test_finished_groups_collapse_to_their_results_in_the_style_sheet():
     css = STYLES["teaching"].css()
     assert ".done{display:none}" in css
-
-
-def test_letters_are_measured_in_the_fonts_metrics():
-    """DejaVu Sans (hmtx, 2048 units to the em): 'W' 2025, 'i' 569; a character count would make them equal."""
-    w = text_box(0, 0, "W", 100.0)
-    i = text_box(0, 0, "i", 100.0)
-    assert w[2] - w[0] == pytest.approx(100 * 2025 / 2048, abs=0.01)
-    assert i[2] - i[0] == pytest.approx(100 * 569 / 2048, abs=0.01)
-
-
-def test_a_dense_family_is_never_stacked_and_keeps_clear_of_result_lines():
-    """Forty result letters on points 3 px apart on a result line: placed ones never overlap, never touch
-    the line or another point; what finds no room is thin (shown only magnified), never dropped."""
-    size = 12.0
-    pts = [(100.0 + 3.0 * i, 200.0) for i in range(40)]
-    items = [(f"p{i}", "result", i, p, (0.0, -1.0), f"{i + 1}′") for i, p in enumerate(pts)]
-    line = [(50.0, 200.0, 250.0, 200.0)]
-    spots = place(items, size, pts, line)
-    assert set(spots) == {f"p{i}" for i in range(40)}
-    shown = [(i, label_box(x, y, items[int(i[1:])][5], size)) for i, (x, y, _d, thin) in spots.items() if not thin]
-    assert 3 <= len(shown) < 40
-    for (_a, b1), (_b, b2) in itertools.combinations(shown, 2):
-        assert not (b1[0] < b2[2] and b2[0] < b1[2] and b1[1] < b2[3] and b2[1] < b1[3])
-    for _i, b in shown:
-        assert not (b[1] < 200.0 < b[3])  # the line y = 200 does not strike the letter
-        assert not any(b[0] < x < b[2] and b[1] < y < b[3] for x, y in pts)
 
 
 def test_internal_names_are_never_shown_as_letters():

@@ -109,7 +109,8 @@ def test_the_low_pressure_plate_says_which_diagram_it_shows():
 def test_the_tangential_caption_gives_baumanns_kappa_not_f_over_f(kappa):
     c = get("tangential-pressure")
     de, en = plate_caption(c, c.figure(kappa=kappa, parts=6), 1)
-    assert f"κ = P/Bmax = {kappa:g}" in de and f"κ = P/Bmax = {kappa:g}" in en
+    # Baumann: \frac{P}{B_{max}}, the index below the line
+    assert f"κ = P/Bₘₐₓ = {kappa:g}" in de and f"κ = P/Bₘₐₓ = {kappa:g}" in en
     assert "F/f" not in de + en
 
 

@@ -14,7 +14,7 @@ import xml.etree.ElementTree as ET
 import pytest
 
 from construct.constructions import get
-from construct.render.lettering import LEADER_FROM, label_box
+from construct.render.lettering import label_box
 from construct.render.placing import PlacedLabel, place_outwards
 from construct.render.scene import Mark, build_scene
 from construct.render.styles import PLAIN
@@ -41,7 +41,7 @@ def test_every_lettered_point_has_its_placed_label(crank_drawing):
     assert {p.name for p in labels} == {m.name for m in lettered}  # the whole figure has room for every one here
     for p, m in zip(labels, lettered):
         assert isinstance(p, PlacedLabel) and p.text == m.label and p.anchor == "middle"
-        assert p.point == d.vp.px(*m.geom)
+        assert p.point == d.vp.px(*m.geom) and p.at == tuple(m.geom)
 
 
 def test_the_placed_labels_are_the_letters_the_svg_draws(crank_drawing):

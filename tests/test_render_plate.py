@@ -9,23 +9,30 @@ from __future__ import annotations
 
 import math
 import re
+import xml.etree.ElementTree as ET
 
 
 from construct.constructions import analytic
 from construct.constructions import get
-from construct.render.output import plate_caption, scene_for
+from construct.render.output import plate_caption, printed_caption, scene_for
 from construct.render.styles import STYLES
 from construct.render.svg import render_svg
+
+
+SVG = "{http://www.w3.org/2000/svg}"
 
 
 def _plate_svg(name: str, **params) -> str:
     c = get(name)
     fig = c.figure(**params)
-    return render_svg(scene_for(c, fig, plate=True), style=STYLES["historical"], caption=plate_caption(c, fig, 1))
+    return render_svg(scene_for(c, fig, plate=True), style=STYLES["historical"], caption=printed_caption(c, fig, 1))
 
 
 def _texts(svg: str) -> list[str]:
-    return re.findall(r'<text[^>]*class="lb[^"]*"[^>]*>([^<]*)</text>', svg)
+    """The letters of a plate as a reader sees them (an index set in a smaller run below the line read on)."""
+    root = ET.fromstring(svg.encode("utf-8"))
+    return ["".join(t.itertext()) for t in root.iter(f"{SVG}text")
+            if "lb" in (t.get("class") or "").split() and "halo" not in (t.get("class") or "")]
 
 
 def _furniture(name: str, **params):
@@ -64,6 +71,11 @@ def test_piston_force_plate_letters_scale_and_line_hierarchy():
     svg = _plate_svg("piston-force")
     texts = set(_texts(svg))
     assert {"O", "C", "J", "kg", "P = F·pü", "Pb"} <= texts
+    # seed 001's p_ü and P_b: the index below the line, smaller (no font has a subscript b or ü)
+    root = ET.fromstring(svg.encode("utf-8"))
+    low = {s.text: s for t in root.iter(f"{SVG}text") if "halo" not in t.get("class", "") for s in t.iter(f"{SVG}tspan")
+           if float(s.get("dy", "0")) > 0}
+    assert set(low) == {"ü", "b"} and all("font-size" in s.get("style", "") for s in low.values())
     assert "10000" in texts and "0" in texts  # P = F p at admission: 1529 cm² x 7 at = 10 700 kg
     fig, plate = _furniture("piston-force")
     looks = plate["looks"]
@@ -146,7 +158,7 @@ def test_two_sided_piston_force_plate_is_a_landscape_sheet_legible_at_1400_by_10
     c = get("piston-force")
     fig = c.figure(parts=18, revolution=True)
     scene = scene_for(c, fig, plate=True)
-    svg = render_svg(scene, style=STYLES["historical"], caption=plate_caption(c, fig, 1))
+    svg = render_svg(scene, style=STYLES["historical"], caption=printed_caption(c, fig, 1))
     assert [f.line() for f in lint_svg(svg, view=(1400, 1000))] == []
     x0, y0, x1, y1 = scene.bbox
     assert x1 - x0 > y1 - y0  # landscape
@@ -173,3 +185,93 @@ def test_two_sided_piston_force_plate_is_a_landscape_sheet_legible_at_1400_by_10
         for p in ("", "r"):
             assert math.isclose(at[f"{p}K{k}"][1] - at[f"{p}F{k}"][1],
                                 fig.replay[f"{p}K{k}"][1] - fig.replay[f"{p}F{k}"][1], abs_tol=1e-12)
+
+
+def test_a_plate_carries_its_whole_caption_and_the_legend_of_its_letters(tmp_path):
+    # the plate prints the German caption with the givens three lines hold; the desc keeps both languages whole
+    # and what J, C, O and P_b stand for (seed 001: "Im Punkte J ... wird die Kolbenkraft Null")
+    import json
+
+    from construct.render.output import write_outputs
+
+    c = get("piston-force")
+    fig = c.figure(weight=990.0)
+    write_outputs(tmp_path, c, fig, STYLES["historical"], fig_number=16, outputs=(), protocol=False)
+    svg = (tmp_path / "final.svg").read_text(encoding="utf-8")
+    desc = json.loads(ET.fromstring(svg.encode("utf-8")).find(f"{SVG}desc").text)
+    printed = " ".join("".join(t.itertext()) for t in ET.fromstring(svg.encode("utf-8")).iter(f"{SVG}text")
+                       if "cap" in t.get("class", ""))
+    whole_de, whole_en = plate_caption(c, fig, 16)
+    assert desc["caption"] == {"de": whole_de, "en": whole_en}
+    assert "Halbkreis in 18 Teilen" in whole_de and "Halbkreis in 18 Teilen" not in printed  # cut on the plate
+    assert printed.startswith("Fig. 16. Kolbenüberdrucklinie") and "piston" not in printed.lower()
+    assert desc["legend"]["J"]["de"].startswith("Druckwechsel") and set(desc["legend"]) >= {"O", "C", "J", "P_b"}
+
+
+def _elements(svg: str, tag: str, cls: str) -> list:
+    return [e for e in ET.fromstring(svg.encode("utf-8")).iter(f"{SVG}{tag}") if cls in (e.get("class") or "").split()]
+
+
+def _xs(d: str) -> list[float]:
+    return [float(x) for x in re.findall(r"[ML](-?[\d.]+)", d)]
+
+
+def test_flywheel_plate_is_baumanns_half_section_lettered_and_hatched():
+    # Fig. 28: b1 at the rim, b = b1 r1/r between, b2 = 6 b1 at the hub; hub and rim in section, the disc hatched up
+    # to the rim (it is counted to r1, "zu viel gerechnet", but drawn to where the rim begins); centre lines
+    svg = _plate_svg("flywheel-rim")
+    assert {"b₁", "b", "b₂", "Nabe", "Kranz", "Armscheibe"} <= set(_texts(svg))
+    hatch = {re.sub(r"^s\d+-", "", e.get("id")): e.get("d") for e in _elements(svg, "path", "hatch")}
+    assert set(hatch) == {"section-hatch", "hubsection-hatch", "rimsection-hatch"}
+    rim_inner = min(_xs(next(e.get("d") for e in _elements(svg, "path", "area") if e.get("id").endswith("-rimsection"))))
+    assert max(_xs(hatch["section-hatch"])) <= rim_inner + 0.5
+    for name in ("axis", "mid"):
+        assert "centre" in next(e for e in ET.fromstring(svg.encode("utf-8")).iter()
+                                if (e.get("id") or "").endswith(f"-{name}")).get("class").split()
+
+
+def test_four_stroke_plate_marks_the_dead_centres_and_carries_a_pressure_scale():
+    # Abb. 1056: over two revolutions the strokes change at 180°, 360°, 540°; the over-pressure read in at
+    texts = set(_texts(_plate_svg("four-stroke")))
+    assert {"0°", "180°", "360°", "540°", "720°", "at", "0", "5", "10", "15", "20"} <= texts
+    assert {"Ansaugen", "Verdichten", "Arbeiten", "Auspuffen"} <= texts
+
+
+def test_indicator_plate_letters_what_its_caption_names():
+    assert {"P", "P₀", "s₀", "s₃"} <= set(_texts(_plate_svg("indicator-diagram")))
+
+
+def test_the_inertia_plate_sets_l_infinite_upright_and_its_scale_in_at():
+    svg = _plate_svg("inertia-curve", rod_ratio=4.0)
+    (inf,) = [t for t in _elements(svg, "text", "fur-text") if "".join(t.itertext()) == "L = ∞"]
+    assert "rotate" not in (inf.get("transform") or "")  # turned along the line the ∞ read as an 8
+    assert "1 at" in _texts(svg)
+
+
+def test_the_crank_plate_has_one_dot_per_division_on_the_stroke():
+    # seed 001: each division point's piston position (finite rod, 1' ...) is the one dot on the stroke line; the
+    # infinite rod's foot is where its ordinate crosses the line
+    svg = _plate_svg("crank", parts=18)
+    dots = [e for e in _elements(svg, "circle", "pt") if "hidden" not in e.get("class").split()]
+    y_axis = next(float(e.get("cy")) for e in dots if e.get("id").endswith("-O"))
+    on_axis = {round(float(e.get("cx")), 1) for e in dots if abs(float(e.get("cy")) - y_axis) < 0.01}
+    assert len(on_axis) == 18 + 2  # X0 ... X18 (X0, X18 the dead centres) and O
+    assert not [e for e in dots if re.search(r"-Y\d+$", e.get("id"))]
+
+
+def test_the_compound_plate_hatches_its_plus_and_minus_areas_apart_and_ties_nd_hd_to_their_curves():
+    svg = _plate_svg("tangential-pressure", parts=18, revolution=True, machine="compound")
+    slopes = set()
+    for e in _elements(svg, "path", "hatch"):
+        nums = [float(v) for v in re.findall(r"-?[\d.]+", e.get("d"))][:4]
+        slopes.add("vertical" if abs(nums[0] - nums[2]) < 0.01 else "slanted")
+    assert slopes == {"vertical", "slanted"}  # the work taken up and the work given back
+    texts = set(_texts(svg))
+    assert {"ND", "HD", "at"} <= texts and len(_elements(svg, "path", "leader") + _elements(svg, "line", "leader")) >= 2
+
+
+def test_the_two_sided_force_plate_sets_kg_over_its_scale_and_says_why_the_crank_side_hangs():
+    svg = _plate_svg("piston-force", parts=18, revolution=True)
+    at = {"".join(t.itertext()): float(t.get("y")) for t in _elements(svg, "text", "fur-text")}
+    assert at["kg"] < at["10000"]  # over the scale, as in Abb. 1055 (y down)
+    assert "Kurbelseite, nach unten aufgetragen" in at and "Deckelseite" in at

@@ -194,7 +194,7 @@ def word_figure():
 def test_a_three_megabyte_caption_renders_a_bounded_svg(word_figure):
     assert len(word_figure.protocol.steps[1].caption.de) == 3 * MB  # the protocol keeps the text
     for upto in (None, 1, 2, 3):
-        svg = construct.svg(word_figure, "teaching", upto=upto)
+        svg = word_figure.svg("teaching", upto=upto)
         assert len(svg) < 20_000
     frame = word_figure.svg("plain", upto=2)
     lines = re.findall(r'class="cap de"[^>]*>([^<]*)<', frame)
@@ -204,7 +204,7 @@ def test_a_three_megabyte_caption_renders_a_bounded_svg(word_figure):
 
 def test_a_three_megabyte_caption_writes_bounded_outputs(word_figure, tmp_path):
     out = tmp_path / "out"
-    construct.write_replay(word_figure, out, style="teaching", frames="all")
+    word_figure.write(out, style="teaching", frames="all")
     sizes = {p.relative_to(out).as_posix(): p.stat().st_size for p in out.rglob("*") if p.is_file()}
     assert {"final.svg", "player.html", "animated.svg", "storyboard.svg", "steps/002.svg"} <= set(sizes)
     assert sizes.pop("protocol.json") > 6 * MB  # the whole caption and group, kept
@@ -217,7 +217,7 @@ def test_a_three_megabyte_title_is_shown_bounded(tmp_path):
     b.given_point("B", 1.0, 0.0)
     b.line("AB", "A", "B", role="result")
     out = tmp_path / "out"
-    construct.write_replay(b.figure(), out, style="teaching", frames="all")
+    b.figure().write(out, style="teaching", frames="all")
     sizes = {p.name: p.stat().st_size for p in out.rglob("*") if p.is_file()}
     assert sizes.pop("protocol.json") > 3 * MB
     assert max(sizes.values()) < 50_000, sizes

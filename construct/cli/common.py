@@ -56,6 +56,45 @@ def add_format_option(p: argparse.ArgumentParser, formats: tuple[str, ...] = ("t
                        help="the same as --format json")
 
 
+def add_print_options(p: argparse.ArgumentParser, *, formats: bool = True) -> None:
+    """``--format`` and the options of a plate at its final size (:class:`construct.render.page.Sheet`)."""
+    from ..render.output import FORMATS
+    from ..render.page import CAPTIONS, TIKZ_STYLES, Sheet
+
+    if formats:
+        p.add_argument("--format", default="svg", metavar="svg|pdf|tikz",
+                       help=f"what the plate is written as: {', '.join(FORMATS)}, or several joined by commas "
+                            f"(default svg: the figure and its screen pages)")
+    p.add_argument("--width-mm", type=number, default=Sheet.width_mm, metavar="MM",
+                   help=f"(pdf, tikz) the plate's width on the page in millimetres (default {Sheet.width_mm:g})")
+    p.add_argument("--letter-pt", type=number, default=Sheet.letter_pt, metavar="PT",
+                   help=f"(pdf, tikz) the letters' size in points, which they are placed for (default {Sheet.letter_pt:g})")
+    p.add_argument("--caption", default=Sheet.caption, metavar="|".join(CAPTIONS),
+                   help="(pdf, tikz) the caption beneath the plate: none (the edition sets its own; default), de or en")
+    p.add_argument("--outline", action="store_true",
+                   help="(pdf) the letters as outlines: the file holds no font")
+    p.add_argument("--tikz-style", default=Sheet.tikz_style, metavar="|".join(TIKZ_STYLES),
+                   help="(tikz) TikZ's own paths (default), or tkz-euclide's macros for the points")
+    p.add_argument("--paper", metavar="white|cream|#RRGGBB",
+                   help="the paper's colour (default: the style's; the historical plate is white, its screen pages "
+                        "cream)")
+
+
+def print_request(args: argparse.Namespace) -> tuple[tuple[str, ...], Any]:
+    """(formats, sheet) of the command line: each checked, a wrong one refused with its reason."""
+    from ..render.output import check_formats
+    from ..render.page import Sheet
+
+    formats = check_formats([f.strip() for f in str(getattr(args, "format", "svg")).split(",")])
+    sheet = Sheet(width_mm=args.width_mm, letter_pt=args.letter_pt, caption=args.caption, outline=args.outline,
+                  tikz_style=args.tikz_style)
+    if args.paper is not None:
+        from ..render.styles import paper_colour
+
+        paper_colour(args.paper)
+    return formats, sheet
+
+
 def add_construction_options(p: argparse.ArgumentParser, *, name_optional: bool = True) -> None:
     from ..constructions import names
 

@@ -110,7 +110,7 @@ class Construction:
                                    f"it takes {', '.join(sorted(self.defaults))}")
         merged = {**self.defaults, **{k: v for k, v in params.items() if v is not None}}
         built = self.build(**merged)
-        return Figure(built.protocol, built.replay, self.check)
+        return Figure(built.protocol, built.replay, self.check, self)
 
     def check(self, figure: Figure) -> list[Check]:
         """The checks of this construction on *figure* (what :meth:`Figure.checks` runs for the figures it makes).
@@ -188,7 +188,7 @@ class Construction:
         if self.derived is not None:  # what follows from the new givens by the book's formula
             values = self.derived(values)
         self.validate(values)
-        return Figure(protocol, protocol.replay(values), self.check)
+        return Figure(protocol, protocol.replay(values), self.check, self)
 
 
 def _take_model(model: Any, i: int) -> Any:

@@ -263,8 +263,10 @@ def crank_plate(fig: Figure) -> dict:
     """
     n = fig.params["parts"]
     j = crank_position(n)
+    # one dot per point: the finite rod's piston positions 1′ ... are dotted; the infinite rod's (the feet of the
+    # ordinates) are where those lines cross the centre line, undotted, so that no two dots stand for one division
     looks = {"axis": "centre", **{f"back{k}": "thin" for k in range(n + 1)},
-             **{f"ord{k}": "thin" for k in range(1, n)},
+             **{f"ord{k}": "thin" for k in range(1, n)}, **{f"Y{k}": "hidden" for k in range(1, n)},
              "stroke": "hidden unlettered", "crankarm": "heavy unlettered", "rodline": "heavy unlettered"}
     return {"looks": looks, "furniture": frame_furniture(fig, point_name(fig, j), f"C{j}")}
 

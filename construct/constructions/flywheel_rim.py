@@ -42,7 +42,7 @@ from .phrases import BAUMANN_1902, Cite, number
 __all__ = ["FLYWHEEL_RIM", "build_flywheel_rim", "flywheel_rim_checks", "disc_half_width"]
 
 PLATE = (r"axis|mid", r"O", r"R1", r"rim\d", r"disc[UD]", r"hub\d", r"shaft", r"rho[UD]?", r"[UD]\d+", r"K[UD]",
-         r"section")
+         r"section", r"(hub|rim)section")
 
 
 def _givens(r: Any, b1: Any, rim: Any) -> dict[str, float]:
@@ -132,6 +132,13 @@ def build_flywheel_rim(*, r: float, b1: float, rim: float) -> Figure:
     with b.group("the planimeter: the disc's section", "Planimeter: Querschnitt der Scheibe"):
         b.area_between("section", "discU", "discD", "U2", "KU", hatch_deg=45.0, role="result",
                        de="Scheibenquerschnitt zwischen r1/6 und r1", en="section of the disc between r1/6 and r1")
+    with b.group("hub and rim in section", "Nabe und Kranz im Schnitt"):
+        # hatched across the disc; the disc, counted up to r1 (Baumann: "bewusstermassen ... zu viel gerechnet"),
+        # is hatched on the plate up to the rim, whose section lies over it
+        b.area_between("hubsection", "hub0", "hub2", "HSU", "HU2", hatch_deg=135.0, role="result",
+                       de="Nabe im Schnitt", en="the hub in section")
+        b.area_between("rimsection", "rim0", "rim2", "rimIU", "rimOU", hatch_deg=135.0, role="result",
+                       de="Kranz im Schnitt", en="the rim in section")
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))
 
@@ -172,6 +179,34 @@ def flywheel_rim_checks(fig: Figure) -> list[Check]:
     return checks
 
 
+def flywheel_rim_plate(fig: Figure) -> dict:
+    """Fig. 28 as a half section: the centre lines dash-dotted, hub, disc and rim hatched and named, the disc's
+    thickness dimensioned where Baumann names it -- b₂ = 6 b₁ at the hub, b at a radius between, b₁ at r₁
+    (outside the rim, which covers it) -- every length read off the constructed points."""
+    R = fig.replay
+    r1 = R["R1"][0] - R["O"][0]
+    a = R["rimOU"][1] - R["R1"][1]  # half the rim's side
+    hub_top = R["HSU"][1]
+    gap = 0.025 * r1
+
+    def thickness(top: str, bottom: str, text: str, offset: float, side: float) -> dict:
+        # a vertical dimension between the two faces, its letter upright beside it
+        (x, y0), (_, y1) = R[top], R[bottom]
+        return {"kind": "dimension", "a": (x, y0), "b": (x, y1), "text": text, "offset": offset,
+                "text_at": (x + offset + side, (y0 + y1) / 2)}
+
+    x_hub = R["HU2"][0]
+    furniture = [
+        thickness("U2", "D2", "b₂", gap, 0.03 * r1),
+        thickness("U5", "D5", "b", 0.0, 0.022 * r1),
+        thickness("KU", "KD", "b₁", (R["rimOU"][0] - R["R1"][0]) + gap, 0.025 * r1),
+        {"kind": "lettering", "at": ((R["HSU"][0] + x_hub) / 2, hub_top + 0.025 * r1), "text": "Nabe"},
+        {"kind": "lettering", "at": (R["R1"][0], R["R1"][1] + a + 0.025 * r1), "text": "Kranz"},
+        {"kind": "lettering", "at": (R["rho"][0], R["rhoU"][1] + 0.03 * r1), "text": "Armscheibe"},
+    ]
+    return {"looks": {"axis": "centre", "mid": "centre"}, "furniture": furniture}
+
+
 def flywheel_rim_wording(fig: Figure, lang: str) -> list[str]:
     """The givens as Baumann writes them: b₁ and the rim's side, in r₁."""
     g = fig.replay.givens
@@ -189,6 +224,7 @@ FLYWHEEL_RIM = register(Construction(
     book_params=({},),
     cites=(Cite(BAUMANN_1902, "Fig. 28"),),
     wording=flywheel_rim_wording,
+    plate=flywheel_rim_plate,
     validator=_validate,
     help={"b1": "flywheel-rim: disc thickness b1 at the rim, over r1 (drawn exaggerated: 0.02)",
           "rim": "flywheel-rim: side of the rim's square section, over r1 (0.14)"},

@@ -71,6 +71,7 @@ from .crank import build_frame, rod_arcs
 from .domain import (COMPRESSION_RATIO, CUTOFF_RATIO, DRAWN_LENGTH, ENGINE_PRESSURE, EXHAUST_PRESSURE,
                      POLYTROPE_EXPONENT, PRESSURE_RATIO, SUCTION_PRESSURE)
 from .indicator import square
+from .scales import scale_furniture
 from .inertia.build import inertia_scale, inertia_value, value_kind
 from .phrases import HANDBOOK, Cite, number, ratio
 
@@ -84,7 +85,9 @@ STROKES = ("suction", "compression", "expansion", "exhaust")
 #: Where the two diagrams stand (units of r): the p-V diagram's zero line above the crank circle, the 720°
 #: diagram to the right.
 _PV_ZERO = 1.4
-_T0 = (2.6, -1.2)
+#: The 720° diagram beside the p-V diagram, its peak level with the other's (not on one zero line: a horizontal of
+#: the one diagram would run on through the points of the other at its height).
+_T0 = (2.6, _PV_ZERO - 0.3)
 
 
 # --------------------------------------------------------------------------
@@ -382,6 +385,8 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
         # 180° per stroke: the span halved twice, each stroke divided into N parts (a short auxiliary ray each)
         half = b.midpoint("T.h", T0, T1, through=tbase)
         quarters = [T0, b.midpoint("T.q1", T0, half, through=tbase), half, b.midpoint("T.q3", half, T1, through=tbase), T1]
+        for q, deg in ((1, "180°"), (2, "360°"), (3, "540°")):  # the dead centres, where the strokes change
+            b.set_label(quarters[q], deg)
         marks = [T0]
         for q in range(4):
             marks += (b.divide_segment(f"t{q}", quarters[q], quarters[q + 1], n, line=tbase) if n > 1 else [])
@@ -449,7 +454,8 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
 #: The plate (Abb. 1056–1058): the p-V diagram with Brauer's rays and points, the crank circle with the piston
 #: positions, the 720° diagram with a-a and b-b.
 PLATE = (r"pvbase", r"paxis", r"Ov", r"OMe?|ONe?", r"[ce]P\d+", r"compression|expansion", r"ignition|suction|release|exhaust",
-         r"atm|suct|exh|pmax", r"[abfg]", r"crank", r"D[01]", r"X\d+", r"tbase", r"tatm", r"T[01]", r"aa\d|bb\d",
+         r"atm|suct|exh|pmax", r"[abfg]", r"crank", r"D[01]", r"X\d+", r"tbase", r"tatm", r"T[01]|T\.(q1|h|q3)",
+         r"aa\d|bb\d",
          r"aa\.j\d|bb\.j\d|aa2\.\w+|bb2\.\w+", r"A\d\.\d+|B\d\.\d+")
 
 
@@ -571,6 +577,30 @@ OPTION_HELP = {
 }
 
 
+def four_stroke_plate(fig: Figure) -> dict:
+    """Abb. 1056–1058 as a plate: beside the 720° diagram its scale of the over-pressure in at (0 on the
+    atmospheric line, as a–a is read), a tick at each dead centre under its degree mark, and the strokes
+    named between them."""
+    R = fig.replay
+    T0, T1, atm = R["T0"], R["T1"], R["tatm.p"]
+    unit = R.givens["pressure_unit"]
+    span = T1[0] - T0[0]
+    top = max(R[n][1] for n in R if n[:1] in "AB" and "." in n and n[1:2].isdigit() and not n.endswith(".k"))
+    step = 5.0
+    values = [i * step for i in range(int((top - atm[1]) / unit / step + 1e-9) + 1)]
+    tick = 0.008 * span
+    out = scale_furniture(x=T0[0] - 0.07 * span, zero=atm[1], unit=unit, values=values, tick=tick, text="at")
+    marks = [T0, R["T.q1"], R["T.h"], R["T.q3"], T1]
+    for m in marks:
+        out.append({"kind": "stroke", "a": (m[0], m[1] - 1.5 * tick), "b": (m[0], m[1] + 1.5 * tick), "look": "medium"})
+    names = ("Ansaugen", "Verdichten", "Arbeiten", "Auspuffen")
+    low = min(R[n][1] for n in R if n[:1] == "B" and "." in n and n[1:2].isdigit() and not n.endswith(".k"))
+    for (a, b_), name in zip(zip(marks, marks[1:]), names):
+        out.append({"kind": "lettering", "at": ((a[0] + b_[0]) / 2, min(low, T0[1]) - 0.07 * span / 4), "text": name,
+                    "size": 0.85})
+    return {"furniture": out}
+
+
 def four_stroke_wording(fig: Figure, lang: str) -> list[str]:
     """The givens as the handbook writes them: the engine, ε and n, its peak pressure or ρ, the rod, q."""
     g = fig.replay.givens
@@ -599,6 +629,7 @@ FOUR_STROKE = register(Construction(
     structural=("engine", "parts", "method", "steps", "cutoff"),
     cites=(Cite(HANDBOOK, "Abb. 1056–1058"),),
     wording=four_stroke_wording,
+    plate=four_stroke_plate,
     methods=DIVISION_NAMES,
     validator=_validate,
     help=OPTION_HELP,

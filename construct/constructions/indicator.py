@@ -49,6 +49,7 @@ from ..kernel.protocol import Caption
 from . import Construction, Figure, bounded, positive, register
 from .domain import CLEARANCE, DRAWN_LENGTH, PRESSURE, STROKE_FRACTION
 from .phrases import BAUMANN_1902, Cite, card, diagram, scale
+from .scales import scale_furniture
 
 __all__ = ["INDICATOR", "IndicatorDiagram", "indicator_frame", "pressures_at", "hyperbola_point", "square",
            "indicator_givens", "BAUMANN", "abscissa", "pressure", "steam_pressure", "back_pressure"]
@@ -490,14 +491,23 @@ def indicator_plate(fig: Figure) -> dict:
     tick = 0.012 * s
     furniture: list[dict] = [{"kind": "stroke", "a": tuple(a), "b": tuple(b), "look": "heavy"}
                              for a, b in ((B0, A0), (A0, A1), (end_exp, end_comp), (C2, B0))]
-    furniture.append({"kind": "stroke", "a": (x, 0.0), "b": (x, top * unit), "look": "medium"})
-    for i in range(top + 1):
-        furniture.append({"kind": "stroke", "a": (x - tick, i * unit), "b": (x, i * unit), "look": "medium"})
-        furniture.append({"kind": "lettering", "at": (x - 2.6 * tick, i * unit), "text": str(i), "anchor": "end",
-                          "size": 0.8})
-    furniture.append({"kind": "lettering", "at": (x, (top + 0.7) * unit), "text": "at", "size": 0.85})
+    furniture += scale_furniture(x=x, zero=0.0, unit=unit, values=range(top + 1), tick=tick, text="at")
     # C₂ lies on the heavy back-pressure line: lettered above it, clear of the line and the curve
     furniture.append({"kind": "lettering", "at": (C2[0] - 0.018 * s, C2[1] + 0.024 * s), "text": "C₂"})
+    # what the caption gives, measured on the diagram: P over the back-pressure line and P₀ under it at the
+    # head end, the clearance s₀ and the compression s₃ under the zero line
+    A, B, S2 = R["A"], R["B"], R["S2"]
+    off = -0.022 * s  # left of the admission vertical
+    furniture.append({"kind": "dimension", "a": tuple(B0), "b": tuple(A0), "text": "P", "offset": -off,
+                      "text_at": (B0[0] + off - 0.018 * s, (B0[1] + A0[1]) / 2)})
+    # P₀ is a few pixels high: its arrows between the zero line and the back-pressure line a quarter of the way
+    # along, its letter under the zero line
+    x = A[0] + 0.23 * s
+    furniture.append({"kind": "dimension", "a": (x, A[1]), "b": (x, B0[1]), "text": "P₀",
+                      "text_at": (x, A[1] - 0.03 * s)})
+    below = 0.06 * s
+    furniture.append({"kind": "dimension", "a": tuple(Z), "b": tuple(A), "text": "s₀", "offset": -below})
+    furniture.append({"kind": "dimension", "a": tuple(S2), "b": tuple(B), "text": "s₃", "offset": -below})
     looks = {"expansion": "heavy", "compression": "heavy", "base": "medium", "C2": "unlettered"}
     return {"looks": looks, "furniture": furniture}
 
@@ -583,11 +593,11 @@ def card_checks(fig: Figure) -> list[Check]:
         checks.append(Check(f"card point {i}: p", pressure(fig, name), p, tol, "laid off up the perpendicular", "at"))
     for k in range(1, n):
         x = abscissa(fig, f"fE{k}")
-        for tag, card, stroke, what in (("fE", cover, "forward", "cover side forward"),
+        for tag, side, stroke, what in (("fE", cover, "forward", "cover side forward"),
                                         ("rW", cover, "return", "cover side return"),
                                         ("fW", crank, "forward", "crank side forward"),
                                         ("rE", crank, "return", "crank side return")):
-            checks.append(Check(f"{what} at {k}/{n}", pressure(fig, f"{tag}{k}"), card.pressure(x, stroke), tol,
+            checks.append(Check(f"{what} at {k}/{n}", pressure(fig, f"{tag}{k}"), side.pressure(x, stroke), tol,
                                 "the ordinate meets the straightedge line between two digitised points", "at"))
     return checks
 

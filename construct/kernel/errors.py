@@ -22,6 +22,7 @@ __all__ = [
     "ProtocolFormatError",
     "InputFileError",
     "OutputError",
+    "MissingDependency",
     "StepError",
     "GeometryError",
     "NoIntersection",
@@ -62,6 +63,10 @@ class InputFileError(ConstructError, ValueError):
 
 class OutputError(ConstructError, OSError):
     """An output folder cannot be created or written."""
+
+
+class MissingDependency(ConstructError, ImportError):
+    """An output needs an optional library that is not installed (cairosvg for PDF); names what to install."""
 
 
 class StepError(ConstructError):

@@ -195,6 +195,30 @@ def as_rule(rule: Any) -> Rule:
     return Rule(name, tuple(rule[1:]))
 
 
+def rule_key(rule: Rule, refs: Sequence[Any], x: Any, y: Any) -> tuple[Any, bool]:
+    """What *rule* ranks a point (x, y) by, and whether the smallest wins: the squared distance from the point it
+    names (nearer: the smallest), the signed area to the left of its line (left: the largest), the distance along
+    its direction (toward: the largest).  *x*, *y*: numbers or arrays.
+
+    >>> from .geometry import Point
+    >>> rule_key(nearer("Q"), (Point(0.0, 3.0),), 4.0, 0.0), rule_key(left_of("A", "B"), (Point(0, 0), Point(1, 0)), 2.0, -1.0)
+    ((25.0, True), (-1.0, False))
+    """
+    name = rule.name
+    if name in ("nearer", "farther"):
+        (r,) = refs
+        return (x - r.x) ** 2 + (y - r.y) ** 2, name == "nearer"
+    if name in ("left", "right"):
+        p, q = refs
+        return (q.x - p.x) * (y - p.y) - (q.y - p.y) * (x - p.x), name == "right"
+    if rule.direction is None:
+        p, q = refs
+        dx, dy = q.x - p.x, q.y - p.y
+    else:
+        dx, dy = rule.direction
+    return x * dx + y * dy, False
+
+
 def choose(points: Sequence[Any], rule: Rule, refs: Sequence[Any], xp: Any) -> tuple[Any, Any]:
     """Pick one of two points by *rule*; return (chosen, other).  Vectorised with ``xp.where``.
 
@@ -211,26 +235,11 @@ def choose(points: Sequence[Any], rule: Rule, refs: Sequence[Any], xp: Any) -> t
     if len(points) == 1:
         return points[0], None
     a, b = points
-    name = rule.name
-    if name in ("nearer", "farther"):
-        (r,) = refs
-        da = (a.x - r.x) ** 2 + (a.y - r.y) ** 2
-        db = (b.x - r.x) ** 2 + (b.y - r.y) ** 2
-        first = da <= db if name == "nearer" else da >= db
-    elif name in ("left", "right"):
-        p, q = refs
-        sa = (q.x - p.x) * (a.y - p.y) - (q.y - p.y) * (a.x - p.x)
-        sb = (q.x - p.x) * (b.y - p.y) - (q.y - p.y) * (b.x - p.x)
-        first = sa >= sb if name == "left" else sa <= sb
-    elif name == "toward":
-        if rule.direction is None:
-            p, q = refs
-            dx, dy = q.x - p.x, q.y - p.y
-        else:
-            dx, dy = rule.direction
-        first = a.x * dx + a.y * dy >= b.x * dx + b.y * dy
-    else:  # "only": the caller has checked that the two points coincide
+    if rule.name == "only":  # the caller has checked that the two points coincide
         return a, b
+    ka, smallest = rule_key(rule, refs, a.x, a.y)
+    kb, _ = rule_key(rule, refs, b.x, b.y)
+    first = ka <= kb if smallest else ka >= kb
     if xp is SCALAR:
         return (a, b) if first else (b, a)
     w = xp.where
@@ -243,23 +252,9 @@ def choose_among(points: Sequence[Any], rule: Rule, refs: Sequence[Any]) -> Any:
         raise ValueError("no points to choose from")
     if len(points) == 1 or rule.name == "only":
         return points[0]
-    name = rule.name
-    if name in ("nearer", "farther"):
-        (r,) = refs
-        key = [(p.x - r.x) ** 2 + (p.y - r.y) ** 2 for p in points]
-        best = min if name == "nearer" else max
-    elif name in ("left", "right"):
-        p0, q0 = refs
-        key = [(q0.x - p0.x) * (p.y - p0.y) - (q0.y - p0.y) * (p.x - p0.x) for p in points]
-        best = max if name == "left" else min
-    else:
-        if rule.direction is None:
-            p0, q0 = refs
-            dx, dy = q0.x - p0.x, q0.y - p0.y
-        else:
-            dx, dy = rule.direction
-        key = [p.x * dx + p.y * dy for p in points]
-        best = max
+    ranked = [rule_key(rule, refs, p.x, p.y) for p in points]
+    key = [k for k, _ in ranked]
+    best = min if ranked[0][1] else max
     target = best(key)
     return points[key.index(target)]
 
@@ -279,25 +274,9 @@ def choose_among_sets(xs: Any, ys: Any, found: Any, rule: Rule, refs: Sequence[A
     """
     import numpy as np
 
-    name = rule.name
-    if name == "only":
+    if rule.name == "only":
         return np.argmax(found, axis=0)  # the first point found
-    if name in ("nearer", "farther"):
-        (r,) = refs
-        key = (xs - r.x) ** 2 + (ys - r.y) ** 2
-        smallest = name == "nearer"
-    elif name in ("left", "right"):
-        p0, q0 = refs
-        key = (q0.x - p0.x) * (ys - p0.y) - (q0.y - p0.y) * (xs - p0.x)
-        smallest = name == "right"
-    else:
-        if rule.direction is None:
-            p0, q0 = refs
-            dx, dy = q0.x - p0.x, q0.y - p0.y
-        else:
-            dx, dy = rule.direction
-        key = xs * dx + ys * dy
-        smallest = False
+    key, smallest = rule_key(rule, refs, xs, ys)
     if smallest:
         return np.argmin(np.where(found, key, np.inf), axis=0)
     return np.argmax(np.where(found, key, -np.inf), axis=0)

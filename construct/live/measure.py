@@ -148,7 +148,8 @@ class Measure:
                                        for i, n in self.runs):
             at_once = None
         if at_once is None or not at_once.ok.any():
-            return [self(Figure(protocol, replay.take(i, whole=True), self.construction.check)) for i in range(size)]
+            return [self(Figure(protocol, replay.take(i, whole=True), self.construction.check, self.construction))
+                    for i in range(size)]
         rows = np.hstack([at_once.numbers[i] for i, _ in self.runs])
         width, height = (np.round(v, 2) for v in at_once.size)
         px = at_once.page_px
@@ -174,7 +175,8 @@ class Measure:
         out = []
         for i in range(size):
             if not at_once.ok[i]:
-                out.append(self(Figure(protocol, replay.take(i, whole=True), self.construction.check)))
+                out.append(self(Figure(protocol, replay.take(i, whole=True), self.construction.check,
+                                       self.construction)))
                 continue
             texts = self.texts
             if self.readings:

@@ -95,9 +95,10 @@ def live_givens(construction: Construction, figure: Figure) -> list[LiveGiven]:
     >>> from construct.constructions import get
     >>> [g.name for g in live_givens(get("tangential-pressure"), get("tangential-pressure").figure())]
     ['rod_ratio', 'kappa']
-    >>> live_givens(get("piston-force"), get("piston-force").figure())[0].domain.high, \
-    ...     live_givens(get("indicator-diagram"), get("indicator-diagram").figure())
-    (400.0, [])
+    >>> live_givens(get("piston-force"), get("piston-force").figure())[0].domain.high  # L/R up to 1000, R = 0.4 m
+    400.0
+    >>> live_givens(get("indicator-diagram"), get("indicator-diagram").figure())  # its filling: a switch
+    []
     """
     g = figure.replay.givens
     out = []
@@ -384,7 +385,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
 def _checks(construction: Construction, figure: Figure, given: str, grid: np.ndarray) -> list[list[list[Any]]]:
     """The construction's checks at every value of *grid*, from one sweep (:meth:`Construction.sweep_checks`)."""
     swept = construction.given_sweep(dict(figure.replay.givens), given, grid)
-    sweep = Figure(figure.protocol, figure.protocol.replay(swept), construction.check)
+    sweep = Figure(figure.protocol, figure.protocol.replay(swept), construction.check, construction)
     return [[[c.name, c.measured, c.expected, c.error, c.tolerance, bool(c.ok)] for c in row]
             for row in construction.sweep_checks(sweep)]
 

@@ -25,7 +25,7 @@ from typing import Any, Iterator
 __all__ = ["Change", "Diff"]
 
 #: How a report heads a diff of each subject.
-TITLES = {"svg": "SVG", "protocol": "protocol"}
+TITLES = {"svg": "SVG", "protocol": "protocol", "tikz": "TikZ", "pdf": "PDF"}
 
 
 @dataclass(frozen=True, slots=True)

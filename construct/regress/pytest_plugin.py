@@ -15,6 +15,9 @@ what changed) and a side-by-side page of expected and actual for every
 failing frame, written to ``.construct-failures/<name>.html`` beside the
 ``goldens`` folder; the message gives its path.
 
+The protocol is compared as :func:`construct.testing.assert_figures_equal` compares two figures (through
+:func:`construct.regress.testing.figures_diff`); use that function in a test to compare figures directly.
+
 The rendered figure must also be legible (:mod:`construct.regress.lint`:
 no labels on each other, on another point or struck by a result line, none
 too small or outside the view); ``check(..., legible=False)`` skips that.
@@ -207,7 +210,7 @@ class GoldenChecker:
         *figure* is anything with ``.protocol`` and ``.replay`` (a
         :class:`construct.constructions.Figure`).  *name* defaults to
         ``<test module>.<test name>``; *style* is a style name (``plain``, ``teaching``, ``historical``)
-        or a :class:`construct.render.styles.Style`; *frames* as for ``construct
+        or a :class:`construct.Style`; *frames* as for ``construct
         replay`` (standalone frames besides the layered figure; "none" by default: every step
         is compared from ``final.svg`` already).  With *legible* (the default) the rendered
         figure must also pass ``construct lint`` (:func:`construct.regress.lint.lint_path`): the

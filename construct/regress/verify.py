@@ -8,7 +8,9 @@ standalone frame ``steps/005.svg`` (where one is written) is reported as step 5.
 Files are compared by meaning: a ``.svg`` through
 :func:`construct.regress.svgdiff.diff_svg`, a ``protocol.json`` through :func:`construct.regress.protocoldiff.diff_protocol`, so a
 golden rewritten with reordered attributes or reformatted numbers is still
-equal while a point moved by 0.01 drawing units is named.  Other text files
+equal while a point moved by 0.01 drawing units is named; a ``.tikz`` plate
+through :func:`construct.regress.printdiff.diff_tikz`, by named point and line by
+line with its numbers within 0.001 mm on the page.  Other text files
 (``.json``, ``.html``, ``.md``, ``.csv``, ...) are compared as text (line
 ends normalised) with a unified-diff excerpt; ``.png`` storyboards only by
 image size, because their pixels depend on the FreeType version that drew
@@ -213,13 +215,16 @@ def _kind(path: str) -> str:
         return "protocol"
     if name.endswith(".png"):
         return "png"
+    if name.endswith(".tikz"):
+        return "tikz"
     return "text"
 
 
 #: The largest golden read, by kind: a drawing (a 3600-part replay's final.svg is a few MB, a
 #: million-element drawing about 80 MB) and any other file (the largest text golden is under 1 MB).
 #: A golden that is a pipe, a device or a link to one is refused before it is opened.
-MAX_GOLDEN_BYTES = {"svg": 320 * 2**20, "protocol": 64 * 2**20, "png": 64 * 2**20, "text": 64 * 2**20}
+MAX_GOLDEN_BYTES = {"svg": 320 * 2**20, "protocol": 64 * 2**20, "png": 64 * 2**20, "text": 64 * 2**20,
+                    "tikz": 64 * 2**20}
 
 
 def _check_readable(path: Path, kind: str) -> None:
@@ -311,12 +316,17 @@ def compare_file_by_step(rel: str, golden: Path, actual: Path, *, tolerance: flo
         return [FileDifference(rel, "changed", "svg", tuple(changes[:KEPT_CHANGES]), len(changes), at_step=step)
                 for step, changes in groups.items()]
     if kind == "protocol":
-        from .protocoldiff import diff_protocol
+        from .testing import figures_diff  # what construct.testing.assert_figures_equal compares
 
-        p = diff_protocol(golden, actual, tolerance=PROTOCOL_TOLERANCE)
+        p = figures_diff(golden, actual, tolerance=PROTOCOL_TOLERANCE)
         if p.equal:
             return []
         return [FileDifference(rel, "changed", "protocol", p.changes[:KEPT_CHANGES], len(p.changes))]
+    if kind == "tikz":
+        from .printdiff import diff_tikz
+
+        t = diff_tikz(golden, actual)
+        return [] if t.equal else [FileDifference(rel, "changed", "tikz", t.changes[:KEPT_CHANGES], len(t.changes))]
     if kind == "png":
         sa, sb = png_size(golden), png_size(actual)
         if sa == sb and sa is not None:

@@ -20,14 +20,14 @@ True
 
 from __future__ import annotations
 
-from typing import Mapping, Protocol, Sequence
+from typing import Mapping, NamedTuple, Protocol, Sequence
 
-from ..kernel.letters import (CAPTION_LIMIT, TITLE_LIMIT, Reader, book_symbols, displayed, equation, subscripts,
-                              tag)
+from ..kernel.letters import (CAPTION_LIMIT, PLATE_CAPTION_LINES, TITLE_LIMIT, Reader, book_symbols, displayed,
+                              equation, subscripts, tag, unbroken)
 from .wrapping import wrap as wrap_chars
 
 __all__ = ["Reader", "book_symbols", "equation", "subscripts", "tag", "displayed", "CAPTION_LIMIT", "TITLE_LIMIT",
-           "wrap", "step_caption", "group_caption", "Captions", "Captioned"]
+           "wrap", "step_caption", "group_caption", "Captions", "Captioned", "PlateCaption"]
 
 
 class Captioned(Protocol):
@@ -55,6 +55,44 @@ def wrap(text: str, width_px: float, size: float) -> list[str]:
     if len(text) <= chars and text == text.strip() and not any(c in text for c in "\t\n\r\x0b\x0c"):
         return [text]  # one line as it stands: what the wrapper would return, without its cost
     return wrap_chars(text, chars) or [""]
+
+
+class PlateCaption(NamedTuple):
+    """A plate's caption as a book sets it under its figure: one language, the figure's number once, at most
+    :data:`~construct.kernel.letters.PLATE_CAPTION_LINES` lines, never broken inside a number or a formula.
+
+    *head* is "Fig. N. Title", *givens* the figure's givens in the book's symbols (the most telling first),
+    *cite* "nach …".  :meth:`lines` gives as many givens as the lines hold, in order; the whole list stands in
+    the figure's ``<desc>`` and on the site.
+
+    >>> cap = PlateCaption("Fig. 3. Kurbelwinkel aus den Zehnteln des Hubes", ("r/L = 1/4", "Hub in 10 Teilen"),
+    ...                    "nach Anhang II, „Darstellung der Massendrücke“, Fig. 77, Tabelle 2")
+    >>> cap.lines(912.0, 12.0)
+    ['Fig. 3. Kurbelwinkel aus den Zehnteln des Hubes. r/L = 1/4, Hub in 10 Teilen. — nach Anhang II, „Darstellung der Massendrücke“,', 'Fig. 77, Tabelle 2.']
+    >>> cap.lines(912.0, 12.0, most=1)  # one line: the givens that fit, in order; the title and the source stay
+    ['Fig. 3. Kurbelwinkel aus den Zehnteln des Hubes. r/L = 1/4. — nach Anhang II, „Darstellung der Massendrücke“, Fig. 77, Tabelle 2.']
+    """
+
+    head: str
+    givens: tuple[str, ...] = ()
+    cite: str = ""
+
+    def text(self, k: int | None = None) -> str:
+        """The caption with its first *k* givens (all when None), in one line."""
+        shown = self.givens if k is None else self.givens[:k]
+        body = self.head.rstrip(".") + (". " + ", ".join(shown) if shown else "")
+        return f"{body}. — {self.cite}." if self.cite else f"{body}."
+
+    def lines(self, width: float, size: float, most: int = PLATE_CAPTION_LINES) -> list[str]:
+        """The caption wrapped to *width* pixels at font size *size* in at most *most* lines where it can be:
+        every given that fits, in order; no number or formula split over two lines."""
+        texts = [self.text(k) for k in range(len(self.givens), -1, -1)]
+        texts.append(self.head.rstrip(".") + ".")  # not even the source fits: the title alone
+        for text in texts:
+            got = [line.replace("\u00a0", " ") for line in wrap(unbroken(text), width, size)]
+            if len(got) <= most:
+                return got
+        return got
 
 
 def step_caption(scene: Captioned, k: int) -> tuple[str, str]:
@@ -112,8 +150,11 @@ class Captions:
             lines.append(("grp", group_caption(self.scene, k)))
         return lines + [("de", t) for t in de] + [("en", t) for t in en]
 
-    def title_lines(self, caption: Sequence[str] | None = None) -> list[tuple[str, str]]:
-        """The figure's caption lines (German first, then English), wrapped to the canvas."""
+    def title_lines(self, caption: "Sequence[str] | PlateCaption | None" = None) -> list[tuple[str, str]]:
+        """The figure's caption lines (German first, then English), wrapped to the canvas; a plate's
+        (:class:`PlateCaption`) in its one language."""
+        if isinstance(caption, PlateCaption):
+            return [("de", line) for line in caption.lines(self.width, self.size)]
         lines = list(caption if caption is not None else self.scene.title)
         return [("de" if i == 0 else "en", t) for i, line in enumerate(lines)
                 for t in wrap(displayed(line, TITLE_LIMIT), self.width, self.size)]

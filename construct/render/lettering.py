@@ -35,7 +35,8 @@ import math
 import os
 from typing import Any, Iterable, Sequence
 
-__all__ = ["place", "LineIndex", "label_box", "text_box", "text_width", "RANK", "LEADER_FROM", "DEFAULT_FONT"]
+__all__ = ["place", "LineIndex", "label_box", "text_box", "text_width", "segment_meets_box", "clipped_segment", "RANK", "LEADER_FROM",
+           "DEFAULT_FONT"]
 
 #: Rank of a role: lower is placed first.
 RANK = {"result": 0, "given": 1}
@@ -173,15 +174,20 @@ class _Grid:
                     got.append(b)
 
 
-def _hits(box, seg) -> bool:
-    """Does the segment (x0, y0, x1, y1) cross the box? (Liang–Barsky clipping.)"""
+def clipped_segment(box, seg) -> tuple[float, float] | None:
+    """The part (t0, t1) of the segment (x0, y0, x1, y1) inside the box (x0, y0, x1, y1), or None when it misses
+    (Liang–Barsky clipping).
+
+    >>> clipped_segment((0, 0, 2, 2), (-1, 1, 3, 1)), clipped_segment((0, 0, 2, 2), (3, 0, 3, 5))
+    ((0.25, 0.75), None)
+    """
     x0, y0, x1, y1 = seg
     dx, dy = x1 - x0, y1 - y0
     t0, t1 = 0.0, 1.0
     for p, q in ((-dx, x0 - box[0]), (dx, box[2] - x0), (-dy, y0 - box[1]), (dy, box[3] - y0)):
         if p == 0:
             if q < 0:
-                return False
+                return None
         else:
             t = q / p
             if p < 0:
@@ -189,8 +195,17 @@ def _hits(box, seg) -> bool:
             else:
                 t1 = min(t1, t)
             if t0 > t1:
-                return False
-    return True
+                return None
+    return (t0, t1)
+
+
+def segment_meets_box(box, seg) -> bool:
+    """Does the segment (x0, y0, x1, y1) cross the box (x0, y0, x1, y1)?  (:func:`clipped_segment`)
+
+    >>> segment_meets_box((0, 0, 2, 2), (-1, 1, 3, 1)), segment_meets_box((0, 0, 2, 2), (3, 0, 3, 5))
+    (True, False)
+    """
+    return clipped_segment(box, seg) is not None
 
 
 class LineIndex:
@@ -228,6 +243,21 @@ class LineIndex:
                 else:
                     got.append((piece, k))
 
+    def length_in(self, box) -> float:
+        """How much of the lines lies inside *box*: what a plate would break them by for a letter there."""
+        c, total = self.cell, 0.0
+        seen: set[int] = set()
+        for i in range(math.floor(box[0] / c) - 1, math.floor(box[2] / c) + 2):
+            for j in range(math.floor(box[1] / c) - 1, math.floor(box[3] / c) + 2):
+                for seg, _k in self.cells.get((i, j), ()):
+                    if id(seg) in seen:
+                        continue
+                    seen.add(id(seg))
+                    t = clipped_segment(box, seg)
+                    if t is not None:
+                        total += (t[1] - t[0]) * math.hypot(seg[2] - seg[0], seg[3] - seg[1])
+        return total
+
     def meets(self, box, reach: float = 0.0, only: "Sequence[bool] | None" = None) -> bool:
         """Does a piece of a line (of those *only* marks true, by number) cross *box* grown by *reach*?"""
         c = self.cell
@@ -250,9 +280,18 @@ class LineIndex:
                     if (sx0 < lx and sx1 < lx) or (sx0 > hx and sx1 > hx) or (sy0 < ly and sy1 < ly) \
                             or (sy0 > hy and sy1 > hy):
                         continue
-                    if (only is None or only[k]) and _hits(box, seg):
+                    if (only is None or only[k]) and segment_meets_box(box, seg):
                         return True
         return False
+
+
+def _nearer_dot(box, own: tuple[float, float], dots) -> bool:
+    """Is some point of *dots* nearer the letter's *box* than its own point *own*?"""
+    def far(p):
+        return math.hypot(max(box[0] - p[0], 0.0, p[0] - box[2]), max(box[1] - p[1], 0.0, p[1] - box[3]))
+
+    mine = far(own)
+    return any(far(p) < mine - 0.5 for p in dots if abs(p[0] - own[0]) > 1e-6 or abs(p[1] - own[1]) > 1e-6)
 
 
 def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float, float], str]],
@@ -260,7 +299,8 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
           lines: "Sequence[tuple[float, float, float, float]] | LineIndex" = (), *, font: str = DEFAULT_FONT,
           italic: bool = False, taken: Iterable[tuple[float, float, float, float]] = (),
           keep: bool = True, prefer: "dict[str, tuple[float, float, float]] | None" = None,
-          halo: float = HALO_PX / 2, reach: float = 0.0, only: "Sequence[bool] | None" = None) -> dict[str, tuple]:
+          halo: float = HALO_PX / 2, reach: float = 0.0, only: "Sequence[bool] | None" = None,
+          soft: "LineIndex | None" = None) -> dict[str, tuple]:
     """Baseline positions (pixels) for letters: {id: (x, y, distance in letter heights, thin)}.
 
     A letter set farther than :data:`LEADER_FROM` letter heights from its point gets a
@@ -277,8 +317,12 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     the halo reaches round the ink at *size* (the player scales a letter with its halo).  *reach*:
     half the width of a result line (a halo reaching over the line's edge erases part of it).
     *lines* may be a :class:`LineIndex` made at *size* (placings at one size share it), and
-    *only* the numbers of its lines that count (true), as if *lines* were those alone.
+    *only* the numbers of its lines that count (true), as if *lines* were those alone.  *soft*: the
+    other lines (a plate's construction lines, ticks, axes), which a letter keeps clear of where a spot
+    nearer than :data:`LEADER_FROM` allows it; where none does it takes the first free spot all the
+    same, and the plate breaks those lines for it (:mod:`construct.render.gaps`).
     """
+    dots = list(dots)
     grid = _Grid(2.0 * size)
     for b in taken:
         grid.add(b)
@@ -305,6 +349,8 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
             box = label_box(px + ox, py + oy, text, size, font, italic, halo)
             if grid.free(box) and not strokes.meets(box, reach, only):
                 spot = (px + ox, py + oy, box, od)
+        clear = None  # with soft lines: the first free spot near the point that no line crosses
+        least = None  # else the near free spot the least of those lines would be broken for: (length, spot)
         for dist in (() if spot else _DISTANCES):
             for turn in _TURNS:
                 a = base + math.radians(turn)
@@ -316,10 +362,26 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                 if first is None:
                     first = (lx, ly, box, dist)
                 if grid.free(box) and not strokes.meets(box, reach, only):
-                    spot = (lx, ly, box, dist)
-                    break
-            if spot:
+                    if soft is None:
+                        spot = (lx, ly, box, dist)
+                        break
+                    if spot is None:
+                        spot = (lx, ly, box, dist)
+                    # beside the line, but on the side the letter belongs (outwards, not across its own figure)
+                    if dist < LEADER_FROM and abs(turn) <= 90:
+                        broken = soft.length_in(box)
+                        if broken == 0.0:
+                            clear = (lx, ly, box, dist)
+                            break
+                        # (not along the line the point lies on: a letter on its own axis, turned a right angle)
+                        if abs(turn) <= 60 and (least is None or broken < least[0] - 1e-9):
+                            least = (broken, (lx, ly, box, dist))
+            if clear or (spot and (soft is None or dist >= LEADER_FROM)):
                 break
+        spot = clear or (least[1] if least is not None else spot)
+        if spot is not None and soft is not None and spot[3] < LEADER_FROM and _nearer_dot(spot[2], (px, py), dots):
+            # another point stands nearer the letter than its own (17′ beside B): tied to its own by a leader
+            spot = (spot[0], spot[1], spot[2], LEADER_FROM)
         if spot is None:
             if keep and RANK.get(role, 2) <= 1 and first is not None:
                 # no room in the whole figure: kept for the magnified views, never stacked here

@@ -28,7 +28,7 @@ import json
 import math
 from typing import Any, Callable, Mapping, Protocol, Sequence
 
-from ..kernel.letters import number
+from ..kernel.letters import TITLE_LIMIT, number
 from ..kernel.protocol import Caption
 from ..kernel.protocol import Protocol as StepProtocol
 from ..kernel.protocol import Replay
@@ -203,8 +203,11 @@ def caption(construction: Described | None, fig: Drawn, number_: int | str | Non
     return out[0], out[1]
 
 
-def provenance(construction: Described | None, fig: Drawn) -> dict[str, Any]:
-    """Which text and which parameters, for the machine: the SVG's ``<desc id="provenance">``."""
+def provenance(construction: Described | None, fig: Drawn, full: tuple[str, str] | None = None,
+               legend: Mapping[str, tuple[str, str]] | None = None) -> dict[str, Any]:
+    """Which text and which parameters, for the machine: the SVG's ``<desc id="provenance">``; *full*: the
+    figure's whole caption (German, English) where the figure prints less of it (a plate); *legend*: what its
+    letters stand for (letter -> (German, English))."""
     params = {k: v for k, v in fig.params.items() if k not in ("group_titles", "plate", "captions", "givens")}
     out: dict[str, Any] = {"construction": fig.protocol.construction, "params": params,
                            "givens": dict(fig.replay.givens)}
@@ -213,12 +216,17 @@ def provenance(construction: Described | None, fig: Drawn) -> dict[str, Any]:
         # own source string is the developers')
         out["source"] = citation(construction, "en", after=False) or construction.source
         out["texts"] = [{"book": c.book.key, "figure": c.figure} for c in construction.cites]
+    if full is not None:
+        out["caption"] = {"de": full[0], "en": full[1]}
+    if legend:
+        out["legend"] = {k: {"de": de, "en": en} for k, (de, en) in legend.items()}
     return out
 
 
 #: The longest text the metadata keeps of any one value (a protocol of the user's own may name itself
-#: with megabytes): the figure stays bounded, the protocol keeps the whole.
-_META_TEXT = 200
+#: with megabytes): the figure stays bounded, the protocol keeps the whole.  As long as a figure's title may
+#: be: a plate's whole caption (a compound engine's runs to 600 characters) is kept whole.
+_META_TEXT = TITLE_LIMIT
 
 
 def jsonable(v: Any) -> Any:
@@ -238,15 +246,17 @@ def jsonable(v: Any) -> Any:
         return str(v)
 
 
-def with_provenance(svg: str, construction: Described | None, fig: Drawn) -> str:
-    """*svg* (a standalone file's text) with ``<desc id="provenance">`` holding the provenance as JSON, first in the root.
+def with_provenance(svg: str, construction: Described | None, fig: Drawn, full: tuple[str, str] | None = None,
+                    legend: Mapping[str, tuple[str, str]] | None = None) -> str:
+    """*svg* (a standalone file's text) with ``<desc id="provenance">`` holding the provenance as JSON, first in the root
+    (*full*, *legend*: the whole caption of a plate and its letters' legend, :func:`provenance`).
 
     The element is serialised by ElementTree (which escapes the text) and set in after the root's
     start tag, which follows the XML declaration.
     """
     import xml.etree.ElementTree as ET
 
-    data = json.dumps(jsonable(provenance(construction, fig)), sort_keys=True, ensure_ascii=False)
+    data = json.dumps(jsonable(provenance(construction, fig, full, legend)), sort_keys=True, ensure_ascii=False)
     meta = ET.Element("desc", id="provenance")
     meta.text = data
     markup = ET.tostring(meta, encoding="unicode")

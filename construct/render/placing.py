@@ -31,18 +31,21 @@ from typing import Any, Callable, Sequence
 import numpy as np
 
 from .camera import PLAYER_FIGURE_PX, THIN_FROM, ZOOM_LEVELS, View, level, zoom_of
-from .lettering import HALO_PX, LEADER_FROM, LineIndex, label_box, place
+from .gaps import Gap
+from .lettering import HALO_PX, LEADER_FROM, LineIndex, label_box, place, text_box
+from .paths import bezier_controls
+from .plate import plain
 from .scene import Mark, MarkKind, Scene, label_offset_direction
 from .styles import Style
 from .svgdoc import fmt
 from .viewport import Viewport
 
-__all__ = ["PlacedLabel", "Placing"]
+__all__ = ["PlacedLabel", "Placing", "furniture_text_box", "text_gap"]
 
 
 @dataclass(frozen=True, slots=True)
 class PlacedLabel:
-    """Where one point's letter stands on the canvas (pixels, y down).
+    """Where one point's letter stands on the canvas (pixels, y down), and the point in the figure's units (*at*).
 
     The text is set with *anchor* at ``point + offset`` (its baseline); *distance* is how far that
     is from the point in letter heights, and a letter from :data:`~construct.render.lettering.LEADER_FROM`
@@ -59,6 +62,8 @@ class PlacedLabel:
     distance: float
     shown: bool
     anchor: str = "middle"
+    #: The point in the figure's own units (y up), for a writer that maps the figure itself (TikZ).
+    at: tuple[float, float] = (0.0, 0.0)
 
     @property
     def leader(self) -> bool:
@@ -76,11 +81,16 @@ class Placing:
     the name tags once the camera's views are known.
     """
 
-    def __init__(self, scene: Scene, style: Style, vp: Viewport, drawing_height: float):
+    def __init__(self, scene: Scene, style: Style, vp: Viewport, drawing_height: float, *,
+                 plate: bool = False, furniture: "Sequence[Any]" = ()):
         self.scene = scene
         self.style = style
         self.vp = vp
         self.drawing_height = drawing_height
+        #: a plate: the letters stand clear of every line where they can, never on the furniture's lettering
+        #: (*furniture*: the plate's furniture as data, :class:`construct.render.plate.Piece`)
+        self.plate = plate
+        self.furniture = tuple(furniture)
         self._line_index: dict[tuple[float, float], LineIndex] = {}
         self._rows: dict[int, Any] = {}
         self._obstacle_a: tuple[Any, Any] | None = None
@@ -103,7 +113,7 @@ class Placing:
             x, y, dist, thin = self.spots[m.id]
             px, py = self.vp.px(*m.geom)
             out.append(PlacedLabel(m.id, m.name, m.label or "", m.role, (px, py), (x - px, y - py), dist,
-                                   not (thin and (camera or m.role != "result"))))
+                                   not (thin and (camera or m.role != "result")), at=tuple(m.geom)))
         return tuple(out)
 
     def letters_at(self, lvl: int) -> Any:
@@ -171,8 +181,20 @@ class Placing:
         self._letter_items = items
         k = self.letter_scale
         size = k * st.label_size
+        soft, taken = None, []
+        if self.plate:
+            # a plate's letters stand beside every line where they can (a construction line, a tick, an axis
+            # as much as a result), and off the furniture's lettering
+            thin = [seg for m in self.scene.marks if m.kind.stroked and m.role != "result" and m.look != "hidden"
+                    for seg in _segments([vp.px(*q) for q in _polyline(m, vp.scale)])]
+            for p in self.furniture:
+                if p.kind == "line" or (p.kind == "poly" and "arrow" not in p.cls):
+                    thin += _segments(list(p.points) + ([p.points[0]] if p.closed else []))
+                elif p.kind == "text":
+                    taken.append(furniture_text_box(p, st))
+            soft = LineIndex(size, thin)
         spots = place(items, size, dots, self._lines_at(1.0, size), font=st.label_font, italic=st.label_italic,
-                      halo=HALO_PX / 2 * k, reach=self.line_reach)
+                      halo=HALO_PX / 2 * k, reach=self.line_reach, soft=soft, taken=taken)
         thin = [it for it in items if spots.get(it[0], (0, 0, 0, False))[3]]
         if thin and st.camera:
             # the letters the whole figure has no room for, placed for the magnified views
@@ -497,17 +519,32 @@ def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
     if m.kind is MarkKind.CURVE and not m.straight and len(g) > 2:
         # as drawn (curve_path): the Catmull-Rom pieces, which leave the chords where the curve bends
         out = [tuple(g[0])]
-        for i in range(len(g) - 1):
-            p0, p1, p2 = g[i - 1] if i > 0 else g[i], g[i], g[i + 1]
-            p3 = g[i + 2] if i + 2 < len(g) else g[i + 1]
-            c1 = (p1[0] + (p2[0] - p0[0]) / 6.0, p1[1] + (p2[1] - p0[1]) / 6.0)
-            c2 = (p2[0] - (p3[0] - p1[0]) / 6.0, p2[1] - (p3[1] - p1[1]) / 6.0)
+        for p1, c1, c2, p2 in bezier_controls(g):
             for t in (0.25, 0.5, 0.75, 1.0):
                 s = 1 - t
                 out.append(tuple(s * s * s * a + 3 * s * s * t * b + 3 * s * t * t * c + t * t * t * d
                                  for a, b, c, d in zip(p1, c1, c2, p2)))
         return out
     return list(g)
+
+
+def _segments(pts: Sequence[tuple[float, float]]) -> list[tuple[float, float, float, float]]:
+    return [(a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:])]
+
+
+def furniture_text_box(p: Any, style: Style, grow: float = HALO_PX / 2) -> tuple[float, float, float, float]:
+    """The upright box (pixels) a plate's lettering (a ``text`` :class:`construct.render.plate.Piece`) covers
+    with its halo, turned or not."""
+    return text_gap(p, style, grow).reach()
+
+
+def text_gap(p: Any, style: Style, grow: float) -> Gap:
+    """The box a plate's lettering (a ``text`` :class:`construct.render.plate.Piece`: set about its point, the
+    middle of its height) covers, grown by *grow* pixels round its ink, turned with it: a :class:`Gap`."""
+    size = style.label_size * p.size
+    (x, y), = p.points
+    box = text_box(x, y + 0.35 * size, plain(p.text), size, style.label_font, style.label_italic, p.anchor)
+    return Gap.around(box, grow, p.angle, about=(x, y))
 
 
 def _scaled(rows: Any, z: float) -> list[tuple[float, ...]]:

@@ -17,9 +17,9 @@ that :meth:`Plate.from_data` reads::
 
     Construction(..., plate=my_plate)
 
-Kinds: dimension (a, b, text, offset), angle (centre, start, end, radius,
+Kinds: dimension (a, b, text, offset, text_at), angle (centre, start, end, radius,
 text, text_at), stroke (a, b, look, broken), lettering (at, text, anchor,
-angle, size), scale (origin, end, text), sign (at, text), dot (at).
+angle, size, to), scale (origin, end, text), sign (at, text), dot (at).
 
 A plate may also lay its sheet out in *panels*, as a book sets a cover-side
 and a crank-side diagram side by side: ``{"panels": [{"names": [regex, ...],
@@ -34,8 +34,9 @@ every value read off a diagram is read from its own base line.
 
 Every value written on a plate is read off the constructed figure (the
 construction's own points), never from the formula the checks compare with.
-:func:`furniture_elements` draws the items in a style; all lettering gets a
-paper-coloured halo, so that no line strikes through a letter.
+:func:`furniture_elements` draws the items in a style, each lettering on a
+paper-coloured halo of itself; a plate's drawing (:class:`construct.render.svg.Drawing`)
+breaks every line for the lettering instead (:mod:`construct.render.gaps`) and leaves the halos out.
 
 >>> d = Dimension((0.0, 0.0), (2.0, 0.0), "s", offset=-0.3)
 >>> ext = extent((d,))
@@ -48,23 +49,28 @@ True
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field, fields, replace
-from typing import Any, Callable, Mapping, Sequence
+from typing import Any, Callable, Mapping, NamedTuple, Sequence
 
 __all__ = ["Plate", "Panel", "Dimension", "AngleArc", "Stroke", "Lettering", "ScaleBar", "Sign", "Dot", "dms", "extent",
            "anchors", "shifted",
-           "furniture_elements", "break_elements", "LOOKS_CSS", "plate_of"]
+           "furniture_elements", "break_elements", "LOOKS_CSS", "plate_of", "Piece", "PIECES", "furniture_pieces",
+           "crossing_lines", "DASHES", "subscript_runs", "plain"]
 
 XY = tuple[float, float]
+
+#: The dash patterns of the line looks (canvas units: dash, gap, dash, gap).
+DASHES = {"dashdot": (14, 3, 2, 3), "centre": (18, 3, 2, 3), "dashed": (6, 4)}
 
 #: Line looks a plate may give its objects (CSS classes on the marks).
 LOOKS_CSS = (
     ".heavy{stroke-width:2.2px}",
     ".medium{stroke-width:1px}",
     ".thin{stroke-width:0.45px}",
-    ".dashdot{stroke-dasharray:14 3 2 3;stroke-width:0.7px}",
-    ".centre{stroke-dasharray:18 3 2 3;stroke-width:0.5px}",
-    ".dashed{stroke-dasharray:6 4}",
+    f".dashdot{{stroke-dasharray:{' '.join(map(str, DASHES['dashdot']))};stroke-width:0.7px}}",
+    f".centre{{stroke-dasharray:{' '.join(map(str, DASHES['centre']))};stroke-width:0.5px}}",
+    f".dashed{{stroke-dasharray:{' '.join(map(str, DASHES['dashed']))}}}",
     # a result the plate shows otherwise (the stroke s, dimensioned with arrowheads over the centre line)
     ".hidden{display:none}",
 )
@@ -72,12 +78,17 @@ LOOKS_CSS = (
 
 @dataclass(frozen=True)
 class Dimension:
-    """A dimension line from *a* to *b* with arrowheads, set off by *offset* (drawing units, + = left of a->b)."""
+    """A dimension line from *a* to *b* with arrowheads, set off by *offset* (drawing units, + = left of a->b).
+
+    The text stands on the line, which is broken for it; or, for a short dimension (a thickness), upright
+    at *text_at* beside the whole line.
+    """
 
     a: XY
     b: XY
     text: str
     offset: float = 0.0
+    text_at: XY | None = None
 
 
 @dataclass(frozen=True)
@@ -110,13 +121,15 @@ class Stroke:
 
 @dataclass(frozen=True)
 class Lettering:
-    """Text at *at*; *anchor* start, middle or end; *angle* in degrees (counter-clockwise), *size* relative."""
+    """Text at *at*; *anchor* start, middle or end; *angle* in degrees (counter-clockwise), *size* relative;
+    *to*: the point it names, tied to it by a leader (a letter set off from a crowded line)."""
 
     at: XY
     text: str
     anchor: str = "middle"
     angle: float = 0.0
     size: float = 1.0
+    to: XY | None = None
 
 
 @dataclass(frozen=True)
@@ -153,11 +166,14 @@ class Panel:
 
 @dataclass(frozen=True)
 class Plate:
-    """What a construction adds to its plate: looks of named objects, furniture, and the sheet's panels."""
+    """What a construction adds to its plate: looks of named objects, furniture, the sheet's panels, and the
+    legend of its letters (letter -> (German, English): what J or P_b stands for, as the book's text says it;
+    it goes with the plate's whole caption into its ``<desc>``, not onto the sheet)."""
 
     looks: Mapping[str, str] = field(default_factory=dict)
     furniture: tuple = ()
     panels: tuple[Panel, ...] = ()
+    legend: Mapping[str, tuple[str, str]] = field(default_factory=dict)
 
     @classmethod
     def from_data(cls, data: Mapping[str, Any] | None) -> "Plate":
@@ -181,7 +197,8 @@ class Plate:
                 raise InvalidParameter(f"unknown plate furniture {kind!r}; choose one of {', '.join(sorted(kinds))}")
             items.append(kinds[kind](**d))
         panels = tuple(Panel(tuple(p["names"]), tuple(p.get("shift", (0.0, 0.0)))) for p in data.get("panels", ()))
-        return cls(dict(data.get("looks", {})), tuple(items), panels)
+        legend = {str(k): (str(v[0]), str(v[1])) for k, v in dict(data.get("legend", {})).items()}
+        return cls(dict(data.get("looks", {})), tuple(items), panels, legend)
 
 
 def plate_of(construction: Any, figure: Any) -> Plate:
@@ -202,14 +219,17 @@ def _points(item: Any) -> list[XY]:
         (ax, ay), (bx, by) = item.a, item.b
         nx, ny = _normal(item.a, item.b)
         o = item.offset
-        return [item.a, item.b, (ax + o * nx, ay + o * ny), (bx + o * nx, by + o * ny)]
+        return [item.a, item.b, (ax + o * nx, ay + o * ny), (bx + o * nx, by + o * ny)] + (
+            [item.text_at] if item.text_at else [])
     if isinstance(item, AngleArc):
         cx, cy = item.centre
         pts = [(cx + item.radius * math.cos(t), cy + item.radius * math.sin(t)) for t in _arc_angles(item, 9)]
         return pts + ([item.text_at] if item.text_at else [])
     if isinstance(item, (Stroke, ScaleBar)):
         return [item.origin, item.end] if isinstance(item, ScaleBar) else [item.a, item.b]
-    if isinstance(item, (Lettering, Sign, Dot)):
+    if isinstance(item, Lettering):
+        return [item.at] + ([item.to] if item.to else [])
+    if isinstance(item, (Sign, Dot)):
         return [item.at]
     return []
 
@@ -275,6 +295,49 @@ def furniture_elements(items: Sequence[Any], px: Callable[[float, float], XY], s
     return out
 
 
+class Piece(NamedTuple):
+    """One piece of a plate's furniture on the canvas (pixels, y down), for a writer other than SVG (TikZ).
+
+    *kind*: ``line`` (two points), ``poly`` (a polyline, *closed* or not), ``text`` (at its point: the middle
+    of the text's height, *anchor* start/middle/end, *angle* in degrees counter-clockwise, *size* relative to
+    the letters'), ``dot`` (a filled dot of radius *size* px).  *cls*: the SVG classes it would carry.
+    """
+
+    kind: str
+    points: tuple[XY, ...]
+    cls: str
+    text: str = ""
+    anchor: str = "middle"
+    angle: float = 0.0
+    size: float = 1.0
+    closed: bool = False
+
+
+class _Pieces:
+    """Takes the place of svgwrite's factory where the furniture is wanted as :class:`Piece` values."""
+
+
+#: Given as the factory to :func:`furniture_elements` or :func:`break_elements`, they return :class:`Piece` values.
+PIECES = _Pieces()
+
+
+def crossing_lines(marks: Sequence[Any], furniture: Sequence[Any]) -> list[tuple[float, float, float, float]]:
+    """The straight lines a broken axis may cross (drawing units): the segments among *marks*, the straight lines
+    drawn from point to point (a rod lettered L) and the plate's strokes (:func:`break_elements` breaks those
+    that do)."""
+    return ([m.geom for m in marks if m.kind == "segment"]
+            + [(*m.geom[0], *m.geom[1]) for m in marks if m.kind == "curve" and m.straight and len(m.geom) == 2]
+            + [(*it.a, *it.b) for it in furniture if isinstance(it, Stroke)])
+
+
+def furniture_pieces(items: Sequence[Any], px: Callable[[float, float], XY], scale: float, *,
+                     size: float = 12.0) -> list[Piece]:
+    """The furniture as :class:`Piece` values: what :func:`furniture_elements` draws, as data.
+
+    >>> [p.kind for p in furniture_pieces([Sign((0.0, 0.0), "+"), Dot((1.0, 0.0))], lambda x, y: (x, y), 1.0)]
+    ['text', 'dot']
+    """
+    return furniture_elements(items, px, scale, PIECES, size=size)
 def break_elements(breaks: Sequence[tuple], lines: Sequence[tuple[float, float, float, float]],
                    px: Callable[[float, float], XY], f: Any, *, size: float = 12.0) -> list[Any]:
     """The marks of a broken axis (:attr:`construct.render.scene.Scene.breaks`: where a break starts, its
@@ -310,10 +373,14 @@ def break_elements(breaks: Sequence[tuple], lines: Sequence[tuple[float, float, 
 
 
 def _line(f: Any, a: XY, b: XY, cls: str = "fur") -> Any:
+    if isinstance(f, _Pieces):
+        return Piece("line", (a, b), cls)
     return f.line(start=(_f(a[0]), _f(a[1])), end=(_f(b[0]), _f(b[1])), class_=cls)
 
 
 def _poly(f: Any, pts: Sequence[XY], cls: str, close: bool = False) -> Any:
+    if isinstance(f, _Pieces):
+        return Piece("poly", tuple(pts), cls, closed=close)
     return f.path(d="M" + "L".join(f"{_f(x)} {_f(y)}" for x, y in pts) + ("Z" if close else ""), class_=cls)
 
 
@@ -329,14 +396,56 @@ def _arrow(f: Any, tip: XY, frm: XY, size: float) -> Any:
 
 def _text(f: Any, at: XY, text: str, size: float, anchor: str = "middle", angle: float = 0.0,
           rel: float = 1.0) -> list[Any]:
+    if isinstance(f, _Pieces):  # its halo is the writer's (a TikZ node's white ground)
+        return [Piece("text", (at,), "lb fur-text", text, anchor, angle, rel)]
     attrs: dict[str, Any] = {"x": [_f(at[0])], "y": [_f(at[1] + 0.35 * size * rel)]}
-    if anchor != "middle":
-        attrs["text_anchor"] = anchor
     if angle:
         attrs["transform"] = f"rotate({_f(-angle)} {_f(at[0])} {_f(at[1])})"
-    if rel != 1.0:
-        attrs["style"] = f"font-size:{_f(size * rel)}px"
-    return [f.text(text, class_="lb halo", **attrs), f.text(text, class_="lb fur-text", **attrs)]
+    # in the style attribute: the style sheet's .lb{text-anchor:middle} overrides a presentation attribute
+    # (a browser set the scale's numbers centred on their ticks; cairosvg did not)
+    own = ([f"font-size:{_f(size * rel)}px"] if rel != 1.0 else []) + ([f"text-anchor:{anchor}"] if anchor != "middle" else [])
+    if own:
+        attrs["style"] = ";".join(own)
+    runs = subscript_runs(text)
+    if len(runs) == 1:
+        return [f.text(text, class_="lb halo", **attrs), f.text(text, class_="lb fur-text", **attrs)]
+    out = []
+    for cls in ("lb halo", "lb fur-text"):
+        # an index the font has no subscript glyph for (P_b, p_ü): a smaller run set below the line
+        t = f.text("", class_=cls, **attrs)
+        down = 0.0
+        for part, low in runs:
+            shift = 0.25 * size * rel if low else 0.0
+            kw = {"dy": [_f(shift - down)]} if shift != down else {}
+            if low:
+                kw["style"] = f"font-size:{_f(0.7 * size * rel)}px"
+            t.add(f.tspan(part, **kw))
+            down = shift
+        out.append(t)
+    return out
+
+
+def subscript_runs(text: str) -> list[tuple[str, bool]]:
+    """*text* as runs (text, set below the line?): an index is written ``_x`` or ``_{xyz}`` (P_b, F·p_ü).
+
+    >>> subscript_runs("P = F·p_ü"), subscript_runs("B_{max} t"), subscript_runs("s₁")
+    ([('P = F·p', False), ('ü', True)], [('B', False), ('max', True), (' t', False)], [('s₁', False)])
+    """
+    out: list[tuple[str, bool]] = []
+    pos = 0
+    for m in re.finditer(r"_(\{[^}]*\}|[^\W_])", text):
+        if m.start() > pos:
+            out.append((text[pos:m.start()], False))
+        out.append((m.group(1).strip("{}"), True))
+        pos = m.end()
+    if pos < len(text) or not out:
+        out.append((text[pos:], False))
+    return out
+
+
+def plain(text: str) -> str:
+    """*text* without its index marks, as a reader sees it (P_b -> Pb)."""
+    return "".join(part for part, _ in subscript_runs(text))
 
 
 def _item(it: Any, px: Callable[[float, float], XY], scale: float, size: float, f: Any) -> list[Any]:
@@ -355,6 +464,9 @@ def _item(it: Any, px: Callable[[float, float], XY], scale: float, size: float, 
                 out.append(_line(f, (p[0] + 3 * dx / n, p[1] + 3 * dy / n), (q[0] + 4 * dx / n, q[1] + 4 * dy / n),
                                  "fur thin"))
         mid = ((a2[0] + b2[0]) / 2, (a2[1] + b2[1]) / 2)
+        if it.text_at is not None:  # a short dimension: the whole line, the text upright beside it
+            return out + [_line(f, a2, b2, "fur"), _arrow(f, a2, b2, size), _arrow(f, b2, a2, size)] + _text(
+                f, px(*it.text_at), it.text, size)
         # the dimension line stops either side of its text, as a draftsman leaves room for the figure
         length = math.hypot(b2[0] - a2[0], b2[1] - a2[1]) or 1.0
         gap = min(0.5 * length - 1.0, 0.33 * size * len(it.text) + 0.4 * size)
@@ -409,10 +521,20 @@ def _item(it: Any, px: Callable[[float, float], XY], scale: float, size: float, 
         mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
         return out + _text(f, (mid[0] + 0.6 * size, mid[1]), it.text, size, "start", 0.0, 1.0)  # a scale is read: at the letters' size
     if isinstance(it, Lettering):
-        return _text(f, px(*it.at), it.text, size, it.anchor, it.angle, it.size)
+        out = []
+        if it.to is not None:
+            # the leader runs from beside the point to the letter's middle: the plate breaks it at the letter's
+            # white (construct.render.gaps), so it ends there whatever the letter's width
+            (ax, ay), (bx, by) = px(*it.to), px(*it.at)
+            n = math.hypot(bx - ax, by - ay) or 1.0
+            start = 0.3 * size
+            out.append(_line(f, (ax + start * (bx - ax) / n, ay + start * (by - ay) / n), (bx, by), "fur leader"))
+        return out + _text(f, px(*it.at), it.text, size, it.anchor, it.angle, it.size)
     if isinstance(it, Sign):
         return _text(f, px(*it.at), it.text, size, "middle", 0.0, 2.0)
     if isinstance(it, Dot):
         x, y = px(*it.at)
+        if isinstance(f, _Pieces):
+            return [Piece("dot", ((x, y),), "arrow", size=0.22 * size)]
         return [f.circle(center=(_f(x), _f(y)), r=_f(0.22 * size), class_="arrow")]
     return []

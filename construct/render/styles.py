@@ -1,7 +1,8 @@
 """The named styles a replay can be drawn in: style sheets, never part of a construction.
 
 * ``plain``       grey construction, black results, approximate objects in a warm tone.
-* ``historical``  a plate of the books: black ink on paper, thin construction
+* ``historical``  a plate of the books: pure black ink on white paper (the
+                  paper's cream tint only on the screen), thin construction
                   lines, heavy result lines, compass arcs only around the
                   crossings they make, small pricked points, italic serif
                   letters, hatched areas, a "Fig." caption; the final figure
@@ -15,31 +16,123 @@
                   instrument inputs (centre, through point, curves cut) are
                   marked and named.
 
+Every style also states its line weights in points (:class:`LineWeights`,
+DESIGN §8): a plate laid out for print (:meth:`Style.for_print`) draws its
+lines with them, whatever its size on the page.
+
 >>> sorted(STYLES)
 ['historical', 'plain', 'teaching']
 >>> STYLES["historical"].plate, STYLES["teaching"].highlight is not None
 (True, True)
+>>> HISTORICAL.paper, HISTORICAL.ink, HISTORICAL.for_screen().paper
+('#ffffff', '#000000', '#f3ead6')
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+import math
+import re
+from dataclasses import dataclass, field, fields, replace
 from typing import Mapping
 
 from .camera import level_css
 from .lettering import HALO_PX
 from .plate import LOOKS_CSS
 from .svgdoc import fmt
+from ..kernel.errors import InvalidParameter
 
-__all__ = ["Style", "STYLES", "HISTORICAL", "TEACHING", "PLAIN"]
+__all__ = ["Style", "STYLES", "HISTORICAL", "TEACHING", "PLAIN", "LineWeights", "PAPERS", "MIN_LINE_PT", "paper_colour"]
+
+#: The finest line a printed plate may carry, in points: finer lines break up in print (publishers ask for 0.2 pt
+#: or more; DESIGN §8).
+MIN_LINE_PT = 0.2
+
+#: The paper colours a style may be given by name (any CSS hex colour is taken too).
+PAPERS = {"white": "#ffffff", "cream": "#f3ead6"}
+
+_HEX = re.compile(r"#(?:[0-9a-fA-F]{3}|[0-9a-fA-F]{6})")
+
+
+def paper_colour(value: str) -> str:
+    """A paper colour by its name in :data:`PAPERS` or as a CSS hex colour; anything else is refused.
+
+    >>> paper_colour("cream"), paper_colour("#FFF")
+    ('#f3ead6', '#fff')
+    >>> paper_colour("url(x)")
+    Traceback (most recent call last):
+    ...
+    construct.kernel.errors.InvalidParameter: unknown paper colour 'url(x)'; choose cream, white or a hex colour such as #ffffff
+    """
+    if isinstance(value, str) and value in PAPERS:
+        return PAPERS[value]
+    if isinstance(value, str) and _HEX.fullmatch(value):
+        return value.lower()
+    raise InvalidParameter(f"unknown paper colour {value!r}; choose {', '.join(sorted(PAPERS))} or a hex colour "
+                           f"such as #ffffff")
+
+
+@dataclass(frozen=True)
+class LineWeights:
+    """The line weights of a printed plate, in points (DESIGN §8): every line a plate draws has one of them.
+
+    >>> LineWeights().heavy, LineWeights().construction
+    (0.8, 0.25)
+    >>> LineWeights(thin=0.1)
+    Traceback (most recent call last):
+    ...
+    construct.kernel.errors.InvalidParameter: line weight thin = 0.1 pt is under 0.2 pt, the finest line print holds
+    """
+
+    #: the plate's main curves and parts (the rod and crank drawn in one position, the result curve)
+    heavy: float = 0.8
+    #: the results of the construction (what its steps find)
+    result: float = 0.6
+    #: base lines and scales
+    medium: float = 0.5
+    #: helper lines the plate shows thin, centre lines, dimension lines, point rims
+    thin: float = 0.3
+    #: the construction's lines and arcs
+    construction: float = 0.25
+    #: hatching and the leaders that tie a letter to its point
+    fine: float = 0.2
+
+    def __post_init__(self) -> None:
+        for f in fields(self):
+            v = getattr(self, f.name)
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+                raise InvalidParameter(f"line weight {f.name} must be a number of points, got {v!r}")
+            if v < MIN_LINE_PT:
+                raise InvalidParameter(f"line weight {f.name} = {v} pt is under {MIN_LINE_PT} pt, the finest line "
+                                       f"print holds")
+
+
+#: Which weight each stroked class of the style sheet is drawn with in print, in the sheet's order (a later
+#: rule wins over an earlier one of the same weight: ``construction thin`` is thin).
+PRINT_STROKES = (
+    (".construction,.auxiliary", "construction"),
+    (".result", "result"),
+    (".hatch", "fine"),
+    (".pt", "thin"),
+    (".fur", "thin"),
+    (".heavy", "heavy"),
+    (".medium", "medium"),
+    (".thin", "thin"),
+    (".dashdot", "thin"),
+    (".centre", "thin"),
+    (".brkline", "thin"),
+    (".leader,.cur .leader,.inp .leader", "fine"),
+)
 
 
 @dataclass(frozen=True)
 class Style:
-    """How marks look.  Colours are CSS colours, widths in px at the drawing scale."""
+    """How marks look.  Colours are CSS colours, widths in px at the drawing scale (in print: :attr:`weights`)."""
 
     name: str = "plain"
-    background: str = "#ffffff"
+    #: The colour of the paper: the sheet, the inside of an open point, the halo that opens lines for a letter.
+    paper: str = "#ffffff"
+    #: The paper's colour on the screen (player, animation, storyboard, frames), None: :attr:`paper`.
+    screen_paper: str | None = None
     ink: str = "#000000"
     construction: str = "#8a8a8a"
     construction_width: float = 0.7
@@ -92,9 +185,39 @@ class Style:
     #: Radius (screen px) of the ring round the current step's mark when that mark is small (0: none).
     ring_px: float = 0.0
     width_px: float = 960.0
+    #: Line weights on the printed page, in points (:meth:`for_print` draws with them).
+    weights: LineWeights = field(default_factory=LineWeights)
+    #: Points per canvas unit when the style is laid out for print (:meth:`for_print`); None on the screen.
+    print_pt: float | None = None
     #: Smallest height of the drawing area (wide figures get room for the stages of a progressive zoom).
     min_drawing_px: float = 0.0
     margin_px: float = 24.0
+
+    @property
+    def background(self) -> str:
+        """The paper colour (:attr:`paper`), by its older name."""
+        return self.paper
+
+    def for_screen(self) -> "Style":
+        """This style as the screen shows it: on :attr:`screen_paper` where it has one."""
+        return replace(self, paper=self.screen_paper) if self.screen_paper else self
+
+    def for_print(self, width_pt: float, letter_pt: float) -> "Style":
+        """This style laid out for a page *width_pt* points wide with letters of *letter_pt* points.
+
+        The canvas is as many units wide as the letters' size asks (a letter is :attr:`label_size` units
+        high), so the letters are placed for the size they are printed at, and every line is drawn with
+        its weight in points (:attr:`weights`).
+
+        >>> st = HISTORICAL.for_print(120 / 25.4 * 72, 8.0)
+        >>> round(st.width_px, 1), st.print_pt, ".heavy{stroke-width:1.2}" in st.css()
+        (510.2, 0.6666666666666666, True)
+        """
+        for name, v in (("page width", width_pt), ("letter size", letter_pt)):
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or v <= 0:
+                raise InvalidParameter(f"the {name} must be a positive number of points, got {v!r}")
+        pt = letter_pt / self.label_size
+        return replace(self, width_px=width_pt / pt, print_pt=pt)
 
     def css(self) -> str:
         """The style sheet every SVG in this style carries."""
@@ -112,7 +235,7 @@ class Style:
             rules.append(f".{prov}{{stroke:{colour}}}")
             rules.append(f".pt.{prov}{{fill:{colour}}}")
         if self.point_ring:
-            rules.append(f".pt{{fill:{self.background};stroke:{self.ink};stroke-width:{fmt(self.point_ring)}}}")
+            rules.append(f".pt{{fill:{self.paper};stroke:{self.ink};stroke-width:{fmt(self.point_ring)}}}")
         else:
             rules.append(f".pt{{fill:{self.ink};stroke:none}}")
         rules.append(".result.pt{stroke:none}" if not self.point_ring else f".result.pt{{fill:{self.ink}}}")
@@ -137,7 +260,7 @@ class Style:
             rules.append(f".cur>.pt{{fill:{self.highlight};stroke:{self.highlight};stroke-width:13;"
                          f"stroke-opacity:0.35}}")
             rules.append(f".cur .lb{{fill:{self.highlight};stroke:none}}")
-        rules.append(f".inset{{fill:{self.background};stroke:{self.construction};stroke-width:0.8}}")
+        rules.append(f".inset{{fill:{self.paper};stroke:{self.construction};stroke-width:0.8}}")
         if self.done_opacity <= 0.0:
             rules.append(".done{display:none}")  # a finished group collapses to its results
         elif self.done_opacity < 1.0:
@@ -155,7 +278,7 @@ class Style:
         # behind every letter, drawn as a copy beneath it (cairosvg has no paint-order).
         rules.append(f".fur{{fill:none;stroke:{self.ink};stroke-width:0.6px}}.arrow{{fill:{self.ink};stroke:none}}")
         rules.extend(LOOKS_CSS)
-        rules.append(f".brk{{fill:{self.background};stroke:none}}.brkline{{fill:none;stroke:{self.ink};stroke-width:0.8px}}")
+        rules.append(f".brk{{fill:{self.paper};stroke:none}}.brkline{{fill:none;stroke:{self.ink};stroke-width:0.8px}}")
         rules.append(".view{display:none}")
         if self.ring_px and self.highlight:
             rules.append(f".ring{{fill:none;stroke:{self.highlight};stroke-width:2.5px;opacity:0.85}}")
@@ -165,9 +288,13 @@ class Style:
         else:
             rules.append(".lbx{display:none}")
 
-        halo = f"fill:{self.background};stroke:{self.background};stroke-width:{fmt(HALO_PX)}px;stroke-linejoin:round"
+        halo = f"fill:{self.paper};stroke:{self.paper};stroke-width:{fmt(HALO_PX)}px;stroke-linejoin:round"
         rules.append(f".lb.halo,.cur .lb.halo,.inp .lb.halo{{{halo}}}")
         rules.append(f".leader,.cur .leader,.inp .leader{{fill:none;stroke:{self.ink};stroke-width:0.4px}}")
+        if self.print_pt:
+            # in print every line has its weight in points, whatever the canvas unit is on the page
+            rules.extend(f"{sel}{{stroke-width:{fmt(getattr(self.weights, w) / self.print_pt, 3)}}}"
+                         for sel, w in PRINT_STROKES)
         return "\n".join(rules)
 
 
@@ -175,9 +302,10 @@ PLAIN = Style()
 
 HISTORICAL = Style(
     name="historical",
-    background="#f3ead6",          # paper tone
-    ink="#1b1a17",                 # iron-gall black
-    construction="#1b1a17",
+    paper=PAPERS["white"],         # print-safe: pure black on white
+    screen_paper=PAPERS["cream"],  # the paper's tone, on the screen only
+    ink="#000000",
+    construction="#000000",
     construction_width=0.45,
     result_width=1.5,
     point_radius=1.7,
@@ -188,7 +316,7 @@ HISTORICAL = Style(
     label_italic=True,
     caption_font="'DejaVu Serif', Georgia, 'Times New Roman', serif",
     caption_size=12.0,
-    caption_italic=True,
+    caption_italic=False,          # a book sets its figure captions upright; the letters in the figure italic
     provenance_colours={},         # one ink; the protocol says what is approximate
     plate=True,
     fig_caption=True,
@@ -199,7 +327,6 @@ HISTORICAL = Style(
 
 TEACHING = Style(
     name="teaching",
-    background="#ffffff",
     ink="#222222",
     construction="#7f7f7f",
     construction_width=0.9,

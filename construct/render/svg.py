@@ -27,17 +27,21 @@ True
 from __future__ import annotations
 
 import bisect
+import dataclasses
 import math
 from typing import Any, Sequence
 
 from . import captions as _captions
 from . import svgdoc
 from .camera import clear_edges, clear_tag_edges, level, ring_round, step_views
-from .captions import Captions
-from .lettering import LEADER_FROM
+from .captions import Captions, PlateCaption
+from .gaps import CLEARANCE, Gap, GapFactory, gapped_hatch, gapped_mark
+from .lettering import LEADER_FROM, label_box, text_box, text_width
 from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
-from .placing import Placing, PlacedLabel, place_outwards
-from .plate import Stroke, break_elements, furniture_elements
+from .marks import could_show
+from .placing import Placing, PlacedLabel, place_outwards, text_gap
+from .plate import (Lettering, Stroke, break_elements, crossing_lines, furniture_elements, furniture_pieces, plain,
+                    subscript_runs)
 from .scene import Mark, MarkKind, Scene, extreme_points
 from .styles import PLAIN, Style
 from .svgdoc import fmt
@@ -63,9 +67,12 @@ class Drawing:
     LAYERS = ("areas", "construction", "results", "points", "labels")
 
     def __init__(self, scene: Scene, style: Style = PLAIN, *, caption_lines: int | None = None,
-                 region: tuple[float, float, float, float] | None = None, canvas: "Viewport | None" = None):
+                 region: tuple[float, float, float, float] | None = None, canvas: "Viewport | None" = None,
+                 plate: bool = False):
         self.scene = scene
         self.style = style
+        #: a book plate: its letters stand beside the lines, or the lines are broken for them (:attr:`gaps`)
+        self.plate = plate
         #: the caption lines, wrapped to the canvas
         self.captions = Captions(scene, width=style.width_px - 2 * style.margin_px, size=style.caption_size,
                                  groups=style.show_group)
@@ -83,7 +90,13 @@ class Drawing:
             self.vp = Viewport(win.xmin, win.ymax, win.scale, canvas.width, canvas.height, 0.0, win.left, win.top)
         self.doc = svgdoc.Writer()
         #: where the letters and the name tags stand (:class:`construct.render.placing.Placing`)
-        self.placing = pl = Placing(scene, style, self.vp, self.drawing_height)
+        #: the plate's furniture as drawn (an end-anchored lettering with an index set from its start)
+        self.furniture_items = _start_anchored(scene.furniture, self.vp.scale, style)
+        pieces = furniture_pieces(self.furniture_items, self.vp.px, self.vp.scale, size=style.label_size) if plate else []
+        self.placing = pl = Placing(scene, style, self.vp, self.drawing_height, plate=plate, furniture=pieces)
+        #: where the plate's lines are broken for its letters (:mod:`construct.render.gaps`): the ink of every
+        #: letter shown and of the furniture's lettering, with a margin of white
+        self.gaps: list[Gap] = self._gaps(pieces) if plate else []
         if style.name_tags:
             pl.place_tags(self.views if style.camera else (), self.full_view, self.input_steps)
             if style.camera and pl.tag_spots:
@@ -205,15 +218,45 @@ class Drawing:
                     extra = (" lbx" if thin else "") + self.placing.hidden_at.get(m.id, "")
                     gid = {"id": f"{mid}-lb"} if mid and " lbm" in extra else {}
                     extra = extra.replace(" lbm", "")
-                    yield "labels", self._letter(vp, m, rel, m.label, "lb", lid, extra=extra, gid=gid)
+                    # a plate breaks its lines for its letters: no paper-coloured halo beneath them
+                    yield "labels", self._letter(vp, m, rel, m.label, "lb", lid, extra=extra, gid=gid,
+                                                 halo=not (self.plate and vp is self.vp))
             return
         if m.kind.stroked:
-            yield mark_layer(m), _STROKES[m.kind](f, shapes[0][2], {"class_": cls, **ids})
+            d = gapped_mark(m, self.vp, self.gaps) if self.gaps and vp is self.vp else None
+            if d is not None:  # broken for the letters it passes
+                yield mark_layer(m), f.path(d=d, class_=cls, **ids)
+            else:
+                yield mark_layer(m), _STROKES[m.kind](f, shapes[0][2], {"class_": cls, **ids})
         else:  # an area, and its hatching if the style hatches and the lines meet it
             yield "areas", f.path(d=shapes[0][2]["d"], class_=f"area {cls}", **ids)
             for _, _, a in shapes[1:]:
                 hid = {"id": f"{mid}-hatch"} if mid else {}
-                yield "areas", f.path(d=a["d"], class_="hatch", **hid)
+                yield "areas", f.path(d=self._plate_hatch(m, a["d"]) if self.plate and vp is self.vp else a["d"],
+                                      class_="hatch", **hid)
+
+    def _plate_hatch(self, m: Mark, d: str) -> str:
+        """A plate's hatching of area *m* (*d* as the style hatches it): not run into a section drawn over it (the
+        flywheel's disc into its rim), broken for the letters in it."""
+        over = self.scene.areas_over(m)
+        if over:
+            d = hatch_path(self.vp, m.geom, self.style.hatch_spacing, *(() if m.hatch is None else (m.hatch,)),
+                           under=tuple(over))
+        return gapped_hatch(d, self.gaps) if self.gaps else d
+
+    def _gaps(self, pieces: Sequence[Any]) -> list[Gap]:
+        """The gaps a plate's lines leave for its letters: round the ink of every letter the plate shows and of
+        the furniture's lettering (:data:`construct.render.gaps.CLEARANCE` of white)."""
+        st = self.style
+        grow = CLEARANCE * st.label_size
+        out = []
+        for p in self.labels():
+            if p.shown:
+                box = text_box(p.point[0] + p.offset[0], p.point[1] + p.offset[1], p.text, st.label_size,
+                               st.label_font, st.label_italic)
+                out.append(Gap.around(box, grow))
+        out += [text_gap(p, st, CLEARANCE * st.label_size * p.size) for p in pieces if p.kind == "text"]
+        return out
 
     def _letter(self, vp: Viewport, m: Mark, rel: tuple[float, float, float], text: str, cls: str,
                 ids: dict, *, halo: bool = True, extra: str = "", gid: dict | None = None) -> Any:
@@ -230,7 +273,9 @@ class Drawing:
             # a letter set off from a crowded point is tied to it
             cx, cy = dx, dy - 0.35 * st.label_size
             n = math.hypot(cx, cy) or 1.0
-            a, b = 0.25 * st.label_size, n - 0.75 * st.label_size
+            # it ends where it meets the letter's white, or sooner: a wide letter (M₁ 19°12′) is not run into
+            box = label_box(dx, dy, text, st.label_size, st.label_font, st.label_italic)
+            a, b = 0.25 * st.label_size, min(n - 0.75 * st.label_size, _entry(box, cx / n, cy / n))
             # a name tag's leader is shown and hidden with its tag (the style shows tags at their step only)
             inner.add(f.line(start=(fmt(a * cx / n), fmt(a * cy / n)), end=(fmt(b * cx / n), fmt(b * cy / n)),
                              class_="leader tag" if "tag" in cls.split() else "leader"))
@@ -354,13 +399,12 @@ class Drawing:
         f = self.doc.factory
         sc = self.scene
         # the furniture first, the break marks over it (they open the rod and the axis for the gap)
-        elems = furniture_elements(sc.furniture, self.vp.px, self.vp.scale, f, size=self.style.label_size)
-        lines = [m.geom for m in sc.marks if m.kind is MarkKind.SEGMENT]
-        # and a straight line drawn from point to point (a rod lettered L): broken where it crosses the break
-        lines += [(*m.geom[0], *m.geom[1]) for m in sc.marks if m.kind is MarkKind.CURVE and m.straight
-                  and len(m.geom) == 2]
-        lines += [(*it.a, *it.b) for it in sc.furniture if isinstance(it, Stroke)]
-        elems += break_elements(sc.breaks, lines, self.vp.px, f, size=self.style.label_size)
+        elems = furniture_elements(self.furniture_items, self.vp.px, self.vp.scale,
+                                   GapFactory(f, self.gaps) if self.gaps else f, size=self.style.label_size)
+        if self.plate:  # its lines are broken for its lettering: the lettering's halos go
+            elems = [e for e in elems if e.attribs.get("class") != "lb halo"]
+        elems += break_elements(sc.breaks, crossing_lines(sc.marks, sc.furniture), self.vp.px, f,
+                                size=self.style.label_size)
         if not elems:
             return None
         g = f.g(id="furniture")
@@ -448,9 +492,10 @@ class Drawing:
     def layered(self, caption: Sequence[str] | None = None, *, centred: bool = False) -> str:
         """The canonical figure: every step a ``data-step`` group, nothing highlighted, the figure's caption.
 
-        Still renderers show the whole figure; frame k is the view of steps 1..k.
+        Still renderers show the whole figure; frame k is the view of steps 1..k.  A plate says so on its
+        root (``<svg class="plate">``): ``construct lint`` holds it to what a printed plate never shows.
         """
-        dwg = self.document()
+        dwg = self.document(**({"class_": "plate"} if self.plate else {}))
         for e in self.body(len(self.scene.steps), mark_steps=False):
             dwg.add(e)
         if self.style.show_caption:
@@ -496,7 +541,7 @@ class Drawing:
         for mk in self.scene.marks:
             if mk.step > k:
                 break
-            if not _near(mk, region):
+            if not could_show(mk, region):
                 continue
             for layer, elem in self._elements(mk, win, placed, None):
                 by_layer[layer].append((mk.step, elem))
@@ -571,42 +616,49 @@ def mark_geometry(m: Mark, vp: Viewport, style: Style) -> list[tuple[str, str, d
             out.append(("-hatch", "path", {"d": d}))
     return out
 
+def _start_anchored(items: Sequence[Any], scale: float, style: Style) -> tuple:
+    """*items* with every lettering that has an index (P = F·p_ü) and is set at its end moved to be set at its
+    start: a renderer may lay out each run of an end-anchored text by itself (cairosvg sets the index apart)."""
+    out = []
+    for it in items:
+        if isinstance(it, Lettering) and it.anchor == "end" and len(subscript_runs(it.text)) > 1:
+            w = text_width(plain(it.text), style.label_size * it.size, style.label_font, style.label_italic) / scale
+            a = math.radians(it.angle)
+            it = dataclasses.replace(it, at=(it.at[0] - w * math.cos(a), it.at[1] - w * math.sin(a)), anchor="start")
+        out.append(it)
+    return tuple(out)
+
+
+def _entry(box: tuple[float, float, float, float], ux: float, uy: float) -> float:
+    """How far along the unit direction (ux, uy) from the origin a ray enters *box* (infinity: it misses)."""
+    t_in, t_out = 0.0, math.inf
+    for u, lo, hi in ((ux, box[0], box[2]), (uy, box[1], box[3])):
+        if abs(u) < 1e-12:
+            if not lo <= 0.0 <= hi:
+                return math.inf
+            continue
+        t0, t1 = sorted((lo / u, hi / u))
+        t_in, t_out = max(t_in, t0), min(t_out, t1)
+    return t_in if t_in <= t_out else math.inf
+
+
+
 def _is_view(elem: Any) -> bool:
     """Is *elem* a camera box of the ``views`` layer (frozen or not)?"""
     xml = getattr(elem, "xml", None)
     return (xml.get("class") if xml is not None else getattr(elem, "attribs", {}).get("class")) == "view"
 
 
-def _near(m: Mark, region: tuple[float, float, float, float]) -> bool:
-    """Could the mark show inside *region*?  (Bounding boxes meet; a circle must not enclose it all.)"""
-    x0, y0, x1, y1 = region
-    g = m.geom
-    if m.kind is MarkKind.POINT:
-        return x0 <= g[0] <= x1 and y0 <= g[1] <= y1
-    if m.kind.round:
-        cx, cy, r = g[0], g[1], g[2]
-        # distance from the centre to the nearest and farthest point of the region
-        nx, ny = min(max(cx, x0), x1), min(max(cy, y0), y1)
-        near = math.hypot(nx - cx, ny - cy)
-        far = max(math.hypot(px - cx, py - cy) for px in (x0, x1) for py in (y0, y1))
-        return near <= r <= far
-    if m.kind is MarkKind.SEGMENT:
-        bx0, bx1 = sorted((g[0], g[2]))
-        by0, by1 = sorted((g[1], g[3]))
-        return bx0 <= x1 and x0 <= bx1 and by0 <= y1 and y0 <= by1
-    pts = g
-    return any(x0 <= p[0] <= x1 and y0 <= p[1] <= y1 for p in pts)
-
-
 def render_svg(scene: Scene, *, upto: int | None = None, style: Style = PLAIN,
-               caption: tuple[str, str] | None = None) -> str:
-    """The figure after steps 1..upto (all steps when None), as SVG text."""
+               caption: "tuple[str, str] | PlateCaption | None" = None) -> str:
+    """The figure after steps 1..upto (all steps when None), as SVG text; *caption*: its caption lines, or a
+    plate's (:class:`construct.render.captions.PlateCaption`, one language in at most three lines)."""
     if upto is None:
         if style.fig_caption:
             # a plate: its own size, the "Fig." caption centred beneath
             n = len(Captions(scene, width=style.width_px - 2 * style.margin_px, size=style.caption_size)
                     .title_lines(caption))
-            return Drawing(scene, style, caption_lines=n).final(caption, centred=True)
+            return Drawing(scene, style, caption_lines=n, plate=style.plate).final(caption, centred=True)
         return Drawing(scene, style).final(caption)
     return Drawing(scene, style).frame(upto)
 

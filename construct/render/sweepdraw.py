@@ -28,7 +28,9 @@ import numpy as np
 
 from ..kernel.curves import BezierCurve, Polyline
 from ..kernel.geometry import Circle, Line, Point, take
-from .scene import BREAK_FRACTION, BREAK_FRACTION_Y, BREAK_KEEP, GAP_TIE, TWO_PI, MarkKind, Scene, fanned_lines, letter_point, on_curve_names
+from .marks import GAP_TIE, TWO_PI, MarkKind, fanned_lines, letter_point
+from .scene import Scene, on_curve_names
+from .sheet import BREAK_FRACTION, BREAK_FRACTION_Y, BREAK_KEEP
 from .svg import point_radius
 from .styles import Style
 
@@ -109,7 +111,7 @@ class SweepDrawing:
             return v if type(v) is np.ndarray and v.shape == (n,) else np.full(n, float(v))
 
         self._vec = vec
-        # a lettered straight line's letter point (scene._letter_lines): placed below, once the axis is broken
+        # a lettered straight line's letter point (marks.letter_lines): placed below, once the axis is broken
         ids = {m.id for m in template.marks}
         self._at = {m.id + "-at" for m in template.marks if m.kind is MarkKind.CURVE and m.straight} & ids
         points = {k: (vec(o.x), vec(o.y)) for k, o in objects.items() if isinstance(o, Point)}
@@ -122,7 +124,7 @@ class SweepDrawing:
             if isinstance(o, (Point, Line, Circle)):
                 continue
             first = take(o, 0)
-            if hasattr(first, "rings"):  # an area's pieces count for the extent (scene._curve_points)
+            if hasattr(first, "rings"):  # an area's pieces count for the extent (marks.curve_points)
                 if hasattr(o, "extent"):  # a sweep's areas: their boxes without their pieces
                     areas[name] = x0, x1, y0, y1 = o.extent()
                     xs += [np.vstack([x0, x1])]
@@ -188,7 +190,7 @@ class SweepDrawing:
                 self.numbers[m.id] = nums[i]
 
     def _kept_span(self) -> np.ndarray:
-        """scene._kept_span over the sweep: what the points and curves span once broken alone."""
+        """sheet.kept_span over the sweep: what the points and curves span once broken alone."""
         objects, points, on, curves, areas = self._sources
         P = tuple(np.vstack(c) for c in zip(*[points[m.name] for m in self.marks
                                                if m.kind is MarkKind.POINT and m.name in points]))
@@ -276,7 +278,7 @@ class SweepDrawing:
 
     # -- the marks ---------------------------------------------------------------------------------------
     def _segment(self, line: Line, marked: list, margin: np.ndarray) -> tuple:
-        """scene._segment_extent over the sweep: the line as far as its marked points, and a margin."""
+        """marks.segment_extent over the sweep: the line as far as its marked points, and a margin."""
         vec = self._vec
         px, py, qx, qy = vec(line.p.x), vec(line.p.y), vec(line.q.x), vec(line.q.y)
         dx, dy = qx - px, qy - py
@@ -291,7 +293,7 @@ class SweepDrawing:
         return (px + t0 * ux, py + t0 * uy, px + t1 * ux, py + t1 * uy)
 
     def _circle(self, m, circle: Circle, marked: list, margin: np.ndarray) -> tuple:
-        """scene._circle_extent over the sweep: whole, or the arc over its marked points; a value where the
+        """marks.circle_extent over the sweep: whole, or the arc over its marked points; a value where the
         arc would be whole (or a whole one an arc) is not drawn here."""
         vec = self._vec
         cx, cy, r = vec(circle.center.x), vec(circle.center.y), vec(circle.radius)
@@ -312,7 +314,7 @@ class SweepDrawing:
             step = np.diff(a, axis=0)
             self.ok &= ~((step > 0) & (step <= 1e-9)).any(0) & (a[0] + TWO_PI - a[-1] > 1e-9)
             gaps = np.mod(np.vstack([a[1:], a[:1]]) - a, TWO_PI)
-            # scene.widest_gap: the widest, and of two as wide the one about angle 0
+            # marks.widest_gap: the widest, and of two as wide the one about angle 0
             tied = gaps >= gaps.max(axis=0) - GAP_TIE
             mid = a + gaps / 2
             score = np.round(np.cos(mid), 9) + 1e-10 * np.round(np.sin(mid), 9) - 1e-12 * np.arange(k)[:, None]
@@ -352,7 +354,7 @@ class SweepDrawing:
 
     # -- the broken axis, the lettered lines ---------------------------------------------------------------
     def _break(self, axis: int = 0) -> None:
-        """scene._break over the sweep: the widest empty stretch broken out where it is wider than a fifth
+        """sheet.broken_axis over the sweep: the widest empty stretch broken out where it is wider than a fifth
         (*axis* 1: across the figure, where wider than BREAK_FRACTION_Y)."""
         ext = self._extremes()
         lo_at, hi_at = (0, 1) if axis == 0 else (2, 3)
@@ -397,7 +399,7 @@ class SweepDrawing:
         self._breaks[axis] = (brk, hi - keep, keep, width)
 
     def _letter_lines(self, template: Scene, protocol: Any) -> None:
-        """scene._letter_lines over the sweep: each lettered straight line's letter point (value by value: a
+        """marks.letter_lines over the sweep: each lettered straight line's letter point (value by value: a
         handful of lines)."""
         in_fan = fanned_lines(protocol.steps)
         self.at_marks = [m for m in template.marks if m.id in self._at]
@@ -521,7 +523,7 @@ class SweepDrawing:
 
 
 def _arc_box(cx, cy, r, a0, sw) -> tuple:
-    """scene._arc_extremes over arrays: an arc's ends and the quarter points it passes, as a box."""
+    """marks._arc_extremes over arrays: an arc's ends and the quarter points it passes, as a box."""
     lo, hi = np.minimum(a0, a0 + sw), np.maximum(a0, a0 + sw)
     xs, ys = [cx + r * np.cos(a0), cx + r * np.cos(a0 + sw)], [cy + r * np.sin(a0), cy + r * np.sin(a0 + sw)]
     quarter = math.pi / 2

@@ -26,6 +26,11 @@ class IllegibleGallery(ConstructError):
 
 def add_arguments(p) -> None:
     p.add_argument("--out", default="gallery", metavar="DIR", help="output folder (default: gallery)")
+    from ...render.output import FORMATS
+
+    p.add_argument("--format", default="svg", metavar="svg|pdf|tikz",
+                   help=f"the plates also as {', '.join(FORMATS[1:])} at 120 mm (final.pdf; final.tikz and "
+                        f"final.tex beside each historical final.svg), several joined by commas (default svg)")
     p.add_argument("--legible", action="store_true",
                    help="fail (exit 1, the previous gallery kept) when 'construct lint' finds anything in it")
 
@@ -59,10 +64,13 @@ def _lint(strict: bool):
 
 def run(args) -> int:
     from ...regress.lint.fonts import load
+    from ...render.output import check_formats
 
+    check_formats([f.strip() for f in args.format.split(",")])  # refused before anything is built
     load()  # once here: the workers are forked with the fonts the lint measures with
     try:
-        entries = build_gallery(args.out, progress=True, before_swap=_lint(args.legible), check=lint_figure)
+        entries = build_gallery(args.out, progress=True, before_swap=_lint(args.legible), check=lint_figure,
+                                formats=[f.strip() for f in args.format.split(",")])
     except IllegibleGallery as exc:
         print(f"construct: {exc}", file=sys.stderr)
         return 1

@@ -5,11 +5,12 @@ from __future__ import annotations
 import sys
 
 from ...render.output import FRAME_MODES, write_replay
-from ..common import add_construction_options, brief, figure_from_args
+from ..common import add_construction_options, add_print_options, brief, figure_from_args, print_request
 
 NAME = "replay"
 HELP = ("build a construction and write DIR/final.svg (every step a layer), DIR/protocol.json, "
-        "DIR/animated.svg, DIR/player.html, DIR/storyboard.svg and, when asked, DIR/steps/NNN.svg")
+        "DIR/animated.svg, DIR/player.html, DIR/storyboard.svg and, when asked, DIR/steps/NNN.svg; "
+        "--format pdf or tikz: the plate at its final size as DIR/final.pdf or DIR/final.tikz and DIR/final.tex")
 
 
 def add_arguments(p) -> None:
@@ -21,6 +22,7 @@ def add_arguments(p) -> None:
                         "per group (groups); auto: all up to 1500 steps")
     p.add_argument("--force-frames", action="store_true",
                    help="(--frames) write frames even when they are estimated above 500 MB (refused with the estimate otherwise)")
+    add_print_options(p)
     p.add_argument("--live", action="store_true",
                    help="the player gets a slider for each continuous given over its domain (the rod ratio L/r, "
                         "1.05 .. 1000; the rod in metres; Baumann's kappa): the protocol swept over a grid fine enough "
@@ -44,11 +46,14 @@ def _live_page(c, fig, style: str):
 
 
 def run(args) -> int:
+    formats, sheet = print_request(args)  # a wrong format or size is refused before anything is built
     c, fig = figure_from_args(args)
-    live = _live_page(c, fig, args.style) if args.live else None
+    live = _live_page(c, fig, args.style) if args.live and "svg" in formats else None
     # the live player is written with the rest of the replay, in its staging folder (and its manifest)
-    info = write_replay(c, fig, args.out, style=args.style, frames=args.frames, force=args.force_frames, live=live)
+    info = write_replay(c, fig, args.out, style=args.style, frames=args.frames, force=args.force_frames, live=live,
+                        formats=formats, sheet=sheet, paper=args.paper)
     name = c.name if c is not None else fig.protocol.construction
-    print(f"{brief(name)}: {info['steps']} steps, {info['frames']} frames written to {brief(info['out'], 400)}",
+    made = f"{info['frames']} frames" if "svg" in formats else "the plate"
+    print(f"{brief(name)}: {info['steps']} steps, {made} ({', '.join(formats)}) written to {brief(info['out'], 400)}",
           file=sys.stderr)
     return 0

@@ -65,7 +65,7 @@ def inertia_plate(fig) -> dict:
     """Fig. 78/79: the curve heavy, tangents thin, the infinite-rod line dash-dotted and lettered,
     F/f and m dimensioned, the pressure scale beside the diagram, the signs of the zones.
 
-    Positions are the constructed points; the scale bar is the given drawn length of 1 kg/cm².
+    Positions are the constructed points; the scale bar is the given drawn length of 1 at (1 kg/cm²).
     """
     R = fig.replay
     n = fig.params["parts"]
@@ -81,8 +81,10 @@ def inertia_plate(fig) -> dict:
     furniture = [
         {"kind": "dimension", "a": tuple(D0), "b": tuple(E), "text": "F/f", "offset": 0.12 * r},
         {"kind": "dimension", "a": tuple(foot5), "b": tuple(q5), "text": "m", "offset": 0.1 * r},  # clear of the curve
-        {"kind": "lettering", "at": (on_inf[0] + 0.06 * r, on_inf[1] + 0.09 * r), "text": "L = ∞", "angle": slope},
-        {"kind": "scale", "origin": (D1[0] + 0.2 * r, 0.0), "end": (D1[0] + 0.2 * r, unit), "text": "1 kg/cm²"},
+        # upright: turned along the line the ∞ read as an 8
+        {"kind": "lettering", "at": (on_inf[0] + 0.03 * r, on_inf[1] + 0.05 * r), "text": "L = ∞", "anchor": "start"},
+        # the pressure scale close beside the diagram, in the unit the caption names (F/f = 1 at)
+        {"kind": "scale", "origin": (D1[0] + 0.09 * r, 0.0), "end": (D1[0] + 0.09 * r, unit), "text": "1 at"},
         {"kind": "sign", "at": (up[0], 0.4 * up[1]), "text": "+"},
         {"kind": "sign", "at": (down[0], 0.4 * down[1]), "text": "−"},
     ]

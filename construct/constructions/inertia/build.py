@@ -10,6 +10,7 @@ from typing import Any, Mapping
 
 from ...kernel.division import check_parts, divide_semicircle
 from ...kernel.instruments import Builder
+from ...kernel.letters import lowered
 from ...kernel.proportional import carry_across
 from .. import Figure, bounded, rod_ratio_param
 from ..domain import DRAWN_LENGTH, DRAWN_M, DRAWN_PRESSURE_RATIO, PRESSURE_RATIO
@@ -52,7 +53,7 @@ def _lay_off(b: Builder, c: _Ctx, tag: str, X: str, V: str, label: str | None = 
                          en=f"ordinate carried to {X} with the compass")
     return b.intersect(f"K{tag}", ordl, k, rule=("left", V, c.gf.origin), role="result",
                        de=f"Curvenpunkt K{tag} (oben positiv)", en=f"curve point K{tag} (up = positive)",
-                       labels={f"K{tag}": label} if label else None)
+                       labels={f"K{tag}": lowered(label)} if label else None)
 
 
 def _piston(b: Builder, c: _Ctx, tag: str, P: str, *, label: str | None = None, role: str = "construction") -> str:
@@ -64,7 +65,7 @@ def _piston(b: Builder, c: _Ctx, tag: str, P: str, *, label: str | None = None, 
         back = b.circle_radius(f"back.{tag}", C, c.L, de="mit L zurück auf den Hub", en="with L back onto the stroke")
         return b.intersect(f"X.{tag}", back, c.axis, rule=("toward", c.O, None, 1.0, 0.0), role=role,
                            de=f"Kolbenstellung zu {P}", en=f"piston position for {P}",
-                           labels={f"X.{tag}": label} if label else None)
+                           labels={f"X.{tag}": lowered(label)} if label else None)
 
 
 def _root_point(b: Builder, c: _Ctx, tag: str, H: str, what: tuple[str, str]) -> str:
@@ -84,7 +85,7 @@ def _root_point(b: Builder, c: _Ctx, tag: str, H: str, what: tuple[str, str]) ->
         perp = _ordinate_line(b, c, f"{tag}.p", foot)
         return b.intersect(f"{tag}.P", perp, c.crank, rule=("toward", O, None, 0.0, 1.0),
                            de=f"Kurbelpunkt zu q{tag[1:]}", en=f"crank point for q{tag[1:]}",
-                           labels={f"{tag}.P": f"ω{tag[1:]}"})  # the crank position of q6 (q7)
+                           labels={f"{tag}.P": lowered(f"ω{tag[1:]}")})  # the crank position of q6 (q7)
 
 
 #: What Fig. 78/79 show (regular expressions over object names): the stroke
@@ -153,13 +154,13 @@ def _characteristic(b: Builder, c: _Ctx, n: int) -> None:
             ordl = _ordinate_line(b, c, f"{tag}.o", X)
             k = b.circle_segment(f"{label}.k", X, foot, I, de="Ordinate nach der Kolbenstellung getragen",
                                  en="ordinate carried to the piston position")
-            b.intersect(label, ordl, k, rule=("toward", foot, I), role="result", labels={label: label},
+            b.intersect(label, ordl, k, rule=("toward", foot, I), role="result", labels={label: lowered(label)},
                         de=f"{label} = F/f·cos ω", en=f"{label} = F/f cos w")
     with b.group("characteristic point q5 = -m (90 degrees)", "Charakteristischer Punkt q5 = −m (90°)"):
         X = _piston(b, c, "c90", c.top)
         ordl = _ordinate_line(b, c, "c90.o", X)
         k = b.circle_segment("q5.k", X, c.gf.origin, m, de="m nach unten aufgetragen", en="m laid off downwards")
-        q5 = b.intersect("q5", ordl, k, rule=down, role="result", labels={"q5": "q5"}, de="q5 = −m", en="q5 = -m")
+        q5 = b.intersect("q5", ordl, k, rule=down, role="result", labels={"q5": "q₅"}, de="q5 = −m", en="q5 = -m")
     with b.group("characteristic point q6 = 0", "Charakteristischer Punkt q6 = 0"):
         k = b.circle_segment("h2.k", O, c.D0, c.top, de="Kreis um O mit der Sehne r√2", en="circle about O with the chord r sqrt 2")
         h2 = b.intersect("h2", c.axis, k, rule=("toward", O, None, 1.0, 0.0))
@@ -176,7 +177,7 @@ def _characteristic(b: Builder, c: _Ctx, n: int) -> None:
         X = _piston(b, c, "c7", P7)
         ordl = _ordinate_line(b, c, "c7.o", X)
         k = b.circle_segment("q7.k", X, c.gf.origin, m, de="m nach oben aufgetragen", en="m laid off upwards")
-        b.intersect("q7", ordl, k, rule=up, role="result", labels={"q7": "q7"}, de="q7 = +m", en="q7 = +m")
+        b.intersect("q7", ordl, k, rule=up, role="result", labels={"q7": "q₇"}, de="q7 = +m", en="q7 = +m")
     with b.group("point D and the tangents at 0, 90 and 180 degrees", "Punkt D und die Tangenten bei 0°, 90° und 180°"):
         E, F = "K0", f"K{n}"
         ef = b.line("EF", E, F, de="EF ist parallel zur Geraden für unendliche Stange",

@@ -15,6 +15,7 @@ from .. import analytic
 from ..checking import Check
 from ...kernel.errors import InvalidParameter
 from ...kernel.instruments import Builder
+from ...kernel.letters import lowered
 from .. import Figure
 from ..crank import build_frame, inverse_tolerance
 from ..ordinates import inertia_setup, ordinate_value, stroke_direction
@@ -97,7 +98,7 @@ def build_q_at_stroke_fractions(*, rod_ratio: float, divisions: int, r: float = 
                 kind = "generic"
             dc_p = c.D0 if b[P][0] * stroke_direction(b, c) < b[c.O][0] * stroke_direction(b, c) else c.D1
             ordinate_value(b, c, f"t{j}", P, kind, dc_p, None)
-            b.set_label(f"Vt{j}", f"q{j}")
+            b.set_label(f"Vt{j}", lowered(f"q{j}"))
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))
 

@@ -7,6 +7,7 @@ import re
 
 from ...kernel.geometry import Point
 from .. import Figure
+from ..scales import scale_furniture
 
 __all__ = ["PLATE", "piston_force_plate", "REVOLUTION_PLATE", "CARD_PLATE"]
 
@@ -20,7 +21,7 @@ def piston_force_plate(fig: Figure) -> dict:
     """Abb. 1055 as a plate: the piston-force line and the mass-force line heavy over a thin piston-path
     line, lettered as the book letters them -- J where the piston force changes sign, C the end of the
     force line and O the end of the piston-path line ("zwischen J und C negativ", "von J bis O") -- the
-    lines named (P = F·pü, Pb the mass forces, eq. 297/298), and a force scale in kg beside the diagram.
+    lines named (P = F·p_ü, P_b the mass forces, eq. 297/298), and a force scale in kg beside the diagram.
 
     The two-sided plate (``--revolution``) is laid out in landscape, as a book sets a cover-side and a
     crank-side diagram side by side (:func:`_revolution_panels`): the forward stroke on the left (the cover
@@ -46,18 +47,19 @@ def piston_force_plate(fig: Figure) -> dict:
     # line strikes its figures
     x = F0[0] - (0.25 if two_sided else 0.07) * s
     tick = 0.012 * s
-    furniture: list[dict] = [{"kind": "stroke", "a": (x, y0 + lo * step * unit), "b": (x, y0 + hi * step * unit),
-                              "look": "medium"}]
-    size = 1.0 if two_sided else 0.8
-    for i in range(lo, hi + 1):
-        y = y0 + i * step * unit
-        furniture.append({"kind": "stroke", "a": (x - tick, y), "b": (x, y), "look": "medium"})
-        furniture.append({"kind": "lettering", "at": (x - 2.2 * tick, y), "text": f"{int(i * step)}".replace("-", "−"),
-                          "anchor": "end", "size": size})
-    # "kg" under the scale on the two-sided plate: the admission line runs past its top
-    kg_at = (x, y0 + (lo - 0.8) * step * unit) if two_sided else (x, y0 + (hi + 0.6) * step * unit)
-    furniture.append({"kind": "lettering", "at": kg_at, "text": "kg", "size": 1.0 if two_sided else 0.85})
+    # "kg" over the scale, as Abb. 1055 has it
+    kg_at = (x, y0 + (hi + 0.6) * step * unit)
+    furniture: list[dict] = scale_furniture(x=x, zero=y0, unit=unit, values=[i * step for i in range(lo, hi + 1)],
+                                            tick=tick, text="kg", size=1.0 if two_sided else 0.8,
+                                            text_size=1.0 if two_sided else 0.85, gap=2.2, text_at=kg_at)
     d = 0.035 * s
+    # the dead centres, where the stroke begins and ends: a heavy tick across the piston-path line
+    ends = [(F0[0], y0), (Fn[0], y0)]
+    if two_sided:
+        (rx, ry) = panels[3]["shift"]
+        ends += [(R["rF0"][0] + rx, R["rF0"][1] + ry), (R[f"rF{n}"][0] + rx, R[f"rF{n}"][1] + ry)]
+    furniture += [{"kind": "stroke", "a": (ex, ey - 0.6 * d), "b": (ex, ey + 0.6 * d), "look": "heavy"}
+                  for ex, ey in ends]
     if not two_sided:  # the book's O and C end its one diagram; the two-sided plate is not the book's
         furniture += [
             {"kind": "lettering", "at": (Fn[0] + 0.45 * d, Fn[1] + 0.5 * d), "text": "O"},
@@ -66,18 +68,26 @@ def piston_force_plate(fig: Figure) -> dict:
     # the names of the lines, beside a quarter of the way along each
     kq, mq = R[f"K{max(1, (3 * n) // 8)}"], R[f"M{max(1, n // 6)}"]
     furniture += [
-        {"kind": "lettering", "at": (kq[0] + 1.8 * d, kq[1] + fdy + 1.2 * d), "text": "P = F·pü", "anchor": "start"},
-        {"kind": "lettering", "at": (mq[0] + 0.5 * d, mq[1] + fdy + 1.3 * d), "text": "Pb", "anchor": "start"},
+        {"kind": "lettering", "at": (kq[0] + 1.8 * d, kq[1] + fdy + 1.2 * d), "text": "P = F·p_ü", "anchor": "start"},
+        {"kind": "lettering", "at": (mq[0] + 0.5 * d, mq[1] + fdy + 1.3 * d), "text": "P_b", "anchor": "start"},
     ]
     looks = {"forcea": "heavy", "forceb": "heavy", "forcec": "heavy", "mass": "heavy", "fbase": "thin"}
     if two_sided:
-        (rx, ry) = panels[3]["shift"]
         # the return stroke runs from the crank end: its lines named a quarter of the way from there
         rk, rm = R[f"rK{n - max(1, (3 * n) // 8)}"], R[f"rM{n - max(1, n // 6)}"]
         furniture += [
-            {"kind": "lettering", "at": (rk[0] + rx - 1.8 * d, rk[1] + ry + 1.2 * d), "text": "P = F·pü",
+            {"kind": "lettering", "at": (rk[0] + rx - 1.8 * d, rk[1] + ry + 1.2 * d), "text": "P = F·p_ü",
              "anchor": "end"},
-            {"kind": "lettering", "at": (rm[0] + rx - 0.5 * d, rm[1] + ry + 1.3 * d), "text": "Pb", "anchor": "end"},
+            {"kind": "lettering", "at": (rm[0] + rx - 0.5 * d, rm[1] + ry + 1.3 * d), "text": "P_b", "anchor": "end"},
+        ]
+        # each side's steam diagram named over it; the crank side's is drawn downwards from its stroke line (as
+        # Abb. 1054 draws it under the cover side's, the over-pressure between them)
+        (cx, cy) = panels[2]["shift"]
+        top = R["ind.A0"][1] if "ind.A0" in R else R["D0"][1] + 0.6 * s  # the admission line (a card has none)
+        furniture += [
+            {"kind": "lettering", "at": ((F0[0] + Fn[0]) / 2, top + 1.6 * d), "text": "Deckelseite"},
+            {"kind": "lettering", "at": ((F0[0] + Fn[0]) / 2 + cx, R["D0"][1] + cy + 2.6 * d),
+             "text": "Kurbelseite, nach unten aufgetragen"},
         ]
         # each column named under its force diagram
         bottom = min(y0 + (lo - 1.6) * step * unit, min(R[f"rK{k}"][1] + ry for k in range(n + 1)) - 3 * d)
@@ -94,7 +104,14 @@ def piston_force_plate(fig: Figure) -> dict:
                 Z = R[name]
                 looks[name] = "unlettered"
                 furniture.append({"kind": "lettering", "at": (Z[0], Z[1] + 2.2 * d), "text": letters[name]})
-    return {"looks": looks, "furniture": furniture, "panels": panels}
+    # what the letters stand for, in the words of seed 001 ("Im Punkte J ... wird die Kolbenkraft Null und zwischen
+    # J und C negativ", "von J bis O")
+    legend = {"P = F·p_ü": ("Kolbenkraft, Gl. (297)", "piston force, eq. (297)"),
+              "P_b": ("Massenkräfte, Gl. (298)", "mass forces, eq. (298)"),
+              "J": ("Druckwechsel: die Kolbenkraft wird null", "reversal: the piston force is zero"),
+              "C": ("Ende der Kolbenkraftlinie", "end of the piston-force line"),
+              "O": ("Ende der Kolbenweglinie (Totpunkt)", "end of the piston-path line (dead centre)")}
+    return {"looks": looks, "furniture": furniture, "panels": panels, "legend": legend}
 
 
 #: The two-sided plate's panels: each side's indicator diagram over its stroke's force diagram.  The stroke

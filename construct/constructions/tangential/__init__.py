@@ -43,6 +43,7 @@ the exact curve); where it crosses the curve are α1, α2; between them, above
 the mean line, the excess area ("Überschussfläche", hatched), the work the
 flywheel must take up.
 
+>>> import math
 >>> fig = TANGENTIAL.figure(force="unit", parts=6, rod_ratio=5.0)
 >>> round(ok_over_r(fig, 3), 12)   # 90 degrees: sin(90° + β)/cos β = 1
 1.0
@@ -52,8 +53,6 @@ True
 """
 
 from __future__ import annotations
-
-import math
 
 from ...kernel.division import NAMES as DIVISION_NAMES
 from ...kernel.protocol import Caption
@@ -74,7 +73,7 @@ __all__ = ["TANGENTIAL", "build_tangential", "tangential_checks", "ok_over_r", "
 
 
 def tangential_wording(fig: Figure, lang: str) -> list[str]:
-    """The givens as Baumann writes them: κ = P/Bmax, the rod, the diagram (or a digitised card), the scale and
+    """The givens as Baumann writes them: κ = P/Bₘₐₓ, the rod, the diagram (or a digitised card), the scale and
     the division; over a revolution the machine, its cranks and the low-pressure cylinder."""
     g = fig.replay.givens
     if fig.params.get("force") == "unit":
@@ -85,7 +84,7 @@ def tangential_wording(fig: Figure, lang: str) -> list[str]:
         return [x for x in [ratio("r/L", g["rod_ratio"], lang), *revolution(fig, lang), division(fig, lang),
                             *card(fig, lang), *low_pressure(fig, lang)] if x]
     kappa = g["admission"] / (g["pressure_ratio"] * (1.0 + 1.0 / g["rod_ratio"]))
-    out = ([f"κ = P/Bmax = {number(round(kappa, 9), lang)}", ratio("r/L", g["rod_ratio"], lang)]
+    out = ([f"κ = P/Bₘₐₓ = {number(round(kappa, 9), lang)}", ratio("r/L", g["rod_ratio"], lang)]
            + diagram(g, lang) + [scale(g, lang), division(fig, lang)])
     if "lp.admission" in g:  # two cylinders, two diagrams: say whose the first givens are
         out[2] = ("Hochdruck: " if lang == "de" else "high pressure: ") + out[2]

@@ -12,6 +12,7 @@ from typing import Any, Mapping
 from ...kernel.errors import GeometryError, InvalidParameter
 from ...kernel.division import check_parts, divide_semicircle
 from ...kernel.instruments import Builder
+from ...kernel.letters import lowered
 from ...kernel.proportional import scale_line
 from ...kernel.protocol import Provenance
 from .. import Figure, bounded, positive, rod_ratio_param
@@ -283,7 +284,7 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
             P = points[k]
             with b.group(f"crank position {k}", f"Kurbelstellung {k}"):
                 rl = b.line(f"rl{k}", f"C{k}", P, de=f"Schubstange C{k}–{k} verlängert", en=f"rod line C{k}-{k} extended")
-                K = b.intersect(f"K{k}", rl, vert, rule=("only",), role="result", labels={f"K{k}": f"K{k}"},
+                K = b.intersect(f"K{k}", rl, vert, rule=("only",), role="result", labels={f"K{k}": lowered(f"K{k}")},
                                 de=f"K{k} auf der Senkrechten durch O: T = P′·OK/r",
                                 en=f"K{k} on the perpendicular through O: T = P'·OK/r")
                 kH = b.circle_through(f"H{k}.k", O, K, de="OK auf die Hubachse geschlagen", en="OK swung onto the stroke line")

@@ -2,7 +2,11 @@
 
 from __future__ import annotations
 
+import math
+import re
+
 from .. import Figure
+from ..scales import scale_furniture
 
 __all__ = ["PLATE", "tangential_plate"]
 
@@ -23,7 +27,8 @@ def tangential_plate(fig: Figure) -> dict:
     R = fig.replay
     n = fig.params["parts"]
     if fig.params.get("revolution"):  # a revolution's diagrams are lettered by their own steps (each crank, the sum)
-        return {"looks": {}, "furniture": _cylinder_letters(fig)}
+        # the work the flywheel takes up (over the mean line) hatched across the work it gives back (under it)
+        return {"looks": {"excess": "signed"}, "furniture": _cylinder_letters(fig) + _scale(fig, 2 * n)}
     U0, Un, M0, Mn = R["U0"], R[f"U{n}"], R["M0"], R["Mn"]
     span = abs(Un[0] - U0[0])
     d = 0.018 * span
@@ -41,7 +46,23 @@ def tangential_plate(fig: Figure) -> dict:
         furniture.append({"kind": "stroke", "a": (P[0], P[1]), "b": (P[0], U0[1] - 1.0 * d), "look": "dashed thin"})
         furniture.append({"kind": "lettering", "at": (P[0], U0[1] - 2.2 * d), "text": text})
     looks = {"A1": "unlettered", "A2": "unlettered", "tcurve": "heavy", "mean": "medium", "tbase": "medium"}
-    return {"looks": looks, "furniture": furniture}
+    return {"looks": looks, "furniture": furniture + _scale(fig, n)}
+
+
+def _scale(fig: Figure, m: int) -> list[dict]:
+    """The tangential pressure's scale in at beside the diagram, from its base line (none for a unit force P′ = r,
+    whose ordinates are lengths, not pressures)."""
+    if fig.params.get("force") == "unit":
+        return []
+    R = fig.replay
+    U0, Um = R["U0"], R[f"U{m}"]
+    span = abs(Um[0] - U0[0])
+    unit = R.givens["pressure_unit"]
+    heights = [(R[k][1] - U0[1]) / unit for k in R if re.fullmatch(r"[TS]\d+|c\d+\.\d+", k)]
+    step = 2.0 if max(heights) - min(heights) > 6 else 1.0
+    lo, hi = math.floor(min(0.0, min(heights)) / step), math.floor(max(heights) / step + 1e-9)
+    return scale_furniture(x=U0[0] - 0.06 * span, zero=U0[1], unit=unit, values=[i * step for i in range(lo, hi + 1)],
+                           tick=0.008 * span, text="at")
 
 
 def _cylinder_letters(fig: Figure) -> list[dict]:
@@ -65,5 +86,7 @@ def _cylinder_letters(fig: Figure) -> list[dict]:
             if clear > best:
                 best, spot = clear, (x, y)
         if spot is not None:
-            out.append({"kind": "lettering", "at": (spot[0], spot[1] - 1.4 * d), "text": text})
+            # set off below the curve, half way to the next line, tied to it by a leader
+            drop = min(2.6 * d, best / 2)
+            out.append({"kind": "lettering", "at": (spot[0] + 1.2 * d, spot[1] - drop), "text": text, "to": spot})
     return out

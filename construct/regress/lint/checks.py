@@ -24,6 +24,9 @@ small-label    labels smaller than 9 px on the screen
 small-mark     a mark of the current step smaller than 12 px on the screen (unless a ring of
                the step around it is larger)
 outside        a label (partly) outside the view
+through, caption-lines, caption-break
+               on a plate: a stroke through a letter's core, a caption too long or broken
+               inside a number or a formula (:mod:`.plates`)
 =============  =====================================================================
 """
 
@@ -35,11 +38,13 @@ from collections import defaultdict
 from dataclasses import dataclass
 from typing import Iterable, Iterator
 
+from ...render.lettering import segment_meets_box
+from . import plates
 from .sheet import Box, Sheet
 
 __all__ = ["Finding", "KINDS", "check_sheet", "view_count", "MIN_LABEL_PX", "MIN_MARK_PX", "MIN_OPACITY", "VIEW"]
 
-KINDS = ("overlap", "on-point", "struck", "small-label", "small-mark", "outside")
+KINDS = ("overlap", "on-point", "struck", "small-label", "small-mark", "outside") + plates.KINDS
 #: Letters smaller than this on the screen cannot be read from a seat in the classroom (px).
 MIN_LABEL_PX = 9.0
 #: The current step's mark must be at least this large on the screen to be seen at once (px).
@@ -158,26 +163,6 @@ def _meet(a: Box, b: Box) -> Box | None:
 
 def _grow(b: Box, d: float) -> Box:
     return (b[0] - d, b[1] - d, b[2] + d, b[3] + d)
-
-
-def _segment_in_box(p: tuple[float, float, float, float], b: Box) -> bool:
-    """Does the segment cross the box's inside (Liang–Barsky)?"""
-    x0, y0, x1, y1 = p
-    dx, dy = x1 - x0, y1 - y0
-    t0, t1 = 0.0, 1.0
-    for q, d in ((x0 - b[0], -dx), (b[2] - x0, dx), (y0 - b[1], -dy), (b[3] - y0, dy)):
-        if d == 0:
-            if q < 0:
-                return False
-            continue
-        t = q / d
-        if d < 0:
-            t0 = max(t0, t)
-        else:
-            t1 = min(t1, t)
-        if t0 > t1:
-            return False
-    return True
 
 
 class _Grid:
@@ -456,6 +441,8 @@ def check_sheet(sheet: Sheet, screen: tuple[float, float] = VIEW) -> list[Findin
     out += _small_labels(sheet, views, seen)
     out += _small_marks(sheet, views)
     out += _outside(sheet, views, seen)
+    out += plates.check_plate(sheet, lambda kind, labels, ids, message: _finding(kind, sheet, views, views.all(),
+                                                                                 labels, ids, message))
     return out
 
 
@@ -617,7 +604,7 @@ def _struck(sheet: Sheet, views: _Views, seen) -> list[Finding]:
                 b = (tb[0] - d, tb[1] - d, tb[2] + d, tb[3] + d)
                 if pb[2] < b[0] or pb[0] > b[2] or pb[3] < b[1] or pb[1] > b[3]:
                     continue  # the cheap test first: most pieces near a label pass beside it
-                if _segment_in_box(p, b):
+                if segment_meets_box(b, p):
                     hit.add(si)
             for si in sorted(hit):
                 s = sheet.strokes[si]

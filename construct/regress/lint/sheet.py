@@ -41,7 +41,7 @@ from ..svgdiff.geometry import arc_centre, parse_path, parse_transform
 from .cascade import PROPERTIES, Cascade, Look, Node, declarations
 from .fonts import text_extents
 
-__all__ = ["Sheet", "Text", "Dot", "Stroke", "read_sheet", "read_views", "player_data", "LintInputError",
+__all__ = ["Sheet", "Text", "Dot", "Stroke", "Line", "read_sheet", "read_views", "player_data", "LintInputError",
            "STATES", "Box", "read_moves"]
 
 Box = tuple[float, float, float, float]
@@ -98,6 +98,10 @@ class Text:
     #: The id of its letter group (a zoom level's rule moves it by that id), and the group's own scale.
     group: str | None = None
     unit: float = 1.0
+    #: The box its glyphs' ink covers in its own coordinates (before its transforms), and those transforms:
+    #: a turned letter's ink is a turned box on the sheet (a plate's core test, :mod:`.plates`).
+    ink: Box = (0.0, 0.0, 0.0, 0.0)
+    ctm: Matrix = (1.0, 0.0, 0.0, 1.0, 0.0, 0.0)
 
     @property
     def name(self) -> str:
@@ -122,6 +126,17 @@ class Stroke:
 
     ident: str | None
     step: int | None
+    chain: tuple[Node, ...]
+    pieces: tuple[tuple[float, float, float, float], ...]
+    half: float
+
+
+@dataclass(frozen=True, slots=True)
+class Line:
+    """Any stroked line of a plate (construction, result, furniture, hatching, a leader): its straight
+    pieces and half its stroke width."""
+
+    ident: str | None
     chain: tuple[Node, ...]
     pieces: tuple[tuple[float, float, float, float], ...]
     half: float
@@ -174,6 +189,10 @@ class Sheet:
     moves: dict[tuple[int, str], tuple[float, float]] = field(default_factory=dict)
     #: Per step, the ring the player draws round a small current mark: (cx, cy, r) as its data gives it.
     rings: dict[int, tuple[float, float, float]] = field(default_factory=dict)
+    #: A plate (the root ``<svg class="plate">``): one still view, read for every stroked line (:attr:`lines`).
+    plate: bool = False
+    #: A plate's stroked lines of every kind (read for plates only: a stepped figure has thousands).
+    lines: list[Line] = field(default_factory=list)
     #: The looks asked for, by (chain, state, level): every view asks again for the same few.
     _looks: dict[tuple, Look] = field(default_factory=dict, repr=False, compare=False)
 
@@ -467,6 +486,7 @@ def read_sheet(source: str | bytes | Path, name: str, *, data: dict | None = Non
         raise LintInputError(f"{name}: the drawing has no size (no viewBox, width or height)")
     sheet = Sheet(name=name, viewbox=vb, cascade=cascade)
     sheet.marks_steps = _marks_steps(cascade)
+    sheet.plate = "plate" in root.get("class", "").split()
     _Reader(sheet).read(root)
     sheet.steps = sorted(set(sheet.steps))
     sheet.n = sheet.steps[-1] if sheet.steps else 0
@@ -583,7 +603,7 @@ class _Reader:
             return
         if tag not in _DRAWN:
             return
-        if tag == "circle" and ("pt" in classes or "result" not in classes):
+        if tag == "circle" and ("pt" in classes or ("result" not in classes and not sheet.plate)):
             # a point marker or a thin circle: its centre and radius are all that is read (its box is exact)
             lines = pts = []
         else:
@@ -607,6 +627,10 @@ class _Reader:
             if look.stroked:
                 sheet.strokes.append(Stroke(e.get("id"), step, chain, tuple(_pieces(lines)),
                                             look.stroke_width * scale / 2))
+        if sheet.plate and not (tag == "circle" and "pt" in classes) and not classes & {"halo", "brk"}:
+            look = sheet.look(chain)
+            if look.stroked and look.shown and look.opacity > 0:
+                sheet.lines.append(Line(e.get("id"), chain, tuple(_pieces(lines)), look.stroke_width * scale / 2))
         if step is not None and not classes & {"leader", "halo", "brk", "brkline"}:
             if tag == "circle":  # exact: the flattened outline's corners fall inside the circle
                 cx, cy = _at(ctm, _num(e.get("cx")), _num(e.get("cy")))
@@ -633,6 +657,7 @@ class _Reader:
         margin = max(margin, MIN_MARGIN)
         corners = [_at(ctm, x + shift + a, y + b) for a in (ix0 - margin, ix1 + margin)
                    for b in (iy0 - margin, iy1 + margin)]
+        ink = (x + shift + ix0, y + iy0, x + shift + ix1, y + iy1)
         ident = e.get("id")
         owner = None
         if ident:
@@ -642,7 +667,7 @@ class _Reader:
         scale = math.sqrt(abs(ctm[0] * ctm[3] - ctm[1] * ctm[2]))
         anchor, gid, unit = group if group is not None else (None, None, 1.0)
         sheet.texts.append(Text(len(sheet.texts), text, kind, ident, owner, step, chain, _box_of(corners),
-                                look.font_size * scale, anchor, gid, unit))
+                                look.font_size * scale, anchor, gid, unit, ink, ctm))
 
 
 def _text_of(e: ET.Element) -> str:

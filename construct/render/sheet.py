@@ -1,0 +1,337 @@
+"""How a scene sits on its sheet: what a book plate shows (:func:`plate_names`), the panels it lays its
+diagrams out in (:func:`lay_out`), the broken axis of a long stroke line (:func:`broken_axis`), and the
+warning for a lettered point a plate leaves out (:func:`warn_hidden_labels`)."""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import math
+import os
+import re
+import sys
+import warnings
+from typing import NamedTuple
+
+from ..kernel.errors import HiddenLabelWarning
+from ..kernel.geometry import Circle, Line, Point
+from ..kernel.protocol import Protocol, Replay
+from .marks import Mark, MarkKind, extreme_points, lies_on, with_geom
+
+__all__ = ["BREAK_FRACTION", "BREAK_FRACTION_Y", "BREAK_KEEP", "PLATE_BREAK_KEEP", "Break", "broken_axis", "broken",
+           "kept_span", "span_of", "warn_hidden_labels", "lay_out", "plate_names"]
+
+
+#: A gap wider than this fraction of the figure, with nothing drawn in it, is broken out of the axis.
+BREAK_FRACTION = 0.2
+
+
+#: The same across the figure (a far point below it: the proportional angle's vertex S a rod's length under the
+#: crank, Fig. 27): a tall figure is broken only where the gap is wider than this, so that the books' own
+#: figures (at their rod ratios, S up to 6 r below) are drawn whole, as the books draw them.
+BREAK_FRACTION_Y = 0.3
+
+
+#: Width the broken-out stretch keeps, as a fraction of what remains of the figure.
+BREAK_KEEP = 0.07
+
+
+#: The same on a plate, where the rod is drawn across the break to its crosshead.
+PLATE_BREAK_KEEP = 0.55
+
+
+class Break(NamedTuple):
+    """A stretch broken out of the figure: where the drawn break starts (x, or y for ``axis`` 1; drawing units),
+    its drawn width, and the length it leaves out."""
+
+    start: float
+    width: float
+    left_out: float
+    axis: int = 0
+
+
+def broken_axis(marks: list[Mark], furniture: tuple = (), keep_fraction: float = 0.07, axis: int = 0,
+                fraction: float = BREAK_FRACTION) -> tuple[list[Mark], tuple, tuple[Break, ...]]:
+    """Break the widest empty stretch out of the figure, as a draftsman breaks a long axis.
+
+    The crossheads lie a rod length (5 r) to the left of the crank circle;
+    drawn to scale, the circle sits in a corner of an empty sheet.  Marks
+    wholly left of the empty stretch move right by what it loses; lines
+    that cross it (the stroke line) keep their right end and move their
+    left one (a line's end drawn a margin past its last point moves with the
+    side it is nearer).  A plate's furniture (the rod drawn to its crosshead)
+    is broken the same way.  *axis* 1 breaks across the figure instead: marks
+    wholly below the stretch move up (a vertex a rod's length below the
+    crank).  Returns the marks, the furniture and (:class:`Break`,) or ()
+    when there is no gap wider than *fraction* of the figure.
+    """
+    from .plate import anchors, shifted
+    ivals = []
+    far: dict[int, float] = {}  # a circle's or arc's far end, by its place in *marks* (asked again below)
+    for i, m in enumerate(marks):
+        if m.kind is MarkKind.SEGMENT or (m.kind is MarkKind.CURVE and m.straight and len(m.geom) == 2):
+            continue  # the stroke line spans everything; a rod drawn to its crosshead crosses the break
+        cs = [p[axis] for p in extreme_points(m)]
+        if cs:
+            ivals.append((min(cs), max(cs)))
+            if m.kind.round:
+                far[i] = ivals[-1][1]
+    ivals.extend((p[axis], p[axis]) for p in anchors(furniture))
+    if len(ivals) < 2:
+        return marks, furniture, ()
+    ivals.sort()
+    total = ivals[-1][1] - ivals[0][0]
+    best, reach = None, ivals[0][1]
+    for a, b in ivals[1:]:
+        if a > reach and (best is None or a - reach > best[1] - best[0]):
+            best = (reach, a)
+        reach = max(reach, b)
+    if best is None or best[1] - best[0] <= fraction * total:
+        return marks, furniture, ()
+    lo, hi = best
+    keep = min(keep_fraction * (total - (hi - lo)), 0.8 * (hi - lo))
+    shift = (hi - lo) - keep
+
+    def sx(x: float) -> float:
+        return x + shift if x <= lo else x
+
+    def end(x: float) -> float:  # a line's end, drawn a margin past its last point: with the side it is nearer
+        return x + shift if x <= (lo + hi) / 2 else x
+
+    out = []
+    for i, m in enumerate(marks):
+        g = m.geom
+        if m.kind is MarkKind.POINT:
+            g = (sx(g[0]), g[1]) if axis == 0 else (g[0], sx(g[1]))
+        elif m.kind is MarkKind.SEGMENT:
+            g = (end(g[0]), g[1], end(g[2]), g[3]) if axis == 0 else (g[0], end(g[1]), g[2], end(g[3]))
+        elif m.kind.round:  # moved whole, or not at all: a circle is not stretched
+            if far[i] <= lo:
+                g = (g[0] + shift,) + tuple(g[1:]) if axis == 0 else (g[0], g[1] + shift) + tuple(g[2:])
+        else:  # a curve or an area: point by point
+            g = tuple((sx(x), y) for x, y in g) if axis == 0 else tuple((x, sx(y)) for x, y in g)
+        out.append(m if g is m.geom else with_geom(m, g))
+    # the near stretch now ends at hi - keep: the kept piece of the broken axis is [hi - keep, hi]
+    moved = tuple(shifted(it, sx) for it in furniture) if axis == 0 else furniture
+    return out, moved, (Break(hi - keep, keep, hi - lo, axis),)
+
+
+def broken(marks: list[Mark], furniture: tuple, whole: bool) -> tuple[list[Mark], tuple, tuple[Break, ...]]:
+    """The figure broken along x (:func:`broken_axis`) and, unless a plate (*whole* false: a plate keeps its
+    sheet, the books draw S whole), across it."""
+    marks, furniture, breaks = broken_axis(marks, furniture, BREAK_KEEP if whole else PLATE_BREAK_KEEP)
+    if whole and not furniture:
+        marks, _, across = broken_axis(marks, (), BREAK_KEEP, axis=1, fraction=BREAK_FRACTION_Y)
+        breaks += across
+    return marks, furniture, breaks
+
+
+def kept_span(marks: list[Mark]) -> float:
+    """What the figure's points and curves span once broken alone (:func:`broken`; as they are, unbroken): a
+    broken figure's margin is a share of it."""
+    drawn = [m for m in marks if m.kind in (MarkKind.POINT, MarkKind.CURVE, MarkKind.AREA)]
+    return span_of(broken(drawn, (), True)[0])
+
+
+def span_of(marks: list[Mark]) -> float:
+    """The larger side of the box of the marks' points and curves (what the margin is a share of)."""
+    pts = [m.geom for m in marks if m.kind is MarkKind.POINT]
+    pts += [p for m in marks if m.kind in (MarkKind.CURVE, MarkKind.AREA) for p in m.geom]
+    if not pts:
+        return 1e-9
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    return max(max(xs) - min(xs), max(ys) - min(ys), 1e-9)
+
+
+def warn_hidden_labels(protocol: Protocol, objects: Replay, shown: set[str]) -> list[tuple[str, str]]:
+    """Warn once for the figure (:class:`~construct.kernel.errors.HiddenLabelWarning`) when its plate leaves out
+    lettered points; return them as (name, letter).
+
+    Only a plate the library chooses is asked (:func:`plate_names` without the protocol's ``plate`` list):
+    there a letter the user set on a point that locates no result would vanish without a word.  A
+    construction that names its plate's objects (every book construction) leaves its other letters out on
+    purpose, as its book does.
+
+    >>> from construct import Builder
+    >>> b = Builder("demo", givens={})
+    >>> _ = b.given_point("A", 0.0, 0.0); _ = b.given_point("B", 4.0, 0.0)
+    >>> _ = b.midpoint("M", "A", "B"); b.set_label("M", "M"); _ = b.line("g", "A", "B", role="result")
+    >>> fig = b.figure()
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     warn_hidden_labels(fig.protocol, fig.replay, plate_names(fig.protocol, fig.replay))
+    [('M', 'M')]
+    >>> print(caught[0].message)
+    the plate (historical style) leaves out point M lettered 'M': it shows the results and what locates them; give M role="result", or name what the plate shows in params["plate"], to letter it there
+    """
+    if protocol.params.get("plate"):
+        return []
+    hidden = [(name, text) for s in protocol.steps for name, text in s.labels
+              if name not in shown and isinstance(objects.get(name), Point)]
+    if hidden:
+        names = ", ".join(f"{n} lettered {t!r}" for n, t in hidden[:8]) + (", ..." if len(hidden) > 8 else "")
+        which = "point" if len(hidden) == 1 else f"{len(hidden)} points:"
+        them = hidden[0][0] if len(hidden) == 1 else "them"
+        warnings.warn(HiddenLabelWarning(
+            f"the plate (historical style) leaves out {which} {names}: it shows the results and what locates "
+            f'them; give {them} role="result", or name what the plate shows in params["plate"], to letter '
+            f"{'it' if len(hidden) == 1 else 'them'} there"), stacklevel=_caller_level())
+    return hidden
+
+
+#: This package's folder: a warning points at the first line outside it (the user's ``fig.svg(...)``).
+_PACKAGE = os.path.dirname(os.path.dirname(os.path.abspath(__file__))) + os.sep
+
+
+def _caller_level() -> int:
+    """The ``stacklevel`` (for a warning raised by this function's caller) of the first frame outside the package.
+
+    The drawing is reached by several paths (``Figure.svg``, ``construct.svg``, ``write_replay``), each
+    a different depth below the user's line; the warning should name that line, not ours.
+    """
+    frame, level = sys._getframe(2), 2  # 1 is the function that warns
+    while frame is not None and frame.f_code.co_filename.startswith(_PACKAGE):
+        frame, level = frame.f_back, level + 1
+    return level
+
+
+def lay_out(marks: list[Mark], panels: tuple, margin: float, tol: float) -> list[Mark]:
+    """The marks laid out in a plate's panels: each mark drawn once in every panel whose patterns match its
+    name, moved by that panel's shift; a mark no panel names stays.
+
+    A line drawn in a panel reaches over that panel's points on it (plus *margin*, as every line does), so
+    the stroke line under two diagrams is drawn under each; copies that fall on one line (an ordinate through
+    two panels one above the other) are drawn as one line over all their points.  The first copy keeps the
+    mark's id, the others add ``-panel<j>``.
+
+    >>> from construct.render.plate import Panel
+    >>> p = Mark("p", 1, "P", "point", (0.0, 0.0), "result", "", "")
+    >>> q = Mark("q", 1, "Q", "point", (1.0, 0.0), "result", "", "")
+    >>> ax = Mark("ax", 1, "axis", "segment", (-9.0, 0.0, 9.0, 0.0), "result", "", "")
+    >>> out = lay_out([p, q, ax], (Panel(("P", "Q", "axis")), Panel(("Q", "axis"), (0.0, 3.0))), 0.5, 1e-9)
+    >>> [(m.id, m.geom) for m in out]  # doctest: +NORMALIZE_WHITESPACE
+    [('p', (0.0, 0.0)), ('q', (1.0, 0.0)), ('q-panel1', (1.0, 3.0)),
+     ('ax', (-0.5, 0.0, 1.5, 0.0)), ('ax-panel1', (-1.5, 3.0, 3.5, 3.0))]
+    """
+    pats = [[re.compile(p) for p in panel.names] for panel in panels]
+    homes = {m.id: [i for i, ps in enumerate(pats) if any(p.fullmatch(m.name) for p in ps)] for m in marks}
+    points = [[m.geom for m in marks if m.kind is MarkKind.POINT and i in homes[m.id]] for i in range(len(panels))]
+    out: list[Mark] = []
+    for m in marks:
+        ins = homes[m.id]
+        if not ins:
+            out.append(m)
+            continue
+        if m.kind is MarkKind.SEGMENT:
+            geoms = _segment_copies(m.geom, [(tuple(panels[i].shift), points[i]) for i in ins], margin, tol)
+        else:
+            geoms = [_moved(m, tuple(panels[i].shift)) for i in ins]
+        out.extend(dataclasses.replace(m, id=m.id if j == 0 else f"{m.id}-panel{j}", geom=g)
+                   for j, g in enumerate(geoms))
+    return out
+
+
+def _moved(m: Mark, shift: tuple[float, float]) -> tuple:
+    dx, dy = shift
+    g = m.geom
+    if m.kind is MarkKind.POINT:
+        return (g[0] + dx, g[1] + dy)
+    if m.kind is MarkKind.SEGMENT:
+        return (g[0] + dx, g[1] + dy, g[2] + dx, g[3] + dy)
+    if m.kind.round:
+        return (g[0] + dx, g[1] + dy) + tuple(g[2:])
+    return tuple((x + dx, y + dy) for x, y in g)  # curve, area
+
+
+def _segment_copies(geom: tuple, homes: list, margin: float, tol: float) -> list[tuple]:
+    """A segment's copies, one per (shift, that panel's points): each over the points on it, collinear ones merged."""
+    x1, y1, x2, y2 = geom
+    length = math.hypot(x2 - x1, y2 - y1) or 1.0
+    ux, uy = (x2 - x1) / length, (y2 - y1) / length
+    nx, ny = -uy, ux
+    lines: list[list[float]] = []  # [offset across, t0, t1] in the frame of the unmoved line
+    for (dx, dy), pts in homes:
+        on = [(px - x1) * ux + (py - y1) * uy for px, py in pts
+              if abs((px - x1) * nx + (py - y1) * ny) <= tol * max(1.0, length)]
+        if on:
+            pad = margin * (5.0 if max(on) - min(on) <= tol * max(1.0, length) else 1.0)
+            t0, t1 = min(on) - pad, max(on) + pad
+        else:
+            t0, t1 = 0.0, length
+        off, along = dx * nx + dy * ny, dx * ux + dy * uy
+        for ln in lines:
+            if abs(ln[0] - off) <= tol * max(1.0, length):
+                ln[1], ln[2] = min(ln[1], t0 + along), max(ln[2], t1 + along)
+                break
+        else:
+            lines.append([off, t0 + along, t1 + along])
+    return [(x1 + off * nx + t0 * ux, y1 + off * ny + t0 * uy, x1 + off * nx + t1 * ux, y1 + off * ny + t1 * uy)
+            for off, t0, t1 in lines]
+
+
+def plate_names(protocol: Protocol, objects: Replay) -> set[str]:
+    """What a book plate shows: results, the curves that locate them, the points those curves pass through.
+
+    Given points stay (the crank centre); auxiliary objects and the points a
+    curve is only centred on (the far crossheads of the rod arcs) do not.
+
+    >>> from construct.constructions import get
+    >>> fig = get("crank").figure(parts=6)
+    >>> names = plate_names(fig.protocol, fig.replay)
+    >>> {"crank", "X3", "back3", "P3", "ord2", "O"} <= names, "rod3" in names
+    (True, False)
+    """
+    explicit = protocol.params.get("plate")
+    if explicit:
+        # The construction names what its book figure shows (regular expressions over object names).
+        return set(_named(tuple(explicit), tuple(objects)))
+    maker = {n: s for s in protocol.steps for n in s.outputs}
+    shown: set[str] = set()
+    curves: set[str] = set()
+    for s in protocol.steps:
+        if s.role == "result":
+            shown.update(s.outputs)
+            for name in s.inputs:
+                if isinstance(objects.get(name), (Line, Circle)) or hasattr(objects.get(name), "curve_points"):
+                    curves.add(name)
+        elif s.op == "given_point":
+            shown.update(s.outputs)
+    shown |= curves
+    for name in sorted(curves | {n for n in shown if isinstance(objects.get(n), (Line, Circle))}):
+        s = maker[name]
+        through = {"circle_through": s.inputs[1:], "line": s.inputs, "given_line": s.inputs}.get(s.op, ())
+        for p in through:
+            if isinstance(objects.get(p), Point) and maker[p].role != "auxiliary":
+                shown.add(p)
+    # Points that lie on a shown circle without the protocol saying so (the stroke
+    # marks on the rod arcs of Fig. 77) belong to the plate too; helper points
+    # (dotted names) and auxiliary ones do not.  Lines are not asked: every
+    # crosshead lies on the stroke line, far from the plate.
+    pts = [(n, o) for n, o in objects.items() if isinstance(o, Point) and n not in shown
+           and "." not in n and maker[n].role != "auxiliary"]
+    if pts:
+        import numpy as np
+
+        xs = [o[0] for _, o in objects.items() if isinstance(o, Point)]
+        tol = 1e-9 * max(max(xs) - min(xs), 1.0)
+        px, py = np.array([o[0] for _, o in pts], dtype=float), np.array([o[1] for _, o in pts], dtype=float)
+        for name in sorted(curves):
+            obj = objects[name]
+            if not isinstance(obj, Circle):
+                continue
+            # every circle against every point at once (a 1440-part crank has thousands of each); numpy's
+            # hypot may differ from math's in the last bit, so it only picks the candidates, lies_on decides
+            (cx, cy), r = obj
+            near = np.abs(np.hypot(px - cx, py - cy) - r) <= 2.0 * tol * max(1.0, r)
+            for i in np.flatnonzero(near).tolist():
+                n, o = pts[i]
+                if n not in shown and lies_on(obj, o, tol):
+                    shown.add(n)
+    return shown
+
+
+@functools.lru_cache(maxsize=8)
+def _named(patterns: tuple[str, ...], names: tuple[str, ...]) -> frozenset[str]:
+    """The *names* some pattern matches whole (a live sweep draws the same objects hundreds of times)."""
+    compiled = [re.compile(p) for p in patterns]
+    return frozenset(n for n in names if any(p.fullmatch(n) for p in compiled))

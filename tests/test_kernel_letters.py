@@ -1,0 +1,46 @@
+"""Captions in the figure's letters (construct/kernel/letters.py): the book's numbers, symbols and names.
+
+Expectations are what the seeds print (the decimal comma, ω and λ, Gl. (4₁), subscript digits) and the
+objects' names of a figure written out here -- never the module's own output.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from construct.kernel.letters import (CAPTION_LIMIT, Reader, book_symbols, displayed, equation, number, subscripts,
+                                      tag)
+
+
+@pytest.mark.parametrize("v, lang, digits, printed", [
+    (0.4, "de", 4, "0,4"), (2.0, "de", 4, "2"), (1529.0720493, "de", 5, "1529,1"), (1529.0720493, "en", 5, "1529.1"),
+    (0.000125, "de", 4, "0,000125"), (830.0, "en", 4, "830"),
+])
+def test_numbers_as_the_books_print_them(v, lang, digits, printed):
+    assert number(v, lang, digits) == printed
+
+
+def test_the_books_symbols_replace_their_ascii_stand_ins():
+    assert book_symbols("q = F/f (cos w + lam cos 2w)") == "q = F/f (cos ω + λ cos 2ω)"
+    assert book_symbols("the sweep, the window, two words") == "the sweep, the window, two words"  # w in words stays
+    assert equation("Gl. 4_1 and Gl. (4_1)") == "Gl. (4₁) and Gl. (4₁)"
+    assert subscripts("s_0, s_1, p_max") == "s₀, s₁, pmax"
+
+
+def test_a_shown_caption_is_bounded_and_says_it_was_cut():
+    text = "x" * (CAPTION_LIMIT + 50)
+    shown = displayed(text)
+    assert len(shown) == CAPTION_LIMIT and shown.endswith("…") and displayed("kurz") == "kurz"
+
+
+def test_a_helper_goes_by_the_last_part_of_its_name():
+    assert tag("T4.G.M2") == "M2"
+    assert tag("ordD.A", {"A"}) == "a"  # the figure letters a point A already: the helper is written small
+
+
+def test_the_reader_names_objects_by_the_figures_letters():
+    """P3 is lettered 3 in the figure; a compass circle has no letter and goes by its centre."""
+    r = Reader({"P3": ("point", "3", None, ()), "D0": ("point", "A", None, ()), "X3": ("point", "3′", None, ()),
+                "rod3": ("circle", None, "circle_radius", ("P3", "L"))})
+    assert r.text("rod3 meets the stroke line at X3", "en") == "the circle about 3 meets the stroke line at 3′"
+    assert r.text("Kreis um P3 durch D0", "de") == "Kreis um 3 durch A"

@@ -1,0 +1,81 @@
+"""Where the letters go (construct/render/lettering.py): font metrics, the placer, the line index.
+
+Expectations come from the font file's metrics (DejaVu Sans' hmtx table), from shapely's geometry and
+from boxes worked out here -- never from the placer's own answers.
+"""
+
+from __future__ import annotations
+
+import itertools
+import random
+
+import pytest
+
+from construct.render.lettering import LEADER_FROM, LineIndex, label_box, place, text_box
+
+
+def test_letters_are_measured_in_the_fonts_metrics():
+    """DejaVu Sans (hmtx, 2048 units to the em): 'W' 2025, 'i' 569; a character count would make them equal."""
+    w = text_box(0, 0, "W", 100.0)
+    i = text_box(0, 0, "i", 100.0)
+    assert w[2] - w[0] == pytest.approx(100 * 2025 / 2048, abs=0.01)
+    assert i[2] - i[0] == pytest.approx(100 * 569 / 2048, abs=0.01)
+
+
+def test_a_dense_family_is_never_stacked_and_keeps_clear_of_result_lines():
+    """Forty result letters on points 3 px apart on a result line: placed ones never overlap, never touch
+    the line or another point; what finds no room is thin (shown only magnified), never dropped."""
+    size = 12.0
+    pts = [(100.0 + 3.0 * i, 200.0) for i in range(40)]
+    items = [(f"p{i}", "result", i, p, (0.0, -1.0), f"{i + 1}′") for i, p in enumerate(pts)]
+    line = [(50.0, 200.0, 250.0, 200.0)]
+    spots = place(items, size, pts, line)
+    assert set(spots) == {f"p{i}" for i in range(40)}
+    shown = [(i, label_box(x, y, items[int(i[1:])][5], size)) for i, (x, y, _d, thin) in spots.items() if not thin]
+    assert 3 <= len(shown) < 40
+    for (_a, b1), (_b, b2) in itertools.combinations(shown, 2):
+        assert not (b1[0] < b2[2] and b2[0] < b1[2] and b1[1] < b2[3] and b2[1] < b1[3])
+    for _i, b in shown:
+        assert not (b[1] < 200.0 < b[3])  # the line y = 200 does not strike the letter
+        assert not any(b[0] < x < b[2] and b[1] < y < b[3] for x, y in pts)
+
+
+
+
+def test_the_line_index_answers_as_shapely_does():
+    """Does a segment cross a box?  The index (pieces in a grid, clipped) against shapely's intersects."""
+    from shapely.geometry import LineString, box
+
+    rng = random.Random(7)
+    segs = [(rng.uniform(0, 400), rng.uniform(0, 400), rng.uniform(0, 400), rng.uniform(0, 400)) for _ in range(60)]
+    index = LineIndex(12.0, segs)
+    for _ in range(400):
+        x, y, w, h = rng.uniform(0, 400), rng.uniform(0, 400), rng.uniform(2, 40), rng.uniform(2, 20)
+        b = (x, y, x + w, y + h)
+        want = any(LineString([s[:2], s[2:]]).intersects(box(*b)) for s in segs)
+        assert index.meets(b) == want, b
+
+
+def test_placed_letters_keep_clear_of_each_other_and_of_the_points():
+    rng = random.Random(3)
+    pts = [(rng.uniform(100, 300), rng.uniform(100, 300)) for _ in range(60)]
+    items = [(f"p{i}", "given" if i % 3 else "result", i, p, (1.0, 0.0), f"P{i}") for i, p in enumerate(pts)]
+    spots = place(items, 12.0, pts)
+    shown = {i: label_box(x, y, f"P{i[1:]}", 12.0) for i, (x, y, _d, thin) in spots.items() if not thin}
+    assert len(shown) > 20
+    for a, b in itertools.combinations(shown.values(), 2):
+        assert not (a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3])
+    r = 0.3 * 12.0  # a point marker's reach
+    for b in shown.values():
+        assert not any(b[0] < x + r and x - r < b[2] and b[1] < y + r and y - r < b[3] for x, y in pts)
+    # every letter stands off its point, and one farther than LEADER_FROM letter heights says how far
+    assert all(0.0 < dist for _x, _y, dist, _t in spots.values())
+    assert any(dist >= LEADER_FROM for _x, _y, dist, _t in spots.values())  # 60 points: some are crowded
+
+
+def test_a_letter_is_set_on_its_baseline_and_centred():
+    """text_box of a centred letter is symmetric about x; the baseline is y, the ink above it (y down)."""
+    b = text_box(50.0, 80.0, "H", 20.0)
+    assert (b[0] + b[2]) / 2 == pytest.approx(50.0, abs=0.01) and b[3] == pytest.approx(80.0, abs=1e-9) and b[1] < 80.0
+    halo = label_box(50.0, 80.0, "H", 20.0, halo=2.0)
+    assert halo == pytest.approx((b[0] - 2.0, b[1] - 2.0, b[2] + 2.0, b[3] + 2.0))

@@ -68,11 +68,24 @@ FRAME_MODE = "none"
 #: the animation and storyboard of `construct replay` carry the same elements again); the historical
 #: style is the plate (the construction's views in the plate's ink would double the gallery).
 GALLERY_OUTPUTS = {"historical": (), "teaching": ("player",)}
-#: The constructions whose gallery player has a live rod-ratio slider (construct.live): the crank
-#: and the inertia curve, the two the issue names; the live data adds 0.1-0.3 MB a player (and a sweep of
-#: 1-3 s to the build), and the gallery stays under its 15 MB.  `construct replay NAME --live` gives any
-#: construction with a rod ratio its slider.
-LIVE_PLAYERS = ("crank", "inertia-curve")
+#: The constructions whose gallery player has a slider for each continuous given (construct.live): the rod
+#: wherever the construction takes it (L/r; piston-force's L in metres beside R) and tangential-pressure's
+#: kappa.  The live data adds 0.02-0.4 MB a player (its grid bounded by the refinement's 0.4 px, each
+#: coordinate at the grid values it needs; live.sweep and live.wire), and a sweep of 0.2-8 s of CPU to the
+#: build.  `construct replay NAME --live` gives any construction with such a given its sliders (four-stroke's
+#: rod too).
+LIVE_PLAYERS = ("crank", "crank-angle", "inertia-curve", "inertia-stroke-fractions", "piston-force",
+                "tangential-pressure", "two-cranks")
+#: Givens a book varies that change the construction's steps (the indicator diagram's filling s1: the division
+#: up to the cut-off): every book figure of the construction gets its player, and each player a switch
+#: between them (render.live.with_switch) instead of a slider -- construction -> (param, symbol, how a value is
+#: written).
+SWITCHES: dict[str, tuple[str, str, Callable[[float], str]]] = {
+    "indicator-diagram": ("filling", "s₁/s", lambda v: f"{round(100 * v):d} %")}
+#: Why such a given is a switch, as the page says it.
+SWITCH_WHY = ("Die Füllung s₁ ändert die Schritte der Konstruktion (die Teilung bis zum Abschluss): die Figuren "
+              "des Buches, umschaltbar, kein Schieber. / The filling s₁ changes the construction's steps (the "
+              "division up to the cut-off): the book's figures to switch between, not a slider.")
 #: The plates the gallery's LaTeX example sets on one page (``latex/plates.tex``, beside their ``.tikz``
 #: files): the crank and Abb. 1055, the piston-force line over the whole revolution.
 LATEX_PLATES = (("crank", {"rod_ratio": 5.0, "parts": 18}), ("piston-force", {"revolution": True}))
@@ -205,7 +218,8 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any],
         indent=1, ensure_ascii=False, sort_keys=True) + "\n")
     entries = []
     thumb = ""
-    for style in GALLERY_STYLES if first else GALLERY_STYLES[:1]:
+    switch = _switch(name, params)
+    for style in GALLERY_STYLES if first or switch else GALLERY_STYLES[:1]:
         sdir = edir / style
         sdir.mkdir()
         live, drawing = (_live(c, fig, style) if first and GALLERY_OUTPUTS[style] and name in LIVE_PLAYERS
@@ -221,7 +235,8 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any],
         # the plates also as PDF or TikZ when asked (construct gallery --format): the historical style's
         info = write_outputs(sdir, c, fig, STYLES[style], frames=FRAME_MODE, fig_number=number, protocol=False,
                              outputs=GALLERY_OUTPUTS[style], live=live, drawing=drawing,
-                             formats=("svg", *formats) if style == "historical" else ("svg",))
+                             formats=("svg", *formats) if style == "historical" else ("svg",),
+                             switch=switch if GALLERY_OUTPUTS[style] else None)
         files = sorted(str(p.relative_to(root)) for p in sdir.rglob("*") if p.is_file())
         files += [f"{slug}/protocol.json"] * first + [f"{slug}/checks.md", f"{slug}/checks.json"]
         entries.append({"construction": name, "params": dict(params), "style": style,
@@ -230,7 +245,7 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any],
     row = {"number": number, "name": name, "slug": slug, "params": params, "title": c.title,
            "source": citation(c, "en") or c.source, "books": [cite.book.key for cite in c.cites],
            "method": method, "checks": summary(checks), "ok": all(ch.ok for ch in checks),
-           "steps": len(fig.protocol.steps), "params_text": book_givens(fig, c)[1], "player": first,
+           "steps": len(fig.protocol.steps), "params_text": book_givens(fig, c)[1], "player": first or bool(switch),
            "thumb": thumb}
     return entries, row
 
@@ -251,6 +266,22 @@ def _live(c, fig, style: str) -> tuple[list[dict[str, Any]] | None, Any]:
     measure = Measure(c, fig, STYLES[style], drawing=drawing)  # (the givens' sweeps share it)
     return [live_data(live_sweep(c, fig, g.name, style=STYLES[style], drawing=drawing, measure=measure))
             for g in givens], drawing
+
+
+def _switch(name: str, params: Mapping[str, Any]) -> tuple | None:
+    """The switch between the book figures of a construction whose varied given changes its steps (SWITCHES):
+    (symbol, [(value as written, the sibling player's page or None for this one)], why); None elsewhere."""
+    if name not in SWITCHES:
+        return None
+    key, symbol, written = SWITCHES[name]
+    c = get(name)
+    here = entry_slug(name, params)
+    options = []
+    for p in [dict(q) for n, q in gallery_plan() if n == name]:
+        slug = entry_slug(name, p)
+        options.append((written(float(p.get(key, c.defaults[key]))),
+                        None if slug == here else f"../../{slug}/teaching/player.html"))
+    return symbol, options, SWITCH_WHY
 
 
 def _first_of_its_construction(name: str, params: Mapping[str, Any]) -> bool:

@@ -77,6 +77,8 @@ REFINE_PX = 0.4
 QUANTUM_PX = 0.05
 #: A jump caused by at most this many marks is theirs (they are drawn from the nearer grid value), not the figure's.
 SNAP_AT_MOST = 3
+#: A round of the refinement draws the midpoints of a cell's halves (and of theirs, ...) this many levels ahead.
+AHEAD = 1
 #: ... and this many, where each is drawn at the cell's midpoint as at one of its ends (a jump, plainly).
 SNAP_AT_ONCE = 12
 #: A mark whose miss at a cell's midpoint stays above this share of its miss in the cell split into it, twice
@@ -189,6 +191,15 @@ def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
     return float(col_err.max()), {k: float(coord_err[k]) for k in bad}
 
 
+def _ahead(a: float, b: float, depth: int) -> list[float]:
+    """The midpoints of the halves of the cell (a, b), and of theirs, *depth* levels down: as the refinement
+    will split them (to the last bit: (a + m) / 2 with m = (a + b) / 2)."""
+    if depth <= 0:
+        return []
+    m = (a + b) / 2
+    return [(a + m) / 2, (m + b) / 2] + _ahead(a, m, depth - 1) + _ahead(m, b, depth - 1)
+
+
 def _at_an_end(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray, culprits: dict[int, float]) -> bool:
     """Is each culprit (a mark, not the figure or a view) drawn at the midpoint as at one end of the cell
     (within REFINE_PX) while it misses the blend by more than JUMP_PX: a jump, not a bend?"""
@@ -296,7 +307,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
         # and the midpoints of their halves, drawn ahead: a cell that must be split has its halves tested in the
         # same round (a round draws every mark of the figure once, over all its values: its cost is the marks',
         # not the values'); what no cell needed is dropped
-        ahead = [q for a, b in todo for q in ((3 * a + b) / 4, (a + 3 * b) / 4)]
+        ahead = [q for a, b in todo for q in _ahead(a, b, AHEAD)]
         drawn, _ = _frames(construction, figure, given, values(mids + ahead), measure)
         got = dict(zip(mids + ahead, as_arrays(drawn)))
         nxt = []

@@ -45,9 +45,6 @@ def sweep_drawable(scene: Scene, style: Style | None = None) -> bool:
     return not scene.furniture and not (hatched and any(m.kind is MarkKind.AREA for m in scene.marks))
 
 
-_ATAN2 = np.frompyfunc(math.atan2, 2, 1)
-
-
 def _curve_rows(o: Any, n: int, vec: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """A curve's drawn points (its ``curve_points``) at every value of a sweep: x and y (points x values), and
     how many points each value has (the rows past that are nan).  A French curve or a polyline whose points
@@ -73,11 +70,6 @@ def _curve_rows(o: Any, n: int, vec: Any) -> tuple[np.ndarray, np.ndarray, np.nd
         X[:len(r), i] = [p[0] for p in r]
         Y[:len(r), i] = [p[1] for p in r]
     return X, Y, counts
-
-
-def _atan2(y: np.ndarray, x: np.ndarray) -> np.ndarray:
-    """math.atan2 element by element (the drawing's, to the last bit: see SweepDrawing._circle)."""
-    return _ATAN2(y, x).astype(float)
 
 
 def _r2(v: np.ndarray) -> np.ndarray:
@@ -153,6 +145,7 @@ class SweepDrawing:
         # each mark's geometry, its kind's rows
         self.marks = [m for m in template.marks if m.id not in self._at]
         self._sources = (objects, points, on, curves, areas)
+        self._spans: dict[Any, tuple] = {}  # each line's and arc's marked span (the passes share them)
         self._draw(margin)
         if self._broken is not None:
             # scene.build_scene: a broken figure is drawn again with the margin of what is left of it (its
@@ -279,16 +272,21 @@ class SweepDrawing:
     # -- the marks ---------------------------------------------------------------------------------------
     def _segment(self, line: Line, marked: list, margin: np.ndarray) -> tuple:
         """marks.segment_extent over the sweep: the line as far as its marked points, and a margin."""
-        vec = self._vec
-        px, py, qx, qy = vec(line.p.x), vec(line.p.y), vec(line.q.x), vec(line.q.y)
-        dx, dy = qx - px, qy - py
-        h = np.hypot(dx, dy)
-        ux, uy = dx / h, dy / h
-        ts = (np.vstack([(x - px) * ux + (y - py) * uy for x, y in marked]) if marked
-              else np.vstack([np.zeros(self.n), np.ones(self.n)]))
-        lo, hi = ts.min(0), ts.max(0)
-        # a line through one point only (a tangent at its point of contact) is drawn long enough to be seen
-        m = np.where(hi - lo <= 1e-9 * np.maximum(1.0, np.abs(ts[0])), 5.0 * margin, margin)
+        got = self._spans.get(id(line))
+        if got is None:  # (its marked points' span does not depend on the margin: made once, for both passes)
+            vec = self._vec
+            px, py, qx, qy = vec(line.p.x), vec(line.p.y), vec(line.q.x), vec(line.q.y)
+            dx, dy = qx - px, qy - py
+            h = np.hypot(dx, dy)
+            ux, uy = dx / h, dy / h
+            ts = (np.vstack([(x - px) * ux + (y - py) * uy for x, y in marked]) if marked
+                  else np.vstack([np.zeros(self.n), np.ones(self.n)]))
+            lo, hi = ts.min(0), ts.max(0)
+            # a line through one point only (a tangent at its point of contact) is drawn long enough to be seen
+            tangent = hi - lo <= 1e-9 * np.maximum(1.0, np.abs(ts[0]))
+            got = self._spans[id(line)] = (px, py, ux, uy, lo, hi, tangent)
+        px, py, ux, uy, lo, hi, tangent = got
+        m = np.where(tangent, 5.0 * margin, margin)
         t0, t1 = lo - m, hi + m
         return (px + t0 * ux, py + t0 * uy, px + t1 * ux, py + t1 * uy)
 
@@ -301,9 +299,24 @@ class SweepDrawing:
             if m.kind is not MarkKind.CIRCLE:
                 self.ok[:] = False
             return (cx, cy, r)
-        # math's atan2, not numpy's: two points marked half a turn apart (a diameter) leave two equal gaps, and
-        # the drawing takes the first of them as its floating point has it, to the last bit
-        a = np.sort(np.vstack([np.mod(_atan2(y - cy, x - cx), TWO_PI) for x, y in marked]), axis=0)
+        got = self._spans.get(m.id)
+        if got is None:  # (the arc over its marked points does not depend on the margin: made once)
+            got = self._spans[m.id] = self._arc_over(cx, cy, marked)
+        start, sweep, ok = got
+        self.ok &= ok
+        pad = np.minimum(margin / r, 0.6)
+        start, sweep = start - pad, sweep + 2.0 * pad
+        whole = sweep >= 0.92 * TWO_PI
+        self.ok &= whole if m.kind is MarkKind.CIRCLE else ~whole
+        return (cx, cy, r) if m.kind is MarkKind.CIRCLE else (cx, cy, r, start, sweep)
+
+    def _arc_over(self, cx: np.ndarray, cy: np.ndarray, marked: list) -> tuple:
+        """The arc over a circle's marked points, before its margin: (start, sweep, where it is sure)."""
+        ok = np.ones(self.n, dtype=bool)
+        # (two points marked half a turn apart, a diameter, leave two equal gaps: marks.widest_gap takes one by
+        # a rule, not by the last bit of an arctangent)
+        a = np.sort(np.mod(np.arctan2(np.vstack([y - cy for x, y in marked]), np.vstack([x - cx for x, y in marked])),
+                           TWO_PI), axis=0)
         k = a.shape[0]
         if k == 1:
             start, sweep = a[0], np.zeros(self.n)
@@ -312,7 +325,7 @@ class SweepDrawing:
             # gaps of nothing, and the gap after it is the gap after the one it stands for; angles a hair apart
             # (not one place, not two) are left to the drawing
             step = np.diff(a, axis=0)
-            self.ok &= ~((step > 0) & (step <= 1e-9)).any(0) & (a[0] + TWO_PI - a[-1] > 1e-9)
+            ok &= ~((step > 0) & (step <= 1e-9)).any(0) & (a[0] + TWO_PI - a[-1] > 1e-9)
             gaps = np.mod(np.vstack([a[1:], a[:1]]) - a, TWO_PI)
             # marks.widest_gap: the widest, and of two as wide the one about angle 0
             tied = gaps >= gaps.max(axis=0) - GAP_TIE
@@ -323,11 +336,7 @@ class SweepDrawing:
             one = a[-1] == a[0]  # every marked point at one place: the arc is that place (and its margin)
             start = np.where(one, a[0], a[(i + 1) % k, cols])
             sweep = np.where(one, 0.0, TWO_PI - gaps[i, cols])
-        pad = np.minimum(margin / r, 0.6)
-        start, sweep = start - pad, sweep + 2.0 * pad
-        whole = sweep >= 0.92 * TWO_PI
-        self.ok &= whole if m.kind is MarkKind.CIRCLE else ~whole
-        return (cx, cy, r) if m.kind is MarkKind.CIRCLE else (cx, cy, r, start, sweep)
+        return start, sweep, ok
 
     def _extremes(self) -> dict:
         """scene.extreme_points over the sweep, as boxes: {block: (x0, x1, y0, y1)}, each (marks x values)."""

@@ -90,9 +90,10 @@ class Construction:
     #: else :meth:`sweep_checks` validates set by set.
     validates_sweeps: bool = False
     #: The givens it computes from others by its book's own formula, whatever set those (tangential-pressure:
-    #: c v²/r = P/((1 + r/L) κ) from κ and L/r): applied to the givens of a protocol replayed with new givens
-    #: and of a sweep (arrays).  None: no given follows from another.
-    derived: Callable[[Mapping[str, Any]], dict[str, Any]] | None = None
+    #: c v²/r = P/((1 + r/L) κ) from κ and L/r; two-cranks: the magnification it chose itself, from L/r): applied
+    #: to the givens of a protocol replayed with new givens and of a sweep (arrays): (givens, the protocol's
+    #: params) -> givens.  None: no given follows from another.
+    derived: Callable[[Mapping[str, Any], Mapping[str, Any]], dict[str, Any]] | None = None
 
     def __post_init__(self) -> None:
         # where a construction kept its plate and its parameters' help before they were fields of their own
@@ -129,9 +130,10 @@ class Construction:
             return None
         return self.given_sweep(givens, "rod_ratio", ratios)
 
-    def given_sweep(self, givens: Mapping[str, Any], name: str, values: Any) -> dict[str, Any]:
+    def given_sweep(self, givens: Mapping[str, Any], name: str, values: Any,
+                    params: Mapping[str, Any] | None = None) -> dict[str, Any]:
         """The givens that replay a figure of this construction at every value of its given *name* in *values*
-        (the others as in *givens*, those that follow from them by :attr:`derived`).
+        (the others as in *givens*, those that follow from them by :attr:`derived`; *params*: the protocol's).
 
         >>> from construct.constructions import get
         >>> g = get("tangential-pressure").figure().replay.givens
@@ -142,7 +144,7 @@ class Construction:
         if name not in givens:
             raise InvalidParameter(f"{self.name} has no given {name!r} to sweep; it has {', '.join(sorted(givens))}")
         out = {**givens, name: np.asarray(values, dtype=float)}
-        return self.derived(out) if self.derived is not None else out
+        return self.derived(out, params or {}) if self.derived is not None else out
 
     def sweep_checks(self, figure: Figure) -> list[list[Check]]:
         """The checks of every set of givens of a sweep (a figure replayed with arrays of givens), set by set.
@@ -186,7 +188,7 @@ class Construction:
             if key in values:
                 values[key] = positive(key, value)
         if self.derived is not None:  # what follows from the new givens by the book's formula
-            values = self.derived(values)
+            values = self.derived(values, protocol.params)
         self.validate(values)
         return Figure(protocol, protocol.replay(values), self.check, self)
 

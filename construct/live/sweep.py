@@ -65,6 +65,9 @@ class LiveGiven:
     rod: str = ""
 
 
+#: Givens that follow from the moving one (Construction.derived) and that the page's texts write: their name
+#: -> what precedes the number in the title and the givens (two-cranks: "Schwankungen 8fach vergrößert").
+DERIVED_WRITTEN: dict[str, tuple[str, ...]] = {"magnify": ("Schwankungen ", "magnified ")}
 #: The rod ratio, as the books write it: L/r = 5, r/L = 1/5 (Anhang II, Baumann), r/l = 1/5 (§ 146).
 ROD = LiveGiven("rod_ratio", "L/r", ROD_RATIO, "", ("L/r = ", "r/L = 1/", "r/l = 1/"), "L = {v} r")
 #: Baumann's κ = P/B_max (Fig. 26/27: 8 and 2): the slider spans two decades about them, from an engine whose
@@ -125,12 +128,12 @@ def reach(construction: Construction, figure: Figure, given: str, domain: Domain
     >>> reach(c, fig, "rod_ratio", ROD_RATIO, 5.0).low, reach(get("crank"), get("crank").figure(), "rod_ratio", ROD_RATIO, 5.0).low
     (2.29, 1.05)
     """
-    givens = dict(figure.replay.givens)
+    givens, params = dict(figure.replay.givens), figure.protocol.params
 
     def holds(v: float) -> bool:
         try:
             construction.validate({k: (float(x[0]) if isinstance(x, np.ndarray) else x)
-                                   for k, x in construction.given_sweep(givens, given, [v]).items()})
+                                   for k, x in construction.given_sweep(givens, given, [v], params).items()})
         except InvalidParameter:
             return False
         return True
@@ -258,6 +261,9 @@ class LiveSweep:
     live: LiveGiven | None = None
     #: The areas the page draws from the graphs that bound them (:func:`construct.live.measure.areas_of`).
     areas: list[list[str]] = field(default_factory=list)
+    #: Givens that follow from this one and that the texts write (DERIVED_WRITTEN): name -> value at each grid
+    #: value (a step function, the two cranks' magnification: the page writes the nearer grid value's).
+    derived: dict[str, list[float]] = field(default_factory=dict)
 
     def nearest_columns(self) -> np.ndarray:
         """The columns taken from the nearer grid value: large-arc flags and the snapped marks."""
@@ -267,7 +273,8 @@ class LiveSweep:
 
 def _frames(construction: Construction, figure: Figure, given: str, values: np.ndarray, measure) -> list[tuple]:
     """(keys, numbers, fit, texts) of the player's figure at every value, from one sweep of the protocol."""
-    replay = figure.protocol.replay(construction.given_sweep(dict(figure.replay.givens), given, values))
+    replay = figure.protocol.replay(construction.given_sweep(dict(figure.replay.givens), given, values,
+                                                             figure.protocol.params))
     return measure.frames(figure.protocol, replay, len(values)), replay
 
 
@@ -385,6 +392,9 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
                      # the fit travels as float32: the columns are checked against the drawing through it
                      fit=np.asarray([data[u][2] for u in us], dtype=np.float32).astype(float),
                      label_px=float(style.label_size), live=live, areas=measure.areas)
+    swept = construction.given_sweep(dict(figure.replay.givens), given, grid, figure.protocol.params)
+    live.derived = {k: np.broadcast_to(swept[k], grid.shape).astype(float).tolist() for k in DERIVED_WRITTEN
+                    if k in swept and k != given and np.ptp(np.broadcast_to(swept[k], grid.shape)) > 0}
     picks = check_picks(grid)
     live.checks = dict(zip(picks, _checks(construction, figure, given, grid[picks])))
     # and at the built value (the book's): a teacher who returns there sees its own checks
@@ -395,7 +405,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
 
 def _checks(construction: Construction, figure: Figure, given: str, grid: np.ndarray) -> list[list[list[Any]]]:
     """The construction's checks at every value of *grid*, from one sweep (:meth:`Construction.sweep_checks`)."""
-    swept = construction.given_sweep(dict(figure.replay.givens), given, grid)
+    swept = construction.given_sweep(dict(figure.replay.givens), given, grid, figure.protocol.params)
     sweep = Figure(figure.protocol, figure.protocol.replay(swept), construction.check, construction)
     return [[[c.name, c.measured, c.expected, c.error, c.tolerance, bool(c.ok)] for c in row]
             for row in construction.sweep_checks(sweep)]

@@ -24,7 +24,7 @@ from typing import Any
 import numpy as np
 
 from ..render.wire import ARC, LENGTH, LOG, PX, X, Y, as_drawn, as_stored, deflated, radii
-from .sweep import QUANTUM_PX, LiveSweep
+from .sweep import DERIVED_WRITTEN, QUANTUM_PX, LiveSweep
 
 __all__ = ["ROW_PX", "STORED_PX", "column_kinds", "column_knots", "encode", "live_data"]
 
@@ -228,6 +228,8 @@ def live_data(live: LiveSweep) -> dict[str, Any]:
             **({"unit": given.unit, "written": list(given.written), "rod": given.rod} if given is not None else {}),
             "initial": live.initial, "rows": int(live.drawn.shape[0]), "cols": int(live.drawn.shape[1]),
             "label_px": live.label_px, **({"areas": live.areas} if live.areas else {}),
+            **({"derived": {k: {"values": v, "written": list(DERIVED_WRITTEN[k])} for k, v in live.derived.items()}}
+               if live.derived else {}),
             **({"readings": live.readings} if live.readings else {}),
             **encode(live), "bound": round(live.bound + QUANTUM_PX / 2, 3),
             "meta_z": deflated(meta), "checks_z": deflated(_check_table(live))}

@@ -600,9 +600,19 @@ LIVE_SCRIPT = r"""
     forms[L.given] = (L.written && L.written.length ? L.written : [L.symbol + " = "])
       .map(function(f){ return [f, new RegExp(f.replace(/[.*+?^${}()|[\]\\/]/g, "\\$&") + NUM, "g")]; });
   });
-  document.querySelectorAll("header h1, header h1 *").forEach(function(e){
+  document.querySelectorAll("header h1, header h1 *, #givens th, #givens td").forEach(function(e){
     e.childNodes.forEach(function(t){
-      if (t.nodeType === 3) titled.push({n: t, text: t.nodeValue, en: !!(t.parentNode.closest && t.parentNode.closest(".en"))});
+      if (t.nodeType === 3) titled.push({n: t, text: t.nodeValue, en: !!(t.parentNode.closest && t.parentNode.closest(".en")),
+                                         head: !!(t.parentNode.closest && t.parentNode.closest("header"))});
+    });
+  });
+  // givens that follow from the moving one and that the texts write (live/sweep.py DERIVED_WRITTEN): the two
+  // cranks' magnification, chosen again at every rod
+  var derived = [];
+  LIST.forEach(function(L){
+    Object.keys(L.derived || {}).forEach(function(k){
+      derived.push({L: L, values: L.derived[k].values, forms: L.derived[k].written.map(function(f){
+        return [f, new RegExp(f.replace(/[.*+?^${}()|[\]\\/]/g, "\\$&") + NUM, "g")]; })});
     });
   });
   var cells = [];  // the givens table's cells that name a given: [cell, given, inverse, as written]
@@ -614,11 +624,19 @@ LIVE_SCRIPT = r"""
     });
   });
   function retitle(){
+    var now = derived.map(function(d){  // its value at the nearer grid value of its given's shown value
+      var W = sweeps.filter(function(w){ return w.L === d.L; })[0], ct = cell(d.L, Math.log10(W.value));
+      return d.values[ct[1] < 0.5 ? ct[0] : Math.min(ct[0] + 1, d.values.length - 1)];
+    });
     titled.forEach(function(t){
       var text = t.text;
-      sweeps.forEach(function(w){
+      if (t.head) sweeps.forEach(function(w){
         var shown = t.en ? String(Number(w.value.toPrecision(4))) : book(w.value);
         forms[w.L.given].forEach(function(f){ f[1].lastIndex = 0; text = text.replace(f[1], f[0] + shown); });
+      });
+      derived.forEach(function(d, j){
+        d.forms.forEach(function(f){ f[1].lastIndex = 0; text = text.replace(f[1], function(m){
+          return f[0] + (m.indexOf(",") >= 0 || !t.en && m.indexOf(".") < 0 ? book(now[j]) : String(Number(now[j].toPrecision(4)))); }); });
       });
       if (t.n.nodeValue !== text) t.n.nodeValue = text;
     });

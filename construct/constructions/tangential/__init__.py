@@ -120,7 +120,7 @@ TANGENTIAL = register(Construction(
     methods=DIVISION_NAMES,
     plate=tangential_plate,
     validator=validate_tangential,
-    derived=derived_givens,
+    derived=lambda g, params: derived_givens(g),
     help={
         "cranks": "tangential-pressure --revolution: crank offsets in degrees ahead of the first, e.g. 0,90 "
                   "(multiples of 180/parts; default: the machine's)",

@@ -73,7 +73,8 @@ ROD = LiveGiven("rod_ratio", "L/r", ROD_RATIO, "", ("L/r = ", "r/L = 1/", "r/l =
 #: Baumann's κ = P/B_max (Fig. 26/27: 8 and 2): the slider spans two decades about them, from an engine whose
 #: masses press at the dead centre as hard as its steam (κ = 1) to one where they hardly count (100); the
 #: construction holds from 0.1 to 10,000 (KAPPA_RANGE), a replay takes any of those.
-KAPPA = LiveGiven("kappa", "κ", Domain(1.0, 100.0, KAPPA_RANGE.why, KAPPA_RANGE.advice), "", ("κ = P/Bmax = ", "κ = "))
+KAPPA = LiveGiven("kappa", "κ", Domain(1.0, 100.0, KAPPA_RANGE.why, KAPPA_RANGE.advice), "",
+                  ("κ = P/Bₘₐₓ = ", "κ = P/Bmax = ", "κ = "))
 #: A cell is split while linear interpolation misses the exact drawing by more than this (px).
 REFINE_PX = 0.4
 #: The refinement blends coordinates rounded to multiples of this (px).
@@ -82,8 +83,6 @@ QUANTUM_PX = 0.05
 SNAP_AT_MOST = 3
 #: A round of the refinement draws the midpoints of a cell's halves (and of theirs, ...) this many levels ahead.
 AHEAD = 1
-#: ... and this many, where each is drawn at the cell's midpoint as at one of its ends (a jump, plainly).
-SNAP_AT_ONCE = 12
 #: A mark whose miss at a cell's midpoint stays above this share of its miss in the cell split into it, twice
 #: running, jumps there (a smooth mark's miss falls to a quarter at each halving, a kink's to a half).
 JUMPING = 0.85
@@ -201,19 +200,6 @@ def _ahead(a: float, b: float, depth: int) -> list[float]:
         return []
     m = (a + b) / 2
     return [(a + m) / 2, (m + b) / 2] + _ahead(a, m, depth - 1) + _ahead(m, b, depth - 1)
-
-
-def _at_an_end(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray, culprits: dict[int, float]) -> bool:
-    """Is each culprit (a mark, not the figure or a view) drawn at the midpoint as at one end of the cell
-    (within REFINE_PX) while it misses the blend by more than JUMP_PX: a jump, not a bend?"""
-    owner = _key_columns(tuple(keys))[0]
-    for c, e in culprits.items():
-        if keys[c][0] in ("figure", "#zoom") or e <= JUMP_PX:
-            return False
-        at = owner == c
-        if min(np.abs(exact[at] - na[at]).max(), np.abs(exact[at] - nb[at]).max()) > REFINE_PX:
-            return False
-    return True
 
 
 def _columns(keys: list[tuple[str, str, str]], pick) -> np.ndarray:
@@ -335,12 +321,6 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
                 err, culprits = _midpoint_error(ka, na, nb, fm[1], snap)
             if err <= REFINE_PX:
                 bound = max(bound, err)
-                continue
-            if 0 < len(culprits) <= SNAP_AT_ONCE and -1 not in culprits and _at_an_end(ka, na, nb, fm[1], culprits):
-                # marks drawn at the midpoint as at one end of the cell and far from the blend: they jump inside
-                # it (an arc round nearly all its circle leaves out the other of two gaps of nearly one size: a
-                # fresh replay jumps there as well), drawn from the nearer grid value everywhere
-                snap.update(culprits)
                 continue
             if 0 < len(culprits) <= SNAP_AT_MOST and -1 not in culprits and all(ka[c][0] != "figure" and
                     c in parent and c in grand and e > JUMPING * parent[c] and parent[c] > JUMPING * grand[c]

@@ -412,15 +412,28 @@ LIVE_SCRIPT = r"""
     if (e.tagName === "line") return {line: [e.x1.baseVal.value, e.y1.baseVal.value, e.x2.baseVal.value, e.y2.baseVal.value]};
     var d = e.getAttribute("d"), n = (d.match(NUMS) || []).map(Number), xs = [], ys = [], i, k;
     if (d.indexOf("C") < 0) { for (i = 0; i + 1 < n.length; i += 2) { xs.push(n[i]); ys.push(n[i + 1]); } }
-    else {  // a French curve drawn through its points: each piece in four, as the area's 64 to a Bézier segment
-      xs.push(n[0]); ys.push(n[1]);
-      for (i = 2; i + 5 < n.length; i += 6) {
-        var x0 = xs[xs.length - 1], y0 = ys[ys.length - 1];
-        for (k = 1; k <= 4; k++) {
-          var t = k / 4, s = 1 - t, a = s * s * s, b = 3 * s * s * t, c = 3 * s * t * t, w = t * t * t;
-          xs.push(a * x0 + b * n[i] + c * n[i + 2] + w * n[i + 4]); ys.push(a * y0 + b * n[i + 1] + c * n[i + 3] + w * n[i + 5]);
+    else {
+      // a French curve: drawn through its points at sixteen to a Bézier segment (BezierCurve.curve_points), each
+      // segment a cubic in its parameter, so that four of them give it whole: the area takes 64 to a segment
+      // (kernel/areas.py _graph), read off that cubic (Lagrange, through the four nearest points of the segment)
+      var P = [[n[0], n[1]]];
+      for (i = 2; i + 5 < n.length; i += 6) P.push([n[i + 4], n[i + 5]]);
+      for (var seg = 0; seg + 16 < P.length; seg += 16) {
+        for (k = 0; k < 16; k++) {
+          var j0 = seg + Math.min(Math.max(k - 1, 0), 12);  // four nodes j0 .. j0 + 3 inside the segment
+          xs.push(P[seg + k][0]); ys.push(P[seg + k][1]);
+          for (var q = 1; q < 4; q++) {
+            var t = seg + k + q / 4 - j0, lx = 0, ly = 0;
+            for (var a = 0; a < 4; a++) {
+              var w = 1;
+              for (var b = 0; b < 4; b++) if (b !== a) w *= (t - b) / (a - b);
+              lx += w * P[j0 + a][0]; ly += w * P[j0 + a][1];
+            }
+            xs.push(lx); ys.push(ly);
+          }
         }
       }
+      xs.push(P[P.length - 1][0]); ys.push(P[P.length - 1][1]);
     }
     var order = xs.map(function(_, j){ return j; }).sort(function(p, q){ return xs[p] - xs[q] || p - q; });
     return {xs: order.map(function(j){ return xs[j]; }), ys: order.map(function(j){ return ys[j]; })};

@@ -20,9 +20,15 @@ def test_readme_starts_with_the_two_commands():
 
 
 def test_ci_runs_the_readmes_test_command_verbatim():
+    """.ci/run runs the README's test command as written and nothing the README does not name: after it, the
+    speed guard, which the README names beside the command."""
     command = shell_blocks()[1].strip()
     lines = [l for l in (ROOT / ".ci" / "run").read_text().splitlines() if l and not l.startswith("#")]
     assert command in lines
+    after = lines[lines.index(command) + 1:]
+    assert after == ["construct bench --guard"], after
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    assert all(f"`{line}`" in text[:text.index("## ")] for line in after)  # named where the command is
 
 
 def test_readme_library_example():

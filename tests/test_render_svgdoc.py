@@ -1,9 +1,10 @@
 """svgwrite writes every SVG the project emits.
 
-Two checks that can fail: no module but the writer builds SVG markup from
+Three checks that can fail: no module but the writer builds SVG markup from
 strings (a string constant in the code that opens an SVG element is a
-hand-made element), and every SVG a replay writes carries the attributes
-svgwrite's ``Drawing`` always writes and our old string templates never did.
+hand-made element), every SVG a replay writes carries the attributes
+svgwrite's ``Drawing`` always writes and our old string templates never did,
+and the writer's serialiser writes what ElementTree's ``tostring`` writes.
 """
 
 from __future__ import annotations
@@ -63,3 +64,46 @@ def test_every_svg_of_a_replay_is_written_by_svgwrite(tmp_path):
         assert svgdoc.MARKER in text and 'baseProfile="full"' in text, p
     page = (tmp_path / "player.html").read_text(encoding="utf-8")
     assert page.count(svgdoc.MARKER) == 1  # the player's one inline SVG
+
+
+def test_the_writer_writes_what_elementtree_writes(tmp_path, monkeypatch):
+    """The serialiser (shared elements written once) gives ElementTree's tostring byte for byte: for every
+    document of a replay in each style, and for text and attributes that need escaping, CDATA, and an
+    element shared by two documents."""
+    import xml.etree.ElementTree as ET
+
+    from construct.render.styles import STYLES
+
+    def elementtree(w, dwg):
+        return ET.tostring(w.svg_element(dwg), encoding="unicode")
+
+    w = svgdoc.Writer()
+    f = w.factory
+    shared = w.frozen(f.text('a < b & "c"\n\td', x=["1"], y=["2"], id="s0001-t", class_="lb"))
+    docs = []
+    for k in range(2):
+        dwg = w.drawing(size=("10", "5"))
+        g = f.g(id=f"g{k}", class_='x "quoted" & <odd>\r')
+        g.add(shared)
+        dwg.add(g)
+        dwg.add(f.style("circle > .a { fill: red } & more"))
+        docs.append(dwg)
+    for dwg in docs:
+        assert w.markup(dwg) == elementtree(w, dwg)
+    assert "<![CDATA[" in w.markup(docs[0]) and "&amp;" in w.markup(docs[1]) and "&#13;" in w.markup(docs[1])
+
+    checked = []
+    real = svgdoc.Writer.markup
+
+    def both(self, dwg):
+        mine = real(self, dwg)
+        assert mine == elementtree(self, dwg)
+        checked.append(len(mine))
+        return mine
+
+    monkeypatch.setattr(svgdoc.Writer, "markup", both)
+    c = get("crank")
+    fig = c.figure(parts=6)
+    for style in sorted(STYLES):
+        write_replay(c, fig, tmp_path / style, style=style, frames="all")
+    assert len(checked) > 3 * 10

@@ -513,7 +513,11 @@ def line_circle(line: Line, circle: Circle, xp: Any = SCALAR) -> tuple[Point, Po
     if xp.any(bad):
         raise NoIntersection(f"{_describe(line)} and {_describe(circle)} do not meet{sets_where(bad)}")
     # (r - d)(r + d) rather than r^2 - d^2: no cancellation when nearly tangent.
-    h = xp.where(gap <= tol, 0.0, xp.sqrt(xp.maximum(gap, 0.0) * (r + delta)))
+    touch = gap <= tol
+    if xp.any(touch):
+        h = xp.where(touch, 0.0, xp.sqrt(xp.maximum(gap, 0.0) * (r + delta)))
+    else:  # no set touches (a sweep's usual case): the general formula alone
+        h = xp.sqrt(gap * (r + delta))
     return raw_point(fx - h * ux, fy - h * uy), raw_point(fx + h * ux, fy + h * uy)
 
 
@@ -580,11 +584,16 @@ def circle_circle(c1: Circle, c2: Circle, xp: Any = SCALAR) -> tuple[Point, Poin
     if xp.any(bad):
         raise NoIntersection(f"{_describe(c1)} and {_describe(c2)} do not meet{sets_where(bad)}")
     ux, uy = dx / d, dy / d
-    # Touching from outside: the point r1 along the centre line; from inside: r1 towards the smaller.
-    a_touch_inner = xp.where(r1 >= r2, r1, -r1)
-    a = xp.where(outer <= tol, r1, xp.where(inner <= tol, a_touch_inner, 0.5 * (d + (r1 - r2) * (r1 + r2) / d)))
-    prod = xp.maximum(outer, 0.0) * (r1 + r2 + d) * xp.maximum(inner, 0.0) * (d + xp.abs(r1 - r2))
-    h = xp.where((outer <= tol) | (inner <= tol), 0.0, xp.sqrt(prod) / (2.0 * d))
+    touch_out, touch_in = outer <= tol, inner <= tol
+    if not xp.any(touch_out | touch_in):  # no set touches (a sweep's usual case): the general formulas alone
+        a = 0.5 * (d + (r1 - r2) * (r1 + r2) / d)
+        h = xp.sqrt(outer * (r1 + r2 + d) * inner * (d + xp.abs(r1 - r2))) / (2.0 * d)
+    else:
+        # Touching from outside: the point r1 along the centre line; from inside: r1 towards the smaller.
+        a_touch_inner = xp.where(r1 >= r2, r1, -r1)
+        a = xp.where(touch_out, r1, xp.where(touch_in, a_touch_inner, 0.5 * (d + (r1 - r2) * (r1 + r2) / d)))
+        prod = xp.maximum(outer, 0.0) * (r1 + r2 + d) * xp.maximum(inner, 0.0) * (d + xp.abs(r1 - r2))
+        h = xp.where(touch_out | touch_in, 0.0, xp.sqrt(prod) / (2.0 * d))
     mx, my = x1 + a * ux, y1 + a * uy
     return raw_point(mx + h * uy, my - h * ux), raw_point(mx - h * uy, my + h * ux)
 

@@ -25,27 +25,23 @@ from __future__ import annotations
 
 import functools
 import json
-import math
 import numbers
-import operator
 import os
-from dataclasses import dataclass
 from types import MappingProxyType
+from dataclasses import dataclass
 from collections.abc import Mapping
-from typing import Any, Callable, NamedTuple
+from typing import Any
 
-import numpy as np
-
-from .areas import Area
-from .curves import BezierCurve, Polyline
-from .errors import (ConstructError, InvalidParameter, MissingGiven, ProtocolFormatError, RuleError, StepError,
-                     UnknownObject, WrongInput)
-from .geometry import SCALAR, Circle, Length, Line, Point, Sweep, ArrayMath, take
-from .ops import ACCEPTS, OPS, elementwise
+from .errors import InvalidParameter, ProtocolFormatError, StepError
+from .geometry import SCALAR
+# A step (step.py) and the evaluation path (replay.py) live in modules of their own; their names stay importable
+# from here, where every caller has found them.
+from .step import EXACT, GIVEN, Caption, Provenance, Step, jsonable
+from .replay import (STEP_FAILURES, CompiledStep, Program, Replay, check_kinds, compile_step, loop_entry,
+                     object_json, run_step, step_failure, sweep_givens)
 from .protocol_file import (KNOWN_FORMATS, PROTOCOL_FILE_FORMAT, PROTOCOL_FORMAT, PROVENANCE_KINDS, ROLES, TOOLS,
                             check_format, frozen, parse_protocol_json, read_protocol_bytes, step_fields)
 from .numeric import as_float, shown
-from .rules import as_rule
 
 __all__ = [
     "PROVENANCE_KINDS",
@@ -55,6 +51,8 @@ __all__ = [
     "Caption",
     "Provenance",
     "Step",
+    "EXACT",
+    "GIVEN",
     "Protocol",
     "Replay",
     "run_step",
@@ -65,479 +63,6 @@ __all__ = [
 ]
 
 # PROVENANCE_KINDS, TOOLS, ROLES and the formats are defined with the file checks (protocol_file).
-
-
-@dataclass(frozen=True, slots=True)
-class Caption:
-    """What a step does, in the books' German and in English."""
-
-    de: str
-    en: str
-
-    @property
-    def brief(self) -> str:
-        """The English caption as an error message quotes it: on one line, at most 120 characters.
-
-        >>> Caption("", "a\\nvery " + "long " * 40).brief[-12:]
-        'ong long lo…'
-        """
-        text = " ".join(self.en.split())
-        return text if len(text) <= 120 else text[:119] + "…"
-
-
-@dataclass(frozen=True, slots=True)
-class Provenance:
-    """How trustworthy an object is.
-
-    ``exact`` objects come from Euclidean steps only; ``approximate`` ones from
-    a Euclidean construction of an approximate result (``method`` names it,
-    ``error`` states its known error, in radians for angles); ``neusis`` from
-    the marked ruler; ``trial`` from dividers set by trial to a tolerance.
-    """
-
-    kind: str
-    method: str | None = None
-    error: float | None = None
-
-    def __post_init__(self) -> None:
-        if self.kind not in PROVENANCE_KINDS:
-            raise InvalidParameter(f"provenance kind must be one of {PROVENANCE_KINDS}, got {self.kind!r}")
-
-    def combine(self, other: "Provenance") -> "Provenance":
-        """The provenance of an object made from two others: the weaker one wins."""
-        order = {"given": 0, "exact": 1, "approximate": 2, "neusis": 2, "trial": 3}
-        if order[other.kind] > order[self.kind]:
-            return other
-        if order[other.kind] == order[self.kind] and self.kind == "approximate" and other.error is not None:
-            err = max(abs(self.error or 0.0), abs(other.error))
-            return Provenance(self.kind, self.method or other.method, err)
-        return self
-
-
-EXACT = Provenance("exact")
-GIVEN = Provenance("given")
-
-
-@dataclass(frozen=True, slots=True)
-class Step:
-    """One instrument use: data only, evaluated by the op table entry ``OPS[op]``."""
-
-    index: int
-    tool: str
-    op: str
-    inputs: tuple[str, ...]
-    outputs: tuple[str, ...]
-    params: Mapping[str, Any]
-    caption: Caption
-    provenance: Provenance = EXACT
-    group: tuple[str, ...] = ()
-    #: "result" objects are drawn heavy (crank circle, piston positions),
-    #: "construction" ones thin, "auxiliary" ones may be hidden in a plate.
-    role: str = "construction"
-    #: Letters to print beside output objects in the figure: (name, label).
-    labels: tuple[tuple[str, str], ...] = ()
-
-    def as_dict(self) -> dict[str, Any]:
-        d: dict[str, Any] = {
-            "index": self.index,
-            "tool": self.tool,
-            "op": self.op,
-            "inputs": list(self.inputs),
-            "outputs": list(self.outputs),
-            "params": jsonable(dict(self.params)),
-            "caption": {"de": self.caption.de, "en": self.caption.en},
-            "provenance": {
-                "kind": self.provenance.kind,
-                "method": self.provenance.method,
-                "error": self.provenance.error,
-            },
-            "group": list(self.group),
-            "role": self.role,
-        }
-        if self.labels:
-            d["labels"] = {name: text for name, text in self.labels}
-        return d
-
-    def compact_dict(self, group_ids: Mapping[tuple[str, ...], int]) -> dict[str, Any]:
-        """As :meth:`as_dict` for the protocol file: defaults left out, the group path as its number."""
-        d = self.as_dict()
-        if not d["params"]:
-            del d["params"]
-        if self.provenance == EXACT:
-            del d["provenance"]
-        else:
-            d["provenance"] = {k: v for k, v in d["provenance"].items() if v is not None}
-        if self.role == "construction":
-            del d["role"]
-        if self.group:
-            d["group"] = group_ids[self.group]
-        else:
-            del d["group"]
-        return d
-
-    def __reduce__(self):
-        return (Step.from_dict, (self.as_dict(),))
-
-    @classmethod
-    def from_dict(cls, d: Mapping[str, Any]) -> "Step":
-        """A step from its dict form (:meth:`as_dict`), every field checked (ProtocolFormatError names it)."""
-        return cls._from_fields(step_fields(d, None))
-
-    @classmethod
-    def _from_fields(cls, f: Mapping[str, Any]) -> "Step":
-        kind, method, error = f["provenance"]
-        return cls(index=f["index"], tool=f["tool"], op=f["op"], inputs=f["inputs"], outputs=f["outputs"],
-                   params=f["params"], caption=Caption(*f["caption"]), provenance=Provenance(kind, method, error),
-                   group=f["group"], role=f["role"], labels=f["labels"])
-
-
-def jsonable(value: Any) -> Any:
-    as_json = getattr(value, "as_json", None)
-    if as_json is not None:  # a Rule
-        return as_json()
-    if isinstance(value, (tuple, list)):
-        return [jsonable(v) for v in value]
-    if isinstance(value, Mapping):
-        return {str(k): jsonable(v) for k, v in value.items()}
-    return value
-
-
-
-
-# --------------------------------------------------------------------------
-# The one evaluation path.  A step is compiled once into an entry
-# (function, input slots, output slots, params, rule slots, step); building
-# and replaying both run entries through run_step / the replay loop below,
-# which differ only in where they keep the objects (a dict by name while
-# building, a list by slot while replaying).
-# --------------------------------------------------------------------------
-
-
-class CompiledStep(NamedTuple):
-    """A step ready to run: its op's function, where its inputs and outputs are kept, its parsed parameters.
-
-    *ins*, *outs* and *refs* (the points a rule names) are object names while building and list slots while
-    replaying.  A tuple underneath, so that the replay loop unpacks it at tuple speed.
-    """
-
-    fn: Callable[..., tuple]
-    ins: tuple
-    outs: tuple
-    params: dict[str, Any]
-    refs: tuple
-    op: Any  # the op table's entry (construct.kernel.ops.Op)
-    step: Step
-
-
-class Program(NamedTuple):
-    """A protocol compiled for replay: one entry per step, the object name of every list slot, and the loop's
-    own form of each entry (:func:`_loop_entry`)."""
-
-    entries: tuple[CompiledStep, ...]
-    names: tuple[str, ...]
-    loop: tuple[tuple, ...]
-
-
-def _loop_entry(entry: CompiledStep) -> tuple:
-    """What the scalar replay loop needs of an entry, each part ready to run in C: (function, inputs of the
-    environment, first and end slot of the outputs, parameters, points of the rule).
-
-    Inputs and rule points are gathered by ``operator.itemgetter`` -- a tuple of several slots, a slice for one
-    or none (a list) -- instead of a comprehension per step (a call of its own in this Python); the outputs are
-    consecutive slots (made so by Protocol.program), set by one slice assignment.
-    """
-    def getter(slots: tuple) -> Callable[[list], Any]:
-        if len(slots) > 1:
-            return operator.itemgetter(*slots)
-        first = slots[0] if slots else 0
-        return operator.itemgetter(slice(first, first + len(slots)))
-
-    first, end = (entry.outs[0], entry.outs[-1] + 1) if entry.outs else (0, 0)
-    return (entry.fn, getter(entry.ins), first, end, entry.params, getter(entry.refs))
-
-
-def compile_step(step: Step, slot: Mapping[str, Any] | None = None) -> CompiledStep:
-    """The entry for *step*; *slot* maps names to list slots (None: objects are kept by name).
-
-    Raises ProtocolFormatError for an unknown operation, WrongInput for
-    parameters the op does not take (or of the wrong kind), UnknownObject for a
-    name no earlier step made and RuleError for a malformed rule.
-    """
-    op = OPS.get(step.op)
-    if op is None:
-        raise ProtocolFormatError(f"step {step.index}: unknown operation {step.op!r}; known: {', '.join(sorted(OPS))}")
-
-    def unknown(name: str) -> UnknownObject:
-        return UnknownObject(f"step {step.index} ({step.tool}: {step.caption.brief}) uses {name!r} before any step made it",
-                             name=name, step_index=step.index, tool=step.tool, op=step.op)
-
-    if slot is not None:
-        missing = [n for n in step.inputs if n not in slot]
-        if missing:
-            raise unknown(missing[0])
-    problem = op.check_params(step.params)
-    if problem:
-        raise WrongInput(f"step {step.index} ({step.tool}: {step.caption.brief}): {step.op} {problem}",
-                         step_index=step.index, tool=step.tool, op=step.op)
-    params = dict(step.params)
-    refs: tuple[str, ...] = ()
-    if op.rule:
-        try:
-            rule = as_rule(params.get("rule"))
-        except RuleError as exc:
-            raise exc.at_step(step.index, step.tool, step.op, step.caption.brief) from None
-        params["rule"] = rule
-        refs = rule.refs
-    if slot is None:  # objects are kept by name
-        ins, ref_slots = tuple(step.inputs), refs
-    else:
-        missing = [n for n in refs if n not in slot]
-        if missing:
-            raise unknown(missing[0])
-        ins, ref_slots = tuple(slot[n] for n in step.inputs), tuple(slot[n] for n in refs)
-    return CompiledStep(op.fn, ins, step.outputs, params, ref_slots, op, step)
-
-
-def check_kinds(step: Step, op: Any, refs: tuple[str, ...], kinds: dict[str, str]) -> None:
-    """Does *step* fit its op's declared inputs and outputs, given the kinds of the objects made before it?
-
-    Records the kinds of its outputs in *kinds*.  This is the load-time check of a
-    protocol (a Builder checks the evaluated objects themselves as it goes).
-    """
-    def wrong(problem: str) -> WrongInput:
-        return WrongInput(f"step {step.index} ({step.tool}: {step.caption.brief}): {step.op} {problem}",
-                          step_index=step.index, tool=step.tool, op=step.op)
-
-    want = op.input_kinds(step.params, len(step.inputs))
-    if isinstance(want, str):
-        raise wrong(want)
-    for i, (name, kind) in enumerate(zip(step.inputs, want), start=1):
-        if kinds[name] not in ACCEPTS[kind]:
-            raise wrong(f"input {i} must be a {kind}, {name!r} is a {kinds[name]}")
-    for name in refs:
-        if kinds[name] != "point":
-            raise wrong(f"rule names {name!r}, a {kinds[name]}; a rule names points")
-    made = op.output_kinds(step.params)
-    if len(made) != len(step.outputs):
-        raise wrong(f"makes {len(made)} object{'s' if len(made) != 1 else ''} ({', '.join(made)}), "
-                    f"the step names {len(step.outputs)}: {', '.join(step.outputs) or 'none'}")
-    for name, kind in zip(step.outputs, made):
-        kinds[name] = kind
-
-
-def step_failure(step: Step, exc: BaseException) -> ConstructError:
-    """The error a failing step raises, the same while building and while replaying."""
-    where = (step.index, step.tool, step.op, step.caption.brief)
-    if isinstance(exc, StepError):
-        return exc.at_step(*where)
-    if isinstance(exc, KeyError):
-        return MissingGiven(f"step {step.index} ({step.tool}: {step.caption.brief}) needs the given {exc.args[0]!r}",
-                            step_index=step.index, tool=step.tool, op=step.op)
-    if isinstance(exc, (TypeError, AttributeError, ValueError, IndexError)):
-        return WrongInput(f"step {step.index} ({step.tool}: {step.caption.brief}): operation {step.op!r} "
-                          f"cannot use its inputs {', '.join(step.inputs)}: {exc}",
-                          step_index=step.index, tool=step.tool, op=step.op)
-    if isinstance(exc, ConstructError):
-        return StepError(f"step {step.index} ({step.tool}: {step.caption.brief}): {exc}",
-                         step_index=step.index, tool=step.tool, op=step.op)
-    raise exc
-
-
-#: What an op raises when its step cannot be carried out: turned into the step's error by step_failure.
-_STEP_FAILURES = (ConstructError, KeyError, TypeError, AttributeError, ValueError, IndexError)
-
-
-def run_step(entry: CompiledStep, env: Any, givens: Mapping[str, Any], xp: Any = SCALAR) -> tuple:
-    """Evaluate one compiled step on the objects in *env*; store and return its outputs."""
-    fn, ins, outs, params, refs, op, step = entry
-    if xp is not SCALAR and not op.vector:
-        fn = elementwise(fn)
-    try:
-        values = fn([env[k] for k in ins], params, givens, [env[k] for k in refs], xp)
-    except _STEP_FAILURES as exc:
-        raise step_failure(step, exc) from exc
-    for k, v in zip(outs, values):
-        env[k] = v
-    return values
-
-
-def sweep_givens(givens: Mapping[str, Any]) -> tuple[dict[str, Any], Any]:
-    """Givens as floats, or as equally long 1-d arrays when any is an array; and the namespace to use.
-
-    >>> g, xp = sweep_givens({"r": 1, "rod_ratio": [4.0, 5.0]})
-    >>> g["r"], g["rod_ratio"], xp.n
-    (1.0, array([4., 5.]), 2)
-    """
-    arrays = {k: _given_array(k, v) for k, v in givens.items() if isinstance(v, (np.ndarray, list, tuple))}
-    if not arrays:
-        return {k: _given_number(k, v) for k, v in givens.items()}, SCALAR
-    try:
-        shaped = np.broadcast_arrays(*arrays.values())
-    except ValueError as exc:
-        raise InvalidParameter(f"swept givens {', '.join(arrays)} do not broadcast together: {exc}") from None
-    out: dict[str, Any] = {k: _given_number(k, v) for k, v in givens.items() if k not in arrays}
-    for k, a in zip(arrays, shaped):
-        out[k] = np.ascontiguousarray(a, dtype=float).reshape(-1)
-    n = next(iter(out[k] for k in arrays)).size
-    if n == 0:
-        raise InvalidParameter("a sweep needs at least one set of givens")
-    return out, ArrayMath(n)
-
-
-def _shown(value: Any) -> str:
-    return shown(value)
-
-
-def _given_number(name: Any, value: Any) -> float:
-    """A given as a float: a finite real number, else an InvalidParameter naming it."""
-    if type(value) is float and math.isfinite(value):
-        return value
-    return as_float(value, f"the given {shown(name)}")
-
-
-def _given_array(name: Any, value: Any) -> Any:
-    """A swept given as a 1-d array of finite floats, else an InvalidParameter naming it."""
-    numeric = (value.dtype.kind in "fiu" if isinstance(value, np.ndarray)
-               else all(isinstance(v, numbers.Real) and not isinstance(v, bool) for v in value))
-    if not numeric:
-        raise InvalidParameter(f"the swept given {shown(name)} must be numbers, got {_shown(value)}")
-    if not isinstance(value, np.ndarray) or value.dtype.kind == "O":
-        for v in value:  # a huge int has no float: refused here, not by an OverflowError in numpy
-            as_float(v, f"the swept given {shown(name)}")
-    a = np.asarray(value, dtype=float)
-    if not np.isfinite(a).all():
-        raise InvalidParameter(f"the swept given {name!r} must be finite numbers, got {a[~np.isfinite(a)][:3].tolist()}")
-    return a
-
-
-class TakenSet(Mapping[str, Any]):
-    """The objects of set *i* of a sweep, each taken from the sweep's arrays when first looked up.
-
-    A check reads a few dozen of a figure's thousand objects: taking them all
-    for every set of a 1,000-set sweep was most of the time the sweep's
-    checks took.
-    """
-
-    __slots__ = ("_source", "_i", "_taken")
-
-    def __init__(self, source: Mapping[str, Any], i: int) -> None:
-        self._source, self._i, self._taken = source, i, {}
-
-    def __getitem__(self, name: str) -> Any:
-        try:
-            return self._taken[name]
-        except KeyError:
-            value = self._taken[name] = take(self._source[name], self._i)
-            return value
-
-    def __contains__(self, name: object) -> bool:
-        return name in self._source
-
-    def __iter__(self):
-        return iter(self._source)
-
-    def __len__(self) -> int:
-        return len(self._source)
-
-    def __reduce__(self):
-        return (dict, (list(self.items()),))
-
-
-class Replay(Mapping[str, Any]):
-    """The objects a replay made, by name (arrays of coordinates in a sweep)."""
-
-    __slots__ = ("protocol", "_objects", "_givens", "size", "elementwise")
-
-    def __init__(self, protocol: "Protocol", objects: dict[str, Any], givens: Mapping[str, Any], size: int = 0,
-                 elementwise: tuple[str, ...] = ()):
-        self.protocol = protocol
-        self._objects = objects
-        self._givens = dict(givens)
-        #: 0 for a plain replay, else the number of sets of givens swept.
-        self.size = size
-        #: The ops a sweep ran once per set of givens, having no array form (none of the op table's).
-        self.elementwise = elementwise
-
-    @property
-    def givens(self) -> Mapping[str, Any]:
-        return MappingProxyType(self._givens)
-
-    def __getitem__(self, name: str) -> Any:
-        try:
-            return self._objects[name]
-        except (KeyError, TypeError):  # TypeError: an unhashable "name"
-            raise UnknownObject(f"the replay of {self.protocol.construction!r} has no object {_shown(name)}",
-                                name=name) from None
-
-    def __contains__(self, name: object) -> bool:  # without building the error a miss in __getitem__ makes
-        try:
-            return name in self._objects
-        except TypeError:
-            return False
-
-    def get(self, name: object, default: Any = None) -> Any:
-        try:
-            return self._objects.get(name, default)
-        except TypeError:
-            return default
-
-    def __iter__(self):
-        return iter(self._objects)
-
-    def __len__(self) -> int:
-        return len(self._objects)
-
-    def __reduce__(self):
-        return (Replay, (self.protocol, self._objects, self._givens, self.size, self.elementwise))
-
-    def __repr__(self) -> str:
-        kind = f"sweep of {self.size}" if self.size else "replay"
-        return f"<Replay ({kind}) of {self.protocol.construction!r}: {len(self._objects)} objects>"
-
-    def take(self, i: int, *, whole: bool = False) -> "Replay":
-        """Set *i* of a sweep as a plain replay (a plain replay is its own only set).
-
-        Its objects are taken from the sweep's arrays as they are looked up (a check reads a few of them);
-        *whole* takes them all at once, for a reader of every object (a drawing reads each several times).
-        """
-        if isinstance(i, bool) or not isinstance(i, numbers.Integral):
-            raise InvalidParameter(f"a set of a sweep is taken by its number, got {_shown(i)}")
-        if not self.size:
-            return self
-        if not -self.size <= i < self.size:
-            raise InvalidParameter(f"sweep of {self.size} has no set {i}")
-        i %= self.size
-        objects = {n: take(v, i) for n, v in self._objects.items()} if whole else TakenSet(self._objects, i)
-        return Replay(self.protocol, objects, {k: take(v, i) for k, v in self._givens.items()})
-
-    def made_by(self) -> dict[str, Step]:
-        """The step that made each object."""
-        return {name: step for step in self.protocol.steps for name in step.outputs}
-
-    def objects_json(self) -> dict[str, Any]:
-        return {name: object_json(obj) for name, obj in self._objects.items()}
-
-
-def object_json(obj: Any) -> dict[str, Any]:
-    """A drawn object as plain JSON data (the ``objects`` table of protocol.json).
-
-    >>> object_json(Point(1.0, 2.0))
-    {'type': 'point', 'x': 1.0, 'y': 2.0}
-    """
-    if isinstance(obj, Point):
-        return {"type": "point", "x": obj.x, "y": obj.y}
-    if isinstance(obj, Line):
-        return {"type": "line", "x1": obj.p.x, "y1": obj.p.y, "x2": obj.q.x, "y2": obj.q.y}
-    if isinstance(obj, Circle):
-        return {"type": "circle", "cx": obj.center.x, "cy": obj.center.y, "r": obj.radius}
-    if isinstance(obj, Length):
-        return {"type": "length", "value": obj.value}
-    if isinstance(obj, (BezierCurve, Polyline, Area)):
-        return obj.as_json()
-    if isinstance(obj, float):
-        return {"type": "number", "value": obj}
-    raise ProtocolFormatError(f"not a drawable object: {obj!r}" if not isinstance(obj, Sweep)
-                              else "a sweep's objects have no JSON form; write a single replay")
 
 
 @dataclass(frozen=True)
@@ -574,7 +99,7 @@ class Protocol:
                 slot[name] = len(slot)
                 outs.append(slot[name])
             entries.append(entry._replace(outs=tuple(outs)))
-        return Program(tuple(entries), tuple(slot), tuple(_loop_entry(e) for e in entries))
+        return Program(tuple(entries), tuple(slot), tuple(loop_entry(e) for e in entries))
 
     def replay(self, givens: Mapping[str, Any] | None = None, *, upto: int | None = None) -> Replay:
         """Evaluate the steps (all, or 1..upto) with *givens*; return the objects by name.
@@ -583,9 +108,9 @@ class Protocol:
         per set of givens in every coordinate.
         """
         if givens is not None and not isinstance(givens, Mapping):
-            raise InvalidParameter(f"givens are a mapping of names to numbers, got {_shown(givens)}")
+            raise InvalidParameter(f"givens are a mapping of names to numbers, got {shown(givens)}")
         if upto is not None and (isinstance(upto, bool) or not isinstance(upto, numbers.Integral)):
-            raise InvalidParameter(f"upto is a step number, got {_shown(upto)}")
+            raise InvalidParameter(f"upto is a step number, got {shown(upto)}")
         givens, xp = sweep_givens(dict(self.params.get("givens", {}) if givens is None else givens))
         entries, names, loop = self.program
         env: list[Any] = [None] * len(names)
@@ -597,7 +122,7 @@ class Protocol:
             try:
                 for fn, ins, first, end, params, refs in loop[:stop] if upto is not None else loop:
                     env[first:end] = fn(ins(env), params, givens, refs(env), SCALAR)
-            except _STEP_FAILURES as exc:
+            except STEP_FAILURES as exc:
                 # the failing step is the first whose outputs are not made (every step makes at least one)
                 failed = next(e for e in entries if env[e.outs[0]] is None)
                 raise step_failure(failed.step, exc) from exc
@@ -628,7 +153,8 @@ class Protocol:
         return [(k, a, b) for k, (a, b) in spans.items()]
 
     # -- JSON ---------------------------------------------------------------
-    def as_dict(self, replay: Replay | None = None, *, with_objects: bool = True) -> dict[str, Any]:
+    def as_dict(self, replay: Replay | None = None, *, with_objects: bool = True,
+                with_steps: bool = True) -> dict[str, Any]:
         params = dict(self.params)
         d: dict[str, Any] = {"format": PROTOCOL_FORMAT, "construction": self.construction}
         if with_objects:
@@ -639,8 +165,9 @@ class Protocol:
             "params": jsonable(params),
             "givens": list(self.givens),
             "instruments": self.instrument_counts(),
-            "steps": [s.as_dict() for s in self.steps],
         })
+        if with_steps:
+            d["steps"] = [s.as_dict() for s in self.steps]
         if with_objects:
             d["objects"] = replay.objects_json()
         return d
@@ -668,9 +195,8 @@ class Protocol:
          }}
         <BLANKLINE>
         """
-        d = self.as_dict(replay)
+        d = self.as_dict(replay, with_steps=False)  # the steps are written compactly below
         objects = d.pop("objects")
-        del d["steps"]
         group_ids: dict[tuple[str, ...], int] = {}
         for st in self.steps:
             if st.group and st.group not in group_ids:
@@ -679,9 +205,7 @@ class Protocol:
         d["groups"] = [list(g) for g in group_ids]
         steps = [st.compact_dict(group_ids) for st in self.steps]
 
-        def line(v: Any) -> str:
-            return json.dumps(v, ensure_ascii=False, separators=(", ", ": "))
-
+        line = _LINE.encode
         groups = d.pop("groups")
         head = line(d)[:-1]
         head += ',\n "groups": [' + "".join(f"\n  {line(g)}," for g in groups).rstrip(",") + "\n ]"
@@ -712,7 +236,7 @@ class Protocol:
                 raise ProtocolFormatError(f"protocol has no {key!r}")
         name = d["construction"]
         if not isinstance(name, str) or not name:
-            raise ProtocolFormatError(f"protocol 'construction' must be a name, got {_shown(name)}")
+            raise ProtocolFormatError(f"protocol 'construction' must be a name, got {shown(name)}")
         if not isinstance(d["steps"], list):
             raise ProtocolFormatError(f"protocol 'steps' must be a list of objects, got {type(d['steps']).__name__}")
         if not d["steps"] and not empty_ok:
@@ -722,17 +246,17 @@ class Protocol:
         params = frozen(dict(d["params"]))
         stored = params.get("givens", MappingProxyType({}))
         if not isinstance(stored, Mapping):
-            raise ProtocolFormatError(f"protocol 'params.givens' must map names to numbers, got {_shown(stored)}")
+            raise ProtocolFormatError(f"protocol 'params.givens' must map names to numbers, got {shown(stored)}")
         for key, value in stored.items():
             as_float(value, f"protocol 'params.givens': the given {shown(key)}", ProtocolFormatError)
         titles = params.get("group_titles")  # read by every drawing of the protocol: checked here, once
         if titles is not None and not (isinstance(titles, Mapping) and all(
                 isinstance(k, str) and isinstance(v, str) for k, v in titles.items())):
             raise ProtocolFormatError(f"protocol 'params.group_titles' must map each English group title to its "
-                                      f"German one (text to text), got {_shown(titles)}")
+                                      f"German one (text to text), got {shown(titles)}")
         givens = d.get("givens", [])
         if not isinstance(givens, list) or not all(isinstance(g, str) for g in givens):
-            raise ProtocolFormatError(f"protocol 'givens' must be a list of names, got {_shown(givens)}")
+            raise ProtocolFormatError(f"protocol 'givens' must be a list of names, got {shown(givens)}")
         unstored = [g for g in givens if g not in stored]
         if unstored:
             raise ProtocolFormatError(f"protocol 'givens' names {unstored[0]!r}, which 'params.givens' lacks "
@@ -772,6 +296,11 @@ class Protocol:
         """
         data = read_protocol_bytes(path)
         return cls.from_dict(parse_protocol_json(data, f"protocol file {os.fsdecode(os.fspath(path))!r}"))
+
+
+#: One line of a protocol file: json.dumps(v, ensure_ascii=False, separators=(", ", ": ")), with one encoder for
+#: every line (json.dumps makes an encoder per call for any options but the defaults).
+_LINE = json.JSONEncoder(ensure_ascii=False, separators=(", ", ": "))
 
 
 def _unpickle(d: Mapping[str, Any]) -> Protocol:

@@ -242,6 +242,11 @@ def choose(points: Sequence[Any], rule: Rule, refs: Sequence[Any], xp: Any) -> t
     first = ka <= kb if smallest else ka >= kb
     if xp is SCALAR:
         return (a, b) if first else (b, a)
+    # in a sweep the branch mostly stays the same for every set: then no selection is made at all
+    if first.all():
+        return a, b
+    if not first.any():
+        return b, a
     w = xp.where
     return raw_point(w(first, a.x, b.x), w(first, a.y, b.y)), raw_point(w(first, b.x, a.x), w(first, b.y, a.y))
 

@@ -40,7 +40,7 @@ from .lettering import LEADER_FROM, label_box, text_box, text_width
 from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
 from .marks import could_show
 from .placing import Placing, PlacedLabel, place_outwards, text_gap
-from .plate import (Lettering, Stroke, break_elements, crossing_lines, furniture_elements, furniture_pieces, plain,
+from .plate import (Lettering, break_elements, crossing_lines, furniture_elements, furniture_pieces, plain,
                     subscript_runs)
 from .scene import Mark, MarkKind, Scene, extreme_points
 from .styles import PLAIN, Style

@@ -31,9 +31,23 @@ def add_arguments(p) -> None:
                         "objects laid out per frame, and the raster time on the worker threads beside it)")
     p.add_argument("--diff-million", action="store_true",
                    help="with --diff: also 1,000,000 elements (about 80 MB per drawing; minutes)")
+    p.add_argument("--guard", action="store_true",
+                   help="CI's speed guard instead: the ratio targets (sweep / replay, time per step flat from 18 to "
+                        "3600 parts, rendering / replay per step and its growth), exit 1 when one is more than 2x past "
+                        "its target (about 20 s)")
 
 
 def run(args) -> int:
+    if args.guard:
+        from ...regress.guard import guard_lines, run_guard, verdict
+
+        found = run_guard()
+        if args.format == "json":
+            print(json.dumps([{**r, "verdict": verdict(r)} for r in found], indent=1))
+        else:
+            for line in guard_lines(found):
+                print(line)
+        return 1 if any(verdict(r) == "FAILED" for r in found) else 0
     if args.live is not None:
         return _live(args)
     if args.diff or args.diff_million:

@@ -36,7 +36,6 @@ the analytic curve.
 
 from __future__ import annotations
 
-import math
 
 from ...kernel.division import NAMES as DIVISION_NAMES
 from ...kernel.protocol import Caption
@@ -76,7 +75,6 @@ def inertia_plate(fig) -> dict:
     foot5, q5 = R["X.c90"], R["q5"]
     t = 0.42
     on_inf = (E[0] + t * (F[0] - E[0]), E[1] + t * (F[1] - E[1]))
-    slope = math.degrees(math.atan2(F[1] - E[1], F[0] - E[0]))
     up, down = R[f"K{max(1, n // 6)}"], R[f"K{n - max(1, n // 6)}"]
     furniture = [
         {"kind": "dimension", "a": tuple(D0), "b": tuple(E), "text": "F/f", "offset": 0.12 * r},

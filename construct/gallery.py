@@ -205,7 +205,8 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any],
     # The first of a construction's book parameters is built whole: its protocol, the teaching style (every step
     # golden) and the player.  The others are the book's further figures of the same method: their plate and their
     # checks (a replay writes the rest: `construct replay NAME --PARAM VALUE`).  The gallery stays small enough to
-    # commit (15 MB), and a teacher changes a given in the player rather than opening another copy.
+    # commit (25 MB, each player at most 2 MB), and a teacher changes a given in the player rather than opening
+    # another copy.
     first = _first_of_its_construction(name, params)
     if first:
         write_text(edir / "protocol.json", fig.protocol.to_json(fig.replay))
@@ -253,19 +254,14 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any],
 def _live(c, fig, style: str) -> tuple[list[dict[str, Any]] | None, Any]:
     """The live data of a gallery player (a slider for each continuous given the construction can sweep) and
     the figure's drawing, laid out once for the sweeps' camera views and the player."""
-    from .live import live_data, live_givens, live_sweep
+    from .live import live_givens, live_pages
     from .render.output import scene_for
     from .render.svg import Drawing
 
-    givens = live_givens(c, fig)
-    if not givens:
+    if not live_givens(c, fig):
         return None, None
-    from .live import Measure
-
     drawing = Drawing(scene_for(c, fig), STYLES[style])
-    measure = Measure(c, fig, STYLES[style], drawing=drawing)  # (the givens' sweeps share it)
-    return [live_data(live_sweep(c, fig, g.name, style=STYLES[style], drawing=drawing, measure=measure))
-            for g in givens], drawing
+    return live_pages(c, fig, STYLES[style], drawing=drawing), drawing
 
 
 def _switch(name: str, params: Mapping[str, Any]) -> tuple | None:

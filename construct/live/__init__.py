@@ -33,7 +33,7 @@ from __future__ import annotations
 
 from .measure import Measure, player_page, player_page_and_fit
 from .sweep import LiveGiven, LiveSweep, live_givens, live_sweep
-from .wire import live_data
+from .wire import live_data, live_pages
 
-__all__ = ["LiveGiven", "LiveSweep", "Measure", "live_givens", "live_sweep", "live_data", "player_page",
+__all__ = ["LiveGiven", "LiveSweep", "Measure", "live_givens", "live_sweep", "live_data", "live_pages", "player_page",
            "player_page_and_fit"]

@@ -85,18 +85,34 @@ class Measure:
         # the marks' keys as this value's page has them: each mark's numbers are a run of them, the runs in the
         # page's order (a sweep draws each mark's numbers for every value at once, :meth:`frames`)
         self.keys, _, _, texts = self(built)
-        self.runs: list[tuple[str, int]] = []
-        for k in self.keys[1:len(self.keys) - len(self.view_of) - len(self.rings) - 2]:
-            if self.runs and self.runs[-1][0] == k[0]:
-                self.runs[-1] = (k[0], self.runs[-1][1] + k[2].count("#"))
-            else:
-                self.runs.append((k[0], k[2].count("#")))
+        self.runs = self._runs(self.keys)
+        # a protocol of another piece of the domain (live.sweep.pieces): its scene, runs and keys, made once (the
+        # protocol kept with them: its id stays its own)
+        self._forms = {id(built.protocol): (built.protocol, scene, self.runs, self.keys)}
         # the letters whose text is read off the figure (an angle), by the id of their letter (a lettered line's
         # letter stands at a point of its own, "NAME.at")
         readings = {name: label for st in built.protocol.steps for name, label in st.labels if "{∠" in label}
         of = lambda m: m.name[:-3] if m.id.endswith("-at") and m.name.endswith(".at") else m.name  # noqa: E731
         self.readings = {f"{m.id}-label": readings[of(m)] for m in scene.marks if of(m) in readings and m.label}
         self.texts = {k: v for k, v in texts.items() if k not in self.readings}  # the same at every value
+
+    def _runs(self, keys: list[tuple[str, str, str]]) -> list[tuple[str, int]]:
+        """Each mark's run of numbers among *keys*: (its id, how many)."""
+        runs: list[tuple[str, int]] = []
+        for k in keys[1:len(keys) - len(self.view_of) - len(self.rings) - 2]:
+            if runs and runs[-1][0] == k[0]:
+                runs[-1] = (k[0], runs[-1][1] + k[2].count("#"))
+            else:
+                runs.append((k[0], k[2].count("#")))
+        return runs
+
+    def _form(self, protocol: Any, replay: Any) -> tuple[Any, list[tuple[str, int]], list[tuple[str, str, str]]]:
+        """The scene, the marks' runs and the keys of *protocol* (drawn at the first value of *replay*)."""
+        if id(protocol) not in self._forms:
+            first = Figure(protocol, replay.take(0, whole=True), self.construction.check, self.construction)
+            keys = self(first)[0]
+            self._forms[id(protocol)] = (protocol, scene_for(self.construction, first), self._runs(keys), keys)
+        return self._forms[id(protocol)][1:]
 
     def _boxes(self, scene, vp) -> list[tuple[float, float, float, float] | None]:
         """Per distinct view, the box (canvas px: x0, y0, x1, y1) of the marks it frames."""
@@ -139,18 +155,18 @@ class Measure:
         draws, value by value elsewhere (a value where a mark changes its form, a figure the sweep does not
         draw)."""
         at_once = None
-        if sweep_drawable(self.template, self.style):
+        template, runs, keys = self._form(protocol, replay)
+        if sweep_drawable(template, self.style):
             try:
-                at_once = SweepDrawing(self.template, protocol, replay, size, self.style)
+                at_once = SweepDrawing(template, protocol, replay, size, self.style)
             except ValueError:  # a mark of another kind than the built figure's: value by value
                 at_once = None
-        if at_once is not None and any(at_once.numbers.get(i, np.zeros((0, 0))).shape[1:] != (n,)
-                                       for i, n in self.runs):
+        if at_once is not None and any(at_once.numbers.get(i, np.zeros((0, 0))).shape[1:] != (n,) for i, n in runs):
             at_once = None
         if at_once is None or not at_once.ok.any():
             return [self(Figure(protocol, replay.take(i, whole=True), self.construction.check, self.construction))
                     for i in range(size)]
-        rows = np.hstack([at_once.numbers[i] for i, _ in self.runs])
+        rows = np.hstack([at_once.numbers[i] for i, _ in runs])
         width, height = (np.round(v, 2) for v in at_once.size)
         px = at_once.page_px
 
@@ -182,7 +198,7 @@ class Measure:
             if self.readings:
                 taken = replay.take(i)
                 texts = {**self.texts, **{k: reading(label, taken) for k, label in self.readings.items()}}
-            out.append((self.keys, table[i].tolist(), tuple(float(v) for v in at_once.fit[i]), texts))
+            out.append((keys, table[i].tolist(), tuple(float(v) for v in at_once.fit[i]), texts))
         return out
 
     def _carried_all(self, j: int, box: tuple | None, W: np.ndarray, H: np.ndarray) -> list[np.ndarray]:

@@ -46,8 +46,8 @@ from ..render.styles import STYLES
 from ..render.wire import arc_flags, blend, radii
 from .measure import Measure
 
-__all__ = ["LiveGiven", "LiveSweep", "live_givens", "live_sweep", "reach", "check_picks", "REFINE_PX", "QUANTUM_PX",
-           "MIN_CELL", "CHECK_VALUES"]
+__all__ = ["LiveGiven", "LiveSweep", "Piece", "live_givens", "live_sweep", "pieces", "reach", "check_picks",
+           "REFINE_PX", "QUANTUM_PX", "MIN_CELL", "CHECK_VALUES"]
 
 
 @dataclass(frozen=True)
@@ -119,12 +119,12 @@ def live_givens(construction: Construction, figure: Figure) -> list[LiveGiven]:
 
 def reach(construction: Construction, figure: Figure, given: str, domain: Domain, initial: float) -> Domain:
     """The part of *domain* about *initial* where the construction holds with the figure's other givens (the two
-    cranks' magnified speed radius vanishes below L/r = 2.5 at the book's fluctuation): its validator asked,
+    cranks' speed radius magnified 8 times vanishes below L/r = 2.3 at the book's fluctuation): its validator asked,
     each end found by bisection in log10 to three significant digits (rounded inwards).
 
     >>> from construct.constructions import get
-    >>> c = get("two-cranks"); fig = c.figure(parts=12)
-    >>> reach(c, fig, "rod_ratio", ROD_RATIO, 5.0).low, reach(get("crank"), get("crank").figure(), "rod_ratio", ROD_RATIO, 5.0).low
+    >>> c = get("two-cranks"); fig = c.figure(parts=12, magnify=8.0)  # (magnified as chosen: at every rod)
+    >>> reach(c, fig, "rod_ratio", ROD_RATIO, 5.0).low, reach(c, c.figure(parts=12), "rod_ratio", ROD_RATIO, 5.0).low
     (2.29, 1.05)
     """
     givens, params = dict(figure.replay.givens), figure.protocol.params
@@ -149,6 +149,87 @@ def reach(construction: Construction, figure: Figure, given: str, domain: Domain
     low = domain.low if holds(domain.low) else edge(initial, domain.low, False)
     high = domain.high if holds(domain.high) else edge(initial, domain.high, True)
     return domain if (low, high) == (domain.low, domain.high) else Domain(low, high, domain.why, domain.advice)
+
+
+#: How many values of a given's domain (evenly in log10) a fresh build is asked at for the steps' form, and to what
+#: part of a decade a change of form is then found by bisection.
+FORM_SCAN = 24
+FORM_TOL = 1e-4
+
+
+@dataclass(frozen=True)
+class Piece:
+    """A part [low, high] of a given's domain over which a fresh build makes the same steps from the same
+    objects (:func:`pieces`): replaying *protocol* there is what a fresh build draws."""
+
+    low: float
+    high: float
+    protocol: Any
+
+
+def _form(protocol: Any) -> tuple:
+    """The steps' form: each step's operation, its inputs and outputs (their values aside)."""
+    return tuple((s.op, tuple(s.inputs), tuple(s.outputs)) for s in protocol.steps)
+
+
+def pieces(construction: Construction, figure: Figure, given: str, domain: Domain) -> list[Piece]:
+    """*domain* in the parts where a fresh build of *figure* at another value of *given* takes the same steps from
+    the same objects: one piece where the form never changes (a replay of the built protocol is then the fresh
+    build everywhere); several where it does (Tafel I's piston-force pieces run through the points between their
+    corners: which points those are depends on the rod).  Each piece's protocol is built inside it (the built
+    figure's own in its piece); the changes are found from FORM_SCAN fresh builds, then by bisection in log10.
+
+    >>> from construct.constructions import get
+    >>> c = get("crank"); fig = c.figure(parts=3)
+    >>> [(p.low, p.high, p.protocol is fig.protocol) for p in pieces(c, fig, "rod_ratio", ROD_RATIO)]
+    [(1.05, 1000.0, True)]
+
+    (tests/test_render_live_browser.py drags Tafel I's eight pieces.)
+    """
+    givens, params = dict(figure.replay.givens), figure.protocol.params
+    kw = {k: givens[k] if k in givens else params[k] if isinstance(params.get(k), (int, float, str, bool))
+          else construction.defaults[k] for k in construction.defaults}
+    built = _form(figure.protocol)
+    made: dict[float, Any] = {}  # log10 of a value -> the protocol a fresh build makes there (None: none)
+
+    def form(u: float) -> tuple | None:
+        if u not in made:
+            try:
+                made[u] = construction.build(**{**kw, given: float(min(max(10 ** u, domain.low), domain.high))}).protocol
+            except InvalidParameter:
+                made[u] = None
+        return None if made[u] is None else _form(made[u])
+
+    initial = math.log10(float(givens[given]))
+    if form(initial) != built:  # the figure is not what its givens build (a protocol replayed by hand): as it is
+        return [Piece(domain.low, domain.high, figure.protocol)]
+    lo, hi = math.log10(domain.low), math.log10(domain.high)
+    us = sorted(set(np.linspace(lo, hi, FORM_SCAN).tolist()) | {initial})
+    cuts: list[tuple[float, float]] = []
+
+    def split(a: float, b: float) -> None:  # every change of form between a and b
+        if b - a <= FORM_TOL:
+            cuts.append((a, b))
+            return
+        m = (a + b) / 2
+        if form(m) != form(a):
+            split(a, m)
+        if form(m) != form(b):
+            split(m, b)
+
+    for a, b in zip(us[:-1], us[1:]):
+        if form(a) != form(b):
+            split(a, b)
+    if not cuts:
+        return [Piece(domain.low, domain.high, figure.protocol)]
+    ends = [lo] + [x for a, b in cuts for x in (a, b)] + [hi]
+    out = []
+    for a, b in zip(ends[0::2], ends[1::2]):
+        if form(a) is None:  # (the domain is where the construction holds: never)
+            return [Piece(domain.low, domain.high, figure.protocol)]
+        out.append(Piece(domain.low if a == lo else 10 ** a, domain.high if b == hi else 10 ** b,
+                         figure.protocol if form(a) == built else made[a]))
+    return out
 
 
 @functools.lru_cache(maxsize=4)
@@ -245,6 +326,8 @@ class LiveSweep:
     label_px: float = 12.0
     #: The given as its book writes it (unit, the texts' forms, the rod at a break): :class:`LiveGiven`.
     live: LiveGiven | None = None
+    #: The slider's whole domain where this sweep is one piece of it (:func:`pieces`); None: the sweep's own.
+    whole: Domain | None = None
     #: The areas the page draws from the graphs that bound them (:func:`construct.live.measure.areas_of`).
     areas: list[list[str]] = field(default_factory=list)
     #: Givens that follow from this one and that the texts write (DERIVED_WRITTEN): name -> value at each grid
@@ -257,21 +340,23 @@ class LiveSweep:
         return arc_flags(self.keys) | _columns(self.keys, lambda k: k in snapped)
 
 
-def _frames(construction: Construction, figure: Figure, given: str, values: np.ndarray, measure) -> list[tuple]:
-    """(keys, numbers, fit, texts) of the player's figure at every value, from one sweep of the protocol."""
-    replay = figure.protocol.replay(construction.given_sweep(dict(figure.replay.givens), given, values,
-                                                             figure.protocol.params))
-    return measure.frames(figure.protocol, replay, len(values)), replay
+def _frames(construction: Construction, figure: Figure, given: str, values: np.ndarray, measure,
+            protocol: Any) -> list[tuple]:
+    """(keys, numbers, fit, texts) of the player's figure at every value, from one sweep of *protocol* (the
+    figure's, or its piece's: :func:`pieces`)."""
+    replay = protocol.replay(construction.given_sweep(dict(figure.replay.givens), given, values, protocol.params))
+    return measure.frames(protocol, replay, len(values)), replay
 
 
 def live_sweep(construction: Construction, figure: Figure, given: str, *, initial: float | None = None,
                style: Any = None, start: int = 9, max_values: int = 800, drawing: Any = None,
-               measure: Measure | None = None) -> LiveSweep:
+               measure: Measure | None = None, piece: Piece | None = None) -> LiveSweep:
     """The grid of *given* over its domain on which linear interpolation draws within 0.5 px (see the module).
 
     *drawing*: the figure's :class:`~construct.render.svg.Drawing` in *style*, if the caller lays it out anyway
     (the player's): its camera views are the ones carried along.  *measure*: the figure's :class:`Measure`, if
-    another given's sweep made it (it depends on the figure, not on the given)."""
+    another given's sweep made it (it depends on the figure, not on the given).  *piece*: the part of the domain
+    swept (:func:`pieces`: where the steps' form changes, each part is swept apart, replaying its own protocol)."""
     style = style or STYLES["teaching"]
     live = next((g for g in live_givens(construction, figure) if g.name == given), None)
     if live is None:
@@ -279,12 +364,16 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
                                f"{', '.join(g.name for g in live_givens(construction, figure)) or 'none'}")
     symbol = live.symbol
     initial = float(figure.replay.givens[given] if initial is None else initial)
-    domain = reach(construction, figure, given, live.domain, initial)
+    domain = whole = reach(construction, figure, given, live.domain, initial)
+    protocol = figure.protocol
+    if piece is not None:
+        domain = Domain(max(piece.low, whole.low), min(piece.high, whole.high), whole.why, whole.advice)
+        protocol = piece.protocol
     measure = measure or Measure(construction, figure, style, drawing=drawing)
     lo, hi = math.log10(domain.low), math.log10(domain.high)
     us = list(np.linspace(lo, hi, start))
     values = lambda u: np.clip(10.0 ** np.asarray(u), domain.low, domain.high)  # noqa: E731
-    frames, _ = _frames(construction, figure, given, values(us), measure)
+    frames, _ = _frames(construction, figure, given, values(us), measure, protocol)
     # each value's numbers as one array, made once (every cell it bounds reads them)
     as_arrays = lambda fs: [(f[0], np.asarray(f[1], dtype=float), *f[2:]) for f in fs]  # noqa: E731
     data = dict(zip(us, as_arrays(frames)))
@@ -301,7 +390,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
         # same round (a round draws every mark of the figure once, over all its values: its cost is the marks',
         # not the values'); what no cell needed is dropped
         ahead = [q for a, b in todo for q in _ahead(a, b, AHEAD)]
-        drawn, _ = _frames(construction, figure, given, values(mids + ahead), measure)
+        drawn, _ = _frames(construction, figure, given, values(mids + ahead), measure, protocol)
         got = dict(zip(mids + ahead, as_arrays(drawn)))
         nxt = []
         queue = collections.deque(todo)
@@ -371,22 +460,27 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
                      fixed=fixed, snapped=snapped, u=np.asarray(us, dtype=float), start=start, readings=varying,
                      # the fit travels as float32: the columns are checked against the drawing through it
                      fit=np.asarray([data[u][2] for u in us], dtype=np.float32).astype(float),
-                     label_px=float(style.label_size), live=live, areas=measure.areas)
-    swept = construction.given_sweep(dict(figure.replay.givens), given, grid, figure.protocol.params)
+                     label_px=float(style.label_size), live=live, areas=measure.areas,
+                     whole=whole if piece is not None else None)
+    swept = construction.given_sweep(dict(figure.replay.givens), given, grid, protocol.params)
     live.derived = {k: np.broadcast_to(swept[k], grid.shape).astype(float).tolist() for k in DERIVED_WRITTEN
                     if k in swept and k != given and np.ptp(np.broadcast_to(swept[k], grid.shape)) > 0}
-    picks = check_picks(grid)
-    live.checks = dict(zip(picks, _checks(construction, figure, given, grid[picks])))
+    # a piece of the domain: its share of the slider's checks (at least its ends)
+    share = 1.0 if piece is None else math.log10(domain.high / domain.low) / math.log10(whole.high / whole.low)
+    picks = check_picks(grid, max(2, round(CHECK_VALUES * share)))
+    live.checks = dict(zip(picks, _checks(construction, figure, given, grid[picks], protocol)))
     # and at the built value (the book's): a teacher who returns there sees its own checks
     live.built_checks = [[c.name, c.measured, c.expected, c.error, c.tolerance, bool(c.ok)]
                          for c in construction.checks(figure)]
     return live
 
 
-def _checks(construction: Construction, figure: Figure, given: str, grid: np.ndarray) -> list[list[list[Any]]]:
-    """The construction's checks at every value of *grid*, from one sweep (:meth:`Construction.sweep_checks`)."""
-    swept = construction.given_sweep(dict(figure.replay.givens), given, grid, figure.protocol.params)
-    sweep = Figure(figure.protocol, figure.protocol.replay(swept), construction.check, construction)
+def _checks(construction: Construction, figure: Figure, given: str, grid: np.ndarray,
+            protocol: Any) -> list[list[list[Any]]]:
+    """The construction's checks at every value of *grid*, from one sweep of *protocol*
+    (:meth:`Construction.sweep_checks`)."""
+    swept = construction.given_sweep(dict(figure.replay.givens), given, grid, protocol.params)
+    sweep = Figure(protocol, protocol.replay(swept), construction.check, construction)
     return [[[c.name, c.measured, c.expected, c.error, c.tolerance, bool(c.ok)] for c in row]
             for row in construction.sweep_checks(sweep)]
 
@@ -396,8 +490,8 @@ def _checks(construction: Construction, figure: Figure, given: str, grid: np.nda
 CHECK_VALUES = 48
 
 
-def check_picks(grid: np.ndarray) -> list[int]:
-    """The grid values (indices) the page shows checks at: up to CHECK_VALUES, evenly in log10 of the given
+def check_picks(grid: np.ndarray, at_most: int = CHECK_VALUES) -> list[int]:
+    """The grid values (indices) the page shows checks at: up to *at_most*, evenly in log10 of the given
     (the grid is dense where the drawing bends, the slider is not), the first and the last among them.
 
     >>> check_picks(np.array([1.0, 1.1, 1.2, 10.0, 100.0]))  # 1.1 and 1.2 are one place on the slider
@@ -406,4 +500,4 @@ def check_picks(grid: np.ndarray) -> list[int]:
     (48, 499)
     """
     u = np.log10(grid)
-    return sorted({int(np.argmin(np.abs(u - t))) for t in np.linspace(u[0], u[-1], min(len(u), CHECK_VALUES))})
+    return sorted({int(np.argmin(np.abs(u - t))) for t in np.linspace(u[0], u[-1], min(len(u), at_most))})

@@ -24,9 +24,10 @@ from typing import Any
 import numpy as np
 
 from ..render.wire import ARC, LENGTH, LOG, PX, X, Y, as_drawn, as_stored, deflated, radii
-from .sweep import DERIVED_WRITTEN, QUANTUM_PX, LiveSweep
+from .measure import Measure
+from .sweep import DERIVED_WRITTEN, QUANTUM_PX, LiveSweep, live_givens, live_sweep, pieces, reach
 
-__all__ = ["ROW_PX", "STORED_PX", "column_kinds", "column_knots", "encode", "live_data"]
+__all__ = ["ROW_PX", "STORED_PX", "column_kinds", "column_knots", "encode", "live_data", "live_pages"]
 
 #: The page's coordinates travel as multiples of this (px, or its share of the largest scale in the
 #: construction's units): the rounding is inside ROW_PX, which the columns are checked against.
@@ -224,7 +225,9 @@ def live_data(live: LiveSweep) -> dict[str, Any]:
             "keys": [list(k) for k in live.keys], "flags": live.nearest_columns().nonzero()[0].tolist(),
             "jumps": sorted(where[float(a)] for a, _ in live.jumps)}
     given = live.live
-    return {"given": live.given, "symbol": live.symbol, "low": live.domain.low, "high": live.domain.high,
+    whole = live.whole or live.domain
+    return {"given": live.given, "symbol": live.symbol, "low": whole.low, "high": whole.high,
+            **({"piece": [live.domain.low, live.domain.high]} if live.whole is not None else {}),
             **({"unit": given.unit, "written": list(given.written), "rod": given.rod} if given is not None else {}),
             "initial": live.initial, "rows": int(live.drawn.shape[0]), "cols": int(live.drawn.shape[1]),
             "label_px": live.label_px, **({"areas": live.areas} if live.areas else {}),
@@ -255,3 +258,17 @@ def _check_table(live: LiveSweep) -> dict[str, Any]:
 
     return {"check_names": [c[0] for c in at[0][1]], "check_values": [v for v, _ in at],
             "checks": [[row(c) for c in cs] for _, cs in at]}
+
+
+def live_pages(construction: Any, figure: Any, style: Any, *, drawing: Any = None) -> list[dict[str, Any]]:
+    """The live data of every continuous given of *figure* (:func:`~construct.live.sweep.live_givens`), one sweep
+    for each piece of its domain (:func:`~construct.live.sweep.pieces`): what the gallery's players and
+    ``construct replay --live`` carry.  *drawing*: the figure's drawing in *style*, if the caller has it."""
+    measure = Measure(construction, figure, style, drawing=drawing)  # (the givens' sweeps share it)
+    out = []
+    for g in live_givens(construction, figure):
+        parts = pieces(construction, figure, g.name, reach(construction, figure, g.name, g.domain,
+                                                          float(figure.replay.givens[g.name])))
+        out += [live_data(live_sweep(construction, figure, g.name, style=style, drawing=drawing, measure=measure,
+                                     piece=p if len(parts) > 1 else None)) for p in parts]
+    return out

@@ -86,9 +86,11 @@ def with_live(page: str, data: Mapping[str, Any] | Sequence[Mapping[str, Any]], 
     *steps_note*: what the page says of a given the construction also takes but that changes its steps (the
     number of parts), instead of the default."""
     givens = [data] if isinstance(data, Mapping) else list(data)
-    syms = [html.escape(str(d["symbol"])) for d in givens]
+    # a given whose domain is swept in pieces (the steps' form changes: live.sweep.pieces) has one slider
+    sliders = list({d["given"]: d for d in reversed(givens)}.values())[::-1]
+    syms = [html.escape(str(d["symbol"])) for d in sliders]
     held = (f'Nur {syms[0]} ist beweglich; die übrigen Gegebenen bleiben beim Buchwert. / Only {syms[0]} moves '
-            f'here; the other givens stay at the book’s values' if len(givens) == 1 else
+            f'here; the other givens stay at the book’s values' if len(sliders) == 1 else
             f'{" und ".join(syms)} bewegen sich einzeln: wer einen zieht, setzt die anderen auf den Buchwert '
             f'zurück. / {" and ".join(syms)} move one at a time: moving one sets the others back to the book’s '
             f'values')
@@ -96,7 +98,7 @@ def with_live(page: str, data: Mapping[str, Any] | Sequence[Mapping[str, Any]], 
              ': a sweep over two givens together would be needed, and the number of parts changes the steps '
              'themselves.')
     controls = (f'<section id="live" style="background:#fff;border:1px solid #ddd;margin-top:8px;padding:6px 10px">'
-                + "".join(_slider(d, i == 0) for i, d in enumerate(givens))
+                + "".join(_slider(d, i == 0) for i, d in enumerate(sliders))
                 # why one given moves at a time (a teacher asks for the next given first)
                 + f'<div class="live-held" style="{_NOTE}">{held}</div>'
                 # a reading (an angle read off the figure, to the minute) blended between grid values would
@@ -234,8 +236,9 @@ LIVE_SCRIPT = r"""
       var cs = new Int32Array(nn), mv = false;
       for (i = 0; i < nn; i++) { cs[i] = at + i; if (self.moving[self.colmap[at + i]]) mv = true; }
       at += nn;
-      // a mark whose numbers do not move over the domain keeps its attribute as built: never written
-      if (!el || (!mv && el !== svg)) return;
+      // a mark whose numbers do not move over the domain keeps its attribute as built: never written (a given
+      // swept in pieces writes them all: another piece may have written them)
+      if (!el || (!mv && !L.piece && el !== svg)) return;
       var sl = {el: el, attr: k[1], parts: parts, cs: cs, v: new Float64Array(nn).fill(NaN), text: null,
                 len: lengthOf(el, k[1], parts)};
       // the whole figure's box: written as data-full, and as the view by the player (or below without one)
@@ -420,7 +423,8 @@ LIVE_SCRIPT = r"""
       for (i = 2; i + 5 < n.length; i += 6) P.push([n[i + 4], n[i + 5]]);
       for (var seg = 0; seg + 16 < P.length; seg += 16) {
         for (k = 0; k < 16; k++) {
-          var j0 = seg + Math.min(Math.max(k - 1, 0), 12);  // four nodes j0 .. j0 + 3 inside the segment
+          // four nodes j0 .. j0 + 3 about the piece, inside the segment (never past its end: no extrapolation)
+          var j0 = seg + Math.min(Math.max(k - 1, 0), 13);
           xs.push(P[seg + k][0]); ys.push(P[seg + k][1]);
           for (var q = 1; q < 4; q++) {
             var t = seg + k + q / 4 - j0, lx = 0, ly = 0;
@@ -585,7 +589,7 @@ LIVE_SCRIPT = r"""
     drawAreas();
     breakMarks();
     // readings of the figure (an angle to the minute): true at the book's values only
-    var atBook = sweeps.every(function(w){ return Math.abs(Math.log10(w.value) - Math.log10(w.L.initial)) < 1e-9; });
+    var atBook = Math.abs(Math.log10(S.value) - Math.log10(S.L.initial)) < 1e-9;  // (the others are there)
     for (var j = 0; j < readings.length; j++) { var shown = atBook ? "" : "none"; if (readings[j].style.display !== shown) readings[j].style.display = shown; }
     declutter();
     api.value = value; api.given = S.L.given;
@@ -594,14 +598,29 @@ LIVE_SCRIPT = r"""
     showChecks(S, u);
     api.lastMs = performance.now() - t0;
   }
+  function pieceOf(given, value){  // the sweep of *given* whose piece of the domain holds *value* (or is nearest)
+    var best = null, bd = Infinity;
+    sweeps.forEach(function(w){
+      if (w.L.given !== given) return;
+      var p = w.L.piece || [w.L.low, w.L.high], d = value < p[0] ? p[0] / value : value > p[1] ? value / p[1] : 1;
+      if (d < bd) { bd = d; best = w; }
+    });
+    return best;
+  }
+  function valueOf(given){  // the shown value of *given* (a given not moving is at the book's value)
+    return S && S.L.given === given ? S.value : LIST.filter(function(L){ return L.given === given; })[0].initial;
+  }
   function activate(W){  // another given moves: the one that moved goes back to its book value first
     if (W === S) return;
-    if (S) {
-      if (Math.abs(S.value - S.L.initial) > 1e-12 * S.L.initial) { redraw(S.L.initial, false, false); }
+    if (S && S.L.given !== W.L.given) {
+      var B = pieceOf(S.L.given, S.L.initial);  // (the piece of its domain the book's value lies in)
+      var moved = B !== S || Math.abs(S.value - S.L.initial) > 1e-12 * S.L.initial;
+      if (B !== S) { S = B; S.dirty(); }
+      if (moved) redraw(S.L.initial, false, false);
       S.input.value = Math.log10(S.L.initial);
       setText(S.out, book(S.L.initial));
-      shownAt = -1;
     }
+    shownAt = -1;  // (another piece of the same given: its own checks)
     S = W;
     S.dirty();
     boxKey = null;
@@ -638,25 +657,28 @@ LIVE_SCRIPT = r"""
   });
   function retitle(){
     var now = derived.map(function(d){  // its value at the nearer grid value of its given's shown value
-      var W = sweeps.filter(function(w){ return w.L === d.L; })[0], ct = cell(d.L, Math.log10(W.value));
+      var v = valueOf(d.L.given), W = pieceOf(d.L.given, v);
+      if (W.L !== d.L) return null;  // (another piece's)
+      var ct = cell(d.L, Math.log10(v));
       return d.values[ct[1] < 0.5 ? ct[0] : Math.min(ct[0] + 1, d.values.length - 1)];
     });
     titled.forEach(function(t){
       var text = t.text;
-      if (t.head) sweeps.forEach(function(w){
-        var shown = t.en ? String(Number(w.value.toPrecision(4))) : book(w.value);
-        forms[w.L.given].forEach(function(f){ f[1].lastIndex = 0; text = text.replace(f[1], f[0] + shown); });
+      if (t.head) Object.keys(forms).forEach(function(given){
+        var v = valueOf(given), shown = t.en ? String(Number(v.toPrecision(4))) : book(v);
+        forms[given].forEach(function(f){ f[1].lastIndex = 0; text = text.replace(f[1], f[0] + shown); });
       });
       derived.forEach(function(d, j){
+        if (now[j] === null) return;
         d.forms.forEach(function(f){ f[1].lastIndex = 0; text = text.replace(f[1], function(m){
           return f[0] + (m.indexOf(",") >= 0 || !t.en && m.indexOf(".") < 0 ? book(now[j]) : String(Number(now[j].toPrecision(4)))); }); });
       });
       if (t.n.nodeValue !== text) t.n.nodeValue = text;
     });
     cells.forEach(function(c){  // each number of the cell as written, in its own language (2,0 m / 2.0 m)
-      var w = sweeps.filter(function(x){ return x.L.given === c[1]; })[0];
-      setText(c[0], c[2] ? "1/" + book(w.value) : c[3].replace(new RegExp(NUM, "g"), function(n){
-        return n.indexOf(".") >= 0 ? String(Number(w.value.toPrecision(4))) : book(w.value); }));
+      var v = valueOf(c[1]);
+      setText(c[0], c[2] ? "1/" + book(v) : c[3].replace(new RegExp(NUM, "g"), function(n){
+        return n.indexOf(".") >= 0 ? String(Number(v.toPrecision(4))) : book(v); }));
     });
   }
   var body = document.querySelector("#live-checks tbody"), shownAt = -1, rowsOf = [];
@@ -712,7 +734,7 @@ LIVE_SCRIPT = r"""
     }
     sweeps = ws;
     ws.forEach(function(W){ W.prepare(W.buf); W.buf = null; });
-    S = ws[0];
+    S = pieceOf(LIST[0].given, LIST[0].initial);
     gather();
     // the lines a break can cross (the marks', not the letters' leaders; a straight line from point to point,
     // the rod lettered L, too)
@@ -727,7 +749,8 @@ LIVE_SCRIPT = r"""
     });
     // the break marks as built give way to the page's own (drawn at every value, the built one too)
     svg.querySelectorAll("#furniture .brk, #furniture .brkline").forEach(function(e){ e.parentNode.removeChild(e); });
-    (LIST[0].readings || []).forEach(function(id){
+    LIST.map(function(L){ return L.readings || []; }).reduce(function(a, b){ return a.concat(b); }, [])
+      .filter(function(id, i, all){ return all.indexOf(id) === i; }).forEach(function(id){
       var t = document.getElementById(id);
       if (t) readings.push(t.closest("g.lbg") || t);
     });
@@ -745,18 +768,18 @@ LIVE_SCRIPT = r"""
         (pairs.get(seen[j].fo) || pairs.set(seen[j].fo, new Set()).get(seen[j].fo)).add(seen[i].fo);
       }
     }
-    ws.forEach(function(W){
-      // a drag sends more input events than frames: the last value of each frame is drawn, once, just before it
-      var pending = false;
-      W.input.addEventListener("input", function(){
+    ws.filter(function(W, i){ return ws.indexOf(pieceOf(W.L.given, W.L.initial)) === i; }).forEach(function(W){
+      // one slider a given (its pieces share it): a drag sends more input events than frames, the last value of
+      // each frame is drawn, once, just before it, by the piece of the domain it lies in
+      var pending = false, input = W.input, given = W.L.given;
+      var go = function(dragging, glide){ var v = Math.pow(10, +input.value); activate(pieceOf(given, v)); redraw(v, dragging, glide); };
+      input.addEventListener("input", function(){
         if (pending) return;
         pending = true;
-        requestAnimationFrame(function(){ pending = false; activate(W); redraw(Math.pow(10, +W.input.value), true); });
+        requestAnimationFrame(function(){ pending = false; go(true); });
       });
       // let go (or a key's step): the letters at their exact scale, the camera gliding to the step's view
-      W.input.addEventListener("change", function(){
-        requestAnimationFrame(function(){ activate(W); redraw(Math.pow(10, +W.input.value), false, true); });
-      });
+      input.addEventListener("change", function(){ requestAnimationFrame(function(){ go(false, true); }); });
     });
     // a new step: its view and ring at the shown value (the player has just set the built view); the letters
     // it shows make room for one another
@@ -769,9 +792,10 @@ LIVE_SCRIPT = r"""
     showChecks(S, Math.log10(S.L.initial));
   });
   api.set = function(value, dragging, name){  // dragging: drawn as a drag draws it (the player's DRAG_LARGER)
-    var W = name ? sweeps.filter(function(w){ return w.L.given === name; })[0] : sweeps[0];
+    var L = name ? LIST.filter(function(l){ return l.given === name; })[0] : LIST[0];
+    value = Math.min(L.high, Math.max(L.low, value));
+    var W = pieceOf(L.given, value);
     activate(W);
-    value = Math.min(W.L.high, Math.max(W.L.low, value));
     W.input.value = Math.log10(value);
     redraw(value, !!dragging);
     return api.lastMs;

@@ -31,7 +31,7 @@ def add_arguments(p) -> None:
 
 def _live_page(c, fig, style: str):
     """The live data of the player (construct.live), computed before anything is written."""
-    from ...live import live_data, live_givens, live_sweep
+    from ...live import live_givens, live_pages
     from ...kernel.errors import InvalidParameter
     from ...render.styles import STYLES
 
@@ -39,10 +39,7 @@ def _live_page(c, fig, style: str):
     if not givens or style not in STYLES:
         raise InvalidParameter(f"--live: {fig.protocol.construction} has no continuous given to move (the rod, κ)"
                                if not givens else f"unknown style {style!r}")
-    from ...live import Measure
-
-    measure = Measure(c, fig, STYLES[style])  # (the givens' sweeps share it)
-    return [live_data(live_sweep(c, fig, g.name, style=STYLES[style], measure=measure)) for g in givens]
+    return live_pages(c, fig, STYLES[style])
 
 
 def run(args) -> int:

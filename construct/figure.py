@@ -22,10 +22,11 @@ from __future__ import annotations
 
 import numbers
 from dataclasses import dataclass, field
-from typing import Any, Callable, Mapping
+from typing import Any, Callable, Mapping, Sequence
 
 from .kernel import instruments
-from .kernel.errors import InvalidParameter
+from .kernel.geometry import Point
+from .kernel.errors import InvalidParameter, did_you_mean
 from .kernel.protocol import Protocol, Replay
 from .render.notation import Described
 
@@ -58,7 +59,7 @@ class Figure:
         from .render.styles import STYLES
 
         if not isinstance(style, str) or style not in STYLES:
-            raise InvalidParameter(f"unknown style {style!r}; choose one of {', '.join(sorted(STYLES))}")
+            raise InvalidParameter(f"unknown style {style!r}{did_you_mean(style, STYLES)}; choose one of {', '.join(sorted(STYLES))}")
         if upto is not None and (isinstance(upto, bool) or not isinstance(upto, numbers.Integral)):
             raise InvalidParameter(f"upto is a step number, got {upto!r}")
         return figure_svg(self, style=style, upto=upto)
@@ -175,10 +176,42 @@ class Figure:
 
 
 class Builder(instruments.Builder):
-    __doc__ = instruments.Builder.__doc__
+    __doc__ = instruments.Builder.__doc__ + """
+    This builder (``construct.Builder``) letters a result point by its own name unless told otherwise: a point
+    made with ``role="result"`` and no letter in *labels* is lettered with its name (``labels={"B": ""}`` leaves
+    it unlettered).
+    """
 
-    def figure(self) -> Figure:
+    def record(self, tool: str, op: str, inputs: Sequence[str], outputs: Sequence[str],
+               params: Mapping[str, Any], de: str, en: str, *, provenance: Any = None,
+               role: str = "construction", labels: Mapping[str, str] | None = None) -> tuple[Any, ...]:
+        """As :meth:`construct.kernel.instruments.Builder.record`; a result point without a letter gets its name.
+
+        >>> b = Builder("demo", givens={})
+        >>> _ = b.given_point("A", 0.0, 0.0); _ = b.given_point("C", 2.0, 0.0)
+        >>> _ = b.circle_through("ka", "A", "C"); _ = b.circle_through("kc", "C", "A")
+        >>> _ = b.intersect("B", "ka", "kc", rule=("left", "A", "C"), role="result")
+        >>> _ = b.intersect("D", "ka", "kc", rule=("right", "A", "C"), role="result", labels={"D": ""})
+        >>> b.steps[-2].labels, b.steps[-1].labels
+        ((('B', 'B'),), (('D', ''),))
+        """
+        given = dict(labels or {})
+        if role == "result":
+            named = [n for n in outputs if isinstance(n, str) and n not in given]
+        else:
+            named = []
+        made = super().record(tool, op, inputs, outputs, params, de, en, provenance=provenance, role=role,
+                              labels=given or None)
+        for name in named:
+            if isinstance(self.objects.get(name), Point):
+                self.set_label(name, name)
+        return made
+
+    def figure(self, *, checks: Callable[[Figure], list] | None = None) -> Figure:
         """The construction as a :class:`Figure`: protocol and objects, ready to draw.
+
+        *checks*, a function of the figure returning :class:`~construct.constructions.checking.Check` values,
+        becomes the figure's :meth:`Figure.checks` (and follows it through :meth:`Figure.with_givens`).
 
         >>> b = Builder("demo", givens={})
         >>> _ = b.given_point("A", 0.0, 0.0); _ = b.given_point("B", 2.0, 0.0)
@@ -186,5 +219,7 @@ class Builder(instruments.Builder):
         >>> b.figure().replay["M"]
         Point(1.0, 0.0)
         """
+        if checks is not None and not callable(checks):
+            raise InvalidParameter(f"checks is a function of the figure returning its checks, got {checks!r}")
         proto = self.protocol()
-        return Figure(proto, Replay(proto, dict(self.objects), self.givens))
+        return Figure(proto, Replay(proto, dict(self.objects), self.givens), checks)

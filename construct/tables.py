@@ -6,7 +6,7 @@ table has a column for it.
 
 >>> cols, rows = piston_path_table(rod_ratio=4.0, parts=2)
 >>> cols
-('index', 'crank_angle_deg', 'x_constructed', 'x_exact', 'x_book')
+('index', 'crank_angle_deg', 'crank_angle_constructed_deg', 'x_constructed', 'x_exact', 'x_book')
 >>> [round(r["x_constructed"], 9) for r in rows]
 [0.0, 0.563508327, 1.0]
 """
@@ -22,7 +22,7 @@ from .constructions import analytic
 from .constructions import get
 from .constructions.crank import crank_angle, piston_fraction, point_name
 from .constructions.inertia import acceleration_rows, characteristic_point_rows, q_at_crank_angle_rows
-from .constructions.two_cranks import speed_fluctuation_rows
+from .constructions.two_cranks import speed_extremes_rows, speed_fluctuation_rows
 from .kernel.errors import InvalidParameter
 from .render.plotting import TablePlot, plot_table
 
@@ -32,8 +32,23 @@ __all__ = ["TABLES", "PLOTS", "write_plot", "piston_path_table", "crank_angle_ta
 Table = tuple[tuple[str, ...], list[dict[str, Any]]]
 
 
+def nominal_angle(measured_deg: float, parts: int) -> float:
+    """The division angle a row stands for: the constructed crank angle (Dürer's trisection or the dividers
+    leave it 2e-6 degrees off) rounded to the nearest multiple of 180/parts, as the books key their tables.
+
+    >>> nominal_angle(9.99999803554437, 18), nominal_angle(20.0000019644556, 18), nominal_angle(51.4285714, 7)
+    (10.0, 20.0, 51.42857142857143)
+    """
+    return 180.0 * round(measured_deg * parts / 180.0) / parts
+
+
 def piston_path_table(*, rod_ratio: float, parts: int = 18, method: str = "auto", r: float = 1.0) -> Table:
-    """Piston path at each division point, constructed, exact and by the book's Gl. (1) (fraction of the stroke)."""
+    """Piston path at each division point, constructed, exact and by the book's Gl. (1) (fraction of the stroke).
+
+    ``crank_angle_deg`` is the division's angle 180°·k/parts, the key; ``crank_angle_constructed_deg`` the
+    angle the division drew (Dürer's trisection or the dividers: a few millionths of a degree off), at which
+    ``x_constructed`` is measured.
+    """
     fig = get("crank").figure(rod_ratio=rod_ratio, parts=parts, method=method, r=r)
     g = fig.replay.givens
     L = g["rod_ratio"] * g["r"]
@@ -42,12 +57,13 @@ def piston_path_table(*, rod_ratio: float, parts: int = 18, method: str = "auto"
         w = math.pi * k / parts
         rows.append({
             "index": k,
-            "crank_angle_deg": math.degrees(crank_angle(fig, point_name(fig, k))),
+            "crank_angle_deg": 180.0 * k / parts,
+            "crank_angle_constructed_deg": math.degrees(crank_angle(fig, point_name(fig, k))),
             "x_constructed": piston_fraction(fig, k),
             "x_exact": analytic.piston_path_exact(w, g["r"], L) / (2 * g["r"]),
             "x_book": analytic.piston_path_book(w, g["r"], L) / (2 * g["r"]),
         })
-    return ("index", "crank_angle_deg", "x_constructed", "x_exact", "x_book"), rows
+    return ("index", "crank_angle_deg", "crank_angle_constructed_deg", "x_constructed", "x_exact", "x_book"), rows
 
 
 def crank_angle_table(*, rod_ratio: float, divisions: int = 10, r: float = 1.0) -> Table:
@@ -91,10 +107,17 @@ def mass_forces_table(*, weight: float, rpm: float, crank_radius: float, rod_len
     from .constructions.piston_force import mass_force_rows, revolution_mass_force_rows
 
     if revolution:
-        return ("crank_angle_deg", "stroke", "x", "P_b"), revolution_mass_force_rows(
-            weight=weight, rpm=rpm, crank_radius=crank_radius, rod_length=rod_length, parts=parts)
-    return ("crank_angle_deg", "x", "P_b"), mass_force_rows(weight=weight, rpm=rpm, crank_radius=crank_radius,
-                                                            rod_length=rod_length, parts=parts)
+        return ("crank_angle_deg", "stroke", "x", "P_b"), _keyed(revolution_mass_force_rows(
+            weight=weight, rpm=rpm, crank_radius=crank_radius, rod_length=rod_length, parts=parts), parts)
+    return ("crank_angle_deg", "x", "P_b"), _keyed(mass_force_rows(
+        weight=weight, rpm=rpm, crank_radius=crank_radius, rod_length=rod_length, parts=parts), parts)
+
+
+def _keyed(rows: list[dict[str, Any]], parts: int) -> list[dict[str, Any]]:
+    """The rows with ``crank_angle_deg`` the division angle they stand for (:func:`nominal_angle`)."""
+    for row in rows:
+        row["crank_angle_deg"] = nominal_angle(row["crank_angle_deg"], parts)
+    return rows
 
 
 def tangential_pressure_table(*, rod_ratio: float, parts: int = 18, method: str = "auto", revolution: bool = False,
@@ -163,7 +186,7 @@ def tangential_pressure_table(*, rod_ratio: float, parts: int = 18, method: str 
     if revolution:
         from .constructions.revolution import revolution_ordinate, revolution_rows
 
-        rows = revolution_rows(fig)
+        rows = _keyed(revolution_rows(fig), parts)
         if card is None:
             return ("crank_angle_deg", "T_over_P"), rows
         for j, row in enumerate(rows):
@@ -171,8 +194,8 @@ def tangential_pressure_table(*, rod_ratio: float, parts: int = 18, method: str 
             if piston_area is not None:
                 row["T_kg"] = row["T"] * piston_area
         return ("crank_angle_deg", "T_over_P", "T") + (("T_kg",) if piston_area is not None else ()), rows
-    rows = [{"crank_angle_deg": math.degrees(crank_angle(fig, point_name(fig, k))), "OK_over_r": ok_over_r(fig, k),
-             "T_over_P": t_over_unit(fig, k)} for k in range(parts + 1)]
+    rows = [{"crank_angle_deg": 180.0 * k / parts, "OK_over_r": ok_over_r(fig, k), "T_over_P": t_over_unit(fig, k)}
+            for k in range(parts + 1)]
     if card is None:
         return ("crank_angle_deg", "OK_over_r", "T_over_P"), rows
     for k, row in enumerate(rows):
@@ -203,13 +226,32 @@ def flywheel_coefficients_table(*, kz: Sequence[float] | None = None, v: Sequenc
     return ("kz", "v", "arms_hub", "total_weight", "moment", "weight_for_moment"), coefficient_rows(kz, v)
 
 
-def speed_fluctuation_table(*, rod_ratio: float | None, step: float = 10.0, dead_centre: str = "crank-end") -> Table:
+def speed_fluctuation_table(*, rod_ratio: float | None, step: float = 10.0, dead_centre: str = "crank-end",
+                            drive: str = "engine", fluctuation: float | None = None,
+                            crosshead_share: float | None = None) -> Table:
     """Seed 002 § 146-147: the excess work of two cranks at 90 deg over a turn (units of Q r), from the construction.
 
-    The angle counts from § 146's B1, the crank-end dead centre, unless *dead_centre* is "head-end".
+    The angle counts from § 146's B1, the crank-end dead centre, unless *dead_centre* is "head-end".  With
+    *fluctuation* k = Qr/((m1 + m2)v1²): the speeds v/v1 beside it -- ``v_book`` (1 + k e, § 146's law for
+    great masses), ``v_exact`` (its energy balance), ``v_first`` (with the crossheads' term of first order in
+    r/l the book derives and drops, their share m2/(m1 + m2) *crosshead_share*) and ``v_full`` (the exact
+    piston speeds); *drive* "pump": the shaft drives the rods, e counts against the masses.
     """
-    return ("crank_angle_deg", "work_excess"), speed_fluctuation_rows(rod_ratio=rod_ratio, step_deg=step,
-                                                                      dead_centre=dead_centre)
+    rows = speed_fluctuation_rows(rod_ratio=rod_ratio, step_deg=step, dead_centre=dead_centre, drive=drive,
+                                  fluctuation=fluctuation, crosshead_share=crosshead_share)
+    if fluctuation is None:
+        return ("crank_angle_deg", "work_excess"), rows
+    return ("crank_angle_deg", "work_excess", "v_book", "v_exact", "v_first", "v_full"), rows
+
+
+def speed_extremes_table(*, rod_ratio: float | None, parts: int = 12, dead_centre: str = "crank-end",
+                         drive: str = "engine", fluctuation: float | None = None) -> Table:
+    """§ 147: the least and greatest e in each quadrant and over the turn, by the exact law and read off the
+    construction's drawn wave; with *fluctuation* the degree of irregularity k·(e_max − e_min)."""
+    cols = ("range", "alpha_min_deg", "e_min", "e_min_drawn", "alpha_max_deg", "e_max", "e_max_drawn", "swing")
+    rows = speed_extremes_rows(rod_ratio=rod_ratio, parts=parts, dead_centre=dead_centre, drive=drive,
+                               fluctuation=fluctuation)
+    return cols + (("delta",) if fluctuation is not None else ()), rows
 
 
 #: How the books draw each table (construct table NAME --plot FILE); axis texts German / English.
@@ -244,6 +286,10 @@ PLOTS = {
     "speed-fluctuation": TablePlot(
         "crank_angle_deg", (("work_excess", "e(α)"),), "Kurbelwinkel α / crank angle α (°)",
         "Überschußarbeit e / excess work e (Q·r)", "Zwei Kurbeln unter 90° / two cranks at 90°"),
+    "speed-extremes": TablePlot(
+        "alpha_min_deg", (("e_min", "e_min"), ("e_min_drawn", "e_min, Wellenlinie / wave")),
+        "Kurbelwinkel α / crank angle α (°)", "Überschußarbeit e / excess work e (Q·r)",
+        "Kleinste Werte von e / least e", points_only=True),
 }
 
 TABLES = {
@@ -255,6 +301,7 @@ TABLES = {
     "tangential-pressure": tangential_pressure_table,
     "flywheel-coefficients": flywheel_coefficients_table,
     "speed-fluctuation": speed_fluctuation_table,
+    "speed-extremes": speed_extremes_table,
 }
 
 

@@ -3,7 +3,9 @@
 References: the idealised cycle written out here (suction and exhaust at constant pressure, polytropes
 p V^n = const, ignition at constant volume or combustion at constant pressure), the exact piston law
 x = (1 − cos θ + L/r − sqrt((L/r)² − sin² θ))/2 and the mass pressure q (cos θ + (r/L) cos 2θ); seed 001's
-"about 25 at" for the explosion engine's highest pressure.
+"about 25 at" for the explosion engine's highest pressure; its early release ("In e wurde die Auslaßöffnung
+freigegeben", before the dead centre f) and Abb. 1058's caption (a–a, b–b "für eine Viertaktmaschine mit
+Selbstzündung").
 """
 
 
@@ -23,7 +25,8 @@ def piston(theta, k):
 
 
 def cycle(stroke, x, g, engine):
-    """Absolute pressure (at) of the idealised cycle, 30 digits."""
+    """Absolute pressure (at) of the idealised cycle, 30 digits: on the expansion stroke beyond the release x_e
+    the straight line from e to the exhaust pressure at the dead centre."""
     eps, n = mpmath.mpf(g["compression_ratio"]), mpmath.mpf(g["exponent"])
     vc = 1 / (eps - 1)
     v = vc + x
@@ -34,6 +37,10 @@ def cycle(stroke, x, g, engine):
         return mpmath.mpf(g["exhaust"])
     if stroke == 1:
         return pa * ((1 + vc) / v) ** n
+    xe = mpmath.mpf(g["release"])
+    if x > xe:
+        pe = cycle(2, xe, g, engine)
+        return pe + (mpmath.mpf(g["exhaust"]) - pe) * (x - xe) / (1 - xe)
     if engine == "explosion":
         return mpmath.mpf(g["max_pressure"]) * (vc / v) ** n
     pc, vd = pa * eps ** n, mpmath.mpf(g["cutoff"]) * vc
@@ -42,11 +49,7 @@ def cycle(stroke, x, g, engine):
 
 @pytest.fixture(scope="module", params=["explosion", "diesel"])
 def case(request):
-    kw = {"engine": request.param, "parts": 12}
-    if request.param == "diesel":
-        kw["compression_ratio"] = 14.0
-    fig = get("four-stroke").figure(**kw)
-    return request.param, fig
+    return request.param, get("four-stroke").figure(engine=request.param, parts=12, over_pressure=True)
 
 
 def _height(fig, name):
@@ -71,7 +74,51 @@ def test_brauer_points_lie_on_the_polytropes(case):
     for j in range(m + 1):
         v = volume(fig, f"eP{j}")
         assert pressure(fig, f"eP{j}") == pytest.approx(float(pd * (vd / v) ** n), rel=1e-11)
-    assert volume(fig, f"eP{m}") == pytest.approx(float(1 + vc), rel=1e-12)   # lands on the crank-end dead centre
+    # lands on the release e, x_e = 0.9 of the stroke (seed 001: "In e wurde die Auslaßöffnung freigegeben")
+    assert volume(fig, f"eP{m}") == pytest.approx(float(vc + mpmath.mpf("0.9")), rel=1e-12)
+
+
+def test_the_diesel_compresses_to_its_own_epsilon():
+    """``--engine diesel`` alone is a Diesel: ε = 14 (it kept the explosion engine's 5, compression end 7.29 at)."""
+    g = get("four-stroke").figure(engine="diesel", parts=4, steps=4).replay.givens
+    assert g["compression_ratio"] == 14.0
+    fig = get("four-stroke").figure(engine="diesel", parts=4, steps=4)
+    assert pressure(fig, "cP4") == pytest.approx(float(mpmath.mpf("0.9") * mpmath.mpf(14) ** mpmath.mpf("1.3")),
+                                                 rel=1e-12)     # 27.6 at
+    assert get("four-stroke").figure(parts=4, steps=4).replay.givens["compression_ratio"] == 5.0
+
+
+@pytest.mark.parametrize("engine", ["explosion", "diesel"])
+def test_the_exhaust_opens_early_at_e(engine):
+    """Seed 001: the expansion ends in e before the dead centre; the pressure falls from e to f on the dead centre."""
+    fig = get("four-stroke").figure(engine=engine, parts=12, steps=6, release=0.85, over_pressure=True)
+    g, n = fig.replay.givens, 12
+    vc = 1 / (mpmath.mpf(g["compression_ratio"]) - 1)
+    assert volume(fig, "eP6") == pytest.approx(float(vc + mpmath.mpf("0.85")), rel=1e-12)
+    pe = cycle(2, mpmath.mpf("0.85"), g, engine)
+    assert pressure(fig, "eP6") == pytest.approx(float(pe), rel=1e-11)
+    assert pressure(fig, "f") == pytest.approx(g["exhaust"], rel=1e-12)
+    assert volume(fig, "f") == pytest.approx(float(1 + vc), rel=1e-12)
+    k = mpmath.mpf(g["rod_ratio"])
+    beyond = [i for i in range(n + 1) if piston(mpmath.pi * i / n, k) > mpmath.mpf("0.85")]
+    assert beyond == [9, 10, 11, 12]     # 135° on: x = 0.879
+    for i in beyond:   # the expansion stroke's a-a on the straight line e-f (a constructed intersection)
+        want = cycle(2, piston(mpmath.pi * (2 * n + i) / n, k), g, engine)
+        assert _height(fig, f"A2.{i}") == pytest.approx(float(want), rel=1e-9), i
+    # released at the dead centre (release 1), the last reading of the expansion is e itself
+    late = get("four-stroke").figure(engine=engine, parts=12, steps=6, release=1.0, over_pressure=True)
+    assert _height(late, "A2.12") == pytest.approx(pressure(late, "eP6"), rel=1e-9)
+    assert pressure(late, "eP6") > 2 * g["exhaust"]
+
+
+def test_a_a_and_b_b_are_the_diesels_as_in_abb_1058():
+    """Abb. 1058 draws a–a, b–b for the engine with self-ignition: the explosion engine's plate is Abb. 1056 alone."""
+    explosion = get("four-stroke").figure(parts=4, steps=4)
+    diesel = get("four-stroke").figure(engine="diesel", parts=4, steps=4)
+    assert "A0.0" not in explosion.replay and "aa0" not in explosion.replay and "tbase" not in explosion.replay
+    assert "A0.0" in diesel.replay and "bb3" in diesel.replay
+    assert "A0.0" in get("four-stroke").figure(parts=4, steps=4, over_pressure=True).replay
+    assert "A0.0" not in get("four-stroke").figure(engine="diesel", parts=4, steps=4, over_pressure=False).replay
 
 
 def test_explosion_peak_is_the_seeds_25_at():
@@ -129,7 +176,7 @@ def test_every_check_passes(case):
 def test_replay_with_other_givens_keeps_the_steps():
     from construct.kernel.protocol import Protocol
 
-    fig = get("four-stroke").figure(parts=4, steps=4)
+    fig = get("four-stroke").figure(parts=4, steps=4, over_pressure=True)
     again = get("four-stroke").replay(Protocol.from_json(fig.protocol.to_json()), max_pressure=30.0)
     assert pressure(again, "eP0") == pytest.approx(30.0, abs=1e-10)
     assert all(c.ok for c in get("four-stroke").checks(again))
@@ -140,6 +187,8 @@ def test_replay_with_other_givens_keeps_the_steps():
     ({"compression_ratio": 40.0}, "compression ratio ε = 40"),
     ({"max_pressure": 5.0}, "must exceed the compression end"),
     ({"engine": "diesel", "compression_ratio": 14.0, "cutoff": 14.0}, "cut-off ratio"),
+    ({"engine": "diesel", "cutoff": 13.0}, "room for the expansion"),
+    ({"release": 0.4}, "release x_e/s = 0.4"), ({"release": 1.1}, "release x_e/s = 1.1"),
     ({"exponent": 2.0}, "polytropic exponent n = 2"),
     ({"steps": 1}, "Brauer steps"),
 ])
@@ -153,3 +202,16 @@ def test_cli_bad_engine_one_line(capsys, tmp_path):
     assert main(["replay", "four-stroke", "--engine", "steam", "--out", str(out)]) == 2
     err = capsys.readouterr().err
     assert len(err.strip().splitlines()) == 1 and "engine" in err and not out.exists()
+
+
+@pytest.mark.parametrize("engine", ["explosion", "diesel"])
+def test_a_sweep_over_the_rod_ratio_reads_every_ordinate(engine):
+    """The working line (c–d, d–e, e–f) is one drawn line: however the rod moves the piston, each ordinate of the
+    working stroke meets it (read off the expansion curve or the drop e–f as the piston stands)."""
+    c = get("four-stroke")
+    fig = c.figure(engine=engine, parts=12, steps=6, over_pressure=True)
+    sweep = fig.protocol.replay(c.rod_ratio_sweep(dict(fig.replay.givens), [1.5, 3.0, 12.0]))
+    from construct.figure import Figure
+
+    for checks in c.sweep_checks(Figure(fig.protocol, sweep)):
+        assert all(ch.ok for ch in checks), [ch.name for ch in checks if not ch.ok]

@@ -10,6 +10,7 @@ import math
 import os
 
 import mpmath
+import numpy as np
 import pytest
 
 from construct.cli.main import main
@@ -65,6 +66,28 @@ def test_forward_stroke_t_against_closed_form(tmp_path, capsys):
         assert float(row["T"]) == pytest.approx(float(over_pressure_mp(w, 5) * t_mp(w, 5)), abs=1e-10)
 
 
+@pytest.mark.parametrize("data", [
+    "\ufeffx;p\r\n0;8\r\n0,5;5\r\n1;2\r\n1;1\r\n0,5;1\r\n0;1\r\n0;8\r\n".encode("utf-8"),  # Excel, German
+    "x;p\n0;8,0\n0,5;5,0\n1;2\n1;1\n0,5;1\n0;1\n0;8\n".encode("utf-8"),
+    "x\tp\n0\t8\n0,5\t5\n1\t2\n1\t1\n0,5\t1\n0\t1\n0\t8\n".encode("utf-8"),            # tab-separated
+], ids=["bom-crlf-semicolon", "semicolon", "tab"])
+def test_a_german_spreadsheets_card_reads_as_the_same_card(tmp_path, capsys, data):
+    """'x;p' with decimal commas, a byte-order mark, CRLF: the same card as STRAIGHT, the same table."""
+    path = tmp_path / "karte.csv"
+    path.write_bytes(data)
+    german = table(["--parts", "6", "--method", "exact", "--indicator", str(path)], capsys)
+    plain = table(["--parts", "6", "--method", "exact", "--indicator", write(tmp_path, STRAIGHT)], capsys)
+    assert german[0] == plain[0] == 0 and german[1].out == plain[1].out
+    assert load_indicator(str(path)).points == load_indicator(write(tmp_path, STRAIGHT)).points
+
+
+def test_decimal_commas_without_semicolons_are_explained(tmp_path, capsys):
+    code, out = table(["--indicator", write(tmp_path, "x,p\n0,8\n0,5,5\n1,2\n")], capsys)
+    assert code == 2 and "decimal commas need ';'" in out.err and out.err.count("\n") == 1
+    code, out = table(["--indicator", write(tmp_path, "x p\n0 8\n")], capsys)
+    assert code == 2 and "'x;p' with decimal commas" in out.err
+
+
 def test_revolution_with_cranks_against_closed_form(tmp_path, capsys):
     code, out = table(["--revolution", "--machine", "compound", "--indicator", write(tmp_path, STRAIGHT)], capsys)
     assert code == 0
@@ -102,7 +125,7 @@ BROKEN = [
     ("x,p\n0,8\n0.5,5\n0.3,4\n1,2\n1,1\n0,1\n0,8\n", "row 4: x = 0.3 turns back on the forward"),
     ("x,p\n0.2,8\n0.5,5\n1,2\n1,1\n0.2,1\n0.2,8\n", "must reach both dead centres"),
     ("x,p\n0,3\n0.5,3\n1,3\n0.2,3\n0,3\n", "encloses nothing"),
-    ("", "the header must be 'x,p', got 'an empty file'"),
+    ("", "the header must be 'x,p' (or 'x;p' with decimal commas, as a German spreadsheet exports it), got 'an empty file'"),
 ]
 
 
@@ -146,8 +169,9 @@ def test_size_bound(tmp_path):
         read_bounded_text(p, 50)
     big = tmp_path / "big.csv"
     big.write_bytes(b"x,p\n" + b"0" * 1_000_001)
-    with pytest.raises(InputFileError, match="larger than"):
+    with pytest.raises(InputFileError, match="larger than") as err:
         load_indicator(str(big))
+    assert "the most an indicator diagram is read" in str(err.value)   # it said "a indicator diagram"
 
 
 def test_indicator_only_where_it_applies(tmp_path, capsys):
@@ -220,3 +244,67 @@ def test_indicator_diagram_construction_draws_the_card(tmp_path, capsys):
     bad = write(tmp_path, "x,p\n0,8\n0.5,5\n1,2\n1,1\n0.5,1\n0,1\n", "open.csv")
     assert main(["check", "indicator-diagram", "--indicator", bad]) == 2
     assert "not closed" in capsys.readouterr().err
+
+
+def _dense_card(n: int) -> str:
+    """STRAIGHT's loop with n points on each stroke (the same lines, more digitised points)."""
+    fwd = [(i / (n - 1), 8 - 6 * i / (n - 1)) for i in range(n)]
+    back = [(1 - i / (n - 1), 1.0) for i in range(n)]
+    return "x,p\n" + "".join(f"{x!r},{p!r}\n" for x, p in fwd + back + [fwd[0]])
+
+
+def test_a_card_of_thousands_of_points_costs_no_more_steps(tmp_path):
+    """The card is traced in one step per line: 2,500 points a stroke make the figure no longer than 20 (a 5,000-point
+    card took 11 s and 290 MB, 11 steps a point); the readings are the same lines' (the straight card's)."""
+    from construct.constructions import get
+
+    small, large = (get("indicator-diagram").figure(indicator=write(tmp_path, _dense_card(n), f"c{n}.csv"))
+                    for n in (20, 2500))
+    assert len(large.protocol.steps) == len(small.protocol.steps)
+    assert all(c.ok for c in large.checks())
+    code = main(["table", "tangential-pressure", "--rod-ratio", "5", "--parts", "6", "--method", "exact",
+                 "--indicator", write(tmp_path, _dense_card(2500), "big.csv"), "--format", "csv"])
+    assert code == 0
+
+
+def test_a_traced_card_replays_in_a_sweep_as_set_by_set(tmp_path):
+    """The trace runs on arrays like every op of the table: a tangential-pressure figure from a card, replayed over
+    three rod ratios at once, reads in each set what the figure made at that ratio alone reads."""
+    from construct.constructions import get
+
+    c = get("tangential-pressure")
+    card = write(tmp_path, STRAIGHT)
+    fig = c.figure(indicator=card, parts=6, method="exact")
+    ratios = [4.0, 5.0, 6.0]
+    sweep = fig.protocol.replay({**fig.replay.givens, "rod_ratio": np.asarray(ratios)})
+    assert not sweep.elementwise  # no op ran once per set
+    for i, ratio in enumerate(ratios):
+        alone = c.figure(indicator=card, parts=6, method="exact", rod_ratio=ratio)
+        ours, theirs = sweep.take(i), alone.replay
+        traced = [name for step in alone.protocol.steps if step.op in ("trace", "vertex") for name in step.outputs]
+        assert len(traced) >= 2
+        for name in traced:
+            a, b = ours[name], theirs[name]
+            pa, pb = (getattr(a, "points", [a]), getattr(b, "points", [b]))
+            assert len(pa) == len(pb) > 0
+            assert all(math.isclose(float(u.x), v.x, abs_tol=1e-12) and math.isclose(float(u.y), v.y, abs_tol=1e-12)
+                       for u, v in zip(pa, pb)), name
+        assert [ch.measured for ch in c.checks(type(alone)(alone.protocol, ours))] == pytest.approx(
+            [ch.measured for ch in alone.checks()], rel=1e-9, abs=1e-12)
+
+
+def test_a_trace_that_would_differ_in_length_between_sets_is_refused():
+    """A card whose first point reaches the dead centre in one set of a sweep and not in another would be a chain of
+    another length per set: the trace names the sets instead of drawing one wrong."""
+    from construct.kernel.curve_ops import trace_op
+    from construct.kernel.errors import GeometryError
+    from construct.kernel.geometry import ArrayMath, Point
+
+    head, crank = Point(np.zeros(2), np.zeros(2)), Point(np.ones(2), np.zeros(2))
+    givens = {"x0": np.array([0.0, 0.1]), "x1": 1.0, "p0": 2.0, "p1": 1.0, "s": 1.0, "u": 1.0}
+    params = {"xs": ["x0", "x1"], "ps": ["p0", "p1"], "stroke": ["s"], "pressure": ["u"], "extend": True}
+    with pytest.raises(GeometryError, match="1 of 2 sets"):
+        trace_op((head, crank, head, crank), params, givens, {}, ArrayMath(2))
+    givens["x0"] = np.array([0.1, 0.2])  # short of the head end in both: extended in both, values set by set
+    (chain,) = trace_op((head, crank, head, crank), params, givens, {}, ArrayMath(2))
+    assert len(chain.points) == 3 and np.allclose(chain.points[1].x, [0.1, 0.2])

@@ -388,3 +388,90 @@ def test_the_work_line_keeps_its_marks_while_the_work_is_stepped_on():
         assert not scene.faded(step[name], k), name
     # once the stage is done its helpers collapse (the speeds are taken from M and E as inputs)
     assert scene.faded(step["iE19"], len(fig.protocol.steps) + 1)
+
+
+def e_mp(alpha, ratio, dead_centre="crank-end"):
+    """e(α)/(Q r) for a real angle α (mpmath), from the first crank's dead centre: both pistons' travel less 4α/π."""
+    a0 = mpmath.pi if dead_centre == "crank-end" else mpmath.mpf(0)
+    h = mpmath.pi / 2
+    return travel_mp(a0, a0 + alpha, ratio) + travel_mp(a0 + h, a0 + h + alpha, ratio) - 4 * alpha / mpmath.pi
+
+
+def extremum_mp(guess_deg, ratio):
+    """Where e'(α) = 0 near *guess_deg* (degrees), and e there: mpmath's root finder on the derivative."""
+    with mpmath.workdps(30):
+        a = mpmath.findroot(lambda t: mpmath.diff(lambda u: e_mp(u, ratio), t), mpmath.radians(guess_deg))
+        return float(mpmath.degrees(a)), float(e_mp(a, ratio))
+
+
+def test_the_finite_rods_extremes_over_the_turn_on_the_command_line(capsys):
+    """§ 147 at L/r 4.5, from B1: the least e -0.04190 at 19.07°, the greatest +0.26694 at 250.93°."""
+    a_min, e_min = extremum_mp(19.0, 4.5)
+    a_max, e_max = extremum_mp(251.0, 4.5)
+    assert (round(a_min, 2), round(e_min, 5), round(a_max, 2), round(e_max, 5)) == (19.07, -0.0419, 250.93, 0.26694)
+    assert main(["table", "speed-extremes", "--rod-ratio", "4.5", "--fluctuation", "0.1", "--format", "json"]) == 0
+    turn = json.loads(capsys.readouterr().out)[-1]
+    assert turn["range"] == "turn"
+    # at a flat extreme a float search finds the angle to about sqrt(eps) rad (1e-6 deg); the value to eps
+    assert turn["alpha_min_deg"] == pytest.approx(a_min, abs=1e-4) and turn["e_min"] == pytest.approx(e_min, abs=1e-12)
+    assert turn["alpha_max_deg"] == pytest.approx(a_max, abs=1e-4) and turn["e_max"] == pytest.approx(e_max, abs=1e-12)
+    assert turn["swing"] == pytest.approx(e_max - e_min, abs=1e-10)          # 0.30884 Q r
+    assert turn["delta"] == pytest.approx(0.1 * (e_max - e_min), abs=1e-11)  # k times the swing
+    # read off the drawn wave: a French curve through points 10 degrees apart
+    assert turn["e_min_drawn"] == pytest.approx(e_min, abs=2e-4) and turn["e_max_drawn"] == pytest.approx(e_max, abs=5e-4)
+
+
+def test_check_reads_the_finite_rods_extremes_off_the_wave(capsys):
+    assert main(["check", "two-cranks", "--rod-ratio", "4.5", "--json"]) == 0
+    checks = {c["name"]: c for c in json.loads(capsys.readouterr().out)["checks"]}
+    a_min, e_min = extremum_mp(19.0, 4.5)
+    low = checks["e_min over the turn, read off the wave (L/r = 4.5, the least speed)"]
+    assert low["expected"] == pytest.approx(e_min, abs=1e-10) and low["ok"]
+    angle = checks["angle of e_min from the crank-end dead centre (L/r = 4.5, read off the wave, deg)"]
+    assert angle["expected"] == pytest.approx(a_min, abs=1e-4) and abs(angle["error"]) < 1.0
+    assert checks["swing e_max - e_min over the turn (L/r = 4.5, read off the wave)"]["ok"]
+
+
+@pytest.mark.parametrize("ratio", [None, 4.5])
+def test_the_pump_drive_turns_the_speeds_round(ratio):
+    """§ 146: "Bei der Bewegung von Pumpen durch die Kurbelwelle würde das Gegentheil stattfinden": r − g e."""
+    rod = {"infinite_rod": True} if ratio is None else {"rod_ratio": ratio}
+    pump = get("two-cranks").figure(parts=12, drive="pump", **rod)
+    g = pump.replay.givens
+    gain = g["magnify"] * g["fluctuation"]
+    for j in range(24):
+        assert speed_radius(pump, j) == pytest.approx(1 - gain * excess_mp(j, 12, ratio), abs=1e-11), j
+    assert all(c.ok for c in pump.checks())
+    if ratio is None:   # the greatest speed at alpha1 = 19° 12', the least at alpha2 = 70° 48'
+        rp = pump.replay
+        w1, w2 = rp["O"].distance(rp["K.W1"]), rp["O"].distance(rp["K.W2"])
+        assert w1 > 1.0 > w2
+        assert "größte" in next(s.caption.de for s in pump.protocol.steps if "K.M1" in s.outputs)
+
+
+def test_the_crossheads_first_order_term_as_the_book_writes_it():
+    """Seed 002: L1 + L2 + L3 = (m1 + m2)(v² − v1²)/2 + m2 (r/l)(∓ sin α ± cos α) sin 2α v²/2 (first quadrant from
+    B1: the upper signs) = Q r e; v_full with the crossheads' exact speeds, from the piston law's derivative."""
+    fig = get("two-cranks").figure(rod_ratio=5.0, parts=12, fluctuation=0.1)
+    mu, k, lam = 0.2, 0.1, 0.2
+    rows = speeds(fig, crosshead_share=mu)
+    with mpmath.workdps(30):
+        for row in rows[1:6]:   # the first quadrant
+            a = mpmath.radians(row["crank_angle_deg"])
+            e = e_mp(a, 5.0)
+            book = (1 + 2 * k * e) / (1 + mu * lam * (-mpmath.sin(a) + mpmath.cos(a)) * mpmath.sin(2 * a))
+            assert row["v_first"] == pytest.approx(float(mpmath.sqrt(book)), abs=1e-10)
+            c1 = mpmath.diff(lambda t: position_mp(t, 5.0), mpmath.pi + a)        # crosshead speeds over v
+            c2 = mpmath.diff(lambda t: position_mp(t, 5.0), 3 * mpmath.pi / 2 + a)
+            full = (1 - mu + mu * 1 + 2 * k * e) / (1 - mu + mu * (c1 ** 2 + c2 ** 2))
+            assert row["v_full"] == pytest.approx(float(mpmath.sqrt(full)), abs=1e-10)
+
+
+def test_table_speed_fluctuation_with_the_speeds(capsys):
+    assert main(["table", "speed-fluctuation", "--rod-ratio", "5", "--step", "45", "--fluctuation", "0.1",
+                 "--crosshead-share", "0.2", "--drive", "pump", "--format", "csv"]) == 0
+    out, err = capsys.readouterr()
+    lines = out.splitlines()
+    assert lines[0] == "crank_angle_deg,work_excess,v_book,v_exact,v_first,v_full" and "pumps" in err
+    angle, e, book = (float(v) for v in lines[3].split(",")[:3])     # 90 degrees... the row at 90
+    assert angle == 90.0 and book == pytest.approx(1 - 0.1 * e, abs=1e-12)

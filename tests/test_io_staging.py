@@ -365,3 +365,78 @@ def test_a_failed_gallery_removes_the_folders_it_made_for_its_target(tmp_path, m
             new.mkdir()
             raise RuntimeError("a figure failed")
     assert list(tmp_path.iterdir()) == []
+
+
+# -- all or nothing: staged_output's commit, its messages, a folder that cannot be moved --------------------------
+
+
+def _old_output(root: Path) -> Path:
+    target = root / "out"
+    with output.staged_output(target, recognise=lambda p: True, described="ours") as stage:
+        for name in ("animated.svg", "final.svg", "player.html"):
+            (stage / name).write_text("old " + name)
+    return target
+
+
+def test_a_commit_that_fails_halfway_puts_the_previous_files_back(tmp_path, monkeypatch):
+    """An I/O error at the second move: the folder holds the previous files, all of them, and no new one (it held
+    a new animated.svg beside an old final.svg)."""
+    target = _old_output(tmp_path)
+    real, calls = os.replace, []
+
+    def failing(src, dst):
+        if str(src).startswith(str(target / STAGING_PREFIX)) and Path(dst).parent == target:
+            calls.append(dst)
+            if len(calls) == 2:
+                raise OSError(28, "No space left on device", str(dst))
+        return real(src, dst)
+
+    monkeypatch.setattr(output.os, "replace", failing)
+    with pytest.raises(OutputError, match="No space left on device; the previous files are kept"):
+        with output.staged_output(target, recognise=lambda p: True, described="ours") as stage:
+            for name in ("animated.svg", "final.svg", "player.html"):
+                (stage / name).write_text("new " + name)
+    monkeypatch.setattr(output.os, "replace", real)
+    assert sorted(p.name for p in target.iterdir()) == ["animated.svg", "final.svg", "player.html"]
+    assert {p.read_text() for p in target.iterdir()} == {"old animated.svg", "old final.svg", "old player.html"}
+
+
+def test_ctrl_c_during_a_commit_waits_until_the_new_files_are_all_in(tmp_path, monkeypatch):
+    """Ctrl-C between two moves arrives after the last one: the new output whole, then the interruption."""
+    target = _old_output(tmp_path)
+    real, sent = os.replace, []
+
+    def interrupted(src, dst):
+        if Path(dst).parent == target and not sent:
+            sent.append(True)
+            signal.raise_signal(signal.SIGINT)
+        return real(src, dst)
+
+    monkeypatch.setattr(output.os, "replace", interrupted)
+    with pytest.raises(KeyboardInterrupt):
+        with output.staged_output(target, recognise=lambda p: True, described="ours") as stage:
+            for name in ("animated.svg", "final.svg", "player.html"):
+                (stage / name).write_text("new " + name)
+    assert sent and {p.read_text() for p in target.iterdir()} == {"new animated.svg", "new final.svg",
+                                                                  "new player.html"}
+
+
+def test_a_failure_where_there_was_no_previous_folder_says_nothing_was_written(tmp_path):
+    with pytest.raises(OutputError) as err:
+        with output.replaced_folder(tmp_path / "new", recognise=lambda p: True, described="a demo") as new:
+            new.mkdir()
+            raise OSError(28, "No space left on device", str(new / "a.svg"))
+    assert "nothing was written" in str(err.value) and "previous" not in str(err.value)
+
+
+def test_an_unmovable_gallery_is_refused_before_anything_is_built(small_plan, tmp_path, cli, monkeypatch):
+    """A folder the swap cannot move (not writable: its ".." must change) is said at once, not after the build."""
+    target = tmp_path / "g"
+    assert cli("gallery", "--out", target).code == 0
+    built = []
+    monkeypatch.setattr(gallery, "_build_and_check", lambda *a, **k: built.append(a))
+    real = os.access
+    monkeypatch.setattr(output.os, "access", lambda p, mode: False if Path(p) == target.resolve() else real(p, mode))
+    code, _, err = cli("gallery", "--out", target)
+    assert code == 2 and "not writable" in err and "nothing was built" in err and not built
+    assert (target / "index.html").is_file()

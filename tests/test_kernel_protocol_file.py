@@ -201,7 +201,15 @@ def test_the_op_table_declares_the_kinds_its_functions_make():
     b.polyline("q", ["D", "E", "F"])
     b.area_between("between", "q", "p", "A", "C")
     b.planimeter("reading", "between")
-    figs.append(b.figure())
+    # a traced card and a point picked off it (the indicator card's trace, the piston force's J)
+    b2 = Builder("traced", givens={"s": 1.0, "u": 1.0, "x0": 0.0, "p0": 2.0, "x1": 1.0, "p1": 1.0})
+    b2.given_point("H", 0.0, 0.0)
+    b2.given_point("K", 2.0, 0.0)
+    b2.record("curve", "trace", ("H", "K", "H", "K"), ("t",), {"xs": ("x0", "x1"), "ps": ("p0", "p1"), "stroke": ("s",),
+              "pressure": ("u",), "stroke_factor": 2.0}, "übertragen", "traced")
+    b2.record("curve", "vertex", ("t",), ("v",), {"index": 1}, "Punkt", "point")
+    assert b2["v"] == construct.Point(2.0, 1.0)
+    figs += [b.figure(), b2.figure()]
     seen = set()
     for fig in figs:
         for step in fig.protocol.steps:
@@ -530,3 +538,21 @@ def test_an_error_quotes_a_huge_multiline_caption_on_one_short_line(tmp_path, ca
     assert main(["check", "--protocol", str(path)]) == 2
     err = capsys.readouterr().err
     assert len(err.splitlines()) == 1 and len(err) < 2100 and "first line second line" in err, err[:300]
+
+
+def test_what_this_library_writes_it_reads_back(tmp_path, monkeypatch, cli):
+    """A protocol larger than the reader's limit is refused when written, before the folder is touched: the same
+    limit as construct check and replay --protocol read (a 280,000-step protocol of 71 MB was written, then
+    refused by both)."""
+    import construct.kernel.protocol as protocol_module
+    from construct.constructions import get
+    from construct.kernel.errors import OutputError
+
+    text = get("crank").figure(parts=6).protocol.to_json()
+    monkeypatch.setattr(protocol_module, "MAX_PROTOCOL_BYTES", len(text.encode()) - 1)
+    with pytest.raises(OutputError, match="more than the 0 MiB a protocol file may have to be read back"):
+        get("crank").figure(parts=6).protocol.to_json()
+    code, _, err = cli("replay", "crank", "--parts", "6", "--out", tmp_path / "c")
+    assert code == 2 and "read back" in err and not (tmp_path / "c").exists()
+    monkeypatch.setattr(protocol_module, "MAX_PROTOCOL_BYTES", len(text.encode()))
+    assert get("crank").figure(parts=6).protocol.to_json() == text

@@ -110,9 +110,12 @@ def test_readme_example_in_a_fresh_project(project: pytest.Pytester) -> None:
     # 5. The README's change: a shorter rod slides the stroke towards the shaft -- a geometric change, not a
     #    uniform scale (which fitting the drawing to its view would hide): named step by step, and in the
     #    protocol by the figure's own units.
+    # As the README says it: "Change ROD to 3.5" -- one edit, and the test's own assertion follows it (a rod
+    # written twice left the walkthrough stopping at 'assert 3.5 == 4.0' before the step diff it promises).
     source = project.path / "test_stroke.py"
-    source.write_text(source.read_text(encoding="utf-8").replace("middle_of_stroke(4.0)", "middle_of_stroke(3.5)")
-                      .replace("pytest.approx(4.0)", "pytest.approx(3.5)"), encoding="utf-8")
+    text = source.read_text(encoding="utf-8")
+    assert text.count("ROD = 4.0") == 1 and "4.0" not in text.replace("ROD = 4.0", "")
+    source.write_text(text.replace("ROD = 4.0", "ROD = 3.5"), encoding="utf-8")
     # the edit keeps the file's size, and the runs before may have cached its bytecode within the same second:
     # a cache that looks current would run the old test
     shutil.rmtree(project.path / "__pycache__", ignore_errors=True)
@@ -123,6 +126,7 @@ def test_readme_example_in_a_fresh_project(project: pytest.Pytester) -> None:
     assert "moved      D0: point moved by 0.5: (3, 0) -> (2.5, 0)" in out
     assert "moved      M: point moved by 0.5: (4, 0) -> (3.5, 0)" in out
     assert not re.search(r"moved +O:", out)  # the shaft itself stays where it was
+    assert "3.5 == 4.0" not in out
 
 
 def test_update_drops_stale_frames_and_name_collisions(pytester: pytest.Pytester) -> None:

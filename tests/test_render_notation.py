@@ -33,6 +33,7 @@ REPOSITORY_NAMES = re.compile(r"\bseed\b|DESIGN|§ ?5\b", re.I)
 BOOK_TITLES = {
     "000": "Darstellung der Massendrücke",   # seeds/000: "## Anhang II. ### Darstellung der Massendrücke."
     "001": "Einfluß der Massenkräfte",       # seeds/001: "#### b) Einfluß der Massenkräfte."
+    "001 c": "Die Kraftwirkungen in Verbrennungsmaschinen",   # seeds/001: "c) Die Kraftwirkungen in ..."
     "002": "§ 146",                          # seeds/002: "§. 146", "§. 147. Einfluss der Länge der Schubstangen"
     "004": "Baumann",                        # seeds/004: "Autor: A. Baumann"
 }
@@ -46,7 +47,8 @@ FOLLOWS = {
     "piston-force": [("001", "Abb. 1055")],
     "tangential-pressure": [("004", "Fig. 26")],
     "two-cranks": [("002", "Fig. 566")],
-    "four-stroke": [("001", "Abb. 1056")],
+    "four-stroke": [("001 c", "Abb. 1056")],
+    "effective-work": [("004", "Fig. 27")],
     "flywheel-rim": [("004", "Fig. 28")],
 }
 

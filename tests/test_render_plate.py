@@ -231,8 +231,9 @@ def test_flywheel_plate_is_baumanns_half_section_lettered_and_hatched():
 
 
 def test_four_stroke_plate_marks_the_dead_centres_and_carries_a_pressure_scale():
-    # Abb. 1056: over two revolutions the strokes change at 180°, 360°, 540°; the over-pressure read in at
-    texts = set(_texts(_plate_svg("four-stroke")))
+    # Abb. 1058 (the Diesel's; Abb. 1056 is the explosion engine's p-V diagram alone): over two revolutions the
+    # strokes change at 180°, 360°, 540°; the over-pressure read in at
+    texts = set(_texts(_plate_svg("four-stroke", engine="diesel")))
     assert {"0°", "180°", "360°", "540°", "720°", "at", "0", "5", "10", "15", "20"} <= texts
     assert {"Ansaugen", "Verdichten", "Arbeiten", "Auspuffen"} <= texts
 

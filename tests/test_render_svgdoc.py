@@ -22,7 +22,7 @@ ELEMENT = re.compile(r"<(svg|g|circle|line|path|text|tspan|rect|set|animate\w*|c
                      r"ellipse|filter|fe\w+|style)(?![\w-])")
 # Modules that read SVG (the semantic diff) or show it read from files (the golden failure page):
 # their strings are patterns and messages, never output.
-READERS = {"regress/svgdiff.py", "regress/svgdiff/parse.py", "regress/pytest_plugin.py", "regress/lint/sheet.py",
+READERS = {"regress/svgdiff.py", "regress/svgdiff/parse.py", "regress/svgdiff/source.py", "regress/pytest_plugin.py", "regress/lint/sheet.py",
            "render/wire.py"}  # wire.py reads the drawn numbers back out of the SVG the player page drew
 # HTML pages carry their own <style> sheets: that is HTML, not SVG.
 HTML_STYLE = {"render/player.py", "gallery.py", "render/site.py"}

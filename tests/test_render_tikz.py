@@ -127,6 +127,13 @@ def test_letters_are_set_in_tex(text, expected):
     assert tex_text(text) == expected
 
 
+def test_a_plates_indices_are_set_below_the_line_as_in_the_svg(piston_force):
+    """The piston force's P_b and P = F·p_ü: TeX subscripts, as the SVG plate lowers them, never a literal '_'."""
+    tikz = (piston_force / "final.tikz").read_text(encoding="utf-8")
+    assert "\\_" not in tikz
+    assert "{P\\textsubscript{b}}" in tikz and "p\\textsubscript{\\\"u}}" in tikz
+
+
 def test_a_tikz_of_a_figure_of_ones_own_and_bad_options(tmp_path):
     from construct import Builder
 
@@ -170,8 +177,10 @@ def test_the_standalone_plate_compiles_without_missing_characters(piston_force, 
     log = compile_tex(tmp_path, "final.tex", engine)
     assert "Missing character" not in log and "Font shape" not in log
     pypdf = pytest.importorskip("pypdf")
-    page = pypdf.PdfReader(tmp_path / "final.pdf").pages[0]
-    assert float(page.mediabox.width) * 25.4 / 72 == pytest.approx(120.0, abs=0.05)
+    pages = pypdf.PdfReader(tmp_path / "final.pdf").pages
+    assert len(pages) == 1  # a page a hair smaller than the picture left a blank first page and the plate on a second
+    assert float(pages[0].mediabox.width) * 25.4 / 72 == pytest.approx(120.0, abs=0.05)
+    assert "Overfull" not in log  # nothing but the picture in its paragraph (a stray space made it 2.2 pt too wide)
 
 
 def marks_document(example: str, folder: Path) -> str:

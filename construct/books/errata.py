@@ -6,14 +6,21 @@ and the roots of section c), via :mod:`construct.constructions.analytic`), and t
 value is judged by its distance in units of its last printed place:
 
 - ``agrees``: within half a unit (what correct rounding gives);
-- ``slip``: up to 2 units (truncation, rounding of an intermediate, slide rule);
+- ``follows``: the printed value comes out exactly (to its last place) of another
+  printed value the note names -- a rounded intermediate, a wrong input carried
+  on -- however near or far it lies;
+- ``slip``: up to 2 units (truncation, rounding, slide rule) with no printed value
+  that gives it exactly; or a value correct to one place fewer, padded with a 0;
 - more than 2 units: one of the classes a historian can cite (:data:`CLASS_MEANINGS`) --
   ``typesetting`` (a digit, a sign, a stray figure: the author's own later use or
   sums show the right value), ``arithmetic`` (the author's own computation from
-  his own inputs goes wrong), ``follows`` (the value follows from another printed,
-  rounded or itself wrong, value), ``drawing`` (probably read off a drawing: no
-  computation from the stated equations gives it), ``unexplained`` (none of these
-  found).
+  his own inputs goes wrong), ``drawing`` (probably read off a drawing: no
+  computation from the stated equations gives it), ``ambiguous`` (two readings
+  fit the evidence: the note gives both), ``unexplained`` (none of these found).
+
+The rules (:data:`RULES`, ``construct errata --classes``) are the same for every
+text: a trailing 5 one place beyond its table column is the author's half
+(:func:`construct.books.printed.in_halves`); one cause, one class.
 
 Where a deviation's cause can be seen, the note names it: computed from the
 book's own printed (rounded) intermediates, truncated instead of rounded,
@@ -25,13 +32,13 @@ author carries the wrong form on).
 >>> rows = {(e.table, e.row, e.column): e for e in errata()}
 >>> e = rows["Tabelle 1", "180°", "cos ω + r/L·cos 2ω (L/r=6)"]
 >>> e.printed, round(e.true, 6), round(e.units, 2), e.class_
-('-0.8334', -0.833333, -0.67, 'slip')
+('-0.8334', -0.833333, -0.67, 'follows')
 >>> e.note
 'computed from printed intermediates: -1 + 0.1666 = -0.8334'
 >>> classify(0.5), classify(-1.7), classify(2.01)
 ('agrees', 'slip', 'unexplained')
->>> classify(2.01, "typesetting"), classify(1.0, "typesetting")
-('typesetting', 'slip')
+>>> classify(2.01, "typesetting"), classify(1.0, "typesetting"), classify(1.0, "follows")
+('typesetting', 'slip', 'follows')
 """
 
 from __future__ import annotations
@@ -46,28 +53,47 @@ from typing import Callable
 from ..constructions import analytic
 from ..kernel.errors import InvalidParameter
 from .anhang_ii import printed as seed000
-from .printed import Printed
+from .printed import Printed, in_halves
 
-__all__ = ["CLASS_MEANINGS", "WRONG", "Erratum", "Reading", "errata", "all_errata", "classify", "read_printed", "true_value", "CLASSES", "SOURCES", "errata_of"]
+__all__ = ["CLASS_MEANINGS", "WRONG", "Erratum", "Reading", "errata", "all_errata", "classify", "read_printed",
+           "true_value", "CLASSES", "SOURCES", "errata_of", "RULES"]
 
 #: The other books' errata modules (each has ``entries()``), listed after Anhang II's by :func:`all_errata`.
 SOURCES = ("construct.books.handbook.errata", "construct.books.mechanics.errata", "construct.books.baumann.errata")
 
-#: What each class says about a printed number (or formula); the first two by distance alone.
+#: What each class says about a printed number (or formula).
 CLASS_MEANINGS = {
     "agrees": "within half a unit of the last printed place: correctly rounded",
-    "slip": "within 2 units: truncation, rounding of an intermediate, slide rule",
+    "slip": "within 2 units (truncation, rounding, slide rule) and no printed value gives it exactly; or correct to "
+            "one place fewer and padded with a 0",
+    "follows": "comes out exactly of another printed value (rounded, or itself wrong) that the note names, at any "
+               "distance",
     "typesetting": "a typesetting (or OCR) error: a digit, a sign, a stray figure; the author's own later use, "
                    "sums or neighbours show the right value",
     "arithmetic": "an arithmetic error of the author: his own computation from his own inputs goes wrong "
                   "(and he carries it on)",
-    "follows": "follows from another printed value (rounded, or itself wrong) that the note names",
     "drawing": "probably read off a drawing: no computation from the stated equations gives it",
+    "ambiguous": "two readings fit the evidence (a misprint or a miscalculation; one number wrong or another): "
+                 "the note gives both and does not choose",
     "unexplained": "more than 2 units off and none of the causes above found",
 }
 CLASSES = tuple(CLASS_MEANINGS)
-#: The classes of a printed number that is wrong (more than 2 units off, or a wrong formula).
-WRONG = CLASSES[2:]
+#: The classes a cause can give (a printed number judged beyond agreement, or a wrong formula).
+WRONG = ("follows", "typesetting", "arithmetic", "drawing", "ambiguous", "unexplained")
+
+#: The rules every text's errata follow, as ``construct errata --classes`` prints them.
+RULES = (
+    "The unit is the last printed place, or the step the book rounds to (totals to 50 kg, angles to 10').",
+    "A trailing 5 one place beyond the rest of its table column is the author's half (0,4525 among 0,274 ... is "
+    "0,452 1/2; ·18615 among ·2247, ·1583 is ·1861 1/2): judged to half a unit of the place before it.  In running "
+    "text a number's last printed place is its unit (0,01825, 0,4655).",
+    "A value correct to one place fewer and padded with a 0 (·4140 for ·4142) is a slip, not a wrong figure.",
+    "'follows' names the printed value it comes out of, exactly; without one it is not 'follows'.",
+    "One cause, one class: two numbers with the same explanation have the same class, however far each lies.",
+    "Where two readings fit the evidence, the entry is 'ambiguous' and its note gives both.",
+    "Printed numbers carried on are judged against what the author's own (wrong) inputs give; the note gives the "
+    "value from the right inputs too.",
+)
 
 # Boundaries in units of the last printed place.  They are compared exactly
 # (units are Fractions of the printed value minus the float true value), so a
@@ -160,22 +186,27 @@ def read_printed(text: str, resolution: str | None = None) -> Reading:
         d = Decimal(plain)
         exponent = d.as_tuple().exponent
         assert isinstance(exponent, int)
-        return Reading(Fraction(d), Fraction(10) ** exponent, False, -exponent)
+        unit = Fraction(10) ** exponent if resolution is None else Fraction(resolution)
+        return Reading(Fraction(d), unit, False, -exponent)
     raise InvalidParameter(f"cannot read the printed value {text!r} as a number")
 
 
 def classify(units: float | Fraction, cause: str | None = None) -> str:
-    """Class of a deviation in units of the last printed place; beyond a slip, *cause* (one of :data:`WRONG`)."""
+    """Class of a deviation in units of the last printed place; beyond a slip, *cause* (one of :data:`WRONG`).
+
+    ``follows`` holds at any distance beyond agreement (the value comes out exactly of a named printed one); the
+    other causes only beyond 2 units, within which a deviation is a slip.
+    """
     size = abs(Fraction(units))
+    if cause is not None and cause not in WRONG:
+        raise InvalidParameter(f"cause {cause!r} is not one of {', '.join(WRONG)}")
     if size <= AGREES_WITHIN:
         return "agrees"
+    if cause == "follows":
+        return "follows"
     if size <= SLIP_WITHIN:
         return "slip"
-    if cause is None:
-        return "unexplained"
-    if cause not in WRONG:
-        raise InvalidParameter(f"cause {cause!r} is not one of {', '.join(WRONG)}")
-    return cause
+    return "unexplained" if cause is None else cause
 
 
 def cause_of(note: str) -> str | None:
@@ -183,12 +214,12 @@ def cause_of(note: str) -> str | None:
 
     >>> cause_of("one digit wrong (8 printed for 3; -0.5335): a type (or OCR) error")
     'typesetting'
-    >>> cause_of("rounded to 3 places and padded with 0")
-    'follows'
+    >>> cause_of("computed from printed intermediates: -1 + 0.1666 = -0.8334"), cause_of("rounded to 3 places and padded with 0")
+    ('follows', None)
     """
     if any(k in note for k in ("one digit wrong", "adjacent digits swapped", "sign dropped", "stray leading")):
         return "typesetting"
-    if any(k in note for k in ("computed from printed intermediates", "padded with 0")):
+    if "computed from printed intermediates" in note:
         return "follows"
     if "truncated instead of rounded" in note:
         return "arithmetic"
@@ -428,6 +459,8 @@ def _entry(v: Printed, lookup: Callable[[str, str, str], Printed]) -> Erratum:
             # from his own printed inputs went wrong.
             notes.append(f"the printed intermediates give {intermediate[1]}")
         verdict = classify(units, cause_of("; ".join(notes)))
+        if verdict not in ("agrees", "slip") and any("padded with 0" in n for n in notes):
+            verdict = "slip"   # right to the places it was computed to; the 0 only fills the column
     elif abs(units) == AGREES_WITHIN:
         notes.append("exactly half-way, rounded up" if units > 0 else "exactly half-way, rounded down")
     extra = _quantity_note(v, true, reading)
@@ -499,7 +532,7 @@ def errata() -> list[Erratum]:
     Ordered as the book prints them: Tabelle 1, Tabelle 2, characteristic points,
     tangents (each row by row, column by column), then the formulas in text order.
     """
-    printed = seed000.all_printed()
+    printed = in_halves(seed000.all_printed(), seed000.TABLES)
     index = {(p.table, p.row, p.column): p for p in printed}
 
     def lookup(table: str, row: str, column: str) -> Printed:

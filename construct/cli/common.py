@@ -7,7 +7,7 @@ import math
 from typing import Any
 
 from ..constructions import Construction, Figure, find, get
-from ..kernel.errors import InvalidParameter
+from ..kernel.errors import InvalidParameter, did_you_mean
 from ..kernel.protocol import Protocol
 
 
@@ -131,7 +131,7 @@ SYMBOLS = {"admission": "P", "back_pressure": "P0", "clearance": "s0/s", "compre
            "crank_radius": "R", "filling": "s1/s", "force": "baumann|unit", "force_unit": "LENGTH/kg",
            "kappa": "kappa", "piston_area": "F", "pressure_unit": "LENGTH/at", "rod_length": "L", "rpm": "n",
            "scale": "LENGTH/m", "weight": "G", "b1": "b1/r1", "rim": "h/r1", "compression_ratio": "epsilon",
-           "cutoff": "rho", "dead_centre": "crank-end|head-end", "engine": "explosion|diesel", "exhaust": "p_g",
+           "cutoff": "rho", "release": "x_e/s", "drive": "engine|pump", "efficiency": "eta", "dead_centre": "crank-end|head-end", "engine": "explosion|diesel", "exhaust": "p_g",
            "exponent": "n", "max_pressure": "p", "steps": "N", "suction": "p_a", "cranks": "DEG,DEG",
            "indicator": "FILE.csv", "indicator_crank_side": "FILE.csv", "machine": "single|tandem|compound",
            "piston_area_cover": "F'", "piston_area_crank": "F''", "indicator_lp": "FILE.csv",
@@ -139,14 +139,19 @@ SYMBOLS = {"admission": "P", "back_pressure": "P0", "clearance": "s0/s", "compre
            "lp_admission": "P", "lp_back_pressure": "P0", "lp_compression": "s3/s", "lp_kappa": "kappa"}
 
 #: Help of parameters whose construction does not give one.
-HELPS = {"kappa": "Baumann's kappa = P/B_max, the piston force over the largest acceleration force "
-                  "(tangential-pressure: 8 or 2)",
+HELPS = {"kappa": "Baumann's kappa = P/B_max, the piston force over the largest acceleration force of the rod "
+                  "drawn, B_max = c v²/r (1 + r/L) (his 1,2 for r/L = 1/5; tangential-pressure: 8 or 2)",
          "force": "the piston force: baumann (the indicator diagram less the acceleration force) or unit "
                   "(a unit force; tangential-pressure)"}
 
 
 def _generic_params() -> dict[str, tuple[Any, str]]:
-    """Every other construction parameter, as --its-name-with-dashes: (type of its default, help)."""
+    """Every other construction parameter, as --its-name-with-dashes: (type of its default, help).
+
+    A switch (a bool, or a construction's ``extra["switches"]`` whose default follows from other givens) is
+    ``bool``: ``--name`` and ``--no-name``; a default of None is an optional number (its value follows from
+    other givens, as the four-stroke's compression ratio from the engine).
+    """
     from ..constructions import names
 
     covered = set(PARAM_OPTIONS.values())
@@ -157,16 +162,24 @@ def _generic_params() -> dict[str, tuple[Any, str]]:
         for key, default in c.defaults.items():
             if key in covered or key in out:
                 continue
-            kind = whole_number if isinstance(default, int) and not isinstance(default, bool) else (
-                number if isinstance(default, float) else str)
+            if isinstance(default, bool) or key in c.extra.get("switches", ()):
+                kind: Any = bool
+            elif isinstance(default, int):
+                kind = whole_number
+            else:
+                kind = number if default is None or isinstance(default, float) else str
             out[key] = (kind, helps.get(key) or HELPS.get(key, f"{key.replace('_', ' ')} (default {default!r} in {name})"))
     return out
 
 
 def _add_generic_options(p: argparse.ArgumentParser) -> None:
     for key, (kind, text) in sorted(_generic_params().items()):
-        p.add_argument(f"--{key.replace('_', '-')}", dest=key, type=kind, metavar=SYMBOLS.get(key, key.upper()),
-                       help=text)
+        if kind is bool:
+            p.add_argument(f"--{key.replace('_', '-')}", dest=key, action=argparse.BooleanOptionalAction,
+                           default=None, help=text)
+        else:
+            p.add_argument(f"--{key.replace('_', '-')}", dest=key, type=kind, metavar=SYMBOLS.get(key, key.upper()),
+                           help=text)
 
 
 def given_options(args: argparse.Namespace) -> dict[str, Any]:
@@ -199,6 +212,47 @@ def _named_givens(args: argparse.Namespace) -> dict[str, float]:
             raise InvalidParameter(f"--given {name} must be a finite number, got {value!r}")
         out[name] = v
     return out
+
+
+def construction_given(c: Construction, item: str, *, option: str = "--given") -> tuple[str, Any]:
+    """``NAME=VALUE`` for a parameter of *c*, the value read as the parameter's own kind (its default's type).
+
+    A count (``parts``) takes a whole number, a choice (``force``, ``method``) a word, a switch ``true`` or
+    ``false``, everything else a finite number; a name the construction does not take is refused with the
+    names it does take (and the nearest, when one is near).
+
+    >>> from construct.constructions import get
+    >>> c = get("tangential-pressure")
+    >>> construction_given(c, "parts=18"), construction_given(c, "kappa=2"), construction_given(c, "force=unit")
+    (('parts', 18), ('kappa', 2.0), ('force', 'unit'))
+    >>> construction_given(c, "parts=18.5")
+    Traceback (most recent call last):
+    ...
+    construct.kernel.errors.InvalidParameter: --given parts takes a whole number (a count), got '18.5'
+    """
+    name, sep, value = item.partition("=")
+    name, value = name.strip(), value.strip()
+    if not sep or not name:
+        raise InvalidParameter(f"{option} takes NAME=VALUE, got {item!r}")
+    if name not in c.defaults:
+        raise InvalidParameter(f"{c.name} has no parameter {name!r}{did_you_mean(name, c.defaults)}; "
+                               f"it takes {', '.join(sorted(c.defaults))}")
+    default = c.defaults[name]
+    if isinstance(default, bool):
+        if value.lower() not in ("true", "false"):
+            raise InvalidParameter(f"{option} {name} takes true or false, got {value!r}")
+        return name, value.lower() == "true"
+    if isinstance(default, int):
+        try:
+            return name, int(value)
+        except ValueError:
+            raise InvalidParameter(f"{option} {name} takes a whole number (a count), got {value!r}") from None
+    if isinstance(default, str):
+        return name, value
+    v = number(value) if is_number(value) else None
+    if v is None or not math.isfinite(v):
+        raise InvalidParameter(f"{option} {name} takes a finite number, got {value!r}")
+    return name, v
 
 
 def is_number(text: str) -> bool:

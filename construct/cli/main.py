@@ -19,7 +19,7 @@ import threading
 import warnings
 from typing import Sequence
 
-from ..kernel.errors import ConstructError, ConstructWarning
+from ..kernel.errors import ConstructError, ConstructWarning, did_you_mean
 
 EXIT_OK, EXIT_BAD_INPUT = 0, 2  # a failed check exits 1: the commands that check return it
 
@@ -35,6 +35,14 @@ class _Parser(argparse.ArgumentParser):
         # "construct check: ..." would read "construct: error: construct check: ..." once printed
         where = self.prog.removeprefix("construct").strip()
         raise UsageError(f"{where}: {message}" if where else message)
+
+    def _check_value(self, action: argparse.Action, value: object) -> None:
+        # a misspelt command or choice names the nearest one ('chek' -> 'check')
+        if action.choices is not None and value not in action.choices:
+            choices = ", ".join(map(repr, action.choices))
+            raise argparse.ArgumentError(action, f"invalid choice: {value!r}{did_you_mean(value, action.choices)} "
+                                                 f"(choose from {choices})")
+        super()._check_value(action, value)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -109,6 +117,25 @@ def _negative_values_attached(parser: argparse.ArgumentParser, argv: Sequence[st
         out.append(token)
         i += 1
     return out
+
+
+def _nearest_option(parser: argparse.ArgumentParser, argv: Sequence[str], message: str) -> str:
+    """For "unrecognized arguments: --rod-ration", the subcommand's option nearest the first one
+    (" (did you mean '--rod-ratio'?)"); nothing for other errors.
+
+    >>> _nearest_option(build_parser(), ["check", "crank", "--rod-ration", "5"], "unrecognized arguments: --rod-ration 5")
+    " (did you mean '--rod-ratio'?)"
+    """
+    head = "unrecognized arguments: "
+    if head not in message:
+        return ""
+    subparsers = next((a for a in parser._actions if isinstance(a, argparse._SubParsersAction)), None)
+    sub = subparsers.choices.get(argv[0]) if subparsers is not None and argv else None
+    unknown = message.split(head, 1)[1].split()
+    word = next((w.split("=")[0] for w in unknown if w.startswith("--")), None)
+    if sub is None or word is None:
+        return ""
+    return did_you_mean(word, [o for a in sub._actions for o in a.option_strings if o.startswith("--")])
 
 
 def _one_line(message: str, limit: int = 2000) -> str:
@@ -230,10 +257,13 @@ def main(argv: Sequence[str] | None = None) -> int:
 def _main(argv: Sequence[str] | None) -> int:
     try:
         parser = build_parser()
+        argv = sys.argv[1:] if argv is None else list(argv)
         try:
-            args = parser.parse_args(_negative_values_attached(parser, sys.argv[1:] if argv is None else list(argv)))
+            args = parser.parse_args(_negative_values_attached(parser, argv))
         except SystemExit as exc:  # --help and --version print and exit 0: a return code, as for every command
             return int(exc.code or 0)
+        except UsageError as exc:
+            raise UsageError(f"{exc}{_nearest_option(parser, argv, str(exc))}") from None
         with _terminate_cleanly():
             code = int(args._run(args))
             sys.stdout.flush()  # a full disk behind a redirected stdout shows here, not at exit

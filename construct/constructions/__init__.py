@@ -31,7 +31,7 @@ from typing import Any, Callable, Mapping, Sequence
 from .checking import Check, run_checks
 from .domain import ROD_RATIO, Domain
 from .phrases import Cite
-from ..kernel.errors import InvalidParameter, ProtocolFormatError, UnknownConstruction
+from ..kernel.errors import InvalidParameter, ProtocolFormatError, UnknownConstruction, did_you_mean
 from ..kernel.numeric import shown
 from ..figure import Figure
 from ..kernel.protocol import Caption, Protocol
@@ -107,7 +107,8 @@ class Construction:
     def figure(self, **params: Any) -> Figure:
         unknown = sorted(set(params) - set(self.defaults))
         if unknown:
-            raise InvalidParameter(f"{self.name} has no parameter {', '.join(unknown)}; "
+            raise InvalidParameter(f"{self.name} has no parameter {', '.join(unknown)}"
+                                   f"{did_you_mean(unknown[0], self.defaults) if len(unknown) == 1 else ''}; "
                                    f"it takes {', '.join(sorted(self.defaults))}")
         merged = {**self.defaults, **{k: v for k, v in params.items() if v is not None}}
         built = self.build(**merged)
@@ -246,7 +247,8 @@ def get(name: str) -> Construction:
     try:
         return _REGISTRY[name]
     except (KeyError, TypeError):  # TypeError: an unhashable name
-        raise UnknownConstruction(f"unknown construction {name!r}; available: {', '.join(sorted(_REGISTRY))}") from None
+        raise UnknownConstruction(f"unknown construction {name!r}{did_you_mean(name, _REGISTRY)}; "
+                                  f"available: {', '.join(sorted(_REGISTRY))}") from None
 
 
 def find(name: str) -> Construction | None:

@@ -47,8 +47,8 @@ from ..kernel.numeric import shown
 __all__ = ["AREA_RATIO", "Domain", "ROD_RATIO", "DRAWN_LENGTH", "PRESSURE", "PRESSURE_RATIO", "STROKE_FRACTION", "CLEARANCE",
            "DRAWN_PRESSURE_RATIO", "DRAWN_M", "DRAWN_MASS_FORCE", "KAPPA_RANGE", "FLUCTUATION", "SPEED_GAIN", "WEIGHT", "RPM", "LENGTH_M", "PISTON_AREA",
            "DRAWING_SCALE", "FORCE_UNIT", "FLYWHEEL_KZ", "RIM_SPEED",
-           "FLYWHEEL_DIAMETER", "EXCESS_WORK", "IRREGULARITY", "COMPRESSION_RATIO", "CUTOFF_RATIO",
-           "ENGINE_PRESSURE", "EXHAUST_PRESSURE", "POLYTROPE_EXPONENT", "SUCTION_PRESSURE", "DISC_THICKNESS",
+           "FLYWHEEL_DIAMETER", "FLYWHEEL_RPM", "FLYWHEEL_WEIGHT", "EXCESS_WORK", "IRREGULARITY", "COMPRESSION_RATIO", "CUTOFF_RATIO",
+           "ENGINE_PRESSURE", "EXHAUST_PRESSURE", "RELEASE", "MECHANICAL_EFFICIENCY", "POLYTROPE_EXPONENT", "SUCTION_PRESSURE", "DISC_THICKNESS",
            "RIM_SECTION", "CRANK_OFFSET", "CRANK_COUNT"]
 
 
@@ -151,6 +151,8 @@ RIM_SPEED = Domain(1e-3, 1e4, "rim speeds v in m/s for which v^2/kz stays a norm
 #: kg m, delta 1/300 .. 1/20): the formulas are plain products, the bounds only keep the float products normal and
 #: delta a small fraction, as the relation E = (G/g) v^2 delta assumes (it neglects delta^2 against 1).
 FLYWHEEL_DIAMETER = Domain(1e-3, 1e3, "rim diameters in m for which the flywheel products stay normal floats")
+FLYWHEEL_RPM = Domain(0.1, 1e4, "revolutions per minute of a flywheel for which its products stay normal floats")
+FLYWHEEL_WEIGHT = Domain(0.1, 1e9, "kg of flywheel rim for which its products stay normal floats")
 EXCESS_WORK = Domain(1e-6, 1e12, "excess work in kg m for which the flywheel products stay normal floats")
 IRREGULARITY = Domain(1e-6, 0.2, "degrees of irregularity for which E = (G/g) v^2 delta holds (it neglects "
                       "delta^2 against 1; practice: 1/300 .. 1/20)")
@@ -167,6 +169,15 @@ POLYTROPE_EXPONENT = Domain(1.0, 5.0 / 3.0, "polytropic exponents between the is
 #: Suction (below the atmosphere) and exhaust (above it) pressures, absolute at.
 SUCTION_PRESSURE = Domain(0.3, 1.0, "suction pressures in at absolute (a slight vacuum: practice 0.85 .. 0.95)")
 EXHAUST_PRESSURE = Domain(1.0, 3.0, "exhaust pressures in at absolute (a slight over-pressure: practice 1.05 .. 1.2)")
+#: Where a combustion engine's exhaust opens, the piston path x_e over the stroke (seed 001: "in e wurde die
+#: Auslaßöffnung freigegeben", before the dead centre): from the middle of the stroke to the dead centre itself (1:
+#: release at constant volume); practice 0.85 .. 0.95 (35 to 50 degrees before the dead centre).
+RELEASE = Domain(0.5, 1.0, "piston paths x_e/s where the exhaust opens, between the middle of the stroke and the "
+                 "crank-end dead centre (practice 0.85 .. 0.95)")
+#: The mechanical efficiency of an engine, effective over indicated work (Baumann's Fig. 27): a steam engine's
+#: 0.75 .. 0.92; below 0.3 the effective line falls far below the base, above 1 friction would give work.
+MECHANICAL_EFFICIENCY = Domain(0.3, 1.0, "mechanical efficiencies, effective over indicated work (steam engines "
+                               "0.75 .. 0.92)")
 #: The highest pressure of the cycle, at: seed 001 names about 25 at for the explosion engine.
 ENGINE_PRESSURE = Domain(2.0, 150.0, "highest cycle pressures in at (the handbook: about 25 at for the explosion engine)")
 #: Baumann's Fig. 28 over the rim radius r1: the disc thickness b1 (a real wheel's is a few thousandths of r1; the

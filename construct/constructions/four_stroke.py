@@ -14,10 +14,18 @@ The idealised cycle (absolute pressures in at, volumes in strokes):
 * compression p V^n = p_a (1 + V_c)^n from the crank-end dead centre to the
   clearance V_c = 1/(ε − 1) (ε the ``compression_ratio``);
 * explosion: ignition at constant volume to ``max_pressure``, expansion
-  p V^n = const to the crank end; Diesel: combustion at constant pressure
-  (the compression-end pressure p_a ε^n) to the ``cutoff`` volume ρ·V_c, then
-  expansion;
-* release at the crank end at constant volume down to the exhaust line.
+  p V^n = const; Diesel: combustion at constant pressure (the compression-end
+  pressure p_a ε^n) to the ``cutoff`` volume ρ·V_c, then expansion;
+* release early, as the handbook has it: "In *e* wurde die Auslaßöffnung
+  freigegeben, durch welche die verbrannten Gase während des vierten, des
+  Auspuffhubes, von *f* bis *g* vom Kolben hinausgeschoben werden" -- the
+  expansion ends at e, the piston path ``release`` (x_e/s, default 0.9, about
+  37° before the crank-end dead centre at L/r = 5), and the pressure falls
+  along the straight line e–f to the exhaust line at the dead centre f
+  (``release`` 1 releases at the dead centre, at constant volume).
+
+The compression ratio is the engine's own unless given: ε = 5 for the explosion
+engine, 14 for the Diesel (gas engines 4 to 7, Diesel 12 to 16).
 
 **The polytropes by Brauer's construction** (E. Brauer, 1885; the period
 graphical method for p V^n = const): two rays from the origin O of the
@@ -36,7 +44,9 @@ drawn as a parallel.  The curve is drawn through the points with the French
 curve (its straying from the polytrope is checked against the same curve
 through the exact points).
 
-**Over 720°**: the crank circle is divided, the piston positions come from
+**Over 720°** (Abb. 1058, which the handbook draws for the engine with
+self-ignition: ``over_pressure`` defaults to the Diesel's, and the explosion
+engine's plate is Abb. 1056's diagram alone unless asked): the crank circle is divided, the piston positions come from
 the rod arcs; each position's ordinate in the p–V diagram meets the branch of
 its stroke (suction, compression, expansion, exhaust), and the compass
 carries the height to the ordinate of that crank angle in the 720° diagram
@@ -47,7 +57,7 @@ of piston area, q (cos θ + (r/L) cos 2θ), q = m ω² r/F in at (``pressure_rat
 constructed as the inertia ordinates of seed 000 (the proportional angle for
 r/L and q).
 
->>> fig = FOUR_STROKE.figure(parts=4, steps=4)
+>>> fig = FOUR_STROKE.figure(parts=4, steps=4, over_pressure=True)
 >>> g = fig.replay.givens
 >>> round(pressure(fig, "cP4"), 10) == round(g["suction"] * g["compression_ratio"] ** g["exponent"], 10)
 True
@@ -61,7 +71,7 @@ import math
 from typing import Any, Mapping
 
 from .checking import EUCLIDEAN_TOLERANCE, Check
-from ..kernel.errors import InvalidParameter
+from ..kernel.errors import InvalidParameter, did_you_mean
 from ..kernel.division import NAMES as DIVISION_NAMES
 from ..kernel.division import check_parts, divide_semicircle
 from ..kernel.instruments import Builder
@@ -69,16 +79,18 @@ from ..kernel.protocol import Caption
 from . import Construction, Figure, bounded, register, rod_ratio_param
 from .crank import build_frame, rod_arcs
 from .domain import (COMPRESSION_RATIO, CUTOFF_RATIO, DRAWN_LENGTH, ENGINE_PRESSURE, EXHAUST_PRESSURE,
-                     POLYTROPE_EXPONENT, PRESSURE_RATIO, SUCTION_PRESSURE)
+                     POLYTROPE_EXPONENT, PRESSURE_RATIO, RELEASE, SUCTION_PRESSURE)
 from .indicator import square
 from .scales import scale_furniture
 from .inertia.build import inertia_scale, inertia_value, value_kind
-from .phrases import HANDBOOK, Cite, number, ratio
+from .phrases import COMBUSTION, Cite, number, ratio
 
-__all__ = ["FOUR_STROKE", "ENGINES", "build_four_stroke", "four_stroke_checks", "model_pressure", "pressure",
-           "volume", "brauer_tangents", "STROKES"]
+__all__ = ["FOUR_STROKE", "ENGINES", "COMPRESSION_RATIOS", "build_four_stroke", "four_stroke_checks",
+           "model_pressure", "pressure", "volume", "brauer_tangents", "STROKES"]
 
 ENGINES = ("explosion", "diesel")
+#: Each engine's compression ratio when none is given (explosion engines 4..7, Diesel 12..16).
+COMPRESSION_RATIOS = {"explosion": 5.0, "diesel": 14.0}
 #: The four strokes in order, from the head-end dead centre (top dead centre) at 0°.
 STROKES = ("suction", "compression", "expansion", "exhaust")
 
@@ -114,19 +126,29 @@ def _piston(theta: float, rod_ratio: float) -> float:
 def model_pressure(stroke: int, x: float, g: Mapping[str, float], engine: str) -> float:
     """Absolute pressure (at) of the idealised cycle on *stroke* (0..3) at piston path x (fraction of the stroke).
 
+    On the expansion stroke beyond the release point x_e (``release``) the pressure falls on the straight
+    line from e to the exhaust pressure at the dead centre.
+
     >>> g = {"suction": 0.9, "exhaust": 1.1, "compression_ratio": 5.0, "clearance": 0.25, "exponent": 1.3,
-    ...      "max_pressure": 25.0, "cutoff": 2.0}
+    ...      "max_pressure": 25.0, "cutoff": 2.0, "release": 1.0}
     >>> round(model_pressure(1, 0.0, g, "explosion"), 6), round(model_pressure(2, 1.0, g, "explosion"), 6)
     (7.292955, 3.085169)
+    >>> g["release"] = 0.9
+    >>> round(model_pressure(2, 0.9, g, "explosion"), 6), model_pressure(2, 1.0, g, "explosion")
+    (3.438388, 1.1)
     """
     vc, n = g["clearance"], g["exponent"]
-    v = vc + x
     if stroke == 0:
         return g["suction"]
     if stroke == 3:
         return g["exhaust"]
     if stroke == 1:
-        return g["suction"] * ((1.0 + vc) / v) ** n
+        return g["suction"] * ((1.0 + vc) / (vc + x)) ** n
+    xe = g["release"]
+    if x > xe:  # released: the straight line e-f
+        pe = model_pressure(2, xe, g, engine)
+        return pe + (g["exhaust"] - pe) * (x - xe) / (1.0 - xe)
+    v = vc + x
     if engine == "explosion":
         return g["max_pressure"] * (vc / v) ** n
     pc = g["suction"] * g["compression_ratio"] ** n
@@ -140,12 +162,15 @@ def model_pressure(stroke: int, x: float, g: Mapping[str, float], engine: str) -
 
 
 def _givens(engine: str, r: Any, rod_ratio: Any, compression_ratio: Any, suction: Any, exhaust: Any,
-            max_pressure: Any, cutoff: Any, exponent: Any, pressure_unit: Any, pressure_ratio: Any,
+            max_pressure: Any, cutoff: Any, exponent: Any, pressure_unit: Any, pressure_ratio: Any, release: Any,
             steps: int) -> dict[str, float]:
     if engine not in ENGINES:
-        raise InvalidParameter(f"engine must be one of {', '.join(ENGINES)}, got {engine!r}")
+        raise InvalidParameter(f"engine must be one of {', '.join(ENGINES)}, got {engine!r}{did_you_mean(engine, ENGINES)}")
+    if compression_ratio is None:
+        compression_ratio = COMPRESSION_RATIOS[engine]
     g = {"r": bounded("crank radius r", r, DRAWN_LENGTH), "rod_ratio": rod_ratio_param(rod_ratio),
          "compression_ratio": bounded("compression ratio ε", compression_ratio, COMPRESSION_RATIO),
+         "release": bounded("release x_e/s", release, RELEASE),
          "suction": bounded("suction pressure p_a (at)", suction, SUCTION_PRESSURE),
          "exhaust": bounded("exhaust pressure p_g (at)", exhaust, EXHAUST_PRESSURE),
          "exponent": bounded("polytropic exponent n", exponent, POLYTROPE_EXPONENT),
@@ -155,24 +180,30 @@ def _givens(engine: str, r: Any, rod_ratio: Any, compression_ratio: Any, suction
     g["clearance"] = 1.0 / (eps - 1.0)
     pc = g["suction"] * eps ** n
     g["tan_alpha"], g["tan_beta"] = brauer_tangents(eps, n, steps)
+    v_e = g["clearance"] + g["release"]   # the volume at release e
     if engine == "explosion":
         g["max_pressure"] = bounded("maximum pressure (at)", max_pressure, ENGINE_PRESSURE)
         if g["max_pressure"] <= pc:
             raise InvalidParameter(f"maximum pressure {g['max_pressure']:g} at must exceed the compression end "
                                    f"p_a ε^n = {pc:.4g} at (ignition raises the pressure)")
+        v_d = g["clearance"]
     else:
         g["cutoff"] = bounded("cut-off ratio ρ = V_d/V_c", cutoff, CUTOFF_RATIO)
-        if g["cutoff"] >= eps / 1.05:
-            raise InvalidParameter(f"cut-off ratio ρ = {g['cutoff']:g} must stay below ε/1.05 = {eps / 1.05:.4g} "
-                                   "(combustion ends before the crank-end dead centre)")
+        v_d = g["cutoff"] * g["clearance"]
+        if v_e / v_d < 1.05:
+            raise InvalidParameter(f"cut-off ratio ρ = {g['cutoff']:g} must leave room for the expansion: ρ V_c "
+                                   f"below V_e/1.05 = {v_e / 1.05:.4g} strokes (combustion ends before the release "
+                                   f"e at x_e = {g['release']:g} s)")
         ENGINE_PRESSURE.check("compression-end pressure p_a ε^n (at)", pc)
-        g["tan_alpha_e"], g["tan_beta_e"] = brauer_tangents(eps / g["cutoff"], n, steps)
+    # the expansion's own rays: from d (V_d) to the release e (V_e) in the same number of steps
+    g["tan_alpha_e"], g["tan_beta_e"] = brauer_tangents(v_e / v_d, n, steps)
     return g
 
 
 def _validate(givens: Mapping[str, float]) -> None:
     engine = "diesel" if "cutoff" in givens else "explosion"
     bounded("crank radius r", givens["r"], DRAWN_LENGTH)
+    RELEASE.check("release x_e/s", givens["release"])
     rod_ratio_param(givens["rod_ratio"])
     COMPRESSION_RATIO.check("compression ratio ε", givens["compression_ratio"])
     POLYTROPE_EXPONENT.check("polytropic exponent n", givens["exponent"])
@@ -234,37 +265,51 @@ def _brauer(b: Builder, tag: str, *, O: str, OM: str, ON: str, d45: tuple[str, s
     return pts
 
 
-def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str, r: float, compression_ratio: float,
-                      suction: float, exhaust: float, max_pressure: float, cutoff: float, exponent: float,
-                      pressure_unit: float, pressure_ratio: float, steps: int) -> Figure:
+def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str, r: float,
+                      compression_ratio: float | None, suction: float, exhaust: float, max_pressure: float,
+                      cutoff: float, exponent: float, pressure_unit: float, pressure_ratio: float, release: float,
+                      over_pressure: bool | None, steps: int) -> Figure:
     if isinstance(steps, bool) or not isinstance(steps, int) or not 2 <= steps <= 40:
         raise InvalidParameter(f"Brauer steps per polytrope must be a whole number from 2 to 40, got {steps!r}")
     givens = _givens(engine, r, rod_ratio, compression_ratio, suction, exhaust, max_pressure, cutoff, exponent,
-                     pressure_unit, pressure_ratio, steps)
+                     pressure_unit, pressure_ratio, release, steps)
+    if over_pressure is None:   # Abb. 1058 is the Diesel's
+        over_pressure = engine == "diesel"
+    if not isinstance(over_pressure, bool):
+        raise InvalidParameter(f"over_pressure must be true or false, got {over_pressure!r}")
     used = check_parts(parts, method)
     n = parts
-    # Which ordinates of the expansion stroke lie on the constant-pressure line is decided here: the cut-off is
-    # structural for the Diesel engine.
+    # Which ordinates of the expansion stroke lie on the constant-pressure line and which beyond the release is
+    # decided here: the cut-off and the release are structural.
     b = Builder("four-stroke", givens, {"engine": engine, "parts": n, "method": used, "requested_method": method,
-                                        "steps": steps, "plate": PLATE,
+                                        "steps": steps, "plate": PLATE if over_pressure else PV_PLATE,
+                                        "release": givens["release"],
+                                        "over_pressure": over_pressure,
                                         **({"cutoff": givens["cutoff"]} if engine == "diesel" else {})})
     f = build_frame(b)
-    upper = divide_semicircle(b, O=f["O"], D0=f["D0"], D1=f["D1"], circle=f["circle"], axis=f["axis"], n=n,
-                              method=used)
-    rod_arcs(b, f, upper)
+    # the piston positions are read where the 720° diagram needs them: Abb. 1056's diagram alone needs the dead
+    # centres only (its Brauer points are constructed in the p-V plane)
+    upper: list[str] = []
+    if over_pressure:
+        upper = divide_semicircle(b, O=f["O"], D0=f["D0"], D1=f["D1"], circle=f["circle"], axis=f["axis"], n=n,
+                                  method=used)
+        rod_arcs(b, f, upper)
+    positions = range(n + 1) if over_pressure else (0, n)
     unit = "pressure_unit"
     with b.group("p-V diagram: zero line, clearance, pressure axis", "p-V-Diagramm: Nulllinie, Verdichtungsraum, Druckachse"):
         Z = b.given_point("Z", -1.0, _PV_ZERO, unit="r", de="Nulllinie des Diagramms (absolutes Vakuum)",
                           en="zero line of the diagram (absolute vacuum)", label="")
         base = b.given_line("pvbase", Z, angle_deg=0.0, de="Nulllinie (Volumenachse)", en="zero line (volume axis)",
                             role="result")
-        ords, feet = [], []
-        for k in range(n + 1):
-            o = b.erect_perpendicular(f"o{k}", f"X{k}", f["axis"], f["O"] if k not in (0, n) else
+        ords: dict[int, str] = {}
+        feet: dict[int, str] = {}
+        for k in positions:
+            at = f"X{k}" if over_pressure else (f["D0"] if k == 0 else f["D1"])
+            o = b.erect_perpendicular(f"o{k}", at, f["axis"], f["O"] if k not in (0, n) else
                                       (f["D1"] if k == 0 else f["D0"]))
-            ords.append(o)
-            feet.append(b.intersect(f"F{k}", o, base, rule=("only",), de=f"Kolbenstellung {k} auf der Volumenachse",
-                                    en=f"piston position {k} on the volume axis"))
+            ords[k] = o
+            feet[k] = b.intersect(f"F{k}", o, base, rule=("only",), de=f"Kolbenstellung {k} auf der Volumenachse",
+                                  en=f"piston position {k} on the volume axis")
         vc = b.given_length("Vc", product=("clearance", "r"), factor=2.0, de="Verdichtungsraum V_c = s/(ε − 1)",
                             en="clearance volume V_c = s/(epsilon - 1)")
         k = b.circle_radius("O'.k", feet[0], vc, de="V_c vor dem Deckeltotpunkt", en="V_c beyond the head-end dead centre")
@@ -291,6 +336,7 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
         return OM, ON
 
     OM, ON = rays("", "tan_alpha", "tan_beta")
+    OMe, ONe = rays("e", "tan_alpha_e", "tan_beta_e")
 
     def level(name: str, given: str, what: tuple[str, str]) -> tuple[str, str]:
         ln = b.given_length(f"{name}.l", product=(given, unit), de=f"{what[0]} im Druckmaßstab",
@@ -315,13 +361,10 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
     if engine == "explosion":
         with b.group("ignition at constant volume: the maximum pressure", "Zündung bei gleichem Volumen: Höchstdruck"):
             pd, hd = level("pmax", "max_pressure", ("Höchstdruck", "maximum pressure"))
-        exp_ = _brauer(b, "eP", O=Ov, OM=OM, ON=ON, d45=d45, vdir=vdir, hdir=hdir, base=base, paxis=paxis,
+        exp_ = _brauer(b, "eP", O=Ov, OM=OMe, ON=ONe, d45=d45, vdir=vdir, hdir=hdir, base=base, paxis=paxis,
                        V0=feet[0], v0=ords[0], p0=pd, h0=hd, steps=steps, outward=True,
                        what=("Expansionslinie", "expansion line"))
-        b.polyline("ignition", [c, exp_[0]], de="Verpuffung c–d bei gleichem Volumen", en="explosion c-d at constant volume")
-        comb_line = None
     else:
-        OMe, ONe = rays("e", "tan_alpha_e", "tan_beta_e")
         with b.group("combustion at constant pressure to the cut-off", "Verbrennung bei gleichem Druck bis zur Füllung"):
             comb_line = f"cPh{steps}"   # the horizontal through c
             lv = b.given_length("Vd", product=("cutoff", "clearance", "r"), factor=2.0, de="ρ·V_c", en="rho V_c")
@@ -332,24 +375,49 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
         exp_ = _brauer(b, "eP", O=Ov, OM=OMe, ON=ONe, d45=d45, vdir=vdir, hdir=hdir, base=base, paxis=paxis,
                        V0=Vd, v0=vd, p0=pc_mark, h0=comb_line, steps=steps, outward=True,
                        what=("Expansionslinie", "expansion line"))
-        b.polyline("ignition", [c, exp_[0]], de="Verbrennung c–d bei gleichem Druck", en="combustion c-d at constant pressure")
     b.set_label(exp_[0], "d")
     b.set_label(exp_[-1], "e")
+    early = givens["release"] < 1.0
+    diesel = engine == "diesel"
     with b.group("the curves and the closed diagram", "Die Linien und das geschlossene Diagramm"):
         b.french_curve("compression", base, comp, de="Verdichtungslinie (Kurvenlineal)", en="compression line (French curve)")
-        b.french_curve("expansion", base, exp_, de="Expansionslinie (Kurvenlineal)", en="expansion line (French curve)")
         a = b.intersect("a", ords[0], suction_line, rule=("only",), labels={"a": "a"}, de="Saugbeginn a", en="start of suction a")
         fpt = b.intersect("f", ords[n], exhaust_line, rule=("only",), labels={"f": "f"}, de="Auspuffbeginn f",
                           en="start of exhaust f")
         gpt = b.intersect("g", ords[0], exhaust_line, rule=("only",), labels={"g": "g"}, de="Auspuffende g",
                           en="end of exhaust g")
+        # The working stroke's line drawn in one: (the Diesel's constant-pressure line c-d,) the curve d..e and
+        # (released early) the straight drop e-f, laid anew at each corner, so that every ordinate meets it
+        # wherever the rod ratio puts the piston.
+        pts = ([c] if diesel else []) + list(exp_) + ([fpt] if early else [])
+        corners = ([1] if diesel else []) + ([len(pts) - 2] if early else [])
+        b.french_curve("expansion", base, pts, corners=corners,
+                       de="Arbeitslinie: " + ("Verbrennung c–d, " if diesel else "") + "Expansion d–e (Kurvenlineal)"
+                          + (", Auslass e–f" if early else ""),
+                       en="working line: " + ("combustion c-d, " if diesel else "") + "expansion d-e (French curve)"
+                          + (", release e-f" if early else ""))
+        if not diesel:
+            b.polyline("ignition", [c, exp_[0]], de="Verpuffung c–d bei gleichem Volumen",
+                       en="explosion c-d at constant volume")
+        if not early:
+            b.polyline("release", [exp_[-1], fpt], de="Auslass im Totpunkt e–f", en="release at the dead centre e-f")
         b.polyline("suction", [a, comp[0]], de="Sauglinie a–b", en="suction line a-b")
-        b.polyline("release", [exp_[-1], fpt], de="Auslass e–f", en="release e-f")
         b.polyline("exhaust", [fpt, gpt], de="Auspufflinie f–g", en="exhaust line f-g")
-    # -- readings at the piston positions, stroke by stroke
+    if over_pressure:
+        _readings_and_over_pressure(b, f, engine, givens, upper, n, ords, feet, a, c, comp, exp_, fpt, gpt, early,
+                                    suction_line, exhaust_line)
+    proto = b.protocol()
+    return Figure(proto, proto.replay(givens))
+
+
+def _readings_and_over_pressure(b: Builder, f: Mapping[str, str], engine: str, givens: Mapping[str, float],
+                                upper: list[str], n: int, ords: Mapping[int, str], feet: Mapping[int, str], a: str,
+                                c: str, comp: list[str], exp_: list[str], fpt: str, gpt: str, early: bool,
+                                suction_line: str, exhaust_line: str) -> None:
+    """The pressures read on every piston position's ordinate, stroke by stroke, and Abb. 1058 from them."""
     readings: dict[tuple[int, int], str] = {}
     on_line_count = 0   # Diesel: how many ordinates of the expansion stroke stand on the constant-pressure line
-    xs = [0.0] + [None] * (n - 1) + [1.0]  # where the piston stands, read off the figure when it matters
+    released_count = 0  # how many stand beyond the release e, on the line e-f
     with b.group("pressures at the piston positions", "Drücke in den Kolbenstellungen"):
         for k in range(n + 1):
             readings[0, k] = a if k == 0 else comp[0] if k == n else b.intersect(
@@ -363,15 +431,24 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
                 readings[2, k] = exp_[0] if engine == "explosion" else c
                 on_line_count += engine == "diesel"
             elif k == n:
-                readings[2, k] = exp_[-1]
+                readings[2, k] = fpt if early else exp_[-1]
+                released_count += early
             else:
                 x = (b[f"X{k}"][0] - b[f["D0"]][0]) / (2.0 * givens["r"])
-                xs[k] = x
                 on_line = engine == "diesel" and givens["clearance"] + x <= givens["cutoff"] * givens["clearance"]
+                released = x > givens["release"]
                 on_line_count += on_line
-                readings[2, k] = b.intersect(f"P{k}x", ords[k], comb_line if on_line else "expansion", rule=("only",),
-                                             de=f"{'Verbrennungs' if on_line else 'Expansions'}linie bei {k}",
-                                             en=f"{'combustion' if on_line else 'expansion'} line at {k}")
+                released_count += released
+                what = (("Verbrennungslinie", "combustion line") if on_line else
+                        ("Auslasslinie e–f", "release line e-f") if released else ("Expansionslinie", "expansion line"))
+                readings[2, k] = b.intersect(f"P{k}x", ords[k], "expansion", rule=("only",), de=f"{what[0]} bei {k}",
+                                             en=f"{what[1]} at {k}")
+    _over_pressure(b, f, upper, n, feet, readings, on_line_count, released_count)
+
+
+def _over_pressure(b: Builder, f: Mapping[str, str], upper: list[str], n: int, feet: Mapping[int, str],
+                   readings: Mapping[tuple[int, int], str], on_line_count: int, released_count: int) -> None:
+    """Abb. 1058: the pressures carried to the 720° diagram (a–a) and less the mass pressures (b–b)."""
     # -- the 720° diagram
     with b.group("720 degree diagram: base, divisions, atmospheric line",
                  "Diagramm über 720°: Grundlinie, Teilung, atmosphärische Linie"):
@@ -430,14 +507,25 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
             for name, pts in ((f"aa{s}", aa[s]), (f"bb{s}", bb[s])):
                 line = "a–a" if name.startswith("aa") else "b–b"
                 cut = on_line_count if s == 2 else 0
+                rel = released_count if s == 2 else 0
                 if cut:
                     # Diesel: the constant-pressure part with the straightedge, then a chord across the cut-off
                     # (a corner no French curve follows), then the curve along the expansion.
-                    b.polyline(f"{name}.line", pts[:cut], de=f"{line}, Verbrennung bei gleichem Druck",
-                               en=f"{line}, combustion at constant pressure")
+                    if cut >= 2:
+                        b.polyline(f"{name}.line", pts[:cut], de=f"{line}, Verbrennung bei gleichem Druck",
+                                   en=f"{line}, combustion at constant pressure")
                     b.polyline(f"{name}.cut", pts[cut - 1:cut + 1], de=f"{line}, über die Füllung hinweg",
                                en=f"{line}, across the cut-off")
                     pts = pts[cut:]
+                if rel:
+                    # the release e between two ordinates: a corner again, so the pressure drop is its own curve
+                    after = pts[len(pts) - rel:]
+                    pts = pts[:len(pts) - rel]
+                    b.polyline(f"{name}.rel", [pts[-1], after[0]], de=f"{line}, über den Auslass e hinweg",
+                               en=f"{line}, across the release e")
+                    if len(after) >= 2:
+                        b.french_curve(f"{name}.drop", tbase, after, de=f"{line}, Druckabfall nach e",
+                                       en=f"{line}, pressure drop after e")
                 if len(pts) >= 2:
                     b.french_curve(name, tbase, pts, de=f"{line}, {STROKES[s]}", en=f"{line}, {STROKES[s]} stroke")
         for s in range(3):
@@ -447,10 +535,27 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
         b.set_label(aa[3][-1], "a")
         b.set_label(bb[0][0], "b")
         b.set_label(bb[3][-1], "b")
-    proto = b.protocol()
-    return Figure(proto, proto.replay(givens))
 
 
+def four_stroke_plate(fig: Figure) -> dict:
+    """Abb. 1056–1058 as a plate.  b and f stand at the crank-end dead centre a few tenths of an atmosphere apart (the suction and the
+    exhaust line): both lettered right of the dead centre, the lower one well below the upper, clear of each
+    other, of e above them and of the curves that leave them to the left."""
+    R = fig.replay
+    # a letter's size follows the whole plate's width: the p-V diagram alone, or with the 720° diagram beside it
+    d = 0.03 * abs(R["Ov"][0] - R["f"][0]) * (2.6 if "T1" in R else 1.0)
+    b_, f_ = R["cP0"], R["f"]
+    upper, lower = (b_, f_) if b_[1] >= f_[1] else (f_, b_)
+    letters = [{"kind": "lettering", "at": (upper[0] + 1.6 * d, upper[1] + 0.2 * d), "text": "b" if upper is b_ else "f"},
+               {"kind": "lettering", "at": (lower[0] + 1.6 * d, lower[1] - 2.6 * d), "text": "f" if lower is f_ else "b"}]
+    # the 720° diagram's scale, dead centres and strokes where the figure draws Abb. 1058 (the Diesel's)
+    return {"looks": {"cP0": "unlettered", "f": "unlettered"},
+            "furniture": letters + (_over_pressure_furniture(fig) if "T0" in R else [])}
+
+
+#: The plate of Abb. 1056 or 1057 alone: the p-V diagram with Brauer's rays and points over the stroke.
+PV_PLATE = (r"pvbase", r"paxis", r"Ov", r"OMe?|ONe?", r"[ce]P\d+", r"compression|expansion",
+            r"ignition|suction|release|exhaust", r"atm|suct|exh|pmax", r"[abfg]")
 #: The plate (Abb. 1056–1058): the p-V diagram with Brauer's rays and points, the crank circle with the piston
 #: positions, the 720° diagram with a-a and b-b.
 PLATE = (r"pvbase", r"paxis", r"Ov", r"OMe?|ONe?", r"[ce]P\d+", r"compression|expansion", r"ignition|suction|release|exhaust",
@@ -524,8 +629,14 @@ def four_stroke_checks(fig: Figure) -> list[Check]:
         checks.append(Check(f"expansion point {j}: p V^n", pressure(fig, f"eP{j}") * volume(fig, f"eP{j}") ** nexp, e0,
                             tol_p * max(1.0, v_d ** nexp) * 4.0 + abs(e0) * 1e-12,
                             "Brauer's construction: Euclidean after the two rays", "at·stroke^n"))
-    checks.append(Check("expansion ends on the crank-end dead centre", volume(fig, f"eP{m}"), 1.0 + vc, tol_v,
-                        "m steps of 1 + tg α = (ε/ρ)^(1/m)", "stroke"))
+    xe = g["release"]
+    checks.append(Check("expansion ends at the release e (x_e)" if xe < 1.0 else
+                        "expansion ends on the crank-end dead centre", volume(fig, f"eP{m}"), vc + xe, tol_v,
+                        "m steps of 1 + tg α = (V_e/V_d)^(1/m)", "stroke"))
+    checks.append(Check("release e: p_d (V_d/V_e)^n", pressure(fig, f"eP{m}"), p_d * (v_d / (vc + xe)) ** nexp,
+                        tol_p * eps ** nexp * 4.0, "the last Brauer point", "at"))
+    if not fig.params.get("over_pressure", True):   # Abb. 1056/1057 alone: no readings, no 720° diagram
+        return checks
     # readings on the ordinates and the 720 degree diagram
     xk = {k: volume(fig, f"F{k}") - vc for k in range(n + 1)}
     comp_pts = [(volume(fig, f"cP{j}"), pressure(fig, f"cP{j}")) for j in range(m + 1)]
@@ -535,7 +646,7 @@ def four_stroke_checks(fig: Figure) -> list[Check]:
     inner = [k for k in range(1, n)]
     dev_c = dict(zip(inner, _curve_tolerance(fig, sorted(comp_exact), [vc + xk[k] for k in inner],
                                              lambda v: c0 / v ** nexp)))
-    on_exp = [k for k in inner if engine == "explosion" or vc + xk[k] > g["cutoff"] * vc]
+    on_exp = [k for k in inner if (engine == "explosion" or vc + xk[k] > g["cutoff"] * vc) and xk[k] <= xe]
     dev_e = dict(zip(on_exp, _curve_tolerance(fig, exp_exact, [vc + xk[k] for k in on_exp], lambda v: e0 / v ** nexp)))
     lam = 1.0 / g["rod_ratio"]
     for s in range(4):
@@ -567,7 +678,11 @@ def four_stroke_checks(fig: Figure) -> list[Check]:
 #: Command-line help for the givens (book terms).
 OPTION_HELP = {
     "engine": "four-stroke: explosion (Abb. 1056, ignition at constant volume) or diesel (Abb. 1057, constant pressure)",
-    "compression_ratio": "four-stroke: compression ratio epsilon = (V_c + V_h)/V_c (explosion 5, Diesel 14)",
+    "compression_ratio": "four-stroke: compression ratio epsilon = (V_c + V_h)/V_c (default: explosion 5, Diesel 14)",
+    "release": "four-stroke: piston path x_e/s where the exhaust opens (the handbook: early, at e; default 0.9; 1 "
+               "releases at the dead centre)",
+    "over_pressure": "four-stroke: draw the over-pressure a-a, b-b over 720 degrees (Abb. 1058; default: the "
+                     "Diesel's, as the handbook)",
     "suction": "four-stroke: suction pressure p_a, at absolute (0.9)",
     "exhaust": "four-stroke: exhaust pressure p_g, at absolute (1.1)",
     "max_pressure": "four-stroke, explosion: maximum pressure after ignition, at (the handbook: about 25)",
@@ -577,8 +692,8 @@ OPTION_HELP = {
 }
 
 
-def four_stroke_plate(fig: Figure) -> dict:
-    """Abb. 1056–1058 as a plate: beside the 720° diagram its scale of the over-pressure in at (0 on the
+def _over_pressure_furniture(fig: Figure) -> list[dict]:
+    """Abb. 1058 as a plate: beside the 720° diagram its scale of the over-pressure in at (0 on the
     atmospheric line, as a–a is read), a tick at each dead centre under its degree mark, and the strokes
     named between them."""
     R = fig.replay
@@ -598,11 +713,12 @@ def four_stroke_plate(fig: Figure) -> dict:
     for (a, b_), name in zip(zip(marks, marks[1:]), names):
         out.append({"kind": "lettering", "at": ((a[0] + b_[0]) / 2, min(low, T0[1]) - 0.07 * span / 4), "text": name,
                     "size": 0.85})
-    return {"furniture": out}
+    return out
 
 
 def four_stroke_wording(fig: Figure, lang: str) -> list[str]:
-    """The givens as the handbook writes them: the engine, ε and n, its peak pressure or ρ, the rod, q."""
+    """The givens as the handbook writes them: the engine, ε and n, its peak pressure or ρ, the release, the rod,
+    and -- where the figure draws Abb. 1058's over-pressure -- a–a, b–b and q."""
     g = fig.replay.givens
     de = lang == "de"
     diesel = fig.params.get("engine") == "diesel"
@@ -611,26 +727,33 @@ def four_stroke_wording(fig: Figure, lang: str) -> list[str]:
            f"ε = {number(g['compression_ratio'], lang)}", f"n = {number(g['exponent'], lang)}"]
     out.append(f"ρ = {number(fig.params.get('cutoff', 2.0), lang)}" if diesel
                else ("Höchstdruck " if de else "peak pressure ") + f"{number(g['max_pressure'], lang)} at")
-    out += [ratio("r/L", g["rod_ratio"], lang), f"q = {number(g['pressure_ratio'], lang)} at"]
+    release = g.get("release", 1.0)
+    out.append(("Auslass bei " if de else "release at ") + f"{number(release, lang)} s" if release < 1.0 else
+               ("Auslass im Totpunkt" if de else "release at the dead centre"))
+    out.append(ratio("r/L", g["rod_ratio"], lang))
+    if fig.params.get("over_pressure", True):   # a protocol from before the option drew a-a and b-b
+        out += [("Kolbenüberdruck a–a, b–b über zwei Umdrehungen" if de else
+                 "piston over-pressure a–a, b–b over two turns"), f"q = {number(g['pressure_ratio'], lang)} at"]
     return out
 
 
 FOUR_STROKE = register(Construction(
     name="four-stroke",
-    title=Caption("Druckverlauf im Viertakt über zwei Umdrehungen, Kolbenüberdruck a–a, b–b",
-                  "Four-stroke pressures over two turns, piston over-pressure a–a, b–b"),
+    title=Caption("Druckverlauf im Viertakt", "Four-stroke pressures"),
     source="seed 001 c, Abb. 1056-1058",
     build=build_four_stroke,
     checks=four_stroke_checks,
     defaults={"engine": "explosion", "rod_ratio": 5.0, "parts": 12, "method": "auto", "r": 1.0,
-              "compression_ratio": 5.0, "suction": 0.9, "exhaust": 1.1, "max_pressure": 25.0, "cutoff": 2.0,
-              "exponent": 1.3, "pressure_unit": 0.1, "pressure_ratio": 6.0, "steps": 12},
-    book_params=({}, {"engine": "diesel", "compression_ratio": 14.0}),
-    structural=("engine", "parts", "method", "steps", "cutoff"),
-    cites=(Cite(HANDBOOK, "Abb. 1056–1058"),),
+              "compression_ratio": None, "suction": 0.9, "exhaust": 1.1, "max_pressure": 25.0, "cutoff": 2.0,
+              "exponent": 1.3, "pressure_unit": 0.1, "pressure_ratio": 6.0, "release": 0.9, "over_pressure": None,
+              "steps": 12},
+    book_params=({}, {"engine": "diesel"}),
+    structural=("engine", "parts", "method", "steps", "cutoff", "release", "over_pressure"),
+    cites=(Cite(COMBUSTION, "Abb. 1056–1058"),),
     wording=four_stroke_wording,
     plate=four_stroke_plate,
     methods=DIVISION_NAMES,
     validator=_validate,
     help=OPTION_HELP,
+    extra={"switches": ("over_pressure",)},
 ))

@@ -480,6 +480,9 @@ def indicator_plate(fig: Figure) -> dict:
     Every corner is a constructed point; the scale's divisions are the given drawn length of 1 at.
     """
     R = fig.replay
+    if "card.x0" in R.givens:  # a digitised card: its traced lines are the outline, heavy; no idealised corners
+        return {"looks": {"card.fwd": "heavy", "card.back": "heavy", "crank.fwd": "heavy", "crank.back": "heavy",
+                          "card.loop": "thin", "crank.loop": "thin"}, "furniture": []}
     n = fig.params["divisions"]
     A0, A1, B0, C2 = R["A0"], R["A1"], R["B0"], R["C2"]
     end_exp, end_comp = R[f"E{n}"], R[f"R{n}"]
@@ -525,7 +528,7 @@ def _validate(givens: Mapping[str, float]) -> None:
 
 
 #: What a card's plate shows: the stroke, the cards' points and lines, the ordinates and the readings on them.
-CARD_PLATE = (r"base", r"A", r"B", r"(card|crank)\.C\d+", r"(card|crank)\.(fwd|back|loop)", r"v\d+", r"[fr][EW]\d+")
+CARD_PLATE = (r"base", r"A", r"B", r"(card|crank)\.(fwd|back)", r"v\d+", r"[fr][EW]\d+")
 
 
 def build_indicator_card(*, r: float, pressure_unit: float, divisions: int, indicator: str,

@@ -4,7 +4,11 @@ Seed 001 (Abb. 1054) takes the piston's over-pressure from the *measured*
 diagrams of the cover side and the crank side.  A card is given as a CSV
 file with the header ``x,p``: the closed loop of one cylinder side in drawing
 order, ``x`` the piston position from the head-end dead centre as a fraction
-of the stroke, ``p`` the absolute pressure in kg/cm² (at).
+of the stroke, ``p`` the absolute pressure in kg/cm² (at).  What a German
+spreadsheet exports reads as well: the header ``x;p`` (or tab-separated) says
+the fields are separated by semicolons (tabs), and then a decimal comma
+(``0,5;4,85``) is a decimal point; a byte-order mark and Windows line ends
+are allowed (:func:`csv_dialect` tells which a file is).
 
 How it is read:
 
@@ -36,6 +40,9 @@ loop that does not reach both dead centres (x = 0 and 1 within
 (8.0, 1.1)
 >>> card.mirrored().pressure(0.85, "return")     # the crank side's steam line, mirrored
 8.0
+>>> parse_indicator_csv("\\ufeffx;p\\r\\n0;8\\r\\n0,3;8\\r\\n1;2,5\\r\\n1;1,1\\r\\n0,1;1,1\\r\\n0;2\\r\\n0;8\\r\\n",
+...                     "demo").pressure(0.15, "forward")          # as a German spreadsheet writes it
+8.0
 >>> parse_indicator_csv("x,p\\n0,8\\n0.3,eight\\n1,2\\n0,1\\n0,8\\n", "demo")
 Traceback (most recent call last):
 ...
@@ -56,7 +63,7 @@ from ..io.reading import read_bounded_text
 from . import analytic
 from ..kernel.errors import InputFileError
 
-__all__ = ["IndicatorCard", "parse_indicator_csv", "load_indicator", "card_givens", "card_from_givens", "draw_card",
+__all__ = ["IndicatorCard", "parse_indicator_csv", "csv_dialect", "DIALECTS", "load_indicator", "card_givens", "card_from_givens", "draw_card",
            "DrawnCard", "card_pair", "card_force", "MAX_INDICATOR_BYTES", "MIN_POINTS",
            "MAX_POINTS", "CLOSE_TOLERANCE", "MAX_CARD_PRESSURE", "STROKES"]
 
@@ -112,27 +119,57 @@ def _fail(source: str, row: int | None, what: str) -> InputFileError:
     return InputFileError(f"indicator diagram {source}{where}: {what}")
 
 
+#: The field separators a card may use, by what its header shows: the comma (decimal points), or -- as German
+#: spreadsheets export -- the semicolon or the tab (decimal commas allowed).
+DIALECTS = {",": "comma-separated, decimal points", ";": "semicolon-separated, decimal commas allowed",
+            "\t": "tab-separated, decimal commas allowed"}
+
+
+def csv_dialect(text: str) -> str:
+    """The field separator of a card, read off its header line: ``;`` or a tab where the header has one, else ``,``.
+
+    >>> csv_dialect("x,p\\n0,1\\n"), csv_dialect("\\ufeffx;p\\r\\n0,5;4,85\\r\\n"), csv_dialect("x\\tp\\n")
+    (',', ';', '\\t')
+    """
+    header = text.lstrip("\ufeff").split("\n", 1)[0]
+    return ";" if ";" in header else "\t" if "\t" in header else ","
+
+
+def _number(cell: str, delimiter: str) -> float:
+    """A cell as a number: with ``;`` or tab between the fields a decimal comma (4,85) is a decimal point."""
+    cell = cell.strip()
+    if delimiter != "," and "," in cell and "." not in cell:
+        cell = cell.replace(",", ".", 1) if cell.count(",") == 1 else cell
+    return float(cell)
+
+
 def parse_indicator_csv(text: str, source: str) -> IndicatorCard:
-    """The card in *text* (a CSV with header ``x,p``), checked as described in the module; *source* names it."""
-    reader = csv.reader(io.StringIO(text))
+    """The card in *text* (a CSV with header ``x,p``, or ``x;p`` with decimal commas), checked as described in the
+    module; *source* names it."""
+    text = text.lstrip("\ufeff")
+    delimiter = csv_dialect(text)
+    reader = csv.reader(io.StringIO(text), delimiter=delimiter)
     try:
         table = list(reader)
     except csv.Error as exc:
         raise _fail(source, reader.line_num, f"not a CSV file ({exc})") from None
     if not table or [c.strip().lower() for c in table[0]] != ["x", "p"]:
-        got = ",".join(table[0])[:40] if table else "an empty file"
-        raise _fail(source, 1, f"the header must be 'x,p', got {got!r}")
+        got = delimiter.join(table[0])[:40] if table else "an empty file"
+        raise _fail(source, 1, f"the header must be 'x,p' (or 'x;p' with decimal commas, as a German spreadsheet "
+                               f"exports it), got {got!r}")
     pts: list[tuple[float, float]] = []
     rows: list[int] = []
     for i, cells in enumerate(table[1:], start=2):
         if not cells or all(not c.strip() for c in cells):
             continue  # a blank line
         if len(cells) != 2:
-            raise _fail(source, i, f"a row holds two numbers x,p; this one has {len(cells)} fields")
+            hint = (" (decimal commas need ';' between the fields: a header 'x;p')"
+                    if delimiter == "," and len(cells) in (3, 4) else "")
+            raise _fail(source, i, f"a row holds two numbers x{delimiter}p; this one has {len(cells)} fields{hint}")
         vals = []
         for name, cell in zip("xp", cells):
             try:
-                v = float(cell)
+                v = _number(cell, delimiter)
             except ValueError:
                 raise _fail(source, i, f"{name} = {cell.strip()[:20]!r} is not a number") from None
             if not math.isfinite(v):
@@ -143,7 +180,7 @@ def parse_indicator_csv(text: str, source: str) -> IndicatorCard:
             raise _fail(source, i, f"x = {x:g} is outside 0 .. 1 (the piston position as a fraction of the stroke)")
         if not 0.0 <= p <= MAX_CARD_PRESSURE:
             raise _fail(source, i, f"p = {p:g} at is outside 0 .. {MAX_CARD_PRESSURE:g} (absolute pressure in at)")
-        if len(pts) >= MAX_POINTS:
+        if len(pts) > MAX_POINTS or (len(pts) == MAX_POINTS and (x, p) != pts[0]):  # the closing repeat is free
             raise _fail(source, i, f"more than {MAX_POINTS} points")
         pts.append((x, p))
         rows.append(i)
@@ -224,28 +261,44 @@ def _branch(pts, rows, idx: Sequence[int], sign: int, source: str):
 
 
 def _no_crossing(pts, rows, height: float, source: str) -> None:
-    """Refuse a loop whose chords cross (other than neighbours meeting at their common point)."""
+    """Refuse a loop whose chords cross (other than neighbours meeting at their common point).
+
+    Only chords whose x-ranges overlap can cross: sorted by where they begin, each is tested against those
+    beginning within its range -- a card of two strokes has a few such pairs per chord, so thousands of points
+    cost milliseconds (numpy, in blocks of pairs), where testing every pair cost seconds.
+    """
     a = np.array([(x, p / height) for x, p in pts])
     b = np.roll(a, -1, axis=0)
     n = len(a)
+    lo, hi = np.minimum(a[:, 0], b[:, 0]), np.maximum(a[:, 0], b[:, 0])
+    order = np.argsort(lo, kind="stable")
+    starts = lo[order]
+    # for the k-th chord in that order, the later ones that begin inside its x-range
+    ends = np.searchsorted(starts, hi[order], side="right")
+    counts = np.maximum(ends - np.arange(n) - 1, 0)
+    first = np.repeat(order, counts)
+    second = order[np.concatenate([np.arange(k + 1, e) for k, e in zip(range(n), ends) if e > k + 1] or
+                                  [np.zeros(0, dtype=int)])]
+    i, j = np.minimum(first, second), np.maximum(first, second)
+    keep = (j - i > 1) & ~((i == 0) & (j == n - 1))   # neighbours share a point: that is no crossing
+    i, j = i[keep], j[keep]
     d = b - a
-    for i in range(n - 2):
-        j = np.arange(i + 2, n if i > 0 else n - 1)
-        if j.size == 0:
-            continue
-        p, r = a[i], d[i]
-        q, s = a[j], d[j]
-        denom = r[0] * s[:, 1] - r[1] * s[:, 0]
+    hits = []
+    for s0 in range(0, i.size, 1_000_000):  # blocks bound the memory for a pathological card
+        ii, jj = i[s0:s0 + 1_000_000], j[s0:s0 + 1_000_000]
+        p, r, q, t_ = a[ii], d[ii], a[jj], d[jj]
+        denom = r[:, 0] * t_[:, 1] - r[:, 1] * t_[:, 0]
         qp = q - p
         with np.errstate(divide="ignore", invalid="ignore"):
-            t = (qp[:, 0] * s[:, 1] - qp[:, 1] * s[:, 0]) / denom
-            u = (qp[:, 0] * r[1] - qp[:, 1] * r[0]) / denom
+            t = (qp[:, 0] * t_[:, 1] - qp[:, 1] * t_[:, 0]) / denom
+            u = (qp[:, 0] * r[:, 1] - qp[:, 1] * r[:, 0]) / denom
         eps = 1e-12
         hit = (np.abs(denom) > eps) & (t > eps) & (t < 1 - eps) & (u > eps) & (u < 1 - eps)
-        if hit.any():
-            k = int(j[np.argmax(hit)])
-            raise _fail(source, rows[(i + 1) % n], f"the loop crosses itself: the chord from row {rows[i]} to row "
-                        f"{rows[(i + 1) % n]} crosses the chord from row {rows[k]} to row {rows[(k + 1) % n]}")
+        hits += [(int(x), int(y)) for x, y in zip(ii[hit], jj[hit])]
+    if hits:
+        i0, k = min(hits)
+        raise _fail(source, rows[(i0 + 1) % n], f"the loop crosses itself: the chord from row {rows[i0]} to row "
+                    f"{rows[(i0 + 1) % n]} crosses the chord from row {rows[k]} to row {rows[(k + 1) % n]}")
 
 
 def load_indicator(path: Any) -> IndicatorCard:
@@ -289,8 +342,6 @@ class DrawnCard:
 
     forward: str   #: polyline of the forward stroke's branch (x increasing), continued level to both dead centres
     back: str      #: polyline of the return stroke's branch
-    forward_points: tuple[str, ...] = ()  #: the forward polyline's points in order (its chords' ends)
-    back_points: tuple[str, ...] = ()     #: the return polyline's points in order
 
 
 def draw_card(b: Any, card: IndicatorCard, *, prefix: str, head: str, crank: str, axis: str,
@@ -298,71 +349,46 @@ def draw_card(b: Any, card: IndicatorCard, *, prefix: str, head: str, crank: str
               pressure_scale: Sequence[str] = ("pressure_unit",), mirrored: bool = False,
               up: tuple[str, str] | None = None, given_prefix: str | None = None, de: str = "",
               en: str = "") -> DrawnCard:
-    """Plot the card's points from their givens (x by the compass along the stroke from *head*, p up the
-    perpendicular) and join each stroke's points with the straightedge.
+    """Trace the card onto the drawing from its givens -- each point x along the stroke from *head*, p up the
+    perpendicular, as the draftsman copies an indicator card with his scale -- and join each stroke's points with
+    the straightedge: one step for the loop as digitised, one for each stroke's line.
 
-    *mirrored*: the same givens (named by *given_prefix*) plotted from the other dead centre (*head* is then the
+    *mirrored*: the same givens (named by *given_prefix*) traced from the other dead centre (*head* is then the
     crank end): the crank side's card under Baumann's assumption; its forward stroke is the cover card's return
-    branch.  *up* (two
-    points of the stroke line) says which side the pressures stand on (left of up[0] -> up[1]; default
-    head -> crank).  The branches are continued level to the dead centres where the card stops short (within
-    its stated tolerance) so every ordinate of the stroke meets them.
+    branch.  *up* (two points of the stroke line) says which side the pressures stand on (left of up[0] -> up[1];
+    default head -> crank).  The branches are continued level to the dead centres where the card stops short
+    (within its stated tolerance) so every ordinate of the stroke meets them.  A card of thousands of points is
+    three steps, not thousands: the readings are where the ordinates meet the traced lines.
+
+    *axis* is the stroke line the card stands on (kept for the callers' symmetry: the trace needs its ends only).
     """
     up = up or (head, crank)
     gp = prefix if given_prefix is None else given_prefix  # the givens' names (a mirrored card reads another's)
-    pts: dict[int, str] = {}
-    with b.group(f"indicator card {en}: its points plotted", f"Indikatordiagramm {de}: die Punkte aufgetragen"):
-        v0 = b.erect_perpendicular(f"{prefix}v0", head, axis, crank)
-        v1 = b.erect_perpendicular(f"{prefix}v1", crank, axis, head)
-        for i, (x, p) in enumerate(card.points):
-            if x == 0.0:  # on a dead centre: no opening to take (a compass opened to nothing draws nothing)
-                foot, perp = head, v0
-            elif x == 1.0:
-                foot, perp = crank, v1
-            else:
-                lx = b.given_length(f"{prefix}lx{i}", product=(f"{gp}x{i}", *stroke), factor=stroke_factor,
-                                    de=f"Kolbenweg x{i}", en=f"piston path x{i}")
-                k = b.circle_radius(f"{prefix}F{i}.k", head, lx, de=f"x{i} vom Totpunkt aus", en=f"x{i} from the dead centre")
-                foot = b.intersect(f"{prefix}F{i}", axis, k, rule=("toward", head, crank), de=f"Fußpunkt {i}",
-                                   en=f"foot {i}")
-                perp = b.erect_perpendicular(f"{prefix}o{i}", foot, axis, head)
-            if p == 0.0:
-                pts[i] = foot
-                continue
-            lp = b.given_length(f"{prefix}lp{i}", product=(f"{gp}p{i}", *pressure_scale),
-                                de=f"Druck p{i}", en=f"pressure p{i}")
-            k = b.circle_radius(f"{prefix}C{i}.k", foot, lp, de=f"p{i} im Druckmaßstab", en=f"p{i} in the pressure scale")
-            pts[i] = b.intersect(f"{prefix}C{i}", perp, k, rule=("left", *up), role="result",
-                                 de=f"Punkt {i} des Diagramms", en=f"point {i} of the diagram")
-    fwd_idx, back_idx = (card.forward_index, card.back_index)
-    xs_f, xs_b = card.forward[0], card.back[0]
+    fwd_idx, back_idx = card.forward_index, card.back_index
     if mirrored:  # seen from the other dead centre the strokes change places
         fwd_idx, back_idx = tuple(reversed(card.back_index)), tuple(reversed(card.forward_index))
-        xs_f, xs_b = tuple(1.0 - x for x in reversed(card.back[0])), tuple(1.0 - x for x in reversed(card.forward[0]))
+    params = {"stroke": tuple(stroke), "stroke_factor": stroke_factor, "pressure": tuple(pressure_scale)}
+
+    def names(idx):
+        return {"xs": tuple(f"{gp}x{i}" for i in idx), "ps": tuple(f"{gp}p{i}" for i in idx)}
+
     out = []
-    vertices = []
-    with b.group(f"indicator card {en}: each stroke's line with the straightedge",
-                 f"Indikatordiagramm {de}: die Linie jedes Hubes mit dem Lineal"):
-        b.polyline(f"{prefix}loop", [pts[i] for i in range(len(card.points))], closed=True,
-                   de="das Diagramm, wie digitalisiert, geschlossen", en="the card as digitised, closed")
-        for name, idx, xs, what in (("fwd", fwd_idx, xs_f, ("Hingang", "forward stroke")),
-                                    ("back", back_idx, xs_b, ("Rückgang", "return stroke"))):
-            names = [pts[i] for i in idx]
-            ends = []
-            for end, x_end, target, perp in (("s", xs[0], 0.0, v0), ("e", xs[-1], 1.0, v1)):
-                if x_end == target:
-                    ends.append(None)
-                    continue
-                point = names[0] if end == "s" else names[-1]
-                level = b.parallel_through(f"{prefix}{name}.{end}.h", point, head, crank)
-                ends.append(b.intersect(f"{prefix}{name}.{end}", level, perp, rule=("only",),
-                                        de="Linie waagerecht bis zum Totpunkt fortgesetzt",
-                                        en="line continued level to the dead centre"))
-            line = ([ends[0]] if ends[0] else []) + names + ([ends[1]] if ends[1] else [])
-            vertices.append(tuple(line))
-            out.append(b.polyline(f"{prefix}{name}", line, de=f"{what[0]}: Punkte mit dem Lineal verbunden",
-                                  en=f"{what[1]}: the points joined with the straightedge"))
-    return DrawnCard(out[0], out[1], vertices[0], vertices[1])
+    with b.group(f"indicator card {en}: traced, each stroke's line with the straightedge",
+                 f"Indikatordiagramm {de}: übertragen, die Linie jedes Hubes mit dem Lineal"):
+        b.record("curve", "trace", (head, crank, *up), (f"{prefix}loop",),
+                 {**names(range(len(card.points))), **params, "closed": True},
+                 f"das Diagramm {de}, wie digitalisiert, mit dem Maßstab übertragen",
+                 f"the card {en} as digitised, traced with the scale", role="result")
+        for name, idx, what in (("fwd", fwd_idx, ("Hingang", "forward stroke")),
+                                ("back", back_idx, ("Rückgang", "return stroke"))):
+            # x runs from the head in the givens; traced from the crank end a mirrored card's x is 1 - x there,
+            # which the trace does by starting at *head* (the crank end) -- the order of the points is the stroke's
+            b.record("curve", "trace", (head, crank, *up), (f"{prefix}{name}",),
+                     {**names(idx), **params, "extend": True},
+                     f"{what[0]}: Punkte mit dem Lineal verbunden, waagerecht bis zu den Totpunkten",
+                     f"{what[1]}: the points joined with the straightedge, level to the dead centres", role="result")
+            out.append(f"{prefix}{name}")
+    return DrawnCard(out[0], out[1])
 
 
 def _card_key(givens: Mapping[str, float], prefix: str = "") -> tuple:

@@ -17,14 +17,14 @@ card, the cranks of a revolution -- the German with the decimal comma, the Engli
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Mapping
 
 from ..kernel.division import NAMES as DIVISION_NAMES
 from ..kernel.errors import InvalidParameter
 from ..kernel.letters import number
 
-__all__ = ["Book", "Cite", "ANHANG_II", "HANDBOOK", "MECHANICS", "BAUMANN_1902", "BOOKS", "book", "number", "ratio",
+__all__ = ["Book", "Cite", "ANHANG_II", "HANDBOOK", "COMBUSTION", "MECHANICS", "BAUMANN_1902", "BOOKS", "book", "number", "ratio",
            "metres", "percent", "division", "stroke_parts", "scale", "diagram", "card", "revolution", "low_pressure"]
 
 
@@ -96,7 +96,13 @@ BAUMANN_1902 = Book("baumann", "A. Baumann", "Ein neues Verfahren zur Bestimmung
                     year="1902", teaches="a new method for flywheel weights: the steam diagram, the "
                     "tangential-pressure diagram and its excess area, rim, arms and hub, with his own error "
                     "analysis and tables", number="004")
-#: The four source texts by their names, in the order of their files.
+#: The handbook's section on combustion engines, "c) Die Kraftwirkungen in Verbrennungsmaschinen": the same
+#: book as Tafel I's steam engine (its name, number, year), cited by the section's own title, since its figures
+#: Abb. 1056-1058 are the engines', not Tafel I's.
+COMBUSTION = replace(HANDBOOK, title_de="„Die Kraftwirkungen in Verbrennungsmaschinen“",
+                     title_en="„Die Kraftwirkungen in Verbrennungsmaschinen“ (force effects in combustion engines)")
+#: The four source texts by their names, in the order of their files (a section cited by its own title, as
+#: COMBUSTION, is found by its book's name).
 BOOKS: dict[str, Book] = {b.key: b for b in (ANHANG_II, HANDBOOK, MECHANICS, BAUMANN_1902)}
 
 

@@ -302,8 +302,8 @@ def staged_output(target: str | os.PathLike[str], *, recognise: Callable[[Path],
         except OSError as exc:
             if isinstance(exc, OutputError):
                 raise
-            raise write_failure(exc, target, stage, what) from None
-        _commit(stage, target, exact=recognise is not None)
+            raise write_failure(exc, target, stage, what, existed) from None
+        _commit(stage, target, exact=recognise is not None, existed=existed)
     except BaseException:
         _release(stage)
         if created is not None:
@@ -312,30 +312,56 @@ def staged_output(target: str | os.PathLike[str], *, recognise: Callable[[Path],
     _release(stage)
 
 
-def _commit(stage: Path, target: Path, *, exact: bool = False) -> None:
-    try:
-        staged = sorted(stage.iterdir())
-        for entry in staged:
-            dest = target / entry.name
-            if entry.is_dir() and dest.exists():
-                # Swap whole folders: move the old one aside first, then drop it.
-                old = _make_stage(target, "old-")
-                os.replace(dest, old / entry.name)
-                os.replace(entry, dest)
-                _release(old)
-            else:
-                os.replace(entry, dest)
-        if exact:  # what the previous run wrote and this one did not (recognised as ours before)
-            keep = {e.name for e in staged}
+def _commit(stage: Path, target: Path, *, exact: bool = False, existed: bool = True) -> None:
+    """Move the staged entries into *target*, all of them or none: what they replace (and, *exact*, what the
+    previous run wrote and this one did not) goes aside into a staging folder first; if a move fails, the
+    entries already moved go back into the stage and the old ones back into place.  Ctrl-C, SIGTERM and
+    SIGHUP wait until it is done either way (:func:`signals_deferred`)."""
+    with signals_deferred():
+        aside: Path | None = None
+        moved_aside: list[str] = []
+        placed: list[str] = []
+        try:
+            staged = sorted(stage.iterdir())
+            names = {e.name for e in staged}
+            aside = _make_stage(target, "old-")
             for name in _entries(target, "output folder"):
-                if name not in keep:
-                    old = target / name
-                    if old.is_dir() and not old.is_symlink():
-                        shutil.rmtree(old)
-                    else:
-                        old.unlink()
-    except OSError as exc:
-        raise OutputError(f"cannot write to output folder {str(target)!r}: {_reason(exc)}") from None
+                if name in names or exact:
+                    os.replace(target / name, aside / name)
+                    moved_aside.append(name)
+            for entry in staged:
+                os.replace(entry, target / entry.name)
+                placed.append(entry.name)
+        except BaseException as exc:
+            restored = _roll_back(stage, target, aside, placed, moved_aside)
+            if aside is not None and restored:
+                _release(aside)
+            elif aside is not None:   # something could not be put back: it stays where the message says
+                _ACTIVE.discard(_key(aside))
+            if not isinstance(exc, OSError) or isinstance(exc, OutputError):
+                raise
+            kept = ((f"the previous {'files are' if moved_aside else 'output is'} kept" if existed else
+                     "nothing was written") if restored else
+                    f"the previous files could not all be put back: they are in {str(aside)!r}")
+            raise OutputError(f"cannot write to output folder {str(target)!r}: {_reason(exc)}; {kept}") from None
+        _release(aside)
+
+
+def _roll_back(stage: Path, target: Path, aside: Path | None, placed: list[str], moved_aside: list[str]) -> bool:
+    """Undo a commit that failed halfway: the new entries back into the stage, the old ones back into place.
+    True when everything is back."""
+    ok = True
+    for name in reversed(placed):
+        try:
+            os.replace(target / name, stage / name)
+        except OSError:
+            ok = False
+    for name in reversed(moved_aside):
+        try:
+            os.replace(aside / name, target / name)  # type: ignore[operator]
+        except OSError:
+            ok = False
+    return ok
 
 
 # --------------------------------------------------------------------------- a folder swapped as a whole
@@ -371,6 +397,10 @@ def replaced_folder(target: str | os.PathLike[str], *, recognise: Callable[[Path
     if existed and here is not None and here.is_relative_to(target):
         raise OutputError(f"refusing to replace {str(target)!r}: it holds the current folder; "
                           f"run from outside it or name another folder")
+    if existed and not os.access(target, os.W_OK | os.X_OK):
+        # a folder moved whole to its new place needs writing into itself (its ".."): say so before building
+        raise OutputError(f"cannot replace {what} {str(target)!r}: it is not writable, and it is replaced by "
+                          f"moving it whole; nothing was built, the previous {what} is kept")
     created = _first_missing(parent)  # folders made for the target, removed again if the run fails
     try:
         parent.mkdir(parents=True, exist_ok=True)
@@ -401,7 +431,7 @@ def replaced_folder(target: str | os.PathLike[str], *, recognise: Callable[[Path
         except OSError as exc:
             if isinstance(exc, OutputError):
                 raise
-            raise write_failure(exc, target, new, what) from None
+            raise write_failure(exc, target, new, what, existed) from None
         with signals_deferred():  # Ctrl-C or SIGTERM from here on waits until the old or the new is in place
             swapped = _swap(stage, new, target, existed, what)
             _release(stage)
@@ -416,8 +446,9 @@ def replaced_folder(target: str | os.PathLike[str], *, recognise: Callable[[Path
         raise
 
 
-def write_failure(exc: OSError, target: Path, stage: Path, what: str) -> OutputError:
-    """A write that failed while a folder was staged, as one line naming the target, the file and the cause."""
+def write_failure(exc: OSError, target: Path, stage: Path, what: str, existed: bool = True) -> OutputError:
+    """A write that failed while a folder was staged, as one line naming the target, the file and the cause, and
+    what is left: the previous folder where there was one, nothing where there was none."""
     name = getattr(exc, "filename", None)
     where = ""
     if name:
@@ -425,8 +456,8 @@ def write_failure(exc: OSError, target: Path, stage: Path, what: str) -> OutputE
             where = f" (writing {Path(os.fsdecode(name)).relative_to(stage).as_posix()})"
         except ValueError:
             where = f" (writing {os.fsdecode(name)})"
-    return OutputError(f"cannot write {what} {str(target)!r}: {_reason(exc)}{where}; "
-                       f"nothing was changed, the previous {what} is kept")
+    left = f"nothing was changed, the previous {what} is kept" if existed else "nothing was written"
+    return OutputError(f"cannot write {what} {str(target)!r}: {_reason(exc)}{where}; {left}")
 
 
 #: renameat2's flag for an atomic exchange of two paths (Linux 3.15, glibc 2.28), and the "current folder" fd.
@@ -484,7 +515,8 @@ def _swap(stage: Path, new: Path, target: Path, existed: bool, what: str) -> boo
     except OutputError:
         raise
     except OSError as exc:
-        raise OutputError(f"cannot replace {str(target)!r}: {_reason(exc)}; the previous {what} is kept") from None
+        left = f"the previous {what} is kept" if existed else "nothing was written"
+        raise OutputError(f"cannot write {what} {str(target)!r}: {_reason(exc)}; {left}") from None
 
 
 _DEFERRED = ("SIGINT", "SIGTERM", "SIGHUP")

@@ -16,7 +16,7 @@ In a sweep (a replay over arrays of givens) a chain's points hold one
 coordinate per set of givens, as any point of a sweep does; ``take(i)`` is the
 chain of set *i*.  The operations that draw and cross curves have array forms
 beside their scalar ones (:func:`crossings_of_sweeps`, the French curve's
-``_french_curve_sweep``): the same steps on all sets at once, held equal to the
+sweep in :mod:`construct.kernel.curve_ops`): the same steps on all sets at once, held equal to the
 scalar ones set by set (tests/test_sweep.py).
 
 >>> c = BezierCurve((Point(0, 0), Point(1, 1), Point(2, 1), Point(3, 0)))
@@ -39,9 +39,9 @@ from typing import Any, Sequence
 import numpy as np
 
 from .errors import DegenerateObject, GeometryError
-from .geometry import SCALAR, Line, Point, raw_point, sets_where, take
+from .geometry import Line, Point, take
 
-__all__ = ["Polyline", "BezierCurve", "crossings", "crossings_of_sweeps", "CURVE_TYPES"]
+__all__ = ["Polyline", "BezierCurve", "crossings", "crossings_of_sweeps", "coordinate_rows", "CURVE_TYPES"]
 
 
 class _Chain:
@@ -326,19 +326,25 @@ def crossings(curve: Any, line: Line) -> tuple[Point, ...]:
                 add(*BezierCurve._at(seg, t))
     else:
         pts = curve.curve_points()
-        for a, b in zip(pts, pts[1:]):
-            sa, sb = side(a), side(b)
-            if sa == 0.0:
+        # every vertex's side in one numpy pass (the same arithmetic as side(), element by element); only the
+        # chords that touch or cross the line are cut -- a traced card has thousands of chords, two of them cross
+        xy = np.asarray(pts, dtype=float)
+        s = (xy[:, 0] - px) * nx + (xy[:, 1] - py) * ny
+        sa, sb = s[:-1], s[1:]
+        for k in np.flatnonzero((sa == 0.0) | ((sa < 0.0) & (sb > 0.0)) | ((sb < 0.0) & (sa > 0.0))):
+            a, b = pts[k], pts[k + 1]
+            ta, tb = float(sa[k]), float(sb[k])
+            if ta == 0.0:
                 add(a[0], a[1])
-            if (sa < 0.0 < sb) or (sb < 0.0 < sa):
-                t = sa / (sa - sb)
+            if (ta < 0.0 < tb) or (tb < 0.0 < ta):
+                t = ta / (ta - tb)
                 add(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
-        if side(pts[-1]) == 0.0:
+        if float(s[-1]) == 0.0:
             add(pts[-1][0], pts[-1][1])
     return tuple(found)
 
 
-def _rows(values: Sequence[Any], n: int) -> np.ndarray:
+def coordinate_rows(values: Sequence[Any], n: int) -> np.ndarray:
     """Coordinates (a float, or one per set of givens) as rows of an array of shape (len(values), n)."""
     out = np.empty((len(values), n))
     for k, v in enumerate(values):
@@ -363,7 +369,7 @@ def crossings_of_sweeps(curve: Any, line: Line, n: int) -> tuple[np.ndarray, np.
         xs, ys, found = _bezier_crossings(curve, px, py, nx, ny, n)
     else:
         pts = curve.curve_points()
-        vx, vy = _rows([p[0] for p in pts], n), _rows([p[1] for p in pts], n)
+        vx, vy = coordinate_rows([p[0] for p in pts], n), coordinate_rows([p[1] for p in pts], n)
         side = (vx - px) * nx + (vy - py) * ny
         sa, sb = side[:-1], side[1:]
         cut = ((sa < 0.0) & (0.0 < sb)) | ((sb < 0.0) & (0.0 < sa))
@@ -399,8 +405,8 @@ def _bezier_crossings(curve: "BezierCurve", px, py, nx, ny, n: int):
     """The Bézier part of :func:`crossings_of_sweeps`: three root rows per segment."""
     segs = curve.segments()
     k = len(segs)
-    cx = _rows([p[0] for seg in segs for p in seg], n).reshape(k, 4, n)
-    cy = _rows([p[1] for seg in segs for p in seg], n).reshape(k, 4, n)
+    cx = coordinate_rows([p[0] for seg in segs for p in seg], n).reshape(k, 4, n)
+    cy = coordinate_rows([p[1] for seg in segs for p in seg], n).reshape(k, 4, n)
     side = (cx - px) * nx + (cy - py) * ny
     s0, s1, s2, s3 = side[:, 0], side[:, 1], side[:, 2], side[:, 3]
     margin = 1e-9 * np.maximum(1.0, np.maximum(np.abs(s0), np.abs(s3)))
@@ -463,159 +469,3 @@ def _cubic_roots01_rows(polys: np.ndarray) -> np.ndarray:
         t = np.where(active, t - f / np.where(df == 0.0, 1.0, df), t)
     keep = real & (t >= -1e-12) & (t <= 1.0 + 1e-12)
     return np.sort(np.where(keep, np.clip(t, 0.0, 1.0), np.inf), axis=1)
-
-
-# --------------------------------------------------------------------------
-# The operations that draw curves (entries of the op table, construct.kernel.ops).
-# Each takes (args, params, givens, refs, xp) and returns its outputs.
-# --------------------------------------------------------------------------
-
-
-def frame_of(axis: Line) -> tuple[float, float, float, float]:
-    ux, uy = axis.direction()
-    return ux, uy, -uy, ux  # along the axis, and its normal ("up")
-
-
-def french_curve_op(args, params, givens, refs, xp):
-    """A smooth curve through the points (sorted along the axis) that follows the given tangents.
-
-    Piecewise cubic Hermite in the frame of the axis: the slope at a point is
-    the given tangent's where there is one, else that of the parabola through
-    the point and its two neighbours (Bessel), as a draftsman lays a French
-    curve through three points at a time.  At a *corner* (``corners``: indices
-    of points, optional) the curve is laid anew: the pieces on either side end
-    there with their own one-sided slopes, as the draftsman stops the curve at a
-    kink (a dead centre of a crank in a summed tangential diagram).
-    """
-    if xp is not SCALAR:
-        return (_french_curve_sweep(args, params, xp.n),)
-    axis = args[0]
-    n = int(params["points"])
-    pts = list(args[1:1 + n])
-    tangents = dict(zip((int(i) for i in params["tangent_at"]), args[1 + n:]))
-    corners = {int(i) for i in params.get("corners", ())}
-    ux, uy, nx, ny = frame_of(axis)
-    rows = sorted(((p.x * ux + p.y * uy, p.x * nx + p.y * ny, i, p) for i, p in enumerate(pts)),
-                  key=lambda r: (r[0], r[2]))
-    u = [r[0] for r in rows]
-    v = [r[1] for r in rows]
-    scale = max(abs(a) for a in u + v) or 1.0
-    for a, c in zip(u, u[1:]):
-        if c - a <= 1e-12 * scale:
-            raise GeometryError("two points of the curve share an abscissa; a French curve cannot pass both")
-    cuts = [0] + [j for j in range(1, len(rows) - 1) if rows[j][2] in corners] + [len(rows) - 1]
-
-    def plane(a: float, b: float) -> Point:
-        return Point(a * ux + b * nx, a * uy + b * ny)
-
-    out = [rows[0][3]]
-    for lo, hi in zip(cuts, cuts[1:]):
-        pu, pv = u[lo:hi + 1], v[lo:hi + 1]
-        slopes = _slopes(pu, pv, [r[2] for r in rows[lo:hi + 1]], tangents, ux, uy, nx, ny)
-        for j in range(len(pu) - 1):
-            third = (pu[j + 1] - pu[j]) / 3.0
-            out += [plane(pu[j] + third, pv[j] + slopes[j] * third),
-                    plane(pu[j + 1] - third, pv[j + 1] - slopes[j + 1] * third), rows[lo + j + 1][3]]
-    return (BezierCurve(out),)
-
-
-def _french_curve_sweep(args, params, sets: int) -> "BezierCurve":
-    """french_curve_op for every set of a sweep at once: the same curve, set by set, on arrays.
-
-    The points are sorted along the axis in each set on its own (their order may change with the givens);
-    a corner lays the curve anew wherever its point comes in that set's order.
-    """
-    axis = args[0]
-    m = int(params["points"])
-    pts = list(args[1:1 + m])
-    tangent_at = [int(i) for i in params["tangent_at"]]
-    corners = {int(i) for i in params.get("corners", ())}
-    ux, uy, nx, ny = frame_of(axis)
-    px, py = _rows([p.x for p in pts], sets), _rows([p.y for p in pts], sets)
-    order = np.argsort(px * ux + py * uy, axis=0, kind="stable")  # by abscissa, then by index: as sorted() does
-    px, py = np.take_along_axis(px, order, 0), np.take_along_axis(py, order, 0)
-    u, v = px * ux + py * uy, px * nx + py * ny
-    scale = np.maximum(np.abs(u).max(axis=0), np.abs(v).max(axis=0))
-    scale = np.where(scale == 0.0, 1.0, scale)
-    h = u[1:] - u[:-1]
-    close = (h <= 1e-12 * scale).any(axis=0)
-    if close.any():
-        raise GeometryError("two points of the curve share an abscissa; a French curve cannot pass both"
-                            + sets_where(close))
-    d = (v[1:] - v[:-1]) / h
-    # each set's slope at each sorted position: the tangent's where its point has one, else Bessel's, one-sided
-    # where a piece starts or ends (the first and last points, and the corners)
-    given = np.full((m, sets), np.nan)
-    for i, t in zip(tangent_at, args[1 + m:]):
-        du = (t.q.x - t.p.x) * ux + (t.q.y - t.p.y) * uy
-        dv = (t.q.x - t.p.x) * nx + (t.q.y - t.p.y) * ny
-        steep = np.abs(du) <= 1e-12 * np.hypot(du, dv)
-        if np.any(steep):
-            raise GeometryError("a tangent of the curve is perpendicular to the axis" + sets_where(
-                np.broadcast_to(steep, (sets,))))
-        given[i] = dv / du
-    given = np.take_along_axis(given, order, 0)
-    cut = np.isin(order, list(corners)) if corners else np.zeros((m, sets), dtype=bool)
-    cut[0] = cut[-1] = True  # where a piece starts or ends
-    start = np.empty((m - 1, sets))  # the slope at the first point of each segment, within its piece
-    end = np.empty((m - 1, sets))  # and at its last point
-    alone = cut[:-1] & cut[1:]  # a piece of one segment
-    with np.errstate(divide="ignore", invalid="ignore"):
-        if m > 2:
-            # segment j from position j to j + 1; a piece's last segment has no next one, its first no previous
-            # one: there the one-sided slope is not needed (the piece is that segment alone: d)
-            first = d[:-1] + (d[:-1] - d[1:]) * h[:-1] / (h[:-1] + h[1:])  # at a piece's start, j = 0 .. m-3
-            last = d[1:] + (d[1:] - d[:-1]) * h[1:] / (h[1:] + h[:-1])  # at a piece's end, j = 1 .. m-2
-            inner = (h[1:] * d[:-1] + h[:-1] * d[1:]) / (h[:-1] + h[1:])  # Bessel's, at positions 1 .. m-2
-            start[:] = np.where(cut[:-1], np.vstack([first, d[-1:]]), np.vstack([d[:1], inner]))
-            end[:] = np.where(cut[1:], np.vstack([d[:1], last]), np.vstack([inner, d[-1:]]))
-        start = np.where(alone, d, start)
-        end = np.where(alone, d, end)
-    start = np.where(np.isnan(given[:-1]), start, given[:-1])
-    end = np.where(np.isnan(given[1:]), end, given[1:])
-    third = h / 3.0
-    c1u, c1v = u[:-1] + third, v[:-1] + start * third
-    c2u, c2v = u[1:] - third, v[1:] - end * third
-    out = [raw_point(px[0], py[0])]
-    for j in range(m - 1):
-        out += [Point(c1u[j] * ux + c1v[j] * nx, c1u[j] * uy + c1v[j] * ny),
-                Point(c2u[j] * ux + c2v[j] * nx, c2u[j] * uy + c2v[j] * ny), raw_point(px[j + 1], py[j + 1])]
-    return BezierCurve(out)
-
-
-def _slopes(u: list[float], v: list[float], index: list[int], tangents: dict, ux: float, uy: float, nx: float,
-            ny: float) -> list[float]:
-    """The slope at each point of one smooth piece: the given tangent's, else Bessel's (one-sided at the ends)."""
-    h = [c - a for a, c in zip(u, u[1:])]
-    d = [(v[i + 1] - v[i]) / h[i] for i in range(len(h))]
-    slopes = []
-    for j, i in enumerate(index):
-        if i in tangents:
-            t = tangents[i]
-            du = (t.q.x - t.p.x) * ux + (t.q.y - t.p.y) * uy
-            dv = (t.q.x - t.p.x) * nx + (t.q.y - t.p.y) * ny
-            if abs(du) <= 1e-12 * math.hypot(du, dv):
-                raise GeometryError("a tangent of the curve is perpendicular to the axis")
-            slopes.append(dv / du)
-        elif len(h) == 1:
-            slopes.append(d[0])
-        elif j == 0:
-            slopes.append(d[0] + (d[0] - d[1]) * h[0] / (h[0] + h[1]))
-        elif j == len(index) - 1:
-            slopes.append(d[-1] + (d[-1] - d[-2]) * h[-1] / (h[-1] + h[-2]))
-        else:
-            slopes.append((h[j] * d[j - 1] + h[j - 1] * d[j]) / (h[j - 1] + h[j]))
-    return slopes
-
-
-def parabola_envelope_op(args, params, givens, refs, xp):
-    """The parabola touching ED at E and DF at F (the envelope of the lines joining equal divisions of ED and DF)."""
-    e, d, f = args
-    c1 = Point(e.x + 2.0 / 3.0 * (d.x - e.x), e.y + 2.0 / 3.0 * (d.y - e.y))
-    c2 = Point(f.x + 2.0 / 3.0 * (d.x - f.x), f.y + 2.0 / 3.0 * (d.y - f.y))
-    return (BezierCurve((e, c1, c2, f)),)
-
-
-def polyline_op(args, params, givens, refs, xp):
-    """The constructed points joined in order by the straightedge."""
-    return (Polyline(args, closed=bool(params.get("closed"))),)

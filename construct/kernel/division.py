@@ -23,7 +23,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from .errors import InvalidParameter
+from .errors import InvalidParameter, did_you_mean
 from .instruments import Builder
 from .protocol import Caption, Provenance
 
@@ -111,7 +111,7 @@ def check_parts(n: Any, method: str) -> str:
     if not 1 <= n <= MAX_PARTS:
         raise InvalidParameter(f"number of parts must be between 1 and {MAX_PARTS}, got {n}")
     if method not in METHODS:
-        raise InvalidParameter(f"unknown division method {method!r}; choose one of {', '.join(METHODS)}")
+        raise InvalidParameter(f"unknown division method {method!r}{did_you_mean(method, METHODS)}; choose one of {', '.join(METHODS)}")
     if method == "auto":
         return choose_method(n)
     if accepts(method, n):

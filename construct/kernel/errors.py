@@ -15,7 +15,11 @@ build and a replay of the same protocol fail with the same error.
 
 from __future__ import annotations
 
+import difflib
+from typing import Iterable
+
 __all__ = [
+    "did_you_mean",
     "ConstructError",
     "InvalidParameter",
     "UnknownConstruction",
@@ -143,3 +147,13 @@ class ConstructWarning(UserWarning):
 class HiddenLabelWarning(ConstructWarning):
     """A style leaves out points a user lettered: a plate (the historical style) shows the results and what
     locates them, so a lettered construction point that locates no result is not drawn, nor is its letter."""
+
+
+def did_you_mean(word: object, choices: Iterable[str]) -> str:
+    """`` (did you mean 'x'?)`` for the choice nearest a misspelt *word*, to end a message with; nothing if none is near.
+
+    >>> did_you_mean("crnk", ["crank", "crank-angle", "two-cranks"]), did_you_mean("zzz", ["crank"])
+    (" (did you mean 'crank'?)", '')
+    """
+    near = difflib.get_close_matches(str(word), list(choices), n=1, cutoff=0.6)
+    return f" (did you mean {near[0]!r}?)" if near else ""

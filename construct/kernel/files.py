@@ -33,11 +33,20 @@ from .errors import ConstructError, InputFileError
 __all__ = ["open_regular_file", "read_regular_file"]
 
 
+def _a(what: str) -> str:
+    """*what* with its indefinite article.
+
+    >>> _a("indicator diagram"), _a("protocol")
+    ('an indicator diagram', 'a protocol')
+    """
+    return f"{'an' if what[:1].lower() in 'aeiou' else 'a'} {what}"
+
+
 def _name(path: Any, what: str, error: type[ConstructError]) -> str:
     try:
         name = os.fsdecode(os.fspath(path))
     except TypeError:
-        raise error(f"a {what} is named by a path, got {type(path).__name__}") from None
+        raise error(f"{_a(what)} is named by a path, got {type(path).__name__}") from None
     if not name:
         raise error(f"the {what} name is empty")
     if "\0" in name:
@@ -69,7 +78,7 @@ def _refuse(name: str, what: str, kind: str, error: type[ConstructError]) -> Con
 def _too_big(name: str, what: str, size: int | None, limit: int, error: type[ConstructError]) -> ConstructError:
     shown = f"{limit // 2**20} MiB" if limit >= 2**20 else f"{limit} bytes"
     size_text = f" ({size} bytes)" if size is not None else ""
-    return error(f"cannot read {what} {name!r}: it is larger than {shown}{size_text}, the most a {what} is read")
+    return error(f"cannot read {what} {name!r}: it is larger than {shown}{size_text}, the most {_a(what)} is read")
 
 
 @contextlib.contextmanager

@@ -146,6 +146,39 @@ class Builder:
         self._group: list[str] = []
         self._group_titles: dict[str, str] = {}
         self._counter: dict[str, int] = {}
+        self._taken_over = 0  # the first steps, taken over from a protocol, whose captions are lettered already
+
+    @classmethod
+    def continuing(cls, protocol: Protocol, objects: Mapping[str, Any], construction: str,
+                   givens: Mapping[str, float] | None = None, params: Mapping[str, Any] | None = None) -> "Builder":
+        """A builder for a construction that goes on from another's figure: its first steps are *protocol*'s
+        (with the objects its replay made), its givens and params those of *protocol* and *givens*, *params*.
+
+        The steps taken over keep their captions, groups and letters; the new ones are lettered as usual.
+
+        >>> b = Builder("segment", givens={"s": 2.0})
+        >>> _ = b.given_point("A", 0.0, 0.0); _ = b.given_point("B", 1.0, 0.0, unit="s")
+        >>> first = b.protocol()
+        >>> c = Builder.continuing(first, first.replay(), "midpoint", params={"note": "on"})
+        >>> _ = c.midpoint("M", "A", "B")
+        >>> p = c.protocol()
+        >>> p.construction, p.steps[:2] == first.steps, p.replay({"s": 6.0})["M"]
+        ('midpoint', True, Point(3.0, 0.0))
+        """
+        inherited = dict(protocol.params)
+        old_givens = dict(inherited.pop("givens", {}))
+        titles = dict(inherited.pop("group_titles", {}))
+        inherited.pop("captions", None)
+        b = cls(construction, {**old_givens, **(givens or {})}, {**inherited, **(params or {})})
+        for step in protocol.steps:
+            b.steps.append(step)
+            for name in step.outputs:
+                b.objects[name] = objects[name]
+                b.provenance[name] = step.provenance
+                b._maker[name] = step.index - 1
+        b._group_titles.update(titles)
+        b._taken_over = len(b.steps)
+        return b
 
     # -- bookkeeping ----------------------------------------------------------
     def __getitem__(self, name: str) -> Any:
@@ -319,8 +352,10 @@ class Builder:
         params["givens"] = dict(self.givens)
         if self._group_titles:
             params["group_titles"] = dict(sorted(self._group_titles.items()))
-        # The captions name what the figure letters (12, B, M1), not the objects' internal names.
-        steps = tuple(letter_steps(self.steps, self.objects))
+        # The captions name what the figure letters (12, B, M1), not the objects' internal names; steps taken
+        # over from another protocol (continuing) are lettered already.
+        lettered = letter_steps(self.steps, self.objects)
+        steps = tuple(self.steps[:self._taken_over]) + tuple(lettered[self._taken_over:])
         params["captions"] = "letters"  # read once: a second reading would take a letter (S1) for a name
         return Protocol(self.construction, MappingProxyType(params), steps, self.replayable)
 

@@ -43,8 +43,8 @@ import numpy as np
 
 from .areas import Area, area_between_op, planimeter_height_op, planimeter_op
 from .closed_curves import closed_french_curve_op
-from .curves import (BezierCurve, Polyline, crossings, crossings_of_sweeps, french_curve_op, parabola_envelope_op,
-                     polyline_op)
+from .curves import BezierCurve, Polyline, crossings, crossings_of_sweeps
+from .curve_ops import french_curve_op, parabola_envelope_op, polyline_op, trace_op, vertex_op
 from .errors import DegenerateObject, GeometryError, NoIntersection
 from .geometry import (SCALAR, Circle, Length, Line, Point, Sweep, raw_circle, raw_point, circle_circle, line_circle,
                        line_line, sets_where, stack, take)
@@ -113,6 +113,7 @@ PARAM_KINDS: dict[str, tuple[Callable[[Any], bool], str]] = {
     "number|null": (lambda v: v is None or _finite(v), "a finite number or null"),
     "positive": (lambda v: _finite(v) and v > 0, "a finite number > 0"),
     "count": (lambda v: _whole(v) and v >= 1, "a whole number >= 1"),
+    "count|zero": (lambda v: _whole(v) and v >= 0, "a whole number >= 0"),
     "parts": (lambda v: _whole(v) and 1 <= v <= MAX_PARTS, f"a whole number of parts 1..{MAX_PARTS}"),
     "flag": (lambda v: isinstance(v, bool), "true or false"),
     "given|null": (lambda v: v is None or _name(v), "the name of a given, or null"),
@@ -409,6 +410,12 @@ OPS: dict[str, Op] = {op.name: op for op in (
        doc="the parabola enveloped by the joins of equal divisions of ED and DF"),
     Op("polyline", polyline_op, ("point", "point", "point*"), outputs=("polyline",),
        params={"closed?": "flag"}, doc="points joined by the straightedge"),
+    Op("trace", trace_op, ("point", "point", "point", "point"), outputs=("polyline",),
+       params={"xs": "givens", "ps": "givens", "stroke": "givens", "stroke_factor?": "number", "pressure": "givens",
+               "extend?": "flag", "closed?": "flag"},
+       doc="a digitised diagram traced onto the drawing from its givens, its points joined by the straightedge"),
+    Op("vertex", vertex_op, ("graph",), params={"index": "count|zero"},
+       doc="a vertex of a drawn chain: the end of one of its chords"),
     Op("smooth_loop", closed_french_curve_op, ("point", "point", "point*"), outputs=("bezier",),
        params={"points?": "count"}, doc="a closed French curve through points in order"),
     Op("area_between", area_between_op, ("graph", "graph", "point", "point"), outputs=("area",),

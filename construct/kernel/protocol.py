@@ -32,15 +32,16 @@ from dataclasses import dataclass
 from collections.abc import Mapping
 from typing import Any
 
-from .errors import InvalidParameter, ProtocolFormatError, StepError
+from .errors import InvalidParameter, OutputError, ProtocolFormatError, StepError
 from .geometry import SCALAR
 # A step (step.py) and the evaluation path (replay.py) live in modules of their own; their names stay importable
 # from here, where every caller has found them.
 from .step import EXACT, GIVEN, Caption, Provenance, Step, jsonable
 from .replay import (STEP_FAILURES, CompiledStep, Program, Replay, check_kinds, compile_step, loop_entry,
                      object_json, run_step, step_failure, sweep_givens)
-from .protocol_file import (KNOWN_FORMATS, PROTOCOL_FILE_FORMAT, PROTOCOL_FORMAT, PROVENANCE_KINDS, ROLES, TOOLS,
-                            check_format, frozen, parse_protocol_json, read_protocol_bytes, step_fields)
+from .protocol_file import (KNOWN_FORMATS, MAX_PROTOCOL_BYTES, PROTOCOL_FILE_FORMAT, PROTOCOL_FORMAT,
+                            PROVENANCE_KINDS, ROLES, TOOLS, check_format, frozen, parse_protocol_json,
+                            read_protocol_bytes, step_fields)
 from .numeric import as_float, shown
 
 __all__ = [
@@ -211,7 +212,14 @@ class Protocol:
         head += ',\n "groups": [' + "".join(f"\n  {line(g)}," for g in groups).rstrip(",") + "\n ]"
         body = ",\n".join(f"  {line(s)}" for s in steps)
         objs = ",\n".join(f"  {line(k)}: {line(v)}" for k, v in objects.items())
-        return f'{head},\n "steps": [\n{body}\n ],\n "objects": {{\n{objs}\n }}}}\n'
+        text = f'{head},\n "steps": [\n{body}\n ],\n "objects": {{\n{objs}\n }}}}\n'
+        size = len(text.encode("utf-8"))
+        if size > MAX_PROTOCOL_BYTES:  # what this library writes, it reads back: the reader's limit, here
+            raise OutputError(f"the protocol of {self.construction!r} ({len(self.steps)} steps) would be "
+                              f"{size / 2**20:.1f} MiB, more than the {MAX_PROTOCOL_BYTES // 2**20} MiB a protocol "
+                              f"file may have to be read back (construct check, replay --protocol); fewer steps "
+                              f"(parts, divisions) make it smaller")
+        return text
 
     @classmethod
     def from_dict(cls, d: Any) -> "Protocol":

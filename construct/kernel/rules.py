@@ -27,7 +27,7 @@ from __future__ import annotations
 
 from typing import Any, Sequence
 
-from .errors import RuleError
+from .errors import RuleError, did_you_mean
 from .geometry import SCALAR, raw_point
 from .numeric import is_finite, shown
 
@@ -46,7 +46,7 @@ class Rule:
     def __init__(self, name: str, refs: Sequence[str] = (), direction: tuple[float, float] | None = None,
                  raw: Sequence[Any] | None = None) -> None:
         if name not in RULE_ARITY:
-            raise RuleError(f"unknown intersection rule {name!r}; known: {', '.join(sorted(RULE_ARITY))}")
+            raise RuleError(f"unknown intersection rule {name!r}{did_you_mean(name, RULE_ARITY)}; known: {', '.join(sorted(RULE_ARITY))}")
         refs = tuple(refs)
         if not all(isinstance(r, str) for r in refs):
             raise RuleError(f"rule {name!r} refers to objects by name, got {refs!r}")
@@ -191,7 +191,7 @@ def as_rule(rule: Any) -> Rule:
             raise RuleError(f"rule {list(rule)!r}: a fixed direction leaves the second point empty")
         return Rule("toward", (), (rule[3], rule[4]), raw=rule)
     if name not in RULE_ARITY:
-        raise RuleError(f"unknown intersection rule {name!r}; known: {', '.join(sorted(RULE_ARITY))}")
+        raise RuleError(f"unknown intersection rule {name!r}{did_you_mean(name, RULE_ARITY)}; known: {', '.join(sorted(RULE_ARITY))}")
     return Rule(name, tuple(rule[1:]))
 
 

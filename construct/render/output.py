@@ -243,12 +243,13 @@ def print_files(construction: Described | None, figure: Drawn, st: Style, format
 
 def check_formats(formats: Any) -> tuple[str, ...]:
     """*formats* as a tuple of :data:`FORMATS` (a word, or several), or InvalidParameter naming the odd one."""
-    from ..kernel.errors import InvalidParameter
+    from ..kernel.errors import InvalidParameter, did_you_mean
 
     got = (formats,) if isinstance(formats, str) else tuple(formats) if isinstance(formats, (tuple, list)) else None
     if not got or any(f not in FORMATS for f in got):
         odd = next((f for f in got or (formats,) if f not in FORMATS), formats)
-        raise InvalidParameter(f"unknown format {odd!r}; choose one or more of {', '.join(FORMATS)}")
+        raise InvalidParameter(f"unknown format {odd!r}{did_you_mean(odd, FORMATS)}; choose one or more of "
+                               f"{', '.join(FORMATS)}")
     return tuple(dict.fromkeys(got))
 
 

@@ -32,13 +32,13 @@ from typing import Iterable
 
 from .lettering import HALO_PX, LEADER_FROM, text_box
 from .paths import bezier_controls, hatch_segments
-from .plate import DASHES, PIECES, Piece, break_elements, crossing_lines, furniture_pieces
+from .plate import DASHES, PIECES, Piece, break_elements, crossing_lines, furniture_pieces, subscript_runs
 from .scene import Mark, MarkKind
 from .page import PrintPlate
 from .styles import PRINT_STROKES, Style
 from .svg import mark_layer, point_radius
 
-__all__ = ["tikz_picture", "tikz_document", "tikz_example", "tex_text", "LETTER_MACRO"]
+__all__ = ["tikz_picture", "tikz_document", "tikz_example", "tex_text", "tex_lettering", "LETTER_MACRO"]
 
 #: The command that sets the letters' face; the document may define it before the ``\input`` (e.g. upright:
 #: ``\newcommand\plateletters{\upshape}``); the picture defines it only where the document has not.
@@ -86,6 +86,16 @@ def tex_text(text: str) -> str:
         else:
             out.append(f"[U+{ord(c):04X}]")  # a character the books have not used yet: seen, never a TeX error
     return "".join(out)
+
+
+def tex_lettering(text: str) -> str:
+    """A plate's lettering as TeX: its indices (``P_b``, ``p_{ü}``, :func:`~construct.render.plate.subscript_runs`)
+    set below the line, as the SVG plate sets them, the rest as :func:`tex_text`.
+
+    >>> tex_lettering("P_b"), tex_lettering("P = F·p_ü")
+    ('P\\\\textsubscript{b}', 'P = F$\\\\cdot$p\\\\textsubscript{\\\\"u}')
+    """
+    return "".join(f"\\textsubscript{{{tex_text(run)}}}" if low else tex_text(run) for run, low in subscript_runs(text))
 
 
 class _Writer:
@@ -182,7 +192,7 @@ def tikz_picture(plate: PrintPlate) -> str:
           f"to {PRECISION_MM} mm; lengths of letters and points in pt.")
     w.add("% Every lettered point is a named coordinate; its letter a node anchored beside it.")
     face = "\\itshape" if st.label_italic else "\\upshape"
-    w.add(f"\\providecommand{LETTER_MACRO}{{{face}}}")
+    w.add(f"\\providecommand{LETTER_MACRO}{{{face}}}%")  # no space in the paragraph that holds the picture
     unit = f"{w.num(plate.mm_per_unit, 5)}mm"
     options = [f"x={unit}", f"y={unit}", "line cap=round", "line join=round"] + _styles(w)
     w.add("\\begin{tikzpicture}[" + (",\n  ".join(options)) + "]")
@@ -339,7 +349,7 @@ def _letters(w: _Writer, named: dict[str, str]) -> None:
             w.add(f"\\draw[plate fine] ([shift={{({w.pts(a * cx / n)},{w.pts(-a * cy / n)})}}]{at[1:-1]}) -- "
                   f"([shift={{({w.pts(b * cx / n)},{w.pts(-b * cy / n)})}}]{at[1:-1]});")
         w.add(f"\\node[plate letter, anchor={anchor}, xshift={w.pts(ax - px)}, yshift={w.pts(py - ay)}] "
-              f"at {at} {{{tex_text(lb.text)}}};")
+              f"at {at} {{{tex_lettering(lb.text)}}};")
 
 
 def _furniture(w: _Writer) -> None:
@@ -362,7 +372,7 @@ def _piece(w: _Writer, p: Piece) -> None:
         rotate = f", rotate={w.num(p.angle, 2)}" if p.angle else ""
         w.add(f"\\node[plate letter, font={LETTER_MACRO}\\fontsize{{{w.num(size * w.pt, 2)}}}"
               f"{{{w.num(1.2 * size * w.pt, 2)}}}\\selectfont, anchor={anchor}{rotate}] at {w.canvas(*p.points[0])} "
-              f"{{{tex_text(p.text)}}};")
+              f"{{{tex_lettering(p.text)}}};")
         return
     if p.kind == "dot":
         w.add(f"\\fill {w.canvas(*p.points[0])} circle[radius={w.pts(p.size)}];")
@@ -394,7 +404,9 @@ def _caption(w: _Writer) -> None:
 def tikz_document(plate: PrintPlate) -> str:
     """A standalone LaTeX document of the plate: a page the sheet's size holding the picture alone
     (pdflatex or lualatex; TikZ and geometry, both in every TeX distribution's basic set)."""
-    w, h = plate.width_mm, plate.height_mm
+    # the page no smaller than the picture: a page rounded down by a thousandth of a millimetre sends the
+    # picture to a second page and leaves the first blank
+    w, h = (math.ceil(round(v / PRECISION_MM, 6)) * PRECISION_MM for v in (plate.width_mm, plate.height_mm))
     num = _Writer(plate).num
     return ("% The plate alone on a page of its size: pdflatex or lualatex this file.\n"
             "\\documentclass{article}\n"
@@ -402,7 +414,7 @@ def tikz_document(plate: PrintPlate) -> str:
             + PREAMBLE + ("\\usepackage{tkz-euclide}\n" if plate.sheet.tikz_style == "tkz-euclide" else "") +
             "\\pagestyle{empty}\n"
             "\\begin{document}\n"
-            "\\noindent\n"
+            "\\noindent%\n"
             + tikz_picture(plate) +
             "\\end{document}\n")
 

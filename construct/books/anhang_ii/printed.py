@@ -224,6 +224,11 @@ def tangent_values() -> tuple[Printed, ...]:
     return tuple(out)
 
 
+#: The appendix's printed tables (every number of it stands in one): a trailing 5 one place beyond its column is
+#: the author's half (:func:`construct.books.printed.in_halves`).
+TABLES = ("Tabelle 1", "Tabelle 2", "characteristic points", "tangents")
+
+
 def all_printed() -> tuple[Printed, ...]:
     """Every printed number of the appendix, in table, row and column order."""
     return table_1() + table_2() + characteristic_points() + tangent_values()

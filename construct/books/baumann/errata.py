@@ -118,6 +118,8 @@ def true_values() -> dict[str, tuple[float, str]]:
                        "−13,73")
     out["fxc_k8"] = (out["fxc_k8"][0], out["fxc_k8"][1] + "; 8,06 − 8,79 = −0,73 printed without its sign; "
                      "recomputed the correction vanishes, as he concludes")
+    out["fxc_k2"] = (out["fxc_k2"][0], out["fxc_k2"][1] + "; his −17,40 less his 13,7 taken as −13,7: −17,40 + 13,7 "
+                     "= −3,7, printed without its sign")
     out["fu_k2"] = (659.0 + 3.7, f"his 659 + 3,7 (with the recomputed f_x' = {out['fxc_k2'][0]:.2f}: "
                     f"{659.0 + out['fxc_k2'][0]:.1f}, the error 0,55 % the other way)")
     # -- flywheel
@@ -132,17 +134,27 @@ def true_values() -> dict[str, tuple[float, str]]:
     out["arms_m2"] = (fw.ARMS_HUB_PRINTED_ASSUMPTIONS * 1e4, note_arms)
     out["arms_cm2"] = (fw.ARMS_HUB_PRINTED_ASSUMPTIONS, note_arms)
     out["disc_coeff"] = (bc["disc_coeff"], f"1,7/2·γ/(g·10⁴); exact 5/6·γ/(g·10⁴) = {d['disc_coeff']:.5f}")
-    out["hub_coeff"] = (bc["hub_coeff"], "0,5/2·γ/(g·10⁴) = 0,01835: one digit wrong")
+    with_true = 0.0625 * 49.0 / 144.0 + bc["hub_coeff"] * 3.0 / 144.0
+    out["hub_coeff"] = (bc["hub_coeff"], f"0,5/2·γ/(g·10⁴) = 0,01835: one digit wrong, two readings: a misprint of "
+                        f"0,01835, or his own slip in working it out; his later use cannot tell them apart "
+                        f"(0,0625·49/144 + 0,01825·3/144 = {bc['moment']:.6f}, with 0,01835 {with_true:.6f}: both "
+                        f"0,0216 beside his 0,0218)")
     out["moment"] = (bc["moment"], f"0,0625·49/144 + 0,01825·3/144 from his printed coefficients; from his exact "
-                     f"assumptions {d['moment']:.5f} (the hub's 3/144 itself is not derivable from them)")
-    out["total_first_order"] = (fw.ARMS_HUB - fw.MOMENT, "(1 + a x)/(1 + m x) ≈ 1 + (a − m) x")
+                     f"assumptions {d['moment']:.5f} (the hub's 3/144 itself is not derivable from them).  Not "
+                     f"the wheel's moment: ρ = 7/12 r1 halves the disc's mass, its radius of gyration is "
+                     f"k² = 215/540 r1² = {fw.DISC_GYRATION:.4f} r1² (not 49/144 = 0,3403), the hub's 2,5/144: "
+                     f"the moment coefficient is {d['moment_gyration']:.4f} (construct flywheel: the exact column)")
+    out["total_first_order"] = (fw.ARMS_HUB - fw.MOMENT, "(1 + a x)/(1 + m x) ≈ 1 + (a − m) x; he computes with "
+                                "1 + 0,06 x, not the quotient (construct flywheel prints both)")
     for i, (kz, v) in enumerate(zip(seed004.TABLE_KZ, seed004.TABLE_V)):
         x = float(v) ** 2 / float(kz)
         out[f"v2:{i}"] = (float(v) ** 2, "v²")
         out[f"t1_g2:{i}"] = (fw.ARMS_HUB * x, "0,08075 v²/kz")
         out[f"t1_total:{i}"] = (1.0 + fw.ARMS_HUB * x, "1 + 0,08075 v²/kz")
         out[f"t2_moment:{i}"] = (1.0 + fw.MOMENT * x, "1 + 0,0218 v²/kz")
-        out[f"t2_weight:{i}"] = (1.0 + fw.TOTAL * x, "1 + 0,06 v²/kz")
+        quotient = (1.0 + fw.ARMS_HUB * x) / (1.0 + fw.MOMENT * x)
+        out[f"t2_weight:{i}"] = (1.0 + fw.TOTAL * x, f"1 + 0,06 v²/kz as his formula; his own quotient "
+                                 f"(1 + 0,08075 x)/(1 + 0,0218 x) of which it is the expansion is {quotient:.4f}")
     # His worked cases, judged along his own chain: the total from G_s and his printed (rounded) v, the rim from
     # his printed total, arms and hub as printed total − printed rim.  kz = 5 v is an assumption (his tables pair
     # kz and v so; he does not say which kz he takes here).
@@ -251,6 +263,37 @@ def formula_table_check(total: str, rim: str, arms: str) -> dict[str, object]:
     return {"true": triple, "wrong": which, "cause": cause, "note": note, "factor": f}
 
 
+def _against_formula_a(name: str, i: int, c: dict[str, object]) -> dict[str, object]:
+    """A corrected total weighed against the rest of his comparison: each formula's totals stand in a steady
+    ratio to Formel A's (B: 0,75–0,87), and A, C and E give the two tandem engines nearly equal totals.  Where
+    the correction takes the formula's ratio to A far out of the range of its other columns and the printed total
+    stays near it, the other reading -- the total right, the rim and arms both wrong -- fits as well: the verdict
+    is ``ambiguous`` and the note gives both."""
+    if c["wrong"] != "total" or name == "Formel A":
+        return c
+    totals = seed004.FORMULA_TOTALS
+    ratios = [int(totals[name][j]) / int(totals["Formel A"][j]) for j in range(len(seed004.MACHINE_COLUMNS))
+              if j != i and totals[name][j] is not None and totals["Formel A"][j] is not None]
+    if len(ratios) < 2:
+        return c
+    lo, hi = min(ratios), max(ratios)
+    a = int(totals["Formel A"][i])
+    printed, corrected = int(totals[name][i]), int(c["true"]["total"])  # type: ignore[index]
+
+    def off(x: float) -> float:
+        return max(lo - x, x - hi, 0.0)
+
+    if off(corrected / a) <= 2.0 * off(printed / a) + 0.05:
+        return c
+    rim = round(printed / 1.34 / 100.0) * 100
+    note = (f"two readings: (1) {c['note']}; then {name}/Formel A = {corrected / a:.2f} against "
+            f"{lo:.2f}–{hi:.2f} in the other columns; (2) the total {printed} right ({name}/Formel A = "
+            f"{printed / a:.2f}) and the rim and arms both wrong (with his factor 1,34 about {rim} and "
+            f"{printed - rim}) -- the printed rim and arms add to the other reading's total, the ratios to Formel A "
+            f"speak for this one")
+    return {**c, "cause": "ambiguous", "note": note}
+
+
 def _formula_table_values() -> dict[str, tuple[float, str]]:
     out: dict[str, tuple[float, str]] = {}
     for name in seed004.FORMULA_ROWS:
@@ -258,7 +301,7 @@ def _formula_table_values() -> dict[str, tuple[float, str]]:
             if seed004.FORMULA_TOTALS[name][i] is None:
                 continue
             rim, arms = seed004.FORMULA_RIMS[name][i]
-            c = formula_table_check(seed004.FORMULA_TOTALS[name][i], rim, arms)
+            c = _against_formula_a(name, i, formula_table_check(seed004.FORMULA_TOTALS[name][i], rim, arms))
             true = c["true"]
             sums = {"total": f"rim + arms and hub = {true['rim']} + {true['arms']}",
                     "rim": f"total − arms and hub = {true['total']} − {true['arms']}",
@@ -268,8 +311,10 @@ def _formula_table_values() -> dict[str, tuple[float, str]]:
                     f"{sums[part]}" + (f"; {c['note']}" if c["wrong"] is None else
                                        f"; agrees with the {c['wrong']} corrected ({c['wrong']} {true[c['wrong']]}, factor "
                                        f"total/rim {c['factor']:.3f})"))
+                if c["cause"] == "ambiguous" and c["wrong"] != part:
+                    note += f"; under the other reading (the {c['wrong']} as printed) it is wrong: see the {c['wrong']}'s note"
                 out[f"formula_{part}:{name}:{i}"] = (float(true[part]), note)
-                if c["wrong"] == part:
+                if c["wrong"] == part or c["cause"] == "ambiguous":   # an ambiguous column is so in all its numbers
                     _CAUSES[f"formula_{part}:{name}:{i}"] = str(c["cause"])
     return out
 
@@ -283,7 +328,7 @@ _CAUSES: dict[str, str] = {
     "cos_alpha2_k8": "typesetting", "cos_alpha2_k2": "typesetting",
     "coef_C": "typesetting",          # 4,98 in the brackets for the 4,89 he prints two lines before
     "f_k8": "arithmetic", "alpha1_k8_rad": "arithmetic", "fxc_k8": "follows", "f_k2": "arithmetic",
-    "shift_k2": "arithmetic", "fxc_k2": "follows", "centroid": "follows", "hub_coeff": "typesetting",
+    "shift_k2": "arithmetic", "fxc_k2": "follows", "centroid": "follows", "hub_coeff": "ambiguous",
     "worked_v:3": "arithmetic", "worked_v:5": "arithmetic", "worked_total:4": "typesetting",
     "worked_rim:3": "follows", "worked_rim:5": "follows",
 }
@@ -299,7 +344,9 @@ def _entry(p: Printed, true: float, note: str) -> Erratum:
     value = reading.value
     t = true * 60.0 if reading.is_angle else true
     units = _units(value, unit, t)
-    verdict = classify(units, _CAUSES.get(p.quantity, "unexplained"))
+    cause = _CAUSES.get(p.quantity, "unexplained")
+    # two readings: the class says so whatever the distance under the first
+    verdict = "ambiguous" if cause == "ambiguous" else classify(units, cause)
     notes = [note]
     if verdict != "agrees" and classify(_units(-value, unit, t)) in ("agrees", "slip"):
         notes.append("sign dropped: the magnitude is right")

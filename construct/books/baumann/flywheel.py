@@ -26,6 +26,23 @@ From them, exactly:
 * total G_s(1 + 0.08075 x)/(1 + 0.0218 x) ≈ G_s(1 + 0.059 x) ≈ G_s(1 + 0.06 x),
   x = v²/kz: the first-order expansion.
 
+**Where his method is not self-consistent** (:func:`design` gives both his figures and the exact ones):
+
+* he uses 1 + 0.06 x where his own quotient is meant: at x = v/5 (his kz = 5 v) for v = 17 and 29.5 m/s
+  it is 1.2036 and 1.3538 against the quotient's 1.1862 and 1.3080;
+* his rim: the derivation gives G1 = G_s/(1 + 0.0218 x) (the wheel's moment equals the one required), his
+  closing summary and his list of rims G_total/(1 + 0.08075 x) with the total from 1 + 0.06 x -- two
+  different rims (the first is the consistent one);
+* ρ = 7/12 r1 halves the disc's mass, but a mass "concentrated" there does not carry the disc's moment:
+  the disc's mass is spread evenly over r1/6 … r1 (b·r is constant), so its radius of gyration is
+  k² = (1 − 1/216)/3 · 6/5 r1² = 215/540 r1² = 0.398 r1², not 49/144 = 0.340; the hub's ring
+  (r1/12 … r1/6) has k² = 2.5/144 r1², not 3/144.  From his assumptions, without his roundings, the
+  moment coefficient is 0.0247, not 0.0218, and the arms and hub 0.0795, not 0.08075.
+
+The rim's own moment (his last paragraph): G1·D1² with D1 = (Da + Di)/2 stands for G1·(Da² + Di²)/2 = G1(D1² +
+h²) (a rim of radial height h); he says this too little makes up for the too much of the disc counted from
+the rim's inner edge out to its mean circle.  :func:`rim_moment_correction` computes both.
+
 >>> round(ARMS_HUB_PRINTED_ASSUMPTIONS, 6), round(derived()["arms_hub"], 5)
 (0.080734, 0.07951)
 >>> row = coefficient_rows([75.0], [15.0])[0]
@@ -42,7 +59,8 @@ from ...kernel.errors import InvalidParameter
 
 __all__ = ["GAMMA", "G", "book_chain", "ARMS_HUB", "MOMENT", "TOTAL", "derived", "coefficient_rows", "BOOK_KZ", "BOOK_V",
            "required_moment", "moment_from_excess", "rim_speed", "total_weight", "WORKED", "worked_totals",
-           "ARMS_HUB_PRINTED_ASSUMPTIONS", "design", "parse_fraction", "KZ_PER_V"]
+           "ARMS_HUB_PRINTED_ASSUMPTIONS", "design", "parse_fraction", "KZ_PER_V", "DISC_GYRATION", "HUB_GYRATION",
+           "exact_wheel", "rim_moment_correction"]
 
 GAMMA = 7200.0  #: kg/m³, cast iron (seed 004)
 G = 9.81        #: m/s² (seed 004)
@@ -59,6 +77,12 @@ BOOK_V = (15.0, 17.0, 19.0, 20.0, 21.0, 22.0, 23.0, 24.0, 25.0, 26.0, 27.0, 28.0
 #: 1.1 γ/(g·10⁴): his 2.2π for arms and hub, the rest exact.
 ARMS_HUB_PRINTED_ASSUMPTIONS = 1.1 * GAMMA / (G * 1e4)
 
+#: k²/r1² of the disc of equal stress (b·r constant: its mass evenly spread over r1/6 .. r1): 215/540, where his
+#: ρ² = (7/12)² = 49/144 only halves the mass.
+DISC_GYRATION = (1.0 - 1.0 / 216.0) / 3.0 * 6.0 / 5.0
+#: k²/r1² of the hub, a ring of even thickness from r1/12 to r1/6: ((1/6)² + (1/12)²)/2 = 2.5/144 (he takes 3/144).
+HUB_GYRATION = ((1.0 / 6.0) ** 2 + (1.0 / 12.0) ** 2) / 2.0
+
 
 def derived(*, gamma: float = GAMMA, g: float = G) -> dict[str, float]:
     """The coefficients from Baumann's stated assumptions, without his roundings (kz in kg/cm²).
@@ -66,7 +90,12 @@ def derived(*, gamma: float = GAMMA, g: float = G) -> dict[str, float]:
     Keys: ``section`` (F / b1 r1 = ln 6), ``centroid`` (r0/r1), ``disc`` (G2'/(π r1² b1 γ) = 5/3),
     ``hub`` (G2''/(π r1² b1 γ) = 1/2), ``arms_hub`` (G2/(G1 v²/kz)), ``disc_coeff``, ``hub_coeff``
     (G2'/(G1 v²/kz), G2''/(G1 v²/kz)), ``rho`` (ρ/r1 = 7/12), ``moment`` (the 1 + m x coefficient m with
-    his 3/144 for the hub), ``total`` (first order: arms_hub − moment), ``total_exact_at`` not given here.
+    his ρ and his 3/144 for the hub), ``total`` (first order: arms_hub − moment), ``moment_gyration`` (m with
+    the radii of gyration, :data:`DISC_GYRATION` and :data:`HUB_GYRATION`: the moment the wheel has).
+
+    >>> d = derived()
+    >>> round(DISC_GYRATION, 4), round(d["moment"], 4), round(d["moment_gyration"], 4)
+    (0.3981, 0.0212, 0.0247)
     """
     k = gamma / (g * 1e4)   # γ/(g kz) with kz in kg/cm² -> per kg/m²
     section = math.log(6.0)
@@ -79,7 +108,8 @@ def derived(*, gamma: float = GAMMA, g: float = G) -> dict[str, float]:
     moment = disc_c * rho ** 2 + hub_c * 3.0 / 144.0
     return {"section": section, "centroid": centroid, "disc": disc, "hub": hub, "arms_hub": disc_c + hub_c,
             "disc_coeff": disc_c, "hub_coeff": hub_c, "rho": rho, "moment": moment,
-            "total": disc_c + hub_c - moment}
+            "total": disc_c + hub_c - moment,
+            "moment_gyration": disc_c * DISC_GYRATION + hub_c * HUB_GYRATION}
 
 
 def book_chain() -> dict[str, float]:
@@ -211,7 +241,12 @@ def design(*, rpm: float, diameter: float | None = None, v: float | None = None,
       his list "Kranzgewichte (Arm- und Nabengewichte)" prints (the arms and hub carry part of the moment,
       so the wheel's own rim is lighter than G_s);
     * ``moment`` G_s·D² (kg m²), the Schwungmoment the diagram requires;
-    * ``kz_rule``: "given" or "kz = 5 v".
+    * ``kz_rule``: "given" or "kz = 5 v";
+
+    and where his method contradicts itself, the other side: ``total_quotient`` G_s(1 + 0.08075 x)/(1 + 0.0218 x)
+    (his derivation, of which 1 + 0.06 x is the expansion), ``rim_by_moment`` G_s/(1 + 0.0218 x) (his
+    derivation's rim), and ``exact_rim``, ``exact_arms_hub``, ``exact_total`` (:func:`exact_wheel`: his
+    assumptions without his roundings, the arms' radius of gyration).
 
     His first worked case (G_s = 2130 kg, D_s = 3.2 m, n = 120): total 2650 kg printed.
 
@@ -222,7 +257,7 @@ def design(*, rpm: float, diameter: float | None = None, v: float | None = None,
     >>> round(d["rim_weight"], 1), round(d["moment"], 1)    # G_s = g E/(v² δ); G_s D² = 3600 g E/(π² n² δ)
     (1380.5, 12424.5)
     """
-    n = _in("RPM", "rpm", rpm)
+    n = _in("FLYWHEEL_RPM", "rpm", rpm)
     if (diameter is None) == (v is None):
         raise InvalidParameter("give the rim's mean diameter D (--diameter) or its speed v (--v), one of them")
     if diameter is not None:
@@ -245,18 +280,68 @@ def design(*, rpm: float, diameter: float | None = None, v: float | None = None,
         work = _in("EXCESS_WORK", "excess work E", excess_work)
         delta = _in("IRREGULARITY", "degree of irregularity δ", fluctuation)
         gs = G * work / (speed * speed * delta)
+        # the rim the work asks for stays in the range a given rim weight must keep
+        _in("FLYWHEEL_WEIGHT", f"rim weight G_s = g E/(v² δ) (E = {work:g} kg·m, v = {speed:.4g} m/s, δ = {delta:g})",
+            gs)
     else:
         if fluctuation is not None:
             raise InvalidParameter("--fluctuation belongs to the excess work; with --rim-weight G_s it is not used")
         work, delta = None, None
-        gs = _in("WEIGHT", "rim weight G_s", rim_weight)
+        gs = _in("FLYWHEEL_WEIGHT", "rim weight G_s", rim_weight)
     x = speed * speed / stress
     total = gs * (1.0 + TOTAL * x)
     g1 = total / (1.0 + ARMS_HUB * x)
+    exact = exact_wheel(gs, speed, stress)
     return {"excess_work": work, "fluctuation": delta, "rpm": n, "diameter": d, "rim_speed": speed, "kz": stress,
             "kz_rule": rule, "rim_weight": gs, "total_weight": total, "rim_of_wheel": g1,
-            "arms_hub_weight": total - g1, "moment": gs * d * d, "total_quotient": total_weight(gs, speed, stress,
-                                                                                                exact=True)}
+            "arms_hub_weight": total - g1, "moment": gs * d * d,
+            "total_quotient": total_weight(gs, speed, stress, exact=True),
+            "rim_by_moment": gs / (1.0 + MOMENT * x),
+            "exact_rim": exact["rim"], "exact_arms_hub": exact["arms_hub"], "exact_total": exact["total"]}
+
+
+def exact_wheel(gs: float, v: float, kz: float) -> dict[str, float]:
+    """The wheel from G_s by his assumptions without his roundings, consistent in itself: arms and hub
+    a·G1·x (a = 0.0795 from 13/6 π, not his 2.2 π), the moment G1·D1²(1 + m x) with the disc's and hub's radii of
+    gyration (m = 0.0247, not 0.0218) equal to the required G_s·D1²: G1 = G_s/(1 + m x), total G1(1 + a x).
+
+    >>> w = exact_wheel(2130.0, 20.1, 100.5)
+    >>> round(w["rim"]), round(w["arms_hub"]), round(w["total"]), round(w["moment_coefficient"], 5)
+    (1938, 619, 2557, 0.02467)
+    """
+    d = derived()
+    x = v * v / kz
+    a, m = d["arms_hub"], d["moment_gyration"]
+    rim = gs / (1.0 + m * x)
+    return {"rim": rim, "arms_hub": rim * a * x, "total": rim * (1.0 + a * x), "arms_hub_coefficient": a,
+            "moment_coefficient": m}
+
+
+def rim_moment_correction(rim: float, diameter: float, height: float, arms_hub: float) -> dict[str, float]:
+    """His last paragraph, worked out: the rim's moment G1·D1² stands for G1·(Da² + Di²)/2 = G1·(D1² + h²) (a
+    rectangular rim of radial height h: Da = D1 + h, Di = D1 − h), too little by G1·h²; the disc of the arms,
+    counted out to the rim's mean radius, holds too much: its part from the rim's inner edge (r1 − h/2) out, of
+    weight G2'·(h/2)/(5/6 r1) near D1, adds its G·D² = ∫ (2r)² dG (about 0.6·G2'·(h/r1)·D1²).  Whether "dieses zu wenig gleicht das
+    vorher gekannte zu viel hinreichend aus" (his words) is ``too_little`` against ``too_much`` (kg·m²).
+
+    *arms_hub* is G2 (arms and hub); the disc's share G2' is (5/3)/(13/6) of it by his assumptions.
+
+    >>> c = rim_moment_correction(2000.0, 3.2, 0.16, 600.0)
+    >>> round(c["too_little"]), round(c["too_much"]), round(c["ratio"], 2)
+    (51, 270, 0.19)
+    """
+    for name, value in (("rim weight", rim), ("diameter", diameter), ("rim height", height), ("arms and hub", arms_hub)):
+        _positive(name, [value])
+    if height >= diameter:
+        raise InvalidParameter(f"the rim's radial height h = {height:g} m must be less than its mean diameter "
+                               f"D1 = {diameter:g} m")
+    r1 = diameter / 2.0
+    disc = arms_hub * (5.0 / 3.0) / (13.0 / 6.0)
+    too_little = rim * height * height
+    inner = r1 - height / 2.0   # the rim's inner edge: the disc's weight per unit radius is G2'/(5/6 r1)
+    too_much = disc / (5.0 / 6.0 * r1) * 4.0 * (r1 ** 3 - inner ** 3) / 3.0
+    return {"rim_moment_mean": rim * diameter * diameter, "rim_moment_true": rim * (diameter ** 2 + height ** 2),
+            "too_little": too_little, "too_much": too_much, "ratio": too_little / too_much}
 
 
 def parse_fraction(text: str) -> float:

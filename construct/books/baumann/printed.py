@@ -18,7 +18,7 @@ place where the book rounds to a coarser step (totals "to 50 kg").
 
 from __future__ import annotations
 
-from ..printed import Printed, PrintedFormula
+from ..printed import Printed, PrintedFormula, in_halves
 
 __all__ = ["SOURCE", "all_printed", "printed_formulas", "TABLE_KZ", "TABLE_V",
            "TABLE_1_G2", "TABLE_1_TOTAL", "TABLE_2_MOMENT", "TABLE_2_WEIGHT", "WORKED_V", "WORKED_TOTALS",
@@ -146,9 +146,8 @@ FORMULA_RIMS = {
 }
 
 
-def _half_step(text: str) -> str | None:
-    """The tables print three decimals, and four only where the fourth is a 5: read those to half a unit of the third."""
-    return "0.0005" if len(text.split(",")[1]) == 4 else None
+#: His two printed tables: a number in them with a trailing 5 one place beyond its column is his half (in_halves).
+TABLES = ("Tabelle G2", "Tabelle Schwungmoment")
 
 
 def all_printed() -> list[Printed]:
@@ -159,13 +158,11 @@ def all_printed() -> list[Printed]:
     for i, (kz, v) in enumerate(zip(TABLE_KZ, TABLE_V)):
         row = f"kz = {kz}, v = {v}"
         out.append(Printed("Tabelle G2", row, "v²", TABLE_V2[i], f"v2:{i}"))
-        out.append(Printed("Tabelle G2", row, "G2 = G1 mal", TABLE_1_G2[i], f"t1_g2:{i}", resolution=_half_step(TABLE_1_G2[i])))
-        out.append(Printed("Tabelle G2", row, "Gtotal = G1 mal", TABLE_1_TOTAL[i], f"t1_total:{i}",
-                           resolution=_half_step(TABLE_1_TOTAL[i])))
+        out.append(Printed("Tabelle G2", row, "G2 = G1 mal", TABLE_1_G2[i], f"t1_g2:{i}"))
+        out.append(Printed("Tabelle G2", row, "Gtotal = G1 mal", TABLE_1_TOTAL[i], f"t1_total:{i}"))
     for i, (kz, v) in enumerate(zip(TABLE_KZ, TABLE_V)):
         row = f"kz = {kz}, v = {v}"
-        out.append(Printed("Tabelle Schwungmoment", row, "1 + 0,0218 v²/kz", TABLE_2_MOMENT[i], f"t2_moment:{i}",
-                           resolution=_half_step(TABLE_2_MOMENT[i])))
+        out.append(Printed("Tabelle Schwungmoment", row, "1 + 0,0218 v²/kz", TABLE_2_MOMENT[i], f"t2_moment:{i}"))
         out.append(Printed("Tabelle Schwungmoment", row, "1 + 0,06 v²/kz", TABLE_2_WEIGHT[i], f"t2_weight:{i}"))
     for i, case in enumerate(WORKED_CASES):
         out.append(Printed("Beispiele", case, "v", WORKED_V[i], f"worked_v:{i}"))
@@ -183,7 +180,7 @@ def all_printed() -> list[Printed]:
                                resolution="50"))
             out.append(Printed("Formeln", row, "Kranzgewicht", rim, f"formula_rim:{name}:{i}", resolution="10"))
             out.append(Printed("Formeln", row, "Arme und Nabe", arms, f"formula_arms:{name}:{i}", resolution="10"))
-    return out
+    return list(in_halves(out, TABLES))
 
 
 def printed_formulas() -> list[PrintedFormula]:

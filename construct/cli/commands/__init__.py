@@ -17,6 +17,7 @@ _NAMES = [
     # one line per subcommand module, in the order `construct --help` lists them
     "errata",
     "flywheel",
+    "samples",
     "diff",
     "gallery",
     "verify",

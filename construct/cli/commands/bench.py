@@ -9,7 +9,8 @@ from ..common import add_format_option
 
 NAME = "bench"
 HELP = ("benchmark building, replaying and sweeping the crank construction "
-        "(Dürer n = 18, 360; dividers n = 18, 360, 3600; a sweep over 10,000 rod ratios)")
+        "(Dürer n = 18, 360; dividers n = 18, 360, 3600; a sweep over 10,000 rod ratios); exit 0 when every "
+        "target is met, 1 when one is MISSED")
 
 
 def add_arguments(p) -> None:
@@ -56,38 +57,46 @@ def run(args) -> int:
         found = run_diff_bench(SIZES + ((1_000_000,) if args.diff_million else ()))
         if args.format == "json":
             print(json.dumps(found, indent=1))
-            return 0
-        for line in diff_verdicts(found):
-            print(line)
-        return 0
+            return met(diff_verdicts(found))
+        return met(diff_verdicts(found), show=True)
     if args.outputs:
         from ...regress.outputbench import output_verdicts, run_output_bench
 
         found = run_output_bench()
         if args.format == "json":
             print(json.dumps(found, indent=1))
-            return 0
+            return met(output_verdicts(found))
         for r in found:
             size = f"  {r['bytes'] / 1e6:8.2f} MB" if "bytes" in r else ""
             print(f"{r['command']:58s} {r['wall_s']:7.2f} s wall {r['cpu_s']:7.2f} s CPU{size}")
-        for line in output_verdicts(found):
-            print(line)
-        return 0
+        return met(output_verdicts(found), show=True)
     cases = tuple((n, "dividers") for n in args.parts) if args.parts else CASES
     results = run_bench(cases)
     sweep = None if args.parts else sweep_bench()
     if args.format == "json":
         print(json.dumps({"cases": results, "sweep": sweep}, indent=1))
-        return 0
+        return met(verdicts(results, sweep))
     for r in results:
         print(f"{r['case']:28s} {r['steps']:7d} steps  build {r['build_s'] * 1e3:9.2f} ms "
               f"({r['build_per_step_us']:6.2f} us/step)  replay {r['replay_s'] * 1e3:9.3f} ms "
               f"({r['replay_per_step_us']:.2f} us/step)")
     if sweep is not None:
         print(f"{sweep['case']}: {sweep['sweep_s'] * 1e3:.1f} ms (one replay {sweep['scalar_replay_s'] * 1e3:.3f} ms)")
-    for line in verdicts(results, sweep):
-        print(line)
-    return 0
+    return met(verdicts(results, sweep), show=True)
+
+
+def met(lines, *, show: bool = False) -> int:
+    """Exit 0 when every target is met, 1 when a verdict line says MISSED (as a failed check exits 1); with
+    *show* the lines are printed.
+
+    >>> met(["target a -> met", "target b -> MISSED"]), met(["target a -> met"])
+    (1, 0)
+    """
+    lines = list(lines)
+    if show:
+        for line in lines:
+            print(line)
+    return 1 if any(line.rstrip().endswith("MISSED") for line in lines) else 0
 
 
 def _live(args) -> int:
@@ -105,7 +114,7 @@ def _live(args) -> int:
     found = run_live_bench(pages, breakdown=args.breakdown)
     if args.format == "json":
         print(json.dumps(found, indent=1))
-        return 0
+        return met(live_verdicts(found))
     for r in found:
         print(f"{page_name(r['page'])}  {r['step']:18s} {r['drag']:7s} frame: median {r['median_ms']:6.1f} ms  "
               f"p95 {r['p95_ms']:6.1f}  max {r['max_ms']:6.1f}  script: median {r['script_median_ms']:5.1f}  "
@@ -115,6 +124,4 @@ def _live(args) -> int:
             print("    traced, ms a frame: " + "  ".join(f"{k[:-3]} {b[k]:.1f}" for k in b if k.endswith("_ms"))
                   + f"  (raster on the workers, beside the frame); restyled {b['restyled']:.0f} elements, "
                   f"laid out {b['laid_out']:.0f} objects a frame")
-    for line in live_verdicts(found):
-        print(line)
-    return 0
+    return met(live_verdicts(found), show=True)

@@ -1,9 +1,9 @@
 """``construct errata``: every printed number of the books' tables and worked examples beside its true value.
 
 Text output is an aligned table, one line per printed number or formula, and
-a summary of the counts per class (``agrees``, ``slip``, and for what is wrong
-the cause: ``typesetting``, ``arithmetic``, ``follows``, ``drawing``,
-``unexplained``; ``--classes`` prints what each means); ``--format json`` prints the list of
+a summary of the counts per class (``agrees``, ``slip``, ``follows``, and for what is
+wrong the cause: ``typesetting``, ``arithmetic``, ``drawing``, ``ambiguous``,
+``unexplained``; ``--classes`` prints what each means and the rules they follow); ``--format json`` prints the list of
 records (``true`` to 8 significant digits, ``units`` to 2 decimals);
 ``--class`` keeps one class only, ``--book NAME`` one book (anhang-ii, handbook, mechanics,
 baumann; ``--seed NNN``, the number of its text, is the old name of the option).  Each book's rows
@@ -14,9 +14,9 @@ come under its citation (author, title, year).
 Anhang II, „Darstellung der Massendrücke“
 <BLANKLINE>
 table ...
-Tabelle 1 ... 0° ... 0.1666 ... slip ... truncated instead of rounded
+Tabelle 1 ... 0.1666 ... slip ... truncated instead of rounded
 ...
-21 printed numbers: 0 agrees, 21 slip, 0 typesetting, 0 arithmetic, 0 follows, 0 drawing, 0 unexplained; 0 wrong formulas
+10 printed numbers: 0 agrees, 10 slip, 0 follows, 0 typesetting, 0 arithmetic, 0 drawing, 0 ambiguous, 0 unexplained; 0 wrong formulas
 0
 """
 
@@ -26,14 +26,14 @@ import argparse
 import json
 from collections import Counter
 
-from ...books.errata import CLASS_MEANINGS, CLASSES, Erratum, errata_of
+from ...books.errata import CLASS_MEANINGS, CLASSES, RULES, Erratum, errata_of
 from ...constructions.phrases import BOOKS
 from ...render.notation import signed
 from ..common import add_format_option
 
 NAME = "errata"
 HELP = ("List every printed number of the books' tables and worked examples with its true value and a verdict "
-        "(agrees, slip, or the cause: typesetting, arithmetic, follows, drawing, unexplained).")
+        "(agrees, slip, follows, or the cause: typesetting, arithmetic, drawing, ambiguous, unexplained).")
 
 _HEADINGS = ("table", "row", "column", "printed", "true", "units", "class", "note")
 
@@ -47,13 +47,16 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help=f"show only one book's entries ({', '.join(BOOKS)}; default: all)")
     # the old name: the number of the book's text file (000 ... 004), kept for scripts that use it
     parser.add_argument("--seed", dest="book", metavar="NNN", help=argparse.SUPPRESS)
-    parser.add_argument("--classes", action="store_true", help="print what each class means and stop")
+    parser.add_argument("--classes", action="store_true",
+                        help="print what each class means and the rules of the verdicts, and stop")
 
 
 def run(args: argparse.Namespace) -> int:
     if args.classes:
         width = max(map(len, CLASS_MEANINGS))
         print("\n".join(f"{name.ljust(width)}  {text}" for name, text in CLASS_MEANINGS.items()))
+        print("\nRules:")
+        print("\n".join(f"- {rule}" for rule in RULES))
         return 0
     entries = [e for e in errata_of("all" if args.book is None else args.book) if args.class_ is None or e.class_ == args.class_]
     if args.format == "json":

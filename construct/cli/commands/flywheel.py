@@ -40,16 +40,17 @@ import argparse
 import json
 import math
 
-from ...books.baumann.flywheel import design, parse_fraction
+from ...books.baumann.flywheel import DISC_GYRATION, derived, design, parse_fraction, rim_moment_correction
 from ...kernel.errors import InvalidParameter
-from ..common import add_format_option, is_number, number
+from ..common import add_format_option, construction_given, number
 
 NAME = "flywheel"
 HELP = ("size a flywheel by Baumann (1902): excess work (given, or measured on a diagram or your indicator cards) -> rim weight G_s (E = G_s v² δ/g), arms and hub, "
         "total weight and moment G·D²")
 
 KEYS = ("excess_work", "rim_weight", "arms_hub_weight", "total_weight", "moment")
-_MORE = ("rim_of_wheel", "rim_speed", "diameter", "rpm", "kz", "kz_rule", "fluctuation", "total_quotient")
+_MORE = ("rim_of_wheel", "rim_speed", "diameter", "rpm", "kz", "kz_rule", "fluctuation", "total_quotient",
+         "rim_by_moment", "exact_rim", "exact_arms_hub", "exact_total")
 DIAGRAMS = ("tangential-pressure",)
 
 
@@ -99,6 +100,9 @@ def add_arguments(p) -> None:
     p.add_argument("--v", type=number, metavar="M_S", help="rim speed in m/s (instead of --diameter)")
     p.add_argument("--kz", type=number, metavar="KG_CM2",
                    help="allowed tensile stress of the cast iron, kg/cm² (default 5 v, Baumann's pairing)")
+    p.add_argument("--rim-height", type=number, metavar="H",
+                   help="the rim's radial height h in m: his last paragraph worked out -- the rim's moment "
+                        "G1(Da² + Di²)/2 against his G1·D1², and the disc's part inside the rim")
     add_format_option(p)
 
 
@@ -114,13 +118,8 @@ def _diagram_work(args) -> tuple[float, str]:
         raise InvalidParameter("give --diagram, --excess-work or --rim-weight, one of them")
     area = PISTON_AREA.check("piston area F (cm²)", args.piston_area)
     radius = LENGTH_M.check("crank radius (m)", args.crank_radius)
-    givens = {}
-    for item in args.given:
-        name, sep, value = item.partition("=")
-        if not sep or not name or not is_number(value) or not math.isfinite(number(value)):
-            raise InvalidParameter(f"--given takes NAME=VALUE with a finite number, got {item!r}")
-        givens[name] = number(value)
     c = get(args.diagram)
+    givens = dict(construction_given(c, item) for item in args.given)
     givens.setdefault("force", "baumann")
     if givens["force"] != "baumann":
         raise InvalidParameter("the flywheel needs the pressure diagram (force=baumann), not the unit force")
@@ -198,23 +197,82 @@ def run(args) -> int:
             raise InvalidParameter(f"--{opt.replace('_', '-')} must be finite, got {value!r}")
     d = design(rpm=args.rpm, diameter=args.diameter, v=args.v, kz=args.kz, excess_work=work,
                fluctuation=args.fluctuation, rim_weight=args.rim_weight)
+    if args.rim_height is not None and not math.isfinite(args.rim_height):
+        raise InvalidParameter(f"--rim-height must be finite, got {args.rim_height!r}")
+    correction = None if args.rim_height is None else rim_moment_correction(
+        d["rim_of_wheel"], d["diameter"], _in_m("--rim-height", args.rim_height), d["arms_hub_weight"])
     if args.format == "json":
         record = {k: d[k] for k in KEYS + _MORE}
         record["excess_source"] = source or ("given" if work is not None else None)
+        if correction is not None:
+            record["rim_moment"] = correction
         print(json.dumps(record, ensure_ascii=False, indent=1))
         return 0
+    print("\n".join(_text(d, work, source, correction)))
+    return 0
+
+
+def _in_m(option: str, value: float) -> float:
+    from ...constructions.domain import LENGTH_M
+
+    return float(LENGTH_M.check(f"{option} (m)", value))
+
+
+def _sig(value: float) -> str:
+    """A quantity to five significant figures, whatever its size: 1376.2, 20.944, 5.2e-05 (never 0 for 5.2e-05).
+
+    >>> _sig(1376.23), _sig(20.9439), _sig(5.2e-05), _sig(17597.3)
+    ('1376.2', '20.944', '5.2e-05', '17597')
+    """
+    return f"{value:.5g}"
+
+
+def _text(d: dict, work: float | None, source: str | None, correction: dict | None) -> list[str]:
+    """The text report: his figures beside the exact ones, and what each is."""
+    v = d["rim_speed"]
+    x = v * v / d["kz"]
+    exact = derived()
+    a, m = f"{exact['arms_hub']:.4f}", f"{exact['moment_gyration']:.4f}"   # 0.0795, 0.0247
     lines = []
     if work is not None:
-        lines.append(f"excess work E          {d['excess_work']:12.1f} kg·m" + (f"   ({source})" if source else ""))
-        lines.append(f"irregularity δ         {d['fluctuation']:12.6g}       (1/{1 / d['fluctuation']:.4g})")
+        lines.append(f"excess work E          {_sig(d['excess_work']):>12} kg·m" + (f"   ({source})" if source else ""))
+        lines.append(f"irregularity δ         {_sig(d['fluctuation']):>12}       (1/{1 / d['fluctuation']:.4g})")
     lines += [
-        f"rim speed v            {d['rim_speed']:12.2f} m/s   (D = {d['diameter']:.3f} m, n = {d['rpm']:g}/min)",
-        f"kz                     {d['kz']:12.1f} kg/cm²  ({d['kz_rule']})",
-        f"rim weight G_s         {d['rim_weight']:12.0f} kg" + ("     (E = (G_s/g) v² δ, g = 9.81)" if work else ""),
-        f"total weight           {d['total_weight']:12.0f} kg     (G_s (1 + 0.06 v²/kz))",
-        f"  rim of the wheel G1  {d['rim_of_wheel']:12.0f} kg     (G_total / (1 + 0.08075 v²/kz))",
-        f"  arms and hub         {d['arms_hub_weight']:12.0f} kg     (G_total − G1)",
-        f"moment G_s·D²          {d['moment']:12.0f} kg·m²",
+        f"rim speed v            {_sig(v):>12} m/s   (D = {_sig(d['diameter'])} m, n = {d['rpm']:g}/min)",
+        f"kz                     {_sig(d['kz']):>12} kg/cm²  ({d['kz_rule']}; x = v²/kz = {_sig(x)})",
+        f"rim weight G_s         {_sig(d['rim_weight']):>12} kg" + ("     (E = (G_s/g) v² δ, g = 9.81)" if work else ""),
+        f"moment G_s·D²          {_sig(d['moment']):>12} kg·m²",
     ]
-    print("\n".join(lines))
-    return 0
+    rows = [("", "Baumann, as printed", "", "exact, from his assumptions", ""),
+            ("total weight", _sig(d["total_weight"]), "G_s(1 + 0.06 x)", _sig(d["exact_total"]), f"G1(1 + {a} x)"),
+            ("  rim of the wheel G1", _sig(d["rim_of_wheel"]), "G_total/(1 + 0.08075 x)", _sig(d["exact_rim"]),
+             f"G_s/(1 + {m} x)"),
+            ("  arms and hub", _sig(d["arms_hub_weight"]), "G_total − G1", _sig(d["exact_arms_hub"]), f"G1·{a} x")]
+    w = [max(len(r[i]) for r in rows[1:]) for i in range(5)]
+    lines.append("")
+    lines.append(f"{'':{w[0]}}  {rows[0][1]:<{w[1] + w[2] + 5}}  {rows[0][3]}")
+    for label, his, his_f, exact, exact_f in rows[1:]:
+        lines.append(f"{label:{w[0]}}  {his:>{w[1]}} kg  {his_f:<{w[2]}}  {exact:>{w[3]}} kg  {exact_f}")
+    lines += [
+        "",
+        "Baumann's method is not consistent in itself (the exact column is: its wheel has the moment G_s·D² it "
+        "was sized for):",
+        f"  his 1 + 0.06 x = {1 + 0.06 * x:.4f} expands his own quotient (1 + 0.08075 x)/(1 + 0.0218 x) = "
+        f"{d['total_quotient'] / d['rim_weight']:.4f} (total {_sig(d['total_quotient'])} kg);",
+        f"  his derivation's rim G_s/(1 + 0.0218 x) = {_sig(d['rim_by_moment'])} kg, his summary's "
+        f"G_total/(1 + 0.08075 x) = {_sig(d['rim_of_wheel'])} kg;",
+        f"  ρ = 7/12 r1 halves the arms' mass but is not their radius of gyration (k² = {DISC_GYRATION:.3f} r1², "
+        f"not 0.340): the moment coefficient is {m}, not 0.0218; the arms and hub from 13/6 π, not his 2.2 π: "
+        f"{a}, not 0.08075.",
+    ]
+    if correction is not None:
+        lines += [
+            "",
+            f"rim moment (his last paragraph): G1·D1² = {_sig(correction['rim_moment_mean'])} kg·m² stands for "
+            f"G1(Da² + Di²)/2 = {_sig(correction['rim_moment_true'])} kg·m²: too little by "
+            f"{_sig(correction['too_little'])};",
+            f"  the disc counted inside the rim (from Di/2 to D1/2) adds {_sig(correction['too_much'])} kg·m² too "
+            f"much: the too little makes up {correction['ratio']:.0%} of it (his 'hinreichend' holds for "
+            f"{'this rim' if correction['ratio'] >= 0.9 else 'a far taller rim only'})",
+        ]
+    return lines

@@ -50,16 +50,26 @@ def _lint(strict: bool):
         # else the gallery holds is linted here, and the report is the one 'construct lint' gives
         report = lint_path(root, linted={name: done for found in linted for name, done in found.items()})
         if report.ok:
-            print(f"lint: no findings in {len(report.figures)} figures, {report.views} views", file=sys.stderr)
+            print(f"lint: no findings in {len(report.figures)} drawings ({report.views} step views checked)",
+                  file=sys.stderr)
             return
         kinds = ", ".join(f"{k} {n}" for k, n in report.totals().items() if n)
-        print(f"lint: {len(report.findings)} findings in {len(report.figures)} figures, {report.views} views "
+        print(f"lint: {len(report.findings)} findings in {len(report.figures)} drawings ({report.views} step views) "
               f"({kinds}); 'construct lint DIR' lists them", file=sys.stderr)
         if strict:
             raise IllegibleGallery(f"the gallery is not legible ({len(report.findings)} findings of "
                                    f"'construct lint'); the previous gallery is kept")
 
     return check
+
+
+def _count(n: int, word: str) -> str:
+    """*n* and the word, plural unless one.
+
+    >>> _count(1, "plate"), _count(26, "figure")
+    ('1 plate', '26 figures')
+    """
+    return f"{n} {word}{'' if n == 1 else 's'}"
 
 
 def run(args) -> int:
@@ -75,7 +85,9 @@ def run(args) -> int:
         print(f"construct: {exc}", file=sys.stderr)
         return 1
     figures = len({(e["construction"], tuple(sorted(e["params"].items()))) for e in entries})
+    plates = sum(e.get("style") == "historical" for e in entries)
+    players = len(entries) - plates
     files = sum(1 for p in Path(args.out).rglob("*") if p.is_file())  # what is on disk, index and README too
-    print(f"gallery: {figures} figures, {len(entries)} styled entries, {files} files written to {args.out}",
-          file=sys.stderr)
+    print(f"gallery: {_count(figures, 'figure')} ({_count(plates, 'plate')}, {_count(players, 'step-by-step player')}) "
+          f"in {files} files written to {args.out} -- open {Path(args.out) / 'index.html'}", file=sys.stderr)
     return 0

@@ -50,7 +50,25 @@ def run(args) -> int:
     info = write_replay(c, fig, args.out, style=args.style, frames=args.frames, force=args.force_frames, live=live,
                         formats=formats, sheet=sheet, paper=args.paper)
     name = c.name if c is not None else fig.protocol.construction
-    made = f"{info['frames']} frames" if "svg" in formats else "the plate"
-    print(f"{brief(name)}: {info['steps']} steps, {made} ({', '.join(formats)}) written to {brief(info['out'], 400)}",
-          file=sys.stderr)
+    print(written(brief(name), info["steps"], info["frames"], brief(info["out"], 400), formats), file=sys.stderr)
     return 0
+
+
+def written(name: str, steps: int, frames: int, out: str, formats: tuple[str, ...] = ("svg",)) -> str:
+    """What a replay wrote and where to look, in one line.
+
+    >>> written("crank", 365, 0, "out/crank")
+    'crank: 365 steps written to out/crank: final.svg (every step a layer), protocol.json, animated.svg, player.html, storyboard.svg -- open out/crank/player.html to step through it'
+    >>> written("crank", 365, 365, "out/crank").split(", storyboard.svg")[1]
+    ' and 365 frames in steps/ -- open out/crank/player.html to step through it'
+    >>> written("crank", 365, 0, "out/c", ("pdf", "tikz"))
+    'crank: 365 steps, the plate written to out/c: final.pdf, final.tikz and final.tex'
+    """
+    plate = {"pdf": "final.pdf", "tikz": "final.tikz and final.tex"}
+    printed = [plate[f] for f in formats if f in plate]
+    if "svg" not in formats:
+        return f"{name}: {steps} steps, the plate written to {out}: {', '.join(printed)}"
+    files = ", ".join(["final.svg (every step a layer), protocol.json, animated.svg, player.html, storyboard.svg"]
+                      + [f"{p} (the plate)" for p in printed])
+    frames_text = f" and {frames} frame{'s' if frames != 1 else ''} in steps/" if frames else ""
+    return f"{name}: {steps} steps written to {out}: {files}{frames_text} -- open {out}/player.html to step through it"

@@ -8,14 +8,14 @@ import io
 import math
 import sys
 
-from ...kernel.errors import InvalidParameter
+from ...kernel.errors import InvalidParameter, did_you_mean
 from ...kernel.division import MAX_PARTS
 from ...tables import TABLES, write_plot
 from ..common import add_format_option, number, whole_number
 
 NAME = "table"
 HELP = ("print a table (piston-path, crank-angle, acceleration, characteristic-points, mass-forces, "
-        "tangential-pressure, flywheel-coefficients, speed-fluctuation)")
+        "tangential-pressure, flywheel-coefficients, speed-fluctuation, speed-extremes)")
 
 
 def add_arguments(p) -> None:
@@ -35,10 +35,20 @@ def add_arguments(p) -> None:
     p.add_argument("--rod-length", type=number, metavar="L", help="mass-forces: connecting-rod length, m")
     p.add_argument("--kz", type=number, action="append", metavar="kz", help="allowed stress kz in kg/cm² (flywheel; repeat)")
     p.add_argument("--v", type=number, action="append", metavar="v", help="rim speed v in m/s (flywheel; repeat)")
-    p.add_argument("--infinite-rod", action="store_true", help="an infinitely long rod (speed-fluctuation)")
+    p.add_argument("--infinite-rod", action="store_true",
+                   help="an infinitely long rod (speed-fluctuation, speed-extremes)")
     p.add_argument("--dead-centre", choices=("crank-end", "head-end"), default="crank-end",
-                   help="speed-fluctuation: the first crank starts at § 146's B1, the crank-end dead centre "
-                        "(default), or at the head-end one")
+                   help="speed-fluctuation, speed-extremes: the first crank starts at § 146's B1, the crank-end dead "
+                        "centre (default), or at the head-end one")
+    p.add_argument("--drive", choices=("engine", "pump"), default="engine",
+                   help="speed-fluctuation, speed-extremes: the rods drive the shaft (engine, default) or the shaft "
+                        "drives pumps (§ 146: least and greatest speeds change places)")
+    p.add_argument("--fluctuation", type=number, metavar="k",
+                   help="speed-fluctuation, speed-extremes: k = Qr/((m1+m2) v1²): the speeds v/v1 beside e "
+                        "(book's law, energy balance, with the crossheads' terms), the degree of irregularity")
+    p.add_argument("--crosshead-share", type=number, metavar="m2/(m1+m2)",
+                   help="speed-fluctuation with --fluctuation: the crossheads' share of the masses, 0 .. <1 "
+                        "(default 0): v_first and v_full keep the crossheads' terms the book drops")
     add_format_option(p, ("text", "csv", "json"))
     p.add_argument("--plot", metavar="FILE",
                    help="also plot the table as the book draws it into FILE (.png, .pdf or .svg by its suffix)")
@@ -95,13 +105,17 @@ def _check_step(step: float, span: int) -> None:
 
 def run(args) -> int:
     if args.table not in TABLES:
-        raise InvalidParameter(f"unknown table {args.table!r}; choose one of {', '.join(TABLES)}")
+        raise InvalidParameter(f"unknown table {args.table!r}{did_you_mean(args.table, TABLES)}; choose one of {', '.join(TABLES)}")
     if (args.indicator or args.indicator_crank_side) and args.table not in ("tangential-pressure", "mass-forces"):
         raise InvalidParameter(f"--indicator goes with the tables tangential-pressure and mass-forces, not {args.table}")
     if args.table != "tangential-pressure" and (args.force != "unit" or args.kappa is not None or any(
             v is not None for v in (args.indicator_lp, args.indicator_lp_crank_side, args.area_ratio, args.piston_area))):
         raise InvalidParameter(f"--force, --kappa, --indicator-lp, --area-ratio and --piston-area go with the table "
                                f"tangential-pressure, not {args.table}")
+    if args.table not in ("speed-fluctuation", "speed-extremes") and (
+            args.fluctuation is not None or args.crosshead_share is not None or args.drive != "engine"):
+        raise InvalidParameter(f"--fluctuation, --crosshead-share and --drive go with the tables speed-fluctuation "
+                               f"and speed-extremes, not {args.table}")
     if args.revolution and args.table not in ("tangential-pressure", "mass-forces"):
         raise InvalidParameter(f"--revolution goes with the tables tangential-pressure and mass-forces, not {args.table}")
     if args.table == "piston-path":
@@ -132,12 +146,23 @@ def run(args) -> int:
                                         area_ratio=args.area_ratio, piston_area=args.piston_area)
     elif args.table == "flywheel-coefficients":
         cols, rows = TABLES[args.table](kz=args.kz, v=args.v)
-    elif args.table == "speed-fluctuation":
+    elif args.table in ("speed-fluctuation", "speed-extremes"):
         if args.infinite_rod and args.rod_ratio:
             raise InvalidParameter("give either --rod-ratio L/r or --infinite-rod, not both")
-        _check_step(args.step, 90)
-        cols, rows = TABLES[args.table](rod_ratio=None if args.infinite_rod else _one_ratio(args), step=args.step,
-                                        dead_centre=args.dead_centre)
+        rod = None if args.infinite_rod else _one_ratio(args)
+        if args.table == "speed-fluctuation":
+            _check_step(args.step, 90)
+            cols, rows = TABLES[args.table](rod_ratio=rod, step=args.step, dead_centre=args.dead_centre,
+                                            drive=args.drive, fluctuation=args.fluctuation,
+                                            crosshead_share=args.crosshead_share)
+        else:
+            if args.crosshead_share is not None:
+                raise InvalidParameter("--crosshead-share goes with the table speed-fluctuation")
+            cols, rows = TABLES[args.table](rod_ratio=rod, parts=args.parts, dead_centre=args.dead_centre,
+                                            drive=args.drive, fluctuation=args.fluctuation)
+        if args.drive == "pump":
+            print("construct: note: the shaft drives pumps (§ 146): the speeds fall where e rises -- the least "
+                  "speed where e is greatest", file=sys.stderr)
     else:
         cols, rows = TABLES[args.table](rod_ratio=_one_ratio(args))
     text = format_table(cols, rows, args.format)

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...kernel.curves import frame_of
+from ...kernel.curve_ops import frame_of
 from ...kernel.geometry import Point
 from .. import Figure, analytic
 

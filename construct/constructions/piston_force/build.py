@@ -7,6 +7,8 @@ from __future__ import annotations
 import math
 from typing import Any, Mapping, Sequence
 
+import numpy as np
+
 from ...kernel.errors import InvalidParameter
 from ...kernel.division import check_parts, divide_semicircle
 from ...kernel.instruments import Builder
@@ -308,8 +310,7 @@ def _draw_cards(b: Builder, f: Mapping[str, str], cards: Any, revolution: bool) 
                           axis=f["axis"], stroke=stroke, pressure_scale=(area[1], "force_unit"), mirrored=True,
                           up=(f["D0"], f["D1"]), de="der Kurbelseite (die der Deckelseite gespiegelt)",
                           en="of the crank side (the cover side's mirrored)")
-    return {"cover.fwd": cover.forward, "cover.back": cover.back, "crank.fwd": crank.forward, "crank.back": crank.back,
-            "cover.fwd.points": cover.forward_points, "crank.fwd.points": crank.forward_points}
+    return {"cover.fwd": cover.forward, "cover.back": cover.back, "crank.fwd": crank.forward, "crank.back": crank.back}
 
 
 def _card_points(b: Builder, d: Mapping[str, str], ordinate: str, tag: str, stroke: str) -> dict[str, str]:
@@ -398,26 +399,29 @@ def card_crossing_chords(cover: Sequence[Any], crank: Sequence[Any]) -> tuple[in
     second to below it for the last time along the stroke: the piston force's last change of sign from
     pushing to braking.  None if it never does.
 
+    Both lines are straight between their points, so their gap is straight between the points of either: its
+    signs at those abscissae (numpy, thousands of points at once) find the last crossing.
+
     >>> card_crossing_chords([(0, 8), (1, 2)], [(0, 1), (0.9, 1), (1, 3)])
     (0, 1)
     >>> card_crossing_chords([(0, 8), (1, 5)], [(0, 1), (1, 1)]) is None
     True
     """
-    found = None
-    for i, (a, b) in enumerate(zip(cover, cover[1:])):
-        for j, (c, e) in enumerate(zip(crank, crank[1:])):
-            lo, hi = max(a[0], c[0]), min(b[0], e[0])
-            if hi <= lo:
-                continue
-
-            def gap(x: float) -> float:  # cover above crank (positive) at x, both chords straight
-                yc = a[1] + (b[1] - a[1]) * (x - a[0]) / (b[0] - a[0])
-                yk = c[1] + (e[1] - c[1]) * (x - c[0]) / (e[0] - c[0])
-                return yc - yk
-
-            if gap(lo) > 0.0 >= gap(hi) or (gap(lo) == 0.0 and gap(hi) < 0.0 and found is None):
-                found = (i, j)
-    return found
+    a, c = np.asarray(cover, dtype=float), np.asarray(crank, dtype=float)
+    lo, hi = max(a[0, 0], c[0, 0]), min(a[-1, 0], c[-1, 0])
+    xs = np.union1d(a[:, 0], c[:, 0])
+    xs = xs[(xs >= lo) & (xs <= hi)]
+    if xs.size < 2:
+        return None
+    gap = np.interp(xs, a[:, 0], a[:, 1]) - np.interp(xs, c[:, 0], c[:, 1])
+    down = np.flatnonzero((gap[:-1] > 0.0) & (gap[1:] <= 0.0))
+    if down.size == 0:
+        return None
+    k = int(down[-1])
+    mid = 0.5 * (xs[k] + xs[k + 1])   # inside one chord of each line
+    i = int(np.searchsorted(a[:, 0], mid, side="right")) - 1
+    j = int(np.searchsorted(c[:, 0], mid, side="right")) - 1
+    return min(i, len(a) - 2), min(j, len(c) - 2)
 
 
 def _card_pressure_change(b: Builder, f: Mapping[str, str], d: Mapping[str, Any], fbase: str) -> None:
@@ -425,18 +429,30 @@ def _card_pressure_change(b: Builder, f: Mapping[str, str], d: Mapping[str, Any]
     recorded, as the branch of an envelope is), each extended with the straightedge, their crossing J', and the
     perpendicular from it to the stroke line carried down to the force diagram's base.  Both cards are drawn in
     their piston area's scale, so J' is where F p' = F p'': the piston force's zero."""
-    cover, crank = d["cover.fwd.points"], d["crank.fwd.points"]
     up = 1.0 if b[f["D1"]][0] > b[f["D0"]][0] else -1.0
-    pts = lambda names: [(up * b[p][0], b[p][1]) for p in names]  # noqa: E731  (x along the stroke)
-    chords = card_crossing_chords(pts(cover), pts(crank))
+    # the traced lines' points along the stroke (the crank side's mirrored line runs from the other end)
+    lines = {side: [(up * p[0], p[1]) for p in b[d[f"{side}.fwd"]].points] for side in ("cover", "crank")}
+    order = {side: (1 if pts[0][0] <= pts[-1][0] else -1) for side, pts in lines.items()}
+    chords = card_crossing_chords(lines["cover"][::order["cover"]], lines["crank"][::order["crank"]])
     if chords is None:
         return  # the piston force does not change sign: no J to draw (the caption's givens show why)
+
+    def chord_ends(side: str, k: int) -> tuple[str, str]:
+        """The two points of the traced line's chord k (counted along the stroke), picked off the line."""
+        n = len(lines[side])
+        names = []
+        for e in ((k, k + 1) if order[side] > 0 else (n - 1 - k, n - 2 - k)):
+            b.record("curve", "vertex", (d[f"{side}.fwd"],), (f"J.{side}{e}",), {"index": e},
+                     f"Punkt {e} der Linie", f"point {e} of the line")
+            names.append(f"J.{side}{e}")
+        return names[0], names[1]
+
     i, j = chords
     with b.group("pressure change J: where the cards' forward lines cross", "Druckwechsel J: Schnitt der Linien "
                  "des Hinganges beider Diagramme"):
-        g1 = b.line("J.g1", cover[i], cover[i + 1], de="Sehne der Deckelseite verlängert",
+        g1 = b.line("J.g1", *chord_ends("cover", i), de="Sehne der Deckelseite verlängert",
                     en="the cover side's chord extended")
-        g2 = b.line("J.g2", crank[j], crank[j + 1], de="Sehne der Kurbelseite verlängert",
+        g2 = b.line("J.g2", *chord_ends("crank", j), de="Sehne der Kurbelseite verlängert",
                     en="the crank side's chord extended")
         Jx = b.intersect("Jx", g1, g2, rule=("only",), role="result", labels={"Jx": "J′"},
                          de="J′: die Drücke beider Seiten gleich", en="J': both sides' pressures equal")

@@ -9,7 +9,7 @@ import math
 from dataclasses import replace
 from typing import Any, Mapping
 
-from ...kernel.errors import GeometryError, InvalidParameter
+from ...kernel.errors import GeometryError, InvalidParameter, did_you_mean
 from ...kernel.division import check_parts, divide_semicircle
 from ...kernel.instruments import Builder
 from ...kernel.letters import lowered
@@ -132,7 +132,8 @@ def chord_shortfall(n: int, r: float = 1.0) -> float:
 def _engine(revolution: Any, cranks: Any, machine: Any, force: str, parts: int) -> dict[str, Any]:
     """The revolution's params: crank offsets, their shifts in divisions, cylinders per rod (empty: forward stroke)."""
     if machine not in MACHINES:
-        raise InvalidParameter(f"machine must be one of {', '.join(MACHINES)}, got {machine!r}")
+        raise InvalidParameter(f"machine must be one of {', '.join(MACHINES)}, got {machine!r}"
+                               f"{did_you_mean(machine, MACHINES)}")
     if not revolution:
         if cranks or machine != "single":
             raise InvalidParameter("--cranks and --machine draw the whole revolution: add --revolution")
@@ -156,7 +157,7 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
         raise InvalidParameter(f"tangential-pressure has no parameter {', '.join(sorted(unknown))}")
     low = {**LOW_PRESSURE, **low}
     if force not in FORCES:
-        raise InvalidParameter(f"force must be one of {', '.join(FORCES)}, got {force!r}")
+        raise InvalidParameter(f"force must be one of {', '.join(FORCES)}, got {force!r}{did_you_mean(force, FORCES)}")
     cards = None
     if indicator_crank_side and not indicator:
         raise InvalidParameter("--indicator-crank-side goes with --indicator (the cover side's diagram)")

@@ -17,7 +17,6 @@ from ..indicator_card import card_force, card_pair
 from ..revolution import engine_cylinders, revolution_checks
 from .. import analytic
 from .analytic import baumann_force, low_force, model_force, model_summary, model_t
-from .build import chord_shortfall
 from .measure import crossing_angles, excess_area, free_force, mean_height, ok_over_r, return_free_force, t_over_unit
 
 __all__ = ["drawn_model", "tangential_checks"]
@@ -106,8 +105,11 @@ def tangential_checks(fig: Figure, model: Mapping[str, float] | None = None) -> 
     length = fig.replay["U0"].distance(fig.replay[f"U{n}"])
     chord = fig.replay["D0"].distance(fig.replay[point_name(fig, 1)])
     tol_w, why_w = angle_tolerance(fig, point_name(fig, 1), made_by)
-    checks.append(Check("unrolled length", length / r, math.pi, chord_shortfall(n) * 1.000001 + n * tol_w,
-                        f"{prov.method}; division error {why_w}", "r"))
+    # The dividers' shortfall π − 2n·sin(π/2n) is at most π³/(24n²) (sin x >= x − x³/6): half as much again is
+    # the tolerance, a bound the method gives before anything is measured.
+    checks.append(Check("unrolled length", length / r, math.pi, 1.5 * math.pi ** 3 / (24.0 * n * n) + n * tol_w,
+                        f"{prov.method}; the shortfall is at most π³/(24n²) = {math.pi ** 3 / (24.0 * n * n):.3e} r, "
+                        f"tolerance 1.5 times that; division error {why_w}", "r"))
     checks.append(Check("unrolled length (dividers)", length / r, n * chord / r, 10 * EUCLIDEAN_TOLERANCE,
                         "n equal steps of the chord as drawn: Euclidean once the opening is set", "r"))
     model = model_summary(g, force) if model is None else model

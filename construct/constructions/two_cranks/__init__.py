@@ -72,13 +72,14 @@ from ...kernel.errors import InvalidParameter
 from ...kernel.protocol import Caption
 from .. import Construction, Figure, positive, register
 from ..phrases import MECHANICS, Cite, number, ratio
-from .analytic import (DEAD_CENTRES, KOCHANSKI_ERROR, KOCHANSKI_RHO, excess_exact, excess_exact_array, excess_from,
+from .analytic import (DEAD_CENTRES, DRIVES, KOCHANSKI_ERROR, KOCHANSKI_RHO, drive_sign, excess_exact,
+                       excess_exact_array, excess_from,
                        extreme_angles_exact, kochanski_angle_error, max_magnification, piston_speed_factor,
                        piston_travel, quadrant_extremes)
 from .build import (auto_magnification, build_two_cranks, closed_curve, derived_givens, two_cranks_plate,
                     validate_two_cranks)
-from .checks import two_cranks_checks
-from .measure import crank_angle, dead_centre_of, speed_radius, speeds, work_excess
+from .checks import two_cranks_checks, wave_extremes
+from .measure import crank_angle, dead_centre_of, sense_of, speed_radius, speeds, work_excess
 
 __all__ = [
     "TWO_CRANKS",
@@ -105,6 +106,11 @@ __all__ = [
     "closed_curve",
     "dead_centre_of",
     "validate_two_cranks",
+    "wave_extremes",
+    "sense_of",
+    "DRIVES",
+    "drive_sign",
+    "speed_extremes_rows",
 ]
 
 
@@ -112,6 +118,12 @@ __all__ = [
 START = {
     "crank-end": Caption("ab der äußeren Totlage B₁ (§ 146)", "from the crank-end dead centre B₁ (§ 146)"),
     "head-end": Caption("ab der deckelseitigen Totlage", "from the head-end dead centre"),
+}
+
+#: Who drives whom (§ 146): the rods the shaft, or the shaft pumps ("das Gegentheil").
+DRIVEN = {
+    "engine": Caption("Antrieb durch die Kolbenstangen", "driven by the piston rods"),
+    "pump": Caption("Pumpenantrieb: die Welle treibt die Stangen", "pumps: the shaft drives the rods"),
 }
 
 
@@ -124,7 +136,8 @@ def two_cranks_wording(fig: Figure, lang: str) -> list[str]:
            else ratio("r/l", g["rod_ratio"], lang))
     n = fig.params.get("parts")
     start = START["crank-end" if fig.params.get("dead_centre", "head-end") == "crank-end" else "head-end"]
-    return [rod, start.de if de else start.en, f"Qr/((m₁ + m₂)v₁²) = {number(g['fluctuation'], lang)}",
+    pump = [DRIVEN["pump"].de if de else DRIVEN["pump"].en] if g.get("sense", 1.0) < 0 else []
+    return [rod, start.de if de else start.en, *pump, f"Qr/((m₁ + m₂)v₁²) = {number(g['fluctuation'], lang)}",
             (f"Schwankungen {number(g['magnify'], lang)}fach vergrößert" if de
              else f"speed deviations magnified {number(g['magnify'], lang)} times"),
             f"Kreis in {2 * int(n)} Teilen" if de else f"circle in {2 * int(n)} parts"]
@@ -141,18 +154,20 @@ TWO_CRANKS = register(Construction(
     sweep_model=lambda g, params: {} if params["infinite_rod"] else {
         "extremes": quadrant_extremes(g["rod_ratio"], dead_centre=params.get("dead_centre", "head-end"))},
     defaults={"rod_ratio": 5.0, "infinite_rod": False, "parts": 12, "method": "auto", "r": 1.0,
-              "fluctuation": 0.25, "magnify": None, "dead_centre": "crank-end"},
+              "fluctuation": 0.25, "magnify": None, "dead_centre": "crank-end", "drive": "engine"},
     book_params=({"rod_ratio": 5.0, "parts": 12}, {"infinite_rod": True, "parts": 12}),
-    structural=("parts", "method", "infinite_rod", "dead_centre"),
+    structural=("parts", "method", "infinite_rod", "dead_centre", "drive"),
     cites=(Cite(MECHANICS, "Fig. 566"),),
     wording=two_cranks_wording,
     methods=DIVISION_NAMES,
-    conventions={"dead_centre": START},
+    conventions={"dead_centre": START, "drive": DRIVEN},
     plate=two_cranks_plate,
     validator=validate_two_cranks,
     derived=derived_givens,
     help={"dead_centre": "where the first crank starts: crank-end (§ 146's B1, the default: upper sign "
-                         "in the Hingang) or head-end (the other books' zero)"},
+                         "in the Hingang) or head-end (the other books' zero)",
+          "drive": "two-cranks: engine (the rods drive the shaft, the default) or pump (the shaft drives "
+                   "pumps: § 146, the least and greatest speeds change places)"},
     # A draftsman picks the magnification of the speed deviations for the rod he draws: so does a sweep.
     sweep=lambda g, ratios: {**g, "rod_ratio": ratios,
                              "magnify": auto_magnification(ratios, g["fluctuation"])},
@@ -160,9 +175,21 @@ TWO_CRANKS = register(Construction(
 
 
 
-def speed_fluctuation_rows(*, rod_ratio: float | None, step_deg: float = 15.0,
-                           dead_centre: str = "crank-end") -> list[dict[str, Any]]:
+def _figure(rod_ratio: float | None, parts: int, dead_centre: str, drive: str, fluctuation: float | None):
+    rod = {"infinite_rod": True} if rod_ratio is None else {"rod_ratio": rod_ratio}
+    return TWO_CRANKS.figure(parts=parts, dead_centre=dead_centre, drive=drive,
+                             **rod, **({} if fluctuation is None else {"fluctuation": fluctuation}))
+
+
+def speed_fluctuation_rows(*, rod_ratio: float | None, step_deg: float = 15.0, dead_centre: str = "crank-end",
+                           drive: str = "engine", fluctuation: float | None = None,
+                           crosshead_share: float | None = None) -> list[dict[str, Any]]:
     """e(α) in units of Q·r over 0…360° from the given dead centre (§ 146's B1 by default), off the work line.
+
+    With *fluctuation* k = Qr/((m1 + m2)v1²) (and *crosshead_share* m2/(m1 + m2), default 0) the speeds v/v1
+    beside it, as :func:`speeds` gives them: the book's linear law, its energy balance, with the crossheads'
+    first-order term the book drops, and with the exact piston speeds; *drive* "pump" turns the sign of e in
+    them (the shaft drives the rods: § 146, "das Gegentheil").
 
     >>> rows = speed_fluctuation_rows(rod_ratio=None, step_deg=45.0)
     >>> [row["crank_angle_deg"] for row in rows if abs(row["work_excess"]) < 1e-12]   # v = v1 every 45 degrees
@@ -175,9 +202,45 @@ def speed_fluctuation_rows(*, rod_ratio: float | None, step_deg: float = 15.0,
                                f"the semicircle, at most {MAX_PARTS}), got {step_deg!r}")
     if n < 2 or n % 2 or abs(n * step - 180.0) > 1e-9:
         raise InvalidParameter(f"the angle step must divide 90 degrees, got {step_deg!r}")
-    if rod_ratio is None:
-        fig = TWO_CRANKS.figure(parts=n, infinite_rod=True, dead_centre=dead_centre)
-    else:
-        fig = TWO_CRANKS.figure(parts=n, rod_ratio=rod_ratio, dead_centre=dead_centre)
-    return [{"crank_angle_deg": 180.0 * j / n, "work_excess": work_excess(fig, j, infinite=rod_ratio is None)}
-            for j in range(2 * n + 1)]
+    if fluctuation is None and crosshead_share is not None:
+        raise InvalidParameter("the crossheads' share m2/(m1 + m2) goes with the fluctuation k = Qr/((m1 + m2)v1²)")
+    fig = _figure(rod_ratio, n, dead_centre, drive, fluctuation)
+    if fluctuation is None:
+        return [{"crank_angle_deg": 180.0 * j / n, "work_excess": work_excess(fig, j, infinite=rod_ratio is None)}
+                for j in range(2 * n + 1)]
+    return speeds(fig, infinite=None, crosshead_share=crosshead_share or 0.0)
+
+
+def speed_extremes_rows(*, rod_ratio: float | None, parts: int = 12, dead_centre: str = "crank-end",
+                        drive: str = "engine", fluctuation: float | None = None) -> list[dict[str, Any]]:
+    """§ 147: where e is least and greatest in each quadrant and over the turn, by the exact law and read off
+    the construction's drawn wave (the circles about O touching it), angles from the given dead centre.
+
+    ``swing`` = e_max − e_min; with *fluctuation* k the degree of irregularity ``delta`` = k·swing (the
+    book's linear law: (v_max − v_min)/v1).  With *drive* "pump" the least speed stands where e is greatest.
+
+    >>> turn = speed_extremes_rows(rod_ratio=4.5)[-1]
+    >>> turn["range"], round(turn["e_min"], 5), round(turn["alpha_min_deg"], 2), round(turn["e_max"], 5)
+    ('turn', -0.0419, 19.07, 0.26694)
+    >>> round(turn["alpha_max_deg"], 2), round(turn["swing"], 5)
+    (250.93, 0.30884)
+    """
+    import math
+
+    fig = _figure(rod_ratio, parts, dead_centre, drive, fluctuation)
+    exact = quadrant_extremes(rod_ratio, dead_centre=dead_centre)
+    # the first quadrant where the turn's extreme is reached (the infinite rod reaches it in every quadrant)
+    low = next(q for q in exact if q["e_min"] <= min(q["e_min"] for q in exact) + 1e-12)
+    high = next(q for q in exact if q["e_max"] >= max(q["e_max"] for q in exact) - 1e-12)
+    ranges = [(f"quadrant {q['quadrant']}", q, q, ((q["quadrant"] - 1) * 0.5 * math.pi, q["quadrant"] * 0.5 * math.pi))
+              for q in exact] + [("turn", low, high, None)]
+    rows = []
+    for name, lo, hi, window in ranges:
+        drawn = wave_extremes(fig, within=window)
+        row = {"range": name, "alpha_min_deg": math.degrees(lo["alpha_min"]), "e_min": lo["e_min"],
+               "e_min_drawn": drawn["e_min"], "alpha_max_deg": math.degrees(hi["alpha_max"]), "e_max": hi["e_max"],
+               "e_max_drawn": drawn["e_max"], "swing": hi["e_max"] - lo["e_min"]}
+        if fluctuation is not None:
+            row["delta"] = fig.replay.givens["fluctuation"] * row["swing"]
+        rows.append(row)
+    return rows

@@ -7,13 +7,37 @@ from typing import Any
 
 import numpy as np
 
-from ...kernel.errors import InvalidParameter
+from ...kernel.errors import InvalidParameter, did_you_mean
 from ..analytic import piston_fraction, piston_rate
 
 
 #: Where the first crank starts: § 146's B1 (the crank-end dead centre, the rod correction subtracting in the
 #: forward stroke: the default) or the head-end dead centre of the other books.
 DEAD_CENTRES = ("crank-end", "head-end")
+#: Who drives whom (§ 146): the rods drive the shaft ("wenn ... der Antrieb von den Kolbenstangen ausgeht", the
+#: default), or the shaft drives pumps ("würde das Gegentheil stattfinden": the masses take up -e, the least and
+#: greatest speeds change places).  The sign of the excess work in the masses' balance.
+DRIVES = {"engine": 1.0, "pump": -1.0}
+
+
+def drive_sign(drive: str) -> float:
+    """+1 when the rods drive the shaft (an engine), −1 when the shaft drives the rods (pumps).
+
+    >>> drive_sign("engine"), drive_sign("pump")
+    (1.0, -1.0)
+    """
+    if drive not in DRIVES:
+        raise InvalidParameter(f"drive must be one of {', '.join(DRIVES)}, got {drive!r}{did_you_mean(drive, DRIVES)}")
+    return DRIVES[drive]
+
+
+def drive_of(sign: float) -> str:
+    """The drive a sign stands for (a protocol's given ``drive``): "engine" or "pump".
+
+    >>> drive_of(1.0), drive_of(-1.0)
+    ('engine', 'pump')
+    """
+    return "engine" if sign > 0 else "pump"
 
 # --------------------------------------------------------------------------
 # The analytic side (used by the checks only, never to build).
@@ -63,7 +87,7 @@ def excess_exact(alpha: float, rod_ratio: float | None) -> float:
 def start_angle(dead_centre: str) -> float:
     """The first crank's starting angle from the head-end dead centre."""
     if dead_centre not in DEAD_CENTRES:
-        raise InvalidParameter(f"dead centre must be one of {', '.join(DEAD_CENTRES)}, got {dead_centre!r}")
+        raise InvalidParameter(f"dead centre must be one of {', '.join(DEAD_CENTRES)}, got {dead_centre!r}{did_you_mean(dead_centre, DEAD_CENTRES)}")
     return math.pi if dead_centre == "crank-end" else 0.0
 
 
@@ -166,7 +190,18 @@ def quadrant_extremes(rod_ratio: Any, samples: int = 2000, dead_centre: str = "h
 
 
 def max_magnification(rod_ratio: Any) -> Any:
-    """The largest g = G·k for which every speed radius r + g·e stays positive (exact law); arrays for a sweep."""
+    """The largest g = G·k for which every speed radius r ± g·e stays positive (exact law); arrays for a sweep.
+
+    One bound for both drives and both dead centres: over a turn, e from the crank end takes the values of e
+    from the head end mirrored (its least is minus the other's greatest, and the other way round), so the
+    engine's lowest speed from one dead centre is the pump's from the other, and the head end's least e is the
+    deepest drop of all four.
+
+    >>> a = np.linspace(0.0, 2 * math.pi, 20001)
+    >>> head, crank = excess_exact_array(a, 4.5), excess_exact_array(math.pi + a, 4.5) - excess_exact(math.pi, 4.5)
+    >>> abs(float(crank.min() + head.max())) < 1e-12, abs(float(crank.max() + head.min())) < 1e-12
+    (True, True)
+    """
     if rod_ratio is None or np.ndim(rod_ratio) == 0:
         e_min = min(q["e_min"] for q in quadrant_extremes(rod_ratio, samples=400))
         return math.inf if e_min >= 0.0 else 1.0 / -e_min

@@ -17,7 +17,7 @@ from ...kernel.protocol import Provenance
 from .. import Figure, bounded, positive, rod_ratio_param
 from ..domain import DRAWN_LENGTH, FLUCTUATION, SPEED_GAIN
 from ..crank import build_frame, rod_arcs
-from .analytic import (KOCHANSKI_ERROR, kochanski_angle_error, max_magnification, quadrant_extremes,
+from .analytic import (KOCHANSKI_ERROR, drive_sign, kochanski_angle_error, max_magnification, quadrant_extremes,
                        start_angle)
 
 # --------------------------------------------------------------------------
@@ -53,21 +53,28 @@ class _Part:
     pistons: tuple[str, ...]         # piston position for index 0..2N-1
     W0: str = ""
     ends: tuple[str, ...] = ()       # E_j: end of the work stepped on, j = 0..2N
-    means: tuple[str, ...] = ()      # M_j: mean-work marks (r/g behind), j = 0..2N
+    means: tuple[str, ...] = ()      # M_j: mean-work marks (r/g behind; for pumps r/g ahead), j = 0..2N
     radii: tuple[str, ...] = ()      # Z_j: speed points, j = 0..2N-1
 
 
-def _givens(r: Any, rod_ratio: Any, fluctuation: Any, magnify: Any) -> dict[str, float]:
+def _givens(r: Any, rod_ratio: Any, fluctuation: Any, magnify: Any, sense: Any = 1.0) -> dict[str, float]:
+    if np.ndim(sense) or sense not in (1.0, -1.0):
+        raise InvalidParameter(f"sense must be 1 (the rods drive the shaft) or -1 (the shaft drives pumps), "
+                               f"got {sense!r}")
     g = {"r": bounded("crank radius r", r, DRAWN_LENGTH), "rod_ratio": rod_ratio_param(rod_ratio),
          "fluctuation": bounded("fluctuation Qr/((m1+m2) v1^2)", fluctuation, FLUCTUATION),
-         "magnify": positive("magnification of the speed deviations", magnify)}
+         "magnify": positive("magnification of the speed deviations", magnify), "sense": float(sense)}
     SPEED_GAIN.check("magnify x fluctuation", g["magnify"] * g["fluctuation"])
     return g
 
 
 def validate_two_cranks(givens: Mapping[str, Any]) -> None:
-    """The givens' domain; a sweep's (arrays) in one pass, the message naming its first set outside."""
-    g = _givens(givens["r"], givens["rod_ratio"], givens["fluctuation"], givens["magnify"])
+    """The givens' domain; a sweep's (arrays) in one pass, the message naming its first set outside.
+
+    The given ``sense`` is +1 when the rods drive the shaft, −1 when the shaft drives pumps (a protocol from
+    before the pump drive has none: its rods drive the shaft).
+    """
+    g = _givens(givens["r"], givens["rod_ratio"], givens["fluctuation"], givens["magnify"], givens.get("sense", 1.0))
     limit = max_magnification(g["rod_ratio"])
     gain = g["fluctuation"] * g["magnify"]
     outside = np.flatnonzero(np.atleast_1d(gain >= limit))
@@ -76,7 +83,7 @@ def validate_two_cranks(givens: Mapping[str, Any]) -> None:
         at = lambda v: float(np.asarray(v).flat[i]) if np.ndim(v) else v  # noqa: E731  (set i of a sweep)
         gain_i, ratio_i, limit_i = at(gain), at(g["rod_ratio"]), at(limit)
         raise InvalidParameter(
-            f"fluctuation x magnify = {gain_i:.6g} makes a speed radius r + g*e vanish "
+            f"fluctuation x magnify = {gain_i:.6g} makes a speed radius r ± g*e vanish "
             f"for L/r = {ratio_i:.6g} (e falls to {-1.0 / limit_i:.4g} Q r); keep --magnify times --fluctuation "
             f"below {limit_i:.4g}")
 
@@ -199,7 +206,18 @@ class _Speed:
 
 
 def _speed_angle(b: Builder, S_at: tuple[float, float]) -> _Speed:
-    """The proportional angle with scale lines at r and g·r, and r/g read off it."""
+    """The proportional angle with scale lines at r and g·r, and r/g read off it.
+
+    Two given points set the side of W0 the mean-work marks start on: behind it when the rods drive the
+    shaft (M_j E_j = r/g + e), ahead of it when the shaft drives pumps (E_j M_j = r/g − e); the given
+    ``sense`` (+1, −1) places the second point.
+    """
+    with b.group("which side of W0 the mean work starts", "auf welcher Seite von W0 die mittlere Arbeit beginnt"):
+        b.given_point("lead.o", 0.0, 0.0, de="Bezugspunkt der Richtung", en="reference point of the direction",
+                      label="")
+        b.given_point("lead.d", -1.0, 0.0, unit="sense", de="Richtung: rückwärts beim Antrieb durch die Stangen, "
+                      "vorwärts beim Pumpenantrieb", en="direction: backwards when the rods drive, forwards when "
+                      "the shaft drives pumps", label="")
     with b.group("proportional angle for the speed scale", "Proportionswinkel für den Geschwindigkeitsmaßstab"):
         S = b.given_point("S", S_at[0], S_at[1], unit="r", de="Scheitel S des Proportionswinkels",
                           en="vertex S of the proportional angle", label="S")
@@ -236,9 +254,10 @@ def _work(b: Builder, part: _Part, speed: _Speed, W_at: tuple[float, float], n: 
             W0 = b.given_point(f"{tag}W0", W_at[0], W_at[1], unit="r", de="Anfang W0 der Arbeitslinie",
                                en="start W0 of the work line", label="W₀′" if tag else "W₀")
             wl = b.given_line(f"{tag}work", W0, angle_deg=0.0, de="Arbeitslinie", en="work line")
-            back = b.circle_radius(f"{tag}M0.k", W0, speed.lead, de="r/g hinter W0", en="r/g behind W0")
-            means = [b.intersect(f"{tag}M0", wl, back, rule=("toward", W0, None, -1.0, 0.0),
-                                 de="Anfang der mittleren Arbeit, r/g vor W0", en="start of the mean work, r/g before W0")]
+            back = b.circle_radius(f"{tag}M0.k", W0, speed.lead, de="r/g von W0", en="r/g from W0")
+            means = [b.intersect(f"{tag}M0", wl, back, rule=("toward", "lead.o", "lead.d"),
+                                 de="Anfang der mittleren Arbeit, r/g vor W0 (beim Pumpenantrieb hinter W0)",
+                                 en="start of the mean work, r/g before W0 (after it when the shaft drives pumps)")]
             ends = [W0]
             for j in range(1, m + 1):
                 with b.group(f"crank position {j}: work stepped on", f"Kurbelstellung {j}: Arbeit abgetragen"):
@@ -263,10 +282,12 @@ def _work(b: Builder, part: _Part, speed: _Speed, W_at: tuple[float, float], n: 
 
 
 def _radii(b: Builder, part: _Part, speed: _Speed, n: int, start: int = 0) -> _Part:
-    """For each crank position: M_j E_j = r/g + e carried to g·(r/g + e) = r + g e, laid on the crank position."""
+    """For each crank position: M_j E_j = r/g ± e carried to g·(r/g ± e) = r ± g e, laid on the crank position
+    (+ when the rods drive the shaft, − when it drives pumps)."""
     tag = part.tag
     m = 2 * n
     radii = []
+    pm = "+" if b.givens["sense"] > 0 else "−"
     with b.group(f"speeds as radii on the crank positions{' (infinite rod)' if part.infinite else ''}",
                  f"Geschwindigkeiten als Halbmesser auf den Kurbelstellungen{' (unendliche Stange)' if part.infinite else ''}"):
         for j in range(m):
@@ -276,12 +297,12 @@ def _radii(b: Builder, part: _Part, speed: _Speed, n: int, start: int = 0) -> _P
                 V = b.intersect(f"{tag}V{j}", speed.one.line, k, rule=("toward", speed.angle.vertex, None, 0.0, -1.0),
                                 de=f"V{j}: M{j}E{j} auf der Maßlinie r", en=f"V{j}: M{j}E{j} on the scale line r")
                 Vg = carry_across(b, speed.angle, f"{tag}Vg{j}", V, speed.gain,
-                                  de=f"auf die Maßlinie g·r: r + g·e{j}", en=f"onto the scale line g r: r + g e{j}")
+                                  de=f"auf die Maßlinie g·r: r {pm} g·e{j}", en=f"onto the scale line g r: r {pm} g e{j}")
                 point = part.crank_points[(start + j) % m]
                 ray = b.line(f"{tag}ray{j}", part.C, point, de=f"Kurbelstellung {j}", en=f"crank position {j}")
                 kz = b.circle_segment(f"{tag}Z{j}.k", part.C, speed.gain.origin, Vg,
-                                      de=f"Halbmesser r + g·e{j} um den Wellenmittelpunkt",
-                                      en=f"radius r + g e{j} about the shaft centre")
+                                      de=f"Halbmesser r {pm} g·e{j} um den Wellenmittelpunkt",
+                                      en=f"radius r {pm} g e{j} about the shaft centre")
                 label = None
                 if j % (n // 2) == 0:
                     label = "B" + _SUB[j // (n // 2) + 1]
@@ -329,7 +350,9 @@ def _kochanski(b: Builder, part: _Part, n: int) -> None:
                     en="points at 2 alpha1 and 2 alpha2 = 180 - 2 alpha1")
         err = kochanski_angle_error()
         angle_prov = Provenance("approximate", "Kochański's rectification (1685)", err)  # its error in the angle
-        for i, (G, word) in enumerate((("K.G1", "kleinste"), ("K.G2", "größte")), start=1):
+        least_first = b.givens["sense"] > 0   # § 146: "Bei der Bewegung von Pumpen ... das Gegentheil"
+        for i, (G, word) in enumerate((("K.G1", "kleinste" if least_first else "größte"),
+                                       ("K.G2", "größte" if least_first else "kleinste")), start=1):
             name = f"K.M{i}"
             with b.group(f"arc {D0}{G} bisected: alpha{i}", f"Bogen {D0}{G} halbiert: α{i}"):
                 ka = b.circle_through(b.fresh(f"{name}.k"), D0, G)
@@ -337,13 +360,15 @@ def _kochanski(b: Builder, part: _Part, n: int) -> None:
                 s = b.intersect(b.fresh(f"{name}.S"), ka, kb, rule=("farther", C))
                 w = b.line(b.fresh(f"{name}.w"), C, s)
                 b.record("intersect", "intersect", (w, circle), (name,), {"rule": ("nearer", s), "both": False},
-                         f"M{i}: α{i}, {word} Geschwindigkeit", f"M{i}: alpha{i}, the {'least' if i == 1 else 'greatest'} speed",
+                         f"M{i}: α{i}, {word} Geschwindigkeit",
+                         f"M{i}: alpha{i}, the {'least' if word == 'kleinste' else 'greatest'} speed",
                          provenance=angle_prov, role="result")
     return None
 
 
 def _label_extremes(b: Builder, part: _Part) -> None:
     """Rays to the extremes, lettered with the angles the construction gives (to the minute)."""
+    least = 1 if b.givens["sense"] > 0 else 2   # pumps: the greatest speed at alpha1
     with b.group("extremes marked", "ausgezeichnete Stellungen bezeichnet"):
         for i in (1, 2):
             name = f"K.M{i}"
@@ -351,8 +376,8 @@ def _label_extremes(b: Builder, part: _Part) -> None:
             minutes = round(math.degrees(a) * 60.0)
             ray = b.line(f"K.ray{i}", part.C, name, de=f"Strahl nach M{i}", en=f"ray to M{i}", role="result")
             b.intersect(f"K.W{i}", f"{part.tag}wave", ray, rule=("nearer", name), role="result",
-                        de=f"M{i} auf der Wellenlinie: {'kleinste' if i == 1 else 'größte'} Geschwindigkeit",
-                        en=f"M{i} on the wave curve: the {'least' if i == 1 else 'greatest'} speed",
+                        de=f"M{i} auf der Wellenlinie: {'kleinste' if i == least else 'größte'} Geschwindigkeit",
+                        en=f"M{i} on the wave curve: the {'least' if i == least else 'greatest'} speed",
                         labels={f"K.W{i}": f"M{_SUB[i]} {minutes // 60}°{minutes % 60}′"})
 
 
@@ -378,19 +403,21 @@ def _scale_bar(b: Builder, at: tuple[float, float]) -> None:
 
 
 def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method: str, r: float,
-                     fluctuation: float, magnify: float, dead_centre: str = "crank-end") -> Figure:
+                     fluctuation: float, magnify: float, dead_centre: str = "crank-end",
+                     drive: str = "engine") -> Figure:
     infinite_rod = bool(infinite_rod)
     start_angle(dead_centre)
     chosen = magnify is None  # the figure chooses it: again at every rod (derived_givens)
+    sign = drive_sign(drive)
     if chosen:
         magnify = auto_magnification(rod_ratio_param(rod_ratio),
                                      bounded("fluctuation Qr/((m1+m2) v1^2)", fluctuation, FLUCTUATION))
-    givens = _givens(r, rod_ratio, fluctuation, magnify)
+    givens = _givens(r, rod_ratio, fluctuation, magnify, sign)
     validate_two_cranks(givens)
     used = _check_parts(parts, method)
     n = parts
     b = Builder("two-cranks", givens, {"parts": n, "method": used, "requested_method": method,
-                                       "infinite_rod": infinite_rod, "dead_centre": dead_centre,
+                                       "infinite_rod": infinite_rod, "dead_centre": dead_centre, "drive": drive,
                                        **({"magnify": "auto"} if chosen else {})})
     start = n if dead_centre == "crank-end" else 0
     f = build_frame(b)
@@ -434,7 +461,7 @@ def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method
     _scale_bar(b, (-1.2 if infinite_rod else 2.0, -1.55 if infinite_rod else 1.55))
     for part in built:
         for j in range(2 * n + 1):
-            if _ahead(b, part.means[j], part.ends[j]) <= 0.0:
+            if sign * _ahead(b, part.means[j], part.ends[j]) <= 0.0:
                 raise InvalidParameter(f"speed radius at crank position {j} would not be positive; "
                                        f"lower --magnify or the fluctuation")
     b.params["plate"] = _plate_patterns(infinite_rod, n)

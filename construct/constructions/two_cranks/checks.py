@@ -9,7 +9,8 @@ from .. import Figure
 from ..crank import angle_tolerance
 from .analytic import (KOCHANSKI_ERROR, KOCHANSKI_RHO, excess_exact, excess_from, extreme_angles_exact,
                        kochanski_angle_error, quadrant_extremes)
-from .measure import crank_angle, dead_centre_of, speed_radius, work_excess
+from .build import angle_at
+from .measure import crank_angle, dead_centre_of, sense_of, speed_radius, work_excess
 
 def two_cranks_checks(fig: Figure, model: Mapping[str, Any] | None = None) -> list[Check]:
     """The checks of a two-cranks figure; *model*: ``{"extremes": quadrant_extremes(rod ratio)}``, if known."""
@@ -18,6 +19,8 @@ def two_cranks_checks(fig: Figure, model: Mapping[str, Any] | None = None) -> li
     g = fig.replay.givens
     K = g["rod_ratio"]
     gain = g["magnify"] * g["fluctuation"]
+    sense = sense_of(fig)
+    pm = "+" if sense > 0 else "-"
     made_by = fig.replay.made_by()
     checks: list[Check] = []
     kinds = [(True, None)] if fig.params["infinite_rod"] else [(False, K), (True, None)]
@@ -38,8 +41,8 @@ def two_cranks_checks(fig: Figure, model: Mapping[str, Any] | None = None) -> li
                                 excess_from(alpha, ratio, dc), tol, why, "Q r"))
             if j < 2 * n:
                 checks.append(Check(f"speed radius {j} ({word})", speed_radius(fig, j, infinite=infinite),
-                                    1.0 + gain * excess_from(alpha, ratio, dc), (1.0 + gain) * tol,
-                                    "proportional angle and compass: the work excess times g, Euclidean", "r"))
+                                    1.0 + sense * gain * excess_from(alpha, ratio, dc), (1.0 + gain) * tol,
+                                    f"proportional angle and compass: r {pm} g e, Euclidean", "r"))
         if infinite and n % 4 == 0:
             for j in range(0, 2 * n, n // 4):
                 checks.append(Check(f"v = v1 at {180 * j // n} deg (infinite rod, § 146)",
@@ -63,11 +66,19 @@ def two_cranks_checks(fig: Figure, model: Mapping[str, Any] | None = None) -> li
                                     (max(ex) - ex[0]) - (ex[0] - min(ex)), 2 * tol,
                                     f"§ 147: the quadrants differ; exact law: rise {q['rise']:.5f}, "
                                     f"fall {q['fall']:.5f} Q r", "Q r"))
+            checks += _finite_wave_checks(fig, ratio, dc, sense, model)
     checks += _extreme_checks(fig)
     return checks
 
 
+#: How much beyond the approximation's own error (its formula, worked out before anything is measured) a check
+#: against the exact value allows: a construction that strays by half that error again fails.
+METHOD_MARGIN = 1.5
+
+
 def _extreme_checks(fig: Figure) -> list[Check]:
+    """The extremes through Kochański's π: each quantity against Kochański's own value (float chain) and against
+    the exact value within 1.5 times what his rectification's error formula carries into it."""
     rp = fig.replay
     r = rp.givens["r"]
     centre = "O'" if "O'" in rp else "O"
@@ -76,23 +87,37 @@ def _extreme_checks(fig: Figure) -> list[Check]:
     a1x, a2x = extreme_angles_exact()
     err = kochanski_angle_error()
     s2 = (16.0 / KOCHANSKI_RHO ** 2 - 1.0) - ((4.0 / math.pi) ** 2 - 1.0)
+    a1k = 0.5 * math.asin(16.0 / KOCHANSKI_RHO ** 2 - 1.0)   # what the construction must give with his π
     a1 = crank_angle(fig, "K.M1")
     a2 = crank_angle(fig, "K.M2")
     height = (rp["K.G1"][1] - rp[centre][1]) / r
+    m = METHOD_MARGIN
+    koch_why = (f"Kochański's rectification falls short of pi r by pi - sqrt(40/3 - 2 sqrt 3) = {koch:.3e} r; "
+                f"tolerance {m:g} times that")
+    angle_why = (f"Kochański's error carried into the angle: {math.degrees(err) * 3600:.1f}\" ({err:.2e} rad); "
+                 f"tolerance {m:g} times that")
+    # the float chain: 1e-12 r on BK, the angles by the slope of asin at sin 2a = 0.62 (1/(2 cos 2a) < 1)
     out = [
-        Check("Kochanski: BK / r against pi", rho, math.pi, 1.001 * koch + EUCLIDEAN_TOLERANCE,
-              f"Kochański's rectification falls short of pi r by {koch:.3e} r", "r"),
+        Check("Kochanski: BK / r (his construction)", rho, KOCHANSKI_RHO, EUCLIDEAN_TOLERANCE,
+              "Euclidean: sqrt(4 + (3 - tan 30°)²)", "r"),
+        Check("Kochanski: BK / r against pi", rho, math.pi, m * koch + EUCLIDEAN_TOLERANCE, koch_why, "r"),
+        Check("(4/pi) r constructed (with his pi)", float(rp["4r/π"]) / r, 4.0 / KOCHANSKI_RHO, 10 * EUCLIDEAN_TOLERANCE,
+              "Euclidean: the fourth proportional to BK, 4r and r", "r"),
         Check("(4/pi) r constructed", float(rp["4r/π"]) / r, 4.0 / math.pi,
-              1.001 * abs(4.0 / KOCHANSKI_RHO - 4.0 / math.pi) + EUCLIDEAN_TOLERANCE,
-              "Kochański's error carried: 4/BK - 4/pi", "r"),
+              m * abs(4.0 / KOCHANSKI_RHO - 4.0 / math.pi) + EUCLIDEAN_TOLERANCE,
+              f"Kochański's error carried: 4/BK - 4/pi; tolerance {m:g} times that", "r"),
+        Check("sin 2 alpha = (4/pi)^2 - 1 constructed (with his pi)", height, 16.0 / KOCHANSKI_RHO ** 2 - 1.0,
+              10 * EUCLIDEAN_TOLERANCE, "Euclidean: the height in the crank circle", ""),
         Check("sin 2 alpha = (4/pi)^2 - 1 constructed", height, (4.0 / math.pi) ** 2 - 1.0,
-              1.001 * abs(s2) + EUCLIDEAN_TOLERANCE, f"Kochański's error carried: {s2:.3e}", ""),
+              m * abs(s2) + EUCLIDEAN_TOLERANCE, f"Kochański's error carried: {s2:.3e}; tolerance {m:g} times that", ""),
+        Check("extreme angle alpha1 (with his pi, deg)", math.degrees(a1), math.degrees(a1k),
+              math.degrees(10 * EUCLIDEAN_TOLERANCE), "Euclidean: the arc bisected", "deg"),
+        Check("extreme angle alpha2 (with his pi, deg)", math.degrees(a2), 90.0 - math.degrees(a1k),
+              math.degrees(10 * EUCLIDEAN_TOLERANCE), "Euclidean: the arc bisected", "deg"),
         Check("extreme angle alpha1 (constructed, deg)", math.degrees(a1), math.degrees(a1x),
-              math.degrees(1.001 * err + EUCLIDEAN_TOLERANCE),
-              f"Kochański's error carried into the angle: {math.degrees(err) * 3600:.1f}\" ({err:.2e} rad)", "deg"),
+              math.degrees(m * err + EUCLIDEAN_TOLERANCE), angle_why, "deg"),
         Check("extreme angle alpha2 (constructed, deg)", math.degrees(a2), math.degrees(a2x),
-              math.degrees(1.001 * err + EUCLIDEAN_TOLERANCE),
-              f"Kochański's error carried into the angle: {math.degrees(err) * 3600:.1f}\" ({err:.2e} rad)", "deg"),
+              math.degrees(m * err + EUCLIDEAN_TOLERANCE), angle_why, "deg"),
         *_wave_checks(fig, centre),
         Check("alpha1 against the book's 19 deg 12'", math.degrees(a1), 19.2, 0.5 / 60.0,
               "printed to the minute: half a minute", "deg"),
@@ -103,21 +128,111 @@ def _extreme_checks(fig: Figure) -> list[Check]:
 
 
 def _wave_checks(fig: Figure, centre: str) -> list[Check]:
-    """v_min and v_max read off the drawn wave where the rays to the extremes cross it."""
+    """v_min and v_max read off the drawn wave where the rays to the extremes cross it (for pumps the other
+    way round: § 146, "das Gegentheil")."""
     rp = fig.replay
     g = rp.givens
     gain = g["magnify"] * g["fluctuation"]
+    sense = sense_of(fig)
     n = fig.params["parts"]
     amplitude = gain * -excess_exact(extreme_angles_exact()[0], None)
     tol = amplitude * (6.0 / n) ** 3
     out = []
-    for i, word in ((1, "v_min"), (2, "v_max")):
+    for i in (1, 2):
+        word = "v_min" if (i == 1) == (sense > 0) else "v_max"
         a = extreme_angles_exact()[i - 1]
         out.append(Check(f"{word} / v1 read off the wave at M{i} (infinite rod, drawn radius)",
-                         rp[centre].distance(rp[f"K.W{i}"]) / g["r"], 1.0 + gain * excess_exact(a, None), tol,
+                         rp[centre].distance(rp[f"K.W{i}"]) / g["r"], 1.0 + sense * gain * excess_exact(a, None), tol,
                          f"a French curve through points {180 / n:g} deg apart: within (6/N)^3 of the wave's "
-                         f"amplitude {amplitude:.4f} r (the radius is 1 + G k e, the book's law magnified)", "r"))
+                         f"amplitude {amplitude:.4f} r (the radius is 1 {'+' if sense > 0 else '-'} G k e, the "
+                         f"book's law magnified)", "r"))
     return out
 
 
-# -- the table ----------------------------------------------------------------------------
+def _extremes_of(points, O, D0, r: float, gain: float, start: float, samples: int,
+                 within: tuple[float, float] | None) -> dict[str, float]:
+    """The least and greatest radius about O of the closed French curve through *points* (between the angles
+    *within* from the first dead centre, if given): the radii, the angles and e read off them (a draftsman's
+    circles about O touching the curve)."""
+    from ...kernel.closed_curves import closed_french_curve_op
+    from ...kernel.geometry import SCALAR
+
+    curve, = closed_french_curve_op(tuple(points), {"points": len(points)}, {}, (), SCALAR)
+    pts = curve.curve_points(samples)
+    if within is not None:
+        lo_a, hi_a = within
+        pts = [p for p in pts if lo_a - 1e-12 <= (angle_at(O, D0, p) - start) % (2.0 * math.pi) <= hi_a + 1e-12
+               or (hi_a >= 2.0 * math.pi - 1e-12 and (angle_at(O, D0, p) - start) % (2.0 * math.pi) < 1e-12)]
+    radii = [O.distance(p) / r for p in pts]
+    lo, hi = radii.index(min(radii)), radii.index(max(radii))
+    out = {"v_min": radii[lo], "v_max": radii[hi]}
+    # the least e sits at the least radius when the rods drive, at the greatest when the shaft drives pumps
+    at_min, at_max = (lo, hi) if gain > 0 else (hi, lo)
+    out["e_min"], out["e_max"] = (radii[at_min] - 1.0) / gain, (radii[at_max] - 1.0) / gain
+    out["alpha_min"] = (angle_at(O, D0, pts[at_min]) - start) % (2.0 * math.pi)
+    out["alpha_max"] = (angle_at(O, D0, pts[at_max]) - start) % (2.0 * math.pi)
+    return out
+
+
+def wave_extremes(fig: Figure, *, samples: int = 64, exact: bool = False,
+                  within: tuple[float, float] | None = None) -> dict[str, float]:
+    """The least and greatest speed of the finite rod's drawn wave, as a draftsman finds them: the circles about
+    O that touch the curve from inside and outside (the curve sampled *samples* times between its points).
+
+    Returns ``v_min``, ``v_max`` (the drawn radius over r: v/v1 with the deviations magnified G times),
+    ``e_min``, ``e_max`` (Q r) and their angles ``alpha_min``, ``alpha_max`` (radians from the figure's
+    first dead centre).  With *exact*, the same French curve through the exact law's speed points instead of
+    the constructed ones: the method's own error, before anything is measured.  *within* (radians from the
+    first dead centre, e.g. a quadrant) limits the search to that part of the turn.
+    """
+    from ...kernel.geometry import Point
+
+    rp = fig.replay
+    g = rp.givens
+    gain = g["magnify"] * g["fluctuation"] * sense_of(fig)
+    O, D0 = rp["O"], rp["D0"]
+    dc = dead_centre_of(fig)
+    start = math.pi if dc == "crank-end" else 0.0
+    n = fig.params["parts"]
+    if exact:   # the crank turns from the head-end dead centre D0 (left of O) over the top
+        pts = []
+        for j in range(2 * n):
+            a = math.pi * j / n
+            rad = g["r"] * (1.0 + gain * excess_from(a, None if fig.params["infinite_rod"] else g["rod_ratio"], dc))
+            pts.append(Point(O.x - rad * math.cos(start + a), O.y + rad * math.sin(start + a)))
+    else:
+        pts = [rp[f"Z{j}"] for j in range(2 * n)]
+    return _extremes_of(pts, O, D0, g["r"], gain, start, samples, within)
+def _finite_wave_checks(fig: Figure, ratio: float, dc: str, sense: float, model: Mapping[str, Any] | None) -> list[Check]:
+    """§ 147: the finite rod's least and greatest speed over the turn, read off its drawn wave.
+
+    The tolerance is the method's own error worked out before anything is measured: the same French curve
+    through the exact law's speed points, its extremes against the exact ones, twice that (and the float
+    chain's 1e-9).
+    """
+    if fig.params.get("infinite_rod"):
+        return []
+    n = fig.params["parts"]
+    qs = quadrant_extremes(ratio, dead_centre=dc) if model is None else model["extremes"]
+    low = min(qs, key=lambda q: q["e_min"])
+    high = max(qs, key=lambda q: q["e_max"])
+    drawn, on_exact = wave_extremes(fig), wave_extremes(fig, exact=True)
+    why = (f"a French curve through points {180 / n:g} deg apart: twice what the same curve through the exact "
+           f"speed points misses by")
+    out = []
+    for key, q in (("min", low), ("max", high)):
+        speed = "least" if (key == "min") == (sense > 0) else "greatest"
+        tol = 2.0 * abs(on_exact[f"e_{key}"] - q[f"e_{key}"]) + 1e-9
+        out.append(Check(f"e_{key} over the turn, read off the wave (L/r = {ratio:g}, the {speed} speed)",
+                         drawn[f"e_{key}"], q[f"e_{key}"], tol, why, "Q r"))
+        a = q[f"alpha_{key}"]
+        miss = abs((on_exact[f"alpha_{key}"] - a + math.pi) % (2.0 * math.pi) - math.pi)
+        out.append(Check(f"angle of e_{key} from the {dc} dead centre (L/r = {ratio:g}, read off the wave, deg)",
+                         math.degrees(a + (drawn[f"alpha_{key}"] - a + math.pi) % (2.0 * math.pi) - math.pi),
+                         math.degrees(a), math.degrees(2.0 * miss + 1e-9), why, "deg"))
+    swing = high["e_max"] - low["e_min"]
+    out.append(Check(f"swing e_max - e_min over the turn (L/r = {ratio:g}, read off the wave)",
+                     drawn["e_max"] - drawn["e_min"], swing,
+                     2.0 * abs(on_exact["e_max"] - on_exact["e_min"] - swing) + 1e-9,
+                     why + "; the degree of irregularity is k times the swing", "Q r"))
+    return out

@@ -48,19 +48,30 @@ def dead_centre_of(fig: Figure) -> str:
     return str(fig.params.get("dead_centre", "head-end"))
 
 
+def sense_of(fig: Figure) -> float:
+    """+1 when the figure's rods drive the shaft, −1 when its shaft drives pumps (the given ``sense``)."""
+    return float(fig.replay.givens.get("sense", 1.0))
+
+
 def speeds(fig: Figure, *, infinite: bool | None = None, crosshead_share: float = 0.0) -> list[dict[str, float]]:
     """v/v1 at each crank position from the constructed excess work, with the book's simplifications and without.
 
-    * ``v_book``  = 1 + k·e: § 146's "für große Massen" (linear in e);
-    * ``v_exact`` = sqrt(1 + 2k·e): (m1 + m2)(v² − v1²)/2 = Q·r·e, the book's energy balance;
-    * ``v_full``  drops the book's other simplification too (§ 146: "Bei der Kleinheit von m2 gegen m1
-      und von r gegen l ..."): each crosshead (mass m2) moves at c = v·c/v(α), so
-      v²(m1 + m2·S(α)) = v1²(m1 + m2·S(0)) + 2Q·r·e with S = (c1/v)² + (c2/v)², exact piston law.
-      *crosshead_share* is m2/(m1 + m2); with 0, or for the infinite rod (S = 1), v_full = v_exact.
+    With s = +1 when the rods drive the shaft and −1 when it drives pumps (the masses then take up −e):
 
+    * ``v_book``  = 1 + s·k·e: § 146's "für große Massen" (linear in e);
+    * ``v_exact`` = sqrt(1 + 2s·k·e): (m1 + m2)(v² − v1²)/2 = s·Q·r·e, the book's energy balance;
+    * ``v_first`` keeps the crossheads' term the book derives and then drops (seed 002: "Bei der Kleinheit von
+      m2 gegen m1 und von r gegen l kann man das letzte Glied ... vernachlässigen"), to the first order in r/l
+      as the book writes it: L2 + L3 = m2(sin²α ∓ (r/l) sin α sin 2α + cos²α ± (r/l) cos α sin 2α)v²/2 − m2v1²/2,
+      i.e. S1(α) = 1 + (r/l) sin 2θ (sin θ − cos θ) with θ the first crank's angle from the head-end dead
+      centre, and v²(m1 + m2·S1(α)) = v1²(m1 + m2·S1(0)) + 2s·Q·r·e;
+    * ``v_full``  the same with the exact piston law: S = (c1/v)² + (c2/v)².
+
+    *crosshead_share* is m2/(m1 + m2); with 0, or for the infinite rod (S = 1), v_first = v_full = v_exact.
     k = Qr/((m1 + m2)v1²) is the figure's ``fluctuation``.
     """
     k = fig.replay.givens["fluctuation"]
+    sense = sense_of(fig)
     mu = float(crosshead_share)
     if not 0.0 <= mu < 1.0:
         raise InvalidParameter(f"crosshead share m2/(m1 + m2) must be in [0, 1), got {crosshead_share!r}")
@@ -71,15 +82,21 @@ def speeds(fig: Figure, *, infinite: bool | None = None, crosshead_share: float 
     def S(a: float) -> float:
         return piston_speed_factor(a, ratio) ** 2 + piston_speed_factor(a + 0.5 * math.pi, ratio) ** 2
 
+    def S1(a: float) -> float:
+        return 1.0 if ratio is None else 1.0 + math.sin(2.0 * a) * (math.sin(a) - math.cos(a)) / ratio
+
+    def root(v: float) -> float:
+        return math.sqrt(v) if v >= 0.0 else math.nan
+
     out = []
     a0 = start_angle(dead_centre_of(fig))
     for j in range(2 * n + 1):
         e = work_excess(fig, j, infinite=infinite)
         a = a0 + math.pi * j / n
-        full = ((1.0 - mu) + mu * S(a0) + 2.0 * k * e) / ((1.0 - mu) + mu * S(a))
-        out.append({"index": j, "crank_angle_deg": 180.0 * j / n, "work_excess": e, "v_book": 1.0 + k * e,
-                    "v_exact": math.sqrt(1.0 + 2.0 * k * e) if 1.0 + 2.0 * k * e >= 0.0 else math.nan,
-                    "v_full": math.sqrt(full) if full >= 0.0 else math.nan})
+        first = ((1.0 - mu) + mu * S1(a0) + 2.0 * sense * k * e) / ((1.0 - mu) + mu * S1(a))
+        full = ((1.0 - mu) + mu * S(a0) + 2.0 * sense * k * e) / ((1.0 - mu) + mu * S(a))
+        out.append({"index": j, "crank_angle_deg": 180.0 * j / n, "work_excess": e, "v_book": 1.0 + sense * k * e,
+                    "v_exact": root(1.0 + 2.0 * sense * k * e), "v_first": root(first), "v_full": root(full)})
     return out
 
 

@@ -14,7 +14,8 @@ from ..change import Change, Diff
 from .values import DEFAULT_TOLERANCE, format_magnitude, format_number, numeric_difference, show_value, values_close
 from .geometry import Point
 from .css import INITIAL
-from .parse import Drawing, Shape, parse_svg, source_label
+from .parse import Drawing, Shape, parse_svg
+from .source import source_label
 from .match import bounding_box, drawing_extent, match_shapes
 
 # --------------------------------------------------------------------------- the diff

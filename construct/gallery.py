@@ -69,13 +69,13 @@ FRAME_MODE = "none"
 #: style is the plate (the construction's views in the plate's ink would double the gallery).
 GALLERY_OUTPUTS = {"historical": (), "teaching": ("player",)}
 #: The constructions whose gallery player has a slider for each continuous given (construct.live): the rod
-#: wherever the construction takes it (L/r; piston-force's L in metres beside R) and tangential-pressure's
-#: kappa.  The live data adds 0.02-0.4 MB a player (its grid bounded by the refinement's 0.4 px, each
-#: coordinate at the grid values it needs; live.sweep and live.wire), and a sweep of 0.2-8 s of CPU to the
-#: build.  `construct replay NAME --live` gives any construction with such a given its sliders (four-stroke's
-#: rod too).
-LIVE_PLAYERS = ("crank", "crank-angle", "inertia-curve", "inertia-stroke-fractions", "piston-force",
-                "tangential-pressure", "two-cranks")
+#: wherever the construction takes it (L/r; piston-force's L in metres beside R) and Baumann's kappa
+#: (tangential-pressure, effective-work).  The live data adds 0.02-0.8 MB a player (its grid bounded by the
+#: refinement's 0.4 px and 800 values, each coordinate at the grid values it needs, one sweep for each piece
+#: of the domain where the steps' form changes; live.sweep and live.wire), and a sweep of 0.2-15 s of CPU to
+#: the build.  `construct replay NAME --live` gives any construction with such a given its sliders.
+LIVE_PLAYERS = ("crank", "crank-angle", "effective-work", "four-stroke", "inertia-curve", "inertia-stroke-fractions",
+                "piston-force", "tangential-pressure", "two-cranks")
 #: Givens a book varies that change the construction's steps (the indicator diagram's filling s1: the division
 #: up to the cut-off): every book figure of the construction gets its player, and each player a switch
 #: between them (render.live.with_switch) instead of a slider -- construction -> (param, symbol, how a value is

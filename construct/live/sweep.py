@@ -195,7 +195,8 @@ def pieces(construction: Construction, figure: Figure, given: str, domain: Domai
     def form(u: float) -> tuple | None:
         if u not in made:
             try:
-                made[u] = construction.build(**{**kw, given: float(min(max(10 ** u, domain.low), domain.high))}).protocol
+                v = float(min(max(10 ** u, domain.low), domain.high))
+                made[u] = construction.build(**{**kw, given: v}).protocol
             except InvalidParameter:
                 made[u] = None
         return None if made[u] is None else _form(made[u])
@@ -225,7 +226,7 @@ def pieces(construction: Construction, figure: Figure, given: str, domain: Domai
     ends = [lo] + [x for a, b in cuts for x in (a, b)] + [hi]
     out = []
     for a, b in zip(ends[0::2], ends[1::2]):
-        if form(a) is None:  # (the domain is where the construction holds: never)
+        if form(a) is None:  # a build that fails inside the domain (reach found it holds): the figure as it is
             return [Piece(domain.low, domain.high, figure.protocol)]
         out.append(Piece(domain.low if a == lo else 10 ** a, domain.high if b == hi else 10 ** b,
                          figure.protocol if form(a) == built else made[a]))

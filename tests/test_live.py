@@ -201,6 +201,26 @@ def test_the_sweep_measures_what_the_player_page_draws(name, params):
         assert all(texts.get(i) == t for i, t in extra["texts"].items())
 
 
+def test_a_figure_with_hatched_areas_is_measured_at_once_as_value_by_value(monkeypatch):
+    """The page draws areas (hatching and all) from the curves that bound them, so a figure with hatched areas
+    (Baumann's diagram, in a style that hatches) is measured over the whole sweep at once, not a scene per value
+    -- and draws there what a scene per value draws."""
+    from construct.figure import Figure
+    from construct.live import Measure
+
+    c = get("tangential-pressure")
+    built = c.figure(parts=6)
+    measure = Measure(c, built, STYLES["teaching"])
+    values = np.array([1.3, 5.0, 40.0])
+    replay = built.protocol.replay(c.given_sweep(dict(built.replay.givens), "rod_ratio", values, built.protocol.params))
+    alone = [measure(Figure(built.protocol, replay.take(i, whole=True), c.check, c)) for i in range(len(values))]
+    monkeypatch.setattr(Measure, "__call__", lambda *a: pytest.fail("a scene per value"))
+    together = measure.frames(built.protocol, replay, len(values))
+    assert [f[0] for f in together] == [f[0] for f in alone] and [f[3] for f in together] == [f[3] for f in alone]
+    assert np.abs(np.array([f[1] for f in together]) - np.array([f[1] for f in alone])).max() <= 0.01
+    assert np.allclose([f[2] for f in together], [f[2] for f in alone], rtol=1e-12)
+
+
 def test_a_carried_view_still_frames_its_marks():
     """Away from the built value each step's view is the built view carried along with the marks of the
     steps it shows: where the built view held those marks whole, the carried one does at every rod ratio

@@ -6,6 +6,8 @@
   objects of the suite, and three tests read each.
 * ``cli(*argv)``: ``construct``'s command line run in this process; the exit
   code and what it printed on stdout and stderr.
+* ``gallery_figure(name, params)``: a construction and its figure, built once per
+  session -- the gallery's 23 figures are read by five test modules.
 * ``small_plan``: ``construct gallery`` builds one small figure without a live
   player's sweep, for the tests about the gallery's folder (tests/test_gallery.py
   has its own, with the sweep).
@@ -162,6 +164,25 @@ def rod_ratio_sweep() -> Callable[[str, Any], tuple[Any, Any, Any]]:
         return made[key]
 
     return sweep
+
+
+@pytest.fixture(scope="session")
+def gallery_figure() -> Callable[..., tuple[Any, Any]]:
+    """(construction, figure) for a name and parameters -- the gallery's figures above all, which five test
+    modules read -- built once per session (per worker) when first asked for, never changed by a test."""
+    from construct import get
+
+    made: dict[tuple, tuple[Any, Any]] = {}
+
+    def figure(name: str, params: Any = None) -> tuple[Any, Any]:
+        params = dict(params or {})
+        key = (name, tuple(sorted(params.items())))
+        if key not in made:
+            c = get(name)
+            made[key] = (c, c.figure(**params))
+        return made[key]
+
+    return figure
 
 
 @pytest.fixture(scope="session")

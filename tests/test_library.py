@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+import functools
 import gc
 import json
 import subprocess
@@ -169,6 +170,12 @@ def _module_name(path: Path) -> str:
     return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
 
 
+@functools.lru_cache(maxsize=None)
+def _parse(source: str) -> ast.Module:
+    """A module's syntax tree, parsed once for the layer, circle and private-name tests (read, never changed)."""
+    return ast.parse(source)
+
+
 def _imports(path: Path, text: str | None = None) -> list[tuple[str, int]]:
     """The construct-internal modules a file imports, anywhere in it: at module level, inside functions and
     under ``if TYPE_CHECKING:`` (read by type checkers only, but still an arrow a reader follows: the layers
@@ -177,7 +184,7 @@ def _imports(path: Path, text: str | None = None) -> list[tuple[str, int]]:
     *text* is the file's source (read from *path* when None; *path* places it in the package).
     ``from package import name`` names the module package.name when there is one, else the package.
     """
-    tree = ast.parse(path.read_text(encoding="utf-8") if text is None else text)
+    tree = _parse(path.read_text(encoding="utf-8") if text is None else text)
     pkg = path.relative_to(ROOT).with_suffix("").parts[:-1]
     out = []
     for node in ast.walk(tree):
@@ -303,7 +310,7 @@ def _private_imports(source: str) -> list[tuple[int, str, str]]:
     Dunder names (``__version__``) are not private.
     """
     out = []
-    for node in ast.walk(ast.parse(source)):
+    for node in ast.walk(_parse(source)):
         if isinstance(node, ast.ImportFrom) and (node.level or (node.module or "").startswith("construct")):
             module = "." * node.level + (node.module or "")
             out += [(node.lineno, module, a.name) for a in node.names

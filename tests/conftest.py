@@ -6,6 +6,8 @@
   objects of the suite, and three tests read each.
 * ``cli(*argv)``: ``construct``'s command line run in this process; the exit
   code and what it printed on stdout and stderr.
+* ``cli_process(*argvs, env=..., cwd=...)``: several commands in one fresh
+  process (an environment, an encoding or entry points the process starts with).
 * ``gallery_figure(name, params)``: a construction and its figure, built once per
   session -- the gallery's 23 figures are read by five test modules.
 * ``small_plan``: ``construct gallery`` builds one small figure without a live
@@ -33,11 +35,13 @@ Two things hold for every test without being asked for:
 from __future__ import annotations
 
 import gc
+import json
 import locale
 import os
 import resource
 import shutil
 import signal
+import subprocess
 import sys
 import tempfile
 from pathlib import Path
@@ -145,6 +149,46 @@ def cli(capsys) -> Callable[..., Run]:
         return Run(code, out, err)
 
     return run
+
+
+#: Runs the commands (a JSON list of argv lists) one after the other in this one process, as ``python -m
+#: construct`` runs one; each command's stdout and stderr end with a NUL byte, the exit codes follow on stderr.
+_COMMANDS = """
+import json, sys
+from construct.cli.main import main
+codes = []
+for argv in json.loads(sys.argv[1]):
+    try:
+        codes.append(main(argv))
+    except SystemExit as exc:
+        codes.append(exc.code)
+    for stream in (sys.stdout, sys.stderr):
+        stream.flush()
+        stream.buffer.write(b"\\0")
+        stream.buffer.flush()
+sys.stderr.write(json.dumps(codes))
+"""
+
+
+def commands_in_a_process(*argvs: list[str], env: dict[str, str] | None = None, cwd: Path | None = None,
+                          timeout: float = 120) -> list[Run]:
+    """``construct ARGV`` for each of *argvs*, one after the other in one fresh Python process (what the process
+    starts with -- its environment, the terminal's encoding, the installed entry points -- is the point; one
+    interpreter start instead of one a command).  Each command restores what it changes in the process (the
+    streams' error handling), so each finds the process as it started.  bytes out and err."""
+    proc = subprocess.run([sys.executable, "-B", "-c", _COMMANDS, json.dumps([list(map(str, a)) for a in argvs])],
+                          capture_output=True, timeout=timeout, cwd=cwd, env={**os.environ, **(env or {})})
+    assert proc.returncode == 0 and b"Traceback" not in proc.stderr, proc.stderr[-2000:]
+    outs, errs = proc.stdout.split(b"\0"), proc.stderr.split(b"\0")
+    codes = json.loads(errs.pop())
+    assert outs.pop() == b"" and len(outs) == len(errs) == len(codes) == len(argvs), proc
+    return [Run(*run) for run in zip(codes, outs, errs)]
+
+
+@pytest.fixture
+def cli_process() -> Callable[..., list[Run]]:
+    """:func:`commands_in_a_process`: several commands in one fresh process."""
+    return commands_in_a_process
 
 
 @pytest.fixture(scope="session")

@@ -266,40 +266,13 @@ def test_a_full_disk_during_gallery_or_verify_update_keeps_the_old_goldens(comma
 # --------------------------------------------------------------------------- 4, 5. text a terminal cannot show
 
 
-#: Runs the commands (a JSON list of argv) one after the other as ``python -m construct`` would, each one's stdout
-#: and stderr ended by a NUL byte; the exit codes on stderr after the last NUL.
-TERMINAL = """
-import json, sys
-from construct.cli.main import main
-codes = []
-for argv in json.loads(sys.argv[1]):
-    try:
-        codes.append(main(argv))
-    except SystemExit as exc:
-        codes.append(exc.code)
-    for stream in (sys.stdout, sys.stderr):
-        stream.flush()
-        stream.buffer.write(b"\\0")
-        stream.buffer.flush()
-sys.stderr.write(json.dumps(codes))
-"""
-
-
 @pytest.mark.parametrize("env", [{"PYTHONIOENCODING": "ascii"}, {"PYTHONIOENCODING": "latin-1"},
                                  {"LC_ALL": "C", "LANG": "C", "PYTHONUTF8": "0", "PYTHONCOERCECLOCALE": "0"}])
-def test_a_terminal_that_is_not_utf8_gets_fallbacks_not_tracebacks(env, tmp_path):
-    # one process for the three commands: the terminal's encoding is the process's (set as it starts), and each
-    # command sets its streams' fallbacks up and restores them (construct.cli.main), so that a command finds
-    # the streams as the process started them, as it would in a process of its own
+def test_a_terminal_that_is_not_utf8_gets_fallbacks_not_tracebacks(env, cli_process):
+    # the terminal's encoding is the process's, set as it starts: the three commands share one process
     argvs = (["list"], ["errata", "--book", "anhang-ii"], ["check", "crank", "--json"])
-    proc = subprocess.run([sys.executable, "-c", TERMINAL, json.dumps(argvs)], capture_output=True, timeout=120,
-                          env={**os.environ, "PYTHONPATH": str(REPO), **env})
-    assert proc.returncode == 0 and b"Traceback" not in proc.stderr, proc.stderr
-    outs, errs = proc.stdout.split(b"\0"), proc.stderr.split(b"\0")
-    codes = json.loads(errs.pop())
-    assert outs.pop() == b""
     out = {}
-    for argv, code, stdout, stderr in zip(argvs, codes, outs, errs, strict=True):
+    for argv, (code, stdout, stderr) in zip(argvs, cli_process(*argvs, env={"PYTHONPATH": str(REPO), **env})):
         assert code in (0, 1) and b"Traceback" not in stderr, (argv, stderr)
         out[argv[0]] = stdout
     errata = out["errata"]

@@ -28,7 +28,7 @@ def test_faces_are_baumanns_hyperbolas(fig):
 def test_hub_and_the_halving_radius(fig):
     b1 = 0.025
     assert 2 * disc_half_width(fig, "U2") == pytest.approx(6 * b1, rel=1e-12)          # b2 = 6 b1
-    assert disc_half_width(fig, "HU2") + disc_half_width(fig, "HD2") == pytest.approx(24 * b1, rel=1e-12)
+    assert disc_half_width(fig, "U.H3") + disc_half_width(fig, "D.H3") == pytest.approx(24 * b1, rel=1e-12)
     b = lambda r: 1 / r  # noqa: E731
     rho = mpmath.findroot(lambda p: mpmath.quad(lambda r: b(r) * r, [p, 1])
                           - mpmath.quad(lambda r: b(r) * r, [mpmath.mpf(1) / 6, p]), 0.5)

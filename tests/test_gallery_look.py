@@ -149,7 +149,8 @@ _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*[′']*")  # a let
 
 @pytest.mark.parametrize("key", IDS)
 def test_captions_name_only_what_the_figure_letters(figures, key):
-    """Every name in a step's caption is a letter of the figure so far, or a tag the frame shows.
+    """Every name in a step's caption is a letter of the figure so far, or a tag the frame shows, or the
+    letter of a point a later step makes (what the step's group sets out to make: "crank point for q7").
 
     The frame tags the points of the current step, of its instrument's inputs and those
     its caption names (:meth:`Scene.tagged`); the letters are the labels of the steps so far.  A name of the protocol that is
@@ -160,8 +161,11 @@ def test_captions_name_only_what_the_figure_letters(figures, key):
     names = {m.name for m in sc.marks}  # what is drawn (a length such as L is not)
     letters: set[str] = set()
     by_step: dict[int, list] = {}
+    first: dict[str, int] = {}  # each letter or tag: the step that makes the first point it names
     for m in sc.marks:
         by_step.setdefault(m.step, []).append(m)
+        if m.kind == "point":
+            first.setdefault(m.label or sc.display_name(m.name), m.step)
     bad = []
     for k in range(1, len(sc.steps) + 1):
         letters.update(m.label for m in by_step.get(k, ()) if m.label)
@@ -173,7 +177,7 @@ def test_captions_name_only_what_the_figure_letters(figures, key):
             for letter in sorted((x for x in letters if not (x.isalnum() and x.isascii())), key=len, reverse=True):
                 text = text.replace(letter, " ")  # a letter of several words ("O (l = ∞)") is the figure's own
             for tok in _NAME.findall(text):
-                if tok in letters or tok in tags:
+                if tok in letters or tok in tags or first.get(tok, 0) > k:
                     continue
                 tok = tok.rstrip("′'")
                 if tok in names and tok not in letters and tok not in tags and not (tok.isalpha() and tok.islower()):
@@ -257,3 +261,29 @@ def test_gallery_page_letters_are_at_least_9px_as_displayed(figures, style):
     width = float(re.search(r'width="([\d.]+)"', svg).group(1))
     shown = min(DISPLAY_PX, width) / width
     assert min(_font_sizes(svg)) * shown >= 9.0
+
+
+@pytest.mark.parametrize("key", IDS)
+def test_a_figure_letters_its_rod_one_way(figures, key):
+    """The rod length is L in the figures after Anhang II and "Einfluß der Massenkräfte" (r/L) and l in those
+    after § 146 (r/l): one letter in a figure's title, its steps' captions and its groups' titles alike (the
+    crank's captions wrote l where the figure letters L: the length's letter was taken for a helper's)."""
+    c, fig = figures[key]
+    sc = scene_for(c, fig)
+    texts = list(sc.title) + [t for k in range(1, len(sc.steps) + 1) for t in sc.caption(k)]
+    texts += list(sc.group_captions.values())
+    rods = {m.group(1) for t in texts for m in re.finditer(r"(?:r/|[Ss]chubstangenlänge |rod length )([Ll])(?!\w)", t)}
+    assert len(rods) <= 1, rods
+
+
+def test_words_of_a_title_stay_words_and_an_equation_keeps_its_parentheses(figures):
+    """A word of the title that is also an object's name ("back" of the back-pressure line) is left a word
+    where it runs on into a phrase, and "(Gl. 298)" reads "(Gl. (298))", both parentheses closed."""
+    c, fig = figures[IDS[PLAN.index(("indicator-diagram", {}))]]
+    sc = scene_for(c, fig)
+    assert sc.readable("indicator diagram: clearance, admission and back pressure", "en") == \
+        "indicator diagram: clearance, admission and back pressure"
+    c, fig = figures[IDS[PLAN.index(("piston-force", {}))]]
+    sc = scene_for(c, fig)
+    titles = [t for t in sc.group_captions.values() if "Gl." in t]
+    assert titles and all(t.count("(") == t.count(")") for t in titles), titles

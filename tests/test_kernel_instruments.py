@@ -99,3 +99,16 @@ def test_dropping_a_perpendicular_from_a_point_on_the_line_names_the_step():
     g = b.line("g", "A", "B")
     with pytest.raises(StepError, match="step"):
         b.drop_perpendicular("l", "P", g, "A", "B")
+
+
+def test_a_parallel_is_called_by_what_its_direction_is():
+    """Brauer's steps draw parallels to the 45° line O′W, whose W lies far off: the step says "to the 45 degree
+    line", not a point the view does not show."""
+    b = builder_with(O=(0.0, 0.0), W=(1.0, 1.0), P=(3.0, 0.5))
+    par = b.parallel_through("s", "P", "O", "W", along=("zur 45°-Linie", "to the 45 degree line"))
+    made = [s for s in b.steps if s.outputs == (par,)][0]
+    assert made.group[-1] == "parallel to the 45 degree line through P"
+    b.intersect("X", par, b.line("g", "O", "P"), rule=("only",))
+    assert b.protocol().steps[-1].caption.en == "X where the parallel to the 45 degree line through P meets the line OP"
+    plain = b.parallel_through("t", "P", "O", "W")
+    assert [s for s in b.steps if s.outputs == (plain,)][0].group[-1] == "parallel to OW through P"

@@ -44,3 +44,14 @@ def test_the_reader_names_objects_by_the_figures_letters():
                 "rod3": ("circle", None, "circle_radius", ("P3", "L"))})
     assert r.text("rod3 meets the stroke line at X3", "en") == "the circle about 3 meets the stroke line at 3′"
     assert r.text("Kreis um P3 durch D0", "de") == "Kreis um 3 durch A"
+
+
+def test_a_family_of_helpers_is_not_read_as_a_lettered_points_helper():
+    """X.c45 is the piston position of the crank point c45 (lettered 45°): X(45°).  u.T1 is the apex T1 of the
+    division u, not a helper of the point T1 that the figure letters 720°; U' and its circle U'.k are U′."""
+    r = Reader({"c45": ("point", "45°", None, ()), "X.c45": ("point", None, None, ()),
+                "T1": ("point", "720°", None, ()), "u.T1": ("point", None, None, ()),
+                "U'": ("point", None, None, ()), "U'.k": ("circle", None, "circle_radius", ("U'", "r"))})
+    assert r.text("X.c45 und u.T1", "de") == "X(45°) und T1"
+    assert r.text("Kreis um U' (U'.k)", "de") == "Kreis um U′ (Kreis um U′)"
+    assert r.text("the crank's circle", "en") == "the crank's circle"

@@ -50,6 +50,11 @@ def kinds(findings) -> list[str]:
     return sorted(f.kind for f in findings)
 
 
+def but_fill(findings) -> list:
+    """The findings but the canvas's fill (these drawings are a few letters on a large sheet, on purpose)."""
+    return [f for f in findings if f.kind != "fill"]
+
+
 # --------------------------------------------------------------------------- the font's metrics
 
 @pytest.mark.parametrize("text", ["K17", "q7", "ω7′", "Wj"])
@@ -76,11 +81,11 @@ def test_widths_come_from_the_font_not_from_counting_characters():
 # --------------------------------------------------------------------------- a plate: one view
 
 def test_a_clean_figure_has_no_findings():
-    body = (point("s0001-A", 200, 200) + label("A", 212, 196, "s0001-A-label")
-            + point("s0002-B", 400, 300) + label("B", 412, 296, "s0002-B-label")
-            + '<line class="result" id="s0003-g" x1="200" y1="200" x2="400" y2="300"/>'
-            + '<text class="cap" x="24" y="980">Fig. 1. A clean figure</text>')
-    assert lint_svg(svg(body), "clean.svg") == []
+    body = (point("s0001-A", 40, 40) + label("A", 52, 36, "s0001-A-label")
+            + point("s0002-B", 460, 240) + label("B", 472, 236, "s0002-B-label")
+            + '<line class="result" id="s0003-g" x1="40" y1="40" x2="460" y2="240"/>'
+            + '<text class="cap" x="24" y="300">Fig. 1. A clean figure</text>')
+    assert lint_svg(svg(body, width=500, height=320), "clean.svg") == []
 
 
 def test_two_labels_on_one_spot_overlap_and_are_named():
@@ -104,7 +109,7 @@ def test_labels_closer_than_their_halos_read_as_one_word():
 def test_a_label_on_another_point_but_not_on_its_own():
     body = (point("s0001-A", 300, 300) + label("A", 300, 304, "s0001-A-label")  # on its own point: allowed
             + point("s0002-B", 500, 300) + point("s0003-C", 520, 300) + label("B", 520, 304, "s0002-B-label"))
-    found = lint_svg(svg(body), "points.svg")
+    found = but_fill(lint_svg(svg(body), "points.svg"))
     assert kinds(found) == ["on-point"]
     assert found[0].ids == ("s0002-B-label", "s0003-C")
 
@@ -115,18 +120,18 @@ def test_a_result_line_through_a_label_strikes_it_and_a_helper_line_does_not():
     helper = '<line class="construction" id="s0010-h" x1="250" y1="296" x2="350" y2="296"/>'
     # the label's ink reaches about 2.5 below the baseline, its halo 1.75 more, the line 1 wide each side
     below = '<line class="result" id="s0010-b" x1="250" y1="310" x2="350" y2="310"/>'
-    found = lint_svg(svg(lab + through), "struck.svg")
+    found = but_fill(lint_svg(svg(lab + through), "struck.svg"))
     assert kinds(found) == ["struck"] and found[0].ids == ("s0009-q4-label", "s0010-t")
-    assert lint_svg(svg(lab + helper), "helper.svg") == []
-    assert lint_svg(svg(lab + below), "below.svg") == []
+    assert but_fill(lint_svg(svg(lab + helper), "helper.svg")) == []
+    assert but_fill(lint_svg(svg(lab + below), "below.svg")) == []
     # an arc through the label strikes it too (paths are flattened, arcs by their centre and radius)
     arc = '<path class="result" id="s0011-k" d="M200 296A100 100 0 0 1 400 296"/>'  # centre (300, 296), top at y=196
-    assert lint_svg(svg(lab + arc), "arc.svg") == []
+    assert but_fill(lint_svg(svg(lab + arc), "arc.svg")) == []
     # from the bottom (300, 396) to the top (300, 196) in the positive sense (clockwise on the y-down sheet):
     # through the left end (200, 296), not the right one
     arc_left = '<path class="result" id="s0011-k" d="M300 396A100 100 0 0 1 300 196"/>'
-    assert kinds(lint_svg(svg(label("q4", 200, 300, "x") + arc_left), "left.svg")) == ["struck"]
-    assert lint_svg(svg(label("q4", 400, 300, "x") + arc_left), "right.svg") == []
+    assert kinds(but_fill(lint_svg(svg(label("q4", 200, 300, "x") + arc_left), "left.svg"))) == ["struck"]
+    assert but_fill(lint_svg(svg(label("q4", 400, 300, "x") + arc_left), "right.svg")) == []
 
 
 def test_small_labels_at_the_stated_view_size():
@@ -221,6 +226,103 @@ def test_the_camera_may_come_from_the_players_data():
     assert [f.steps for f in lint_svg(figure, "p.svg") if f.kind == "small-mark"] == [((2, 2),)]
     data = {"n": 3, "steps": [{}, {"v": 0}, {}], "views": [[230, 250, 140, 100]]}
     assert [f for f in lint_svg(figure, "p.svg", data=data) if f.kind == "small-mark"] == []
+
+
+# --------------------------------------------------------------------------- leaders, captions, the canvas
+
+LEVEL_CSS = CSS + """
+.zl1 .lbg>.lb,.zl1 .lbg>.leader,.zl1 .pt{transform:scale(0.5)}
+.leader{stroke:#000;stroke-width:0.4px}
+.lv1{display:none}.zl1 .lv1{display:inline}.zl1 .m1{display:none}"""
+
+
+def letter_group(ident: str, x: float, y: float, text: str, dx: float, dy: float, leaders: str = "") -> str:
+    """A letter about its point (the renderer's ``lbg`` group), its leaders given as markup."""
+    return (f'<g class="lbg" id="{ident}-lb" transform="translate({x:g} {y:g})">{leaders}'
+            f'<text class="lb halo" x="{dx:g}" y="{dy:g}">{text}</text>'
+            f'<text class="lb" id="{ident}-label" x="{dx:g}" y="{dy:g}">{text}</text></g>')
+
+
+def test_a_leader_must_start_at_its_point_and_end_at_its_letter():
+    # q4 stands 40 units right of its point, its leader from 3 units off the point to 31 (both in the group's units)
+    good = '<line class="leader" x1="3" y1="-0.5" x2="31" y2="-3.5"/>'
+    body = point("s0001-q4", 300, 300) + letter_group("s0001-q4", 300, 300, "q4", 40, 0, good)
+    assert [f for f in lint_svg(svg(body), "good.svg") if f.kind == "leader"] == []
+    # the same leader drawn 30 units further out (moved with a letter it no longer reaches from its point)
+    moved = '<line class="leader" x1="33" y1="-0.5" x2="61" y2="-3.5"/>'
+    found = [f for f in lint_svg(svg(point("s0001-q4", 300, 300) + letter_group("s0001-q4", 300, 300, "q4", 40, 0,
+                                                                                 moved)), "moved.svg")
+             if f.kind == "leader"]
+    assert sorted(f.message for f in found) == ["the leader of label 'q4' (s0001-q4-label) ends away from its letter",
+                                                "the leader of label 'q4' (s0001-q4-label) starts away from its point"]
+
+
+def test_a_zoom_level_that_moves_a_letter_has_a_leader_of_its_own():
+    # at zoom level 1 (a camera view twice magnified) the letter moves 30 units up (its level rule); the
+    # renderer's leader for the whole figure is hidden there (m1) and one drawn to the moved letter shown (lv1)
+    moves = "\n.zl1 #s0001-K6-lb>.lb{transform:scale(var(--ls,var(--zs))) translate(0px,-30px)}"
+    whole = '<line class="leader{}" x1="3" y1="-0.5" x2="31" y2="-3.5"/>'
+    level = '<line class="leader lv1" x1="2.4" y1="-1.8" x2="29" y2="-23"/>'
+    def figure(leaders: str) -> str:
+        return steps_svg(group(1, point("s0001-K6", 300, 300) + letter_group("s0001-K6", 300, 300, "K6", 40, 0,
+                                                                               leaders)),
+                         group(2, '<line class="construction" x1="250" y1="330" x2="350" y2="330"/>'),
+                         group(3, '<line class="construction" x1="250" y1="340" x2="350" y2="340"/>'), css=LEVEL_CSS + moves)
+    # step 1 shows the whole sheet, steps 2 and 3 a view about the letter magnified 4.8 times: level 1
+    data = {"n": 3, "levels": [1.0, 2.0], "steps": [{"v": 0}, {"v": 1}, {"v": 1}],
+            "views": [[0, 0, 1400, 1000], [150, 195, 300, 210]]}
+    # the old way: the whole figure's leader moved with the letter at the level (its rule moved #id>.leader too)
+    rigid = figure(whole.format("")).replace(".lb{transform", ".lb,.zl1 #s0001-K6-lb>.leader{transform")
+    assert [f.kind for f in lint_svg(rigid, "rigid.svg", data=data) if f.kind == "leader"] == ["leader"]
+    assert [f for f in lint_svg(figure(whole.format(" m1") + level), "own.svg", data=data)
+            if f.kind == "leader"] == []
+
+
+def test_a_leader_to_a_point_the_view_does_not_draw_points_at_nothing():
+    # the point is made by a finished group's step (faded away after step 2); its letter, in another step's
+    # group, stays: the leader points at nothing in steps 3 and 4
+    leader = '<line class="leader" x1="3" y1="-0.5" x2="31" y2="-3.5"/>'
+    figure = steps_svg(group(1, '<circle class="pt" id="s0001-P" cx="300" cy="300" r="2"/>', cls="step done", fade=2),
+                       group(2, letter_group("s0001-P", 300, 300, "P", 40, 0, leader)),
+                       group(3, '<line class="construction" x1="0" y1="600" x2="900" y2="600"/>'),
+                       group(4, '<line class="construction" x1="0" y1="700" x2="900" y2="700"/>'),
+                       css=CSS.replace(".done{opacity:0.13}", ".done{display:none}"))
+    (f,) = [f for f in lint_svg(figure, "hidden.svg") if f.kind == "leader"]
+    assert f.steps == ((3, 4),) and f.message.endswith("points at a point the view does not draw")
+
+
+def captioned(captions: list[str], *bodies: str) -> tuple[str, dict]:
+    """A stepped figure (one step group per body) and its player's data with each step's German caption."""
+    figure = steps_svg(*(group(k, b) for k, b in enumerate(bodies, start=1)))
+    return figure, {"n": len(bodies), "steps": [{"de": c, "en": "", "g": 0} for c in captions], "groups": [""]}
+
+
+def test_a_caption_names_only_what_its_view_letters():
+    tag = '<text class="lb tag" id="s0002-M4-tag" x="512" y="300">M4</text>'  # shown while its step is current
+    far = '<line class="construction" x1="0" y1="900" x2="900" y2="900"/>'
+    figure, data = captioned(["Kreis um A", "M4 im Schnitt", "Kreis um M5 durch M4", "Gerade c135–M5"],
+                             point("s0001-A", 100, 100) + label("A", 112, 96, "s0001-A-label"),
+                             point("s0002-M4", 500, 300) + tag, far, far)
+    found = {(f.labels, f.steps) for f in lint_svg(figure, "names.svg", data=data) if f.kind == "caption-name"}
+    # step 3 names M4, whose tag only its own step shows; step 4 an internal name no figure letters
+    assert found == {(("M4",), ((3, 3),)), (("c135",), ((4, 4),))}
+    # named where its tag is shown, and a letter before its point is made (the group's goal), are fine
+    figure, data = captioned(["Punkt M4 gesucht", "M4 im Schnitt", "Kreis um A"], far, point("s0002-M4", 500, 300) + tag,
+                             far)
+    assert [f for f in lint_svg(figure, "fine.svg", data=data) if f.kind == "caption-name"] == []
+
+
+def test_a_drawing_in_a_corner_of_its_canvas_fills_too_little_of_it():
+    body = (point("s0001-A", 100, 100) + label("A", 112, 96, "s0001-A-label") + point("s0002-B", 300, 250)
+            + '<line class="result" id="s0003-g" x1="100" y1="100" x2="300" y2="250"/>'
+            + '<text class="cap" x="24" y="980">Fig. 1. A figure on too large a sheet</text>')
+    (f,) = [f for f in lint_svg(svg(body), "corner.svg") if f.kind == "fill"]
+    # across: 98 … 302 of 1400; down: the letter A's top (85) … 252 of the 967 above the caption
+    assert f.message.startswith("the drawing fills 15% of the canvas's width and 17% of its height")
+    # the same drawing on a sheet cropped to it with a margin (its caption below): filled
+    cropped = svg(body.replace('y="980"', 'y="290"'), width=400, height=300).replace('viewBox="0 0 400 300"',
+                                                                                     'viewBox="70 70 270 230"')
+    assert [f for f in lint_svg(cropped, "cropped.svg") if f.kind == "fill"] == []
 
 
 # --------------------------------------------------------------------------- files, folders, the command
@@ -364,7 +466,7 @@ def test_a_plate_layered_by_step_is_one_view():
         ".cur>.tag{display:inline}", "")
     figure = steps_svg(group(1, point("s0001-O", 100, 100)), group(2, label("K6", 300, 300, "a")),
                        group(3, label("K7", 302, 300, "b")), css=plate_css)
-    found = lint_svg(figure, "plate.svg")
+    found = but_fill(lint_svg(figure, "plate.svg"))
     assert [(f.kind, f.steps, f.views) for f in found] == [("overlap", (), 1)]  # and no current mark to check
 
 

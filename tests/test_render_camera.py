@@ -367,3 +367,112 @@ def test_a_storyboard_tiles_letters_are_not_flooded_by_the_highlight(crank):
             p = parent.get(p)
     # the marks are still tinted
     assert any(g.get("filter") == "url(#now)" for g in root.iter(f"{SVG}g"))
+
+
+# --------------------------------------------------------------------------- the end state
+
+@pytest.fixture(scope="module")
+def fractions(tmp_path_factory):
+    """Tabelle 2 replayed in the teaching style (its layered final.svg and its player)."""
+    c = get("inertia-stroke-fractions")
+    fig = c.figure(rod_ratio=5.0)
+    out = tmp_path_factory.mktemp("fractions")
+    write_replay(c, fig, out, style="teaching", frames="none")
+    return c, fig, out
+
+
+def test_the_end_state_is_the_books_figure_with_the_values_the_construction_gives(fractions):
+    """The last step (final.svg, the player's last step) shows Tabelle 2 as the book draws it: q₀ … q₁₀ as
+    ordinates over the stroke with their values, on a sheet cropped to the drawing.  Each value is the
+    constructed ordinate read in the pressure scale; it agrees with Gl. (4₁) at the crank angle of Gl. (h)
+    for its tenth of the stroke to the three places printed."""
+    from construct.constructions import analytic
+    from construct.regress.lint import lint_path
+
+    _c, fig, out = fractions
+    root = ET.fromstring((out / "final.svg").read_bytes())
+    assert "fin" in root.get("class").split()  # the file shows its end state
+    # the values: the end state's own lettering (class fo, shown in the end state only)
+    values = {"".join(t.itertext()) for g in root.iter(f"{SVG}g") if "fo" in g.get("class", "").split()
+              for t in g.iter(f"{SVG}text")}
+    lam = 1.0 / 5.0
+    for j in range(11):
+        w = analytic.crank_angle_from_path(2.0 * j / 10, 1.0, 5.0)
+        q = analytic.inertia_two_term(w, lam, 1.0)
+        assert f"{'−' if q < 0 else '+'}{abs(q):.3f}".replace(".", ",") in values, j
+    # the vertex S of the proportional angle, far below, is a helper: not in the end state
+    s = next(e for e in root.iter(f"{SVG}circle") if (e.get("id") or "").endswith("-S"))
+    assert "nf" in s.get("class").split()
+    # the sheet is the drawing's, and every view of it is legible: no finding at all
+    assert lint_path(out / "final.svg").ok, lint_path(out / "final.svg").text()
+
+
+def test_the_players_last_step_is_the_end_state(fractions):
+    _c, fig, out = fractions
+    page = (out / "player.html").read_text(encoding="utf-8")
+    data = json.loads(re.search(r'<script type="application/json" id="data">(.*?)</script>', page, re.S).group(1))
+    assert data["end"] == 1 and 'data.end && k === n ? " fin"' in page  # the script's class at the last step
+    # the last view frames the end state, not the whole sheet with the proportional angle far below
+    last = data["views"][data["steps"][-1]["v"]]
+    full = [float(x) for x in re.search(r'data-full="([^"]+)"', page).group(1).split()]
+    assert last[3] < 0.75 * full[3]
+
+
+def test_the_end_states_file_shows_its_letters_and_points_without_css_variables(fractions):
+    """final.svg shows the end state in a renderer without CSS variables or transform-origin (cairosvg): no
+    element is scaled by var(--ls), and each point marker is drawn at the letter scale in its radius, at its place."""
+    import cairosvg
+    import numpy as np
+    from PIL import Image
+
+    _c, fig, out = fractions
+    text = (out / "final.svg").read_text(encoding="utf-8")
+    assert "var(--ls" not in text
+    ls = float(re.search(r'style="--ls:([0-9.]+)"', text).group(1))
+    radii = {float(r) for r in re.findall(r'<circle class="pt[^"]*"[^>]*? r="([0-9.]+)"', text)}
+    # the markers' radii (2.4 and 1.6 canvas px: results and the rest) at the letter scale
+    assert radii and all(min(abs(r - 2.4 * ls), abs(r - 1.6 * ls)) < 2e-3 for r in radii), (radii, ls)
+    # rasterised, every point marker is drawn where it stands: ink at its centre
+    png = out / "final.png"
+    svg_w = float(re.search(r'<svg[^>]*? width="([0-9.]+)"', text).group(1))
+    x0, y0 = (float(v) for v in re.search(r'viewBox="([-0-9.]+) ([-0-9.]+)', text).groups())
+    vb_w = float(re.search(r'viewBox="[-0-9.]+ [-0-9.]+ ([0-9.]+)', text).group(1))
+    cairosvg.svg2png(url=str(out / "final.svg"), write_to=str(png), output_width=round(svg_w))
+    ink = np.asarray(Image.open(png).convert("L")) < 128
+    k = svg_w / vb_w
+    centres = [(float(x), float(y)) for x, y in re.findall(r'<circle class="pt result[^"]*" cx="([-0-9.]+)" cy="([-0-9.]+)"', text)]
+    assert centres
+    assert all(ink[round((y - y0) * k), round((x - x0) * k)] for x, y in centres)
+
+
+@pytest.mark.parametrize("name, params", [("crank", dict(parts=18, rod_ratio=5.0)), ("flywheel-rim", {}),
+                                          ("indicator-diagram", {})])
+def test_fine_work_is_seen_magnified(name, params):
+    """A step's finest detail -- the two closest points it works with, the smallest circle it strikes -- is at
+    least 20 px on the player's screen: its view magnifies it so far, or an inset beside the view does.  A
+    sliver (the disc of Fig. 28, 0,02 r₁ thick, seen over its whole length) gets an inset."""
+    c = get(name)
+    fig = c.figure(**params)
+    d = Drawing(scene_for(c, fig, ending=True), STYLES["teaching"])
+    sc, full = d.scene, d.full_view
+    whole = camera.PLAYER_FIGURE_PX[0] / camera.Framing(full).span
+    drawn = {m.name: m for m in sc.marks}
+    fine_steps = 0
+    for s in sc.steps[1:-1]:
+        pts = sorted({tuple(round(v, 1) for v in d.vp.px(*drawn[n].geom)) for n in
+                      set(s.outputs) | set(s.inputs) | sc.named(s.index) if n in drawn and drawn[n].kind == "point"})
+        gaps = [((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2) ** 0.5 for a, b in itertools.combinations(pts, 2)]
+        gaps = [g for g in gaps if g > 0.0]
+        if not gaps or min(gaps) * whole >= camera.DETAIL_PX or not s.group:
+            continue
+        fine_steps += 1
+        seen = min(gaps) * whole * camera.zoom_of(d.camera_view(s.index), full)
+        inset = d.insets[s.index - 1]
+        assert seen >= 0.79 * min(camera.DETAIL_PX, min(gaps) * whole * camera.ZOOM_LEVELS[-1]) or inset, \
+            (s.index, sc.caption(s.index)[0], seen)
+        if inset is not None and seen < 12.0:  # the inset shows the points apart (Dürer's thirds, 0.1 px apart)
+            assert min(gaps) * camera.INSET_PX[0] / inset[2] >= 12.0, (s.index, sc.caption(s.index)[0])
+    assert fine_steps > 3
+    if name == "flywheel-rim":  # the ray of the rectangle's diagonal, over the sliver O r₁
+        k = next(s.index for s in sc.steps if s.outputs == ("U6.s",))
+        assert d.insets[k - 1] is not None

@@ -86,3 +86,34 @@ def test_the_inset_places_letters_by_the_fonts_metrics_too():
     assert not _overlap(*boxes)
     below = [y > vp.px(*m.geom)[1] for (_, y), m in zip(spots, marks)]
     assert below == [True, False]
+
+
+def test_the_ring_round_the_current_point_never_covers_its_tag():
+    """While a step is current the player rings its point (Style.ring_px across on the screen); the point's name
+    tag stands beside the ring at that step's zoom level, not under it (crank step 328: the ring sat on Q9)."""
+    from construct.render.camera import level, zoom_of
+    from construct.render.output import scene_for
+    from construct.render.scene import MarkKind
+    from construct.render.styles import STYLES
+
+    c = get("crank")
+    st = STYLES["teaching"]
+    d = Drawing(scene_for(c, c.figure(parts=18, rod_ratio=5.0), ending=True), st)
+    sc, pl = d.scene, d.placing
+    points = {m.name: m for m in sc.marks if m.kind is MarkKind.POINT}
+    checked = 0
+    for s in sc.steps[:-1]:
+        if d.ring(s.index) is None:
+            continue
+        lvl = level(zoom_of(d.camera_view(s.index), d.full_view))
+        for name in s.outputs:
+            m = points.get(name)
+            if m is None or m.id not in pl.tag_spots or f" h{lvl}" in pl.tag_hidden.get(m.id, ""):
+                continue
+            dx, dy, _dist = pl.tag_moves.get(m.id, {}).get(lvl, pl.tag_spots[m.id])
+            # the tag's box about its point in letter units (the player's screen px), the ring's radius in screen px
+            x0, y0, x1, y1 = label_box(dx, dy, sc.display_name(m.name), st.label_size, st.label_font, st.label_italic, 0.0)
+            near = (max(x0, min(0.0, x1)), max(y0, min(0.0, y1)))
+            assert (near[0] ** 2 + near[1] ** 2) ** 0.5 >= 0.95 * st.ring_px, (s.index, m.name, (dx, dy))
+            checked += 1
+    assert checked > 50

@@ -113,8 +113,9 @@ def rod_arcs(b: Builder, f: Mapping[str, str], points: list[str]) -> None:
     with b.group(f"all {n + 1} connecting-rod arcs", f"alle {n + 1} Schubstangenbögen"):
         for k, p in enumerate(points):
             with b.group(f"rod arcs from point {k}", f"Schubstangenbögen von Punkt {k}"):
-                arc = b.circle_radius(f"rod{k}", p, f["L"], de=f"Bogen um {k} mit der Schubstangenlänge L",
-                                      en=f"arc about point {k} with the rod length L")
+                # the rod length by its name: the caption writes the letter its figure gives it (L, or § 146's l)
+                arc = b.circle_radius(f"rod{k}", p, f["L"], de=f"Bogen um {k} mit der Schubstangenlänge {f['L']}",
+                                      en=f"arc about point {k} with the rod length {f['L']}")
                 C = b.intersect(f"C{k}", arc, f["axis"], rule=("toward", f["O"], None, -1.0, 0.0),
                                 de=f"Kreuzkopf C{k} auf der Hubachse", en=f"crosshead C{k} on the stroke line")
                 back = b.circle_through(f"back{k}", C, p, de=f"Bogen um C{k} durch {k} zurück auf den Hub",
@@ -317,8 +318,8 @@ def build_crank_angle(*, rod_ratio: float, divisions: int, r: float) -> Figure:
                 back = b.circle_radius(f"rod{j}", C, f["L"], de=f"Bogen um C{j} mit L auf den Kurbelkreis",
                                        en=f"arc about C{j} with L onto the crank circle")
                 W = b.intersect(f"W{j}", back, f["circle"], rule=("left", f["D0"], f["D1"]), role="result",
-                                de=f"Kurbelstellung {j}: Kurbelwinkel ω{j} = ∠AO{j}",
-                                en=f"crank position {j}: crank angle ω{j} = ∠AO{j}",
+                                de=f"Kurbelstellung {j}: Kurbelwinkel ω{j} = ∠A–O–{j}",
+                                en=f"crank position {j}: crank angle ω{j} = ∠A–O–{j}",
                                 labels={f"W{j}": f"{j}"})
                 if 0 < j < m:  # the dead centres' cranks lie on the stroke line
                     # the crank drawn to its point and lettered with its angle AOW as the figure measures it

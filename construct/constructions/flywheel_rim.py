@@ -63,6 +63,7 @@ def build_flywheel_rim(*, r: float, b1: float, rim: float) -> Figure:
         O = b.given_point("O", 0.0, 0.0, de="Wellenmitte O in der Mittelebene", en="shaft centre O in the mid-plane")
         mid = b.given_line("mid", O, angle_deg=0.0, de="Mittelebene des Rades (Halbmesser)",
                            en="mid-plane of the wheel (radius)", role="result")
+        b.call(mid, "Mittelebene", "the mid-plane")
         b.given_length("r1", product=("r",), de="Schwerkreishalbmesser r1", en="mean radius r1 of the rim")
         k = b.circle_radius("R1.k", O, "r1", de="r1 auf der Mittelebene", en="r1 on the mid-plane")
         R1 = b.intersect("R1", mid, k, rule=("toward", O, None, 1.0, 0.0), role="result", labels={"R1": "r₁"},
@@ -97,8 +98,8 @@ def build_flywheel_rim(*, r: float, b1: float, rim: float) -> Figure:
         corners = {}
         for side in ("U", "D"):
             p = start = f"{side}2"
-            for i in range(3):
-                p = b.step_off(f"H{side}{i}", levels[2], p, "b2/2", rule=("toward", marks[2], start),
+            for i in range(3):  # the hub's corner on this side: H1, H2, H3 (a tag each, one side's at a time)
+                p = b.step_off(f"{side}.H{i + 1}", levels[2], p, "b2/2", rule=("toward", marks[2], start),
                                de="b2/2 abgetragen", en="b2/2 stepped off")
             h = square(b, f"hh{side}", p, levels[2], "open")
             corners[side] = (p, b.intersect(f"HS{side}", h, levels[1], rule=("only",), de="Nabenecke an der Welle",
@@ -119,14 +120,18 @@ def build_flywheel_rim(*, r: float, b1: float, rim: float) -> Figure:
     with b.group("the rim: a square section about r1", "der Kranz: quadratischer Querschnitt um r1"):
         b.given_length("a/2", product=("rim", "r"), factor=0.5, de="halbe Kranzbreite", en="half the rim's width")
         ku = b.circle_radius("rimM.k", R1, "a/2", de="a/2 beiderseits r1", en="a/2 either side of r1")
-        inner = b.intersect("rimI", mid, ku, rule=("toward", R1, O))
-        outer = b.intersect("rimO", mid, ku, rule=("toward", O, R1) if False else ("farther", O))
+        # the rim's inner and outer face on the mid-plane (J, K), its corners J1, J2 and K1, K2
+        inner = b.intersect("rim.J", mid, ku, rule=("toward", R1, O), de="innere Kranzseite J",
+                            en="inner face J of the rim")
+        outer = b.intersect("rim.K", mid, ku, rule=("farther", O), de="äußere Kranzseite K",
+                            en="outer face K of the rim")
         cs = {}
-        for tag, foot in (("I", inner), ("O", outer)):
+        for tag, foot in (("J", inner), ("K", outer)):
             v = square(b, f"rimv{tag}", foot, mid, "open")
-            kk = b.circle_radius(f"rim{tag}.c", foot, "a/2", de="a/2 nach beiden Seiten", en="a/2 to either side")
-            cs[tag] = b.intersect((f"rim{tag}U", f"rim{tag}D"), v, kk, rule=("toward", None, None, 0.0, 1.0))
-        ring = [cs["I"][0], cs["O"][0], cs["O"][1], cs["I"][1], cs["I"][0]]
+            kk = b.circle_radius(f"rim.{tag}.c", foot, "a/2", de="a/2 nach beiden Seiten", en="a/2 to either side")
+            cs[tag] = b.intersect((f"rim.{tag}1", f"rim.{tag}2"), v, kk, rule=("toward", None, None, 0.0, 1.0),
+                                  de=f"Kranzecken {tag}1 und {tag}2", en=f"corners {tag}1 and {tag}2 of the rim")
+        ring = [cs["J"][0], cs["K"][0], cs["K"][1], cs["J"][1], cs["J"][0]]
         for i, (p0, p1) in enumerate(zip(ring, ring[1:])):
             b.polyline(f"rim{i}", [p0, p1], role="result", de="Kranzquerschnitt", en="section of the rim")
     with b.group("the planimeter: the disc's section", "Planimeter: Querschnitt der Scheibe"):
@@ -135,9 +140,9 @@ def build_flywheel_rim(*, r: float, b1: float, rim: float) -> Figure:
     with b.group("hub and rim in section", "Nabe und Kranz im Schnitt"):
         # hatched across the disc; the disc, counted up to r1 (Baumann: "bewusstermassen ... zu viel gerechnet"),
         # is hatched on the plate up to the rim, whose section lies over it
-        b.area_between("hubsection", "hub0", "hub2", "HSU", "HU2", hatch_deg=135.0, role="result",
+        b.area_between("hubsection", "hub0", "hub2", "HSU", "U.H3", hatch_deg=135.0, role="result",
                        de="Nabe im Schnitt", en="the hub in section")
-        b.area_between("rimsection", "rim0", "rim2", "rimIU", "rimOU", hatch_deg=135.0, role="result",
+        b.area_between("rimsection", "rim0", "rim2", "rim.J1", "rim.K1", hatch_deg=135.0, role="result",
                        de="Kranz im Schnitt", en="the rim in section")
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))
@@ -166,7 +171,7 @@ def flywheel_rim_checks(fig: Figure) -> list[Check]:
                                 b1 / 2, tol, "the rectangle's diagonal: Euclidean", "r1²"))
     checks.append(Check("b2 = 6 b1 at the hub radius r1/6", 2 * disc_half_width(fig, "U2"), 6 * b1, tol,
                         "the hyperbola itself at r1/6", "r1"))
-    checks.append(Check("hub length 4 b2 = 24 b1", disc_half_width(fig, "HU2") + disc_half_width(fig, "HD2"), 24 * b1,
+    checks.append(Check("hub length 4 b2 = 24 b1", disc_half_width(fig, "U.H3") + disc_half_width(fig, "D.H3"), 24 * b1,
                         tol * 4, "b2/2 stepped off four times on each side", "r1"))
     checks.append(Check("rho = 7/12 r1 (halves the disc's mass)", _radius(fig, "rho"), 7 / 12, tol,
                         "midpoint of r1/6 and r1: b r is constant", "r1"))
@@ -185,21 +190,23 @@ def flywheel_rim_plate(fig: Figure) -> dict:
     (outside the rim, which covers it) -- every length read off the constructed points."""
     R = fig.replay
     r1 = R["R1"][0] - R["O"][0]
-    a = R["rimOU"][1] - R["R1"][1]  # half the rim's side
+    a = R["rim.K1"][1] - R["R1"][1]  # half the rim's side
     hub_top = R["HSU"][1]
     gap = 0.025 * r1
 
-    def thickness(top: str, bottom: str, text: str, offset: float, side: float) -> dict:
-        # a vertical dimension between the two faces, its letter upright beside it
+    def thickness(top: str, bottom: str, text: str, offset: float, side: float, up: float = 0.0) -> dict:
+        # a vertical dimension between the two faces, its letter upright beside it (*up*: raised off the centre
+        # line, which would run through it)
         (x, y0), (_, y1) = R[top], R[bottom]
         return {"kind": "dimension", "a": (x, y0), "b": (x, y1), "text": text, "offset": offset,
-                "text_at": (x + offset + side, (y0 + y1) / 2)}
+                "text_at": (x + offset + side, (y0 + y1) / 2 + up)}
 
-    x_hub = R["HU2"][0]
+    x_hub = R["U.H3"][0]
     furniture = [
-        thickness("U2", "D2", "b₂", gap, 0.03 * r1),
-        thickness("U5", "D5", "b", 0.0, 0.022 * r1),
-        thickness("KU", "KD", "b₁", (R["rimOU"][0] - R["R1"][0]) + gap, 0.025 * r1),
+        thickness("U2", "D2", "b₂", gap, 0.03 * r1, 0.022 * r1),
+        # (the disc is thinner there than the letter is high: b stands above its face)
+        thickness("U5", "D5", "b", 0.0, 0.022 * r1, (R["U5"][1] - R["D5"][1]) / 2 + 0.016 * r1),
+        thickness("KU", "KD", "b₁", (R["rim.K1"][0] - R["R1"][0]) + gap, 0.025 * r1),
         {"kind": "lettering", "at": ((R["HSU"][0] + x_hub) / 2, hub_top + 0.025 * r1), "text": "Nabe"},
         {"kind": "lettering", "at": (R["R1"][0], R["R1"][1] + a + 0.025 * r1), "text": "Kranz"},
         {"kind": "lettering", "at": (R["rho"][0], R["rhoU"][1] + 0.03 * r1), "text": "Armscheibe"},

@@ -219,15 +219,17 @@ def _validate(givens: Mapping[str, float]) -> None:
 def _ray(b: Builder, name: str, O: str, U: str, perp: str, length: str, rule: tuple, what: tuple[str, str]) -> str:
     """A ray from O through the point *length* off U along *perp* (the perpendicular at U): tg = length/r."""
     k = b.circle_radius(f"{name}.k", U, length, de=f"{what[0]} an r angetragen", en=f"{what[1]} laid off at r")
-    T = b.intersect(f"{name}.T", perp, k, rule=rule)
-    return b.line(name, O, T, de=f"Strahl {name} ({what[0]})", en=f"ray {name} ({what[1]})")
+    # Brauer's rays OM and ON: their far points are the book's M and N
+    T = b.intersect(f"{name}.{name[1]}", perp, k, rule=rule)
+    return b.line(name, O, T, de=f"Strahl {O}–{T} ({what[0]})", en=f"ray {O}–{T} ({what[1]})")
 
 
-def _brauer(b: Builder, tag: str, *, O: str, OM: str, ON: str, d45: tuple[str, str], vdir: tuple[str, str],
-            hdir: tuple[str, str], base: str, paxis: str, V0: str, v0: str, p0: str, h0: str, steps: int,
-            outward: bool, what: tuple[str, str]) -> list[str]:
+def _brauer(b: Builder, tag: str, *, O: str, OM: str, ON: str, d45: tuple, vdir: tuple, hdir: tuple, base: str,
+            paxis: str, V0: str, v0: str, p0: str, h0: str, steps: int, outward: bool,
+            what: tuple[str, str]) -> list[str]:
     """m steps of Brauer's construction from the curve point on the vertical *v0* (foot *V0*) and the
-    horizontal *h0* (its mark *p0* on the pressure axis); returns the curve points, first the start."""
+    horizontal *h0* (its mark *p0* on the pressure axis); returns the curve points, first the start.  *d45*,
+    *vdir*, *hdir*: the directions of the parallels (two points and what the line is, German, English)."""
     first = b.intersect(f"{tag}0", v0, h0, rule=("only",), role="result", de=f"{what[0]}: Anfangspunkt",
                         en=f"{what[1]}: starting point")
     pts = [first]
@@ -235,31 +237,31 @@ def _brauer(b: Builder, tag: str, *, O: str, OM: str, ON: str, d45: tuple[str, s
     for j in range(1, steps + 1):
         with b.group(f"{what[1]}: Brauer step {j}", f"{what[0]}: Brauersche Konstruktion, Schritt {j}"):
             if outward:
-                Q = b.intersect(f"{tag}q{j}", v, OM, rule=("only",), de="Senkrechte trifft den Strahl OM",
-                                en="the vertical meets the ray OM")
-                s = b.parallel_through(f"{tag}s{j}", Q, *d45)
+                Q = b.intersect(f"{tag}q{j}", v, OM, rule=("only",), de=f"Senkrechte trifft den Strahl {O}–{OM}.M",
+                                en=f"the vertical meets the ray {O}–{OM}.M")
+                s = b.parallel_through(f"{tag}s{j}", Q, *d45[:2], along=d45[2])
                 V = b.intersect(f"{tag}V{j}", s, base, rule=("only",), de="45°-Linie: V(1 + tg α)",
                                 en="45 degree line: V(1 + tan alpha)")
-                v = b.parallel_through(f"{tag}v{j}", V, *vdir)
-                t = b.parallel_through(f"{tag}t{j}", p, *d45)
-                R = b.intersect(f"{tag}r{j}", t, ON, rule=("only",), de="45°-Linie trifft den Strahl ON",
-                                en="the 45 degree line meets the ray ON")
-                h = b.parallel_through(f"{tag}h{j}", R, *hdir)
+                v = b.parallel_through(f"{tag}v{j}", V, *vdir[:2], along=vdir[2])
+                t = b.parallel_through(f"{tag}t{j}", p, *d45[:2], along=d45[2])
+                R = b.intersect(f"{tag}r{j}", t, ON, rule=("only",), de=f"45°-Linie trifft den Strahl {O}–{ON}.N",
+                                en=f"the 45 degree line meets the ray {O}–{ON}.N")
+                h = b.parallel_through(f"{tag}h{j}", R, *hdir[:2], along=hdir[2])
                 p = b.intersect(f"{tag}p{j}", h, paxis, rule=("only",), de="p/(1 + tg β) auf der Druckachse",
                                 en="p/(1 + tan beta) on the pressure axis")
             else:
-                s = b.parallel_through(f"{tag}s{j}", V, *d45)
-                Q = b.intersect(f"{tag}q{j}", s, OM, rule=("only",), de="45°-Linie trifft den Strahl OM",
-                                en="the 45 degree line meets the ray OM")
-                v = b.parallel_through(f"{tag}v{j}", Q, *vdir)
+                s = b.parallel_through(f"{tag}s{j}", V, *d45[:2], along=d45[2])
+                Q = b.intersect(f"{tag}q{j}", s, OM, rule=("only",), de=f"45°-Linie trifft den Strahl {O}–{OM}.M",
+                                en=f"the 45 degree line meets the ray {O}–{OM}.M")
+                v = b.parallel_through(f"{tag}v{j}", Q, *vdir[:2], along=vdir[2])
                 V = b.intersect(f"{tag}V{j}", v, base, rule=("only",), de="V/(1 + tg α) auf der Volumenachse",
                                 en="V/(1 + tan alpha) on the volume axis")
-                R = b.intersect(f"{tag}r{j}", h, ON, rule=("only",), de="Waagerechte trifft den Strahl ON",
-                                en="the horizontal meets the ray ON")
-                t = b.parallel_through(f"{tag}t{j}", R, *d45)
+                R = b.intersect(f"{tag}r{j}", h, ON, rule=("only",), de=f"Waagerechte trifft den Strahl {O}–{ON}.N",
+                                en=f"the horizontal meets the ray {O}–{ON}.N")
+                t = b.parallel_through(f"{tag}t{j}", R, *d45[:2], along=d45[2])
                 p = b.intersect(f"{tag}p{j}", t, paxis, rule=("only",), de="p(1 + tg β) auf der Druckachse",
                                 en="p(1 + tan beta) on the pressure axis")
-                h = b.parallel_through(f"{tag}h{j}", p, *hdir)
+                h = b.parallel_through(f"{tag}h{j}", p, *hdir[:2], along=hdir[2])
             pts.append(b.intersect(f"{tag}{j}", v, h, rule=("only",), role="result",
                                    de=f"{what[0]}: Punkt {j}", en=f"{what[1]}: point {j}"))
     return pts
@@ -325,7 +327,9 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
         kp = b.circle_radius("U'.k", Ov, f["r"], de="r auf der Druckachse", en="r on the pressure axis")
         Up = b.intersect("U'", paxis, kp, rule=("toward", Ov, None, 0.0, 1.0))
         hor_u = b.erect_perpendicular("u.h", Up, paxis, Ov)
-    d45, vdir, hdir = (Ov, W), (Ov, Up), (Ov, U)
+    # the three directions Brauer's steps draw parallels to, by what they are (W, U' and U lie far off)
+    d45, vdir, hdir = ((Ov, W, ("zur 45°-Linie", "to the 45 degree line")),
+                       (Ov, Up, ("zur Druckachse", "to the pressure axis")), (Ov, U, ("zur Volumenachse", "to the volume axis")))
 
     def rays(tag: str, ta: str, tb: str) -> tuple[str, str]:
         with b.group(f"Brauer's rays{tag and ' for the expansion'}", f"Brauersche Strahlen{tag and ' der Expansion'}"):
@@ -370,7 +374,7 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
             lv = b.given_length("Vd", product=("cutoff", "clearance", "r"), factor=2.0, de="ρ·V_c", en="rho V_c")
             kd = b.circle_radius("Vd.k", Ov, lv, de="ρ·V_c auf der Volumenachse", en="rho V_c on the volume axis")
             Vd = b.intersect("Vd.V", base, kd, rule=("toward", Ov, feet[0]))
-            vd = b.parallel_through("vd", Vd, *vdir)
+            vd = b.parallel_through("vd", Vd, *vdir[:2], along=vdir[2])
             pc_mark = f"cPp{steps}"
         exp_ = _brauer(b, "eP", O=Ov, OM=OMe, ON=ONe, d45=d45, vdir=vdir, hdir=hdir, base=base, paxis=paxis,
                        V0=Vd, v0=vd, p0=pc_mark, h0=comb_line, steps=steps, outward=True,
@@ -456,6 +460,7 @@ def _over_pressure(b: Builder, f: Mapping[str, str], upper: list[str], n: int, f
                            en="start of the 720 degree base (zero line)", label="0°")
         tbase = b.given_line("tbase", T0, angle_deg=0.0, de="Nulllinie über zwei Umdrehungen",
                              en="zero line over two revolutions", role="result")
+        b.call(tbase, "Nulllinie", "the zero line")
         span = b.given_length("span", product=("r",), factor=8.0, de="720° als 8 r", en="720 degrees as 8 r")
         ks = b.circle_radius("T1.k", T0, span, de="8 r abgetragen", en="8 r laid off")
         T1 = b.intersect("T1", tbase, ks, rule=("toward", T0, None, 1.0, 0.0), labels={"T1": "720°"})
@@ -465,8 +470,8 @@ def _over_pressure(b: Builder, f: Mapping[str, str], upper: list[str], n: int, f
         for q, deg in ((1, "180°"), (2, "360°"), (3, "540°")):  # the dead centres, where the strokes change
             b.set_label(quarters[q], deg)
         marks = [T0]
-        for q in range(4):
-            marks += (b.divide_segment(f"t{q}", quarters[q], quarters[q + 1], n, line=tbase) if n > 1 else [])
+        for q in range(4):  # each stroke's division points go by a letter of their own: u1…, v1…, w1…, y1…
+            marks += (b.divide_segment("uvwy"[q], quarters[q], quarters[q + 1], n, line=tbase) if n > 1 else [])
             marks.append(quarters[q + 1])
         opening = b.given_length("open", product=("r",), factor=0.1, de="Zirkelöffnung für die Senkrechten (r/10)",
                                  en="compass opening for the perpendiculars (r/10)")

@@ -157,18 +157,20 @@ def indicator_frame(b: Builder, *, base: str, head: str, crank: str, stroke: Seq
                          de="Admissionsdruck P + P0 (absolut)", en="admission pressure P + P0 (absolute)")
         adm = square(b, f"{p}adm", A0, head_ord, opening)
         back = square(b, f"{p}back", B0, head_ord, opening)
+        b.call(adm, "Admissionslinie", "the admission line")
+        b.call(back, "Gegendrucklinie", "the back-pressure line")
         k = b.circle_radius(f"{p}S1.k", head, s1, de="Füllung s1 abgetragen", en="filling s1 laid off")
         S1 = b.intersect(f"{p}S1", base, k, rule=("toward", head, crank), labels={f"{p}S1": "s₁"},
                          de="Ende der Füllung auf der Nulllinie", en="end of the filling on the zero line")
         cut_ord = square(b, f"{p}v.s1", S1, base, opening)
         cutoff = b.intersect(f"{p}A1", adm, cut_ord, rule=("only",), role="result", labels={f"{p}A1": "A₁"},
-                             de="Abschluss der Füllung A1", en="cut-off A1")
+                             de="Abschluss der Füllung A₁", en="cut-off A₁")
         k = b.circle_radius(f"{p}S2.k", crank, s3, de="s3 vom Kurbeltotpunkt zurück", en="s3 back from the crank-end dead centre")
         S2 = b.intersect(f"{p}S2", base, k, rule=("toward", crank, head), labels={f"{p}S2": "s₂"},
                          de="Beginn der Kompression s2 = s − s3", en="start of compression s2 = s - s3")
         comp_ord = square(b, f"{p}v.s2", S2, base, opening)
         cstart = b.intersect(f"{p}C2", back, comp_ord, rule=("only",), role="result", labels={f"{p}C2": "C₂"},
-                             de="Beginn der Kompression C2", en="start of compression C2")
+                             de="Beginn der Kompression C₂", en="start of compression C₂")
     del head_ord, crank_ord
     return IndicatorDiagram(p, base, head, crank, Z0, Z1, adm, back, cutoff, cut_ord, cstart, comp_ord,
                             opening, g[f"{q}filling"], g[f"{q}compression"])
@@ -179,12 +181,14 @@ def square(b: Builder, name: str, point: str, line: str, opening: str) -> str:
 
     (The opening is a short given length, so the construction stays near the point.)
     """
-    with b.group(f"perpendicular to {line} at {point}", f"Senkrechte zu {line} in {point}"):
+    with b.group(f"perpendicular at {point} to {line}", f"Senkrechte in {point} auf {line}"):
         k = b.circle_radius(f"{name}.o", point, opening, de=f"Kreis um {point}", en=f"circle about {point}")
         # Both crossings are equally near the centre: "nearer" could not decide, and float noise would pick a
         # side (a replay jumped).  A fixed slant direction orders them on a horizontal and a vertical line alike.
         a, z = b.intersect((f"{name}.a", f"{name}.z"), line, k, rule=("toward", None, None, 1.0, 1.0))
-        return b.perpendicular_bisector(name, a, z)
+        perp = b.perpendicular_bisector(name, a, z)
+    b.call(perp, f"Senkrechte in {point}", f"the perpendicular at {point}")
+    return perp
 
 
 def hyperbola_point(b: Builder, name: str, *, corner: str, known: str, known_horizontal: str, known_vertical: str,

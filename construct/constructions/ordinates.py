@@ -76,11 +76,18 @@ def ordinate_line(b: Builder, c: OrdinateFrame, name: str, X: str) -> str:
     with b.group(f"ordinate at {X}", f"Ordinate in {X}"):
         k = b.circle_radius(f"{name}.k", X, c.r, de=f"Kreis um {X} mit r", en=f"circle about {X} with radius r")
         a, a2 = b.intersect((f"{name}.A", f"{name}.B"), c.axis, k, rule=("toward", c.O, None, -1.0, 0.0))
-        return b.perpendicular_bisector(name, a, a2)
+        line = b.perpendicular_bisector(name, a, a2)
+    b.call(line, f"Ordinate in {X}", f"the ordinate at {X}")
+    return line
 
 
-def ordinate_value(b: Builder, c: OrdinateFrame, tag: str, P: str, kind: str, dc_p: str, dc_2: str | None) -> str:
+def ordinate_value(b: Builder, c: OrdinateFrame, tag: str, P: str, kind: str, dc_p: str, dc_2: str | None,
+                   number: str | None = None) -> str:
     """Construct (F/f)(cos w + lam cos 2w) for the crank point P; return its point on the F/f scale line.
+
+    *tag* names the helpers (Y7, G7), *number* is the crank point's number as the figure letters it (the
+    title's: *tag* when None) -- the title names it, not P itself, which the steps' views need not show;
+    a dead centre the title names by its letter.
 
     *kind* tells what the nominal angle makes exactly zero or a dead centre:
     "start" (P = D0), "end" (P = D1), "quarter" (90 degrees: no cos w term,
@@ -89,7 +96,9 @@ def ordinate_value(b: Builder, c: OrdinateFrame, tag: str, P: str, kind: str, dc
     """
     O, gr = c.O, c.gr
     Y = G = None
-    with b.group(f"ordinate value at crank point {tag}", f"Ordinatenwert zum Kurbelpunkt {tag}"):
+    # (a dead centre by its letter: A, not the crank point 0)
+    number = P if kind in ("start", "end") else tag if number is None else number
+    with b.group(f"ordinate value at crank point {number}", f"Ordinatenwert zum Kurbelpunkt {number}"):
         # r cos w: the foot of the crank point.
         if kind == "start":
             Y = c.D0
@@ -101,8 +110,8 @@ def ordinate_value(b: Builder, c: OrdinateFrame, tag: str, P: str, kind: str, dc
         if kind in ("start", "end"):
             G = c.D0
         else:
-            k = b.circle_segment(f"N{tag}.k", P, c.D0, P, de=f"Sehne A–{tag} von {tag} aus nochmals abgetragen",
-                                 en=f"chord A–{tag} stepped on once more from {tag}")
+            k = b.circle_segment(f"N{tag}.k", P, c.D0, P, de=f"Sehne {c.D0}–{P} von {P} aus nochmals abgetragen",
+                                 en=f"chord {c.D0}–{P} stepped on once more from {P}")
             N = b.intersect(f"N{tag}", c.crank, k, rule=("farther", c.D0), de=f"Punkt N{tag} zum doppelten Winkel 2ω",
                             en=f"point N{tag} at the doubled angle 2w")
             if kind == "quarter":

@@ -146,6 +146,7 @@ class Builder:
         self._group: list[str] = []
         self._group_titles: dict[str, str] = {}
         self._counter: dict[str, int] = {}
+        self._called: dict[str, tuple[str, str]] = {}
         self._taken_over = 0  # the first steps, taken over from a protocol, whose captions are lettered already
 
     @classmethod
@@ -177,6 +178,8 @@ class Builder:
                 b.provenance[name] = step.provenance
                 b._maker[name] = step.index - 1
         b._group_titles.update(titles)
+        # what the first steps call their lines, for the new steps' captions too
+        b._called.update({k: (v[0], v[1]) for k, v in inherited.get("called", {}).items()})
         b._taken_over = len(b.steps)
         return b
 
@@ -300,13 +303,32 @@ class Builder:
 
         from .letters import letter_steps
 
-        lettered = letter_steps([*self.steps, step], self.objects)[-1].caption.brief
+        lettered = letter_steps([*self.steps, step], self.objects, self._called)[-1].caption.brief
         raw = f"({step.tool}: {step.caption.brief})"
         if lettered == step.caption.brief or not exc.args or raw not in str(exc.args[0]):
             return exc
         out = copy.copy(exc)
         out.args = (str(exc.args[0]).replace(raw, f"({step.tool}: {lettered})", 1), *exc.args[1:])
         return out
+
+    def call(self, name: str, de: str, en: str) -> None:
+        """Say what a line or circle made already is, for the captions that name it (German, English, in the
+        objects' names): a perpendicular built from the helper points S1, S2 of its bisector is read as
+        "Senkrechte in m4", not as the line S1–S2 (whose points are long gone from the figure).
+
+        >>> b = Builder("demo", givens={})
+        >>> _ = b.given_point("A", 0.0, 0.0); _ = b.given_point("B", 2.0, 0.0); _ = b.line("g", "A", "B")
+        >>> b.call("g", "Grundlinie durch A", "the base line through A")
+        >>> _ = b.circle_through("k", "B", "A"); _ = b.intersect("C", "g", "k", rule=("farther", "A"))
+        >>> b.protocol().steps[-1].caption.de
+        'C im Schnitt von Grundlinie durch A und dem Kreis um B'
+        """
+        for text in (de, en):
+            if not isinstance(text, str) or not text:
+                raise InvalidParameter(f"what {name!r} is called is text, got {_shown(text)}")
+        if not isinstance(name, str) or name not in self._maker:
+            raise UnknownObject(f"no object {name!r} to call in {self.construction!r}")
+        self._called[name] = (de, en)
 
     def set_label(self, name: str, text: str) -> None:
         """Letter an object already made (the figure prints *text* beside it).
@@ -352,9 +374,11 @@ class Builder:
         params["givens"] = dict(self.givens)
         if self._group_titles:
             params["group_titles"] = dict(sorted(self._group_titles.items()))
+        if self._called:  # what lines and circles are called, read again for the group titles
+            params["called"] = {n: list(t) for n, t in sorted(self._called.items())}
         # The captions name what the figure letters (12, B, M1), not the objects' internal names; steps taken
         # over from another protocol (continuing) are lettered already.
-        lettered = letter_steps(self.steps, self.objects)
+        lettered = letter_steps(self.steps, self.objects, self._called)
         steps = tuple(self.steps[:self._taken_over]) + tuple(lettered[self._taken_over:])
         params["captions"] = "letters"  # read once: a second reading would take a letter (S1) for a name
         return Protocol(self.construction, MappingProxyType(params), steps, self.replayable)
@@ -653,7 +677,9 @@ class Builder:
             ka = self.circle_through(self.fresh(f"{name}.k"), a, b2)
             kb = self.circle_through(self.fresh(f"{name}.k"), b2, a)
             s = self.intersect(self.fresh(f"{name}.S"), ka, kb, rule=("farther", vertex))
-            return self.line(name, vertex, s, de=f"Winkelhalbierende {name}", en=f"angle bisector {name}")
+            line = self.line(name, vertex, s, de=f"Winkelhalbierende {name}", en=f"angle bisector {name}")
+        self.call(line, f"Winkelhalbierende von {a}{vertex}{b}", f"the bisector of the angle {a}{vertex}{b}")
+        return line
 
     def perpendicular_bisector(self, name: str, a: str, b: str) -> str:
         """The perpendicular bisector of ab: two equal circles and the line through their crossings.
@@ -670,8 +696,11 @@ class Builder:
             cb = self.circle_through(self.fresh(f"{name}.k"), b, a)
             u, v = self.intersect((self.fresh(f"{name}.S"), self.fresh(f"{name}.S")), ca, cb,
                                   rule=("left", a, b))
-            return self.line(name, u, v, de=f"Mittelsenkrechte {name} von {a}{b}",
+            line = self.line(name, u, v, de=f"Mittelsenkrechte {name} von {a}{b}",
                              en=f"perpendicular bisector {name} of {a}{b}")
+        # named by what it is, not by the crossings S1, S2 (gone from the figure once its group is done)
+        self.call(line, f"Mittelsenkrechte von {a}{b}", f"the perpendicular bisector of {a}{b}")
+        return line
 
     def midpoint(self, name: str, a: str, b: str, *, through: str | None = None) -> str:
         """The midpoint of ab (``through``: an existing line ab, else one is drawn).
@@ -706,7 +735,9 @@ class Builder:
         with self.group(f"perpendicular at {p}", f"Senkrechte in {p}"):
             k = self.circle_through(self.fresh(f"{name}.k"), p, on_line_point)
             mirror = self.intersect(self.fresh(f"{name}.Y"), line, k, rule=("farther", on_line_point))
-            return self.perpendicular_bisector(name, on_line_point, mirror)
+            perp = self.perpendicular_bisector(name, on_line_point, mirror)
+        self.call(perp, f"Senkrechte in {p}", f"the perpendicular at {p}")
+        return perp
 
     def drop_perpendicular(self, name: str, p: str, line: str, a: str, b: str) -> tuple[str, str]:
         """The perpendicular from *p* to *line* (through its points a, b) and its foot.
@@ -735,14 +766,19 @@ class Builder:
             perp = self.line(name, p, mirror, de=f"Lot {name} von {p}", en=f"perpendicular {name} from {p}")
             foot = self.intersect(f"{name}.F", perp, line, rule=("only",), de=f"Fußpunkt des Lotes von {p}",
                                   en=f"foot of the perpendicular from {p}")
+        self.call(perp, f"Lot von {p}", f"the perpendicular from {p}")
         return perp, foot
 
-    def parallel_through(self, name: str, p: str, a: str, b: str, *, role: str = "construction") -> str:
+    def parallel_through(self, name: str, p: str, a: str, b: str, *, role: str = "construction",
+                         along: tuple[str, str] | None = None) -> str:
         """The parallel to ab through p, by completing the parallelogram a b Q p.
 
         Q lies at distance |ab| from p and |ap| from b, on the other side of
         the diagonal pb than a; that side is read off the figure once, when
-        the step is recorded, and stored as the step's rule.
+        the step is recorded, and stored as the step's rule.  *along*: what the
+        direction ab is, where the figure says so (German, English: ``("zur
+        45°-Linie", "to the 45 degree line")``): the steps' titles name that, not
+        a point a far corner of the figure letters.
 
         >>> b = Builder("demo", givens={})
         >>> for n, (x, y) in zip("ABC", ((0, 0), (4, 0), (0, 3))):
@@ -751,13 +787,16 @@ class Builder:
         >>> round(par.q.y, 12)
         3.0
         """
-        with self.group(f"parallel to {a}{b} through {p}", f"Parallele zu {a}{b} durch {p}"):
+        de, en = along or (f"zu {a}{b}", f"to {a}{b}")
+        with self.group(f"parallel {en} through {p}", f"Parallele {de} durch {p}"):
             k1 = self.circle_segment(self.fresh(f"{name}.k"), p, a, b)
             k2 = self.circle_segment(self.fresh(f"{name}.k"), b, a, p)
             (px, py), (bx, by), (ax, ay) = self[p], self[b], self[a]
             a_left = (bx - px) * (ay - py) - (by - py) * (ax - px) > 0
             q = self.intersect(self.fresh(f"{name}.Q"), k1, k2, rule=("right" if a_left else "left", p, b))
-            return self.line(name, p, q, role=role)
+            line = self.line(name, p, q, role=role)
+        self.call(line, f"Parallele {de} durch {p}", f"the parallel {en} through {p}")
+        return line
 
     def divide_segment(self, name: str, a: str, b: str, n: int, *, line: str | None = None,
                        only: Sequence[int] | None = None) -> list[str]:

@@ -49,7 +49,12 @@ from typing import Mapping, Sequence
 
 __all__ = ["Reader", "book_symbols", "equation", "subscripts", "lowered", "formula_break", "unbroken",
            "PLATE_CAPTION_LINES", "tag", "displayed", "number", "CAPTION_LIMIT",
-           "TITLE_LIMIT", "letter_steps", "object_kind"]
+           "TITLE_LIMIT", "letter_steps", "object_kind", "FIGURE_LETTER"]
+
+#: What a letter of a figure looks like: a letter, perhaps with a number of at most two digits, subscripts or
+#: primes (M2, S1, q10, U24, 5′, a′); a number below 100 with a prime.  A helper's name that is no such
+#: letter (c135, Nb17, cPq3) is read as one by :func:`tag`.
+FIGURE_LETTER = re.compile(r"[A-Za-zΑ-Ωα-ω][0-9]{0,2}[′″'₀-₉]*|[0-9]{1,2}[′″']?")
 
 #: The most characters of a step's caption (or a group's title) a figure shows; a longer one is
 #: cut and ends in "…".  The books' step captions are at most 82 characters; 400 is about three
@@ -66,10 +71,13 @@ PLATE_CAPTION_LINES = 3
 #: caption of megabytes, whose end no one sees.
 _READ_LIMIT = 16 * CAPTION_LIMIT
 
-#: An identifier as the constructions write object names: letters, digits, dots inside.
-_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*")
-#: Words after which the instruments' captions put an object's name ("Kreis um X durch Y", "X where a meets b").
-_SLOTS = {"um", "durch", "von", "und", "mit", "zu", "about", "through", "where", "meets", "and", "of", "from", "with", "for"}
+#: An identifier as the constructions write object names: letters, digits, dots inside, a prime (U', U'.k;
+#: not the English genitive: crank's).
+_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?:'(?![A-Za-z]))?(?:\.[A-Za-z0-9_]+)*")
+#: Words after which the instruments' captions put an object's name ("Kreis um X durch Y", "X where a meets b",
+#: "perpendicular to X at Y").
+_SLOTS = {"um", "durch", "von", "und", "mit", "zu", "zur", "in", "auf", "about", "through", "where", "meets", "and",
+          "of", "from", "with", "for", "to", "at", "on", "onto"}
 
 #: Nouns after which a lower-case name is a word of the sentence ("crank circle", "axis line").
 _NOUNS = {"circle", "line", "centre", "center", "kreis", "linie", "gerade"}
@@ -114,23 +122,47 @@ def displayed(text: str, limit: int = CAPTION_LIMIT) -> str:
 
 
 def tag(name: str, letters: "frozenset[str] | set[str]" = frozenset()) -> str:
-    """The short name of an unlettered point: the last part of its dotted name.
+    """The short name of an unlettered point: the last part of its dotted name, read as a letter.
 
-    Where that is a letter the figure already uses (the helper ``ordD.A`` beside
-    the dead centre A), a single capital is written small and anything else keeps
-    the part before it.
+    A name that is no letter of a figure (:data:`FIGURE_LETTER`) is read as one: a capital with a family's
+    small letters and a number keeps the capital and the number (``Ab1``, the A of crank point b1: A1;
+    ``Ehs1``: E1), small letters before a capital name the family by its last letter (``cPq3``, Brauer's
+    point on the ray q: Q3; ``iV0``: V0).  Where the letter is one the figure already uses (the helper
+    ``ordD.A`` beside the dead centre A), a single capital is written small, a small letter takes a prime,
+    and anything else keeps the part before it.  A name's ASCII prime is written as the figure's (U' : U′).
 
-    >>> tag("T7.G.M1"), tag("ordD.A", {"A", "B"}), tag("D.2", {"2"}), tag("Dx")
-    ('M1', 'a', 'D2', 'Dx')
+    >>> tag("T7.G.M1"), tag("ordD.A", {"A", "B"}), tag("D.2", {"2"}), tag("Dx"), tag("to42.a", {"a"})
+    ('M1', 'a', 'D2', 'Dx', 'a′')
+    >>> tag("Ab1"), tag("Zt10"), tag("Ehs1"), tag("cPq3"), tag("ePV10"), tag("iV0"), tag("U'")
+    ('A1', 'Z10', 'E1', 'Q3', 'V10', 'V0', 'U′')
     """
     parts = name.split(".")
-    last = parts[-1]
+    last = _as_letter(parts[-1]).replace("'", "′")
     if last in letters:
         if len(last) == 1 and last.isupper():
             return last.lower()
+        if len(last) == 1 and last.islower():
+            return last + "′"
         if len(parts) > 1:
             return parts[-2].rsplit(".", 1)[-1] + last
     return last
+
+
+_FAMILY = re.compile(r"([A-Z])[a-z]{1,3}([0-9]{1,2})")
+_FAMILY_AFTER = re.compile(r"[a-z]{1,3}[A-Z]{0,2}([A-Za-z])([0-9]{1,2})")
+
+
+def _as_letter(part: str) -> str:
+    """A part of a name as a figure letters it (see :func:`tag`); as it stands when no rule reads it."""
+    if FIGURE_LETTER.fullmatch(part):
+        return part
+    m = _FAMILY.fullmatch(part)
+    if m:
+        return m.group(1) + m.group(2)
+    m = _FAMILY_AFTER.fullmatch(part)
+    if m:
+        return m.group(1).upper() + m.group(2)
+    return part
 
 
 def subscripts(text: str) -> str:
@@ -232,18 +264,22 @@ def unbroken(text: str) -> str:
 
 
 def equation(text: str) -> str:
-    """Equation numbers as the book prints them: ``Gl. 4_1`` -> ``Gl. (4₁)``, ``Gl. (4_1)`` likewise.
+    """Equation numbers as the book prints them: ``Gl. 4_1`` -> ``Gl. (4₁)``, ``Gl. (4_1)`` likewise; a
+    parenthesis round the reference stays its own (``(Gl. 298)`` -> ``(Gl. (298))``).
 
     >>> equation("Gl. 4_1, Tabelle 1; Gl. (h); Gl. 1")
     'Gl. (4₁), Tabelle 1; Gl. (h); Gl. (1)'
+    >>> equation("Massenkräfte (Gl. 298) an allen Kolbenstellungen")
+    'Massenkräfte (Gl. (298)) an allen Kolbenstellungen'
     """
     if "Gl." not in text:
         return text
 
     def sub(m: "re.Match[str]") -> str:
-        num, low = m.group(1), m.group(2)
+        num, low = m.group(2), m.group(3)
         return f"Gl. ({num}{low.translate(_SUB) if low else ''})"
-    return re.sub(r"Gl\. \(?(\d+)(?:_(\d+))?\)?", sub, text)
+    # a closing parenthesis is the number's only where it opened one
+    return re.sub(r"Gl\. (\()?(\d+)(?:_(\d+))?(?(1)\))", sub, text)
 
 
 #: (what a text must hold for the pattern to match, pattern, replacement) in the order
@@ -288,9 +324,14 @@ class Reader:
     kind one of point, line, circle, curve, area.
     """
 
-    def __init__(self, objects: Mapping[str, tuple[str, str | None, str | None, tuple[str, ...]]]):
+    def __init__(self, objects: Mapping[str, tuple[str, str | None, str | None, tuple[str, ...]]],
+                 called: "Mapping[str, Sequence[str]] | None" = None):
         self.objects = objects
         self.points = {n for n, v in objects.items() if v[0] == "point"}
+        #: What the construction calls a line or circle (:meth:`Builder.call
+        #: <construct.kernel.instruments.Builder.call>`): {name: (German, English)}.
+        self.called = dict(called or {})
+        self._calling: set[str] = set()
 
     # -- one name -------------------------------------------------------------------------
     def point(self, name: str) -> str:
@@ -299,8 +340,10 @@ class Reader:
         if label:
             return label
         parts = name.rsplit(".", 1)
-        # the helper of a lettered point, named for it (X.c45: the piston position of 45°): X(45°)
-        other = self.objects.get(parts[-1]) if len(parts) == 2 and len(parts[0].rsplit(".", 1)[-1]) == 1 else None
+        # the helper of a lettered point, named for it (X.c45: the piston position of 45°): X(45°); a small
+        # letter before it names a family of helpers (u.T1: the apex T1 of the division u), not the point
+        head = parts[0].rsplit(".", 1)[-1] if len(parts) == 2 else ""
+        other = self.objects.get(parts[-1]) if len(head) == 1 and head.isupper() else None
         if other is not None and other[1]:
             return f"{parts[0].rsplit('.', 1)[-1]}({other[1]})"  # X.c45, the piston position of 45°: X(45°)
         return tag(name, self.letters)
@@ -314,6 +357,8 @@ class Reader:
         kind, label, op, inputs = self.objects[name]
         if label or name in _COMMON:
             return []
+        if name in self.called:  # called by what it is (the perpendicular at m4): the points named in that
+            return [p for p in _NAME.findall(self.called[name][1]) if p in self.points]
         pts = [p for p in inputs if p in self.points]
         if kind == "line" and op == "line":
             return pts[:2]
@@ -325,6 +370,12 @@ class Reader:
         if label:
             return label
         i = 0 if lang == "de" else 1
+        if name in self.called and name not in self._calling:  # in the figure's letters (a call names others)
+            self._calling.add(name)
+            try:
+                return self.text(self.called[name][i], lang, whole=True)
+            finally:
+                self._calling.discard(name)
         if name in _COMMON:
             return _COMMON[name][i]
         pts = [p for p in inputs if p in self.points]
@@ -413,9 +464,11 @@ class Reader:
             elif (obj[0] in ("line", "circle") and token in made and not obj[1]
                   and not (token.isalpha() and token.isupper())):
                 rep = ""  # the step's own helper line or circle: the figure has no letter for it
-            elif word and not self._names_slot(caption, start, end):
-                rep = None  # an ordinary word that is also a name ("crank centre", "the axis")
-            elif obj[0] in ("point", "length"):
+            elif word and (not self._names_slot(caption, start, end) or self._in_phrase(caption, end)):
+                rep = None  # an ordinary word that is also a name ("crank centre", "the axis", "back pressure")
+            elif obj[0] == "length":  # a length goes by its own letter (the rod length L is the rod's L)
+                rep = obj[1] or token.rsplit(".", 1)[-1]
+            elif obj[0] == "point":
                 rep = self.point(token)
             elif obj[0] in ("line", "circle"):
                 rep = self.curve(token, lang)
@@ -438,6 +491,13 @@ class Reader:
         if cut and not text.endswith("…"):
             text = text[: CAPTION_LIMIT - 1] + "…"
         return displayed(text)
+
+    def _in_phrase(self, text: str, end: int) -> bool:
+        """Does a small word at text[..end] run on into a phrase ("admission and back pressure")?  The word
+        after a name is a slot word, punctuation or the end; after a word of a phrase, another word."""
+        m = _NEXT_WORD.match(text, end)
+        nxt = m.group(1) if m else ""
+        return bool(nxt) and nxt.isalpha() and nxt.islower() and nxt not in _SLOTS and nxt not in self.objects
 
     @staticmethod
     def _names_slot(text: str, start: int, end: int) -> bool:
@@ -477,11 +537,13 @@ def object_kind(obj: object) -> str | None:
     return None
 
 
-def letter_steps(steps: Sequence, objects: Mapping[str, object]) -> list:
+def letter_steps(steps: Sequence, objects: Mapping[str, object],
+                 called: "Mapping[str, Sequence[str]] | None" = None) -> list:
     """*steps* with every caption in the figure's letters.
 
     *objects*: the values the steps made (name -> Point, Line, ...); each step's
-    ``labels`` letter its outputs.  A caption already in letters is left as it is
+    ``labels`` letter its outputs; *called*: what the construction calls a line or circle (its names still
+    in object names: ``{"lv4": ("Senkrechte in m4", "perpendicular at m4")}``).  A caption already in letters is left as it is
     (the protocol marks itself ``captions = letters``: a second reading could take a
     letter for another object's name).
 
@@ -506,7 +568,7 @@ def letter_steps(steps: Sequence, objects: Mapping[str, object]) -> list:
             kind = object_kind(objects.get(name))
             if kind is not None:
                 table[name] = (kind, labels.get(name), makers[name].op, tuple(makers[name].inputs))
-    reader = Reader(table)
+    reader = Reader(table, called)
     out = []
     for s in steps:
         de = reader.text(s.caption.de, "de", s.outputs, whole=True)

@@ -80,7 +80,8 @@ def scale_line(b: Builder, angle: ProportionalAngle, name: str, *, length: str, 
     every scale line that is to keep signs).
     """
     S = angle.vertex
-    with b.group(f"scale line {name} at distance {length} from {S}", f"Maßlinie {name} im Abstand {length} von {S}"):
+    # (the title names the line by where it stands: its name would read as the perpendicular at a point not made yet)
+    with b.group(f"scale line at distance {length} from {S}", f"Maßlinie im Abstand {length} von {S}"):
         k = b.circle_radius(b.fresh(f"{name}.k"), S, length, de=f"{length} von {S} aus auf dem Schenkel abgetragen",
                             en=f"{length} laid off from {S} along the leg")
         origin = b.intersect(f"{name}.U", angle.leg, k, rule=toward, de=de or f"Marke {length} auf dem Schenkel",

@@ -29,7 +29,7 @@ import numbers
 import os
 from types import MappingProxyType
 from dataclasses import dataclass
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 from .errors import InvalidParameter, OutputError, ProtocolFormatError, StepError
@@ -262,6 +262,12 @@ class Protocol:
                 isinstance(k, str) and isinstance(v, str) for k, v in titles.items())):
             raise ProtocolFormatError(f"protocol 'params.group_titles' must map each English group title to its "
                                       f"German one (text to text), got {shown(titles)}")
+        called = params.get("called")  # what lines are called in the captions: (German, English) by name
+        if called is not None and not (isinstance(called, Mapping) and all(
+                isinstance(k, str) and isinstance(v, Sequence) and not isinstance(v, str) and len(v) == 2
+                and all(isinstance(t, str) for t in v) for k, v in called.items())):
+            raise ProtocolFormatError(f"protocol 'params.called' must map object names to their German and English "
+                                      f"names (two texts), got {shown(called)}")
         givens = d.get("givens", [])
         if not isinstance(givens, list) or not all(isinstance(g, str) for g in givens):
             raise ProtocolFormatError(f"protocol 'givens' must be a list of names, got {shown(givens)}")

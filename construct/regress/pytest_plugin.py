@@ -90,7 +90,7 @@ def render_goldens(figure: Any, out: Path, *, style: Any = "plain", frames: str 
     if frames not in FRAME_MODES:
         raise InvalidParameter(f"frames must be one of {', '.join(FRAME_MODES)}, got {frames!r}")
     st = _style(style)
-    scene = build_scene(figure, title=title)
+    scene = build_scene(figure, title=title, ending=st.camera)
     from ..render.svg import Drawing
 
     drawing = Drawing(scene, st)

@@ -43,7 +43,8 @@ MAX_STAGES = 1000
 #: Looks of the step groups, for players that switch classes on a whole step.
 STEP_GROUP_CSS = """g.hid{display:none}
 g.cur>*,g.stage.cur>g>*{stroke:%(hl)s;stroke-width:%(hw)s}
-g.cur>.pt,g.cur .lb,g.stage.cur>g>.pt,g.stage.cur>g .lb{fill:%(hl)s;stroke:none}
+g.cur .lb,g.stage.cur>g .lb{fill:%(hl)s;stroke:none}
+g.cur>.pt,g.stage.cur>g>.pt{fill:%(hl)s}
 g.old{opacity:%(op)s}"""
 
 
@@ -117,6 +118,10 @@ def _camera(d: Drawing, ends: list[int], dt: float, total: float) -> tuple[Any, 
             if lv_i != lv[-1]:
                 lt.append(start - move)
                 lv.append(lv_i)
+    if d.end is not None and ends[-1] == len(d.scene.steps):
+        # the last stage shows the end state (class fin)
+        lt.append((len(ends) - 1) * dt)
+        lv.append(f"zl{level(camera_zoom(views[-1], full))} fin")
     times.append(total)
     keys.append(keys[-1])
     outer, box = d.camera_group(views[0])
@@ -184,6 +189,9 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
     by_step = n == len(d.scene.steps)
     outer, camera, ring = _camera(d, ends, dt, total) if style.camera else (None, None, None)
     for layer in d.LAYERS:
+        if layer == "labels" and camera is not None and ring is not None:
+            camera.add(ring)  # over the drawing, under the letters (a letter's halo opens it)
+            ring = None
         lg = f.g(id=layer)
         if by_step:
             for k, elems in d.groups[layer]:
@@ -205,12 +213,14 @@ def animated_svg(scene, style: Style = PLAIN, *, title: tuple[str, str] | None =
                         stage.elements.insert(0, e)
                     lg.add(stage)
         (camera if camera is not None else dwg).add(lg)
-    furniture = d.furniture()  # the broken axis's marks (and a plate's furniture)
+    # the broken axis's marks (and a plate's furniture), each line's with its step
+    furniture = d.furniture(timed=(lambda k: timing(k, "step", d.scene.fade_end(k) if style.done_opacity < 1.0
+                                                    else None)) if by_step else None)
     if furniture is not None:
         (camera if camera is not None else dwg).add(furniture)
     if camera is not None:
         if ring is not None:
-            camera.add(ring)  # over the drawing
+            camera.add(ring)
         dwg.add(outer)
     # Captions: each stage's while it is drawn, the figure's title otherwise (and in still renderers).
     title_lines = d.captions.title_lines(title or d.scene.title)[: d.n_caption]

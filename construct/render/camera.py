@@ -41,7 +41,7 @@ import numpy as np
 from .scene import MarkKind, Scene, extreme_points
 from .svgdoc import fmt
 
-__all__ = ["step_views", "views_box", "shots", "step_focus", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
+__all__ = ["step_views", "views_box", "shots", "step_focus", "step_zooms", "step_details", "step_insets", "DETAIL_PX", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
            "clear_edges", "clear_tag_edges", "player_letter_scale", "EDGE_ROUNDS", "ring_round"]
 
 #: The most the step player shows of the figure in a 1400 × 1000 window (width, height in screen px): the
@@ -96,8 +96,13 @@ def level_css() -> str:
         rules.append(f".zl{i} .lbg>.lb,.zl{i} .lbg>.leader,.zl{i} .pt"
                      f"{{--zs:{fmt(1 / z, 4)};transform:scale({fmt(1 / z, 4)})}}")
     rules.append(",".join(f".zl{i} .lbx" for i in range(THIN_FROM, len(ZOOM_LEVELS))) + "{display:inline}")
+    # a letter that moves at a level has a leader of its own there (lvN), the whole figure's hidden (mN)
+    levels = range(1, len(ZOOM_LEVELS))
+    rules.append(",".join(f".lv{i}" for i in levels) + ",.lvf{display:none}")
+    rules.append(",".join(f".zl{i} .lv{i}" for i in levels) + "{display:inline}")
+    rules.append(",".join(f".zl{i} .m{i}" for i in levels) + "{display:none}")
     # a letter with no room at a zoom level gives way there (placing.Placing._zoom_placing)
-    rules.append(",".join(f".zl{i} .h{i}" for i in range(1, len(ZOOM_LEVELS))) + "{display:none}")
+    rules.append(",".join(f".zl{i} .h{i}" for i in range(len(ZOOM_LEVELS))) + "{display:none}")
     return "\n".join(rules)
 
 
@@ -145,7 +150,7 @@ def _grow(b: Box | None, x: float, y: float) -> Box:
 
 def step_focus(scene: Scene) -> list[Box | None]:
     """Per step, the box of where it works: its own marks, the points its instrument is set on and the points
-    a frame tags with it (:meth:`Scene.tagged`).
+    its caption names (:meth:`Scene.named`).
 
     Lines are left out of the marks: a line is drawn as far as all the points the
     whole construction ever marks on it (the stroke line reaches the far
@@ -161,9 +166,9 @@ def step_focus(scene: Scene) -> list[Box | None]:
             if m is not None and m.kind is not MarkKind.SEGMENT:
                 for x, y in extreme_points(m):
                     b = _grow(b, x, y)
-        # the points its instrument is set on, and those a frame tags with the step (the points naming
-        # the curves it cuts, the points its caption names): the student looks for them too
-        for n in s.inputs:
+        # the points its instrument is set on, and those its caption names: the student looks for them too,
+        # and a caption names only what the view shows
+        for n in set(s.inputs) | scene.named(s.index):
             m = drawn.get(n)
             if m is not None and m.kind is MarkKind.POINT:
                 b = _grow(b, *m.geom)
@@ -193,19 +198,20 @@ class Framing:
     Regions are pixel boxes (x0, y0, x1, y1) of the canvas *full*.
     """
 
-    def __init__(self, full: View, window: tuple[float, float] | None = PLAYER_FIGURE_PX):
+    def __init__(self, full: View, window: tuple[float, float] | None = PLAYER_FIGURE_PX, max_zoom: float = MAX_ZOOM):
         self.full = full
         ww, wh = window or (full[2], full[3])
         self.aspect = wh / max(ww, 1e-12)
         #: The width of the window-shaped box that shows the whole canvas.
         self.span = max(full[2], full[3] / self.aspect)
-        self.min_w = self.span / MAX_ZOOM
+        self.min_w = self.span / max_zoom
 
-    def width(self, w: float, h: float, context: float = CONTEXT) -> float:
-        """The width of the view round a region *w* x *h* px (before the whole-figure rule)."""
+    def width(self, w: float, h: float, context: float = CONTEXT, max_zoom: float | None = None) -> float:
+        """The width of the view round a region *w* x *h* px (before the whole-figure rule); *max_zoom*: the
+        most it magnifies (the framing's own by default)."""
         fw, fh = self.full[2], self.full[3]
         w, h = w + 2 * min(context * w, ROOM * fw), h + 2 * min(context * h, ROOM * fh)
-        return max(w, h / self.aspect, self.min_w)
+        return max(w, h / self.aspect, self.min_w if max_zoom is None else self.span / max_zoom)
 
     def limit(self, whole_above: float = WHOLE_ABOVE) -> float:
         """From this view width on the whole canvas is shown."""
@@ -218,13 +224,14 @@ class Framing:
         w = self.width(b[2] - b[0], b[3] - b[1])
         return 1.0 if w >= self.limit() else self.span / w
 
-    def view(self, b: Box | None, context: float = CONTEXT, whole_above: float = WHOLE_ABOVE) -> View:
+    def view(self, b: Box | None, context: float = CONTEXT, whole_above: float = WHOLE_ABOVE,
+             max_zoom: float | None = None) -> View:
         """The view round region *b*, slid inside the canvas where it can (the figure's edge is not a
         reason to show paper); numbers to hundredths of a pixel."""
         fx, fy, fw, fh = self.full
         if b is None:
             return self.full
-        w = self.width(b[2] - b[0], b[3] - b[1], context)
+        w = self.width(b[2] - b[0], b[3] - b[1], context, max_zoom)
         h = w * self.aspect
         if w >= self.limit(whole_above):
             return self.full
@@ -235,7 +242,61 @@ class Framing:
         return (round(x, 2), round(y, 2), round(w, 2), round(h, 2))
 
 
-def shots(scene: Scene, focus: Sequence[Box | None], framing: Framing) -> list[tuple[int, int]]:
+#: The smallest distance the student must tell apart on the screen (px), letters beside them: two points a step works with, the
+#: radius of a circle it strikes.  Where the whole figure shows them closer, the step's view may magnify up
+#: to the last zoom level (:func:`step_zooms`), past :data:`MAX_ZOOM`.
+DETAIL_PX = 20.0
+
+
+#: What a step whose finest detail its shot shows smaller than :data:`DETAIL_PX` costs in :func:`shots`, per
+#: halving of the magnification it lacks (two moves of the camera: a cluster of points is worth a shot).
+UNSEEN = 2 * MOVE
+
+
+def step_details(scene: Scene, framing: Framing,
+                 px: Callable[[float, float], tuple[float, float]]) -> list[tuple[float, tuple[float, float] | None]]:
+    """Per step, how much its view must magnify for its finest detail to be :data:`DETAIL_PX` on the screen
+    (the two closest points it works with, the smallest circle it strikes; 0: nothing finer than the whole
+    figure shows), at most :data:`INSET_MAX`, and where that detail is (canvas px).  A cluster of points
+    within a few pixels of each other (a trisection's thirds, a compass step of a few pixels) is seen
+    magnified, not as one dot.
+    """
+    drawn = {m.name: m for m in scene.marks}
+    whole = PLAYER_FIGURE_PX[0] / framing.span  # screen px per canvas px in the whole figure's view
+    out: list[tuple[float, tuple[float, float] | None]] = []
+    for s in scene.steps:
+        pts: list[tuple[float, float]] = []
+        fine, at = math.inf, None
+        for n in set(s.outputs) | set(s.inputs) | scene.named(s.index):
+            m = drawn.get(n)
+            if m is None:
+                continue
+            if m.kind is MarkKind.POINT:
+                pts.append(px(*m.geom))
+            elif m.kind.round and n in s.outputs:
+                c = px(*m.geom[:2])
+                r = abs(px(m.geom[0] + m.geom[2], m.geom[1])[0] - c[0])
+                if r < fine:
+                    fine, at = r, c
+        pts = sorted(set((round(x, 1), round(y, 1)) for x, y in pts))
+        for i, a in enumerate(pts):
+            for b in pts[i + 1:i + 8]:
+                d = math.hypot(a[0] - b[0], a[1] - b[1])
+                if d < fine:
+                    fine, at = d, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+        need = DETAIL_PX / (fine * whole) if 0.0 < fine < math.inf else 0.0
+        out.append((min(INSET_MAX, need), at if need > 1.0 else None))
+    return out
+
+
+def step_zooms(scene: Scene, framing: Framing, px: Callable[[float, float], tuple[float, float]]) -> list[float]:
+    """Per step, how much its view must magnify for its finest detail to be seen (:func:`step_details`); a view
+    may magnify past :data:`MAX_ZOOM` as far as that, up to the last zoom level (beyond, an inset shows it)."""
+    return [min(ZOOM_LEVELS[-1], need) for need, _ in step_details(scene, framing, px)]
+
+
+def shots(scene: Scene, focus: Sequence[Box | None], framing: Framing,
+          zooms: Sequence[float] | None = None) -> list[tuple[int, int]]:
     """The shots of the sequence: runs (first, last) of steps (1-based) seen through one view.
 
     A shot is seen through the view (*framing*) of all its steps' working regions
@@ -253,7 +314,8 @@ def shots(scene: Scene, focus: Sequence[Box | None], framing: Framing) -> list[t
 
     Dynamic programming over the steps, each looking back over at most
     :data:`LONGEST` steps and no further than a shot can still pay: linear in
-    the steps.
+    the steps.  *zooms*: per step the most its view may magnify (:func:`step_zooms`; a shot magnifies as much
+    as its finest step may).
     """
     steps = scene.steps
     n = len(steps)
@@ -267,19 +329,28 @@ def shots(scene: Scene, focus: Sequence[Box | None], framing: Framing) -> list[t
         j = i
         while j + 1 < n and steps[j + 1].group and steps[j + 1].group[:1] == steps[i].group[:1]:
             j += 1
-        out.extend(_partition(steps, focus, framing, i, j))
+        out.extend(_partition(steps, focus, framing, i, j, zooms))
         i = j + 1
     return out
 
 
-def _partition(steps: Sequence, focus: Sequence[Box | None], framing: Framing, a: int, b: int) -> list[tuple[int, int]]:
+def _partition(steps: Sequence, focus: Sequence[Box | None], framing: Framing, a: int, b: int,
+               zooms: Sequence[float] | None = None) -> list[tuple[int, int]]:
     """The cheapest shots of steps a..b (0-based, inclusive) as in :func:`shots`, as 1-based runs."""
     m = b - a + 1
     fw = framing.span
     whole = framing.limit()
     width = framing.width
+    need = [0.0] * m if zooms is None else list(zooms[a:b + 1])
+    zs = [max(MAX_ZOOM, z) for z in need]
+
+    def own_zoom(t: int) -> float:
+        f = focus[a + t]
+        w = width(f[2] - f[0], f[3] - f[1], max_zoom=zs[t])
+        return 1.0 if w >= whole else fw / w
+
     # log 2 of each step's own magnification (0: a step without a working region frames nothing)
-    own = [math.log2(framing.zoom(focus[a + t])) if focus[a + t] is not None else 0.0 for t in range(m)]
+    own = [math.log2(own_zoom(t)) if focus[a + t] is not None else 0.0 for t in range(m)]
     framed = [focus[a + t] is not None for t in range(m)]
     logs, counts = [0.0], [0]
     for t in range(m):
@@ -292,16 +363,22 @@ def _partition(steps: Sequence, focus: Sequence[Box | None], framing: Framing, a
     for t in range(m):
         x0 = y0 = math.inf
         x1 = y1 = -math.inf
+        deepest = MAX_ZOOM
+        finest = 0.0
         for s in range(t, max(-1, t - LONGEST), -1):
             f = focus[a + s]
             if f is not None:
                 x0, y0, x1, y1 = min(x0, f[0]), min(y0, f[1]), max(x1, f[2]), max(y1, f[3])
+            deepest = max(deepest, zs[s])
+            finest = max(finest, need[s])
             if x0 <= x1:
-                w = width(x1 - x0, y1 - y0)
+                w = width(x1 - x0, y1 - y0, max_zoom=deepest)
                 lz = 0.0 if w >= whole else math.log2(fw / w)
             else:
                 lz = 0.0
             loss = (logs[t + 1] - logs[s]) - (counts[t + 1] - counts[s]) * lz
+            if finest > 1.0:  # a step's finest detail, unseen in the shot: the shot pays for it
+                loss += UNSEEN * max(0.0, math.log2(finest) - lz)
             cost = best[s] + moves[s] + loss
             if cost < best[t + 1]:
                 best[t + 1], start[t + 1] = cost, s
@@ -330,6 +407,18 @@ def final_box(scene: Scene, within: Box | None = None) -> Box | None:
     """
     n = len(scene.steps)
     core: Box | None = None
+    if scene.ending:
+        # the end state: the figure as the book draws it, its furniture included, and nothing else
+        from .plate import extent
+
+        for m in [m for m in scene.marks if scene.in_end(m)] + list(scene.end_marks):
+            if "hidden" not in scene.end_look(m).split():
+                for x, y in extreme_points(m):
+                    core = _grow(core, x, y)
+        fx = extent(scene.end_furniture)
+        if fx is not None:
+            core = _union(core, fx)
+        return core
     rest: list[tuple[float, float]] = []
     for m in scene.marks:
         if m.kind is MarkKind.SEGMENT or scene.faded(m.step, n + 1):
@@ -380,12 +469,13 @@ def step_views(scene: Scene, full: View, bbox: Box, px: Callable[[float, float],
         return ((x - ox) / scale, (oy - y) / scale)
 
     focus = [to_px(b) for b in step_focus(scene)]
+    zooms = step_zooms(scene, framing, px)
     out: list[View] = []
-    for first, last in shots(scene, focus, framing):
+    for first, last in shots(scene, focus, framing, zooms):
         u: Box | None = None
         for k in range(first, last + 1):
             u = _union(u, focus[k - 1])
-        v = framing.view(u) if scene.steps[first - 1].group else full
+        v = framing.view(u, max_zoom=max([MAX_ZOOM] + zooms[first - 1:last])) if scene.steps[first - 1].group else full
         out.extend([v] * (last - first + 1))
     out[0] = full
     if n > 1:
@@ -394,8 +484,14 @@ def step_views(scene: Scene, full: View, bbox: Box, px: Callable[[float, float],
         out[-1] = full
         if collapse:
             b = final_box(scene)
+            if scene.ending:  # the end state is framed as large as the window shows it (its letters held)
+                framing = Framing(full, max_zoom=ZOOM_LEVELS[-1])
             for _ in range(3):
-                v = framing.view(_union(to_px(b), focus[-1]), FINAL_CONTEXT, 1.0)
+                # an end state is the lesson's summary: the last step's work is in it, or far from it (the
+                # proportional angle below the figure) and its result is
+                v = framing.view(to_px(b) if scene.ending else _union(to_px(b), focus[-1]), FINAL_CONTEXT, 1.0)
+                if scene.ending:
+                    break
                 if b is None or v == full:
                     break
                 # what the player's window shows of the view, in drawing units (y flips): the helpers
@@ -409,6 +505,62 @@ def step_views(scene: Scene, full: View, bbox: Box, px: Callable[[float, float],
                     break
                 b = grown
             out[-1] = v
+    return out
+
+
+#: A step's work is a sliver where its region is thinner on the screen than this (px) and at least
+#: :data:`SLIVER_RATIO` times as long: no view of the window's shape shows both its length and its
+#: thickness, so the player shows the thickness in an inset (:func:`step_insets`).
+SLIVER_PX = 10.0
+SLIVER_RATIO = 5.0
+#: The most a step's finest detail is magnified (in an inset, past the last zoom level): Dürer's trisection
+#: moves its thirds by a tenth of a canvas pixel (crank of 18 parts, step 54: 0.14 px), which the inset
+#: shows 12 px apart; points equal but for rounding (0.1 px) never.
+INSET_MAX = 128.0
+#: The inset's window on the screen (px) and how thick the sliver is made there at least.
+INSET_PX = (300.0, 210.0)
+INSET_DETAIL_PX = 28.0
+
+
+def step_insets(scene: Scene, views: Sequence[View], full: View,
+                px: Callable[[float, float], tuple[float, float]]) -> list[View | None]:
+    """Per step, the region (canvas px, x y w h) the player shows magnified in an inset, or None.
+
+    A step whose finest detail its view shows smaller than it must be seen (:func:`step_details`: its view
+    widened to take in its letters, or shared with its shot) gets it magnified beside the view.  A step
+    working on a sliver -- the thin rectangle O r₁ of a disc 0,02 r₁ thick, a pressure of 0,15 at
+    laid off over a stroke of 24 cm -- is seen whole in its view only a few pixels thick.  The inset
+    shows the place where the step makes its point (or the point its line is aimed at) magnified until
+    the sliver is :data:`INSET_DETAIL_PX` thick, while the view keeps its whole length in sight.
+    """
+    drawn = {m.name: m for m in scene.marks}
+    focus = step_focus(scene)
+    details = step_details(scene, Framing(full), px)
+    out: list[View | None] = []
+    for s, f, v, (need, at) in zip(scene.steps, focus, views, details):
+        box = None
+        z = zoom_of(v, full)
+        if at is not None and s.group and need > 1.25 * z:
+            # a cluster the view (widened for its letters, or its shot's) shows smaller than it must be seen
+            q = min(PLAYER_FIGURE_PX[0] / v[2], PLAYER_FIGURE_PX[1] / v[3])
+            m = max(2.0, need / z)
+            w, h = INSET_PX[0] / (q * m), INSET_PX[1] / (q * m)
+            box = (round(at[0] - w / 2, 2), round(at[1] - h / 2, 2), round(w, 2), round(h, 2))
+        elif f is not None and s.group:
+            (x0, y1), (x1, y0) = px(f[0], f[1]), px(f[2], f[3])
+            q = min(PLAYER_FIGURE_PX[0] / v[2], PLAYER_FIGURE_PX[1] / v[3])  # screen px per canvas px
+            thin, long = min(x1 - x0, y1 - y0) * q, max(x1 - x0, y1 - y0) * q
+            if 0.75 < thin < SLIVER_PX and long >= SLIVER_RATIO * thin:  # (points on one line are no sliver)
+                own = [drawn[n].geom for n in s.outputs if n in drawn and drawn[n].kind is MarkKind.POINT]
+                if not own:
+                    own = [drawn[n].geom for n in s.inputs if n in drawn and drawn[n].kind is MarkKind.POINT][-1:]
+                if own:
+                    cx = sum(px(*p)[0] for p in own) / len(own)
+                    cy = sum(px(*p)[1] for p in own) / len(own)
+                    m = min(max(INSET_DETAIL_PX / max(thin, 0.5), 2.0), 16.0)  # the inset's magnification
+                    w, h = INSET_PX[0] / (q * m), INSET_PX[1] / (q * m)
+                    box = (round(cx - w / 2, 2), round(cy - h / 2, 2), round(w, 2), round(h, 2))
+        out.append(box)
     return out
 
 
@@ -487,7 +639,6 @@ def clear_edges(views: list[View], full: View, letters_at: Letters) -> list[View
     cut the next; every round grows the view by 2 % at least, so the rounds end), up to the
     whole figure.  *letters_at*: the letters each zoom level shows.
     """
-    W, H = PLAYER_FIGURE_PX
     done: dict = {}
     out = []
     for v in views:
@@ -501,19 +652,9 @@ def clear_edges(views: list[View], full: View, letters_at: Letters) -> list[View
                 z = zoom_of((0.0, 0.0, w, h), full)  # the window's magnification
                 if z <= 1.0:
                     break
-                zl = ZOOM_LEVELS[level(z)]
-                a = letters_at(level(z))
-                q = max(w / W, h / H)
-                ls = player_letter_scale(q * z / zl)
-                hw, hh = W * q / 2, H * q / 2
-                x0, y0 = a[:, 0] + ls * a[:, 2] - cx, a[:, 1] + ls * a[:, 3] - cy
-                x1, y1 = a[:, 0] + ls * a[:, 4] - cx, a[:, 1] + ls * a[:, 5] - cy
-                meet = (x0 < hw) & (x1 > -hw) & (y0 < hh) & (y1 > -hh)
-                cut = meet & ((x0 < -hw) | (x1 > hw) | (y0 < -hh) | (y1 > hh))
-                if not cut.any():
+                g = _letter_cut((cx - w / 2, cy - h / 2, w, h), full, level(z), letters_at(level(z)))
+                if g == 1.0:
                     break
-                g = max(float(np.maximum(-x0[cut], x1[cut]).max()) / hw,
-                        float(np.maximum(-y0[cut], y1[cut]).max()) / hh) * 1.02
                 w, h = w * g, h * g
             if zoom_of((0.0, 0.0, w, h), full) <= 1.0:
                 done[v] = full
@@ -549,6 +690,24 @@ def clear_tag_edges(views: list[View], full: View, tags_at: Tags, letters_at: Le
     return views
 
 
+def _letter_cut(v: View, full: View, lvl: int, a: Any) -> float:
+    """How much view *v* must grow about its centre to take in the letters *a* (rows as in :data:`Letters`) of
+    level *lvl* its window cuts (1.0: it cuts none; as :func:`clear_edges` grows a view, 2 % more)."""
+    W, H = PLAYER_FIGURE_PX
+    x, y, w, h = v
+    q = max(w / W, h / H)
+    ls = player_letter_scale(q * zoom_of(v, full) / ZOOM_LEVELS[lvl])
+    hw, hh = W * q / 2, H * q / 2
+    cx, cy = x + w / 2, y + h / 2
+    x0, y0 = a[:, 0] + ls * a[:, 2] - cx, a[:, 1] + ls * a[:, 3] - cy
+    x1, y1 = a[:, 0] + ls * a[:, 4] - cx, a[:, 1] + ls * a[:, 5] - cy
+    meet = (x0 < hw) & (x1 > -hw) & (y0 < hh) & (y1 > -hh)
+    cut = meet & ((x0 < -hw) | (x1 > hw) | (y0 < -hh) | (y1 > hh))
+    if not cut.any():
+        return 1.0
+    return max(float(np.maximum(-x0[cut], x1[cut]).max()) / hw, float(np.maximum(-y0[cut], y1[cut]).max()) / hh) * 1.02
+
+
 def _tag_edge_view(v: View, ks: list[int], full: View, tags_at: Tags, letters_at: Letters) -> View | None:
     """View *v* (of steps *ks*) grown or shifted to take in the tags its window cuts (None: none cut)."""
     W, H = PLAYER_FIGURE_PX
@@ -581,9 +740,16 @@ def _tag_edge_view(v: View, ks: list[int], full: View, tags_at: Tags, letters_at
             grow = max(grow, max(-b[0], b[2]) / hw * 1.02, max(-b[1], b[3]) / hh * 1.02)
     if grow == 1.0:
         return None
-    grown = (0.0, 0.0, w * grow, h * grow)
-    if level(zoom_of(grown, full)) == lvl and zoom_of(grown, full) > 1.0:
-        return clip_view(cx, cy, w * grow, h * grow, full)
+    # grown about its centre, and on while it cuts a letter (a row of letters at its edge), within its level
+    for _ in range(EDGE_ROUNDS):
+        grown = (0.0, 0.0, w * grow, h * grow)
+        if level(zoom_of(grown, full)) != lvl or zoom_of(grown, full) <= 1.0:
+            break
+        nv = clip_view(cx, cy, w * grow, h * grow, full)
+        more = _letter_cut(nv, full, lvl, letters_at(lvl))
+        if more == 1.0:
+            return nv
+        grow *= more
     # where growing would leave the level, the shift that takes the tags in: the views' own steps'
     # tags first, then it keeps in what it shows whole (the letters too), then the inputs' tags
     inside += [b for b in boxes if -hw <= b[0] and b[2] <= hw and -hh <= b[1] and b[3] <= hh]
@@ -595,6 +761,15 @@ def _tag_edge_view(v: View, ks: list[int], full: View, tags_at: Tags, letters_at
             if nlo <= nhi:
                 lo, hi = nlo, nhi
         pan[i] = min(max(0.0, lo), hi)
-    if pan == [0.0, 0.0]:
-        return None
-    return (round(x + pan[0], 2), round(y + pan[1], 2), w, h)
+    # a shift that brings a letter outside the window part way in cuts it: the shift is shortened until none
+    # is cut (piston force steps 1216-1222: the row of piston positions at the window's top)
+    arr = np.array(boxes, dtype=float).reshape(-1, 4)
+    for _ in range(6):
+        if pan == [0.0, 0.0]:
+            return None
+        a = arr - np.array(pan * 2)
+        meet = (a[:, 0] < hw) & (a[:, 2] > -hw) & (a[:, 1] < hh) & (a[:, 3] > -hh)
+        if not (meet & ((a[:, 0] < -hw) | (a[:, 2] > hw) | (a[:, 1] < -hh) | (a[:, 3] > hh))).any():
+            return (round(x + pan[0], 2), round(y + pan[1], 2), w, h)
+        pan = [pan[0] / 2, pan[1] / 2]
+    return None

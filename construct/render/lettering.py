@@ -35,6 +35,8 @@ import math
 import os
 from typing import Any, Iterable, Sequence
 
+import numpy as np
+
 __all__ = ["place", "LineIndex", "label_box", "text_box", "text_width", "segment_meets_box", "clipped_segment", "RANK", "LEADER_FROM",
            "DEFAULT_FONT"]
 
@@ -43,6 +45,8 @@ RANK = {"result": 0, "given": 1}
 
 #: Directions tried, as turns from the preferred one (degrees), and distances in letter heights.
 _TURNS = (0, 30, -30, 60, -60, 90, -90, 120, -120, 150, -150, 180)
+#: On the farther rings (place's *distances*) the directions lie twice as close: a ring there is long.
+_TURNS_FAR = (0,) + tuple(t for a in range(15, 180, 15) for t in (a, -a)) + (180,)
 _DISTANCES = (0.9, 1.45, 2.1, 2.8, 3.6)
 #: From this distance (letter heights) on, a letter is tied to its point by a leader line.
 LEADER_FROM = 2.0
@@ -200,6 +204,22 @@ class _Grid:
                     got.append(b)
 
 
+class _Boxes:
+    """The boxes a single letter must keep clear of, asked all at once (numpy): a letter placed alone tries a
+    few spots among a few hundred boxes, where filing them in a :class:`_Grid` costs more than the asking."""
+
+    def __init__(self, boxes: list[tuple[float, float, float, float]]):
+        a = np.array(boxes, dtype=float).reshape(-1, 4)
+        self.x0, self.y0, self.x1, self.y1 = a[:, 0], a[:, 1], a[:, 2], a[:, 3]
+
+    def free(self, b) -> bool:
+        x0, y0, x1, y1 = b
+        return not ((x0 < self.x1) & (self.x0 < x1) & (y0 < self.y1) & (self.y0 < y1)).any()
+
+    def add(self, b) -> None:  # the letter is placed alone: nothing is asked after it
+        pass
+
+
 def clipped_segment(box, seg) -> tuple[float, float] | None:
     """The part (t0, t1) of the segment (x0, y0, x1, y1) inside the box (x0, y0, x1, y1), or None when it misses
     (Liang–Barsky clipping).
@@ -326,7 +346,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
           italic: bool = False, taken: Iterable[tuple[float, float, float, float]] = (),
           keep: bool = True, prefer: "dict[str, tuple[float, float, float]] | None" = None,
           halo: float = HALO_PX / 2, reach: float = 0.0, only: "Sequence[bool] | None" = None,
-          soft: "LineIndex | None" = None) -> dict[str, tuple]:
+          soft: "LineIndex | None" = None, distances: Sequence[float] = ()) -> dict[str, tuple]:
     """Baseline positions (pixels) for letters: {id: (x, y, distance in letter heights, thin)}.
 
     A letter set farther than :data:`LEADER_FROM` letter heights from its point gets a
@@ -346,15 +366,21 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     *only* the numbers of its lines that count (true), as if *lines* were those alone.  *soft*: the
     other lines (a plate's construction lines, ticks, axes), which a letter keeps clear of where a spot
     nearer than :data:`LEADER_FROM` allows it; where none does it takes the first free spot all the
-    same, and the plate breaks those lines for it (:mod:`construct.render.gaps`).
+    same, and the plate breaks those lines for it (:mod:`construct.render.gaps`).  *distances*: farther
+    rings tried after the usual ones (letter heights; a name tag a caption names is set off with a leader
+    rather than left out).
     """
     dots = list(dots)
-    grid = _Grid(1.0 * size)
-    for b in taken:
-        grid.add(b)
     r = 0.3 * size
-    for x, y in dots:
-        grid.add((x - r, y - r, x + r, y + r))
+    items = list(items)
+    if len(items) == 1:
+        grid: "_Grid | _Boxes" = _Boxes(list(taken) + [(x - r, y - r, x + r, y + r) for x, y in dots])
+    else:
+        grid = _Grid(1.0 * size)
+        for b in taken:
+            grid.add(b)
+        for x, y in dots:
+            grid.add((x - r, y - r, x + r, y + r))
     if isinstance(lines, LineIndex):
         if lines.size != size:
             raise ValueError(f"place: the line index is made for letters of {lines.size}, not {size}")
@@ -378,8 +404,8 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                 spot = (px + ox, py + oy, box, od)
         clear = None  # with soft lines: the first free spot near the point that no line crosses
         least = None  # else the near free spot the least of those lines would be broken for: (length, spot)
-        for dist in (() if spot else _DISTANCES):
-            for turn in _TURNS:
+        for dist in (() if spot else _DISTANCES + tuple(distances)):
+            for turn in (_TURNS if dist in _DISTANCES else _TURNS_FAR):
                 a = base + math.radians(turn)
                 # the letter's centre sits *dist* letter heights from the point (plus half its
                 # extra width sideways); its baseline a third of a letter lower

@@ -93,7 +93,7 @@ class Described(Protocol):
 
 
 #: What the kernel and the constructions keep in a protocol's parameters besides what they are built with.
-_PROTOCOL_KEYS = ("givens", "group_titles", "captions", "plate")
+_PROTOCOL_KEYS = ("givens", "group_titles", "captions", "plate", "called")
 
 
 def _listed(fig: Drawn, lang: str, construction: Described | None) -> list[str]:
@@ -208,7 +208,7 @@ def provenance(construction: Described | None, fig: Drawn, full: tuple[str, str]
     """Which text and which parameters, for the machine: the SVG's ``<desc id="provenance">``; *full*: the
     figure's whole caption (German, English) where the figure prints less of it (a plate); *legend*: what its
     letters stand for (letter -> (German, English))."""
-    params = {k: v for k, v in fig.params.items() if k not in ("group_titles", "plate", "captions", "givens")}
+    params = {k: v for k, v in fig.params.items() if k not in _PROTOCOL_KEYS}
     out: dict[str, Any] = {"construction": fig.protocol.construction, "params": params,
                            "givens": dict(fig.replay.givens)}
     if construction is not None:

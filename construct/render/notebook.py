@@ -25,7 +25,7 @@ def figure_svg(figure: Any, style: str = "teaching", upto: int | None = None) ->
     from .svg import render_svg
 
     st = STYLES[style]
-    scene = build_scene(figure, plate=st.plate and upto is None)
+    scene = build_scene(figure, plate=st.plate and upto is None, ending=st.camera)
     return render_svg(scene, upto=upto, style=st)
 
 

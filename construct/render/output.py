@@ -124,11 +124,20 @@ def _size(n: float) -> str:
     return f"{n:.3g} TB"
 
 
-def scene_for(construction: Described | None, figure: Drawn, *, plate: "bool | Plate" = False) -> Scene:
+def scene_for(construction: Described | None, figure: Drawn, *, plate: "bool | Plate" = False,
+              ending: bool = False) -> Scene:
     """The figure's scene; a plate carries the construction's furniture and line looks (:mod:`.plate`; *plate*
-    may be the construction's :class:`~construct.render.plate.Plate` already made)."""
-    if plate:
+    may be the construction's :class:`~construct.render.plate.Plate` already made).
+
+    With *ending* (a teaching sequence) the scene carries its end state: the plate's objects, looks and
+    furniture on the construction's sheet (:meth:`construct.render.scene.Scene.in_end`); a plate laid out in
+    panels gives its looks only (its furniture stands where the panels move the diagrams).
+    """
+    if plate or ending:
         p = plate if isinstance(plate, Plate) else plate_of(construction, figure)
+        if ending:
+            return build_scene(figure, title=figure_title(construction, figure), ending=True,
+                               end_furniture=() if p.panels else p.furniture, end_looks=dict(p.looks))
         return build_scene(figure, title=figure_title(construction, figure), plate=True,
                            furniture=p.furniture, looks=dict(p.looks), panels=p.panels)
     return build_scene(figure, title=figure_title(construction, figure))
@@ -256,13 +265,16 @@ def check_formats(formats: Any) -> tuple[str, ...]:
 def write_outputs(stage: Path, construction: Described | None, figure: Drawn, st: Style, *, frames: str = "none",
                   fig_number: int | str | None = None, protocol: bool = True,
                   outputs: tuple[str, ...] = OUTPUTS, live: Any = None, drawing: Drawing | None = None,
-                  formats: tuple[str, ...] = ("svg",), sheet: Any = None) -> dict[str, Any]:
+                  formats: tuple[str, ...] = ("svg",), sheet: Any = None,
+                  switch: tuple | None = None) -> dict[str, Any]:
     """Write final.svg, steps/ (when asked), protocol.json and *outputs*: animated.svg, player.html, storyboard.svg;
     and the plate in the print formats of *formats* (final.pdf; final.tikz and final.tex) laid out on *sheet*.
     Without "svg" in *formats* only the print files and protocol.json are written.
 
     *live*: the data of a live player (:func:`construct.live.wire.live_data`), whose slider the
-    player then carries (:func:`construct.render.live.with_live`).  *drawing*: the figure's drawing in *st*,
+    player then carries (:func:`construct.render.live.with_live`); *switch*: (symbol, options, why) of a given
+    that changes the steps, offered as a switch between the player pages of the book's values
+    (:func:`construct.render.live.with_switch`).  *drawing*: the figure's drawing in *st*,
     if the caller has laid it out already (a live player's sweep carries its camera views).
 
     One :class:`Drawing` lays the construction out once; the layered final
@@ -285,7 +297,8 @@ def write_outputs(stage: Path, construction: Described | None, figure: Drawn, st
     if drawing is not None:
         scene = drawing.scene
     else:
-        scene = scene_for(construction, figure) if (frames != "none" or outputs or not st.plate) else None
+        scene = scene_for(construction, figure, ending=st.camera) if (frames != "none" or outputs or not st.plate) \
+            else None
     ks = frame_steps(scene, frames) if scene is not None else []
     # the frames, the animation, the player and the storyboard are for the screen: on its paper (the cream tint
     # of the historical style); final.svg is the figure as printed
@@ -319,6 +332,10 @@ def write_outputs(stage: Path, construction: Described | None, figure: Drawn, st
             from .live import with_live
 
             page = with_live(page, live)
+        if switch is not None:
+            from .live import with_switch
+
+            page = with_switch(page, *switch)
         write_text(stage / "player.html", page)
     if "storyboard" in outputs:
         write_text(stage / "storyboard.svg", storyboard_svg(drawing))  # type: ignore[arg-type]

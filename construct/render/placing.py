@@ -32,7 +32,7 @@ import numpy as np
 
 from .camera import PLAYER_FIGURE_PX, THIN_FROM, ZOOM_LEVELS, View, level, zoom_of
 from .gaps import Gap
-from .lettering import HALO_PX, LEADER_FROM, LineIndex, label_box, place, text_box
+from .lettering import HALO_PX, LEADER_FROM, RANK, LineIndex, label_box, place, text_box
 from .paths import bezier_controls
 from .plate import plain
 from .scene import Mark, MarkKind, Scene, label_offset_direction
@@ -40,7 +40,11 @@ from .styles import Style
 from .svgdoc import fmt
 from .viewport import Viewport
 
-__all__ = ["PlacedLabel", "Placing", "furniture_text_box", "text_gap"]
+__all__ = ["PlacedLabel", "Placing", "furniture_text_box", "text_gap", "TAG_FARTHER"]
+
+#: The farther rings (letter heights) a name tag tries, tied by a leader, before it gives way: a tag the
+#: step's caption names is worth a longer leader.
+TAG_FARTHER = (4.5, 5.5, 6.5, 8.0, 10.0, 12.0, 14.0)
 
 
 @dataclass(frozen=True, slots=True)
@@ -100,10 +104,18 @@ class Placing:
         self.lettered = [m for m in scene.marks if m.kind is MarkKind.POINT and m.label and m.id in self.spots]
         #: per zoom level, every letter shown there: its offset from its point (canvas units, moves applied)
         self.level_rel: dict[int, dict[str, tuple[float, float]]] = {}
+        #: per letter, the zoom levels it moves at: {level: its offset there and its distance in letter heights}
+        self.level_moves: dict[str, dict[int, tuple[float, float, float]]] = {}
         self.hidden_at, self.level_rules = self._zoom_placing() if style.camera else ({}, [])
+        #: the end state's letters (:meth:`place_end`): {id: (dx, dy, distance)} about their points, in the
+        #: letters' own units, and the rules that set them there
+        self.end_spots: dict[str, tuple[float, float, float]] = {}
+        self.end_rules: list[str] = []
         #: name tags: {point id: (dx, dy, distance in letter heights)}, and the levels each gives way at
         self.tag_spots: dict[str, tuple[float, float, float]] = {}
         self.tag_hidden: dict[str, str] = {}
+        #: the levels a name tag stands elsewhere at: {point id: {level: (dx, dy, distance)}}
+        self.tag_moves: dict[str, dict[int, tuple[float, float, float]]] = {}
 
     def labels(self) -> tuple[PlacedLabel, ...]:
         """Every placed letter of the whole figure, in mark order, as data (:class:`PlacedLabel`)."""
@@ -155,7 +167,7 @@ class Placing:
         for m in [m for k in ks for s in {k} | set(input_steps(k)) for m in by_step.get(s, ())
                   if f" h{lvl}" not in self.tag_hidden.get(m.id, "")]:
             px, py = self.vp.px(*m.geom)
-            dx, dy, _d = self.tag_spots[m.id]
+            dx, dy, _d = self.tag_moves.get(m.id, {}).get(lvl) or self.tag_spots[m.id]
             b = label_box(px + dx, py + dy, sc.display_name(m.name), st.label_size, st.label_font,
                           st.label_italic)
             out.append(((px, py, b[0] - px, b[1] - py, b[2] - px, b[3] - py), m.step in ks))
@@ -196,6 +208,17 @@ class Placing:
         spots = place(items, size, dots, self._lines_at(1.0, size), font=st.label_font, italic=st.label_italic,
                       halo=HALO_PX / 2 * k, reach=self.line_reach, soft=soft, taken=taken)
         thin = [it for it in items if spots.get(it[0], (0, 0, 0, False))[3]]
+        if thin and st.camera:
+            # a letter with no room beside its point stands farther off, tied by a leader, when there is room
+            # there: the whole figure's view is the one the steps far apart are seen in, and their captions
+            # name it (inertia curve: q6, q7 inside the crank circle's crowd)
+            text = {it[0]: it[5] for it in items}
+            held = [label_box(x, y, text[i], size, st.label_font, st.label_italic, HALO_PX / 2 * k)
+                    for i, (x, y, _d, t) in spots.items() if not t]
+            far = place(thin, size, dots, self._lines_at(1.0, size), font=st.label_font, italic=st.label_italic,
+                        taken=held, keep=False, halo=HALO_PX / 2 * k, reach=self.line_reach, distances=TAG_FARTHER)
+            spots.update(far)
+            thin = [it for it in thin if it[0] not in far]
         if thin and st.camera:
             # the letters the whole figure has no room for, placed for the magnified views
             # (from zoom level THIN_FROM on): points twice as far apart, letters at their size
@@ -263,11 +286,101 @@ class Placing:
                 if abs(ddx) > 0.5 or abs(ddy) > 0.5:
                     moves.setdefault((i, f"translate({fmt(ddx)}px,{fmt(ddy)}px)"), []).append(lvl)
                     classes[i] = classes.get(i, "") + " lbm"  # moved at some level: the group carries an id
-        # one rule per letter and move, listing the levels it holds at (--zs: the level's letter scale)
+                    # the letter's leader is drawn anew there, from the point to where the letter stands
+                    self.level_moves.setdefault(i, {})[lvl] = (x - px + ddx, y - py + ddy, spot[2])
+        # one rule per letter and move, listing the levels it holds at (--zs: the level's letter scale); the
+        # letter moves, its leader does not (the level has a leader of its own, :meth:`leaders`)
         for (i, move), lvls in moves.items():
-            rules.append(",".join(f".zl{lvl} #{i}-lb>.lb,.zl{lvl} #{i}-lb>.leader" for lvl in lvls)
+            rules.append(",".join(f".zl{lvl} #{i}-lb>.lb" for lvl in lvls)
                          + f"{{transform:scale(var(--ls,var(--zs))) {move}}}")
         return classes, rules
+
+    def leaders(self, mid: str, rel: tuple[float, float, float],
+                text: str = "") -> list[tuple[tuple[float, float, float, float], str]]:
+        """The leaders of letter *mid* standing at *rel* (offset, distance in letter heights) in the whole
+        figure: ((x1, y1, x2, y2) about its point in the letter's units, classes), one for every place it
+        stands at -- the whole figure's (hidden at the levels it moves at: ``mN``), each zoom level it
+        moves at (``lvN``, shown at that level only) and the end state's (``lvf``) -- each from its point to
+        the letter *text* there, and none where the letter stands close enough to be read as its point's.
+        """
+        out = []
+        moved = self.level_moves.get(mid, {})
+        if rel[2] >= LEADER_FROM:
+            out.append((self.leader_line(rel[0], rel[1], text), "".join(f" m{lvl}" for lvl in sorted(moved))))
+        for lvl, (dx, dy, dist) in sorted(moved.items()):
+            if dist >= LEADER_FROM:
+                out.append((self.leader_line(dx, dy, text), f" lv{lvl}"))
+        end = self.end_spots.get(mid)
+        if end is not None and end[2] >= LEADER_FROM:
+            out.append((self.leader_line(end[0], end[1], text), " lvf"))
+        return out
+
+    def leader_line(self, dx: float, dy: float, text: str = "") -> tuple[float, float, float, float]:
+        """A leader from a point to its letter *text* set at (dx, dy) from it (the baseline's middle, letter
+        units): from a quarter letter off the point to where it meets the letter's white -- a wide letter
+        (M₁ 19°12′) is not run into, a narrow one (I) not left short of -- or, without *text*, to three quarters
+        short of the letter's middle."""
+        st = self.style
+        size = st.label_size
+        cx, cy = dx, dy - 0.35 * size
+        n = math.hypot(cx, cy) or 1.0
+        a, b = 0.25 * size, n - 0.75 * size
+        if text:
+            entry = _entry(label_box(dx, dy, text, size, st.label_font, st.label_italic), cx / n, cy / n)
+            if math.isfinite(entry):
+                b = max(a, entry)
+        return (a * cx / n, a * cy / n, b * cx / n, b * cy / n)
+
+    def place_end(self, letter: float, marks: Sequence[Mark], taken: Sequence[tuple[float, float, float, float]],
+                  lettering: Sequence[tuple[str, tuple[float, float], str]] = (),
+                  strokes: Sequence[tuple[float, float, float, float]] = ()) -> None:
+        """Place the end state's letters (:meth:`construct.render.scene.Scene.in_end`): the lettered points of
+        its *marks*, among its points and result lines and clear of the boxes *taken* (canvas px: its
+        furniture's scales and dimensions), at *letter* canvas units a letter unit (the player's letter scale
+        at the end view).  Each stays where the whole figure set it when there is room; one with none is left
+        out of the end state (class ``pf`` marks the placed).  The plate's *lettering* (id, the point it is
+        written at, canvas px, text: the values of its ordinates) is placed with them, first where the plate
+        writes it, else beside it; the plate's *strokes* (canvas px: its ordinates) are kept clear of as its
+        result lines are.  Sets :attr:`end_spots` and :attr:`end_rules`.
+        """
+        st = self.style
+        size = st.label_size * letter
+        span = self.scene.bbox[2] - self.scene.bbox[0]
+        look = self.scene.end_look
+        dots = [self.vp.px(*m.geom) for m in marks if m.kind is MarkKind.POINT and "hidden" not in look(m).split()]
+        lines = list(strokes)
+        for m in marks:
+            if m.role == "result" and m.kind.stroked and "hidden" not in look(m).split():
+                pts = [self.vp.px(*q) for q in _polyline(m, self.vp.scale)]
+                lines.extend((a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:]))
+        items, prefer = [], {}
+        for fid, at, text in lettering:
+            items.append((fid, "result", 0, at, (0.0, 1.0), text))
+            prefer[fid] = (0.0, 0.35 * size, 0.0)
+        for m in marks:
+            if not m.label:
+                continue
+            p = self.vp.px(*m.geom)
+            items.append((m.id, m.role, m.step, p, label_offset_direction(m.geom, scale=span), m.label))
+            spot = self.spots.get(m.id)
+            if spot is not None:
+                prefer[m.id] = ((spot[0] - p[0]) * letter, (spot[1] - p[1]) * letter, spot[2])
+        got = place(items, size, dots, LineIndex(size, lines), font=st.label_font, italic=st.label_italic,
+                    taken=list(taken), keep=False, prefer=prefer, halo=HALO_PX / 2 * letter, reach=self.line_reach)
+        spots, rules = {}, []
+        for mid, _r, _s, (px, py), _d, _t in items:
+            spot = got.get(mid)
+            if spot is None:
+                continue
+            rel = ((spot[0] - px) / letter, (spot[1] - py) / letter, spot[2])
+            spots[mid] = rel
+            base = self.spots.get(mid)
+            if base is None:
+                continue  # an end mark's letter: drawn where it stands here (it stands nowhere else)
+            dx, dy = rel[0] - (base[0] - px), rel[1] - (base[1] - py)
+            rules.append(f".fin #{mid}-lb>.lb{{transform:scale(var(--ls,var(--zs,1))) "
+                         f"translate({fmt(dx)}px,{fmt(dy)}px)}}")
+        self.end_spots, self.end_rules = spots, rules
 
     def place_tags(self, views: Sequence[View], full: View,
                    input_steps: Callable[[int], frozenset[int]]) -> None:
@@ -367,30 +480,58 @@ class Placing:
                     mates.setdefault(s_, set()).update(together)
         byid = {m.id: m for m in tags}
         out: dict[str, tuple[float, float, float]] = {}
+        frames: dict[int, tuple] = {}
+        tags_of: dict[int, list[Mark]] = {}
+        for m in tags:
+            tags_of.setdefault(m.step, []).append(m)
+        reach = (max(TAG_FARTHER) + 3.0) * size  # how far from its point a tag's box may reach (letter units)
+
+        def place_at(m: Mark, lvl: int) -> bool:
+            """Place tag *m* at level *lvl*, clear of the letters there and of the tags placed so far that are
+            seen with it at that level (tags never seen together may share a spot)."""
+            if lvl not in frames:
+                z, f, boxes = frame(lvl)
+                frames[lvl] = (z, f, np.array(boxes, dtype=float).reshape(-1, 4))
+            z, f, boxes = frames[lvl]
+            x, y = pts[m.id][0] * z, pts[m.id][1] * z
+            r = reach * f
+            near_ = boxes[(boxes[:, 2] >= x - r) & (boxes[:, 0] <= x + r) & (boxes[:, 3] >= y - r) & (boxes[:, 1] <= y + r)]
+            taken = list(map(tuple, near_.tolist())) + [
+                label_box(pts[o.id][0] * z + out[o.id][0] * f, pts[o.id][1] * z + out[o.id][1] * f,
+                          sc.display_name(o.name), size * f, st.label_font, st.label_italic, HALO_PX / 2 * f)
+                for k in seen_with.get(lvl, {}).get(m.step, ()) if lvl in shown_at[k]
+                for o in tags_of.get(k, ()) if o.id in out]
+            if st.ring_px and lvl == lowest.get(m.step, 0):
+                # the ring the player draws round the point while its step is current: the tag beside it, not under
+                rr = st.ring_px * f
+                taken.append((x - rr, y - rr, x + rr, y + rr))
+            item = (m.id, m.role, m.step, (x, y), label_offset_direction(m.geom, scale=span), sc.display_name(m.name))
+            ds, only = near([item], z, f)
+            got = place([item], size * f, ds, self._lines_at(z, size * f), only=only, font=st.label_font,
+                        italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * f,
+                        reach=self.line_reach, distances=TAG_FARTHER)
+            if m.id not in got:
+                return False
+            gx, gy, dist, _thin = got[m.id]
+            out[m.id] = ((gx - x) / f, (gy - y) / f, dist)
+            return True
+
+        # each tag at the least magnified level it is seen at, in the placer's order (results first)
+        hidden: dict[str, str] = {}
         for lvl, ms in sorted(by_level.items()):
-            z, f, taken = frame(lvl)
-            # clear of the tags placed at a lower level that are seen with these at this one
-            mates_here = set().union(*(seen_with.get(lvl, {}).get(m.step, set()) for m in ms))
-            taken = taken + [label_box(pts[i][0] * z + out[i][0] * f, pts[i][1] * z + out[i][1] * f,
-                                       sc.display_name(byid[i].name), size * f, st.label_font, st.label_italic,
-                                       HALO_PX / 2 * f)
-                             for i in out if byid[i].step in mates_here and lvl in shown_at[byid[i].step]]
-            items = []
-            for m in ms:
-                px, py = pts[m.id]
-                items.append((m.id, m.role, m.step, (px * z, py * z), label_offset_direction(m.geom, scale=span),
-                              sc.display_name(m.name)))
-            # the tags are checked against each other level by level below
-            ds, only = near(items, z, f)
-            got = place(items, size * f, ds, self._lines_at(z, size * f), only=only,
-                        font=st.label_font, italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * f, reach=self.line_reach)
-            for i, _r, _s, (zx, zy), _d, _t in items:
-                if i in got:
-                    x, y, dist, _thin = got[i]
-                    out[i] = ((x - zx) / f, (y - zy) / f, dist)
+            for m in sorted(ms, key=lambda m: (RANK.get(m.role, 2), m.step, m.id)):
+                place_at(m, lvl)
+        # a tag with no room there takes its spot at the next level that has room (a step's caption names it),
+        # given way at the levels below
+        for m in tags:
+            if m.id not in out:
+                for lvl in sorted(shown_at[m.step] - {lowest.get(m.step, 0)}):
+                    if place_at(m, lvl):
+                        hidden[m.id] = "".join(f" h{lo}" for lo in sorted(shown_at[m.step]) if lo < lvl)
+                        break
         # every level a tag is seen at: it holds its spot there, or it gives way there (class hN),
         # never stacked on a letter, a point, a result line or a tag seen with it
-        hidden: dict[str, str] = {}
+        moves: dict[str, dict[int, tuple[float, float, float]]] = {}
         for lvl in sorted({v for vs in shown_at.values() for v in vs}):
             z, f, taken = frame(lvl)
             here = [byid[i] for i in out if lvl in shown_at[byid[i].step]]
@@ -409,6 +550,7 @@ class Placing:
 
             holds = kept(got, items)
             arrays = None
+            losers = []
             for it in items:
                 i = it[0]
                 if i in holds:
@@ -454,8 +596,24 @@ class Placing:
                     if free:
                         holds.add(i)  # the tags it is seen with after it are placed with it
                         continue
-                hidden[i] = hidden.get(i, "") + f" h{lvl}"
+                losers.append(it)
+            if losers:
+                # a tag with no room at its spot stands elsewhere at this level, clear of the letters and of the
+                # tags that hold theirs (a step's caption names it: it is never left out while there is room)
+                held = [label_box(o[3][0] + prefer[o[0]][0], o[3][1] + prefer[o[0]][1], o[5], size * f, st.label_font,
+                                  st.label_italic, HALO_PX / 2 * f) for o in items if o[0] in holds]
+                again = place(losers, size * f, ds, self._lines_at(z, size * f), only=only, font=st.label_font,
+                              italic=st.label_italic, taken=taken + held, keep=False, halo=HALO_PX / 2 * f,
+                              reach=self.line_reach, distances=TAG_FARTHER)
+                for it in losers:
+                    i, (zx, zy) = it[0], it[3]
+                    spot = again.get(i)
+                    if spot is None:
+                        hidden[i] = hidden.get(i, "") + f" h{lvl}"
+                    else:
+                        moves.setdefault(i, {})[lvl] = ((spot[0] - zx) / f, (spot[1] - zy) / f, spot[2])
         self.tag_hidden = hidden
+        self.tag_moves = moves
         self.tag_spots = out
 
     def _obstacle_arrays(self) -> tuple[Any, Any]:
@@ -574,3 +732,16 @@ def place_outwards(m: Mark, vp: Viewport, style: Style, span: float,
 def _overlaps(box, placed) -> bool:
     x0, y0, x1, y1 = box
     return any(x0 < b[2] and b[0] < x1 and y0 < b[3] and b[1] < y1 for b in placed)
+
+
+def _entry(box: tuple[float, float, float, float], ux: float, uy: float) -> float:
+    """How far along the unit direction (ux, uy) from the origin a ray enters *box* (infinity: it misses)."""
+    t_in, t_out = 0.0, math.inf
+    for u, lo, hi in ((ux, box[0], box[2]), (uy, box[1], box[3])):
+        if abs(u) < 1e-12:
+            if not lo <= 0.0 <= hi:
+                return math.inf
+            continue
+        t0, t1 = sorted((lo / u, hi / u))
+        t_in, t_out = max(t_in, t0), min(t_out, t1)
+    return t_in if t_in <= t_out else math.inf

@@ -30,10 +30,11 @@ from __future__ import annotations
 import html
 import json
 import re
-from typing import Any, Mapping
+from typing import Any, Mapping, Sequence
 
 from .animate import STEP_SECONDS, group_css
-from .captions import displayed, group_caption
+from .captions import group_caption
+from .marks import MarkKind
 from .styles import PLAIN, Style
 from .svg import Drawing
 from .svgdoc import fmt
@@ -52,31 +53,29 @@ def json_for_script(data: Any) -> str:
         .replace("\u2028", "\\u2028").replace("\u2029", "\\u2029")
 
 
-def _step_list(scene) -> str:
-    """Nested <details> by group path, each step an item with its number and English caption."""
+def _step_tree(scene) -> tuple[list[str], list[list[int]], list[int]]:
+    """The step list's groups as data, for the page's script to build the list from: (the groups' titles, each
+    in English / German; the group paths, each a list of title numbers; per step the number of its path).
+
+    The list is the players' largest part written out (a fourth of a long figure's page): built from these and
+    each step's English caption (already in the data), it costs a few numbers a step.
+    """
     titles = scene.params.get("group_titles") or {}
-    out: list[str] = []
-    open_path: tuple[str, ...] = ()
+    labels: dict[str, int] = {}
+    paths: dict[tuple[str, ...], int] = {}
+    per_step = []
     for s in scene.steps:
-        path = s.group
-        common = 0
-        while common < min(len(open_path), len(path)) and open_path[common] == path[common]:
-            common += 1
-        for _ in range(len(open_path) - common):
-            out.append("</ul></details>")
-        for depth in range(common, len(path)):
-            g = path[depth]
-            de = titles.get(g, g)
-            label = scene.readable(g if de == g else f"{g} / {de}")
-            where = displayed(" › ".join(path[:depth + 1]))  # the group's path, as bounded as its caption
-            out.append(f'<details data-g="{html.escape(where)}"><summary>'
-                       f'{html.escape(label)}</summary><ul>')
-        open_path = path
-        out.append(f'<li><a href="#{s.index}" data-k="{s.index}" class="tool-{html.escape(s.tool)}">'
-                   f'<span class="n">{s.index}</span> {html.escape(scene.caption(s.index)[1])}</a></li>')
-    for _ in open_path:
-        out.append("</ul></details>")
-    return "\n".join(out)
+        if s.group not in paths:
+            for g in s.group:
+                if g not in labels:
+                    labels[g] = len(labels)
+            paths[s.group] = len(paths)
+        per_step.append(paths[s.group])
+    order = sorted(labels, key=labels.__getitem__)
+    # each language read in its own words (the lines a construction calls by name, its own way)
+    text = [scene.readable(g, "en") if titles.get(g, g) == g
+            else f"{scene.readable(g, 'en')} / {scene.readable(titles[g])}" for g in order]
+    return text, [[labels[g] for g in path] for path in sorted(paths, key=paths.__getitem__)], per_step
 
 
 def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None = None,
@@ -92,6 +91,10 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
     dwg.add(f.style("\n" + style.css() + "\n" + group_css(style) + "\n" + (d.extra_css + "\n" if d.extra_css else "")))
     dwg.add(f.rect(insert=("-10000", "-10000"), size=("20000", "20000"), fill=style.background))
     for layer in d.LAYERS:
+        if layer == "labels" and style.ring_px:
+            # the ring round a small current mark, under the letters: a letter's halo opens it, never the
+            # ring a letter
+            dwg.add(f.circle(center=("0", "0"), r="0", class_="ring", id="ring", visibility="hidden"))
         lg = f.g(id=layer)
         for group in d.plain_groups(layer):
             lg.add(group)
@@ -99,13 +102,15 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
     furniture = d.furniture()  # the broken axis's marks (and a plate's furniture)
     if furniture is not None:
         dwg.add(furniture)
-    if style.ring_px:
-        dwg.add(f.circle(center=("0", "0"), r="0", class_="ring", id="ring", visibility="hidden"))
+    insets = any(z is not None for z in d.insets)
+    if insets:  # where the inset magnifies (the player moves it)
+        dwg.add(f.rect(insert=("0", "0"), size=("0", "0"), class_="insetbox", id="insetbox", visibility="hidden"))
     svg = d.doc.markup(dwg)
     # Group captions and camera views are shared by runs of steps: each is stored once, steps point to it.
     groups: dict[str, int] = {}
     views: dict[tuple, int] = {}
     steps = []
+    points = {m.name: m for m in scene.marks if m.kind is MarkKind.POINT}
     for s in scene.steps:
         de, en = scene.caption(s.index)
         st = {"de": de, "en": en, "g": groups.setdefault(group_caption(scene, s.index), len(groups)),
@@ -116,11 +121,20 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         inputs = sorted(d.input_steps(s.index))
         if inputs:  # the steps that made what this step's instrument is set on
             st["i"] = inputs
+        inset = d.insets[s.index - 1]
+        if inset is not None:  # a sliver or a cluster: its place magnified beside the view, its points lettered
+            st["z"] = list(inset)
+            st["zp"] = _inset_points(d, s.index, inset, points)
         steps.append(st)
     from .camera import ZOOM_LEVELS
 
+    titles, paths, per_step = _step_tree(scene)
+    for st, p in zip(steps, per_step):
+        st["p"] = p  # its group path in the step list (the script builds the list)
     data = {"n": n, "steps": steps, "groups": list(groups), "views": [list(v) for v in views],
-            "levels": list(ZOOM_LEVELS), "dt": round(1000 * STEP_SECONDS)}
+            "levels": list(ZOOM_LEVELS), "dt": round(1000 * STEP_SECONDS), "titles": titles, "paths": paths}
+    if d.end is not None:
+        data["end"] = 1  # the last step shows the end state (the figure's class fin)
     title = title or scene.title
     giv = givens or {}
     givens_rows = "".join(f"<tr><th>{html.escape(str(k))}</th><td>{html.escape(_show(v))}</td></tr>"
@@ -131,8 +145,7 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         ("{{N}}", str(n)),
         ("{{STYLE}}", html.escape(style.name)),
         ("{{GIVENS}}", givens_rows),
-        ("{{STEPLIST}}", _step_list(scene)),
-        ("{{SVG}}", svg),
+        ("{{SVG}}", svg + ("\n" + _inset(d) if insets else "")),
         ("{{DATA}}", json_for_script(data)),
         ("{{PAGE_BG}}", "#f7f3ea" if style.name == "historical" else "#f4f5f7"),
         ("{{SPEEDS}}", _speed_options(data["dt"] / 1000)),
@@ -148,6 +161,37 @@ SPEEDS = (4.0, 3.0, 2.0, 1.5, 1.0, 0.5, 0.25, 0.1)
 def _speed_options(default: float) -> str:
     """The <option>s of the tempo control, *default* selected."""
     return "".join(f'<option value="{v:g}"{" selected" if v == default else ""}>{v:g} s</option>' for v in SPEEDS)
+
+
+def _inset_points(d: Drawing, k: int, box: Sequence[float], points: dict[str, Any]) -> list[list]:
+    """The points of step *k* and of what it works on (its inputs, the points its caption names) inside the
+    inset *box*, as the inset draws and letters them: [x, y, letter(, 1 for the step's own)] (canvas px; letter
+    '' for a point the figure does not letter).  The view beside it shows them a pixel or two apart; the inset, apart."""
+    s = d.scene.steps[k - 1]
+    x0, y0, w, h = box
+    out = []
+    for name in dict.fromkeys((*s.outputs, *s.inputs, *sorted(d.scene.named(k)))):
+        m = points.get(name)
+        if m is None or m.step > k:
+            continue
+        x, y = d.vp.px(*m.geom)
+        if x0 <= x <= x0 + w and y0 <= y <= y0 + h:
+            text = m.label or (d.scene.display_name(name) if d.scene.tag_shown(name) else "")
+            out.append([round(x, 2), round(y, 2), text] + ([1] if name in s.outputs else []))
+    return out
+
+
+def _inset(d: Drawing) -> str:
+    """The inset of a sliver or a cluster (:func:`construct.render.camera.step_insets`): the figure's lines and
+    areas again, magnified (a ``<use>`` of each of the figure's layers, which show each step as the figure
+    does), a dot where the step works, and the step's points with their letters (:func:`_inset_points`)."""
+    f = d.doc.factory
+    ins = d.doc.drawing(size=(None, None), viewBox="0 0 1 1", id="inset", role="img", **{"aria-label": "magnified"})
+    for layer in ("areas", "construction", "results"):
+        ins.add(f.use(href=f"#{layer}"))
+    ins.add(f.circle(center=("0", "0"), r="0", id="inset-pt"))
+    ins.add(f.g(id="inset-pts"))  # the step's points and their letters (the script draws them)
+    return d.doc.markup(ins)
 
 
 def _show(v: Any) -> str:
@@ -168,7 +212,13 @@ header{padding:10px 16px 4px}
 h1{font-size:18px;margin:0}
 h1 .en{display:block;font-size:14px;font-weight:normal;color:#555}
 main{display:flex;gap:12px;padding:8px 16px;align-items:flex-start}
-#stage{flex:1 1 auto;min-width:0}
+#stage{flex:1 1 auto;min-width:0;position:relative}
+#inset{position:absolute;top:8px;right:8px;width:300px;height:210px;background:#fff;border:1px solid #888;display:none}
+.insetbox{fill:none;stroke:#888;stroke-width:1px;stroke-dasharray:4 3;vector-effect:non-scaling-stroke}
+#inset-pt{fill:#e8590c}
+#inset .ipt{fill:#c2255c}
+#inset .icur{fill:#e8590c}
+#inset .ilb{fill:#c2255c;font-family:'DejaVu Sans',sans-serif;paint-order:stroke;stroke:#fff;stroke-width:.25em}
 #figure{width:100%;height:auto;aspect-ratio:985/700;max-height:70vh;border:1px solid #ccc;background:#fff;display:block}
 #figure .lbg>*,#figure .pt{--ls:1;transform:scale(var(--ls))}
 #controls{display:flex;gap:6px;align-items:center;margin:8px 0;flex-wrap:wrap}
@@ -218,9 +268,7 @@ li a.later{color:#bbb}
 <h2>Gegeben / givens</h2>
 <table id="givens">{{GIVENS}}</table>
 <h2>Schritte / steps ({{N}})</h2>
-<div id="steps">
-{{STEPLIST}}
-</div>
+<div id="steps"></div>
 </aside>
 </main>
 <script type="application/json" id="data">{{DATA}}</script>
@@ -228,6 +276,25 @@ li a.later{color:#bbb}
 (function () {
   "use strict";
   var data = JSON.parse(document.getElementById("data").textContent);
+  (function () {  // the step list: <details> by group path, each step a link with its number and English caption
+    var root = document.getElementById("steps"), open = [], into = [root.appendChild(document.createElement("ul"))];
+    data.steps.forEach(function (st, i) {
+      var path = data.paths[st.p] || [], common = 0;
+      while (common < Math.min(open.length, path.length) && open[common] === path[common]) { common++; }
+      open.length = common; into.length = common + 1;
+      for (var d = common; d < path.length; d++) {
+        var det = document.createElement("details"), sum = document.createElement("summary"), ul = document.createElement("ul");
+        sum.textContent = data.titles[path[d]];
+        det.appendChild(sum); det.appendChild(ul); into[into.length - 1].appendChild(det);
+        into.push(ul); open.push(path[d]);
+      }
+      var li = document.createElement("li"), a = document.createElement("a"), num = document.createElement("span");
+      a.href = "#" + (i + 1); a.setAttribute("data-k", String(i + 1));
+      num.className = "n"; num.textContent = String(i + 1);
+      a.appendChild(num); a.appendChild(document.createTextNode(" " + st.en));
+      li.appendChild(a); into[into.length - 1].appendChild(li);
+    });
+  })();
   var n = data.n, k = n, timer = null;
   var svg = document.getElementById("figure");
   var groups = Array.prototype.slice.call(svg.querySelectorAll("g[data-step]"));
@@ -313,7 +380,8 @@ li a.later{color:#bbb}
     // a drag keeps the shown level while near its range (see DRAG_LEVEL)
     if (drag && lvl !== level && level < L.length && z >= L[level] / DRAG_LEVEL
         && (level + 1 >= L.length || z < L[level + 1] * DRAG_LEVEL)) { lvl = level; }
-    if (svg.getAttribute("class") !== "zl" + lvl) { svg.setAttribute("class", "zl" + lvl); }
+    var cls = "zl" + lvl + (data.end && k === n ? " fin" : "");  // the last step: the end state
+    if (svg.getAttribute("class") !== cls) { svg.setAttribute("class", cls); }
     level = lvl;
   }
   // Once a live given asks (lean()), the groups the step hides leave the document, a comment keeping each
@@ -369,6 +437,35 @@ li a.later{color:#bbb}
     // the camera: the step's view (the whole figure at the ends or without the magnifier), reached smoothly
     var view = st && zoom.checked ? data.views[st.v] : full;
     zoomLevel(view, box);
+    var inset = document.getElementById("inset"), ibox = document.getElementById("insetbox");
+    if (inset) {  // a sliver's place magnified beside the view
+      var z = st && zoom.checked && k < n ? st.z : null;
+      inset.style.display = z ? "block" : "none";
+      ibox.setAttribute("visibility", z ? "visible" : "hidden");
+      if (z) {
+        inset.setAttribute("viewBox", z.join(" "));
+        var dot = document.getElementById("inset-pt");  // the place the step works at, in the middle
+        dot.setAttribute("cx", z[0] + z[2] / 2); dot.setAttribute("cy", z[1] + z[3] / 2);
+        dot.setAttribute("r", st.zp && st.zp.length ? 0 : z[2] / 70);  // where no point of the step is drawn
+        var pts = document.getElementById("inset-pts"), u = z[2] / 300;  // canvas px per inset px
+        while (pts.firstChild) { pts.removeChild(pts.firstChild); }
+        (st.zp || []).forEach(function (p, i) {
+          var c = document.createElementNS("http://www.w3.org/2000/svg", "circle");
+          c.setAttribute("cx", p[0]); c.setAttribute("cy", p[1]); c.setAttribute("r", (p[3] ? 3.5 : 2.5) * u);
+          c.setAttribute("class", p[3] ? "ipt icur" : "ipt");
+          pts.appendChild(c);
+          if (p[2]) {  // its letter beside it, above and below in turn where points crowd
+            var t = document.createElementNS("http://www.w3.org/2000/svg", "text");
+            t.setAttribute("x", p[0] + 4 * u); t.setAttribute("y", p[1] + (i % 2 ? 14 : -5) * u);
+            t.setAttribute("font-size", 12 * u); t.setAttribute("class", "ilb");
+            t.textContent = p[2];
+            pts.appendChild(t);
+          }
+        });
+        ibox.setAttribute("x", z[0]); ibox.setAttribute("y", z[1]);
+        ibox.setAttribute("width", z[2]); ibox.setAttribute("height", z[3]);
+      }
+    }
     ringAt = st && k < n ? (st.r || null) : null;
     move(view);
     var cur = links[k - 1];
@@ -437,6 +534,7 @@ li a.later{color:#bbb}
       && t[1] + t[3] <= v[1] + v[3] + my && Math.max(t[2] / v[2], t[3] / v[3]) >= 2 / 3;
   }
   window.constructPlayer = {data: data, full: full, redraw: function () { show(k); },
+    groups: function () { return groups.slice(); },  // the step groups, in the document or out of it (lean)
     move: function () { zoomLevel(target()); move(target()); },  // (the level a drag kept, made exact)
     find: find, lean: function () {
       if (lean) { return; }

@@ -19,26 +19,28 @@ True
 from __future__ import annotations
 
 import bisect
+import dataclasses
 import functools
 import math
 import re
 from dataclasses import dataclass
-from typing import Any, Iterable, Sequence
+from typing import Any, Callable, Iterable, Sequence
 
 from ..kernel.geometry import Circle, Length, Line, Point
 from ..kernel.protocol import Protocol, Replay, Step
+from ..kernel.letters import FIGURE_LETTER
 from .captions import TITLE_LIMIT, Reader, displayed
 from .marks import (TWO_PI, Mark, MarkKind, circle_extent, curve_points, extreme_points, fanned_lines, letter_lines,
-                    lies_on, segment_extent)
-from .sheet import BREAK_KEEP, PLATE_BREAK_KEEP, broken_axis, lay_out, plate_names, warn_hidden_labels
+                    lies_on, segment_extent, with_geom)
+from .sheet import Break, broken, kept_span, lay_out, plate_names, warn_hidden_labels
 
 __all__ = ["Mark", "MarkKind", "Scene", "build_scene", "label_offset_direction", "on_curve_names", "extreme_points",
-           "thin", "reading", "plate_names"]
+           "thin", "reading", "plate_names", "break_shift", "FIGURE_LETTER"]
 
 
-#: What a letter of the figure looks like (:meth:`Scene.tag_shown`): a letter, a number below 20 or
-#: two digits with a prime, subscripts, primes.
-FIGURE_LETTER = re.compile(r"[A-Za-zΑ-Ωα-ω](?:[01]?[0-9])?[′″'₀-₉]*|[0-9]{1,2}[′″']?")
+#: A word of a caption written in the figure's letters that may name a point (a letter with what follows it).
+#: (Not a letter of a formula: F/f, r/L, r·cos.)
+_LETTERED = re.compile(r"(?<![\w′'″/·])[A-Za-zΑ-Ωα-ω][A-Za-z0-9Α-Ωα-ω′'″₀-₉∞]*(?![/·])")
 
 
 @dataclass(frozen=True)
@@ -51,15 +53,39 @@ class Scene:
     title: tuple[str, str]
     params: dict
     #: Broken axis: (x where the break starts, its drawn width, the length it leaves out), drawing units.
-    breaks: tuple[tuple[float, float, float], ...] = ()
+    breaks: tuple[Break, ...] = ()
     #: Plate furniture (:mod:`construct.render.plate`): dimensions, angle arcs, scale bars, signs.
     furniture: tuple = ()
     #: What the book plate shows (:func:`plate_names`): what a finished group collapses to.
     essentials: frozenset = frozenset()
+    #: The end state (:meth:`in_end`): the last teaching frame shows the figure as the book draws it.
+    ending: bool = False
+    #: Marks only the end state draws: the plate's look of a result whose teaching mark is drawn otherwise
+    #: (a line as far as the points the book shows on it, the crank circle as the book's half circle).
+    end_marks: tuple[Mark, ...] = ()
+    #: The ids of the marks the end state draws otherwise (by a mark of :attr:`end_marks`).
+    end_replaced: frozenset = frozenset()
+    #: The plate's furniture the end state adds (ordinates with their values, scales, signs).
+    end_furniture: tuple = ()
+    #: The looks the end state gives marks it draws where they stand ({mark id: look}: the curve heavy).
+    end_looks: "dict[str, str]" = dataclasses.field(default_factory=dict)
 
     def upto(self, k: int) -> list[Mark]:
         """The marks made by steps 1..k."""
         return [m for m in self.marks if m.step <= k]
+
+    def in_end(self, m: Mark) -> bool:
+        """Does the end state (the last teaching frame, :attr:`ending`) draw mark *m* as it stands?
+
+        The end state is the figure as the book's plate shows it (:attr:`essentials`): the results and
+        what locates them, the helpers gone, a result the plate draws otherwise replaced by its
+        :attr:`end_marks`.  Without an end state every mark stays.
+        """
+        return not self.ending or (m.name in self.essentials and m.id not in self.end_replaced)
+
+    def end_look(self, m: Mark) -> str:
+        """The look mark *m* has in the end state (the plate's, where it gives one)."""
+        return self.end_looks.get(m.id, m.look)
 
     def readable(self, text: str, lang: str = "de", outputs: tuple[str, ...] = ()) -> str:
         """*text* in the figure's letters (:class:`construct.render.captions.Reader`).
@@ -105,7 +131,7 @@ class Scene:
             objects[name] = (kind, text, op, inputs)
         for name, s in makers.items():  # what is not drawn (a compass opening J.h1) goes by its short name
             objects.setdefault(name, ("length", None, s.op, tuple(s.inputs)))
-        return Reader(objects)
+        return Reader(objects, self.params.get("called"))
 
     @functools.cached_property
     def _captions(self) -> list[tuple[str, str] | None]:
@@ -248,11 +274,60 @@ class Scene:
         if not 1 <= k <= len(self.steps):
             return frozenset()
         s = self.steps[k - 1]
-        names = set(s.outputs) | set(s.inputs) | self._reader.mentioned(s.caption.de) | self._reader.mentioned(s.caption.en)
+        names = set(s.outputs) | set(s.inputs) | self.named(k)
         for n in s.inputs:
             if n in self._reader.objects and n not in self._reader.points:
                 names.update(self._reader.curve_points(n))
         return frozenset(n for n in names if n in self._reader.points)
+
+    def named(self, k: int) -> frozenset[str]:
+        """The points step k's caption names (and its group's title, in a protocol written in letters)."""
+        if not 1 <= k <= len(self.steps):
+            return frozenset()
+        s = self.steps[k - 1]
+        if self.params.get("captions") == "letters":  # the caption names points by their letters
+            got = self._named_points(k)
+        else:
+            got = self._reader.mentioned(s.caption.de) | self._reader.mentioned(s.caption.en)
+        return frozenset(n for n in got if n in self._reader.points)
+
+    def _named_points(self, k: int) -> set[str]:
+        """The points step k's caption and its group's title (written in the figure's letters) name by a letter
+        or a tag.
+
+        A tag may stand for several helpers (the F of every trisection): the caption means the one of its
+        own group, made by then (the latest of them); a lone letter of another top-level group is another F
+        (a numbered tag, M2, is the latest made).  A lettered point is the figure's, whatever its group.
+        """
+        s = self.steps[k - 1]
+        out: set[str] = set()
+        # the step's caption and its group's title (the innermost, which the player shows with it)
+        group = self.group_captions[s.group].rsplit(" › ", 1)[-1] if s.group else ""
+        for token in set(_LETTERED.findall(s.caption.de)) | set(_LETTERED.findall(s.caption.en)) | set(
+                _LETTERED.findall(group)):
+            best = None
+            for step, name, grp, lettered in self._by_letter.get(token, ()):
+                if step > k:
+                    break
+                shared = 0
+                while shared < min(len(grp), len(s.group)) and grp[shared] == s.group[shared]:
+                    shared += 1
+                # a lone letter (the F of a trisection) is its own group's; a numbered tag may be another's
+                if (lettered or shared or len(token) > 1) and (best is None or shared >= best[0]):
+                    best = (shared, name)
+            if best is not None:
+                out.add(best[1])
+        return out
+
+    @functools.cached_property
+    def _by_letter(self) -> dict[str, list[tuple[int, str, tuple[str, ...], bool]]]:
+        """The points by the letter or tag a caption names them by: (step made, name, group, lettered?), in step
+        order."""
+        out: dict[str, list[tuple[int, str, tuple[str, ...], bool]]] = {}
+        for m in self.marks:
+            if m.kind is MarkKind.POINT and m.name in self._reader.points:
+                out.setdefault(m.label or self.display_name(m.name), []).append((m.step, m.name, m.group, bool(m.label)))
+        return out
 
     @functools.cached_property
     def _drawn(self) -> dict[str, Mark]:
@@ -267,12 +342,12 @@ class Scene:
 
         A figure is lettered with one letter, perhaps with a number of at most two
         digits or a prime (M2, S1, q10, K17, 5′); the helpers' internal names
-        (``c90``: the crank at 90°, ``Nb17``, ``iP6``) are not letters and are not
+        (``c135``: the crank at 135°, ``Nb17``, ``iP6``) are not letters and are not
         shown, whatever the caption calls them.
 
         >>> from construct.constructions import get
         >>> sc = build_scene(get("crank").figure(parts=6))
-        >>> [FIGURE_LETTER.fullmatch(t) is not None for t in ("M2", "q10", "5′", "c90", "Nb17", "iP6")]
+        >>> [FIGURE_LETTER.fullmatch(t) is not None for t in ("M2", "q10", "5′", "c135", "Nb17", "iP6")]
         [True, True, True, False, False, False]
         """
         return FIGURE_LETTER.fullmatch(self.display_name(name)) is not None
@@ -450,7 +525,8 @@ def on_curve_names(steps: Iterable[Step], points: set[str], shown: set[str] | No
 
 def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: bool = False,
                 break_axis: bool = True, furniture: tuple = (), looks: "dict[str, str] | None" = None,
-                panels: tuple = ()) -> Scene:
+                panels: tuple = (), ending: bool = False, end_furniture: tuple = (),
+                end_looks: "dict[str, str] | None" = None, _warn: bool = True) -> Scene:
     """The marks of a built or replayed figure (anything with ``.protocol`` and ``.replay``).
 
     With *plate* the scene is what a book plate shows (:func:`plate_names`):
@@ -460,11 +536,15 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
     :class:`~construct.kernel.errors.HiddenLabelWarning` (:func:`warn_hidden_labels`).
     *panels* (:class:`construct.render.plate.Panel`) lay a plate's sheet out (:func:`lay_out`);
     a sheet laid out so is not broken.
+
+    With *ending* the scene carries its end state (:meth:`Scene.in_end`): what the plate shows, drawn as
+    the plate draws it (*end_looks*: the plate's looks), with the plate's furniture *end_furniture*, on the
+    scene's own sheet (its broken axis).
     """
     protocol: Protocol = figure.protocol
     objects: Replay = figure.replay
     shown = plate_names(protocol, objects) if plate else None
-    if shown is not None:
+    if shown is not None and _warn:
         warn_hidden_labels(protocol, objects, shown)
     points = [o for n, o in objects.items() if isinstance(o, Point) and (shown is None or n in shown)]
     curves_pts = curve_points(objects, shown)
@@ -486,57 +566,74 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
             if isinstance(obj, Circle) or (isinstance(obj, Line) and protocol.params.get("plate")):
                 have = on.setdefault(name, [])
                 have.extend(p for n, p in shown_pts if lies_on(obj, p, tol) and p not in have)
-    marks: list[Mark] = []
-    lettered: dict[str, tuple[str, bool]] = {}  # lettered straight lines: their letter, whether in a fan
     in_fan = fanned_lines(protocol.steps)
-    for s in protocol.steps:
-        labels = dict(s.labels)
-        for name in s.outputs:
-            obj = objects.get(name)
-            if obj is None or isinstance(obj, Length) or (shown is not None and name not in shown):
-                continue
-            mid = f"s{s.index:04d}-{_safe_id(name)}"
-            label = labels.get(name)
-            if label and "{∠" in label:
-                label = reading(label, objects)
-            if "unlettered" in (looks or {}).get(name, "").split():
-                label = None  # the plate letters it otherwise (an abscissa, as the book does)
-            common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
-                          group=s.group, label=label, look=(looks or {}).get(name, ""))
-            if isinstance(obj, Point):
-                marks.append(Mark(mid, kind=MarkKind.POINT, geom=(obj[0], obj[1]), **common))
-            elif isinstance(obj, Line):
-                marks.append(Mark(mid, kind=MarkKind.SEGMENT, geom=segment_extent(obj, on.get(name, []), margin), **common))
-            elif isinstance(obj, Circle):
-                kind, geom = circle_extent(obj, on.get(name, []), margin, s.role, plate=shown is not None)
-                marks.append(Mark(mid, kind=kind, geom=geom, **common))
-            elif hasattr(obj, "rings"):  # an Area: one mark per piece, each hatched
-                # a look "signed": the pieces under the lower line hatched across those over it (+ and −)
-                signed = "signed" in common["look"].split()
-                for j, (sign, ring) in enumerate(obj.pieces):
-                    hatch = obj.hatch_deg
-                    if signed and sign < 0:
-                        hatch = (90.0 if hatch is None else hatch) - 45.0
-                    marks.append(Mark(mid if j == 0 else f"{mid}-{j}", kind=MarkKind.AREA,
-                                      geom=tuple((p[0], p[1]) for p in ring), hatch=hatch, **common))
-            elif hasattr(obj, "curve_points"):
-                # a polyline is drawn as it is measured (y_at, length): straight from point to point
-                straight = getattr(obj, "kind", "") == "polyline"
-                pts = tuple((p[0], p[1]) for p in obj.curve_points())
-                if straight and label:
-                    # lettered at a point of its own on it, placed once the sheet is laid out (below)
-                    marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=True, **{**common, "label": None}))
-                    lettered[mid] = (label, in_fan[name])
-                else:
-                    marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=straight, **common))
-    breaks: tuple[tuple[float, float, float], ...] = ()
+
+    def draw(margin: float) -> tuple[list[Mark], dict[str, tuple[str, bool]]]:
+        """The marks, each line and arc reaching *margin* past the points marked on it."""
+        marks: list[Mark] = []
+        lettered: dict[str, tuple[str, bool]] = {}  # lettered straight lines: their letter, whether in a fan
+        for s in protocol.steps:
+            labels = dict(s.labels)
+            for name in s.outputs:
+                obj = objects.get(name)
+                if obj is None or isinstance(obj, Length) or (shown is not None and name not in shown):
+                    continue
+                mid = f"s{s.index:04d}-{_safe_id(name)}"
+                label = labels.get(name)
+                if label and "{∠" in label:
+                    label = reading(label, objects)
+                if "unlettered" in (looks or {}).get(name, "").split():
+                    label = None  # the plate letters it otherwise (an abscissa, as the book does)
+                common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
+                              group=s.group, label=label, look=(looks or {}).get(name, ""))
+                if isinstance(obj, Point):
+                    marks.append(Mark(mid, kind=MarkKind.POINT, geom=(obj[0], obj[1]), **common))
+                elif isinstance(obj, Line):
+                    marks.append(Mark(mid, kind=MarkKind.SEGMENT, geom=segment_extent(obj, on.get(name, []), margin), **common))
+                elif isinstance(obj, Circle):
+                    kind, geom = circle_extent(obj, on.get(name, []), margin, s.role, plate=shown is not None)
+                    marks.append(Mark(mid, kind=kind, geom=geom, **common))
+                elif hasattr(obj, "rings"):  # an Area: one mark per piece, each hatched
+                    # a look "signed": the pieces under the lower line hatched across those over it (+ and −)
+                    signed = "signed" in common["look"].split()
+                    for j, (sign, ring) in enumerate(obj.pieces):
+                        hatch = obj.hatch_deg
+                        if signed and sign < 0:
+                            hatch = (90.0 if hatch is None else hatch) - 45.0
+                        marks.append(Mark(mid if j == 0 else f"{mid}-{j}", kind=MarkKind.AREA,
+                                          geom=tuple((p[0], p[1]) for p in ring), hatch=hatch, **common))
+                elif hasattr(obj, "curve_points"):
+                    # a polyline is drawn as it is measured (y_at, length): straight from point to point
+                    straight = getattr(obj, "kind", "") == "polyline"
+                    pts = tuple((p[0], p[1]) for p in obj.curve_points())
+                    if straight and label:
+                        # lettered at a point of its own on it, placed once the sheet is laid out (below)
+                        marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=True, **{**common, "label": None}))
+                        lettered[mid] = (label, in_fan[name])
+                    else:
+                        marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=straight, **common))
+        return marks, lettered
+
+    marks, lettered = draw(margin)
+    breaks: tuple[Break, ...] = ()
     if panels:
         marks = lay_out(marks, panels, margin, 1e-9 * max(span, 1.0))
         xs = [m.geom[0] for m in marks if m.kind is MarkKind.POINT] or xs
         ys = [m.geom[1] for m in marks if m.kind is MarkKind.POINT] or ys
     elif break_axis and (shown is None or furniture):
         # a plate keeps more of the broken stretch: the rod drawn across it stays a shallow line
-        marks, furniture, breaks = broken_axis(marks, tuple(furniture), BREAK_KEEP if shown is None else PLATE_BREAK_KEEP)
+        cut = broken(marks, tuple(furniture), shown is None)
+        if shown is None and cut[2]:
+            # a broken figure is drawn at the size it keeps: its lines reach past their points by a margin of
+            # what is left of it (its points and curves, broken alone), not of the length broken out (at
+            # L/r = 50 that would be 1.8 r)
+            kept = 0.035 * kept_span(marks)
+            if kept < margin:
+                again, letters = draw(kept)
+                smaller = broken(again, tuple(furniture), True)
+                if smaller[2]:
+                    margin, lettered, cut = kept, letters, smaller
+        marks, furniture, breaks = cut
         if breaks:
             xs = [x for m in marks if m.kind is MarkKind.POINT for x in (m.geom[0],)] or xs
             ys = [y for m in marks if m.kind is MarkKind.POINT for y in (m.geom[1],)] or ys
@@ -560,8 +657,95 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
     # a figure shows a bounded title; the protocol keeps the name
     title = (displayed(title[0], TITLE_LIMIT), displayed(title[1], TITLE_LIMIT))
     essentials = frozenset(shown if shown is not None else plate_names(protocol, objects))
+    end: dict[str, Any] = {}
+    if ending and shown is None:
+        end = _end_state(figure, marks, breaks, end_furniture, end_looks)
     return Scene(tuple(marks), bbox, protocol.steps, title, dict(protocol.params), breaks, tuple(furniture),
-                 essentials)
+                 essentials, **end)
+
+
+def _end_state(figure: Any, marks: list[Mark], breaks: tuple, furniture: tuple,
+               looks: "dict[str, str] | None") -> dict[str, Any]:
+    """The end state of a teaching scene (:meth:`Scene.in_end`): the plate's marks on the teaching sheet.
+
+    The plate's scene is drawn on the teaching scene's broken axis; each of its marks that the teaching
+    scene draws otherwise (a line drawn as far as every point the construction marks on it, the crank
+    circle whole, a look the plate gives) becomes an end mark that replaces it in the end state.
+    """
+    from .plate import shifted
+
+    plate = build_scene(figure, plate=True, break_axis=False, looks=looks, _warn=False)
+    sx, sy = break_shift(breaks), break_shift(breaks, axis=1)
+    span = max(plate.bbox[2] - plate.bbox[0], plate.bbox[3] - plate.bbox[1], 1e-9)
+    tol = 1e-9 * span
+    teaching: dict[str, list[Mark]] = {}
+    for m in marks:
+        teaching.setdefault(m.name, []).append(m)
+    seen: dict[str, int] = {}
+    end_marks, replaced, looks_at = [], set(), {}
+    for pm in plate.marks:
+        pm = with_geom(pm, _shift_geom(pm, sx, sy))
+        i = seen.get(pm.name, 0)
+        seen[pm.name] = i + 1
+        same = teaching.get(pm.name, [])
+        tm = same[i] if i < len(same) else None
+        if tm is not None and tm.kind is pm.kind and tm.label == pm.label and _same_geom(tm.geom, pm.geom, tol):
+            if tm.look != pm.look:  # drawn where it stands, in the plate's look (not drawn twice)
+                looks_at[tm.id] = pm.look
+            continue
+        if tm is not None:
+            replaced.add(tm.id)
+        end_marks.append(dataclasses.replace(pm, id=f"{(tm or pm).id}-end"))
+    return {"ending": True, "end_marks": tuple(end_marks), "end_replaced": frozenset(replaced),
+            "end_furniture": tuple(shifted(it, sx) for it in furniture), "end_looks": looks_at}
+
+
+def break_shift(breaks: tuple, axis: int = 0) -> Callable[[float], float]:
+    """The map of x (of y for *axis* 1) that a broken axis (:attr:`Scene.breaks`) applies to what lies before
+    its gap.
+
+    >>> sx = break_shift(((10.0, 1.0, 6.0),))  # drawn from 10 to 11, standing for 6: [5, 11] became [10, 11]
+    >>> sx(2.0), sx(12.0)
+    (7.0, 12.0)
+    >>> break_shift(((10.0, 1.0, 6.0, 1),))(2.0)  # a break across the figure moves y, not x
+    2.0
+    """
+    moves = [(b[0] + b[1] - b[2], b[2] - b[1]) for b in breaks if (b[3] if len(b) > 3 else 0) == axis]
+
+    def shift(v: float) -> float:
+        for lo, by in moves:
+            if v <= lo:
+                v += by
+        return v
+
+    return shift
+
+
+def _shift_geom(m: Mark, sx: Callable[[float], float], sy: Callable[[float], float]) -> tuple:
+    """A mark's geometry on a broken sheet (as :func:`~construct.render.sheet.broken_axis` moves it: a circle
+    whole, or not at all)."""
+    g = m.geom
+    if m.kind is MarkKind.POINT:
+        return (sx(g[0]), sy(g[1]))
+    if m.kind is MarkKind.SEGMENT:
+        return (sx(g[0]), sy(g[1]), sx(g[2]), sy(g[3]))
+    if m.kind.round:
+        far = extreme_points(m)
+        right, low = max(p[0] for p in far), max(p[1] for p in far)
+        return (g[0] + (sx(right) - right), g[1] + (sy(low) - low)) + tuple(g[2:])
+    return tuple((sx(x), sy(y)) for x, y in g)
+
+
+def _same_geom(a: tuple, b: tuple, tol: float) -> bool:
+    if len(a) != len(b):
+        return False
+    for u, v in zip(a, b):
+        if isinstance(u, tuple):
+            if not isinstance(v, tuple) or not _same_geom(u, v, tol):
+                return False
+        elif abs(u - v) > tol * max(1.0, abs(u)):
+            return False
+    return True
 
 
 #: A label that is a reading of the figure: ``{∠A O B}`` is written as the angle AOB measured on the replayed

@@ -237,13 +237,23 @@ def thumbnail_view(drawing: Any, aspect: float = 174 / 130, margin: float = 24.0
     """The SVG view (``#svgView(viewBox(...))``) that shows a layered figure's results as large as a thumbnail can.
 
     The teaching figure's canvas is laid out for every step; at its end the finished groups' helpers
-    are hidden, and the results can fill a small part of it beside long axes and far helpers.  The box
+    are hidden, and the results can fill a small part of it beside long axes and far helpers.  A figure
+    with an end state (:class:`construct.render.svg.EndView`) shows its end state's sheet.  The box
     of the results that stay (of everything that stays, if none is a result), with *margin* canvas
     pixels for their letters, widened to the thumbnail's *aspect*, is what the thumbnail shows: the
     figure's own file, nothing copied.
     """
     from .scene import extreme_points
 
+    end = getattr(drawing, "end", None)
+    if end is not None:  # the end state: its own sheet is the figure as the book draws it
+        x0, y0, x1, y1 = end.crop
+        w, h = x1 - x0, y1 - y0
+        if w / max(h, 1e-9) < aspect:
+            x0, w = x0 - (h * aspect - w) / 2, h * aspect
+        else:
+            y0, h = y0 - (w / aspect - h) / 2, w / aspect
+        return f"#svgView(viewBox({x0:.0f},{y0:.0f},{w:.0f},{h:.0f}))"
     sc, vp = drawing.scene, drawing.vp
     end = len(sc.steps) + 1
     fade = drawing.style.done_opacity < 1.0

@@ -41,7 +41,7 @@ from .plate import LOOKS_CSS
 from .svgdoc import fmt
 from ..kernel.errors import InvalidParameter
 
-__all__ = ["Style", "STYLES", "HISTORICAL", "TEACHING", "PLAIN", "LineWeights", "PAPERS", "MIN_LINE_PT", "paper_colour"]
+__all__ = ["Style", "STYLES", "HISTORICAL", "TEACHING", "PLAIN", "LineWeights", "PAPERS", "MIN_LINE_PT", "paper_colour", "END_CSS"]
 
 #: The finest line a printed plate may carry, in points: finer lines break up in print (publishers ask for 0.2 pt
 #: or more; DESIGN §8).
@@ -255,10 +255,11 @@ class Style:
         if self.highlight:
             # ``cur`` and ``old`` sit on a step's group (frames are views of the layered figure)
             rules.append(f".cur>*{{stroke:{self.highlight};stroke-width:{fmt(self.highlight_width)}}}")
-            # a point is small: the current one gets a halo in the highlight colour, 16 units across or more with
-            # its dot (12.5 px on the screen at the player's smallest letter scale): seen at once
-            rules.append(f".cur>.pt{{fill:{self.highlight};stroke:{self.highlight};stroke-width:13;"
-                         f"stroke-opacity:0.35}}")
+            # a point is small: the current one gets a halo in the highlight colour, 18 units across or more with
+            # its dot (14 px on the screen at the player's smallest letter scale), stronger than any line the
+            # step is set on: the current mark is the loudest thing in view
+            rules.append(f".cur>.pt{{fill:{self.highlight};stroke:{self.highlight};stroke-width:16;"
+                         f"stroke-opacity:0.55}}")
             rules.append(f".cur .lb{{fill:{self.highlight};stroke:none}}")
         rules.append(f".inset{{fill:{self.paper};stroke:{self.construction};stroke-width:0.8}}")
         if self.done_opacity <= 0.0:
@@ -267,7 +268,8 @@ class Style:
             rules.append(f".done{{opacity:{fmt(self.done_opacity)}}}")
         if self.input_colour:
             ic = self.input_colour
-            rules.append(f".inp>*{{stroke:{ic};stroke-width:{fmt(0.7 * self.highlight_width)}}}")
+            # what the instrument is set on, marked, but thinner than the current step's own line
+            rules.append(f".inp>*{{stroke:{ic};stroke-width:{fmt(0.5 * self.highlight_width)}}}")
             rules.append(f".inp>.pt{{fill:{ic};stroke:{ic};stroke-width:2}}")
             rules.append(f".inp .lb{{fill:{ic};stroke:none}}")
         if self.name_tags:
@@ -285,6 +287,7 @@ class Style:
         # letters drawn about their point (class lbg): set off by a screen distance at every zoom
         if self.camera:
             rules.append(level_css())
+            rules.append(END_CSS)
         else:
             rules.append(".lbx{display:none}")
 
@@ -297,6 +300,18 @@ class Style:
                          for sel, w in PRINT_STROKES)
         return "\n".join(rules)
 
+
+#: The end state of a teaching sequence (class ``fin`` on the figure, :meth:`construct.render.scene.Scene.in_end`):
+#: what it leaves out (``nf``) hidden, what it alone draws (``fo``) shown, only its letters (``pf``) at their
+#: places there with their own leaders (``lvf``), scaled by the player's letter scale (``--ls``).
+END_CSS = "\n".join((
+    ".fo{display:none}", ".fin .fo{display:inline}", ".fin .nf,.fin .fo.hidden{display:none}",
+    ".fin .lbg{display:none}", ".fin .lbg.pf{display:inline}",
+    ".fin .leader{display:none}", ".fin .leader.lvf{display:inline}",
+    ".fin .lbg>.lb,.fin .lbg>.leader,.fin .pt{transform:scale(var(--ls,var(--zs,1)))}",
+    # the plate's looks (construct.render.plate.LOOKS_CSS) on what the end state draws where it stands
+    *(".fin .fl-" + rule[1:] for rule in LOOKS_CSS),
+))
 
 PLAIN = Style()
 
@@ -349,7 +364,9 @@ TEACHING = Style(
     camera=True,                   # every step through its group's view (construct.render.camera)
     ring_px=9.0,                   # a ring round a small current mark: 18 px across on the screen
     min_drawing_px=620.0,
-    area_fill="#dbe7f3",
+    hatch=True,                    # hatched, as the books hatch (free forces, the excess area), over a tint
+    hatch_spacing=5.0,
+    area_fill="#eef3f9",
 )
 
 STYLES: dict[str, Style] = {"plain": PLAIN, "historical": HISTORICAL, "teaching": TEACHING}

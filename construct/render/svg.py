@@ -28,26 +28,74 @@ from __future__ import annotations
 
 import bisect
 import dataclasses
+import heapq
 import math
-from typing import Any, Sequence
+import re
+from dataclasses import dataclass
+from typing import Any, Callable, Sequence
 
 from . import captions as _captions
 from . import svgdoc
-from .camera import clear_edges, clear_tag_edges, level, ring_round, step_views
+from .camera import (FINAL_CONTEXT, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, clear_edges, clear_tag_edges, level,
+                     player_letter_scale, ring_round, step_insets, step_views, zoom_of)
 from .captions import Captions, PlateCaption
 from .gaps import CLEARANCE, Gap, GapFactory, gapped_hatch, gapped_mark
-from .lettering import LEADER_FROM, label_box, text_box, text_width
+from .lettering import HALO_PX, LEADER_FROM, label_box, text_box, text_width
 from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
 from .marks import could_show
 from .placing import Placing, PlacedLabel, place_outwards, text_gap
-from .plate import (Lettering, break_elements, crossing_lines, furniture_elements, furniture_pieces, plain,
-                    subscript_runs)
+from .plate import (Lettering, Stroke, break_elements, crossing_lines, extent, furniture_elements, furniture_pieces, plain,
+                    subscript_runs, text_elements)
 from .scene import Mark, MarkKind, Scene, extreme_points
 from .styles import PLAIN, Style
 from .svgdoc import fmt
 from .viewport import Viewport, camera_transform, camera_zoom
 
-__all__ = ["render_svg", "Drawing", "mark_geometry", "mark_layer", "point_radius"]
+__all__ = ["render_svg", "Drawing", "EndView", "mark_geometry", "mark_layer", "point_radius", "END_MARGIN_PX"]
+
+#: The player's letter scale in a style rule (``var(--ls)``, ``var(--ls,var(--zs,1))``), which the end state's own
+#: file writes out as its number.
+_LETTER_SCALE = re.compile(r"var\(--ls(?:,var\(--zs(?:,1)?\))?\)")
+
+#: The end state's points scaled by the letter scale (:data:`construct.render.styles.END_CSS`); its own file draws
+#: them at that scale in their radius instead.
+_END_POINTS = ".fin .lbg>.lb,.fin .lbg>.leader,.fin .pt{"
+_END_POINTS_OWN = ".fin .pt{transform:none}\n.fin .lbg>.lb,.fin .lbg>.leader{"
+
+#: The margin round the end state's drawing on its sheet (screen px at the end view).
+END_MARGIN_PX = 14.0
+
+
+@dataclass(frozen=True)
+class EndView:
+    """How the end state of a teaching sequence is shown (:meth:`Drawing.layered`, the player's last step).
+
+    *view*: the last step's camera view (canvas px, x y w h); *level*: its zoom level; *letter*: the
+    player's letter scale there (canvas units a letter unit); *scale*: screen px per canvas px there;
+    *crop*: the end state's drawing with its letters, furniture and a margin (canvas px, x0 y0 x1 y1), the
+    sheet of ``final.svg``; *size*: the furniture's letter size (canvas px).
+    """
+
+    view: tuple[float, float, float, float]
+    level: int
+    letter: float
+    scale: float
+    crop: tuple[float, float, float, float]
+    size: float
+
+
+def _wrapped(g: Any, elems: Sequence[Any]) -> Any:
+    """The group *g* holding *elems*."""
+    for e in elems:
+        g.add(e)
+    return g
+
+
+def _grown(box: tuple[float, float, float, float] | None,
+           pts: Sequence[tuple[float, float]]) -> tuple[float, float, float, float] | None:
+    for x, y in pts:
+        box = (x, y, x, y) if box is None else (min(box[0], x), min(box[1], y), max(box[2], x), max(box[3], y))
+    return box
 
 #: Names that moved to :mod:`construct.render.captions`, still found here (with a DeprecationWarning).
 _MOVED = {"wrap": "captions", "step_caption": "captions", "group_caption": "captions"}
@@ -102,11 +150,16 @@ class Drawing:
             if style.camera and pl.tag_spots:
                 self.__dict__["_views"] = clear_tag_edges(
                     self.views, self.full_view, lambda ks, lvl: pl.tags_at(ks, lvl, self.input_steps), pl.letters_at)
+        #: the end state's view, letter scale and sheet (:class:`EndView`); None without one
+        self.end = self._lay_out_end() if style.camera and scene.ending and scene.steps else None
         # layer -> [(step, [element, ...]), ...] in step order: each step's elements of that layer.
         self.groups: dict[str, list[tuple[int, list[Any]]]] = {name: [] for name in self.LAYERS}
         placed: list[tuple[float, float, float, float]] = []
-        for m in scene.marks:
-            for layer, elem in self._elements(m, self.vp, placed, m.id):
+        # the end state's own marks go with the step that made their object, shown in the end state only
+        ends = sorted(scene.end_marks, key=lambda m: m.step) if self.end is not None else []
+        for m in heapq.merge(scene.marks, ends, key=lambda m: m.step):
+            end = m.id.endswith("-end") and m in ends
+            for layer, elem in self._elements(m, self.vp, placed, None if end else m.id, end=end):
                 runs = self.groups[layer]
                 if not runs or runs[-1][0] != m.step:
                     runs.append((m.step, []))
@@ -146,14 +199,27 @@ class Drawing:
             self.__dict__["_views"] = got
         return got
 
+    @property
+    def insets(self) -> list[tuple[float, float, float, float] | None]:
+        """Per step, the region the player magnifies in an inset (:func:`construct.render.camera.step_insets`)."""
+        got = self.__dict__.get("_insets")
+        if got is None:
+            got = self.__dict__["_insets"] = (step_insets(self.scene, self.views, self.full_view, self.vp.px) if self.style.camera
+                                              else [None] * len(self.scene.steps))
+        return got
+
     def labels(self) -> tuple[PlacedLabel, ...]:
         """Every letter of the whole figure where it stands (:meth:`construct.render.placing.Placing.labels`)."""
         return self.placing.labels()
 
     @property
     def extra_css(self) -> str:
-        """The rules of this drawing alone (the letters moved per zoom level)."""
-        return "\n".join(self.placing.level_rules)
+        """The rules of this drawing alone (the letters moved per zoom level and in the end state)."""
+        rules = self.placing.level_rules + self.placing.end_rules
+        if self.end is not None and self.scene.end_furniture:
+            e = self.end
+            rules.append(f".end .lb{{font-size:{fmt(e.size)}px}}.end .lb.halo{{stroke-width:{fmt(HALO_PX * e.letter)}px}}")
+        return "\n".join(rules)
 
     def camera_view(self, k: int) -> tuple[float, float, float, float]:
         """Step k's view (the whole figure for k = 0 and past the end)."""
@@ -187,9 +253,105 @@ class Drawing:
         """The canvas height without the caption lines (the player shows its captions in HTML)."""
         return self.vp.height - self.n_caption * 1.45 * self.style.caption_size
 
-    def _elements(self, m: Mark, vp: Viewport, placed: list, mid: str | None):
-        """(layer, svgwrite element) of a mark's elements; the label (if any) is a second one."""
+    # -- the end state ----------------------------------------------------------------
+    def _lay_out_end(self) -> "EndView":
+        """The end state's letters, view and sheet (:class:`EndView`): its letters placed at the player's
+        letter scale in the last step's view, the view grown to take them and the furniture in, the sheet
+        the end state's drawing with a margin of :data:`END_MARGIN_PX`."""
+        sc, st, pl = self.scene, self.style, self.placing
+        full = self.full_view
+        marks = [m for m in sc.marks if sc.in_end(m)] + list(sc.end_marks)
+        views = self.views
+        v = views[-1]
+        framing = Framing(full, max_zoom=ZOOM_LEVELS[-1])
+        for _ in range(4):  # the letters and the furniture widen the view, which sets their size
+            z = zoom_of(v, full)
+            lvl = level(z)
+            q = max(v[2] / PLAYER_FIGURE_PX[0], v[3] / PLAYER_FIGURE_PX[1])  # canvas px per screen px
+            ls = player_letter_scale(q * z / ZOOM_LEVELS[lvl])
+            size = st.label_size * ls
+            texts = [b for e in furniture_elements(self._end_fixed, self.vp.px, self.vp.scale, self.doc.factory,
+                                                   size=size) if (b := self._text_box(e, size)) is not None]
+            # the plate's own lines that are results (its ordinates), not its thin and dashed helpers
+            strokes = [(*self.vp.px(*it.a), *self.vp.px(*it.b)) for it in sc.end_furniture
+                       if isinstance(it, Stroke) and not {"thin", "dashed", "hidden"} & set(it.look.split())]
+            pl.place_end(ls, marks, texts, self._end_lettering(size), strokes)
+            box = None
+            for m in marks:
+                if "hidden" not in sc.end_look(m).split():
+                    box = _grown(box, [self.vp.px(*p) for p in extreme_points(m)])
+            fx = extent(sc.end_furniture)
+            if fx is not None:
+                box = _grown(box, [self.vp.px(fx[0], fx[1]), self.vp.px(fx[2], fx[3])])
+            for b in texts:
+                box = _grown(box, [b[:2], b[2:]])
+            for fid, (px, py), text in self._end_lettering(size):
+                rel = pl.end_spots.get(fid)
+                if rel is not None:
+                    b = label_box(px + ls * rel[0], py + ls * rel[1], text, size, st.label_font, st.label_italic)
+                    box = _grown(box, [b[:2], b[2:]])
+            for m in marks:
+                rel = pl.end_spots.get(m.id)
+                if rel is not None:
+                    px, py = self.vp.px(*m.geom)
+                    b = label_box(px + ls * rel[0], py + ls * rel[1], m.label or "", size, st.label_font,
+                                  st.label_italic)
+                    box = _grown(box, [b[:2], b[2:]])
+            if box is None:
+                break
+            new = framing.view(box, FINAL_CONTEXT, 1.0)
+            if new == v:
+                break
+            v = new
+        views[-1] = v
+        pad = END_MARGIN_PX * q
+        crop = (box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad) if box is not None else \
+            (full[0], full[1], full[0] + full[2], full[1] + full[3])
+        return EndView(v, lvl, round(ls, 4), round(1.0 / q, 6), tuple(round(c, 2) for c in crop), size)
+
+    @property
+    def _end_fixed(self) -> tuple:
+        """The end state's furniture that stands where the plate sets it (all but its lettering)."""
+        return tuple(it for it in self.scene.end_furniture if not isinstance(it, Lettering))
+
+    def _end_lettering(self, size: float) -> list[tuple[str, tuple[float, float], str]]:
+        """The plate's lettering in the end state, placed as letters are (:meth:`Placing.place_end`): (id, the
+        middle of where the plate writes it, canvas px, its text)."""
+        st = self.style
+        out = []
+        for i, it in enumerate(self.scene.end_furniture):
+            if isinstance(it, Lettering):
+                x, y = self.vp.px(*it.at)
+                text = plain(it.text)  # as a reader sees it (P_b: Pb, its b a smaller run)
+                w = text_width(text, size * it.size, st.label_font, st.label_italic)
+                x += {"start": w / 2, "end": -w / 2}.get(it.anchor, 0.0)
+                out.append((f"fur{i}", (x, y), text))
+        return out
+
+    def _text_box(self, elem: Any, size: float) -> tuple[float, float, float, float] | None:
+        """The box (canvas px) of a furniture lettering element made at *size* (not turned; its halo, a copy
+        beneath it, and any other element: None)."""
+        xml = elem.get_xml()
+        if xml.tag.rsplit("}", 1)[-1] != "text" or "halo" in xml.get("class", "").split():
+            return None
+        st = self.style
+        got = re.search(r"font-size:\s*([\d.]+)px", xml.get("style", ""))
+        size = float(got.group(1)) if got else size
+        text = xml.text or ""
+        x, y = float(xml.get("x")), float(xml.get("y"))
+        w = text_width(text, size, st.label_font, st.label_italic)
+        x += {"start": w / 2, "end": -w / 2}.get(xml.get("text-anchor", "middle"), 0.0)
+        return label_box(x, y, text, size, st.label_font, st.label_italic)
+
+    def _elements(self, m: Mark, vp: Viewport, placed: list, mid: str | None, *, end: bool = False):
+        """(layer, svgwrite element) of a mark's elements; the label (if any) is a second one.
+
+        An end state's own mark (*end*) is shown in the end state only (class ``fo``); a mark the end state
+        leaves out, and its letter, are not shown there (``nf``)."""
         cls = f"{m.role} {m.tool} {m.provenance}" + (f" {m.look}" if m.look else "")
+        sc = self.scene
+        out = " fo" if end else (" nf" if sc.ending and not sc.in_end(m) else "")
+        cls += out + "".join(f" fl-{w}" for w in sc.end_looks.get(m.id, "").split())
         ids = {"id": mid} if mid else {}
         st = self.style
         f = self.doc.factory
@@ -200,10 +362,22 @@ class Drawing:
             tag = self.placing.tag_spots.get(m.id) if vp is self.vp else None
             if tag is not None:
                 # Shown only while its step is current or an input (CSS), placed clear of the letters.
-                # no id of its own: it is its point's name, and a gallery carries thousands of them
-                yield "labels", self._letter(vp, m, tag, self.scene.display_name(m.name), "lb tag", {}, halo=False,
-                                             extra=self.placing.tag_hidden.get(m.id, ""))
-            if m.label:
+                # no id of its own: it is its point's name, and a gallery carries thousands of them; at a zoom
+                # level where its spot is taken it stands elsewhere, a copy of its own there (lvN, the other mN)
+                name = self.scene.display_name(m.name)
+                moves = self.placing.tag_moves.get(m.id, {})
+                yield "labels", self._letter(vp, m, tag, name, "lb tag", {}, halo=False,
+                                             extra=self.placing.tag_hidden.get(m.id, "") + out
+                                             + "".join(f" m{lvl}" for lvl in sorted(moves)))
+                for lvl, rel in sorted(moves.items()):
+                    yield "labels", self._letter(vp, m, rel, name, "lb tag", {}, halo=False, extra=f" lv{lvl}{out}")
+            if m.label and end:
+                # an end state's own letter: it stands where the end state's placing set it, or nowhere
+                rel = self.placing.end_spots.get(m.id)
+                if rel is not None:
+                    yield "labels", self._letter(vp, m, rel, m.label, "lb", {}, extra=" fo pf",
+                                                 gid={"id": f"{m.id}-lb"})
+            elif m.label:
                 # in the drawing's own viewport the letters were placed by rank (results first); elsewhere
                 # (the magnified inset) they go radially outwards, the other side, or are left out
                 box = (self.placing.spots.get(m.id) if vp is self.vp
@@ -215,7 +389,9 @@ class Drawing:
                     # a letter with no room in the whole figure waits for the magnified views (lbx); without a
                     # camera there are none, and a result's letter is drawn all the same (never left out)
                     thin = len(box) > 3 and box[3] and (st.camera or m.role != "result")
-                    extra = (" lbx" if thin else "") + self.placing.hidden_at.get(m.id, "")
+                    extra = (" lbx" if thin else "") + self.placing.hidden_at.get(m.id, "") + out
+                    if vp is self.vp and m.id in self.placing.end_spots:
+                        extra += " pf lbm"  # it stands in the end state, where it may move
                     gid = {"id": f"{mid}-lb"} if mid and " lbm" in extra else {}
                     extra = extra.replace(" lbm", "")
                     # a plate breaks its lines for its letters: no paper-coloured halo beneath them
@@ -263,22 +439,22 @@ class Drawing:
         """A letter about its point: ``<g class="lbg" transform="translate(point)">`` holding (leader,) halo
         and letter at *rel* (offset in pixels, distance in letter heights), so that a zoomed view
         can keep letters at their screen size and distance from the point (its children scaled by CSS)."""
-        st = self.style
         f = self.doc.factory
         px, py = vp.px(*m.geom)
         outer = inner = f.g(class_="lbg" + extra, transform=f"translate({fmt(px)} {fmt(py)})", **(gid or {}))
         dx, dy, dist = rel
         xy = dict(x=[fmt(dx)], y=[fmt(dy)])
-        if dist >= LEADER_FROM:
-            # a letter set off from a crowded point is tied to it
-            cx, cy = dx, dy - 0.35 * st.label_size
-            n = math.hypot(cx, cy) or 1.0
-            # it ends where it meets the letter's white, or sooner: a wide letter (M₁ 19°12′) is not run into
-            box = label_box(dx, dy, text, st.label_size, st.label_font, st.label_italic)
-            a, b = 0.25 * st.label_size, min(n - 0.75 * st.label_size, _entry(box, cx / n, cy / n))
+        pl = self.placing
+        if "tag" in cls.split() or vp is not self.vp:
             # a name tag's leader is shown and hidden with its tag (the style shows tags at their step only)
-            inner.add(f.line(start=(fmt(a * cx / n), fmt(a * cy / n)), end=(fmt(b * cx / n), fmt(b * cy / n)),
-                             class_="leader tag" if "tag" in cls.split() else "leader"))
+            leaders = [(pl.leader_line(dx, dy, text), " tag" if "tag" in cls.split() else "")] if dist >= LEADER_FROM else []
+        elif " fo" in extra:
+            leaders = [(pl.leader_line(dx, dy, text), " lvf")] if dist >= LEADER_FROM else []
+        else:
+            # a letter set off from a crowded point is tied to it, wherever it stands (each zoom level, the end)
+            leaders = pl.leaders(m.id, rel, text)
+        for (x1, y1, x2, y2), more in leaders:
+            inner.add(f.line(start=(fmt(x1), fmt(y1)), end=(fmt(x2), fmt(y2)), class_="leader" + more))
         if halo:
             inner.add(f.text(text, class_=f"{cls} halo", **xy))
         inner.add(f.text(text, class_=cls, **ids, **xy))
@@ -389,22 +565,68 @@ class Drawing:
                     parent.add(layer)
                 else:
                     out.append(layer)
-        furniture = self.furniture()
+        furniture = self.furniture(k, mark_steps=mark_steps)
         if furniture is not None:
             (parent.add(furniture) if parent is not None else out.append(furniture))
         return out
 
-    def furniture(self) -> Any | None:
-        """The broken axis's break marks and the plate's furniture (:mod:`construct.render.plate`)."""
+    def furniture(self, k: int | None = None, *, mark_steps: bool = False,
+                  timed: "Callable[[int], list[Any]] | None" = None) -> Any | None:
+        """The broken axis's break marks and the plate's furniture (:mod:`construct.render.plate`); the break
+        marks of a line go with its step (frame *k*: those of steps 1..k, in their states there; *timed*:
+        the animation's timing of a step's group, put first in it)."""
         f = self.doc.factory
         sc = self.scene
         # the furniture first, the break marks over it (they open the rod and the axis for the gap)
+        size = self.style.label_size
         elems = furniture_elements(self.furniture_items, self.vp.px, self.vp.scale,
-                                   GapFactory(f, self.gaps) if self.gaps else f, size=self.style.label_size)
+                                   GapFactory(f, self.gaps) if self.gaps else f, size=size)
         if self.plate:  # its lines are broken for its lettering: the lettering's halos go
             elems = [e for e in elems if e.attribs.get("class") != "lb halo"]
-        elems += break_elements(sc.breaks, crossing_lines(sc.marks, sc.furniture), self.vp.px, f,
-                                size=self.style.label_size)
+            elems += break_elements(sc.breaks, crossing_lines(sc.marks, sc.furniture), self.vp.px, f, size=size)
+        else:
+            # a line's break marks are shown when and where the line is: in a step group of the line's step
+            # (the player gives it the line's state), not in the end state where that leaves the line out
+            # (nf); those of the end state's own lines there only (fo)
+            elems += break_elements(sc.breaks, crossing_lines((), sc.furniture), self.vp.px, f, size=size)
+        if sc.breaks and not self.plate:
+            n = len(sc.steps)
+            inputs = self.input_steps(k) if mark_steps and k is not None else frozenset()
+            for m in sc.marks:
+                if m.kind is MarkKind.SEGMENT and (k is None or m.step <= k):
+                    marks = break_elements(sc.breaks, [m.geom], self.vp.px, f, size=size)
+                    if marks and self.end is not None and not sc.in_end(m):
+                        marks = [_wrapped(f.g(class_="nf"), marks)]
+                    if marks:
+                        state = self.step_class(m.step, n if k is None else k, mark_steps=mark_steps, inputs=inputs)
+                        elems.append(self.step_group(m.step, (timed(m.step) if timed else []) + marks, state))
+        if self.end is not None:
+            ends = [m.geom for m in sc.end_marks if m.kind is MarkKind.SEGMENT]
+            ends += [(*it.a, *it.b) for it in sc.end_furniture if isinstance(it, Stroke)]
+            marks = break_elements(sc.breaks, ends, self.vp.px, f, size=size)
+            if marks:
+                elems.append(_wrapped(f.g(class_="fo"), marks))
+        if self.end is not None and sc.end_furniture:
+            # the plate's furniture in the end state, its letters at the size of the end state's, its lettering
+            # where the end state's placing set it (upright; tied to its place by a leader when set off)
+            g = _wrapped(f.g(class_="fo end"), furniture_elements(self._end_fixed, self.vp.px, self.vp.scale, f,
+                                                                  size=self.end.size))
+            ls, pl = self.end.letter, self.placing
+            for (fid, (px, py), text), it in zip(self._end_lettering(self.end.size),
+                                                [it for it in sc.end_furniture if isinstance(it, Lettering)]):
+                rel = pl.end_spots.get(fid)
+                if rel is None:
+                    continue
+                x, y = px + ls * rel[0], py + ls * rel[1]
+                if rel[2] >= LEADER_FROM:
+                    x1, y1, x2, y2 = pl.leader_line(rel[0], rel[1], text)
+                    g.add(f.line(start=(fmt(px + ls * x1), fmt(py + ls * y1)), end=(fmt(px + ls * x2), fmt(py + ls * y2)),
+                                 class_="fur thin"))
+                # (its index set below the line as the plate sets it: P_b, F·p_ü)
+                for el in text_elements(f, (x, y - 0.35 * self.end.size * it.size), it.text, self.end.size,
+                                        rel=it.size):
+                    g.add(el)
+            elems.append(g)
         if not elems:
             return None
         g = f.g(id="furniture")
@@ -464,27 +686,33 @@ class Drawing:
                 dwg.add(cap)
         return self.doc.text(dwg)
 
-    def camera_group(self, view: tuple[float, float, float, float], **attrs: Any) -> tuple[Any, Any]:
+    def camera_group(self, view: tuple[float, float, float, float], *, fin: bool = False,
+                     **attrs: Any) -> tuple[Any, Any]:
         """(outer, inner): ``<g>`` clipped to the drawing area holding ``<g id="camera">`` whose
         transform shows *view* on the whole drawing area (a nested ``<svg>`` would be a time
-        container of its own in browsers, out of step with the animation's clock)."""
+        container of its own in browsers, out of step with the animation's clock); *fin*: the end state."""
         f = self.doc.factory
         full = self.full_view
         clip = f.clipPath(id="camera-clip")
         clip.add(f.rect(insert=("0", "0"), size=(fmt(full[2]), fmt(full[3]))))
         outer = f.g(clip_path="url(#camera-clip)")
         outer.add(clip)
-        inner = f.g(id="camera", class_=f"zl{level(camera_zoom(view, full))}", transform=camera_transform(view, full),
-                    **attrs)
+        inner = f.g(id="camera", class_=f"zl{level(camera_zoom(view, full))}" + (" fin" if fin else ""),
+                    transform=camera_transform(view, full), **attrs)
         outer.add(inner)
         return outer, inner
 
     def camera_box(self, k: int, elems: Sequence[Any]) -> Any:
-        """The drawing shown through step k's view, with the ring round a small current mark."""
-        outer, inner = self.camera_group(self.camera_view(k))
-        for e in elems:
-            inner.add(e)
+        """The drawing shown through step k's view, with the ring round a small current mark (the last step:
+        the end state, when the scene has one)."""
+        outer, inner = self.camera_group(self.camera_view(k), fin=self.end is not None and k == len(self.scene.steps))
         ring = self.ring(k)
+        for e in elems:
+            if ring is not None and getattr(e, "attribs", {}).get("id") == "labels":
+                # under the letters: a letter's halo opens the ring, never the ring a letter
+                inner.add(self.doc.factory.circle(center=(fmt(ring[0]), fmt(ring[1])), r=fmt(ring[2]), class_="ring"))
+                ring = None
+            inner.add(e)
         if ring is not None:
             inner.add(self.doc.factory.circle(center=(fmt(ring[0]), fmt(ring[1])), r=fmt(ring[2]), class_="ring"))
         return outer
@@ -492,9 +720,14 @@ class Drawing:
     def layered(self, caption: Sequence[str] | None = None, *, centred: bool = False) -> str:
         """The canonical figure: every step a ``data-step`` group, nothing highlighted, the figure's caption.
 
-        Still renderers show the whole figure; frame k is the view of steps 1..k.  A plate says so on its
-        root (``<svg class="plate">``): ``construct lint`` holds it to what a printed plate never shows.
+        Still renderers show the whole figure; frame k is the view of steps 1..k.  With an end state
+        (:class:`EndView`) the file shows that: its sheet is the end state's drawing (the root's
+        ``viewBox``, class ``fin`` and the end view's zoom level), every step's group still in it.  A plate
+        says so on its root (``<svg class="plate">``): ``construct lint`` holds it to what a printed plate
+        never shows.
         """
+        if self.end is not None:
+            return self._end_document(caption)
         dwg = self.document(**({"class_": "plate"} if self.plate else {}))
         for e in self.body(len(self.scene.steps), mark_steps=False):
             dwg.add(e)
@@ -503,6 +736,44 @@ class Drawing:
             if cap is not None:
                 dwg.add(cap)
         return self.doc.text(dwg)
+
+    def _end_document(self, caption: Sequence[str] | None) -> str:
+        """The layered figure on the end state's sheet: the end state's drawing shown at the player's screen
+        scale of its view (letters at their size), the caption set beneath it at the screen's size."""
+        e, st = self.end, self.style
+        x0, y0, x1, y1 = e.crop
+        s = e.scale
+        w = (x1 - x0) * s
+        m = st.margin_px
+        lines = Captions(self.scene, width=max(w - 2 * m, 240.0), size=st.caption_size).title_lines(caption) \
+            if st.show_caption else []
+        step = 1.45 * st.caption_size
+        foot = (len(lines) * step + 0.6 * m) if lines else 0.0
+        h = (y1 - y0) * s + foot
+        f = self.doc.factory
+        css = st.css() + "".join("\n" + c for c in (self.extra_css,) if c)
+        # the letter scale written out: every letter inherits the root's --ls here, and a renderer without CSS
+        # variables (cairosvg, Inkscape's import) would drop each element scaled by var() -- letters and points
+        css = _LETTER_SCALE.sub(fmt(e.letter, 4), css).replace(_END_POINTS, _END_POINTS_OWN)
+        dwg = self.doc.drawing(size=(fmt(w), fmt(h)), viewBox=f"{fmt(x0)} {fmt(y0)} {fmt(x1 - x0)} {fmt(h / s)}",
+                               class_=f"fin zl{e.level}", style=f"--ls:{fmt(e.letter, 4)}")
+        dwg.add(f.style("\n" + css + "\n"))
+        dwg.add(f.rect(insert=("-10000", "-10000"), size=("20000", "20000"), id="background", fill=st.background))
+        for el in self.body(len(self.scene.steps), mark_steps=False):
+            dwg.add(el)
+        if lines:
+            g = f.g(id="caption", transform=f"translate({fmt(x0)} {fmt(y1)}) scale({fmt(1 / s, 6)})")
+            for i, (kind, text) in enumerate(lines):
+                g.add(f.text(text, x=[fmt(m)], y=[fmt(st.caption_size + i * step)],
+                             class_=f"cap{(' ' + kind) if kind else ''}"))
+            dwg.add(g)
+        # (and a point's marker at that scale in its radius: such a renderer scales about the origin, not the
+        # marker's centre)
+        root = self.doc.own_tree(dwg)
+        for c in root.iter("circle"):
+            if "pt" in (c.get("class") or "").split():
+                c.set("r", fmt(float(c.get("r")) * e.letter, 3))
+        return self.doc.tree_text(root)
 
     def final(self, caption: Sequence[str] | None = None, *, centred: bool = False) -> str:
         """All steps, nothing highlighted, with the figure's caption lines (the layered figure)."""
@@ -627,20 +898,6 @@ def _start_anchored(items: Sequence[Any], scale: float, style: Style) -> tuple:
             it = dataclasses.replace(it, at=(it.at[0] - w * math.cos(a), it.at[1] - w * math.sin(a)), anchor="start")
         out.append(it)
     return tuple(out)
-
-
-def _entry(box: tuple[float, float, float, float], ux: float, uy: float) -> float:
-    """How far along the unit direction (ux, uy) from the origin a ray enters *box* (infinity: it misses)."""
-    t_in, t_out = 0.0, math.inf
-    for u, lo, hi in ((ux, box[0], box[2]), (uy, box[1], box[3])):
-        if abs(u) < 1e-12:
-            if not lo <= 0.0 <= hi:
-                return math.inf
-            continue
-        t0, t1 = sorted((lo / u, hi / u))
-        t_in, t_out = max(t_in, t0), min(t_out, t1)
-    return t_in if t_in <= t_out else math.inf
-
 
 
 def _is_view(elem: Any) -> bool:

@@ -31,6 +31,7 @@ root's opening tag starts a line of its own.
 
 from __future__ import annotations
 
+import copy
 import functools
 import xml.etree.ElementTree as ET
 from typing import Any
@@ -204,6 +205,17 @@ class Writer:
     def text(self, dwg: Any) -> str:
         """*dwg* as a standalone SVG file's text, as svgwrite's ``Drawing.write`` lays it out."""
         return XML_DECLARATION + self.markup(dwg) + "\n"
+
+    def own_tree(self, dwg: Any) -> ET.Element:
+        """The ElementTree of *dwg* as :meth:`svg_element` gives it, its shared elements copied: the caller may
+        change it without changing another document (:meth:`tree_text` writes it)."""
+        return copy.deepcopy(self.svg_element(dwg))
+
+    def tree_text(self, root: ET.Element) -> str:
+        """The ElementTree *root* (:meth:`own_tree`) as a standalone SVG file's text, as :meth:`text` writes."""
+        out: list[str] = []
+        self._write(root, out)
+        return XML_DECLARATION + "".join(out) + "\n"
 
 
 def _escape_text(text: str) -> str:

@@ -30,7 +30,7 @@ def run(args) -> int:
         return 0
     checks = run_checks(c, fig)
     ok = all(ch.ok for ch in checks)
-    params = {k: v for k, v in jsonable(dict(fig.params)).items() if k not in ("group_titles", "plate")}
+    params = {k: v for k, v in jsonable(dict(fig.params)).items() if k not in ("group_titles", "plate", "called")}
     params["givens"] = dict(fig.replay.givens)
     if args.format == "json":
         print(json.dumps({"construction": c.name, "params": params, "ok": ok,

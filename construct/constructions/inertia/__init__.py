@@ -72,7 +72,7 @@ def inertia_plate(fig) -> dict:
     r = O.distance(D1)
     E, F = R["Einf"], R["Finf"]
     unit = fig.replay.givens["pressure_unit"]
-    foot5, q5 = R["X.c90"], R["q5"]
+    foot5, q5 = R["X.top"], R["q5"]
     t = 0.42
     on_inf = (E[0] + t * (F[0] - E[0]), E[1] + t * (F[1] - E[1]))
     up, down = R[f"K{max(1, n // 6)}"], R[f"K{n - max(1, n // 6)}"]

@@ -71,7 +71,7 @@ def _piston(b: Builder, c: _Ctx, tag: str, P: str, *, label: str | None = None, 
 def _root_point(b: Builder, c: _Ctx, tag: str, H: str, what: tuple[str, str]) -> str:
     """r cos w = (sqrt(L^2 + OH^2) - L) / 4 as a crank point: hypotenuse SH, less SO = L, halved twice."""
     O = c.O
-    with b.group(f"crank angle of {tag}: {what[1]}", f"Kurbelwinkel zu {tag}: {what[0]}"):
+    with b.group(f"crank angle of q{tag[1:]}: {what[1]}", f"Kurbelwinkel zu q{tag[1:]}: {what[0]}"):
         k = b.circle_through(f"{tag}.h", c.angle.vertex, H, de=f"Kreis um S durch {H}: S{H} = √(L² + O{H}²)",
                              en=f"circle about S through {H}: S{H} = sqrt(L^2 + O{H}^2)")
         N = b.intersect(f"{tag}.N", c.vert, k, rule=("toward", O, None, 0.0, 1.0),
@@ -157,8 +157,8 @@ def _characteristic(b: Builder, c: _Ctx, n: int) -> None:
             b.intersect(label, ordl, k, rule=("toward", foot, I), role="result", labels={label: lowered(label)},
                         de=f"{label} = F/f·cos ω", en=f"{label} = F/f cos w")
     with b.group("characteristic point q5 = -m (90 degrees)", "Charakteristischer Punkt q5 = −m (90°)"):
-        X = _piston(b, c, "c90", c.top)
-        ordl = _ordinate_line(b, c, "c90.o", X)
+        X = _piston(b, c, "top", c.top)  # the piston position of the crank at 90°: X(90°)
+        ordl = _ordinate_line(b, c, "top.o", X)
         k = b.circle_segment("q5.k", X, c.gf.origin, m, de="m nach unten aufgetragen", en="m laid off downwards")
         q5 = b.intersect("q5", ordl, k, rule=down, role="result", labels={"q5": "q₅"}, de="q5 = −m", en="q5 = -m")
     with b.group("characteristic point q6 = 0", "Charakteristischer Punkt q6 = 0"):
@@ -182,7 +182,7 @@ def _characteristic(b: Builder, c: _Ctx, n: int) -> None:
         E, F = "K0", f"K{n}"
         ef = b.line("EF", E, F, de="EF ist parallel zur Geraden für unendliche Stange",
                     en="EF is parallel to the infinite-rod line")
-        Dx = b.intersect("Dx", ef, c.axis, rule=("only",), de="EF schneidet die Achse bei x = (1 + r/L)·r",
+        Dx = b.intersect("D.1", ef, c.axis, rule=("only",), de="EF schneidet die Achse bei x = (1 + r/L)·r",
                          en="EF crosses the axis at x = (1 + r/L) r")
         ordD = _ordinate_line(b, c, "ordD", Dx)
         I = b.intersect("D.I", ordD, inf, rule=("only",), de="dort hat die Gerade die Ordinate −m",

@@ -97,7 +97,7 @@ def build_q_at_stroke_fractions(*, rod_ratio: float, divisions: int, r: float = 
                                 en=f"crank position W{j}", labels={f"W{j}": str(j)})
                 kind = "generic"
             dc_p = c.D0 if b[P][0] * stroke_direction(b, c) < b[c.O][0] * stroke_direction(b, c) else c.D1
-            ordinate_value(b, c, f"t{j}", P, kind, dc_p, None)
+            ordinate_value(b, c, f"t{j}", P, kind, dc_p, None, number=str(j))
             b.set_label(f"Vt{j}", lowered(f"q{j}"))
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))

@@ -209,7 +209,7 @@ def build_piston_force(*, parts: int, method: str, revolution: bool = False, ind
                                                                    to_crank=True)
                 _carry(b, f"K{tag}", foot, o, back, pr["steam"],
                        de=f"Kolbenkraft K{tag} = F·p_ü (Gegendruck bis Dampflinie)",
-                       en=f"piston force K{tag} = F p_ü (back pressure to steam line)")
+                       en=f"piston force K{tag} = F·p_ü (back pressure to steam line)")
     with b.group("mass forces (eq. 298) at all piston positions", "Massenkräfte (Gl. 298) an allen Kolbenstellungen"):
         for k, P in enumerate(points):
             kind = point_kind(k, n)

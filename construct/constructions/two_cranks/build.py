@@ -92,6 +92,22 @@ def validate_two_cranks(givens: Mapping[str, Any]) -> None:
 NICE_MAGNIFICATIONS = (8.0, 5.0, 4.0, 2.0, 1.0, 0.5, 0.25, 0.1)
 
 
+def derived_givens(g: Mapping[str, Any], params: Mapping[str, Any]) -> dict[str, Any]:
+    """The givens that follow from the others: a magnification the figure chose itself (params "magnify" is
+    "auto") is chosen again for the rod (:func:`auto_magnification`: 8 at L/r = 5, 5 at 3, 4 at 2), as a fresh
+    build at that rod chooses it; one the user gave stays.  Arrays (a sweep's) give arrays.
+
+    >>> derived_givens({"rod_ratio": 3.0, "fluctuation": 0.25, "magnify": 8.0}, {"magnify": "auto"})["magnify"]
+    5.0
+    >>> derived_givens({"rod_ratio": 3.0, "fluctuation": 0.25, "magnify": 2.0}, {})["magnify"]
+    2.0
+    """
+    out = dict(g)
+    if params.get("magnify") == "auto" and "rod_ratio" in out:
+        out["magnify"] = auto_magnification(out["rod_ratio"], out["fluctuation"])
+    return out
+
+
 def auto_magnification(rod_ratio: Any, fluctuation: float) -> Any:
     """The largest of :data:`NICE_MAGNIFICATIONS` that keeps every speed radius above 0.4 r.
 
@@ -277,9 +293,9 @@ def _radii(b: Builder, part: _Part, speed: _Speed, n: int, start: int = 0) -> _P
         for j in range(m):
             with b.group(f"speed at crank position {j}", f"Geschwindigkeit in Kurbelstellung {j}"):
                 k = b.circle_segment(f"{tag}V{j}.k", speed.one.origin, part.means[j], part.ends[j],
-                                     de=f"M{j}E{j} auf die Maßlinie r", en=f"M{j}E{j} onto the scale line r")
+                                     de=f"M{j}–E{j} auf die Maßlinie r", en=f"M{j}–E{j} onto the scale line r")
                 V = b.intersect(f"{tag}V{j}", speed.one.line, k, rule=("toward", speed.angle.vertex, None, 0.0, -1.0),
-                                de=f"V{j}: M{j}E{j} auf der Maßlinie r", en=f"V{j}: M{j}E{j} on the scale line r")
+                                de=f"V{j}: M{j}–E{j} auf der Maßlinie r", en=f"V{j}: M{j}–E{j} on the scale line r")
                 Vg = carry_across(b, speed.angle, f"{tag}Vg{j}", V, speed.gain,
                                   de=f"auf die Maßlinie g·r: r {pm} g·e{j}", en=f"onto the scale line g r: r {pm} g e{j}")
                 point = part.crank_points[(start + j) % m]
@@ -331,21 +347,22 @@ def _kochanski(b: Builder, part: _Part, n: int) -> None:
                         en="height r sin 2 alpha above the stroke line")
         hline = b.erect_perpendicular("K.h", H, d, bottom)
         b.intersect(("K.G1", "K.G2"), hline, circle, rule=("toward", C, D0), de="Punkte bei 2α₁ und 2α₂ = 180° − 2α₁",
-                    en="points at 2 alpha1 and 2 alpha2 = 180 - 2 alpha1")
+                    en="points at 2α₁ and 2α₂ = 180° − 2α₁")
         err = kochanski_angle_error()
         angle_prov = Provenance("approximate", "Kochański's rectification (1685)", err)  # its error in the angle
         least_first = b.givens["sense"] > 0   # § 146: "Bei der Bewegung von Pumpen ... das Gegentheil"
         for i, (G, word) in enumerate((("K.G1", "kleinste" if least_first else "größte"),
                                        ("K.G2", "größte" if least_first else "kleinste")), start=1):
             name = f"K.M{i}"
-            with b.group(f"arc {D0}{G} bisected: alpha{i}", f"Bogen {D0}{G} halbiert: α{i}"):
+            with b.group(f"arc {D0}{G} bisected: α{'₁₂'[i - 1]}", f"Bogen {D0}{G} halbiert: α{'₁₂'[i - 1]}"):
                 ka = b.circle_through(b.fresh(f"{name}.k"), D0, G)
                 kb = b.circle_through(b.fresh(f"{name}.k"), G, D0)
                 s = b.intersect(b.fresh(f"{name}.S"), ka, kb, rule=("farther", C))
                 w = b.line(b.fresh(f"{name}.w"), C, s)
+                sub = "₁₂"[i - 1]
                 b.record("intersect", "intersect", (w, circle), (name,), {"rule": ("nearer", s), "both": False},
-                         f"M{i}: α{i}, {word} Geschwindigkeit",
-                         f"M{i}: alpha{i}, the {'least' if word == 'kleinste' else 'greatest'} speed",
+                         f"M{i}: α{sub}, {word} Geschwindigkeit",
+                         f"M{i}: α{sub}, the {'least' if word == 'kleinste' else 'greatest'} speed",
                          provenance=angle_prov, role="result")
     return None
 
@@ -391,8 +408,9 @@ def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method
                      drive: str = "engine") -> Figure:
     infinite_rod = bool(infinite_rod)
     start_angle(dead_centre)
+    chosen = magnify is None  # the figure chooses it: again at every rod (derived_givens)
     sign = drive_sign(drive)
-    if magnify is None:
+    if chosen:
         magnify = auto_magnification(rod_ratio_param(rod_ratio),
                                      bounded("fluctuation Qr/((m1+m2) v1^2)", fluctuation, FLUCTUATION))
     givens = _givens(r, rod_ratio, fluctuation, magnify, sign)
@@ -400,9 +418,11 @@ def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method
     used = _check_parts(parts, method)
     n = parts
     b = Builder("two-cranks", givens, {"parts": n, "method": used, "requested_method": method,
-                                       "infinite_rod": infinite_rod, "dead_centre": dead_centre, "drive": drive})
+                                       "infinite_rod": infinite_rod, "dead_centre": dead_centre, "drive": drive,
+                                       **({"magnify": "auto"} if chosen else {})})
     start = n if dead_centre == "crank-end" else 0
     f = build_frame(b)
+    b.set_label(f["L"], "l")  # § 146 writes the rod length l (the title's r/l): its captions too
     upper = divide_semicircle(b, O=f["O"], D0=f["D0"], D1=f["D1"], circle=f["circle"], axis=f["axis"], n=n,
                               method=used)
     lower = _mirror_points(b, "", f["O"], f["D0"], f["D1"], f["circle"], upper)

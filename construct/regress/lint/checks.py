@@ -34,17 +34,19 @@ from __future__ import annotations
 
 import bisect
 import math
+import re
 from collections import defaultdict
 from dataclasses import dataclass
 from typing import Iterable, Iterator
 
 from ...render.lettering import segment_meets_box
 from . import plates
-from .sheet import Box, Sheet
+from .sheet import END_LEVEL, Box, Sheet
 
 __all__ = ["Finding", "KINDS", "check_sheet", "view_count", "MIN_LABEL_PX", "MIN_MARK_PX", "MIN_OPACITY", "VIEW"]
 
-KINDS = ("overlap", "on-point", "struck", "small-label", "small-mark", "outside") + plates.KINDS
+KINDS = ("overlap", "on-point", "struck", "small-label", "small-mark", "outside", "leader", "caption-name",
+         "fill") + plates.KINDS
 #: Letters smaller than this on the screen cannot be read from a seat in the classroom (px).
 MIN_LABEL_PX = 9.0
 #: The current step's mark must be at least this large on the screen to be seen at once (px).
@@ -55,6 +57,18 @@ MIN_OPACITY = 0.25
 VIEW = (1400.0, 1000.0)
 #: Overlaps thinner than this (user units) are a touch, not a collision.
 TOUCH = 0.25
+#: A leader starts at its point and ends at its letter: each end within this many letter heights of them.
+LEADER_REACH = 0.6
+#: A figure whose drawing fills less than this fraction of its canvas, across or down, is mostly paper.
+MIN_FILL = 0.6
+#: A letter of the figure as a caption names it: one letter, a number below 20 or two digits with a prime,
+#: subscripts, primes (:data:`construct.render.scene.FIGURE_LETTER`, written out here: lint reads files).
+FIGURE_LETTER = re.compile(r"[A-Za-zΑ-Ωα-ω][0-9]{0,2}[′″'₀-₉]*|[0-9]{1,2}[′″']?")
+#: A word of a caption that names something: a letter with digits, primes or subscripts, or a lone letter
+#: (not a letter of a formula: F/f, r/L, r·cos, p(1 + tg β); not an angle's name, ∠AO5).
+_NAMED = re.compile(r"(?<![\w′'″₀-₉./·∠])([A-Za-zΑ-Ωα-ω][A-Za-zΑ-Ωα-ω0-9₀-₉∞]*[′'″]*)(?![\w′'″₀-₉/·∞(])")
+#: An internal name: letters and digits run together the way no figure letters them (c135, cPV10, to42a, t110).
+_INTERNAL = re.compile(r"[A-Za-z]+[0-9]+[A-Za-z0-9]*|[a-z]+[A-Z][A-Za-z0-9]*")
 #: Cell of the spatial index, user units (about two letters).
 CELL = 32.0
 
@@ -241,6 +255,13 @@ class _Layout:
     level: int = 0
     letter: float = 1.0
     stroke: float = 1.0
+    #: The end state's view (the last step of a figure that has one): its letters stand where it sets them.
+    fin: bool = False
+
+    @property
+    def moves_key(self) -> int:
+        """The key of the letter moves this layout applies (:attr:`Sheet.moves`): its level's, or the end's."""
+        return END_LEVEL if self.fin else self.level
 
 
 class _Views:
@@ -289,9 +310,10 @@ class _Views:
         everything = self.all()
         if not self.cameras or (not self.stepped and self.single not in self.cameras):
             return [_Layout(everything, self.whole, 1.0 / self.scale(everything[0][0]))]
-        by_box: dict[Box, list[int]] = defaultdict(list)
+        by_box: dict[tuple, list[int]] = defaultdict(list)
+        end = self.sheet.end and self.stepped
         for k in _steps_of(everything):
-            by_box[self.box(k)].append(k)
+            by_box[(self.box(k), end and k == self.sheet.n)].append(k)
         out = []
         # the whole figure the camera moves over (its widest and tallest view: the first step's is the whole
         # drawing, without the caption), and its user units per screen pixel in the window
@@ -299,10 +321,10 @@ class _Views:
         cams = list(self.cameras.values())
         fw, fh = max(c[2] - c[0] for c in cams), max(c[3] - c[1] for c in cams)
         q_whole = max(fw / ww, fh / wh)
-        for b, ks in by_box.items():
+        for (b, fin), ks in by_box.items():
             q = 1.0 / self.scale(ks[0])
             if not self.player:
-                out.append(_Layout(_runs(ks), b, q))
+                out.append(_Layout(_runs(ks), b, q, fin=fin))
                 continue
             # the player fits the view into its window (preserveAspectRatio meet): what shows is wider or taller
             w, h = player_window(self.screen)
@@ -310,12 +332,13 @@ class _Views:
             seen = (cx - w * q / 2, cy - h * q / 2, cx + w * q / 2, cy + h * q / 2)
             zoom = q_whole / q  # how many times the window shows the view larger than the whole figure
             level = zoom_level(zoom, self.sheet.levels)
-            out.append(_Layout(_runs(ks), seen, q, level, player_letter_scale(q, zoom, self.sheet.levels[level]), q))
+            out.append(_Layout(_runs(ks), seen, q, level, player_letter_scale(q, zoom, self.sheet.levels[level]), q,
+                               fin))
         return out
 
     def text_box(self, t, lay: _Layout) -> Box:
         """Where a letter stands in a layout: scaled (and moved at its zoom level) about its point."""
-        move = self.sheet.moves.get((lay.level, t.group)) if lay.level and t.group else None
+        move = self.sheet.moves.get((lay.moves_key, t.group)) if lay.moves_key and t.group else None
         if t.anchor is None or (lay.letter == 1.0 and move is None):
             return t.box
         ax, ay = t.anchor
@@ -338,8 +361,9 @@ class _Views:
         sheet, n = self.sheet, self.sheet.n
         if not self.stepped:
             got = [(self.single, self.single)] if self._seen(chain, None, level) else []
-        elif step is None:
-            got = [(1, n)] if self._seen(chain, None, level) else []
+        elif step is None:  # outside the steps: the end state's own furniture is seen at the last step only
+            got = _merge(([(1, n - 1)] if self._seen(chain, "", level) else [])
+                         + ([(n, n)] if self._seen(chain, None, level) else []))
         else:
             s = step
             runs: Runs = []
@@ -383,18 +407,19 @@ class _Views:
         boxes, anchored, points, units = self._text_arrays()
         texts = self.sheet.texts
         level_moves = self.__dict__.setdefault("_level_moves", {})
-        if lay.level not in level_moves:  # the texts a zoom level moves, and by how much
+        key = lay.moves_key
+        if key not in level_moves:  # the texts a zoom level (or the end state) moves, and by how much
             moves = self.sheet.moves
             moved = np.zeros(len(texts), dtype=bool)
             d = np.zeros((len(texts), 2))
-            if lay.level and moves:
+            if key and moves:
                 for i, t in enumerate(texts):
-                    m = moves.get((lay.level, t.group)) if t.group else None
+                    m = moves.get((key, t.group)) if t.group else None
                     if m is not None:
                         moved[i] = True
                         d[i] = (m[0] * t.unit, m[1] * t.unit)
-            level_moves[lay.level] = (moved, d)
-        moved, d = level_moves[lay.level]
+            level_moves[key] = (moved, d)
+        moved, d = level_moves[key]
         if lay.letter == 1.0 and not moved.any():
             b = boxes
         else:
@@ -441,6 +466,9 @@ def check_sheet(sheet: Sheet, screen: tuple[float, float] = VIEW) -> list[Findin
     out += _small_labels(sheet, views, seen)
     out += _small_marks(sheet, views)
     out += _outside(sheet, views, seen)
+    out += _leaders(sheet, views)
+    out += _caption_names(sheet, views, seen)
+    out += _fill(sheet, views)
     out += plates.check_plate(sheet, lambda kind, labels, ids, message: _finding(kind, sheet, views, views.all(),
                                                                                  labels, ids, message))
     return out
@@ -625,7 +653,8 @@ def _small_labels(sheet: Sheet, views: _Views, seen) -> list[Finding]:
         for t, b, runs in letters:
             if t.kind == "caption":
                 continue
-            px = t.size * lay.letter / lay.q
+            # a letter about its point is drawn at the player's letter scale; lettering set on the sheet is not
+            px = t.size * (lay.letter if t.anchor is not None else 1.0) / lay.q
             if px < MIN_LABEL_PX:
                 rs, texts = found.setdefault(round(px, 1), ([], set()))
                 rs.extend(runs)
@@ -728,3 +757,129 @@ def _outside(sheet: Sheet, views: _Views, seen) -> list[Finding]:
 def _few(texts: list[str], most: int = 8) -> str:
     shown = ", ".join(texts[:most])
     return shown + (f", … ({len(texts)} in all)" if len(texts) > most else "")
+
+
+def _leaders(sheet: Sheet, views: _Views) -> list[Finding]:
+    """A leader must start at its point (drawn in that view) and end at its letter, in every view that shows it."""
+    if not sheet.leaders:
+        return []
+    letters: dict[int, list] = defaultdict(list)
+    for t in sheet.texts:
+        if t.lbg is not None and t.kind != "caption":
+            letters[t.lbg].append(t)
+    dots: dict[tuple[float, float], list] = defaultdict(list)
+    for d in sheet.dots:
+        dots[(round(d.x), round(d.y))].append(d)
+    found: dict[tuple[int, str], list] = defaultdict(list)
+    for lay in views.layouts:
+        x0, y0, x1, y1 = lay.box
+        for i, ld in enumerate(sheet.leaders):
+            ax, ay = ld.anchor
+            if not (x0 <= ax <= x1 and y0 <= ay <= y1):
+                continue
+            runs = _both(views.shown(ld.chain, ld.step, lay.level), lay.runs)
+            if not runs or not letters.get(ld.lbg):
+                continue
+            t = letters[ld.lbg][0]
+            s, u = lay.letter, ld.unit
+            dx, dy = (sheet.moves.get((lay.moves_key, ld.group), (0.0, 0.0))
+                      if ld.group and (lay.moves_key, ld.group) in sheet.moved_leaders else (0.0, 0.0))
+            a = (ax + s * u * (ld.line[0] + dx), ay + s * u * (ld.line[1] + dy))
+            b = (ax + s * u * (ld.line[2] + dx), ay + s * u * (ld.line[3] + dy))
+            reach = LEADER_REACH * t.size * s
+            if math.hypot(a[0] - ax, a[1] - ay) > reach:
+                found[(i, "point")].extend(runs)
+            tb = views.text_box(t, lay)
+            if math.hypot(b[0] - min(max(b[0], tb[0]), tb[2]), b[1] - min(max(b[1], tb[1]), tb[3])) > reach:
+                found[(i, "letter")].extend(runs)
+            # its point is drawn there: a marker at the anchor, seen in the same views
+            seen = _merge(r for d in dots.get((round(ax), round(ay)), ())
+                          if math.hypot(d.x - ax, d.y - ay) <= 1.0 for r in views.shown(d.chain, d.step, lay.level))
+            for k in _steps_of(runs):
+                if not _contains(seen, k):
+                    found[(i, "hidden")].append((k, k))
+    out = []
+    what = {"point": "starts away from its point", "letter": "ends away from its letter",
+            "hidden": "points at a point the view does not draw"}
+    for (i, why), runs in sorted(found.items()):
+        ld = sheet.leaders[i]
+        t = letters[ld.lbg][0]
+        out.append(_finding("leader", sheet, views, _merge(runs), (t.text,), (ld.ident or t.ident,),
+                            f"the leader of {t.kind} {t.name} {what[why]}"))
+    return out
+
+
+def _caption_names(sheet: Sheet, views: _Views, seen) -> list[Finding]:
+    """A step's caption names only letters its view shows, and never an internal name (c135, cPV10).
+
+    A name the figure letters somewhere (a letter or a name tag) must be seen in the step's view; a name no
+    letter of the figure carries is a quantity of the caption (s1, P0) unless it is written the way no figure
+    letters a point (letters and digits run together: an object's internal name); a point named before the
+    step that makes it is what the group sets out to make.  The German caption and
+    the title of the step's own group (the last of the group path) are read whole; in the English one a lone
+    "a" is the article.
+    """
+    if not sheet.captions or not views.stepped:
+        return []
+    # the letters of points (a lettered line's letter, r or L, stands at a point of its own that is never
+    # drawn: in a caption it is a length)
+    drawn = {d.ident for d in sheet.dots if d.ident and sheet.look(d.chain).shown}
+    lettered: dict[str, int] = {}  # a point's letter: from the step that makes the point on
+    for t in sheet.texts:
+        if t.kind == "tag" or (t.kind == "label" and t.owner in drawn):
+            lettered[t.text] = min(lettered.get(t.text, sheet.n + 1), t.step or 0)
+    shown: dict[int, set[str]] = defaultdict(set)
+    for lay, letters in seen:
+        for t, _b, runs in letters:
+            if t.kind != "caption":
+                for k in _steps_of(runs):
+                    shown[k].add(t.text)
+    found: dict[tuple[str, str], list] = defaultdict(list)
+    for k, texts in sheet.captions.items():
+        for j, text in enumerate(texts):
+            if j == 2:
+                text = text.rsplit(" › ", 1)[-1]  # the step's own group; the path above it names its stage
+            for name in dict.fromkeys(_NAMED.findall(text)):
+                if j == 1 and name == "a":
+                    continue
+                if name in lettered:
+                    # (a point named before it is made is the group's goal: "Hyperbelpunkt U5 durch …")
+                    if lettered[name] <= k and name not in shown.get(k, ()):
+                        found[(name, "unlettered")].append((k, k))
+                elif _INTERNAL.fullmatch(name) and not FIGURE_LETTER.fullmatch(name):
+                    found[(name, "internal")].append((k, k))
+    out = []
+    for (name, why), runs in sorted(found.items()):
+        msg = (f"the caption names {name!r}, which the step's view does not letter" if why == "unlettered" else
+               f"the caption names {name!r}, an internal name the figure does not letter")
+        out.append(_finding("caption-name", sheet, views, _merge(runs), (name,), (), msg))
+    return out
+
+
+def _fill(sheet: Sheet, views: _Views) -> list[Finding]:
+    """A figure's drawing fills its canvas: at least :data:`MIN_FILL` of its width and of its height (the
+    caption lines aside), as the file shows it."""
+    if sheet.frame is not None or not sheet.inked:
+        return []
+    box = None
+    for chain, b in sheet.inked:
+        look = sheet.look(chain)
+        if look.shown and look.opacity >= MIN_OPACITY:
+            box = b if box is None else (min(box[0], b[0]), min(box[1], b[1]), max(box[2], b[2]), max(box[3], b[3]))
+    for t in sheet.texts:
+        if t.kind != "caption" and sheet.look(t.chain).shown:
+            b = t.box
+            box = b if box is None else (min(box[0], b[0]), min(box[1], b[1]), max(box[2], b[2]), max(box[3], b[3]))
+    if box is None:
+        return []
+    x, y, w, h = sheet.viewbox
+    caps = [t.box[1] for t in sheet.texts if t.kind == "caption" and t.box[1] > box[1]]
+    bottom = min([y + h] + caps)
+    # what lies on the canvas
+    bx0, by0, bx1, by1 = max(box[0], x), max(box[1], y), min(box[2], x + w), min(box[3], bottom)
+    across, down = max(bx1 - bx0, 0.0) / w, max(by1 - by0, 0.0) / max(bottom - y, 1e-9)
+    if across >= MIN_FILL and down >= MIN_FILL:
+        return []
+    return [_finding("fill", sheet, views, [(sheet.n, sheet.n)] if views.stepped else [], (), (),
+                     f"the drawing fills {across:.0%} of the canvas's width and {down:.0%} of its height "
+                     f"(the caption aside; < {MIN_FILL:.0%}): crop the canvas to the drawing")]

@@ -26,7 +26,7 @@ round the glyphs does not hide it (the line still runs through the
 letter's counters and between its glyphs).  A letter's own leader counts
 too: it should end where the letter's white begins.
 
->>> svg = '''<svg xmlns="http://www.w3.org/2000/svg" class="plate" viewBox="0 0 200 100">
+>>> svg = '''<svg xmlns="http://www.w3.org/2000/svg" class="plate" viewBox="90 15 60 70">
 ... <style>.lb{font-family:'DejaVu Serif';font-size:12px;text-anchor:middle}.thin{stroke:black;stroke-width:0.5}</style>
 ... <line class="thin" x1="100" y1="20" x2="100" y2="80"/><text class="lb" x="100" y="54">1</text>
 ... <text class="lb" x="140" y="54">2</text></svg>'''

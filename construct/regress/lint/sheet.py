@@ -41,8 +41,8 @@ from ..svgdiff.geometry import arc_centre, parse_path, parse_transform
 from .cascade import PROPERTIES, Cascade, Look, Node, declarations
 from .fonts import text_extents
 
-__all__ = ["Sheet", "Text", "Dot", "Stroke", "Line", "read_sheet", "read_views", "player_data", "LintInputError",
-           "STATES", "Box", "read_moves"]
+__all__ = ["Sheet", "Text", "Dot", "Stroke", "Line", "Leader", "read_sheet", "read_views", "player_data",
+           "LintInputError", "STATES", "Box", "read_moves", "END", "END_LEVEL"]
 
 Box = tuple[float, float, float, float]
 Matrix = tuple[float, float, float, float, float, float]
@@ -70,6 +70,12 @@ _SKIPPED_IDS = {"inset"}
 
 
 _PROPERTY_SET = frozenset(PROPERTIES)
+#: The class of a figure's root (or camera group) that shows its end state: the player's last step.
+END = "fin"
+#: A zoom level's class (``zl3``).
+_ZOOM_CLASS = re.compile(r"zl\d+")
+#: The key of the end state's letter moves in :attr:`Sheet.moves` (in place of a zoom level).
+END_LEVEL = -1
 #: Marks a step's group in a chain (its state classes are what a view changes).
 _STEP_GROUP = ("#step-group", "")
 _STATE_CLASSES = frozenset(STATES)
@@ -98,6 +104,8 @@ class Text:
     #: The id of its letter group (a zoom level's rule moves it by that id), and the group's own scale.
     group: str | None = None
     unit: float = 1.0
+    #: Its letter group, numbered in the order the groups stand in the file (None: set on the sheet).
+    lbg: int | None = None
     #: The box its glyphs' ink covers in its own coordinates (before its transforms), and those transforms:
     #: a turned letter's ink is a turned box on the sheet (a plate's core test, :mod:`.plates`).
     ink: Box = (0.0, 0.0, 0.0, 0.0)
@@ -132,6 +140,25 @@ class Stroke:
 
 
 @dataclass(frozen=True, slots=True)
+class Leader:
+    """A leader line of a letter group: from near its point towards its letter, about the point (its anchor).
+
+    ``line`` is (x1, y1, x2, y2) in the group's own units, from the point's end; a view draws it scaled by the
+    player's letter scale about the anchor (and, in drawings made before leaders were drawn per zoom level,
+    moved with the letter).
+    """
+
+    ident: str | None
+    step: int | None
+    chain: tuple[Node, ...]
+    anchor: tuple[float, float]
+    line: tuple[float, float, float, float]
+    group: str | None
+    unit: float
+    lbg: int
+
+
+@dataclass(frozen=True, slots=True)
 class Line:
     """Any stroked line of a plate (construction, result, furniture, hatching, a leader): its straight
     pieces and half its stroke width."""
@@ -163,6 +190,11 @@ class Sheet:
     dots: list[Dot] = field(default_factory=list)
     strokes: list[Stroke] = field(default_factory=list)
     drawn: list[Drawn] = field(default_factory=list)
+    leaders: list[Leader] = field(default_factory=list)
+    #: Every drawn element but the paper (any step, the furniture too): its chain and box with its stroke.
+    inked: list[tuple[tuple[Node, ...], Box]] = field(default_factory=list)
+    #: The (zoom level, letter group id) whose rule moves the leader with the letter (``#id>.leader``, ``#id>*``).
+    moved_leaders: set[tuple[int, str]] = field(default_factory=set)
     #: The steps that have groups, and the last of them (0: none).
     steps: list[int] = field(default_factory=list)
     n: int = 0
@@ -189,6 +221,11 @@ class Sheet:
     moves: dict[tuple[int, str], tuple[float, float]] = field(default_factory=dict)
     #: Per step, the ring the player draws round a small current mark: (cx, cy, r) as its data gives it.
     rings: dict[int, tuple[float, float, float]] = field(default_factory=dict)
+    #: The file shows an end state (class ``fin`` on its root): the last step's view; the steps before show
+    #: the figure without it (the player sets the class at the last step only).
+    end: bool = False
+    #: Per step, what the player writes beside the figure: its caption (German, English) and its group's.
+    captions: dict[int, tuple[str, ...]] = field(default_factory=dict)
     #: A plate (the root ``<svg class="plate">``): one still view, read for every stroked line (:attr:`lines`).
     plate: bool = False
     #: A plate's stroked lines of every kind (read for plates only: a stepped figure has thousands).
@@ -206,9 +243,14 @@ class Sheet:
         return got
 
     def _look(self, chain: tuple[Node, ...], state: str | None, level: int) -> Look:
-        if level:
-            root = chain[0]
-            chain = ((root[0], root[1], root[2] | {f"zl{level}"}, root[3]),) + chain[1:]
+        root = chain[0]
+        classes = root[2]
+        if state is not None:
+            classes = classes - {END}  # a step's view before the last: the player shows no end state
+        if level or any(c.startswith("zl") for c in classes):  # the view's zoom level, in place of the file's
+            classes = frozenset(c for c in classes if not _ZOOM_CLASS.fullmatch(c)) | {f"zl{level}"}
+        if classes is not root[2]:
+            chain = ((root[0], root[1], classes, root[3]),) + chain[1:]
         if state is None:
             return self.cascade.look(chain)
         for i in range(len(chain) - 1, -1, -1):
@@ -285,9 +327,10 @@ def read_views(root: ET.Element, data: dict | None) -> dict[int, tuple[float, fl
 _MOVE = re.compile(r"translate\(\s*([-+\d.eE]+)(?:px)?\s*[, ]\s*([-+\d.eE]+)(?:px)?\s*\)")
 
 
-def read_moves(css: str) -> dict[tuple[int, str], tuple[float, float]]:
-    """The letters a zoom level moves: ``.zlN #id>.lb,.zlN #id>.leader{transform:scale(..) translate(dx, dy)}``
-    rules (earlier drawings wrote ``#id>*``).
+def read_moves(css: str, leaders: set | None = None) -> dict[tuple[int, str], tuple[float, float]]:
+    """The letters a zoom level (or the end state, ``.fin``: key :data:`END_LEVEL`) moves:
+    ``.zlN #id>.lb{transform:scale(..) translate(dx, dy)}`` rules (earlier drawings wrote ``#id>*`` or moved
+    the leader too, ``#id>.leader``: those (level, id) are added to *leaders*).
 
     >>> read_moves(".zl1 #a-lb>.lb,.zl1 #a-lb>.leader,.zl3 #a-lb>.lb{transform:scale(var(--ls,var(--zs))) "
     ...            "translate(-9.4px,2px)}")
@@ -301,9 +344,12 @@ def read_moves(css: str) -> dict[tuple[int, str], tuple[float, float]]:
         if not m or "transform" not in block.group(2):
             continue
         for sel in block.group(1).split(","):
-            t = re.fullmatch(r"\s*\.zl(\d+)\s+#([\w-]+)\s*>\s*(?:\*|\.lb|\.leader)\s*", sel)
+            t = re.fullmatch(r"\s*\.(zl\d+|fin)\s+#([\w-]+)\s*>\s*(\*|\.lb|\.leader)\s*", sel)
             if t:
-                out[(int(t.group(1)), t.group(2))] = (float(m.group(1)), float(m.group(2)))
+                lvl = END_LEVEL if t.group(1) == END else int(t.group(1)[2:])
+                out[(lvl, t.group(2))] = (float(m.group(1)), float(m.group(2)))
+                if leaders is not None and t.group(3) != ".lb":
+                    leaders.add((lvl, t.group(2)))
     return out
 
 
@@ -493,17 +539,25 @@ def read_sheet(source: str | bytes | Path, name: str, *, data: dict | None = Non
     current = [k for k, s in sheet.file_states.items() if s == "cur"]
     sheet.frame = current[0] if len(current) == 1 else None
     sheet.views = read_views(root, data)
-    sheet.moves = read_moves(css)
+    sheet.moves = read_moves(css, sheet.moved_leaders)
     camera_layer = any(_local(e.tag) == "g" and e.get("id") == "views" for e in root)
     sheet.player = bool(sheet.views) and (bool(data) or camera_layer)
     sheet.unplayed = camera_layer and not data
+    sheet.end = END in root.get("class", "").split()
     if data:
+        if isinstance(data.get("steps"), list):
+            sheet.n = max(sheet.n, len(data["steps"]))  # a last step that draws nothing is still a view
         levels = data.get("levels")
         if isinstance(levels, list) and levels and all(isinstance(z, (int, float)) and z > 0 for z in levels):
             sheet.levels = tuple(float(z) for z in levels)
+        groups = data.get("groups") if isinstance(data.get("groups"), list) else []
         for k, st in enumerate(data.get("steps") or (), start=1):
             if isinstance(st, dict) and isinstance(st.get("i"), list):
                 sheet.inputs[k] = tuple(int(i) for i in st["i"] if isinstance(i, int))
+            if isinstance(st, dict):
+                g = st.get("g")
+                group = groups[g] if isinstance(g, int) and 0 <= g < len(groups) else ""
+                sheet.captions[k] = tuple(str(t) for t in (st.get("de", ""), st.get("en", ""), group))
             r = st.get("r") if isinstance(st, dict) else None
             if isinstance(r, list) and len(r) == 3 and all(isinstance(v, (int, float)) for v in r):
                 sheet.rings[k] = (float(r[0]), float(r[1]), float(r[2]))
@@ -540,6 +594,7 @@ class _Reader:
         self.sheet = sheet
         self.halos: dict[tuple, float] = {}
         self.pending: list[tuple] = []
+        self.groups = 0  # letter groups met so far
 
     def read(self, root: ET.Element) -> None:
         self._walk(root, (), _IDENTITY, None)
@@ -589,7 +644,9 @@ class _Reader:
         if tag in ("svg", "g", "a", "switch"):
             if tag == "g" and "lbg" in chain[-1][2]:
                 # a letter about its point: the player scales (and a zoom level moves) its children about it
-                group = (_at(ctm, 0.0, 0.0), e.get("id"), math.sqrt(abs(ctm[0] * ctm[3] - ctm[1] * ctm[2])))
+                group = (_at(ctm, 0.0, 0.0), e.get("id"), math.sqrt(abs(ctm[0] * ctm[3] - ctm[1] * ctm[2])),
+                         self.groups)
+                self.groups += 1
             for child in e:
                 self._walk(child, chain, ctm, step, group)
             return
@@ -603,6 +660,10 @@ class _Reader:
             return
         if tag not in _DRAWN:
             return
+        if tag == "line" and "leader" in classes and group is not None:
+            anchor, gid, unit, serial = group
+            line = tuple(_num(e.get(a)) for a in ("x1", "y1", "x2", "y2"))
+            sheet.leaders.append(Leader(e.get("id"), step, chain, anchor, line, gid, unit, serial))  # type: ignore[arg-type]
         if tag == "circle" and ("pt" in classes or ("result" not in classes and not sheet.plate)):
             # a point marker or a thin circle: its centre and radius are all that is read (its box is exact)
             lines = pts = []
@@ -617,6 +678,14 @@ class _Reader:
             if not pts:
                 return
         scale = math.sqrt(abs(ctm[0] * ctm[3] - ctm[1] * ctm[2]))
+        if not (tag == "rect" and (e.get("id") == "background" or "view" in classes)):
+            if tag == "circle":
+                cx, cy = _at(ctm, _num(e.get("cx")), _num(e.get("cy")))
+                r = _num(e.get("r")) * scale
+                ink = (cx - r, cy - r, cx + r, cy + r)
+            else:
+                ink = _box_of(pts)
+            sheet.inked.append((chain, ink))
         if tag == "circle" and "pt" in classes:
             look = sheet.look(chain)
             cx, cy = _at(ctm, _num(e.get("cx")), _num(e.get("cy")))
@@ -665,9 +734,9 @@ class _Reader:
                 if ident.endswith(suffix):
                     owner = ident[: -len(suffix)]
         scale = math.sqrt(abs(ctm[0] * ctm[3] - ctm[1] * ctm[2]))
-        anchor, gid, unit = group if group is not None else (None, None, 1.0)
+        anchor, gid, unit, serial = group if group is not None else (None, None, 1.0, None)
         sheet.texts.append(Text(len(sheet.texts), text, kind, ident, owner, step, chain, _box_of(corners),
-                                look.font_size * scale, anchor, gid, unit, ink, ctm))
+                                look.font_size * scale, anchor, gid, unit, serial, ink, ctm))
 
 
 def _text_of(e: ET.Element) -> str:

@@ -6,6 +6,10 @@
   objects of the suite, and three tests read each.
 * ``cli(*argv)``: ``construct``'s command line run in this process; the exit
   code and what it printed on stdout and stderr.
+* ``cli_process(*argvs, env=..., cwd=...)``: several commands in one fresh
+  process (an environment, an encoding or entry points the process starts with).
+* ``gallery_figure(name, params)``: a construction and its figure, built once per
+  session -- the gallery's 23 figures are read by five test modules.
 * ``small_plan``: ``construct gallery`` builds one small figure without a live
   player's sweep, for the tests about the gallery's folder (tests/test_gallery.py
   has its own, with the sweep).
@@ -31,11 +35,13 @@ Two things hold for every test without being asked for:
 from __future__ import annotations
 
 import gc
+import json
 import locale
 import os
 import resource
 import shutil
 import signal
+import subprocess
 import sys
 import tempfile
 from pathlib import Path
@@ -145,6 +151,46 @@ def cli(capsys) -> Callable[..., Run]:
     return run
 
 
+#: Runs the commands (a JSON list of argv lists) one after the other in this one process, as ``python -m
+#: construct`` runs one; each command's stdout and stderr end with a NUL byte, the exit codes follow on stderr.
+_COMMANDS = """
+import json, sys
+from construct.cli.main import main
+codes = []
+for argv in json.loads(sys.argv[1]):
+    try:
+        codes.append(main(argv))
+    except SystemExit as exc:
+        codes.append(exc.code)
+    for stream in (sys.stdout, sys.stderr):
+        stream.flush()
+        stream.buffer.write(b"\\0")
+        stream.buffer.flush()
+sys.stderr.write(json.dumps(codes))
+"""
+
+
+def commands_in_a_process(*argvs: list[str], env: dict[str, str] | None = None, cwd: Path | None = None,
+                          timeout: float = 120) -> list[Run]:
+    """``construct ARGV`` for each of *argvs*, one after the other in one fresh Python process (what the process
+    starts with -- its environment, the terminal's encoding, the installed entry points -- is the point; one
+    interpreter start instead of one a command).  Each command restores what it changes in the process (the
+    streams' error handling), so each finds the process as it started.  bytes out and err."""
+    proc = subprocess.run([sys.executable, "-B", "-c", _COMMANDS, json.dumps([list(map(str, a)) for a in argvs])],
+                          capture_output=True, timeout=timeout, cwd=cwd, env={**os.environ, **(env or {})})
+    assert proc.returncode == 0 and b"Traceback" not in proc.stderr, proc.stderr[-2000:]
+    outs, errs = proc.stdout.split(b"\0"), proc.stderr.split(b"\0")
+    codes = json.loads(errs.pop())
+    assert outs.pop() == b"" and len(outs) == len(errs) == len(codes) == len(argvs), proc
+    return [Run(*run) for run in zip(codes, outs, errs)]
+
+
+@pytest.fixture
+def cli_process() -> Callable[..., list[Run]]:
+    """:func:`commands_in_a_process`: several commands in one fresh process."""
+    return commands_in_a_process
+
+
 @pytest.fixture(scope="session")
 def rod_ratio_sweep() -> Callable[[str, Any], tuple[Any, Any, Any]]:
     """(construction, default figure, sweep replay over the ratios), made once per session for each pair."""
@@ -162,6 +208,25 @@ def rod_ratio_sweep() -> Callable[[str, Any], tuple[Any, Any, Any]]:
         return made[key]
 
     return sweep
+
+
+@pytest.fixture(scope="session")
+def gallery_figure() -> Callable[..., tuple[Any, Any]]:
+    """(construction, figure) for a name and parameters -- the gallery's figures above all, which five test
+    modules read -- built once per session (per worker) when first asked for, never changed by a test."""
+    from construct import get
+
+    made: dict[tuple, tuple[Any, Any]] = {}
+
+    def figure(name: str, params: Any = None) -> tuple[Any, Any]:
+        params = dict(params or {})
+        key = (name, tuple(sorted(params.items())))
+        if key not in made:
+            c = get(name)
+            made[key] = (c, c.figure(**params))
+        return made[key]
+
+    return figure
 
 
 @pytest.fixture(scope="session")

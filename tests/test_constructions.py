@@ -8,10 +8,7 @@ the render layer's source (which must name no construction).
 from __future__ import annotations
 
 import ast
-import os
 import re
-import subprocess
-import sys
 import warnings
 from pathlib import Path
 
@@ -51,26 +48,22 @@ def test_the_render_layer_names_no_construction():
     assert not found, found
 
 
-def test_the_readmes_construction_is_one_module_found_by_its_entry_point(tmp_path):
+def test_the_readmes_construction_is_one_module_found_by_its_entry_point(tmp_path, cli_process):
     """The README's module, installed with an entry point, is listed, checked and captioned by the command line."""
     (tmp_path / "crosshead.py").write_text(_readme_module(), encoding="utf-8")
     dist = tmp_path / "crosshead_plugin-0.1.dist-info"
     dist.mkdir()
     (dist / "METADATA").write_text("Metadata-Version: 2.1\nName: crosshead-plugin\nVersion: 0.1\n")
     (dist / "entry_points.txt").write_text("[construct.constructions]\ncrosshead = crosshead\n")
-    env = {**os.environ, "PYTHONPATH": str(tmp_path), "PYTHONDONTWRITEBYTECODE": "1"}
-
-    def cli(*args: str) -> subprocess.CompletedProcess:
-        return subprocess.run([sys.executable, "-B", "-m", "construct", *args], capture_output=True, text=True,
-                              env=env, cwd=tmp_path, timeout=120)
-
-    listed = cli("list")
-    assert re.search(r"^crosshead-at-90\s+The crosshead at 90° crank$", listed.stdout, re.M), listed.stdout
-    checked = cli("check", "crosshead-at-90", "--rod-ratio", "4")
-    assert checked.returncode == 0 and "1 of 1 checks pass" in checked.stdout, checked.stdout + checked.stderr
     out = tmp_path / "out"
-    replayed = cli("replay", "crosshead-at-90", "--style", "historical", "--out", str(out))
-    assert replayed.returncode == 0, replayed.stderr
+    # a fresh process finds the entry point as it starts (the three commands share it)
+    listed, checked, replayed = cli_process(
+        ["list"], ["check", "crosshead-at-90", "--rod-ratio", "4"],
+        ["replay", "crosshead-at-90", "--style", "historical", "--out", out],
+        env={"PYTHONPATH": str(tmp_path), "PYTHONDONTWRITEBYTECODE": "1"}, cwd=tmp_path)
+    assert re.search(r"^crosshead-at-90\s+The crosshead at 90° crank$", listed.out.decode(), re.M), listed.out
+    assert checked.code == 0 and "1 of 1 checks pass" in checked.out.decode(), checked.out + checked.err
+    assert replayed.code == 0, replayed.err
     svg = (out / "final.svg").read_text(encoding="utf-8")
     assert "The crosshead at 90° crank. r/L = 1/5. — after J. Doe, The slider crank, p. 3." in svg
     assert "Kreuzkopf bei 90° Kurbelstellung. r/L = 1/5. — nach J. Doe, Kurbeltrieb, p. 3." in svg

@@ -19,8 +19,8 @@ OTHERS = [("crank", {"parts": n, "method": m}) for n in (9, 36) for m in ("durer
 
 
 @pytest.mark.parametrize("name, params", gallery_plan() + OTHERS, ids=lambda v: str(v))
-def test_no_tolerance_is_its_own_error(name, params):
-    checks = get(name).figure(**params).checks()
+def test_no_tolerance_is_its_own_error(name, params, gallery_figure):
+    checks = gallery_figure(name, params)[1].checks()
     assert checks
     tight = [f"{c.name}: error {abs(c.error):.6g}, tolerance {c.tolerance:.6g}" for c in checks
              if c.error and c.tolerance <= 1.01 * abs(c.error)]

@@ -30,8 +30,15 @@ IDS = [f"{n}-{'-'.join(f'{k}{v:g}' if isinstance(v, float) else f'{k}{v}' for k,
 
 
 @pytest.fixture(scope="module")
-def figures():
-    return {i: (get(n), get(n).figure(**p)) for i, (n, p) in zip(IDS, PLAN)}
+def figures(gallery_figure):
+    """Each figure of the plan by its id, built when first asked for (a worker builds only those it tests)."""
+
+    class Figures(dict):
+        def __missing__(self, key):
+            self[key] = got = gallery_figure(*PLAN[IDS.index(key)])
+            return got
+
+    return Figures()
 
 
 @pytest.fixture(scope="module")
@@ -233,8 +240,8 @@ def test_crank_plate_dimensions_stroke_radius_and_rod(figures):
 
 
 def test_plate_captions_are_in_the_books_notation(figures):
-    for key, (c, fig) in figures.items():
-        de, en = plate_caption(c, fig, 1)
+    for key in IDS:
+        de, en = plate_caption(*figures[key], 1)
         for text in (de, en):
             assert "rod_ratio" not in text and "method =" not in text and "4_1" not in text, text
     de, en = plate_caption(*figures["crank-parts18-rod_ratio5"], 1)

@@ -268,12 +268,13 @@ def test_a_full_disk_during_gallery_or_verify_update_keeps_the_old_goldens(comma
 
 @pytest.mark.parametrize("env", [{"PYTHONIOENCODING": "ascii"}, {"PYTHONIOENCODING": "latin-1"},
                                  {"LC_ALL": "C", "LANG": "C", "PYTHONUTF8": "0", "PYTHONCOERCECLOCALE": "0"}])
-def test_a_terminal_that_is_not_utf8_gets_fallbacks_not_tracebacks(env, tmp_path):
+def test_a_terminal_that_is_not_utf8_gets_fallbacks_not_tracebacks(env, cli_process):
+    # the terminal's encoding is the process's, set as it starts: the three commands share one process
+    argvs = (["list"], ["errata", "--book", "anhang-ii"], ["check", "crank", "--json"])
     out = {}
-    for argv in (["list"], ["errata", "--book", "anhang-ii"], ["check", "crank", "--json"]):
-        proc = cli(*argv, env=env)
-        assert proc.returncode in (0, 1) and b"Traceback" not in proc.stderr, (argv, proc.stderr)
-        out[argv[0]] = proc.stdout
+    for argv, (code, stdout, stderr) in zip(argvs, cli_process(*argvs, env={"PYTHONPATH": str(REPO), **env})):
+        assert code in (0, 1) and b"Traceback" not in stderr, (argv, stderr)
+        out[argv[0]] = stdout
     errata = out["errata"]
     assert b"cos w" in errata or "cos ω".encode("latin-1", "ignore") in errata  # ω falls back to w
     data = json.loads(out["check"])  # JSON stays JSON, ASCII only

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+import functools
 import gc
 import json
 import subprocess
@@ -104,7 +105,9 @@ def test_a_fresh_process_loads_and_replays_every_gallery_protocol():
     assert int(out.stdout) >= 8
 
 
-def test_a_custom_protocol_replays_and_checks_through_the_cli(tmp_path):
+def test_a_custom_protocol_replays_and_checks_through_the_cli(tmp_path, cli):
+    """In this process (``cli``): what a real process adds, the exit status and stderr without a traceback, is
+    tests/test_hostile.py's and test_fuzz.py's."""
     b = construct.Builder("third of a segment", givens={"s": 3.0})
     b.given_point("A", 0.0, 0.0)
     b.given_point("B", 1.0, 0.0, unit="s")
@@ -112,18 +115,15 @@ def test_a_custom_protocol_replays_and_checks_through_the_cli(tmp_path):
     fig = b.figure()
     path = tmp_path / "mine.json"
     path.write_text(fig.protocol.to_json(fig.replay), encoding="utf-8")
-    run = [sys.executable, "-m", "construct"]
-    out = subprocess.run(run + ["replay", "--protocol", str(path), "--given", "s=6", "--out", str(tmp_path / "o")],
-                         capture_output=True, text=True)
-    assert out.returncode == 0, out.stderr
+    code, _, err = cli("replay", "--protocol", path, "--given", "s=6", "--out", tmp_path / "o")
+    assert code == 0, err
     written = json.loads((tmp_path / "o" / "protocol.json").read_text(encoding="utf-8"))
     assert abs(written["objects"]["T1"]["x"] - 2.0) <= 1e-12  # a third of 6, from the replayed steps
     assert (tmp_path / "o" / "final.svg").exists()
-    out = subprocess.run(run + ["check", "--protocol", str(path)], capture_output=True, text=True)
-    assert out.returncode == 0 and "no checks" in out.stdout
-    out = subprocess.run(run + ["replay", "--protocol", str(path), "--given", "q=1", "--out", str(tmp_path / "p")],
-                         capture_output=True, text=True)
-    assert out.returncode == 2 and "no given 'q'" in out.stderr and "Traceback" not in out.stderr
+    code, out, _ = cli("check", "--protocol", path)
+    assert code == 0 and "no checks" in out
+    code, _, err = cli("replay", "--protocol", path, "--given", "q=1", "--out", tmp_path / "p")
+    assert code == 2 and "no given 'q'" in err and "Traceback" not in err
     assert not (tmp_path / "p").exists()
 
 
@@ -169,6 +169,12 @@ def _module_name(path: Path) -> str:
     return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
 
 
+@functools.lru_cache(maxsize=None)
+def _parse(source: str) -> ast.Module:
+    """A module's syntax tree, parsed once for the layer, circle and private-name tests (read, never changed)."""
+    return ast.parse(source)
+
+
 def _imports(path: Path, text: str | None = None) -> list[tuple[str, int]]:
     """The construct-internal modules a file imports, anywhere in it: at module level, inside functions and
     under ``if TYPE_CHECKING:`` (read by type checkers only, but still an arrow a reader follows: the layers
@@ -177,7 +183,7 @@ def _imports(path: Path, text: str | None = None) -> list[tuple[str, int]]:
     *text* is the file's source (read from *path* when None; *path* places it in the package).
     ``from package import name`` names the module package.name when there is one, else the package.
     """
-    tree = ast.parse(path.read_text(encoding="utf-8") if text is None else text)
+    tree = _parse(path.read_text(encoding="utf-8") if text is None else text)
     pkg = path.relative_to(ROOT).with_suffix("").parts[:-1]
     out = []
     for node in ast.walk(tree):
@@ -303,7 +309,7 @@ def _private_imports(source: str) -> list[tuple[int, str, str]]:
     Dunder names (``__version__``) are not private.
     """
     out = []
-    for node in ast.walk(ast.parse(source)):
+    for node in ast.walk(_parse(source)):
         if isinstance(node, ast.ImportFrom) and (node.level or (node.module or "").startswith("construct")):
             module = "." * node.level + (node.module or "")
             out += [(node.lineno, module, a.name) for a in node.names

@@ -135,7 +135,7 @@ def test_update_drops_stale_frames_and_name_collisions(pytester: pytest.Pytester
     pytester.makepyfile(test_two=readme_example().replace(
         'construct_golden.check(figure, name="middle-of-stroke")',
         'construct_golden.check(figure)\n    construct_golden.check(figure)'))
-    result = pytester.runpytest_subprocess("--construct-update")
+    result = pytester.runpytest_inprocess("--construct-update")  # the entry point: the test above
     result.assert_outcomes(failed=1)
     result.stdout.fnmatch_lines(["*checked twice in this test*"])
     goldens = pytester.path / "goldens" / "test_two.test_middle_of_stroke"  # default: module and test

@@ -7,7 +7,6 @@ not from the code's output.
 
 from __future__ import annotations
 
-import functools
 import re
 
 import pytest
@@ -53,11 +52,6 @@ FOLLOWS = {
 }
 
 
-@functools.lru_cache(maxsize=None)
-def _figure(name: str, params: tuple):
-    return get(name).figure(**dict(params))
-
-
 PLAN = [(name, tuple(sorted(params.items()))) for name, params in gallery_plan()]
 IDS = [entry_slug(n, dict(p)) for n, p in PLAN]
 
@@ -78,8 +72,8 @@ def test_the_plan_covers_every_construction_followed():
 
 
 @pytest.mark.parametrize("name, params", PLAN, ids=IDS)
-def test_figure_captions_are_in_the_books_notation_and_cite_the_book(name, params):
-    c, fig = get(name), _figure(name, params)
+def test_figure_captions_are_in_the_books_notation_and_cite_the_book(name, params, gallery_figure):
+    c, fig = gallery_figure(name, params)
     for de, en in (plate_caption(c, fig, 7), figure_title(c, fig)):
         for line in (de, en):
             assert not _clean(line), (line, _clean(line))
@@ -124,8 +118,8 @@ def test_an_infinite_rod_has_no_rod_ratio_in_its_caption():
 
 
 @pytest.mark.parametrize("name, params", PLAN, ids=IDS)
-def test_every_step_caption_names_the_figures_letters(name, params):
-    fig = _figure(name, params)
+def test_every_step_caption_names_the_figures_letters(name, params, gallery_figure):
+    fig = gallery_figure(name, params)[1]
     bad = []
     for s in fig.protocol.steps:
         for text in (s.caption.de, s.caption.en):
@@ -135,8 +129,8 @@ def test_every_step_caption_names_the_figures_letters(name, params):
     assert not bad, f"{len(bad)} step captions, e.g. {bad[:3]}"
 
 
-def test_the_step_captions_the_player_shows_are_the_protocols():
-    fig = _figure(*PLAN[0])
+def test_the_step_captions_the_player_shows_are_the_protocols(gallery_figure):
+    fig = gallery_figure(*PLAN[0])[1]
     sc = build_scene(fig)
     assert [sc.caption(s.index) for s in fig.protocol.steps] == [(s.caption.de, s.caption.en)
                                                                  for s in fig.protocol.steps]
@@ -159,17 +153,17 @@ def test_a_builders_own_construction_gets_its_letters_in_the_protocol():
     assert "top where the circle about A meets the circle about B" in captions
 
 
-def test_the_players_givens_are_in_book_symbols():
+def test_the_players_givens_are_in_book_symbols(gallery_figure):
     from construct.render.notation import given_rows
 
-    fig = _figure("two-cranks", (("infinite_rod", True), ("parts", 12)))
+    fig = gallery_figure("two-cranks", (("infinite_rod", True), ("parts", 12)))[1]
     rows = given_rows(fig, get("two-cranks"))
     page = player_html(build_scene(fig), givens=rows)
     table = page[page.index('<table id="givens">'):]
     table = table[: table.index("</table>")]
     assert not _clean(table), _clean(table)
     assert "infinite_rod" not in table and "magnify" not in table and "unendlich" in table
-    rows = given_rows(_figure("indicator-diagram", ()), get("indicator-diagram"))
+    rows = given_rows(gallery_figure("indicator-diagram", ())[1], get("indicator-diagram"))
     assert rows["P"] == "7,85 at / 7.85 at" and rows["P₀"] == "0,15 at / 0.15 at"
 
 
@@ -203,10 +197,10 @@ def test_the_svg_keeps_the_provenance_for_the_machine(tmp_path):
 
 
 @pytest.mark.parametrize("name, params", PLAN, ids=IDS)
-def test_group_titles_name_the_figures_letters(name, params):
+def test_group_titles_name_the_figures_letters(name, params, gallery_figure):
     from construct.render.captions import group_caption
 
-    sc = build_scene(_figure(name, params))
+    sc = build_scene(gallery_figure(name, params)[1])
     bad = {group_caption(sc, k) for k in range(1, len(sc.steps) + 1)}
     bad = sorted(t for t in bad if DOTTED.search(t) or PYTHON_VALUE.search(t))
     assert not bad, bad[:3]

@@ -126,7 +126,7 @@ def test_no_warning_when_the_plate_letters_the_point_or_the_protocol_names_its_p
         assert "M" not in _letters(b.figure().svg("historical"))
 
 
-def test_no_gallery_plate_leaves_out_a_letter_silently():
+def test_no_gallery_plate_leaves_out_a_letter_silently(gallery_figure):
     """Every figure of the gallery, drawn as its plate: no HiddenLabelWarning (the constructions name
     their plates; the warning is for letters a user set)."""
     from construct.gallery import gallery_plan
@@ -135,8 +135,7 @@ def test_no_gallery_plate_leaves_out_a_letter_silently():
     with warnings.catch_warnings():
         warnings.simplefilter("error", HiddenLabelWarning)
         for name, params in gallery_plan():
-            c = get(name)
-            scene_for(c, c.figure(**params), plate=True)
+            scene_for(*gallery_figure(name, params), plate=True)
 
 
 def test_the_command_line_prints_the_warning_as_one_line(tmp_path, cli):

@@ -7,6 +7,7 @@ for the pages -- not from the pages' own output.
 
 from __future__ import annotations
 
+import functools
 import re
 from html.parser import HTMLParser
 
@@ -69,8 +70,14 @@ class _Page(HTMLParser):
         return "".join(self.chunks[starts[k]:starts[k + 1]])
 
 
+@functools.cache
+def _errata() -> tuple:
+    """Every erratum, computed once for the module (each holds the true values the books are checked against)."""
+    return tuple(all_errata())
+
+
 def _rows(book: str) -> list[dict]:
-    return [e.as_dict() for e in all_errata() if e.source == book]
+    return [e.as_dict() for e in _errata() if e.source == book]
 
 
 @pytest.fixture(scope="module")
@@ -207,8 +214,9 @@ def _entry(number: int, player: bool) -> dict:
 
 def test_the_front_page_says_what_the_site_is_and_shows_the_plates():
     entries = [_entry(1, True), _entry(2, False)]
-    sources = [{"book": b, "count": len(_rows(b)), "classes": {c: sum(e["class"] == c for e in _rows(b))
-                                                                for c in CLASS_MEANINGS}} for b in BOOK_NAMES]
+    rows = {b: _rows(b) for b in BOOK_NAMES}
+    sources = [{"book": b, "count": len(rows[b]), "classes": {c: sum(e["class"] == c for e in rows[b])
+                                                              for c in CLASS_MEANINGS}} for b in BOOK_NAMES]
     text = index_page(entries, sources, list(BOOKS.values()), wrong=WRONG)
     page = _Page(text)
     visible = page.text

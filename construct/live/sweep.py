@@ -47,8 +47,8 @@ from ..render.styles import STYLES
 from ..render.wire import arc_flags, blend, radii
 from .measure import Measure
 
-__all__ = ["LiveGiven", "LiveSweep", "Piece", "live_givens", "live_sweep", "pieces", "scan_pieces", "reach", "check_picks",
-           "REFINE_PX", "QUANTUM_PX", "MIN_CELL", "CHECK_VALUES"]
+__all__ = ["LiveGiven", "LiveSweep", "Piece", "live_givens", "live_sweep", "pieces", "scan_pieces", "reach",
+           "check_picks", "REFINE_PX", "QUANTUM_PX", "MIN_CELL", "CHECK_VALUES"]
 
 
 @dataclass(frozen=True)
@@ -180,7 +180,7 @@ def pieces(construction: Construction, figure: Figure, given: str, domain: Domai
     corners: which points those are depends on the rod).  Each piece's protocol is built inside it (the built
     figure's own in its piece); the changes are found from FORM_SCAN fresh builds, then by bisection in log10.
     The builds that only ask for the steps' form are not lettered (:func:`~construct.kernel.instruments.unlettered`:
-    half a build); a given the construction names in :attr:`~construct.constructions.Construction.steady` is one
+    a third of a build); a given the construction names in :attr:`~construct.constructions.Construction.steady` is one
     piece without a build (tests/test_live.py scans them).
 
     >>> from construct.constructions import get

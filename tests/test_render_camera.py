@@ -446,6 +446,28 @@ def test_the_end_states_file_shows_its_letters_and_points_without_css_variables(
     assert all(ink[round((y - y0) * k), round((x - x0) * k)] for x, y in centres)
 
 
+def test_the_end_states_file_draws_its_lines_as_wide_as_the_player_without_vector_effect(fractions):
+    """cairosvg, Inkscape and print workflows ignore ``vector-effect: non-scaling-stroke``: final.svg writes its
+    lines' widths and dashes in its own units for its one view, so that each is as many screen px wide as the
+    player draws it (the style's width in px), whatever renders it."""
+    from construct.render.styles import STYLES
+
+    _c, fig, out = fractions
+    text = (out / "final.svg").read_text(encoding="utf-8")
+    assert "vector-effect" not in text
+    svg_w = float(re.search(r'<svg[^>]*? width="([0-9.]+)"', text).group(1))
+    vb_w = float(re.search(r'viewBox="[-0-9.]+ [-0-9.]+ ([0-9.]+)', text).group(1))
+    k = svg_w / vb_w  # screen px per unit of the file
+    assert k > 1.2  # the end view magnifies: a line held at its screen width would be k times too heavy
+    st = STYLES["teaching"]
+    for sel, px in ((".result", st.result_width), (".construction,.auxiliary", st.construction_width)):
+        got = float(re.search(re.escape(sel) + r"\{[^}]*?stroke-width:([0-9.]+)", text).group(1))
+        assert got * k == pytest.approx(px, rel=2e-3), sel
+    # a dash-dot centre line keeps its screen dashes too (14 px dash in the player)
+    dashes = re.search(r"\.dashdot\{stroke-dasharray:([0-9. ]+)", text).group(1).split()
+    assert float(dashes[0]) * k == pytest.approx(14.0, rel=2e-3)
+
+
 @pytest.mark.parametrize("name, params", [("crank", dict(parts=18, rod_ratio=5.0)), ("flywheel-rim", {}),
                                           ("indicator-diagram", {})])
 def test_fine_work_is_seen_magnified(name, params):

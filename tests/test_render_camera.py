@@ -43,9 +43,9 @@ def _points_of(fig, steps) -> list[tuple[float, float]]:
 
 
 def _window_zoom(v, full) -> float:
-    """How many times the player's window (985 x 700 px at 1400 x 1000) shows view *v* larger than the whole
-    canvas: each fitted into the window keeping its aspect (preserveAspectRatio meet)."""
-    ww, wh = 985.0, 700.0
+    """How many times the player's window (998 x 630 px in a 1400 x 900 window, measured in Chromium) shows view
+    *v* larger than the whole canvas: each fitted into the window keeping its aspect (preserveAspectRatio meet)."""
+    ww, wh = 998.0, 630.0
     return min(ww / v[2], wh / v[3]) / min(ww / full[2], wh / full[3])
 
 
@@ -58,9 +58,9 @@ def test_views_are_boxes_of_the_canvas_in_the_windows_shape(crank):
     for v in views:
         assert v[0] >= -0.01 and v[1] >= -0.01 and v[0] + v[2] <= full[2] + 0.01 and v[1] + v[3] <= full[3] + 0.01
         if v != full:
-            assert v[3] / v[2] == pytest.approx(700 / 985, rel=2e-2) or v[3] == pytest.approx(full[3], abs=0.01)
+            assert v[3] / v[2] == pytest.approx(630 / 998, rel=2e-2) or v[3] == pytest.approx(full[3], abs=0.01)
         assert _window_zoom(v, full) <= camera.MAX_ZOOM + 1e-3
-    assert any(_window_zoom(v, full) > 2 for v in views)  # some group is seen magnified
+    assert any(_window_zoom(v, full) > 1.5 for v in views)  # some group is seen magnified (past the first level)
 
 
 @pytest.mark.parametrize("name, params, last", [("crank-angle", {"rod_ratio": 4.0}, 3.0),
@@ -77,7 +77,7 @@ def test_a_tall_figures_views_fill_the_players_window(name, params, last):
     assert zoomed
     for v in zoomed:
         # as wide as the window's shape asks, or the canvas's whole width
-        assert v[2] == pytest.approx(min(v[3] * 985 / 700, full[2]), rel=2e-2)
+        assert v[2] == pytest.approx(min(v[3] * 998 / 630, full[2]), rel=2e-2)
         assert camera.zoom_of(v, full) == pytest.approx(_window_zoom(v, full), rel=1e-9)
     # the last frame, the clean figure of the results, fills the window (crank-angle: 2.6x in a view of the
     # canvas's shape, the crank circle between the window's top and bottom in one of the window's)
@@ -221,7 +221,7 @@ def test_a_moved_camera_is_a_change_of_its_step(tmp_path):
     old = f'<rect class="view" height="{rect.get("height")}" width="{rect.get("width")}" x="{rect.get("x")}"'
     assert old in text
     moved = text.replace(old, f'<rect class="view" height="{rect.get("height")}" width="{rect.get("width")}" '
-                              f'x="{float(rect.get("x")) + 5:g}"')
+                              f'x="{float(rect.get("x")) + 5:g}"', 1)  # (a later step may show the same view)
     diff = diff_svg(text, moved)
     assert not diff.equal
     assert list(changes_by_step(diff)) == [k]

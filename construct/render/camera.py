@@ -44,9 +44,11 @@ from .svgdoc import fmt
 __all__ = ["step_views", "views_box", "shots", "step_focus", "step_zooms", "step_details", "step_insets", "DETAIL_PX", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "NON_SCALING", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
            "clear_edges", "clear_tag_edges", "player_letter_scale", "EDGE_ROUNDS", "ring_round"]
 
-#: The most the step player shows of the figure in a 1400 × 1000 window (width, height in screen px): the
-#: window the views are shaped for and their magnification is measured in (:func:`zoom_of`).
-PLAYER_FIGURE_PX = (985.0, 700.0)
+#: The step player's figure box in a typical 1400 × 900 browser window (width, height in screen px, as its page
+#: lays it out: what the side column leaves of the width, at most 70 % of the height): the window the views
+#: are shaped for and their magnification is measured in (:func:`zoom_of`); the page keeps the box of this
+#: shape (``aspect-ratio``), so that a view fills it at any window size.
+PLAYER_FIGURE_PX = (998.0, 630.0)
 
 #: A view never magnifies the whole figure more than this many times (more would lose where it sits).
 MAX_ZOOM = 4.0

@@ -28,7 +28,7 @@ from typing import Any, Callable, Iterable, Sequence
 
 from ..kernel.geometry import Circle, Length, Line, Point
 from ..kernel.protocol import Protocol, Replay, Step
-from ..kernel.letters import FIGURE_LETTER
+from ..kernel.letters import FIGURE_LETTER, primed
 from .captions import TITLE_LIMIT, Reader, displayed
 from .marks import (TWO_PI, Mark, MarkKind, circle_extent, curve_points, extreme_points, fanned_lines, letter_lines,
                     lies_on, segment_extent, with_geom)
@@ -335,7 +335,7 @@ class Scene:
 
     def display_name(self, name: str) -> str:
         """The letter or tag the reader sees for an object (the same one the captions use)."""
-        return self._reader.point(name) if name in self._reader.points else name.rsplit(".", 1)[-1]
+        return primed(self._reader.point(name) if name in self._reader.points else name.rsplit(".", 1)[-1])
 
     def tag_shown(self, name: str) -> bool:
         """Whether an unlettered point's tag (:meth:`display_name`) reads as one of the figure's letters.
@@ -579,6 +579,9 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
             label = labels.get(name)
             if label and "{∠" in label:
                 label = reading(label, objects)
+            if label:
+                label = primed(label)  # drawn as the books print it (6′); the protocol keeps its 6'
+
             if "unlettered" in (looks or {}).get(name, "").split():
                 label = None  # the plate letters it otherwise (an abscissa, as the book does)
             common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,

@@ -20,6 +20,7 @@ from construct.kernel.geometry import Circle, Line, Point
 from construct.render import camera
 from construct.render.output import scene_for, write_replay
 from construct.render.styles import STYLES
+from construct.render.lettering import segment_meets_box
 from construct.render.svg import Drawing
 
 SVG = "{http://www.w3.org/2000/svg}"
@@ -499,3 +500,28 @@ def test_fine_work_is_seen_magnified(name, params):
     if name == "flywheel-rim":  # the ray of the rectangle's diagonal, over the sliver O r₁
         k = next(s.index for s in sc.steps if s.outputs == ("U6.s",))
         assert d.insets[k - 1] is not None
+
+
+def test_a_rectangles_diagonal_is_drawn_with_its_rectangle():
+    """Fig. 28's hyperbola point by the rectangle's diagonal: at the step that lays the ray from O through the
+    corner B, the rectangle's sides through B -- the ordinate at 6/12 r₁ and the horizontal through the rim's
+    corner K, b₁/2 off the mid-plane -- are drawn (as the step's inputs), and the inset that magnifies the
+    sliver shows the corner B with both sides crossing in it, the mid-plane beneath."""
+    c = get("flywheel-rim")
+    d = Drawing(scene_for(c, c.figure()), STYLES["teaching"])
+    sc = d.scene
+    k = next(s.index for s in sc.steps if s.outputs == ("U6.s",))
+    B = sc.steps[k - 1].inputs[1]
+    sides = set(sc.steps[sc.step_of(B) - 1].inputs)
+    assert len(sides) == 2
+    assert {sc.step_of(n) for n in sides} <= d.input_steps(k)
+    inset = d.insets[k - 1]
+    assert inset is not None
+    x, y, w, h = inset
+    drawn = {m.name: m for m in sc.marks}
+    bx, by = d.vp.px(*drawn[B].geom)
+    assert x < bx < x + w and y < by < y + h
+    for n in sides | {"mid"}:  # and the mid-plane, the rectangle's fourth side
+        x0, y0 = d.vp.px(*drawn[n].geom[:2])
+        x1, y1 = d.vp.px(*drawn[n].geom[2:4])
+        assert segment_meets_box((x, y, x + w, y + h), (x0, y0, x1, y1)), n

@@ -268,6 +268,35 @@ class Scene:
                 got.setdefault(k, []).append(s.index)
         return got
 
+    def aimed_at(self, k: int) -> frozenset[str]:
+        """The sides of the rectangle step k's straightedge draws the diagonal of: a line laid from a point
+        through a corner where two perpendicular straight lines cross (the hyperbola's ray from O through B,
+        the ordinate meeting the horizontal through the known point) -- without them the student sees a ray
+        aimed at a point on nothing.
+
+        >>> from construct.constructions import get
+        >>> sc = build_scene(get("flywheel-rim").figure())
+        >>> k = next(s.index for s in sc.steps if s.outputs == ("U6.s",))
+        >>> sorted(sc.aimed_at(k))  # the ordinate at 6/12 r1 and the horizontal through the rim's corner K
+        ['khU', 'lv6']
+        """
+        if not 1 <= k <= len(self.steps):
+            return frozenset()
+        s = self.steps[k - 1]
+        if s.op != "line" or len(s.inputs) != 2:
+            return frozenset()
+        maker = self.step_of(s.inputs[1])
+        if maker is None or self.steps[maker - 1].op != "intersect":
+            return frozenset()
+        sides = [self._drawn.get(n) for n in self.steps[maker - 1].inputs]
+        if len(sides) != 2 or any(m is None or m.kind is not MarkKind.SEGMENT for m in sides):
+            return frozenset()
+        (ax0, ay0, ax1, ay1), (bx0, by0, bx1, by1) = (m.geom[:4] for m in sides)  # type: ignore[union-attr]
+        ux, uy, vx, vy = ax1 - ax0, ay1 - ay0, bx1 - bx0, by1 - by0
+        if abs(ux * vx + uy * vy) > 1e-6 * math.hypot(ux, uy) * math.hypot(vx, vy):
+            return frozenset()  # not a rectangle's corner
+        return frozenset(m.name for m in sides)  # type: ignore[union-attr]
+
     def tagged(self, k: int) -> frozenset[str]:
         """The points a teaching frame tags at step k: what the step makes, what its instrument is set on
         (also the centre of a circle it cuts), and every point its caption names."""

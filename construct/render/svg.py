@@ -523,8 +523,8 @@ class Drawing:
         return self.groups[name][:bisect.bisect_right(self._steps[name], k)]
 
     def input_steps(self, k: int) -> frozenset[int]:
-        """The steps that made what step k's instrument is set on, what its caption names and what its arc is
-        struck onto (:meth:`Scene.struck_onto`)."""
+        """The steps that made what step k's instrument is set on, what its caption names, what its arc is
+        struck onto (:meth:`Scene.struck_onto`) and the rectangle its ray is the diagonal of (:meth:`Scene.aimed_at`)."""
         if not self.style.input_colour:
             return frozenset()
         done = self.__dict__.setdefault("_input_steps", {})  # asked by the tags' placing and by the player
@@ -533,7 +533,7 @@ class Drawing:
             sc = self.scene
             # and the lines its arc is struck onto (cut by the next step): drawn while it strikes it
             got = done[k] = frozenset(s for s in (sc.step_of(n) for n in sc.inputs(k) | sc.tagged(k)
-                                                  | sc.struck_onto(k))
+                                                  | sc.struck_onto(k) | sc.aimed_at(k))
                                       if s is not None and s < k)
         return got
 

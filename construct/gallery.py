@@ -68,11 +68,24 @@ FRAME_MODE = "none"
 #: the animation and storyboard of `construct replay` carry the same elements again); the historical
 #: style is the plate (the construction's views in the plate's ink would double the gallery).
 GALLERY_OUTPUTS = {"historical": (), "teaching": ("player",)}
-#: The constructions whose gallery player has a live rod-ratio slider (construct.live): the crank
-#: and the inertia curve, the two the issue names; the live data adds 0.1-0.3 MB a player (and a sweep of
-#: 1-3 s to the build), and the gallery stays under its 15 MB.  `construct replay NAME --live` gives any
-#: construction with a rod ratio its slider.
-LIVE_PLAYERS = ("crank", "inertia-curve")
+#: The constructions whose gallery player has a slider for each continuous given (construct.live): the rod
+#: wherever the construction takes it (L/r; piston-force's L in metres beside R) and Baumann's kappa
+#: (tangential-pressure, effective-work).  The live data adds 0.02-0.8 MB a player (its grid bounded by the
+#: refinement's 0.4 px and 800 values, each coordinate at the grid values it needs, one sweep for each piece
+#: of the domain where the steps' form changes; live.sweep and live.wire), and a sweep of 0.2-15 s of CPU to
+#: the build.  `construct replay NAME --live` gives any construction with such a given its sliders.
+LIVE_PLAYERS = ("crank", "crank-angle", "effective-work", "four-stroke", "inertia-curve", "inertia-stroke-fractions",
+                "piston-force", "tangential-pressure", "two-cranks")
+#: Givens a book varies that change the construction's steps (the indicator diagram's filling s1: the division
+#: up to the cut-off): every book figure of the construction gets its player, and each player a switch
+#: between them (render.live.with_switch) instead of a slider -- construction -> (param, symbol, how a value is
+#: written).
+SWITCHES: dict[str, tuple[str, str, Callable[[float], str]]] = {
+    "indicator-diagram": ("filling", "s₁/s", lambda v: f"{round(100 * v):d} %")}
+#: Why such a given is a switch, as the page says it.
+SWITCH_WHY = ("Die Füllung s₁ ändert die Schritte der Konstruktion (die Teilung bis zum Abschluss): die Figuren "
+              "des Buches, umschaltbar, kein Schieber. / The filling s₁ changes the construction's steps (the "
+              "division up to the cut-off): the book's figures to switch between, not a slider.")
 #: The plates the gallery's LaTeX example sets on one page (``latex/plates.tex``, beside their ``.tikz``
 #: files): the crank and Abb. 1055, the piston-force line over the whole revolution.
 LATEX_PLATES = (("crank", {"rod_ratio": 5.0, "parts": 18}), ("piston-force", {"revolution": True}))
@@ -192,7 +205,8 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any],
     # The first of a construction's book parameters is built whole: its protocol, the teaching style (every step
     # golden) and the player.  The others are the book's further figures of the same method: their plate and their
     # checks (a replay writes the rest: `construct replay NAME --PARAM VALUE`).  The gallery stays small enough to
-    # commit (15 MB), and a teacher changes a given in the player rather than opening another copy.
+    # commit (25 MB, each player at most 2 MB), and a teacher changes a given in the player rather than opening
+    # another copy.
     first = _first_of_its_construction(name, params)
     if first:
         write_text(edir / "protocol.json", fig.protocol.to_json(fig.replay))
@@ -205,7 +219,8 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any],
         indent=1, ensure_ascii=False, sort_keys=True) + "\n")
     entries = []
     thumb = ""
-    for style in GALLERY_STYLES if first else GALLERY_STYLES[:1]:
+    switch = _switch(name, params)
+    for style in GALLERY_STYLES if first or switch else GALLERY_STYLES[:1]:
         sdir = edir / style
         sdir.mkdir()
         live, drawing = (_live(c, fig, style) if first and GALLERY_OUTPUTS[style] and name in LIVE_PLAYERS
@@ -221,7 +236,8 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any],
         # the plates also as PDF or TikZ when asked (construct gallery --format): the historical style's
         info = write_outputs(sdir, c, fig, STYLES[style], frames=FRAME_MODE, fig_number=number, protocol=False,
                              outputs=GALLERY_OUTPUTS[style], live=live, drawing=drawing,
-                             formats=("svg", *formats) if style == "historical" else ("svg",))
+                             formats=("svg", *formats) if style == "historical" else ("svg",),
+                             switch=switch if GALLERY_OUTPUTS[style] else None)
         files = sorted(str(p.relative_to(root)) for p in sdir.rglob("*") if p.is_file())
         files += [f"{slug}/protocol.json"] * first + [f"{slug}/checks.md", f"{slug}/checks.json"]
         entries.append({"construction": name, "params": dict(params), "style": style,
@@ -230,7 +246,7 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any],
     row = {"number": number, "name": name, "slug": slug, "params": params, "title": c.title,
            "source": citation(c, "en") or c.source, "books": [cite.book.key for cite in c.cites],
            "method": method, "checks": summary(checks), "ok": all(ch.ok for ch in checks),
-           "steps": len(fig.protocol.steps), "params_text": book_givens(fig, c)[1], "player": first,
+           "steps": len(fig.protocol.steps), "params_text": book_givens(fig, c)[1], "player": first or bool(switch),
            "thumb": thumb}
     if (name, params) in LATEX_PLATES:
         # the LaTeX example's plate made here, from the figure just built (the index writes it: _latex_example)
@@ -241,18 +257,33 @@ def _build_entry(root: Path, number: int, name: str, params: dict[str, Any],
     return entries, row
 
 
-def _live(c, fig, style: str) -> tuple[dict[str, Any] | None, Any]:
+def _live(c, fig, style: str) -> tuple[list[dict[str, Any]] | None, Any]:
     """The live data of a gallery player (a slider for each continuous given the construction can sweep) and
-    the figure's drawing, laid out once for the sweep's camera views and the player."""
-    from .live import live_data, live_givens, live_sweep
+    the figure's drawing, laid out once for the sweeps' camera views and the player."""
+    from .live import live_givens, live_pages
     from .render.output import scene_for
     from .render.svg import Drawing
 
-    givens = live_givens(c, fig)
-    if not givens:
+    if not live_givens(c, fig):
         return None, None
     drawing = Drawing(scene_for(c, fig, ending=STYLES[style].camera), STYLES[style])
-    return live_data(live_sweep(c, fig, givens[0], style=STYLES[style], drawing=drawing)), drawing
+    return live_pages(c, fig, STYLES[style], drawing=drawing), drawing
+
+
+def _switch(name: str, params: Mapping[str, Any]) -> tuple | None:
+    """The switch between the book figures of a construction whose varied given changes its steps (SWITCHES):
+    (symbol, [(value as written, the sibling player's page or None for this one)], why); None elsewhere."""
+    if name not in SWITCHES:
+        return None
+    key, symbol, written = SWITCHES[name]
+    c = get(name)
+    here = entry_slug(name, params)
+    options = []
+    for p in [dict(q) for n, q in gallery_plan() if n == name]:
+        slug = entry_slug(name, p)
+        options.append((written(float(p.get(key, c.defaults[key]))),
+                        None if slug == here else f"../../{slug}/teaching/player.html"))
+    return symbol, options, SWITCH_WHY
 
 
 def _first_of_its_construction(name: str, params: Mapping[str, Any]) -> bool:

@@ -132,13 +132,29 @@ def test_checks_pass_for_other_rod_ratios_and_divisions():
 
 
 def test_replay_with_a_new_rod_ratio_matches_a_fresh_build(book):
-    # A replay keeps the givens it is not told to change, c v²/r among them (the same engine with
-    # another rod): κ = P/B_max then follows the new (1 + r/L).
+    # A replay keeps the givens it is not told to change, κ = P/B_max among them (Baumann's given, the
+    # figure's caption): c v²/r = P/((1 + r/L) κ) follows the new rod, as a fresh build at that rod has it.
     replayed = TP.replay(Protocol.from_json(book.protocol.to_json()), rod_ratio=4.0)
-    cv2r = 7.85 / (8.0 * 1.2)
-    fresh = TP.figure(rod_ratio=4.0, kappa=7.85 / (cv2r * 1.25))
+    fresh = TP.figure(rod_ratio=4.0, kappa=8.0)
+    assert replayed.replay.givens["pressure_ratio"] == pytest.approx(7.85 / (8.0 * 1.25), rel=1e-15)
     for k in (2, 7, 15):
         assert t_over_unit(replayed, k) == pytest.approx(t_over_unit(fresh, k), abs=1e-12)
+    # and with a new κ (Baumann's second case, 2): four times the inertia
+    again = TP.replay(Protocol.from_json(book.protocol.to_json()), kappa=2.0)
+    assert again.replay.givens["pressure_ratio"] == pytest.approx(4 * 7.85 / (8.0 * 1.2), rel=1e-15)
+    for k in (2, 7, 15):
+        assert t_over_unit(again, k) == pytest.approx(t_over_unit(TP.figure(kappa=2.0), k), abs=1e-12)
+
+
+def test_a_protocol_written_before_kappa_was_a_given_keeps_its_engine(book):
+    """An older protocol has no κ: replayed with another rod it keeps its c v²/r (κ then follows the rod)."""
+    import json
+
+    data = json.loads(book.protocol.to_json())
+    del data["params"]["givens"]["kappa"]
+    data["givens"].remove("kappa")
+    replayed = TP.replay(Protocol.from_json(json.dumps(data)), rod_ratio=4.0)
+    assert replayed.replay.givens["pressure_ratio"] == pytest.approx(7.85 / (8.0 * 1.2), rel=1e-15)
 
 
 @pytest.mark.parametrize("kw", [{"kappa": -1.0}, {"force": "nonsense"}, {"rod_ratio": 0.5}, {"filling": 1.5},

@@ -122,7 +122,9 @@ def test_readme_example_in_a_fresh_project(project: pytest.Pytester) -> None:
     moved = project.runpytest_inprocess()
     moved.assert_outcomes(failed=1)
     out = moved.stdout.str()
-    assert re.search(r"moved +s0002-D0 \(circle, matched by id\): by \d", out), out
+    # the drawing breaks the empty stretch between the shaft and the stroke out, as the books break a long rod:
+    # drawn alike at both rods, the protocol says what moved
+    assert f"construct golden '{NAME}': 1 of 2 files differ" in out and "final.svg): " not in out, out
     assert "moved      D0: point moved by 0.5: (3, 0) -> (2.5, 0)" in out
     assert "moved      M: point moved by 0.5: (4, 0) -> (3.5, 0)" in out
     assert not re.search(r"moved +O:", out)  # the shaft itself stays where it was

@@ -12,6 +12,7 @@ slider or the page they step.
 
 from __future__ import annotations
 
+import json
 import math
 import re
 from pathlib import Path
@@ -19,8 +20,8 @@ from pathlib import Path
 import pytest
 
 from construct.constructions import get
-from construct.live import live_data, live_sweep, player_page
-from construct.render.wire import drawn_numbers, inflated
+from construct.live import live_data, live_givens, live_sweep, player_page
+from construct.render.wire import canonical_arc, drawn_numbers, inflated
 from construct.gallery import LIVE_PLAYERS, entry_slug, gallery_plan
 from construct.render.live import with_live
 from construct.render.output import write_replay
@@ -54,12 +55,18 @@ def _open(browser, path):
     return page, errors
 
 
-def _keys(page) -> tuple[list[list[str]], list[tuple]]:
-    """The page's own keys (from its deflated data) and the marks it draws from the nearer grid value."""
-    text = page.locator("#live-data").text_content()
+def _live_data(page, given: str | None = None) -> dict:
+    """The page's live data of *given* (the first given's without one)."""
     import json
 
-    meta = inflated(json.loads(text)["meta_z"])
+    data = json.loads(page.locator("#live-data").text_content())
+    givens = data.get("givens", [data])
+    return next(d for d in givens if given in (None, d["given"]))
+
+
+def _keys(page, given: str | None = None) -> tuple[list[list[str]], list[tuple]]:
+    """The page's own keys (from its deflated data) and the marks it draws from the nearer grid value."""
+    meta = inflated(_live_data(page, given)["meta_z"])
     flags = set(meta["flags"])
     keys, snapped, at = meta["keys"], [], 0
     for k in keys:
@@ -91,7 +98,7 @@ def _compare(page, c, params, v, keys, snapped) -> float:
     worst = 0.0
     for k, text in zip(keys, shown):
         k = tuple(k)
-        if k[0] in ("#zoom", "#ring") or k in snapped:  # views frame the figure (blended where they jump; live.py)
+        if k[0][0] == "#" or k in snapped:  # views, rings and breaks: the player's data (and the break marks)
             continue
         got = [float(x) for x in NUMBER.findall(text)]
         want = expect[k]
@@ -173,33 +180,123 @@ def test_arrow_keys_move_the_given_on_its_slider_and_step_elsewhere(browser, liv
 
 
 def _gallery_players():
+    """(name, params, given) of every live player of the gallery and each of its givens."""
     out = []
     for name, params in gallery_plan():
         if name in LIVE_PLAYERS and (name, params) == next((n, p) for n, p in gallery_plan() if n == name):
-            out.append((name, params))
+            c = get(name)
+            out += [(name, params, g.name) for g in live_givens(c, c.figure(**params))]
     return out
 
 
-@pytest.mark.parametrize("name,params", _gallery_players(), ids=lambda x: x if isinstance(x, str) else "")
-def test_the_gallery_players_are_live_and_draw_what_a_fresh_replay_draws(browser, name, params):
-    """The committed gallery's live players (rebuilt by `construct gallery`), at off-grid values."""
+#: Where on the slider a drag is compared with a fresh replay: both ends and eight places between (off the
+#: grid: no grid value is a round fraction of the domain in log10).
+SPOTS = (0.0, 0.071, 0.187, 0.309, 0.433, 0.551, 0.677, 0.793, 0.911, 1.0)
+
+
+def _owners(path: Path) -> list[tuple[int, str]]:
+    """Each label group of the built figure (by its place among the figure's g.lbg) and the point it names: its
+    letter's id, or the point of its step that it stands on (a name tag), read off the SVG here, not from the
+    page's script."""
+    import xml.etree.ElementTree as ET
+
+    text = path.read_text(encoding="utf-8")
+    root = ET.fromstring(text[text.index("<svg"):text.index("</svg>") + 6])
+    ns = "{http://www.w3.org/2000/svg}"
+    step_of, at, out = {}, {}, []
+    for g in root.iter(ns + "g"):
+        for e in g:
+            step_of[e] = g.get("data-step")
+    for c in root.iter(ns + "circle"):
+        if c.get("id") and "pt" in (c.get("class") or "").split():
+            at.setdefault((c.get("cx"), c.get("cy")), []).append((c.get("id"), step_of.get(c)))
+    groups = [g for g in root.iter(ns + "g") if "lbg" in (g.get("class") or "").split()]
+    for i, g in enumerate(groups):
+        m = re.match(r"translate\(([-0-9.e]+)[ ,]+([-0-9.e]+)\)", g.get("transform") or "")
+        label = next((t.get("id")[:-6] for t in g.iter(ns + "text") if (t.get("id") or "").endswith("-label")), None)
+        here = at.get((m.group(1), m.group(2)), []) if m else []
+        step = step_of.get(g)
+        own = label or next((p for p, s in here if s == step), here[0][0] if here else None)
+        assert own is not None, f"{path.parent.parent.name}: label group {i} names no point"
+        out.append((i, own))
+    return out
+
+
+# every point and label group of the figure, in the document or out of it (the groups of steps not shown), found
+# once and kept: they are the same elements as the given moves
+_FIND = """() => { const groups = window.constructPlayer.groups();
+    window.__pts = {}; groups.forEach(s => s.querySelectorAll('circle[id]').forEach(c => { window.__pts[c.id] = c; }));
+    window.__lbg = groups.flatMap(s => Array.from(s.querySelectorAll('g.lbg'))); }"""
+_ANCHORS = """() => window.__lbg.map(g => {
+    const m = /translate\\(([-0-9.e]+)[ ,]+([-0-9.e]+)\\)/.exec(g.getAttribute('transform')); return [+m[1], +m[2]]; })"""
+_POINTS = """ids => ids.map(i => { const c = window.__pts[i]; return [+c.getAttribute('cx'), +c.getAttribute('cy')]; })"""
+
+
+@pytest.mark.parametrize("name,params,given", _gallery_players(),
+                         ids=lambda x: x if isinstance(x, str) else "")
+def test_a_drag_keeps_every_point_letter_and_leader_where_a_fresh_replay_draws_them(browser, name, params, given):
+    """The committed gallery's live players, dragged as a teacher drags (``input`` events only, never let go)
+    across the whole slider at a quarter, three fifths and the last of the steps: every point of the figure (in
+    the window or not, of a step shown or not) within 0.5 px of a fresh replay at that value (the construction
+    built afresh with the given there, drawn as the player draws it, on the page's own fit to the view), and
+    every letter and name tag, with its leader, standing on the point it names (their offsets about it are the
+    placer's: the page does not move them).  The checks beside the figure follow the slider."""
+    from construct.live import Measure
+
     path = REPO / "gallery" / entry_slug(name, params) / "teaching" / "player.html"
     if not path.is_file():
         pytest.skip("no committed gallery in this checkout")
     assert 'id="live-data"' in path.read_text(encoding="utf-8"), f"{path} has no slider: rebuild the gallery"
     assert path.stat().st_size <= 2e6
-    page, errors = _open(browser, path)
-    keys, snapped = _keys(page)
     c = get(name)
-    worst = 0.0
-    for v in (1.3, 3.7, 4.6, 6.8, 41.0):
-        page.evaluate("v => window.constructLive.set(v)", v)
-        worst = max(worst, _compare(page, c, params, v, keys, snapped))
-        # the checks beside the figure are the construction's checks at (the nearest swept) value
-        rows = page.locator("#live-checks tbody tr")
-        assert rows.count() == len(c.checks(c.figure(**{**params, "rod_ratio": v})))
+    built = c.figure(**params)
+    measure = Measure(c, built, STYLES["teaching"])
+    owners = _owners(path)
+    page, errors = _open(browser, path)
+    data = _live_data(page, given)
+    meta = inflated(data["meta_z"])
+    lo, hi = math.log10(data["low"]), math.log10(data["high"])  # the slider's ends
+    # off any cell across which the drawing jumps (a break appearing: the page draws the nearer side there)
+    jumps = [(meta["grid"][j], meta["grid"][j + 1]) for j in meta["jumps"]]
+    values = []
+    for f in SPOTS:
+        u = lo + (hi - lo) * f
+        for a, b in jumps:
+            if a < u < b:
+                u = a if u - a > b - u else b
+        values.append(min(data["high"], max(data["low"], 10 ** u)))
+    fresh = {}
+    for v in values:  # every point's centre, as a fresh replay at v draws it
+        keys, nums, _, _ = measure(c.figure(**{**params, given: v}))
+        at, got = 0, {}
+        for k in keys:
+            if k[1] in ("cx", "cy") and k[2] == "#":
+                got.setdefault(k[0], [0.0, 0.0])[k[1] == "cy"] = nums[at]
+            at += k[2].count("#")
+        fresh[v] = got
+    ids = sorted(fresh[values[0]])
+    page.evaluate(_FIND)
+    n = page.evaluate("window.constructPlayer.data.n")
+    for frac in (0.25, 0.6, 1.0):
+        k = max(1, round(frac * n))
+        # (the camera's glide to the step's view: the drag's first frame takes the step's view at once)
+        page.evaluate("k => { const s = document.getElementById('slider'); s.value = k; s.oninput(); }", k)
+        for v in values:
+            _drag_to(page, given, v)
+            want = fresh[v]
+            off = max((math.hypot(x - want[i][0], y - want[i][1]), i)
+                      for i, (x, y) in zip(ids, page.evaluate(_POINTS, ids)))
+            assert off[0] <= 0.5, f"{name}, {given} = {v:.5g}, step {k}: {off[1]} off by {off[0]:.2f} px"
+            anchors = page.evaluate(_ANCHORS)
+            assert len(anchors) == len(owners)
+            for (i, own), (x, y) in zip(owners, anchors):
+                d = math.hypot(x - want[own][0], y - want[own][1])
+                assert d <= 0.5, f"{name}, {given} = {v:.5g}, step {k}: the letter of {own} stands {d:.2f} px off it"
+    # the checks beside the figure: the construction's at the nearest value swept
+    rows = page.locator("#live-checks tbody tr")
+    assert rows.count() == len(c.checks(c.figure(**{**params, given: values[-1]})))
+    assert page.evaluate("window.constructLive.unowned") == 0
     assert not errors, errors
-    assert worst > 0.0
     page.close()
 
 
@@ -210,7 +307,7 @@ def test_letters_stay_with_their_points(browser, live_player):
     page, errors = _open(browser, path)
     near = """() => { const pts = Array.from(document.querySelectorAll('#figure circle.pt[id]'))
         .map(c => [+c.getAttribute('cx'), +c.getAttribute('cy')]);
-      return Array.from(document.querySelectorAll('#figure g.lbg')).map(g => {
+      return Array.from(document.querySelectorAll('#figure g.lbg:not(.rodlen)')).map(g => {
         const m = /translate\\(([-0-9.e]+)[ ,]+([-0-9.e]+)\\)/.exec(g.getAttribute('transform'));
         return Math.min(...pts.map(p => Math.hypot(p[0] - +m[1], p[1] - +m[2]))); }); }"""
     built = page.evaluate(near)
@@ -371,9 +468,10 @@ def test_while_dragging_the_camera_and_the_zoom_level_stay_while_near_and_let_go
 
 
 def test_a_drag_keeps_the_zoom_level_near_its_range_and_letting_go_makes_it_exact(browser):
-    """The committed gallery's inertia curve at its last step, dragged in legs across L/r = 4 ... 8.3 ... 2.5 (its
-    view magnifies more as L/r grows): a drag keeps the shown zoom level while near its range (a new level swaps
-    the letters, a frame of its own), and once the slider is let go the level is the one the step's view has."""
+    """The committed gallery's inertia curve at its last step, dragged in legs across L/r = 4 ... 1.15 ... 9 (its
+    view magnifies more as L/r falls towards 1, where the curve's points crowd the crank circle's ends): a drag
+    keeps the shown zoom level while near its range (a new level swaps the letters, a frame of its own), and
+    once the slider is let go the level is the one the step's view has."""
     path = REPO / "gallery" / "inertia-curve-rod-ratio-4" / "teaching" / "player.html"
     if not path.is_file():
         pytest.skip("no committed gallery in this checkout")
@@ -386,7 +484,7 @@ def test_a_drag_keeps_the_zoom_level_near_its_range_and_letting_go_makes_it_exac
     let_go = """() => new Promise(r => { document.querySelector('#live input[type=range]').dispatchEvent(new Event('change'));
         setTimeout(r, 700); })"""
     held = 0
-    for a, b in [(4.0, 5.2), (5.2, 7.5), (7.5, 8.3), (8.3, 4.9), (4.9, 2.5)]:
+    for a, b in [(4.0, 1.3), (1.3, 1.8), (1.8, 1.15), (1.15, 3.0), (3.0, 1.2), (1.2, 9.0)]:
         page.evaluate(drag, [a, b])
         dragged = page.evaluate(level)
         page.evaluate(let_go)
@@ -399,59 +497,267 @@ def test_a_drag_keeps_the_zoom_level_near_its_range_and_letting_go_makes_it_exac
     page.close()
 
 
-_SEEN = """keys => { const svg = document.getElementById('figure'), R = svg.getBoundingClientRect();
-    return keys.map(k => {
-      if (k[0].charAt(0) === '#' || !k[0] || k[0] === 'figure') return [null, false];
-      const el = window.constructPlayer.find(k[0]), r = el.getBoundingClientRect();
-      const shown = r.width + r.height > 0 && r.right >= R.left && r.left <= R.right && r.bottom >= R.top && r.top <= R.bottom;
-      return [el.getAttribute(k[1]), shown]; }); }"""
-
-
-def test_a_drag_draws_every_mark_in_the_window_and_the_rest_when_let_go(browser, live_player):
-    """While the given is dragged the page draws the marks the window shows (a hidden group's marks, or marks
-    outside the window, cost a restyle and a layout all the same): each of those is where a fresh replay draws
-    it; the others follow when the slider is let go, and when a step is shown."""
+def test_a_drag_draws_every_mark_in_the_window_or_not_shown_or_not(browser, live_player):
+    """A drag (``input`` events only, never let go) draws every mark at every moment: those in the window, those
+    outside it and those of steps not shown yet (out of the document), each where a fresh replay draws it; a
+    step shown next is right at once."""
     c, _, path = live_player
     page, errors = _open(browser, path)
     keys, snapped = _keys(page)
-    fresh_of = {}
-
-    def fresh(v):
-        if v not in fresh_of:
-            fk, fv, _ = drawn_numbers(player_page(c, c.figure(parts=3, rod_ratio=v), STYLES["teaching"]))
-            at, out = 0, {}
-            for k in fk:
-                n = k[2].count("#")
-                out[k] = fv[at:at + n]
-                at += n
-            fresh_of[v] = out
-        return fresh_of[v]
-
     page.evaluate("() => { const s = document.getElementById('slider'); s.value = 30; s.oninput(); }")
     page.wait_for_timeout(500)  # the camera's glide to the step's view
-    seen_total = left = 0
     for v in (1.9, 3.3, 4.37, 7.1):
-        page.evaluate("v => window.constructLive.set(v, true)", v)
-        want = fresh(v)
-        for k, (text, seen) in zip(keys, page.evaluate(_SEEN, keys)):
-            k = tuple(k)
-            if text is None or k in snapped:
-                continue
-            d = max(abs(a - b) for a, b in zip((float(x) for x in NUMBER.findall(text)), want[k]))
-            if seen:
-                assert d <= 0.5, f"L/r = {v}: {k[0]} {k[1]} in the window off by {d:.3f} px while dragging"
-                seen_total += 1
-            left += d > 0.5
-    assert seen_total > 0 and left > 0  # marks in the window compared, and others left while dragging
-    # let go: every mark where a fresh replay draws it
-    page.evaluate("""() => new Promise(r => { const i = document.querySelector('#live input[type=range]');
-        i.dispatchEvent(new Event('change')); requestAnimationFrame(() => requestAnimationFrame(r)); })""")
-    page.keyboard.press("End")  # the later steps too (they are drawn when shown)
-    assert _compare(page, c, {"parts": 3}, 7.1, keys, snapped) > 0.0
-    # dragged again, then a step shown (no let-go): the marks of the steps shown follow at once
-    page.evaluate("() => { const s = document.getElementById('slider'); s.value = 30; s.oninput(); }")
-    page.evaluate("v => window.constructLive.set(v, true)", 2.6)
+        _drag_to(page, "rod_ratio", v)
+        assert _compare(page, c, {"parts": 3}, v, keys, snapped) > 0.0
     page.keyboard.press("End")
-    assert _compare(page, c, {"parts": 3}, 2.6, keys, snapped) > 0.0
+    assert _compare(page, c, {"parts": 3}, 7.1, keys, snapped) > 0.0
+    assert not errors, errors
+    page.close()
+
+
+def _drag_to(page, given: str, v: float) -> None:
+    """The given's slider moved to *v* as a drag moves it: an ``input`` event (no ``change``), drawn in the next
+    animation frame."""
+    page.evaluate("""([g, v]) => new Promise(r => { const i = document.querySelector('#live input[name="' + g + '"]');
+        i.value = Math.log10(v); i.dispatchEvent(new Event('input'));
+        requestAnimationFrame(() => requestAnimationFrame(r)); })""", [given, v])
+
+
+def _fresh_svg(c, params: dict, given: str, v: float):
+    """The figure of a fresh replay's player page at *v*: its root (ElementTree)."""
+    import xml.etree.ElementTree as ET
+
+    page = player_page(c, c.figure(**{**params, given: v}), STYLES["teaching"])
+    return ET.fromstring(page[page.index("<svg"):page.index("</svg>") + 6])
+
+
+def _numbers(e, attrs) -> list[float]:
+    return [float(x) for a in attrs for x in NUMBER.findall(e.get(a) or "")]
+
+
+def test_a_broken_rod_stays_broken_with_its_length_written(browser, live_player):
+    """Past L/r = 4 the crank's long rod is broken out of the figure: while the slider is dragged the page draws
+    the break's marks on every line that crosses it (the axis, the rod drawn to its crosshead), where a fresh
+    replay draws them, and writes the rod's length at the break: the figure never claims a short rod."""
+    c, _, path = live_player
+    page, errors = _open(browser, path)
+    page.keyboard.press("End")
+    marks = """() => Array.from(document.querySelectorAll('#figure .brkg:not([display=none]) > *'))
+        .filter(e => e.isConnected).map(e => [e.getAttribute('class'), e.tagName === 'path' ? e.getAttribute('d') :
+          [e.getAttribute('x1'), e.getAttribute('y1'), e.getAttribute('x2'), e.getAttribute('y2')].join(' ')])"""
+    label = """() => { const g = document.querySelector('#figure .rodlen'); return g && g.getAttribute('display') !== 'none'
+        ? g.querySelector('text:last-of-type').textContent : null; }"""
+    for v in (3.5, 8.0, 50.0):
+        _drag_to(page, "rod_ratio", v)
+        want = [e for e in _fresh_svg(c, {"parts": 3}, "rod_ratio", v).iter()
+                if (e.get("class") or "") in ("brk", "brkline")]
+        got = page.evaluate(marks)
+        assert len(got) == len(want), (v, len(got), len(want))
+        # the same marks, each within 0.5 px (matched by their numbers: the page draws each line's beside it)
+        for cls, text in got:
+            nums = [float(x) for x in NUMBER.findall(text)]
+            best = min(max(abs(a - b) for a, b in zip(nums, _numbers(w, ("d", "x1", "y1", "x2", "y2"))))
+                       for w in want if w.get("class") == cls)
+            assert best <= 0.5, (v, cls, best)
+        assert page.evaluate(label) == (f"L = {v:g} r".replace(".", ",") if want else None)
+    assert not errors, errors
+    page.close()
+
+
+def test_every_element_of_the_figure_is_where_a_fresh_replay_draws_it(browser, live_player):
+    """The general form of 'every mark, every moment': while the slider is dragged, every element of the figure's
+    steps -- marks, letters and name tags by their groups' anchors (the letters and leaders about an anchor are
+    where the placer put them at the book's value: the page keeps them there) -- in the order of the figure,
+    has the numbers of the same element of a fresh replay's page, within 0.5 px; the break marks (the page
+    draws them beside their lines) and the rod's length at the break are held above."""
+
+    c, _, path = live_player
+    page, errors = _open(browser, path)
+    page.keyboard.press("End")
+    read = """() => { const out = [];
+      window.constructPlayer.groups().forEach(s => s.querySelectorAll('*').forEach(e => {
+        if (e.closest('.brkg') || e.closest('.rodlen') || e.closest('#views')) return;  // (views: data, not drawn)
+        // a letter's or leader's place about its anchor is the placer's (kept): its group's anchor is compared
+        if (e.parentNode.closest && e.parentNode.closest('g.lbg')) return;
+        const t = e.getAttribute('transform') || '';
+        out.push([e.tagName, ['cx', 'cy', 'r', 'x1', 'y1', 'x2', 'y2', 'd', 'x', 'y'].map(a => e.getAttribute(a) || '').join(' ') + ' ' + t]);
+      })); return out; }"""
+    for v in (1.6, 3.3, 7.1, 23.0):
+        _drag_to(page, "rod_ratio", v)
+        got = page.evaluate(read)
+        root = _fresh_svg(c, {"parts": 3}, "rod_ratio", v)
+        ns = "{http://www.w3.org/2000/svg}"
+        want = []
+        views = root.find(f".//{ns}g[@id='views']")
+        skip = set(views.iter()) if views is not None else set()
+        for s in root.iter(ns + "g"):
+            if s.get("data-step") is None or s in skip:
+                continue
+            inside = {d for g in s.iter(ns + "g") if "lbg" in (g.get("class") or "").split() for d in g.iter() if d is not g}
+            for e in s.iter():
+                if e is s or e in inside:
+                    continue
+                t = e.get("transform") or ""
+                want.append([e.tag[len(ns):], " ".join(e.get(a) or "" for a in ("cx", "cy", "r", "x1", "y1", "x2",
+                                                                                  "y2", "d", "x", "y")) + " " + t])
+        assert len(got) == len(want) and [g[0] for g in got] == [w[0] for w in want], v
+        worst = (0.0, None)
+        for (tag, a), (_, b) in zip(got, want):
+            na, nb = [float(x) for x in NUMBER.findall(a)], [float(x) for x in NUMBER.findall(b)]
+            assert len(na) == len(nb), (v, tag, a, b)
+            if "A" in a and len(na) == 9:  # an arc: the page draws it counter-clockwise (render/wire.py canonical_arc)
+                na, nb = canonical_arc(na), canonical_arc(nb)
+            worst = max(worst, (max((abs(x - y) for x, y in zip(na, nb)), default=0.0), (tag, a, b)))
+        assert worst[0] <= 0.5, (v, worst)
+    assert not errors, errors
+    page.close()
+
+
+def test_letters_that_come_to_lie_on_one_another_give_way(browser, live_player):
+    """Near L/r = 1 the crank's piston points crowd the stroke's end: the page lets a later letter give way where
+    it would lie on another (never a pile of letters), and at the book's value hides none."""
+    _, _, path = live_player
+    page, errors = _open(browser, path)
+    page.keyboard.press("End")
+    boxes = """() => Array.from(document.querySelectorAll('#figure g.lbg'))
+        .filter(g => g.isConnected && g.getAttribute('visibility') !== 'hidden' && !g.closest('[display=none]'))
+        .map(g => g.querySelector('text:last-of-type')).filter(t => t && t.getClientRects().length)
+        .map(t => { const r = t.getBoundingClientRect(); return [r.left, r.top, r.right, r.bottom, t.textContent]; })"""
+    hidden = "() => document.querySelectorAll('#figure g.lbg[visibility=hidden]').length"
+    assert page.evaluate(hidden) == 0
+    for v in (1.07, 1.2, 2.0):
+        _drag_to(page, "rod_ratio", v)
+        shown = page.evaluate(boxes)
+        pile = [(a[4], b[4]) for i, a in enumerate(shown) for b in shown[i + 1:]
+                if a[0] < b[2] - 1 and b[0] < a[2] - 1 and a[1] < b[3] - 1 and b[1] < a[3] - 1]
+        assert not pile, (v, pile)
+    _drag_to(page, "rod_ratio", 5.0)
+    assert page.evaluate(hidden) == 0
+    assert not errors, errors
+    page.close()
+
+
+def test_two_givens_move_one_at_a_time_and_the_page_says_which(browser):
+    """Tangential-pressure takes the rod and Baumann's κ: each slider is named as in the protocol, moving one
+    sets the other back to the book's value (each sweep is taken with the other there), and the title, the givens
+    and the checks name the shown values."""
+    path = REPO / "gallery" / entry_slug("tangential-pressure", {"rod_ratio": 5.0, "parts": 18, "kappa": 8.0}) / \
+        "teaching" / "player.html"
+    if not path.is_file():
+        pytest.skip("no committed gallery in this checkout")
+    page, errors = _open(browser, path)
+    kappa = page.locator('input[type="range"][name="kappa"]')
+    rod = page.locator('input[type="range"][name="rod_ratio"]')
+    assert kappa.count() == 1 and rod.count() == 1
+    _drag_to(page, "rod_ratio", 3.0)
+    assert "1/3" in page.locator("#givens").inner_text() and "r/L = 1/3" in page.locator("h1").inner_text()
+    _drag_to(page, "kappa", 2.0)
+    assert float(rod.input_value()) == pytest.approx(math.log10(5.0))  # the rod back at the book's value
+    assert "r/L = 1/5" in page.locator("h1").inner_text() and "κ = P/Bₘₐₓ = 2" in page.locator("h1").inner_text()
+    assert "P/Bₘₐₓ = 2" in page.locator("#givens").inner_text()
+    assert "κ = " in page.locator("#live-at").inner_text()  # the checks at the nearest κ swept
+    assert "einzeln" in page.locator("#live").inner_text()
+    assert not errors, errors
+    page.close()
+
+
+def test_a_given_that_changes_the_steps_is_a_switch_between_the_books_figures(browser):
+    """The indicator diagram's filling changes its steps (the division up to the cut-off): each of the book's
+    figures has its player, and each player a switch to the others, saying why it is no slider."""
+    plan = [p for n, p in gallery_plan() if n == "indicator-diagram"]
+    paths = [REPO / "gallery" / entry_slug("indicator-diagram", p) / "teaching" / "player.html" for p in plan]
+    if not all(p.is_file() for p in paths):
+        pytest.skip("no committed gallery in this checkout")
+    assert len(paths) >= 2
+    page, errors = _open_plain(browser, paths[0])
+    switch = page.locator("#live.live-switch")
+    assert switch.count() == 1 and "Schritte" in switch.inner_text() and "10 %" in switch.inner_text()
+    assert page.locator('#live input[type="range"]').count() == 0
+    page.locator("#live.live-switch a").first.click()
+    page.wait_for_load_state()
+    assert page.url.endswith(paths[1].relative_to(REPO / "gallery").as_posix())
+    assert page.locator('#live b[aria-current="page"]').inner_text() == "40 %"
+    assert not errors, errors
+    page.close()
+
+
+def _open_plain(browser, path):
+    page = browser.new_page(viewport={"width": 1400, "height": 1000})
+    errors: list[str] = []
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    page.goto(path.as_uri())
+    return page, errors
+
+
+@pytest.mark.parametrize("name,params,given,values", [
+    ("tangential-pressure", {"rod_ratio": 5.0, "parts": 18, "kappa": 8.0}, "kappa", (1.3, 27.0)),
+    ("piston-force", {}, "rod_length", (0.9, 3.0, 7.0))])
+def test_areas_are_drawn_from_the_curves_that_bound_them(browser, name, params, given, values):
+    """An area between two curves (Baumann's excess area, Tafel I's free forces) has as many pieces, and as
+    many points, as its curves' crossings and breakpoints make at each value: the page draws it anew from the
+    curves it shows, and each area (its pieces together) is a fresh replay's within 0.5 px (their boundaries).
+    A piece all of whose points lie within half a pixel (a crossing a hair from the area's end) is no piece one
+    sees: it is left out on both sides.  (The pieces together: where two curves cross at a grazing angle, the
+    corner between two pieces slides along them by ten times what the curves move.)"""
+    from shapely.geometry import Polygon
+    from shapely.ops import unary_union
+
+    path = REPO / "gallery" / entry_slug(name, params) / "teaching" / "player.html"
+    if not path.is_file():
+        pytest.skip("no committed gallery in this checkout")
+    c = get(name)
+    page, errors = _open(browser, path)
+    read = """() => window.constructPlayer.groups().flatMap(s => Array.from(s.querySelectorAll('path.area')))
+        .filter(e => e.getAttribute('display') !== 'none').map(e => [e.id, e.getAttribute('d')])"""
+    ring = lambda d: [tuple(p) for p in zip(*[iter(float(x) for x in NUMBER.findall(d))] * 2)]  # noqa: E731
+
+    def areas(pieces) -> dict[str, list]:  # each area's pieces one sees, by the step that made it
+        out: dict[str, list] = {}
+        for i, d in pieces:
+            q = Polygon(ring(d))
+            if max(q.bounds[2] - q.bounds[0], q.bounds[3] - q.bounds[1]) > 0.5:
+                out.setdefault(i.split("-")[0], []).append(q.buffer(0))
+        return out
+
+    for v in values:
+        _drag_to(page, given, v)
+        got = areas(page.evaluate(read))
+        want = areas((e.get("id"), e.get("d")) for e in _fresh_svg(c, params, given, v).iter()
+                     if "area" in (e.get("class") or "").split() and e.get("id"))
+        assert want and {k: len(p) for k, p in got.items()} == {k: len(p) for k, p in want.items()}, v
+        for k, ps in want.items():
+            gap = unary_union(got[k]).boundary.hausdorff_distance(unary_union(ps).boundary)
+            assert gap <= 0.5, (name, v, k, gap)
+    assert not errors, errors
+    page.close()
+
+
+def test_a_curve_through_the_points_between_its_corners_takes_the_points_a_fresh_build_takes(browser):
+    """Tafel I's piston-force pieces b and c run through the points between their corners (s1, s2): which points
+    those are depends on the rod, so a replay of the built protocol at another rod draws them through the wrong
+    points (7 px off at L = 3 m).  The page sweeps each part of the domain where a fresh build takes the same
+    steps apart (live.sweep.pieces), under one slider: at every value, on both sides of the parts' ends, its
+    curves have a fresh build's pieces, each number within 0.5 px."""
+    path = REPO / "gallery" / entry_slug("piston-force", {}) / "teaching" / "player.html"
+    if not path.is_file():
+        pytest.skip("no committed gallery in this checkout")
+    c = get("piston-force")
+    page, errors = _open(browser, path)
+    page.keyboard.press("End")
+    assert page.locator('#live input[type="range"]').count() == 1
+    ends = sorted(g["piece"][0] for g in json.loads(page.locator("#live-data").text_content())["givens"])[1:]
+    assert len(ends) >= 3
+    read = """ids => ids.map(i => window.constructPlayer.find(i).getAttribute('d'))"""
+    for v in [0.45, 0.9, 3.0, 7.0, 100.0] + [e * f for e in ends[-2:] for f in (0.999, 1.001)]:
+        _drag_to(page, "rod_length", v)
+        want = {e.get("id"): e.get("d") for e in _fresh_svg(c, {}, "rod_length", v).iter()
+                if (e.get("id") or "").endswith(("-forceb", "-forcec", "-mass"))}
+        got = dict(zip(want, page.evaluate(read, list(want))))
+        assert len(want) == 3
+        for i, d in want.items():
+            a, b = NUMBER.findall(got[i]), NUMBER.findall(d)
+            assert got[i].count("C") == d.count("C") and len(a) == len(b), (v, i)
+            worst = max(abs(float(x) - float(y)) for x, y in zip(a, b))
+            assert worst <= 0.5, (v, i, worst)
     assert not errors, errors
     page.close()

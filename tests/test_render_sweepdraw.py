@@ -28,7 +28,8 @@ def _sweep(name: str, params: dict):
     return c, built, replay
 
 
-@pytest.mark.parametrize("name, params", [("crank", {"parts": 6}), ("crank", {"parts": 18}), ("inertia-curve", {})])
+@pytest.mark.parametrize("name, params", [("crank", {"parts": 6}), ("crank", {"parts": 18}), ("inertia-curve", {}),
+                                          ("piston-force", {}), ("tangential-pressure", {"parts": 6})])
 def test_every_mark_is_drawn_where_the_drawing_draws_it_value_by_value(name, params):
     c, built, replay = _sweep(name, params)
     measure = Measure(c, built, STYLES["teaching"])
@@ -71,6 +72,9 @@ def test_a_sweeps_frames_are_the_frames_of_each_value(name, params):
 
 
 def test_a_figure_with_hatched_areas_is_left_to_the_drawing():
+    """An area is drawn over the sweep as its ring of points; its hatching (a style that hatches) has as many
+    lines as the area's size holds at each value: drawn value by value."""
     c = get("tangential-pressure")
     scene = scene_for(c, c.figure(parts=6))
-    assert not sweep_drawable(scene) and sweep_drawable(scene_for(get("crank"), get("crank").figure(parts=3)))
+    assert sweep_drawable(scene, STYLES["teaching"]) and not sweep_drawable(scene, STYLES["historical"])
+    assert sweep_drawable(scene_for(get("crank"), get("crank").figure(parts=3)))

@@ -89,6 +89,11 @@ class Construction:
     #: Whether its validator takes a sweep's givens (arrays) at once, naming the first set outside the domain;
     #: else :meth:`sweep_checks` validates set by set.
     validates_sweeps: bool = False
+    #: The givens it computes from others by its book's own formula, whatever set those (tangential-pressure:
+    #: c v²/r = P/((1 + r/L) κ) from κ and L/r; two-cranks: the magnification it chose itself, from L/r): applied
+    #: to the givens of a protocol replayed with new givens and of a sweep (arrays): (givens, the protocol's
+    #: params) -> givens.  None: no given follows from another.
+    derived: Callable[[Mapping[str, Any], Mapping[str, Any]], dict[str, Any]] | None = None
 
     def __post_init__(self) -> None:
         # where a construction kept its plate and its parameters' help before they were fields of their own
@@ -124,7 +129,23 @@ class Construction:
             return self.sweep(givens, np.asarray(ratios, dtype=float))
         if "rod_ratio" not in givens:
             return None
-        return {**givens, "rod_ratio": np.asarray(ratios, dtype=float)}
+        return self.given_sweep(givens, "rod_ratio", ratios)
+
+    def given_sweep(self, givens: Mapping[str, Any], name: str, values: Any,
+                    params: Mapping[str, Any] | None = None) -> dict[str, Any]:
+        """The givens that replay a figure of this construction at every value of its given *name* in *values*
+        (the others as in *givens*, those that follow from them by :attr:`derived`; *params*: the protocol's).
+
+        >>> from construct.constructions import get
+        >>> g = get("tangential-pressure").figure().replay.givens
+        >>> swept = get("tangential-pressure").given_sweep(g, "kappa", [8.0, 2.0])
+        >>> [round(float(x), 6) for x in swept["pressure_ratio"]]  # c v^2/r = P/((1 + r/L) kappa): 4 times as much
+        [0.817708, 3.270833]
+        """
+        if name not in givens:
+            raise InvalidParameter(f"{self.name} has no given {name!r} to sweep; it has {', '.join(sorted(givens))}")
+        out = {**givens, name: np.asarray(values, dtype=float)}
+        return self.derived(out, params or {}) if self.derived is not None else out
 
     def sweep_checks(self, figure: Figure) -> list[list[Check]]:
         """The checks of every set of givens of a sweep (a figure replayed with arrays of givens), set by set.
@@ -167,6 +188,8 @@ class Construction:
                     f"{'' if value is True else ' ' + str(value)}'")
             if key in values:
                 values[key] = positive(key, value)
+        if self.derived is not None:  # what follows from the new givens by the book's formula
+            values = self.derived(values, protocol.params)
         self.validate(values)
         return Figure(protocol, protocol.replay(values), self.check, self)
 

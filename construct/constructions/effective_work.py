@@ -253,6 +253,7 @@ EFFECTIVE_WORK = register(Construction(
     methods=TANGENTIAL.methods,
     plate=effective_work_plate,
     validator=_validate,
+    derived=TANGENTIAL.derived,  # Fig. 26's c v^2/r follows κ and the rod, on replay and in a sweep (the live page)
     help={"efficiency": "effective-work: the mechanical efficiency η, effective over indicated work, 0.3 .. 1 "
                         "(default 0.85): the friction (1 - η) T_m as a constant tangential force (Fig. 27)"},
 ))

@@ -301,6 +301,34 @@ class Areas:
         upper, lower, x_from, x_to = (take(v, i) for v in self._graphs)
         return area_between(upper, lower, x_from, x_to, self.hatch_deg)
 
+    def extent(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """The box (x0, x1, y0, y1) of every set's pieces, arrays, without making them (a drawing of the sweep
+        asks where the areas reach): from lo to hi, as high and as low as either graph at its vertices between
+        them and at lo and hi (a crossing lies between those).
+
+        >>> from construct.kernel.geometry import Point
+        >>> a = Areas(Line(Point(0.0, 1.0), Point(1.0, 1.0)), Line(Point(0.0, 0.0), Point(1.0, 2.0)),
+        ...           np.array([0.0, 0.0]), np.array([1.0, 0.5]), None, np.zeros(2))
+        >>> [v.tolist() for v in a.extent()]
+        [[0.0, 0.0], [1.0, 0.5], [0.0, 0.0], [2.0, 1.0]]
+        """
+        upper, lower, x_from, x_to = self._graphs
+        n = len(self._signed)
+        lo, hi = np.minimum(x_from, x_to) * np.ones(n), np.maximum(x_from, x_to) * np.ones(n)
+        ys = []
+        for curve in (upper, lower):
+            graph = _graph_rows(curve, n)
+            if graph is None:  # a line: straight from lo to hi
+                (px, py), (qx, qy) = curve
+                ys += [py + (lo - px) * (qy - py) / (qx - px), py + (hi - px) * (qy - py) / (qx - px)]
+                continue
+            gx, gy = graph
+            inside = (gx > lo) & (gx < hi)
+            ys += [_ordinate_rows(graph, lo), _ordinate_rows(graph, hi),
+                   np.where(inside, gy, np.inf).min(axis=0), np.where(inside, gy, -np.inf).max(axis=0)]
+        Y = np.vstack([y * np.ones(n) for y in ys])
+        return lo, hi, Y.min(axis=0), Y.max(axis=0)
+
 
 def _graph_rows(curve: Any, n: int) -> tuple[np.ndarray, np.ndarray] | None:
     """:func:`_graph` for every set of a sweep: the vertices (x ascending in each set), arrays (vertices, n)."""

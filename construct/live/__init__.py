@@ -32,8 +32,8 @@ True
 from __future__ import annotations
 
 from .measure import Measure, player_page, player_page_and_fit
-from .sweep import LIVE_GIVENS, LiveSweep, live_givens, live_sweep
-from .wire import live_data
+from .sweep import LiveGiven, LiveSweep, live_givens, live_sweep
+from .wire import live_data, live_pages
 
-__all__ = ["LIVE_GIVENS", "LiveSweep", "Measure", "live_givens", "live_sweep", "live_data", "player_page",
+__all__ = ["LiveGiven", "LiveSweep", "Measure", "live_givens", "live_sweep", "live_data", "live_pages", "player_page",
            "player_page_and_fit"]

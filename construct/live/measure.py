@@ -23,7 +23,7 @@ from ..figure import Figure
 from ..render.camera import MAX_ZOOM, clip_view
 from ..render.output import scene_for
 from ..render.player import player_html
-from ..render.scene import extreme_points, reading
+from ..render.scene import MarkKind, extreme_points, reading
 from ..render.styles import STYLES
 from ..render.svg import Drawing, mark_geometry, mark_layer
 from ..render.svgdoc import fmt
@@ -31,7 +31,7 @@ from ..render.sweepdraw import SweepDrawing, sweep_drawable
 from ..render.viewport import Viewport
 from ..render.wire import ARC, NUMBER, canonical_arc
 
-__all__ = ["Measure", "player_page", "player_page_and_fit", "fit_of"]
+__all__ = ["Measure", "player_page", "player_page_and_fit", "fit_of", "areas_of", "breaks_px"]
 
 
 class Measure:
@@ -73,24 +73,46 @@ class Measure:
                 shows[j].add(k)
         self.framed = [[m.id for m in scene.marks if m.step in ks] for ks in shows]
         self.views = list(distinct)
+        #: the areas between curves: drawn by the page from the curves that bound them (:func:`areas_of`)
+        self.areas = areas_of(built.protocol, scene)
+        #: the steps whose current mark is ringed (small on the screen at the built value), by their index, and
+        #: the marks the ring goes round: the ring's centre is carried (the centre of their box)
+        self.rings = [(i, [m.id for m in scene.marks if m.step == k]) for i, k in enumerate(self.steps)
+                      if drawing.ring(k) is not None]
         self.boxes = self._boxes(scene, drawing.vp)
         self.least = 1.0 / MAX_ZOOM
         self.template = scene
         # the marks' keys as this value's page has them: each mark's numbers are a run of them, the runs in the
         # page's order (a sweep draws each mark's numbers for every value at once, :meth:`frames`)
         self.keys, _, _, texts = self(built)
-        self.runs: list[tuple[str, int]] = []
-        for k in self.keys[1:len(self.keys) - len(self.view_of)]:
-            if self.runs and self.runs[-1][0] == k[0]:
-                self.runs[-1] = (k[0], self.runs[-1][1] + k[2].count("#"))
-            else:
-                self.runs.append((k[0], k[2].count("#")))
+        self.runs = self._runs(self.keys)
+        # a protocol of another piece of the domain (live.sweep.pieces): its scene, runs and keys, made once (the
+        # protocol kept with them: its id stays its own)
+        self._forms = {id(built.protocol): (built.protocol, scene, self.runs, self.keys)}
         # the letters whose text is read off the figure (an angle), by the id of their letter (a lettered line's
         # letter stands at a point of its own, "NAME.at")
         readings = {name: label for st in built.protocol.steps for name, label in st.labels if "{∠" in label}
         of = lambda m: m.name[:-3] if m.id.endswith("-at") and m.name.endswith(".at") else m.name  # noqa: E731
         self.readings = {f"{m.id}-label": readings[of(m)] for m in scene.marks if of(m) in readings and m.label}
         self.texts = {k: v for k, v in texts.items() if k not in self.readings}  # the same at every value
+
+    def _runs(self, keys: list[tuple[str, str, str]]) -> list[tuple[str, int]]:
+        """Each mark's run of numbers among *keys*: (its id, how many)."""
+        runs: list[tuple[str, int]] = []
+        for k in keys[1:len(keys) - len(self.view_of) - len(self.rings) - 2]:
+            if runs and runs[-1][0] == k[0]:
+                runs[-1] = (k[0], runs[-1][1] + k[2].count("#"))
+            else:
+                runs.append((k[0], k[2].count("#")))
+        return runs
+
+    def _form(self, protocol: Any, replay: Any) -> tuple[Any, list[tuple[str, int]], list[tuple[str, str, str]]]:
+        """The scene, the marks' runs and the keys of *protocol* (drawn at the first value of *replay*)."""
+        if id(protocol) not in self._forms:
+            first = Figure(protocol, replay.take(0, whole=True), self.construction.check, self.construction)
+            keys = self(first)[0]
+            self._forms[id(protocol)] = (protocol, scene_for(self.construction, first), self._runs(keys), keys)
+        return self._forms[id(protocol)][1:]
 
     def _boxes(self, scene, vp) -> list[tuple[float, float, float, float] | None]:
         """Per distinct view, the box (canvas px: x0, y0, x1, y1) of the marks it frames."""
@@ -133,45 +155,71 @@ class Measure:
         draws, value by value elsewhere (a value where a mark changes its form, a figure the sweep does not
         draw)."""
         at_once = None
-        if sweep_drawable(self.template):
+        template, runs, keys = self._form(protocol, replay)
+        if sweep_drawable(template, self.style):
             try:
-                at_once = SweepDrawing(self.template, protocol, replay, size, self.style)
+                at_once = SweepDrawing(template, protocol, replay, size, self.style)
             except ValueError:  # a mark of another kind than the built figure's: value by value
                 at_once = None
-        if at_once is not None and any(at_once.numbers.get(i, np.zeros((0, 0))).shape[1:] != (n,)
-                                       for i, n in self.runs):
+        if at_once is not None and any(at_once.numbers.get(i, np.zeros((0, 0))).shape[1:] != (n,) for i, n in runs):
             at_once = None
         if at_once is None or not at_once.ok.any():
             return [self(Figure(protocol, replay.take(i, whole=True), self.construction.check, self.construction))
                     for i in range(size)]
-        rows = np.hstack([at_once.numbers[i] for i, _ in self.runs])
+        rows = np.hstack([at_once.numbers[i] for i, _ in runs])
         width, height = (np.round(v, 2) for v in at_once.size)
         px = at_once.page_px
-        boxes = []
-        for ids in self.framed:  # each view's marks' box, on the page of every value
+
+        def box_of(ids: list[str]) -> tuple | None:  # the box of marks on the page of every value (canvas px)
             e = [at_once.extremes[i] for i in ids if i in at_once.extremes]
             if not e:
-                boxes.append(None)
-                continue
+                return None
             (x0, y0), (x1, y1) = (px(np.min([b[0] for b in e], 0), np.max([b[3] for b in e], 0)),
                                   px(np.max([b[1] for b in e], 0), np.min([b[2] for b in e], 0)))
-            boxes.append((x0, y0, x1, y1))
+            return x0, y0, x1, y1
+
+        carried = [self._carried_all(j, box_of(ids), width, height) for j, ids in enumerate(self.framed)]
+        carried.append([np.zeros(size), np.zeros(size), width, height])  # [-1]: the whole figure
+        blocks = [np.zeros((size, 2)), width[:, None], height[:, None], rows]
+        blocks += [np.column_stack(carried[j]) for j in self.view_of]
+        for _, ids in self.rings:  # the ring's centre: of the box of the step's marks
+            b = box_of(ids)
+            blocks.append(np.zeros((size, 2)) if b is None else
+                          np.column_stack([np.round((b[0] + b[2]) / 2, 2), np.round((b[1] + b[3]) / 2, 2)]))
+        blocks.append(at_once.breaks_page())
+        table = np.hstack(blocks)
         out = []
         for i in range(size):
             if not at_once.ok[i]:
                 out.append(self(Figure(protocol, replay.take(i, whole=True), self.construction.check,
                                        self.construction)))
                 continue
-            full = (0.0, 0.0, float(width[i]), float(height[i]))
-            nums = [0.0, 0.0, float(width[i]), float(height[i])] + rows[i].tolist()
-            carried = [self._carried(j, None if b is None else tuple(float(c[i]) for c in b), full)
-                       for j, b in enumerate(boxes)] + [list(full)]
-            for j in self.view_of:
-                nums += carried[j]
-            taken = replay.take(i)
-            texts = {**self.texts, **{k: reading(label, taken) for k, label in self.readings.items()}}
-            out.append((self.keys, nums, tuple(float(v) for v in at_once.fit[i]), texts))
+            texts = self.texts
+            if self.readings:
+                taken = replay.take(i)
+                texts = {**self.texts, **{k: reading(label, taken) for k, label in self.readings.items()}}
+            out.append((keys, table[i].tolist(), tuple(float(v) for v in at_once.fit[i]), texts))
         return out
+
+    def _carried_all(self, j: int, box: tuple | None, W: np.ndarray, H: np.ndarray) -> list[np.ndarray]:
+        """:meth:`_carried` over a sweep: view j carried along with its marks' boxes *box* (arrays over the values),
+        on pages W x H."""
+        x, y, w, h = self.views[j]
+        b0 = self.boxes[j]
+        zero = np.zeros(W.shape)
+        if b0 is None or box is None:
+            return [zero, zero, W, H]
+        fw, fh = 0.25 * w, 0.25 * h
+        s = np.maximum(np.maximum(box[2] - box[0], fw) / max(b0[2] - b0[0], fw),
+                       np.maximum(box[3] - box[1], fh) / max(b0[3] - b0[1], fh))
+        s = np.where(s < 1.0, np.maximum(s, np.minimum(1.0, self.least * np.maximum(W / w, H / h))), s)
+        whole = (w * s >= W) & (h * s >= H)
+        cx = (box[0] + box[2]) / 2 + (x + w / 2 - (b0[0] + b0[2]) / 2) * s
+        cy = (box[1] + box[3]) / 2 + (y + h / 2 - (b0[1] + b0[3]) / 2) * s
+        vw, vh = w * s, h * s  # camera.clip_view over the sweep
+        view = [np.where(vw >= W, 0.0, cx - vw / 2), np.where(vh >= H, 0.0, cy - vh / 2),
+                np.minimum(vw, W), np.minimum(vh, H)]
+        return [np.where(whole, f, np.round(v, 2) + 0.0) for f, v in zip((zero, zero, W, H), view)]
 
     def __call__(self, figure: Figure) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:
         st = self.style
@@ -184,6 +232,8 @@ class Measure:
         for m in scene.marks:
             if m.label:
                 texts[f"{m.id}-label"] = m.label
+            if m.kind is MarkKind.AREA:  # drawn by the page from the curves that bound it (areas_of)
+                continue
             lk, ln = layers[mark_layer(m)]
             for suffix, _, attrs in mark_geometry(m, vp, st):
                 ident = m.id + suffix
@@ -207,7 +257,55 @@ class Measure:
         for i, j in enumerate(self.view_of):
             keys.append(("#zoom", str(i), "# # # #"))
             nums += carried[j]
+        by_id = {m.id: m for m in scene.marks}
+        for i, ids in self.rings:
+            keys.append(("#ring", str(i), "# #"))
+            pts = [vp.px(*p) for m in ids if m in by_id for p in extreme_points(by_id[m])]
+            nums += _ring_centre(min(p[0] for p in pts), min(p[1] for p in pts), max(p[0] for p in pts),
+                                 max(p[1] for p in pts)) if pts else [0.0, 0.0]
+        for axis in (0, 1):
+            keys.append(("#break", str(axis), "# #"))
+            nums += breaks_px(scene.breaks, axis, fit_of(vp))
         return keys, nums, fit_of(vp), texts
+
+
+def areas_of(protocol: Any, scene: Any) -> list[list[str]]:
+    """Each area between two graphs the figure draws (``area_between``) as the page draws it from the marks that
+    bound it: [its first piece's id, the upper graph's, the lower graph's, the points whose abscissae end it].
+    Its pieces come and go and hold as many points as the graphs have breakpoints between those abscissae, so
+    no sweep can blend them; they are drawn anew from the graphs at every value (the script's ``areaPieces``,
+    the twin of :func:`construct.kernel.areas.area_between`).
+
+    >>> from construct.constructions import get
+    >>> from construct.render.output import scene_for
+    >>> c = get("tangential-pressure"); fig = c.figure(parts=6)
+    >>> areas_of(fig.protocol, scene_for(c, fig))[1]
+    ['s0526-excess', 's0516-tcurve', 's0523-mean', 's0524-A1', 's0525-A2']
+    """
+    first: dict[str, str] = {}
+    for m in scene.marks:
+        first.setdefault(m.name, m.id)
+    out = []
+    for st in protocol.steps:
+        if st.op == "area_between" and st.outputs[0] in first and all(n in first for n in st.inputs):
+            out.append([first[st.outputs[0]], *(first[n] for n in st.inputs)])
+    return out
+
+
+def _ring_centre(x0: float, y0: float, x1: float, y1: float) -> list[float]:
+    """The centre of a ring round a box (canvas px, as the player's data writes it: camera.ring_round)."""
+    return [round((x0 + x1) / 2, 2), round((y0 + y1) / 2, 2)]
+
+
+def breaks_px(breaks: Any, axis: int, fit: tuple[float, float, float]) -> list[float]:
+    """Where the figure's break across *axis* stands on the page: [the start of its band, its width] (canvas px:
+    x and width, or top and height), or [0, 0] where the figure is not broken so."""
+    ox, oy, s = fit
+    for b in breaks:
+        if (b[3] if len(b) > 3 else 0) == axis:
+            start = ox + s * b[0] if axis == 0 else oy - s * (b[0] + b[1])
+            return [round(start, 2), round(s * b[1], 2)]
+    return [0.0, 0.0]
 
 
 def player_page(construction: Construction, figure: Figure, style: Any) -> str:

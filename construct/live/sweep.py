@@ -30,6 +30,7 @@ then is recorded as a jump (measured: none for the crank and the inertia curve).
 
 from __future__ import annotations
 
+import collections
 import functools
 import math
 from dataclasses import dataclass, field
@@ -38,24 +39,50 @@ from typing import Any
 import numpy as np
 
 from ..constructions import Construction
-from ..constructions.domain import ROD_RATIO, Domain
+from ..constructions.domain import KAPPA_RANGE, ROD_RATIO, Domain
 from ..figure import Figure
 from ..kernel.errors import InvalidParameter
 from ..render.styles import STYLES
-from ..render.wire import arc_flags
+from ..render.wire import arc_flags, blend, radii
 from .measure import Measure
 
-__all__ = ["LIVE_GIVENS", "LiveSweep", "live_givens", "live_sweep", "check_picks", "REFINE_PX", "QUANTUM_PX",
-           "MIN_CELL", "CHECK_VALUES"]
+__all__ = ["LiveGiven", "LiveSweep", "Piece", "live_givens", "live_sweep", "pieces", "reach", "check_picks",
+           "REFINE_PX", "QUANTUM_PX", "MIN_CELL", "CHECK_VALUES"]
 
-#: The continuous givens a player can move: protocol name -> (stated domain, the book's symbol).
-LIVE_GIVENS: dict[str, tuple[Domain, str]] = {"rod_ratio": (ROD_RATIO, "L/r")}
+
+@dataclass(frozen=True)
+class LiveGiven:
+    """A continuous given a player moves: its name in the protocol (the slider's name), the book's symbol, its
+    stated domain, the unit it is written in, and how the page's texts write it (the title's and the givens'
+    "L/r = 5", "r/L = 1/5": the value follows each prefix)."""
+
+    name: str
+    symbol: str
+    domain: Domain
+    unit: str = ""
+    written: tuple[str, ...] = ()
+    #: How the rod's length is written at a broken axis, "{v}" the value ("L = {v} r"); "": not a rod.
+    rod: str = ""
+
+
+#: Givens that follow from the moving one (Construction.derived) and that the page's texts write: their name
+#: -> what precedes the number in the title and the givens (two-cranks: "Schwankungen 8fach vergrößert").
+DERIVED_WRITTEN: dict[str, tuple[str, ...]] = {"magnify": ("Schwankungen ", "magnified ")}
+#: The rod ratio, as the books write it: L/r = 5, r/L = 1/5 (Anhang II, Baumann), r/l = 1/5 (§ 146).
+ROD = LiveGiven("rod_ratio", "L/r", ROD_RATIO, "", ("L/r = ", "r/L = 1/", "r/l = 1/"), "L = {v} r")
+#: Baumann's κ = P/B_max (Fig. 26/27: 8 and 2): the slider spans two decades about them, from an engine whose
+#: masses press at the dead centre as hard as its steam (κ = 1) to one where they hardly count (100); the
+#: construction holds from 0.1 to 10,000 (KAPPA_RANGE), a replay takes any of those.
+KAPPA = LiveGiven("kappa", "κ", Domain(1.0, 100.0, KAPPA_RANGE.why, KAPPA_RANGE.advice), "",
+                  ("κ = P/Bₘₐₓ = ", "κ = P/Bmax = ", "κ = "))
 #: A cell is split while linear interpolation misses the exact drawing by more than this (px).
 REFINE_PX = 0.4
 #: The refinement blends coordinates rounded to multiples of this (px).
 QUANTUM_PX = 0.05
 #: A jump caused by at most this many marks is theirs (they are drawn from the nearer grid value), not the figure's.
 SNAP_AT_MOST = 3
+#: A round of the refinement draws the midpoints of a cell's halves (and of theirs, ...) this many levels ahead.
+AHEAD = 1
 #: A mark whose miss at a cell's midpoint stays above this share of its miss in the cell split into it, twice
 #: running, jumps there (a smooth mark's miss falls to a quarter at each halving, a kink's to a half).
 JUMPING = 0.85
@@ -65,18 +92,144 @@ JUMP_PX = 2.0
 MIN_CELL = 1e-4
 
 
-def live_givens(construction: Construction, figure: Figure) -> list[str]:
-    """The continuous givens of *figure* a player offers a slider for (those a sweep can replay).
+def live_givens(construction: Construction, figure: Figure) -> list[LiveGiven]:
+    """The continuous givens of *figure* a player offers a slider for: the rod (as a ratio L/r, or a length in
+    metres beside the crank radius R: Tafel I's L = 2 m), and Baumann's κ.
 
     >>> from construct.constructions import get
-    >>> live_givens(get("crank"), get("crank").figure()), live_givens(get("indicator-diagram"), get("indicator-diagram").figure())
-    (['rod_ratio'], [])
+    >>> [g.name for g in live_givens(get("tangential-pressure"), get("tangential-pressure").figure())]
+    ['rod_ratio', 'kappa']
+    >>> live_givens(get("piston-force"), get("piston-force").figure())[0].domain.high  # L/R up to 1000, R = 0.4 m
+    400.0
+    >>> live_givens(get("indicator-diagram"), get("indicator-diagram").figure())  # its filling: a switch
+    []
     """
-    givens = dict(figure.replay.givens)
+    g = figure.replay.givens
     out = []
-    for name in LIVE_GIVENS:
-        if name == "rod_ratio" and construction.rod_ratio_sweep(givens, [1.0]) is not None:
-            out.append(name)
+    if "rod_ratio" in g:
+        out.append(ROD)
+    elif "rod_length" in g and "crank_radius" in g:
+        R = float(g["crank_radius"])
+        out.append(LiveGiven("rod_length", "L", Domain(ROD_RATIO.low * R, ROD_RATIO.high * R, ROD_RATIO.why,
+                                                       ROD_RATIO.advice), "m", ("L = ",), "L = {v} m"))
+    if "kappa" in g:
+        out.append(KAPPA)
+    return out
+
+
+def reach(construction: Construction, figure: Figure, given: str, domain: Domain, initial: float) -> Domain:
+    """The part of *domain* about *initial* where the construction holds with the figure's other givens (the two
+    cranks' speed radius magnified 8 times vanishes below L/r = 2.3 at the book's fluctuation): its validator asked,
+    each end found by bisection in log10 to three significant digits (rounded inwards).
+
+    >>> from construct.constructions import get
+    >>> c = get("two-cranks"); fig = c.figure(parts=12, magnify=8.0)  # (magnified as chosen: at every rod)
+    >>> reach(c, fig, "rod_ratio", ROD_RATIO, 5.0).low, reach(c, c.figure(parts=12), "rod_ratio", ROD_RATIO, 5.0).low
+    (2.29, 1.05)
+    """
+    givens, params = dict(figure.replay.givens), figure.protocol.params
+
+    def holds(v: float) -> bool:
+        try:
+            construction.validate({k: (float(x[0]) if isinstance(x, np.ndarray) else x)
+                                   for k, x in construction.given_sweep(givens, given, [v], params).items()})
+        except InvalidParameter:
+            return False
+        return True
+
+    def edge(inside: float, outside: float, up: bool) -> float:
+        a, b = math.log10(inside), math.log10(outside)
+        for _ in range(24):  # to 1e-7 of a decade: below the three digits kept
+            m = (a + b) / 2
+            a, b = (m, b) if holds(10 ** m) else (a, m)
+        digits = 2 - math.floor(b)  # three significant digits, rounded towards the inside
+        v = (math.ceil if not up else math.floor)(10 ** a * 10 ** digits) / 10 ** digits
+        return v if holds(v) else 10 ** a
+
+    low = domain.low if holds(domain.low) else edge(initial, domain.low, False)
+    high = domain.high if holds(domain.high) else edge(initial, domain.high, True)
+    return domain if (low, high) == (domain.low, domain.high) else Domain(low, high, domain.why, domain.advice)
+
+
+#: How many values of a given's domain (evenly in log10) a fresh build is asked at for the steps' form, and to what
+#: part of a decade a change of form is then found by bisection.
+FORM_SCAN = 24
+FORM_TOL = 1e-4
+
+
+@dataclass(frozen=True)
+class Piece:
+    """A part [low, high] of a given's domain over which a fresh build makes the same steps from the same
+    objects (:func:`pieces`): replaying *protocol* there is what a fresh build draws."""
+
+    low: float
+    high: float
+    protocol: Any
+
+
+def _form(protocol: Any) -> tuple:
+    """The steps' form: each step's operation, its inputs and outputs (their values aside)."""
+    return tuple((s.op, tuple(s.inputs), tuple(s.outputs)) for s in protocol.steps)
+
+
+def pieces(construction: Construction, figure: Figure, given: str, domain: Domain) -> list[Piece]:
+    """*domain* in the parts where a fresh build of *figure* at another value of *given* takes the same steps from
+    the same objects: one piece where the form never changes (a replay of the built protocol is then the fresh
+    build everywhere); several where it does (Tafel I's piston-force pieces run through the points between their
+    corners: which points those are depends on the rod).  Each piece's protocol is built inside it (the built
+    figure's own in its piece); the changes are found from FORM_SCAN fresh builds, then by bisection in log10.
+
+    >>> from construct.constructions import get
+    >>> c = get("crank"); fig = c.figure(parts=3)
+    >>> [(p.low, p.high, p.protocol is fig.protocol) for p in pieces(c, fig, "rod_ratio", ROD_RATIO)]
+    [(1.05, 1000.0, True)]
+
+    (tests/test_render_live_browser.py drags Tafel I's eight pieces.)
+    """
+    givens, params = dict(figure.replay.givens), figure.protocol.params
+    kw = {k: givens[k] if k in givens else params[k] if isinstance(params.get(k), (int, float, str, bool))
+          else construction.defaults[k] for k in construction.defaults}
+    built = _form(figure.protocol)
+    made: dict[float, Any] = {}  # log10 of a value -> the protocol a fresh build makes there (None: none)
+
+    def form(u: float) -> tuple | None:
+        if u not in made:
+            try:
+                v = float(min(max(10 ** u, domain.low), domain.high))
+                made[u] = construction.build(**{**kw, given: v}).protocol
+            except InvalidParameter:
+                made[u] = None
+        return None if made[u] is None else _form(made[u])
+
+    initial = math.log10(float(givens[given]))
+    if form(initial) != built:  # the figure is not what its givens build (a protocol replayed by hand): as it is
+        return [Piece(domain.low, domain.high, figure.protocol)]
+    lo, hi = math.log10(domain.low), math.log10(domain.high)
+    us = sorted(set(np.linspace(lo, hi, FORM_SCAN).tolist()) | {initial})
+    cuts: list[tuple[float, float]] = []
+
+    def split(a: float, b: float) -> None:  # every change of form between a and b
+        if b - a <= FORM_TOL:
+            cuts.append((a, b))
+            return
+        m = (a + b) / 2
+        if form(m) != form(a):
+            split(a, m)
+        if form(m) != form(b):
+            split(m, b)
+
+    for a, b in zip(us[:-1], us[1:]):
+        if form(a) != form(b):
+            split(a, b)
+    if not cuts:
+        return [Piece(domain.low, domain.high, figure.protocol)]
+    ends = [lo] + [x for a, b in cuts for x in (a, b)] + [hi]
+    out = []
+    for a, b in zip(ends[0::2], ends[1::2]):
+        if form(a) is None:  # a build that fails inside the domain (reach found it holds): the figure as it is
+            return [Piece(domain.low, domain.high, figure.protocol)]
+        out.append(Piece(domain.low if a == lo else 10 ** a, domain.high if b == hi else 10 ** b,
+                         figure.protocol if form(a) == built else made[a]))
     return out
 
 
@@ -85,7 +238,7 @@ def _key_columns(keys: tuple[tuple[str, str, str], ...]) -> tuple[np.ndarray, np
     """Which key each number of *keys* belongs to, which numbers are views, which are large-arc flags
     (asked at every cell of the refinement, for the same keys)."""
     owner = np.asarray([i for i, k in enumerate(keys) for _ in range(k[2].count("#"))], dtype=int)
-    return owner, _columns(keys, lambda k: k[0] == "#zoom"), arc_flags(keys)
+    return owner, _columns(keys, lambda k: k[0] == "#zoom"), arc_flags(keys), radii(keys)
 
 
 def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
@@ -93,14 +246,15 @@ def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
     """The largest distance (px) between the page's drawing at a cell's midpoint and the exact one, and the
     keys that exceed REFINE_PX with the distance of their coordinates (without large-arc flags).
 
-    Coordinates are blended from the quantised ends; large-arc flags and snapped keys come from either end
+    Coordinates are blended from the quantised ends (radii geometrically, as the page blends them);
+    large-arc flags and snapped keys come from either end
     (the worse counts); a wrong flag moves the arc by the distance between the two centres its ends and
     radius allow, 2 sqrt(r^2 - (c/2)^2)."""
-    owner, views, flags = _key_columns(tuple(keys))
+    owner, views, flags, geometric = _key_columns(tuple(keys))
     if owner.size == 0:
         return 0.0, {}
     q = lambda n: np.round(n / QUANTUM_PX) * QUANTUM_PX  # noqa: E731
-    blended = (q(na) + q(nb)) / 2
+    blended = blend(q(na), q(nb), 0.5, geometric)
     col_err = np.abs(blended - exact)
     nearest = np.isin(owner, list(snap)) if snap else np.zeros(owner.size, dtype=bool)
     col_err[nearest] = np.maximum(np.abs(na - exact), np.abs(nb - exact))[nearest]
@@ -119,6 +273,15 @@ def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
     np.maximum.at(coord_err, owner, np.where(flags & ~nearest, 0.0, col_err))
     bad = np.nonzero(key_err > REFINE_PX)[0].tolist()
     return float(col_err.max()), {k: float(coord_err[k]) for k in bad}
+
+
+def _ahead(a: float, b: float, depth: int) -> list[float]:
+    """The midpoints of the halves of the cell (a, b), and of theirs, *depth* levels down: as the refinement
+    will split them (to the last bit: (a + m) / 2 with m = (a + b) / 2)."""
+    if depth <= 0:
+        return []
+    m = (a + b) / 2
+    return [(a + m) / 2, (m + b) / 2] + _ahead(a, m, depth - 1) + _ahead(m, b, depth - 1)
 
 
 def _columns(keys: list[tuple[str, str, str]], pick) -> np.ndarray:
@@ -160,6 +323,17 @@ class LiveSweep:
     fit: np.ndarray | None = None
     #: The checks at the built value, as :attr:`checks`.
     built_checks: list[list[Any]] = field(default_factory=list)
+    #: The style's letter size (px): the page sizes the marks of a break by it, as the drawing does.
+    label_px: float = 12.0
+    #: The given as its book writes it (unit, the texts' forms, the rod at a break): :class:`LiveGiven`.
+    live: LiveGiven | None = None
+    #: The slider's whole domain where this sweep is one piece of it (:func:`pieces`); None: the sweep's own.
+    whole: Domain | None = None
+    #: The areas the page draws from the graphs that bound them (:func:`construct.live.measure.areas_of`).
+    areas: list[list[str]] = field(default_factory=list)
+    #: Givens that follow from this one and that the texts write (DERIVED_WRITTEN): name -> value at each grid
+    #: value (a step function, the two cranks' magnification: the page writes the nearer grid value's).
+    derived: dict[str, list[float]] = field(default_factory=dict)
 
     def nearest_columns(self) -> np.ndarray:
         """The columns taken from the nearer grid value: large-arc flags and the snapped marks."""
@@ -167,33 +341,40 @@ class LiveSweep:
         return arc_flags(self.keys) | _columns(self.keys, lambda k: k in snapped)
 
 
-def _frames(construction: Construction, figure: Figure, given: str, values: np.ndarray, measure) -> list[tuple]:
-    """(keys, numbers, fit, texts) of the player's figure at every value, from one sweep of the protocol."""
-    givens = dict(figure.replay.givens)
-    if given == "rod_ratio":
-        swept = construction.rod_ratio_sweep(givens, values)
-    else:
-        swept = {**givens, given: np.asarray(values, dtype=float)}
-    if swept is None:
-        raise InvalidParameter(f"{construction.name} has no given {given} to sweep")
-    replay = figure.protocol.replay(swept)
-    return measure.frames(figure.protocol, replay, len(values)), replay
+def _frames(construction: Construction, figure: Figure, given: str, values: np.ndarray, measure,
+            protocol: Any) -> list[tuple]:
+    """(keys, numbers, fit, texts) of the player's figure at every value, from one sweep of *protocol* (the
+    figure's, or its piece's: :func:`pieces`)."""
+    replay = protocol.replay(construction.given_sweep(dict(figure.replay.givens), given, values, protocol.params))
+    return measure.frames(protocol, replay, len(values)), replay
 
 
 def live_sweep(construction: Construction, figure: Figure, given: str, *, initial: float | None = None,
-               style: Any = None, start: int = 9, max_values: int = 400, drawing: Any = None) -> LiveSweep:
+               style: Any = None, start: int = 9, max_values: int = 800, drawing: Any = None,
+               measure: Measure | None = None, piece: Piece | None = None) -> LiveSweep:
     """The grid of *given* over its domain on which linear interpolation draws within 0.5 px (see the module).
 
     *drawing*: the figure's :class:`~construct.render.svg.Drawing` in *style*, if the caller lays it out anyway
-    (the player's): its camera views are the ones carried along."""
+    (the player's): its camera views are the ones carried along.  *measure*: the figure's :class:`Measure`, if
+    another given's sweep made it (it depends on the figure, not on the given).  *piece*: the part of the domain
+    swept (:func:`pieces`: where the steps' form changes, each part is swept apart, replaying its own protocol)."""
     style = style or STYLES["teaching"]
-    domain, symbol = LIVE_GIVENS[given]
+    live = next((g for g in live_givens(construction, figure) if g.name == given), None)
+    if live is None:
+        raise InvalidParameter(f"{construction.name} has no given {given!r} a player can move; it moves "
+                               f"{', '.join(g.name for g in live_givens(construction, figure)) or 'none'}")
+    symbol = live.symbol
     initial = float(figure.replay.givens[given] if initial is None else initial)
-    measure = Measure(construction, figure, style, drawing=drawing)
+    domain = whole = reach(construction, figure, given, live.domain, initial)
+    protocol = figure.protocol
+    if piece is not None:
+        domain = Domain(max(piece.low, whole.low), min(piece.high, whole.high), whole.why, whole.advice)
+        protocol = piece.protocol
+    measure = measure or Measure(construction, figure, style, drawing=drawing)
     lo, hi = math.log10(domain.low), math.log10(domain.high)
     us = list(np.linspace(lo, hi, start))
     values = lambda u: np.clip(10.0 ** np.asarray(u), domain.low, domain.high)  # noqa: E731
-    frames, _ = _frames(construction, figure, given, values(us), measure)
+    frames, _ = _frames(construction, figure, given, values(us), measure, protocol)
     # each value's numbers as one array, made once (every cell it bounds reads them)
     as_arrays = lambda fs: [(f[0], np.asarray(f[1], dtype=float), *f[2:]) for f in fs]  # noqa: E731
     data = dict(zip(us, as_arrays(frames)))
@@ -206,11 +387,21 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     before: dict[tuple[float, float], tuple[dict[int, float], dict[int, float]]] = {}
     while todo:
         mids = [(a + b) / 2 for a, b in todo]
-        mframes, _ = _frames(construction, figure, given, values(mids), measure)
-        mframes = as_arrays(mframes)
+        # and the midpoints of their halves, drawn ahead: a cell that must be split has its halves tested in the
+        # same round (a round draws every mark of the figure once, over all its values: its cost is the marks',
+        # not the values'); what no cell needed is dropped
+        ahead = [q for a, b in todo for q in _ahead(a, b, AHEAD)]
+        drawn, _ = _frames(construction, figure, given, values(mids + ahead), measure, protocol)
+        got = dict(zip(mids + ahead, as_arrays(drawn)))
         nxt = []
-        for (a, b), m, fm in zip(todo, mids, mframes):
-            data[m] = fm
+        queue = collections.deque(todo)
+        while queue:
+            a, b = queue.popleft()
+            m = (a + b) / 2
+            if m not in got:  # a half of a half: next round
+                nxt.append((a, b))
+                continue
+            fm = data[m] = got.pop(m)
             ka, na = data[a][:2]
             kb, nb = data[b][:2]
             parent, grand = before.pop((a, b), ({}, {}))
@@ -230,7 +421,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
                 snap.update(culprits)
                 continue
             if b - a >= MIN_CELL and len(data) <= max_values:
-                nxt += [(a, m), (m, b)]
+                queue += [(a, m), (m, b)]
                 before[(a, m)] = before[(m, b)] = (culprits, parent)
                 continue
             if 0 < len(culprits) <= SNAP_AT_MOST and -1 not in culprits:
@@ -269,20 +460,28 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     live = LiveSweep(given, symbol, domain, initial, grid, keys, np.asarray(rows, dtype=float), bound, jumps,
                      fixed=fixed, snapped=snapped, u=np.asarray(us, dtype=float), start=start, readings=varying,
                      # the fit travels as float32: the columns are checked against the drawing through it
-                     fit=np.asarray([data[u][2] for u in us], dtype=np.float32).astype(float))
-    picks = check_picks(grid)
-    live.checks = dict(zip(picks, _checks(construction, figure, given, grid[picks])))
+                     fit=np.asarray([data[u][2] for u in us], dtype=np.float32).astype(float),
+                     label_px=float(style.label_size), live=live, areas=measure.areas,
+                     whole=whole if piece is not None else None)
+    swept = construction.given_sweep(dict(figure.replay.givens), given, grid, protocol.params)
+    live.derived = {k: np.broadcast_to(swept[k], grid.shape).astype(float).tolist() for k in DERIVED_WRITTEN
+                    if k in swept and k != given and np.ptp(np.broadcast_to(swept[k], grid.shape)) > 0}
+    # a piece of the domain: its share of the slider's checks (at least its ends)
+    share = 1.0 if piece is None else math.log10(domain.high / domain.low) / math.log10(whole.high / whole.low)
+    picks = check_picks(grid, max(2, round(CHECK_VALUES * share)))
+    live.checks = dict(zip(picks, _checks(construction, figure, given, grid[picks], protocol)))
     # and at the built value (the book's): a teacher who returns there sees its own checks
     live.built_checks = [[c.name, c.measured, c.expected, c.error, c.tolerance, bool(c.ok)]
                          for c in construction.checks(figure)]
     return live
 
 
-def _checks(construction: Construction, figure: Figure, given: str, grid: np.ndarray) -> list[list[list[Any]]]:
-    """The construction's checks at every value of *grid*, from one sweep (:meth:`Construction.sweep_checks`)."""
-    givens = dict(figure.replay.givens)
-    swept = construction.rod_ratio_sweep(givens, grid) if given == "rod_ratio" else {**givens, given: grid}
-    sweep = Figure(figure.protocol, figure.protocol.replay(swept), construction.check, construction)
+def _checks(construction: Construction, figure: Figure, given: str, grid: np.ndarray,
+            protocol: Any) -> list[list[list[Any]]]:
+    """The construction's checks at every value of *grid*, from one sweep of *protocol*
+    (:meth:`Construction.sweep_checks`)."""
+    swept = construction.given_sweep(dict(figure.replay.givens), given, grid, protocol.params)
+    sweep = Figure(protocol, protocol.replay(swept), construction.check, construction)
     return [[[c.name, c.measured, c.expected, c.error, c.tolerance, bool(c.ok)] for c in row]
             for row in construction.sweep_checks(sweep)]
 
@@ -292,8 +491,8 @@ def _checks(construction: Construction, figure: Figure, given: str, grid: np.nda
 CHECK_VALUES = 48
 
 
-def check_picks(grid: np.ndarray) -> list[int]:
-    """The grid values (indices) the page shows checks at: up to CHECK_VALUES, evenly in log10 of the given
+def check_picks(grid: np.ndarray, at_most: int = CHECK_VALUES) -> list[int]:
+    """The grid values (indices) the page shows checks at: up to *at_most*, evenly in log10 of the given
     (the grid is dense where the drawing bends, the slider is not), the first and the last among them.
 
     >>> check_picks(np.array([1.0, 1.1, 1.2, 10.0, 100.0]))  # 1.1 and 1.2 are one place on the slider
@@ -302,4 +501,4 @@ def check_picks(grid: np.ndarray) -> list[int]:
     (48, 499)
     """
     u = np.log10(grid)
-    return sorted({int(np.argmin(np.abs(u - t))) for t in np.linspace(u[0], u[-1], min(len(u), CHECK_VALUES))})
+    return sorted({int(np.argmin(np.abs(u - t))) for t in np.linspace(u[0], u[-1], min(len(u), at_most))})

@@ -23,10 +23,11 @@ from typing import Any
 
 import numpy as np
 
-from ..render.wire import ARC, LENGTH, PX, X, Y, as_drawn, as_stored, deflated
-from .sweep import QUANTUM_PX, LiveSweep
+from ..render.wire import ARC, LENGTH, LOG, PX, X, Y, as_drawn, as_stored, deflated, radii
+from .measure import Measure
+from .sweep import DERIVED_WRITTEN, QUANTUM_PX, LiveSweep, live_givens, live_sweep, pieces, reach
 
-__all__ = ["ROW_PX", "STORED_PX", "column_kinds", "column_knots", "encode", "live_data"]
+__all__ = ["ROW_PX", "STORED_PX", "column_kinds", "column_knots", "encode", "live_data", "live_pages"]
 
 #: The page's coordinates travel as multiples of this (px, or its share of the largest scale in the
 #: construction's units): the rounding is inside ROW_PX, which the columns are checked against.
@@ -40,10 +41,11 @@ _PATH = re.compile(r"^[MLCZ# ,]*$")
 
 
 def column_kinds(keys: list[tuple[str, str, str]]) -> np.ndarray:
-    """What each number of *keys* is in the construction: x, y, a length, or a number of the drawing only.
+    """What each number of *keys* is in the construction: x, y, a length (a radius: by its logarithm), or a
+    number of the drawing only.
 
     >>> column_kinds([("a", "cx", "#"), ("a", "r", "#"), ("b", "d", "M# #A# # # # # # #"), ("#zoom", "0", "# # # #")]).tolist()
-    [1, 3, 1, 2, 3, 3, 0, 0, 0, 1, 2, 1, 2, 3, 3]
+    [1, 4, 1, 2, 4, 4, 0, 0, 0, 1, 2, 1, 2, 3, 3]
     """
     out: list[int] = []
     for ident, attr, template in keys:
@@ -52,12 +54,12 @@ def column_kinds(keys: list[tuple[str, str, str]]) -> np.ndarray:
             out.append(X)
         elif attr in ("cy", "y1", "y2", "y"):
             out.append(Y)
-        elif attr == "r":
-            out.append(LENGTH)
+        elif attr == "r" and n == 1:
+            out.append(LOG)
         elif ident == "#zoom" or attr == "viewBox":
             out += [X, Y, LENGTH, LENGTH]
         elif attr == "d" and template == ARC:
-            out += [X, Y, LENGTH, LENGTH, PX, PX, PX, X, Y]
+            out += [X, Y, LOG, LOG, PX, PX, PX, X, Y]
         elif attr in ("d", "points") and _PATH.match(template):
             out += [X if i % 2 == 0 else Y for i in range(n)]
         else:
@@ -66,9 +68,16 @@ def column_kinds(keys: list[tuple[str, str, str]]) -> np.ndarray:
 
 
 def _quanta(live: LiveSweep, kinds: np.ndarray) -> np.ndarray:
-    """The quantum of each column in its stored units: STORED_PX drawn, at most that at the largest scale."""
+    """The quantum of each column in its stored units: STORED_PX drawn, at most that at the largest scale (a
+    logarithm's: STORED_PX at the largest radius drawn)."""
     smax = float(np.max(live.fit[:, 2])) if live.fit is not None and kinds.any() else 1.0
-    return np.where(kinds > 0, STORED_PX / smax, STORED_PX)
+    return np.where(kinds == LOG, STORED_PX / _largest_radius(live), np.where(kinds > 0, STORED_PX / smax, STORED_PX))
+
+
+def _largest_radius(live: LiveSweep) -> float:
+    """The largest radius the sweep draws (px): a logarithm's quantum keeps it within STORED_PX."""
+    r = radii(live.keys)
+    return float(max(np.max(live.drawn[:, r]), 1.0)) if r.any() else 1.0
 
 
 def _knots(live: LiveSweep, kinds: np.ndarray) -> np.ndarray:
@@ -139,6 +148,9 @@ def column_knots(live: LiveSweep) -> tuple[np.ndarray, np.ndarray]:
     """
     cols = live.drawn.shape[1]
     natural = column_kinds(live.keys) if live.fit is not None else np.zeros(cols, dtype=np.int8)
+    # a radius that rounds to nothing somewhere (an arc about a point it is struck from, at L/r = 600) has no
+    # logarithm there: a length
+    natural = np.where((natural == LOG) & (live.drawn.min(axis=0) <= 0.0), LENGTH, natural).astype(np.int8)
     as_drawn = _knots(live, np.zeros(cols, dtype=np.int8))
     if not natural.any():
         return as_drawn, natural
@@ -152,19 +164,19 @@ def encode(live: LiveSweep) -> dict[str, Any]:
     in its own units (:func:`column_knots`), quantised, delta-coded, deflated, base64.
 
     One deflated buffer: the column map (which stored column each coordinate is; uint16 or int32), each stored
-    column's kind (uint8), its kept grid values as bits, the fit of every grid value (3 float32), each stored
-    column's first value (int32), then the deltas between its kept values, all columns one after the other, as
-    int16 where they fit (else int32) in byte planes (all low bytes, then all high bytes: the high bytes of
-    small deltas are runs of 0 and 255 that deflate squeezes away).  :func:`construct.render.wire.decode` is
-    what the page does.
+    column's kind (uint8; 128 added where its deltas are int32), its kept grid values as bits, the fit of every
+    grid value (3 float32), each stored column's first value (int32), then the deltas between its kept values,
+    all columns one after the other, as int16 in byte planes (all low bytes, then all high bytes: the high bytes
+    of small deltas are runs of 0 and 255 that deflate squeezes away), then those of the int32 columns in four
+    planes.  :func:`construct.render.wire.decode` is what the page does.
 
     >>> from construct.constructions.domain import ROD_RATIO
     >>> from construct.render.wire import decode
     >>> live = LiveSweep("rod_ratio", "L/r", ROD_RATIO, 5.0, np.array([1.0, 10 ** 0.5, 10.0]), [("p", "cx", "#"),
     ...     ("q", "cx", "#"), ("r", "cx", "#")], np.array([[0.0, 0.0, 0], [5.0, 7.0, 5], [10.0, 10.0, 10]]), 0.0,
     ...     u=np.array([0.0, 0.5, 1.0]), start=2)
-    >>> e = encode(live); (e["ucols"], e["width"]), decode(e, [0.0, 0.5, 1.0], 3, 3).tolist()
-    ((2, 2), [[0.0, 0.0, 0.0], [5.0, 7.0, 5.0], [10.0, 10.0, 10.0]])
+    >>> e = encode(live); e["ucols"], decode(e, [0.0, 0.5, 1.0], 3, 3).tolist()
+    (2, [[0.0, 0.0, 0.0], [5.0, 7.0, 5.0], [10.0, 10.0, 10.0]])
     """
     rows, cols = live.drawn.shape
     keep, kinds = column_knots(live)
@@ -186,15 +198,21 @@ def encode(live: LiveSweep) -> dict[str, Any]:
     uq, ukeep, ukinds = q[:, pick], keep[:, pick], kinds[pick]
     ukeep[[0, -1]] = True
     values = [uq[ukeep[:, c], c] for c in range(uq.shape[1])]
-    deltas = np.concatenate([np.diff(v) for v in values]) if values else np.zeros(0, dtype=np.int64)
-    width = 2 if deltas.size == 0 or np.abs(deltas).max() < 2 ** 15 else 4
+    steps = [np.diff(v) for v in values]
+    # a column whose steps do not fit int16 (a rod's arc of radius 1000 r by its logarithm, to a tenth of a
+    # pixel) has its steps in int32, apart: the kind's high bit says which
+    wide = np.asarray([d.size > 0 and int(np.abs(d).max()) >= 2 ** 15 for d in steps], dtype=bool)
+    planes = b""
+    for w, which in ((2, ~wide), (4, wide)):
+        d = np.concatenate([steps[c] for c in np.flatnonzero(which)] or [np.zeros(0, dtype=np.int64)])
+        planes += np.ascontiguousarray(d.astype(f"<i{w}").view(np.uint8).reshape(-1, w).T).tobytes()
     mapw = 2 if uq.shape[1] < 2 ** 16 else 4
-    planes = np.ascontiguousarray(deltas.astype(f"<i{width}").view(np.uint8).reshape(-1, width).T)
-    payload = (colmap.astype(f"<u{mapw}").tobytes() + ukinds.astype(np.uint8).tobytes()
+    payload = (colmap.astype(f"<u{mapw}").tobytes() + (ukinds.astype(np.uint8) | (wide * 128).astype(np.uint8)).tobytes()
                + np.packbits(ukeep.T.reshape(-1)).tobytes() + fit.astype("<f4").tobytes()
-               + uq[0].astype("<i4").tobytes() + planes.tobytes())
-    return {"data": base64.b64encode(zlib.compress(payload, 9)).decode("ascii"), "width": width, "mapw": mapw,
-            "ucols": int(uq.shape[1]), "q": STORED_PX, "qx": float(_quanta(live, np.ones(1, dtype=np.int8))[0])}
+               + uq[0].astype("<i4").tobytes() + planes)
+    return {"data": base64.b64encode(zlib.compress(payload, 9)).decode("ascii"), "mapw": mapw,
+            "ucols": int(uq.shape[1]), "q": STORED_PX, "qx": float(_quanta(live, np.ones(1, dtype=np.int8))[0]),
+            "ql": float(_quanta(live, np.full(1, LOG, dtype=np.int8))[0])}
 
 
 def live_data(live: LiveSweep) -> dict[str, Any]:
@@ -206,8 +224,15 @@ def live_data(live: LiveSweep) -> dict[str, Any]:
     meta = {"grid": [round(math.log10(v), 12) for v in live.grid],
             "keys": [list(k) for k in live.keys], "flags": live.nearest_columns().nonzero()[0].tolist(),
             "jumps": sorted(where[float(a)] for a, _ in live.jumps)}
-    return {"given": live.given, "symbol": live.symbol, "low": live.domain.low, "high": live.domain.high,
+    given = live.live
+    whole = live.whole or live.domain
+    return {"given": live.given, "symbol": live.symbol, "low": whole.low, "high": whole.high,
+            **({"piece": [live.domain.low, live.domain.high]} if live.whole is not None else {}),
+            **({"unit": given.unit, "written": list(given.written), "rod": given.rod} if given is not None else {}),
             "initial": live.initial, "rows": int(live.drawn.shape[0]), "cols": int(live.drawn.shape[1]),
+            "label_px": live.label_px, **({"areas": live.areas} if live.areas else {}),
+            **({"derived": {k: {"values": v, "written": list(DERIVED_WRITTEN[k])} for k, v in live.derived.items()}}
+               if live.derived else {}),
             **({"readings": live.readings} if live.readings else {}),
             **encode(live), "bound": round(live.bound + QUANTUM_PX / 2, 3),
             "meta_z": deflated(meta), "checks_z": deflated(_check_table(live))}
@@ -233,3 +258,17 @@ def _check_table(live: LiveSweep) -> dict[str, Any]:
 
     return {"check_names": [c[0] for c in at[0][1]], "check_values": [v for v, _ in at],
             "checks": [[row(c) for c in cs] for _, cs in at]}
+
+
+def live_pages(construction: Any, figure: Any, style: Any, *, drawing: Any = None) -> list[dict[str, Any]]:
+    """The live data of every continuous given of *figure* (:func:`~construct.live.sweep.live_givens`), one sweep
+    for each piece of its domain (:func:`~construct.live.sweep.pieces`): what the gallery's players and
+    ``construct replay --live`` carry.  *drawing*: the figure's drawing in *style*, if the caller has it."""
+    measure = Measure(construction, figure, style, drawing=drawing)  # (the givens' sweeps share it)
+    out = []
+    for g in live_givens(construction, figure):
+        parts = pieces(construction, figure, g.name, reach(construction, figure, g.name, g.domain,
+                                                          float(figure.replay.givens[g.name])))
+        out += [live_data(live_sweep(construction, figure, g.name, style=style, drawing=drawing, measure=measure,
+                                     piece=p if len(parts) > 1 else None)) for p in parts]
+    return out

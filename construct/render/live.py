@@ -1,27 +1,44 @@
-"""The live given in the player page: a slider per continuous given, redrawing the figure from precomputed data.
+"""The live givens in the player page: a slider per continuous given, redrawing the figure from precomputed data.
 
 :func:`with_live` adds to a player page (:func:`construct.render.player.player_html`)
-an ``<input type="range" name="GIVEN">`` (log10 of the given over its stated
+an ``<input type="range" name="GIVEN">`` per given (log10 of the given over its stated
 domain: the rod ratio runs from 1.05 to 1000, and a teacher lives between 3 and
 8), the value in the book's notation, the construction's checks at the
 nearest grid value, and a script that interpolates every drawn coordinate
 between the grid values the data (:mod:`construct.live`) holds, in the wire format of
-:mod:`construct.render.wire`.
+:mod:`construct.render.wire`.  Each given has its own sweep, taken with the
+others at the book's values: one given moves at a time, and moving one sets
+the others back to the book's values (the page says so).
 The page stays one file: the coordinates travel deflated in base64 and are
 inflated with the browser's own ``DecompressionStream``.
 
-The script exposes ``window.constructLive``: ``set(value)`` moves the given
-(``set(value, true)``: as a drag draws it), ``ready`` is a promise for the
-inflated data, ``lastMs`` the last redraw's time.
+**Every mark, every moment.**  Each ``input`` event of a slider redraws, in
+the next animation frame, everything the page draws: every mark of every
+step (those of steps not shown sit outside the document, the player's
+``lean``, where a new attribute costs nothing), the view box and each step's
+view, the ring round the current mark, the letters and name tags with the
+points they name (their placed offset kept; a tag names its point by
+standing on it), the broken axes' marks on every line that crosses a break
+(``breakMarks``, the script's twin of
+:func:`construct.render.plate.break_elements`), with the rod's length written
+at the break (L = 50 r: a broken rod is drawn short), and letters that come
+to lie on one another: the later gives way (``declutter``) until there is
+room again.  Nothing waits for the slider to be let go (``change``), which
+only sets the letters' exact scale and glides the camera to the step's
+view.
 
-A drag is drawn inside one animation frame (``construct bench --live``): each
-frame draws only the marks and letters displayed in the window, the rest when
-the slider is let go, a step is shown or the view changes; numbers are set as
-SVG lengths, not parsed text; the camera keeps its view while the step's view
-stays near it, and the letters their scale and zoom level (the player's
-``holds`` and ``DRAG_LARGER``; exact, the camera gliding, on let-go); the
-groups the step hides are out of the document (the player's ``lean``); the
-checks' cells change in place.
+The script exposes ``window.constructLive``: ``set(value)`` moves the first
+given (``set(value, true)``: as a drag draws it; ``set(value, dragging,
+name)``: the given *name*), ``ready`` is a promise for the inflated data,
+``lastMs`` the last redraw's time.
+
+A drag is drawn inside one animation frame (``construct bench --live``):
+numbers are set as SVG lengths, not parsed text, and written only when they
+change; the camera keeps its view while the step's view stays near it, and
+the letters their scale and zoom level (the player's ``holds`` and
+``DRAG_LARGER``; exact, the camera gliding, on let-go); the groups the step
+hides are out of the document (the player's ``lean``); the checks' cells
+change in place.
 
 >>> page = "<html><body><div id=stage></div>\\n<aside>\\n</aside>\\n</body></html>"
 >>> out = with_live(page, {"given": "rod_ratio", "symbol": "L/r", "low": 1.05, "high": 1000.0,
@@ -34,38 +51,61 @@ from __future__ import annotations
 
 import html
 import math
-from typing import Any, Mapping
+from typing import Any, Mapping, Sequence
 
 from ..kernel.letters import number
 from .player import json_for_script
 
-__all__ = ["with_live", "LIVE_SCRIPT"]
+__all__ = ["with_live", "with_switch", "LIVE_SCRIPT"]
+
+_NOTE = "color:#777;font-size:12px"
 
 
-def with_live(page: str, data: Mapping[str, Any]) -> str:
-    """*page* with the given's slider and checks at the top of its side panel and the live script before </body>."""
+def _slider(data: Mapping[str, Any], first: bool) -> str:
+    """One given's slider, its value and its domain."""
     g = html.escape(str(data["given"]))
     sym = html.escape(str(data["symbol"]))
     lo, hi, v0 = math.log10(data["low"]), math.log10(data["high"]), math.log10(data["initial"])
-    controls = (f'<section id="live" style="background:#fff;border:1px solid #ddd;margin-top:8px;padding:6px 10px">'
-                f'<label style="display:flex;gap:10px;align-items:center"><b class="sym">{sym}</b> '
-                f'<input type="range" name="{g}" id="live-{g}" min="{lo:.12g}" max="{hi:.12g}" step="any" '
-                f'value="{v0:.12g}" aria-label="{sym}" style="flex:1 1 auto">'
-                f'<span>{sym} = <output id="live-value" style="font-variant-numeric:tabular-nums">'
-                f'{html.escape(number(data["initial"], "de"))}</output></span></label>'
-                f'<div class="live-range" style="color:#777;font-size:12px">{html.escape(number(data["low"], "de"))} … '
-                f'{html.escape(number(data["high"], "de"))} (log. Skala / log scale; gebaut / built: '
-                f'{html.escape(number(data["initial"], "de"))})</div>'
-                # why there is one slider (a teacher asks for the next given first)
-                f'<div class="live-held" style="color:#777;font-size:12px">Nur {sym} ist beweglich; die übrigen '
-                f'Gegebenen bleiben beim Buchwert. / Only {sym} moves here; the other givens stay at the book’s '
-                f'values: a second slider would need the sweep over both givens together, and the number of '
-                f'parts changes the steps themselves.</div>'
+    out_id = "live-value" if first else f"live-value-{g}"
+    return (f'<label style="display:flex;gap:10px;align-items:center"><b class="sym">{sym}</b> '
+            f'<input type="range" name="{g}" id="live-{g}" min="{lo:.12g}" max="{hi:.12g}" step="any" '
+            f'value="{v0:.12g}" aria-label="{sym}" style="flex:1 1 auto">'
+            f'<span>{sym} = <output id="{out_id}" class="live-value" data-given="{g}" '
+            f'style="font-variant-numeric:tabular-nums">{html.escape(number(data["initial"], "de"))}</output>'
+            f'{" " + html.escape(data["unit"]) if data.get("unit") else ""}</span></label>'
+            f'<div class="live-range" style="{_NOTE}">{html.escape(number(data["low"], "de"))} … '
+            f'{html.escape(number(data["high"], "de"))} (log. Skala / log scale; Buchwert / book: '
+            f'{html.escape(number(data["initial"], "de"))})</div>')
+
+
+def with_live(page: str, data: Mapping[str, Any] | Sequence[Mapping[str, Any]], *,
+              steps_note: str | None = None) -> str:
+    """*page* with a slider per given of *data* (one given's live data, or a list of them: :func:`construct.live.
+    live_data`) and the checks under the figure, and the live script before </body>.
+
+    *steps_note*: what the page says of a given the construction also takes but that changes its steps (the
+    number of parts), instead of the default."""
+    givens = [data] if isinstance(data, Mapping) else list(data)
+    # a given whose domain is swept in pieces (the steps' form changes: live.sweep.pieces) has one slider
+    sliders = list({d["given"]: d for d in reversed(givens)}.values())[::-1]
+    syms = [html.escape(str(d["symbol"])) for d in sliders]
+    held = (f'Nur {syms[0]} ist beweglich; die übrigen Gegebenen bleiben beim Buchwert. / Only {syms[0]} moves '
+            f'here; the other givens stay at the book’s values' if len(sliders) == 1 else
+            f'{" und ".join(syms)} bewegen sich einzeln: wer einen zieht, setzt die anderen auf den Buchwert '
+            f'zurück. / {" and ".join(syms)} move one at a time: moving one sets the others back to the book’s '
+            f'values')
+    held += (steps_note if steps_note is not None else
+             ': a sweep over two givens together would be needed, and the number of parts changes the steps '
+             'themselves.')
+    controls = ('<section id="live" style="background:#fff;border:1px solid #ddd;margin-top:8px;padding:6px 10px">'
+                + "".join(_slider(d, i == 0) for i, d in enumerate(sliders))
+                # why one given moves at a time (a teacher asks for the next given first)
+                + f'<div class="live-held" style="{_NOTE}">{held}</div>'
                 # a reading (an angle read off the figure, to the minute) blended between grid values would
                 # print minutes the figure does not have
-                + ('<div class="live-readings" style="color:#777;font-size:12px">Abgelesene Werte (Winkel) '
-                   'stehen nur beim Buchwert. / Values read off the figure (angles) are shown at the book’s '
-                   'value only.</div>' if data.get("readings") else '')
+                + (f'<div class="live-readings" style="{_NOTE}">Abgelesene Werte (Winkel) stehen nur beim Buchwert. / '
+                   'Values read off the figure (angles) are shown at the book’s value only.</div>'
+                   if any(d.get("readings") for d in givens) else '')
                 + '<details open><summary>Prüfungen / checks <span id="live-at"></span></summary>'
                 '<div style="max-height:28vh;overflow:auto"><table id="live-checks" style="border-collapse:collapse;'
                 'font-size:12px;font-variant-numeric:tabular-nums"><thead><tr><th>Größe / quantity</th>'
@@ -75,425 +115,579 @@ def with_live(page: str, data: Mapping[str, Any]) -> str:
     aside = page.index("<aside>")
     at = page.rindex("</div>", 0, aside)
     page = page[:at] + controls + page[at:]
-    script = (f'<script type="application/json" id="live-data">{json_for_script(dict(data))}</script>\n'
+    payload = givens[0] if len(givens) == 1 else {"givens": givens}
+    script = (f'<script type="application/json" id="live-data">{json_for_script(dict(payload))}</script>\n'
               f"<script>{LIVE_SCRIPT}</script>\n")
     end = page.rindex("</body>")
     return page[:end] + script + page[end:]
+
+
+def with_switch(page: str, symbol: str, options: Sequence[tuple[str, str | None]], why: str) -> str:
+    """*page* with a switch between precomputed figures of a given that changes the construction's steps (the
+    indicator diagram's filling s₁: the cut-off's division points): *options* are (the value as the book
+    writes it, the page of that figure, or None for this one), *why* says why it is a switch, not a slider.
+
+    >>> out = with_switch("<div id=stage></div>\\n<aside>", "s₁/s", [("0,1", None), ("0,4", "../x/player.html")],
+    ...                   "the filling changes the steps")
+    >>> 'class="live-switch"' in out and 'href="../x/player.html"' in out and 'aria-current="page"' in out
+    True
+    """
+    links = " ".join(f'<a href="{html.escape(href)}">{html.escape(value)}</a>' if href is not None else
+                     f'<b aria-current="page">{html.escape(value)}</b>' for value, href in options)
+    controls = (f'<section id="live" class="live-switch" style="background:#fff;border:1px solid #ddd;'
+                f'margin-top:8px;padding:6px 10px"><div><b class="sym">{html.escape(symbol)}</b> = {links}</div>'
+                f'<div class="live-held" style="{_NOTE}">{html.escape(why)}</div></section>\n')
+    aside = page.index("<aside>")
+    at = page.rindex("</div>", 0, aside)
+    return page[:at] + controls + page[at:]
 
 
 #: The page's script (no external resource; text reaches the page through textContent only).
 LIVE_SCRIPT = r"""
 (function(){
   "use strict";
-  var L = JSON.parse(document.getElementById("live-data").textContent);
+  var raw = JSON.parse(document.getElementById("live-data").textContent);
+  var LIST = raw.givens || [raw];
   var svg = document.getElementById("figure");
-  var input = document.querySelector('input[name="' + L.given + '"]');
-  var out = document.getElementById("live-value");
-  var api = window.constructLive = {lastMs: 0, value: L.initial};
+  var api = window.constructLive = {lastMs: 0, value: LIST[0].initial, given: LIST[0].given};
   var book = function(v){ return String(Number(v.toPrecision(4))).replace(".", ","); };
+  var round2 = function(v){ return Math.round(v * 100) / 100; };
   function setText(e, text){  // an element's one text node changed in place (no node replaced), if it changed
     var t = e.firstChild;
     if (t && t.nodeType === 3 && !t.nextSibling) { if (t.nodeValue !== text) t.nodeValue = text; }
     else if (e.textContent !== text) e.textContent = text;
   }
-  if (!L.data) { return; }
+  if (!LIST[0].data) { return; }
   function inflate(b64){
     var bin = atob(b64), bytes = new Uint8Array(bin.length);
     for (var i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
     var stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("deflate"));
     return new Response(stream).arrayBuffer();
   }
-  var rows = L.rows, cols = L.cols, U = L.ucols, D = null, slots = [], followers = [], pts = [], LIST = "zooms", IDX = "z", player = null, zoomAt = [], ringAt = [], cur = null, zooms = null;
-  var colmap = null, isFlag = null, moving = null, fullSlot = null, shownStep = Infinity, doneTo = -1, readings = [];
-  function expand(buf){
-    // live.py encode: the column map, each stored column's kind (drawn, or the construction's x, y, length
-    // through the grid value's fit to the view), its kept grid values (bits), the fits, the first values,
-    // then the deltas between kept values in byte planes; between kept values a column is a line in log10
+  function json(b){ return JSON.parse(new TextDecoder().decode(b)); }
+  var player = null, S = null, cur = null, sweeps = [], followers = [], readings = [], lines = [];
+  var VIEWS = "zooms", IDX = "z";
+  // ---- one given's data: every drawn number at every grid value ---------------------------------------------
+  function Sweep(L){
+    this.L = L; this.value = L.initial; this.slots = []; this.byId = {}; this.zoomAt = []; this.ringAt = [];
+    this.breakAt = null; this.full = null;
+    this.input = document.querySelector('input[name="' + L.given + '"]');
+    this.out = document.querySelector('output[data-given="' + L.given + '"]');
+  }
+  Sweep.prototype.expand = function(buf){
+    // live/wire.py encode: the column map, each stored column's kind (drawn, or the construction's x, y,
+    // length, or a radius's logarithm, through the grid value's fit to the view; 128 added where its deltas
+    // are int32), its kept grid values (bits), the fits, the first values, then the deltas between kept
+    // values (int16 columns in two byte planes, then int32 columns in four); between kept values a column is
+    // a line in log10 of the given
+    var L = this.L, rows = L.rows, cols = L.cols, U = L.ucols;
     var bytes = new Uint8Array(buf), dv = new DataView(buf), at = 0, c, r, b;
-    colmap = new Int32Array(cols);
+    var colmap = this.colmap = new Int32Array(cols);
     for (c = 0; c < cols; c++) colmap[c] = L.mapw === 2 ? dv.getUint16(at + 2 * c, true) : dv.getInt32(at + 4 * c, true);
     at += cols * L.mapw;
     var kinds = bytes.subarray(at, at + U);
     at += U;
-    var keepAt = at, nbits = rows * U, kept = 0;
+    var keepAt = at, nbits = rows * U, counts = new Int32Array(U), n16 = 0, n32 = 0;
     at += (nbits + 7) >> 3;
-    for (b = keepAt; b < at; b++) { var x = bytes[b]; while (x) { kept += x & 1; x >>= 1; } }
+    var bit = function(i){ return (bytes[keepAt + (i >> 3)] >> (7 - (i & 7))) & 1; };
+    for (c = 0; c < U; c++) {
+      for (r = 1; r < rows; r++) counts[c] += bit(c * rows + r);
+      if (kinds[c] & 128) n32 += counts[c]; else n16 += counts[c];
+    }
     var fit = new Float32Array(buf.slice(at, at + 12 * rows));
     at += 12 * rows;
-    var firstAt = at, n = kept - U, w = L.width, planes = at + 4 * U, pos = 0, g = L.grid;
-    var X = new Float64Array(rows);
-    D = new Float32Array(rows * U);
-    moving = new Uint8Array(U);
+    var firstAt = at, p16 = at + 4 * U, p32 = p16 + 2 * n16, pos16 = 0, pos32 = 0, g = L.grid;
+    var X = new Float64Array(rows), D = this.D = new Float32Array(rows * U), moving = this.moving = new Uint8Array(U);
     for (c = 0; c < U; c++) {
-      var r0 = 0, v0 = dv.getInt32(firstAt + 4 * c, true), kind = kinds[c], q = kind ? L.qx : L.q;
+      var wide = kinds[c] & 128, kind = kinds[c] & 127, q = kind === 4 ? L.ql : kind ? L.qx : L.q;
+      var r0 = 0, v0 = dv.getInt32(firstAt + 4 * c, true);
       X[0] = v0 * q;
       for (r = 1; r < rows; r++) {
-        var bit = c * rows + r;
-        if (!((bytes[keepAt + (bit >> 3)] >> (7 - (bit & 7))) & 1)) continue;
+        if (!bit(c * rows + r)) continue;
         var d = 0;
-        for (b = w - 1; b >= 0; b--) d = (d << 8) | bytes[planes + b * n + pos];
-        if (w === 2 && d >= 32768) d -= 65536;
-        pos++;
+        if (wide) { for (b = 3; b >= 0; b--) d = (d * 256) + bytes[p32 + b * n32 + pos32]; if (d >= 2147483648) d -= 4294967296; pos32++; }
+        else { d = (bytes[p16 + n16 + pos16] << 8) | bytes[p16 + pos16]; if (d >= 32768) d -= 65536; pos16++; }
         var v1 = v0 + d;
         for (var m = r0 + 1; m <= r; m++) X[m] = (v0 + (v1 - v0) * (g[m] - g[r0]) / (g[r] - g[r0])) * q;
         r0 = r; v0 = v1;
       }
       for (r = 0; r < rows; r++) {
-        var s = fit[3 * r + 2], v = kind === 1 ? fit[3 * r] + s * X[r] : kind === 2 ? fit[3 * r + 1] - s * X[r] : kind === 3 ? s * X[r] : X[r];
+        var s = fit[3 * r + 2], x = X[r];
+        var v = kind === 1 ? fit[3 * r] + s * x : kind === 2 ? fit[3 * r + 1] - s * x : kind === 3 ? s * x : kind === 4 ? s * Math.exp(x) : x;
         D[r * U + c] = v;
         if (r > 0 && Math.abs(v - D[c]) > 0.004) moving[c] = 1;
       }
     }
-  }
-  function prepare(buf){
-    expand(buf);
-    isFlag = new Uint8Array(cols);
+  };
+  Sweep.prototype.prepare = function(buf){
+    this.expand(buf);
+    var L = this.L, self = this, at = 0, isFlag = this.isFlag = new Uint8Array(L.cols), isGeo = this.isGeo = new Uint8Array(L.cols);
     (L.flags || []).forEach(function(c){ isFlag[c] = 1; });
-    var at = 0;
-    player = window.constructPlayer;
-    if (player) {  // each step's view (the camera's, or the magnified box) gets a box of its own, moved with the given
-      LIST = player.data.views ? "views" : "zooms"; IDX = player.data.views ? "v" : "z";
-      zooms = [];
-      player.data.steps.forEach(function(st, i){
-        zooms[i] = st[IDX] >= 0 ? player.data[LIST][st[IDX]].slice() : null; if (st[IDX] >= 0) st[IDX] = i; });
-      player.data[LIST] = zooms;
-    }
-    var byId = {};
     L.keys.forEach(function(k){
-      var parts = k[2].split("#"), nn = parts.length - 1;
-      // the view and the ring of a step: computed for the shown step only (view)
-      if (k[0] === "#zoom") { zoomAt[+k[1]] = at; at += nn; return; }
-      var el = k[0] ? document.getElementById(k[0]) : svg, cs = new Int32Array(nn), fl = new Uint8Array(nn), mv = false;
-      for (var i = 0; i < nn; i++) { cs[i] = colmap[at + i]; fl[i] = isFlag[at + i]; if (moving[cs[i]]) mv = true; }
+      var parts = k[2].split("#"), nn = parts.length - 1, i;
+      // a radius: blended geometrically (render/wire.py radii)
+      if (k[1] === "d" && k[2] === "M# #A# # # # # # #") { isGeo[at + 2] = isGeo[at + 3] = 1; }
+      else if (k[1] === "r" && nn === 1) isGeo[at] = 1;
+      // a step's view, the ring round its mark, the broken axes: data for the shown step and the break marks
+      if (k[0] === "#zoom") { self.zoomAt[+k[1]] = at; at += nn; return; }
+      if (k[0] === "#ring") { self.ringAt[+k[1]] = at; at += nn; return; }
+      if (k[0] === "#break") { (self.breakAt = self.breakAt || [])[+k[1]] = at; at += nn; return; }
+      var el = k[0] ? (player && player.find ? player.find(k[0]) : document.getElementById(k[0])) : svg;
+      var cs = new Int32Array(nn), mv = false;
+      for (i = 0; i < nn; i++) { cs[i] = at + i; if (self.moving[self.colmap[at + i]]) mv = true; }
       at += nn;
-      // a mark whose numbers do not move over the domain keeps its attribute as built: never written
-      if (!el || (!mv && el !== svg)) return;
-      var host = el.closest ? el.closest("g[data-step]") : null;
-      var sl = {el: el, attr: k[1], parts: parts, cs: cs, fl: fl, v: new Float64Array(nn), text: el.getAttribute(k[1]),
-                step: host ? +host.getAttribute("data-step") : 0, len: lengthOf(el, k[1], parts)};
-      if (sl.len) sl.v[0] = sl.len.value;
+      // a mark whose numbers do not move over the domain keeps its attribute as built: never written (a given
+      // swept in pieces writes them all: another piece may have written them)
+      if (!el || (!mv && !L.piece && el !== svg)) return;
+      var sl = {el: el, attr: k[1], parts: parts, cs: cs, v: new Float64Array(nn).fill(NaN), text: null,
+                len: lengthOf(el, k[1], parts)};
       // the whole figure's box: written as data-full, and as the view by the player (or below without one)
-      if (el === svg) { fullSlot = sl; sl.el = null; sl.text = svg.getAttribute("data-full") || sl.text; } else slots.push(sl);
-      if (k[1] === "cx" || k[1] === "cy") (byId[k[0]] = byId[k[0]] || {})[k[1]] = sl;
+      if (el === svg) { self.full = sl; sl.el = null; } else self.slots.push(sl);
+      if (k[1] === "cx" || k[1] === "cy") (self.byId[k[0]] = self.byId[k[0]] || {})[k[1]] = sl;
     });
-    // the marks of later steps are drawn when their step is shown (they are hidden until then)
-    slots.sort(function(a, b){ return a.step - b.step; });
-    // letters and leader lines follow the point they name: the nearest point of the built figure
-    svg.querySelectorAll("circle.pt[id]").forEach(function(c){
-      pts.push({el: c, x: +c.getAttribute("cx"), y: +c.getAttribute("cy"), s: byId[c.id]});
-    });
-    function nearest(x, y){
-      var best = null, bd = 60 * 60;
-      pts.forEach(function(q){ var d = (q.x - x) * (q.x - x) + (q.y - y) * (q.y - y); if (d < bd) { bd = d; best = q; } });
-      return best;
-    }
-    function owned(t){  // the point a label names (its id "NAME-label"; a halo: the text after it)
-      var named = t.id ? t : (t.nextElementSibling && t.nextElementSibling.tagName === "text" ? t.nextElementSibling : null);
-      var owner = named && named.id && /-label$/.test(named.id) ? document.getElementById(named.id.slice(0, -6)) : null;
-      return owner && owner.tagName === "circle" ? {el: owner, x: +owner.getAttribute("cx"), y: +owner.getAttribute("cy"), s: byId[owner.id]} : null;
-    }
-    function add(t, p){
-      if (!p || !p.s) return;  // no point, or one that does not move
-      var host = t.closest("g[data-step]");
-      var at = coords(t), len = {};
-      for (var a in at) if (a !== "g" && a !== "translate" && a !== "shift") len[a] = lengthOf(t, a, ["", ""]);
-      followers.push({el: t, p: p, at: at, step: host ? +host.getAttribute("data-step") : 0, text: {}, len: len});
-    }
-    // a label group (the camera's: letters, halo and leader about an anchor) moves as one, with its point
-    svg.querySelectorAll("g.lbg").forEach(function(g){
-      if (g.closest("#caption") || g.closest("#furniture")) return;
-      var m = /^translate\(([-0-9.e]+)[ ,]+([-0-9.e]+)\)$/.exec(g.getAttribute("transform") || "");
-      var first = g.querySelector("text, line");
-      if (!m || !first) return;
-      var p = null;
-      g.querySelectorAll("text").forEach(function(t){ p = p || owned(t); });
-      add(first, p || nearest(+m[1], +m[2]));
-    });
-    // letters and leader lines drawn where they stand follow the point they name, or the nearest point
-    svg.querySelectorAll("text, line:not([id])").forEach(function(t){
-      if (t.closest("#caption") || t.closest("#furniture") || t.closest("g.lbg")) return;
-      var x = +(t.getAttribute("x") || t.getAttribute("x1")), y = +(t.getAttribute("y") || t.getAttribute("y1"));
-      add(t, owned(t) || nearest(x, y));
-    });
-    followers.sort(function(a, b){ return a.step - b.step; });
-    group();
-    // letters that are readings of the figure (an angle read off it): true at the built value only
-    (L.readings || []).forEach(function(id){
-      var t = document.getElementById(id);
-      if (t) readings.push(t.closest("g.lbg") || t);
-    });
-    // the ring of a step (round its mark where that is small on the screen) follows the nearest point
-    if (player) player.data.steps.forEach(function(st, i){
-      var p = st.r ? nearest(st.r[0], st.r[1]) : null;
-      if (p && p.s && p.s.cx && p.s.cy) ringAt[i] = {p: p, x: st.r[0], y: st.r[1]};
-    });
-  }
-  // While the given is dragged only the marks in the window are drawn (at a magnified step much of the figure
-  // lies outside it); each mark's box at the value is computed from its numbers, and a mark is drawn if that
-  // box or the one it was last drawn at meets the window (widened by a margin).  The others are drawn when the
-  // drag ends ('change'), the step or the view changes (the camera, the magnifier, the window's size): never
-  // seen behind.
-  var elems = [], MARGIN_PX = 40, LABEL_PX = 150, ownBox = null, stale = false, visKey = null, hid = new Map();
-  // A mark in a group the step hides (display:none: later steps, finished groups, letters of another zoom
-  // level) is not drawn either while dragging, yet a new attribute there costs the browser a restyle and a
-  // layout all the same: at the inertia curve's last step 907 of its 1156 moving marks are hidden so.
-  function hidden(node){  // the node or a group round it not displayed (known per step and zoom level)
-    if (!node || node === svg || node.nodeType !== 1) return false;
-    if (!node.isConnected) return true;  // in a group the player has taken out of the document (lean)
-    var h = hid.get(node);
-    if (h === undefined) { h = hidden(node.parentNode) || getComputedStyle(node).display === "none"; hid.set(node, h); }
-    return h;
-  }
-  function shownNow(){  // what is displayed changes with the step and the zoom level's class only
-    var key = svg.getAttribute("data-step") + "|" + svg.getAttribute("class");
-    if (key !== visKey) { visKey = key; hid = new Map(); }
-  }
-  // what each number of a path's commands is: 1 an x, 2 a y, 3 a radius, 0 neither (arcs' angle and flags)
-  var ROLES = {M: "12", L: "12", T: "12", H: "1", V: "2", C: "121212", S: "1212", Q: "1212", A: "3300012"};
-  function rolesOf(attr, parts){  // null: numbers the box cannot be told from (the mark is always drawn)
-    if (attr === "cx" || attr === "x1" || attr === "x2" || attr === "x") return parts.length === 2 ? [1] : null;
-    if (attr === "cy" || attr === "y1" || attr === "y2" || attr === "y") return parts.length === 2 ? [2] : null;
-    if (attr === "r") return parts.length === 2 ? [3] : null;
-    if (attr !== "d") return null;
-    var out = [], cmd = null, k = 0;
-    for (var i = 0; i < parts.length - 1; i++) {
-      var letters = parts[i].match(/[A-Za-z]/g);
-      if (letters) { cmd = letters[letters.length - 1]; k = 0; }
-      var pat = cmd && ROLES[cmd];
-      if (!pat) return null;  // a relative command (lower case), or none: not told
-      out.push(+pat.charAt(k % pat.length));
-      k++;
-    }
-    return out;
-  }
-  var FIXED = {circle: ["cx", "cy", "r"], line: ["x1", "y1", "x2", "y2"], path: ["d"]};
-  function group(){  // the slots of each mark together, with the numbers of its box that do not move
-    var byEl = new Map();
-    slots.forEach(function(sl){
-      var e = byEl.get(sl.el);
-      if (!e) { e = {el: sl.el, slots: [], step: sl.step, cull: true, fixed: [], box: null, stale: false}; byEl.set(sl.el, e); elems.push(e); }
-      e.slots.push(sl);
-      sl.roles = rolesOf(sl.attr, sl.parts);
-      if (!sl.roles) e.cull = false;
-    });
-    byEl.forEach(function(e, el){
-      var names = FIXED[el.tagName];
-      // a mark under a transform of its own (other than its step's) is drawn in other coordinates: always drawn
-      if (!names || el.hasAttribute("transform") || (el.parentNode && el.parentNode.closest && el.parentNode.closest("[transform]"))) { e.cull = false; return; }
-      names.forEach(function(a){
-        if (e.slots.some(function(sl){ return sl.attr === a; })) return;
-        if (a === "d") { e.cull = false; return; }  // (a path's d is one slot or none)
-        var v = +el.getAttribute(a);
-        if (isNaN(v)) e.cull = false; else e.fixed.push(a === "r" ? 3 : a.charAt(0) === "x" || a === "cx" ? 1 : 2, v);
-      });
-    });
-  }
-  function numAt(sl, i){  // the i-th number of a slot at the shown value, as written (to the hundredth)
-    var c = sl.cs[i], v = sl.fl[i] ? (cur.t < 0.5 ? D[cur.r0 + c] : D[cur.r1 + c]) : D[cur.r0 + c] + (D[cur.r1 + c] - D[cur.r0 + c]) * cur.t;
-    return Math.round(v * 100) / 100;
-  }
-  function boxNow(e){  // the mark's box at the shown value (its arcs' and circles' radii round its points)
-    var x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity, r = 0, j, v, role;
-    function add(role, v){
-      if (role === 1) { if (v < x0) x0 = v; if (v > x1) x1 = v; }
-      else if (role === 2) { if (v < y0) y0 = v; if (v > y1) y1 = v; }
-      else if (role === 3 && Math.abs(v) > r) r = Math.abs(v);
-    }
-    for (j = 0; j < e.fixed.length; j += 2) add(e.fixed[j], e.fixed[j + 1]);
-    for (var s = 0; s < e.slots.length; s++) {
-      var sl = e.slots[s];
-      for (j = 0; j < sl.roles.length; j++) if ((role = sl.roles[j])) add(role, numAt(sl, j));
-    }
-    return [x0 - 2 * r, y0 - 2 * r, x1 + 2 * r, y1 + 2 * r];
-  }
-  function meets(b, w, m){ return !!b && b[0] <= w[2] + m && b[2] >= w[0] - m && b[1] <= w[3] + m && b[3] >= w[1] - m; }
-  function visible(r){  // the figure's coordinates the window shows (the view fitted into it, centred) and px
-    var vb = svg.viewBox && svg.viewBox.baseVal;
-    if (!r || !r.width || !r.height || !vb || !vb.width || !vb.height) return null;
-    var s = Math.min(r.width / vb.width, r.height / vb.height), hw = r.width / s / 2, hh = r.height / s / 2;
-    var cx = vb.x + vb.width / 2, cy = vb.y + vb.height / 2;
-    return [cx - hw, cy - hh, cx + hw, cy + hh, 1 / s];
-  }
-  function drawElem(e, w){  // a mark at the shown value: all of it, or (w: the window while dragging) if seen
-    // (outside the window first: that is arithmetic, while whether it is displayed may ask the browser)
-    var b = e.cull ? boxNow(e) : null;
-    if (w && e.cull && !meets(b, w, MARGIN_PX * w[4]) && !meets(e.box, w, MARGIN_PX * w[4])) { e.stale = stale = true; return; }
-    if (w && hidden(e.el)) { e.stale = stale = true; return; }
-    if (e.cull) e.box = b;
-    for (var s = 0; s < e.slots.length; s++) write(e.slots[s]);
-    e.stale = false;
-  }
+  };
+  Sweep.prototype.dirty = function(){  // everything written anew (another given was shown meanwhile)
+    this.slots.forEach(function(sl){ sl.v.fill(NaN); sl.text = null; });
+    if (this.full) { this.full.v.fill(NaN); this.full.text = null; }
+  };
   function lengthOf(el, attr, parts){  // the SVG length an attribute of one bare number is (cx, cy, r, x1, …)
     var a = parts.length === 2 && !parts[0] && !parts[1] && el !== svg && el[attr];
     return a && a.baseVal && typeof a.baseVal.value === "number" && a.baseVal.unitType === 1 ? a.baseVal : null;
   }
-  function coords(e){  // a letter's x, y or a leader line's ends, as built; or its label group's translate
-    var out = {}, g = e.parentNode, m = g && g.classList && g.classList.contains("lbg") &&
-      /^translate\(([-0-9.e]+)[ ,]+([-0-9.e]+)\)$/.exec(g.getAttribute("transform") || "");
-    if (m) {
-      var list = g.transform && g.transform.baseVal, one = list && list.numberOfItems === 1 ? list.getItem(0) : null;
-      return {translate: [+m[1], +m[2]], g: g, shift: one && one.type === 2 ? one : null};  // 2: SVG_TRANSFORM_TRANSLATE
-    }
-    ["x", "y", "x1", "y1", "x2", "y2"].forEach(function(a){ var v = e.getAttribute(a); if (v !== null && v !== "" && !isNaN(+v)) out[a] = +v; });
-    return out;
-  }
-  function cell(u){
+  // ---- the shown value ----------------------------------------------------------------------------------------
+  function cell(L, u){
     var g = L.grid, lo = 0, hi = g.length - 1;
     if (u <= g[0]) return [0, 0];
     if (u >= g[hi]) return [hi - 1, 1];
     while (hi - lo > 1) { var m = (lo + hi) >> 1; if (g[m] <= u) lo = m; else hi = m; }
     var t = (u - g[lo]) / (g[lo + 1] - g[lo]);
-    // across a jump of the drawing (the broken axis appearing) the nearer side is drawn, not a blend
+    // across a jump of the drawing (a broken axis appearing) the nearer side is drawn, not a blend
     if (L.jumps.indexOf(lo) >= 0) t = t < 0.5 ? 0 : 1;
     return [lo, t];
   }
+  function num(c){  // key column c at the shown value: a flag from the nearer grid value, a radius geometrically
+    var uc = S.colmap[c], a = S.D[cur.r0 + uc], b = S.D[cur.r1 + uc], t = cur.t;
+    if (S.isFlag[c]) return t < 0.5 ? a : b;
+    if (S.isGeo[c] && a > 0 && b > 0) return a * Math.pow(b / a, t);
+    return a + (b - a) * t;
+  }
+  function write(sl){  // one mark's attribute at the shown value; written only when it changes
+    var cs = sl.cs, v, i, changed = false;
+    if (sl.len) {  // one length (a point's centre, a line's end): its number, set without text to parse
+      v = round2(num(cs[0]));
+      if (v !== sl.v[0]) { sl.v[0] = v; sl.len.value = v; }
+      return;
+    }
+    for (i = 0; i < cs.length; i++) { v = round2(num(cs[i])); if (v !== sl.v[i]) { sl.v[i] = v; changed = true; } }
+    if (!changed && sl.text !== null) return;
+    var parts = sl.parts, txt = parts[0];
+    for (i = 1; i < parts.length; i++) txt += sl.v[i - 1] + parts[i];
+    if (txt !== sl.text) { sl.text = txt; if (sl.el) sl.el.setAttribute(sl.attr, txt); }
+  }
+  function pointNow(id){  // a moving point's centre at the shown value (null: it does not move)
+    var p = S.byId[id];
+    return p && (p.cx || p.cy) ? [p.cx ? round2(num(p.cx.cs[0])) : null, p.cy ? round2(num(p.cy.cs[0])) : null] : null;
+  }
+  // ---- letters and name tags: with the point they name --------------------------------------------------------
+  var builtAt = {};  // each point's centre as built (before anything is written)
+  svg.querySelectorAll("circle.pt[id]").forEach(function(c){ builtAt[c.id] = [+c.getAttribute("cx"), +c.getAttribute("cy")]; });
+  function stepOf(e){ var g = e.closest ? e.closest("g[data-step]") : null; return g ? g.getAttribute("data-step") : null; }
+  var atPoint = {};  // the points by where they stand as built, "x y" -> [id, step] (a tag stands on its point)
+  svg.querySelectorAll("circle.pt[id]").forEach(function(c){
+    var key = c.getAttribute("cx") + " " + c.getAttribute("cy");
+    (atPoint[key] = atPoint[key] || []).push([c.id, stepOf(c)]);
+  });
+  function ownerOf(g, x, y){  // the point a label group names: its letter's id, or the point it stands on
+    var t = g.querySelector('text[id$="-label"]'), own = t ? t.id.slice(0, -6) : null;
+    if (own && builtAt[own]) return own;
+    var here = atPoint[x + " " + y] || [], step = stepOf(g);
+    for (var i = 0; i < here.length; i++) if (here[i][1] === step) return here[i][0];
+    return here.length ? here[0][0] : null;
+  }
+  function nearest(x, y){  // (a letter of a plain figure, drawn where it stands: the nearest point)
+    var best = null, bd = 60 * 60;
+    for (var id in builtAt) { var p = builtAt[id], d = (p[0] - x) * (p[0] - x) + (p[1] - y) * (p[1] - y); if (d < bd) { bd = d; best = id; } }
+    return best;
+  }
+  function gather(){
+    api.unowned = 0;
+    svg.querySelectorAll("g.lbg").forEach(function(g){
+      if (g.closest("#caption") || g.closest("#furniture")) return;
+      var m = /^translate\(([-0-9.e]+)[ ,]+([-0-9.e]+)\)$/.exec(g.getAttribute("transform") || "");
+      if (!m) return;
+      var own = ownerOf(g, m[1], m[2]);
+      if (!own) { api.unowned++; return; }
+      var list = g.transform && g.transform.baseVal, one = list && list.numberOfItems === 1 ? list.getItem(0) : null;
+      followers.push({g: g, own: own, x: +m[1], y: +m[2], shift: one && one.type === 2 ? one : null, at: [NaN, NaN],
+                      tag: !g.querySelector('text[id$="-label"]'), step: +(stepOf(g) || 0)});
+    });
+    // letters and leader lines drawn where they stand (a plain figure's): with the point they name, or the nearest
+    svg.querySelectorAll("text, line:not([id])").forEach(function(t){
+      if (t.closest("#caption") || t.closest("#furniture") || t.closest("g.lbg")) return;
+      var x = +(t.getAttribute("x") || t.getAttribute("x1")), y = +(t.getAttribute("y") || t.getAttribute("y1"));
+      var own = t.id && /-label$/.test(t.id) && builtAt[t.id.slice(0, -6)] ? t.id.slice(0, -6) : nearest(x, y);
+      var built = {};
+      ["x", "y", "x1", "y1", "x2", "y2"].forEach(function(a){ var v = t.getAttribute(a); if (v !== null && v !== "" && !isNaN(+v)) built[a] = +v; });
+      if (own) followers.push({el: t, own: own, built: built, at: {}});
+    });
+  }
+  function follow(fo){  // a letter group (or a plain letter) with its point
+    var p = pointNow(fo.own), b = builtAt[fo.own];
+    var dx = p && p[0] !== null ? p[0] - b[0] : 0, dy = p && p[1] !== null ? p[1] - b[1] : 0;
+    if (fo.g) {
+      var gx = round2(fo.x + dx), gy = round2(fo.y + dy);
+      if (gx === fo.at[0] && gy === fo.at[1]) return;
+      fo.at[0] = gx; fo.at[1] = gy;
+      // the group's one translate, set as numbers (a transform attribute's text would be parsed)
+      if (fo.shift) fo.shift.setTranslate(gx, gy); else fo.g.setAttribute("transform", "translate(" + gx + " " + gy + ")");
+      return;
+    }
+    for (var a in fo.built) {
+      var v = round2(fo.built[a] + (a.charAt(0) === "x" ? dx : dy));
+      if (v !== fo.at[a]) { fo.at[a] = v; fo.el.setAttribute(a, String(v)); }
+    }
+  }
+  // ---- the broken axes: their marks on every line that crosses them (render/plate.py break_elements) ----------
+  var SIZE = LIST[0].label_px || 12, NS = "http://www.w3.org/2000/svg", marksOf = new Map(), rodLabels = [];
+  var TWO = /^M(-?[0-9.]+) (-?[0-9.]+)L(-?[0-9.]+) (-?[0-9.]+)$/;
+  function mk(tag, cls, parent){ var e = document.createElementNS(NS, tag); e.setAttribute("class", cls); parent.appendChild(e); return e; }
+  function breakMarks(){
+    var bands = [];
+    for (var axis = 0; axis < 2; axis++) {
+      var c = S.breakAt ? S.breakAt[axis] : undefined, w = c === undefined ? 0 : num(c + 1);
+      bands.push(w > 0.5 ? [num(c), w] : null);
+    }
+    var first = [null, null];
+    for (var i = 0; i < lines.length; i++) {
+      var ln = lines[i], x1, y1, x2, y2;
+      if (ln.x1) { x1 = ln.x1.baseVal.value; y1 = ln.y1.baseVal.value; x2 = ln.x2.baseVal.value; y2 = ln.y2.baseVal.value; }
+      else { var e2 = TWO.exec(ln.getAttribute("d")); x1 = +e2[1]; y1 = +e2[2]; x2 = +e2[3]; y2 = +e2[4]; }
+      var got = marksOf.get(ln) || [null, null];
+      for (axis = 0; axis < 2; axis++) {
+        var band = bands[axis], a0 = axis ? y1 : x1, a1 = axis ? x1 : y1, b0 = axis ? y2 : x2, b1 = axis ? x2 : y2;
+        var on = band && Math.min(a0, b0) < band[0] + 0.3 * band[1] && Math.max(a0, b0) > band[0] + 0.7 * band[1] && Math.abs(b0 - a0) > 1e-9;
+        var set = got[axis];
+        if (!on) { if (set) set.g.setAttribute("display", "none"); continue; }
+        if (!set) {  // beside its line: shown and faded with the line's step
+          var g = document.createElementNS(NS, "g");
+          g.setAttribute("class", "brkg");
+          ln.parentNode.insertBefore(g, ln.nextSibling);
+          set = got[axis] = {g: g, gap: mk("path", "brk", g), t: [mk("line", "brkline", g), mk("line", "brkline", g)], key: ""};
+          marksOf.set(ln, got);
+        }
+        set.g.removeAttribute("display");
+        var t = band[0] + band[1] / 2, s = a1 + (b1 - a1) * (t - a0) / (b0 - a0), cx = axis ? s : t, cy = axis ? t : s;
+        var n = Math.hypot(x2 - x1, y2 - y1) || 1, ux = (x2 - x1) / n, uy = (y2 - y1) / n, nx = -uy, ny = ux;
+        var h = 0.6 * SIZE, gap = 0.45 * SIZE, key = cx + " " + cy + " " + ux + " " + uy;
+        if (!first[axis] && ln.isConnected) first[axis] = [cx, cy];
+        if (key === set.key) continue;
+        set.key = key;
+        var corner = function(su, sn){ return round2(cx + su * gap * ux + sn * h * nx) + " " + round2(cy + su * gap * uy + sn * h * ny); };
+        set.gap.setAttribute("d", "M" + corner(-1, -1) + "L" + corner(1, -1) + "L" + corner(1, 1) + "L" + corner(-1, 1) + "Z");
+        for (var k = 0; k < 2; k++) {
+          var su = k ? 1 : -1, tx = cx + su * gap * ux, ty = cy + su * gap * uy, e = set.t[k];
+          e.setAttribute("x1", round2(tx - 0.35 * h * ux - h * nx)); e.setAttribute("y1", round2(ty - 0.35 * h * uy - h * ny));
+          e.setAttribute("x2", round2(tx + 0.35 * h * ux + h * nx)); e.setAttribute("y2", round2(ty + 0.35 * h * uy + h * ny));
+        }
+      }
+    }
+    // the rod's length written at each break (a broken rod is drawn short: the figure says how long it is)
+    var rod = sweeps.filter(function(w){ return w.L.rod; })[0];
+    for (axis = 0; axis < 2; axis++) {
+      var lab = rodLabels[axis], at = first[axis];
+      if (!rod || !at) { if (lab) lab.g.setAttribute("display", "none"); continue; }
+      if (!lab) {
+        var lg = mk("g", "lbg rodlen", svg.querySelector("#furniture") || svg);
+        lab = rodLabels[axis] = {g: lg, halo: mk("text", "lb halo", lg), text: mk("text", "lb", lg)};
+        var dx = axis ? 0.7 * SIZE : 0, dy = axis ? 0.35 * SIZE : -0.9 * SIZE;
+        [lab.halo, lab.text].forEach(function(e){ e.setAttribute("x", dx); e.setAttribute("y", dy); if (axis) e.setAttribute("style", "text-anchor:start"); });
+      }
+      lab.g.removeAttribute("display");
+      lab.g.setAttribute("transform", "translate(" + round2(at[0]) + " " + round2(at[1]) + ")");
+      var said = rod.L.rod.replace("{v}", book(rod.value));
+      setText(lab.halo, said); setText(lab.text, said);
+    }
+  }
+  // ---- areas between two graphs: drawn anew from the graphs that bound them (kernel/areas.py area_between) ----
+  var areas = [];
+  var NUMS = /-?[0-9]+(?:\.[0-9]+)?(?:e[-+]?[0-9]+)?/g;
+  function graph(e){  // a graph as drawn: a line (null: evaluated exactly) or its vertices, x ascending
+    if (e.tagName === "line") return {line: [e.x1.baseVal.value, e.y1.baseVal.value, e.x2.baseVal.value, e.y2.baseVal.value]};
+    var d = e.getAttribute("d"), n = (d.match(NUMS) || []).map(Number), xs = [], ys = [], i, k;
+    if (d.indexOf("C") < 0) { for (i = 0; i + 1 < n.length; i += 2) { xs.push(n[i]); ys.push(n[i + 1]); } }
+    else {
+      // a French curve: drawn through its points at sixteen to a Bézier segment (BezierCurve.curve_points), each
+      // segment a cubic in its parameter, so that four of them give it whole: the area takes 64 to a segment
+      // (kernel/areas.py _graph), read off that cubic (Lagrange, through the four nearest points of the segment)
+      var P = [[n[0], n[1]]];
+      for (i = 2; i + 5 < n.length; i += 6) P.push([n[i + 4], n[i + 5]]);
+      for (var seg = 0; seg + 16 < P.length; seg += 16) {
+        for (k = 0; k < 16; k++) {
+          // four nodes j0 .. j0 + 3 about the piece, inside the segment (never past its end: no extrapolation)
+          var j0 = seg + Math.min(Math.max(k - 1, 0), 13);
+          xs.push(P[seg + k][0]); ys.push(P[seg + k][1]);
+          for (var q = 1; q < 4; q++) {
+            var t = seg + k + q / 4 - j0, lx = 0, ly = 0;
+            for (var a = 0; a < 4; a++) {
+              var w = 1;
+              for (var b = 0; b < 4; b++) if (b !== a) w *= (t - b) / (a - b);
+              lx += w * P[j0 + a][0]; ly += w * P[j0 + a][1];
+            }
+            xs.push(lx); ys.push(ly);
+          }
+        }
+      }
+      xs.push(P[P.length - 1][0]); ys.push(P[P.length - 1][1]);
+    }
+    var order = xs.map(function(_, j){ return j; }).sort(function(p, q){ return xs[p] - xs[q] || p - q; });
+    return {xs: order.map(function(j){ return xs[j]; }), ys: order.map(function(j){ return ys[j]; })};
+  }
+  function ordinate(g, x){
+    if (g.line) { var l = g.line; return l[1] + (x - l[0]) * (l[3] - l[1]) / (l[2] - l[0]); }
+    var xs = g.xs, lo = 0, hi = xs.length - 1;
+    if (x <= xs[0]) return g.ys[0];
+    if (x >= xs[hi]) return g.ys[hi];
+    while (hi - lo > 1) { var m = (lo + hi) >> 1; if (xs[m] <= x) lo = m; else hi = m; }
+    return xs[hi] === xs[lo] ? g.ys[lo] : g.ys[lo] + (x - xs[lo]) * (g.ys[hi] - g.ys[lo]) / (xs[hi] - xs[lo]);
+  }
+  function areaPieces(up, low, xa, xb){  // the region between two graphs from xa to xb, split where they cross
+    var lo = Math.min(xa, xb), hi = Math.max(xa, xb), xs = [lo, hi], i;
+    [up, low].forEach(function(g){ if (g.xs) g.xs.forEach(function(x){ if (x > lo && x < hi) xs.push(x); }); });
+    xs.sort(function(a, b){ return a - b; });
+    xs = xs.filter(function(x, j){ return j === 0 || x !== xs[j - 1]; });
+    var fx = [], fu = [], fl = [];
+    for (i = 0; i < xs.length; i++) {
+      var u = ordinate(up, xs[i]), l = ordinate(low, xs[i]);
+      if (i > 0) {  // a strict change of sign between breakpoints: the crossing (both straight there)
+        var d0 = fu[fu.length - 1] - fl[fl.length - 1], d1 = u - l;
+        if ((d0 < 0 && 0 < d1) || (d1 < 0 && 0 < d0)) {
+          var t = d0 / (d0 - d1), xc = xs[i - 1] + t * (xs[i] - xs[i - 1]), yc = fu[fu.length - 1] + t * (u - fu[fu.length - 1]);
+          fx.push(xc); fu.push(yc); fl.push(yc);
+        }
+      }
+      fx.push(xs[i]); fu.push(u); fl.push(l);
+    }
+    var sign = fu.map(function(u, j){ return Math.sign(u - fl[j]); }), ends = [0], out = [];
+    sign.forEach(function(sg, j){ if (sg === 0 && j > 0 && j < sign.length - 1) ends.push(j); });
+    ends.push(sign.length - 1);
+    ends = ends.filter(function(e, j){ return j === 0 || e !== ends[j - 1]; });
+    for (var p = 0; p + 1 < ends.length; p++) {
+      var a = ends[p], b = ends[p + 1], any = false;
+      for (i = a; i <= b; i++) if (sign[i] !== 0) any = true;
+      if (!any) continue;
+      var rx = [], ry = [];
+      for (i = a; i <= b; i++) { rx.push(fx[i]); ry.push(fu[i]); }
+      for (i = b; i >= a; i--) { rx.push(fx[i]); ry.push(fl[i]); }
+      var ring = [];  // the doubled points where a run starts or ends on a crossing dropped
+      for (i = 0; i < rx.length; i++) {
+        var q = (i + rx.length - 1) % rx.length;
+        if (rx[i] !== rx[q] || ry[i] !== ry[q]) ring.push(round2(rx[i]) + " " + round2(ry[i]));
+      }
+      if (ring.length >= 3) out.push("M" + ring.join("L") + "Z");
+    }
+    return out;
+  }
+  function drawAreas(){
+    for (var i = 0; i < areas.length; i++) {
+      var A = areas[i], e = A.els, pieces;
+      if (!e.every(function(x){ return x; })) continue;
+      var key = e.map(function(x){ return x.tagName === "line" ? x.getAttribute("x1") + x.getAttribute("y1") + x.getAttribute("x2") + x.getAttribute("y2") : x.tagName === "circle" ? x.getAttribute("cx") : x.getAttribute("d"); }).join("|");
+      if (key === A.key) continue;
+      A.key = key;
+      pieces = areaPieces(graph(e[0]), graph(e[1]), e[2].cx.baseVal.value, e[3].cx.baseVal.value);
+      for (var j = 0; j < Math.max(pieces.length, A.pieces.length); j++) {
+        var el = A.pieces[j];
+        if (!el) {  // a piece more than the book's value has: the first one's like, beside the others
+          el = A.pieces[0].cloneNode(false);
+          el.setAttribute("id", A.id + "-" + j);
+          A.pieces[j - 1].parentNode.insertBefore(el, A.pieces[j - 1].nextSibling);
+          A.pieces.push(el);
+        }
+        if (j < pieces.length) { if (el.getAttribute("d") !== pieces[j]) el.setAttribute("d", pieces[j]); el.removeAttribute("display"); }
+        else el.setAttribute("display", "none");
+      }
+    }
+  }
+  // ---- the camera: the shown step's view and ring at the shown value --------------------------------------------
   function view(atOnce, drag){  // what the player's show(k) does with the view, without touching the steps (cheap)
     var d = player.data, k = +(svg.getAttribute("data-step") || d.n), st = k > 0 ? d.steps[k - 1] : null;
-    if (st && st[IDX] >= 0 && cur && zoomAt[k - 1] !== undefined) {
-      for (var i = 0; i < 4; i++) d[LIST][st[IDX]][i] = Math.round(valueAt(zoomAt[k - 1] + i) * 100) / 100;
+    if (st && st[IDX] >= 0 && S.zoomAt[k - 1] !== undefined) {
+      for (var i = 0; i < 4; i++) d[VIEWS][st[IDX]][i] = round2(num(S.zoomAt[k - 1] + i));
     }
-    var rp = ringAt[k - 1];
-    if (st && st.r && rp && rp.p.s) {  // the ring (the array the player rings with) stays on its point
-      st.r[0] = Math.round((rp.x + now(rp.p.s.cx) - rp.p.x) * 100) / 100;
-      st.r[1] = Math.round((rp.y + now(rp.p.s.cy) - rp.p.y) * 100) / 100;
+    if (st && st.r && S.ringAt[k - 1] !== undefined) {  // the ring (the array the player rings with): round its mark
+      st.r[0] = round2(num(S.ringAt[k - 1])); st.r[1] = round2(num(S.ringAt[k - 1] + 1));
     }
     // the player moves its view there itself: at once while the given is dragged, smoothly to a new step
     if (player.jump && atOnce) { player.jump(!!drag); return; }
     if (player.move) { player.move(); return; }
-    var zoom = document.getElementById("zoom");
-    var box = st && zoom && zoom.checked && k < d.n && st.z >= 0 ? d.zooms[st.z] : null;
-    svg.setAttribute("viewBox", (box || player.full).join(" "));
-    svg.style.setProperty("--z", box ? (player.full[2] / box[2]).toFixed(3) : "1");
   }
-  function now(sl){  // a one-number mark's value at the shown value (written or not yet)
-    var c = sl.cs[0];
-    return D[cur.r0 + c] + (D[cur.r1 + c] - D[cur.r0 + c]) * cur.t;
+  // ---- letters that come to lie on one another: the later gives way -------------------------------------------
+  var boxes = null, boxKey = null, pairs = null, lsRule = null;
+  Array.prototype.forEach.call(document.styleSheets, function(sh){  // the letters' scale (the player's --ls)
+    Array.prototype.forEach.call(sh.cssRules, function(r){
+      if (!lsRule && r.selectorText && r.selectorText.indexOf("#figure .lbg") === 0) lsRule = r; });
+  });
+  function measure(){  // each shown label group's box about its anchor, on the screen (asked again when the view,
+    // the zoom level or the letters' scale changes, not while a drag holds them)
+    var ctm = svg.getScreenCTM();
+    if (!ctm) return null;
+    var key = svg.getAttribute("viewBox") + "|" + svg.getAttribute("class") + "|" + (lsRule ? lsRule.style.getPropertyValue("--ls") : "");
+    if (key === boxKey && boxes) return ctm;
+    boxKey = key; boxes = new Map();
+    followers.forEach(function(fo){
+      if (!fo.g || !fo.g.isConnected) return;
+      var t = fo.g.querySelector("text:last-of-type"), r = t ? t.getBoundingClientRect() : null;
+      if (!r) return;
+      if (!r.width && !r.height) return;
+      var p = new DOMPoint(fo.at[0], fo.at[1]).matrixTransform(ctm);
+      boxes.set(fo, [r.left - p.x, r.top - p.y, r.right - p.x, r.bottom - p.y]);
+    });
+    return ctm;
   }
-  function valueAt(c){  // column c (of the keys) at the shown value
-    var uc = colmap[c];
-    return isFlag[c] ? (cur.t < 0.5 ? D[cur.r0 + uc] : D[cur.r1 + uc]) : D[cur.r0 + uc] + (D[cur.r1 + uc] - D[cur.r0 + uc]) * cur.t;
-  }
-  function write(sl){  // one mark's attribute at the shown value; written only when it changes
-    var parts = sl.parts, cs = sl.cs, r0 = cur.r0, r1 = cur.r1, t = cur.t, v;
-    if (sl.len) {  // one length (a point's centre, a line's end): its number, set without text to parse
-      var c0 = cs[0];
-      v = sl.fl[0] ? (t < 0.5 ? D[r0 + c0] : D[r1 + c0]) : D[r0 + c0] + (D[r1 + c0] - D[r0 + c0]) * t;
-      v = Math.round(v * 100) / 100;
-      if (v !== sl.v[0]) { sl.v[0] = v; sl.len.value = v; }
-      return;
-    }
-    var txt = parts[0];
-    for (var i = 1; i < parts.length; i++) {
-      var c = cs[i - 1];
-      v = sl.fl[i - 1] ? (t < 0.5 ? D[r0 + c] : D[r1 + c]) : D[r0 + c] + (D[r1 + c] - D[r0 + c]) * t;
-      v = Math.round(v * 100) / 100;
-      sl.v[i - 1] = v;
-      txt += v + parts[i];
-    }
-    if (txt !== sl.text) { sl.text = txt; if (sl.el) sl.el.setAttribute(sl.attr, txt); }
-  }
-  function follow(fo, w){  // a letter or leader line with its point (w: the window while dragging: if seen)
-    var p = fo.p, dx = (p.s.cx ? numAt(p.s.cx, 0) : p.x) - p.x, dy = (p.s.cy ? numAt(p.s.cy, 0) : p.y) - p.y;
-    var b = [p.x + dx, p.y + dy, p.x + dx, p.y + dy];  // its point moved by as much as the letter (LABEL_PX about it)
-    if (w && !meets(b, w, LABEL_PX * w[4]) && !meets(fo.box, w, LABEL_PX * w[4])) { fo.stale = stale = true; return; }
-    if (w && hidden(fo.at.g || fo.el)) { fo.stale = stale = true; return; }  // (a group: its own display)
-    fo.box = b;
-    fo.stale = false;
-    // moved by their own coordinates (a transform attribute would lose to the camera's CSS scale)
-    if (fo.at.g) {  // the camera's label group: its anchor moves (the letters scale about it)
-      var gx = Math.round((fo.at.translate[0] + dx) * 100) / 100, gy = Math.round((fo.at.translate[1] + dy) * 100) / 100;
-      if (gx !== fo.text.x || gy !== fo.text.y) {
-        fo.text.x = gx; fo.text.y = gy;
-        // the group's one translate, set as numbers (no transform text to parse)
-        if (fo.at.shift) fo.at.shift.setTranslate(gx, gy); else fo.at.g.setAttribute("transform", "translate(" + gx + " " + gy + ")");
+  function declutter(){
+    var ctm = measure();
+    if (!ctm) return;
+    var k = +(svg.getAttribute("data-step") || 0), placed = [], out = [];
+    followers.forEach(function(fo){
+      var rel = boxes.get(fo);
+      if (!rel) { if (fo.hid) { fo.hid = false; fo.g.removeAttribute("visibility"); } return; }
+      var p = new DOMPoint(fo.at[0], fo.at[1]).matrixTransform(ctm);
+      // the current step's letters first, then letters before name tags, then by step (the figure's order)
+      out.push({fo: fo, b: [p.x + rel[0], p.y + rel[1], p.x + rel[2], p.y + rel[3]], rank: (fo.step === k ? 0 : 2) + (fo.tag ? 1 : 0)});
+    });
+    out.sort(function(a, b){ return a.rank - b.rank || a.fo.step - b.fo.step; });
+    out.forEach(function(o){
+      var clash = false;
+      for (var i = 0; i < placed.length && !clash; i++) {
+        var q = placed[i].b;
+        // (letters the placer set touching at the book's value stay as it set them)
+        if (o.b[0] < q[2] - 1 && o.b[2] > q[0] + 1 && o.b[1] < q[3] - 1 && o.b[3] > q[1] + 1 && !(pairs && pairs.has(o.fo) && pairs.get(o.fo).has(placed[i].fo))) clash = true;
       }
-      return;
-    }
-    for (var a in fo.at) {
-      var v = Math.round((fo.at[a] + (a.charAt(0) === "x" ? dx : dy)) * 100) / 100;
-      if (v !== fo.text[a]) { fo.text[a] = v; if (fo.len[a]) fo.len[a].value = v; else fo.el.setAttribute(a, String(v)); }
-    }
+      if (!clash) placed.push(o);
+      if (clash !== !!o.fo.hid) { o.fo.hid = clash; if (clash) o.fo.g.setAttribute("visibility", "hidden"); else o.fo.g.removeAttribute("visibility"); }
+    });
+    return out;
   }
-  function catchUp(k, w){  // the marks of the steps up to k at the shown value (later steps are hidden): those
-    // not drawn yet, and those a drag left (w: the window while dragging, only the marks seen in it)
-    if (!cur || (k <= doneTo && !stale && !w)) return;
-    var was = stale;
-    stale = false;
-    for (var s = 0; s < elems.length; s++) {
-      var e = elems[s];
-      if (e.step <= k && (w || e.step > doneTo || (was && e.stale))) drawElem(e, w);
-      else if (e.stale) stale = true;  // left by a drag in a step now hidden: drawn when it is shown
-    }
-    for (var f = 0; f < followers.length; f++) {
-      var fo = followers[f];
-      if (fo.step <= k && (w || fo.step > doneTo || (was && fo.stale))) follow(fo, w);
-      else if (fo.stale) stale = true;
-    }
-    doneTo = Math.max(doneTo, k);
-  }
+  // ---- a redraw ---------------------------------------------------------------------------------------------
   function redraw(value, dragging, glide){  // glide: the camera to the step's view smoothly (let go)
-    var t0 = performance.now(), shape = dragging && player ? svg.getBoundingClientRect() : null;  // read before any write
-    var u = Math.log10(value), ct = cell(u), t = ct[1];
-    cur = {r0: ct[0] * U, r1: Math.min(ct[0] + 1, rows - 1) * U, t: t};
-    if (fullSlot) {  // the whole figure's box (the view when not magnified)
-      var was = fullSlot.text;
-      write(fullSlot);
-      if (fullSlot.text !== was) {
-        svg.setAttribute("data-full", fullSlot.text);
-        if (player) for (var q = 0; q < 4; q++) player.full[q] = fullSlot.v[q];
-        if (!player && !svg.classList.contains("zoomed")) svg.setAttribute("viewBox", fullSlot.text);
+    var t0 = performance.now(), u = Math.log10(value), ct = cell(S.L, u), U = S.L.ucols;
+    cur = {r0: ct[0] * U, r1: Math.min(ct[0] + 1, S.L.rows - 1) * U, t: ct[1]};
+    S.value = value;
+    if (S.full) {  // the whole figure's box (the view when not magnified)
+      var was = S.full.text;
+      write(S.full);
+      if (S.full.text !== was) {
+        svg.setAttribute("data-full", S.full.text);
+        if (player) for (var q = 0; q < 4; q++) player.full[q] = S.full.v[q];
+        if (!player && !svg.classList.contains("zoomed")) svg.setAttribute("viewBox", S.full.text);
       }
     }
     // the view first (the player reads the figure's size there: nothing written yet, no layout forced)
     if (player) view(!glide, dragging);
-    var k = player ? +(svg.getAttribute("data-step") || player.data.n) : Infinity;
-    doneTo = -1;
-    // the broken axis's marks belong to the built value's break; elsewhere the break lies elsewhere or nowhere
-    var furniture = document.getElementById("furniture"), shown = Math.abs(u - Math.log10(L.initial)) < 1e-9 ? "" : "none";
-    if (furniture && furniture.style.display !== shown) furniture.style.display = shown;
-    for (var j = 0; j < readings.length; j++) if (readings[j].style.display !== shown) { readings[j].style.display = shown; visKey = null; }
-    if (shape) shownNow();
-    catchUp(k, shape ? visible(shape) : null);
-    ownBox = svg.getAttribute("viewBox");
-    api.value = value;
+    for (var i = 0; i < S.slots.length; i++) write(S.slots[i]);
+    for (i = 0; i < followers.length; i++) follow(followers[i]);
+    drawAreas();
+    breakMarks();
+    // readings of the figure (an angle to the minute): true at the book's values only
+    var atBook = Math.abs(Math.log10(S.value) - Math.log10(S.L.initial)) < 1e-9;  // (the others are there)
+    for (var j = 0; j < readings.length; j++) { var shown = atBook ? "" : "none"; if (readings[j].style.display !== shown) readings[j].style.display = shown; }
+    declutter();
+    api.value = value; api.given = S.L.given;
     var said = book(value);
-    if (out.textContent !== said) { setText(out, said); retitle(value); }
-    showChecks(u);
+    if (S.out && S.out.textContent !== said) { setText(S.out, said); retitle(); }
+    showChecks(S, u);
     api.lastMs = performance.now() - t0;
   }
-  // the page's title and givens name the built value: they name the shown one
-  var titled = [], NUM = "[0-9]+(?:[.,][0-9]+)?";
-  // the rod as the texts write it: L/r = 5, or r/L = 1/5 (Anhang II, Baumann), r/l = 1/5 (§ 146)
-  var forms = L.given === "rod_ratio" ? [["L/r = ", ""], ["r/L = 1/", ""], ["r/l = 1/", ""]] : [[L.symbol + " = ", ""]];
-  forms.forEach(function(f){ f[1] = new RegExp(f[0].replace(/[.*+?^${}()|[\]\\/]/g, "\\$&") + NUM, "g"); });
-  document.querySelectorAll("header h1, header h1 *").forEach(function(e){
-    e.childNodes.forEach(function(t){
-      if (t.nodeType === 3 && forms.some(function(f){ f[1].lastIndex = 0; return f[1].test(t.nodeValue); }))
-        titled.push({n: t, text: t.nodeValue, en: !!(t.parentNode.closest && t.parentNode.closest(".en"))});
+  function pieceOf(given, value){  // the sweep of *given* whose piece of the domain holds *value* (or is nearest)
+    var best = null, bd = Infinity;
+    sweeps.forEach(function(w){
+      if (w.L.given !== given) return;
+      var p = w.L.piece || [w.L.low, w.L.high], d = value < p[0] ? p[0] / value : value > p[1] ? value / p[1] : 1;
+      if (d < bd) { bd = d; best = w; }
     });
-  });
-  // the givens table names the rod as the book does: L/r = 5, or r/L = 1/5 (r/l in § 146)
-  var givenCell = null, inverse = false;
-  document.querySelectorAll("#givens th").forEach(function(th){
-    var t = th.textContent.trim();
-    if (t === L.given || t === L.symbol) givenCell = th.nextElementSibling;
-    else if (L.given === "rod_ratio" && (t === "r/L" || t === "r/l")) { givenCell = th.nextElementSibling; inverse = true; }
-  });
-  function retitle(value){
-    titled.forEach(function(t){
-      var shown = t.en ? String(Number(value.toPrecision(4))) : book(value), text = t.text;
-      forms.forEach(function(f){ text = text.replace(f[1], f[0] + shown); });
-      t.n.nodeValue = text;
-    });
-    if (givenCell) setText(givenCell, (inverse ? "1/" : "") + book(value));
+    return best;
   }
-  var body = document.querySelector("#live-checks tbody"), shownAt = -1, cells = [];
-  L.checks = L.checks || [];
+  function valueOf(given){  // the shown value of *given* (a given not moving is at the book's value)
+    return S && S.L.given === given ? S.value : LIST.filter(function(L){ return L.given === given; })[0].initial;
+  }
+  function activate(W){  // another given moves: the one that moved goes back to its book value first
+    if (W === S) return;
+    if (S && S.L.given !== W.L.given) {
+      var B = pieceOf(S.L.given, S.L.initial);  // (the piece of its domain the book's value lies in)
+      var moved = B !== S || Math.abs(S.value - S.L.initial) > 1e-12 * S.L.initial;
+      if (B !== S) { S = B; S.dirty(); }
+      if (moved) redraw(S.L.initial, false, false);
+      S.input.value = Math.log10(S.L.initial);
+      setText(S.out, book(S.L.initial));
+    }
+    shownAt = -1;  // (another piece of the same given: its own checks)
+    S = W;
+    S.dirty();
+    boxKey = null;
+  }
+  // ---- the page's title, givens and checks name the shown values -------------------------------------------
+  var titled = [], NUM = "[0-9]+(?:[.,][0-9]+)?", forms = {};
+  LIST.forEach(function(L){
+    // the given as the texts write it (live/sweep.py LiveGiven.written): L/r = 5, r/L = 1/5, κ = P/Bmax = 8
+    forms[L.given] = (L.written && L.written.length ? L.written : [L.symbol + " = "])
+      .map(function(f){ return [f, new RegExp(f.replace(/[.*+?^${}()|[\]\\/]/g, "\\$&") + NUM, "g")]; });
+  });
+  document.querySelectorAll("header h1, header h1 *, #givens th, #givens td").forEach(function(e){
+    e.childNodes.forEach(function(t){
+      if (t.nodeType === 3) titled.push({n: t, text: t.nodeValue, en: !!(t.parentNode.closest && t.parentNode.closest(".en")),
+                                         head: !!(t.parentNode.closest && t.parentNode.closest("header"))});
+    });
+  });
+  // givens that follow from the moving one and that the texts write (live/sweep.py DERIVED_WRITTEN): the two
+  // cranks' magnification, chosen again at every rod
+  var derived = [];
+  LIST.forEach(function(L){
+    Object.keys(L.derived || {}).forEach(function(k){
+      derived.push({L: L, values: L.derived[k].values, forms: L.derived[k].written.map(function(f){
+        return [f, new RegExp(f.replace(/[.*+?^${}()|[\]\\/]/g, "\\$&") + NUM, "g")]; })});
+    });
+  });
+  var cells = [];  // the givens table's cells that name a given: [cell, given, inverse, as written]
+  document.querySelectorAll("#givens th").forEach(function(th){
+    var t = th.textContent.trim(), td = th.nextElementSibling;
+    LIST.forEach(function(L){
+      if (t === L.given || t === L.symbol) cells.push([td, L.given, false, td.textContent]);
+      else if (L.given === "rod_ratio" && (t === "r/L" || t === "r/l")) cells.push([td, L.given, true, td.textContent]);
+    });
+  });
+  function retitle(){
+    var now = derived.map(function(d){  // its value at the nearer grid value of its given's shown value
+      var v = valueOf(d.L.given), W = pieceOf(d.L.given, v);
+      if (W.L !== d.L) return null;  // (another piece's)
+      var ct = cell(d.L, Math.log10(v));
+      return d.values[ct[1] < 0.5 ? ct[0] : Math.min(ct[0] + 1, d.values.length - 1)];
+    });
+    titled.forEach(function(t){
+      var text = t.text;
+      if (t.head) Object.keys(forms).forEach(function(given){
+        var v = valueOf(given), shown = t.en ? String(Number(v.toPrecision(4))) : book(v);
+        forms[given].forEach(function(f){ f[1].lastIndex = 0; text = text.replace(f[1], f[0] + shown); });
+      });
+      derived.forEach(function(d, j){
+        if (now[j] === null) return;
+        d.forms.forEach(function(f){ f[1].lastIndex = 0; text = text.replace(f[1], function(m){
+          return f[0] + (m.indexOf(",") >= 0 || !t.en && m.indexOf(".") < 0 ? book(now[j]) : String(Number(now[j].toPrecision(4)))); }); });
+      });
+      if (t.n.nodeValue !== text) t.n.nodeValue = text;
+    });
+    cells.forEach(function(c){  // each number of the cell as written, in its own language (2,0 m / 2.0 m)
+      var v = valueOf(c[1]);
+      setText(c[0], c[2] ? "1/" + book(v) : c[3].replace(new RegExp(NUM, "g"), function(n){
+        return n.indexOf(".") >= 0 ? String(Number(v.toPrecision(4))) : book(v); }));
+    });
+  }
+  var body = document.querySelector("#live-checks tbody"), shownAt = -1, rowsOf = [];
   function put(td, text, cls){  // a cell's text (and class) written only when it changes: no row is rebuilt
     setText(td, text);
     if (cls !== undefined && td.className !== cls) td.className = cls;
   }
-  function showChecks(u){
+  function showChecks(W, u){
+    var L = W.L;
     if (!L.checks || !L.checks.length) return;
     var k = 0, bd = Infinity;  // the nearest value the checks were swept at, in log10
     L.check_values.forEach(function(v, i){ var d = Math.abs(Math.log10(v) - u); if (d < bd) { bd = d; k = i; } });
@@ -502,57 +696,107 @@ LIVE_SCRIPT = r"""
     put(document.getElementById("live-at"), "(" + L.symbol + " = " + book(L.check_values[k]) + ")");
     var rows = L.checks[k];
     // the rows are made once (a rebuilt table is laid out anew, at the cost of a frame); their cells change
-    while (cells.length > rows.length) body.removeChild(cells.pop()[0].parentNode);
-    while (cells.length < rows.length) {
+    while (rowsOf.length > rows.length) body.removeChild(rowsOf.pop()[0].parentNode);
+    while (rowsOf.length < rows.length) {
       var tr = document.createElement("tr"), row = [];
       for (var j = 0; j < 5; j++) row.push(tr.appendChild(document.createElement("td")));
       body.appendChild(tr);
-      cells.push(row);
+      rowsOf.push(row);
     }
     rows.forEach(function(c, i){
-      // [formula, error, ok, constructed value where formula + error does not give it] (live.py _check_table)
-      var td = cells[i], num = function(x){ return x === null ? "–" : x.toPrecision(8); };
+      // [formula, error, ok, constructed value where formula + error does not give it] (live/wire.py _check_table)
+      var td = rowsOf[i], fmt = function(x){ return x === null ? "–" : x.toPrecision(8); };
       var made = c.length > 3 ? c[3] : (c[0] === null || c[1] === null ? null : c[0] + c[1]);
-      put(td[0], L.check_names[i]); put(td[1], num(made)); put(td[2], num(c[0]));
+      put(td[0], L.check_names[i]); put(td[1], fmt(made)); put(td[2], fmt(c[0]));
       put(td[3], c[1] === null ? "–" : c[1].toExponential(1)); put(td[4], c[2] ? "✓" : "✗", c[2] ? "ok" : "bad");
     });
   }
-  api.ready = inflate(L.meta_z).then(function(b){
-    var m = JSON.parse(new TextDecoder().decode(b));
-    L.grid = m.grid; L.keys = m.keys; L.flags = m.flags; L.jumps = m.jumps;
-    return L.checks_z ? inflate(L.checks_z) : null;
-  }).then(function(b){
-    if (b) { var c = JSON.parse(new TextDecoder().decode(b)); L.check_names = c.check_names; L.check_values = c.check_values; L.checks = c.checks; }
-    return inflate(L.data);
-  }).then(function(buf){
-    prepare(buf);
+  // ---- start ------------------------------------------------------------------------------------------------
+  function load(L){
+    var W = new Sweep(L);
+    return inflate(L.meta_z).then(function(b){
+      var m = json(b);
+      L.grid = m.grid; L.keys = m.keys; L.flags = m.flags; L.jumps = m.jumps;
+      return L.checks_z ? inflate(L.checks_z) : null;
+    }).then(function(b){
+      if (b) { var c = json(b); L.check_names = c.check_names; L.check_values = c.check_values; L.checks = c.checks; }
+      return inflate(L.data);
+    }).then(function(buf){ W.buf = buf; return W; });
+  }
+  api.ready = Promise.all(LIST.map(load)).then(function(ws){
+    player = window.constructPlayer;
+    if (player) {  // each step's view (the camera's, or the magnified box) gets a box of its own, moved with the given
+      VIEWS = player.data.views ? "views" : "zooms"; IDX = player.data.views ? "v" : "z";
+      var own = [];
+      player.data.steps.forEach(function(st, i){
+        own[i] = st[IDX] >= 0 ? player.data[VIEWS][st[IDX]].slice() : null; if (st[IDX] >= 0) st[IDX] = i; });
+      player.data[VIEWS] = own;
+    }
+    sweeps = ws;
+    ws.forEach(function(W){ W.prepare(W.buf); W.buf = null; });
+    S = pieceOf(LIST[0].given, LIST[0].initial);
+    gather();
+    // the lines a break can cross (the marks', not the letters' leaders; a straight line from point to point,
+    // the rod lettered L, too)
+    svg.querySelectorAll("line[id], path[id]").forEach(function(l){
+      if (!l.closest("g.lbg") && !l.closest("#furniture") && (l.tagName === "line" || TWO.test(l.getAttribute("d")))) lines.push(l); });
+    // the areas: their pieces and the marks they are drawn from
+    (LIST[0].areas || []).forEach(function(a){
+      var find = function(id){ return player && player.find ? player.find(id) : document.getElementById(id); };
+      var pieces = [], el;
+      for (var j = 0; (el = find(j ? a[0] + "-" + j : a[0])); j++) pieces.push(el);
+      if (pieces.length) areas.push({id: a[0], pieces: pieces, els: a.slice(1).map(find), key: null});
+    });
+    // the break marks as built give way to the page's own (drawn at every value, the built one too)
+    svg.querySelectorAll("#furniture .brk, #furniture .brkline").forEach(function(e){ e.parentNode.removeChild(e); });
+    LIST.map(function(L){ return L.readings || []; }).reduce(function(a, b){ return a.concat(b); }, [])
+      .filter(function(id, i, all){ return all.indexOf(id) === i; }).forEach(function(id){
+      var t = document.getElementById(id);
+      if (t) readings.push(t.closest("g.lbg") || t);
+    });
     // the groups the step hides leave the document (a new letter scale restyles them all the same)
     if (player && player.lean) player.lean();
-    // a drag sends more input events than frames: the last value of each frame is drawn, once, just before it
-    var pending = false;
-    input.addEventListener("input", function(){
-      if (pending) return;
-      pending = true;
-      requestAnimationFrame(function(){ pending = false; redraw(Math.pow(10, +input.value), true); });
+    cur = {r0: 0, r1: 0, t: 0};
+    redraw(S.L.initial, false, false);
+    pairs = new Map();  // letters the placer set touching at the book's value (they stay so)
+    var seen = declutter() || [];
+    seen.forEach(function(a){ if (a.fo.hid) { a.fo.hid = false; a.fo.g.removeAttribute("visibility"); } });
+    for (var i = 0; i < seen.length; i++) for (var j = i + 1; j < seen.length; j++) {
+      var p = seen[i].b, q = seen[j].b;
+      if (p[0] < q[2] - 1 && p[2] > q[0] + 1 && p[1] < q[3] - 1 && p[3] > q[1] + 1) {
+        (pairs.get(seen[i].fo) || pairs.set(seen[i].fo, new Set()).get(seen[i].fo)).add(seen[j].fo);
+        (pairs.get(seen[j].fo) || pairs.set(seen[j].fo, new Set()).get(seen[j].fo)).add(seen[i].fo);
+      }
+    }
+    ws.filter(function(W, i){ return ws.indexOf(pieceOf(W.L.given, W.L.initial)) === i; }).forEach(function(W){
+      // one slider a given (its pieces share it): a drag sends more input events than frames, the last value of
+      // each frame is drawn, once, just before it, by the piece of the domain it lies in
+      var pending = false, input = W.input, given = W.L.given;
+      var go = function(dragging, glide){ var v = Math.pow(10, +input.value); activate(pieceOf(given, v)); redraw(v, dragging, glide); };
+      input.addEventListener("input", function(){
+        if (pending) return;
+        pending = true;
+        requestAnimationFrame(function(){ pending = false; go(true); });
+      });
+      // let go (or a key's step): the letters at their exact scale, the camera gliding to the step's view
+      input.addEventListener("change", function(){ requestAnimationFrame(function(){ go(false, true); }); });
     });
-    // let go (or a key's step): the letters at their exact scale, the camera gliding to the step's view
-    input.addEventListener("change", function(){
-      requestAnimationFrame(function(){ redraw(Math.pow(10, +input.value), false, true); });
-    });
-    // a new step: its marks and its view at the shown value (the player has just set the built view)
+    // a new step: its view and ring at the shown value (the player has just set the built view); the letters
+    // it shows make room for one another
     var seenStep = svg.getAttribute("data-step");
     if (player) new MutationObserver(function(){
       var now = svg.getAttribute("data-step");
-      if (now !== seenStep) { seenStep = now; if (cur) { catchUp(+now); view(); } }
-      // a view the drag did not draw (the camera gliding to a step, the magnifier): the marks the drag left
-      else if (stale && svg.getAttribute("viewBox") !== ownBox) catchUp(+now);
-    }).observe(svg, {attributes: true, attributeFilter: ["data-step", "viewBox"]});
-    window.addEventListener("resize", function(){ if (stale) catchUp(+(svg.getAttribute("data-step") || Infinity)); });
-    showChecks(Math.log10(L.initial));
+      if (now !== seenStep) { seenStep = now; view(); }
+      declutter();
+    }).observe(svg, {attributes: true, attributeFilter: ["data-step", "viewBox", "class"]});
+    showChecks(S, Math.log10(S.L.initial));
   });
-  api.set = function(value, dragging){  // dragging: drawn as a drag draws it (the player's DRAG_LARGER)
+  api.set = function(value, dragging, name){  // dragging: drawn as a drag draws it (the player's DRAG_LARGER)
+    var L = name ? LIST.filter(function(l){ return l.given === name; })[0] : LIST[0];
     value = Math.min(L.high, Math.max(L.low, value));
-    input.value = Math.log10(value);
+    var W = pieceOf(L.given, value);
+    activate(W);
+    W.input.value = Math.log10(value);
     redraw(value, !!dragging);
     return api.lastMs;
   };

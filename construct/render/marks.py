@@ -14,12 +14,12 @@ import dataclasses
 import math
 from dataclasses import dataclass
 from enum import Enum
-from typing import Any, Callable, Iterable
+from typing import Any, Callable, Iterable, Sequence
 
 from ..kernel.geometry import Circle, Line, Point
 from ..kernel.protocol import Replay, Step
 
-__all__ = ["could_show", "TWO_PI", "MarkKind", "Mark", "with_geom", "letter_lines", "fanned_lines", "letter_point", "middle",
+__all__ = ["could_show", "TWO_PI", "GAP_TIE", "widest_gap", "MarkKind", "Mark", "with_geom", "letter_lines", "fanned_lines", "letter_point", "middle",
            "lies_on", "curve_points", "segment_extent", "circle_extent", "extreme_points"]
 
 
@@ -127,7 +127,7 @@ def letter_lines(marks: list[Mark], lettered: dict, breaks: tuple) -> list[Mark]
         if got is None:
             continue
         label, fan = got
-        at = letter_point(m.geom, fan, [(x0, w) for x0, w, _ in breaks])
+        at = letter_point(m.geom, fan, breaks)
         out.append(dataclasses.replace(m, id=f"{m.id}-at", kind=MarkKind.POINT, geom=(at[0], at[1]),
                                        name=f"{m.name}.at", role=m.role if fan else "auxiliary", label=label,
                                        look="hidden", straight=False))
@@ -151,22 +151,27 @@ def fanned_lines(steps: Iterable[Step]) -> dict[str, bool]:
     return {name: len(lines) >= 3 for lines in fans.values() for name in lines}
 
 
-def letter_point(pts: tuple, fan: bool, breaks: Iterable[tuple[float, float]] = ()) -> tuple[float, float]:
+def letter_point(pts: tuple, fan: bool, breaks: Iterable[tuple] = ()) -> tuple[float, float]:
     """Where a lettered straight line's letter stands: at its middle, or (one of a fan) at its far end; a
-    line drawn across a broken axis (*breaks*: where the drawn break starts, its drawn width) at the middle of
-    its part right of the break.
+    line drawn across a broken axis (*breaks*: where the drawn break starts, its drawn width, and the axis if
+    it is not x: :class:`~construct.render.sheet.Break`) at the middle of its part beyond the break (right of
+    it, or above it).
 
     >>> letter_point(((0.0, 0.0), (4.0, 0.0)), False), letter_point(((0.0, 0.0), (4.0, 2.0)), True)
     ((2.0, 0.0), (4.0, 2.0))
     >>> letter_point(((0.0, 0.0), (4.0, 0.0)), False, [(1.0, 1.0)])
     (3.0, 0.0)
+    >>> letter_point(((0.0, 0.0), (0.0, 4.0)), False, [(1.0, 1.0, 5.0, 1)])
+    (0.0, 3.0)
     """
     at = pts[-1] if fan else middle(pts)
-    for x0, w in breaks:
-        (ax, ay), (bx, by) = pts[0], pts[-1]
-        if len(pts) == 2 and min(ax, bx) < x0 + w and max(ax, bx) > x0 + w and not fan:
-            x = (x0 + w + max(ax, bx)) / 2.0  # the middle of the part right of the break
-            at = (x, ay + (by - ay) * (x - ax) / (bx - ax))
+    for b in breaks:
+        x0, w, axis = b[0], b[1], (b[3] if len(b) > 3 else 0)
+        a, c = pts[0], pts[-1]
+        if len(pts) == 2 and min(a[axis], c[axis]) < x0 + w and max(a[axis], c[axis]) > x0 + w and not fan:
+            t = (x0 + w + max(a[axis], c[axis])) / 2.0  # the middle of the part beyond the break
+            s = a[1 - axis] + (c[1 - axis] - a[1 - axis]) * (t - a[axis]) / (c[axis] - a[axis])
+            at = (t, s) if axis == 0 else (s, t)
     return at
 
 
@@ -210,6 +215,27 @@ def curve_points(objects: Replay, shown: set[str] | None = None) -> list[tuple[f
     return pts
 
 
+#: Two gaps between the points marked on a circle are one gap's width apart by less than this (rad): a tie.
+GAP_TIE = 1e-9
+
+
+def widest_gap(angles: Sequence[float], gaps: Sequence[float]) -> int:
+    """Which gap between the points marked on a circle (at *angles*, sorted) the drawn arc leaves out: the widest,
+    and of two as wide (a circle cut by a line through its centre: a half circle either way) the one about the
+    circle's rightmost point (angle 0; of two as near, the one about its top), never the other by a rounding --
+    the arc stays on one side as a given moves.
+
+    >>> widest_gap([math.pi / 2, 3 * math.pi / 2], [math.pi, math.pi]), widest_gap([0.0, 1.0], [1.0, TWO_PI - 1.0])
+    (1, 1)
+    """
+    widest = max(gaps)
+    tied = [j for j, g in enumerate(gaps) if g >= widest - GAP_TIE]
+    if len(tied) == 1:
+        return tied[0]
+    mid = lambda j: angles[j] + gaps[j] / 2  # noqa: E731
+    return max(tied, key=lambda j: (round(math.cos(mid(j)), 9), round(math.sin(mid(j)), 9), -j))
+
+
 def segment_extent(line: Line, pts: list[Point], margin: float) -> tuple[float, float, float, float]:
     (px, py), _ = line
     ux, uy = line.direction()
@@ -246,7 +272,7 @@ def circle_extent(circle: Circle, pts: list[Point], margin: float, role: str,
     # The drawn arc is the complement of the largest empty gap between marked points.
     gaps = [(angles[(i + 1) % len(angles)] - a) % TWO_PI or (TWO_PI if len(angles) == 1 else 0.0)
             for i, a in enumerate(angles)]
-    i = max(range(len(gaps)), key=gaps.__getitem__)
+    i = widest_gap(angles, gaps)
     start = angles[(i + 1) % len(angles)]
     sweep = TWO_PI - gaps[i]
     pad = min(margin / r, 0.6)

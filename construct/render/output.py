@@ -265,13 +265,16 @@ def check_formats(formats: Any) -> tuple[str, ...]:
 def write_outputs(stage: Path, construction: Described | None, figure: Drawn, st: Style, *, frames: str = "none",
                   fig_number: int | str | None = None, protocol: bool = True,
                   outputs: tuple[str, ...] = OUTPUTS, live: Any = None, drawing: Drawing | None = None,
-                  formats: tuple[str, ...] = ("svg",), sheet: Any = None) -> dict[str, Any]:
+                  formats: tuple[str, ...] = ("svg",), sheet: Any = None,
+                  switch: tuple | None = None) -> dict[str, Any]:
     """Write final.svg, steps/ (when asked), protocol.json and *outputs*: animated.svg, player.html, storyboard.svg;
     and the plate in the print formats of *formats* (final.pdf; final.tikz and final.tex) laid out on *sheet*.
     Without "svg" in *formats* only the print files and protocol.json are written.
 
     *live*: the data of a live player (:func:`construct.live.wire.live_data`), whose slider the
-    player then carries (:func:`construct.render.live.with_live`).  *drawing*: the figure's drawing in *st*,
+    player then carries (:func:`construct.render.live.with_live`); *switch*: (symbol, options, why) of a given
+    that changes the steps, offered as a switch between the player pages of the book's values
+    (:func:`construct.render.live.with_switch`).  *drawing*: the figure's drawing in *st*,
     if the caller has laid it out already (a live player's sweep carries its camera views).
 
     One :class:`Drawing` lays the construction out once; the layered final
@@ -329,6 +332,10 @@ def write_outputs(stage: Path, construction: Described | None, figure: Drawn, st
             from .live import with_live
 
             page = with_live(page, live)
+        if switch is not None:
+            from .live import with_switch
+
+            page = with_switch(page, *switch)
         write_text(stage / "player.html", page)
     if "storyboard" in outputs:
         write_text(stage / "storyboard.svg", storyboard_svg(drawing))  # type: ignore[arg-type]

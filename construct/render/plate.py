@@ -322,10 +322,12 @@ PIECES = _Pieces()
 
 
 def crossing_lines(marks: Sequence[Any], furniture: Sequence[Any]) -> list[tuple[float, float, float, float]]:
-    """The straight lines a broken axis may cross (drawing units): the segments among *marks* and the plate's
-    strokes (:func:`break_elements` breaks those that do)."""
-    return [m.geom for m in marks if m.kind == "segment"] + [(*it.a, *it.b) for it in furniture
-                                                             if isinstance(it, Stroke)]
+    """The straight lines a broken axis may cross (drawing units): the segments among *marks*, the straight lines
+    drawn from point to point (a rod lettered L) and the plate's strokes (:func:`break_elements` breaks those
+    that do)."""
+    return ([m.geom for m in marks if m.kind == "segment"]
+            + [(*m.geom[0], *m.geom[1]) for m in marks if m.kind == "curve" and m.straight and len(m.geom) == 2]
+            + [(*it.a, *it.b) for it in furniture if isinstance(it, Stroke)])
 
 
 def furniture_pieces(items: Sequence[Any], px: Callable[[float, float], XY], scale: float, *,
@@ -336,19 +338,24 @@ def furniture_pieces(items: Sequence[Any], px: Callable[[float, float], XY], sca
     ['text', 'dot']
     """
     return furniture_elements(items, px, scale, PIECES, size=size)
-def break_elements(breaks: Sequence[tuple[float, float, float]], lines: Sequence[tuple[float, float, float, float]],
+def break_elements(breaks: Sequence[tuple], lines: Sequence[tuple[float, float, float, float]],
                    px: Callable[[float, float], XY], f: Any, *, size: float = 12.0) -> list[Any]:
-    """The marks of a broken axis (:attr:`construct.render.scene.Scene.breaks`: x where a break starts, its
-    drawn width, drawing units) on every one of *lines* (segments, drawing units) crossing it: a gap in paper
-    colour (class ``brk``) and two slanted strokes (``brkline``), sized by the letters' *size*."""
+    """The marks of a broken axis (:attr:`construct.render.scene.Scene.breaks`: where a break starts, its
+    drawn width, drawing units, and its axis if not x) on every one of *lines* (segments, drawing units)
+    crossing it: a gap in paper colour (class ``brk``) and two slanted strokes (``brkline``), sized by the
+    letters' *size*.  The page of a live given draws the same marks as the given moves (its script's
+    ``breakMarks``, held to these by tests/test_render_live_browser.py)."""
     out: list[Any] = []
-    for x0, w, _left_out in breaks:
-        for ax, ay, bx, by in lines:
-            if min(ax, bx) < x0 + 0.3 * w and max(ax, bx) > x0 + 0.7 * w and abs(bx - ax) > 1e-12:
+    for b in breaks:
+        x0, w, axis = b[0], b[1], (b[3] if len(b) > 3 else 0)
+        for line in lines:
+            a0, a1, b0, b1 = (line[axis], line[1 - axis], line[2 + axis], line[3 - axis])
+            if min(a0, b0) < x0 + 0.3 * w and max(a0, b0) > x0 + 0.7 * w and abs(b0 - a0) > 1e-12:
                 # the classic break: a short gap along the line, a slanted tick at each side
-                xm = x0 + w / 2
-                ym = ay + (by - ay) * (xm - ax) / (bx - ax)
-                cx, cy = px(xm, ym)
+                t = x0 + w / 2
+                s = a1 + (b1 - a1) * (t - a0) / (b0 - a0)
+                cx, cy = px(t, s) if axis == 0 else px(s, t)
+                ax, ay, bx, by = line
                 ex, ey = px(bx, by)
                 sx, sy = px(ax, ay)
                 n = math.hypot(ex - sx, ey - sy) or 1.0

@@ -539,6 +539,7 @@ li a.later{color:#bbb}
       && t[1] + t[3] <= v[1] + v[3] + my && Math.max(t[2] / v[2], t[3] / v[3]) >= 2 / 3;
   }
   window.constructPlayer = {data: data, full: full, redraw: function () { show(k); },
+    groups: function () { return groups.slice(); },  // the step groups, in the document or out of it (lean)
     move: function () { zoomLevel(target()); move(target()); },  // (the level a drag kept, made exact)
     find: find, lean: function () {
       if (lean) { return; }

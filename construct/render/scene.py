@@ -32,7 +32,7 @@ from ..kernel.letters import FIGURE_LETTER, primed
 from .captions import TITLE_LIMIT, Reader, displayed
 from .marks import (TWO_PI, Mark, MarkKind, circle_extent, curve_points, extreme_points, fanned_lines, letter_lines,
                     lies_on, segment_extent, with_geom)
-from .sheet import BREAK_KEEP, PLATE_BREAK_KEEP, broken_axis, lay_out, plate_names, warn_hidden_labels
+from .sheet import Break, broken, kept_span, lay_out, plate_names, warn_hidden_labels
 
 __all__ = ["Mark", "MarkKind", "Scene", "build_scene", "label_offset_direction", "on_curve_names", "extreme_points",
            "thin", "reading", "plate_names", "break_shift", "FIGURE_LETTER"]
@@ -53,7 +53,7 @@ class Scene:
     title: tuple[str, str]
     params: dict
     #: Broken axis: (x where the break starts, its drawn width, the length it leaves out), drawing units.
-    breaks: tuple[tuple[float, float, float], ...] = ()
+    breaks: tuple[Break, ...] = ()
     #: Plate furniture (:mod:`construct.render.plate`): dimensions, angle arcs, scale bars, signs.
     furniture: tuple = ()
     #: What the book plate shows (:func:`plate_names`): what a finished group collapses to.
@@ -595,60 +595,76 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
             if isinstance(obj, Circle) or (isinstance(obj, Line) and protocol.params.get("plate")):
                 have = on.setdefault(name, [])
                 have.extend(p for n, p in shown_pts if lies_on(obj, p, tol) and p not in have)
-    marks: list[Mark] = []
-    lettered: dict[str, tuple[str, bool]] = {}  # lettered straight lines: their letter, whether in a fan
     in_fan = fanned_lines(protocol.steps)
-    for s in protocol.steps:
-        labels = dict(s.labels)
-        for name in s.outputs:
-            obj = objects.get(name)
-            if obj is None or isinstance(obj, Length) or (shown is not None and name not in shown):
-                continue
-            mid = f"s{s.index:04d}-{_safe_id(name)}"
-            label = labels.get(name)
-            if label and "{∠" in label:
-                label = reading(label, objects)
-            if label:
-                label = primed(label)  # drawn as the books print it (6′); the protocol keeps its 6'
 
-            if "unlettered" in (looks or {}).get(name, "").split():
-                label = None  # the plate letters it otherwise (an abscissa, as the book does)
-            common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
-                          group=s.group, label=label, look=(looks or {}).get(name, ""))
-            if isinstance(obj, Point):
-                marks.append(Mark(mid, kind=MarkKind.POINT, geom=(obj[0], obj[1]), **common))
-            elif isinstance(obj, Line):
-                marks.append(Mark(mid, kind=MarkKind.SEGMENT, geom=segment_extent(obj, on.get(name, []), margin), **common))
-            elif isinstance(obj, Circle):
-                kind, geom = circle_extent(obj, on.get(name, []), margin, s.role, plate=shown is not None)
-                marks.append(Mark(mid, kind=kind, geom=geom, **common))
-            elif hasattr(obj, "rings"):  # an Area: one mark per piece, each hatched
-                # a look "signed": the pieces under the lower line hatched across those over it (+ and −)
-                signed = "signed" in common["look"].split()
-                for j, (sign, ring) in enumerate(obj.pieces):
-                    hatch = obj.hatch_deg
-                    if signed and sign < 0:
-                        hatch = (90.0 if hatch is None else hatch) - 45.0
-                    marks.append(Mark(mid if j == 0 else f"{mid}-{j}", kind=MarkKind.AREA,
-                                      geom=tuple((p[0], p[1]) for p in ring), hatch=hatch, **common))
-            elif hasattr(obj, "curve_points"):
-                # a polyline is drawn as it is measured (y_at, length): straight from point to point
-                straight = getattr(obj, "kind", "") == "polyline"
-                pts = tuple((p[0], p[1]) for p in obj.curve_points())
-                if straight and label:
-                    # lettered at a point of its own on it, placed once the sheet is laid out (below)
-                    marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=True, **{**common, "label": None}))
-                    lettered[mid] = (label, in_fan[name])
-                else:
-                    marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=straight, **common))
-    breaks: tuple[tuple[float, float, float], ...] = ()
+    def draw(margin: float) -> tuple[list[Mark], dict[str, tuple[str, bool]]]:
+        """The marks, each line and arc reaching *margin* past the points marked on it."""
+        marks: list[Mark] = []
+        lettered: dict[str, tuple[str, bool]] = {}  # lettered straight lines: their letter, whether in a fan
+        for s in protocol.steps:
+            labels = dict(s.labels)
+            for name in s.outputs:
+                obj = objects.get(name)
+                if obj is None or isinstance(obj, Length) or (shown is not None and name not in shown):
+                    continue
+                mid = f"s{s.index:04d}-{_safe_id(name)}"
+                label = labels.get(name)
+                if label and "{∠" in label:
+                    label = reading(label, objects)
+                if label:
+                    label = primed(label)  # drawn as the books print it (6′); the protocol keeps its 6'
+                if "unlettered" in (looks or {}).get(name, "").split():
+                    label = None  # the plate letters it otherwise (an abscissa, as the book does)
+                common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
+                              group=s.group, label=label, look=(looks or {}).get(name, ""))
+                if isinstance(obj, Point):
+                    marks.append(Mark(mid, kind=MarkKind.POINT, geom=(obj[0], obj[1]), **common))
+                elif isinstance(obj, Line):
+                    marks.append(Mark(mid, kind=MarkKind.SEGMENT, geom=segment_extent(obj, on.get(name, []), margin), **common))
+                elif isinstance(obj, Circle):
+                    kind, geom = circle_extent(obj, on.get(name, []), margin, s.role, plate=shown is not None)
+                    marks.append(Mark(mid, kind=kind, geom=geom, **common))
+                elif hasattr(obj, "rings"):  # an Area: one mark per piece, each hatched
+                    # a look "signed": the pieces under the lower line hatched across those over it (+ and −)
+                    signed = "signed" in common["look"].split()
+                    for j, (sign, ring) in enumerate(obj.pieces):
+                        hatch = obj.hatch_deg
+                        if signed and sign < 0:
+                            hatch = (90.0 if hatch is None else hatch) - 45.0
+                        marks.append(Mark(mid if j == 0 else f"{mid}-{j}", kind=MarkKind.AREA,
+                                          geom=tuple((p[0], p[1]) for p in ring), hatch=hatch, **common))
+                elif hasattr(obj, "curve_points"):
+                    # a polyline is drawn as it is measured (y_at, length): straight from point to point
+                    straight = getattr(obj, "kind", "") == "polyline"
+                    pts = tuple((p[0], p[1]) for p in obj.curve_points())
+                    if straight and label:
+                        # lettered at a point of its own on it, placed once the sheet is laid out (below)
+                        marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=True, **{**common, "label": None}))
+                        lettered[mid] = (label, in_fan[name])
+                    else:
+                        marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=straight, **common))
+        return marks, lettered
+
+    marks, lettered = draw(margin)
+    breaks: tuple[Break, ...] = ()
     if panels:
         marks = lay_out(marks, panels, margin, 1e-9 * max(span, 1.0))
         xs = [m.geom[0] for m in marks if m.kind is MarkKind.POINT] or xs
         ys = [m.geom[1] for m in marks if m.kind is MarkKind.POINT] or ys
     elif break_axis and (shown is None or furniture):
         # a plate keeps more of the broken stretch: the rod drawn across it stays a shallow line
-        marks, furniture, breaks = broken_axis(marks, tuple(furniture), BREAK_KEEP if shown is None else PLATE_BREAK_KEEP)
+        cut = broken(marks, tuple(furniture), shown is None)
+        if shown is None and cut[2]:
+            # a broken figure is drawn at the size it keeps: its lines reach past their points by a margin of
+            # what is left of it (its points and curves, broken alone), not of the length broken out (at
+            # L/r = 50 that would be 1.8 r)
+            kept = 0.035 * kept_span(marks)
+            if kept < margin:
+                again, letters = draw(kept)
+                smaller = broken(again, tuple(furniture), True)
+                if smaller[2]:
+                    margin, lettered, cut = kept, letters, smaller
+        marks, furniture, breaks = cut
         if breaks:
             xs = [x for m in marks if m.kind is MarkKind.POINT for x in (m.geom[0],)] or xs
             ys = [y for m in marks if m.kind is MarkKind.POINT for y in (m.geom[1],)] or ys
@@ -690,7 +706,7 @@ def _end_state(figure: Any, marks: list[Mark], breaks: tuple, furniture: tuple,
     from .plate import shifted
 
     plate = build_scene(figure, plate=True, break_axis=False, looks=looks, _warn=False)
-    sx = break_shift(breaks)
+    sx, sy = break_shift(breaks), break_shift(breaks, axis=1)
     span = max(plate.bbox[2] - plate.bbox[0], plate.bbox[3] - plate.bbox[1], 1e-9)
     tol = 1e-9 * span
     teaching: dict[str, list[Mark]] = {}
@@ -699,7 +715,7 @@ def _end_state(figure: Any, marks: list[Mark], breaks: tuple, furniture: tuple,
     seen: dict[str, int] = {}
     end_marks, replaced, looks_at = [], set(), {}
     for pm in plate.marks:
-        pm = with_geom(pm, _shift_geom(pm, sx))
+        pm = with_geom(pm, _shift_geom(pm, sx, sy))
         i = seen.get(pm.name, 0)
         seen[pm.name] = i + 1
         same = teaching.get(pm.name, [])
@@ -715,35 +731,40 @@ def _end_state(figure: Any, marks: list[Mark], breaks: tuple, furniture: tuple,
             "end_furniture": tuple(shifted(it, sx) for it in furniture), "end_looks": looks_at}
 
 
-def break_shift(breaks: tuple) -> Callable[[float], float]:
-    """The map of x that a broken axis (:attr:`Scene.breaks`) applies to what lies left of its gap.
+def break_shift(breaks: tuple, axis: int = 0) -> Callable[[float], float]:
+    """The map of x (of y for *axis* 1) that a broken axis (:attr:`Scene.breaks`) applies to what lies before
+    its gap.
 
     >>> sx = break_shift(((10.0, 1.0, 6.0),))  # drawn from 10 to 11, standing for 6: [5, 11] became [10, 11]
     >>> sx(2.0), sx(12.0)
     (7.0, 12.0)
+    >>> break_shift(((10.0, 1.0, 6.0, 1),))(2.0)  # a break across the figure moves y, not x
+    2.0
     """
-    moves = [(x0 + w - left, left - w) for x0, w, left in breaks]
+    moves = [(b[0] + b[1] - b[2], b[2] - b[1]) for b in breaks if (b[3] if len(b) > 3 else 0) == axis]
 
-    def sx(x: float) -> float:
-        for lo, shift in moves:
-            if x <= lo:
-                x += shift
-        return x
+    def shift(v: float) -> float:
+        for lo, by in moves:
+            if v <= lo:
+                v += by
+        return v
 
-    return sx
+    return shift
 
 
-def _shift_geom(m: Mark, sx: Callable[[float], float]) -> tuple:
-    """A mark's geometry on a broken sheet (as :func:`broken_axis` moves it: a circle whole, or not at all)."""
+def _shift_geom(m: Mark, sx: Callable[[float], float], sy: Callable[[float], float]) -> tuple:
+    """A mark's geometry on a broken sheet (as :func:`~construct.render.sheet.broken_axis` moves it: a circle
+    whole, or not at all)."""
     g = m.geom
     if m.kind is MarkKind.POINT:
-        return (sx(g[0]), g[1])
+        return (sx(g[0]), sy(g[1]))
     if m.kind is MarkKind.SEGMENT:
-        return (sx(g[0]), g[1], sx(g[2]), g[3])
+        return (sx(g[0]), sy(g[1]), sx(g[2]), sy(g[3]))
     if m.kind.round:
-        right = max(p[0] for p in extreme_points(m))
-        return (g[0] + (sx(right) - right),) + tuple(g[1:])
-    return tuple((sx(x), y) for x, y in g)
+        far = extreme_points(m)
+        right, low = max(p[0] for p in far), max(p[1] for p in far)
+        return (g[0] + (sx(right) - right), g[1] + (sy(low) - low)) + tuple(g[2:])
+    return tuple((sx(x), sy(y)) for x, y in g)
 
 
 def _same_geom(a: tuple, b: tuple, tol: float) -> bool:

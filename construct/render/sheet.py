@@ -11,18 +11,25 @@ import os
 import re
 import sys
 import warnings
+from typing import NamedTuple
 
 from ..kernel.errors import HiddenLabelWarning
 from ..kernel.geometry import Circle, Line, Point
 from ..kernel.protocol import Protocol, Replay
 from .marks import Mark, MarkKind, extreme_points, lies_on, with_geom
 
-__all__ = ["BREAK_FRACTION", "BREAK_KEEP", "PLATE_BREAK_KEEP", "broken_axis", "warn_hidden_labels", "lay_out",
-           "plate_names"]
+__all__ = ["BREAK_FRACTION", "BREAK_FRACTION_Y", "BREAK_KEEP", "PLATE_BREAK_KEEP", "Break", "broken_axis", "broken",
+           "kept_span", "span_of", "warn_hidden_labels", "lay_out", "plate_names"]
 
 
 #: A gap wider than this fraction of the figure, with nothing drawn in it, is broken out of the axis.
 BREAK_FRACTION = 0.2
+
+
+#: The same across the figure (a far point below it: the proportional angle's vertex S a rod's length under the
+#: crank, Fig. 27): a tall figure is broken only where the gap is wider than this, so that the books' own
+#: figures (at their rod ratios, S up to 6 r below) are drawn whole, as the books draw them.
+BREAK_FRACTION_Y = 0.3
 
 
 #: Width the broken-out stretch keeps, as a fraction of what remains of the figure.
@@ -33,31 +40,43 @@ BREAK_KEEP = 0.07
 PLATE_BREAK_KEEP = 0.55
 
 
-def broken_axis(marks: list[Mark], furniture: tuple = (),
-           keep_fraction: float = 0.07) -> tuple[list[Mark], tuple, tuple[tuple[float, float, float], ...]]:
+class Break(NamedTuple):
+    """A stretch broken out of the figure: where the drawn break starts (x, or y for ``axis`` 1; drawing units),
+    its drawn width, and the length it leaves out."""
+
+    start: float
+    width: float
+    left_out: float
+    axis: int = 0
+
+
+def broken_axis(marks: list[Mark], furniture: tuple = (), keep_fraction: float = 0.07, axis: int = 0,
+                fraction: float = BREAK_FRACTION) -> tuple[list[Mark], tuple, tuple[Break, ...]]:
     """Break the widest empty stretch out of the figure, as a draftsman breaks a long axis.
 
     The crossheads lie a rod length (5 r) to the left of the crank circle;
     drawn to scale, the circle sits in a corner of an empty sheet.  Marks
     wholly left of the empty stretch move right by what it loses; lines
     that cross it (the stroke line) keep their right end and move their
-    left one.  A plate's furniture (the rod drawn to its crosshead) is
-    broken the same way.  Returns the marks, the furniture and ((x where the
-    drawn break starts, its drawn width, the length it stands for),) or ()
-    when there is no such gap.
+    left one (a line's end drawn a margin past its last point moves with the
+    side it is nearer).  A plate's furniture (the rod drawn to its crosshead)
+    is broken the same way.  *axis* 1 breaks across the figure instead: marks
+    wholly below the stretch move up (a vertex a rod's length below the
+    crank).  Returns the marks, the furniture and (:class:`Break`,) or ()
+    when there is no gap wider than *fraction* of the figure.
     """
     from .plate import anchors, shifted
     ivals = []
-    right: dict[int, float] = {}  # a circle's or arc's right end, by its place in *marks* (asked again below)
+    far: dict[int, float] = {}  # a circle's or arc's far end, by its place in *marks* (asked again below)
     for i, m in enumerate(marks):
         if m.kind is MarkKind.SEGMENT or (m.kind is MarkKind.CURVE and m.straight and len(m.geom) == 2):
             continue  # the stroke line spans everything; a rod drawn to its crosshead crosses the break
-        xs = [p[0] for p in extreme_points(m)]
-        if xs:
-            ivals.append((min(xs), max(xs)))
+        cs = [p[axis] for p in extreme_points(m)]
+        if cs:
+            ivals.append((min(cs), max(cs)))
             if m.kind.round:
-                right[i] = ivals[-1][1]
-    ivals.extend((x, x) for x, _ in anchors(furniture))
+                far[i] = ivals[-1][1]
+    ivals.extend((p[axis], p[axis]) for p in anchors(furniture))
     if len(ivals) < 2:
         return marks, furniture, ()
     ivals.sort()
@@ -67,7 +86,7 @@ def broken_axis(marks: list[Mark], furniture: tuple = (),
         if a > reach and (best is None or a - reach > best[1] - best[0]):
             best = (reach, a)
         reach = max(reach, b)
-    if best is None or best[1] - best[0] <= BREAK_FRACTION * total:
+    if best is None or best[1] - best[0] <= fraction * total:
         return marks, furniture, ()
     lo, hi = best
     keep = min(keep_fraction * (total - (hi - lo)), 0.8 * (hi - lo))
@@ -76,21 +95,52 @@ def broken_axis(marks: list[Mark], furniture: tuple = (),
     def sx(x: float) -> float:
         return x + shift if x <= lo else x
 
+    def end(x: float) -> float:  # a line's end, drawn a margin past its last point: with the side it is nearer
+        return x + shift if x <= (lo + hi) / 2 else x
+
     out = []
     for i, m in enumerate(marks):
         g = m.geom
         if m.kind is MarkKind.POINT:
-            g = (sx(g[0]), g[1])
+            g = (sx(g[0]), g[1]) if axis == 0 else (g[0], sx(g[1]))
         elif m.kind is MarkKind.SEGMENT:
-            g = (sx(g[0]), g[1], sx(g[2]), g[3])
+            g = (end(g[0]), g[1], end(g[2]), g[3]) if axis == 0 else (g[0], end(g[1]), g[2], end(g[3]))
         elif m.kind.round:  # moved whole, or not at all: a circle is not stretched
-            if right[i] <= lo:
-                g = (g[0] + shift,) + tuple(g[1:])
+            if far[i] <= lo:
+                g = (g[0] + shift,) + tuple(g[1:]) if axis == 0 else (g[0], g[1] + shift) + tuple(g[2:])
         else:  # a curve or an area: point by point
-            g = tuple((sx(x), y) for x, y in g)
+            g = tuple((sx(x), y) for x, y in g) if axis == 0 else tuple((x, sx(y)) for x, y in g)
         out.append(m if g is m.geom else with_geom(m, g))
-    # the left stretch now ends at hi - keep: the kept piece of the broken axis is [hi - keep, hi]
-    return out, tuple(shifted(it, sx) for it in furniture), ((hi - keep, keep, hi - lo),)
+    # the near stretch now ends at hi - keep: the kept piece of the broken axis is [hi - keep, hi]
+    moved = tuple(shifted(it, sx) for it in furniture) if axis == 0 else furniture
+    return out, moved, (Break(hi - keep, keep, hi - lo, axis),)
+
+
+def broken(marks: list[Mark], furniture: tuple, whole: bool) -> tuple[list[Mark], tuple, tuple[Break, ...]]:
+    """The figure broken along x (:func:`broken_axis`) and, unless a plate (*whole* false: a plate keeps its
+    sheet, the books draw S whole), across it."""
+    marks, furniture, breaks = broken_axis(marks, furniture, BREAK_KEEP if whole else PLATE_BREAK_KEEP)
+    if whole and not furniture:
+        marks, _, across = broken_axis(marks, (), BREAK_KEEP, axis=1, fraction=BREAK_FRACTION_Y)
+        breaks += across
+    return marks, furniture, breaks
+
+
+def kept_span(marks: list[Mark]) -> float:
+    """What the figure's points and curves span once broken alone (:func:`broken`; as they are, unbroken): a
+    broken figure's margin is a share of it."""
+    drawn = [m for m in marks if m.kind in (MarkKind.POINT, MarkKind.CURVE, MarkKind.AREA)]
+    return span_of(broken(drawn, (), True)[0])
+
+
+def span_of(marks: list[Mark]) -> float:
+    """The larger side of the box of the marks' points and curves (what the margin is a share of)."""
+    pts = [m.geom for m in marks if m.kind is MarkKind.POINT]
+    pts += [p for m in marks if m.kind in (MarkKind.CURVE, MarkKind.AREA) for p in m.geom]
+    if not pts:
+        return 1e-9
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    return max(max(xs) - min(xs), max(ys) - min(ys), 1e-9)
 
 
 def warn_hidden_labels(protocol: Protocol, objects: Replay, shown: set[str]) -> list[tuple[str, str]]:

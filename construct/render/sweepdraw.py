@@ -26,28 +26,50 @@ from typing import Any
 
 import numpy as np
 
+from ..kernel.curves import BezierCurve, Polyline
 from ..kernel.geometry import Circle, Line, Point, take
-from .marks import TWO_PI, MarkKind, fanned_lines, letter_point
+from .marks import GAP_TIE, TWO_PI, MarkKind, fanned_lines, letter_point
 from .scene import Scene, on_curve_names
-from .sheet import BREAK_FRACTION, BREAK_KEEP
+from .sheet import BREAK_FRACTION, BREAK_FRACTION_Y, BREAK_KEEP
 from .svg import point_radius
 from .styles import Style
 
 __all__ = ["SweepDrawing", "sweep_drawable"]
 
 
-def sweep_drawable(scene: Scene) -> bool:
-    """Can :class:`SweepDrawing` draw *scene*'s figure over a sweep (points, lines, circles, arcs, curves on an
-    axis that may be broken; no areas, no plate furniture)?"""
-    return not scene.furniture and all(m.kind is not MarkKind.AREA for m in scene.marks)
+def sweep_drawable(scene: Scene, style: Style | None = None) -> bool:
+    """Can :class:`SweepDrawing` draw *scene*'s figure over a sweep (points, lines, circles, arcs, curves and
+    areas on axes that may be broken; no plate furniture, no hatching: a style that hatches draws its hatching
+    value by value, as many lines as each area's size holds)?"""
+    hatched = style is None or style.hatch
+    return not scene.furniture and not (hatched and any(m.kind is MarkKind.AREA for m in scene.marks))
 
 
-_ATAN2 = np.frompyfunc(math.atan2, 2, 1)
-
-
-def _atan2(y: np.ndarray, x: np.ndarray) -> np.ndarray:
-    """math.atan2 element by element (the drawing's, to the last bit: see SweepDrawing._circle)."""
-    return _ATAN2(y, x).astype(float)
+def _curve_rows(o: Any, n: int, vec: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A curve's drawn points (its ``curve_points``) at every value of a sweep: x and y (points x values), and
+    how many points each value has (the rows past that are nan).  A French curve or a polyline whose points
+    are the sweep's arrays is sampled for all values at once (BezierCurve.sample, Polyline.curve_points);
+    another curve value by value."""
+    if isinstance(o, BezierCurve):
+        ctrl = np.stack([np.stack([np.stack([vec(p.x), vec(p.y)]) for p in seg]) for seg in o.segments()])
+        t = np.arange(17)[:, None] / 16
+        u = 1.0 - t
+        weights = np.hstack([u ** 3, 3.0 * u * u * t, 3.0 * u * t * t, t ** 3])
+        pts = np.einsum("tj,kjdn->ktdn", weights, ctrl)  # (segments, 17, 2, values)
+        pts[:, 0], pts[:, -1] = ctrl[:, 0], ctrl[:, 3]
+        flat = np.concatenate([pts[:, :-1].reshape(-1, 2, n), ctrl[-1:, 3]])
+        return flat[:, 0], flat[:, 1], np.full(n, flat.shape[0])
+    if isinstance(o, Polyline):
+        pts = o.points + ((o.points[0],) if o.closed else ())
+        X, Y = np.vstack([vec(p.x) for p in pts]), np.vstack([vec(p.y) for p in pts])
+        return X, Y, np.full(n, len(pts))
+    rows = [take(o, i).curve_points() for i in range(n)]
+    counts = np.array([len(r) for r in rows])
+    X, Y = np.full((counts.max(), n), np.nan), np.full((counts.max(), n), np.nan)
+    for i, r in enumerate(rows):
+        X[:len(r), i] = [p[0] for p in r]
+        Y[:len(r), i] = [p[1] for p in r]
+    return X, Y, counts
 
 
 def _r2(v: np.ndarray) -> np.ndarray:
@@ -76,7 +98,6 @@ class SweepDrawing:
 
     def __init__(self, template: Scene, protocol: Any, objects: Any, size: int, style: Style):
         self.n = n = size
-        self.ok = np.ones(n, dtype=bool)
         self.style = style
         def vec(v: Any) -> np.ndarray:  # a coordinate over the values (a sweep's array, or one number for all)
             return v if type(v) is np.ndarray and v.shape == (n,) else np.full(n, float(v))
@@ -89,21 +110,30 @@ class SweepDrawing:
         on = on_curve_names(protocol.steps, set(points))
         # the figure's extent before the marks are drawn: every point, every curve's points
         xs, ys = [np.vstack([p[0] for p in points.values()])], [np.vstack([p[1] for p in points.values()])]
-        curves: dict[str, Any] = {}  # a curve's drawn points: (xs, ys) arrays (points, values), or rows per value
+        curves: dict[str, list[tuple]] = {}
+        areas: dict[str, list[tuple]] = {}  # an area's pieces at each value, each a ring of points
         for name, o in objects.items():
             if isinstance(o, (Point, Line, Circle)):
                 continue
             first = take(o, 0)
-            if hasattr(first, "curve_points") and getattr(o, "sets", lambda: 0)() == n:
-                # a sweep's chain (its points hold arrays): every value's drawn points at once
-                cx, cy = curves[name] = _chain_points(o, n)
-                xs += [np.array([cx.min(0), cx.max(0)])]
-                ys += [np.array([cy.min(0), cy.max(0)])]
-                continue
             if hasattr(first, "rings"):  # an area's pieces count for the extent (marks.curve_points)
-                rows = [tuple((p[0], p[1]) for ring in take(o, i).rings() for p in ring) for i in range(n)]
+                if hasattr(o, "extent"):  # a sweep's areas: their boxes without their pieces
+                    areas[name] = x0, x1, y0, y1 = o.extent()
+                    xs += [np.vstack([x0, x1])]
+                    ys += [np.vstack([y0, y1])]
+                    continue
+                rings = [[p for ring in take(o, i).rings() for p in ring] for i in range(n)]
+                areas[name] = tuple(np.array([f(p[c] for p in r) for r in rings]) for c, f in
+                                    ((0, min), (0, max), (1, min), (1, max)))
+                rows = [tuple(r) for r in rings]
             elif hasattr(first, "curve_points"):
-                rows = curves[name] = [tuple((p[0], p[1]) for p in take(o, i).curve_points()) for i in range(n)]
+                curves[name] = _curve_rows(o, n, vec)
+                CX, CY, counts = curves[name]
+                if (counts > 0).all():
+                    with np.errstate(invalid="ignore"):
+                        xs += [np.vstack([np.nanmin(CX, 0), np.nanmax(CX, 0)])]
+                        ys += [np.vstack([np.nanmin(CY, 0), np.nanmax(CY, 0)])]
+                continue
             else:
                 continue
             if rows and all(rows):
@@ -114,39 +144,22 @@ class SweepDrawing:
         margin = 0.035 * span
         # each mark's geometry, its kind's rows
         self.marks = [m for m in template.marks if m.id not in self._at]
-        by: dict[MarkKind, list] = {k: [] for k in MarkKind}
-        curve_geoms: dict[str, tuple] = {}
-        for m in self.marks:
-            obj = objects.get(m.name)
-            marked = [points[p] for p in dict.fromkeys(on.get(m.name, []))]
-            if m.kind is MarkKind.POINT and m.name in points:
-                by[m.kind].append(points[m.name])
-            elif m.kind is MarkKind.SEGMENT and isinstance(obj, Line):
-                by[m.kind].append(self._segment(obj, marked, margin))
-            elif m.kind.round and isinstance(obj, Circle):
-                by[m.kind].append(self._circle(m, obj, marked, margin))
-            elif m.kind is MarkKind.CURVE and m.name in curves and isinstance(curves[m.name], tuple):
-                cx, cy = curves[m.name]
-                if cx.shape[0] == len(m.geom):
-                    curve_geoms[m.id] = tuple(zip(cx, cy))
-                else:  # the sweep's curve has another number of points than the template's: drawn value by value
-                    self.ok[:] = False
-                    curve_geoms[m.id] = tuple((np.full(n, np.nan), np.full(n, np.nan)) for _ in m.geom)
-            elif m.kind is MarkKind.CURVE and m.name in curves:
-                rows = curves[m.name]
-                count = len(m.geom)
-                self.ok &= np.array([len(r) == count for r in rows])
-                curve_geoms[m.id] = tuple((np.array([r[k][0] if len(r) == count else np.nan for r in rows]),
-                                           np.array([r[k][1] if len(r) == count else np.nan for r in rows]))
-                                          for k in range(count))
-            else:
-                raise ValueError(f"{m.id}: a {m.kind.value} the sweep does not draw")
-        self.rows = {k: [m for m in self.marks if m.kind is k and m.id not in curve_geoms] for k in MarkKind}
-        self.geoms = {k: tuple(np.vstack(c) for c in zip(*by[k])) if by[k] else () for k in MarkKind}
-        self.curves = curve_geoms
-        self.curve_marks = [m for m in self.marks if m.id in curve_geoms]
-        self._broken = None
-        self._break()
+        self._sources = (objects, points, on, curves, areas)
+        self._spans: dict[Any, tuple] = {}  # each line's and arc's marked span (the passes share them)
+        self._draw(margin)
+        if self._broken is not None:
+            # scene.build_scene: a broken figure is drawn again with the margin of what is left of it (its
+            # points and curves, broken alone), where it is broken so too
+            kept = 0.035 * self._kept_span()
+            smaller = self._broken & (kept < margin)
+            if smaller.any():
+                first = (self.geoms, self.curves, self._broken, self._breaks, self.ok)
+                self._draw(np.where(smaller, kept, margin))
+                # where the figure drawn so is not broken, it is drawn as before
+                keep = smaller & self._broken
+                margin = np.where(keep, kept, margin)
+                if not keep[smaller].all():
+                    self._choose(keep, first)
         self._letter_lines(template, protocol)
         ext = self._extremes()
         if self._broken is not None:  # the box of a broken figure: its points, where they now stand
@@ -169,6 +182,87 @@ class SweepDrawing:
             for i, m in enumerate(self._members(key)):
                 self.numbers[m.id] = nums[i]
 
+    def _kept_span(self) -> np.ndarray:
+        """sheet.kept_span over the sweep: what the points and curves span once broken alone."""
+        objects, points, on, curves, areas = self._sources
+        P = tuple(np.vstack(c) for c in zip(*[points[m.name] for m in self.marks
+                                               if m.kind is MarkKind.POINT and m.name in points]))
+        saved = (self.geoms, self.curves, self._broken, self._breaks)
+        self.geoms = {k: (P if k is MarkKind.POINT else ()) for k in MarkKind}
+        self.curves = {mid: tuple(pts) for mid, pts in self._unbroken_curves.items()}
+        self._broken, self._breaks = None, {}
+        self._break()
+        self._break(axis=1)
+        cx = [self.geoms[MarkKind.POINT][0]] + [np.vstack([c[0] for c in pts]) for pts in self.curves.values()]
+        cy = [self.geoms[MarkKind.POINT][1]] + [np.vstack([c[1] for c in pts]) for pts in self.curves.values()]
+        self.geoms, self.curves, self._broken, self._breaks = saved
+        KX, KY = np.vstack(cx), np.vstack(cy)
+        with np.errstate(invalid="ignore"):  # (a curve of another number of points: not ok there)
+            return np.maximum(np.maximum(np.nanmax(KX, 0) - np.nanmin(KX, 0), np.nanmax(KY, 0) - np.nanmin(KY, 0)),
+                              1e-9)
+
+    def _choose(self, which: np.ndarray, other: tuple) -> None:
+        """This drawing at the values *which* says, *other* (geoms, curves, broken, breaks, ok) elsewhere."""
+        geoms, curves, broken, breaks, ok = other
+        pick = lambda a, b: np.where(which, a, b)  # noqa: E731
+        self.geoms = {k: tuple(pick(a, b) for a, b in zip(self.geoms[k], geoms[k])) for k in MarkKind}
+        self.curves = {mid: tuple((pick(x, ox), pick(y, oy)) for (x, y), (ox, oy) in zip(pts, curves[mid]))
+                       for mid, pts in self.curves.items()}
+        self._broken = pick(self._broken, broken if broken is not None else False)
+        for axis in set(self._breaks) | set(breaks):
+            a = self._breaks.get(axis, (np.zeros(self.n, dtype=bool),) + (np.zeros(self.n),) * 3)
+            b = breaks.get(axis, (np.zeros(self.n, dtype=bool),) + (np.zeros(self.n),) * 3)
+            self._breaks[axis] = tuple(pick(x, y) for x, y in zip(a, b))
+        self.ok = pick(self.ok, ok)
+
+    def _draw(self, margin: np.ndarray) -> None:
+        """The marks' geometry with lines and arcs reaching *margin* past their marked points, broken."""
+        objects, points, on, curves, areas = self._sources
+        n, vec = self.n, self._vec
+        piece: dict[str, int] = {}  # the areas whose extent is drawn (on their first piece)
+        self.ok = np.ones(n, dtype=bool)
+        by: dict[MarkKind, list] = {k: [] for k in MarkKind}
+        curve_geoms: dict[str, tuple] = {}
+        for m in self.marks:
+            obj = objects.get(m.name)
+            marked = [points[p] for p in dict.fromkeys(on.get(m.name, []))]
+            if m.kind is MarkKind.POINT and m.name in points:
+                by[m.kind].append(points[m.name])
+            elif m.kind is MarkKind.SEGMENT and isinstance(obj, Line):
+                by[m.kind].append(self._segment(obj, marked, margin))
+            elif m.kind.round and isinstance(obj, Circle):
+                by[m.kind].append(self._circle(m, obj, marked, margin))
+            elif m.kind is MarkKind.AREA and m.name in areas:
+                # an area's pieces come and go and hold as many points as their curves' breakpoints: the page
+                # draws them from those curves (live.py areaPieces); here they count for the figure's extent, as
+                # the box of all its pieces (two corners, broken point by point as the pieces are), on its first
+                if m.name in piece:
+                    continue
+                piece[m.name] = 0
+                x0, x1, y0, y1 = areas[m.name]
+                curve_geoms[m.id] = ((vec(x0), vec(y0)), (vec(x1), vec(y1)))
+            elif m.kind is MarkKind.CURVE and m.name in curves:
+                CX, CY, counts = curves[m.name]
+                count = len(m.geom)
+                self.ok &= counts == count
+                if CX.shape[0] < count:  # (nowhere as many points as the built figure's: not drawn here)
+                    CX = np.vstack([CX, np.full((count - CX.shape[0], n), np.nan)])
+                    CY = np.vstack([CY, np.full((count - CY.shape[0], n), np.nan)])
+                ok = counts == count
+                curve_geoms[m.id] = tuple((np.where(ok, CX[k], np.nan), np.where(ok, CY[k], np.nan)) for k in range(count))
+            else:
+                raise ValueError(f"{m.id}: a {m.kind.value} the sweep does not draw")
+        self.rows = {k: [m for m in self.marks if m.kind is k and m.id not in curve_geoms] for k in MarkKind}
+        self.geoms = {k: tuple(np.vstack(c) for c in zip(*by[k])) if by[k] else () for k in MarkKind}
+        self.curves = curve_geoms
+        self._unbroken_curves = dict(curve_geoms)
+        self.curve_marks = [m for m in self.marks if m.id in curve_geoms]
+        self._broken = None
+        #: per axis: (broken at which values, where the drawn break starts, its drawn width, what it leaves out)
+        self._breaks: dict[int, tuple] = {}
+        self._break()
+        self._break(axis=1)
+
     def _members(self, key) -> list:
         """The marks of one row block: a kind's marks, or one curve (its id), or the lettered lines' points."""
         if isinstance(key, MarkKind):
@@ -178,16 +272,21 @@ class SweepDrawing:
     # -- the marks ---------------------------------------------------------------------------------------
     def _segment(self, line: Line, marked: list, margin: np.ndarray) -> tuple:
         """marks.segment_extent over the sweep: the line as far as its marked points, and a margin."""
-        vec = self._vec
-        px, py, qx, qy = vec(line.p.x), vec(line.p.y), vec(line.q.x), vec(line.q.y)
-        dx, dy = qx - px, qy - py
-        h = np.hypot(dx, dy)
-        ux, uy = dx / h, dy / h
-        ts = (np.vstack([(x - px) * ux + (y - py) * uy for x, y in marked]) if marked
-              else np.vstack([np.zeros(self.n), np.ones(self.n)]))
-        lo, hi = ts.min(0), ts.max(0)
-        # a line through one point only (a tangent at its point of contact) is drawn long enough to be seen
-        m = np.where(hi - lo <= 1e-9 * np.maximum(1.0, np.abs(ts[0])), 5.0 * margin, margin)
+        got = self._spans.get(id(line))
+        if got is None:  # (its marked points' span does not depend on the margin: made once, for both passes)
+            vec = self._vec
+            px, py, qx, qy = vec(line.p.x), vec(line.p.y), vec(line.q.x), vec(line.q.y)
+            dx, dy = qx - px, qy - py
+            h = np.hypot(dx, dy)
+            ux, uy = dx / h, dy / h
+            ts = (np.vstack([(x - px) * ux + (y - py) * uy for x, y in marked]) if marked
+                  else np.vstack([np.zeros(self.n), np.ones(self.n)]))
+            lo, hi = ts.min(0), ts.max(0)
+            # a line through one point only (a tangent at its point of contact) is drawn long enough to be seen
+            tangent = hi - lo <= 1e-9 * np.maximum(1.0, np.abs(ts[0]))
+            got = self._spans[id(line)] = (px, py, ux, uy, lo, hi, tangent)
+        px, py, ux, uy, lo, hi, tangent = got
+        m = np.where(tangent, 5.0 * margin, margin)
         t0, t1 = lo - m, hi + m
         return (px + t0 * ux, py + t0 * uy, px + t1 * ux, py + t1 * uy)
 
@@ -200,9 +299,24 @@ class SweepDrawing:
             if m.kind is not MarkKind.CIRCLE:
                 self.ok[:] = False
             return (cx, cy, r)
-        # math's atan2, not numpy's: two points marked half a turn apart (a diameter) leave two equal gaps, and
-        # the drawing takes the first of them as its floating point has it, to the last bit
-        a = np.sort(np.vstack([np.mod(_atan2(y - cy, x - cx), TWO_PI) for x, y in marked]), axis=0)
+        got = self._spans.get(m.id)
+        if got is None:  # (the arc over its marked points does not depend on the margin: made once)
+            got = self._spans[m.id] = self._arc_over(cx, cy, marked)
+        start, sweep, ok = got
+        self.ok &= ok
+        pad = np.minimum(margin / r, 0.6)
+        start, sweep = start - pad, sweep + 2.0 * pad
+        whole = sweep >= 0.92 * TWO_PI
+        self.ok &= whole if m.kind is MarkKind.CIRCLE else ~whole
+        return (cx, cy, r) if m.kind is MarkKind.CIRCLE else (cx, cy, r, start, sweep)
+
+    def _arc_over(self, cx: np.ndarray, cy: np.ndarray, marked: list) -> tuple:
+        """The arc over a circle's marked points, before its margin: (start, sweep, where it is sure)."""
+        ok = np.ones(self.n, dtype=bool)
+        # (two points marked half a turn apart, a diameter, leave two equal gaps: marks.widest_gap takes one by
+        # a rule, not by the last bit of an arctangent)
+        a = np.sort(np.mod(np.arctan2(np.vstack([y - cy for x, y in marked]), np.vstack([x - cx for x, y in marked])),
+                           TWO_PI), axis=0)
         k = a.shape[0]
         if k == 1:
             start, sweep = a[0], np.zeros(self.n)
@@ -211,18 +325,18 @@ class SweepDrawing:
             # gaps of nothing, and the gap after it is the gap after the one it stands for; angles a hair apart
             # (not one place, not two) are left to the drawing
             step = np.diff(a, axis=0)
-            self.ok &= ~((step > 0) & (step <= 1e-9)).any(0) & (a[0] + TWO_PI - a[-1] > 1e-9)
+            ok &= ~((step > 0) & (step <= 1e-9)).any(0) & (a[0] + TWO_PI - a[-1] > 1e-9)
             gaps = np.mod(np.vstack([a[1:], a[:1]]) - a, TWO_PI)
-            i = np.argmax(gaps, axis=0)
+            # marks.widest_gap: the widest, and of two as wide the one about angle 0
+            tied = gaps >= gaps.max(axis=0) - GAP_TIE
+            mid = a + gaps / 2
+            score = np.round(np.cos(mid), 9) + 1e-10 * np.round(np.sin(mid), 9) - 1e-12 * np.arange(k)[:, None]
+            i = np.argmax(np.where(tied, score, -np.inf), axis=0)
             cols = np.arange(self.n)
             one = a[-1] == a[0]  # every marked point at one place: the arc is that place (and its margin)
             start = np.where(one, a[0], a[(i + 1) % k, cols])
             sweep = np.where(one, 0.0, TWO_PI - gaps[i, cols])
-        pad = np.minimum(margin / r, 0.6)
-        start, sweep = start - pad, sweep + 2.0 * pad
-        whole = sweep >= 0.92 * TWO_PI
-        self.ok &= whole if m.kind is MarkKind.CIRCLE else ~whole
-        return (cx, cy, r) if m.kind is MarkKind.CIRCLE else (cx, cy, r, start, sweep)
+        return start, sweep, ok
 
     def _extremes(self) -> dict:
         """scene.extreme_points over the sweep, as boxes: {block: (x0, x1, y0, y1)}, each (marks x values)."""
@@ -248,10 +362,12 @@ class SweepDrawing:
         return out
 
     # -- the broken axis, the lettered lines ---------------------------------------------------------------
-    def _break(self) -> None:
-        """sheet.broken_axis over the sweep: the widest empty stretch broken out where it is wider than a fifth."""
+    def _break(self, axis: int = 0) -> None:
+        """sheet.broken_axis over the sweep: the widest empty stretch broken out where it is wider than a fifth
+        (*axis* 1: across the figure, where wider than BREAK_FRACTION_Y)."""
         ext = self._extremes()
-        spans = [(e[0], e[1]) for key, e in ext.items() if key is not MarkKind.SEGMENT
+        lo_at, hi_at = (0, 1) if axis == 0 else (2, 3)
+        spans = [(e[lo_at], e[hi_at]) for key, e in ext.items() if key is not MarkKind.SEGMENT
                  and not (key in self.curves and self._members(key)[0].straight and len(self.curves[key]) == 2)]
         if sum(s.shape[0] for s, _ in spans) < 2:
             return
@@ -266,26 +382,30 @@ class SweepDrawing:
         cols = np.arange(self.n)
         width = gaps[j, cols]
         lo, hi = reach[j, cols], S[j + 1, cols]
-        brk = (width > 0) & (width > BREAK_FRACTION * total)
+        brk = (width > 0) & (width > (BREAK_FRACTION if axis == 0 else BREAK_FRACTION_Y) * total)
         if not brk.any():
             return
         keep = np.minimum(BREAK_KEEP * (total - width), 0.8 * width)
         shift = np.where(brk, width - keep, 0.0)
         sx = lambda x: np.where(brk & (x <= lo), x + shift, x)  # noqa: E731
+        end = lambda x: np.where(brk & (x <= (lo + hi) / 2), x + shift, x)  # noqa: E731  (a line's end)
         g = self.geoms
         if g[MarkKind.POINT]:
-            g[MarkKind.POINT] = (sx(g[MarkKind.POINT][0]), g[MarkKind.POINT][1])
+            p = g[MarkKind.POINT]
+            g[MarkKind.POINT] = (sx(p[0]), p[1]) if axis == 0 else (p[0], sx(p[1]))
         if g[MarkKind.SEGMENT]:
             x1, y1, x2, y2 = g[MarkKind.SEGMENT]
-            g[MarkKind.SEGMENT] = (sx(x1), y1, sx(x2), y2)
+            g[MarkKind.SEGMENT] = (end(x1), y1, end(x2), y2) if axis == 0 else (x1, end(y1), x2, end(y2))
         for kind in (MarkKind.CIRCLE, MarkKind.ARC):  # moved whole, or not at all
             if g[kind]:
-                moved = brk & (ext[kind][1] <= lo)
-                g[kind] = (np.where(moved, g[kind][0] + shift, g[kind][0]),) + tuple(g[kind][1:])
+                moved = brk & (ext[kind][hi_at] <= lo)
+                c = list(g[kind])
+                c[axis] = np.where(moved, c[axis] + shift, c[axis])
+                g[kind] = tuple(c)
         for mid, pts in self.curves.items():
-            self.curves[mid] = tuple((sx(x), y) for x, y in pts)
-        self._broken = brk
-        self._breaks = (hi - keep, keep)
+            self.curves[mid] = tuple((sx(x), y) if axis == 0 else (x, sx(y)) for x, y in pts)
+        self._broken = brk if self._broken is None else (self._broken | brk)
+        self._breaks[axis] = (brk, hi - keep, keep, width)
 
     def _letter_lines(self, template: Scene, protocol: Any) -> None:
         """marks.letter_lines over the sweep: each lettered straight line's letter point (value by value: a
@@ -299,9 +419,9 @@ class SweepDrawing:
             ats = []
             for i in range(self.n):
                 pts = tuple((float(x[i]), float(y[i])) for x, y in line)
-                broken = self._broken is not None and self._broken[i]
-                ats.append(letter_point(pts, fan, [(float(self._breaks[0][i]), float(self._breaks[1][i]))]
-                                        if broken else ()))
+                breaks = [(float(b[1][i]), float(b[2][i]), float(b[3][i]), axis)
+                          for axis, b in sorted(self._breaks.items()) if b[0][i]]
+                ats.append(letter_point(pts, fan, breaks))
             xs.append([a[0] for a in ats])
             ys.append([a[1] for a in ats])
         if self.at_marks:
@@ -326,6 +446,40 @@ class SweepDrawing:
     def page_px(self, x, y) -> tuple[np.ndarray, np.ndarray]:
         """Points (drawing units) on the page of every value (Viewport.px over the sweep)."""
         return self._px(x, y)
+
+    def px_at(self, i: int, x: float, y: float) -> tuple[float, float]:
+        """A point (drawing units) on the page of value *i*."""
+        xmin, ymax, scale, left, top = (float(v[i]) for v in self._page)
+        m = self.style.margin_px
+        return m + left + (x - xmin) * scale, m + top + (ymax - y) * scale
+
+    def breaks_page(self) -> np.ndarray:
+        """:meth:`breaks_px` of every value: (values x 4)."""
+        out = []
+        for axis in (0, 1):
+            b = self._breaks.get(axis)
+            if b is None:
+                out += [np.zeros(self.n), np.zeros(self.n)]
+                continue
+            brk, start, keep = b[0], b[1], b[2]
+            at = self._px(start, 0.0)[0] if axis == 0 else self._px(0.0, start + keep)[1]
+            out += [np.where(brk, np.round(at, 2), 0.0), np.where(brk, np.round(self._page[2] * keep, 2), 0.0)]
+        return np.column_stack(out) + 0.0
+
+    def breaks_px(self, i: int) -> list[float]:
+        """Where value *i*'s breaks stand on its page: [x, width, top, height] of their bands (canvas px, two
+        decimals), 0 0 for an axis not broken there (live.measure.breaks_px)."""
+        out: list[float] = []
+        scale = float(self._page[2][i])
+        for axis in (0, 1):
+            b = self._breaks.get(axis)
+            if b is None or not b[0][i]:
+                out += [0.0, 0.0]
+                continue
+            start, keep = float(b[1][i]), float(b[2][i])
+            at = self.px_at(i, start, 0.0)[0] if axis == 0 else self.px_at(i, 0.0, start + keep)[1]
+            out += [round(at, 2), round(scale * keep, 2)]
+        return out
 
     def _px(self, x, y) -> tuple[np.ndarray, np.ndarray]:
         xmin, ymax, scale, left, top = self._page
@@ -356,6 +510,8 @@ class SweepDrawing:
             out[MarkKind.ARC] = stack(x1, y1, rr, rr, 0.0 * rr, (sw > math.pi) * 1.0, 0.0 * rr + 1.0, x0, y0)
         for m in self.curve_marks:
             P = [self._px(x, y) for x, y in self.curves[m.id]]
+            if m.kind is MarkKind.AREA:  # (the page draws areas from their curves)
+                continue
             if m.straight:
                 closed = len(P) > 2 and tuple(m.geom[0]) == tuple(m.geom[-1])
                 cols = [c for p in (P[:-1] if closed else P) for c in p]
@@ -387,26 +543,3 @@ def _arc_box(cx, cy, r, a0, sw) -> tuple:
         ys.append(np.where(inside, cy + r * math.sin(q * quarter), ys[0]))
     X, Y = np.stack(xs), np.stack(ys)
     return (X.min(0), X.max(0), Y.min(0), Y.max(0))
-
-
-def _chain_points(chain: Any, n: int) -> tuple[np.ndarray, np.ndarray]:
-    """The points a swept chain is drawn through at every value, as ``take(chain, i).curve_points()`` gives
-    them value by value: arrays (points, values).  A French curve's samples by the same Bernstein weights and
-    einsum as :meth:`~construct.kernel.curves.BezierCurve.sample`, its ends exact."""
-    if chain.kind != "bezier":
-        pts = chain.curve_points()
-        return (np.array([np.broadcast_to(p.x, (n,)) for p in pts], dtype=float),
-                np.array([np.broadcast_to(p.y, (n,)) for p in pts], dtype=float))
-    segs = chain.segments()
-    ctrl = np.empty((len(segs), 4, 2, n))
-    for k, seg in enumerate(segs):
-        for j, p in enumerate(seg):
-            ctrl[k, j, 0], ctrl[k, j, 1] = p.x, p.y
-    per = 16  # curve_points' pieces per segment
-    t = np.arange(per + 1)[:, None] / per
-    s = 1.0 - t
-    weights = np.hstack([s ** 3, 3.0 * s * s * t, 3.0 * s * t * t, t ** 3])
-    pts = np.einsum("tj,kjdn->ktdn", weights, ctrl)
-    pts[:, 0], pts[:, -1] = ctrl[:, 0], ctrl[:, 3]
-    flat = np.concatenate([pts[:, :-1].reshape(-1, 2, n), ctrl[-1:, 3]])
-    return flat[:, 0], flat[:, 1]

@@ -28,8 +28,8 @@ from typing import Any, Mapping
 
 import numpy as np
 
-__all__ = ["drawn_numbers", "arc_flags", "canonical_arc", "decode", "as_drawn", "as_stored", "deflated", "inflated",
-           "ARC", "NUMBER", "PX", "X", "Y", "LENGTH"]
+__all__ = ["drawn_numbers", "arc_flags", "radii", "blend", "canonical_arc", "decode", "as_drawn", "as_stored", "deflated",
+           "inflated", "ARC", "NUMBER", "PX", "X", "Y", "LENGTH", "LOG"]
 
 #: A number as the drawing writes it.
 NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
@@ -38,15 +38,16 @@ _GEOMETRY = ("cx", "cy", "r", "x1", "y1", "x2", "y2", "d", "points", "viewBox")
 #: The template of an arc's path: its start, radii, rotation, large-arc and sweep flags, end.
 ARC = "M# #A# # # # # # #"
 #: How a column is stored: as drawn (px), or in the construction's own units through the row's fit to the
-#: view (ox, oy, s): an x (ox + s x), a y (oy - s y), a length (s l).
-PX, X, Y, LENGTH = 0, 1, 2, 3
+#: view (ox, oy, s): an x (ox + s x), a y (oy - s y), a length (s l), a radius by its logarithm (s e^l: a rod's
+#: arc about a crank point grows as L/r, which the slider moves in log10, so its logarithm is a line).
+PX, X, Y, LENGTH, LOG = 0, 1, 2, 3, 4
 
 
 def drawn_numbers(page: str) -> tuple[list[tuple[str, str, str]], list[float], dict[str, Any]]:
     """The geometry of a player page's figure: ((element id, attribute, template), ...) and the numbers in order.
 
     Every element with an id, the figure's view box and, when the page has the player's data, each step's
-    magnified view (key ``("#zoom", k, ...)``).  The third value holds the text of every lettered element by
+    magnified view (key ``("#zoom", k, ...)``) and the centre of the ring round a step's small mark (``"#ring"``).  The third value holds the text of every lettered element by
     id (``texts``): a letter that is a measured value (an angle read off the figure) changes with the given.
 
     >>> keys, nums, _ = drawn_numbers('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 5">'
@@ -85,6 +86,10 @@ def drawn_numbers(page: str) -> tuple[list[tuple[str, str, str]], list[float], d
             keys.append(("#zoom", str(i), "# # # #"))
             j = st.get(index, -1)
             nums.extend(float(x) for x in data[boxes][j]) if j >= 0 else nums.extend(full)
+        for i, st in enumerate(data["steps"]):  # the ring round a step's small mark: its centre
+            if "r" in st:
+                keys.append(("#ring", str(i), "# #"))
+                nums.extend(float(x) for x in st["r"][:2])
 
     return keys, nums, {"texts": texts}
 
@@ -102,6 +107,31 @@ def arc_flags(keys: list[tuple[str, str, str]]) -> np.ndarray:
     return np.asarray(out, dtype=bool)
 
 
+def radii(keys: list[tuple[str, str, str]]) -> np.ndarray:
+    """Which of the numbers of *keys* are radii (a circle's r, an arc's two radii): blended between grid values
+    geometrically, not linearly (a rod's arc of radius L grows as L/r: its radius at the geometric mean of two
+    grid values is the geometric mean of theirs; a linear blend misses a 30,000 px radius by a pixel).
+
+    >>> radii([("a", "r", "#"), ("b", "d", "M# #A# # # # # # #"), ("c", "cx", "#")]).nonzero()[0].tolist()
+    [0, 3, 4]
+    """
+    out: list[bool] = []
+    for k in keys:
+        if k[1] == "d" and k[2] == ARC:
+            out += [i in (2, 3) for i in range(9)]
+        else:
+            out += [k[1] == "r" and k[2] == "#"] * k[2].count("#")
+    return np.asarray(out, dtype=bool)
+
+
+def blend(a: np.ndarray, b: np.ndarray, t: Any, geometric: np.ndarray) -> np.ndarray:
+    """The page's drawing between two grid values' numbers *a* and *b*, the fraction *t* of the way in log10 of
+    the given: linear, and geometric for the radii (*geometric*, :func:`radii`)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        geo = a * np.power(np.where(a > 0, b / a, 1.0), t)
+    return np.where(geometric & (a > 0) & (b > 0), geo, a + (b - a) * t)
+
+
 def canonical_arc(ns: list[float]) -> list[float]:
     """An arc path's numbers drawn counter-clockwise on the page (sweep flag 1): the same arc, its ends swapped
     where it was drawn the other way, so that its numbers vary continuously with the given."""
@@ -115,8 +145,10 @@ def as_stored(drawn: np.ndarray, fit: np.ndarray | None, kinds: np.ndarray) -> n
     if fit is None or not kinds.any():
         return drawn
     ox, oy, sc = (fit[:, i:i + 1] for i in range(3))
-    return np.select([kinds == X, kinds == Y, kinds == LENGTH], [(drawn - ox) / sc, (oy - drawn) / sc, drawn / sc],
-                     drawn)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        logs = np.log(np.where(kinds == LOG, drawn / sc, 1.0))
+    return np.select([kinds == X, kinds == Y, kinds == LENGTH, kinds == LOG],
+                     [(drawn - ox) / sc, (oy - drawn) / sc, drawn / sc, logs], drawn)
 
 
 def as_drawn(stored: np.ndarray, fit: np.ndarray | None, kinds: np.ndarray) -> np.ndarray:
@@ -124,7 +156,8 @@ def as_drawn(stored: np.ndarray, fit: np.ndarray | None, kinds: np.ndarray) -> n
     if fit is None or not kinds.any():
         return stored
     ox, oy, sc = (fit[:, i:i + 1] for i in range(3))
-    return np.select([kinds == X, kinds == Y, kinds == LENGTH], [ox + sc * stored, oy - sc * stored, sc * stored],
+    return np.select([kinds == X, kinds == Y, kinds == LENGTH, kinds == LOG],
+                     [ox + sc * stored, oy - sc * stored, sc * stored, sc * np.exp(np.where(kinds == LOG, stored, 0.0))],
                      stored)
 
 
@@ -133,10 +166,11 @@ def decode(data: Mapping[str, Any], grid: Any, rows: int, cols: int) -> np.ndarr
     as the page does it with DecompressionStream: each stored column between its kept values is the line
     between them in log10 of the given, drawn through the grid value's fit."""
     raw = zlib.decompress(base64.b64decode(data["data"]))
-    ucols, width, mapw = data["ucols"], data["width"], data["mapw"]
+    ucols, mapw = data["ucols"], data["mapw"]
     at = cols * mapw
     colmap = np.frombuffer(raw[:at], dtype=f"<u{mapw}").astype(np.int64)
-    kinds = np.frombuffer(raw[at:at + ucols], dtype=np.uint8).astype(np.int8)
+    byte = np.frombuffer(raw[at:at + ucols], dtype=np.uint8)
+    kinds, wide = (byte & 127).astype(np.int8), byte >= 128
     at += ucols
     nbits = rows * ucols
     keep = np.unpackbits(np.frombuffer(raw[at:at + (nbits + 7) // 8], dtype=np.uint8))[:nbits]
@@ -146,17 +180,22 @@ def decode(data: Mapping[str, Any], grid: Any, rows: int, cols: int) -> np.ndarr
     at += 12 * rows
     first = np.frombuffer(raw[at:at + 4 * ucols], dtype="<i4").astype(np.int64)
     at += 4 * ucols
-    n = int(keep.sum()) - ucols
-    deltas = np.ascontiguousarray(np.frombuffer(raw[at:], dtype=np.uint8).reshape(width, n).T).view(f"<i{width}")
-    deltas = deltas.reshape(-1).astype(np.int64)
+    counts = keep.sum(axis=1) - 1  # each stored column's deltas
+    deltas: dict[bool, np.ndarray] = {}
+    for w, which in ((2, False), (4, True)):
+        n = int(counts[wide == which].sum())
+        planes = np.frombuffer(raw[at:at + w * n], dtype=np.uint8).reshape(w, n)
+        deltas[which] = np.ascontiguousarray(planes.T).view(f"<i{w}").reshape(-1).astype(np.int64)
+        at += w * n
     g = np.asarray(grid, dtype=float)
-    quanta = np.where(kinds > 0, data["qx"], data["q"])
+    quanta = np.where(kinds == LOG, data.get("ql", data["qx"]), np.where(kinds > 0, data["qx"], data["q"]))
     out = np.empty((rows, ucols))
-    pos = 0
+    pos = {False: 0, True: 0}
     for c in range(ucols):
         idx = np.nonzero(keep[c])[0]
-        vals = first[c] + np.concatenate([[0], np.cumsum(deltas[pos:pos + idx.size - 1])])
-        pos += idx.size - 1
+        w = bool(wide[c])
+        vals = first[c] + np.concatenate([[0], np.cumsum(deltas[w][pos[w]:pos[w] + idx.size - 1])])
+        pos[w] += idx.size - 1
         out[:, c] = np.interp(g, g[idx], vals * quanta[c])
     return as_drawn(out, fit, kinds)[:, colmap]
 

@@ -24,21 +24,22 @@ def add_arguments(p) -> None:
                    help="(--frames) write frames even when they are estimated above 500 MB (refused with the estimate otherwise)")
     add_print_options(p)
     p.add_argument("--live", action="store_true",
-                   help="the player gets a slider for the rod ratio L/r over its domain (1.05 .. 1000): the "
-                        "protocol swept over a grid fine enough that the page draws within 0.5 px (takes a minute)")
+                   help="the player gets a slider for each continuous given over its domain (the rod ratio L/r, "
+                        "1.05 .. 1000; the rod in metres; Baumann's kappa): the protocol swept over a grid fine enough "
+                        "that the page draws within 0.5 px (takes seconds)")
 
 
 def _live_page(c, fig, style: str):
     """The live data of the player (construct.live), computed before anything is written."""
-    from ...live import live_data, live_givens, live_sweep
+    from ...live import live_givens, live_pages
     from ...kernel.errors import InvalidParameter
     from ...render.styles import STYLES
 
     givens = live_givens(c, fig) if c is not None else []
     if not givens or style not in STYLES:
-        raise InvalidParameter(f"--live: {fig.protocol.construction} has no rod ratio to move"
+        raise InvalidParameter(f"--live: {fig.protocol.construction} has no continuous given to move (the rod, κ)"
                                if not givens else f"unknown style {style!r}")
-    return live_data(live_sweep(c, fig, givens[0], style=STYLES[style]))
+    return live_pages(c, fig, STYLES[style])
 
 
 def run(args) -> int:

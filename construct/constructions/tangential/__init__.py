@@ -60,7 +60,7 @@ from .. import Construction, Figure, register
 from ..indicator import BAUMANN
 from ..phrases import BAUMANN_1902, Cite, card, diagram, division, low_pressure, number, ratio, revolution, scale
 from .analytic import baumann_force, low_force, model_summary, model_t
-from .build import FORCES, KAPPA, LOW_PRESSURE, build_tangential, chord_shortfall, validate_tangential
+from .build import FORCES, KAPPA, LOW_PRESSURE, build_tangential, chord_shortfall, derived_givens, validate_tangential
 from .checks import drawn_model, tangential_checks
 from .measure import (crossing_angles, excess_area, free_force, mean_height, ok_over_r, return_free_force, t_over_unit,
                       unrolled_angle)
@@ -120,6 +120,7 @@ TANGENTIAL = register(Construction(
     methods=DIVISION_NAMES,
     plate=tangential_plate,
     validator=validate_tangential,
+    derived=lambda g, params: derived_givens(g),
     help={
         "cranks": "tangential-pressure --revolution: crank offsets in degrees ahead of the first, e.g. 0,90 "
                   "(multiples of 180/parts; default: the machine's)",

@@ -24,7 +24,8 @@ from ..indicator_card import card_givens, card_pair, draw_card, load_indicator
 from ..revolution import MACHINES, REVOLUTION_PLATE, build_revolution, crank_shifts, parse_cranks, unroll_by_chords
 from .plate import PLATE
 
-__all__ = ["KAPPA", "FORCES", "LOW_PRESSURE", "validate_tangential", "chord_shortfall", "build_tangential"]
+__all__ = ["KAPPA", "FORCES", "LOW_PRESSURE", "validate_tangential", "chord_shortfall", "build_tangential",
+           "derived_givens"]
 
 
 #: Baumann's κ = P/B_max ("Verhältnis des Anfangsbeschleunigungsdrucks zum Anfangskolbendruck"), his first case.
@@ -48,10 +49,25 @@ def _givens(r: Any, rod_ratio: Any, force: str, kappa: Any, pressure_unit: Any, 
         return g
     d = indicator_givens(diagram["filling"], diagram["clearance"], diagram["admission"], diagram["back_pressure"],
                          diagram["compression"], pressure_unit)
-    k = bounded("kappa = P/B_max", kappa, KAPPA_RANGE)
-    # c v^2/r (at): the inertia ordinate's factor, so that B_max = (1 + r/L) c v^2/r = P/kappa.
-    g.update(d, pressure_ratio=d["admission"] / (k * (1.0 + 1.0 / g["rod_ratio"])))
-    return g
+    # kappa = P/B_max is a given of the protocol; c v^2/r follows from it (derived_givens)
+    g.update(d, kappa=bounded("kappa = P/B_max", kappa, KAPPA_RANGE))
+    return derived_givens(g)
+
+
+def derived_givens(g: Mapping[str, Any]) -> dict[str, Any]:
+    """The givens that follow from kappa = P/B_max and the rod: c v^2/r (at), the inertia ordinate's factor, so that
+    B_max = (1 + r/L) c v^2/r = P/kappa (the low-pressure cylinder's likewise).  Givens that are arrays (a sweep's)
+    give arrays; a protocol written before kappa was a given keeps its c v^2/r.
+
+    >>> round(derived_givens({"rod_ratio": 5.0, "admission": 7.85, "kappa": 8.0})["pressure_ratio"], 9)
+    0.817708333
+    """
+    out = dict(g)
+    if "kappa" in out and "admission" in out:
+        out["pressure_ratio"] = out["admission"] / (out["kappa"] * (1.0 + 1.0 / out["rod_ratio"]))
+    if "lp.kappa" in out and "lp.admission" in out:
+        out["lp.pressure_ratio"] = out["lp.admission"] / (out["lp.kappa"] * (1.0 + 1.0 / out["rod_ratio"]))
+    return out
 
 
 #: The low-pressure cylinder of a compound or tandem engine under Baumann's force: illustrative defaults (the
@@ -75,10 +91,9 @@ def _low_givens(g: Mapping[str, float], force: str, low: Mapping[str, Any], card
                              low["lp_compression"], g["pressure_unit"])
     except InvalidParameter as exc:  # the same rules as the first cylinder's, said of the low-pressure one
         raise InvalidParameter(f"the low-pressure cylinder (--lp-*): {exc}") from None
-    k = bounded("low-pressure kappa = P/B_max", low["lp_kappa"], KAPPA_RANGE)
     out.update({f"lp.{key}": d[key] for key in ("filling", "clearance", "admission", "back_pressure", "compression")})
-    out["lp.pressure_ratio"] = d["admission"] / (k * (1.0 + 1.0 / g["rod_ratio"]))
-    return out
+    out["lp.kappa"] = bounded("low-pressure kappa = P/B_max", low["lp_kappa"], KAPPA_RANGE)
+    return derived_givens({**g, **out})
 
 
 def validate_tangential(givens: Mapping[str, float]) -> None:
@@ -91,6 +106,10 @@ def validate_tangential(givens: Mapping[str, float]) -> None:
         indicator_givens(givens["filling"], givens["clearance"], givens["admission"], givens["back_pressure"],
                          givens["compression"], givens["pressure_unit"])
         positive("c v^2/r (pressure_ratio)", givens["pressure_ratio"])
+    if "kappa" in givens:
+        bounded("kappa = P/B_max", givens["kappa"], KAPPA_RANGE)
+    if "lp.kappa" in givens:
+        bounded("low-pressure kappa = P/B_max", givens["lp.kappa"], KAPPA_RANGE)
     if "area_ratio" in givens:
         bounded("area ratio F_lp/F_hp", givens["area_ratio"], AREA_RATIO)
     if "lp.card.x0" in givens:

@@ -76,7 +76,8 @@ from .analytic import (DEAD_CENTRES, DRIVES, KOCHANSKI_ERROR, KOCHANSKI_RHO, dri
                        excess_exact_array, excess_from,
                        extreme_angles_exact, kochanski_angle_error, max_magnification, piston_speed_factor,
                        piston_travel, quadrant_extremes)
-from .build import auto_magnification, build_two_cranks, closed_curve, two_cranks_plate, validate_two_cranks
+from .build import (auto_magnification, build_two_cranks, closed_curve, derived_givens, two_cranks_plate,
+                    validate_two_cranks)
 from .checks import two_cranks_checks, wave_extremes
 from .measure import crank_angle, dead_centre_of, sense_of, speed_radius, speeds, work_excess
 
@@ -162,6 +163,7 @@ TWO_CRANKS = register(Construction(
     conventions={"dead_centre": START, "drive": DRIVEN},
     plate=two_cranks_plate,
     validator=validate_two_cranks,
+    derived=derived_givens,
     help={"dead_centre": "where the first crank starts: crank-end (§ 146's B1, the default: upper sign "
                          "in the Hingang) or head-end (the other books' zero)",
           "drive": "two-cranks: engine (the rods drive the shaft, the default) or pump (the shaft drives "

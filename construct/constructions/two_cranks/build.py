@@ -92,6 +92,22 @@ def validate_two_cranks(givens: Mapping[str, Any]) -> None:
 NICE_MAGNIFICATIONS = (8.0, 5.0, 4.0, 2.0, 1.0, 0.5, 0.25, 0.1)
 
 
+def derived_givens(g: Mapping[str, Any], params: Mapping[str, Any]) -> dict[str, Any]:
+    """The givens that follow from the others: a magnification the figure chose itself (params "magnify" is
+    "auto") is chosen again for the rod (:func:`auto_magnification`: 8 at L/r = 5, 5 at 3, 4 at 2), as a fresh
+    build at that rod chooses it; one the user gave stays.  Arrays (a sweep's) give arrays.
+
+    >>> derived_givens({"rod_ratio": 3.0, "fluctuation": 0.25, "magnify": 8.0}, {"magnify": "auto"})["magnify"]
+    5.0
+    >>> derived_givens({"rod_ratio": 3.0, "fluctuation": 0.25, "magnify": 2.0}, {})["magnify"]
+    2.0
+    """
+    out = dict(g)
+    if params.get("magnify") == "auto" and "rod_ratio" in out:
+        out["magnify"] = auto_magnification(out["rod_ratio"], out["fluctuation"])
+    return out
+
+
 def auto_magnification(rod_ratio: Any, fluctuation: float) -> Any:
     """The largest of :data:`NICE_MAGNIFICATIONS` that keeps every speed radius above 0.4 r.
 
@@ -392,8 +408,9 @@ def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method
                      drive: str = "engine") -> Figure:
     infinite_rod = bool(infinite_rod)
     start_angle(dead_centre)
+    chosen = magnify is None  # the figure chooses it: again at every rod (derived_givens)
     sign = drive_sign(drive)
-    if magnify is None:
+    if chosen:
         magnify = auto_magnification(rod_ratio_param(rod_ratio),
                                      bounded("fluctuation Qr/((m1+m2) v1^2)", fluctuation, FLUCTUATION))
     givens = _givens(r, rod_ratio, fluctuation, magnify, sign)
@@ -401,7 +418,8 @@ def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method
     used = _check_parts(parts, method)
     n = parts
     b = Builder("two-cranks", givens, {"parts": n, "method": used, "requested_method": method,
-                                       "infinite_rod": infinite_rod, "dead_centre": dead_centre, "drive": drive})
+                                       "infinite_rod": infinite_rod, "dead_centre": dead_centre, "drive": drive,
+                                       **({"magnify": "auto"} if chosen else {})})
     start = n if dead_centre == "crank-end" else 0
     f = build_frame(b)
     b.set_label(f["L"], "l")  # § 146 writes the rod length l (the title's r/l): its captions too

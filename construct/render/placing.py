@@ -653,7 +653,7 @@ class Placing:
     def letter_scale(self) -> float:
         """How much larger than on the canvas the player draws letters in the whole-figure view.
 
-        The player (1400 × 1000 window) shows the figure at most about
+        The player (a 1400 × 900 window) shows the figure at most about
         :data:`PLAYER_FIGURE_PX` wide and tall and holds letters at 12 px, never below 9.5 px
         on the screen (its ``--ls``); a tall figure shown at half its size gets letters 1.6
         times their canvas size, and they are placed at that size.  1 without a camera.

@@ -310,8 +310,9 @@ class _Views:
     def scale(self, k: int) -> float:
         """Screen pixels per user unit in view k: the view fitted into the screen (the player's window)."""
         b = self.box(k)
-        if self.sheet.plate and self.sheet.width:
-            # a plate opened in the browser is shown at its own width (a tall one scrolls), narrowed to the screen
+        if not self.player and self.sheet.width:
+            # a still figure (a plate) opened in the browser is shown at its own width (a tall one scrolls),
+            # narrowed to the screen
             return min(self.sheet.width, self.screen[0]) / max(self.sheet.viewbox[2], 1e-12)
         w, h = player_window(self.screen) if self.player else self.screen
         return min(w / max(b[2] - b[0], 1e-12), h / max(b[3] - b[1], 1e-12))

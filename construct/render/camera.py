@@ -139,15 +139,18 @@ def zoom_of(v: View, full: View, window: tuple[float, float] = PLAYER_FIGURE_PX)
 
 
 def clip_view(cx: float, cy: float, w: float, h: float, full: View) -> View:
-    """The view *w* × *h* about (cx, cy), cut to the canvas where it is wider or taller than *full*: the
-    window shows as much (it fits the view's box, keeping its aspect), and the whole canvas that way.
+    """The view *w* × *h* about (cx, cy), cut to the canvas where it is wider or taller than *full* (the
+    window shows as much: it fits the view's box, keeping its aspect) and moved onto the canvas where it
+    would reach past an edge (a view grown about a point near the edge shows no paper beyond it).
 
     >>> clip_view(480, 300, 1200, 800, (0, 0, 960, 1390))
-    (0.0, -100.0, 960.0, 800.0)
+    (0.0, 0.0, 960.0, 800.0)
+    >>> clip_view(900, 700, 200, 100, (0, 0, 960, 1390))
+    (760.0, 650.0, 200.0, 100.0)
     """
-    x = full[0] if w >= full[2] else cx - w / 2
-    y = full[1] if h >= full[3] else cy - h / 2
     w, h = min(w, full[2]), min(h, full[3])
+    x = min(max(cx - w / 2, full[0]), full[0] + full[2] - w)
+    y = min(max(cy - h / 2, full[1]), full[1] + full[3] - h)
     return (round(float(x), 2), round(float(y), 2), round(float(w), 2), round(float(h), 2))
 
 

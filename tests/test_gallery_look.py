@@ -68,7 +68,7 @@ def _result_letters(fig, names=None) -> set[str]:
             continue
         for name, text in s.labels:
             if isinstance(fig.replay.get(name), Point) and (names is None or name in names):
-                out.add(text)
+                out.add(text.replace("'", "′"))  # drawn with the books' prime (the protocol writes 1')
     return out
 
 
@@ -134,10 +134,10 @@ def test_inertia_finals_carry_the_seven_characteristic_points(figures, plates, k
 
 @pytest.mark.parametrize("key", [k for k in IDS if k.startswith("crank-parts")])
 def test_crank_finals_carry_every_piston_position(figures, plates, key):
-    """Seed 001: the piston positions 1' ... (n-1)' to the division points 1 ... n-1."""
+    """Seed 001: the piston positions 1′ ... (n-1)′ to the division points 1 ... n-1."""
     c, fig = figures[key]
     n = fig.params["parts"]
-    want = {f"{k}'" for k in range(1, n)} | {str(k) for k in range(1, n)}
+    want = {f"{k}′" for k in range(1, n)} | {str(k) for k in range(1, n)}
     assert want <= set(_texts(Drawing(scene_for(c, fig), STYLES["teaching"]).final()))
     assert want <= set(_texts(plates[key]))
 

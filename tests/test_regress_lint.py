@@ -32,7 +32,7 @@ CSS = """.lb{fill:#000;stroke:none;font-family:'DejaVu Sans', Arial, sans-serif;
 .cur>.tag{display:inline}"""
 
 
-def svg(body: str, *, width: float = 1400, height: float = 1000, css: str = CSS) -> str:
+def svg(body: str, *, width: float = 1400, height: float = 900, css: str = CSS) -> str:
     return (f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {width:g} {height:g}">'
             f"<style>{css}</style>{body}</svg>")
 
@@ -138,12 +138,25 @@ def test_small_labels_at_the_stated_view_size():
     body = label("A", 300, 300, "s0001-A-label")
     assert lint_svg(svg(body), "a.svg") == []  # 12 px on a 1400-wide view shown at 1400
     # the same drawing twice as large in user units: shown at 1400 px, its 12-unit letters are 6 px
-    found = lint_svg(svg(body, width=2800, height=2000), "big.svg")
+    found = lint_svg(svg(body, width=2800, height=1800), "big.svg")
     assert kinds(found) == ["small-label"] and "6 px" in found[0].message
     # and shown on a larger screen it is legible again
-    assert lint_svg(svg(body, width=2800, height=2000), "big.svg", view=(2800, 2000)) == []
+    assert lint_svg(svg(body, width=2800, height=1800), "big.svg", view=(2800, 1800)) == []
     tiny = svg(body, css=CSS.replace("font-size:12px", "font-size:5px"))
     assert kinds(lint_svg(tiny, "tiny.svg")) == ["small-label"]
+
+
+def test_a_tall_plate_is_measured_at_its_own_width_as_the_browser_shows_it():
+    """A plate opened in the browser is shown at the width it asks for (a tall one scrolls), not shrunk into the
+    window's height: the 960 × 1280 plate of Tabelle 2 has 12 px letters at 1400 × 900, not 8.4 px."""
+    body = label("q₅", 300, 300, "s0001-A-label") + label("+0,907", 300, 1200, "s0002-B-label")
+    plate = (f'<svg xmlns="http://www.w3.org/2000/svg" class="plate" width="960" height="1280" viewBox="0 0 960 1280">'
+             f"<style>{CSS}</style>{body}</svg>")
+    assert [f for f in lint_svg(plate, "tall.svg", view=(1400, 900)) if f.kind == "small-label"] == []
+    # wider than the screen it is narrowed to it: 1920 units at 1400 px, letters of 12 units 8.75 px
+    wide = plate.replace('width="960" height="1280" viewBox="0 0 960 1280"',
+                         'width="1920" height="1280" viewBox="0 0 1920 1280"')
+    assert kinds(but_fill(lint_svg(wide, "wide.svg", view=(1400, 900)))) == ["small-label"]
 
 
 def test_a_label_outside_the_view():
@@ -219,7 +232,7 @@ def test_a_camera_view_stored_on_a_step_is_read():
 
 def test_the_camera_may_come_from_the_players_data():
     # a small circle (2.4 units across: 2.4 px on the whole view) seen through a 140 x 100 view in the
-    # player's 985 x 700 px window: 17 px.  (A point would not grow: the player holds points at their size.)
+    # player's 998 x 630 px window: 15 px.  (A point would not grow: the player holds points at their size.)
     mark = '<circle class="construction" id="s0002-c" cx="300" cy="300" r="1.2"/>'
     figure = steps_svg(group(1, label("A", 100, 100, "s0001-A-label")), group(2, mark),
                        group(3, '<line class="construction" x1="0" y1="900" x2="900" y2="900"/>'))
@@ -316,7 +329,7 @@ def test_a_drawing_in_a_corner_of_its_canvas_fills_too_little_of_it():
     body = (point("s0001-A", 100, 100) + label("A", 112, 96, "s0001-A-label") + point("s0002-B", 300, 250)
             + '<line class="result" id="s0003-g" x1="100" y1="100" x2="300" y2="250"/>'
             + '<text class="cap" x="24" y="980">Fig. 1. A figure on too large a sheet</text>')
-    (f,) = [f for f in lint_svg(svg(body), "corner.svg") if f.kind == "fill"]
+    (f,) = [f for f in lint_svg(svg(body, height=1000), "corner.svg") if f.kind == "fill"]
     # across: 98 … 302 of 1400; down: the letter A's top (85) … 252 of the 967 above the caption
     assert f.message.startswith("the drawing fills 15% of the canvas's width and 17% of its height")
     # the same drawing on a sheet cropped to it with a margin (its caption below): filled

@@ -272,11 +272,15 @@ def test_player_camera_keeps_letters_on_their_points(browser, tmp_path):
     full_w = float(re.search(r'data-full="0 0 ([\d.]+)', html).group(1))
     full_h = float(re.search(r'data-full="0 0 [\d.]+ ([\d.]+)', html).group(1))
 
-    def window_zoom(v):  # how many times the 985 x 700 window shows view v larger than the whole figure
-        return min(985 / v[2], 700 / v[3]) / min(985 / full_w, 700 / full_h)
+    from construct.render.camera import PLAYER_FIGURE_PX
 
-    # a step whose view magnifies at least twice
-    k = next(i for i, st in enumerate(data["steps"], start=1) if window_zoom(data["views"][st["v"]]) >= 2.0)
+    ww, wh = PLAYER_FIGURE_PX
+
+    def window_zoom(v):  # how many times the player's window shows view v larger than the whole figure
+        return min(ww / v[2], wh / v[3]) / min(ww / full_w, wh / full_h)
+
+    # the last step whose view magnifies at least 1.7 times (past a zoom level; by then many points are lettered)
+    k = max(i for i, st in enumerate(data["steps"], start=1) if window_zoom(data["views"][st["v"]]) >= 1.7)
     z = window_zoom(data["views"][data["steps"][k - 1]["v"]])
     over = z / max(lv for lv in data["levels"] if lv <= z * 1.001)  # the level's picture magnified this much
     page = browser.new_page(viewport={"width": 1400, "height": 1000})
@@ -304,6 +308,36 @@ def test_player_camera_keeps_letters_on_their_points(browser, tmp_path):
     # letters move only where a zoom level placed them again (never all of them)
     assert moved < len(common)
     page.close()
+
+
+SHOWN_LETTER_PX_JS = """() => Array.from(document.querySelectorAll('#figure text.lb:not(.halo)'))
+    .filter(t => t.getClientRects().length && getComputedStyle(t).display !== 'none')
+    .map(t => { const m = t.getScreenCTM();  // (Chromium's includes the letter's CSS scale)
+                return [t.textContent, parseFloat(getComputedStyle(t).fontSize) * Math.hypot(m.a, m.b)]; })"""
+
+
+def test_lint_measures_the_players_figure_as_the_page_shows_it(browser, tmp_path):
+    """At a typical 1400 × 900 window the player's page shows its figure in the box lint measures the player's
+    views in (and the camera shapes them for), and letters of a step whose work is spread over the figure's
+    width (Fig. 28's b₁ = 0,02 r₁ worked along r₁) are at least lint's 9 px on the page."""
+    from construct.regress.lint import MIN_LABEL_PX, VIEW
+    from construct.regress.lint.checks import player_window
+    from construct.render.camera import PLAYER_FIGURE_PX
+
+    c = get("flywheel-rim")
+    write_replay(c, c.figure(), tmp_path, style="teaching", frames="none")
+    page = browser.new_page(viewport={"width": 1400, "height": 900})
+    page.clock.install()
+    page.goto((tmp_path / "player.html").as_uri() + "#112")
+    page.clock.run_for(1000)
+    box = page.evaluate("() => { const f = document.getElementById('figure'); return [f.clientWidth, f.clientHeight]; }")
+    assert VIEW == (1400.0, 900.0)
+    assert tuple(box) == pytest.approx(player_window(VIEW), abs=1.0)
+    assert player_window(VIEW) == PLAYER_FIGURE_PX
+    sizes = {name: px for name, px in page.evaluate(SHOWN_LETTER_PX_JS)}
+    page.close()
+    assert {"O", "r₁"} <= set(sizes)
+    assert min(sizes.values()) >= MIN_LABEL_PX, sizes
 
 
 LEADERS_WITHOUT_LETTER_JS = """() => Array.from(document.querySelectorAll('#figure line.leader'))

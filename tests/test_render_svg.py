@@ -136,3 +136,23 @@ def test_every_frame_has_the_canvas_of_the_whole_figure(crank6):
     d = Drawing(scene_for(c, fig), STYLES["plain"])
     sizes = {ET.fromstring(d.frame(k).encode()).get("viewBox") for k in (0, 1, 10, len(fig.protocol.steps))}
     assert sizes == {ET.fromstring(d.layered().encode()).get("viewBox")}
+
+
+def test_primes_are_drawn_and_captioned_as_the_books_print_them(crank6):
+    """The crank's piston positions are named 1', 2', ... by the construction (the protocol keeps that); the
+    figure letters them 1′, 2′ (U+2032), and the player's captions and step list name them so."""
+    from construct.render.player import player_html
+
+    c, fig = crank6
+    assert "1'" in dict(fig.protocol.steps[next(i for i, s in enumerate(fig.protocol.steps)
+                                                  if "X1" in s.outputs)].labels).values()
+    sc = scene_for(c, fig)
+    d = Drawing(sc, STYLES["teaching"])
+    root = ET.fromstring(d.layered().encode())
+    texts = {"".join(t.itertext()) for t in root.iter("{http://www.w3.org/2000/svg}text")}
+    assert {"1′", "5′"} <= texts
+    assert not [t for t in texts if re.search(r"\w'", t)]
+    page = player_html(sc, STYLES["teaching"], drawing=d)
+    shown = re.sub(r"<script.*?</script>|<style.*?</style>", "", page, flags=re.S)
+    data = re.search(r'id="data">(.*?)</script>', page, re.S).group(1)
+    assert "1′" in data and not re.search(r"(?<![\w])\d+'", data + shown)

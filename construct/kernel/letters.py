@@ -301,6 +301,22 @@ _SYMBOLS = tuple((need, re.compile(p), r) for need, p, r in (
 ))
 
 
+#: A figure's letter written with an ASCII prime (6', P', W0', s1''): a letter, perhaps with its number, or a
+#: number, right after something that is not a letter, and not followed by one (Baumann's keeps its apostrophe).
+_ASCII_PRIME = re.compile(r"(?<![^\W\d_])(?<![′'])((?:[^\W\d_]|[0-9₀-₉])[0-9₀-₉]{0,3})('{1,3})(?![^\W\d_])")
+
+
+def primed(text: str) -> str:
+    """A figure's letters with the prime the books print (′, ″) for the ASCII one a construction names them with.
+
+    >>> primed("Ordinate in 6', P' = r, W0'' and W₀', the crank's angle, the pistons' areas")
+    "Ordinate in 6′, P′ = r, W0″ and W₀′, the crank's angle, the pistons' areas"
+    """
+    if "'" not in text:
+        return text
+    return _ASCII_PRIME.sub(lambda m: m.group(1) + ("′", "″", "‴")[len(m.group(2)) - 1], text)
+
+
 def book_symbols(text: str) -> str:
     """ASCII stand-ins for the book's symbols replaced: ω, λ, √, exponents, subscripts.
 
@@ -310,11 +326,13 @@ def book_symbols(text: str) -> str:
     '(4/π) r α, ω² R, crank at 90°'
     >>> book_symbols("Gegendruck P0, Füllung s1, r1/12, b2/2 = 3 b1 (G2, K17 and M2 are tags)")
     'Gegendruck P₀, Füllung s₁, r₁/12, b₂/2 = 3 b₁ (G2, K17 and M2 are tags)'
+    >>> book_symbols("Ordinate in 6', unit force P' = r")
+    'Ordinate in 6′, unit force P′ = r'
     """
     for need, pattern, rep in _SYMBOLS:
         if any(n in text for n in need):
             text = pattern.sub(rep, text)
-    return equation(text)
+    return equation(primed(text))
 
 
 class Reader:

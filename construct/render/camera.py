@@ -41,12 +41,14 @@ import numpy as np
 from .scene import MarkKind, Scene, extreme_points
 from .svgdoc import fmt
 
-__all__ = ["step_views", "views_box", "shots", "step_focus", "step_zooms", "step_details", "step_insets", "DETAIL_PX", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
+__all__ = ["step_views", "views_box", "shots", "step_focus", "step_zooms", "step_details", "step_insets", "DETAIL_PX", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "NON_SCALING", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
            "clear_edges", "clear_tag_edges", "player_letter_scale", "EDGE_ROUNDS", "ring_round"]
 
-#: The most the step player shows of the figure in a 1400 × 1000 window (width, height in screen px): the
-#: window the views are shaped for and their magnification is measured in (:func:`zoom_of`).
-PLAYER_FIGURE_PX = (985.0, 700.0)
+#: The step player's figure box in a typical 1400 × 900 browser window (width, height in screen px, as its page
+#: lays it out: what the side column leaves of the width, at most 70 % of the height): the window the views
+#: are shaped for and their magnification is measured in (:func:`zoom_of`); the page keeps the box of this
+#: shape (``aspect-ratio``), so that a view fills it at any window size.
+PLAYER_FIGURE_PX = (998.0, 630.0)
 
 #: A view never magnifies the whole figure more than this many times (more would lose where it sits).
 MAX_ZOOM = 4.0
@@ -83,10 +85,15 @@ def level(zoom: float) -> int:
     return i
 
 
+#: The lines the player holds at their screen width in every view (an end state's own file writes their
+#: widths in its units instead: :func:`construct.render.svg.own_strokes`).
+NON_SCALING = ".construction,.result,.auxiliary,.given,.hatch,.fur,.ring{vector-effect:non-scaling-stroke}"
+
+
 def level_css() -> str:
     """The rules that keep letters, points and leaders at their screen size at each zoom level."""
     rules = [".pt{transform-box:fill-box;transform-origin:center}",
-             ".construction,.result,.auxiliary,.given,.hatch,.fur,.ring{vector-effect:non-scaling-stroke}",
+             NON_SCALING,
              ".lbx{display:none}"]
     # --zs (the level's letter scale) is declared on the letters, leaders and points themselves, and the
     # selectors end in their classes: a class of the figure's root that changes (the player's zoom level) then
@@ -132,15 +139,18 @@ def zoom_of(v: View, full: View, window: tuple[float, float] = PLAYER_FIGURE_PX)
 
 
 def clip_view(cx: float, cy: float, w: float, h: float, full: View) -> View:
-    """The view *w* × *h* about (cx, cy), cut to the canvas where it is wider or taller than *full*: the
-    window shows as much (it fits the view's box, keeping its aspect), and the whole canvas that way.
+    """The view *w* × *h* about (cx, cy), cut to the canvas where it is wider or taller than *full* (the
+    window shows as much: it fits the view's box, keeping its aspect) and moved onto the canvas where it
+    would reach past an edge (a view grown about a point near the edge shows no paper beyond it).
 
     >>> clip_view(480, 300, 1200, 800, (0, 0, 960, 1390))
-    (0.0, -100.0, 960.0, 800.0)
+    (0.0, 0.0, 960.0, 800.0)
+    >>> clip_view(900, 700, 200, 100, (0, 0, 960, 1390))
+    (760.0, 650.0, 200.0, 100.0)
     """
-    x = full[0] if w >= full[2] else cx - w / 2
-    y = full[1] if h >= full[3] else cy - h / 2
     w, h = min(w, full[2]), min(h, full[3])
+    x = min(max(cx - w / 2, full[0]), full[0] + full[2] - w)
+    y = min(max(cy - h / 2, full[1]), full[1] + full[3] - h)
     return (round(float(x), 2), round(float(y), 2), round(float(w), 2), round(float(h), 2))
 
 

@@ -186,7 +186,9 @@ class Placing:
                 if m.label:
                     items.append((m.id, m.role, m.step, p, label_offset_direction(m.geom, scale=scale), m.label))
             elif m.role == "result" and m.kind.stroked:
-                pts = [vp.px(*q) for q in _polyline(m, vp.scale)]
+                # pieces as close to the line at the deepest zoom level as at the whole figure: the levels'
+                # placings magnify them (a crank circle's chords 30 px off it at 8x left room for a letter on it)
+                pts = [vp.px(*q) for q in _polyline(m, vp.scale * (ZOOM_LEVELS[-1] if self.style.camera else 1.0))]
                 lines.extend((a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:]))
         st = self.style
         self._obstacles = (dots, lines)
@@ -456,12 +458,16 @@ class Placing:
         line_lo = np.minimum(line_a[:, 0:2], line_a[:, 2:4])
         line_hi = np.maximum(line_a[:, 0:2], line_a[:, 2:4])
 
+        reach = (max(TAG_FARTHER) + 3.0) * size  # how far from its point a tag's box may reach (letter units)
+
         def near(items, z: float, f: float):
             """The points and the numbers of the result lines (at zoom *z*) a tag of *items* could meet:
-            within its reach (the lines as a mask over the level's :meth:`_lines_at`)."""
+            within its reach (the lines as a mask over the level's :meth:`_lines_at`): as far as a tag's box
+            reaches from its point (a tag 14 letter heights off reached beyond a window of 8, and the crank
+            circle's pieces crossing it there went unseen)."""
             xs = [it[3][0] for it in items]
             ys = [it[3][1] for it in items]
-            r = 8.0 * size * f
+            r = reach * f
             x0, y0, x1, y1 = min(xs) - r, min(ys) - r, max(xs) + r, max(ys) + r
             dz = dot_a * z
             ds = dz[(x0 <= dz[:, 0]) & (dz[:, 0] <= x1) & (y0 <= dz[:, 1]) & (dz[:, 1] <= y1)]
@@ -484,7 +490,6 @@ class Placing:
         tags_of: dict[int, list[Mark]] = {}
         for m in tags:
             tags_of.setdefault(m.step, []).append(m)
-        reach = (max(TAG_FARTHER) + 3.0) * size  # how far from its point a tag's box may reach (letter units)
 
         def place_at(m: Mark, lvl: int) -> bool:
             """Place tag *m* at level *lvl*, clear of the letters there and of the tags placed so far that are
@@ -648,7 +653,7 @@ class Placing:
     def letter_scale(self) -> float:
         """How much larger than on the canvas the player draws letters in the whole-figure view.
 
-        The player (1400 × 1000 window) shows the figure at most about
+        The player (a 1400 × 900 window) shows the figure at most about
         :data:`PLAYER_FIGURE_PX` wide and tall and holds letters at 12 px, never below 9.5 px
         on the screen (its ``--ls``); a tall figure shown at half its size gets letters 1.6
         times their canvas size, and they are placed at that size.  1 without a camera.

@@ -33,6 +33,7 @@ import re
 from typing import Any, Mapping, Sequence
 
 from .animate import STEP_SECONDS, group_css
+from .camera import PLAYER_FIGURE_PX
 from .captions import group_caption
 from .marks import MarkKind
 from .styles import PLAIN, Style
@@ -149,6 +150,7 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         ("{{DATA}}", json_for_script(data)),
         ("{{PAGE_BG}}", "#f7f3ea" if style.name == "historical" else "#f4f5f7"),
         ("{{SPEEDS}}", _speed_options(data["dt"] / 1000)),
+        ("{{ASPECT}}", "/".join(fmt(x) for x in PLAYER_FIGURE_PX)),
     ))
     # One pass, so that text from the protocol is never read as a placeholder.
     return re.sub(r"\{\{[A-Z_]+\}\}", lambda m: values[m.group(0)], _TEMPLATE)
@@ -219,7 +221,7 @@ main{display:flex;gap:12px;padding:8px 16px;align-items:flex-start}
 #inset .ipt{fill:#c2255c}
 #inset .icur{fill:#e8590c}
 #inset .ilb{fill:#c2255c;font-family:'DejaVu Sans',sans-serif;paint-order:stroke;stroke:#fff;stroke-width:.25em}
-#figure{width:100%;height:auto;aspect-ratio:985/700;max-height:70vh;border:1px solid #ccc;background:#fff;display:block}
+#figure{width:100%;height:auto;aspect-ratio:{{ASPECT}};max-height:70vh;border:1px solid #ccc;background:#fff;display:block}
 #figure .lbg>*,#figure .pt{--ls:1;transform:scale(var(--ls))}
 #controls{display:flex;gap:6px;align-items:center;margin:8px 0;flex-wrap:wrap}
 #controls button{font:inherit;padding:3px 10px;min-width:2.4em}
@@ -303,8 +305,11 @@ li a.later{color:#bbb}
   var zoom = document.getElementById("zoom");
   var full = svg.getAttribute("data-full").split(" ").map(Number);
   var now = svg.getAttribute("viewBox").split(" ").map(Number), anim = null, ringAt = null, level = 0;
+  // the box the view is fitted into: the figure's content box (its border aside: with it, a view of the window's
+  // shape would be fitted by the other side, and a view of exactly a zoom level's magnification fall below it)
+  function boxOf() { return {width: svg.clientWidth, height: svg.clientHeight}; }
   function ratio(v, r) {  // canvas pixels per screen pixel in view *v* (the view is fitted into the element)
-    r = r || svg.getBoundingClientRect();
+    r = r || boxOf();
     if (!r.width || !r.height) { return 1; }
     return Math.max(v[2] / r.width, v[3] / r.height);
   }
@@ -331,7 +336,7 @@ li a.later{color:#bbb}
     // (q times the view's magnification is the whole figure's canvas pixels per screen pixel)
     // (*r*: the figure's box on the screen, if read before anything was written: no layout forced here;
     // *drag*: a given is being dragged, see DRAG_LARGER)
-    r = r || svg.getBoundingClientRect();
+    r = r || boxOf();
     var q = ratio(v, r), zl = data.levels[level] || 1, qf = ratio(full, r), ql = qf / zl;
     // written only when changed: a new --ls restyles every letter, a new viewBox repaints the figure
     var box = v.map(function (x) { return x.toFixed(2); }).join(" ");
@@ -374,7 +379,7 @@ li a.later{color:#bbb}
   function zoomLevel(view, r, drag) {  // the zoom level of *view*: its letters (placed for it) and their scale
     // how many times the window shows it larger than the whole figure (a view of the window's shape in a
     // tall figure is magnified more than its width says)
-    r = r || svg.getBoundingClientRect();
+    r = r || boxOf();
     var z = ratio(full, r) / ratio(view, r), lvl = 0, L = data.levels;
     L.forEach(function (l, i) { if (z >= 0.999 * l) { lvl = i; } });
     // a drag keeps the shown level while near its range (see DRAG_LEVEL)
@@ -413,7 +418,7 @@ li a.later{color:#bbb}
     return e;
   }
   function show(j) {
-    var box = svg.getBoundingClientRect();  // read before the classes change (a read after them forces a restyle)
+    var box = boxOf();  // read before the classes change (a read after them forces a restyle)
     k = Math.max(0, Math.min(n, j));
     groups.forEach(function (g, i) {
       var s = +g.getAttribute("data-step");
@@ -544,7 +549,7 @@ li a.later{color:#bbb}
     jump: function (drag) {  // *drag*: as a given's drag draws it (the view, the letters' scale and level kept near)
       if (anim) { cancelAnimationFrame(anim); anim = null; }
       // the figure's box read once, before the level's class is set (a read after it would restyle the figure twice)
-      var r = svg.getBoundingClientRect(), to = target();
+      var r = boxOf(), to = target();
       if (!drag) { now = to.slice(); }
       // a new view while dragging: the step's view with a little room about it (it can grow by a fifth before
       // the next), not the step's view exactly (which it would leave at once)

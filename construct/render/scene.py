@@ -28,7 +28,7 @@ from typing import Any, Callable, Iterable, Sequence
 
 from ..kernel.geometry import Circle, Length, Line, Point
 from ..kernel.protocol import Protocol, Replay, Step
-from ..kernel.letters import FIGURE_LETTER
+from ..kernel.letters import FIGURE_LETTER, primed
 from .captions import TITLE_LIMIT, Reader, displayed
 from .marks import (TWO_PI, Mark, MarkKind, circle_extent, curve_points, extreme_points, fanned_lines, letter_lines,
                     lies_on, segment_extent, with_geom)
@@ -268,6 +268,35 @@ class Scene:
                 got.setdefault(k, []).append(s.index)
         return got
 
+    def aimed_at(self, k: int) -> frozenset[str]:
+        """The sides of the rectangle step k's straightedge draws the diagonal of: a line laid from a point
+        through a corner where two perpendicular straight lines cross (the hyperbola's ray from O through B,
+        the ordinate meeting the horizontal through the known point) -- without them the student sees a ray
+        aimed at a point on nothing.
+
+        >>> from construct.constructions import get
+        >>> sc = build_scene(get("flywheel-rim").figure())
+        >>> k = next(s.index for s in sc.steps if s.outputs == ("U6.s",))
+        >>> sorted(sc.aimed_at(k))  # the ordinate at 6/12 r1 and the horizontal through the rim's corner K
+        ['khU', 'lv6']
+        """
+        if not 1 <= k <= len(self.steps):
+            return frozenset()
+        s = self.steps[k - 1]
+        if s.op != "line" or len(s.inputs) != 2:
+            return frozenset()
+        maker = self.step_of(s.inputs[1])
+        if maker is None or self.steps[maker - 1].op != "intersect":
+            return frozenset()
+        sides = [self._drawn.get(n) for n in self.steps[maker - 1].inputs]
+        if len(sides) != 2 or any(m is None or m.kind is not MarkKind.SEGMENT for m in sides):
+            return frozenset()
+        (ax0, ay0, ax1, ay1), (bx0, by0, bx1, by1) = (m.geom[:4] for m in sides)  # type: ignore[union-attr]
+        ux, uy, vx, vy = ax1 - ax0, ay1 - ay0, bx1 - bx0, by1 - by0
+        if abs(ux * vx + uy * vy) > 1e-6 * math.hypot(ux, uy) * math.hypot(vx, vy):
+            return frozenset()  # not a rectangle's corner
+        return frozenset(m.name for m in sides)  # type: ignore[union-attr]
+
     def tagged(self, k: int) -> frozenset[str]:
         """The points a teaching frame tags at step k: what the step makes, what its instrument is set on
         (also the centre of a circle it cuts), and every point its caption names."""
@@ -335,7 +364,7 @@ class Scene:
 
     def display_name(self, name: str) -> str:
         """The letter or tag the reader sees for an object (the same one the captions use)."""
-        return self._reader.point(name) if name in self._reader.points else name.rsplit(".", 1)[-1]
+        return primed(self._reader.point(name) if name in self._reader.points else name.rsplit(".", 1)[-1])
 
     def tag_shown(self, name: str) -> bool:
         """Whether an unlettered point's tag (:meth:`display_name`) reads as one of the figure's letters.
@@ -582,6 +611,8 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 label = labels.get(name)
                 if label and "{∠" in label:
                     label = reading(label, objects)
+                if label:
+                    label = primed(label)  # drawn as the books print it (6′); the protocol keeps its 6'
                 if "unlettered" in (looks or {}).get(name, "").split():
                     label = None  # the plate letters it otherwise (an abscissa, as the book does)
                 common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,

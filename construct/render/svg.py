@@ -36,7 +36,7 @@ from typing import Any, Callable, Sequence
 
 from . import captions as _captions
 from . import svgdoc
-from .camera import (FINAL_CONTEXT, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, clear_edges, clear_tag_edges, level,
+from .camera import (FINAL_CONTEXT, NON_SCALING, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, clear_edges, clear_tag_edges, level,
                      player_letter_scale, ring_round, step_insets, step_views, zoom_of)
 from .captions import Captions, PlateCaption
 from .gaps import CLEARANCE, Gap, GapFactory, gapped_hatch, gapped_mark
@@ -61,6 +61,36 @@ _LETTER_SCALE = re.compile(r"var\(--ls(?:,var\(--zs(?:,1)?\))?\)")
 #: them at that scale in their radius instead.
 _END_POINTS = ".fin .lbg>.lb,.fin .lbg>.leader,.fin .pt{"
 _END_POINTS_OWN = ".fin .pt{transform:none}\n.fin .lbg>.lb,.fin .lbg>.leader{"
+
+#: A style rule and the lengths of a line's stroke in it (its width, its dashes).
+_RULE = re.compile(r"([^{}]+)\{([^{}]*)\}")
+_STROKE_LENGTHS = re.compile(r"(stroke-width|stroke-dasharray):([^;}]*)")
+#: What draws its own strokes at the figure's scale in the player too (no ``vector-effect`` on them, see
+#: :func:`construct.render.camera.level_css`): letters, their halos and leaders, points, insets, break lines.
+_SCALED_STROKES = frozenset({"lb", "halo", "leader", "pt", "inset", "brkline"})
+
+
+def own_strokes(css: str, q: float) -> str:
+    """*css* with the lines' stroke widths and dashes written in the file's own units for its one view of *q*
+    units per screen px, instead of held at their screen size by ``vector-effect: non-scaling-stroke``
+    (which cairosvg, Inkscape's import and print workflows ignore, drawing every line 1/q times too heavy).
+
+    >>> own_strokes(".result{stroke-width:2}\\n.dashdot{stroke-dasharray:14 3;stroke-width:0.7px}\\n"
+    ...             ".leader{stroke-width:0.4px}\\n" + NON_SCALING, 0.5)
+    '.result{stroke-width:1}\\n.dashdot{stroke-dasharray:7 1.5;stroke-width:0.35}\\n.leader{stroke-width:0.4px}\\n'
+    """
+    def lengths(m: re.Match) -> str:
+        return m.group(1) + ":" + " ".join(fmt(float(v.removesuffix("px")) * q, 4)
+                                           for v in m.group(2).replace(",", " ").split())
+
+    def rule(m: re.Match) -> str:
+        classes = set(re.findall(r"\.([\w-]+)", m.group(1)))
+        if classes & _SCALED_STROKES:
+            return m.group(0)
+        return m.group(1) + "{" + _STROKE_LENGTHS.sub(lengths, m.group(2)) + "}"
+
+    return _RULE.sub(rule, css.replace(NON_SCALING, ""))
+
 
 #: The margin round the end state's drawing on its sheet (screen px at the end view).
 END_MARGIN_PX = 14.0
@@ -493,8 +523,8 @@ class Drawing:
         return self.groups[name][:bisect.bisect_right(self._steps[name], k)]
 
     def input_steps(self, k: int) -> frozenset[int]:
-        """The steps that made what step k's instrument is set on, what its caption names and what its arc is
-        struck onto (:meth:`Scene.struck_onto`)."""
+        """The steps that made what step k's instrument is set on, what its caption names, what its arc is
+        struck onto (:meth:`Scene.struck_onto`) and the rectangle its ray is the diagonal of (:meth:`Scene.aimed_at`)."""
         if not self.style.input_colour:
             return frozenset()
         done = self.__dict__.setdefault("_input_steps", {})  # asked by the tags' placing and by the player
@@ -503,7 +533,7 @@ class Drawing:
             sc = self.scene
             # and the lines its arc is struck onto (cut by the next step): drawn while it strikes it
             got = done[k] = frozenset(s for s in (sc.step_of(n) for n in sc.inputs(k) | sc.tagged(k)
-                                                  | sc.struck_onto(k))
+                                                  | sc.struck_onto(k) | sc.aimed_at(k))
                                       if s is not None and s < k)
         return got
 
@@ -755,6 +785,8 @@ class Drawing:
         # the letter scale written out: every letter inherits the root's --ls here, and a renderer without CSS
         # variables (cairosvg, Inkscape's import) would drop each element scaled by var() -- letters and points
         css = _LETTER_SCALE.sub(fmt(e.letter, 4), css).replace(_END_POINTS, _END_POINTS_OWN)
+        # and its lines as wide as the player draws them on this view, in the sheet's own units (see own_strokes)
+        css = own_strokes(css, 1 / s)
         dwg = self.doc.drawing(size=(fmt(w), fmt(h)), viewBox=f"{fmt(x0)} {fmt(y0)} {fmt(x1 - x0)} {fmt(h / s)}",
                                class_=f"fin zl{e.level}", style=f"--ls:{fmt(e.letter, 4)}")
         dwg.add(f.style("\n" + css + "\n"))

@@ -2,7 +2,7 @@
 
 PATH is a ``final.svg``, a replay folder or a gallery.  Every plate and every
 step's view (through the camera when the output stores one) is fitted into
-the screen (``--view WxH``, default 1400x1000) and checked for labels on each
+the screen (``--view WxH``, default 1400x900) and checked for labels on each
 other, labels on another object's point, labels struck by a result line,
 labels under 9 px, a current step's mark under 12 px and labels outside the
 view (:mod:`construct.regress.lint`).  Each finding names the figure, the
@@ -31,8 +31,8 @@ def view_size(text: str) -> tuple[float, float]:
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("path", metavar="PATH", help="a final.svg, a replay folder or a gallery folder")
-    parser.add_argument("--view", default="1400x1000", metavar="WxH",
-                        help="the screen a view is fitted into, px (default 1400x1000)")
+    parser.add_argument("--view", default="1400x900", metavar="WxH",
+                        help="the screen a view is fitted into, px (default 1400x900)")
     parser.add_argument("--format", choices=("text", "json"), default="text",
                         help="text: one line per finding and a table per figure and kind; json: all of it as data")
     parser.add_argument("--summary", action="store_true", help="text: the table only, not every finding")

@@ -5,7 +5,7 @@ figure is one view per step k (steps 1..k drawn, their groups in the states
 the player gives them, through the camera's box for step k when the output
 stores one), the last of them the finished figure as the file has it; a
 frame (``steps/NNN.svg``) is the view of its step.  A view is fitted into
-the stated screen size (default 1400×1000 px), which fixes how many pixels a
+the stated screen size (default 1400×900 px, a typical window), which fixes how many pixels a
 user unit is.
 
 Which elements a view shows depends only on the states of their step groups,
@@ -39,6 +39,7 @@ from collections import defaultdict
 from dataclasses import dataclass
 from typing import Iterable, Iterator
 
+from ...render.camera import PLAYER_FIGURE_PX
 from ...render.lettering import segment_meets_box
 from . import plates
 from .sheet import END_LEVEL, Box, Sheet
@@ -54,7 +55,7 @@ MIN_MARK_PX = 12.0
 #: Marks fainter than this (a finished group's faded helpers) are background: they do not collide.
 MIN_OPACITY = 0.25
 #: The screen a view is fitted into, px.
-VIEW = (1400.0, 1000.0)
+VIEW = (1400.0, 900.0)
 #: Overlaps thinner than this (user units) are a touch, not a collision.
 TOUCH = 0.25
 #: A leader starts at its point and ends at its letter: each end within this many letter heights of them.
@@ -206,15 +207,24 @@ class _Grid:
 
 # --------------------------------------------------------------------------- views
 
-#: The player's page at the stated screen size: its side column, gaps and padding take this many px of the
-#: width, and the figure is at most this fraction of the height (``#figure{max-height:70vh}``).
-PLAYER_SIDE_PX = 415.0
+#: The player's page (construct.render.player's stylesheet) at the stated screen size: the page's padding
+#: (2 × 16 px), the gap (12 px) and the side column (340 px, its padding 2 × 8 and border 2 × 1) take this many px
+#: of the width; the figure is as wide as what is left, of the camera's window's shape (``aspect-ratio``) but at
+#: most this fraction of the screen's height (``max-height:70vh``).  Measured in Chromium: 998 × 630 px at
+#: 1400 × 900, 998 × 630 at 1400 × 1000, 878 × 554 at 1280 × 800.
+PLAYER_SIDE_PX = 402.0
 PLAYER_HEIGHT = 0.7
+PLAYER_ASPECT = PLAYER_FIGURE_PX[1] / PLAYER_FIGURE_PX[0]
 
 
 def player_window(screen: tuple[float, float]) -> tuple[float, float]:
-    """The player's figure window (px) on a screen of *screen* px: (985, 700) at 1400×1000."""
-    return (max(screen[0] - PLAYER_SIDE_PX, 1.0), screen[1] * PLAYER_HEIGHT)
+    """The player's figure box (px) on a screen of *screen* px, as its page lays it out.
+
+    >>> player_window((1400, 900)), [round(x, 1) for x in player_window((1280, 800))]
+    ((998.0, 630.0), [878.0, 554.2])
+    """
+    w = max(screen[0] - PLAYER_SIDE_PX, 1.0)
+    return (w, min(w * PLAYER_ASPECT, screen[1] * PLAYER_HEIGHT))
 
 
 def player_letter_scale(q: float, zoom: float = 1.0, level_zoom: float = 1.0) -> float:
@@ -300,6 +310,10 @@ class _Views:
     def scale(self, k: int) -> float:
         """Screen pixels per user unit in view k: the view fitted into the screen (the player's window)."""
         b = self.box(k)
+        if not self.player and self.sheet.width:
+            # a still figure (a plate) opened in the browser is shown at its own width (a tall one scrolls),
+            # narrowed to the screen
+            return min(self.sheet.width, self.screen[0]) / max(self.sheet.viewbox[2], 1e-12)
         w, h = player_window(self.screen) if self.player else self.screen
         return min(w / max(b[2] - b[0], 1e-12), h / max(b[3] - b[1], 1e-12))
 

@@ -230,6 +230,8 @@ class Sheet:
     plate: bool = False
     #: A plate's stroked lines of every kind (read for plates only: a stepped figure has thousands).
     lines: list[Line] = field(default_factory=list)
+    #: The width the file asks to be shown at (its root's ``width``, px), if it says.
+    width: float | None = None
     #: The looks asked for, by (chain, state, level): every view asks again for the same few.
     _looks: dict[tuple, Look] = field(default_factory=dict, repr=False, compare=False)
 
@@ -533,6 +535,7 @@ def read_sheet(source: str | bytes | Path, name: str, *, data: dict | None = Non
     sheet = Sheet(name=name, viewbox=vb, cascade=cascade)
     sheet.marks_steps = _marks_steps(cascade)
     sheet.plate = "plate" in root.get("class", "").split()
+    sheet.width = _num(root.get("width"), 0.0) or None
     _Reader(sheet).read(root)
     sheet.steps = sorted(set(sheet.steps))
     sheet.n = sheet.steps[-1] if sheet.steps else 0

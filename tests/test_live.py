@@ -201,6 +201,26 @@ def test_the_sweep_measures_what_the_player_page_draws(name, params):
         assert all(texts.get(i) == t for i, t in extra["texts"].items())
 
 
+def test_a_figure_with_hatched_areas_is_measured_at_once_as_value_by_value(monkeypatch):
+    """The page draws areas (hatching and all) from the curves that bound them, so a figure with hatched areas
+    (Baumann's diagram, in a style that hatches) is measured over the whole sweep at once, not a scene per value
+    -- and draws there what a scene per value draws."""
+    from construct.figure import Figure
+    from construct.live import Measure
+
+    c = get("tangential-pressure")
+    built = c.figure(parts=6)
+    measure = Measure(c, built, STYLES["teaching"])
+    values = np.array([1.3, 5.0, 40.0])
+    replay = built.protocol.replay(c.given_sweep(dict(built.replay.givens), "rod_ratio", values, built.protocol.params))
+    alone = [measure(Figure(built.protocol, replay.take(i, whole=True), c.check, c)) for i in range(len(values))]
+    monkeypatch.setattr(Measure, "__call__", lambda *a: pytest.fail("a scene per value"))
+    together = measure.frames(built.protocol, replay, len(values))
+    assert [f[0] for f in together] == [f[0] for f in alone] and [f[3] for f in together] == [f[3] for f in alone]
+    assert np.abs(np.array([f[1] for f in together]) - np.array([f[1] for f in alone])).max() <= 0.01
+    assert np.allclose([f[2] for f in together], [f[2] for f in alone], rtol=1e-12)
+
+
 def test_a_carried_view_still_frames_its_marks():
     """Away from the built value each step's view is the built view carried along with the marks of the
     steps it shows: where the built view held those marks whole, the carried one does at every rod ratio
@@ -241,3 +261,44 @@ def test_a_carried_view_still_frames_its_marks():
                     ys += [got[(mid, "y1", "#")][0], got[(mid, "y2", "#")][0]]
             if xs and list(view) != [0.0, 0.0, full[2], full[3]]:
                 assert holds(view, (min(xs), min(ys), max(xs), max(ys)), slack=1.0), (v, j)
+
+
+def test_a_steady_given_is_one_piece_by_a_scan_of_fresh_builds():
+    """A given a construction names steady (its value never changes which steps it takes) is swept without
+    looking for pieces: held here by the scan it is spared -- fresh builds across its domain at the book's
+    figures take the built figure's steps -- and the scan finds Tafel I's pieces, which the piston force does
+    not name steady."""
+    from construct.constructions import names
+    from construct.live.sweep import reach, scan_pieces
+
+    steady = [(c, g) for c in map(get, names()) for g in c.steady]
+    assert {(c.name, g) for c, g in steady} >= {("crank", "rod_ratio"), ("tangential-pressure", "kappa")}
+    for c, g in steady:
+        for params in c.book_params[:2] or ({},):
+            fig = c.figure(**params)
+            live = next(x for x in live_givens(c, fig) if x.name == g)
+            domain = reach(c, fig, g, live.domain, float(fig.replay.givens[g]))
+            assert [p.protocol for p in scan_pieces(c, fig, g, domain, scan=8)] == [fig.protocol], (c.name, params)
+    c = get("piston-force")
+    assert "rod_length" not in c.steady
+    fig = c.figure()
+    assert len(scan_pieces(c, fig, "rod_length", live_givens(c, fig)[0].domain, scan=8)) > 1
+
+
+def test_an_unlettered_build_takes_the_steps_of_a_lettered_one():
+    """What pieces asks an unlettered build for (its steps' ops, inputs and outputs; what it made) is a lettered
+    build's; only the captions are not yet in the figure's letters."""
+    from construct.kernel.instruments import unlettered
+
+    c = get("effective-work")  # (a build going on from another construction's figure)
+    with unlettered():
+        sketch = c.build(**{**c.defaults, "rod_ratio": 2.0})
+    fig = c.build(**{**c.defaults, "rod_ratio": 2.0})
+    form = lambda p: [(s.op, s.inputs, s.outputs) for s in p.steps]  # noqa: E731
+    assert form(sketch.protocol) == form(fig.protocol)
+    assert sketch.protocol.params.get("captions") != "letters" and fig.protocol.params["captions"] == "letters"
+    assert [s.caption for s in sketch.protocol.steps] != [s.caption for s in fig.protocol.steps]
+    again = fig.protocol.replay(dict(fig.replay.givens))
+    assert list(sketch.replay) == list(again)
+    for name in ("A1", "P.deficit.end", fig.protocol.steps[-1].outputs[0]):
+        assert repr(sketch.replay[name]) == repr(again[name]), name

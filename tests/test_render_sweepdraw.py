@@ -73,8 +73,10 @@ def test_a_sweeps_frames_are_the_frames_of_each_value(name, params):
 
 def test_a_figure_with_hatched_areas_is_left_to_the_drawing():
     """An area is drawn over the sweep as its ring of points; its hatching (a style that hatches) has as many
-    lines as the area's size holds at each value: drawn value by value."""
+    lines as the area's size holds at each value: drawn value by value -- unless the caller draws no hatching
+    (a live page draws its areas from their curves)."""
     c = get("tangential-pressure")
     scene = scene_for(c, c.figure(parts=6))
-    assert sweep_drawable(scene, STYLES["teaching"]) and not sweep_drawable(scene, STYLES["historical"])
+    assert not sweep_drawable(scene, STYLES["historical"]) and not sweep_drawable(scene, STYLES["teaching"])
+    assert sweep_drawable(scene, STYLES["teaching"], hatching=False)
     assert sweep_drawable(scene_for(get("crank"), get("crank").figure(parts=3)))

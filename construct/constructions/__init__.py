@@ -57,6 +57,10 @@ class Construction:
     book_params: tuple[Mapping[str, Any], ...] = ()
     #: Structural params: changing them changes the steps, not just their values.
     structural: tuple[str, ...] = ()
+    #: Continuous givens whose value never changes which steps it takes, only their values (the rod in the
+    #: crank's figure): a live player replays the built protocol over their whole domain without looking for
+    #: pieces (:func:`construct.live.sweep.pieces`; tests/test_live.py scans every one).
+    steady: tuple[str, ...] = ()
     #: Anything else a caller keeps with it (read by no one here).
     extra: Mapping[str, Any] = field(default_factory=dict)
     #: The texts and the figures in them it follows, as a caption cites them.

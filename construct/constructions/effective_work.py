@@ -248,6 +248,7 @@ EFFECTIVE_WORK = register(Construction(
     # keep its player small
     book_params=({"rod_ratio": 5.0, "parts": 9, "kappa": 8.0},),
     structural=("parts", "method", "filling", "compression"),
+    steady=("kappa",),
     cites=(Cite(BAUMANN_1902, "Fig. 27"),),
     wording=effective_work_wording,
     methods=TANGENTIAL.methods,

@@ -23,6 +23,7 @@ primitives only, each as a collapsible group; they are inherited from
 from __future__ import annotations
 
 import contextlib
+import contextvars
 from dataclasses import replace
 from types import MappingProxyType
 from collections.abc import Mapping, Sequence
@@ -31,14 +32,53 @@ from typing import Any, Iterator
 import numpy as np
 
 from .errors import DuplicateName, InvalidParameter, RuleError, StepError, UnknownObject, WrongInput
-from .protocol import EXACT, GIVEN, ROLES, TOOLS, Caption, Protocol, Provenance, Step, compile_step, run_step
+from .protocol import (EXACT, GIVEN, ROLES, TOOLS, Caption, Protocol, Provenance, Replay, Step, compile_step,
+                       run_step)
 from .numeric import as_float, shown
 from .rules import Rule, as_rule
 from .composite import CompositeSteps
 
 
 
-__all__ = ["Builder"]
+__all__ = ["Builder", "unlettered"]
+
+#: Set while builds need only their steps' form (:func:`unlettered`).
+_UNLETTERED: contextvars.ContextVar[bool] = contextvars.ContextVar("unlettered", default=False)
+
+
+@contextlib.contextmanager
+def unlettered() -> Iterator[None]:
+    """Builds inside leave their captions as written, not read into the figure's letters, and their protocol's
+    replay is what the build made as it went (the same ops on the same values), not a second evaluation: a third
+    of a build's time, for a caller that asks only which steps a build takes (a live player's pieces:
+    :func:`construct.live.sweep.pieces`).  The protocol says so (``captions`` is not ``"letters"``).
+
+    >>> with unlettered():
+    ...     b = Builder("demo", givens={}); _ = b.given_point("A", 0.0, 0.0)
+    ...     b.protocol().params.get("captions")
+    >>> b.protocol().params["captions"]
+    'letters'
+    """
+    token = _UNLETTERED.set(True)
+    try:
+        yield
+    finally:
+        _UNLETTERED.reset(token)
+
+
+class _Sketch(Protocol):
+    """An unlettered build's protocol (:func:`unlettered`): its replay at the build's own givens is what the
+    build made."""
+
+    def __init__(self, construction: str, params: Any, steps: tuple, replayable: tuple, made: dict[str, Any]):
+        super().__init__(construction, params, steps, replayable)
+        object.__setattr__(self, "_made", made)
+
+    def replay(self, givens: Mapping[str, Any] | None = None, *, upto: int | None = None) -> Replay:
+        if upto is None and (givens is None or dict(givens) == dict(self.params["givens"])):
+            return Replay(self, dict(self._made), self.params["givens"])
+        return super().replay(givens, upto=upto)
+
 
 class Builder(CompositeSteps):
     """Records and evaluates a construction step by step.
@@ -371,6 +411,9 @@ class Builder(CompositeSteps):
             params["group_titles"] = dict(sorted(self._group_titles.items()))
         if self._called:  # what lines and circles are called, read again for the group titles
             params["called"] = {n: list(t) for n, t in sorted(self._called.items())}
+        if _UNLETTERED.get():
+            return _Sketch(self.construction, MappingProxyType(params), tuple(self.steps), self.replayable,
+                           dict(self.objects))
         # The captions name what the figure letters (12, B, M1), not the objects' internal names; steps taken
         # over from another protocol (continuing) are lettered already.
         lettered = letter_steps(self.steps, self.objects, self._called)

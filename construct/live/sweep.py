@@ -42,12 +42,13 @@ from ..constructions import Construction
 from ..constructions.domain import KAPPA_RANGE, ROD_RATIO, Domain
 from ..figure import Figure
 from ..kernel.errors import InvalidParameter
+from ..kernel.instruments import unlettered
 from ..render.styles import STYLES
 from ..render.wire import arc_flags, blend, radii
 from .measure import Measure
 
-__all__ = ["LiveGiven", "LiveSweep", "Piece", "live_givens", "live_sweep", "pieces", "reach", "check_picks",
-           "REFINE_PX", "QUANTUM_PX", "MIN_CELL", "CHECK_VALUES"]
+__all__ = ["LiveGiven", "LiveSweep", "Piece", "live_givens", "live_sweep", "pieces", "scan_pieces", "reach",
+           "check_picks", "REFINE_PX", "QUANTUM_PX", "MIN_CELL", "CHECK_VALUES"]
 
 
 @dataclass(frozen=True)
@@ -178,6 +179,9 @@ def pieces(construction: Construction, figure: Figure, given: str, domain: Domai
     build everywhere); several where it does (Tafel I's piston-force pieces run through the points between their
     corners: which points those are depends on the rod).  Each piece's protocol is built inside it (the built
     figure's own in its piece); the changes are found from FORM_SCAN fresh builds, then by bisection in log10.
+    The builds that only ask for the steps' form are not lettered (:func:`~construct.kernel.instruments.unlettered`:
+    a third of a build); a given the construction names in :attr:`~construct.constructions.Construction.steady` is one
+    piece without a build (tests/test_live.py scans them).
 
     >>> from construct.constructions import get
     >>> c = get("crank"); fig = c.figure(parts=3)
@@ -186,26 +190,35 @@ def pieces(construction: Construction, figure: Figure, given: str, domain: Domai
 
     (tests/test_render_live_browser.py drags Tafel I's eight pieces.)
     """
+    if given in construction.steady:
+        return [Piece(domain.low, domain.high, figure.protocol)]
+    return scan_pieces(construction, figure, given, domain)
+
+
+def scan_pieces(construction: Construction, figure: Figure, given: str, domain: Domain,
+                scan: int = FORM_SCAN) -> list[Piece]:
+    """:func:`pieces` found by fresh builds at *scan* values, whatever the construction says of *given*."""
     givens, params = dict(figure.replay.givens), figure.protocol.params
     kw = {k: givens[k] if k in givens else params[k] if isinstance(params.get(k), (int, float, str, bool))
           else construction.defaults[k] for k in construction.defaults}
     built = _form(figure.protocol)
-    made: dict[float, Any] = {}  # log10 of a value -> the protocol a fresh build makes there (None: none)
+    made: dict[float, tuple | None] = {}  # log10 of a value -> the steps' form a fresh build takes there (None: none)
+    value = lambda u: float(min(max(10 ** u, domain.low), domain.high))  # noqa: E731
 
     def form(u: float) -> tuple | None:
         if u not in made:
             try:
-                v = float(min(max(10 ** u, domain.low), domain.high))
-                made[u] = construction.build(**{**kw, given: v}).protocol
+                with unlettered():
+                    made[u] = _form(construction.build(**{**kw, given: value(u)}).protocol)
             except InvalidParameter:
                 made[u] = None
-        return None if made[u] is None else _form(made[u])
+        return made[u]
 
     initial = math.log10(float(givens[given]))
     if form(initial) != built:  # the figure is not what its givens build (a protocol replayed by hand): as it is
         return [Piece(domain.low, domain.high, figure.protocol)]
     lo, hi = math.log10(domain.low), math.log10(domain.high)
-    us = sorted(set(np.linspace(lo, hi, FORM_SCAN).tolist()) | {initial})
+    us = sorted(set(np.linspace(lo, hi, scan).tolist()) | {initial})
     cuts: list[tuple[float, float]] = []
 
     def split(a: float, b: float) -> None:  # every change of form between a and b
@@ -224,13 +237,12 @@ def pieces(construction: Construction, figure: Figure, given: str, domain: Domai
     if not cuts:
         return [Piece(domain.low, domain.high, figure.protocol)]
     ends = [lo] + [x for a, b in cuts for x in (a, b)] + [hi]
-    out = []
-    for a, b in zip(ends[0::2], ends[1::2]):
-        if form(a) is None:  # a build that fails inside the domain (reach found it holds): the figure as it is
-            return [Piece(domain.low, domain.high, figure.protocol)]
-        out.append(Piece(domain.low if a == lo else 10 ** a, domain.high if b == hi else 10 ** b,
-                         figure.protocol if form(a) == built else made[a]))
-    return out
+    if any(form(a) is None for a in ends[0::2]):  # a build that fails inside the domain (reach found it holds)
+        return [Piece(domain.low, domain.high, figure.protocol)]
+    # each other piece's protocol: one lettered build inside it
+    return [Piece(domain.low if a == lo else 10 ** a, domain.high if b == hi else 10 ** b,
+                  figure.protocol if form(a) == built else construction.build(**{**kw, given: value(a)}).protocol)
+            for a, b in zip(ends[0::2], ends[1::2])]
 
 
 @functools.lru_cache(maxsize=4)

@@ -13,6 +13,9 @@ neighbours than about us) and the bytes written.  Targets:
   (timed in this process, the figure built beforehand) within 0.1 ms a step;
 * ``construct gallery`` within 5 s, ``construct verify`` within 5 s (two cores).
 
+Beside them, what the gallery's live players' data costs (:func:`live_costs`: the CPU time of
+:func:`construct.live.live_pages` for each, in this process).
+
 Nothing here is a test: the numbers depend on the machine.
 """
 
@@ -29,7 +32,7 @@ from typing import Any
 
 from ..constructions import get
 
-__all__ = ["run_output_bench", "output_verdicts", "TARGETS"]
+__all__ = ["run_output_bench", "output_verdicts", "live_costs", "TARGETS"]
 
 TARGETS = {"replay_360_s": 3.0, "replay_360_mb": 30.0, "linear_ratio": 5.0, "gallery_s": 5.0, "verify_s": 5.0,
            "gallery_mb": 25.0, "render_step_s": 0.1e-3}
@@ -70,6 +73,8 @@ def run_output_bench() -> list[dict[str, Any]]:
             if folder:
                 r["bytes"] = _size(root / folder)
             out.append(r)
+    out.append({"case": "live", "command": "the live players' data (live_pages, every gallery player)",
+                "players": (costs := live_costs()), "wall_s": float("nan"), "cpu_s": sum(costs.values())})
     from .guard import render_per_step
 
     crank = get("crank")
@@ -79,6 +84,27 @@ def run_output_bench() -> list[dict[str, Any]]:
     out.append({"case": "render_3600", "command": "rendering of replay crank --parts 3600 --method dividers",
                 "wall_s": per * len(fig.protocol.steps), "cpu_s": time.process_time() - t,
                 "steps": len(fig.protocol.steps), "per_step_s": per})
+    return out
+
+
+def live_costs() -> dict[str, float]:
+    """The CPU time (s) of each gallery live player's data (:func:`construct.live.live_pages`, the figure and
+    its drawing made beforehand), by construction."""
+    from ..gallery import LIVE_PLAYERS, gallery_plan
+    from ..live import live_pages
+    from ..render.output import scene_for
+    from ..render.styles import STYLES
+    from ..render.svg import Drawing
+
+    style, out = STYLES["teaching"], {}
+    for name, params in gallery_plan():
+        if name in LIVE_PLAYERS and name not in out:
+            c = get(name)
+            fig = c.figure(**params)
+            drawing = Drawing(scene_for(c, fig, ending=style.camera), style)
+            t = time.process_time()
+            live_pages(c, fig, style, drawing=drawing)
+            out[name] = time.process_time() - t
     return out
 
 
@@ -112,5 +138,9 @@ def output_verdicts(results: list[dict[str, Any]]) -> list[str]:
     v = by["verify"]
     lines.append(f"target construct verify <= {TARGETS['verify_s']:g} s: {v['wall_s']:.2f} s wall "
                  f"({v['cpu_s']:.2f} s CPU; exit {v['exit']}) -> {verdict(v['wall_s'] <= TARGETS['verify_s'])}")
+    if "live" in by:
+        costs = by["live"]["players"]
+        lines.append(f"(the live players' data: {sum(costs.values()):.1f} s CPU: "
+                     + ", ".join(f"{k} {v:.1f}" for k, v in sorted(costs.items(), key=lambda kv: -kv[1])) + ")")
     lines.append(f"(machine: {os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.2f})")
     return lines

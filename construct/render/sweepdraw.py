@@ -37,11 +37,12 @@ from .styles import Style
 __all__ = ["SweepDrawing", "sweep_drawable"]
 
 
-def sweep_drawable(scene: Scene, style: Style | None = None) -> bool:
+def sweep_drawable(scene: Scene, style: Style | None = None, *, hatching: bool = True) -> bool:
     """Can :class:`SweepDrawing` draw *scene*'s figure over a sweep (points, lines, circles, arcs, curves and
     areas on axes that may be broken; no plate furniture, no hatching: a style that hatches draws its hatching
-    value by value, as many lines as each area's size holds)?"""
-    hatched = style is None or style.hatch
+    value by value, as many lines as each area's size holds)?  *hatching* False: the caller draws no hatching
+    (a live page draws its areas, hatching and all, from the curves that bound them), an area is its extent."""
+    hatched = hatching and (style is None or style.hatch)
     return not scene.furniture and not (hatched and any(m.kind is MarkKind.AREA for m in scene.marks))
 
 

@@ -67,6 +67,8 @@ def run(args) -> int:
             print(json.dumps(found, indent=1))
             return met(output_verdicts(found))
         for r in found:
+            if r["case"] == "live":
+                continue  # (its own line below: each player's cost)
             size = f"  {r['bytes'] / 1e6:8.2f} MB" if "bytes" in r else ""
             print(f"{r['command']:58s} {r['wall_s']:7.2f} s wall {r['cpu_s']:7.2f} s CPU{size}")
         return met(output_verdicts(found), show=True)

@@ -109,6 +109,7 @@ INERTIA = register(Construction(
     defaults={"rod_ratio": 5.0, "parts": 18, "method": "auto", "r": 1.0, "pressure_ratio": 1.0, "pressure_unit": 0.8},
     book_params=({"rod_ratio": 4.0}, {"rod_ratio": 5.0}, {"rod_ratio": 6.0}),
     structural=("parts", "method"),
+    steady=("rod_ratio",),
     cites=(Cite(ANHANG_II, "Fig. 78/79, Tabelle 1"),),
     wording=inertia_wording,
     methods=DIVISION_NAMES,

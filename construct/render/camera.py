@@ -662,7 +662,9 @@ def clear_edges(views: list[View], full: View, letters_at: Letters) -> list[View
                 z = zoom_of((0.0, 0.0, w, h), full)  # the window's magnification
                 if z <= 1.0:
                     break
-                g = _letter_cut((cx - w / 2, cy - h / 2, w, h), full, level(z), letters_at(level(z)))
+                # the letters the view cuts where it will stand: moved onto the canvas (clip_view), a view grown
+                # about a point near an edge has its far side further out than its centre says
+                g = _letter_cut(clip_view(cx, cy, w, h, full), full, level(z), letters_at(level(z)))
                 if g == 1.0:
                     break
                 w, h = w * g, h * g

@@ -413,10 +413,15 @@ def test_ctrl_c_during_a_commit_waits_until_the_new_files_are_all_in(tmp_path, m
         return real(src, dst)
 
     monkeypatch.setattr(output.os, "replace", interrupted)
-    with pytest.raises(KeyboardInterrupt):
-        with output.staged_output(target, recognise=lambda p: True, described="ours") as stage:
-            for name in ("animated.svg", "final.svg", "player.html"):
-                (stage / name).write_text("new " + name)
+    # Ctrl-C as a terminal delivers it, whatever this process inherited (a test worker may ignore SIGINT)
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            with output.staged_output(target, recognise=lambda p: True, described="ours") as stage:
+                for name in ("animated.svg", "final.svg", "player.html"):
+                    (stage / name).write_text("new " + name)
+    finally:
+        signal.signal(signal.SIGINT, previous)
     assert sent and {p.read_text() for p in target.iterdir()} == {"new animated.svg", "new final.svg",
                                                                   "new player.html"}
 

@@ -219,9 +219,8 @@ class Measure:
         whole = (w * s >= W) & (h * s >= H)
         cx = (box[0] + box[2]) / 2 + (x + w / 2 - (b0[0] + b0[2]) / 2) * s
         cy = (box[1] + box[3]) / 2 + (y + h / 2 - (b0[1] + b0[3]) / 2) * s
-        vw, vh = w * s, h * s  # camera.clip_view over the sweep
-        view = [np.where(vw >= W, 0.0, cx - vw / 2), np.where(vh >= H, 0.0, cy - vh / 2),
-                np.minimum(vw, W), np.minimum(vh, H)]
+        vw, vh = np.minimum(w * s, W), np.minimum(h * s, H)  # camera.clip_view over the sweep: on the canvas
+        view = [np.clip(cx - vw / 2, 0.0, W - vw), np.clip(cy - vh / 2, 0.0, H - vh), vw, vh]
         return [np.where(whole, f, np.round(v, 2) + 0.0) for f, v in zip((zero, zero, W, H), view)]
 
     def __call__(self, figure: Figure) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:

@@ -157,18 +157,18 @@ class Builder(CompositeSteps):
         if not isinstance(construction, str) or not construction:
             raise InvalidParameter(f"a construction is named by a non-empty string, got {construction!r}")
         if not isinstance(givens, Mapping):
-            raise InvalidParameter(f"givens are a mapping of names to numbers, got {_shown(givens)}")
+            raise InvalidParameter(f"givens are a mapping of names to numbers, got {shown(givens)}")
         for key, value in givens.items():
             _check_given(key, value)
         if params is not None and not isinstance(params, Mapping):
-            raise InvalidParameter(f"params are a mapping of names to values, got {_shown(params)}")
+            raise InvalidParameter(f"params are a mapping of names to values, got {shown(params)}")
         if replayable is not None:
             # a bare string would be read letter by letter
             if isinstance(replayable, str) or not isinstance(replayable, Sequence):
-                raise InvalidParameter(f"replayable is a list of names of givens, got {_shown(replayable)}")
+                raise InvalidParameter(f"replayable is a list of names of givens, got {shown(replayable)}")
             for name in replayable:
                 if not isinstance(name, str) or name not in givens:
-                    raise InvalidParameter(f"replayable names givens of {construction!r}; {_shown(name)} is none "
+                    raise InvalidParameter(f"replayable names givens of {construction!r}; {shown(name)} is none "
                                            f"(it has {', '.join(givens) or 'no givens'})")
         self.construction = construction
         self.givens = dict(givens)
@@ -294,7 +294,7 @@ class Builder(CompositeSteps):
         for name in inputs:
             if not isinstance(name, str):
                 raise WrongInput(f"step {index} ({tool}: {en}): objects are passed by name (the string a Builder "
-                                 f"method returns), got {_shown(name)}", **where)
+                                 f"method returns), got {shown(name)}", **where)
         for name in outputs:
             if not isinstance(name, str) or not name:
                 raise StepError(f"step {index} ({tool}: {en}): object names are non-empty strings, got {name!r}", **where)
@@ -360,7 +360,7 @@ class Builder(CompositeSteps):
         """
         for text in (de, en):
             if not isinstance(text, str) or not text:
-                raise InvalidParameter(f"what {name!r} is called is text, got {_shown(text)}")
+                raise InvalidParameter(f"what {name!r} is called is text, got {shown(text)}")
         if not isinstance(name, str) or name not in self._maker:
             raise UnknownObject(f"no object {name!r} to call in {self.construction!r}")
         self._called[name] = (de, en)
@@ -374,7 +374,7 @@ class Builder(CompositeSteps):
         (('P12', '12'),)
         """
         if not isinstance(text, str):
-            raise InvalidParameter(f"the label of {name!r} is text, got {_shown(text)}")
+            raise InvalidParameter(f"the label of {name!r} is text, got {shown(text)}")
         i = self._maker.get(name) if isinstance(name, str) else None
         if i is None:
             raise UnknownObject(f"no object {name!r} to label in {self.construction!r}")
@@ -443,7 +443,7 @@ class Builder(CompositeSteps):
         10.0
         """
         if isinstance(product, str) or not isinstance(product, Sequence):
-            raise InvalidParameter(f"given_length {name!r}: product is a list of names of givens, got {_shown(product)}")
+            raise InvalidParameter(f"given_length {name!r}: product is a list of names of givens, got {shown(product)}")
         self.record("given", "given_length", (), (name,), {"product": tuple(product), "factor": factor},
                     de or f"Länge {name} gegeben", en or f"length {name} given")
         return name
@@ -698,14 +698,10 @@ class Builder(CompositeSteps):
         return name
 
 
-def _shown(value: Any) -> str:
-    return shown(value)
-
-
 def _check_given(name: Any, value: Any) -> None:
     """A given is a finite number (or, for a sweep, finite numbers), named by a string."""
     if not isinstance(name, str) or not name:
-        raise InvalidParameter(f"givens are named by non-empty strings, got {_shown(name)}")
+        raise InvalidParameter(f"givens are named by non-empty strings, got {shown(name)}")
     values = value if isinstance(value, (list, tuple, np.ndarray)) else (value,)
     for v in np.ravel(np.asarray(values, dtype=object)):
         as_float(v, f"the given {shown(name)}")
@@ -718,18 +714,18 @@ def _record_problem(tool: Any, inputs: Any, outputs: Any, de: Any, en: Any, role
     Every step of every build passes here: the usual types are let through first, without the ABC checks.
     """
     if tool not in TOOLS:
-        return f"unknown instrument {_shown(tool)}; the instruments are {', '.join(TOOLS)}"
+        return f"unknown instrument {shown(tool)}; the instruments are {', '.join(TOOLS)}"
     if role not in ROLES:
-        return f"unknown role {_shown(role)}; the roles are {', '.join(ROLES)}"
+        return f"unknown role {shown(role)}; the roles are {', '.join(ROLES)}"
     for what, names in (("inputs", inputs), ("outputs", outputs)):
         if type(names) is not tuple and type(names) is not list and (
                 isinstance(names, str) or not isinstance(names, Sequence)):
-            return f"{what} are a list of object names, got {_shown(names)}"
+            return f"{what} are a list of object names, got {shown(names)}"
     if not isinstance(de, str) or not isinstance(en, str):
-        return f"captions are text, got {_shown(de)} and {_shown(en)}"
+        return f"captions are text, got {shown(de)} and {shown(en)}"
     if labels is not None and (not isinstance(labels, Mapping) or
                                not all(isinstance(k, str) and isinstance(v, str) for k, v in labels.items())):
-        return f"labels map object names to text, got {_shown(labels)}"
+        return f"labels map object names to text, got {shown(labels)}"
     if provenance is not None and not isinstance(provenance, Provenance):
-        return f"a provenance is a Provenance, got {_shown(provenance)}"
+        return f"a provenance is a Provenance, got {shown(provenance)}"
     return None

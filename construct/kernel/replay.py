@@ -213,10 +213,6 @@ def sweep_givens(givens: Mapping[str, Any]) -> tuple[dict[str, Any], Any]:
     return out, ArrayMath(n)
 
 
-def _shown(value: Any) -> str:
-    return shown(value)
-
-
 def _given_number(name: Any, value: Any) -> float:
     """A given as a float: a finite real number, else an InvalidParameter naming it."""
     if type(value) is float and math.isfinite(value):
@@ -229,7 +225,7 @@ def _given_array(name: Any, value: Any) -> Any:
     numeric = (value.dtype.kind in "fiu" if isinstance(value, np.ndarray)
                else all(isinstance(v, numbers.Real) and not isinstance(v, bool) for v in value))
     if not numeric:
-        raise InvalidParameter(f"the swept given {shown(name)} must be numbers, got {_shown(value)}")
+        raise InvalidParameter(f"the swept given {shown(name)} must be numbers, got {shown(value)}")
     if not isinstance(value, np.ndarray) or value.dtype.kind == "O":
         for v in value:  # a huge int has no float: refused here, not by an OverflowError in numpy
             as_float(v, f"the swept given {shown(name)}")
@@ -295,7 +291,7 @@ class Replay(Mapping[str, Any]):
         try:
             return self._objects[name]
         except (KeyError, TypeError):  # TypeError: an unhashable "name"
-            raise UnknownObject(f"the replay of {self.protocol.construction!r} has no object {_shown(name)}",
+            raise UnknownObject(f"the replay of {self.protocol.construction!r} has no object {shown(name)}",
                                 name=name) from None
 
     def __contains__(self, name: object) -> bool:  # without building the error a miss in __getitem__ makes
@@ -330,7 +326,7 @@ class Replay(Mapping[str, Any]):
         *whole* takes them all at once, for a reader of every object (a drawing reads each several times).
         """
         if isinstance(i, bool) or not isinstance(i, numbers.Integral):
-            raise InvalidParameter(f"a set of a sweep is taken by its number, got {_shown(i)}")
+            raise InvalidParameter(f"a set of a sweep is taken by its number, got {shown(i)}")
         if not self.size:
             return self
         if not -self.size <= i < self.size:

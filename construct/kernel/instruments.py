@@ -307,6 +307,8 @@ class Builder(CompositeSteps):
                 params["rule"] = as_rule(params["rule"]).as_tuple()  # stored as its JSON form
             except RuleError as exc:
                 raise exc.at_step(index, tool, op, en) from None
+        if provenance is None and all(name in self.provenance for name in inputs):
+            provenance = self._inherited(tool, inputs)  # (an input no step made is refused below)
         step = Step(index, tool, op, tuple(inputs), tuple(outputs), MappingProxyType(params), Caption(de, en),
                     provenance or EXACT, tuple(self._group), role, tuple(sorted((labels or {}).items())))
         entry = compile_step(step)  # objects kept by name: the builder's dict is the environment
@@ -324,8 +326,6 @@ class Builder(CompositeSteps):
         if len(values) != len(outputs):
             raise StepError(f"step {index} ({tool}: {en}): {op} makes {len(values)} objects, "
                             f"{len(outputs)} names were given", **where)
-        if provenance is None:
-            step = replace(step, provenance=self._inherited(tool, inputs))
         self.steps.append(step)
         for name in outputs:
             self.provenance[name] = step.provenance

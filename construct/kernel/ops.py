@@ -36,6 +36,8 @@ op makes (``outputs``) and the parameters it reads with their kinds
 
 from __future__ import annotations
 
+import functools
+
 from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping
 
@@ -140,11 +142,15 @@ class Op:
     #: The parameters it reads: name -> kind (PARAM_KINDS); a trailing "?" on the name: may be left out.
     params: Mapping[str, str] = field(default_factory=dict, hash=False)
 
+    @functools.cached_property
+    def _kinds(self) -> tuple[bool, tuple[str, ...]]:
+        """Whether the last input kind repeats, and the kinds without the ``*`` (asked at every step of a build)."""
+        kinds = self.inputs
+        return bool(kinds) and kinds[-1].endswith("*"), tuple(k.rstrip("*") for k in kinds)
+
     def check_inputs(self, args: list) -> str | None:
         """None when *args* fit the declared kinds, else what is wrong (for the step's error)."""
-        kinds = self.inputs
-        variadic = bool(kinds) and kinds[-1].endswith("*")
-        fixed = [k.rstrip("*") for k in kinds]
+        variadic, fixed = self._kinds
         if variadic:
             if len(args) < len(fixed) - 1:
                 return f"takes at least {len(fixed) - 1} inputs, got {len(args)}"

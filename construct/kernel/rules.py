@@ -25,6 +25,7 @@ construct.kernel.errors.RuleError: a rule is a value like left_of('A', 'B') or a
 
 from __future__ import annotations
 
+import functools
 from typing import Any, Sequence
 
 from .errors import RuleError, did_you_mean
@@ -179,6 +180,20 @@ def as_rule(rule: Any) -> Rule:
     """A Rule from a Rule or from its JSON list / tuple form (the form protocols store)."""
     if isinstance(rule, Rule):
         return rule
+    if type(rule) is tuple and all(type(part) is str for part in rule):
+        # names only (a number of a fixed direction is kept as written: 1 and 1.0 are one key): made once, a
+        # builder's every intersection asks twice (its step stores the form, the step's entry reads it)
+        return _names_rule(rule)
+    return _rule(rule)
+
+
+@functools.lru_cache(maxsize=4096)
+def _names_rule(rule: tuple[str, ...]) -> Rule:
+    """:func:`as_rule` of a tuple of names (a Rule is immutable)."""
+    return _rule(rule)
+
+
+def _rule(rule: Any) -> Rule:
     if isinstance(rule, str) or not isinstance(rule, (list, tuple)) or not rule:
         raise RuleError(f"a rule is a value like left_of('A', 'B') or a list like ['left', 'A', 'B'], got {rule!r}")
     name = rule[0]

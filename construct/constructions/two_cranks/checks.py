@@ -158,19 +158,24 @@ def _extremes_of(points, O, D0, r: float, gain: float, start: float, samples: in
     from ...kernel.geometry import SCALAR
 
     curve, = closed_french_curve_op(tuple(points), {"points": len(points)}, {}, (), SCALAR)
-    pts = curve.curve_points(samples)
+    # the curve's points as (x, y) floats (curve_points' numbers, without a Point each: a sweep's checks read
+    # 1,500 of them at every value)
+    xs, ys = curve.sample(samples)
+    pts = list(zip(xs.tolist(), ys.tolist()))
+    turn = 2.0 * math.pi
     if within is not None:
         lo_a, hi_a = within
-        pts = [p for p in pts if lo_a - 1e-12 <= (angle_at(O, D0, p) - start) % (2.0 * math.pi) <= hi_a + 1e-12
-               or (hi_a >= 2.0 * math.pi - 1e-12 and (angle_at(O, D0, p) - start) % (2.0 * math.pi) < 1e-12)]
-    radii = [O.distance(p) / r for p in pts]
+        pts = [p for p, a in ((p, (angle_at(O, D0, p) - start) % turn) for p in pts)
+               if lo_a - 1e-12 <= a <= hi_a + 1e-12 or (hi_a >= turn - 1e-12 and a < 1e-12)]
+    ox, oy, hypot = O.x, O.y, math.hypot
+    radii = [hypot(x - ox, y - oy) / r for x, y in pts]  # O.distance(p) / r
     lo, hi = radii.index(min(radii)), radii.index(max(radii))
     out = {"v_min": radii[lo], "v_max": radii[hi]}
     # the least e sits at the least radius when the rods drive, at the greatest when the shaft drives pumps
     at_min, at_max = (lo, hi) if gain > 0 else (hi, lo)
     out["e_min"], out["e_max"] = (radii[at_min] - 1.0) / gain, (radii[at_max] - 1.0) / gain
-    out["alpha_min"] = (angle_at(O, D0, pts[at_min]) - start) % (2.0 * math.pi)
-    out["alpha_max"] = (angle_at(O, D0, pts[at_max]) - start) % (2.0 * math.pi)
+    out["alpha_min"] = (angle_at(O, D0, pts[at_min]) - start) % turn
+    out["alpha_max"] = (angle_at(O, D0, pts[at_max]) - start) % turn
     return out
 
 

@@ -50,6 +50,8 @@ _TURNS_FAR = (0,) + tuple(t for a in range(15, 180, 15) for t in (a, -a)) + (180
 _DISTANCES = (0.9, 1.45, 2.1, 2.8, 3.6)
 #: From this distance (letter heights) on, a letter is tied to its point by a leader line.
 LEADER_FROM = 2.0
+#: A cell of the collision grid holding more boxes than this is asked with numpy, all its boxes at once.
+_CROWD = 128
 #: Width of the paper-coloured halo drawn beneath every letter (styles.Style.css: stroke-width 3.5px).
 HALO_PX = 3.5
 #: The font a letter is measured in when none is named (the teaching style's).
@@ -165,32 +167,51 @@ class _Grid:
     def __init__(self, cell: float):
         self.cell = cell
         self.cells: dict[tuple[int, int], list[tuple[float, float, float, float]]] = {}
+        #: a crowded cell's boxes as one array (asked at once), with how many boxes it held when made
+        self.arrays: dict[tuple[int, int], Any] = {}
+        #: the box that last answered "taken": the next spot tried is near, and it likely takes that too
+        self.last: tuple[float, float, float, float] = (math.inf, math.inf, -math.inf, -math.inf)
 
     def free(self, b) -> bool:
         c, cells, floor = self.cell, self.cells, math.floor
         x0, y0, x1, y1 = b
+        o = self.last
+        if x0 < o[2] and o[0] < x1 and y0 < o[3] and o[1] < y1:
+            return False
         # The cell of the box's centre first: the box covers most of it, so what is filed there most likely
         # meets it (a spot in a dense crowd of points is answered by the first boxes looked at, not after the
         # hundred filed in a corner cell it barely reaches).
         centre = (floor((x0 + x1) / 2 / c), floor((y0 + y1) / 2 / c))
         got = cells.get(centre)
-        if got:
-            for k, o in enumerate(got):
-                if x0 < o[2] and o[0] < x1 and y0 < o[3] and o[1] < y1:
-                    if k:
-                        got[0], got[k] = o, got[0]
-                    return False
+        if got and self._taken(centre, got, x0, y0, x1, y1):
+            return False
         js = range(floor(y0 / c), floor(y1 / c) + 1)
         for i in range(floor(x0 / c), floor(x1 / c) + 1):
             for j in js:
                 got = cells.get((i, j))
-                if got and (i, j) != centre:
-                    for k, o in enumerate(got):
-                        if x0 < o[2] and o[0] < x1 and y0 < o[3] and o[1] < y1:
-                            if k:  # to the front of its cell: the next spot tried is near, and it likely blocks that too
-                                got[0], got[k] = o, got[0]
-                            return False
+                if got and (i, j) != centre and self._taken((i, j), got, x0, y0, x1, y1):
+                    return False
         return True
+
+    def _taken(self, key: tuple[int, int], got: list, x0: float, y0: float, x1: float, y1: float) -> bool:
+        """Does a box filed in cell *key* (its boxes *got*) meet the box (x0, y0, x1, y1)?"""
+        o = got[0]
+        if x0 < o[2] and o[0] < x1 and y0 < o[3] and o[1] < y1:
+            self.last = o
+            return True
+        if len(got) > _CROWD:
+            # hundreds of points in one cell (3600 piston positions on a stroke): asked at once
+            a = self.arrays.get(key)
+            if a is None or len(a) != len(got):
+                a = self.arrays[key] = np.array(got)
+            return bool(((x0 < a[:, 2]) & (a[:, 0] < x1) & (y0 < a[:, 3]) & (a[:, 1] < y1)).any())
+        for k, o in enumerate(got):
+            if x0 < o[2] and o[0] < x1 and y0 < o[3] and o[1] < y1:
+                # to the front of its cell: the next spot tried is near, and it likely takes that too
+                got[0], got[k] = o, got[0]
+                self.last = o
+                return True
+        return False
 
     def add(self, b) -> None:
         c, cells = self.cell, self.cells

@@ -321,7 +321,7 @@ def test_lint_measures_the_players_figure_as_the_page_shows_it(browser, tmp_path
     views in (and the camera shapes them for), and letters of a step whose work is spread over the figure's
     width (Fig. 28's b₁ = 0,02 r₁ worked along r₁) are at least lint's 9 px on the page."""
     from construct.regress.lint import MIN_LABEL_PX, VIEW
-    from construct.regress.lint.checks import player_window
+    from construct.regress.lint.views import player_window
     from construct.render.camera import PLAYER_FIGURE_PX
 
     c = get("flywheel-rim")

@@ -184,7 +184,7 @@ def _inset_points(d: Drawing, k: int, box: Sequence[float], points: dict[str, An
 
 
 def _inset(d: Drawing) -> str:
-    """The inset of a sliver or a cluster (:func:`construct.render.camera.step_insets`): the figure's lines and
+    """The inset of a sliver or a cluster (:func:`construct.render.insets.step_insets`): the figure's lines and
     areas again, magnified (a ``<use>`` of each of the figure's layers, which show each step as the figure
     does), a dot where the step works, and the step's points with their letters (:func:`_inset_points`)."""
     f = d.doc.factory

@@ -34,9 +34,11 @@ from typing import Any, Callable, Sequence
 
 from . import captions as _captions
 from . import svgdoc
-from .camera import clear_edges, clear_tag_edges, level, ring_round, step_insets, step_views
+from .camera import level, step_views
+from .edges import clear_edges, clear_tag_edges
 from .captions import Captions, PlateCaption
 from .end_state import END_MARGIN_PX, EndView, end_furniture, end_sheet, lay_out_end, own_strokes, wrapped
+from .insets import ring_round, step_insets
 from .gaps import CLEARANCE, Gap, GapFactory, gapped_hatch, gapped_mark
 from .lettering import HALO_PX, LEADER_FROM, text_box, text_width
 from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
@@ -157,7 +159,7 @@ class Drawing:
 
     @property
     def insets(self) -> list[tuple[float, float, float, float] | None]:
-        """Per step, the region the player magnifies in an inset (:func:`construct.render.camera.step_insets`)."""
+        """Per step, the region the player magnifies in an inset (:func:`construct.render.insets.step_insets`)."""
         got = self.__dict__.get("_insets")
         if got is None:
             got = self.__dict__["_insets"] = (step_insets(self.scene, self.views, self.full_view, self.vp.px) if self.style.camera

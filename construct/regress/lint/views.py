@@ -21,7 +21,8 @@ from dataclasses import dataclass
 from typing import Iterable, Iterator
 
 from ...render.camera import PLAYER_FIGURE_PX
-from .sheet import END_LEVEL, Box, Sheet
+from .player import END_LEVEL
+from .sheet import Box, Sheet
 
 __all__ = ["Runs", "merge_runs", "both_runs", "runs_without", "in_runs", "runs_of", "steps_of", "view_total",
            "boxes_meet", "Layout", "Views", "player_window", "player_letter_scale", "zoom_level", "MIN_OPACITY",

@@ -80,7 +80,7 @@ from . import Construction, Figure, bounded, register, rod_ratio_param
 from .crank import build_frame, rod_arcs
 from .domain import (COMPRESSION_RATIO, CUTOFF_RATIO, DRAWN_LENGTH, ENGINE_PRESSURE, EXHAUST_PRESSURE,
                      POLYTROPE_EXPONENT, PRESSURE_RATIO, RELEASE, SUCTION_PRESSURE)
-from .indicator import square
+from .indicator_parts import square
 from .scales import scale_furniture
 from .inertia.build import inertia_scale, inertia_value, value_kind
 from .phrases import COMBUSTION, Cite, number, ratio

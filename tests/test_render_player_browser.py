@@ -153,6 +153,26 @@ def test_player_steps_show_exactly_the_steps_so_far(browser, player):
     page.close()
 
 
+def test_stepping_scrolls_the_step_list_and_never_the_page(browser, player):
+    """The list beside the figure follows the step; the page stays put, so the title and the figure do not
+    jump under the teacher's pointer (scrollIntoView moved the window too, by a line at every step)."""
+    fig, path = player
+    page = browser.new_page(viewport={"width": 1400, "height": 420})  # a page taller than the window
+    page.goto(path.as_uri())
+    assert page.evaluate("document.documentElement.scrollHeight") > 420
+    for key in ("End", "Home", "End", "ArrowLeft", "ArrowLeft"):
+        page.keyboard.press(key)
+        assert page.evaluate("window.scrollY") == 0
+        inside = page.evaluate("""() => {
+            const a = document.querySelector('#steps .current');
+            if (!a) return true;  // step 0: no step is current
+            const box = a.closest('aside');
+            const r = a.getBoundingClientRect(), b = box.getBoundingClientRect();
+            return r.top >= b.top - 0.5 && r.bottom <= b.bottom + 0.5; }""")
+        assert inside, key
+    page.close()
+
+
 def test_animated_svg_plays_by_its_clock(browser, tmp_path):
     """The animated SVG, its SMIL clock set to moments of the play: at 1.5 s a step, steps 1..k show, then all.
 

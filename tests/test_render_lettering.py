@@ -9,6 +9,7 @@ from __future__ import annotations
 import itertools
 import random
 
+import numpy as np
 import pytest
 
 from construct.render.lettering import LEADER_FROM, LineIndex, label_box, place, text_box
@@ -116,6 +117,25 @@ def test_the_collision_grid_answers_as_a_search_of_every_box_and_looks_in_the_sp
     expected = [not any(s[0] < b[2] and b[0] < s[2] and s[1] < b[3] and b[1] < s[3] for b in boxes) for s in spots]
     assert [grid.free(s) for s in spots] == expected
     assert 0 < sum(expected) < len(spots)
+    # cells holding hundreds of boxes (asked with numpy, all at once: 3600 piston positions on a stroke line),
+    # and boxes added between the questions
+    from construct.render.lettering import _CROWD
+
+    crowd = _Grid(10.0)
+    filed = []
+    for k in range(3000):
+        x, y = rng.uniform(200, 260), rng.uniform(200, 230)
+        filed.append((x, y, x + rng.uniform(0.0, 1.5), y + rng.uniform(0.0, 1.5)))
+        crowd.add(filed[-1])
+        if k % 500 == 499:
+            tried = [(x, y, x + rng.uniform(0.1, 2.0), y + rng.uniform(0.1, 2.0))
+                     for x, y in ((rng.uniform(190, 270), rng.uniform(190, 240)) for _ in range(400))]
+            s, b = np.array(tried)[:, None, :], np.array(filed)[None, :, :]  # every spot against every box
+            want = (~((s[..., 0] < b[..., 2]) & (b[..., 0] < s[..., 2]) & (s[..., 1] < b[..., 3])
+                      & (b[..., 1] < s[..., 3])).any(axis=1)).tolist()
+            assert [crowd.free(s) for s in tried] == want, k
+            assert 0 < sum(want) < len(tried)
+    assert max(len(got) for got in crowd.cells.values()) > _CROWD
 
     crowded = _Grid(10.0)
     for k in range(500):  # a crowd in the far corner of cell (0, 0)

@@ -37,7 +37,6 @@ op makes (``outputs``) and the parameters it reads with their kinds
 from __future__ import annotations
 
 import functools
-
 from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping
 

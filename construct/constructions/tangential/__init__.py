@@ -115,7 +115,7 @@ TANGENTIAL = register(Construction(
                  {"rod_ratio": 5.0, "parts": 18, "revolution": True, "machine": "compound"}),
     structural=("parts", "method", "force", "filling", "compression", "revolution", "cranks", "machine", "indicator",
                 "indicator_crank_side", "indicator_lp", "indicator_lp_crank_side", "lp_filling", "lp_compression"),
-    steady=("kappa",),
+    steady=("rod_ratio", "kappa"),  # (a scan of 120 fresh builds over the rod finds one form at each book figure)
     cites=(Cite(BAUMANN_1902, "Fig. 26/27"),),
     wording=tangential_wording,
     methods=DIVISION_NAMES,

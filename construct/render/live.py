@@ -348,7 +348,7 @@ LIVE_SCRIPT = r"""
     }
   }
   // ---- the broken axes: their marks on every line that crosses them (render/plate.py break_elements) ----------
-  var SIZE = LIST[0].label_px || 12, NS = "http://www.w3.org/2000/svg", marksOf = new Map(), rodLabels = [];
+  var SIZE = LIST[0].label_px || 12, NS = "http://www.w3.org/2000/svg", marksOf = new Map(), rodLabels = [], rodSpots = [];
   var TWO = /^M(-?[0-9.]+) (-?[0-9.]+)L(-?[0-9.]+) (-?[0-9.]+)$/;
   function mk(tag, cls, parent){ var e = document.createElementNS(NS, tag); e.setAttribute("class", cls); parent.appendChild(e); return e; }
   function breakMarks(){
@@ -399,8 +399,10 @@ LIVE_SCRIPT = r"""
       if (!lab) {
         var lg = mk("g", "lbg rodlen", svg.querySelector("#furniture") || svg);
         lab = rodLabels[axis] = {g: lg, halo: mk("text", "lb halo", lg), text: mk("text", "lb", lg)};
-        var dx = axis ? 0.7 * SIZE : 0, dy = axis ? 0.35 * SIZE : -0.9 * SIZE;
-        [lab.halo, lab.text].forEach(function(e){ e.setAttribute("x", dx); e.setAttribute("y", dy); if (axis) e.setAttribute("style", "text-anchor:start"); });
+        // where the drawing wrote it at the book's value (render/plate.py rod_spots), or its first choice
+        var spot = rodSpots[axis] || (axis ? [0.7 * SIZE, 0.35 * SIZE, "start"] : [0, -0.9 * SIZE, "middle"]);
+        [lab.halo, lab.text].forEach(function(e){ e.setAttribute("x", spot[0]); e.setAttribute("y", spot[1]);
+          if (spot[2] !== "middle") e.setAttribute("style", "text-anchor:" + spot[2]); });
       }
       lab.g.removeAttribute("display");
       lab.g.setAttribute("transform", "translate(" + round2(at[0]) + " " + round2(at[1]) + ")");
@@ -748,7 +750,11 @@ LIVE_SCRIPT = r"""
       if (pieces.length) areas.push({id: a[0], pieces: pieces, els: a.slice(1).map(find), key: null});
     });
     // the break marks as built give way to the page's own (drawn at every value, the built one too)
-    svg.querySelectorAll("#furniture .brk, #furniture .brkline").forEach(function(e){ e.parentNode.removeChild(e); });
+    // (the rod's length as built: the page writes its own where the drawing wrote it, "axis dx dy anchor")
+    svg.querySelectorAll("#furniture .rodlen[data-rod]").forEach(function(g){
+      var r = g.getAttribute("data-rod").split(" ");
+      if (!rodSpots[+r[0]]) rodSpots[+r[0]] = [+r[1], +r[2], r[3]]; });
+    svg.querySelectorAll("#furniture .brk, #furniture .brkline, #furniture .rodlen").forEach(function(e){ e.parentNode.removeChild(e); });
     LIST.map(function(L){ return L.readings || []; }).reduce(function(a, b){ return a.concat(b); }, [])
       .filter(function(id, i, all){ return all.indexOf(id) === i; }).forEach(function(id){
       var t = document.getElementById(id);

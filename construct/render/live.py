@@ -170,7 +170,7 @@ LIVE_SCRIPT = r"""
   // ---- one given's data: every drawn number at every grid value ---------------------------------------------
   function Sweep(L){
     this.L = L; this.value = L.initial; this.slots = []; this.byId = {}; this.zoomAt = []; this.ringAt = [];
-    this.breakAt = null; this.full = null;
+    this.breakAt = null; this.full = null; this.pathSlot = new Map();
     this.input = document.querySelector('input[name="' + L.given + '"]');
     this.out = document.querySelector('output[data-given="' + L.given + '"]');
   }
@@ -243,6 +243,7 @@ LIVE_SCRIPT = r"""
                 len: lengthOf(el, k[1], parts)};
       // the whole figure's box: written as data-full, and as the view by the player (or below without one)
       if (el === svg) { self.full = sl; sl.el = null; } else self.slots.push(sl);
+      if (k[1] === "d") self.pathSlot.set(el, sl);
       if (k[1] === "cx" || k[1] === "cy") (self.byId[k[0]] = self.byId[k[0]] || {})[k[1]] = sl;
     });
   };
@@ -361,7 +362,7 @@ LIVE_SCRIPT = r"""
     for (var i = 0; i < lines.length; i++) {
       var ln = lines[i], x1, y1, x2, y2;
       if (ln.x1) { x1 = ln.x1.baseVal.value; y1 = ln.y1.baseVal.value; x2 = ln.x2.baseVal.value; y2 = ln.y2.baseVal.value; }
-      else { var e2 = TWO.exec(ln.getAttribute("d")); x1 = +e2[1]; y1 = +e2[2]; x2 = +e2[3]; y2 = +e2[4]; }
+      else { var q2 = drawnOf(ln).n; x1 = q2[0]; y1 = q2[1]; x2 = q2[2]; y2 = q2[3]; }
       var got = marksOf.get(ln) || [null, null];
       for (axis = 0; axis < 2; axis++) {
         var band = bands[axis], a0 = axis ? y1 : x1, a1 = axis ? x1 : y1, b0 = axis ? y2 : x2, b1 = axis ? x2 : y2;
@@ -413,10 +414,19 @@ LIVE_SCRIPT = r"""
   // ---- areas between two graphs: drawn anew from the graphs that bound them (kernel/areas.py area_between) ----
   var areas = [];
   var NUMS = /-?[0-9]+(?:\.[0-9]+)?(?:e[-+]?[0-9]+)?/g;
+  var still = new Map();
+  function drawnOf(e){  // a path's numbers as drawn: its slot's, written this frame (no text parsed), or its d read
+    // once (a graph that does not move has no slot); and whether it is a French curve
+    var sl = S.pathSlot.get(e);
+    if (sl) return sl.drawn || (sl.drawn = {n: sl.v, curve: sl.parts.join("").indexOf("C") >= 0});
+    var got = still.get(e);
+    if (!got) { var d = e.getAttribute("d"); still.set(e, got = {n: (d.match(NUMS) || []).map(Number), curve: d.indexOf("C") >= 0}); }
+    return got;
+  }
   function graph(e){  // a graph as drawn: a line (null: evaluated exactly) or its vertices, x ascending
     if (e.tagName === "line") return {line: [e.x1.baseVal.value, e.y1.baseVal.value, e.x2.baseVal.value, e.y2.baseVal.value]};
-    var d = e.getAttribute("d"), n = (d.match(NUMS) || []).map(Number), xs = [], ys = [], i, k;
-    if (d.indexOf("C") < 0) { for (i = 0; i + 1 < n.length; i += 2) { xs.push(n[i]); ys.push(n[i + 1]); } }
+    var g = drawnOf(e), n = g.n, xs = [], ys = [], i, k;
+    if (!g.curve) { for (i = 0; i + 1 < n.length; i += 2) { xs.push(n[i]); ys.push(n[i + 1]); } }
     else {
       // a French curve: drawn through its points at sixteen to a Bézier segment (BezierCurve.curve_points), each
       // segment a cubic in its parameter, so that four of them give it whole: the area takes 64 to a segment
@@ -529,20 +539,24 @@ LIVE_SCRIPT = r"""
     Array.prototype.forEach.call(sh.cssRules, function(r){
       if (!lsRule && r.selectorText && r.selectorText.indexOf("#figure .lbg") === 0) lsRule = r; });
   });
+  var ctmNow = null;
   function measure(){  // each shown label group's box about its anchor, on the screen (asked again when the view,
-    // the zoom level or the letters' scale changes, not while a drag holds them)
+    // the zoom level, the letters' scale, the step or the window changes, not while a drag holds them)
+    var key = svg.getAttribute("viewBox") + "|" + svg.getAttribute("class") + "|" + (lsRule ? lsRule.style.getPropertyValue("--ls") : "")
+      + "|" + svg.getAttribute("data-step") + "|" + window.innerWidth + "x" + window.innerHeight;
+    // the figure's map to the screen is asked (a layout of the page, forced after the frame's writes) only
+    // with new boxes: the boxes are kept about their anchors, and a scroll moves every anchor alike
+    if (key === boxKey && boxes && ctmNow) return ctmNow;
     var ctm = svg.getScreenCTM();
     if (!ctm) return null;
-    var key = svg.getAttribute("viewBox") + "|" + svg.getAttribute("class") + "|" + (lsRule ? lsRule.style.getPropertyValue("--ls") : "");
-    if (key === boxKey && boxes) return ctm;
-    boxKey = key; boxes = new Map();
+    ctmNow = ctm; boxKey = key; boxes = new Map();
     followers.forEach(function(fo){
       if (!fo.g || !fo.g.isConnected) return;
       var t = fo.g.querySelector("text:last-of-type"), r = t ? t.getBoundingClientRect() : null;
       if (!r) return;
       if (!r.width && !r.height) return;
-      var p = new DOMPoint(fo.at[0], fo.at[1]).matrixTransform(ctm);
-      boxes.set(fo, [r.left - p.x, r.top - p.y, r.right - p.x, r.bottom - p.y]);
+      var px = ctm.a * fo.at[0] + ctm.c * fo.at[1] + ctm.e, py = ctm.b * fo.at[0] + ctm.d * fo.at[1] + ctm.f;
+      boxes.set(fo, [r.left - px, r.top - py, r.right - px, r.bottom - py]);
     });
     return ctm;
   }
@@ -553,9 +567,9 @@ LIVE_SCRIPT = r"""
     followers.forEach(function(fo){
       var rel = boxes.get(fo);
       if (!rel) { if (fo.hid) { fo.hid = false; fo.g.removeAttribute("visibility"); } return; }
-      var p = new DOMPoint(fo.at[0], fo.at[1]).matrixTransform(ctm);
+      var px = ctm.a * fo.at[0] + ctm.c * fo.at[1] + ctm.e, py = ctm.b * fo.at[0] + ctm.d * fo.at[1] + ctm.f;
       // the current step's letters first, then letters before name tags, then by step (the figure's order)
-      out.push({fo: fo, b: [p.x + rel[0], p.y + rel[1], p.x + rel[2], p.y + rel[3]], rank: (fo.step === k ? 0 : 2) + (fo.tag ? 1 : 0)});
+      out.push({fo: fo, b: [px + rel[0], py + rel[1], px + rel[2], py + rel[3]], rank: (fo.step === k ? 0 : 2) + (fo.tag ? 1 : 0)});
     });
     out.sort(function(a, b){ return a.rank - b.rank || a.fo.step - b.fo.step; });
     out.forEach(function(o){

@@ -25,6 +25,7 @@ from construct.render.wire import canonical_arc, drawn_numbers, inflated
 from construct.gallery import LIVE_PLAYERS, entry_slug, gallery_plan
 from construct.render.live import with_live
 from construct.render.output import write_replay
+from construct.render.scene import MarkKind
 from construct.render.styles import STYLES
 
 REPO = Path(__file__).resolve().parents[1]
@@ -210,7 +211,9 @@ def _owners(path: Path) -> list[tuple[int, str]]:
     for c in root.iter(ns + "circle"):
         if c.get("id") and "pt" in (c.get("class") or "").split():
             at.setdefault((c.get("cx"), c.get("cy")), []).append((c.get("id"), step_of.get(c)))
-    groups = [g for g in root.iter(ns + "g") if "lbg" in (g.get("class") or "").split()]
+    # (the rod's length at a break names no point: the page writes its own, beside the break's marks)
+    groups = [g for g in root.iter(ns + "g") if "lbg" in (g.get("class") or "").split()
+              and "rodlen" not in (g.get("class") or "").split()]
     for i, g in enumerate(groups):
         m = re.match(r"translate\(([-0-9.e]+)[ ,]+([-0-9.e]+)\)", g.get("transform") or "")
         label = next((t.get("id")[:-6] for t in g.iter(ns + "text") if (t.get("id") or "").endswith("-label")), None)
@@ -230,6 +233,16 @@ _FIND = """() => { const groups = window.constructPlayer.groups();
 _ANCHORS = """() => window.__lbg.map(g => {
     const m = /translate\\(([-0-9.e]+)[ ,]+([-0-9.e]+)\\)/.exec(g.getAttribute('transform')); return [+m[1], +m[2]]; })"""
 _POINTS = """ids => ids.map(i => { const c = window.__pts[i]; return [+c.getAttribute('cx'), +c.getAttribute('cy')]; })"""
+# a drag through *values* (``input`` events only, as _drag_to), each value drawn in its animation frame and its
+# points (_POINTS) and letter anchors (_ANCHORS) read there
+_DRAG_READING = f"""async ([g, values, ids]) => {{ const out = [], points = {_POINTS}, anchors = {_ANCHORS};
+    const i = document.querySelector('#live input[name="' + g + '"]');
+    for (const v of values) {{
+      i.value = Math.log10(v); i.dispatchEvent(new Event('input'));
+      await new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)));
+      out.push([points(ids), anchors()]);
+    }}
+    return out; }}"""
 
 
 @pytest.mark.parametrize("name,params,given", _gallery_players(),
@@ -281,13 +294,11 @@ def test_a_drag_keeps_every_point_letter_and_leader_where_a_fresh_replay_draws_t
         k = max(1, round(frac * n))
         # (the camera's glide to the step's view: the drag's first frame takes the step's view at once)
         page.evaluate("k => { const s = document.getElementById('slider'); s.value = k; s.oninput(); }", k)
-        for v in values:
-            _drag_to(page, given, v)
+        # the drag through every value in one call, each drawn in its frame and read there
+        for v, (points, anchors) in zip(values, page.evaluate(_DRAG_READING, [given, values, ids])):
             want = fresh[v]
-            off = max((math.hypot(x - want[i][0], y - want[i][1]), i)
-                      for i, (x, y) in zip(ids, page.evaluate(_POINTS, ids)))
+            off = max((math.hypot(x - want[i][0], y - want[i][1]), i) for i, (x, y) in zip(ids, points))
             assert off[0] <= 0.5, f"{name}, {given} = {v:.5g}, step {k}: {off[1]} off by {off[0]:.2f} px"
-            anchors = page.evaluate(_ANCHORS)
             assert len(anchors) == len(owners)
             for (i, own), (x, y) in zip(owners, anchors):
                 d = math.hypot(x - want[own][0], y - want[own][1])
@@ -531,6 +542,23 @@ def _fresh_svg(c, params: dict, given: str, v: float):
     return ET.fromstring(page[page.index("<svg"):page.index("</svg>") + 6])
 
 
+def _fresh_marks(c, params: dict, given: str, v: float, kind=None) -> dict[str, dict[str, str]]:
+    """Every mark's attributes as a fresh replay's player page draws them, by element id: the construction built
+    afresh at *v*, each mark drawn by the drawing's own code (``mark_geometry``) on the page's fit to the view, as
+    :class:`construct.live.Measure` draws it (tests/test_live.py holds that to the page's numbers) -- without laying
+    the page's letters out, which these marks do not depend on (a tenth of a page's cost).  *kind*: the marks of
+    that kind only (an area: its outline, not its hatching)."""
+    from construct.render.output import scene_for
+    from construct.render.svg import mark_geometry
+    from construct.render.viewport import Viewport
+
+    st = STYLES["teaching"]
+    scene = scene_for(c, c.figure(**{**params, given: v}))
+    vp = Viewport.fit(scene.bbox, st, 0)
+    return {m.id + suffix: attrs for m in scene.marks if kind in (None, m.kind)
+            for suffix, _, attrs in mark_geometry(m, vp, st)[:1 if kind is not None else None]}
+
+
 def _numbers(e, attrs) -> list[float]:
     return [float(x) for a in attrs for x in NUMBER.findall(e.get(a) or "")]
 
@@ -746,8 +774,7 @@ def test_areas_are_drawn_from_the_curves_that_bound_them(browser, name, params, 
     for v in values:
         _drag_to(page, given, v)
         got = areas(page.evaluate(read))
-        want = areas((e.get("id"), e.get("d")) for e in _fresh_svg(c, params, given, v).iter()
-                     if "area" in (e.get("class") or "").split() and e.get("id"))
+        want = areas((i, a["d"]) for i, a in _fresh_marks(c, params, given, v, MarkKind.AREA).items())
         assert want and {k: len(p) for k, p in got.items()} == {k: len(p) for k, p in want.items()}, v
         for k, ps in want.items():
             gap = unary_union(got[k]).boundary.hausdorff_distance(unary_union(ps).boundary)
@@ -774,8 +801,8 @@ def test_a_curve_through_the_points_between_its_corners_takes_the_points_a_fresh
     read = """ids => ids.map(i => window.constructPlayer.find(i).getAttribute('d'))"""
     for v in [0.45, 0.9, 3.0, 7.0, 100.0] + [e * f for e in ends[-2:] for f in (0.999, 1.001)]:
         _drag_to(page, "rod_length", v)
-        want = {e.get("id"): e.get("d") for e in _fresh_svg(c, {}, "rod_length", v).iter()
-                if (e.get("id") or "").endswith(("-forceb", "-forcec", "-mass"))}
+        want = {i: a["d"] for i, a in _fresh_marks(c, {}, "rod_length", v).items()
+                if i.endswith(("-forceb", "-forcec", "-mass"))}
         got = dict(zip(want, page.evaluate(read, list(want))))
         assert len(want) == 3
         for i, d in want.items():

@@ -598,6 +598,14 @@ LIVE_SCRIPT = r"""
         if (!player && !svg.classList.contains("zoomed")) svg.setAttribute("viewBox", S.full.text);
       }
     }
+    // the end state (the last step drawn as the book's plate: its own marks, furniture and letters, which the
+    // sweep does not carry) at the book's values alone; elsewhere the last step shows every mark of the
+    // construction, each where a fresh replay draws it, and the page says so
+    var atBook = Math.abs(Math.log10(value) - Math.log10(S.L.initial)) < 1e-9;  // (the other givens are there)
+    if (player && endAt !== undefined) {
+      player.data.end = atBook ? endAt : 0;
+      if (endNote && endNote.hidden !== atBook) endNote.hidden = atBook;
+    }
     // the view first (the player reads the figure's size there: nothing written yet, no layout forced)
     if (player) view(!glide, dragging);
     for (var i = 0; i < S.slots.length; i++) write(S.slots[i]);
@@ -605,7 +613,6 @@ LIVE_SCRIPT = r"""
     drawAreas();
     breakMarks();
     // readings of the figure (an angle to the minute): true at the book's values only
-    var atBook = Math.abs(Math.log10(S.value) - Math.log10(S.L.initial)) < 1e-9;  // (the others are there)
     for (var j = 0; j < readings.length; j++) { var shown = atBook ? "" : "none"; if (readings[j].style.display !== shown) readings[j].style.display = shown; }
     declutter();
     api.value = value; api.given = S.L.given;
@@ -739,8 +746,18 @@ LIVE_SCRIPT = r"""
       return inflate(L.data);
     }).then(function(buf){ W.buf = buf; return W; });
   }
+  var endAt, endNote = null;
   api.ready = Promise.all(LIST.map(load)).then(function(ws){
     player = window.constructPlayer;
+    if (player && player.data.end) {
+      endAt = player.data.end;
+      endNote = document.createElement("div");
+      endNote.className = "live-end"; endNote.hidden = true; endNote.setAttribute("style", "color:#777;font-size:12px");
+      endNote.textContent = "Der letzte Schritt zeigt das Bild der Tafel beim Buchwert; hier alle Linien der " +
+        "Konstruktion. / The last step shows the plate’s look at the book’s value; here every line of the construction.";
+      var held = document.querySelector("#live .live-held");
+      if (held) held.parentNode.insertBefore(endNote, held.nextSibling);
+    }
     if (player) {  // each step's view (the camera's, or the magnified box) gets a box of its own, moved with the given
       VIEWS = player.data.views ? "views" : "zooms"; IDX = player.data.views ? "v" : "z";
       var own = [];

@@ -254,16 +254,12 @@ def test_a_drag_keeps_every_point_letter_and_leader_where_a_fresh_replay_draws_t
     built afresh with the given there, drawn as the player draws it, on the page's own fit to the view), and
     every letter and name tag, with its leader, standing on the point it names (their offsets about it are the
     placer's: the page does not move them).  The checks beside the figure follow the slider."""
-    from construct.live import Measure
-
     path = REPO / "gallery" / entry_slug(name, params) / "teaching" / "player.html"
     if not path.is_file():
         pytest.skip("no committed gallery in this checkout")
     assert 'id="live-data"' in path.read_text(encoding="utf-8"), f"{path} has no slider: rebuild the gallery"
     assert path.stat().st_size <= 2e6
     c = get(name)
-    built = c.figure(**params)
-    measure = Measure(c, built, STYLES["teaching"])
     owners = _owners(path)
     page, errors = _open(browser, path)
     data = _live_data(page, given)
@@ -278,15 +274,9 @@ def test_a_drag_keeps_every_point_letter_and_leader_where_a_fresh_replay_draws_t
             if a < u < b:
                 u = a if u - a > b - u else b
         values.append(min(data["high"], max(data["low"], 10 ** u)))
-    fresh = {}
-    for v in values:  # every point's centre, as a fresh replay at v draws it
-        keys, nums, _, _ = measure(c.figure(**{**params, given: v}))
-        at, got = 0, {}
-        for k in keys:
-            if k[1] in ("cx", "cy") and k[2] == "#":
-                got.setdefault(k[0], [0.0, 0.0])[k[1] == "cy"] = nums[at]
-            at += k[2].count("#")
-        fresh[v] = got
+    # every point's centre, as a fresh replay at v draws it
+    fresh = {v: {i: (float(a["cx"]), float(a["cy"])) for i, a in _fresh_marks(c, params, given, v, MarkKind.POINT).items()}
+             for v in values}
     ids = sorted(fresh[values[0]])
     page.evaluate(_FIND)
     n = page.evaluate("window.constructPlayer.data.n")

@@ -655,6 +655,28 @@ def test_every_element_of_the_figure_is_where_a_fresh_replay_draws_it(browser, l
     page.close()
 
 
+def test_the_end_state_is_shown_at_the_books_value_and_every_mark_elsewhere(browser, live_player):
+    """The last step draws the figure as the book's plate draws it (class fin: its own marks, furniture and letters,
+    which the sweep does not carry: its rod dimension says L = 5 r).  Dragged away from the book's value, the last
+    step shows the construction's marks instead, each followed by the sweep, none of the end state's, and the page
+    says why; back at the book's value the end state returns."""
+    _, _, path = live_player
+    page, errors = _open(browser, path)
+    page.keyboard.press("End")
+    fin = "() => document.getElementById('figure').classList.contains('fin')"
+    shown_fo = """() => Array.from(document.querySelectorAll('#figure .fo')).filter(e => e.isConnected
+        && e.getClientRects().length > 0 && getComputedStyle(e).display !== 'none').length"""
+    note = "() => { const n = document.querySelector('#live .live-end'); return !!n && !n.hidden; }"
+    assert page.evaluate(fin) and page.evaluate(shown_fo) > 0 and not page.evaluate(note)
+    for v in (1.6, 8.0):
+        _drag_to(page, "rod_ratio", v)
+        assert not page.evaluate(fin) and page.evaluate(shown_fo) == 0 and page.evaluate(note), v
+    _drag_to(page, "rod_ratio", 5.0)
+    assert page.evaluate(fin) and page.evaluate(shown_fo) > 0 and not page.evaluate(note)
+    assert not errors, errors
+    page.close()
+
+
 def test_letters_that_come_to_lie_on_one_another_give_way(browser, live_player):
     """Near L/r = 1 the crank's piston points crowd the stroke's end: the page lets a later letter give way where
     it would lie on another (never a pile of letters), and at the book's value hides none."""

@@ -606,6 +606,12 @@ LIVE_SCRIPT = r"""
       player.data.end = atBook ? endAt : 0;
       if (endNote && endNote.hidden !== atBook) endNote.hidden = atBook;
     }
+    // the inset (a sliver's place magnified beside the view, its points lettered) holds the built value's
+    // numbers: away from the book's values it is not shown; back there the player shows the step again
+    var inset = document.getElementById("inset");
+    if (inset && !atBook && inset.style.display !== "none") {
+      inset.style.display = "none"; document.getElementById("insetbox").setAttribute("visibility", "hidden"); insetHidden = true;
+    } else if (atBook && insetHidden && player) { insetHidden = false; player.redraw(); }
     // the view first (the player reads the figure's size there: nothing written yet, no layout forced)
     if (player) view(!glide, dragging);
     for (var i = 0; i < S.slots.length; i++) write(S.slots[i]);
@@ -746,7 +752,7 @@ LIVE_SCRIPT = r"""
       return inflate(L.data);
     }).then(function(buf){ W.buf = buf; return W; });
   }
-  var endAt, endNote = null;
+  var endAt, endNote = null, insetHidden = false;
   api.ready = Promise.all(LIST.map(load)).then(function(ws){
     player = window.constructPlayer;
     if (player && player.data.end) {

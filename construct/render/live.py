@@ -21,11 +21,16 @@ points they name (their placed offset kept; a tag names its point by
 standing on it), the broken axes' marks on every line that crosses a break
 (``breakMarks``, the script's twin of
 :func:`construct.render.plate.break_elements`), with the rod's length written
-at the break (L = 50 r: a broken rod is drawn short), and letters that come
+at the break (L = 50 r: a broken rod is drawn short; where the drawing wrote it,
+:func:`construct.render.plate.rod_spots`), and letters that come
 to lie on one another: the later gives way (``declutter``) until there is
 room again.  Nothing waits for the slider to be let go (``change``), which
 only sets the letters' exact scale and glides the camera to the step's
-view.
+view.  Two things hold the built value's numbers and are shown at the book's
+values alone: the end state (the last step drawn as the book's plate, its own
+marks, furniture and letters: away from the book's values the last step shows
+the construction's marks, and the page says so) and the inset (a sliver's
+place magnified beside the view).
 
 The script exposes ``window.constructLive``: ``set(value)`` moves the first
 given (``set(value, true)``: as a drag draws it; ``set(value, dragging,

@@ -776,6 +776,8 @@ def test_areas_are_drawn_from_the_curves_that_bound_them(browser, name, params, 
     read = """() => window.constructPlayer.groups().flatMap(s => Array.from(s.querySelectorAll('path.area')))
         .filter(e => e.getAttribute('display') !== 'none').map(e => [e.id, e.getAttribute('d')])"""
     ring = lambda d: [tuple(p) for p in zip(*[iter(float(x) for x in NUMBER.findall(d))] * 2)]  # noqa: E731
+    hatched = """() => window.constructPlayer.groups().flatMap(s => Array.from(s.querySelectorAll('path.hatch[id]')))
+        .filter(e => e.style.display !== 'none').length"""
 
     def areas(pieces) -> dict[str, list]:  # each area's pieces one sees, by the step that made it
         out: dict[str, list] = {}
@@ -793,6 +795,10 @@ def test_areas_are_drawn_from_the_curves_that_bound_them(browser, name, params, 
         for k, ps in want.items():
             gap = unary_union(got[k]).boundary.hausdorff_distance(unary_union(ps).boundary)
             assert gap <= 0.5, (name, v, k, gap)
+        # an area's hatching (the drawing's, at the book's value: not in the sweep) is not shown away from it
+        assert page.evaluate(hatched) == 0, (name, v)
+    _drag_to(page, given, _live_data(page, given)["initial"])
+    assert page.evaluate(hatched) > 0  # back at the book's value
     assert not errors, errors
     page.close()
 

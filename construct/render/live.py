@@ -26,8 +26,8 @@ at the break (L = 50 r: a broken rod is drawn short; where the drawing wrote it,
 to lie on one another: the later gives way (``declutter``) until there is
 room again.  Nothing waits for the slider to be let go (``change``), which
 only sets the letters' exact scale and glides the camera to the step's
-view.  Two things hold the built value's numbers and are shown at the book's
-values alone: the end state (the last step drawn as the book's plate, its own
+view.  Three things hold the built value's numbers and are shown at the book's
+values alone: an area's hatching (its outline follows), the end state (the last step drawn as the book's plate, its own
 marks, furniture and letters: away from the book's values the last step shows
 the construction's marks, and the page says so) and the inset (a sliver's
 place magnified beside the view).
@@ -611,6 +611,9 @@ LIVE_SCRIPT = r"""
       player.data.end = atBook ? endAt : 0;
       if (endNote && endNote.hidden !== atBook) endNote.hidden = atBook;
     }
+    for (var hi = 0; hi < hatches.length; hi++) {
+      var hs = atBook ? "" : "none"; if (hatches[hi].style.display !== hs) hatches[hi].style.display = hs;
+    }
     // the inset (a sliver's place magnified beside the view, its points lettered) holds the built value's
     // numbers: away from the book's values it is not shown; back there the player shows the step again
     var inset = document.getElementById("inset");
@@ -757,7 +760,7 @@ LIVE_SCRIPT = r"""
       return inflate(L.data);
     }).then(function(buf){ W.buf = buf; return W; });
   }
-  var endAt, endNote = null, insetHidden = false;
+  var endAt, endNote = null, insetHidden = false, hatches = [];
   api.ready = Promise.all(LIST.map(load)).then(function(ws){
     player = window.constructPlayer;
     if (player && player.data.end) {
@@ -789,6 +792,8 @@ LIVE_SCRIPT = r"""
       var find = function(id){ return player && player.find ? player.find(id) : document.getElementById(id); };
       var pieces = [], el;
       for (var j = 0; (el = find(j ? a[0] + "-" + j : a[0])); j++) pieces.push(el);
+      // (an area's hatching, drawn by the drawing at the book's value, is not in the sweep: shown there alone)
+      pieces.forEach(function(p){ var h = find(p.id + "-hatch"); if (h) hatches.push(h); });
       if (pieces.length) areas.push({id: a[0], pieces: pieces, els: a.slice(1).map(find), key: null});
     });
     // the break marks as built give way to the page's own (drawn at every value, the built one too)

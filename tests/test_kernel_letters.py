@@ -55,3 +55,11 @@ def test_a_family_of_helpers_is_not_read_as_a_lettered_points_helper():
     assert r.text("X.c45 und u.T1", "de") == "X(45°) und T1"
     assert r.text("Kreis um U' (U'.k)", "de") == "Kreis um U′ (Kreis um U′)"
     assert r.text("the crank's circle", "en") == "the crank's circle"
+
+
+def test_half_of_a_hyphenated_word_is_never_read_as_a_name():
+    """The flywheel rim's mid-plane is a line named "mid" without a letter; its own step's caption said
+    "-plane of the wheel" because "mid" in "mid-plane" was read as the unlettered line and dropped."""
+    r = Reader({"mid": ("line", None, "given_line", ("O",)), "plane": ("point", "P", None, ())})
+    assert r.text("mid-plane of the wheel (radius)", "en", outputs=["mid"]) == "mid-plane of the wheel (radius)"
+    assert r.text("mid meets the rim", "en", outputs=["mid"]) == "meets the rim"

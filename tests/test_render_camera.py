@@ -17,7 +17,7 @@ import pytest
 
 from construct.constructions import get
 from construct.kernel.geometry import Circle, Line, Point
-from construct.render import camera
+from construct.render import camera, insets
 from construct.render.output import scene_for, write_replay
 from construct.render.styles import STYLES
 from construct.render.lettering import segment_meets_box
@@ -494,7 +494,7 @@ def test_fine_work_is_seen_magnified(name, params):
         assert seen >= 0.79 * min(camera.DETAIL_PX, min(gaps) * whole * camera.ZOOM_LEVELS[-1]) or inset, \
             (s.index, sc.caption(s.index)[0], seen)
         if inset is not None and seen < 12.0:  # the inset shows the points apart (Dürer's thirds, 0.1 px apart)
-            assert min(gaps) * camera.INSET_PX[0] / inset[2] >= 12.0, (s.index, sc.caption(s.index)[0])
+            assert min(gaps) * insets.INSET_PX[0] / inset[2] >= 12.0, (s.index, sc.caption(s.index)[0])
     assert fine_steps > 3
     if name == "flywheel-rim":  # the ray of the rectangle's diagonal, over the sliver O r₁
         k = next(s.index for s in sc.steps if s.outputs == ("U6.s",))

@@ -153,6 +153,26 @@ def test_player_steps_show_exactly_the_steps_so_far(browser, player):
     page.close()
 
 
+def test_stepping_scrolls_the_step_list_and_never_the_page(browser, player):
+    """The list beside the figure follows the step; the page stays put, so the title and the figure do not
+    jump under the teacher's pointer (scrollIntoView moved the window too, by a line at every step)."""
+    fig, path = player
+    page = browser.new_page(viewport={"width": 1400, "height": 420})  # a page taller than the window
+    page.goto(path.as_uri())
+    assert page.evaluate("document.documentElement.scrollHeight") > 420
+    for key in ("End", "Home", "End", "ArrowLeft", "ArrowLeft"):
+        page.keyboard.press(key)
+        assert page.evaluate("window.scrollY") == 0
+        inside = page.evaluate("""() => {
+            const a = document.querySelector('#steps .current');
+            if (!a) return true;  // step 0: no step is current
+            const box = a.closest('aside');
+            const r = a.getBoundingClientRect(), b = box.getBoundingClientRect();
+            return r.top >= b.top - 0.5 && r.bottom <= b.bottom + 0.5; }""")
+        assert inside, key
+    page.close()
+
+
 def test_animated_svg_plays_by_its_clock(browser, tmp_path):
     """The animated SVG, its SMIL clock set to moments of the play: at 1.5 s a step, steps 1..k show, then all.
 
@@ -321,7 +341,7 @@ def test_lint_measures_the_players_figure_as_the_page_shows_it(browser, tmp_path
     views in (and the camera shapes them for), and letters of a step whose work is spread over the figure's
     width (Fig. 28's b₁ = 0,02 r₁ worked along r₁) are at least lint's 9 px on the page."""
     from construct.regress.lint import MIN_LABEL_PX, VIEW
-    from construct.regress.lint.checks import player_window
+    from construct.regress.lint.views import player_window
     from construct.render.camera import PLAYER_FIGURE_PX
 
     c = get("flywheel-rim")

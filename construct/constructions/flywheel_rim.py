@@ -36,7 +36,7 @@ from ..kernel.instruments import Builder
 from ..kernel.protocol import Caption
 from . import Construction, Figure, bounded, register
 from .domain import DISC_THICKNESS, DRAWN_LENGTH, RIM_SECTION
-from .indicator import hyperbola_point, square
+from .indicator_parts import hyperbola_point, square
 from .phrases import BAUMANN_1902, Cite, number
 
 __all__ = ["FLYWHEEL_RIM", "build_flywheel_rim", "flywheel_rim_checks", "disc_half_width"]

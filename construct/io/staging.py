@@ -46,14 +46,13 @@ import os
 import re
 import secrets
 import shutil
-import signal
 import stat
 import tempfile
-import threading
 from pathlib import Path
 from typing import Any, Callable, Iterator
 
 from ..kernel.errors import OutputError
+from .signals import signals_deferred
 
 __all__ = ["STAGING_PREFIX", "staged_output", "replaced_folder", "output_path", "remove_stale_staging",
            "write_text", "write_bytes", "write_failure", "signals_deferred"]
@@ -517,39 +516,6 @@ def _swap(stage: Path, new: Path, target: Path, existed: bool, what: str) -> boo
     except OSError as exc:
         left = f"the previous {what} is kept" if existed else "nothing was written"
         raise OutputError(f"cannot write {what} {str(target)!r}: {_reason(exc)}; {left}") from None
-
-
-_DEFERRED = ("SIGINT", "SIGTERM", "SIGHUP")
-
-
-@contextlib.contextmanager
-def signals_deferred() -> Iterator[None]:
-    """Ctrl-C, SIGTERM and SIGHUP wait until the block is done, then arrive as they would have.
-
-    For the moments a folder is swapped and its staging removed: a signal
-    there would leave the target missing or a staging folder behind.  Only
-    the main thread receives signals in Python; elsewhere nothing changes.
-    """
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-    caught: list[int] = []
-    previous = {}
-    for name in _DEFERRED:
-        sig = getattr(signal, name, None)
-        if sig is None or signal.getsignal(sig) is None:  # None: a handler set outside Python, not restorable
-            continue
-        try:
-            previous[sig] = signal.signal(sig, lambda signum, frame: caught.append(signum))
-        except (ValueError, OSError):
-            pass
-    try:
-        yield
-    finally:
-        for sig, handler in previous.items():
-            signal.signal(sig, handler)
-        for sig in dict.fromkeys(caught):
-            signal.raise_signal(sig)  # now, under the handler that was there before
 
 
 def write_text(path: Path, text: str) -> None:

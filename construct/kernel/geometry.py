@@ -12,7 +12,8 @@ An intersection of the public API returns a tuple of 0, 1 or 2 points
 decided by a named rule (:mod:`construct.kernel.rules`).  Tangency is decided
 by one stated tolerance, :data:`TANGENCY_TOLERANCE`, relative to the size of
 the figures involved: two curves whose gap (or overlap) is at most that
-fraction of their size *touch* and meet in one point.
+fraction of their size *touch* and meet in one point.  The values and where they meet are the two halves of
+one doctested idea and stay one module (over 600 lines): split, each half would need the other's names back.
 
 >>> c1 = Circle(Point(0.0, 0.0), 1.0)
 >>> c2 = Circle(Point(1.0, 0.0), 1.0)

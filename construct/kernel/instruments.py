@@ -8,7 +8,8 @@ given length), dividers -- and the point where two drawn curves cross.  The
 composite methods (midpoint, perpendiculars, parallels, division of a segment
 by the intercept theorem, angle bisection, copying an arc) are made of those
 primitives only, each as a collapsible group; they are inherited from
-:class:`~construct.kernel.composite.CompositeSteps`.
+:class:`~construct.kernel.composite.CompositeSteps`.  What is left here (over 600 lines) is one idea: the
+Builder's recording and one method per instrument.
 
 >>> b = Builder("demo", givens={"s": 3.0})
 >>> A = b.given_point("A", 0.0, 0.0)

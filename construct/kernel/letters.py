@@ -86,6 +86,18 @@ _NOUNS = {"circle", "line", "centre", "center", "kreis", "linie", "gerade"}
 _NEXT_WORD = re.compile(r"\s*([^ ]{0,%d})" % (max(map(len, _NOUNS)) + 1))
 _LONGEST_SLOT = max(map(len, _SLOTS))
 
+
+def _compound(text: str, start: int, end: int) -> bool:
+    """Is text[start:end] joined to a word by a hyphen ("mid" in "mid-plane", "plane" in "mid-plane")?
+
+    >>> _compound("mid-plane of the wheel", 0, 3), _compound("line mid meets", 5, 8)
+    (True, False)
+    """
+    after = text[end:end + 2]
+    before = text[max(0, start - 2):start]
+    return (len(after) == 2 and after[0] == "-" and after[1].isalpha()) or (
+        len(before) == 2 and before[1] == "-" and before[0].isalpha())
+
 #: How the books name the objects every crank figure has.
 _COMMON = {
     "axis": ("Hubachse", "the stroke line"),
@@ -473,7 +485,9 @@ class Reader:
             obj = self.objects.get(token)
             rep: str | None = None
             word = token.isalpha() and token.islower()
-            if obj is None:
+            if _compound(caption, start, end):
+                rep = None  # half of a hyphenated word ("mid-plane"): a word of the sentence, never a name
+            elif obj is None:
                 pair = self._split(token)
                 if pair:
                     rep = self._pair(self.point(pair[0]), self.point(pair[1]))

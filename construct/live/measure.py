@@ -295,7 +295,7 @@ def areas_of(protocol: Any, scene: Any) -> list[list[str]]:
 
 
 def _ring_centre(x0: float, y0: float, x1: float, y1: float) -> list[float]:
-    """The centre of a ring round a box (canvas px, as the player's data writes it: camera.ring_round)."""
+    """The centre of a ring round a box (canvas px, as the player's data writes it: insets.ring_round)."""
     return [round((x0 + x1) / 2, 2), round((y0 + y1) / 2, 2)]
 
 

@@ -34,15 +34,13 @@ every machine.
 from __future__ import annotations
 
 import math
-from typing import Any, Callable, Sequence
-
-import numpy as np
+from typing import Callable, Sequence
 
 from .scene import MarkKind, Scene, extreme_points
 from .svgdoc import fmt
 
-__all__ = ["step_views", "views_box", "shots", "step_focus", "step_zooms", "step_details", "step_insets", "DETAIL_PX", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "NON_SCALING", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
-           "clear_edges", "clear_tag_edges", "player_letter_scale", "EDGE_ROUNDS", "ring_round"]
+__all__ = ["step_views", "views_box", "shots", "step_focus", "step_zooms", "step_details", "DETAIL_PX", "INSET_MAX", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "NON_SCALING", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
+           "player_letter_scale"]
 
 #: The step player's figure box in a typical 1400 × 900 browser window (width, height in screen px, as its page
 #: lays it out: what the side column leaves of the width, at most 70 % of the height): the window the views
@@ -256,6 +254,10 @@ class Framing:
 #: radius of a circle it strikes.  Where the whole figure shows them closer, the step's view may magnify up
 #: to the last zoom level (:func:`step_zooms`), past :data:`MAX_ZOOM`.
 DETAIL_PX = 20.0
+#: The most a step's finest detail is magnified (in an inset, past the last zoom level): Dürer's trisection
+#: moves its thirds by a tenth of a canvas pixel (crank of 18 parts, step 54: 0.14 px), which the inset
+#: shows 12 px apart; points equal but for rounding (0.1 px) never.
+INSET_MAX = 128.0
 
 
 #: What a step whose finest detail its shot shows smaller than :data:`DETAIL_PX` costs in :func:`shots`, per
@@ -518,83 +520,6 @@ def step_views(scene: Scene, full: View, bbox: Box, px: Callable[[float, float],
     return out
 
 
-#: A step's work is a sliver where its region is thinner on the screen than this (px) and at least
-#: :data:`SLIVER_RATIO` times as long: no view of the window's shape shows both its length and its
-#: thickness, so the player shows the thickness in an inset (:func:`step_insets`).
-SLIVER_PX = 10.0
-SLIVER_RATIO = 5.0
-#: The most a step's finest detail is magnified (in an inset, past the last zoom level): Dürer's trisection
-#: moves its thirds by a tenth of a canvas pixel (crank of 18 parts, step 54: 0.14 px), which the inset
-#: shows 12 px apart; points equal but for rounding (0.1 px) never.
-INSET_MAX = 128.0
-#: The inset's window on the screen (px) and how thick the sliver is made there at least.
-INSET_PX = (300.0, 210.0)
-INSET_DETAIL_PX = 28.0
-
-
-def step_insets(scene: Scene, views: Sequence[View], full: View,
-                px: Callable[[float, float], tuple[float, float]]) -> list[View | None]:
-    """Per step, the region (canvas px, x y w h) the player shows magnified in an inset, or None.
-
-    A step whose finest detail its view shows smaller than it must be seen (:func:`step_details`: its view
-    widened to take in its letters, or shared with its shot) gets it magnified beside the view.  A step
-    working on a sliver -- the thin rectangle O r₁ of a disc 0,02 r₁ thick, a pressure of 0,15 at
-    laid off over a stroke of 24 cm -- is seen whole in its view only a few pixels thick.  The inset
-    shows the place where the step makes its point (or the point its line is aimed at) magnified until
-    the sliver is :data:`INSET_DETAIL_PX` thick, while the view keeps its whole length in sight.
-    """
-    drawn = {m.name: m for m in scene.marks}
-    focus = step_focus(scene)
-    details = step_details(scene, Framing(full), px)
-    out: list[View | None] = []
-    for s, f, v, (need, at) in zip(scene.steps, focus, views, details):
-        box = None
-        z = zoom_of(v, full)
-        if at is not None and s.group and need > 1.25 * z:
-            # a cluster the view (widened for its letters, or its shot's) shows smaller than it must be seen
-            q = min(PLAYER_FIGURE_PX[0] / v[2], PLAYER_FIGURE_PX[1] / v[3])
-            m = max(2.0, need / z)
-            w, h = INSET_PX[0] / (q * m), INSET_PX[1] / (q * m)
-            box = (round(at[0] - w / 2, 2), round(at[1] - h / 2, 2), round(w, 2), round(h, 2))
-        elif f is not None and s.group:
-            (x0, y1), (x1, y0) = px(f[0], f[1]), px(f[2], f[3])
-            q = min(PLAYER_FIGURE_PX[0] / v[2], PLAYER_FIGURE_PX[1] / v[3])  # screen px per canvas px
-            thin, long = min(x1 - x0, y1 - y0) * q, max(x1 - x0, y1 - y0) * q
-            if 0.75 < thin < SLIVER_PX and long >= SLIVER_RATIO * thin:  # (points on one line are no sliver)
-                own = [drawn[n].geom for n in s.outputs if n in drawn and drawn[n].kind is MarkKind.POINT]
-                if not own:
-                    own = [drawn[n].geom for n in s.inputs if n in drawn and drawn[n].kind is MarkKind.POINT][-1:]
-                if own:
-                    cx = sum(px(*p)[0] for p in own) / len(own)
-                    cy = sum(px(*p)[1] for p in own) / len(own)
-                    m = min(max(INSET_DETAIL_PX / max(thin, 0.5), 2.0), 16.0)  # the inset's magnification
-                    w, h = INSET_PX[0] / (q * m), INSET_PX[1] / (q * m)
-                    box = (round(cx - w / 2, 2), round(cy - h / 2, 2), round(w, 2), round(h, 2))
-        out.append(box)
-    return out
-
-
-def ring_round(points: Sequence[tuple[float, float]], view: View, full: View,
-               ring_px: float) -> tuple[float, float, float] | None:
-    """(cx, cy, r), canvas pixels, of the ring round a mark through *points* (canvas pixels) when the mark is
-    smaller on the screen than the ring (*ring_px* across) at *view*; None when it is large enough (or has no
-    points).
-
-    >>> ring_round([(100.0, 100.0), (102.0, 101.0)], (0, 0, 480, 334), (0, 0, 960, 668), 18.0)
-    (101.0, 100.5, 9.0)
-    """
-    if not points:
-        return None
-    x0, x1 = min(p[0] for p in points), max(p[0] for p in points)
-    y0, y1 = min(p[1] for p in points), max(p[1] for p in points)
-    z = zoom_of(view, full)
-    size = max(x1 - x0, y1 - y0) * z  # on the screen, at the view
-    if size >= 3.2 * ring_px:  # also on a figure the player shows at 0.6 of its size
-        return None
-    r = max(ring_px, size / 2 + 4.0) / z
-    return (round((x0 + x1) / 2, 2), round((y0 + y1) / 2, 2), round(r, 2))
-
-
 def views_box(views: Sequence[View], full: View) -> View:
     """The view that takes in *views* (the steps of a stage of the animation, of a storyboard tile): their
     one view, or the box round them in the canvas's aspect (the whole canvas where that reaches its edge).
@@ -615,18 +540,6 @@ def views_box(views: Sequence[View], full: View) -> View:
     return (round(x, 2), round(y, 2), round(w, 2), round(h, 2))
 
 
-
-# -- letters at the window's edge --------------------------------------------------------------
-
-#: Rounds of widening a view whose window cuts a letter (:func:`clear_edges`): each grows the view by 2 %
-#: at least, so 80 rounds reach 4.9 times its width -- past the whole figure from any view (MAX_ZOOM = 4).
-EDGE_ROUNDS = 80
-
-#: What a level shows as letters about their points: rows (x, y, then the letter's box x0, y0, x1, y1
-#: less x, y), canvas pixels (:meth:`construct.render.placing.Placing.letters_at`).
-Letters = Callable[[int], Any]
-
-
 def player_letter_scale(q: float) -> float:
     """The player's letter scale (its ``--ls``) where a canvas pixel of the level's picture is *q* screen
     pixels: letters at 12 px on the screen, never below 9.5 px.
@@ -635,153 +548,3 @@ def player_letter_scale(q: float) -> float:
     (1.5833333333333333, 1.0, 0.5)
     """
     return min(max(1.0, 9.5 * q / 12.0), q)
-
-
-def clear_edges(views: list[View], full: View, letters_at: Letters) -> list[View]:
-    """The *views* widened so that no letter stands across the edge of the player's window.
-
-    A magnified view cuts the figure, and a letter cut in half by the window's edge cannot be
-    read.  The player shows a view in its window (:data:`PLAYER_FIGURE_PX`, the view's box
-    widened to the window's shape) with letters at its letter scale about their points; a view
-    whose window cuts a letter is widened about its centre until it takes the letter in
-    (rounds until none is cut: the letters shrink as the view grows, and along a row of letters
-    -- the piston positions 1′…11′ on the stroke line -- each round takes in one letter and may
-    cut the next; every round grows the view by 2 % at least, so the rounds end), up to the
-    whole figure.  *letters_at*: the letters each zoom level shows.
-    """
-    done: dict = {}
-    out = []
-    for v in views:
-        if v == full:
-            out.append(v)
-            continue
-        if v not in done:
-            x, y, w, h = v
-            cx, cy = x + w / 2, y + h / 2
-            for _ in range(EDGE_ROUNDS):  # the level can change as the view grows, moving other letters
-                z = zoom_of((0.0, 0.0, w, h), full)  # the window's magnification
-                if z <= 1.0:
-                    break
-                # the letters the view cuts where it will stand: moved onto the canvas (clip_view), a view grown
-                # about a point near an edge has its far side further out than its centre says
-                g = _letter_cut(clip_view(cx, cy, w, h, full), full, level(z), letters_at(level(z)))
-                if g == 1.0:
-                    break
-                w, h = w * g, h * g
-            if zoom_of((0.0, 0.0, w, h), full) <= 1.0:
-                done[v] = full
-            else:
-                done[v] = v if (w, h) == (v[2], v[3]) else clip_view(cx, cy, w, h, full)
-        out.append(done[v])
-    return out
-
-
-#: The name tags a view of some steps at a zoom level shows: (row as in :data:`Letters`, is it a tag of
-#: the view's own steps?) (:meth:`construct.render.placing.Placing.tags_at`).
-Tags = Callable[[Sequence[int], int], list[tuple[tuple[float, ...], bool]]]
-
-
-def clear_tag_edges(views: list[View], full: View, tags_at: Tags, letters_at: Letters) -> list[View]:
-    """The *views* widened or shifted to take in the name tags their windows cut (of their steps or inputs),
-    as far as each view's zoom level allows (the tags were placed for that level)."""
-    views = list(views)
-    by_view: dict[tuple, list[int]] = {}
-    for k, v in enumerate(views, start=1):
-        if v != full:
-            by_view.setdefault(v, []).append(k)
-    for v0, ks in by_view.items():
-        v = v0
-        for _ in range(4):  # a view grown or shifted may take in part of another tag: again
-            nv = _tag_edge_view(v, ks, full, tags_at, letters_at)
-            if nv is None or nv == v:
-                break
-            v = nv
-        if v != v0:
-            for k in ks:
-                views[k - 1] = v
-    return views
-
-
-def _letter_cut(v: View, full: View, lvl: int, a: Any) -> float:
-    """How much view *v* must grow about its centre to take in the letters *a* (rows as in :data:`Letters`) of
-    level *lvl* its window cuts (1.0: it cuts none; as :func:`clear_edges` grows a view, 2 % more)."""
-    W, H = PLAYER_FIGURE_PX
-    x, y, w, h = v
-    q = max(w / W, h / H)
-    ls = player_letter_scale(q * zoom_of(v, full) / ZOOM_LEVELS[lvl])
-    hw, hh = W * q / 2, H * q / 2
-    cx, cy = x + w / 2, y + h / 2
-    x0, y0 = a[:, 0] + ls * a[:, 2] - cx, a[:, 1] + ls * a[:, 3] - cy
-    x1, y1 = a[:, 0] + ls * a[:, 4] - cx, a[:, 1] + ls * a[:, 5] - cy
-    meet = (x0 < hw) & (x1 > -hw) & (y0 < hh) & (y1 > -hh)
-    cut = meet & ((x0 < -hw) | (x1 > hw) | (y0 < -hh) | (y1 > hh))
-    if not cut.any():
-        return 1.0
-    return max(float(np.maximum(-x0[cut], x1[cut]).max()) / hw, float(np.maximum(-y0[cut], y1[cut]).max()) / hh) * 1.02
-
-
-def _tag_edge_view(v: View, ks: list[int], full: View, tags_at: Tags, letters_at: Letters) -> View | None:
-    """View *v* (of steps *ks*) grown or shifted to take in the tags its window cuts (None: none cut)."""
-    W, H = PLAYER_FIGURE_PX
-    x, y, w, h = v
-    cx, cy = x + w / 2, y + h / 2
-    lvl = level(zoom_of(v, full))
-    zl = ZOOM_LEVELS[lvl]
-    shown = tags_at(ks, lvl)
-    if not shown:
-        return None
-    q = max(w / W, h / H)
-    ls = player_letter_scale(q * zoom_of(v, full) / zl)
-    grow = 1.0
-    hw, hh = W * q / 2, H * q / 2
-    own, inside, cut = [], [], []  # boxes about the view's centre: the views' own steps' tags first
-    for r, is_own in shown:
-        b = (r[0] + ls * r[2] - cx, r[1] + ls * r[3] - cy, r[0] + ls * r[4] - cx, r[1] + ls * r[5] - cy)
-        # the views' own steps' tags are taken in wherever they stand, the inputs' where the window cuts them
-        if is_own or (b[0] < hw and b[2] > -hw and b[1] < hh and b[3] > -hh):
-            (own if is_own else inside if (-hw <= b[0] and b[2] <= hw and -hh <= b[1] and b[3] <= hh)
-             else cut).append(b)
-            if b[0] < -hw or b[2] > hw or b[1] < -hh or b[3] > hh:
-                grow = max(grow, max(-b[0], b[2]) / hw * 1.02, max(-b[1], b[3]) / hh * 1.02)
-    # the letters: none is cut by the view (clear_edges), and none may be by the view grown or shifted
-    boxes = [(r[0] + ls * r[2] - cx, r[1] + ls * r[3] - cy, r[0] + ls * r[4] - cx, r[1] + ls * r[5] - cy)
-             for r in letters_at(lvl)]
-    for b in boxes:
-        if (b[0] < hw and b[2] > -hw and b[1] < hh and b[3] > -hh) and (
-                b[0] < -hw or b[2] > hw or b[1] < -hh or b[3] > hh):
-            grow = max(grow, max(-b[0], b[2]) / hw * 1.02, max(-b[1], b[3]) / hh * 1.02)
-    if grow == 1.0:
-        return None
-    # grown about its centre, and on while it cuts a letter (a row of letters at its edge), within its level
-    for _ in range(EDGE_ROUNDS):
-        grown = (0.0, 0.0, w * grow, h * grow)
-        if level(zoom_of(grown, full)) != lvl or zoom_of(grown, full) <= 1.0:
-            break
-        nv = clip_view(cx, cy, w * grow, h * grow, full)
-        more = _letter_cut(nv, full, lvl, letters_at(lvl))
-        if more == 1.0:
-            return nv
-        grow *= more
-    # where growing would leave the level, the shift that takes the tags in: the views' own steps'
-    # tags first, then it keeps in what it shows whole (the letters too), then the inputs' tags
-    inside += [b for b in boxes if -hw <= b[0] and b[2] <= hw and -hh <= b[1] and b[3] <= hh]
-    pan = [0.0, 0.0]
-    for i, half in ((0, hw), (1, hh)):
-        lo, hi = -math.inf, math.inf  # the shifts that keep in what is taken so far
-        for b in own + inside + cut:
-            nlo, nhi = max(lo, b[i + 2] - half + 1.0), min(hi, b[i] + half - 1.0)
-            if nlo <= nhi:
-                lo, hi = nlo, nhi
-        pan[i] = min(max(0.0, lo), hi)
-    # a shift that brings a letter outside the window part way in cuts it: the shift is shortened until none
-    # is cut (piston force steps 1216-1222: the row of piston positions at the window's top)
-    arr = np.array(boxes, dtype=float).reshape(-1, 4)
-    for _ in range(6):
-        if pan == [0.0, 0.0]:
-            return None
-        a = arr - np.array(pan * 2)
-        meet = (a[:, 0] < hw) & (a[:, 2] > -hw) & (a[:, 1] < hh) & (a[:, 3] > -hh)
-        if not (meet & ((a[:, 0] < -hw) | (a[:, 2] > hw) | (a[:, 1] < -hh) | (a[:, 3] > hh))).any():
-            return (round(x + pan[0], 2), round(y + pan[1], 2), w, h)
-        pan = [pan[0] / 2, pan[1] / 2]
-    return None

@@ -10,7 +10,8 @@ between the grid values the data (:mod:`construct.live`) holds, in the wire form
 others at the book's values: one given moves at a time, and moving one sets
 the others back to the book's values (the page says so).
 The page stays one file: the coordinates travel deflated in base64 and are
-inflated with the browser's own ``DecompressionStream``.
+inflated with the browser's own ``DecompressionStream``.  (This module is long -- over 600 lines -- because
+most of it is the page's script in one string, one file for the browser; its Python is the wiring round it.)
 
 **Every mark, every moment.**  Each ``input`` event of a slider redraws, in
 the next animation frame, everything the page draws: every mark of every

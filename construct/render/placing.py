@@ -3,7 +3,7 @@
 A :class:`Placing` places every letter of a scene on its canvas once (results
 first, clear of the points and the result lines), again for each zoom level of
 the player's camera (a letter that moves or gives way there gets a class and a
-rule), and the name tags in the views that show them.  The drawing
+rule), and the name tags in the views that show them (:mod:`construct.render.tags`).  The drawing
 (:class:`construct.render.svg.Drawing`) writes the letters where this says;
 :meth:`Placing.labels` hands the same answer to any other writer (a TikZ
 picture, a test) as data: each letter's point, text, anchor and offset.
@@ -30,21 +30,19 @@ from typing import Any, Callable, Sequence
 
 import numpy as np
 
-from .camera import PLAYER_FIGURE_PX, THIN_FROM, ZOOM_LEVELS, View, level, zoom_of
+from .camera import PLAYER_FIGURE_PX, THIN_FROM, ZOOM_LEVELS, View
 from .gaps import Gap
-from .lettering import HALO_PX, LEADER_FROM, RANK, LineIndex, label_box, place, text_box
+from .lettering import HALO_PX, LEADER_FROM, LineIndex, label_box, place, text_box
 from .paths import bezier_controls
 from .plate import plain
 from .scene import Mark, MarkKind, Scene, label_offset_direction
 from .styles import Style
 from .svgdoc import fmt
+from .tags import TAG_FARTHER, place_tags
 from .viewport import Viewport
 
 __all__ = ["PlacedLabel", "Placing", "furniture_text_box", "text_gap", "TAG_FARTHER"]
 
-#: The farther rings (letter heights) a name tag tries, tied by a leader, before it gives way: a tag the
-#: step's caption names is worth a longer leader.
-TAG_FARTHER = (4.5, 5.5, 6.5, 8.0, 10.0, 12.0, 14.0)
 
 
 @dataclass(frozen=True, slots=True)
@@ -211,7 +209,7 @@ class Placing:
                 elif p.kind == "text":
                     taken.append(furniture_text_box(p, st))
             soft = LineIndex(size, thin)
-        spots = place(items, size, dots, self._lines_at(1.0, size), font=st.label_font, italic=st.label_italic,
+        spots = place(items, size, dots, self.lines_at(1.0, size), font=st.label_font, italic=st.label_italic,
                       halo=HALO_PX / 2 * k, reach=self.line_reach, soft=soft, taken=taken)
         thin = [it for it in items if spots.get(it[0], (0, 0, 0, False))[3]]
         if thin and st.camera:
@@ -221,7 +219,7 @@ class Placing:
             text = {it[0]: it[5] for it in items}
             held = [label_box(x, y, text[i], size, st.label_font, st.label_italic, HALO_PX / 2 * k)
                     for i, (x, y, _d, t) in spots.items() if not t]
-            far = place(thin, size, dots, self._lines_at(1.0, size), font=st.label_font, italic=st.label_italic,
+            far = place(thin, size, dots, self.lines_at(1.0, size), font=st.label_font, italic=st.label_italic,
                         taken=held, keep=False, halo=HALO_PX / 2 * k, reach=self.line_reach, distances=TAG_FARTHER)
             spots.update(far)
             thin = [it for it in thin if it[0] not in far]
@@ -276,7 +274,7 @@ class Placing:
             # each letter where it stands in the whole figure if there is room for it there
             prefer = {i: ((self.spots[i][0] - p[0] / z) * f, (self.spots[i][1] - p[1] / z) * f, self.spots[i][2])
                       for i, _r, _s, p, _d, _t in its}
-            got = place(its, size * f, _scaled(self._obstacle_arrays()[0], z), self._lines_at(z, size * f),
+            got = place(its, size * f, _scaled(self.obstacle_arrays()[0], z), self.lines_at(z, size * f),
                         font=st.label_font, italic=st.label_italic, keep=False, prefer=prefer, halo=HALO_PX / 2 * f, reach=self.line_reach)
             for i, _r, _s, (zx, zy), _d, _t in its:
                 spot = got.get(i)
@@ -390,242 +388,11 @@ class Placing:
 
     def place_tags(self, views: Sequence[View], full: View,
                    input_steps: Callable[[int], frozenset[int]]) -> None:
-        """Where each shown name tag goes: {point id: (dx, dy, distance in letter heights)} about its point.
+        """Where each shown name tag goes (:func:`construct.render.tags.place_tags`): :attr:`tag_spots`,
+        :attr:`tag_hidden`, :attr:`tag_moves`."""
+        self.tag_spots, self.tag_hidden, self.tag_moves = place_tags(self, views, full, input_steps)
 
-        A tag names an operand while its step is current or an input; it is placed like a letter
-        (:func:`construct.render.lettering.place`), clear of the points, the result lines, the letters
-        and the other tags, in the view of its own step (at that view's zoom level, where the points
-        stand farther apart than in the whole figure).  A tag with no free spot there is left out,
-        never stacked on another.
-        """
-        sc, st = self.scene, self.style
-        tags = [m for m in sc.marks if m.kind is MarkKind.POINT and not m.label and sc.tag_shown(m.name)]
-        if not tags:
-            return
-        # the levels of the player's views; the one level of an unmagnified figure
-        levels, thin_from = (ZOOM_LEVELS, THIN_FROM) if st.camera else ((1.0,), 0)
-        span = sc.bbox[2] - sc.bbox[0]
-        # a tag is seen while its step is current and where its step is an input: it is placed at the
-        # least magnified of those views (where the letters are largest beside the points)
-        lowest: dict[int, int] = {}
-        if st.camera:
-            step_levels = [level(zoom_of(v, full)) for v in views]
-
-            def lvl_of(k: int) -> int:
-                return step_levels[k - 1]
-
-            steps = {m.step for m in tags}
-            for m in tags:
-                lowest[m.step] = lvl_of(m.step)
-            for k in range(1, len(sc.steps) + 1):
-                for s_ in input_steps(k):
-                    if s_ in steps:
-                        lowest[s_] = min(lowest[s_], lvl_of(k))
-        by_level: dict[int, list[Mark]] = {}
-        for m in tags:
-            by_level.setdefault(lowest.get(m.step, 0), []).append(m)
-        shown_at: dict[int, set[int]] = {m.step: {lowest.get(m.step, 0)} for m in tags}
-        if st.camera:
-            for m in tags:
-                shown_at[m.step].add(lvl_of(m.step))
-            for k in range(1, len(sc.steps) + 1):
-                for s_ in input_steps(k):
-                    if s_ in shown_at:
-                        shown_at[s_].add(lvl_of(k))
-        size = st.label_size
-        pts = {m.id: self.vp.px(*m.geom) for m in sc.marks if m.kind is MarkKind.POINT}
-        labels = [m for m in sc.marks if m.kind is MarkKind.POINT and m.label and m.id in self.spots]
-
-        def frame(lvl: int):
-            """(zoom, letter factor, boxes of the letters shown at level *lvl*) in that level's geometry."""
-            z = levels[lvl]
-            f = self.letter_scale_at(z) * z if st.camera else 1.0
-            rel = self.level_rel.get(lvl)
-            boxes = []
-            for m in labels:
-                if rel is not None:
-                    if m.id not in rel:
-                        continue
-                    dx, dy = rel[m.id]
-                else:
-                    spot = self.spots[m.id]
-                    if spot[3] and lvl < thin_from:
-                        continue
-                    dx, dy = spot[0] - pts[m.id][0], spot[1] - pts[m.id][1]
-                px, py = pts[m.id]
-                boxes.append(label_box(px * z + dx * f, py * z + dy * f, m.label, st.label_size * f, st.label_font,
-                                       st.label_italic, HALO_PX / 2 * f))
-            return z, f, boxes
-
-        # the points and result lines as arrays, asked once per level and group of tags below
-        dot_a, line_a = self._obstacle_arrays()
-        line_lo = np.minimum(line_a[:, 0:2], line_a[:, 2:4])
-        line_hi = np.maximum(line_a[:, 0:2], line_a[:, 2:4])
-
-        reach = (max(TAG_FARTHER) + 3.0) * size  # how far from its point a tag's box may reach (letter units)
-
-        def near(items, z: float, f: float):
-            """The points and the numbers of the result lines (at zoom *z*) a tag of *items* could meet:
-            within its reach (the lines as a mask over the level's :meth:`_lines_at`): as far as a tag's box
-            reaches from its point (a tag 14 letter heights off reached beyond a window of 8, and the crank
-            circle's pieces crossing it there went unseen)."""
-            xs = [it[3][0] for it in items]
-            ys = [it[3][1] for it in items]
-            r = reach * f
-            x0, y0, x1, y1 = min(xs) - r, min(ys) - r, max(xs) + r, max(ys) + r
-            dz = dot_a * z
-            ds = dz[(x0 <= dz[:, 0]) & (dz[:, 0] <= x1) & (y0 <= dz[:, 1]) & (dz[:, 1] <= y1)]
-            lo, hi = line_lo * z, line_hi * z
-            mask = (lo[:, 0] <= x1) & (hi[:, 0] >= x0) & (lo[:, 1] <= y1) & (hi[:, 1] >= y0)
-            return list(map(tuple, ds.tolist())), mask.tolist()
-
-        # per level, the tags' steps seen together in some view of that level (a step and its inputs)
-        seen_with: dict[int, dict[int, set[int]]] = {}
-        if st.camera:
-            tag_steps = {m.step for m in tags}
-            for k in range(1, len(sc.steps) + 1):
-                together = ({k} | input_steps(k)) & tag_steps
-                mates = seen_with.setdefault(lvl_of(k), {})
-                for s_ in together:
-                    mates.setdefault(s_, set()).update(together)
-        byid = {m.id: m for m in tags}
-        out: dict[str, tuple[float, float, float]] = {}
-        frames: dict[int, tuple] = {}
-        tags_of: dict[int, list[Mark]] = {}
-        for m in tags:
-            tags_of.setdefault(m.step, []).append(m)
-
-        def place_at(m: Mark, lvl: int) -> bool:
-            """Place tag *m* at level *lvl*, clear of the letters there and of the tags placed so far that are
-            seen with it at that level (tags never seen together may share a spot)."""
-            if lvl not in frames:
-                z, f, boxes = frame(lvl)
-                frames[lvl] = (z, f, np.array(boxes, dtype=float).reshape(-1, 4))
-            z, f, boxes = frames[lvl]
-            x, y = pts[m.id][0] * z, pts[m.id][1] * z
-            r = reach * f
-            near_ = boxes[(boxes[:, 2] >= x - r) & (boxes[:, 0] <= x + r) & (boxes[:, 3] >= y - r) & (boxes[:, 1] <= y + r)]
-            taken = list(map(tuple, near_.tolist())) + [
-                label_box(pts[o.id][0] * z + out[o.id][0] * f, pts[o.id][1] * z + out[o.id][1] * f,
-                          sc.display_name(o.name), size * f, st.label_font, st.label_italic, HALO_PX / 2 * f)
-                for k in seen_with.get(lvl, {}).get(m.step, ()) if lvl in shown_at[k]
-                for o in tags_of.get(k, ()) if o.id in out]
-            if st.ring_px and lvl == lowest.get(m.step, 0):
-                # the ring the player draws round the point while its step is current: the tag beside it, not under
-                rr = st.ring_px * f
-                taken.append((x - rr, y - rr, x + rr, y + rr))
-            item = (m.id, m.role, m.step, (x, y), label_offset_direction(m.geom, scale=span), sc.display_name(m.name))
-            ds, only = near([item], z, f)
-            got = place([item], size * f, ds, self._lines_at(z, size * f), only=only, font=st.label_font,
-                        italic=st.label_italic, taken=taken, keep=False, halo=HALO_PX / 2 * f,
-                        reach=self.line_reach, distances=TAG_FARTHER)
-            if m.id not in got:
-                return False
-            gx, gy, dist, _thin = got[m.id]
-            out[m.id] = ((gx - x) / f, (gy - y) / f, dist)
-            return True
-
-        # each tag at the least magnified level it is seen at, in the placer's order (results first)
-        hidden: dict[str, str] = {}
-        for lvl, ms in sorted(by_level.items()):
-            for m in sorted(ms, key=lambda m: (RANK.get(m.role, 2), m.step, m.id)):
-                place_at(m, lvl)
-        # a tag with no room there takes its spot at the next level that has room (a step's caption names it),
-        # given way at the levels below
-        for m in tags:
-            if m.id not in out:
-                for lvl in sorted(shown_at[m.step] - {lowest.get(m.step, 0)}):
-                    if place_at(m, lvl):
-                        hidden[m.id] = "".join(f" h{lo}" for lo in sorted(shown_at[m.step]) if lo < lvl)
-                        break
-        # every level a tag is seen at: it holds its spot there, or it gives way there (class hN),
-        # never stacked on a letter, a point, a result line or a tag seen with it
-        moves: dict[str, dict[int, tuple[float, float, float]]] = {}
-        for lvl in sorted({v for vs in shown_at.values() for v in vs}):
-            z, f, taken = frame(lvl)
-            here = [byid[i] for i in out if lvl in shown_at[byid[i].step]]
-            if all(lowest.get(m.step, 0) == lvl for m in here):
-                continue  # placed together at this level, against the same letters: nothing to check
-            items = [(m.id, m.role, m.step, (pts[m.id][0] * z, pts[m.id][1] * z), (1.0, 0.0), sc.display_name(m.name))
-                     for m in here]
-            prefer = {m.id: (out[m.id][0] * f, out[m.id][1] * f, out[m.id][2]) for m in here}
-            ds, only = near(items, z, f)
-            got = place(items, size * f, ds, self._lines_at(z, size * f), only=only,
-                        font=st.label_font, italic=st.label_italic, taken=taken, keep=False, prefer=prefer,
-                        halo=HALO_PX / 2 * f, reach=self.line_reach)
-            def kept(got, items) -> set[str]:
-                return {i for i, _r, _s, (zx, zy), _d, _t in items if (spot := got.get(i)) is not None
-                        and abs(spot[0] - zx - prefer[i][0]) <= 1e-6 and abs(spot[1] - zy - prefer[i][1]) <= 1e-6}
-
-            holds = kept(got, items)
-            arrays = None
-            losers = []
-            for it in items:
-                i = it[0]
-                if i in holds:
-                    continue
-                # it lost its spot to all the tags of the level together; it holds it where it is seen only
-                # with the tags seen together with it (crank step 181: M1 gave way to tags never shown with it)
-                mates = seen_with.get(lvl, {}).get(byid[i].step, set())
-                local = [o for o in items if byid[o[0]].step in mates and (o[0] in holds or o[0] == i)]
-                if len(local) < len(items):
-                    # it holds its spot where the spot is free of the level's letters, points and result
-                    # lines (as the placer asks) and of the tags seen with it (arrays made once per level)
-                    if arrays is None:
-                        arrays = (np.array(ds, dtype=float).reshape(-1, 2),
-                                  (line_a[np.array(only, dtype=bool)] * z).reshape(-1, 4),
-                                  np.array(taken, dtype=float).reshape(-1, 4))
-                    ds, ls_, tk = arrays
-
-                    def spot_box(o):
-                        return label_box(o[3][0] + prefer[o[0]][0], o[3][1] + prefer[o[0]][1], o[5], size * f,
-                                         st.label_font, st.label_italic, HALO_PX / 2 * f)
-
-                    b = spot_box(it)
-                    rr = 0.3 * size * f
-                    e = self.line_reach
-                    free = not any(b[0] < c[2] and c[0] < b[2] and b[1] < c[3] and c[1] < b[3]
-                                   for c in (spot_box(o) for o in local if o[0] != i))
-                    free = free and not ((tk[:, 0] < b[2]) & (b[0] < tk[:, 2]) & (tk[:, 1] < b[3])
-                                         & (b[1] < tk[:, 3])).any()
-                    free = free and not ((ds[:, 0] - rr < b[2]) & (b[0] < ds[:, 0] + rr) & (ds[:, 1] - rr < b[3])
-                                         & (b[1] < ds[:, 1] + rr)).any()
-                    if free and len(ls_):
-                        # a result line crossing the box widened by the line's half width (clipped to it)
-                        p0, dv = ls_[:, :2], ls_[:, 2:] - ls_[:, :2]
-                        with np.errstate(divide="ignore", invalid="ignore"):
-                            ta = (np.array([b[0] - e, b[1] - e]) - p0) / dv
-                            tb = (np.array([b[2] + e, b[3] + e]) - p0) / dv
-                            t_in = np.nan_to_num(np.minimum(ta, tb), nan=-np.inf)
-                            t_out = np.nan_to_num(np.maximum(ta, tb), nan=np.inf)
-                        inside = (dv != 0) | ((p0 >= np.array([b[0] - e, b[1] - e])) & (p0 <= np.array([b[2] + e, b[3] + e])))
-                        t0 = np.maximum(0.0, np.where(dv != 0, t_in, -np.inf).max(axis=1))
-                        t1 = np.minimum(1.0, np.where(dv != 0, t_out, np.inf).min(axis=1))
-                        free = not ((t0 <= t1) & inside.all(axis=1)).any()
-                    if free:
-                        holds.add(i)  # the tags it is seen with after it are placed with it
-                        continue
-                losers.append(it)
-            if losers:
-                # a tag with no room at its spot stands elsewhere at this level, clear of the letters and of the
-                # tags that hold theirs (a step's caption names it: it is never left out while there is room)
-                held = [label_box(o[3][0] + prefer[o[0]][0], o[3][1] + prefer[o[0]][1], o[5], size * f, st.label_font,
-                                  st.label_italic, HALO_PX / 2 * f) for o in items if o[0] in holds]
-                again = place(losers, size * f, ds, self._lines_at(z, size * f), only=only, font=st.label_font,
-                              italic=st.label_italic, taken=taken + held, keep=False, halo=HALO_PX / 2 * f,
-                              reach=self.line_reach, distances=TAG_FARTHER)
-                for it in losers:
-                    i, (zx, zy) = it[0], it[3]
-                    spot = again.get(i)
-                    if spot is None:
-                        hidden[i] = hidden.get(i, "") + f" h{lvl}"
-                    else:
-                        moves.setdefault(i, {})[lvl] = ((spot[0] - zx) / f, (spot[1] - zy) / f, spot[2])
-        self.tag_hidden = hidden
-        self.tag_moves = moves
-        self.tag_spots = out
-
-    def _obstacle_arrays(self) -> tuple[Any, Any]:
+    def obstacle_arrays(self) -> tuple[Any, Any]:
         """The points and the result lines' segments the letters keep clear of, as arrays (made once)."""
         got = self._obstacle_a
         if got is None:
@@ -637,11 +404,11 @@ class Placing:
     def clear_of_results(self, box: tuple[float, float, float, float]) -> bool:
         """Is *box* (canvas px) clear of the points and the result lines the letters keep clear of (a word the
         drawing writes beside them: the rod's length at a break)?"""
-        dots, _ = self._obstacle_arrays()
+        dots, _ = self.obstacle_arrays()
         if ((dots[:, 0] >= box[0]) & (dots[:, 0] <= box[2]) & (dots[:, 1] >= box[1]) & (dots[:, 1] <= box[3])).any():
             return False
         reach = max(self.style.result_width, 2.2) / 2  # (2.2: the plates' heavy look)
-        if self._lines_at(1.0, self.style.label_size).meets(box, reach):
+        if self.lines_at(1.0, self.style.label_size).meets(box, reach):
             return False
         return not _overlaps(box, self.letter_boxes())
 
@@ -655,13 +422,13 @@ class Placing:
                           st.label_italic) for p in self.labels() if p.shown]
         return got
 
-    def _lines_at(self, z: float, size: float) -> Any:
+    def lines_at(self, z: float, size: float) -> Any:
         """The result lines magnified *z* times, indexed for letters of *size*
         (:class:`construct.render.lettering.LineIndex`): made once for every placing at that zoom."""
         cache = self._line_index
         key = (z, size)
         if key not in cache:
-            cache[key] = LineIndex(size, _scaled(self._obstacle_arrays()[1], z))
+            cache[key] = LineIndex(size, _scaled(self.obstacle_arrays()[1], z))
         return cache[key]
 
     @property

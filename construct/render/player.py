@@ -184,7 +184,7 @@ def _inset_points(d: Drawing, k: int, box: Sequence[float], points: dict[str, An
 
 
 def _inset(d: Drawing) -> str:
-    """The inset of a sliver or a cluster (:func:`construct.render.camera.step_insets`): the figure's lines and
+    """The inset of a sliver or a cluster (:func:`construct.render.insets.step_insets`): the figure's lines and
     areas again, magnified (a ``<use>`` of each of the figure's layers, which show each step as the figure
     does), a dot where the step works, and the step's points with their letters (:func:`_inset_points`)."""
     f = d.doc.factory
@@ -478,7 +478,14 @@ li a.later{color:#bbb}
       for (var p = cur.parentNode; p && p.id !== "steps"; p = p.parentNode) {
         if (p.tagName === "DETAILS") { p.open = true; }
       }
-      if (cur.scrollIntoView) { cur.scrollIntoView({block: "nearest"}); }
+      // the list scrolls to the step, the page does not: scrollIntoView would move the window too, and the
+      // figure with its title would jump under a teacher's pointer at every step
+      var box = cur.closest ? cur.closest("aside") : null;
+      if (box) {
+        var r = cur.getBoundingClientRect(), b = box.getBoundingClientRect();
+        if (r.top < b.top) { box.scrollTop += r.top - b.top; }
+        else if (r.bottom > b.bottom) { box.scrollTop += r.bottom - b.bottom; }
+      }
     }
     svg.setAttribute("data-step", String(k));
   }
@@ -513,7 +520,8 @@ li a.later{color:#bbb}
   document.addEventListener("keydown", function (e) {
     // a given's slider (the live player's) moves its given with the keys, natively: they do not step too
     if (e.target && e.target.tagName === "INPUT" && e.target.type === "range" && e.target !== slider) { return; }
-    if (e.target === slider && (e.key === "ArrowLeft" || e.key === "ArrowRight")) { e.preventDefault(); }
+    // the keys the player takes are its own: Home and End would also scroll the page to its top and bottom
+    if (["ArrowLeft", "ArrowRight", "Home", "End"].indexOf(e.key) >= 0) { e.preventDefault(); }
     if (e.key === "ArrowRight") { pause(); show(k + 1); }
     else if (e.key === "ArrowLeft") { pause(); show(k - 1); }
     else if (e.key === "Home") { pause(); show(0); }

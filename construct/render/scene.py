@@ -24,15 +24,16 @@ import functools
 import math
 import re
 from dataclasses import dataclass
-from typing import Any, Callable, Iterable, Sequence
+from typing import Any, Iterable, Sequence
 
 from ..kernel.geometry import Circle, Length, Line, Point
 from ..kernel.protocol import Protocol, Replay, Step
 from ..kernel.letters import FIGURE_LETTER, primed
 from .captions import TITLE_LIMIT, Reader, displayed
 from .marks import (TWO_PI, Mark, MarkKind, circle_extent, curve_points, extreme_points, fanned_lines, letter_lines,
-                    lies_on, segment_extent, with_geom)
-from .sheet import Break, broken, kept_span, lay_out, plate_names, warn_hidden_labels
+                    lies_on, segment_extent)
+from .end_marks import end_state
+from .sheet import Break, break_shift, broken, kept_span, lay_out, plate_names, warn_hidden_labels
 
 __all__ = ["Mark", "MarkKind", "Scene", "build_scene", "label_offset_direction", "on_curve_names", "extreme_points",
            "thin", "reading", "plate_names", "break_shift", "FIGURE_LETTER"]
@@ -690,93 +691,10 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
     essentials = frozenset(shown if shown is not None else plate_names(protocol, objects))
     end: dict[str, Any] = {}
     if ending and shown is None:
-        end = _end_state(figure, marks, breaks, end_furniture, end_looks)
+        plate_scene = build_scene(figure, plate=True, break_axis=False, looks=end_looks, _warn=False)
+        end = end_state(plate_scene.marks, plate_scene.bbox, marks, breaks, end_furniture)
     return Scene(tuple(marks), bbox, protocol.steps, title, dict(protocol.params), breaks, tuple(furniture),
                  essentials, **end)
-
-
-def _end_state(figure: Any, marks: list[Mark], breaks: tuple, furniture: tuple,
-               looks: "dict[str, str] | None") -> dict[str, Any]:
-    """The end state of a teaching scene (:meth:`Scene.in_end`): the plate's marks on the teaching sheet.
-
-    The plate's scene is drawn on the teaching scene's broken axis; each of its marks that the teaching
-    scene draws otherwise (a line drawn as far as every point the construction marks on it, the crank
-    circle whole, a look the plate gives) becomes an end mark that replaces it in the end state.
-    """
-    from .plate import shifted
-
-    plate = build_scene(figure, plate=True, break_axis=False, looks=looks, _warn=False)
-    sx, sy = break_shift(breaks), break_shift(breaks, axis=1)
-    span = max(plate.bbox[2] - plate.bbox[0], plate.bbox[3] - plate.bbox[1], 1e-9)
-    tol = 1e-9 * span
-    teaching: dict[str, list[Mark]] = {}
-    for m in marks:
-        teaching.setdefault(m.name, []).append(m)
-    seen: dict[str, int] = {}
-    end_marks, replaced, looks_at = [], set(), {}
-    for pm in plate.marks:
-        pm = with_geom(pm, _shift_geom(pm, sx, sy))
-        i = seen.get(pm.name, 0)
-        seen[pm.name] = i + 1
-        same = teaching.get(pm.name, [])
-        tm = same[i] if i < len(same) else None
-        if tm is not None and tm.kind is pm.kind and tm.label == pm.label and _same_geom(tm.geom, pm.geom, tol):
-            if tm.look != pm.look:  # drawn where it stands, in the plate's look (not drawn twice)
-                looks_at[tm.id] = pm.look
-            continue
-        if tm is not None:
-            replaced.add(tm.id)
-        end_marks.append(dataclasses.replace(pm, id=f"{(tm or pm).id}-end"))
-    return {"ending": True, "end_marks": tuple(end_marks), "end_replaced": frozenset(replaced),
-            "end_furniture": tuple(shifted(it, sx) for it in furniture), "end_looks": looks_at}
-
-
-def break_shift(breaks: tuple, axis: int = 0) -> Callable[[float], float]:
-    """The map of x (of y for *axis* 1) that a broken axis (:attr:`Scene.breaks`) applies to what lies before
-    its gap.
-
-    >>> sx = break_shift(((10.0, 1.0, 6.0),))  # drawn from 10 to 11, standing for 6: [5, 11] became [10, 11]
-    >>> sx(2.0), sx(12.0)
-    (7.0, 12.0)
-    >>> break_shift(((10.0, 1.0, 6.0, 1),))(2.0)  # a break across the figure moves y, not x
-    2.0
-    """
-    moves = [(b[0] + b[1] - b[2], b[2] - b[1]) for b in breaks if (b[3] if len(b) > 3 else 0) == axis]
-
-    def shift(v: float) -> float:
-        for lo, by in moves:
-            if v <= lo:
-                v += by
-        return v
-
-    return shift
-
-
-def _shift_geom(m: Mark, sx: Callable[[float], float], sy: Callable[[float], float]) -> tuple:
-    """A mark's geometry on a broken sheet (as :func:`~construct.render.sheet.broken_axis` moves it: a circle
-    whole, or not at all)."""
-    g = m.geom
-    if m.kind is MarkKind.POINT:
-        return (sx(g[0]), sy(g[1]))
-    if m.kind is MarkKind.SEGMENT:
-        return (sx(g[0]), sy(g[1]), sx(g[2]), sy(g[3]))
-    if m.kind.round:
-        far = extreme_points(m)
-        right, low = max(p[0] for p in far), max(p[1] for p in far)
-        return (g[0] + (sx(right) - right), g[1] + (sy(low) - low)) + tuple(g[2:])
-    return tuple((sx(x), sy(y)) for x, y in g)
-
-
-def _same_geom(a: tuple, b: tuple, tol: float) -> bool:
-    if len(a) != len(b):
-        return False
-    for u, v in zip(a, b):
-        if isinstance(u, tuple):
-            if not isinstance(v, tuple) or not _same_geom(u, v, tol):
-                return False
-        elif abs(u - v) > tol * max(1.0, abs(u)):
-            return False
-    return True
 
 
 #: A label that is a reading of the figure: ``{∠A O B}`` is written as the angle AOB measured on the replayed

@@ -11,7 +11,7 @@ import os
 import re
 import sys
 import warnings
-from typing import NamedTuple
+from typing import Callable, NamedTuple
 
 from ..kernel.errors import HiddenLabelWarning
 from ..kernel.geometry import Circle, Line, Point
@@ -19,7 +19,7 @@ from ..kernel.protocol import Protocol, Replay
 from .marks import Mark, MarkKind, extreme_points, lies_on, with_geom
 
 __all__ = ["BREAK_FRACTION", "BREAK_FRACTION_Y", "BREAK_KEEP", "PLATE_BREAK_KEEP", "Break", "broken_axis", "broken",
-           "kept_span", "span_of", "warn_hidden_labels", "lay_out", "plate_names"]
+           "kept_span", "span_of", "warn_hidden_labels", "lay_out", "plate_names", "moved_geom", "break_shift"]
 
 
 #: A gap wider than this fraction of the figure, with nothing drawn in it, is broken out of the axis.
@@ -67,15 +67,12 @@ def broken_axis(marks: list[Mark], furniture: tuple = (), keep_fraction: float =
     """
     from .plate import anchors, shifted
     ivals = []
-    far: dict[int, float] = {}  # a circle's or arc's far end, by its place in *marks* (asked again below)
-    for i, m in enumerate(marks):
+    for m in marks:
         if m.kind is MarkKind.SEGMENT or (m.kind is MarkKind.CURVE and m.straight and len(m.geom) == 2):
             continue  # the stroke line spans everything; a rod drawn to its crosshead crosses the break
         cs = [p[axis] for p in extreme_points(m)]
         if cs:
             ivals.append((min(cs), max(cs)))
-            if m.kind.round:
-                far[i] = ivals[-1][1]
     ivals.extend((p[axis], p[axis]) for p in anchors(furniture))
     if len(ivals) < 2:
         return marks, furniture, ()
@@ -98,22 +95,63 @@ def broken_axis(marks: list[Mark], furniture: tuple = (), keep_fraction: float =
     def end(x: float) -> float:  # a line's end, drawn a margin past its last point: with the side it is nearer
         return x + shift if x <= (lo + hi) / 2 else x
 
+    def same(v: float) -> float:  # the other axis stays
+        return v
+
+    maps, ends = ((sx, same), (end, same)) if axis == 0 else ((same, sx), (same, end))
     out = []
-    for i, m in enumerate(marks):
-        g = m.geom
-        if m.kind is MarkKind.POINT:
-            g = (sx(g[0]), g[1]) if axis == 0 else (g[0], sx(g[1]))
-        elif m.kind is MarkKind.SEGMENT:
-            g = (end(g[0]), g[1], end(g[2]), g[3]) if axis == 0 else (g[0], end(g[1]), g[2], end(g[3]))
-        elif m.kind.round:  # moved whole, or not at all: a circle is not stretched
-            if far[i] <= lo:
-                g = (g[0] + shift,) + tuple(g[1:]) if axis == 0 else (g[0], g[1] + shift) + tuple(g[2:])
-        else:  # a curve or an area: point by point
-            g = tuple((sx(x), y) for x, y in g) if axis == 0 else tuple((x, sx(y)) for x, y in g)
-        out.append(m if g is m.geom else with_geom(m, g))
+    for m in marks:
+        g = moved_geom(m, *maps, ends=ends)
+        out.append(m if g == m.geom else with_geom(m, g))
     # the near stretch now ends at hi - keep: the kept piece of the broken axis is [hi - keep, hi]
     moved = tuple(shifted(it, sx) for it in furniture) if axis == 0 else furniture
     return out, moved, (Break(hi - keep, keep, hi - lo, axis),)
+
+
+def moved_geom(m: Mark, x: Callable[[float], float], y: Callable[[float], float], *,
+               ends: "tuple[Callable[[float], float], Callable[[float], float]] | None" = None) -> tuple:
+    """A mark's geometry with x mapped by *x* and y by *y*, as a broken axis moves it: a point, and a curve's or
+    an area's points, each; a segment's ends by the maps *ends* (*x*, *y* when None); a circle or an arc whole,
+    by what its far point (rightmost, lowest) moves: a circle is not stretched.
+
+    >>> def sx(v): return v + 5.0 if v <= 2.0 else v
+    >>> def same(v): return v
+    >>> circle = Mark("c", 1, "k", MarkKind.CIRCLE, (0.0, 0.0, 1.0), "construction", "compass", "exact")
+    >>> moved_geom(circle, sx, same), moved_geom(with_geom(circle, (2.0, 0.0, 1.0)), sx, same)
+    ((5.0, 0.0, 1.0), (2.0, 0.0, 1.0))
+    """
+    g = m.geom
+    if m.kind is MarkKind.POINT:
+        return (x(g[0]), y(g[1]))
+    if m.kind is MarkKind.SEGMENT:
+        ex, ey = ends or (x, y)
+        return (ex(g[0]), ey(g[1]), ex(g[2]), ey(g[3]))
+    if m.kind.round:
+        far = extreme_points(m)
+        right, low = max(p[0] for p in far), max(p[1] for p in far)
+        return (g[0] + (x(right) - right), g[1] + (y(low) - low)) + tuple(g[2:])
+    return tuple((x(px), y(py)) for px, py in g)
+
+
+def break_shift(breaks: tuple, axis: int = 0) -> Callable[[float], float]:
+    """The map of x (of y for *axis* 1) that a broken axis (:attr:`Scene.breaks`) applies to what lies before
+    its gap.
+
+    >>> sx = break_shift(((10.0, 1.0, 6.0),))  # drawn from 10 to 11, standing for 6: [5, 11] became [10, 11]
+    >>> sx(2.0), sx(12.0)
+    (7.0, 12.0)
+    >>> break_shift(((10.0, 1.0, 6.0, 1),))(2.0)  # a break across the figure moves y, not x
+    2.0
+    """
+    moves = [(b[0] + b[1] - b[2], b[2] - b[1]) for b in breaks if (b[3] if len(b) > 3 else 0) == axis]
+
+    def shift(v: float) -> float:
+        for lo, by in moves:
+            if v <= lo:
+                v += by
+        return v
+
+    return shift
 
 
 def broken(marks: list[Mark], furniture: tuple, whole: bool) -> tuple[list[Mark], tuple, tuple[Break, ...]]:

@@ -25,6 +25,7 @@ import math
 import re
 from typing import Any, Mapping, Protocol, Sequence
 
+from ..kernel.letters import book_symbols
 from .mathml import formula_html, with_subscripts
 from .notation import signed
 
@@ -378,7 +379,7 @@ def _cell(e: Mapping[str, Any]) -> str:
 def _option(text: str) -> str:
     """A filter's choice of *text*: its value the cell's textContent (what the filter compares), shown with
     its subscripts in Unicode where Unicode has them (an option holds no markup)."""
-    cell = with_subscripts(text)
+    cell = _book_html(text)
     value = html.unescape(re.sub(r"</?sub>", "", cell))
     label = html.unescape(re.sub(r"<sub>(.*?)</sub>", lambda m: m.group(1).translate(_SUB), cell))
     return f"<option>{_esc(value)}</option>" if label == value else \
@@ -389,8 +390,17 @@ def _option(text: str) -> str:
 _SUB = str.maketrans("0123456789aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ")
 
 
+def _book_html(text: str) -> str:
+    """A note or a table's name as HTML in the books' typography: primes (10′, t′), minus signs, ω, subscripts.
+
+    >>> _book_html("printed to 10'; off by -0.7' in t'_a")
+    'printed to 10′; off by −0.7′ in t′<sub>a</sub>'
+    """
+    return book_symbols(with_subscripts(text))  # after the markup: "t'_a" is t with subscript a, primed
+
+
 def _where(e: Mapping[str, Any]) -> str:
-    return " · ".join(with_subscripts(str(e[k])) for k in ("table", "row", "column") if e[k] and e[k] != "value")
+    return " · ".join(_book_html(str(e[k])) for k in ("table", "row", "column") if e[k] and e[k] != "value")
 
 
 def errata_page(book: Source, errata: Sequence[Mapping[str, Any]], *, back: str, meanings: Mapping[str, str],
@@ -421,7 +431,7 @@ def errata_page(book: Source, errata: Sequence[Mapping[str, Any]], *, back: str,
                       f"{_esc(meanings.get(c, ''))}</th></tr>\n" + "\n".join(
                           f'<tr><td>{_where(e)}</td><td class="{_cell(e)}">{_printed(e)}</td>'
                           f'<td class="{_cell(e)}">{_true(e)[0]}</td><td class="num">{_units(e["units"])}</td>'
-                          f'<td>{with_subscripts(e["note"])}</td></tr>' for e in mine) + "</tbody>")
+                          f'<td>{_book_html(e["note"])}</td></tr>' for e in mine) + "</tbody>")
     summary = ("<h2>What is wrong</h2>\n" + (
         '<table class="wrong"><thead><tr><th>where</th><th>printed</th><th>true</th><th>off by (units)</th>'
         "<th>likely cause</th></tr></thead>\n" + "\n".join(groups) + "</table>" if groups
@@ -433,11 +443,11 @@ def errata_page(book: Source, errata: Sequence[Mapping[str, Any]], *, back: str,
         true, key = _true(e)
         units = e.get("units")
         cls = ' class="w"' if e["class"] in wrong else ' class="s"' if e["class"] == "slip" else ""
-        rows.append(f'<tr data-i="{i}"><td>{with_subscripts(e["table"])}</td><td>{with_subscripts(e["row"])}</td>'
-                    f'<td>{with_subscripts(e["column"])}</td><td class="{_cell(e)}">{_printed(e)}</td>'
+        rows.append(f'<tr data-i="{i}"><td>{_book_html(e["table"])}</td><td>{_book_html(e["row"])}</td>'
+                    f'<td>{_book_html(e["column"])}</td><td class="{_cell(e)}">{_printed(e)}</td>'
                     f'<td class="{_cell(e)}" data-v="{key}">{true}</td>'
                     f'<td class="num" data-v="{"" if units is None else repr(abs(units))}">{_units(units)}</td>'
-                    f"<td{cls}>{_esc(e['class'])}</td><td>{with_subscripts(e['note'])}</td></tr>")
+                    f"<td{cls}>{_esc(e['class'])}</td><td>{_book_html(e['note'])}</td></tr>")
     tables = list(dict.fromkeys(e["table"] for e in errata))
     present = [c for c in meanings if any(e["class"] == c for e in errata)]
     filters = ('<form class="filters" id="filters" hidden><label>table <select name="table"><option value="">all'

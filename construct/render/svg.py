@@ -30,103 +30,29 @@ import bisect
 import dataclasses
 import heapq
 import math
-import re
-from dataclasses import dataclass
 from typing import Any, Callable, Sequence
 
 from . import captions as _captions
 from . import svgdoc
-from .camera import (FINAL_CONTEXT, NON_SCALING, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, clear_edges, clear_tag_edges, level,
-                     player_letter_scale, ring_round, step_insets, step_views, zoom_of)
+from .camera import level, step_views
+from .edges import clear_edges, clear_tag_edges
 from .captions import Captions, PlateCaption
+from .end_state import END_MARGIN_PX, EndView, end_furniture, end_sheet, lay_out_end, own_strokes, wrapped
+from .insets import ring_round, step_insets
 from .gaps import CLEARANCE, Gap, GapFactory, gapped_hatch, gapped_mark
 from .lettering import HALO_PX, LEADER_FROM, label_box, text_box, text_width
 from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
 from .marks import could_show
 from .placing import Placing, PlacedLabel, place_outwards, text_gap
-from .plate import (Lettering, Stroke, beside_breaks, break_elements, crossing_lines, extent, furniture_elements,
-                    furniture_pieces, plain, rod_spots, rod_written, writes_rod,
-                    subscript_runs, text_elements)
+from .plate import (Lettering, Stroke, beside_breaks, break_elements, crossing_lines, furniture_elements,
+                    furniture_pieces, plain, rod_spots, rod_written, subscript_runs, writes_rod)
 from .scene import Mark, MarkKind, Scene, extreme_points
 from .styles import PLAIN, Style
 from .svgdoc import fmt
 from .viewport import Viewport, camera_transform, camera_zoom
 
-__all__ = ["render_svg", "Drawing", "EndView", "mark_geometry", "mark_layer", "point_radius", "END_MARGIN_PX"]
-
-#: The player's letter scale in a style rule (``var(--ls)``, ``var(--ls,var(--zs,1))``), which the end state's own
-#: file writes out as its number.
-_LETTER_SCALE = re.compile(r"var\(--ls(?:,var\(--zs(?:,1)?\))?\)")
-
-#: The end state's points scaled by the letter scale (:data:`construct.render.styles.END_CSS`); its own file draws
-#: them at that scale in their radius instead.
-_END_POINTS = ".fin .lbg>.lb,.fin .lbg>.leader,.fin .pt{"
-_END_POINTS_OWN = ".fin .pt{transform:none}\n.fin .lbg>.lb,.fin .lbg>.leader{"
-
-#: A style rule and the lengths of a line's stroke in it (its width, its dashes).
-_RULE = re.compile(r"([^{}]+)\{([^{}]*)\}")
-_STROKE_LENGTHS = re.compile(r"(stroke-width|stroke-dasharray):([^;}]*)")
-#: What draws its own strokes at the figure's scale in the player too (no ``vector-effect`` on them, see
-#: :func:`construct.render.camera.level_css`): letters, their halos and leaders, points, insets, break lines.
-_SCALED_STROKES = frozenset({"lb", "halo", "leader", "pt", "inset", "brkline"})
-
-
-def own_strokes(css: str, q: float) -> str:
-    """*css* with the lines' stroke widths and dashes written in the file's own units for its one view of *q*
-    units per screen px, instead of held at their screen size by ``vector-effect: non-scaling-stroke``
-    (which cairosvg, Inkscape's import and print workflows ignore, drawing every line 1/q times too heavy).
-
-    >>> own_strokes(".result{stroke-width:2}\\n.dashdot{stroke-dasharray:14 3;stroke-width:0.7px}\\n"
-    ...             ".leader{stroke-width:0.4px}\\n" + NON_SCALING, 0.5)
-    '.result{stroke-width:1}\\n.dashdot{stroke-dasharray:7 1.5;stroke-width:0.35}\\n.leader{stroke-width:0.4px}\\n'
-    """
-    def lengths(m: re.Match) -> str:
-        return m.group(1) + ":" + " ".join(fmt(float(v.removesuffix("px")) * q, 4)
-                                           for v in m.group(2).replace(",", " ").split())
-
-    def rule(m: re.Match) -> str:
-        classes = set(re.findall(r"\.([\w-]+)", m.group(1)))
-        if classes & _SCALED_STROKES:
-            return m.group(0)
-        return m.group(1) + "{" + _STROKE_LENGTHS.sub(lengths, m.group(2)) + "}"
-
-    return _RULE.sub(rule, css.replace(NON_SCALING, ""))
-
-
-#: The margin round the end state's drawing on its sheet (screen px at the end view).
-END_MARGIN_PX = 14.0
-
-
-@dataclass(frozen=True)
-class EndView:
-    """How the end state of a teaching sequence is shown (:meth:`Drawing.layered`, the player's last step).
-
-    *view*: the last step's camera view (canvas px, x y w h); *level*: its zoom level; *letter*: the
-    player's letter scale there (canvas units a letter unit); *scale*: screen px per canvas px there;
-    *crop*: the end state's drawing with its letters, furniture and a margin (canvas px, x0 y0 x1 y1), the
-    sheet of ``final.svg``; *size*: the furniture's letter size (canvas px).
-    """
-
-    view: tuple[float, float, float, float]
-    level: int
-    letter: float
-    scale: float
-    crop: tuple[float, float, float, float]
-    size: float
-
-
-def _wrapped(g: Any, elems: Sequence[Any]) -> Any:
-    """The group *g* holding *elems*."""
-    for e in elems:
-        g.add(e)
-    return g
-
-
-def _grown(box: tuple[float, float, float, float] | None,
-           pts: Sequence[tuple[float, float]]) -> tuple[float, float, float, float] | None:
-    for x, y in pts:
-        box = (x, y, x, y) if box is None else (min(box[0], x), min(box[1], y), max(box[2], x), max(box[3], y))
-    return box
+__all__ = ["render_svg", "Drawing", "EndView", "mark_geometry", "mark_layer", "point_radius", "END_MARGIN_PX",
+           "own_strokes"]
 
 #: Names that moved to :mod:`construct.render.captions`, still found here (with a DeprecationWarning).
 _MOVED = {"wrap": "captions", "step_caption": "captions", "group_caption": "captions"}
@@ -188,7 +114,8 @@ class Drawing:
                 self.__dict__["_views"] = clear_tag_edges(
                     self.views, self.full_view, lambda ks, lvl: pl.tags_at(ks, lvl, self.input_steps), pl.letters_at)
         #: the end state's view, letter scale and sheet (:class:`EndView`); None without one
-        self.end = self._lay_out_end() if style.camera and scene.ending and scene.steps else None
+        self.end = lay_out_end(scene, style, self.vp, pl, self.views, self.full_view, self.doc.factory) \
+            if style.camera and scene.ending and scene.steps else None
         # layer -> [(step, [element, ...]), ...] in step order: each step's elements of that layer.
         self.groups: dict[str, list[tuple[int, list[Any]]]] = {name: [] for name in self.LAYERS}
         placed: list[tuple[float, float, float, float]] = []
@@ -270,7 +197,7 @@ class Drawing:
 
     @property
     def insets(self) -> list[tuple[float, float, float, float] | None]:
-        """Per step, the region the player magnifies in an inset (:func:`construct.render.camera.step_insets`)."""
+        """Per step, the region the player magnifies in an inset (:func:`construct.render.insets.step_insets`)."""
         got = self.__dict__.get("_insets")
         if got is None:
             got = self.__dict__["_insets"] = (step_insets(self.scene, self.views, self.full_view, self.vp.px) if self.style.camera
@@ -321,96 +248,6 @@ class Drawing:
     def drawing_height(self) -> float:
         """The canvas height without the caption lines (the player shows its captions in HTML)."""
         return self.vp.height - self.n_caption * 1.45 * self.style.caption_size
-
-    # -- the end state ----------------------------------------------------------------
-    def _lay_out_end(self) -> "EndView":
-        """The end state's letters, view and sheet (:class:`EndView`): its letters placed at the player's
-        letter scale in the last step's view, the view grown to take them and the furniture in, the sheet
-        the end state's drawing with a margin of :data:`END_MARGIN_PX`."""
-        sc, st, pl = self.scene, self.style, self.placing
-        full = self.full_view
-        marks = [m for m in sc.marks if sc.in_end(m)] + list(sc.end_marks)
-        views = self.views
-        v = views[-1]
-        framing = Framing(full, max_zoom=ZOOM_LEVELS[-1])
-        for _ in range(4):  # the letters and the furniture widen the view, which sets their size
-            z = zoom_of(v, full)
-            lvl = level(z)
-            q = max(v[2] / PLAYER_FIGURE_PX[0], v[3] / PLAYER_FIGURE_PX[1])  # canvas px per screen px
-            ls = player_letter_scale(q * z / ZOOM_LEVELS[lvl])
-            size = st.label_size * ls
-            texts = [b for e in furniture_elements(self._end_fixed, self.vp.px, self.vp.scale, self.doc.factory,
-                                                   size=size) if (b := self._text_box(e, size)) is not None]
-            # the plate's own lines that are results (its ordinates), not its thin and dashed helpers
-            strokes = [(*self.vp.px(*it.a), *self.vp.px(*it.b)) for it in sc.end_furniture
-                       if isinstance(it, Stroke) and not {"thin", "dashed", "hidden"} & set(it.look.split())]
-            pl.place_end(ls, marks, texts, self._end_lettering(size), strokes)
-            box = None
-            for m in marks:
-                if "hidden" not in sc.end_look(m).split():
-                    box = _grown(box, [self.vp.px(*p) for p in extreme_points(m)])
-            fx = extent(sc.end_furniture)
-            if fx is not None:
-                box = _grown(box, [self.vp.px(fx[0], fx[1]), self.vp.px(fx[2], fx[3])])
-            for b in texts:
-                box = _grown(box, [b[:2], b[2:]])
-            for fid, (px, py), text in self._end_lettering(size):
-                rel = pl.end_spots.get(fid)
-                if rel is not None:
-                    b = label_box(px + ls * rel[0], py + ls * rel[1], text, size, st.label_font, st.label_italic)
-                    box = _grown(box, [b[:2], b[2:]])
-            for m in marks:
-                rel = pl.end_spots.get(m.id)
-                if rel is not None:
-                    px, py = self.vp.px(*m.geom)
-                    b = label_box(px + ls * rel[0], py + ls * rel[1], m.label or "", size, st.label_font,
-                                  st.label_italic)
-                    box = _grown(box, [b[:2], b[2:]])
-            if box is None:
-                break
-            new = framing.view(box, FINAL_CONTEXT, 1.0)
-            if new == v:
-                break
-            v = new
-        views[-1] = v
-        pad = END_MARGIN_PX * q
-        crop = (box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad) if box is not None else \
-            (full[0], full[1], full[0] + full[2], full[1] + full[3])
-        return EndView(v, lvl, round(ls, 4), round(1.0 / q, 6), tuple(round(c, 2) for c in crop), size)
-
-    @property
-    def _end_fixed(self) -> tuple:
-        """The end state's furniture that stands where the plate sets it (all but its lettering)."""
-        return tuple(it for it in self.scene.end_furniture if not isinstance(it, Lettering))
-
-    def _end_lettering(self, size: float) -> list[tuple[str, tuple[float, float], str]]:
-        """The plate's lettering in the end state, placed as letters are (:meth:`Placing.place_end`): (id, the
-        middle of where the plate writes it, canvas px, its text)."""
-        st = self.style
-        out = []
-        for i, it in enumerate(self.scene.end_furniture):
-            if isinstance(it, Lettering):
-                x, y = self.vp.px(*it.at)
-                text = plain(it.text)  # as a reader sees it (P_b: Pb, its b a smaller run)
-                w = text_width(text, size * it.size, st.label_font, st.label_italic)
-                x += {"start": w / 2, "end": -w / 2}.get(it.anchor, 0.0)
-                out.append((f"fur{i}", (x, y), text))
-        return out
-
-    def _text_box(self, elem: Any, size: float) -> tuple[float, float, float, float] | None:
-        """The box (canvas px) of a furniture lettering element made at *size* (not turned; its halo, a copy
-        beneath it, and any other element: None)."""
-        xml = elem.get_xml()
-        if xml.tag.rsplit("}", 1)[-1] != "text" or "halo" in xml.get("class", "").split():
-            return None
-        st = self.style
-        got = re.search(r"font-size:\s*([\d.]+)px", xml.get("style", ""))
-        size = float(got.group(1)) if got else size
-        text = xml.text or ""
-        x, y = float(xml.get("x")), float(xml.get("y"))
-        w = text_width(text, size, st.label_font, st.label_italic)
-        x += {"start": w / 2, "end": -w / 2}.get(xml.get("text-anchor", "middle"), 0.0)
-        return label_box(x, y, text, size, st.label_font, st.label_italic)
 
     def _elements(self, m: Mark, vp: Viewport, placed: list, mid: str | None, *, end: bool = False):
         """(layer, svgwrite element) of a mark's elements; the label (if any) is a second one.
@@ -681,7 +518,7 @@ class Drawing:
                     # the rod's length over the line it is written over: with its step, as its break marks are
                     marks += [rod_group(p) for p in at.get(m.id, ())]
                     if marks and self.end is not None and not sc.in_end(m):
-                        marks = [_wrapped(f.g(class_="nf"), marks)]
+                        marks = [wrapped(f.g(class_="nf"), marks)]
                     if marks:
                         state = self.step_class(m.step, n if k is None else k, mark_steps=mark_steps, inputs=inputs)
                         elems.append(self.step_group(m.step, (timed(m.step) if timed else []) + marks, state))
@@ -694,28 +531,9 @@ class Drawing:
                 flat = sorted(ends, key=lambda e: abs(e[3] - e[1]) / (abs(e[2] - e[0]) or 1e-300))
                 marks += [rod_group(p) for p in self._rod_spots(rod, flat)]
             if marks:
-                elems.append(_wrapped(f.g(class_="fo"), marks))
+                elems.append(wrapped(f.g(class_="fo"), marks))
         if self.end is not None and sc.end_furniture:
-            # the plate's furniture in the end state, its letters at the size of the end state's, its lettering
-            # where the end state's placing set it (upright; tied to its place by a leader when set off)
-            g = _wrapped(f.g(class_="fo end"), furniture_elements(self._end_fixed, self.vp.px, self.vp.scale, f,
-                                                                  size=self.end.size))
-            ls, pl = self.end.letter, self.placing
-            for (fid, (px, py), text), it in zip(self._end_lettering(self.end.size),
-                                                [it for it in sc.end_furniture if isinstance(it, Lettering)]):
-                rel = pl.end_spots.get(fid)
-                if rel is None:
-                    continue
-                x, y = px + ls * rel[0], py + ls * rel[1]
-                if rel[2] >= LEADER_FROM:
-                    x1, y1, x2, y2 = pl.leader_line(rel[0], rel[1], text)
-                    g.add(f.line(start=(fmt(px + ls * x1), fmt(py + ls * y1)), end=(fmt(px + ls * x2), fmt(py + ls * y2)),
-                                 class_="fur thin"))
-                # (its index set below the line as the plate sets it: P_b, F·p_ü)
-                for el in text_elements(f, (x, y - 0.35 * self.end.size * it.size), it.text, self.end.size,
-                                        rel=it.size):
-                    g.add(el)
-            elems.append(g)
+            elems.append(end_furniture(sc, self.style, self.vp, self.end, self.placing, f))
         if not elems:
             return None
         g = f.g(id="furniture")
@@ -816,7 +634,9 @@ class Drawing:
         never shows.
         """
         if self.end is not None:
-            return self._end_document(caption)
+            css = self.style.css() + "".join("\n" + c for c in (self.extra_css,) if c)
+            return end_sheet(self.doc, self.end, self.scene, self.style, css,
+                             self.body(len(self.scene.steps), mark_steps=False), caption)
         dwg = self.document(**({"class_": "plate"} if self.plate else {}))
         for e in self.body(len(self.scene.steps), mark_steps=False):
             dwg.add(e)
@@ -825,46 +645,6 @@ class Drawing:
             if cap is not None:
                 dwg.add(cap)
         return self.doc.text(dwg)
-
-    def _end_document(self, caption: Sequence[str] | None) -> str:
-        """The layered figure on the end state's sheet: the end state's drawing shown at the player's screen
-        scale of its view (letters at their size), the caption set beneath it at the screen's size."""
-        e, st = self.end, self.style
-        x0, y0, x1, y1 = e.crop
-        s = e.scale
-        w = (x1 - x0) * s
-        m = st.margin_px
-        lines = Captions(self.scene, width=max(w - 2 * m, 240.0), size=st.caption_size).title_lines(caption) \
-            if st.show_caption else []
-        step = 1.45 * st.caption_size
-        foot = (len(lines) * step + 0.6 * m) if lines else 0.0
-        h = (y1 - y0) * s + foot
-        f = self.doc.factory
-        css = st.css() + "".join("\n" + c for c in (self.extra_css,) if c)
-        # the letter scale written out: every letter inherits the root's --ls here, and a renderer without CSS
-        # variables (cairosvg, Inkscape's import) would drop each element scaled by var() -- letters and points
-        css = _LETTER_SCALE.sub(fmt(e.letter, 4), css).replace(_END_POINTS, _END_POINTS_OWN)
-        # and its lines as wide as the player draws them on this view, in the sheet's own units (see own_strokes)
-        css = own_strokes(css, 1 / s)
-        dwg = self.doc.drawing(size=(fmt(w), fmt(h)), viewBox=f"{fmt(x0)} {fmt(y0)} {fmt(x1 - x0)} {fmt(h / s)}",
-                               class_=f"fin zl{e.level}", style=f"--ls:{fmt(e.letter, 4)}")
-        dwg.add(f.style("\n" + css + "\n"))
-        dwg.add(f.rect(insert=("-10000", "-10000"), size=("20000", "20000"), id="background", fill=st.background))
-        for el in self.body(len(self.scene.steps), mark_steps=False):
-            dwg.add(el)
-        if lines:
-            g = f.g(id="caption", transform=f"translate({fmt(x0)} {fmt(y1)}) scale({fmt(1 / s, 6)})")
-            for i, (kind, text) in enumerate(lines):
-                g.add(f.text(text, x=[fmt(m)], y=[fmt(st.caption_size + i * step)],
-                             class_=f"cap{(' ' + kind) if kind else ''}"))
-            dwg.add(g)
-        # (and a point's marker at that scale in its radius: such a renderer scales about the origin, not the
-        # marker's centre)
-        root = self.doc.own_tree(dwg)
-        for c in root.iter("circle"):
-            if "pt" in (c.get("class") or "").split():
-                c.set("r", fmt(float(c.get("r")) * e.letter, 3))
-        return self.doc.tree_text(root)
 
     def final(self, caption: Sequence[str] | None = None, *, centred: bool = False) -> str:
         """All steps, nothing highlighted, with the figure's caption lines (the layered figure)."""

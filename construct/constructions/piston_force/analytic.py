@@ -9,8 +9,8 @@ from typing import Any, Mapping
 import numpy as np
 
 from .. import analytic
-from ..indicator import back_pressure as model_back
-from ..indicator import steam_pressure as model_steam
+from ..indicator_parts import back_pressure as model_back
+from ..indicator_parts import steam_pressure as model_steam
 from ..indicator_card import card_pair
 from .build import mass_force_scale
 

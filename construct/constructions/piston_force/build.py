@@ -16,7 +16,7 @@ from ...kernel.proportional import carry_across, fourth_proportional, scale_line
 from .. import Figure, bounded
 from ..domain import DRAWING_SCALE, DRAWN_MASS_FORCE, FORCE_UNIT, LENGTH_M, PISTON_AREA, ROD_RATIO, RPM, WEIGHT
 from ..crank import build_frame, rod_arcs
-from ..indicator import indicator_frame, indicator_givens, pressures_at, square
+from ..indicator_parts import indicator_frame, indicator_givens, pressures_at, square
 from ..indicator_card import card_givens, card_pair, draw_card, load_indicator
 from ..ordinates import OrdinateFrame, ordinate_line, ordinate_value, point_kind
 from .plate import CARD_PLATE, PLATE, REVOLUTION_PLATE

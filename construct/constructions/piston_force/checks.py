@@ -8,8 +8,8 @@ from typing import Any, Mapping
 from ..checking import EUCLIDEAN_TOLERANCE, Check
 from .. import Figure
 from ..crank import angle_tolerance, crank_angle, point_name
-from ..indicator import back_pressure as model_back
-from ..indicator import steam_pressure as model_steam
+from ..indicator_parts import back_pressure as model_back
+from ..indicator_parts import steam_pressure as model_steam
 from ..indicator_card import card_pair
 from ..analytic import inertia_exact, inertia_two_term, piston_fraction
 from .analytic import card_force_zero, forward_force, j_abscissa, piston_areas, return_force

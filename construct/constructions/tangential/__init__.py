@@ -57,7 +57,7 @@ from __future__ import annotations
 from ...kernel.division import NAMES as DIVISION_NAMES
 from ...kernel.protocol import Caption
 from .. import Construction, Figure, register
-from ..indicator import BAUMANN
+from ..indicator_parts import BAUMANN
 from ..phrases import BAUMANN_1902, Cite, card, diagram, division, low_pressure, number, ratio, revolution, scale
 from .analytic import baumann_force, low_force, model_summary, model_t
 from .build import FORCES, KAPPA, LOW_PRESSURE, build_tangential, chord_shortfall, derived_givens, validate_tangential

@@ -9,7 +9,7 @@ from typing import Any, Mapping
 import numpy as np
 
 from .. import analytic
-from ..indicator import back_pressure, steam_pressure
+from ..indicator_parts import back_pressure, steam_pressure
 from ..indicator_card import card_force, card_pair
 
 __all__ = ["low_force", "model_force", "baumann_force", "model_t", "kinks", "model_summary"]

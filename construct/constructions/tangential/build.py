@@ -18,7 +18,7 @@ from ...kernel.protocol import Provenance
 from .. import Figure, bounded, positive, rod_ratio_param
 from ..domain import AREA_RATIO, DRAWN_LENGTH, KAPPA_RANGE
 from ..crank import build_frame, rod_arcs
-from ..indicator import BAUMANN, indicator_frame, indicator_givens, pressures_at
+from ..indicator_parts import BAUMANN, indicator_frame, indicator_givens, pressures_at
 from ..ordinates import inertia_setup, ordinate_value, point_kind
 from ..indicator_card import card_givens, card_pair, draw_card, load_indicator
 from ..revolution import MACHINES, REVOLUTION_PLATE, build_revolution, crank_shifts, parse_cranks, unroll_by_chords

@@ -32,17 +32,16 @@ through, caption-lines, caption-break
 
 from __future__ import annotations
 
-import bisect
 import math
 import re
 from collections import defaultdict
 from dataclasses import dataclass
-from typing import Iterable, Iterator
+from typing import Iterator
 
-from ...render.camera import PLAYER_FIGURE_PX
 from ...render.lettering import segment_meets_box
 from . import plates
-from .sheet import END_LEVEL, Box, Sheet
+from .sheet import Box, Sheet
+from .views import MIN_OPACITY, Runs, Views, both_runs, boxes_meet, in_runs, merge_runs, steps_of, view_total
 
 __all__ = ["Finding", "KINDS", "check_sheet", "view_count", "MIN_LABEL_PX", "MIN_MARK_PX", "MIN_OPACITY", "VIEW"]
 
@@ -52,8 +51,6 @@ KINDS = ("overlap", "on-point", "struck", "small-label", "small-mark", "outside"
 MIN_LABEL_PX = 9.0
 #: The current step's mark must be at least this large on the screen to be seen at once (px).
 MIN_MARK_PX = 12.0
-#: Marks fainter than this (a finished group's faded helpers) are background: they do not collide.
-MIN_OPACITY = 0.25
 #: The screen a view is fitted into, px.
 VIEW = (1400.0, 900.0)
 #: Overlaps thinner than this (user units) are a touch, not a collision.
@@ -72,9 +69,6 @@ _NAMED = re.compile(r"(?<![\w′'″₀-₉./·∠])([A-Za-zΑ-Ωα-ω][A-Za-zΑ
 _INTERNAL = re.compile(r"[A-Za-z]+[0-9]+[A-Za-z0-9]*|[a-z]+[A-Z][A-Za-z0-9]*")
 #: Cell of the spatial index, user units (about two letters).
 CELL = 32.0
-
-Runs = list[tuple[int, int]]
-
 
 @dataclass(frozen=True, slots=True)
 class Finding:
@@ -106,64 +100,6 @@ class Finding:
     def as_dict(self) -> dict:
         return {"kind": self.kind, "figure": self.figure, "steps": [list(r) for r in self.steps],
                 "views": self.views, "labels": list(self.labels), "ids": list(self.ids), "message": self.message}
-
-
-# --------------------------------------------------------------------------- runs of steps
-
-def _merge(runs: Iterable[tuple[int, int]]) -> Runs:
-    out: Runs = []
-    for a, b in sorted(r for r in runs if r[0] <= r[1]):
-        if out and a <= out[-1][1] + 1:
-            if b > out[-1][1]:
-                out[-1] = (out[-1][0], b)
-        else:
-            out.append((a, b))
-    return out
-
-
-def _both(x: Runs, y: Runs) -> Runs:
-    out: Runs = []
-    i = j = 0
-    while i < len(x) and j < len(y):
-        a, b = max(x[i][0], y[j][0]), min(x[i][1], y[j][1])
-        if a <= b:
-            out.append((a, b))
-        if x[i][1] < y[j][1]:
-            i += 1
-        else:
-            j += 1
-    return out
-
-
-def _without(x: Runs, k: int) -> Runs:
-    out: Runs = []
-    for a, b in x:
-        if a <= k <= b:
-            if a < k:
-                out.append((a, k - 1))
-            if k < b:
-                out.append((k + 1, b))
-        else:
-            out.append((a, b))
-    return out
-
-
-def _contains(x: Runs, k: int) -> bool:
-    i = bisect.bisect_right(x, (k, math.inf)) - 1
-    return i >= 0 and x[i][0] <= k <= x[i][1]
-
-
-def _runs(ks: Iterable[int]) -> Runs:
-    return _merge((k, k) for k in ks)
-
-
-def _steps_of(runs: Runs) -> Iterator[int]:
-    for a, b in runs:
-        yield from range(a, b + 1)
-
-
-def _count(runs: Runs) -> int:
-    return sum(b - a + 1 for a, b in runs)
 
 
 # --------------------------------------------------------------------------- geometry
@@ -205,273 +141,11 @@ class _Grid:
         return out
 
 
-# --------------------------------------------------------------------------- views
-
-#: The player's page (construct.render.player's stylesheet) at the stated screen size: the page's padding
-#: (2 × 16 px), the gap (12 px) and the side column (340 px, its padding 2 × 8 and border 2 × 1) take this many px
-#: of the width; the figure is as wide as what is left, of the camera's window's shape (``aspect-ratio``) but at
-#: most this fraction of the screen's height (``max-height:70vh``).  Measured in Chromium: 998 × 630 px at
-#: 1400 × 900, 998 × 630 at 1400 × 1000, 878 × 554 at 1280 × 800.
-PLAYER_SIDE_PX = 402.0
-PLAYER_HEIGHT = 0.7
-PLAYER_ASPECT = PLAYER_FIGURE_PX[1] / PLAYER_FIGURE_PX[0]
-
-
-def player_window(screen: tuple[float, float]) -> tuple[float, float]:
-    """The player's figure box (px) on a screen of *screen* px, as its page lays it out.
-
-    >>> player_window((1400, 900)), [round(x, 1) for x in player_window((1280, 800))]
-    ((998.0, 630.0), [878.0, 554.2])
-    """
-    w = max(screen[0] - PLAYER_SIDE_PX, 1.0)
-    return (w, min(w * PLAYER_ASPECT, screen[1] * PLAYER_HEIGHT))
-
-
-def player_letter_scale(q: float, zoom: float = 1.0, level_zoom: float = 1.0) -> float:
-    """The player's ``--ls`` in a view of *q* user units per screen pixel magnifying *zoom* times, drawn at a
-    zoom level of *level_zoom* (its script's ``put``): letters and points are drawn this many times their
-    size about their points, 12 px on the screen at the level's own zoom, never below 9.5 there, and the
-    same in every view of the level (the level's picture, for which the letters were placed, magnified).
-
-    >>> player_letter_scale(2.0), player_letter_scale(1.1), player_letter_scale(0.5)
-    (1.5833333333333333, 1.0, 0.5)
-    >>> round(player_letter_scale(1.0, 1.4, 1.0), 4)  # the whole figure's look magnified 1.4 times
-    1.1083
-    """
-    ql = q * zoom / level_zoom
-    return min(max(1.0, 9.5 * ql / 12.0), ql)
-
-
-def zoom_level(zoom: float, levels: tuple[float, ...]) -> int:
-    """The player's class ``zlN`` for a view magnifying *zoom* times: the nearest level below (as its script)."""
-    i = 0
-    for j, z in enumerate(levels):
-        if zoom >= 0.999 * z:
-            i = j
-    return i
-
-
-@dataclass(frozen=True, slots=True)
-class _Layout:
-    """How a run of views shows the sheet: they show the same box at the same scale."""
-
-    runs: Runs
-    #: What the screen shows (user units): the view's box, widened to the window's shape by the player.
-    box: Box
-    #: User units per screen pixel.
-    q: float
-    #: The zoom level (the player's ``zlN``), the letters' and points' scale about their points, and the
-    #: factor on a line's stroke width (a non-scaling stroke in the player is as wide on every view's screen).
-    level: int = 0
-    letter: float = 1.0
-    stroke: float = 1.0
-    #: The end state's view (the last step of a figure that has one): its letters stand where it sets them.
-    fin: bool = False
-
-    @property
-    def moves_key(self) -> int:
-        """The key of the letter moves this layout applies (:attr:`Sheet.moves`): its level's, or the end's."""
-        return END_LEVEL if self.fin else self.level
-
-
-class _Views:
-    """Which views a sheet has, which of them show an element, and each view's box and scale."""
-
-    def __init__(self, sheet: Sheet, screen: tuple[float, float]):
-        self.sheet = sheet
-        self.screen = screen
-        n = sheet.n
-        self.stepped = sheet.marks_steps and sheet.frame is None and n > 1 and not sheet.unplayed
-        self.single = sheet.frame if sheet.frame is not None else n
-        x, y, w, h = sheet.viewbox
-        self.whole = (x, y, x + w, y + h)
-        self.cameras = {k: (v[0], v[1], v[0] + v[2], v[1] + v[3]) for k, v in sheet.views.items()}
-        #: Shown in the player: every view through its window, letters and points at the player's scale.
-        self.player = sheet.player and sheet.frame is None
-        # the steps whose objects step k is set on, turned round: in which views step s is an input
-        self.input_in: dict[int, list[int]] = defaultdict(list)
-        for k, ss in sheet.inputs.items():
-            for s in ss:
-                if s < k < n:
-                    self.input_in[s].append(k)
-        self._cache: dict[tuple, Runs] = {}
-        self.layouts = self._layouts()
-        self._of_step: dict[int, _Layout] = {}
-        for lay in self.layouts:
-            for k in _steps_of(lay.runs):
-                self._of_step[k] = lay
-
-    def all(self) -> Runs:
-        return [(1, self.sheet.n)] if self.stepped else [(self.single, self.single)]
-
-    def box(self, k: int) -> Box:
-        return self.cameras.get(k, self.whole)
-
-    def scale(self, k: int) -> float:
-        """Screen pixels per user unit in view k: the view fitted into the screen (the player's window)."""
-        b = self.box(k)
-        if not self.player and self.sheet.width:
-            # a still figure (a plate) opened in the browser is shown at its own width (a tall one scrolls),
-            # narrowed to the screen
-            return min(self.sheet.width, self.screen[0]) / max(self.sheet.viewbox[2], 1e-12)
-        w, h = player_window(self.screen) if self.player else self.screen
-        return min(w / max(b[2] - b[0], 1e-12), h / max(b[3] - b[1], 1e-12))
-
-    def layout(self, k: int) -> _Layout:
-        return self._of_step[k]
-
-    def _layouts(self) -> list[_Layout]:
-        everything = self.all()
-        if not self.cameras or (not self.stepped and self.single not in self.cameras):
-            return [_Layout(everything, self.whole, 1.0 / self.scale(everything[0][0]))]
-        by_box: dict[tuple, list[int]] = defaultdict(list)
-        end = self.sheet.end and self.stepped
-        for k in _steps_of(everything):
-            by_box[(self.box(k), end and k == self.sheet.n)].append(k)
-        out = []
-        # the whole figure the camera moves over (its widest and tallest view: the first step's is the whole
-        # drawing, without the caption), and its user units per screen pixel in the window
-        ww, wh = player_window(self.screen)
-        cams = list(self.cameras.values())
-        fw, fh = max(c[2] - c[0] for c in cams), max(c[3] - c[1] for c in cams)
-        q_whole = max(fw / ww, fh / wh)
-        for (b, fin), ks in by_box.items():
-            q = 1.0 / self.scale(ks[0])
-            if not self.player:
-                out.append(_Layout(_runs(ks), b, q, fin=fin))
-                continue
-            # the player fits the view into its window (preserveAspectRatio meet): what shows is wider or taller
-            w, h = player_window(self.screen)
-            cx, cy = (b[0] + b[2]) / 2, (b[1] + b[3]) / 2
-            seen = (cx - w * q / 2, cy - h * q / 2, cx + w * q / 2, cy + h * q / 2)
-            zoom = q_whole / q  # how many times the window shows the view larger than the whole figure
-            level = zoom_level(zoom, self.sheet.levels)
-            out.append(_Layout(_runs(ks), seen, q, level, player_letter_scale(q, zoom, self.sheet.levels[level]), q,
-                               fin))
-        return out
-
-    def text_box(self, t, lay: _Layout) -> Box:
-        """Where a letter stands in a layout: scaled (and moved at its zoom level) about its point."""
-        move = self.sheet.moves.get((lay.moves_key, t.group)) if lay.moves_key and t.group else None
-        if t.anchor is None or (lay.letter == 1.0 and move is None):
-            return t.box
-        ax, ay = t.anchor
-        s = lay.letter
-        dx, dy = (move[0] * t.unit, move[1] * t.unit) if move else (0.0, 0.0)
-        b = t.box
-        return (ax + s * (b[0] - ax + dx), ay + s * (b[1] - ay + dy), ax + s * (b[2] - ax + dx),
-                ay + s * (b[3] - ay + dy))
-
-    def _seen(self, chain, state: str | None, level: int = 0) -> bool:
-        look = self.sheet.look(chain, state, level)
-        return look.shown and look.opacity >= MIN_OPACITY
-
-    def shown(self, chain, step: int | None, level: int = 0) -> Runs:
-        """The views (runs of steps) in which the element is seen (the drawing at zoom level *level*)."""
-        key = (chain, step, level)
-        got = self._cache.get(key)
-        if got is not None:
-            return got
-        sheet, n = self.sheet, self.sheet.n
-        if not self.stepped:
-            got = [(self.single, self.single)] if self._seen(chain, None, level) else []
-        elif step is None:  # outside the steps: the end state's own furniture is seen at the last step only
-            got = _merge(([(1, n - 1)] if self._seen(chain, "", level) else [])
-                         + ([(n, n)] if self._seen(chain, None, level) else []))
-        else:
-            s = step
-            runs: Runs = []
-            if s < n and self._seen(chain, "cur", level):
-                runs.append((s, s))
-            fade = sheet.fades.get(s)
-            last_old = n - 1 if fade is None else min(fade, n - 1)
-            if self._seen(chain, "old", level):
-                runs.append((s + 1, last_old))
-            if fade is not None and self._seen(chain, "done", level):
-                runs.append((max(fade + 1, s + 1), n - 1))
-            if self._seen(chain, None, level):
-                runs.append((n, n))
-            runs = _merge(runs)
-            as_input = self._seen(chain, "inp", level)
-            for k in self.input_in.get(s, ()):
-                runs = _merge(runs + [(k, k)]) if as_input else _without(runs, k)
-            got = runs
-        self._cache[key] = got
-        return got
-
-    def _text_arrays(self) -> tuple:
-        """The texts' boxes, points and letter units as arrays (made once)."""
-        got = self.__dict__.get("_arrays")
-        if got is None:
-            import numpy as np
-
-            texts = self.sheet.texts
-            boxes = np.array([t.box for t in texts], dtype=float).reshape(-1, 4)
-            anchored = np.array([t.anchor is not None for t in texts], dtype=bool)
-            points = np.array([t.anchor or (0.0, 0.0) for t in texts], dtype=float).reshape(-1, 2)
-            units = np.array([t.unit for t in texts], dtype=float)
-            got = self.__dict__["_arrays"] = (boxes, anchored, points, units)
-        return got
-
-    def _near_texts(self, lay: _Layout) -> list[int]:
-        """The texts whose box in *lay* (:meth:`text_box`, for all at once) may meet the layout's box: a
-        superset of those that do (a hair's margin), in order; :meth:`letters` tests each exactly."""
-        import numpy as np
-
-        boxes, anchored, points, units = self._text_arrays()
-        texts = self.sheet.texts
-        level_moves = self.__dict__.setdefault("_level_moves", {})
-        key = lay.moves_key
-        if key not in level_moves:  # the texts a zoom level (or the end state) moves, and by how much
-            moves = self.sheet.moves
-            moved = np.zeros(len(texts), dtype=bool)
-            d = np.zeros((len(texts), 2))
-            if key and moves:
-                for i, t in enumerate(texts):
-                    m = moves.get((key, t.group)) if t.group else None
-                    if m is not None:
-                        moved[i] = True
-                        d[i] = (m[0] * t.unit, m[1] * t.unit)
-            level_moves[key] = (moved, d)
-        moved, d = level_moves[key]
-        if lay.letter == 1.0 and not moved.any():
-            b = boxes
-        else:
-            s = lay.letter
-            at = anchored & (moved | (s != 1.0))
-            scaled = np.concatenate((points + s * (boxes[:, 0:2] - points + d), points + s * (boxes[:, 2:4] - points + d)),
-                                    axis=1)
-            b = np.where(at[:, None], scaled, boxes)
-        e = 1e-6
-        x0, y0, x1, y1 = lay.box
-        return np.flatnonzero((b[:, 0] < x1 + e) & (x0 - e < b[:, 2]) & (b[:, 1] < y1 + e) & (y0 - e < b[:, 3])).tolist()
-
-    def letters(self, lay: _Layout, *, captions: bool = True) -> list[tuple]:
-        """The texts a layout shows: (text, its box there, the layout's steps that show it)."""
-        out = []
-        texts = self.sheet.texts
-        for i in self._near_texts(lay):
-            t = texts[i]
-            if t.kind == "caption" and (self.player or not captions):
-                continue  # the player shows no caption lines on its figure
-            b = self.text_box(t, lay)
-            if not _meet_any(b, lay.box):
-                continue
-            runs = _both(self.shown(t.chain, t.step, lay.level), lay.runs)
-            if runs:
-                out.append((t, b, runs))
-        return out
-
-
-def _meet_any(a: Box, b: Box) -> bool:
-    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
-
-
 # --------------------------------------------------------------------------- the checks
 
 def check_sheet(sheet: Sheet, screen: tuple[float, float] = VIEW) -> list[Finding]:
     """Every finding of every view of *sheet*, at the screen size *screen* (width, height px)."""
-    views = _Views(sheet, screen)
+    views = Views(sheet, screen)
     seen = [(lay, views.letters(lay)) for lay in views.layouts]
     out: list[Finding] = []
     out += _overlaps(sheet, views, seen)
@@ -490,12 +164,12 @@ def check_sheet(sheet: Sheet, screen: tuple[float, float] = VIEW) -> list[Findin
 
 def view_count(sheet: Sheet, screen: tuple[float, float] = VIEW) -> int:
     """How many views :func:`check_sheet` checks in *sheet*."""
-    return _count(_Views(sheet, screen).all())
+    return view_total(Views(sheet, screen).all())
 
 
-def _finding(kind: str, sheet: Sheet, views: _Views, runs: Runs, labels, ids, message: str) -> Finding:
+def _finding(kind: str, sheet: Sheet, views: Views, runs: Runs, labels, ids, message: str) -> Finding:
     steps = tuple(runs) if (views.stepped or sheet.frame is not None) else ()
-    return Finding(kind, sheet.name, steps, tuple(labels), tuple(ids), message, _count(runs))
+    return Finding(kind, sheet.name, steps, tuple(labels), tuple(ids), message, view_total(runs))
 
 
 def _point_names(sheet: Sheet) -> dict[str, str]:
@@ -505,7 +179,7 @@ def _point_names(sheet: Sheet) -> dict[str, str]:
     return names
 
 
-def _overlaps(sheet: Sheet, views: _Views, seen) -> list[Finding]:
+def _overlaps(sheet: Sheet, views: Views, seen) -> list[Finding]:
     found: dict[tuple[int, int], list] = {}
     for lay, letters in seen:
         grid = _Grid()
@@ -515,9 +189,9 @@ def _overlaps(sheet: Sheet, views: _Views, seen) -> list[Finding]:
                 if u.kind == "caption" and t.kind == "caption":
                     continue
                 region = _meet(b, ub)
-                if region is None or not _meet_any(region, lay.box):
+                if region is None or not boxes_meet(region, lay.box):
                     continue
-                both = _both(runs, uruns)
+                both = both_runs(runs, uruns)
                 if both:
                     found.setdefault((u.index, t.index), []).extend(both)
             grid.add(b, j)
@@ -525,13 +199,13 @@ def _overlaps(sheet: Sheet, views: _Views, seen) -> list[Finding]:
     for (ui, ti), runs in sorted(found.items()):
         u, t = sheet.texts[ui], sheet.texts[ti]
         what = "the caption line" if u.kind == "caption" else "label"
-        out.append(_finding("overlap", sheet, views, _merge(runs), (u.text, t.text), (u.ident, t.ident),
+        out.append(_finding("overlap", sheet, views, merge_runs(runs), (u.text, t.text), (u.ident, t.ident),
                             f"{what} {u.name} and {'the caption line ' if t.kind == 'caption' else 'label '}"
                             f"{t.name} cover each other"))
     return out
 
 
-def _on_points(sheet: Sheet, views: _Views, seen) -> list[Finding]:
+def _on_points(sheet: Sheet, views: Views, seen) -> list[Finding]:
     grid = _Grid()
     for i, d in enumerate(sheet.dots):
         grid.add((d.x - d.r, d.y - d.r, d.x + d.r, d.y + d.r), i)
@@ -562,9 +236,9 @@ def _on_points(sheet: Sheet, views: _Views, seen) -> list[Finding]:
                 # does the disc reach into the box (from the box's nearest point to its centre)?
                 if not hypot(x - min(max(x, b[0]), b[2]), y - min(max(y, b[1]), b[3])) < r - TOUCH:
                     continue
-                if not _meet_any((d.x - r, d.y - r, d.x + r, d.y + r), lay.box):
+                if not boxes_meet((d.x - r, d.y - r, d.x + r, d.y + r), lay.box):
                     continue
-                both = _both(runs, views.shown(d.chain, d.step, lay.level))
+                both = both_runs(runs, views.shown(d.chain, d.step, lay.level))
                 if both:
                     found.setdefault((t.index, i), []).extend(both)
     out = []
@@ -572,7 +246,7 @@ def _on_points(sheet: Sheet, views: _Views, seen) -> list[Finding]:
         t, d = sheet.texts[ti], sheet.dots[i]
         point = names.get(d.ident or "", "")
         shown = f"point {point} ({d.ident})" if point else f"the point {d.ident or 'without id'}"
-        out.append(_finding("on-point", sheet, views, _merge(runs), (t.text,) + ((point,) if point else ()),
+        out.append(_finding("on-point", sheet, views, merge_runs(runs), (t.text,) + ((point,) if point else ()),
                             (t.ident, d.ident), f"{t.kind} {t.name} covers {shown}"))
     return out
 
@@ -614,7 +288,7 @@ def _piece_cells(boxes: list[Box]) -> dict[tuple[int, int], list[int]]:
     return cells
 
 
-def _struck(sheet: Sheet, views: _Views, seen) -> list[Finding]:
+def _struck(sheet: Sheet, views: Views, seen) -> list[Finding]:
     # the grid of :class:`_Grid` (its cells and keys), written out here: every letter of every view asks it
     pieces: list[tuple[int, tuple[float, float, float, float], Box]] = []
     widest = max((s.half for s in sheet.strokes), default=0.0)
@@ -650,18 +324,18 @@ def _struck(sheet: Sheet, views: _Views, seen) -> list[Finding]:
                     hit.add(si)
             for si in sorted(hit):
                 s = sheet.strokes[si]
-                both = _both(runs, views.shown(s.chain, s.step, lay.level))
+                both = both_runs(runs, views.shown(s.chain, s.step, lay.level))
                 if both:
                     found.setdefault((t.index, si), []).extend(both)
     out = []
     for (ti, si), runs in sorted(found.items()):
         t, s = sheet.texts[ti], sheet.strokes[si]
-        out.append(_finding("struck", sheet, views, _merge(runs), (t.text,), (t.ident, s.ident),
+        out.append(_finding("struck", sheet, views, merge_runs(runs), (t.text,), (t.ident, s.ident),
                             f"{t.kind} {t.name} is struck by the result line {s.ident or 'without id'}"))
     return out
 
 
-def _small_labels(sheet: Sheet, views: _Views, seen) -> list[Finding]:
+def _small_labels(sheet: Sheet, views: Views, seen) -> list[Finding]:
     found: dict[float, tuple[list, set]] = {}
     for lay, letters in seen:
         for t, b, runs in letters:
@@ -676,13 +350,13 @@ def _small_labels(sheet: Sheet, views: _Views, seen) -> list[Finding]:
     out = []
     for px, (runs, texts) in sorted(found.items()):
         names = sorted(texts)
-        out.append(_finding("small-label", sheet, views, _merge(runs), names, (),
+        out.append(_finding("small-label", sheet, views, merge_runs(runs), names, (),
                             f"labels at {px:g} px (< {MIN_LABEL_PX:g} px at {views.screen[0]:g}×{views.screen[1]:g}), "
                             f"e.g. {_few(names)}"))
     return out
 
 
-def _small_marks(sheet: Sheet, views: _Views) -> list[Finding]:
+def _small_marks(sheet: Sheet, views: Views) -> list[Finding]:
     if not (views.stepped or (sheet.frame is not None and sheet.marks_steps)):
         return []
     by_step: dict[int, list] = defaultdict(list)
@@ -740,7 +414,7 @@ def _inside(b: Box, view: Box) -> bool:
     return b[0] >= view[0] and b[1] >= view[1] and b[2] <= view[2] and b[3] <= view[3]
 
 
-def _outside(sheet: Sheet, views: _Views, seen) -> list[Finding]:
+def _outside(sheet: Sheet, views: Views, seen) -> list[Finding]:
     found: dict[int, list] = defaultdict(list)
     for lay, letters in seen:
         for t, b, runs in letters:
@@ -758,12 +432,12 @@ def _outside(sheet: Sheet, views: _Views, seen) -> list[Finding]:
             lay = views.layout(k)
             for t in ts:
                 b = views.text_box(t, lay)
-                if not _meet_any(b, lay.box) and _contains(views.shown(t.chain, t.step, lay.level), k):
+                if not boxes_meet(b, lay.box) and in_runs(views.shown(t.chain, t.step, lay.level), k):
                     found[t.index].append((k, k))
     out = []
     for i in sorted(found):
         t = sheet.texts[i]
-        out.append(_finding("outside", sheet, views, _merge(found[i]), (t.text,), (t.ident,),
+        out.append(_finding("outside", sheet, views, merge_runs(found[i]), (t.text,), (t.ident,),
                             f"{t.kind} {t.name} reaches outside the view"))
     return out
 
@@ -773,7 +447,7 @@ def _few(texts: list[str], most: int = 8) -> str:
     return shown + (f", … ({len(texts)} in all)" if len(texts) > most else "")
 
 
-def _leaders(sheet: Sheet, views: _Views) -> list[Finding]:
+def _leaders(sheet: Sheet, views: Views) -> list[Finding]:
     """A leader must start at its point (drawn in that view) and end at its letter, in every view that shows it."""
     if not sheet.leaders:
         return []
@@ -791,7 +465,7 @@ def _leaders(sheet: Sheet, views: _Views) -> list[Finding]:
             ax, ay = ld.anchor
             if not (x0 <= ax <= x1 and y0 <= ay <= y1):
                 continue
-            runs = _both(views.shown(ld.chain, ld.step, lay.level), lay.runs)
+            runs = both_runs(views.shown(ld.chain, ld.step, lay.level), lay.runs)
             if not runs or not letters.get(ld.lbg):
                 continue
             t = letters[ld.lbg][0]
@@ -807,10 +481,10 @@ def _leaders(sheet: Sheet, views: _Views) -> list[Finding]:
             if math.hypot(b[0] - min(max(b[0], tb[0]), tb[2]), b[1] - min(max(b[1], tb[1]), tb[3])) > reach:
                 found[(i, "letter")].extend(runs)
             # its point is drawn there: a marker at the anchor, seen in the same views
-            seen = _merge(r for d in dots.get((round(ax), round(ay)), ())
+            seen = merge_runs(r for d in dots.get((round(ax), round(ay)), ())
                           if math.hypot(d.x - ax, d.y - ay) <= 1.0 for r in views.shown(d.chain, d.step, lay.level))
-            for k in _steps_of(runs):
-                if not _contains(seen, k):
+            for k in steps_of(runs):
+                if not in_runs(seen, k):
                     found[(i, "hidden")].append((k, k))
     out = []
     what = {"point": "starts away from its point", "letter": "ends away from its letter",
@@ -818,12 +492,12 @@ def _leaders(sheet: Sheet, views: _Views) -> list[Finding]:
     for (i, why), runs in sorted(found.items()):
         ld = sheet.leaders[i]
         t = letters[ld.lbg][0]
-        out.append(_finding("leader", sheet, views, _merge(runs), (t.text,), (ld.ident or t.ident,),
+        out.append(_finding("leader", sheet, views, merge_runs(runs), (t.text,), (ld.ident or t.ident,),
                             f"the leader of {t.kind} {t.name} {what[why]}"))
     return out
 
 
-def _caption_names(sheet: Sheet, views: _Views, seen) -> list[Finding]:
+def _caption_names(sheet: Sheet, views: Views, seen) -> list[Finding]:
     """A step's caption names only letters its view shows, and never an internal name (c135, cPV10).
 
     A name the figure letters somewhere (a letter or a name tag) must be seen in the step's view; a name no
@@ -846,7 +520,7 @@ def _caption_names(sheet: Sheet, views: _Views, seen) -> list[Finding]:
     for lay, letters in seen:
         for t, _b, runs in letters:
             if t.kind != "caption":
-                for k in _steps_of(runs):
+                for k in steps_of(runs):
                     shown[k].add(t.text)
     found: dict[tuple[str, str], list] = defaultdict(list)
     for k, texts in sheet.captions.items():
@@ -866,11 +540,11 @@ def _caption_names(sheet: Sheet, views: _Views, seen) -> list[Finding]:
     for (name, why), runs in sorted(found.items()):
         msg = (f"the caption names {name!r}, which the step's view does not letter" if why == "unlettered" else
                f"the caption names {name!r}, an internal name the figure does not letter")
-        out.append(_finding("caption-name", sheet, views, _merge(runs), (name,), (), msg))
+        out.append(_finding("caption-name", sheet, views, merge_runs(runs), (name,), (), msg))
     return out
 
 
-def _fill(sheet: Sheet, views: _Views) -> list[Finding]:
+def _fill(sheet: Sheet, views: Views) -> list[Finding]:
     """A figure's drawing fills its canvas: at least :data:`MIN_FILL` of its width and of its height (the
     caption lines aside), as the file shows it."""
     if sheet.frame is not None or not sheet.inked:

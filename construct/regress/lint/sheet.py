@@ -14,7 +14,8 @@ How each element looks is worked out from the drawing's own style sheet
 (current ``cur``, earlier ``old``, faded ``done``, an input ``inp``), so that
 what a view shows is what a browser shows.  Text extents come from the font
 the style sheet names (:mod:`.fonts`).  Lengths are user units of the
-drawing, boxes (x0, y0, x1, y1) with y down.
+drawing, boxes (x0, y0, x1, y1) with y down.  The elements' outlines are :mod:`.outlines`; what the drawing
+tells the player (the camera's views, the letters' moves) is :mod:`.player`.
 
 >>> svg = '''<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 200 100">
 ... <style>.lb{font-family:'DejaVu Sans';font-size:12px;text-anchor:middle}.pt{fill:black}
@@ -29,7 +30,6 @@ drawing, boxes (x0, y0, x1, y1) with y down.
 
 from __future__ import annotations
 
-import json
 import math
 import re
 import xml.etree.ElementTree as ET
@@ -37,16 +37,16 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from ...kernel.errors import ConstructError
-from ..svgdiff.geometry import arc_centre, parse_path, parse_transform
+from ..svgdiff.geometry import parse_transform
 from .cascade import PROPERTIES, Cascade, Look, Node, declarations
 from .fonts import text_extents
+from .outlines import (IDENTITY, Box, Matrix, box_of, compose, cut_pieces, four_numbers, local_name, number, polylines,
+                       transform_point)
+from .player import END, END_LEVEL, player_data, read_moves, read_views
 
 __all__ = ["Sheet", "Text", "Dot", "Stroke", "Line", "Leader", "read_sheet", "read_views", "player_data",
            "LintInputError", "STATES", "Box", "read_moves", "END", "END_LEVEL"]
 
-Box = tuple[float, float, float, float]
-Matrix = tuple[float, float, float, float, float, float]
-_IDENTITY: Matrix = (1.0, 0.0, 0.0, 1.0, 0.0, 0.0)
 
 #: The classes the player gives a step's groups (besides ``step``); "" is the whole figure as the file has it.
 STATES = ("cur", "old", "done", "inp", "hid")
@@ -54,10 +54,6 @@ STATES = ("cur", "old", "done", "inp", "hid")
 #: A label's box reaches this far beyond its glyphs when it has no halo (user units): labels closer
 #: than twice this read as one word ("ω7ω6").
 MIN_MARGIN = 0.5
-#: The longest straight piece a result line is cut into for the spatial index (user units).
-PIECE = 24.0
-#: How far a flattened arc or curve may stray from the true one (user units).
-FLATNESS = 0.2
 
 _NOT_DRAWN = {"defs", "clipPath", "mask", "marker", "pattern", "symbol", "style", "script", "metadata", "title",
               "desc", "linearGradient", "radialGradient", "filter", "foreignObject", "animate", "set",
@@ -70,12 +66,8 @@ _SKIPPED_IDS = {"inset"}
 
 
 _PROPERTY_SET = frozenset(PROPERTIES)
-#: The class of a figure's root (or camera group) that shows its end state: the player's last step.
-END = "fin"
 #: A zoom level's class (``zl3``).
 _ZOOM_CLASS = re.compile(r"zl\d+")
-#: The key of the end state's letter moves in :attr:`Sheet.moves` (in place of a zoom level).
-END_LEVEL = -1
 #: Marks a step's group in a chain (its state classes are what a view changes).
 _STEP_GROUP = ("#step-group", "")
 _STATE_CLASSES = frozenset(STATES)
@@ -266,247 +258,7 @@ class Sheet:
         return self.cascade.look(chain)
 
 
-# --------------------------------------------------------------------------- the camera
-
-def read_views(root: ET.Element, data: dict | None) -> dict[int, tuple[float, float, float, float]]:
-    """The camera's view of every step that has one: {step: (x, y, w, h)} in the drawing's user units.
-
-    Read from the output, in this order: the ``views`` layer (``<g id="views">`` holding
-    ``<g class="step" data-step="k"><rect class="view" x y width height/></g>`` at each step
-    where the view changes; it holds until the next change), a ``data-view="x y w h"`` on an
-    element of step k, then the player's data (``views``: a list of boxes, each step's ``v``
-    an index into it, or ``v`` the box itself).  A step without a view is shown whole (the
-    drawing's viewBox).  This is the one place that knows where the camera is stored.
-
-    >>> svg = '<svg xmlns="http://www.w3.org/2000/svg"><g id="views"><g class="step" data-step="1">' \\
-    ...       '<rect class="view" x="0" y="0" width="100" height="50"/></g><g class="step" data-step="3">' \\
-    ...       '<rect class="view" x="10" y="5" width="20" height="10"/></g></g>' \\
-    ...       '<g class="step" data-step="4"/></svg>'
-    >>> read_views(ET.fromstring(svg), None)
-    {1: (0.0, 0.0, 100.0, 50.0), 2: (0.0, 0.0, 100.0, 50.0), 3: (10.0, 5.0, 20.0, 10.0), 4: (10.0, 5.0, 20.0, 10.0)}
-    """
-    views: dict[int, tuple[float, float, float, float]] = {}
-    changes: dict[int, tuple[float, float, float, float]] = {}
-    last = 0
-    for e in root.iter():
-        step = e.get("data-step")
-        if step is not None and step.strip().isdigit():
-            last = max(last, int(step))
-        if _local(e.tag) == "g" and e.get("id") == "views":
-            for g in e:
-                k = g.get("data-step")
-                if k is None or not k.strip().isdigit():
-                    continue
-                for r in g:
-                    if _local(r.tag) == "rect" and "view" in r.get("class", "").split():
-                        box = _four(" ".join(r.get(a, "") for a in ("x", "y", "width", "height")))
-                        if box is not None:
-                            changes[int(k)] = box
-    if changes:
-        keys = sorted(changes)
-        for i, k in enumerate(keys):
-            for j in range(k, (keys[i + 1] if i + 1 < len(keys) else last + 1)):
-                views[j] = changes[k]
-    for e in root.iter():
-        raw, step = e.get("data-view"), e.get("data-step")
-        if raw is None or step is None:
-            continue
-        box = _four(raw)
-        if box is not None and step.strip().isdigit():
-            views.setdefault(int(step), box)
-    if data:
-        table = data.get("views") if isinstance(data.get("views"), list) else None
-        for k, st in enumerate(data.get("steps") or (), start=1):
-            v = st.get("v") if isinstance(st, dict) else None
-            if isinstance(v, int) and table is not None and 0 <= v < len(table):
-                v = table[v]
-            box = _four(" ".join(map(str, v))) if isinstance(v, (list, tuple)) else None
-            if box is not None:
-                views.setdefault(k, box)
-    return views
-
-
-_MOVE = re.compile(r"translate\(\s*([-+\d.eE]+)(?:px)?\s*[, ]\s*([-+\d.eE]+)(?:px)?\s*\)")
-
-
-def read_moves(css: str, leaders: set | None = None) -> dict[tuple[int, str], tuple[float, float]]:
-    """The letters a zoom level (or the end state, ``.fin``: key :data:`END_LEVEL`) moves:
-    ``.zlN #id>.lb{transform:scale(..) translate(dx, dy)}`` rules (earlier drawings wrote ``#id>*`` or moved
-    the leader too, ``#id>.leader``: those (level, id) are added to *leaders*).
-
-    >>> read_moves(".zl1 #a-lb>.lb,.zl1 #a-lb>.leader,.zl3 #a-lb>.lb{transform:scale(var(--ls,var(--zs))) "
-    ...            "translate(-9.4px,2px)}")
-    {(1, 'a-lb'): (-9.4, 2.0), (3, 'a-lb'): (-9.4, 2.0)}
-    >>> read_moves(".zl2 #b-lb>*{transform:scale(var(--ls,var(--zs))) translate(1px,0px)}")
-    {(2, 'b-lb'): (1.0, 0.0)}
-    """
-    out: dict[tuple[int, str], tuple[float, float]] = {}
-    for block in re.finditer(r"([^{}]+)\{([^{}]*)\}", re.sub(r"/\*.*?\*/", "", css, flags=re.S)):
-        m = _MOVE.search(block.group(2))
-        if not m or "transform" not in block.group(2):
-            continue
-        for sel in block.group(1).split(","):
-            t = re.fullmatch(r"\s*\.(zl\d+|fin)\s+#([\w-]+)\s*>\s*(\*|\.lb|\.leader)\s*", sel)
-            if t:
-                lvl = END_LEVEL if t.group(1) == END else int(t.group(1)[2:])
-                out[(lvl, t.group(2))] = (float(m.group(1)), float(m.group(2)))
-                if leaders is not None and t.group(3) != ".lb":
-                    leaders.add((lvl, t.group(2)))
-    return out
-
-
-def _four(text: str) -> tuple[float, float, float, float] | None:
-    try:
-        v = [float(t) for t in re.split(r"[\s,]+", text.strip()) if t]
-    except ValueError:
-        return None
-    if len(v) != 4 or not all(math.isfinite(x) for x in v) or v[2] <= 0 or v[3] <= 0:
-        return None
-    return (v[0], v[1], v[2], v[3])
-
-
-def player_data(path: Path) -> dict | None:
-    """The JSON data of a ``player.html`` (steps, their inputs and views), or None when there is none."""
-    try:
-        if not path.is_file():
-            return None
-        page = path.read_text(encoding="utf-8", errors="replace")
-    except OSError:
-        return None
-    m = re.search(r'<script type="application/json" id="data">(.*?)</script>', page, re.S)
-    if not m:
-        return None
-    try:
-        data = json.loads(m.group(1))
-    except ValueError:
-        return None
-    return data if isinstance(data, dict) else None
-
-
 # --------------------------------------------------------------------------- reading
-
-def _local(tag) -> str:
-    if not isinstance(tag, str):
-        return ""
-    return tag.rsplit("}", 1)[-1]
-
-
-def _mul(m: Matrix, n: Matrix) -> Matrix:
-    a, b, c, d, e, f = m
-    A, B, C, D, E, F = n
-    return (a * A + c * B, b * A + d * B, a * C + c * D, b * C + d * D, a * E + c * F + e, b * E + d * F + f)
-
-
-def _at(m: Matrix, x: float, y: float) -> tuple[float, float]:
-    return (m[0] * x + m[2] * y + m[4], m[1] * x + m[3] * y + m[5])
-
-
-def _num(raw: str | None, default: float = 0.0) -> float:
-    """The (first) number of an attribute; *default* when there is none."""
-    if raw is None:
-        return default
-    try:
-        v = float(raw)  # what our renderer writes: a plain number
-        return v if math.isfinite(v) else default
-    except ValueError:
-        pass
-    first = re.split(r"[\s,]+", raw.strip())[0] if raw.strip() else ""
-    m = re.match(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?", first)
-    return float(m.group()) if m else default
-
-
-def _box_of(points) -> Box:
-    xs = [p[0] for p in points]
-    ys = [p[1] for p in points]
-    return (min(xs), min(ys), max(xs), max(ys))
-
-
-def _arc_points(c, r, a0, sweep) -> list[tuple[float, float]]:
-    step = 2 * math.acos(max(-1.0, 1 - FLATNESS / r)) if r > FLATNESS else math.pi / 2
-    n = max(2, min(720, math.ceil(abs(sweep) / max(step, 1e-6))))
-    return [(c[0] + r * math.cos(a0 + sweep * i / n), c[1] + r * math.sin(a0 + sweep * i / n)) for i in range(n + 1)]
-
-
-def _polylines(tag: str, e: ET.Element, where: str) -> list[list[tuple[float, float]]]:
-    """The element's outline as polylines in its own coordinates (arcs and curves flattened)."""
-    if tag == "line":
-        return [[(_num(e.get("x1")), _num(e.get("y1"))), (_num(e.get("x2")), _num(e.get("y2")))]]
-    if tag in ("circle", "ellipse"):
-        cx, cy = _num(e.get("cx")), _num(e.get("cy"))
-        rx = _num(e.get("r") if tag == "circle" else e.get("rx"))
-        ry = rx if tag == "circle" else _num(e.get("ry"), rx)
-        if rx <= 0 or ry <= 0:
-            return [[(cx, cy)]]
-        pts = _arc_points((0.0, 0.0), max(rx, ry), 0.0, 2 * math.pi)
-        return [[(cx + x * rx / max(rx, ry), cy + y * ry / max(rx, ry)) for x, y in pts]]
-    if tag == "rect":
-        x, y, w, h = _num(e.get("x")), _num(e.get("y")), _num(e.get("width")), _num(e.get("height"))
-        return [[(x, y), (x + w, y), (x + w, y + h), (x, y + h), (x, y)]]
-    if tag in ("polyline", "polygon"):
-        v = [float(t) for t in re.findall(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?", e.get("points", ""))]
-        pts = [(v[i], v[i + 1]) for i in range(0, len(v) - 1, 2)]
-        if tag == "polygon" and pts:
-            pts.append(pts[0])
-        return [pts] if pts else []
-    # a path
-    out: list[list[tuple[float, float]]] = []
-    cur: list[tuple[float, float]] = []
-    for seg in parse_path(e.get("d", ""), where):
-        op = seg[0]
-        if op == "M":
-            if len(cur) > 1:
-                out.append(cur)
-            cur = [seg[1]]
-        elif op in ("L", "Z"):
-            cur = cur or [seg[1]]
-            cur.append(seg[2])
-        elif op == "C":
-            (ax, ay), (bx, by), (cx, cy), (dx, dy) = seg[1:]
-            cur = cur or [seg[1]]
-            # the sums in the order sum() adds them (0 + w0 p0 + w1 p1 + ...): the same numbers, without its calls
-            cur.extend((0 + w0 * ax + w1 * bx + w2 * cx + w3 * dx, 0 + w0 * ay + w1 * by + w2 * cy + w3 * dy)
-                       for w0, w1, w2, w3 in _CUBIC)
-        elif op == "Q":
-            (ax, ay), (bx, by), (cx, cy) = seg[1:]
-            cur = cur or [seg[1]]
-            cur.extend((0 + w0 * ax + w1 * bx + w2 * cx, 0 + w0 * ay + w1 * by + w2 * cy) for w0, w1, w2 in _QUADRATIC)
-        else:  # an arc
-            _, p0, p1, rx, ry, phi, large, sweep = seg
-            cur = cur or [p0]
-            (cx, cy), rx, ry = arc_centre(p0, p1, rx, ry, phi, large, sweep)
-            if abs(rx - ry) > 1e-9 * max(rx, 1.0) or phi % 180:
-                cur.append(p1)  # an ellipse turned: its chord (our drawings have none)
-                continue
-            a0 = math.atan2(p0[1] - cy, p0[0] - cx)
-            a1 = math.atan2(p1[1] - cy, p1[0] - cx)
-            d = a1 - a0
-            if sweep:  # positive angles (clockwise on the y-down sheet)
-                d = d % (2 * math.pi) or 2 * math.pi
-            else:
-                d = -((-d) % (2 * math.pi) or 2 * math.pi)
-            cur.extend(_arc_points((cx, cy), rx, a0, d)[1:])
-    if len(cur) > 1 or (cur and not out):
-        out.append(cur)
-    return out
-
-
-#: The weights a cubic and a quadratic Bézier piece is flattened with (12 points each, the end included).
-_CUBIC = tuple(((1 - i / 12) * (1 - i / 12) * (1 - i / 12), 3 * (1 - i / 12) * (1 - i / 12) * (i / 12),
-                3 * (1 - i / 12) * (i / 12) * (i / 12), (i / 12) * (i / 12) * (i / 12)) for i in range(1, 13))
-_QUADRATIC = tuple(((1 - i / 12) * (1 - i / 12), 2 * (1 - i / 12) * (i / 12), (i / 12) * (i / 12)) for i in range(1, 13))
-
-
-def _pieces(lines: list[list[tuple[float, float]]]) -> list[tuple[float, float, float, float]]:
-    """Straight pieces at most :data:`PIECE` long (so that each sits in a few cells of the index)."""
-    out = []
-    for pts in lines:
-        for (ax, ay), (bx, by) in zip(pts, pts[1:]):
-            n = max(1, math.ceil(math.hypot(bx - ax, by - ay) / PIECE))
-            for i in range(n):
-                out.append((ax + (bx - ax) * i / n, ay + (by - ay) * i / n,
-                            ax + (bx - ax) * (i + 1) / n, ay + (by - ay) * (i + 1) / n))
-    return out
-
 
 def read_sheet(source: str | bytes | Path, name: str, *, data: dict | None = None) -> Sheet:
     """Read a drawing (SVG text, bytes or a file) into a :class:`Sheet`; *data*: the player's, if any."""
@@ -525,17 +277,17 @@ def read_sheet(source: str | bytes | Path, name: str, *, data: dict | None = Non
         raise LintInputError(f"{name}: not well-formed XML: {exc}") from None
     except (ValueError, UnicodeError) as exc:
         raise LintInputError(f"{name}: cannot decode: {exc}") from None
-    if _local(root.tag) != "svg":
-        raise LintInputError(f"{name}: the root element is <{_local(root.tag)}>, not <svg>")
-    css = "\n".join("".join(e.itertext()) for e in root.iter() if _local(e.tag) == "style")
+    if local_name(root.tag) != "svg":
+        raise LintInputError(f"{name}: the root element is <{local_name(root.tag)}>, not <svg>")
+    css = "\n".join("".join(e.itertext()) for e in root.iter() if local_name(e.tag) == "style")
     cascade = Cascade(css)
-    vb = _four(root.get("viewBox", "")) or (0.0, 0.0, _num(root.get("width"), 0.0), _num(root.get("height"), 0.0))
+    vb = four_numbers(root.get("viewBox", "")) or (0.0, 0.0, number(root.get("width"), 0.0), number(root.get("height"), 0.0))
     if vb[2] <= 0 or vb[3] <= 0:
         raise LintInputError(f"{name}: the drawing has no size (no viewBox, width or height)")
     sheet = Sheet(name=name, viewbox=vb, cascade=cascade)
     sheet.marks_steps = _marks_steps(cascade)
     sheet.plate = "plate" in root.get("class", "").split()
-    sheet.width = _num(root.get("width"), 0.0) or None
+    sheet.width = number(root.get("width"), 0.0) or None
     _Reader(sheet).read(root)
     sheet.steps = sorted(set(sheet.steps))
     sheet.n = sheet.steps[-1] if sheet.steps else 0
@@ -543,7 +295,7 @@ def read_sheet(source: str | bytes | Path, name: str, *, data: dict | None = Non
     sheet.frame = current[0] if len(current) == 1 else None
     sheet.views = read_views(root, data)
     sheet.moves = read_moves(css, sheet.moved_leaders)
-    camera_layer = any(_local(e.tag) == "g" and e.get("id") == "views" for e in root)
+    camera_layer = any(local_name(e.tag) == "g" and e.get("id") == "views" for e in root)
     sheet.player = bool(sheet.views) and (bool(data) or camera_layer)
     sheet.unplayed = camera_layer and not data
     sheet.end = END in root.get("class", "").split()
@@ -600,7 +352,7 @@ class _Reader:
         self.groups = 0  # letter groups met so far
 
     def read(self, root: ET.Element) -> None:
-        self._walk(root, (), _IDENTITY, None)
+        self._walk(root, (), IDENTITY, None)
         # the labels last: their halos (drawn before them) are known by then
         for args in self.pending:
             self._text(*args)
@@ -624,7 +376,7 @@ class _Reader:
 
     def _walk(self, e: ET.Element, chain: tuple[Node, ...], ctm: Matrix, step: int | None,
               group: tuple | None = None) -> None:
-        tag = _local(e.tag)
+        tag = local_name(e.tag)
         if not tag or tag in _NOT_DRAWN or e.get("id") in _SKIPPED_IDS or e.get("id") == "views":
             return
         sheet = self.sheet
@@ -640,14 +392,14 @@ class _Reader:
                 sheet.fades[step] = int(fade)
         if e.get("transform"):
             try:
-                ctm = _mul(ctm, parse_transform(e.get("transform")))
+                ctm = compose(ctm, parse_transform(e.get("transform")))
             except ConstructError:
                 pass  # a transform lint cannot read: the element is taken where it stands
         chain = chain + (self._node(e, tag, step),)
         if tag in ("svg", "g", "a", "switch"):
             if tag == "g" and "lbg" in chain[-1][2]:
                 # a letter about its point: the player scales (and a zoom level moves) its children about it
-                group = (_at(ctm, 0.0, 0.0), e.get("id"), math.sqrt(abs(ctm[0] * ctm[3] - ctm[1] * ctm[2])),
+                group = (transform_point(ctm, 0.0, 0.0), e.get("id"), math.sqrt(abs(ctm[0] * ctm[3] - ctm[1] * ctm[2])),
                          self.groups)
                 self.groups += 1
             for child in e:
@@ -665,7 +417,7 @@ class _Reader:
             return
         if tag == "line" and "leader" in classes and group is not None:
             anchor, gid, unit, serial = group
-            line = tuple(_num(e.get(a)) for a in ("x1", "y1", "x2", "y2"))
+            line = tuple(number(e.get(a)) for a in ("x1", "y1", "x2", "y2"))
             sheet.leaders.append(Leader(e.get("id"), step, chain, anchor, line, gid, unit, serial))  # type: ignore[arg-type]
         if tag == "circle" and ("pt" in classes or ("result" not in classes and not sheet.plate)):
             # a point marker or a thin circle: its centre and radius are all that is read (its box is exact)
@@ -673,43 +425,43 @@ class _Reader:
         else:
             where = f"{sheet.name}: <{tag} {e.get('id') or ''}>"
             try:
-                lines = _polylines(tag, e, where)
+                lines = polylines(tag, e, where)
             except ConstructError as exc:
                 raise LintInputError(str(exc)) from None
-            lines = [[_at(ctm, x, y) for x, y in pts] for pts in lines]
+            lines = [[transform_point(ctm, x, y) for x, y in pts] for pts in lines]
             pts = [p for line in lines for p in line]
             if not pts:
                 return
         scale = math.sqrt(abs(ctm[0] * ctm[3] - ctm[1] * ctm[2]))
         if not (tag == "rect" and (e.get("id") == "background" or "view" in classes)):
             if tag == "circle":
-                cx, cy = _at(ctm, _num(e.get("cx")), _num(e.get("cy")))
-                r = _num(e.get("r")) * scale
+                cx, cy = transform_point(ctm, number(e.get("cx")), number(e.get("cy")))
+                r = number(e.get("r")) * scale
                 ink = (cx - r, cy - r, cx + r, cy + r)
             else:
-                ink = _box_of(pts)
+                ink = box_of(pts)
             sheet.inked.append((chain, ink))
         if tag == "circle" and "pt" in classes:
             look = sheet.look(chain)
-            cx, cy = _at(ctm, _num(e.get("cx")), _num(e.get("cy")))
-            r = _num(e.get("r")) * scale + (look.stroke_width * scale / 2 if look.stroked else 0.0)
+            cx, cy = transform_point(ctm, number(e.get("cx")), number(e.get("cy")))
+            r = number(e.get("r")) * scale + (look.stroke_width * scale / 2 if look.stroked else 0.0)
             sheet.dots.append(Dot(e.get("id"), step, chain, cx, cy, r))
         elif "result" in classes:
             look = sheet.look(chain)
             if look.stroked:
-                sheet.strokes.append(Stroke(e.get("id"), step, chain, tuple(_pieces(lines)),
+                sheet.strokes.append(Stroke(e.get("id"), step, chain, tuple(cut_pieces(lines)),
                                             look.stroke_width * scale / 2))
         if sheet.plate and not (tag == "circle" and "pt" in classes) and not classes & {"halo", "brk"}:
             look = sheet.look(chain)
             if look.stroked and look.shown and look.opacity > 0:
-                sheet.lines.append(Line(e.get("id"), chain, tuple(_pieces(lines)), look.stroke_width * scale / 2))
+                sheet.lines.append(Line(e.get("id"), chain, tuple(cut_pieces(lines)), look.stroke_width * scale / 2))
         if step is not None and not classes & {"leader", "halo", "brk", "brkline"}:
             if tag == "circle":  # exact: the flattened outline's corners fall inside the circle
-                cx, cy = _at(ctm, _num(e.get("cx")), _num(e.get("cy")))
-                r = _num(e.get("r")) * scale
+                cx, cy = transform_point(ctm, number(e.get("cx")), number(e.get("cy")))
+                r = number(e.get("r")) * scale
                 box = (cx - r, cy - r, cx + r, cy + r)
             else:
-                box = _box_of(pts)
+                box = box_of(pts)
             sheet.drawn.append(Drawn(step, e.get("id"), chain, box))
 
     def _text(self, e: ET.Element, chain: tuple[Node, ...], ctm: Matrix, step: int | None,
@@ -723,11 +475,11 @@ class _Reader:
         look = sheet.look(chain)
         (ix0, iy0, ix1, iy1), advance = text_extents(text, look.font_family, round(look.font_size, 3),
                                                       look.font_style, look.font_weight)
-        x, y = _num(e.get("x")) + _num(e.get("dx")), _num(e.get("y")) + _num(e.get("dy"))
+        x, y = number(e.get("x")) + number(e.get("dx")), number(e.get("y")) + number(e.get("dy"))
         shift = {"middle": -advance / 2, "end": -advance}.get(look.text_anchor, 0.0)
         margin = self.halos.get((text, e.get("x"), e.get("y"), e.get("transform")), MIN_MARGIN)
         margin = max(margin, MIN_MARGIN)
-        corners = [_at(ctm, x + shift + a, y + b) for a in (ix0 - margin, ix1 + margin)
+        corners = [transform_point(ctm, x + shift + a, y + b) for a in (ix0 - margin, ix1 + margin)
                    for b in (iy0 - margin, iy1 + margin)]
         ink = (x + shift + ix0, y + iy0, x + shift + ix1, y + iy1)
         ident = e.get("id")
@@ -738,7 +490,7 @@ class _Reader:
                     owner = ident[: -len(suffix)]
         scale = math.sqrt(abs(ctm[0] * ctm[3] - ctm[1] * ctm[2]))
         anchor, gid, unit, serial = group if group is not None else (None, None, 1.0, None)
-        sheet.texts.append(Text(len(sheet.texts), text, kind, ident, owner, step, chain, _box_of(corners),
+        sheet.texts.append(Text(len(sheet.texts), text, kind, ident, owner, step, chain, box_of(corners),
                                 look.font_size * scale, anchor, gid, unit, serial, ink, ctm))
 
 

@@ -1,159 +1,31 @@
-"""Four-stroke engines: pressure over two revolutions and the piston over-pressure (seed 001 c, Abb. 1056–1058).
-
-Seed 001 describes the explosion engine ("Viertakt-Verpuffungsmaschine",
-Abb. 1056): suction c–b under a slight vacuum, compression b–c, ignition in c
-"unter rascher Steigerung des Druckes" -- idealised at constant volume --,
-expansion c–d–e, release in e, exhaust f–g; "der höchste Druck ... pflegt bei
-25 at zu liegen".  The compression-ignition engine (Diesel, Abb. 1057) burns at
-constant pressure instead.  Abb. 1058 shows the piston over-pressure a–a
-without and b–b with the mass forces.
-
-The idealised cycle (absolute pressures in at, volumes in strokes):
-
-* suction at ``suction`` p_a, exhaust at ``exhaust`` p_g (horizontal lines);
-* compression p V^n = p_a (1 + V_c)^n from the crank-end dead centre to the
-  clearance V_c = 1/(ε − 1) (ε the ``compression_ratio``);
-* explosion: ignition at constant volume to ``max_pressure``, expansion
-  p V^n = const; Diesel: combustion at constant pressure (the compression-end
-  pressure p_a ε^n) to the ``cutoff`` volume ρ·V_c, then expansion;
-* release early, as the handbook has it: "In *e* wurde die Auslaßöffnung
-  freigegeben, durch welche die verbrannten Gase während des vierten, des
-  Auspuffhubes, von *f* bis *g* vom Kolben hinausgeschoben werden" -- the
-  expansion ends at e, the piston path ``release`` (x_e/s, default 0.9, about
-  37° before the crank-end dead centre at L/r = 5), and the pressure falls
-  along the straight line e–f to the exhaust line at the dead centre f
-  (``release`` 1 releases at the dead centre, at constant volume).
-
-The compression ratio is the engine's own unless given: ε = 5 for the explosion
-engine, 14 for the Diesel (gas engines 4 to 7, Diesel 12 to 16).
-
-**The polytropes by Brauer's construction** (E. Brauer, 1885; the period
-graphical method for p V^n = const): two rays from the origin O of the
-p–V diagram, OM below the volume axis at α and ON to the left of the pressure
-axis at β, with 1 + tg β = (1 + tg α)^n.  From a point (V, p) of the curve
-the next is (V(1 + tg α), p/(1 + tg β)): the vertical through V meets OM, the
-45° line from there meets the volume axis at V(1 + tg α); the 45° line from
-p on the pressure axis meets ON at the height p/(1 + tg β).  Inward (the
-compression) the steps run backwards.  Every point so found lies on
-p V^n = const exactly -- the rays are the method's givens: tg α = R^(1/m) − 1
-(m steps across the volume ratio R, so that the last point lands on the
-dead-centre ordinate) and tg β = R^(n/m) − 1, numbers a draftsman took from
-a table of powers or the slide rule; they are laid off as lengths (tg α·r
-under r), and every step after them is straightedge, compass and a 45° line
-drawn as a parallel.  The curve is drawn through the points with the French
-curve (its straying from the polytrope is checked against the same curve
-through the exact points).
-
-**Over 720°** (Abb. 1058, which the handbook draws for the engine with
-self-ignition: ``over_pressure`` defaults to the Diesel's, and the explosion
-engine's plate is Abb. 1056's diagram alone unless asked): the crank circle is divided, the piston positions come from
-the rod arcs; each position's ordinate in the p–V diagram meets the branch of
-its stroke (suction, compression, expansion, exhaust), and the compass
-carries the height to the ordinate of that crank angle in the 720° diagram
-(abscissae: a length 8r divided into 4N equal parts).  Measured from its
-atmospheric line (1 at) the curve is the piston over-pressure a–a of a
-single-acting engine (open crank side).  b–b takes off the mass force per unit
-of piston area, q (cos θ + (r/L) cos 2θ), q = m ω² r/F in at (``pressure_ratio``),
-constructed as the inertia ordinates of seed 000 (the proportional angle for
-r/L and q).
-
->>> fig = FOUR_STROKE.figure(parts=4, steps=4, over_pressure=True)
->>> g = fig.replay.givens
->>> round(pressure(fig, "cP4"), 10) == round(g["suction"] * g["compression_ratio"] ** g["exponent"], 10)
-True
->>> round(volume(fig, "cP4"), 12) == round(g["clearance"], 12)     # the last Brauer point lands on V_c
-True
-"""
+"""Building the four-stroke diagrams by Brauer's construction: the givens, the p-V diagram, the crank circle, the
+720° diagram with the over-pressure, and the plate."""
 
 from __future__ import annotations
 
-import math
 from typing import Any, Mapping
 
-from .checking import EUCLIDEAN_TOLERANCE, Check
-from ..kernel.errors import InvalidParameter, did_you_mean
-from ..kernel.division import NAMES as DIVISION_NAMES
-from ..kernel.division import check_parts, divide_semicircle
-from ..kernel.instruments import Builder
-from ..kernel.protocol import Caption
-from . import Construction, Figure, bounded, register, rod_ratio_param
-from .crank import build_frame, rod_arcs
-from .domain import (COMPRESSION_RATIO, CUTOFF_RATIO, DRAWN_LENGTH, ENGINE_PRESSURE, EXHAUST_PRESSURE,
-                     POLYTROPE_EXPONENT, PRESSURE_RATIO, RELEASE, SUCTION_PRESSURE)
-from .indicator import square
-from .scales import scale_furniture
-from .inertia.build import inertia_scale, inertia_value, value_kind
-from .phrases import COMBUSTION, Cite, number, ratio
+from ...kernel.errors import InvalidParameter, did_you_mean
+from ...kernel.division import check_parts, divide_semicircle
+from ...kernel.instruments import Builder
+from .. import Figure, bounded, rod_ratio_param
+from ..crank import build_frame, rod_arcs
+from ..domain import (COMPRESSION_RATIO, CUTOFF_RATIO, DRAWN_LENGTH, ENGINE_PRESSURE, EXHAUST_PRESSURE,
+                      POLYTROPE_EXPONENT, PRESSURE_RATIO, RELEASE, SUCTION_PRESSURE)
+from ..indicator_parts import square
+from ..scales import scale_furniture
+from ..inertia.build import inertia_scale, inertia_value, value_kind
+from .model import COMPRESSION_RATIOS, ENGINES, STROKES, brauer_tangents
 
-__all__ = ["FOUR_STROKE", "ENGINES", "COMPRESSION_RATIOS", "build_four_stroke", "four_stroke_checks",
-           "model_pressure", "pressure", "volume", "brauer_tangents", "STROKES"]
-
-ENGINES = ("explosion", "diesel")
-#: Each engine's compression ratio when none is given (explosion engines 4..7, Diesel 12..16).
-COMPRESSION_RATIOS = {"explosion": 5.0, "diesel": 14.0}
-#: The four strokes in order, from the head-end dead centre (top dead centre) at 0°.
-STROKES = ("suction", "compression", "expansion", "exhaust")
+__all__ = ["build_four_stroke", "four_stroke_givens", "validate_four_stroke", "four_stroke_plate", "over_pressure_furniture",
+           "PLATE", "PV_PLATE", "PV_ZERO", "T0_AT"]
 
 #: Where the two diagrams stand (units of r): the p-V diagram's zero line above the crank circle, the 720°
 #: diagram to the right.
-_PV_ZERO = 1.4
+PV_ZERO = 1.4
 #: The 720° diagram beside the p-V diagram, its peak level with the other's (not on one zero line: a horizontal of
 #: the one diagram would run on through the points of the other at its height).
-_T0 = (2.6, _PV_ZERO - 0.3)
-
-
-# --------------------------------------------------------------------------
-# The model (for the checks only).
-# --------------------------------------------------------------------------
-
-
-def brauer_tangents(ratio: float, exponent: float, steps: int) -> tuple[float, float]:
-    """tg α and tg β of Brauer's rays for *steps* steps across the volume ratio *ratio*.
-
-    >>> ta, tb = brauer_tangents(5.0, 1.3, 8)
-    >>> round((1 + ta) ** 8, 12), round((1 + tb) - (1 + ta) ** 1.3, 15)
-    (5.0, 0.0)
-    """
-    return ratio ** (1.0 / steps) - 1.0, ratio ** (exponent / steps) - 1.0
-
-
-def _piston(theta: float, rod_ratio: float) -> float:
-    """Piston path from the head-end dead centre, fraction of the stroke (exact law)."""
-    s = math.sin(theta)
-    return 0.5 * (1.0 - math.cos(theta) + rod_ratio - math.sqrt(rod_ratio * rod_ratio - s * s))
-
-
-def model_pressure(stroke: int, x: float, g: Mapping[str, float], engine: str) -> float:
-    """Absolute pressure (at) of the idealised cycle on *stroke* (0..3) at piston path x (fraction of the stroke).
-
-    On the expansion stroke beyond the release point x_e (``release``) the pressure falls on the straight
-    line from e to the exhaust pressure at the dead centre.
-
-    >>> g = {"suction": 0.9, "exhaust": 1.1, "compression_ratio": 5.0, "clearance": 0.25, "exponent": 1.3,
-    ...      "max_pressure": 25.0, "cutoff": 2.0, "release": 1.0}
-    >>> round(model_pressure(1, 0.0, g, "explosion"), 6), round(model_pressure(2, 1.0, g, "explosion"), 6)
-    (7.292955, 3.085169)
-    >>> g["release"] = 0.9
-    >>> round(model_pressure(2, 0.9, g, "explosion"), 6), model_pressure(2, 1.0, g, "explosion")
-    (3.438388, 1.1)
-    """
-    vc, n = g["clearance"], g["exponent"]
-    if stroke == 0:
-        return g["suction"]
-    if stroke == 3:
-        return g["exhaust"]
-    if stroke == 1:
-        return g["suction"] * ((1.0 + vc) / (vc + x)) ** n
-    xe = g["release"]
-    if x > xe:  # released: the straight line e-f
-        pe = model_pressure(2, xe, g, engine)
-        return pe + (g["exhaust"] - pe) * (x - xe) / (1.0 - xe)
-    v = vc + x
-    if engine == "explosion":
-        return g["max_pressure"] * (vc / v) ** n
-    pc = g["suction"] * g["compression_ratio"] ** n
-    vd = g["cutoff"] * vc
-    return pc if v <= vd else pc * (vd / v) ** n
+T0_AT = (2.6, PV_ZERO - 0.3)
 
 
 # --------------------------------------------------------------------------
@@ -161,7 +33,7 @@ def model_pressure(stroke: int, x: float, g: Mapping[str, float], engine: str) -
 # --------------------------------------------------------------------------
 
 
-def _givens(engine: str, r: Any, rod_ratio: Any, compression_ratio: Any, suction: Any, exhaust: Any,
+def four_stroke_givens(engine: str, r: Any, rod_ratio: Any, compression_ratio: Any, suction: Any, exhaust: Any,
             max_pressure: Any, cutoff: Any, exponent: Any, pressure_unit: Any, pressure_ratio: Any, release: Any,
             steps: int) -> dict[str, float]:
     if engine not in ENGINES:
@@ -200,7 +72,7 @@ def _givens(engine: str, r: Any, rod_ratio: Any, compression_ratio: Any, suction
     return g
 
 
-def _validate(givens: Mapping[str, float]) -> None:
+def validate_four_stroke(givens: Mapping[str, float]) -> None:
     engine = "diesel" if "cutoff" in givens else "explosion"
     bounded("crank radius r", givens["r"], DRAWN_LENGTH)
     RELEASE.check("release x_e/s", givens["release"])
@@ -273,7 +145,7 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
                       over_pressure: bool | None, steps: int) -> Figure:
     if isinstance(steps, bool) or not isinstance(steps, int) or not 2 <= steps <= 40:
         raise InvalidParameter(f"Brauer steps per polytrope must be a whole number from 2 to 40, got {steps!r}")
-    givens = _givens(engine, r, rod_ratio, compression_ratio, suction, exhaust, max_pressure, cutoff, exponent,
+    givens = four_stroke_givens(engine, r, rod_ratio, compression_ratio, suction, exhaust, max_pressure, cutoff, exponent,
                      pressure_unit, pressure_ratio, release, steps)
     if over_pressure is None:   # Abb. 1058 is the Diesel's
         over_pressure = engine == "diesel"
@@ -299,7 +171,7 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
     positions = range(n + 1) if over_pressure else (0, n)
     unit = "pressure_unit"
     with b.group("p-V diagram: zero line, clearance, pressure axis", "p-V-Diagramm: Nulllinie, Verdichtungsraum, Druckachse"):
-        Z = b.given_point("Z", -1.0, _PV_ZERO, unit="r", de="Nulllinie des Diagramms (absolutes Vakuum)",
+        Z = b.given_point("Z", -1.0, PV_ZERO, unit="r", de="Nulllinie des Diagramms (absolutes Vakuum)",
                           en="zero line of the diagram (absolute vacuum)", label="")
         base = b.given_line("pvbase", Z, angle_deg=0.0, de="Nulllinie (Volumenachse)", en="zero line (volume axis)",
                             role="result")
@@ -456,7 +328,7 @@ def _over_pressure(b: Builder, f: Mapping[str, str], upper: list[str], n: int, f
     # -- the 720° diagram
     with b.group("720 degree diagram: base, divisions, atmospheric line",
                  "Diagramm über 720°: Grundlinie, Teilung, atmosphärische Linie"):
-        T0 = b.given_point("T0", _T0[0], _T0[1], unit="r", de="Anfang der 720°-Grundlinie (Nulllinie)",
+        T0 = b.given_point("T0", T0_AT[0], T0_AT[1], unit="r", de="Anfang der 720°-Grundlinie (Nulllinie)",
                            en="start of the 720 degree base (zero line)", label="0°")
         tbase = b.given_line("tbase", T0, angle_deg=0.0, de="Nulllinie über zwei Umdrehungen",
                              en="zero line over two revolutions", role="result")
@@ -555,7 +427,7 @@ def four_stroke_plate(fig: Figure) -> dict:
                {"kind": "lettering", "at": (lower[0] + 1.6 * d, lower[1] - 2.6 * d), "text": "f" if lower is f_ else "b"}]
     # the 720° diagram's scale, dead centres and strokes where the figure draws Abb. 1058 (the Diesel's)
     return {"looks": {"cP0": "unlettered", "f": "unlettered"},
-            "furniture": letters + (_over_pressure_furniture(fig) if "T0" in R else [])}
+            "furniture": letters + (over_pressure_furniture(fig) if "T0" in R else [])}
 
 
 #: The plate of Abb. 1056 or 1057 alone: the p-V diagram with Brauer's rays and points over the stroke.
@@ -569,135 +441,7 @@ PLATE = (r"pvbase", r"paxis", r"Ov", r"OMe?|ONe?", r"[ce]P\d+", r"compression|ex
          r"aa\.j\d|bb\.j\d|aa2\.\w+|bb2\.\w+", r"A\d\.\d+|B\d\.\d+")
 
 
-# --------------------------------------------------------------------------
-# Measurements and checks.
-# --------------------------------------------------------------------------
-
-
-def volume(fig: Figure, point: str) -> float:
-    """V of a point of the p-V diagram in strokes, measured from its origin O along the zero line."""
-    rp = fig.replay
-    return (rp[point][0] - rp["Ov"][0]) / (2.0 * rp.givens["r"])
-
-
-def pressure(fig: Figure, point: str) -> float:
-    """Absolute pressure (at) of a point of the p-V diagram: its height over the zero line."""
-    rp = fig.replay
-    return (rp[point][1] - rp["Ov"][1]) / rp.givens["pressure_unit"]
-
-
-def _height(fig: Figure, point: str) -> float:
-    rp = fig.replay
-    return (rp[point][1] - rp["T0"][1]) / rp.givens["pressure_unit"]
-
-
-def _curve_tolerance(fig: Figure, points: list[tuple[float, float]], xs: list[float], fn) -> list[float]:
-    """The method on exact data: how far the French curve through the exact points strays at each x (at)."""
-    from ..kernel.geometry import SCALAR, Line, Point
-    from ..kernel.ops import OPS
-
-    pts = [Point(v, p) for v, p in points]
-    base = Line(Point(0.0, 0.0), Point(1.0, 0.0))
-    curve, = OPS["french_curve"].fn((base, *pts), {"points": len(pts), "tangent_at": ()}, {}, (), SCALAR)
-    return [abs(curve.y_at(x) - fn(x)) for x in xs]
-
-
-def four_stroke_checks(fig: Figure) -> list[Check]:
-    rp = fig.replay
-    g = rp.givens
-    engine, n, m = fig.params["engine"], fig.params["parts"], fig.params["steps"]
-    vc, nexp, eps = g["clearance"], g["exponent"], g["compression_ratio"]
-    scale = max(1.0, g.get("max_pressure", g["suction"] * eps ** nexp) * g["pressure_unit"] / g["r"])
-    tol_p = 50 * EUCLIDEAN_TOLERANCE * scale * g["r"] / g["pressure_unit"]
-    tol_v = 50 * EUCLIDEAN_TOLERANCE * scale
-    checks: list[Check] = []
-    c0 = g["suction"] * (1.0 + vc) ** nexp
-    for j in range(m + 1):
-        checks.append(Check(f"compression point {j}: p V^n", pressure(fig, f"cP{j}") * volume(fig, f"cP{j}") ** nexp, c0,
-                            tol_p * (1.0 + vc) ** nexp * 2.0, "Brauer's construction: Euclidean after the two rays",
-                            "at·stroke^n"))
-    checks.append(Check("compression ends on the clearance V_c", volume(fig, f"cP{m}"), vc, tol_v,
-                        "m steps of 1 + tg α = ε^(1/m)", "stroke"))
-    checks.append(Check("compression end p_a ε^n", pressure(fig, f"cP{m}"), g["suction"] * eps ** nexp, tol_p * eps ** nexp,
-                        "Euclidean", "at"))
-    if engine == "explosion":
-        v_d, p_d = vc, g["max_pressure"]
-        checks.append(Check("maximum pressure (the handbook: about 25 at)", pressure(fig, "eP0"), g["max_pressure"], tol_p,
-                            "laid off on the pressure axis", "at"))
-    else:
-        v_d, p_d = g["cutoff"] * vc, g["suction"] * eps ** nexp
-        checks.append(Check("combustion at constant pressure: d at p_c", pressure(fig, "eP0"), p_d, tol_p * eps ** nexp,
-                            "the horizontal through c", "at"))
-        checks.append(Check("cut-off volume ρ V_c", volume(fig, "eP0"), v_d, tol_v, "laid off on the volume axis", "stroke"))
-    e0 = p_d * v_d ** nexp
-    for j in range(m + 1):
-        checks.append(Check(f"expansion point {j}: p V^n", pressure(fig, f"eP{j}") * volume(fig, f"eP{j}") ** nexp, e0,
-                            tol_p * max(1.0, v_d ** nexp) * 4.0 + abs(e0) * 1e-12,
-                            "Brauer's construction: Euclidean after the two rays", "at·stroke^n"))
-    xe = g["release"]
-    checks.append(Check("expansion ends at the release e (x_e)" if xe < 1.0 else
-                        "expansion ends on the crank-end dead centre", volume(fig, f"eP{m}"), vc + xe, tol_v,
-                        "m steps of 1 + tg α = (V_e/V_d)^(1/m)", "stroke"))
-    checks.append(Check("release e: p_d (V_d/V_e)^n", pressure(fig, f"eP{m}"), p_d * (v_d / (vc + xe)) ** nexp,
-                        tol_p * eps ** nexp * 4.0, "the last Brauer point", "at"))
-    if not fig.params.get("over_pressure", True):   # Abb. 1056/1057 alone: no readings, no 720° diagram
-        return checks
-    # readings on the ordinates and the 720 degree diagram
-    xk = {k: volume(fig, f"F{k}") - vc for k in range(n + 1)}
-    comp_pts = [(volume(fig, f"cP{j}"), pressure(fig, f"cP{j}")) for j in range(m + 1)]
-    comp_exact = [(v, c0 / v ** nexp) for v, _ in comp_pts]
-    exp_pts = [(volume(fig, f"eP{j}"), pressure(fig, f"eP{j}")) for j in range(m + 1)]
-    exp_exact = [(v, e0 / v ** nexp) for v, _ in exp_pts]
-    inner = [k for k in range(1, n)]
-    dev_c = dict(zip(inner, _curve_tolerance(fig, sorted(comp_exact), [vc + xk[k] for k in inner],
-                                             lambda v: c0 / v ** nexp)))
-    on_exp = [k for k in inner if (engine == "explosion" or vc + xk[k] > g["cutoff"] * vc) and xk[k] <= xe]
-    dev_e = dict(zip(on_exp, _curve_tolerance(fig, exp_exact, [vc + xk[k] for k in on_exp], lambda v: e0 / v ** nexp)))
-    lam = 1.0 / g["rod_ratio"]
-    for s in range(4):
-        for i in range(n + 1):
-            t = s * n + i
-            k = i if s % 2 == 0 else n - i
-            theta = math.pi * t / n
-            x = _piston(theta, g["rod_ratio"])
-            want = model_pressure(s, x, g, engine)
-            if s == 1 and i == n:
-                want = model_pressure(1, 0.0, g, engine)
-            dev = {1: dev_c, 2: dev_e}.get(s, {}).get(k, 0.0)
-            tol = 2.0 * dev + tol_p * eps ** nexp * 4.0 + 1e-9 * want
-            a = _height(fig, f"A{s}.{i}")
-            checks.append(Check(f"a-a at {180 * t / n:g} deg ({STROKES[s]})", a, want, tol,
-                                "read on the French curve at the piston position (the same curve through the exact "
-                                "points strays by " f"{dev:.2e} at), carried with the compass" if dev else
-                                "a straight line or a constructed point, carried with the compass", "at"))
-            mass = g["pressure_ratio"] * (math.cos(theta) + lam * math.cos(2.0 * theta))
-            checks.append(Check(f"b-b at {180 * t / n:g} deg: a-a less q(cos θ + r/L cos 2θ)",
-                                a - _height(fig, f"B{s}.{i}"), mass, tol_p * 10.0 + 1e-9 * abs(mass),
-                                "the inertia ordinate of Anhang II (Euclidean), taken off with the compass", "at"))
-    checks.append(Check("piston position X_k against the exact law (stroke)", max(
-        abs(xk[k] - _piston(math.pi * k / n, g["rod_ratio"])) for k in range(n + 1)), 0.0,
-        1e-9, "rod arcs; the division of the circle", "stroke"))
-    return checks
-
-
-#: Command-line help for the givens (book terms).
-OPTION_HELP = {
-    "engine": "four-stroke: explosion (Abb. 1056, ignition at constant volume) or diesel (Abb. 1057, constant pressure)",
-    "compression_ratio": "four-stroke: compression ratio epsilon = (V_c + V_h)/V_c (default: explosion 5, Diesel 14)",
-    "release": "four-stroke: piston path x_e/s where the exhaust opens (the handbook: early, at e; default 0.9; 1 "
-               "releases at the dead centre)",
-    "over_pressure": "four-stroke: draw the over-pressure a-a, b-b over 720 degrees (Abb. 1058; default: the "
-                     "Diesel's, as the handbook)",
-    "suction": "four-stroke: suction pressure p_a, at absolute (0.9)",
-    "exhaust": "four-stroke: exhaust pressure p_g, at absolute (1.1)",
-    "max_pressure": "four-stroke, explosion: maximum pressure after ignition, at (the handbook: about 25)",
-    "cutoff": "four-stroke, diesel: cut-off ratio rho = V_d/V_c of the combustion at constant pressure (2)",
-    "exponent": "four-stroke: polytropic exponent n of compression and expansion (1.3)",
-    "steps": "four-stroke: Brauer steps per polytrope (12: the French curve then strays by a thousandth of the diagram)",
-}
-
-
-def _over_pressure_furniture(fig: Figure) -> list[dict]:
+def over_pressure_furniture(fig: Figure) -> list[dict]:
     """Abb. 1058 as a plate: beside the 720° diagram its scale of the over-pressure in at (0 on the
     atmospheric line, as a–a is read), a tick at each dead centre under its degree mark, and the strokes
     named between them."""
@@ -719,46 +463,3 @@ def _over_pressure_furniture(fig: Figure) -> list[dict]:
         out.append({"kind": "lettering", "at": ((a[0] + b_[0]) / 2, min(low, T0[1]) - 0.07 * span / 4), "text": name,
                     "size": 0.85})
     return out
-
-
-def four_stroke_wording(fig: Figure, lang: str) -> list[str]:
-    """The givens as the handbook writes them: the engine, ε and n, its peak pressure or ρ, the release, the rod,
-    and -- where the figure draws Abb. 1058's over-pressure -- a–a, b–b and q."""
-    g = fig.replay.givens
-    de = lang == "de"
-    diesel = fig.params.get("engine") == "diesel"
-    out = [("Gleichdruckmaschine" if de else "compression-ignition engine") if diesel
-           else ("Verpuffungsmaschine" if de else "explosion engine"),
-           f"ε = {number(g['compression_ratio'], lang)}", f"n = {number(g['exponent'], lang)}"]
-    out.append(f"ρ = {number(fig.params.get('cutoff', 2.0), lang)}" if diesel
-               else ("Höchstdruck " if de else "peak pressure ") + f"{number(g['max_pressure'], lang)} at")
-    release = g.get("release", 1.0)
-    out.append(("Auslass bei " if de else "release at ") + f"{number(release, lang)} s" if release < 1.0 else
-               ("Auslass im Totpunkt" if de else "release at the dead centre"))
-    out.append(ratio("r/L", g["rod_ratio"], lang))
-    if fig.params.get("over_pressure", True):   # a protocol from before the option drew a-a and b-b
-        out += [("Kolbenüberdruck a–a, b–b über zwei Umdrehungen" if de else
-                 "piston over-pressure a–a, b–b over two turns"), f"q = {number(g['pressure_ratio'], lang)} at"]
-    return out
-
-
-FOUR_STROKE = register(Construction(
-    name="four-stroke",
-    title=Caption("Druckverlauf im Viertakt", "Four-stroke pressures"),
-    source="seed 001 c, Abb. 1056-1058",
-    build=build_four_stroke,
-    checks=four_stroke_checks,
-    defaults={"engine": "explosion", "rod_ratio": 5.0, "parts": 12, "method": "auto", "r": 1.0,
-              "compression_ratio": None, "suction": 0.9, "exhaust": 1.1, "max_pressure": 25.0, "cutoff": 2.0,
-              "exponent": 1.3, "pressure_unit": 0.1, "pressure_ratio": 6.0, "release": 0.9, "over_pressure": None,
-              "steps": 12},
-    book_params=({}, {"engine": "diesel"}),
-    structural=("engine", "parts", "method", "steps", "cutoff", "release", "over_pressure"),
-    cites=(Cite(COMBUSTION, "Abb. 1056–1058"),),
-    wording=four_stroke_wording,
-    plate=four_stroke_plate,
-    methods=DIVISION_NAMES,
-    validator=_validate,
-    help=OPTION_HELP,
-    extra={"switches": ("over_pressure",)},
-))

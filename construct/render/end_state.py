@@ -1,0 +1,271 @@
+"""The end state of a teaching sequence on its own sheet: its view, its letters' size, its furniture, its file.
+
+A teaching scene with an end state (:meth:`construct.render.scene.Scene.in_end`) ends with the figure as the
+book draws it.  Here is how that last step is laid out (:func:`lay_out_end`: the last step's view grown to take
+the end state's letters and the plate's furniture, :class:`EndView`), the plate's furniture drawn in it
+(:func:`end_furniture`), and the layered figure written on the end state's sheet (:func:`end_sheet`) -- with
+the player's letter scale and the lines' widths written out as numbers (:func:`own_strokes`), for renderers
+without CSS variables or ``vector-effect``.  :class:`construct.render.svg.Drawing` calls these; marks become
+SVG elements there.
+
+>>> from construct.constructions import get
+>>> from construct.render.scene import build_scene
+>>> from construct.render.styles import TEACHING
+>>> from construct.render.svg import Drawing
+>>> d = Drawing(build_scene(get("crank").figure(parts=6), ending=True), TEACHING)
+>>> isinstance(d.end, EndView) and d.end.view == d.views[-1]
+True
+>>> x0, y0, x1, y1 = d.end.crop
+>>> d.layered().count('class="fin zl') == 1 and x1 > x0 and y1 > y0
+True
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Any, Sequence
+
+from .camera import FINAL_CONTEXT, NON_SCALING, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, level, player_letter_scale, zoom_of
+from .captions import Captions
+from .lettering import LEADER_FROM, label_box, text_width
+from .placing import Placing
+from .plate import Lettering, Stroke, extent, furniture_elements, plain, text_elements
+from .scene import Scene, extreme_points
+from .styles import Style
+from .svgdoc import Writer, fmt
+from .viewport import Viewport
+
+__all__ = ["EndView", "END_MARGIN_PX", "lay_out_end", "end_fixed", "end_lettering", "end_furniture", "end_sheet",
+           "own_strokes", "wrapped"]
+
+#: The margin round the end state's drawing on its sheet (screen px at the end view).
+END_MARGIN_PX = 14.0
+
+#: The player's letter scale in a style rule (``var(--ls)``, ``var(--ls,var(--zs,1))``), which the end state's own
+#: file writes out as its number.
+_LETTER_SCALE = re.compile(r"var\(--ls(?:,var\(--zs(?:,1)?\))?\)")
+
+#: The end state's points scaled by the letter scale (:data:`construct.render.styles.END_CSS`); its own file draws
+#: them at that scale in their radius instead.
+_END_POINTS = ".fin .lbg>.lb,.fin .lbg>.leader,.fin .pt{"
+_END_POINTS_OWN = ".fin .pt{transform:none}\n.fin .lbg>.lb,.fin .lbg>.leader{"
+
+#: A style rule and the lengths of a line's stroke in it (its width, its dashes).
+_RULE = re.compile(r"([^{}]+)\{([^{}]*)\}")
+_STROKE_LENGTHS = re.compile(r"(stroke-width|stroke-dasharray):([^;}]*)")
+#: What draws its own strokes at the figure's scale in the player too (no ``vector-effect`` on them, see
+#: :func:`construct.render.camera.level_css`): letters, their halos and leaders, points, insets, break lines.
+_SCALED_STROKES = frozenset({"lb", "halo", "leader", "pt", "inset", "brkline"})
+
+
+def own_strokes(css: str, q: float) -> str:
+    """*css* with the lines' stroke widths and dashes written in the file's own units for its one view of *q*
+    units per screen px, instead of held at their screen size by ``vector-effect: non-scaling-stroke``
+    (which cairosvg, Inkscape's import and print workflows ignore, drawing every line 1/q times too heavy).
+
+    >>> own_strokes(".result{stroke-width:2}\\n.dashdot{stroke-dasharray:14 3;stroke-width:0.7px}\\n"
+    ...             ".leader{stroke-width:0.4px}\\n" + NON_SCALING, 0.5)
+    '.result{stroke-width:1}\\n.dashdot{stroke-dasharray:7 1.5;stroke-width:0.35}\\n.leader{stroke-width:0.4px}\\n'
+    """
+    def lengths(m: re.Match) -> str:
+        return m.group(1) + ":" + " ".join(fmt(float(v.removesuffix("px")) * q, 4)
+                                           for v in m.group(2).replace(",", " ").split())
+
+    def rule(m: re.Match) -> str:
+        classes = set(re.findall(r"\.([\w-]+)", m.group(1)))
+        if classes & _SCALED_STROKES:
+            return m.group(0)
+        return m.group(1) + "{" + _STROKE_LENGTHS.sub(lengths, m.group(2)) + "}"
+
+    return _RULE.sub(rule, css.replace(NON_SCALING, ""))
+
+
+@dataclass(frozen=True)
+class EndView:
+    """How the end state of a teaching sequence is shown (:meth:`construct.render.svg.Drawing.layered`, the
+    player's last step).
+
+    *view*: the last step's camera view (canvas px, x y w h); *level*: its zoom level; *letter*: the
+    player's letter scale there (canvas units a letter unit); *scale*: screen px per canvas px there;
+    *crop*: the end state's drawing with its letters, furniture and a margin (canvas px, x0 y0 x1 y1), the
+    sheet of ``final.svg``; *size*: the furniture's letter size (canvas px).
+    """
+
+    view: tuple[float, float, float, float]
+    level: int
+    letter: float
+    scale: float
+    crop: tuple[float, float, float, float]
+    size: float
+
+
+def wrapped(g: Any, elems: Sequence[Any]) -> Any:
+    """The group *g* holding *elems*."""
+    for e in elems:
+        g.add(e)
+    return g
+
+
+def _grown(box: tuple[float, float, float, float] | None,
+           pts: Sequence[tuple[float, float]]) -> tuple[float, float, float, float] | None:
+    for x, y in pts:
+        box = (x, y, x, y) if box is None else (min(box[0], x), min(box[1], y), max(box[2], x), max(box[3], y))
+    return box
+
+
+def end_fixed(scene: Scene) -> tuple:
+    """The end state's furniture that stands where the plate sets it (all but its lettering)."""
+    return tuple(it for it in scene.end_furniture if not isinstance(it, Lettering))
+
+
+def end_lettering(scene: Scene, vp: Viewport, style: Style,
+                  size: float) -> list[tuple[str, tuple[float, float], str]]:
+    """The plate's lettering in the end state, placed as letters are (:meth:`Placing.place_end`): (id, the
+    middle of where the plate writes it, canvas px, its text)."""
+    out = []
+    for i, it in enumerate(scene.end_furniture):
+        if isinstance(it, Lettering):
+            x, y = vp.px(*it.at)
+            text = plain(it.text)  # as a reader sees it (P_b: Pb, its b a smaller run)
+            w = text_width(text, size * it.size, style.label_font, style.label_italic)
+            x += {"start": w / 2, "end": -w / 2}.get(it.anchor, 0.0)
+            out.append((f"fur{i}", (x, y), text))
+    return out
+
+
+def _lettering_box(elem: Any, size: float, style: Style) -> tuple[float, float, float, float] | None:
+    """The box (canvas px) of a furniture lettering element made at *size* (not turned; its halo, a copy
+    beneath it, and any other element: None)."""
+    xml = elem.get_xml()
+    if xml.tag.rsplit("}", 1)[-1] != "text" or "halo" in xml.get("class", "").split():
+        return None
+    got = re.search(r"font-size:\s*([\d.]+)px", xml.get("style", ""))
+    size = float(got.group(1)) if got else size
+    text = xml.text or ""
+    x, y = float(xml.get("x")), float(xml.get("y"))
+    w = text_width(text, size, style.label_font, style.label_italic)
+    x += {"start": w / 2, "end": -w / 2}.get(xml.get("text-anchor", "middle"), 0.0)
+    return label_box(x, y, text, size, style.label_font, style.label_italic)
+
+
+def lay_out_end(scene: Scene, style: Style, vp: Viewport, placing: Placing, views: list, full: tuple,
+                factory: Any) -> EndView:
+    """The end state's letters, view and sheet (:class:`EndView`): its letters placed (by *placing*) at the
+    player's letter scale in the last step's view, the view grown to take them and the furniture in (the last
+    of *views* replaced by it), the sheet the end state's drawing with a margin of :data:`END_MARGIN_PX`.
+    *full*: the whole drawing as a view; *factory*: the svgwrite element factory."""
+    sc, st, pl = scene, style, placing
+    marks = [m for m in sc.marks if sc.in_end(m)] + list(sc.end_marks)
+    v = views[-1]
+    framing = Framing(full, max_zoom=ZOOM_LEVELS[-1])
+    for _ in range(4):  # the letters and the furniture widen the view, which sets their size
+        z = zoom_of(v, full)
+        lvl = level(z)
+        q = max(v[2] / PLAYER_FIGURE_PX[0], v[3] / PLAYER_FIGURE_PX[1])  # canvas px per screen px
+        ls = player_letter_scale(q * z / ZOOM_LEVELS[lvl])
+        size = st.label_size * ls
+        texts = [b for e in furniture_elements(end_fixed(sc), vp.px, vp.scale, factory, size=size)
+                 if (b := _lettering_box(e, size, st)) is not None]
+        # the plate's own lines that are results (its ordinates), not its thin and dashed helpers
+        strokes = [(*vp.px(*it.a), *vp.px(*it.b)) for it in sc.end_furniture
+                   if isinstance(it, Stroke) and not {"thin", "dashed", "hidden"} & set(it.look.split())]
+        lettering = end_lettering(sc, vp, st, size)
+        pl.place_end(ls, marks, texts, lettering, strokes)
+        box = None
+        for m in marks:
+            if "hidden" not in sc.end_look(m).split():
+                box = _grown(box, [vp.px(*p) for p in extreme_points(m)])
+        fx = extent(sc.end_furniture)
+        if fx is not None:
+            box = _grown(box, [vp.px(fx[0], fx[1]), vp.px(fx[2], fx[3])])
+        for b in texts:
+            box = _grown(box, [b[:2], b[2:]])
+        for fid, (px, py), text in lettering:
+            rel = pl.end_spots.get(fid)
+            if rel is not None:
+                b = label_box(px + ls * rel[0], py + ls * rel[1], text, size, st.label_font, st.label_italic)
+                box = _grown(box, [b[:2], b[2:]])
+        for m in marks:
+            rel = pl.end_spots.get(m.id)
+            if rel is not None:
+                px, py = vp.px(*m.geom)
+                b = label_box(px + ls * rel[0], py + ls * rel[1], m.label or "", size, st.label_font,
+                              st.label_italic)
+                box = _grown(box, [b[:2], b[2:]])
+        if box is None:
+            break
+        new = framing.view(box, FINAL_CONTEXT, 1.0)
+        if new == v:
+            break
+        v = new
+    views[-1] = v
+    pad = END_MARGIN_PX * q
+    crop = (box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad) if box is not None else \
+        (full[0], full[1], full[0] + full[2], full[1] + full[3])
+    return EndView(v, lvl, round(ls, 4), round(1.0 / q, 6), tuple(round(c, 2) for c in crop), size)
+
+
+def end_furniture(scene: Scene, style: Style, vp: Viewport, end: EndView, placing: Placing, factory: Any) -> Any:
+    """The plate's furniture in the end state (``<g class="fo end">``), its letters at the size of the end
+    state's, its lettering where the end state's placing set it (upright; tied to its place by a leader when
+    set off)."""
+    f = factory
+    g = wrapped(f.g(class_="fo end"), furniture_elements(end_fixed(scene), vp.px, vp.scale, f, size=end.size))
+    ls = end.letter
+    for (fid, (px, py), text), it in zip(end_lettering(scene, vp, style, end.size),
+                                        [it for it in scene.end_furniture if isinstance(it, Lettering)]):
+        rel = placing.end_spots.get(fid)
+        if rel is None:
+            continue
+        x, y = px + ls * rel[0], py + ls * rel[1]
+        if rel[2] >= LEADER_FROM:
+            x1, y1, x2, y2 = placing.leader_line(rel[0], rel[1], text)
+            g.add(f.line(start=(fmt(px + ls * x1), fmt(py + ls * y1)), end=(fmt(px + ls * x2), fmt(py + ls * y2)),
+                         class_="fur thin"))
+        # (its index set below the line as the plate sets it: P_b, F·p_ü)
+        for el in text_elements(f, (x, y - 0.35 * end.size * it.size), it.text, end.size, rel=it.size):
+            g.add(el)
+    return g
+
+
+def end_sheet(doc: Writer, end: EndView, scene: Scene, style: Style, css: str, body: Sequence[Any],
+              caption: Sequence[str] | None) -> str:
+    """The layered figure (*body*, its layers; *css*: the style sheet) on the end state's sheet: the end
+    state's drawing shown at the player's screen scale of its view (letters at their size), the caption set
+    beneath it at the screen's size."""
+    e, st = end, style
+    x0, y0, x1, y1 = e.crop
+    s = e.scale
+    w = (x1 - x0) * s
+    m = st.margin_px
+    lines = Captions(scene, width=max(w - 2 * m, 240.0), size=st.caption_size).title_lines(caption) \
+        if st.show_caption else []
+    step = 1.45 * st.caption_size
+    foot = (len(lines) * step + 0.6 * m) if lines else 0.0
+    h = (y1 - y0) * s + foot
+    f = doc.factory
+    # the letter scale written out: every letter inherits the root's --ls here, and a renderer without CSS
+    # variables (cairosvg, Inkscape's import) would drop each element scaled by var() -- letters and points
+    css = _LETTER_SCALE.sub(fmt(e.letter, 4), css).replace(_END_POINTS, _END_POINTS_OWN)
+    # and its lines as wide as the player draws them on this view, in the sheet's own units (see own_strokes)
+    css = own_strokes(css, 1 / s)
+    dwg = doc.drawing(size=(fmt(w), fmt(h)), viewBox=f"{fmt(x0)} {fmt(y0)} {fmt(x1 - x0)} {fmt(h / s)}",
+                      class_=f"fin zl{e.level}", style=f"--ls:{fmt(e.letter, 4)}")
+    dwg.add(f.style("\n" + css + "\n"))
+    dwg.add(f.rect(insert=("-10000", "-10000"), size=("20000", "20000"), id="background", fill=st.background))
+    for el in body:
+        dwg.add(el)
+    if lines:
+        g = f.g(id="caption", transform=f"translate({fmt(x0)} {fmt(y1)}) scale({fmt(1 / s, 6)})")
+        for i, (kind, text) in enumerate(lines):
+            g.add(f.text(text, x=[fmt(m)], y=[fmt(st.caption_size + i * step)],
+                         class_=f"cap{(' ' + kind) if kind else ''}"))
+        dwg.add(g)
+    # (and a point's marker at that scale in its radius: such a renderer scales about the origin, not the
+    # marker's centre)
+    root = doc.own_tree(dwg)
+    for c in root.iter("circle"):
+        if "pt" in (c.get("class") or "").split():
+            c.set("r", fmt(float(c.get("r")) * e.letter, 3))
+    return doc.tree_text(root)

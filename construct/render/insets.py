@@ -1,0 +1,98 @@
+"""What the player shows when a step's work is too small in its view: an inset that magnifies it, a ring round it.
+
+The camera (:mod:`construct.render.camera`) shows each step through a view that keeps its surroundings in
+sight.  A step whose finest detail that view shows too small, or which works on a sliver (a rectangle a few
+pixels thick across the whole figure), gets a magnified inset beside the view (:func:`step_insets`); a
+current mark smaller on the screen than a ring gets a ring round it (:func:`ring_round`).
+
+>>> from construct.constructions import get
+>>> from construct.render.camera import step_views
+>>> from construct.render.scene import build_scene
+>>> sc = build_scene(get("crank").figure(parts=6))
+>>> full = (0.0, 0.0, 960.0, 700.0)
+>>> insets = step_insets(sc, step_views(sc, full, sc.bbox, lambda x, y: (x, y), 1.0), full, lambda x, y: (x, y))
+>>> len(insets) == len(sc.steps) and all(b is None or len(b) == 4 for b in insets)
+True
+"""
+
+from __future__ import annotations
+
+from typing import Callable, Sequence
+
+from .camera import PLAYER_FIGURE_PX, Framing, View, step_details, step_focus, zoom_of
+from .scene import MarkKind, Scene
+
+__all__ = ["step_insets", "ring_round", "SLIVER_PX", "SLIVER_RATIO", "INSET_PX", "INSET_DETAIL_PX"]
+
+
+#: A step's work is a sliver where its region is thinner on the screen than this (px) and at least
+#: :data:`SLIVER_RATIO` times as long: no view of the window's shape shows both its length and its
+#: thickness, so the player shows the thickness in an inset (:func:`step_insets`).
+SLIVER_PX = 10.0
+SLIVER_RATIO = 5.0
+#: The inset's window on the screen (px) and how thick the sliver is made there at least.
+INSET_PX = (300.0, 210.0)
+INSET_DETAIL_PX = 28.0
+
+
+def step_insets(scene: Scene, views: Sequence[View], full: View,
+                px: Callable[[float, float], tuple[float, float]]) -> list[View | None]:
+    """Per step, the region (canvas px, x y w h) the player shows magnified in an inset, or None.
+
+    A step whose finest detail its view shows smaller than it must be seen (:func:`step_details`: its view
+    widened to take in its letters, or shared with its shot) gets it magnified beside the view.  A step
+    working on a sliver -- the thin rectangle O r₁ of a disc 0,02 r₁ thick, a pressure of 0,15 at
+    laid off over a stroke of 24 cm -- is seen whole in its view only a few pixels thick.  The inset
+    shows the place where the step makes its point (or the point its line is aimed at) magnified until
+    the sliver is :data:`INSET_DETAIL_PX` thick, while the view keeps its whole length in sight.
+    """
+    drawn = {m.name: m for m in scene.marks}
+    focus = step_focus(scene)
+    details = step_details(scene, Framing(full), px)
+    out: list[View | None] = []
+    for s, f, v, (need, at) in zip(scene.steps, focus, views, details):
+        box = None
+        z = zoom_of(v, full)
+        if at is not None and s.group and need > 1.25 * z:
+            # a cluster the view (widened for its letters, or its shot's) shows smaller than it must be seen
+            q = min(PLAYER_FIGURE_PX[0] / v[2], PLAYER_FIGURE_PX[1] / v[3])
+            m = max(2.0, need / z)
+            w, h = INSET_PX[0] / (q * m), INSET_PX[1] / (q * m)
+            box = (round(at[0] - w / 2, 2), round(at[1] - h / 2, 2), round(w, 2), round(h, 2))
+        elif f is not None and s.group:
+            (x0, y1), (x1, y0) = px(f[0], f[1]), px(f[2], f[3])
+            q = min(PLAYER_FIGURE_PX[0] / v[2], PLAYER_FIGURE_PX[1] / v[3])  # screen px per canvas px
+            thin, long = min(x1 - x0, y1 - y0) * q, max(x1 - x0, y1 - y0) * q
+            if 0.75 < thin < SLIVER_PX and long >= SLIVER_RATIO * thin:  # (points on one line are no sliver)
+                own = [drawn[n].geom for n in s.outputs if n in drawn and drawn[n].kind is MarkKind.POINT]
+                if not own:
+                    own = [drawn[n].geom for n in s.inputs if n in drawn and drawn[n].kind is MarkKind.POINT][-1:]
+                if own:
+                    cx = sum(px(*p)[0] for p in own) / len(own)
+                    cy = sum(px(*p)[1] for p in own) / len(own)
+                    m = min(max(INSET_DETAIL_PX / max(thin, 0.5), 2.0), 16.0)  # the inset's magnification
+                    w, h = INSET_PX[0] / (q * m), INSET_PX[1] / (q * m)
+                    box = (round(cx - w / 2, 2), round(cy - h / 2, 2), round(w, 2), round(h, 2))
+        out.append(box)
+    return out
+
+
+def ring_round(points: Sequence[tuple[float, float]], view: View, full: View,
+               ring_px: float) -> tuple[float, float, float] | None:
+    """(cx, cy, r), canvas pixels, of the ring round a mark through *points* (canvas pixels) when the mark is
+    smaller on the screen than the ring (*ring_px* across) at *view*; None when it is large enough (or has no
+    points).
+
+    >>> ring_round([(100.0, 100.0), (102.0, 101.0)], (0, 0, 480, 334), (0, 0, 960, 668), 18.0)
+    (101.0, 100.5, 9.0)
+    """
+    if not points:
+        return None
+    x0, x1 = min(p[0] for p in points), max(p[0] for p in points)
+    y0, y1 = min(p[1] for p in points), max(p[1] for p in points)
+    z = zoom_of(view, full)
+    size = max(x1 - x0, y1 - y0) * z  # on the screen, at the view
+    if size >= 3.2 * ring_px:  # also on a figure the player shows at 0.6 of its size
+        return None
+    r = max(ring_px, size / 2 + 4.0) / z
+    return (round((x0 + x1) / 2, 2), round((y0 + y1) / 2, 2), round(r, 2))

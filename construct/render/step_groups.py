@@ -64,7 +64,7 @@ class StepGroups:
 
     def input_steps(self, k: int) -> frozenset[int]:
         """The steps that made what step k's instrument is set on, what its caption names, what its arc is
-        struck onto (:meth:`Scene.struck_onto`) and the rectangle its ray is the diagonal of (:meth:`Scene.aimed_at`)."""
+        struck onto and the rectangle its ray is the diagonal of (:class:`construct.render.step_inputs.StepInputs`)."""
         if not self.style.input_colour:
             return frozenset()
         done = self.__dict__.setdefault("_input_steps", {})  # asked by the tags' placing and by the player

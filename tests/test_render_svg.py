@@ -156,3 +156,43 @@ def test_primes_are_drawn_and_captioned_as_the_books_print_them(crank6):
     shown = re.sub(r"<script.*?</script>|<style.*?</style>", "", page, flags=re.S)
     data = re.search(r'id="data">(.*?)</script>', page, re.S).group(1)
     assert "1′" in data and not re.search(r"(?<![\w])\d+'", data + shown)
+
+
+def test_a_figure_broken_across_its_rod_writes_the_rods_length_at_the_break():
+    """A broken axis draws the long rod short: the figure says how long it is, beside the break on the first line
+    crossing it (the axis), in the books' notation (L = 3,5 r, from the given, not from the drawing), once per
+    break, clear of the result lines; a figure drawn whole (L/r = 3 at three parts) writes nothing, and the plate,
+    which dimensions its rod itself (L = 3,5 r with the decimal comma), writes it no second time."""
+    import re
+    import xml.etree.ElementTree as ET
+
+    from construct.constructions import get
+    from construct.render.output import scene_for
+    from construct.render.styles import STYLES
+    from construct.render.svg import render_svg
+
+    ns = "{http://www.w3.org/2000/svg}"
+    c = get("crank")
+    for v, written in ((3.5, "L = 3,5 r"), (50.0, "L = 50 r"), (3.0, None)):
+        fig = c.figure(parts=3, rod_ratio=v)
+        scene = scene_for(c, fig)
+        assert bool(scene.breaks) == (written is not None), v
+        root = ET.fromstring(render_svg(scene, style=STYLES["plain"]))
+        groups = [g for g in root.iter(ns + "g") if "rodlen" in (g.get("class") or "").split()]
+        if written is None:
+            assert not groups
+            continue
+        assert len(groups) == 1, v
+        texts = ["".join(t.itertext()) for t in groups[0].iter(ns + "text")]
+        assert texts == [written, written]  # on its halo
+        # at the break's middle on the axis (y = 0 of the figure: the axis is drawn at the crank centre's height)
+        x, y = map(float, re.fullmatch(r"translate\(([-\d.]+) ([-\d.]+)\)", groups[0].get("transform")).groups())
+        axis_y = float(root.find(f".//{ns}circle[@id='s0001-O']").get("cy"))
+        assert y == pytest.approx(axis_y, abs=0.01)
+        brk = next(p for p in root.iter(ns + "path") if p.get("class") == "brk")
+        xs = [float(n) for n in re.findall(r"-?\d+(?:\.\d+)?", brk.get("d"))][0::2]
+        assert min(xs) < x < max(xs)
+    plate = ET.fromstring(render_svg(scene_for(c, c.figure(parts=3, rod_ratio=3.5), plate=True),
+                                     style=STYLES["historical"]))
+    said = ["".join(t.itertext()) for t in plate.iter(ns + "text") if "halo" not in (t.get("class") or "")]
+    assert said.count("L = 3,5 r") == 1

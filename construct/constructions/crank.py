@@ -27,6 +27,7 @@ from typing import Any, Mapping
 from . import analytic
 from .checking import EUCLIDEAN_TOLERANCE, Check
 from ..kernel.errors import InvalidParameter
+from ..kernel.letters import number
 from ..kernel.division import NAMES as DIVISION_NAMES
 from ..kernel.division import TRIAL_TOLERANCE, check_parts, divide_semicircle
 from ..kernel.instruments import Builder
@@ -250,7 +251,7 @@ def frame_furniture(fig: Figure, crank_point: str | None = None, crosshead: str 
                     {"kind": "dot", "at": tuple(C)},
                     {"kind": "lettering", "at": (C[0], C[1] - 0.12 * r), "text": "C"},
                     {"kind": "stroke", "a": (C[0] - 0.15 * r, C[1]), "b": tuple(D0), "look": "centre"},
-                    {"kind": "dimension", "a": tuple(C), "b": tuple(P), "text": f"L = {ratio:.3g} r",
+                    {"kind": "dimension", "a": tuple(C), "b": tuple(P), "text": f"L = {number(ratio, 'de', 3)} r",
                      "offset": 0.12 * r}]
     return out
 

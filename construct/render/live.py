@@ -22,11 +22,16 @@ points they name (their placed offset kept; a tag names its point by
 standing on it), the broken axes' marks on every line that crosses a break
 (``breakMarks``, the script's twin of
 :func:`construct.render.plate.break_elements`), with the rod's length written
-at the break (L = 50 r: a broken rod is drawn short), and letters that come
+at the break (L = 50 r: a broken rod is drawn short; where the drawing wrote it,
+:func:`construct.render.plate.rod_spots`), and letters that come
 to lie on one another: the later gives way (``declutter``) until there is
 room again.  Nothing waits for the slider to be let go (``change``), which
 only sets the letters' exact scale and glides the camera to the step's
-view.
+view.  Three things hold the built value's numbers and are shown at the book's
+values alone: an area's hatching (its outline follows), the end state (the last step drawn as the book's plate, its own
+marks, furniture and letters: away from the book's values the last step shows
+the construction's marks, and the page says so) and the inset (a sliver's
+place magnified beside the view).
 
 The script exposes ``window.constructLive``: ``set(value)`` moves the first
 given (``set(value, true)``: as a drag draws it; ``set(value, dragging,
@@ -171,7 +176,7 @@ LIVE_SCRIPT = r"""
   // ---- one given's data: every drawn number at every grid value ---------------------------------------------
   function Sweep(L){
     this.L = L; this.value = L.initial; this.slots = []; this.byId = {}; this.zoomAt = []; this.ringAt = [];
-    this.breakAt = null; this.full = null;
+    this.breakAt = null; this.full = null; this.pathSlot = new Map();
     this.input = document.querySelector('input[name="' + L.given + '"]');
     this.out = document.querySelector('output[data-given="' + L.given + '"]');
   }
@@ -244,6 +249,7 @@ LIVE_SCRIPT = r"""
                 len: lengthOf(el, k[1], parts)};
       // the whole figure's box: written as data-full, and as the view by the player (or below without one)
       if (el === svg) { self.full = sl; sl.el = null; } else self.slots.push(sl);
+      if (k[1] === "d") self.pathSlot.set(el, sl);
       if (k[1] === "cx" || k[1] === "cy") (self.byId[k[0]] = self.byId[k[0]] || {})[k[1]] = sl;
     });
   };
@@ -349,7 +355,7 @@ LIVE_SCRIPT = r"""
     }
   }
   // ---- the broken axes: their marks on every line that crosses them (render/plate.py break_elements) ----------
-  var SIZE = LIST[0].label_px || 12, NS = "http://www.w3.org/2000/svg", marksOf = new Map(), rodLabels = [];
+  var SIZE = LIST[0].label_px || 12, NS = "http://www.w3.org/2000/svg", marksOf = new Map(), rodLabels = [], rodSpots = [];
   var TWO = /^M(-?[0-9.]+) (-?[0-9.]+)L(-?[0-9.]+) (-?[0-9.]+)$/;
   function mk(tag, cls, parent){ var e = document.createElementNS(NS, tag); e.setAttribute("class", cls); parent.appendChild(e); return e; }
   function breakMarks(){
@@ -362,7 +368,7 @@ LIVE_SCRIPT = r"""
     for (var i = 0; i < lines.length; i++) {
       var ln = lines[i], x1, y1, x2, y2;
       if (ln.x1) { x1 = ln.x1.baseVal.value; y1 = ln.y1.baseVal.value; x2 = ln.x2.baseVal.value; y2 = ln.y2.baseVal.value; }
-      else { var e2 = TWO.exec(ln.getAttribute("d")); x1 = +e2[1]; y1 = +e2[2]; x2 = +e2[3]; y2 = +e2[4]; }
+      else { var q2 = drawnOf(ln).n; x1 = q2[0]; y1 = q2[1]; x2 = q2[2]; y2 = q2[3]; }
       var got = marksOf.get(ln) || [null, null];
       for (axis = 0; axis < 2; axis++) {
         var band = bands[axis], a0 = axis ? y1 : x1, a1 = axis ? x1 : y1, b0 = axis ? y2 : x2, b1 = axis ? x2 : y2;
@@ -400,8 +406,10 @@ LIVE_SCRIPT = r"""
       if (!lab) {
         var lg = mk("g", "lbg rodlen", svg.querySelector("#furniture") || svg);
         lab = rodLabels[axis] = {g: lg, halo: mk("text", "lb halo", lg), text: mk("text", "lb", lg)};
-        var dx = axis ? 0.7 * SIZE : 0, dy = axis ? 0.35 * SIZE : -0.9 * SIZE;
-        [lab.halo, lab.text].forEach(function(e){ e.setAttribute("x", dx); e.setAttribute("y", dy); if (axis) e.setAttribute("style", "text-anchor:start"); });
+        // where the drawing wrote it at the book's value (render/plate.py rod_spots), or its first choice
+        var spot = rodSpots[axis] || (axis ? [0.7 * SIZE, 0.35 * SIZE, "start"] : [0, -0.9 * SIZE, "middle"]);
+        [lab.halo, lab.text].forEach(function(e){ e.setAttribute("x", spot[0]); e.setAttribute("y", spot[1]);
+          if (spot[2] !== "middle") e.setAttribute("style", "text-anchor:" + spot[2]); });
       }
       lab.g.removeAttribute("display");
       lab.g.setAttribute("transform", "translate(" + round2(at[0]) + " " + round2(at[1]) + ")");
@@ -412,10 +420,19 @@ LIVE_SCRIPT = r"""
   // ---- areas between two graphs: drawn anew from the graphs that bound them (kernel/areas.py area_between) ----
   var areas = [];
   var NUMS = /-?[0-9]+(?:\.[0-9]+)?(?:e[-+]?[0-9]+)?/g;
+  var still = new Map();
+  function drawnOf(e){  // a path's numbers as drawn: its slot's, written this frame (no text parsed), or its d read
+    // once (a graph that does not move has no slot); and whether it is a French curve
+    var sl = S.pathSlot.get(e);
+    if (sl) return sl.drawn || (sl.drawn = {n: sl.v, curve: sl.parts.join("").indexOf("C") >= 0});
+    var got = still.get(e);
+    if (!got) { var d = e.getAttribute("d"); still.set(e, got = {n: (d.match(NUMS) || []).map(Number), curve: d.indexOf("C") >= 0}); }
+    return got;
+  }
   function graph(e){  // a graph as drawn: a line (null: evaluated exactly) or its vertices, x ascending
     if (e.tagName === "line") return {line: [e.x1.baseVal.value, e.y1.baseVal.value, e.x2.baseVal.value, e.y2.baseVal.value]};
-    var d = e.getAttribute("d"), n = (d.match(NUMS) || []).map(Number), xs = [], ys = [], i, k;
-    if (d.indexOf("C") < 0) { for (i = 0; i + 1 < n.length; i += 2) { xs.push(n[i]); ys.push(n[i + 1]); } }
+    var g = drawnOf(e), n = g.n, xs = [], ys = [], i, k;
+    if (!g.curve) { for (i = 0; i + 1 < n.length; i += 2) { xs.push(n[i]); ys.push(n[i + 1]); } }
     else {
       // a French curve: drawn through its points at sixteen to a Bézier segment (BezierCurve.curve_points), each
       // segment a cubic in its parameter, so that four of them give it whole: the area takes 64 to a segment
@@ -528,20 +545,24 @@ LIVE_SCRIPT = r"""
     Array.prototype.forEach.call(sh.cssRules, function(r){
       if (!lsRule && r.selectorText && r.selectorText.indexOf("#figure .lbg") === 0) lsRule = r; });
   });
+  var ctmNow = null;
   function measure(){  // each shown label group's box about its anchor, on the screen (asked again when the view,
-    // the zoom level or the letters' scale changes, not while a drag holds them)
+    // the zoom level, the letters' scale, the step or the window changes, not while a drag holds them)
+    var key = svg.getAttribute("viewBox") + "|" + svg.getAttribute("class") + "|" + (lsRule ? lsRule.style.getPropertyValue("--ls") : "")
+      + "|" + svg.getAttribute("data-step") + "|" + window.innerWidth + "x" + window.innerHeight;
+    // the figure's map to the screen is asked (a layout of the page, forced after the frame's writes) only
+    // with new boxes: the boxes are kept about their anchors, and a scroll moves every anchor alike
+    if (key === boxKey && boxes && ctmNow) return ctmNow;
     var ctm = svg.getScreenCTM();
     if (!ctm) return null;
-    var key = svg.getAttribute("viewBox") + "|" + svg.getAttribute("class") + "|" + (lsRule ? lsRule.style.getPropertyValue("--ls") : "");
-    if (key === boxKey && boxes) return ctm;
-    boxKey = key; boxes = new Map();
+    ctmNow = ctm; boxKey = key; boxes = new Map();
     followers.forEach(function(fo){
       if (!fo.g || !fo.g.isConnected) return;
       var t = fo.g.querySelector("text:last-of-type"), r = t ? t.getBoundingClientRect() : null;
       if (!r) return;
       if (!r.width && !r.height) return;
-      var p = new DOMPoint(fo.at[0], fo.at[1]).matrixTransform(ctm);
-      boxes.set(fo, [r.left - p.x, r.top - p.y, r.right - p.x, r.bottom - p.y]);
+      var px = ctm.a * fo.at[0] + ctm.c * fo.at[1] + ctm.e, py = ctm.b * fo.at[0] + ctm.d * fo.at[1] + ctm.f;
+      boxes.set(fo, [r.left - px, r.top - py, r.right - px, r.bottom - py]);
     });
     return ctm;
   }
@@ -552,9 +573,9 @@ LIVE_SCRIPT = r"""
     followers.forEach(function(fo){
       var rel = boxes.get(fo);
       if (!rel) { if (fo.hid) { fo.hid = false; fo.g.removeAttribute("visibility"); } return; }
-      var p = new DOMPoint(fo.at[0], fo.at[1]).matrixTransform(ctm);
+      var px = ctm.a * fo.at[0] + ctm.c * fo.at[1] + ctm.e, py = ctm.b * fo.at[0] + ctm.d * fo.at[1] + ctm.f;
       // the current step's letters first, then letters before name tags, then by step (the figure's order)
-      out.push({fo: fo, b: [p.x + rel[0], p.y + rel[1], p.x + rel[2], p.y + rel[3]], rank: (fo.step === k ? 0 : 2) + (fo.tag ? 1 : 0)});
+      out.push({fo: fo, b: [px + rel[0], py + rel[1], px + rel[2], py + rel[3]], rank: (fo.step === k ? 0 : 2) + (fo.tag ? 1 : 0)});
     });
     out.sort(function(a, b){ return a.rank - b.rank || a.fo.step - b.fo.step; });
     out.forEach(function(o){
@@ -583,6 +604,23 @@ LIVE_SCRIPT = r"""
         if (!player && !svg.classList.contains("zoomed")) svg.setAttribute("viewBox", S.full.text);
       }
     }
+    // the end state (the last step drawn as the book's plate: its own marks, furniture and letters, which the
+    // sweep does not carry) at the book's values alone; elsewhere the last step shows every mark of the
+    // construction, each where a fresh replay draws it, and the page says so
+    var atBook = Math.abs(Math.log10(value) - Math.log10(S.L.initial)) < 1e-9;  // (the other givens are there)
+    if (player && endAt !== undefined) {
+      player.data.end = atBook ? endAt : 0;
+      if (endNote && endNote.hidden !== atBook) endNote.hidden = atBook;
+    }
+    for (var hi = 0; hi < hatches.length; hi++) {
+      var hs = atBook ? "" : "none"; if (hatches[hi].style.display !== hs) hatches[hi].style.display = hs;
+    }
+    // the inset (a sliver's place magnified beside the view, its points lettered) holds the built value's
+    // numbers: away from the book's values it is not shown; back there the player shows the step again
+    var inset = document.getElementById("inset");
+    if (inset && !atBook && inset.style.display !== "none") {
+      inset.style.display = "none"; document.getElementById("insetbox").setAttribute("visibility", "hidden"); insetHidden = true;
+    } else if (atBook && insetHidden && player) { insetHidden = false; player.redraw(); }
     // the view first (the player reads the figure's size there: nothing written yet, no layout forced)
     if (player) view(!glide, dragging);
     for (var i = 0; i < S.slots.length; i++) write(S.slots[i]);
@@ -590,7 +628,6 @@ LIVE_SCRIPT = r"""
     drawAreas();
     breakMarks();
     // readings of the figure (an angle to the minute): true at the book's values only
-    var atBook = Math.abs(Math.log10(S.value) - Math.log10(S.L.initial)) < 1e-9;  // (the others are there)
     for (var j = 0; j < readings.length; j++) { var shown = atBook ? "" : "none"; if (readings[j].style.display !== shown) readings[j].style.display = shown; }
     declutter();
     api.value = value; api.given = S.L.given;
@@ -724,8 +761,18 @@ LIVE_SCRIPT = r"""
       return inflate(L.data);
     }).then(function(buf){ W.buf = buf; return W; });
   }
+  var endAt, endNote = null, insetHidden = false, hatches = [];
   api.ready = Promise.all(LIST.map(load)).then(function(ws){
     player = window.constructPlayer;
+    if (player && player.data.end) {
+      endAt = player.data.end;
+      endNote = document.createElement("div");
+      endNote.className = "live-end"; endNote.hidden = true; endNote.setAttribute("style", "color:#777;font-size:12px");
+      endNote.textContent = "Der letzte Schritt zeigt das Bild der Tafel beim Buchwert; hier alle Linien der " +
+        "Konstruktion. / The last step shows the plate’s look at the book’s value; here every line of the construction.";
+      var held = document.querySelector("#live .live-held");
+      if (held) held.parentNode.insertBefore(endNote, held.nextSibling);
+    }
     if (player) {  // each step's view (the camera's, or the magnified box) gets a box of its own, moved with the given
       VIEWS = player.data.views ? "views" : "zooms"; IDX = player.data.views ? "v" : "z";
       var own = [];
@@ -746,10 +793,16 @@ LIVE_SCRIPT = r"""
       var find = function(id){ return player && player.find ? player.find(id) : document.getElementById(id); };
       var pieces = [], el;
       for (var j = 0; (el = find(j ? a[0] + "-" + j : a[0])); j++) pieces.push(el);
+      // (an area's hatching, drawn by the drawing at the book's value, is not in the sweep: shown there alone)
+      pieces.forEach(function(p){ var h = find(p.id + "-hatch"); if (h) hatches.push(h); });
       if (pieces.length) areas.push({id: a[0], pieces: pieces, els: a.slice(1).map(find), key: null});
     });
     // the break marks as built give way to the page's own (drawn at every value, the built one too)
-    svg.querySelectorAll("#furniture .brk, #furniture .brkline").forEach(function(e){ e.parentNode.removeChild(e); });
+    // (the rod's length as built: the page writes its own where the drawing wrote it, "axis dx dy anchor")
+    svg.querySelectorAll("#furniture .rodlen[data-rod]").forEach(function(g){
+      var r = g.getAttribute("data-rod").split(" ");
+      if (!rodSpots[+r[0]]) rodSpots[+r[0]] = [+r[1], +r[2], r[3]]; });
+    svg.querySelectorAll("#furniture .brk, #furniture .brkline, #furniture .rodlen").forEach(function(e){ e.parentNode.removeChild(e); });
     LIST.map(function(L){ return L.readings || []; }).reduce(function(a, b){ return a.concat(b); }, [])
       .filter(function(id, i, all){ return all.indexOf(id) === i; }).forEach(function(id){
       var t = document.getElementById(id);

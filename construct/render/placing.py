@@ -96,6 +96,9 @@ class Placing:
         self._line_index: dict[tuple[float, float], LineIndex] = {}
         self._rows: dict[int, Any] = {}
         self._obstacle_a: tuple[Any, Any] | None = None
+        #: words the drawing writes beside the figure at every zoom level, as the rows of :meth:`letters_at` (the
+        #: rod's length at a break): the camera keeps them whole in its views as it keeps the letters
+        self.words: list[tuple[float, ...]] = []
         self._tags_by_step: dict[int, list[Mark]] | None = None
         self.spots = self._letter_spots()
         #: the lettered points that have a spot (in mark order)
@@ -147,6 +150,7 @@ class Placing:
                     dx, dy = spot[0] - px, spot[1] - py
                 b = label_box(px + dx, py + dy, m.label, st.label_size, st.label_font, st.label_italic)
                 rows.append((px, py, b[0] - px, b[1] - py, b[2] - px, b[3] - py))
+            rows += self.words
             got = self._rows[lvl] = np.array(rows) if rows else np.zeros((0, 6))
         return got
 
@@ -395,6 +399,27 @@ class Placing:
             dots, lines = self._obstacles
             got = self._obstacle_a = (np.array(dots, dtype=float).reshape(-1, 2),
                                                   np.array(lines, dtype=float).reshape(-1, 4))
+        return got
+
+    def clear_of_results(self, box: tuple[float, float, float, float]) -> bool:
+        """Is *box* (canvas px) clear of the points and the result lines the letters keep clear of (a word the
+        drawing writes beside them: the rod's length at a break)?"""
+        dots, _ = self.obstacle_arrays()
+        if ((dots[:, 0] >= box[0]) & (dots[:, 0] <= box[2]) & (dots[:, 1] >= box[1]) & (dots[:, 1] <= box[3])).any():
+            return False
+        reach = max(self.style.result_width, 2.2) / 2  # (2.2: the plates' heavy look)
+        if self.lines_at(1.0, self.style.label_size).meets(box, reach):
+            return False
+        return not _overlaps(box, self.letter_boxes())
+
+    def letter_boxes(self) -> list[tuple[float, float, float, float]]:
+        """The box (canvas px) of every letter placed in the whole figure (made once)."""
+        got = self.__dict__.get("_letter_boxes")
+        if got is None:
+            st = self.style
+            got = self.__dict__["_letter_boxes"] = [
+                label_box(p.point[0] + p.offset[0], p.point[1] + p.offset[1], p.text, st.label_size, st.label_font,
+                          st.label_italic) for p in self.labels() if p.shown]
         return got
 
     def lines_at(self, z: float, size: float) -> Any:

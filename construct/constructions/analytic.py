@@ -40,6 +40,8 @@ __all__ = [
     "inertia_two_term",
     "inertia_exact",
     "inertia_slope",
+    "inertia_two_term_bound",
+    "piston_path_book_bound",
     "tangential_factor",
     "zero_crossing_cos",
     "plus_m_cos",
@@ -112,6 +114,29 @@ def inertia_exact(omega: Any, lam: Any, pressure_ratio: Any = 1.0) -> Any:
     s2 = np.sin(omega) ** 2
     return _out(pressure_ratio * (
         np.cos(omega) + lam * (np.cos(2.0 * omega) + lam * lam * s2 * s2) / (1.0 - lam * lam * s2) ** 1.5))
+
+
+def inertia_two_term_bound(lam: Any) -> Any:
+    """How far Gl. (4_1) may stray from the exact acceleration: |inertia_exact - inertia_two_term| <= 2.5 lam^3 /
+    (1 - lam^2)^2.5 (the dropped lam^3 terms, in the units of Gl. (4_1)).
+
+    >>> w = np.linspace(0.0, math.pi, 181)
+    >>> bool(np.max(np.abs(inertia_exact(w, 0.25) - inertia_two_term(w, 0.25))) <= inertia_two_term_bound(0.25))
+    True
+    """
+    return _out(2.5 * lam ** 3 / (1.0 - lam * lam) ** 2.5)
+
+
+def piston_path_book_bound(omega: Any, lam: Any) -> Any:
+    """How far the books' path Gl. (1) may stray from the exact one, in units of r: it truncates the series after
+    lam sin^2 w / 2, the remainder is at most lam^3 sin^4 w / (8 (1 - lam^2)).
+
+    >>> w = np.linspace(0.0, math.pi, 181)
+    >>> bool(np.all(np.abs(piston_path_exact(w, 1.0, 4.0) - piston_path_book(w, 1.0, 4.0))
+    ...             <= piston_path_book_bound(w, 0.25)))
+    True
+    """
+    return _out(lam ** 3 * np.sin(omega) ** 4 / (8.0 * (1.0 - lam * lam)))
 
 
 def inertia_slope(omega: Any, r: Any, lam: Any, pressure_ratio: Any = 1.0) -> Any:

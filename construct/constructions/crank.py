@@ -207,8 +207,7 @@ def crank_checks(fig: Figure) -> list[Check]:
                             EUCLIDEAN_TOLERANCE + slope * tol_w, f"division error {tol_w:.1e} rad times |dx/dw|",
                             "stroke"))
         # Gl. (1) drops the lam^3 sin^4 / 8 term and beyond: its error is at most that over (1 - lam^2).
-        s4 = math.sin(nominal) ** 4
-        book_err = lam ** 3 * s4 / 8.0 / (1.0 - lam * lam) / 2.0
+        book_err = analytic.piston_path_book_bound(nominal, lam) / 2.0
         checks.append(Check(f"piston path {k} (book Gl. 1)", x, analytic.piston_path_book(nominal, r, L) / (2 * r),
                             book_err + EUCLIDEAN_TOLERANCE + slope * tol_w,
                             "Gl. (1) truncates the series after lam sin^2/2: remainder <= lam^3 sin^4 / (8 (1 - lam^2))",
@@ -365,8 +364,7 @@ def division_tolerance(m: int, x: float, r: float, L: float) -> float:
     if m <= 1 or not 0.0 < x < 1.0:
         return 0.0  # the dead centres are given, not divided
     w = analytic.crank_angle_from_path(2 * r * x, r, L)
-    s, c = math.sin(w), math.cos(w)
-    dx_dw = r * s * (1.0 + r * c / math.sqrt(L * L - r * r * s * s))
+    dx_dw = 2.0 * r * analytic.piston_rate(w, r / L)
     return DIVISION_ERROR * m * m * 2.220446049250313e-16 * 2 * r / abs(dx_dw)
 
 

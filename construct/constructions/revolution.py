@@ -51,6 +51,7 @@ import numpy as np
 from ..kernel.errors import InvalidParameter
 from ..kernel.instruments import Builder
 from ..kernel.protocol import Provenance
+from .analytic import tangential_factor
 from .checking import EUCLIDEAN_TOLERANCE, Check
 from .crank import crank_angle, point_name
 from .domain import CRANK_COUNT, CRANK_OFFSET
@@ -379,9 +380,7 @@ def unit_t(w: Any, lam: float) -> Any:
     sin(w + β)/cos β with sin β = λ sin w on the forward stroke; its negative
     (the force reverses with the motion) on the return: |sin(w + β)/cos β|.
     """
-    w = np.asarray(w, dtype=float)
-    beta = np.arcsin(lam * np.sin(w))
-    return np.abs(np.sin(w + beta) / np.cos(beta))
+    return np.abs(tangential_factor(np.asarray(w, dtype=float), lam))
 
 
 def summed_unit_t(w: Any, lam: float, offsets_deg: Sequence[float], cylinders: int = 1, force: Any = None) -> Any:

@@ -29,24 +29,24 @@ from typing import Any, Iterable, Sequence
 from ..kernel.geometry import Circle, Length, Line, Point
 from ..kernel.protocol import Protocol, Replay, Step
 from ..kernel.letters import FIGURE_LETTER, primed
-from .captions import TITLE_LIMIT, Reader, displayed
+from .captions import TITLE_LIMIT, displayed
 from .marks import (TWO_PI, Mark, MarkKind, circle_extent, curve_points, extreme_points, fanned_lines, letter_lines,
                     lies_on, segment_extent)
 from .end_marks import end_state
 from .sheet import Break, break_shift, broken, kept_span, lay_out, plate_names, warn_hidden_labels
+from .step_inputs import StepInputs
 
 __all__ = ["Mark", "MarkKind", "Scene", "build_scene", "label_offset_direction", "on_curve_names", "extreme_points",
            "thin", "reading", "plate_names", "break_shift", "FIGURE_LETTER"]
 
 
-#: A word of a caption written in the figure's letters that may name a point (a letter with what follows it).
-#: (Not a letter of a formula: F/f, r/L, r·cos.)
-_LETTERED = re.compile(r"(?<![\w′'″/·])[A-Za-zΑ-Ωα-ω][A-Za-z0-9Α-Ωα-ω′'″₀-₉∞]*(?![/·])")
-
-
 @dataclass(frozen=True)
-class Scene:
-    """All marks of a figure in step order, with its bounding box (y up)."""
+class Scene(StepInputs):
+    """All marks of a figure in step order, with its bounding box (y up).
+
+    What each step takes up and names (its inputs, what its arc is struck onto, the points it tags) it answers
+    as a :class:`~construct.render.step_inputs.StepInputs`, its base class.
+    """
 
     marks: tuple[Mark, ...]
     bbox: tuple[float, float, float, float]  # xmin, ymin, xmax, ymax
@@ -107,32 +107,12 @@ class Scene:
         key = (text, lang, tuple(outputs))
         done = self._readable_cache.get(key)
         if done is None:  # group titles recur on every step of their group: rewritten once
-            done = self._readable_cache[key] = self._reader.text(text, lang, outputs)
+            done = self._readable_cache[key] = self.reader.text(text, lang, outputs)
         return done
 
     @functools.cached_property
     def _readable_cache(self) -> dict[tuple, str]:
         return {}
-
-    @functools.cached_property
-    def _reader(self) -> Reader:
-        # the reader names lines and circles (an arc is part of its circle)
-        kinds = {MarkKind.SEGMENT: "line", MarkKind.ARC: "circle"}
-        makers = {n: s for s in self.steps for n in s.outputs}
-        objects = {}
-        lettered_at = {}
-        for m in self.marks:
-            s = makers.get(m.name)
-            if s is None:  # the point a straight line is lettered at (build_scene): the line goes by that letter
-                lettered_at[m.name[:-len(".at")]] = m.label
-                continue
-            objects[m.name] = (kinds.get(m.kind, m.kind.value), m.label, s.op, tuple(s.inputs))
-        for name, text in lettered_at.items():
-            kind, _, op, inputs = objects[name]
-            objects[name] = (kind, text, op, inputs)
-        for name, s in makers.items():  # what is not drawn (a compass opening J.h1) goes by its short name
-            objects.setdefault(name, ("length", None, s.op, tuple(s.inputs)))
-        return Reader(objects, self.params.get("called"))
 
     @functools.cached_property
     def _captions(self) -> list[tuple[str, str] | None]:
@@ -168,10 +148,6 @@ class Scene:
         """Is *step* faded in frame *k* (k = len(steps) + 1: the final figure, every group finished)?"""
         end = self.fade_end(step)
         return end is not None and step < k and end < k
-
-    def step_of(self, name: str) -> int | None:
-        m = self._drawn.get(name)
-        return m.step if m is not None else None
 
     def areas_over(self, m: Mark) -> list[tuple]:
         """The areas drawn after area *m* whose boxes meet its box: sections over it (a flywheel's rim over its
@@ -225,163 +201,6 @@ class Scene:
         loc = self._locating
         return [s.role in ("result", "given") or not s.group or any(o in loc for o in s.outputs) for s in self.steps]
 
-    def inputs(self, k: int) -> frozenset[str]:
-        """The objects step k's instrument is set on (centre, through point, the curves it cuts)."""
-        if not 1 <= k <= len(self.steps):
-            return frozenset()
-        return frozenset(n for n in self.steps[k - 1].inputs if n in self._drawn)
-
-    def struck_onto(self, k: int) -> frozenset[str]:
-        """The lines and curves step k's arc is struck onto: those the step that next takes up what step k
-        makes cuts it with (the scale line an arc is carried to is cut by the following step, which takes
-        the crossing).  Without them the student would see an arc struck onto nothing.
-
-        >>> from construct.constructions import get
-        >>> sc = build_scene(get("tangential-pressure").figure())
-        >>> sorted(sc.struck_onto(821))  # 'r cos ω = O–Yb7 carried to the scale line r'
-        ['gr']
-        """
-        if not 1 <= k <= len(self.steps):
-            return frozenset()
-        made = {n for n in self.steps[k - 1].outputs
-                if n in self._drawn and self._drawn[n].kind is not MarkKind.POINT}
-        if not made:
-            return frozenset()
-        for s in self._takers.get(k, ()):
-            step = self.steps[s - 1]
-            if made & set(step.inputs) and all(n not in self._drawn or self._drawn[n].kind is MarkKind.POINT
-                                               for n in step.outputs):
-                return frozenset(n for n in step.inputs if n not in made and n in self._drawn
-                                 and self._drawn[n].kind is not MarkKind.POINT and self._drawn[n].step < k)
-            return frozenset()  # the next step that takes it up draws with it: what it is struck onto is its own
-        return frozenset()
-
-    @functools.cached_property
-    def _takers(self) -> dict[int, list[int]]:
-        """Per step, the later steps that take up what it makes (in step order)."""
-        maker: dict[str, int] = {}
-        for s in self.steps:
-            for n in s.outputs:
-                maker.setdefault(n, s.index)
-        got: dict[int, list[int]] = {}
-        for s in self.steps:
-            for k in sorted({maker[n] for n in s.inputs if n in maker and maker[n] < s.index}):
-                got.setdefault(k, []).append(s.index)
-        return got
-
-    def aimed_at(self, k: int) -> frozenset[str]:
-        """The sides of the rectangle step k's straightedge draws the diagonal of: a line laid from a point
-        through a corner where two perpendicular straight lines cross (the hyperbola's ray from O through B,
-        the ordinate meeting the horizontal through the known point) -- without them the student sees a ray
-        aimed at a point on nothing.
-
-        >>> from construct.constructions import get
-        >>> sc = build_scene(get("flywheel-rim").figure())
-        >>> k = next(s.index for s in sc.steps if s.outputs == ("U6.s",))
-        >>> sorted(sc.aimed_at(k))  # the ordinate at 6/12 r1 and the horizontal through the rim's corner K
-        ['khU', 'lv6']
-        """
-        if not 1 <= k <= len(self.steps):
-            return frozenset()
-        s = self.steps[k - 1]
-        if s.op != "line" or len(s.inputs) != 2:
-            return frozenset()
-        maker = self.step_of(s.inputs[1])
-        if maker is None or self.steps[maker - 1].op != "intersect":
-            return frozenset()
-        sides = [self._drawn.get(n) for n in self.steps[maker - 1].inputs]
-        if len(sides) != 2 or any(m is None or m.kind is not MarkKind.SEGMENT for m in sides):
-            return frozenset()
-        (ax0, ay0, ax1, ay1), (bx0, by0, bx1, by1) = (m.geom[:4] for m in sides)  # type: ignore[union-attr]
-        ux, uy, vx, vy = ax1 - ax0, ay1 - ay0, bx1 - bx0, by1 - by0
-        if abs(ux * vx + uy * vy) > 1e-6 * math.hypot(ux, uy) * math.hypot(vx, vy):
-            return frozenset()  # not a rectangle's corner
-        return frozenset(m.name for m in sides)  # type: ignore[union-attr]
-
-    def tagged(self, k: int) -> frozenset[str]:
-        """The points a teaching frame tags at step k: what the step makes, what its instrument is set on
-        (also the centre of a circle it cuts), and every point its caption names."""
-        if not 1 <= k <= len(self.steps):
-            return frozenset()
-        s = self.steps[k - 1]
-        names = set(s.outputs) | set(s.inputs) | self.named(k)
-        for n in s.inputs:
-            if n in self._reader.objects and n not in self._reader.points:
-                names.update(self._reader.curve_points(n))
-        return frozenset(n for n in names if n in self._reader.points)
-
-    def named(self, k: int) -> frozenset[str]:
-        """The points step k's caption names (and its group's title, in a protocol written in letters)."""
-        if not 1 <= k <= len(self.steps):
-            return frozenset()
-        s = self.steps[k - 1]
-        if self.params.get("captions") == "letters":  # the caption names points by their letters
-            got = self._named_points(k)
-        else:
-            got = self._reader.mentioned(s.caption.de) | self._reader.mentioned(s.caption.en)
-        return frozenset(n for n in got if n in self._reader.points)
-
-    def _named_points(self, k: int) -> set[str]:
-        """The points step k's caption and its group's title (written in the figure's letters) name by a letter
-        or a tag.
-
-        A tag may stand for several helpers (the F of every trisection): the caption means the one of its
-        own group, made by then (the latest of them); a lone letter of another top-level group is another F
-        (a numbered tag, M2, is the latest made).  A lettered point is the figure's, whatever its group.
-        """
-        s = self.steps[k - 1]
-        out: set[str] = set()
-        # the step's caption and its group's title (the innermost, which the player shows with it)
-        group = self.group_captions[s.group].rsplit(" › ", 1)[-1] if s.group else ""
-        for token in set(_LETTERED.findall(s.caption.de)) | set(_LETTERED.findall(s.caption.en)) | set(
-                _LETTERED.findall(group)):
-            best = None
-            for step, name, grp, lettered in self._by_letter.get(token, ()):
-                if step > k:
-                    break
-                shared = 0
-                while shared < min(len(grp), len(s.group)) and grp[shared] == s.group[shared]:
-                    shared += 1
-                # a lone letter (the F of a trisection) is its own group's; a numbered tag may be another's
-                if (lettered or shared or len(token) > 1) and (best is None or shared >= best[0]):
-                    best = (shared, name)
-            if best is not None:
-                out.add(best[1])
-        return out
-
-    @functools.cached_property
-    def _by_letter(self) -> dict[str, list[tuple[int, str, tuple[str, ...], bool]]]:
-        """The points by the letter or tag a caption names them by: (step made, name, group, lettered?), in step
-        order."""
-        out: dict[str, list[tuple[int, str, tuple[str, ...], bool]]] = {}
-        for m in self.marks:
-            if m.kind is MarkKind.POINT and m.name in self._reader.points:
-                out.setdefault(m.label or self.display_name(m.name), []).append((m.step, m.name, m.group, bool(m.label)))
-        return out
-
-    @functools.cached_property
-    def _drawn(self) -> dict[str, Mark]:
-        return {m.name: m for m in self.marks}
-
-    def display_name(self, name: str) -> str:
-        """The letter or tag the reader sees for an object (the same one the captions use)."""
-        return primed(self._reader.point(name) if name in self._reader.points else name.rsplit(".", 1)[-1])
-
-    def tag_shown(self, name: str) -> bool:
-        """Whether an unlettered point's tag (:meth:`display_name`) reads as one of the figure's letters.
-
-        A figure is lettered with one letter, perhaps with a number of at most two
-        digits or a prime (M2, S1, q10, K17, 5′); the helpers' internal names
-        (``c135``: the crank at 135°, ``Nb17``, ``iP6``) are not letters and are not
-        shown, whatever the caption calls them.
-
-        >>> from construct.constructions import get
-        >>> sc = build_scene(get("crank").figure(parts=6))
-        >>> [FIGURE_LETTER.fullmatch(t) is not None for t in ("M2", "q10", "5′", "c135", "Nb17", "iP6")]
-        [True, True, True, False, False, False]
-        """
-        return FIGURE_LETTER.fullmatch(self.display_name(name)) is not None
-
     def stage_box(self, k: int) -> tuple[float, float, float, float]:
         """The region of step k's top-level group (all its steps), with a margin.
 
@@ -395,7 +214,7 @@ class Scene:
         if box is None:
             box = self._stage_cache[span] = self._box_of_steps(*span)
         # the instrument's inputs are in view even when they lie outside the stage (a far centre)
-        pts = [self._drawn[n].geom for n in self.inputs(k) if self._drawn[n].kind is MarkKind.POINT]
+        pts = [self.marks_by_name[n].geom for n in self.inputs(k) if self.marks_by_name[n].kind is MarkKind.POINT]
         if pts and not all(box[0] <= x <= box[2] and box[1] <= y <= box[3] for x, y in pts):
             x0 = min([box[0]] + [p[0] for p in pts])
             y0 = min([box[1]] + [p[1] for p in pts])

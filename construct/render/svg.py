@@ -26,11 +26,10 @@ True
 
 from __future__ import annotations
 
-import bisect
 import dataclasses
 import heapq
 import math
-from typing import Any, Callable, Sequence
+from typing import Any, Callable, Iterator, Sequence
 
 from . import captions as _captions
 from . import svgdoc
@@ -39,14 +38,16 @@ from .edges import clear_edges, clear_tag_edges
 from .captions import Captions, PlateCaption
 from .end_state import END_MARGIN_PX, EndView, end_furniture, end_sheet, lay_out_end, own_strokes, wrapped
 from .insets import ring_round, step_insets
+from .magnifier import magnified_inset
 from .gaps import CLEARANCE, Gap, GapFactory, gapped_hatch, gapped_mark
 from .lettering import HALO_PX, LEADER_FROM, label_box, text_box, text_width
-from .paths import arc_path, curve_path, hatch_path, polygon_path, polyline_path
-from .marks import could_show
+from .paths import hatch_path
 from .placing import Placing, PlacedLabel, place_outwards, text_gap
 from .plate import (Lettering, Stroke, beside_breaks, break_elements, crossing_lines, furniture_elements,
                     furniture_pieces, plain, rod_spots, rod_written, subscript_runs, writes_rod)
 from .scene import Mark, MarkKind, Scene, extreme_points
+from .shapes import mark_geometry, mark_layer, point_radius, stroke_element
+from .step_groups import StepGroups
 from .styles import PLAIN, Style
 from .svgdoc import fmt
 from .viewport import Viewport, camera_transform, camera_zoom
@@ -58,7 +59,7 @@ __all__ = ["render_svg", "Drawing", "EndView", "mark_geometry", "mark_layer", "p
 _MOVED = {"wrap": "captions", "step_caption": "captions", "group_caption": "captions"}
 
 
-class Drawing:
+class Drawing(StepGroups):
     """A scene laid out in one style: every mark's SVG element, made once, reused by every output.
 
     The elements are made by svgwrite (:mod:`construct.render.svgdoc`), each
@@ -123,7 +124,7 @@ class Drawing:
         ends = sorted(scene.end_marks, key=lambda m: m.step) if self.end is not None else []
         for m in heapq.merge(scene.marks, ends, key=lambda m: m.step):
             end = m.id.endswith("-end") and m in ends
-            for layer, elem in self._elements(m, self.vp, placed, None if end else m.id, end=end):
+            for layer, elem in self.mark_elements(m, self.vp, placed, None if end else m.id, end=end):
                 runs = self.groups[layer]
                 if not runs or runs[-1][0] != m.step:
                     runs.append((m.step, []))
@@ -140,7 +141,7 @@ class Drawing:
                     runs.append((k, [self.doc.frozen(f.rect(insert=(fmt(v[0]), fmt(v[1])), size=(fmt(v[2]), fmt(v[3])),
                                                             class_="view"))]))
                     last = v
-        self._steps = {name: [k for k, _ in runs] for name, runs in self.groups.items()}
+        self.group_steps = {name: [k for k, _ in runs] for name, runs in self.groups.items()}
 
     # -- the rod's length at a break --------------------------------------------------------------
     def _rod_at(self) -> tuple[str | None, dict[str | None, list[tuple]]]:
@@ -249,8 +250,13 @@ class Drawing:
         """The canvas height without the caption lines (the player shows its captions in HTML)."""
         return self.vp.height - self.n_caption * 1.45 * self.style.caption_size
 
-    def _elements(self, m: Mark, vp: Viewport, placed: list, mid: str | None, *, end: bool = False):
-        """(layer, svgwrite element) of a mark's elements; the label (if any) is a second one.
+    def mark_elements(self, m: Mark, vp: Viewport, placed: list, mid: str | None, *,
+                      end: bool = False) -> Iterator[tuple[str, Any]]:
+        """(layer, svgwrite element) of mark *m* drawn on the canvas *vp*; its letter (if any) is a second one.
+
+        On the drawing's own viewport (:attr:`vp`) the letters stand where :attr:`placing` put them; on another
+        (the magnified inset, :mod:`construct.render.magnifier`) they go radially outwards, clear of the
+        letter boxes in *placed* (which it extends).  *mid*: the element's id (None: none, a copy).
 
         An end state's own mark (*end*) is shown in the end state only (class ``fo``); a mark the end state
         leaves out, and its letter, are not shown there (``nf``)."""
@@ -309,7 +315,7 @@ class Drawing:
             if d is not None:  # broken for the letters it passes
                 yield mark_layer(m), f.path(d=d, class_=cls, **ids)
             else:
-                yield mark_layer(m), _STROKES[m.kind](f, shapes[0][2], {"class_": cls, **ids})
+                yield mark_layer(m), stroke_element(f, m, shapes[0][2], class_=cls, **ids)
         else:  # an area, and its hatching if the style hatches and the lines meet it
             yield "areas", f.path(d=shapes[0][2]["d"], class_=f"area {cls}", **ids)
             for _, _, a in shapes[1:]:
@@ -379,78 +385,6 @@ class Drawing:
         dwg.add(f.rect(insert=("0", "0"), size=(w, h), id="background", fill=st.background))
         return dwg
 
-    def step_group(self, k: int, elems: Sequence[Any], cls: str = "", **attrs: Any) -> Any:
-        """Step k's elements of one layer: ``<g class="step ..." data-step="k">``.
-
-        With fading (``Style.done_opacity``) a step whose helpers fade carries ``data-fade``:
-        the last step of its group, after which the player and animation fade it too.
-        """
-        if self.style.done_opacity < 1.0 and not (elems and _is_view(elems[0])):
-            end = self.scene.fade_end(k)
-            if end is not None:
-                attrs = {**attrs, "data-fade": str(end)}
-        g = self.doc.factory.g(class_=f"step {cls}".rstrip(), **{"data-step": str(k)}, **attrs)
-        for e in elems:
-            g.add(e)
-        return g
-
-    def step_runs(self, name: str, k: int) -> list[tuple[int, list[Any]]]:
-        """Layer *name*'s (step, elements) for steps 1..k."""
-        return self.groups[name][:bisect.bisect_right(self._steps[name], k)]
-
-    def input_steps(self, k: int) -> frozenset[int]:
-        """The steps that made what step k's instrument is set on, what its caption names, what its arc is
-        struck onto (:meth:`Scene.struck_onto`) and the rectangle its ray is the diagonal of (:meth:`Scene.aimed_at`)."""
-        if not self.style.input_colour:
-            return frozenset()
-        done = self.__dict__.setdefault("_input_steps", {})  # asked by the tags' placing and by the player
-        got = done.get(k)
-        if got is None:
-            sc = self.scene
-            # and the lines its arc is struck onto (cut by the next step): drawn while it strikes it
-            got = done[k] = frozenset(s for s in (sc.step_of(n) for n in sc.inputs(k) | sc.tagged(k)
-                                                  | sc.struck_onto(k) | sc.aimed_at(k))
-                                      if s is not None and s < k)
-        return got
-
-    def step_class(self, s: int, k: int, *, mark_steps: bool, inputs: frozenset[int] = frozenset(),
-                   layer: str = "") -> str:
-        """The class of step s's groups in frame k: cur, old (with inp), done (a finished group's helpers)."""
-        if layer == "views":
-            return ""  # the camera's boxes are data, never drawn
-        fade = self.style.done_opacity < 1.0
-        if not mark_steps:
-            # the whole figure: every group finished, its helpers faint (teaching)
-            return "done" if fade and self.scene.faded(s, len(self.scene.steps) + 1) else ""
-        if s == k:
-            return "cur"
-        if s in inputs:
-            return "inp"  # at full strength, in the input colour
-        if fade and self.scene.faded(s, k):
-            return "done"
-        return "old" if self.style.earlier_opacity < 1.0 else ""
-
-    def plain_groups(self, name: str) -> list[Any]:
-        """Layer *name*'s step groups as the whole figure shows them (``class="step"``, ``"step done"``
-        for a finished group's helpers), made once: the layered figure and the player carry the same ones."""
-        cache = self.__dict__.setdefault("_plain_groups", {})
-        if name not in cache:
-            cache[name] = [self.doc.frozen(self.step_group(k, elems, self.step_class(k, 0, mark_steps=False, layer=name)))
-                           for k, elems in self.groups[name]]
-        return cache[name]
-
-    def layer(self, name: str, k: int, *, mark_steps: bool) -> Any:
-        """``<g id="name">`` with the step groups of steps 1..k; ``cur``/``old``/``done``/``inp`` when *mark_steps*."""
-        inputs = self.input_steps(k) if mark_steps else frozenset()
-        g = self.doc.factory.g(id=name)
-        if not mark_steps:
-            for group in self.plain_groups(name)[:bisect.bisect_right(self._steps[name], k)]:
-                g.add(group)
-            return g
-        for s, elems in self.step_runs(name, k):
-            g.add(self.step_group(s, elems, self.step_class(s, k, mark_steps=mark_steps, inputs=inputs, layer=name)))
-        return g
-
     def body(self, k: int, *, mark_steps: bool) -> list[Any]:
         """The layers of steps 1..k (clipped to the drawing when this is a region view)."""
         f = self.doc.factory
@@ -465,7 +399,7 @@ class Drawing:
             parent = f.g(clip_path="url(#drawing-clip)")
             out += [clip, parent]
         for name in self.LAYERS:
-            if self._steps[name] or name != "areas":
+            if self.group_steps[name] or name != "areas":
                 layer = self.layer(name, k, mark_steps=mark_steps)
                 if parent is not None:
                     parent.add(layer)
@@ -584,7 +518,7 @@ class Drawing:
             for e in self.body(k, mark_steps=True):
                 dwg.add(e)
         if self.style.zoom_below > 0 and k > 0 and not self.style.camera:
-            inset = self.inset(k)
+            inset = magnified_inset(self, k)
             if inset is not None:
                 dwg.add(inset)
         if self.style.show_caption:
@@ -650,113 +584,6 @@ class Drawing:
         """All steps, nothing highlighted, with the figure's caption lines (the layered figure)."""
         return self.layered(caption, centred=centred)
 
-    # -- magnified inset -------------------------------------------------------------
-    def inset(self, k: int) -> Any | None:
-        """A magnified view of the current group when it is tiny in the whole figure (teaching)."""
-        box = self.scene.group_box(k, self.style.zoom_below, self.region)
-        if box is None:
-            return None
-        size = max(box[2] - box[0], box[3] - box[1])
-        if size <= 0:
-            return None
-        pad = 0.25 * size
-        cx, cy = (box[0] + box[2]) / 2, (box[1] + box[3]) / 2
-        half = size / 2 + pad
-        region = (cx - half, cy - half, cx + half, cy + half)
-        vp = self.vp
-        m = self.style.margin_px
-        side = min(0.4 * vp.width, 0.8 * (vp.height - self.n_caption * 1.45 * self.style.caption_size - 2 * m))
-        px0 = vp.width - m - side
-        py0 = m
-        win = Viewport.window(region, (px0, py0, px0 + side, py0 + side))
-        f = self.doc.factory
-        corner, square = (fmt(px0), fmt(py0)), (fmt(side), fmt(side))
-        out = f.g(id="inset")
-        clip = f.clipPath(id="inset-clip")
-        clip.add(f.rect(insert=corner, size=square))
-        out.add(clip)
-        out.add(f.rect(insert=corner, size=square, class_="inset"))
-        inner = f.g(clip_path="url(#inset-clip)")
-        old = "old" if self.style.earlier_opacity < 1.0 else ""
-        placed: list = []
-        by_layer: dict[str, list[tuple[int, Any]]] = {name: [] for name in self.LAYERS}
-        for mk in self.scene.marks:
-            if mk.step > k:
-                break
-            if not could_show(mk, region):
-                continue
-            for layer, elem in self._elements(mk, win, placed, None):
-                by_layer[layer].append((mk.step, elem))
-        for name in self.LAYERS:
-            for s, elem in by_layer[name]:
-                inner.add(self.step_group(s, [elem], "cur" if s == k else old))
-        out.add(inner)
-        zoom = win.scale / vp.scale
-        out.add(f.text(f"× {zoom:.0f}", x=[fmt(px0 + 6)], y=[fmt(py0 + side - 6)], class_="cap grp"))
-        return out
-
-
-#: The SVG element of a mark the pen draws as one line, by kind: (factory, viewport, mark, attributes) -> element.
-#: The svgwrite element of a stroked mark from its geometry's attributes (:func:`mark_geometry`).
-_STROKES: dict[MarkKind, Any] = {
-    MarkKind.SEGMENT: lambda f, a, kw: f.line(start=(a["x1"], a["y1"]), end=(a["x2"], a["y2"]), **kw),
-    MarkKind.CIRCLE: lambda f, a, kw: f.circle(center=(a["cx"], a["cy"]), r=a["r"], **kw),
-    MarkKind.ARC: lambda f, a, kw: f.path(d=a["d"], **kw),
-    MarkKind.CURVE: lambda f, a, kw: f.path(d=a["d"], **kw),
-}
-
-
-def point_radius(m: Mark, style: Style) -> float:
-    """The drawn radius of a point mark: small for an auxiliary one or an unlettered helper (a dotted name)."""
-    aux = m.role == "auxiliary" or ("." in m.name and not m.label)
-    return style.aux_point_radius if aux else style.point_radius
-
-
-def mark_layer(m: Mark) -> str:
-    """The layer of :attr:`Drawing.LAYERS` a mark's drawing (not its letter) goes into."""
-    if m.kind is MarkKind.POINT:
-        return "points"
-    if not m.kind.stroked:
-        return "areas"
-    return "results" if m.role == "result" else "construction"
-
-
-def mark_geometry(m: Mark, vp: Viewport, style: Style) -> list[tuple[str, str, dict[str, str]]]:
-    """What a mark draws on the canvas *vp*, without its letter: (id suffix, element, {attribute: text}).
-
-    The one place that turns a mark's geometry into SVG attributes: the :class:`Drawing` builds its
-    elements from it, and the live player's sweep (:mod:`construct.live`) reads the same
-    numbers at every grid value of a given without laying out a whole page.  An area is its outline and,
-    when the style hatches it and the hatching meets it, a second element (suffix ``-hatch``).
-
-    >>> vp = Viewport(0.0, 1.0, 10.0, 20.0, 20.0, 0.0)
-    >>> seg = Mark("s", 1, "g", MarkKind.SEGMENT, (0.0, 0.0, 1.0, 1.0), "construction", "straightedge", "exact")
-    >>> mark_geometry(seg, vp, PLAIN)
-    [('', 'line', {'x1': '0', 'y1': '10', 'x2': '10', 'y2': '0'})]
-    >>> pt = Mark("p", 1, "P", MarkKind.POINT, (0.5, 0.5), "result", "compass", "exact")
-    >>> mark_geometry(pt, vp, PLAIN)
-    [('', 'circle', {'cx': '5', 'cy': '5', 'r': '2'})]
-    """
-    g, kind = m.geom, m.kind
-    if kind is MarkKind.POINT:
-        x, y = vp.xy(*g)
-        return [("", "circle", {"cx": x, "cy": y, "r": fmt(point_radius(m, style))})]
-    if kind is MarkKind.SEGMENT:
-        (x1, y1), (x2, y2) = vp.xy(*g[:2]), vp.xy(*g[2:4])
-        return [("", "line", {"x1": x1, "y1": y1, "x2": x2, "y2": y2})]
-    if kind is MarkKind.CIRCLE:
-        x, y = vp.xy(*g[:2])
-        return [("", "circle", {"cx": x, "cy": y, "r": vp.length(g[2])})]
-    if kind is MarkKind.ARC:
-        return [("", "path", {"d": arc_path(vp, *g)})]
-    if kind is MarkKind.CURVE:
-        return [("", "path", {"d": (polyline_path if m.straight else curve_path)(vp, g)})]
-    out = [("", "path", {"d": polygon_path(vp, g)})]
-    if style.hatch:
-        d = hatch_path(vp, g, style.hatch_spacing, *(() if m.hatch is None else (m.hatch,)))
-        if d:
-            out.append(("-hatch", "path", {"d": d}))
-    return out
 
 def _start_anchored(items: Sequence[Any], scale: float, style: Style) -> tuple:
     """*items* with every lettering that has an index (P = F·p_ü) and is set at its end moved to be set at its
@@ -769,12 +596,6 @@ def _start_anchored(items: Sequence[Any], scale: float, style: Style) -> tuple:
             it = dataclasses.replace(it, at=(it.at[0] - w * math.cos(a), it.at[1] - w * math.sin(a)), anchor="start")
         out.append(it)
     return tuple(out)
-
-
-def _is_view(elem: Any) -> bool:
-    """Is *elem* a camera box of the ``views`` layer (frozen or not)?"""
-    xml = getattr(elem, "xml", None)
-    return (xml.get("class") if xml is not None else getattr(elem, "attribs", {}).get("class")) == "view"
 
 
 def render_svg(scene: Scene, *, upto: int | None = None, style: Style = PLAIN,

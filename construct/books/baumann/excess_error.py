@@ -30,6 +30,8 @@ from __future__ import annotations
 import math
 from typing import Mapping
 
+from ...constructions.analytic import bisect, inertia_two_term
+
 __all__ = ["epsilon", "error_area", "cutoff_angle", "compression_angle", "integral_coefficients", "antiderivative",
            "tangential_error", "book_t", "crossings", "LAMBDA"]
 
@@ -96,7 +98,7 @@ def book_t(a: float, kappa: float, g: Mapping[str, float]) -> float:
     x = _series_path(a)
     steam = P + P0 if x <= s1 else (P + P0) * (s1 + s0) / (x + s0)
     back = P0 if x <= 1.0 - s3 else P0 * (s3 + s0) / (1.0 - x + s0)
-    acc = P / ((1.0 + LAMBDA) * kappa) * (math.cos(a) + LAMBDA * math.cos(2 * a))
+    acc = P / ((1.0 + LAMBDA) * kappa) * inertia_two_term(a, LAMBDA)
     return (steam - back - acc) * (math.sin(a) + math.sin(2 * a) / (10.0 - 0.2 * math.sin(a) ** 2))
 
 
@@ -109,12 +111,5 @@ def crossings(kappa: float, g: Mapping[str, float], steps: int = 20000) -> dict[
     found = []
     for i in range(steps):
         if (ys[i] - mean) * (ys[i + 1] - mean) < 0.0:
-            lo, hi = i * h, (i + 1) * h
-            for _ in range(60):
-                mid = 0.5 * (lo + hi)
-                if (book_t(lo, kappa, g) - mean) * (book_t(mid, kappa, g) - mean) <= 0.0:
-                    hi = mid
-                else:
-                    lo = mid
-            found.append(0.5 * (lo + hi))
+            found.append(bisect(lambda a: book_t(a, kappa, g) - mean, i * h, (i + 1) * h))
     return {"mean": mean, "alpha1": found[0], "alpha2": found[-1]}

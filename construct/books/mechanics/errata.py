@@ -28,22 +28,11 @@ from __future__ import annotations
 import math
 from fractions import Fraction
 
+from ...constructions.analytic import bisect
 from ..errata import Erratum, classify, read_printed
 from . import printed as seed002
 
 __all__ = ["entries", "true_value"]
-
-
-def _bisect(f, lo: float, hi: float) -> float:
-    flo = f(lo)
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        fm = f(mid)
-        if (fm > 0) == (flo > 0):
-            lo, flo = mid, fm
-        else:
-            hi = mid
-    return 0.5 * (lo + hi)
 
 
 def true_value(quantity: str) -> float:
@@ -63,7 +52,7 @@ def true_value(quantity: str) -> float:
     if quantity == "equal_speed_spacing":
         # the zero of the excess work between the two extremes (infinite rod)
         # (bisection to the float's last bits; a billionth of a degree is far below the printed minute)
-        return round(math.degrees(_bisect(lambda a: excess_exact(a, None), a1, 0.5 * math.pi - a1)), 9)
+        return round(math.degrees(bisect(lambda a: excess_exact(a, None), a1, 0.5 * math.pi - a1)), 9)
     raise KeyError(quantity)
 
 

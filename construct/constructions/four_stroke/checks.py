@@ -14,7 +14,8 @@ import math
 
 from ..checking import EUCLIDEAN_TOLERANCE, Check
 from .. import Figure
-from .model import STROKES, model_pressure, piston_path
+from ..analytic import inertia_two_term, piston_fraction
+from .model import STROKES, model_pressure
 
 __all__ = ["four_stroke_checks", "volume", "pressure"]
 
@@ -109,7 +110,7 @@ def four_stroke_checks(fig: Figure) -> list[Check]:
             t = s * n + i
             k = i if s % 2 == 0 else n - i
             theta = math.pi * t / n
-            x = piston_path(theta, g["rod_ratio"])
+            x = piston_fraction(theta, lam)
             want = model_pressure(s, x, g, engine)
             if s == 1 and i == n:
                 want = model_pressure(1, 0.0, g, engine)
@@ -120,12 +121,12 @@ def four_stroke_checks(fig: Figure) -> list[Check]:
                                 "read on the French curve at the piston position (the same curve through the exact "
                                 "points strays by " f"{dev:.2e} at), carried with the compass" if dev else
                                 "a straight line or a constructed point, carried with the compass", "at"))
-            mass = g["pressure_ratio"] * (math.cos(theta) + lam * math.cos(2.0 * theta))
+            mass = inertia_two_term(theta, lam, g["pressure_ratio"])
             checks.append(Check(f"b-b at {180 * t / n:g} deg: a-a less q(cos θ + r/L cos 2θ)",
                                 a - _height(fig, f"B{s}.{i}"), mass, tol_p * 10.0 + 1e-9 * abs(mass),
                                 "the inertia ordinate of Anhang II (Euclidean), taken off with the compass", "at"))
     checks.append(Check("piston position X_k against the exact law (stroke)", max(
-        abs(xk[k] - piston_path(math.pi * k / n, g["rod_ratio"])) for k in range(n + 1)), 0.0,
+        abs(xk[k] - piston_fraction(math.pi * k / n, lam)) for k in range(n + 1)), 0.0,
         1e-9, "rod arcs; the division of the circle", "stroke"))
     return checks
 

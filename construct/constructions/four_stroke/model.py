@@ -3,10 +3,9 @@ and the tangents of Brauer's rays the construction steps by."""
 
 from __future__ import annotations
 
-import math
 from typing import Mapping
 
-__all__ = ["ENGINES", "COMPRESSION_RATIOS", "STROKES", "brauer_tangents", "piston_path", "model_pressure"]
+__all__ = ["ENGINES", "COMPRESSION_RATIOS", "STROKES", "brauer_tangents", "model_pressure"]
 
 ENGINES = ("explosion", "diesel")
 #: Each engine's compression ratio when none is given (explosion engines 4..7, Diesel 12..16).
@@ -28,12 +27,6 @@ def brauer_tangents(ratio: float, exponent: float, steps: int) -> tuple[float, f
     (5.0, 0.0)
     """
     return ratio ** (1.0 / steps) - 1.0, ratio ** (exponent / steps) - 1.0
-
-
-def piston_path(theta: float, rod_ratio: float) -> float:
-    """Piston path from the head-end dead centre, fraction of the stroke (exact law)."""
-    s = math.sin(theta)
-    return 0.5 * (1.0 - math.cos(theta) + rod_ratio - math.sqrt(rod_ratio * rod_ratio - s * s))
 
 
 def model_pressure(stroke: int, x: float, g: Mapping[str, float], engine: str) -> float:

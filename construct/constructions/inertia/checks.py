@@ -41,7 +41,7 @@ def inertia_checks(fig: Figure) -> list[Check]:
                             analytic.piston_path_exact(w, r, L) / stroke,
                             EUCLIDEAN_TOLERANCE + 0.5 * (1.0 + lam) * tol_w,
                             "rod arcs are Euclidean; division error times |dx/dw|", "stroke"))
-        bound = 2.5 * lam ** 3 / (1.0 - lam * lam) ** 2.5
+        bound = analytic.inertia_two_term_bound(lam)
         checks.append(Check(f"ordinate {k} vs exact acceleration (information)", ordinate(fig, f"K{k}") / Ff,
                             analytic.inertia_exact(w, lam), bound + _euclid(per_ff) + (1.0 + 4.0 * lam) * tol_w,
                             "Gl. (4_1) drops the lam^3 terms: |exact - two-term| <= 2.5 lam^3 / (1 - lam^2)^2.5",
@@ -103,7 +103,7 @@ def _parabola_bound(lam: float) -> float:
     (series remainder); by the mean value theorem the ordinates then differ by
     at most that times the largest slope, (1 + 4 lam c)/(1 + lam c) at c = +-1.
     """
-    return _steepest(lam) * lam ** 3 / (8.0 * (1.0 - lam * lam))
+    return _steepest(lam) * analytic.piston_path_book_bound(math.pi / 2, lam)
 
 
 #: What a plate of this kind is read to: a quarter of a millimetre on an F/f of 25 mm.

@@ -11,7 +11,7 @@ from ..crank import angle_tolerance, crank_angle, point_name
 from ..indicator_parts import back_pressure as model_back
 from ..indicator_parts import steam_pressure as model_steam
 from ..indicator_card import card_pair
-from ..analytic import inertia_exact, inertia_two_term, piston_fraction
+from ..analytic import inertia_exact, inertia_two_term, inertia_two_term_bound, piston_fraction
 from .analytic import card_force_zero, forward_force, j_abscissa, piston_areas, return_force
 from .build import mass_force_scale
 from .measure import abscissa, area_balance, mass_force, piston_force, return_mass_force, return_piston_force
@@ -51,7 +51,7 @@ def piston_force_checks(fig: Figure, model: Mapping[str, float] | None = None) -
         checks.append(Check(f"mass force {k} at the drawn angle (eq. 298)", mass_force(fig, k),
                             A * inertia_two_term(w_measured, lam), kg_tol, "Euclidean chain: float rounding only",
                             "kg"))
-        bound = 2.5 * lam ** 3 / (1.0 - lam * lam) ** 2.5
+        bound = inertia_two_term_bound(lam)
         checks.append(Check(f"mass force {k} vs exact kinematics (information)", mass_force(fig, k),
                             A * inertia_exact(w, lam), A * bound + kg_tol + A * (1.0 + 4.0 * lam) * tol_w,
                             "eq. (298) drops the (R/L)^3 terms: |exact - two-term| <= 2.5 lam^3/(1 - lam^2)^2.5", "kg"))
@@ -90,7 +90,7 @@ def piston_force_checks(fig: Figure, model: Mapping[str, float] | None = None) -
                             "French curve through the points: height error <= 2 (pi/n)^3 (1 + 4 lam) (G/g) omega^2 R "
                             "(estimate), times the stroke", "kg m"))
         checks.append(Check(f"{side} area, eq. (298) vs exact kinematics (information)", a[f"two_term_{side}"],
-                            a[f"exact_{side}"], A * 2.0 * g["crank_radius"] * 2.5 * lam ** 3 / (1 - lam * lam) ** 2.5,
+                            a[f"exact_{side}"], A * 2.0 * g["crank_radius"] * inertia_two_term_bound(lam),
                             "eq. (298) drops the (R/L)^3 terms", "kg m"))
     checks.append(Check("area balance, exact kinematics (acceleration - deceleration)",
                         a["exact_acceleration"] - a["exact_deceleration"], 0.0, 1e-9 * A,

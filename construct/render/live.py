@@ -23,7 +23,7 @@ standing on it), the broken axes' marks on every line that crosses a break
 (``breakMarks``, the script's twin of
 :func:`construct.render.plate.break_elements`), with the rod's length written
 at the break (L = 50 r: a broken rod is drawn short; where the drawing wrote it,
-:func:`construct.render.plate.rod_spots`), and letters that come
+:func:`construct.render.rod_length.rod_spots`), and letters that come
 to lie on one another: the later gives way (``declutter``) until there is
 room again.  Nothing waits for the slider to be let go (``change``), which
 only sets the letters' exact scale and glides the camera to the step's

@@ -53,13 +53,11 @@ import re
 from dataclasses import dataclass, field, fields, replace
 from typing import Any, Callable, Mapping, NamedTuple, Sequence
 
-from ..kernel.letters import number
 
 __all__ = ["Plate", "Panel", "Dimension", "AngleArc", "Stroke", "Lettering", "ScaleBar", "Sign", "Dot", "dms", "extent",
            "anchors", "shifted",
            "furniture_elements", "break_elements", "LOOKS_CSS", "plate_of", "Piece", "PIECES", "furniture_pieces",
-           "crossing_lines", "DASHES", "subscript_runs", "plain", "rod_written", "rod_spots", "beside_breaks", "writes_rod",
-           "ROD_SPOTS"]
+           "crossing_lines", "crossings", "DASHES", "subscript_runs", "plain"]
 
 XY = tuple[float, float]
 
@@ -341,7 +339,7 @@ def furniture_pieces(items: Sequence[Any], px: Callable[[float, float], XY], sca
     ['text', 'dot']
     """
     return furniture_elements(items, px, scale, PIECES, size=size)
-def _crossings(breaks: Sequence[tuple], lines: Sequence[tuple[float, float, float, float]]):
+def crossings(breaks: Sequence[tuple], lines: Sequence[tuple[float, float, float, float]]):
     """(axis, line, the break's middle on the line: x and y, drawing units) of every one of *lines* crossing a
     break of *breaks*, break by break."""
     for b in breaks:
@@ -362,7 +360,7 @@ def break_elements(breaks: Sequence[tuple], lines: Sequence[tuple[float, float, 
     letters' *size*.  The page of a live given draws the same marks as the given moves (its script's
     ``breakMarks``, held to these by tests/test_render_live_browser.py)."""
     out: list[Any] = []
-    for _, line, at in _crossings(breaks, lines):
+    for _, line, at in crossings(breaks, lines):
         # the classic break: a short gap along the line, a slanted tick at each side
         cx, cy = px(*at)
         ax, ay, bx, by = line
@@ -379,90 +377,6 @@ def break_elements(breaks: Sequence[tuple], lines: Sequence[tuple[float, float, 
             tx, ty = cx + su * gap * ux, cy + su * gap * uy
             out.append(_line(f, (tx - 0.35 * h * ux - h * nx, ty - 0.35 * h * uy - h * ny),
                              (tx + 0.35 * h * ux + h * nx, ty + 0.35 * h * uy + h * ny), "brkline"))
-    return out
-
-
-def rod_written(givens: Mapping[str, Any]) -> str | None:
-    """The rod's length as a figure broken across it writes it at the break, in the books' notation (the decimal
-    comma): from the rod ratio (L = 3,5 r), from a rod length beside a crank radius (Tafel I: L = 2 m), or from
-    givens L and r; None for a figure without a rod.
-
-    >>> rod_written({"rod_ratio": 3.5}), rod_written({"rod_length": 2.0, "crank_radius": 0.4})
-    ('L = 3,5 r', 'L = 2 m')
-    >>> rod_written({"r": 1.0, "L": 4.0}), rod_written({"r": 1.0})
-    ('L = 4 r', None)
-    """
-    def real(k: str) -> bool:
-        return isinstance(givens.get(k), (int, float)) and not isinstance(givens.get(k), bool)
-
-    if real("rod_ratio"):
-        return f"L = {number(givens['rod_ratio'], 'de')} r"
-    if real("rod_length") and real("crank_radius"):
-        return f"L = {number(givens['rod_length'], 'de')} m"
-    if real("L") and real("r") and givens["r"] > 0:
-        return f"L = {number(givens['L'] / givens['r'], 'de')} r"
-    return None
-
-
-def writes_rod(items: Sequence[Any]) -> bool:
-    """Does the furniture *items* write the rod's length itself (a dimension or a lettering "L = ...": the crank's
-    plate dimensions its rod)?  Then a break across the rod needs no word of its own.
-
-    >>> writes_rod([Dimension((0.0, 0.0), (1.0, 0.0), "L = 5 r")]), writes_rod([Lettering((0.0, 0.0), "L = ∞")])
-    (True, False)
-    """
-    return any(isinstance(it, (Dimension, Lettering)) and re.match(r"L\s*=\s*\d", it.text) for it in items)
-
-
-#: Where the rod's length is written about a break's middle on its line, in letter sizes, first choice first:
-#: (x, the baseline's y, anchor), for a break across x (above the line, then below; centred, then ending or
-#: starting beside the break) and across y (beside the line).
-ROD_SPOTS = {0: ((0.0, -0.9, "middle"), (-0.6, -0.9, "end"), (0.6, -0.9, "start"),
-                 (0.0, 1.6, "middle"), (-0.6, 1.6, "end"), (0.6, 1.6, "start")),
-             1: ((0.7, 0.35, "start"), (-0.7, 0.35, "end"))}
-
-
-def rod_spots(breaks: Sequence[tuple], lines: Sequence[tuple[float, float, float, float]],
-              px: Callable[[float, float], XY], *, size: float = 12.0,
-              clear: "Callable[[float, float, float, float, str], bool] | None" = None) -> list[tuple]:
-    """Where the rod's length (:func:`rod_written`) is written at each break of *breaks*: beside the first of
-    *lines* crossing it (a broken rod is drawn short, and the figure says how long it is), as (axis, the break's
-    middle on that line: x, y, the text's baseline point about it: dx, dy, its anchor), canvas px.  Where no line
-    crosses a break (a figure of points alone), *lines* may end with the line joining the points on either side
-    of it.  The first of :data:`ROD_SPOTS` *clear* says is clear of the figure is taken (the first without it);
-    the page of a live given writes the length there as the given moves (its script's ``breakMarks``).
-
-    >>> rod_spots([(1.0, 1.0, 5.0)], [(0.0, 0.0, 3.0, 0.0)], lambda x, y: (x, y), size=10.0)
-    [(0, 1.5, 0.0, 0.0, -9.0, 'middle')]
-    """
-    out: list[tuple] = []
-    done: set[int] = set()
-    for axis, _, at in _crossings(breaks, lines):
-        if axis in done:
-            continue
-        done.add(axis)
-        cx, cy = px(*at)
-        spots = [(dx * size, dy * size, anchor) for dx, dy, anchor in ROD_SPOTS[axis]]
-        got = next((p for p in spots if clear is None or clear(cx, cy, *p)), spots[0])
-        out.append((axis, cx, cy, *got))
-    return out
-
-
-def beside_breaks(breaks: Sequence[tuple], points: Sequence[XY]) -> list[tuple[float, float, float, float]]:
-    """Per break of *breaks*, the line joining the nearest of *points* on either side of it (drawing units), where
-    it has points on both sides.
-
-    >>> beside_breaks([(1.0, 1.0, 5.0)], [(0.0, 0.0), (-1.0, 2.0), (2.5, 0.0)])
-    [(0.0, 0.0, 2.5, 0.0)]
-    """
-    out = []
-    for b in breaks:
-        x0, w, axis = b[0], b[1], (b[3] if len(b) > 3 else 0)
-        before = [p for p in points if p[axis] <= x0]
-        after = [p for p in points if p[axis] >= x0 + w]
-        if before and after:
-            p, q = max(before, key=lambda p: p[axis]), min(after, key=lambda p: p[axis])
-            out.append((*p, *q))
     return out
 
 

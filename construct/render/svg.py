@@ -40,11 +40,12 @@ from .end_state import END_MARGIN_PX, EndView, end_furniture, end_sheet, lay_out
 from .insets import ring_round, step_insets
 from .magnifier import magnified_inset
 from .gaps import CLEARANCE, Gap, GapFactory, gapped_hatch, gapped_mark
-from .lettering import HALO_PX, LEADER_FROM, label_box, text_box, text_width
+from .lettering import HALO_PX, LEADER_FROM, text_box, text_width
 from .paths import hatch_path
 from .placing import Placing, PlacedLabel, place_outwards, text_gap
-from .plate import (Lettering, Stroke, beside_breaks, break_elements, crossing_lines, furniture_elements,
-                    furniture_pieces, plain, rod_spots, rod_written, subscript_runs, writes_rod)
+from .plate import (Lettering, Stroke, break_elements, crossing_lines, furniture_elements, furniture_pieces, plain,
+                    subscript_runs)
+from .rod_length import clear_spots, rod_at, rod_box, rod_group, writes_rod
 from .scene import Mark, MarkKind, Scene, extreme_points
 from .shapes import mark_geometry, mark_layer, point_radius, stroke_element
 from .step_groups import StepGroups
@@ -102,10 +103,11 @@ class Drawing(StepGroups):
         self.placing = pl = Placing(scene, style, self.vp, self.drawing_height, plate=plate, furniture=pieces)
         #: the rod's length written at the figure's breaks (None: no rod broken) and where (:func:`rod_spots`), by
         #: the line it is written over (None: between the points on either side); the camera keeps it whole
-        self.rod_at = self._rod_at()
+        self.rod_at = rod_at(scene, style, self.vp.px, plate=plate, layers=Drawing.LAYERS,
+                             clear=pl.clear_of_results)
         pl.words = [(cx, cy, *(b[0] - cx, b[1] - cy, b[2] - cx, b[3] - cy))
                     for spots in self.rod_at[1].values() for _, cx, cy, dx, dy, anchor in spots
-                    for b in [self._rod_box(self.rod_at[0], cx + dx, cy + dy, anchor)]]
+                    for b in [rod_box(self.rod_at[0], cx + dx, cy + dy, anchor, style)]]
         #: where the plate's lines are broken for its letters (:mod:`construct.render.gaps`): the ink of every
         #: letter shown and of the furniture's lettering, with a margin of white
         self.gaps: list[Gap] = self._gaps(pieces) if plate else []
@@ -142,38 +144,6 @@ class Drawing(StepGroups):
                                                             class_="view"))]))
                     last = v
         self.group_steps = {name: [k for k, _ in runs] for name, runs in self.groups.items()}
-
-    # -- the rod's length at a break --------------------------------------------------------------
-    def _rod_at(self) -> tuple[str | None, dict[str | None, list[tuple]]]:
-        """The rod's length as the figure writes it at its breaks (:func:`~construct.render.plate.rod_written`)
-        and where: over the first line crossing a break in the page's order (by layer, then by step), or between
-        the points on either side of it (None); a plate whose furniture dimensions the rod writes nothing more."""
-        sc = self.scene
-        rod = rod_written(sc.params.get("givens", {})) if sc.breaks else None
-        if rod is None or (self.plate and writes_rod(sc.furniture)):
-            return None, {}
-        beside = beside_breaks(sc.breaks, [m.geom for m in sc.marks if m.kind is MarkKind.POINT])
-        if self.plate:
-            return rod, {None: self._rod_spots(rod, crossing_lines(sc.marks, sc.furniture) + beside)}
-        layer = {name: i for i, name in enumerate(Drawing.LAYERS)}
-        for m in sorted((m for m in sc.marks if m.kind is MarkKind.SEGMENT), key=lambda m: layer[mark_layer(m)]):
-            got = self._rod_spots(rod, [m.geom])
-            if got:
-                return rod, {m.id: got}
-        return rod, {None: self._rod_spots(rod, beside)}
-
-    def _rod_box(self, rod: str | None, x: float, y: float, anchor: str) -> tuple[float, float, float, float]:
-        """The box (canvas px) of the rod's length written at baseline point (x, y) with *anchor*."""
-        st = self.style
-        w = text_width(rod or "", st.label_size, st.label_font, st.label_italic)
-        return label_box(x + {"start": w / 2, "end": -w / 2}.get(anchor, 0.0), y, rod or "", st.label_size,
-                         st.label_font, st.label_italic)
-
-    def _rod_spots(self, rod: str, lines: Sequence[tuple[float, float, float, float]]) -> list[tuple]:
-        """:func:`~construct.render.plate.rod_spots` on *lines*, clear of the points and result lines."""
-        return rod_spots(self.scene.breaks, lines, self.vp.px, size=self.style.label_size,
-                         clear=lambda cx, cy, dx, dy, a: self.placing.clear_of_results(
-                             self._rod_box(rod, cx + dx, cy + dy, a)))
 
     # -- camera -----------------------------------------------------------------------
     @property
@@ -423,20 +393,11 @@ class Drawing(StepGroups):
                                    GapFactory(f, self.gaps) if self.gaps else f, size=size)
         rod, at = self.rod_at
 
-        def rod_group(spot: tuple) -> Any:  # the rod's length at a break: a letter group, scaled as the letters are
-            axis, cx, cy, dx, dy, anchor = spot
-            g = f.g(class_="lbg rodlen", transform=f"translate({fmt(cx)} {fmt(cy)})",
-                    **{"data-rod": f"{axis} {fmt(dx)} {fmt(dy)} {anchor}"})
-            own = {} if anchor == "middle" else {"style": f"text-anchor:{anchor}"}
-            for cls in ("lb halo", "lb"):
-                g.add(f.text(rod, x=[fmt(dx)], y=[fmt(dy)], class_=cls, **own))
-            return g
-
         if self.plate:  # its lines are broken for its lettering: the lettering's halos go
             lines = crossing_lines(sc.marks, sc.furniture)
             elems += break_elements(sc.breaks, lines, self.vp.px, f, size=size)
             elems = [e for e in elems if e.attribs.get("class") != "lb halo"]
-            elems += [rod_group(p) for p in at.get(None, ())]
+            elems += [rod_group(f, rod, p) for p in at.get(None, ())]
         else:
             # a line's break marks are shown when and where the line is: in a step group of the line's step
             # (the player gives it the line's state), not in the end state where that leaves the line out
@@ -445,12 +406,12 @@ class Drawing(StepGroups):
         if sc.breaks and not self.plate:
             n = len(sc.steps)
             inputs = self.input_steps(k) if mark_steps and k is not None else frozenset()
-            elems += [rod_group(p) for p in at.get(None, ())]  # (between points: no line crosses the break)
+            elems += [rod_group(f, rod, p) for p in at.get(None, ())]  # (between points: no line crosses the break)
             for m in sc.marks:
                 if m.kind is MarkKind.SEGMENT and (k is None or m.step <= k):
                     marks = break_elements(sc.breaks, [m.geom], self.vp.px, f, size=size)
                     # the rod's length over the line it is written over: with its step, as its break marks are
-                    marks += [rod_group(p) for p in at.get(m.id, ())]
+                    marks += [rod_group(f, rod, p) for p in at.get(m.id, ())]
                     if marks and self.end is not None and not sc.in_end(m):
                         marks = [wrapped(f.g(class_="nf"), marks)]
                     if marks:
@@ -463,7 +424,8 @@ class Drawing(StepGroups):
             if marks and rod and not writes_rod(sc.end_furniture):
                 # (the end state's own: over its flattest line crossing the break, the axis before the rod)
                 flat = sorted(ends, key=lambda e: abs(e[3] - e[1]) / (abs(e[2] - e[0]) or 1e-300))
-                marks += [rod_group(p) for p in self._rod_spots(rod, flat)]
+                marks += [rod_group(f, rod, p) for p in clear_spots(sc.breaks, flat, rod, self.style, self.vp.px,
+                                                                  self.placing.clear_of_results)]
             if marks:
                 elems.append(wrapped(f.g(class_="fo"), marks))
         if self.end is not None and sc.end_furniture:

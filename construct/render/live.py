@@ -406,7 +406,7 @@ LIVE_SCRIPT = r"""
       if (!lab) {
         var lg = mk("g", "lbg rodlen", svg.querySelector("#furniture") || svg);
         lab = rodLabels[axis] = {g: lg, halo: mk("text", "lb halo", lg), text: mk("text", "lb", lg)};
-        // where the drawing wrote it at the book's value (render/plate.py rod_spots), or its first choice
+        // where the drawing wrote it at the book's value (render/rod_length.py rod_spots), or its first choice
         var spot = rodSpots[axis] || (axis ? [0.7 * SIZE, 0.35 * SIZE, "start"] : [0, -0.9 * SIZE, "middle"]);
         [lab.halo, lab.text].forEach(function(e){ e.setAttribute("x", spot[0]); e.setAttribute("y", spot[1]);
           if (spot[2] !== "middle") e.setAttribute("style", "text-anchor:" + spot[2]); });

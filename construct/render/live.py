@@ -176,6 +176,7 @@ LIVE_SCRIPT = r"""
   // ---- one given's data: every drawn number at every grid value ---------------------------------------------
   function Sweep(L){
     this.L = L; this.value = L.initial; this.slots = []; this.byId = {}; this.zoomAt = []; this.ringAt = [];
+    this.loose = []; this.inGroup = new Map(); this.slotsOf = new Map();
     this.breakAt = null; this.full = null; this.pathSlot = new Map();
     this.input = document.querySelector('input[name="' + L.given + '"]');
     this.out = document.querySelector('output[data-given="' + L.given + '"]');
@@ -248,7 +249,15 @@ LIVE_SCRIPT = r"""
       var sl = {el: el, attr: k[1], parts: parts, cs: cs, v: new Float64Array(nn).fill(NaN), text: null,
                 len: lengthOf(el, k[1], parts)};
       // the whole figure's box: written as data-full, and as the view by the player (or below without one)
-      if (el === svg) { self.full = sl; sl.el = null; } else self.slots.push(sl);
+      if (el === svg) { self.full = sl; sl.el = null; } else {
+        self.slots.push(sl);
+        // by the step group it is drawn in: a group out of the document (its step hides it) is brought up to
+        // date when it is shown (shown), not every frame
+        var grp = el.closest ? el.closest("g[data-step]") : null, bin = grp ? self.inGroup.get(grp) : self.loose;
+        if (!bin) self.inGroup.set(grp, bin = []);
+        bin.push(sl);
+        (self.slotsOf.get(el) || self.slotsOf.set(el, []).get(el)).push(sl);
+      }
       if (k[1] === "d") self.pathSlot.set(el, sl);
       if (k[1] === "cx" || k[1] === "cy") (self.byId[k[0]] = self.byId[k[0]] || {})[k[1]] = sl;
     });
@@ -326,7 +335,7 @@ LIVE_SCRIPT = r"""
       if (!own) { api.unowned++; return; }
       var list = g.transform && g.transform.baseVal, one = list && list.numberOfItems === 1 ? list.getItem(0) : null;
       followers.push({g: g, own: own, x: +m[1], y: +m[2], shift: one && one.type === 2 ? one : null, at: [NaN, NaN],
-                      tag: !g.querySelector('text[id$="-label"]'), step: +(stepOf(g) || 0)});
+                      tag: !g.querySelector('text[id$="-label"]'), step: +(stepOf(g) || 0), grp: g.closest("g[data-step]") || svg});
     });
     // letters and leader lines drawn where they stand (a plain figure's): with the point they name, or the nearest
     svg.querySelectorAll("text, line:not([id])").forEach(function(t){
@@ -335,7 +344,7 @@ LIVE_SCRIPT = r"""
       var own = t.id && /-label$/.test(t.id) && builtAt[t.id.slice(0, -6)] ? t.id.slice(0, -6) : nearest(x, y);
       var built = {};
       ["x", "y", "x1", "y1", "x2", "y2"].forEach(function(a){ var v = t.getAttribute(a); if (v !== null && v !== "" && !isNaN(+v)) built[a] = +v; });
-      if (own) followers.push({el: t, own: own, built: built, at: {}});
+      if (own) followers.push({el: t, own: own, built: built, at: {}, grp: t.closest("g[data-step]") || svg});
     });
   }
   function follow(fo){  // a letter group (or a plain letter) with its point
@@ -367,6 +376,7 @@ LIVE_SCRIPT = r"""
     var first = [null, null];
     for (var i = 0; i < lines.length; i++) {
       var ln = lines[i], x1, y1, x2, y2;
+      if (!ln.isConnected) continue;  // (a step not shown: its marks are set when it is shown)
       if (ln.x1) { x1 = ln.x1.baseVal.value; y1 = ln.y1.baseVal.value; x2 = ln.x2.baseVal.value; y2 = ln.y2.baseVal.value; }
       else { var q2 = drawnOf(ln).n; x1 = q2[0]; y1 = q2[1]; x2 = q2[2]; y2 = q2[3]; }
       var got = marksOf.get(ln) || [null, null];
@@ -429,8 +439,17 @@ LIVE_SCRIPT = r"""
     if (!got) { var d = e.getAttribute("d"); still.set(e, got = {n: (d.match(NUMS) || []).map(Number), curve: d.indexOf("C") >= 0}); }
     return got;
   }
+  var graphs = new Map();
   function graph(e){  // a graph as drawn: a line (null: evaluated exactly) or its vertices, x ascending
     if (e.tagName === "line") return {line: [e.x1.baseVal.value, e.y1.baseVal.value, e.x2.baseVal.value, e.y2.baseVal.value]};
+    // (a curve bounds more than one area: read once a redraw, again when its numbers change)
+    var sl = S.pathSlot.get(e), made = graphs.get(e);
+    if (made && made.sl === sl && made.text === (sl ? sl.text : null)) return made.g;
+    var got = vertices(e);
+    graphs.set(e, {sl: sl, text: sl ? sl.text : null, g: got});
+    return got;
+  }
+  function vertices(e){
     var g = drawnOf(e), n = g.n, xs = [], ys = [], i, k;
     if (!g.curve) { for (i = 0; i + 1 < n.length; i += 2) { xs.push(n[i]); ys.push(n[i + 1]); } }
     else {
@@ -457,6 +476,11 @@ LIVE_SCRIPT = r"""
       }
       xs.push(P[P.length - 1][0]); ys.push(P[P.length - 1][1]);
     }
+    // (drawn from left to right, or right to left, as a graph mostly is: no sort)
+    var up = true, down = true;
+    for (i = 1; i < xs.length && (up || down); i++) { if (xs[i] < xs[i - 1]) up = false; if (xs[i] >= xs[i - 1]) down = false; }
+    if (up) return {xs: xs, ys: ys};
+    if (down) return {xs: xs.reverse(), ys: ys.reverse()};
     var order = xs.map(function(_, j){ return j; }).sort(function(p, q){ return xs[p] - xs[q] || p - q; });
     return {xs: order.map(function(j){ return xs[j]; }), ys: order.map(function(j){ return ys[j]; })};
   }
@@ -469,10 +493,14 @@ LIVE_SCRIPT = r"""
     return xs[hi] === xs[lo] ? g.ys[lo] : g.ys[lo] + (x - xs[lo]) * (g.ys[hi] - g.ys[lo]) / (xs[hi] - xs[lo]);
   }
   function areaPieces(up, low, xa, xb){  // the region between two graphs from xa to xb, split where they cross
-    var lo = Math.min(xa, xb), hi = Math.max(xa, xb), xs = [lo, hi], i;
-    [up, low].forEach(function(g){ if (g.xs) g.xs.forEach(function(x){ if (x > lo && x < hi) xs.push(x); }); });
-    xs.sort(function(a, b){ return a - b; });
-    xs = xs.filter(function(x, j){ return j === 0 || x !== xs[j - 1]; });
+    var lo = Math.min(xa, xb), hi = Math.max(xa, xb), xs = [lo], i;
+    // the two graphs' vertices between the ends, in order, each x once (both graphs run x ascending: merged)
+    var a = up.xs || [], b = low.xs || [], ia = 0, ib = 0;
+    while (ia < a.length || ib < b.length) {
+      var x = ib >= b.length || (ia < a.length && a[ia] <= b[ib]) ? a[ia++] : b[ib++];
+      if (x > lo && x < hi && x !== xs[xs.length - 1]) xs.push(x);
+    }
+    if (hi !== lo) xs.push(hi);
     var fx = [], fu = [], fl = [];
     for (i = 0; i < xs.length; i++) {
       var u = ordinate(up, xs[i]), l = ordinate(low, xs[i]);
@@ -508,7 +536,9 @@ LIVE_SCRIPT = r"""
   function drawAreas(){
     for (var i = 0; i < areas.length; i++) {
       var A = areas[i], e = A.els, pieces;
-      if (!e.every(function(x){ return x; })) continue;
+      if (!e.every(function(x){ return x; }) || !A.pieces[0].isConnected) continue;
+      // the curves and points it is drawn from at the shown value, shown or not
+      for (var s = 0; s < e.length; s++) (S.slotsOf.get(e[s]) || []).forEach(write);
       var key = e.map(function(x){ return x.tagName === "line" ? x.getAttribute("x1") + x.getAttribute("y1") + x.getAttribute("x2") + x.getAttribute("y2") : x.tagName === "circle" ? x.getAttribute("cx") : x.getAttribute("d"); }).join("|");
       if (key === A.key) continue;
       A.key = key;
@@ -526,6 +556,16 @@ LIVE_SCRIPT = r"""
       }
     }
   }
+  function shown(g){  // group g is back in the document: what was not drawn while it was out, drawn now
+    if (!S) return;
+    S.inGroup.forEach(function(list, h){ if (g.contains(h)) list.forEach(write); });
+    for (var i = 0; i < followers.length; i++) if (g.contains(followers[i].grp)) follow(followers[i]);
+    breakMarks();
+    drawAreas();
+  }
+  // (the marks of every step at the shown value, those out of the document too: for a reader of the figure's
+  // numbers, the browser tests)
+  api.flush = function(){ if (S) S.inGroup.forEach(function(list, g){ if (!g.isConnected) shown(g); }); };
   // ---- the camera: the shown step's view and ring at the shown value --------------------------------------------
   function view(atOnce, drag){  // what the player's show(k) does with the view, without touching the steps (cheap)
     var d = player.data, k = +(svg.getAttribute("data-step") || d.n), st = k > 0 ? d.steps[k - 1] : null;
@@ -623,8 +663,9 @@ LIVE_SCRIPT = r"""
     } else if (atBook && insetHidden && player) { insetHidden = false; player.redraw(); }
     // the view first (the player reads the figure's size there: nothing written yet, no layout forced)
     if (player) view(!glide, dragging);
-    for (var i = 0; i < S.slots.length; i++) write(S.slots[i]);
-    for (i = 0; i < followers.length; i++) follow(followers[i]);
+    for (var i = 0; i < S.loose.length; i++) write(S.loose[i]);
+    S.inGroup.forEach(function(list, g){ if (g.isConnected) for (var j = 0; j < list.length; j++) write(list[j]); });
+    for (i = 0; i < followers.length; i++) if (followers[i].grp.isConnected) follow(followers[i]);
     drawAreas();
     breakMarks();
     // readings of the figure (an angle to the minute): true at the book's values only
@@ -835,6 +876,8 @@ LIVE_SCRIPT = r"""
       // let go (or a key's step): the letters at their exact scale, the camera gliding to the step's view
       input.addEventListener("change", function(){ requestAnimationFrame(function(){ go(false, true); }); });
     });
+    // a group the step shows again: its marks, letters, break marks and areas at the shown value, before it is drawn
+    if (player) player.shown = shown;
     // a new step: its view and ring at the shown value (the player has just set the built view); the letters
     // it shows make room for one another
     var seenStep = svg.getAttribute("data-step");

@@ -407,7 +407,11 @@ li a.later{color:#bbb}
   }
   function place(i) {  // group i in the document if it is shown, out of it (its place kept) if not
     var g = groups[i], shown = !hiding(g.getAttribute("class") || "");
-    if (shown && !g.isConnected) { places[i].replaceWith(g); }
+    if (shown && !g.isConnected) {
+      places[i].replaceWith(g);
+      // (a live given brings its marks to the shown value: it did not draw them while they were out)
+      if (api && api.shown) { api.shown(g); }
+    }
     else if (!shown && g.isConnected) { g.replaceWith(places[i]); }
   }
   function find(id) {
@@ -546,7 +550,7 @@ li a.later{color:#bbb}
     return t[0] >= v[0] - mx && t[1] >= v[1] - my && t[0] + t[2] <= v[0] + v[2] + mx
       && t[1] + t[3] <= v[1] + v[3] + my && Math.max(t[2] / v[2], t[3] / v[3]) >= 2 / 3;
   }
-  window.constructPlayer = {data: data, full: full, redraw: function () { show(k); },
+  var api = window.constructPlayer = {data: data, full: full, redraw: function () { show(k); }, shown: null,
     groups: function () { return groups.slice(); },  // the step groups, in the document or out of it (lean)
     move: function () { zoomLevel(target()); move(target()); },  // (the level a drag kept, made exact)
     find: find, lean: function () {

@@ -80,11 +80,13 @@ def _keys(page, given: str | None = None) -> tuple[list[list[str]], list[tuple]]
 
 
 def _page_numbers(page, keys):
-    return page.evaluate("""keys => keys.map(k => {
+    # (the marks of steps not shown, out of the document, are brought to the shown value when their step is shown:
+    # flush does that now, for those alone -- what the page draws it drew in the frame)
+    return page.evaluate("""keys => { window.constructLive.flush(); return keys.map(k => {
         if (k[0].charAt(0) === '#') return '';  // a step's view and ring: in the player's data, for the shown step
         // (the player keeps the groups a step hides out of the document: find looks there too)
         const el = k[0] ? window.constructPlayer.find(k[0]) : document.getElementById('figure');
-        return k[1] === 'viewBox' ? el.getAttribute('data-full') : el.getAttribute(k[1]); })""", keys)
+        return k[1] === 'viewBox' ? el.getAttribute('data-full') : el.getAttribute(k[1]); }); }""", keys)
 
 
 def _compare(page, c, params, v, keys, snapped) -> float:
@@ -240,6 +242,7 @@ _DRAG_READING = f"""async ([g, values, ids]) => {{ const out = [], points = {_PO
     for (const v of values) {{
       i.value = Math.log10(v); i.dispatchEvent(new Event('input'));
       await new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)));
+      window.constructLive.flush();  // (the steps not shown: as they are when shown; the shown ones untouched)
       out.push([points(ids), anchors()]);
     }}
     return out; }}"""
@@ -616,7 +619,7 @@ def test_every_element_of_the_figure_is_where_a_fresh_replay_draws_it(browser, l
     c, _, path = live_player
     page, errors = _open(browser, path)
     _at(page, at)
-    read = """() => { const out = [];
+    read = """() => { const out = []; window.constructLive.flush();
       window.constructPlayer.groups().forEach(s => s.querySelectorAll('*').forEach(e => {
         // (views: data, not drawn; a step's view box is out of the document while its step is not shown)
         if (e.closest('.brkg') || e.closest('.rodlen') || e.closest('#views') || e.classList.contains('view')) return;
@@ -773,7 +776,7 @@ def test_areas_are_drawn_from_the_curves_that_bound_them(browser, name, params, 
         pytest.skip("no committed gallery in this checkout")
     c = get(name)
     page, errors = _open(browser, path)
-    read = """() => window.constructPlayer.groups().flatMap(s => Array.from(s.querySelectorAll('path.area')))
+    read = """() => (window.constructLive.flush(), window.constructPlayer.groups()).flatMap(s => Array.from(s.querySelectorAll('path.area')))
         .filter(e => e.getAttribute('display') !== 'none').map(e => [e.id, e.getAttribute('d')])"""
     ring = lambda d: [tuple(p) for p in zip(*[iter(float(x) for x in NUMBER.findall(d))] * 2)]  # noqa: E731
     hatched = """() => window.constructPlayer.groups().flatMap(s => Array.from(s.querySelectorAll('path.hatch[id]')))
@@ -818,7 +821,7 @@ def test_a_curve_through_the_points_between_its_corners_takes_the_points_a_fresh
     assert page.locator('#live input[type="range"]').count() == 1
     ends = sorted(g["piece"][0] for g in json.loads(page.locator("#live-data").text_content())["givens"])[1:]
     assert len(ends) >= 3
-    read = """ids => ids.map(i => window.constructPlayer.find(i).getAttribute('d'))"""
+    read = """ids => (window.constructLive.flush(), ids).map(i => window.constructPlayer.find(i).getAttribute('d'))"""
     for v in [0.45, 0.9, 3.0, 7.0, 100.0] + [e * f for e in ends[-2:] for f in (0.999, 1.001)]:
         _drag_to(page, "rod_length", v)
         want = {i: a["d"] for i, a in _fresh_marks(c, {}, "rod_length", v).items()

@@ -471,6 +471,71 @@ def test_while_dragging_the_camera_and_the_zoom_level_stay_while_near_and_let_go
     page.close()
 
 
+# a slow drag (30 ``input`` events, each drawn in its frame) from *a* to *b*, read at every frame: the camera's view,
+# the step's view at the value (what letting go frames), whether the end state is shown, and the box of every mark
+# shown (figure units)
+_CAMERA_DRAG = """async ([g, a, b]) => { const i = document.querySelector('#live input[name="' + g + '"]'), out = [];
+    const svg = document.getElementById('figure'), p = window.constructPlayer;
+    for (let j = 1; j <= 30; j++) {
+      i.value = Math.log10(a) + (Math.log10(b) - Math.log10(a)) * j / 30; i.dispatchEvent(new Event('input'));
+      await new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)));
+      const marks = {};
+      svg.querySelectorAll('g[data-step] circle[id], g[data-step] line[id], g[data-step] path[id]').forEach(e => {
+        if (e.closest('#views') || e.closest('.lbg') || e.closest('[display=none]')) return;
+        const cs = getComputedStyle(e);
+        if (cs.display === 'none' || cs.visibility !== 'visible') return;
+        const r = e.getBBox(); marks[e.id] = [r.x, r.y, r.x + r.width, r.y + r.height]; });
+      out.push([Math.pow(10, +i.value), svg.getAttribute('viewBox').split(' ').map(Number), p.target().slice(),
+                !!p.data.end, marks]);
+    }
+    return out; }"""
+
+
+@pytest.mark.parametrize("name,params,given", [g for g in _gallery_players() if g[0] in
+                                               ("piston-force", "tangential-pressure", "two-cranks") and g[2] != "kappa"],
+                         ids=lambda x: x if isinstance(x, str) else "")
+def test_while_dragging_the_camera_keeps_what_the_step_frames_in_the_window(browser, name, params, given):
+    """A teacher drags the given slowly from the book's value to the slider's low end and on to its high end, at a
+    quarter, three fifths and the last of the steps: at every frame the camera's view holds the step's view at
+    that value (what letting go frames: nothing the step frames leaves the window), and at the last step, where
+    away from the book's value the page shows every mark of the construction instead of the plate (the end
+    state), every mark shown, the crank circle at a sensible size (a tenth of the view's width at least).
+    Let go, the camera frames the step's view."""
+    path = REPO / "gallery" / entry_slug(name, params) / "teaching" / "player.html"
+    if not path.is_file():
+        pytest.skip("no committed gallery in this checkout")
+    page, errors = _open(browser, path)
+    data = _live_data(page, given)
+    n = page.evaluate("window.constructPlayer.data.n")
+    has_end = page.evaluate("!!window.constructPlayer.data.end")  # (at the book's value: the plate's look)
+    inside = lambda box, v, tol: (box[0] >= v[0] - tol and box[1] >= v[1] - tol  # noqa: E731
+                                  and box[2] <= v[0] + v[2] + tol and box[3] <= v[1] + v[3] + tol)
+    for frac in (0.25, 0.6, 1.0):
+        k = max(1, round(frac * n))
+        page.evaluate("k => { const s = document.getElementById('slider'); s.value = k; s.oninput(); }", k)
+        page.wait_for_timeout(500)  # the camera's glide to the step's view
+        whole = 0
+        for a, b in ((data["initial"], data["low"]), (data["low"], data["high"])):
+            for v, view, step, end, marks in page.evaluate(_CAMERA_DRAG, [given, a, b]):
+                box = [step[0], step[1], step[0] + step[2], step[1] + step[3]]
+                assert inside(box, view, 0.01), f"{name} step {k}, {given} = {v:.4g}: the step's view {step} leaves {view}"
+                if k < n or not has_end or end:
+                    continue
+                whole += 1
+                out = [i for i, m in marks.items() if not inside(m, view, 1.0)]
+                assert not out, f"{name} step {k}, {given} = {v:.4g}: {out[:5]} outside the view {view}"
+                crank = [m for i, m in marks.items() if i.endswith("-crank")]
+                assert not crank or (crank[0][2] - crank[0][0]) >= view[2] / 10, (name, k, v, crank, view)
+        assert whole or k < n or not has_end
+        page.evaluate("""() => new Promise(r => { document.querySelector('#live input[type=range]')
+            .dispatchEvent(new Event('change')); setTimeout(r, 700); })""")
+        view, step = page.evaluate("""() => [document.getElementById('figure').getAttribute('viewBox').split(' ')
+            .map(Number), window.constructPlayer.target()]""")
+        assert view == pytest.approx(step, abs=0.01), (name, k)
+    assert not errors, errors
+    page.close()
+
+
 def test_a_drag_keeps_the_zoom_level_near_its_range_and_letting_go_makes_it_exact(browser):
     """The committed gallery's inertia curve at its last step, dragged in legs across L/r = 4 ... 1.15 ... 9 (its
     view magnifies more as L/r falls towards 1, where the curve's points crowd the crank circle's ends): a drag

@@ -650,6 +650,7 @@ LIVE_SCRIPT = r"""
     var atBook = Math.abs(Math.log10(value) - Math.log10(S.L.initial)) < 1e-9;  // (the other givens are there)
     if (player && endAt !== undefined) {
       player.data.end = atBook ? endAt : 0;
+      player.data.whole = !atBook;  // (the camera frames the construction's marks whole there)
       if (endNote && endNote.hidden !== atBook) endNote.hidden = atBook;
     }
     for (var hi = 0; hi < hatches.length; hi++) {

@@ -444,7 +444,7 @@ li a.later{color:#bbb}
     text("cap-de", st ? "Schritt " + k + ": " + st.de : document.title);
     text("cap-en", st ? "Step " + k + ": " + st.en : "");
     // the camera: the step's view (the whole figure at the ends or without the magnifier), reached smoothly
-    var view = st && zoom.checked ? data.views[st.v] : full;
+    var view = target();
     zoomLevel(view, box);
     var inset = document.getElementById("inset"), ibox = document.getElementById("insetbox");
     if (inset) {  // a sliver's place magnified beside the view
@@ -539,16 +539,23 @@ li a.later{color:#bbb}
   // live givens (construct/render/live.py) redraw the figure and its views in place, then show step k again
   // the live player's hook (construct.render.live): redraw the step, move the camera to the step's view
   // (move: to the step's view, smoothly; jump: there at once, as a given's slider is dragged)
-  function target() { var st = k > 0 ? data.steps[k - 1] : null; return st && zoom.checked ? data.views[st.v] : full; }
-  // A drag keeps the shown view while the step's view lies inside it (a twentieth of its size to spare) and
-  // fills more than two thirds of it.  A camera that stays put shows the construction move, as a teacher
-  // dragging a given expects; and a new view is dear: its new screen scale lays every letter out again and
-  // repaints the whole figure (half of a drag's frame).  Letting go glides to the step's exact view.
-  var DRAG_ROOM = 0.04;
+  // the step's view: the whole figure at the ends and without the magnifier, and at the last step while a live
+  // given holds back the end state (data.whole: the step then shows every mark of the construction, not the
+  // plate its view was made for)
+  function target() {
+    var st = k > 0 ? data.steps[k - 1] : null;
+    return st && zoom.checked && !(k === n && data.whole) ? data.views[st.v] : full;
+  }
+  // A drag keeps the shown view while the step's view lies inside it and fills more than two thirds of it; when
+  // the step's view leaves it (or shrinks away in it) the camera takes the step's view with a twentieth of its
+  // size of room on each side, once, and holds that.  So what the step frames never leaves the window, and a
+  // camera that stays put shows the construction move, as a teacher dragging a given expects; and a new view is
+  // dear: its new screen scale lays every letter out again and repaints the whole figure (half of a drag's
+  // frame).  Letting go glides to the step's exact view.
+  var DRAG_ROOM = 0.05;
   function holds(v, t) {  // does view *v* hold view *t* while a given is dragged?
-    var mx = v[2] / 20, my = v[3] / 20;
-    return t[0] >= v[0] - mx && t[1] >= v[1] - my && t[0] + t[2] <= v[0] + v[2] + mx
-      && t[1] + t[3] <= v[1] + v[3] + my && Math.max(t[2] / v[2], t[3] / v[3]) >= 2 / 3;
+    return t[0] >= v[0] && t[1] >= v[1] && t[0] + t[2] <= v[0] + v[2] && t[1] + t[3] <= v[1] + v[3]
+      && Math.max(t[2] / v[2], t[3] / v[3]) >= 2 / 3;
   }
   var api = window.constructPlayer = {data: data, full: full, redraw: function () { show(k); }, shown: null,
     groups: function () { return groups.slice(); },  // the step groups, in the document or out of it (lean)
@@ -558,13 +565,14 @@ li a.later{color:#bbb}
       lean = true;
       groups.forEach(function (g, i) { places[i] = document.createComment("step " + g.getAttribute("data-step")); place(i); });
     },
+    target: target,
     jump: function (drag) {  // *drag*: as a given's drag draws it (the view, the letters' scale and level kept near)
       if (anim) { cancelAnimationFrame(anim); anim = null; }
       // the figure's box read once, before the level's class is set (a read after it would restyle the figure twice)
       var r = boxOf(), to = target();
       if (!drag) { now = to.slice(); }
-      // a new view while dragging: the step's view with a little room about it (it can grow by a fifth before
-      // the next), not the step's view exactly (which it would leave at once)
+      // a new view while dragging: the step's view with a little room about it (it can move or grow by a twentieth
+      // before the next), not the step's view exactly (which it would leave at once)
       else if (!holds(now, to)) { now = [to[0] - to[2] * DRAG_ROOM, to[1] - to[3] * DRAG_ROOM, to[2] * (1 + 2 * DRAG_ROOM), to[3] * (1 + 2 * DRAG_ROOM)]; }
       zoomLevel(now, r, !!drag); put(now, r, !!drag); }};
 })();

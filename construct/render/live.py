@@ -15,8 +15,10 @@ most of it is the page's script in one string, one file for the browser; its Pyt
 
 **Every mark, every moment.**  Each ``input`` event of a slider redraws, in
 the next animation frame, everything the page draws: every mark of every
-step (those of steps not shown sit outside the document, the player's
-``lean``, where a new attribute costs nothing), the view box and each step's
+step shown, in the window or not (those of steps not shown sit outside the
+document, the player's ``lean``, and are brought to the shown value when
+their step shows them again: the player's ``shown``; ``constructLive.flush()``
+does it at once, for a reader of their numbers), the view box and each step's
 view, the ring round the current mark, the letters and name tags with the
 points they name (their placed offset kept; a tag names its point by
 standing on it), the broken axes' marks on every line that crosses a break
@@ -40,11 +42,12 @@ name)``: the given *name*), ``ready`` is a promise for the inflated data,
 
 A drag is drawn inside one animation frame (``construct bench --live``):
 numbers are set as SVG lengths, not parsed text, and written only when they
-change; the camera keeps its view while the step's view stays near it, and
+change; the camera keeps its view while the step's view stays inside it, and
 the letters their scale and zoom level (the player's ``holds`` and
 ``DRAG_LARGER``; exact, the camera gliding, on let-go); the groups the step
-hides are out of the document (the player's ``lean``); the checks' cells
-change in place.
+hides are out of the document (the player's ``lean``) and not written while
+they are; the curves an area is drawn from are read once a redraw; the
+checks' cells change in place.
 
 >>> page = "<html><body><div id=stage></div>\\n<aside>\\n</aside>\\n</body></html>"
 >>> out = with_live(page, {"given": "rod_ratio", "symbol": "L/r", "low": 1.05, "high": 1000.0,

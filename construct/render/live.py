@@ -370,7 +370,7 @@ LIVE_SCRIPT = r"""
   var SIZE = LIST[0].label_px || 12, NS = "http://www.w3.org/2000/svg", marksOf = new Map(), rodLabels = [], rodSpots = [];
   var TWO = /^M(-?[0-9.]+) (-?[0-9.]+)L(-?[0-9.]+) (-?[0-9.]+)$/;
   function mk(tag, cls, parent){ var e = document.createElementNS(NS, tag); e.setAttribute("class", cls); parent.appendChild(e); return e; }
-  function breakMarks(){
+  function breakMarks(every){  // (every: the lines of steps not shown too)
     var bands = [];
     for (var axis = 0; axis < 2; axis++) {
       var c = S.breakAt ? S.breakAt[axis] : undefined, w = c === undefined ? 0 : num(c + 1);
@@ -379,7 +379,7 @@ LIVE_SCRIPT = r"""
     var first = [null, null];
     for (var i = 0; i < lines.length; i++) {
       var ln = lines[i], x1, y1, x2, y2;
-      if (!ln.isConnected) continue;  // (a step not shown: its marks are set when it is shown)
+      if (!every && !ln.isConnected) continue;  // (a step not shown: its marks are set when it is shown)
       if (ln.x1) { x1 = ln.x1.baseVal.value; y1 = ln.y1.baseVal.value; x2 = ln.x2.baseVal.value; y2 = ln.y2.baseVal.value; }
       else { var q2 = drawnOf(ln).n; x1 = q2[0]; y1 = q2[1]; x2 = q2[2]; y2 = q2[3]; }
       var got = marksOf.get(ln) || [null, null];
@@ -536,10 +536,10 @@ LIVE_SCRIPT = r"""
     }
     return out;
   }
-  function drawAreas(){
+  function drawAreas(every){  // (every: the areas of steps not shown too)
     for (var i = 0; i < areas.length; i++) {
       var A = areas[i], e = A.els, pieces;
-      if (!e.every(function(x){ return x; }) || !A.pieces[0].isConnected) continue;
+      if (!e.every(function(x){ return x; }) || !(every || A.pieces[0].isConnected)) continue;
       // the curves and points it is drawn from at the shown value, shown or not
       for (var s = 0; s < e.length; s++) (S.slotsOf.get(e[s]) || []).forEach(write);
       var key = e.map(function(x){ return x.tagName === "line" ? x.getAttribute("x1") + x.getAttribute("y1") + x.getAttribute("x2") + x.getAttribute("y2") : x.tagName === "circle" ? x.getAttribute("cx") : x.getAttribute("d"); }).join("|");
@@ -559,16 +559,37 @@ LIVE_SCRIPT = r"""
       }
     }
   }
-  function shown(g){  // group g is back in the document: what was not drawn while it was out, drawn now
-    if (!S) return;
-    S.inGroup.forEach(function(list, h){ if (g.contains(h)) list.forEach(write); });
-    for (var i = 0; i < followers.length; i++) if (g.contains(followers[i].grp)) follow(followers[i]);
-    breakMarks();
-    drawAreas();
+  var followersIn = new Map(), settling = false;  // (the letters by their step group, gathered at the start)
+  function bring(g){  // step group g's marks and letters at the shown value (step groups do not nest)
+    (S.inGroup.get(g) || []).forEach(write);
+    (followersIn.get(g) || []).forEach(follow);
   }
-  // (the marks of every step at the shown value, those out of the document too: for a reader of the figure's
-  // numbers, the browser tests)
-  api.flush = function(){ if (S) S.inGroup.forEach(function(list, g){ if (!g.isConnected) shown(g); }); };
+  function shown(g){  // step group g is back in the document: what was not drawn while it was out, drawn now
+    if (!S) return;
+    bring(g);
+    // the break marks and areas once the player has put back every group the step shows (before it is drawn)
+    if (!settling) { settling = true; Promise.resolve().then(function(){ settling = false; breakMarks(); drawAreas(); }); }
+  }
+  // the marks of the steps not shown, out of the document, at the shown value at once (for a reader of the
+  // figure's numbers: the browser tests); what the page shows is untouched
+  api.flush = function(){
+    if (!S || !player) return;
+    player.groups().forEach(function(g){ if (!g.isConnected) bring(g); });
+    breakMarks(true);
+    drawAreas(true);
+  };
+  function shownBox(){  // the box of the marks and letters shown, a twenty-fifth of room about them (figure units)
+    var x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+    player.groups().forEach(function(g){
+      if (!g.isConnected) return;
+      var b = g.getBBox();
+      if (!b.width && !b.height) return;
+      x0 = Math.min(x0, b.x); y0 = Math.min(y0, b.y); x1 = Math.max(x1, b.x + b.width); y1 = Math.max(y1, b.y + b.height);
+    });
+    if (!(x1 > x0 && y1 > y0)) return player.full.slice();
+    var m = Math.max(x1 - x0, y1 - y0) / 25;
+    return [round2(x0 - m), round2(y0 - m), round2(x1 - x0 + 2 * m), round2(y1 - y0 + 2 * m)];
+  }
   // ---- the camera: the shown step's view and ring at the shown value --------------------------------------------
   function view(atOnce, drag){  // what the player's show(k) does with the view, without touching the steps (cheap)
     var d = player.data, k = +(svg.getAttribute("data-step") || d.n), st = k > 0 ? d.steps[k - 1] : null;
@@ -651,9 +672,11 @@ LIVE_SCRIPT = r"""
     // sweep does not carry) at the book's values alone; elsewhere the last step shows every mark of the
     // construction, each where a fresh replay draws it, and the page says so
     var atBook = Math.abs(Math.log10(value) - Math.log10(S.L.initial)) < 1e-9;  // (the other givens are there)
+    // (there the camera frames what the step shows, all of it, as drawn this frame: the player's target)
+    var whole = !!player && endAt !== undefined && !atBook && +(svg.getAttribute("data-step") || 0) === player.data.n;
     if (player && endAt !== undefined) {
       player.data.end = atBook ? endAt : 0;
-      player.data.whole = !atBook;  // (the camera frames the construction's marks whole there)
+      player.data.whole = null;
       if (endNote && endNote.hidden !== atBook) endNote.hidden = atBook;
     }
     for (var hi = 0; hi < hatches.length; hi++) {
@@ -666,12 +689,17 @@ LIVE_SCRIPT = r"""
       inset.style.display = "none"; document.getElementById("insetbox").setAttribute("visibility", "hidden"); insetHidden = true;
     } else if (atBook && insetHidden && player) { insetHidden = false; player.redraw(); }
     // the view first (the player reads the figure's size there: nothing written yet, no layout forced)
-    if (player) view(!glide, dragging);
+    if (player && !whole) view(!glide, dragging);
     for (var i = 0; i < S.loose.length; i++) write(S.loose[i]);
     S.inGroup.forEach(function(list, g){ if (g.isConnected) for (var j = 0; j < list.length; j++) write(list[j]); });
     for (i = 0; i < followers.length; i++) if (followers[i].grp.isConnected) follow(followers[i]);
     drawAreas();
     breakMarks();
+    if (whole) {  // (its box laid out: a layout forced; the end state's look gone first, as the view would take it)
+      if (svg.classList.contains("fin")) svg.classList.remove("fin");
+      player.data.whole = shownBox();
+      view(!glide, dragging);
+    }
     // readings of the figure (an angle to the minute): true at the book's values only
     for (var j = 0; j < readings.length; j++) { var shown = atBook ? "" : "none"; if (readings[j].style.display !== shown) readings[j].style.display = shown; }
     declutter();
@@ -829,6 +857,7 @@ LIVE_SCRIPT = r"""
     ws.forEach(function(W){ W.prepare(W.buf); W.buf = null; });
     S = pieceOf(LIST[0].given, LIST[0].initial);
     gather();
+    followers.forEach(function(fo){ (followersIn.get(fo.grp) || followersIn.set(fo.grp, []).get(fo.grp)).push(fo); });
     // the lines a break can cross (the marks', not the letters' leaders; a straight line from point to point,
     // the rod lettered L, too)
     svg.querySelectorAll("line[id], path[id]").forEach(function(l){

@@ -541,10 +541,10 @@ li a.later{color:#bbb}
   // (move: to the step's view, smoothly; jump: there at once, as a given's slider is dragged)
   // the step's view: the whole figure at the ends and without the magnifier; at the last step while a live
   // given holds back the end state, the box of what the step then shows (data.whole: every mark of the
-  // construction, not the plate its view was made for)
+  // construction, not the plate its view was made for; the whole figure without the magnifier, as ever)
   function target() {
     var st = k > 0 ? data.steps[k - 1] : null;
-    if (k === n && data.whole) { return data.whole; }
+    if (k === n && data.whole && zoom.checked) { return data.whole; }
     return st && zoom.checked ? data.views[st.v] : full;
   }
   // A drag keeps the shown view while the step's view lies inside it and fills more than two thirds of it; when

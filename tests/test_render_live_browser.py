@@ -473,21 +473,17 @@ def test_while_dragging_the_camera_and_the_zoom_level_stay_while_near_and_let_go
 
 
 # a slow drag (30 ``input`` events, each drawn in its frame) from *a* to *b*, read at every frame: the camera's view,
-# the step's view at the value (what letting go frames), whether the end state is shown, the box of every mark
-# shown (figure units) and the screen pixels a figure unit
+# the step's view at the value (what letting go frames) and the crank circle's width on the screen (px; null where
+# none is shown)
 _CAMERA_DRAG = """async ([g, a, b]) => { const i = document.querySelector('#live input[name="' + g + '"]'), out = [];
     const svg = document.getElementById('figure'), p = window.constructPlayer;
     for (let j = 1; j <= 30; j++) {
       i.value = Math.log10(a) + (Math.log10(b) - Math.log10(a)) * j / 30; i.dispatchEvent(new Event('input'));
       await new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)));
-      const marks = {};
-      svg.querySelectorAll('g[data-step] circle[id], g[data-step] line[id], g[data-step] path[id]').forEach(e => {
-        if (e.closest('#views') || e.closest('.lbg') || e.closest('[display=none]')) return;
-        const cs = getComputedStyle(e);
-        if (cs.display === 'none' || cs.visibility !== 'visible') return;
-        const r = e.getBBox(); marks[e.id] = [r.x, r.y, r.x + r.width, r.y + r.height]; });
+      const crank = Array.from(svg.querySelectorAll('g[data-step] circle[id$="-crank"]'))
+        .filter(e => e.isConnected && getComputedStyle(e).display !== 'none')[0];
       out.push([Math.pow(10, +i.value), svg.getAttribute('viewBox').split(' ').map(Number), p.target().slice(),
-                !!p.data.end, marks, svg.getScreenCTM().a]);
+                crank ? crank.getBoundingClientRect().width : null]);
     }
     return out; }"""
 
@@ -498,37 +494,26 @@ _CAMERA_DRAG = """async ([g, a, b]) => { const i = document.querySelector('#live
 def test_while_dragging_the_camera_keeps_what_the_step_frames_in_the_window(browser, name, params, given):
     """A teacher drags the given slowly from the book's value to the slider's low end and on to its high end, at a
     quarter, three fifths and the last of the steps: at every frame the camera's view holds the step's view at
-    that value (what letting go frames: nothing the step frames leaves the window), and at the last step, where
-    away from the book's value the page shows every mark of the construction instead of the plate (the end
-    state), every mark shown, the crank circle at a sensible size (50 px across at least in a 1400 × 1000 px window:
-    Tafel I's whole construction is tall, its force ordinates and the far point S below the crank: 58 px at L = 4 m).
-    Let go, the camera frames the step's view."""
+    that value (what letting go frames: nothing the step frames leaves the window), and at the last step (the
+    end state, the plate's figure) the crank circle keeps a sensible size (50 px across at least in a
+    1400 × 1000 px window).  Let go, the camera frames the step's view."""
     path = REPO / "gallery" / entry_slug(name, params) / "teaching" / "player.html"
     if not path.is_file():
         pytest.skip("no committed gallery in this checkout")
     page, errors = _open(browser, path)
     data = _live_data(page, given)
     n = page.evaluate("window.constructPlayer.data.n")
-    has_end = page.evaluate("!!window.constructPlayer.data.end")  # (at the book's value: the plate's look)
     inside = lambda box, v, tol: (box[0] >= v[0] - tol and box[1] >= v[1] - tol  # noqa: E731
                                   and box[2] <= v[0] + v[2] + tol and box[3] <= v[1] + v[3] + tol)
     for frac in (0.25, 0.6, 1.0):
         k = max(1, round(frac * n))
         page.evaluate("k => { const s = document.getElementById('slider'); s.value = k; s.oninput(); }", k)
         page.wait_for_timeout(500)  # the camera's glide to the step's view
-        whole = 0
         for a, b in ((data["initial"], data["low"]), (data["low"], data["high"])):
-            for v, view, step, end, marks, px in page.evaluate(_CAMERA_DRAG, [given, a, b]):
+            for v, view, step, crank in page.evaluate(_CAMERA_DRAG, [given, a, b]):
                 box = [step[0], step[1], step[0] + step[2], step[1] + step[3]]
                 assert inside(box, view, 0.01), f"{name} step {k}, {given} = {v:.4g}: the step's view {step} leaves {view}"
-                if k < n or not has_end or end:
-                    continue
-                whole += 1
-                out = [i for i, m in marks.items() if not inside(m, view, 1.0)]
-                assert not out, f"{name} step {k}, {given} = {v:.4g}: {out[:5]} outside the view {view}"
-                crank = [m for i, m in marks.items() if i.endswith("-crank")]
-                assert not crank or (crank[0][2] - crank[0][0]) * px >= 50, (name, k, v, crank, view, px)
-        assert whole or k < n or not has_end
+                assert k < n or crank is None or crank >= 50, (name, k, v, crank)
         page.evaluate("""() => new Promise(r => { document.querySelector('#live input[type=range]')
             .dispatchEvent(new Event('change')); setTimeout(r, 700); })""")
         view, step = page.evaluate("""() => [document.getElementById('figure').getAttribute('viewBox').split(' ')
@@ -625,13 +610,17 @@ def _numbers(e, attrs) -> list[float]:
     return [float(x) for a in attrs for x in NUMBER.findall(e.get(a) or "")]
 
 
-#: The end state (the last step: the figure as the plate draws it, its own marks drawn anew, class fo, without ids)
-#: is not in the sweep: away from the book's value the page shows the construction's marks at the last step instead
-#: (test_the_end_state_is_shown_at_the_books_value_and_every_mark_elsewhere), where a fresh replay draws the end
-#: state.  Known gap of issue 27, held here so that it shows when mended.
+#: The end state (the last step: the figure as the plate draws it) has its own marks (class fo), swept as the rest; the
+#: plate's furniture there (its dimensions, lettering and the lines it adds: the rod and the centre line of the crank)
+#: holds the built value's numbers and is shown at the book's value alone
+#: (test_the_end_state_follows_the_slider_and_its_furniture_stays_at_the_books_value), so the break marks on the
+#: furniture's lines are not drawn elsewhere.  Known gap of issue 27, held here so that it shows when mended.
 AT_STEPS = [pytest.param("before-end", id="before-end"),
             pytest.param("end", id="end", marks=pytest.mark.xfail(
-                strict=True, reason="the end state's own marks (class fo: no ids) are not in the sweep yet"))]
+                strict=True, reason="the plate's furniture in the end state (its rod and centre line) is not in the "
+                                    "sweep yet: shown at the book's value alone"))]
+#: Every element of the step groups, the end state's own marks among them, is swept.
+STEPS_SWEPT = ["before-end", "end"]
 
 
 def _at(page, at: str) -> None:
@@ -649,8 +638,10 @@ def test_a_broken_rod_stays_broken_with_its_length_written(browser, live_player,
     c, _, path = live_player
     page, errors = _open(browser, path)
     _at(page, at)
+    # (the marks of an end state's own line: drawn in the end state alone, as its line)
     marks = """() => Array.from(document.querySelectorAll('#figure .brkg:not([display=none]) > *'))
-        .filter(e => e.isConnected).map(e => [e.getAttribute('class'), e.tagName === 'path' ? e.getAttribute('d') :
+        .filter(e => e.isConnected && (!e.closest('.fo') || document.getElementById('figure').classList.contains('fin')))
+        .map(e => [e.getAttribute('class'), e.tagName === 'path' ? e.getAttribute('d') :
           [e.getAttribute('x1'), e.getAttribute('y1'), e.getAttribute('x2'), e.getAttribute('y2')].join(' ')])"""
     label = """() => { const g = document.querySelector('#figure .rodlen'); return g && g.getAttribute('display') !== 'none'
         ? g.querySelector('text:last-of-type').textContent : null; }"""
@@ -674,10 +665,7 @@ def test_a_broken_rod_stays_broken_with_its_length_written(browser, live_player,
     page.close()
 
 
-@pytest.mark.xfail(strict=True, reason="issue 27, open: the end state's own marks (class fo, in the step groups, shown "
-                                       "at the last step alone) have no ids and are not in the sweep: the end state's "
-                                       "axis stands 144 px from a fresh replay's at L/r 1.6")
-@pytest.mark.parametrize("at", AT_STEPS)
+@pytest.mark.parametrize("at", STEPS_SWEPT)
 def test_every_element_of_the_figure_is_where_a_fresh_replay_draws_it(browser, live_player, at):
     """The general form of 'every mark, every moment': while the slider is dragged, every element of the figure's
     steps -- marks, letters and name tags by their groups' anchors (the letters and leaders about an anchor are
@@ -729,24 +717,27 @@ def test_every_element_of_the_figure_is_where_a_fresh_replay_draws_it(browser, l
     page.close()
 
 
-def test_the_end_state_is_shown_at_the_books_value_and_every_mark_elsewhere(browser, live_player):
-    """The last step draws the figure as the book's plate draws it (class fin: its own marks, furniture and letters,
-    which the sweep does not carry: its rod dimension says L = 5 r).  Dragged away from the book's value, the last
-    step shows the construction's marks instead, each followed by the sweep, none of the end state's, and the page
-    says why; back at the book's value the end state returns."""
+def test_the_end_state_follows_the_slider_and_its_furniture_stays_at_the_books_value(browser, live_player):
+    """The last step draws the figure as the book's plate draws it (class fin) at every value: its own marks (class
+    fo, with ids, swept as the rest) are shown while the slider is dragged.  The plate's furniture there (its
+    dimensions and lettering: L = 5 r) holds the built value's numbers: away from the book's value it is not shown,
+    and the page says so; back at the book's value it returns."""
     _, _, path = live_player
     page, errors = _open(browser, path)
     page.keyboard.press("End")
     fin = "() => document.getElementById('figure').classList.contains('fin')"
-    shown_fo = """() => Array.from(document.querySelectorAll('#figure .fo')).filter(e => e.isConnected
+    shown = """sel => Array.from(document.querySelectorAll(sel)).filter(e => e.isConnected
         && e.getClientRects().length > 0 && getComputedStyle(e).display !== 'none').length"""
+    own, furniture = "#figure [data-step] .fo[id]", "#furniture > g.fo.end *"
     note = "() => { const n = document.querySelector('#live .live-end'); return !!n && !n.hidden; }"
-    assert page.evaluate(fin) and page.evaluate(shown_fo) > 0 and not page.evaluate(note)
+    at_book = page.evaluate(shown, own)
+    assert page.evaluate(fin) and at_book > 0 and page.evaluate(shown, furniture) > 0 and not page.evaluate(note)
     for v in (1.6, 8.0):
         _drag_to(page, "rod_ratio", v)
-        assert not page.evaluate(fin) and page.evaluate(shown_fo) == 0 and page.evaluate(note), v
+        assert page.evaluate(fin) and page.evaluate(shown, own) == at_book, v
+        assert page.evaluate(shown, furniture) == 0 and page.evaluate(note), v
     _drag_to(page, "rod_ratio", 5.0)
-    assert page.evaluate(fin) and page.evaluate(shown_fo) > 0 and not page.evaluate(note)
+    assert page.evaluate(fin) and page.evaluate(shown, furniture) > 0 and not page.evaluate(note)
     assert not errors, errors
     page.close()
 

@@ -539,14 +539,8 @@ li a.later{color:#bbb}
   // live givens (construct/render/live.py) redraw the figure and its views in place, then show step k again
   // the live player's hook (construct.render.live): redraw the step, move the camera to the step's view
   // (move: to the step's view, smoothly; jump: there at once, as a given's slider is dragged)
-  // the step's view: the whole figure at the ends and without the magnifier; at the last step while a live
-  // given holds back the end state, the box of what the step then shows (data.whole: every mark of the
-  // construction, not the plate its view was made for; the whole figure without the magnifier, as ever)
-  function target() {
-    var st = k > 0 ? data.steps[k - 1] : null;
-    if (k === n && data.whole && zoom.checked) { return data.whole; }
-    return st && zoom.checked ? data.views[st.v] : full;
-  }
+  // the step's view (the whole figure at the ends and without the magnifier)
+  function target() { var st = k > 0 ? data.steps[k - 1] : null; return st && zoom.checked ? data.views[st.v] : full; }
   // A drag keeps the shown view while the step's view lies inside it and fills more than two thirds of it; when
   // the step's view leaves it (or shrinks away in it) the camera takes the step's view with a twentieth of its
   // size of room on each side, once, and holds that.  So what the step frames never leaves the window, and a

@@ -541,8 +541,8 @@ LIVE_SCRIPT = r"""
     for (var i = 0; i < areas.length; i++) {
       var A = areas[i], e = A.els, pieces;
       if (!e.every(function(x){ return x; }) || !(every || A.pieces[0].isConnected)) continue;
-      // the curves and points it is drawn from at the shown value, shown or not
-      for (var s = 0; s < e.length; s++) (S.slotsOf.get(e[s]) || []).forEach(write);
+      // the curves and points it is drawn from at the shown value, shown or not (a shown one is, this frame)
+      for (var s = 0; s < e.length; s++) if (!e[s].isConnected) (S.slotsOf.get(e[s]) || []).forEach(write);
       var key = e.map(function(x){ return x.tagName === "line" ? x.getAttribute("x1") + x.getAttribute("y1") + x.getAttribute("x2") + x.getAttribute("y2") : x.tagName === "circle" ? x.getAttribute("cx") : x.getAttribute("d"); }).join("|");
       if (key === A.key) continue;
       A.key = key;

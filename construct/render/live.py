@@ -616,6 +616,9 @@ LIVE_SCRIPT = r"""
     for (var fi = 0; fi < endFurniture.length; fi++) {
       var fs = atBook ? "" : "none"; if (endFurniture[fi].style.display !== fs) endFurniture[fi].style.display = fs;
     }
+    // (an end state that is mostly the plate's furniture, live/measure.py end_held: at the book's values alone, the
+    // construction's marks elsewhere)
+    if (player && endAt) player.data.end = atBook || !S.L.end_held ? endAt : 0;
     if (endNote && endNote.hidden !== atBook) endNote.hidden = atBook;
     for (var hi = 0; hi < hatches.length; hi++) {
       var hs = atBook ? "" : "none"; if (hatches[hi].style.display !== hs) hatches[hi].style.display = hs;
@@ -766,17 +769,20 @@ LIVE_SCRIPT = r"""
       return inflate(L.data);
     }).then(function(buf){ W.buf = buf; return W; });
   }
-  var endNote = null, insetHidden = false, hatches = [], endFurniture = [], endWritesRod = false;
+  var endNote = null, insetHidden = false, hatches = [], endFurniture = [], endWritesRod = false, endAt = 0;
   api.ready = Promise.all(LIST.map(load)).then(function(ws){
     player = window.constructPlayer;
+    endAt = player ? player.data.end : 0;
     endFurniture = Array.prototype.slice.call(svg.querySelectorAll("#furniture > g.fo"));
     svg.querySelectorAll("#furniture g.fo.end text").forEach(function(t){ if (/^L\s*=\s*[0-9]/.test(t.textContent)) endWritesRod = true; });
     if (player && player.data.end && endFurniture.length) {
       endNote = document.createElement("div");
       endNote.className = "live-end"; endNote.hidden = true; endNote.setAttribute("style", "color:#777;font-size:12px");
-      endNote.textContent = "Der letzte Schritt zeigt die Figur der Tafel bei jedem Wert; ihre Maße und Beschriftung " +
-        "nur beim Buchwert. / The last step shows the plate’s figure at every value; its dimensions and lettering at " +
-        "the book’s value only.";
+      endNote.textContent = LIST[0].end_held ?
+        "Der letzte Schritt zeigt das Bild der Tafel beim Buchwert; hier alle Linien der Konstruktion. / The last step " +
+        "shows the plate’s look at the book’s value; here every line of the construction." :
+        "Der letzte Schritt zeigt die Figur der Tafel bei jedem Wert; ihre Maße und Beschriftung nur beim Buchwert. / " +
+        "The last step shows the plate’s figure at every value; its dimensions and lettering at the book’s value only.";
       var held = document.querySelector("#live .live-held");
       if (held) held.parentNode.insertBefore(endNote, held.nextSibling);
     }

@@ -17,6 +17,7 @@ does not shrink its miss, instead of being refined down to :data:`MIN_CELL`.
 
 from __future__ import annotations
 
+import heapq
 from typing import Any
 
 import numpy as np
@@ -237,7 +238,8 @@ class Measure:
         # each layer's elements in the order of the marks, the layers in the page's order
         layers: dict[str, tuple[list, list]] = {name: ([], []) for name in Drawing.LAYERS}
         texts: dict[str, str] = {}
-        for m in scene.marks + scene.end_marks:
+        # (the end state's own marks among the rest by the step that made their object, as the drawing has them)
+        for m in heapq.merge(scene.marks, sorted(scene.end_marks, key=lambda m: m.step), key=lambda m: m.step):
             if m.label and not m.id.endswith("-end"):  # (an end state's letter has no id: it follows its point)
                 texts[f"{m.id}-label"] = m.label
             if m.kind is MarkKind.AREA:  # drawn by the page from the curves that bound it (areas_of)

@@ -191,6 +191,7 @@ class Measure:
                           np.column_stack([np.round((b[0] + b[2]) / 2, 2), np.round((b[1] + b[3]) / 2, 2)]))
         blocks.append(at_once.breaks_page())
         table = np.hstack(blocks)
+        fits = [tuple(row) for row in at_once.fit.tolist()]
         out = []
         for i in range(size):
             if not at_once.ok[i]:
@@ -201,7 +202,9 @@ class Measure:
             if self.readings:
                 taken = replay.take(i)
                 texts = {**self.texts, **{k: reading(label, taken) for k, label in self.readings.items()}}
-            out.append((keys, table[i].tolist(), tuple(float(v) for v in at_once.fit[i]), texts))
+            # (the row as an array: the sweep reads every value's numbers as one; a list of floats would be
+            # made and read back per value)
+            out.append((keys, table[i], fits[i], texts))
         return out
 
     def _carried_all(self, j: int, box: tuple | None, W: np.ndarray, H: np.ndarray) -> list[np.ndarray]:

@@ -285,6 +285,37 @@ def test_a_steady_given_is_one_piece_by_a_scan_of_fresh_builds():
     assert len(scan_pieces(c, fig, "rod_length", live_givens(c, fig)[0].domain, scan=8)) > 1
 
 
+@pytest.mark.parametrize("name", ["piston-force", "inertia-stroke-fractions", "effective-work"])
+def test_the_pieces_read_off_a_sweep_are_where_fresh_builds_change_their_steps(name):
+    """A construction that reads its build's choices off a sweep (Construction.form) finds the pieces of its
+    domain on arrays: fresh builds just inside either end of every piece take that piece's steps, and
+    neighbouring pieces' steps differ (Tafel I's eight pieces, the stroke fractions' six, Fig. 27's two) -- and
+    the fresh builds' own scan finds the same pieces (checked where it is quick: the stroke fractions)."""
+    from construct.constructions import names
+    from construct.kernel.instruments import unlettered
+    from construct.live.sweep import FORM_TOL, _form, _keywords, form_pieces, reach, scan_pieces
+
+    assert {n for n in names() if get(n).form is not None} >= {"piston-force", "inertia-stroke-fractions",
+                                                                "effective-work"}
+    c = get(name)
+    fig = c.figure(**c.book_params[0])
+    g = next(x for x in live_givens(c, fig) if x.name not in c.steady)
+    domain = reach(c, fig, g.name, g.domain, float(fig.replay.givens[g.name]))
+    found = form_pieces(c, fig, g.name, domain)
+    assert found is not None and len(found) > 1
+    kw = _keywords(c, fig)
+    with unlettered():
+        for p in found:
+            step = 10 ** (FORM_TOL / 4)  # a quarter of the bisection's last cell inside each end
+            for v in (p.low * step, p.high / step):
+                assert _form(c.build(**{**kw, g.name: v}).protocol) == _form(p.protocol), (name, v)
+    assert all(_form(a.protocol) != _form(b.protocol) for a, b in zip(found[:-1], found[1:]))
+    assert sum(p.protocol is fig.protocol for p in found) == 1
+    if name == "inertia-stroke-fractions":
+        assert [(p.low, p.high, _form(p.protocol)) for p in scan_pieces(c, fig, g.name, domain)] == \
+            [(p.low, p.high, _form(p.protocol)) for p in found]
+
+
 def test_an_unlettered_build_takes_the_steps_of_a_lettered_one():
     """What pieces asks an unlettered build for (its steps' ops, inputs and outputs; what it made) is a lettered
     build's; only the captions are not yet in the figure's letters."""

@@ -47,7 +47,7 @@ from ..render.styles import STYLES
 from ..render.wire import arc_flags, blend, radii
 from .measure import Measure
 
-__all__ = ["LiveGiven", "LiveSweep", "Piece", "live_givens", "live_sweep", "pieces", "scan_pieces", "reach",
+__all__ = ["LiveGiven", "LiveSweep", "Piece", "live_givens", "live_sweep", "pieces", "scan_pieces", "form_pieces", "reach",
            "check_picks", "REFINE_PX", "QUANTUM_PX", "MIN_CELL", "CHECK_VALUES"]
 
 
@@ -128,15 +128,7 @@ def reach(construction: Construction, figure: Figure, given: str, domain: Domain
     >>> reach(c, fig, "rod_ratio", ROD_RATIO, 5.0).low, reach(c, c.figure(parts=12), "rod_ratio", ROD_RATIO, 5.0).low
     (2.29, 1.05)
     """
-    givens, params = dict(figure.replay.givens), figure.protocol.params
-
-    def holds(v: float) -> bool:
-        try:
-            construction.validate({k: (float(x[0]) if isinstance(x, np.ndarray) else x)
-                                   for k, x in construction.given_sweep(givens, given, [v], params).items()})
-        except InvalidParameter:
-            return False
-        return True
+    holds = functools.partial(_holds, construction, dict(figure.replay.givens), figure.protocol.params, given)
 
     def edge(inside: float, outside: float, up: bool) -> float:
         a, b = math.log10(inside), math.log10(outside)
@@ -150,6 +142,16 @@ def reach(construction: Construction, figure: Figure, given: str, domain: Domain
     low = domain.low if holds(domain.low) else edge(initial, domain.low, False)
     high = domain.high if holds(domain.high) else edge(initial, domain.high, True)
     return domain if (low, high) == (domain.low, domain.high) else Domain(low, high, domain.why, domain.advice)
+
+
+def _holds(construction: Construction, givens: dict[str, Any], params: Any, given: str, v: float) -> bool:
+    """Whether the construction holds with *given* at *v*, the figure's other givens kept (its validator asked)."""
+    try:
+        construction.validate({k: (float(x[0]) if isinstance(x, np.ndarray) else x)
+                               for k, x in construction.given_sweep(givens, given, [v], params).items()})
+    except InvalidParameter:
+        return False
+    return True
 
 
 #: How many values of a given's domain (evenly in log10) a fresh build is asked at for the steps' form, and to what
@@ -173,15 +175,17 @@ def _form(protocol: Any) -> tuple:
     return tuple((s.op, tuple(s.inputs), tuple(s.outputs)) for s in protocol.steps)
 
 
-def pieces(construction: Construction, figure: Figure, given: str, domain: Domain) -> list[Piece]:
+def pieces(construction: Construction, figure: Figure, given: str, domain: Domain, scan: int = FORM_SCAN) -> list[Piece]:
     """*domain* in the parts where a fresh build of *figure* at another value of *given* takes the same steps from
     the same objects: one piece where the form never changes (a replay of the built protocol is then the fresh
     build everywhere); several where it does (Tafel I's piston-force pieces run through the points between their
     corners: which points those are depends on the rod).  Each piece's protocol is built inside it (the built
-    figure's own in its piece); the changes are found from FORM_SCAN fresh builds, then by bisection in log10.
-    The builds that only ask for the steps' form are not lettered (:func:`~construct.kernel.instruments.unlettered`:
-    a third of a build); a given the construction names in :attr:`~construct.constructions.Construction.steady` is one
-    piece without a build (tests/test_live.py scans them).
+    figure's own in its piece); the changes are found at *scan* values evenly in log10, then by bisection in
+    log10 to FORM_TOL.  Where the construction reads its choices off a sweep
+    (:attr:`~construct.constructions.Construction.form`), the steps' form at all the values of a round is one
+    replay of the built protocol over them (:func:`form_pieces`); elsewhere a fresh build at each value tells it
+    (:func:`scan_pieces`).  A given the construction names in :attr:`~construct.constructions.Construction.steady`
+    is one piece without either (tests/test_live.py holds both to the fresh builds).
 
     >>> from construct.constructions import get
     >>> c = get("crank"); fig = c.figure(parts=3)
@@ -192,18 +196,76 @@ def pieces(construction: Construction, figure: Figure, given: str, domain: Domai
     """
     if given in construction.steady:
         return [Piece(domain.low, domain.high, figure.protocol)]
-    return scan_pieces(construction, figure, given, domain)
+    if construction.form is not None:
+        found = form_pieces(construction, figure, given, domain, scan)
+        if found is not None:
+            return found
+    return scan_pieces(construction, figure, given, domain, scan)
+
+
+def _keywords(construction: Construction, figure: Figure) -> dict[str, Any]:
+    """What a fresh build of *figure* is given: its givens and parameters, the construction's defaults else."""
+    givens, params = figure.replay.givens, figure.protocol.params
+    return {k: givens[k] if k in givens else params[k] if isinstance(params.get(k), (int, float, str, bool))
+            else construction.defaults[k] for k in construction.defaults}
+
+
+def _value_at(domain: Domain):
+    """A value of the given from its log10 *u*, inside *domain* (how a scan and the pieces' ends read it)."""
+    return lambda u: float(min(max(10 ** u, domain.low), domain.high))
+
+
+def _changes(forms, us: list[float], tol: float) -> tuple[list[tuple[float, float]], dict[float, Any]]:
+    """Every change of form between neighbours of *us* (log10 of the given), each found by bisection down to a
+    cell of *tol*: the cells (a, b) across which it changes, in order, and the form found at every value asked.
+    *forms* tells the forms at a list of values at once (each round of the bisection asks its midpoints together)."""
+    known = dict(zip(us, forms(us)))
+    cuts: list[tuple[float, float]] = []
+    todo = [(a, b) for a, b in zip(us[:-1], us[1:]) if known[a] != known[b]]
+    while todo:
+        mids = [(a + b) / 2 for a, b in todo if b - a > tol and (a + b) / 2 not in known]
+        known.update(zip(mids, forms(mids)))
+        nxt = []
+        for a, b in todo:
+            if b - a <= tol:
+                cuts.append((a, b))
+                continue
+            m = (a + b) / 2
+            if known[m] != known[a]:
+                nxt.append((a, m))
+            if known[m] != known[b]:
+                nxt.append((m, b))
+        todo = nxt
+    return sorted(cuts), known
+
+
+def _pieces_from(construction: Construction, figure: Figure, given: str, domain: Domain, scan: int, forms,
+                 built: Any, holds) -> list[Piece]:
+    """The pieces of *domain* from the steps' forms (*forms*: at a list of log10 values at once; *built*: the
+    built figure's), each other piece's protocol from one lettered build inside it; the whole domain as one piece
+    where no change is found or a piece would begin where the construction does not hold."""
+    value = _value_at(domain)
+    lo, hi = math.log10(domain.low), math.log10(domain.high)
+    initial = math.log10(float(figure.replay.givens[given]))
+    us = sorted(set(np.linspace(lo, hi, scan).tolist()) | {initial})
+    cuts, form = _changes(forms, us, FORM_TOL)
+    if not cuts:
+        return [Piece(domain.low, domain.high, figure.protocol)]
+    ends = [lo] + [x for a, b in cuts for x in (a, b)] + [hi]
+    if not all(holds(a) for a in ends[0::2]):  # a build that fails inside the domain (reach found it holds)
+        return [Piece(domain.low, domain.high, figure.protocol)]
+    kw = _keywords(construction, figure)
+    return [Piece(domain.low if a == lo else 10 ** a, domain.high if b == hi else 10 ** b,
+                  figure.protocol if form[a] == built else construction.build(**{**kw, given: value(a)}).protocol)
+            for a, b in zip(ends[0::2], ends[1::2])]
 
 
 def scan_pieces(construction: Construction, figure: Figure, given: str, domain: Domain,
                 scan: int = FORM_SCAN) -> list[Piece]:
     """:func:`pieces` found by fresh builds at *scan* values, whatever the construction says of *given*."""
-    givens, params = dict(figure.replay.givens), figure.protocol.params
-    kw = {k: givens[k] if k in givens else params[k] if isinstance(params.get(k), (int, float, str, bool))
-          else construction.defaults[k] for k in construction.defaults}
-    built = _form(figure.protocol)
+    kw = _keywords(construction, figure)
+    value = _value_at(domain)
     made: dict[float, tuple | None] = {}  # log10 of a value -> the steps' form a fresh build takes there (None: none)
-    value = lambda u: float(min(max(10 ** u, domain.low), domain.high))  # noqa: E731
 
     def form(u: float) -> tuple | None:
         if u not in made:
@@ -214,35 +276,43 @@ def scan_pieces(construction: Construction, figure: Figure, given: str, domain: 
                 made[u] = None
         return made[u]
 
+    built = _form(figure.protocol)
+    if form(math.log10(float(figure.replay.givens[given]))) != built:
+        # the figure is not what its givens build (a protocol replayed by hand): as it is
+        return [Piece(domain.low, domain.high, figure.protocol)]
+    return _pieces_from(construction, figure, given, domain, scan, lambda us: [form(u) for u in us], built,
+                        lambda u: form(u) is not None)
+
+
+def form_pieces(construction: Construction, figure: Figure, given: str, domain: Domain,
+                scan: int = FORM_SCAN) -> list[Piece] | None:
+    """:func:`pieces` found on arrays: the steps' form at every value of a round of the bisection is read off one
+    replay of the built protocol over them (:attr:`~construct.constructions.Construction.form`: the build's
+    choices, made on arrays), not from a fresh build at each.  None where the construction cannot tell."""
+    protocol, givens = figure.protocol, dict(figure.replay.givens)
+    value = _value_at(domain)
+
+    def forms(us: list[float]) -> list[bytes]:
+        if not us:
+            return []
+        swept = construction.given_sweep(givens, given, np.asarray([value(u) for u in us]), protocol.params)
+        rows = np.asarray(read(protocol.replay(swept), protocol.params), dtype=np.int64)
+        return [row.tobytes() for row in np.ascontiguousarray(np.broadcast_to(rows, (len(us), rows.shape[-1])))]
+
+    read = construction.form
+    if read is None or read(figure.replay, protocol.params) is None:  # (its choices depend on its params only)
+        return None
     initial = math.log10(float(givens[given]))
-    if form(initial) != built:  # the figure is not what its givens build (a protocol replayed by hand): as it is
-        return [Piece(domain.low, domain.high, figure.protocol)]
-    lo, hi = math.log10(domain.low), math.log10(domain.high)
-    us = sorted(set(np.linspace(lo, hi, scan).tolist()) | {initial})
-    cuts: list[tuple[float, float]] = []
-
-    def split(a: float, b: float) -> None:  # every change of form between a and b
-        if b - a <= FORM_TOL:
-            cuts.append((a, b))
-            return
-        m = (a + b) / 2
-        if form(m) != form(a):
-            split(a, m)
-        if form(m) != form(b):
-            split(m, b)
-
-    for a, b in zip(us[:-1], us[1:]):
-        if form(a) != form(b):
-            split(a, b)
-    if not cuts:
-        return [Piece(domain.low, domain.high, figure.protocol)]
-    ends = [lo] + [x for a, b in cuts for x in (a, b)] + [hi]
-    if any(form(a) is None for a in ends[0::2]):  # a build that fails inside the domain (reach found it holds)
-        return [Piece(domain.low, domain.high, figure.protocol)]
-    # each other piece's protocol: one lettered build inside it
-    return [Piece(domain.low if a == lo else 10 ** a, domain.high if b == hi else 10 ** b,
-                  figure.protocol if form(a) == built else construction.build(**{**kw, given: value(a)}).protocol)
-            for a, b in zip(ends[0::2], ends[1::2])]
+    at = forms([initial])
+    with unlettered():  # the figure is what its givens build (not a protocol replayed by hand), as the scan asks
+        try:
+            fresh = construction.build(**{**_keywords(construction, figure), given: value(initial)}).protocol
+        except InvalidParameter:
+            fresh = None
+    if fresh is None or _form(fresh) != _form(protocol):
+        return [Piece(domain.low, domain.high, protocol)]
+    return _pieces_from(construction, figure, given, domain, scan, forms, at[0],
+                        lambda u: _holds(construction, givens, protocol.params, given, value(u)))
 
 
 @functools.lru_cache(maxsize=4)

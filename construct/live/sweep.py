@@ -456,25 +456,27 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     lo, hi = math.log10(domain.low), math.log10(domain.high)
     us = list(np.linspace(lo, hi, start))
     values = lambda u: np.clip(10.0 ** np.asarray(u), domain.low, domain.high)  # noqa: E731
-    frames, _ = _frames(construction, figure, given, values(us), measure, protocol)
     # each value's numbers as one array, made once (every cell it bounds reads them)
     as_arrays = lambda fs: [(f[0], np.asarray(f[1], dtype=float), *f[2:]) for f in fs]  # noqa: E731
-    data = dict(zip(us, as_arrays(frames)))
+    data: dict[float, tuple] = {}
     todo = list(zip(us[:-1], us[1:]))
+    first = us  # the starting values are drawn in the first round, with its midpoints (one sweep, not two)
     jumps: list[tuple[float, float]] = []
     snap: set[int] = set()  # keys drawn from the nearer grid value
     bound = 0.0
     # per cell, its culprits' errors in the cell it was split from and in that one's parent: a mark that
     # jumps misses by the same at every depth, a smooth one by a quarter at each halving
     before: dict[tuple[float, float], tuple[dict[int, float], dict[int, float]]] = {}
-    while todo:
+    while todo or first:
         mids = [(a + b) / 2 for a, b in todo]
         # and the midpoints of their halves, drawn ahead: a cell that must be split has its halves tested in the
         # same round (a round draws every mark of the figure once, over all its values: its cost is the marks',
         # not the values'); what no cell needed is dropped
         ahead = [q for a, b in todo for q in _ahead(a, b, AHEAD)]
-        drawn, _ = _frames(construction, figure, given, values(mids + ahead), measure, protocol)
-        got = dict(zip(mids + ahead, as_arrays(drawn)))
+        drawn, _ = _frames(construction, figure, given, values(first + mids + ahead), measure, protocol)
+        got = dict(zip(first + mids + ahead, as_arrays(drawn)))
+        data.update((u, got.pop(u)) for u in first)
+        first = []
         nxt = []
         queue = collections.deque(todo)
         while queue:

@@ -113,8 +113,9 @@ class Measure:
         """The scene, the marks' runs and the keys of *protocol* (drawn at the first value of *replay*)."""
         if id(protocol) not in self._forms:
             first = Figure(protocol, replay.take(0, whole=True), self.construction.check, self.construction)
-            keys = self(first)[0]
-            self._forms[id(protocol)] = (protocol, scene_for(self.construction, first), self._runs(keys), keys)
+            scene = scene_for(self.construction, first)
+            keys = self._measured(scene)[0]
+            self._forms[id(protocol)] = (protocol, scene, self._runs(keys), keys)
         return self._forms[id(protocol)][1:]
 
     def _boxes(self, scene, vp) -> list[tuple[float, float, float, float] | None]:
@@ -227,8 +228,11 @@ class Measure:
         return [np.where(whole, f, np.round(v, 2) + 0.0) for f, v in zip((zero, zero, W, H), view)]
 
     def __call__(self, figure: Figure) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:
+        return self._measured(scene_for(self.construction, figure))
+
+    def _measured(self, scene: Any) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:
+        """:meth:`__call__` of the figure whose scene is *scene*."""
         st = self.style
-        scene = scene_for(self.construction, figure)
         vp = Viewport.fit(scene.bbox, st, 0)
         full = (0.0, 0.0, round(vp.width, 2), round(vp.height, 2))
         # each layer's elements in the order of the marks, the layers in the page's order

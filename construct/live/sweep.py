@@ -315,12 +315,24 @@ def form_pieces(construction: Construction, figure: Figure, given: str, domain: 
                         lambda u: _holds(construction, givens, protocol.params, given, value(u)))
 
 
-@functools.lru_cache(maxsize=4)
-def _key_columns(keys: tuple[tuple[str, str, str], ...]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Which key each number of *keys* belongs to, which numbers are views, which are large-arc flags
-    (asked at every cell of the refinement, for the same keys)."""
+_KEY_COLUMNS: dict[int, tuple] = {}
+
+
+def _key_columns(keys: list[tuple[str, str, str]]) -> tuple[np.ndarray, ...]:
+    """Which key each number of *keys* belongs to, which numbers are views, which are large-arc flags, which are
+    radii, and where each key's numbers begin (the keys that have any, and their first numbers): asked at every
+    cell of the refinement, for the same list of keys (known by its identity: hashing thousands of keys at every
+    cell cost more than the cell)."""
+    got = _KEY_COLUMNS.get(id(keys))
+    if got is not None and got[0] is keys:
+        return got[1]
     owner = np.asarray([i for i, k in enumerate(keys) for _ in range(k[2].count("#"))], dtype=int)
-    return owner, _columns(keys, lambda k: k[0] == "#zoom"), arc_flags(keys), radii(keys)
+    starts = np.flatnonzero(np.r_[True, owner[1:] != owner[:-1]]) if owner.size else np.zeros(0, dtype=int)
+    made = (owner, _columns(keys, lambda k: k[0] == "#zoom"), arc_flags(keys), radii(keys), owner[starts], starts)
+    if len(_KEY_COLUMNS) >= 4:
+        _KEY_COLUMNS.clear()
+    _KEY_COLUMNS[id(keys)] = (keys, made)
+    return made
 
 
 def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
@@ -332,7 +344,7 @@ def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
     large-arc flags and snapped keys come from either end
     (the worse counts); a wrong flag moves the arc by the distance between the two centres its ends and
     radius allow, 2 sqrt(r^2 - (c/2)^2)."""
-    owner, views, flags, geometric = _key_columns(tuple(keys))
+    owner, views, flags, geometric, keyed, starts = _key_columns(keys)
     if owner.size == 0:
         return 0.0, {}
     q = lambda n: np.round(n / QUANTUM_PX) * QUANTUM_PX  # noqa: E731
@@ -341,18 +353,17 @@ def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
     nearest = np.isin(owner, list(snap)) if snap else np.zeros(owner.size, dtype=bool)
     col_err[nearest] = np.maximum(np.abs(na - exact), np.abs(nb - exact))[nearest]
     col_err[views] = 0.0  # views frame the figure: blended, not refined for
-    for c in np.nonzero(flags & ~nearest)[0]:
-        col_err[c] = 0.0
-        if na[c] != exact[c] or nb[c] != exact[c]:  # c is the flag: the arc's numbers are c-5 .. c+3
-            x0, y0, r, x1, y1 = exact[c - 5], exact[c - 4], exact[c - 3], exact[c + 2], exact[c + 3]
-            half = math.hypot(x1 - x0, y1 - y0) / 2
-            col_err[c] = 2 * math.sqrt(max(r * r - half * half, 0.0))
+    c = np.flatnonzero(flags & ~nearest)  # the flags: each arc's numbers are c-5 .. c+3
+    flipped = (na[c] != exact[c]) | (nb[c] != exact[c])
+    half = np.hypot(exact[c + 2] - exact[c - 5], exact[c + 3] - exact[c - 4]) / 2
+    r = exact[c - 3]
+    col_err[c] = np.where(flipped, 2 * np.sqrt(np.maximum(r * r - half * half, 0.0)), 0.0)
     key_err = np.zeros(len(keys))
-    np.maximum.at(key_err, owner, col_err)
+    key_err[keyed] = np.maximum.reduceat(col_err, starts)
     # what a culprit misses by in its coordinates (a large-arc flag that flips is not a jump of the arc: the
     # two arcs its ends allow meet as it flips, and refining converges there)
     coord_err = np.zeros(len(keys))
-    np.maximum.at(coord_err, owner, np.where(flags & ~nearest, 0.0, col_err))
+    coord_err[keyed] = np.maximum.reduceat(np.where(flags & ~nearest, 0.0, col_err), starts)
     bad = np.nonzero(key_err > REFINE_PX)[0].tolist()
     return float(col_err.max()), {k: float(coord_err[k]) for k in bad}
 

@@ -92,6 +92,9 @@ class Measure:
         # a protocol of another piece of the domain (live.sweep.pieces): its scene, runs and keys, made once (the
         # protocol kept with them: its id stays its own)
         self._forms = {id(built.protocol): (built.protocol, scene, self.runs, self.keys)}
+        #: per protocol (by its id, kept alive in _forms): the marks a sweep's drawing boxes, and the rows of each
+        #: view's and ring's marks among them (:meth:`frames`)
+        self._rows: dict[int, tuple[tuple[str, ...], dict[tuple[str, ...], np.ndarray]]] = {}
         # the letters whose text is read off the figure (an angle), by the id of their letter (a lettered line's
         # letter stands at a point of its own, "NAME.at")
         readings = {name: label for st in built.protocol.steps for name, label in st.labels if "{∠" in label}
@@ -174,12 +177,22 @@ class Measure:
         width, height = (np.round(v, 2) for v in at_once.size)
         px = at_once.page_px
 
+        # every mark's box (x0, x1, y0, y1: rows of marks x values), each view's and ring's marks as rows of them
+        # (found once for a protocol's marks: every round asks for the same boxes of the same marks)
+        marked = tuple(at_once.extremes)
+        ends = [np.vstack([e[k] for e in at_once.extremes.values()]) if marked else None for k in range(4)]
+        found = self._rows.get(id(protocol))
+        if found is None or found[0] != marked:
+            at = {i: r for r, i in enumerate(marked)}
+            found = self._rows[id(protocol)] = (marked, {ids: np.asarray([at[i] for i in ids if i in at], dtype=int)
+                                                         for ids in map(tuple, self.framed + [r[1] for r in self.rings])})
+        picks = found[1]
+
         def box_of(ids: list[str]) -> tuple | None:  # the box of marks on the page of every value (canvas px)
-            e = [at_once.extremes[i] for i in ids if i in at_once.extremes]
-            if not e:
+            r = picks[tuple(ids)]
+            if not r.size:
                 return None
-            (x0, y0), (x1, y1) = (px(np.min([b[0] for b in e], 0), np.max([b[3] for b in e], 0)),
-                                  px(np.max([b[1] for b in e], 0), np.min([b[2] for b in e], 0)))
+            (x0, y0), (x1, y1) = (px(ends[0][r].min(0), ends[3][r].max(0)), px(ends[1][r].max(0), ends[2][r].min(0)))
             return x0, y0, x1, y1
 
         carried = [self._carried_all(j, box_of(ids), width, height) for j, ids in enumerate(self.framed)]

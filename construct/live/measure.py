@@ -116,7 +116,8 @@ class Measure:
         """The scene, the marks' runs and the keys of *protocol* (drawn at the first value of *replay*)."""
         if id(protocol) not in self._forms:
             first = Figure(protocol, replay.take(0, whole=True), self.construction.check, self.construction)
-            scene = scene_for(self.construction, first)
+            # (with its end state where the player shows one: __call__'s scene)
+            scene = scene_for(self.construction, first, ending=self.style.camera)
             keys = self._measured(scene)[0]
             self._forms[id(protocol)] = (protocol, scene, self._runs(keys), keys)
         return self._forms[id(protocol)][1:]
@@ -241,7 +242,8 @@ class Measure:
         return [np.where(whole, f, np.round(v, 2) + 0.0) for f, v in zip((zero, zero, W, H), view)]
 
     def __call__(self, figure: Figure) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:
-        return self._measured(scene_for(self.construction, figure))
+        # (with its end state where the player shows one: its own marks, the plate's, are drawn as the rest)
+        return self._measured(scene_for(self.construction, figure, ending=self.style.camera))
 
     def _measured(self, scene: Any) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:
         """:meth:`__call__` of the figure whose scene is *scene*."""
@@ -251,8 +253,8 @@ class Measure:
         # each layer's elements in the order of the marks, the layers in the page's order
         layers: dict[str, tuple[list, list]] = {name: ([], []) for name in Drawing.LAYERS}
         texts: dict[str, str] = {}
-        for m in scene.marks:
-            if m.label:
+        for m in scene.marks + scene.end_marks:
+            if m.label and not m.id.endswith("-end"):  # (an end state's letter has no id: it follows its point)
                 texts[f"{m.id}-label"] = m.label
             if m.kind is MarkKind.AREA:  # drawn by the page from the curves that bound it (areas_of)
                 continue

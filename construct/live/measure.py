@@ -87,7 +87,7 @@ class Measure:
         self.template = scene
         # the marks' keys as this value's page has them: each mark's numbers are a run of them, the runs in the
         # page's order (a sweep draws each mark's numbers for every value at once, :meth:`frames`)
-        self.keys, _, _, texts = self(built)
+        self.keys, _, _, texts = self._measured(scene)  # (the drawing's scene is what __call__ would make)
         self.runs = self._runs(self.keys)
         # a protocol of another piece of the domain (live.sweep.pieces): its scene, runs and keys, made once (the
         # protocol kept with them: its id stays its own)

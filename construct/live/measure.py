@@ -185,8 +185,9 @@ class Measure:
         found = self._rows.get(id(protocol))
         if found is None or found[0] != marked:
             at = {i: r for r, i in enumerate(marked)}
+            boxed = map(tuple, self.framed + [ids for _, ids in self.rings])
             found = self._rows[id(protocol)] = (marked, {ids: np.asarray([at[i] for i in ids if i in at], dtype=int)
-                                                         for ids in map(tuple, self.framed + [r[1] for r in self.rings])})
+                                                         for ids in boxed})
         picks = found[1]
 
         def box_of(ids: list[str]) -> tuple | None:  # the box of marks on the page of every value (canvas px)

@@ -47,8 +47,8 @@ from ..render.styles import STYLES
 from ..render.wire import arc_flags, blend, radii
 from .measure import Measure
 
-__all__ = ["LiveGiven", "LiveSweep", "Piece", "live_givens", "live_sweep", "pieces", "scan_pieces", "form_pieces", "reach",
-           "check_picks", "REFINE_PX", "QUANTUM_PX", "MIN_CELL", "CHECK_VALUES"]
+__all__ = ["LiveGiven", "LiveSweep", "Piece", "live_givens", "live_sweep", "pieces", "scan_pieces", "form_pieces",
+           "reach", "check_picks", "REFINE_PX", "QUANTUM_PX", "MIN_CELL", "CHECK_VALUES"]
 
 
 @dataclass(frozen=True)
@@ -175,7 +175,8 @@ def _form(protocol: Any) -> tuple:
     return tuple((s.op, tuple(s.inputs), tuple(s.outputs)) for s in protocol.steps)
 
 
-def pieces(construction: Construction, figure: Figure, given: str, domain: Domain, scan: int = FORM_SCAN) -> list[Piece]:
+def pieces(construction: Construction, figure: Figure, given: str, domain: Domain,
+           scan: int = FORM_SCAN) -> list[Piece]:
     """*domain* in the parts where a fresh build of *figure* at another value of *given* takes the same steps from
     the same objects: one piece where the form never changes (a replay of the built protocol is then the fresh
     build everywhere); several where it does (Tafel I's piston-force pieces run through the points between their

@@ -58,7 +58,8 @@ from ..crank import crank_angle, point_name
 from ..phrases import BAUMANN_1902, Cite, HANDBOOK, card, division, metres, number, percent
 from .analytic import card_force_zero, j_abscissa, model_areas
 from .build import (GRAVITY, HP_DIAGRAM, PISTON_AREA_COVER, PISTON_AREA_CRANK, TAFEL_I, build_piston_force,
-                    card_crossing_chords, force_line_form, mass_force_scale, piston_area_mean, piston_area_sides, validate_piston_force)
+                    card_crossing_chords, force_line_form, mass_force_scale, piston_area_mean, piston_area_sides,
+                    validate_piston_force)
 from .checks import piston_force_checks
 from .measure import abscissa, area_balance, mass_force, piston_force, return_mass_force, return_piston_force
 from .plate import piston_force_plate

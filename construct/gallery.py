@@ -72,7 +72,7 @@ GALLERY_OUTPUTS = {"historical": (), "teaching": ("player",)}
 #: wherever the construction takes it (L/r; piston-force's L in metres beside R) and Baumann's kappa
 #: (tangential-pressure, effective-work).  The live data adds 0.02-0.8 MB a player (its grid bounded by the
 #: refinement's 0.4 px and 800 values, each coordinate at the grid values it needs, one sweep for each piece
-#: of the domain where the steps' form changes; live.sweep and live.wire), and a sweep of 0.2-15 s of CPU to
+#: of the domain where the steps' form changes; live.sweep and live.wire), and a sweep of 0.2-8.5 s of CPU to
 #: the build.  `construct replay NAME --live` gives any construction with such a given its sliders.
 LIVE_PLAYERS = ("crank", "crank-angle", "effective-work", "four-stroke", "inertia-curve", "inertia-stroke-fractions",
                 "piston-force", "tangential-pressure", "two-cranks")

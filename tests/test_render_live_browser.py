@@ -80,11 +80,12 @@ def _keys(page, given: str | None = None) -> tuple[list[list[str]], list[tuple]]
 
 
 def _page_numbers(page, keys):
-    return page.evaluate("""keys => keys.map(k => {
+    # (the keys in and the texts out as JSON strings: Playwright checks a structure value by value)
+    return json.loads(page.evaluate("""keys => JSON.stringify(JSON.parse(keys).map(k => {
         if (k[0].charAt(0) === '#') return '';  // a step's view and ring: in the player's data, for the shown step
         // (the player keeps the groups a step hides out of the document: find looks there too)
         const el = k[0] ? window.constructPlayer.find(k[0]) : document.getElementById('figure');
-        return k[1] === 'viewBox' ? el.getAttribute('data-full') : el.getAttribute(k[1]); })""", keys)
+        return k[1] === 'viewBox' ? el.getAttribute('data-full') : el.getAttribute(k[1]); }))""", json.dumps(keys)))
 
 
 def _compare(page, c, params, v, keys, snapped) -> float:

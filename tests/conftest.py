@@ -65,6 +65,29 @@ settings.register_profile("dev", max_examples=20, database=None)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE") or ("ci" if os.environ.get("CI") else "dev"))
 
 
+# -- the order: shuffled on request ---------------------------------------------------------------------------
+
+def pytest_addoption(parser):
+    parser.addoption("--shuffle", type=int, metavar="SEED", default=None,
+                     help="run the tests in an order shuffled by SEED (the suite holds in any order; with -n the "
+                          "workers need the one seed, so it is given, not drawn)")
+
+
+def pytest_report_header(config):
+    seed = config.getoption("--shuffle")
+    return None if seed is None else f"tests shuffled: --shuffle {seed}"
+
+
+def pytest_collection_modifyitems(config, items):
+    """``--shuffle SEED``: the collected tests in an order that only SEED decides (so that every xdist worker
+    collects the same list), to show that no test needs another to run before it."""
+    seed = config.getoption("--shuffle")
+    if seed is not None:
+        import random
+
+        random.Random(seed).shuffle(items)
+
+
 # -- no test leaves a trace in the process ------------------------------------------------------------------
 
 _SIGNALS = tuple(getattr(signal, n) for n in ("SIGINT", "SIGTERM", "SIGHUP") if hasattr(signal, n))

@@ -263,22 +263,38 @@ def test_a_carried_view_still_frames_its_marks():
                 assert holds(view, (min(xs), min(ys), max(xs), max(ys)), slack=1.0), (v, j)
 
 
-def test_a_steady_given_is_one_piece_by_a_scan_of_fresh_builds():
+def _steady() -> list[tuple[str, str]]:
+    from construct.constructions import names
+
+    return [(c.name, g) for c in map(get, names()) for g in c.steady]
+
+
+def test_the_crank_and_baumanns_kappa_are_steady():
+    assert set(_steady()) >= {("crank", "rod_ratio"), ("tangential-pressure", "kappa")}
+
+
+# (one test a construction and given: the scans take 10 s of CPU between them, which two workers share)
+@pytest.mark.parametrize("name, given", _steady())
+def test_a_steady_given_is_one_piece_by_a_scan_of_fresh_builds(name, given):
     """A given a construction names steady (its value never changes which steps it takes) is swept without
     looking for pieces: held here by the scan it is spared -- fresh builds across its domain at the book's
-    figures take the built figure's steps -- and the scan finds Tafel I's pieces, which the piston force does
-    not name steady."""
-    from construct.constructions import names
+    figures take the built figure's steps (test_the_scan_finds_tafel_is_pieces: the scan finds pieces where
+    there are)."""
     from construct.live.sweep import reach, scan_pieces
 
-    steady = [(c, g) for c in map(get, names()) for g in c.steady]
-    assert {(c.name, g) for c, g in steady} >= {("crank", "rod_ratio"), ("tangential-pressure", "kappa")}
-    for c, g in steady:
-        for params in c.book_params[:2] or ({},):
-            fig = c.figure(**params)
-            live = next(x for x in live_givens(c, fig) if x.name == g)
-            domain = reach(c, fig, g, live.domain, float(fig.replay.givens[g]))
-            assert [p.protocol for p in scan_pieces(c, fig, g, domain, scan=8)] == [fig.protocol], (c.name, params)
+    c = get(name)
+    for params in c.book_params[:2] or ({},):
+        fig = c.figure(**params)
+        live = next(x for x in live_givens(c, fig) if x.name == given)
+        domain = reach(c, fig, given, live.domain, float(fig.replay.givens[given]))
+        assert [p.protocol for p in scan_pieces(c, fig, given, domain, scan=8)] == [fig.protocol], params
+
+
+def test_the_scan_finds_tafel_is_pieces():
+    """The scan that steady givens are spared finds Tafel I's pieces, which the piston force does not name
+    steady."""
+    from construct.live.sweep import scan_pieces
+
     c = get("piston-force")
     assert "rod_length" not in c.steady
     fig = c.figure()

@@ -167,8 +167,9 @@ class _Grid:
     def __init__(self, cell: float):
         self.cell = cell
         self.cells: dict[tuple[int, int], list[tuple[float, float, float, float]]] = {}
-        #: a crowded cell's boxes as one array (asked at once), with how many boxes it held when made
-        self.arrays: dict[tuple[int, int], Any] = {}
+        #: a crowded cell's boxes as one array (asked at once) and the box round them all, with how many boxes the
+        #: cell held when made
+        self.arrays: dict[tuple[int, int], tuple[Any, tuple[float, float, float, float]]] = {}
         #: the box that last answered "taken": the next spot tried is near, and it likely takes that too
         self.last: tuple[float, float, float, float] = (math.inf, math.inf, -math.inf, -math.inf)
 
@@ -201,10 +202,14 @@ class _Grid:
             return True
         if len(got) > _CROWD:
             # hundreds of points in one cell (3600 piston positions on a stroke): asked at once
-            a = self.arrays.get(key)
-            if a is None or len(a) != len(got):
-                a = self.arrays[key] = np.array(got)
-            return bool(((x0 < a[:, 2]) & (a[:, 0] < x1) & (y0 < a[:, 3]) & (a[:, 1] < y1)).any())
+            got_a = self.arrays.get(key)
+            if got_a is None or len(got_a[0]) != len(got):
+                a = np.array(got)
+                got_a = self.arrays[key] = (a, (a[:, 0].min(), a[:, 1].min(), a[:, 2].max(), a[:, 3].max()))
+            a, o = got_a
+            # (a row of points along a stroke fills a strip of its cell: a box above or below it misses them all)
+            return x0 < o[2] and o[0] < x1 and y0 < o[3] and o[1] < y1 and \
+                bool(((x0 < a[:, 2]) & (a[:, 0] < x1) & (y0 < a[:, 3]) & (a[:, 1] < y1)).any())
         for k, o in enumerate(got):
             if x0 < o[2] and o[0] < x1 and y0 < o[3] and o[1] < y1:
                 # to the front of its cell: the next spot tried is near, and it likely takes that too

@@ -300,9 +300,16 @@ class Scene(StepInputs):
         """
         titles = self.params.get("group_titles") or {}
         out: dict[tuple[str, ...], str] = {}
+        read: dict[str, str] = {}  # a title heads thousands of paths (all 3601 rod arcs ›): read once
         for s in self.steps:
             if s.group not in out:
-                out[s.group] = displayed(" › ".join(self.readable(titles.get(g, g)) for g in s.group))
+                parts = []
+                for g in s.group:
+                    got = read.get(g)
+                    if got is None:
+                        got = read[g] = self.readable(titles.get(g, g))
+                    parts.append(got)
+                out[s.group] = displayed(" › ".join(parts))
         return out
 
 

@@ -423,6 +423,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 have = on.setdefault(name, [])
                 have.extend(p for n, p in shown_pts if lies_on(obj, p, tol) and p not in have)
     in_fan = fanned_lines(protocol.steps)
+    points_drawn: dict[str, Mark] = {}  # a point's mark whatever the margin: made once when drawn twice
 
     def draw(margin: float) -> tuple[list[Mark], dict[str, tuple[str, bool]]]:
         """The marks, each line and arc reaching *margin* past the points marked on it."""
@@ -435,6 +436,10 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 if obj is None or isinstance(obj, Length) or (shown is not None and name not in shown):
                     continue
                 mid = f"s{s.index:04d}-{_safe_id(name)}"
+                drawn = points_drawn.get(mid)
+                if drawn is not None:
+                    marks.append(drawn)
+                    continue
                 label = labels.get(name)
                 if label and "{∠" in label:
                     label = reading(label, objects)
@@ -445,7 +450,8 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
                               group=s.group, label=label, look=(looks or {}).get(name, ""))
                 if isinstance(obj, Point):
-                    marks.append(Mark(mid, kind=MarkKind.POINT, geom=(obj[0], obj[1]), **common))
+                    marks.append(drawn := Mark(mid, kind=MarkKind.POINT, geom=(obj[0], obj[1]), **common))
+                    points_drawn[mid] = drawn
                 elif isinstance(obj, Line):
                     marks.append(Mark(mid, kind=MarkKind.SEGMENT, geom=segment_extent(obj, on.get(name, []), margin), **common))
                 elif isinstance(obj, Circle):

@@ -68,6 +68,10 @@ def broken_axis(marks: list[Mark], furniture: tuple = (), keep_fraction: float =
     from .plate import anchors, shifted
     ivals = []
     for m in marks:
+        if m.kind is MarkKind.POINT:  # (most marks: a long figure's points)
+            c = m.geom[axis]
+            ivals.append((c, c))
+            continue
         if m.kind is MarkKind.SEGMENT or (m.kind is MarkKind.CURVE and m.straight and len(m.geom) == 2):
             continue  # the stroke line spans everything; a rod drawn to its crosshead crosses the break
         cs = [p[axis] for p in extreme_points(m)]

@@ -430,13 +430,17 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                 spot = (px + ox, py + oy, box, od)
         clear = None  # with soft lines: the first free spot near the point that no line crosses
         least = None  # else the near free spot the least of those lines would be broken for: (length, spot)
+        ring: dict[int, tuple[float, float]] = {}  # each direction's cosine and sine, for all distances
         for dist in (() if spot else _DISTANCES + tuple(distances)):
             for turn in (_TURNS if dist in _DISTANCES else _TURNS_FAR):
-                a = base + math.radians(turn)
+                cs = ring.get(turn)
+                if cs is None:
+                    a = base + math.radians(turn)
+                    cs = ring[turn] = (math.cos(a), math.sin(a))
                 # the letter's centre sits *dist* letter heights from the point (plus half its
                 # extra width sideways); its baseline a third of a letter lower
-                lx = px + math.cos(a) * (dist * size + max(0.0, w - 0.6 * size) / 2)
-                ly = py + dist * size * math.sin(a) + 0.35 * size
+                lx = px + cs[0] * (dist * size + max(0.0, w - 0.6 * size) / 2)
+                ly = py + dist * size * cs[1] + 0.35 * size
                 box = box_at(lx, ly)
                 if first is None:
                     first = (lx, ly, box, dist)

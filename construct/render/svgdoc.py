@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import copy
 import functools
+import re
 import xml.etree.ElementTree as ET
 from typing import Any
 
@@ -88,7 +89,8 @@ class Element:
 
     def __init__(self, elementname: str, **extra: Any):
         self.elementname = elementname
-        self.attribs = {k.rstrip("_").replace("_", "-"): v for k, v in extra.items()}
+        names = _ATTRIBUTE_NAMES
+        self.attribs = {names.get(k) or _attribute_name(k): v for k, v in extra.items()}
         self.elements: list[Any] = []
 
     def add(self, element: Any) -> Any:
@@ -111,6 +113,15 @@ class Element:
         for element in self.elements:
             xml.append(element.get_xml())
         return xml
+
+
+#: A keyword's attribute name (class_ -> class, data_step -> data-step), by keyword: a few recur thousands of times.
+_ATTRIBUTE_NAMES: dict[str, str] = {}
+
+
+def _attribute_name(keyword: str) -> str:
+    name = _ATTRIBUTE_NAMES[keyword] = keyword.rstrip("_").replace("_", "-")
+    return name
 
 
 def _set(**extra: Any) -> Any:
@@ -189,8 +200,13 @@ class Writer:
         if not isinstance(tag, str) or "{" in tag:
             raise TypeError(f"the SVG writer writes plain tags only, got {tag!r}")  # ElementTree's namespaces
         out.append("<" + tag)
-        for k, v in elem.items():
-            out.append(f' {k}="{_escape_attribute(v)}"')
+        attrib = elem.attrib
+        if attrib:
+            if _ATTRIBUTE_ESCAPED.search("".join(attrib.values())) is None:  # (nearly always: numbers, classes, ids)
+                out.append("".join([f' {k}="{v}"' for k, v in attrib.items()]))
+            else:
+                for k, v in attrib.items():
+                    out.append(f' {k}="{_escape_attribute(v)}"')
         text = elem.text
         if text or len(elem):
             out.append(">")
@@ -227,6 +243,10 @@ def _escape_text(text: str) -> str:
     if ">" in text:
         text = text.replace(">", "&gt;")
     return text
+
+
+#: What an attribute value escapes (:func:`_escape_attribute`).
+_ATTRIBUTE_ESCAPED = re.compile('[&<>"\r\n\t]')
 
 
 def _escape_attribute(text: str) -> str:

@@ -2,7 +2,7 @@
 
 Elements come from svgwrite's element factory with validation off
 (``debug=False``: checking every attribute of every mark costs more than the
-drawing itself); the plentiful plain ones (groups, points' circles, ``<set>``)
+drawing itself); the plentiful plain ones (groups, points' circles, lines, paths, ``<set>``)
 are :class:`Element`, which gives svgwrite's element without its machinery.
 Each mark's element is turned into an ElementTree element once
 (:meth:`Writer.frozen`) and shared by every document that shows it --
@@ -138,16 +138,33 @@ def _circle(center: tuple[Any, Any] = (0, 0), r: Any = 1, **extra: Any) -> Eleme
     return e
 
 
+def _line(start: tuple[Any, Any] = (0, 0), end: tuple[Any, Any] = (0, 0), **extra: Any) -> Element:
+    """svgwrite's ``factory.line``: *start* -> x1, y1 and *end* -> x2, y2."""
+    e = Element("line", **extra)
+    e.attribs["x1"], e.attribs["y1"] = start
+    e.attribs["x2"], e.attribs["y2"] = end
+    return e
+
+
+def _path(d: Any = None, **extra: Any) -> Any:
+    """svgwrite's ``factory.path``; a path given as one string (every mark's) is an :class:`Element`."""
+    if isinstance(d, str):
+        return Element("path", d=d, **extra)
+    return svgwrite.path.Path(d=d, debug=False, profile="full", **extra)
+
+
 class Writer:
     """svgwrite's element factory (validation off) and the document serialiser."""
 
     def __init__(self) -> None:
         #: ``factory.circle(...)``, ``factory.g(...)``, ...: svgwrite elements sharing one parameter set
-        #: (``g``, ``set`` and ``circle``: an :class:`Element`).
+        #: (``g``, ``set``, ``circle``, ``line`` and a ``path`` given as a string: an :class:`Element`).
         self.factory = svgwrite.Drawing(debug=False, profile="full")
         self.factory.g = functools.partial(Element, "g")
         self.factory.set = _set
         self.factory.circle = _circle
+        self.factory.line = _line
+        self.factory.path = _path
         #: The shared elements (:meth:`frozen`) by id: the element (kept, so that its id stays its own) and its
         #: markup without its tail, once a document has written it.
         self._shared: dict[int, list] = {}

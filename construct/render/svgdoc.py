@@ -184,7 +184,7 @@ class Writer:
     def svg_element(self, dwg: Any) -> ET.Element:
         """The ElementTree of *dwg* with line breaks between elements (the bytes are part of the goldens)."""
         root = dwg.get_xml()
-        _lines(root)
+        _lines(root, self._shared)
         return root
 
     def markup(self, dwg: Any) -> str:
@@ -280,8 +280,9 @@ def _escape_attribute(text: str) -> str:
     return text
 
 
-def _lines(elem: ET.Element) -> None:
-    """Every child element on a line of its own (idempotent: shared elements are visited again)."""
+def _lines(elem: ET.Element, shared: dict[int, list] | None = None) -> None:
+    """Every child element on a line of its own (idempotent).  A shared element (*shared*:
+    :attr:`Writer._shared`) whose markup is written has been laid out so before: not visited again."""
     stack = [elem]
     while stack:
         e = stack.pop()
@@ -292,4 +293,8 @@ def _lines(elem: ET.Element) -> None:
         for child in e:
             if child.tag != CDATA_TAG:
                 child.tail = "\n"
+            if shared:
+                done = shared.get(id(child))
+                if done is not None and done[0] is child and done[1] is not None:
+                    continue
             stack.append(child)

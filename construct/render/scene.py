@@ -33,7 +33,7 @@ from .captions import TITLE_LIMIT, displayed
 from .marks import (TWO_PI, Mark, MarkKind, circle_extent, curve_points, extreme_points, fanned_lines, letter_lines,
                     lies_on, segment_extent)
 from .end_marks import end_state
-from .sheet import Break, break_shift, broken, kept_span, lay_out, plate_names, warn_hidden_labels
+from .sheet import Break, break_shift, breaks_figure, broken, kept_span, lay_out, plate_names, warn_hidden_labels
 from .step_inputs import StepInputs
 
 __all__ = ["Mark", "MarkKind", "Scene", "build_scene", "label_offset_direction", "on_curve_names", "extreme_points",
@@ -486,8 +486,8 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
         ys = [m.geom[1] for m in marks if m.kind is MarkKind.POINT] or ys
     elif break_axis and (shown is None or furniture):
         # a plate keeps more of the broken stretch: the rod drawn across it stays a shallow line
-        cut = broken(marks, tuple(furniture), shown is None)
-        if shown is None and cut[2]:
+        cut = None
+        if shown is None and breaks_figure(marks, tuple(furniture), True):
             # a broken figure is drawn at the size it keeps: its lines reach past their points by a margin of
             # what is left of it (its points and curves, broken alone), not of the length broken out (at
             # L/r = 50 that would be 1.8 r)
@@ -497,6 +497,8 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 smaller = broken(again, tuple(furniture), True)
                 if smaller[2]:
                     margin, lettered, cut = kept, letters, smaller
+        if cut is None:  # (broken at the first margin only when it is kept: a long figure's every mark moved)
+            cut = broken(marks, tuple(furniture), shown is None)
         marks, furniture, breaks = cut
         if breaks:
             xs = [x for m in marks if m.kind is MarkKind.POINT for x in (m.geom[0],)] or xs

@@ -311,3 +311,24 @@ def test_a_smooth_curve_in_tikz_is_the_svgs_curve():
         assert np.allclose([c1, c2, p1], [d1, d2, e1], atol=1e-4)
     for p0, c1, c2, p1 in (got[0], got[-1]):
         assert p0 == p1 and math.dist(p0, c1) + math.dist(p0, c2) < math.dist(pts[0], pts[1]) / 5 + math.dist(pts[-1], pts[-2]) / 5
+
+
+def test_a_broken_rod_has_its_length_written_where_the_svg_writes_it():
+    """A figure that breaks its long rod out draws it short and says how long it is: the TikZ picture writes
+    "L = 8 r" at the break as the SVG does (its baseline where the SVG's ``data-rod`` sets it, the node at the
+    middle of the letters' height), not the short rod alone."""
+    c = get("crank")
+    plate = print_plate(c.figure(parts=6, rod_ratio=8.0), construction=c, style="teaching")
+    svg, tikz = plate.svg(), tikz_picture(plate)
+    spots = re.findall(r'<g class="lbg rodlen" data-rod="\d ([-0-9.]+) ([-0-9.]+) (\w+)" '
+                       r'transform="translate\(([-0-9.]+) ([-0-9.]+)\)">', svg)
+    nodes = re.findall(r"\\node\[plate letter, [^\]]*anchor=(\w+)\] at \(([-0-9.]+),([-0-9.]+)\) \{L = 8 r\};", tikz)
+    assert spots and len(nodes) == len(spots)
+    vp, size = plate.drawing.vp, plate.style.label_size
+    for (dx, dy, anchor, cx, cy), (tex_anchor, x, y) in zip(spots, nodes):
+        assert tex_anchor == {"start": "west", "end": "east"}.get(anchor, "center")
+        # the node's point on the canvas (px, y down): the SVG's baseline less 0.35 letters
+        px = vp.margin + vp.left + (float(x) - vp.xmin) * vp.scale
+        py = vp.margin + vp.top + (vp.ymax - float(y)) * vp.scale
+        assert abs(px - (float(cx) + float(dx))) < 0.01
+        assert abs(py - (float(cy) + float(dy) - 0.35 * size)) < 0.01

@@ -114,7 +114,8 @@ class Measure:
         if id(protocol) not in self._forms:
             first = Figure(protocol, replay.take(0, whole=True), self.construction.check, self.construction)
             keys = self(first)[0]
-            self._forms[id(protocol)] = (protocol, scene_for(self.construction, first), self._runs(keys), keys)
+            self._forms[id(protocol)] = (protocol, scene_for(self.construction, first, ending=self.style.camera),
+                                         self._runs(keys), keys)
         return self._forms[id(protocol)][1:]
 
     def _boxes(self, scene, vp) -> list[tuple[float, float, float, float] | None]:
@@ -225,14 +226,15 @@ class Measure:
 
     def __call__(self, figure: Figure) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:
         st = self.style
-        scene = scene_for(self.construction, figure)
+        # (with its end state where the player shows one: its own marks, the plate's, are drawn as the rest)
+        scene = scene_for(self.construction, figure, ending=st.camera)
         vp = Viewport.fit(scene.bbox, st, 0)
         full = (0.0, 0.0, round(vp.width, 2), round(vp.height, 2))
         # each layer's elements in the order of the marks, the layers in the page's order
         layers: dict[str, tuple[list, list]] = {name: ([], []) for name in Drawing.LAYERS}
         texts: dict[str, str] = {}
-        for m in scene.marks:
-            if m.label:
+        for m in scene.marks + scene.end_marks:
+            if m.label and not m.id.endswith("-end"):  # (an end state's letter has no id: it follows its point)
                 texts[f"{m.id}-label"] = m.label
             if m.kind is MarkKind.AREA:  # drawn by the page from the curves that bound it (areas_of)
                 continue

@@ -27,11 +27,11 @@ at the break (L = 50 r: a broken rod is drawn short; where the drawing wrote it,
 to lie on one another: the later gives way (``declutter``) until there is
 room again.  Nothing waits for the slider to be let go (``change``), which
 only sets the letters' exact scale and glides the camera to the step's
-view.  Three things hold the built value's numbers and are shown at the book's
-values alone: an area's hatching (its outline follows), the end state (the last step drawn as the book's plate, its own
-marks, furniture and letters: away from the book's values the last step shows
-the construction's marks, and the page says so) and the inset (a sliver's
-place magnified beside the view).
+view.  The end state (the last step drawn as the book's plate) follows too: its own
+marks are swept as the rest (:meth:`construct.render.sweepdraw.SweepDrawing`).  Three things hold the built
+value's numbers and are shown at the book's values alone: an area's hatching (its outline follows), the plate's
+furniture in the end state (its dimensions, lettering and added lines: the page says so) and the inset (a
+sliver's place magnified beside the view).
 
 The script exposes ``window.constructLive``: ``set(value)`` moves the first
 given (``set(value, true)``: as a drag draws it; ``set(value, dragging,
@@ -377,7 +377,8 @@ LIVE_SCRIPT = r"""
         if (!on) { if (set) set.g.setAttribute("display", "none"); continue; }
         if (!set) {  // beside its line: shown and faded with the line's step
           var g = document.createElementNS(NS, "g");
-          g.setAttribute("class", "brkg");
+          // (an end state's own line's marks in the end state alone, a line it leaves out's not there: fo, nf)
+          g.setAttribute("class", "brkg" + (ln.classList.contains("fo") ? " fo" : ln.classList.contains("nf") ? " nf" : ""));
           ln.parentNode.insertBefore(g, ln.nextSibling);
           set = got[axis] = {g: g, gap: mk("path", "brk", g), t: [mk("line", "brkline", g), mk("line", "brkline", g)], key: ""};
           marksOf.set(ln, got);
@@ -604,14 +605,14 @@ LIVE_SCRIPT = r"""
         if (!player && !svg.classList.contains("zoomed")) svg.setAttribute("viewBox", S.full.text);
       }
     }
-    // the end state (the last step drawn as the book's plate: its own marks, furniture and letters, which the
-    // sweep does not carry) at the book's values alone; elsewhere the last step shows every mark of the
-    // construction, each where a fresh replay draws it, and the page says so
+    // the end state (the last step drawn as the book's plate) at every value: its own marks are swept as the
+    // rest; the plate's furniture (dimensions, lettering, the lines it adds) holds the built value's numbers and
+    // is shown at the book's values alone, and the page says so
     var atBook = Math.abs(Math.log10(value) - Math.log10(S.L.initial)) < 1e-9;  // (the other givens are there)
-    if (player && endAt !== undefined) {
-      player.data.end = atBook ? endAt : 0;
-      if (endNote && endNote.hidden !== atBook) endNote.hidden = atBook;
+    for (var fi = 0; fi < endFurniture.length; fi++) {
+      var fs = atBook ? "" : "none"; if (endFurniture[fi].style.display !== fs) endFurniture[fi].style.display = fs;
     }
+    if (endNote && endNote.hidden !== atBook) endNote.hidden = atBook;
     for (var hi = 0; hi < hatches.length; hi++) {
       var hs = atBook ? "" : "none"; if (hatches[hi].style.display !== hs) hatches[hi].style.display = hs;
     }
@@ -761,15 +762,16 @@ LIVE_SCRIPT = r"""
       return inflate(L.data);
     }).then(function(buf){ W.buf = buf; return W; });
   }
-  var endAt, endNote = null, insetHidden = false, hatches = [];
+  var endNote = null, insetHidden = false, hatches = [], endFurniture = [];
   api.ready = Promise.all(LIST.map(load)).then(function(ws){
     player = window.constructPlayer;
-    if (player && player.data.end) {
-      endAt = player.data.end;
+    endFurniture = Array.prototype.slice.call(svg.querySelectorAll("#furniture > g.fo"));
+    if (player && player.data.end && endFurniture.length) {
       endNote = document.createElement("div");
       endNote.className = "live-end"; endNote.hidden = true; endNote.setAttribute("style", "color:#777;font-size:12px");
-      endNote.textContent = "Der letzte Schritt zeigt das Bild der Tafel beim Buchwert; hier alle Linien der " +
-        "Konstruktion. / The last step shows the plate’s look at the book’s value; here every line of the construction.";
+      endNote.textContent = "Der letzte Schritt zeigt die Figur der Tafel bei jedem Wert; ihre Maße und Beschriftung " +
+        "nur beim Buchwert. / The last step shows the plate’s figure at every value; its dimensions and lettering at " +
+        "the book’s value only.";
       var held = document.querySelector("#live .live-held");
       if (held) held.parentNode.insertBefore(endNote, held.nextSibling);
     }

@@ -18,12 +18,12 @@ from typing import Any, Callable, Mapping, Sequence
 from ..kernel.typography import number
 from .lettering import label_box, text_width
 from .marks import MarkKind
-from .plate import XY, Dimension, Lettering, crossing_lines, crossings
+from .plate import XY, Dimension, Lettering, Piece, crossing_lines, crossings
 from .shapes import mark_layer
 from .svgdoc import fmt
 
 __all__ = ["rod_written", "writes_rod", "ROD_SPOTS", "rod_spots", "beside_breaks", "rod_box", "clear_spots",
-           "rod_at", "rod_group"]
+           "rod_at", "rod_group", "rod_pieces"]
 
 
 def rod_written(givens: Mapping[str, Any]) -> str | None:
@@ -158,3 +158,16 @@ def rod_group(f: Any, rod: str, spot: tuple) -> Any:
     for cls in ("lb halo", "lb"):
         g.add(f.text(rod, x=[fmt(dx)], y=[fmt(dy)], class_=cls, **own))
     return g
+
+
+def rod_pieces(rod: str | None, at: Mapping[str | None, Sequence[tuple]], size: float) -> list[Piece]:
+    """The rod's length at every spot of *at* (:func:`rod_at`) as plate pieces for a writer other than SVG (TikZ):
+    the text :func:`rod_group` writes, at the middle of its height (its baseline less 0.35 letters of *size*).
+
+    >>> rod_pieces("L = 8 r", {None: [(0, 10.0, 20.0, 0.0, -9.0, "middle")]}, 10.0)[0][:4]
+    ('text', ((10.0, 7.5),), 'lb rodlen', 'L = 8 r')
+    """
+    if not rod:
+        return []
+    return [Piece("text", ((cx + dx, cy + dy - 0.35 * size),), "lb rodlen", rod, anchor)
+            for spots in at.values() for _, cx, cy, dx, dy, anchor in spots]

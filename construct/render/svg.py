@@ -126,7 +126,7 @@ class Drawing(StepGroups):
         ends = sorted(scene.end_marks, key=lambda m: m.step) if self.end is not None else []
         for m in heapq.merge(scene.marks, ends, key=lambda m: m.step):
             end = m.id.endswith("-end") and m in ends
-            for layer, elem in self.mark_elements(m, self.vp, placed, None if end else m.id, end=end):
+            for layer, elem in self.mark_elements(m, self.vp, placed, m.id, end=end):
                 runs = self.groups[layer]
                 if not runs or runs[-1][0] != m.step:
                     runs.append((m.step, []))

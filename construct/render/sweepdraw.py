@@ -182,6 +182,120 @@ class SweepDrawing:
         for key, nums in self._numbers().items():
             for i, m in enumerate(self._members(key)):
                 self.numbers[m.id] = nums[i]
+        self.numbers.update(self._end_numbers(template, protocol))
+
+    def _end_numbers(self, template: Scene, protocol: Any) -> dict[str, np.ndarray]:
+        """The end state's own marks (:mod:`construct.render.end_marks`: the plate's marks of the same objects, on
+        this sheet's broken axes) over the sweep, as mark_geometry writes them: {mark id: (values x numbers)}.
+
+        The plate draws each line and arc over the points it shows on it (those the construction marks there and
+        every shown point lying on it), with the margin of what it shows (scene.build_scene, plate); a result
+        circle whose shown points cover at most a half turn is that half circle (marks.circle_extent).  Which
+        points lie on a curve is asked at every value: where it is not the built figure's choice, or a mark
+        changes its kind, the value is not drawn here (:attr:`ok`)."""
+        ends = getattr(template, "end_marks", ())
+        if not ends:
+            return {}
+        objects, points, _, curves, areas = self._sources
+        shown = template.essentials
+        n, vec = self.n, self._vec
+        # the plate's margin: of the points and curves it shows, unbroken
+        xs = [np.vstack([points[k][0] for k in points if k in shown] or [np.zeros(n)])]
+        ys = [np.vstack([points[k][1] for k in points if k in shown] or [np.zeros(n)])]
+        with np.errstate(invalid="ignore"):
+            for k, (CX, CY, _) in curves.items():
+                if k in shown:
+                    xs += [np.vstack([np.nanmin(CX, 0), np.nanmax(CX, 0)])]
+                    ys += [np.vstack([np.nanmin(CY, 0), np.nanmax(CY, 0)])]
+        for k, (x0, x1, y0, y1) in areas.items():
+            if k in shown:
+                xs += [np.vstack([vec(x0), vec(x1)])]
+                ys += [np.vstack([vec(y0), vec(y1)])]
+        X, Y = np.vstack(xs), np.vstack(ys)
+        span = np.maximum(np.maximum(X.max(0) - X.min(0), Y.max(0) - Y.min(0)), 1e-9)
+        margin = 0.035 * span
+        tol = 1e-9 * np.maximum(span, 1.0)
+        on = on_curve_names(protocol.steps, set(points), set(shown))
+        shown_pts = [k for k in sorted(shown) if k in points]
+        lines_too = bool(protocol.params.get("plate"))
+        out: dict[str, np.ndarray] = {}
+        st, scale = self.style, self._page[2]
+        for m in ends:
+            obj = objects.get(m.name)
+            marked = [points[p] for p in dict.fromkeys(on.get(m.name, []))]
+            if isinstance(obj, Circle) or (isinstance(obj, Line) and lines_too):
+                # every shown point lying on it, as the built figure found them (elsewhere: value by value)
+                for k in shown_pts:
+                    if k in on.get(m.name, []):
+                        continue
+                    near = self._lies_on(obj, points[k], tol)
+                    if near.all() or (near.any() and marked):
+                        # (where it does not lie on it: a point marked there already, twice, which draws the same)
+                        marked.append(points[k] if near.all() else
+                                      tuple(np.where(near, points[k][c], marked[0][c]) for c in (0, 1)))
+                    elif near.any():
+                        self.ok &= ~near
+            if m.kind is MarkKind.POINT and m.name in points:
+                x, y = self._shifted(*points[m.name])
+                out[m.id] = np.stack([_r2(c) for c in (*self._px(x, y), np.full(n, point_radius(m, st)))], -1)
+            elif m.kind is MarkKind.SEGMENT and isinstance(obj, Line):
+                x1, y1, x2, y2 = self._segment(obj, marked, margin, key=m.id)
+                (x1, y1), (x2, y2) = self._shifted(x1, y1), self._shifted(x2, y2)
+                out[m.id] = np.stack([_r2(c) for c in (*self._px(x1, y1), *self._px(x2, y2))], -1)
+            elif m.kind.round and isinstance(obj, Circle):
+                cx, cy, r = vec(obj.center.x), vec(obj.center.y), vec(obj.radius)
+                if m.role == "result" or not marked:
+                    geom, kind = (cx, cy, r, np.zeros(n), np.full(n, TWO_PI)), np.full(n, m.kind is MarkKind.CIRCLE)
+                    if m.role == "result" and len(marked) >= 3:  # the book's half circle over the stroke
+                        a0, sw, ok = self._arc_over(cx, cy, marked)
+                        half = ok & (sw <= math.pi * (1.0 + 1e-9))
+                        geom = (cx, cy, r, np.where(half, a0, 0.0), np.where(half, sw, TWO_PI))
+                        kind = np.where(half, m.kind is MarkKind.ARC, kind)
+                else:
+                    a0, sw, ok = self._arc_over(cx, cy, marked)
+                    pad = np.minimum(margin / r, 0.6)
+                    a0, sw = a0 - pad, sw + 2.0 * pad
+                    self.ok &= ok
+                    kind = (sw >= 0.92 * TWO_PI) == (m.kind is MarkKind.CIRCLE)
+                    geom = (cx, cy, r, a0, sw)
+                self.ok &= kind
+                cx, cy, r, a0, sw = geom
+                if m.kind is MarkKind.CIRCLE:
+                    x, y = self._shifted(cx + r, cy + r, centre=(cx, cy))
+                    out[m.id] = np.stack([_r2(c) for c in (*self._px(x, y), r * scale)], -1)
+                    continue
+                bx0, bx1, by0, by1 = _arc_box(cx, cy, r, a0, sw)
+                cx, cy = self._shifted(bx1, by1, centre=(cx, cy))
+                x0, y0 = self._px(cx + r * np.cos(a0), cy + r * np.sin(a0))
+                x1, y1 = self._px(cx + r * np.cos(a0 + sw), cy + r * np.sin(a0 + sw))
+                rr = r * scale
+                out[m.id] = np.stack([_r2(c) for c in (x1, y1, rr, rr, 0.0 * rr, (sw > math.pi) * 1.0, 0.0 * rr + 1.0,
+                                                       x0, y0)], -1)
+            else:
+                raise ValueError(f"{m.id}: an end state's {m.kind.value} the sweep does not draw")
+        return out
+
+    def _lies_on(self, curve: Any, p: tuple, tol: np.ndarray) -> np.ndarray:
+        """marks.lies_on over the sweep: where point *p* (x, y arrays) lies on *curve*."""
+        vec = self._vec
+        if isinstance(curve, Circle):
+            cx, cy, r = vec(curve.center.x), vec(curve.center.y), vec(curve.radius)
+            return np.abs(np.hypot(p[0] - cx, p[1] - cy) - r) <= tol * np.maximum(1.0, r)
+        px, py, qx, qy = vec(curve.p.x), vec(curve.p.y), vec(curve.q.x), vec(curve.q.y)
+        d = np.hypot(qx - px, qy - py)
+        return np.abs((qx - px) * (p[1] - py) - (qy - py) * (p[0] - px)) / d <= tol
+
+    def _shifted(self, x: np.ndarray, y: np.ndarray, centre: tuple | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """sheet.break_shift over the sweep: (x, y) moved as the broken axes move what lies before their gaps;
+        with *centre*, (x, y) is a round mark's far point (rightmost, lowest: sheet.moved_geom) and the centre is
+        moved by what it moves."""
+        out = [x, y]
+        for axis, (brk, start, keep, width) in self._breaks.items():
+            v = out[axis]
+            out[axis] = np.where(brk & (v <= start + keep - width), v + (width - keep), v)
+        if centre is None:
+            return out[0], out[1]
+        return centre[0] + (out[0] - x), centre[1] + (out[1] - y)
 
     def _kept_span(self) -> np.ndarray:
         """sheet.kept_span over the sweep: what the points and curves span once broken alone."""
@@ -271,9 +385,11 @@ class SweepDrawing:
         return [m for m in self.curve_marks if m.id == key] if key != "-at" else self.at_marks
 
     # -- the marks ---------------------------------------------------------------------------------------
-    def _segment(self, line: Line, marked: list, margin: np.ndarray) -> tuple:
-        """marks.segment_extent over the sweep: the line as far as its marked points, and a margin."""
-        got = self._spans.get(id(line))
+    def _segment(self, line: Line, marked: list, margin: np.ndarray, key: Any = None) -> tuple:
+        """marks.segment_extent over the sweep: the line as far as its marked points, and a margin (*key*: its
+        marked span's, made once; the line's own without one)."""
+        key = id(line) if key is None else key
+        got = self._spans.get(key)
         if got is None:  # (its marked points' span does not depend on the margin: made once, for both passes)
             vec = self._vec
             px, py, qx, qy = vec(line.p.x), vec(line.p.y), vec(line.q.x), vec(line.q.y)
@@ -285,7 +401,7 @@ class SweepDrawing:
             lo, hi = ts.min(0), ts.max(0)
             # a line through one point only (a tangent at its point of contact) is drawn long enough to be seen
             tangent = hi - lo <= 1e-9 * np.maximum(1.0, np.abs(ts[0]))
-            got = self._spans[id(line)] = (px, py, ux, uy, lo, hi, tangent)
+            got = self._spans[key] = (px, py, ux, uy, lo, hi, tangent)
         px, py, ux, uy, lo, hi, tangent = got
         m = np.where(tangent, 5.0 * margin, margin)
         t0, t1 = lo - m, hi + m
@@ -326,7 +442,10 @@ class SweepDrawing:
             # gaps of nothing, and the gap after it is the gap after the one it stands for; angles a hair apart
             # (not one place, not two) are left to the drawing
             step = np.diff(a, axis=0)
-            ok &= ~((step > 0) & (step <= 1e-9)).any(0) & (a[0] + TWO_PI - a[-1] > 1e-9)
+            ok &= ~((step > 0) & (step <= 1e-9)).any(0)
+            # a point marked a hair below a full turn is the point at angle 0 (marks.circle_extent drops it): its
+            # angle a full turn past the first's, a gap of nothing after it
+            a[-1] = np.where(a[0] + TWO_PI - a[-1] <= 1e-9, a[0] + TWO_PI, a[-1])
             gaps = np.mod(np.vstack([a[1:], a[:1]]) - a, TWO_PI)
             # marks.widest_gap: the widest, and of two as wide the one about angle 0
             tied = gaps >= gaps.max(axis=0) - GAP_TIE

@@ -33,6 +33,7 @@ from typing import Iterable
 from .lettering import HALO_PX, LEADER_FROM, text_box
 from .paths import bezier_controls, hatch_segments
 from .plate import DASHES, PIECES, Piece, break_elements, crossing_lines, furniture_pieces, subscript_runs
+from .rod_length import rod_pieces
 from .scene import Mark, MarkKind
 from .page import PrintPlate
 from .styles import PRINT_STROKES, Style
@@ -357,6 +358,8 @@ def _furniture(w: _Writer) -> None:
     sc, vp, st = w.plate.scene, w.vp, w.st
     pieces = furniture_pieces(sc.furniture, vp.px, vp.scale, size=st.label_size)
     pieces += break_elements(sc.breaks, crossing_lines(sc.marks, sc.furniture), vp.px, PIECES, size=st.label_size)
+    # a broken rod is drawn short: the figure says how long it is, where the SVG writes it (render/rod_length.py)
+    pieces += rod_pieces(*w.plate.drawing.rod_at, st.label_size)
     if not pieces:
         return
     w.add("% the plate's furniture")

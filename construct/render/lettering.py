@@ -205,7 +205,8 @@ class _Grid:
             got_a = self.arrays.get(key)
             if got_a is None or len(got_a[0]) != len(got):
                 a = np.array(got)
-                got_a = self.arrays[key] = (a, (a[:, 0].min(), a[:, 1].min(), a[:, 2].max(), a[:, 3].max()))
+                got_a = self.arrays[key] = (a, (float(a[:, 0].min()), float(a[:, 1].min()), float(a[:, 2].max()),
+                                                float(a[:, 3].max())))
             a, o = got_a
             # (a row of points along a stroke fills a strip of its cell: a box above or below it misses them all)
             return x0 < o[2] and o[0] < x1 and y0 < o[3] and o[1] < y1 and \

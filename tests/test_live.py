@@ -302,3 +302,15 @@ def test_an_unlettered_build_takes_the_steps_of_a_lettered_one():
     assert list(sketch.replay) == list(again)
     for name in ("A1", "P.deficit.end", fig.protocol.steps[-1].outputs[0]):
         assert repr(sketch.replay[name]) == repr(again[name]), name
+
+
+def test_an_end_state_that_is_mostly_the_plates_furniture_is_held_at_the_books_value():
+    """The end state follows the slider where its own marks (swept) are most of it; Tafel 2's stroke fractions are
+    drawn by the plate's furniture (57 ordinates, dots and values, which the sweep does not carry against 32 marks):
+    its page keeps the end state at the book's values and shows the construction's marks elsewhere."""
+    from construct.live import Measure
+
+    crank, fractions = get("crank"), get("inertia-stroke-fractions")
+    assert not Measure(crank, crank.figure(parts=3)).end_held
+    held = Measure(fractions, fractions.figure())
+    assert held.end_held and len(held.template.end_furniture) > len(held.template.end_marks)

@@ -664,8 +664,9 @@ def test_the_end_state_follows_the_slider_and_its_furniture_stays_at_the_books_v
     """The last step draws the figure as the book's plate draws it (class fin) at every value: its own marks (class
     fo, with ids, swept as the rest) are shown while the slider is dragged.  The plate's furniture there (its
     dimensions and lettering: L = 5 r) holds the built value's numbers: away from the book's value it is not shown,
-    and the page says so; back at the book's value it returns."""
-    _, _, path = live_player
+    and the page says so, and the figure broken across its rod says the rod's length at the break (L = 8 r) as the
+    other steps do; back at the book's value the furniture returns and writes it."""
+    c, _, path = live_player
     page, errors = _open(browser, path)
     page.keyboard.press("End")
     fin = "() => document.getElementById('figure').classList.contains('fin')"
@@ -675,12 +676,18 @@ def test_the_end_state_follows_the_slider_and_its_furniture_stays_at_the_books_v
     note = "() => { const n = document.querySelector('#live .live-end'); return !!n && !n.hidden; }"
     at_book = page.evaluate(shown, own)
     assert page.evaluate(fin) and at_book > 0 and page.evaluate(shown, furniture) > 0 and not page.evaluate(note)
+    # the rod's length: the plate's dimension at the book's value, the page's own at the break elsewhere
+    rod = "() => Array.from(document.querySelectorAll('#figure .rodlen')).filter(g => getComputedStyle(g).display !== 'none' && g.getClientRects().length).map(g => g.querySelector('text:last-of-type').textContent)"
+    assert page.evaluate(rod) == []
     for v in (1.6, 8.0):
         _drag_to(page, "rod_ratio", v)
         assert page.evaluate(fin) and page.evaluate(shown, own) == at_book, v
         assert page.evaluate(shown, furniture) == 0 and page.evaluate(note), v
+        broken = any(e.get("class") == "brk" for e in _fresh_svg(c, {"parts": 3}, "rod_ratio", v).iter())
+        assert page.evaluate(rod) == ([f"L = {v:g} r".replace(".", ",")] if broken else []), v
     _drag_to(page, "rod_ratio", 5.0)
     assert page.evaluate(fin) and page.evaluate(shown, furniture) > 0 and not page.evaluate(note)
+    assert page.evaluate(rod) == []
     assert not errors, errors
     page.close()
 

@@ -85,6 +85,10 @@ class Measure:
         self.boxes = self._boxes(scene, drawing.vp)
         self.least = 1.0 / MAX_ZOOM
         self.template = scene
+        #: the end state is mostly the plate's furniture (which the sweep does not carry: Tafel 2's ordinates and
+        #: their values): the player shows it at the book's values only, the construction's marks elsewhere
+        own = sum(1 for m in scene.marks if scene.in_end(m)) + len(scene.end_marks)
+        self.end_held = drawing.end is not None and len(scene.end_furniture) > own
         # the marks' keys as this value's page has them: each mark's numbers are a run of them, the runs in the
         # page's order (a sweep draws each mark's numbers for every value at once, :meth:`frames`)
         self.keys, _, _, texts = self(built)

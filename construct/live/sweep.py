@@ -343,6 +343,9 @@ class LiveSweep:
     whole: Domain | None = None
     #: The areas the page draws from the graphs that bound them (:func:`construct.live.measure.areas_of`).
     areas: list[list[str]] = field(default_factory=list)
+    #: The end state is shown at the book's values only (its furniture, which the sweep does not carry, is most of
+    #: it: :attr:`construct.live.Measure.end_held`); the last step shows the construction's marks elsewhere.
+    end_held: bool = False
     #: Givens that follow from this one and that the texts write (DERIVED_WRITTEN): name -> value at each grid
     #: value (a step function, the two cranks' magnification: the page writes the nearer grid value's).
     derived: dict[str, list[float]] = field(default_factory=dict)
@@ -473,7 +476,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
                      fixed=fixed, snapped=snapped, u=np.asarray(us, dtype=float), start=start, readings=varying,
                      # the fit travels as float32: the columns are checked against the drawing through it
                      fit=np.asarray([data[u][2] for u in us], dtype=np.float32).astype(float),
-                     label_px=float(style.label_size), live=live, areas=measure.areas,
+                     label_px=float(style.label_size), live=live, areas=measure.areas, end_held=measure.end_held,
                      whole=whole if piece is not None else None)
     swept = construction.given_sweep(dict(figure.replay.givens), given, grid, protocol.params)
     live.derived = {k: np.broadcast_to(swept[k], grid.shape).astype(float).tolist() for k in DERIVED_WRITTEN

@@ -234,6 +234,7 @@ def live_data(live: LiveSweep) -> dict[str, Any]:
             **({"derived": {k: {"values": v, "written": list(DERIVED_WRITTEN[k])} for k, v in live.derived.items()}}
                if live.derived else {}),
             **({"readings": live.readings} if live.readings else {}),
+            **({"end_held": True} if live.end_held else {}),
             **encode(live), "bound": round(live.bound + QUANTUM_PX / 2, 3),
             "meta_z": deflated(meta), "checks_z": deflated(_check_table(live))}
 

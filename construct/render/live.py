@@ -403,16 +403,20 @@ LIVE_SCRIPT = r"""
     var rod = sweeps.filter(function(w){ return w.L.rod; })[0];
     for (axis = 0; axis < 2; axis++) {
       var lab = rodLabels[axis], at = first[axis];
-      if (!rod || !at) { if (lab) lab.g.setAttribute("display", "none"); continue; }
+      // (in the end state at the book's values the plate's own furniture writes it, a dimension L = 5 r)
+      var inPlate = endWritesRod && svg.classList.contains("fin") && Math.abs(Math.log10(valueOf(rod.L.given) / rod.L.initial)) < 1e-9;
+      // (its display in its style too: the end state's rule for its letters, .fin .lbg.pf, outranks the attribute)
+      if (!rod || !at || inPlate) { if (lab) { lab.g.setAttribute("display", "none"); lab.g.style.display = "none"; } continue; }
       if (!lab) {
-        var lg = mk("g", "lbg rodlen", svg.querySelector("#furniture") || svg);
+        // (pf: shown in the end state too, where the plate's furniture that writes it is not: away from the book)
+        var lg = mk("g", "lbg rodlen pf", svg.querySelector("#furniture") || svg);
         lab = rodLabels[axis] = {g: lg, halo: mk("text", "lb halo", lg), text: mk("text", "lb", lg)};
         // where the drawing wrote it at the book's value (render/rod_length.py rod_spots), or its first choice
         var spot = rodSpots[axis] || (axis ? [0.7 * SIZE, 0.35 * SIZE, "start"] : [0, -0.9 * SIZE, "middle"]);
         [lab.halo, lab.text].forEach(function(e){ e.setAttribute("x", spot[0]); e.setAttribute("y", spot[1]);
           if (spot[2] !== "middle") e.setAttribute("style", "text-anchor:" + spot[2]); });
       }
-      lab.g.removeAttribute("display");
+      lab.g.removeAttribute("display"); lab.g.style.display = "";
       lab.g.setAttribute("transform", "translate(" + round2(at[0]) + " " + round2(at[1]) + ")");
       var said = rod.L.rod.replace("{v}", book(rod.value));
       setText(lab.halo, said); setText(lab.text, said);
@@ -612,6 +616,9 @@ LIVE_SCRIPT = r"""
     for (var fi = 0; fi < endFurniture.length; fi++) {
       var fs = atBook ? "" : "none"; if (endFurniture[fi].style.display !== fs) endFurniture[fi].style.display = fs;
     }
+    // (an end state that is mostly the plate's furniture, live/measure.py end_held: at the book's values alone, the
+    // construction's marks elsewhere)
+    if (player && endAt) player.data.end = atBook || !S.L.end_held ? endAt : 0;
     if (endNote && endNote.hidden !== atBook) endNote.hidden = atBook;
     for (var hi = 0; hi < hatches.length; hi++) {
       var hs = atBook ? "" : "none"; if (hatches[hi].style.display !== hs) hatches[hi].style.display = hs;
@@ -762,16 +769,20 @@ LIVE_SCRIPT = r"""
       return inflate(L.data);
     }).then(function(buf){ W.buf = buf; return W; });
   }
-  var endNote = null, insetHidden = false, hatches = [], endFurniture = [];
+  var endNote = null, insetHidden = false, hatches = [], endFurniture = [], endWritesRod = false, endAt = 0;
   api.ready = Promise.all(LIST.map(load)).then(function(ws){
     player = window.constructPlayer;
+    endAt = player ? player.data.end : 0;
     endFurniture = Array.prototype.slice.call(svg.querySelectorAll("#furniture > g.fo"));
+    svg.querySelectorAll("#furniture g.fo.end text").forEach(function(t){ if (/^L\s*=\s*[0-9]/.test(t.textContent)) endWritesRod = true; });
     if (player && player.data.end && endFurniture.length) {
       endNote = document.createElement("div");
       endNote.className = "live-end"; endNote.hidden = true; endNote.setAttribute("style", "color:#777;font-size:12px");
-      endNote.textContent = "Der letzte Schritt zeigt die Figur der Tafel bei jedem Wert; ihre Maße und Beschriftung " +
-        "nur beim Buchwert. / The last step shows the plate’s figure at every value; its dimensions and lettering at " +
-        "the book’s value only.";
+      endNote.textContent = LIST[0].end_held ?
+        "Der letzte Schritt zeigt das Bild der Tafel beim Buchwert; hier alle Linien der Konstruktion. / The last step " +
+        "shows the plate’s look at the book’s value; here every line of the construction." :
+        "Der letzte Schritt zeigt die Figur der Tafel bei jedem Wert; ihre Maße und Beschriftung nur beim Buchwert. / " +
+        "The last step shows the plate’s figure at every value; its dimensions and lettering at the book’s value only.";
       var held = document.querySelector("#live .live-held");
       if (held) held.parentNode.insertBefore(endNote, held.nextSibling);
     }
@@ -842,7 +853,7 @@ LIVE_SCRIPT = r"""
     var seenStep = svg.getAttribute("data-step");
     if (player) new MutationObserver(function(){
       var now = svg.getAttribute("data-step");
-      if (now !== seenStep) { seenStep = now; view(); }
+      if (now !== seenStep) { seenStep = now; view(); breakMarks(); }  // (the rod's length: the plate's, or the page's)
       declutter();
     }).observe(svg, {attributes: true, attributeFilter: ["data-step", "viewBox", "class"]});
     showChecks(S, Math.log10(S.L.initial));

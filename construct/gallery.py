@@ -72,10 +72,15 @@ GALLERY_OUTPUTS = {"historical": (), "teaching": ("player",)}
 #: wherever the construction takes it (L/r; piston-force's L in metres beside R) and Baumann's kappa
 #: (tangential-pressure, effective-work).  The live data adds 0.02-0.8 MB a player (its grid bounded by the
 #: refinement's 0.4 px and 800 values, each coordinate at the grid values it needs, one sweep for each piece
-#: of the domain where the steps' form changes; live.sweep and live.wire), and a sweep of 0.2-15 s of CPU to
+#: of the domain where the steps' form changes; live.sweep and live.wire), and a sweep of 0.2-8.5 s of CPU to
 #: the build.  `construct replay NAME --live` gives any construction with such a given its sliders.
 LIVE_PLAYERS = ("crank", "crank-angle", "effective-work", "four-stroke", "inertia-curve", "inertia-stroke-fractions",
                 "piston-force", "tangential-pressure", "two-cranks")
+#: The live players whose data costs most, the costliest first (``construct bench --outputs`` measures each: 1.5 to
+#: 5 s of CPU here, the others under 1 s): the workers take them first, so that the two cores end together
+#: rather than one of them starting the longest figure when the other has nothing left to do.
+LONGEST_FIRST = ("piston-force", "tangential-pressure", "effective-work", "two-cranks", "inertia-curve",
+                 "inertia-stroke-fractions")
 #: Givens a book varies that change the construction's steps (the indicator diagram's filling s1: the division
 #: up to the cut-off): every book figure of the construction gets its player, and each player a switch
 #: between them (render.live.with_switch) instead of a slider -- construction -> (param, symbol, how a value is
@@ -286,6 +291,17 @@ def _switch(name: str, params: Mapping[str, Any]) -> tuple | None:
     return symbol, options, SWITCH_WHY
 
 
+def _expected_cost(name: str, params: Mapping[str, Any]) -> tuple[int, int]:
+    """Where a figure comes in the workers' order (least first): the first figure of a construction with a live
+    player, the costliest of those first (LONGEST_FIRST); then the other first figures (their teaching figure
+    and player); then the rest (a plate and its checks)."""
+    if not _first_of_its_construction(name, params):
+        return (2, 0)
+    if name not in LIVE_PLAYERS:
+        return (1, 0)
+    return (0, LONGEST_FIRST.index(name) if name in LONGEST_FIRST else len(LONGEST_FIRST))
+
+
 def _first_of_its_construction(name: str, params: Mapping[str, Any]) -> bool:
     return next(p for n, p in gallery_plan() if n == name) == dict(params)
 
@@ -312,8 +328,9 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
     results in plan order, so the bytes do not depend on which process
     finished first.  The first figure of each construction (the whole
     teaching figure and its player, the longest to build) is handed out
-    first, the live players (their sweeps) before the others, so that no
-    process is left with a long one at the end.
+    first, the live players (their sweeps) before the others and the
+    costliest of those first (:data:`LONGEST_FIRST`), so that no process is
+    left with a long one at the end.
     """
     from .render.output import check_formats
 
@@ -339,11 +356,9 @@ def build_gallery(out: str | Path, *, progress: bool = False, workers: int | Non
                                                         initializer=_worker_init, initargs=(os.getpid(),)) as pool:
                 ours: list[Any] = []  # the pool's worker processes, once forked
                 try:
-                    # the long ones first, the live players' sweeps before them all (each result goes to its
-                    # own place in plan order)
-                    firsts = [_first_of_its_construction(*job[1:3]) for job in jobs]
-                    order = sorted(range(len(jobs)), key=lambda i: (not (firsts[i] and jobs[i][1] in LIVE_PLAYERS),
-                                                                    not firsts[i]))
+                    # the long ones first: the live players' sweeps before them all, the costliest first (each
+                    # result goes to its own place in plan order)
+                    order = sorted(range(len(jobs)), key=lambda i: _expected_cost(*jobs[i][1:3]))
                     before = set(multiprocessing.active_children())
                     with _signals_held():  # the workers are forked here
                         futures = {pool.submit(_build_and_check, root, *jobs[i]): i for i in order}

@@ -10,6 +10,8 @@
   process (an environment, an encoding or entry points the process starts with).
 * ``gallery_figure(name, params)``: a construction and its figure, built once per
   session -- the gallery's 23 figures are read by five test modules.
+* ``gallery_drawing(name, params)``: that figure's teaching drawing (its letters placed), made once per
+  session -- the largest takes seconds, and three test modules read them.
 * ``small_plan``: ``construct gallery`` builds one small figure without a live
   player's sweep, for the tests about the gallery's folder (tests/test_gallery.py
   has its own, with the sweep).
@@ -63,6 +65,29 @@ set_hypothesis_home_dir(Path(tempfile.gettempdir()) / "construct-tests-hypothesi
 settings.register_profile("ci", max_examples=100, database=None)   # Hypothesis's own default count
 settings.register_profile("dev", max_examples=20, database=None)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE") or ("ci" if os.environ.get("CI") else "dev"))
+
+
+# -- the order: shuffled on request ---------------------------------------------------------------------------
+
+def pytest_addoption(parser):
+    parser.addoption("--shuffle", type=int, metavar="SEED", default=None,
+                     help="run the tests in an order shuffled by SEED (the suite holds in any order; with -n the "
+                          "workers need the one seed, so it is given, not drawn)")
+
+
+def pytest_report_header(config):
+    seed = config.getoption("--shuffle")
+    return None if seed is None else f"tests shuffled: --shuffle {seed}"
+
+
+def pytest_collection_modifyitems(config, items):
+    """``--shuffle SEED``: the collected tests in an order that only SEED decides (so that every xdist worker
+    collects the same list), to show that no test needs another to run before it."""
+    seed = config.getoption("--shuffle")
+    if seed is not None:
+        import random
+
+        random.Random(seed).shuffle(items)
 
 
 # -- no test leaves a trace in the process ------------------------------------------------------------------
@@ -227,6 +252,29 @@ def gallery_figure() -> Callable[..., tuple[Any, Any]]:
         return made[key]
 
     return figure
+
+
+@pytest.fixture(scope="session")
+def gallery_drawing(gallery_figure) -> Callable[..., Any]:
+    """The teaching drawing (``Drawing`` of the figure's scene, style teaching) of :func:`gallery_figure`'s figure,
+    made once per session (per worker) when first asked for: placing the letters of the gallery's largest figures
+    takes seconds (tangential-pressure's compound engine: 4,000 steps), and three test modules read them; no test
+    changes one."""
+    made: dict[tuple, Any] = {}
+
+    def drawing(name: str, params: Any = None) -> Any:
+        from construct.render.output import scene_for
+        from construct.render.styles import STYLES
+        from construct.render.svg import Drawing
+
+        params = dict(params or {})
+        key = (name, tuple(sorted(params.items())))
+        if key not in made:
+            c, fig = gallery_figure(name, params)
+            made[key] = Drawing(scene_for(c, fig), STYLES["teaching"])
+        return made[key]
+
+    return drawing
 
 
 @pytest.fixture(scope="session")

@@ -21,7 +21,7 @@ from construct.regress.lint import lint_svg
 from construct.render.output import plate_caption, printed_caption, scene_for
 from construct.render.scene import plate_names
 from construct.render.styles import STYLES
-from construct.render.svg import Drawing, render_svg
+from construct.render.svg import render_svg
 
 SVG = "{http://www.w3.org/2000/svg}"
 PLAN = gallery_plan()
@@ -39,6 +39,19 @@ def figures(gallery_figure):
             return got
 
     return Figures()
+
+
+@pytest.fixture(scope="module")
+def finals(gallery_drawing):
+    """The letters and words of each figure's teaching final, by its id (the drawing shared with the other
+    modules that read the gallery's figures)."""
+
+    class Finals(dict):
+        def __missing__(self, key):
+            self[key] = got = set(_texts(gallery_drawing(*PLAN[IDS.index(key)]).final()))
+            return got
+
+    return Finals()
 
 
 @pytest.fixture(scope="module")
@@ -84,9 +97,9 @@ def test_the_gallery_has_the_books_figures():
 
 
 @pytest.mark.parametrize("key", IDS)
-def test_every_result_letter_is_in_the_teaching_final(figures, key):
+def test_every_result_letter_is_in_the_teaching_final(figures, finals, key):
     c, fig = figures[key]
-    texts = set(_texts(Drawing(scene_for(c, fig), STYLES["teaching"]).final()))
+    texts = finals[key]
     want = _result_letters(fig)
     assert want and want <= texts, sorted(want - texts)
 
@@ -123,22 +136,21 @@ def test_no_plate_runs_a_line_through_a_letter(plates, key):
 
 
 @pytest.mark.parametrize("key", [k for k in IDS if k.startswith("inertia-curve")])
-def test_inertia_finals_carry_the_seven_characteristic_points(figures, plates, key):
+def test_inertia_finals_carry_the_seven_characteristic_points(finals, plates, key):
     """Seed 000 c: $q_1$ ... $q_7$ (set below the line, as the book sets them), both in the teaching final and on
     the plate."""
-    c, fig = figures[key]
     want = {"q" + "₁₂₃₄₅₆₇"[i] for i in range(7)}
-    assert want <= set(_texts(Drawing(scene_for(c, fig), STYLES["teaching"]).final()))
+    assert want <= finals[key]
     assert want <= set(_texts(plates[key]))
 
 
 @pytest.mark.parametrize("key", [k for k in IDS if k.startswith("crank-parts")])
-def test_crank_finals_carry_every_piston_position(figures, plates, key):
+def test_crank_finals_carry_every_piston_position(figures, finals, plates, key):
     """Seed 001: the piston positions 1′ ... (n-1)′ to the division points 1 ... n-1."""
     c, fig = figures[key]
     n = fig.params["parts"]
     want = {f"{k}′" for k in range(1, n)} | {str(k) for k in range(1, n)}
-    assert want <= set(_texts(Drawing(scene_for(c, fig), STYLES["teaching"]).final()))
+    assert want <= finals[key]
     assert want <= set(_texts(plates[key]))
 
 

@@ -263,26 +263,73 @@ def test_a_carried_view_still_frames_its_marks():
                 assert holds(view, (min(xs), min(ys), max(xs), max(ys)), slack=1.0), (v, j)
 
 
-def test_a_steady_given_is_one_piece_by_a_scan_of_fresh_builds():
+def _steady() -> list[tuple[str, str]]:
+    from construct.constructions import names
+
+    return [(c.name, g) for c in map(get, names()) for g in c.steady]
+
+
+def test_the_crank_and_baumanns_kappa_are_steady():
+    assert set(_steady()) >= {("crank", "rod_ratio"), ("tangential-pressure", "kappa")}
+
+
+# (one test a construction and given: the scans take 10 s of CPU between them, which two workers share)
+@pytest.mark.parametrize("name, given", _steady())
+def test_a_steady_given_is_one_piece_by_a_scan_of_fresh_builds(name, given):
     """A given a construction names steady (its value never changes which steps it takes) is swept without
     looking for pieces: held here by the scan it is spared -- fresh builds across its domain at the book's
-    figures take the built figure's steps -- and the scan finds Tafel I's pieces, which the piston force does
-    not name steady."""
-    from construct.constructions import names
+    figures take the built figure's steps (test_the_scan_finds_tafel_is_pieces: the scan finds pieces where
+    there are)."""
     from construct.live.sweep import reach, scan_pieces
 
-    steady = [(c, g) for c in map(get, names()) for g in c.steady]
-    assert {(c.name, g) for c, g in steady} >= {("crank", "rod_ratio"), ("tangential-pressure", "kappa")}
-    for c, g in steady:
-        for params in c.book_params[:2] or ({},):
-            fig = c.figure(**params)
-            live = next(x for x in live_givens(c, fig) if x.name == g)
-            domain = reach(c, fig, g, live.domain, float(fig.replay.givens[g]))
-            assert [p.protocol for p in scan_pieces(c, fig, g, domain, scan=8)] == [fig.protocol], (c.name, params)
+    c = get(name)
+    for params in c.book_params[:2] or ({},):
+        fig = c.figure(**params)
+        live = next(x for x in live_givens(c, fig) if x.name == given)
+        domain = reach(c, fig, given, live.domain, float(fig.replay.givens[given]))
+        assert [p.protocol for p in scan_pieces(c, fig, given, domain, scan=8)] == [fig.protocol], params
+
+
+def test_the_scan_finds_tafel_is_pieces():
+    """The scan that steady givens are spared finds Tafel I's pieces, which the piston force does not name
+    steady."""
+    from construct.live.sweep import scan_pieces
+
     c = get("piston-force")
     assert "rod_length" not in c.steady
     fig = c.figure()
     assert len(scan_pieces(c, fig, "rod_length", live_givens(c, fig)[0].domain, scan=8)) > 1
+
+
+@pytest.mark.parametrize("name", ["piston-force", "inertia-stroke-fractions", "effective-work"])
+def test_the_pieces_read_off_a_sweep_are_where_fresh_builds_change_their_steps(name):
+    """A construction that reads its build's choices off a sweep (Construction.form) finds the pieces of its
+    domain on arrays: fresh builds just inside either end of every piece take that piece's steps, and
+    neighbouring pieces' steps differ (Tafel I's eight pieces, the stroke fractions' six, Fig. 27's two) -- and
+    the fresh builds' own scan finds the same pieces (checked where it is quick: the stroke fractions)."""
+    from construct.constructions import names
+    from construct.kernel.instruments import unlettered
+    from construct.live.sweep import FORM_TOL, _form, _keywords, form_pieces, reach, scan_pieces
+
+    assert {n for n in names() if get(n).form is not None} >= {"piston-force", "inertia-stroke-fractions",
+                                                                "effective-work"}
+    c = get(name)
+    fig = c.figure(**c.book_params[0])
+    g = next(x for x in live_givens(c, fig) if x.name not in c.steady)
+    domain = reach(c, fig, g.name, g.domain, float(fig.replay.givens[g.name]))
+    found = form_pieces(c, fig, g.name, domain)
+    assert found is not None and len(found) > 1
+    kw = _keywords(c, fig)
+    with unlettered():
+        for p in found:
+            step = 10 ** (FORM_TOL / 4)  # a quarter of the bisection's last cell inside each end
+            for v in (p.low * step, p.high / step):
+                assert _form(c.build(**{**kw, g.name: v}).protocol) == _form(p.protocol), (name, v)
+    assert all(_form(a.protocol) != _form(b.protocol) for a, b in zip(found[:-1], found[1:]))
+    assert sum(p.protocol is fig.protocol for p in found) == 1
+    if name == "inertia-stroke-fractions":
+        assert [(p.low, p.high, _form(p.protocol)) for p in scan_pieces(c, fig, g.name, domain)] == \
+            [(p.low, p.high, _form(p.protocol)) for p in found]
 
 
 def test_an_unlettered_build_takes_the_steps_of_a_lettered_one():

@@ -125,10 +125,9 @@ def test_the_camera_holds_still_over_shots_and_never_swings_out_and_back(crank):
 
 
 @pytest.fixture(scope="module")
-def tangential():
-    c = get("tangential-pressure")
-    fig = c.figure(rod_ratio=5.0, parts=18, kappa=8.0)  # the gallery's teaching figure (Baumann, Fig. 26/27)
-    return c, fig, Drawing(scene_for(c, fig), STYLES["teaching"])
+def tangential(gallery_figure, gallery_drawing):
+    params = dict(rod_ratio=5.0, parts=18, kappa=8.0)  # the gallery's teaching figure (Baumann, Fig. 26/27)
+    return (*gallery_figure("tangential-pressure", params), gallery_drawing("tangential-pressure", params))
 
 
 def _point(fig, name: str) -> tuple[float, float]:
@@ -297,12 +296,12 @@ def _struck_onto(fig, k: int) -> set[str]:
 
 @pytest.mark.parametrize("name, params", __import__("construct.gallery", fromlist=["gallery_plan"]).gallery_plan(),
                          ids=lambda p: p if isinstance(p, str) else ",".join(f"{k}={v}" for k, v in p.items()))
-def test_every_input_of_a_step_is_drawn_at_that_step(name, params, gallery_figure):
+def test_every_input_of_a_step_is_drawn_at_that_step(name, params, gallery_figure, gallery_drawing):
     """Levels of detail hide a finished group's helpers, never what the current step is set on, cuts or
     strikes its arc onto (tangential-pressure step 821 carries O–Yb7 onto the scale line r, which step 822
     cuts: the line was not drawn while the arc was struck onto it)."""
     c, fig = gallery_figure(name, params)
-    d = Drawing(scene_for(c, fig), STYLES["teaching"])
+    d = gallery_drawing(name, params)
     made_by = {}
     for s in fig.protocol.steps:
         for n in s.outputs:

@@ -80,13 +80,14 @@ def _keys(page, given: str | None = None) -> tuple[list[list[str]], list[tuple]]
 
 
 def _page_numbers(page, keys):
-    # (the marks of steps not shown, out of the document, are brought to the shown value when their step is shown:
-    # flush does that now, for those alone -- what the page draws it drew in the frame)
-    return page.evaluate("""keys => { window.constructLive.flush(); return keys.map(k => {
+    # (the keys in and the texts out as JSON strings: Playwright checks a structure value by value; the marks of
+    # steps not shown, out of the document, are brought to the shown value when their step is shown: flush does
+    # that now, for those alone -- what the page draws it drew in the frame)
+    return json.loads(page.evaluate("""keys => { window.constructLive.flush(); return JSON.stringify(JSON.parse(keys).map(k => {
         if (k[0].charAt(0) === '#') return '';  // a step's view and ring: in the player's data, for the shown step
         // (the player keeps the groups a step hides out of the document: find looks there too)
         const el = k[0] ? window.constructPlayer.find(k[0]) : document.getElementById('figure');
-        return k[1] === 'viewBox' ? el.getAttribute('data-full') : el.getAttribute(k[1]); }); }""", keys)
+        return k[1] === 'viewBox' ? el.getAttribute('data-full') : el.getAttribute(k[1]); })); }""", json.dumps(keys)))
 
 
 def _compare(page, c, params, v, keys, snapped) -> float:
@@ -245,7 +246,7 @@ _DRAG_READING = f"""async ([g, values, ids]) => {{ const out = [], points = {_PO
       window.constructLive.flush();  // (the steps not shown: as they are when shown; the shown ones untouched)
       out.push([points(ids), anchors()]);
     }}
-    return out; }}"""
+    return JSON.stringify(out); }}"""  # (one string: Playwright checks a returned structure value by value)
 
 
 @pytest.mark.parametrize("name,params,given", _gallery_players(),
@@ -288,7 +289,7 @@ def test_a_drag_keeps_every_point_letter_and_leader_where_a_fresh_replay_draws_t
         # (the camera's glide to the step's view: the drag's first frame takes the step's view at once)
         page.evaluate("k => { const s = document.getElementById('slider'); s.value = k; s.oninput(); }", k)
         # the drag through every value in one call, each drawn in its frame and read there
-        for v, (points, anchors) in zip(values, page.evaluate(_DRAG_READING, [given, values, ids])):
+        for v, (points, anchors) in zip(values, json.loads(page.evaluate(_DRAG_READING, [given, values, ids]))):
             want = fresh[v]
             off = max((math.hypot(x - want[i][0], y - want[i][1]), i) for i, (x, y) in zip(ids, points))
             assert off[0] <= 0.5, f"{name}, {given} = {v:.5g}, step {k}: {off[1]} off by {off[0]:.2f} px"

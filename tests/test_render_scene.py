@@ -210,3 +210,27 @@ def test_a_section_drawn_over_an_area_keeps_its_hatching_out():
     # without the sections the same hatching runs into them
     whole = hatch_segments(ring, 2.0, 45.0)
     assert any(Polygon(o).buffer(-1e-3).intersects(LineString(s)) for s in whole for o in under)
+
+
+def test_whether_a_figure_breaks_is_what_breaking_it_gives(gallery_figure):
+    """sheet.breaks_figure (asked before a long figure is broken, without moving a mark) says what sheet.broken's
+    breaks say, for each construction's first gallery figure as a whole figure and as a plate, and for a vertex a
+    long way below its figure: broken along x, across it, or not."""
+    from construct.gallery import gallery_plan
+    from construct.render.sheet import breaks_figure, broken
+
+    from construct.render.marks import Mark
+
+    # (no gallery figure breaks across)
+    below = [Mark(f"p{i}", i, f"P{i}", MarkKind.POINT, xy, "construction", "compass", "exact")
+             for i, xy in enumerate([(0.0, 0.0), (1.0, 0.5), (0.5, 1.0), (0.5, -20.0)])]
+    first = dict(reversed(gallery_plan()))  # each construction once, at its first gallery parameters
+    figures = [list(build_scene(gallery_figure(name, params)[1], break_axis=False).marks) for name, params in first.items()]
+    seen = {True: 0, False: 0, "across": 0}
+    for marks in figures + [below]:
+        for whole in (True, False):
+            cut = broken(marks, (), whole)[2]
+            assert breaks_figure(marks, (), whole) == bool(cut), (marks[0].id, whole)
+            seen[bool(cut)] += 1
+            seen["across"] += any(b.axis == 1 for b in cut)
+    assert seen[True] and seen[False] and seen["across"], seen  # every way a figure breaks, and does not, asked

@@ -111,9 +111,10 @@ def test_the_writer_writes_what_elementtree_writes(tmp_path, monkeypatch):
 
 
 def test_the_factorys_plain_elements_are_svgwrites():
-    """The writer makes groups, points' circles and animations' <set> itself (svgdoc.Element): each gives the
-    ElementTree element svgwrite's own class gives for the same arguments, children and empty or None
-    attributes included, and a <set> naming its target is svgwrite's."""
+    """The writer makes groups, points' circles, lines, paths given as a string and animations' <set> itself
+    (svgdoc.Element): each gives the ElementTree element svgwrite's own class gives for the same arguments,
+    children and empty or None attributes included; a <set> naming its target, and a path given as a list of
+    commands, are svgwrite's."""
     import xml.etree.ElementTree as ET
 
     import svgwrite
@@ -125,10 +126,15 @@ def test_the_factorys_plain_elements_are_svgwrites():
              ("circle", dict(center=("1.5", "-2"), r="0.25", class_="pt result", id="s0001-O")),
              ("circle", dict(center=(3, 4.5), r=2)),
              ("set", dict(attributeName="class", to="step old", begin="clock.begin+1.5s", fill="freeze")),
-             ("set", dict(href="#s0002", attributeName="visibility", to="hidden"))]
+             ("set", dict(href="#s0002", attributeName="visibility", to="hidden")),
+             ("line", dict(start=("0", "1.5"), end=("-2", "3"), class_="construction straightedge exact", id="s0003-g")),
+             ("line", dict(start=(1, 2.5), end=(3, 4))),
+             ("path", dict(d="M 1 2 A 3 3 0 0 1 4 5", class_="result compass exact", id="s0004-k", stroke=None)),
+             ("path", dict(d="")),
+             ("path", dict(d=["M", 1, 2, "L", (3, 4)]))]  # commands, not a string: svgwrite's Path itself
     for name, kw in cases:
         mine, theirs = getattr(f, name)(**kw), getattr(ref, name)(**kw)
         for parent in (mine, theirs):
             parent.add(ref.circle(center=("0", "0"), r="1"))
         assert ET.tostring(mine.get_xml()) == ET.tostring(theirs.get_xml()), (name, kw)
-    assert type(f.g()) is svgdoc.Element and type(f.circle()) is svgdoc.Element
+    assert all(type(e) is svgdoc.Element for e in (f.g(), f.circle(), f.line(), f.path(d="M 0 0")))

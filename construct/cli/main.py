@@ -12,7 +12,6 @@ from __future__ import annotations
 import argparse
 import codecs
 import contextlib
-import gc
 import os
 import signal
 import sys
@@ -20,6 +19,7 @@ import threading
 import warnings
 from typing import Sequence
 
+from ..io.collector import few_collections
 from ..kernel.errors import ConstructError, ConstructWarning, did_you_mean
 
 EXIT_OK, EXIT_BAD_INPUT = 0, 2  # a failed check exits 1: the commands that check return it
@@ -83,28 +83,6 @@ def _terminate_cleanly():
         yield
     finally:
         signal.signal(signal.SIGTERM, previous)
-
-
-@contextlib.contextmanager
-def _few_collections():
-    """The collector's young passes seldom while a command runs (as in the gallery's workers), then as before.
-
-    A figure and its drawing are tens of thousands of objects that live until the command ends; at
-    Python's default thresholds every 700 new objects start a pass that walks the young ones again, a
-    fifth of rendering a long figure.  What the command was started with (construct, imported) is set
-    aside for the run (``gc.freeze``).  The command owns its process; run in-process (the tests call
-    :func:`main`) it leaves the collector as it found it.
-    """
-    before, mine = gc.get_threshold(), gc.get_freeze_count() == 0  # (objects frozen by another: theirs to unfreeze)
-    if mine:
-        gc.freeze()
-    gc.set_threshold(50_000, 20, 20)
-    try:
-        yield
-    finally:
-        gc.set_threshold(*before)
-        if mine:
-            gc.unfreeze()
 
 
 def _negative_values_attached(parser: argparse.ArgumentParser, argv: Sequence[str]) -> list[str]:
@@ -287,7 +265,7 @@ def _main(argv: Sequence[str] | None) -> int:
             return int(exc.code or 0)
         except UsageError as exc:
             raise UsageError(f"{exc}{_nearest_option(parser, argv, str(exc))}") from None
-        with _terminate_cleanly(), _few_collections():
+        with _terminate_cleanly(), few_collections():
             code = int(args._run(args))
             sys.stdout.flush()  # a full disk behind a redirected stdout shows here, not at exit
             return code

@@ -37,7 +37,7 @@ from ..figure import Figure
 from ..kernel.protocol import Caption, Protocol
 
 __all__ = ["Figure", "Construction", "Cite", "register", "get", "find", "names", "positive", "bounded",
-           "rod_ratio_param", "ENTRY_POINTS"]
+           "rod_ratio_param", "form_rows", "ENTRY_POINTS"]
 
 #: The entry point group under which another package names the modules that register its constructions.
 ENTRY_POINTS = "construct.constructions"
@@ -61,6 +61,13 @@ class Construction:
     #: crank's figure): a live player replays the built protocol over their whole domain without looking for
     #: pieces (:func:`construct.live.sweep.pieces`; tests/test_live.py scans every one).
     steady: tuple[str, ...] = ()
+    #: For the other continuous givens: the build's choices that shape its steps (which points a line runs
+    #: through, which dead centre a circle is struck about), read off a replay of the built protocol over a
+    #: sweep's values -- (replay, the protocol's params) -> an integer array, one row per value, rows equal where
+    #: fresh builds take the same steps from the same objects; or None where it cannot tell (those params).  A
+    #: live player finds the pieces of the domain from it on arrays (:func:`construct.live.sweep.pieces`;
+    #: tests/test_live.py holds it to fresh builds).  None: fresh builds tell.
+    form: Callable[[Any, Mapping[str, Any]], Any] | None = None
     #: Anything else a caller keeps with it (read by no one here).
     extra: Mapping[str, Any] = field(default_factory=dict)
     #: The texts and the figures in them it follows, as a caption cites them.
@@ -259,6 +266,16 @@ def find(name: str) -> Construction | None:
     """The registered construction of that name, or None (a protocol of the user's own)."""
     _load()
     return _REGISTRY.get(name) if isinstance(name, str) else None
+
+
+def form_rows(*choices: Any) -> np.ndarray:
+    """A build's choices over a sweep as :attr:`Construction.form` gives them: one row per value, one integer
+    column per choice (arrays over the values, or numbers the same at every value; booleans are 0 and 1).
+
+    >>> form_rows(np.array([1.0, 2.0]) < 1.5, 3).tolist()
+    [[1, 3], [0, 3]]
+    """
+    return np.stack(np.broadcast_arrays(*(np.atleast_1d(np.asarray(c)) for c in choices)), axis=-1).astype(np.int64)
 
 
 def positive(name: str, value: Any) -> Any:

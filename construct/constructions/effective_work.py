@@ -56,12 +56,14 @@ from __future__ import annotations
 import math
 from typing import Any, Mapping
 
+import numpy as np
+
 from .checking import EUCLIDEAN_TOLERANCE, Check
 from ..kernel.errors import InvalidParameter
 from ..kernel.instruments import Builder
 from ..kernel.proportional import fourth_proportional
 from ..kernel.protocol import Caption
-from . import Construction, Figure, bounded, register
+from . import Construction, Figure, bounded, form_rows, register
 from .domain import MECHANICAL_EFFICIENCY
 from .phrases import BAUMANN_1902, Cite, number
 from .tangential import TANGENTIAL, model_summary, tangential_checks
@@ -222,6 +224,14 @@ def effective_work_plate(fig: Figure) -> dict:
     return {"looks": looks, "furniture": furniture}
 
 
+def effective_work_form(replay: Any, params: Mapping[str, Any]) -> np.ndarray:
+    """The build's choice over a sweep (:attr:`~construct.constructions.Construction.form`): the perpendicular from
+    F to the base is struck through the farther of its ends
+    (:meth:`~construct.kernel.composite.CompositeSteps.drop_perpendicular`), and which that is moves with the rod."""
+    F, n = replay["A2"], params["parts"]
+    return form_rows(F.distance(replay["U0"]) >= F.distance(replay[f"U{n}"]))
+
+
 #: The plate: Fig. 26's diagram, the effective line and mean line, the areas EBF, LHM, FCODP, N.
 PLATE = (r"tbase", r"tcurve", r"mean", r"excess", r"A[12]", r"U\d+", r"ecurve", r"emean", r"effective", r"[LM]\.eff",
          r"deficit\.\w+", r"eff\d+", r"N\.eff", r"N\.eff\.F")
@@ -249,6 +259,7 @@ EFFECTIVE_WORK = register(Construction(
     book_params=({"rod_ratio": 5.0, "parts": 9, "kappa": 8.0},),
     structural=("parts", "method", "filling", "compression"),
     steady=("kappa",),
+    form=effective_work_form,  # (the perpendicular from F through the farther end of the base: the rod moves them)
     cites=(Cite(BAUMANN_1902, "Fig. 27"),),
     wording=effective_work_wording,
     methods=TANGENTIAL.methods,

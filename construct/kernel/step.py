@@ -112,20 +112,23 @@ class Step:
         return d
 
     def compact_dict(self, group_ids: Mapping[tuple[str, ...], int]) -> dict[str, Any]:
-        """As :meth:`as_dict` for the protocol file: defaults left out, the group path as its number."""
-        d = self.as_dict()
-        if not d["params"]:
-            del d["params"]
-        if self.provenance == EXACT:
-            del d["provenance"]
-        else:
-            d["provenance"] = {k: v for k, v in d["provenance"].items() if v is not None}
-        if self.role == "construction":
-            del d["role"]
+        """As :meth:`as_dict` for the protocol file: defaults left out, the group path as its number (the same
+        keys in the same order, made directly: a protocol of 3600 parts writes 32,000 steps)."""
+        d: dict[str, Any] = {"index": self.index, "tool": self.tool, "op": self.op, "inputs": list(self.inputs),
+                             "outputs": list(self.outputs)}
+        if self.params:
+            d["params"] = jsonable(dict(self.params))
+        d["caption"] = {"de": self.caption.de, "en": self.caption.en}
+        p = self.provenance
+        if p != EXACT:
+            d["provenance"] = {k: v for k, v in (("kind", p.kind), ("method", p.method), ("error", p.error))
+                               if v is not None}
         if self.group:
             d["group"] = group_ids[self.group]
-        else:
-            del d["group"]
+        if self.role != "construction":
+            d["role"] = self.role
+        if self.labels:
+            d["labels"] = {name: text for name, text in self.labels}
         return d
 
     def __reduce__(self):

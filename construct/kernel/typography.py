@@ -198,6 +198,6 @@ def book_symbols(text: str) -> str:
     'Ordinate in 6′, unit force P′ = r'
     """
     for need, pattern, rep in _SYMBOLS:
-        if any(n in text for n in need):
+        if any(map(text.__contains__, need)):  # (no generator: every caption of a long figure asks)
             text = pattern.sub(rep, text)
     return equation(primed(text))

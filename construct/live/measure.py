@@ -17,6 +17,7 @@ does not shrink its miss, instead of being refined down to :data:`MIN_CELL`.
 
 from __future__ import annotations
 
+import heapq
 from typing import Any
 
 import numpy as np
@@ -91,11 +92,14 @@ class Measure:
         self.end_held = drawing.end is not None and len(scene.end_furniture) > own
         # the marks' keys as this value's page has them: each mark's numbers are a run of them, the runs in the
         # page's order (a sweep draws each mark's numbers for every value at once, :meth:`frames`)
-        self.keys, _, _, texts = self(built)
+        self.keys, _, _, texts = self._measured(scene)  # (the drawing's scene is what __call__ would make)
         self.runs = self._runs(self.keys)
         # a protocol of another piece of the domain (live.sweep.pieces): its scene, runs and keys, made once (the
         # protocol kept with them: its id stays its own)
         self._forms = {id(built.protocol): (built.protocol, scene, self.runs, self.keys)}
+        #: per protocol (by its id, kept alive in _forms): the marks a sweep's drawing boxes, and the rows of each
+        #: view's and ring's marks among them (:meth:`frames`)
+        self._rows: dict[int, tuple[tuple[str, ...], dict[tuple[str, ...], np.ndarray]]] = {}
         # the letters whose text is read off the figure (an angle), by the id of their letter (a lettered line's
         # letter stands at a point of its own, "NAME.at")
         readings = {name: label for st in built.protocol.steps for name, label in st.labels if "{∠" in label}
@@ -117,9 +121,10 @@ class Measure:
         """The scene, the marks' runs and the keys of *protocol* (drawn at the first value of *replay*)."""
         if id(protocol) not in self._forms:
             first = Figure(protocol, replay.take(0, whole=True), self.construction.check, self.construction)
-            keys = self(first)[0]
-            self._forms[id(protocol)] = (protocol, scene_for(self.construction, first, ending=self.style.camera),
-                                         self._runs(keys), keys)
+            # (with its end state where the player shows one: __call__'s scene)
+            scene = scene_for(self.construction, first, ending=self.style.camera)
+            keys = self._measured(scene)[0]
+            self._forms[id(protocol)] = (protocol, scene, self._runs(keys), keys)
         return self._forms[id(protocol)][1:]
 
     def _boxes(self, scene, vp) -> list[tuple[float, float, float, float] | None]:
@@ -178,12 +183,23 @@ class Measure:
         width, height = (np.round(v, 2) for v in at_once.size)
         px = at_once.page_px
 
+        # every mark's box (x0, x1, y0, y1: rows of marks x values), each view's and ring's marks as rows of them
+        # (found once for a protocol's marks: every round asks for the same boxes of the same marks)
+        marked = tuple(at_once.extremes)
+        ends = [np.vstack([e[k] for e in at_once.extremes.values()]) if marked else None for k in range(4)]
+        found = self._rows.get(id(protocol))
+        if found is None or found[0] != marked:
+            at = {i: r for r, i in enumerate(marked)}
+            boxed = map(tuple, self.framed + [ids for _, ids in self.rings])
+            found = self._rows[id(protocol)] = (marked, {ids: np.asarray([at[i] for i in ids if i in at], dtype=int)
+                                                         for ids in boxed})
+        picks = found[1]
+
         def box_of(ids: list[str]) -> tuple | None:  # the box of marks on the page of every value (canvas px)
-            e = [at_once.extremes[i] for i in ids if i in at_once.extremes]
-            if not e:
+            r = picks[tuple(ids)]
+            if not r.size:
                 return None
-            (x0, y0), (x1, y1) = (px(np.min([b[0] for b in e], 0), np.max([b[3] for b in e], 0)),
-                                  px(np.max([b[1] for b in e], 0), np.min([b[2] for b in e], 0)))
+            (x0, y0), (x1, y1) = (px(ends[0][r].min(0), ends[3][r].max(0)), px(ends[1][r].max(0), ends[2][r].min(0)))
             return x0, y0, x1, y1
 
         carried = [self._carried_all(j, box_of(ids), width, height) for j, ids in enumerate(self.framed)]
@@ -196,6 +212,7 @@ class Measure:
                           np.column_stack([np.round((b[0] + b[2]) / 2, 2), np.round((b[1] + b[3]) / 2, 2)]))
         blocks.append(at_once.breaks_page())
         table = np.hstack(blocks)
+        fits = [tuple(row) for row in at_once.fit.tolist()]
         out = []
         for i in range(size):
             if not at_once.ok[i]:
@@ -206,7 +223,9 @@ class Measure:
             if self.readings:
                 taken = replay.take(i)
                 texts = {**self.texts, **{k: reading(label, taken) for k, label in self.readings.items()}}
-            out.append((keys, table[i].tolist(), tuple(float(v) for v in at_once.fit[i]), texts))
+            # (the row as an array: the sweep reads every value's numbers as one; a list of floats would be
+            # made and read back per value)
+            out.append((keys, table[i], fits[i], texts))
         return out
 
     def _carried_all(self, j: int, box: tuple | None, W: np.ndarray, H: np.ndarray) -> list[np.ndarray]:
@@ -229,15 +248,19 @@ class Measure:
         return [np.where(whole, f, np.round(v, 2) + 0.0) for f, v in zip((zero, zero, W, H), view)]
 
     def __call__(self, figure: Figure) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:
-        st = self.style
         # (with its end state where the player shows one: its own marks, the plate's, are drawn as the rest)
-        scene = scene_for(self.construction, figure, ending=st.camera)
+        return self._measured(scene_for(self.construction, figure, ending=self.style.camera))
+
+    def _measured(self, scene: Any) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:
+        """:meth:`__call__` of the figure whose scene is *scene*."""
+        st = self.style
         vp = Viewport.fit(scene.bbox, st, 0)
         full = (0.0, 0.0, round(vp.width, 2), round(vp.height, 2))
         # each layer's elements in the order of the marks, the layers in the page's order
         layers: dict[str, tuple[list, list]] = {name: ([], []) for name in Drawing.LAYERS}
         texts: dict[str, str] = {}
-        for m in scene.marks + scene.end_marks:
+        # (the end state's own marks among the rest by the step that made their object, as the drawing has them)
+        for m in heapq.merge(scene.marks, sorted(scene.end_marks, key=lambda m: m.step), key=lambda m: m.step):
             if m.label and not m.id.endswith("-end"):  # (an end state's letter has no id: it follows its point)
                 texts[f"{m.id}-label"] = m.label
             if m.kind is MarkKind.AREA:  # drawn by the page from the curves that bound it (areas_of)

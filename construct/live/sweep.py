@@ -47,8 +47,8 @@ from ..render.styles import STYLES
 from ..render.wire import arc_flags, blend, radii
 from .measure import Measure
 
-__all__ = ["LiveGiven", "LiveSweep", "Piece", "live_givens", "live_sweep", "pieces", "scan_pieces", "reach",
-           "check_picks", "REFINE_PX", "QUANTUM_PX", "MIN_CELL", "CHECK_VALUES"]
+__all__ = ["LiveGiven", "LiveSweep", "Piece", "live_givens", "live_sweep", "pieces", "scan_pieces", "form_pieces",
+           "reach", "check_picks", "REFINE_PX", "QUANTUM_PX", "MIN_CELL", "CHECK_VALUES"]
 
 
 @dataclass(frozen=True)
@@ -128,15 +128,7 @@ def reach(construction: Construction, figure: Figure, given: str, domain: Domain
     >>> reach(c, fig, "rod_ratio", ROD_RATIO, 5.0).low, reach(c, c.figure(parts=12), "rod_ratio", ROD_RATIO, 5.0).low
     (2.29, 1.05)
     """
-    givens, params = dict(figure.replay.givens), figure.protocol.params
-
-    def holds(v: float) -> bool:
-        try:
-            construction.validate({k: (float(x[0]) if isinstance(x, np.ndarray) else x)
-                                   for k, x in construction.given_sweep(givens, given, [v], params).items()})
-        except InvalidParameter:
-            return False
-        return True
+    holds = functools.partial(_holds, construction, dict(figure.replay.givens), figure.protocol.params, given)
 
     def edge(inside: float, outside: float, up: bool) -> float:
         a, b = math.log10(inside), math.log10(outside)
@@ -150,6 +142,16 @@ def reach(construction: Construction, figure: Figure, given: str, domain: Domain
     low = domain.low if holds(domain.low) else edge(initial, domain.low, False)
     high = domain.high if holds(domain.high) else edge(initial, domain.high, True)
     return domain if (low, high) == (domain.low, domain.high) else Domain(low, high, domain.why, domain.advice)
+
+
+def _holds(construction: Construction, givens: dict[str, Any], params: Any, given: str, v: float) -> bool:
+    """Whether the construction holds with *given* at *v*, the figure's other givens kept (its validator asked)."""
+    try:
+        construction.validate({k: (float(x[0]) if isinstance(x, np.ndarray) else x)
+                               for k, x in construction.given_sweep(givens, given, [v], params).items()})
+    except InvalidParameter:
+        return False
+    return True
 
 
 #: How many values of a given's domain (evenly in log10) a fresh build is asked at for the steps' form, and to what
@@ -173,15 +175,18 @@ def _form(protocol: Any) -> tuple:
     return tuple((s.op, tuple(s.inputs), tuple(s.outputs)) for s in protocol.steps)
 
 
-def pieces(construction: Construction, figure: Figure, given: str, domain: Domain) -> list[Piece]:
+def pieces(construction: Construction, figure: Figure, given: str, domain: Domain,
+           scan: int = FORM_SCAN) -> list[Piece]:
     """*domain* in the parts where a fresh build of *figure* at another value of *given* takes the same steps from
     the same objects: one piece where the form never changes (a replay of the built protocol is then the fresh
     build everywhere); several where it does (Tafel I's piston-force pieces run through the points between their
     corners: which points those are depends on the rod).  Each piece's protocol is built inside it (the built
-    figure's own in its piece); the changes are found from FORM_SCAN fresh builds, then by bisection in log10.
-    The builds that only ask for the steps' form are not lettered (:func:`~construct.kernel.instruments.unlettered`:
-    a third of a build); a given the construction names in :attr:`~construct.constructions.Construction.steady` is one
-    piece without a build (tests/test_live.py scans them).
+    figure's own in its piece); the changes are found at *scan* values evenly in log10, then by bisection in
+    log10 to FORM_TOL.  Where the construction reads its choices off a sweep
+    (:attr:`~construct.constructions.Construction.form`), the steps' form at all the values of a round is one
+    replay of the built protocol over them (:func:`form_pieces`); elsewhere a fresh build at each value tells it
+    (:func:`scan_pieces`).  A given the construction names in :attr:`~construct.constructions.Construction.steady`
+    is one piece without either (tests/test_live.py holds both to the fresh builds).
 
     >>> from construct.constructions import get
     >>> c = get("crank"); fig = c.figure(parts=3)
@@ -192,18 +197,76 @@ def pieces(construction: Construction, figure: Figure, given: str, domain: Domai
     """
     if given in construction.steady:
         return [Piece(domain.low, domain.high, figure.protocol)]
-    return scan_pieces(construction, figure, given, domain)
+    if construction.form is not None:
+        found = form_pieces(construction, figure, given, domain, scan)
+        if found is not None:
+            return found
+    return scan_pieces(construction, figure, given, domain, scan)
+
+
+def _keywords(construction: Construction, figure: Figure) -> dict[str, Any]:
+    """What a fresh build of *figure* is given: its givens and parameters, the construction's defaults else."""
+    givens, params = figure.replay.givens, figure.protocol.params
+    return {k: givens[k] if k in givens else params[k] if isinstance(params.get(k), (int, float, str, bool))
+            else construction.defaults[k] for k in construction.defaults}
+
+
+def _value_at(domain: Domain):
+    """A value of the given from its log10 *u*, inside *domain* (how a scan and the pieces' ends read it)."""
+    return lambda u: float(min(max(10 ** u, domain.low), domain.high))
+
+
+def _changes(forms, us: list[float], tol: float) -> tuple[list[tuple[float, float]], dict[float, Any]]:
+    """Every change of form between neighbours of *us* (log10 of the given), each found by bisection down to a
+    cell of *tol*: the cells (a, b) across which it changes, in order, and the form found at every value asked.
+    *forms* tells the forms at a list of values at once (each round of the bisection asks its midpoints together)."""
+    known = dict(zip(us, forms(us)))
+    cuts: list[tuple[float, float]] = []
+    todo = [(a, b) for a, b in zip(us[:-1], us[1:]) if known[a] != known[b]]
+    while todo:
+        mids = [(a + b) / 2 for a, b in todo if b - a > tol and (a + b) / 2 not in known]
+        known.update(zip(mids, forms(mids)))
+        nxt = []
+        for a, b in todo:
+            if b - a <= tol:
+                cuts.append((a, b))
+                continue
+            m = (a + b) / 2
+            if known[m] != known[a]:
+                nxt.append((a, m))
+            if known[m] != known[b]:
+                nxt.append((m, b))
+        todo = nxt
+    return sorted(cuts), known
+
+
+def _pieces_from(construction: Construction, figure: Figure, given: str, domain: Domain, scan: int, forms,
+                 built: Any, holds) -> list[Piece]:
+    """The pieces of *domain* from the steps' forms (*forms*: at a list of log10 values at once; *built*: the
+    built figure's), each other piece's protocol from one lettered build inside it; the whole domain as one piece
+    where no change is found or a piece would begin where the construction does not hold."""
+    value = _value_at(domain)
+    lo, hi = math.log10(domain.low), math.log10(domain.high)
+    initial = math.log10(float(figure.replay.givens[given]))
+    us = sorted(set(np.linspace(lo, hi, scan).tolist()) | {initial})
+    cuts, form = _changes(forms, us, FORM_TOL)
+    if not cuts:
+        return [Piece(domain.low, domain.high, figure.protocol)]
+    ends = [lo] + [x for a, b in cuts for x in (a, b)] + [hi]
+    if not all(holds(a) for a in ends[0::2]):  # a build that fails inside the domain (reach found it holds)
+        return [Piece(domain.low, domain.high, figure.protocol)]
+    kw = _keywords(construction, figure)
+    return [Piece(domain.low if a == lo else 10 ** a, domain.high if b == hi else 10 ** b,
+                  figure.protocol if form[a] == built else construction.build(**{**kw, given: value(a)}).protocol)
+            for a, b in zip(ends[0::2], ends[1::2])]
 
 
 def scan_pieces(construction: Construction, figure: Figure, given: str, domain: Domain,
                 scan: int = FORM_SCAN) -> list[Piece]:
     """:func:`pieces` found by fresh builds at *scan* values, whatever the construction says of *given*."""
-    givens, params = dict(figure.replay.givens), figure.protocol.params
-    kw = {k: givens[k] if k in givens else params[k] if isinstance(params.get(k), (int, float, str, bool))
-          else construction.defaults[k] for k in construction.defaults}
-    built = _form(figure.protocol)
+    kw = _keywords(construction, figure)
+    value = _value_at(domain)
     made: dict[float, tuple | None] = {}  # log10 of a value -> the steps' form a fresh build takes there (None: none)
-    value = lambda u: float(min(max(10 ** u, domain.low), domain.high))  # noqa: E731
 
     def form(u: float) -> tuple | None:
         if u not in made:
@@ -214,43 +277,63 @@ def scan_pieces(construction: Construction, figure: Figure, given: str, domain: 
                 made[u] = None
         return made[u]
 
+    built = _form(figure.protocol)
+    if form(math.log10(float(figure.replay.givens[given]))) != built:
+        # the figure is not what its givens build (a protocol replayed by hand): as it is
+        return [Piece(domain.low, domain.high, figure.protocol)]
+    return _pieces_from(construction, figure, given, domain, scan, lambda us: [form(u) for u in us], built,
+                        lambda u: form(u) is not None)
+
+
+def form_pieces(construction: Construction, figure: Figure, given: str, domain: Domain,
+                scan: int = FORM_SCAN) -> list[Piece] | None:
+    """:func:`pieces` found on arrays: the steps' form at every value of a round of the bisection is read off one
+    replay of the built protocol over them (:attr:`~construct.constructions.Construction.form`: the build's
+    choices, made on arrays), not from a fresh build at each.  None where the construction cannot tell."""
+    protocol, givens = figure.protocol, dict(figure.replay.givens)
+    value = _value_at(domain)
+
+    def forms(us: list[float]) -> list[bytes]:
+        if not us:
+            return []
+        swept = construction.given_sweep(givens, given, np.asarray([value(u) for u in us]), protocol.params)
+        rows = np.asarray(read(protocol.replay(swept), protocol.params), dtype=np.int64)
+        return [row.tobytes() for row in np.ascontiguousarray(np.broadcast_to(rows, (len(us), rows.shape[-1])))]
+
+    read = construction.form
+    if read is None or read(figure.replay, protocol.params) is None:  # (its choices depend on its params only)
+        return None
     initial = math.log10(float(givens[given]))
-    if form(initial) != built:  # the figure is not what its givens build (a protocol replayed by hand): as it is
-        return [Piece(domain.low, domain.high, figure.protocol)]
-    lo, hi = math.log10(domain.low), math.log10(domain.high)
-    us = sorted(set(np.linspace(lo, hi, scan).tolist()) | {initial})
-    cuts: list[tuple[float, float]] = []
-
-    def split(a: float, b: float) -> None:  # every change of form between a and b
-        if b - a <= FORM_TOL:
-            cuts.append((a, b))
-            return
-        m = (a + b) / 2
-        if form(m) != form(a):
-            split(a, m)
-        if form(m) != form(b):
-            split(m, b)
-
-    for a, b in zip(us[:-1], us[1:]):
-        if form(a) != form(b):
-            split(a, b)
-    if not cuts:
-        return [Piece(domain.low, domain.high, figure.protocol)]
-    ends = [lo] + [x for a, b in cuts for x in (a, b)] + [hi]
-    if any(form(a) is None for a in ends[0::2]):  # a build that fails inside the domain (reach found it holds)
-        return [Piece(domain.low, domain.high, figure.protocol)]
-    # each other piece's protocol: one lettered build inside it
-    return [Piece(domain.low if a == lo else 10 ** a, domain.high if b == hi else 10 ** b,
-                  figure.protocol if form(a) == built else construction.build(**{**kw, given: value(a)}).protocol)
-            for a, b in zip(ends[0::2], ends[1::2])]
+    at = forms([initial])
+    with unlettered():  # the figure is what its givens build (not a protocol replayed by hand), as the scan asks
+        try:
+            fresh = construction.build(**{**_keywords(construction, figure), given: value(initial)}).protocol
+        except InvalidParameter:
+            fresh = None
+    if fresh is None or _form(fresh) != _form(protocol):
+        return [Piece(domain.low, domain.high, protocol)]
+    return _pieces_from(construction, figure, given, domain, scan, forms, at[0],
+                        lambda u: _holds(construction, givens, protocol.params, given, value(u)))
 
 
-@functools.lru_cache(maxsize=4)
-def _key_columns(keys: tuple[tuple[str, str, str], ...]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Which key each number of *keys* belongs to, which numbers are views, which are large-arc flags
-    (asked at every cell of the refinement, for the same keys)."""
+_KEY_COLUMNS: dict[int, tuple] = {}
+
+
+def _key_columns(keys: list[tuple[str, str, str]]) -> tuple[np.ndarray, ...]:
+    """Which key each number of *keys* belongs to, which numbers are views, which are large-arc flags, which are
+    radii, and where each key's numbers begin (the keys that have any, and their first numbers): asked at every
+    cell of the refinement, for the same list of keys (known by its identity: hashing thousands of keys at every
+    cell cost more than the cell)."""
+    got = _KEY_COLUMNS.get(id(keys))
+    if got is not None and got[0] is keys:
+        return got[1]
     owner = np.asarray([i for i, k in enumerate(keys) for _ in range(k[2].count("#"))], dtype=int)
-    return owner, _columns(keys, lambda k: k[0] == "#zoom"), arc_flags(keys), radii(keys)
+    starts = np.flatnonzero(np.r_[True, owner[1:] != owner[:-1]]) if owner.size else np.zeros(0, dtype=int)
+    made = (owner, _columns(keys, lambda k: k[0] == "#zoom"), arc_flags(keys), radii(keys), owner[starts], starts)
+    if len(_KEY_COLUMNS) >= 4:
+        _KEY_COLUMNS.clear()
+    _KEY_COLUMNS[id(keys)] = (keys, made)
+    return made
 
 
 def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
@@ -262,7 +345,7 @@ def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
     large-arc flags and snapped keys come from either end
     (the worse counts); a wrong flag moves the arc by the distance between the two centres its ends and
     radius allow, 2 sqrt(r^2 - (c/2)^2)."""
-    owner, views, flags, geometric = _key_columns(tuple(keys))
+    owner, views, flags, geometric, keyed, starts = _key_columns(keys)
     if owner.size == 0:
         return 0.0, {}
     q = lambda n: np.round(n / QUANTUM_PX) * QUANTUM_PX  # noqa: E731
@@ -271,18 +354,17 @@ def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
     nearest = np.isin(owner, list(snap)) if snap else np.zeros(owner.size, dtype=bool)
     col_err[nearest] = np.maximum(np.abs(na - exact), np.abs(nb - exact))[nearest]
     col_err[views] = 0.0  # views frame the figure: blended, not refined for
-    for c in np.nonzero(flags & ~nearest)[0]:
-        col_err[c] = 0.0
-        if na[c] != exact[c] or nb[c] != exact[c]:  # c is the flag: the arc's numbers are c-5 .. c+3
-            x0, y0, r, x1, y1 = exact[c - 5], exact[c - 4], exact[c - 3], exact[c + 2], exact[c + 3]
-            half = math.hypot(x1 - x0, y1 - y0) / 2
-            col_err[c] = 2 * math.sqrt(max(r * r - half * half, 0.0))
+    c = np.flatnonzero(flags & ~nearest)  # the flags: each arc's numbers are c-5 .. c+3
+    flipped = (na[c] != exact[c]) | (nb[c] != exact[c])
+    half = np.hypot(exact[c + 2] - exact[c - 5], exact[c + 3] - exact[c - 4]) / 2
+    r = exact[c - 3]
+    col_err[c] = np.where(flipped, 2 * np.sqrt(np.maximum(r * r - half * half, 0.0)), 0.0)
     key_err = np.zeros(len(keys))
-    np.maximum.at(key_err, owner, col_err)
+    key_err[keyed] = np.maximum.reduceat(col_err, starts)
     # what a culprit misses by in its coordinates (a large-arc flag that flips is not a jump of the arc: the
     # two arcs its ends allow meet as it flips, and refining converges there)
     coord_err = np.zeros(len(keys))
-    np.maximum.at(coord_err, owner, np.where(flags & ~nearest, 0.0, col_err))
+    coord_err[keyed] = np.maximum.reduceat(np.where(flags & ~nearest, 0.0, col_err), starts)
     bad = np.nonzero(key_err > REFINE_PX)[0].tolist()
     return float(col_err.max()), {k: float(coord_err[k]) for k in bad}
 
@@ -389,25 +471,27 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     lo, hi = math.log10(domain.low), math.log10(domain.high)
     us = list(np.linspace(lo, hi, start))
     values = lambda u: np.clip(10.0 ** np.asarray(u), domain.low, domain.high)  # noqa: E731
-    frames, _ = _frames(construction, figure, given, values(us), measure, protocol)
     # each value's numbers as one array, made once (every cell it bounds reads them)
     as_arrays = lambda fs: [(f[0], np.asarray(f[1], dtype=float), *f[2:]) for f in fs]  # noqa: E731
-    data = dict(zip(us, as_arrays(frames)))
+    data: dict[float, tuple] = {}
     todo = list(zip(us[:-1], us[1:]))
+    first = us  # the starting values are drawn in the first round, with its midpoints (one sweep, not two)
     jumps: list[tuple[float, float]] = []
     snap: set[int] = set()  # keys drawn from the nearer grid value
     bound = 0.0
     # per cell, its culprits' errors in the cell it was split from and in that one's parent: a mark that
     # jumps misses by the same at every depth, a smooth one by a quarter at each halving
     before: dict[tuple[float, float], tuple[dict[int, float], dict[int, float]]] = {}
-    while todo:
+    while todo or first:
         mids = [(a + b) / 2 for a, b in todo]
         # and the midpoints of their halves, drawn ahead: a cell that must be split has its halves tested in the
         # same round (a round draws every mark of the figure once, over all its values: its cost is the marks',
         # not the values'); what no cell needed is dropped
         ahead = [q for a, b in todo for q in _ahead(a, b, AHEAD)]
-        drawn, _ = _frames(construction, figure, given, values(mids + ahead), measure, protocol)
-        got = dict(zip(mids + ahead, as_arrays(drawn)))
+        drawn, _ = _frames(construction, figure, given, values(first + mids + ahead), measure, protocol)
+        got = dict(zip(first + mids + ahead, as_arrays(drawn)))
+        data.update((u, got.pop(u)) for u in first)
+        first = []
         nxt = []
         queue = collections.deque(todo)
         while queue:

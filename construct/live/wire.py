@@ -184,16 +184,8 @@ def encode(live: LiveSweep) -> dict[str, Any]:
     q = np.round(as_stored(live.drawn, live.fit, kinds) / quanta).astype(np.int64)
     fit = live.fit if live.fit is not None else np.zeros((rows, 3))
     # identical columns (a point's coordinate in its circle, its lines, its arcs) travel once, with the union
-    # of their kept values; stored in the order the columns first appear (neighbours stay neighbours).  A
-    # column is known by its bytes (np.unique over columns sorts them all: half the encoding's time)
-    whole = np.ascontiguousarray(np.vstack([q, keep, kinds[None, :]]).T)
-    seen: dict[bytes, int] = {}
-    colmap = np.empty(cols, dtype=np.int64)
-    firsts: list[int] = []
-    for c in range(cols):
-        colmap[c] = seen.setdefault(whole[c].tobytes(), len(firsts))
-        if colmap[c] == len(firsts):
-            firsts.append(c)
+    # of their kept values; stored in the order the columns first appear (neighbours stay neighbours)
+    colmap, firsts = _same_columns(q, keep, kinds)
     pick = np.asarray(firsts, dtype=np.int64)
     uq, ukeep, ukinds = q[:, pick], keep[:, pick], kinds[pick]
     ukeep[[0, -1]] = True
@@ -213,6 +205,36 @@ def encode(live: LiveSweep) -> dict[str, Any]:
     return {"data": base64.b64encode(zlib.compress(payload, 9)).decode("ascii"), "mapw": mapw,
             "ucols": int(uq.shape[1]), "q": STORED_PX, "qx": float(_quanta(live, np.ones(1, dtype=np.int8))[0]),
             "ql": float(_quanta(live, np.full(1, LOG, dtype=np.int8))[0])}
+
+
+def _same_columns(q: np.ndarray, keep: np.ndarray, kinds: np.ndarray) -> tuple[np.ndarray, list[int]]:
+    """Which columns of (q, keep, kinds) are the same (grid x columns, each column's values, kept grid values
+    and kind): for each column the number of the first one like it, counting those in order, and those firsts.
+
+    A column is known by two weighted sums of its numbers (integer arithmetic, wrapping: one pass over the
+    matrix, no sort of its columns, no copy of it turned on its side), and every column is then compared whole
+    with the first one of its sums: two different columns with the same sums are told apart by their bytes.
+
+    >>> m, f = _same_columns(np.array([[1, 2, 1], [3, 4, 3]]), np.ones((2, 3), dtype=bool), np.zeros(3, dtype=np.int8))
+    >>> m.tolist(), f
+    ([0, 1, 0], [0, 1])
+    """
+    rows, cols = q.shape
+    weights = np.random.default_rng(28).integers(1, 2 ** 62, size=(2 * rows + 1, 2), dtype=np.int64)
+    with np.errstate(over="ignore"):
+        sums = q.T @ weights[:rows] + keep.T.astype(np.int64) @ weights[rows:2 * rows] \
+            + kinds.astype(np.int64)[:, None] * weights[2 * rows]
+    seen: dict[tuple[int, int], int] = {}
+    colmap = np.fromiter((seen.setdefault(s, c) for c, s in enumerate(map(tuple, sums.tolist()))), dtype=np.int64,
+                         count=cols)
+    same = (q == q[:, colmap]).all(axis=0) & (keep == keep[:, colmap]).all(axis=0) & (kinds == kinds[colmap])
+    if not same.all():  # two columns with the same sums: by their bytes
+        whole = np.ascontiguousarray(np.vstack([q, keep, kinds[None, :]]).T)
+        by_bytes: dict[bytes, int] = {}
+        colmap = np.fromiter((by_bytes.setdefault(whole[c].tobytes(), c) for c in range(cols)), dtype=np.int64,
+                             count=cols)
+    firsts = np.flatnonzero(colmap == np.arange(cols))
+    return np.searchsorted(firsts, colmap), firsts.tolist()
 
 
 def live_data(live: LiveSweep) -> dict[str, Any]:

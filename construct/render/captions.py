@@ -20,6 +20,7 @@ True
 
 from __future__ import annotations
 
+import re
 from typing import Mapping, NamedTuple, Protocol, Sequence
 
 from ..kernel.letters import (CAPTION_LIMIT, PLATE_CAPTION_LINES, TITLE_LIMIT, Reader, book_symbols, displayed,
@@ -42,6 +43,10 @@ class Captioned(Protocol):
     def caption(self, k: int) -> tuple[str, str]: ...
 
 
+#: The white space other than a space that the wrapper turns into spaces.
+_WHITE = re.compile("[\t\n\r\x0b\x0c]")
+
+
 def wrap(text: str, width_px: float, size: float) -> list[str]:
     """Lines of *text* that fit *width_px* at font size *size* (an average glyph is ~0.56 em).
 
@@ -52,7 +57,7 @@ def wrap(text: str, width_px: float, size: float) -> list[str]:
     [125, 125, 68]
     """
     chars = max(20, int(width_px / (0.56 * size)))
-    if len(text) <= chars and text == text.strip() and not any(c in text for c in "\t\n\r\x0b\x0c"):
+    if len(text) <= chars and text == text.strip() and _WHITE.search(text) is None:
         return [text]  # one line as it stands: what the wrapper would return, without its cost
     return wrap_chars(text, chars) or [""]
 

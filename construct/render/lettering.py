@@ -167,8 +167,9 @@ class _Grid:
     def __init__(self, cell: float):
         self.cell = cell
         self.cells: dict[tuple[int, int], list[tuple[float, float, float, float]]] = {}
-        #: a crowded cell's boxes as one array (asked at once), with how many boxes it held when made
-        self.arrays: dict[tuple[int, int], Any] = {}
+        #: a crowded cell's boxes as one array (asked at once) and the box round them all, with how many boxes the
+        #: cell held when made
+        self.arrays: dict[tuple[int, int], tuple[Any, tuple[float, float, float, float]]] = {}
         #: the box that last answered "taken": the next spot tried is near, and it likely takes that too
         self.last: tuple[float, float, float, float] = (math.inf, math.inf, -math.inf, -math.inf)
 
@@ -201,10 +202,15 @@ class _Grid:
             return True
         if len(got) > _CROWD:
             # hundreds of points in one cell (3600 piston positions on a stroke): asked at once
-            a = self.arrays.get(key)
-            if a is None or len(a) != len(got):
-                a = self.arrays[key] = np.array(got)
-            return bool(((x0 < a[:, 2]) & (a[:, 0] < x1) & (y0 < a[:, 3]) & (a[:, 1] < y1)).any())
+            got_a = self.arrays.get(key)
+            if got_a is None or len(got_a[0]) != len(got):
+                a = np.array(got)
+                got_a = self.arrays[key] = (a, (float(a[:, 0].min()), float(a[:, 1].min()), float(a[:, 2].max()),
+                                                float(a[:, 3].max())))
+            a, o = got_a
+            # (a row of points along a stroke fills a strip of its cell: a box above or below it misses them all)
+            return x0 < o[2] and o[0] < x1 and y0 < o[3] and o[1] < y1 and \
+                bool(((x0 < a[:, 2]) & (a[:, 0] < x1) & (y0 < a[:, 3]) & (a[:, 1] < y1)).any())
         for k, o in enumerate(got):
             if x0 < o[2] and o[0] < x1 and y0 < o[3] and o[1] < y1:
                 # to the front of its cell: the next spot tried is near, and it likely takes that too
@@ -425,13 +431,17 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                 spot = (px + ox, py + oy, box, od)
         clear = None  # with soft lines: the first free spot near the point that no line crosses
         least = None  # else the near free spot the least of those lines would be broken for: (length, spot)
+        ring: dict[int, tuple[float, float]] = {}  # each direction's cosine and sine, for all distances
         for dist in (() if spot else _DISTANCES + tuple(distances)):
             for turn in (_TURNS if dist in _DISTANCES else _TURNS_FAR):
-                a = base + math.radians(turn)
+                cs = ring.get(turn)
+                if cs is None:
+                    a = base + math.radians(turn)
+                    cs = ring[turn] = (math.cos(a), math.sin(a))
                 # the letter's centre sits *dist* letter heights from the point (plus half its
                 # extra width sideways); its baseline a third of a letter lower
-                lx = px + math.cos(a) * (dist * size + max(0.0, w - 0.6 * size) / 2)
-                ly = py + dist * size * math.sin(a) + 0.35 * size
+                lx = px + cs[0] * (dist * size + max(0.0, w - 0.6 * size) / 2)
+                ly = py + dist * size * cs[1] + 0.35 * size
                 box = box_at(lx, ly)
                 if first is None:
                     first = (lx, ly, box, dist)

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import collections
 import dataclasses
+import functools
 import math
 from dataclasses import dataclass
 from enum import Enum
@@ -282,17 +283,19 @@ def circle_extent(circle: Circle, pts: list[Point], margin: float, role: str,
     return MarkKind.ARC, (cx, cy, r, start, sweep)
 
 
-def _arc_extremes(g: tuple) -> list[tuple[float, float]]:
-    """An arc's ends and the quarter points it passes: its exact box, in at most six points."""
+@functools.lru_cache(maxsize=1 << 16)
+def _arc_extremes(g: tuple) -> tuple[tuple[float, float], ...]:
+    """An arc's ends and the quarter points it passes: its exact box, in at most six points (kept: breaking a
+    figure's axis, its box and its groups' boxes ask every arc several times)."""
     cx, cy, r, a0, sw = g
     quarter = math.pi / 2
     angles = [a0, a0 + sw] + [q * quarter for q in range(math.ceil(min(a0, a0 + sw) / quarter),
                                                           math.floor(max(a0, a0 + sw) / quarter) + 1)]
-    return [(cx + r * math.cos(a), cy + r * math.sin(a)) for a in angles]
+    return tuple([(cx + r * math.cos(a), cy + r * math.sin(a)) for a in angles])
 
 
 #: The points that bound a mark's ``geom``, by kind (:func:`extreme_points`).
-_EXTREMES: dict[MarkKind, Callable[[tuple], list[tuple[float, float]]]] = {
+_EXTREMES: dict[MarkKind, Callable[[tuple], Sequence[tuple[float, float]]]] = {
     MarkKind.POINT: lambda g: [g],
     MarkKind.SEGMENT: lambda g: [(g[0], g[1]), (g[2], g[3])],
     MarkKind.CIRCLE: lambda g: [(g[0] - g[2], g[1] - g[2]), (g[0] + g[2], g[1] + g[2])],
@@ -302,7 +305,7 @@ _EXTREMES: dict[MarkKind, Callable[[tuple], list[tuple[float, float]]]] = {
 }
 
 
-def extreme_points(m: Mark) -> list[tuple[float, float]]:
+def extreme_points(m: Mark) -> Sequence[tuple[float, float]]:
     """The points that bound a mark as drawn: a segment by its ends, a circle by its box's corners.
 
     >>> arc = Mark("m", 1, "k", MarkKind.ARC, (0.0, 0.0, 2.0, 0.0, math.pi / 2), "construction", "compass", "exact")

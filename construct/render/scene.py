@@ -33,7 +33,7 @@ from .captions import TITLE_LIMIT, displayed
 from .marks import (TWO_PI, Mark, MarkKind, circle_extent, curve_points, extreme_points, fanned_lines, letter_lines,
                     lies_on, segment_extent)
 from .end_marks import end_state
-from .sheet import Break, break_shift, broken, kept_span, lay_out, plate_names, warn_hidden_labels
+from .sheet import Break, break_shift, breaks_figure, broken, kept_span, lay_out, plate_names, warn_hidden_labels
 from .step_inputs import StepInputs
 
 __all__ = ["Mark", "MarkKind", "Scene", "build_scene", "label_offset_direction", "on_curve_names", "extreme_points",
@@ -300,9 +300,16 @@ class Scene(StepInputs):
         """
         titles = self.params.get("group_titles") or {}
         out: dict[tuple[str, ...], str] = {}
+        read: dict[str, str] = {}  # a title heads thousands of paths (all 3601 rod arcs ›): read once
         for s in self.steps:
             if s.group not in out:
-                out[s.group] = displayed(" › ".join(self.readable(titles.get(g, g)) for g in s.group))
+                parts = []
+                for g in s.group:
+                    got = read.get(g)
+                    if got is None:
+                        got = read[g] = self.readable(titles.get(g, g))
+                    parts.append(got)
+                out[s.group] = displayed(" › ".join(parts))
         return out
 
 
@@ -416,6 +423,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 have = on.setdefault(name, [])
                 have.extend(p for n, p in shown_pts if lies_on(obj, p, tol) and p not in have)
     in_fan = fanned_lines(protocol.steps)
+    points_drawn: dict[str, Mark] = {}  # a point's mark whatever the margin: made once when drawn twice
 
     def draw(margin: float) -> tuple[list[Mark], dict[str, tuple[str, bool]]]:
         """The marks, each line and arc reaching *margin* past the points marked on it."""
@@ -428,6 +436,10 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 if obj is None or isinstance(obj, Length) or (shown is not None and name not in shown):
                     continue
                 mid = f"s{s.index:04d}-{_safe_id(name)}"
+                drawn = points_drawn.get(mid)
+                if drawn is not None:
+                    marks.append(drawn)
+                    continue
                 label = labels.get(name)
                 if label and "{∠" in label:
                     label = reading(label, objects)
@@ -438,7 +450,8 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
                               group=s.group, label=label, look=(looks or {}).get(name, ""))
                 if isinstance(obj, Point):
-                    marks.append(Mark(mid, kind=MarkKind.POINT, geom=(obj[0], obj[1]), **common))
+                    marks.append(drawn := Mark(mid, kind=MarkKind.POINT, geom=(obj[0], obj[1]), **common))
+                    points_drawn[mid] = drawn
                 elif isinstance(obj, Line):
                     marks.append(Mark(mid, kind=MarkKind.SEGMENT, geom=segment_extent(obj, on.get(name, []), margin), **common))
                 elif isinstance(obj, Circle):
@@ -473,8 +486,8 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
         ys = [m.geom[1] for m in marks if m.kind is MarkKind.POINT] or ys
     elif break_axis and (shown is None or furniture):
         # a plate keeps more of the broken stretch: the rod drawn across it stays a shallow line
-        cut = broken(marks, tuple(furniture), shown is None)
-        if shown is None and cut[2]:
+        cut = None
+        if shown is None and breaks_figure(marks, tuple(furniture), True):
             # a broken figure is drawn at the size it keeps: its lines reach past their points by a margin of
             # what is left of it (its points and curves, broken alone), not of the length broken out (at
             # L/r = 50 that would be 1.8 r)
@@ -484,6 +497,8 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 smaller = broken(again, tuple(furniture), True)
                 if smaller[2]:
                     margin, lettered, cut = kept, letters, smaller
+        if cut is None:  # (broken at the first margin only when it is kept: a long figure's every mark moved)
+            cut = broken(marks, tuple(furniture), shown is None)
         marks, furniture, breaks = cut
         if breaks:
             xs = [x for m in marks if m.kind is MarkKind.POINT for x in (m.geom[0],)] or xs

@@ -19,7 +19,7 @@ from ..kernel.protocol import Protocol, Replay
 from .marks import Mark, MarkKind, extreme_points, lies_on, with_geom
 
 __all__ = ["BREAK_FRACTION", "BREAK_FRACTION_Y", "BREAK_KEEP", "PLATE_BREAK_KEEP", "Break", "broken_axis", "broken",
-           "kept_span", "span_of", "warn_hidden_labels", "lay_out", "plate_names", "moved_geom", "break_shift"]
+           "breaks_figure", "kept_span", "span_of", "warn_hidden_labels", "lay_out", "plate_names", "moved_geom", "break_shift"]
 
 
 #: A gap wider than this fraction of the figure, with nothing drawn in it, is broken out of the axis.
@@ -50,6 +50,37 @@ class Break(NamedTuple):
     axis: int = 0
 
 
+def _widest_gap(marks: list[Mark], furniture: tuple, axis: int, fraction: float) -> tuple[float, float, float] | None:
+    """(start, end, total) of the widest empty stretch along *axis* that :func:`broken_axis` breaks out, or None
+    when none is wider than *fraction* of the figure."""
+    from .plate import anchors
+
+    ivals = []
+    for m in marks:
+        if m.kind is MarkKind.POINT:  # (most marks: a long figure's points)
+            c = m.geom[axis]
+            ivals.append((c, c))
+            continue
+        if m.kind is MarkKind.SEGMENT or (m.kind is MarkKind.CURVE and m.straight and len(m.geom) == 2):
+            continue  # the stroke line spans everything; a rod drawn to its crosshead crosses the break
+        cs = [p[axis] for p in extreme_points(m)]
+        if cs:
+            ivals.append((min(cs), max(cs)))
+    ivals.extend((p[axis], p[axis]) for p in anchors(furniture))
+    if len(ivals) < 2:
+        return None
+    ivals.sort()
+    total = ivals[-1][1] - ivals[0][0]
+    best, reach = None, ivals[0][1]
+    for a, b in ivals[1:]:
+        if a > reach and (best is None or a - reach > best[1] - best[0]):
+            best = (reach, a)
+        reach = max(reach, b)
+    if best is None or best[1] - best[0] <= fraction * total:
+        return None
+    return best[0], best[1], total
+
+
 def broken_axis(marks: list[Mark], furniture: tuple = (), keep_fraction: float = 0.07, axis: int = 0,
                 fraction: float = BREAK_FRACTION) -> tuple[list[Mark], tuple, tuple[Break, ...]]:
     """Break the widest empty stretch out of the figure, as a draftsman breaks a long axis.
@@ -65,27 +96,12 @@ def broken_axis(marks: list[Mark], furniture: tuple = (), keep_fraction: float =
     crank).  Returns the marks, the furniture and (:class:`Break`,) or ()
     when there is no gap wider than *fraction* of the figure.
     """
-    from .plate import anchors, shifted
-    ivals = []
-    for m in marks:
-        if m.kind is MarkKind.SEGMENT or (m.kind is MarkKind.CURVE and m.straight and len(m.geom) == 2):
-            continue  # the stroke line spans everything; a rod drawn to its crosshead crosses the break
-        cs = [p[axis] for p in extreme_points(m)]
-        if cs:
-            ivals.append((min(cs), max(cs)))
-    ivals.extend((p[axis], p[axis]) for p in anchors(furniture))
-    if len(ivals) < 2:
+    from .plate import shifted
+
+    gap = _widest_gap(marks, furniture, axis, fraction)
+    if gap is None:
         return marks, furniture, ()
-    ivals.sort()
-    total = ivals[-1][1] - ivals[0][0]
-    best, reach = None, ivals[0][1]
-    for a, b in ivals[1:]:
-        if a > reach and (best is None or a - reach > best[1] - best[0]):
-            best = (reach, a)
-        reach = max(reach, b)
-    if best is None or best[1] - best[0] <= fraction * total:
-        return marks, furniture, ()
-    lo, hi = best
+    lo, hi, total = gap
     keep = min(keep_fraction * (total - (hi - lo)), 0.8 * (hi - lo))
     shift = (hi - lo) - keep
 
@@ -162,6 +178,14 @@ def broken(marks: list[Mark], furniture: tuple, whole: bool) -> tuple[list[Mark]
         marks, _, across = broken_axis(marks, (), BREAK_KEEP, axis=1, fraction=BREAK_FRACTION_Y)
         breaks += across
     return marks, furniture, breaks
+
+
+def breaks_figure(marks: list[Mark], furniture: tuple, whole: bool) -> bool:
+    """Would :func:`broken` break the figure (along x or, when *whole* and without furniture, across it)?  Asked
+    without moving a mark: breaking along x moves no y."""
+    if _widest_gap(marks, furniture, 0, BREAK_FRACTION) is not None:
+        return True
+    return whole and not furniture and _widest_gap(marks, (), 1, BREAK_FRACTION_Y) is not None
 
 
 def kept_span(marks: list[Mark]) -> float:

@@ -99,12 +99,16 @@ def storyboard_svg(drawing: Drawing, *, columns: int = 4) -> str:
     for i in range(1, len(bounds)):
         for name in drawing.LAYERS:
             done = len(drawing.step_runs(name, bounds[i - 1]))
-            runs = drawing.step_runs(name, bounds[i])[done:]
-            if runs:
+            upto = len(drawing.step_runs(name, bounds[i]))
+            if upto > done:
                 delta = f.g(id=f"tile{i}-{name}")
                 present.add((i, name))
-                for k, elems in runs:
-                    delta.add(drawing.step_group(k, elems))
+                plain = drawing.plain_groups(name)
+                for j in range(done, upto):
+                    k, elems = drawing.groups[name][j]
+                    # the whole figure's group where it is the same (no class but "step"): written once for both
+                    same = drawing.step_class(k, 0, mark_steps=False, layer=name) == ""
+                    delta.add(plain[j] if same else drawing.step_group(k, elems))
                 defs.add(delta)
     if style.highlight:
         tint = f.filter(id="now")

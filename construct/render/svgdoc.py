@@ -2,7 +2,7 @@
 
 Elements come from svgwrite's element factory with validation off
 (``debug=False``: checking every attribute of every mark costs more than the
-drawing itself); the plentiful plain ones (groups, points' circles, ``<set>``)
+drawing itself); the plentiful plain ones (groups, points' circles, lines, paths, ``<set>``)
 are :class:`Element`, which gives svgwrite's element without its machinery.
 Each mark's element is turned into an ElementTree element once
 (:meth:`Writer.frozen`) and shared by every document that shows it --
@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import copy
 import functools
+import re
 import xml.etree.ElementTree as ET
 from typing import Any
 
@@ -88,7 +89,8 @@ class Element:
 
     def __init__(self, elementname: str, **extra: Any):
         self.elementname = elementname
-        self.attribs = {k.rstrip("_").replace("_", "-"): v for k, v in extra.items()}
+        names = _ATTRIBUTE_NAMES
+        self.attribs = {names.get(k) or _attribute_name(k): v for k, v in extra.items()}
         self.elements: list[Any] = []
 
     def add(self, element: Any) -> Any:
@@ -113,6 +115,15 @@ class Element:
         return xml
 
 
+#: A keyword's attribute name (class_ -> class, data_step -> data-step), by keyword: a few recur thousands of times.
+_ATTRIBUTE_NAMES: dict[str, str] = {}
+
+
+def _attribute_name(keyword: str) -> str:
+    name = _ATTRIBUTE_NAMES[keyword] = keyword.rstrip("_").replace("_", "-")
+    return name
+
+
 def _set(**extra: Any) -> Any:
     """svgwrite's ``factory.set``; one naming its target element (``href=``) is svgwrite's own."""
     if "href" in extra:
@@ -127,16 +138,33 @@ def _circle(center: tuple[Any, Any] = (0, 0), r: Any = 1, **extra: Any) -> Eleme
     return e
 
 
+def _line(start: tuple[Any, Any] = (0, 0), end: tuple[Any, Any] = (0, 0), **extra: Any) -> Element:
+    """svgwrite's ``factory.line``: *start* -> x1, y1 and *end* -> x2, y2."""
+    e = Element("line", **extra)
+    e.attribs["x1"], e.attribs["y1"] = start
+    e.attribs["x2"], e.attribs["y2"] = end
+    return e
+
+
+def _path(d: Any = None, **extra: Any) -> Any:
+    """svgwrite's ``factory.path``; a path given as one string (every mark's) is an :class:`Element`."""
+    if isinstance(d, str):
+        return Element("path", d=d, **extra)
+    return svgwrite.path.Path(d=d, debug=False, profile="full", **extra)
+
+
 class Writer:
     """svgwrite's element factory (validation off) and the document serialiser."""
 
     def __init__(self) -> None:
         #: ``factory.circle(...)``, ``factory.g(...)``, ...: svgwrite elements sharing one parameter set
-        #: (``g``, ``set`` and ``circle``: an :class:`Element`).
+        #: (``g``, ``set``, ``circle``, ``line`` and a ``path`` given as a string: an :class:`Element`).
         self.factory = svgwrite.Drawing(debug=False, profile="full")
         self.factory.g = functools.partial(Element, "g")
         self.factory.set = _set
         self.factory.circle = _circle
+        self.factory.line = _line
+        self.factory.path = _path
         #: The shared elements (:meth:`frozen`) by id: the element (kept, so that its id stays its own) and its
         #: markup without its tail, once a document has written it.
         self._shared: dict[int, list] = {}
@@ -156,7 +184,7 @@ class Writer:
     def svg_element(self, dwg: Any) -> ET.Element:
         """The ElementTree of *dwg* with line breaks between elements (the bytes are part of the goldens)."""
         root = dwg.get_xml()
-        _lines(root)
+        _lines(root, self._shared)
         return root
 
     def markup(self, dwg: Any) -> str:
@@ -189,8 +217,13 @@ class Writer:
         if not isinstance(tag, str) or "{" in tag:
             raise TypeError(f"the SVG writer writes plain tags only, got {tag!r}")  # ElementTree's namespaces
         out.append("<" + tag)
-        for k, v in elem.items():
-            out.append(f' {k}="{_escape_attribute(v)}"')
+        attrib = elem.attrib
+        if attrib:
+            if _ATTRIBUTE_ESCAPED.search("".join(attrib.values())) is None:  # (nearly always: numbers, classes, ids)
+                out.append("".join([f' {k}="{v}"' for k, v in attrib.items()]))
+            else:
+                for k, v in attrib.items():
+                    out.append(f' {k}="{_escape_attribute(v)}"')
         text = elem.text
         if text or len(elem):
             out.append(">")
@@ -229,6 +262,10 @@ def _escape_text(text: str) -> str:
     return text
 
 
+#: What an attribute value escapes (:func:`_escape_attribute`).
+_ATTRIBUTE_ESCAPED = re.compile('[&<>"\r\n\t]')
+
+
 def _escape_attribute(text: str) -> str:
     """An attribute value as ElementTree escapes it: as text, and quotes and line ends too."""
     text = _escape_text(text)
@@ -243,8 +280,9 @@ def _escape_attribute(text: str) -> str:
     return text
 
 
-def _lines(elem: ET.Element) -> None:
-    """Every child element on a line of its own (idempotent: shared elements are visited again)."""
+def _lines(elem: ET.Element, shared: dict[int, list] | None = None) -> None:
+    """Every child element on a line of its own (idempotent).  A shared element (*shared*:
+    :attr:`Writer._shared`) whose markup is written has been laid out so before: not visited again."""
     stack = [elem]
     while stack:
         e = stack.pop()
@@ -255,4 +293,8 @@ def _lines(elem: ET.Element) -> None:
         for child in e:
             if child.tag != CDATA_TAG:
                 child.tail = "\n"
+            if shared:
+                done = shared.get(id(child))
+                if done is not None and done[0] is child and done[1] is not None:
+                    continue
             stack.append(child)

@@ -145,10 +145,8 @@ def as_stored(drawn: np.ndarray, fit: np.ndarray | None, kinds: np.ndarray) -> n
     if fit is None or not kinds.any():
         return drawn
     ox, oy, sc = (fit[:, i:i + 1] for i in range(3))
-    with np.errstate(divide="ignore", invalid="ignore"):
-        logs = np.log(np.where(kinds == LOG, drawn / sc, 1.0))
-    return np.select([kinds == X, kinds == Y, kinds == LENGTH, kinds == LOG],
-                     [(drawn - ox) / sc, (oy - drawn) / sc, drawn / sc, logs], drawn)
+    return _by_kind(drawn, kinds, {X: lambda d: (d - ox) / sc, Y: lambda d: (oy - d) / sc, LENGTH: lambda d: d / sc,
+                                   LOG: lambda d: np.log(d / sc)})
 
 
 def as_drawn(stored: np.ndarray, fit: np.ndarray | None, kinds: np.ndarray) -> np.ndarray:
@@ -156,9 +154,21 @@ def as_drawn(stored: np.ndarray, fit: np.ndarray | None, kinds: np.ndarray) -> n
     if fit is None or not kinds.any():
         return stored
     ox, oy, sc = (fit[:, i:i + 1] for i in range(3))
-    return np.select([kinds == X, kinds == Y, kinds == LENGTH, kinds == LOG],
-                     [ox + sc * stored, oy - sc * stored, sc * stored, sc * np.exp(np.where(kinds == LOG, stored, 0.0))],
-                     stored)
+    return _by_kind(stored, kinds, {X: lambda s: ox + sc * s, Y: lambda s: oy - sc * s, LENGTH: lambda s: sc * s,
+                                    LOG: lambda s: sc * np.exp(s)})
+
+
+def _by_kind(numbers: np.ndarray, kinds: np.ndarray, how: Mapping[int, Any]) -> np.ndarray:
+    """*numbers* (rows x columns) with each kind's columns turned by its function in *how*, the others as they are:
+    each function sees only its own columns (a sweep's grid is thousands of columns; every kind's formula over
+    all of them, then a choice, would be four times the work)."""
+    out = np.array(numbers, dtype=float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for kind, turn in how.items():
+            cols = np.flatnonzero(kinds == kind)
+            if cols.size:
+                out[:, cols] = turn(out[:, cols])
+    return out
 
 
 def decode(data: Mapping[str, Any], grid: Any, rows: int, cols: int) -> np.ndarray:

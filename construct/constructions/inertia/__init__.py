@@ -44,7 +44,8 @@ from ..phrases import ANHANG_II, Cite, division, number, ratio, scale, stroke_pa
 from .build import validate_inertia, build_inertia
 from .checks import inertia_checks
 from .measure import abscissa, curve_deviation, ordinate
-from .stroke_fractions import build_q_at_stroke_fractions, stroke_fraction_checks, stroke_fractions_plate
+from .stroke_fractions import (build_q_at_stroke_fractions, stroke_fraction_checks, stroke_fractions_form,
+                               stroke_fractions_plate)
 from .rows import acceleration_rows, characteristic_point_rows, q_at_crank_angle_rows
 
 __all__ = [
@@ -126,6 +127,7 @@ INERTIA_STROKE = register(Construction(
     defaults={"rod_ratio": 5.0, "divisions": 10, "r": 1.0, "pressure_ratio": 1.0, "pressure_unit": 0.8},
     book_params=({"rod_ratio": 5.0},),
     structural=("divisions",),
+    form=stroke_fractions_form,  # (the dead centre each point is projected from: the nearer one, as drawn)
     cites=(Cite(ANHANG_II, "Tabelle 2"),),
     wording=inertia_wording,
     plate=stroke_fractions_plate,

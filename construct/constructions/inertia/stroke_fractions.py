@@ -10,13 +10,16 @@ curve.
 
 from __future__ import annotations
 
+from typing import Any, Mapping
+
+import numpy as np
 
 from .. import analytic
 from ..checking import Check
 from ...kernel.errors import InvalidParameter
 from ...kernel.instruments import Builder
 from ...kernel.letters import lowered
-from .. import Figure
+from .. import Figure, form_rows
 from ..crank import build_frame, inverse_tolerance
 from ..ordinates import inertia_setup, ordinate_value, stroke_direction
 from .build import inertia_givens
@@ -101,6 +104,14 @@ def build_q_at_stroke_fractions(*, rod_ratio: float, divisions: int, r: float = 
             b.set_label(f"Vt{j}", lowered(f"q{j}"))
     proto = b.protocol()
     return Figure(proto, proto.replay(givens))
+
+
+def stroke_fractions_form(replay: Any, params: Mapping[str, Any]) -> np.ndarray:
+    """The build's choices over a sweep (:attr:`~construct.constructions.Construction.form`): at each inner mark,
+    the dead centre the crank point and its doubled-angle point are projected from (the nearer one, as drawn)."""
+    d = np.where(replay["D1"][0] > replay["D0"][0], 1.0, -1.0)  # ordinates.stroke_direction
+    o = replay["O"][0] * d
+    return form_rows(*(replay[f"{p}{j}"][0] * d < o for j in range(1, params["divisions"]) for p in ("W", "Nt")))
 
 
 def stroke_fraction_checks(fig: Figure) -> list[Check]:

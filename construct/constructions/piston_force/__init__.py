@@ -58,7 +58,8 @@ from ..crank import crank_angle, point_name
 from ..phrases import BAUMANN_1902, Cite, HANDBOOK, card, division, metres, number, percent
 from .analytic import card_force_zero, j_abscissa, model_areas
 from .build import (GRAVITY, HP_DIAGRAM, PISTON_AREA_COVER, PISTON_AREA_CRANK, TAFEL_I, build_piston_force,
-                    card_crossing_chords, mass_force_scale, piston_area_mean, piston_area_sides, validate_piston_force)
+                    card_crossing_chords, force_line_form, mass_force_scale, piston_area_mean, piston_area_sides,
+                    validate_piston_force)
 from .checks import piston_force_checks
 from .measure import abscissa, area_balance, mass_force, piston_force, return_mass_force, return_piston_force
 from .plate import piston_force_plate
@@ -113,6 +114,7 @@ PISTON_FORCE = register(Construction(
     # Tafel I: high-pressure and low-pressure side; and both strokes of the high-pressure side, F' and F''
     book_params=({}, {"weight": 990.0}, {"revolution": True}),
     structural=("parts", "method", "filling", "compression", "revolution", "indicator", "indicator_crank_side"),
+    form=force_line_form,  # (the force line's pieces run through the points between its corners: L moves them)
     sweep=lambda g, ratios: {**g, "rod_length": ratios * g["crank_radius"]},  # L = (L/R) R
     cites=(Cite(HANDBOOK, "Abb. 1054/1055"), Cite(BAUMANN_1902, "Fig. 25")),
     wording=piston_force_wording,

@@ -13,7 +13,7 @@ from ...kernel.errors import InvalidParameter
 from ...kernel.division import check_parts, divide_semicircle
 from ...kernel.instruments import Builder
 from ...kernel.proportional import carry_across, fourth_proportional, scale_line, vertex_on
-from .. import Figure, bounded
+from .. import Figure, bounded, form_rows
 from ..domain import DRAWING_SCALE, DRAWN_MASS_FORCE, FORCE_UNIT, LENGTH_M, PISTON_AREA, ROD_RATIO, RPM, WEIGHT
 from ..crank import build_frame, rod_arcs
 from ..indicator_parts import indicator_frame, indicator_givens, pressures_at, square
@@ -524,6 +524,22 @@ def _curves(b: Builder, n: int, fbase: str, *, prefix: str = "", corners: tuple[
                            de="freie Kräfte zwischen Kolbenkraft- und Massenkraftlinie",
                            en="free forces between the piston-force line and the mass-force line")
         _mass_areas(b, p, fbase, n)
+
+
+def force_line_form(replay: Any, params: Mapping[str, Any]) -> np.ndarray | None:
+    """The choices of :func:`_curves` over a sweep (:attr:`~construct.constructions.Construction.form`): the order in
+    which the piston meets the points and, for each, whether it lies before the cut-off's corner, between the
+    corners or after the compression's (within 1e-9 of the stroke of a corner: none, the corner is the point), and
+    whether the corners come in the wrong order (no figure).  None for a revolution or a card (the return stroke's
+    and the cards' lines choose otherwise: fresh builds tell)."""
+    if params.get("revolution") or params.get("cards"):
+        return None
+    n = params["parts"]
+    xs = np.asarray(np.broadcast_arrays(*(replay[f"X{k}"][0] for k in range(n + 1))), dtype=float)
+    x1, x2 = replay["Ks1"][0], replay["Ks2"][0]
+    eps = 1e-9 * abs(xs[n] - xs[0])
+    return form_rows(*np.argsort(xs, axis=0, kind="stable"), *(xs < x1 - eps), *((x1 + eps < xs) & (xs < x2 - eps)),
+                     *(xs > x2 + eps), x2 <= x1 + eps)
 
 
 def _mass_areas(b: Builder, p: str, fbase: str, n: int) -> None:

@@ -263,6 +263,25 @@ def test_a_carried_view_still_frames_its_marks():
                 assert holds(view, (min(xs), min(ys), max(xs), max(ys)), slack=1.0), (v, j)
 
 
+@pytest.mark.parametrize("name", ["piston-force", "effective-work"])
+def test_at_the_built_value_the_page_shows_every_step_in_the_drawings_own_view(name):
+    """The live data's views at the built value are the camera's (render/camera.py), step by step.  A step that
+    draws nothing of its own (piston-force's last step reads the planimeter off the end state) was carried
+    with no marks and became the whole canvas: the finished figure a patch in its corner."""
+    from construct.live import Measure
+    from construct.render.output import scene_for
+    from construct.render.svg import Drawing
+
+    c = get(name)
+    built = c.figure()
+    drawing = Drawing(scene_for(c, built, ending=True), STYLES["teaching"])
+    measure = Measure(c, built, STYLES["teaching"], drawing=drawing)
+    got = _by_key(*measure(built)[:2])
+    wrong = [(k, got[("#zoom", str(i), "# # # #")], drawing.camera_view(k)) for i, k in enumerate(measure.steps)
+             if got[("#zoom", str(i), "# # # #")] != pytest.approx(drawing.camera_view(k), abs=0.011)]
+    assert not wrong, wrong[:3]
+
+
 def _steady() -> list[tuple[str, str]]:
     from construct.constructions import names
 

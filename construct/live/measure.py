@@ -38,6 +38,17 @@ from ..render.wire import ARC, NUMBER, canonical_arc
 __all__ = ["Measure", "player_page", "player_page_and_fit", "fit_of", "areas_of", "breaks_px"]
 
 
+def _inside(scene: Any, vp: Viewport, view: tuple) -> list[str]:
+    """The ids of the marks of *scene* that lie whole inside *view* (canvas px: x, y, w, h) on viewport *vp*."""
+    x, y, w, h = view
+    out = []
+    for m in scene.marks:
+        pts = [vp.px(*p) for p in extreme_points(m)]
+        if pts and all(x <= px <= x + w and y <= py <= y + h for px, py in pts):
+            out.append(m.id)
+    return out
+
+
 class Measure:
     """What the player page draws at a value of the given, without laying the page out: the same numbers as
     :func:`~construct.render.wire.drawn_numbers` of :func:`player_page` (tests/test_live.py holds them equal).
@@ -76,6 +87,15 @@ class Measure:
             if j >= 0:
                 shows[j].add(k)
         self.framed = [[m.id for m in scene.marks if m.step in ks] for ks in shows]
+        if scene.ending and len(self.view_of) > 1 and self.view_of[-1] >= 0 and not self.framed[self.view_of[-1]]:
+            # a last step that only reads a value off the figure (piston-force's planimeter) has no marks of its
+            # own, and a view carried with nothing became the whole canvas: the finished figure a patch in its
+            # corner at every value.  Its view frames the end state (camera.final_box): carried with its marks
+            self.framed[self.view_of[-1]] = [m.id for m in scene.marks if scene.in_end(m)
+                                             and "hidden" not in scene.end_look(m).split()]
+        for j, ids in enumerate(self.framed):
+            if not ids:  # another step that draws nothing of its own: carried with the marks inside its view
+                self.framed[j] = _inside(scene, drawing.vp, list(distinct)[j])
         self.views = list(distinct)
         #: the areas between curves: drawn by the page from the curves that bound them (:func:`areas_of`)
         self.areas = areas_of(built.protocol, scene)

@@ -208,6 +208,8 @@ def wave_extremes(fig: Figure, *, samples: int = 64, exact: bool = False,
     else:
         pts = [rp[f"Z{j}"] for j in range(2 * n)]
     return _extremes_of(pts, O, D0, g["r"], gain, start, samples, within)
+
+
 def _finite_wave_checks(fig: Figure, ratio: float, dc: str, sense: float, model: Mapping[str, Any] | None) -> list[Check]:
     """§ 147: the finite rod's least and greatest speed over the turn, read off its drawn wave.
 

@@ -140,8 +140,16 @@ def _kerning(path: str, left: int, right: int) -> float:
     return font.get_kerning(left, right, mode) / 64.0  # 26.6 fixed point
 
 
-@functools.lru_cache(maxsize=1)
 def _to_path():
-    from matplotlib.textpath import TextToPath
+    """matplotlib's TextToPath, one per import of matplotlib.textpath."""
+    from matplotlib import textpath
 
-    return TextToPath()
+    return _to_path_of(textpath)
+
+
+@functools.lru_cache(maxsize=1)
+def _to_path_of(textpath):
+    # Made once per module object, not once per process: a host that drops the modules imported meanwhile and
+    # imports matplotlib again (pytest's in-process runs restore sys.modules) would otherwise keep a TextToPath
+    # of the old module, which refuses the new module's FontProperties (an order-dependent TypeError).
+    return textpath.TextToPath()

@@ -91,12 +91,12 @@ class Measure:
             # a last step that only reads a value off the figure (piston-force's planimeter) has no marks of its
             # own, and a view carried with nothing became the whole canvas: the finished figure a patch in its
             # corner at every value.  Its view frames the end state (camera.final_box): carried with its marks
-            self.framed[self.view_of[-1]] = [m.id for m in scene.marks if scene.in_end(m)
-                                             and "hidden" not in scene.end_look(m).split()]
+            # (the marks a sweep draws: the end state's own, end_marks, are not boxed by it)
+            self.framed[self.view_of[-1]] = [m.id for m in scene.marks if scene.in_end(m) and scene.end_shows(m)]
+        self.views = list(distinct)
         for j, ids in enumerate(self.framed):
             if not ids:  # another step that draws nothing of its own: carried with the marks inside its view
-                self.framed[j] = _inside(scene, drawing.vp, list(distinct)[j])
-        self.views = list(distinct)
+                self.framed[j] = _inside(scene, drawing.vp, self.views[j])
         #: the areas between curves: drawn by the page from the curves that bound them (:func:`areas_of`)
         self.areas = areas_of(built.protocol, scene)
         #: the steps whose current mark is ringed (small on the screen at the built value), by their index, and
@@ -108,8 +108,7 @@ class Measure:
         self.template = scene
         #: the end state is mostly the plate's furniture (which the sweep does not carry: Tafel 2's ordinates and
         #: their values): the player shows it at the book's values only, the construction's marks elsewhere
-        own = sum(1 for m in scene.marks if scene.in_end(m)) + len(scene.end_marks)
-        self.end_held = drawing.end is not None and len(scene.end_furniture) > own
+        self.end_held = drawing.end is not None and len(scene.end_furniture) > len(scene.end_drawn())
         # the marks' keys as this value's page has them: each mark's numbers are a run of them, the runs in the
         # page's order (a sweep draws each mark's numbers for every value at once, :meth:`frames`)
         self.keys, _, _, texts = self._measured(scene)  # (the drawing's scene is what __call__ would make)

@@ -423,8 +423,8 @@ def final_box(scene: Scene, within: Box | None = None) -> Box | None:
         # the end state: the figure as the book draws it, its furniture included, and nothing else
         from .plate import extent
 
-        for m in [m for m in scene.marks if scene.in_end(m)] + list(scene.end_marks):
-            if "hidden" not in scene.end_look(m).split():
+        for m in scene.end_drawn():
+            if scene.end_shows(m):
                 for x, y in extreme_points(m):
                     core = _grow(core, x, y)
         fx = extent(scene.end_furniture)

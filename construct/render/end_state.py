@@ -156,7 +156,7 @@ def lay_out_end(scene: Scene, style: Style, vp: Viewport, placing: Placing, view
     of *views* replaced by it), the sheet the end state's drawing with a margin of :data:`END_MARGIN_PX`.
     *full*: the whole drawing as a view; *factory*: the svgwrite element factory."""
     sc, st, pl = scene, style, placing
-    marks = [m for m in sc.marks if sc.in_end(m)] + list(sc.end_marks)
+    marks = sc.end_drawn()
     v = views[-1]
     framing = Framing(full, max_zoom=ZOOM_LEVELS[-1])
     for _ in range(4):  # the letters and the furniture widen the view, which sets their size
@@ -174,7 +174,7 @@ def lay_out_end(scene: Scene, style: Style, vp: Viewport, placing: Placing, view
         pl.place_end(ls, marks, texts, lettering, strokes)
         box = None
         for m in marks:
-            if "hidden" not in sc.end_look(m).split():
+            if sc.end_shows(m):
                 box = _grown(box, [vp.px(*p) for p in extreme_points(m)])
         fx = extent(sc.end_furniture)
         if fx is not None:

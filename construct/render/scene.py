@@ -88,6 +88,15 @@ class Scene(StepInputs):
         """The look mark *m* has in the end state (the plate's, where it gives one)."""
         return self.end_looks.get(m.id, m.look)
 
+    def end_drawn(self) -> list[Mark]:
+        """The marks the end state draws: those of the figure it keeps (:meth:`in_end`), then its own
+        (:attr:`end_marks`)."""
+        return [m for m in self.marks if self.in_end(m)] + list(self.end_marks)
+
+    def end_shows(self, m: Mark) -> bool:
+        """Is mark *m*, one the end state draws (:meth:`end_drawn`), seen there (its end look not hidden)?"""
+        return "hidden" not in self.end_look(m).split()
+
     def readable(self, text: str, lang: str = "de", outputs: tuple[str, ...] = ()) -> str:
         """*text* in the figure's letters (:class:`construct.render.captions.Reader`).
 

@@ -388,6 +388,11 @@ def on_curve_names(steps: Iterable[Step], points: set[str], shown: set[str] | No
     return on
 
 
+#: How far a line or arc reaches past the points it is drawn over, and the paper about the figure: this part of
+#: the figure's span (of what a broken figure keeps, where it is broken).  render/sweepdraw.py draws by it too.
+MARGIN = 0.035
+
+
 def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: bool = False,
                 break_axis: bool = True, furniture: tuple = (), looks: "dict[str, str] | None" = None,
                 panels: tuple = (), ending: bool = False, end_furniture: tuple = (),
@@ -418,7 +423,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
     if not xs:
         xs, ys = [0.0, 1.0], [0.0, 1.0]
     span = max(max(xs) - min(xs), max(ys) - min(ys), 1e-9)
-    margin = 0.035 * span
+    margin = MARGIN * span
     on = _on_curve_points(protocol.steps, objects, shown)
     if shown is not None:
         # a plate draws each arc between all the shown points on it, found or not by the protocol
@@ -500,7 +505,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
             # a broken figure is drawn at the size it keeps: its lines reach past their points by a margin of
             # what is left of it (its points and curves, broken alone), not of the length broken out (at
             # L/r = 50 that would be 1.8 r)
-            kept = 0.035 * kept_span(marks)
+            kept = MARGIN * kept_span(marks)
             if kept < margin:
                 again, letters = draw(kept)
                 smaller = broken(again, tuple(furniture), True)

@@ -29,7 +29,7 @@ import numpy as np
 from ..kernel.curves import BezierCurve, Polyline
 from ..kernel.geometry import Circle, Line, Point, take
 from .marks import GAP_TIE, TWO_PI, MarkKind, fanned_lines, letter_point
-from .scene import Scene, on_curve_names
+from .scene import MARGIN, Scene, on_curve_names
 from .sheet import BREAK_FRACTION, BREAK_FRACTION_Y, BREAK_KEEP
 from .svg import point_radius
 from .styles import Style
@@ -142,7 +142,7 @@ class SweepDrawing:
                 ys += [np.array([[min(p[1] for p in r) for r in rows], [max(p[1] for p in r) for r in rows]])]
         X, Y = np.vstack(xs), np.vstack(ys)
         span = np.maximum(np.maximum(X.max(0) - X.min(0), Y.max(0) - Y.min(0)), 1e-9)
-        margin = 0.035 * span
+        margin = MARGIN * span
         # each mark's geometry, its kind's rows
         self.marks = [m for m in template.marks if m.id not in self._at]
         self._sources = (objects, points, on, curves, areas)
@@ -151,7 +151,7 @@ class SweepDrawing:
         if self._broken is not None:
             # scene.build_scene: a broken figure is drawn again with the margin of what is left of it (its
             # points and curves, broken alone), where it is broken so too
-            kept = 0.035 * self._kept_span()
+            kept = MARGIN * self._kept_span()
             smaller = self._broken & (kept < margin)
             if smaller.any():
                 first = (self.geoms, self.curves, self._broken, self._breaks, self.ok)
@@ -213,7 +213,7 @@ class SweepDrawing:
                 ys += [np.vstack([vec(y0), vec(y1)])]
         X, Y = np.vstack(xs), np.vstack(ys)
         span = np.maximum(np.maximum(X.max(0) - X.min(0), Y.max(0) - Y.min(0)), 1e-9)
-        margin = 0.035 * span
+        margin = MARGIN * span
         tol = 1e-9 * np.maximum(span, 1.0)
         on = on_curve_names(protocol.steps, set(points), set(shown))
         shown_pts = [k for k in sorted(shown) if k in points]

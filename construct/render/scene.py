@@ -30,8 +30,8 @@ from ..kernel.geometry import Circle, Length, Line, Point
 from ..kernel.protocol import Protocol, Replay, Step
 from ..kernel.letters import FIGURE_LETTER, primed
 from .captions import TITLE_LIMIT, displayed
-from .marks import (TWO_PI, Mark, MarkKind, circle_extent, curve_points, extreme_points, fanned_lines, letter_lines,
-                    lies_on, segment_extent)
+from .marks import (TWO_PI, Mark, MarkKind, arc_at, curve_points, extreme_points, fanned_lines, letter_lines,
+                    lies_on, marked_arc, segment_at, segment_span)
 from .end_marks import end_state
 from .sheet import Break, break_shift, breaks_figure, broken, kept_span, lay_out, plate_names, warn_hidden_labels
 from .step_inputs import StepInputs
@@ -333,8 +333,14 @@ def thin(items: Sequence[int], most: int) -> list[int]:
     return sorted({items[round(i * (len(items) - 1) / (most - 1))] for i in range(most)})
 
 
+#: A name that is an id as it stands: letters and digits (``str.isalnum``'s, which are ``\w``'s less "_"), "-", "_".
+_ID = re.compile(r"[\w-]*")
+
+
 @functools.lru_cache(maxsize=65536)  # a live sweep names the same objects at hundreds of values
 def _safe_id(text: str) -> str:
+    if _ID.fullmatch(text):  # (most names: a figure of 3600 parts names 32,000 objects)
+        return text
     return "".join(c if c.isalnum() or c in "-_" else "-" for c in text)
 
 
@@ -438,6 +444,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 have.extend(p for n, p in shown_pts if lies_on(obj, p, tol) and p not in have)
     in_fan = fanned_lines(protocol.steps)
     points_drawn: dict[str, Mark] = {}  # a point's mark whatever the margin: made once when drawn twice
+    spans: dict[str, tuple] = {}  # a line's or circle's reach before the margin: found once when drawn twice
 
     def draw(margin: float) -> tuple[list[Mark], dict[str, tuple[str, bool]]]:
         """The marks, each line and arc reaching *margin* past the points marked on it."""
@@ -467,9 +474,15 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                     marks.append(drawn := Mark(mid, kind=MarkKind.POINT, geom=(obj[0], obj[1]), **common))
                     points_drawn[mid] = drawn
                 elif isinstance(obj, Line):
-                    marks.append(Mark(mid, kind=MarkKind.SEGMENT, geom=segment_extent(obj, on.get(name, []), margin), **common))
+                    span = spans.get(mid)
+                    if span is None:
+                        span = spans[mid] = segment_span(obj, on.get(name, []))
+                    marks.append(Mark(mid, kind=MarkKind.SEGMENT, geom=segment_at(span, margin), **common))
                 elif isinstance(obj, Circle):
-                    kind, geom = circle_extent(obj, on.get(name, []), margin, s.role, plate=shown is not None)
+                    span = spans.get(mid)
+                    if span is None:
+                        span = spans[mid] = marked_arc(obj, on.get(name, []), s.role, plate=shown is not None)
+                    kind, geom = arc_at(span, margin)
                     marks.append(Mark(mid, kind=kind, geom=geom, **common))
                 elif hasattr(obj, "rings"):  # an Area: one mark per piece, each hatched
                     # a look "signed": the pieces under the lower line hatched across those over it (+ and −)

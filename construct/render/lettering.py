@@ -246,6 +246,11 @@ class _Boxes:
     def add(self, b) -> None:  # the letter is placed alone: nothing is asked after it
         pass
 
+    def taken(self, x0: Any, y0: Any, x1: Any, y1: Any) -> Any:
+        """:meth:`free`'s answer negated for boxes given as four arrays (every spot of the letter at once)."""
+        return ((x0[:, None] < self.x1) & (self.x0 < x1[:, None]) & (y0[:, None] < self.y1)
+                & (self.y0 < y1[:, None])).any(axis=1)
+
 
 class _DotCounts:
     """How many points stand in each cell of a fine grid, summed from a corner (a summed-area table): asked for
@@ -502,7 +507,9 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     # which spots may be free: every spot is asked in the grid (in the order of the letters) unless a point surely
     # takes it (a crowd of points takes most spots of most letters) or a letter placed before meets it
     alive = np.ones(sx0.shape, dtype=bool)
-    if dots and len(ordered) > 1:
+    if isinstance(grid, _Boxes):  # a letter alone: every spot asked at once, the grid's own answer
+        alive = ~grid.taken(sx0[0], sy0[0], sx1[0], sy1[0])[None, :]
+    elif dots:
         alive = ~_DotCounts(dots, r, size).surely_taken(sx0, sy0, sx1, sy1)
     # the box round each letter's spots: a letter placed takes spots of those whose box it meets, and of no other
     around = (sx0.min(axis=1), sy0.min(axis=1), sx1.max(axis=1), sy1.max(axis=1))
@@ -515,8 +522,9 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
         if len(rows):
             alive[rows] &= ~((sx0[rows] < x1) & (x0 < sx1[rows]) & (sy0[rows] < y1) & (y0 < sy1[rows]))
 
-    for b in taken:
-        takes(b, 0)
+    if isinstance(grid, _Grid):
+        for b in taken:
+            takes(b, 0)
     # the first spot of each letter (kept for the magnified views when no spot is free)
     firsts = list(zip(*(a[:, 0].tolist() for a in spots)))
     for n, (mid, role, _step, (px, py), _d, text) in enumerate(ordered):

@@ -443,8 +443,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 have = on.setdefault(name, [])
                 have.extend(p for n, p in shown_pts if lies_on(obj, p, tol) and p not in have)
     in_fan = fanned_lines(protocol.steps)
-    points_drawn: dict[str, Mark] = {}  # a point's mark whatever the margin: made once when drawn twice
-    spans: dict[str, tuple] = {}  # a line's or circle's reach before the margin: found once when drawn twice
+    spans: dict[str, tuple] = {}  # a line's or circle's reach before the margin, by mark: redraw draws it again
 
     def draw(margin: float) -> tuple[list[Mark], dict[str, tuple[str, bool]]]:
         """The marks, each line and arc reaching *margin* past the points marked on it."""
@@ -457,10 +456,6 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 if obj is None or isinstance(obj, Length) or (shown is not None and name not in shown):
                     continue
                 mid = f"s{s.index:04d}-{_safe_id(name)}"
-                drawn = points_drawn.get(mid)
-                if drawn is not None:
-                    marks.append(drawn)
-                    continue
                 label = labels.get(name)
                 if label and "{∠" in label:
                     label = reading(label, objects)
@@ -471,8 +466,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
                               group=s.group, label=label, look=(looks or {}).get(name, ""))
                 if isinstance(obj, Point):
-                    marks.append(drawn := Mark(mid, kind=MarkKind.POINT, geom=(obj[0], obj[1]), **common))
-                    points_drawn[mid] = drawn
+                    marks.append(Mark(mid, kind=MarkKind.POINT, geom=(obj[0], obj[1]), **common))
                 elif isinstance(obj, Line):
                     span = spans.get(mid)
                     if span is None:
@@ -505,6 +499,21 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                         marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=straight, **common))
         return marks, lettered
 
+    def redraw(marks: list[Mark], margin: float) -> list[Mark]:
+        """*marks* (drawn by :func:`draw`) drawn at another *margin*: what ``draw(margin)`` gives (its letters are
+        the same), the lines and arcs over their marked points reaching *margin* past them, the rest as they are."""
+        out = []
+        for m in marks:
+            span = spans.get(m.id)
+            if span is None:
+                out.append(m)
+                continue
+            kind, geom = (MarkKind.SEGMENT, segment_at(span, margin)) if m.kind is MarkKind.SEGMENT \
+                else arc_at(span, margin)
+            out.append(Mark(m.id, m.step, m.name, kind, geom, m.role, m.tool, m.provenance, m.label, m.group, m.look,
+                            m.hatch, m.straight))
+        return out
+
     marks, lettered = draw(margin)
     breaks: tuple[Break, ...] = ()
     if panels:
@@ -520,10 +529,10 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
             # L/r = 50 that would be 1.8 r)
             kept = MARGIN * kept_span(marks)
             if kept < margin:
-                again, letters = draw(kept)
+                again = redraw(marks, kept)
                 smaller = broken(again, tuple(furniture), True)
                 if smaller[2]:
-                    margin, lettered, cut = kept, letters, smaller
+                    margin, cut = kept, smaller
         if cut is None:  # (broken at the first margin only when it is kept: a long figure's every mark moved)
             cut = broken(marks, tuple(furniture), shown is None)
         marks, furniture, breaks = cut

@@ -107,16 +107,17 @@ class Element:
         self.attribs[key] = value
 
     def get_xml(self) -> ET.Element:
-        xml = ET.Element(self.elementname)
+        attrib = {}
         for attribute, value in sorted(self.attribs.items()):
             if value is not None:
                 value = str(value)
                 if value:  # svgwrite leaves empty attributes out
-                    xml.set(attribute, value)
+                    attrib[attribute] = value
+        xml = ET.Element(self.elementname, attrib)
         if self.text is not None:
             xml.text = str(self.text)
-        for element in self.elements:
-            xml.append(element.get_xml())
+        if self.elements:
+            xml.extend([element.get_xml() for element in self.elements])
         return xml
 
 
@@ -229,8 +230,9 @@ class Writer:
             out.append(shared[1])
         else:
             self._open_close(elem, out)
-        if elem.tail:
-            out.append(_escape_text(elem.tail))
+        tail = elem.tail
+        if tail:
+            out.append(tail if tail == "\n" else _escape_text(tail))  # (the line break after nearly every element)
 
     def _open_close(self, elem: ET.Element, out: list[str]) -> None:
         tag = elem.tag

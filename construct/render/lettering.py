@@ -246,11 +246,6 @@ class _Boxes:
     def add(self, b) -> None:  # the letter is placed alone: nothing is asked after it
         pass
 
-    def taken(self, x0: Any, y0: Any, x1: Any, y1: Any) -> Any:
-        """:meth:`free`'s answer negated for boxes given as four arrays (every spot of the letter at once)."""
-        return ((x0[:, None] < self.x1) & (self.x0 < x1[:, None]) & (y0[:, None] < self.y1)
-                & (self.y0 < y1[:, None])).any(axis=1)
-
 
 class _DotCounts:
     """How many points stand in each cell of a fine grid, summed from a corner (a summed-area table): asked for
@@ -260,8 +255,8 @@ class _DotCounts:
     wholly inside (by a margin far above rounding) the region where a point's box meets the spot's count, so
     "surely" is exact; a spot taken only near that region's edge is left to the grid."""
 
-    #: At most this many cells: a figure spread out by a deep zoom gets coarser cells, not more memory.
-    MAX_CELLS = 1 << 22
+    #: At most this many cells: a figure spread out by a deep zoom gets coarser cells, not more memory and time.
+    MAX_CELLS = 1 << 18
 
     def __init__(self, dots: "Sequence[tuple[float, float]]", r: float, size: float):
         a = np.array(dots, dtype=float).reshape(-1, 2)
@@ -499,20 +494,22 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     # ends a ring (a farther distance may repeat a usual one)
     plan = [(j, dist, turn) for j, dist in enumerate(_DISTANCES + tuple(distances))
             for turn in (_TURNS if dist in _DISTANCES else _TURNS_FAR)]
-    # the farthest ring ended before each spot: a ring whose spots are all taken changes nothing, so the rings
-    # ended since the last spot asked are asked for an end at once (the farthest of them decides)
-    ended = [max((d for j, d, _ in plan if j < ring), default=-math.inf) for ring, _, _ in plan]
-    spots = _spots(ordered, plan, size, font, italic, halo)
-    sx0, sy0, sx1, sy1 = spots[2:]
-    # which spots may be free: every spot is asked in the grid (in the order of the letters) unless a point surely
-    # takes it (a crowd of points takes most spots of most letters) or a letter placed before meets it
-    alive = np.ones(sx0.shape, dtype=bool)
-    if isinstance(grid, _Boxes):  # a letter alone: every spot asked at once, the grid's own answer
-        alive = ~grid.taken(sx0[0], sy0[0], sx1[0], sy1[0])[None, :]
-    elif dots:
-        alive = ~_DotCounts(dots, r, size).surely_taken(sx0, sy0, sx1, sy1)
-    # the box round each letter's spots: a letter placed takes spots of those whose box it meets, and of no other
-    around = (sx0.min(axis=1), sy0.min(axis=1), sx1.max(axis=1), sy1.max(axis=1))
+    rings = _DISTANCES + tuple(distances)
+    # many letters: every spot of every letter made at once, and crossed off in bulk where a point surely takes it
+    # (a crowd of points takes most spots of most letters) or a letter placed in this call meets it; the rest are
+    # asked in the grid, in the order of the letters.  A few letters are asked spot by spot, each made as it is
+    # tried (their first spots are most often free).  The boxes *taken* before are asked in the grid.
+    bulk = len(ordered) >= _CROWD
+    if bulk:
+        spots = _spots(ordered, plan, size, font, italic, halo)
+        sx0, sy0, sx1, sy1 = spots[2:]
+        alive = np.ones(sx0.shape, dtype=bool)
+        if isinstance(grid, _Grid) and len(dots) >= _CROWD:
+            alive = ~_DotCounts(dots, r, size).surely_taken(sx0, sy0, sx1, sy1)
+        # the box round each letter's spots: a letter placed takes spots of those whose box it meets, of no other
+        around = (sx0.min(axis=1), sy0.min(axis=1), sx1.max(axis=1), sy1.max(axis=1))
+        # the first spot of each letter (kept for the magnified views when no spot is free)
+        firsts = list(zip(*(a[:, 0].tolist() for a in spots)))
 
     def takes(b: tuple[float, float, float, float], after: int) -> None:
         """The box *b* is taken: no spot it meets of the letters after the first *after* is free."""
@@ -522,38 +519,54 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
         if len(rows):
             alive[rows] &= ~((sx0[rows] < x1) & (x0 < sx1[rows]) & (sy0[rows] < y1) & (y0 < sy1[rows]))
 
-    if isinstance(grid, _Grid):
-        for b in taken:
-            takes(b, 0)
-    # the first spot of each letter (kept for the magnified views when no spot is free)
-    firsts = list(zip(*(a[:, 0].tolist() for a in spots)))
-    for n, (mid, role, _step, (px, py), _d, text) in enumerate(ordered):
+    for n, (mid, role, _step, (px, py), (dx, dy), text) in enumerate(ordered):
         first = None
         spot = None
+        box_at = _box_maker(text, size, font, italic, halo)  # label_box(x, y, text, ...) for this letter
         if prefer and mid in prefer:
             ox, oy, od = prefer[mid]
-            box = _box_maker(text, size, font, italic, halo)(px + ox, py + oy)
+            box = box_at(px + ox, py + oy)
             if grid.free(box) and not strokes.meets(box, reach, only):
                 spot = (px + ox, py + oy, box, od)
         clear = None  # with soft lines: the first free spot near the point that no line crosses
         least = None  # else the near free spot the least of those lines would be broken for: (length, spot)
         if spot is None:
-            f = firsts[n]
-            first = (f[0], f[1], f[2:], plan[0][1])
-            row = None
+            if bulk:
+                f = firsts[n]
+                first = (f[0], f[1], f[2:], plan[0][1])
+                asked: Iterable[int] = np.flatnonzero(alive[n]).tolist()
+                row = None
+            else:
+                asked = range(len(plan))
+                base = math.atan2(-dy, dx)  # y down on the sheet
+                w = text_width(text, size, font, italic)
+                ring_cs: dict[int, tuple[float, float]] = {}  # each direction's cosine and sine, for all distances
             ring = 0
-            for i in np.flatnonzero(alive[n]).tolist():
+            for i in asked:
                 j, dist, turn = plan[i]
                 if j != ring:
-                    if clear or (spot and (soft is None or ended[i] >= LEADER_FROM)):
+                    # the rings ended since the last spot asked (all their spots taken: nothing changed since)
+                    if clear or (spot and (soft is None or max(rings[ring:j]) >= LEADER_FROM)):
                         break
                     ring = j
-                if row is None:
-                    row = [a[n].tolist() for a in spots]
-                box = (row[2][i], row[3][i], row[4][i], row[5][i])
+                if bulk:
+                    if row is None:
+                        row = [a[n].tolist() for a in spots]
+                    lx, ly, box = row[0][i], row[1][i], (row[2][i], row[3][i], row[4][i], row[5][i])
+                else:
+                    cs = ring_cs.get(turn)
+                    if cs is None:
+                        a = base + math.radians(turn)
+                        cs = ring_cs[turn] = (math.cos(a), math.sin(a))
+                    # the letter's centre sits *dist* letter heights from the point (plus half its extra width
+                    # sideways); its baseline a third of a letter lower
+                    lx = px + cs[0] * (dist * size + max(0.0, w - 0.6 * size) / 2)
+                    ly = py + dist * size * cs[1] + 0.35 * size
+                    box = box_at(lx, ly)
+                    if first is None:
+                        first = (lx, ly, box, dist)
                 if not grid.free(box) or strokes.meets(box, reach, only):
                     continue
-                lx, ly = row[0][i], row[1][i]
                 if soft is None:
                     spot = (lx, ly, box, dist)
                     break
@@ -578,6 +591,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                 out[mid] = (first[0], first[1], first[3], True)
             continue
         grid.add(spot[2])
-        takes(spot[2], n + 1)
+        if bulk:
+            takes(spot[2], n + 1)
         out[mid] = (spot[0], spot[1], spot[3], False)
     return out

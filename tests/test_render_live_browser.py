@@ -611,17 +611,9 @@ def _numbers(e, attrs) -> list[float]:
     return [float(x) for a in attrs for x in NUMBER.findall(e.get(a) or "")]
 
 
-#: The end state (the last step: the figure as the plate draws it) has its own marks (class fo), swept as the rest; the
-#: plate's furniture there (its dimensions, lettering and the lines it adds: the rod and the centre line of the crank)
-#: holds the built value's numbers and is shown at the book's value alone
-#: (test_the_end_state_follows_the_slider_and_its_furniture_stays_at_the_books_value), so the break marks on the
-#: furniture's lines are not drawn elsewhere.  Known gap of issue 27, held here so that it shows when mended.
-AT_STEPS = [pytest.param("before-end", id="before-end"),
-            pytest.param("end", id="end", marks=pytest.mark.xfail(
-                strict=True, reason="the plate's furniture in the end state (its rod and centre line) is not in the "
-                                    "sweep yet: shown at the book's value alone"))]
-#: Every element of the step groups, the end state's own marks among them, is swept.
-STEPS_SWEPT = ["before-end", "end"]
+#: The last step shows the end state (the figure as the plate draws it: its own marks, class fo, and the plate's
+#: furniture), swept as the rest; the step before it the construction's marks.
+AT_STEPS = ["before-end", "end"]
 
 
 def _at(page, at: str) -> None:
@@ -666,7 +658,7 @@ def test_a_broken_rod_stays_broken_with_its_length_written(browser, live_player,
     page.close()
 
 
-@pytest.mark.parametrize("at", STEPS_SWEPT)
+@pytest.mark.parametrize("at", AT_STEPS)
 def test_every_element_of_the_figure_is_where_a_fresh_replay_draws_it(browser, live_player, at):
     """The general form of 'every mark, every moment': while the slider is dragged, every element of the figure's
     steps -- marks, letters and name tags by their groups' anchors (the letters and leaders about an anchor are
@@ -718,34 +710,35 @@ def test_every_element_of_the_figure_is_where_a_fresh_replay_draws_it(browser, l
     page.close()
 
 
-def test_the_end_state_follows_the_slider_and_its_furniture_stays_at_the_books_value(browser, live_player):
-    """The last step draws the figure as the book's plate draws it (class fin) at every value: its own marks (class
-    fo, with ids, swept as the rest) are shown while the slider is dragged.  The plate's furniture there (its
-    dimensions and lettering: L = 5 r) holds the built value's numbers: away from the book's value it is not shown,
-    and the page says so, and the figure broken across its rod says the rod's length at the break (L = 8 r) as the
-    other steps do; back at the book's value the furniture returns and writes it."""
+def test_the_end_state_follows_the_slider_with_its_furniture_and_the_rod_it_writes(browser, live_player):
+    """The last step draws the figure as the book's plate draws it (class fin) at every value of a drag: its own
+    marks (class fo) and the plate's furniture (the rod and the centre line it adds, its dimensions) each where a
+    fresh replay's page draws it, within 0.5 px, and the rod's dimension says the rod's length at that value."""
     c, _, path = live_player
     page, errors = _open(browser, path)
     page.keyboard.press("End")
     fin = "() => document.getElementById('figure').classList.contains('fin')"
-    shown = """sel => Array.from(document.querySelectorAll(sel)).filter(e => e.isConnected
-        && e.getClientRects().length > 0 && getComputedStyle(e).display !== 'none').length"""
-    own, furniture = "#figure [data-step] .fo[id]", "#furniture > g.fo.end *"
-    note = "() => { const n = document.querySelector('#live .live-end'); return !!n && !n.hidden; }"
-    at_book = page.evaluate(shown, own)
-    assert page.evaluate(fin) and at_book > 0 and page.evaluate(shown, furniture) > 0 and not page.evaluate(note)
-    # the rod's length: the plate's dimension at the book's value, the page's own at the break elsewhere
-    rod = "() => Array.from(document.querySelectorAll('#figure .rodlen')).filter(g => getComputedStyle(g).display !== 'none' && g.getClientRects().length).map(g => g.querySelector('text:last-of-type').textContent)"
-    assert page.evaluate(rod) == []
-    for v in (1.6, 8.0):
+    read = """() => Array.from(document.querySelectorAll('#furniture > g.fo.end > [id]')).map(e => [e.id,
+        ['x1', 'y1', 'x2', 'y2', 'cx', 'cy', 'r', 'd', 'x', 'y', 'transform'].map(a => e.getAttribute(a) || '').join(' '),
+        e.tagName === 'text' ? e.textContent : '', getComputedStyle(e).display])"""
+    assert page.evaluate(fin)
+    for v in (1.6, 3.3, 8.0, 23.0):
         _drag_to(page, "rod_ratio", v)
-        assert page.evaluate(fin) and page.evaluate(shown, own) == at_book, v
-        assert page.evaluate(shown, furniture) == 0 and page.evaluate(note), v
-        broken = any(e.get("class") == "brk" for e in _fresh_svg(c, {"parts": 3}, "rod_ratio", v).iter())
-        assert page.evaluate(rod) == ([f"L = {v:g} r".replace(".", ",")] if broken else []), v
-    _drag_to(page, "rod_ratio", 5.0)
-    assert page.evaluate(fin) and page.evaluate(shown, furniture) > 0 and not page.evaluate(note)
-    assert page.evaluate(rod) == []
+        assert page.evaluate(fin), v
+        got = page.evaluate(read)
+        root = _fresh_svg(c, {"parts": 3}, "rod_ratio", v)
+        want = {e.get("id"): e for e in root.iter() if (e.get("id") or "").startswith("fin-")}
+        assert got and [g[0] for g in got] == list(want), v
+        for ident, text, words, display in got:
+            e = want[ident]
+            assert display != "none", (v, ident)
+            nums = [float(x) for x in NUMBER.findall(text)]
+            fresh = _numbers(e, ("x1", "y1", "x2", "y2", "cx", "cy", "r", "d", "x", "y", "transform"))
+            assert len(nums) == len(fresh) and max(abs(a - b) for a, b in zip(nums, fresh)) <= 0.5, (v, ident)
+            if words.startswith("L ="):
+                assert words == f"L = {v:g} r".replace(".", ","), (v, words)
+            elif words:
+                assert words == "".join(e.itertext()), (v, ident, words)
     assert not errors, errors
     page.close()
 

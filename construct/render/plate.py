@@ -82,7 +82,9 @@ class Dimension:
     """A dimension line from *a* to *b* with arrowheads, set off by *offset* (drawing units, + = left of a->b).
 
     The text stands on the line, which is broken for it; or, for a short dimension (a thickness), upright
-    at *text_at* beside the whole line.
+    at *text_at* beside the whole line.  *room*: the characters the break in the line leaves room for (its
+    text's, if 0): a text that changes with a given (the rod's length, L = 3,5 r) keeps one break as the given
+    moves.
     """
 
     a: XY
@@ -90,6 +92,7 @@ class Dimension:
     text: str
     offset: float = 0.0
     text_at: XY | None = None
+    room: int = 0
 
 
 @dataclass(frozen=True)
@@ -483,7 +486,7 @@ def _item(it: Any, px: Callable[[float, float], XY], scale: float, size: float, 
                 f, px(*it.text_at), it.text, size)
         # the dimension line stops either side of its text, as a draftsman leaves room for the figure
         length = math.hypot(b2[0] - a2[0], b2[1] - a2[1]) or 1.0
-        gap = min(0.5 * length - 1.0, 0.33 * size * len(it.text) + 0.4 * size)
+        gap = min(0.5 * length - 1.0, 0.33 * size * (it.room or len(it.text)) + 0.4 * size)
         ux, uy = (b2[0] - a2[0]) / length, (b2[1] - a2[1]) / length
         out += [_line(f, a2, (mid[0] - gap * ux, mid[1] - gap * uy), "fur"),
                 _line(f, (mid[0] + gap * ux, mid[1] + gap * uy), b2, "fur"),

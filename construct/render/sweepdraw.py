@@ -573,6 +573,12 @@ class SweepDrawing:
         m = self.style.margin_px
         return m + left + (x - xmin) * scale, m + top + (ymax - y) * scale
 
+    def breaks_at(self, i: int) -> tuple[tuple[float, float, float, int], ...]:
+        """Value *i*'s breaks as a scene has them (:attr:`construct.render.scene.Scene.breaks`: where the drawn
+        break starts, its drawn width, the length it leaves out, its axis)."""
+        return tuple((float(b[1][i]), float(b[2][i]), float(b[3][i]), axis)
+                     for axis, b in sorted(self._breaks.items()) if b[0][i])
+
     def breaks_page(self) -> np.ndarray:
         """:meth:`breaks_px` of every value: (values x 4)."""
         out = []

@@ -34,7 +34,7 @@ __all__ = ["drawn_numbers", "arc_flags", "radii", "blend", "canonical_arc", "dec
 #: A number as the drawing writes it.
 NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
 #: The attributes that carry geometry.
-_GEOMETRY = ("cx", "cy", "r", "x1", "y1", "x2", "y2", "d", "points", "viewBox")
+_GEOMETRY = ("cx", "cy", "r", "x1", "y1", "x2", "y2", "d", "points", "x", "y", "transform", "viewBox")
 #: The template of an arc's path: its start, radii, rotation, large-arc and sweep flags, end.
 ARC = "M# #A# # # # # # #"
 #: How a column is stored: as drawn (px), or in the construction's own units through the row's fit to the

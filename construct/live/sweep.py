@@ -479,8 +479,10 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     lo, hi = math.log10(domain.low), math.log10(domain.high)
     # the end state's furniture follows the given where it keeps its form over the domain (asked at FORM_SCAN
     # values, as the steps' form is: :func:`pieces`), else it is held at the book's value
-    scan = np.unique(np.clip(10.0 ** np.append(np.linspace(lo, hi, FORM_SCAN), math.log10(initial)), domain.low,
-                             domain.high))
+    # (a piece of the domain its share of them)
+    share = (hi - lo) / math.log10(whole.high / whole.low)
+    scan = np.unique(np.clip(10.0 ** np.append(np.linspace(lo, hi, max(3, round(FORM_SCAN * share))),
+                                               math.log10(initial)), domain.low, domain.high))
     measure.furniture_live = measure.furniture_keeps_form(protocol, protocol.replay(construction.given_sweep(
         dict(figure.replay.givens), given, scan, protocol.params)), len(scan))
     us = list(np.linspace(lo, hi, start))

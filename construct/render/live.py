@@ -392,7 +392,9 @@ LIVE_SCRIPT = r"""
         if (!set) {  // beside its line: shown and faded with the line's step
           var g = document.createElementNS(NS, "g");
           // (an end state's own line's marks in the end state alone, a line it leaves out's not there: fo, nf)
-          g.setAttribute("class", "brkg" + (ln.closest(".fo") ? " fo" : ln.classList.contains("nf") ? " nf" : ""));
+          // (and a straight line drawn point to point, the rod lettered L: the end state breaks the plate's own
+          // rod over it, render/svg.py furniture_group)
+          g.setAttribute("class", "brkg" + (ln.closest(".fo") ? " fo" : ln.classList.contains("nf") || (endAt && ln.tagName === "path") ? " nf" : ""));
           ln.parentNode.insertBefore(g, ln.nextSibling);
           set = got[axis] = {g: g, gap: mk("path", "brk", g), t: [mk("line", "brkline", g), mk("line", "brkline", g)], key: ""};
           marksOf.set(ln, got);

@@ -17,6 +17,7 @@ import math
 import re
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from construct.constructions import get
@@ -326,32 +327,45 @@ def test_letters_stay_with_their_points(browser, live_player):
     page.close()
 
 
-def test_angles_read_off_the_figure_are_shown_at_the_built_value_only(browser, tmp_path):
+def test_angles_read_off_the_figure_are_written_as_read_at_the_nearer_grid_value(browser, tmp_path):
     """crank-angle letters each crank with the angle AOW read off the replayed figure (61°19′).  Between grid
-    values a blend of two readings would print minutes the figure does not have, so the page shows them at the
-    built value only, and says so; the plain letters stay.  The readings are found by the sweep itself: they
-    are the labels whose protocol text reads an angle ("{∠A O B}")."""
+    values a blend of two readings would print minutes the figure does not have: the page writes each reading as
+    the sweep read it at the nearer grid value (at a grid value, what a fresh replay there writes), and says so;
+    the plain letters stay.  The readings are found by the sweep itself: they are the labels whose protocol text
+    reads an angle ("{∠A O B}")."""
     c = get("crank-angle")
     fig = c.figure(rod_ratio=4.0)
     write_replay(c, fig, tmp_path, style="teaching", frames="none")
     live = live_sweep(c, fig, "rod_ratio", max_values=12)  # a coarse grid: the readings are the point here
     reads = {name for s in fig.protocol.steps for name, text in s.labels if "{∠" in text}
-    assert reads and {i.split("-")[1] for i in live.readings} == reads
+    # (and the end state's furniture: the plate letters each angle too, fin-...)
+    marks = [i for i in live.readings if not i.startswith("fin-")]
+    plate = [i for i in live.readings if i.startswith("fin-")]
+    assert reads and {i.split("-")[1] for i in marks} == reads and plate
     path = tmp_path / "live.html"
     path.write_text(with_live((tmp_path / "player.html").read_text(), live_data(live)))
     page, errors = _open(browser, path)
     # the step before the last: the last shows the end state, which letters the angles as the plate does
     page.evaluate("() => { const s = document.getElementById('slider'); s.value = +s.max - 1; "
                   "s.dispatchEvent(new Event('input')); }")
-    shown = """ids => ids.map(id => { const t = document.getElementById(id);
-                                    return !!t && t.getClientRects().length > 0 && getComputedStyle(t).display !== 'none'; })"""
-    letters = [f"{i}" for i in live.readings] + ["s0001-O-label"]
-    assert all(page.evaluate(shown, letters))
-    page.evaluate("v => window.constructLive.set(v)", 6.5)
-    assert page.evaluate(shown, letters) == [False] * len(live.readings) + [True]
-    assert "beim Buchwert" in page.inner_text("#live")
+    said = """ids => ids.map(id => { const t = document.getElementById(id);
+        return t && t.getClientRects().length > 0 && getComputedStyle(t).display !== 'none' ? t.textContent : null; })"""
+    letters = marks + ["s0001-O-label"]
+    built = page.evaluate(said, letters)
+    assert all(built)
+    for v in (1.3, 6.5, 40.0):
+        g = float(live.grid[int(np.argmin(np.abs(np.log10(live.grid) - math.log10(v))))])
+        fresh = drawn_numbers(player_page(c, c.figure(rod_ratio=g), STYLES["teaching"]))[2]["texts"]
+        for at in (g, g * (1 + 1e-6)):  # at the grid value, and a hair past it (the nearer one's reading)
+            page.evaluate("v => window.constructLive.set(v)", at)
+            assert page.evaluate(said, letters) == [fresh[i] for i in letters], (v, at)
+            page.keyboard.press("End")  # the end state: the plate's own lettering of the angles
+            assert page.evaluate(said, plate) == [fresh[i] for i in plate], (v, at)
+            page.keyboard.press("ArrowLeft")
+        assert page.evaluate(said, letters) != built, v
+    assert "nächsten gespeicherten Wert" in page.inner_text("#live")
     page.evaluate("v => window.constructLive.set(v)", 4.0)
-    assert all(page.evaluate(shown, letters))
+    assert page.evaluate(said, letters) == built
     assert errors == []
     page.close()
 

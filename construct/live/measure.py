@@ -125,7 +125,8 @@ class Measure:
         #: held at these numbers else (the page shows it at the book's values alone)
         self._vp = drawing.vp
         self.held = self._furniture(scene.end_furniture, drawing.vp)
-        self.furniture_live = True
+        #: (None: not asked -- a value measured alone draws its own furniture, a sweep asks over its values)
+        self.furniture_live: bool | None = None
         # the marks' keys as this value's page has them: each mark's numbers are a run of them, the runs in the
         # page's order (a sweep draws each mark's numbers for every value at once, :meth:`frames`)
         self.keys, _, _, texts = self._measured(scene)  # (the drawing's scene is what __call__ would make)
@@ -253,7 +254,10 @@ class Measure:
         # letters read off a handful of points: 0.02 to 1.5 ms a value)
         furniture = {i: 0 for i, _ in runs if i.startswith("fin-")}
         fur_texts: list[dict[str, str]] = [{}] * size
-        if furniture and not self.furniture_live:  # (held at the built value's numbers)
+        live = self.furniture_live
+        if furniture and live is None:
+            live = self.furniture_keeps_form(protocol, replay, size)
+        if furniture and not live:  # (held at the built value's numbers)
             table = np.tile(np.asarray(self.held[1], dtype=float), (size, 1))
         elif furniture:
             want = [k for k in keys if k[0] in furniture]
@@ -377,7 +381,7 @@ class Measure:
         for lk, ln in layers.values():
             keys += lk
             nums += ln
-        fk, fn, ft = self._furniture(scene.end_furniture, vp) if self.furniture_live else self.held
+        fk, fn, ft = self._furniture(scene.end_furniture, vp) if self.furniture_live is not False else self.held
         keys += fk
         nums += fn
         texts.update(ft)

@@ -29,7 +29,7 @@ from ..figure import Figure
 from ..render.camera import MAX_ZOOM, clip_view
 from ..render.end_state import NumbersFactory, end_furniture, furniture_numbers
 from ..render.output import scene_for
-from ..render.plate import plate_of, shifted
+from ..render.plate import plate_of, shifted, subscript_runs
 from ..render.player import player_html
 from ..render.scene import MarkKind, extreme_points, reading
 from ..render.sheet import break_shift
@@ -123,7 +123,7 @@ class Measure:
         #: the end state's furniture as built (keys, numbers, texts); drawn at every value while
         #: :attr:`furniture_live` (the sweep of a given over which it keeps its form: :meth:`furniture_keeps_form`),
         #: held at these numbers else (the page shows it at the book's values alone)
-        self._vp = drawing.vp
+        self._built = built
         self.held = self._furniture(scene.end_furniture, drawing.vp)
         #: (None: not asked -- a value measured alone draws its own furniture, a sweep asks over its values)
         self.furniture_live: bool | None = None
@@ -159,11 +159,13 @@ class Measure:
         make the refinement split every cell about it, and each value there be drawn value by value."""
         if not self.held[0]:
             return True
-        vp = self._vp  # (the built value's fit: what a value's furniture draws depends on its scale, not its place)
+        # (its items' kinds and what of them is drawn: a value where they draw other elements all the same, a
+        # dimension turned level, is drawn value by value: frames)
+        built = _form(plate_of(self.construction, self._built).furniture)
         for i in range(size):
             p = plate_of(self.construction, Figure(protocol, replay.take(i), self.construction.check,
                                                    self.construction))
-            if p.panels or self._furniture(tuple(p.furniture), vp)[0] != self.held[0]:
+            if p.panels or _form(p.furniture) != built:
                 return False
         return True
 
@@ -173,9 +175,9 @@ class Measure:
         p = plate_of(self.construction, figure)
         if p.panels or not p.furniture:
             return [], [], {}
-        sx = break_shift(at_once.breaks_at(i))
-        vp = SimpleNamespace(px=lambda x, y: at_once.px_at(i, x, y), scale=float(at_once.fit[i][2]))
-        return self._furniture(tuple(shifted(it, sx) for it in p.furniture), vp)
+        breaks = at_once.breaks_at(i)
+        items = tuple(shifted(it, break_shift(breaks)) for it in p.furniture) if breaks else tuple(p.furniture)
+        return self._furniture(items, SimpleNamespace(px=at_once.px_of(i), scale=float(at_once.fit[i][2])))
 
     def _runs(self, keys: list[tuple[str, str, str]]) -> list[tuple[str, int]]:
         """Each mark's run of numbers among *keys*: (its id, how many)."""
@@ -400,6 +402,14 @@ class Measure:
             keys.append(("#break", str(axis), "# #"))
             nums += breaks_px(scene.breaks, axis, fit_of(vp))
         return keys, nums, fit_of(vp), texts
+
+
+def _form(items: Any) -> tuple:
+    """The form of a plate's furniture: each item's kind and what of it is drawn (its text's runs, an upright
+    text beside a dimension, a break, a turned text, a leader)."""
+    return tuple((type(it).__name__, len(subscript_runs(t)) if (t := getattr(it, "text", "")) else 0,
+                  getattr(it, "text_at", None) is None, getattr(it, "broken", False), bool(getattr(it, "angle", 0)),
+                  getattr(it, "to", None) is None) for it in items)
 
 
 def areas_of(protocol: Any, scene: Any) -> list[list[str]]:

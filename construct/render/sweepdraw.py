@@ -579,6 +579,12 @@ class SweepDrawing:
         m = self.style.margin_px
         return m + left + (x - xmin) * scale, m + top + (ymax - y) * scale
 
+    def px_of(self, i: int):
+        """:meth:`px_at` of value *i* as a function of a point (its page's numbers read once)."""
+        xmin, ymax, scale, left, top = (float(v[i]) for v in self._page)
+        x0, y0 = self.style.margin_px + left, self.style.margin_px + top
+        return lambda x, y: (x0 + (x - xmin) * scale, y0 + (ymax - y) * scale)
+
     def breaks_at(self, i: int) -> tuple[tuple[float, float, float, int], ...]:
         """Value *i*'s breaks as a scene has them (:attr:`construct.render.scene.Scene.breaks`: where the drawn
         break starts, its drawn width, the length it leaves out, its axis)."""

@@ -144,13 +144,13 @@ class Measure:
         self.readings = {f"{m.id}-label": readings[of(m)] for m in scene.marks if of(m) in readings and m.label}
         self.texts = {k: v for k, v in texts.items() if k not in self.readings}  # the same at every value
 
-    def _furniture(self, items: tuple, vp: Any) -> tuple[list, list[float], dict[str, str]]:
+    def _furniture(self, items: tuple, vp: Any, exact: bool = True) -> tuple[list, list[float], dict[str, str]]:
         """The end state's furniture *items* (the plate's, on the sheet's broken axis) drawn on *vp* (anything with
         ``px`` and ``scale``): its keys, numbers and texts (:func:`~construct.render.end_state.furniture_numbers`)."""
         if self.end is None or not items:
             return [], [], {}
         sheet = SimpleNamespace(end_furniture=items)
-        return furniture_numbers(end_furniture(sheet, self.style, vp, self.end, self.placing, NUMBERS))
+        return furniture_numbers(end_furniture(sheet, self.style, vp, self.end, self.placing, NUMBERS), exact=exact)
 
     def furniture_keeps_form(self, protocol: Any, replay: Any, size: int) -> bool:
         """Whether the end state's furniture has the built figure's elements (the same keys) at every value of the
@@ -177,7 +177,8 @@ class Measure:
             return [], [], {}
         breaks = at_once.breaks_at(i)
         items = tuple(shifted(it, break_shift(breaks)) for it in p.furniture) if breaks else tuple(p.furniture)
-        return self._furniture(items, SimpleNamespace(px=at_once.px_of(i), scale=float(at_once.fit[i][2])))
+        # (its numbers unrounded: frames rounds every value's at once)
+        return self._furniture(items, SimpleNamespace(px=at_once.px_of(i), scale=float(at_once.fit[i][2])), exact=False)
 
     def _runs(self, keys: list[tuple[str, str, str]]) -> list[tuple[str, int]]:
         """Each mark's run of numbers among *keys*: (its id, how many)."""
@@ -272,7 +273,7 @@ class Measure:
                     fn = [math.nan] * sum(k[2].count("#") for k in want)
                 cols.append(fn)
                 fur_texts[i] = ft
-            table = np.asarray(cols, dtype=float)
+            table = np.round(np.asarray(cols, dtype=float), 2) + 0.0  # (as the writer writes them: within 0.01)
         if furniture:
             at = 0
             for ident, count in runs:

@@ -249,7 +249,11 @@ class _Text(Element):
 class NumbersFactory:
     """Takes the place of the SVG writer's element factory where only the elements' numbers and texts are wanted
     (:func:`furniture_numbers`: the live sweep's end state, value by value): each element a plain
-    :class:`~construct.render.svgdoc.Element` with the attributes the writer writes."""
+    :class:`~construct.render.svgdoc.Element` with the attributes the writer writes, its numbers as they are
+    (``raw``: :mod:`construct.render.plate` hands them over unwritten; :func:`furniture_numbers` rounds them as
+    the writer writes them, two decimals)."""
+
+    raw = True
 
     def g(self, **kw: Any) -> Element:
         return Element("g", **kw)
@@ -276,10 +280,12 @@ _NUMBERED = ("x1", "y1", "x2", "y2", "cx", "cy", "r", "x", "y", "d", "transform"
 _NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
 
 
-def furniture_numbers(group: Element) -> tuple[list[tuple[str, str, str]], list[float], dict[str, str]]:
+def furniture_numbers(group: Element, *, exact: bool = True) -> tuple[list[tuple[str, str, str]], list[float],
+                                                                      dict[str, str]]:
     """The numbers of the end state's furniture as :func:`end_furniture` drew it with a :class:`NumbersFactory`:
     (keys (id, attribute, its text with each number a ``#``), the numbers, {id: text} of its letterings), in the
-    live data's form (:mod:`construct.live.measure`).
+    live data's form (:mod:`construct.live.measure`).  *exact* False: the numbers handed over as they are left
+    unrounded (a sweep rounds all its values' at once).
 
     >>> f = NumbersFactory()
     >>> g = f.g(); e = g.add(f.line(start=("1", "2"), end=("3", "4.5"), id="fin-s0"))
@@ -288,6 +294,7 @@ def furniture_numbers(group: Element) -> tuple[list[tuple[str, str, str]], list[
     ([('fin-s0', 'x1', '#'), ('fin-s0', 'y1', '#'), ('fin-s0', 'x2', '#'), ('fin-s0', 'y2', '#'), ('fin-f1', 'x', '#'), ('fin-f1', 'y', '#'), ('fin-f1', 'transform', 'rotate(# # #)')], [1.0, 2.0, 3.0, 4.5, 7.0, 8.0, -20.0, 7.0, 8.0], {'fin-f1': 'L = 5 r'})
     """
     keys, nums, texts = [], [], {}
+    r2 = (lambda v: round(v, 2) + 0.0) if exact else (lambda v: v)  # noqa: E731
     for e in group.elements:
         ident = e.attribs.get("id")
         if ident is None:
@@ -295,6 +302,20 @@ def furniture_numbers(group: Element) -> tuple[list[tuple[str, str, str]], list[
         for a in _NUMBERED:
             v = e.attribs.get(a)
             if v is None:
+                continue
+            if isinstance(v, list) and len(v) == 1:  # (x=[...], as the writer takes it)
+                v = v[0]
+            if isinstance(v, float):  # a number as it is: written with two decimals
+                keys.append((ident, a, "#"))
+                nums.append(r2(v))
+                continue
+            if isinstance(v, tuple) and v and v[0] == "poly":  # a path's points (plate._poly)
+                keys.append((ident, a, "M" + "L".join(["# #"] * len(v[1])) + ("Z" if v[2] else "")))
+                nums.extend(r2(c) for p in v[1] for c in p)
+                continue
+            if isinstance(v, tuple) and v and v[0] == "rotate":  # a turned text (plate._text)
+                keys.append((ident, a, "rotate(# # #)"))
+                nums.extend(r2(c) for c in v[1:])
                 continue
             v = " ".join(map(str, v)) if isinstance(v, (list, tuple)) else str(v)
             ns = _NUMBER.findall(v)

@@ -478,13 +478,15 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     measure = measure or Measure(construction, figure, style, drawing=drawing)
     lo, hi = math.log10(domain.low), math.log10(domain.high)
     # the end state's furniture follows the given where it keeps its form over the domain (asked at FORM_SCAN
-    # values, as the steps' form is: :func:`pieces`), else it is held at the book's value
+    # values, as the steps' form is: :func:`pieces`), else it is held at the book's value -- as it is where the
+    # whole end state is (end_held: the page shows the construction's marks there away from the book's values)
     # (a piece of the domain its share of them)
     share = (hi - lo) / math.log10(whole.high / whole.low)
     scan = np.unique(np.clip(10.0 ** np.append(np.linspace(lo, hi, max(3, round(FORM_SCAN * share))),
                                                math.log10(initial)), domain.low, domain.high))
-    measure.furniture_live = measure.furniture_keeps_form(protocol, protocol.replay(construction.given_sweep(
-        dict(figure.replay.givens), given, scan, protocol.params)), len(scan))
+    measure.furniture_live = not measure.end_held and (not measure.held[0] or measure.furniture_keeps_form(
+        protocol, protocol.replay(construction.given_sweep(dict(figure.replay.givens), given, scan, protocol.params)),
+        len(scan)))
     us = list(np.linspace(lo, hi, start))
     values = lambda u: np.clip(10.0 ** np.asarray(u), domain.low, domain.high)  # noqa: E731
     # each value's numbers as one array, made once (every cell it bounds reads them)
@@ -580,7 +582,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
                      # the fit travels as float32: the columns are checked against the drawing through it
                      fit=np.asarray([data[u][2] for u in us], dtype=np.float32).astype(float),
                      label_px=float(style.label_size), live=live, areas=measure.areas, end_held=measure.end_held,
-                     furniture_held=not measure.furniture_live and bool(measure.held[0]),
+                     furniture_held=not measure.furniture_live and not measure.end_held and bool(measure.held[0]),
                      reading_texts={i: [data[u][3].get(i, "") for u in us] for i in varying},
                      whole=whole if piece is not None else None)
     swept = construction.given_sweep(dict(figure.replay.givens), given, grid, protocol.params)

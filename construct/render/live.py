@@ -30,10 +30,12 @@ to lie on one another: the later gives way (``declutter``) until there is
 room again.  Nothing waits for the slider to be let go (``change``), which
 only sets the letters' exact scale and glides the camera to the step's
 view.  The end state (the last step drawn as the book's plate) follows too: its own
-marks are swept as the rest (:meth:`construct.render.sweepdraw.SweepDrawing`).  Three things hold the built
-value's numbers and are shown at the book's values alone: an area's hatching (its outline follows), the plate's
-furniture in the end state (its dimensions, lettering and added lines: the page says so) and the inset (a
-sliver's place magnified beside the view).
+marks are swept as the rest (:meth:`construct.render.sweepdraw.SweepDrawing`), and the plate's furniture there
+(its dimensions, lettering and added lines) where it keeps its form over the domain
+(:meth:`construct.live.Measure.furniture_keeps_form`; elsewhere it is shown at the book's values alone and the
+page says so).  Readings of the figure (an angle to the minute) are written as read at the nearer grid value.
+Two things hold the built value's numbers and are shown at the book's values alone: an area's hatching (its
+outline follows) and the inset (a sliver's place magnified beside the view).
 
 The script exposes ``window.constructLive``: ``set(value)`` moves the first
 given (``set(value, true)``: as a drag draws it; ``set(value, dragging,

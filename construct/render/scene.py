@@ -542,11 +542,18 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
     if ending and shown is None:
         plate_scene = build_scene(figure, plate=True, break_axis=False, looks=end_looks, _warn=False)
         if breaks:
-            # on a broken sheet the plate's lines reach past their points by a margin of what is kept of it (its
-            # points and curves broken alone), as the sheet's own do: not of the length broken out (at L/r = 50
-            # the crank's ordinates would reach 1.8 r past the circle)
-            plate_scene = build_scene(figure, plate=True, break_axis=False, looks=end_looks, _warn=False,
-                                      _margin=MARGIN * kept_span(list(plate_scene.marks)))
+            # on a broken sheet the plate's lines reach past their points by a share of what the plate spans
+            # there (its points and curves moved as the sheet moves them; a lettered line's letter point is
+            # placed on the sheet), not of the length broken out (at L/r = 50 the crank's ordinates reached 1.8 r
+            # past the circle)
+            sx, sy = break_shift(breaks), break_shift(breaks, axis=1)
+            kept = [(sx(p[0]), sy(p[1])) for m in plate_scene.marks
+                    for p in ((m.geom,) if m.kind is MarkKind.POINT and not m.id.endswith("-at") else
+                              m.geom if m.kind in (MarkKind.CURVE, MarkKind.AREA) else ())]
+            if kept:
+                plate_scene = build_scene(figure, plate=True, break_axis=False, looks=end_looks, _warn=False,
+                                          _margin=MARGIN * max(max(p[0] for p in kept) - min(p[0] for p in kept),
+                                                               max(p[1] for p in kept) - min(p[1] for p in kept), 1e-9))
         end = end_state(plate_scene.marks, plate_scene.bbox, marks, breaks, end_furniture)
     return Scene(tuple(marks), bbox, protocol.steps, title, dict(protocol.params), breaks, tuple(furniture),
                  essentials, **end)

@@ -214,8 +214,10 @@ class SweepDrawing:
         X, Y = np.vstack(xs), np.vstack(ys)
         span = np.maximum(np.maximum(X.max(0) - X.min(0), Y.max(0) - Y.min(0)), 1e-9)
         margin = MARGIN * span
-        if self._broken is not None:  # scene.build_scene: on a broken sheet, a share of what is kept of it
-            margin = np.where(self._broken, np.minimum(margin, MARGIN * self._kept_span(shown)), margin)
+        if self._broken is not None:  # scene.build_scene: on a broken sheet, of what it spans there
+            KX, KY = self._shifted(X, Y)
+            kept = np.maximum(np.maximum(KX.max(0) - KX.min(0), KY.max(0) - KY.min(0)), 1e-9)
+            margin = np.where(self._broken, np.minimum(margin, MARGIN * kept), margin)
         tol = 1e-9 * np.maximum(span, 1.0)
         on = on_curve_names(protocol.steps, set(points), set(shown))
         shown_pts = [k for k in sorted(shown) if k in points]
@@ -299,24 +301,20 @@ class SweepDrawing:
             return out[0], out[1]
         return centre[0] + (out[0] - x), centre[1] + (out[1] - y)
 
-    def _kept_span(self, shown: Any = None) -> np.ndarray:
-        """sheet.kept_span over the sweep: what the points and curves span once broken alone (*shown*: those of
-        the objects it names only, the end state's plate)."""
+    def _kept_span(self) -> np.ndarray:
+        """sheet.kept_span over the sweep: what the points and curves span once broken alone."""
         objects, points, on, curves, areas = self._sources
-        named = {m.id: m.name for m in self.marks}
-        P = tuple(np.vstack(c) for c in zip(*[points[m.name] for m in self.marks if m.kind is MarkKind.POINT
-                                               and m.name in points and (shown is None or m.name in shown)]))
-        saved = (self.geoms, self.curves, self._broken, self._breaks, self.curve_marks, getattr(self, "at_marks", None))
+        P = tuple(np.vstack(c) for c in zip(*[points[m.name] for m in self.marks
+                                               if m.kind is MarkKind.POINT and m.name in points]))
+        saved = (self.geoms, self.curves, self._broken, self._breaks)
         self.geoms = {k: (P if k is MarkKind.POINT else ()) for k in MarkKind}
-        self.curves = {mid: tuple(pts) for mid, pts in self._unbroken_curves.items()
-                       if shown is None or named.get(mid) in shown}
-        self.curve_marks, self.at_marks = [m for m in self.curve_marks if m.id in self.curves], None
+        self.curves = {mid: tuple(pts) for mid, pts in self._unbroken_curves.items()}
         self._broken, self._breaks = None, {}
         self._break()
         self._break(axis=1)
         cx = [self.geoms[MarkKind.POINT][0]] + [np.vstack([c[0] for c in pts]) for pts in self.curves.values()]
         cy = [self.geoms[MarkKind.POINT][1]] + [np.vstack([c[1] for c in pts]) for pts in self.curves.values()]
-        self.geoms, self.curves, self._broken, self._breaks, self.curve_marks, self.at_marks = saved
+        self.geoms, self.curves, self._broken, self._breaks = saved
         KX, KY = np.vstack(cx), np.vstack(cy)
         with np.errstate(invalid="ignore"):  # (a curve of another number of points: not ok there)
             return np.maximum(np.maximum(np.nanmax(KX, 0) - np.nanmin(KX, 0), np.nanmax(KY, 0) - np.nanmin(KY, 0)),

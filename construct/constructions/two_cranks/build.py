@@ -379,10 +379,7 @@ def _label_extremes(b: Builder, part: _Part) -> None:
             b.intersect(f"K.W{i}", f"{part.tag}wave", ray, rule=("nearer", name), role="result",
                         de=f"M{i} auf der Wellenlinie: {'kleinste' if i == least else 'größte'} Geschwindigkeit",
                         en=f"M{i} on the wave curve: the {'least' if i == least else 'greatest'} speed",
-                        # (a reading of the figure, render/scene.py reading: a replay at another rod letters its own
-                        # angle; the angle measured either way round, as long as it is less than half a turn)
-                        labels={f"K.W{i}": f"M{_SUB[i]} {{∠{part.D0} {part.C} {name}}}" if a <= math.pi
-                                else f"M{_SUB[i]} {minutes // 60}°{minutes % 60:02d}′"})
+                        labels={f"K.W{i}": f"M{_SUB[i]} {minutes // 60}°{minutes % 60}′"})
 
 
 def angle_at(o: Point, d0: Point, p: Point) -> float:

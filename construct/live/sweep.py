@@ -82,8 +82,14 @@ REFINE_PX = 0.4
 QUANTUM_PX = 0.05
 #: A jump caused by at most this many marks is theirs (they are drawn from the nearer grid value), not the figure's.
 SNAP_AT_MOST = 3
-#: A round of the refinement draws the midpoints of a cell's halves (and of theirs, ...) this many levels ahead.
+#: A round of the refinement draws the midpoints of a cell's halves (and of theirs, ...) at least this many levels
+#: ahead, and deeper while the round draws at most AHEAD_VALUES values: a round costs about as much as a hundred
+#: values (its marks' Python and the replay's steps, whatever the number of values), so the last rounds, which split
+#: a few cells down towards a jump, look further ahead (what no cell needs is dropped; the grid is the same).
 AHEAD = 1
+AHEAD_VALUES = 64
+#: ... and never more levels ahead than this.
+AHEAD_MOST = 6
 #: A mark whose miss at a cell's midpoint stays above this share of its miss in the cell split into it, twice
 #: running, jumps there (a smooth mark's miss falls to a quarter at each halving, a kink's to a half).
 JUMPING = 0.85
@@ -378,9 +384,22 @@ def _ahead(a: float, b: float, depth: int) -> list[float]:
     return [(a + m) / 2, (m + b) / 2] + _ahead(a, m, depth - 1) + _ahead(m, b, depth - 1)
 
 
+def _depth(cells: int) -> int:
+    """How many levels ahead a round of *cells* cells draws (AHEAD, AHEAD_VALUES, AHEAD_MOST).
+
+    >>> _depth(100), _depth(2), _depth(1)
+    (1, 4, 5)
+    """
+    depth = AHEAD
+    while depth < AHEAD_MOST and cells * (2 ** (depth + 2) - 1) <= AHEAD_VALUES:
+        depth += 1
+    return depth
+
+
 def _columns(keys: list[tuple[str, str, str]], pick) -> np.ndarray:
     """Which numbers of *keys* belong to keys *pick* selects."""
-    return np.asarray([pick(k) for k in keys for _ in range(k[2].count("#"))], dtype=bool)
+    counts = np.fromiter((k[2].count("#") for k in keys), dtype=np.int64, count=len(keys))
+    return np.repeat(np.fromiter(map(pick, keys), dtype=bool, count=len(keys)), counts)
 
 
 @dataclass
@@ -487,7 +506,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
         # and the midpoints of their halves, drawn ahead: a cell that must be split has its halves tested in the
         # same round (a round draws every mark of the figure once, over all its values: its cost is the marks',
         # not the values'); what no cell needed is dropped
-        ahead = [q for a, b in todo for q in _ahead(a, b, AHEAD)]
+        ahead = [q for a, b in todo for q in _ahead(a, b, _depth(len(todo)))]
         drawn, _ = _frames(construction, figure, given, values(first + mids + ahead), measure, protocol)
         got = dict(zip(first + mids + ahead, as_arrays(drawn)))
         data.update((u, got.pop(u)) for u in first)
@@ -530,15 +549,14 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
         todo = nxt
     us = sorted(data)
     # The keys every grid value shares; a few elements change form (e.g. a curve's number of points):
-    # they stay at the built value.
-    shared = set(data[us[0]][0])
-    for u in us:
-        shared &= set(data[u][0])
-    keys = [k for k in data[us[0]][0] if k in shared]
+    # they stay at the built value.  (Most values share one list of keys, the same object: each list is read once.)
+    forms = list({id(data[u][0]): data[u][0] for u in us}.values())
+    shared = set(forms[0]).intersection(*forms[1:]) if len(forms) > 1 else set()
+    keys = forms[0] if len(forms) == 1 else [k for k in data[us[0]][0] if k in shared]
     rows = []
     for u in us:
         kk, nn = data[u][:2]
-        if kk == keys:  # (the commonest: every mark at every value) the numbers as they are
+        if kk is keys or kk == keys:  # (the commonest: every mark at every value) the numbers as they are
             rows.append(nn)
             continue
         pos, at = {}, 0
@@ -547,14 +565,15 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
             pos[k] = nn[at:at + n]
             at += n
         rows.append([x for k in keys for x in pos[k]])
-    fixed = sorted({k[0] for u in us for k in data[u][0] if k not in shared})
+    fixed = sorted({k[0] for kk in forms[1:] + forms[:1] for k in kk if k not in shared}) if len(forms) > 1 else []
     # letters whose text is not the same at every grid value: values read off the figure (an angle in degrees
     # and minutes); a blend of two grid values' readings would print minutes the figure does not have
-    idents = set().union(*(data[u][3] for u in us))
     # (a letter left out at some values -- no room there -- is not one of them)
-    varying = sorted(i for i in idents if len({data[u][3][i] for u in us if i in data[u][3]}) > 1)
+    seen: dict[str, str] = {}
+    varying = sorted({i for texts in {id(data[u][3]): data[u][3] for u in us}.values() for i, t in texts.items()
+                      if seen.setdefault(i, t) != t})
     first = data[us[0]][0]
-    snapped = [k for i, k in enumerate(first) if i in snap and k in shared]
+    snapped = [first[i] for i in sorted(snap) if i < len(first) and (len(forms) == 1 or first[i] in shared)]
     grid = values(us)
     live = LiveSweep(given, symbol, domain, initial, grid, keys, np.asarray(rows, dtype=float), bound, jumps,
                      fixed=fixed, snapped=snapped, u=np.asarray(us, dtype=float), start=start, readings=varying,

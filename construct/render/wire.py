@@ -100,11 +100,10 @@ def arc_flags(keys: list[tuple[str, str, str]]) -> np.ndarray:
     >>> arc_flags([("a", "cx", "#"), ("b", "d", "M# #A# # # # # # #")]).nonzero()[0].tolist()
     [6]
     """
-    out: list[bool] = []
-    for k in keys:
-        n = k[2].count("#")
-        out += [k[1] == "d" and k[2] == ARC and i == 5 for i in range(n)]
-    return np.asarray(out, dtype=bool)
+    starts, arcs = _arc_keys(keys)
+    out = np.zeros(starts[-1], dtype=bool)
+    out[starts[:-1][arcs] + 5] = True
+    return out
 
 
 def radii(keys: list[tuple[str, str, str]]) -> np.ndarray:
@@ -115,13 +114,20 @@ def radii(keys: list[tuple[str, str, str]]) -> np.ndarray:
     >>> radii([("a", "r", "#"), ("b", "d", "M# #A# # # # # # #"), ("c", "cx", "#")]).nonzero()[0].tolist()
     [0, 3, 4]
     """
-    out: list[bool] = []
-    for k in keys:
-        if k[1] == "d" and k[2] == ARC:
-            out += [i in (2, 3) for i in range(9)]
-        else:
-            out += [k[1] == "r" and k[2] == "#"] * k[2].count("#")
-    return np.asarray(out, dtype=bool)
+    starts, arcs = _arc_keys(keys)
+    out = np.zeros(starts[-1], dtype=bool)
+    out[starts[:-1][np.fromiter((k[1] == "r" and k[2] == "#" for k in keys), dtype=bool, count=len(keys))]] = True
+    for i in (2, 3):
+        out[starts[:-1][arcs] + i] = True
+    return out
+
+
+def _arc_keys(keys: list[tuple[str, str, str]]) -> tuple[np.ndarray, np.ndarray]:
+    """Where each key's numbers begin (and, last, how many there are in all), and which keys are arcs' paths (a
+    sweep's keys are thousands, asked for at every sweep: one pass over them, the rest on arrays)."""
+    counts = np.fromiter((k[2].count("#") for k in keys), dtype=np.int64, count=len(keys))
+    arcs = np.fromiter((k[1] == "d" and k[2] == ARC for k in keys), dtype=bool, count=len(keys))
+    return np.concatenate([[0], np.cumsum(counts)]), arcs
 
 
 def blend(a: np.ndarray, b: np.ndarray, t: Any, geometric: np.ndarray) -> np.ndarray:

@@ -92,6 +92,17 @@ def _knots(live: LiveSweep, kinds: np.ndarray) -> np.ndarray:
     start = live.start or rows
     # the starting values of the refinement: evenly spaced in log10 (live_sweep's np.linspace)
     firsts = sorted({int(np.argmin(np.abs(u - x))) for x in np.linspace(u[0], u[-1], start)})
+    # The columns walk the tree in the order of their kinds, each column's values in a row of its own: a cell's
+    # open columns of one kind are drawn from the grid values inside it by one formula over a block (as_drawn's,
+    # with the rows' fit broadcast), the values gathered in runs; which columns are still open is asked of all.
+    kinds = kinds if live.fit is not None else np.zeros(cols, dtype=np.int8)
+    order = np.argsort(kinds, kind="stable")
+    bounds = np.searchsorted(kinds[order], np.arange(LOG + 2))
+    qt, dt = np.ascontiguousarray(q[:, order].T), np.ascontiguousarray(drawn[:, order].T)
+    fit = live.fit if live.fit is not None else np.zeros((rows, 3))
+    ox, oy, sc = fit[:, 0], fit[:, 1], fit[:, 2]
+    drawn_as = {PX: lambda s, r: s, X: lambda s, r: ox[r] + sc[r] * s, Y: lambda s, r: oy[r] - sc[r] * s,
+                LENGTH: lambda s, r: sc[r] * s, LOG: lambda s, r: sc[r] * np.exp(s)}
 
     def mid_of(i: int, j: int) -> int | None:
         m = (u[i] + u[j]) / 2
@@ -101,24 +112,40 @@ def _knots(live: LiveSweep, kinds: np.ndarray) -> np.ndarray:
                 return k
         return None
 
-    todo = [(i, j, np.ones(cols, dtype=bool)) for i, j in zip(firsts[:-1], firsts[1:])]
+    def misses(at: np.ndarray, i: int, j: int, t: np.ndarray, r: slice) -> np.ndarray:
+        """How far the line between grid values i and j misses the drawing at grid values *r* (*t* of the way),
+        at most, in each column of *at*."""
+        err = np.empty(at.size)
+        edges = np.searchsorted(at, bounds)
+        for kind in range(LOG + 1):
+            a0, a1 = edges[kind], edges[kind + 1]
+            if a1 > a0:
+                g = at[a0:a1] if at[a1 - 1] - at[a0] >= a1 - a0 else slice(at[a0], at[a1 - 1] + 1)  # (a run: a view)
+                a, b = qt[g, i][:, None], qt[g, j][:, None]
+                err[a0:a1] = np.abs(drawn_as[kind](a + (b - a) * t, r) - dt[g, r]).max(axis=1)
+        return err
+
+    shut = np.zeros((rows, cols), dtype=bool)  # (in the columns' walking order)
+    todo = [(i, j, np.arange(cols)) for i, j in zip(firsts[:-1], firsts[1:])]
     while todo:
-        i, j, cs = todo.pop()
+        i, j, at = todo.pop()  # the columns still open here (deep in the tree, a few of thousands)
         m = mid_of(i, j)
         if m is None:  # a cell the refinement did not split: every column's own
-            keep[[i, j]] |= cs
+            shut[[i, j], at[:, None]] = True
             continue
-        # the line between the cell's quantised ends, at every grid value inside the cell, as drawn
-        t = ((u[i + 1:j] - u[i]) / (u[j] - u[i]))[:, None]
-        fit = live.fit[i + 1:j] if live.fit is not None else None
-        at = np.flatnonzero(cs)  # only the columns still open here (deep in the tree, a few of thousands)
-        err = np.abs(as_drawn(q[i, at] + (q[j, at] - q[i, at]) * t, fit, kinds[at]) - drawn[i + 1:j, at]).max(axis=0)
-        done = np.zeros(cols, dtype=bool)
-        done[at[err <= ROW_PX]] = True
-        keep[[i, j]] |= done
-        rest = cs & ~done
-        if rest.any():
+        # the line between the cell's quantised ends, at every grid value inside the cell, as drawn: first at
+        # the midpoint alone (most columns still open miss there), then at the others for the columns that do not
+        t = (u[i + 1:j] - u[i]) / (u[j] - u[i])
+        err = misses(at, i, j, t[m - i - 1:m - i], slice(m, m + 1))
+        near = np.flatnonzero(err <= ROW_PX)
+        if near.size and j - i > 2:
+            err[near] = misses(at[near], i, j, t, slice(i + 1, j))
+        done = err <= ROW_PX
+        shut[[i, j], at[done][:, None]] = True
+        rest = at[~done]
+        if rest.size:
             todo += [(i, m, rest), (m, j, rest)]
+    keep[:, order] |= shut
     return keep
 
 

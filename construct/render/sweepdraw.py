@@ -506,17 +506,8 @@ class SweepDrawing:
                  and not (key in self.curves and self._members(key)[0].straight and len(self.curves[key]) == 2)]
         if sum(s.shape[0] for s, _ in spans) < 2:
             return
-        # the spans in the order of the marks (ties in the sort below are equal spans: either order)
         S, E = np.vstack([s for s, _ in spans]), np.vstack([e for _, e in spans])
-        order = np.lexsort((E, S), axis=0)
-        S, E = np.take_along_axis(S, order, 0), np.take_along_axis(E, order, 0)
-        total = E[-1] - S[0]
-        reach = np.maximum.accumulate(E, axis=0)
-        gaps = S[1:] - reach[:-1]
-        j = np.argmax(gaps, axis=0)
-        cols = np.arange(self.n)
-        width = gaps[j, cols]
-        lo, hi = reach[j, cols], S[j + 1, cols]
+        lo, hi, width, total = _widest_gaps(S, E)
         brk = (width > 0) & (width > (BREAK_FRACTION if axis == 0 else BREAK_FRACTION_Y) * total)
         if not brk.any():
             return
@@ -732,6 +723,40 @@ def _arcs_over(cx: np.ndarray, cy: np.ndarray, X: np.ndarray, Y: np.ndarray) -> 
     start = np.where(one, a[:, 0], np.take_along_axis(a, (i + 1) % k, axis=1)[:, 0])
     sweep = np.where(one, 0.0, TWO_PI - np.take_along_axis(gaps, i, axis=1)[:, 0])
     return start, sweep, ok
+
+
+def _widest_gaps(S: np.ndarray, E: np.ndarray) -> tuple[np.ndarray, ...]:
+    """sheet._widest_gap over a sweep: the widest stretch no span [S, E] covers (spans x values), at every value:
+    (where it starts, where it ends, how wide, the figure's extent as the scalar walk reads it: from the first
+    start to the end of the span that starts last).  Where no stretch is uncovered the width is not positive.
+
+    The starts and the ends are sorted apart (numpy's sort of numbers, not an argsort of the pairs): after the
+    k-th end, the k+1-th start opens a stretch no span covers exactly when it lies past it, and then the k spans
+    that start first are the k that end first, so the stretch is the scalar walk's, to the bit.  A value with a
+    span of no extent (nan: a curve of another number of points) is walked as the scalar walk does, sorted by
+    start then end.
+
+    >>> [float(v[0]) for v in _widest_gaps(np.array([[0.0], [5.0], [1.0]]), np.array([[2.0], [6.0], [1.5]]))]
+    [2.0, 5.0, 3.0, 6.0]
+    """
+    s, e = np.sort(S, axis=0), np.sort(E, axis=0)
+    gaps = s[1:] - e[:-1]
+    j = np.argmax(gaps, axis=0)
+    cols = np.arange(S.shape[1])
+    # the end of the span that starts last (of those, the one that ends last)
+    last = np.where(S == s[-1], E, -np.inf).max(axis=0)
+    lo, hi, width, total = e[j, cols], s[j + 1, cols], gaps[j, cols], last - s[0]
+    odd = np.isnan(S).any(axis=0) | np.isnan(E).any(axis=0)
+    if odd.any():
+        So, Eo = S[:, odd], E[:, odd]
+        order = np.lexsort((Eo, So), axis=0)
+        So, Eo = np.take_along_axis(So, order, 0), np.take_along_axis(Eo, order, 0)
+        reach = np.maximum.accumulate(Eo, axis=0)
+        g = So[1:] - reach[:-1]
+        k = np.argmax(g, axis=0)
+        at = np.arange(So.shape[1])
+        lo[odd], hi[odd], width[odd], total[odd] = reach[k, at], So[k + 1, at], g[k, at], Eo[-1] - So[0]
+    return lo, hi, width, total
 
 
 def _arc_box(cx, cy, r, a0, sw) -> tuple:

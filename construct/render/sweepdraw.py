@@ -148,6 +148,7 @@ class SweepDrawing:
         self._sources = (objects, points, on, curves, areas)
         self._spans: dict[Any, tuple] = {}  # each end state line's marked span (the passes share them)
         self._kinds: dict[MarkKind, tuple] | None = None  # the marks' rows as far as the margin (:meth:`_lay_out`)
+        self._arcs_reach: tuple | None = None  # the arcs' start angles and their reach (_ArcReach), made once for them
         self._draw(margin)
         if self._broken is not None:
             # scene.build_scene: a broken figure is drawn again with the margin of what is left of it (its
@@ -360,7 +361,7 @@ class SweepDrawing:
             if kind is MarkKind.POINT:
                 self.geoms[kind] = got
             elif kind is MarkKind.SEGMENT:
-                self.geoms[kind] = _reach(got, margin)
+                self.geoms[kind] = _lines_reaching(got, margin)
             else:
                 self.geoms[kind] = self._round(kind, got, margin)
         self.rows = {k: [m for m in self.marks if m.kind is k and m.id not in curve_geoms] for k in MarkKind}
@@ -466,7 +467,7 @@ class SweepDrawing:
             P = np.array([[vec(line.p.x), vec(line.p.y), vec(line.q.x), vec(line.q.y)]])
             X, Y = (np.array([[p[c] for p in marked]]).reshape(1, len(marked), self.n) for c in (0, 1))
             got = self._spans[key] = tuple(a[0] for a in _line_spans(P, X, Y))
-        return _reach(got, margin)
+        return _lines_reaching(got, margin)
 
     def _arc_over(self, cx: np.ndarray, cy: np.ndarray, marked: list) -> tuple:
         """The arc over a circle's marked points (x, y arrays), before its margin: (start, sweep, where it is sure)."""
@@ -487,7 +488,10 @@ class SweepDrawing:
             cx, cy, r = g[MarkKind.CIRCLE]
             out[MarkKind.CIRCLE] = (cx - r, cx + r, cy - r, cy + r)
         if g[MarkKind.ARC]:
-            out[MarkKind.ARC] = _arc_box(*g[MarkKind.ARC])
+            cx, cy, r, a0, sw = g[MarkKind.ARC]
+            if self._arcs_reach is None or self._arcs_reach[0] is not a0:  # (a broken axis moves only the centres)
+                self._arcs_reach = (a0, _ArcReach(r, a0, sw))
+            out[MarkKind.ARC] = self._arcs_reach[1].box(cx, cy)
         for m in self.curve_marks:
             X, Y = np.vstack([p[0] for p in self.curves[m.id]]), np.vstack([p[1] for p in self.curves[m.id]])
             out[m.id] = (X.min(0)[None], X.max(0)[None], Y.min(0)[None], Y.max(0)[None])
@@ -685,7 +689,7 @@ def _line_spans(P: np.ndarray, X: np.ndarray, Y: np.ndarray) -> tuple:
     return px, py, ux, uy, lo, hi, tangent
 
 
-def _reach(spans: tuple, margin: np.ndarray) -> tuple:
+def _lines_reaching(spans: tuple, margin: np.ndarray) -> tuple:
     """Lines' spans (:func:`_line_spans`) drawn *margin* past their marked points (five margins at a tangent):
     (x1, y1, x2, y2)."""
     px, py, ux, uy, lo, hi, tangent = spans
@@ -761,13 +765,28 @@ def _widest_gaps(S: np.ndarray, E: np.ndarray) -> tuple[np.ndarray, ...]:
 
 def _arc_box(cx, cy, r, a0, sw) -> tuple:
     """marks._arc_extremes over arrays: an arc's ends and the quarter points it passes, as a box."""
-    lo, hi = np.minimum(a0, a0 + sw), np.maximum(a0, a0 + sw)
-    xs, ys = [cx + r * np.cos(a0), cx + r * np.cos(a0 + sw)], [cy + r * np.sin(a0), cy + r * np.sin(a0 + sw)]
-    quarter = math.pi / 2
-    first, last = np.ceil(lo / quarter), np.floor(hi / quarter)
-    for q in range(int(np.nanmin(first)), int(np.nanmax(last)) + 1):
-        inside = (q >= first) & (q <= last)
-        xs.append(np.where(inside, cx + r * math.cos(q * quarter), xs[0]))
-        ys.append(np.where(inside, cy + r * math.sin(q * quarter), ys[0]))
-    X, Y = np.stack(xs), np.stack(ys)
-    return (X.min(0), X.max(0), Y.min(0), Y.max(0))
+    return _ArcReach(r, a0, sw).box(cx, cy)
+
+
+class _ArcReach:
+    """How far an arc reaches from its centre along x and along y, each way (:func:`_arc_box` without its centre):
+    a broken axis moves an arc's centre, not its radius or its angles, so the box of an arc that moved is its
+    centre and the same reach.  The box is the scalar's to the bit: its x are ``cx + r cos(a)`` at the ends and at
+    the quarter points passed (one rounding of a product, one of a sum), and a sum rounds monotonically, so the
+    least of the sums is the centre plus the least of the products."""
+
+    def __init__(self, r, a0, sw) -> None:
+        lo, hi = np.minimum(a0, a0 + sw), np.maximum(a0, a0 + sw)
+        xs, ys = [r * np.cos(a0), r * np.cos(a0 + sw)], [r * np.sin(a0), r * np.sin(a0 + sw)]
+        quarter = math.pi / 2
+        first, last = np.ceil(lo / quarter), np.floor(hi / quarter)
+        for q in range(int(np.nanmin(first)), int(np.nanmax(last)) + 1):
+            inside = (q >= first) & (q <= last)
+            xs.append(np.where(inside, r * math.cos(q * quarter), xs[0]))
+            ys.append(np.where(inside, r * math.sin(q * quarter), ys[0]))
+        X, Y = np.stack(xs), np.stack(ys)
+        self.reach = (X.min(0), X.max(0), Y.min(0), Y.max(0))
+
+    def box(self, cx, cy) -> tuple:
+        x0, x1, y0, y1 = self.reach
+        return (cx + x0, cx + x1, cy + y0, cy + y1)

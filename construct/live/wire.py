@@ -80,13 +80,16 @@ def _largest_radius(live: LiveSweep) -> float:
     return float(max(np.max(live.drawn[:, r]), 1.0)) if r.any() else 1.0
 
 
-def _knots(live: LiveSweep, kinds: np.ndarray) -> np.ndarray:
-    """The grid values each column needs when stored as *kinds* says (see :func:`column_knots`)."""
-    drawn = live.drawn
+def _knots(live: LiveSweep, kinds: np.ndarray, columns: np.ndarray | None = None) -> np.ndarray:
+    """The grid values each column needs when stored as *kinds* says (see :func:`column_knots`); only the
+    *columns* given, if given (each column walks the tree alone: the others' are left as they are)."""
+    columns = np.arange(live.drawn.shape[1]) if columns is None else columns
+    drawn = live.drawn[:, columns]
     rows, cols = drawn.shape
     u = np.asarray(live.u if live.u is not None else np.log10(live.grid), dtype=float)
-    keep = np.zeros((rows, cols), dtype=bool)
+    keep = np.zeros((rows, live.drawn.shape[1]), dtype=bool)
     keep[:, live.nearest_columns()] = True
+    kinds = kinds[columns]
     quanta = _quanta(live, kinds)
     q = np.round(as_stored(drawn, live.fit, kinds) / quanta) * quanta
     start = live.start or rows
@@ -145,7 +148,7 @@ def _knots(live: LiveSweep, kinds: np.ndarray) -> np.ndarray:
         rest = at[~done]
         if rest.size:
             todo += [(i, m, rest), (m, j, rest)]
-    keep[:, order] |= shut
+    keep[:, columns[order]] |= shut
     return keep
 
 
@@ -181,7 +184,9 @@ def column_knots(live: LiveSweep) -> tuple[np.ndarray, np.ndarray]:
     as_drawn = _knots(live, np.zeros(cols, dtype=np.int8))
     if not natural.any():
         return as_drawn, natural
-    as_built = _knots(live, natural)
+    # (a number of the drawing only is stored as drawn either way: walked once)
+    as_built = _knots(live, natural, np.flatnonzero(natural))
+    as_built[:, natural == 0] = as_drawn[:, natural == 0]
     built = as_built.sum(axis=0) < as_drawn.sum(axis=0)
     return np.where(built, as_built, as_drawn), np.where(built, natural, 0).astype(np.int8)
 
@@ -216,14 +221,21 @@ def encode(live: LiveSweep) -> dict[str, Any]:
     pick = np.asarray(firsts, dtype=np.int64)
     uq, ukeep, ukinds = q[:, pick], keep[:, pick], kinds[pick]
     ukeep[[0, -1]] = True
-    values = [uq[ukeep[:, c], c] for c in range(uq.shape[1])]
-    steps = [np.diff(v) for v in values]
+    # every column's kept values one column after the other, and the steps between them (a column's first
+    # value is not a step)
+    values = uq.T[ukeep.T]
+    counts = ukeep.sum(axis=0)
+    first = np.zeros(values.size, dtype=bool)
+    first[(np.cumsum(counts) - counts)[counts > 0]] = True
+    column = np.repeat(np.arange(uq.shape[1]), counts)[~first]
+    steps = np.diff(values, prepend=0)[~first]
     # a column whose steps do not fit int16 (a rod's arc of radius 1000 r by its logarithm, to a tenth of a
     # pixel) has its steps in int32, apart: the kind's high bit says which
-    wide = np.asarray([d.size > 0 and int(np.abs(d).max()) >= 2 ** 15 for d in steps], dtype=bool)
+    wide = np.zeros(uq.shape[1], dtype=bool)
+    wide[column[np.abs(steps) >= 2 ** 15]] = True
     planes = b""
     for w, which in ((2, ~wide), (4, wide)):
-        d = np.concatenate([steps[c] for c in np.flatnonzero(which)] or [np.zeros(0, dtype=np.int64)])
+        d = steps[which[column]]
         planes += np.ascontiguousarray(d.astype(f"<i{w}").view(np.uint8).reshape(-1, w).T).tobytes()
     mapw = 2 if uq.shape[1] < 2 ** 16 else 4
     payload = (colmap.astype(f"<u{mapw}").tobytes() + (ukinds.astype(np.uint8) | (wide * 128).astype(np.uint8)).tobytes()

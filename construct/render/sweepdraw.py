@@ -639,21 +639,22 @@ class SweepDrawing:
             rr = r * scale
             out[MarkKind.ARC] = stack(x1, y1, rr, rr, 0.0 * rr, (sw > math.pi) * 1.0, 0.0 * rr + 1.0, x0, y0)
         for m in self.curve_marks:
-            P = [self._px(x, y) for x, y in self.curves[m.id]]
             if m.kind is MarkKind.AREA:  # (the page draws areas from their curves)
                 continue
+            pts = self.curves[m.id]
+            X, Y = self._px(np.vstack([p[0] for p in pts]), np.vstack([p[1] for p in pts]))  # points x values
+            k = X.shape[0]
             if m.straight:
-                closed = len(P) > 2 and tuple(m.geom[0]) == tuple(m.geom[-1])
-                cols = [c for p in (P[:-1] if closed else P) for c in p]
+                closed = k > 2 and tuple(m.geom[0]) == tuple(m.geom[-1])
+                cols = np.stack([X, Y], axis=1)[:k - 1 if closed else k].reshape(-1, self.n)
             else:
-                cols = [P[0][0], P[0][1]]
-                for i in range(len(P) - 1):
-                    p0 = P[i - 1] if i > 0 else P[i]
-                    p1, p2 = P[i], P[i + 1]
-                    p3 = P[i + 2] if i + 2 < len(P) else P[i + 1]
-                    cols += [p1[0] + (p2[0] - p0[0]) / 6.0, p1[1] + (p2[1] - p0[1]) / 6.0,
-                             p2[0] - (p3[0] - p1[0]) / 6.0, p2[1] - (p3[1] - p1[1]) / 6.0, p2[0], p2[1]]
-            out[m.id] = stack(*cols)[None]
+                # the smooth curve's control points (paths.bezier_controls), every segment at once
+                i = np.arange(k - 1)
+                i0, i2, i3 = np.maximum(i - 1, 0), i + 1, np.minimum(i + 2, k - 1)
+                segs = np.stack([X[i] + (X[i2] - X[i0]) / 6.0, Y[i] + (Y[i2] - Y[i0]) / 6.0,
+                                 X[i2] - (X[i3] - X[i]) / 6.0, Y[i2] - (Y[i3] - Y[i]) / 6.0, X[i2], Y[i2]], axis=1)
+                cols = np.concatenate([X[:1], Y[:1], segs.reshape(-1, self.n)])
+            out[m.id] = _r2(cols.T)[None]
         if getattr(self, "at_marks", None):
             x, y = self._px(*self.at_geom)
             r = np.array([[point_radius(m, st)] for m in self.at_marks]) + np.zeros(x.shape)

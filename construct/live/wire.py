@@ -23,7 +23,7 @@ from typing import Any
 
 import numpy as np
 
-from ..render.wire import ARC, LENGTH, LOG, PX, X, Y, as_drawn, as_stored, deflated, radii
+from ..render.wire import ARC, DEFLATE_LEVEL, LENGTH, LOG, PX, X, Y, as_drawn, as_stored, deflated, radii
 from .measure import Measure
 from .sweep import DERIVED_WRITTEN, QUANTUM_PX, LiveSweep, live_givens, live_sweep, pieces, reach
 
@@ -241,7 +241,7 @@ def encode(live: LiveSweep) -> dict[str, Any]:
     payload = (colmap.astype(f"<u{mapw}").tobytes() + (ukinds.astype(np.uint8) | (wide * 128).astype(np.uint8)).tobytes()
                + np.packbits(ukeep.T.reshape(-1)).tobytes() + fit.astype("<f4").tobytes()
                + uq[0].astype("<i4").tobytes() + planes)
-    return {"data": base64.b64encode(zlib.compress(payload, 9)).decode("ascii"), "mapw": mapw,
+    return {"data": base64.b64encode(zlib.compress(payload, DEFLATE_LEVEL)).decode("ascii"), "mapw": mapw,
             "ucols": int(uq.shape[1]), "q": STORED_PX, "qx": float(_quanta(live, np.ones(1, dtype=np.int8))[0]),
             "ql": float(_quanta(live, np.full(1, LOG, dtype=np.int8))[0])}
 

@@ -327,15 +327,13 @@ _KEY_COLUMNS: dict[int, tuple] = {}
 
 def _key_columns(keys: list[tuple[str, str, str]]) -> tuple[np.ndarray, ...]:
     """Which key each number of *keys* belongs to, which numbers are views, which are large-arc flags, which are
-    radii, and where each key's numbers begin (the keys that have any, and their first numbers): asked at every
-    cell of the refinement, for the same list of keys (known by its identity: hashing thousands of keys at every
+    radii: asked at every cell of the refinement, for the same list of keys (known by its identity: hashing thousands of keys at every
     cell cost more than the cell)."""
     got = _KEY_COLUMNS.get(id(keys))
     if got is not None and got[0] is keys:
         return got[1]
     owner = np.asarray([i for i, k in enumerate(keys) for _ in range(k[2].count("#"))], dtype=int)
-    starts = np.flatnonzero(np.r_[True, owner[1:] != owner[:-1]]) if owner.size else np.zeros(0, dtype=int)
-    made = (owner, _columns(keys, lambda k: k[0] == "#zoom"), arc_flags(keys), radii(keys), owner[starts], starts)
+    made = (owner, _columns(keys, lambda k: k[0] == "#zoom"), arc_flags(keys), radii(keys))
     if len(_KEY_COLUMNS) >= 4:
         _KEY_COLUMNS.clear()
     _KEY_COLUMNS[id(keys)] = (keys, made)
@@ -351,7 +349,7 @@ def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
     large-arc flags and snapped keys come from either end
     (the worse counts); a wrong flag moves the arc by the distance between the two centres its ends and
     radius allow, 2 sqrt(r^2 - (c/2)^2)."""
-    owner, views, flags, geometric, keyed, starts = _key_columns(keys)
+    owner, views, flags, geometric = _key_columns(keys)
     if owner.size == 0:
         return 0.0, {}
     q = lambda n: np.round(n / QUANTUM_PX) * QUANTUM_PX  # noqa: E731
@@ -365,14 +363,16 @@ def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
     half = np.hypot(exact[c + 2] - exact[c - 5], exact[c + 3] - exact[c - 4]) / 2
     r = exact[c - 3]
     col_err[c] = np.where(flipped, 2 * np.sqrt(np.maximum(r * r - half * half, 0.0)), 0.0)
-    key_err = np.zeros(len(keys))
-    key_err[keyed] = np.maximum.reduceat(col_err, starts)
+    worst = float(col_err.max())
+    if not worst > REFINE_PX:  # (the commonest: a cell that holds; no key to name)
+        return worst, {}
+    bad = np.unique(owner[col_err > REFINE_PX])  # the keys with a number that misses
     # what a culprit misses by in its coordinates (a large-arc flag that flips is not a jump of the arc: the
     # two arcs its ends allow meet as it flips, and refining converges there)
-    coord_err = np.zeros(len(keys))
-    coord_err[keyed] = np.maximum.reduceat(np.where(flags & ~nearest, 0.0, col_err), starts)
-    bad = np.nonzero(key_err > REFINE_PX)[0].tolist()
-    return float(col_err.max()), {k: float(coord_err[k]) for k in bad}
+    at = np.flatnonzero(np.isin(owner, bad))
+    coord_err = np.full(len(keys), -np.inf)
+    np.maximum.at(coord_err, owner[at], np.where(flags & ~nearest, 0.0, col_err)[at])
+    return worst, {k: float(coord_err[k]) for k in bad.tolist()}
 
 
 def _ahead(a: float, b: float, depth: int) -> list[float]:

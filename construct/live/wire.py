@@ -266,7 +266,9 @@ def _same_columns(q: np.ndarray, keep: np.ndarray, kinds: np.ndarray) -> tuple[n
     seen: dict[tuple[int, int], int] = {}
     colmap = np.fromiter((seen.setdefault(s, c) for c, s in enumerate(map(tuple, sums.tolist()))), dtype=np.int64,
                          count=cols)
-    same = (q == q[:, colmap]).all(axis=0) & (keep == keep[:, colmap]).all(axis=0) & (kinds == kinds[colmap])
+    dup = np.flatnonzero(colmap != np.arange(cols))  # (a column is itself: only those like an earlier one)
+    of = colmap[dup]
+    same = (q[:, dup] == q[:, of]).all(axis=0) & (keep[:, dup] == keep[:, of]).all(axis=0) & (kinds[dup] == kinds[of])
     if not same.all():  # two columns with the same sums: by their bytes
         whole = np.ascontiguousarray(np.vstack([q, keep, kinds[None, :]]).T)
         by_bytes: dict[bytes, int] = {}

@@ -133,9 +133,13 @@ def _arc_keys(keys: list[tuple[str, str, str]]) -> tuple[np.ndarray, np.ndarray]
 def blend(a: np.ndarray, b: np.ndarray, t: Any, geometric: np.ndarray) -> np.ndarray:
     """The page's drawing between two grid values' numbers *a* and *b*, the fraction *t* of the way in log10 of
     the given: linear, and geometric for the radii (*geometric*, :func:`radii`)."""
-    with np.errstate(divide="ignore", invalid="ignore"):
-        geo = a * np.power(np.where(a > 0, b / a, 1.0), t)
-    return np.where(geometric & (a > 0) & (b > 0), geo, a + (b - a) * t)
+    out = np.array(a + (b - a) * t, dtype=float)
+    # (the power only where it is taken: the radii are a few of a sweep's thousands of numbers)
+    g = np.broadcast_to(geometric & (a > 0) & (b > 0), out.shape)
+    if g.any():
+        A, B = np.broadcast_to(a, out.shape)[g], np.broadcast_to(b, out.shape)[g]
+        out[g] = A * np.power(B / A, t if np.ndim(t) == 0 else np.broadcast_to(t, out.shape)[g])
+    return out
 
 
 def canonical_arc(ns: list[float]) -> list[float]:

@@ -104,8 +104,18 @@ def _knots(live: LiveSweep, kinds: np.ndarray, columns: np.ndarray | None = None
     qt, dt = np.ascontiguousarray(q[:, order].T), np.ascontiguousarray(drawn[:, order].T)
     fit = live.fit if live.fit is not None else np.zeros((rows, 3))
     ox, oy, sc = fit[:, 0], fit[:, 1], fit[:, 2]
-    drawn_as = {PX: lambda s, r: s, X: lambda s, r: ox[r] + sc[r] * s, Y: lambda s, r: oy[r] - sc[r] * s,
-                LENGTH: lambda s, r: sc[r] * s, LOG: lambda s, r: sc[r] * np.exp(s)}
+
+    def drawn_as(kind: int, s: np.ndarray, r: slice) -> np.ndarray:
+        """as_drawn of stored numbers *s* (columns of one *kind* x grid values *r*), in place (the same roundings)."""
+        if kind == LOG:
+            np.exp(s, out=s)
+        if kind != PX:
+            s *= sc[r]
+        if kind == X:
+            s += ox[r]
+        elif kind == Y:
+            np.subtract(oy[r], s, out=s)
+        return s
 
     def mid_of(i: int, j: int) -> int | None:
         m = (u[i] + u[j]) / 2
@@ -124,8 +134,12 @@ def _knots(live: LiveSweep, kinds: np.ndarray, columns: np.ndarray | None = None
             a0, a1 = edges[kind], edges[kind + 1]
             if a1 > a0:
                 g = at[a0:a1] if at[a1 - 1] - at[a0] >= a1 - a0 else slice(at[a0], at[a1 - 1] + 1)  # (a run: a view)
-                a, b = qt[g, i][:, None], qt[g, j][:, None]
-                err[a0:a1] = np.abs(drawn_as[kind](a + (b - a) * t, r) - dt[g, r]).max(axis=1)
+                a = qt[g, i][:, None]
+                line = (qt[g, j][:, None] - a) * t
+                line += a
+                miss = drawn_as(kind, line, r)
+                miss -= dt[g, r]
+                err[a0:a1] = np.abs(miss, out=miss).max(axis=1)
         return err
 
     shut = np.zeros((rows, cols), dtype=bool)  # (in the columns' walking order)

@@ -41,7 +41,7 @@ import numpy as np
 from ..constructions import Construction
 from ..constructions.domain import KAPPA_RANGE, ROD_RATIO, Domain
 from ..figure import Figure
-from ..kernel.errors import InvalidParameter
+from ..kernel.errors import ConstructError, InvalidParameter
 from ..kernel.instruments import unlettered
 from ..render.styles import STYLES
 from ..render.wire import arc_flags, blend, radii
@@ -222,7 +222,8 @@ def _value_at(domain: Domain):
     return lambda u: float(min(max(10 ** u, domain.low), domain.high))
 
 
-def _changes(forms, us: list[float], tol: float) -> tuple[list[tuple[float, float]], dict[float, Any]]:
+def _changes(forms, us: list[float], tol: float, ahead: bool = False) -> tuple[list[tuple[float, float]],
+                                                                              dict[float, Any]]:
     """Every change of form between neighbours of *us* (log10 of the given), each found by bisection down to a
     cell of *tol*: the cells (a, b) across which it changes, in order, and the form found at every value asked.
     *forms* tells the forms at a list of values at once (each round of the bisection asks its midpoints together)."""
@@ -231,7 +232,18 @@ def _changes(forms, us: list[float], tol: float) -> tuple[list[tuple[float, floa
     todo = [(a, b) for a, b in zip(us[:-1], us[1:]) if known[a] != known[b]]
     while todo:
         mids = [(a + b) / 2 for a, b in todo if b - a > tol and (a + b) / 2 not in known]
-        known.update(zip(mids, forms(mids)))
+        if mids and ahead:
+            # and the midpoints the bisection will ask for below them, as live_sweep looks ahead (*ahead*: a round
+            # of *forms* is one replay, whatever the number of values); where the construction fails at one of
+            # those, only what this round needs
+            below = [q for a, b in todo if b - a > tol for q in _ahead(a, b, _depth(len(todo)))]
+            more = [q for q in dict.fromkeys(mids + below) if q not in known]
+            try:
+                known.update(zip(more, forms(more)))
+            except ConstructError:
+                known.update(zip(mids, forms(mids)))
+        else:
+            known.update(zip(mids, forms(mids)))
         nxt = []
         for a, b in todo:
             if b - a <= tol:
@@ -247,15 +259,16 @@ def _changes(forms, us: list[float], tol: float) -> tuple[list[tuple[float, floa
 
 
 def _pieces_from(construction: Construction, figure: Figure, given: str, domain: Domain, scan: int, forms,
-                 built: Any, holds) -> list[Piece]:
+                 built: Any, holds, ahead: bool = False) -> list[Piece]:
     """The pieces of *domain* from the steps' forms (*forms*: at a list of log10 values at once; *built*: the
     built figure's), each other piece's protocol from one lettered build inside it; the whole domain as one piece
-    where no change is found or a piece would begin where the construction does not hold."""
+    where no change is found or a piece would begin where the construction does not hold.  *ahead*: *forms* costs
+    a round, not a value (one replay): the bisection asks for the values below its midpoints in the same round."""
     value = _value_at(domain)
     lo, hi = math.log10(domain.low), math.log10(domain.high)
     initial = math.log10(float(figure.replay.givens[given]))
     us = sorted(set(np.linspace(lo, hi, scan).tolist()) | {initial})
-    cuts, form = _changes(forms, us, FORM_TOL)
+    cuts, form = _changes(forms, us, FORM_TOL, ahead)
     if not cuts:
         return [Piece(domain.low, domain.high, figure.protocol)]
     ends = [lo] + [x for a, b in cuts for x in (a, b)] + [hi]
@@ -319,7 +332,7 @@ def form_pieces(construction: Construction, figure: Figure, given: str, domain: 
     if fresh is None or _form(fresh) != _form(protocol):
         return [Piece(domain.low, domain.high, protocol)]
     return _pieces_from(construction, figure, given, domain, scan, forms, at[0],
-                        lambda u: _holds(construction, givens, protocol.params, given, value(u)))
+                        lambda u: _holds(construction, givens, protocol.params, given, value(u)), ahead=True)
 
 
 _KEY_COLUMNS: dict[int, tuple] = {}

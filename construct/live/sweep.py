@@ -340,8 +340,8 @@ _KEY_COLUMNS: dict[int, tuple] = {}
 
 def _key_columns(keys: list[tuple[str, str, str]]) -> tuple[np.ndarray, ...]:
     """Which key each number of *keys* belongs to, which numbers are views, which are large-arc flags, which are
-    radii: asked at every cell of the refinement, for the same list of keys (known by its identity: hashing thousands of keys at every
-    cell cost more than the cell)."""
+    radii: asked at every cell of the refinement, for the same list of keys (known by its identity: hashing
+    thousands of keys at every cell cost more than the cell)."""
     got = _KEY_COLUMNS.get(id(keys))
     if got is not None and got[0] is keys:
         return got[1]

@@ -23,7 +23,7 @@ from typing import Any
 
 import numpy as np
 
-from ..render.wire import ARC, DEFLATE_LEVEL, LENGTH, LOG, PX, X, Y, as_drawn, as_stored, deflated, radii
+from ..render.wire import ARC, DEFLATE_LEVEL, LENGTH, LOG, PX, X, Y, as_stored, deflated, radii
 from .measure import Measure
 from .sweep import DERIVED_WRITTEN, QUANTUM_PX, LiveSweep, live_givens, live_sweep, pieces, reach
 

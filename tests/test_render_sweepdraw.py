@@ -80,3 +80,36 @@ def test_a_figure_with_hatched_areas_is_left_to_the_drawing():
     assert not sweep_drawable(scene, STYLES["historical"]) and not sweep_drawable(scene, STYLES["teaching"])
     assert sweep_drawable(scene, STYLES["teaching"], hatching=False)
     assert sweep_drawable(scene_for(get("crank"), get("crank").figure(parts=3)))
+
+
+def _walk(spans: list[tuple[float, float]]) -> tuple[float, float, float, float] | None:
+    """The scalar walk of sheet._widest_gap, written out again: the spans sorted by start then end, each stretch
+    past the running end a gap; (start, end, width, extent as the walk reads it) of the widest, or None."""
+    ivals = sorted(spans)
+    total = ivals[-1][1] - ivals[0][0]
+    best, reach = None, ivals[0][1]
+    for a, b in ivals[1:]:
+        if a > reach and (best is None or a - reach > best[1] - best[0]):
+            best = (reach, a)
+        reach = max(reach, b)
+    return None if best is None else (best[0], best[1], best[1] - best[0], total)
+
+
+def test_the_widest_gaps_of_a_sweep_are_the_scalar_walks_to_the_bit():
+    from construct.render.sweepdraw import _widest_gaps
+
+    rng = np.random.default_rng(9)
+    # 400 values of 30 spans: points, overlapping and nested spans, equal starts and equal ends (rounded to
+    # tenths, so that ties are common), a few far apart (a gap to break)
+    S = np.round(rng.random((30, 400)) * 10, 1) + np.where(rng.random((30, 1)) < 0.2, 40.0, 0.0)
+    E = S + np.where(rng.random((30, 400)) < 0.3, 0.0, np.round(rng.random((30, 400)) * 3, 1))
+    lo, hi, width, total = _widest_gaps(S, E)
+    gaps = 0
+    for i in range(S.shape[1]):
+        want = _walk(list(zip(S[:, i].tolist(), E[:, i].tolist())))
+        if want is None:
+            assert not width[i] > 0
+            continue
+        gaps += 1
+        assert (lo[i], hi[i], width[i], total[i]) == want
+    assert gaps > 300  # (the spans far apart leave a gap at most values)

@@ -285,32 +285,31 @@ class Measure:
         px = at_once.page_px
 
         # every mark's box (x0, x1, y0, y1: rows of marks x values), each view's and ring's marks as rows of them
-        # (found once for a protocol's marks: every round asks for the same boxes of the same marks)
+        # (found once for a protocol's marks: every round asks for the same boxes of the same marks), all the
+        # views' and rings' boxes at once: their marks' rows one after the other, each group reduced
         marked = tuple(at_once.extremes)
-        ends = [np.vstack([e[k] for e in at_once.extremes.values()]) if marked else None for k in range(4)]
         found = self._rows.get(id(protocol))
         if found is None or found[0] != marked:
             at = {i: r for r, i in enumerate(marked)}
-            boxed = map(tuple, self.framed + [ids for _, ids in self.rings])
-            found = self._rows[id(protocol)] = (marked, {ids: np.asarray([at[i] for i in ids if i in at], dtype=int)
-                                                         for ids in boxed})
-        picks = found[1]
-
-        def box_of(ids: list[str]) -> tuple | None:  # the box of marks on the page of every value (canvas px)
-            r = picks[tuple(ids)]
-            if not r.size:
-                return None
-            (x0, y0), (x1, y1) = (px(ends[0][r].min(0), ends[3][r].max(0)), px(ends[1][r].max(0), ends[2][r].min(0)))
-            return x0, y0, x1, y1
-
-        carried = [self._carried_all(j, box_of(ids), width, height) for j, ids in enumerate(self.framed)]
-        carried.append([np.zeros(size), np.zeros(size), width, height])  # [-1]: the whole figure
-        blocks = [np.zeros((size, 2)), width[:, None], height[:, None], rows]
-        blocks += [np.column_stack(carried[j]) for j in self.view_of]
-        for _, ids in self.rings:  # the ring's centre: of the box of the step's marks
-            b = box_of(ids)
-            blocks.append(np.zeros((size, 2)) if b is None else
-                          np.column_stack([np.round((b[0] + b[2]) / 2, 2), np.round((b[1] + b[3]) / 2, 2)]))
+            groups = [[at[i] for i in ids if i in at] for ids in self.framed + [ids for _, ids in self.rings]]
+            sizes = np.asarray([len(g) for g in groups], dtype=int)
+            found = self._rows[id(protocol)] = (marked, np.asarray([r for g in groups for r in g], dtype=int),
+                                                (np.cumsum(sizes) - sizes)[sizes > 0], sizes > 0)
+        _, rows_of, starts, boxed = found
+        box = np.full((4, len(boxed), size), np.nan)  # per group: x0, y0, x1, y1 on the page of every value
+        if rows_of.size:
+            ends = [np.vstack([e[k] for e in at_once.extremes.values()])[rows_of] for k in range(4)]
+            least, most = np.minimum.reduceat, np.maximum.reduceat
+            box[:, boxed] = (*px(least(ends[0], starts, axis=0), most(ends[3], starts, axis=0)),
+                             *px(most(ends[1], starts, axis=0), least(ends[2], starts, axis=0)))
+        views = len(self.framed)
+        carried = self._carried_rows(box[:, :views], boxed[:views], width, height)  # (views + 1) x 4 x values
+        blocks = [np.zeros((size, 2)), width[:, None], height[:, None], rows,
+                  carried[self.view_of].transpose(2, 0, 1).reshape(size, -1)]
+        if self.rings:  # the ring's centre: of the box of the step's marks
+            ring = box[:, views:]
+            centre = np.stack([np.round((ring[0] + ring[2]) / 2, 2), np.round((ring[1] + ring[3]) / 2, 2)])
+            blocks.append(np.where(boxed[views:, None], centre, 0.0).transpose(2, 1, 0).reshape(size, -1))
         blocks.append(at_once.breaks_page())
         table = np.hstack(blocks)
         fits = [tuple(row) for row in at_once.fit.tolist()]
@@ -329,24 +328,26 @@ class Measure:
             out.append((keys, table[i], fits[i], texts))
         return out
 
-    def _carried_all(self, j: int, box: tuple | None, W: np.ndarray, H: np.ndarray) -> list[np.ndarray]:
-        """:meth:`_carried` over a sweep: view j carried along with its marks' boxes *box* (arrays over the values),
-        on pages W x H."""
-        x, y, w, h = self.views[j]
-        b0 = self.boxes[j]
-        zero = np.zeros(W.shape)
-        if b0 is None or box is None:
-            return [zero, zero, W, H]
+    def _carried_rows(self, box: np.ndarray, boxed: np.ndarray, W: np.ndarray, H: np.ndarray) -> np.ndarray:
+        """:meth:`_carried` over a sweep, every view at once: the views carried along with their marks' boxes *box*
+        (x0, y0, x1, y1 x views x values; *boxed*: the views whose marks the sweep draws), on pages W x H, and
+        the whole page last: (views + 1) x (x, y, w, h) x values."""
+        x, y, w, h = np.asarray(self.views, dtype=float).reshape(-1, 4).T[:, :, None]
+        b0 = np.asarray([b if b is not None else (np.nan,) * 4 for b in self.boxes], dtype=float).reshape(-1, 4)
+        b0 = b0.T[:, :, None]
+        full = [np.zeros(W.shape), np.zeros(W.shape), W, H]
         fw, fh = 0.25 * w, 0.25 * h
-        s = np.maximum(np.maximum(box[2] - box[0], fw) / max(b0[2] - b0[0], fw),
-                       np.maximum(box[3] - box[1], fh) / max(b0[3] - b0[1], fh))
-        s = np.where(s < 1.0, np.maximum(s, np.minimum(1.0, self.least * np.maximum(W / w, H / h))), s)
-        whole = (w * s >= W) & (h * s >= H)
-        cx = (box[0] + box[2]) / 2 + (x + w / 2 - (b0[0] + b0[2]) / 2) * s
-        cy = (box[1] + box[3]) / 2 + (y + h / 2 - (b0[1] + b0[3]) / 2) * s
-        vw, vh = np.minimum(w * s, W), np.minimum(h * s, H)  # camera.clip_view over the sweep: on the canvas
-        view = [np.clip(cx - vw / 2, 0.0, W - vw), np.clip(cy - vh / 2, 0.0, H - vh), vw, vh]
-        return [np.where(whole, f, np.round(v, 2) + 0.0) for f, v in zip((zero, zero, W, H), view)]
+        with np.errstate(invalid="ignore"):  # (the views without a box are the whole page)
+            s = np.maximum(np.maximum(box[2] - box[0], fw) / np.maximum(b0[2] - b0[0], fw),
+                           np.maximum(box[3] - box[1], fh) / np.maximum(b0[3] - b0[1], fh))
+            s = np.where(s < 1.0, np.maximum(s, np.minimum(1.0, self.least * np.maximum(W / w, H / h))), s)
+            whole = (w * s >= W) & (h * s >= H) | ~(boxed & ~np.isnan(b0[0]).ravel())[:, None]
+            cx = (box[0] + box[2]) / 2 + (x + w / 2 - (b0[0] + b0[2]) / 2) * s
+            cy = (box[1] + box[3]) / 2 + (y + h / 2 - (b0[1] + b0[3]) / 2) * s
+            vw, vh = np.minimum(w * s, W), np.minimum(h * s, H)  # camera.clip_view over the sweep: on the canvas
+            view = [np.clip(cx - vw / 2, 0.0, W - vw), np.clip(cy - vh / 2, 0.0, H - vh), vw, vh]
+            out = np.stack([np.where(whole, f, np.round(v, 2) + 0.0) for f, v in zip(full, view)], axis=1)
+        return np.concatenate([out, np.stack(full)[None]])
 
     def __call__(self, figure: Figure) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:
         # (with its end state where the player shows one: its own marks, the plate's, are drawn as the rest)

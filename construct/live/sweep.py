@@ -42,7 +42,7 @@ import numpy as np
 from ..constructions import Construction
 from ..constructions.domain import KAPPA_RANGE, ROD_RATIO, Domain
 from ..figure import Figure
-from ..kernel.errors import InvalidParameter
+from ..kernel.errors import ConstructError, InvalidParameter
 from ..kernel.instruments import unlettered
 from ..render.styles import STYLES
 from ..render.wire import arc_flags, blend, radii
@@ -83,8 +83,14 @@ REFINE_PX = 0.4
 QUANTUM_PX = 0.05
 #: A jump caused by at most this many marks is theirs (they are drawn from the nearer grid value), not the figure's.
 SNAP_AT_MOST = 3
-#: A round of the refinement draws the midpoints of a cell's halves (and of theirs, ...) this many levels ahead.
+#: A round of the refinement draws the midpoints of a cell's halves (and of theirs, ...) at least this many levels
+#: ahead, and deeper while the round draws at most AHEAD_VALUES values: a round costs about as much as a hundred
+#: values (its marks' Python and the replay's steps, whatever the number of values), so the last rounds, which split
+#: a few cells down towards a jump, look further ahead (what no cell needs is dropped; the grid is the same).
 AHEAD = 1
+AHEAD_VALUES = 64
+#: ... and never more levels ahead than this.
+AHEAD_MOST = 6
 #: A mark whose miss at a cell's midpoint stays above this share of its miss in the cell split into it, twice
 #: running, jumps there (a smooth mark's miss falls to a quarter at each halving, a kink's to a half).
 JUMPING = 0.85
@@ -217,7 +223,8 @@ def _value_at(domain: Domain):
     return lambda u: float(min(max(10 ** u, domain.low), domain.high))
 
 
-def _changes(forms, us: list[float], tol: float) -> tuple[list[tuple[float, float]], dict[float, Any]]:
+def _changes(forms, us: list[float], tol: float, ahead: bool = False) -> tuple[list[tuple[float, float]],
+                                                                              dict[float, Any]]:
     """Every change of form between neighbours of *us* (log10 of the given), each found by bisection down to a
     cell of *tol*: the cells (a, b) across which it changes, in order, and the form found at every value asked.
     *forms* tells the forms at a list of values at once (each round of the bisection asks its midpoints together)."""
@@ -226,7 +233,18 @@ def _changes(forms, us: list[float], tol: float) -> tuple[list[tuple[float, floa
     todo = [(a, b) for a, b in zip(us[:-1], us[1:]) if known[a] != known[b]]
     while todo:
         mids = [(a + b) / 2 for a, b in todo if b - a > tol and (a + b) / 2 not in known]
-        known.update(zip(mids, forms(mids)))
+        if mids and ahead:
+            # and the midpoints the bisection will ask for below them, as live_sweep looks ahead (*ahead*: a round
+            # of *forms* is one replay, whatever the number of values); where the construction fails at one of
+            # those, only what this round needs
+            below = [q for a, b in todo if b - a > tol for q in _ahead(a, b, _depth(len(todo)))]
+            more = [q for q in dict.fromkeys(mids + below) if q not in known]
+            try:
+                known.update(zip(more, forms(more)))
+            except ConstructError:
+                known.update(zip(mids, forms(mids)))
+        else:
+            known.update(zip(mids, forms(mids)))
         nxt = []
         for a, b in todo:
             if b - a <= tol:
@@ -242,15 +260,16 @@ def _changes(forms, us: list[float], tol: float) -> tuple[list[tuple[float, floa
 
 
 def _pieces_from(construction: Construction, figure: Figure, given: str, domain: Domain, scan: int, forms,
-                 built: Any, holds) -> list[Piece]:
+                 built: Any, holds, ahead: bool = False) -> list[Piece]:
     """The pieces of *domain* from the steps' forms (*forms*: at a list of log10 values at once; *built*: the
     built figure's), each other piece's protocol from one lettered build inside it; the whole domain as one piece
-    where no change is found or a piece would begin where the construction does not hold."""
+    where no change is found or a piece would begin where the construction does not hold.  *ahead*: *forms* costs
+    a round, not a value (one replay): the bisection asks for the values below its midpoints in the same round."""
     value = _value_at(domain)
     lo, hi = math.log10(domain.low), math.log10(domain.high)
     initial = math.log10(float(figure.replay.givens[given]))
     us = sorted(set(np.linspace(lo, hi, scan).tolist()) | {initial})
-    cuts, form = _changes(forms, us, FORM_TOL)
+    cuts, form = _changes(forms, us, FORM_TOL, ahead)
     if not cuts:
         return [Piece(domain.low, domain.high, figure.protocol)]
     ends = [lo] + [x for a, b in cuts for x in (a, b)] + [hi]
@@ -314,7 +333,7 @@ def form_pieces(construction: Construction, figure: Figure, given: str, domain: 
     if fresh is None or _form(fresh) != _form(protocol):
         return [Piece(domain.low, domain.high, protocol)]
     return _pieces_from(construction, figure, given, domain, scan, forms, at[0],
-                        lambda u: _holds(construction, givens, protocol.params, given, value(u)))
+                        lambda u: _holds(construction, givens, protocol.params, given, value(u)), ahead=True)
 
 
 _KEY_COLUMNS: dict[int, tuple] = {}
@@ -322,15 +341,13 @@ _KEY_COLUMNS: dict[int, tuple] = {}
 
 def _key_columns(keys: list[tuple[str, str, str]]) -> tuple[np.ndarray, ...]:
     """Which key each number of *keys* belongs to, which numbers are views, which are large-arc flags, which are
-    radii, and where each key's numbers begin (the keys that have any, and their first numbers): asked at every
-    cell of the refinement, for the same list of keys (known by its identity: hashing thousands of keys at every
-    cell cost more than the cell)."""
+    radii: asked at every cell of the refinement, for the same list of keys (known by its identity: hashing
+    thousands of keys at every cell cost more than the cell)."""
     got = _KEY_COLUMNS.get(id(keys))
     if got is not None and got[0] is keys:
         return got[1]
     owner = np.asarray([i for i, k in enumerate(keys) for _ in range(k[2].count("#"))], dtype=int)
-    starts = np.flatnonzero(np.r_[True, owner[1:] != owner[:-1]]) if owner.size else np.zeros(0, dtype=int)
-    made = (owner, _columns(keys, lambda k: k[0] == "#zoom"), arc_flags(keys), radii(keys), owner[starts], starts)
+    made = (owner, _columns(keys, lambda k: k[0] == "#zoom"), arc_flags(keys), radii(keys))
     if len(_KEY_COLUMNS) >= 4:
         _KEY_COLUMNS.clear()
     _KEY_COLUMNS[id(keys)] = (keys, made)
@@ -346,7 +363,7 @@ def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
     large-arc flags and snapped keys come from either end
     (the worse counts); a wrong flag moves the arc by the distance between the two centres its ends and
     radius allow, 2 sqrt(r^2 - (c/2)^2)."""
-    owner, views, flags, geometric, keyed, starts = _key_columns(keys)
+    owner, views, flags, geometric = _key_columns(keys)
     if owner.size == 0:
         return 0.0, {}
     q = lambda n: np.round(n / QUANTUM_PX) * QUANTUM_PX  # noqa: E731
@@ -360,14 +377,16 @@ def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
     half = np.hypot(exact[c + 2] - exact[c - 5], exact[c + 3] - exact[c - 4]) / 2
     r = exact[c - 3]
     col_err[c] = np.where(flipped, 2 * np.sqrt(np.maximum(r * r - half * half, 0.0)), 0.0)
-    key_err = np.zeros(len(keys))
-    key_err[keyed] = np.maximum.reduceat(col_err, starts)
+    worst = float(col_err.max())
+    if not worst > REFINE_PX:  # (the commonest: a cell that holds; no key to name)
+        return worst, {}
+    bad = np.unique(owner[col_err > REFINE_PX])  # the keys with a number that misses
     # what a culprit misses by in its coordinates (a large-arc flag that flips is not a jump of the arc: the
     # two arcs its ends allow meet as it flips, and refining converges there)
-    coord_err = np.zeros(len(keys))
-    coord_err[keyed] = np.maximum.reduceat(np.where(flags & ~nearest, 0.0, col_err), starts)
-    bad = np.nonzero(key_err > REFINE_PX)[0].tolist()
-    return float(col_err.max()), {k: float(coord_err[k]) for k in bad}
+    at = np.flatnonzero(np.isin(owner, bad))
+    coord_err = np.full(len(keys), -np.inf)
+    np.maximum.at(coord_err, owner[at], np.where(flags & ~nearest, 0.0, col_err)[at])
+    return worst, {k: float(coord_err[k]) for k in bad.tolist()}
 
 
 def _ahead(a: float, b: float, depth: int) -> list[float]:
@@ -379,9 +398,22 @@ def _ahead(a: float, b: float, depth: int) -> list[float]:
     return [(a + m) / 2, (m + b) / 2] + _ahead(a, m, depth - 1) + _ahead(m, b, depth - 1)
 
 
+def _depth(cells: int) -> int:
+    """How many levels ahead a round of *cells* cells draws (AHEAD, AHEAD_VALUES, AHEAD_MOST).
+
+    >>> _depth(100), _depth(2), _depth(1)
+    (1, 4, 5)
+    """
+    depth = AHEAD
+    while depth < AHEAD_MOST and cells * (2 ** (depth + 2) - 1) <= AHEAD_VALUES:
+        depth += 1
+    return depth
+
+
 def _columns(keys: list[tuple[str, str, str]], pick) -> np.ndarray:
     """Which numbers of *keys* belong to keys *pick* selects."""
-    return np.asarray([pick(k) for k in keys for _ in range(k[2].count("#"))], dtype=bool)
+    counts = np.fromiter((k[2].count("#") for k in keys), dtype=np.int64, count=len(keys))
+    return np.repeat(np.fromiter(map(pick, keys), dtype=bool, count=len(keys)), counts)
 
 
 @dataclass
@@ -505,7 +537,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
         # and the midpoints of their halves, drawn ahead: a cell that must be split has its halves tested in the
         # same round (a round draws every mark of the figure once, over all its values: its cost is the marks',
         # not the values'); what no cell needed is dropped
-        ahead = [q for a, b in todo for q in _ahead(a, b, AHEAD)]
+        ahead = [q for a, b in todo for q in _ahead(a, b, _depth(len(todo)))]
         drawn, _ = _frames(construction, figure, given, values(first + mids + ahead), measure, protocol)
         got = dict(zip(first + mids + ahead, as_arrays(drawn)))
         data.update((u, got.pop(u)) for u in first)
@@ -548,15 +580,14 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
         todo = nxt
     us = sorted(data)
     # The keys every grid value shares; a few elements change form (e.g. a curve's number of points):
-    # they stay at the built value.
-    shared = set(data[us[0]][0])
-    for u in us:
-        shared &= set(data[u][0])
-    keys = [k for k in data[us[0]][0] if k in shared]
+    # they stay at the built value.  (Most values share one list of keys, the same object: each list is read once.)
+    forms = list({id(data[u][0]): data[u][0] for u in us}.values())
+    shared = set(forms[0]).intersection(*forms[1:]) if len(forms) > 1 else set()
+    keys = forms[0] if len(forms) == 1 else [k for k in data[us[0]][0] if k in shared]
     rows = []
     for u in us:
         kk, nn = data[u][:2]
-        if kk == keys:  # (the commonest: every mark at every value) the numbers as they are
+        if kk is keys or kk == keys:  # (the commonest: every mark at every value) the numbers as they are
             rows.append(nn)
             continue
         pos, at = {}, 0
@@ -565,17 +596,19 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
             pos[k] = nn[at:at + n]
             at += n
         rows.append([x for k in keys for x in pos[k]])
-    fixed = sorted({k[0] for u in us for k in data[u][0] if k not in shared})
+    fixed = sorted({k[0] for kk in forms[1:] + forms[:1] for k in kk if k not in shared}) if len(forms) > 1 else []
     # letters whose text is not the same at every grid value: values read off the figure (an angle in degrees
     # and minutes); a blend of two grid values' readings would print minutes the figure does not have
-    idents = set().union(*(data[u][3] for u in us))
     # (a letter left out at some values -- no room there -- is not one of them)
     # (the rod's length the plate's furniture writes, a dimension "L = 5 r", is no reading: the page writes it)
     rod = re.compile(re.escape(live.rod).replace(re.escape("{v}"), r"[0-9.,]+") + "$") if live.rod else None
-    varying = sorted(i for i in idents if len(said := {data[u][3][i] for u in us if i in data[u][3]}) > 1
-                     and not (rod and all(rod.match(t) for t in said)))
+    said: dict[str, set[str]] = {}
+    for texts in {id(data[u][3]): data[u][3] for u in us}.values():  # (most values share one dict of texts)
+        for i, t in texts.items():
+            said.setdefault(i, set()).add(t)
+    varying = sorted(i for i, ts in said.items() if len(ts) > 1 and not (rod and all(rod.match(t) for t in ts)))
     first = data[us[0]][0]
-    snapped = [k for i, k in enumerate(first) if i in snap and k in shared]
+    snapped = [first[i] for i in sorted(snap) if i < len(first) and (len(forms) == 1 or first[i] in shared)]
     grid = values(us)
     live = LiveSweep(given, symbol, domain, initial, grid, keys, np.asarray(rows, dtype=float), bound, jumps,
                      fixed=fixed, snapped=snapped, u=np.asarray(us, dtype=float), start=start, readings=varying,

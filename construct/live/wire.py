@@ -23,7 +23,7 @@ from typing import Any
 
 import numpy as np
 
-from ..render.wire import ARC, LENGTH, LOG, PX, X, Y, as_drawn, as_stored, deflated, radii
+from ..render.wire import ARC, DEFLATE_LEVEL, LENGTH, LOG, PX, X, Y, as_stored, deflated, radii
 from .measure import Measure
 from .sweep import DERIVED_WRITTEN, QUANTUM_PX, LiveSweep, live_givens, live_sweep, pieces, reach
 
@@ -80,18 +80,42 @@ def _largest_radius(live: LiveSweep) -> float:
     return float(max(np.max(live.drawn[:, r]), 1.0)) if r.any() else 1.0
 
 
-def _knots(live: LiveSweep, kinds: np.ndarray) -> np.ndarray:
-    """The grid values each column needs when stored as *kinds* says (see :func:`column_knots`)."""
-    drawn = live.drawn
+def _knots(live: LiveSweep, kinds: np.ndarray, columns: np.ndarray | None = None) -> np.ndarray:
+    """The grid values each column needs when stored as *kinds* says (see :func:`column_knots`); only the
+    *columns* given, if given (each column walks the tree alone: the others' are left as they are)."""
+    columns = np.arange(live.drawn.shape[1]) if columns is None else columns
+    drawn = live.drawn[:, columns]
     rows, cols = drawn.shape
     u = np.asarray(live.u if live.u is not None else np.log10(live.grid), dtype=float)
-    keep = np.zeros((rows, cols), dtype=bool)
+    keep = np.zeros((rows, live.drawn.shape[1]), dtype=bool)
     keep[:, live.nearest_columns()] = True
+    kinds = kinds[columns]
     quanta = _quanta(live, kinds)
     q = np.round(as_stored(drawn, live.fit, kinds) / quanta) * quanta
     start = live.start or rows
     # the starting values of the refinement: evenly spaced in log10 (live_sweep's np.linspace)
     firsts = sorted({int(np.argmin(np.abs(u - x))) for x in np.linspace(u[0], u[-1], start)})
+    # The columns walk the tree in the order of their kinds, each column's values in a row of its own: a cell's
+    # open columns of one kind are drawn from the grid values inside it by one formula over a block (as_drawn's,
+    # with the rows' fit broadcast), the values gathered in runs; which columns are still open is asked of all.
+    kinds = kinds if live.fit is not None else np.zeros(cols, dtype=np.int8)
+    order = np.argsort(kinds, kind="stable")
+    bounds = np.searchsorted(kinds[order], np.arange(LOG + 2))
+    qt, dt = np.ascontiguousarray(q[:, order].T), np.ascontiguousarray(drawn[:, order].T)
+    fit = live.fit if live.fit is not None else np.zeros((rows, 3))
+    ox, oy, sc = fit[:, 0], fit[:, 1], fit[:, 2]
+
+    def drawn_as(kind: int, s: np.ndarray, r: slice) -> np.ndarray:
+        """as_drawn of stored numbers *s* (columns of one *kind* x grid values *r*), in place (the same roundings)."""
+        if kind == LOG:
+            np.exp(s, out=s)
+        if kind != PX:
+            s *= sc[r]
+        if kind == X:
+            s += ox[r]
+        elif kind == Y:
+            np.subtract(oy[r], s, out=s)
+        return s
 
     def mid_of(i: int, j: int) -> int | None:
         m = (u[i] + u[j]) / 2
@@ -101,24 +125,44 @@ def _knots(live: LiveSweep, kinds: np.ndarray) -> np.ndarray:
                 return k
         return None
 
-    todo = [(i, j, np.ones(cols, dtype=bool)) for i, j in zip(firsts[:-1], firsts[1:])]
+    def misses(at: np.ndarray, i: int, j: int, t: np.ndarray, r: slice) -> np.ndarray:
+        """How far the line between grid values i and j misses the drawing at grid values *r* (*t* of the way),
+        at most, in each column of *at*."""
+        err = np.empty(at.size)
+        edges = np.searchsorted(at, bounds)
+        for kind in range(LOG + 1):
+            a0, a1 = edges[kind], edges[kind + 1]
+            if a1 > a0:
+                g = at[a0:a1] if at[a1 - 1] - at[a0] >= a1 - a0 else slice(at[a0], at[a1 - 1] + 1)  # (a run: a view)
+                a = qt[g, i][:, None]
+                line = (qt[g, j][:, None] - a) * t
+                line += a
+                miss = drawn_as(kind, line, r)
+                miss -= dt[g, r]
+                err[a0:a1] = np.abs(miss, out=miss).max(axis=1)
+        return err
+
+    shut = np.zeros((rows, cols), dtype=bool)  # (in the columns' walking order)
+    todo = [(i, j, np.arange(cols)) for i, j in zip(firsts[:-1], firsts[1:])]
     while todo:
-        i, j, cs = todo.pop()
+        i, j, at = todo.pop()  # the columns still open here (deep in the tree, a few of thousands)
         m = mid_of(i, j)
         if m is None:  # a cell the refinement did not split: every column's own
-            keep[[i, j]] |= cs
+            shut[[i, j], at[:, None]] = True
             continue
-        # the line between the cell's quantised ends, at every grid value inside the cell, as drawn
-        t = ((u[i + 1:j] - u[i]) / (u[j] - u[i]))[:, None]
-        fit = live.fit[i + 1:j] if live.fit is not None else None
-        at = np.flatnonzero(cs)  # only the columns still open here (deep in the tree, a few of thousands)
-        err = np.abs(as_drawn(q[i, at] + (q[j, at] - q[i, at]) * t, fit, kinds[at]) - drawn[i + 1:j, at]).max(axis=0)
-        done = np.zeros(cols, dtype=bool)
-        done[at[err <= ROW_PX]] = True
-        keep[[i, j]] |= done
-        rest = cs & ~done
-        if rest.any():
+        # the line between the cell's quantised ends, at every grid value inside the cell, as drawn: first at
+        # the midpoint alone (most columns still open miss there), then at the others for the columns that do not
+        t = (u[i + 1:j] - u[i]) / (u[j] - u[i])
+        err = misses(at, i, j, t[m - i - 1:m - i], slice(m, m + 1))
+        near = np.flatnonzero(err <= ROW_PX)
+        if near.size and j - i > 2:
+            err[near] = misses(at[near], i, j, t, slice(i + 1, j))
+        done = err <= ROW_PX
+        shut[[i, j], at[done][:, None]] = True
+        rest = at[~done]
+        if rest.size:
             todo += [(i, m, rest), (m, j, rest)]
+    keep[:, columns[order]] |= shut
     return keep
 
 
@@ -154,7 +198,9 @@ def column_knots(live: LiveSweep) -> tuple[np.ndarray, np.ndarray]:
     as_drawn = _knots(live, np.zeros(cols, dtype=np.int8))
     if not natural.any():
         return as_drawn, natural
-    as_built = _knots(live, natural)
+    # (a number of the drawing only is stored as drawn either way: walked once)
+    as_built = _knots(live, natural, np.flatnonzero(natural))
+    as_built[:, natural == 0] = as_drawn[:, natural == 0]
     built = as_built.sum(axis=0) < as_drawn.sum(axis=0)
     return np.where(built, as_built, as_drawn), np.where(built, natural, 0).astype(np.int8)
 
@@ -189,20 +235,27 @@ def encode(live: LiveSweep) -> dict[str, Any]:
     pick = np.asarray(firsts, dtype=np.int64)
     uq, ukeep, ukinds = q[:, pick], keep[:, pick], kinds[pick]
     ukeep[[0, -1]] = True
-    values = [uq[ukeep[:, c], c] for c in range(uq.shape[1])]
-    steps = [np.diff(v) for v in values]
+    # every column's kept values one column after the other, and the steps between them (a column's first
+    # value is not a step)
+    values = uq.T[ukeep.T]
+    counts = ukeep.sum(axis=0)
+    first = np.zeros(values.size, dtype=bool)
+    first[(np.cumsum(counts) - counts)[counts > 0]] = True
+    column = np.repeat(np.arange(uq.shape[1]), counts)[~first]
+    steps = np.diff(values, prepend=0)[~first]
     # a column whose steps do not fit int16 (a rod's arc of radius 1000 r by its logarithm, to a tenth of a
     # pixel) has its steps in int32, apart: the kind's high bit says which
-    wide = np.asarray([d.size > 0 and int(np.abs(d).max()) >= 2 ** 15 for d in steps], dtype=bool)
+    wide = np.zeros(uq.shape[1], dtype=bool)
+    wide[column[np.abs(steps) >= 2 ** 15]] = True
     planes = b""
     for w, which in ((2, ~wide), (4, wide)):
-        d = np.concatenate([steps[c] for c in np.flatnonzero(which)] or [np.zeros(0, dtype=np.int64)])
+        d = steps[which[column]]
         planes += np.ascontiguousarray(d.astype(f"<i{w}").view(np.uint8).reshape(-1, w).T).tobytes()
     mapw = 2 if uq.shape[1] < 2 ** 16 else 4
     payload = (colmap.astype(f"<u{mapw}").tobytes() + (ukinds.astype(np.uint8) | (wide * 128).astype(np.uint8)).tobytes()
                + np.packbits(ukeep.T.reshape(-1)).tobytes() + fit.astype("<f4").tobytes()
                + uq[0].astype("<i4").tobytes() + planes)
-    return {"data": base64.b64encode(zlib.compress(payload, 9)).decode("ascii"), "mapw": mapw,
+    return {"data": base64.b64encode(zlib.compress(payload, DEFLATE_LEVEL)).decode("ascii"), "mapw": mapw,
             "ucols": int(uq.shape[1]), "q": STORED_PX, "qx": float(_quanta(live, np.ones(1, dtype=np.int8))[0]),
             "ql": float(_quanta(live, np.full(1, LOG, dtype=np.int8))[0])}
 
@@ -227,7 +280,9 @@ def _same_columns(q: np.ndarray, keep: np.ndarray, kinds: np.ndarray) -> tuple[n
     seen: dict[tuple[int, int], int] = {}
     colmap = np.fromiter((seen.setdefault(s, c) for c, s in enumerate(map(tuple, sums.tolist()))), dtype=np.int64,
                          count=cols)
-    same = (q == q[:, colmap]).all(axis=0) & (keep == keep[:, colmap]).all(axis=0) & (kinds == kinds[colmap])
+    dup = np.flatnonzero(colmap != np.arange(cols))  # (a column is itself: only those like an earlier one)
+    of = colmap[dup]
+    same = (q[:, dup] == q[:, of]).all(axis=0) & (keep[:, dup] == keep[:, of]).all(axis=0) & (kinds[dup] == kinds[of])
     if not same.all():  # two columns with the same sums: by their bytes
         whole = np.ascontiguousarray(np.vstack([q, keep, kinds[None, :]]).T)
         by_bytes: dict[bytes, int] = {}

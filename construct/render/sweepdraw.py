@@ -146,7 +146,9 @@ class SweepDrawing:
         # each mark's geometry, its kind's rows
         self.marks = [m for m in template.marks if m.id not in self._at]
         self._sources = (objects, points, on, curves, areas)
-        self._spans: dict[Any, tuple] = {}  # each line's and arc's marked span (the passes share them)
+        self._spans: dict[Any, tuple] = {}  # each end state line's marked span (the passes share them)
+        self._kinds: dict[MarkKind, tuple] | None = None  # the marks' rows as far as the margin (:meth:`_lay_out`)
+        self._arcs_reach: tuple | None = None  # the arcs' start angles and their reach (_ArcReach), made once for them
         self._draw(margin)
         if self._broken is not None:
             # scene.build_scene: a broken figure is drawn again with the margin of what is left of it (its
@@ -338,41 +340,35 @@ class SweepDrawing:
         """The marks' geometry with lines and arcs reaching *margin* past their marked points, broken."""
         objects, points, on, curves, areas = self._sources
         n, vec = self.n, self._vec
-        piece: dict[str, int] = {}  # the areas whose extent is drawn (on their first piece)
         self.ok = np.ones(n, dtype=bool)
-        by: dict[MarkKind, list] = {k: [] for k in MarkKind}
+        if self._kinds is None:  # (what does not depend on the margin: made once, for both passes)
+            self._kinds = self._lay_out()
         curve_geoms: dict[str, tuple] = {}
-        for m in self.marks:
-            obj = objects.get(m.name)
-            marked = [points[p] for p in dict.fromkeys(on.get(m.name, []))]
-            if m.kind is MarkKind.POINT and m.name in points:
-                by[m.kind].append(points[m.name])
-            elif m.kind is MarkKind.SEGMENT and isinstance(obj, Line):
-                by[m.kind].append(self._segment(obj, marked, margin))
-            elif m.kind.round and isinstance(obj, Circle):
-                by[m.kind].append(self._circle(m, obj, marked, margin))
-            elif m.kind is MarkKind.AREA and m.name in areas:
+        for m in self._curved:
+            if m.kind is MarkKind.AREA:
                 # an area's pieces come and go and hold as many points as their curves' breakpoints: the page
                 # draws them from those curves (live.py areaPieces); here they count for the figure's extent, as
                 # the box of all its pieces (two corners, broken point by point as the pieces are), on its first
-                if m.name in piece:
-                    continue
-                piece[m.name] = 0
                 x0, x1, y0, y1 = areas[m.name]
                 curve_geoms[m.id] = ((vec(x0), vec(y0)), (vec(x1), vec(y1)))
-            elif m.kind is MarkKind.CURVE and m.name in curves:
-                CX, CY, counts = curves[m.name]
-                count = len(m.geom)
-                self.ok &= counts == count
-                if CX.shape[0] < count:  # (nowhere as many points as the built figure's: not drawn here)
-                    CX = np.vstack([CX, np.full((count - CX.shape[0], n), np.nan)])
-                    CY = np.vstack([CY, np.full((count - CY.shape[0], n), np.nan)])
-                ok = counts == count
-                curve_geoms[m.id] = tuple((np.where(ok, CX[k], np.nan), np.where(ok, CY[k], np.nan)) for k in range(count))
+                continue
+            CX, CY, counts = curves[m.name]
+            count = len(m.geom)
+            self.ok &= counts == count
+            if CX.shape[0] < count:  # (nowhere as many points as the built figure's: not drawn here)
+                CX = np.vstack([CX, np.full((count - CX.shape[0], n), np.nan)])
+                CY = np.vstack([CY, np.full((count - CY.shape[0], n), np.nan)])
+            ok = counts == count
+            curve_geoms[m.id] = tuple((np.where(ok, CX[k], np.nan), np.where(ok, CY[k], np.nan)) for k in range(count))
+        self.geoms = {k: () for k in MarkKind}
+        for kind, got in self._kinds.items():
+            if kind is MarkKind.POINT:
+                self.geoms[kind] = got
+            elif kind is MarkKind.SEGMENT:
+                self.geoms[kind] = _lines_reaching(got, margin)
             else:
-                raise ValueError(f"{m.id}: a {m.kind.value} the sweep does not draw")
+                self.geoms[kind] = self._round(kind, got, margin)
         self.rows = {k: [m for m in self.marks if m.kind is k and m.id not in curve_geoms] for k in MarkKind}
-        self.geoms = {k: tuple(np.vstack(c) for c in zip(*by[k])) if by[k] else () for k in MarkKind}
         self.curves = curve_geoms
         self._unbroken_curves = dict(curve_geoms)
         self.curve_marks = [m for m in self.marks if m.id in curve_geoms]
@@ -382,6 +378,83 @@ class SweepDrawing:
         self._break()
         self._break(axis=1)
 
+    def _lay_out(self) -> dict[MarkKind, tuple]:
+        """Each kind's marks as rows of arrays (marks x values), as far as the margin leaves them: the points'
+        (x, y); the lines' spans over their marked points (:func:`_line_spans`); the circles' and arcs' centres and
+        radii, and the arcs over their marked points (:func:`_arcs_over`).  The curves and areas are left to
+        :meth:`_draw` (:attr:`_curved`, the first piece of each area).  A mark the sweep does not draw: ValueError."""
+        objects, points, on, curves, areas = self._sources
+        vec = self._vec
+        by: dict[MarkKind, list] = {k: [] for k in (MarkKind.POINT, MarkKind.SEGMENT, MarkKind.CIRCLE, MarkKind.ARC)}
+        self._curved, pieces = [], set()
+        for m in self.marks:
+            obj = objects.get(m.name)
+            if m.kind is MarkKind.POINT and m.name in points:
+                by[m.kind].append(points[m.name])
+            elif m.kind is MarkKind.SEGMENT and isinstance(obj, Line):
+                by[m.kind].append((obj, list(dict.fromkeys(on.get(m.name, [])))))
+            elif m.kind.round and isinstance(obj, Circle):
+                by[m.kind].append((m, obj, list(dict.fromkeys(on.get(m.name, [])))))
+            elif m.kind is MarkKind.AREA and m.name in areas:
+                if m.name not in pieces:
+                    pieces.add(m.name)
+                    self._curved.append(m)
+            elif m.kind is MarkKind.CURVE and m.name in curves:
+                self._curved.append(m)
+            else:
+                raise ValueError(f"{m.id}: a {m.kind.value} the sweep does not draw")
+        out: dict[MarkKind, tuple] = {}
+        if by[MarkKind.POINT]:
+            out[MarkKind.POINT] = tuple(np.vstack(c) for c in zip(*by[MarkKind.POINT]))
+        if by[MarkKind.SEGMENT]:
+            lines = by[MarkKind.SEGMENT]
+            P = np.array([[vec(o.p.x), vec(o.p.y), vec(o.q.x), vec(o.q.y)] for o, _ in lines])
+            spans = np.empty((7,) + P[:, 0].shape)
+            for idx, names in _by_count(lines):
+                spans[:, idx] = _line_spans(P[idx], *self._marked(names))
+            out[MarkKind.SEGMENT] = (*spans[:6], spans[6].astype(bool))
+        for kind in (MarkKind.CIRCLE, MarkKind.ARC):
+            if not by[kind]:
+                continue
+            rounds = by[kind]
+            C = np.array([[vec(o.center.x), vec(o.center.y), vec(o.radius)] for _, o, _ in rounds])
+            # whole: a result, or a circle with no point marked on it
+            whole = np.array([m.role == "result" or not names for m, _, names in rounds])
+            arcs = np.zeros((3,) + C[:, 0].shape)
+            arcs[2] = 1.0
+            for idx, names in _by_count([r[1:] for r in rounds]):
+                drawn = np.flatnonzero(~whole[idx])
+                if drawn.size:
+                    idx = idx[drawn]
+                    arcs[:, idx] = _arcs_over(C[idx, 0], C[idx, 1], *self._marked([names[i] for i in drawn]))
+            out[kind] = (C[:, 0], C[:, 1], C[:, 2], whole, arcs[0], arcs[1], arcs[2].astype(bool))
+        return out
+
+    def _marked(self, names: list[list[str]]) -> tuple[np.ndarray, np.ndarray]:
+        """The points *names* (as many for each row) as arrays (rows x points x values): x and y."""
+        points = self._sources[1]
+        shape = (len(names), len(names[0]) if names else 0, self.n)
+        X = np.array([[points[p][0] for p in row] for row in names]).reshape(shape)
+        Y = np.array([[points[p][1] for p in row] for row in names]).reshape(shape)
+        return X, Y
+
+    def _round(self, kind: MarkKind, got: tuple, margin: np.ndarray) -> tuple:
+        """marks.circle_extent over the sweep for all the circles (or all the arcs) at once: whole, or the arc over
+        its marked points and the margin; a value where the arc would be whole (or a whole one an arc) is not drawn
+        here."""
+        cx, cy, r, whole, start, sweep, sure = got
+        if whole.any() and kind is not MarkKind.CIRCLE:  # an arc drawn whole: not by the sweep
+            self.ok[:] = False
+        over = ~whole
+        if over.any():
+            self.ok &= sure[over].all(axis=0)
+            pad = np.minimum(margin / r[over], 0.6)
+            start, sweep = start.copy(), sweep.copy()
+            start[over], sweep[over] = start[over] - pad, sweep[over] + 2.0 * pad
+            full = sweep[over] >= 0.92 * TWO_PI
+            self.ok &= full.all(axis=0) if kind is MarkKind.CIRCLE else ~full.any(axis=0)
+        return (cx, cy, r) if kind is MarkKind.CIRCLE else (cx, cy, r, start, sweep)
+
     def _members(self, key) -> list:
         """The marks of one row block: a kind's marks, or one curve (its id), or the lettered lines' points."""
         if isinstance(key, MarkKind):
@@ -389,78 +462,21 @@ class SweepDrawing:
         return [m for m in self.curve_marks if m.id == key] if key != "-at" else self.at_marks
 
     # -- the marks ---------------------------------------------------------------------------------------
-    def _segment(self, line: Line, marked: list, margin: np.ndarray, key: Any = None) -> tuple:
-        """marks.segment_extent over the sweep: the line as far as its marked points, and a margin (*key*: its
-        marked span's, made once; the line's own without one)."""
-        key = id(line) if key is None else key
+    def _segment(self, line: Line, marked: list, margin: np.ndarray, key: Any) -> tuple:
+        """marks.segment_extent over the sweep: the line as far as its marked points (x, y arrays), and a margin
+        (*key*: its marked span's, made once)."""
         got = self._spans.get(key)
         if got is None:  # (its marked points' span does not depend on the margin: made once, for both passes)
             vec = self._vec
-            px, py, qx, qy = vec(line.p.x), vec(line.p.y), vec(line.q.x), vec(line.q.y)
-            dx, dy = qx - px, qy - py
-            h = np.hypot(dx, dy)
-            ux, uy = dx / h, dy / h
-            ts = (np.vstack([(x - px) * ux + (y - py) * uy for x, y in marked]) if marked
-                  else np.vstack([np.zeros(self.n), np.ones(self.n)]))
-            lo, hi = ts.min(0), ts.max(0)
-            # a line through one point only (a tangent at its point of contact) is drawn long enough to be seen
-            tangent = hi - lo <= 1e-9 * np.maximum(1.0, np.abs(ts[0]))
-            got = self._spans[key] = (px, py, ux, uy, lo, hi, tangent)
-        px, py, ux, uy, lo, hi, tangent = got
-        m = np.where(tangent, 5.0 * margin, margin)
-        t0, t1 = lo - m, hi + m
-        return (px + t0 * ux, py + t0 * uy, px + t1 * ux, py + t1 * uy)
-
-    def _circle(self, m, circle: Circle, marked: list, margin: np.ndarray) -> tuple:
-        """marks.circle_extent over the sweep: whole, or the arc over its marked points; a value where the
-        arc would be whole (or a whole one an arc) is not drawn here."""
-        vec = self._vec
-        cx, cy, r = vec(circle.center.x), vec(circle.center.y), vec(circle.radius)
-        if m.role == "result" or not marked:
-            if m.kind is not MarkKind.CIRCLE:
-                self.ok[:] = False
-            return (cx, cy, r)
-        got = self._spans.get(m.id)
-        if got is None:  # (the arc over its marked points does not depend on the margin: made once)
-            got = self._spans[m.id] = self._arc_over(cx, cy, marked)
-        start, sweep, ok = got
-        self.ok &= ok
-        pad = np.minimum(margin / r, 0.6)
-        start, sweep = start - pad, sweep + 2.0 * pad
-        whole = sweep >= 0.92 * TWO_PI
-        self.ok &= whole if m.kind is MarkKind.CIRCLE else ~whole
-        return (cx, cy, r) if m.kind is MarkKind.CIRCLE else (cx, cy, r, start, sweep)
+            P = np.array([[vec(line.p.x), vec(line.p.y), vec(line.q.x), vec(line.q.y)]])
+            X, Y = (np.array([[p[c] for p in marked]]).reshape(1, len(marked), self.n) for c in (0, 1))
+            got = self._spans[key] = tuple(a[0] for a in _line_spans(P, X, Y))
+        return _lines_reaching(got, margin)
 
     def _arc_over(self, cx: np.ndarray, cy: np.ndarray, marked: list) -> tuple:
-        """The arc over a circle's marked points, before its margin: (start, sweep, where it is sure)."""
-        ok = np.ones(self.n, dtype=bool)
-        # (two points marked half a turn apart, a diameter, leave two equal gaps: marks.widest_gap takes one by
-        # a rule, not by the last bit of an arctangent)
-        a = np.sort(np.mod(np.arctan2(np.vstack([y - cy for x, y in marked]), np.vstack([x - cx for x, y in marked])),
-                           TWO_PI), axis=0)
-        k = a.shape[0]
-        if k == 1:
-            start, sweep = a[0], np.zeros(self.n)
-        else:
-            # points marked at one place (a dead centre found twice) count once: a run of equal angles adds
-            # gaps of nothing, and the gap after it is the gap after the one it stands for; angles a hair apart
-            # (not one place, not two) are left to the drawing
-            step = np.diff(a, axis=0)
-            ok &= ~((step > 0) & (step <= 1e-9)).any(0)
-            # a point marked a hair below a full turn is the point at angle 0 (marks.circle_extent drops it): its
-            # angle a full turn past the first's, a gap of nothing after it
-            a[-1] = np.where(a[0] + TWO_PI - a[-1] <= 1e-9, a[0] + TWO_PI, a[-1])
-            gaps = np.mod(np.vstack([a[1:], a[:1]]) - a, TWO_PI)
-            # marks.widest_gap: the widest, and of two as wide the one about angle 0
-            tied = gaps >= gaps.max(axis=0) - GAP_TIE
-            mid = a + gaps / 2
-            score = np.round(np.cos(mid), 9) + 1e-10 * np.round(np.sin(mid), 9) - 1e-12 * np.arange(k)[:, None]
-            i = np.argmax(np.where(tied, score, -np.inf), axis=0)
-            cols = np.arange(self.n)
-            one = a[-1] == a[0]  # every marked point at one place: the arc is that place (and its margin)
-            start = np.where(one, a[0], a[(i + 1) % k, cols])
-            sweep = np.where(one, 0.0, TWO_PI - gaps[i, cols])
-        return start, sweep, ok
+        """The arc over a circle's marked points (x, y arrays), before its margin: (start, sweep, where it is sure)."""
+        X, Y = (np.array([[p[c] for p in marked]]).reshape(1, len(marked), self.n) for c in (0, 1))
+        return tuple(a[0] for a in _arcs_over(cx[None], cy[None], X, Y))
 
     def _extremes(self) -> dict:
         """scene.extreme_points over the sweep, as boxes: {block: (x0, x1, y0, y1)}, each (marks x values)."""
@@ -476,7 +492,10 @@ class SweepDrawing:
             cx, cy, r = g[MarkKind.CIRCLE]
             out[MarkKind.CIRCLE] = (cx - r, cx + r, cy - r, cy + r)
         if g[MarkKind.ARC]:
-            out[MarkKind.ARC] = _arc_box(*g[MarkKind.ARC])
+            cx, cy, r, a0, sw = g[MarkKind.ARC]
+            if self._arcs_reach is None or self._arcs_reach[0] is not a0:  # (a broken axis moves only the centres)
+                self._arcs_reach = (a0, _ArcReach(r, a0, sw))
+            out[MarkKind.ARC] = self._arcs_reach[1].box(cx, cy)
         for m in self.curve_marks:
             X, Y = np.vstack([p[0] for p in self.curves[m.id]]), np.vstack([p[1] for p in self.curves[m.id]])
             out[m.id] = (X.min(0)[None], X.max(0)[None], Y.min(0)[None], Y.max(0)[None])
@@ -495,17 +514,8 @@ class SweepDrawing:
                  and not (key in self.curves and self._members(key)[0].straight and len(self.curves[key]) == 2)]
         if sum(s.shape[0] for s, _ in spans) < 2:
             return
-        # the spans in the order of the marks (ties in the sort below are equal spans: either order)
         S, E = np.vstack([s for s, _ in spans]), np.vstack([e for _, e in spans])
-        order = np.lexsort((E, S), axis=0)
-        S, E = np.take_along_axis(S, order, 0), np.take_along_axis(E, order, 0)
-        total = E[-1] - S[0]
-        reach = np.maximum.accumulate(E, axis=0)
-        gaps = S[1:] - reach[:-1]
-        j = np.argmax(gaps, axis=0)
-        cols = np.arange(self.n)
-        width = gaps[j, cols]
-        lo, hi = reach[j, cols], S[j + 1, cols]
+        lo, hi, width, total = _widest_gaps(S, E)
         brk = (width > 0) & (width > (BREAK_FRACTION if axis == 0 else BREAK_FRACTION_Y) * total)
         if not brk.any():
             return
@@ -645,21 +655,22 @@ class SweepDrawing:
             rr = r * scale
             out[MarkKind.ARC] = stack(x1, y1, rr, rr, 0.0 * rr, (sw > math.pi) * 1.0, 0.0 * rr + 1.0, x0, y0)
         for m in self.curve_marks:
-            P = [self._px(x, y) for x, y in self.curves[m.id]]
             if m.kind is MarkKind.AREA:  # (the page draws areas from their curves)
                 continue
+            pts = self.curves[m.id]
+            X, Y = self._px(np.vstack([p[0] for p in pts]), np.vstack([p[1] for p in pts]))  # points x values
+            k = X.shape[0]
             if m.straight:
-                closed = len(P) > 2 and tuple(m.geom[0]) == tuple(m.geom[-1])
-                cols = [c for p in (P[:-1] if closed else P) for c in p]
+                closed = k > 2 and tuple(m.geom[0]) == tuple(m.geom[-1])
+                cols = np.stack([X, Y], axis=1)[:k - 1 if closed else k].reshape(-1, self.n)
             else:
-                cols = [P[0][0], P[0][1]]
-                for i in range(len(P) - 1):
-                    p0 = P[i - 1] if i > 0 else P[i]
-                    p1, p2 = P[i], P[i + 1]
-                    p3 = P[i + 2] if i + 2 < len(P) else P[i + 1]
-                    cols += [p1[0] + (p2[0] - p0[0]) / 6.0, p1[1] + (p2[1] - p0[1]) / 6.0,
-                             p2[0] - (p3[0] - p1[0]) / 6.0, p2[1] - (p3[1] - p1[1]) / 6.0, p2[0], p2[1]]
-            out[m.id] = stack(*cols)[None]
+                # the smooth curve's control points (paths.bezier_controls), every segment at once
+                i = np.arange(k - 1)
+                i0, i2, i3 = np.maximum(i - 1, 0), i + 1, np.minimum(i + 2, k - 1)
+                segs = np.stack([X[i] + (X[i2] - X[i0]) / 6.0, Y[i] + (Y[i2] - Y[i0]) / 6.0,
+                                 X[i2] - (X[i3] - X[i]) / 6.0, Y[i2] - (Y[i3] - Y[i]) / 6.0, X[i2], Y[i2]], axis=1)
+                cols = np.concatenate([X[:1], Y[:1], segs.reshape(-1, self.n)])
+            out[m.id] = _r2(cols.T)[None]
         if getattr(self, "at_marks", None):
             x, y = self._px(*self.at_geom)
             r = np.array([[point_radius(m, st)] for m in self.at_marks]) + np.zeros(x.shape)
@@ -667,15 +678,132 @@ class SweepDrawing:
         return out
 
 
+def _by_count(rows: list[tuple]) -> list[tuple[np.ndarray, list[list[str]]]]:
+    """The rows (each an object and the names of the points marked on it) grouped by how many points: (their
+    indices, their names), each group a block of arrays of one shape."""
+    groups: dict[int, list[int]] = {}
+    for i, (_, names) in enumerate(rows):
+        groups.setdefault(len(names), []).append(i)
+    return [(np.asarray(idx), [rows[i][1] for i in idx]) for idx in groups.values()]
+
+
+def _line_spans(P: np.ndarray, X: np.ndarray, Y: np.ndarray) -> tuple:
+    """marks.segment_extent over a sweep, before its margin, for lines with as many marked points each: *P* the
+    lines' own two points (lines x 4 x values: px, py, qx, qy), *X*, *Y* their marked points (lines x points x
+    values; none: the line's own two) -> (px, py, ux, uy, lo, hi, tangent), each lines x values: the line from
+    (px, py) along (ux, uy), marked from lo to hi, tangent where through one point only."""
+    px, py, qx, qy = P[:, 0], P[:, 1], P[:, 2], P[:, 3]
+    dx, dy = qx - px, qy - py
+    h = np.hypot(dx, dy)
+    ux, uy = dx / h, dy / h
+    if X.shape[1]:
+        ts = (X - px[:, None]) * ux[:, None] + (Y - py[:, None]) * uy[:, None]
+    else:
+        ts = np.stack([np.zeros(px.shape), np.ones(px.shape)], axis=1)
+    lo, hi = ts.min(1), ts.max(1)
+    # a line through one point only (a tangent at its point of contact) is drawn long enough to be seen
+    tangent = hi - lo <= 1e-9 * np.maximum(1.0, np.abs(ts[:, 0]))
+    return px, py, ux, uy, lo, hi, tangent
+
+
+def _lines_reaching(spans: tuple, margin: np.ndarray) -> tuple:
+    """Lines' spans (:func:`_line_spans`) drawn *margin* past their marked points (five margins at a tangent):
+    (x1, y1, x2, y2)."""
+    px, py, ux, uy, lo, hi, tangent = spans
+    m = np.where(tangent, 5.0 * margin, margin)
+    t0, t1 = lo - m, hi + m
+    return (px + t0 * ux, py + t0 * uy, px + t1 * ux, py + t1 * uy)
+
+
+def _arcs_over(cx: np.ndarray, cy: np.ndarray, X: np.ndarray, Y: np.ndarray) -> tuple:
+    """The arcs over circles' marked points, before their margins, for circles with as many marked points each
+    (*cx*, *cy*: circles x values; *X*, *Y*: circles x points x values): (start, sweep, where it is sure), each
+    circles x values."""
+    # (two points marked half a turn apart, a diameter, leave two equal gaps: marks.widest_gap takes one by
+    # a rule, not by the last bit of an arctangent)
+    a = np.sort(np.mod(np.arctan2(Y - cy[:, None], X - cx[:, None]), TWO_PI), axis=1)
+    k = a.shape[1]
+    ok = np.ones(cx.shape, dtype=bool)
+    if k == 1:
+        return a[:, 0], np.zeros(cx.shape), ok
+    # points marked at one place (a dead centre found twice) count once: a run of equal angles adds
+    # gaps of nothing, and the gap after it is the gap after the one it stands for; angles a hair apart
+    # (not one place, not two) are left to the drawing
+    step = np.diff(a, axis=1)
+    ok &= ~((step > 0) & (step <= 1e-9)).any(1)
+    # a point marked a hair below a full turn is the point at angle 0 (marks.circle_extent drops it): its
+    # angle a full turn past the first's, a gap of nothing after it
+    a[:, -1] = np.where(a[:, 0] + TWO_PI - a[:, -1] <= 1e-9, a[:, 0] + TWO_PI, a[:, -1])
+    gaps = np.mod(np.concatenate([a[:, 1:], a[:, :1]], axis=1) - a, TWO_PI)
+    # marks.widest_gap: the widest, and of two as wide the one about angle 0
+    tied = gaps >= gaps.max(axis=1, keepdims=True) - GAP_TIE
+    mid = a + gaps / 2
+    score = np.round(np.cos(mid), 9) + 1e-10 * np.round(np.sin(mid), 9) - 1e-12 * np.arange(k)[:, None]
+    i = np.argmax(np.where(tied, score, -np.inf), axis=1)[:, None]
+    one = a[:, -1] == a[:, 0]  # every marked point at one place: the arc is that place (and its margin)
+    start = np.where(one, a[:, 0], np.take_along_axis(a, (i + 1) % k, axis=1)[:, 0])
+    sweep = np.where(one, 0.0, TWO_PI - np.take_along_axis(gaps, i, axis=1)[:, 0])
+    return start, sweep, ok
+
+
+def _widest_gaps(S: np.ndarray, E: np.ndarray) -> tuple[np.ndarray, ...]:
+    """sheet._widest_gap over a sweep: the widest stretch no span [S, E] covers (spans x values), at every value:
+    (where it starts, where it ends, how wide, the figure's extent as the scalar walk reads it: from the first
+    start to the end of the span that starts last).  Where no stretch is uncovered the width is not positive.
+
+    The starts and the ends are sorted apart (numpy's sort of numbers, not an argsort of the pairs): after the
+    k-th end, the k+1-th start opens a stretch no span covers exactly when it lies past it, and then the k spans
+    that start first are the k that end first, so the stretch is the scalar walk's, to the bit.  A value with a
+    span of no extent (nan: a curve of another number of points) is walked as the scalar walk does, sorted by
+    start then end.
+
+    >>> [float(v[0]) for v in _widest_gaps(np.array([[0.0], [5.0], [1.0]]), np.array([[2.0], [6.0], [1.5]]))]
+    [2.0, 5.0, 3.0, 6.0]
+    """
+    s, e = np.sort(S, axis=0), np.sort(E, axis=0)
+    gaps = s[1:] - e[:-1]
+    j = np.argmax(gaps, axis=0)
+    cols = np.arange(S.shape[1])
+    # the end of the span that starts last (of those, the one that ends last)
+    last = np.where(S == s[-1], E, -np.inf).max(axis=0)
+    lo, hi, width, total = e[j, cols], s[j + 1, cols], gaps[j, cols], last - s[0]
+    odd = np.isnan(S).any(axis=0) | np.isnan(E).any(axis=0)
+    if odd.any():
+        So, Eo = S[:, odd], E[:, odd]
+        order = np.lexsort((Eo, So), axis=0)
+        So, Eo = np.take_along_axis(So, order, 0), np.take_along_axis(Eo, order, 0)
+        reach = np.maximum.accumulate(Eo, axis=0)
+        g = So[1:] - reach[:-1]
+        k = np.argmax(g, axis=0)
+        at = np.arange(So.shape[1])
+        lo[odd], hi[odd], width[odd], total[odd] = reach[k, at], So[k + 1, at], g[k, at], Eo[-1] - So[0]
+    return lo, hi, width, total
+
+
 def _arc_box(cx, cy, r, a0, sw) -> tuple:
     """marks._arc_extremes over arrays: an arc's ends and the quarter points it passes, as a box."""
-    lo, hi = np.minimum(a0, a0 + sw), np.maximum(a0, a0 + sw)
-    xs, ys = [cx + r * np.cos(a0), cx + r * np.cos(a0 + sw)], [cy + r * np.sin(a0), cy + r * np.sin(a0 + sw)]
-    quarter = math.pi / 2
-    first, last = np.ceil(lo / quarter), np.floor(hi / quarter)
-    for q in range(int(np.nanmin(first)), int(np.nanmax(last)) + 1):
-        inside = (q >= first) & (q <= last)
-        xs.append(np.where(inside, cx + r * math.cos(q * quarter), xs[0]))
-        ys.append(np.where(inside, cy + r * math.sin(q * quarter), ys[0]))
-    X, Y = np.stack(xs), np.stack(ys)
-    return (X.min(0), X.max(0), Y.min(0), Y.max(0))
+    return _ArcReach(r, a0, sw).box(cx, cy)
+
+
+class _ArcReach:
+    """How far an arc reaches from its centre along x and along y, each way (:func:`_arc_box` without its centre):
+    a broken axis moves an arc's centre, not its radius or its angles, so the box of an arc that moved is its
+    centre and the same reach.  The box is the scalar's to the bit: its x are ``cx + r cos(a)`` at the ends and at
+    the quarter points passed (one rounding of a product, one of a sum), and a sum rounds monotonically, so the
+    least of the sums is the centre plus the least of the products."""
+
+    def __init__(self, r, a0, sw) -> None:
+        lo, hi = np.minimum(a0, a0 + sw), np.maximum(a0, a0 + sw)
+        xs, ys = [r * np.cos(a0), r * np.cos(a0 + sw)], [r * np.sin(a0), r * np.sin(a0 + sw)]
+        quarter = math.pi / 2
+        first, last = np.ceil(lo / quarter), np.floor(hi / quarter)
+        for q in range(int(np.nanmin(first)), int(np.nanmax(last)) + 1):
+            inside = (q >= first) & (q <= last)
+            xs.append(np.where(inside, r * math.cos(q * quarter), xs[0]))
+            ys.append(np.where(inside, r * math.sin(q * quarter), ys[0]))
+        X, Y = np.stack(xs), np.stack(ys)
+        self.reach = (X.min(0), X.max(0), Y.min(0), Y.max(0))
+
+    def box(self, cx, cy) -> tuple:
+        x0, x1, y0, y1 = self.reach
+        return (cx + x0, cx + x1, cy + y0, cy + y1)

@@ -162,10 +162,11 @@ def quadrant_extremes(rod_ratio: Any, samples: int = 2000, dead_centre: str = "h
     scalar = rod_ratio is None or np.ndim(rod_ratio) == 0
     a_s = start_angle(dead_centre)
 
-    def law(angle, r):  # e(α) with α counted from the chosen dead centre (excess_from, on arrays)
-        return excess_exact_array(a_s + angle, r) - excess_exact_array(a_s, r)
-
     ratio = None if rod_ratio is None else np.asarray(rod_ratio, dtype=float).reshape(-1, 1, 1)
+    at_start = excess_exact_array(a_s, ratio)  # (the same for every probe: made once)
+
+    def law(angle, r):  # e(α) with α counted from the chosen dead centre (excess_from, on arrays)
+        return excess_exact_array(a_s + angle, r) - at_start
     step = 0.5 * math.pi / samples
     a0 = (0.5 * math.pi * np.arange(4.0)).reshape(1, 4, 1)
     grid = a0 + step * np.arange(samples + 1.0)  # (1, quadrant, sample)

@@ -25,6 +25,8 @@ def two_cranks_checks(fig: Figure, model: Mapping[str, Any] | None = None) -> li
     sense = sense_of(fig)
     pm = "+" if sense > 0 else "-"
     made_by = fig.replay.made_by()
+    if model is None and not fig.params["infinite_rod"]:  # the exact law's extremes, asked by two kinds of check
+        model = {"extremes": quadrant_extremes(K, dead_centre=dc)}
     checks: list[Check] = []
     kinds = [(True, None)] if fig.params["infinite_rod"] else [(False, K), (True, None)]
     # how far the division may put a crank point off its angle (both diagrams share the division)
@@ -61,7 +63,7 @@ def two_cranks_checks(fig: Figure, model: Mapping[str, Any] | None = None) -> li
                                     measured_e[j] + measured_e[n // 2 - j],
                                     0.0, 2 * tol, "§ 146: v_max - v1 = v1 - v_min; e(90 - a) = -e(a)", "Q r"))
         else:
-            for q in (quadrant_extremes(ratio, dead_centre=dc) if model is None else model["extremes"]):
+            for q in model["extremes"]:
                 # The grid's own rise and fall in each quadrant, against the exact law on the same grid.
                 lo, hi = (q["quadrant"] - 1) * n // 2, q["quadrant"] * n // 2
                 es, ex = measured_e[lo:hi + 1], exact_e[lo:hi + 1]
@@ -215,7 +217,7 @@ def wave_extremes(fig: Figure, *, samples: int = 64, exact: bool = False,
     return _extremes_of(pts, O, D0, g["r"], gain, start, samples, within)
 
 
-def _finite_wave_checks(fig: Figure, ratio: float, dc: str, sense: float, model: Mapping[str, Any] | None) -> list[Check]:
+def _finite_wave_checks(fig: Figure, ratio: float, dc: str, sense: float, model: Mapping[str, Any]) -> list[Check]:
     """§ 147: the finite rod's least and greatest speed over the turn, read off its drawn wave.
 
     The tolerance is the method's own error worked out before anything is measured: the same French curve
@@ -225,7 +227,7 @@ def _finite_wave_checks(fig: Figure, ratio: float, dc: str, sense: float, model:
     if fig.params.get("infinite_rod"):
         return []
     n = fig.params["parts"]
-    qs = quadrant_extremes(ratio, dead_centre=dc) if model is None else model["extremes"]
+    qs = model["extremes"]
     low = min(qs, key=lambda q: q["e_min"])
     high = max(qs, key=lambda q: q["e_max"])
     drawn, on_exact = wave_extremes(fig), wave_extremes(fig, exact=True)

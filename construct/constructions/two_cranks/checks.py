@@ -176,14 +176,12 @@ def _extremes_of(points, O, D0, r: float, gain: float, start: float, samples: in
     # O.distance(p) / r for every point (math.hypot, as Point.distance: numpy's hypot differs in the last bit)
     radii = np.fromiter(map(math.hypot, (xs - O.x).tolist(), (ys - O.y).tolist()), float, xs.size) / r
     lo, hi = int(radii.argmin()), int(radii.argmax())
-    pts = list(zip(xs.tolist(), ys.tolist()))
-    radii = radii.tolist()
-    out = {"v_min": radii[lo], "v_max": radii[hi]}
+    out = {"v_min": float(radii[lo]), "v_max": float(radii[hi])}
     # the least e sits at the least radius when the rods drive, at the greatest when the shaft drives pumps
     at_min, at_max = (lo, hi) if gain > 0 else (hi, lo)
-    out["e_min"], out["e_max"] = (radii[at_min] - 1.0) / gain, (radii[at_max] - 1.0) / gain
-    out["alpha_min"] = (angle_at(O, D0, pts[at_min]) - start) % turn
-    out["alpha_max"] = (angle_at(O, D0, pts[at_max]) - start) % turn
+    out["e_min"], out["e_max"] = (float(radii[at_min]) - 1.0) / gain, (float(radii[at_max]) - 1.0) / gain
+    out["alpha_min"] = (angle_at(O, D0, (float(xs[at_min]), float(ys[at_min]))) - start) % turn
+    out["alpha_max"] = (angle_at(O, D0, (float(xs[at_max]), float(ys[at_max]))) - start) % turn
     return out
 
 

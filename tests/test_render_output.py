@@ -1,7 +1,7 @@
 """Written folders (construct/render/output.py): the layered figure, frames, animation, player, protocol.
 
-Expectations come from the protocol (its steps and groups), from XML and raster readers (ElementTree,
-cairosvg) and from a second process -- never from the writer's own output.
+Expectations come from the protocol (its steps and groups) and from XML and raster readers (ElementTree,
+cairosvg) -- never from the writer's own output; a second process's bytes are tests/test_determinism.py's.
 """
 
 from __future__ import annotations

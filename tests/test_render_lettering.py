@@ -7,6 +7,7 @@ from boxes worked out here -- never from the placer's own answers.
 from __future__ import annotations
 
 import itertools
+import math
 import random
 
 import numpy as np
@@ -144,3 +145,33 @@ def test_the_collision_grid_answers_as_a_search_of_every_box_and_looks_in_the_sp
     _Looked.reads = 0
     assert not crowded.free((8.0, 8.0, 18.0, 18.0))  # centre (13, 13): cell (1, 1)
     assert _Looked.reads <= 4  # the one box beside the centre, not the five hundred in the corner
+
+
+def test_a_crowd_of_letters_is_placed_as_each_letter_would_be_alone(monkeypatch):
+    """Three hundred letters on a crowd of points (a piston's positions along its stroke, a ring of crank points,
+    helpers among them): the bulk placing (every spot made at once, those a point surely takes or a placed letter
+    meets crossed off before the grid is asked) places every letter where asking each spot in turn puts it, and
+    no placed letter's box meets another's or a point's."""
+    import construct.render.lettering as lettering
+
+    rng = random.Random(7)
+    size = 12.0
+    stroke = [(100.0 + 0.7 * i, 300.0) for i in range(200)]
+    ring = [(400.0 + 60.0 * math.cos(0.06 * i), 200.0 + 60.0 * math.sin(0.06 * i)) for i in range(100)]
+    items = [(f"p{i}", "result" if i % 3 else "construction", i, p, (0.0, -1.0), f"{i}′")
+             for i, p in enumerate(stroke)]
+    items += [(f"c{i}", rng.choice(["given", "construction"]), 200 + i, p, (p[0] - 400.0, 200.0 - p[1]), f"C{i}")
+              for i, p in enumerate(ring)]
+    dots = stroke + ring + [(rng.uniform(80, 480), rng.uniform(120, 320)) for _ in range(200)]
+    lines = [(100.0, 300.0, 240.0, 300.0)]
+    bulk = place(items, size, dots, lines)
+    monkeypatch.setattr(lettering, "_CROWD", 10 ** 9)  # every letter asked spot by spot, as a few letters are
+    assert place(items, size, dots, lines) == bulk
+    text = {it[0]: it[5] for it in items}
+    boxes = [label_box(x, y, text[i], size) for i, (x, y, _d, thin) in bulk.items() if not thin]
+    assert len(boxes) > 20 and any(t for *_, t in bulk.values())
+    r = 0.3 * size
+    for a, b in itertools.combinations(boxes, 2):
+        assert not (a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3])
+    for x, y in dots:
+        assert not any(b[0] < x + r and x - r < b[2] and b[1] < y + r and y - r < b[3] for b in boxes)

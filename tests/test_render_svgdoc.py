@@ -111,10 +111,10 @@ def test_the_writer_writes_what_elementtree_writes(tmp_path, monkeypatch):
 
 
 def test_the_factorys_plain_elements_are_svgwrites():
-    """The writer makes groups, points' circles, lines, paths given as a string and animations' <set> itself
-    (svgdoc.Element): each gives the ElementTree element svgwrite's own class gives for the same arguments,
-    children and empty or None attributes included; a <set> naming its target, and a path given as a list of
-    commands, are svgwrite's."""
+    """The writer makes groups, points' circles, lines, paths given as a string, letters set at x, y and animations'
+    <set> itself (svgdoc.Element): each gives the ElementTree element svgwrite's own class gives for the same
+    arguments, children and empty or None attributes included; a <set> naming its target, a path given as a list
+    of commands and a text placed by insert or moved by dx, dy are svgwrite's."""
     import xml.etree.ElementTree as ET
 
     import svgwrite
@@ -131,10 +131,15 @@ def test_the_factorys_plain_elements_are_svgwrites():
              ("line", dict(start=(1, 2.5), end=(3, 4))),
              ("path", dict(d="M 1 2 A 3 3 0 0 1 4 5", class_="result compass exact", id="s0004-k", stroke=None)),
              ("path", dict(d="")),
-             ("path", dict(d=["M", 1, 2, "L", (3, 4)]))]  # commands, not a string: svgwrite's Path itself
+             ("path", dict(d=["M", 1, 2, "L", (3, 4)])),  # commands, not a string: svgwrite's Path itself
+             ("text", dict(text="12′", x=["1.5"], y=["-2"], class_="lb halo", id="s0005-P12-label")),
+             ("text", dict(text="", x=[1, [2.5, None]], y=(3,), class_="lb", style="font-size:7px")),
+             ("text", dict(text=7, class_=None)),
+             ("text", dict(text="K", insert=("1", "2"))),  # placed by insert, moved by dx: svgwrite's Text itself
+             ("text", dict(text="b", x=["1"], y=["2"], dy=["3"]))]
     for name, kw in cases:
         mine, theirs = getattr(f, name)(**kw), getattr(ref, name)(**kw)
         for parent in (mine, theirs):
             parent.add(ref.circle(center=("0", "0"), r="1"))
         assert ET.tostring(mine.get_xml()) == ET.tostring(theirs.get_xml()), (name, kw)
-    assert all(type(e) is svgdoc.Element for e in (f.g(), f.circle(), f.line(), f.path(d="M 0 0")))
+    assert all(type(e) is svgdoc.Element for e in (f.g(), f.circle(), f.line(), f.path(d="M 0 0"), f.text("a", x=["0"])))

@@ -206,7 +206,7 @@ class Protocol:
         d["groups"] = [list(g) for g in group_ids]
         steps = [st.compact_dict(group_ids) for st in self.steps]
 
-        line = _LINE.encode
+        line = _line_encoder()
         groups = d.pop("groups")
         head = line(d)[:-1]
         head += ',\n "groups": [' + "".join(f"\n  {line(g)}," for g in groups).rstrip(",") + "\n ]"
@@ -315,6 +315,22 @@ class Protocol:
 #: One line of a protocol file: json.dumps(v, ensure_ascii=False, separators=(", ", ": ")), with one encoder for
 #: every line (json.dumps makes an encoder per call for any options but the defaults).
 _LINE = json.JSONEncoder(ensure_ascii=False, separators=(", ", ": "))
+
+
+def _line_encoder() -> Any:
+    """``_LINE.encode`` for the lines of a protocol file, as one C encoder made once (``JSONEncoder.encode`` makes
+    one per call: for 70,000 lines that was most of the encoding); ``_LINE.encode`` where the C encoder is missing.
+    (No check for circular containers: a protocol's data is a tree.)"""
+    make = getattr(json.encoder, "c_make_encoder", None)
+    if make is None:
+        return _LINE.encode
+    enc = make(None, _LINE.default, json.encoder.encode_basestring, None, _LINE.key_separator,
+               _LINE.item_separator, False, False, True)
+
+    def line(value: Any) -> str:
+        return "".join(enc(value, 0))
+
+    return line
 
 
 def _unpickle(d: Mapping[str, Any]) -> Protocol:

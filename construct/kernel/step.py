@@ -112,15 +112,16 @@ class Step:
         return d
 
     def compact_dict(self, group_ids: Mapping[tuple[str, ...], int]) -> dict[str, Any]:
-        """As :meth:`as_dict` for the protocol file: defaults left out, the group path as its number (the same
-        keys in the same order, made directly: a protocol of 3600 parts writes 32,000 steps)."""
-        d: dict[str, Any] = {"index": self.index, "tool": self.tool, "op": self.op, "inputs": list(self.inputs),
-                             "outputs": list(self.outputs)}
+        """As :meth:`as_dict` for the protocol file, to be written as JSON: defaults left out, the group path as its
+        number (the same keys in the same order, made directly: a protocol of 3600 parts writes 32,000 steps)."""
+        # (the names as tuples: JSON writes a tuple as the list it is read back as)
+        d: dict[str, Any] = {"index": self.index, "tool": self.tool, "op": self.op, "inputs": self.inputs,
+                             "outputs": self.outputs}
         if self.params:
-            d["params"] = jsonable(dict(self.params))
+            d["params"] = jsonable(self.params)
         d["caption"] = {"de": self.caption.de, "en": self.caption.en}
         p = self.provenance
-        if p != EXACT:
+        if p is not EXACT and p != EXACT:
             d["provenance"] = {k: v for k, v in (("kind", p.kind), ("method", p.method), ("error", p.error))
                                if v is not None}
         if self.group:
@@ -147,7 +148,15 @@ class Step:
                    group=f["group"], role=f["role"], labels=f["labels"])
 
 
+#: The types :func:`jsonable` hands back as they are, asked first: a step's parameters are mostly numbers and words
+#: (a protocol of 3600 parts writes 32,000 steps; the attribute lookup that misses and the abstract ``Mapping``
+#: check cost more than the rest of the step).
+_PLAIN = frozenset({str, int, float, bool, type(None)})
+
+
 def jsonable(value: Any) -> Any:
+    if type(value) in _PLAIN:
+        return value
     as_json = getattr(value, "as_json", None)
     if as_json is not None:  # a Rule
         return as_json()

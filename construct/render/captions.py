@@ -56,10 +56,20 @@ def wrap(text: str, width_px: float, size: float) -> list[str]:
     >>> [len(line) for line in wrap("Schritt 3 von 40: " + "x" * 300, 912, 13)]
     [125, 125, 68]
     """
-    chars = max(20, int(width_px / (0.56 * size)))
-    if len(text) <= chars and text == text.strip() and _WHITE.search(text) is None:
+    chars = _chars(width_px, size)
+    if _one_line(text, chars):
         return [text]  # one line as it stands: what the wrapper would return, without its cost
     return wrap_chars(text, chars) or [""]
+
+
+def _chars(width_px: float, size: float) -> int:
+    """How many characters :func:`wrap` puts on a line *width_px* wide at font size *size*."""
+    return max(20, int(width_px / (0.56 * size)))
+
+
+def _one_line(text: str, chars: int) -> bool:
+    """Is *text* one line of at most *chars* as it stands (:func:`wrap` gives it back alone)?"""
+    return len(text) <= chars and text == text.strip() and _WHITE.search(text) is None
 
 
 class PlateCaption(NamedTuple):
@@ -142,7 +152,12 @@ class Captions:
     def line_count(self) -> int:
         """Caption lines for the frames: the most any step needs, so that all frames have one size."""
         most = 2
+        chars = _chars(self.width, self.size)
         for k in range(1, len(self.scene.steps) + 1):
+            if k not in self._wrapped:
+                de, en = step_caption(self.scene, k)
+                if _one_line(de, chars) and _one_line(en, chars):
+                    continue  # two lines, not kept: a figure of 32,000 steps shows few of them in frames
             de, en = self.wrapped(k)
             most = max(most, len(de) + len(en))
         return most + (1 if self.groups else 0)

@@ -247,6 +247,46 @@ class _Boxes:
         pass
 
 
+class _DotCounts:
+    """How many points stand in each cell of a fine grid, summed from a corner (a summed-area table): asked for
+    every spot of every letter at once whether some point's box surely meets the spot's, before the spots are
+    tried one by one in the order of the letters.  A crowded figure's letters find most spots taken by points
+    (3600 piston positions along a stroke), and a spot surely taken need not be asked in the grid.  Only cells
+    wholly inside (by a margin far above rounding) the region where a point's box meets the spot's count, so
+    "surely" is exact; a spot taken only near that region's edge is left to the grid."""
+
+    #: At most this many cells: a figure spread out by a deep zoom gets coarser cells, not more memory and time.
+    MAX_CELLS = 1 << 18
+
+    def __init__(self, dots: "Sequence[tuple[float, float]]", r: float, size: float):
+        a = np.array(dots, dtype=float).reshape(-1, 2)
+        self.r = r
+        lo, hi = a.min(axis=0), a.max(axis=0)
+        g = 0.1 * size
+        span = float((hi - lo).max())
+        while ((hi - lo) / g + 2).prod() > self.MAX_CELLS:
+            g *= 2.0
+        self.g, self.lo, self.eps = g, lo, 1e-6 * g + 1e-9 * span
+        n = ((hi - lo) / g).astype(int) + 1
+        cell = np.minimum(((a - lo) / g).astype(int), n - 1)
+        counts = np.bincount(cell[:, 0] * n[1] + cell[:, 1], minlength=int(n.prod())).reshape(n)
+        self.sums = np.zeros((n[0] + 1, n[1] + 1), dtype=np.int64)
+        self.sums[1:, 1:] = counts.cumsum(axis=0).cumsum(axis=1)
+        self.n = n
+
+    def surely_taken(self, x0: Any, y0: Any, x1: Any, y1: Any) -> Any:
+        """For boxes given as four arrays: does a point's box (x - r, y - r, x + r, y + r) surely meet each?"""
+        r, g, e, n = self.r, self.g, self.eps, self.n
+        # a point meets the box when x0 - r < x < x1 + r (and so in y): the cells wholly inside that, less e
+        i0 = np.clip(np.ceil((x0 - r + e - self.lo[0]) / g), 0, n[0]).astype(int)
+        i1 = np.clip(np.floor((x1 + r - e - self.lo[0]) / g), 0, n[0]).astype(int)
+        j0 = np.clip(np.ceil((y0 - r + e - self.lo[1]) / g), 0, n[1]).astype(int)
+        j1 = np.clip(np.floor((y1 + r - e - self.lo[1]) / g), 0, n[1]).astype(int)
+        i1, j1 = np.maximum(i1, i0), np.maximum(j1, j0)
+        s = self.sums
+        return (s[i1, j1] - s[i0, j1] - s[i1, j0] + s[i0, j0]) > 0
+
+
 def clipped_segment(box, seg) -> tuple[float, float] | None:
     """The part (t0, t1) of the segment (x0, y0, x1, y1) inside the box (x0, y0, x1, y1), or None when it misses
     (Liang–Barsky clipping).
@@ -367,6 +407,37 @@ def _nearer_dot(box, own: tuple[float, float], dots) -> bool:
     return any(far(p) < mine - 0.5 for p in dots if abs(p[0] - own[0]) > 1e-6 or abs(p[1] - own[1]) > 1e-6)
 
 
+def _spots(ordered: "Sequence[tuple]", plan: "Sequence[tuple[int, float, int]]", size: float, font: str,
+           italic: bool, halo: float) -> tuple[Any, ...]:
+    """Every spot of the *plan* (ring, distance in letter heights, turn from the preferred direction in degrees) for
+    every letter of *ordered* (as :func:`place` takes them), at once: the letter's baseline x, y and its box x0, y0,
+    x1, y1 (pixels, y down), each an array of a row per letter and a column per spot.  The letter's centre sits
+    *dist* letter heights from its point (plus half its extra width sideways), its baseline a third of a letter
+    lower; the box is :func:`label_box`'s, each number in the sums (and their order) of the spot asked alone, the
+    cosines and sines :mod:`math`'s."""
+    turns = sorted({t for _, _, t in plan})
+    radians = [math.radians(t) for t in turns]
+    cos, sin, px, py, extra, measures = [], [], [], [], [], []
+    for _mid, _role, _step, (x, y), (dx, dy), text in ordered:
+        base = math.atan2(-dy, dx)  # y down on the sheet
+        angles = [base + a for a in radians]
+        cos.append([math.cos(a) for a in angles])
+        sin.append([math.sin(a) for a in angles])
+        px.append(x)
+        py.append(y)
+        extra.append(max(0.0, text_width(text, size, font, italic) - 0.6 * size) / 2)
+        adv, top, bottom, left, right = _metrics(text or " ", font, italic)
+        measures.append((size * adv / 2, left * size, top * size, right * size, bottom * size))
+    k = [turns.index(t) for _, _, t in plan]
+    reach = np.array([dist for _, dist, _ in plan]) * size
+    cos_a, sin_a = np.array(cos).reshape(-1, len(turns))[:, k], np.array(sin).reshape(-1, len(turns))[:, k]
+    half, ls, ts, rs, bs = (c[:, None] for c in np.array(measures).reshape(-1, 5).T)
+    lxs = np.array(px)[:, None] + cos_a * (reach + np.array(extra)[:, None])
+    lys = np.array(py)[:, None] + reach * sin_a + 0.35 * size
+    x0, m = lxs - half, halo
+    return lxs, lys, x0 + ls - m, lys - ts - m, x0 + rs + m, lys - bs + m
+
+
 def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float, float], str]],
           size: float, dots: Iterable[tuple[float, float]] = (),
           lines: "Sequence[tuple[float, float, float, float]] | LineIndex" = (), *, font: str = DEFAULT_FONT,
@@ -400,6 +471,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     dots = list(dots)
     r = 0.3 * size
     items = list(items)
+    taken = list(taken)
     if len(items) == 1:
         grid: "_Grid | _Boxes" = _Boxes(list(taken) + [(x - r, y - r, x + r, y + r) for x, y in dots])
     else:
@@ -418,11 +490,38 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
         strokes = LineIndex(size, lines)
     out: dict[str, tuple] = {}
     ordered = sorted(items, key=lambda it: (RANK.get(it[1], 2), it[2], it[0]))
-    for mid, role, _step, (px, py), (dx, dy), text in ordered:
-        base = math.atan2(-dy, dx)  # y down on the sheet
+    # every spot a letter may try, in the order tried: (ring, distance, turn) -- the ring's number, not its distance,
+    # ends a ring (a farther distance may repeat a usual one)
+    plan = [(j, dist, turn) for j, dist in enumerate(_DISTANCES + tuple(distances))
+            for turn in (_TURNS if dist in _DISTANCES else _TURNS_FAR)]
+    rings = _DISTANCES + tuple(distances)
+    # many letters: every spot of every letter made at once, and crossed off in bulk where a point surely takes it
+    # (a crowd of points takes most spots of most letters) or a letter placed in this call meets it; the rest are
+    # asked in the grid, in the order of the letters.  A few letters are asked spot by spot, each made as it is
+    # tried (their first spots are most often free).  The boxes *taken* before are asked in the grid.
+    bulk = len(ordered) >= _CROWD
+    if bulk:
+        spots = _spots(ordered, plan, size, font, italic, halo)
+        sx0, sy0, sx1, sy1 = spots[2:]
+        alive = np.ones(sx0.shape, dtype=bool)
+        if isinstance(grid, _Grid) and len(dots) >= _CROWD:
+            alive = ~_DotCounts(dots, r, size).surely_taken(sx0, sy0, sx1, sy1)
+        # the box round each letter's spots: a letter placed takes spots of those whose box it meets, of no other
+        around = (sx0.min(axis=1), sy0.min(axis=1), sx1.max(axis=1), sy1.max(axis=1))
+        # the first spot of each letter (kept for the magnified views when no spot is free)
+        firsts = list(zip(*(a[:, 0].tolist() for a in spots)))
+
+    def takes(b: tuple[float, float, float, float], after: int) -> None:
+        """The box *b* is taken: no spot it meets of the letters after the first *after* is free."""
+        x0, y0, x1, y1 = b
+        rows = np.flatnonzero((around[0][after:] < x1) & (x0 < around[2][after:]) & (around[1][after:] < y1)
+                              & (y0 < around[3][after:])) + after
+        if len(rows):
+            alive[rows] &= ~((sx0[rows] < x1) & (x0 < sx1[rows]) & (sy0[rows] < y1) & (y0 < sy1[rows]))
+
+    for n, (mid, role, _step, (px, py), (dx, dy), text) in enumerate(ordered):
         first = None
         spot = None
-        w = text_width(text, size, font, italic)
         box_at = _box_maker(text, size, font, italic, halo)  # label_box(x, y, text, ...) for this letter
         if prefer and mid in prefer:
             ox, oy, od = prefer[mid]
@@ -431,37 +530,57 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                 spot = (px + ox, py + oy, box, od)
         clear = None  # with soft lines: the first free spot near the point that no line crosses
         least = None  # else the near free spot the least of those lines would be broken for: (length, spot)
-        ring: dict[int, tuple[float, float]] = {}  # each direction's cosine and sine, for all distances
-        for dist in (() if spot else _DISTANCES + tuple(distances)):
-            for turn in (_TURNS if dist in _DISTANCES else _TURNS_FAR):
-                cs = ring.get(turn)
-                if cs is None:
-                    a = base + math.radians(turn)
-                    cs = ring[turn] = (math.cos(a), math.sin(a))
-                # the letter's centre sits *dist* letter heights from the point (plus half its
-                # extra width sideways); its baseline a third of a letter lower
-                lx = px + cs[0] * (dist * size + max(0.0, w - 0.6 * size) / 2)
-                ly = py + dist * size * cs[1] + 0.35 * size
-                box = box_at(lx, ly)
-                if first is None:
-                    first = (lx, ly, box, dist)
-                if grid.free(box) and not strokes.meets(box, reach, only):
-                    if soft is None:
-                        spot = (lx, ly, box, dist)
+        if spot is None:
+            if bulk:
+                f = firsts[n]
+                first = (f[0], f[1], f[2:], plan[0][1])
+                asked: Iterable[int] = np.flatnonzero(alive[n]).tolist()
+                row = None
+            else:
+                asked = range(len(plan))
+                base = math.atan2(-dy, dx)  # y down on the sheet
+                w = text_width(text, size, font, italic)
+                ring_cs: dict[int, tuple[float, float]] = {}  # each direction's cosine and sine, for all distances
+            ring = 0
+            for i in asked:
+                j, dist, turn = plan[i]
+                if j != ring:
+                    # the rings ended since the last spot asked (all their spots taken: nothing changed since)
+                    if clear or (spot and (soft is None or max(rings[ring:j]) >= LEADER_FROM)):
                         break
-                    if spot is None:
-                        spot = (lx, ly, box, dist)
-                    # beside the line, but on the side the letter belongs (outwards, not across its own figure)
-                    if dist < LEADER_FROM and abs(turn) <= 90:
-                        broken = soft.length_in(box)
-                        if broken == 0.0:
-                            clear = (lx, ly, box, dist)
-                            break
-                        # (not along the line the point lies on: a letter on its own axis, turned a right angle)
-                        if abs(turn) <= 60 and (least is None or broken < least[0] - 1e-9):
-                            least = (broken, (lx, ly, box, dist))
-            if clear or (spot and (soft is None or dist >= LEADER_FROM)):
-                break
+                    ring = j
+                if bulk:
+                    if row is None:
+                        row = [a[n].tolist() for a in spots]
+                    lx, ly, box = row[0][i], row[1][i], (row[2][i], row[3][i], row[4][i], row[5][i])
+                else:
+                    cs = ring_cs.get(turn)
+                    if cs is None:
+                        a = base + math.radians(turn)
+                        cs = ring_cs[turn] = (math.cos(a), math.sin(a))
+                    # the letter's centre sits *dist* letter heights from the point (plus half its extra width
+                    # sideways); its baseline a third of a letter lower
+                    lx = px + cs[0] * (dist * size + max(0.0, w - 0.6 * size) / 2)
+                    ly = py + dist * size * cs[1] + 0.35 * size
+                    box = box_at(lx, ly)
+                    if first is None:
+                        first = (lx, ly, box, dist)
+                if not grid.free(box) or strokes.meets(box, reach, only):
+                    continue
+                if soft is None:
+                    spot = (lx, ly, box, dist)
+                    break
+                if spot is None:
+                    spot = (lx, ly, box, dist)
+                # beside the line, but on the side the letter belongs (outwards, not across its own figure)
+                if dist < LEADER_FROM and abs(turn) <= 90:
+                    broken = soft.length_in(box)
+                    if broken == 0.0:
+                        clear = (lx, ly, box, dist)
+                        break
+                    # (not along the line the point lies on: a letter on its own axis, turned a right angle)
+                    if abs(turn) <= 60 and (least is None or broken < least[0] - 1e-9):
+                        least = (broken, (lx, ly, box, dist))
         spot = clear or (least[1] if least is not None else spot)
         if spot is not None and soft is not None and spot[3] < LEADER_FROM and _nearer_dot(spot[2], (px, py), dots):
             # another point stands nearer the letter than its own (17′ beside B): tied to its own by a leader
@@ -472,5 +591,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                 out[mid] = (first[0], first[1], first[3], True)
             continue
         grid.add(spot[2])
+        if bulk:
+            takes(spot[2], n + 1)
         out[mid] = (spot[0], spot[1], spot[3], False)
     return out

@@ -21,7 +21,8 @@ from ..kernel.geometry import Circle, Line, Point
 from ..kernel.protocol import Replay, Step
 
 __all__ = ["could_show", "TWO_PI", "GAP_TIE", "widest_gap", "MarkKind", "Mark", "with_geom", "letter_lines", "fanned_lines", "letter_point", "middle",
-           "lies_on", "curve_points", "segment_extent", "circle_extent", "extreme_points"]
+           "lies_on", "curve_points", "segment_extent", "segment_span", "segment_at", "circle_extent", "marked_arc",
+           "arc_at", "extreme_points"]
 
 
 TWO_PI = 2.0 * math.pi
@@ -238,28 +239,48 @@ def widest_gap(angles: Sequence[float], gaps: Sequence[float]) -> int:
 
 
 def segment_extent(line: Line, pts: list[Point], margin: float) -> tuple[float, float, float, float]:
+    """The segment of *line* over the points *pts* marked on it, reaching *margin* past them."""
+    return segment_at(segment_span(line, pts), margin)
+
+
+def segment_span(line: Line, pts: list[Point]) -> tuple:
+    """What :func:`segment_extent` draws *line* over, before the margin (a scene drawn at two margins asks once)."""
     (px, py), _ = line
     ux, uy = line.direction()
     ts = [(q[0] - px) * ux + (q[1] - py) * uy for q in pts] or [0.0, 1.0]
-    if max(ts) - min(ts) <= 1e-9 * max(1.0, abs(ts[0])):
-        # A line shown through one point only (a tangent at its point of contact)
-        # is drawn long enough to be seen as a line.
+    # a line shown through one point only (a tangent at its point of contact)
+    lone = max(ts) - min(ts) <= 1e-9 * max(1.0, abs(ts[0]))
+    return (px, py, ux, uy, min(ts), max(ts), lone)
+
+
+def segment_at(span: tuple, margin: float) -> tuple[float, float, float, float]:
+    """The segment over a :func:`segment_span`, reaching *margin* past its points."""
+    px, py, ux, uy, lo, hi, lone = span
+    if lone:
+        # is drawn long enough to be seen as a line
         margin *= 5.0
-    t0, t1 = min(ts) - margin, max(ts) + margin
+    t0, t1 = lo - margin, hi + margin
     return (px + t0 * ux, py + t0 * uy, px + t1 * ux, py + t1 * uy)
 
 
 def circle_extent(circle: Circle, pts: list[Point], margin: float, role: str,
-                   plate: bool = False) -> tuple[MarkKind, tuple]:
+                  plate: bool = False) -> tuple[MarkKind, tuple]:
     """A full circle for results and unmarked circles, else the arc over the marked points.
 
     On a plate a result circle whose shown points cover at most a half turn
     (the crank circle of the forward stroke) is drawn as exactly that arc:
     the books' "über dem Kolbenhub geschlagene Halbkreis".
     """
+    return arc_at(marked_arc(circle, pts, role, plate), margin)
+
+
+def marked_arc(circle: Circle, pts: list[Point], role: str, plate: bool = False) -> tuple[MarkKind | None, tuple]:
+    """What :func:`circle_extent` draws before the margin (a scene drawn at two margins asks once): (kind, geom)
+    as drawn whatever the margin, or (None, (cx, cy, r, start, sweep)) the arc over the marked points, which
+    :func:`arc_at` pads."""
     (cx, cy), r = circle
     if role == "result" and plate and len(pts) >= 3:
-        kind, geom = circle_extent(circle, pts, 0.0, "construction")
+        kind, geom = arc_at(marked_arc(circle, pts, "construction"), 0.0)
         if kind is MarkKind.ARC and geom[4] <= math.pi * (1.0 + 1e-9):
             return kind, geom
     if role == "result" or not pts:
@@ -274,8 +295,16 @@ def circle_extent(circle: Circle, pts: list[Point], margin: float, role: str,
     gaps = [(angles[(i + 1) % len(angles)] - a) % TWO_PI or (TWO_PI if len(angles) == 1 else 0.0)
             for i, a in enumerate(angles)]
     i = widest_gap(angles, gaps)
-    start = angles[(i + 1) % len(angles)]
-    sweep = TWO_PI - gaps[i]
+    return None, (cx, cy, r, angles[(i + 1) % len(angles)], TWO_PI - gaps[i])
+
+
+def arc_at(arc: tuple[MarkKind | None, tuple], margin: float) -> tuple[MarkKind, tuple]:
+    """The circle or arc of a :func:`marked_arc`, an arc over marked points reaching *margin* past them (a
+    circle when that is nearly all of it)."""
+    kind, geom = arc
+    if kind is not None:
+        return kind, geom
+    cx, cy, r, start, sweep = geom
     pad = min(margin / r, 0.6)
     start, sweep = start - pad, sweep + 2.0 * pad
     if sweep >= 0.92 * TWO_PI:

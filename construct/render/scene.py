@@ -30,8 +30,8 @@ from ..kernel.geometry import Circle, Length, Line, Point
 from ..kernel.protocol import Protocol, Replay, Step
 from ..kernel.letters import FIGURE_LETTER, primed
 from .captions import TITLE_LIMIT, displayed
-from .marks import (TWO_PI, Mark, MarkKind, circle_extent, curve_points, extreme_points, fanned_lines, letter_lines,
-                    lies_on, segment_extent)
+from .marks import (TWO_PI, Mark, MarkKind, arc_at, curve_points, extreme_points, fanned_lines, letter_lines,
+                    lies_on, marked_arc, segment_at, segment_span)
 from .end_marks import end_state
 from .sheet import Break, break_shift, breaks_figure, broken, kept_span, lay_out, plate_names, warn_hidden_labels
 from .step_inputs import StepInputs
@@ -333,8 +333,14 @@ def thin(items: Sequence[int], most: int) -> list[int]:
     return sorted({items[round(i * (len(items) - 1) / (most - 1))] for i in range(most)})
 
 
+#: A name that is an id as it stands: letters and digits (``str.isalnum``'s, which are ``\w``'s less "_"), "-", "_".
+_ID = re.compile(r"[\w-]*")
+
+
 @functools.lru_cache(maxsize=65536)  # a live sweep names the same objects at hundreds of values
 def _safe_id(text: str) -> str:
+    if _ID.fullmatch(text):  # (most names: a figure of 3600 parts names 32,000 objects)
+        return text
     return "".join(c if c.isalnum() or c in "-_" else "-" for c in text)
 
 
@@ -396,7 +402,7 @@ MARGIN = 0.035
 def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: bool = False,
                 break_axis: bool = True, furniture: tuple = (), looks: "dict[str, str] | None" = None,
                 panels: tuple = (), ending: bool = False, end_furniture: tuple = (),
-                end_looks: "dict[str, str] | None" = None, _warn: bool = True) -> Scene:
+                end_looks: "dict[str, str] | None" = None, _warn: bool = True, _margin: float | None = None) -> Scene:
     """The marks of a built or replayed figure (anything with ``.protocol`` and ``.replay``).
 
     With *plate* the scene is what a book plate shows (:func:`plate_names`):
@@ -409,7 +415,8 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
 
     With *ending* the scene carries its end state (:meth:`Scene.in_end`): what the plate shows, drawn as
     the plate draws it (*end_looks*: the plate's looks), with the plate's furniture *end_furniture*, on the
-    scene's own sheet (its broken axis).
+    scene's own sheet (its broken axis).  *_margin*: the most its lines reach past their points (the end state's
+    plate on a broken sheet: a share of what the sheet keeps of it).
     """
     protocol: Protocol = figure.protocol
     objects: Replay = figure.replay
@@ -423,7 +430,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
     if not xs:
         xs, ys = [0.0, 1.0], [0.0, 1.0]
     span = max(max(xs) - min(xs), max(ys) - min(ys), 1e-9)
-    margin = MARGIN * span
+    margin = MARGIN * span if _margin is None else min(MARGIN * span, _margin)
     on = _on_curve_points(protocol.steps, objects, shown)
     if shown is not None:
         # a plate draws each arc between all the shown points on it, found or not by the protocol
@@ -437,7 +444,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 have = on.setdefault(name, [])
                 have.extend(p for n, p in shown_pts if lies_on(obj, p, tol) and p not in have)
     in_fan = fanned_lines(protocol.steps)
-    points_drawn: dict[str, Mark] = {}  # a point's mark whatever the margin: made once when drawn twice
+    spans: dict[str, tuple] = {}  # a line's or circle's reach before the margin, by mark: redraw draws it again
 
     def draw(margin: float) -> tuple[list[Mark], dict[str, tuple[str, bool]]]:
         """The marks, each line and arc reaching *margin* past the points marked on it."""
@@ -450,10 +457,6 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 if obj is None or isinstance(obj, Length) or (shown is not None and name not in shown):
                     continue
                 mid = f"s{s.index:04d}-{_safe_id(name)}"
-                drawn = points_drawn.get(mid)
-                if drawn is not None:
-                    marks.append(drawn)
-                    continue
                 label = labels.get(name)
                 if label and "{∠" in label:
                     label = reading(label, objects)
@@ -464,12 +467,17 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
                               group=s.group, label=label, look=(looks or {}).get(name, ""))
                 if isinstance(obj, Point):
-                    marks.append(drawn := Mark(mid, kind=MarkKind.POINT, geom=(obj[0], obj[1]), **common))
-                    points_drawn[mid] = drawn
+                    marks.append(Mark(mid, kind=MarkKind.POINT, geom=(obj[0], obj[1]), **common))
                 elif isinstance(obj, Line):
-                    marks.append(Mark(mid, kind=MarkKind.SEGMENT, geom=segment_extent(obj, on.get(name, []), margin), **common))
+                    span = spans.get(mid)
+                    if span is None:
+                        span = spans[mid] = segment_span(obj, on.get(name, []))
+                    marks.append(Mark(mid, kind=MarkKind.SEGMENT, geom=segment_at(span, margin), **common))
                 elif isinstance(obj, Circle):
-                    kind, geom = circle_extent(obj, on.get(name, []), margin, s.role, plate=shown is not None)
+                    span = spans.get(mid)
+                    if span is None:
+                        span = spans[mid] = marked_arc(obj, on.get(name, []), s.role, plate=shown is not None)
+                    kind, geom = arc_at(span, margin)
                     marks.append(Mark(mid, kind=kind, geom=geom, **common))
                 elif hasattr(obj, "rings"):  # an Area: one mark per piece, each hatched
                     # a look "signed": the pieces under the lower line hatched across those over it (+ and −)
@@ -492,6 +500,21 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                         marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=straight, **common))
         return marks, lettered
 
+    def redraw(marks: list[Mark], margin: float) -> list[Mark]:
+        """*marks* (drawn by :func:`draw`) drawn at another *margin*: what ``draw(margin)`` gives (its letters are
+        the same), the lines and arcs over their marked points reaching *margin* past them, the rest as they are."""
+        out = []
+        for m in marks:
+            span = spans.get(m.id)
+            if span is None:
+                out.append(m)
+                continue
+            kind, geom = (MarkKind.SEGMENT, segment_at(span, margin)) if m.kind is MarkKind.SEGMENT \
+                else arc_at(span, margin)
+            out.append(Mark(m.id, m.step, m.name, kind, geom, m.role, m.tool, m.provenance, m.label, m.group, m.look,
+                            m.hatch, m.straight))
+        return out
+
     marks, lettered = draw(margin)
     breaks: tuple[Break, ...] = ()
     if panels:
@@ -507,10 +530,10 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
             # L/r = 50 that would be 1.8 r)
             kept = MARGIN * kept_span(marks)
             if kept < margin:
-                again, letters = draw(kept)
+                again = redraw(marks, kept)
                 smaller = broken(again, tuple(furniture), True)
                 if smaller[2]:
-                    margin, lettered, cut = kept, letters, smaller
+                    margin, cut = kept, smaller
         if cut is None:  # (broken at the first margin only when it is kept: a long figure's every mark moved)
             cut = broken(marks, tuple(furniture), shown is None)
         marks, furniture, breaks = cut
@@ -540,6 +563,19 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
     end: dict[str, Any] = {}
     if ending and shown is None:
         plate_scene = build_scene(figure, plate=True, break_axis=False, looks=end_looks, _warn=False)
+        if breaks:
+            # on a broken sheet the plate's lines reach past their points by a share of what the plate spans
+            # there (its points and curves moved as the sheet moves them; a lettered line's letter point is
+            # placed on the sheet), not of the length broken out (at L/r = 50 the crank's ordinates reached 1.8 r
+            # past the circle)
+            sx, sy = break_shift(breaks), break_shift(breaks, axis=1)
+            kept = [(sx(p[0]), sy(p[1])) for m in plate_scene.marks
+                    for p in ((m.geom,) if m.kind is MarkKind.POINT and not m.id.endswith("-at") else
+                              m.geom if m.kind in (MarkKind.CURVE, MarkKind.AREA) else ())]
+            if kept:
+                plate_scene = build_scene(figure, plate=True, break_axis=False, looks=end_looks, _warn=False,
+                                          _margin=MARGIN * max(max(p[0] for p in kept) - min(p[0] for p in kept),
+                                                               max(p[1] for p in kept) - min(p[1] for p in kept), 1e-9))
         end = end_state(plate_scene.marks, plate_scene.bbox, marks, breaks, end_furniture)
     return Scene(tuple(marks), bbox, protocol.steps, title, dict(protocol.params), breaks, tuple(furniture),
                  essentials, **end)

@@ -2,7 +2,7 @@
 
 Elements come from svgwrite's element factory with validation off
 (``debug=False``: checking every attribute of every mark costs more than the
-drawing itself); the plentiful plain ones (groups, points' circles, lines, paths, ``<set>``)
+drawing itself); the plentiful plain ones (groups, points' circles, lines, paths, letters, ``<set>``)
 are :class:`Element`, which gives svgwrite's element without its machinery.
 Each mark's element is turned into an ElementTree element once
 (:meth:`Writer.frozen`) and shared by every document that shows it --
@@ -39,6 +39,7 @@ from typing import Any
 
 import svgwrite
 from svgwrite.etree import CDATA_TAG
+from svgwrite.utils import iterflatlist, strlist
 
 __all__ = ["Writer", "Element", "Frozen", "XML_DECLARATION", "MARKER", "fmt"]
 
@@ -85,13 +86,15 @@ class Element:
     {'class': 'step cur', 'data-step': '3'}
     """
 
-    __slots__ = ("elementname", "attribs", "elements")
+    __slots__ = ("elementname", "attribs", "elements", "text")
 
     def __init__(self, elementname: str, **extra: Any):
         self.elementname = elementname
         names = _ATTRIBUTE_NAMES
         self.attribs = {names.get(k) or _attribute_name(k): v for k, v in extra.items()}
         self.elements: list[Any] = []
+        #: the element's text (a ``<text>``'s), None for none
+        self.text: Any = None
 
     def add(self, element: Any) -> Any:
         self.elements.append(element)
@@ -104,14 +107,17 @@ class Element:
         self.attribs[key] = value
 
     def get_xml(self) -> ET.Element:
-        xml = ET.Element(self.elementname)
+        attrib = {}
         for attribute, value in sorted(self.attribs.items()):
             if value is not None:
                 value = str(value)
                 if value:  # svgwrite leaves empty attributes out
-                    xml.set(attribute, value)
-        for element in self.elements:
-            xml.append(element.get_xml())
+                    attrib[attribute] = value
+        xml = ET.Element(self.elementname, attrib)
+        if self.text is not None:
+            xml.text = str(self.text)
+        if self.elements:
+            xml.extend([element.get_xml() for element in self.elements])
         return xml
 
 
@@ -146,6 +152,20 @@ def _line(start: tuple[Any, Any] = (0, 0), end: tuple[Any, Any] = (0, 0), **extr
     return e
 
 
+def _text(text: Any, insert: Any = None, x: Any = None, y: Any = None, **extra: Any) -> Any:
+    """svgwrite's ``factory.text``; one set at *x*, *y* (every letter's) is an :class:`Element`, its positions
+    written as svgwrite writes them."""
+    if insert is not None or any(k in extra for k in ("dx", "dy", "rotate")):
+        return svgwrite.text.Text(text, insert=insert, x=x, y=y, debug=False, profile="full", **extra)
+    e = Element("text", **extra)
+    e.text = text
+    if x is not None:
+        e.attribs["x"] = strlist(list(iterflatlist(x)), " ")
+    if y is not None:
+        e.attribs["y"] = strlist(list(iterflatlist(y)), " ")
+    return e
+
+
 def _path(d: Any = None, **extra: Any) -> Any:
     """svgwrite's ``factory.path``; a path given as one string (every mark's) is an :class:`Element`."""
     if isinstance(d, str):
@@ -165,6 +185,7 @@ class Writer:
         self.factory.circle = _circle
         self.factory.line = _line
         self.factory.path = _path
+        self.factory.text = _text
         #: The shared elements (:meth:`frozen`) by id: the element (kept, so that its id stays its own) and its
         #: markup without its tail, once a document has written it.
         self._shared: dict[int, list] = {}
@@ -209,8 +230,9 @@ class Writer:
             out.append(shared[1])
         else:
             self._open_close(elem, out)
-        if elem.tail:
-            out.append(_escape_text(elem.tail))
+        tail = elem.tail
+        if tail:
+            out.append(tail if tail == "\n" else _escape_text(tail))  # (the line break after nearly every element)
 
     def _open_close(self, elem: ET.Element, out: list[str]) -> None:
         tag = elem.tag

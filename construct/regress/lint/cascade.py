@@ -94,23 +94,37 @@ class _Rule:
     declarations: tuple[tuple[str, str], ...]
 
     def matches(self, chain: tuple[Node, ...]) -> bool:
-        parts = self.parts
+        return _match(self.parts, chain, len(self.parts) - 1, len(chain) - 1)
 
-        def fits(compound, nd: Node) -> bool:
-            tag, ids, classes = compound
-            return ((tag is None or tag == nd[0]) and all(i == nd[1] for i in ids)
-                    and all(c in nd[2] for c in classes))
 
-        def match(i: int, j: int) -> bool:
-            if not fits(parts[i][1], chain[j]):
-                return False
-            if i == 0:
-                return True
-            if parts[i][0] == ">":
-                return j > 0 and match(i - 1, j - 1)
-            return any(match(i - 1, jj) for jj in range(j - 1, -1, -1))
+def _fits(compound: tuple, nd: Node) -> bool:
+    """Does the node *nd* fit the compound selector (tag, ids, classes)?"""
+    tag, ids, classes = compound
+    if tag is not None and tag != nd[0]:
+        return False
+    for i in ids:
+        if i != nd[1]:
+            return False
+    for c in classes:
+        if c not in nd[2]:
+            return False
+    return True
 
-        return match(len(parts) - 1, len(chain) - 1)
+
+def _match(parts: tuple, chain: tuple[Node, ...], i: int, j: int) -> bool:
+    """Do the selector's compounds up to *i* match the chain up to *j*, the *i*-th at node *j*?  (Module-level
+    functions and loops, not closures and generators made at every call: the lint asks a sheet's rules of tens
+    of thousands of chains.)"""
+    if not _fits(parts[i][1], chain[j]):
+        return False
+    if i == 0:
+        return True
+    if parts[i][0] == ">":
+        return j > 0 and _match(parts, chain, i - 1, j - 1)
+    for jj in range(j - 1, -1, -1):
+        if _match(parts, chain, i - 1, jj):
+            return True
+    return False
 
 
 def _selector(text: str) -> tuple | None:

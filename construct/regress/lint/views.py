@@ -49,6 +49,9 @@ def merge_runs(runs: Iterable[tuple[int, int]]) -> Runs:
 
 
 def both_runs(x: Runs, y: Runs) -> Runs:
+    if len(x) == 1 and len(y) == 1:  # (most often: an element seen from its step on, in one view's steps)
+        a, b = max(x[0][0], y[0][0]), min(x[0][1], y[0][1])
+        return [(a, b)] if a <= b else []
     out: Runs = []
     i = j = 0
     while i < len(x) and j < len(y):

@@ -242,6 +242,19 @@ def test_the_array_law_equals_the_scalar_law():
     assert np.allclose(grid, [[excess_exact(a, k) for a in angles] for k in ratios], rtol=0.0, atol=1e-13)
 
 
+@pytest.mark.parametrize("dead_centre", ["crank-end", "head-end"])
+def test_excess_from_on_an_array_is_the_scalar_law_to_the_bit(dead_centre):
+    """A figure's checks read e at every point of the division in one numpy pass: the same numbers, bit for bit,
+    as one scalar call a point (so a check's expected value does not move with the pass)."""
+    from construct.constructions.two_cranks import excess_from
+
+    for parts in (2, 12, 60):
+        angles = math.pi * np.arange(2 * parts + 1) / parts
+        for ratio in (None, 1.05, 4.5, 50.0):
+            assert excess_from(angles, ratio, dead_centre).tolist() == \
+                [excess_from(math.pi * j / parts, ratio, dead_centre) for j in range(2 * parts + 1)], (parts, ratio)
+
+
 def test_quadrant_extremes_over_a_sweep_equal_a_dense_scalar_sampling():
     """One numpy pass over many rod ratios gives, ratio by ratio, the scalar answer, and the extremes of the
     law sampled point by point (4,000 points a quadrant) to within the sampling's error."""

@@ -238,7 +238,7 @@ def test_camera_work_grows_with_the_steps_not_their_square(monkeypatch):
 
     monkeypatch.setattr(camera, "extreme_points", counting)
     counts = []
-    for parts in (45, 180):  # 1,150 and 4,570 visits for 890 and 3,635 views; a square would be 16x
+    for parts in (30, 120):  # 580 and 2,290 visits for 365 and 1,535 views; a square would be 16x
         fig = get("crank").figure(parts=parts)
         sc = scene_for(get("crank"), fig)
         before = next(calls)

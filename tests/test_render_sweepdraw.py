@@ -28,15 +28,43 @@ def _sweep(name: str, params: dict):
     return c, built, replay
 
 
+class OneByOne:
+    """What the drawing draws at a sweep's value measured alone (the scalar path: the value's scene, the drawing's
+    mark geometry), made once per figure and value: both tests here read the same values of the same figures (a
+    value's scene takes a fifth of a second, a figure's Measure a second)."""
+
+    def __init__(self):
+        self.measures: dict[tuple, Measure] = {}
+        self.made: dict[tuple, tuple] = {}
+
+    def measure(self, c, built) -> Measure:
+        key = (c.name, repr(sorted(built.params.items())))
+        if key not in self.measures:
+            self.measures[key] = Measure(c, built, STYLES["teaching"])
+        return self.measures[key]
+
+    def at(self, c, built, replay, i: int) -> tuple:
+        """The measure of the sweep *replay*'s value *i*, as a figure of its own."""
+        one = replay.take(i, whole=True)
+        key = (c.name, repr(sorted(built.params.items())), repr(sorted(one.givens.items())))
+        if key not in self.made:
+            self.made[key] = self.measure(c, built)(Figure(built.protocol, one, c.check))
+        return self.made[key]
+
+
+@pytest.fixture(scope="module")
+def one_by_one() -> OneByOne:
+    return OneByOne()
+
+
 @pytest.mark.parametrize("name, params", [("crank", {"parts": 6}), ("crank", {"parts": 18}), ("inertia-curve", {}),
                                           ("piston-force", {}), ("tangential-pressure", {"parts": 6})])
-def test_every_mark_is_drawn_where_the_drawing_draws_it_value_by_value(name, params):
+def test_every_mark_is_drawn_where_the_drawing_draws_it_value_by_value(name, params, one_by_one):
     c, built, replay = _sweep(name, params)
-    measure = Measure(c, built, STYLES["teaching"])
     drawn = SweepDrawing(scene_for(c, built), built.protocol, replay, len(VALUES), STYLES["teaching"])
     assert drawn.ok.mean() >= 0.9  # where it is not sure (a mark changing its form), the caller draws
     for i in np.flatnonzero(drawn.ok):
-        keys, nums, fit, _ = measure(Figure(built.protocol, replay.take(int(i), whole=True), c.check))
+        keys, nums, fit, _ = one_by_one.at(c, built, replay, int(i))
         at, by_mark = 0, {}
         for k in keys:
             n = k[2].count("#")
@@ -50,7 +78,7 @@ def test_every_mark_is_drawn_where_the_drawing_draws_it_value_by_value(name, par
 
 
 @pytest.mark.parametrize("name, params", [("inertia-curve", {}), ("piston-force", {}), ("crank-angle", {})])
-def test_a_sweeps_frames_are_the_frames_of_each_value(name, params):
+def test_a_sweeps_frames_are_the_frames_of_each_value(name, params, one_by_one):
     """Measure.frames (the sweep at once where it can, value by value where not) gives each value's frame:
     the same keys, numbers within the last written digit (views too: they are carried from the same
     boxes), the same fit and letters (crank-angle's are angles read off the figure, on its lettered lines)."""
@@ -61,10 +89,9 @@ def test_a_sweeps_frames_are_the_frames_of_each_value(name, params):
     if swept is None:
         pytest.skip(f"{name} has no rod ratio to sweep")
     replay = built.protocol.replay(swept)
-    measure = Measure(c, built, STYLES["teaching"])
-    frames = measure.frames(built.protocol, replay, len(values))
+    frames = one_by_one.measure(c, built).frames(built.protocol, replay, len(values))
     for i, (keys, nums, fit, texts) in enumerate(frames):
-        want = measure(Figure(built.protocol, replay.take(i, whole=True), c.check))
+        want = one_by_one.at(c, built, replay, i)
         assert keys == want[0]
         assert np.abs(np.asarray(nums) - np.asarray(want[1])).max() <= 0.0101
         assert np.allclose(fit, want[2], rtol=1e-12, atol=1e-9)

@@ -91,16 +91,22 @@ def start_angle(dead_centre: str) -> float:
     return math.pi if dead_centre == "crank-end" else 0.0
 
 
-def excess_from(alpha: float, rod_ratio: float | None, dead_centre: str = "crank-end") -> float:
+def excess_from(alpha: Any, rod_ratio: float | None, dead_centre: str = "crank-end") -> Any:
     """e(α)/(Q·r) with α counted from the given dead centre of the first crank (§ 146: the crank end, B1).
 
     From the crank end it is the head-end excess turned half a revolution: e(π + α) − e(π).  At 180° § 146's
     formula (upper sign in the Hingang) gives 2 − 4 + the rod terms; the exact law +0.2020 Q·r at L/r = 5.
+    An array of angles gives the array of e, in one numpy pass (:func:`excess_exact_array`: a figure's checks
+    read e at every point of the division, and a sweep's checks at every point of every set).
 
     >>> round(excess_from(math.pi, 5.0), 6), round(excess_from(math.pi, 5.0, "head-end"), 6)
     (0.202041, -0.202041)
+    >>> excess_from(np.array([0.0, math.pi]), 5.0).round(6).tolist()
+    [0.0, 0.202041]
     """
     a0 = start_angle(dead_centre)
+    if np.ndim(alpha):
+        return excess_exact_array(a0 + np.asarray(alpha, dtype=float), rod_ratio) - excess_exact(a0, rod_ratio)
     return excess_exact(a0 + alpha, rod_ratio) - excess_exact(a0, rod_ratio)
 
 
@@ -136,7 +142,7 @@ def excess_exact_array(alpha: Any, rod_ratio: Any) -> Any:
         rem = theta - n * math.pi
         even = np.mod(n, 2.0) == 0.0
         p = position(np.where(even, rem, math.pi - rem))
-        return 2.0 * n + np.where(even, p, 2.0 - p)
+        return np.where(even, 2.0 * n + p, 2.0 * n + 2.0 - p)  # summed as piston_travel sums, to the last bit
 
     return travel(alpha) + travel(alpha + half) - position(half) - 4.0 * alpha / math.pi
 
@@ -156,10 +162,11 @@ def quadrant_extremes(rod_ratio: Any, samples: int = 2000, dead_centre: str = "h
     scalar = rod_ratio is None or np.ndim(rod_ratio) == 0
     a_s = start_angle(dead_centre)
 
-    def law(angle, r):  # e(α) with α counted from the chosen dead centre (excess_from, on arrays)
-        return excess_exact_array(a_s + angle, r) - excess_exact_array(a_s, r)
-
     ratio = None if rod_ratio is None else np.asarray(rod_ratio, dtype=float).reshape(-1, 1, 1)
+    at_start = excess_exact_array(a_s, ratio)  # (the same for every probe: made once)
+
+    def law(angle, r):  # e(α) with α counted from the chosen dead centre (excess_from, on arrays)
+        return excess_exact_array(a_s + angle, r) - at_start
     step = 0.5 * math.pi / samples
     a0 = (0.5 * math.pi * np.arange(4.0)).reshape(1, 4, 1)
     grid = a0 + step * np.arange(samples + 1.0)  # (1, quadrant, sample)

@@ -4,6 +4,9 @@ from __future__ import annotations
 
 import math
 from typing import Any, Mapping
+
+import numpy as np
+
 from ..checking import EUCLIDEAN_TOLERANCE, Check
 from .. import Figure
 from ..crank import angle_tolerance
@@ -22,45 +25,48 @@ def two_cranks_checks(fig: Figure, model: Mapping[str, Any] | None = None) -> li
     sense = sense_of(fig)
     pm = "+" if sense > 0 else "-"
     made_by = fig.replay.made_by()
+    if model is None and not fig.params["infinite_rod"]:  # the exact law's extremes, asked by two kinds of check
+        model = {"extremes": quadrant_extremes(K, dead_centre=dc)}
     checks: list[Check] = []
     kinds = [(True, None)] if fig.params["infinite_rod"] else [(False, K), (True, None)]
+    # how far the division may put a crank point off its angle (both diagrams share the division)
+    err_w = max(angle_tolerance(fig, p, made_by)[0] for p in made_by if p.startswith("P") and p[1:].isdigit()) \
+        if n > 1 else EUCLIDEAN_TOLERANCE
     for infinite, ratio in kinds:
         word = "infinite rod" if infinite else f"L/r = {K:g}"
         # The division's error moves a crank point; |de/dalpha| <= 2(1 + lam) + 4/pi.
         slope = 2.0 * (1.0 + (0.0 if ratio is None else 1.0 / ratio)) + 4.0 / math.pi
-        err_w = max(angle_tolerance(fig, p, made_by)[0] for p in made_by if p.startswith("P") and p[1:].isdigit()) \
-            if n > 1 else EUCLIDEAN_TOLERANCE
         # 4N compass transfers along the work line, each rounding at ~1e-16 of its 8r length.
         tol = max(EUCLIDEAN_TOLERANCE, 4e-15 * n) + slope * max(err_w - EUCLIDEAN_TOLERANCE, 0.0)
         why = ("Euclidean chain: rod arcs / ordinates, compass steps on the work line" if tol < 1e-10 else
                f"division of the circle not Euclidean ({fig.params['method']}): its angle error times |de/dalpha|")
+        # e at every point of the division: read off the work line, and by the exact law (one numpy pass)
+        measured_e = [work_excess(fig, j, infinite=infinite) for j in range(2 * n + 1)]
+        exact_e = excess_from(math.pi * np.arange(2 * n + 1) / n, ratio, dc).tolist()
         for j in range(2 * n + 1):
-            alpha = math.pi * j / n
-            e = work_excess(fig, j, infinite=infinite)
-            checks.append(Check(f"work excess {j} ({word}, from the {dc} dead centre)", e,
-                                excess_from(alpha, ratio, dc), tol, why, "Q r"))
+            checks.append(Check(f"work excess {j} ({word}, from the {dc} dead centre)", measured_e[j],
+                                exact_e[j], tol, why, "Q r"))
             if j < 2 * n:
                 checks.append(Check(f"speed radius {j} ({word})", speed_radius(fig, j, infinite=infinite),
-                                    1.0 + sense * gain * excess_from(alpha, ratio, dc), (1.0 + gain) * tol,
+                                    1.0 + sense * gain * exact_e[j], (1.0 + gain) * tol,
                                     f"proportional angle and compass: r {pm} g e, Euclidean", "r"))
         if infinite and n % 4 == 0:
             for j in range(0, 2 * n, n // 4):
                 checks.append(Check(f"v = v1 at {180 * j // n} deg (infinite rod, § 146)",
-                                    work_excess(fig, j, infinite=True), 0.0, tol,
+                                    measured_e[j], 0.0, tol,
                                     "the book: the same speed v1 every 45 degrees", "Q r"))
         if infinite:
             # The book's claim: v_max exceeds v1 as much as v_min falls short; the construction's wave
             # is antisymmetric about 45 degrees in every quadrant.
             for j in range(1, n // 2):
                 checks.append(Check(f"e({180 * j / n:g}) + e({90 - 180 * j / n:g}) = 0 (infinite rod)",
-                                    work_excess(fig, j, infinite=True) + work_excess(fig, n // 2 - j, infinite=True),
+                                    measured_e[j] + measured_e[n // 2 - j],
                                     0.0, 2 * tol, "§ 146: v_max - v1 = v1 - v_min; e(90 - a) = -e(a)", "Q r"))
         else:
-            for q in (quadrant_extremes(ratio, dead_centre=dc) if model is None else model["extremes"]):
+            for q in model["extremes"]:
                 # The grid's own rise and fall in each quadrant, against the exact law on the same grid.
                 lo, hi = (q["quadrant"] - 1) * n // 2, q["quadrant"] * n // 2
-                es = [work_excess(fig, j) for j in range(lo, hi + 1)]
-                ex = [excess_from(math.pi * j / n, ratio, dc) for j in range(lo, hi + 1)]
+                es, ex = measured_e[lo:hi + 1], exact_e[lo:hi + 1]
                 measured = (max(es) - es[0]) - (es[0] - min(es))
                 checks.append(Check(f"quadrant {q['quadrant']}: rise - fall of e ({word})", measured,
                                     (max(ex) - ex[0]) - (ex[0] - min(ex)), 2 * tol,
@@ -161,21 +167,21 @@ def _extremes_of(points, O, D0, r: float, gain: float, start: float, samples: in
     # the curve's points as (x, y) floats (curve_points' numbers, without a Point each: a sweep's checks read
     # 1,500 of them at every value)
     xs, ys = curve.sample(samples)
-    pts = list(zip(xs.tolist(), ys.tolist()))
     turn = 2.0 * math.pi
     if within is not None:
         lo_a, hi_a = within
-        pts = [p for p, a in ((p, (angle_at(O, D0, p) - start) % turn) for p in pts)
-               if lo_a - 1e-12 <= a <= hi_a + 1e-12 or (hi_a >= turn - 1e-12 and a < 1e-12)]
-    ox, oy, hypot = O.x, O.y, math.hypot
-    radii = [hypot(x - ox, y - oy) / r for x, y in pts]  # O.distance(p) / r
-    lo, hi = radii.index(min(radii)), radii.index(max(radii))
-    out = {"v_min": radii[lo], "v_max": radii[hi]}
+        keep = [lo_a - 1e-12 <= a <= hi_a + 1e-12 or (hi_a >= turn - 1e-12 and a < 1e-12)
+                for a in ((angle_at(O, D0, p) - start) % turn for p in zip(xs.tolist(), ys.tolist()))]
+        xs, ys = xs[keep], ys[keep]
+    # O.distance(p) / r for every point (math.hypot, as Point.distance: numpy's hypot differs in the last bit)
+    radii = np.fromiter(map(math.hypot, (xs - O.x).tolist(), (ys - O.y).tolist()), float, xs.size) / r
+    lo, hi = int(radii.argmin()), int(radii.argmax())
+    out = {"v_min": float(radii[lo]), "v_max": float(radii[hi])}
     # the least e sits at the least radius when the rods drive, at the greatest when the shaft drives pumps
     at_min, at_max = (lo, hi) if gain > 0 else (hi, lo)
-    out["e_min"], out["e_max"] = (radii[at_min] - 1.0) / gain, (radii[at_max] - 1.0) / gain
-    out["alpha_min"] = (angle_at(O, D0, pts[at_min]) - start) % turn
-    out["alpha_max"] = (angle_at(O, D0, pts[at_max]) - start) % turn
+    out["e_min"], out["e_max"] = (float(radii[at_min]) - 1.0) / gain, (float(radii[at_max]) - 1.0) / gain
+    out["alpha_min"] = (angle_at(O, D0, (float(xs[at_min]), float(ys[at_min]))) - start) % turn
+    out["alpha_max"] = (angle_at(O, D0, (float(xs[at_max]), float(ys[at_max]))) - start) % turn
     return out
 
 
@@ -200,17 +206,16 @@ def wave_extremes(fig: Figure, *, samples: int = 64, exact: bool = False,
     start = math.pi if dc == "crank-end" else 0.0
     n = fig.params["parts"]
     if exact:   # the crank turns from the head-end dead centre D0 (left of O) over the top
-        pts = []
-        for j in range(2 * n):
-            a = math.pi * j / n
-            rad = g["r"] * (1.0 + gain * excess_from(a, None if fig.params["infinite_rod"] else g["rod_ratio"], dc))
-            pts.append(Point(O.x - rad * math.cos(start + a), O.y + rad * math.sin(start + a)))
+        angles = math.pi * np.arange(2 * n) / n
+        radii = g["r"] * (1.0 + gain * excess_from(angles, None if fig.params["infinite_rod"] else g["rod_ratio"], dc))
+        pts = [Point(O.x - rad * math.cos(start + a), O.y + rad * math.sin(start + a))
+               for a, rad in zip(angles.tolist(), radii.tolist())]
     else:
         pts = [rp[f"Z{j}"] for j in range(2 * n)]
     return _extremes_of(pts, O, D0, g["r"], gain, start, samples, within)
 
 
-def _finite_wave_checks(fig: Figure, ratio: float, dc: str, sense: float, model: Mapping[str, Any] | None) -> list[Check]:
+def _finite_wave_checks(fig: Figure, ratio: float, dc: str, sense: float, model: Mapping[str, Any]) -> list[Check]:
     """§ 147: the finite rod's least and greatest speed over the turn, read off its drawn wave.
 
     The tolerance is the method's own error worked out before anything is measured: the same French curve
@@ -220,7 +225,7 @@ def _finite_wave_checks(fig: Figure, ratio: float, dc: str, sense: float, model:
     if fig.params.get("infinite_rod"):
         return []
     n = fig.params["parts"]
-    qs = quadrant_extremes(ratio, dead_centre=dc) if model is None else model["extremes"]
+    qs = model["extremes"]
     low = min(qs, key=lambda q: q["e_min"])
     high = max(qs, key=lambda q: q["e_max"])
     drawn, on_exact = wave_extremes(fig), wave_extremes(fig, exact=True)

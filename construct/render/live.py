@@ -380,6 +380,15 @@ LIVE_SCRIPT = r"""
   var SIZE = LIST[0].label_px || 12, NS = "http://www.w3.org/2000/svg", marksOf = new Map(), rodLabels = [], rodSpots = [];
   var TWO = /^M(-?[0-9.]+) (-?[0-9.]+)L(-?[0-9.]+) (-?[0-9.]+)$/;
   function mk(tag, cls, parent){ var e = document.createElementNS(NS, tag); e.setAttribute("class", cls); parent.appendChild(e); return e; }
+  var ENDS = ["x1", "y1", "x2", "y2"];
+  function ends(ln){  // a line's ends at the shown value: as written, or, a line the page hides (not written), the sweep's
+    var out = ln.x1 ? [ln.x1.baseVal.value, ln.y1.baseVal.value, ln.x2.baseVal.value, ln.y2.baseVal.value] : drawnOf(ln).n.slice(0, 4);
+    if (unseen.has(ln)) (S.slotsOf.get(ln) || []).forEach(function(sl){
+      if (sl.len) out[ENDS.indexOf(sl.attr)] = round2(num(sl.cs[0]));
+      else for (var i = 0; i < 4; i++) out[i] = round2(num(sl.cs[i]));
+    });
+    return out;
+  }
   function breakMarks(every){  // (every: the lines of steps not shown too)
     var bands = [];
     for (var axis = 0; axis < 2; axis++) {
@@ -390,8 +399,7 @@ LIVE_SCRIPT = r"""
     for (var i = 0; i < lines.length; i++) {
       var ln = lines[i], x1, y1, x2, y2;
       if (!every && !ln.isConnected) continue;  // (a step not shown: its marks are set when it is shown)
-      if (ln.x1) { x1 = ln.x1.baseVal.value; y1 = ln.y1.baseVal.value; x2 = ln.x2.baseVal.value; y2 = ln.y2.baseVal.value; }
-      else { var q2 = drawnOf(ln).n; x1 = q2[0]; y1 = q2[1]; x2 = q2[2]; y2 = q2[3]; }
+      var q2 = ends(ln); x1 = q2[0]; y1 = q2[1]; x2 = q2[2]; y2 = q2[3];
       var got = marksOf.get(ln) || [null, null];
       for (axis = 0; axis < 2; axis++) {
         var band = bands[axis], a0 = axis ? y1 : x1, a1 = axis ? x1 : y1, b0 = axis ? y2 : x2, b1 = axis ? x2 : y2;
@@ -554,9 +562,9 @@ LIVE_SCRIPT = r"""
   function drawAreas(every){  // (every: the areas of steps not shown too)
     for (var i = 0; i < areas.length; i++) {
       var A = areas[i], e = A.els, pieces;
-      if (!e.every(function(x){ return x; }) || !(every || A.pieces[0].isConnected)) continue;
+      if (!e.every(function(x){ return x; }) || !(every || A.pieces[0].isConnected && !unseen.has(A.pieces[0]))) continue;
       // the curves and points it is drawn from at the shown value, shown or not (a shown one is, this frame)
-      for (var s = 0; s < e.length; s++) if (!e[s].isConnected) (S.slotsOf.get(e[s]) || []).forEach(write);
+      for (var s = 0; s < e.length; s++) if (!e[s].isConnected || unseen.has(e[s])) (S.slotsOf.get(e[s]) || []).forEach(write);
       // (drawn anew when the shown value moves: its marks are the sweep's at that value, and their texts, many
       // thousand characters, are not read back to be compared)
       var key = sweeps.indexOf(S) + " " + S.value;
@@ -590,12 +598,48 @@ LIVE_SCRIPT = r"""
     // the break marks and areas once the player has put back every group the step shows (before it is drawn)
     if (!settling) { settling = true; Promise.resolve().then(function(){ settling = false; breakMarks(); drawAreas(); }); }
   }
-  // the marks of the steps not shown, out of the document, at the shown value at once (for a reader of the
-  // figure's numbers: the browser tests); what the page shows is untouched
+  // The page writes what it shows.  A mark or letter its classes hide (display: none: the end state's
+  // letters, which the plate letters itself, points it leaves out, another zoom level's letters) is restyled by
+  // every number written into it all the same -- at piston-force's end state three of four elements written
+  // were hidden -- so it waits, as the groups of the steps not shown do, until a new step, zoom level or end
+  // state shows it (reveal), and is drawn then, before the frame.  Which are hidden is asked again then.
+  var unseen = new Set(), seenKey = null, marked = null;
+  function seeing(){  // the marks and letters hidden now, asked again when what hides them may have changed
+    var key = svg.getAttribute("class") + "|" + svg.getAttribute("data-step") + "|" + readingsShown;
+    if (key === seenKey) return false;
+    seenKey = key;
+    unseen = new Set();
+    if (!marked) {  // every element a given's sweep writes, and the letters
+      marked = new Set();
+      sweeps.forEach(function(W){ W.slots.forEach(function(sl){ marked.add(sl.el); }); });
+      followers.forEach(function(fo){ marked.add(fo.g || fo.el); });
+      areas.forEach(function(A){ marked.add(A.pieces[0]); });
+    }
+    // (no box: not rendered; asked of the laid-out page, as the letters' boxes are. checkVisibility() says an SVG
+    // element with display: none is visible)
+    marked.forEach(function(e){ if (e.isConnected && !e.getClientRects().length) unseen.add(e); });
+    return true;
+  }
+  function drawMarks(){  // the shown marks and letters at the shown value (the hidden wait: seeing)
+    var i, j;
+    for (i = 0; i < S.loose.length; i++) if (!unseen.has(S.loose[i].el)) write(S.loose[i]);
+    S.inGroup.forEach(function(list, g){
+      if (g.isConnected) for (j = 0; j < list.length; j++) if (!unseen.has(list[j].el)) write(list[j]); });
+    for (i = 0; i < followers.length; i++) {
+      var fo = followers[i];
+      if (fo.grp.isConnected && !unseen.has(fo.g || fo.el)) follow(fo);
+    }
+  }
+  function reveal(){  // a new step, zoom level or end state: what it shows anew, at the shown value
+    if (S && seeing()) { drawMarks(); drawAreas(); }
+  }
+  // every mark at the shown value at once, shown or not, in the document or not (for a reader of the figure's
+  // numbers: the browser tests); what the page shows is untouched
   api.flush = function(){
     fillStale();
-    if (!S || !player) return;
-    player.groups().forEach(function(g){ if (!g.isConnected) bring(g); });
+    if (!S) return;
+    S.slots.forEach(write);
+    followers.forEach(follow);
     breakMarks(true);
     drawAreas(true);
   };
@@ -706,15 +750,15 @@ LIVE_SCRIPT = r"""
     if (inset && !atBook && inset.style.display !== "none") {
       inset.style.display = "none"; document.getElementById("insetbox").setAttribute("visibility", "hidden"); insetHidden = true;
     } else if (atBook && insetHidden && player) { insetHidden = false; player.redraw(); }
+    // readings of the figure (an angle to the minute): true at the book's values only
+    readingsShown = atBook;
+    for (var j = 0; j < readings.length; j++) { var shown = atBook ? "" : "none"; if (readings[j].style.display !== shown) readings[j].style.display = shown; }
     // the view first (the player reads the figure's size there: nothing written yet, no layout forced)
     if (player) view(!glide, dragging);
-    for (var i = 0; i < S.loose.length; i++) write(S.loose[i]);
-    S.inGroup.forEach(function(list, g){ if (g.isConnected) for (var j = 0; j < list.length; j++) write(list[j]); });
-    for (i = 0; i < followers.length; i++) if (followers[i].grp.isConnected) follow(followers[i]);
+    seeing();  // (a new zoom level or end state: which marks are hidden)
+    drawMarks();
     drawAreas();
     breakMarks();
-    // readings of the figure (an angle to the minute): true at the book's values only
-    for (var j = 0; j < readings.length; j++) { var shown = atBook ? "" : "none"; if (readings[j].style.display !== shown) readings[j].style.display = shown; }
     declutter();
     api.value = value; api.given = S.L.given;
     var said = book(value);
@@ -873,7 +917,7 @@ LIVE_SCRIPT = r"""
       return inflate(L.data);
     }).then(function(buf){ W.buf = buf; return W; });
   }
-  var endNote = null, insetHidden = false, hatches = [], endFurniture = [], endWritesRod = false, endAt = 0;
+  var endNote = null, insetHidden = false, hatches = [], endFurniture = [], endWritesRod = false, endAt = 0, readingsShown = true;
   api.ready = Promise.all(LIST.map(load)).then(function(ws){
     player = window.constructPlayer;
     endAt = player ? player.data.end : 0;
@@ -961,6 +1005,7 @@ LIVE_SCRIPT = r"""
     var seenStep = svg.getAttribute("data-step");
     if (player) new MutationObserver(function(){
       var now = svg.getAttribute("data-step");
+      reveal();
       if (now !== seenStep) { seenStep = now; view(); breakMarks(); }  // (the rod's length: the plate's, or the page's)
       declutter();
     }).observe(svg, {attributes: true, attributeFilter: ["data-step", "viewBox", "class"]});

@@ -17,8 +17,11 @@ most of it is the page's script in one string, one file for the browser; its Pyt
 the next animation frame, everything the page draws: every mark of every
 step shown, in the window or not (those of steps not shown sit outside the
 document, the player's ``lean``, and are brought to the shown value when
-their step shows them again: the player's ``shown``; ``constructLive.flush()``
-does it at once, for a reader of their numbers), the view box and each step's
+their step shows them again: the player's ``shown``; those the step's classes
+hide -- display: none, most letters and points of the end state -- wait
+likewise until a step, zoom level or end state shows them: ``reveal``;
+``constructLive.flush()`` brings every mark at once, for a reader of their
+numbers), the view box and each step's
 view, the ring round the current mark, the letters and name tags with the
 points they name (their placed offset kept; a tag names its point by
 standing on it), the broken axes' marks on every line that crosses a break
@@ -42,12 +45,14 @@ name)``: the given *name*), ``ready`` is a promise for the inflated data,
 
 A drag is drawn inside one animation frame (``construct bench --live``):
 numbers are set as SVG lengths, not parsed text, and written only when they
-change; the camera keeps its view while the step's view stays inside it, and
+change (a path's from integers); the camera keeps its view while the step's view stays inside it, and
 the letters their scale and zoom level (the player's ``holds`` and
-``DRAG_LARGER``; exact, the camera gliding, on let-go); the groups the step
+``DRAG_LARGER``; exact, the camera gliding, on let-go), and a new view leads the motion (the player's
+``ahead``); the groups the step
 hides are out of the document (the player's ``lean``) and not written while
-they are; the curves an area is drawn from are read once a redraw; the
-checks' cells change in place.
+they are, nor are the marks their classes hide; the letters' boxes are kept in the figure's units, so a new view
+or piece forces no layout; the curves an area is drawn from are read once a redraw; the
+checks' cells change in place, the rows out of sight when they come into sight or on let-go.
 
 >>> page = "<html><body><div id=stage></div>\\n<aside>\\n</aside>\\n</body></html>"
 >>> out = with_live(page, {"given": "rod_ratio", "symbol": "L/r", "low": 1.05, "high": 1000.0,

@@ -17,6 +17,7 @@ import math
 import re
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from construct.constructions import get
@@ -327,32 +328,45 @@ def test_letters_stay_with_their_points(browser, live_player):
     page.close()
 
 
-def test_angles_read_off_the_figure_are_shown_at_the_built_value_only(browser, tmp_path):
+def test_angles_read_off_the_figure_are_written_as_read_at_the_nearer_grid_value(browser, tmp_path):
     """crank-angle letters each crank with the angle AOW read off the replayed figure (61°19′).  Between grid
-    values a blend of two readings would print minutes the figure does not have, so the page shows them at the
-    built value only, and says so; the plain letters stay.  The readings are found by the sweep itself: they
-    are the labels whose protocol text reads an angle ("{∠A O B}")."""
+    values a blend of two readings would print minutes the figure does not have: the page writes each reading as
+    the sweep read it at the nearer grid value (at a grid value, what a fresh replay there writes), and says so;
+    the plain letters stay.  The readings are found by the sweep itself: they are the labels whose protocol text
+    reads an angle ("{∠A O B}")."""
     c = get("crank-angle")
     fig = c.figure(rod_ratio=4.0)
     write_replay(c, fig, tmp_path, style="teaching", frames="none")
     live = live_sweep(c, fig, "rod_ratio", max_values=12)  # a coarse grid: the readings are the point here
     reads = {name for s in fig.protocol.steps for name, text in s.labels if "{∠" in text}
-    assert reads and {i.split("-")[1] for i in live.readings} == reads
+    # (and the end state's furniture: the plate letters each angle too, fin-...)
+    marks = [i for i in live.readings if not i.startswith("fin-")]
+    plate = [i for i in live.readings if i.startswith("fin-")]
+    assert reads and {i.split("-")[1] for i in marks} == reads and plate
     path = tmp_path / "live.html"
     path.write_text(with_live((tmp_path / "player.html").read_text(), live_data(live)))
     page, errors = _open(browser, path)
     # the step before the last: the last shows the end state, which letters the angles as the plate does
     page.evaluate("() => { const s = document.getElementById('slider'); s.value = +s.max - 1; "
                   "s.dispatchEvent(new Event('input')); }")
-    shown = """ids => ids.map(id => { const t = document.getElementById(id);
-                                    return !!t && t.getClientRects().length > 0 && getComputedStyle(t).display !== 'none'; })"""
-    letters = [f"{i}" for i in live.readings] + ["s0001-O-label"]
-    assert all(page.evaluate(shown, letters))
-    page.evaluate("v => window.constructLive.set(v)", 6.5)
-    assert page.evaluate(shown, letters) == [False] * len(live.readings) + [True]
-    assert "beim Buchwert" in page.inner_text("#live")
+    said = """ids => ids.map(id => { const t = document.getElementById(id);
+        return t && t.getClientRects().length > 0 && getComputedStyle(t).display !== 'none' ? t.textContent : null; })"""
+    letters = marks + ["s0001-O-label"]
+    built = page.evaluate(said, letters)
+    assert all(built)
+    for v in (1.3, 6.5, 40.0):
+        g = float(live.grid[int(np.argmin(np.abs(np.log10(live.grid) - math.log10(v))))])
+        fresh = drawn_numbers(player_page(c, c.figure(rod_ratio=g), STYLES["teaching"]))[2]["texts"]
+        for at in (g, g * (1 + 1e-6)):  # at the grid value, and a hair past it (the nearer one's reading)
+            page.evaluate("v => window.constructLive.set(v)", at)
+            assert page.evaluate(said, letters) == [fresh[i] for i in letters], (v, at)
+            page.keyboard.press("End")  # the end state: the plate's own lettering of the angles
+            assert page.evaluate(said, plate) == [fresh[i] for i in plate], (v, at)
+            page.keyboard.press("ArrowLeft")
+        assert page.evaluate(said, letters) != built, v
+    assert "nächsten gespeicherten Wert" in page.inner_text("#live")
     page.evaluate("v => window.constructLive.set(v)", 4.0)
-    assert all(page.evaluate(shown, letters))
+    assert page.evaluate(said, letters) == built
     assert errors == []
     page.close()
 
@@ -616,17 +630,9 @@ def _numbers(e, attrs) -> list[float]:
     return [float(x) for a in attrs for x in NUMBER.findall(e.get(a) or "")]
 
 
-#: The end state (the last step: the figure as the plate draws it) has its own marks (class fo), swept as the rest; the
-#: plate's furniture there (its dimensions, lettering and the lines it adds: the rod and the centre line of the crank)
-#: holds the built value's numbers and is shown at the book's value alone
-#: (test_the_end_state_follows_the_slider_and_its_furniture_stays_at_the_books_value), so the break marks on the
-#: furniture's lines are not drawn elsewhere.  Known gap of issue 27, held here so that it shows when mended.
-AT_STEPS = [pytest.param("before-end", id="before-end"),
-            pytest.param("end", id="end", marks=pytest.mark.xfail(
-                strict=True, reason="the plate's furniture in the end state (its rod and centre line) is not in the "
-                                    "sweep yet: shown at the book's value alone"))]
-#: Every element of the step groups, the end state's own marks among them, is swept.
-STEPS_SWEPT = ["before-end", "end"]
+#: The last step shows the end state (the figure as the plate draws it: its own marks, class fo, and the plate's
+#: furniture), swept as the rest; the step before it the construction's marks.
+AT_STEPS = ["before-end", "end"]
 
 
 def _at(page, at: str) -> None:
@@ -646,17 +652,20 @@ def test_a_broken_rod_stays_broken_with_its_length_written(browser, live_player,
     _at(page, at)
     # (the marks of an end state's own line: drawn in the end state alone, as its line)
     marks = """() => Array.from(document.querySelectorAll('#figure .brkg:not([display=none]) > *'))
-        .filter(e => e.isConnected && (!e.closest('.fo') || document.getElementById('figure').classList.contains('fin')))
+        .filter(e => e.isConnected && e.getClientRects().length && (!e.closest('.fo') || document.getElementById('figure').classList.contains('fin')))
         .map(e => [e.getAttribute('class'), e.tagName === 'path' ? e.getAttribute('d') :
           [e.getAttribute('x1'), e.getAttribute('y1'), e.getAttribute('x2'), e.getAttribute('y2')].join(' ')])"""
     label = """() => { const g = document.querySelector('#figure .rodlen'); return g && g.getAttribute('display') !== 'none'
         ? g.querySelector('text:last-of-type').textContent : null; }"""
+    plate_rod = """() => { const t = Array.from(document.querySelectorAll('#furniture g.fo.end text.fur-text'))
+        .find(t => t.textContent.startsWith('L =')); return t && t.getClientRects().length ? t.textContent : null; }"""
     for v in (3.5, 8.0, 50.0):
         _drag_to(page, "rod_ratio", v)
         root = _fresh_svg(c, {"parts": 3}, "rod_ratio", v)
         # before the end the end state's own marks (group .fo, shown at the last step alone) are not drawn
-        hidden = set() if at == "end" else {d for g in root.iter() if "fo" in (g.get("class") or "").split()
-                                            for d in g.iter()}
+        # and in it the marks of the lines it leaves out (group .nf) are not
+        hidden = {d for g in root.iter() if ("nf" if at == "end" else "fo") in (g.get("class") or "").split()
+                  for d in g.iter()}
         want = [e for e in root.iter() if (e.get("class") or "") in ("brk", "brkline") and e not in hidden]
         got = page.evaluate(marks)
         assert len(got) == len(want), (v, len(got), len(want))
@@ -666,12 +675,15 @@ def test_a_broken_rod_stays_broken_with_its_length_written(browser, live_player,
             best = min(max(abs(a - b) for a, b in zip(nums, _numbers(w, ("d", "x1", "y1", "x2", "y2"))))
                        for w in want if w.get("class") == cls)
             assert best <= 0.5, (v, cls, best)
-        assert page.evaluate(label) == (f"L = {v:g} r".replace(".", ",") if want else None)
+        if at == "end":  # the plate's dimension writes it at every value (the page's own at the break is not shown)
+            assert page.evaluate(plate_rod) == f"L = {v:g} r".replace(".", ",") and page.evaluate(label) is None, v
+        else:
+            assert page.evaluate(label) == (f"L = {v:g} r".replace(".", ",") if want else None)
     assert not errors, errors
     page.close()
 
 
-@pytest.mark.parametrize("at", STEPS_SWEPT)
+@pytest.mark.parametrize("at", AT_STEPS)
 def test_every_element_of_the_figure_is_where_a_fresh_replay_draws_it(browser, live_player, at):
     """The general form of 'every mark, every moment': while the slider is dragged, every element of the figure's
     steps -- marks, letters and name tags by their groups' anchors (the letters and leaders about an anchor are
@@ -723,34 +735,35 @@ def test_every_element_of_the_figure_is_where_a_fresh_replay_draws_it(browser, l
     page.close()
 
 
-def test_the_end_state_follows_the_slider_and_its_furniture_stays_at_the_books_value(browser, live_player):
-    """The last step draws the figure as the book's plate draws it (class fin) at every value: its own marks (class
-    fo, with ids, swept as the rest) are shown while the slider is dragged.  The plate's furniture there (its
-    dimensions and lettering: L = 5 r) holds the built value's numbers: away from the book's value it is not shown,
-    and the page says so, and the figure broken across its rod says the rod's length at the break (L = 8 r) as the
-    other steps do; back at the book's value the furniture returns and writes it."""
+def test_the_end_state_follows_the_slider_with_its_furniture_and_the_rod_it_writes(browser, live_player):
+    """The last step draws the figure as the book's plate draws it (class fin) at every value of a drag: its own
+    marks (class fo) and the plate's furniture (the rod and the centre line it adds, its dimensions) each where a
+    fresh replay's page draws it, within 0.5 px, and the rod's dimension says the rod's length at that value."""
     c, _, path = live_player
     page, errors = _open(browser, path)
     page.keyboard.press("End")
     fin = "() => document.getElementById('figure').classList.contains('fin')"
-    shown = """sel => Array.from(document.querySelectorAll(sel)).filter(e => e.isConnected
-        && e.getClientRects().length > 0 && getComputedStyle(e).display !== 'none').length"""
-    own, furniture = "#figure [data-step] .fo[id]", "#furniture > g.fo.end *"
-    note = "() => { const n = document.querySelector('#live .live-end'); return !!n && !n.hidden; }"
-    at_book = page.evaluate(shown, own)
-    assert page.evaluate(fin) and at_book > 0 and page.evaluate(shown, furniture) > 0 and not page.evaluate(note)
-    # the rod's length: the plate's dimension at the book's value, the page's own at the break elsewhere
-    rod = "() => Array.from(document.querySelectorAll('#figure .rodlen')).filter(g => getComputedStyle(g).display !== 'none' && g.getClientRects().length).map(g => g.querySelector('text:last-of-type').textContent)"
-    assert page.evaluate(rod) == []
-    for v in (1.6, 8.0):
+    read = """() => Array.from(document.querySelectorAll('#furniture > g.fo.end > [id]')).map(e => [e.id,
+        ['x1', 'y1', 'x2', 'y2', 'cx', 'cy', 'r', 'd', 'x', 'y', 'transform'].map(a => e.getAttribute(a) || '').join(' '),
+        e.tagName === 'text' ? e.textContent : '', getComputedStyle(e).display])"""
+    assert page.evaluate(fin)
+    for v in (1.6, 3.3, 8.0, 23.0):
         _drag_to(page, "rod_ratio", v)
-        assert page.evaluate(fin) and page.evaluate(shown, own) == at_book, v
-        assert page.evaluate(shown, furniture) == 0 and page.evaluate(note), v
-        broken = any(e.get("class") == "brk" for e in _fresh_svg(c, {"parts": 3}, "rod_ratio", v).iter())
-        assert page.evaluate(rod) == ([f"L = {v:g} r".replace(".", ",")] if broken else []), v
-    _drag_to(page, "rod_ratio", 5.0)
-    assert page.evaluate(fin) and page.evaluate(shown, furniture) > 0 and not page.evaluate(note)
-    assert page.evaluate(rod) == []
+        assert page.evaluate(fin), v
+        got = page.evaluate(read)
+        root = _fresh_svg(c, {"parts": 3}, "rod_ratio", v)
+        want = {e.get("id"): e for e in root.iter() if (e.get("id") or "").startswith("fin-")}
+        assert got and [g[0] for g in got] == list(want), v
+        for ident, text, words, display in got:
+            e = want[ident]
+            assert display != "none", (v, ident)
+            nums = [float(x) for x in NUMBER.findall(text)]
+            fresh = _numbers(e, ("x1", "y1", "x2", "y2", "cx", "cy", "r", "d", "x", "y", "transform"))
+            assert len(nums) == len(fresh) and max(abs(a - b) for a, b in zip(nums, fresh)) <= 0.5, (v, ident)
+            if words.startswith("L ="):
+                assert words == f"L = {v:g} r".replace(".", ","), (v, words)
+            elif words:
+                assert words == "".join(e.itertext()), (v, ident, words)
     assert not errors, errors
     page.close()
 

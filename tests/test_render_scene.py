@@ -234,3 +234,19 @@ def test_whether_a_figure_breaks_is_what_breaking_it_gives(gallery_figure):
             seen[bool(cut)] += 1
             seen["across"] += any(b.axis == 1 for b in cut)
     assert seen[True] and seen[False] and seen["across"], seen  # every way a figure breaks, and does not, asked
+
+
+@pytest.mark.parametrize("ratio", [5.0, 50.0])
+def test_the_end_state_on_a_broken_sheet_draws_its_lines_to_the_figure_it_keeps(ratio):
+    """The crank's end state on a sheet broken across its long rod: the plate's lines (the ordinates of the piston
+    points, the axis) reach past the points marked on them by a share of what the sheet keeps -- not of the rod
+    broken out, which at L/r = 50 drew every ordinate 1.8 r past the crank circle.  The crank circle (r = 1)
+    spans [-1, 1] across the axis; a line drawn over it ends within 0.3 r of it, at every rod."""
+    c = get("crank")
+    scene = scene_for(c, c.figure(parts=18, rod_ratio=ratio), ending=True)
+    assert scene.breaks
+    lines = [m for m in scene.end_marks if m.kind is MarkKind.SEGMENT]
+    assert lines
+    for m in lines:
+        x1, y1, x2, y2 = m.geom
+        assert min(y1, y2) >= -1.3 and max(y1, y2) <= 1.3, (ratio, m.id, m.geom)

@@ -251,8 +251,9 @@ def frame_furniture(fig: Figure, crank_point: str | None = None, crosshead: str 
                     {"kind": "dot", "at": tuple(C)},
                     {"kind": "lettering", "at": (C[0], C[1] - 0.12 * r), "text": "C"},
                     {"kind": "stroke", "a": (C[0] - 0.15 * r, C[1]), "b": tuple(D0), "look": "centre"},
-                    {"kind": "dimension", "a": tuple(C), "b": tuple(P), "text": f"L = {number(ratio, 'de', 3)} r",
-                     "offset": 0.12 * r}]
+                    # (room for the longest it writes, "L = 1,234 r": one break in the line whatever the rod)
+                    {"kind": "dimension", "a": tuple(C), "b": tuple(P), "text": f"L = {number(ratio, 'de')} r",
+                     "offset": 0.12 * r, "room": 11}]
     return out
 
 

@@ -18,6 +18,8 @@ does not shrink its miss, instead of being refined down to :data:`MIN_CELL`.
 from __future__ import annotations
 
 import heapq
+import math
+from types import SimpleNamespace
 from typing import Any
 
 import numpy as np
@@ -25,15 +27,21 @@ import numpy as np
 from ..constructions import Construction
 from ..figure import Figure
 from ..render.camera import MAX_ZOOM, clip_view
+from ..render.end_state import NumbersFactory, end_furniture, furniture_numbers
 from ..render.output import scene_for
+from ..render.plate import plate_of, shifted, subscript_runs
 from ..render.player import player_html
 from ..render.scene import MarkKind, extreme_points, reading
+from ..render.sheet import break_shift
 from ..render.styles import STYLES
 from ..render.svg import Drawing, mark_geometry, mark_layer
 from ..render.svgdoc import fmt
 from ..render.sweepdraw import SweepDrawing, sweep_drawable
 from ..render.viewport import Viewport
 from ..render.wire import ARC, NUMBER, canonical_arc
+
+#: The end state's furniture drawn as numbers (:func:`~construct.render.end_state.furniture_numbers`).
+NUMBERS = NumbersFactory()
 
 __all__ = ["Measure", "player_page", "player_page_and_fit", "fit_of", "areas_of", "breaks_px"]
 
@@ -109,6 +117,16 @@ class Measure:
         #: the end state is mostly the plate's furniture (which the sweep does not carry: Tafel 2's ordinates and
         #: their values): the player shows it at the book's values only, the construction's marks elsewhere
         self.end_held = drawing.end is not None and len(scene.end_furniture) > len(scene.end_drawn())
+        #: the end state's view and letters' places: its furniture (the plate's) is drawn at every value as the
+        #: drawing draws it (:func:`~construct.render.end_state.end_furniture`), the letters' offsets the built ones
+        self.end, self.placing = drawing.end, drawing.placing
+        #: the end state's furniture as built (keys, numbers, texts); drawn at every value while
+        #: :attr:`furniture_live` (the sweep of a given over which it keeps its form: :meth:`furniture_keeps_form`),
+        #: held at these numbers else (the page shows it at the book's values alone)
+        self._built = built
+        self.held = self._furniture(scene.end_furniture, drawing.vp)
+        #: (None: not asked -- a value measured alone draws its own furniture, a sweep asks over its values)
+        self.furniture_live: bool | None = None
         # the marks' keys as this value's page has them: each mark's numbers are a run of them, the runs in the
         # page's order (a sweep draws each mark's numbers for every value at once, :meth:`frames`)
         self.keys, _, _, texts = self._measured(scene)  # (the drawing's scene is what __call__ would make)
@@ -125,6 +143,42 @@ class Measure:
         of = lambda m: m.name[:-3] if m.id.endswith("-at") and m.name.endswith(".at") else m.name  # noqa: E731
         self.readings = {f"{m.id}-label": readings[of(m)] for m in scene.marks if of(m) in readings and m.label}
         self.texts = {k: v for k, v in texts.items() if k not in self.readings}  # the same at every value
+
+    def _furniture(self, items: tuple, vp: Any, exact: bool = True) -> tuple[list, list[float], dict[str, str]]:
+        """The end state's furniture *items* (the plate's, on the sheet's broken axis) drawn on *vp* (anything with
+        ``px`` and ``scale``): its keys, numbers and texts (:func:`~construct.render.end_state.furniture_numbers`)."""
+        if self.end is None or not items:
+            return [], [], {}
+        sheet = SimpleNamespace(end_furniture=items)
+        return furniture_numbers(end_furniture(sheet, self.style, vp, self.end, self.placing, NUMBERS), exact=exact)
+
+    def furniture_keeps_form(self, protocol: Any, replay: Any, size: int) -> bool:
+        """Whether the end state's furniture has the built figure's elements (the same keys) at every value of the
+        sweep *replay* of *protocol* (a scale's ticks come and go with the diagram's height, a plate's letters
+        with its choices): only then is it swept (:attr:`furniture_live`); an element that comes and goes would
+        make the refinement split every cell about it, and each value there be drawn value by value."""
+        if not self.held[0]:
+            return True
+        # (its items' kinds and what of them is drawn: a value where they draw other elements all the same, a
+        # dimension turned level, is drawn value by value: frames)
+        built = _form(plate_of(self.construction, self._built).furniture)
+        for i in range(size):
+            p = plate_of(self.construction, Figure(protocol, replay.take(i), self.construction.check,
+                                                   self.construction))
+            if p.panels or _form(p.furniture) != built:
+                return False
+        return True
+
+    def _furniture_at(self, figure: Figure, at_once: Any, i: int) -> tuple[list, list[float], dict[str, str]]:
+        """:meth:`_furniture` at value *i* of a sweep drawn at once: the plate's furniture of *figure* (that value
+        of the sweep) on that value's broken axis and fit."""
+        p = plate_of(self.construction, figure)
+        if p.panels or not p.furniture:
+            return [], [], {}
+        breaks = at_once.breaks_at(i)
+        items = tuple(shifted(it, break_shift(breaks)) for it in p.furniture) if breaks else tuple(p.furniture)
+        # (its numbers unrounded: frames rounds every value's at once)
+        return self._furniture(items, SimpleNamespace(px=at_once.px_of(i), scale=float(at_once.fit[i][2])), exact=False)
 
     def _runs(self, keys: list[tuple[str, str, str]]) -> list[tuple[str, int]]:
         """Each mark's run of numbers among *keys*: (its id, how many)."""
@@ -193,11 +247,39 @@ class Measure:
                 at_once = SweepDrawing(template, protocol, replay, size, self.style)
             except ValueError:  # a mark of another kind than the built figure's: value by value
                 at_once = None
-        if at_once is not None and any(at_once.numbers.get(i, np.zeros((0, 0))).shape[1:] != (n,) for i, n in runs):
+        if at_once is not None and any(at_once.numbers.get(i, np.zeros((0, 0))).shape[1:] != (n,) for i, n in runs
+                                       if not i.startswith("fin-")):  # (the end state's furniture: below)
             at_once = None
         if at_once is None or not at_once.ok.any():
             return [self(Figure(protocol, replay.take(i, whole=True), self.construction.check, self.construction))
                     for i in range(size)]
+        # the end state's furniture: the plate's, value by value (a plate's furniture is a few dozen lines and
+        # letters read off a handful of points: 0.02 to 1.5 ms a value)
+        furniture = {i: 0 for i, _ in runs if i.startswith("fin-")}
+        fur_texts: list[dict[str, str]] = [{}] * size
+        live = self.furniture_live
+        if furniture and live is None:
+            live = self.furniture_keeps_form(protocol, replay, size)
+        if furniture and not live:  # (held at the built value's numbers)
+            table = np.tile(np.asarray(self.held[1], dtype=float), (size, 1))
+        elif furniture:
+            want = [k for k in keys if k[0] in furniture]
+            cols: list[list[float]] = []
+            for i in range(size):
+                fk, fn, ft = ([], [], {}) if not at_once.ok[i] else self._furniture_at(
+                    Figure(protocol, replay.take(i), self.construction.check, self.construction), at_once, i)
+                if fk != want:  # (another form of the furniture there: value by value)
+                    at_once.ok[i] = False
+                    fn = [math.nan] * sum(k[2].count("#") for k in want)
+                cols.append(fn)
+                fur_texts[i] = ft
+            table = np.round(np.asarray(cols, dtype=float), 2) + 0.0  # (as the writer writes them: within 0.01)
+        if furniture:
+            at = 0
+            for ident, count in runs:
+                if ident in furniture:
+                    at_once.numbers[ident] = table[:, at:at + count]
+                    at += count
         rows = np.hstack([at_once.numbers[i] for i, _ in runs])
         width, height = (np.round(v, 2) for v in at_once.size)
         px = at_once.page_px
@@ -238,10 +320,10 @@ class Measure:
                 out.append(self(Figure(protocol, replay.take(i, whole=True), self.construction.check,
                                        self.construction)))
                 continue
-            texts = self.texts
+            texts = {**self.texts, **fur_texts[i]} if fur_texts[i] else self.texts
             if self.readings:
                 taken = replay.take(i)
-                texts = {**self.texts, **{k: reading(label, taken) for k, label in self.readings.items()}}
+                texts = {**texts, **{k: reading(label, taken) for k, label in self.readings.items()}}
             # (the row as an array: the sweep reads every value's numbers as one; a list of floats would be
             # made and read back per value)
             out.append((keys, table[i], fits[i], texts))
@@ -302,6 +384,10 @@ class Measure:
         for lk, ln in layers.values():
             keys += lk
             nums += ln
+        fk, fn, ft = self._furniture(scene.end_furniture, vp) if self.furniture_live is not False else self.held
+        keys += fk
+        nums += fn
+        texts.update(ft)
         boxes = self._boxes(scene, vp)
         carried = [self._carried(j, box, full) for j, box in enumerate(boxes)] + [list(full)]  # [-1]: the whole
         for i, j in enumerate(self.view_of):
@@ -317,6 +403,14 @@ class Measure:
             keys.append(("#break", str(axis), "# #"))
             nums += breaks_px(scene.breaks, axis, fit_of(vp))
         return keys, nums, fit_of(vp), texts
+
+
+def _form(items: Any) -> tuple:
+    """The form of a plate's furniture: each item's kind and what of it is drawn (its text's runs, an upright
+    text beside a dimension, a break, a turned text, a leader)."""
+    return tuple((type(it).__name__, len(subscript_runs(t)) if (t := getattr(it, "text", "")) else 0,
+                  getattr(it, "text_at", None) is None, getattr(it, "broken", False), bool(getattr(it, "angle", 0)),
+                  getattr(it, "to", None) is None) for it in items)
 
 
 def areas_of(protocol: Any, scene: Any) -> list[list[str]]:

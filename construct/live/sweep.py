@@ -33,6 +33,7 @@ from __future__ import annotations
 import collections
 import functools
 import math
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -404,8 +405,9 @@ class LiveSweep:
     checks: dict[int, list[list[Any]]] = field(default_factory=dict)
     #: Elements whose geometry is not interpolated (their form changes across the domain): shown at the built value.
     fixed: list[str] = field(default_factory=list)
-    #: Letters whose text changes with the given (readings of the figure, e.g. the angle AOW): shown at the
-    #: built value only.
+    #: Letters whose text changes with the given (readings of the figure, e.g. the angle AOW, a dimension's
+    #: value): written as at the nearer grid value (:attr:`reading_texts`; a blend of two would print minutes
+    #: the figure does not have).
     readings: list[str] = field(default_factory=list)
     #: Marks drawn from the nearer grid value (they jump inside the domain: an arc drawn the other way round).
     snapped: list[tuple[str, str, str]] = field(default_factory=list)
@@ -428,6 +430,12 @@ class LiveSweep:
     #: The end state is shown at the book's values only (its furniture, which the sweep does not carry, is most of
     #: it: :attr:`construct.live.Measure.end_held`); the last step shows the construction's marks elsewhere.
     end_held: bool = False
+    #: The end state's furniture (the plate's dimensions, scales, lettering and added lines) is held at the book's
+    #: value over this sweep (its form changes across the domain: :meth:`construct.live.Measure.furniture_keeps_form`);
+    #: it follows the given else.
+    furniture_held: bool = False
+    #: The texts of :attr:`readings` at every grid value (the page writes the nearer grid value's).
+    reading_texts: dict[str, list[str]] = field(default_factory=dict)
     #: Givens that follow from this one and that the texts write (DERIVED_WRITTEN): name -> value at each grid
     #: value (a step function, the two cranks' magnification: the page writes the nearer grid value's).
     derived: dict[str, list[float]] = field(default_factory=dict)
@@ -469,6 +477,16 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
         protocol = piece.protocol
     measure = measure or Measure(construction, figure, style, drawing=drawing)
     lo, hi = math.log10(domain.low), math.log10(domain.high)
+    # the end state's furniture follows the given where it keeps its form over the domain (asked at FORM_SCAN
+    # values, as the steps' form is: :func:`pieces`), else it is held at the book's value -- as it is where the
+    # whole end state is (end_held: the page shows the construction's marks there away from the book's values)
+    # (a piece of the domain its share of them)
+    share = (hi - lo) / math.log10(whole.high / whole.low)
+    scan = np.unique(np.clip(10.0 ** np.append(np.linspace(lo, hi, max(3, round(FORM_SCAN * share))),
+                                               math.log10(initial)), domain.low, domain.high))
+    measure.furniture_live = not measure.end_held and (not measure.held[0] or measure.furniture_keeps_form(
+        protocol, protocol.replay(construction.given_sweep(dict(figure.replay.givens), given, scan, protocol.params)),
+        len(scan)))
     us = list(np.linspace(lo, hi, start))
     values = lambda u: np.clip(10.0 ** np.asarray(u), domain.low, domain.high)  # noqa: E731
     # each value's numbers as one array, made once (every cell it bounds reads them)
@@ -552,7 +570,10 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     # and minutes); a blend of two grid values' readings would print minutes the figure does not have
     idents = set().union(*(data[u][3] for u in us))
     # (a letter left out at some values -- no room there -- is not one of them)
-    varying = sorted(i for i in idents if len({data[u][3][i] for u in us if i in data[u][3]}) > 1)
+    # (the rod's length the plate's furniture writes, a dimension "L = 5 r", is no reading: the page writes it)
+    rod = re.compile(re.escape(live.rod).replace(re.escape("{v}"), r"[0-9.,]+") + "$") if live.rod else None
+    varying = sorted(i for i in idents if len(said := {data[u][3][i] for u in us if i in data[u][3]}) > 1
+                     and not (rod and all(rod.match(t) for t in said)))
     first = data[us[0]][0]
     snapped = [k for i, k in enumerate(first) if i in snap and k in shared]
     grid = values(us)
@@ -561,6 +582,8 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
                      # the fit travels as float32: the columns are checked against the drawing through it
                      fit=np.asarray([data[u][2] for u in us], dtype=np.float32).astype(float),
                      label_px=float(style.label_size), live=live, areas=measure.areas, end_held=measure.end_held,
+                     furniture_held=not measure.furniture_live and not measure.end_held and bool(measure.held[0]),
+                     reading_texts={i: [data[u][3].get(i, "") for u in us] for i in varying},
                      whole=whole if piece is not None else None)
     swept = construction.given_sweep(dict(figure.replay.givens), given, grid, protocol.params)
     live.derived = {k: np.broadcast_to(swept[k], grid.shape).astype(float).tolist() for k in DERIVED_WRITTEN

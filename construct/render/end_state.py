@@ -33,11 +33,11 @@ from .placing import Placing
 from .plate import Lettering, Stroke, extent, furniture_elements, plain, text_elements
 from .scene import Scene, extreme_points
 from .styles import Style
-from .svgdoc import Writer, fmt
+from .svgdoc import Element, Writer, fmt
 from .viewport import Viewport
 
 __all__ = ["EndView", "END_MARGIN_PX", "lay_out_end", "end_fixed", "end_lettering", "end_furniture", "end_sheet",
-           "own_strokes", "wrapped"]
+           "own_strokes", "wrapped", "NumbersFactory", "furniture_numbers"]
 
 #: The margin round the end state's drawing on its sheet (screen px at the end view).
 END_MARGIN_PX = 14.0
@@ -209,9 +209,17 @@ def lay_out_end(scene: Scene, style: Style, vp: Viewport, placing: Placing, view
 def end_furniture(scene: Scene, style: Style, vp: Viewport, end: EndView, placing: Placing, factory: Any) -> Any:
     """The plate's furniture in the end state (``<g class="fo end">``), its letters at the size of the end
     state's, its lettering where the end state's placing set it (upright; tied to its place by a leader when
-    set off)."""
+    set off).  Each of its elements has an id in the order drawn (``fin-s<k>``: the line of a stroke the plate
+    adds, which a broken axis breaks; ``fin-f<k>`` the rest): the live page moves them with the given
+    (:func:`furniture_numbers`)."""
     f = factory
-    g = wrapped(f.g(class_="fo end"), furniture_elements(end_fixed(scene), vp.px, vp.scale, f, size=end.size))
+    g = f.g(class_="fo end")
+    k = 0
+    for it in end_fixed(scene):
+        for j, e in enumerate(furniture_elements([it], vp.px, vp.scale, f, size=end.size)):
+            e["id"] = f"fin-{'s' if j == 0 and isinstance(it, Stroke) else 'f'}{k}"
+            k += 1
+            g.add(e)
     ls = end.letter
     for (fid, (px, py), text), it in zip(end_lettering(scene, vp, style, end.size),
                                         [it for it in scene.end_furniture if isinstance(it, Lettering)]):
@@ -222,11 +230,100 @@ def end_furniture(scene: Scene, style: Style, vp: Viewport, end: EndView, placin
         if rel[2] >= LEADER_FROM:
             x1, y1, x2, y2 = placing.leader_line(rel[0], rel[1], text)
             g.add(f.line(start=(fmt(px + ls * x1), fmt(py + ls * y1)), end=(fmt(px + ls * x2), fmt(py + ls * y2)),
-                         class_="fur thin"))
+                         class_="fur thin", id=f"fin-f{k}"))
+            k += 1
         # (its index set below the line as the plate sets it: P_b, F·p_ü)
         for el in text_elements(f, (x, y - 0.35 * end.size * it.size), it.text, end.size, rel=it.size):
+            el["id"] = f"fin-f{k}"
+            k += 1
             g.add(el)
     return g
+
+
+class _Text(Element):
+    """A text element as :class:`NumbersFactory` records it: its attributes and its text."""
+
+    __slots__ = ("text",)
+
+
+class NumbersFactory:
+    """Takes the place of the SVG writer's element factory where only the elements' numbers and texts are wanted
+    (:func:`furniture_numbers`: the live sweep's end state, value by value): each element a plain
+    :class:`~construct.render.svgdoc.Element` with the attributes the writer writes, its numbers as they are
+    (``raw``: :mod:`construct.render.plate` hands them over unwritten; :func:`furniture_numbers` rounds them as
+    the writer writes them, two decimals)."""
+
+    raw = True
+
+    def g(self, **kw: Any) -> Element:
+        return Element("g", **kw)
+
+    def line(self, start: tuple, end: tuple, **kw: Any) -> Element:
+        return Element("line", x1=start[0], y1=start[1], x2=end[0], y2=end[1], **kw)
+
+    def circle(self, center: tuple, r: Any, **kw: Any) -> Element:
+        return Element("circle", cx=center[0], cy=center[1], r=r, **kw)
+
+    def path(self, **kw: Any) -> Element:
+        return Element("path", **kw)
+
+    def text(self, text: str, **kw: Any) -> _Text:
+        e = _Text("text", **kw)
+        e.text = text
+        return e
+
+    tspan = text
+
+
+#: The attributes of the end state's furniture that carry its numbers, in the order the live data keys them.
+_NUMBERED = ("x1", "y1", "x2", "y2", "cx", "cy", "r", "x", "y", "d", "transform")
+_NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
+
+
+def furniture_numbers(group: Element, *, exact: bool = True) -> tuple[list[tuple[str, str, str]], list[float],
+                                                                      dict[str, str]]:
+    """The numbers of the end state's furniture as :func:`end_furniture` drew it with a :class:`NumbersFactory`:
+    (keys (id, attribute, its text with each number a ``#``), the numbers, {id: text} of its letterings), in the
+    live data's form (:mod:`construct.live.measure`).  *exact* False: the numbers handed over as they are left
+    unrounded (a sweep rounds all its values' at once).
+
+    >>> f = NumbersFactory()
+    >>> g = f.g(); e = g.add(f.line(start=("1", "2"), end=("3", "4.5"), id="fin-s0"))
+    >>> t = g.add(f.text("L = 5 r", x=["7"], y=["8"], transform="rotate(-20 7 8)", id="fin-f1"))
+    >>> furniture_numbers(g)
+    ([('fin-s0', 'x1', '#'), ('fin-s0', 'y1', '#'), ('fin-s0', 'x2', '#'), ('fin-s0', 'y2', '#'), ('fin-f1', 'x', '#'), ('fin-f1', 'y', '#'), ('fin-f1', 'transform', 'rotate(# # #)')], [1.0, 2.0, 3.0, 4.5, 7.0, 8.0, -20.0, 7.0, 8.0], {'fin-f1': 'L = 5 r'})
+    """
+    keys, nums, texts = [], [], {}
+    r2 = (lambda v: round(v, 2) + 0.0) if exact else (lambda v: v)  # noqa: E731
+    for e in group.elements:
+        ident = e.attribs.get("id")
+        if ident is None:
+            continue
+        for a in _NUMBERED:
+            v = e.attribs.get(a)
+            if v is None:
+                continue
+            if isinstance(v, list) and len(v) == 1:  # (x=[...], as the writer takes it)
+                v = v[0]
+            if isinstance(v, float):  # a number as it is: written with two decimals
+                keys.append((ident, a, "#"))
+                nums.append(r2(v))
+                continue
+            if isinstance(v, tuple) and v and v[0] == "poly":  # a path's points (plate._poly)
+                keys.append((ident, a, "M" + "L".join(["# #"] * len(v[1])) + ("Z" if v[2] else "")))
+                nums.extend(r2(c) for p in v[1] for c in p)
+                continue
+            if isinstance(v, tuple) and v and v[0] == "rotate":  # a turned text (plate._text)
+                keys.append((ident, a, "rotate(# # #)"))
+                nums.extend(r2(c) for c in v[1:])
+                continue
+            v = " ".join(map(str, v)) if isinstance(v, (list, tuple)) else str(v)
+            ns = _NUMBER.findall(v)
+            keys.append((ident, a, _NUMBER.sub("#", v)))
+            nums.extend(float(x) for x in ns)
+        if isinstance(e, _Text):
+            texts[ident] = e.text + "".join(getattr(t, "text", "") for t in e.elements)
+    return keys, nums, texts
 
 
 def end_sheet(doc: Writer, end: EndView, scene: Scene, style: Style, css: str, body: Sequence[Any],

@@ -33,10 +33,12 @@ to lie on one another: the later gives way (``declutter``) until there is
 room again.  Nothing waits for the slider to be let go (``change``), which
 only sets the letters' exact scale and glides the camera to the step's
 view.  The end state (the last step drawn as the book's plate) follows too: its own
-marks are swept as the rest (:meth:`construct.render.sweepdraw.SweepDrawing`).  Three things hold the built
-value's numbers and are shown at the book's values alone: an area's hatching (its outline follows), the plate's
-furniture in the end state (its dimensions, lettering and added lines: the page says so) and the inset (a
-sliver's place magnified beside the view).
+marks are swept as the rest (:meth:`construct.render.sweepdraw.SweepDrawing`), and the plate's furniture there
+(its dimensions, lettering and added lines) where it keeps its form over the domain
+(:meth:`construct.live.Measure.furniture_keeps_form`; elsewhere it is shown at the book's values alone and the
+page says so).  Readings of the figure (an angle to the minute) are written as read at the nearer grid value.
+Two things hold the built value's numbers and are shown at the book's values alone: an area's hatching (its
+outline follows) and the inset (a sliver's place magnified beside the view).
 
 The script exposes ``window.constructLive``: ``set(value)`` moves the first
 given (``set(value, true)``: as a drag draws it; ``set(value, dragging,
@@ -117,8 +119,9 @@ def with_live(page: str, data: Mapping[str, Any] | Sequence[Mapping[str, Any]], 
                 + f'<div class="live-held" style="{_NOTE}">{held}</div>'
                 # a reading (an angle read off the figure, to the minute) blended between grid values would
                 # print minutes the figure does not have
-                + (f'<div class="live-readings" style="{_NOTE}">Abgelesene Werte (Winkel) stehen nur beim Buchwert. / '
-                   'Values read off the figure (angles) are shown at the book’s value only.</div>'
+                + (f'<div class="live-readings" style="{_NOTE}">Abgelesene Werte (Winkel) sind beim nächsten '
+                   'gespeicherten Wert abgelesen. / Values read off the figure (angles) are as read at the nearest '
+                   'value the page holds.</div>'
                    if any(d.get("readings") for d in givens) else '')
                 + '<details open><summary>Prüfungen / checks <span id="live-at"></span></summary>'
                 '<div style="max-height:28vh;overflow:auto"><table id="live-checks" style="border-collapse:collapse;'
@@ -382,7 +385,7 @@ LIVE_SCRIPT = r"""
     }
   }
   // ---- the broken axes: their marks on every line that crosses them (render/plate.py break_elements) ----------
-  var SIZE = LIST[0].label_px || 12, NS = "http://www.w3.org/2000/svg", marksOf = new Map(), rodLabels = [], rodSpots = [];
+  var SIZE = LIST[0].label_px || 12, NS = "http://www.w3.org/2000/svg", marksOf = new Map(), rodLabels = [], rodSpots = [], rodTexts = [];
   var TWO = /^M(-?[0-9.]+) (-?[0-9.]+)L(-?[0-9.]+) (-?[0-9.]+)$/;
   function mk(tag, cls, parent){ var e = document.createElementNS(NS, tag); e.setAttribute("class", cls); parent.appendChild(e); return e; }
   var ENDS = ["x1", "y1", "x2", "y2"];
@@ -414,7 +417,9 @@ LIVE_SCRIPT = r"""
         if (!set) {  // beside its line: shown and faded with the line's step
           var g = document.createElementNS(NS, "g");
           // (an end state's own line's marks in the end state alone, a line it leaves out's not there: fo, nf)
-          g.setAttribute("class", "brkg" + (ln.classList.contains("fo") ? " fo" : ln.classList.contains("nf") ? " nf" : ""));
+          // (and a straight line drawn point to point, the rod lettered L: the end state breaks the plate's own
+          // rod over it, render/svg.py furniture_group)
+          g.setAttribute("class", "brkg" + (ln.closest(".fo") ? " fo" : ln.classList.contains("nf") || (endAt && ln.tagName === "path") ? " nf" : ""));
           ln.parentNode.insertBefore(g, ln.nextSibling);
           set = got[axis] = {g: g, gap: mk("path", "brk", g), t: [mk("line", "brkline", g), mk("line", "brkline", g)], key: ""};
           marksOf.set(ln, got);
@@ -440,7 +445,8 @@ LIVE_SCRIPT = r"""
     for (axis = 0; axis < 2; axis++) {
       var lab = rodLabels[axis], at = first[axis];
       // (in the end state at the book's values the plate's own furniture writes it, a dimension L = 5 r)
-      var inPlate = endWritesRod && svg.classList.contains("fin") && Math.abs(Math.log10(valueOf(rod.L.given) / rod.L.initial)) < 1e-9;
+      // (and at every value where that furniture follows the given)
+      var inPlate = endWritesRod && svg.classList.contains("fin") && (!S.L.furniture_held || Math.abs(Math.log10(S.value / S.L.initial)) < 1e-9);
       // (its display in its style too: the end state's rule for its letters, .fin .lbg.pf, outranks the attribute)
       if (!rod || !at || inPlate) { if (lab) { lab.g.setAttribute("display", "none"); lab.g.style.display = "none"; } continue; }
       if (!lab) {
@@ -457,6 +463,7 @@ LIVE_SCRIPT = r"""
       var said = rod.L.rod.replace("{v}", book(rod.value));
       setText(lab.halo, said); setText(lab.text, said);
     }
+    if (rod) for (var ri = 0; ri < rodTexts.length; ri++) setText(rodTexts[ri], rod.L.rod.replace("{v}", book(valueOf(rod.L.given))));
   }
   // ---- areas between two graphs: drawn anew from the graphs that bound them (kernel/areas.py area_between) ----
   var areas = [];
@@ -610,7 +617,7 @@ LIVE_SCRIPT = r"""
   // state shows it (reveal), and is drawn then, before the frame.  Which are hidden is asked again then.
   var unseen = new Set(), seenKey = null, marked = null;
   function seeing(){  // the marks and letters hidden now, asked again when what hides them may have changed
-    var key = svg.getAttribute("class") + "|" + svg.getAttribute("data-step") + "|" + readingsShown;
+    var key = svg.getAttribute("class") + "|" + svg.getAttribute("data-step") + "|" + furnitureOn;
     if (key === seenKey) return false;
     seenKey = key;
     unseen = new Set();
@@ -735,17 +742,20 @@ LIVE_SCRIPT = r"""
         if (!player && !svg.classList.contains("zoomed")) svg.setAttribute("viewBox", S.full.text);
       }
     }
-    // the end state (the last step drawn as the book's plate) at every value: its own marks are swept as the
-    // rest; the plate's furniture (dimensions, lettering, the lines it adds) holds the built value's numbers and
-    // is shown at the book's values alone, and the page says so
+    // (the end state, the last step drawn as the book's plate, follows as the rest: its own marks and the plate's
+    // furniture there are swept; what the furniture writes that is read off the figure is a reading, below)
     var atBook = Math.abs(Math.log10(value) - Math.log10(S.L.initial)) < 1e-9;  // (the other givens are there)
-    for (var fi = 0; fi < endFurniture.length; fi++) {
-      var fs = atBook ? "" : "none"; if (endFurniture[fi].style.display !== fs) endFurniture[fi].style.display = fs;
-    }
     // (an end state that is mostly the plate's furniture, live/measure.py end_held: at the book's values alone, the
     // construction's marks elsewhere)
     if (player && endAt) player.data.end = atBook || !S.L.end_held ? endAt : 0;
-    if (endNote && endNote.hidden !== atBook) endNote.hidden = atBook;
+    // (the plate's furniture there follows the given, unless its form changes over the domain: live/measure.py
+    // furniture_keeps_form; then it is shown at the book's values alone, and the page says so)
+    var furnitureShown = furnitureOn = atBook || !S.L.furniture_held;
+    for (var fi = 0; fi < endFurniture.length; fi++) {
+      var fs = furnitureShown ? "" : "none"; if (endFurniture[fi].style.display !== fs) endFurniture[fi].style.display = fs;
+    }
+    var noted = atBook || !(S.L.end_held || S.L.furniture_held);
+    if (endNote && endNote.hidden !== noted) endNote.hidden = noted;
     for (var hi = 0; hi < hatches.length; hi++) {
       var hs = atBook ? "" : "none"; if (hatches[hi].style.display !== hs) hatches[hi].style.display = hs;
     }
@@ -755,15 +765,18 @@ LIVE_SCRIPT = r"""
     if (inset && !atBook && inset.style.display !== "none") {
       inset.style.display = "none"; document.getElementById("insetbox").setAttribute("visibility", "hidden"); insetHidden = true;
     } else if (atBook && insetHidden && player) { insetHidden = false; player.redraw(); }
-    // readings of the figure (an angle to the minute): true at the book's values only
-    readingsShown = atBook;
-    for (var j = 0; j < readings.length; j++) { var shown = atBook ? "" : "none"; if (readings[j].style.display !== shown) readings[j].style.display = shown; }
     // the view first (the player reads the figure's size there: nothing written yet, no layout forced)
     if (player) view(!glide, dragging);
     seeing();  // (a new zoom level or end state: which marks are hidden)
     drawMarks();
     drawAreas();
     breakMarks();
+    // readings of the figure (an angle to the minute, a dimension's value): as read at the nearer grid value
+    var near = ct[1] < 0.5 ? ct[0] : Math.min(ct[0] + 1, S.L.rows - 1);
+    for (var j = 0; j < readings.length; j++) {
+      var rd = readings[j], said = rd.L === S.L ? rd.texts[near] : rd.L.given !== S.L.given ? rd.built : null;
+      if (said) for (var rj = 0; rj < rd.els.length; rj++) setText(rd.els[rj], said);
+    }
     declutter();
     api.value = value; api.given = S.L.given;
     var said = book(value);
@@ -915,29 +928,31 @@ LIVE_SCRIPT = r"""
     var W = new Sweep(L);
     return inflate(L.meta_z).then(function(b){
       var m = json(b);
-      L.grid = m.grid; L.keys = m.keys; L.flags = m.flags; L.jumps = m.jumps;
+      L.grid = m.grid; L.keys = m.keys; L.flags = m.flags; L.jumps = m.jumps; L.reading_texts = m.readings || {};
       return L.checks_z ? inflate(L.checks_z) : null;
     }).then(function(b){
       if (b) { var c = json(b); L.check_names = c.check_names; L.check_values = c.check_values; L.checks = c.checks; }
       return inflate(L.data);
     }).then(function(buf){ W.buf = buf; return W; });
   }
-  var endNote = null, insetHidden = false, hatches = [], endFurniture = [], endWritesRod = false, endAt = 0, readingsShown = true;
+  var endNote = null, insetHidden = false, hatches = [], endWritesRod = false, endAt = 0, endFurniture = [], furnitureOn = true;
   api.ready = Promise.all(LIST.map(load)).then(function(ws){
     player = window.constructPlayer;
     endAt = player ? player.data.end : 0;
     endFurniture = Array.prototype.slice.call(svg.querySelectorAll("#furniture > g.fo"));
     svg.querySelectorAll("#furniture g.fo.end text").forEach(function(t){ if (/^L\s*=\s*[0-9]/.test(t.textContent)) endWritesRod = true; });
-    if (player && player.data.end && endFurniture.length) {
+    var held = LIST.filter(function(L){ return L.end_held || L.furniture_held; });
+    if (player && player.data.end && held.length) {
       endNote = document.createElement("div");
       endNote.className = "live-end"; endNote.hidden = true; endNote.setAttribute("style", "color:#777;font-size:12px");
-      endNote.textContent = LIST[0].end_held ?
+      endNote.textContent = held[0].end_held ?
         "Der letzte Schritt zeigt das Bild der Tafel beim Buchwert; hier alle Linien der Konstruktion. / The last step " +
         "shows the plate’s look at the book’s value; here every line of the construction." :
-        "Der letzte Schritt zeigt die Figur der Tafel bei jedem Wert; ihre Maße und Beschriftung nur beim Buchwert. / " +
-        "The last step shows the plate’s figure at every value; its dimensions and lettering at the book’s value only.";
-      var held = document.querySelector("#live .live-held");
-      if (held) held.parentNode.insertBefore(endNote, held.nextSibling);
+        "Der letzte Schritt zeigt Maße, Skala und Beschriftung der Tafel nur beim Buchwert von " + held[0].symbol +
+        " (ihre Form ändert sich mit ihm). / The last step shows the plate’s dimensions, scale and lettering at the " +
+        "book’s value of " + held[0].symbol + " only (their form changes with it).";
+      var before = document.querySelector("#live .live-held");
+      if (before) before.parentNode.insertBefore(endNote, before.nextSibling);
     }
     if (player) {  // each step's view (the camera's, or the magnified box) gets a box of its own, moved with the given
       VIEWS = player.data.views ? "views" : "zooms"; IDX = player.data.views ? "v" : "z";
@@ -953,8 +968,9 @@ LIVE_SCRIPT = r"""
     followers.forEach(function(fo){ (followersIn.get(fo.grp) || followersIn.set(fo.grp, []).get(fo.grp)).push(fo); });
     // the lines a break can cross (the marks', not the letters' leaders; a straight line from point to point,
     // the rod lettered L, too)
+    // and the lines the plate adds in the end state, its strokes (render/end_state.py end_furniture: fin-s<k>)
     svg.querySelectorAll("line[id], path[id]").forEach(function(l){
-      if (!l.closest("g.lbg") && !l.closest("#furniture") && (l.tagName === "line" || TWO.test(l.getAttribute("d")))) lines.push(l); });
+      if (!l.closest("g.lbg") && (!l.closest("#furniture") || /^fin-s/.test(l.id)) && (l.tagName === "line" || TWO.test(l.getAttribute("d")))) lines.push(l); });
     // the areas: their pieces and the marks they are drawn from
     (LIST[0].areas || []).forEach(function(a){
       var find = function(id){ return player && player.find ? player.find(id) : document.getElementById(id); };
@@ -971,11 +987,17 @@ LIVE_SCRIPT = r"""
       var r = g.getAttribute("data-rod").split(" ");
       if (!rodSpots[+r[0]]) rodSpots[+r[0]] = [+r[1], +r[2], r[3]]; });
     svg.querySelectorAll("#furniture .brk, #furniture .brkline, #furniture .rodlen").forEach(function(e){ e.parentNode.removeChild(e); });
-    LIST.map(function(L){ return L.readings || []; }).reduce(function(a, b){ return a.concat(b); }, [])
-      .filter(function(id, i, all){ return all.indexOf(id) === i; }).forEach(function(id){
-      var t = document.getElementById(id);
-      if (t) readings.push(t.closest("g.lbg") || t);
-    });
+    // (each reading's texts: its letter's, and its halo's in its group; a text of runs, P_b, keeps its runs)
+    LIST.forEach(function(L){ (L.readings || []).forEach(function(id){
+      var t = player && player.find ? player.find(id) : document.getElementById(id), g = t && t.closest("g.lbg");
+      var els = (g ? Array.prototype.slice.call(g.querySelectorAll("text")) : t ? [t] : [])
+        .filter(function(e){ return !e.firstElementChild; });
+      if (els.length) readings.push({L: L, els: els, texts: L.reading_texts[id] || [], built: t.textContent});
+    }); });
+    // the rod's length the plate's furniture writes in the end state (a dimension "L = 5 r"): written anew
+    var rodL = LIST.filter(function(L){ return L.rod; })[0];
+    if (rodL) svg.querySelectorAll("#furniture text[id]").forEach(function(t){
+      if (t.textContent === rodL.rod.replace("{v}", book(rodL.initial))) rodTexts.push(t); });
     // the groups the step hides leave the document (a new letter scale restyles them all the same)
     if (player && player.lean) player.lean();
     cur = {r0: 0, r1: 0, t: 0};

@@ -82,7 +82,9 @@ class Dimension:
     """A dimension line from *a* to *b* with arrowheads, set off by *offset* (drawing units, + = left of a->b).
 
     The text stands on the line, which is broken for it; or, for a short dimension (a thickness), upright
-    at *text_at* beside the whole line.
+    at *text_at* beside the whole line.  *room*: the characters the break in the line leaves room for (its
+    text's, if 0): a text that changes with a given (the rod's length, L = 3,5 r) keeps one break as the given
+    moves.
     """
 
     a: XY
@@ -90,6 +92,7 @@ class Dimension:
     text: str
     offset: float = 0.0
     text_at: XY | None = None
+    room: int = 0
 
 
 @dataclass(frozen=True)
@@ -383,12 +386,16 @@ def break_elements(breaks: Sequence[tuple], lines: Sequence[tuple[float, float, 
 def _line(f: Any, a: XY, b: XY, cls: str = "fur") -> Any:
     if isinstance(f, _Pieces):
         return Piece("line", (a, b), cls)
+    if getattr(f, "raw", False):  # (a factory that takes the numbers as they are: the live sweep's)
+        return f.line(start=a, end=b, class_=cls)
     return f.line(start=(_f(a[0]), _f(a[1])), end=(_f(b[0]), _f(b[1])), class_=cls)
 
 
 def _poly(f: Any, pts: Sequence[XY], cls: str, close: bool = False) -> Any:
     if isinstance(f, _Pieces):
         return Piece("poly", tuple(pts), cls, closed=close)
+    if getattr(f, "raw", False):
+        return f.path(d=("poly", tuple(pts), close), class_=cls)
     return f.path(d="M" + "L".join(f"{_f(x)} {_f(y)}" for x, y in pts) + ("Z" if close else ""), class_=cls)
 
 
@@ -406,9 +413,12 @@ def _text(f: Any, at: XY, text: str, size: float, anchor: str = "middle", angle:
           rel: float = 1.0) -> list[Any]:
     if isinstance(f, _Pieces):  # its halo is the writer's (a TikZ node's white ground)
         return [Piece("text", (at,), "lb fur-text", text, anchor, angle, rel)]
-    attrs: dict[str, Any] = {"x": [_f(at[0])], "y": [_f(at[1] + 0.35 * size * rel)]}
+    raw = getattr(f, "raw", False)
+    attrs: dict[str, Any] = {"x": [at[0] if raw else _f(at[0])],
+                             "y": [at[1] + 0.35 * size * rel if raw else _f(at[1] + 0.35 * size * rel)]}
     if angle:
-        attrs["transform"] = f"rotate({_f(-angle)} {_f(at[0])} {_f(at[1])})"
+        attrs["transform"] = ("rotate", -angle, at[0], at[1]) if raw else \
+            f"rotate({_f(-angle)} {_f(at[0])} {_f(at[1])})"
     # in the style attribute: the style sheet's .lb{text-anchor:middle} overrides a presentation attribute
     # (a browser set the scale's numbers centred on their ticks; cairosvg did not)
     own = ([f"font-size:{_f(size * rel)}px"] if rel != 1.0 else []) + ([f"text-anchor:{anchor}"] if anchor != "middle" else [])
@@ -483,7 +493,7 @@ def _item(it: Any, px: Callable[[float, float], XY], scale: float, size: float, 
                 f, px(*it.text_at), it.text, size)
         # the dimension line stops either side of its text, as a draftsman leaves room for the figure
         length = math.hypot(b2[0] - a2[0], b2[1] - a2[1]) or 1.0
-        gap = min(0.5 * length - 1.0, 0.33 * size * len(it.text) + 0.4 * size)
+        gap = min(0.5 * length - 1.0, 0.33 * size * (it.room or len(it.text)) + 0.4 * size)
         ux, uy = (b2[0] - a2[0]) / length, (b2[1] - a2[1]) / length
         out += [_line(f, a2, (mid[0] - gap * ux, mid[1] - gap * uy), "fur"),
                 _line(f, (mid[0] + gap * ux, mid[1] + gap * uy), b2, "fur"),
@@ -550,5 +560,7 @@ def _item(it: Any, px: Callable[[float, float], XY], scale: float, size: float, 
         x, y = px(*it.at)
         if isinstance(f, _Pieces):
             return [Piece("dot", ((x, y),), "arrow", size=0.22 * size)]
+        if getattr(f, "raw", False):
+            return [f.circle(center=(x, y), r=0.22 * size, class_="arrow")]
         return [f.circle(center=(_f(x), _f(y)), r=_f(0.22 * size), class_="arrow")]
     return []

@@ -396,7 +396,7 @@ MARGIN = 0.035
 def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: bool = False,
                 break_axis: bool = True, furniture: tuple = (), looks: "dict[str, str] | None" = None,
                 panels: tuple = (), ending: bool = False, end_furniture: tuple = (),
-                end_looks: "dict[str, str] | None" = None, _warn: bool = True) -> Scene:
+                end_looks: "dict[str, str] | None" = None, _warn: bool = True, _margin: float | None = None) -> Scene:
     """The marks of a built or replayed figure (anything with ``.protocol`` and ``.replay``).
 
     With *plate* the scene is what a book plate shows (:func:`plate_names`):
@@ -409,7 +409,8 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
 
     With *ending* the scene carries its end state (:meth:`Scene.in_end`): what the plate shows, drawn as
     the plate draws it (*end_looks*: the plate's looks), with the plate's furniture *end_furniture*, on the
-    scene's own sheet (its broken axis).
+    scene's own sheet (its broken axis).  *_margin*: the most its lines reach past their points (the end state's
+    plate on a broken sheet: a share of what the sheet keeps of it).
     """
     protocol: Protocol = figure.protocol
     objects: Replay = figure.replay
@@ -423,7 +424,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
     if not xs:
         xs, ys = [0.0, 1.0], [0.0, 1.0]
     span = max(max(xs) - min(xs), max(ys) - min(ys), 1e-9)
-    margin = MARGIN * span
+    margin = MARGIN * span if _margin is None else min(MARGIN * span, _margin)
     on = _on_curve_points(protocol.steps, objects, shown)
     if shown is not None:
         # a plate draws each arc between all the shown points on it, found or not by the protocol
@@ -540,6 +541,19 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
     end: dict[str, Any] = {}
     if ending and shown is None:
         plate_scene = build_scene(figure, plate=True, break_axis=False, looks=end_looks, _warn=False)
+        if breaks:
+            # on a broken sheet the plate's lines reach past their points by a share of what the plate spans
+            # there (its points and curves moved as the sheet moves them; a lettered line's letter point is
+            # placed on the sheet), not of the length broken out (at L/r = 50 the crank's ordinates reached 1.8 r
+            # past the circle)
+            sx, sy = break_shift(breaks), break_shift(breaks, axis=1)
+            kept = [(sx(p[0]), sy(p[1])) for m in plate_scene.marks
+                    for p in ((m.geom,) if m.kind is MarkKind.POINT and not m.id.endswith("-at") else
+                              m.geom if m.kind in (MarkKind.CURVE, MarkKind.AREA) else ())]
+            if kept:
+                plate_scene = build_scene(figure, plate=True, break_axis=False, looks=end_looks, _warn=False,
+                                          _margin=MARGIN * max(max(p[0] for p in kept) - min(p[0] for p in kept),
+                                                               max(p[1] for p in kept) - min(p[1] for p in kept), 1e-9))
         end = end_state(plate_scene.marks, plate_scene.bbox, marks, breaks, end_furniture)
     return Scene(tuple(marks), bbox, protocol.steps, title, dict(protocol.params), breaks, tuple(furniture),
                  essentials, **end)

@@ -214,6 +214,10 @@ class SweepDrawing:
         X, Y = np.vstack(xs), np.vstack(ys)
         span = np.maximum(np.maximum(X.max(0) - X.min(0), Y.max(0) - Y.min(0)), 1e-9)
         margin = MARGIN * span
+        if self._broken is not None:  # scene.build_scene: on a broken sheet, of what it spans there
+            KX, KY = self._shifted(X, Y)
+            kept = np.maximum(np.maximum(KX.max(0) - KX.min(0), KY.max(0) - KY.min(0)), 1e-9)
+            margin = np.where(self._broken, np.minimum(margin, MARGIN * kept), margin)
         tol = 1e-9 * np.maximum(span, 1.0)
         on = on_curve_names(protocol.steps, set(points), set(shown))
         shown_pts = [k for k in sorted(shown) if k in points]
@@ -572,6 +576,18 @@ class SweepDrawing:
         xmin, ymax, scale, left, top = (float(v[i]) for v in self._page)
         m = self.style.margin_px
         return m + left + (x - xmin) * scale, m + top + (ymax - y) * scale
+
+    def px_of(self, i: int):
+        """:meth:`px_at` of value *i* as a function of a point (its page's numbers read once)."""
+        xmin, ymax, scale, left, top = (float(v[i]) for v in self._page)
+        x0, y0 = self.style.margin_px + left, self.style.margin_px + top
+        return lambda x, y: (x0 + (x - xmin) * scale, y0 + (ymax - y) * scale)
+
+    def breaks_at(self, i: int) -> tuple[tuple[float, float, float, int], ...]:
+        """Value *i*'s breaks as a scene has them (:attr:`construct.render.scene.Scene.breaks`: where the drawn
+        break starts, its drawn width, the length it leaves out, its axis)."""
+        return tuple((float(b[1][i]), float(b[2][i]), float(b[3][i]), axis)
+                     for axis, b in sorted(self._breaks.items()) if b[0][i])
 
     def breaks_page(self) -> np.ndarray:
         """:meth:`breaks_px` of every value: (values x 4)."""

@@ -34,7 +34,9 @@ __all__ = ["drawn_numbers", "arc_flags", "radii", "blend", "canonical_arc", "dec
 #: A number as the drawing writes it.
 NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
 #: The attributes that carry geometry.
-_GEOMETRY = ("cx", "cy", "r", "x1", "y1", "x2", "y2", "d", "points", "viewBox")
+_GEOMETRY = ("cx", "cy", "r", "x1", "y1", "x2", "y2", "d", "points", "x", "y", "transform", "viewBox")
+#: The attributes of a text's place (the end state's furniture: its dimensions' and scales' lettering).
+_PLACE = ("x", "y", "transform")
 #: The template of an arc's path: its start, radii, rotation, large-arc and sweep flags, end.
 ARC = "M# #A# # # # # # #"
 #: How a column is stored: as drawn (px), or in the construction's own units through the row's fit to the
@@ -68,7 +70,9 @@ def drawn_numbers(page: str) -> tuple[list[tuple[str, str, str]], list[float], d
             continue
         for a in _GEOMETRY:
             v = e.get(a)
-            if v is None or (e is root) != (a == "viewBox"):
+            # (a letter's place and its group's: the page moves them with their point; the end state's furniture,
+            # fin-..., is swept: render/end_state.py end_furniture)
+            if v is None or (e is root) != (a == "viewBox") or (a in _PLACE and not ident.startswith("fin-")):
                 continue
             ns = NUMBER.findall(v)
             if ns:

@@ -315,7 +315,8 @@ def test_letters_stay_with_their_points(browser, live_player):
     left where the built value put it would be far from every point)."""
     _, _, path = live_player
     page, errors = _open(browser, path)
-    near = """() => { const pts = Array.from(document.querySelectorAll('#figure circle.pt[id]'))
+    # (every mark at the shown value: the letters and points the step hides wait until it shows them)
+    near = """() => { window.constructLive.flush(); const pts = Array.from(document.querySelectorAll('#figure circle.pt[id]'))
         .map(c => [+c.getAttribute('cx'), +c.getAttribute('cy')]);
       return Array.from(document.querySelectorAll('#figure g.lbg:not(.rodlen)')).map(g => {
         const m = /translate\\(([-0-9.e]+)[ ,]+([-0-9.e]+)\\)/.exec(g.getAttribute('transform'));
@@ -453,8 +454,10 @@ def test_while_dragging_the_camera_and_the_zoom_level_stay_while_near_and_let_go
     """A new view lays every letter out again for its screen scale and repaints the whole figure, and a new
     zoom level swaps the letters: while the given is dragged the camera keeps its view while the step's view
     lies inside it and fills more than two thirds of it, and keeps the zoom level while the magnification is
-    within a fifth of that level's range; a new view leaves the step's view a little room (5 % on each side),
-    so the step's view never leaves the window.  Let go, the camera glides to the step's view
+    within a fifth of that level's range; a new view leaves the step's view a little room (a tenth of its size
+    each way: ahead of it on the side it moves to, half on each side where it keeps still or shrinks), so the
+    step's view never leaves the window, and a view that leads the motion is left half as often.  Let go, the
+    camera glides to the step's view
     and the level is the exact one.  (The step's view is moved here by hand, as the given would move it.)"""
     _, _, path = live_player
     page, errors = _open(browser, path)
@@ -480,7 +483,9 @@ def test_while_dragging_the_camera_and_the_zoom_level_stay_while_near_and_let_go
     assert page.evaluate(state)[0] == moved
     target = page.evaluate(step_view, [0.02, 1.0])  # 6 % in all: it would leave the view, which goes with it
     page.evaluate("() => window.constructPlayer.jump(true)")
-    assert page.evaluate(state)[0] == pytest.approx(room(target), abs=0.01)
+    # (moving right: the room ahead of it, on the right; still upright: half above, half below)
+    ahead = [target[0], target[1] - 0.05 * target[3], 1.1 * target[2], 1.1 * target[3]]
+    assert page.evaluate(state)[0] == pytest.approx(ahead, abs=0.01)
     page.evaluate("() => window.constructPlayer.move()")  # let go: a glide to the step's view
     page.wait_for_timeout(600)
     shown = page.evaluate(state)
@@ -763,6 +768,46 @@ def test_the_end_state_follows_the_slider_with_its_furniture_and_the_rod_it_writ
                 assert words == f"L = {v:g} r".replace(".", ","), (v, words)
             elif words:
                 assert words == "".join(e.itertext()), (v, ident, words)
+    assert not errors, errors
+    page.close()
+
+
+# every element of the connected step groups with its numbers, and whether the page renders it (has a box)
+_SHOWN_AND_HIDDEN = """() => window.constructPlayer.groups().filter(s => s.isConnected).flatMap(s => Array.from(s.querySelectorAll('*')))
+    .filter(e => !e.closest('.brkg') && !e.closest('.rodlen') && !e.closest('#views') && !(e.parentNode.closest && e.parentNode.closest('g.lbg')))
+    .map(e => [e.getClientRects().length > 0, ['cx', 'cy', 'r', 'x1', 'y1', 'x2', 'y2', 'd', 'transform'].map(a => e.getAttribute(a) || '').join(' ')])"""
+
+
+def test_a_drag_writes_what_the_page_shows_and_a_step_draws_what_it_shows_anew_before_it_is_seen(browser, live_player):
+    """The end state (the last step drawn as the plate) hides most of the construction's letters and points: a
+    drag writes what the page shows, each at the dragged value -- constructLive.flush(), which brings every mark to
+    the shown value, moves none of them -- and leaves what the step hides (a number written into a hidden mark
+    restyles it all the same: three of four elements a drag wrote at piston-force's end state were hidden), until
+    a step shows it: the step before the end shows the letters again, at the dragged value before they are seen."""
+    _, _, path = live_player
+    page, errors = _open(browser, path)
+    _at(page, "end")
+    built = page.evaluate(_SHOWN_AND_HIDDEN)
+    for v in (2.2, 7.1):
+        _drag_to(page, "rod_ratio", v)
+    dragged = page.evaluate(_SHOWN_AND_HIDDEN)
+    assert [d[0] for d in dragged] == [b[0] for b in built]
+    hidden = [i for i, (shown, _) in enumerate(built) if not shown]
+    assert len(hidden) > 20 and sum(dragged[i][1] != built[i][1] for i, (shown, _) in enumerate(built) if shown) > 10
+    assert all(dragged[i][1] == built[i][1] for i in hidden), "a hidden mark was written while dragging"
+    page.evaluate("window.constructLive.flush()")
+    flushed = page.evaluate(_SHOWN_AND_HIDDEN)
+    assert [f for f in flushed if f[0]] == [d for d in dragged if d[0]], "a shown mark was not at the dragged value"
+    assert any(flushed[i][1] != built[i][1] for i in hidden)
+    # the hidden ones behind again (another value), then a step that shows them
+    _drag_to(page, "rod_ratio", 3.3)
+    page.keyboard.press("ArrowLeft")
+    before = page.evaluate(_SHOWN_AND_HIDDEN)
+    shown_now = [i for i, (shown, _) in enumerate(before) if shown]
+    assert sum(1 for i in hidden if i < len(before) and before[i][0]) > 10  # (the letters the end state hid)
+    page.evaluate("window.constructLive.flush()")
+    after = page.evaluate(_SHOWN_AND_HIDDEN)
+    assert all(after[i] == before[i] for i in shown_now), "a mark the step shows again was not at the shown value"
     assert not errors, errors
     page.close()
 

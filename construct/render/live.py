@@ -17,8 +17,11 @@ most of it is the page's script in one string, one file for the browser; its Pyt
 the next animation frame, everything the page draws: every mark of every
 step shown, in the window or not (those of steps not shown sit outside the
 document, the player's ``lean``, and are brought to the shown value when
-their step shows them again: the player's ``shown``; ``constructLive.flush()``
-does it at once, for a reader of their numbers), the view box and each step's
+their step shows them again: the player's ``shown``; those the step's classes
+hide -- display: none, most letters and points of the end state -- wait
+likewise until a step, zoom level or end state shows them: ``reveal``;
+``constructLive.flush()`` brings every mark at once, for a reader of their
+numbers), the view box and each step's
 view, the ring round the current mark, the letters and name tags with the
 points they name (their placed offset kept; a tag names its point by
 standing on it), the broken axes' marks on every line that crosses a break
@@ -44,12 +47,14 @@ name)``: the given *name*), ``ready`` is a promise for the inflated data,
 
 A drag is drawn inside one animation frame (``construct bench --live``):
 numbers are set as SVG lengths, not parsed text, and written only when they
-change; the camera keeps its view while the step's view stays inside it, and
+change (a path's from integers); the camera keeps its view while the step's view stays inside it, and
 the letters their scale and zoom level (the player's ``holds`` and
-``DRAG_LARGER``; exact, the camera gliding, on let-go); the groups the step
+``DRAG_LARGER``; exact, the camera gliding, on let-go), and a new view leads the motion (the player's
+``ahead``); the groups the step
 hides are out of the document (the player's ``lean``) and not written while
-they are; the curves an area is drawn from are read once a redraw; the
-checks' cells change in place.
+they are, nor are the marks their classes hide; the letters' boxes are kept in the figure's units, so a new view
+or piece forces no layout; the curves an area is drawn from are read once a redraw; the
+checks' cells change in place, the rows out of sight when they come into sight or on let-go.
 
 >>> page = "<html><body><div id=stage></div>\\n<aside>\\n</aside>\\n</body></html>"
 >>> out = with_live(page, {"given": "rod_ratio", "symbol": "L/r", "low": 1.05, "high": 1000.0,
@@ -164,6 +169,16 @@ LIVE_SCRIPT = r"""
   var api = window.constructLive = {lastMs: 0, value: LIST[0].initial, given: LIST[0].given};
   var book = function(v){ return String(Number(v.toPrecision(4))).replace(".", ","); };
   var round2 = function(v){ return Math.round(v * 100) / 100; };
+  // a number to two decimals as text, as String(round2(v)) writes it, from integers (a redraw writes thousands of
+  // numbers into paths: a fraction's shortest digits cost three times an integer's)
+  var HUNDREDTHS = [""];
+  for (var c100 = 1; c100 < 100; c100++) HUNDREDTHS.push("." + (c100 < 10 ? "0" + c100 : String(c100 % 10 ? c100 : c100 / 10)));
+  var text2 = function(v){
+    var n = Math.round(v * 100), neg = n < 0, q;
+    if (neg) n = -n;
+    q = (n - n % 100) / 100;
+    return (neg && n ? "-" : "") + q + HUNDREDTHS[n % 100];
+  };
   function setText(e, text){  // an element's one text node changed in place (no node replaced), if it changed
     var t = e.firstChild;
     if (t && t.nodeType === 3 && !t.nextSibling) { if (t.nodeValue !== text) t.nodeValue = text; }
@@ -303,7 +318,7 @@ LIVE_SCRIPT = r"""
     for (i = 0; i < cs.length; i++) { v = round2(num(cs[i])); if (v !== sl.v[i]) { sl.v[i] = v; changed = true; } }
     if (!changed && sl.text !== null) return;
     var parts = sl.parts, txt = parts[0];
-    for (i = 1; i < parts.length; i++) txt += sl.v[i - 1] + parts[i];
+    for (i = 1; i < parts.length; i++) txt += text2(sl.v[i - 1]) + parts[i];
     if (txt !== sl.text) { sl.text = txt; if (sl.el) sl.el.setAttribute(sl.attr, txt); }
   }
   function pointNow(id){  // a moving point's centre at the shown value (null: it does not move)
@@ -373,6 +388,15 @@ LIVE_SCRIPT = r"""
   var SIZE = LIST[0].label_px || 12, NS = "http://www.w3.org/2000/svg", marksOf = new Map(), rodLabels = [], rodSpots = [], rodTexts = [];
   var TWO = /^M(-?[0-9.]+) (-?[0-9.]+)L(-?[0-9.]+) (-?[0-9.]+)$/;
   function mk(tag, cls, parent){ var e = document.createElementNS(NS, tag); e.setAttribute("class", cls); parent.appendChild(e); return e; }
+  var ENDS = ["x1", "y1", "x2", "y2"];
+  function ends(ln){  // a line's ends at the shown value: as written, or, a line the page hides (not written), the sweep's
+    var out = ln.x1 ? [ln.x1.baseVal.value, ln.y1.baseVal.value, ln.x2.baseVal.value, ln.y2.baseVal.value] : drawnOf(ln).n.slice(0, 4);
+    if (unseen.has(ln)) (S.slotsOf.get(ln) || []).forEach(function(sl){
+      if (sl.len) out[ENDS.indexOf(sl.attr)] = round2(num(sl.cs[0]));
+      else for (var i = 0; i < 4; i++) out[i] = round2(num(sl.cs[i]));
+    });
+    return out;
+  }
   function breakMarks(every){  // (every: the lines of steps not shown too)
     var bands = [];
     for (var axis = 0; axis < 2; axis++) {
@@ -383,8 +407,7 @@ LIVE_SCRIPT = r"""
     for (var i = 0; i < lines.length; i++) {
       var ln = lines[i], x1, y1, x2, y2;
       if (!every && !ln.isConnected) continue;  // (a step not shown: its marks are set when it is shown)
-      if (ln.x1) { x1 = ln.x1.baseVal.value; y1 = ln.y1.baseVal.value; x2 = ln.x2.baseVal.value; y2 = ln.y2.baseVal.value; }
-      else { var q2 = drawnOf(ln).n; x1 = q2[0]; y1 = q2[1]; x2 = q2[2]; y2 = q2[3]; }
+      var q2 = ends(ln); x1 = q2[0]; y1 = q2[1]; x2 = q2[2]; y2 = q2[3];
       var got = marksOf.get(ln) || [null, null];
       for (axis = 0; axis < 2; axis++) {
         var band = bands[axis], a0 = axis ? y1 : x1, a1 = axis ? x1 : y1, b0 = axis ? y2 : x2, b1 = axis ? x2 : y2;
@@ -542,7 +565,7 @@ LIVE_SCRIPT = r"""
       var ring = [];  // the doubled points where a run starts or ends on a crossing dropped
       for (i = 0; i < rx.length; i++) {
         var q = (i + rx.length - 1) % rx.length;
-        if (rx[i] !== rx[q] || ry[i] !== ry[q]) ring.push(round2(rx[i]) + " " + round2(ry[i]));
+        if (rx[i] !== rx[q] || ry[i] !== ry[q]) ring.push(text2(rx[i]) + " " + text2(ry[i]));
       }
       if (ring.length >= 3) out.push("M" + ring.join("L") + "Z");
     }
@@ -551,10 +574,12 @@ LIVE_SCRIPT = r"""
   function drawAreas(every){  // (every: the areas of steps not shown too)
     for (var i = 0; i < areas.length; i++) {
       var A = areas[i], e = A.els, pieces;
-      if (!e.every(function(x){ return x; }) || !(every || A.pieces[0].isConnected)) continue;
+      if (!e.every(function(x){ return x; }) || !(every || A.pieces[0].isConnected && !unseen.has(A.pieces[0]))) continue;
       // the curves and points it is drawn from at the shown value, shown or not (a shown one is, this frame)
-      for (var s = 0; s < e.length; s++) if (!e[s].isConnected) (S.slotsOf.get(e[s]) || []).forEach(write);
-      var key = e.map(function(x){ return x.tagName === "line" ? x.getAttribute("x1") + x.getAttribute("y1") + x.getAttribute("x2") + x.getAttribute("y2") : x.tagName === "circle" ? x.getAttribute("cx") : x.getAttribute("d"); }).join("|");
+      for (var s = 0; s < e.length; s++) if (!e[s].isConnected || unseen.has(e[s])) (S.slotsOf.get(e[s]) || []).forEach(write);
+      // (drawn anew when the shown value moves: its marks are the sweep's at that value, and their texts, many
+      // thousand characters, are not read back to be compared)
+      var key = sweeps.indexOf(S) + " " + S.value;
       if (key === A.key) continue;
       A.key = key;
       pieces = areaPieces(graph(e[0]), graph(e[1]), e[2].cx.baseVal.value, e[3].cx.baseVal.value);
@@ -566,8 +591,11 @@ LIVE_SCRIPT = r"""
           A.pieces[j - 1].parentNode.insertBefore(el, A.pieces[j - 1].nextSibling);
           A.pieces.push(el);
         }
-        if (j < pieces.length) { if (el.getAttribute("d") !== pieces[j]) el.setAttribute("d", pieces[j]); el.removeAttribute("display"); }
-        else el.setAttribute("display", "none");
+        if (j < pieces.length) {
+          if (A.drawn[j] !== pieces[j]) { A.drawn[j] = pieces[j]; el.setAttribute("d", pieces[j]); }
+          if (el.hasAttribute("display")) el.removeAttribute("display");
+        }
+        else if (el.getAttribute("display") !== "none") el.setAttribute("display", "none");
       }
     }
   }
@@ -582,11 +610,48 @@ LIVE_SCRIPT = r"""
     // the break marks and areas once the player has put back every group the step shows (before it is drawn)
     if (!settling) { settling = true; Promise.resolve().then(function(){ settling = false; breakMarks(); drawAreas(); }); }
   }
-  // the marks of the steps not shown, out of the document, at the shown value at once (for a reader of the
-  // figure's numbers: the browser tests); what the page shows is untouched
+  // The page writes what it shows.  A mark or letter its classes hide (display: none: the end state's
+  // letters, which the plate letters itself, points it leaves out, another zoom level's letters) is restyled by
+  // every number written into it all the same -- at piston-force's end state three of four elements written
+  // were hidden -- so it waits, as the groups of the steps not shown do, until a new step, zoom level or end
+  // state shows it (reveal), and is drawn then, before the frame.  Which are hidden is asked again then.
+  var unseen = new Set(), seenKey = null, marked = null;
+  function seeing(){  // the marks and letters hidden now, asked again when what hides them may have changed
+    var key = svg.getAttribute("class") + "|" + svg.getAttribute("data-step") + "|" + furnitureOn;
+    if (key === seenKey) return false;
+    seenKey = key;
+    unseen = new Set();
+    if (!marked) {  // every element a given's sweep writes, and the letters
+      marked = new Set();
+      sweeps.forEach(function(W){ W.slots.forEach(function(sl){ marked.add(sl.el); }); });
+      followers.forEach(function(fo){ marked.add(fo.g || fo.el); });
+      areas.forEach(function(A){ marked.add(A.pieces[0]); });
+    }
+    // (no box: not rendered; asked of the laid-out page, as the letters' boxes are. checkVisibility() says an SVG
+    // element with display: none is visible)
+    marked.forEach(function(e){ if (e.isConnected && !e.getClientRects().length) unseen.add(e); });
+    return true;
+  }
+  function drawMarks(){  // the shown marks and letters at the shown value (the hidden wait: seeing)
+    var i, j;
+    for (i = 0; i < S.loose.length; i++) if (!unseen.has(S.loose[i].el)) write(S.loose[i]);
+    S.inGroup.forEach(function(list, g){
+      if (g.isConnected) for (j = 0; j < list.length; j++) if (!unseen.has(list[j].el)) write(list[j]); });
+    for (i = 0; i < followers.length; i++) {
+      var fo = followers[i];
+      if (fo.grp.isConnected && !unseen.has(fo.g || fo.el)) follow(fo);
+    }
+  }
+  function reveal(){  // a new step, zoom level or end state: what it shows anew, at the shown value
+    if (S && seeing()) { drawMarks(); drawAreas(); }
+  }
+  // every mark at the shown value at once, shown or not, in the document or not (for a reader of the figure's
+  // numbers: the browser tests); what the page shows is untouched
   api.flush = function(){
-    if (!S || !player) return;
-    player.groups().forEach(function(g){ if (!g.isConnected) bring(g); });
+    fillStale();
+    if (!S) return;
+    S.slots.forEach(write);
+    followers.forEach(follow);
     breakMarks(true);
     drawAreas(true);
   };
@@ -609,48 +674,57 @@ LIVE_SCRIPT = r"""
     Array.prototype.forEach.call(sh.cssRules, function(r){
       if (!lsRule && r.selectorText && r.selectorText.indexOf("#figure .lbg") === 0) lsRule = r; });
   });
-  var ctmNow = null;
-  function measure(){  // each shown label group's box about its anchor, on the screen (asked again when the view,
-    // the zoom level, the letters' scale, the step or the window changes, not while a drag holds them)
-    var key = svg.getAttribute("viewBox") + "|" + svg.getAttribute("class") + "|" + (lsRule ? lsRule.style.getPropertyValue("--ls") : "")
+  var sized = null;  // the figure's box on the screen when the boxes were measured: [width, height]
+  function measure(){  // each shown label group's box about its anchor, in the figure's units (asked again when
+    // the zoom level, the letters' scale, the step or the window changes, not when only the view moves: a letter's
+    // box in the figure's units is its --ls and zoom level's alone, so a new view, which a drag's camera takes
+    // as the figure moves, asks no layout of the page)
+    var key = svg.getAttribute("class") + "|" + (lsRule ? lsRule.style.getPropertyValue("--ls") : "")
       + "|" + svg.getAttribute("data-step") + "|" + window.innerWidth + "x" + window.innerHeight;
-    // the figure's map to the screen is asked (a layout of the page, forced after the frame's writes) only
-    // with new boxes: the boxes are kept about their anchors, and a scroll moves every anchor alike
-    if (key === boxKey && boxes && ctmNow) return ctmNow;
+    if (key === boxKey && boxes) return true;
+    // the figure's map to the screen (a layout of the page, forced after the frame's writes)
     var ctm = svg.getScreenCTM();
-    if (!ctm) return null;
-    ctmNow = ctm; boxKey = key; boxes = new Map();
+    if (!ctm) return false;
+    var s = Math.hypot(ctm.a, ctm.b);  // screen pixels per unit of the figure
+    if (!s) return false;
+    boxKey = key; boxes = new Map(); sized = [svg.clientWidth, svg.clientHeight];
     followers.forEach(function(fo){
       if (!fo.g || !fo.g.isConnected) return;
       var t = fo.g.querySelector("text:last-of-type"), r = t ? t.getBoundingClientRect() : null;
       if (!r) return;
       if (!r.width && !r.height) return;
       var px = ctm.a * fo.at[0] + ctm.c * fo.at[1] + ctm.e, py = ctm.b * fo.at[0] + ctm.d * fo.at[1] + ctm.f;
-      boxes.set(fo, [r.left - px, r.top - py, r.right - px, r.bottom - py]);
+      boxes.set(fo, [(r.left - px) / s, (r.top - py) / s, (r.right - px) / s, (r.bottom - py) / s]);
     });
-    return ctm;
+    return true;
+  }
+  function pixel(){  // one screen pixel in the figure's units, in the view shown (the viewBox fitted into the box)
+    var v = (svg.getAttribute("viewBox") || "").split(/[ ,]+/).map(Number);
+    var s = v.length === 4 && v[2] > 0 && v[3] > 0 ? Math.min(sized[0] / v[2], sized[1] / v[3]) : 0;
+    return s > 0 ? 1 / s : 0;
+  }
+  function clash(p, q, px){  // two boxes overlapping by more than a screen pixel
+    return p[0] < q[2] - px && p[2] > q[0] + px && p[1] < q[3] - px && p[3] > q[1] + px;
   }
   function declutter(){
-    var ctm = measure();
-    if (!ctm) return;
-    var k = +(svg.getAttribute("data-step") || 0), placed = [], out = [];
+    if (!measure()) return;
+    var k = +(svg.getAttribute("data-step") || 0), placed = [], out = [], px = pixel();
     followers.forEach(function(fo){
       var rel = boxes.get(fo);
       if (!rel) { if (fo.hid) { fo.hid = false; fo.g.removeAttribute("visibility"); } return; }
-      var px = ctm.a * fo.at[0] + ctm.c * fo.at[1] + ctm.e, py = ctm.b * fo.at[0] + ctm.d * fo.at[1] + ctm.f;
+      var x = fo.at[0], y = fo.at[1];
       // the current step's letters first, then letters before name tags, then by step (the figure's order)
-      out.push({fo: fo, b: [px + rel[0], py + rel[1], px + rel[2], py + rel[3]], rank: (fo.step === k ? 0 : 2) + (fo.tag ? 1 : 0)});
+      out.push({fo: fo, b: [x + rel[0], y + rel[1], x + rel[2], y + rel[3]], rank: (fo.step === k ? 0 : 2) + (fo.tag ? 1 : 0)});
     });
     out.sort(function(a, b){ return a.rank - b.rank || a.fo.step - b.fo.step; });
     out.forEach(function(o){
-      var clash = false;
-      for (var i = 0; i < placed.length && !clash; i++) {
-        var q = placed[i].b;
+      var hit = false;
+      for (var i = 0; i < placed.length && !hit; i++) {
         // (letters the placer set touching at the book's value stay as it set them)
-        if (o.b[0] < q[2] - 1 && o.b[2] > q[0] + 1 && o.b[1] < q[3] - 1 && o.b[3] > q[1] + 1 && !(pairs && pairs.has(o.fo) && pairs.get(o.fo).has(placed[i].fo))) clash = true;
+        if (clash(o.b, placed[i].b, px) && !(pairs && pairs.has(o.fo) && pairs.get(o.fo).has(placed[i].fo))) hit = true;
       }
-      if (!clash) placed.push(o);
-      if (clash !== !!o.fo.hid) { o.fo.hid = clash; if (clash) o.fo.g.setAttribute("visibility", "hidden"); else o.fo.g.removeAttribute("visibility"); }
+      if (!hit) placed.push(o);
+      if (hit !== !!o.fo.hid) { o.fo.hid = hit; if (hit) o.fo.g.setAttribute("visibility", "hidden"); else o.fo.g.removeAttribute("visibility"); }
     });
     return out;
   }
@@ -676,7 +750,7 @@ LIVE_SCRIPT = r"""
     if (player && endAt) player.data.end = atBook || !S.L.end_held ? endAt : 0;
     // (the plate's furniture there follows the given, unless its form changes over the domain: live/measure.py
     // furniture_keeps_form; then it is shown at the book's values alone, and the page says so)
-    var furnitureShown = atBook || !S.L.furniture_held;
+    var furnitureShown = furnitureOn = atBook || !S.L.furniture_held;
     for (var fi = 0; fi < endFurniture.length; fi++) {
       var fs = furnitureShown ? "" : "none"; if (endFurniture[fi].style.display !== fs) endFurniture[fi].style.display = fs;
     }
@@ -693,9 +767,8 @@ LIVE_SCRIPT = r"""
     } else if (atBook && insetHidden && player) { insetHidden = false; player.redraw(); }
     // the view first (the player reads the figure's size there: nothing written yet, no layout forced)
     if (player) view(!glide, dragging);
-    for (var i = 0; i < S.loose.length; i++) write(S.loose[i]);
-    S.inGroup.forEach(function(list, g){ if (g.isConnected) for (var j = 0; j < list.length; j++) write(list[j]); });
-    for (i = 0; i < followers.length; i++) if (followers[i].grp.isConnected) follow(followers[i]);
+    seeing();  // (a new zoom level or end state: which marks are hidden)
+    drawMarks();
     drawAreas();
     breakMarks();
     // readings of the figure (an angle to the minute, a dimension's value): as read at the nearer grid value
@@ -708,7 +781,7 @@ LIVE_SCRIPT = r"""
     api.value = value; api.given = S.L.given;
     var said = book(value);
     if (S.out && S.out.textContent !== said) { setText(S.out, said); retitle(); }
-    showChecks(S, u);
+    showChecks(S, u, dragging);
     api.lastMs = performance.now() - t0;
   }
   function pieceOf(given, value){  // the sweep of *given* whose piece of the domain holds *value* (or is nearest)
@@ -735,8 +808,7 @@ LIVE_SCRIPT = r"""
     }
     shownAt = -1;  // (another piece of the same given: its own checks)
     S = W;
-    S.dirty();
-    boxKey = null;
+    S.dirty();  // (the letters' boxes about their anchors are the same in every piece and given: kept)
   }
   // ---- the page's title, givens and checks name the shown values -------------------------------------------
   var titled = [], NUM = "[0-9]+(?:[.,][0-9]+)?", forms = {};
@@ -794,35 +866,62 @@ LIVE_SCRIPT = r"""
         return n.indexOf(".") >= 0 ? String(Number(v.toPrecision(4))) : book(v); }));
     });
   }
-  var body = document.querySelector("#live-checks tbody"), shownAt = -1, rowsOf = [];
+  var body = document.querySelector("#live-checks tbody"), shownAt = -1, shownL = null, rowsOf = [], stale = 0;
   function put(td, text, cls){  // a cell's text (and class) written only when it changes: no row is rebuilt
     setText(td, text);
     if (cls !== undefined && td.className !== cls) td.className = cls;
   }
-  function showChecks(W, u){
+  // While a given is dragged, the rows out of sight (the table scrolls in its box, the box is often below the
+  // window) wait: each changed cell lays the table out again, and the whole table's cells changing together
+  // cost a drag's frame a third of its time (127 rows of piston-force's); a row coming into sight, letting go,
+  // and constructLive.flush() bring them up to date
+  var inSight = window.IntersectionObserver ? new IntersectionObserver(function(seen){
+    seen.forEach(function(e){
+      var i = e.target.sectionRowIndex, row = rowsOf[i];
+      if (!row || row[0].parentNode !== e.target) return;
+      row.seen = e.isIntersecting;
+      if (row.seen && row.stale) fill(i);
+    });
+  }) : null;
+  function fill(i){  // row i's cells at the shown nearest swept value
+    var L = shownL, c = L.checks[shownAt][i], td = rowsOf[i], fmt = function(x){ return x === null ? "–" : x.toPrecision(8); };
+    // [formula, error, ok, constructed value where formula + error does not give it] (live/wire.py _check_table)
+    var made = c.length > 3 ? c[3] : (c[0] === null || c[1] === null ? null : c[0] + c[1]);
+    put(td[0], L.check_names[i]); put(td[1], fmt(made)); put(td[2], fmt(c[0]));
+    put(td[3], c[1] === null ? "–" : c[1].toExponential(1)); put(td[4], c[2] ? "✓" : "✗", c[2] ? "ok" : "bad");
+    if (td.stale) { td.stale = false; stale--; }
+  }
+  function fillStale(){  // the rows left out of sight while dragging
+    for (var i = 0; stale && i < rowsOf.length; i++) if (rowsOf[i].stale) fill(i);
+  }
+  function showChecks(W, u, dragging){
     var L = W.L;
     if (!L.checks || !L.checks.length) return;
     var k = 0, bd = Infinity;  // the nearest value the checks were swept at, in log10
     L.check_values.forEach(function(v, i){ var d = Math.abs(Math.log10(v) - u); if (d < bd) { bd = d; k = i; } });
-    if (k === shownAt) return;
-    shownAt = k;
+    if (k === shownAt && L === shownL) { if (!dragging) fillStale(); return; }
+    shownAt = k; shownL = L;
     put(document.getElementById("live-at"), "(" + L.symbol + " = " + book(L.check_values[k]) + ")");
     var rows = L.checks[k];
     // the rows are made once (a rebuilt table is laid out anew, at the cost of a frame); their cells change
-    while (rowsOf.length > rows.length) body.removeChild(rowsOf.pop()[0].parentNode);
+    while (rowsOf.length > rows.length) {
+      var gone = rowsOf.pop();
+      if (gone.stale) stale--;
+      if (inSight) inSight.unobserve(gone[0].parentNode);
+      body.removeChild(gone[0].parentNode);
+    }
     while (rowsOf.length < rows.length) {
       var tr = document.createElement("tr"), row = [];
       for (var j = 0; j < 5; j++) row.push(tr.appendChild(document.createElement("td")));
+      row.seen = true; row.stale = false;  // (in sight until the observer says otherwise)
       body.appendChild(tr);
       rowsOf.push(row);
+      if (inSight) inSight.observe(tr);
     }
-    rows.forEach(function(c, i){
-      // [formula, error, ok, constructed value where formula + error does not give it] (live/wire.py _check_table)
-      var td = rowsOf[i], fmt = function(x){ return x === null ? "–" : x.toPrecision(8); };
-      var made = c.length > 3 ? c[3] : (c[0] === null || c[1] === null ? null : c[0] + c[1]);
-      put(td[0], L.check_names[i]); put(td[1], fmt(made)); put(td[2], fmt(c[0]));
-      put(td[3], c[1] === null ? "–" : c[1].toExponential(1)); put(td[4], c[2] ? "✓" : "✗", c[2] ? "ok" : "bad");
-    });
+    for (var r = 0; r < rows.length; r++) {
+      if (!dragging || rowsOf[r].seen) fill(r);
+      else if (!rowsOf[r].stale) { rowsOf[r].stale = true; stale++; }
+    }
   }
   // ---- start ------------------------------------------------------------------------------------------------
   function load(L){
@@ -836,7 +935,7 @@ LIVE_SCRIPT = r"""
       return inflate(L.data);
     }).then(function(buf){ W.buf = buf; return W; });
   }
-  var endNote = null, insetHidden = false, hatches = [], endWritesRod = false, endAt = 0, endFurniture = [];
+  var endNote = null, insetHidden = false, hatches = [], endWritesRod = false, endAt = 0, endFurniture = [], furnitureOn = true;
   api.ready = Promise.all(LIST.map(load)).then(function(ws){
     player = window.constructPlayer;
     endAt = player ? player.data.end : 0;
@@ -879,7 +978,8 @@ LIVE_SCRIPT = r"""
       for (var j = 0; (el = find(j ? a[0] + "-" + j : a[0])); j++) pieces.push(el);
       // (an area's hatching, drawn by the drawing at the book's value, is not in the sweep: shown there alone)
       pieces.forEach(function(p){ var h = find(p.id + "-hatch"); if (h) hatches.push(h); });
-      if (pieces.length) areas.push({id: a[0], pieces: pieces, els: a.slice(1).map(find), key: null});
+      if (pieces.length) areas.push({id: a[0], pieces: pieces, els: a.slice(1).map(find), key: null,
+                                     drawn: pieces.map(function(p){ return p.getAttribute("d"); })});
     });
     // the break marks as built give way to the page's own (drawn at every value, the built one too)
     // (the rod's length as built: the page writes its own where the drawing wrote it, "axis dx dy anchor")
@@ -905,9 +1005,9 @@ LIVE_SCRIPT = r"""
     pairs = new Map();  // letters the placer set touching at the book's value (they stay so)
     var seen = declutter() || [];
     seen.forEach(function(a){ if (a.fo.hid) { a.fo.hid = false; a.fo.g.removeAttribute("visibility"); } });
+    var px = sized ? pixel() : 0;
     for (var i = 0; i < seen.length; i++) for (var j = i + 1; j < seen.length; j++) {
-      var p = seen[i].b, q = seen[j].b;
-      if (p[0] < q[2] - 1 && p[2] > q[0] + 1 && p[1] < q[3] - 1 && p[3] > q[1] + 1) {
+      if (clash(seen[i].b, seen[j].b, px)) {
         (pairs.get(seen[i].fo) || pairs.set(seen[i].fo, new Set()).get(seen[i].fo)).add(seen[j].fo);
         (pairs.get(seen[j].fo) || pairs.set(seen[j].fo, new Set()).get(seen[j].fo)).add(seen[i].fo);
       }
@@ -932,6 +1032,7 @@ LIVE_SCRIPT = r"""
     var seenStep = svg.getAttribute("data-step");
     if (player) new MutationObserver(function(){
       var now = svg.getAttribute("data-step");
+      reveal();
       if (now !== seenStep) { seenStep = now; view(); breakMarks(); }  // (the rod's length: the plate's, or the page's)
       declutter();
     }).observe(svg, {attributes: true, attributeFilter: ["data-step", "viewBox", "class"]});

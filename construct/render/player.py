@@ -423,6 +423,7 @@ li a.later{color:#bbb}
   }
   function show(j) {
     var box = boxOf();  // read before the classes change (a read after them forces a restyle)
+    dragWas = null;  // (a new step's view is no motion of the given)
     k = Math.max(0, Math.min(n, j));
     groups.forEach(function (g, i) {
       var s = +g.getAttribute("data-step");
@@ -542,19 +543,33 @@ li a.later{color:#bbb}
   // the step's view (the whole figure at the ends and without the magnifier)
   function target() { var st = k > 0 ? data.steps[k - 1] : null; return st && zoom.checked ? data.views[st.v] : full; }
   // A drag keeps the shown view while the step's view lies inside it and fills more than two thirds of it; when
-  // the step's view leaves it (or shrinks away in it) the camera takes the step's view with a twentieth of its
-  // size of room on each side, once, and holds that.  So what the step frames never leaves the window, and a
-  // camera that stays put shows the construction move, as a teacher dragging a given expects; and a new view is
-  // dear: its new screen scale lays every letter out again and repaints the whole figure (half of a drag's
-  // frame).  Letting go glides to the step's exact view.
-  var DRAG_ROOM = 0.05;
+  // the step's view leaves it (or shrinks away in it) the camera takes the step's view with a tenth of its size
+  // of room in each direction, once, and holds that: the room on the side the step's view moves to (its edges'
+  // motion since the last frame), half of it on each side when it keeps still or shrinks.  So what the step
+  // frames never leaves the window, and a camera that stays put shows the construction move, as a teacher
+  // dragging a given expects; and a new view is dear: it moves every mark on the screen, to be laid out and
+  // painted anew (a third of a drag's frame), and a view that leads the motion is taken half as often as one
+  // centred on it.  Letting go glides to the step's exact view.
+  var DRAG_ROOM = 0.05, dragWas = null;  // (the step's view at the drag's last frame)
+  function ahead(to, was) {  // the view a drag takes: *to* with room, on the side it moves to from *was*
+    var v = [0, 0, to[2] * (1 + 2 * DRAG_ROOM), to[3] * (1 + 2 * DRAG_ROOM)];
+    for (var a = 0; a < 2; a++) {
+      // (each edge's motion outwards; a ten-thousandth of the size is none)
+      var still = 1e-4 * to[a + 2], room = 2 * DRAG_ROOM * to[a + 2];
+      var out0 = was && was[a] - to[a] > still ? was[a] - to[a] : 0;
+      var out1 = was && to[a] + to[a + 2] - was[a] - was[a + 2] > still ? to[a] + to[a + 2] - was[a] - was[a + 2] : 0;
+      var low = out0 + out1 > 0 ? room * out0 / (out0 + out1) : room / 2;
+      v[a] = to[a] - low;
+    }
+    return v;
+  }
   function holds(v, t) {  // does view *v* hold view *t* while a given is dragged?
     return t[0] >= v[0] && t[1] >= v[1] && t[0] + t[2] <= v[0] + v[2] && t[1] + t[3] <= v[1] + v[3]
       && Math.max(t[2] / v[2], t[3] / v[3]) >= 2 / 3;
   }
   var api = window.constructPlayer = {data: data, full: full, redraw: function () { show(k); }, shown: null,
     groups: function () { return groups.slice(); },  // the step groups, in the document or out of it (lean)
-    move: function () { zoomLevel(target()); move(target()); },  // (the level a drag kept, made exact)
+    move: function () { dragWas = null; zoomLevel(target()); move(target()); },  // (the level a drag kept, made exact)
     find: find, lean: function () {
       if (lean) { return; }
       lean = true;
@@ -566,9 +581,10 @@ li a.later{color:#bbb}
       // the figure's box read once, before the level's class is set (a read after it would restyle the figure twice)
       var r = boxOf(), to = target();
       if (!drag) { now = to.slice(); }
-      // a new view while dragging: the step's view with a little room about it (it can move or grow by a twentieth
-      // before the next), not the step's view exactly (which it would leave at once)
-      else if (!holds(now, to)) { now = [to[0] - to[2] * DRAG_ROOM, to[1] - to[3] * DRAG_ROOM, to[2] * (1 + 2 * DRAG_ROOM), to[3] * (1 + 2 * DRAG_ROOM)]; }
+      // a new view while dragging: the step's view with a little room (it can move or grow by a tenth before the
+      // next), not the step's view exactly (which it would leave at once)
+      else if (!holds(now, to)) { now = ahead(to, dragWas); }
+      dragWas = drag ? to.slice() : null;
       zoomLevel(now, r, !!drag); put(now, r, !!drag); }};
 })();
 </script>

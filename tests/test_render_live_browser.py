@@ -242,12 +242,14 @@ _ANCHORS = """() => window.__lbg.map(g => {
     const m = /translate\\(([-0-9.e]+)[ ,]+([-0-9.e]+)\\)/.exec(g.getAttribute('transform')); return [+m[1], +m[2]]; })"""
 _POINTS = """ids => ids.map(i => { const c = window.__pts[i]; return [+c.getAttribute('cx'), +c.getAttribute('cy')]; })"""
 # a drag through *values* (``input`` events only, as _drag_to), each value drawn in its animation frame and its
-# points (_POINTS) and letter anchors (_ANCHORS) read there
+# points (_POINTS) and letter anchors (_ANCHORS) read there (the page asks for its frame while the event is
+# dispatched, so a frame asked for after it runs after the drawing, in the same frame: a page that drew a frame
+# later would be read at the value before)
 _DRAG_READING = f"""async ([g, values, ids]) => {{ const out = [], points = {_POINTS}, anchors = {_ANCHORS};
     const i = document.querySelector('#live input[name="' + g + '"]');
     for (const v of values) {{
       i.value = Math.log10(v); i.dispatchEvent(new Event('input'));
-      await new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)));
+      await new Promise(r => requestAnimationFrame(r));
       window.constructLive.flush();  // (the steps not shown: as they are when shown; the shown ones untouched)
       out.push([points(ids), anchors()]);
     }}
@@ -444,7 +446,7 @@ def test_while_dragging_the_letters_keep_their_scale_within_a_band_and_take_the_
     page.evaluate(grow, [1.0, True])  # the drag's last frame, at 3.3: kept
     assert page.evaluate(scale) == pytest.approx(exact * 0.975, abs=2e-4)
     page.evaluate("""() => new Promise(r => { const i = document.querySelector('#live input[type=range]');
-        i.dispatchEvent(new Event('change')); requestAnimationFrame(() => requestAnimationFrame(r)); })""")
+        i.dispatchEvent(new Event('change')); requestAnimationFrame(r); })""")
     assert page.evaluate(scale) == exact
     assert not errors, errors
     page.close()
@@ -503,7 +505,7 @@ _CAMERA_DRAG = """async ([g, a, b]) => { const i = document.querySelector('#live
     const svg = document.getElementById('figure'), p = window.constructPlayer;
     for (let j = 1; j <= 30; j++) {
       i.value = Math.log10(a) + (Math.log10(b) - Math.log10(a)) * j / 30; i.dispatchEvent(new Event('input'));
-      await new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)));
+      await new Promise(r => requestAnimationFrame(r));
       const crank = Array.from(svg.querySelectorAll('g[data-step] circle[id$="-crank"]'))
         .filter(e => e.isConnected && getComputedStyle(e).display !== 'none')[0];
       out.push([Math.pow(10, +i.value), svg.getAttribute('viewBox').split(' ').map(Number), p.target().slice(),
@@ -599,10 +601,10 @@ def test_a_drag_draws_every_mark_in_the_window_or_not_shown_or_not(browser, live
 
 def _drag_to(page, given: str, v: float) -> None:
     """The given's slider moved to *v* as a drag moves it: an ``input`` event (no ``change``), drawn in the next
-    animation frame."""
+    animation frame (awaited by a frame asked for after the page's, as in _DRAG_READING)."""
     page.evaluate("""([g, v]) => new Promise(r => { const i = document.querySelector('#live input[name="' + g + '"]');
         i.value = Math.log10(v); i.dispatchEvent(new Event('input'));
-        requestAnimationFrame(() => requestAnimationFrame(r)); })""", [given, v])
+        requestAnimationFrame(r); })""", [given, v])
 
 
 def _fresh_svg(c, params: dict, given: str, v: float):

@@ -446,7 +446,7 @@ def test_while_dragging_the_letters_keep_their_scale_within_a_band_and_take_the_
     page.evaluate(grow, [1.0, True])  # the drag's last frame, at 3.3: kept
     assert page.evaluate(scale) == pytest.approx(exact * 0.975, abs=2e-4)
     page.evaluate("""() => new Promise(r => { const i = document.querySelector('#live input[type=range]');
-        i.dispatchEvent(new Event('change')); requestAnimationFrame(r); })""")
+        i.dispatchEvent(new Event('change')); requestAnimationFrame(() => requestAnimationFrame(r)); })""")
     assert page.evaluate(scale) == exact
     assert not errors, errors
     page.close()

@@ -534,7 +534,7 @@ def test_while_dragging_the_camera_keeps_what_the_step_frames_in_the_window(brow
     for frac in (0.25, 0.6, 1.0):
         k = max(1, round(frac * n))
         page.evaluate("k => { const s = document.getElementById('slider'); s.value = k; s.oninput(); }", k)
-        page.evaluate("() => window.constructPlayer.jump(false)")  # where the glide to the step's view ends, without its frames
+        _at_step_view(page)
         for a, b in ((data["initial"], data["low"]), (data["low"], data["high"])):
             for v, view, step, crank in page.evaluate(_CAMERA_DRAG, [given, a, b]):
                 box = [step[0], step[1], step[0] + step[2], step[1] + step[3]]
@@ -560,7 +560,7 @@ def test_a_drag_keeps_the_zoom_level_near_its_range_and_letting_go_makes_it_exac
         pytest.skip("no committed gallery in this checkout")
     page, errors = _open(browser, path)
     page.keyboard.press("ArrowLeft")
-    page.evaluate("() => window.constructPlayer.jump(false)")  # where the glide to the step's view ends, without its frames
+    _at_step_view(page)
     level = "() => document.getElementById('figure').getAttribute('class')"
     drag = """([a, b]) => new Promise(res => { let j = 0; function f(){ j++;
         window.constructLive.set(a * Math.pow(b / a, j / 30), true); if (j < 30) requestAnimationFrame(f); else res(); }
@@ -589,7 +589,7 @@ def test_a_drag_draws_every_mark_in_the_window_or_not_shown_or_not(browser, live
     page, errors = _open(browser, path)
     keys, snapped = _keys(page)
     page.evaluate("() => { const s = document.getElementById('slider'); s.value = 30; s.oninput(); }")
-    page.evaluate("() => window.constructPlayer.jump(false)")  # where the glide to the step's view ends, without its frames
+    _at_step_view(page)
     for v in (1.9, 3.3, 4.37, 7.1):
         _drag_to(page, "rod_ratio", v)
         assert _compare(page, c, {"parts": 3}, v, keys, snapped) > 0.0
@@ -597,6 +597,12 @@ def test_a_drag_draws_every_mark_in_the_window_or_not_shown_or_not(browser, live
     assert _compare(page, c, {"parts": 3}, 7.1, keys, snapped) > 0.0
     assert not errors, errors
     page.close()
+
+
+def _at_step_view(page) -> None:
+    """The camera where its glide to the step's view ends (``jump(false)``: the view, letters and level exact), at
+    once: a drag's frames start from there, without the glide's frames drawn and waited for first."""
+    page.evaluate("() => window.constructPlayer.jump(false)")
 
 
 def _drag_to(page, given: str, v: float) -> None:

@@ -283,6 +283,8 @@ def _escape_text(text: str) -> str:
 
 #: What an attribute value escapes (:func:`_escape_attribute`).
 _ATTRIBUTE_ESCAPED = re.compile('[&<>"\r\n\t]')
+#: What an attribute value escapes but the quote (an opening tag's attributes are checked so, their quotes counted).
+_TEXT_ESCAPED = re.compile('[&<>\r\n\t]')
 
 
 def _escape_attribute(text: str) -> str:
@@ -330,7 +332,7 @@ def _emit(elem: Any, out: list[str], lines: bool) -> None:
     if kind is Element:
         attribs, text = elem.attribs, elem.text
         text = None if text is None else str(text)
-        values = [(k, str(v)) for k, v in sorted(attribs.items()) if v is not None]
+        values = [(k, s) for k, v in sorted(attribs.items()) if v is not None and (s := str(v))]
     elif kind.get_xml is _BASE_GET_XML or isinstance(elem, svgwrite.Drawing):
         if isinstance(elem, svgwrite.Drawing):
             attribs = elem.attribs  # (what Drawing.get_xml sets before svgwrite's own)
@@ -341,7 +343,7 @@ def _emit(elem: Any, out: list[str], lines: bool) -> None:
             attribs["version"] = elem.version
         text = None
         to_string = elem.value_to_string
-        values = [(k, to_string(v)) for k, v in sorted(elem.attribs.items()) if v is not None]
+        values = [(k, s) for k, v in sorted(elem.attribs.items()) if v is not None and (s := to_string(v))]
     else:  # svgwrite's own kinds (text with positions, a ``<set>`` naming its target, ...): through ElementTree
         xml = elem.get_xml()
         if lines:
@@ -351,19 +353,21 @@ def _emit(elem: Any, out: list[str], lines: bool) -> None:
         return
     tag = elem.elementname
     children = elem.elements
-    out.append("<" + tag)
-    values = [(k, v) for k, v in values if v]  # svgwrite leaves empty attributes out
-    if values:
-        if _ATTRIBUTE_ESCAPED.search("".join([v for _, v in values])) is None:  # (nearly always)
-            out.append("".join([f' {k}="{v}"' for k, v in values]))
-        else:
-            out.append("".join([f' {k}="{_escape_attribute(v)}"' for k, v in values]))
+    # (svgwrite leaves empty attributes out: *values* holds none)
+    opening = "".join([f' {k}="{v}"' for k, v in values])
+    if opening.count('"') != 2 * len(values) or _TEXT_ESCAPED.search(opening):  # (hardly ever: numbers, classes, ids)
+        opening = "".join([f' {k}="{_escape_attribute(v)}"' for k, v in values])
+    out.append("<" + tag + opening)
     if lines and children and tag not in _TEXTUAL:
         out.append(">" + _escape_text(text) if text else ">\n")
         for child in children:
-            _emit(child, out, True)
-            if child.elementname != CDATA_TAG:
+            if type(child) is Frozen:  # (a step group's marks, a layer's step groups)
+                out.append(child.markup)
                 out.append("\n")
+            else:
+                _emit(child, out, True)
+                if child.elementname != CDATA_TAG:
+                    out.append("\n")
         out.append("</" + tag + ">")
     elif text or children:
         out.append(">")

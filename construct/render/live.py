@@ -413,7 +413,8 @@ LIVE_SCRIPT = r"""
         var band = bands[axis], a0 = axis ? y1 : x1, a1 = axis ? x1 : y1, b0 = axis ? y2 : x2, b1 = axis ? x2 : y2;
         var on = band && Math.min(a0, b0) < band[0] + 0.3 * band[1] && Math.max(a0, b0) > band[0] + 0.7 * band[1] && Math.abs(b0 - a0) > 1e-9;
         var set = got[axis];
-        if (!on) { if (set) set.g.setAttribute("display", "none"); continue; }
+        // (in its style too: the end state's rule that shows its own groups, .fin .fo, outranks the attribute)
+        if (!on) { if (set) { set.g.setAttribute("display", "none"); set.g.style.display = "none"; } continue; }
         if (!set) {  // beside its line: shown and faded with the line's step
           var g = document.createElementNS(NS, "g");
           // (an end state's own line's marks in the end state alone, a line it leaves out's not there: fo, nf)
@@ -424,7 +425,7 @@ LIVE_SCRIPT = r"""
           set = got[axis] = {g: g, gap: mk("path", "brk", g), t: [mk("line", "brkline", g), mk("line", "brkline", g)], key: ""};
           marksOf.set(ln, got);
         }
-        set.g.removeAttribute("display");
+        set.g.removeAttribute("display"); set.g.style.display = "";
         var t = band[0] + band[1] / 2, s = a1 + (b1 - a1) * (t - a0) / (b0 - a0), cx = axis ? s : t, cy = axis ? t : s;
         var n = Math.hypot(x2 - x1, y2 - y1) || 1, ux = (x2 - x1) / n, uy = (y2 - y1) / n, nx = -uy, ny = ux;
         var h = 0.6 * SIZE, gap = 0.45 * SIZE, key = cx + " " + cy + " " + ux + " " + uy;
@@ -593,9 +594,10 @@ LIVE_SCRIPT = r"""
         }
         if (j < pieces.length) {
           if (A.drawn[j] !== pieces[j]) { A.drawn[j] = pieces[j]; el.setAttribute("d", pieces[j]); }
-          if (el.hasAttribute("display")) el.removeAttribute("display");
+          if (el.hasAttribute("display")) { el.removeAttribute("display"); el.style.display = ""; }
         }
-        else if (el.getAttribute("display") !== "none") el.setAttribute("display", "none");
+        // (in its style too: an end state's own area, .fin .fo, is shown by a rule that outranks the attribute)
+        else if (el.getAttribute("display") !== "none") { el.setAttribute("display", "none"); el.style.display = "none"; }
       }
     }
   }

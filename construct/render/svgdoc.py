@@ -330,9 +330,16 @@ def _emit(elem: Any, out: list[str], lines: bool) -> None:
         out.append(elem.markup)
         return
     if kind is Element:
-        attribs, text = elem.attribs, elem.text
-        text = None if text is None else str(text)
-        values = [(k, s) for k, v in sorted(attribs.items()) if v is not None and (s := str(v))]
+        text = elem.text
+        if text is not None:
+            text = str(text)
+        values = []
+        for k, v in sorted(elem.attribs.items()):
+            if v is not None:
+                if type(v) is not str:
+                    v = str(v)
+                if v:
+                    values.append((k, v))
     elif kind.get_xml is _BASE_GET_XML or isinstance(elem, svgwrite.Drawing):
         if isinstance(elem, svgwrite.Drawing):
             attribs = elem.attribs  # (what Drawing.get_xml sets before svgwrite's own)
@@ -357,6 +364,9 @@ def _emit(elem: Any, out: list[str], lines: bool) -> None:
     opening = "".join([f' {k}="{v}"' for k, v in values])
     if opening.count('"') != 2 * len(values) or _TEXT_ESCAPED.search(opening):  # (hardly ever: numbers, classes, ids)
         opening = "".join([f' {k}="{_escape_attribute(v)}"' for k, v in values])
+    if not children and not text:  # (most elements: a mark)
+        out.append(f"<{tag}{opening} />")
+        return
     out.append("<" + tag + opening)
     if lines and children and tag not in _TEXTUAL:
         out.append(">" + _escape_text(text) if text else ">\n")

@@ -246,6 +246,7 @@ def _write(elem: ET.Element, out: list[str]) -> None:
     if tail:
         out.append(tail if tail == "\n" else _escape_text(tail))  # (the line break after nearly every element)
 
+
 def _open_close(elem: ET.Element, out: list[str]) -> None:
     tag = elem.tag
     if not isinstance(tag, str) or "{" in tag:
@@ -355,7 +356,6 @@ def _emit(elem: Any, out: list[str], lines: bool) -> None:
         xml = elem.get_xml()
         if lines:
             _lines(xml)
-        xml.tail = None
         _open_close(xml, out)
         return
     tag = elem.elementname

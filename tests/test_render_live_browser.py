@@ -967,3 +967,32 @@ def test_a_curve_through_the_points_between_its_corners_takes_the_points_a_fresh
             assert worst <= 0.5, (v, i, worst)
     assert not errors, errors
     page.close()
+
+
+def test_the_end_states_plate_lettering_keeps_the_letters_size_on_the_screen(browser):
+    """The committed gallery's inertia curve at its last step (the end state, its plate lettering "1 at", "L = ∞"
+    set for the letter scale of the book's value): dragged to L/r = 1.5 and 50, where the figure and so its view
+    grow or shrink, an upright lettering of the plate stays as tall on the screen as the end state's letters (q₁,
+    A, B: the player scales both by its letter scale) -- it was drawn at 0.64 of their height at 1.5.  (A turned
+    one, F/f along its dimension, still keeps the book's value's size: not scaled yet.)"""
+    path = REPO / "gallery" / "inertia-curve-rod-ratio-4" / "teaching" / "player.html"
+    if not path.is_file():
+        pytest.skip("no committed gallery in this checkout")
+    page, errors = _open(browser, path)
+    _at(page, "end")
+    heights = """() => { const h = e => e.getBoundingClientRect().height;
+        const fur = Array.from(document.querySelectorAll('#figure .fo.end text.fur-text:not([transform])'))
+          .filter(t => t.getClientRects().length && !t.firstElementChild && t.textContent.trim().length > 1);
+        const lbs = Array.from(document.querySelectorAll('#figure .lbg.pf > text.lb:not(.halo)'))
+          .filter(t => t.getClientRects().length && getComputedStyle(t.parentNode).display !== 'none');
+        const med = a => a.sort((x, y) => x - y)[Math.floor(a.length / 2)];
+        return [med(fur.map(h)), med(lbs.map(h)), fur.length, lbs.length]; }"""
+    for v in (1.5, 50.0):
+        _drag_to(page, "rod_ratio", v)
+        page.evaluate("() => new Promise(r => { document.querySelector('#live input[type=range]').dispatchEvent(new Event('change')); setTimeout(r, 900); })")
+        fur, letter, nf, nl = page.evaluate(heights)
+        assert nf >= 2 and nl >= 5, (v, nf, nl)
+        # (as tall as the letters to a fifth: the plate's lettering is set at the letters' size)
+        assert 0.8 <= fur / letter <= 1.25, (v, fur, letter)
+    assert not errors, errors
+    page.close()

@@ -136,6 +136,9 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
             "levels": list(ZOOM_LEVELS), "dt": round(1000 * STEP_SECONDS), "titles": titles, "paths": paths}
     if d.end is not None:
         data["end"] = 1  # the last step shows the end state (the figure's class fin)
+        # its letter scale as laid out: the plate's lettering in it (the furniture's texts, set at that scale's size
+        # in the figure's units) is scaled by the shown letter scale over it, as the end state's letters are
+        data["els"] = d.end.letter
     title = title or scene.title
     giv = givens or {}
     givens_rows = "".join(f"<tr><th>{html.escape(str(k))}</th><td>{html.escape(_show(v))}</td></tr>"
@@ -223,6 +226,7 @@ main{display:flex;gap:12px;padding:8px 16px;align-items:flex-start}
 #inset .ilb{fill:#c2255c;font-family:'DejaVu Sans',sans-serif;paint-order:stroke;stroke:#fff;stroke-width:.25em}
 #figure{width:100%;height:auto;aspect-ratio:{{ASPECT}};max-height:70vh;border:1px solid #ccc;background:#fff;display:block}
 #figure .lbg>*,#figure .pt{--ls:1;transform:scale(var(--ls))}
+#figure .fo.end text:not([transform]){transform-box:fill-box;transform-origin:center}
 #controls{display:flex;gap:6px;align-items:center;margin:8px 0;flex-wrap:wrap}
 #controls button{font:inherit;padding:3px 10px;min-width:2.4em}
 #slider{flex:1 1 200px}
@@ -328,6 +332,14 @@ li a.later{color:#bbb}
   // the far side of that band from where the drag is heading (18 % larger, 3 % smaller), which lasts a change
   // of a quarter in the figure's size, not of 4 %; it keeps the shown zoom level while the magnification is
   // within a fifth of that level's range.  Letting go of the slider sets both exactly.
+  var furRule = null;  // the end state's plate lettering (data.els: the letter scale it was set for)
+  if (data.els) {
+    Array.prototype.forEach.call(document.styleSheets, function (sh) {
+      Array.prototype.forEach.call(sh.cssRules, function (r) {
+        if (!furRule && r.selectorText === "#figure .fo.end text:not([transform])") { furRule = r; }
+      });
+    });
+  }
   var DRAG_SMALLER = 0.04, DRAG_LARGER = 0.2, DRAG_SET_SMALLER = 0.03, DRAG_SET_LARGER = 0.18, DRAG_LEVEL = 1.2;
   var dragFrom = null;  // the whole figure's canvas pixels per screen pixel at the last view shown
   function put(v, r, drag) {  // show view *v*: letters and points at their screen size (12 px, never below 9.5 px)
@@ -351,7 +363,12 @@ li a.later{color:#bbb}
       }
     }
     dragFrom = qf;
-    if (ls !== was) { lsAt.setProperty("--ls", ls); }
+    if (ls !== was) {
+      lsAt.setProperty("--ls", ls);
+      // the end state's plate lettering about its own middle, at the letters' size; 1 where the end state was
+      // laid out (a turned text not: a transform origin at its middle would move its turn, the attribute's)
+      if (furRule) { furRule.style.setProperty("scale", (ls / data.els).toFixed(4)); }
+    }
     var ring = document.getElementById("ring");
     if (ring) {
       ring.setAttribute("visibility", ringAt ? "visible" : "hidden");

@@ -88,6 +88,14 @@ def test_the_writer_writes_what_elementtree_writes(tmp_path, monkeypatch):
         g.add(shared)
         dwg.add(g)
         dwg.add(f.style("circle > .a { fill: red } & more"))
+        words = f.text("P", x=["1"], y=["2"])  # a textual element's children: no line breaks inside
+        words.add(f.tspan("b", dy=["1"]))
+        inside = words.add(f.g(id="inside"))
+        inside.add(f.tspan("c"))
+        inner = f.g(id=f"o{k}")  # a frozen group holding a frozen element
+        inner.add(shared)
+        inner.add(words)
+        dwg.add(w.frozen(inner))
         docs.append(dwg)
     for dwg in docs:
         assert w.markup(dwg) == elementtree(w, dwg)

@@ -118,5 +118,4 @@ class StepGroups:
 
 def is_view(elem: Any) -> bool:
     """Is *elem* a camera box of the ``views`` layer (frozen or not)?"""
-    xml = getattr(elem, "xml", None)
-    return (xml.get("class") if xml is not None else getattr(elem, "attribs", {}).get("class")) == "view"
+    return getattr(getattr(elem, "source", elem), "attribs", {}).get("class") == "view"

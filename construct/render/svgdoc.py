@@ -4,13 +4,13 @@ Elements come from svgwrite's element factory with validation off
 (``debug=False``: checking every attribute of every mark costs more than the
 drawing itself); the plentiful plain ones (groups, points' circles, lines, paths, letters, ``<set>``)
 are :class:`Element`, which gives svgwrite's element without its machinery.
-Each mark's element is turned into an ElementTree element once
-(:meth:`Writer.frozen`) and shared by every document that shows it --
-the layered figure, the frames, the animation, the player -- and its markup
-is written once too, the first time a document holds it: a mark costs one
-serialisation in all, never a rebuild.  The serialiser writes what
-ElementTree's ``tostring`` (with svgwrite's CDATA patch) writes, byte for byte
-(tests/test_render_svgdoc.py holds the two equal), in a third of its time.
+Each mark's element is written once (:meth:`Writer.frozen`) and its markup
+shared by every document that shows it -- the layered figure, the frames,
+the animation, the player: a mark costs one serialisation in all, never a
+rebuild.  Documents are written straight from their elements (:func:`_emit`),
+not through ElementTree, byte for byte as ElementTree's ``tostring`` (with
+svgwrite's CDATA patch) writes their trees (tests/test_render_svgdoc.py holds
+the two equal).
 
 Output is byte-stable: svgwrite writes attributes in sorted order, numbers
 reach it already formatted (:func:`fmt`), ids are given
@@ -63,16 +63,23 @@ _TEXTUAL = {"text", "tspan", "title", "desc", "style", "script", CDATA_TAG}
 
 
 class Frozen:
-    """An svgwrite element turned into its ElementTree element once, addable to any svgwrite container."""
+    """An element written once, addable to any svgwrite container: its markup (:attr:`markup`, every
+    child on a line of its own) is made when it is frozen and copied into every document that holds it;
+    its ElementTree element only when asked (:meth:`get_xml`, for a tree a caller changes)."""
 
-    __slots__ = ("xml", "elementname")
+    __slots__ = ("source", "markup", "elementname", "_xml")
 
-    def __init__(self, xml: ET.Element):
-        self.xml = xml
-        self.elementname = xml.tag
+    def __init__(self, source: Any, markup: str):
+        self.source = source
+        self.markup = markup
+        self.elementname = source.elementname
+        self._xml: ET.Element | None = None
 
     def get_xml(self) -> ET.Element:
-        return self.xml
+        if self._xml is None:
+            self._xml = self.source.get_xml()
+            _lines(self._xml)
+        return self._xml
 
 
 class Element:
@@ -186,17 +193,14 @@ class Writer:
         self.factory.line = _line
         self.factory.path = _path
         self.factory.text = _text
-        #: The shared elements (:meth:`frozen`) by id: the element (kept, so that its id stays its own) and its
-        #: markup without its tail, once a document has written it.
-        self._shared: dict[int, list] = {}
 
     def frozen(self, elem: Any) -> Frozen:
-        """*elem* serialised to an ElementTree element now, to be shared by several documents."""
+        """*elem* written now, to be shared by several documents."""
         if isinstance(elem, Frozen):
             return elem
-        f = Frozen(elem.get_xml())
-        self._shared[id(f.xml)] = [f.xml, None]
-        return f
+        out: list[str] = []
+        _emit(elem, out, True)
+        return Frozen(elem, "".join(out))
 
     def drawing(self, **attrs: Any) -> Any:
         """A new top-level ``<svg>`` (svgwrite's Drawing) with *attrs*."""
@@ -205,57 +209,15 @@ class Writer:
     def svg_element(self, dwg: Any) -> ET.Element:
         """The ElementTree of *dwg* with line breaks between elements (the bytes are part of the goldens)."""
         root = dwg.get_xml()
-        _lines(root, self._shared)
+        _lines(root)
         return root
 
     def markup(self, dwg: Any) -> str:
-        """*dwg* as markup without the XML declaration (to inline into HTML)."""
+        """*dwg* as markup without the XML declaration (to inline into HTML): what :meth:`svg_element`'s
+        tree serialises to, written straight from the elements (:func:`_emit`)."""
         out: list[str] = []
-        self._write(self.svg_element(dwg), out)
+        _emit(dwg, out, True)
         return "".join(out)
-
-    def _write(self, elem: ET.Element, out: list[str]) -> None:
-        """*elem* and its tail as ``ET.tostring(elem, encoding="unicode")`` writes them (svgwrite's CDATA
-        elements as CDATA sections, without a tail); a shared element's markup from the first time."""
-        tag = elem.tag
-        if tag == CDATA_TAG:
-            out.append(CDATA_TAG % elem.text)
-            return
-        shared = self._shared.get(id(elem))
-        if shared is not None and shared[0] is elem:
-            if shared[1] is None:
-                own: list[str] = []
-                self._open_close(elem, own)
-                shared[1] = "".join(own)
-            out.append(shared[1])
-        else:
-            self._open_close(elem, out)
-        tail = elem.tail
-        if tail:
-            out.append(tail if tail == "\n" else _escape_text(tail))  # (the line break after nearly every element)
-
-    def _open_close(self, elem: ET.Element, out: list[str]) -> None:
-        tag = elem.tag
-        if not isinstance(tag, str) or "{" in tag:
-            raise TypeError(f"the SVG writer writes plain tags only, got {tag!r}")  # ElementTree's namespaces
-        out.append("<" + tag)
-        attrib = elem.attrib
-        if attrib:
-            if _ATTRIBUTE_ESCAPED.search("".join(attrib.values())) is None:  # (nearly always: numbers, classes, ids)
-                out.append("".join([f' {k}="{v}"' for k, v in attrib.items()]))
-            else:
-                for k, v in attrib.items():
-                    out.append(f' {k}="{_escape_attribute(v)}"')
-        text = elem.text
-        if text or len(elem):
-            out.append(">")
-            if text:
-                out.append(_escape_text(text))
-            for child in elem:
-                self._write(child, out)
-            out.append("</" + tag + ">")
-        else:
-            out.append(" />")
 
     def text(self, dwg: Any) -> str:
         """*dwg* as a standalone SVG file's text, as svgwrite's ``Drawing.write`` lays it out."""
@@ -269,8 +231,44 @@ class Writer:
     def tree_text(self, root: ET.Element) -> str:
         """The ElementTree *root* (:meth:`own_tree`) as a standalone SVG file's text, as :meth:`text` writes."""
         out: list[str] = []
-        self._write(root, out)
+        _write(root, out)
         return XML_DECLARATION + "".join(out) + "\n"
+
+
+def _write(elem: ET.Element, out: list[str]) -> None:
+    """*elem* and its tail as ``ET.tostring(elem, encoding="unicode")`` writes them (svgwrite's CDATA
+    elements as CDATA sections, without a tail)."""
+    if elem.tag == CDATA_TAG:
+        out.append(CDATA_TAG % elem.text)
+        return
+    _open_close(elem, out)
+    tail = elem.tail
+    if tail:
+        out.append(tail if tail == "\n" else _escape_text(tail))  # (the line break after nearly every element)
+
+
+def _open_close(elem: ET.Element, out: list[str]) -> None:
+    tag = elem.tag
+    if not isinstance(tag, str) or "{" in tag:
+        raise TypeError(f"the SVG writer writes plain tags only, got {tag!r}")  # ElementTree's namespaces
+    out.append("<" + tag)
+    attrib = elem.attrib
+    if attrib:
+        if _ATTRIBUTE_ESCAPED.search("".join(attrib.values())) is None:  # (nearly always: numbers, classes, ids)
+            out.append("".join([f' {k}="{v}"' for k, v in attrib.items()]))
+        else:
+            for k, v in attrib.items():
+                out.append(f' {k}="{_escape_attribute(v)}"')
+    text = elem.text
+    if text or len(elem):
+        out.append(">")
+        if text:
+            out.append(_escape_text(text))
+        for child in elem:
+            _write(child, out)
+        out.append("</" + tag + ">")
+    else:
+        out.append(" />")
 
 
 def _escape_text(text: str) -> str:
@@ -286,6 +284,8 @@ def _escape_text(text: str) -> str:
 
 #: What an attribute value escapes (:func:`_escape_attribute`).
 _ATTRIBUTE_ESCAPED = re.compile('[&<>"\r\n\t]')
+#: What an attribute value escapes but the quote (an opening tag's attributes are checked so, their quotes counted).
+_TEXT_ESCAPED = re.compile('[&<>\r\n\t]')
 
 
 def _escape_attribute(text: str) -> str:
@@ -302,9 +302,8 @@ def _escape_attribute(text: str) -> str:
     return text
 
 
-def _lines(elem: ET.Element, shared: dict[int, list] | None = None) -> None:
-    """Every child element on a line of its own (idempotent).  A shared element (*shared*:
-    :attr:`Writer._shared`) whose markup is written has been laid out so before: not visited again."""
+def _lines(elem: ET.Element) -> None:
+    """Every child element on a line of its own (idempotent)."""
     stack = [elem]
     while stack:
         e = stack.pop()
@@ -315,8 +314,77 @@ def _lines(elem: ET.Element, shared: dict[int, list] | None = None) -> None:
         for child in e:
             if child.tag != CDATA_TAG:
                 child.tail = "\n"
-            if shared:
-                done = shared.get(id(child))
-                if done is not None and done[0] is child and done[1] is not None:
-                    continue
             stack.append(child)
+
+
+#: svgwrite's own ``get_xml`` (its attributes and children, nothing else): elements of a class that keeps it
+#: are written straight (:func:`_emit`), as an :class:`Element` is.
+_BASE_GET_XML = svgwrite.base.BaseElement.get_xml
+
+
+def _emit(elem: Any, out: list[str], lines: bool) -> None:
+    """*elem* (an :class:`Element`, a :class:`Frozen`, an svgwrite element) as markup, as its ElementTree
+    element laid out by :func:`_lines` (when *lines*: not inside a textual element) serialises, without its
+    tail -- written straight from its attributes and children rather than through ElementTree."""
+    kind = type(elem)
+    if kind is Frozen:
+        out.append(elem.markup)
+        return
+    if kind is Element:
+        text = elem.text
+        if text is not None:
+            text = str(text)
+        values = []
+        for k, v in sorted(elem.attribs.items()):
+            if v is not None:
+                if type(v) is not str:
+                    v = str(v)
+                if v:
+                    values.append((k, v))
+    elif kind.get_xml is _BASE_GET_XML or isinstance(elem, svgwrite.Drawing):
+        if isinstance(elem, svgwrite.Drawing):
+            attribs = elem.attribs  # (what Drawing.get_xml sets before svgwrite's own)
+            attribs["xmlns"] = "http://www.w3.org/2000/svg"
+            attribs["xmlns:xlink"] = "http://www.w3.org/1999/xlink"
+            attribs["xmlns:ev"] = "http://www.w3.org/2001/xml-events"
+            attribs["baseProfile"] = elem.profile
+            attribs["version"] = elem.version
+        text = None
+        to_string = elem.value_to_string
+        values = [(k, s) for k, v in sorted(elem.attribs.items()) if v is not None and (s := to_string(v))]
+    else:  # svgwrite's own kinds (text with positions, a ``<set>`` naming its target, ...): through ElementTree
+        xml = elem.get_xml()
+        if lines:
+            _lines(xml)
+        _open_close(xml, out)
+        return
+    tag = elem.elementname
+    children = elem.elements
+    # (svgwrite leaves empty attributes out: *values* holds none)
+    opening = "".join([f' {k}="{v}"' for k, v in values])
+    if opening.count('"') != 2 * len(values) or _TEXT_ESCAPED.search(opening):  # (hardly ever: numbers, classes, ids)
+        opening = "".join([f' {k}="{_escape_attribute(v)}"' for k, v in values])
+    if not children and not text:  # (most elements: a mark)
+        out.append(f"<{tag}{opening} />")
+        return
+    out.append("<" + tag + opening)
+    if lines and children and tag not in _TEXTUAL:
+        out.append(">" + _escape_text(text) if text else ">\n")
+        for child in children:
+            if type(child) is Frozen:  # (a step group's marks, a layer's step groups)
+                out.append(child.markup)
+                out.append("\n")
+            else:
+                _emit(child, out, True)
+                if child.elementname != CDATA_TAG:
+                    out.append("\n")
+        out.append("</" + tag + ">")
+    elif text or children:
+        out.append(">")
+        if text:
+            out.append(_escape_text(text))
+        for child in children:
+            _emit(child, out, False)
+        out.append("</" + tag + ">")
+    else:
+        out.append(" />")

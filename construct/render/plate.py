@@ -383,12 +383,17 @@ def break_elements(breaks: Sequence[tuple], lines: Sequence[tuple[float, float, 
     return out
 
 
+def _as_written(f: Any) -> Callable[[float], Any]:
+    """How factory *f* takes a number: written (:func:`_f`), or as it is where the factory takes the numbers
+    unwritten (``raw``: the live sweep's, :class:`construct.render.end_state.NumbersFactory`)."""
+    return (lambda v: v) if getattr(f, "raw", False) else _f
+
+
 def _line(f: Any, a: XY, b: XY, cls: str = "fur") -> Any:
     if isinstance(f, _Pieces):
         return Piece("line", (a, b), cls)
-    if getattr(f, "raw", False):  # (a factory that takes the numbers as they are: the live sweep's)
-        return f.line(start=a, end=b, class_=cls)
-    return f.line(start=(_f(a[0]), _f(a[1])), end=(_f(b[0]), _f(b[1])), class_=cls)
+    w = _as_written(f)
+    return f.line(start=(w(a[0]), w(a[1])), end=(w(b[0]), w(b[1])), class_=cls)
 
 
 def _poly(f: Any, pts: Sequence[XY], cls: str, close: bool = False) -> Any:
@@ -413,9 +418,8 @@ def _text(f: Any, at: XY, text: str, size: float, anchor: str = "middle", angle:
           rel: float = 1.0) -> list[Any]:
     if isinstance(f, _Pieces):  # its halo is the writer's (a TikZ node's white ground)
         return [Piece("text", (at,), "lb fur-text", text, anchor, angle, rel)]
-    raw = getattr(f, "raw", False)
-    attrs: dict[str, Any] = {"x": [at[0] if raw else _f(at[0])],
-                             "y": [at[1] + 0.35 * size * rel if raw else _f(at[1] + 0.35 * size * rel)]}
+    raw, w = getattr(f, "raw", False), _as_written(f)
+    attrs: dict[str, Any] = {"x": [w(at[0])], "y": [w(at[1] + 0.35 * size * rel)]}
     if angle:
         attrs["transform"] = ("rotate", -angle, at[0], at[1]) if raw else \
             f"rotate({_f(-angle)} {_f(at[0])} {_f(at[1])})"
@@ -560,7 +564,6 @@ def _item(it: Any, px: Callable[[float, float], XY], scale: float, size: float, 
         x, y = px(*it.at)
         if isinstance(f, _Pieces):
             return [Piece("dot", ((x, y),), "arrow", size=0.22 * size)]
-        if getattr(f, "raw", False):
-            return [f.circle(center=(x, y), r=0.22 * size, class_="arrow")]
-        return [f.circle(center=(_f(x), _f(y)), r=_f(0.22 * size), class_="arrow")]
+        w = _as_written(f)
+        return [f.circle(center=(w(x), w(y)), r=w(0.22 * size), class_="arrow")]
     return []

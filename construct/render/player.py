@@ -320,10 +320,12 @@ li a.later{color:#bbb}
   // the letter scale --ls is declared on the letters and points themselves (this rule), not inherited
   // from the figure: a new value then restyles those, not every element of the figure (a third of them)
   // (and of a live player, only those of the steps shown: see lean)
-  var lsRule = null;
+  // (and the end state's plate lettering's rule, which a new letter scale scales too: data.els, see put)
+  var lsRule = null, furRule = null;
   Array.prototype.forEach.call(document.styleSheets, function (sh) {
     Array.prototype.forEach.call(sh.cssRules, function (r) {
       if (!lsRule && r.selectorText && r.selectorText.indexOf("#figure .lbg") === 0) { lsRule = r; }
+      if (!furRule && data.els && r.selectorText === "#figure .fo.end text:not([transform])") { furRule = r; }
     });
   });
   // While a given is dragged (jump(true)), a new letter scale or zoom level is a frame of its own: it restyles
@@ -332,14 +334,6 @@ li a.later{color:#bbb}
   // the far side of that band from where the drag is heading (18 % larger, 3 % smaller), which lasts a change
   // of a quarter in the figure's size, not of 4 %; it keeps the shown zoom level while the magnification is
   // within a fifth of that level's range.  Letting go of the slider sets both exactly.
-  var furRule = null;  // the end state's plate lettering (data.els: the letter scale it was set for)
-  if (data.els) {
-    Array.prototype.forEach.call(document.styleSheets, function (sh) {
-      Array.prototype.forEach.call(sh.cssRules, function (r) {
-        if (!furRule && r.selectorText === "#figure .fo.end text:not([transform])") { furRule = r; }
-      });
-    });
-  }
   var DRAG_SMALLER = 0.04, DRAG_LARGER = 0.2, DRAG_SET_SMALLER = 0.03, DRAG_SET_LARGER = 0.18, DRAG_LEVEL = 1.2;
   var dragFrom = null;  // the whole figure's canvas pixels per screen pixel at the last view shown
   function put(v, r, drag) {  // show view *v*: letters and points at their screen size (12 px, never below 9.5 px)

@@ -80,28 +80,40 @@ def _largest_radius(live: LiveSweep) -> float:
     return float(max(np.max(live.drawn[:, r]), 1.0)) if r.any() else 1.0
 
 
-def _knots(live: LiveSweep, kinds: np.ndarray, columns: np.ndarray | None = None) -> np.ndarray:
+def _knots(live: LiveSweep, kinds: np.ndarray, columns: np.ndarray | None = None,
+           across: np.ndarray | None = None) -> np.ndarray:
     """The grid values each column needs when stored as *kinds* says (see :func:`column_knots`); only the
-    *columns* given, if given (each column walks the tree alone: the others' are left as they are)."""
+    *columns* given, if given (each column walks the tree alone: the others' are left as they are).  *across*:
+    the drawn numbers turned on their side (columns x grid values), if the caller has them (both walks of
+    :func:`column_knots` read them)."""
     columns = np.arange(live.drawn.shape[1]) if columns is None else columns
-    drawn = live.drawn[:, columns]
-    rows, cols = drawn.shape
+    across = np.ascontiguousarray(live.drawn.T) if across is None else across
+    rows, cols = live.drawn.shape[0], columns.size
     u = np.asarray(live.u if live.u is not None else np.log10(live.grid), dtype=float)
-    keep = np.zeros((rows, live.drawn.shape[1]), dtype=bool)
+    keep = np.zeros(live.drawn.shape, dtype=bool)
     keep[:, live.nearest_columns()] = True
     kinds = kinds[columns]
-    quanta = _quanta(live, kinds)
-    q = np.round(as_stored(drawn, live.fit, kinds) / quanta) * quanta
     start = live.start or rows
     # the starting values of the refinement: evenly spaced in log10 (live_sweep's np.linspace)
     firsts = sorted({int(np.argmin(np.abs(u - x))) for x in np.linspace(u[0], u[-1], start)})
     # The columns walk the tree in the order of their kinds, each column's values in a row of its own: a cell's
     # open columns of one kind are drawn from the grid values inside it by one formula over a block (as_drawn's,
     # with the rows' fit broadcast), the values gathered in runs; which columns are still open is asked of all.
+    # Each kind's block is stored and quantised as encode stores it (as_stored, the kind's quantum), the rows'
+    # fit broadcast along the block (the same arithmetic, number by number, as on the grid's side).
     kinds = kinds if live.fit is not None else np.zeros(cols, dtype=np.int8)
     order = np.argsort(kinds, kind="stable")
+    walked = columns[order]
+    dt = across if cols == across.shape[0] and (walked == np.arange(cols)).all() else across[walked]
     bounds = np.searchsorted(kinds[order], np.arange(LOG + 2))
-    qt, dt = np.ascontiguousarray(q[:, order].T), np.ascontiguousarray(drawn[:, order].T)
+    qt = np.empty(dt.shape)
+    for kind in range(LOG + 1):
+        b0, b1 = bounds[kind], bounds[kind + 1]
+        if b1 > b0:
+            quantum = _quanta(live, np.full(1, kind, dtype=np.int8))[0]
+            block = as_stored(dt[b0:b1].T, live.fit, np.full(b1 - b0, kind, dtype=np.int8)).T
+            np.round(block / quantum, out=qt[b0:b1])
+            qt[b0:b1] *= quantum
     fit = live.fit if live.fit is not None else np.zeros((rows, 3))
     ox, oy, sc = fit[:, 0], fit[:, 1], fit[:, 2]
 
@@ -162,7 +174,7 @@ def _knots(live: LiveSweep, kinds: np.ndarray, columns: np.ndarray | None = None
         rest = at[~done]
         if rest.size:
             todo += [(i, m, rest), (m, j, rest)]
-    keep[:, columns[order]] |= shut
+    keep[:, walked] |= shut
     return keep
 
 
@@ -195,11 +207,12 @@ def column_knots(live: LiveSweep) -> tuple[np.ndarray, np.ndarray]:
     # a radius that rounds to nothing somewhere (an arc about a point it is struck from, at L/r = 600) has no
     # logarithm there: a length
     natural = np.where((natural == LOG) & (live.drawn.min(axis=0) <= 0.0), LENGTH, natural).astype(np.int8)
-    as_drawn = _knots(live, np.zeros(cols, dtype=np.int8))
+    across = np.ascontiguousarray(live.drawn.T)  # (each column's values in a row: both walks read them so)
+    as_drawn = _knots(live, np.zeros(cols, dtype=np.int8), across=across)
     if not natural.any():
         return as_drawn, natural
     # (a number of the drawing only is stored as drawn either way: walked once)
-    as_built = _knots(live, natural, np.flatnonzero(natural))
+    as_built = _knots(live, natural, np.flatnonzero(natural), across)
     as_built[:, natural == 0] = as_drawn[:, natural == 0]
     built = as_built.sum(axis=0) < as_drawn.sum(axis=0)
     return np.where(built, as_built, as_drawn), np.where(built, natural, 0).astype(np.int8)

@@ -111,6 +111,9 @@ class SweepDrawing:
         on = on_curve_names(protocol.steps, set(points))
         # the figure's extent before the marks are drawn: every point, every curve's points
         xs, ys = [np.vstack([p[0] for p in points.values()])], [np.vstack([p[1] for p in points.values()])]
+        # every point's row in those (the points marked on lines and circles are gathered from them: _marked)
+        self._point_rows = {k: i for i, k in enumerate(points)}
+        self._point_xy = (xs[0], ys[0])
         curves: dict[str, list[tuple]] = {}
         areas: dict[str, list[tuple]] = {}  # an area's pieces at each value, each a ring of points
         for name, o in objects.items():
@@ -223,23 +226,28 @@ class SweepDrawing:
         tol = 1e-9 * np.maximum(span, 1.0)
         on = on_curve_names(protocol.steps, set(points), set(shown))
         shown_pts = [k for k in sorted(shown) if k in points]
+        # the shown points as rows (points x values): which of them lie on a mark is asked of all at once
+        shown_xy = tuple(np.vstack([points[k][c] for k in shown_pts]) for c in (0, 1)) if shown_pts else None
         lines_too = bool(protocol.params.get("plate"))
         out: dict[str, np.ndarray] = {}
         st, scale = self.style, self._page[2]
         for m in ends:
             obj = objects.get(m.name)
             marked = [points[p] for p in dict.fromkeys(on.get(m.name, []))]
-            if isinstance(obj, Circle) or (isinstance(obj, Line) and lines_too):
+            if shown_xy is not None and (isinstance(obj, Circle) or (isinstance(obj, Line) and lines_too)):
                 # every shown point lying on it, as the built figure found them (elsewhere: value by value)
-                for k in shown_pts:
+                lying = self._lies_on(obj, shown_xy, tol)
+                every = lying.all(axis=1)
+                for at in np.flatnonzero(lying.any(axis=1)).tolist():  # (a point on it nowhere does nothing)
+                    k = shown_pts[at]
                     if k in on.get(m.name, []):
                         continue
-                    near = self._lies_on(obj, points[k], tol)
-                    if near.all() or (near.any() and marked):
+                    near = lying[at]
+                    if every[at] or marked:
                         # (where it does not lie on it: a point marked there already, twice, which draws the same)
-                        marked.append(points[k] if near.all() else
+                        marked.append(points[k] if every[at] else
                                       tuple(np.where(near, points[k][c], marked[0][c]) for c in (0, 1)))
-                    elif near.any():
+                    else:
                         self.ok &= ~near
             if m.kind is MarkKind.POINT and m.name in points:
                 x, y = self._shifted(*points[m.name])
@@ -282,7 +290,7 @@ class SweepDrawing:
         return out
 
     def _lies_on(self, curve: Any, p: tuple, tol: np.ndarray) -> np.ndarray:
-        """marks.lies_on over the sweep: where point *p* (x, y arrays) lies on *curve*."""
+        """marks.lies_on over the sweep: where point *p* (x, y arrays: values, or points x values) lies on *curve*."""
         vec = self._vec
         if isinstance(curve, Circle):
             cx, cy, r = vec(curve.center.x), vec(curve.center.y), vec(curve.radius)
@@ -432,11 +440,11 @@ class SweepDrawing:
 
     def _marked(self, names: list[list[str]]) -> tuple[np.ndarray, np.ndarray]:
         """The points *names* (as many for each row) as arrays (rows x points x values): x and y."""
-        points = self._sources[1]
         shape = (len(names), len(names[0]) if names else 0, self.n)
-        X = np.array([[points[p][0] for p in row] for row in names]).reshape(shape)
-        Y = np.array([[points[p][1] for p in row] for row in names]).reshape(shape)
-        return X, Y
+        at = self._point_rows
+        rows = np.fromiter((at[p] for row in names for p in row), dtype=np.intp, count=shape[0] * shape[1])
+        X, Y = self._point_xy
+        return X[rows].reshape(shape), Y[rows].reshape(shape)
 
     def _round(self, kind: MarkKind, got: tuple, margin: np.ndarray) -> tuple:
         """marks.circle_extent over the sweep for all the circles (or all the arcs) at once: whole, or the arc over

@@ -298,7 +298,7 @@ class Measure:
         _, rows_of, starts, boxed = found
         box = np.full((4, len(boxed), size), np.nan)  # per group: x0, y0, x1, y1 on the page of every value
         if rows_of.size:
-            ends = [np.vstack([e[k] for e in at_once.extremes.values()])[rows_of] for k in range(4)]
+            ends = [at_once.extreme_rows[k][rows_of] for k in range(4)]
             least, most = np.minimum.reduceat, np.maximum.reduceat
             box[:, boxed] = (*px(least(ends[0], starts, axis=0), most(ends[3], starts, axis=0)),
                              *px(most(ends[1], starts, axis=0), least(ends[2], starts, axis=0)))

@@ -184,6 +184,11 @@ class SweepDrawing:
         for key, e in ext.items():
             for i, m in enumerate(self._members(key)):
                 self.extremes[m.id] = (e[0][i], e[1][i], e[2][i], e[3][i])
+        #: the boxes of :attr:`extremes` as four arrays (marks in its order x values: x0, x1, y0, y1), stacked from
+        #: the kinds' blocks (a reader of every box takes them so, not mark by mark)
+        blocks = list(ext.values()) if sum(len(e[0]) for e in ext.values()) == len(self.extremes) else \
+            list(self.extremes.values())  # (a mark drawn twice: its last box, mark by mark)
+        self.extreme_rows = tuple(np.vstack([e[k] for e in blocks] or [np.zeros((0, n))]) for k in range(4))
         for key, nums in self._numbers().items():
             for i, m in enumerate(self._members(key)):
                 self.numbers[m.id] = nums[i]
@@ -380,6 +385,7 @@ class SweepDrawing:
         self.curves = curve_geoms
         self._unbroken_curves = dict(curve_geoms)
         self.curve_marks = [m for m in self.marks if m.id in curve_geoms]
+        self._curve_mark = {m.id: m for m in self.curve_marks}
         self._broken = None
         #: per axis: (broken at which values, where the drawn break starts, its drawn width, what it leaves out)
         self._breaks: dict[int, tuple] = {}
@@ -467,7 +473,7 @@ class SweepDrawing:
         """The marks of one row block: a kind's marks, or one curve (its id), or the lettered lines' points."""
         if isinstance(key, MarkKind):
             return self.rows[key]
-        return [m for m in self.curve_marks if m.id == key] if key != "-at" else self.at_marks
+        return [self._curve_mark[key]] if key != "-at" else self.at_marks
 
     # -- the marks ---------------------------------------------------------------------------------------
     def _segment(self, line: Line, marked: list, margin: np.ndarray, key: Any) -> tuple:

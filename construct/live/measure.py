@@ -280,7 +280,7 @@ class Measure:
                 if ident in furniture:
                     at_once.numbers[ident] = table[:, at:at + count]
                     at += count
-        rows = np.hstack([at_once.numbers[i] for i, _ in runs])
+        rows = np.concatenate([at_once.numbers[i] for i, _ in runs], axis=1)  # (each a values x numbers block)
         width, height = (np.round(v, 2) for v in at_once.size)
         px = at_once.page_px
 

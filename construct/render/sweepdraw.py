@@ -62,7 +62,7 @@ def _curve_rows(o: Any, n: int, vec: Any) -> tuple[np.ndarray, np.ndarray, np.nd
         return flat[:, 0], flat[:, 1], np.full(n, flat.shape[0])
     if isinstance(o, Polyline):
         pts = o.points + ((o.points[0],) if o.closed else ())
-        X, Y = np.vstack([vec(p.x) for p in pts]), np.vstack([vec(p.y) for p in pts])
+        X, Y = _stack([vec(p.x) for p in pts]), _stack([vec(p.y) for p in pts])
         return X, Y, np.full(n, len(pts))
     rows = [take(o, i).curve_points() for i in range(n)]
     counts = np.array([len(r) for r in rows])
@@ -71,6 +71,12 @@ def _curve_rows(o: Any, n: int, vec: Any) -> tuple[np.ndarray, np.ndarray, np.nd
         X[:len(r), i] = [p[0] for p in r]
         Y[:len(r), i] = [p[1] for p in r]
     return X, Y, counts
+
+
+def _stack(rows: Any) -> np.ndarray:
+    """Rows over the values (1-D arrays, each as long) as one array (rows x values): np.vstack's, without its
+    Python for each row (a round stacks the rows of thousands of points and curve points)."""
+    return np.array(rows, dtype=float)
 
 
 def _r2(v: np.ndarray) -> np.ndarray:
@@ -110,7 +116,7 @@ class SweepDrawing:
         points = {k: (vec(o.x), vec(o.y)) for k, o in objects.items() if isinstance(o, Point)}
         on = on_curve_names(protocol.steps, set(points))
         # the figure's extent before the marks are drawn: every point, every curve's points
-        xs, ys = [np.vstack([p[0] for p in points.values()])], [np.vstack([p[1] for p in points.values()])]
+        xs, ys = [_stack([p[0] for p in points.values()])], [_stack([p[1] for p in points.values()])]
         # every point's row in those (the points marked on lines and circles are gathered from them: _marked)
         self._point_rows = {k: i for i, k in enumerate(points)}
         self._point_xy = (xs[0], ys[0])
@@ -188,7 +194,7 @@ class SweepDrawing:
         #: the kinds' blocks (a reader of every box takes them so, not mark by mark)
         blocks = list(ext.values()) if sum(len(e[0]) for e in ext.values()) == len(self.extremes) else \
             list(self.extremes.values())  # (a mark drawn twice: its last box, mark by mark)
-        self.extreme_rows = tuple(np.vstack([e[k] for e in blocks] or [np.zeros((0, n))]) for k in range(4))
+        self.extreme_rows = tuple(np.concatenate([e[k] for e in blocks] or [np.zeros((0, n))]) for k in range(4))
         for key, nums in self._numbers().items():
             for i, m in enumerate(self._members(key)):
                 self.numbers[m.id] = nums[i]
@@ -210,8 +216,8 @@ class SweepDrawing:
         shown = template.essentials
         n, vec = self.n, self._vec
         # the plate's margin: of the points and curves it shows, unbroken
-        xs = [np.vstack([points[k][0] for k in points if k in shown] or [np.zeros(n)])]
-        ys = [np.vstack([points[k][1] for k in points if k in shown] or [np.zeros(n)])]
+        xs = [_stack([points[k][0] for k in points if k in shown] or [np.zeros(n)])]
+        ys = [_stack([points[k][1] for k in points if k in shown] or [np.zeros(n)])]
         with np.errstate(invalid="ignore"):
             for k, (CX, CY, _) in curves.items():
                 if k in shown:
@@ -232,7 +238,7 @@ class SweepDrawing:
         on = on_curve_names(protocol.steps, set(points), set(shown))
         shown_pts = [k for k in sorted(shown) if k in points]
         # the shown points as rows (points x values): which of them lie on a mark is asked of all at once
-        shown_xy = tuple(np.vstack([points[k][c] for k in shown_pts]) for c in (0, 1)) if shown_pts else None
+        shown_xy = tuple(_stack([points[k][c] for k in shown_pts]) for c in (0, 1)) if shown_pts else None
         lines_too = bool(protocol.params.get("plate"))
         out: dict[str, np.ndarray] = {}
         st, scale = self.style, self._page[2]
@@ -319,7 +325,7 @@ class SweepDrawing:
     def _kept_span(self) -> np.ndarray:
         """sheet.kept_span over the sweep: what the points and curves span once broken alone."""
         objects, points, on, curves, areas = self._sources
-        P = tuple(np.vstack(c) for c in zip(*[points[m.name] for m in self.marks
+        P = tuple(_stack(c) for c in zip(*[points[m.name] for m in self.marks
                                                if m.kind is MarkKind.POINT and m.name in points]))
         saved = (self.geoms, self.curves, self._broken, self._breaks)
         self.geoms = {k: (P if k is MarkKind.POINT else ()) for k in MarkKind}
@@ -327,8 +333,8 @@ class SweepDrawing:
         self._broken, self._breaks = None, {}
         self._break()
         self._break(axis=1)
-        cx = [self.geoms[MarkKind.POINT][0]] + [np.vstack([c[0] for c in pts]) for pts in self.curves.values()]
-        cy = [self.geoms[MarkKind.POINT][1]] + [np.vstack([c[1] for c in pts]) for pts in self.curves.values()]
+        cx = [self.geoms[MarkKind.POINT][0]] + [_stack([c[0] for c in pts]) for pts in self.curves.values()]
+        cy = [self.geoms[MarkKind.POINT][1]] + [_stack([c[1] for c in pts]) for pts in self.curves.values()]
         self.geoms, self.curves, self._broken, self._breaks = saved
         KX, KY = np.vstack(cx), np.vstack(cy)
         with np.errstate(invalid="ignore"):  # (a curve of another number of points: not ok there)
@@ -419,7 +425,7 @@ class SweepDrawing:
                 raise ValueError(f"{m.id}: a {m.kind.value} the sweep does not draw")
         out: dict[MarkKind, tuple] = {}
         if by[MarkKind.POINT]:
-            out[MarkKind.POINT] = tuple(np.vstack(c) for c in zip(*by[MarkKind.POINT]))
+            out[MarkKind.POINT] = tuple(_stack(c) for c in zip(*by[MarkKind.POINT]))
         if by[MarkKind.SEGMENT]:
             lines = by[MarkKind.SEGMENT]
             P = np.array([[vec(o.p.x), vec(o.p.y), vec(o.q.x), vec(o.q.y)] for o, _ in lines])
@@ -511,7 +517,7 @@ class SweepDrawing:
                 self._arcs_reach = (a0, _ArcReach(r, a0, sw))
             out[MarkKind.ARC] = self._arcs_reach[1].box(cx, cy)
         for m in self.curve_marks:
-            X, Y = np.vstack([p[0] for p in self.curves[m.id]]), np.vstack([p[1] for p in self.curves[m.id]])
+            X, Y = _stack([p[0] for p in self.curves[m.id]]), _stack([p[1] for p in self.curves[m.id]])
             out[m.id] = (X.min(0)[None], X.max(0)[None], Y.min(0)[None], Y.max(0)[None])
         if getattr(self, "at_marks", None):
             x, y = self.at_geom
@@ -528,7 +534,7 @@ class SweepDrawing:
                  and not (key in self.curves and self._members(key)[0].straight and len(self.curves[key]) == 2)]
         if sum(s.shape[0] for s, _ in spans) < 2:
             return
-        S, E = np.vstack([s for s, _ in spans]), np.vstack([e for _, e in spans])
+        S, E = np.concatenate([s for s, _ in spans]), np.concatenate([e for _, e in spans])  # (blocks of rows)
         lo, hi, width, total = _widest_gaps(S, E)
         brk = (width > 0) & (width > (BREAK_FRACTION if axis == 0 else BREAK_FRACTION_Y) * total)
         if not brk.any():
@@ -672,7 +678,7 @@ class SweepDrawing:
             if m.kind is MarkKind.AREA:  # (the page draws areas from their curves)
                 continue
             pts = self.curves[m.id]
-            X, Y = self._px(np.vstack([p[0] for p in pts]), np.vstack([p[1] for p in pts]))  # points x values
+            X, Y = self._px(_stack([p[0] for p in pts]), _stack([p[1] for p in pts]))  # points x values
             k = X.shape[0]
             if m.straight:
                 closed = k > 2 and tuple(m.geom[0]) == tuple(m.geom[-1])

@@ -37,6 +37,9 @@ STORED_PX = 0.1
 #: own blending error the refinement held under REFINE_PX at the parent cell's midpoint (about a quarter of
 #: that at a cell's own), so a drawn coordinate stays under 0.5 px (measured at fresh values by the tests).
 ROW_PX = 0.35
+#: A cell's open columns of one kind are read as one run of columns (a view, the others among them dropped after)
+#: while the run is at most this many times as many columns.
+NEARLY_A_RUN = 1.5
 _PATH = re.compile(r"^[MLCZ# ,]*$")
 
 
@@ -145,13 +148,18 @@ def _knots(live: LiveSweep, kinds: np.ndarray, columns: np.ndarray | None = None
         for kind in range(LOG + 1):
             a0, a1 = edges[kind], edges[kind + 1]
             if a1 > a0:
-                g = at[a0:a1] if at[a1 - 1] - at[a0] >= a1 - a0 else slice(at[a0], at[a1 - 1] + 1)  # (a run: a view)
+                # a run of columns, or nearly one (most of a cell's columns hold at its midpoint and are then
+                # asked at every grid value inside it), is read as a view, the few columns between dropped after:
+                # a gathered copy of the block costs more than the numbers of the columns read for nothing
+                span = at[a1 - 1] + 1 - at[a0]
+                g = slice(at[a0], at[a1 - 1] + 1) if span <= NEARLY_A_RUN * (a1 - a0) else at[a0:a1]
                 a = qt[g, i][:, None]
                 line = (qt[g, j][:, None] - a) * t
                 line += a
                 miss = drawn_as(kind, line, r)
                 miss -= dt[g, r]
-                err[a0:a1] = np.abs(miss, out=miss).max(axis=1)
+                worst = np.abs(miss, out=miss).max(axis=1)
+                err[a0:a1] = worst if type(g) is not slice or span == a1 - a0 else worst[at[a0:a1] - at[a0]]
         return err
 
     shut = np.zeros((rows, cols), dtype=bool)  # (in the columns' walking order)

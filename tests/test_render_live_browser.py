@@ -981,26 +981,63 @@ def test_the_end_states_plate_lettering_keeps_the_letters_size_on_the_screen(bro
     """The committed gallery's inertia curve at its last step (the end state, its plate lettering "1 at", "L = ∞"
     set for the letter scale of the book's value): dragged to L/r = 1.5 and 50, where the figure and so its view
     grow or shrink, an upright lettering of the plate stays as tall on the screen as the end state's letters (q₁,
-    A, B: the player scales both by its letter scale) -- it was drawn at 0.64 of their height at 1.5.  (A turned
-    one, F/f along its dimension, still keeps the book's value's size: not scaled yet.)"""
+    A, B: the player scales both by its letter scale) -- it was drawn at 0.64 of their height at 1.5.  So does a
+    turned one (F/f, m along their dimensions, turned a right angle: their box's width is their height), about its
+    turn: its box's middle stays where the attribute turns it (it kept the book value's size, half the letters' at
+    1.5).  And the arrowheads and a scale's ticks, drawn at the letters' size, keep their size beside the letters
+    (as long over a letter's height as at the book's value), each arrowhead's tip where the furniture puts it."""
     path = REPO / "gallery" / "inertia-curve-rod-ratio-4" / "teaching" / "player.html"
     if not path.is_file():
         pytest.skip("no committed gallery in this checkout")
     page, errors = _open(browser, path)
     _at(page, "end")
-    heights = """() => { const h = e => e.getBoundingClientRect().height;
+    heights = """() => { const h = e => e.getBoundingClientRect().height, m = document.getElementById('figure').getScreenCTM();
+        const on = e => e.getClientRects().length && getComputedStyle(e.parentNode).display !== 'none';
+        const screen = (x, y) => [m.a * x + m.c * y + m.e, m.b * x + m.d * y + m.f];
         const fur = Array.from(document.querySelectorAll('#figure .fo.end text.fur-text:not([transform])'))
-          .filter(t => t.getClientRects().length && !t.firstElementChild && t.textContent.trim().length > 1);
-        const lbs = Array.from(document.querySelectorAll('#figure .lbg.pf > text.lb:not(.halo)'))
-          .filter(t => t.getClientRects().length && getComputedStyle(t.parentNode).display !== 'none');
-        const med = a => a.sort((x, y) => x - y)[Math.floor(a.length / 2)];
-        return [med(fur.map(h)), med(lbs.map(h)), fur.length, lbs.length]; }"""
+          .filter(t => on(t) && !t.firstElementChild && t.textContent.trim().length > 1);
+        const lbs = Array.from(document.querySelectorAll('#figure .lbg.pf > text.lb:not(.halo)')).filter(on);
+        const turned = Array.from(document.querySelectorAll('#figure .fo.end text.fur-text[transform]')).filter(on).map(t => {
+          const r = t.getBoundingClientRect(), a = t.getAttribute('transform').match(/-?[0-9.]+/g).map(Number), c = screen(a[1], a[2]);
+          return [Math.abs(Math.sin(a[0] * Math.PI / 180)) > 0.999 ? r.width : null, r.left + r.width / 2 - c[0], r.top + r.height / 2 - c[1]]; });
+        // (an arrowhead's and a tick's size on the screen over its size in the figure's numbers: the scale the page
+        // draws it at, which is to be the plate's lettering's; an arrowhead's tip where its numbers put it)
+        const k = Math.hypot(m.a, m.b), span = p => Math.max(...p.filter((_, i) => i % 2 === 0)) - Math.min(...p.filter((_, i) => i % 2 === 0))
+          || Math.max(...p.filter((_, i) => i % 2)) - Math.min(...p.filter((_, i) => i % 2));
+        const arrows = Array.from(document.querySelectorAll('#figure .fo.end path.arrow')).filter(on).map(e => {
+          const r = e.getBoundingClientRect(), d = e.getAttribute('d').match(/-?[0-9.]+/g).map(Number), tip = screen(d[0], d[1]);
+          const vertical = Math.abs(d[0] - d[2]) < Math.abs(d[1] - d[3]);
+          return [(vertical ? r.height : r.width) / (k * Math.abs(vertical ? d[1] - d[3] : d[0] - d[2])),
+                  Math.hypot(tip[0] - Math.min(Math.max(tip[0], r.left), r.right), tip[1] - Math.min(Math.max(tip[1], r.top), r.bottom))
+                  + Math.min(Math.abs(tip[0] - r.left), Math.abs(tip[0] - r.right), Math.abs(tip[1] - r.top), Math.abs(tip[1] - r.bottom))]; });
+        const ticks = Array.from(document.querySelectorAll('#figure .fo.end line.sc')).filter(on).map(e => {
+          const r = e.getBoundingClientRect(), p = ['x1', 'y1', 'x2', 'y2'].map(a => +e.getAttribute(a));
+          return Math.max(r.width, r.height) / (k * span(p)); });
+        const lettering = fur.length ? +getComputedStyle(fur[0]).scale : null;
+        const med = a => a.slice().sort((x, y) => x - y)[Math.floor(a.length / 2)];
+        return {fur: med(fur.map(h)), letter: med(lbs.map(h)), nf: fur.length, nl: lbs.length, turned: turned,
+                lettering: lettering, arrows: arrows.map(a => a[0]), tips: arrows.map(a => a[1]), ticks: ticks}; }"""
+    book = page.evaluate(heights)
+    assert len(book["ticks"]) >= 2 and len(book["tips"]) >= 4, book
     for v in (1.5, 50.0):
         _drag_to(page, "rod_ratio", v)
         page.evaluate("() => new Promise(r => { document.querySelector('#live input[type=range]').dispatchEvent(new Event('change')); setTimeout(r, 900); })")
-        fur, letter, nf, nl = page.evaluate(heights)
-        assert nf >= 2 and nl >= 5, (v, nf, nl)
+        got = page.evaluate(heights)
+        fur, letter = got["fur"], got["letter"]
+        assert got["nf"] >= 2 and got["nl"] >= 5, (v, got)
         # (as tall as the letters to a fifth: the plate's lettering is set at the letters' size)
         assert 0.8 <= fur / letter <= 1.25, (v, fur, letter)
+        right = [t for t in got["turned"] if t[0] is not None]
+        assert len(right) >= 2, (v, got["turned"])
+        for height, dx, dy in right:
+            assert 0.8 <= height / letter <= 1.25, (v, height, letter)
+            # (its middle on its turn: the text is set about it, to a quarter of a letter's height)
+            assert math.hypot(dx, dy) <= 0.25 * letter, (v, dx, dy, letter)
+        # (each arrowhead and tick drawn at the lettering's scale, to a twentieth: their numbers are the furniture's
+        # at the book's letter size, as the lettering's are)
+        assert v != 1.5 or got["lettering"] > 1.2, got["lettering"]  # (the letters larger than the book value's)
+        for what in ("arrows", "ticks"):
+            assert got[what] and all(abs(x / got["lettering"] - 1) <= 0.05 for x in got[what]), (v, what, got[what])
+        assert max(got["tips"]) <= 0.5, (v, got["tips"])
     assert not errors, errors
     page.close()

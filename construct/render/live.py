@@ -653,6 +653,7 @@ LIVE_SCRIPT = r"""
     fillStale();
     if (!S) return;
     S.slots.forEach(write);
+    if (player && player.pin) player.pin();
     followers.forEach(follow);
     breakMarks(true);
     drawAreas(true);
@@ -771,6 +772,7 @@ LIVE_SCRIPT = r"""
     if (player) view(!glide, dragging);
     seeing();  // (a new zoom level or end state: which marks are hidden)
     drawMarks();
+    if (player && player.pin) player.pin();  // (the end state's turned texts and arrowheads about their new anchors)
     drawAreas();
     breakMarks();
     // readings of the figure (an angle to the minute, a dimension's value): as read at the nearer grid value

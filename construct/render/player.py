@@ -226,7 +226,10 @@ main{display:flex;gap:12px;padding:8px 16px;align-items:flex-start}
 #inset .ilb{fill:#c2255c;font-family:'DejaVu Sans',sans-serif;paint-order:stroke;stroke:#fff;stroke-width:.25em}
 #figure{width:100%;height:auto;aspect-ratio:{{ASPECT}};max-height:70vh;border:1px solid #ccc;background:#fff;display:block}
 #figure .lbg>*,#figure .pt{--ls:1;transform:scale(var(--ls))}
-#figure .fo.end text:not([transform]){transform-box:fill-box;transform-origin:center}
+#figure .fo.end text:not([transform]),#figure .fo.end .sc{transform-box:fill-box;transform-origin:center}
+#figure .fo.end text:not([transform])[style*="text-anchor:start"]{transform-origin:left center}
+#figure .fo.end text:not([transform])[style*="text-anchor:end"]{transform-origin:right center}
+#figure .fo.end text[transform],#figure .fo.end path.arrow{transform-box:view-box;transform-origin:0 0}
 #controls{display:flex;gap:6px;align-items:center;margin:8px 0;flex-wrap:wrap}
 #controls button{font:inherit;padding:3px 10px;min-width:2.4em}
 #slider{flex:1 1 200px}
@@ -325,7 +328,7 @@ li a.later{color:#bbb}
   Array.prototype.forEach.call(document.styleSheets, function (sh) {
     Array.prototype.forEach.call(sh.cssRules, function (r) {
       if (!lsRule && r.selectorText && r.selectorText.indexOf("#figure .lbg") === 0) { lsRule = r; }
-      if (!furRule && data.els && r.selectorText === "#figure .fo.end text:not([transform])") { furRule = r; }
+      if (!furRule && data.els && r.selectorText && r.selectorText.indexOf("#figure .fo.end text:not([transform])") === 0) { furRule = r; }
     });
   });
   // While a given is dragged (jump(true)), a new letter scale or zoom level is a frame of its own: it restyles
@@ -359,9 +362,9 @@ li a.later{color:#bbb}
     dragFrom = qf;
     if (ls !== was) {
       lsAt.setProperty("--ls", ls);
-      // the end state's plate lettering about its own middle, at the letters' size; 1 where the end state was
-      // laid out (a turned text not: a transform origin at its middle would move its turn, the attribute's)
-      if (furRule) { furRule.style.setProperty("scale", (ls / data.els).toFixed(4)); }
+      // the end state's plate lettering (and a scale's ticks, a dot: .sc) about its own middle, at the letters'
+      // size; 1 where the end state was laid out.  Its turned texts and arrowheads about their anchors: pin
+      if (furRule) { furScale = (ls / data.els).toFixed(4); furRule.style.setProperty("scale", furScale); pin(); }
     }
     var ring = document.getElementById("ring");
     if (ring) {
@@ -370,6 +373,25 @@ li a.later{color:#bbb}
         ring.setAttribute("cx", ringAt[0]); ring.setAttribute("cy", ringAt[1]);
         ring.setAttribute("r", Math.max(ringAt[2], 9 * q).toFixed(2));
       }
+    }
+  }
+  // The end state's turned texts (F/f along its dimension) and arrowheads are scaled with its upright lettering, but
+  // about their anchor -- the turn's centre, the arrow's tip -- which the given moves: a transform origin there
+  // would move the turn too (the attribute turns about its own centre, and an origin shifts the whole transform),
+  // so each is scaled about the figure's origin and moved back by (1 - s) times its anchor (translate and scale
+  // come before the attribute's turn).  Asked again when the live given writes them (constructLive: pin).
+  var pinned = null, furScale = "1", TURN = /rotate[(] *[-0-9.e]+[ ,]+([-0-9.e]+)[ ,]+([-0-9.e]+)/, TIP = /^M *([-0-9.e]+)[ ,]+([-0-9.e]+)/;
+  function pin() {
+    if (!data.els) { return; }
+    if (!pinned) { pinned = Array.prototype.slice.call(svg.querySelectorAll("#furniture .fo.end text[transform], #furniture .fo.end path.arrow")); }
+    for (var i = 0; i < pinned.length; i++) {
+      var e = pinned[i], m = e.tagName === "text" ? TURN.exec(e.getAttribute("transform")) : TIP.exec(e.getAttribute("d"));
+      var key = m ? furScale + " " + m[1] + " " + m[2] : "";
+      if (!m || e.pinned === key) { continue; }
+      e.pinned = key;
+      var s = +furScale;
+      e.style.translate = ((1 - s) * m[1]).toFixed(3) + "px " + ((1 - s) * m[2]).toFixed(3) + "px";
+      e.style.scale = furScale;
     }
   }
   function move(to) {  // the viewBox from where it is to *to* in a third of a second
@@ -586,7 +608,7 @@ li a.later{color:#bbb}
       lean = true;
       groups.forEach(function (g, i) { places[i] = document.createComment("step " + g.getAttribute("data-step")); place(i); });
     },
-    target: target,
+    target: target, pin: pin,
     jump: function (drag) {  // *drag*: as a given's drag draws it (the view, the letters' scale and level kept near)
       if (anim) { cancelAnimationFrame(anim); anim = null; }
       // the figure's box read once, before the level's class is set (a read after it would restyle the figure twice)

@@ -134,6 +134,13 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         st["p"] = p  # its group path in the step list (the script builds the list)
     data = {"n": n, "steps": steps, "groups": list(groups), "views": [list(v) for v in views],
             "levels": list(ZOOM_LEVELS), "dt": round(1000 * STEP_SECONDS), "titles": titles, "paths": paths}
+    if style.hatch:
+        # an area's hatching as the style draws it (render/paths.py hatch_segments), which a live given draws anew:
+        # its lines' spacing (canvas px) and each area's angle (a signed area's pieces turn with their sign: held)
+        deg = {m.id: 45.0 if m.hatch is None else m.hatch for m in scene.marks
+               if m.kind is MarkKind.AREA and "signed" not in m.look.split()}
+        if deg:
+            data["hatch"] = {"px": style.hatch_spacing, "deg": deg}
     if d.end is not None:
         data["end"] = 1  # the last step shows the end state (the figure's class fin)
         # its letter scale as laid out: the plate's lettering in it (the furniture's texts, set at that scale's size

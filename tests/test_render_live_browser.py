@@ -466,7 +466,8 @@ def test_while_dragging_the_camera_and_the_zoom_level_stay_while_near_and_let_go
     n = page.evaluate("window.constructPlayer.data.n")
     page.evaluate("() => { const s = document.getElementById('slider'); s.value = %d; s.oninput(); }" % (n // 2))
     page.wait_for_timeout(600)  # the camera's glide
-    state = """() => [document.getElementById('figure').getAttribute('viewBox').split(' ').map(Number),
+    # (the view shown: while a drag moves the camera, by the transform of the camera's group, the viewBox kept)
+    state = """() => [window.constructPlayer.view().map(v => Math.round(v * 100) / 100),
                       document.getElementById('figure').getAttribute('class')]"""
     view, level = page.evaluate(state)
     step_view = """([dx, f]) => { const p = window.constructPlayer, k = +document.getElementById('figure').getAttribute('data-step');
@@ -480,6 +481,19 @@ def test_while_dragging_the_camera_and_the_zoom_level_stay_while_near_and_let_go
     moved, _ = page.evaluate(state)
     room = lambda t: [t[0] - 0.05 * t[2], t[1] - 0.05 * t[3], 1.1 * t[2], 1.1 * t[3]]  # noqa: E731
     assert moved == pytest.approx(room(t), abs=0.01)
+    # and the figure is where that view puts it on the screen (centred in the figure's box, as a viewBox fits it),
+    # every shown point within half a pixel, though the viewBox is the one the drag found
+    where = """v => { const svg = document.getElementById('figure'), b = svg.getBoundingClientRect(), cs = getComputedStyle(svg);
+        const x0 = b.left + svg.clientLeft + parseFloat(cs.paddingLeft), y0 = b.top + svg.clientTop + parseFloat(cs.paddingTop);
+        const W = svg.clientWidth - parseFloat(cs.paddingLeft) - parseFloat(cs.paddingRight), H = svg.clientHeight
+          - parseFloat(cs.paddingTop) - parseFloat(cs.paddingBottom), s = Math.min(W / v[2], H / v[3]);
+        return [svg.getAttribute('viewBox'), Array.from(svg.querySelectorAll('circle.pt')).filter(c => c.getClientRects().length).map(c => {
+          const r = c.getBoundingClientRect(), x = +c.getAttribute('cx'), y = +c.getAttribute('cy');
+          return Math.hypot(r.left + r.width / 2 - (x0 + (W - s * v[2]) / 2 + s * (x - v[0])),
+                            r.top + r.height / 2 - (y0 + (H - s * v[3]) / 2 + s * (y - v[1]))); })]; }"""
+    box, off = page.evaluate(where, moved)
+    assert len(off) >= 3 and max(off) <= 0.5, off
+    assert [float(x) for x in box.split()] == pytest.approx(view, abs=0.01)  # (the drag's: not written)
     page.evaluate(step_view, [0.04, 1.0])  # moved by 4 % of its width, inside the room: held
     page.evaluate("() => window.constructPlayer.jump(true)")
     assert page.evaluate(state)[0] == moved
@@ -508,7 +522,7 @@ _CAMERA_DRAG = """async ([g, a, b]) => { const i = document.querySelector('#live
       await new Promise(r => requestAnimationFrame(r));
       const crank = Array.from(svg.querySelectorAll('g[data-step] circle[id$="-crank"]'))
         .filter(e => e.isConnected && getComputedStyle(e).display !== 'none')[0];
-      out.push([Math.pow(10, +i.value), svg.getAttribute('viewBox').split(' ').map(Number), p.target().slice(),
+      out.push([Math.pow(10, +i.value), p.view(), p.target().slice(),
                 crank ? crank.getBoundingClientRect().width : null]);
     }
     return out; }"""

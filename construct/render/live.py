@@ -726,7 +726,7 @@ LIVE_SCRIPT = r"""
       + "|" + svg.getAttribute("data-step") + "|" + window.innerWidth + "x" + window.innerHeight;
     if (key === boxKey && boxes) return true;
     // the figure's map to the screen (a layout of the page, forced after the frame's writes)
-    var ctm = svg.getScreenCTM();
+    var ctm = player && player.ctm ? player.ctm() : svg.getScreenCTM();  // (with the camera's transform in a drag)
     if (!ctm) return false;
     var s = Math.hypot(ctm.a, ctm.b);  // screen pixels per unit of the figure
     if (!s) return false;
@@ -742,7 +742,7 @@ LIVE_SCRIPT = r"""
     return true;
   }
   function pixel(){  // one screen pixel in the figure's units, in the view shown (the viewBox fitted into the box)
-    var v = (svg.getAttribute("viewBox") || "").split(/[ ,]+/).map(Number);
+    var v = player && player.view ? player.view() : (svg.getAttribute("viewBox") || "").split(/[ ,]+/).map(Number);
     var s = v.length === 4 && v[2] > 0 && v[3] > 0 ? Math.min(sized[0] / v[2], sized[1] / v[3]) : 0;
     return s > 0 ? 1 / s : 0;
   }

@@ -346,6 +346,27 @@ li a.later{color:#bbb}
   // within a fifth of that level's range.  Letting go of the slider sets both exactly.
   var DRAG_SMALLER = 0.04, DRAG_LARGER = 0.2, DRAG_SET_SMALLER = 0.03, DRAG_SET_LARGER = 0.18, DRAG_LEVEL = 1.2;
   var dragFrom = null;  // the whole figure's canvas pixels per screen pixel at the last view shown
+  // While a given is dragged a new view moves the figure by the transform of one group round it (the camera's),
+  // the viewBox kept as the drag found it: a new viewBox lays the whole figure out anew (5.1 ms of piston-force's
+  // frame at its last step), a group's new transform moves its painted picture (2.4 ms).  Letting go (put without
+  // *drag*) sets the viewBox and drops the transform.  view() is the view shown, ctm() the figure's map to the
+  // screen (the camera group's, transform and all).
+  var cam = null, camAt = null, camSet = "";
+  function aim(box, r) {  // show the view *box* (its text) by the camera's transform in the viewBox camAt
+    if (!cam) {  // (made at the first drag: every element of the figure but its style sheet, in their order)
+      cam = document.createElementNS(svg.namespaceURI, "g");
+      cam.setAttribute("id", "camera");
+      Array.prototype.slice.call(svg.childNodes).forEach(function (c) { if (c.nodeName !== "style") { cam.appendChild(c); } });
+      svg.appendChild(cam);
+    }
+    if (!camAt) { camAt = svg.getAttribute("viewBox").split(" ").map(Number); }
+    // each view fitted into the box (centred, its scale the smaller of the two): a point x of view v is where the
+    // viewBox camAt shows k x + t
+    var v = box.split(" ").map(Number), b = camAt, s = 1 / ratio(v, r), sb = 1 / ratio(b, r), k = s / sb;
+    var tx = b[0] + (sb * b[2] - s * v[2]) / 2 / sb - k * v[0], ty = b[1] + (sb * b[3] - s * v[3]) / 2 / sb - k * v[1];
+    var m = "matrix(" + k.toFixed(6) + " 0 0 " + k.toFixed(6) + " " + tx.toFixed(3) + " " + ty.toFixed(3) + ")";
+    if (m !== camSet) { camSet = m; cam.setAttribute("transform", m); }
+  }
   function put(v, r, drag) {  // show view *v*: letters and points at their screen size (12 px, never below 9.5 px)
     // the letter scale of the view's zoom level (the letters were placed for it): the level's picture
     // magnified as a whole, letters never smaller on the screen than at the level's own zoom
@@ -357,7 +378,11 @@ li a.later{color:#bbb}
     // written only when changed: a new --ls restyles every letter, a new viewBox repaints the figure
     var box = v.map(function (x) { return x.toFixed(2); }).join(" ");
     var exact = Math.min(Math.max(1, 9.5 * ql / 12), ql), ls = exact.toFixed(4), lsAt = lsRule ? lsRule.style : svg.style;
-    if (box !== svg.getAttribute("viewBox")) { svg.setAttribute("viewBox", box); }
+    if (drag && r.width && r.height) { aim(box, r); }
+    else {
+      if (camAt) { camAt = null; camSet = ""; cam.removeAttribute("transform"); }
+      if (box !== svg.getAttribute("viewBox")) { svg.setAttribute("viewBox", box); }
+    }
     var was = lsAt.getPropertyValue("--ls").trim();
     if (drag && was) {
       if (was >= exact * (1 - DRAG_SMALLER) && was <= exact * (1 + DRAG_LARGER)) { ls = was; }
@@ -616,6 +641,8 @@ li a.later{color:#bbb}
       groups.forEach(function (g, i) { places[i] = document.createComment("step " + g.getAttribute("data-step")); place(i); });
     },
     target: target, pin: pin,
+    view: function () { return now.slice(); },
+    ctm: function () { return (cam || svg).getScreenCTM(); },
     jump: function (drag) {  // *drag*: as a given's drag draws it (the view, the letters' scale and level kept near)
       if (anim) { cancelAnimationFrame(anim); anim = null; }
       // the figure's box read once, before the level's class is set (a read after it would restyle the figure twice)

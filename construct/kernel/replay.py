@@ -336,8 +336,9 @@ class Replay(Mapping[str, Any]):
         return Replay(self.protocol, objects, {k: take(v, i) for k, v in self._givens.items()})
 
     def made_by(self) -> dict[str, Step]:
-        """The step that made each object."""
-        return {name: step for step in self.protocol.steps for name in step.outputs}
+        """The step that made each object (:attr:`Protocol.makers <construct.kernel.protocol.Protocol.makers>`,
+        a copy of it)."""
+        return dict(self.protocol.makers)
 
     def objects_json(self) -> dict[str, Any]:
         return {name: object_json(obj) for name, obj in self._objects.items()}

@@ -1075,3 +1075,39 @@ def test_the_end_states_plate_lettering_keeps_the_letters_size_on_the_screen(bro
         assert max(got["tips"]) <= 0.5, (v, got["tips"])
     assert not errors, errors
     page.close()
+
+
+def test_the_rod_length_stands_on_a_break_the_shown_step_draws(browser):
+    """The committed gallery's inertia curve at its last step (the end state), dragged slowly with ``input``
+    events alone up to L/r = 50: the rod's length at a break is written only on a break whose marks the page
+    shows, where a fresh replay's end state writes it -- at 50 the end state draws no break (the lines the axis
+    break crosses are the construction's, which the end state leaves out), so nothing is written; it stood
+    alone at the window's left edge ("L = 50 r" on the axis's break, far out of the end state's view)."""
+    path = REPO / "gallery" / "inertia-curve-rod-ratio-4" / "teaching" / "player.html"
+    if not path.is_file():
+        pytest.skip("no committed gallery in this checkout")
+    c = get("inertia-curve")
+    page, errors = _open(browser, path)
+    _at(page, "end")
+    _at_step_view(page)
+    shown = """() => Array.from(document.querySelectorAll('#figure .rodlen text.lb:not(.halo)'))
+        .filter(t => t.getClientRects().length && getComputedStyle(t).display !== 'none'
+                     && getComputedStyle(t.parentNode).display !== 'none')
+        .map(t => { const r = t.getBoundingClientRect(); return [t.textContent, r.left + r.width / 2, r.top + r.height / 2]; })"""
+    marks = """() => Array.from(document.querySelectorAll('#figure .brkg > path.brk'))
+        .filter(e => e.getClientRects().length && getComputedStyle(e.parentNode).display !== 'none')
+        .map(e => { const r = e.getBoundingClientRect(); return [r.left + r.width / 2, r.top + r.height / 2]; })"""
+    for v in np.geomspace(4.0, 50.0, 16)[1:]:
+        _drag_to(page, "rod_ratio", float(v))
+    root = _fresh_svg(c, {}, "rod_ratio", 50.0)
+    # (the fresh end state's break marks: those not in a group it leaves out, nf)
+    hidden = {d for g in root.iter() if "nf" in (g.get("class") or "").split() for d in g.iter()}
+    want = [e for e in root.iter() if e.get("class") == "brk" and e not in hidden]
+    got, at = page.evaluate(shown), page.evaluate(marks)
+    assert len(at) == len(want), (len(at), len(want))
+    if not want:
+        assert got == [], got
+    for text, x, y in got:  # (on a break shown: within two letters of its marks' middle)
+        assert text == "L = 50 r" and min(math.hypot(x - a, y - b) for a, b in at) <= 30, (text, x, y, at)
+    assert not errors, errors
+    page.close()

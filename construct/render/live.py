@@ -703,8 +703,11 @@ LIVE_SCRIPT = r"""
   // ---- the camera: the shown step's view and ring at the shown value --------------------------------------------
   function view(atOnce, drag){  // what the player's show(k) does with the view, without touching the steps (cheap)
     var d = player.data, k = +(svg.getAttribute("data-step") || d.n), st = k > 0 ? d.steps[k - 1] : null;
-    if (st && st[IDX] >= 0 && S.zoomAt[k - 1] !== undefined) {
-      for (var i = 0; i < 4; i++) d[VIEWS][st[IDX]][i] = round2(num(S.zoomAt[k - 1] + i));
+    // (the end step at the book's values, where the plate's furniture held away from them is shown: the view the
+    // camera made room in for it; elsewhere the sweep's, which frames the marks drawn there, live/measure.py)
+    var builtView = k === d.n && S.L.furniture_held && furnitureOn ? endView : null;
+    if (st && st[IDX] >= 0 && (builtView || S.zoomAt[k - 1] !== undefined)) {
+      for (var i = 0; i < 4; i++) d[VIEWS][st[IDX]][i] = builtView ? builtView[i] : round2(num(S.zoomAt[k - 1] + i));
     }
     if (st && st.r && S.ringAt[k - 1] !== undefined) {  // the ring (the array the player rings with): round its mark
       st.r[0] = round2(num(S.ringAt[k - 1])); st.r[1] = round2(num(S.ringAt[k - 1] + 1));
@@ -981,7 +984,7 @@ LIVE_SCRIPT = r"""
       return inflate(L.data);
     }).then(function(buf){ W.buf = buf; return W; });
   }
-  var endNote = null, insetHidden = false, hatches = [], HATCH = null, endWritesRod = false, endAt = 0, endFurniture = [], furnitureOn = true;
+  var endNote = null, insetHidden = false, hatches = [], HATCH = null, endWritesRod = false, endAt = 0, endFurniture = [], furnitureOn = true, endView = null;
   api.ready = Promise.all(LIST.map(load)).then(function(ws){
     player = window.constructPlayer;
     endAt = player ? player.data.end : 0;
@@ -1007,6 +1010,7 @@ LIVE_SCRIPT = r"""
       player.data.steps.forEach(function(st, i){
         own[i] = st[IDX] >= 0 ? player.data[VIEWS][st[IDX]].slice() : null; if (st[IDX] >= 0) st[IDX] = i; });
       player.data[VIEWS] = own;
+      endView = own[own.length - 1] && own[own.length - 1].slice();
     }
     sweeps = ws;
     ws.forEach(function(W){ W.prepare(W.buf); W.buf = null; });

@@ -67,6 +67,16 @@ settings.register_profile("dev", max_examples=20, database=None)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE") or ("ci" if os.environ.get("CI") else "dev"))
 
 
+# -- the collector: its young passes less often ---------------------------------------------------------------
+
+# What the session's fixtures made (figures, drawings, sweeps, parsed modules) stays alive to the end, and every
+# young pass of the collector (by default each 700 allocations) walks what survived the pass before: a seventh of
+# the suite's CPU (measured: test_library, test_render_scene and test_constructions_crank serially, 11.0 -> 9.3 s).
+# Set before the state every test is held to is read, so that it is the state of the session; below the 10,000 a
+# command raises it to (io/collector.few_collections), so that tests/test_cli.py still sees a command raise it.
+gc.set_threshold(7_000, 20, 20)
+
+
 # -- the order: shuffled on request ---------------------------------------------------------------------------
 
 def pytest_addoption(parser):

@@ -57,6 +57,16 @@ def test_a_family_of_helpers_is_not_read_as_a_lettered_points_helper():
     assert r.text("the crank's circle", "en") == "the crank's circle"
 
 
+def test_one_reader_reads_a_caption_anew_for_each_step_that_writes_it():
+    """A reader remembers the words and the captions that name nothing; a caption that names an object is read
+    for its step: the step's own helper circle has no letter there, a later step's circle goes by its centre."""
+    r = Reader({"P3": ("point", "3", None, ()), "T4.k": ("circle", None, "circle_radius", ("P3", "L"))})
+    for _ in range(2):  # (the second round reads what the first has remembered)
+        assert r.text("T4.k meets the stroke line", "en", outputs=["T4.k"]) == "meets the stroke line"
+        assert r.text("T4.k meets the stroke line", "en", outputs=["P3"]) == "the circle about 3 meets the stroke line"
+        assert r.text("the ray meets the vertical", "en", outputs=["T4.k"]) == "the ray meets the vertical"
+
+
 def test_half_of_a_hyphenated_word_is_never_read_as_a_name():
     """The flywheel rim's mid-plane is a line named "mid" without a letter; its own step's caption said
     "-plane of the wheel" because "mid" in "mid-plane" was read as the unlettered line and dropped."""

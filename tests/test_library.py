@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+import collections
 import functools
 import gc
 import json
@@ -175,6 +176,21 @@ def _parse(source: str) -> ast.Module:
     return ast.parse(source)
 
 
+#: The fields of a node that hold statements (a function's, a class's, a branch's, a handler's, a case's body).
+_BODIES = ("body", "orelse", "finalbody", "handlers", "cases")
+
+
+def _statements(tree: ast.AST):
+    """Every statement of *tree* at any depth, in the order ast.walk meets them: an import is a statement, so the
+    expressions (most of a module's nodes) are not walked."""
+    todo = collections.deque([tree])
+    while todo:
+        node = todo.popleft()
+        yield node
+        for field in _BODIES:
+            todo.extend(getattr(node, field, ()))
+
+
 def _imports(path: Path, text: str | None = None) -> list[tuple[str, int]]:
     """The construct-internal modules a file imports, anywhere in it: at module level, inside functions and
     under ``if TYPE_CHECKING:`` (read by type checkers only, but still an arrow a reader follows: the layers
@@ -186,7 +202,7 @@ def _imports(path: Path, text: str | None = None) -> list[tuple[str, int]]:
     tree = _parse(path.read_text(encoding="utf-8") if text is None else text)
     pkg = path.relative_to(ROOT).with_suffix("").parts[:-1]
     out = []
-    for node in ast.walk(tree):
+    for node in _statements(tree):
         if isinstance(node, ast.ImportFrom) and (node.level or (node.module or "").startswith("construct")):
             if node.level:
                 base = list(pkg[: len(pkg) - node.level + 1])

@@ -639,14 +639,17 @@ def _fresh_marks(c, params: dict, given: str, v: float, kind=None) -> dict[str, 
     """Every mark's attributes as a fresh replay's player page draws them, by element id: the construction built
     afresh at *v*, each mark drawn by the drawing's own code (``mark_geometry``) on the page's fit to the view, as
     :class:`construct.live.Measure` draws it (tests/test_live.py holds that to the page's numbers) -- without laying
-    the page's letters out, which these marks do not depend on (a tenth of a page's cost).  *kind*: the marks of
-    that kind only (an area: its outline, not its hatching)."""
+    the page's letters out, nor reading the captions into the figure's letters, which these marks do not depend on
+    (a tenth of a page's cost; an unlettered build, half of a build's).  *kind*: the marks of that kind only (an
+    area: its outline, not its hatching)."""
+    from construct.kernel.instruments import unlettered
     from construct.render.output import scene_for
     from construct.render.svg import mark_geometry
     from construct.render.viewport import Viewport
 
     st = STYLES["teaching"]
-    scene = scene_for(c, c.figure(**{**params, given: v}))
+    with unlettered():
+        scene = scene_for(c, c.figure(**{**params, given: v}))
     vp = Viewport.fit(scene.bbox, st, 0)
     return {m.id + suffix: attrs for m in scene.marks if kind in (None, m.kind)
             for suffix, _, attrs in mark_geometry(m, vp, st)[:1 if kind is not None else None]}

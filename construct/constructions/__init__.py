@@ -166,7 +166,7 @@ class Construction:
         off each set's objects, as :meth:`Figure.checks` reads them.
         """
         replay = figure.replay
-        sets = [replay.take(i) for i in range(replay.size)] if replay.size else [replay]
+        sets = replay.sets()
         if self.validates_sweeps:  # every set is valid before the model is computed for all of them
             self.validate(replay.givens)
         else:

@@ -414,6 +414,36 @@ def take(v: Any, i: int) -> Any:
     return take_i(i) if take_i is not None else v
 
 
+def take_all(v: Any, n: int) -> list:
+    """``[take(v, i) for i in range(n)]``: every element of a sweep value of *n* sets, a point's, a line's or a
+    circle's coordinates read as whole arrays (the checks of a sweep read the same objects of every set).
+
+    >>> [(p.x, p.y) for p in take_all(Point(np.array([1.0, 2.0]), 3.0), 2)]
+    [(1.0, 3.0), (2.0, 3.0)]
+    """
+    kind = type(v)
+    if kind is Point:
+        xs, ys = _floats(v.x, n), _floats(v.y, n)
+        if xs is not None and ys is not None:
+            return list(map(raw_point, xs, ys))
+    elif kind is Line:
+        return list(map(Line, take_all(v.p, n), take_all(v.q, n)))
+    elif kind is Circle:
+        radii = _floats(v.radius, n)
+        if radii is not None:
+            return list(map(raw_circle, take_all(v.center, n), radii))
+    return [take(v, i) for i in range(n)]
+
+
+def _floats(a: Any, n: int) -> list | None:
+    """The *n* elements of a coordinate as :func:`take` gives them, read at once; None: take them one by one."""
+    if type(a) is float:
+        return [a] * n
+    if type(a) is np.ndarray and a.ndim == 1 and a.size == n and a.dtype == np.float64:
+        return a.tolist()
+    return None
+
+
 def stack(values: list) -> Any:
     """Values made one by one for each set of givens, as one sweep value."""
     first = values[0]

@@ -101,6 +101,33 @@ def _compound(text: str, start: int, end: int) -> bool:
         len(before) == 2 and before[1] == "-" and before[0].isalpha())
 
 
+#: How many words and plain captions a :class:`Reader` keeps (a figure's are a few hundred; the words of a
+#: caption of megabytes are not all kept).
+_WORDS_KEPT = 100_000
+_SPACES = re.compile(r"  +")
+
+
+def _finished(text: str, lang: str) -> str:
+    """A rewritten caption's spacing, articles and symbols as the figure prints them.
+
+    >>> _finished("Kreis  um 3 durch (  P0 ) von Kreis um 2", "de")
+    'Kreis um 3 durch (P₀ ) vom Kreis um 2'
+    """
+    # the captions of a figure recur in every build of it (a live sweep's, a test's): short ones are kept
+    return _finish(text, lang) if len(text) <= TITLE_LIMIT else _finish.__wrapped__(text, lang)
+
+
+@functools.lru_cache(maxsize=1 << 14)
+def _finish(text: str, lang: str) -> str:
+    text = _SPACES.sub(" ", text).replace(" :", ":").replace("( ", "(").strip()
+    # "im Schnitt von Kreis um 3" reads better with the article the English already has
+    if lang == "de":
+        text = text.replace("von Kreis um", "vom Kreis um").replace("und Kreis um", "und dem Kreis um")
+    else:
+        text = text.replace(" the the ", " the ")
+    return subscripts(book_symbols(text))
+
+
 #: How the books name the objects every crank figure has.
 _COMMON = {
     "axis": ("Hubachse", "the stroke line"),
@@ -177,10 +204,21 @@ class Reader:
         #: <construct.kernel.instruments.Builder.call>`): {name: (German, English)}.
         self.called = dict(called or {})
         self._calling: set[str] = set()
+        #: Tokens that name nothing (no object, no pair of points): the words of the sentences, looked up once.
+        self._words: set[str] = set()
+        #: The captions that name nothing, read: the same at every step that writes them.
+        self._plain_texts: dict[tuple[str, str, bool], str] = {}
+        self._point_letters: dict[str, str] = {}
 
     # -- one name -------------------------------------------------------------------------
     def point(self, name: str) -> str:
         """The letter a point goes by in the figure (see :func:`tag`)."""
+        got = self._point_letters.get(name)
+        if got is None:  # (a point is named by every step that uses it)
+            got = self._point_letters[name] = self._point(name)
+        return got
+
+    def _point(self, name: str) -> str:
         label = self.objects[name][1]
         if label:
             return label
@@ -291,53 +329,76 @@ class Reader:
         cut = len(caption) > _READ_LIMIT and not whole
         if cut:
             caption = caption[:_READ_LIMIT]
-        made = set(outputs)
+        # A caption that names nothing (no token is an object or a pair: "the ray meets the vertical through
+        # the known point", written by the hundred in a figure) reads the same at every step: read once.
+        key = (caption, lang, whole)
+        known = self._plain_texts.get(key)
+        if known is not None:
+            return known
+        objects = self.objects
+        words = self._words
         out: list[str] = []
         pos = 0
+        names = False  # has a token been an object's name (the text then depends on *outputs*)?
         for m in _NAME.finditer(caption):
-            token = m.group(0)
-            start, end = m.span()
-            obj = self.objects.get(token)
-            rep: str | None = None
-            word = token.isalpha() and token.islower()
-            if _compound(caption, start, end):
-                rep = None  # half of a hyphenated word ("mid-plane"): a word of the sentence, never a name
-            elif obj is None:
-                pair = self._split(token)
-                if pair:
-                    rep = self._pair(self.point(pair[0]), self.point(pair[1]))
-            elif word and _NEXT_WORD.match(caption, end).group(1).lower() in _NOUNS:
-                rep = None  # a word of the sentence that names a thing ("crank circle about O")
-            elif (obj[0] in ("line", "circle") and token in made and not obj[1]
-                  and not (token.isalpha() and token.isupper())):
-                rep = ""  # the step's own helper line or circle: the figure has no letter for it
-            elif word and (not self._names_slot(caption, start, end) or self._in_phrase(caption, end)):
-                rep = None  # an ordinary word that is also a name ("crank centre", "the axis", "back pressure")
-            elif obj[0] == "length":  # a length goes by its own letter (the rod length L is the rod's L)
-                rep = obj[1] or token.rsplit(".", 1)[-1]
-            elif obj[0] == "point":
-                rep = self.point(token)
-            elif obj[0] in ("line", "circle"):
-                rep = self.curve(token, lang)
-            if rep is None:
+            token = m.group()
+            if token in words:  # a word of the sentences, no object's name nor two of them: most tokens
                 continue
+            obj = objects.get(token)
+            if obj is None:
+                pair = self._split(token)
+                if pair is None:
+                    if len(token) <= 64 and len(words) < _WORDS_KEPT:  # (no name is longer: see _split)
+                        words.add(token)
+                    continue
+                start, end = m.span()
+                if _compound(caption, start, end):
+                    continue  # half of a hyphenated word ("mid-plane"): a word of the sentence, never a name
+                rep = self._pair(self.point(pair[0]), self.point(pair[1]))
+            else:
+                names = True
+                start, end = m.span()
+                rep = self._named(token, obj, caption, start, end, outputs, lang)
+                if rep is None:
+                    continue
             out.append(caption[pos:start])
             out.append(rep)
             pos = end
-        out.append(caption[pos:])
-        text = "".join(out)
-        text = re.sub(r"  +", " ", text).replace(" :", ":").replace("( ", "(").strip()
-        # "im Schnitt von Kreis um 3" reads better with the article the English already has
-        if lang == "de":
-            text = text.replace("von Kreis um", "vom Kreis um").replace("und Kreis um", "und dem Kreis um")
+        if out:
+            out.append(caption[pos:])
+            text = "".join(out)
         else:
-            text = text.replace(" the the ", " the ")
-        text = subscripts(book_symbols(text))
-        if whole:
-            return text
-        if cut and not text.endswith("…"):
-            text = text[: CAPTION_LIMIT - 1] + "…"
-        return displayed(text)
+            text = caption
+        text = _finished(text, lang)
+        if not whole:
+            if cut and not text.endswith("…"):
+                text = text[: CAPTION_LIMIT - 1] + "…"
+            text = displayed(text)
+        if not names and len(caption) <= TITLE_LIMIT and len(self._plain_texts) < _WORDS_KEPT:
+            self._plain_texts[key] = text
+        return text
+
+    def _named(self, token: str, obj: tuple, caption: str, start: int, end: int, outputs: Sequence[str],
+               lang: str) -> str | None:
+        """What the object *token* at caption[start:end] is written as (None: left as it stands, a word)."""
+        if _compound(caption, start, end):
+            return None  # half of a hyphenated word ("mid-plane"): a word of the sentence, never a name
+        kind, label = obj[0], obj[1]
+        word = token.isalpha() and token.islower()
+        if word and _NEXT_WORD.match(caption, end).group(1).lower() in _NOUNS:
+            return None  # a word of the sentence that names a thing ("crank circle about O")
+        if (kind in ("line", "circle") and not label and token in outputs
+                and not (token.isalpha() and token.isupper())):
+            return ""  # the step's own helper line or circle: the figure has no letter for it
+        if word and (not self._names_slot(caption, start, end) or self._in_phrase(caption, end)):
+            return None  # an ordinary word that is also a name ("crank centre", "the axis", "back pressure")
+        if kind == "length":  # a length goes by its own letter (the rod length L is the rod's L)
+            return label or token.rsplit(".", 1)[-1]
+        if kind == "point":
+            return self.point(token)
+        if kind in ("line", "circle"):
+            return self.curve(token, lang)
+        return None
 
     def _in_phrase(self, text: str, end: int) -> bool:
         """Does a small word at text[..end] run on into a phrase ("admission and back pressure")?  The word

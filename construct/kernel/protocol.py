@@ -82,6 +82,12 @@ class Protocol:
     def __reduce__(self):
         return (_unpickle, (self.as_dict(with_objects=False),))
 
+    @functools.cached_property
+    def makers(self) -> Mapping[str, Step]:
+        """The step that made each object, by the object's name (read-only, made once: the checks of each set
+        of a 1,000-set sweep ask for it)."""
+        return MappingProxyType({name: step for step in self.steps for name in step.outputs})
+
     # -- replay -------------------------------------------------------------
     @functools.cached_property
     def program(self) -> Program:

@@ -24,7 +24,7 @@ from .areas import Area
 from .curves import BezierCurve, Polyline
 from .errors import (ConstructError, InvalidParameter, MissingGiven, ProtocolFormatError, RuleError, StepError,
                      UnknownObject, WrongInput)
-from .geometry import SCALAR, Circle, Length, Line, Point, Sweep, ArrayMath, take
+from .geometry import SCALAR, Circle, Length, Line, Point, Sweep, ArrayMath, take, take_all
 from .ops import ACCEPTS, OPS, elementwise
 from .numeric import as_float, shown
 from .rules import as_rule
@@ -240,20 +240,24 @@ class TakenSet(Mapping[str, Any]):
 
     A check reads a few dozen of a figure's thousand objects: taking them all
     for every set of a 1,000-set sweep was most of the time the sweep's
-    checks took.
+    checks took.  The sets of :meth:`Replay.sets` share *columns*: an object
+    looked up in one set is taken for all *n* of them at once.
     """
 
-    __slots__ = ("_source", "_i", "_taken")
+    __slots__ = ("_source", "_i", "_at", "_n", "_columns")
 
-    def __init__(self, source: Mapping[str, Any], i: int) -> None:
-        self._source, self._i, self._taken = source, i, {}
+    def __init__(self, source: Mapping[str, Any], i: int, columns: dict[str, list] | None = None, n: int = 0) -> None:
+        self._source, self._i = source, i
+        self._columns: dict[str, list] = {} if columns is None else columns
+        self._n, self._at = (n, i) if columns is not None else (0, 0)
 
     def __getitem__(self, name: str) -> Any:
         try:
-            return self._taken[name]
+            return self._columns[name][self._at]
         except KeyError:
-            value = self._taken[name] = take(self._source[name], self._i)
-            return value
+            v = self._source[name]
+            column = self._columns[name] = take_all(v, self._n) if self._n else [take(v, self._i)]
+            return column[self._at]
 
     def __contains__(self, name: object) -> bool:
         return name in self._source
@@ -335,9 +339,28 @@ class Replay(Mapping[str, Any]):
         objects = {n: take(v, i) for n, v in self._objects.items()} if whole else TakenSet(self._objects, i)
         return Replay(self.protocol, objects, {k: take(v, i) for k, v in self._givens.items()})
 
+    def sets(self) -> list["Replay"]:
+        """Every set of a sweep as :meth:`take` gives it (a plain replay is its own only set), their objects taken
+        as they are looked up, each for all the sets at once (the checks of a sweep read the same objects of
+        every set).
+
+        >>> from construct.kernel.instruments import Builder
+        >>> b = Builder("demo", givens={"r": 1.0})
+        >>> _ = b.given_point("A", 1.0, 0.0, unit="r")
+        >>> [one["A"].x for one in b.protocol().replay({"r": np.array([2.0, 3.0])}).sets()]
+        [2.0, 3.0]
+        """
+        if not self.size:
+            return [self]
+        columns: dict[str, list] = {}
+        givens = {k: take_all(v, self.size) for k, v in self._givens.items()}
+        return [Replay(self.protocol, TakenSet(self._objects, i, columns, self.size),
+                       {k: v[i] for k, v in givens.items()}) for i in range(self.size)]
+
     def made_by(self) -> dict[str, Step]:
-        """The step that made each object."""
-        return {name: step for step in self.protocol.steps for name in step.outputs}
+        """The step that made each object (:attr:`Protocol.makers <construct.kernel.protocol.Protocol.makers>`,
+        a copy of it)."""
+        return dict(self.protocol.makers)
 
     def objects_json(self) -> dict[str, Any]:
         return {name: object_json(obj) for name, obj in self._objects.items()}

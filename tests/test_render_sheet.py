@@ -96,3 +96,16 @@ def test_the_points_near_the_circles_are_every_pairs(seed):
     want = sorted(zip(*(v.tolist() for v in np.nonzero(every))))
     assert len(want) > 100
     assert sorted(_near_circles(px, py, c, e)) == want
+
+
+@pytest.mark.parametrize("name, params", [("crank", {"parts": 36, "rod_ratio": 5.0}), ("crank", {"parts": 12, "rod_ratio": 50.0}),
+                                          ("crank-angle", {}), ("two-cranks", {}), ("piston-force", {})])
+def test_the_kept_span_is_the_span_of_the_figure_broken(name, params):
+    """kept_span on arrays is what breaking the points and curves (sheet.broken) and measuring them gives."""
+    from construct.constructions import get
+    from construct.render.scene import build_scene
+    from construct.render.sheet import broken, kept_span, span_of
+
+    marks = build_scene(get(name).figure(**params), break_axis=False).marks
+    drawn = [m for m in marks if m.kind in (MarkKind.POINT, MarkKind.CURVE, MarkKind.AREA)]
+    assert kept_span(marks) == span_of(broken(drawn, (), True)[0])

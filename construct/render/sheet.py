@@ -126,8 +126,7 @@ def broken_axis(marks: list[Mark], furniture: tuple = (), keep_fraction: float =
     if gap is None:
         return marks, furniture, ()
     lo, hi, total = gap
-    keep = min(keep_fraction * (total - (hi - lo)), 0.8 * (hi - lo))
-    shift = (hi - lo) - keep
+    keep, shift = _kept_of(gap, keep_fraction)
 
     def sx(x: float) -> float:
         return x + shift if x <= lo else x
@@ -146,6 +145,13 @@ def broken_axis(marks: list[Mark], furniture: tuple = (), keep_fraction: float =
     # the near stretch now ends at hi - keep: the kept piece of the broken axis is [hi - keep, hi]
     moved = tuple(shifted(it, sx) for it in furniture) if axis == 0 else furniture
     return out, moved, (Break(hi - keep, keep, hi - lo, axis),)
+
+
+def _kept_of(gap: tuple[float, float, float], keep_fraction: float) -> tuple[float, float]:
+    """How much of the gap (start, end, total) a broken axis keeps, and how far what lies before it moves."""
+    lo, hi, total = gap
+    keep = min(keep_fraction * (total - (hi - lo)), 0.8 * (hi - lo))
+    return keep, (hi - lo) - keep
 
 
 def moved_geom(m: Mark, x: Callable[[float], float], y: Callable[[float], float], *,
@@ -218,8 +224,25 @@ def breaks_figure(marks: list[Mark], furniture: tuple, whole: bool) -> bool:
 def kept_span(marks: list[Mark]) -> float:
     """What the figure's points and curves span once broken alone (:func:`broken`; as they are, unbroken): a
     broken figure's margin is a share of it."""
+    import numpy as np
+
     drawn = [m for m in marks if m.kind in (MarkKind.POINT, MarkKind.CURVE, MarkKind.AREA)]
-    return span_of(broken(drawn, (), True)[0])
+    if not drawn:
+        return 1e-9
+    # what broken(drawn, (), True) does to their coordinates, on arrays: a point before a gap moves by its shift
+    ext = _extents(drawn)
+    pts = [m.geom for m in drawn if m.kind is MarkKind.POINT] + [p for m in drawn if m.kind is not MarkKind.POINT
+                                                                 for p in m.geom]
+    if not pts:
+        return 1e-9
+    xy = np.array(pts, dtype=float).reshape(-1, 2)
+    for axis, fraction in ((0, BREAK_FRACTION), (1, BREAK_FRACTION_Y)):  # (a break along x moves no y)
+        gap = _widest_gap(drawn, (), axis, fraction, ext)
+        if gap is not None:
+            v = xy[:, axis]
+            xy[:, axis] = np.where(v <= gap[0], v + _kept_of(gap, BREAK_KEEP)[1], v)
+    x, y = xy[:, 0], xy[:, 1]
+    return max(float(x.max() - x.min()), float(y.max() - y.min()), 1e-9)
 
 
 def span_of(marks: list[Mark]) -> float:

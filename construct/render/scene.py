@@ -260,11 +260,13 @@ class Scene(StepInputs):
         # (the stroke line reaches the far crossheads) but say nothing about the stage.
         lo = bisect.bisect_left(self._mark_steps, start)
         hi = bisect.bisect_right(self._mark_steps, end)
-        pts = [p for m in self.marks[lo:hi] if m.kind is not MarkKind.SEGMENT for p in extreme_points(m)]
-        if not pts:
+        point, segment = MarkKind.POINT, MarkKind.SEGMENT
+        boxes = [m.geom * 2 if m.kind is point else mark_box(m) for m in self.marks[lo:hi] if m.kind is not segment]
+        boxes = [b for b in boxes if b is not None]
+        if not boxes:
             return self.bbox
-        x0, x1 = min(p[0] for p in pts), max(p[0] for p in pts)
-        y0, y1 = min(p[1] for p in pts), max(p[1] for p in pts)
+        x0s, y0s, x1s, y1s = zip(*boxes)
+        x0, x1, y0, y1 = min(x0s), max(x1s), min(y0s), max(y1s)
         pad = 0.06 * max(x1 - x0, y1 - y0, 1e-9)
         b = self.bbox
         return (max(b[0], x0 - pad), max(b[1], y0 - pad), min(b[2], x1 + pad), min(b[3], y1 + pad))

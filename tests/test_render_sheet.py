@@ -98,8 +98,9 @@ def test_the_points_near_the_circles_are_every_pairs(seed):
     assert sorted(_near_circles(px, py, c, e)) == want
 
 
-@pytest.mark.parametrize("name, params", [("crank", {"parts": 36, "rod_ratio": 5.0}), ("crank", {"parts": 12, "rod_ratio": 50.0}),
-                                          ("crank-angle", {}), ("two-cranks", {}), ("piston-force", {})])
+@pytest.mark.parametrize("name, params", [("crank", {"parts": 36, "rod_ratio": 5.0}),
+                                          ("crank", {"parts": 12, "rod_ratio": 50.0}), ("crank-angle", {}),
+                                          ("two-cranks", {}), ("piston-force", {})])
 def test_the_kept_span_is_the_span_of_the_figure_broken(name, params):
     """kept_span on arrays is what breaking the points and curves (sheet.broken) and measuring them gives."""
     from construct.constructions import get

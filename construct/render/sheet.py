@@ -54,7 +54,8 @@ def _extents(marks: list[Mark]) -> "np.ndarray":
     """The box (x0, y0, x1, y1) of each mark a broken axis keeps clear of its gap, one row each (:func:`_widest_gap`):
     every point, circle, arc, area and curve but the lines (the stroke line spans everything; a rod drawn to its
     crosshead -- a straight curve of two points -- crosses the break), in one pass.  The same numbers as
-    :func:`extreme_points` gives (:func:`mark_box`): a break along x moves no y, so its rows' y serve the break across it too."""
+    :func:`extreme_points` gives (:func:`mark_box`): a break along x moves no y, so its rows' y serve the break
+    across it too."""
     import numpy as np
 
     point, segment, curve = MarkKind.POINT, MarkKind.SEGMENT, MarkKind.CURVE

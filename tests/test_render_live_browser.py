@@ -466,7 +466,8 @@ def test_while_dragging_the_camera_and_the_zoom_level_stay_while_near_and_let_go
     n = page.evaluate("window.constructPlayer.data.n")
     page.evaluate("() => { const s = document.getElementById('slider'); s.value = %d; s.oninput(); }" % (n // 2))
     page.wait_for_timeout(600)  # the camera's glide
-    state = """() => [document.getElementById('figure').getAttribute('viewBox').split(' ').map(Number),
+    # (the view shown: while a drag moves the camera, by the transform of the camera's group, the viewBox kept)
+    state = """() => [window.constructPlayer.view().map(v => Math.round(v * 100) / 100),
                       document.getElementById('figure').getAttribute('class')]"""
     view, level = page.evaluate(state)
     step_view = """([dx, f]) => { const p = window.constructPlayer, k = +document.getElementById('figure').getAttribute('data-step');
@@ -480,6 +481,19 @@ def test_while_dragging_the_camera_and_the_zoom_level_stay_while_near_and_let_go
     moved, _ = page.evaluate(state)
     room = lambda t: [t[0] - 0.05 * t[2], t[1] - 0.05 * t[3], 1.1 * t[2], 1.1 * t[3]]  # noqa: E731
     assert moved == pytest.approx(room(t), abs=0.01)
+    # and the figure is where that view puts it on the screen (centred in the figure's box, as a viewBox fits it),
+    # every shown point within half a pixel, though the viewBox is the one the drag found
+    where = """v => { const svg = document.getElementById('figure'), b = svg.getBoundingClientRect(), cs = getComputedStyle(svg);
+        const x0 = b.left + svg.clientLeft + parseFloat(cs.paddingLeft), y0 = b.top + svg.clientTop + parseFloat(cs.paddingTop);
+        const W = svg.clientWidth - parseFloat(cs.paddingLeft) - parseFloat(cs.paddingRight), H = svg.clientHeight
+          - parseFloat(cs.paddingTop) - parseFloat(cs.paddingBottom), s = Math.min(W / v[2], H / v[3]);
+        return [svg.getAttribute('viewBox'), Array.from(svg.querySelectorAll('circle.pt')).filter(c => c.getClientRects().length).map(c => {
+          const r = c.getBoundingClientRect(), x = +c.getAttribute('cx'), y = +c.getAttribute('cy');
+          return Math.hypot(r.left + r.width / 2 - (x0 + (W - s * v[2]) / 2 + s * (x - v[0])),
+                            r.top + r.height / 2 - (y0 + (H - s * v[3]) / 2 + s * (y - v[1]))); })]; }"""
+    box, off = page.evaluate(where, moved)
+    assert len(off) >= 3 and max(off) <= 0.5, off
+    assert [float(x) for x in box.split()] == pytest.approx(view, abs=0.01)  # (the drag's: not written)
     page.evaluate(step_view, [0.04, 1.0])  # moved by 4 % of its width, inside the room: held
     page.evaluate("() => window.constructPlayer.jump(true)")
     assert page.evaluate(state)[0] == moved
@@ -508,7 +522,7 @@ _CAMERA_DRAG = """async ([g, a, b]) => { const i = document.querySelector('#live
       await new Promise(r => requestAnimationFrame(r));
       const crank = Array.from(svg.querySelectorAll('g[data-step] circle[id$="-crank"]'))
         .filter(e => e.isConnected && getComputedStyle(e).display !== 'none')[0];
-      out.push([Math.pow(10, +i.value), svg.getAttribute('viewBox').split(' ').map(Number), p.target().slice(),
+      out.push([Math.pow(10, +i.value), p.view(), p.target().slice(),
                 crank ? crank.getBoundingClientRect().width : null]);
     }
     return out; }"""
@@ -907,7 +921,9 @@ def test_areas_are_drawn_from_the_curves_that_bound_them(browser, name, params, 
     curves it shows, and each area (its pieces together) is a fresh replay's within 0.5 px (their boundaries).
     A piece all of whose points lie within half a pixel (a crossing a hair from the area's end) is no piece one
     sees: it is left out on both sides.  (The pieces together: where two curves cross at a grazing angle, the
-    corner between two pieces slides along them by ten times what the curves move.)"""
+    corner between two pieces slides along them by ten times what the curves move.)  Its hatching is drawn anew
+    with it: each area's hatch lines a fresh replay's, each end within 0.5 px (it was hidden away from the book's
+    value)."""
     from shapely.geometry import Polygon
     from shapely.ops import unary_union
 
@@ -920,7 +936,7 @@ def test_areas_are_drawn_from_the_curves_that_bound_them(browser, name, params, 
         .filter(e => e.getAttribute('display') !== 'none').map(e => [e.id, e.getAttribute('d')])"""
     ring = lambda d: [tuple(p) for p in zip(*[iter(float(x) for x in NUMBER.findall(d))] * 2)]  # noqa: E731
     hatched = """() => window.constructPlayer.groups().flatMap(s => Array.from(s.querySelectorAll('path.hatch[id]')))
-        .filter(e => e.style.display !== 'none').length"""
+        .filter(e => e.style.display !== 'none' && e.getAttribute('d')).map(e => [e.id, e.getAttribute('d')])"""
 
     def areas(pieces) -> dict[str, list]:  # each area's pieces one sees, by the step that made it
         out: dict[str, list] = {}
@@ -930,18 +946,36 @@ def test_areas_are_drawn_from_the_curves_that_bound_them(browser, name, params, 
                 out.setdefault(i.split("-")[0], []).append(q.buffer(0))
         return out
 
+    def hatching(paths) -> dict[str, np.ndarray]:  # each area's hatch lines (x0, y0, x1, y1), by the step that made it
+        out: dict[str, list] = {}
+        for i, d in paths:
+            xy = [float(x) for x in NUMBER.findall(d)]
+            out.setdefault(i.split("-")[0], []).extend(zip(*[iter(xy)] * 4))
+        return {k: np.asarray(v) for k, v in out.items()}
+
     for v in values:
         _drag_to(page, given, v)
         got = areas(page.evaluate(read))
+        fresh = _fresh_marks(c, params, given, v)  # (every mark's, an area's hatching too)
         want = areas((i, a["d"]) for i, a in _fresh_marks(c, params, given, v, MarkKind.AREA).items())
         assert want and {k: len(p) for k, p in got.items()} == {k: len(p) for k, p in want.items()}, v
         for k, ps in want.items():
             gap = unary_union(got[k]).boundary.hausdorff_distance(unary_union(ps).boundary)
             assert gap <= 0.5, (name, v, k, gap)
-        # an area's hatching (the drawing's, at the book's value: not in the sweep) is not shown away from it
-        assert page.evaluate(hatched) == 0, (name, v)
-    _drag_to(page, given, _live_data(page, given)["initial"])
-    assert page.evaluate(hatched) > 0  # back at the book's value
+        # an area's hatching drawn anew with it, as a fresh replay hatches it: the same lines, each end within
+        # 0.5 px (a line a hair from a corner, under half a unit long, may be on one side only)
+        lines, fresh_lines = hatching(page.evaluate(hatched)), hatching((i, a["d"]) for i, a in fresh.items()
+                                                                        if i.endswith("-hatch"))
+        assert fresh_lines and set(lines) == set(fresh_lines), (name, v, set(lines), set(fresh_lines))
+        for k, w in fresh_lines.items():
+            g = lines[k]
+            assert abs(len(g) - len(w)) <= 2, (name, v, k, len(g), len(w))
+            for a, b in ((g, w), (w, g)):  # each line beside one of the other side's (either way round)
+                ends = lambda p, q: np.minimum(np.abs(p[:, None, :] - q[None, :, :]).max(-1),  # noqa: E731
+                                               np.abs(p[:, None, :] - q[None, :, [2, 3, 0, 1]]).max(-1))
+                near = ends(a, b).min(1)
+                long = np.hypot(a[:, 2] - a[:, 0], a[:, 3] - a[:, 1]) > 1.0
+                assert near[long].max() <= 0.5, (name, v, k, near.max())
     assert not errors, errors
     page.close()
 
@@ -981,26 +1015,63 @@ def test_the_end_states_plate_lettering_keeps_the_letters_size_on_the_screen(bro
     """The committed gallery's inertia curve at its last step (the end state, its plate lettering "1 at", "L = ∞"
     set for the letter scale of the book's value): dragged to L/r = 1.5 and 50, where the figure and so its view
     grow or shrink, an upright lettering of the plate stays as tall on the screen as the end state's letters (q₁,
-    A, B: the player scales both by its letter scale) -- it was drawn at 0.64 of their height at 1.5.  (A turned
-    one, F/f along its dimension, still keeps the book's value's size: not scaled yet.)"""
+    A, B: the player scales both by its letter scale) -- it was drawn at 0.64 of their height at 1.5.  So does a
+    turned one (F/f, m along their dimensions, turned a right angle: their box's width is their height), about its
+    turn: its box's middle stays where the attribute turns it (it kept the book value's size, half the letters' at
+    1.5).  And the arrowheads and a scale's ticks, drawn at the letters' size, keep their size beside the letters
+    (as long over a letter's height as at the book's value), each arrowhead's tip where the furniture puts it."""
     path = REPO / "gallery" / "inertia-curve-rod-ratio-4" / "teaching" / "player.html"
     if not path.is_file():
         pytest.skip("no committed gallery in this checkout")
     page, errors = _open(browser, path)
     _at(page, "end")
-    heights = """() => { const h = e => e.getBoundingClientRect().height;
+    heights = """() => { const h = e => e.getBoundingClientRect().height, m = document.getElementById('figure').getScreenCTM();
+        const on = e => e.getClientRects().length && getComputedStyle(e.parentNode).display !== 'none';
+        const screen = (x, y) => [m.a * x + m.c * y + m.e, m.b * x + m.d * y + m.f];
         const fur = Array.from(document.querySelectorAll('#figure .fo.end text.fur-text:not([transform])'))
-          .filter(t => t.getClientRects().length && !t.firstElementChild && t.textContent.trim().length > 1);
-        const lbs = Array.from(document.querySelectorAll('#figure .lbg.pf > text.lb:not(.halo)'))
-          .filter(t => t.getClientRects().length && getComputedStyle(t.parentNode).display !== 'none');
-        const med = a => a.sort((x, y) => x - y)[Math.floor(a.length / 2)];
-        return [med(fur.map(h)), med(lbs.map(h)), fur.length, lbs.length]; }"""
+          .filter(t => on(t) && !t.firstElementChild && t.textContent.trim().length > 1);
+        const lbs = Array.from(document.querySelectorAll('#figure .lbg.pf > text.lb:not(.halo)')).filter(on);
+        const turned = Array.from(document.querySelectorAll('#figure .fo.end text.fur-text[transform]')).filter(on).map(t => {
+          const r = t.getBoundingClientRect(), a = t.getAttribute('transform').match(/-?[0-9.]+/g).map(Number), c = screen(a[1], a[2]);
+          return [Math.abs(Math.sin(a[0] * Math.PI / 180)) > 0.999 ? r.width : null, r.left + r.width / 2 - c[0], r.top + r.height / 2 - c[1]]; });
+        // (an arrowhead's and a tick's size on the screen over its size in the figure's numbers: the scale the page
+        // draws it at, which is to be the plate's lettering's; an arrowhead's tip where its numbers put it)
+        const k = Math.hypot(m.a, m.b), span = p => Math.max(...p.filter((_, i) => i % 2 === 0)) - Math.min(...p.filter((_, i) => i % 2 === 0))
+          || Math.max(...p.filter((_, i) => i % 2)) - Math.min(...p.filter((_, i) => i % 2));
+        const arrows = Array.from(document.querySelectorAll('#figure .fo.end path.arrow')).filter(on).map(e => {
+          const r = e.getBoundingClientRect(), d = e.getAttribute('d').match(/-?[0-9.]+/g).map(Number), tip = screen(d[0], d[1]);
+          const vertical = Math.abs(d[0] - d[2]) < Math.abs(d[1] - d[3]);
+          return [(vertical ? r.height : r.width) / (k * Math.abs(vertical ? d[1] - d[3] : d[0] - d[2])),
+                  Math.hypot(tip[0] - Math.min(Math.max(tip[0], r.left), r.right), tip[1] - Math.min(Math.max(tip[1], r.top), r.bottom))
+                  + Math.min(Math.abs(tip[0] - r.left), Math.abs(tip[0] - r.right), Math.abs(tip[1] - r.top), Math.abs(tip[1] - r.bottom))]; });
+        const ticks = Array.from(document.querySelectorAll('#figure .fo.end line.sc')).filter(on).map(e => {
+          const r = e.getBoundingClientRect(), p = ['x1', 'y1', 'x2', 'y2'].map(a => +e.getAttribute(a));
+          return Math.max(r.width, r.height) / (k * span(p)); });
+        const lettering = fur.length ? +getComputedStyle(fur[0]).scale : null;
+        const med = a => a.slice().sort((x, y) => x - y)[Math.floor(a.length / 2)];
+        return {fur: med(fur.map(h)), letter: med(lbs.map(h)), nf: fur.length, nl: lbs.length, turned: turned,
+                lettering: lettering, arrows: arrows.map(a => a[0]), tips: arrows.map(a => a[1]), ticks: ticks}; }"""
+    book = page.evaluate(heights)
+    assert len(book["ticks"]) >= 2 and len(book["tips"]) >= 4, book
     for v in (1.5, 50.0):
         _drag_to(page, "rod_ratio", v)
         page.evaluate("() => new Promise(r => { document.querySelector('#live input[type=range]').dispatchEvent(new Event('change')); setTimeout(r, 900); })")
-        fur, letter, nf, nl = page.evaluate(heights)
-        assert nf >= 2 and nl >= 5, (v, nf, nl)
+        got = page.evaluate(heights)
+        fur, letter = got["fur"], got["letter"]
+        assert got["nf"] >= 2 and got["nl"] >= 5, (v, got)
         # (as tall as the letters to a fifth: the plate's lettering is set at the letters' size)
         assert 0.8 <= fur / letter <= 1.25, (v, fur, letter)
+        right = [t for t in got["turned"] if t[0] is not None]
+        assert len(right) >= 2, (v, got["turned"])
+        for height, dx, dy in right:
+            assert 0.8 <= height / letter <= 1.25, (v, height, letter)
+            # (its middle on its turn: the text is set about it, to a quarter of a letter's height)
+            assert math.hypot(dx, dy) <= 0.25 * letter, (v, dx, dy, letter)
+        # (each arrowhead and tick drawn at the lettering's scale, to a twentieth: their numbers are the furniture's
+        # at the book's letter size, as the lettering's are)
+        assert v != 1.5 or got["lettering"] > 1.2, got["lettering"]  # (the letters larger than the book value's)
+        for what in ("arrows", "ticks"):
+            assert got[what] and all(abs(x / got["lettering"] - 1) <= 0.05 for x in got[what]), (v, what, got[what])
+        assert max(got["tips"]) <= 0.5, (v, got["tips"])
     assert not errors, errors
     page.close()

@@ -30,7 +30,7 @@ from .camera import FINAL_CONTEXT, NON_SCALING, PLAYER_FIGURE_PX, ZOOM_LEVELS, F
 from .captions import Captions
 from .lettering import LEADER_FROM, label_box, text_width
 from .placing import Placing
-from .plate import Lettering, Stroke, extent, furniture_elements, plain, text_elements
+from .plate import Dot, Lettering, ScaleBar, Stroke, extent, furniture_elements, plain, text_elements
 from .scene import Scene, extreme_points
 from .styles import Style
 from .svgdoc import Element, Writer, fmt
@@ -218,6 +218,8 @@ def end_furniture(scene: Scene, style: Style, vp: Viewport, end: EndView, placin
     for it in end_fixed(scene):
         for j, e in enumerate(furniture_elements([it], vp.px, vp.scale, f, size=end.size)):
             e["id"] = f"fin-{'s' if j == 0 and isinstance(it, Stroke) else 'f'}{k}"
+            if _at_letter_size(it, j):
+                e["class"] = e["class"] + " sc"
             k += 1
             g.add(e)
     ls = end.letter
@@ -238,6 +240,18 @@ def end_furniture(scene: Scene, style: Style, vp: Viewport, end: EndView, placin
             k += 1
             g.add(el)
     return g
+
+
+def _at_letter_size(item: Any, j: int) -> bool:
+    """Whether element *j* of the furniture *item* is drawn at the letters' size about its own middle (a scale's
+    end ticks, a broken stroke's zig-zag, a dot): class ``sc``, which the player scales about its middle by its
+    letter scale over the end state's (:mod:`construct.render.player`), as it scales the plate's upright lettering.
+    (An arrowhead, drawn about its tip, and a turned text, about its turn, the player finds by their form.)
+
+    >>> _at_letter_size(ScaleBar((0, 0), (1, 0), "1 at"), 1), _at_letter_size(ScaleBar((0, 0), (1, 0), "1 at"), 0)
+    (True, False)
+    """
+    return (isinstance(item, ScaleBar) and j in (1, 2)) or (isinstance(item, Stroke) and j == 1) or isinstance(item, Dot)
 
 
 class _Text(Element):

@@ -37,8 +37,10 @@ marks are swept as the rest (:meth:`construct.render.sweepdraw.SweepDrawing`), a
 (its dimensions, lettering and added lines) where it keeps its form over the domain
 (:meth:`construct.live.Measure.furniture_keeps_form`; elsewhere it is shown at the book's values alone and the
 page says so).  Readings of the figure (an angle to the minute) are written as read at the nearer grid value.
-Two things hold the built value's numbers and are shown at the book's values alone: an area's hatching (its
-outline follows) and the inset (a sliver's place magnified beside the view).
+An area's hatching is drawn anew with its outline, as the drawing hatches it (:func:`construct.render.paths.
+hatch_segments`: the player's data says its spacing and each area's angle); a signed area's (its pieces' angle
+turns with their sign) and the inset (a sliver's place magnified beside the view) hold the built value's numbers
+and are shown at the book's values alone.
 
 The script exposes ``window.constructLive``: ``set(value)`` moves the first
 given (``set(value, true)``: as a drag draws it; ``set(value, dragging,
@@ -552,7 +554,7 @@ LIVE_SCRIPT = r"""
       }
       fx.push(xs[i]); fu.push(u); fl.push(l);
     }
-    var sign = fu.map(function(u, j){ return Math.sign(u - fl[j]); }), ends = [0], out = [];
+    var sign = fu.map(function(u, j){ return Math.sign(u - fl[j]); }), ends = [0], out = [], rings = [];
     sign.forEach(function(sg, j){ if (sg === 0 && j > 0 && j < sign.length - 1) ends.push(j); });
     ends.push(sign.length - 1);
     ends = ends.filter(function(e, j){ return j === 0 || e !== ends[j - 1]; });
@@ -563,14 +565,39 @@ LIVE_SCRIPT = r"""
       var rx = [], ry = [];
       for (i = a; i <= b; i++) { rx.push(fx[i]); ry.push(fu[i]); }
       for (i = b; i >= a; i--) { rx.push(fx[i]); ry.push(fl[i]); }
-      var ring = [];  // the doubled points where a run starts or ends on a crossing dropped
+      var ring = [], kx = [], ky = [];  // the doubled points where a run starts or ends on a crossing dropped
       for (i = 0; i < rx.length; i++) {
         var q = (i + rx.length - 1) % rx.length;
-        if (rx[i] !== rx[q] || ry[i] !== ry[q]) ring.push(text2(rx[i]) + " " + text2(ry[i]));
+        if (rx[i] !== rx[q] || ry[i] !== ry[q]) { ring.push(text2(rx[i]) + " " + text2(ry[i])); kx.push(round2(rx[i])); ky.push(round2(ry[i])); }
       }
-      if (ring.length >= 3) out.push("M" + ring.join("L") + "Z");
+      if (ring.length >= 3) { out.push("M" + ring.join("L") + "Z"); rings.push([kx, ky]); }
     }
+    out.rings = rings;
     return out;
+  }
+  // an area's hatching (render/paths.py hatch_segments, as the drawing hatches it): lines *px* apart at *deg*
+  // through the figure's origin, each cut to the ring where it crosses the ring's edges (even-odd, along the
+  // line), pieces under half a unit left out
+  function hatchOf(ring, px, deg){
+    var a = deg * Math.PI / 180, ux = Math.cos(a), uy = -Math.sin(a), nx = -uy, ny = ux;
+    var xs = ring[0], ys = ring[1], n = xs.length, t = new Float64Array(n), lo = Infinity, hi = -Infinity, i, d = "";
+    for (i = 0; i < n; i++) { t[i] = xs[i] * nx + ys[i] * ny; if (t[i] < lo) lo = t[i]; if (t[i] > hi) hi = t[i]; }
+    for (var k = Math.floor(lo / px); k * px <= hi; k++) {
+      var c = k * px, cut = [];
+      for (i = 0; i < n; i++) {
+        var j = (i + 1) % n, ti = t[i], tj = t[j];
+        if ((ti <= c) === (tj <= c)) continue;  // (half-open: a vertex on the line is counted once)
+        var f = (c - ti) / (tj - ti);
+        cut.push((xs[i] + f * (xs[j] - xs[i])) * ux + (ys[i] + f * (ys[j] - ys[i])) * uy);
+      }
+      cut.sort(function(p, q){ return p - q; });
+      for (i = 0; i + 1 < cut.length; i += 2) {
+        if (cut[i + 1] - cut[i] < 0.5) continue;
+        d += "M" + text2(c * nx + cut[i] * ux) + " " + text2(c * ny + cut[i] * uy)
+          + "L" + text2(c * nx + cut[i + 1] * ux) + " " + text2(c * ny + cut[i + 1] * uy);
+      }
+    }
+    return d;
   }
   function drawAreas(every){  // (every: the areas of steps not shown too)
     for (var i = 0; i < areas.length; i++) {
@@ -592,12 +619,25 @@ LIVE_SCRIPT = r"""
           A.pieces[j - 1].parentNode.insertBefore(el, A.pieces[j - 1].nextSibling);
           A.pieces.push(el);
         }
+        var h = A.hatches ? A.hatches[j] : null;
+        if (A.hatches && !h && j < pieces.length) {  // (a piece the drawing did not hatch at the book's value: after it)
+          h = A.hatches[j] = mk("path", "hatch", el.parentNode);
+          h.setAttribute("id", el.id + "-hatch");
+          el.parentNode.insertBefore(h, el.nextSibling);
+        }
         if (j < pieces.length) {
-          if (A.drawn[j] !== pieces[j]) { A.drawn[j] = pieces[j]; el.setAttribute("d", pieces[j]); }
+          if (A.drawn[j] !== pieces[j]) {
+            A.drawn[j] = pieces[j]; el.setAttribute("d", pieces[j]);
+            if (h) { var hd = hatchOf(pieces.rings[j], HATCH.px, A.deg); if (h.getAttribute("d") !== hd) h.setAttribute("d", hd); }
+          }
           if (el.hasAttribute("display")) { el.removeAttribute("display"); el.style.display = ""; }
+          if (h && h.style.display) h.style.display = "";
         }
         // (in its style too: an end state's own area, .fin .fo, is shown by a rule that outranks the attribute)
-        else if (el.getAttribute("display") !== "none") { el.setAttribute("display", "none"); el.style.display = "none"; }
+        else {
+          if (el.getAttribute("display") !== "none") { el.setAttribute("display", "none"); el.style.display = "none"; }
+          if (h && h.style.display !== "none") h.style.display = "none";
+        }
       }
     }
   }
@@ -653,6 +693,7 @@ LIVE_SCRIPT = r"""
     fillStale();
     if (!S) return;
     S.slots.forEach(write);
+    if (player && player.pin) player.pin();
     followers.forEach(follow);
     breakMarks(true);
     drawAreas(true);
@@ -685,7 +726,7 @@ LIVE_SCRIPT = r"""
       + "|" + svg.getAttribute("data-step") + "|" + window.innerWidth + "x" + window.innerHeight;
     if (key === boxKey && boxes) return true;
     // the figure's map to the screen (a layout of the page, forced after the frame's writes)
-    var ctm = svg.getScreenCTM();
+    var ctm = player && player.ctm ? player.ctm() : svg.getScreenCTM();  // (with the camera's transform in a drag)
     if (!ctm) return false;
     var s = Math.hypot(ctm.a, ctm.b);  // screen pixels per unit of the figure
     if (!s) return false;
@@ -701,7 +742,7 @@ LIVE_SCRIPT = r"""
     return true;
   }
   function pixel(){  // one screen pixel in the figure's units, in the view shown (the viewBox fitted into the box)
-    var v = (svg.getAttribute("viewBox") || "").split(/[ ,]+/).map(Number);
+    var v = player && player.view ? player.view() : (svg.getAttribute("viewBox") || "").split(/[ ,]+/).map(Number);
     var s = v.length === 4 && v[2] > 0 && v[3] > 0 ? Math.min(sized[0] / v[2], sized[1] / v[3]) : 0;
     return s > 0 ? 1 / s : 0;
   }
@@ -771,6 +812,7 @@ LIVE_SCRIPT = r"""
     if (player) view(!glide, dragging);
     seeing();  // (a new zoom level or end state: which marks are hidden)
     drawMarks();
+    if (player && player.pin) player.pin();  // (the end state's turned texts and arrowheads about their new anchors)
     drawAreas();
     breakMarks();
     // readings of the figure (an angle to the minute, a dimension's value): as read at the nearer grid value
@@ -937,10 +979,11 @@ LIVE_SCRIPT = r"""
       return inflate(L.data);
     }).then(function(buf){ W.buf = buf; return W; });
   }
-  var endNote = null, insetHidden = false, hatches = [], endWritesRod = false, endAt = 0, endFurniture = [], furnitureOn = true;
+  var endNote = null, insetHidden = false, hatches = [], HATCH = null, endWritesRod = false, endAt = 0, endFurniture = [], furnitureOn = true;
   api.ready = Promise.all(LIST.map(load)).then(function(ws){
     player = window.constructPlayer;
     endAt = player ? player.data.end : 0;
+    HATCH = player ? player.data.hatch : null;
     endFurniture = Array.prototype.slice.call(svg.querySelectorAll("#furniture > g.fo"));
     svg.querySelectorAll("#furniture g.fo.end text").forEach(function(t){ if (/^L\s*=\s*[0-9]/.test(t.textContent)) endWritesRod = true; });
     var held = LIST.filter(function(L){ return L.end_held || L.furniture_held; });
@@ -978,9 +1021,12 @@ LIVE_SCRIPT = r"""
       var find = function(id){ return player && player.find ? player.find(id) : document.getElementById(id); };
       var pieces = [], el;
       for (var j = 0; (el = find(j ? a[0] + "-" + j : a[0])); j++) pieces.push(el);
-      // (an area's hatching, drawn by the drawing at the book's value, is not in the sweep: shown there alone)
-      pieces.forEach(function(p){ var h = find(p.id + "-hatch"); if (h) hatches.push(h); });
-      if (pieces.length) areas.push({id: a[0], pieces: pieces, els: a.slice(1).map(find), key: null,
+      // (an area's hatching: drawn anew with it where the page knows how the drawing hatches it (player.data.hatch),
+      // else held at the book's value, shown there alone)
+      var deg = HATCH ? HATCH.deg[a[0]] : undefined, hs = pieces.map(function(p){ return find(p.id + "-hatch"); });
+      if (deg === undefined) hs.forEach(function(h){ if (h) hatches.push(h); });
+      if (pieces.length) areas.push({id: a[0], pieces: pieces, els: a.slice(1).map(find), key: null, deg: deg,
+                                     hatches: deg !== undefined ? hs : null,
                                      drawn: pieces.map(function(p){ return p.getAttribute("d"); })});
     });
     // the break marks as built give way to the page's own (drawn at every value, the built one too)

@@ -134,6 +134,13 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         st["p"] = p  # its group path in the step list (the script builds the list)
     data = {"n": n, "steps": steps, "groups": list(groups), "views": [list(v) for v in views],
             "levels": list(ZOOM_LEVELS), "dt": round(1000 * STEP_SECONDS), "titles": titles, "paths": paths}
+    if style.hatch:
+        # an area's hatching as the style draws it (render/paths.py hatch_segments), which a live given draws anew:
+        # its lines' spacing (canvas px) and each area's angle (a signed area's pieces turn with their sign: held)
+        deg = {m.id: 45.0 if m.hatch is None else m.hatch for m in scene.marks
+               if m.kind is MarkKind.AREA and "signed" not in m.look.split()}
+        if deg:
+            data["hatch"] = {"px": style.hatch_spacing, "deg": deg}
     if d.end is not None:
         data["end"] = 1  # the last step shows the end state (the figure's class fin)
         # its letter scale as laid out: the plate's lettering in it (the furniture's texts, set at that scale's size
@@ -226,7 +233,10 @@ main{display:flex;gap:12px;padding:8px 16px;align-items:flex-start}
 #inset .ilb{fill:#c2255c;font-family:'DejaVu Sans',sans-serif;paint-order:stroke;stroke:#fff;stroke-width:.25em}
 #figure{width:100%;height:auto;aspect-ratio:{{ASPECT}};max-height:70vh;border:1px solid #ccc;background:#fff;display:block}
 #figure .lbg>*,#figure .pt{--ls:1;transform:scale(var(--ls))}
-#figure .fo.end text:not([transform]){transform-box:fill-box;transform-origin:center}
+#figure .fo.end text:not([transform]),#figure .fo.end .sc{transform-box:fill-box;transform-origin:center}
+#figure .fo.end text:not([transform])[style*="text-anchor:start"]{transform-origin:left center}
+#figure .fo.end text:not([transform])[style*="text-anchor:end"]{transform-origin:right center}
+#figure .fo.end text[transform],#figure .fo.end path.arrow{transform-box:view-box;transform-origin:0 0}
 #controls{display:flex;gap:6px;align-items:center;margin:8px 0;flex-wrap:wrap}
 #controls button{font:inherit;padding:3px 10px;min-width:2.4em}
 #slider{flex:1 1 200px}
@@ -325,7 +335,7 @@ li a.later{color:#bbb}
   Array.prototype.forEach.call(document.styleSheets, function (sh) {
     Array.prototype.forEach.call(sh.cssRules, function (r) {
       if (!lsRule && r.selectorText && r.selectorText.indexOf("#figure .lbg") === 0) { lsRule = r; }
-      if (!furRule && data.els && r.selectorText === "#figure .fo.end text:not([transform])") { furRule = r; }
+      if (!furRule && data.els && r.selectorText && r.selectorText.indexOf("#figure .fo.end text:not([transform])") === 0) { furRule = r; }
     });
   });
   // While a given is dragged (jump(true)), a new letter scale or zoom level is a frame of its own: it restyles
@@ -336,6 +346,27 @@ li a.later{color:#bbb}
   // within a fifth of that level's range.  Letting go of the slider sets both exactly.
   var DRAG_SMALLER = 0.04, DRAG_LARGER = 0.2, DRAG_SET_SMALLER = 0.03, DRAG_SET_LARGER = 0.18, DRAG_LEVEL = 1.2;
   var dragFrom = null;  // the whole figure's canvas pixels per screen pixel at the last view shown
+  // While a given is dragged a new view moves the figure by the transform of one group round it (the camera's),
+  // the viewBox kept as the drag found it: a new viewBox lays the whole figure out anew (at piston-force's last
+  // step the camera's move and the layout it forces took 1.6 ms, by a transform 0.4 ms).  Letting go (put without
+  // *drag*) sets the viewBox and drops the transform.  view() is the view shown, ctm() the figure's map to the
+  // screen (the camera group's, transform and all).
+  var cam = null, camAt = null, camSet = "";
+  function aim(box, r) {  // show the view *box* (its text) by the camera's transform in the viewBox camAt
+    if (!cam) {  // (made at the first drag: every element of the figure but its style sheet, in their order)
+      cam = document.createElementNS(svg.namespaceURI, "g");
+      cam.setAttribute("id", "camera");
+      Array.prototype.slice.call(svg.childNodes).forEach(function (c) { if (c.nodeName !== "style") { cam.appendChild(c); } });
+      svg.appendChild(cam);
+    }
+    if (!camAt) { camAt = svg.getAttribute("viewBox").split(" ").map(Number); }
+    // each view fitted into the box (centred, its scale the smaller of the two): a point x of view v is where the
+    // viewBox camAt shows k x + t
+    var v = box.split(" ").map(Number), b = camAt, s = 1 / ratio(v, r), sb = 1 / ratio(b, r), k = s / sb;
+    var tx = b[0] + (sb * b[2] - s * v[2]) / 2 / sb - k * v[0], ty = b[1] + (sb * b[3] - s * v[3]) / 2 / sb - k * v[1];
+    var m = "matrix(" + k.toFixed(6) + " 0 0 " + k.toFixed(6) + " " + tx.toFixed(3) + " " + ty.toFixed(3) + ")";
+    if (m !== camSet) { camSet = m; cam.setAttribute("transform", m); }
+  }
   function put(v, r, drag) {  // show view *v*: letters and points at their screen size (12 px, never below 9.5 px)
     // the letter scale of the view's zoom level (the letters were placed for it): the level's picture
     // magnified as a whole, letters never smaller on the screen than at the level's own zoom
@@ -347,7 +378,11 @@ li a.later{color:#bbb}
     // written only when changed: a new --ls restyles every letter, a new viewBox repaints the figure
     var box = v.map(function (x) { return x.toFixed(2); }).join(" ");
     var exact = Math.min(Math.max(1, 9.5 * ql / 12), ql), ls = exact.toFixed(4), lsAt = lsRule ? lsRule.style : svg.style;
-    if (box !== svg.getAttribute("viewBox")) { svg.setAttribute("viewBox", box); }
+    if (drag && r.width && r.height) { aim(box, r); }
+    else {
+      if (camAt) { camAt = null; camSet = ""; cam.removeAttribute("transform"); }
+      if (box !== svg.getAttribute("viewBox")) { svg.setAttribute("viewBox", box); }
+    }
     var was = lsAt.getPropertyValue("--ls").trim();
     if (drag && was) {
       if (was >= exact * (1 - DRAG_SMALLER) && was <= exact * (1 + DRAG_LARGER)) { ls = was; }
@@ -359,9 +394,9 @@ li a.later{color:#bbb}
     dragFrom = qf;
     if (ls !== was) {
       lsAt.setProperty("--ls", ls);
-      // the end state's plate lettering about its own middle, at the letters' size; 1 where the end state was
-      // laid out (a turned text not: a transform origin at its middle would move its turn, the attribute's)
-      if (furRule) { furRule.style.setProperty("scale", (ls / data.els).toFixed(4)); }
+      // the end state's plate lettering (and a scale's ticks, a dot: .sc) about its own middle, at the letters'
+      // size; 1 where the end state was laid out.  Its turned texts and arrowheads about their anchors: pin
+      if (furRule) { furScale = (ls / data.els).toFixed(4); furRule.style.setProperty("scale", furScale); pin(); }
     }
     var ring = document.getElementById("ring");
     if (ring) {
@@ -370,6 +405,25 @@ li a.later{color:#bbb}
         ring.setAttribute("cx", ringAt[0]); ring.setAttribute("cy", ringAt[1]);
         ring.setAttribute("r", Math.max(ringAt[2], 9 * q).toFixed(2));
       }
+    }
+  }
+  // The end state's turned texts (F/f along its dimension) and arrowheads are scaled with its upright lettering, but
+  // about their anchor -- the turn's centre, the arrow's tip -- which the given moves: a transform origin there
+  // would move the turn too (the attribute turns about its own centre, and an origin shifts the whole transform),
+  // so each is scaled about the figure's origin and moved back by (1 - s) times its anchor (translate and scale
+  // come before the attribute's turn).  Asked again when the live given writes them (constructLive: pin).
+  var pinned = null, furScale = "1", TURN = /rotate[(] *[-0-9.e]+[ ,]+([-0-9.e]+)[ ,]+([-0-9.e]+)/, TIP = /^M *([-0-9.e]+)[ ,]+([-0-9.e]+)/;
+  function pin() {
+    if (!data.els) { return; }
+    if (!pinned) { pinned = Array.prototype.slice.call(svg.querySelectorAll("#furniture .fo.end text[transform], #furniture .fo.end path.arrow")); }
+    for (var i = 0; i < pinned.length; i++) {
+      var e = pinned[i], m = e.tagName === "text" ? TURN.exec(e.getAttribute("transform")) : TIP.exec(e.getAttribute("d"));
+      var key = m ? furScale + " " + m[1] + " " + m[2] : "";
+      if (!m || e.pinned === key) { continue; }
+      e.pinned = key;
+      var s = +furScale;
+      e.style.translate = ((1 - s) * m[1]).toFixed(3) + "px " + ((1 - s) * m[2]).toFixed(3) + "px";
+      e.style.scale = furScale;
     }
   }
   function move(to) {  // the viewBox from where it is to *to* in a third of a second
@@ -586,7 +640,9 @@ li a.later{color:#bbb}
       lean = true;
       groups.forEach(function (g, i) { places[i] = document.createComment("step " + g.getAttribute("data-step")); place(i); });
     },
-    target: target,
+    target: target, pin: pin,
+    view: function () { return now.slice(); },
+    ctm: function () { return (cam || svg).getScreenCTM(); },
     jump: function (drag) {  // *drag*: as a given's drag draws it (the view, the letters' scale and level kept near)
       if (anim) { cancelAnimationFrame(anim); anim = null; }
       // the figure's box read once, before the level's class is set (a read after it would restyle the figure twice)

@@ -30,7 +30,7 @@ from ..render.camera import FINAL_CONTEXT, MAX_ZOOM, ZOOM_LEVELS, Framing, clip_
 from ..render.end_state import NumbersFactory, end_furniture, furniture_numbers
 from ..render.output import scene_for
 from ..render.plate import plate_of, shifted, subscript_runs
-from ..render.player import player_html
+from ..render.player import inset_marks, player_html
 from ..render.scene import MarkKind, extreme_points, reading
 from ..render.sheet import break_shift
 from ..render.styles import STYLES
@@ -112,6 +112,12 @@ class Measure:
         self.rings = [(i, [m.id for m in scene.marks if m.step == k]) for i, k in enumerate(self.steps)
                       if drawing.ring(k) is not None]
         self.boxes = self._boxes(scene, drawing.vp)
+        #: the steps shown with an inset (:func:`~construct.render.insets.step_insets`, chosen at the built value), by
+        #: their index: its box (x, y, w, h), the marks it is carried with and whether it magnifies a cluster
+        #: (:func:`_inset_carriers`), and the box that carries it at the built value (:meth:`_carried_insets`)
+        self.insets = [(i, tuple(z), *_inset_carriers(drawing, k, z)) for i, k in enumerate(self.steps)
+                       if (z := drawing.insets[k - 1]) is not None]
+        self._inset_b0 = self._inset_boxes(scene, drawing.vp)
         self.least = 1.0 / MAX_ZOOM
         self._end_framing = self._held_end_view(scene, drawing)
         self.template = scene
@@ -216,7 +222,7 @@ class Measure:
     def _runs(self, keys: list[tuple[str, str, str]]) -> list[tuple[str, int]]:
         """Each mark's run of numbers among *keys*: (its id, how many)."""
         runs: list[tuple[str, int]] = []
-        for k in keys[1:len(keys) - len(self.view_of) - len(self.rings) - 2]:
+        for k in keys[1:len(keys) - len(self.view_of) - len(self.rings) - len(self.insets) - 2]:
             if runs and runs[-1][0] == k[0]:
                 runs[-1] = (k[0], runs[-1][1] + k[2].count("#"))
             else:
@@ -325,7 +331,8 @@ class Measure:
         found = self._rows.get(id(protocol))
         if found is None or found[0] != marked:
             at = {i: r for r, i in enumerate(marked)}
-            groups = [[at[i] for i in ids if i in at] for ids in self.framed + [ids for _, ids in self.rings]]
+            groups = [[at[i] for i in ids if i in at] for ids in
+                      self.framed + [ids for _, ids in self.rings] + [ids for _, _, ids, _ in self.insets]]
             sizes = np.asarray([len(g) for g in groups], dtype=int)
             found = self._rows[id(protocol)] = (marked, np.asarray([r for g in groups for r in g], dtype=int),
                                                 (np.cumsum(sizes) - sizes)[sizes > 0], sizes > 0)
@@ -340,10 +347,18 @@ class Measure:
         carried = self._carried_rows(box[:, :views], boxed[:views], width, height)  # (views + 1) x 4 x values
         blocks = [np.zeros((size, 2)), width[:, None], height[:, None], rows,
                   carried[self.view_of].transpose(2, 0, 1).reshape(size, -1)]
+        rings = views + len(self.rings)
         if self.rings:  # the ring's centre: of the box of the step's marks
-            ring = box[:, views:]
+            ring = box[:, views:rings]
             centre = np.stack([np.round((ring[0] + ring[2]) / 2, 2), np.round((ring[1] + ring[3]) / 2, 2)])
-            blocks.append(np.where(boxed[views:, None], centre, 0.0).transpose(2, 1, 0).reshape(size, -1))
+            blocks.append(np.where(boxed[views:rings, None], centre, 0.0).transpose(2, 1, 0).reshape(size, -1))
+        if self.insets:  # each inset's box: carried with its points (a cluster's: with its two closest)
+            carrier = box[:, rings:].copy()
+            for n, (_, _, ids, pair) in enumerate(self.insets):
+                if pair:
+                    xy = [at_once.numbers[i][:, :2].T for i in ids if i in at_once.numbers]
+                    carrier[:, n] = _closest_pairs(np.asarray(xy, dtype=float).reshape(-1, 2, size))
+            blocks.append(self._carried_insets(carrier).transpose(2, 0, 1).reshape(size, -1))
         blocks.append(at_once.breaks_page())
         table = np.hstack(blocks)
         fits = [tuple(row) for row in at_once.fit.tolist()]
@@ -382,6 +397,42 @@ class Measure:
             view = [np.clip(cx - vw / 2, 0.0, W - vw), np.clip(cy - vh / 2, 0.0, H - vh), vw, vh]
             out = np.stack([np.where(whole, f, np.round(v, 2) + 0.0) for f, v in zip(full, view)], axis=1)
         return np.concatenate([out, np.stack(full)[None]])
+
+    def _inset_boxes(self, scene: Any, vp: Viewport) -> np.ndarray:
+        """The boxes that carry the insets (:meth:`_carried_insets`) in *scene* drawn on *vp*: x0, y0, x1, y1 x
+        insets x 1 (NaN where its marks are not drawn)."""
+        by_id = {m.id: m for m in scene.marks}
+        boxes = self._boxes(scene, vp, [ids for _, _, ids, _ in self.insets])
+        out = np.asarray([b if b is not None else (np.nan,) * 4 for b in boxes], dtype=float).reshape(-1, 4).T[:, :, None]
+        for n, (_, _, ids, pair) in enumerate(self.insets):
+            if pair:
+                xy = np.asarray([vp.px(*by_id[i].geom) for i in ids if i in by_id], dtype=float).reshape(-1, 2, 1)
+                out[:, n] = _closest_pairs(xy)
+        return out
+
+    def _carried_insets(self, box: np.ndarray) -> np.ndarray:
+        """Each inset's box carried along with its marks, now in *box* (x0, y0, x1, y1 x insets x values; NaN where
+        they are not drawn: the built box held), not cut to the canvas (the inset may magnify a place at its edge):
+        insets x (x, y, w, h) x values.
+
+        An inset of a cluster magnifies the two closest points until they are a set distance apart on the screen
+        (:func:`~construct.render.camera.step_details`): its box is centred between them and as large as their
+        distance in proportion -- their box's diagonal -- and is carried so.  Any other moves with its marks'
+        box and grows or shrinks with it as :meth:`_carried` carries a view."""
+        x, y, w, h = np.asarray([z for _, z, _, _ in self.insets], dtype=float).reshape(-1, 4).T[:, :, None]
+        b0 = self._inset_b0
+        pair = np.asarray([pair for _, _, _, pair in self.insets])[:, None]
+        fw, fh = 0.25 * w, 0.25 * h
+        with np.errstate(invalid="ignore", divide="ignore"):
+            s = np.where(pair, np.hypot(box[2] - box[0], box[3] - box[1]) / np.hypot(b0[2] - b0[0], b0[3] - b0[1]),
+                         np.maximum(np.maximum(box[2] - box[0], fw) / np.maximum(b0[2] - b0[0], fw),
+                                    np.maximum(box[3] - box[1], fh) / np.maximum(b0[3] - b0[1], fh)))
+            cx = (box[0] + box[2]) / 2 + (x + w / 2 - (b0[0] + b0[2]) / 2) * s
+            cy = (box[1] + box[3]) / 2 + (y + h / 2 - (b0[1] + b0[3]) / 2) * s
+            carried = [cx - w * s / 2, cy - h * s / 2, w * s, h * s]
+            held = np.isnan(s)
+            out = [np.where(held, np.broadcast_to(z, s.shape), np.round(c, 2) + 0.0) for z, c in zip((x, y, w, h), carried)]
+        return np.stack(out, axis=1)
 
     def __call__(self, figure: Figure) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:
         # (with its end state where the player shows one: its own marks, the plate's, are drawn as the rest)
@@ -434,10 +485,51 @@ class Measure:
             pts = [vp.px(*p) for m in ids if m in by_id for p in extreme_points(by_id[m])]
             nums += _ring_centre(min(p[0] for p in pts), min(p[1] for p in pts), max(p[0] for p in pts),
                                  max(p[1] for p in pts)) if pts else [0.0, 0.0]
+        if self.insets:
+            for (i, _, _, _), z in zip(self.insets, self._carried_insets(self._inset_boxes(scene, vp))[:, :, 0].tolist()):
+                keys.append(("#inset", str(i), "# # # #"))
+                nums += z
         for axis in (0, 1):
             keys.append(("#break", str(axis), "# #"))
             nums += breaks_px(scene.breaks, axis, fit_of(vp))
         return keys, nums, fit_of(vp), texts
+
+
+def _inset_carriers(drawing: Any, k: int, z: tuple) -> tuple[list[str], bool]:
+    """The ids of the marks step *k*'s inset (its box *z*, canvas px) is carried with, and whether it magnifies a
+    cluster: the two closest of the step's points, centred between them (:func:`~construct.render.camera.
+    step_details`) -- then the ids are all the points it compares, of which the closest two carry it at each value
+    (:func:`_closest_pairs`); else the points it letters, else the step's own marks."""
+    s = drawing.scene.steps[k - 1]
+    points = {m.name: m for m in drawing.scene.marks if m.kind is MarkKind.POINT}
+    near = [points[n] for n in dict.fromkeys((*s.outputs, *s.inputs, *sorted(drawing.scene.named(k)))) if n in points]
+    xy = np.asarray([drawing.vp.px(*m.geom) for m in near], dtype=float).reshape(-1, 2, 1)
+    box = _closest_pairs(xy)[:, 0]
+    # (the box rounded to 0.01 px)
+    if not np.isnan(box[0]) and abs((box[0] + box[2]) / 2 - z[0] - z[2] / 2) < 0.02 \
+            and abs((box[1] + box[3]) / 2 - z[1] - z[3] / 2) < 0.02:
+        return [m.id for m in near], True
+    return [m.id for m, _ in inset_marks(drawing, k, z)] or [m.id for m in drawing.scene.marks if m.step == k], False
+
+
+def _closest_pairs(xy: np.ndarray) -> np.ndarray:
+    """The box (x0, y0, x1, y1 x values) of the two closest of the points *xy* (points x (x, y) x values), read
+    as :func:`~construct.render.camera.step_details` reads them (to 0.1 px; two at one place are one); NaN where
+    there are fewer than two."""
+    n = xy.shape[0]
+    out = np.full((4, xy.shape[2]), np.nan)
+    if n < 2:
+        return out
+    xy = np.round(xy, 1)
+    i, j = np.triu_indices(n, 1)
+    d = np.hypot(xy[i, 0] - xy[j, 0], xy[i, 1] - xy[j, 1])  # pairs x values
+    d = np.where(d > 0.0, d, np.inf)
+    best = np.argmin(d, axis=0)
+    cols = np.arange(xy.shape[2])
+    a, b = xy[i[best], :, cols], xy[j[best], :, cols]  # values x (x, y)
+    found = np.isfinite(d[best, cols])
+    out[:, found] = np.concatenate([np.minimum(a, b), np.maximum(a, b)], axis=1)[found].T
+    return out
 
 
 def _form(items: Any) -> tuple:

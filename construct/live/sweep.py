@@ -347,7 +347,7 @@ def _key_columns(keys: list[tuple[str, str, str]]) -> tuple[np.ndarray, ...]:
     if got is not None and got[0] is keys:
         return got[1]
     owner = np.asarray([i for i, k in enumerate(keys) for _ in range(k[2].count("#"))], dtype=int)
-    made = (owner, _columns(keys, lambda k: k[0] == "#zoom"), arc_flags(keys), radii(keys))
+    made = (owner, _columns(keys, lambda k: k[0] in ("#zoom", "#inset")), arc_flags(keys), radii(keys))
     if len(_KEY_COLUMNS) >= 4:
         _KEY_COLUMNS.clear()
     _KEY_COLUMNS[id(keys)] = (keys, made)

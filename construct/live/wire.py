@@ -59,7 +59,7 @@ def column_kinds(keys: list[tuple[str, str, str]]) -> np.ndarray:
             out.append(Y)
         elif attr == "r" and n == 1:
             out.append(LOG)
-        elif ident == "#zoom" or attr == "viewBox":
+        elif ident in ("#zoom", "#inset") or attr == "viewBox":
             out += [X, Y, LENGTH, LENGTH]
         elif attr == "d" and template == ARC:
             out += [X, Y, LOG, LOG, PX, PX, PX, X, Y]

@@ -39,8 +39,10 @@ marks are swept as the rest (:meth:`construct.render.sweepdraw.SweepDrawing`), a
 page says so).  Readings of the figure (an angle to the minute) are written as read at the nearer grid value.
 An area's hatching is drawn anew with its outline, as the drawing hatches it (:func:`construct.render.paths.
 hatch_segments`: the player's data says its spacing and each area's angle); a signed area's (its pieces' angle
-turns with their sign) and the inset (a sliver's place magnified beside the view) hold the built value's numbers
-and are shown at the book's values alone.
+turns with their sign) holds the built value's numbers and is shown at the book's values alone.  The inset (a
+step's small work magnified beside the view) follows the given: its box carried with its points
+(:class:`construct.live.Measure`), its points drawn where their circles stand; where the box has grown until it
+magnifies no more than the view, it is not shown.
 
 The script exposes ``window.constructLive``: ``set(value)`` moves the first
 given (``set(value, true)``: as a drag draws it; ``set(value, dragging,
@@ -198,7 +200,7 @@ LIVE_SCRIPT = r"""
   var VIEWS = "zooms", IDX = "z";
   // ---- one given's data: every drawn number at every grid value ---------------------------------------------
   function Sweep(L){
-    this.L = L; this.value = L.initial; this.slots = []; this.byId = {}; this.zoomAt = []; this.ringAt = [];
+    this.L = L; this.value = L.initial; this.slots = []; this.byId = {}; this.zoomAt = []; this.ringAt = []; this.insetAt = [];
     this.loose = []; this.inGroup = new Map(); this.slotsOf = new Map();
     this.breakAt = null; this.full = null; this.pathSlot = new Map();
     this.input = document.querySelector('input[name="' + L.given + '"]');
@@ -261,6 +263,7 @@ LIVE_SCRIPT = r"""
       // a step's view, the ring round its mark, the broken axes: data for the shown step and the break marks
       if (k[0] === "#zoom") { self.zoomAt[+k[1]] = at; at += nn; return; }
       if (k[0] === "#ring") { self.ringAt[+k[1]] = at; at += nn; return; }
+      if (k[0] === "#inset") { self.insetAt[+k[1]] = at; at += nn; return; }
       if (k[0] === "#break") { (self.breakAt = self.breakAt || [])[+k[1]] = at; at += nn; return; }
       var el = k[0] ? (player && player.find ? player.find(k[0]) : document.getElementById(k[0])) : svg;
       var cs = new Int32Array(nn), mv = false;
@@ -712,6 +715,10 @@ LIVE_SCRIPT = r"""
     if (st && st.r && S.ringAt[k - 1] !== undefined) {  // the ring (the array the player rings with): round its mark
       st.r[0] = round2(num(S.ringAt[k - 1])); st.r[1] = round2(num(S.ringAt[k - 1] + 1));
     }
+    // the inset (the step's small work magnified beside the view): its box carried with its points (live/measure.py),
+    // drawn at once with them -- after the marks (its points are read off their circles)
+    insetDue = !!(st && st.z && S.insetAt[k - 1] !== undefined);
+    if (insetDue) for (var zi = 0; zi < 4; zi++) st.z[zi] = round2(num(S.insetAt[k - 1] + zi));
     // the player moves its view there itself: at once while the given is dragged, smoothly to a new step
     if (player.jump && atOnce) { player.jump(!!drag); return; }
     if (player.move) { player.move(); return; }
@@ -807,16 +814,11 @@ LIVE_SCRIPT = r"""
     for (var hi = 0; hi < hatches.length; hi++) {
       var hs = atBook ? "" : "none"; if (hatches[hi].style.display !== hs) hatches[hi].style.display = hs;
     }
-    // the inset (a sliver's place magnified beside the view, its points lettered) holds the built value's
-    // numbers: away from the book's values it is not shown; back there the player shows the step again
-    var inset = document.getElementById("inset");
-    if (inset && !atBook && inset.style.display !== "none") {
-      inset.style.display = "none"; document.getElementById("insetbox").setAttribute("visibility", "hidden"); insetHidden = true;
-    } else if (atBook && insetHidden && player) { insetHidden = false; player.redraw(); }
     // the view first (the player reads the figure's size there: nothing written yet, no layout forced)
     if (player) view(!glide, dragging);
     seeing();  // (a new zoom level or end state: which marks are hidden)
     drawMarks();
+    if (insetDue && player.inset) player.inset();
     if (player && player.pin) player.pin();  // (the end state's turned texts and arrowheads about their new anchors)
     drawAreas();
     breakMarks();
@@ -984,7 +986,7 @@ LIVE_SCRIPT = r"""
       return inflate(L.data);
     }).then(function(buf){ W.buf = buf; return W; });
   }
-  var endNote = null, insetHidden = false, hatches = [], HATCH = null, endWritesRod = false, endAt = 0, endFurniture = [], furnitureOn = true, endView = null;
+  var endNote = null, insetDue = false, hatches = [], HATCH = null, endWritesRod = false, endAt = 0, endFurniture = [], furnitureOn = true, endView = null;
   api.ready = Promise.all(LIST.map(load)).then(function(ws){
     player = window.constructPlayer;
     endAt = player ? player.data.end : 0;
@@ -1087,7 +1089,7 @@ LIVE_SCRIPT = r"""
     if (player) new MutationObserver(function(){
       var now = svg.getAttribute("data-step");
       reveal();
-      if (now !== seenStep) { seenStep = now; view(); breakMarks(); }  // (the rod's length: the plate's, or the page's)
+      if (now !== seenStep) { seenStep = now; view(); breakMarks(); if (insetDue && player.inset) player.inset(); }  // (the rod's length: the plate's, or the page's)
       declutter();
     }).observe(svg, {attributes: true, attributeFilter: ["data-step", "viewBox", "class"]});
     showChecks(S, Math.log10(S.L.initial));

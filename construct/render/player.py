@@ -40,7 +40,7 @@ from .styles import PLAIN, Style
 from .svg import Drawing
 from .svgdoc import fmt
 
-__all__ = ["player_html", "json_for_script"]
+__all__ = ["player_html", "json_for_script", "inset_marks"]
 
 
 def json_for_script(data: Any) -> str:
@@ -175,11 +175,13 @@ def _speed_options(default: float) -> str:
     return "".join(f'<option value="{v:g}"{" selected" if v == default else ""}>{v:g} s</option>' for v in SPEEDS)
 
 
-def _inset_points(d: Drawing, k: int, box: Sequence[float], points: dict[str, Any]) -> list[list]:
-    """The points of step *k* and of what it works on (its inputs, the points its caption names) inside the
-    inset *box*, as the inset draws and letters them: [x, y, letter(, 1 for the step's own)] (canvas px; letter
-    '' for a point the figure does not letter).  The view beside it shows them a pixel or two apart; the inset, apart."""
+def inset_marks(d: Drawing, k: int, box: Sequence[float], points: dict[str, Any] | None = None) -> list[tuple[Any, bool]]:
+    """The point marks of step *k* and of what it works on (its inputs, the points its caption names) inside the
+    inset *box* (canvas px: x y w h) at the drawing's value, each with whether it is the step's own (*points*:
+    the scene's point marks by name, if the caller has them)."""
     s = d.scene.steps[k - 1]
+    if points is None:
+        points = {m.name: m for m in d.scene.marks if m.kind is MarkKind.POINT}
     x0, y0, w, h = box
     out = []
     for name in dict.fromkeys((*s.outputs, *s.inputs, *sorted(d.scene.named(k)))):
@@ -188,9 +190,17 @@ def _inset_points(d: Drawing, k: int, box: Sequence[float], points: dict[str, An
             continue
         x, y = d.vp.px(*m.geom)
         if x0 <= x <= x0 + w and y0 <= y <= y0 + h:
-            text = m.label or (d.scene.display_name(name) if d.scene.tag_shown(name) else "")
-            out.append([round(x, 2), round(y, 2), text] + ([1] if name in s.outputs else []))
+            out.append((m, name in s.outputs))
     return out
+
+
+def _inset_points(d: Drawing, k: int, box: Sequence[float], points: dict[str, Any]) -> list[list]:
+    """The points the inset *box* of step *k* draws and letters (:func:`inset_marks`): [the id of the point's
+    circle, its letter(, 1 for the step's own)] (letter '' for a point the figure does not letter).  The page
+    draws each where its circle stands -- at a live given's value, too.  The view beside it shows them a pixel
+    or two apart; the inset, apart."""
+    return [[m.id, m.label or (d.scene.display_name(m.name) if d.scene.tag_shown(m.name) else "")]
+            + ([1] if own else []) for m, own in inset_marks(d, k, box, points)]
 
 
 def _inset(d: Drawing) -> str:
@@ -486,6 +496,43 @@ li a.later{color:#bbb}
     }
     return e;
   }
+  // the inset: a sliver's place magnified beside the view (the step's box st.z, canvas px), its points where their
+  // circles stand (a live given moves them, and the box: render/live.py), lettered.  Not shown where it would
+  // magnify no more than the view *view* shows anyway (a live given can grow the box so).
+  var FIG = "{{ASPECT}}".split("/").map(Number);
+  function drawInset(view) {
+    var inset = document.getElementById("inset"), ibox = document.getElementById("insetbox");
+    if (!inset) { return; }
+    var st = k > 0 ? data.steps[k - 1] : null, z = st && zoom.checked && k < n ? st.z : null;
+    if (z && Math.min(300 / z[2], 210 / z[3]) <= Math.min(FIG[0] / view[2], FIG[1] / view[3])) { z = null; }
+    inset.style.display = z ? "block" : "none";
+    ibox.setAttribute("visibility", z ? "visible" : "hidden");
+    if (!z) { return; }
+    inset.setAttribute("viewBox", z.join(" "));
+    var dot = document.getElementById("inset-pt");  // the place the step works at, in the middle
+    dot.setAttribute("cx", z[0] + z[2] / 2); dot.setAttribute("cy", z[1] + z[3] / 2);
+    dot.setAttribute("r", st.zp && st.zp.length ? 0 : z[2] / 70);  // where no point of the step is drawn
+    var pts = document.getElementById("inset-pts"), u = z[2] / 300;  // canvas px per inset px
+    while (pts.firstChild) { pts.removeChild(pts.firstChild); }
+    (st.zp || []).forEach(function (p, i) {
+      var e = find(p[0]);
+      if (!e) { return; }
+      var x = +e.getAttribute("cx"), y = +e.getAttribute("cy");
+      var c = document.createElementNS("http://www.w3.org/2000/svg", "circle");
+      c.setAttribute("cx", x); c.setAttribute("cy", y); c.setAttribute("r", (p[2] ? 3.5 : 2.5) * u);
+      c.setAttribute("class", p[2] ? "ipt icur" : "ipt");
+      pts.appendChild(c);
+      if (p[1]) {  // its letter beside it, above and below in turn where points crowd
+        var t = document.createElementNS("http://www.w3.org/2000/svg", "text");
+        t.setAttribute("x", x + 4 * u); t.setAttribute("y", y + (i % 2 ? 14 : -5) * u);
+        t.setAttribute("font-size", 12 * u); t.setAttribute("class", "ilb");
+        t.textContent = p[1];
+        pts.appendChild(t);
+      }
+    });
+    ibox.setAttribute("x", z[0]); ibox.setAttribute("y", z[1]);
+    ibox.setAttribute("width", z[2]); ibox.setAttribute("height", z[3]);
+  }
   function show(j) {
     var box = boxOf();  // read before the classes change (a read after them forces a restyle)
     dragWas = null;  // (a new step's view is no motion of the given)
@@ -512,35 +559,7 @@ li a.later{color:#bbb}
     // the camera: the step's view (the whole figure at the ends or without the magnifier), reached smoothly
     var view = target();
     zoomLevel(view, box);
-    var inset = document.getElementById("inset"), ibox = document.getElementById("insetbox");
-    if (inset) {  // a sliver's place magnified beside the view
-      var z = st && zoom.checked && k < n ? st.z : null;
-      inset.style.display = z ? "block" : "none";
-      ibox.setAttribute("visibility", z ? "visible" : "hidden");
-      if (z) {
-        inset.setAttribute("viewBox", z.join(" "));
-        var dot = document.getElementById("inset-pt");  // the place the step works at, in the middle
-        dot.setAttribute("cx", z[0] + z[2] / 2); dot.setAttribute("cy", z[1] + z[3] / 2);
-        dot.setAttribute("r", st.zp && st.zp.length ? 0 : z[2] / 70);  // where no point of the step is drawn
-        var pts = document.getElementById("inset-pts"), u = z[2] / 300;  // canvas px per inset px
-        while (pts.firstChild) { pts.removeChild(pts.firstChild); }
-        (st.zp || []).forEach(function (p, i) {
-          var c = document.createElementNS("http://www.w3.org/2000/svg", "circle");
-          c.setAttribute("cx", p[0]); c.setAttribute("cy", p[1]); c.setAttribute("r", (p[3] ? 3.5 : 2.5) * u);
-          c.setAttribute("class", p[3] ? "ipt icur" : "ipt");
-          pts.appendChild(c);
-          if (p[2]) {  // its letter beside it, above and below in turn where points crowd
-            var t = document.createElementNS("http://www.w3.org/2000/svg", "text");
-            t.setAttribute("x", p[0] + 4 * u); t.setAttribute("y", p[1] + (i % 2 ? 14 : -5) * u);
-            t.setAttribute("font-size", 12 * u); t.setAttribute("class", "ilb");
-            t.textContent = p[2];
-            pts.appendChild(t);
-          }
-        });
-        ibox.setAttribute("x", z[0]); ibox.setAttribute("y", z[1]);
-        ibox.setAttribute("width", z[2]); ibox.setAttribute("height", z[3]);
-      }
-    }
+    drawInset(view);
     ringAt = st && k < n ? (st.r || null) : null;
     move(view);
     var cur = links[k - 1];
@@ -641,6 +660,7 @@ li a.later{color:#bbb}
       groups.forEach(function (g, i) { places[i] = document.createComment("step " + g.getAttribute("data-step")); place(i); });
     },
     target: target, pin: pin,
+    inset: function () { drawInset(target()); },  // (a live given moved the step's inset box: st.z)
     view: function () { return now.slice(); },
     ctm: function () { return (cam || svg).getScreenCTM(); },
     jump: function (drag) {  // *drag*: as a given's drag draws it (the view, the letters' scale and level kept near)

@@ -49,7 +49,7 @@ def drawn_numbers(page: str) -> tuple[list[tuple[str, str, str]], list[float], d
     """The geometry of a player page's figure: ((element id, attribute, template), ...) and the numbers in order.
 
     Every element with an id, the figure's view box and, when the page has the player's data, each step's
-    magnified view (key ``("#zoom", k, ...)``) and the centre of the ring round a step's small mark (``"#ring"``).  The third value holds the text of every lettered element by
+    magnified view (key ``("#zoom", k, ...)``) and the centre of the ring round a step's small mark (``"#ring"``), the box its inset magnifies (``"#inset"``).  The third value holds the text of every lettered element by
     id (``texts``): a letter that is a measured value (an angle read off the figure) changes with the given.
 
     >>> keys, nums, _ = drawn_numbers('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 5">'
@@ -94,6 +94,10 @@ def drawn_numbers(page: str) -> tuple[list[tuple[str, str, str]], list[float], d
             if "r" in st:
                 keys.append(("#ring", str(i), "# #"))
                 nums.extend(float(x) for x in st["r"][:2])
+        for i, st in enumerate(data["steps"]):  # the box a step's inset magnifies
+            if "z" in st and "views" in data:
+                keys.append(("#inset", str(i), "# # # #"))
+                nums.extend(float(x) for x in st["z"])
 
     return keys, nums, {"texts": texts}
 

@@ -1155,3 +1155,46 @@ def test_the_end_step_frames_what_it_draws_where_the_plates_furniture_is_held(br
     assert max(abs(a - b) for a, b in zip(page.evaluate(view), built)) <= 0.01, (page.evaluate(view), built)
     assert not errors, errors
     page.close()
+
+
+def test_the_inset_magnifies_where_a_fresh_replay_magnifies_it_while_dragging(browser, tmp_path):
+    """The 18-part crank at step 48 (the third tangent point G found beside C₁ and F, a pixel apart in the view):
+    the player magnifies the cluster in an inset.  Dragged with ``input`` events alone to L/r = 3.3 and 7.1 the
+    inset stays shown and magnifies the box a fresh replay's player magnifies there (within 0.5 px), its points
+    drawn where the fresh replay draws them and on the page's own points; it was hidden away from the book's
+    value, and its box and points were the book's."""
+    import xml.etree.ElementTree as ET
+
+    c, params, k = get("crank"), {"parts": 18}, 48
+    fig = c.figure(**params, rod_ratio=5.0)
+    write_replay(c, fig, tmp_path, style="teaching", frames="none")
+    path = tmp_path / "live.html"
+    path.write_text(with_live((tmp_path / "player.html").read_text(), live_data(live_sweep(c, fig, "rod_ratio"))))
+    page, errors = _open(browser, path)
+    page.eval_on_selector("#slider", f"(s) => {{ s.value = {k}; s.dispatchEvent(new Event('input')); }}")
+    shown = """() => { const i = document.getElementById('inset');
+        return JSON.stringify({display: getComputedStyle(i).display, box: i.getAttribute('viewBox').split(' ').map(Number),
+          pts: Array.from(document.querySelectorAll('#inset-pts circle')).map(e => [+e.getAttribute('cx'), +e.getAttribute('cy')]),
+          own: JSON.parse(document.getElementById('data').textContent).steps[%d].zp.map(p => {
+            const e = typeof p[0] === 'string' && window.constructPlayer.find(p[0]);
+            return e ? [+e.getAttribute('cx'), +e.getAttribute('cy')] : null; })}); }""" % (k - 1)
+    assert json.loads(page.evaluate(shown))["display"] == "block"  # (at the book's value)
+    was = 5.0
+    for v in (3.3, 7.1):
+        for u in np.geomspace(was, v, 6)[1:]:
+            _drag_to(page, "rod_ratio", float(u))
+        was = v
+        got = json.loads(page.evaluate(shown))
+        fresh = player_page(c, c.figure(**params, rod_ratio=v), STYLES["teaching"])
+        at = fresh.index('<script type="application/json" id="data">')
+        want = json.loads(fresh[fresh.index(">", at) + 1:fresh.index("</script>", at)])["steps"][k - 1]
+        root = ET.fromstring(fresh[fresh.index("<svg"):fresh.index("</svg>") + 6])
+        circles = {e.get("id"): e for e in root.iter("{http://www.w3.org/2000/svg}circle")}
+        assert got["display"] == "block", v
+        assert max(abs(a - b) for a, b in zip(got["box"], want["z"])) <= 0.5, (v, got["box"], want["z"])
+        points = [(float(circles[p[0]].get("cx")), float(circles[p[0]].get("cy"))) for p in want["zp"]]
+        assert len(got["pts"]) == len(points) == len(got["own"]) > 0, (v, got, points)
+        for (x, y), (a, b), (ox, oy) in zip(got["pts"], points, got["own"]):
+            assert math.hypot(x - a, y - b) <= 0.5 and (x, y) == (ox, oy), (v, (x, y), (a, b), (ox, oy))
+    assert not errors, errors
+    page.close()

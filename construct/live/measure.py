@@ -354,10 +354,14 @@ class Measure:
             blocks.append(np.where(boxed[views:rings, None], centre, 0.0).transpose(2, 1, 0).reshape(size, -1))
         if self.insets:  # each inset's box: carried with its points (a cluster's: with its two closest)
             carrier = box[:, rings:].copy()
-            for n, (_, _, ids, pair) in enumerate(self.insets):
-                if pair:
-                    xy = [at_once.numbers[i][:, :2].T for i in ids if i in at_once.numbers]
-                    carrier[:, n] = _closest_pairs(np.asarray(xy, dtype=float).reshape(-1, 2, size))
+            nums = at_once.numbers
+            for n, (_, _, ids, rounds) in enumerate(self.insets):
+                if rounds is not None:  # (a circle's numbers: cx, cy, r; an arc's path: its radius third)
+                    xy = [nums[i][:, :2].T for i in ids if i in nums]
+                    circles = [np.stack([nums[c][:, 0], nums[c][:, 1], nums[r][:, 2]]) for c, r in rounds
+                               if c in nums and r in nums]
+                    carrier[:, n] = _finest(np.asarray(xy, dtype=float).reshape(-1, 2, size),
+                                            np.asarray(circles, dtype=float).reshape(-1, 3, size))
             blocks.append(self._carried_insets(carrier).transpose(2, 0, 1).reshape(size, -1))
         blocks.append(at_once.breaks_page())
         table = np.hstack(blocks)
@@ -404,10 +408,9 @@ class Measure:
         by_id = {m.id: m for m in scene.marks}
         boxes = self._boxes(scene, vp, [ids for _, _, ids, _ in self.insets])
         out = np.asarray([b if b is not None else (np.nan,) * 4 for b in boxes], dtype=float).reshape(-1, 4).T[:, :, None]
-        for n, (_, _, ids, pair) in enumerate(self.insets):
-            if pair:
-                xy = np.asarray([vp.px(*by_id[i].geom) for i in ids if i in by_id], dtype=float).reshape(-1, 2, 1)
-                out[:, n] = _closest_pairs(xy)
+        for n, (_, _, ids, rounds) in enumerate(self.insets):
+            if rounds is not None:
+                out[:, n] = _finest(*_detail_parts(vp, by_id, ids, rounds))
         return out
 
     def _carried_insets(self, box: np.ndarray) -> np.ndarray:
@@ -421,7 +424,7 @@ class Measure:
         box and grows or shrinks with it as :meth:`_carried` carries a view."""
         x, y, w, h = np.asarray([z for _, z, _, _ in self.insets], dtype=float).reshape(-1, 4).T[:, :, None]
         b0 = self._inset_b0
-        pair = np.asarray([pair for _, _, _, pair in self.insets])[:, None]
+        pair = np.asarray([rounds is not None for _, _, _, rounds in self.insets])[:, None]
         fw, fh = 0.25 * w, 0.25 * h
         with np.errstate(invalid="ignore", divide="ignore"):
             s = np.where(pair, np.hypot(box[2] - box[0], box[3] - box[1]) / np.hypot(b0[2] - b0[0], b0[3] - b0[1]),
@@ -495,41 +498,61 @@ class Measure:
         return keys, nums, fit_of(vp), texts
 
 
-def _inset_carriers(drawing: Any, k: int, z: tuple) -> tuple[list[str], bool]:
-    """The ids of the marks step *k*'s inset (its box *z*, canvas px) is carried with, and whether it magnifies a
-    cluster: the two closest of the step's points, centred between them (:func:`~construct.render.camera.
-    step_details`) -- then the ids are all the points it compares, of which the closest two carry it at each value
-    (:func:`_closest_pairs`); else the points it letters, else the step's own marks."""
-    s = drawing.scene.steps[k - 1]
-    points = {m.name: m for m in drawing.scene.marks if m.kind is MarkKind.POINT}
-    near = [points[n] for n in dict.fromkeys((*s.outputs, *s.inputs, *sorted(drawing.scene.named(k)))) if n in points]
-    xy = np.asarray([drawing.vp.px(*m.geom) for m in near], dtype=float).reshape(-1, 2, 1)
-    box = _closest_pairs(xy)[:, 0]
+def _inset_carriers(drawing: Any, k: int, z: tuple) -> tuple[list[str], list[tuple[str, str]] | None]:
+    """The ids of the marks step *k*'s inset (its box *z*, canvas px) is carried with, and, where it magnifies a
+    cluster (:func:`~construct.render.camera.step_details`: centred on the step's finest detail, the two closest
+    of its points or its smallest circle), the circles and arcs it strikes (each as the id of the point at its
+    centre and its own): then the ids are all the points it compares, the finest detail among them and those
+    circles carrying it at each value (:func:`_finest`); else (None) the points it letters, else the step's own
+    marks."""
+    sc = drawing.scene
+    s = sc.steps[k - 1]
+    drawn = {m.name: m for m in sc.marks}
+    near = [drawn[n] for n in dict.fromkeys((*s.outputs, *s.inputs, *sorted(sc.named(k))))
+            if n in drawn and drawn[n].kind is MarkKind.POINT]
+    at = {tuple(round(c, 2) for c in drawing.vp.px(*m.geom)): m.id for m in sc.marks if m.kind is MarkKind.POINT}
+    rounds = [(at[c], m.id) for n in s.outputs if n in drawn and (m := drawn[n]).kind.round
+              and (c := tuple(round(c, 2) for c in drawing.vp.px(*m.geom[:2]))) in at]
+    box = _finest(*_detail_parts(drawing.vp, {m.id: m for m in sc.marks}, [m.id for m in near], rounds))[:, 0]
     # (the box rounded to 0.01 px)
     if not np.isnan(box[0]) and abs((box[0] + box[2]) / 2 - z[0] - z[2] / 2) < 0.02 \
             and abs((box[1] + box[3]) / 2 - z[1] - z[3] / 2) < 0.02:
-        return [m.id for m in near], True
-    return [m.id for m, _ in inset_marks(drawing, k, z)] or [m.id for m in drawing.scene.marks if m.step == k], False
+        return [m.id for m in near], rounds
+    return [m.id for m, _ in inset_marks(drawing, k, z)] or [m.id for m in sc.marks if m.step == k], None
 
 
-def _closest_pairs(xy: np.ndarray) -> np.ndarray:
-    """The box (x0, y0, x1, y1 x values) of the two closest of the points *xy* (points x (x, y) x values), read
-    as :func:`~construct.render.camera.step_details` reads them (to 0.1 px; two at one place are one); NaN where
-    there are fewer than two."""
-    n = xy.shape[0]
-    out = np.full((4, xy.shape[2]), np.nan)
-    if n < 2:
-        return out
-    xy = np.round(xy, 1)
-    i, j = np.triu_indices(n, 1)
-    d = np.hypot(xy[i, 0] - xy[j, 0], xy[i, 1] - xy[j, 1])  # pairs x values
-    d = np.where(d > 0.0, d, np.inf)
-    best = np.argmin(d, axis=0)
-    cols = np.arange(xy.shape[2])
-    a, b = xy[i[best], :, cols], xy[j[best], :, cols]  # values x (x, y)
-    found = np.isfinite(d[best, cols])
-    out[:, found] = np.concatenate([np.minimum(a, b), np.maximum(a, b)], axis=1)[found].T
-    return out
+def _detail_parts(vp: Any, by_id: dict, ids: list[str], rounds: list[tuple[str, str]]) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`_finest`'s points and circles in a scene drawn on *vp* (one value)."""
+    xy = np.asarray([vp.px(*by_id[i].geom) for i in ids if i in by_id], dtype=float).reshape(-1, 2, 1)
+    circles = np.asarray([(*vp.px(*by_id[c].geom), by_id[r].geom[2] * vp.scale) for c, r in rounds
+                          if c in by_id and r in by_id], dtype=float).reshape(-1, 3, 1)
+    return xy, circles
+
+
+def _finest(xy: np.ndarray, circles: np.ndarray) -> np.ndarray:
+    """A box (x0, y0, x1, y1 x values) about the finest detail among the points *xy* (points x (x, y) x values)
+    and the circles *circles* (circles x (cx, cy, r) x values), as :func:`~construct.render.camera.step_details`
+    finds it -- the smallest circle's radius, or the distance of the two closest points where that is smaller
+    (read to 0.1 px; two at one place are one) -- centred where it is, its diagonal that size; NaN where there
+    is none."""
+    values = max(xy.shape[2], circles.shape[2])
+    fine, at = np.full(values, np.inf), np.full((2, values), np.nan)
+    if circles.shape[0]:
+        best = np.argmin(circles[:, 2], axis=0)
+        cols = np.arange(values)
+        fine, at = circles[best, 2, cols], circles[best, :2, cols].T
+    if xy.shape[0] >= 2:
+        xy = np.round(xy, 1)
+        i, j = np.triu_indices(xy.shape[0], 1)
+        d = np.hypot(xy[i, 0] - xy[j, 0], xy[i, 1] - xy[j, 1])  # pairs x values
+        d = np.where(d > 0.0, d, np.inf)
+        best = np.argmin(d, axis=0)
+        cols = np.arange(values)
+        closer = d[best, cols] < fine
+        fine = np.where(closer, d[best, cols], fine)
+        at = np.where(closer, (xy[i[best], :, cols] + xy[j[best], :, cols]).T / 2, at)
+    half = np.where(np.isfinite(fine), fine, np.nan) / (2 * math.sqrt(2))
+    return np.stack([at[0] - half, at[1] - half, at[0] + half, at[1] + half])
 
 
 def _form(items: Any) -> tuple:

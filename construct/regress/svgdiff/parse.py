@@ -204,14 +204,15 @@ class _Parser:
         self.root = root
         self.name = name
         self.ids: dict[str, ET.Element] = {}
-        for e in root.iter():
-            i = _attrs(e).get("id") if _is_svg(e) else None
-            if i is not None and i not in self.ids:
-                self.ids[i] = e
         self.rules: list[CssRule] = []
         self.stylesheet: list[tuple[str, tuple]] = []
-        for e in root.iter():
-            if _is_svg(e) and _local(e.tag)[1] == "style":
+        for e in root.iter():  # once over the tree: every element's id, every style sheet
+            if not _svg_tag(e.tag):
+                continue
+            i = e.get("id")  # what _attrs(e) names "id": only the attribute without a namespace
+            if i is not None and i not in self.ids:
+                self.ids[i] = e
+            if _local(e.tag)[1] == "style":
                 rules, canon = parse_css("".join(e.itertext()), len(self.rules))
                 self.rules.extend(rules)
                 self.stylesheet.extend(canon)
@@ -470,7 +471,7 @@ class _Parser:
             child = next(children, None)
             if child is None:
                 stack.pop()
-            elif _is_svg(child):
+            elif _svg_tag(child.tag):
                 inner = self._walk(child, parent, prefix, counters, depth)
                 if inner is not None:
                     stack.append(inner)
@@ -562,6 +563,8 @@ class _Parser:
         return None
 
     def _decorations(self, elem: ET.Element) -> tuple[tuple[Any, ...], tuple[tuple[str, str], ...]]:
+        if not len(elem):
+            return (), ()  # nearly every drawn element has no children
         animations, described = [], []
         for child in elem:
             if not _is_svg(child):
@@ -587,7 +590,8 @@ class _Parser:
             more_a, more_d = self._decorations(extra_source)
             animations, described = tuple(sorted(animations + more_a, key=show_value)), described + more_d
         style = self._effective_style(state)
-        classes = " ".join(sorted(set(self._attrs(elem).get("class", "").split())))
+        classes = self._attrs(elem).get("class", "")
+        classes = " ".join(sorted(set(classes.split()))) if classes else ""
         if classes:  # our renderer writes the instrument and provenance as classes
             key_style = (style, classes)
             got = self._classed.get(key_style)

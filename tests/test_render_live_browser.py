@@ -1078,3 +1078,80 @@ def test_the_end_states_plate_lettering_keeps_the_letters_size_on_the_screen(bro
         assert max(got["tips"]) <= 0.5, (v, got["tips"])
     assert not errors, errors
     page.close()
+
+
+def test_the_rod_length_stands_on_a_break_the_shown_step_draws(browser):
+    """The committed gallery's inertia curve at its last step (the end state), dragged slowly with ``input``
+    events alone up to L/r = 50: the rod's length at a break is written only on a break whose marks the page
+    shows, where a fresh replay's end state writes it -- at 50 the end state draws no break (the lines the axis
+    break crosses are the construction's, which the end state leaves out), so nothing is written; it stood
+    alone at the window's left edge ("L = 50 r" on the axis's break, far out of the end state's view)."""
+    path = REPO / "gallery" / "inertia-curve-rod-ratio-4" / "teaching" / "player.html"
+    if not path.is_file():
+        pytest.skip("no committed gallery in this checkout")
+    c = get("inertia-curve")
+    page, errors = _open(browser, path)
+    _at(page, "end")
+    _at_step_view(page)
+    shown = """() => Array.from(document.querySelectorAll('#figure .rodlen text.lb:not(.halo)'))
+        .filter(t => t.getClientRects().length && getComputedStyle(t).display !== 'none'
+                     && getComputedStyle(t.parentNode).display !== 'none')
+        .map(t => { const r = t.getBoundingClientRect(); return [t.textContent, r.left + r.width / 2, r.top + r.height / 2]; })"""
+    marks = """() => Array.from(document.querySelectorAll('#figure .brkg > path.brk'))
+        .filter(e => e.getClientRects().length && getComputedStyle(e.parentNode).display !== 'none')
+        .map(e => { const r = e.getBoundingClientRect(); return [r.left + r.width / 2, r.top + r.height / 2]; })"""
+    for v in np.geomspace(4.0, 50.0, 16)[1:]:
+        _drag_to(page, "rod_ratio", float(v))
+    root = _fresh_svg(c, {}, "rod_ratio", 50.0)
+    # (the fresh end state's break marks: those not in a group it leaves out, nf)
+    hidden = {d for g in root.iter() if "nf" in (g.get("class") or "").split() for d in g.iter()}
+    want = [e for e in root.iter() if e.get("class") == "brk" and e not in hidden]
+    got, at = page.evaluate(shown), page.evaluate(marks)
+    assert len(at) == len(want), (len(at), len(want))
+    if not want:
+        assert got == [], got
+    for text, x, y in got:  # (on a break shown: within two letters of its marks' middle)
+        assert text == "L = 50 r" and min(math.hypot(x - a, y - b) for a, b in at) <= 30, (text, x, y, at)
+    assert not errors, errors
+    page.close()
+
+
+def test_the_end_step_frames_what_it_draws_where_the_plates_furniture_is_held(browser):
+    """The committed gallery's tangential-pressure diagram (kappa = 8) at its last step: its plate's furniture
+    (the scale, M, alpha) changes its form with kappa and is shown at the book's value alone.  Let go at kappa = 2
+    the camera frames the flat diagram the end state draws across the window (it stood across 56 % of it, in
+    the view the book's value made with room for the furniture); a drag started there or at the book's value
+    does not move the camera off what it frames at its first step, and back at the book's value the view is the
+    built one."""
+    path = REPO / "gallery" / "tangential-pressure-kappa-8-parts-18-rod-ratio-5" / "teaching" / "player.html"
+    if not path.is_file():
+        pytest.skip("no committed gallery in this checkout")
+    page, errors = _open(browser, path)
+    _at(page, "end")
+    _at_step_view(page)
+    view = "() => window.constructPlayer.view()"
+    let_go = """() => { document.querySelector('#live input[name="kappa"]').dispatchEvent(new Event('change'));
+        window.constructPlayer.jump(false); }"""
+    # the share of the window's width the points the page shows take
+    width = """() => { const w = document.getElementById('figure').getBoundingClientRect();
+        const xs = Array.from(document.querySelectorAll('#figure circle.pt')).filter(c => c.getClientRects().length
+          && getComputedStyle(c).display !== 'none').flatMap(c => { const r = c.getBoundingClientRect(); return [r.left, r.right]; });
+        return (Math.max(...xs) - Math.min(...xs)) / w.width; }"""
+    built, book_width = page.evaluate(view), page.evaluate(width)
+    _drag_to(page, "kappa", 7.9)
+    assert page.evaluate(view) == built  # (a drag from the book's value: the camera holds)
+    for v in np.geomspace(7.9, 2.0, 12)[1:]:
+        _drag_to(page, "kappa", float(v))
+    page.evaluate(let_go)
+    at_two = page.evaluate(view)
+    assert page.evaluate(width) >= 0.8 and page.evaluate(width) >= 0.9 * book_width, (page.evaluate(width), book_width)
+    _drag_to(page, "kappa", 2.05)
+    # (a drag from there: the camera keeps what it framed in sight, taking at most the drag's room round it, a
+    # tenth of its size -- the hold rule's first step from a let-go view, player.py ahead -- not the book's view)
+    now = page.evaluate(view)
+    assert now[0] <= at_two[0] and now[1] <= at_two[1] and now[2] <= 1.11 * at_two[2], (now, at_two)
+    _drag_to(page, "kappa", 8.0)
+    page.evaluate(let_go)
+    assert max(abs(a - b) for a, b in zip(page.evaluate(view), built)) <= 0.01, (page.evaluate(view), built)
+    assert not errors, errors
+    page.close()

@@ -140,3 +140,16 @@ def test_the_widest_gaps_of_a_sweep_are_the_scalar_walks_to_the_bit():
         gaps += 1
         assert (lo[i], hi[i], width[i], total[i]) == want
     assert gaps > 300  # (the spans far apart leave a gap at most values)
+
+
+def test_the_boxes_stacked_are_each_marks_box_in_its_order():
+    """extreme_rows (what a sweep's views read, every box at once) holds each mark's box of ``extremes``, row by row
+    in its order: the two cranks' curves among the kinds' blocks (a row out of order would frame another mark)."""
+    c = get("two-cranks")
+    built = c.figure(parts=12)
+    replay = built.protocol.replay(c.rod_ratio_sweep(dict(built.replay.givens), [3.0, 5.0, 40.0]))
+    d = SweepDrawing(scene_for(c, built), built.protocol, replay, 3, STYLES["teaching"])
+    assert any(m.kind.value == "curve" for m in d.curve_marks)
+    for k in range(4):
+        expected = np.array([box[k] for box in d.extremes.values()])
+        np.testing.assert_array_equal(d.extreme_rows[k], expected)

@@ -26,7 +26,7 @@ import numpy as np
 
 from ..constructions import Construction
 from ..figure import Figure
-from ..render.camera import MAX_ZOOM, clip_view
+from ..render.camera import FINAL_CONTEXT, MAX_ZOOM, ZOOM_LEVELS, Framing, clip_view
 from ..render.end_state import NumbersFactory, end_furniture, furniture_numbers
 from ..render.output import scene_for
 from ..render.plate import plate_of, shifted, subscript_runs
@@ -113,6 +113,7 @@ class Measure:
                       if drawing.ring(k) is not None]
         self.boxes = self._boxes(scene, drawing.vp)
         self.least = 1.0 / MAX_ZOOM
+        self._end_framing = self._held_end_view(scene, drawing)
         self.template = scene
         #: the end state is mostly the plate's furniture (which the sweep does not carry: Tafel 2's ordinates and
         #: their values): the player shows it at the book's values only, the construction's marks elsewhere
@@ -126,7 +127,7 @@ class Measure:
         self._built = built
         self.held = self._furniture(scene.end_furniture, drawing.vp)
         #: (None: not asked -- a value measured alone draws its own furniture, a sweep asks over its values)
-        self.furniture_live: bool | None = None
+        self._furniture_live: bool | None = None
         # the marks' keys as this value's page has them: each mark's numbers are a run of them, the runs in the
         # page's order (a sweep draws each mark's numbers for every value at once, :meth:`frames`)
         self.keys, _, _, texts = self._measured(scene)  # (the drawing's scene is what __call__ would make)
@@ -143,6 +144,38 @@ class Measure:
         of = lambda m: m.name[:-3] if m.id.endswith("-at") and m.name.endswith(".at") else m.name  # noqa: E731
         self.readings = {f"{m.id}-label": readings[of(m)] for m in scene.marks if of(m) in readings and m.label}
         self.texts = {k: v for k, v in texts.items() if k not in self.readings}  # the same at every value
+
+    @property
+    def furniture_live(self) -> bool | None:
+        """Whether the end state's furniture is drawn at every value of the sweep (None: not asked).  Held (False),
+        the page shows it at the book's values alone, and the end step's view carried from the book's value --
+        which the camera made room in for the furniture -- would frame an empty band where it stood (tangential
+        pressure at kappa = 2: the flat diagram across 56 % of the window): its view is then carried from the
+        camera's frame of the marks the end state draws (:meth:`_held_end_view`)."""
+        return self._furniture_live
+
+    @furniture_live.setter
+    def furniture_live(self, live: bool | None) -> None:
+        if self._end_framing is not None and (live is False) != (self._furniture_live is False):
+            j, view, box, ids = self._end_framing
+            self._end_framing = (j, self.views[j], self.boxes[j], self.framed[j])
+            self.views[j], self.boxes[j], self.framed[j] = view, box, ids
+            self._rows.clear()  # (the groups of marks each view frames: found anew)
+        self._furniture_live = live
+
+    def _held_end_view(self, scene: Any, drawing: Any) -> tuple | None:
+        """The end step's view as the camera frames the marks the end state draws without its furniture
+        (camera.step_views' end state: :data:`~construct.render.camera.FINAL_CONTEXT` round them, at most the
+        last zoom level), with its index among the views, those marks' box and their ids; None without an end
+        state or furniture."""
+        if not scene.ending or not scene.end_furniture or len(self.view_of) < 2 or self.view_of[-1] < 0:
+            return None
+        ids = [m.id for m in scene.marks if scene.in_end(m) and scene.end_shows(m)]
+        box = self._boxes(scene, drawing.vp, [ids])[0]
+        if box is None:
+            return None
+        view = Framing(drawing.full_view, max_zoom=ZOOM_LEVELS[-1]).view(box, FINAL_CONTEXT, 1.0)
+        return self.view_of[-1], view, box, ids
 
     def _furniture(self, items: tuple, vp: Any, exact: bool = True) -> tuple[list, list[float], dict[str, str]]:
         """The end state's furniture *items* (the plate's, on the sheet's broken axis) drawn on *vp* (anything with
@@ -200,11 +233,12 @@ class Measure:
             self._forms[id(protocol)] = (protocol, scene, self._runs(keys), keys)
         return self._forms[id(protocol)][1:]
 
-    def _boxes(self, scene, vp) -> list[tuple[float, float, float, float] | None]:
-        """Per distinct view, the box (canvas px: x0, y0, x1, y1) of the marks it frames."""
+    def _boxes(self, scene, vp, framed=None) -> list[tuple[float, float, float, float] | None]:
+        """Per distinct view, the box (canvas px: x0, y0, x1, y1) of the marks it frames (or of each list of
+        *framed*)."""
         by_id = {m.id: m for m in scene.marks}
         out = []
-        for ids in self.framed:
+        for ids in self.framed if framed is None else framed:
             pts = [p for i in ids if i in by_id for p in extreme_points(by_id[i])]
             if not pts:
                 out.append(None)
@@ -280,7 +314,7 @@ class Measure:
                 if ident in furniture:
                     at_once.numbers[ident] = table[:, at:at + count]
                     at += count
-        rows = np.hstack([at_once.numbers[i] for i, _ in runs])
+        rows = np.concatenate([at_once.numbers[i] for i, _ in runs], axis=1)  # (each a values x numbers block)
         width, height = (np.round(v, 2) for v in at_once.size)
         px = at_once.page_px
 
@@ -298,7 +332,7 @@ class Measure:
         _, rows_of, starts, boxed = found
         box = np.full((4, len(boxed), size), np.nan)  # per group: x0, y0, x1, y1 on the page of every value
         if rows_of.size:
-            ends = [np.vstack([e[k] for e in at_once.extremes.values()])[rows_of] for k in range(4)]
+            ends = [at_once.extreme_rows[k][rows_of] for k in range(4)]
             least, most = np.minimum.reduceat, np.maximum.reduceat
             box[:, boxed] = (*px(least(ends[0], starts, axis=0), most(ends[3], starts, axis=0)),
                              *px(most(ends[1], starts, axis=0), least(ends[2], starts, axis=0)))

@@ -37,6 +37,9 @@ STORED_PX = 0.1
 #: own blending error the refinement held under REFINE_PX at the parent cell's midpoint (about a quarter of
 #: that at a cell's own), so a drawn coordinate stays under 0.5 px (measured at fresh values by the tests).
 ROW_PX = 0.35
+#: A cell's open columns of one kind are read as one run of columns (a view, the others among them dropped after)
+#: while the run is at most this many times as many columns.
+NEARLY_A_RUN = 1.5
 _PATH = re.compile(r"^[MLCZ# ,]*$")
 
 
@@ -80,28 +83,40 @@ def _largest_radius(live: LiveSweep) -> float:
     return float(max(np.max(live.drawn[:, r]), 1.0)) if r.any() else 1.0
 
 
-def _knots(live: LiveSweep, kinds: np.ndarray, columns: np.ndarray | None = None) -> np.ndarray:
+def _knots(live: LiveSweep, kinds: np.ndarray, columns: np.ndarray | None = None,
+           across: np.ndarray | None = None) -> np.ndarray:
     """The grid values each column needs when stored as *kinds* says (see :func:`column_knots`); only the
-    *columns* given, if given (each column walks the tree alone: the others' are left as they are)."""
+    *columns* given, if given (each column walks the tree alone: the others' are left as they are).  *across*:
+    the drawn numbers turned on their side (columns x grid values), if the caller has them (both walks of
+    :func:`column_knots` read them)."""
     columns = np.arange(live.drawn.shape[1]) if columns is None else columns
-    drawn = live.drawn[:, columns]
-    rows, cols = drawn.shape
+    across = np.ascontiguousarray(live.drawn.T) if across is None else across
+    rows, cols = live.drawn.shape[0], columns.size
     u = np.asarray(live.u if live.u is not None else np.log10(live.grid), dtype=float)
-    keep = np.zeros((rows, live.drawn.shape[1]), dtype=bool)
+    keep = np.zeros(live.drawn.shape, dtype=bool)
     keep[:, live.nearest_columns()] = True
     kinds = kinds[columns]
-    quanta = _quanta(live, kinds)
-    q = np.round(as_stored(drawn, live.fit, kinds) / quanta) * quanta
     start = live.start or rows
     # the starting values of the refinement: evenly spaced in log10 (live_sweep's np.linspace)
     firsts = sorted({int(np.argmin(np.abs(u - x))) for x in np.linspace(u[0], u[-1], start)})
     # The columns walk the tree in the order of their kinds, each column's values in a row of its own: a cell's
     # open columns of one kind are drawn from the grid values inside it by one formula over a block (as_drawn's,
     # with the rows' fit broadcast), the values gathered in runs; which columns are still open is asked of all.
+    # Each kind's block is stored and quantised as encode stores it (as_stored, the kind's quantum), the rows'
+    # fit broadcast along the block (the same arithmetic, number by number, as on the grid's side).
     kinds = kinds if live.fit is not None else np.zeros(cols, dtype=np.int8)
     order = np.argsort(kinds, kind="stable")
+    walked = columns[order]
+    dt = across if cols == across.shape[0] and (walked == np.arange(cols)).all() else across[walked]
     bounds = np.searchsorted(kinds[order], np.arange(LOG + 2))
-    qt, dt = np.ascontiguousarray(q[:, order].T), np.ascontiguousarray(drawn[:, order].T)
+    qt = np.empty(dt.shape)
+    for kind in range(LOG + 1):
+        b0, b1 = bounds[kind], bounds[kind + 1]
+        if b1 > b0:
+            quantum = _quanta(live, np.full(1, kind, dtype=np.int8))[0]
+            block = as_stored(dt[b0:b1].T, live.fit, np.full(b1 - b0, kind, dtype=np.int8)).T
+            np.round(block / quantum, out=qt[b0:b1])
+            qt[b0:b1] *= quantum
     fit = live.fit if live.fit is not None else np.zeros((rows, 3))
     ox, oy, sc = fit[:, 0], fit[:, 1], fit[:, 2]
 
@@ -133,13 +148,18 @@ def _knots(live: LiveSweep, kinds: np.ndarray, columns: np.ndarray | None = None
         for kind in range(LOG + 1):
             a0, a1 = edges[kind], edges[kind + 1]
             if a1 > a0:
-                g = at[a0:a1] if at[a1 - 1] - at[a0] >= a1 - a0 else slice(at[a0], at[a1 - 1] + 1)  # (a run: a view)
+                # a run of columns, or nearly one (most of a cell's columns hold at its midpoint and are then
+                # asked at every grid value inside it), is read as a view, the few columns between dropped after:
+                # a gathered copy of the block costs more than the numbers of the columns read for nothing
+                span = at[a1 - 1] + 1 - at[a0]
+                g = slice(at[a0], at[a1 - 1] + 1) if span <= NEARLY_A_RUN * (a1 - a0) else at[a0:a1]
                 a = qt[g, i][:, None]
                 line = (qt[g, j][:, None] - a) * t
                 line += a
                 miss = drawn_as(kind, line, r)
                 miss -= dt[g, r]
-                err[a0:a1] = np.abs(miss, out=miss).max(axis=1)
+                worst = np.abs(miss, out=miss).max(axis=1)
+                err[a0:a1] = worst if type(g) is not slice or span == a1 - a0 else worst[at[a0:a1] - at[a0]]
         return err
 
     shut = np.zeros((rows, cols), dtype=bool)  # (in the columns' walking order)
@@ -162,7 +182,7 @@ def _knots(live: LiveSweep, kinds: np.ndarray, columns: np.ndarray | None = None
         rest = at[~done]
         if rest.size:
             todo += [(i, m, rest), (m, j, rest)]
-    keep[:, columns[order]] |= shut
+    keep[:, walked] |= shut
     return keep
 
 
@@ -195,11 +215,12 @@ def column_knots(live: LiveSweep) -> tuple[np.ndarray, np.ndarray]:
     # a radius that rounds to nothing somewhere (an arc about a point it is struck from, at L/r = 600) has no
     # logarithm there: a length
     natural = np.where((natural == LOG) & (live.drawn.min(axis=0) <= 0.0), LENGTH, natural).astype(np.int8)
-    as_drawn = _knots(live, np.zeros(cols, dtype=np.int8))
+    across = np.ascontiguousarray(live.drawn.T)  # (each column's values in a row: both walks read them so)
+    as_drawn = _knots(live, np.zeros(cols, dtype=np.int8), across=across)
     if not natural.any():
         return as_drawn, natural
     # (a number of the drawing only is stored as drawn either way: walked once)
-    as_built = _knots(live, natural, np.flatnonzero(natural))
+    as_built = _knots(live, natural, np.flatnonzero(natural), across)
     as_built[:, natural == 0] = as_drawn[:, natural == 0]
     built = as_built.sum(axis=0) < as_drawn.sum(axis=0)
     return np.where(built, as_built, as_drawn), np.where(built, natural, 0).astype(np.int8)

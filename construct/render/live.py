@@ -405,7 +405,7 @@ LIVE_SCRIPT = r"""
       var c = S.breakAt ? S.breakAt[axis] : undefined, w = c === undefined ? 0 : num(c + 1);
       bands.push(w > 0.5 ? [num(c), w] : null);
     }
-    var first = [null, null];
+    var first = [null, null], fin = svg.classList.contains("fin");
     for (var i = 0; i < lines.length; i++) {
       var ln = lines[i], x1, y1, x2, y2;
       if (!every && !ln.isConnected) continue;  // (a step not shown: its marks are set when it is shown)
@@ -431,7 +431,9 @@ LIVE_SCRIPT = r"""
         var t = band[0] + band[1] / 2, s = a1 + (b1 - a1) * (t - a0) / (b0 - a0), cx = axis ? s : t, cy = axis ? t : s;
         var n = Math.hypot(x2 - x1, y2 - y1) || 1, ux = (x2 - x1) / n, uy = (y2 - y1) / n, nx = -uy, ny = ux;
         var h = 0.6 * SIZE, gap = 0.45 * SIZE, key = cx + " " + cy + " " + ux + " " + uy;
-        if (!first[axis] && ln.isConnected) first[axis] = [cx, cy];
+        // (the rod's length on a break the step shows: in the end state not on a line it leaves out -- at L/r 50
+        // the inertia curve's axis break, far out of the end state's view, wrote it at the window's edge)
+        if (!first[axis] && ln.isConnected && !set.g.classList.contains(fin ? "nf" : "fo")) first[axis] = [cx, cy];
         if (key === set.key) continue;
         set.key = key;
         var corner = function(su, sn){ return round2(cx + su * gap * ux + sn * h * nx) + " " + round2(cy + su * gap * uy + sn * h * ny); };
@@ -449,7 +451,7 @@ LIVE_SCRIPT = r"""
       var lab = rodLabels[axis], at = first[axis];
       // (in the end state at the book's values the plate's own furniture writes it, a dimension L = 5 r)
       // (and at every value where that furniture follows the given)
-      var inPlate = endWritesRod && svg.classList.contains("fin") && (!S.L.furniture_held || Math.abs(Math.log10(S.value / S.L.initial)) < 1e-9);
+      var inPlate = endWritesRod && fin && (!S.L.furniture_held || Math.abs(Math.log10(S.value / S.L.initial)) < 1e-9);
       // (its display in its style too: the end state's rule for its letters, .fin .lbg.pf, outranks the attribute)
       if (!rod || !at || inPlate) { if (lab) { lab.g.setAttribute("display", "none"); lab.g.style.display = "none"; } continue; }
       if (!lab) {
@@ -701,8 +703,11 @@ LIVE_SCRIPT = r"""
   // ---- the camera: the shown step's view and ring at the shown value --------------------------------------------
   function view(atOnce, drag){  // what the player's show(k) does with the view, without touching the steps (cheap)
     var d = player.data, k = +(svg.getAttribute("data-step") || d.n), st = k > 0 ? d.steps[k - 1] : null;
-    if (st && st[IDX] >= 0 && S.zoomAt[k - 1] !== undefined) {
-      for (var i = 0; i < 4; i++) d[VIEWS][st[IDX]][i] = round2(num(S.zoomAt[k - 1] + i));
+    // (the end step at the book's values, where the plate's furniture held away from them is shown: the view the
+    // camera made room in for it; elsewhere the sweep's, which frames the marks drawn there, live/measure.py)
+    var builtView = k === d.n && S.L.furniture_held && furnitureOn ? endView : null;
+    if (st && st[IDX] >= 0 && (builtView || S.zoomAt[k - 1] !== undefined)) {
+      for (var i = 0; i < 4; i++) d[VIEWS][st[IDX]][i] = builtView ? builtView[i] : round2(num(S.zoomAt[k - 1] + i));
     }
     if (st && st.r && S.ringAt[k - 1] !== undefined) {  // the ring (the array the player rings with): round its mark
       st.r[0] = round2(num(S.ringAt[k - 1])); st.r[1] = round2(num(S.ringAt[k - 1] + 1));
@@ -979,7 +984,7 @@ LIVE_SCRIPT = r"""
       return inflate(L.data);
     }).then(function(buf){ W.buf = buf; return W; });
   }
-  var endNote = null, insetHidden = false, hatches = [], HATCH = null, endWritesRod = false, endAt = 0, endFurniture = [], furnitureOn = true;
+  var endNote = null, insetHidden = false, hatches = [], HATCH = null, endWritesRod = false, endAt = 0, endFurniture = [], furnitureOn = true, endView = null;
   api.ready = Promise.all(LIST.map(load)).then(function(ws){
     player = window.constructPlayer;
     endAt = player ? player.data.end : 0;
@@ -1005,6 +1010,7 @@ LIVE_SCRIPT = r"""
       player.data.steps.forEach(function(st, i){
         own[i] = st[IDX] >= 0 ? player.data[VIEWS][st[IDX]].slice() : null; if (st[IDX] >= 0) st[IDX] = i; });
       player.data[VIEWS] = own;
+      endView = own[own.length - 1] && own[own.length - 1].slice();
     }
     sweeps = ws;
     ws.forEach(function(W){ W.prepare(W.buf); W.buf = null; });

@@ -62,7 +62,7 @@ def _curve_rows(o: Any, n: int, vec: Any) -> tuple[np.ndarray, np.ndarray, np.nd
         return flat[:, 0], flat[:, 1], np.full(n, flat.shape[0])
     if isinstance(o, Polyline):
         pts = o.points + ((o.points[0],) if o.closed else ())
-        X, Y = np.vstack([vec(p.x) for p in pts]), np.vstack([vec(p.y) for p in pts])
+        X, Y = _stack([vec(p.x) for p in pts]), _stack([vec(p.y) for p in pts])
         return X, Y, np.full(n, len(pts))
     rows = [take(o, i).curve_points() for i in range(n)]
     counts = np.array([len(r) for r in rows])
@@ -71,6 +71,12 @@ def _curve_rows(o: Any, n: int, vec: Any) -> tuple[np.ndarray, np.ndarray, np.nd
         X[:len(r), i] = [p[0] for p in r]
         Y[:len(r), i] = [p[1] for p in r]
     return X, Y, counts
+
+
+def _stack(rows: Any) -> np.ndarray:
+    """Rows over the values (1-D arrays, each as long) as one array (rows x values): np.vstack's, without its
+    Python for each row (a round stacks the rows of thousands of points and curve points)."""
+    return np.array(rows, dtype=float)
 
 
 def _r2(v: np.ndarray) -> np.ndarray:
@@ -110,7 +116,10 @@ class SweepDrawing:
         points = {k: (vec(o.x), vec(o.y)) for k, o in objects.items() if isinstance(o, Point)}
         on = on_curve_names(protocol.steps, set(points))
         # the figure's extent before the marks are drawn: every point, every curve's points
-        xs, ys = [np.vstack([p[0] for p in points.values()])], [np.vstack([p[1] for p in points.values()])]
+        xs, ys = [_stack([p[0] for p in points.values()])], [_stack([p[1] for p in points.values()])]
+        # every point's row in those (the points marked on lines and circles are gathered from them: _marked)
+        self._point_rows = {k: i for i, k in enumerate(points)}
+        self._point_xy = (xs[0], ys[0])
         curves: dict[str, list[tuple]] = {}
         areas: dict[str, list[tuple]] = {}  # an area's pieces at each value, each a ring of points
         for name, o in objects.items():
@@ -181,6 +190,11 @@ class SweepDrawing:
         for key, e in ext.items():
             for i, m in enumerate(self._members(key)):
                 self.extremes[m.id] = (e[0][i], e[1][i], e[2][i], e[3][i])
+        #: the boxes of :attr:`extremes` as four arrays (marks in its order x values: x0, x1, y0, y1), stacked from
+        #: the kinds' blocks (a reader of every box takes them so, not mark by mark)
+        blocks = list(ext.values()) if sum(len(e[0]) for e in ext.values()) == len(self.extremes) else \
+            list(self.extremes.values())  # (a mark drawn twice: its last box, mark by mark)
+        self.extreme_rows = tuple(np.concatenate([e[k] for e in blocks] or [np.zeros((0, n))]) for k in range(4))
         for key, nums in self._numbers().items():
             for i, m in enumerate(self._members(key)):
                 self.numbers[m.id] = nums[i]
@@ -202,8 +216,8 @@ class SweepDrawing:
         shown = template.essentials
         n, vec = self.n, self._vec
         # the plate's margin: of the points and curves it shows, unbroken
-        xs = [np.vstack([points[k][0] for k in points if k in shown] or [np.zeros(n)])]
-        ys = [np.vstack([points[k][1] for k in points if k in shown] or [np.zeros(n)])]
+        xs = [_stack([points[k][0] for k in points if k in shown] or [np.zeros(n)])]
+        ys = [_stack([points[k][1] for k in points if k in shown] or [np.zeros(n)])]
         with np.errstate(invalid="ignore"):
             for k, (CX, CY, _) in curves.items():
                 if k in shown:
@@ -223,23 +237,28 @@ class SweepDrawing:
         tol = 1e-9 * np.maximum(span, 1.0)
         on = on_curve_names(protocol.steps, set(points), set(shown))
         shown_pts = [k for k in sorted(shown) if k in points]
+        # the shown points as rows (points x values): which of them lie on a mark is asked of all at once
+        shown_xy = tuple(_stack([points[k][c] for k in shown_pts]) for c in (0, 1)) if shown_pts else None
         lines_too = bool(protocol.params.get("plate"))
         out: dict[str, np.ndarray] = {}
         st, scale = self.style, self._page[2]
         for m in ends:
             obj = objects.get(m.name)
             marked = [points[p] for p in dict.fromkeys(on.get(m.name, []))]
-            if isinstance(obj, Circle) or (isinstance(obj, Line) and lines_too):
+            if shown_xy is not None and (isinstance(obj, Circle) or (isinstance(obj, Line) and lines_too)):
                 # every shown point lying on it, as the built figure found them (elsewhere: value by value)
-                for k in shown_pts:
+                lying = self._lies_on(obj, shown_xy, tol)
+                every = lying.all(axis=1)
+                for at in np.flatnonzero(lying.any(axis=1)).tolist():  # (a point on it nowhere does nothing)
+                    k = shown_pts[at]
                     if k in on.get(m.name, []):
                         continue
-                    near = self._lies_on(obj, points[k], tol)
-                    if near.all() or (near.any() and marked):
+                    near = lying[at]
+                    if every[at] or marked:
                         # (where it does not lie on it: a point marked there already, twice, which draws the same)
-                        marked.append(points[k] if near.all() else
+                        marked.append(points[k] if every[at] else
                                       tuple(np.where(near, points[k][c], marked[0][c]) for c in (0, 1)))
-                    elif near.any():
+                    else:
                         self.ok &= ~near
             if m.kind is MarkKind.POINT and m.name in points:
                 x, y = self._shifted(*points[m.name])
@@ -282,7 +301,7 @@ class SweepDrawing:
         return out
 
     def _lies_on(self, curve: Any, p: tuple, tol: np.ndarray) -> np.ndarray:
-        """marks.lies_on over the sweep: where point *p* (x, y arrays) lies on *curve*."""
+        """marks.lies_on over the sweep: where point *p* (x, y arrays: values, or points x values) lies on *curve*."""
         vec = self._vec
         if isinstance(curve, Circle):
             cx, cy, r = vec(curve.center.x), vec(curve.center.y), vec(curve.radius)
@@ -306,7 +325,7 @@ class SweepDrawing:
     def _kept_span(self) -> np.ndarray:
         """sheet.kept_span over the sweep: what the points and curves span once broken alone."""
         objects, points, on, curves, areas = self._sources
-        P = tuple(np.vstack(c) for c in zip(*[points[m.name] for m in self.marks
+        P = tuple(_stack(c) for c in zip(*[points[m.name] for m in self.marks
                                                if m.kind is MarkKind.POINT and m.name in points]))
         saved = (self.geoms, self.curves, self._broken, self._breaks)
         self.geoms = {k: (P if k is MarkKind.POINT else ()) for k in MarkKind}
@@ -314,8 +333,8 @@ class SweepDrawing:
         self._broken, self._breaks = None, {}
         self._break()
         self._break(axis=1)
-        cx = [self.geoms[MarkKind.POINT][0]] + [np.vstack([c[0] for c in pts]) for pts in self.curves.values()]
-        cy = [self.geoms[MarkKind.POINT][1]] + [np.vstack([c[1] for c in pts]) for pts in self.curves.values()]
+        cx = [self.geoms[MarkKind.POINT][0]] + [_stack([c[0] for c in pts]) for pts in self.curves.values()]
+        cy = [self.geoms[MarkKind.POINT][1]] + [_stack([c[1] for c in pts]) for pts in self.curves.values()]
         self.geoms, self.curves, self._broken, self._breaks = saved
         KX, KY = np.vstack(cx), np.vstack(cy)
         with np.errstate(invalid="ignore"):  # (a curve of another number of points: not ok there)
@@ -372,6 +391,7 @@ class SweepDrawing:
         self.curves = curve_geoms
         self._unbroken_curves = dict(curve_geoms)
         self.curve_marks = [m for m in self.marks if m.id in curve_geoms]
+        self._curve_mark = {m.id: m for m in self.curve_marks}
         self._broken = None
         #: per axis: (broken at which values, where the drawn break starts, its drawn width, what it leaves out)
         self._breaks: dict[int, tuple] = {}
@@ -405,7 +425,7 @@ class SweepDrawing:
                 raise ValueError(f"{m.id}: a {m.kind.value} the sweep does not draw")
         out: dict[MarkKind, tuple] = {}
         if by[MarkKind.POINT]:
-            out[MarkKind.POINT] = tuple(np.vstack(c) for c in zip(*by[MarkKind.POINT]))
+            out[MarkKind.POINT] = tuple(_stack(c) for c in zip(*by[MarkKind.POINT]))
         if by[MarkKind.SEGMENT]:
             lines = by[MarkKind.SEGMENT]
             P = np.array([[vec(o.p.x), vec(o.p.y), vec(o.q.x), vec(o.q.y)] for o, _ in lines])
@@ -432,11 +452,11 @@ class SweepDrawing:
 
     def _marked(self, names: list[list[str]]) -> tuple[np.ndarray, np.ndarray]:
         """The points *names* (as many for each row) as arrays (rows x points x values): x and y."""
-        points = self._sources[1]
         shape = (len(names), len(names[0]) if names else 0, self.n)
-        X = np.array([[points[p][0] for p in row] for row in names]).reshape(shape)
-        Y = np.array([[points[p][1] for p in row] for row in names]).reshape(shape)
-        return X, Y
+        at = self._point_rows
+        rows = np.fromiter((at[p] for row in names for p in row), dtype=np.intp, count=shape[0] * shape[1])
+        X, Y = self._point_xy
+        return X[rows].reshape(shape), Y[rows].reshape(shape)
 
     def _round(self, kind: MarkKind, got: tuple, margin: np.ndarray) -> tuple:
         """marks.circle_extent over the sweep for all the circles (or all the arcs) at once: whole, or the arc over
@@ -459,7 +479,7 @@ class SweepDrawing:
         """The marks of one row block: a kind's marks, or one curve (its id), or the lettered lines' points."""
         if isinstance(key, MarkKind):
             return self.rows[key]
-        return [m for m in self.curve_marks if m.id == key] if key != "-at" else self.at_marks
+        return [self._curve_mark[key]] if key != "-at" else self.at_marks
 
     # -- the marks ---------------------------------------------------------------------------------------
     def _segment(self, line: Line, marked: list, margin: np.ndarray, key: Any) -> tuple:
@@ -497,7 +517,7 @@ class SweepDrawing:
                 self._arcs_reach = (a0, _ArcReach(r, a0, sw))
             out[MarkKind.ARC] = self._arcs_reach[1].box(cx, cy)
         for m in self.curve_marks:
-            X, Y = np.vstack([p[0] for p in self.curves[m.id]]), np.vstack([p[1] for p in self.curves[m.id]])
+            X, Y = _stack([p[0] for p in self.curves[m.id]]), _stack([p[1] for p in self.curves[m.id]])
             out[m.id] = (X.min(0)[None], X.max(0)[None], Y.min(0)[None], Y.max(0)[None])
         if getattr(self, "at_marks", None):
             x, y = self.at_geom
@@ -514,7 +534,7 @@ class SweepDrawing:
                  and not (key in self.curves and self._members(key)[0].straight and len(self.curves[key]) == 2)]
         if sum(s.shape[0] for s, _ in spans) < 2:
             return
-        S, E = np.vstack([s for s, _ in spans]), np.vstack([e for _, e in spans])
+        S, E = np.concatenate([s for s, _ in spans]), np.concatenate([e for _, e in spans])  # (blocks of rows)
         lo, hi, width, total = _widest_gaps(S, E)
         brk = (width > 0) & (width > (BREAK_FRACTION if axis == 0 else BREAK_FRACTION_Y) * total)
         if not brk.any():
@@ -658,7 +678,7 @@ class SweepDrawing:
             if m.kind is MarkKind.AREA:  # (the page draws areas from their curves)
                 continue
             pts = self.curves[m.id]
-            X, Y = self._px(np.vstack([p[0] for p in pts]), np.vstack([p[1] for p in pts]))  # points x values
+            X, Y = self._px(_stack([p[0] for p in pts]), _stack([p[1] for p in pts]))  # points x values
             k = X.shape[0]
             if m.straight:
                 closed = k > 2 and tuple(m.geom[0]) == tuple(m.geom[-1])

@@ -217,7 +217,8 @@ class Protocol:
         head = line(d)[:-1]
         head += ',\n "groups": [' + "".join(f"\n  {line(g)}," for g in groups).rstrip(",") + "\n ]"
         body = ",\n".join(f"  {line(s)}" for s in steps)
-        objs = ",\n".join(f"  {line(k)}: {line(v)}" for k, v in objects.items())
+        key = json.encoder.encode_basestring  # (a name as the line encoder writes it, without a call of it per name)
+        objs = ",\n".join(f"  {key(k) if type(k) is str else line(k)}: {line(v)}" for k, v in objects.items())
         text = f'{head},\n "steps": [\n{body}\n ],\n "objects": {{\n{objs}\n }}}}\n'
         size = len(text.encode("utf-8"))
         if size > MAX_PROTOCOL_BYTES:  # what this library writes, it reads back: the reader's limit, here

@@ -313,6 +313,12 @@ class Replay(Mapping[str, Any]):
     def __iter__(self):
         return iter(self._objects)
 
+    def items(self):  # the objects' own view: a drawing walks tens of thousands (Mapping's asks each by name)
+        return self._objects.items()
+
+    def values(self):
+        return self._objects.values()
+
     def __len__(self) -> int:
         return len(self._objects)
 

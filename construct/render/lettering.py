@@ -235,13 +235,21 @@ class _Boxes:
     """The boxes a single letter must keep clear of, asked all at once (numpy): a letter placed alone tries a
     few spots among a few hundred boxes, where filing them in a :class:`_Grid` costs more than the asking."""
 
-    def __init__(self, boxes: list[tuple[float, float, float, float]]):
-        a = np.array(boxes, dtype=float).reshape(-1, 4)
+    def __init__(self, boxes: "list[tuple[float, float, float, float]] | np.ndarray"):
+        a = np.asarray(boxes, dtype=float).reshape(-1, 4)
         self.x0, self.y0, self.x1, self.y1 = a[:, 0], a[:, 1], a[:, 2], a[:, 3]
 
     def free(self, b) -> bool:
         x0, y0, x1, y1 = b
         return not ((x0 < self.x1) & (self.x0 < x1) & (y0 < self.y1) & (self.y0 < y1)).any()
+
+    def free_many(self, bs: list) -> list[bool]:
+        """:meth:`free` of each box of *bs*, asked at once."""
+        if not len(self.x0):
+            return [True] * len(bs)
+        b = np.array(bs, dtype=float).reshape(-1, 4)
+        x0, y0, x1, y1 = (b[:, k:k + 1] for k in range(4))
+        return (~((x0 < self.x1) & (self.x0 < x1) & (y0 < self.y1) & (self.y0 < y1)).any(axis=1)).tolist()
 
     def add(self, b) -> None:  # the letter is placed alone: nothing is asked after it
         pass
@@ -439,7 +447,7 @@ def _spots(ordered: "Sequence[tuple]", plan: "Sequence[tuple[int, float, int]]",
 
 
 def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float, float], str]],
-          size: float, dots: Iterable[tuple[float, float]] = (),
+          size: float, dots: "Iterable[tuple[float, float]] | np.ndarray" = (),
           lines: "Sequence[tuple[float, float, float, float]] | LineIndex" = (), *, font: str = DEFAULT_FONT,
           italic: bool = False, taken: Iterable[tuple[float, float, float, float]] = (),
           keep: bool = True, prefer: "dict[str, tuple[float, float, float]] | None" = None,
@@ -468,13 +476,17 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     rings tried after the usual ones (letter heights; a name tag a caption names is set off with a leader
     rather than left out).
     """
-    dots = list(dots)
     r = 0.3 * size
     items = list(items)
     taken = list(taken)
     if len(items) == 1:
-        grid: "_Grid | _Boxes" = _Boxes(list(taken) + [(x - r, y - r, x + r, y + r) for x, y in dots])
+        # (points given as an array of rows: their boxes made on the array)
+        a = dots.reshape(-1, 2) if isinstance(dots, np.ndarray) else np.array(list(dots), dtype=float).reshape(-1, 2)
+        grid: "_Grid | _Boxes" = _Boxes(np.concatenate([np.array(taken, dtype=float).reshape(-1, 4), np.column_stack(
+            (a[:, 0] - r, a[:, 1] - r, a[:, 0] + r, a[:, 1] + r))]))
+        dots = list(map(tuple, a.tolist())) if soft is not None else []  # (only a plate's letter asks them again)
     else:
+        dots = list(map(tuple, dots.tolist())) if isinstance(dots, np.ndarray) else list(dots)
         grid = _Grid(1.0 * size)
         for b in taken:
             grid.add(b)
@@ -495,6 +507,9 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     plan = [(j, dist, turn) for j, dist in enumerate(_DISTANCES + tuple(distances))
             for turn in (_TURNS if dist in _DISTANCES else _TURNS_FAR)]
     rings = _DISTANCES + tuple(distances)
+    ring_of: dict[int, tuple[int, int]] = {}  # each ring's spots: (first, end) in the plan
+    for k, (j, _d, _t) in enumerate(plan):
+        ring_of[j] = (ring_of.get(j, (k, k))[0], k + 1)
     # many letters: every spot of every letter made at once, and crossed off in bulk where a point surely takes it
     # (a crowd of points takes most spots of most letters) or a letter placed in this call meets it; the rest are
     # asked in the grid, in the order of the letters.  A few letters are asked spot by spot, each made as it is
@@ -541,6 +556,20 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                 base = math.atan2(-dy, dx)  # y down on the sheet
                 w = text_width(text, size, font, italic)
                 ring_cs: dict[int, tuple[float, float]] = {}  # each direction's cosine and sine, for all distances
+                batch = isinstance(grid, _Boxes)
+                ring_spots: dict[int, tuple] = {}
+
+                def spot_at(k: int) -> tuple[float, float, tuple[float, float, float, float]]:
+                    _j, dist, turn = plan[k]
+                    cs = ring_cs.get(turn)
+                    if cs is None:
+                        a = base + math.radians(turn)
+                        cs = ring_cs[turn] = (math.cos(a), math.sin(a))
+                    # the letter's centre sits *dist* letter heights from the point (plus half its extra width
+                    # sideways); its baseline a third of a letter lower
+                    lx = px + cs[0] * (dist * size + max(0.0, w - 0.6 * size) / 2)
+                    ly = py + dist * size * cs[1] + 0.35 * size
+                    return lx, ly, box_at(lx, ly)
             ring = 0
             for i in asked:
                 j, dist, turn = plan[i]
@@ -553,19 +582,20 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                     if row is None:
                         row = [a[n].tolist() for a in spots]
                     lx, ly, box = row[0][i], row[1][i], (row[2][i], row[3][i], row[4][i], row[5][i])
+                    free = None
                 else:
-                    cs = ring_cs.get(turn)
-                    if cs is None:
-                        a = base + math.radians(turn)
-                        cs = ring_cs[turn] = (math.cos(a), math.sin(a))
-                    # the letter's centre sits *dist* letter heights from the point (plus half its extra width
-                    # sideways); its baseline a third of a letter lower
-                    lx = px + cs[0] * (dist * size + max(0.0, w - 0.6 * size) / 2)
-                    ly = py + dist * size * cs[1] + 0.35 * size
-                    box = box_at(lx, ly)
+                    if batch:
+                        if i not in ring_spots:  # a letter alone: its ring's spots asked of the boxes at once
+                            lo, hi = ring_of[j]
+                            made = [spot_at(k) for k in range(lo, hi)]
+                            ring_spots.update(zip(range(lo, hi), zip(made, grid.free_many([m[2] for m in made]))))
+                        (lx, ly, box), free = ring_spots[i]
+                    else:
+                        lx, ly, box = spot_at(i)
+                        free = None
                     if first is None:
                         first = (lx, ly, box, dist)
-                if not grid.free(box) or strokes.meets(box, reach, only):
+                if not (grid.free(box) if free is None else free) or strokes.meets(box, reach, only):
                     continue
                 if soft is None:
                     spot = (lx, ly, box, dist)

@@ -20,7 +20,7 @@ from typing import Any, Callable, Iterable, Sequence
 from ..kernel.geometry import Circle, Line, Point
 from ..kernel.protocol import Replay, Step
 
-__all__ = ["could_show", "TWO_PI", "GAP_TIE", "widest_gap", "MarkKind", "Mark", "with_geom", "letter_lines", "fanned_lines", "letter_point", "middle",
+__all__ = ["could_show", "mark_box", "TWO_PI", "GAP_TIE", "widest_gap", "MarkKind", "Mark", "with_geom", "letter_lines", "fanned_lines", "letter_point", "middle",
            "lies_on", "curve_points", "segment_extent", "segment_span", "segment_at", "circle_extent", "marked_arc",
            "arc_at", "extreme_points"]
 
@@ -342,6 +342,29 @@ def extreme_points(m: Mark) -> Sequence[tuple[float, float]]:
     [(2.0, 0.0), (0.0, 2.0), (2.0, 0.0), (0.0, 2.0)]
     """
     return _EXTREMES[m.kind](m.geom)
+
+
+def mark_box(m: Mark) -> tuple[float, float, float, float] | None:
+    """The box (x0, y0, x1, y1) of a mark as drawn: of its :func:`extreme_points` (None for a curve of no points).
+
+    >>> mark_box(Mark("m", 1, "k", MarkKind.CIRCLE, (1.0, 2.0, 0.5), "construction", "compass", "exact"))
+    (0.5, 1.5, 1.5, 2.5)
+    """
+    if m.kind is MarkKind.ARC:
+        return _arc_box(m.geom)
+    return _box_of(extreme_points(m))
+
+
+@functools.lru_cache(maxsize=1 << 16)
+def _arc_box(g: tuple) -> tuple[float, float, float, float]:
+    return _box_of(_arc_extremes(g))  # type: ignore[return-value]
+
+
+def _box_of(pts: Sequence[tuple[float, float]]) -> tuple[float, float, float, float] | None:
+    if not pts:
+        return None
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    return (min(xs), min(ys), max(xs), max(ys))
 
 
 def could_show(m: Mark, region: tuple[float, float, float, float]) -> bool:

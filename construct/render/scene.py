@@ -31,7 +31,7 @@ from ..kernel.protocol import Protocol, Replay, Step
 from ..kernel.letters import FIGURE_LETTER, primed
 from .captions import TITLE_LIMIT, displayed
 from .marks import (TWO_PI, Mark, MarkKind, arc_at, curve_points, extreme_points, fanned_lines, letter_lines,
-                    lies_on, marked_arc, segment_at, segment_span)
+                    lies_on, mark_box, marked_arc, segment_at, segment_span)
 from .end_marks import end_state
 from .sheet import Break, break_shift, breaks_figure, broken, kept_span, lay_out, plate_names, warn_hidden_labels
 from .step_inputs import StepInputs
@@ -260,11 +260,13 @@ class Scene(StepInputs):
         # (the stroke line reaches the far crossheads) but say nothing about the stage.
         lo = bisect.bisect_left(self._mark_steps, start)
         hi = bisect.bisect_right(self._mark_steps, end)
-        pts = [p for m in self.marks[lo:hi] if m.kind is not MarkKind.SEGMENT for p in extreme_points(m)]
-        if not pts:
+        point, segment = MarkKind.POINT, MarkKind.SEGMENT
+        boxes = [m.geom * 2 if m.kind is point else mark_box(m) for m in self.marks[lo:hi] if m.kind is not segment]
+        boxes = [b for b in boxes if b is not None]
+        if not boxes:
             return self.bbox
-        x0, x1 = min(p[0] for p in pts), max(p[0] for p in pts)
-        y0, y1 = min(p[1] for p in pts), max(p[1] for p in pts)
+        x0s, y0s, x1s, y1s = zip(*boxes)
+        x0, x1, y0, y1 = min(x0s), max(x1s), min(y0s), max(y1s)
         pad = 0.06 * max(x1 - x0, y1 - y0, 1e-9)
         b = self.bbox
         return (max(b[0], x0 - pad), max(b[1], y0 - pad), min(b[2], x1 + pad), min(b[3], y1 + pad))
@@ -464,22 +466,29 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                     label = primed(label)  # drawn as the books print it (6′); the protocol keeps its 6'
                 if "unlettered" in (looks or {}).get(name, "").split():
                     label = None  # the plate letters it otherwise (an abscissa, as the book does)
-                common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
-                              group=s.group, label=label, look=(looks or {}).get(name, ""))
-                if isinstance(obj, Point):
-                    marks.append(Mark(mid, kind=MarkKind.POINT, geom=(obj[0], obj[1]), **common))
-                elif isinstance(obj, Line):
+                look = (looks or {}).get(name, "")
+                if isinstance(obj, Point):  # (the marks made by position: a long figure makes tens of thousands)
+                    marks.append(Mark(mid, s.index, name, MarkKind.POINT, (obj[0], obj[1]), s.role, s.tool,
+                                      s.provenance.kind, label, s.group, look))
+                    continue
+                if isinstance(obj, Line):
                     span = spans.get(mid)
                     if span is None:
                         span = spans[mid] = segment_span(obj, on.get(name, []))
-                    marks.append(Mark(mid, kind=MarkKind.SEGMENT, geom=segment_at(span, margin), **common))
-                elif isinstance(obj, Circle):
+                    marks.append(Mark(mid, s.index, name, MarkKind.SEGMENT, segment_at(span, margin), s.role, s.tool,
+                                      s.provenance.kind, label, s.group, look))
+                    continue
+                if isinstance(obj, Circle):
                     span = spans.get(mid)
                     if span is None:
                         span = spans[mid] = marked_arc(obj, on.get(name, []), s.role, plate=shown is not None)
                     kind, geom = arc_at(span, margin)
-                    marks.append(Mark(mid, kind=kind, geom=geom, **common))
-                elif hasattr(obj, "rings"):  # an Area: one mark per piece, each hatched
+                    marks.append(Mark(mid, s.index, name, kind, geom, s.role, s.tool, s.provenance.kind, label,
+                                      s.group, look))
+                    continue
+                common = dict(step=s.index, name=name, role=s.role, tool=s.tool, provenance=s.provenance.kind,
+                              group=s.group, label=label, look=look)
+                if hasattr(obj, "rings"):  # an Area: one mark per piece, each hatched
                     # a look "signed": the pieces under the lower line hatched across those over it (+ and −)
                     signed = "signed" in common["look"].split()
                     for j, (sign, ring) in enumerate(obj.pieces):
@@ -550,9 +559,11 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
         fx = extent(furniture)
         if fx:
             bx0, by0, bx1, by1 = min(bx0, fx[0]), min(by0, fx[1]), max(bx1, fx[2]), max(by1, fx[3])
-    for m in marks:
-        for x, y in extreme_points(m):
-            bx0, by0, bx1, by1 = min(bx0, x), min(by0, y), max(bx1, x), max(by1, y)
+    boxes = [m.geom * 2 if m.kind is MarkKind.POINT else mark_box(m) for m in marks]  # (a point's box: (x, y, x, y))
+    boxes = [b for b in boxes if b is not None]
+    if boxes:
+        x0s, y0s, x1s, y1s = zip(*boxes)
+        bx0, by0, bx1, by1 = min(bx0, min(x0s)), min(by0, min(y0s)), max(bx1, max(x1s)), max(by1, max(y1s))
     pad = margin
     bbox = (bx0 - pad, by0 - pad, bx1 + pad, by1 + pad)
     if title is None:

@@ -16,7 +16,7 @@ from typing import Callable, NamedTuple
 from ..kernel.errors import HiddenLabelWarning
 from ..kernel.geometry import Circle, Line, Point
 from ..kernel.protocol import Protocol, Replay
-from .marks import Mark, MarkKind, extreme_points, lies_on, with_geom
+from .marks import Mark, MarkKind, extreme_points, lies_on, mark_box, with_geom
 
 __all__ = ["BREAK_FRACTION", "BREAK_FRACTION_Y", "BREAK_KEEP", "PLATE_BREAK_KEEP", "Break", "broken_axis", "broken",
            "breaks_figure", "kept_span", "span_of", "warn_hidden_labels", "lay_out", "plate_names", "moved_geom", "break_shift"]
@@ -50,39 +50,63 @@ class Break(NamedTuple):
     axis: int = 0
 
 
-def _widest_gap(marks: list[Mark], furniture: tuple, axis: int, fraction: float) -> tuple[float, float, float] | None:
+def _extents(marks: list[Mark]) -> "np.ndarray":
+    """The box (x0, y0, x1, y1) of each mark a broken axis keeps clear of its gap, one row each (:func:`_widest_gap`):
+    every point, circle, arc, area and curve but the lines (the stroke line spans everything; a rod drawn to its
+    crosshead -- a straight curve of two points -- crosses the break), in one pass.  The same numbers as
+    :func:`extreme_points` gives (:func:`mark_box`): a break along x moves no y, so its rows' y serve the break
+    across it too."""
+    import numpy as np
+
+    point, segment, curve = MarkKind.POINT, MarkKind.SEGMENT, MarkKind.CURVE
+    flat: list[float] = []
+    for m in marks:
+        k = m.kind
+        if k is point:  # (most marks: a long figure's points)
+            x, y = m.geom
+            flat += (x, y, x, y)
+        elif k is segment or (k is curve and m.straight and len(m.geom) == 2):
+            continue
+        else:
+            box = mark_box(m)
+            if box is not None:
+                flat += box
+    return np.array(flat, dtype=float).reshape(-1, 4)
+
+
+def _widest_gap(marks: list[Mark], furniture: tuple, axis: int, fraction: float,
+                extents: "np.ndarray | None" = None) -> tuple[float, float, float] | None:
     """(start, end, total) of the widest empty stretch along *axis* that :func:`broken_axis` breaks out, or None
-    when none is wider than *fraction* of the figure."""
+    when none is wider than *fraction* of the figure.  *extents*: the marks' :func:`_extents`, if made already.
+
+    The walk of a draftsman's eye along the axis, on arrays: the marks' spans sorted by start (then end), the
+    reach of those before each, the first widest stretch between a reach and the next start.
+    """
+    import numpy as np
+
     from .plate import anchors
 
-    ivals = []
-    for m in marks:
-        if m.kind is MarkKind.POINT:  # (most marks: a long figure's points)
-            c = m.geom[axis]
-            ivals.append((c, c))
-            continue
-        if m.kind is MarkKind.SEGMENT or (m.kind is MarkKind.CURVE and m.straight and len(m.geom) == 2):
-            continue  # the stroke line spans everything; a rod drawn to its crosshead crosses the break
-        cs = [p[axis] for p in extreme_points(m)]
-        if cs:
-            ivals.append((min(cs), max(cs)))
-    ivals.extend((p[axis], p[axis]) for p in anchors(furniture))
-    if len(ivals) < 2:
+    ext = _extents(marks) if extents is None else extents
+    lo, hi = ext[:, axis], ext[:, axis + 2]
+    own = [p[axis] for p in anchors(furniture)]
+    if own:
+        lo, hi = np.concatenate([lo, own]), np.concatenate([hi, own])
+    if len(lo) < 2:
         return None
-    ivals.sort()
-    total = ivals[-1][1] - ivals[0][0]
-    best, reach = None, ivals[0][1]
-    for a, b in ivals[1:]:
-        if a > reach and (best is None or a - reach > best[1] - best[0]):
-            best = (reach, a)
-        reach = max(reach, b)
-    if best is None or best[1] - best[0] <= fraction * total:
+    order = np.lexsort((hi, lo))
+    lo, hi = lo[order], hi[order]
+    total = float(hi[-1] - lo[0])
+    reach = np.maximum.accumulate(hi)[:-1]
+    gaps = lo[1:] - reach
+    i = int(np.argmax(gaps))  # the first of the widest
+    if not gaps[i] > 0.0 or gaps[i] <= fraction * total:
         return None
-    return best[0], best[1], total
+    return float(reach[i]), float(lo[i + 1]), total
 
 
 def broken_axis(marks: list[Mark], furniture: tuple = (), keep_fraction: float = 0.07, axis: int = 0,
-                fraction: float = BREAK_FRACTION) -> tuple[list[Mark], tuple, tuple[Break, ...]]:
+                fraction: float = BREAK_FRACTION, *, extents: "np.ndarray | None" = None
+                ) -> tuple[list[Mark], tuple, tuple[Break, ...]]:
     """Break the widest empty stretch out of the figure, as a draftsman breaks a long axis.
 
     The crossheads lie a rod length (5 r) to the left of the crank circle;
@@ -94,16 +118,16 @@ def broken_axis(marks: list[Mark], furniture: tuple = (), keep_fraction: float =
     is broken the same way.  *axis* 1 breaks across the figure instead: marks
     wholly below the stretch move up (a vertex a rod's length below the
     crank).  Returns the marks, the furniture and (:class:`Break`,) or ()
-    when there is no gap wider than *fraction* of the figure.
+    when there is no gap wider than *fraction* of the figure.  *extents*: the marks' boxes
+    (:func:`_extents`), if made already.
     """
     from .plate import shifted
 
-    gap = _widest_gap(marks, furniture, axis, fraction)
+    gap = _widest_gap(marks, furniture, axis, fraction, extents)
     if gap is None:
         return marks, furniture, ()
     lo, hi, total = gap
-    keep = min(keep_fraction * (total - (hi - lo)), 0.8 * (hi - lo))
-    shift = (hi - lo) - keep
+    keep, shift = _kept_of(gap, keep_fraction)
 
     def sx(x: float) -> float:
         return x + shift if x <= lo else x
@@ -122,6 +146,13 @@ def broken_axis(marks: list[Mark], furniture: tuple = (), keep_fraction: float =
     # the near stretch now ends at hi - keep: the kept piece of the broken axis is [hi - keep, hi]
     moved = tuple(shifted(it, sx) for it in furniture) if axis == 0 else furniture
     return out, moved, (Break(hi - keep, keep, hi - lo, axis),)
+
+
+def _kept_of(gap: tuple[float, float, float], keep_fraction: float) -> tuple[float, float]:
+    """How much of the gap (start, end, total) a broken axis keeps, and how far what lies before it moves."""
+    lo, hi, total = gap
+    keep = min(keep_fraction * (total - (hi - lo)), 0.8 * (hi - lo))
+    return keep, (hi - lo) - keep
 
 
 def moved_geom(m: Mark, x: Callable[[float], float], y: Callable[[float], float], *,
@@ -173,9 +204,11 @@ def break_shift(breaks: tuple, axis: int = 0) -> Callable[[float], float]:
 def broken(marks: list[Mark], furniture: tuple, whole: bool) -> tuple[list[Mark], tuple, tuple[Break, ...]]:
     """The figure broken along x (:func:`broken_axis`) and, unless a plate (*whole* false: a plate keeps its
     sheet, the books draw S whole), across it."""
-    marks, furniture, breaks = broken_axis(marks, furniture, BREAK_KEEP if whole else PLATE_BREAK_KEEP)
+    extents = _extents(marks)  # (a break along x moves no y: the break across asks the same boxes)
+    marks, furniture, breaks = broken_axis(marks, furniture, BREAK_KEEP if whole else PLATE_BREAK_KEEP,
+                                           extents=extents)
     if whole and not furniture:
-        marks, _, across = broken_axis(marks, (), BREAK_KEEP, axis=1, fraction=BREAK_FRACTION_Y)
+        marks, _, across = broken_axis(marks, (), BREAK_KEEP, axis=1, fraction=BREAK_FRACTION_Y, extents=extents)
         breaks += across
     return marks, furniture, breaks
 
@@ -183,16 +216,34 @@ def broken(marks: list[Mark], furniture: tuple, whole: bool) -> tuple[list[Mark]
 def breaks_figure(marks: list[Mark], furniture: tuple, whole: bool) -> bool:
     """Would :func:`broken` break the figure (along x or, when *whole* and without furniture, across it)?  Asked
     without moving a mark: breaking along x moves no y."""
-    if _widest_gap(marks, furniture, 0, BREAK_FRACTION) is not None:
+    extents = _extents(marks)
+    if _widest_gap(marks, furniture, 0, BREAK_FRACTION, extents) is not None:
         return True
-    return whole and not furniture and _widest_gap(marks, (), 1, BREAK_FRACTION_Y) is not None
+    return whole and not furniture and _widest_gap(marks, (), 1, BREAK_FRACTION_Y, extents) is not None
 
 
 def kept_span(marks: list[Mark]) -> float:
     """What the figure's points and curves span once broken alone (:func:`broken`; as they are, unbroken): a
     broken figure's margin is a share of it."""
+    import numpy as np
+
     drawn = [m for m in marks if m.kind in (MarkKind.POINT, MarkKind.CURVE, MarkKind.AREA)]
-    return span_of(broken(drawn, (), True)[0])
+    if not drawn:
+        return 1e-9
+    # what broken(drawn, (), True) does to their coordinates, on arrays: a point before a gap moves by its shift
+    ext = _extents(drawn)
+    pts = [m.geom for m in drawn if m.kind is MarkKind.POINT] + [p for m in drawn if m.kind is not MarkKind.POINT
+                                                                 for p in m.geom]
+    if not pts:
+        return 1e-9
+    xy = np.array(pts, dtype=float).reshape(-1, 2)
+    for axis, fraction in ((0, BREAK_FRACTION), (1, BREAK_FRACTION_Y)):  # (a break along x moves no y)
+        gap = _widest_gap(drawn, (), axis, fraction, ext)
+        if gap is not None:
+            v = xy[:, axis]
+            xy[:, axis] = np.where(v <= gap[0], v + _kept_of(gap, BREAK_KEEP)[1], v)
+    x, y = xy[:, 0], xy[:, 1]
+    return max(float(x.max() - x.min()), float(y.max() - y.min()), 1e-9)
 
 
 def span_of(marks: list[Mark]) -> float:
@@ -377,19 +428,73 @@ def plate_names(protocol: Protocol, objects: Replay) -> set[str]:
         xs = [o[0] for _, o in objects.items() if isinstance(o, Point)]
         tol = 1e-9 * max(max(xs) - min(xs), 1.0)
         px, py = np.array([o[0] for _, o in pts], dtype=float), np.array([o[1] for _, o in pts], dtype=float)
-        for name in sorted(curves):
-            obj = objects[name]
-            if not isinstance(obj, Circle):
-                continue
-            # every circle against every point at once (a 1440-part crank has thousands of each); numpy's
-            # hypot may differ from math's in the last bit, so it only picks the candidates, lies_on decides
-            (cx, cy), r = obj
-            near = np.abs(np.hypot(px - cx, py - cy) - r) <= 2.0 * tol * max(1.0, r)
-            for i in np.flatnonzero(near).tolist():
+        circles = [objects[name] for name in sorted(curves) if isinstance(objects[name], Circle)]
+        if circles:
+            # numpy's hypot may differ from math's in the last bit, so it only picks the candidates, lies_on decides
+            c = np.array([(cx, cy, r) for (cx, cy), r in circles], dtype=float).reshape(-1, 3)
+            for k, i in _near_circles(px, py, c, 2.0 * tol * np.maximum(1.0, c[:, 2])):
                 n, o = pts[i]
-                if n not in shown and lies_on(obj, o, tol):
+                if n not in shown and lies_on(circles[k], o, tol):
                     shown.add(n)
     return shown
+
+
+def _near_circles(px: "np.ndarray", py: "np.ndarray", c: "np.ndarray", e: "np.ndarray") -> list[tuple[int, int]]:
+    """The pairs (circle k, point i) with the point within e[k] of the circle's line (``|hypot(p - centre) - r| <=
+    e[k]``), circles c given as rows (cx, cy, r); without asking every pair (a 3600-part crank has 3600 rod arcs
+    and 7200 points: 26 million distances).
+
+    The points are filed in horizontal bands, sorted by x within each; within a band's y the ring about a circle
+    lies over two stretches of x (its left and right arcs, from the band's nearest and farthest y), and only the
+    points in those, widened by more than rounding, are asked.
+
+    >>> import numpy as np
+    >>> px, py = np.array([1.0, 0.0, 0.5, -1.0]), np.array([0.0, 1.0, 0.5, 0.0])
+    >>> _near_circles(px, py, np.array([[0.0, 0.0, 1.0], [2.0, 0.0, 1.0]]), np.array([1e-9, 1e-9]))
+    [(0, 0), (0, 1), (0, 3), (1, 0)]
+    """
+    import numpy as np
+
+    m = len(px)
+    if not m or not len(c):
+        return []
+    bands = int(min(32, max(1, math.isqrt(m))))
+    y0 = float(py.min())
+    h = (float(py.max()) - y0) / bands or 1.0
+    band = np.minimum(((py - y0) / h).astype(np.int64), bands - 1)
+    order = np.lexsort((px, band))
+    band_s, x_s, y_s = band[order], px[order], py[order]
+    starts = np.searchsorted(band_s, np.arange(bands + 1))
+    ks = np.flatnonzero(starts[1:] > starts[:-1])  # the bands that hold points
+    ylo, yhi = np.minimum.reduceat(y_s, starts[ks]), np.maximum.reduceat(y_s, starts[ks])
+    # one key for (band, x): the bands apart by more than the points' x span
+    xmin, xmax = float(x_s.min()), float(x_s.max())
+    width = 2.0 * (xmax - xmin) + 1.0
+    key = band_s * width + (x_s - xmin)
+    cx, cy, r = c[:, 0:1], c[:, 1:2], c[:, 2:3]
+    slack = 4.0 * e[:, None]
+    dlo, dhi = ylo[None, :] - cy, yhi[None, :] - cy
+    dmin = np.where(dlo > 0.0, dlo, np.where(dhi < 0.0, -dhi, 0.0))
+    dmax = np.maximum(np.abs(dlo), np.abs(dhi))
+    outer_r, inner_r = r + slack, np.maximum(r - slack, 0.0)
+    meets = dmin <= outer_r
+    outer = np.sqrt(np.maximum(outer_r * outer_r - dmin * dmin, 0.0)) + slack
+    inner = np.sqrt(np.maximum(inner_r * inner_r - dmax * dmax, 0.0)) - slack
+    inner = np.maximum(inner, 0.0)
+    base = ks[None, :] * width
+    pairs = []
+    for lo, hi in ((cx - outer, cx - inner), (cx + inner, cx + outer)):  # the left arc, the right arc
+        ok = meets & (hi >= xmin) & (lo <= xmax)
+        a = np.searchsorted(key, (base + (np.clip(lo, xmin, xmax) - xmin))[ok], "left")
+        b = np.searchsorted(key, (base + (np.clip(hi, xmin, xmax) - xmin))[ok], "right")
+        n = np.maximum(b - a, 0)
+        which = np.repeat(np.nonzero(ok)[0], n)
+        at = np.repeat(a - np.concatenate([[0], np.cumsum(n)[:-1]]), n) + np.arange(int(n.sum()))
+        pairs.append(which * m + order[at])
+    both = np.unique(np.concatenate(pairs))
+    k, i = both // m, both % m
+    near = np.abs(np.hypot(px[i] - c[k, 0], py[i] - c[k, 1]) - c[k, 2]) <= e[k]
+    return list(zip(k[near].tolist(), i[near].tolist()))
 
 
 @functools.lru_cache(maxsize=8)

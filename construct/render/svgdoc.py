@@ -54,7 +54,7 @@ def fmt(v: float, decimals: int = 2) -> str:
     >>> fmt(1.005), fmt(-0.0001), fmt(12.5), fmt(3.14159, 3)
     ('1', '0', '12.5', '3.142')
     """
-    text = f"{v:.{decimals}f}".rstrip("0").rstrip(".")
+    text = (f"{v:.2f}" if decimals == 2 else f"{v:.{decimals}f}").rstrip("0").rstrip(".")  # (a constant spec: faster)
     return "0" if text in ("-0", "") else text
 
 

@@ -147,7 +147,7 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
         ds = dz[(x0 <= dz[:, 0]) & (dz[:, 0] <= x1) & (y0 <= dz[:, 1]) & (dz[:, 1] <= y1)]
         lo, hi = line_lo * z, line_hi * z
         mask = (lo[:, 0] <= x1) & (hi[:, 0] >= x0) & (lo[:, 1] <= y1) & (hi[:, 1] >= y0)
-        return list(map(tuple, ds.tolist())), mask.tolist()
+        return ds, mask.tolist()
 
     # per level, the tags' steps seen together in some view of that level (a step and its inputs)
     seen_with: dict[int, dict[int, set[int]]] = {}

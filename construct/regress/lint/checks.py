@@ -451,6 +451,8 @@ def _leaders(sheet: Sheet, views: Views) -> list[Finding]:
     """A leader must start at its point (drawn in that view) and end at its letter, in every view that shows it."""
     if not sheet.leaders:
         return []
+    import numpy as np
+
     letters: dict[int, list] = defaultdict(list)
     for t in sheet.texts:
         if t.lbg is not None and t.kind != "caption":
@@ -459,13 +461,17 @@ def _leaders(sheet: Sheet, views: Views) -> list[Finding]:
     for d in sheet.dots:
         dots[(round(d.x), round(d.y))].append(d)
     found: dict[tuple[int, str], list] = defaultdict(list)
+    anchors = np.array([ld.anchor for ld in sheet.leaders], dtype=float).reshape(-1, 2)
     for lay in views.layouts:
         x0, y0, x1, y1 = lay.box
-        for i, ld in enumerate(sheet.leaders):
+        # the leaders whose point the layout's box holds and whose views reach into the layout's, in order
+        shown, first, last = views.shown_all(sheet.leaders, lay.level)
+        ax_, ay_ = anchors[:, 0], anchors[:, 1]
+        for i in np.flatnonzero((x0 <= ax_) & (ax_ <= x1) & (y0 <= ay_) & (ay_ <= y1) & (first <= lay.runs[-1][1])
+                                & (last >= lay.runs[0][0])).tolist():
+            ld = sheet.leaders[i]
             ax, ay = ld.anchor
-            if not (x0 <= ax <= x1 and y0 <= ay <= y1):
-                continue
-            runs = both_runs(views.shown(ld.chain, ld.step, lay.level), lay.runs)
+            runs = both_runs(shown[i], lay.runs)
             if not runs or not letters.get(ld.lbg):
                 continue
             t = letters[ld.lbg][0]

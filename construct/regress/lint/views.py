@@ -304,9 +304,9 @@ class Views:
             got = self.__dict__["_arrays"] = (boxes, anchored, points, units)
         return got
 
-    def _near_texts(self, lay: Layout) -> list[int]:
-        """The texts whose box in *lay* (:meth:`text_box`, for all at once) may meet the layout's box: a
-        superset of those that do (a hair's margin), in order; :meth:`letters` tests each exactly."""
+    def _texts_in(self, lay: Layout, among: "np.ndarray") -> tuple[list[int], list[list[float]]]:
+        """The texts of *among* (a mask) whose box in *lay* meets the layout's box (:func:`boxes_meet`), in
+        order, and those boxes (:meth:`text_box`, for all texts at once: the same sums in the same order)."""
         import numpy as np
 
         boxes, anchored, points, units = self._text_arrays()
@@ -333,24 +333,41 @@ class Views:
             scaled = np.concatenate((points + s * (boxes[:, 0:2] - points + d), points + s * (boxes[:, 2:4] - points + d)),
                                     axis=1)
             b = np.where(at[:, None], scaled, boxes)
-        e = 1e-6
         x0, y0, x1, y1 = lay.box
-        return np.flatnonzero((b[:, 0] < x1 + e) & (x0 - e < b[:, 2]) & (b[:, 1] < y1 + e) & (y0 - e < b[:, 3])).tolist()
+        i = np.flatnonzero(among & (b[:, 0] < x1) & (x0 < b[:, 2]) & (b[:, 1] < y1) & (y0 < b[:, 3]))
+        return i.tolist(), b[i].tolist()
+
+    def shown_all(self, items, level: int) -> tuple[list[Runs], "np.ndarray", "np.ndarray"]:
+        """For each of *items* (a sheet's texts, leaders, ...: anything with a ``chain`` and a ``step``), the
+        views that show it at zoom level *level* (:meth:`shown`), and the first and the last of them as two
+        arrays (an item never seen: +inf, -inf), made once per level: a layout asks only the items whose
+        views reach into its own."""
+        import numpy as np
+
+        store = self.__dict__.setdefault("_shown_all", {})
+        key = (id(items), level)
+        got = store.get(key)
+        if got is None or got[0] is not items:
+            runs = [self.shown(it.chain, it.step, level) for it in items]
+            first = np.array([r[0][0] if r else math.inf for r in runs], dtype=float)
+            last = np.array([r[-1][1] if r else -math.inf for r in runs], dtype=float)
+            got = store[key] = (items, runs, first, last)
+        return got[1], got[2], got[3]
 
     def letters(self, lay: Layout, *, captions: bool = True) -> list[tuple]:
         """The texts a layout shows: (text, its box there, the layout's steps that show it)."""
         out = []
         texts = self.sheet.texts
-        for i in self._near_texts(lay):
+        shown, first, last = self.shown_all(texts, lay.level)
+        skip = self.player or not captions  # the player shows no caption lines on its figure
+        views = lay.runs
+        for i, b in zip(*self._texts_in(lay, (first <= views[-1][1]) & (last >= views[0][0]))):
             t = texts[i]
-            if t.kind == "caption" and (self.player or not captions):
-                continue  # the player shows no caption lines on its figure
-            b = self.text_box(t, lay)
-            if not boxes_meet(b, lay.box):
+            if skip and t.kind == "caption":
                 continue
-            runs = both_runs(self.shown(t.chain, t.step, lay.level), lay.runs)
+            runs = both_runs(shown[i], views)
             if runs:
-                out.append((t, b, runs))
+                out.append((t, tuple(b), runs))
         return out
 
 

@@ -369,8 +369,7 @@ class _Parser:
         ctm = parent.ctm
         if "transform" in attrs:
             ctm = multiply(ctm, parse_transform(attrs["transform"], f"{self.name}: <{tag}> transform"))
-        if extra is not IDENTITY:
-            ctm = multiply(ctm, extra)
+        ctm = multiply(ctm, extra)
         own = self._own_style(elem, tag)
         style, items = parent.style, parent.items
         if own:  # most elements style nothing themselves: they share their parent's dict, never changed after

@@ -30,6 +30,7 @@ from ..render.camera import FINAL_CONTEXT, MAX_ZOOM, ZOOM_LEVELS, Framing, clip_
 from ..render.end_state import NumbersFactory, end_furniture, furniture_numbers
 from ..render.output import scene_for
 from ..render.plate import plate_of, shifted, subscript_runs
+from ..render.insets import inset_detail
 from ..render.player import inset_marks, player_html
 from ..render.scene import MarkKind, extreme_points, reading
 from ..render.sheet import break_shift
@@ -112,11 +113,14 @@ class Measure:
         self.rings = [(i, [m.id for m in scene.marks if m.step == k]) for i, k in enumerate(self.steps)
                       if drawing.ring(k) is not None]
         self.boxes = self._boxes(scene, drawing.vp)
-        #: the steps shown with an inset (:func:`~construct.render.insets.step_insets`, chosen at the built value), by
-        #: their index: its box (x, y, w, h), the marks it is carried with and whether it magnifies a cluster
-        #: (:func:`_inset_carriers`), and the box that carries it at the built value (:meth:`_carried_insets`)
-        self.insets = [(i, tuple(z), *_inset_carriers(drawing, k, z)) for i, k in enumerate(self.steps)
-                       if (z := drawing.insets[k - 1]) is not None]
+        #: the steps shown with an inset (:func:`~construct.render.insets.step_insets`, chosen at the built value) that
+        #: the page does not find anew (a cluster's, :func:`~construct.render.insets.inset_detail`), by their index:
+        #: its box (x, y, w, h) and the marks it is carried with (the points it letters, else the step's own
+        #: marks), and their box at the built value (:meth:`_carried_insets`)
+        self.insets = [(i, tuple(z), [m.id for m, _ in inset_marks(drawing, k, z)]
+                        or [m.id for m in scene.marks if m.step == k]) for i, k in enumerate(self.steps)
+                       if (z := drawing.insets[k - 1]) is not None
+                       and inset_detail(scene, drawing.vp.px, drawing.vp.scale, k, z) is None]
         self._inset_b0 = self._inset_boxes(scene, drawing.vp)
         self.least = 1.0 / MAX_ZOOM
         self._end_framing = self._held_end_view(scene, drawing)
@@ -332,7 +336,7 @@ class Measure:
         if found is None or found[0] != marked:
             at = {i: r for r, i in enumerate(marked)}
             groups = [[at[i] for i in ids if i in at] for ids in
-                      self.framed + [ids for _, ids in self.rings] + [ids for _, _, ids, _ in self.insets]]
+                      self.framed + [ids for _, ids in self.rings] + [ids for _, _, ids in self.insets]]
             sizes = np.asarray([len(g) for g in groups], dtype=int)
             found = self._rows[id(protocol)] = (marked, np.asarray([r for g in groups for r in g], dtype=int),
                                                 (np.cumsum(sizes) - sizes)[sizes > 0], sizes > 0)
@@ -352,17 +356,8 @@ class Measure:
             ring = box[:, views:rings]
             centre = np.stack([np.round((ring[0] + ring[2]) / 2, 2), np.round((ring[1] + ring[3]) / 2, 2)])
             blocks.append(np.where(boxed[views:rings, None], centre, 0.0).transpose(2, 1, 0).reshape(size, -1))
-        if self.insets:  # each inset's box: carried with its points (a cluster's: with its two closest)
-            carrier = box[:, rings:].copy()
-            nums = at_once.numbers
-            for n, (_, _, ids, rounds) in enumerate(self.insets):
-                if rounds is not None:  # (a circle's numbers: cx, cy, r; an arc's path: its radius third)
-                    xy = [nums[i][:, :2].T for i in ids if i in nums]
-                    circles = [np.stack([nums[c][:, 0], nums[c][:, 1], nums[r][:, 2]]) for c, r in rounds
-                               if c in nums and r in nums]
-                    carrier[:, n] = _finest(np.asarray(xy, dtype=float).reshape(-1, 2, size),
-                                            np.asarray(circles, dtype=float).reshape(-1, 3, size))
-            blocks.append(self._carried_insets(carrier).transpose(2, 0, 1).reshape(size, -1))
+        if self.insets:  # each inset's box: carried with its points
+            blocks.append(self._carried_insets(box[:, rings:]).transpose(2, 0, 1).reshape(size, -1))
         blocks.append(at_once.breaks_page())
         table = np.hstack(blocks)
         fits = [tuple(row) for row in at_once.fit.tolist()]
@@ -405,31 +400,19 @@ class Measure:
     def _inset_boxes(self, scene: Any, vp: Viewport) -> np.ndarray:
         """The boxes that carry the insets (:meth:`_carried_insets`) in *scene* drawn on *vp*: x0, y0, x1, y1 x
         insets x 1 (NaN where its marks are not drawn)."""
-        by_id = {m.id: m for m in scene.marks}
-        boxes = self._boxes(scene, vp, [ids for _, _, ids, _ in self.insets])
-        out = np.asarray([b if b is not None else (np.nan,) * 4 for b in boxes], dtype=float).reshape(-1, 4).T[:, :, None]
-        for n, (_, _, ids, rounds) in enumerate(self.insets):
-            if rounds is not None:
-                out[:, n] = _finest(*_detail_parts(vp, by_id, ids, rounds))
-        return out
+        boxes = self._boxes(scene, vp, [ids for _, _, ids in self.insets])
+        return np.asarray([b if b is not None else (np.nan,) * 4 for b in boxes], dtype=float).reshape(-1, 4).T[:, :, None]
 
     def _carried_insets(self, box: np.ndarray) -> np.ndarray:
         """Each inset's box carried along with its marks, now in *box* (x0, y0, x1, y1 x insets x values; NaN where
-        they are not drawn: the built box held), not cut to the canvas (the inset may magnify a place at its edge):
-        insets x (x, y, w, h) x values.
-
-        An inset of a cluster magnifies the two closest points until they are a set distance apart on the screen
-        (:func:`~construct.render.camera.step_details`): its box is centred between them and as large as their
-        distance in proportion -- their box's diagonal -- and is carried so.  Any other moves with its marks'
-        box and grows or shrinks with it as :meth:`_carried` carries a view."""
-        x, y, w, h = np.asarray([z for _, z, _, _ in self.insets], dtype=float).reshape(-1, 4).T[:, :, None]
+        they are not drawn: the built box held), as :meth:`_carried` carries a view, not cut to the canvas (the
+        inset may magnify a place at its edge): insets x (x, y, w, h) x values."""
+        x, y, w, h = np.asarray([z for _, z, _ in self.insets], dtype=float).reshape(-1, 4).T[:, :, None]
         b0 = self._inset_b0
-        pair = np.asarray([rounds is not None for _, _, _, rounds in self.insets])[:, None]
         fw, fh = 0.25 * w, 0.25 * h
-        with np.errstate(invalid="ignore", divide="ignore"):
-            s = np.where(pair, np.hypot(box[2] - box[0], box[3] - box[1]) / np.hypot(b0[2] - b0[0], b0[3] - b0[1]),
-                         np.maximum(np.maximum(box[2] - box[0], fw) / np.maximum(b0[2] - b0[0], fw),
-                                    np.maximum(box[3] - box[1], fh) / np.maximum(b0[3] - b0[1], fh)))
+        with np.errstate(invalid="ignore"):
+            s = np.maximum(np.maximum(box[2] - box[0], fw) / np.maximum(b0[2] - b0[0], fw),
+                           np.maximum(box[3] - box[1], fh) / np.maximum(b0[3] - b0[1], fh))
             cx = (box[0] + box[2]) / 2 + (x + w / 2 - (b0[0] + b0[2]) / 2) * s
             cy = (box[1] + box[3]) / 2 + (y + h / 2 - (b0[1] + b0[3]) / 2) * s
             carried = [cx - w * s / 2, cy - h * s / 2, w * s, h * s]
@@ -489,70 +472,13 @@ class Measure:
             nums += _ring_centre(min(p[0] for p in pts), min(p[1] for p in pts), max(p[0] for p in pts),
                                  max(p[1] for p in pts)) if pts else [0.0, 0.0]
         if self.insets:
-            for (i, _, _, _), z in zip(self.insets, self._carried_insets(self._inset_boxes(scene, vp))[:, :, 0].tolist()):
+            for (i, _, _), z in zip(self.insets, self._carried_insets(self._inset_boxes(scene, vp))[:, :, 0].tolist()):
                 keys.append(("#inset", str(i), "# # # #"))
                 nums += z
         for axis in (0, 1):
             keys.append(("#break", str(axis), "# #"))
             nums += breaks_px(scene.breaks, axis, fit_of(vp))
         return keys, nums, fit_of(vp), texts
-
-
-def _inset_carriers(drawing: Any, k: int, z: tuple) -> tuple[list[str], list[tuple[str, str]] | None]:
-    """The ids of the marks step *k*'s inset (its box *z*, canvas px) is carried with, and, where it magnifies a
-    cluster (:func:`~construct.render.camera.step_details`: centred on the step's finest detail, the two closest
-    of its points or its smallest circle), the circles and arcs it strikes (each as the id of the point at its
-    centre and its own): then the ids are all the points it compares, the finest detail among them and those
-    circles carrying it at each value (:func:`_finest`); else (None) the points it letters, else the step's own
-    marks."""
-    sc = drawing.scene
-    s = sc.steps[k - 1]
-    drawn = {m.name: m for m in sc.marks}
-    near = [drawn[n] for n in dict.fromkeys((*s.outputs, *s.inputs, *sorted(sc.named(k))))
-            if n in drawn and drawn[n].kind is MarkKind.POINT]
-    at = {tuple(round(c, 2) for c in drawing.vp.px(*m.geom)): m.id for m in sc.marks if m.kind is MarkKind.POINT}
-    rounds = [(at[c], m.id) for n in s.outputs if n in drawn and (m := drawn[n]).kind.round
-              and (c := tuple(round(c, 2) for c in drawing.vp.px(*m.geom[:2]))) in at]
-    box = _finest(*_detail_parts(drawing.vp, {m.id: m for m in sc.marks}, [m.id for m in near], rounds))[:, 0]
-    # (the box rounded to 0.01 px)
-    if not np.isnan(box[0]) and abs((box[0] + box[2]) / 2 - z[0] - z[2] / 2) < 0.02 \
-            and abs((box[1] + box[3]) / 2 - z[1] - z[3] / 2) < 0.02:
-        return [m.id for m in near], rounds
-    return [m.id for m, _ in inset_marks(drawing, k, z)] or [m.id for m in sc.marks if m.step == k], None
-
-
-def _detail_parts(vp: Any, by_id: dict, ids: list[str], rounds: list[tuple[str, str]]) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`_finest`'s points and circles in a scene drawn on *vp* (one value)."""
-    xy = np.asarray([vp.px(*by_id[i].geom) for i in ids if i in by_id], dtype=float).reshape(-1, 2, 1)
-    circles = np.asarray([(*vp.px(*by_id[c].geom), by_id[r].geom[2] * vp.scale) for c, r in rounds
-                          if c in by_id and r in by_id], dtype=float).reshape(-1, 3, 1)
-    return xy, circles
-
-
-def _finest(xy: np.ndarray, circles: np.ndarray) -> np.ndarray:
-    """A box (x0, y0, x1, y1 x values) about the finest detail among the points *xy* (points x (x, y) x values)
-    and the circles *circles* (circles x (cx, cy, r) x values), as :func:`~construct.render.camera.step_details`
-    finds it -- the smallest circle's radius, or the distance of the two closest points where that is smaller
-    (read to 0.1 px; two at one place are one) -- centred where it is, its diagonal that size; NaN where there
-    is none."""
-    values = max(xy.shape[2], circles.shape[2])
-    fine, at = np.full(values, np.inf), np.full((2, values), np.nan)
-    if circles.shape[0]:
-        best = np.argmin(circles[:, 2], axis=0)
-        cols = np.arange(values)
-        fine, at = circles[best, 2, cols], circles[best, :2, cols].T
-    if xy.shape[0] >= 2:
-        xy = np.round(xy, 1)
-        i, j = np.triu_indices(xy.shape[0], 1)
-        d = np.hypot(xy[i, 0] - xy[j, 0], xy[i, 1] - xy[j, 1])  # pairs x values
-        d = np.where(d > 0.0, d, np.inf)
-        best = np.argmin(d, axis=0)
-        cols = np.arange(values)
-        closer = d[best, cols] < fine
-        fine = np.where(closer, d[best, cols], fine)
-        at = np.where(closer, (xy[i[best], :, cols] + xy[j[best], :, cols]).T / 2, at)
-    half = np.where(np.isfinite(fine), fine, np.nan) / (2 * math.sqrt(2))
-    return np.stack([at[0] - half, at[1] - half, at[0] + half, at[1] + half])
 
 
 def _form(items: Any) -> tuple:

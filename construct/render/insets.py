@@ -17,12 +17,13 @@ True
 
 from __future__ import annotations
 
+import math
 from typing import Callable, Sequence
 
 from .camera import PLAYER_FIGURE_PX, Framing, View, step_details, step_focus, zoom_of
 from .scene import MarkKind, Scene
 
-__all__ = ["step_insets", "ring_round", "SLIVER_PX", "SLIVER_RATIO", "INSET_PX", "INSET_DETAIL_PX"]
+__all__ = ["step_insets", "inset_detail", "ring_round", "SLIVER_PX", "SLIVER_RATIO", "INSET_PX", "INSET_DETAIL_PX"]
 
 
 #: A step's work is a sliver where its region is thinner on the screen than this (px) and at least
@@ -75,6 +76,47 @@ def step_insets(scene: Scene, views: Sequence[View], full: View,
                     box = (round(cx - w / 2, 2), round(cy - h / 2, 2), round(w, 2), round(h, 2))
         out.append(box)
     return out
+
+
+def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]], scale: float, k: int,
+                 box: Sequence[float]) -> tuple[list[str], list[list[str]], float] | None:
+    """Where step *k*'s inset *box* (canvas px: x y w h) magnifies a cluster: the finest detail of the step
+    (:func:`~construct.render.camera.step_details`: the two closest of its points, read to 0.1 px, or the smallest
+    circle or arc it strikes where that is finer) in the middle of the box, the box as large as the detail in
+    proportion.  Then the ids of the points it compares, of each circle's centre point and circle ([centre,
+    circle]) and the detail's size (canvas px): a page that moves the points (a live given) finds the detail
+    among them anew and carries the box with it (the player's ``detail``).  None for any other inset (a sliver's,
+    centred on the step's own points), or where no point stands at a circle's centre.
+
+    *px*: the drawing's map to canvas pixels; *scale*: its canvas pixels per unit.
+    """
+    s = scene.steps[k - 1]
+    drawn = {m.name: m for m in scene.marks}
+    near = [drawn[n] for n in dict.fromkeys((*s.outputs, *s.inputs, *sorted(scene.named(k))))
+            if n in drawn and drawn[n].kind is MarkKind.POINT]
+    at_point = {tuple(round(c, 2) for c in px(*m.geom)): m.id for m in scene.marks if m.kind is MarkKind.POINT}
+    fine, at, rounds = math.inf, None, []
+    for n in s.outputs:
+        m = drawn.get(n)
+        if m is None or not m.kind.round:
+            continue
+        c = px(*m.geom[:2])
+        centre = at_point.get(tuple(round(x, 2) for x in c))
+        if centre is None:
+            return None  # (the page could not find it anew)
+        rounds.append([centre, m.id])
+        if m.geom[2] * scale < fine:
+            fine, at = m.geom[2] * scale, c
+    pts = [(round(px(*m.geom)[0], 1), round(px(*m.geom)[1], 1)) for m in near]
+    for i, a in enumerate(pts):
+        for b in pts[i + 1:]:
+            d = math.hypot(a[0] - b[0], a[1] - b[1])
+            if 0.0 < d < fine:
+                fine, at = d, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+    # (the box rounded to 0.01 px)
+    if at is None or abs(at[0] - box[0] - box[2] / 2) > 0.02 or abs(at[1] - box[1] - box[3] / 2) > 0.02:
+        return None
+    return [m.id for m in near], rounds, round(fine, 4)
 
 
 def ring_round(points: Sequence[tuple[float, float]], view: View, full: View,

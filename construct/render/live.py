@@ -715,10 +715,11 @@ LIVE_SCRIPT = r"""
     if (st && st.r && S.ringAt[k - 1] !== undefined) {  // the ring (the array the player rings with): round its mark
       st.r[0] = round2(num(S.ringAt[k - 1])); st.r[1] = round2(num(S.ringAt[k - 1] + 1));
     }
-    // the inset (the step's small work magnified beside the view): its box carried with its points (live/measure.py),
-    // drawn at once with them -- after the marks (its points are read off their circles)
-    insetDue = !!(st && st.z && S.insetAt[k - 1] !== undefined);
-    if (insetDue) for (var zi = 0; zi < 4; zi++) st.z[zi] = round2(num(S.insetAt[k - 1] + zi));
+    // the inset (the step's small work magnified beside the view): a sliver's box carried with its points
+    // (live/measure.py; a cluster's the player finds about its finest detail), drawn after the marks (its points
+    // are read off their circles)
+    insetDue = !!(st && st.z);
+    if (insetDue && S.insetAt[k - 1] !== undefined) for (var zi = 0; zi < 4; zi++) st.z[zi] = round2(num(S.insetAt[k - 1] + zi));
     // the player moves its view there itself: at once while the given is dragged, smoothly to a new step
     if (player.jump && atOnce) { player.jump(!!drag); return; }
     if (player.move) { player.move(); return; }

@@ -35,6 +35,7 @@ from typing import Any, Mapping, Sequence
 from .animate import STEP_SECONDS, group_css
 from .camera import PLAYER_FIGURE_PX
 from .captions import group_caption
+from .insets import inset_detail
 from .marks import MarkKind
 from .styles import PLAIN, Style
 from .svg import Drawing
@@ -126,6 +127,9 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         if inset is not None:  # a sliver or a cluster: its place magnified beside the view, its points lettered
             st["z"] = list(inset)
             st["zp"] = _inset_points(d, s.index, inset, points)
+            detail = inset_detail(scene, d.vp.px, d.vp.scale, s.index, inset)
+            if detail is not None:  # a cluster's: the page finds its finest detail anew where the points move
+                st["zd"] = detail
         steps.append(st)
     from .camera import ZOOM_LEVELS
 
@@ -496,14 +500,39 @@ li a.later{color:#bbb}
     }
     return e;
   }
-  // the inset: a sliver's place magnified beside the view (the step's box st.z, canvas px), its points where their
-  // circles stand (a live given moves them, and the box: render/live.py), lettered.  Not shown where it would
+  // the inset: a sliver's place magnified beside the view (the step's box st.z, canvas px; a cluster's about its
+  // finest detail: detail), its points where their circles stand (a live given moves them, and a sliver's box:
+  // render/live.py), lettered.  Not shown where it would
   // magnify no more than the view *view* shows anyway (a live given can grow the box so).
   var FIG = "{{ASPECT}}".split("/").map(Number);
+  function detail(st) {  // a cluster's box about its finest detail where the points stand now (insets.inset_detail)
+    var zd = st.zd, fine = Infinity, at = null, pts = [], i, j;
+    zd[1].forEach(function (cr) {  // a circle or arc the step strikes: its radius
+      var c = find(cr[0]), m = find(cr[1]);
+      if (!c || !m) { return; }
+      var r = m.tagName === "circle" ? +m.getAttribute("r") : +(m.getAttribute("d").match(/-?[0-9.]+(?:e[-+]?[0-9]+)?/g) || [])[2];
+      if (r < fine) { fine = r; at = [+c.getAttribute("cx"), +c.getAttribute("cy")]; }
+    });
+    zd[0].forEach(function (id) {  // the points, read to 0.1 px
+      var e = find(id);
+      if (e) { pts.push([Math.round(10 * e.getAttribute("cx")) / 10, Math.round(10 * e.getAttribute("cy")) / 10]); }
+    });
+    for (i = 0; i < pts.length; i++) {
+      for (j = i + 1; j < pts.length; j++) {
+        var d = Math.hypot(pts[i][0] - pts[j][0], pts[i][1] - pts[j][1]);
+        if (d > 0 && d < fine) { fine = d; at = [(pts[i][0] + pts[j][0]) / 2, (pts[i][1] + pts[j][1]) / 2]; }
+      }
+    }
+    var z0 = st.z0 || (st.z0 = st.z.slice());
+    if (!at) { return z0; }
+    var w = z0[2] * fine / zd[2], h = z0[3] * fine / zd[2], r2 = function (x) { return Math.round(100 * x) / 100; };
+    return [r2(at[0] - w / 2), r2(at[1] - h / 2), r2(w), r2(h)];
+  }
   function drawInset(view) {
     var inset = document.getElementById("inset"), ibox = document.getElementById("insetbox");
     if (!inset) { return; }
     var st = k > 0 ? data.steps[k - 1] : null, z = st && zoom.checked && k < n ? st.z : null;
+    if (z && st.zd) { z = st.z = detail(st); }
     if (z && Math.min(300 / z[2], 210 / z[3]) <= Math.min(FIG[0] / view[2], FIG[1] / view[3])) { z = null; }
     inset.style.display = z ? "block" : "none";
     ibox.setAttribute("visibility", z ? "visible" : "hidden");

@@ -95,7 +95,7 @@ def drawn_numbers(page: str) -> tuple[list[tuple[str, str, str]], list[float], d
                 keys.append(("#ring", str(i), "# #"))
                 nums.extend(float(x) for x in st["r"][:2])
         for i, st in enumerate(data["steps"]):  # the box a step's inset magnifies
-            if "z" in st and "views" in data:
+            if "z" in st and "zd" not in st and "views" in data:  # (a cluster's: the page finds it anew)
                 keys.append(("#inset", str(i), "# # # #"))
                 nums.extend(float(x) for x in st["z"])
 

@@ -40,9 +40,10 @@ page says so).  Readings of the figure (an angle to the minute) are written as r
 An area's hatching is drawn anew with its outline, as the drawing hatches it (:func:`construct.render.paths.
 hatch_segments`: the player's data says its spacing and each area's angle); a signed area's (its pieces' angle
 turns with their sign) holds the built value's numbers and is shown at the book's values alone.  The inset (a
-step's small work magnified beside the view) follows the given: its box carried with its points
-(:class:`construct.live.Measure`), its points drawn where their circles stand; where the box has grown until it
-magnifies no more than the view, it is not shown.
+step's small work magnified beside the view) follows the given: a cluster's box is found anew by the player
+about the step's finest detail (:func:`construct.render.insets.inset_detail`), a sliver's is swept, carried
+with its points (:class:`construct.live.Measure`); its points are drawn where their circles stand; where the
+box has grown until it magnifies no more than the view, it is not shown.
 
 The script exposes ``window.constructLive``: ``set(value)`` moves the first
 given (``set(value, true)``: as a drag draws it; ``set(value, dragging,

@@ -500,10 +500,10 @@ li a.later{color:#bbb}
     }
     return e;
   }
-  // the inset: a sliver's place magnified beside the view (the step's box st.z, canvas px; a cluster's about its
+  // the inset: a step's small work magnified beside the view (its box st.z, canvas px; a cluster's found about its
   // finest detail: detail), its points where their circles stand (a live given moves them, and a sliver's box:
-  // render/live.py), lettered.  Not shown where it would
-  // magnify no more than the view *view* shows anyway (a live given can grow the box so).
+  // render/live.py), lettered.  Not shown where it would magnify no more than the view *view* shows anyway (a
+  // live given can grow a sliver's box so).
   var FIG = "{{ASPECT}}".split("/").map(Number);
   function detail(st) {  // a cluster's box about its finest detail where the points stand now (insets.inset_detail)
     var zd = st.zd, fine = Infinity, at = null, pts = [], i, j;

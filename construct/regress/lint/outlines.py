@@ -136,7 +136,7 @@ def polylines(tag: str, e: ET.Element, where: str) -> list[list[tuple[float, flo
         return plain
     out: list[list[tuple[float, float]]] = []
     cur: list[tuple[float, float]] = []
-    for seg in parse_path(e.get("d", ""), where):
+    for seg in parse_path(d, where):
         op = seg[0]
         if op == "M":
             if len(cur) > 1:

@@ -466,6 +466,11 @@ class LiveSweep:
     #: value over this sweep (its form changes across the domain: :meth:`construct.live.Measure.furniture_keeps_form`);
     #: it follows the given else.
     furniture_held: bool = False
+    #: The ids of the end state's furniture elements shown at the book's value alone where the rest of it follows
+    #: the given (its items that come and go over the domain, a scale's ticks: :attr:`construct.live.Measure.hidden_items`),
+    #: and the page's note that says which (:meth:`construct.live.Measure.hidden_note`).
+    furniture_hidden: list[str] = field(default_factory=list)
+    furniture_note: str = ""
     #: The texts of :attr:`readings` at every grid value (the page writes the nearer grid value's).
     reading_texts: dict[str, list[str]] = field(default_factory=dict)
     #: Givens that follow from this one and that the texts write (DERIVED_WRITTEN): name -> value at each grid
@@ -516,9 +521,12 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     share = (hi - lo) / math.log10(whole.high / whole.low)
     scan = np.unique(np.clip(10.0 ** np.append(np.linspace(lo, hi, max(3, round(FORM_SCAN * share))),
                                                math.log10(initial)), domain.low, domain.high))
-    measure.furniture_live = not measure.end_held and (not measure.held[0] or measure.furniture_keeps_form(
+    # -- item by item: the items that come and go over them (a scale's ticks) held, the rest swept
+    kept = frozenset() if measure.end_held or not measure.held[0] else measure.furniture_kept(
         protocol, protocol.replay(construction.given_sweep(dict(figure.replay.givens), given, scan, protocol.params)),
-        len(scan)))
+        len(scan))
+    measure.furniture_live = not measure.end_held and kept is not None
+    measure.hidden_items = kept or frozenset()
     us = list(np.linspace(lo, hi, start))
     values = lambda u: np.clip(10.0 ** np.asarray(u), domain.low, domain.high)  # noqa: E731
     # each value's numbers as one array, made once (every cell it bounds reads them)
@@ -616,6 +624,8 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
                      fit=np.asarray([data[u][2] for u in us], dtype=np.float32).astype(float),
                      label_px=float(style.label_size), live=live, areas=measure.areas, end_held=measure.end_held,
                      furniture_held=not measure.furniture_live and not measure.end_held and bool(measure.held[0]),
+                     furniture_hidden=measure.hidden_ids if measure.furniture_live else [],
+                     furniture_note=measure.hidden_note(symbol) if measure.furniture_live else "",
                      reading_texts={i: [data[u][3].get(i, "") for u in us] for i in varying},
                      whole=whole if piece is not None else None)
     swept = construction.given_sweep(dict(figure.replay.givens), given, grid, protocol.params)

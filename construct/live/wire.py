@@ -335,6 +335,8 @@ def live_data(live: LiveSweep) -> dict[str, Any]:
             **({"readings": live.readings} if live.readings else {}),
             **({"end_held": True} if live.end_held else {}),
             **({"furniture_held": True} if live.furniture_held else {}),
+            **({"furniture_hidden": live.furniture_hidden} if live.furniture_hidden else {}),
+            **({"furniture_note": live.furniture_note} if live.furniture_note else {}),
             **encode(live), "bound": round(live.bound + QUANTUM_PX / 2, 3),
             "meta_z": deflated(meta), "checks_z": deflated(_check_table(live))}
 

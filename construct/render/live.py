@@ -34,9 +34,9 @@ room again.  Nothing waits for the slider to be let go (``change``), which
 only sets the letters' exact scale and glides the camera to the step's
 view.  The end state (the last step drawn as the book's plate) follows too: its own
 marks are swept as the rest (:meth:`construct.render.sweepdraw.SweepDrawing`), and the plate's furniture there
-(its dimensions, lettering and added lines) where it keeps its form over the domain
-(:meth:`construct.live.Measure.furniture_keeps_form`; elsewhere it is shown at the book's values alone and the
-page says so).  Readings of the figure (an angle to the minute) are written as read at the nearer grid value.
+(its dimensions, lettering and added lines) item by item: an item the plate draws at every value of the domain
+follows the given, one that comes and goes (a scale's ticks: :meth:`construct.live.Measure.furniture_kept`) is
+shown at the book's values alone, and the page says which (a plate of panels is held whole).  Readings of the figure (an angle to the minute) are written as read at the nearer grid value.
 An area's hatching is drawn anew with its outline, as the drawing hatches it (:func:`construct.render.paths.
 hatch_segments`: the player's data says its spacing and each area's angle); a signed area's (its pieces' angle
 turns with their sign) and the inset (a sliver's place magnified beside the view) hold the built value's numbers
@@ -802,8 +802,19 @@ LIVE_SCRIPT = r"""
     for (var fi = 0; fi < endFurniture.length; fi++) {
       var fs = furnitureShown ? "" : "none"; if (endFurniture[fi].style.display !== fs) endFurniture[fi].style.display = fs;
     }
-    var noted = atBook || !(S.L.end_held || S.L.furniture_held);
+    // (or only its items that come and go over the domain, a scale's ticks: live/measure.py hidden_items; the
+    // rest follows the given, and the page says which)
+    var hid = S.L.furniture_hidden || [];
+    for (var hj = 0; hj < hid.length; hj++) {
+      var he = document.getElementById(hid[hj]), hs = atBook ? "" : "none";
+      if (he && he.style.display !== hs) he.style.display = hs;
+    }
+    var noted = atBook || !(S.L.end_held || S.L.furniture_held || S.L.furniture_note);
     if (endNote && endNote.hidden !== noted) endNote.hidden = noted;
+    if (endNote && !noted) {  // (each given's own: what of the plate comes and goes with it)
+      var said = S.L.furniture_note || endNote.getAttribute("data-held");
+      if (endNote.textContent !== said) endNote.textContent = said;
+    }
     for (var hi = 0; hi < hatches.length; hi++) {
       var hs = atBook ? "" : "none"; if (hatches[hi].style.display !== hs) hatches[hi].style.display = hs;
     }
@@ -991,16 +1002,18 @@ LIVE_SCRIPT = r"""
     HATCH = player ? player.data.hatch : null;
     endFurniture = Array.prototype.slice.call(svg.querySelectorAll("#furniture > g.fo"));
     svg.querySelectorAll("#furniture g.fo.end text").forEach(function(t){ if (/^L\s*=\s*[0-9]/.test(t.textContent)) endWritesRod = true; });
-    var held = LIST.filter(function(L){ return L.end_held || L.furniture_held; });
+    var held = LIST.filter(function(L){ return L.end_held || L.furniture_held || L.furniture_note; });
     if (player && player.data.end && held.length) {
       endNote = document.createElement("div");
       endNote.className = "live-end"; endNote.hidden = true; endNote.setAttribute("style", "color:#777;font-size:12px");
-      endNote.textContent = held[0].end_held ?
+      var wholly = LIST.filter(function(L){ return L.end_held || L.furniture_held; });
+      endNote.textContent = !wholly.length ? held[0].furniture_note : wholly[0].end_held ?
         "Der letzte Schritt zeigt das Bild der Tafel beim Buchwert; hier alle Linien der Konstruktion. / The last step " +
         "shows the plate’s look at the book’s value; here every line of the construction." :
-        "Der letzte Schritt zeigt Maße, Skala und Beschriftung der Tafel nur beim Buchwert von " + held[0].symbol +
+        "Der letzte Schritt zeigt Maße, Skala und Beschriftung der Tafel nur beim Buchwert von " + wholly[0].symbol +
         " (ihre Form ändert sich mit ihm). / The last step shows the plate’s dimensions, scale and lettering at the " +
-        "book’s value of " + held[0].symbol + " only (their form changes with it).";
+        "book’s value of " + wholly[0].symbol + " only (their form changes with it).";
+      endNote.setAttribute("data-held", endNote.textContent);
       var before = document.querySelector("#live .live-held");
       if (before) before.parentNode.insertBefore(endNote, before.nextSibling);
     }

@@ -1155,3 +1155,70 @@ def test_the_end_step_frames_what_it_draws_where_the_plates_furniture_is_held(br
     assert max(abs(a - b) for a, b in zip(page.evaluate(view), built)) <= 0.01, (page.evaluate(view), built)
     assert not errors, errors
     page.close()
+
+
+#: The furniture of an end state as the page shows it: each element's id, tag, text, numbers and whether it is shown.
+_FURNITURE = """() => Array.from(document.querySelectorAll('#furniture > g.fo.end > [id]')).map(e => [e.id, e.tagName,
+    e.tagName === 'text' ? e.textContent : '',
+    ['x1', 'y1', 'x2', 'y2', 'cx', 'cy', 'r', 'd', 'x', 'y'].map(a => e.getAttribute(a) || '').join(' '),
+    e.getClientRects().length > 0 && getComputedStyle(e).display !== 'none'])"""
+
+
+def _set_off(elements: list[tuple[str, str]]) -> tuple[list[int], set[int]]:
+    """Of a furniture's elements ((id, tag), in the order drawn): the indices of all but the leaders (a lettering
+    set off from its place, ``fin-f`` lines: render/end_state.py end_furniture), and of the texts set off so."""
+    kept, off, led = [], set(), False
+    for i, (ident, tag) in enumerate(elements):
+        if tag == "line" and ident.startswith("fin-f"):
+            led = True
+            continue
+        if tag == "text" and led:
+            off.add(len(kept))
+        elif tag != "text":
+            led = False
+        kept.append(i)
+    return kept, off
+
+
+@pytest.mark.parametrize("name,params", [
+    ("tangential-pressure", {"rod_ratio": 5.0, "parts": 18, "kappa": 8.0}),
+    ("effective-work", {"rod_ratio": 5.0, "parts": 9, "kappa": 8.0})])
+def test_the_plates_letters_and_lines_follow_kappa_and_only_the_scales_ticks_that_come_and_go_are_held(
+        browser, name, params):
+    """Baumann's force scale gains or loses ticks with the diagram's height (kappa), so the plate's furniture in
+    the end state changes its form over kappa's domain: only what comes and goes (the ticks) follows the plate's
+    form at the nearer grid value.  At kappa = 2 and 30, dragged there with ``input`` events, the page shows the
+    elements a fresh build at that kappa draws -- every letter (M, A, B, D, alpha, the scale's numbers and unit)
+    and line, in the same order -- each within 0.5 px of where that build puts it (a letter the fresh build sets
+    off with a leader, where the page keeps the book's value's place for it, only by its text), and the page's
+    note says which of the plate's items come and go."""
+    path = REPO / "gallery" / entry_slug(name, params) / "teaching" / "player.html"
+    if not path.is_file():
+        pytest.skip("no committed gallery in this checkout")
+    c = get(name)
+    page, errors = _open(browser, path)
+    _at(page, "end")
+    for v in (2.0, 30.0):
+        for u in np.geomspace(8.0, v, 8)[1:]:  # (a drag there)
+            _drag_to(page, "kappa", float(u))
+        shown = [g for g in page.evaluate(_FURNITURE) if g[4]]
+        fresh = [e for e in _fresh_svg(c, params, "kappa", v).iter() if (e.get("id") or "").startswith("fin-")]
+        mine, _ = _set_off([(g[0], g[1].lower()) for g in shown])
+        theirs, off = _set_off([(e.get("id"), e.tag.rsplit("}", 1)[-1]) for e in fresh])
+        shown, fresh = [shown[i] for i in mine], [fresh[i] for i in theirs]
+        # the same elements, in the order drawn: the letters by their texts
+        assert [(g[1].lower(), g[2]) for g in shown] == [(e.tag.rsplit("}", 1)[-1], "".join(e.itertext()) if
+                                                          e.tag.endswith("text") else "") for e in fresh], v
+        assert {"B", "0", "2", "at"} <= {g[2] for g in shown}, v  # (and M, A, D, alpha on the tangential plate)
+        for j, (g, e) in enumerate(zip(shown, fresh)):
+            if j in off:
+                continue
+            nums = [float(x) for x in NUMBER.findall(g[3])]
+            want = _numbers(e, ("x1", "y1", "x2", "y2", "cx", "cy", "r", "d", "x", "y"))
+            assert len(nums) == len(want) and max(abs(a - b) for a, b in zip(nums, want)) <= 0.5, (v, g, want)
+    note = page.locator("#live .live-end")
+    assert note.is_visible() and "„3“, „4“ und 2 Striche der Tafel nur, wo" in note.inner_text()
+    _drag_to(page, "kappa", 8.0)
+    assert not note.is_visible() and all(g[4] for g in page.evaluate(_FURNITURE))
+    assert not errors, errors
+    page.close()

@@ -130,8 +130,8 @@ class Measure:
         #: each built furniture element's item: {its id: the item's index in the built furniture}
         self.owners: dict[str, int] = {}
         self.held = self._furniture(scene.end_furniture, drawing.vp, owners=self.owners)
-        #: the built furniture's items that come and go over the sweep (a scale's ticks): held at the built numbers
-        #: and shown at the book's values alone (:meth:`furniture_kept`), by their index; the rest follows the given
+        #: the built furniture's items that come and go over the sweep (a scale's ticks), by their index
+        #: (:meth:`furniture_kept`): shown where the nearer grid value's plate has them; the rest follows the given
         self.hidden_items: frozenset[int] = frozenset()
         #: the texts of the items some value of the sweep draws that the built furniture has not (a scale's tick
         #: more): the page has no element for them (:meth:`furniture_kept`; said in :meth:`hidden_note`)
@@ -191,33 +191,25 @@ class Measure:
                    owners: dict[str, int] | None = None) -> tuple[list, list[float], dict[str, str]]:
         """The end state's furniture *items* (the plate's, on the sheet's broken axis) drawn on *vp* (anything with
         ``px`` and ``scale``): its keys, numbers and texts (:func:`~construct.render.end_state.furniture_numbers`).
-        Another value's furniture is drawn in the built one's form (:meth:`_aligned`), the items that come and go
-        (:attr:`hidden_items`) at the built numbers."""
+        Another value's furniture is drawn in the built one's form (:meth:`_aligned`): a built item it lacks (a
+        scale's tick) drawn where the built figure has it, on this value's axes, and named among the texts as
+        ``"#absent"`` (its elements' ids: the page hides them there)."""
         if self.end is None or not items:
             return [], [], {}
+        absent: frozenset[int] = frozenset()
         if owners is None:  # (another value's)
-            items = self._aligned(items)
+            items, absent = self._aligned(items)
+        own: dict[str, int] = {} if owners is None else owners
         sheet = SimpleNamespace(end_furniture=items)
-        got = furniture_numbers(end_furniture(sheet, self.style, vp, self.end, self.placing, NUMBERS, owners),
-                                exact=exact)
-        if owners is None and self.hidden_items and got[0] == self.held[0]:
-            return got[0], list(np.where(self._held_mask, self.held[1], got[1])), got[2]
-        return got
-
-    @property
-    def _held_mask(self) -> np.ndarray:
-        """Which of the built furniture's numbers are the hidden items' (:attr:`hidden_items`)."""
-        hidden = {i for i, k in self.owners.items() if k in self.hidden_items}
-        return np.asarray([k[0] in hidden for k in self.held[0] for _ in range(k[2].count("#"))], dtype=bool)
-
-    @property
-    def hidden_ids(self) -> list[str]:
-        """The ids of the elements of the hidden items (:attr:`hidden_items`), in the order drawn."""
-        return [i for i, k in self.owners.items() if k in self.hidden_items]
+        keys, nums, texts = furniture_numbers(end_furniture(sheet, self.style, vp, self.end, self.placing, NUMBERS,
+                                                            own), exact=exact)
+        if absent:
+            texts["#absent"] = " ".join(i for i, k in own.items() if k in absent)
+        return keys, nums, texts
 
     def hidden_note(self, symbol: str) -> str:
-        """The page's note on the hidden items (:attr:`hidden_items`), German / English, or "" without any: what
-        of the plate the last step shows at the book's value of *symbol* alone.
+        """The page's note on the items that come and go (:attr:`hidden_items`) with *symbol*, German / English, or
+        "" without any: what of the plate the last step shows only where the plate has it.
 
         (A scale's ticks and numbers: "„3“, „4“ und 2 Striche" / "“3”, “4” and 2 strokes".)"""
         items = [self._items[i] for i in sorted(self.hidden_items)]
@@ -234,16 +226,18 @@ class Measure:
                                                    if lines else "")
         en = ", ".join(f"“{t}”" for t in texts) + (f" and {lines} strokes" if lines > 1 else " and a stroke"
                                                    if lines else "")
-        return (f"Der letzte Schritt zeigt von der Tafel {de.removeprefix(' und ')} nur beim Buchwert von {symbol} "
-                f"(sie kommen und gehen mit ihm); alles andere folgt {symbol}{';' + more[0] if more[0] else ''}. / "
-                f"The last step shows the plate’s {en.removeprefix(' and ')} at the book’s value of {symbol} only "
-                f"(they come and go with it); everything else follows {symbol}{';' + more[1] if more[1] else ''}.")
+        return (f"Im letzten Schritt stehen {de.removeprefix(' und ')} der Tafel nur, wo die Tafel sie beim nächsten "
+                f"berechneten Wert von {symbol} hat (sie kommen und gehen mit {symbol}); alles andere folgt {symbol}"
+                f"{';' + more[0] if more[0] else ''}. / In the last step the plate’s {en.removeprefix(' and ')} "
+                f"stand only where the plate has them at the nearest computed value of {symbol} (they come and go "
+                f"with {symbol}); everything else follows {symbol}{';' + more[1] if more[1] else ''}.")
 
-    def _aligned(self, items: tuple) -> tuple:
+    def _aligned(self, items: tuple) -> tuple[tuple, frozenset[int]]:
         """Another value's furniture *items* in the built one's form: each built item where that value has it
-        (:func:`_matched`), the built item where it has not (a hidden one, held at the built numbers)."""
+        (:func:`_matched`), the built item where it has not; and the built items it has not, by their index."""
         at = _matched(self._items, items)
-        return tuple(items[at[i]] if i in at else it for i, it in enumerate(self._items))
+        return (tuple(items[at[i]] if i in at else it for i, it in enumerate(self._items)),
+                frozenset(range(len(self._items))) - set(at))
 
     def furniture_kept(self, protocol: Any, replay: Any, size: int) -> frozenset[int] | None:
         """The built furniture's items that some value of the sweep *replay* of *protocol* lacks (a scale's

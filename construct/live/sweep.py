@@ -466,10 +466,11 @@ class LiveSweep:
     #: value over this sweep (its form changes across the domain: :meth:`construct.live.Measure.furniture_keeps_form`);
     #: it follows the given else.
     furniture_held: bool = False
-    #: The ids of the end state's furniture elements shown at the book's value alone where the rest of it follows
-    #: the given (its items that come and go over the domain, a scale's ticks: :attr:`construct.live.Measure.hidden_items`),
-    #: and the page's note that says which (:meth:`construct.live.Measure.hidden_note`).
-    furniture_hidden: list[str] = field(default_factory=list)
+    #: The end state's furniture elements of the items that come and go over the domain (a scale's ticks:
+    #: :attr:`construct.live.Measure.hidden_items`), by id: at each grid value 1 where its plate lacks them (the
+    #: page hides them where the nearer grid value's plate does); and the page's note that says which
+    #: (:meth:`construct.live.Measure.hidden_note`).
+    furniture_absent: dict[str, list[int]] = field(default_factory=dict)
     furniture_note: str = ""
     #: The texts of :attr:`readings` at every grid value (the page writes the nearer grid value's).
     reading_texts: dict[str, list[str]] = field(default_factory=dict)
@@ -614,6 +615,10 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     for texts in {id(data[u][3]): data[u][3] for u in us}.values():  # (most values share one dict of texts)
         for i, t in texts.items():
             said.setdefault(i, set()).add(t)
+    # (the furniture's items a value's plate lacks: "#absent", their elements' ids)
+    gone = [set(data[u][3].get("#absent", "").split()) for u in us]
+    absent = {i: [int(i in g) for g in gone] for i in sorted(set().union(*gone), key=lambda i: (len(i), i))}
+    said.pop("#absent", None)
     varying = sorted(i for i, ts in said.items() if len(ts) > 1 and not (rod and all(rod.match(t) for t in ts)))
     first = data[us[0]][0]
     snapped = [first[i] for i in sorted(snap) if i < len(first) and (len(forms) == 1 or first[i] in shared)]
@@ -624,7 +629,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
                      fit=np.asarray([data[u][2] for u in us], dtype=np.float32).astype(float),
                      label_px=float(style.label_size), live=live, areas=measure.areas, end_held=measure.end_held,
                      furniture_held=not measure.furniture_live and not measure.end_held and bool(measure.held[0]),
-                     furniture_hidden=measure.hidden_ids if measure.furniture_live else [],
+                     furniture_absent=absent,
                      furniture_note=measure.hidden_note(symbol) if measure.furniture_live else "",
                      reading_texts={i: [data[u][3].get(i, "") for u in us] for i in varying},
                      whole=whole if piece is not None else None)

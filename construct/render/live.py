@@ -194,7 +194,7 @@ LIVE_SCRIPT = r"""
     return new Response(stream).arrayBuffer();
   }
   function json(b){ return JSON.parse(new TextDecoder().decode(b)); }
-  var player = null, S = null, cur = null, sweeps = [], followers = [], readings = [], lines = [];
+  var player = null, S = null, cur = null, sweeps = [], followers = [], readings = [], absent = [], lines = [];
   var VIEWS = "zooms", IDX = "z";
   // ---- one given's data: every drawn number at every grid value ---------------------------------------------
   function Sweep(L){
@@ -802,13 +802,6 @@ LIVE_SCRIPT = r"""
     for (var fi = 0; fi < endFurniture.length; fi++) {
       var fs = furnitureShown ? "" : "none"; if (endFurniture[fi].style.display !== fs) endFurniture[fi].style.display = fs;
     }
-    // (or only its items that come and go over the domain, a scale's ticks: live/measure.py hidden_items; the
-    // rest follows the given, and the page says which)
-    var hid = S.L.furniture_hidden || [];
-    for (var hj = 0; hj < hid.length; hj++) {
-      var he = document.getElementById(hid[hj]), hs = atBook ? "" : "none";
-      if (he && he.style.display !== hs) he.style.display = hs;
-    }
     var noted = atBook || !(S.L.end_held || S.L.furniture_held || S.L.furniture_note);
     if (endNote && endNote.hidden !== noted) endNote.hidden = noted;
     if (endNote && !noted) {  // (each given's own: what of the plate comes and goes with it)
@@ -836,6 +829,12 @@ LIVE_SCRIPT = r"""
     for (var j = 0; j < readings.length; j++) {
       var rd = readings[j], said = rd.L === S.L ? rd.texts[near] : rd.L.given !== S.L.given ? rd.built : null;
       if (said) for (var rj = 0; rj < rd.els.length; rj++) setText(rd.els[rj], said);
+    }
+    // the plate's items that come and go with the given (a scale's ticks: live/measure.py Measure._furniture):
+    // shown where the nearer grid value's plate has them
+    for (var aj = 0; aj < absent.length; aj++) {
+      var ab = S.L.absent[absent[aj].id], as = ab && ab[near] ? "none" : "";
+      if (absent[aj].el.style.display !== as) absent[aj].el.style.display = as;
     }
     declutter();
     api.value = value; api.given = S.L.given;
@@ -988,7 +987,7 @@ LIVE_SCRIPT = r"""
     var W = new Sweep(L);
     return inflate(L.meta_z).then(function(b){
       var m = json(b);
-      L.grid = m.grid; L.keys = m.keys; L.flags = m.flags; L.jumps = m.jumps; L.reading_texts = m.readings || {};
+      L.grid = m.grid; L.keys = m.keys; L.flags = m.flags; L.jumps = m.jumps; L.reading_texts = m.readings || {}; L.absent = m.absent || {};
       return L.checks_z ? inflate(L.checks_z) : null;
     }).then(function(b){
       if (b) { var c = json(b); L.check_names = c.check_names; L.check_values = c.check_values; L.checks = c.checks; }
@@ -1055,6 +1054,9 @@ LIVE_SCRIPT = r"""
       if (!rodSpots[+r[0]]) rodSpots[+r[0]] = [+r[1], +r[2], r[3]]; });
     svg.querySelectorAll("#furniture .brk, #furniture .brkline, #furniture .rodlen").forEach(function(e){ e.parentNode.removeChild(e); });
     // (each reading's texts: its letter's, and its halo's in its group; a text of runs, P_b, keeps its runs)
+    LIST.forEach(function(L){ Object.keys(L.absent).forEach(function(id){
+      var el = document.getElementById(id);
+      if (el && !absent.some(function(a){ return a.id === id; })) absent.push({id: id, el: el}); }); });
     LIST.forEach(function(L){ (L.readings || []).forEach(function(id){
       var t = player && player.find ? player.find(id) : document.getElementById(id), g = t && t.closest("g.lbg");
       var els = (g ? Array.prototype.slice.call(g.querySelectorAll("text")) : t ? [t] : [])

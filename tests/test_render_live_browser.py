@@ -1116,14 +1116,18 @@ def test_the_rod_length_stands_on_a_break_the_shown_step_draws(browser):
     page.close()
 
 
-def test_the_end_step_frames_what_it_draws_where_the_plates_furniture_is_held(browser):
+def test_the_end_step_frames_what_it_draws_as_kappa_moves(browser):
     """The committed gallery's tangential-pressure diagram (kappa = 8) at its last step: its plate's furniture
-    (the scale, M, alpha) changes its form with kappa and is shown at the book's value alone.  Let go at kappa = 2
-    the camera frames the flat diagram the end state draws across the window (it stood across 56 % of it, in
-    the view the book's value made with room for the furniture); a drag started there or at the book's value
-    does not move the camera off what it frames at its first step, and back at the book's value the view is the
-    built one."""
-    path = REPO / "gallery" / "tangential-pressure-kappa-8-parts-18-rod-ratio-5" / "teaching" / "player.html"
+    (the scale, M, alpha) follows kappa, and the end step's view is carried with the figure the end state draws
+    (as the camera frames it: camera.final_box).  Let go at kappa = 2 the camera frames the flat diagram as a
+    fresh build at kappa = 2 does (within 1 px: the view carried with the end step's own few marks, the excess
+    area, grew to 1.4 times that frame, the diagram across 56 % of the window), and back at the book's value the
+    view is the built one (within 1.5 px)."""
+    from construct.render.output import scene_for
+    from construct.render.svg import Drawing
+
+    params = {"rod_ratio": 5.0, "parts": 18, "kappa": 8.0}
+    path = REPO / "gallery" / entry_slug("tangential-pressure", params) / "teaching" / "player.html"
     if not path.is_file():
         pytest.skip("no committed gallery in this checkout")
     page, errors = _open(browser, path)
@@ -1132,27 +1136,18 @@ def test_the_end_step_frames_what_it_draws_where_the_plates_furniture_is_held(br
     view = "() => window.constructPlayer.view()"
     let_go = """() => { document.querySelector('#live input[name="kappa"]').dispatchEvent(new Event('change'));
         window.constructPlayer.jump(false); }"""
-    # the share of the window's width the points the page shows take
-    width = """() => { const w = document.getElementById('figure').getBoundingClientRect();
-        const xs = Array.from(document.querySelectorAll('#figure circle.pt')).filter(c => c.getClientRects().length
-          && getComputedStyle(c).display !== 'none').flatMap(c => { const r = c.getBoundingClientRect(); return [r.left, r.right]; });
-        return (Math.max(...xs) - Math.min(...xs)) / w.width; }"""
-    built, book_width = page.evaluate(view), page.evaluate(width)
-    _drag_to(page, "kappa", 7.9)
-    assert page.evaluate(view) == built  # (a drag from the book's value: the camera holds)
-    for v in np.geomspace(7.9, 2.0, 12)[1:]:
+    built = page.evaluate(view)
+    for v in np.geomspace(7.9, 2.0, 12):
         _drag_to(page, "kappa", float(v))
     page.evaluate(let_go)
-    at_two = page.evaluate(view)
-    assert page.evaluate(width) >= 0.8 and page.evaluate(width) >= 0.9 * book_width, (page.evaluate(width), book_width)
-    _drag_to(page, "kappa", 2.05)
-    # (a drag from there: the camera keeps what it framed in sight, taking at most the drag's room round it, a
-    # tenth of its size -- the hold rule's first step from a let-go view, player.py ahead -- not the book's view)
-    now = page.evaluate(view)
-    assert now[0] <= at_two[0] and now[1] <= at_two[1] and now[2] <= 1.11 * at_two[2], (now, at_two)
+    c = get("tangential-pressure")
+    fresh = Drawing(scene_for(c, c.figure(**{**params, "kappa": 2.0}), ending=True), STYLES["teaching"])
+    want = fresh.camera_view(fresh.scene.steps[-1].index)
+    assert max(abs(a - b) for a, b in zip(page.evaluate(view), want)) <= 1.0, (page.evaluate(view), want)
     _drag_to(page, "kappa", 8.0)
     page.evaluate(let_go)
-    assert max(abs(a - b) for a, b in zip(page.evaluate(view), built)) <= 0.01, (page.evaluate(view), built)
+    # (the views are blended between grid values, not refined for: the book's value is no grid value here)
+    assert max(abs(a - b) for a, b in zip(page.evaluate(view), built)) <= 1.5, (page.evaluate(view), built)
     assert not errors, errors
     page.close()
 

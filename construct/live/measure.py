@@ -96,11 +96,15 @@ class Measure:
             if j >= 0:
                 shows[j].add(k)
         self.framed = [[m.id for m in scene.marks if m.step in ks] for ks in shows]
-        if scene.ending and len(self.view_of) > 1 and self.view_of[-1] >= 0 and not self.framed[self.view_of[-1]]:
+        if scene.ending and len(self.view_of) > 1 and self.view_of[-1] >= 0 and (
+                not self.framed[self.view_of[-1]] or (scene.end_furniture and self.view_of.count(self.view_of[-1]) == 1)):
             # a last step that only reads a value off the figure (piston-force's planimeter) has no marks of its
             # own, and a view carried with nothing became the whole canvas: the finished figure a patch in its
             # corner at every value.  Its view frames the end state (camera.final_box): carried with its marks
-            # (the marks a sweep draws: the end state's own, end_marks, are not boxed by it)
+            # (the marks a sweep draws: the end state's own, end_marks, are not boxed by it) -- as it is where the
+            # end state has the plate's furniture (which the camera frames with the figure: a view carried with
+            # the last step's few marks, Baumann's excess area, grew to 1.4 times the frame of a fresh build as
+            # kappa went to 2, the diagram across 56 % of the window)
             self.framed[self.view_of[-1]] = [m.id for m in scene.marks if scene.in_end(m) and scene.end_shows(m)]
         self.views = list(distinct)
         for j, ids in enumerate(self.framed):

@@ -10,8 +10,6 @@ outlines (matplotlib's TextPath), not against the code's output.
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 
 import pytest
 
@@ -362,24 +360,20 @@ def test_bad_input_is_a_typed_error(tmp_path):
         lint_path(tmp_path / "x.svg")
 
 
-def _cli(*args: str) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "construct", "lint", *args], capture_output=True, text=True,
-                          timeout=300)
-
-
-def test_the_command_exits_0_clean_1_findings_2_bad_input(tmp_path):
+def test_the_command_exits_0_clean_1_findings_2_bad_input(tmp_path, cli):
+    # in this process (construct.cli.main, what `python -m construct` runs): the exit codes are main's
     clean, dirty = tmp_path / "clean.svg", tmp_path / "dirty.svg"
     clean.write_text(svg(label("A", 300, 300, "a")))
     dirty.write_text(svg(label("K6", 300, 300, "a") + label("K7", 302, 300, "b")))
-    ok = _cli(str(clean))
-    assert ok.returncode == 0 and "no findings" in ok.stdout
-    bad = _cli(str(dirty))
-    assert bad.returncode == 1 and "dirty.svg: figure: overlap: label 'K6' (a) and label 'K7' (b)" in bad.stdout
-    data = json.loads(_cli(str(dirty), "--format", "json").stdout)
+    ok = cli("lint", clean)
+    assert ok.code == 0 and "no findings" in ok.out
+    bad = cli("lint", dirty)
+    assert bad.code == 1 and "dirty.svg: figure: overlap: label 'K6' (a) and label 'K7' (b)" in bad.out
+    data = json.loads(cli("lint", dirty, "--format", "json").out)
     assert data["totals"]["overlap"] == 1 and data["findings"][0]["labels"] == ["K6", "K7"]
-    for args in ((str(tmp_path / "nothing"),), (str(dirty), "--view", "wide")):
-        r = _cli(*args)
-        assert r.returncode == 2 and r.stdout == "" and len(r.stderr.strip().splitlines()) == 1
+    for args in ((tmp_path / "nothing",), (dirty, "--view", "wide")):
+        r = cli("lint", *args)
+        assert r.code == 2 and r.out == "" and len(r.err.strip().splitlines()) == 1
 
 
 def test_the_gallery_check_keeps_the_previous_gallery_when_asked(tmp_path):

@@ -236,10 +236,10 @@ def test_the_compiled_page_has_the_svg_plates_points_within_a_tenth_of_a_millime
     sp_per_mm = 65536 * 72.27 / 25.4
     marks = {m[1]: (int(m[2]) / sp_per_mm, int(m[3]) / sp_per_mm)
              for m in re.finditer(r"\\pgfsyspdfmark \{([^}]+)\}\{(-?\d+)\}\{(-?\d+)\}", aux)}
-    subprocess.run(["pdftoppm", "-r", "600", "-gray", "-png", "marks.pdf", "page"], cwd=tmp_path, check=True)
+    subprocess.run(["pdftoppm", "-r", "600", "-gray", "marks.pdf", "page"], cwd=tmp_path, check=True)
     from PIL import Image
 
-    page = np.asarray(Image.open(next(tmp_path.glob("page*.png"))))
+    page = np.asarray(Image.open(next(tmp_path.glob("page*.pgm"))))
     a4_height = 297.0
     for name, params in LATEX_PLATES:
         c = get(name)

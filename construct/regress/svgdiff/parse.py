@@ -95,8 +95,13 @@ def _local(tag: Any) -> tuple[str | None, str]:
 
 
 def _is_svg(elem: ET.Element) -> bool:
-    ns, _ = _local(elem.tag)
-    return ns in (None, SVG_NS)
+    return _svg_tag(elem.tag)
+
+
+@functools.lru_cache(maxsize=512)
+def _svg_tag(tag: Any) -> bool:
+    """Whether *tag* is SVG's (or has no namespace); cached like :func:`_local`: asked of every element."""
+    return _local(tag)[0] in (None, SVG_NS)
 
 
 def _attrs(elem: ET.Element) -> dict[str, str]:
@@ -174,6 +179,7 @@ class _State:
     style: dict[str, str]
     viewport: tuple[float, float]
     step: int | None = None  # from the nearest ancestor with data-step
+    items: tuple[tuple[str, str], ...] = ()  # style's items sorted: the key of a look, made once a style
 
 
 #: One level of the walk: the children still to visit, their inherited state, key prefix, key counters
@@ -198,14 +204,15 @@ class _Parser:
         self.root = root
         self.name = name
         self.ids: dict[str, ET.Element] = {}
-        for e in root.iter():
-            i = _attrs(e).get("id") if _is_svg(e) else None
-            if i is not None and i not in self.ids:
-                self.ids[i] = e
         self.rules: list[CssRule] = []
         self.stylesheet: list[tuple[str, tuple]] = []
-        for e in root.iter():
-            if _is_svg(e) and _local(e.tag)[1] == "style":
+        for e in root.iter():  # once over the tree: every element's id, every style sheet
+            if not _svg_tag(e.tag):
+                continue
+            i = e.get("id")  # what _attrs(e) names "id": only the attribute without a namespace
+            if i is not None and i not in self.ids:
+                self.ids[i] = e
+            if _local(e.tag)[1] == "style":
                 rules, canon = parse_css("".join(e.itertext()), len(self.rules))
                 self.rules.extend(rules)
                 self.stylesheet.extend(canon)
@@ -363,14 +370,18 @@ class _Parser:
         if "transform" in attrs:
             ctm = multiply(ctm, parse_transform(attrs["transform"], f"{self.name}: <{tag}> transform"))
         ctm = multiply(ctm, extra)
-        style = dict(parent.style)
-        for prop, value in self._own_style(elem, tag).items():
-            if value.strip().lower() == "inherit":
-                continue
-            if prop in GROUP_EFFECTS and prop in style:
-                style[prop] = self._combine(prop, style[prop], value)
-            else:
-                style[prop] = value
+        own = self._own_style(elem, tag)
+        style, items = parent.style, parent.items
+        if own:  # most elements style nothing themselves: they share their parent's dict, never changed after
+            style = dict(style)
+            for prop, value in own.items():
+                if value.strip().lower() == "inherit":
+                    continue
+                if prop in GROUP_EFFECTS and prop in style:
+                    style[prop] = self._combine(prop, style[prop], value)
+                else:
+                    style[prop] = value
+            items = tuple(sorted(style.items()))
         step = parent.step
         if "data-step" in attrs:
             try:
@@ -378,7 +389,7 @@ class _Parser:
             except ValueError:
                 raise SvgFormatError(f"{self.name}: <{tag}> data-step is not a step number: "
                                      f"{attrs['data-step']!r}") from None
-        return _State(ctm, style, parent.viewport, step)
+        return _State(ctm, style, parent.viewport, step, items)
 
     @staticmethod
     def _combine(prop: str, outer: str, inner: str) -> str:
@@ -398,7 +409,7 @@ class _Parser:
     def _effective_style(self, state: _State) -> tuple[tuple[str, Any], ...]:
         # Most elements of a drawing look alike: each look is worked out once and shared by them
         # (the time and the memory of a drawing of a million elements).
-        key = (tuple(sorted(state.style.items())), scale_factor(state.ctm))
+        key = (state.items, scale_factor(state.ctm))
         got = self._styles.get(key)
         if got is None:
             got = self._styles[key] = self._work_out_style(state)
@@ -459,7 +470,7 @@ class _Parser:
             child = next(children, None)
             if child is None:
                 stack.pop()
-            elif _is_svg(child):
+            elif _svg_tag(child.tag):
                 inner = self._walk(child, parent, prefix, counters, depth)
                 if inner is not None:
                     stack.append(inner)
@@ -527,7 +538,8 @@ class _Parser:
             return None
         x = self._length(attrs.get("x"), state.viewport[0], "x") if "x" in attrs else 0.0
         y = self._length(attrs.get("y"), state.viewport[1], "y") if "y" in attrs else 0.0
-        inner = _State(multiply(state.ctm, (1.0, 0.0, 0.0, 1.0, x, y)), state.style, state.viewport, state.step)
+        inner = _State(multiply(state.ctm, (1.0, 0.0, 0.0, 1.0, x, y)), state.style, state.viewport, state.step,
+                       state.items)
         ttag = _local(target.tag)[1]
         if ttag in ("symbol", "svg"):
             sym_attrs = dict(_attrs(target))
@@ -550,6 +562,8 @@ class _Parser:
         return None
 
     def _decorations(self, elem: ET.Element) -> tuple[tuple[Any, ...], tuple[tuple[str, str], ...]]:
+        if not len(elem):
+            return (), ()  # nearly every drawn element has no children
         animations, described = [], []
         for child in elem:
             if not _is_svg(child):
@@ -575,7 +589,8 @@ class _Parser:
             more_a, more_d = self._decorations(extra_source)
             animations, described = tuple(sorted(animations + more_a, key=show_value)), described + more_d
         style = self._effective_style(state)
-        classes = " ".join(sorted(set(self._attrs(elem).get("class", "").split())))
+        classes = self._attrs(elem).get("class", "")
+        classes = " ".join(sorted(set(classes.split()))) if classes else ""
         if classes:  # our renderer writes the instrument and provenance as classes
             key_style = (style, classes)
             got = self._classed.get(key_style)

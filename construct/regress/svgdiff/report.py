@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import Iterator
+from typing import Any, Iterator
 
 from ...kernel.errors import InvalidParameter
 from ..change import Change, Diff
@@ -39,10 +39,11 @@ def diff_drawings(da: Drawing, db: Drawing, tol: float, name_a: str, name_b: str
     pairs = match_shapes(da.shapes, db.shapes, tol, max(drawing_extent(da), drawing_extent(db)))
     by_a = {id(sa): (sb, how) for sa, sb, how in pairs}
     matched_b = {id(sb) for _, sb, _ in pairs}
+    looks: dict[tuple[int, int], tuple[tuple[str, ...], tuple[float, ...]]] = {}
     for sa in da.shapes:
         if id(sa) in by_a:
             sb, how = by_a[id(sa)]
-            changes += _compare(sa, sb, tol, how)
+            changes += _compare(sa, sb, tol, how, looks)
         else:
             changes.append(Change("missing", sa.key, f"{sa.kind} only in A{_where(sa)}", None, sa.kind,
                                   step=sa.step))
@@ -97,7 +98,14 @@ def _definition_changes(da: Drawing, db: Drawing, tol: float) -> list[Change]:
 
 # -- comparing one pair ----------------------------------------------------------------------------
 
-def _compare(x: Shape, y: Shape, tol: float, how: str) -> list[Change]:
+def _compare(x: Shape, y: Shape, tol: float, how: str,
+             looks: dict[tuple[int, int], tuple[tuple[str, ...], tuple[float, ...]]]) -> list[Change]:
+    """The changes from *x* to *y*; *looks* remembers the style differences of each pair of looks.
+
+    The parser shares one style tuple among the elements of one look, and both
+    drawings keep theirs alive while they are compared: a pair of tuples' ids
+    names the pair of looks, compared once however many elements have them.
+    """
     out: list[Change] = []
     key_b = y.key if y.key != x.key else None
 
@@ -122,7 +130,7 @@ def _compare(x: Shape, y: Shape, tol: float, how: str) -> list[Change]:
         ba, bb = bounding_box(x), bounding_box(y)
         add("reshaped", f"{what}; bounding box {raw_point(ba[:2])}..{raw_point(ba[2:])} -> {raw_point(bb[:2])}..{raw_point(bb[2:])}",
             max(abs(u - v) for u, v in zip(ba, bb)) if x.points and y.points else None)
-    else:
+    elif x.points != y.points or x.sizes != y.sizes:  # equal values (or the same NaN) move nothing
         moved = [(math.dist(p, q), name, p, q) for (name, p), (_, q) in zip(x.points, y.points)]
         if any(m[0] > tol for m in moved):
             add("moved", _movement(moved, tol), max(m[0] for m in moved))
@@ -132,7 +140,7 @@ def _compare(x: Shape, y: Shape, tol: float, how: str) -> list[Change]:
             more = f" ({len(resized)} sizes changed)" if len(resized) > 1 else ""
             add("resized", f"{name} {format_number(u)} -> {format_number(v)} (by {format_magnitude(d)}){more}", d)
     ang_a, ang_b = dict(x.angles), dict(y.angles)
-    for name in [n for n, _ in x.angles if n in ang_b]:
+    for name in [] if x.angles == y.angles else [n for n, _ in x.angles if n in ang_b]:  # equal: none turned
         delta = (ang_b[name] - ang_a[name] + 180.0) % 360.0 - 180.0
         if abs(delta) > tol:
             add("rotated", f"{name} {format_number(ang_a[name])} -> {format_number(ang_b[name])} degrees "
@@ -140,16 +148,10 @@ def _compare(x: Shape, y: Shape, tol: float, how: str) -> list[Change]:
                 abs(delta))
     if x.text != y.text:
         add("text", f"{x.text!r} -> {y.text!r}")
-    style_a, style_b = dict(x.style), dict(y.style)
-    diffs, mags = [], []
-    for prop in sorted(set(style_a) | set(style_b)):
-        va, vb = style_a.get(prop, INITIAL.get(prop)), style_b.get(prop, INITIAL.get(prop))
-        if va is None or vb is None or not values_close(va, vb, tol):
-            diffs.append(f"{prop} {show_value(va) if va is not None else '(unset)'} -> "
-                         f"{show_value(vb) if vb is not None else '(unset)'}")
-            nd = numeric_difference(va, vb)
-            if nd is not None:
-                mags.append(nd)
+    pair = (id(x.style), id(y.style))
+    if pair not in looks:
+        looks[pair] = _style_differences(x.style, y.style, tol)
+    diffs, mags = looks[pair]
     if diffs:
         add("restyled", "; ".join(diffs), max(mags) if mags else None)
     if not values_close(x.animations, y.animations, tol):
@@ -162,6 +164,22 @@ def _compare(x: Shape, y: Shape, tol: float, how: str) -> list[Change]:
         add("described", "; ".join(f"{k} {da.get(k)!r} -> {db.get(k)!r}" for k in ("title", "desc")
                                    if da.get(k) != db.get(k)))
     return out
+
+
+def _style_differences(x: tuple[tuple[str, Any], ...], y: tuple[tuple[str, Any], ...], tol: float
+                       ) -> tuple[tuple[str, ...], tuple[float, ...]]:
+    """What differs between two looks: one line and (where numeric) one magnitude per property."""
+    style_a, style_b = dict(x), dict(y)
+    diffs, mags = [], []
+    for prop in sorted(set(style_a) | set(style_b)):
+        va, vb = style_a.get(prop, INITIAL.get(prop)), style_b.get(prop, INITIAL.get(prop))
+        if va is None or vb is None or not values_close(va, vb, tol):
+            diffs.append(f"{prop} {show_value(va) if va is not None else '(unset)'} -> "
+                         f"{show_value(vb) if vb is not None else '(unset)'}")
+            nd = numeric_difference(va, vb)
+            if nd is not None:
+                mags.append(nd)
+    return tuple(diffs), tuple(mags)
 
 
 def _movement(moved: list[tuple[float, str, Point, Point]], tol: float) -> str:

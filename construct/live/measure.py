@@ -245,9 +245,11 @@ class Measure:
 
     def furniture_kept(self, protocol: Any, replay: Any, size: int) -> frozenset[int] | None:
         """The built furniture's items that some value of the sweep *replay* of *protocol* lacks (a scale's
-        ticks come and go with the diagram's height): held, the rest of the furniture swept (an element that
-        comes and goes would make the refinement split every cell about it, and each value there be drawn value
-        by value); None where the furniture cannot be matched item by item (a plate of panels): held whole."""
+        ticks come and go with the diagram's height): drawn at every value where the built plate has them and
+        shown where the nearer grid value's plate has them (an element that comes and goes would make the
+        refinement split every cell about it); the rest of the furniture swept.  None where the furniture cannot
+        be matched item by item (a plate of panels): held whole.  The texts of items some value adds that the
+        built plate lacks go to :attr:`added`."""
         if not self.held[0]:
             return frozenset()
         # (its items' kinds and what of them is drawn, matched item by item: a value where an item draws other
@@ -364,7 +366,7 @@ class Measure:
         furniture = {i: 0 for i, _ in runs if i.startswith("fin-")}
         fur_texts: list[dict[str, str]] = [{}] * size
         live = self.furniture_live
-        if furniture and live is None:  # (not asked: the items that come and go over these values held)
+        if furniture and live is None:  # (not asked: matched item by item over these values)
             kept = self.furniture_kept(protocol, replay, size)
             live = kept is not None
             self.hidden_items = kept or frozenset()

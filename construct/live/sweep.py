@@ -522,7 +522,8 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     share = (hi - lo) / math.log10(whole.high / whole.low)
     scan = np.unique(np.clip(10.0 ** np.append(np.linspace(lo, hi, max(3, round(FORM_SCAN * share))),
                                                math.log10(initial)), domain.low, domain.high))
-    # -- item by item: the items that come and go over them (a scale's ticks) held, the rest swept
+    # -- item by item: the items that come and go over them (a scale's ticks) shown where the nearer grid value's
+    # plate has them, the rest swept
     kept = frozenset() if measure.end_held or not measure.held[0] else measure.furniture_kept(
         protocol, protocol.replay(construction.given_sweep(dict(figure.replay.givens), given, scan, protocol.params)),
         len(scan))

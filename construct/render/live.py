@@ -36,7 +36,8 @@ view.  The end state (the last step drawn as the book's plate) follows too: its 
 marks are swept as the rest (:meth:`construct.render.sweepdraw.SweepDrawing`), and the plate's furniture there
 (its dimensions, lettering and added lines) item by item: an item the plate draws at every value of the domain
 follows the given, one that comes and goes (a scale's ticks: :meth:`construct.live.Measure.furniture_kept`) is
-shown at the book's values alone, and the page says which (a plate of panels is held whole).  Readings of the figure (an angle to the minute) are written as read at the nearer grid value.
+shown where the nearer grid value's plate has it, and the page says which (a plate of panels is held whole).
+Readings of the figure (an angle to the minute) are written as read at the nearer grid value.
 An area's hatching is drawn anew with its outline, as the drawing hatches it (:func:`construct.render.paths.
 hatch_segments`: the player's data says its spacing and each area's angle); a signed area's (its pieces' angle
 turns with their sign) and the inset (a sliver's place magnified beside the view) hold the built value's numbers

@@ -17,6 +17,7 @@ does not shrink its miss, instead of being refined down to :data:`MIN_CELL`.
 
 from __future__ import annotations
 
+import difflib
 import heapq
 import math
 from types import SimpleNamespace
@@ -29,8 +30,8 @@ from ..figure import Figure
 from ..render.camera import FINAL_CONTEXT, MAX_ZOOM, ZOOM_LEVELS, Framing, clip_view
 from ..render.end_state import NumbersFactory, end_furniture, furniture_numbers
 from ..render.output import scene_for
-from ..render.plate import plate_of, shifted, subscript_runs
 from ..render.insets import inset_detail
+from ..render.plate import Lettering, plain, plate_of, shifted, subscript_runs
 from ..render.player import inset_marks, player_html
 from ..render.scene import MarkKind, extreme_points, reading
 from ..render.sheet import break_shift
@@ -96,11 +97,15 @@ class Measure:
             if j >= 0:
                 shows[j].add(k)
         self.framed = [[m.id for m in scene.marks if m.step in ks] for ks in shows]
-        if scene.ending and len(self.view_of) > 1 and self.view_of[-1] >= 0 and not self.framed[self.view_of[-1]]:
+        if scene.ending and len(self.view_of) > 1 and self.view_of[-1] >= 0 and (
+                not self.framed[self.view_of[-1]] or (scene.end_furniture and self.view_of.count(self.view_of[-1]) == 1)):
             # a last step that only reads a value off the figure (piston-force's planimeter) has no marks of its
             # own, and a view carried with nothing became the whole canvas: the finished figure a patch in its
             # corner at every value.  Its view frames the end state (camera.final_box): carried with its marks
-            # (the marks a sweep draws: the end state's own, end_marks, are not boxed by it)
+            # (the marks a sweep draws: the end state's own, end_marks, are not boxed by it) -- as it is where the
+            # end state has the plate's furniture (which the camera frames with the figure: a view carried with
+            # the last step's few marks, Baumann's excess area, grew to 1.4 times the frame of a fresh build as
+            # kappa went to 2, the diagram across 56 % of the window)
             self.framed[self.view_of[-1]] = [m.id for m in scene.marks if scene.in_end(m) and scene.end_shows(m)]
         self.views = list(distinct)
         for j, ids in enumerate(self.framed):
@@ -135,7 +140,16 @@ class Measure:
         #: :attr:`furniture_live` (the sweep of a given over which it keeps its form: :meth:`furniture_keeps_form`),
         #: held at these numbers else (the page shows it at the book's values alone)
         self._built = built
-        self.held = self._furniture(scene.end_furniture, drawing.vp)
+        self._items = scene.end_furniture
+        #: each built furniture element's item: {its id: the item's index in the built furniture}
+        self.owners: dict[str, int] = {}
+        self.held = self._furniture(scene.end_furniture, drawing.vp, owners=self.owners)
+        #: the built furniture's items that come and go over the sweep (a scale's ticks), by their index
+        #: (:meth:`furniture_kept`): shown where the nearer grid value's plate has them; the rest follows the given
+        self.hidden_items: frozenset[int] = frozenset()
+        #: the texts of the items some value of the sweep draws that the built furniture has not (a scale's tick
+        #: more): the page has no element for them (:meth:`furniture_kept`; said in :meth:`hidden_note`)
+        self.added: list[str] = []
         #: (None: not asked -- a value measured alone draws its own furniture, a sweep asks over its values)
         self._furniture_live: bool | None = None
         # the marks' keys as this value's page has them: each mark's numbers are a run of them, the runs in the
@@ -187,30 +201,90 @@ class Measure:
         view = Framing(drawing.full_view, max_zoom=ZOOM_LEVELS[-1]).view(box, FINAL_CONTEXT, 1.0)
         return self.view_of[-1], view, box, ids
 
-    def _furniture(self, items: tuple, vp: Any, exact: bool = True) -> tuple[list, list[float], dict[str, str]]:
+    def _furniture(self, items: tuple, vp: Any, exact: bool = True,
+                   owners: dict[str, int] | None = None) -> tuple[list, list[float], dict[str, str]]:
         """The end state's furniture *items* (the plate's, on the sheet's broken axis) drawn on *vp* (anything with
-        ``px`` and ``scale``): its keys, numbers and texts (:func:`~construct.render.end_state.furniture_numbers`)."""
+        ``px`` and ``scale``): its keys, numbers and texts (:func:`~construct.render.end_state.furniture_numbers`).
+        Another value's furniture is drawn in the built one's form (:meth:`_aligned`): a built item it lacks (a
+        scale's tick) drawn where the built figure has it, on this value's axes, and named among the texts as
+        ``"#absent"`` (its elements' ids: the page hides them there)."""
         if self.end is None or not items:
             return [], [], {}
+        absent: frozenset[int] = frozenset()
+        if owners is None:  # (another value's)
+            items, absent = self._aligned(items)
+        own: dict[str, int] = {} if owners is None else owners
         sheet = SimpleNamespace(end_furniture=items)
-        return furniture_numbers(end_furniture(sheet, self.style, vp, self.end, self.placing, NUMBERS), exact=exact)
+        keys, nums, texts = furniture_numbers(end_furniture(sheet, self.style, vp, self.end, self.placing, NUMBERS,
+                                                            own), exact=exact)
+        if absent:
+            texts["#absent"] = " ".join(i for i, k in own.items() if k in absent)
+        return keys, nums, texts
 
-    def furniture_keeps_form(self, protocol: Any, replay: Any, size: int) -> bool:
-        """Whether the end state's furniture has the built figure's elements (the same keys) at every value of the
-        sweep *replay* of *protocol* (a scale's ticks come and go with the diagram's height, a plate's letters
-        with its choices): only then is it swept (:attr:`furniture_live`); an element that comes and goes would
-        make the refinement split every cell about it, and each value there be drawn value by value."""
+    def hidden_note(self, symbol: str) -> str:
+        """The page's note on the items that come and go (:attr:`hidden_items`) with *symbol*, German / English, or
+        "" without any: what of the plate the last step shows only where the plate has it.
+
+        (A scale's ticks and numbers: "„3“, „4“ und 2 Striche" / "“3”, “4” and 2 strokes".)"""
+        items = [self._items[i] for i in sorted(self.hidden_items)]
+        many = len(self.added) > 1
+        more = (" „" + "“, „".join(self.added) + f"“ (wo die Tafel {'sie' if many else 'es'} dazunähme) "
+                + ("fehlen" if many else "fehlt"), " “" + "”, “".join(self.added)
+                + f"” (where the plate would add {'them' if many else 'it'}) {'are' if many else 'is'} left out") \
+            if self.added else ("", "")
+        if not items:
+            return (f"Im letzten Schritt{more[0]}. / In the last step{more[1]}.") if self.added else ""
+        texts = [plain(it.text) for it in items if isinstance(it, Lettering)]
+        lines = len(items) - len(texts)
+        de = ", ".join(f"„{t}“" for t in texts) + (f" und {lines} Striche" if lines > 1 else " und einen Strich"
+                                                   if lines else "")
+        en = ", ".join(f"“{t}”" for t in texts) + (f" and {lines} strokes" if lines > 1 else " and a stroke"
+                                                   if lines else "")
+        return (f"Im letzten Schritt stehen {de.removeprefix(' und ')} der Tafel nur, wo die Tafel sie beim nächsten "
+                f"berechneten Wert von {symbol} hat (sie kommen und gehen mit {symbol}); alles andere folgt {symbol}"
+                f"{';' + more[0] if more[0] else ''}. / In the last step the plate’s {en.removeprefix(' and ')} "
+                f"stand only where the plate has them at the nearest computed value of {symbol} (they come and go "
+                f"with {symbol}); everything else follows {symbol}{';' + more[1] if more[1] else ''}.")
+
+    def _aligned(self, items: tuple) -> tuple[tuple, frozenset[int]]:
+        """Another value's furniture *items* in the built one's form: each built item where that value has it
+        (:func:`_matched`), the built item where it has not; and the built items it has not, by their index."""
+        at = _matched(self._items, items)
+        return (tuple(items[at[i]] if i in at else it for i, it in enumerate(self._items)),
+                frozenset(range(len(self._items))) - set(at))
+
+    def furniture_kept(self, protocol: Any, replay: Any, size: int) -> frozenset[int] | None:
+        """The built furniture's items that some value of the sweep *replay* of *protocol* lacks (a scale's
+        ticks come and go with the diagram's height): drawn at every value where the built plate has them and
+        shown where the nearer grid value's plate has them (an element that comes and goes would make the
+        refinement split every cell about it); the rest of the furniture swept.  None where the furniture cannot
+        be matched item by item (a plate of panels): held whole.  The texts of items some value adds that the
+        built plate lacks go to :attr:`added`."""
         if not self.held[0]:
-            return True
-        # (its items' kinds and what of them is drawn: a value where they draw other elements all the same, a
-        # dimension turned level, is drawn value by value: frames)
-        built = _form(plate_of(self.construction, self._built).furniture)
+            return frozenset()
+        # (its items' kinds and what of them is drawn, matched item by item: a value where an item draws other
+        # elements all the same, a dimension turned level, is drawn value by value: frames)
+        built = plate_of(self.construction, self._built).furniture
+        if len(built) != len(self._items):
+            return None
+        kept = set(range(len(built)))
+        self.added = []
         for i in range(size):
             p = plate_of(self.construction, Figure(protocol, replay.take(i), self.construction.check,
                                                    self.construction))
-            if p.panels or _form(p.furniture) != built:
-                return False
-        return True
+            if p.panels:
+                return None
+            at = _matched(built, p.furniture)
+            kept &= set(at)
+            new = set(range(len(p.furniture))) - set(at.values())
+            self.added += [t for j in sorted(new) if isinstance(p.furniture[j], Lettering)
+                           and (t := plain(p.furniture[j].text)) not in self.added]
+        return frozenset(range(len(built))) - kept
+
+    def furniture_keeps_form(self, protocol: Any, replay: Any, size: int) -> bool:
+        """Whether the end state's furniture has the built figure's items at every value of the sweep *replay* of
+        *protocol* (:meth:`furniture_kept` holds none)."""
+        return self.furniture_kept(protocol, replay, size) == frozenset()
 
     def _furniture_at(self, figure: Figure, at_once: Any, i: int) -> tuple[list, list[float], dict[str, str]]:
         """:meth:`_furniture` at value *i* of a sweep drawn at once: the plate's furniture of *figure* (that value
@@ -302,8 +376,10 @@ class Measure:
         furniture = {i: 0 for i, _ in runs if i.startswith("fin-")}
         fur_texts: list[dict[str, str]] = [{}] * size
         live = self.furniture_live
-        if furniture and live is None:
-            live = self.furniture_keeps_form(protocol, replay, size)
+        if furniture and live is None:  # (not asked: matched item by item over these values)
+            kept = self.furniture_kept(protocol, replay, size)
+            live = kept is not None
+            self.hidden_items = kept or frozenset()
         if furniture and not live:  # (held at the built value's numbers)
             table = np.tile(np.asarray(self.held[1], dtype=float), (size, 1))
         elif furniture:
@@ -487,6 +563,29 @@ def _form(items: Any) -> tuple:
     return tuple((type(it).__name__, len(subscript_runs(t)) if (t := getattr(it, "text", "")) else 0,
                   getattr(it, "text_at", None) is None, getattr(it, "broken", False), bool(getattr(it, "angle", 0)),
                   getattr(it, "to", None) is None) for it in items)
+
+
+def _matched(built: Any, items: Any) -> dict[int, int]:
+    """Which of the furniture *items* (another value's) is each of the furniture *built*'s: {built index: index
+    in items}, for the items of the same form and text in the longest common runs (difflib): a scale that lost
+    its top ticks keeps its others and its unit; between those runs, a run of items of the same forms as many
+    as the built one's (a text that changes with the given: a length, an angle).
+
+    >>> from construct.render.plate import Lettering, Stroke
+    >>> tick = lambda y: Stroke((0, y), (0.1, y))
+    >>> five = (Lettering((0, 0), "B"), tick(0), Lettering((0, 0), "0"), tick(1), Lettering((0, 1), "1"),
+    ...         Lettering((0, 2), "at"))
+    >>> _matched(five, (Lettering((1, 1), "B"), tick(0), Lettering((0, 0), "0"), Lettering((0, 1), "at")))
+    {0: 0, 1: 1, 2: 2, 5: 3}
+    """
+    fb, fi = _form(built), _form(items)
+    sign = lambda its, fs: [(f, getattr(it, "text", "")) for f, it in zip(fs, its)]  # noqa: E731
+    out = {}
+    for op, i0, i1, j0, j1 in difflib.SequenceMatcher(None, sign(built, fb), sign(items, fi),
+                                                       autojunk=False).get_opcodes():
+        if op == "equal" or (op == "replace" and fb[i0:i1] == fi[j0:j1]):
+            out.update(zip(range(i0, i1), range(j0, j1)))
+    return out
 
 
 def areas_of(protocol: Any, scene: Any) -> list[list[str]]:

@@ -466,6 +466,12 @@ class LiveSweep:
     #: value over this sweep (its form changes across the domain: :meth:`construct.live.Measure.furniture_keeps_form`);
     #: it follows the given else.
     furniture_held: bool = False
+    #: The end state's furniture elements of the items that come and go over the domain (a scale's ticks:
+    #: :attr:`construct.live.Measure.hidden_items`), by id: at each grid value 1 where its plate lacks them (the
+    #: page hides them where the nearer grid value's plate does); and the page's note that says which
+    #: (:meth:`construct.live.Measure.hidden_note`).
+    furniture_absent: dict[str, list[int]] = field(default_factory=dict)
+    furniture_note: str = ""
     #: The texts of :attr:`readings` at every grid value (the page writes the nearer grid value's).
     reading_texts: dict[str, list[str]] = field(default_factory=dict)
     #: Givens that follow from this one and that the texts write (DERIVED_WRITTEN): name -> value at each grid
@@ -516,9 +522,13 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     share = (hi - lo) / math.log10(whole.high / whole.low)
     scan = np.unique(np.clip(10.0 ** np.append(np.linspace(lo, hi, max(3, round(FORM_SCAN * share))),
                                                math.log10(initial)), domain.low, domain.high))
-    measure.furniture_live = not measure.end_held and (not measure.held[0] or measure.furniture_keeps_form(
+    # -- item by item: the items that come and go over them (a scale's ticks) shown where the nearer grid value's
+    # plate has them, the rest swept
+    kept = frozenset() if measure.end_held or not measure.held[0] else measure.furniture_kept(
         protocol, protocol.replay(construction.given_sweep(dict(figure.replay.givens), given, scan, protocol.params)),
-        len(scan)))
+        len(scan))
+    measure.furniture_live = not measure.end_held and kept is not None
+    measure.hidden_items = kept or frozenset()
     us = list(np.linspace(lo, hi, start))
     values = lambda u: np.clip(10.0 ** np.asarray(u), domain.low, domain.high)  # noqa: E731
     # each value's numbers as one array, made once (every cell it bounds reads them)
@@ -606,6 +616,10 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     for texts in {id(data[u][3]): data[u][3] for u in us}.values():  # (most values share one dict of texts)
         for i, t in texts.items():
             said.setdefault(i, set()).add(t)
+    # (the furniture's items a value's plate lacks: "#absent", their elements' ids)
+    gone = [set(data[u][3].get("#absent", "").split()) for u in us]
+    absent = {i: [int(i in g) for g in gone] for i in sorted(set().union(*gone), key=lambda i: (len(i), i))}
+    said.pop("#absent", None)
     varying = sorted(i for i, ts in said.items() if len(ts) > 1 and not (rod and all(rod.match(t) for t in ts)))
     first = data[us[0]][0]
     snapped = [first[i] for i in sorted(snap) if i < len(first) and (len(forms) == 1 or first[i] in shared)]
@@ -616,6 +630,8 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
                      fit=np.asarray([data[u][2] for u in us], dtype=np.float32).astype(float),
                      label_px=float(style.label_size), live=live, areas=measure.areas, end_held=measure.end_held,
                      furniture_held=not measure.furniture_live and not measure.end_held and bool(measure.held[0]),
+                     furniture_absent=absent,
+                     furniture_note=measure.hidden_note(symbol) if measure.furniture_live else "",
                      reading_texts={i: [data[u][3].get(i, "") for u in us] for i in varying},
                      whole=whole if piece is not None else None)
     swept = construction.given_sweep(dict(figure.replay.givens), given, grid, protocol.params)

@@ -322,7 +322,8 @@ def live_data(live: LiveSweep) -> dict[str, Any]:
     meta = {"grid": [round(math.log10(v), 12) for v in live.grid],
             "keys": [list(k) for k in live.keys], "flags": live.nearest_columns().nonzero()[0].tolist(),
             "jumps": sorted(where[float(a)] for a, _ in live.jumps),
-            **({"readings": live.reading_texts} if live.reading_texts else {})}
+            **({"readings": live.reading_texts} if live.reading_texts else {}),
+            **({"absent": live.furniture_absent} if live.furniture_absent else {})}
     given = live.live
     whole = live.whole or live.domain
     return {"given": live.given, "symbol": live.symbol, "low": whole.low, "high": whole.high,
@@ -335,6 +336,7 @@ def live_data(live: LiveSweep) -> dict[str, Any]:
             **({"readings": live.readings} if live.readings else {}),
             **({"end_held": True} if live.end_held else {}),
             **({"furniture_held": True} if live.furniture_held else {}),
+            **({"furniture_note": live.furniture_note} if live.furniture_note else {}),
             **encode(live), "bound": round(live.bound + QUANTUM_PX / 2, 3),
             "meta_z": deflated(meta), "checks_z": deflated(_check_table(live))}
 

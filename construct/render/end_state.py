@@ -206,37 +206,46 @@ def lay_out_end(scene: Scene, style: Style, vp: Viewport, placing: Placing, view
     return EndView(v, lvl, round(ls, 4), round(1.0 / q, 6), tuple(round(c, 2) for c in crop), size)
 
 
-def end_furniture(scene: Scene, style: Style, vp: Viewport, end: EndView, placing: Placing, factory: Any) -> Any:
+def end_furniture(scene: Scene, style: Style, vp: Viewport, end: EndView, placing: Placing, factory: Any,
+                  owners: dict[str, int] | None = None) -> Any:
     """The plate's furniture in the end state (``<g class="fo end">``), its letters at the size of the end
     state's, its lettering where the end state's placing set it (upright; tied to its place by a leader when
     set off).  Each of its elements has an id in the order drawn (``fin-s<k>``: the line of a stroke the plate
     adds, which a broken axis breaks; ``fin-f<k>`` the rest): the live page moves them with the given
-    (:func:`furniture_numbers`)."""
+    (:func:`furniture_numbers`).  *owners*, if given, gets each element's item: {its id: the item's index in
+    ``scene.end_furniture``}."""
     f = factory
     g = f.g(class_="fo end")
+    owners = {} if owners is None else owners
     k = 0
-    for it in end_fixed(scene):
+    for i, it in enumerate(scene.end_furniture):
+        if isinstance(it, Lettering):  # (below: where the placing set it)
+            continue
         for j, e in enumerate(furniture_elements([it], vp.px, vp.scale, f, size=end.size)):
             e["id"] = f"fin-{'s' if j == 0 and isinstance(it, Stroke) else 'f'}{k}"
+            owners[e["id"]] = i
             if _at_letter_size(it, j):
                 e["class"] = e["class"] + " sc"
             k += 1
             g.add(e)
     ls = end.letter
-    for (fid, (px, py), text), it in zip(end_lettering(scene, vp, style, end.size),
-                                        [it for it in scene.end_furniture if isinstance(it, Lettering)]):
+    for (fid, (px, py), text), i in zip(end_lettering(scene, vp, style, end.size),
+                                       [i for i, it in enumerate(scene.end_furniture) if isinstance(it, Lettering)]):
         rel = placing.end_spots.get(fid)
         if rel is None:
             continue
+        it = scene.end_furniture[i]
         x, y = px + ls * rel[0], py + ls * rel[1]
         if rel[2] >= LEADER_FROM:
             x1, y1, x2, y2 = placing.leader_line(rel[0], rel[1], text)
             g.add(f.line(start=(fmt(px + ls * x1), fmt(py + ls * y1)), end=(fmt(px + ls * x2), fmt(py + ls * y2)),
                          class_="fur thin", id=f"fin-f{k}"))
+            owners[f"fin-f{k}"] = i
             k += 1
         # (its index set below the line as the plate sets it: P_b, F·p_ü)
         for el in text_elements(f, (x, y - 0.35 * end.size * it.size), it.text, end.size, rel=it.size):
             el["id"] = f"fin-f{k}"
+            owners[el["id"]] = i
             k += 1
             g.add(el)
     return g

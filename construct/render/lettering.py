@@ -150,6 +150,7 @@ def label_box(x: float, y: float, text: str, size: float, font: str = DEFAULT_FO
     return (b[0] - m, b[1] - m, b[2] + m, b[3] + m)
 
 
+@functools.lru_cache(maxsize=4096)  # a name tag is placed once per level it is seen at: the same letters asked again
 def _box_maker(text: str, size: float, font: str, italic: bool, halo: float):
     """``label_box(x, y, text, size, font, italic, halo)`` as a function of (x, y) alone: the letter's measures
     looked up once, the same sums in the same order (a placing tries sixty spots a letter)."""
@@ -446,6 +447,20 @@ def _spots(ordered: "Sequence[tuple]", plan: "Sequence[tuple[int, float, int]]",
     return lxs, lys, x0 + ls - m, lys - ts - m, x0 + rs + m, lys - bs + m
 
 
+@functools.lru_cache(maxsize=8)
+def _plan(distances: tuple[float, ...]) -> tuple[list[tuple[int, float, int]], tuple[float, ...],
+                                                 dict[int, tuple[int, int]]]:
+    """Every spot a letter may try, in the order tried: (ring, distance, turn); the rings' distances; each ring's
+    spots (first, end) in the plan -- the same for every letter of a placing, made once (a name tag is placed
+    alone, thousands of times a figure).  Not to be changed by the caller."""
+    plan = [(j, dist, turn) for j, dist in enumerate(_DISTANCES + distances)
+            for turn in (_TURNS if dist in _DISTANCES else _TURNS_FAR)]
+    ring_of: dict[int, tuple[int, int]] = {}
+    for k, (j, _d, _t) in enumerate(plan):
+        ring_of[j] = (ring_of.get(j, (k, k))[0], k + 1)
+    return plan, _DISTANCES + distances, ring_of
+
+
 def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float, float], str]],
           size: float, dots: "Iterable[tuple[float, float]] | np.ndarray" = (),
           lines: "Sequence[tuple[float, float, float, float]] | LineIndex" = (), *, font: str = DEFAULT_FONT,
@@ -504,12 +519,7 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     ordered = sorted(items, key=lambda it: (RANK.get(it[1], 2), it[2], it[0]))
     # every spot a letter may try, in the order tried: (ring, distance, turn) -- the ring's number, not its distance,
     # ends a ring (a farther distance may repeat a usual one)
-    plan = [(j, dist, turn) for j, dist in enumerate(_DISTANCES + tuple(distances))
-            for turn in (_TURNS if dist in _DISTANCES else _TURNS_FAR)]
-    rings = _DISTANCES + tuple(distances)
-    ring_of: dict[int, tuple[int, int]] = {}  # each ring's spots: (first, end) in the plan
-    for k, (j, _d, _t) in enumerate(plan):
-        ring_of[j] = (ring_of.get(j, (k, k))[0], k + 1)
+    plan, rings, ring_of = _plan(tuple(distances))
     # many letters: every spot of every letter made at once, and crossed off in bulk where a point surely takes it
     # (a crowd of points takes most spots of most letters) or a letter placed in this call meets it; the rest are
     # asked in the grid, in the order of the letters.  A few letters are asked spot by spot, each made as it is

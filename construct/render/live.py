@@ -34,9 +34,10 @@ room again.  Nothing waits for the slider to be let go (``change``), which
 only sets the letters' exact scale and glides the camera to the step's
 view.  The end state (the last step drawn as the book's plate) follows too: its own
 marks are swept as the rest (:meth:`construct.render.sweepdraw.SweepDrawing`), and the plate's furniture there
-(its dimensions, lettering and added lines) where it keeps its form over the domain
-(:meth:`construct.live.Measure.furniture_keeps_form`; elsewhere it is shown at the book's values alone and the
-page says so).  Readings of the figure (an angle to the minute) are written as read at the nearer grid value.
+(its dimensions, lettering and added lines) item by item: an item the plate draws at every value of the domain
+follows the given, one that comes and goes (a scale's ticks: :meth:`construct.live.Measure.furniture_kept`) is
+shown where the nearer grid value's plate has it, and the page says which (a plate of panels is held whole).
+Readings of the figure (an angle to the minute) are written as read at the nearer grid value.
 An area's hatching is drawn anew with its outline, as the drawing hatches it (:func:`construct.render.paths.
 hatch_segments`: the player's data says its spacing and each area's angle); a signed area's (its pieces' angle
 turns with their sign) holds the built value's numbers and is shown at the book's values alone.  The inset (a
@@ -197,7 +198,7 @@ LIVE_SCRIPT = r"""
     return new Response(stream).arrayBuffer();
   }
   function json(b){ return JSON.parse(new TextDecoder().decode(b)); }
-  var player = null, S = null, cur = null, sweeps = [], followers = [], readings = [], lines = [];
+  var player = null, S = null, cur = null, sweeps = [], followers = [], readings = [], absent = [], lines = [];
   var VIEWS = "zooms", IDX = "z";
   // ---- one given's data: every drawn number at every grid value ---------------------------------------------
   function Sweep(L){
@@ -811,8 +812,12 @@ LIVE_SCRIPT = r"""
     for (var fi = 0; fi < endFurniture.length; fi++) {
       var fs = furnitureShown ? "" : "none"; if (endFurniture[fi].style.display !== fs) endFurniture[fi].style.display = fs;
     }
-    var noted = atBook || !(S.L.end_held || S.L.furniture_held);
+    var noted = atBook || !(S.L.end_held || S.L.furniture_held || S.L.furniture_note);
     if (endNote && endNote.hidden !== noted) endNote.hidden = noted;
+    if (endNote && !noted) {  // (each given's own: what of the plate comes and goes with it)
+      var said = S.L.furniture_note || endNote.getAttribute("data-held");
+      if (endNote.textContent !== said) endNote.textContent = said;
+    }
     for (var hi = 0; hi < hatches.length; hi++) {
       var hs = atBook ? "" : "none"; if (hatches[hi].style.display !== hs) hatches[hi].style.display = hs;
     }
@@ -829,6 +834,12 @@ LIVE_SCRIPT = r"""
     for (var j = 0; j < readings.length; j++) {
       var rd = readings[j], said = rd.L === S.L ? rd.texts[near] : rd.L.given !== S.L.given ? rd.built : null;
       if (said) for (var rj = 0; rj < rd.els.length; rj++) setText(rd.els[rj], said);
+    }
+    // the plate's items that come and go with the given (a scale's ticks: live/measure.py Measure._furniture):
+    // shown where the nearer grid value's plate has them
+    for (var aj = 0; aj < absent.length; aj++) {
+      var ab = S.L.absent[absent[aj].id], as = ab && ab[near] ? "none" : "";
+      if (absent[aj].el.style.display !== as) absent[aj].el.style.display = as;
     }
     declutter();
     api.value = value; api.given = S.L.given;
@@ -981,7 +992,7 @@ LIVE_SCRIPT = r"""
     var W = new Sweep(L);
     return inflate(L.meta_z).then(function(b){
       var m = json(b);
-      L.grid = m.grid; L.keys = m.keys; L.flags = m.flags; L.jumps = m.jumps; L.reading_texts = m.readings || {};
+      L.grid = m.grid; L.keys = m.keys; L.flags = m.flags; L.jumps = m.jumps; L.reading_texts = m.readings || {}; L.absent = m.absent || {};
       return L.checks_z ? inflate(L.checks_z) : null;
     }).then(function(b){
       if (b) { var c = json(b); L.check_names = c.check_names; L.check_values = c.check_values; L.checks = c.checks; }
@@ -995,16 +1006,18 @@ LIVE_SCRIPT = r"""
     HATCH = player ? player.data.hatch : null;
     endFurniture = Array.prototype.slice.call(svg.querySelectorAll("#furniture > g.fo"));
     svg.querySelectorAll("#furniture g.fo.end text").forEach(function(t){ if (/^L\s*=\s*[0-9]/.test(t.textContent)) endWritesRod = true; });
-    var held = LIST.filter(function(L){ return L.end_held || L.furniture_held; });
+    var held = LIST.filter(function(L){ return L.end_held || L.furniture_held || L.furniture_note; });
     if (player && player.data.end && held.length) {
       endNote = document.createElement("div");
       endNote.className = "live-end"; endNote.hidden = true; endNote.setAttribute("style", "color:#777;font-size:12px");
-      endNote.textContent = held[0].end_held ?
+      var wholly = LIST.filter(function(L){ return L.end_held || L.furniture_held; });
+      endNote.textContent = !wholly.length ? held[0].furniture_note : wholly[0].end_held ?
         "Der letzte Schritt zeigt das Bild der Tafel beim Buchwert; hier alle Linien der Konstruktion. / The last step " +
         "shows the plate’s look at the book’s value; here every line of the construction." :
-        "Der letzte Schritt zeigt Maße, Skala und Beschriftung der Tafel nur beim Buchwert von " + held[0].symbol +
+        "Der letzte Schritt zeigt Maße, Skala und Beschriftung der Tafel nur beim Buchwert von " + wholly[0].symbol +
         " (ihre Form ändert sich mit ihm). / The last step shows the plate’s dimensions, scale and lettering at the " +
-        "book’s value of " + held[0].symbol + " only (their form changes with it).";
+        "book’s value of " + wholly[0].symbol + " only (their form changes with it).";
+      endNote.setAttribute("data-held", endNote.textContent);
       var before = document.querySelector("#live .live-held");
       if (before) before.parentNode.insertBefore(endNote, before.nextSibling);
     }
@@ -1046,6 +1059,9 @@ LIVE_SCRIPT = r"""
       if (!rodSpots[+r[0]]) rodSpots[+r[0]] = [+r[1], +r[2], r[3]]; });
     svg.querySelectorAll("#furniture .brk, #furniture .brkline, #furniture .rodlen").forEach(function(e){ e.parentNode.removeChild(e); });
     // (each reading's texts: its letter's, and its halo's in its group; a text of runs, P_b, keeps its runs)
+    LIST.forEach(function(L){ Object.keys(L.absent).forEach(function(id){
+      var el = document.getElementById(id);
+      if (el && !absent.some(function(a){ return a.id === id; })) absent.push({id: id, el: el}); }); });
     LIST.forEach(function(L){ (L.readings || []).forEach(function(id){
       var t = player && player.find ? player.find(id) : document.getElementById(id), g = t && t.closest("g.lbg");
       var els = (g ? Array.prototype.slice.call(g.querySelectorAll("text")) : t ? [t] : [])

@@ -27,7 +27,7 @@ from .scene import Mark, MarkKind, Scene, label_offset_direction
 from .styles import Style
 from .viewport import Viewport
 
-__all__ = ["place_tags", "Ground", "Tags", "TAG_FARTHER"]
+__all__ = ["place_tags", "spots_clear", "Ground", "Tags", "TAG_FARTHER"]
 
 #: The farther rings (letter heights) a name tag tries, tied by a leader, before it gives way: a tag the
 #: step's caption names is worth a longer leader.
@@ -228,59 +228,36 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
                     and abs(spot[0] - zx - prefer[i][0]) <= 1e-6 and abs(spot[1] - zy - prefer[i][1]) <= 1e-6}
 
         holds = kept(got, items)
-        arrays = None
+        # whether each tag that lost its spot has it free of the level's letters, points and result lines (as
+        # the placer asks), all such tags at once; asked below only of a tag seen with fewer than all
+        spots = [it for it in items if it[0] not in holds]
+        boxes = [label_box(o[3][0] + prefer[o[0]][0], o[3][1] + prefer[o[0]][1], o[5], size * f, st.label_font,
+                           st.label_italic, HALO_PX / 2 * f) for o in items]
+        box_of = {o[0]: b for o, b in zip(items, boxes)}
+        ds = np.array(ds, dtype=float).reshape(-1, 2)
+        clear = dict(zip((it[0] for it in spots), spots_clear(
+            np.array([box_of[it[0]] for it in spots], dtype=float).reshape(-1, 4), ds,
+            (line_a[np.array(only, dtype=bool)] * z).reshape(-1, 4), np.array(taken, dtype=float).reshape(-1, 4),
+            0.3 * size * f, placing.line_reach).tolist()))
         losers = []
-        for it in items:
+        for it in spots:
             i = it[0]
-            if i in holds:
-                continue
             # it lost its spot to all the tags of the level together; it holds it where it is seen only
             # with the tags seen together with it (crank step 181: M1 gave way to tags never shown with it)
             mates = seen_with.get(lvl, {}).get(byid[i].step, set())
             local = [o for o in items if byid[o[0]].step in mates and (o[0] in holds or o[0] == i)]
-            if len(local) < len(items):
-                # it holds its spot where the spot is free of the level's letters, points and result
-                # lines (as the placer asks) and of the tags seen with it (arrays made once per level)
-                if arrays is None:
-                    arrays = (np.array(ds, dtype=float).reshape(-1, 2),
-                              (line_a[np.array(only, dtype=bool)] * z).reshape(-1, 4),
-                              np.array(taken, dtype=float).reshape(-1, 4))
-                ds, ls_, tk = arrays
-
-                def spot_box(o):
-                    return label_box(o[3][0] + prefer[o[0]][0], o[3][1] + prefer[o[0]][1], o[5], size * f,
-                                     st.label_font, st.label_italic, HALO_PX / 2 * f)
-
-                b = spot_box(it)
-                rr = 0.3 * size * f
-                e = placing.line_reach
-                free = not any(b[0] < c[2] and c[0] < b[2] and b[1] < c[3] and c[1] < b[3]
-                               for c in (spot_box(o) for o in local if o[0] != i))
-                free = free and not ((tk[:, 0] < b[2]) & (b[0] < tk[:, 2]) & (tk[:, 1] < b[3])
-                                     & (b[1] < tk[:, 3])).any()
-                free = free and not ((ds[:, 0] - rr < b[2]) & (b[0] < ds[:, 0] + rr) & (ds[:, 1] - rr < b[3])
-                                     & (b[1] < ds[:, 1] + rr)).any()
-                if free and len(ls_):
-                    # a result line crossing the box widened by the line's half width (clipped to it)
-                    p0, dv = ls_[:, :2], ls_[:, 2:] - ls_[:, :2]
-                    with np.errstate(divide="ignore", invalid="ignore"):
-                        ta = (np.array([b[0] - e, b[1] - e]) - p0) / dv
-                        tb = (np.array([b[2] + e, b[3] + e]) - p0) / dv
-                        t_in = np.nan_to_num(np.minimum(ta, tb), nan=-np.inf)
-                        t_out = np.nan_to_num(np.maximum(ta, tb), nan=np.inf)
-                    inside = (dv != 0) | ((p0 >= np.array([b[0] - e, b[1] - e])) & (p0 <= np.array([b[2] + e, b[3] + e])))
-                    t0 = np.maximum(0.0, np.where(dv != 0, t_in, -np.inf).max(axis=1))
-                    t1 = np.minimum(1.0, np.where(dv != 0, t_out, np.inf).min(axis=1))
-                    free = not ((t0 <= t1) & inside.all(axis=1)).any()
-                if free:
+            if len(local) < len(items) and clear[i]:
+                # it holds its spot where the spot is also free of the tags seen with it
+                b = box_of[i]
+                if not any(b[0] < c[2] and c[0] < b[2] and b[1] < c[3] and c[1] < b[3]
+                           for c in (box_of[o[0]] for o in local if o[0] != i)):
                     holds.add(i)  # the tags it is seen with after it are placed with it
                     continue
             losers.append(it)
         if losers:
             # a tag with no room at its spot stands elsewhere at this level, clear of the letters and of the
             # tags that hold theirs (a step's caption names it: it is never left out while there is room)
-            held = [label_box(o[3][0] + prefer[o[0]][0], o[3][1] + prefer[o[0]][1], o[5], size * f, st.label_font,
-                              st.label_italic, HALO_PX / 2 * f) for o in items if o[0] in holds]
+            held = [box_of[o[0]] for o in items if o[0] in holds]
             again = place(losers, size * f, ds, placing.lines_at(z, size * f), only=only, font=st.label_font,
                           italic=st.label_italic, taken=taken + held, keep=False, halo=HALO_PX / 2 * f,
                           reach=placing.line_reach, distances=TAG_FARTHER)
@@ -292,3 +269,42 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
                 else:
                     moves.setdefault(i, {})[lvl] = ((spot[0] - zx) / f, (spot[1] - zy) / f, spot[2])
     return out, hidden, moves
+
+
+def spots_clear(boxes: np.ndarray, dots: np.ndarray, lines: np.ndarray, taken: np.ndarray, r: float,
+                e: float) -> np.ndarray:
+    """For each box (n, 4): is it free of the boxes *taken* (k, 4), of the points *dots* (m, 2) widened by *r*
+    and of the result *lines* (p, 4: x0, y0, x1, y1) widened by *e* (a line crossing the box grown by *e*,
+    clipped to it: the slab test), all boxes at once.
+
+    >>> b = np.array([[0.0, 0.0, 10.0, 10.0], [20.0, 0.0, 30.0, 10.0]])
+    >>> spots_clear(b, np.zeros((0, 2)), np.array([[-5.0, 5.0, 15.0, 5.0]]), np.zeros((0, 4)), 1.0, 0.5).tolist()
+    [False, True]
+    """
+    x0, y0, x1, y1 = (boxes[:, k:k + 1] for k in range(4))
+    free = ~((taken[:, 0] < x1) & (x0 < taken[:, 2]) & (taken[:, 1] < y1) & (y0 < taken[:, 3])).any(axis=1)
+    free &= ~((dots[:, 0] - r < x1) & (x0 < dots[:, 0] + r) & (dots[:, 1] - r < y1) & (y0 < dots[:, 1] + r)).any(axis=1)
+    if not len(lines) or not len(boxes):
+        return free
+    # the slab test only for the pairs whose boxes meet (grown by a hair: a pair left out could not cross)
+    lo, hi = np.concatenate([x0 - e, y0 - e], axis=1), np.concatenate([x1 + e, y1 + e], axis=1)  # (n, 2)
+    l_lo, l_hi = np.minimum(lines[:, :2], lines[:, 2:]), np.maximum(lines[:, :2], lines[:, 2:])
+    hair = 1e-6 * (1.0 + np.abs(lines).max())
+    bi, li = np.nonzero((l_lo[:, 0] <= hi[:, 0:1] + hair) & (l_hi[:, 0] >= lo[:, 0:1] - hair)
+                        & (l_lo[:, 1] <= hi[:, 1:2] + hair) & (l_hi[:, 1] >= lo[:, 1:2] - hair))
+    if not len(bi):
+        return free
+    lo, hi, p0 = lo[bi], hi[bi], lines[li, :2]
+    dv = lines[li, 2:] - p0
+    moving = dv != 0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ta = (lo - p0) / dv
+        tb = (hi - p0) / dv
+        t_in = np.nan_to_num(np.minimum(ta, tb), nan=-np.inf)
+        t_out = np.nan_to_num(np.maximum(ta, tb), nan=np.inf)
+    inside = moving | ((p0 >= lo) & (p0 <= hi))
+    t0 = np.maximum(0.0, np.where(moving, t_in, -np.inf).max(axis=1))
+    t1 = np.minimum(1.0, np.where(moving, t_out, np.inf).min(axis=1))
+    crossed = np.zeros(len(boxes), dtype=bool)
+    crossed[bi[(t0 <= t1) & inside.all(axis=1)]] = True
+    return free & ~crossed

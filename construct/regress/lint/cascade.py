@@ -170,6 +170,13 @@ class Cascade:
         self.ids = frozenset(i for r in rules for p in r.parts for i in p[1][1])
         #: Classes some rule names.
         self.classes = frozenset(c for r in rules for p in r.parts for c in p[1][2])
+        # which rules match a chain depends on the selectors alone: drawings of one style whose rules differ only in
+        # their values (each figure's line widths) share it (tens of drawings linted in one process)
+        selectors = tuple(r.parts for r in rules)
+        self._matches = _MATCHES.pop(selectors, None) or {}
+        _MATCHES[selectors] = self._matches
+        while len(_MATCHES) > _MATCHES_KEPT:
+            del _MATCHES[next(iter(_MATCHES))]
         self._looks: dict[tuple[Node, ...], Look] = {}
         self._own: dict[tuple[Node, ...], dict[str, str]] = {}
         # the rules whose subject asks for classes, by the first of them (an element is asked only about the rules
@@ -191,17 +198,30 @@ class Cascade:
             for name in PROPERTIES:  # presentation attributes first, the style sheet over them
                 if ("@" + name) in own:
                     got[name] = own["@" + name]
-            asked = self._open + [i for c in last[2] for i in self._filed.get(c, ())]
-            for i in sorted(asked) if len(asked) > len(self._open) else asked:  # (in the sheet's order)
-                rule = self.rules[i]
-                if rule.parts[-1][1][2] and not all(c in last[2] for c in rule.parts[-1][1][2]):
-                    continue  # the subject's classes are the cheap test
-                if rule.matches(chain):
-                    got.update(rule.declarations)
+            for i in self._matched(chain):
+                got.update(self.rules[i].declarations)
             for name in PROPERTIES:  # the style attribute last
                 if name in own:
                     got[name] = own[name]
             self._own[chain] = got
+        return got
+
+    def _matched(self, chain: tuple[Node, ...]) -> tuple[int, ...]:
+        """The numbers of the rules that match the last node of *chain*, in the sheet's order (asked by the nodes'
+        tags, ids and classes alone: a chain's own declarations do not take part)."""
+        key = tuple([nd[:3] for nd in chain])
+        got = self._matches.get(key)
+        if got is None:
+            classes = chain[-1][2]
+            asked = self._open + [i for c in classes for i in self._filed.get(c, ())]
+            matched = []
+            for i in sorted(asked) if len(asked) > len(self._open) else asked:  # (in the sheet's order)
+                rule = self.rules[i]
+                if rule.parts[-1][1][2] and not all(c in classes for c in rule.parts[-1][1][2]):
+                    continue  # the subject's classes are the cheap test
+                if rule.matches(chain):
+                    matched.append(i)
+            got = self._matches[key] = tuple(matched)
         return got
 
     def look(self, chain: tuple[Node, ...]) -> Look:
@@ -236,6 +256,11 @@ class Cascade:
                    stroke_width=_length(values["stroke-width"], size))
         self._looks[chain] = got
         return got
+
+
+#: The rules matched per chain, per style sheet's selectors (:meth:`Cascade._matched`): the last few kept.
+_MATCHES: dict[tuple, dict[tuple, tuple[int, ...]]] = {}
+_MATCHES_KEPT = 4
 
 
 def _number(text: str, default: float, percent_of: float) -> float:

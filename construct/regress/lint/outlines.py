@@ -21,10 +21,13 @@ import math
 import re
 import xml.etree.ElementTree as ET
 
-from ..svgdiff.geometry import arc_centre, parse_path
+import numpy as np
 
-__all__ = ["Box", "Matrix", "IDENTITY", "PIECE", "FLATNESS", "local_name", "compose", "transform_point", "number",
-           "four_numbers", "box_of", "arc_points", "polylines", "cut_pieces"]
+from ..svgdiff.geometry import arc_centre, parse_path
+from ..svgdiff.values import NUMBER
+
+__all__ = ["Box", "Matrix", "IDENTITY", "PIECE", "FLATNESS", "local_name", "compose", "transform_point",
+           "transform_lines", "number", "four_numbers", "box_of", "arc_points", "polylines", "cut_pieces"]
 
 #: A box (x0, y0, x1, y1), y down.
 Box = tuple[float, float, float, float]
@@ -54,6 +57,27 @@ def compose(m: Matrix, n: Matrix) -> Matrix:
 def transform_point(m: Matrix, x: float, y: float) -> tuple[float, float]:
     """The point (x, y) carried by *m*."""
     return (m[0] * x + m[2] * y + m[4], m[1] * x + m[3] * y + m[5])
+
+
+def transform_lines(m: Matrix, lines: list[list[tuple[float, float]]]) -> list[list[tuple[float, float]]]:
+    """Every point of *lines* carried by *m* (:func:`transform_point`'s sums in its order; a long line on arrays).
+
+    >>> transform_lines((2.0, 0.0, 0.0, 2.0, 5.0, 0.0), [[(1.0, 1.0), (0.0, -1.0)]])
+    [[(7.0, 2.0), (5.0, -2.0)]]
+    """
+    out = []
+    for pts in lines:
+        if len(pts) < _ARRAY_FROM:
+            out.append([(m[0] * x + m[2] * y + m[4], m[1] * x + m[3] * y + m[5]) for x, y in pts])
+        else:
+            xy = np.array(pts, dtype=float)
+            x, y = xy[:, 0], xy[:, 1]
+            out.append(list(zip((m[0] * x + m[2] * y + m[4]).tolist(), (m[1] * x + m[3] * y + m[5]).tolist())))
+    return out
+
+
+#: From how many points a line is carried and cut on arrays (below, numpy's calls cost more than the loop).
+_ARRAY_FROM = 24
 
 
 def number(raw: str | None, default: float = 0.0) -> float:
@@ -106,9 +130,13 @@ def polylines(tag: str, e: ET.Element, where: str) -> list[list[tuple[float, flo
             pts.append(pts[0])
         return [pts] if pts else []
     # a path
+    d = e.get("d", "")
+    plain = _plain_path(d)
+    if plain is not None:
+        return plain
     out: list[list[tuple[float, float]]] = []
     cur: list[tuple[float, float]] = []
-    for seg in parse_path(e.get("d", ""), where):
+    for seg in parse_path(d, where):
         op = seg[0]
         if op == "M":
             if len(cur) > 1:
@@ -153,10 +181,67 @@ _CUBIC = tuple(((1 - i / 12) * (1 - i / 12) * (1 - i / 12), 3 * (1 - i / 12) * (
 _QUADRATIC = tuple(((1 - i / 12) * (1 - i / 12), 2 * (1 - i / 12) * (i / 12), (i / 12) * (i / 12)) for i in range(1, 13))
 
 
+#: A path's commands and numbers as parse_path reads them one after another (anything else: the third group).
+_PATH_TOKEN = re.compile(rf"[\s,]*(?:([MLCZ])|({NUMBER})|(.))", re.S)
+
+
+def _plain_path(d: str) -> list[list[tuple[float, float]]] | None:
+    """:func:`polylines` of a plain path -- absolute moves, lines, cubic curves and closes only, as the renderer
+    writes them -- read in one pass, the same numbers as through
+    :func:`construct.regress.svgdiff.geometry.parse_path`; None for any other path (read through it)."""
+    out: list[list[tuple[float, float]]] = []
+    cur: list[tuple[float, float]] = []
+    at = start = (0.0, 0.0)
+    cmd = ""
+    v: list[float] = []
+    for letter, num, other in _PATH_TOKEN.findall(d):
+        if other:
+            return None
+        if letter:
+            if v or (not cmd and letter != "M"):
+                return None  # numbers left over, or no move first: parse_path says what is wrong
+            cmd = letter
+            if letter == "Z":
+                cur.append(start)
+                at = start
+            continue
+        if cmd in ("", "Z"):
+            return None
+        v.append(0.0 + float(num))  # as parse_path adds the origin of absolute coordinates (-0 is 0)
+        if cmd == "C":
+            if len(v) < 6:
+                continue
+            ax, ay = at
+            bx, by, cx, cy, dx, dy = v
+            cur.extend((0 + w0 * ax + w1 * bx + w2 * cx + w3 * dx, 0 + w0 * ay + w1 * by + w2 * cy + w3 * dy)
+                       for w0, w1, w2, w3 in _CUBIC)
+            at = (dx, dy)
+        elif len(v) < 2:
+            continue
+        elif cmd == "M":
+            if len(cur) > 1:
+                out.append(cur)
+            at = start = (v[0], v[1])
+            cur = [at]
+            cmd = "L"  # further pairs are lines
+        else:
+            at = (v[0], v[1])
+            cur.append(at)
+        v = []
+    if v:
+        return None
+    if len(cur) > 1 or (cur and not out):
+        out.append(cur)
+    return out
+
+
 def cut_pieces(lines: list[list[tuple[float, float]]]) -> list[tuple[float, float, float, float]]:
     """Straight pieces at most :data:`PIECE` long (so that each sits in a few cells of the index)."""
     out = []
     for pts in lines:
+        if len(pts) >= _ARRAY_FROM:
+            out.extend(_cut_array(pts))
+            continue
         for (ax, ay), (bx, by) in zip(pts, pts[1:]):
             n = max(1, math.ceil(math.hypot(bx - ax, by - ay) / PIECE))
             for i in range(n):
@@ -174,3 +259,21 @@ def four_numbers(text: str) -> tuple[float, float, float, float] | None:
     if len(v) != 4 or not all(math.isfinite(x) for x in v) or v[2] <= 0 or v[3] <= 0:
         return None
     return (v[0], v[1], v[2], v[3])
+
+
+def _cut_array(pts: list[tuple[float, float]]) -> list[tuple[float, float, float, float]]:
+    """:func:`cut_pieces` of one long line on arrays: the same sums in the same order."""
+    xy = np.array(pts, dtype=float)
+    a, b = xy[:-1], xy[1:]
+    span = np.hypot(b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]) / PIECE
+    n = np.maximum(1, np.ceil(span)).astype(np.int64)
+    # numpy's hypot may differ from math.hypot in the last place: where that could move a count, math's
+    near = np.nonzero(np.abs(span - np.rint(span)) <= 1e-9 * np.maximum(1.0, span))[0]
+    for k in near.tolist():
+        n[k] = max(1, math.ceil(math.hypot(b[k, 0] - a[k, 0], b[k, 1] - a[k, 1]) / PIECE))
+    seg = np.repeat(np.arange(len(a)), n)
+    i = (np.arange(len(seg)) - np.repeat(np.cumsum(n) - n, n)).astype(float)
+    m = n[seg].astype(float)
+    ax, ay, d_x, d_y = a[seg, 0], a[seg, 1], (b[:, 0] - a[:, 0])[seg], (b[:, 1] - a[:, 1])[seg]
+    return list(zip((ax + d_x * i / m).tolist(), (ay + d_y * i / m).tolist(),
+                    (ax + d_x * (i + 1) / m).tolist(), (ay + d_y * (i + 1) / m).tolist()))

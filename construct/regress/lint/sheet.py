@@ -41,7 +41,7 @@ from ..svgdiff.geometry import parse_transform
 from .cascade import PROPERTIES, Cascade, Look, Node, declarations
 from .fonts import text_extents
 from .outlines import (IDENTITY, Box, Matrix, box_of, compose, cut_pieces, four_numbers, local_name, number, polylines,
-                       transform_point)
+                       transform_lines, transform_point)
 from .player import END, END_LEVEL, player_data, read_moves, read_views
 
 __all__ = ["Sheet", "Text", "Dot", "Stroke", "Line", "Leader", "read_sheet", "read_views", "player_data",
@@ -428,7 +428,7 @@ class _Reader:
                 lines = polylines(tag, e, where)
             except ConstructError as exc:
                 raise LintInputError(str(exc)) from None
-            lines = [[transform_point(ctm, x, y) for x, y in pts] for pts in lines]
+            lines = transform_lines(ctm, lines)
             pts = [p for line in lines for p in line]
             if not pts:
                 return

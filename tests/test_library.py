@@ -356,8 +356,8 @@ def test_the_private_import_test_sees_what_it_must():
 
 def test_no_unused_import_and_no_name_defined_twice():
     """pyflakes finds nothing in the package and the tests: no unused import (a layer crossed for nothing), no
-    class or function defined twice (the second silently replaces the first).  pyflakes is a tool, not a
-    dependency: without it the test is skipped."""
+    class or function defined twice (the second silently replaces the first).  pyflakes is a test dependency (the
+    package's ``test`` extra); where it is missing the test is skipped."""
     api = pytest.importorskip("pyflakes.api")
     from pyflakes.reporter import Reporter
     import io

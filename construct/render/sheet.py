@@ -11,12 +11,15 @@ import os
 import re
 import sys
 import warnings
-from typing import Callable, NamedTuple
+from typing import TYPE_CHECKING, Callable, NamedTuple
 
 from ..kernel.errors import HiddenLabelWarning
 from ..kernel.geometry import Circle, Line, Point
 from ..kernel.protocol import Protocol, Replay
 from .marks import Mark, MarkKind, extreme_points, lies_on, mark_box, with_geom
+
+if TYPE_CHECKING:  # (numpy is imported where it is used: the annotations name it)
+    import numpy as np
 
 __all__ = ["BREAK_FRACTION", "BREAK_FRACTION_Y", "BREAK_KEEP", "PLATE_BREAK_KEEP", "Break", "broken_axis", "broken",
            "breaks_figure", "kept_span", "span_of", "warn_hidden_labels", "lay_out", "plate_names", "moved_geom", "break_shift"]

@@ -18,11 +18,14 @@ import bisect
 import math
 from collections import defaultdict
 from dataclasses import dataclass
-from typing import Iterable, Iterator
+from typing import TYPE_CHECKING, Iterable, Iterator
 
 from ...render.camera import PLAYER_FIGURE_PX
 from .player import END_LEVEL
 from .sheet import Box, Sheet
+
+if TYPE_CHECKING:  # (numpy is imported where it is used: the annotations name it)
+    import numpy as np
 
 __all__ = ["Runs", "merge_runs", "both_runs", "runs_without", "in_runs", "runs_of", "steps_of", "view_total",
            "boxes_meet", "Layout", "Views", "player_window", "player_letter_scale", "zoom_level", "MIN_OPACITY",

@@ -16,7 +16,7 @@ import pytest
 from construct.cli.main import main
 from construct.constructions import get
 from construct.live import live_data, live_givens, live_sweep, player_page
-from construct.live.sweep import QUANTUM_PX
+from construct.live.sweep import QUANTUM_PX, pieces
 from construct.render.wire import arc_flags, blend, decode, drawn_numbers, inflated, radii
 from construct.render.styles import STYLES
 
@@ -379,13 +379,25 @@ def test_an_unlettered_build_takes_the_steps_of_a_lettered_one():
         assert repr(sketch.replay[name]) == repr(again[name]), name
 
 
-def test_an_end_state_that_is_mostly_the_plates_furniture_is_held_at_the_books_value():
-    """The end state follows the slider where its own marks (swept) are most of it; Tafel 2's stroke fractions are
-    drawn by the plate's furniture (57 ordinates, dots and values, which the sweep does not carry against 32 marks):
-    its page keeps the end state at the book's values and shows the construction's marks elsewhere."""
-    from construct.live import Measure
-
-    crank, fractions = get("crank"), get("inertia-stroke-fractions")
-    assert not Measure(crank, crank.figure(parts=3)).end_held
-    held = Measure(fractions, fractions.figure())
-    assert held.end_held and len(held.template.end_furniture) > len(held.template.end_marks)
+def test_tafel_2s_end_state_writes_the_inertia_pressures_of_every_rod_ratio():
+    """The stroke fractions' end state is drawn mostly by the plate (57 ordinates, dots and values against 32
+    marks): its values follow the slider, each the inertia pressure at its tenth of the stroke at that grid value --
+    q = F/f (cos phi + r/L cos 2 phi) at the crank angle where the piston has gone k/10 of the stroke (its pin at X
+    from the crank centre, cos phi = (X^2 + r^2 - L^2) / (2 X r)) -- not the book's at every value."""
+    c = get("inertia-stroke-fractions")
+    fig = c.figure()
+    given = live_givens(c, fig)[0]
+    piece = next(p for p in pieces(c, fig, "rod_ratio", given.domain) if p.low <= 20 <= p.high)
+    live = live_sweep(c, fig, "rod_ratio", piece=piece)
+    assert not live.furniture_held
+    ids = sorted((i for i, texts in live.reading_texts.items() if texts[0][:1] in "+−"), key=lambda i: int(i[5:]))
+    k = np.arange(11) / 10
+    for g, lr in enumerate(live.grid):
+        written = [live.reading_texts[i][g] for i in ids]
+        values = [float(t.replace("−", "-").replace(",", ".")) for a, t in enumerate(written) if a % 2 == 0]
+        x = np.float64(2 * k)  # (r = 1: the piston's way from the outer dead centre)
+        pin = lr + 1 - x
+        cos = np.clip((pin ** 2 + 1 - lr ** 2) / (2 * pin), -1, 1)
+        q = cos + (2 * cos ** 2 - 1) / lr
+        assert len(values) == 11 and written[::2] == written[1::2], (lr, written)  # (each with its halo)
+        assert np.abs(np.asarray(values) - q).max() <= 0.0015, (lr, values, np.round(q, 3).tolist())

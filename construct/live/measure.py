@@ -130,9 +130,6 @@ class Measure:
         self.least = 1.0 / MAX_ZOOM
         self._end_framing = self._held_end_view(scene, drawing)
         self.template = scene
-        #: the end state is mostly the plate's furniture (which the sweep does not carry: Tafel 2's ordinates and
-        #: their values): the player shows it at the book's values only, the construction's marks elsewhere
-        self.end_held = drawing.end is not None and len(scene.end_furniture) > len(scene.end_drawn())
         #: the end state's view and letters' places: its furniture (the plate's) is drawn at every value as the
         #: drawing draws it (:func:`~construct.render.end_state.end_furniture`), the letters' offsets the built ones
         self.end, self.placing = drawing.end, drawing.placing

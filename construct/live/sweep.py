@@ -459,9 +459,6 @@ class LiveSweep:
     whole: Domain | None = None
     #: The areas the page draws from the graphs that bound them (:func:`construct.live.measure.areas_of`).
     areas: list[list[str]] = field(default_factory=list)
-    #: The end state is shown at the book's values only (its furniture, which the sweep does not carry, is most of
-    #: it: :attr:`construct.live.Measure.end_held`); the last step shows the construction's marks elsewhere.
-    end_held: bool = False
     #: The end state's furniture (the plate's dimensions, scales, lettering and added lines) is held at the book's
     #: value over this sweep (its form changes across the domain: :meth:`construct.live.Measure.furniture_keeps_form`);
     #: it follows the given else.
@@ -516,18 +513,18 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     measure = measure or Measure(construction, figure, style, drawing=drawing)
     lo, hi = math.log10(domain.low), math.log10(domain.high)
     # the end state's furniture follows the given where it keeps its form over the domain (asked at FORM_SCAN
-    # values, as the steps' form is: :func:`pieces`), else it is held at the book's value -- as it is where the
-    # whole end state is (end_held: the page shows the construction's marks there away from the book's values)
-    # (a piece of the domain its share of them)
+    # values, as the steps' form is: :func:`pieces`), item by item (a plate of panels is held whole at the book's
+    # value), so that an end state drawn mostly by the plate -- Tafel 2's ordinates, dots and values -- is the
+    # finished figure at every value (a piece of the domain its share of them)
     share = (hi - lo) / math.log10(whole.high / whole.low)
     scan = np.unique(np.clip(10.0 ** np.append(np.linspace(lo, hi, max(3, round(FORM_SCAN * share))),
                                                math.log10(initial)), domain.low, domain.high))
     # -- item by item: the items that come and go over them (a scale's ticks) shown where the nearer grid value's
     # plate has them, the rest swept
-    kept = frozenset() if measure.end_held or not measure.held[0] else measure.furniture_kept(
+    kept = frozenset() if not measure.held[0] else measure.furniture_kept(
         protocol, protocol.replay(construction.given_sweep(dict(figure.replay.givens), given, scan, protocol.params)),
         len(scan))
-    measure.furniture_live = not measure.end_held and kept is not None
+    measure.furniture_live = kept is not None
     measure.hidden_items = kept or frozenset()
     us = list(np.linspace(lo, hi, start))
     values = lambda u: np.clip(10.0 ** np.asarray(u), domain.low, domain.high)  # noqa: E731
@@ -628,8 +625,8 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
                      fixed=fixed, snapped=snapped, u=np.asarray(us, dtype=float), start=start, readings=varying,
                      # the fit travels as float32: the columns are checked against the drawing through it
                      fit=np.asarray([data[u][2] for u in us], dtype=np.float32).astype(float),
-                     label_px=float(style.label_size), live=live, areas=measure.areas, end_held=measure.end_held,
-                     furniture_held=not measure.furniture_live and not measure.end_held and bool(measure.held[0]),
+                     label_px=float(style.label_size), live=live, areas=measure.areas,
+                     furniture_held=not measure.furniture_live and bool(measure.held[0]),
                      furniture_absent=absent,
                      furniture_note=measure.hidden_note(symbol) if measure.furniture_live else "",
                      reading_texts={i: [data[u][3].get(i, "") for u in us] for i in varying},

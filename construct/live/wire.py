@@ -334,7 +334,6 @@ def live_data(live: LiveSweep) -> dict[str, Any]:
             **({"derived": {k: {"values": v, "written": list(DERIVED_WRITTEN[k])} for k, v in live.derived.items()}}
                if live.derived else {}),
             **({"readings": live.readings} if live.readings else {}),
-            **({"end_held": True} if live.end_held else {}),
             **({"furniture_held": True} if live.furniture_held else {}),
             **({"furniture_note": live.furniture_note} if live.furniture_note else {}),
             **encode(live), "bound": round(live.bound + QUANTUM_PX / 2, 3),

@@ -803,16 +803,13 @@ LIVE_SCRIPT = r"""
     // (the end state, the last step drawn as the book's plate, follows as the rest: its own marks and the plate's
     // furniture there are swept; what the furniture writes that is read off the figure is a reading, below)
     var atBook = Math.abs(Math.log10(value) - Math.log10(S.L.initial)) < 1e-9;  // (the other givens are there)
-    // (an end state that is mostly the plate's furniture, live/measure.py end_held: at the book's values alone, the
-    // construction's marks elsewhere)
-    if (player && endAt) player.data.end = atBook || !S.L.end_held ? endAt : 0;
     // (the plate's furniture there follows the given, unless its form changes over the domain: live/measure.py
     // furniture_keeps_form; then it is shown at the book's values alone, and the page says so)
     var furnitureShown = furnitureOn = atBook || !S.L.furniture_held;
     for (var fi = 0; fi < endFurniture.length; fi++) {
       var fs = furnitureShown ? "" : "none"; if (endFurniture[fi].style.display !== fs) endFurniture[fi].style.display = fs;
     }
-    var noted = atBook || !(S.L.end_held || S.L.furniture_held || S.L.furniture_note);
+    var noted = atBook || !(S.L.furniture_held || S.L.furniture_note);
     if (endNote && endNote.hidden !== noted) endNote.hidden = noted;
     if (endNote && !noted) {  // (each given's own: what of the plate comes and goes with it)
       var said = S.L.furniture_note || endNote.getAttribute("data-held");
@@ -1006,14 +1003,12 @@ LIVE_SCRIPT = r"""
     HATCH = player ? player.data.hatch : null;
     endFurniture = Array.prototype.slice.call(svg.querySelectorAll("#furniture > g.fo"));
     svg.querySelectorAll("#furniture g.fo.end text").forEach(function(t){ if (/^L\s*=\s*[0-9]/.test(t.textContent)) endWritesRod = true; });
-    var held = LIST.filter(function(L){ return L.end_held || L.furniture_held || L.furniture_note; });
+    var held = LIST.filter(function(L){ return L.furniture_held || L.furniture_note; });
     if (player && player.data.end && held.length) {
       endNote = document.createElement("div");
       endNote.className = "live-end"; endNote.hidden = true; endNote.setAttribute("style", "color:#777;font-size:12px");
-      var wholly = LIST.filter(function(L){ return L.end_held || L.furniture_held; });
-      endNote.textContent = !wholly.length ? held[0].furniture_note : wholly[0].end_held ?
-        "Der letzte Schritt zeigt das Bild der Tafel beim Buchwert; hier alle Linien der Konstruktion. / The last step " +
-        "shows the plate’s look at the book’s value; here every line of the construction." :
+      var wholly = LIST.filter(function(L){ return L.furniture_held; });
+      endNote.textContent = !wholly.length ? held[0].furniture_note :
         "Der letzte Schritt zeigt Maße, Skala und Beschriftung der Tafel nur beim Buchwert von " + wholly[0].symbol +
         " (ihre Form ändert sich mit ihm). / The last step shows the plate’s dimensions, scale and lettering at the " +
         "book’s value of " + wholly[0].symbol + " only (their form changes with it).";

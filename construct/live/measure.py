@@ -134,8 +134,8 @@ class Measure:
         #: drawing draws it (:func:`~construct.render.end_state.end_furniture`), the letters' offsets the built ones
         self.end, self.placing = drawing.end, drawing.placing
         #: the end state's furniture as built (keys, numbers, texts); drawn at every value while
-        #: :attr:`furniture_live` (the sweep of a given over which it keeps its form: :meth:`furniture_keeps_form`),
-        #: held at these numbers else (the page shows it at the book's values alone)
+        #: :attr:`furniture_live` (the sweep of a given over which it can be matched item by item:
+        #: :meth:`furniture_kept`), held at these numbers else (the page shows it at the book's values alone)
         self._built = built
         self._items = scene.end_furniture
         #: each built furniture element's item: {its id: the item's index in the built furniture}

@@ -460,8 +460,8 @@ class LiveSweep:
     #: The areas the page draws from the graphs that bound them (:func:`construct.live.measure.areas_of`).
     areas: list[list[str]] = field(default_factory=list)
     #: The end state's furniture (the plate's dimensions, scales, lettering and added lines) is held at the book's
-    #: value over this sweep (its form changes across the domain: :meth:`construct.live.Measure.furniture_keeps_form`);
-    #: it follows the given else.
+    #: value over this sweep (it cannot be matched item by item across the domain, a plate of panels:
+    #: :meth:`construct.live.Measure.furniture_kept`); it follows the given else.
     furniture_held: bool = False
     #: The end state's furniture elements of the items that come and go over the domain (a scale's ticks:
     #: :attr:`construct.live.Measure.hidden_items`), by id: at each grid value 1 where its plate lacks them (the

@@ -803,8 +803,9 @@ LIVE_SCRIPT = r"""
     // (the end state, the last step drawn as the book's plate, follows as the rest: its own marks and the plate's
     // furniture there are swept; what the furniture writes that is read off the figure is a reading, below)
     var atBook = Math.abs(Math.log10(value) - Math.log10(S.L.initial)) < 1e-9;  // (the other givens are there)
-    // (the plate's furniture there follows the given, unless its form changes over the domain: live/measure.py
-    // furniture_keeps_form; then it is shown at the book's values alone, and the page says so)
+    // (the plate's furniture there follows the given item by item, unless it cannot be matched so over the domain,
+    // a plate of panels: live/measure.py furniture_kept; then it is shown at the book's values alone, and the page
+    // says so)
     var furnitureShown = furnitureOn = atBook || !S.L.furniture_held;
     for (var fi = 0; fi < endFurniture.length; fi++) {
       var fs = furnitureShown ? "" : "none"; if (endFurniture[fi].style.display !== fs) endFurniture[fi].style.display = fs;

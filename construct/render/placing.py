@@ -347,30 +347,7 @@ class Placing:
         writes it, else beside it; the plate's *strokes* (canvas px: its ordinates) are kept clear of as its
         result lines are.  Sets :attr:`end_spots` and :attr:`end_rules`.
         """
-        st = self.style
-        size = st.label_size * letter
-        span = self.scene.bbox[2] - self.scene.bbox[0]
-        look = self.scene.end_look
-        dots = [self.vp.px(*m.geom) for m in marks if m.kind is MarkKind.POINT and "hidden" not in look(m).split()]
-        lines = list(strokes)
-        for m in marks:
-            if m.role == "result" and m.kind.stroked and "hidden" not in look(m).split():
-                pts = [self.vp.px(*q) for q in _polyline(m, self.vp.scale)]
-                lines.extend((a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:]))
-        items, prefer = [], {}
-        for fid, at, text in lettering:
-            items.append((fid, "result", 0, at, (0.0, 1.0), text))
-            prefer[fid] = (0.0, 0.35 * size, 0.0)
-        for m in marks:
-            if not m.label:
-                continue
-            p = self.vp.px(*m.geom)
-            items.append((m.id, m.role, m.step, p, label_offset_direction(m.geom, scale=span), m.label))
-            spot = self.spots.get(m.id)
-            if spot is not None:
-                prefer[m.id] = ((spot[0] - p[0]) * letter, (spot[1] - p[1]) * letter, spot[2])
-        got = place(items, size, dots, LineIndex(size, lines), font=st.label_font, italic=st.label_italic,
-                    taken=list(taken), keep=False, prefer=prefer, halo=HALO_PX / 2 * letter, reach=self.line_reach)
+        items, got = self._end_place(self.vp, letter, marks, taken, lettering, strokes, lettered=True)
         spots, rules = {}, []
         for mid, _r, _s, (px, py), _d, _t in items:
             spot = got.get(mid)
@@ -385,6 +362,64 @@ class Placing:
             rules.append(f".fin #{mid}-lb>.lb{{transform:scale(var(--ls,var(--zs,1))) "
                          f"translate({fmt(dx)}px,{fmt(dy)}px)}}")
         self.end_spots, self.end_rules = spots, rules
+
+    def end_lettering_at(self, vp: Viewport, letter: float, marks: Sequence[Mark],
+                         taken: Sequence[tuple[float, float, float, float]],
+                         lettering: Sequence[tuple[str, tuple[float, float], str]],
+                         strokes: Sequence[tuple[float, float, float, float]] = ()) -> dict[str, tuple[float, float, float]]:
+        """The plate's *lettering* placed as :meth:`place_end` places it, at another value of a live given: its end
+        state's *marks*, *taken* boxes and *strokes* those of that value (drawn on *vp*), at the built end state's
+        *letter* scale; the marks' own letters stand where :attr:`end_spots` set them about their points (the live
+        page moves them with their points) and are kept clear of.  {id: (dx, dy, distance)} as :attr:`end_spots`
+        has them.  Each stays where it stood at the built value where there is room (the values the plate writes
+        crowd as the figure changes: Tafel 2's inertia pressures at L/r = 2 written on one another where the built
+        offsets were kept everywhere)."""
+        st = self.style
+        size = st.label_size * letter
+        held = list(taken)
+        for m in marks:
+            rel = self.end_spots.get(m.id)
+            if m.label and rel is not None:
+                px, py = vp.px(*m.geom)
+                held.append(label_box(px + letter * rel[0], py + letter * rel[1], m.label, size, st.label_font,
+                                      st.label_italic))
+        items, got = self._end_place(vp, letter, marks, held, lettering, strokes, lettered=False)
+        return {fid: ((spot[0] - px) / letter, (spot[1] - py) / letter, spot[2])
+                for fid, _r, _s, (px, py), _d, _t in items if (spot := got.get(fid)) is not None}
+
+    def _end_place(self, vp: Viewport, letter: float, marks: Sequence[Mark],
+                   taken: Sequence[tuple[float, float, float, float]],
+                   lettering: Sequence[tuple[str, tuple[float, float], str]],
+                   strokes: Sequence[tuple[float, float, float, float]], *, lettered: bool) -> tuple[list, dict]:
+        """The end state's letters placed on *vp* (:meth:`place_end`; *lettered*: the marks' letters with the
+        plate's lettering, else the lettering alone): the items placed and their spots."""
+        st = self.style
+        size = st.label_size * letter
+        span = self.scene.bbox[2] - self.scene.bbox[0]
+        look = self.scene.end_look
+        dots = [vp.px(*m.geom) for m in marks if m.kind is MarkKind.POINT and "hidden" not in look(m).split()]
+        lines = list(strokes)
+        for m in marks:
+            if m.role == "result" and m.kind.stroked and "hidden" not in look(m).split():
+                pts = [vp.px(*q) for q in _polyline(m, vp.scale)]
+                lines.extend((a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:]))
+        items, prefer = [], {}
+        for fid, at, text in lettering:
+            items.append((fid, "result", 0, at, (0.0, 1.0), text))
+            # (first where the plate writes it; at another value, where it stood at the built one)
+            rel = None if lettered else self.end_spots.get(fid)
+            prefer[fid] = (0.0, 0.35 * size, 0.0) if rel is None else (rel[0] * letter, rel[1] * letter, rel[2])
+        for m in marks if lettered else ():
+            if not m.label:
+                continue
+            p = vp.px(*m.geom)
+            items.append((m.id, m.role, m.step, p, label_offset_direction(m.geom, scale=span), m.label))
+            spot = self.spots.get(m.id)
+            if spot is not None:
+                prefer[m.id] = ((spot[0] - p[0]) * letter, (spot[1] - p[1]) * letter, spot[2])
+        got = place(items, size, dots, LineIndex(size, lines), font=st.label_font, italic=st.label_italic,
+                    taken=list(taken), keep=False, prefer=prefer, halo=HALO_PX / 2 * letter, reach=self.line_reach)
+        return items, got
 
     def place_tags(self, views: Sequence[View], full: View,
                    input_steps: Callable[[int], frozenset[int]]) -> None:

@@ -1260,3 +1260,34 @@ def test_the_inset_magnifies_where_a_fresh_replay_magnifies_it_while_dragging(br
             assert math.hypot(x - a, y - b) <= 0.5 and (x, y) == (ox, oy), (v, (x, y), (a, b), (ox, oy))
     assert not errors, errors
     page.close()
+
+
+# every value the plate writes in the end state (its lettering, not its halos) that the page shows, as screen boxes
+_WRITTEN = """() => JSON.stringify(Array.from(document.querySelectorAll('#furniture text')).filter(t =>
+    !t.classList.contains('halo') && t.getClientRects().length && /[0-9]/.test(t.textContent)).map(t => {
+      const r = t.getBoundingClientRect(); return [t.textContent, r.left, r.top, r.right, r.bottom]; }))"""
+
+
+@pytest.mark.parametrize("v", [1.05, 2.0, 1000.0])
+def test_the_values_the_plate_writes_stay_clear_of_one_another_while_dragging(browser, v):
+    """Tafel 2's end state writes the eleven inertia pressures beside their ordinates.  As L/r moves the ordinates
+    crowd (at L/r 2 the last ones nearly equal): the page writes each value where a placing at that value sets it
+    (where it stood at the book's value while there is room), so that no two overlap on the screen -- they were
+    written on one another at L/r 2 while the page kept the book's value's offsets -- and each value belongs to
+    its ordinate (its text a number)."""
+    path = REPO / "gallery" / "inertia-stroke-fractions-rod-ratio-5" / "teaching" / "player.html"
+    if not path.is_file():
+        pytest.skip("no committed gallery in this checkout")
+    page, errors = _open(browser, path)
+    _at(page, "end")
+    _at_step_view(page)
+    for u in np.geomspace(5.0, v, 24)[1:]:  # (a slow drag there)
+        _drag_to(page, "rod_ratio", float(u))
+    written = json.loads(page.evaluate(_WRITTEN))
+    assert len(written) >= 11, written
+    for i, a in enumerate(written):
+        for b in written[i + 1:]:
+            over = min(a[3], b[3]) - max(a[1], b[1]), min(a[4], b[4]) - max(a[2], b[2])
+            assert min(over) <= 1.0, f"L/r = {v}: {a[0]} and {b[0]} overlap by {over[0]:.1f} x {over[1]:.1f} px"
+    assert not errors, errors
+    page.close()

@@ -1291,3 +1291,33 @@ def test_the_values_the_plate_writes_stay_clear_of_one_another_while_dragging(br
             assert min(over) <= 1.0, f"L/r = {v}: {a[0]} and {b[0]} overlap by {over[0]:.1f} x {over[1]:.1f} px"
     assert not errors, errors
     page.close()
+
+
+def test_the_checks_name_the_value_they_belong_to(browser, live_player):
+    """Between the values the checks were computed at, the table's numbers are one such value's (a check's error is
+    its point: a blend of two values' would claim a check nobody made): the heading names that value and says it
+    is the nearest computed one to the slider's, and every row is what ``construct check`` at the named value
+    gives, to the digits written.  At a value computed, the heading names it alone."""
+    c, _, path = live_player
+    page, errors = _open(browser, path)
+    _drag_to(page, "rod_ratio", 3.3)
+    head = page.locator("#live-at").inner_text()
+    got = re.fullmatch(r"\(L/r = ([0-9,]+): nächster berechneter Wert zu 3,3 / the nearest computed value to 3\.3\)",
+                       head)
+    assert got, head
+    at = float(got.group(1).replace(",", "."))
+    assert at != 3.3
+    fresh = c.checks(c.figure(parts=3, rod_ratio=at))
+    # (the rows out of sight wait while dragging, until they come into sight: flush brings them up to date)
+    rows = page.evaluate("""() => { window.constructLive.flush(); return Array.from(document.querySelectorAll('#live-checks tbody tr')).map(r =>
+        Array.from(r.cells).map(td => td.textContent)); }""")
+    assert len(rows) == len(fresh)
+    for row, ck in zip(rows, fresh):
+        assert row[0] == ck.name
+        # (the value named is written to four digits: the checks there to the digits the page writes, 8)
+        for text, want in ((row[1], ck.measured), (row[2], ck.expected)):
+            assert abs(float(text) - want) <= 5e-4 * max(abs(want), 1e-9), (ck.name, text, want)
+    _drag_to(page, "rod_ratio", 5.0)
+    assert page.locator("#live-at").inner_text() == "(L/r = 5)"
+    assert not errors, errors
+    page.close()

@@ -4,7 +4,8 @@
 an ``<input type="range" name="GIVEN">`` per given (log10 of the given over its stated
 domain: the rod ratio runs from 1.05 to 1000, and a teacher lives between 3 and
 8), the value in the book's notation, the construction's checks at the
-nearest grid value, and a script that interpolates every drawn coordinate
+nearest grid value they were computed at (the heading names it, and says so where the slider stands between
+two), and a script that interpolates every drawn coordinate
 between the grid values the data (:mod:`construct.live`) holds, in the wire format of
 :mod:`construct.render.wire`.  Each given has its own sweep, taken with the
 others at the book's values: one given moves at a time, and moving one sets
@@ -961,9 +962,14 @@ LIVE_SCRIPT = r"""
     if (!L.checks || !L.checks.length) return;
     var k = 0, bd = Infinity;  // the nearest value the checks were swept at, in log10
     L.check_values.forEach(function(v, i){ var d = Math.abs(Math.log10(v) - u); if (d < bd) { bd = d; k = i; } });
+    // the value the numbers belong to, and, where the slider stands elsewhere, that it is the nearest one computed
+    // (a check's error is its point: a blend of two values' numbers would claim a check no one made)
+    var at = L.check_values[k], own = book(at) === book(Math.pow(10, u));
+    put(document.getElementById("live-at"), "(" + L.symbol + " = " + book(at) + (own ? ")" :
+        ": nächster berechneter Wert zu " + book(Math.pow(10, u)) + " / the nearest computed value to " +
+        String(Number(Math.pow(10, u).toPrecision(4))) + ")"));
     if (k === shownAt && L === shownL) { if (!dragging) fillStale(); return; }
     shownAt = k; shownL = L;
-    put(document.getElementById("live-at"), "(" + L.symbol + " = " + book(L.check_values[k]) + ")");
     var rows = L.checks[k];
     // the rows are made once (a rebuilt table is laid out anew, at the cost of a frame); their cells change
     while (rowsOf.length > rows.length) {

@@ -1309,8 +1309,9 @@ def test_the_checks_name_the_value_they_belong_to(browser, live_player):
     assert at != 3.3
     fresh = c.checks(c.figure(parts=3, rod_ratio=at))
     # (the rows out of sight wait while dragging, until they come into sight: flush brings them up to date)
-    rows = page.evaluate("""() => { window.constructLive.flush(); return Array.from(document.querySelectorAll('#live-checks tbody tr')).map(r =>
-        Array.from(r.cells).map(td => td.textContent)); }""")
+    rows = page.evaluate("""() => { window.constructLive.flush();
+        return Array.from(document.querySelectorAll('#live-checks tbody tr')).map(r =>
+          Array.from(r.cells).map(td => td.textContent)); }""")
     assert len(rows) == len(fresh)
     for row, ck in zip(rows, fresh):
         assert row[0] == ck.name

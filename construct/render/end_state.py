@@ -36,8 +36,8 @@ from .styles import Style
 from .svgdoc import Element, Writer, fmt
 from .viewport import Viewport
 
-__all__ = ["EndView", "END_MARGIN_PX", "lay_out_end", "end_fixed", "end_lettering", "end_lettering_at", "end_furniture", "end_sheet",
-           "own_strokes", "wrapped", "NumbersFactory", "furniture_numbers"]
+__all__ = ["EndView", "END_MARGIN_PX", "lay_out_end", "end_fixed", "end_lettering", "end_lettering_at", "end_furniture",
+           "end_sheet", "own_strokes", "wrapped", "NumbersFactory", "furniture_numbers"]
 
 #: The margin round the end state's drawing on its sheet (screen px at the end view).
 END_MARGIN_PX = 14.0
@@ -228,7 +228,8 @@ def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, en
 
 
 def end_furniture(scene: Scene, style: Style, vp: Viewport, end: EndView, placing: Placing, factory: Any,
-                  owners: dict[str, int] | None = None, spots: dict[str, tuple[float, float, float]] | None = None) -> Any:
+                  owners: dict[str, int] | None = None,
+                  spots: dict[str, tuple[float, float, float]] | None = None) -> Any:
     """The plate's furniture in the end state (``<g class="fo end">``), its letters at the size of the end
     state's, its lettering where the end state's placing set it (upright; tied to its place by a leader when
     set off).  Each of its elements has an id in the order drawn (``fin-s<k>``: the line of a stroke the plate

@@ -366,7 +366,8 @@ class Placing:
     def end_lettering_at(self, vp: Viewport, letter: float, marks: Sequence[Mark],
                          taken: Sequence[tuple[float, float, float, float]],
                          lettering: Sequence[tuple[str, tuple[float, float], str]],
-                         strokes: Sequence[tuple[float, float, float, float]] = ()) -> dict[str, tuple[float, float, float]]:
+                         strokes: Sequence[tuple[float, float, float, float]] = (),
+                         ) -> dict[str, tuple[float, float, float]]:
         """The plate's *lettering* placed as :meth:`place_end` places it, at another value of a live given: its end
         state's *marks*, *taken* boxes and *strokes* those of that value (drawn on *vp*), at the built end state's
         *letter* scale; the marks' own letters stand where :attr:`end_spots` set them about their points (the live

@@ -347,7 +347,7 @@ class Placing:
         writes it, else beside it; the plate's *strokes* (canvas px: its ordinates) are kept clear of as its
         result lines are.  Sets :attr:`end_spots` and :attr:`end_rules`.
         """
-        items, got = self._end_place(self.vp, letter, marks, taken, lettering, strokes, lettered=True)
+        items, got, _, _ = self._end_place(self.vp, letter, marks, taken, lettering, strokes, lettered=True)
         spots, rules = {}, []
         for mid, _r, _s, (px, py), _d, _t in items:
             spot = got.get(mid)
@@ -366,12 +366,13 @@ class Placing:
     def end_lettering_at(self, vp: Viewport, letter: float, marks: Sequence[Mark],
                          taken: Sequence[tuple[float, float, float, float]],
                          lettering: Sequence[tuple[str, tuple[float, float], str]],
-                         strokes: Sequence[tuple[float, float, float, float]] = (),
+                         strokes: Sequence[tuple[float, float, float, float]] = (), *, built: float | None = None,
                          ) -> dict[str, tuple[float, float, float]]:
         """The plate's *lettering* placed as :meth:`place_end` places it, at another value of a live given: its end
         state's *marks*, *taken* boxes and *strokes* those of that value (drawn on *vp*), at the built end state's
-        *letter* scale; the marks' own letters stand where :attr:`end_spots` set them about their points (the live
-        page moves them with their points) and are kept clear of.  {id: (dx, dy, distance)} as :attr:`end_spots`
+        *letter* scale (*built*: the built end state's, where the page writes the lettering before scaling it about
+        its middle, if another); the marks' own letters stand where :attr:`end_spots` set them about their points
+        (the live page moves them with their points, at *letter*) and are kept clear of.  {id: (dx, dy, distance)} as :attr:`end_spots`
         has them.  Each stays where it stood at the built value where there is room (the values the plate writes
         crowd as the figure changes: Tafel 2's inertia pressures at L/r = 2 written on one another where the built
         offsets were kept everywhere)."""
@@ -384,16 +385,30 @@ class Placing:
                 px, py = vp.px(*m.geom)
                 held.append(label_box(px + letter * rel[0], py + letter * rel[1], m.label, size, st.label_font,
                                       st.label_italic))
-        items, got = self._end_place(vp, letter, marks, held, lettering, strokes, lettered=False)
+        items, got, dots, lines = self._end_place(vp, letter, marks, held, lettering, strokes, lettered=False,
+                                                  built=letter if built is None else built)
+        # a letter the crowd sends off beyond a leader's reach where the built one stood near (or the other way
+        # round) would change the plate's elements, which the page knows by their order: it stands as near as it
+        # is free of the other letters and points, crossing the lines if it must (they are soft for it)
+        lead = {fid for fid, _r, _s, _p, _d, _t in items if fid in got and fid in self.end_spots
+                and (got[fid][2] >= LEADER_FROM) != (self.end_spots[fid][2] >= LEADER_FROM)}
+        if lead:
+            others = [label_box(got[f][0], got[f][1], t, size, st.label_font, st.label_italic)
+                      for f, _r, _s, _p, _d, t in items if f in got and f not in lead]
+            got.update(place([it for it in items if it[0] in lead], size, dots, LineIndex(size, []),
+                             font=st.label_font, italic=st.label_italic, taken=held + others, keep=False,
+                             halo=HALO_PX / 2 * letter, reach=self.line_reach, soft=LineIndex(size, lines)))
         return {fid: ((spot[0] - px) / letter, (spot[1] - py) / letter, spot[2])
                 for fid, _r, _s, (px, py), _d, _t in items if (spot := got.get(fid)) is not None}
 
     def _end_place(self, vp: Viewport, letter: float, marks: Sequence[Mark],
                    taken: Sequence[tuple[float, float, float, float]],
                    lettering: Sequence[tuple[str, tuple[float, float], str]],
-                   strokes: Sequence[tuple[float, float, float, float]], *, lettered: bool) -> tuple[list, dict]:
+                   strokes: Sequence[tuple[float, float, float, float]], *, lettered: bool,
+                   built: float = 0.0) -> tuple[list, dict, list, list]:
         """The end state's letters placed on *vp* (:meth:`place_end`; *lettered*: the marks' letters with the
-        plate's lettering, else the lettering alone): the items placed and their spots."""
+        plate's lettering, else the lettering alone, each first where it stood at the *built* letter scale): the
+        items placed, their spots, and the points and lines they keep clear of."""
         st = self.style
         size = st.label_size * letter
         span = self.scene.bbox[2] - self.scene.bbox[0]
@@ -409,7 +424,7 @@ class Placing:
             items.append((fid, "result", 0, at, (0.0, 1.0), text))
             # (first where the plate writes it; at another value, where it stood at the built one)
             rel = None if lettered else self.end_spots.get(fid)
-            prefer[fid] = (0.0, 0.35 * size, 0.0) if rel is None else (rel[0] * letter, rel[1] * letter, rel[2])
+            prefer[fid] = (0.0, 0.35 * size, 0.0) if rel is None else (rel[0] * built, rel[1] * built, rel[2])
         for m in marks if lettered else ():
             if not m.label:
                 continue
@@ -420,7 +435,7 @@ class Placing:
                 prefer[m.id] = ((spot[0] - p[0]) * letter, (spot[1] - p[1]) * letter, spot[2])
         got = place(items, size, dots, LineIndex(size, lines), font=st.label_font, italic=st.label_italic,
                     taken=list(taken), keep=False, prefer=prefer, halo=HALO_PX / 2 * letter, reach=self.line_reach)
-        return items, got
+        return items, got, dots, lines
 
     def place_tags(self, views: Sequence[View], full: View,
                    input_steps: Callable[[int], frozenset[int]]) -> None:

@@ -37,8 +37,7 @@ from .svgdoc import Element, Writer, fmt
 from .viewport import Viewport
 
 __all__ = ["EndView", "END_MARGIN_PX", "lay_out_end", "end_fixed", "end_lettering", "end_letter_at", "end_lettering_at",
-           "end_furniture",
-           "end_sheet", "own_strokes", "wrapped", "NumbersFactory", "furniture_numbers"]
+           "end_furniture", "end_sheet", "own_strokes", "wrapped", "NumbersFactory", "furniture_numbers"]
 
 #: The margin round the end state's drawing on its sheet (screen px at the end view).
 END_MARGIN_PX = 14.0
@@ -227,10 +226,10 @@ def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, en
                      factory: Any, letter: float | None = None) -> dict[str, tuple[float, float, float]]:
     """Where the plate's lettering of *sheet* (anything with ``end_furniture``: the plate at another value of a live
     given, in the built plate's form) stands about its places at that value, as :func:`lay_out_end` places it
-    (:meth:`~construct.render.placing.Placing.end_lettering_at`: among that value's end-state *marks* on *vp*, at
-    the built end state's letter size): {id: (dx, dy, distance)}, as ``placing.end_spots``.  A letter with no room
-    there, or one that would take a leader where the built one has none (or lose its leader), keeps its built
-    spot: the furniture keeps its form over the sweep (its elements, by which the page knows them).  *letter*: the
+    (:meth:`~construct.render.placing.Placing.end_lettering_at`: among that value's end-state *marks* on *vp*):
+    {id: (dx, dy, distance)}, as ``placing.end_spots``.  A letter with no room there, or one that would take a
+    leader where the built one has none (or lose its leader), keeps its built spot: the furniture keeps its form
+    over the sweep (its elements, by which the page knows them).  *letter*: the
     player's letter scale there (:func:`end_letter_at`; the built one's without), at which the page shows the
     plate's lettering (scaled about its middle by *letter* over the built one's) and the marks' letters: they are
     placed at that size, each spot given in the built letter's units, where the page writes the lettering."""

@@ -369,11 +369,10 @@ class Placing:
                          strokes: Sequence[tuple[float, float, float, float]] = (), *, built: float | None = None,
                          ) -> dict[str, tuple[float, float, float]]:
         """The plate's *lettering* placed as :meth:`place_end` places it, at another value of a live given: its end
-        state's *marks*, *taken* boxes and *strokes* those of that value (drawn on *vp*), at the built end state's
-        *letter* scale (*built*: the built end state's, where the page writes the lettering before scaling it about
-        its middle, if another); the marks' own letters stand where :attr:`end_spots` set them about their points
-        (the live page moves them with their points, at *letter*) and are kept clear of.  {id: (dx, dy, distance)} as :attr:`end_spots`
-        has them.  Each stays where it stood at the built value where there is room (the values the plate writes
+        state's *marks*, *taken* boxes and *strokes* those of that value (drawn on *vp*), at the player's *letter*
+        scale there (*built*: the built end state's, if another: where the lettering stood); the marks' own letters
+        stand where :attr:`end_spots` set them about their points (the live page moves them with their points, at
+        *letter*) and are kept clear of.  {id: (dx, dy, distance)} in *letter*'s units.  Each stays where it stood at the built value where there is room (the values the plate writes
         crowd as the figure changes: Tafel 2's inertia pressures at L/r = 2 written on one another where the built
         offsets were kept everywhere)."""
         st = self.style

@@ -28,7 +28,7 @@ import numpy as np
 from ..constructions import Construction
 from ..figure import Figure
 from ..render.camera import FINAL_CONTEXT, MAX_ZOOM, ZOOM_LEVELS, Framing, clip_view
-from ..render.end_state import NumbersFactory, end_furniture, end_letter_at, end_lettering_at, furniture_numbers
+from ..render.end_state import NumbersFactory, end_furniture, end_lettering_at, furniture_numbers
 from ..render.output import scene_for
 from ..render.insets import inset_detail
 from ..render.plate import Lettering, plain, plate_of, shifted, subscript_runs
@@ -199,15 +199,15 @@ class Measure:
         return self.view_of[-1], view, box, ids
 
     def _furniture(self, items: tuple, vp: Any, exact: bool = True, owners: dict[str, int] | None = None,
-                   marks: Any = None, letter: float | None = None) -> tuple[list, list[float], dict[str, str]]:
+                   marks: Any = None) -> tuple[list, list[float], dict[str, str]]:
         """The end state's furniture *items* (the plate's, on the sheet's broken axis) drawn on *vp* (anything with
         ``px`` and ``scale``): its keys, numbers and texts (:func:`~construct.render.end_state.furniture_numbers`).
         Another value's furniture is drawn in the built one's form (:meth:`_aligned`): a built item it lacks (a
         scale's tick) drawn where the built figure has it, on this value's axes, and named among the texts as
         ``"#absent"`` (its elements' ids: the page hides them there); its lettering placed among that value's
         end-state *marks* (:func:`~construct.render.end_state.end_lettering_at`: where it stood at the built value
-        where there is room, at the player's letter scale there, *letter*), or where the built value's placing set
-        it about its places without *marks*."""
+        where there is room, at the built end state's letter scale, which a fresh build there keeps too), or where
+        the built value's placing set it about its places without *marks*."""
         if self.end is None or not items:
             return [], [], {}
         absent: frozenset[int] = frozenset()
@@ -216,7 +216,7 @@ class Measure:
         own: dict[str, int] = {} if owners is None else owners
         sheet = SimpleNamespace(end_furniture=items)
         spots = None if marks is None or not any(isinstance(it, Lettering) for it in items) else \
-            end_lettering_at(sheet, marks, self.style, vp, self.end, self.placing, NUMBERS, letter)
+            end_lettering_at(sheet, marks, self.style, vp, self.end, self.placing, NUMBERS)
         keys, nums, texts = furniture_numbers(end_furniture(sheet, self.style, vp, self.end, self.placing, NUMBERS,
                                                             own, spots), exact=exact)
         if absent:
@@ -301,7 +301,7 @@ class Measure:
             if any(isinstance(it, Lettering) for it in items) else None
         # (its numbers unrounded: frames rounds every value's at once)
         return self._furniture(items, SimpleNamespace(px=at_once.px_of(i), scale=float(at_once.fit[i][2])), exact=False,
-                               marks=marks, letter=end_letter_at(self.end, *(float(w[i]) for w in at_once.size)))
+                               marks=marks)
 
     def _runs(self, keys: list[tuple[str, str, str]]) -> list[tuple[str, int]]:
         """Each mark's run of numbers among *keys*: (its id, how many)."""
@@ -538,8 +538,7 @@ class Measure:
         for lk, ln in layers.values():
             keys += lk
             nums += ln
-        fk, fn, ft = self._furniture(scene.end_furniture, vp, marks=scene.end_drawn(),
-                                     letter=end_letter_at(self.end, vp.width, vp.height)) \
+        fk, fn, ft = self._furniture(scene.end_furniture, vp, marks=scene.end_drawn()) \
             if self.furniture_live is not False else self.held
         keys += fk
         nums += fn

@@ -36,7 +36,7 @@ from .styles import Style
 from .svgdoc import Element, Writer, fmt
 from .viewport import Viewport
 
-__all__ = ["EndView", "END_MARGIN_PX", "lay_out_end", "end_fixed", "end_lettering", "end_letter_at", "end_lettering_at",
+__all__ = ["EndView", "END_MARGIN_PX", "lay_out_end", "end_fixed", "end_lettering", "end_lettering_at",
            "end_furniture", "end_sheet", "own_strokes", "wrapped", "NumbersFactory", "furniture_numbers"]
 
 #: The margin round the end state's drawing on its sheet (screen px at the end view).
@@ -210,37 +210,20 @@ def _result_strokes(scene: Any, vp: Any) -> list[tuple[float, float, float, floa
             if isinstance(it, Stroke) and not {"thin", "dashed", "hidden"} & set(it.look.split())]
 
 
-def end_letter_at(end: EndView, width: float, height: float) -> float:
-    """The player's letter scale in the end state of a figure whose whole canvas is *width* x *height* (canvas px),
-    at the built end state's zoom level (the player's ``put``: 12 px on the screen at the level's own zoom, never
-    below 9.5 px): another value of a live given, whose canvas grows or shrinks with the figure.
-
-    >>> e = EndView((0, 0, 960, 668), 0, 1.0, 1.0, (0, 0, 960, 668), 12.0)
-    >>> end_letter_at(e, 998, 630), end_letter_at(e, 1996, 1260)  # (the player's window: 998 x 630 px)
-    (1.0, 1.5833333333333333)
-    """
-    return player_letter_scale(max(width / PLAYER_FIGURE_PX[0], height / PLAYER_FIGURE_PX[1]) / ZOOM_LEVELS[end.level])
-
-
 def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, end: EndView, placing: Placing,
-                     factory: Any, letter: float | None = None) -> dict[str, tuple[float, float, float]]:
+                     factory: Any) -> dict[str, tuple[float, float, float]]:
     """Where the plate's lettering of *sheet* (anything with ``end_furniture``: the plate at another value of a live
     given, in the built plate's form) stands about its places at that value, as :func:`lay_out_end` places it
     (:meth:`~construct.render.placing.Placing.end_lettering_at`: among that value's end-state *marks* on *vp*):
     {id: (dx, dy, distance)}, as ``placing.end_spots``.  A letter with no room there, or one that would take a
     leader where the built one has none (or lose its leader), keeps its built spot: the furniture keeps its form
-    over the sweep (its elements, by which the page knows them).  *letter*: the
-    player's letter scale there (:func:`end_letter_at`; the built one's without), at which the page shows the
-    plate's lettering (scaled about its middle by *letter* over the built one's) and the marks' letters: they are
-    placed at that size, each spot given in the built letter's units, where the page writes the lettering."""
-    letter = end.letter if letter is None else letter
-    size = style.label_size * letter
-    texts = [b for e in furniture_elements(end_fixed(sheet), vp.px, vp.scale, factory, size=size)
-             if (b := _lettering_box(e, size, style)) is not None]
-    got = placing.end_lettering_at(vp, letter, marks, texts, end_lettering(sheet, vp, style, size),
-                                   _result_strokes(sheet, vp), built=end.letter)
-    built, k = placing.end_spots, letter / end.letter
-    return {**built, **{f: (rel[0] * k, rel[1] * k, rel[2]) for f, rel in got.items()
+    over the sweep (its elements, by which the page knows them)."""
+    texts = [b for e in furniture_elements(end_fixed(sheet), vp.px, vp.scale, factory, size=end.size)
+             if (b := _lettering_box(e, end.size, style)) is not None]
+    got = placing.end_lettering_at(vp, end.letter, marks, texts, end_lettering(sheet, vp, style, end.size),
+                                   _result_strokes(sheet, vp))
+    built = placing.end_spots
+    return {**built, **{f: rel for f, rel in got.items()
                         if f in built and (rel[2] >= LEADER_FROM) == (built[f][2] >= LEADER_FROM)}}
 
 

@@ -30,7 +30,7 @@ from ..figure import Figure
 from ..render.camera import FINAL_CONTEXT, MAX_ZOOM, ZOOM_LEVELS, Framing, clip_view
 from ..render.end_state import NumbersFactory, end_furniture, furniture_numbers
 from ..render.output import scene_for
-from ..render.insets import inset_detail
+from ..render.insets import inset_details
 from ..render.plate import Lettering, plain, plate_of, shifted, subscript_runs
 from ..render.player import inset_marks, player_html
 from ..render.scene import MarkKind, extreme_points, reading
@@ -143,10 +143,11 @@ class Measure:
         #: the page does not find anew (a cluster's, :func:`~construct.render.insets.inset_detail`), by their index:
         #: its box (x, y, w, h) and the marks it is carried with (the points it letters, else the step's own
         #: marks), and their box at the built value (:meth:`_carried_insets`)
+        boxed = [(i, k, z) for i, k in enumerate(self.steps) if (z := drawing.insets[k - 1]) is not None]
+        details = inset_details(scene, drawing.vp.px, drawing.vp.scale, [(k, z) for _, k, z in boxed])
         self.insets = [(i, tuple(z), [m.id for m, _ in inset_marks(drawing, k, z)]
-                        or [m.id for m in scene.marks if m.step == k]) for i, k in enumerate(self.steps)
-                       if (z := drawing.insets[k - 1]) is not None
-                       and inset_detail(scene, drawing.vp.px, drawing.vp.scale, k, z) is None]
+                        or [m.id for m in scene.marks if m.step == k]) for (i, k, z), d in zip(boxed, details)
+                       if d is None]
         self._inset_b0 = self._inset_boxes(scene, drawing.vp)
         self.least = 1.0 / MAX_ZOOM
         self._end_framing = self._held_end_view(scene, drawing)

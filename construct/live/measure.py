@@ -42,6 +42,8 @@ from ..render.sweepdraw import SweepDrawing, sweep_drawable
 from ..render.viewport import Viewport
 from ..render.wire import ARC, NUMBER, canonical_arc
 
+#: How many forms of another value's furniture a Measure keeps matched to the built one's (:meth:`Measure._aligned`).
+MATCHES = 64
 #: The end state's furniture drawn as numbers (:func:`~construct.render.end_state.furniture_numbers`).
 NUMBERS = NumbersFactory()
 
@@ -160,6 +162,8 @@ class Measure:
         #: :meth:`furniture_kept`), held at these numbers else (the page shows it at the book's values alone)
         self._built = built
         self._items = scene.end_furniture
+        #: another value's furniture matched to the built one's, by its items' forms and texts (:meth:`_aligned`)
+        self._matches: dict[tuple, dict[int, int]] = {}
         #: each built furniture element's item: {its id: the item's index in the built furniture}
         self.owners: dict[str, int] = {}
         self.held = self._furniture(scene.end_furniture, drawing.vp, owners=self.owners)
@@ -268,7 +272,16 @@ class Measure:
     def _aligned(self, items: tuple) -> tuple[tuple, frozenset[int]]:
         """Another value's furniture *items* in the built one's form: each built item where that value has it
         (:func:`_matched`), the built item where it has not; and the built items it has not, by their index."""
-        at = _matched(self._items, items)
+        # (matched once for each form and texts of the items: most values of a sweep share a few; at most
+        # MATCHES of them kept)
+        key = tuple((type(it), getattr(it, "text", ""), getattr(it, "text_at", None) is None,
+                     getattr(it, "broken", False), bool(getattr(it, "angle", 0)), getattr(it, "to", None) is None)
+                    for it in items)
+        at = self._matches.get(key)
+        if at is None:
+            if len(self._matches) >= MATCHES:
+                self._matches.clear()
+            at = self._matches[key] = _matched(self._items, items)
         return (tuple(items[at[i]] if i in at else it for i, it in enumerate(self._items)),
                 frozenset(range(len(self._items))) - set(at))
 

@@ -385,7 +385,7 @@ class Measure:
         cy = (box[1] + box[3]) / 2 + (y + h / 2 - (b0[1] + b0[3]) / 2) * s
         return list(clip_view(cx, cy, w * s, h * s, full))
 
-    def frames(self, protocol: Any, replay: Any, size: int) -> "Frames":
+    def frames(self, protocol: Any, replay: Any, size: int) -> Frames:
         """:meth:`__call__` at every value of the sweep *replay* (of *size* values): the marks' numbers drawn for
         all values at once (:class:`~construct.render.sweepdraw.SweepDrawing`) where that draws what the drawing
         draws, value by value elsewhere (a value where a mark changes its form, a figure the sweep does not
@@ -475,8 +475,8 @@ class Measure:
                 if fk != want:  # (another form of the furniture there: value by value)
                     at_once.ok[i] = False
                     return whole(i)
-                rows[i, at_furniture] = np.round(np.asarray(fn, dtype=float), 2) + 0.0  # (as the writer writes
-                # them: within 0.01)
+                # (rounded as the writer writes them: within 0.01)
+                rows[i, at_furniture] = np.round(np.asarray(fn, dtype=float), 2) + 0.0
                 texts = {**texts, **ft} if ft else texts
             if self.readings:
                 taken = replay.take(i)

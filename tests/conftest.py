@@ -90,7 +90,7 @@ gc.set_threshold(7_000, 20, 20)
 def pytest_unconfigure(config):
     """After the last test, before pytest's own end of session: what the process holds is frozen (kept out of the
     collector's passes).  pytest's unconfigure runs full passes (to report unraisable exceptions of objects freed
-    late), which in a process that built the gallery's figures, drawings and sweeps walked and freed about a
+    late), which in a process that built the gallery's figures, drawings and sweeps walked and freed up to a
     gigabyte: 1.7-1.9 s per worker measured, and xdist's controller waits for the last worker to exit, so that the
     run ended that much later.  Every test has run; the process exits next and gives its memory back whole."""
     gc.freeze()

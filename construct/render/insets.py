@@ -91,15 +91,17 @@ def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]]
     *px*: the drawing's map to canvas pixels; *scale*: its canvas pixels per unit.
     """
     s = scene.steps[k - 1]
-    drawn = {m.name: m for m in scene.marks}
+    drawn = scene.marks_by_name
     near = [drawn[n] for n in dict.fromkeys((*s.outputs, *s.inputs, *sorted(scene.named(k))))
             if n in drawn and drawn[n].kind is MarkKind.POINT]
-    at_point = {tuple(round(c, 2) for c in px(*m.geom)): m.id for m in scene.marks if m.kind is MarkKind.POINT}
+    at_point: dict | None = None  # every point by where it stands (canvas px), made only for a step that strikes a circle
     fine, at, rounds = math.inf, None, []
     for n in s.outputs:
         m = drawn.get(n)
         if m is None or not m.kind.round:
             continue
+        if at_point is None:
+            at_point = {tuple(round(c, 2) for c in px(*p.geom)): p.id for p in scene.marks if p.kind is MarkKind.POINT}
         c = px(*m.geom[:2])
         centre = at_point.get(tuple(round(x, 2) for x in c))
         if centre is None:

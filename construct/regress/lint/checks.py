@@ -41,7 +41,8 @@ from typing import Iterator
 from ...render.lettering import segment_meets_box
 from . import plates
 from .sheet import Box, Sheet
-from .views import MIN_OPACITY, Runs, Views, both_runs, boxes_meet, in_runs, merge_runs, steps_of, view_total
+from .views import (MIN_OPACITY, Runs, Views, both_runs, boxes_meet, in_runs, merge_runs, runs_outside, steps_of,
+                    view_total)
 
 __all__ = ["Finding", "KINDS", "check_sheet", "view_count", "MIN_LABEL_PX", "MIN_MARK_PX", "MIN_OPACITY", "VIEW"]
 
@@ -489,9 +490,9 @@ def _leaders(sheet: Sheet, views: Views) -> list[Finding]:
             # its point is drawn there: a marker at the anchor, seen in the same views
             seen = merge_runs(r for d in dots.get((round(ax), round(ay)), ())
                           if math.hypot(d.x - ax, d.y - ay) <= 1.0 for r in views.shown(d.chain, d.step, lay.level))
-            for k in steps_of(runs):
-                if not in_runs(seen, k):
-                    found[(i, "hidden")].append((k, k))
+            hidden = runs_outside(runs, seen)
+            if hidden:
+                found[(i, "hidden")].extend(hidden)
     out = []
     what = {"point": "starts away from its point", "letter": "ends away from its letter",
             "hidden": "points at a point the view does not draw"}

@@ -214,29 +214,36 @@ def _on_points(sheet: Sheet, views: Views, seen) -> list[Finding]:
     widest = max((d.r for d in sheet.dots), default=0.0)
     found: dict[tuple[int, int], list] = {}
     cells, dots, floor, hypot = grid.cells, sheet.dots, math.floor, math.hypot
+    # a letter stands in the same box at the same scale in many views (those of a zoom level): the discs that
+    # reach into it are found once per box and scale, and each view asks only whether it shows them
+    reaching: dict[tuple, list[int]] = {}
     for lay, letters in seen:
         reach = widest * max(lay.letter - 1.0, 0.0)  # the grid holds the discs at their drawn size
         letter = lay.letter
         for t, b, runs in letters:
-            g = _grow(b, reach) if reach else b
-            near: set[int] = set()
-            for ci in range(floor(g[0] / CELL), floor(g[2] / CELL) + 1):  # grid.near(g), written out
-                for cj in range(floor(g[1] / CELL), floor(g[3] / CELL) + 1):
-                    got = cells.get((ci, cj))
-                    if got:
-                        near.update(got)
-            if not near:
-                continue
-            owner = t.owner
-            for i in sorted(near):
+            hits = reaching.get((t.index, b, letter))
+            if hits is None:
+                hits = reaching[(t.index, b, letter)] = []
+                g = _grow(b, reach) if reach else b
+                near: set[int] = set()
+                for ci in range(floor(g[0] / CELL), floor(g[2] / CELL) + 1):  # grid.near(g), written out
+                    for cj in range(floor(g[1] / CELL), floor(g[3] / CELL) + 1):
+                        got = cells.get((ci, cj))
+                        if got:
+                            near.update(got)
+                owner = t.owner
+                for i in sorted(near):
+                    d = dots[i]
+                    if d.ident is not None and d.ident == owner:
+                        continue
+                    r = d.r * letter
+                    x, y = d.x, d.y
+                    # does the disc reach into the box (from the box's nearest point to its centre)?
+                    if hypot(x - min(max(x, b[0]), b[2]), y - min(max(y, b[1]), b[3])) < r - TOUCH:
+                        hits.append(i)
+            for i in hits:
                 d = dots[i]
-                if d.ident is not None and d.ident == owner:
-                    continue
                 r = d.r * letter
-                x, y = d.x, d.y
-                # does the disc reach into the box (from the box's nearest point to its centre)?
-                if not hypot(x - min(max(x, b[0]), b[2]), y - min(max(y, b[1]), b[3])) < r - TOUCH:
-                    continue
                 if not boxes_meet((d.x - r, d.y - r, d.x + r, d.y + r), lay.box):
                     continue
                 both = both_runs(runs, views.shown(d.chain, d.step, lay.level))
@@ -300,20 +307,33 @@ def _struck(sheet: Sheet, views: Views, seen) -> list[Finding]:
     halves = [s.half for s in sheet.strokes]
     floor = math.floor
     found: dict[tuple[int, int], list] = {}
+    # a letter stands in the same box in many views (those of a zoom level): the pieces that could strike it are
+    # looked up once per box, at the widest stroke of any view, and tested in each view at its own stroke
+    most = max((lay.stroke for lay, _ in seen), default=1.0)
+    reach = widest * most
+    candidates: dict[tuple, list[int]] = {}
     for lay, letters in seen:
         stroke = lay.stroke
-        reach = widest * stroke
         for t, tb, runs in letters:
-            near: set[int] = set()
-            for i in range(floor((tb[0] - reach) / CELL), floor((tb[2] + reach) / CELL) + 1):
-                for j in range(floor((tb[1] - reach) / CELL), floor((tb[3] + reach) / CELL) + 1):
-                    got = cells.get((i, j))
-                    if got:
-                        near.update(got)
+            near = candidates.get((t.index, tb))
+            if near is None:
+                got_near: set[int] = set()
+                for i in range(floor((tb[0] - reach) / CELL), floor((tb[2] + reach) / CELL) + 1):
+                    for j in range(floor((tb[1] - reach) / CELL), floor((tb[3] + reach) / CELL) + 1):
+                        got = cells.get((i, j))
+                        if got:
+                            got_near.update(got)
+                near = []
+                for i in sorted(got_near):
+                    si, p, pb = pieces[i]
+                    d = halves[si] * most - TOUCH
+                    if not (pb[2] < tb[0] - d or pb[0] > tb[2] + d or pb[3] < tb[1] - d or pb[1] > tb[3] + d):
+                        near.append(i)
+                candidates[(t.index, tb)] = near
             if not near:
                 continue
             hit: set[int] = set()
-            for i in sorted(near):
+            for i in near:
                 si, p, pb = pieces[i]
                 if si in hit:
                     continue

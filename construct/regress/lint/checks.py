@@ -483,6 +483,7 @@ def _leaders(sheet: Sheet, views: Views) -> list[Finding]:
         dots[(round(d.x), round(d.y))].append(d)
     found: dict[tuple[int, str], list] = defaultdict(list)
     anchors = np.array([ld.anchor for ld in sheet.leaders], dtype=float).reshape(-1, 2)
+    marked: dict[tuple[int, int], Runs] = {}  # the views that draw a leader's point, by (leader, zoom level)
     for lay in views.layouts:
         x0, y0, x1, y1 = lay.box
         # the leaders whose point the layout's box holds and whose views reach into the layout's, in order
@@ -507,9 +508,12 @@ def _leaders(sheet: Sheet, views: Views) -> list[Finding]:
             tb = views.text_box(t, lay)
             if math.hypot(b[0] - min(max(b[0], tb[0]), tb[2]), b[1] - min(max(b[1], tb[1]), tb[3])) > reach:
                 found[(i, "letter")].extend(runs)
-            # its point is drawn there: a marker at the anchor, seen in the same views
-            seen = merge_runs(r for d in dots.get((round(ax), round(ay)), ())
-                          if math.hypot(d.x - ax, d.y - ay) <= 1.0 for r in views.shown(d.chain, d.step, lay.level))
+            # its point is drawn there: a marker at the anchor, seen in the same views (those of a zoom level alike)
+            seen = marked.get((i, lay.level))
+            if seen is None:
+                seen = marked[(i, lay.level)] = merge_runs(
+                    r for d in dots.get((round(ax), round(ay)), ())
+                    if math.hypot(d.x - ax, d.y - ay) <= 1.0 for r in views.shown(d.chain, d.step, lay.level))
             hidden = runs_outside(runs, seen)
             if hidden:
                 found[(i, "hidden")].extend(hidden)

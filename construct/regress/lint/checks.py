@@ -36,7 +36,7 @@ import math
 import re
 from collections import defaultdict
 from dataclasses import dataclass
-from typing import Iterator
+from typing import Iterable, Iterator
 
 from ...render.lettering import segment_meets_box
 from . import plates
@@ -296,45 +296,73 @@ def _piece_cells(boxes: list[Box]) -> dict[tuple[int, int], list[int]]:
     return cells
 
 
+#: Letter boxes times result-line pieces up to which :func:`_struck` asks each box of all pieces at once (numpy),
+#: rather than filing the pieces in a grid.
+_ALL_AT_ONCE = 1 << 22
+
+
 def _struck(sheet: Sheet, views: Views, seen) -> list[Finding]:
-    # the grid of :class:`_Grid` (its cells and keys), written out here: every letter of every view asks it
-    pieces: list[tuple[int, tuple[float, float, float, float], Box]] = []
-    widest = max((s.half for s in sheet.strokes), default=0.0)
-    for si, s in enumerate(sheet.strokes):
-        for p in s.pieces:
-            pieces.append((si, p, (min(p[0], p[2]), min(p[1], p[3]), max(p[0], p[2]), max(p[1], p[3]))))
-    cells = _piece_cells([pb for _, _, pb in pieces])
+    import numpy as np
+
+    keys = list(dict.fromkeys((t.index, tb) for _, letters in seen for t, tb, _ in letters))
+    if not keys or not sheet.strokes:
+        return []
     halves = [s.half for s in sheet.strokes]
-    floor = math.floor
-    found: dict[tuple[int, int], list] = {}
-    # a letter stands in the same box in many views (those of a zoom level): the pieces that could strike it are
-    # looked up once per box, at the widest stroke of any view, and tested in each view at its own stroke
+    flat = [p for s in sheet.strokes for p in s.pieces]
+    a = np.array(flat, dtype=float).reshape(-1, 4)
+    owner = np.repeat(np.arange(len(sheet.strokes)), [len(s.pieces) for s in sheet.strokes])
+    lo, hi = np.minimum(a[:, 0:2], a[:, 2:4]), np.maximum(a[:, 0:2], a[:, 2:4])
+    # A letter stands in the same box in many views (those of a zoom level): the pieces that strike it at the
+    # widest stroke of any view are found once per box, and only they are tested in each view at its own stroke
+    # (a piece that misses the box grown by the widest stroke misses it grown by less): {(text, box): [(line,
+    # piece, its box), ...]}.
     most = max((lay.stroke for lay, _ in seen), default=1.0)
-    reach = widest * most
-    candidates: dict[tuple, list[int]] = {}
+    reach = np.array(halves) * most - TOUCH
+    candidates: dict[tuple, list] = {}
+
+    def strike(key: tuple, near: Iterable[int], boxes: Iterable) -> None:
+        tb = key[1]
+        got = candidates[key] = []
+        for i, pb in zip(near, boxes):
+            si, p = owners[i], flat[i]
+            d = halves[si] * most - TOUCH
+            b = (tb[0] - d, tb[1] - d, tb[2] + d, tb[3] + d)
+            if not (pb[2] < b[0] or pb[0] > b[2] or pb[3] < b[1] or pb[1] > b[3]) and segment_meets_box(b, p):
+                got.append((si, p, pb))
+
+    owners = owner.tolist()
+    if len(keys) * len(flat) <= _ALL_AT_ONCE:
+        # few letters (a plate's dozens over its tens of thousands of pieces): each box asks all pieces at once
+        d = reach[owner]
+        for key in keys:
+            tb = key[1]
+            near = np.flatnonzero(~((hi[:, 0] < tb[0] - d) | (lo[:, 0] > tb[2] + d) | (hi[:, 1] < tb[1] - d)
+                                    | (lo[:, 1] > tb[3] + d)))
+            strike(key, near.tolist(), np.concatenate((lo[near], hi[near]), axis=1).tolist())
+    else:
+        # many: the grid of :class:`_Grid` (its cells and keys), written out here
+        boxes = np.concatenate((lo, hi), axis=1).tolist()
+        cells = _piece_cells(boxes)
+        r, floor = max(halves) * most, math.floor
+        for key in keys:
+            tb = key[1]
+            got_near: set[int] = set()
+            for i in range(floor((tb[0] - r) / CELL), floor((tb[2] + r) / CELL) + 1):
+                for j in range(floor((tb[1] - r) / CELL), floor((tb[3] + r) / CELL) + 1):
+                    cell = cells.get((i, j))
+                    if cell:
+                        got_near.update(cell)
+            near = sorted(got_near)
+            strike(key, near, [boxes[i] for i in near])
+    found: dict[tuple[int, int], list] = {}
     for lay, letters in seen:
         stroke = lay.stroke
         for t, tb, runs in letters:
-            near = candidates.get((t.index, tb))
-            if near is None:
-                got_near: set[int] = set()
-                for i in range(floor((tb[0] - reach) / CELL), floor((tb[2] + reach) / CELL) + 1):
-                    for j in range(floor((tb[1] - reach) / CELL), floor((tb[3] + reach) / CELL) + 1):
-                        got = cells.get((i, j))
-                        if got:
-                            got_near.update(got)
-                near = []
-                for i in sorted(got_near):
-                    si, p, pb = pieces[i]
-                    d = halves[si] * most - TOUCH
-                    if not (pb[2] < tb[0] - d or pb[0] > tb[2] + d or pb[3] < tb[1] - d or pb[1] > tb[3] + d):
-                        near.append(i)
-                candidates[(t.index, tb)] = near
+            near = candidates[(t.index, tb)]
             if not near:
                 continue
             hit: set[int] = set()
-            for i in near:
-                si, p, pb = pieces[i]
+            for si, p, pb in near:
                 if si in hit:
                     continue
                 d = halves[si] * stroke - TOUCH

@@ -383,9 +383,18 @@ def end_sheet(doc: Writer, end: EndView, scene: Scene, style: Style, css: str, b
                          class_=f"cap{(' ' + kind) if kind else ''}"))
         dwg.add(g)
     # (and a point's marker at that scale in its radius: such a renderer scales about the origin, not the
-    # marker's centre)
-    root = doc.own_tree(dwg)
-    for c in root.iter("circle"):
-        if "pt" in (c.get("class") or "").split():
-            c.set("r", fmt(float(c.get("r")) * e.letter, 3))
-    return doc.tree_text(root)
+    # marker's centre) -- in the text written, the shared elements as they are (no tree made and copied for it)
+    def scaled(m: re.Match) -> str:
+        tag = m.group(0)
+        cls = _CLASS.search(tag)
+        if cls is None or "pt" not in cls.group(1).split():
+            return tag
+        return _RADIUS.sub(lambda r: f' r="{fmt(float(r.group(1)) * e.letter, 3)}"', tag, count=1)
+
+    return _CIRCLE_TAG.sub(scaled, doc.text(dwg))
+
+
+#: A circle's start tag in an SVG text (an attribute value has no ``>``: the writer escapes it), its class and radius.
+_CIRCLE_TAG = re.compile(r"<circle\b[^>]*>")
+_CLASS = re.compile(r' class="([^"]*)"')
+_RADIUS = re.compile(r' r="([^"]*)"')

@@ -23,7 +23,8 @@ from typing import Callable, Sequence
 from .camera import PLAYER_FIGURE_PX, Framing, View, step_details, step_focus, zoom_of
 from .scene import MarkKind, Scene
 
-__all__ = ["step_insets", "inset_detail", "points_at", "ring_round", "SLIVER_PX", "SLIVER_RATIO", "INSET_PX", "INSET_DETAIL_PX"]
+__all__ = ["step_insets", "inset_detail", "points_at", "ring_round", "SLIVER_PX", "SLIVER_RATIO", "INSET_PX",
+           "INSET_DETAIL_PX"]
 
 
 #: A step's work is a sliver where its region is thinner on the screen than this (px) and at least

@@ -29,8 +29,8 @@ from .sheet import Box, Sheet
 if TYPE_CHECKING:  # (numpy is imported where it is used: the annotations name it)
     import numpy as np
 
-__all__ = ["Runs", "merge_runs", "both_runs", "runs_without", "runs_outside", "in_runs", "runs_of", "steps_of", "view_total",
-           "boxes_meet", "Layout", "Views", "player_window", "player_letter_scale", "zoom_level", "MIN_OPACITY",
+__all__ = ["Runs", "merge_runs", "both_runs", "runs_without", "runs_outside", "in_runs", "runs_of", "steps_of",
+           "view_total", "boxes_meet", "Layout", "Views", "player_window", "player_letter_scale", "zoom_level", "MIN_OPACITY",
            "PLAYER_SIDE_PX", "PLAYER_HEIGHT", "PLAYER_ASPECT"]
 
 #: Marks fainter than this (a finished group's faded helpers) are background: they do not collide.
@@ -212,7 +212,7 @@ class Views:
                 if s < k < n:
                     self.input_in[s].append(k)
         self._cache: dict[tuple, Runs] = {}
-        self._states: dict[tuple, tuple] = {}
+        self._states: dict[tuple, tuple[bool, ...]] = {}
         self.layouts = self._layouts()
         self._of_step: dict[int, Layout] = {}
         for lay in self.layouts:
@@ -284,16 +284,16 @@ class Views:
         look = self.sheet.look(chain, state, level)
         return look.shown and look.opacity >= MIN_OPACITY
 
-    def _seen_as(self, chain, level: int) -> tuple[bool, bool, bool, bool, bool]:
+    def _seen_as(self, chain, level: int) -> tuple[bool, ...]:
         """Whether the element is seen with its step's groups current, old, done, as in the file and as an
         input (:meth:`_seen` in each state), worked out once per chain and level: elements that look alike
         share their chains, in every step."""
         key = (chain, level)
         got = self._states.get(key)
         if got is None:
-            got = self._states[key] = tuple(self._seen(chain, state, level)  # type: ignore[assignment]
+            got = self._states[key] = tuple(self._seen(chain, state, level)
                                             for state in ("cur", "old", "done", None, "inp"))
-        return got  # type: ignore[return-value]
+        return got
 
     def shown(self, chain, step: int | None, level: int = 0) -> Runs:
         """The views (runs of steps) in which the element is seen (the drawing at zoom level *level*)."""

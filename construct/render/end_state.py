@@ -33,7 +33,7 @@ from .placing import Placing
 from .plate import Dot, Lettering, ScaleBar, Stroke, extent, furniture_elements, plain, text_elements
 from .scene import Scene, extreme_points
 from .styles import Style
-from .svgdoc import Element, Writer, fmt
+from .svgdoc import Element, Writer, fmt, with_attribute
 from .viewport import Viewport
 
 __all__ = ["EndView", "END_MARGIN_PX", "lay_out_end", "end_fixed", "end_lettering", "end_furniture", "end_sheet",
@@ -383,18 +383,5 @@ def end_sheet(doc: Writer, end: EndView, scene: Scene, style: Style, css: str, b
                          class_=f"cap{(' ' + kind) if kind else ''}"))
         dwg.add(g)
     # (and a point's marker at that scale in its radius: such a renderer scales about the origin, not the
-    # marker's centre) -- in the text written, the shared elements as they are (no tree made and copied for it)
-    def scaled(m: re.Match) -> str:
-        tag = m.group(0)
-        cls = _CLASS.search(tag)
-        if cls is None or "pt" not in cls.group(1).split():
-            return tag
-        return _RADIUS.sub(lambda r: f' r="{fmt(float(r.group(1)) * e.letter, 3)}"', tag, count=1)
-
-    return _CIRCLE_TAG.sub(scaled, doc.text(dwg))
-
-
-#: A circle's start tag in an SVG text (an attribute value has no ``>``: the writer escapes it), its class and radius.
-_CIRCLE_TAG = re.compile(r"<circle\b[^>]*>")
-_CLASS = re.compile(r' class="([^"]*)"')
-_RADIUS = re.compile(r' r="([^"]*)"')
+    # marker's centre) -- in the text written (the marks' elements are shared with the figure's other documents)
+    return with_attribute(doc.text(dwg), "circle", "pt", "r", lambda r: fmt(float(r) * e.letter, 3))

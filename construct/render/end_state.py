@@ -33,7 +33,7 @@ from .placing import Placing
 from .plate import Dot, Lettering, ScaleBar, Stroke, extent, furniture_elements, plain, text_elements
 from .scene import Scene, extreme_points
 from .styles import Style
-from .svgdoc import Element, Writer, fmt
+from .svgdoc import Element, Writer, fmt, with_attribute
 from .viewport import Viewport
 
 __all__ = ["EndView", "END_MARGIN_PX", "lay_out_end", "end_fixed", "end_lettering", "end_furniture", "end_sheet",
@@ -383,9 +383,5 @@ def end_sheet(doc: Writer, end: EndView, scene: Scene, style: Style, css: str, b
                          class_=f"cap{(' ' + kind) if kind else ''}"))
         dwg.add(g)
     # (and a point's marker at that scale in its radius: such a renderer scales about the origin, not the
-    # marker's centre)
-    root = doc.own_tree(dwg)
-    for c in root.iter("circle"):
-        if "pt" in (c.get("class") or "").split():
-            c.set("r", fmt(float(c.get("r")) * e.letter, 3))
-    return doc.tree_text(root)
+    # marker's centre) -- in the text written (the marks' elements are shared with the figure's other documents)
+    return with_attribute(doc.text(dwg), "circle", "pt", "r", lambda r: fmt(float(r) * e.letter, 3))

@@ -35,7 +35,7 @@ from typing import Any, Mapping, Sequence
 from .animate import STEP_SECONDS, group_css
 from .camera import PLAYER_FIGURE_PX
 from .captions import group_caption
-from .insets import inset_detail
+from .insets import inset_detail, points_at
 from .marks import MarkKind
 from .styles import PLAIN, Style
 from .svg import Drawing
@@ -113,6 +113,7 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
     views: dict[tuple, int] = {}
     steps = []
     points = {m.name: m for m in scene.marks if m.kind is MarkKind.POINT}
+    at_point = None  # the points' ids by where they stand, for the insets' details (made at the first)
     for s in scene.steps:
         de, en = scene.caption(s.index)
         st = {"de": de, "en": en, "g": groups.setdefault(group_caption(scene, s.index), len(groups)),
@@ -127,7 +128,9 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         if inset is not None:  # a sliver or a cluster: its place magnified beside the view, its points lettered
             st["z"] = list(inset)
             st["zp"] = _inset_points(d, s.index, inset, points)
-            detail = inset_detail(scene, d.vp.px, d.vp.scale, s.index, inset)
+            if at_point is None:
+                at_point = points_at(scene, d.vp.px)
+            detail = inset_detail(scene, d.vp.px, d.vp.scale, s.index, inset, at_point=at_point)
             if detail is not None:  # a cluster's: the page finds its finest detail anew where the points move
                 st["zd"] = detail
         steps.append(st)

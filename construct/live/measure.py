@@ -28,10 +28,10 @@ import numpy as np
 from ..constructions import Construction
 from ..figure import Figure
 from ..render.camera import FINAL_CONTEXT, MAX_ZOOM, ZOOM_LEVELS, Framing, clip_view
-from ..render.end_state import NumbersFactory, end_furniture, furniture_numbers
+from ..render.end_state import END_MARGIN_PX, NumbersFactory, end_furniture, furniture_numbers
 from ..render.output import scene_for
 from ..render.insets import inset_detail
-from ..render.plate import Lettering, plain, plate_of, shifted, subscript_runs
+from ..render.plate import Lettering, extent, plain, plate_of, shifted, subscript_runs
 from ..render.player import inset_marks, player_html
 from ..render.scene import MarkKind, extreme_points, reading
 from ..render.sheet import break_shift
@@ -97,16 +97,11 @@ class Measure:
             if j >= 0:
                 shows[j].add(k)
         self.framed = [[m.id for m in scene.marks if m.step in ks] for ks in shows]
-        if scene.ending and len(self.view_of) > 1 and self.view_of[-1] >= 0 and (
-                not self.framed[self.view_of[-1]] or (scene.end_furniture and self.view_of.count(self.view_of[-1]) == 1)):
-            # a last step that only reads a value off the figure (piston-force's planimeter) has no marks of its
-            # own, and a view carried with nothing became the whole canvas: the finished figure a patch in its
-            # corner at every value.  Its view frames the end state (camera.final_box): carried with its marks
-            # (the marks a sweep draws: the end state's own, end_marks, are not boxed by it) -- as it is where the
-            # end state has the plate's furniture (which the camera frames with the figure: a view carried with
-            # the last step's few marks, Baumann's excess area, grew to 1.4 times the frame of a fresh build as
-            # kappa went to 2, the diagram across 56 % of the window)
-            self.framed[self.view_of[-1]] = [m.id for m in scene.marks if scene.in_end(m) and scene.end_shows(m)]
+        #: the end step's view, framed at every value as the camera frames the end state (:meth:`_end_view`): its
+        #: index among the views, the room its letters took beyond what it draws (per side, canvas px), the
+        #: built view's width, the box of what it draws and the page there; None without an end state (or with
+        #: its view shared by another step)
+        self._end = self._end_room(scene, drawing)
         self.views = list(distinct)
         for j, ids in enumerate(self.framed):
             if not ids:  # another step that draws nothing of its own: carried with the marks inside its view
@@ -128,7 +123,6 @@ class Measure:
                        and inset_detail(scene, drawing.vp.px, drawing.vp.scale, k, z) is None]
         self._inset_b0 = self._inset_boxes(scene, drawing.vp)
         self.least = 1.0 / MAX_ZOOM
-        self._end_framing = self._held_end_view(scene, drawing)
         self.template = scene
         #: the end state's view and letters' places: its furniture (the plate's) is drawn at every value as the
         #: drawing draws it (:func:`~construct.render.end_state.end_furniture`), the letters' offsets the built ones
@@ -147,8 +141,10 @@ class Measure:
         #: the texts of the items some value of the sweep draws that the built furniture has not (a scale's tick
         #: more): the page has no element for them (:meth:`furniture_kept`; said in :meth:`hidden_note`)
         self.added: list[str] = []
-        #: (None: not asked -- a value measured alone draws its own furniture, a sweep asks over its values)
-        self._furniture_live: bool | None = None
+        #: whether the end state's furniture is drawn at every value of the sweep (None: not asked -- a value
+        #: measured alone draws its own furniture, a sweep asks over its values); held (False), the page shows it
+        #: at the book's values alone, and the end step's view frames the end state without it
+        self.furniture_live: bool | None = None
         # the marks' keys as this value's page has them: each mark's numbers are a run of them, the runs in the
         # page's order (a sweep draws each mark's numbers for every value at once, :meth:`frames`)
         self.keys, _, _, texts = self._measured(scene)  # (the drawing's scene is what __call__ would make)
@@ -166,37 +162,47 @@ class Measure:
         self.readings = {f"{m.id}-label": readings[of(m)] for m in scene.marks if of(m) in readings and m.label}
         self.texts = {k: v for k, v in texts.items() if k not in self.readings}  # the same at every value
 
-    @property
-    def furniture_live(self) -> bool | None:
-        """Whether the end state's furniture is drawn at every value of the sweep (None: not asked).  Held (False),
-        the page shows it at the book's values alone, and the end step's view carried from the book's value --
-        which the camera made room in for the furniture -- would frame an empty band where it stood (tangential
-        pressure at kappa = 2: the flat diagram across 56 % of the window): its view is then carried from the
-        camera's frame of the marks the end state draws (:meth:`_held_end_view`)."""
-        return self._furniture_live
-
-    @furniture_live.setter
-    def furniture_live(self, live: bool | None) -> None:
-        if self._end_framing is not None and (live is False) != (self._furniture_live is False):
-            j, view, box, ids = self._end_framing
-            self._end_framing = (j, self.views[j], self.boxes[j], self.framed[j])
-            self.views[j], self.boxes[j], self.framed[j] = view, box, ids
-            self._rows.clear()  # (the groups of marks each view frames: found anew)
-        self._furniture_live = live
-
-    def _held_end_view(self, scene: Any, drawing: Any) -> tuple | None:
-        """The end step's view as the camera frames the marks the end state draws without its furniture
-        (camera.step_views' end state: :data:`~construct.render.camera.FINAL_CONTEXT` round them, at most the
-        last zoom level), with its index among the views, those marks' box and their ids; None without an end
-        state or furniture."""
-        if not scene.ending or not scene.end_furniture or len(self.view_of) < 2 or self.view_of[-1] < 0:
+    def _end_room(self, scene: Any, drawing: Any) -> tuple[int, tuple[float, ...], float, tuple, tuple] | None:
+        """:attr:`_end` of the built figure: the end view's index j, and the room (left, top, right, bottom, canvas
+        px) the end state's letters take beyond the box of what it draws (:func:`end_box`: its marks and the
+        plate's furniture) in the built view, of width w0 (end_state.lay_out_end: the view frames the letters
+        too; the page keeps them beside their points, their size on the screen); that box and the built page."""
+        j = self.view_of[-1] if len(self.view_of) > 1 else -1
+        if not scene.ending or drawing.end is None or j < 0 or self.view_of.count(j) > 1:
             return None
-        ids = [m.id for m in scene.marks if scene.in_end(m) and scene.end_shows(m)]
-        box = self._boxes(scene, drawing.vp, [ids])[0]
+        drawn = end_box(scene, drawing.vp.px)
+        if drawn is None:
+            return None
+        end = drawing.end
+        pad = END_MARGIN_PX / end.scale  # (the crop's margin round the letters' box)
+        lettered = (end.crop[0] + pad, end.crop[1] + pad, end.crop[2] - pad, end.crop[3] - pad)
+        room = tuple(max(0.0, r) for r in (drawn[0] - lettered[0], drawn[1] - lettered[1],
+                                             lettered[2] - drawn[2], lettered[3] - drawn[3]))
+        # (its marks: the end state's of the figure, which a sweep boxes; the end state's own from their numbers)
+        self.framed[j] = [m.id for m in scene.marks if scene.in_end(m) and scene.end_shows(m)]
+        return j, room, end.view[2], drawn, drawing.full_view
+
+    def _end_view(self, box: tuple | None, full: tuple) -> list[float]:
+        """The end step's view of a value where the end state draws within *box* (canvas px: x0, y0, x1, y1) on
+        the page *full*: as the camera frames it (end_state.lay_out_end: :data:`FINAL_CONTEXT` round it and the
+        letters' room, magnified at most the last zoom level), the letters' room in proportion to the view's
+        width (they keep their size on the screen)."""
         if box is None:
-            return None
-        view = Framing(drawing.full_view, max_zoom=ZOOM_LEVELS[-1]).view(box, FINAL_CONTEXT, 1.0)
-        return self.view_of[-1], view, box, ids
+            return list(full)
+        j, room, w0, built, page = self._end
+        box = tuple(round(c, 6) for c in box)  # (a sweep's box and a scene's differ in the last bits)
+        if tuple(full) == page and max(abs(a - b) for a, b in zip(box, built)) < 1e-6:
+            return list(self.views[j])  # (the built value: the camera's own view, to the hundredth)
+        framing = Framing(full, max_zoom=ZOOM_LEVELS[-1])
+        view = framing.view(box, FINAL_CONTEXT, 1.0)
+        for _ in range(4):  # (the room grows with the view it widens)
+            s = view[2] / w0
+            grown = framing.view((box[0] - s * room[0], box[1] - s * room[1], box[2] + s * room[2],
+                                  box[3] + s * room[3]), FINAL_CONTEXT, 1.0)
+            if grown == view:
+                break
+            view = grown
+        return list(view)
 
     def _furniture(self, items: tuple, vp: Any, exact: bool = True,
                    owners: dict[str, int] | None = None) -> tuple[list, list[float], dict[str, str]]:
@@ -283,16 +289,19 @@ class Measure:
         *protocol* (:meth:`furniture_kept` holds none)."""
         return self.furniture_kept(protocol, replay, size) == frozenset()
 
-    def _furniture_at(self, figure: Figure, at_once: Any, i: int) -> tuple[list, list[float], dict[str, str]]:
+    def _furniture_at(self, figure: Figure, at_once: Any, i: int) -> tuple[list, list[float], dict[str, str], tuple]:
         """:meth:`_furniture` at value *i* of a sweep drawn at once: the plate's furniture of *figure* (that value
-        of the sweep) on that value's broken axis and fit."""
+        of the sweep) on that value's broken axis and fit; and the box of the points it is set at (canvas px: x0,
+        y0, x1, y1; NaN without any)."""
         p = plate_of(self.construction, figure)
         if p.panels or not p.furniture:
-            return [], [], {}
+            return [], [], {}, (math.nan,) * 4
         breaks = at_once.breaks_at(i)
         items = tuple(shifted(it, break_shift(breaks)) for it in p.furniture) if breaks else tuple(p.furniture)
+        px, fx = at_once.px_of(i), extent(items)
         # (its numbers unrounded: frames rounds every value's at once)
-        return self._furniture(items, SimpleNamespace(px=at_once.px_of(i), scale=float(at_once.fit[i][2])), exact=False)
+        return (*self._furniture(items, SimpleNamespace(px=px, scale=float(at_once.fit[i][2])), exact=False),
+                (*px(fx[0], fx[3]), *px(fx[2], fx[1])) if fx is not None else (math.nan,) * 4)
 
     def _runs(self, keys: list[tuple[str, str, str]]) -> list[tuple[str, int]]:
         """Each mark's run of numbers among *keys*: (its id, how many)."""
@@ -372,6 +381,7 @@ class Measure:
         # letters read off a handful of points: 0.02 to 1.5 ms a value)
         furniture = {i: 0 for i, _ in runs if i.startswith("fin-")}
         fur_texts: list[dict[str, str]] = [{}] * size
+        fur_box = np.full((4, size), np.nan)  # (where the furniture is drawn at every value: the box it is set in)
         live = self.furniture_live
         if furniture and live is None:  # (not asked: matched item by item over these values)
             kept = self.furniture_kept(protocol, replay, size)
@@ -383,7 +393,7 @@ class Measure:
             want = [k for k in keys if k[0] in furniture]
             cols: list[list[float]] = []
             for i in range(size):
-                fk, fn, ft = ([], [], {}) if not at_once.ok[i] else self._furniture_at(
+                fk, fn, ft, fur_box[:, i] = ([], [], {}, (math.nan,) * 4) if not at_once.ok[i] else self._furniture_at(
                     Figure(protocol, replay.take(i), self.construction.check, self.construction), at_once, i)
                 if fk != want:  # (another form of the furniture there: value by value)
                     at_once.ok[i] = False
@@ -422,6 +432,18 @@ class Measure:
                              *px(most(ends[1], starts, axis=0), least(ends[2], starts, axis=0)))
         views = len(self.framed)
         carried = self._carried_rows(box[:, :views], boxed[:views], width, height)  # (views + 1) x 4 x values
+        if self._end is not None:  # the end view: framed at every value (the end state's own marks boxed too)
+            j = self._end[0]
+            ends = [at_once.end_boxes[m.id] for m in template.end_marks
+                    if template.end_shows(m) and m.id in at_once.end_boxes]
+            with np.errstate(invalid="ignore"):  # (NaN: nothing there)
+                b = np.stack([np.nanmin(np.stack([box[0, j], fur_box[0], *(e[0] for e in ends)]), 0),
+                              np.nanmin(np.stack([box[1, j], fur_box[1], *(e[1] for e in ends)]), 0),
+                              np.nanmax(np.stack([box[2, j], fur_box[2], *(e[2] for e in ends)]), 0),
+                              np.nanmax(np.stack([box[3, j], fur_box[3], *(e[3] for e in ends)]), 0)])
+            for i in range(size):
+                carried[j, :, i] = self._end_view(None if np.isnan(b[0, i]) else tuple(b[:, i].tolist()),
+                                                  (0.0, 0.0, float(width[i]), float(height[i])))
         blocks = [np.zeros((size, 2)), width[:, None], height[:, None], rows,
                   carried[self.view_of].transpose(2, 0, 1).reshape(size, -1)]
         rings = views + len(self.rings)
@@ -535,6 +557,8 @@ class Measure:
         texts.update(ft)
         boxes = self._boxes(scene, vp)
         carried = [self._carried(j, box, full) for j, box in enumerate(boxes)] + [list(full)]  # [-1]: the whole
+        if self._end is not None:
+            carried[self._end[0]] = self._end_view(end_box(scene, vp.px, self.furniture_live is not False), full)
         for i, j in enumerate(self.view_of):
             keys.append(("#zoom", str(i), "# # # #"))
             nums += carried[j]
@@ -552,6 +576,20 @@ class Measure:
             keys.append(("#break", str(axis), "# #"))
             nums += breaks_px(scene.breaks, axis, fit_of(vp))
         return keys, nums, fit_of(vp), texts
+
+
+def end_box(scene: Any, px: Any, furniture: bool = True) -> tuple[float, float, float, float] | None:
+    """The box (canvas px: x0, y0, x1, y1; *px* maps a point of the figure there) of what the end state of
+    *scene* draws: its marks shown and, with *furniture*, the plate's furniture (the points it is set at), as the
+    camera frames it (:func:`~construct.render.camera.final_box`); None where it draws nothing."""
+    pts = [px(*p) for m in scene.end_drawn() if scene.end_shows(m) for p in extreme_points(m)]
+    fx = extent(scene.end_furniture) if furniture else None
+    if fx is not None:
+        pts += [px(fx[0], fx[1]), px(fx[2], fx[3])]
+    if not pts:
+        return None
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    return (min(xs), min(ys), max(xs), max(ys))
 
 
 def _form(items: Any) -> tuple:

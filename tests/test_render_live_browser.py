@@ -1260,3 +1260,39 @@ def test_the_inset_magnifies_where_a_fresh_replay_magnifies_it_while_dragging(br
             assert math.hypot(x - a, y - b) <= 0.5 and (x, y) == (ox, oy), (v, (x, y), (a, b), (ox, oy))
     assert not errors, errors
     page.close()
+
+
+@pytest.mark.parametrize("v", [1.05, 1.2, 8.0, 1000.0])
+def test_the_end_step_frames_the_end_state_at_every_value_as_a_fresh_build_does(browser, tmp_path, v):
+    """The crank's last step (the end state: the figure as the plate draws it, with its furniture) dragged slowly
+    (20 ``input`` events) to a value across the domain, both ends among them, and let go: the view frames what
+    the end state draws there as a fresh build at that value frames it (its camera view, within 3 px of every
+    edge), and the drag's view holds it.  Carried with its marks from the book's value, whose frame the plate's
+    broken rod shaped, the view was the whole canvas below L/r = 2 (1.9 times the fresh frame's area at 1.05)."""
+    from construct.render.output import scene_for
+    from construct.render.svg import Drawing
+
+    c, params = get("crank"), {"parts": 6}
+    fig = c.figure(**params, rod_ratio=5.0)
+    write_replay(c, fig, tmp_path, style="teaching", frames="none")
+    path = tmp_path / "live.html"
+    path.write_text(with_live((tmp_path / "player.html").read_text(), live_data(live_sweep(c, fig, "rod_ratio"))))
+    page, errors = _open(browser, path)
+    _at(page, "end")
+    _at_step_view(page)
+    held = []
+    for u in np.geomspace(5.0, v, 21)[1:]:
+        _drag_to(page, "rod_ratio", float(u))
+        held.append(page.evaluate("() => [window.constructPlayer.view(), window.constructPlayer.target().slice()]"))
+    page.evaluate("""() => { document.querySelector('#live input[name="rod_ratio"]').dispatchEvent(new Event('change'));
+        window.constructPlayer.jump(false); }""")
+    got = page.evaluate("() => window.constructPlayer.view()")
+    fresh = Drawing(scene_for(c, c.figure(**params, rod_ratio=v), ending=True), STYLES["teaching"])
+    want = fresh.camera_view(fresh.scene.steps[-1].index)
+    assert want != fresh.full_view
+    assert max(abs(a - b) for a, b in zip(got, want)) <= 3.0, (v, got, want)
+    view, step = held[-1]
+    assert step[0] >= view[0] - 0.01 and step[1] >= view[1] - 0.01 and step[0] + step[2] <= view[0] + view[2] + 0.01 \
+        and step[1] + step[3] <= view[1] + view[3] + 0.01, (v, view, step)
+    assert not errors, errors
+    page.close()

@@ -1296,3 +1296,31 @@ def test_the_end_step_frames_the_end_state_at_every_value_as_a_fresh_build_does(
         and step[1] + step[3] <= view[1] + view[3] + 0.01, (v, view, step)
     assert not errors, errors
     page.close()
+
+
+@pytest.mark.parametrize("frac", [0.6, 1.0])
+def test_a_new_drag_after_letting_go_starts_from_the_view_let_go_at(browser, live_player, frac):
+    """Let go, the camera frames the step's view exactly; a new drag that barely moves the given (a thousandth of
+    a decade, either way) keeps that view on the screen (within 1 px, the step's view held), not a tenth larger:
+    the drag's hold rule took any step's view that left the exact one by a hair as a new view with room, a step
+    outward at the drag's first frame and back at the next let-go."""
+    _, _, path = live_player
+    page, errors = _open(browser, path)
+    page.evaluate("f => { const s = document.getElementById('slider'); s.value = Math.round(f * s.max); s.oninput(); }", frac)
+    _at_step_view(page)
+    state = "() => [window.constructPlayer.view(), window.constructPlayer.target().slice()]"
+    for sign in (1.0, -1.0):
+        for u in np.geomspace(5.0, 3.0, 11)[1:]:
+            _drag_to(page, "rod_ratio", float(u))
+        page.evaluate("""() => new Promise(r => { document.querySelector('#live input[name="rod_ratio"]')
+            .dispatchEvent(new Event('change')); setTimeout(r, 700); })""")
+        let_go, step = page.evaluate(state)
+        assert let_go == pytest.approx(step, abs=0.01)
+        _drag_to(page, "rod_ratio", 3.0 * 10 ** (sign * 0.001))
+        view, step = page.evaluate(state)
+        assert step != let_go  # (the step's view moved)
+        assert max(abs(a - b) for a, b in zip(view, let_go)) <= 1.0, (sign, let_go, view)
+        assert step[0] >= view[0] - 0.01 and step[1] >= view[1] - 0.01 and step[0] + step[2] <= view[0] + view[2] + 0.01 \
+            and step[1] + step[3] <= view[1] + view[3] + 0.01, (sign, view, step)
+    assert not errors, errors
+    page.close()

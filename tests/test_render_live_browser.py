@@ -1262,7 +1262,7 @@ def test_the_inset_magnifies_where_a_fresh_replay_magnifies_it_while_dragging(br
     page.close()
 
 
-@pytest.mark.parametrize("v", [1.05, 1.2, 8.0, 1000.0])
+@pytest.mark.parametrize("v", [1.05, 1.2, 3.0, 8.0, 1000.0])
 def test_the_end_step_frames_the_end_state_at_every_value_as_a_fresh_build_does(browser, tmp_path, v):
     """The crank's last step (the end state: the figure as the plate draws it, with its furniture) dragged slowly
     (20 ``input`` events) to a value across the domain, both ends among them, and let go: the view frames what

@@ -27,8 +27,9 @@ import numpy as np
 
 from ..constructions import Construction
 from ..figure import Figure
-from ..render.camera import FINAL_CONTEXT, MAX_ZOOM, ZOOM_LEVELS, Framing, clip_view
-from ..render.end_state import END_MARGIN_PX, NumbersFactory, end_furniture, furniture_numbers
+from ..render.camera import (FINAL_CONTEXT, MAX_ZOOM, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, clip_view, level,
+                             player_letter_scale, zoom_of)
+from ..render.end_state import NumbersFactory, end_furniture, end_letter_boxes, furniture_numbers
 from ..render.output import scene_for
 from ..render.insets import inset_detail
 from ..render.plate import Lettering, extent, plain, plate_of, shifted, subscript_runs
@@ -98,9 +99,8 @@ class Measure:
                 shows[j].add(k)
         self.framed = [[m.id for m in scene.marks if m.step in ks] for ks in shows]
         #: the end step's view, framed at every value as the camera frames the end state (:meth:`_end_view`): its
-        #: index among the views, the room its letters took beyond what it draws (per side, canvas px), the
-        #: built view's width, the box of what it draws and the page there; None without an end state (or with
-        #: its view shared by another step)
+        #: index among the views, the box of what it draws, the page there and its letters (:meth:`_end_room`);
+        #: None without an end state (or with its view shared by another step)
         self._end = self._end_room(scene, drawing)
         self.views = list(distinct)
         for j, ids in enumerate(self.framed):
@@ -149,6 +149,8 @@ class Measure:
         # page's order (a sweep draws each mark's numbers for every value at once, :meth:`frames`)
         self.keys, _, _, texts = self._measured(scene)  # (the drawing's scene is what __call__ would make)
         self.runs = self._runs(self.keys)
+        #: the end state's letters as the page moves them (:meth:`_letters`; None: none, or no end view)
+        self._lettered = self._letters(self._end[3], drawing.end.letter) if self._end is not None else None
         # a protocol of another piece of the domain (live.sweep.pieces): its scene, runs and keys, made once (the
         # protocol kept with them: its id stays its own)
         self._forms = {id(built.protocol): (built.protocol, scene, self.runs, self.keys)}
@@ -162,47 +164,77 @@ class Measure:
         self.readings = {f"{m.id}-label": readings[of(m)] for m in scene.marks if of(m) in readings and m.label}
         self.texts = {k: v for k, v in texts.items() if k not in self.readings}  # the same at every value
 
-    def _end_room(self, scene: Any, drawing: Any) -> tuple[int, tuple[float, ...], float, tuple, tuple] | None:
-        """:attr:`_end` of the built figure: the end view's index j, and the room (left, top, right, bottom, canvas
-        px) the end state's letters take beyond the box of what it draws (:func:`end_box`: its marks and the
-        plate's furniture) in the built view, of width w0 (end_state.lay_out_end: the view frames the letters
-        too; the page keeps them beside their points, their size on the screen); that box and the built page."""
+    def _end_room(self, scene: Any, drawing: Any) -> tuple[int, tuple, tuple, list] | None:
+        """:attr:`_end` of the built figure: the end view's index j, the box of what the end state draws
+        (:func:`end_box`: its marks and the plate's furniture), the built page, and the letters it writes
+        (:func:`~construct.render.end_state.end_letter_boxes`), which :meth:`_letters` finds on the page's
+        numbers."""
         j = self.view_of[-1] if len(self.view_of) > 1 else -1
         if not scene.ending or drawing.end is None or j < 0 or self.view_of.count(j) > 1:
             return None
         drawn = end_box(scene, drawing.vp.px)
         if drawn is None:
             return None
-        end = drawing.end
-        pad = END_MARGIN_PX / end.scale  # (the crop's margin round the letters' box)
-        lettered = (end.crop[0] + pad, end.crop[1] + pad, end.crop[2] - pad, end.crop[3] - pad)
-        room = tuple(max(0.0, r) for r in (drawn[0] - lettered[0], drawn[1] - lettered[1],
-                                             lettered[2] - drawn[2], lettered[3] - drawn[3]))
         # (its marks: the end state's of the figure, which a sweep boxes; the end state's own from their numbers)
         self.framed[j] = [m.id for m in scene.marks if scene.in_end(m) and scene.end_shows(m)]
-        return j, room, end.view[2], drawn, drawing.full_view
+        return j, drawn, drawing.full_view, end_letter_boxes(scene, self.style, drawing.vp, drawing.placing,
+                                                              drawing.end, drawing.doc.factory)
 
-    def _end_view(self, box: tuple | None, full: tuple) -> list[float]:
+    def _letters(self, letters: list, ls0: float) -> tuple[np.ndarray, ...] | None:
+        """The end state's *letters* (written at the letter scale *ls0*) as the page moves them: each with the
+        place of its element's x and y among the page's numbers, and its box there as x, y + c + ls s (canvas
+        px; ls the letter scale): a point's letter at its offset from the point, which the letter scale scales;
+        the plate's lettering scaled about its own middle (the player's ``scale`` of it); and whether it is
+        the plate's (the furniture's, which a held furniture does not show away from the book's value)."""
+        at, n = {}, 0
+        for k in self.keys:
+            at.setdefault((k[0], k[1]), n)
+            n += k[2].count("#")
+        rows = []
+        for ident, attr, (x, y), b in letters:
+            if (ident, attr) not in at or (ident, "cy" if attr == "cx" else "y") not in at:
+                continue
+            box = np.asarray(b) - (x, y, x, y)
+            mid = (box[:2] + box[2:]) / 2 if attr == "x" else np.zeros(2)
+            rows.append((at[(ident, attr)], at[(ident, "cy" if attr == "cx" else "y")], *mid, *mid,
+                         *(box - np.tile(mid, 2)) / ls0, attr == "x"))
+        if not rows:
+            return None
+        t = np.asarray(rows, dtype=float)
+        return t[:, 0].astype(int), t[:, 1].astype(int), t[:, 2:6], t[:, 6:10], t[:, 10] > 0
+
+    def _end_view(self, box: tuple | None, full: tuple, nums: np.ndarray) -> list[float]:
         """The end step's view of a value where the end state draws within *box* (canvas px: x0, y0, x1, y1) on
-        the page *full*: as the camera frames it (end_state.lay_out_end: :data:`FINAL_CONTEXT` round it and the
-        letters' room, magnified at most the last zoom level), the letters' room in proportion to the view's
-        width (they keep their size on the screen)."""
+        the page *full*, its numbers *nums* (the page's, in its order): as the camera frames it
+        (end_state.lay_out_end: :data:`FINAL_CONTEXT` round it and the letters it writes, at the letter scale of
+        the view, magnified at most the last zoom level), the letters where the page writes them (beside their
+        points as placed at the book's value)."""
         if box is None:
             return list(full)
-        j, room, w0, built, page = self._end
+        j, built, page, _ = self._end
         box = tuple(round(c, 6) for c in box)  # (a sweep's box and a scene's differ in the last bits)
         if tuple(full) == page and max(abs(a - b) for a, b in zip(box, built)) < 1e-6:
             return list(self.views[j])  # (the built value: the camera's own view, to the hundredth)
         framing = Framing(full, max_zoom=ZOOM_LEVELS[-1])
         view = framing.view(box, FINAL_CONTEXT, 1.0)
-        for _ in range(4):  # (the room grows with the view it widens)
-            s = view[2] / w0
-            grown = framing.view((box[0] - s * room[0], box[1] - s * room[1], box[2] + s * room[2],
-                                  box[3] + s * room[3]), FINAL_CONTEXT, 1.0)
-            if grown == view:
+        if self._lettered is None:
+            return list(view)
+        cx, cy, c, s, fur = self._lettered
+        shown = ~fur if self.furniture_live is False else np.ones(len(fur), dtype=bool)
+        at = np.column_stack([nums[cx], nums[cy], nums[cx], nums[cy]])[shown] + c[shown]
+        W, H = PLAYER_FIGURE_PX
+        for _ in range(4):  # the letters widen the view, which sets their size (lay_out_end)
+            z = zoom_of(view, full)
+            ls = player_letter_scale(max(view[2] / W, view[3] / H) * z / ZOOM_LEVELS[level(z)])
+            b = at + ls * s[shown]
+            with np.errstate(invalid="ignore"):
+                grown = (min(box[0], np.nanmin(b[:, 0], initial=box[0])), min(box[1], np.nanmin(b[:, 1], initial=box[1])),
+                         max(box[2], np.nanmax(b[:, 2], initial=box[2])), max(box[3], np.nanmax(b[:, 3], initial=box[3])))
+            new = framing.view(grown, FINAL_CONTEXT, 1.0)
+            if new == view:
                 break
-            view = grown
-        return list(view)
+            view = new
+        return [float(c) for c in view]
 
     def _furniture(self, items: tuple, vp: Any, exact: bool = True,
                    owners: dict[str, int] | None = None) -> tuple[list, list[float], dict[str, str]]:
@@ -441,9 +473,10 @@ class Measure:
                               np.nanmin(np.stack([box[1, j], fur_box[1], *(e[1] for e in ends)]), 0),
                               np.nanmax(np.stack([box[2, j], fur_box[2], *(e[2] for e in ends)]), 0),
                               np.nanmax(np.stack([box[3, j], fur_box[3], *(e[3] for e in ends)]), 0)])
+            page = np.hstack([np.zeros((size, 4)), rows])  # (the page's numbers: its viewBox's aside)
             for i in range(size):
                 carried[j, :, i] = self._end_view(None if np.isnan(b[0, i]) else tuple(b[:, i].tolist()),
-                                                  (0.0, 0.0, float(width[i]), float(height[i])))
+                                                  (0.0, 0.0, float(width[i]), float(height[i])), page[i])
         blocks = [np.zeros((size, 2)), width[:, None], height[:, None], rows,
                   carried[self.view_of].transpose(2, 0, 1).reshape(size, -1)]
         rings = views + len(self.rings)
@@ -558,7 +591,8 @@ class Measure:
         boxes = self._boxes(scene, vp)
         carried = [self._carried(j, box, full) for j, box in enumerate(boxes)] + [list(full)]  # [-1]: the whole
         if self._end is not None:
-            carried[self._end[0]] = self._end_view(end_box(scene, vp.px, self.furniture_live is not False), full)
+            carried[self._end[0]] = self._end_view(end_box(scene, vp.px, self.furniture_live is not False), full,
+                                                   np.asarray(nums, dtype=float))
         for i, j in enumerate(self.view_of):
             keys.append(("#zoom", str(i), "# # # #"))
             nums += carried[j]

@@ -1324,3 +1324,26 @@ def test_a_new_drag_after_letting_go_starts_from_the_view_let_go_at(browser, liv
             and step[1] + step[3] <= view[1] + view[3] + 0.01, (sign, view, step)
     assert not errors, errors
     page.close()
+
+
+def test_the_rod_written_at_the_break_is_the_sliders_in_every_piece_of_the_domain(browser):
+    """Tafel 2's construction changes its form along L/r, so its slider moves through pieces of the domain, each
+    swept apart: dragged slowly from the book's L/r = 5 to 32.4 and 1000 (``input`` events only) at three fifths
+    of the steps, the rod's length written at the axis's break is the slider's value (it was the value the first
+    piece's sweep was left at: "L = 1,096 r" at L/r 32.4)."""
+    path = REPO / "gallery" / "inertia-stroke-fractions-rod-ratio-5" / "teaching" / "player.html"
+    if not path.is_file():
+        pytest.skip("no committed gallery in this checkout")
+    page, errors = _open(browser, path)
+    page.evaluate("() => { const s = document.getElementById('slider'); s.value = Math.round(0.6 * s.max); s.oninput(); }")
+    _at_step_view(page)
+    written = """() => Array.from(document.querySelectorAll('#figure .rodlen text.lb:not(.halo)'))
+        .filter(t => t.getClientRects().length).map(t => t.textContent)"""
+    was = 5.0
+    for v, said in ((32.4, "L = 32,4 r"), (1000.0, "L = 1000 r")):
+        for u in np.geomspace(was, v, 21)[1:]:
+            _drag_to(page, "rod_ratio", float(u))
+        was = v
+        assert page.evaluate(written) == [said], (v, page.evaluate(written))
+    assert not errors, errors
+    page.close()

@@ -70,8 +70,11 @@ class Measure:
     marks of the steps it shows moves and grows or shrinks, and the view with it (its room round them kept
     in proportion, cut to the canvas as the camera cuts it, never past the camera's greatest magnification).
     The camera's own choice at another value is not computed (it places every letter of the figure, 0.2 to
-    0.5 s a value); a teacher who moves the rod ratio keeps the shots of the book's figure.  A sweep's values
-    are measured together by :meth:`frames`.
+    0.5 s a value); a teacher who moves the rod ratio keeps the shots of the book's figure.  The end step's
+    view, the finished figure, is framed at every value as the camera frames the end state there (its marks,
+    the plate's furniture and the letters the page writes beside them: :meth:`_end_view`), as a fresh build
+    frames it where its letters stand where the book's value's stand.  A sweep's values are measured together
+    by :meth:`frames`.
 
     >>> from construct.constructions import get
     >>> c = get("crank"); fig = c.figure(parts=3)
@@ -99,9 +102,9 @@ class Measure:
                 shows[j].add(k)
         self.framed = [[m.id for m in scene.marks if m.step in ks] for ks in shows]
         #: the end step's view, framed at every value as the camera frames the end state (:meth:`_end_view`): its
-        #: index among the views, the box of what it draws, the page there and its letters (:meth:`_end_room`);
+        #: index among the views, the box of what it draws, the page there and its letters (:meth:`_end_of`);
         #: None without an end state (or with its view shared by another step)
-        self._end = self._end_room(scene, drawing)
+        self._end = self._end_of(scene, drawing)
         self.views = list(distinct)
         for j, ids in enumerate(self.framed):
             if not ids:  # another step that draws nothing of its own: carried with the marks inside its view
@@ -164,7 +167,7 @@ class Measure:
         self.readings = {f"{m.id}-label": readings[of(m)] for m in scene.marks if of(m) in readings and m.label}
         self.texts = {k: v for k, v in texts.items() if k not in self.readings}  # the same at every value
 
-    def _end_room(self, scene: Any, drawing: Any) -> tuple[int, tuple, tuple, list] | None:
+    def _end_of(self, scene: Any, drawing: Any) -> tuple[int, tuple, tuple, list] | None:
         """:attr:`_end` of the built figure: the end view's index j, the box of what the end state draws
         (:func:`end_box`: its marks and the plate's furniture), the built page, and the letters it writes
         (:func:`~construct.render.end_state.end_letter_boxes`), which :meth:`_letters` finds on the page's
@@ -185,12 +188,13 @@ class Measure:
         place of its element's x and y among the page's numbers, and its box there as x, y + c + ls s (canvas
         px; ls the letter scale): a point's letter at its offset from the point, which the letter scale scales;
         the plate's lettering scaled about its own middle (the player's ``scale`` of it); and whether it is
-        the plate's (the furniture's, which a held furniture does not show away from the book's value)."""
+        the plate's (the furniture's, which a held furniture does not show away from the book's value); and the
+        ids of their elements."""
         at, n = {}, 0
         for k in self.keys:
             at.setdefault((k[0], k[1]), n)
             n += k[2].count("#")
-        rows = []
+        rows, ids = [], []
         for ident, attr, (x, y), b in letters:
             if (ident, attr) not in at or (ident, "cy" if attr == "cx" else "y") not in at:
                 continue
@@ -198,14 +202,16 @@ class Measure:
             mid = (box[:2] + box[2:]) / 2 if attr == "x" else np.zeros(2)
             rows.append((at[(ident, attr)], at[(ident, "cy" if attr == "cx" else "y")], *mid, *mid,
                          *(box - np.tile(mid, 2)) / ls0, attr == "x"))
+            ids.append(ident)
         if not rows:
             return None
         t = np.asarray(rows, dtype=float)
-        return t[:, 0].astype(int), t[:, 1].astype(int), t[:, 2:6], t[:, 6:10], t[:, 10] > 0
+        return t[:, 0].astype(int), t[:, 1].astype(int), t[:, 2:6], t[:, 6:10], t[:, 10] > 0, ids
 
-    def _end_view(self, box: tuple | None, full: tuple, nums: np.ndarray) -> list[float]:
+    def _end_view(self, box: tuple | None, full: tuple, nums: np.ndarray, absent: str = "") -> list[float]:
         """The end step's view of a value where the end state draws within *box* (canvas px: x0, y0, x1, y1) on
-        the page *full*, its numbers *nums* (the page's, in its order): as the camera frames it
+        the page *full*, its numbers *nums* (the page's, in its order; *absent*: the ids of the plate's elements it
+        hides there, a scale's ticks that come and go, space-separated): as the camera frames it
         (end_state.lay_out_end: :data:`FINAL_CONTEXT` round it and the letters it writes, at the letter scale of
         the view, magnified at most the last zoom level), the letters where the page writes them (beside their
         points as placed at the book's value)."""
@@ -219,8 +225,11 @@ class Measure:
         view = framing.view(box, FINAL_CONTEXT, 1.0)
         if self._lettered is None:
             return list(view)
-        cx, cy, c, s, fur = self._lettered
+        cx, cy, c, s, fur, ids = self._lettered
         shown = ~fur if self.furniture_live is False else np.ones(len(fur), dtype=bool)
+        if absent:
+            gone = set(absent.split())
+            shown &= np.fromiter((i not in gone for i in ids), dtype=bool, count=len(ids))
         at = np.column_stack([nums[cx], nums[cy], nums[cx], nums[cy]])[shown] + c[shown]
         W, H = PLAYER_FIGURE_PX
         for _ in range(4):  # the letters widen the view, which sets their size (lay_out_end)
@@ -476,7 +485,8 @@ class Measure:
             page = np.hstack([np.zeros((size, 4)), rows])  # (the page's numbers: its viewBox's aside)
             for i in range(size):
                 carried[j, :, i] = self._end_view(None if np.isnan(b[0, i]) else tuple(b[:, i].tolist()),
-                                                  (0.0, 0.0, float(width[i]), float(height[i])), page[i])
+                                                  (0.0, 0.0, float(width[i]), float(height[i])), page[i],
+                                                  fur_texts[i].get("#absent", ""))
         blocks = [np.zeros((size, 2)), width[:, None], height[:, None], rows,
                   carried[self.view_of].transpose(2, 0, 1).reshape(size, -1)]
         rings = views + len(self.rings)
@@ -592,7 +602,7 @@ class Measure:
         carried = [self._carried(j, box, full) for j, box in enumerate(boxes)] + [list(full)]  # [-1]: the whole
         if self._end is not None:
             carried[self._end[0]] = self._end_view(end_box(scene, vp.px, self.furniture_live is not False), full,
-                                                   np.asarray(nums, dtype=float))
+                                                   np.asarray(nums, dtype=float), texts.get("#absent", ""))
         for i, j in enumerate(self.view_of):
             keys.append(("#zoom", str(i), "# # # #"))
             nums += carried[j]

@@ -415,7 +415,7 @@ def test_while_dragging_the_letters_keep_their_scale_within_a_band_and_take_the_
     page.goto(path.as_uri())
     page.evaluate("window.constructLive.ready")
     page.evaluate("() => { const z = document.getElementById('zoom'); z.checked = false; z.onchange(); }")
-    page.wait_for_timeout(500)  # the camera's glide to the whole figure
+    _glided(page)  # to the whole figure
     scale = "() => +getComputedStyle(document.querySelector('#figure .pt')).getPropertyValue('--ls')"
     grow = """([f, drag]) => { const p = window.constructPlayer; p.full[2] *= f; p.full[3] *= f; p.jump(drag); }"""
     built = page.evaluate(scale)
@@ -465,7 +465,7 @@ def test_while_dragging_the_camera_and_the_zoom_level_stay_while_near_and_let_go
     page, errors = _open(browser, path)
     n = page.evaluate("window.constructPlayer.data.n")
     page.evaluate("() => { const s = document.getElementById('slider'); s.value = %d; s.oninput(); }" % (n // 2))
-    page.wait_for_timeout(600)  # the camera's glide
+    _glided(page)
     # (the view shown: while a drag moves the camera, by the transform of the camera's group, the viewBox kept)
     state = """() => [window.constructPlayer.view().map(v => Math.round(v * 100) / 100),
                       document.getElementById('figure').getAttribute('class')]"""
@@ -503,7 +503,7 @@ def test_while_dragging_the_camera_and_the_zoom_level_stay_while_near_and_let_go
     ahead = [target[0], target[1] - 0.05 * target[3], 1.1 * target[2], 1.1 * target[3]]
     assert page.evaluate(state)[0] == pytest.approx(ahead, abs=0.01)
     page.evaluate("() => window.constructPlayer.move()")  # let go: a glide to the step's view
-    page.wait_for_timeout(600)
+    _glided(page)
     shown = page.evaluate(state)
     assert shown[0] == pytest.approx(target, abs=0.01)
     page.evaluate("() => window.constructPlayer.jump(false)")  # the view and level exactly: as the glide left them
@@ -554,8 +554,8 @@ def test_while_dragging_the_camera_keeps_what_the_step_frames_in_the_window(brow
                 box = [step[0], step[1], step[0] + step[2], step[1] + step[3]]
                 assert inside(box, view, 0.01), f"{name} step {k}, {given} = {v:.4g}: the step's view {step} leaves {view}"
                 assert k < n or crank is None or crank >= 50, (name, k, v, crank)
-        page.evaluate("""() => new Promise(r => { document.querySelector('#live input[type=range]')
-            .dispatchEvent(new Event('change')); setTimeout(r, 700); })""")
+        page.evaluate("() => document.querySelector('#live input[type=range]').dispatchEvent(new Event('change'))")
+        _glided(page)
         view, step = page.evaluate("""() => [document.getElementById('figure').getAttribute('viewBox').split(' ')
             .map(Number), window.constructPlayer.target()]""")
         assert view == pytest.approx(step, abs=0.01), (name, k)
@@ -579,13 +579,13 @@ def test_a_drag_keeps_the_zoom_level_near_its_range_and_letting_go_makes_it_exac
     drag = """([a, b]) => new Promise(res => { let j = 0; function f(){ j++;
         window.constructLive.set(a * Math.pow(b / a, j / 30), true); if (j < 30) requestAnimationFrame(f); else res(); }
       requestAnimationFrame(f); })"""
-    let_go = """() => new Promise(r => { document.querySelector('#live input[type=range]').dispatchEvent(new Event('change'));
-        setTimeout(r, 700); })"""
+    let_go = "() => document.querySelector('#live input[type=range]').dispatchEvent(new Event('change'))"
     held = 0
     for a, b in [(4.0, 1.3), (1.3, 1.8), (1.8, 1.15), (1.15, 3.0), (3.0, 1.2), (1.2, 9.0)]:
         page.evaluate(drag, [a, b])
         dragged = page.evaluate(level)
         page.evaluate(let_go)
+        _glided(page)
         after = page.evaluate(level)
         page.evaluate("() => window.constructPlayer.jump(false)")  # the exact view and level at once
         assert page.evaluate(level) == after, (a, b)
@@ -611,6 +611,21 @@ def test_a_drag_draws_every_mark_in_the_window_or_not_shown_or_not(browser, live
     assert _compare(page, c, {"parts": 3}, 7.1, keys, snapped) > 0.0
     assert not errors, errors
     page.close()
+
+
+#: the camera at rest: the view shown is the one it glides to (the step's, or the whole figure's), the glide's
+#: last frame drawn (that frame sets it to within rounding: from + (to - from) * 1)
+_AT_REST = """() => { const p = window.constructPlayer, v = p.view(), t = p.target();
+    return v.every((x, i) => Math.abs(x - t[i]) <= 1e-9 * (1 + Math.abs(t[i]))); }"""
+
+
+def _glided(page) -> None:
+    """Waits until the camera's glide (350 ms of animation frames) has ended where it goes: two frames for the
+    page's own handlers first (the slider's let-go draws in the next frame, and starts the glide there), then
+    until the view shown is the target.  A fixed wait past the glide's end (500-900 ms) left this worker and
+    the browser both idle for the rest of it."""
+    page.evaluate("() => new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)))")
+    page.wait_for_function(_AT_REST, polling=50, timeout=10_000)
 
 
 def _at_step_view(page) -> None:
@@ -1058,7 +1073,8 @@ def test_the_end_states_plate_lettering_keeps_the_letters_size_on_the_screen(bro
     assert len(book["ticks"]) >= 2 and len(book["tips"]) >= 4, book
     for v in (1.5, 50.0):
         _drag_to(page, "rod_ratio", v)
-        page.evaluate("() => new Promise(r => { document.querySelector('#live input[type=range]').dispatchEvent(new Event('change')); setTimeout(r, 900); })")
+        page.evaluate("() => document.querySelector('#live input[type=range]').dispatchEvent(new Event('change'))")
+        _glided(page)
         got = page.evaluate(heights)
         fur, letter = got["fur"], got["letter"]
         assert got["nf"] >= 2 and got["nl"] >= 5, (v, got)

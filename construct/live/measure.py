@@ -20,6 +20,7 @@ from __future__ import annotations
 import difflib
 import heapq
 import math
+from collections.abc import Callable, Sequence
 from types import SimpleNamespace
 from typing import Any
 
@@ -31,7 +32,7 @@ from ..render.camera import (FINAL_CONTEXT, MAX_ZOOM, PLAYER_FIGURE_PX, ZOOM_LEV
                              player_letter_scale, zoom_of)
 from ..render.end_state import NumbersFactory, end_furniture, end_letter_boxes, furniture_numbers
 from ..render.output import scene_for
-from ..render.insets import inset_detail
+from ..render.insets import inset_details
 from ..render.plate import Lettering, extent, plain, plate_of, shifted, subscript_runs
 from ..render.player import inset_marks, player_html
 from ..render.scene import MarkKind, extreme_points, reading
@@ -43,10 +44,12 @@ from ..render.sweepdraw import SweepDrawing, sweep_drawable
 from ..render.viewport import Viewport
 from ..render.wire import ARC, NUMBER, canonical_arc
 
+#: How many forms of another value's furniture a Measure keeps matched to the built one's (:meth:`Measure._aligned`).
+MATCHES = 64
 #: The end state's furniture drawn as numbers (:func:`~construct.render.end_state.furniture_numbers`).
 NUMBERS = NumbersFactory()
 
-__all__ = ["Measure", "player_page", "player_page_and_fit", "fit_of", "areas_of", "breaks_px"]
+__all__ = ["Measure", "Frames", "player_page", "player_page_and_fit", "fit_of", "areas_of", "breaks_px"]
 
 
 def _inside(scene: Any, vp: Viewport, view: tuple) -> list[str]:
@@ -58,6 +61,27 @@ def _inside(scene: Any, vp: Viewport, view: tuple) -> list[str]:
         if pts and all(x <= px <= x + w and y <= py <= y + h for px, py in pts):
             out.append(m.id)
     return out
+
+
+class Frames(Sequence):
+    """The frames of a sweep's values (:meth:`Measure.frames`), each drawn when it is first read: what is drawn
+    for all values at once is drawn, what is drawn value by value waits for a reader."""
+
+    def __init__(self, size: int, frame: Callable[[int], tuple]):
+        self._size, self._frame, self._got = size, frame, {}
+
+    def __len__(self) -> int:
+        return self._size
+
+    def __getitem__(self, i):
+        if isinstance(i, slice):
+            return [self[j] for j in range(*i.indices(self._size))]
+        if not -self._size <= i < self._size:
+            raise IndexError(f"a sweep of {self._size} values has no value {i}")
+        i %= self._size
+        if i not in self._got:
+            self._got[i] = self._frame(i)
+        return self._got[i]
 
 
 class Measure:
@@ -120,10 +144,11 @@ class Measure:
         #: the page does not find anew (a cluster's, :func:`~construct.render.insets.inset_detail`), by their index:
         #: its box (x, y, w, h) and the marks it is carried with (the points it letters, else the step's own
         #: marks), and their box at the built value (:meth:`_carried_insets`)
+        boxed = [(i, k, z) for i, k in enumerate(self.steps) if (z := drawing.insets[k - 1]) is not None]
+        details = inset_details(scene, drawing.vp.px, drawing.vp.scale, [(k, z) for _, k, z in boxed])
         self.insets = [(i, tuple(z), [m.id for m, _ in inset_marks(drawing, k, z)]
-                        or [m.id for m in scene.marks if m.step == k]) for i, k in enumerate(self.steps)
-                       if (z := drawing.insets[k - 1]) is not None
-                       and inset_detail(scene, drawing.vp.px, drawing.vp.scale, k, z) is None]
+                        or [m.id for m in scene.marks if m.step == k]) for (i, k, z), d in zip(boxed, details)
+                       if d is None]
         self._inset_b0 = self._inset_boxes(scene, drawing.vp)
         self.least = 1.0 / MAX_ZOOM
         self.template = scene
@@ -135,6 +160,8 @@ class Measure:
         #: :meth:`furniture_kept`), held at these numbers else (the page shows it at the book's values alone)
         self._built = built
         self._items = scene.end_furniture
+        #: another value's furniture matched to the built one's, by its items' forms and texts (:meth:`_aligned`)
+        self._matches: dict[tuple, dict[int, int]] = {}
         #: each built furniture element's item: {its id: the item's index in the built furniture}
         self.owners: dict[str, int] = {}
         self.held = self._furniture(scene.end_furniture, drawing.vp, owners=self.owners)
@@ -293,7 +320,16 @@ class Measure:
     def _aligned(self, items: tuple) -> tuple[tuple, frozenset[int]]:
         """Another value's furniture *items* in the built one's form: each built item where that value has it
         (:func:`_matched`), the built item where it has not; and the built items it has not, by their index."""
-        at = _matched(self._items, items)
+        # (matched once for each form and texts of the items: most values of a sweep share a few; at most
+        # MATCHES of them kept)
+        key = tuple((type(it), getattr(it, "text", ""), getattr(it, "text_at", None) is None,
+                     getattr(it, "broken", False), bool(getattr(it, "angle", 0)), getattr(it, "to", None) is None)
+                    for it in items)
+        at = self._matches.get(key)
+        if at is None:
+            if len(self._matches) >= MATCHES:
+                self._matches.clear()
+            at = self._matches[key] = _matched(self._items, items)
         return (tuple(items[at[i]] if i in at else it for i, it in enumerate(self._items)),
                 frozenset(range(len(self._items))) - set(at))
 
@@ -400,11 +436,12 @@ class Measure:
         cy = (box[1] + box[3]) / 2 + (y + h / 2 - (b0[1] + b0[3]) / 2) * s
         return list(clip_view(cx, cy, w * s, h * s, full))
 
-    def frames(self, protocol: Any, replay: Any, size: int) -> list[tuple]:
+    def frames(self, protocol: Any, replay: Any, size: int) -> Frames:
         """:meth:`__call__` at every value of the sweep *replay* (of *size* values): the marks' numbers drawn for
         all values at once (:class:`~construct.render.sweepdraw.SweepDrawing`) where that draws what the drawing
         draws, value by value elsewhere (a value where a mark changes its form, a figure the sweep does not
-        draw)."""
+        draw).  What is drawn value by value (the plate's furniture, a value's scene) is drawn when the value is
+        read (:class:`Frames`): the refinement draws midpoints ahead and reads about half of them."""
         at_once = None
         template, runs, keys = self._form(protocol, replay)
         if sweep_drawable(template, self.style, hatching=False):  # (the page draws areas from their curves)
@@ -415,40 +452,32 @@ class Measure:
         if at_once is not None and any(at_once.numbers.get(i, np.zeros((0, 0))).shape[1:] != (n,) for i, n in runs
                                        if not i.startswith("fin-")):  # (the end state's furniture: below)
             at_once = None
+        whole = lambda i: self(Figure(protocol, replay.take(i, whole=True), self.construction.check,  # noqa: E731
+                                      self.construction))
         if at_once is None or not at_once.ok.any():
-            return [self(Figure(protocol, replay.take(i, whole=True), self.construction.check, self.construction))
-                    for i in range(size)]
+            return Frames(size, whole)
         # the end state's furniture: the plate's, value by value (a plate's furniture is a few dozen lines and
-        # letters read off a handful of points: 0.02 to 1.5 ms a value)
+        # letters read off a handful of points: 0.02 to 1.5 ms a value), when the value is read (below)
         furniture = {i: 0 for i, _ in runs if i.startswith("fin-")}
-        fur_texts: list[dict[str, str]] = [{}] * size
-        fur_box = np.full((4, size), np.nan)  # (where the furniture is drawn at every value: the box it is set in)
         live = self.furniture_live
         if furniture and live is None:  # (not asked: matched item by item over these values)
             kept = self.furniture_kept(protocol, replay, size)
             live = kept is not None
             self.hidden_items = kept or frozenset()
-        if furniture and not live:  # (held at the built value's numbers)
-            table = np.tile(np.asarray(self.held[1], dtype=float), (size, 1))
-        elif furniture:
-            want = [k for k in keys if k[0] in furniture]
-            cols: list[list[float]] = []
-            for i in range(size):
-                fk, fn, ft, fur_box[:, i] = ([], [], {}, (math.nan,) * 4) if not at_once.ok[i] else self._furniture_at(
-                    Figure(protocol, replay.take(i), self.construction.check, self.construction), at_once, i)
-                if fk != want:  # (another form of the furniture there: value by value)
-                    at_once.ok[i] = False
-                    fn = [math.nan] * sum(k[2].count("#") for k in want)
-                cols.append(fn)
-                fur_texts[i] = ft
-            table = np.round(np.asarray(cols, dtype=float), 2) + 0.0  # (as the writer writes them: within 0.01)
-        if furniture:
+        want = [k for k in keys if k[0] in furniture] if furniture and live else []
+        if furniture:  # held at the built value's numbers; drawn at every value: filled in as each is read
+            table = np.tile(np.asarray(self.held[1], dtype=float), (size, 1)) if not want else \
+                np.zeros((size, sum(k[2].count("#") for k in want)))
             at = 0
             for ident, count in runs:
                 if ident in furniture:
                     at_once.numbers[ident] = table[:, at:at + count]
                     at += count
         rows = np.concatenate([at_once.numbers[i] for i, _ in runs], axis=1)  # (each a values x numbers block)
+        # (the furniture's columns among them)
+        stops = np.cumsum([n for _, n in runs])
+        at_furniture = np.concatenate([np.arange(e - n, e) for (i, n), e in zip(runs, stops) if i in furniture]
+                                      or [np.zeros(0, dtype=int)])
         width, height = (np.round(v, 2) for v in at_once.size)
         px = at_once.page_px
 
@@ -473,21 +502,20 @@ class Measure:
                              *px(most(ends[1], starts, axis=0), least(ends[2], starts, axis=0)))
         views = len(self.framed)
         carried = self._carried_rows(box[:, :views], boxed[:views], width, height)  # (views + 1) x 4 x values
-        if self._end is not None:  # the end view: framed at every value (the end state's own marks boxed too)
-            j = self._end[0]
+        if self._end is not None:  # the end view: framed at every value (the end state's own marks boxed too; the
+            # furniture's box and the letters it writes where each value is read, below)
+            j_end = self._end[0]
             ends = [at_once.end_boxes[m.id] for m in template.end_marks
                     if template.end_shows(m) and m.id in at_once.end_boxes]
             with np.errstate(invalid="ignore"):  # (NaN: nothing there)
-                b = np.stack([np.nanmin(np.stack([box[0, j], fur_box[0], *(e[0] for e in ends)]), 0),
-                              np.nanmin(np.stack([box[1, j], fur_box[1], *(e[1] for e in ends)]), 0),
-                              np.nanmax(np.stack([box[2, j], fur_box[2], *(e[2] for e in ends)]), 0),
-                              np.nanmax(np.stack([box[3, j], fur_box[3], *(e[3] for e in ends)]), 0)])
-            page = np.hstack([np.zeros((size, 4)), rows])  # (the page's numbers: its viewBox's aside)
-            for i in range(size):
-                carried[j, :, i] = self._end_view(None if np.isnan(b[0, i]) else tuple(b[:, i].tolist()),
-                                                  (0.0, 0.0, float(width[i]), float(height[i])), page[i],
-                                                  fur_texts[i].get("#absent", ""))
-        blocks = [np.zeros((size, 2)), width[:, None], height[:, None], rows,
+                end_marks = np.stack([np.nanmin(np.stack([box[0, j_end], *(e[0] for e in ends)]), 0),
+                                      np.nanmin(np.stack([box[1, j_end], *(e[1] for e in ends)]), 0),
+                                      np.nanmax(np.stack([box[2, j_end], *(e[2] for e in ends)]), 0),
+                                      np.nanmax(np.stack([box[3, j_end], *(e[3] for e in ends)]), 0)])
+            # (where each step showing it keeps its view among the rest of a value's numbers)
+            end_at = [4 * s + c for s, j in enumerate(self.view_of) if j == j_end for c in range(4)]
+        # each value's row: these blocks, the marks' rows between the first three and the rest
+        blocks = [np.zeros((size, 2)), width[:, None], height[:, None],
                   carried[self.view_of].transpose(2, 0, 1).reshape(size, -1)]
         rings = views + len(self.rings)
         if self.rings:  # the ring's centre: of the box of the step's marks
@@ -497,22 +525,36 @@ class Measure:
         if self.insets:  # each inset's box: carried with its points
             blocks.append(self._carried_insets(box[:, rings:]).transpose(2, 0, 1).reshape(size, -1))
         blocks.append(at_once.breaks_page())
-        table = np.hstack(blocks)
+        head, rest = np.hstack(blocks[:3]), np.hstack(blocks[3:])
         fits = [tuple(row) for row in at_once.fit.tolist()]
-        out = []
-        for i in range(size):
+
+        def frame(i: int) -> tuple:
             if not at_once.ok[i]:
-                out.append(self(Figure(protocol, replay.take(i, whole=True), self.construction.check,
-                                       self.construction)))
-                continue
-            texts = {**self.texts, **fur_texts[i]} if fur_texts[i] else self.texts
+                return whole(i)
+            texts, fur_box = self.texts, (math.nan,) * 4
+            if want:
+                fk, fn, ft, fur_box = self._furniture_at(Figure(protocol, replay.take(i), self.construction.check,
+                                                                self.construction), at_once, i)
+                if fk != want:  # (another form of the furniture there: value by value)
+                    at_once.ok[i] = False
+                    return whole(i)
+                # (rounded as the writer writes them: within 0.01)
+                rows[i, at_furniture] = np.round(np.asarray(fn, dtype=float), 2) + 0.0
+                texts = {**texts, **ft} if ft else texts
+            if self._end is not None:  # the end view: of its marks, the furniture and the letters written there
+                with np.errstate(invalid="ignore"):
+                    b = np.concatenate([np.fmin(end_marks[:2, i], fur_box[:2]), np.fmax(end_marks[2:, i], fur_box[2:])])
+                rest[i, end_at] = np.tile(self._end_view(
+                    None if np.isnan(b[0]) else tuple(b.tolist()), (0.0, 0.0, float(width[i]), float(height[i])),
+                    np.concatenate([head[i], rows[i]]), texts.get("#absent", "")), len(end_at) // 4)
             if self.readings:
                 taken = replay.take(i)
                 texts = {**texts, **{k: reading(label, taken) for k, label in self.readings.items()}}
             # (the row as an array: the sweep reads every value's numbers as one; a list of floats would be
             # made and read back per value)
-            out.append((keys, table[i], fits[i], texts))
-        return out
+            return keys, np.concatenate([head[i], rows[i], rest[i]]), fits[i], texts
+
+        return Frames(size, frame)
 
     def _carried_rows(self, box: np.ndarray, boxed: np.ndarray, W: np.ndarray, H: np.ndarray) -> np.ndarray:
         """:meth:`_carried` over a sweep, every view at once: the views carried along with their marks' boxes *box*

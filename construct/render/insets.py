@@ -18,12 +18,13 @@ True
 from __future__ import annotations
 
 import math
-from typing import Callable, Sequence
+from typing import Any, Callable, Sequence
 
 from .camera import PLAYER_FIGURE_PX, Framing, View, step_details, step_focus, zoom_of
 from .scene import MarkKind, Scene
 
-__all__ = ["step_insets", "inset_detail", "ring_round", "SLIVER_PX", "SLIVER_RATIO", "INSET_PX", "INSET_DETAIL_PX"]
+__all__ = ["step_insets", "inset_detail", "inset_details", "ring_round", "SLIVER_PX", "SLIVER_RATIO", "INSET_PX",
+           "INSET_DETAIL_PX"]
 
 
 #: A step's work is a sliver where its region is thinner on the screen than this (px) and at least
@@ -90,11 +91,35 @@ def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]]
 
     *px*: the drawing's map to canvas pixels; *scale*: its canvas pixels per unit.
     """
-    s = scene.steps[k - 1]
+    return inset_details(scene, px, scale, [(k, box)])[0]
+
+
+def inset_details(scene: Scene, px: Callable[[float, float], tuple[float, float]], scale: float,
+                  asked: Sequence[tuple[int, Sequence[float]]]) -> list[tuple | None]:
+    """:func:`inset_detail` of each (step, box) *asked*: the scene's marks by name and its points by where they
+    are drawn read once for all of them (a figure's hundreds of insets each read its thousands of marks).
+
+    >>> from construct.constructions import get
+    >>> from construct.render.output import scene_for
+    >>> from construct.render.styles import STYLES
+    >>> from construct.render.svg import Drawing
+    >>> c = get("tangential-pressure")
+    >>> d = Drawing(scene_for(c, c.figure(parts=6), ending=True), STYLES["teaching"])
+    >>> asked = [(k, z) for k, z in enumerate(d.insets, start=1) if z is not None]
+    >>> found = inset_details(d.scene, d.vp.px, d.vp.scale, asked)
+    >>> len(asked), sum(f is not None for f in found)  # (the others: a sliver's, centred on the step's points)
+    (30, 19)
+    """
     drawn = {m.name: m for m in scene.marks}
+    at_point = {tuple(round(c, 2) for c in px(*m.geom)): m.id for m in scene.marks if m.kind is MarkKind.POINT}
+    return [_detail(scene, px, scale, k, box, drawn, at_point) for k, box in asked]
+
+
+def _detail(scene: Scene, px: Callable[[float, float], tuple[float, float]], scale: float, k: int,
+            box: Sequence[float], drawn: dict[str, Any], at_point: dict[tuple, str]) -> tuple | None:
+    s = scene.steps[k - 1]
     near = [drawn[n] for n in dict.fromkeys((*s.outputs, *s.inputs, *sorted(scene.named(k))))
             if n in drawn and drawn[n].kind is MarkKind.POINT]
-    at_point = {tuple(round(c, 2) for c in px(*m.geom)): m.id for m in scene.marks if m.kind is MarkKind.POINT}
     fine, at, rounds = math.inf, None, []
     for n in s.outputs:
         m = drawn.get(n)

@@ -343,8 +343,7 @@ class SweepDrawing:
         self.geoms = {k: (P if k is MarkKind.POINT else ()) for k in MarkKind}
         self.curves = {mid: tuple(pts) for mid, pts in self._unbroken_curves.items()}
         self._broken, self._breaks = None, {}
-        self._break()
-        self._break(axis=1)
+        self._break(axis=1, ext=self._break())
         cx = [self.geoms[MarkKind.POINT][0]] + [_stack([c[0] for c in pts]) for pts in self.curves.values()]
         cy = [self.geoms[MarkKind.POINT][1]] + [_stack([c[1] for c in pts]) for pts in self.curves.values()]
         self.geoms, self.curves, self._broken, self._breaks = saved
@@ -407,8 +406,7 @@ class SweepDrawing:
         self._broken = None
         #: per axis: (broken at which values, where the drawn break starts, its drawn width, what it leaves out)
         self._breaks: dict[int, tuple] = {}
-        self._break()
-        self._break(axis=1)
+        self._break(axis=1, ext=self._break())
 
     def _lay_out(self) -> dict[MarkKind, tuple]:
         """Each kind's marks as rows of arrays (marks x values), as far as the margin leaves them: the points'
@@ -537,20 +535,21 @@ class SweepDrawing:
         return out
 
     # -- the broken axis, the lettered lines ---------------------------------------------------------------
-    def _break(self, axis: int = 0) -> None:
+    def _break(self, axis: int = 0, ext: dict | None = None) -> dict | None:
         """sheet.broken_axis over the sweep: the widest empty stretch broken out where it is wider than a fifth
-        (*axis* 1: across the figure, where wider than BREAK_FRACTION_Y)."""
-        ext = self._extremes()
+        (*axis* 1: across the figure, where wider than BREAK_FRACTION_Y).  *ext*: the marks' extremes, if the
+        caller has them as they are now; returned where nothing was broken (the next axis reads them so)."""
+        ext = self._extremes() if ext is None else ext
         lo_at, hi_at = (0, 1) if axis == 0 else (2, 3)
         spans = [(e[lo_at], e[hi_at]) for key, e in ext.items() if key is not MarkKind.SEGMENT
                  and not (key in self.curves and self._members(key)[0].straight and len(self.curves[key]) == 2)]
         if sum(s.shape[0] for s, _ in spans) < 2:
-            return
+            return ext
         S, E = np.concatenate([s for s, _ in spans]), np.concatenate([e for _, e in spans])  # (blocks of rows)
         lo, hi, width, total = _widest_gaps(S, E)
         brk = (width > 0) & (width > (BREAK_FRACTION if axis == 0 else BREAK_FRACTION_Y) * total)
         if not brk.any():
-            return
+            return ext
         keep = np.minimum(BREAK_KEEP * (total - width), 0.8 * width)
         shift = np.where(brk, width - keep, 0.0)
         sx = lambda x: np.where(brk & (x <= lo), x + shift, x)  # noqa: E731
@@ -572,6 +571,7 @@ class SweepDrawing:
             self.curves[mid] = tuple((sx(x), y) if axis == 0 else (x, sx(y)) for x, y in pts)
         self._broken = brk if self._broken is None else (self._broken | brk)
         self._breaks[axis] = (brk, hi - keep, keep, width)
+        return None
 
     def _letter_lines(self, template: Scene, protocol: Any) -> None:
         """marks.letter_lines over the sweep: each lettered straight line's letter point (value by value: a

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import difflib
 import heapq
+import math
 from collections.abc import Callable, Sequence
 from types import SimpleNamespace
 from typing import Any
@@ -27,11 +28,12 @@ import numpy as np
 
 from ..constructions import Construction
 from ..figure import Figure
-from ..render.camera import FINAL_CONTEXT, MAX_ZOOM, ZOOM_LEVELS, Framing, clip_view
-from ..render.end_state import NumbersFactory, end_furniture, furniture_numbers
+from ..render.camera import (FINAL_CONTEXT, MAX_ZOOM, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, clip_view, level,
+                             player_letter_scale, zoom_of)
+from ..render.end_state import NumbersFactory, end_furniture, end_letter_boxes, furniture_numbers
 from ..render.output import scene_for
 from ..render.insets import inset_details
-from ..render.plate import Lettering, plain, plate_of, shifted, subscript_runs
+from ..render.plate import Lettering, extent, plain, plate_of, shifted, subscript_runs
 from ..render.player import inset_marks, player_html
 from ..render.scene import MarkKind, extreme_points, reading
 from ..render.sheet import break_shift
@@ -92,8 +94,11 @@ class Measure:
     marks of the steps it shows moves and grows or shrinks, and the view with it (its room round them kept
     in proportion, cut to the canvas as the camera cuts it, never past the camera's greatest magnification).
     The camera's own choice at another value is not computed (it places every letter of the figure, 0.2 to
-    0.5 s a value); a teacher who moves the rod ratio keeps the shots of the book's figure.  A sweep's values
-    are measured together by :meth:`frames`.
+    0.5 s a value); a teacher who moves the rod ratio keeps the shots of the book's figure.  The end step's
+    view, the finished figure, is framed at every value as the camera frames the end state there (its marks,
+    the plate's furniture and the letters the page writes beside them: :meth:`_end_view`), as a fresh build
+    frames it where its letters stand where the book's value's stand.  A sweep's values are measured together
+    by :meth:`frames`.
 
     >>> from construct.constructions import get
     >>> c = get("crank"); fig = c.figure(parts=3)
@@ -120,16 +125,10 @@ class Measure:
             if j >= 0:
                 shows[j].add(k)
         self.framed = [[m.id for m in scene.marks if m.step in ks] for ks in shows]
-        if scene.ending and len(self.view_of) > 1 and self.view_of[-1] >= 0 and (
-                not self.framed[self.view_of[-1]] or (scene.end_furniture and self.view_of.count(self.view_of[-1]) == 1)):
-            # a last step that only reads a value off the figure (piston-force's planimeter) has no marks of its
-            # own, and a view carried with nothing became the whole canvas: the finished figure a patch in its
-            # corner at every value.  Its view frames the end state (camera.final_box): carried with its marks
-            # (the marks a sweep draws: the end state's own, end_marks, are not boxed by it) -- as it is where the
-            # end state has the plate's furniture (which the camera frames with the figure: a view carried with
-            # the last step's few marks, Baumann's excess area, grew to 1.4 times the frame of a fresh build as
-            # kappa went to 2, the diagram across 56 % of the window)
-            self.framed[self.view_of[-1]] = [m.id for m in scene.marks if scene.in_end(m) and scene.end_shows(m)]
+        #: the end step's view, framed at every value as the camera frames the end state (:meth:`_end_view`): its
+        #: index among the views, the box of what it draws, the page there and its letters (:meth:`_end_of`);
+        #: None without an end state (or with its view shared by another step)
+        self._end = self._end_of(scene, drawing)
         self.views = list(distinct)
         for j, ids in enumerate(self.framed):
             if not ids:  # another step that draws nothing of its own: carried with the marks inside its view
@@ -152,7 +151,6 @@ class Measure:
                        if d is None]
         self._inset_b0 = self._inset_boxes(scene, drawing.vp)
         self.least = 1.0 / MAX_ZOOM
-        self._end_framing = self._held_end_view(scene, drawing)
         self.template = scene
         #: the end state's view and letters' places: its furniture (the plate's) is drawn at every value as the
         #: drawing draws it (:func:`~construct.render.end_state.end_furniture`), the letters' offsets the built ones
@@ -173,12 +171,16 @@ class Measure:
         #: the texts of the items some value of the sweep draws that the built furniture has not (a scale's tick
         #: more): the page has no element for them (:meth:`furniture_kept`; said in :meth:`hidden_note`)
         self.added: list[str] = []
-        #: (None: not asked -- a value measured alone draws its own furniture, a sweep asks over its values)
-        self._furniture_live: bool | None = None
+        #: whether the end state's furniture is drawn at every value of the sweep (None: not asked -- a value
+        #: measured alone draws its own furniture, a sweep asks over its values); held (False), the page shows it
+        #: at the book's values alone, and the end step's view frames the end state without it
+        self.furniture_live: bool | None = None
         # the marks' keys as this value's page has them: each mark's numbers are a run of them, the runs in the
         # page's order (a sweep draws each mark's numbers for every value at once, :meth:`frames`)
         self.keys, _, _, texts = self._measured(scene)  # (the drawing's scene is what __call__ would make)
         self.runs = self._runs(self.keys)
+        #: the end state's letters as the page moves them (:meth:`_letters`; None: none, or no end view)
+        self._lettered = self._letters(self._end[3], drawing.end.letter) if self._end is not None else None
         # a protocol of another piece of the domain (live.sweep.pieces): its scene, runs and keys, made once (the
         # protocol kept with them: its id stays its own)
         self._forms = {id(built.protocol): (built.protocol, scene, self.runs, self.keys)}
@@ -192,37 +194,83 @@ class Measure:
         self.readings = {f"{m.id}-label": readings[of(m)] for m in scene.marks if of(m) in readings and m.label}
         self.texts = {k: v for k, v in texts.items() if k not in self.readings}  # the same at every value
 
-    @property
-    def furniture_live(self) -> bool | None:
-        """Whether the end state's furniture is drawn at every value of the sweep (None: not asked).  Held (False),
-        the page shows it at the book's values alone, and the end step's view carried from the book's value --
-        which the camera made room in for the furniture -- would frame an empty band where it stood (tangential
-        pressure at kappa = 2: the flat diagram across 56 % of the window): its view is then carried from the
-        camera's frame of the marks the end state draws (:meth:`_held_end_view`)."""
-        return self._furniture_live
-
-    @furniture_live.setter
-    def furniture_live(self, live: bool | None) -> None:
-        if self._end_framing is not None and (live is False) != (self._furniture_live is False):
-            j, view, box, ids = self._end_framing
-            self._end_framing = (j, self.views[j], self.boxes[j], self.framed[j])
-            self.views[j], self.boxes[j], self.framed[j] = view, box, ids
-            self._rows.clear()  # (the groups of marks each view frames: found anew)
-        self._furniture_live = live
-
-    def _held_end_view(self, scene: Any, drawing: Any) -> tuple | None:
-        """The end step's view as the camera frames the marks the end state draws without its furniture
-        (camera.step_views' end state: :data:`~construct.render.camera.FINAL_CONTEXT` round them, at most the
-        last zoom level), with its index among the views, those marks' box and their ids; None without an end
-        state or furniture."""
-        if not scene.ending or not scene.end_furniture or len(self.view_of) < 2 or self.view_of[-1] < 0:
+    def _end_of(self, scene: Any, drawing: Any) -> tuple[int, tuple, tuple, list] | None:
+        """:attr:`_end` of the built figure: the end view's index j, the box of what the end state draws
+        (:func:`end_box`: its marks and the plate's furniture), the built page, and the letters it writes
+        (:func:`~construct.render.end_state.end_letter_boxes`), which :meth:`_letters` finds on the page's
+        numbers."""
+        j = self.view_of[-1] if len(self.view_of) > 1 else -1
+        if not scene.ending or drawing.end is None or j < 0 or self.view_of.count(j) > 1:
             return None
-        ids = [m.id for m in scene.marks if scene.in_end(m) and scene.end_shows(m)]
-        box = self._boxes(scene, drawing.vp, [ids])[0]
+        drawn = end_box(scene, drawing.vp.px)
+        if drawn is None:
+            return None
+        # (its marks: the end state's of the figure, which a sweep boxes; the end state's own from their numbers)
+        self.framed[j] = [m.id for m in scene.marks if scene.in_end(m) and scene.end_shows(m)]
+        return j, drawn, drawing.full_view, end_letter_boxes(scene, self.style, drawing.vp, drawing.placing,
+                                                              drawing.end, drawing.doc.factory)
+
+    def _letters(self, letters: list, ls0: float) -> tuple[np.ndarray, ...] | None:
+        """The end state's *letters* (written at the letter scale *ls0*) as the page moves them: each with the
+        place of its element's x and y among the page's numbers, and its box there as x, y + c + ls s (canvas
+        px; ls the letter scale): a point's letter at its offset from the point, which the letter scale scales;
+        the plate's lettering scaled about its own middle (the player's ``scale`` of it); and whether it is
+        the plate's (the furniture's, which a held furniture does not show away from the book's value); and the
+        ids of their elements."""
+        at, n = {}, 0
+        for k in self.keys:
+            at.setdefault((k[0], k[1]), n)
+            n += k[2].count("#")
+        rows, ids = [], []
+        for ident, attr, (x, y), b in letters:
+            if (ident, attr) not in at or (ident, "cy" if attr == "cx" else "y") not in at:
+                continue
+            box = np.asarray(b) - (x, y, x, y)
+            mid = (box[:2] + box[2:]) / 2 if attr == "x" else np.zeros(2)
+            rows.append((at[(ident, attr)], at[(ident, "cy" if attr == "cx" else "y")], *mid, *mid,
+                         *(box - np.tile(mid, 2)) / ls0, attr == "x"))
+            ids.append(ident)
+        if not rows:
+            return None
+        t = np.asarray(rows, dtype=float)
+        return t[:, 0].astype(int), t[:, 1].astype(int), t[:, 2:6], t[:, 6:10], t[:, 10] > 0, ids
+
+    def _end_view(self, box: tuple | None, full: tuple, nums: np.ndarray, absent: str = "") -> list[float]:
+        """The end step's view of a value where the end state draws within *box* (canvas px: x0, y0, x1, y1) on
+        the page *full*, its numbers *nums* (the page's, in its order; *absent*: the ids of the plate's elements it
+        hides there, a scale's ticks that come and go, space-separated): as the camera frames it
+        (end_state.lay_out_end: :data:`FINAL_CONTEXT` round it and the letters it writes, at the letter scale of
+        the view, magnified at most the last zoom level), the letters where the page writes them (beside their
+        points as placed at the book's value)."""
         if box is None:
-            return None
-        view = Framing(drawing.full_view, max_zoom=ZOOM_LEVELS[-1]).view(box, FINAL_CONTEXT, 1.0)
-        return self.view_of[-1], view, box, ids
+            return list(full)
+        j, built, page, _ = self._end
+        box = tuple(round(c, 6) for c in box)  # (a sweep's box and a scene's differ in the last bits)
+        if tuple(full) == page and max(abs(a - b) for a, b in zip(box, built)) < 1e-6:
+            return list(self.views[j])  # (the built value: the camera's own view, to the hundredth)
+        framing = Framing(full, max_zoom=ZOOM_LEVELS[-1])
+        view = framing.view(box, FINAL_CONTEXT, 1.0)
+        if self._lettered is None:
+            return list(view)
+        cx, cy, c, s, fur, ids = self._lettered
+        shown = ~fur if self.furniture_live is False else np.ones(len(fur), dtype=bool)
+        if absent:
+            gone = set(absent.split())
+            shown &= np.fromiter((i not in gone for i in ids), dtype=bool, count=len(ids))
+        at = np.column_stack([nums[cx], nums[cy], nums[cx], nums[cy]])[shown] + c[shown]
+        W, H = PLAYER_FIGURE_PX
+        for _ in range(4):  # the letters widen the view, which sets their size (lay_out_end)
+            z = zoom_of(view, full)
+            ls = player_letter_scale(max(view[2] / W, view[3] / H) * z / ZOOM_LEVELS[level(z)])
+            b = at + ls * s[shown]
+            with np.errstate(invalid="ignore"):
+                grown = (min(box[0], np.nanmin(b[:, 0], initial=box[0])), min(box[1], np.nanmin(b[:, 1], initial=box[1])),
+                         max(box[2], np.nanmax(b[:, 2], initial=box[2])), max(box[3], np.nanmax(b[:, 3], initial=box[3])))
+            new = framing.view(grown, FINAL_CONTEXT, 1.0)
+            if new == view:
+                break
+            view = new
+        return [float(c) for c in view]
 
     def _furniture(self, items: tuple, vp: Any, exact: bool = True,
                    owners: dict[str, int] | None = None) -> tuple[list, list[float], dict[str, str]]:
@@ -318,16 +366,19 @@ class Measure:
         *protocol* (:meth:`furniture_kept` holds none)."""
         return self.furniture_kept(protocol, replay, size) == frozenset()
 
-    def _furniture_at(self, figure: Figure, at_once: Any, i: int) -> tuple[list, list[float], dict[str, str]]:
+    def _furniture_at(self, figure: Figure, at_once: Any, i: int) -> tuple[list, list[float], dict[str, str], tuple]:
         """:meth:`_furniture` at value *i* of a sweep drawn at once: the plate's furniture of *figure* (that value
-        of the sweep) on that value's broken axis and fit."""
+        of the sweep) on that value's broken axis and fit; and the box of the points it is set at (canvas px: x0,
+        y0, x1, y1; NaN without any)."""
         p = plate_of(self.construction, figure)
         if p.panels or not p.furniture:
-            return [], [], {}
+            return [], [], {}, (math.nan,) * 4
         breaks = at_once.breaks_at(i)
         items = tuple(shifted(it, break_shift(breaks)) for it in p.furniture) if breaks else tuple(p.furniture)
+        px, fx = at_once.px_of(i), extent(items)
         # (its numbers unrounded: frames rounds every value's at once)
-        return self._furniture(items, SimpleNamespace(px=at_once.px_of(i), scale=float(at_once.fit[i][2])), exact=False)
+        return (*self._furniture(items, SimpleNamespace(px=px, scale=float(at_once.fit[i][2])), exact=False),
+                (*px(fx[0], fx[3]), *px(fx[2], fx[1])) if fx is not None else (math.nan,) * 4)
 
     def _runs(self, keys: list[tuple[str, str, str]]) -> list[tuple[str, int]]:
         """Each mark's run of numbers among *keys*: (its id, how many)."""
@@ -451,6 +502,18 @@ class Measure:
                              *px(most(ends[1], starts, axis=0), least(ends[2], starts, axis=0)))
         views = len(self.framed)
         carried = self._carried_rows(box[:, :views], boxed[:views], width, height)  # (views + 1) x 4 x values
+        if self._end is not None:  # the end view: framed at every value (the end state's own marks boxed too; the
+            # furniture's box and the letters it writes where each value is read, below)
+            j_end = self._end[0]
+            ends = [at_once.end_boxes[m.id] for m in template.end_marks
+                    if template.end_shows(m) and m.id in at_once.end_boxes]
+            with np.errstate(invalid="ignore"):  # (NaN: nothing there)
+                end_marks = np.stack([np.nanmin(np.stack([box[0, j_end], *(e[0] for e in ends)]), 0),
+                                      np.nanmin(np.stack([box[1, j_end], *(e[1] for e in ends)]), 0),
+                                      np.nanmax(np.stack([box[2, j_end], *(e[2] for e in ends)]), 0),
+                                      np.nanmax(np.stack([box[3, j_end], *(e[3] for e in ends)]), 0)])
+            # (where each step showing it keeps its view among the rest of a value's numbers)
+            end_at = [4 * s + c for s, j in enumerate(self.view_of) if j == j_end for c in range(4)]
         # each value's row: these blocks, the marks' rows between the first three and the rest
         blocks = [np.zeros((size, 2)), width[:, None], height[:, None],
                   carried[self.view_of].transpose(2, 0, 1).reshape(size, -1)]
@@ -468,16 +531,22 @@ class Measure:
         def frame(i: int) -> tuple:
             if not at_once.ok[i]:
                 return whole(i)
-            texts = self.texts
+            texts, fur_box = self.texts, (math.nan,) * 4
             if want:
-                fk, fn, ft = self._furniture_at(Figure(protocol, replay.take(i), self.construction.check,
-                                                       self.construction), at_once, i)
+                fk, fn, ft, fur_box = self._furniture_at(Figure(protocol, replay.take(i), self.construction.check,
+                                                                self.construction), at_once, i)
                 if fk != want:  # (another form of the furniture there: value by value)
                     at_once.ok[i] = False
                     return whole(i)
                 # (rounded as the writer writes them: within 0.01)
                 rows[i, at_furniture] = np.round(np.asarray(fn, dtype=float), 2) + 0.0
                 texts = {**texts, **ft} if ft else texts
+            if self._end is not None:  # the end view: of its marks, the furniture and the letters written there
+                with np.errstate(invalid="ignore"):
+                    b = np.concatenate([np.fmin(end_marks[:2, i], fur_box[:2]), np.fmax(end_marks[2:, i], fur_box[2:])])
+                rest[i, end_at] = np.tile(self._end_view(
+                    None if np.isnan(b[0]) else tuple(b.tolist()), (0.0, 0.0, float(width[i]), float(height[i])),
+                    np.concatenate([head[i], rows[i]]), texts.get("#absent", "")), len(end_at) // 4)
             if self.readings:
                 taken = replay.take(i)
                 texts = {**texts, **{k: reading(label, taken) for k, label in self.readings.items()}}
@@ -573,6 +642,9 @@ class Measure:
         texts.update(ft)
         boxes = self._boxes(scene, vp)
         carried = [self._carried(j, box, full) for j, box in enumerate(boxes)] + [list(full)]  # [-1]: the whole
+        if self._end is not None:
+            carried[self._end[0]] = self._end_view(end_box(scene, vp.px, self.furniture_live is not False), full,
+                                                   np.asarray(nums, dtype=float), texts.get("#absent", ""))
         for i, j in enumerate(self.view_of):
             keys.append(("#zoom", str(i), "# # # #"))
             nums += carried[j]
@@ -590,6 +662,20 @@ class Measure:
             keys.append(("#break", str(axis), "# #"))
             nums += breaks_px(scene.breaks, axis, fit_of(vp))
         return keys, nums, fit_of(vp), texts
+
+
+def end_box(scene: Any, px: Any, furniture: bool = True) -> tuple[float, float, float, float] | None:
+    """The box (canvas px: x0, y0, x1, y1; *px* maps a point of the figure there) of what the end state of
+    *scene* draws: its marks shown and, with *furniture*, the plate's furniture (the points it is set at), as the
+    camera frames it (:func:`~construct.render.camera.final_box`); None where it draws nothing."""
+    pts = [px(*p) for m in scene.end_drawn() if scene.end_shows(m) for p in extreme_points(m)]
+    fx = extent(scene.end_furniture) if furniture else None
+    if fx is not None:
+        pts += [px(fx[0], fx[1]), px(fx[2], fx[3])]
+    if not pts:
+        return None
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    return (min(xs), min(ys), max(xs), max(ys))
 
 
 def _form(items: Any) -> tuple:

@@ -37,7 +37,7 @@ from .svgdoc import Element, Writer, fmt, with_attribute
 from .viewport import Viewport
 
 __all__ = ["EndView", "END_MARGIN_PX", "lay_out_end", "end_fixed", "end_lettering", "end_furniture", "end_sheet",
-           "own_strokes", "wrapped", "NumbersFactory", "furniture_numbers"]
+           "own_strokes", "wrapped", "NumbersFactory", "furniture_numbers", "lettering_box", "end_letter_boxes"]
 
 #: The margin round the end state's drawing on its sheet (screen px at the end view).
 END_MARGIN_PX = 14.0
@@ -134,7 +134,7 @@ def end_lettering(scene: Scene, vp: Viewport, style: Style,
     return out
 
 
-def _lettering_box(elem: Any, size: float, style: Style) -> tuple[float, float, float, float] | None:
+def lettering_box(elem: Any, size: float, style: Style) -> tuple[float, float, float, float] | None:
     """The box (canvas px) of a furniture lettering element made at *size* (not turned; its halo, a copy
     beneath it, and any other element: None)."""
     xml = elem.get_xml()
@@ -147,6 +147,47 @@ def _lettering_box(elem: Any, size: float, style: Style) -> tuple[float, float, 
     w = text_width(text, size, style.label_font, style.label_italic)
     x += {"start": w / 2, "end": -w / 2}.get(xml.get("text-anchor", "middle"), 0.0)
     return label_box(x, y, text, size, style.label_font, style.label_italic)
+
+
+def end_letter_boxes(scene: Scene, style: Style, vp: Viewport, placing: Placing, end: EndView,
+                     factory: Any) -> list[tuple[str, str, tuple[float, float], tuple[float, float, float, float]]]:
+    """The letters the end state writes, as :func:`lay_out_end` boxed them in its view: (the id of the element
+    the page draws it with or beside -- its point's, or its own text's --, that element's attribute of x (``cx``,
+    ``x``), the element's (x, y) there, the letter's box: canvas px).  The points' letters where the placing set
+    them; the plate's lettering where it set it (its first element: :func:`end_furniture`); the texts of the rest
+    of the furniture (a scale's, a dimension's) where the plate sets them."""
+    st, ls, size = style, end.letter, end.size
+    out = []
+    for m in scene.end_drawn():
+        rel = placing.end_spots.get(m.id)
+        if rel is not None and m.label:
+            px, py = vp.px(*m.geom)
+            out.append((m.id, "cx", (px, py), label_box(px + ls * rel[0], py + ls * rel[1], m.label, size,
+                                                        st.label_font, st.label_italic)))
+    k, items = 0, scene.end_furniture
+    for it in items:  # (the ids as end_furniture gives them: the fixed furniture first, item by item)
+        if isinstance(it, Lettering):
+            continue
+        for j, e in enumerate(furniture_elements([it], vp.px, vp.scale, factory, size=size)):
+            b = lettering_box(e, size, st)
+            if b is not None:
+                xml = e.get_xml()
+                out.append((f"fin-{'s' if j == 0 and isinstance(it, Stroke) else 'f'}{k}", "x",
+                            (float(xml.get("x")), float(xml.get("y"))), b))
+            k += 1
+    for (fid, (px, py), text), i in zip(end_lettering(scene, vp, st, size),
+                                       [i for i, it in enumerate(items) if isinstance(it, Lettering)]):
+        rel = placing.end_spots.get(fid)
+        if rel is None:
+            continue
+        k += rel[2] >= LEADER_FROM  # (its leader)
+        x, y = px + ls * rel[0], py + ls * rel[1]
+        els = text_elements(factory, (x, y - 0.35 * size * items[i].size), items[i].text, size, rel=items[i].size)
+        xml = els[0].get_xml()
+        out.append((f"fin-f{k}", "x", (float(xml.get("x")), float(xml.get("y"))),
+                    label_box(x, y, text, size, st.label_font, st.label_italic)))
+        k += len(els)
+    return out
 
 
 def lay_out_end(scene: Scene, style: Style, vp: Viewport, placing: Placing, views: list, full: tuple,
@@ -166,7 +207,7 @@ def lay_out_end(scene: Scene, style: Style, vp: Viewport, placing: Placing, view
         ls = player_letter_scale(q * z / ZOOM_LEVELS[lvl])
         size = st.label_size * ls
         texts = [b for e in furniture_elements(end_fixed(sc), vp.px, vp.scale, factory, size=size)
-                 if (b := _lettering_box(e, size, st)) is not None]
+                 if (b := lettering_box(e, size, st)) is not None]
         # the plate's own lines that are results (its ordinates), not its thin and dashed helpers
         strokes = [(*vp.px(*it.a), *vp.px(*it.b)) for it in sc.end_furniture
                    if isinstance(it, Stroke) and not {"thin", "dashed", "hidden"} & set(it.look.split())]

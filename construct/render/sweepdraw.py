@@ -198,6 +198,9 @@ class SweepDrawing:
         for key, nums in self._numbers().items():
             for i, m in enumerate(self._members(key)):
                 self.numbers[m.id] = nums[i]
+        #: the end state's own marks' boxes on the page of every value: {mark id: (x0, y0, x1, y1), each over the
+        #: values} (canvas px: the end step's view frames them, live.measure)
+        self.end_boxes: dict[str, tuple[np.ndarray, ...]] = {}
         self.numbers.update(self._end_numbers(template, protocol))
 
     def _end_numbers(self, template: Scene, protocol: Any) -> dict[str, np.ndarray]:
@@ -262,11 +265,15 @@ class SweepDrawing:
                         self.ok &= ~near
             if m.kind is MarkKind.POINT and m.name in points:
                 x, y = self._shifted(*points[m.name])
-                out[m.id] = np.stack([_r2(c) for c in (*self._px(x, y), np.full(n, point_radius(m, st)))], -1)
+                px, py = self._px(x, y)
+                out[m.id] = np.stack([_r2(c) for c in (px, py, np.full(n, point_radius(m, st)))], -1)
+                self.end_boxes[m.id] = (px, py, px, py)
             elif m.kind is MarkKind.SEGMENT and isinstance(obj, Line):
                 x1, y1, x2, y2 = self._segment(obj, marked, margin, key=m.id)
                 (x1, y1), (x2, y2) = self._shifted(x1, y1), self._shifted(x2, y2)
-                out[m.id] = np.stack([_r2(c) for c in (*self._px(x1, y1), *self._px(x2, y2))], -1)
+                (x1, y1), (x2, y2) = self._px(x1, y1), self._px(x2, y2)
+                out[m.id] = np.stack([_r2(c) for c in (x1, y1, x2, y2)], -1)
+                self.end_boxes[m.id] = (np.minimum(x1, x2), np.minimum(y1, y2), np.maximum(x1, x2), np.maximum(y1, y2))
             elif m.kind.round and isinstance(obj, Circle):
                 cx, cy, r = vec(obj.center.x), vec(obj.center.y), vec(obj.radius)
                 if m.role == "result" or not marked:
@@ -287,10 +294,15 @@ class SweepDrawing:
                 cx, cy, r, a0, sw = geom
                 if m.kind is MarkKind.CIRCLE:
                     x, y = self._shifted(cx + r, cy + r, centre=(cx, cy))
-                    out[m.id] = np.stack([_r2(c) for c in (*self._px(x, y), r * scale)], -1)
+                    px, py = self._px(x, y)
+                    out[m.id] = np.stack([_r2(c) for c in (px, py, r * scale)], -1)
+                    self.end_boxes[m.id] = (px - r * scale, py - r * scale, px + r * scale, py + r * scale)
                     continue
                 bx0, bx1, by0, by1 = _arc_box(cx, cy, r, a0, sw)
-                cx, cy = self._shifted(bx1, by1, centre=(cx, cy))
+                sx, sy = self._shifted(bx1, by1, centre=(cx, cy))  # (where the break moves its centre)
+                (ax0, ay0), (ax1, ay1) = self._px(bx0 + sx - cx, by1 + sy - cy), self._px(bx1 + sx - cx, by0 + sy - cy)
+                self.end_boxes[m.id] = (ax0, ay0, ax1, ay1)
+                cx, cy = sx, sy
                 x0, y0 = self._px(cx + r * np.cos(a0), cy + r * np.sin(a0))
                 x1, y1 = self._px(cx + r * np.cos(a0 + sw), cy + r * np.sin(a0 + sw))
                 rr = r * scale

@@ -233,3 +233,19 @@ def test_crank_circle_stays_in_the_teaching_views():
         P = fig.replay[f"P{k}"]
         assert math.hypot(P[0] - cx, P[1] - cy) == pytest.approx(r, abs=1e-9)
     assert "crank" not in {m.name for m in build_scene(fig, plate=True).marks}
+
+
+@pytest.mark.parametrize("j", [6, 7, 8])  # (j = 9: L/r 1.025, below the domain)
+def test_a_tenth_of_the_stroke_at_the_crank_at_right_angles_is_constructed(j):
+    """Where a tenth of the stroke falls at w = 90 degrees (j/10 of the stroke = r + L - sqrt(L^2 - r^2), solved
+    for L: L/r = (1 + d^2) / 2d with d = 2j/10 - 1 -- 2.6 for j = 6, 1.45 for j = 7), the foot of the crank point
+    falls on O and there is no r cos w to carry: the construction still stands, and q there is -(r/L) F/f
+    (Gl. (4_1) at w = 90 degrees: cos w = 0, cos 2w = -1)."""
+    d = 2 * j / 10 - 1
+    rod_ratio = (1 + d * d) / (2 * d)
+    c = get("inertia-stroke-fractions")
+    fig = c.figure(rod_ratio=rod_ratio)
+    checks = c.check(fig)
+    assert all_ok(checks)
+    q = next(ch for ch in checks if ch.name == f"q at {j}/10 of the stroke")
+    assert q.measured == pytest.approx(-fig.replay.givens["pressure_ratio"] / rod_ratio, abs=1e-9)

@@ -230,6 +230,34 @@ def test_a_figure_with_hatched_areas_is_measured_at_once_as_value_by_value(monke
     assert np.allclose([f[2] for f in together], [f[2] for f in alone], rtol=1e-12)
 
 
+def test_a_sweeps_frames_draw_a_values_furniture_when_it_is_read(monkeypatch):
+    """What is drawn value by value (the end state's furniture, the plate's) is drawn for the values a reader
+    reads, once each, not for every value of the sweep: the refinement reads about half of what a round draws
+    ahead.  A value read is the value measured alone."""
+    from construct.figure import Figure
+    from construct.live import Measure
+
+    c = get("tangential-pressure")
+    built = c.figure(parts=6)
+    measure = Measure(c, built, STYLES["teaching"])
+    values = np.array([4.0, 5.0, 6.0])
+    replay = built.protocol.replay(c.given_sweep(dict(built.replay.givens), "rod_ratio", values, built.protocol.params))
+    assert measure.furniture_keeps_form(built.protocol, replay, len(values))
+    measure.furniture_live = True
+    alone = measure(Figure(built.protocol, replay.take(1, whole=True), c.check, c))
+    drawn = []
+    furniture_at = Measure._furniture_at
+    monkeypatch.setattr(Measure, "_furniture_at", lambda self, fig, at_once, i: drawn.append(i) or
+                        furniture_at(self, fig, at_once, i))
+    frames = measure.frames(built.protocol, replay, len(values))
+    assert drawn == [] and len(frames) == 3
+    keys, nums, fit, texts = frames[1]
+    assert frames[1][1] is nums and drawn == [1]  # (read again: the same frame, not drawn again)
+    assert any(k[0].startswith("fin-") for k in keys)  # (the furniture among what it draws)
+    assert keys == alone[0] and texts == alone[3]
+    assert np.abs(np.asarray(nums) - np.asarray(alone[1])).max() <= 0.01
+
+
 def test_a_carried_view_still_frames_its_marks():
     """Away from the built value each step's view is the built view carried along with the marks of the
     steps it shows: where the built view held those marks whole, the carried one does at every rod ratio

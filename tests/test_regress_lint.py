@@ -406,6 +406,31 @@ def _band():
     return b.figure()
 
 
+@pytest.mark.parametrize("at_once", [0, 1 << 40])
+def test_the_result_lines_through_a_letter_are_those_its_box_holds(monkeypatch, at_once):
+    """Through the pieces' grid or asked of all pieces at once: the band's lines that strike the letter A are
+    those whose height lies in its box grown by half their stroke (the band's lines are level and cross the
+    whole letter)."""
+    from construct.regress.lint import checks
+    from construct.regress.lint.sheet import read_sheet
+    from construct.render.scene import build_scene
+    from construct.render.svg import Drawing
+    from construct.render.styles import STYLES
+
+    monkeypatch.setattr(checks, "_ALL_AT_ONCE", at_once)
+    text = Drawing(build_scene(_band()), STYLES["plain"]).layered()
+    sheet = read_sheet(text, "band.svg")
+    (a,) = [t for t in sheet.texts if t.text == "A" and t.kind == "label"]
+    x0, y0, x1, y1 = a.box
+    level = [s for s in sheet.strokes if s.ident and "-h" in s.ident]
+    assert len(level) == 101 and all(p[1] == p[3] for s in level for p in s.pieces)
+    assert all(min(min(p[0], p[2]) for p in s.pieces) < x0 and max(max(p[0], p[2]) for p in s.pieces) > x1
+               for s in level)
+    expected = {s.ident for s in level if y0 - (s.half - checks.TOUCH) <= s.pieces[0][1] <= y1 + (s.half - checks.TOUCH)}
+    found = {f.ids[1] for f in lint_svg(text, "band.svg") if f.kind == "struck" and f.labels == ("A",)}
+    assert expected and found == expected
+
+
 @pytest.mark.parametrize("style", ["plain", "historical"])
 def test_the_renderers_output_is_read_and_its_collision_found(tmp_path, style):
     import re

@@ -42,3 +42,15 @@ def test_a_layouts_letters_are_those_asked_one_by_one(figure, screen):
             assert got == _one_by_one(views, lay, captions)
             seen += len(got)
     assert seen > 0
+
+
+def test_the_steps_of_runs_outside_others_are_counted_off_step_by_step():
+    import random
+
+    from construct.regress.lint.views import merge_runs, runs_of, runs_outside, steps_of
+
+    rng = random.Random(7)
+    for _ in range(500):
+        x = merge_runs((a, a + rng.randint(0, 6)) for a in rng.sample(range(1, 60), rng.randint(0, 6)))
+        y = merge_runs((a, a + rng.randint(0, 6)) for a in rng.sample(range(1, 60), rng.randint(0, 6)))
+        assert runs_outside(x, y) == runs_of(set(steps_of(x)) - set(steps_of(y)))

@@ -106,6 +106,8 @@ def ordinate_value(b: Builder, c: OrdinateFrame, tag: str, P: str, kind: str, dc
             Y = c.D1
         elif kind != "quarter":
             Y = project(b, c, f"Y{tag}", P, dc_p, tag)
+            if b[Y] == b[O]:  # the foot falls on O as drawn (a crank point found at 90 degrees, Tafel 2's mark 6
+                Y = None      # at L/r 2.6): r cos w is nothing to carry, and a compass cannot be set to it
         # r cos 2w: the doubled-angle point, then its foot.
         if kind in ("start", "end"):
             G = c.D0

@@ -20,6 +20,7 @@ from __future__ import annotations
 import difflib
 import heapq
 import math
+from collections.abc import Callable, Sequence
 from types import SimpleNamespace
 from typing import Any
 
@@ -27,11 +28,12 @@ import numpy as np
 
 from ..constructions import Construction
 from ..figure import Figure
-from ..render.camera import FINAL_CONTEXT, MAX_ZOOM, ZOOM_LEVELS, Framing, clip_view
-from ..render.end_state import NumbersFactory, end_furniture, end_lettering_at, furniture_numbers
+from ..render.camera import (FINAL_CONTEXT, MAX_ZOOM, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, clip_view, level,
+                             player_letter_scale, zoom_of)
+from ..render.end_state import NumbersFactory, end_furniture, end_letter_boxes, end_lettering_at, furniture_numbers
 from ..render.output import scene_for
-from ..render.insets import inset_detail
-from ..render.plate import Lettering, plain, plate_of, shifted, subscript_runs
+from ..render.insets import inset_details
+from ..render.plate import Lettering, extent, plain, plate_of, shifted, subscript_runs
 from ..render.player import inset_marks, player_html
 from ..render.scene import MarkKind, extreme_points, reading
 from ..render.sheet import break_shift
@@ -42,10 +44,12 @@ from ..render.sweepdraw import SweepDrawing, sweep_drawable
 from ..render.viewport import Viewport
 from ..render.wire import ARC, NUMBER, canonical_arc
 
+#: How many forms of another value's furniture a Measure keeps matched to the built one's (:meth:`Measure._aligned`).
+MATCHES = 64
 #: The end state's furniture drawn as numbers (:func:`~construct.render.end_state.furniture_numbers`).
 NUMBERS = NumbersFactory()
 
-__all__ = ["Measure", "player_page", "player_page_and_fit", "fit_of", "areas_of", "breaks_px"]
+__all__ = ["Measure", "Frames", "player_page", "player_page_and_fit", "fit_of", "areas_of", "breaks_px"]
 
 
 def _inside(scene: Any, vp: Viewport, view: tuple) -> list[str]:
@@ -59,6 +63,27 @@ def _inside(scene: Any, vp: Viewport, view: tuple) -> list[str]:
     return out
 
 
+class Frames(Sequence):
+    """The frames of a sweep's values (:meth:`Measure.frames`), each drawn when it is first read: what is drawn
+    for all values at once is drawn, what is drawn value by value waits for a reader."""
+
+    def __init__(self, size: int, frame: Callable[[int], tuple]):
+        self._size, self._frame, self._got = size, frame, {}
+
+    def __len__(self) -> int:
+        return self._size
+
+    def __getitem__(self, i):
+        if isinstance(i, slice):
+            return [self[j] for j in range(*i.indices(self._size))]
+        if not -self._size <= i < self._size:
+            raise IndexError(f"a sweep of {self._size} values has no value {i}")
+        i %= self._size
+        if i not in self._got:
+            self._got[i] = self._frame(i)
+        return self._got[i]
+
+
 class Measure:
     """What the player page draws at a value of the given, without laying the page out: the same numbers as
     :func:`~construct.render.wire.drawn_numbers` of :func:`player_page` (tests/test_live.py holds them equal).
@@ -69,8 +94,11 @@ class Measure:
     marks of the steps it shows moves and grows or shrinks, and the view with it (its room round them kept
     in proportion, cut to the canvas as the camera cuts it, never past the camera's greatest magnification).
     The camera's own choice at another value is not computed (it places every letter of the figure, 0.2 to
-    0.5 s a value); a teacher who moves the rod ratio keeps the shots of the book's figure.  A sweep's values
-    are measured together by :meth:`frames`.
+    0.5 s a value); a teacher who moves the rod ratio keeps the shots of the book's figure.  The end step's
+    view, the finished figure, is framed at every value as the camera frames the end state there (its marks,
+    the plate's furniture and the letters the page writes beside them: :meth:`_end_view`), as a fresh build
+    frames it where its letters stand where the book's value's stand.  A sweep's values are measured together
+    by :meth:`frames`.
 
     >>> from construct.constructions import get
     >>> c = get("crank"); fig = c.figure(parts=3)
@@ -97,16 +125,10 @@ class Measure:
             if j >= 0:
                 shows[j].add(k)
         self.framed = [[m.id for m in scene.marks if m.step in ks] for ks in shows]
-        if scene.ending and len(self.view_of) > 1 and self.view_of[-1] >= 0 and (
-                not self.framed[self.view_of[-1]] or (scene.end_furniture and self.view_of.count(self.view_of[-1]) == 1)):
-            # a last step that only reads a value off the figure (piston-force's planimeter) has no marks of its
-            # own, and a view carried with nothing became the whole canvas: the finished figure a patch in its
-            # corner at every value.  Its view frames the end state (camera.final_box): carried with its marks
-            # (the marks a sweep draws: the end state's own, end_marks, are not boxed by it) -- as it is where the
-            # end state has the plate's furniture (which the camera frames with the figure: a view carried with
-            # the last step's few marks, Baumann's excess area, grew to 1.4 times the frame of a fresh build as
-            # kappa went to 2, the diagram across 56 % of the window)
-            self.framed[self.view_of[-1]] = [m.id for m in scene.marks if scene.in_end(m) and scene.end_shows(m)]
+        #: the end step's view, framed at every value as the camera frames the end state (:meth:`_end_view`): its
+        #: index among the views, the box of what it draws, the page there and its letters (:meth:`_end_of`);
+        #: None without an end state (or with its view shared by another step)
+        self._end = self._end_of(scene, drawing)
         self.views = list(distinct)
         for j, ids in enumerate(self.framed):
             if not ids:  # another step that draws nothing of its own: carried with the marks inside its view
@@ -122,13 +144,13 @@ class Measure:
         #: the page does not find anew (a cluster's, :func:`~construct.render.insets.inset_detail`), by their index:
         #: its box (x, y, w, h) and the marks it is carried with (the points it letters, else the step's own
         #: marks), and their box at the built value (:meth:`_carried_insets`)
+        boxed = [(i, k, z) for i, k in enumerate(self.steps) if (z := drawing.insets[k - 1]) is not None]
+        details = inset_details(scene, drawing.vp.px, drawing.vp.scale, [(k, z) for _, k, z in boxed])
         self.insets = [(i, tuple(z), [m.id for m, _ in inset_marks(drawing, k, z)]
-                        or [m.id for m in scene.marks if m.step == k]) for i, k in enumerate(self.steps)
-                       if (z := drawing.insets[k - 1]) is not None
-                       and inset_detail(scene, drawing.vp.px, drawing.vp.scale, k, z) is None]
+                        or [m.id for m in scene.marks if m.step == k]) for (i, k, z), d in zip(boxed, details)
+                       if d is None]
         self._inset_b0 = self._inset_boxes(scene, drawing.vp)
         self.least = 1.0 / MAX_ZOOM
-        self._end_framing = self._held_end_view(scene, drawing)
         self.template = scene
         #: the end state's view and letters' places: its furniture (the plate's) is drawn at every value as the
         #: drawing draws it (:func:`~construct.render.end_state.end_furniture`), the letters' offsets the built ones
@@ -138,6 +160,8 @@ class Measure:
         #: :meth:`furniture_kept`), held at these numbers else (the page shows it at the book's values alone)
         self._built = built
         self._items = scene.end_furniture
+        #: another value's furniture matched to the built one's, by its items' forms and texts (:meth:`_aligned`)
+        self._matches: dict[tuple, dict[int, int]] = {}
         #: each built furniture element's item: {its id: the item's index in the built furniture}
         self.owners: dict[str, int] = {}
         self.held = self._furniture(scene.end_furniture, drawing.vp, owners=self.owners)
@@ -147,12 +171,16 @@ class Measure:
         #: the texts of the items some value of the sweep draws that the built furniture has not (a scale's tick
         #: more): the page has no element for them (:meth:`furniture_kept`; said in :meth:`hidden_note`)
         self.added: list[str] = []
-        #: (None: not asked -- a value measured alone draws its own furniture, a sweep asks over its values)
-        self._furniture_live: bool | None = None
+        #: whether the end state's furniture is drawn at every value of the sweep (None: not asked -- a value
+        #: measured alone draws its own furniture, a sweep asks over its values); held (False), the page shows it
+        #: at the book's values alone, and the end step's view frames the end state without it
+        self.furniture_live: bool | None = None
         # the marks' keys as this value's page has them: each mark's numbers are a run of them, the runs in the
         # page's order (a sweep draws each mark's numbers for every value at once, :meth:`frames`)
         self.keys, _, _, texts = self._measured(scene)  # (the drawing's scene is what __call__ would make)
         self.runs = self._runs(self.keys)
+        #: the end state's letters as the page moves them (:meth:`_letters`; None: none, or no end view)
+        self._lettered = self._letters(self._end[3], drawing.end.letter) if self._end is not None else None
         # a protocol of another piece of the domain (live.sweep.pieces): its scene, runs and keys, made once (the
         # protocol kept with them: its id stays its own)
         self._forms = {id(built.protocol): (built.protocol, scene, self.runs, self.keys)}
@@ -166,37 +194,83 @@ class Measure:
         self.readings = {f"{m.id}-label": readings[of(m)] for m in scene.marks if of(m) in readings and m.label}
         self.texts = {k: v for k, v in texts.items() if k not in self.readings}  # the same at every value
 
-    @property
-    def furniture_live(self) -> bool | None:
-        """Whether the end state's furniture is drawn at every value of the sweep (None: not asked).  Held (False),
-        the page shows it at the book's values alone, and the end step's view carried from the book's value --
-        which the camera made room in for the furniture -- would frame an empty band where it stood (tangential
-        pressure at kappa = 2: the flat diagram across 56 % of the window): its view is then carried from the
-        camera's frame of the marks the end state draws (:meth:`_held_end_view`)."""
-        return self._furniture_live
-
-    @furniture_live.setter
-    def furniture_live(self, live: bool | None) -> None:
-        if self._end_framing is not None and (live is False) != (self._furniture_live is False):
-            j, view, box, ids = self._end_framing
-            self._end_framing = (j, self.views[j], self.boxes[j], self.framed[j])
-            self.views[j], self.boxes[j], self.framed[j] = view, box, ids
-            self._rows.clear()  # (the groups of marks each view frames: found anew)
-        self._furniture_live = live
-
-    def _held_end_view(self, scene: Any, drawing: Any) -> tuple | None:
-        """The end step's view as the camera frames the marks the end state draws without its furniture
-        (camera.step_views' end state: :data:`~construct.render.camera.FINAL_CONTEXT` round them, at most the
-        last zoom level), with its index among the views, those marks' box and their ids; None without an end
-        state or furniture."""
-        if not scene.ending or not scene.end_furniture or len(self.view_of) < 2 or self.view_of[-1] < 0:
+    def _end_of(self, scene: Any, drawing: Any) -> tuple[int, tuple, tuple, list] | None:
+        """:attr:`_end` of the built figure: the end view's index j, the box of what the end state draws
+        (:func:`end_box`: its marks and the plate's furniture), the built page, and the letters it writes
+        (:func:`~construct.render.end_state.end_letter_boxes`), which :meth:`_letters` finds on the page's
+        numbers."""
+        j = self.view_of[-1] if len(self.view_of) > 1 else -1
+        if not scene.ending or drawing.end is None or j < 0 or self.view_of.count(j) > 1:
             return None
-        ids = [m.id for m in scene.marks if scene.in_end(m) and scene.end_shows(m)]
-        box = self._boxes(scene, drawing.vp, [ids])[0]
+        drawn = end_box(scene, drawing.vp.px)
+        if drawn is None:
+            return None
+        # (its marks: the end state's of the figure, which a sweep boxes; the end state's own from their numbers)
+        self.framed[j] = [m.id for m in scene.marks if scene.in_end(m) and scene.end_shows(m)]
+        return j, drawn, drawing.full_view, end_letter_boxes(scene, self.style, drawing.vp, drawing.placing,
+                                                              drawing.end, drawing.doc.factory)
+
+    def _letters(self, letters: list, ls0: float) -> tuple[np.ndarray, ...] | None:
+        """The end state's *letters* (written at the letter scale *ls0*) as the page moves them: each with the
+        place of its element's x and y among the page's numbers, and its box there as x, y + c + ls s (canvas
+        px; ls the letter scale): a point's letter at its offset from the point, which the letter scale scales;
+        the plate's lettering scaled about its own middle (the player's ``scale`` of it); and whether it is
+        the plate's (the furniture's, which a held furniture does not show away from the book's value); and the
+        ids of their elements."""
+        at, n = {}, 0
+        for k in self.keys:
+            at.setdefault((k[0], k[1]), n)
+            n += k[2].count("#")
+        rows, ids = [], []
+        for ident, attr, (x, y), b in letters:
+            if (ident, attr) not in at or (ident, "cy" if attr == "cx" else "y") not in at:
+                continue
+            box = np.asarray(b) - (x, y, x, y)
+            mid = (box[:2] + box[2:]) / 2 if attr == "x" else np.zeros(2)
+            rows.append((at[(ident, attr)], at[(ident, "cy" if attr == "cx" else "y")], *mid, *mid,
+                         *(box - np.tile(mid, 2)) / ls0, attr == "x"))
+            ids.append(ident)
+        if not rows:
+            return None
+        t = np.asarray(rows, dtype=float)
+        return t[:, 0].astype(int), t[:, 1].astype(int), t[:, 2:6], t[:, 6:10], t[:, 10] > 0, ids
+
+    def _end_view(self, box: tuple | None, full: tuple, nums: np.ndarray, absent: str = "") -> list[float]:
+        """The end step's view of a value where the end state draws within *box* (canvas px: x0, y0, x1, y1) on
+        the page *full*, its numbers *nums* (the page's, in its order; *absent*: the ids of the plate's elements it
+        hides there, a scale's ticks that come and go, space-separated): as the camera frames it
+        (end_state.lay_out_end: :data:`FINAL_CONTEXT` round it and the letters it writes, at the letter scale of
+        the view, magnified at most the last zoom level), the letters where the page writes them (beside their
+        points as placed at the book's value)."""
         if box is None:
-            return None
-        view = Framing(drawing.full_view, max_zoom=ZOOM_LEVELS[-1]).view(box, FINAL_CONTEXT, 1.0)
-        return self.view_of[-1], view, box, ids
+            return list(full)
+        j, built, page, _ = self._end
+        box = tuple(round(c, 6) for c in box)  # (a sweep's box and a scene's differ in the last bits)
+        if tuple(full) == page and max(abs(a - b) for a, b in zip(box, built)) < 1e-6:
+            return list(self.views[j])  # (the built value: the camera's own view, to the hundredth)
+        framing = Framing(full, max_zoom=ZOOM_LEVELS[-1])
+        view = framing.view(box, FINAL_CONTEXT, 1.0)
+        if self._lettered is None:
+            return list(view)
+        cx, cy, c, s, fur, ids = self._lettered
+        shown = ~fur if self.furniture_live is False else np.ones(len(fur), dtype=bool)
+        if absent:
+            gone = set(absent.split())
+            shown &= np.fromiter((i not in gone for i in ids), dtype=bool, count=len(ids))
+        at = np.column_stack([nums[cx], nums[cy], nums[cx], nums[cy]])[shown] + c[shown]
+        W, H = PLAYER_FIGURE_PX
+        for _ in range(4):  # the letters widen the view, which sets their size (lay_out_end)
+            z = zoom_of(view, full)
+            ls = player_letter_scale(max(view[2] / W, view[3] / H) * z / ZOOM_LEVELS[level(z)])
+            b = at + ls * s[shown]
+            with np.errstate(invalid="ignore"):
+                grown = (min(box[0], np.nanmin(b[:, 0], initial=box[0])), min(box[1], np.nanmin(b[:, 1], initial=box[1])),
+                         max(box[2], np.nanmax(b[:, 2], initial=box[2])), max(box[3], np.nanmax(b[:, 3], initial=box[3])))
+            new = framing.view(grown, FINAL_CONTEXT, 1.0)
+            if new == view:
+                break
+            view = new
+        return [float(c) for c in view]
 
     def _furniture(self, items: tuple, vp: Any, exact: bool = True, owners: dict[str, int] | None = None,
                    marks: Any = None) -> tuple[list, list[float], dict[str, str]]:
@@ -251,7 +325,16 @@ class Measure:
     def _aligned(self, items: tuple) -> tuple[tuple, frozenset[int]]:
         """Another value's furniture *items* in the built one's form: each built item where that value has it
         (:func:`_matched`), the built item where it has not; and the built items it has not, by their index."""
-        at = _matched(self._items, items)
+        # (matched once for each form and texts of the items: most values of a sweep share a few; at most
+        # MATCHES of them kept)
+        key = tuple((type(it), getattr(it, "text", ""), getattr(it, "text_at", None) is None,
+                     getattr(it, "broken", False), bool(getattr(it, "angle", 0)), getattr(it, "to", None) is None)
+                    for it in items)
+        at = self._matches.get(key)
+        if at is None:
+            if len(self._matches) >= MATCHES:
+                self._matches.clear()
+            at = self._matches[key] = _matched(self._items, items)
         return (tuple(items[at[i]] if i in at else it for i, it in enumerate(self._items)),
                 frozenset(range(len(self._items))) - set(at))
 
@@ -288,20 +371,23 @@ class Measure:
         *protocol* (:meth:`furniture_kept` holds none)."""
         return self.furniture_kept(protocol, replay, size) == frozenset()
 
-    def _furniture_at(self, figure: Figure, at_once: Any, i: int) -> tuple[list, list[float], dict[str, str]]:
+    def _furniture_at(self, figure: Figure, at_once: Any, i: int) -> tuple[list, list[float], dict[str, str], tuple]:
         """:meth:`_furniture` at value *i* of a sweep drawn at once: the plate's furniture of *figure* (that value
-        of the sweep) on that value's broken axis and fit."""
+        of the sweep) on that value's broken axis and fit; and the box of the points it is set at (canvas px: x0,
+        y0, x1, y1; NaN without any)."""
         p = plate_of(self.construction, figure)
         if p.panels or not p.furniture:
-            return [], [], {}
+            return [], [], {}, (math.nan,) * 4
         breaks = at_once.breaks_at(i)
         items = tuple(shifted(it, break_shift(breaks)) for it in p.furniture) if breaks else tuple(p.furniture)
+        px, fx = at_once.px_of(i), extent(items)
         # (the end state's marks there, which its lettering is placed among: a scene, 5 ms, where it has lettering)
         marks = scene_for(self.construction, figure, ending=self.style.camera).end_drawn() \
             if any(isinstance(it, Lettering) for it in items) else None
         # (its numbers unrounded: frames rounds every value's at once)
-        return self._furniture(items, SimpleNamespace(px=at_once.px_of(i), scale=float(at_once.fit[i][2])), exact=False,
-                               marks=marks)
+        return (*self._furniture(items, SimpleNamespace(px=px, scale=float(at_once.fit[i][2])), exact=False,
+                                 marks=marks),
+                (*px(fx[0], fx[3]), *px(fx[2], fx[1])) if fx is not None else (math.nan,) * 4)
 
     def _runs(self, keys: list[tuple[str, str, str]]) -> list[tuple[str, int]]:
         """Each mark's run of numbers among *keys*: (its id, how many)."""
@@ -359,11 +445,12 @@ class Measure:
         cy = (box[1] + box[3]) / 2 + (y + h / 2 - (b0[1] + b0[3]) / 2) * s
         return list(clip_view(cx, cy, w * s, h * s, full))
 
-    def frames(self, protocol: Any, replay: Any, size: int) -> list[tuple]:
+    def frames(self, protocol: Any, replay: Any, size: int) -> Frames:
         """:meth:`__call__` at every value of the sweep *replay* (of *size* values): the marks' numbers drawn for
         all values at once (:class:`~construct.render.sweepdraw.SweepDrawing`) where that draws what the drawing
         draws, value by value elsewhere (a value where a mark changes its form, a figure the sweep does not
-        draw)."""
+        draw).  What is drawn value by value (the plate's furniture, a value's scene) is drawn when the value is
+        read (:class:`Frames`): the refinement draws midpoints ahead and reads about half of them."""
         at_once = None
         template, runs, keys = self._form(protocol, replay)
         if sweep_drawable(template, self.style, hatching=False):  # (the page draws areas from their curves)
@@ -374,39 +461,32 @@ class Measure:
         if at_once is not None and any(at_once.numbers.get(i, np.zeros((0, 0))).shape[1:] != (n,) for i, n in runs
                                        if not i.startswith("fin-")):  # (the end state's furniture: below)
             at_once = None
+        whole = lambda i: self(Figure(protocol, replay.take(i, whole=True), self.construction.check,  # noqa: E731
+                                      self.construction))
         if at_once is None or not at_once.ok.any():
-            return [self(Figure(protocol, replay.take(i, whole=True), self.construction.check, self.construction))
-                    for i in range(size)]
+            return Frames(size, whole)
         # the end state's furniture: the plate's, value by value (a plate's furniture is a few dozen lines and
-        # letters read off a handful of points: 0.02 to 1.5 ms a value)
+        # letters read off a handful of points: 0.02 to 1.5 ms a value), when the value is read (below)
         furniture = {i: 0 for i, _ in runs if i.startswith("fin-")}
-        fur_texts: list[dict[str, str]] = [{}] * size
         live = self.furniture_live
         if furniture and live is None:  # (not asked: matched item by item over these values)
             kept = self.furniture_kept(protocol, replay, size)
             live = kept is not None
             self.hidden_items = kept or frozenset()
-        if furniture and not live:  # (held at the built value's numbers)
-            table = np.tile(np.asarray(self.held[1], dtype=float), (size, 1))
-        elif furniture:
-            want = [k for k in keys if k[0] in furniture]
-            cols: list[list[float]] = []
-            for i in range(size):
-                fk, fn, ft = ([], [], {}) if not at_once.ok[i] else self._furniture_at(
-                    Figure(protocol, replay.take(i), self.construction.check, self.construction), at_once, i)
-                if fk != want:  # (another form of the furniture there: value by value)
-                    at_once.ok[i] = False
-                    fn = [math.nan] * sum(k[2].count("#") for k in want)
-                cols.append(fn)
-                fur_texts[i] = ft
-            table = np.round(np.asarray(cols, dtype=float), 2) + 0.0  # (as the writer writes them: within 0.01)
-        if furniture:
+        want = [k for k in keys if k[0] in furniture] if furniture and live else []
+        if furniture:  # held at the built value's numbers; drawn at every value: filled in as each is read
+            table = np.tile(np.asarray(self.held[1], dtype=float), (size, 1)) if not want else \
+                np.zeros((size, sum(k[2].count("#") for k in want)))
             at = 0
             for ident, count in runs:
                 if ident in furniture:
                     at_once.numbers[ident] = table[:, at:at + count]
                     at += count
         rows = np.concatenate([at_once.numbers[i] for i, _ in runs], axis=1)  # (each a values x numbers block)
+        # (the furniture's columns among them)
+        stops = np.cumsum([n for _, n in runs])
+        at_furniture = np.concatenate([np.arange(e - n, e) for (i, n), e in zip(runs, stops) if i in furniture]
+                                      or [np.zeros(0, dtype=int)])
         width, height = (np.round(v, 2) for v in at_once.size)
         px = at_once.page_px
 
@@ -431,7 +511,20 @@ class Measure:
                              *px(most(ends[1], starts, axis=0), least(ends[2], starts, axis=0)))
         views = len(self.framed)
         carried = self._carried_rows(box[:, :views], boxed[:views], width, height)  # (views + 1) x 4 x values
-        blocks = [np.zeros((size, 2)), width[:, None], height[:, None], rows,
+        if self._end is not None:  # the end view: framed at every value (the end state's own marks boxed too; the
+            # furniture's box and the letters it writes where each value is read, below)
+            j_end = self._end[0]
+            ends = [at_once.end_boxes[m.id] for m in template.end_marks
+                    if template.end_shows(m) and m.id in at_once.end_boxes]
+            with np.errstate(invalid="ignore"):  # (NaN: nothing there)
+                end_marks = np.stack([np.nanmin(np.stack([box[0, j_end], *(e[0] for e in ends)]), 0),
+                                      np.nanmin(np.stack([box[1, j_end], *(e[1] for e in ends)]), 0),
+                                      np.nanmax(np.stack([box[2, j_end], *(e[2] for e in ends)]), 0),
+                                      np.nanmax(np.stack([box[3, j_end], *(e[3] for e in ends)]), 0)])
+            # (where each step showing it keeps its view among the rest of a value's numbers)
+            end_at = [4 * s + c for s, j in enumerate(self.view_of) if j == j_end for c in range(4)]
+        # each value's row: these blocks, the marks' rows between the first three and the rest
+        blocks = [np.zeros((size, 2)), width[:, None], height[:, None],
                   carried[self.view_of].transpose(2, 0, 1).reshape(size, -1)]
         rings = views + len(self.rings)
         if self.rings:  # the ring's centre: of the box of the step's marks
@@ -441,22 +534,36 @@ class Measure:
         if self.insets:  # each inset's box: carried with its points
             blocks.append(self._carried_insets(box[:, rings:]).transpose(2, 0, 1).reshape(size, -1))
         blocks.append(at_once.breaks_page())
-        table = np.hstack(blocks)
+        head, rest = np.hstack(blocks[:3]), np.hstack(blocks[3:])
         fits = [tuple(row) for row in at_once.fit.tolist()]
-        out = []
-        for i in range(size):
+
+        def frame(i: int) -> tuple:
             if not at_once.ok[i]:
-                out.append(self(Figure(protocol, replay.take(i, whole=True), self.construction.check,
-                                       self.construction)))
-                continue
-            texts = {**self.texts, **fur_texts[i]} if fur_texts[i] else self.texts
+                return whole(i)
+            texts, fur_box = self.texts, (math.nan,) * 4
+            if want:
+                fk, fn, ft, fur_box = self._furniture_at(Figure(protocol, replay.take(i), self.construction.check,
+                                                                self.construction), at_once, i)
+                if fk != want:  # (another form of the furniture there: value by value)
+                    at_once.ok[i] = False
+                    return whole(i)
+                # (rounded as the writer writes them: within 0.01)
+                rows[i, at_furniture] = np.round(np.asarray(fn, dtype=float), 2) + 0.0
+                texts = {**texts, **ft} if ft else texts
+            if self._end is not None:  # the end view: of its marks, the furniture and the letters written there
+                with np.errstate(invalid="ignore"):
+                    b = np.concatenate([np.fmin(end_marks[:2, i], fur_box[:2]), np.fmax(end_marks[2:, i], fur_box[2:])])
+                rest[i, end_at] = np.tile(self._end_view(
+                    None if np.isnan(b[0]) else tuple(b.tolist()), (0.0, 0.0, float(width[i]), float(height[i])),
+                    np.concatenate([head[i], rows[i]]), texts.get("#absent", "")), len(end_at) // 4)
             if self.readings:
                 taken = replay.take(i)
                 texts = {**texts, **{k: reading(label, taken) for k, label in self.readings.items()}}
             # (the row as an array: the sweep reads every value's numbers as one; a list of floats would be
             # made and read back per value)
-            out.append((keys, table[i], fits[i], texts))
-        return out
+            return keys, np.concatenate([head[i], rows[i], rest[i]]), fits[i], texts
+
+        return Frames(size, frame)
 
     def _carried_rows(self, box: np.ndarray, boxed: np.ndarray, W: np.ndarray, H: np.ndarray) -> np.ndarray:
         """:meth:`_carried` over a sweep, every view at once: the views carried along with their marks' boxes *box*
@@ -545,6 +652,9 @@ class Measure:
         texts.update(ft)
         boxes = self._boxes(scene, vp)
         carried = [self._carried(j, box, full) for j, box in enumerate(boxes)] + [list(full)]  # [-1]: the whole
+        if self._end is not None:
+            carried[self._end[0]] = self._end_view(end_box(scene, vp.px, self.furniture_live is not False), full,
+                                                   np.asarray(nums, dtype=float), texts.get("#absent", ""))
         for i, j in enumerate(self.view_of):
             keys.append(("#zoom", str(i), "# # # #"))
             nums += carried[j]
@@ -562,6 +672,20 @@ class Measure:
             keys.append(("#break", str(axis), "# #"))
             nums += breaks_px(scene.breaks, axis, fit_of(vp))
         return keys, nums, fit_of(vp), texts
+
+
+def end_box(scene: Any, px: Any, furniture: bool = True) -> tuple[float, float, float, float] | None:
+    """The box (canvas px: x0, y0, x1, y1; *px* maps a point of the figure there) of what the end state of
+    *scene* draws: its marks shown and, with *furniture*, the plate's furniture (the points it is set at), as the
+    camera frames it (:func:`~construct.render.camera.final_box`); None where it draws nothing."""
+    pts = [px(*p) for m in scene.end_drawn() if scene.end_shows(m) for p in extreme_points(m)]
+    fx = extent(scene.end_furniture) if furniture else None
+    if fx is not None:
+        pts += [px(fx[0], fx[1]), px(fx[2], fx[3])]
+    if not pts:
+        return None
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    return (min(xs), min(ys), max(xs), max(ys))
 
 
 def _form(items: Any) -> tuple:

@@ -529,7 +529,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     us = list(np.linspace(lo, hi, start))
     values = lambda u: np.clip(10.0 ** np.asarray(u), domain.low, domain.high)  # noqa: E731
     # each value's numbers as one array, made once (every cell it bounds reads them)
-    as_arrays = lambda fs: [(f[0], np.asarray(f[1], dtype=float), *f[2:]) for f in fs]  # noqa: E731
+    as_array = lambda f: (f[0], np.asarray(f[1], dtype=float), *f[2:])  # noqa: E731
     data: dict[float, tuple] = {}
     todo = list(zip(us[:-1], us[1:]))
     first = us  # the starting values are drawn in the first round, with its midpoints (one sweep, not two)
@@ -546,18 +546,21 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
         # not the values'); what no cell needed is dropped
         ahead = [q for a, b in todo for q in _ahead(a, b, _depth(len(todo)))]
         drawn, _ = _frames(construction, figure, given, values(first + mids + ahead), measure, protocol)
-        got = dict(zip(first + mids + ahead, as_arrays(drawn)))
-        data.update((u, got.pop(u)) for u in first)
+        # (each value's frame read as a cell needs it: what is drawn value by value is drawn then, not for the
+        # midpoints ahead that no cell needs)
+        at = dict(zip(first + mids + ahead, range(len(drawn))))
+        take = lambda u: as_array(drawn[at.pop(u)])  # noqa: E731
+        data.update((u, take(u)) for u in first)
         first = []
         nxt = []
         queue = collections.deque(todo)
         while queue:
             a, b = queue.popleft()
             m = (a + b) / 2
-            if m not in got:  # a half of a half: next round
+            if m not in at:  # a half of a half: next round
                 nxt.append((a, b))
                 continue
-            fm = data[m] = got.pop(m)
+            fm = data[m] = take(m)
             ka, na = data[a][:2]
             kb, nb = data[b][:2]
             parent, grand = before.pop((a, b), ({}, {}))

@@ -74,7 +74,9 @@ def _quanta(live: LiveSweep, kinds: np.ndarray) -> np.ndarray:
     """The quantum of each column in its stored units: STORED_PX drawn, at most that at the largest scale (a
     logarithm's: STORED_PX at the largest radius drawn)."""
     smax = float(np.max(live.fit[:, 2])) if live.fit is not None and kinds.any() else 1.0
-    return np.where(kinds == LOG, STORED_PX / _largest_radius(live), np.where(kinds > 0, STORED_PX / smax, STORED_PX))
+    logs = kinds == LOG  # (the largest radius looked for only where a column is stored by its logarithm)
+    return np.where(logs, STORED_PX / _largest_radius(live) if logs.any() else 1.0,
+                    np.where(kinds > 0, STORED_PX / smax, STORED_PX))
 
 
 def _largest_radius(live: LiveSweep) -> float:
@@ -84,17 +86,17 @@ def _largest_radius(live: LiveSweep) -> float:
 
 
 def _knots(live: LiveSweep, kinds: np.ndarray, columns: np.ndarray | None = None,
-           across: np.ndarray | None = None) -> np.ndarray:
+           across: np.ndarray | None = None, nearest: np.ndarray | None = None) -> np.ndarray:
     """The grid values each column needs when stored as *kinds* says (see :func:`column_knots`); only the
     *columns* given, if given (each column walks the tree alone: the others' are left as they are).  *across*:
-    the drawn numbers turned on their side (columns x grid values), if the caller has them (both walks of
-    :func:`column_knots` read them)."""
+    the drawn numbers turned on their side (columns x grid values), and *nearest*, :meth:`LiveSweep.nearest_columns`,
+    if the caller has them (both walks of :func:`column_knots` read them)."""
     columns = np.arange(live.drawn.shape[1]) if columns is None else columns
     across = np.ascontiguousarray(live.drawn.T) if across is None else across
     rows, cols = live.drawn.shape[0], columns.size
     u = np.asarray(live.u if live.u is not None else np.log10(live.grid), dtype=float)
     keep = np.zeros(live.drawn.shape, dtype=bool)
-    keep[:, live.nearest_columns()] = True
+    keep[:, live.nearest_columns() if nearest is None else nearest] = True
     kinds = kinds[columns]
     start = live.start or rows
     # the starting values of the refinement: evenly spaced in log10 (live_sweep's np.linspace)
@@ -107,7 +109,8 @@ def _knots(live: LiveSweep, kinds: np.ndarray, columns: np.ndarray | None = None
     kinds = kinds if live.fit is not None else np.zeros(cols, dtype=np.int8)
     order = np.argsort(kinds, kind="stable")
     walked = columns[order]
-    dt = across if cols == across.shape[0] and (walked == np.arange(cols)).all() else across[walked]
+    every = cols == across.shape[0] and (walked == np.arange(cols)).all()  # (every column, in order)
+    dt = across if every else across[walked]
     bounds = np.searchsorted(kinds[order], np.arange(LOG + 2))
     qt = np.empty(dt.shape)
     for kind in range(LOG + 1):
@@ -182,7 +185,10 @@ def _knots(live: LiveSweep, kinds: np.ndarray, columns: np.ndarray | None = None
         rest = at[~done]
         if rest.size:
             todo += [(i, m, rest), (m, j, rest)]
-    keep[:, walked] |= shut
+    if every:
+        keep |= shut
+    else:
+        keep[:, walked] |= shut
     return keep
 
 
@@ -216,11 +222,12 @@ def column_knots(live: LiveSweep) -> tuple[np.ndarray, np.ndarray]:
     # logarithm there: a length
     natural = np.where((natural == LOG) & (live.drawn.min(axis=0) <= 0.0), LENGTH, natural).astype(np.int8)
     across = np.ascontiguousarray(live.drawn.T)  # (each column's values in a row: both walks read them so)
-    as_drawn = _knots(live, np.zeros(cols, dtype=np.int8), across=across)
+    nearest = live.nearest_columns()
+    as_drawn = _knots(live, np.zeros(cols, dtype=np.int8), across=across, nearest=nearest)
     if not natural.any():
         return as_drawn, natural
     # (a number of the drawing only is stored as drawn either way: walked once)
-    as_built = _knots(live, natural, np.flatnonzero(natural), across)
+    as_built = _knots(live, natural, np.flatnonzero(natural), across, nearest)
     as_built[:, natural == 0] = as_drawn[:, natural == 0]
     built = as_built.sum(axis=0) < as_drawn.sum(axis=0)
     return np.where(built, as_built, as_drawn), np.where(built, natural, 0).astype(np.int8)
@@ -294,12 +301,16 @@ def _same_columns(q: np.ndarray, keep: np.ndarray, kinds: np.ndarray) -> tuple[n
     ([0, 1, 0], [0, 1])
     """
     rows, cols = q.shape
-    weights = np.random.default_rng(28).integers(1, 2 ** 62, size=(2 * rows + 1, 2), dtype=np.int64)
+    bits = np.packbits(keep, axis=0).astype(np.int64)  # (the kept values eight to a byte: summed as bytes)
+    weights = np.random.default_rng(28).integers(1, 2 ** 62, size=(rows + len(bits) + 1, 2), dtype=np.int64)
+    sums = np.zeros((2, cols), dtype=np.int64)
     with np.errstate(over="ignore"):
-        sums = q.T @ weights[:rows] + keep.T.astype(np.int64) @ weights[rows:2 * rows] \
-            + kinds.astype(np.int64)[:, None] * weights[2 * rows]
+        # row by row (the rows are contiguous; a product of the matrix turned on its side gathers its columns)
+        for row, w in zip((*q, *bits, kinds.astype(np.int64)), weights):
+            sums[0] += row * w[0]
+            sums[1] += row * w[1]
     seen: dict[tuple[int, int], int] = {}
-    colmap = np.fromiter((seen.setdefault(s, c) for c, s in enumerate(map(tuple, sums.tolist()))), dtype=np.int64,
+    colmap = np.fromiter((seen.setdefault(s, c) for c, s in enumerate(zip(*sums.tolist()))), dtype=np.int64,
                          count=cols)
     dup = np.flatnonzero(colmap != np.arange(cols))  # (a column is itself: only those like an earlier one)
     of = colmap[dup]

@@ -33,11 +33,12 @@ from .placing import Placing
 from .plate import Dot, Lettering, ScaleBar, Stroke, extent, furniture_elements, plain, text_elements
 from .scene import Scene, extreme_points
 from .styles import Style
-from .svgdoc import Element, Writer, fmt
+from .svgdoc import Element, Writer, fmt, with_attribute
 from .viewport import Viewport
 
 __all__ = ["EndView", "END_MARGIN_PX", "lay_out_end", "end_fixed", "end_lettering", "end_lettering_at",
-           "end_furniture", "end_sheet", "own_strokes", "wrapped", "NumbersFactory", "furniture_numbers"]
+           "end_furniture", "end_sheet", "own_strokes", "wrapped", "NumbersFactory", "furniture_numbers", "lettering_box",
+           "end_letter_boxes"]
 
 #: The margin round the end state's drawing on its sheet (screen px at the end view).
 END_MARGIN_PX = 14.0
@@ -134,7 +135,7 @@ def end_lettering(scene: Scene, vp: Viewport, style: Style,
     return out
 
 
-def _lettering_box(elem: Any, size: float, style: Style) -> tuple[float, float, float, float] | None:
+def lettering_box(elem: Any, size: float, style: Style) -> tuple[float, float, float, float] | None:
     """The box (canvas px) of a furniture lettering element made at *size* (not turned; its halo, a copy
     beneath it, and any other element: None)."""
     xml = elem.get_xml()
@@ -148,6 +149,47 @@ def _lettering_box(elem: Any, size: float, style: Style) -> tuple[float, float, 
     w = text_width(text, size, style.label_font, style.label_italic)
     x += {"start": w / 2, "end": -w / 2}.get(xml.get("text-anchor", "middle"), 0.0)
     return label_box(x, y, text, size, style.label_font, style.label_italic)
+
+
+def end_letter_boxes(scene: Scene, style: Style, vp: Viewport, placing: Placing, end: EndView,
+                     factory: Any) -> list[tuple[str, str, tuple[float, float], tuple[float, float, float, float]]]:
+    """The letters the end state writes, as :func:`lay_out_end` boxed them in its view: (the id of the element
+    the page draws it with or beside -- its point's, or its own text's --, that element's attribute of x (``cx``,
+    ``x``), the element's (x, y) there, the letter's box: canvas px).  The points' letters where the placing set
+    them; the plate's lettering where it set it (its first element: :func:`end_furniture`); the texts of the rest
+    of the furniture (a scale's, a dimension's) where the plate sets them."""
+    st, ls, size = style, end.letter, end.size
+    out = []
+    for m in scene.end_drawn():
+        rel = placing.end_spots.get(m.id)
+        if rel is not None and m.label:
+            px, py = vp.px(*m.geom)
+            out.append((m.id, "cx", (px, py), label_box(px + ls * rel[0], py + ls * rel[1], m.label, size,
+                                                        st.label_font, st.label_italic)))
+    k, items = 0, scene.end_furniture
+    for it in items:  # (the ids as end_furniture gives them: the fixed furniture first, item by item)
+        if isinstance(it, Lettering):
+            continue
+        for j, e in enumerate(furniture_elements([it], vp.px, vp.scale, factory, size=size)):
+            b = lettering_box(e, size, st)
+            if b is not None:
+                xml = e.get_xml()
+                out.append((f"fin-{'s' if j == 0 and isinstance(it, Stroke) else 'f'}{k}", "x",
+                            (float(xml.get("x")), float(xml.get("y"))), b))
+            k += 1
+    for (fid, (px, py), text), i in zip(end_lettering(scene, vp, st, size),
+                                       [i for i, it in enumerate(items) if isinstance(it, Lettering)]):
+        rel = placing.end_spots.get(fid)
+        if rel is None:
+            continue
+        k += rel[2] >= LEADER_FROM  # (its leader)
+        x, y = px + ls * rel[0], py + ls * rel[1]
+        els = text_elements(factory, (x, y - 0.35 * size * items[i].size), items[i].text, size, rel=items[i].size)
+        xml = els[0].get_xml()
+        out.append((f"fin-f{k}", "x", (float(xml.get("x")), float(xml.get("y"))),
+                    label_box(x, y, text, size, st.label_font, st.label_italic)))
+        k += len(els)
+    return out
 
 
 def lay_out_end(scene: Scene, style: Style, vp: Viewport, placing: Placing, views: list, full: tuple,
@@ -167,7 +209,7 @@ def lay_out_end(scene: Scene, style: Style, vp: Viewport, placing: Placing, view
         ls = player_letter_scale(q * z / ZOOM_LEVELS[lvl])
         size = st.label_size * ls
         texts = [b for e in furniture_elements(end_fixed(sc), vp.px, vp.scale, factory, size=size)
-                 if (b := _lettering_box(e, size, st)) is not None]
+                 if (b := lettering_box(e, size, st)) is not None]
         lettering = end_lettering(sc, vp, st, size)
         pl.place_end(ls, marks, texts, lettering, _result_strokes(sc, vp))
         box = None
@@ -219,7 +261,7 @@ def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, en
     leader where the built one has none (or lose its leader), keeps its built spot: the furniture keeps its form
     over the sweep (its elements, by which the page knows them)."""
     texts = [b for e in furniture_elements(end_fixed(sheet), vp.px, vp.scale, factory, size=end.size)
-             if (b := _lettering_box(e, end.size, style)) is not None]
+             if (b := lettering_box(e, end.size, style)) is not None]
     got = placing.end_lettering_at(vp, end.letter, marks, texts, end_lettering(sheet, vp, style, end.size),
                                    _result_strokes(sheet, vp))
     built = placing.end_spots
@@ -407,9 +449,5 @@ def end_sheet(doc: Writer, end: EndView, scene: Scene, style: Style, css: str, b
                          class_=f"cap{(' ' + kind) if kind else ''}"))
         dwg.add(g)
     # (and a point's marker at that scale in its radius: such a renderer scales about the origin, not the
-    # marker's centre)
-    root = doc.own_tree(dwg)
-    for c in root.iter("circle"):
-        if "pt" in (c.get("class") or "").split():
-            c.set("r", fmt(float(c.get("r")) * e.letter, 3))
-    return doc.tree_text(root)
+    # marker's centre) -- in the text written (the marks' elements are shared with the figure's other documents)
+    return with_attribute(doc.text(dwg), "circle", "pt", "r", lambda r: fmt(float(r) * e.letter, 3))

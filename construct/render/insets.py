@@ -23,7 +23,8 @@ from typing import Callable, Sequence
 from .camera import PLAYER_FIGURE_PX, Framing, View, step_details, step_focus, zoom_of
 from .scene import MarkKind, Scene
 
-__all__ = ["step_insets", "inset_detail", "ring_round", "SLIVER_PX", "SLIVER_RATIO", "INSET_PX", "INSET_DETAIL_PX"]
+__all__ = ["step_insets", "inset_detail", "inset_details", "points_at", "ring_round", "SLIVER_PX", "SLIVER_RATIO", "INSET_PX",
+           "INSET_DETAIL_PX"]
 
 
 #: A step's work is a sliver where its region is thinner on the screen than this (px) and at least
@@ -79,7 +80,8 @@ def step_insets(scene: Scene, views: Sequence[View], full: View,
 
 
 def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]], scale: float, k: int,
-                 box: Sequence[float]) -> tuple[list[str], list[list[str]], float] | None:
+                 box: Sequence[float], *, at_point: "dict[tuple[float, ...], str] | None" = None
+                 ) -> tuple[list[str], list[list[str]], float] | None:
     """Where step *k*'s inset *box* (canvas px: x y w h) magnifies a cluster: the finest detail of the step
     (:func:`~construct.render.camera.step_details`: the two closest of its points, read to 0.1 px, or the smallest
     circle or arc it strikes where that is finer) in the middle of the box, the box as large as the detail in
@@ -88,18 +90,20 @@ def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]]
     among them anew and carries the box with it (the player's ``detail``).  None for any other inset (a sliver's,
     centred on the step's own points), or where no point stands at a circle's centre.
 
-    *px*: the drawing's map to canvas pixels; *scale*: its canvas pixels per unit.
+    *px*: the drawing's map to canvas pixels; *scale*: its canvas pixels per unit; *at_point*: the scene's points'
+    ids by where they stand (:func:`points_at`), if the caller asks of many steps.
     """
     s = scene.steps[k - 1]
-    drawn = {m.name: m for m in scene.marks}
+    drawn = scene.marks_by_name
     near = [drawn[n] for n in dict.fromkeys((*s.outputs, *s.inputs, *sorted(scene.named(k))))
             if n in drawn and drawn[n].kind is MarkKind.POINT]
-    at_point = {tuple(round(c, 2) for c in px(*m.geom)): m.id for m in scene.marks if m.kind is MarkKind.POINT}
     fine, at, rounds = math.inf, None, []
     for n in s.outputs:
         m = drawn.get(n)
         if m is None or not m.kind.round:
             continue
+        if at_point is None:  # (made only for a step that strikes a circle)
+            at_point = points_at(scene, px)
         c = px(*m.geom[:2])
         centre = at_point.get(tuple(round(x, 2) for x in c))
         if centre is None:
@@ -117,6 +121,32 @@ def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]]
     if at is None or abs(at[0] - box[0] - box[2] / 2) > 0.02 or abs(at[1] - box[1] - box[3] / 2) > 0.02:
         return None
     return [m.id for m in near], rounds, round(fine, 4)
+
+
+def inset_details(scene: Scene, px: Callable[[float, float], tuple[float, float]], scale: float,
+                  asked: Sequence[tuple[int, Sequence[float]]]) -> list[tuple | None]:
+    """:func:`inset_detail` of each (step, box) *asked*, the scene's points by where they are drawn read once for
+    all of them (a figure's hundreds of insets each read its thousands of marks).
+
+    >>> from construct.constructions import get
+    >>> from construct.render.output import scene_for
+    >>> from construct.render.styles import STYLES
+    >>> from construct.render.svg import Drawing
+    >>> c = get("tangential-pressure")
+    >>> d = Drawing(scene_for(c, c.figure(parts=6), ending=True), STYLES["teaching"])
+    >>> asked = [(k, z) for k, z in enumerate(d.insets, start=1) if z is not None]
+    >>> found = inset_details(d.scene, d.vp.px, d.vp.scale, asked)
+    >>> len(asked), sum(f is not None for f in found)  # (the others: a sliver's, centred on the step's points)
+    (30, 19)
+    """
+    at_point = points_at(scene, px) if asked else None
+    return [inset_detail(scene, px, scale, k, box, at_point=at_point) for k, box in asked]
+
+
+def points_at(scene: Scene, px: Callable[[float, float], tuple[float, float]]) -> dict[tuple[float, ...], str]:
+    """The ids of the scene's points by where they stand (canvas px, to hundredths), as :func:`inset_detail`
+    finds a circle's centre."""
+    return {tuple(round(c, 2) for c in px(*m.geom)): m.id for m in scene.marks if m.kind is MarkKind.POINT}
 
 
 def ring_round(points: Sequence[tuple[float, float]], view: View, full: View,

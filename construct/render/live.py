@@ -474,7 +474,8 @@ LIVE_SCRIPT = r"""
       }
       lab.g.removeAttribute("display"); lab.g.style.display = "";
       lab.g.setAttribute("transform", "translate(" + round2(at[0]) + " " + round2(at[1]) + ")");
-      var said = rod.L.rod.replace("{v}", book(rod.value));
+      // (the value shown: of the piece of the domain that moves, not of the first piece's sweep, left where it was)
+      var said = rod.L.rod.replace("{v}", book(valueOf(rod.L.given)));
       setText(lab.halo, said); setText(lab.text, said);
     }
     if (rod) for (var ri = 0; ri < rodTexts.length; ri++) setText(rodTexts[ri], rod.L.rod.replace("{v}", book(valueOf(rod.L.given))));

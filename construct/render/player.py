@@ -35,7 +35,7 @@ from typing import Any, Mapping, Sequence
 from .animate import STEP_SECONDS, group_css
 from .camera import PLAYER_FIGURE_PX
 from .captions import group_caption
-from .insets import inset_detail
+from .insets import inset_detail, points_at
 from .marks import MarkKind
 from .styles import PLAIN, Style
 from .svg import Drawing
@@ -113,6 +113,7 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
     views: dict[tuple, int] = {}
     steps = []
     points = {m.name: m for m in scene.marks if m.kind is MarkKind.POINT}
+    at_point = None  # the points' ids by where they stand, for the insets' details (made at the first)
     for s in scene.steps:
         de, en = scene.caption(s.index)
         st = {"de": de, "en": en, "g": groups.setdefault(group_caption(scene, s.index), len(groups)),
@@ -127,7 +128,9 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         if inset is not None:  # a sliver or a cluster: its place magnified beside the view, its points lettered
             st["z"] = list(inset)
             st["zp"] = _inset_points(d, s.index, inset, points)
-            detail = inset_detail(scene, d.vp.px, d.vp.scale, s.index, inset)
+            if at_point is None:
+                at_point = points_at(scene, d.vp.px)
+            detail = inset_detail(scene, d.vp.px, d.vp.scale, s.index, inset, at_point=at_point)
             if detail is not None:  # a cluster's: the page finds its finest detail anew where the points move
                 st["zd"] = detail
         steps.append(st)
@@ -564,7 +567,7 @@ li a.later{color:#bbb}
   }
   function show(j) {
     var box = boxOf();  // read before the classes change (a read after them forces a restyle)
-    dragWas = null;  // (a new step's view is no motion of the given)
+    dragWas = null; easing = true;  // (a new step's view is no motion of the given)
     k = Math.max(0, Math.min(n, j));
     groups.forEach(function (g, i) {
       var s = +g.getAttribute("data-step");
@@ -663,7 +666,11 @@ li a.later{color:#bbb}
   // dragging a given expects; and a new view is dear: it moves every mark on the screen, to be laid out and
   // painted anew (a third of a drag's frame), and a view that leads the motion is taken half as often as one
   // centred on it.  Letting go glides to the step's exact view.
-  var DRAG_ROOM = 0.05, dragWas = null;  // (the step's view at the drag's last frame)
+  // From the step's exact view (let go, a new step) a drag's camera eases out just enough to hold the step's view
+  // (the box round both), as long as that is within the room a new view would take, rather than stepping out by
+  // that room at the drag's first frame: a value that barely moves barely moves the camera (it stepped out by a
+  // tenth of the view and glided back on the next let-go).
+  var DRAG_ROOM = 0.05, dragWas = null, easing = true;  // (the step's view at the drag's last frame)
   function ahead(to, was) {  // the view a drag takes: *to* with room, on the side it moves to from *was*
     var v = [0, 0, to[2] * (1 + 2 * DRAG_ROOM), to[3] * (1 + 2 * DRAG_ROOM)];
     for (var a = 0; a < 2; a++) {
@@ -682,7 +689,7 @@ li a.later{color:#bbb}
   }
   var api = window.constructPlayer = {data: data, full: full, redraw: function () { show(k); }, shown: null,
     groups: function () { return groups.slice(); },  // the step groups, in the document or out of it (lean)
-    move: function () { dragWas = null; zoomLevel(target()); move(target()); },  // (the level a drag kept, made exact)
+    move: function () { dragWas = null; easing = true; zoomLevel(target()); move(target()); },  // (the level a drag kept, made exact)
     find: find, lean: function () {
       if (lean) { return; }
       lean = true;
@@ -699,8 +706,14 @@ li a.later{color:#bbb}
       if (!drag) { now = to.slice(); }
       // a new view while dragging: the step's view with a little room (it can move or grow by a tenth before the
       // next), not the step's view exactly (which it would leave at once)
-      else if (!holds(now, to)) { now = ahead(to, dragWas); }
+      else if (!holds(now, to)) {
+        var u = [Math.min(now[0], to[0]), Math.min(now[1], to[1])];
+        u.push(Math.max(now[0] + now[2], to[0] + to[2]) - u[0], Math.max(now[1] + now[3], to[1] + to[3]) - u[1]);
+        if (easing && u[2] <= to[2] * (1 + 2 * DRAG_ROOM) && u[3] <= to[3] * (1 + 2 * DRAG_ROOM)) { now = u; }
+        else { now = ahead(to, dragWas); easing = false; }
+      }
       dragWas = drag ? to.slice() : null;
+      if (!drag) { easing = true; }
       zoomLevel(now, r, !!drag); put(now, r, !!drag); }};
 })();
 </script>

@@ -170,12 +170,20 @@ class StepInputs:
         """The points step k's caption names (and its group's title, in a protocol written in letters)."""
         if not 1 <= k <= len(self.steps):
             return frozenset()
-        s = self.steps[k - 1]
-        if self.params.get("captions") == "letters":  # the caption names points by their letters
-            got = self._named_points(k)
-        else:
-            got = self.reader.mentioned(s.caption.de) | self.reader.mentioned(s.caption.en)
-        return frozenset(n for n in got if n in self.reader.points)
+        got = self._named.get(k)
+        if got is None:  # (the camera, the insets and the tags ask of every step)
+            s = self.steps[k - 1]
+            if self.params.get("captions") == "letters":  # the caption names points by their letters
+                names = self._named_points(k)
+            else:
+                names = self.reader.mentioned(s.caption.de) | self.reader.mentioned(s.caption.en)
+            got = self._named[k] = frozenset(n for n in names if n in self.reader.points)
+        return got
+
+    @functools.cached_property
+    def _named(self) -> dict[int, frozenset[str]]:
+        """:meth:`named` by step, as asked."""
+        return {}
 
     def _named_points(self, k: int) -> set[str]:
         """The points step k's caption and its group's title (written in the figure's letters) name by a letter

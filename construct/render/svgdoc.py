@@ -31,17 +31,16 @@ root's opening tag starts a line of its own.
 
 from __future__ import annotations
 
-import copy
 import functools
 import re
 import xml.etree.ElementTree as ET
-from typing import Any
+from typing import Any, Callable
 
 import svgwrite
 from svgwrite.etree import CDATA_TAG
 from svgwrite.utils import iterflatlist, strlist
 
-__all__ = ["Writer", "Element", "Frozen", "XML_DECLARATION", "MARKER", "fmt"]
+__all__ = ["Writer", "Element", "Frozen", "XML_DECLARATION", "MARKER", "fmt", "with_attribute"]
 
 #: What svgwrite's ``Drawing.write`` puts first.
 XML_DECLARATION = '<?xml version="1.0" encoding="utf-8" ?>\n'
@@ -223,16 +222,30 @@ class Writer:
         """*dwg* as a standalone SVG file's text, as svgwrite's ``Drawing.write`` lays it out."""
         return XML_DECLARATION + self.markup(dwg) + "\n"
 
-    def own_tree(self, dwg: Any) -> ET.Element:
-        """The ElementTree of *dwg* as :meth:`svg_element` gives it, its shared elements copied: the caller may
-        change it without changing another document (:meth:`tree_text` writes it)."""
-        return copy.deepcopy(self.svg_element(dwg))
 
-    def tree_text(self, root: ET.Element) -> str:
-        """The ElementTree *root* (:meth:`own_tree`) as a standalone SVG file's text, as :meth:`text` writes."""
-        out: list[str] = []
-        _write(root, out)
-        return XML_DECLARATION + "".join(out) + "\n"
+def with_attribute(text: str, tag: str, cls: str, attr: str, value: Callable[[str], str]) -> str:
+    """*text* (markup this writer wrote) with the attribute *attr* of every *tag* element of class *cls* set to
+    *value* of what it was: one document's own change to elements it shares with others (each written once, its
+    markup shared), made on its text rather than on a copy of its whole tree.  An attribute value holds no
+    ``>`` or quote here (:func:`_escape_attribute`).
+
+    >>> with_attribute('<g><circle class="pt a" r="2" /><circle class="b" r="2" /></g>', "circle", "pt", "r",
+    ...                lambda r: fmt(float(r) * 1.5))
+    '<g><circle class="pt a" r="3" /><circle class="b" r="2" /></g>'
+    """
+    opening = re.compile("<" + re.escape(tag) + r"(?![\w-])[^>]*>")
+    own = re.compile(' ' + re.escape(attr) + '="([^"]*)"')
+
+    def changed(m: re.Match) -> str:
+        found = _CLASS.search(m.group(0))
+        if found is None or cls not in found.group(1).split():
+            return m.group(0)
+        return own.sub(lambda a: f' {attr}="{value(a.group(1))}"', m.group(0), count=1)
+
+    return opening.sub(changed, text)
+
+
+_CLASS = re.compile(' class="([^"]*)"')
 
 
 def _write(elem: ET.Element, out: list[str]) -> None:

@@ -198,6 +198,9 @@ class SweepDrawing:
         for key, nums in self._numbers().items():
             for i, m in enumerate(self._members(key)):
                 self.numbers[m.id] = nums[i]
+        #: the end state's own marks' boxes on the page of every value: {mark id: (x0, y0, x1, y1), each over the
+        #: values} (canvas px: the end step's view frames them, live.measure)
+        self.end_boxes: dict[str, tuple[np.ndarray, ...]] = {}
         self.numbers.update(self._end_numbers(template, protocol))
 
     def _end_numbers(self, template: Scene, protocol: Any) -> dict[str, np.ndarray]:
@@ -262,11 +265,15 @@ class SweepDrawing:
                         self.ok &= ~near
             if m.kind is MarkKind.POINT and m.name in points:
                 x, y = self._shifted(*points[m.name])
-                out[m.id] = np.stack([_r2(c) for c in (*self._px(x, y), np.full(n, point_radius(m, st)))], -1)
+                px, py = self._px(x, y)
+                out[m.id] = np.stack([_r2(c) for c in (px, py, np.full(n, point_radius(m, st)))], -1)
+                self.end_boxes[m.id] = (px, py, px, py)
             elif m.kind is MarkKind.SEGMENT and isinstance(obj, Line):
                 x1, y1, x2, y2 = self._segment(obj, marked, margin, key=m.id)
                 (x1, y1), (x2, y2) = self._shifted(x1, y1), self._shifted(x2, y2)
-                out[m.id] = np.stack([_r2(c) for c in (*self._px(x1, y1), *self._px(x2, y2))], -1)
+                (x1, y1), (x2, y2) = self._px(x1, y1), self._px(x2, y2)
+                out[m.id] = np.stack([_r2(c) for c in (x1, y1, x2, y2)], -1)
+                self.end_boxes[m.id] = (np.minimum(x1, x2), np.minimum(y1, y2), np.maximum(x1, x2), np.maximum(y1, y2))
             elif m.kind.round and isinstance(obj, Circle):
                 cx, cy, r = vec(obj.center.x), vec(obj.center.y), vec(obj.radius)
                 if m.role == "result" or not marked:
@@ -287,10 +294,15 @@ class SweepDrawing:
                 cx, cy, r, a0, sw = geom
                 if m.kind is MarkKind.CIRCLE:
                     x, y = self._shifted(cx + r, cy + r, centre=(cx, cy))
-                    out[m.id] = np.stack([_r2(c) for c in (*self._px(x, y), r * scale)], -1)
+                    px, py = self._px(x, y)
+                    out[m.id] = np.stack([_r2(c) for c in (px, py, r * scale)], -1)
+                    self.end_boxes[m.id] = (px - r * scale, py - r * scale, px + r * scale, py + r * scale)
                     continue
                 bx0, bx1, by0, by1 = _arc_box(cx, cy, r, a0, sw)
-                cx, cy = self._shifted(bx1, by1, centre=(cx, cy))
+                sx, sy = self._shifted(bx1, by1, centre=(cx, cy))  # (where the break moves its centre)
+                (ax0, ay0), (ax1, ay1) = self._px(bx0 + sx - cx, by1 + sy - cy), self._px(bx1 + sx - cx, by0 + sy - cy)
+                self.end_boxes[m.id] = (ax0, ay0, ax1, ay1)
+                cx, cy = sx, sy
                 x0, y0 = self._px(cx + r * np.cos(a0), cy + r * np.sin(a0))
                 x1, y1 = self._px(cx + r * np.cos(a0 + sw), cy + r * np.sin(a0 + sw))
                 rr = r * scale
@@ -331,8 +343,7 @@ class SweepDrawing:
         self.geoms = {k: (P if k is MarkKind.POINT else ()) for k in MarkKind}
         self.curves = {mid: tuple(pts) for mid, pts in self._unbroken_curves.items()}
         self._broken, self._breaks = None, {}
-        self._break()
-        self._break(axis=1)
+        self._break(axis=1, ext=self._break())
         cx = [self.geoms[MarkKind.POINT][0]] + [_stack([c[0] for c in pts]) for pts in self.curves.values()]
         cy = [self.geoms[MarkKind.POINT][1]] + [_stack([c[1] for c in pts]) for pts in self.curves.values()]
         self.geoms, self.curves, self._broken, self._breaks = saved
@@ -395,8 +406,7 @@ class SweepDrawing:
         self._broken = None
         #: per axis: (broken at which values, where the drawn break starts, its drawn width, what it leaves out)
         self._breaks: dict[int, tuple] = {}
-        self._break()
-        self._break(axis=1)
+        self._break(axis=1, ext=self._break())
 
     def _lay_out(self) -> dict[MarkKind, tuple]:
         """Each kind's marks as rows of arrays (marks x values), as far as the margin leaves them: the points'
@@ -525,20 +535,21 @@ class SweepDrawing:
         return out
 
     # -- the broken axis, the lettered lines ---------------------------------------------------------------
-    def _break(self, axis: int = 0) -> None:
+    def _break(self, axis: int = 0, ext: dict | None = None) -> dict | None:
         """sheet.broken_axis over the sweep: the widest empty stretch broken out where it is wider than a fifth
-        (*axis* 1: across the figure, where wider than BREAK_FRACTION_Y)."""
-        ext = self._extremes()
+        (*axis* 1: across the figure, where wider than BREAK_FRACTION_Y).  *ext*: the marks' extremes, if the
+        caller has them as they are now; returned where nothing was broken (the next axis reads them so)."""
+        ext = self._extremes() if ext is None else ext
         lo_at, hi_at = (0, 1) if axis == 0 else (2, 3)
         spans = [(e[lo_at], e[hi_at]) for key, e in ext.items() if key is not MarkKind.SEGMENT
                  and not (key in self.curves and self._members(key)[0].straight and len(self.curves[key]) == 2)]
         if sum(s.shape[0] for s, _ in spans) < 2:
-            return
+            return ext
         S, E = np.concatenate([s for s, _ in spans]), np.concatenate([e for _, e in spans])  # (blocks of rows)
         lo, hi, width, total = _widest_gaps(S, E)
         brk = (width > 0) & (width > (BREAK_FRACTION if axis == 0 else BREAK_FRACTION_Y) * total)
         if not brk.any():
-            return
+            return ext
         keep = np.minimum(BREAK_KEEP * (total - width), 0.8 * width)
         shift = np.where(brk, width - keep, 0.0)
         sx = lambda x: np.where(brk & (x <= lo), x + shift, x)  # noqa: E731
@@ -560,6 +571,7 @@ class SweepDrawing:
             self.curves[mid] = tuple((sx(x), y) if axis == 0 else (x, sx(y)) for x, y in pts)
         self._broken = brk if self._broken is None else (self._broken | brk)
         self._breaks[axis] = (brk, hi - keep, keep, width)
+        return None
 
     def _letter_lines(self, template: Scene, protocol: Any) -> None:
         """marks.letter_lines over the sweep: each lettered straight line's letter point (value by value: a

@@ -14,6 +14,8 @@ __all__ = ["PLATE", "tangential_plate"]
 #: What the Fig. 26/27-like plate shows: the unrolled base, the ordinates and points of T, the curve,
 #: the mean line, the crossings and the hatched excess area.
 PLATE = (r"tbase", r"U\d+", r"u\d+", r"T\d+", r"tcurve", r"M0|Mn", r"mean", r"A1|A2", r"excess")
+#: The points whose heights the scale spans: the ordinates' ends T, a revolution's sum S and its cylinders' c.
+_HEIGHTS = re.compile(r"[TS]\d+|c\d+\.\d+")
 
 
 def tangential_plate(fig: Figure) -> dict:
@@ -58,7 +60,8 @@ def _scale(fig: Figure, m: int) -> list[dict]:
     U0, Um = R["U0"], R[f"U{m}"]
     span = abs(Um[0] - U0[0])
     unit = R.givens["pressure_unit"]
-    heights = [(R[k][1] - U0[1]) / unit for k in R if re.fullmatch(r"[TS]\d+|c\d+\.\d+", k)]
+    # (a player asks at every grid value: the pattern only on names that can match, not the replay's thousands)
+    heights = [(R[k][1] - U0[1]) / unit for k in R if k[:1] in "TSc" and _HEIGHTS.fullmatch(k)]
     step = 2.0 if max(heights) - min(heights) > 6 else 1.0
     lo, hi = math.floor(min(0.0, min(heights)) / step), math.floor(max(heights) / step + 1e-9)
     return scale_furniture(x=U0[0] - 0.06 * span, zero=U0[1], unit=unit, values=[i * step for i in range(lo, hi + 1)],

@@ -36,12 +36,13 @@ import math
 import re
 from collections import defaultdict
 from dataclasses import dataclass
-from typing import Iterator
+from typing import Iterable, Iterator
 
 from ...render.lettering import segment_meets_box
 from . import plates
 from .sheet import Box, Sheet
-from .views import MIN_OPACITY, Runs, Views, both_runs, boxes_meet, in_runs, merge_runs, steps_of, view_total
+from .views import (MIN_OPACITY, Runs, Views, both_runs, boxes_meet, in_runs, merge_runs, runs_outside, steps_of,
+                    view_total)
 
 __all__ = ["Finding", "KINDS", "check_sheet", "view_count", "MIN_LABEL_PX", "MIN_MARK_PX", "MIN_OPACITY", "VIEW"]
 
@@ -213,29 +214,36 @@ def _on_points(sheet: Sheet, views: Views, seen) -> list[Finding]:
     widest = max((d.r for d in sheet.dots), default=0.0)
     found: dict[tuple[int, int], list] = {}
     cells, dots, floor, hypot = grid.cells, sheet.dots, math.floor, math.hypot
+    # a letter stands in the same box at the same scale in many views (those of a zoom level): the discs that
+    # reach into it are found once per box and scale, and each view asks only whether it shows them
+    reaching: dict[tuple, list[int]] = {}
     for lay, letters in seen:
         reach = widest * max(lay.letter - 1.0, 0.0)  # the grid holds the discs at their drawn size
         letter = lay.letter
         for t, b, runs in letters:
-            g = _grow(b, reach) if reach else b
-            near: set[int] = set()
-            for ci in range(floor(g[0] / CELL), floor(g[2] / CELL) + 1):  # grid.near(g), written out
-                for cj in range(floor(g[1] / CELL), floor(g[3] / CELL) + 1):
-                    got = cells.get((ci, cj))
-                    if got:
-                        near.update(got)
-            if not near:
-                continue
-            owner = t.owner
-            for i in sorted(near):
+            hits = reaching.get((t.index, b, letter))
+            if hits is None:
+                hits = reaching[(t.index, b, letter)] = []
+                g = _grow(b, reach) if reach else b
+                near: set[int] = set()
+                for ci in range(floor(g[0] / CELL), floor(g[2] / CELL) + 1):  # grid.near(g), written out
+                    for cj in range(floor(g[1] / CELL), floor(g[3] / CELL) + 1):
+                        got = cells.get((ci, cj))
+                        if got:
+                            near.update(got)
+                owner = t.owner
+                for i in sorted(near):
+                    d = dots[i]
+                    if d.ident is not None and d.ident == owner:
+                        continue
+                    r = d.r * letter
+                    x, y = d.x, d.y
+                    # does the disc reach into the box (from the box's nearest point to its centre)?
+                    if hypot(x - min(max(x, b[0]), b[2]), y - min(max(y, b[1]), b[3])) < r - TOUCH:
+                        hits.append(i)
+            for i in hits:
                 d = dots[i]
-                if d.ident is not None and d.ident == owner:
-                    continue
                 r = d.r * letter
-                x, y = d.x, d.y
-                # does the disc reach into the box (from the box's nearest point to its centre)?
-                if not hypot(x - min(max(x, b[0]), b[2]), y - min(max(y, b[1]), b[3])) < r - TOUCH:
-                    continue
                 if not boxes_meet((d.x - r, d.y - r, d.x + r, d.y + r), lay.box):
                     continue
                 both = both_runs(runs, views.shown(d.chain, d.step, lay.level))
@@ -288,32 +296,73 @@ def _piece_cells(boxes: list[Box]) -> dict[tuple[int, int], list[int]]:
     return cells
 
 
+#: Letter boxes times result-line pieces up to which :func:`_struck` asks each box of all pieces at once (numpy),
+#: rather than filing the pieces in a grid.
+_ALL_AT_ONCE = 1 << 22
+
+
 def _struck(sheet: Sheet, views: Views, seen) -> list[Finding]:
-    # the grid of :class:`_Grid` (its cells and keys), written out here: every letter of every view asks it
-    pieces: list[tuple[int, tuple[float, float, float, float], Box]] = []
-    widest = max((s.half for s in sheet.strokes), default=0.0)
-    for si, s in enumerate(sheet.strokes):
-        for p in s.pieces:
-            pieces.append((si, p, (min(p[0], p[2]), min(p[1], p[3]), max(p[0], p[2]), max(p[1], p[3]))))
-    cells = _piece_cells([pb for _, _, pb in pieces])
+    import numpy as np
+
+    keys = list(dict.fromkeys((t.index, tb) for _, letters in seen for t, tb, _ in letters))
+    if not keys or not sheet.strokes:
+        return []
     halves = [s.half for s in sheet.strokes]
-    floor = math.floor
+    flat = [p for s in sheet.strokes for p in s.pieces]
+    a = np.array(flat, dtype=float).reshape(-1, 4)
+    owner = np.repeat(np.arange(len(sheet.strokes)), [len(s.pieces) for s in sheet.strokes])
+    lo, hi = np.minimum(a[:, 0:2], a[:, 2:4]), np.maximum(a[:, 0:2], a[:, 2:4])
+    # A letter stands in the same box in many views (those of a zoom level): the pieces that strike it at the
+    # widest stroke of any view are found once per box, and only they are tested in each view at its own stroke
+    # (a piece that misses the box grown by the widest stroke misses it grown by less): {(text, box): [(line,
+    # piece, its box), ...]}.
+    most = max((lay.stroke for lay, _ in seen), default=1.0)
+    reach = np.array(halves) * most - TOUCH
+    candidates: dict[tuple, list] = {}
+
+    def strike(key: tuple, near: Iterable[int], boxes: Iterable) -> None:
+        tb = key[1]
+        got = candidates[key] = []
+        for i, pb in zip(near, boxes):
+            si, p = owners[i], flat[i]
+            d = halves[si] * most - TOUCH
+            b = (tb[0] - d, tb[1] - d, tb[2] + d, tb[3] + d)
+            if not (pb[2] < b[0] or pb[0] > b[2] or pb[3] < b[1] or pb[1] > b[3]) and segment_meets_box(b, p):
+                got.append((si, p, pb))
+
+    owners = owner.tolist()
+    if len(keys) * len(flat) <= _ALL_AT_ONCE:
+        # few letters (a plate's dozens over its tens of thousands of pieces): each box asks all pieces at once
+        d = reach[owner]
+        for key in keys:
+            tb = key[1]
+            near = np.flatnonzero(~((hi[:, 0] < tb[0] - d) | (lo[:, 0] > tb[2] + d) | (hi[:, 1] < tb[1] - d)
+                                    | (lo[:, 1] > tb[3] + d)))
+            strike(key, near.tolist(), np.concatenate((lo[near], hi[near]), axis=1).tolist())
+    else:
+        # many: the grid of :class:`_Grid` (its cells and keys), written out here
+        boxes = np.concatenate((lo, hi), axis=1).tolist()
+        cells = _piece_cells(boxes)
+        r, floor = max(halves) * most, math.floor
+        for key in keys:
+            tb = key[1]
+            got_near: set[int] = set()
+            for i in range(floor((tb[0] - r) / CELL), floor((tb[2] + r) / CELL) + 1):
+                for j in range(floor((tb[1] - r) / CELL), floor((tb[3] + r) / CELL) + 1):
+                    cell = cells.get((i, j))
+                    if cell:
+                        got_near.update(cell)
+            near = sorted(got_near)
+            strike(key, near, [boxes[i] for i in near])
     found: dict[tuple[int, int], list] = {}
     for lay, letters in seen:
         stroke = lay.stroke
-        reach = widest * stroke
         for t, tb, runs in letters:
-            near: set[int] = set()
-            for i in range(floor((tb[0] - reach) / CELL), floor((tb[2] + reach) / CELL) + 1):
-                for j in range(floor((tb[1] - reach) / CELL), floor((tb[3] + reach) / CELL) + 1):
-                    got = cells.get((i, j))
-                    if got:
-                        near.update(got)
+            near = candidates[(t.index, tb)]
             if not near:
                 continue
             hit: set[int] = set()
-            for i in sorted(near):
-                si, p, pb = pieces[i]
+            for si, p, pb in near:
                 if si in hit:
                     continue
                 d = halves[si] * stroke - TOUCH
@@ -462,6 +511,7 @@ def _leaders(sheet: Sheet, views: Views) -> list[Finding]:
         dots[(round(d.x), round(d.y))].append(d)
     found: dict[tuple[int, str], list] = defaultdict(list)
     anchors = np.array([ld.anchor for ld in sheet.leaders], dtype=float).reshape(-1, 2)
+    marked: dict[tuple[int, int], Runs] = {}  # the views that draw a leader's point, by (leader, zoom level)
     for lay in views.layouts:
         x0, y0, x1, y1 = lay.box
         # the leaders whose point the layout's box holds and whose views reach into the layout's, in order
@@ -486,12 +536,15 @@ def _leaders(sheet: Sheet, views: Views) -> list[Finding]:
             tb = views.text_box(t, lay)
             if math.hypot(b[0] - min(max(b[0], tb[0]), tb[2]), b[1] - min(max(b[1], tb[1]), tb[3])) > reach:
                 found[(i, "letter")].extend(runs)
-            # its point is drawn there: a marker at the anchor, seen in the same views
-            seen = merge_runs(r for d in dots.get((round(ax), round(ay)), ())
-                          if math.hypot(d.x - ax, d.y - ay) <= 1.0 for r in views.shown(d.chain, d.step, lay.level))
-            for k in steps_of(runs):
-                if not in_runs(seen, k):
-                    found[(i, "hidden")].append((k, k))
+            # its point is drawn there: a marker at the anchor, seen in the same views (those of a zoom level alike)
+            seen = marked.get((i, lay.level))
+            if seen is None:
+                seen = marked[(i, lay.level)] = merge_runs(
+                    r for d in dots.get((round(ax), round(ay)), ())
+                    if math.hypot(d.x - ax, d.y - ay) <= 1.0 for r in views.shown(d.chain, d.step, lay.level))
+            hidden = runs_outside(runs, seen)
+            if hidden:
+                found[(i, "hidden")].extend(hidden)
     out = []
     what = {"point": "starts away from its point", "letter": "ends away from its letter",
             "hidden": "points at a point the view does not draw"}

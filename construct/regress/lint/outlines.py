@@ -149,8 +149,8 @@ def polylines(tag: str, e: ET.Element, where: str) -> list[list[tuple[float, flo
             (ax, ay), (bx, by), (cx, cy), (dx, dy) = seg[1:]
             cur = cur or [seg[1]]
             # the sums in the order sum() adds them (0 + w0 p0 + w1 p1 + ...): the same numbers, without its calls
-            cur.extend((0 + w0 * ax + w1 * bx + w2 * cx + w3 * dx, 0 + w0 * ay + w1 * by + w2 * cy + w3 * dy)
-                       for w0, w1, w2, w3 in _CUBIC)
+            cur += [(0 + w0 * ax + w1 * bx + w2 * cx + w3 * dx, 0 + w0 * ay + w1 * by + w2 * cy + w3 * dy)
+                    for w0, w1, w2, w3 in _CUBIC]
         elif op == "Q":
             (ax, ay), (bx, by), (cx, cy) = seg[1:]
             cur = cur or [seg[1]]
@@ -213,8 +213,8 @@ def _plain_path(d: str) -> list[list[tuple[float, float]]] | None:
                 continue
             ax, ay = at
             bx, by, cx, cy, dx, dy = v
-            cur.extend((0 + w0 * ax + w1 * bx + w2 * cx + w3 * dx, 0 + w0 * ay + w1 * by + w2 * cy + w3 * dy)
-                       for w0, w1, w2, w3 in _CUBIC)
+            cur += [(0 + w0 * ax + w1 * bx + w2 * cx + w3 * dx, 0 + w0 * ay + w1 * by + w2 * cy + w3 * dy)
+                    for w0, w1, w2, w3 in _CUBIC]
             at = (dx, dy)
         elif len(v) < 2:
             continue

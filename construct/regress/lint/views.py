@@ -8,6 +8,8 @@ screen (:func:`player_window`, :func:`player_letter_scale`, :func:`zoom_level`).
 
 >>> merge_runs([(5, 6), (1, 2), (3, 3)]), both_runs([(1, 4), (8, 9)], [(3, 8)]), runs_without([(1, 4)], 2)
 ([(1, 3), (5, 6)], [(3, 4), (8, 8)], [(1, 1), (3, 4)])
+>>> runs_outside([(1, 9), (12, 14)], [(0, 1), (4, 5), (7, 12)])
+[(2, 3), (6, 6), (13, 14)]
 >>> in_runs([(1, 2), (5, 7)], 6), list(steps_of([(1, 2), (5, 5)])), view_total([(1, 2), (5, 7)])
 (True, [1, 2, 5], 5)
 """
@@ -27,8 +29,8 @@ from .sheet import Box, Sheet
 if TYPE_CHECKING:  # (numpy is imported where it is used: the annotations name it)
     import numpy as np
 
-__all__ = ["Runs", "merge_runs", "both_runs", "runs_without", "in_runs", "runs_of", "steps_of", "view_total",
-           "boxes_meet", "Layout", "Views", "player_window", "player_letter_scale", "zoom_level", "MIN_OPACITY",
+__all__ = ["Runs", "merge_runs", "both_runs", "runs_without", "runs_outside", "in_runs", "runs_of", "steps_of",
+           "view_total", "boxes_meet", "Layout", "Views", "player_window", "player_letter_scale", "zoom_level", "MIN_OPACITY",
            "PLAYER_SIDE_PX", "PLAYER_HEIGHT", "PLAYER_ASPECT"]
 
 #: Marks fainter than this (a finished group's faded helpers) are background: they do not collide.
@@ -42,7 +44,9 @@ Runs = list[tuple[int, int]]
 
 def merge_runs(runs: Iterable[tuple[int, int]]) -> Runs:
     out: Runs = []
-    for a, b in sorted(r for r in runs if r[0] <= r[1]):
+    for a, b in sorted(runs):
+        if a > b:
+            continue  # (an empty run)
         if out and a <= out[-1][1] + 1:
             if b > out[-1][1]:
                 out[-1] = (out[-1][0], b)
@@ -78,6 +82,25 @@ def runs_without(x: Runs, k: int) -> Runs:
                 out.append((k + 1, b))
         else:
             out.append((a, b))
+    return out
+
+
+def runs_outside(x: Runs, y: Runs) -> Runs:
+    """The steps of *x* that are in no run of *y* (both in order and apart), as runs."""
+    out: Runs = []
+    j = 0
+    for a, b in x:
+        while j < len(y) and y[j][1] < a:
+            j += 1
+        i = j
+        while a <= b:
+            if i >= len(y) or y[i][0] > b:
+                out.append((a, b))
+                break
+            if y[i][0] > a:
+                out.append((a, y[i][0] - 1))
+            a = max(a, y[i][1] + 1)
+            i += 1
     return out
 
 
@@ -189,6 +212,7 @@ class Views:
                 if s < k < n:
                     self.input_in[s].append(k)
         self._cache: dict[tuple, Runs] = {}
+        self._states: dict[tuple, tuple[bool, ...]] = {}
         self.layouts = self._layouts()
         self._of_step: dict[int, Layout] = {}
         for lay in self.layouts:
@@ -260,6 +284,17 @@ class Views:
         look = self.sheet.look(chain, state, level)
         return look.shown and look.opacity >= MIN_OPACITY
 
+    def _seen_as(self, chain, level: int) -> tuple[bool, ...]:
+        """Whether the element is seen with its step's groups current, old, done, as in the file and as an
+        input (:meth:`_seen` in each state), worked out once per chain and level: elements that look alike
+        share their chains, in every step."""
+        key = (chain, level)
+        got = self._states.get(key)
+        if got is None:
+            got = self._states[key] = tuple(self._seen(chain, state, level)
+                                            for state in ("cur", "old", "done", None, "inp"))
+        return got
+
     def shown(self, chain, step: int | None, level: int = 0) -> Runs:
         """The views (runs of steps) in which the element is seen (the drawing at zoom level *level*)."""
         key = (chain, step, level)
@@ -274,21 +309,25 @@ class Views:
                          + ([(n, n)] if self._seen(chain, None, level) else []))
         else:
             s = step
+            cur, old, done, filed, as_input = self._seen_as(chain, level)
             runs: Runs = []
-            if s < n and self._seen(chain, "cur", level):
+            if s < n and cur:
                 runs.append((s, s))
             fade = sheet.fades.get(s)
             last_old = n - 1 if fade is None else min(fade, n - 1)
-            if self._seen(chain, "old", level):
+            if old:
                 runs.append((s + 1, last_old))
-            if fade is not None and self._seen(chain, "done", level):
+            if fade is not None and done:
                 runs.append((max(fade + 1, s + 1), n - 1))
-            if self._seen(chain, None, level):
+            if filed:
                 runs.append((n, n))
-            runs = merge_runs(runs)
-            as_input = self._seen(chain, "inp", level)
-            for k in self.input_in.get(s, ()):
-                runs = merge_runs(runs + [(k, k)]) if as_input else runs_without(runs, k)
+            inputs = self.input_in.get(s, ())
+            if as_input:  # seen in the views where its step is an input, too
+                runs = merge_runs(runs + [(k, k) for k in inputs])
+            else:
+                runs = merge_runs(runs)
+                for k in inputs:
+                    runs = runs_without(runs, k)
             got = runs
         self._cache[key] = got
         return got

@@ -1278,6 +1278,35 @@ def test_the_inset_magnifies_where_a_fresh_replay_magnifies_it_while_dragging(br
     page.close()
 
 
+# every value the plate writes in the end state (its decimal lettering, not its halos) that the page shows: its text
+# and its box on the screen
+_WRITTEN = """() => JSON.stringify(Array.from(document.querySelectorAll('#furniture text')).filter(t =>
+    !t.classList.contains('halo') && t.getClientRects().length && /^[+\\u2212-]?[0-9]+,[0-9]+$/.test(t.textContent.trim()))
+    .map(t => {
+      const r = t.getBoundingClientRect(); return [t.textContent, r.left, r.top, r.right, r.bottom]; }))"""
+
+
+@pytest.mark.parametrize("v", [1.05, 2.0, 1000.0])
+def test_the_values_the_plate_writes_stay_clear_of_one_another_while_dragging(browser, v):
+    """Tafel 2's end state writes the eleven inertia pressures beside their ordinates.  As L/r moves the ordinates
+    crowd (at L/r 2 the last ones nearly equal): the page writes each value where a placing at that value sets it
+    (where it stood at the book's value while there is room), so that no two overlap on the screen -- they were
+    written on one another at L/r 2 while the page kept the book's value's offsets -- and each value belongs to
+    its ordinate (its text a number)."""
+    path = REPO / "gallery" / "inertia-stroke-fractions-rod-ratio-5" / "teaching" / "player.html"
+    if not path.is_file():
+        pytest.skip("no committed gallery in this checkout")
+    page, errors = _open(browser, path)
+    _at(page, "end")
+    _at_step_view(page)
+    for u in np.geomspace(5.0, v, 24)[1:]:  # (a slow drag there)
+        _drag_to(page, "rod_ratio", float(u))
+    written = json.loads(page.evaluate(_WRITTEN))
+    assert len(written) >= 11, written
+    for i, a in enumerate(written):
+        for b in written[i + 1:]:
+            over = min(a[3], b[3]) - max(a[1], b[1]), min(a[4], b[4]) - max(a[2], b[2])
+            assert min(over) <= 1.0, f"L/r = {v}: {a[0]} and {b[0]} overlap by {over[0]:.1f} x {over[1]:.1f} px"
 @pytest.mark.parametrize("v", [1.05, 1.2, 3.0, 8.0, 1000.0])
 def test_the_end_step_frames_the_end_state_at_every_value_as_a_fresh_build_does(browser, tmp_path, v):
     """The crank's last step (the end state: the figure as the plate draws it, with its furniture) dragged slowly
@@ -1314,6 +1343,33 @@ def test_the_end_step_frames_the_end_state_at_every_value_as_a_fresh_build_does(
     page.close()
 
 
+def test_the_checks_name_the_value_they_belong_to(browser, live_player):
+    """Between the values the checks were computed at, the table's numbers are one such value's (a check's error is
+    its point: a blend of two values' would claim a check nobody made): the heading names that value and says it
+    is the nearest computed one to the slider's, and every row is what ``construct check`` at the named value
+    gives, to the digits written.  At a value computed, the heading names it alone."""
+    c, _, path = live_player
+    page, errors = _open(browser, path)
+    _drag_to(page, "rod_ratio", 3.3)
+    head = page.locator("#live-at").inner_text()
+    got = re.fullmatch(r"\(L/r = ([0-9,]+): nächster berechneter Wert zu 3,3 / the nearest computed value to 3\.3\)",
+                       head)
+    assert got, head
+    at = float(got.group(1).replace(",", "."))
+    assert at != 3.3
+    fresh = c.checks(c.figure(parts=3, rod_ratio=at))
+    # (the rows out of sight wait while dragging, until they come into sight: flush brings them up to date)
+    rows = page.evaluate("""() => { window.constructLive.flush();
+        return Array.from(document.querySelectorAll('#live-checks tbody tr')).map(r =>
+          Array.from(r.cells).map(td => td.textContent)); }""")
+    assert len(rows) == len(fresh)
+    for row, ck in zip(rows, fresh):
+        assert row[0] == ck.name
+        # (the value named is written to four digits: the checks there to the digits the page writes, 8)
+        for text, want in ((row[1], ck.measured), (row[2], ck.expected)):
+            assert abs(float(text) - want) <= 5e-4 * max(abs(want), 1e-9), (ck.name, text, want)
+    _drag_to(page, "rod_ratio", 5.0)
+    assert page.locator("#live-at").inner_text() == "(L/r = 5)"
 @pytest.mark.parametrize("frac", [0.6, 1.0])
 def test_a_new_drag_after_letting_go_starts_from_the_view_let_go_at(browser, live_player, frac):
     """Let go, the camera frames the step's view exactly; a new drag that barely moves the given (a thousandth of
@@ -1342,6 +1398,37 @@ def test_a_new_drag_after_letting_go_starts_from_the_view_let_go_at(browser, liv
     page.close()
 
 
+def _decimal(text: str) -> tuple[float, int]:
+    """A value as the plate writes it ("+0,748", "−0,5"): its number and its decimals."""
+    got = re.fullmatch(r"([+\u2212-]?)([0-9]+),([0-9]+)", text.strip())
+    assert got, text
+    return (-1 if got.group(1) in "\u2212-" and got.group(1) else 1) * float(f"{got.group(2)}.{got.group(3)}"), \
+        len(got.group(3))
+
+
+def test_the_values_the_plate_writes_belong_to_the_sliders_value(browser):
+    """Tafel 2's end state writes each inertia pressure to three decimals.  Between the grid values the page holds,
+    the nearer one's +0,748 stood for a fresh replay's +0,746 at L/r 2, three digits claimed, the last one wrong:
+    each value written now belongs to the value the slider shows to the digits written (a fresh replay's value
+    there, itself good to half a unit of its third decimal, within half a unit of the last digit written), and at
+    the book's value every value has its three decimals."""
+    path = REPO / "gallery" / "inertia-stroke-fractions-rod-ratio-5" / "teaching" / "player.html"
+    if not path.is_file():
+        pytest.skip("no committed gallery in this checkout")
+    c = get("inertia-stroke-fractions")
+    page, errors = _open(browser, path)
+    _at(page, "end")
+    for v in (2.0, 3.3, 7.1):
+        _drag_to(page, "rod_ratio", v)
+        shown = [_decimal(t[0]) for t in json.loads(page.evaluate(_WRITTEN))]
+        fresh = [_decimal("".join(e.itertext())) for e in _fresh_svg(c, {}, "rod_ratio", v).iter()
+                 if e.tag.endswith("text") and (e.get("id") or "").startswith("fin-")
+                 and "halo" not in (e.get("class") or "").split() and re.fullmatch(r"[+\u2212-]?[0-9]+,[0-9]+", "".join(e.itertext()).strip())]
+        assert len(shown) == len(fresh) == 11, (v, shown, fresh)
+        for (x, d), (want, _) in zip(shown, fresh):
+            assert abs(x - want) <= 0.5 * 10.0 ** -d + 0.0005 + 1e-9, f"L/r = {v}: {x} written for {want}"
+    _drag_to(page, "rod_ratio", 5.0)
+    assert all(d == 3 for _, d in (_decimal(t[0]) for t in json.loads(page.evaluate(_WRITTEN))))
 def test_the_rod_written_at_the_break_is_the_sliders_in_every_piece_of_the_domain(browser):
     """Tafel 2's construction changes its form along L/r, so its slider moves through pieces of the domain, each
     swept apart: dragged slowly from the book's L/r = 5 to 32.4 and 1000 (``input`` events only) at three fifths

@@ -30,7 +30,7 @@ from ..constructions import Construction
 from ..figure import Figure
 from ..render.camera import (FINAL_CONTEXT, MAX_ZOOM, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, clip_view, level,
                              player_letter_scale, zoom_of)
-from ..render.end_state import NumbersFactory, end_furniture, end_letter_boxes, furniture_numbers
+from ..render.end_state import NumbersFactory, end_furniture, end_letter_boxes, end_lettering_at, furniture_numbers
 from ..render.output import scene_for
 from ..render.insets import inset_details
 from ..render.plate import Lettering, extent, plain, plate_of, shifted, subscript_runs
@@ -272,13 +272,16 @@ class Measure:
             view = new
         return [float(c) for c in view]
 
-    def _furniture(self, items: tuple, vp: Any, exact: bool = True,
-                   owners: dict[str, int] | None = None) -> tuple[list, list[float], dict[str, str]]:
+    def _furniture(self, items: tuple, vp: Any, exact: bool = True, owners: dict[str, int] | None = None,
+                   marks: Any = None) -> tuple[list, list[float], dict[str, str]]:
         """The end state's furniture *items* (the plate's, on the sheet's broken axis) drawn on *vp* (anything with
         ``px`` and ``scale``): its keys, numbers and texts (:func:`~construct.render.end_state.furniture_numbers`).
         Another value's furniture is drawn in the built one's form (:meth:`_aligned`): a built item it lacks (a
         scale's tick) drawn where the built figure has it, on this value's axes, and named among the texts as
-        ``"#absent"`` (its elements' ids: the page hides them there)."""
+        ``"#absent"`` (its elements' ids: the page hides them there); its lettering placed among that value's
+        end-state *marks* (:func:`~construct.render.end_state.end_lettering_at`: where it stood at the built value
+        where there is room, at the built end state's letter scale, which a fresh build there keeps too), or where
+        the built value's placing set it about its places without *marks*."""
         if self.end is None or not items:
             return [], [], {}
         absent: frozenset[int] = frozenset()
@@ -286,8 +289,10 @@ class Measure:
             items, absent = self._aligned(items)
         own: dict[str, int] = {} if owners is None else owners
         sheet = SimpleNamespace(end_furniture=items)
+        spots = None if marks is None or not any(isinstance(it, Lettering) for it in items) else \
+            end_lettering_at(sheet, marks, self.style, vp, self.end, self.placing, NUMBERS)
         keys, nums, texts = furniture_numbers(end_furniture(sheet, self.style, vp, self.end, self.placing, NUMBERS,
-                                                            own), exact=exact)
+                                                            own, spots), exact=exact)
         if absent:
             texts["#absent"] = " ".join(i for i, k in own.items() if k in absent)
         return keys, nums, texts
@@ -376,8 +381,12 @@ class Measure:
         breaks = at_once.breaks_at(i)
         items = tuple(shifted(it, break_shift(breaks)) for it in p.furniture) if breaks else tuple(p.furniture)
         px, fx = at_once.px_of(i), extent(items)
+        # (the end state's marks there, which its lettering is placed among: a scene, 5 ms, where it has lettering)
+        marks = scene_for(self.construction, figure, ending=self.style.camera).end_drawn() \
+            if any(isinstance(it, Lettering) for it in items) else None
         # (its numbers unrounded: frames rounds every value's at once)
-        return (*self._furniture(items, SimpleNamespace(px=px, scale=float(at_once.fit[i][2])), exact=False),
+        return (*self._furniture(items, SimpleNamespace(px=px, scale=float(at_once.fit[i][2])), exact=False,
+                                 marks=marks),
                 (*px(fx[0], fx[3]), *px(fx[2], fx[1])) if fx is not None else (math.nan,) * 4)
 
     def _runs(self, keys: list[tuple[str, str, str]]) -> list[tuple[str, int]]:
@@ -636,7 +645,8 @@ class Measure:
         for lk, ln in layers.values():
             keys += lk
             nums += ln
-        fk, fn, ft = self._furniture(scene.end_furniture, vp) if self.furniture_live is not False else self.held
+        fk, fn, ft = self._furniture(scene.end_furniture, vp, marks=scene.end_drawn()) \
+            if self.furniture_live is not False else self.held
         keys += fk
         nums += fn
         texts.update(ft)

@@ -36,8 +36,9 @@ from .styles import Style
 from .svgdoc import Element, Writer, fmt, with_attribute
 from .viewport import Viewport
 
-__all__ = ["EndView", "END_MARGIN_PX", "lay_out_end", "end_fixed", "end_lettering", "end_furniture", "end_sheet",
-           "own_strokes", "wrapped", "NumbersFactory", "furniture_numbers", "lettering_box", "end_letter_boxes"]
+__all__ = ["EndView", "END_MARGIN_PX", "lay_out_end", "end_fixed", "end_lettering", "end_lettering_at",
+           "end_furniture", "end_sheet", "own_strokes", "wrapped", "NumbersFactory", "furniture_numbers", "lettering_box",
+           "end_letter_boxes"]
 
 #: The margin round the end state's drawing on its sheet (screen px at the end view).
 END_MARGIN_PX = 14.0
@@ -143,7 +144,8 @@ def lettering_box(elem: Any, size: float, style: Style) -> tuple[float, float, f
     got = re.search(r"font-size:\s*([\d.]+)px", xml.get("style", ""))
     size = float(got.group(1)) if got else size
     text = xml.text or ""
-    x, y = float(xml.get("x")), float(xml.get("y"))
+    # (a live sweep's raw numbers, NumbersFactory's, may be written as one-element arrays: "[796.56]")
+    x, y = (float(_NUMBER.search(xml.get(a)).group()) for a in ("x", "y"))
     w = text_width(text, size, style.label_font, style.label_italic)
     x += {"start": w / 2, "end": -w / 2}.get(xml.get("text-anchor", "middle"), 0.0)
     return label_box(x, y, text, size, style.label_font, style.label_italic)
@@ -208,11 +210,8 @@ def lay_out_end(scene: Scene, style: Style, vp: Viewport, placing: Placing, view
         size = st.label_size * ls
         texts = [b for e in furniture_elements(end_fixed(sc), vp.px, vp.scale, factory, size=size)
                  if (b := lettering_box(e, size, st)) is not None]
-        # the plate's own lines that are results (its ordinates), not its thin and dashed helpers
-        strokes = [(*vp.px(*it.a), *vp.px(*it.b)) for it in sc.end_furniture
-                   if isinstance(it, Stroke) and not {"thin", "dashed", "hidden"} & set(it.look.split())]
         lettering = end_lettering(sc, vp, st, size)
-        pl.place_end(ls, marks, texts, lettering, strokes)
+        pl.place_end(ls, marks, texts, lettering, _result_strokes(sc, vp))
         box = None
         for m in marks:
             if sc.end_shows(m):
@@ -247,15 +246,41 @@ def lay_out_end(scene: Scene, style: Style, vp: Viewport, placing: Placing, view
     return EndView(v, lvl, round(ls, 4), round(1.0 / q, 6), tuple(round(c, 2) for c in crop), size)
 
 
+def _result_strokes(scene: Any, vp: Any) -> list[tuple[float, float, float, float]]:
+    """The plate's own lines that are results (its ordinates), not its thin and dashed helpers (canvas px)."""
+    return [(*vp.px(*it.a), *vp.px(*it.b)) for it in scene.end_furniture
+            if isinstance(it, Stroke) and not {"thin", "dashed", "hidden"} & set(it.look.split())]
+
+
+def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, end: EndView, placing: Placing,
+                     factory: Any) -> dict[str, tuple[float, float, float]]:
+    """Where the plate's lettering of *sheet* (anything with ``end_furniture``: the plate at another value of a live
+    given, in the built plate's form) stands about its places at that value, as :func:`lay_out_end` places it
+    (:meth:`~construct.render.placing.Placing.end_lettering_at`: among that value's end-state *marks* on *vp*):
+    {id: (dx, dy, distance)}, as ``placing.end_spots``.  A letter with no room there, or one that would take a
+    leader where the built one has none (or lose its leader), keeps its built spot: the furniture keeps its form
+    over the sweep (its elements, by which the page knows them)."""
+    texts = [b for e in furniture_elements(end_fixed(sheet), vp.px, vp.scale, factory, size=end.size)
+             if (b := lettering_box(e, end.size, style)) is not None]
+    got = placing.end_lettering_at(vp, end.letter, marks, texts, end_lettering(sheet, vp, style, end.size),
+                                   _result_strokes(sheet, vp))
+    built = placing.end_spots
+    return {**built, **{f: rel for f, rel in got.items()
+                        if f in built and (rel[2] >= LEADER_FROM) == (built[f][2] >= LEADER_FROM)}}
+
+
 def end_furniture(scene: Scene, style: Style, vp: Viewport, end: EndView, placing: Placing, factory: Any,
-                  owners: dict[str, int] | None = None) -> Any:
+                  owners: dict[str, int] | None = None,
+                  spots: dict[str, tuple[float, float, float]] | None = None) -> Any:
     """The plate's furniture in the end state (``<g class="fo end">``), its letters at the size of the end
     state's, its lettering where the end state's placing set it (upright; tied to its place by a leader when
     set off).  Each of its elements has an id in the order drawn (``fin-s<k>``: the line of a stroke the plate
     adds, which a broken axis breaks; ``fin-f<k>`` the rest): the live page moves them with the given
     (:func:`furniture_numbers`).  *owners*, if given, gets each element's item: {its id: the item's index in
-    ``scene.end_furniture``}."""
+    ``scene.end_furniture``}.  *spots*: where the lettering stands about its places (``placing.end_spots`` without;
+    another value of a live given's: :func:`end_lettering_at`)."""
     f = factory
+    spots = placing.end_spots if spots is None else spots
     g = f.g(class_="fo end")
     owners = {} if owners is None else owners
     k = 0
@@ -272,7 +297,7 @@ def end_furniture(scene: Scene, style: Style, vp: Viewport, end: EndView, placin
     ls = end.letter
     for (fid, (px, py), text), i in zip(end_lettering(scene, vp, style, end.size),
                                        [i for i, it in enumerate(scene.end_furniture) if isinstance(it, Lettering)]):
-        rel = placing.end_spots.get(fid)
+        rel = spots.get(fid)
         if rel is None:
             continue
         it = scene.end_furniture[i]

@@ -4,7 +4,8 @@
 an ``<input type="range" name="GIVEN">`` per given (log10 of the given over its stated
 domain: the rod ratio runs from 1.05 to 1000, and a teacher lives between 3 and
 8), the value in the book's notation, the construction's checks at the
-nearest grid value, and a script that interpolates every drawn coordinate
+nearest grid value they were computed at (the heading names it, and says so where the slider stands between
+two), and a script that interpolates every drawn coordinate
 between the grid values the data (:mod:`construct.live`) holds, in the wire format of
 :mod:`construct.render.wire`.  Each given has its own sweep, taken with the
 others at the book's values: one given moves at a time, and moving one sets
@@ -37,7 +38,8 @@ marks are swept as the rest (:meth:`construct.render.sweepdraw.SweepDrawing`), a
 (its dimensions, lettering and added lines) item by item: an item the plate draws at every value of the domain
 follows the given, one that comes and goes (a scale's ticks: :meth:`construct.live.Measure.furniture_kept`) is
 shown where the nearer grid value's plate has it, and the page says which (a plate of panels is held whole).
-Readings of the figure (an angle to the minute) are written as read at the nearer grid value.
+Readings of the figure (an angle to the minute) are written as read at the nearer grid value; a decimal number
+read off it (a value the plate writes) blended between the two grid values' and written with one digit fewer there.
 An area's hatching is drawn anew with its outline, as the drawing hatches it (:func:`construct.render.paths.
 hatch_segments`: the player's data says its spacing and each area's angle); a signed area's (its pieces' angle
 turns with their sign) holds the built value's numbers and is shown at the book's values alone.  The inset (a
@@ -125,9 +127,11 @@ def with_live(page: str, data: Mapping[str, Any] | Sequence[Mapping[str, Any]], 
                 + f'<div class="live-held" style="{_NOTE}">{held}</div>'
                 # a reading (an angle read off the figure, to the minute) blended between grid values would
                 # print minutes the figure does not have
-                + (f'<div class="live-readings" style="{_NOTE}">Abgelesene Werte (Winkel) sind beim nächsten '
-                   'gespeicherten Wert abgelesen. / Values read off the figure (angles) are as read at the nearest '
-                   'value the page holds.</div>'
+                + (f'<div class="live-readings" style="{_NOTE}">Abgelesene Winkel sind beim nächsten gespeicherten '
+                   'Wert abgelesen; abgelesene Zahlen zwischen zwei gespeicherten Werten sind zwischen ihnen '
+                   'gemittelt und mit einer Stelle weniger geschrieben. / Angles read off the figure are as read at '
+                   'the nearest value the page holds; numbers read off it between two such values are blended '
+                   'between them and written with one digit fewer.</div>'
                    if any(d.get("readings") for d in givens) else '')
                 + '<details open><summary>Prüfungen / checks <span id="live-at"></span></summary>'
                 '<div style="max-height:28vh;overflow:auto"><table id="live-checks" style="border-collapse:collapse;'
@@ -828,10 +832,11 @@ LIVE_SCRIPT = r"""
     if (player && player.pin) player.pin();  // (the end state's turned texts and arrowheads about their new anchors)
     drawAreas();
     breakMarks();
-    // readings of the figure (an angle to the minute, a dimension's value): as read at the nearer grid value
+    // readings of the figure (an angle to the minute, a dimension's value): as read at the shown value (between)
     var near = ct[1] < 0.5 ? ct[0] : Math.min(ct[0] + 1, S.L.rows - 1);
     for (var j = 0; j < readings.length; j++) {
-      var rd = readings[j], said = rd.L === S.L ? rd.texts[near] : rd.L.given !== S.L.given ? rd.built : null;
+      // (at the book's value, which the grid may miss by a hair, the built figure's own)
+      var rd = readings[j], said = rd.L === S.L ? (atBook ? rd.built : between(rd.texts, ct)) : rd.L.given !== S.L.given ? rd.built : null;
       if (said) for (var rj = 0; rj < rd.els.length; rj++) setText(rd.els[rj], said);
     }
     // the plate's items that come and go with the given (a scale's ticks: live/measure.py Measure._furniture):
@@ -846,6 +851,33 @@ LIVE_SCRIPT = r"""
     if (S.out && S.out.textContent !== said) { setText(S.out, said); retitle(); }
     showChecks(S, u, dragging);
     api.lastMs = performance.now() - t0;
+  }
+  // A reading between two grid values: its decimal numbers (a value the plate writes, +0,748) blended between the
+  // two values' readings and written with one digit fewer where they differ (the readings travel rounded to the
+  // digits written: a blend of two rounded numbers is good to about a unit of their last digit, not to its half;
+  // a fresh replay's +0,746 at L/r 2 is written +0,75, where the nearer grid value's +0,748 claimed a digit it has
+  // not); at a grid value, and for an angle to the minute (a blend would print minutes the figure does not have),
+  // the nearer grid value's reading
+  var DECIMAL = /([+\u2212-]?)([0-9]+)([.,])([0-9]+)/g;
+  function between(texts, ct){
+    var a = texts[ct[0]], b = texts[Math.min(ct[0] + 1, texts.length - 1)], t = ct[1];
+    if (a === b || t < 1e-9 || t > 1 - 1e-9) return t < 0.5 ? a : b;  // (at a grid value: the slider's log10 to 1e-12)
+    var na = [], nb = [];
+    a.replace(DECIMAL, function(m){ na.push(m); return ""; });
+    b.replace(DECIMAL, function(m){ nb.push(m); return ""; });
+    var near = t < 0.5 ? a : b;
+    if (!na.length || na.length !== nb.length || a.replace(DECIMAL, "#") !== b.replace(DECIMAL, "#")) return near;
+    var k = 0, bad = false;
+    var out = a.replace(DECIMAL, function(m, sign, whole, comma, frac){
+      var q = nb[k++], mb = /([+\u2212-]?)([0-9]+)([.,])([0-9]+)/.exec(q);
+      if (m === q) return m;
+      if (mb[4].length !== frac.length || frac.length < 2) { bad = true; return m; }
+      var va = (sign === "+" || !sign ? 1 : -1) * Number(whole + "." + frac), vb = (mb[1] === "+" || !mb[1] ? 1 : -1) * Number(mb[2] + "." + mb[4]);
+      var v = va + (vb - va) * t, d = frac.length - 1, r = Math.abs(v).toFixed(d);
+      var s = Number(r) === 0 ? "" : v < 0 ? (sign === "-" || mb[1] === "-" ? "-" : "\u2212") : sign === "+" || mb[1] === "+" ? "+" : "";
+      return s + r.replace(".", comma);
+    });
+    return bad ? near : out;
   }
   function pieceOf(given, value){  // the sweep of *given* whose piece of the domain holds *value* (or is nearest)
     var best = null, bd = Infinity;
@@ -962,9 +994,14 @@ LIVE_SCRIPT = r"""
     if (!L.checks || !L.checks.length) return;
     var k = 0, bd = Infinity;  // the nearest value the checks were swept at, in log10
     L.check_values.forEach(function(v, i){ var d = Math.abs(Math.log10(v) - u); if (d < bd) { bd = d; k = i; } });
+    // the value the numbers belong to, and, where the slider stands elsewhere, that it is the nearest one computed
+    // (a check's error is its point: a blend of two values' numbers would claim a check no one made)
+    var at = L.check_values[k], own = book(at) === book(Math.pow(10, u));
+    put(document.getElementById("live-at"), "(" + L.symbol + " = " + book(at) + (own ? ")" :
+        ": nächster berechneter Wert zu " + book(Math.pow(10, u)) + " / the nearest computed value to " +
+        String(Number(Math.pow(10, u).toPrecision(4))) + ")"));
     if (k === shownAt && L === shownL) { if (!dragging) fillStale(); return; }
     shownAt = k; shownL = L;
-    put(document.getElementById("live-at"), "(" + L.symbol + " = " + book(L.check_values[k]) + ")");
     var rows = L.checks[k];
     // the rows are made once (a rebuilt table is laid out anew, at the cost of a frame); their cells change
     while (rowsOf.length > rows.length) {

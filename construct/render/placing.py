@@ -112,6 +112,8 @@ class Placing:
         #: letters' own units, and the rules that set them there
         self.end_spots: dict[str, tuple[float, float, float]] = {}
         self.end_rules: list[str] = []
+        #: the end state's letters (and the plate's lettering) set touching one another, by pairs of ids
+        self.end_touching: set[frozenset[str]] = set()
         #: name tags: {point id: (dx, dy, distance in letter heights)}, and the levels each gives way at
         self.tag_spots: dict[str, tuple[float, float, float]] = {}
         self.tag_hidden: dict[str, str] = {}
@@ -347,30 +349,13 @@ class Placing:
         writes it, else beside it; the plate's *strokes* (canvas px: its ordinates) are kept clear of as its
         result lines are.  Sets :attr:`end_spots` and :attr:`end_rules`.
         """
-        st = self.style
-        size = st.label_size * letter
-        span = self.scene.bbox[2] - self.scene.bbox[0]
-        look = self.scene.end_look
-        dots = [self.vp.px(*m.geom) for m in marks if m.kind is MarkKind.POINT and "hidden" not in look(m).split()]
-        lines = list(strokes)
-        for m in marks:
-            if m.role == "result" and m.kind.stroked and "hidden" not in look(m).split():
-                pts = [self.vp.px(*q) for q in _polyline(m, self.vp.scale)]
-                lines.extend((a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:]))
-        items, prefer = [], {}
-        for fid, at, text in lettering:
-            items.append((fid, "result", 0, at, (0.0, 1.0), text))
-            prefer[fid] = (0.0, 0.35 * size, 0.0)
-        for m in marks:
-            if not m.label:
-                continue
-            p = self.vp.px(*m.geom)
-            items.append((m.id, m.role, m.step, p, label_offset_direction(m.geom, scale=span), m.label))
-            spot = self.spots.get(m.id)
-            if spot is not None:
-                prefer[m.id] = ((spot[0] - p[0]) * letter, (spot[1] - p[1]) * letter, spot[2])
-        got = place(items, size, dots, LineIndex(size, lines), font=st.label_font, italic=st.label_italic,
-                    taken=list(taken), keep=False, prefer=prefer, halo=HALO_PX / 2 * letter, reach=self.line_reach)
+        items, got, _, _ = self._end_place(self.vp, letter, marks, taken, lettering, strokes, lettered=True)
+        # the letters the placer set touching one another here (they may touch at another value too)
+        size = self.style.label_size * letter
+        boxes = [(mid, label_box(got[mid][0], got[mid][1], text, size, self.style.label_font, self.style.label_italic))
+                 for mid, _r, _s, _p, _d, text in items if mid in got]
+        self.end_touching = {frozenset((a, b)) for i, (a, p) in enumerate(boxes) for b, q in boxes[i + 1:]
+                             if _meet(p, q)}
         spots, rules = {}, []
         for mid, _r, _s, (px, py), _d, _t in items:
             spot = got.get(mid)
@@ -385,6 +370,92 @@ class Placing:
             rules.append(f".fin #{mid}-lb>.lb{{transform:scale(var(--ls,var(--zs,1))) "
                          f"translate({fmt(dx)}px,{fmt(dy)}px)}}")
         self.end_spots, self.end_rules = spots, rules
+
+    def end_lettering_at(self, vp: Viewport, letter: float, marks: Sequence[Mark],
+                         taken: Sequence[tuple[float, float, float, float]],
+                         lettering: Sequence[tuple[str, tuple[float, float], str]],
+                         strokes: Sequence[tuple[float, float, float, float]] = (),
+                         ) -> dict[str, tuple[float, float, float]]:
+        """The plate's *lettering* placed as :meth:`place_end` places it, at another value of a live given: its end
+        state's *marks*, *taken* boxes and *strokes* those of that value (drawn on *vp*), at the built end state's
+        *letter* scale (the page's there; a fresh build's end state keeps it too); the marks' own letters
+        stand where :attr:`end_spots` set them about their points (the live page moves them with their points, at
+        *letter*) and are kept clear of.  {id: (dx, dy, distance)} as :attr:`end_spots` has them, for the letters
+        that move: each stays where it stood at the built value unless it would lie there on another letter or on
+        the plate's other writing (the values the plate writes crowd as the figure changes: Tafel 2's inertia
+        pressures at L/r = 2 were written on one another where the built offsets were kept everywhere); those
+        are placed anew among the rest."""
+        st = self.style
+        size = st.label_size * letter
+        held = list(taken)
+        letters = {}
+        for m in marks:
+            rel = self.end_spots.get(m.id)
+            if m.label and rel is not None:
+                px, py = vp.px(*m.geom)
+                letters[m.id] = label_box(px + letter * rel[0], py + letter * rel[1], m.label, size, st.label_font,
+                                          st.label_italic)
+        # the crowd: the letters whose built spot here meets another letter (but one it touched at the built value
+        # too) or the plate's other writing
+        at = {fid: label_box(p[0] + letter * self.end_spots[fid][0], p[1] + letter * self.end_spots[fid][1], text,
+                             size, st.label_font, st.label_italic) for fid, p, text in lettering if fid in self.end_spots}
+        touching = self.end_touching
+        crowd = {f for f, b in at.items() if any(_meet(b, o) for o in held) or any(
+            g != f and frozenset((f, g)) not in touching and _meet(b, o) for g, o in [*at.items(), *letters.items()])}
+        if not crowd:
+            return {}
+        held += list(letters.values()) + [b for f, b in at.items() if f not in crowd]
+        lettering = [it for it in lettering if it[0] in crowd or it[0] not in at]
+        items, got, dots, lines = self._end_place(vp, letter, marks, held, lettering, strokes, lettered=False)
+        # a letter the crowd sends off beyond a leader's reach where the built one stood near (or the other way
+        # round) would change the plate's elements, which the page knows by their order: it stands as near as it
+        # is free of the other letters and points, crossing the lines if it must (they are soft for it)
+        lead = {fid for fid, _r, _s, _p, _d, _t in items if fid in got and fid in self.end_spots
+                and (got[fid][2] >= LEADER_FROM) != (self.end_spots[fid][2] >= LEADER_FROM)}
+        if lead:
+            others = [label_box(got[f][0], got[f][1], t, size, st.label_font, st.label_italic)
+                      for f, _r, _s, _p, _d, t in items if f in got and f not in lead]
+            got.update(place([it for it in items if it[0] in lead], size, dots, LineIndex(size, []),
+                             font=st.label_font, italic=st.label_italic, taken=held + others, keep=False,
+                             halo=HALO_PX / 2 * letter, reach=self.line_reach, soft=LineIndex(size, lines)))
+        return {fid: ((spot[0] - px) / letter, (spot[1] - py) / letter, spot[2])
+                for fid, _r, _s, (px, py), _d, _t in items if (spot := got.get(fid)) is not None}
+
+    def _end_place(self, vp: Viewport, letter: float, marks: Sequence[Mark],
+                   taken: Sequence[tuple[float, float, float, float]],
+                   lettering: Sequence[tuple[str, tuple[float, float], str]],
+                   strokes: Sequence[tuple[float, float, float, float]], *,
+                   lettered: bool) -> tuple[list, dict, list, list]:
+        """The end state's letters placed on *vp* (:meth:`place_end`; *lettered*: the marks' letters with the
+        plate's lettering, else the lettering alone, each first where :attr:`end_spots` set it): the items placed,
+        their spots, and the points and lines they keep clear of."""
+        st = self.style
+        size = st.label_size * letter
+        span = self.scene.bbox[2] - self.scene.bbox[0]
+        look = self.scene.end_look
+        dots = [vp.px(*m.geom) for m in marks if m.kind is MarkKind.POINT and "hidden" not in look(m).split()]
+        lines = list(strokes)
+        for m in marks:
+            if m.role == "result" and m.kind.stroked and "hidden" not in look(m).split():
+                pts = [vp.px(*q) for q in _polyline(m, vp.scale)]
+                lines.extend((a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:]))
+        items, prefer = [], {}
+        for fid, at, text in lettering:
+            items.append((fid, "result", 0, at, (0.0, 1.0), text))
+            # (first where the plate writes it; at another value, where it stood at the built one)
+            rel = None if lettered else self.end_spots.get(fid)
+            prefer[fid] = (0.0, 0.35 * size, 0.0) if rel is None else (rel[0] * letter, rel[1] * letter, rel[2])
+        for m in marks if lettered else ():
+            if not m.label:
+                continue
+            p = vp.px(*m.geom)
+            items.append((m.id, m.role, m.step, p, label_offset_direction(m.geom, scale=span), m.label))
+            spot = self.spots.get(m.id)
+            if spot is not None:
+                prefer[m.id] = ((spot[0] - p[0]) * letter, (spot[1] - p[1]) * letter, spot[2])
+        got = place(items, size, dots, LineIndex(size, lines), font=st.label_font, italic=st.label_italic,
+                    taken=list(taken), keep=False, prefer=prefer, halo=HALO_PX / 2 * letter, reach=self.line_reach)
+        return items, got, dots, lines
 
     def place_tags(self, views: Sequence[View], full: View,
                    input_steps: Callable[[int], frozenset[int]]) -> None:
@@ -459,6 +530,11 @@ class Placing:
         if zoom == 1.0 and q <= 1.0:
             return 1.0  # the whole figure as drawn on the canvas
         return min(max(1.0, 9.5 * q / self.style.label_size), q)
+
+
+def _meet(a: tuple[float, float, float, float], b: tuple[float, float, float, float]) -> bool:
+    """Whether two boxes (x0, y0, x1, y1) overlap."""
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
 
 def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:

@@ -273,15 +273,18 @@ class Measure:
         return [float(c) for c in view]
 
     def _furniture(self, items: tuple, vp: Any, exact: bool = True, owners: dict[str, int] | None = None,
-                   marks: Any = None) -> tuple[list, list[float], dict[str, str]]:
+                   marks: "Callable[[], Any] | None" = None) -> tuple[list, list[float], dict[str, str]]:
         """The end state's furniture *items* (the plate's, on the sheet's broken axis) drawn on *vp* (anything with
         ``px`` and ``scale``): its keys, numbers and texts (:func:`~construct.render.end_state.furniture_numbers`).
         Another value's furniture is drawn in the built one's form (:meth:`_aligned`): a built item it lacks (a
         scale's tick) drawn where the built figure has it, on this value's axes, and named among the texts as
         ``"#absent"`` (its elements' ids: the page hides them there); its lettering placed among that value's
-        end-state *marks* (:func:`~construct.render.end_state.end_lettering_at`: where it stood at the built value
-        where there is room, at the built end state's letter scale, which a fresh build there keeps too), or where
-        the built value's placing set it about its places without *marks*."""
+        end-state marks (*marks*: gives them; :func:`~construct.render.end_state.end_lettering_at`: where it stood
+        at the built value where there is room, at the built end state's letter scale, which a fresh build there
+        keeps too), or where the built value's placing set it about its places without *marks*.  The marks are
+        asked for only where the lettering at its built spots meets itself or the plate's other writing there: a
+        value's scene costs 80 ms, and a sweep asks thousands of values (every live player's plate has lettering;
+        few of them crowd it).  (So a value the points' letters alone would crowd keeps its built spot.)"""
         if self.end is None or not items:
             return [], [], {}
         absent: frozenset[int] = frozenset()
@@ -289,8 +292,11 @@ class Measure:
             items, absent = self._aligned(items)
         own: dict[str, int] = {} if owners is None else owners
         sheet = SimpleNamespace(end_furniture=items)
-        spots = None if marks is None or not any(isinstance(it, Lettering) for it in items) else \
-            end_lettering_at(sheet, marks, self.style, vp, self.end, self.placing, NUMBERS)
+        spots = None
+        if marks is not None and any(isinstance(it, Lettering) for it in items):
+            spots = end_lettering_at(sheet, (), self.style, vp, self.end, self.placing, NUMBERS)
+            spots = None if spots == self.placing.end_spots else \
+                end_lettering_at(sheet, marks(), self.style, vp, self.end, self.placing, NUMBERS)
         keys, nums, texts = furniture_numbers(end_furniture(sheet, self.style, vp, self.end, self.placing, NUMBERS,
                                                             own, spots), exact=exact)
         if absent:
@@ -381,9 +387,10 @@ class Measure:
         breaks = at_once.breaks_at(i)
         items = tuple(shifted(it, break_shift(breaks)) for it in p.furniture) if breaks else tuple(p.furniture)
         px, fx = at_once.px_of(i), extent(items)
-        # (the end state's marks there, which its lettering is placed among: a scene, 5 ms, where it has lettering)
-        marks = scene_for(self.construction, figure, ending=self.style.camera).end_drawn() \
-            if any(isinstance(it, Lettering) for it in items) else None
+        # (the end state's marks there, which its lettering is placed among: a scene, when _furniture asks)
+        def marks() -> Any:
+            return scene_for(self.construction, figure, ending=self.style.camera).end_drawn()
+
         # (its numbers unrounded: frames rounds every value's at once)
         return (*self._furniture(items, SimpleNamespace(px=px, scale=float(at_once.fit[i][2])), exact=False,
                                  marks=marks),
@@ -645,7 +652,7 @@ class Measure:
         for lk, ln in layers.values():
             keys += lk
             nums += ln
-        fk, fn, ft = self._furniture(scene.end_furniture, vp, marks=scene.end_drawn()) \
+        fk, fn, ft = self._furniture(scene.end_furniture, vp, marks=scene.end_drawn) \
             if self.furniture_live is not False else self.held
         keys += fk
         nums += fn

@@ -410,12 +410,12 @@ class _Browser:
         return getattr(self._browser, name)
 
     def new_page(self, viewport: dict[str, int] | None = None) -> _Tab:
-        if self._free:
-            page = self._free.pop()
-            page.set_viewport_size(viewport or _VIEWPORT)
-        else:
+        if not self._free:
             self._context = self._context or self._browser.new_context()
-            page = self._context.new_page(viewport=viewport or _VIEWPORT)
+            self._free.append(self._context.new_page())
+        page = self._free.pop()
+        page.set_viewport_size(viewport or _VIEWPORT)
+        page.bring_to_front()  # (a page behind another one gets an animation frame a second)
         return _Tab(self, page)
 
 

@@ -28,8 +28,8 @@ import numpy as np
 
 from ..constructions import Construction
 from ..figure import Figure
-from ..render.camera import (FINAL_CONTEXT, MAX_ZOOM, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, clip_view, level,
-                             player_letter_scale, zoom_of)
+from ..render.camera import (FINAL_CONTEXT, MAX_ZOOM, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, clip_view, framed_rows,
+                             level, player_letter_scale, step_focus_names, step_shots, zoom_of)
 from ..render.end_state import NumbersFactory, end_furniture, end_letter_boxes, end_lettering_at, furniture_numbers
 from ..render.output import scene_for
 from ..render.insets import inset_details
@@ -133,6 +133,9 @@ class Measure:
         for j, ids in enumerate(self.framed):
             if not ids:  # another step that draws nothing of its own: carried with the marks inside its view
                 self.framed[j] = _inside(scene, drawing.vp, self.views[j])
+        #: the views framed anew at every value as the camera frames their shots (:meth:`_framing`): by the view's
+        #: index, the most it magnifies and how the built view stands to the camera's framing of its marks
+        self.framing = self._framing(scene, drawing)
         #: the areas between curves: drawn by the page from the curves that bound them (:func:`areas_of`)
         self.areas = areas_of(built.protocol, scene)
         #: the steps whose current mark is ringed (small on the screen at the built value), by their index, and
@@ -193,6 +196,66 @@ class Measure:
         of = lambda m: m.name[:-3] if m.id.endswith("-at") and m.name.endswith(".at") else m.name  # noqa: E731
         self.readings = {f"{m.id}-label": readings[of(m)] for m in scene.marks if of(m) in readings and m.label}
         self.texts = {k: v for k, v in texts.items() if k not in self.readings}  # the same at every value
+
+    def _framing(self, scene: Any, drawing: Any) -> dict[int, tuple[float, float, float, float]]:
+        """The views framed at every value as the camera frames a shot there (:func:`~construct.render.camera.
+        step_views`: round the working regions of its steps, :func:`~construct.render.camera.step_focus_names`),
+        the shots and their magnification the built value's: {view j: (the most it magnifies, s, ox, oy)}, the
+        marks that set it in :attr:`framed` (their box is the shot's region).  The built view is that framing
+        grown s times about its centre moved (ox, oy) times its width (letters its window would cut, name tags:
+        :func:`~construct.render.edges.clear_edges`), which is kept at every value.  (The camera's own choice of
+        shots at another value is not made: 40 ms a value.)  The end view is framed by :meth:`_end_view`, a view
+        whose steps are shown whole or that no mark of theirs sets is carried (:meth:`_carried`)."""
+        by_name = {m.name: m.id for m in scene.marks}
+        names = step_focus_names(scene)
+        ids = [[by_name[n] for n in ns] for ns in names]
+        boxes = self._boxes(scene, drawing.vp, ids)
+        full = drawing.full_view
+        most: dict[int, float] = {}
+        for first, last, z in step_shots(scene, Framing(full), drawing.vp.px, boxes):
+            for k in range(first, last + 1):
+                j = self.view_of[k - 1]
+                if j >= 0:
+                    most[j] = max(most.get(j, 0.0), z)  # (0.0: shown whole)
+        end = self._end[0] if self._end is not None else None
+        out = {}
+        for j, z in most.items():
+            marks = list(dict.fromkeys(i for k, w in zip(self.steps, self.view_of) if w == j for i in ids[k - 1]))
+            if j == end or not z or not marks:
+                continue
+            box = self._boxes(scene, drawing.vp, [marks])[0]
+            f = framed_rows(np.asarray(box, dtype=float)[:, None], full[2], full[3], z)[:, 0]
+            if f[2] >= full[2] and f[3] >= full[3]:  # (the camera frames the whole figure: no shot of its own)
+                continue
+            v = self.views[j]
+            out[j] = (z, v[2] / f[2], (v[0] + v[2] / 2 - f[0] - f[2] / 2) / f[2], (v[1] + v[3] / 2 - f[1] - f[3] / 2) / f[2])
+            self.framed[j] = marks
+        return out
+
+    def _framed_views(self, box: np.ndarray, W: np.ndarray, H: np.ndarray, out: np.ndarray) -> np.ndarray:
+        """*out* (the views x (x, y, w, h) x values of :meth:`_carried_rows`) with the views of :attr:`framing`
+        framed round their marks' boxes *box* (x0, y0, x1, y1 x views x values) on pages W x H: the camera's
+        framing of each value grown and moved as the built view is grown and moved from the built one's."""
+        if not self.framing:
+            return out
+        js = list(self.framing)
+        z, s, ox, oy = (np.asarray(c, dtype=float)[:, None] for c in zip(*self.framing.values()))
+        f = framed_rows(box[:, js], W, H, z)
+        w, h = f[2] * s, f[3] * s
+        vw, vh = np.minimum(w, W), np.minimum(h, H)
+        x = np.clip(f[0] + f[2] / 2 + ox * f[2] - vw / 2, 0.0, W - vw)
+        y = np.clip(f[1] + f[3] / 2 + oy * f[2] - vh / 2, 0.0, H - vh)
+        whole = (f[2] >= W) & (f[3] >= H) | np.isnan(box[0, js])
+        moved = np.stack([np.round(c, 2) + 0.0 for c in (x, y, vw, vh)], axis=1)
+        kept = (s == 1.0) & (ox == 0.0) & (oy == 0.0)
+        out[js] = np.where(whole[:, None], out[-1][None], np.where(kept[:, None], f.transpose(1, 0, 2), moved))
+        # (the built value: the camera's own view, to the hundredth -- a sweep's box and a scene's differ in the last
+        # bits, a view's rounding with them)
+        b0 = np.asarray([self.boxes[j] for j in js], dtype=float).T[:, :, None]
+        with np.errstate(invalid="ignore"):
+            built = (np.abs(box[:, js] - b0) < 1e-6).all(axis=0)
+        out[js] = np.where(built[:, None], np.asarray([self.views[j] for j in js], dtype=float)[:, :, None], out[js])
+        return out
 
     def _end_of(self, scene: Any, drawing: Any) -> tuple[int, tuple, tuple, list] | None:
         """:attr:`_end` of the built figure: the end view's index j, the box of what the end state draws
@@ -517,7 +580,8 @@ class Measure:
             box[:, boxed] = (*px(least(ends[0], starts, axis=0), most(ends[3], starts, axis=0)),
                              *px(most(ends[1], starts, axis=0), least(ends[2], starts, axis=0)))
         views = len(self.framed)
-        carried = self._carried_rows(box[:, :views], boxed[:views], width, height)  # (views + 1) x 4 x values
+        carried = self._framed_views(box[:, :views], width, height,  # (views + 1) x 4 x values
+                                     self._carried_rows(box[:, :views], boxed[:views], width, height))
         if self._end is not None:  # the end view: framed at every value (the end state's own marks boxed too; the
             # furniture's box and the letters it writes where each value is read, below)
             j_end = self._end[0]
@@ -659,6 +723,11 @@ class Measure:
         texts.update(ft)
         boxes = self._boxes(scene, vp)
         carried = [self._carried(j, box, full) for j, box in enumerate(boxes)] + [list(full)]  # [-1]: the whole
+        if self.framing:
+            b = np.asarray([bx if bx is not None else (np.nan,) * 4 for bx in boxes], dtype=float).reshape(-1, 4).T
+            rows = np.asarray(carried, dtype=float)[:, :, None]
+            W, H = np.asarray([full[2]]), np.asarray([full[3]])
+            carried = self._framed_views(b[:, :, None], W, H, rows)[:, :, 0].tolist()
         if self._end is not None:
             carried[self._end[0]] = self._end_view(end_box(scene, vp.px, self.furniture_live is not False), full,
                                                    np.asarray(nums, dtype=float), texts.get("#absent", ""))

@@ -1445,8 +1445,9 @@ def test_the_values_the_plate_writes_belong_to_the_sliders_value(browser):
     """Tafel 2's end state writes each inertia pressure to three decimals.  Between the grid values the page holds,
     the nearer one's +0,748 stood for a fresh replay's +0,746 at L/r 2, three digits claimed, the last one wrong:
     each value written now belongs to the value the slider shows to the digits written (a fresh replay's value
-    there, itself good to half a unit of its third decimal, within half a unit of the last digit written), and at
-    the book's value every value has its three decimals."""
+    there, itself good to half a unit of its third decimal, within half a unit of the last digit written), every
+    value with the same decimals (a plate writes its numbers alike: not +1,50 beside +0,093), and at the book's
+    value every value has its three decimals."""
     path = REPO / "gallery" / "inertia-stroke-fractions-rod-ratio-5" / "teaching" / "player.html"
     if not path.is_file():
         pytest.skip("no committed gallery in this checkout")
@@ -1460,6 +1461,7 @@ def test_the_values_the_plate_writes_belong_to_the_sliders_value(browser):
                  if e.tag.endswith("text") and (e.get("id") or "").startswith("fin-")
                  and "halo" not in (e.get("class") or "").split() and re.fullmatch(r"[+\u2212-]?[0-9]+,[0-9]+", "".join(e.itertext()).strip())]
         assert len(shown) == len(fresh) == 11, (v, shown, fresh)
+        assert len({d for _, d in shown}) == 1, f"L/r = {v}: the plate writes {sorted({d for _, d in shown})} decimals"
         for (x, d), (want, _) in zip(shown, fresh):
             assert abs(x - want) <= 0.5 * 10.0 ** -d + 0.0005 + 1e-9, f"L/r = {v}: {x} written for {want}"
     _drag_to(page, "rod_ratio", 5.0)

@@ -36,6 +36,8 @@ from __future__ import annotations
 import math
 from typing import Any, Callable, Sequence
 
+import numpy as np
+
 from .scene import MarkKind, Scene, extreme_points
 from .svgdoc import fmt
 
@@ -543,14 +545,11 @@ def framed_rows(box: Sequence, W: Any, H: Any, max_zoom: Any, context: float = C
     regions *box* (x0, y0, x1, y1, each an array) of canvases *W* x *H* px, each magnifying at most *max_zoom*
     (a live page frames a step at every value of a sweep at once); the whole canvas where a region is NaN.
 
-    >>> import numpy as np
     >>> b, full = (100.0, 80.0, 180.0, 140.0), (0.0, 0.0, 960.0, 700.0)
     >>> framed_rows(np.asarray(b)[:, None], np.asarray([960.0]), np.asarray([700.0]), 4.0)[:, 0].tolist() == \\
     ...     list(Framing(full).view(b, max_zoom=4.0))
     True
     """
-    import numpy as np
-
     x0, y0, x1, y1 = (np.asarray(c, dtype=float) for c in box)
     W, H, most = (np.asarray(c, dtype=float) for c in (W, H, max_zoom))
     aspect = window[1] / window[0]

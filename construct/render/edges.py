@@ -111,8 +111,8 @@ def clear_edges_rows(view: Any, W: Any, H: Any, letters_at: Callable[[int], tupl
             vx = np.minimum(np.maximum(cx[i] - vw / 2, 0.0), W[i] - vw)
             vy = np.minimum(np.maximum(cy[i] - vh / 2, 0.0), H[i] - vh)
             q = np.maximum(vw / ww, vh / wh)
-            zz = whole[i] / np.maximum(q, 1e-12)
-            ls = np.minimum(np.maximum(1.0, 9.5 * q * zz / ZOOM_LEVELS[at] / 12.0), q * zz / ZOOM_LEVELS[at])
+            t = whole[i] / ZOOM_LEVELS[at]  # (q times the view's zoom: player_letter_scale(t) over arrays)
+            ls = np.minimum(np.maximum(1.0, 9.5 * t / 12.0), t)
             hw, hh = ww * q / 2, wh * q / 2
             mx, my = vx + vw / 2, vy + vh / 2
             with np.errstate(invalid="ignore"):

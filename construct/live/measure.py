@@ -91,11 +91,12 @@ class Measure:
 
     The marks are drawn by the drawing's own code (:func:`~construct.render.svg.mark_geometry`) on the
     drawing's own fit to the view.  Letters are not placed: the page moves them with their points.  Each
-    step's camera view is the built value's view carried along with the marks it frames: the box of the
-    marks of the steps it shows moves and grows or shrinks, and the view with it (its room round them kept
-    in proportion, cut to the canvas as the camera cuts it, never past the camera's greatest magnification).
-    The camera's own choice at another value is not computed (it places every letter of the figure, 0.2 to
-    0.5 s a value); a teacher who moves the rod ratio keeps the shots of the book's figure.  The end step's
+    step's camera view is framed at every value as the camera frames its shot there (:meth:`_framing`: round
+    the working regions of the shot's steps as drawn there, widened for the letters its window would cut where
+    the page writes them); the shots themselves and how far each may magnify are the built value's (the
+    camera's choice of shots costs 40 ms a value, and a teacher who moves the rod ratio keeps the shots of the
+    book's figure).  A view no mark of its steps sets is carried along with the marks it shows (:meth:`_carried`:
+    it moves and grows or shrinks with their box, cut to the canvas as the camera cuts it).  The end step's
     view, the finished figure, is framed at every value as the camera frames the end state there (its marks,
     the plate's furniture and the letters the page writes beside them: :meth:`_end_view`), as a fresh build
     frames it where its letters stand where the book's value's stand.  A sweep's values are measured together

@@ -256,9 +256,9 @@ class Measure:
             return f
         n, size = f.shape[1:]
 
-        def letters_at(lvl: int) -> tuple:
+        def letters_at(lvl: int, i: np.ndarray) -> tuple:  # (the views' columns i: view after view, of the values)
             x, y = at[lvl]
-            return np.tile(x, (1, n)), np.tile(y, (1, n)), self.edge_letters[lvl][1]
+            return x[:, i % size], y[:, i % size], self.edge_letters[lvl][1]
 
         return clear_edges_rows(f.reshape(4, -1), np.tile(W, n), np.tile(H, n), letters_at).reshape(4, n, size)
 

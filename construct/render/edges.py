@@ -75,15 +75,15 @@ def clear_edges(views: list[View], full: View, letters_at: Letters) -> list[View
     return out
 
 
-def clear_edges_rows(view: Any, W: Any, H: Any, letters_at: Callable[[int], tuple[Any, Any, Any]]) -> Any:
+def clear_edges_rows(view: Any, W: Any, H: Any, letters_at: Callable[[int, Any], tuple[Any, Any, Any]]) -> Any:
     """:func:`clear_edges` over arrays: the views *view* (x, y, w, h: 4 x n) of canvases *W* x *H* (n each: a
     live page's step at every value of a sweep), each widened until its window cuts no letter.  *letters_at*: the
-    letters a zoom level shows at every value, (x, y: letters x n, their boxes less x, y: letters x 4); a
-    letter at NaN is not there.
+    letters a zoom level shows with the views of the given indices, (x, y: letters x indices, their boxes less x,
+    y: letters x 4); a letter at NaN is not there.
 
     >>> full = (0.0, 0.0, 998.0, 630.0)
     >>> row = np.array([[500.0, 150.0, -10.0, -6.0, 10.0, 6.0]])
-    >>> at = lambda lvl: (row[:, :1], row[:, 1:2], row[:, 2:])
+    >>> at = lambda lvl, i: (row[:, :1], row[:, 1:2], row[:, 2:])
     >>> v = (0.0, 0.0, 499.0, 315.0)
     >>> tuple(clear_edges_rows(np.array(v)[:, None], np.array([998.0]), np.array([630.0]), at)[:, 0]) == \\
     ...     clear_edges([v], full, lambda lvl: row)[0]
@@ -106,7 +106,7 @@ def clear_edges_rows(view: Any, W: Any, H: Any, letters_at: Callable[[int], tupl
         g = np.ones(len(z))
         for at in np.unique(lvl[going]):
             i = np.flatnonzero(going & (lvl == at))
-            px, py, box = letters_at(int(at))
+            px, py, box = letters_at(int(at), i)
             vw, vh = np.minimum(w[i], W[i]), np.minimum(h[i], H[i])  # (clip_view: where the view will stand)
             vx = np.minimum(np.maximum(cx[i] - vw / 2, 0.0), W[i] - vw)
             vy = np.minimum(np.maximum(cy[i] - vh / 2, 0.0), H[i] - vh)
@@ -116,8 +116,8 @@ def clear_edges_rows(view: Any, W: Any, H: Any, letters_at: Callable[[int], tupl
             hw, hh = ww * q / 2, wh * q / 2
             mx, my = vx + vw / 2, vy + vh / 2
             with np.errstate(invalid="ignore"):
-                x0, y0 = px[:, i] + ls * box[:, :1] - mx, py[:, i] + ls * box[:, 1:2] - my
-                x1, y1 = px[:, i] + ls * box[:, 2:3] - mx, py[:, i] + ls * box[:, 3:4] - my
+                x0, y0 = px + ls * box[:, :1] - mx, py + ls * box[:, 1:2] - my
+                x1, y1 = px + ls * box[:, 2:3] - mx, py + ls * box[:, 3:4] - my
                 meet = (x0 < hw) & (x1 > -hw) & (y0 < hh) & (y1 > -hh)
                 cut = meet & ((x0 < -hw) | (x1 > hw) | (y0 < -hh) | (y1 > hh))
                 need = np.maximum(np.where(cut, np.maximum(-x0, x1), -np.inf).max(axis=0, initial=-np.inf) / hw,

@@ -37,16 +37,20 @@ NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
 VALUES = (1.07, 1.9, 3.3, 4.37, 5.55, 7.1, 23.0, 410.0)
 
 
+def _crank_live(tmp_path_factory, parts: int):
+    """The page of the crank of *parts* parts built at L/r = 5 with its live rod-ratio slider."""
+    c = get("crank")
+    fig = c.figure(parts=parts, rod_ratio=5.0)
+    out = tmp_path_factory.mktemp(f"crank{parts}")
+    write_replay(c, fig, out, style="teaching", frames="none")
+    page = out / "live.html"
+    page.write_text(with_live((out / "player.html").read_text(), live_data(live_sweep(c, fig, "rod_ratio"))))
+    return page
+
+
 @pytest.fixture(scope="module")
 def live_player(tmp_path_factory):
-    c = get("crank")
-    fig = c.figure(parts=3, rod_ratio=5.0)
-    out = tmp_path_factory.mktemp("live")
-    write_replay(c, fig, out, style="teaching", frames="none")
-    live = live_sweep(c, fig, "rod_ratio")
-    page = out / "live.html"
-    page.write_text(with_live((out / "player.html").read_text(), live_data(live)))
-    return c, {}, page
+    return get("crank"), {}, _crank_live(tmp_path_factory, 3)
 
 
 def _open(browser, path):
@@ -1309,14 +1313,7 @@ def test_the_values_the_plate_writes_stay_clear_of_one_another_while_dragging(br
             assert min(over) <= 1.0, f"L/r = {v}: {a[0]} and {b[0]} overlap by {over[0]:.1f} x {over[1]:.1f} px"
 @pytest.fixture(scope="module")
 def crank6_live(tmp_path_factory):
-    """The crank of 6 parts built at L/r = 5 with its live rod-ratio slider."""
-    c = get("crank")
-    fig = c.figure(parts=6, rod_ratio=5.0)
-    out = tmp_path_factory.mktemp("crank6")
-    write_replay(c, fig, out, style="teaching", frames="none")
-    path = out / "live.html"
-    path.write_text(with_live((out / "player.html").read_text(), live_data(live_sweep(c, fig, "rod_ratio"))))
-    return path
+    return _crank_live(tmp_path_factory, 6)
 
 
 @pytest.mark.parametrize("k, v", [(30, 1.3), (46, 40.0)])

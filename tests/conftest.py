@@ -368,9 +368,61 @@ def _browser_unavailable(reason: str):
     pytest.skip(reason)
 
 
+#: Playwright's window when a test names none (its own default)
+_VIEWPORT = {"width": 1280, "height": 720}
+
+
+class _Tab:
+    """A page of :class:`_Browser`'s: Playwright's ``Page`` (every attribute is the page's), except that ``on``
+    keeps what it registers and ``close`` hands the page back -- its handlers removed, its document left for an
+    empty one -- instead of closing it."""
+
+    def __init__(self, owner: "_Browser", page: Any):
+        self._owner, self._page, self._handlers = owner, page, []
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._page, name)
+
+    def on(self, event: str, handler: Callable) -> None:
+        self._handlers.append((event, handler))
+        self._page.on(event, handler)
+
+    def close(self) -> None:
+        for event, handler in self._handlers:
+            self._page.remove_listener(event, handler)
+        self._handlers.clear()
+        self._page.goto("about:blank")  # (the document's frames and timers end here, not in the next test)
+        self._owner._free.append(self._page)
+
+
+class _Browser:
+    """The session's browser, whose ``new_page`` hands out the pages closed before (:class:`_Tab`): a new page of
+    a browser is a new context and a new renderer process, about 0.6 s of Chromium's CPU before its document is
+    read (a reused page navigated to the next document: 0.25 s for a small player, measured), and the browser
+    tests open some 60 pages.  A new document starts the page's scripts afresh (the player and the site keep
+    nothing in the browser's storage); what a test opened and did not close (it failed) is not handed out again.
+    ``new_context`` and the rest: the browser's own."""
+
+    def __init__(self, browser: Any):
+        self._browser, self._context, self._free = browser, None, []
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._browser, name)
+
+    def new_page(self, viewport: dict[str, int] | None = None) -> _Tab:
+        if not self._free:
+            self._context = self._context or self._browser.new_context()
+            self._free.append(self._context.new_page())
+        page = self._free.pop()
+        page.set_viewport_size(viewport or _VIEWPORT)
+        page.bring_to_front()  # (a page behind another one gets an animation frame a second)
+        return _Tab(self, page)
+
+
 @pytest.fixture(scope="session")
 def browser():
-    """Debian's chromium driven by Playwright (.ci/install-browser.sh); skipped without them, except in CI."""
+    """Debian's chromium driven by Playwright (.ci/install-browser.sh); skipped without them, except in CI.  Its
+    pages are reused (:class:`_Browser`)."""
     try:
         from playwright.sync_api import sync_playwright
     except ImportError:
@@ -379,5 +431,5 @@ def browser():
         _browser_unavailable("chromium is not installed (.ci/install-browser.sh)")
     with sync_playwright() as pw:
         b = pw.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
-        yield b
+        yield _Browser(b)
         b.close()

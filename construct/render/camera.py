@@ -158,30 +158,8 @@ def _grow(b: Box | None, x: float, y: float) -> Box:
 
 def step_focus(scene: Scene) -> list[Box | None]:
     """Per step, the box of where it works: its own marks, the points its instrument is set on and the points
-    its caption names (:meth:`Scene.named`).
-
-    Lines are left out of the marks: a line is drawn as far as all the points the
-    whole construction ever marks on it (the stroke line reaches the far
-    crossheads); its defining points are the step's inputs and count.  A curve the
-    step cuts counts by the point the cut makes, not by its whole extent.
-    """
-    drawn = {m.name: m for m in scene.marks}
-    out: list[Box | None] = []
-    for s in scene.steps:
-        b: Box | None = None
-        for n in s.outputs:
-            m = drawn.get(n)
-            if m is not None and m.kind is not MarkKind.SEGMENT:
-                for x, y in extreme_points(m):
-                    b = _grow(b, x, y)
-        # the points its instrument is set on, and those its caption names: the student looks for them too,
-        # and a caption names only what the view shows
-        for n in set(s.inputs) | scene.named(s.index):
-            m = drawn.get(n)
-            if m is not None and m.kind is MarkKind.POINT:
-                b = _grow(b, *m.geom)
-        out.append(b)
-    return out
+    its caption names (:attr:`Scene.focus`, worked out once per scene: the camera and the insets ask for it)."""
+    return list(scene.focus)
 
 
 def _union(a: Box | None, b: Box | None) -> Box | None:

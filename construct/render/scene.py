@@ -110,7 +110,7 @@ class Scene(StepInputs):
         def grow(b, x: float, y: float):
             return (x, y, x, y) if b is None else (min(b[0], x), min(b[1], y), max(b[2], x), max(b[3], y))
 
-        drawn = {m.name: m for m in self.marks}
+        drawn = self.marks_by_name
         out = []
         for s in self.steps:
             b = None

@@ -41,8 +41,8 @@ from typing import Iterable, Iterator
 from ...render.lettering import segment_meets_box
 from . import plates
 from .sheet import Box, Sheet
-from .views import (MIN_OPACITY, Runs, Views, all_views, both_runs, boxes_meet, in_runs, merge_runs, runs_outside, steps_of,
-                    view_total)
+from .views import (MIN_OPACITY, Runs, Views, all_views, both_runs, boxes_meet, in_runs, merge_runs, runs_outside,
+                    steps_of, view_total)
 
 __all__ = ["Finding", "KINDS", "check_sheet", "view_count", "MIN_LABEL_PX", "MIN_MARK_PX", "MIN_OPACITY", "VIEW"]
 

@@ -97,37 +97,6 @@ class Scene(StepInputs):
         """Is mark *m*, one the end state draws (:meth:`end_drawn`), seen there (its end look not hidden)?"""
         return "hidden" not in self.end_look(m).split()
 
-    @functools.cached_property
-    def focus(self) -> "tuple[tuple[float, float, float, float] | None, ...]":
-        """Per step, the box (x0, y0, x1, y1, figure units) of where it works: its own marks, the points its
-        instrument is set on and the points its caption names (:meth:`named`); None where it marks nothing.
-
-        Lines are left out of the marks: a line is drawn as far as all the points the
-        whole construction ever marks on it (the stroke line reaches the far
-        crossheads); its defining points are the step's inputs and count.  A curve the
-        step cuts counts by the point the cut makes, not by its whole extent.
-        """
-        def grow(b, x: float, y: float):
-            return (x, y, x, y) if b is None else (min(b[0], x), min(b[1], y), max(b[2], x), max(b[3], y))
-
-        drawn = self.marks_by_name
-        out = []
-        for s in self.steps:
-            b = None
-            for n in s.outputs:
-                m = drawn.get(n)
-                if m is not None and m.kind is not MarkKind.SEGMENT:
-                    for x, y in extreme_points(m):
-                        b = grow(b, x, y)
-            # the points its instrument is set on, and those its caption names: the student looks for them too,
-            # and a caption names only what the view shows
-            for n in set(s.inputs) | self.named(s.index):
-                m = drawn.get(n)
-                if m is not None and m.kind is MarkKind.POINT:
-                    b = grow(b, *m.geom)
-            out.append(b)
-        return tuple(out)
-
     def readable(self, text: str, lang: str = "de", outputs: tuple[str, ...] = ()) -> str:
         """*text* in the figure's letters (:class:`construct.render.captions.Reader`).
 

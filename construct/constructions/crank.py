@@ -86,7 +86,7 @@ def build_crank(*, rod_ratio: float, parts: int, method: str, r: float) -> Figur
     infinite_rod(b, f, points)
     crank_and_rod(b, f, points)
     proto = b.protocol()
-    return Figure(proto, proto.replay(givens))
+    return Figure(proto, b.replay(proto, givens))
 
 
 def crank_position(n: int) -> int:
@@ -330,7 +330,7 @@ def build_crank_angle(*, rod_ratio: float, divisions: int, r: float) -> Figure:
                                en=f"crank O{j}, its angle ω{j} measured")
                     b.set_label(f"OW{j}", f"{{∠{f['D0']} {f['O']} {W}}}")
     proto = b.protocol()
-    return Figure(proto, proto.replay(givens))
+    return Figure(proto, b.replay(proto, givens))
 
 
 def inverse_tolerance(x: float) -> float:

@@ -148,7 +148,7 @@ def build_effective_work(*, efficiency: float, **tangential: Any) -> Figure:
         b.planimeter("P.deficit.end", "deficit.end", de="Planimeter: FC", en="planimeter: FC")
         b.planimeter("P.deficit.start", "deficit.start", de="Planimeter: ODP", en="planimeter: ODP")
     proto = b.protocol()
-    return Figure(proto, proto.replay(dict(b.givens)))
+    return Figure(proto, b.replay(proto))
 
 
 def planimetered(fig: Figure, area: str) -> float:

@@ -145,7 +145,7 @@ def build_flywheel_rim(*, r: float, b1: float, rim: float) -> Figure:
         b.area_between("rimsection", "rim0", "rim2", "rim.J1", "rim.K1", hatch_deg=135.0, role="result",
                        de="Kranz im Schnitt", en="the rim in section")
     proto = b.protocol()
-    return Figure(proto, proto.replay(givens))
+    return Figure(proto, b.replay(proto, givens))
 
 
 def disc_half_width(fig: Figure, point: str) -> float:

@@ -108,7 +108,7 @@ def build_indicator(*, r: float, filling: float, clearance: float, admission: fl
         b.french_curve("compression", base, comp_pts, {i: t for i, t in comp_tan.items() if t},
                      de="Kompressionslinie (Hyperbel) mit dem Curvenlineal", en="compression line (hyperbola), French curve")
     proto = b.protocol()
-    return Figure(proto, proto.replay(givens))
+    return Figure(proto, b.replay(proto, givens))
 
 
 # --------------------------------------------------------------------------
@@ -312,7 +312,7 @@ def build_indicator_card(*, r: float, pressure_unit: float, divisions: int, indi
                 b.intersect(f"{tag}{k}", o, line, rule=up, role="result", de=f"Druck {what[0]} bei {k}/{n}",
                             en=f"pressure, {what[1]}, at {k}/{n}")
     proto = b.protocol()
-    return Figure(proto, proto.replay(givens))
+    return Figure(proto, b.replay(proto, givens))
 
 
 def card_checks(fig: Figure) -> list[Check]:

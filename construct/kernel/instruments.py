@@ -36,6 +36,8 @@ from .errors import DuplicateName, InvalidParameter, RuleError, StepError, Unkno
 from .protocol import (EXACT, GIVEN, ROLES, TOOLS, Caption, Protocol, Provenance, Replay, Step, compile_step,
                        run_step)
 from .numeric import as_float, shown
+from .geometry import SCALAR
+from .replay import sweep_givens
 from .rules import Rule, as_rule
 from .composite import CompositeSteps
 
@@ -421,6 +423,32 @@ class Builder(CompositeSteps):
         steps = tuple(self.steps[:self._taken_over]) + tuple(lettered[self._taken_over:])
         params["captions"] = "letters"  # read once: a second reading would take a letter (S1) for a name
         return Protocol(self.construction, MappingProxyType(params), steps, self.replayable)
+
+    def replay(self, protocol: Protocol, givens: Mapping[str, Any] | None = None) -> Replay:
+        """*protocol* (this builder's, from :meth:`protocol`) replayed at *givens* (default: the build's own).
+
+        At the build's own givens the replay is what the build made: each step was evaluated as it was recorded,
+        by the op function a replay runs (:meth:`record`), so the objects are the replay's to the bit and the
+        steps are not compiled and run a second time (half the piston-force line's build).  At other givens, or
+        of another protocol, it is :meth:`Protocol.replay`.
+
+        >>> b = Builder("demo", givens={"s": 2.0})
+        >>> _ = b.given_point("A", 0.0, 0.0); _ = b.given_length("s", product=("s",))
+        >>> _ = b.circle_radius("k", "A", "s")
+        >>> p = b.protocol()
+        >>> dict(b.replay(p)) == dict(p.replay()), b.replay(p, {"s": 3.0})["k"].radius
+        (True, 3.0)
+        """
+        own, _ = sweep_givens(self.givens)
+        if givens is not None:
+            asked, xp = sweep_givens(dict(givens))
+            if xp is not SCALAR or asked != own:
+                return protocol.replay(givens)
+        if (protocol.construction != self.construction or len(protocol.steps) != len(self.steps)
+                or dict(protocol.params.get("givens", {})) != dict(self.givens)
+                or len(self.objects) != sum(len(s.outputs) for s in self.steps)):
+            return protocol.replay(givens)
+        return Replay(protocol, dict(self.objects), own)
 
     # -- givens ----------------------------------------------------------------
     def given_point(self, name: str, x: float, y: float, *, unit: str | None = None,

@@ -283,7 +283,7 @@ def build_four_stroke(*, engine: str, rod_ratio: float, parts: int, method: str,
         _readings_and_over_pressure(b, f, engine, givens, upper, n, ords, feet, a, c, comp, exp_, fpt, gpt, early,
                                     suction_line, exhaust_line)
     proto = b.protocol()
-    return Figure(proto, proto.replay(givens))
+    return Figure(proto, b.replay(proto, givens))
 
 
 def _readings_and_over_pressure(b: Builder, f: Mapping[str, str], engine: str, givens: Mapping[str, float],

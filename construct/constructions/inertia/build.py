@@ -125,7 +125,7 @@ def build_inertia(*, rod_ratio: float, parts: int, method: str, r: float, pressu
                 _lay_off(b, c, str(k), f"X{k}", V, {0: "q1", n: "q2"}.get(k))
     _characteristic(b, c, n)
     proto = b.protocol()
-    return Figure(proto, proto.replay(givens))
+    return Figure(proto, b.replay(proto, givens))
 
 
 def _characteristic(b: Builder, c: _Ctx, n: int) -> None:

@@ -103,7 +103,7 @@ def build_q_at_stroke_fractions(*, rod_ratio: float, divisions: int, r: float = 
             ordinate_value(b, c, f"t{j}", P, kind, dc_p, None, number=str(j))
             b.set_label(f"Vt{j}", lowered(f"q{j}"))
     proto = b.protocol()
-    return Figure(proto, proto.replay(givens))
+    return Figure(proto, b.replay(proto, givens))
 
 
 def stroke_fractions_form(replay: Any, params: Mapping[str, Any]) -> np.ndarray:

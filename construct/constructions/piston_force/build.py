@@ -233,7 +233,7 @@ def build_piston_force(*, parts: int, method: str, revolution: bool = False, ind
     if revolution:
         _curves(b, n, "rbase", prefix="r", forward=False, smooth=cards is not None)
     proto = b.protocol()
-    return Figure(proto, proto.replay(givens))
+    return Figure(proto, b.replay(proto, givens))
 
 
 def _side_scales(b: Builder, c: OrdinateFrame) -> dict[str, Any]:

@@ -322,7 +322,7 @@ def build_tangential(*, rod_ratio: float, parts: int, method: str, r: float, for
     else:
         _unrolled(b, f, points, n, heights)
     proto = b.protocol()
-    return Figure(proto, proto.replay(givens))
+    return Figure(proto, b.replay(proto, givens))
 
 
 def _card_marks(b: Builder, f: Mapping[str, str], cover: Any, crank: Any, scale: str, k: int,

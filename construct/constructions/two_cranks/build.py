@@ -468,7 +468,7 @@ def build_two_cranks(*, rod_ratio: float, infinite_rod: bool, parts: int, method
                                        f"lower --magnify or the fluctuation")
     b.params["plate"] = _plate_patterns(infinite_rod, n)
     proto = b.protocol()
-    return Figure(proto, proto.replay(givens))
+    return Figure(proto, b.replay(proto, givens))
 
 
 def _ahead(b: Builder, a: str, c: str) -> float:

@@ -41,8 +41,8 @@ from typing import Iterable, Iterator
 from ...render.lettering import segment_meets_box
 from . import plates
 from .sheet import Box, Sheet
-from .views import (MIN_OPACITY, Runs, Views, both_runs, boxes_meet, in_runs, merge_runs, runs_outside, steps_of,
-                    view_total)
+from .views import (MIN_OPACITY, Runs, Views, all_views, both_runs, boxes_meet, in_runs, merge_runs, runs_outside,
+                    steps_of, view_total)
 
 __all__ = ["Finding", "KINDS", "check_sheet", "view_count", "MIN_LABEL_PX", "MIN_MARK_PX", "MIN_OPACITY", "VIEW"]
 
@@ -165,7 +165,7 @@ def check_sheet(sheet: Sheet, screen: tuple[float, float] = VIEW) -> list[Findin
 
 def view_count(sheet: Sheet, screen: tuple[float, float] = VIEW) -> int:
     """How many views :func:`check_sheet` checks in *sheet*."""
-    return view_total(Views(sheet, screen).all())
+    return view_total(all_views(sheet))  # (which views, not how each is laid out at *screen*)
 
 
 def _finding(kind: str, sheet: Sheet, views: Views, runs: Runs, labels, ids, message: str) -> Finding:

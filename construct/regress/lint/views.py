@@ -31,7 +31,7 @@ if TYPE_CHECKING:  # (numpy is imported where it is used: the annotations name i
 
 __all__ = ["Runs", "merge_runs", "both_runs", "runs_without", "runs_outside", "in_runs", "runs_of", "steps_of",
            "view_total", "boxes_meet", "Layout", "Views", "player_window", "player_letter_scale", "zoom_level", "MIN_OPACITY",
-           "PLAYER_SIDE_PX", "PLAYER_HEIGHT", "PLAYER_ASPECT"]
+           "PLAYER_SIDE_PX", "PLAYER_HEIGHT", "PLAYER_ASPECT", "all_views", "stepped"]
 
 #: Marks fainter than this (a finished group's faded helpers) are background: they do not collide.
 MIN_OPACITY = 0.25
@@ -191,6 +191,19 @@ class Layout:
         return END_LEVEL if self.fin else self.level
 
 
+def stepped(sheet: Sheet) -> bool:
+    """Whether *sheet* shows its steps one by one (a player's or a replay's final drawing), each step a view."""
+    return bool(sheet.marks_steps and sheet.frame is None and sheet.n > 1 and not sheet.unplayed)
+
+
+def all_views(sheet: Sheet) -> Runs:
+    """The steps whose views *sheet* has (:meth:`Views.all`), known without laying the views out."""
+    if stepped(sheet):
+        return [(1, sheet.n)]
+    single = sheet.frame if sheet.frame is not None else sheet.n
+    return [(single, single)]
+
+
 class Views:
     """Which views a sheet has, which of them show an element, and each view's box and scale."""
 
@@ -198,7 +211,7 @@ class Views:
         self.sheet = sheet
         self.screen = screen
         n = sheet.n
-        self.stepped = sheet.marks_steps and sheet.frame is None and n > 1 and not sheet.unplayed
+        self.stepped = stepped(sheet)
         self.single = sheet.frame if sheet.frame is not None else n
         x, y, w, h = sheet.viewbox
         self.whole = (x, y, x + w, y + h)
@@ -220,7 +233,7 @@ class Views:
                 self._of_step[k] = lay
 
     def all(self) -> Runs:
-        return [(1, self.sheet.n)] if self.stepped else [(self.single, self.single)]
+        return all_views(self.sheet)
 
     def box(self, k: int) -> Box:
         return self.cameras.get(k, self.whole)

@@ -387,9 +387,10 @@ class Measure:
         breaks = at_once.breaks_at(i)
         items = tuple(shifted(it, break_shift(breaks)) for it in p.furniture) if breaks else tuple(p.furniture)
         px, fx = at_once.px_of(i), extent(items)
-        # (the end state's marks there, which its lettering is placed among: a scene, when _furniture asks)
+        # (the end state's marks there, which its lettering is placed among: read off the sweep's arrays, when
+        # _furniture asks)
         def marks() -> Any:
-            return scene_for(self.construction, figure, ending=self.style.camera).end_drawn()
+            return at_once.end_marks_at(i)
 
         # (its numbers unrounded: frames rounds every value's at once)
         return (*self._furniture(items, SimpleNamespace(px=px, scale=float(at_once.fit[i][2])), exact=False,

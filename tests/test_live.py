@@ -247,8 +247,8 @@ def test_a_sweeps_frames_draw_a_values_furniture_when_it_is_read(monkeypatch):
     alone = measure(Figure(built.protocol, replay.take(1, whole=True), c.check, c))
     drawn = []
     furniture_at = Measure._furniture_at
-    monkeypatch.setattr(Measure, "_furniture_at", lambda self, fig, at_once, i: drawn.append(i) or
-                        furniture_at(self, fig, at_once, i))
+    monkeypatch.setattr(Measure, "_furniture_at", lambda self, fig, at_once, i, *keep: drawn.append(i) or
+                        furniture_at(self, fig, at_once, i, *keep))
     frames = measure.frames(built.protocol, replay, len(values))
     assert drawn == [] and len(frames) == 3
     keys, nums, fit, texts = frames[1]

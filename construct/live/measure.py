@@ -198,7 +198,8 @@ class Measure:
         readings = {name: label for st in built.protocol.steps for name, label in st.labels if "{∠" in label}
         of = lambda m: m.name[:-3] if m.id.endswith("-at") and m.name.endswith(".at") else m.name  # noqa: E731
         self.readings = {f"{m.id}-label": readings[of(m)] for m in scene.marks if of(m) in readings and m.label}
-        self.texts = {k: v for k, v in texts.items() if k not in self.readings}  # the same at every value
+        # the same at every value (but the spots the built value writes its plate lettering at: each value its own)
+        self.texts = {k: v for k, v in texts.items() if k not in self.readings and k != "#spots"}
 
     def _end_of(self, scene: Any, drawing: Any) -> tuple[int, tuple, tuple, list] | None:
         """:attr:`_end` of the built figure: the end view's index j, the box of what the end state draws

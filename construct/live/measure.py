@@ -33,6 +33,7 @@ from ..render.camera import (FINAL_CONTEXT, MAX_ZOOM, PLAYER_FIGURE_PX, ZOOM_LEV
 from ..render.end_state import NumbersFactory, end_furniture, end_letter_boxes, end_lettering_at, furniture_numbers
 from ..render.output import scene_for
 from ..render.insets import inset_details
+from ..render.placing import Placing
 from ..render.plate import Lettering, extent, plain, plate_of, shifted, subscript_runs
 from ..render.player import inset_marks, player_html
 from ..render.scene import MarkKind, extreme_points, reading
@@ -316,11 +317,12 @@ class Measure:
         end_lettering_at`): its letters that stand elsewhere than at the built value, and where ("" where none
         does); two values write it alike where their keys are equal.  The spots are kept by it (*keep* of
         :meth:`frames`)."""
-        # (to a millionth of a letter: a spot found anew where the built one stands differs in its last bits)
+        # (to a millionth of a letter: a spot found anew where the built one stands differs in its last bits; a
+        # built spot kept is the built one itself)
         at = lambda r: tuple(round(float(c), 6) for c in r)  # noqa: E731
         built = self.placing.end_spots
         key = " ".join(f"{f}:{','.join(map(repr, at(r)))}" for f, r in sorted(spots.items())
-                       if f not in built or at(built[f]) != at(r))
+                       if built.get(f) is not r and (f not in built or at(built[f]) != at(r)))
         self._spots.setdefault(key, spots)
         return key
 
@@ -412,7 +414,7 @@ class Measure:
         # (the end state's marks there, which its lettering is placed among: read off the sweep's arrays, when
         # _furniture asks)
         def marks() -> Any:
-            return at_once.end_marks_at(i)
+            return at_once.end_marks_at(i, Placing.end_obstacle)
 
         # (its numbers unrounded: frames rounds every value's at once)
         return (*self._furniture(items, SimpleNamespace(px=px, scale=float(at_once.fit[i][2])), exact=False,

@@ -273,7 +273,7 @@ def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, en
     got = placing.end_lettering_at(vp, end.letter, marks, texts, lettering, _result_strokes(sheet, vp))
     built = placing.end_spots
     got = {**built, **{f: rel for f, rel in got.items()
-                       if f in built and (rel[2] >= LEADER_FROM) == (built[f][2] >= LEADER_FROM)}}
+                       if f in built and (rel[2] >= LEADER_FROM) == (built[f][2] >= LEADER_FROM)}} if got else built
     if keep is not None and len(placing.end_crowd(vp, end.letter, marks, texts, lettering, got)) >= len(crowd):
         return keep
     return got

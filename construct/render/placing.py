@@ -408,6 +408,12 @@ class Placing:
         return {fid: ((spot[0] - px) / letter, (spot[1] - py) / letter, spot[2])
                 for fid, _r, _s, (px, py), _d, _t in items if (spot := got.get(fid)) is not None}
 
+    @staticmethod
+    def end_obstacle(m: Mark) -> bool:
+        """Whether :meth:`end_lettering_at` reads the end state's mark *m* (a point, a lettered mark, a result
+        line): the plate's lettering at another value is placed among those alone."""
+        return m.kind is MarkKind.POINT or bool(m.label) or (m.role == "result" and m.kind.stroked)
+
     def end_crowd(self, vp: Viewport, letter: float, marks: Sequence[Mark],
                   taken: Sequence[tuple[float, float, float, float]],
                   lettering: Sequence[tuple[str, tuple[float, float], str]],

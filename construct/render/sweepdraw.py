@@ -22,7 +22,7 @@ the last digit).
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import Any, Callable
 
 import numpy as np
 
@@ -206,13 +206,14 @@ class SweepDrawing:
         self._end_geoms: dict[str, tuple[np.ndarray, ...]] = {}
         self.numbers.update(self._end_numbers(template, protocol))
         self._template = template
-        self._end_rows: list[tuple[Mark, Any]] | None = None
+        self._end_rows: dict[Any, list[tuple[Mark, Any]]] = {}
 
-    def end_marks_at(self, i: int) -> list[Mark]:
+    def end_marks_at(self, i: int, among: "Callable[[Mark], bool] | None" = None) -> list[Mark]:
         """The marks the end state draws at value *i* (the template's :meth:`~construct.render.scene.Scene.end_drawn`,
         each with its geometry at that value, drawing units on that value's broken sheet), as a scene built there
         has them (to the last bits of its arithmetic): what the end state's lettering is placed among, without a
         scene (80 ms) for every value.  (Its areas aside: the page draws them from the curves that bound them.)
+        *among*: only the marks it holds for (the few a reader asks of, at every value of a sweep).
 
         >>> from construct.constructions import get
         >>> from construct.render.output import scene_for
@@ -224,9 +225,10 @@ class SweepDrawing:
         ...     ending=True).end_drawn() if m.id == "s0001-O"]
         True
         """
-        rows = self._end_rows
+        rows = self._end_rows.get(among)
         if rows is None:
-            rows = self._end_rows = self._end_sources()
+            rows = self._end_rows[among] = [(m, src) for m, src in self._end_sources()
+                                            if among is None or among(m)]
         out = []
         for m, src in rows:
             if type(src) is tuple:  # a curve: its points' x and y

@@ -28,8 +28,9 @@ import numpy as np
 
 from ..constructions import Construction
 from ..figure import Figure
-from ..render.camera import (FINAL_CONTEXT, MAX_ZOOM, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, clip_view, level,
-                             player_letter_scale, zoom_of)
+from ..render.camera import (FINAL_CONTEXT, MAX_ZOOM, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, clip_view, framed_rows,
+                             level, player_letter_scale, step_focus_names, step_shots, zoom_of)
+from ..render.edges import clear_edges_rows
 from ..render.end_state import NumbersFactory, end_furniture, end_letter_boxes, end_lettering_at, furniture_numbers
 from ..render.output import scene_for
 from ..render.insets import inset_details
@@ -91,11 +92,12 @@ class Measure:
 
     The marks are drawn by the drawing's own code (:func:`~construct.render.svg.mark_geometry`) on the
     drawing's own fit to the view.  Letters are not placed: the page moves them with their points.  Each
-    step's camera view is the built value's view carried along with the marks it frames: the box of the
-    marks of the steps it shows moves and grows or shrinks, and the view with it (its room round them kept
-    in proportion, cut to the canvas as the camera cuts it, never past the camera's greatest magnification).
-    The camera's own choice at another value is not computed (it places every letter of the figure, 0.2 to
-    0.5 s a value); a teacher who moves the rod ratio keeps the shots of the book's figure.  The end step's
+    step's camera view is framed at every value as the camera frames its shot there (:meth:`_framing`: round
+    the working regions of the shot's steps as drawn there, widened for the letters its window would cut where
+    the page writes them); the shots themselves and how far each may magnify are the built value's (the
+    camera's choice of shots costs 40 ms a value, and a teacher who moves the rod ratio keeps the shots of the
+    book's figure).  A view no mark of its steps sets is carried along with the marks it shows (:meth:`_carried`:
+    it moves and grows or shrinks with their box, cut to the canvas as the camera cuts it).  The end step's
     view, the finished figure, is framed at every value as the camera frames the end state there (its marks,
     the plate's furniture and the letters the page writes beside them: :meth:`_end_view`), as a fresh build
     frames it where its letters stand where the book's value's stand.  A sweep's values are measured together
@@ -134,6 +136,9 @@ class Measure:
         for j, ids in enumerate(self.framed):
             if not ids:  # another step that draws nothing of its own: carried with the marks inside its view
                 self.framed[j] = _inside(scene, drawing.vp, self.views[j])
+        #: the views framed anew at every value as the camera frames their shots (:meth:`_framing`): by the view's
+        #: index, the most it magnifies and how the built view stands to the camera's framing of its marks
+        self.framing = self._framing(scene, drawing)
         #: the areas between curves: drawn by the page from the curves that bound them (:func:`areas_of`)
         self.areas = areas_of(built.protocol, scene)
         #: the steps whose current mark is ringed (small on the screen at the built value), by their index, and
@@ -201,6 +206,110 @@ class Measure:
         self.readings = {f"{m.id}-label": readings[of(m)] for m in scene.marks if of(m) in readings and m.label}
         # the same at every value (but the spots the built value writes its plate lettering at: each value its own)
         self.texts = {k: v for k, v in texts.items() if k not in self.readings and k != "#spots"}
+
+    def _framing(self, scene: Any, drawing: Any) -> dict[int, tuple[float, float, float, float]]:
+        """The views framed at every value as the camera frames a shot there (:func:`~construct.render.camera.
+        step_views`: round the working regions of its steps, :func:`~construct.render.camera.step_focus_names`,
+        widened where its window would cut a letter, :func:`~construct.render.edges.clear_edges`), the shots and
+        their magnification the built value's: {view j: (the most it magnifies, s, ox, oy)}, the marks that set
+        it in :attr:`framed` (their box is the shot's region), the letters it clears in :attr:`edge_letters`.
+        Where the built view is that framing grown s times about its centre moved (ox, oy) times its width (the
+        name tags of its steps, :func:`~construct.render.edges.clear_tag_edges`), so is every value's.  (The
+        camera's own choice of shots at another value is not made: 40 ms a value.)  The end view is framed by
+        :meth:`_end_view`; a view whose steps are shown whole or that no mark of theirs sets is carried
+        (:meth:`_carried`)."""
+        by_name = {m.name: m.id for m in scene.marks}
+        ids = [[by_name[n] for n in ns] for ns in step_focus_names(scene)]
+        full = drawing.full_view
+        most: dict[int, float] = {}
+        for first, last, z in step_shots(scene, Framing(full), drawing.vp.px, self._boxes(scene, drawing.vp, ids)):
+            for k in range(first, last + 1):
+                j = self.view_of[k - 1]
+                if j >= 0:
+                    most[j] = max(most.get(j, 0.0), z)  # (0.0: shown whole)
+        #: the letters a framed view's window is widened for (:meth:`_framed_views`): per zoom level, the ids of
+        #: their points and their boxes about them (x0, y0, x1, y1 less x, y at the letter scale 1), as the
+        #: page moves them with their points (the rod's length at a break left out: it moves with the break)
+        pl = drawing.placing
+        self.edge_letters = {lvl: (pl.letter_ids(lvl), pl.letters_at(lvl)[:len(pl.letter_ids(lvl)), 2:])
+                             for lvl in range(len(ZOOM_LEVELS))} if pl.lettered else {}
+        end = self._end[0] if self._end is not None else None
+        js, zs, focus = [], [], []
+        for j, z in most.items():
+            marks = list(dict.fromkeys(i for k, w in zip(self.steps, self.view_of) if w == j for i in ids[k - 1]))
+            if j != end and z and marks:
+                js.append(j)
+                zs.append(z)
+                focus.append(marks)
+        if not js:
+            return {}
+        b = np.asarray(self._boxes(scene, drawing.vp, focus), dtype=float).T[:, :, None]
+        at = {lvl: (pl.letters_at(lvl)[:len(i), :1], pl.letters_at(lvl)[:len(i), 1:2]) for lvl, (i, _) in
+              self.edge_letters.items()}
+        f = self._framed(b, np.asarray([full[2]]), np.asarray([full[3]]), np.asarray(zs)[:, None], at)[:, :, 0]
+        out = {}
+        for j, z, marks, (x, y, w, h) in zip(js, zs, focus, f.T.tolist()):
+            if w < full[2] or h < full[3]:  # (else the camera frames the whole figure: no shot of its own)
+                v = self.views[j]
+                out[j] = (z, v[2] / w, (v[0] + v[2] / 2 - x - w / 2) / w, (v[1] + v[3] / 2 - y - h / 2) / w)
+                self.framed[j] = marks
+        return out
+
+    def _framed(self, box: np.ndarray, W: np.ndarray, H: np.ndarray, z: np.ndarray, at: dict) -> np.ndarray:
+        """The camera's views round the regions *box* (x0, y0, x1, y1 x views x values) on pages W x H, each view
+        magnifying at most *z* (views x 1), widened for the letters its window cuts (*at*: per zoom level, the
+        letters' points: x, y, each letters x values; their boxes :attr:`edge_letters`): 4 x views x values."""
+        f = framed_rows(box, W, H, z)
+        if not self.edge_letters:
+            return f
+        n, size = f.shape[1:]
+
+        def letters_at(lvl: int, i: np.ndarray) -> tuple:  # (the views' columns i: view after view, of the values)
+            x, y = at[lvl]
+            return x[:, i % size], y[:, i % size], self.edge_letters[lvl][1]
+
+        return clear_edges_rows(f.reshape(4, -1), np.tile(W, n), np.tile(H, n), letters_at).reshape(4, n, size)
+
+    def _letter_points(self, keys: list, nums: np.ndarray) -> dict:
+        """Per zoom level, the points of :attr:`edge_letters` on the pages whose numbers are *nums* (values x
+        numbers, in the order of *keys*): x, y, each letters x values (NaN: not drawn)."""
+        at, n = {}, 0
+        for k in keys:
+            at.setdefault((k[0], k[1]), n)
+            n += k[2].count("#")
+        out = {}
+        for lvl, (ids, _) in self.edge_letters.items():
+            ix = np.asarray([at.get((i, "cx"), -1) for i in ids], dtype=int)
+            iy = np.asarray([at.get((i, "cy"), -1) for i in ids], dtype=int)
+            out[lvl] = tuple(np.where((c >= 0)[:, None], nums[:, c].T, np.nan) for c in (ix, iy))
+        return out
+
+    def _framed_views(self, box: np.ndarray, W: np.ndarray, H: np.ndarray, out: np.ndarray, keys: list,
+                      nums: np.ndarray) -> np.ndarray:
+        """*out* (the views x (x, y, w, h) x values of :meth:`_carried_rows`) with the views of :attr:`framing`
+        framed round their marks' boxes *box* (x0, y0, x1, y1 x views x values) on pages W x H whose numbers are
+        *nums* (values x numbers, in the order of *keys*: the letters' points): the camera's framing of each
+        value, grown and moved as the built view is grown and moved from the built one's."""
+        if not self.framing:
+            return out
+        js = list(self.framing)
+        z, s, ox, oy = (np.asarray(c, dtype=float)[:, None] for c in zip(*self.framing.values()))
+        f = self._framed(box[:, js], W, H, z, self._letter_points(keys, nums) if self.edge_letters else {})
+        w, h = f[2] * s, f[3] * s
+        vw, vh = np.minimum(w, W), np.minimum(h, H)
+        x = np.clip(f[0] + f[2] / 2 + ox * f[2] - vw / 2, 0.0, W - vw)
+        y = np.clip(f[1] + f[3] / 2 + oy * f[2] - vh / 2, 0.0, H - vh)
+        whole = (f[2] >= W) & (f[3] >= H) | np.isnan(box[0, js])
+        moved = np.stack([np.round(c, 2) + 0.0 for c in (x, y, vw, vh)], axis=1)
+        kept = (s == 1.0) & (ox == 0.0) & (oy == 0.0)
+        out[js] = np.where(whole[:, None], out[-1][None], np.where(kept[:, None], f.transpose(1, 0, 2), moved))
+        # (the built value: the camera's own view, to the hundredth -- a sweep's box and a scene's differ in the last
+        # bits, a view's rounding with them)
+        b0 = np.asarray([self.boxes[j] for j in js], dtype=float).T[:, :, None]
+        with np.errstate(invalid="ignore"):
+            built = (np.abs(box[:, js] - b0) < 1e-6).all(axis=0)
+        out[js] = np.where(built[:, None], np.asarray([self.views[j] for j in js], dtype=float)[:, :, None], out[js])
+        return out
 
     def _end_of(self, scene: Any, drawing: Any) -> tuple[int, tuple, tuple, list] | None:
         """:attr:`_end` of the built figure: the end view's index j, the box of what the end state draws
@@ -545,7 +654,9 @@ class Measure:
             box[:, boxed] = (*px(least(ends[0], starts, axis=0), most(ends[3], starts, axis=0)),
                              *px(most(ends[1], starts, axis=0), least(ends[2], starts, axis=0)))
         views = len(self.framed)
-        carried = self._carried_rows(box[:, :views], boxed[:views], width, height)  # (views + 1) x 4 x values
+        carried = self._framed_views(box[:, :views], width, height,  # (views + 1) x 4 x values
+                                     self._carried_rows(box[:, :views], boxed[:views], width, height), keys,
+                                     np.concatenate([np.zeros((size, 2)), width[:, None], height[:, None], rows], axis=1))
         if self._end is not None:  # the end view: framed at every value (the end state's own marks boxed too; the
             # furniture's box and the letters it writes where each value is read, below)
             j_end = self._end[0]
@@ -689,6 +800,11 @@ class Measure:
         texts.update(ft)
         boxes = self._boxes(scene, vp)
         carried = [self._carried(j, box, full) for j, box in enumerate(boxes)] + [list(full)]  # [-1]: the whole
+        if self.framing:
+            b = np.asarray([bx if bx is not None else (np.nan,) * 4 for bx in boxes], dtype=float).reshape(-1, 4).T
+            rows = np.asarray(carried, dtype=float)[:, :, None]
+            W, H = np.asarray([full[2]]), np.asarray([full[3]])
+            carried = self._framed_views(b[:, :, None], W, H, rows, keys, np.asarray([nums], dtype=float))[:, :, 0].tolist()
         if self._end is not None:
             carried[self._end[0]] = self._end_view(end_box(scene, vp.px, self.furniture_live is not False), full,
                                                    np.asarray(nums, dtype=float), texts.get("#absent", ""))

@@ -34,12 +34,14 @@ every machine.
 from __future__ import annotations
 
 import math
-from typing import Callable, Sequence
+from typing import Any, Callable, Sequence
+
+import numpy as np
 
 from .scene import MarkKind, Scene, extreme_points
 from .svgdoc import fmt
 
-__all__ = ["step_views", "views_box", "shots", "step_focus", "step_zooms", "step_details", "DETAIL_PX", "INSET_MAX", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "NON_SCALING", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
+__all__ = ["step_views", "views_box", "shots", "step_focus", "step_focus_names", "step_shots", "framed_rows", "step_zooms", "step_details", "DETAIL_PX", "INSET_MAX", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "NON_SCALING", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
            "player_letter_scale"]
 
 #: The step player's figure box in a typical 1400 × 900 browser window (width, height in screen px, as its page
@@ -158,7 +160,7 @@ def _grow(b: Box | None, x: float, y: float) -> Box:
 
 def step_focus(scene: Scene) -> list[Box | None]:
     """Per step, the box of where it works: its own marks, the points its instrument is set on and the points
-    its caption names (:meth:`Scene.named`).
+    its caption names (:meth:`Scene.named`; the marks :func:`step_focus_names` names).
 
     Lines are left out of the marks: a line is drawn as far as all the points the
     whole construction ever marks on it (the stroke line reaches the far
@@ -167,20 +169,28 @@ def step_focus(scene: Scene) -> list[Box | None]:
     """
     drawn = {m.name: m for m in scene.marks}
     out: list[Box | None] = []
-    for s in scene.steps:
+    for names in step_focus_names(scene):
         b: Box | None = None
-        for n in s.outputs:
-            m = drawn.get(n)
-            if m is not None and m.kind is not MarkKind.SEGMENT:
-                for x, y in extreme_points(m):
-                    b = _grow(b, x, y)
+        for n in names:
+            for x, y in extreme_points(drawn[n]):
+                b = _grow(b, x, y)
+        out.append(b)
+    return out
+
+
+def step_focus_names(scene: Scene) -> list[list[str]]:
+    """Per step, the names of the marks whose extreme points set its working region (:func:`step_focus`): its
+    own marks but lines, and the points it is set on or its caption names (a live page frames a step at another
+    value of a given round these marks as drawn there)."""
+    drawn = {m.name: m for m in scene.marks}
+    out: list[list[str]] = []
+    for s in scene.steps:
+        names = [n for n in s.outputs if (m := drawn.get(n)) is not None and m.kind is not MarkKind.SEGMENT]
         # the points its instrument is set on, and those its caption names: the student looks for them too,
         # and a caption names only what the view shows
-        for n in set(s.inputs) | scene.named(s.index):
-            m = drawn.get(n)
-            if m is not None and m.kind is MarkKind.POINT:
-                b = _grow(b, *m.geom)
-        out.append(b)
+        names += [n for n in sorted(set(s.inputs) | scene.named(s.index))
+                  if (m := drawn.get(n)) is not None and m.kind is MarkKind.POINT]
+        out.append(names)
     return out
 
 
@@ -481,13 +491,12 @@ def step_views(scene: Scene, full: View, bbox: Box, px: Callable[[float, float],
         return ((x - ox) / scale, (oy - y) / scale)
 
     focus = [to_px(b) for b in step_focus(scene)]
-    zooms = step_zooms(scene, framing, px)
     out: list[View] = []
-    for first, last in shots(scene, focus, framing, zooms):
+    for first, last, most in step_shots(scene, framing, px, focus):
         u: Box | None = None
         for k in range(first, last + 1):
             u = _union(u, focus[k - 1])
-        v = framing.view(u, max_zoom=max([MAX_ZOOM] + zooms[first - 1:last])) if scene.steps[first - 1].group else full
+        v = framing.view(u, max_zoom=most) if most else full
         out.extend([v] * (last - first + 1))
     out[0] = full
     if n > 1:
@@ -518,6 +527,45 @@ def step_views(scene: Scene, full: View, bbox: Box, px: Callable[[float, float],
                 b = grown
             out[-1] = v
     return out
+
+
+def step_shots(scene: Scene, framing: Framing, px: Callable[[float, float], tuple[float, float]],
+               focus: Sequence[Box | None]) -> list[tuple[int, int, float]]:
+    """The shots of :func:`step_views` (:func:`shots` of the steps' working regions *focus*, canvas px): runs
+    (first, last) of steps, each with the most its view magnifies (:func:`step_zooms`; 0.0: a shot of steps
+    outside every group, the whole figure)."""
+    zooms = step_zooms(scene, framing, px)
+    return [(first, last, max([MAX_ZOOM] + zooms[first - 1:last]) if scene.steps[first - 1].group else 0.0)
+            for first, last in shots(scene, focus, framing, zooms)]
+
+
+def framed_rows(box: Sequence, W: Any, H: Any, max_zoom: Any, context: float = CONTEXT,
+                whole_above: float = WHOLE_ABOVE, window: tuple[float, float] = PLAYER_FIGURE_PX) -> Any:
+    """:meth:`Framing.view` over arrays: the views (x, y, w, h: an array of 4 x the broadcast shape) round the
+    regions *box* (x0, y0, x1, y1, each an array) of canvases *W* x *H* px, each magnifying at most *max_zoom*
+    (a live page frames a step at every value of a sweep at once); the whole canvas where a region is NaN.
+
+    >>> b, full = (100.0, 80.0, 180.0, 140.0), (0.0, 0.0, 960.0, 700.0)
+    >>> framed_rows(np.asarray(b)[:, None], np.asarray([960.0]), np.asarray([700.0]), 4.0)[:, 0].tolist() == \\
+    ...     list(Framing(full).view(b, max_zoom=4.0))
+    True
+    """
+    x0, y0, x1, y1 = (np.asarray(c, dtype=float) for c in box)
+    W, H, most = (np.asarray(c, dtype=float) for c in (W, H, max_zoom))
+    aspect = window[1] / window[0]
+    span = np.maximum(W, H / aspect)
+    bw, bh = x1 - x0, y1 - y0
+    with np.errstate(invalid="ignore"):
+        w = np.maximum(np.maximum(bw + 2 * np.minimum(context * bw, ROOM * W), (bh + 2 * np.minimum(context * bh, ROOM * H))
+                                  / aspect), span / most)
+        h = w * aspect
+        whole = ~(w < whole_above * span)  # (NaN: nothing framed, the whole)
+        w, h = np.minimum(w, W), np.minimum(h, H)
+        x = np.minimum(np.maximum((x0 + x1) / 2 - w / 2, 0.0), W - w)
+        y = np.minimum(np.maximum((y0 + y1) / 2 - h / 2, 0.0), H - h)
+    zero = np.zeros(np.broadcast(x, W).shape)
+    return np.stack([np.where(whole, f, np.round(v, 2) + 0.0) for f, v in zip((zero, zero, W + zero, H + zero),
+                                                                                (x, y, w, h))])
 
 
 def views_box(views: Sequence[View], full: View) -> View:

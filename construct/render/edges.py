@@ -25,7 +25,7 @@ import numpy as np
 
 from .camera import PLAYER_FIGURE_PX, ZOOM_LEVELS, View, clip_view, level, player_letter_scale, zoom_of
 
-__all__ = ["clear_edges", "clear_tag_edges", "EDGE_ROUNDS", "Letters", "Tags"]
+__all__ = ["clear_edges", "clear_edges_rows", "clear_tag_edges", "EDGE_ROUNDS", "Letters", "Tags"]
 
 #: Rounds of widening a view whose window cuts a letter (:func:`clear_edges`): each grows the view by 2 %
 #: at least, so 80 rounds reach 4.9 times its width -- past the whole figure from any view (MAX_ZOOM = 4).
@@ -73,6 +73,66 @@ def clear_edges(views: list[View], full: View, letters_at: Letters) -> list[View
                 done[v] = v if (w, h) == (v[2], v[3]) else clip_view(cx, cy, w, h, full)
         out.append(done[v])
     return out
+
+
+def clear_edges_rows(view: Any, W: Any, H: Any, letters_at: Callable[[int, Any], tuple[Any, Any, Any]]) -> Any:
+    """:func:`clear_edges` over arrays: the views *view* (x, y, w, h: 4 x n) of canvases *W* x *H* (n each: a
+    live page's step at every value of a sweep), each widened until its window cuts no letter.  *letters_at*: the
+    letters a zoom level shows with the views of the given indices, (x, y: letters x indices, their boxes less x,
+    y: letters x 4); a letter at NaN is not there.
+
+    >>> full = (0.0, 0.0, 998.0, 630.0)
+    >>> row = np.array([[500.0, 150.0, -10.0, -6.0, 10.0, 6.0]])
+    >>> at = lambda lvl, i: (row[:, :1], row[:, 1:2], row[:, 2:])
+    >>> v = (0.0, 0.0, 499.0, 315.0)
+    >>> tuple(clear_edges_rows(np.array(v)[:, None], np.array([998.0]), np.array([630.0]), at)[:, 0]) == \\
+    ...     clear_edges([v], full, lambda lvl: row)[0]
+    True
+    """
+    x, y, w, h = (np.array(c, dtype=float) for c in view)
+    W, H = np.asarray(W, dtype=float), np.asarray(H, dtype=float)
+    ww, wh = PLAYER_FIGURE_PX
+    whole = np.maximum(W / ww, H / wh)
+    cx, cy = x + w / 2, y + h / 2
+    w0, h0 = w.copy(), h.copy()
+    going = ~((x == 0.0) & (y == 0.0) & (w == W) & (h == H))
+    levels = np.asarray(ZOOM_LEVELS)
+    for _ in range(EDGE_ROUNDS):  # (the rounds of clear_edges, every view at once until none is cut)
+        z = whole / np.maximum(np.maximum(w / ww, h / wh), 1e-12)
+        going &= z > 1.0
+        if not going.any():
+            break
+        lvl = np.maximum((z[:, None] >= 0.999 * levels).sum(axis=1) - 1, 0)  # (camera.level)
+        g = np.ones(len(z))
+        for at in np.unique(lvl[going]):
+            i = np.flatnonzero(going & (lvl == at))
+            px, py, box = letters_at(int(at), i)
+            vw, vh = np.minimum(w[i], W[i]), np.minimum(h[i], H[i])  # (clip_view: where the view will stand)
+            vx = np.minimum(np.maximum(cx[i] - vw / 2, 0.0), W[i] - vw)
+            vy = np.minimum(np.maximum(cy[i] - vh / 2, 0.0), H[i] - vh)
+            q = np.maximum(vw / ww, vh / wh)
+            t = whole[i] / ZOOM_LEVELS[at]  # (q times the view's zoom: player_letter_scale(t) over arrays)
+            ls = np.minimum(np.maximum(1.0, 9.5 * t / 12.0), t)
+            hw, hh = ww * q / 2, wh * q / 2
+            mx, my = vx + vw / 2, vy + vh / 2
+            with np.errstate(invalid="ignore"):
+                x0, y0 = px + ls * box[:, :1] - mx, py + ls * box[:, 1:2] - my
+                x1, y1 = px + ls * box[:, 2:3] - mx, py + ls * box[:, 3:4] - my
+                meet = (x0 < hw) & (x1 > -hw) & (y0 < hh) & (y1 > -hh)
+                cut = meet & ((x0 < -hw) | (x1 > hw) | (y0 < -hh) | (y1 > hh))
+                need = np.maximum(np.where(cut, np.maximum(-x0, x1), -np.inf).max(axis=0, initial=-np.inf) / hw,
+                                  np.where(cut, np.maximum(-y0, y1), -np.inf).max(axis=0, initial=-np.inf) / hh)
+            g[i] = np.where(cut.any(axis=0), need * 1.02, 1.0)
+        going &= g != 1.0
+        w, h = w * g, h * g
+    z = whole / np.maximum(np.maximum(w / ww, h / wh), 1e-12)
+    vw, vh = np.minimum(w, W), np.minimum(h, H)
+    grown = [np.round(np.minimum(np.maximum(cx - vw / 2, 0.0), W - vw), 2), np.round(np.minimum(np.maximum(
+        cy - vh / 2, 0.0), H - vh), 2), np.round(vw, 2), np.round(vh, 2)]
+    same = (w == w0) & (h == h0)
+    out = [np.where(same, v, np.where(z <= 1.0, f, g_ + 0.0))
+           for v, f, g_ in zip((x, y, w0, h0), (np.zeros_like(W), np.zeros_like(W), W, H), grown)]
+    return np.stack(out)
 
 
 #: The name tags a view of some steps at a zoom level shows: (row as in :data:`Letters`, is it a tag of

@@ -834,9 +834,13 @@ LIVE_SCRIPT = r"""
     breakMarks();
     // readings of the figure (an angle to the minute, a dimension's value): as read at the shown value (between)
     var near = ct[1] < 0.5 ? ct[0] : Math.min(ct[0] + 1, S.L.rows - 1);
+    // (one of them blended a digit shorter: every number the figure writes a digit shorter there, so that a plate
+    // writes its numbers with the same digits -- not +1,50 beside +0,093)
+    var shorter = false;
+    for (var j = 0; j < readings.length && !atBook && !shorter; j++) shorter = readings[j].L === S.L && blended(readings[j].texts, ct);
     for (var j = 0; j < readings.length; j++) {
       // (at the book's value, which the grid may miss by a hair, the built figure's own)
-      var rd = readings[j], said = rd.L === S.L ? (atBook ? rd.built : between(rd.texts, ct)) : rd.L.given !== S.L.given ? rd.built : null;
+      var rd = readings[j], said = rd.L === S.L ? (atBook ? rd.built : between(rd.texts, ct, shorter)) : rd.L.given !== S.L.given ? rd.built : null;
       if (said) for (var rj = 0; rj < rd.els.length; rj++) setText(rd.els[rj], said);
     }
     // the plate's items that come and go with the given (a scale's ticks: live/measure.py Measure._furniture):
@@ -857,11 +861,16 @@ LIVE_SCRIPT = r"""
   // digits written: a blend of two rounded numbers is good to about a unit of their last digit, not to its half;
   // a fresh replay's +0,746 at L/r 2 is written +0,75, where the nearer grid value's +0,748 claimed a digit it has
   // not); at a grid value, and for an angle to the minute (a blend would print minutes the figure does not have),
-  // the nearer grid value's reading
+  // the nearer grid value's reading.  *shorter*: another number of the figure is blended there -- this one is written
+  // a digit shorter too, where it has two decimals or more (blended or not)
   var DECIMAL = /([+\u2212-]?)([0-9]+)([.,])([0-9]+)/g;
-  function between(texts, ct){
+  function blended(texts, ct){  // whether a reading is blended between grid values at *ct* (between's own test)
+    var t = ct[1], a = texts[ct[0]];
+    return t >= 1e-9 && t <= 1 - 1e-9 && a !== texts[Math.min(ct[0] + 1, texts.length - 1)] && /[0-9][.,][0-9]{2}/.test(a);
+  }
+  function between(texts, ct, shorter){
     var a = texts[ct[0]], b = texts[Math.min(ct[0] + 1, texts.length - 1)], t = ct[1];
-    if (a === b || t < 1e-9 || t > 1 - 1e-9) return t < 0.5 ? a : b;  // (at a grid value: the slider's log10 to 1e-12)
+    if ((a === b && !shorter) || t < 1e-9 || t > 1 - 1e-9) return t < 0.5 ? a : b;  // (at a grid value: the slider's log10 to 1e-12)
     var na = [], nb = [];
     a.replace(DECIMAL, function(m){ na.push(m); return ""; });
     b.replace(DECIMAL, function(m){ nb.push(m); return ""; });
@@ -870,7 +879,7 @@ LIVE_SCRIPT = r"""
     var k = 0, bad = false;
     var out = a.replace(DECIMAL, function(m, sign, whole, comma, frac){
       var q = nb[k++], mb = /([+\u2212-]?)([0-9]+)([.,])([0-9]+)/.exec(q);
-      if (m === q) return m;
+      if (m === q && (!shorter || frac.length < 2)) return m;
       if (mb[4].length !== frac.length || frac.length < 2) { bad = true; return m; }
       var va = (sign === "+" || !sign ? 1 : -1) * Number(whole + "." + frac), vb = (mb[1] === "+" || !mb[1] ? 1 : -1) * Number(mb[2] + "." + mb[4]);
       var v = va + (vb - va) * t, d = frac.length - 1, r = Math.abs(v).toFixed(d);

@@ -95,6 +95,7 @@ class Placing:
         self.furniture = tuple(furniture)
         self._line_index: dict[tuple[float, float], LineIndex] = {}
         self._rows: dict[int, Any] = {}
+        self._row_ids: dict[int, list[str]] = {}
         self._obstacle_a: tuple[Any, Any] | None = None
         #: words the drawing writes beside the figure at every zoom level, as the rows of :meth:`letters_at` (the
         #: rod's length at a break): the camera keeps them whole in its views as it keeps the letters
@@ -138,7 +139,7 @@ class Placing:
         if got is None:
             st = self.style
             rel = self.level_rel.get(lvl)
-            rows = []
+            rows, ids = [], []
             for m in self.lettered:
                 px, py = self.vp.px(*m.geom)
                 spot = self.spots[m.id]
@@ -152,9 +153,17 @@ class Placing:
                     dx, dy = spot[0] - px, spot[1] - py
                 b = label_box(px + dx, py + dy, m.label, st.label_size, st.label_font, st.label_italic)
                 rows.append((px, py, b[0] - px, b[1] - py, b[2] - px, b[3] - py))
+                ids.append(m.id)
             rows += self.words
             got = self._rows[lvl] = np.array(rows) if rows else np.zeros((0, 6))
+            self._row_ids[lvl] = ids
         return got
+
+    def letter_ids(self, lvl: int) -> list[str]:
+        """The ids of the points whose letters are the first rows of :meth:`letters_at` (*lvl*); the rest of its
+        rows are the rod's length written at a break (:attr:`words`)."""
+        self.letters_at(lvl)
+        return self._row_ids[lvl]
 
     def tags_at(self, ks: Sequence[int], lvl: int,
                 input_steps: Callable[[int], frozenset[int]]) -> list[tuple[tuple[float, ...], bool]]:

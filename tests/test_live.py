@@ -16,7 +16,7 @@ import pytest
 from construct.cli.main import main
 from construct.constructions import get
 from construct.live import live_data, live_givens, live_sweep, player_page
-from construct.live.sweep import QUANTUM_PX, pieces
+from construct.live.sweep import MIN_CELL, QUANTUM_PX, SWITCH_CELL, _switch_spots, pieces
 from construct.render.wire import arc_flags, blend, decode, drawn_numbers, inflated, radii
 from construct.render.styles import STYLES
 
@@ -247,8 +247,8 @@ def test_a_sweeps_frames_draw_a_values_furniture_when_it_is_read(monkeypatch):
     alone = measure(Figure(built.protocol, replay.take(1, whole=True), c.check, c))
     drawn = []
     furniture_at = Measure._furniture_at
-    monkeypatch.setattr(Measure, "_furniture_at", lambda self, fig, at_once, i: drawn.append(i) or
-                        furniture_at(self, fig, at_once, i))
+    monkeypatch.setattr(Measure, "_furniture_at", lambda self, fig, at_once, i, *keep: drawn.append(i) or
+                        furniture_at(self, fig, at_once, i, *keep))
     frames = measure.frames(built.protocol, replay, len(values))
     assert drawn == [] and len(frames) == 3
     keys, nums, fit, texts = frames[1]
@@ -407,19 +407,23 @@ def test_an_unlettered_build_takes_the_steps_of_a_lettered_one():
         assert repr(sketch.replay[name]) == repr(again[name]), name
 
 
-def test_tafel_2s_end_state_writes_the_inertia_pressures_of_every_rod_ratio():
-    """The stroke fractions' end state is drawn mostly by the plate (57 ordinates, dots and values against 32
-    marks): its values follow the slider, each the inertia pressure at its tenth of the stroke at that grid value --
-    q = F/f (cos phi + r/L cos 2 phi) at the crank angle where the piston has gone k/10 of the stroke (its pin at X
-    from the crank centre, cos phi = (X^2 + r^2 - L^2) / (2 X r)) -- not the book's at every value."""
+@pytest.fixture(scope="module")
+def tafel_2_live():
+    """Tafel 2's sweep over the piece of the domain its book value (L/r = 5) lies in, L/r 2.74 to 1000."""
     c = get("inertia-stroke-fractions")
     fig = c.figure()
     given = live_givens(c, fig)[0]
     piece = next(p for p in pieces(c, fig, "rod_ratio", given.domain) if p.low <= 20 <= p.high)
-    # (a grid of some 50 values, not the player's 400: each value's texts are written from its own scene, wherever
-    # the grid puts it; a cell left coarser only draws between its values from farther apart)
-    live = live_sweep(c, fig, "rod_ratio", piece=piece, max_values=48)
-    assert len(live.grid) >= 40 and not live.furniture_held
+    return live_sweep(c, fig, "rod_ratio", piece=piece)
+
+
+def test_tafel_2s_end_state_writes_the_inertia_pressures_of_every_rod_ratio(tafel_2_live):
+    """The stroke fractions' end state is drawn mostly by the plate (57 ordinates, dots and values against 32
+    marks): its values follow the slider, each the inertia pressure at its tenth of the stroke at that grid value --
+    q = F/f (cos phi + r/L cos 2 phi) at the crank angle where the piston has gone k/10 of the stroke (its pin at X
+    from the crank centre, cos phi = (X^2 + r^2 - L^2) / (2 X r)) -- not the book's at every value."""
+    live = tafel_2_live
+    assert not live.furniture_held
     ids = sorted((i for i, texts in live.reading_texts.items() if texts[0][:1] in "+−"), key=lambda i: int(i[5:]))
     k = np.arange(11) / 10
     for g, lr in enumerate(live.grid):
@@ -431,3 +435,44 @@ def test_tafel_2s_end_state_writes_the_inertia_pressures_of_every_rod_ratio():
         q = cos + (2 * cos ** 2 - 1) / lr
         assert len(values) == 11 and written[::2] == written[1::2], (lr, written)  # (each with its halo)
         assert np.abs(np.asarray(values) - q).max() <= 0.0015, (lr, values, np.round(q, 3).tolist())
+
+def test_tafel_2s_lettering_switches_its_spots_at_grid_values_not_refined_down(tafel_2_live):
+    """Tafel 2's values stand elsewhere about their ordinates where they would crowd (a choice among spots, not a
+    coordinate): the refinement chased every such switch down to MIN_CELL, 413 grid values in this piece where the
+    drawing needs about 130 (129 before the values moved).  Each switch now stands beside a grid value, a jump of
+    the drawing no wider than MIN_CELL, and the grid is the drawing's."""
+    live = tafel_2_live
+    assert len(live.grid) <= 160, len(live.grid)
+    u = np.log10(live.grid)
+    assert live.jumps and all(np.log10(b) - np.log10(a) <= MIN_CELL for a, b in live.jumps)
+    assert all(a in live.grid and b in live.grid for a, b in live.jumps)
+    assert np.diff(u).min() > 0
+
+
+def test_a_switch_of_spots_is_put_where_both_sides_spots_are_clear():
+    """_switch_spots on a cell whose ends write the lettering at spots S1 and S2, where S1 is clear below 0.6 and S2
+    above 0.1 (log10 of the given), and a value placed anew takes S1 below 0.3: neither end's spots hold at the
+    other end, so the cell is split at its midpoint (S2 there) and the switch put SWITCH_CELL below it, S1 written
+    up to there (clear), a jump of the drawing; two rounds of frames, not a bisection down to MIN_CELL."""
+    clear = {"S1": lambda u: u < 0.6, "S2": lambda u: u > 0.1}
+    keys = [("fin-f0", "x", "#")]
+
+    def frame(u: float, keep: str | None) -> tuple:
+        spots = keep if keep is not None and clear[keep](u) else ("S1" if u < 0.3 else "S2")
+        return keys, np.array([u]), (0.0, 0.0, 1.0), {"#spots": spots}
+
+    rounds = []
+
+    def frames(us, keep):
+        rounds.append(len(us))
+        return [frame(u, keep.get(i)) for i, u in enumerate(us)]
+
+    data = {0.0: frame(0.0, None), 1.0: frame(1.0, None)}
+    jumps: list[tuple[float, float]] = []
+    values = lambda u: 10.0 ** np.asarray(u)  # noqa: E731
+    _switch_spots(data, lambda u: data[u][3]["#spots"], jumps, values, frames)
+    us = sorted(data)
+    spots = [data[u][3]["#spots"] for u in us]
+    assert us == [0.0, 0.5 - SWITCH_CELL, 0.5, 1.0] and spots == ["S1", "S1", "S2", "S2"]
+    assert jumps == [(float(values(0.5 - SWITCH_CELL)), float(values(0.5)))]
+    assert all(clear[s](u) for u, s in zip(us, spots)) and len(rounds) == 3

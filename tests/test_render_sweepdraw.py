@@ -153,3 +153,26 @@ def test_the_boxes_stacked_are_each_marks_box_in_its_order():
     for k in range(4):
         expected = np.array([box[k] for box in d.extremes.values()])
         np.testing.assert_array_equal(d.extreme_rows[k], expected)
+
+
+@pytest.mark.parametrize("name, params, values", [("crank", {"parts": 6}, VALUES[::8]),
+                                                  ("inertia-stroke-fractions", {}, np.array([3.0, 5.0, 12.0, 80.0, 900.0]))])
+def test_the_end_states_marks_at_a_value_are_a_scenes_there(name, params, values):
+    """The marks a value's plate lettering is placed among (the end state's: those of the figure it keeps and its
+    own, on that value's broken sheet) are read off the sweep's arrays, not a scene built at every value: they are
+    the marks a scene built there draws, each where it draws it (an arc's angles up to a whole turn)."""
+    c = get(name)
+    built = c.figure(**params)
+    replay = built.protocol.replay(c.rod_ratio_sweep(dict(built.replay.givens), values))
+    drawn = SweepDrawing(scene_for(c, built, ending=True), built.protocol, replay, len(values), STYLES["teaching"])
+    assert drawn.ok.all()
+    for i in range(len(values)):
+        scene = scene_for(c, Figure(built.protocol, replay.take(i, whole=True), c.check, c), ending=True)
+        want = [m for m in scene.end_drawn() if m.kind != "area"]
+        got = drawn.end_marks_at(i)
+        assert [(m.id, m.kind, m.label) for m in got] == [(m.id, m.kind, m.label) for m in want]
+        for a, b in zip(got, want):
+            x, y = np.asarray(a.geom, dtype=float).ravel(), np.asarray(b.geom, dtype=float).ravel()
+            if a.kind == "arc":  # (its start angle a whole turn apart draws the same arc)
+                x[3] += round((y[3] - x[3]) / (2 * np.pi)) * 2 * np.pi
+            assert x == pytest.approx(y, rel=1e-9, abs=1e-9), (values[i], a.id)

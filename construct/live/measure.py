@@ -34,6 +34,7 @@ from ..render.edges import clear_edges_rows
 from ..render.end_state import NumbersFactory, end_furniture, end_letter_boxes, end_lettering_at, furniture_numbers
 from ..render.output import scene_for
 from ..render.insets import inset_details
+from ..render.placing import Placing
 from ..render.plate import Lettering, extent, plain, plate_of, shifted, subscript_runs
 from ..render.player import inset_marks, player_html
 from ..render.scene import MarkKind, extreme_points, reading
@@ -170,6 +171,12 @@ class Measure:
         #: each built furniture element's item: {its id: the item's index in the built furniture}
         self.owners: dict[str, int] = {}
         self.held = self._furniture(scene.end_furniture, drawing.vp, owners=self.owners)
+        #: the ids of the elements of the plate's lettering (its texts and their leaders): where a value writes it
+        #: at other spots about its places than its neighbour (:meth:`spots_key`), the sweep does not blend them
+        #: there but switches at a grid value (live.sweep)
+        self.lettering_ids = frozenset(i for i, k in self.owners.items() if isinstance(self._items[k], Lettering))
+        #: the spots of the plate's lettering a value of a sweep wrote it at, by their key (:meth:`spots_key`)
+        self._spots: dict[str, dict[str, tuple[float, float, float]]] = {}
         #: the built furniture's items that come and go over the sweep (a scale's ticks), by their index
         #: (:meth:`furniture_kept`): shown where the nearer grid value's plate has them; the rest follows the given
         self.hidden_items: frozenset[int] = frozenset()
@@ -197,7 +204,8 @@ class Measure:
         readings = {name: label for st in built.protocol.steps for name, label in st.labels if "{∠" in label}
         of = lambda m: m.name[:-3] if m.id.endswith("-at") and m.name.endswith(".at") else m.name  # noqa: E731
         self.readings = {f"{m.id}-label": readings[of(m)] for m in scene.marks if of(m) in readings and m.label}
-        self.texts = {k: v for k, v in texts.items() if k not in self.readings}  # the same at every value
+        # the same at every value (but the spots the built value writes its plate lettering at: each value its own)
+        self.texts = {k: v for k, v in texts.items() if k not in self.readings and k != "#spots"}
 
     def _framing(self, scene: Any, drawing: Any) -> dict[int, tuple[float, float, float, float]]:
         """The views framed at every value as the camera frames a shot there (:func:`~construct.render.camera.
@@ -382,7 +390,8 @@ class Measure:
         return [float(c) for c in view]
 
     def _furniture(self, items: tuple, vp: Any, exact: bool = True, owners: dict[str, int] | None = None,
-                   marks: "Callable[[], Any] | None" = None) -> tuple[list, list[float], dict[str, str]]:
+                   marks: "Callable[[], Any] | None" = None, keep: str | None = None,
+                   ) -> tuple[list, list[float], dict[str, str]]:
         """The end state's furniture *items* (the plate's, on the sheet's broken axis) drawn on *vp* (anything with
         ``px`` and ``scale``): its keys, numbers and texts (:func:`~construct.render.end_state.furniture_numbers`).
         Another value's furniture is drawn in the built one's form (:meth:`_aligned`): a built item it lacks (a
@@ -390,10 +399,9 @@ class Measure:
         ``"#absent"`` (its elements' ids: the page hides them there); its lettering placed among that value's
         end-state marks (*marks*: gives them; :func:`~construct.render.end_state.end_lettering_at`: where it stood
         at the built value where there is room, at the built end state's letter scale, which a fresh build there
-        keeps too), or where the built value's placing set it about its places without *marks*.  The marks are
-        asked for only where the lettering at its built spots meets itself or the plate's other writing there: a
-        value's scene costs 80 ms, and a sweep asks thousands of values (every live player's plate has lettering;
-        few of them crowd it).  (So a value the points' letters alone would crowd keeps its built spot.)"""
+        keeps too), or where the built value's placing set it about its places without *marks*; the spots it is
+        written at are named among the texts as ``"#spots"`` (:meth:`spots_key`).  *keep*: the key of spots (a
+        neighbouring value's) it is written at where they do not crowd there."""
         if self.end is None or not items:
             return [], [], {}
         absent: frozenset[int] = frozenset()
@@ -403,14 +411,29 @@ class Measure:
         sheet = SimpleNamespace(end_furniture=items)
         spots = None
         if marks is not None and any(isinstance(it, Lettering) for it in items):
-            spots = end_lettering_at(sheet, (), self.style, vp, self.end, self.placing, NUMBERS)
-            spots = None if spots == self.placing.end_spots else \
-                end_lettering_at(sheet, marks(), self.style, vp, self.end, self.placing, NUMBERS)
+            spots = end_lettering_at(sheet, marks(), self.style, vp, self.end, self.placing, NUMBERS,
+                                     None if keep is None else self._spots[keep])
         keys, nums, texts = furniture_numbers(end_furniture(sheet, self.style, vp, self.end, self.placing, NUMBERS,
                                                             own, spots), exact=exact)
+        if spots is not None:
+            texts["#spots"] = self.spots_key(spots)
         if absent:
             texts["#absent"] = " ".join(i for i, k in own.items() if k in absent)
         return keys, nums, texts
+
+    def spots_key(self, spots: dict[str, tuple[float, float, float]]) -> str:
+        """A name of the spots the plate's lettering stands at about its places (:func:`~construct.render.end_state.
+        end_lettering_at`): its letters that stand elsewhere than at the built value, and where ("" where none
+        does); two values write it alike where their keys are equal.  The spots are kept by it (*keep* of
+        :meth:`frames`)."""
+        # (to a millionth of a letter: a spot found anew where the built one stands differs in its last bits; a
+        # built spot kept is the built one itself)
+        at = lambda r: tuple(round(float(c), 6) for c in r)  # noqa: E731
+        built = self.placing.end_spots
+        key = " ".join(f"{f}:{','.join(map(repr, at(r)))}" for f, r in sorted(spots.items())
+                       if built.get(f) is not r and (f not in built or at(built[f]) != at(r)))
+        self._spots.setdefault(key, spots)
+        return key
 
     def hidden_note(self, symbol: str) -> str:
         """The page's note on the items that come and go (:attr:`hidden_items`) with *symbol*, German / English, or
@@ -486,7 +509,8 @@ class Measure:
         *protocol* (:meth:`furniture_kept` holds none)."""
         return self.furniture_kept(protocol, replay, size) == frozenset()
 
-    def _furniture_at(self, figure: Figure, at_once: Any, i: int) -> tuple[list, list[float], dict[str, str], tuple]:
+    def _furniture_at(self, figure: Figure, at_once: Any, i: int,
+                      keep: str | None = None) -> tuple[list, list[float], dict[str, str], tuple]:
         """:meth:`_furniture` at value *i* of a sweep drawn at once: the plate's furniture of *figure* (that value
         of the sweep) on that value's broken axis and fit; and the box of the points it is set at (canvas px: x0,
         y0, x1, y1; NaN without any)."""
@@ -496,13 +520,14 @@ class Measure:
         breaks = at_once.breaks_at(i)
         items = tuple(shifted(it, break_shift(breaks)) for it in p.furniture) if breaks else tuple(p.furniture)
         px, fx = at_once.px_of(i), extent(items)
-        # (the end state's marks there, which its lettering is placed among: a scene, when _furniture asks)
+        # (the end state's marks there, which its lettering is placed among: read off the sweep's arrays, when
+        # _furniture asks)
         def marks() -> Any:
-            return scene_for(self.construction, figure, ending=self.style.camera).end_drawn()
+            return at_once.end_marks_at(i, Placing.end_obstacle)
 
         # (its numbers unrounded: frames rounds every value's at once)
         return (*self._furniture(items, SimpleNamespace(px=px, scale=float(at_once.fit[i][2])), exact=False,
-                                 marks=marks),
+                                 marks=marks, keep=keep),
                 (*px(fx[0], fx[3]), *px(fx[2], fx[1])) if fx is not None else (math.nan,) * 4)
 
     def _runs(self, keys: list[tuple[str, str, str]]) -> list[tuple[str, int]]:
@@ -561,12 +586,15 @@ class Measure:
         cy = (box[1] + box[3]) / 2 + (y + h / 2 - (b0[1] + b0[3]) / 2) * s
         return list(clip_view(cx, cy, w * s, h * s, full))
 
-    def frames(self, protocol: Any, replay: Any, size: int) -> Frames:
+    def frames(self, protocol: Any, replay: Any, size: int, keep: dict[int, str] | None = None) -> Frames:
         """:meth:`__call__` at every value of the sweep *replay* (of *size* values): the marks' numbers drawn for
         all values at once (:class:`~construct.render.sweepdraw.SweepDrawing`) where that draws what the drawing
         draws, value by value elsewhere (a value where a mark changes its form, a figure the sweep does not
         draw).  What is drawn value by value (the plate's furniture, a value's scene) is drawn when the value is
-        read (:class:`Frames`): the refinement draws midpoints ahead and reads about half of them."""
+        read (:class:`Frames`): the refinement draws midpoints ahead and reads about half of them.  *keep*: the
+        spots of the plate's lettering (their key, :meth:`spots_key`) some values write it at where they do not
+        crowd there, by the values' index."""
+        keep = keep or {}
         at_once = None
         template, runs, keys = self._form(protocol, replay)
         if sweep_drawable(template, self.style, hatching=False):  # (the page draws areas from their curves)
@@ -578,7 +606,7 @@ class Measure:
                                        if not i.startswith("fin-")):  # (the end state's furniture: below)
             at_once = None
         whole = lambda i: self(Figure(protocol, replay.take(i, whole=True), self.construction.check,  # noqa: E731
-                                      self.construction))
+                                      self.construction), keep=keep.get(i))
         if at_once is None or not at_once.ok.any():
             return Frames(size, whole)
         # the end state's furniture: the plate's, value by value (a plate's furniture is a few dozen lines and
@@ -661,7 +689,7 @@ class Measure:
             texts, fur_box = self.texts, (math.nan,) * 4
             if want:
                 fk, fn, ft, fur_box = self._furniture_at(Figure(protocol, replay.take(i), self.construction.check,
-                                                                self.construction), at_once, i)
+                                                                self.construction), at_once, i, keep.get(i))
                 if fk != want:  # (another form of the furniture there: value by value)
                     at_once.ok[i] = False
                     return whole(i)
@@ -727,12 +755,14 @@ class Measure:
             out = [np.where(held, np.broadcast_to(z, s.shape), np.round(c, 2) + 0.0) for z, c in zip((x, y, w, h), carried)]
         return np.stack(out, axis=1)
 
-    def __call__(self, figure: Figure) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:
+    def __call__(self, figure: Figure, keep: str | None = None) -> tuple[list[tuple[str, str, str]], list[float],
+                                                                         tuple, dict[str, str]]:
         # (with its end state where the player shows one: its own marks, the plate's, are drawn as the rest)
-        return self._measured(scene_for(self.construction, figure, ending=self.style.camera))
+        return self._measured(scene_for(self.construction, figure, ending=self.style.camera), keep)
 
-    def _measured(self, scene: Any) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:
-        """:meth:`__call__` of the figure whose scene is *scene*."""
+    def _measured(self, scene: Any, keep: str | None = None) -> tuple[list[tuple[str, str, str]], list[float], tuple,
+                                                                      dict[str, str]]:
+        """:meth:`__call__` of the figure whose scene is *scene* (*keep*: as :meth:`frames` has it)."""
         st = self.style
         vp = Viewport.fit(scene.bbox, st, 0)
         full = (0.0, 0.0, round(vp.width, 2), round(vp.height, 2))
@@ -763,7 +793,7 @@ class Measure:
         for lk, ln in layers.values():
             keys += lk
             nums += ln
-        fk, fn, ft = self._furniture(scene.end_furniture, vp, marks=scene.end_drawn) \
+        fk, fn, ft = self._furniture(scene.end_furniture, vp, marks=scene.end_drawn, keep=keep) \
             if self.furniture_live is not False else self.held
         keys += fk
         nums += fn

@@ -49,7 +49,7 @@ from ..render.wire import arc_flags, blend, radii
 from .measure import Measure
 
 __all__ = ["LiveGiven", "LiveSweep", "Piece", "live_givens", "live_sweep", "pieces", "scan_pieces", "form_pieces",
-           "reach", "check_picks", "REFINE_PX", "QUANTUM_PX", "MIN_CELL", "CHECK_VALUES"]
+           "reach", "check_picks", "REFINE_PX", "QUANTUM_PX", "MIN_CELL", "SWITCH_CELL", "CHECK_VALUES"]
 
 
 @dataclass(frozen=True)
@@ -336,6 +336,54 @@ def form_pieces(construction: Construction, figure: Figure, given: str, domain: 
                         lambda u: _holds(construction, givens, protocol.params, given, value(u)), ahead=True)
 
 
+#: A change of the spots the plate's lettering stands at is put this close (in log10 of the given) below or above
+#: a grid value: the page writes either side's spots up to it and switches there (a jump of the drawing).
+SWITCH_CELL = MIN_CELL / 4
+
+
+def _switch_spots(data: dict[float, tuple], spots, jumps: list[tuple[float, float]], values, frames) -> None:
+    """Put each change of the spots the plate's lettering stands at (:meth:`Measure.spots_key`, *spots* of a grid
+    value) at a grid value: across a cell (a, b) of the refined grid *data* (log10 of the given -> its frame)
+    whose ends write it at other spots, a's spots are written up to a value :data:`SWITCH_CELL` below b where they
+    do not crowd there, else b's from a value as far above a where those do not; else the cell is split at its
+    midpoint (a value drawn anew) and each half asked so, down to MIN_CELL.  The cell of the switch is a jump of
+    the drawing (*jumps*, as the values *values* gives: the page draws the nearer side there), a few values
+    where the refinement chased each change down to MIN_CELL (Tafel 2's last piece: about 130 values, not 410).
+    *frames*: the frames at a list of log10 values, with the spots some of them keep (by their index)."""
+    jumped = {float(a) for a, _ in jumps}
+    us = sorted(data)
+    todo = [(a, b) for a, b in zip(us[:-1], us[1:]) if spots(a) != spots(b) and float(values(a)) not in jumped
+            and data[a][0] == data[b][0]]
+    as_array = lambda f: (f[0], np.asarray(f[1], dtype=float), *f[2:])  # noqa: E731
+    while todo:
+        n = len(todo)
+        asked = [b - SWITCH_CELL for _, b in todo] + [a + SWITCH_CELL for a, _ in todo]
+        drawn = frames(asked, {**{i: spots(a) for i, (a, _) in enumerate(todo)},
+                               **{n + i: spots(b) for i, (_, b) in enumerate(todo)}})
+        split = []
+        for i, (a, b) in enumerate(todo):
+            for at, (u, was) in enumerate(((asked[i], a), (asked[n + i], b))):
+                f = drawn[i + at * n]
+                if f[0] == data[was][0] and f[3].get("#spots", "") == spots(was):
+                    data[u] = as_array(f)
+                    jumps.append((float(values(u)), float(values(b))) if at == 0 else
+                                 (float(values(a)), float(values(u))))
+                    break
+            else:
+                if b - a >= MIN_CELL:
+                    split.append((a, b))
+                else:
+                    jumps.append((float(values(a)), float(values(b))))
+        if not split:
+            return
+        mids = [(a + b) / 2 for a, b in split]
+        drawn = frames(mids, {})
+        todo = []
+        for (a, b), m, i in zip(split, mids, range(len(mids))):
+            data[m] = as_array(drawn[i])
+            todo += [(x, y) for x, y in ((a, m), (m, b)) if spots(x) != spots(y) and data[x][0] == data[y][0]]
+
+
 _KEY_COLUMNS: dict[int, tuple] = {}
 
 
@@ -354,15 +402,16 @@ def _key_columns(keys: list[tuple[str, str, str]]) -> tuple[np.ndarray, ...]:
     return made
 
 
-def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
-                    snap: set[int]) -> tuple[float, dict[int, float]]:
+def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray, snap: set[int],
+                    unlike: np.ndarray | None = None) -> tuple[float, dict[int, float]]:
     """The largest distance (px) between the page's drawing at a cell's midpoint and the exact one, and the
     keys that exceed REFINE_PX with the distance of their coordinates (without large-arc flags).
 
     Coordinates are blended from the quantised ends (radii geometrically, as the page blends them);
     large-arc flags and snapped keys come from either end
     (the worse counts); a wrong flag moves the arc by the distance between the two centres its ends and
-    radius allow, 2 sqrt(r^2 - (c/2)^2)."""
+    radius allow, 2 sqrt(r^2 - (c/2)^2).  The numbers *unlike* marks (the plate's lettering where the cell's
+    values write it at other spots) are not asked."""
     owner, views, flags, geometric = _key_columns(keys)
     if owner.size == 0:
         return 0.0, {}
@@ -372,6 +421,8 @@ def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray,
     nearest = np.isin(owner, list(snap)) if snap else np.zeros(owner.size, dtype=bool)
     col_err[nearest] = np.maximum(np.abs(na - exact), np.abs(nb - exact))[nearest]
     col_err[views] = 0.0  # views frame the figure: blended, not refined for
+    if unlike is not None:
+        col_err[unlike] = 0.0
     c = np.flatnonzero(flags & ~nearest)  # the flags: each arc's numbers are c-5 .. c+3
     flipped = (na[c] != exact[c]) | (nb[c] != exact[c])
     half = np.hypot(exact[c + 2] - exact[c - 5], exact[c + 3] - exact[c - 4]) / 2
@@ -482,11 +533,11 @@ class LiveSweep:
 
 
 def _frames(construction: Construction, figure: Figure, given: str, values: np.ndarray, measure,
-            protocol: Any) -> list[tuple]:
+            protocol: Any, keep: dict[int, str] | None = None) -> list[tuple]:
     """(keys, numbers, fit, texts) of the player's figure at every value, from one sweep of *protocol* (the
-    figure's, or its piece's: :func:`pieces`)."""
+    figure's, or its piece's: :func:`pieces`); *keep*: :meth:`Measure.frames`'s."""
     replay = protocol.replay(construction.given_sweep(dict(figure.replay.givens), given, values, protocol.params))
-    return measure.frames(protocol, replay, len(values)), replay
+    return measure.frames(protocol, replay, len(values), keep), replay
 
 
 def live_sweep(construction: Construction, figure: Figure, given: str, *, initial: float | None = None,
@@ -539,6 +590,18 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     # per cell, its culprits' errors in the cell it was split from and in that one's parent: a mark that
     # jumps misses by the same at every depth, a smooth one by a quarter at each halving
     before: dict[tuple[float, float], tuple[dict[int, float], dict[int, float]]] = {}
+    # the spots the plate's lettering stands at about its places (Measure.spots_key) are a choice, not a coordinate:
+    # a cell across which they change is refined for the rest of the drawing only, and the change put at a grid
+    # value after (_switch_spots), not chased down to MIN_CELL
+    spots = lambda u: data[u][3].get("#spots", "")  # noqa: E731
+    lettering: dict[int, tuple[list, np.ndarray]] = {}  # per list of keys (by its identity): the lettering's numbers
+
+    def letters_of(keys: list) -> np.ndarray:
+        got = lettering.get(id(keys))
+        if got is None or got[0] is not keys:
+            got = lettering[id(keys)] = (keys, _columns(keys, lambda k: k[0] in measure.lettering_ids))
+        return got[1]
+
     while todo or first:
         mids = [(a + b) / 2 for a, b in todo]
         # and the midpoints of their halves, drawn ahead: a cell that must be split has its halves tested in the
@@ -567,7 +630,8 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
             if not ka == kb == fm[0]:
                 err, culprits = math.inf, {-1: math.inf}
             else:
-                err, culprits = _midpoint_error(ka, na, nb, fm[1], snap)
+                err, culprits = _midpoint_error(ka, na, nb, fm[1], snap, None if spots(a) == spots(b) == spots(m)
+                                                else letters_of(ka))
             if err <= REFINE_PX:
                 bound = max(bound, err)
                 continue
@@ -588,6 +652,8 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
                 continue
             jumps.append((float(values(a)), float(values(b))))
         todo = nxt
+    _switch_spots(data, spots, jumps, values, lambda us, keep: _frames(construction, figure, given, values(us),
+                                                                     measure, protocol, keep)[0])
     us = sorted(data)
     # The keys every grid value shares; a few elements change form (e.g. a curve's number of points):
     # they stay at the built value.  (Most values share one list of keys, the same object: each list is read once.)
@@ -620,6 +686,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     gone = [set(data[u][3].get("#absent", "").split()) for u in us]
     absent = {i: [int(i in g) for g in gone] for i in sorted(set().union(*gone), key=lambda i: (len(i), i))}
     said.pop("#absent", None)
+    said.pop("#spots", None)
     varying = sorted(i for i, ts in said.items() if len(ts) > 1 and not (rod and all(rod.match(t) for t in ts)))
     first = data[us[0]][0]
     snapped = [first[i] for i in sorted(snap) if i < len(first) and (len(forms) == 1 or first[i] in shared)]

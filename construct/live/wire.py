@@ -172,6 +172,10 @@ def _knots(live: LiveSweep, kinds: np.ndarray, columns: np.ndarray | None = None
         m = mid_of(i, j)
         if m is None:  # a cell the refinement did not split: every column's own
             shut[[i, j], at[:, None]] = True
+            if j - i > 1:  # (but for a value inside that is not its midpoint: where the plate's lettering switches
+                # its spots, live.sweep._switch_spots) -- kept by the columns the line between the ends misses there
+                err = misses(at, i, j, (u[i + 1:j] - u[i]) / (u[j] - u[i]), slice(i + 1, j))
+                shut[np.arange(i + 1, j)[None, :], at[err > ROW_PX][:, None]] = True
             continue
         # the line between the cell's quantised ends, at every grid value inside the cell, as drawn: first at
         # the midpoint alone (most columns still open miss there), then at the others for the columns that do not

@@ -253,20 +253,30 @@ def _result_strokes(scene: Any, vp: Any) -> list[tuple[float, float, float, floa
 
 
 def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, end: EndView, placing: Placing,
-                     factory: Any) -> dict[str, tuple[float, float, float]]:
+                     factory: Any, keep: dict[str, tuple[float, float, float]] | None = None,
+                     ) -> dict[str, tuple[float, float, float]]:
     """Where the plate's lettering of *sheet* (anything with ``end_furniture``: the plate at another value of a live
     given, in the built plate's form) stands about its places at that value, as :func:`lay_out_end` places it
     (:meth:`~construct.render.placing.Placing.end_lettering_at`: among that value's end-state *marks* on *vp*):
     {id: (dx, dy, distance)}, as ``placing.end_spots``.  A letter with no room there, or one that would take a
     leader where the built one has none (or lose its leader), keeps its built spot: the furniture keeps its form
-    over the sweep (its elements, by which the page knows them)."""
+    over the sweep (its elements, by which the page knows them).  *keep*: spots of this form (a neighbouring
+    value's), kept as they are where they crowd there no more than those placed anew
+    (:meth:`~construct.render.placing.Placing.end_crowd`: a letter that has no room there crowds either way).
+    """
     texts = [b for e in furniture_elements(end_fixed(sheet), vp.px, vp.scale, factory, size=end.size)
              if (b := lettering_box(e, end.size, style)) is not None]
-    got = placing.end_lettering_at(vp, end.letter, marks, texts, end_lettering(sheet, vp, style, end.size),
-                                   _result_strokes(sheet, vp))
+    lettering = end_lettering(sheet, vp, style, end.size)
+    crowd = placing.end_crowd(vp, end.letter, marks, texts, lettering, keep) if keep is not None else set()
+    if keep is not None and not crowd:
+        return keep
+    got = placing.end_lettering_at(vp, end.letter, marks, texts, lettering, _result_strokes(sheet, vp))
     built = placing.end_spots
-    return {**built, **{f: rel for f, rel in got.items()
-                        if f in built and (rel[2] >= LEADER_FROM) == (built[f][2] >= LEADER_FROM)}}
+    got = {**built, **{f: rel for f, rel in got.items()
+                       if f in built and (rel[2] >= LEADER_FROM) == (built[f][2] >= LEADER_FROM)}} if got else built
+    if keep is not None and len(placing.end_crowd(vp, end.letter, marks, texts, lettering, got)) >= len(crowd):
+        return keep
+    return got
 
 
 def end_furniture(scene: Scene, style: Style, vp: Viewport, end: EndView, placing: Placing, factory: Any,

@@ -397,20 +397,7 @@ class Placing:
         st = self.style
         size = st.label_size * letter
         held = list(taken)
-        letters = {}
-        for m in marks:
-            rel = self.end_spots.get(m.id)
-            if m.label and rel is not None:
-                px, py = vp.px(*m.geom)
-                letters[m.id] = label_box(px + letter * rel[0], py + letter * rel[1], m.label, size, st.label_font,
-                                          st.label_italic)
-        # the crowd: the letters whose built spot here meets another letter (but one it touched at the built value
-        # too) or the plate's other writing
-        at = {fid: label_box(p[0] + letter * self.end_spots[fid][0], p[1] + letter * self.end_spots[fid][1], text,
-                             size, st.label_font, st.label_italic) for fid, p, text in lettering if fid in self.end_spots}
-        touching = self.end_touching
-        crowd = {f for f, b in at.items() if any(_meet(b, o) for o in held) or any(
-            g != f and frozenset((f, g)) not in touching and _meet(b, o) for g, o in [*at.items(), *letters.items()])}
+        crowd, letters, at = self._end_crowd(vp, letter, marks, taken, lettering, self.end_spots)
         if not crowd:
             return {}
         held += list(letters.values()) + [b for f, b in at.items() if f not in crowd]
@@ -429,6 +416,45 @@ class Placing:
                              halo=HALO_PX / 2 * letter, reach=self.line_reach, soft=LineIndex(size, lines)))
         return {fid: ((spot[0] - px) / letter, (spot[1] - py) / letter, spot[2])
                 for fid, _r, _s, (px, py), _d, _t in items if (spot := got.get(fid)) is not None}
+
+    @staticmethod
+    def end_obstacle(m: Mark) -> bool:
+        """Whether :meth:`end_lettering_at` reads the end state's mark *m* (a point, a lettered mark, a result
+        line): the plate's lettering at another value is placed among those alone."""
+        return m.kind is MarkKind.POINT or bool(m.label) or (m.role == "result" and m.kind.stroked)
+
+    def end_crowd(self, vp: Viewport, letter: float, marks: Sequence[Mark],
+                  taken: Sequence[tuple[float, float, float, float]],
+                  lettering: Sequence[tuple[str, tuple[float, float], str]],
+                  spots: dict[str, tuple[float, float, float]]) -> set[str]:
+        """The plate's *lettering* that crowds where it stands at *spots* about its places ({id: (dx, dy,
+        distance)}, as :meth:`end_lettering_at` gives them: a neighbouring value's), at another value of a live
+        given (:meth:`end_lettering_at`'s arguments): each letter there on another one (but one it touched at the
+        built value too), on a point's letter or on the plate's other writing (*taken*), by its id."""
+        return self._end_crowd(vp, letter, marks, taken, lettering, spots)[0]
+
+    def _end_crowd(self, vp: Viewport, letter: float, marks: Sequence[Mark],
+                   taken: Sequence[tuple[float, float, float, float]],
+                   lettering: Sequence[tuple[str, tuple[float, float], str]],
+                   spots: dict[str, tuple[float, float, float]]) -> tuple[set[str], dict, dict]:
+        """:meth:`end_crowd`, the marks' letters' boxes and the lettering's at *spots*."""
+        st = self.style
+        size = st.label_size * letter
+        letters = {}
+        for m in marks:
+            rel = self.end_spots.get(m.id)
+            if m.label and rel is not None:
+                px, py = vp.px(*m.geom)
+                letters[m.id] = label_box(px + letter * rel[0], py + letter * rel[1], m.label, size, st.label_font,
+                                          st.label_italic)
+        # the crowd: the letters whose spot here meets another letter (but one it touched at the built value too)
+        # or the plate's other writing
+        at = {fid: label_box(p[0] + letter * spots[fid][0], p[1] + letter * spots[fid][1], text, size,
+                             st.label_font, st.label_italic) for fid, p, text in lettering if fid in spots}
+        touching = self.end_touching
+        crowd = {f for f, b in at.items() if any(_meet(b, o) for o in taken) or any(
+            g != f and frozenset((f, g)) not in touching and _meet(b, o) for g, o in [*at.items(), *letters.items()])}
+        return crowd, letters, at
 
     def _end_place(self, vp: Viewport, letter: float, marks: Sequence[Mark],
                    taken: Sequence[tuple[float, float, float, float]],

@@ -22,13 +22,13 @@ the last digit).
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import Any, Callable
 
 import numpy as np
 
 from ..kernel.curves import BezierCurve, Polyline
 from ..kernel.geometry import Circle, Line, Point, take
-from .marks import GAP_TIE, TWO_PI, MarkKind, fanned_lines, letter_point
+from .marks import GAP_TIE, TWO_PI, Mark, MarkKind, fanned_lines, letter_point, with_geom
 from .scene import MARGIN, Scene, on_curve_names
 from .sheet import BREAK_FRACTION, BREAK_FRACTION_Y, BREAK_KEEP
 from .svg import point_radius
@@ -201,7 +201,59 @@ class SweepDrawing:
         #: the end state's own marks' boxes on the page of every value: {mark id: (x0, y0, x1, y1), each over the
         #: values} (canvas px: the end step's view frames them, live.measure)
         self.end_boxes: dict[str, tuple[np.ndarray, ...]] = {}
+        #: the end state's own marks' geometry over the values, as their marks have it (drawing units, on the
+        #: broken sheet): {mark id: (coordinate arrays)} (:meth:`end_marks_at`)
+        self._end_geoms: dict[str, tuple[np.ndarray, ...]] = {}
         self.numbers.update(self._end_numbers(template, protocol))
+        self._template = template
+        self._end_rows: dict[Any, list[tuple[Mark, Any]]] = {}
+
+    def end_marks_at(self, i: int, among: "Callable[[Mark], bool] | None" = None) -> list[Mark]:
+        """The marks the end state draws at value *i* (the template's :meth:`~construct.render.scene.Scene.end_drawn`,
+        each with its geometry at that value, drawing units on that value's broken sheet), as a scene built there
+        has them (to the last bits of its arithmetic): what the end state's lettering is placed among, without a
+        scene (80 ms) for every value.  (Its areas aside: the page draws them from the curves that bound them.)
+        *among*: only the marks it holds for (the few a reader asks of, at every value of a sweep).
+
+        >>> from construct.constructions import get
+        >>> from construct.render.output import scene_for
+        >>> from construct.render.styles import STYLES
+        >>> c = get("crank"); fig = c.figure(parts=3)
+        >>> sweep = fig.protocol.replay(c.rod_ratio_sweep(dict(fig.replay.givens), [3.0, 5.0]))
+        >>> d = SweepDrawing(scene_for(c, fig, ending=True), fig.protocol, sweep, 2, STYLES["teaching"])
+        >>> [m.geom for m in d.end_marks_at(1) if m.id == "s0001-O"] == [m.geom for m in scene_for(c, fig,
+        ...     ending=True).end_drawn() if m.id == "s0001-O"]
+        True
+        """
+        rows = self._end_rows.get(among)
+        if rows is None:
+            rows = self._end_rows[among] = [(m, src) for m, src in self._end_sources()
+                                            if among is None or among(m)]
+        out = []
+        for m, src in rows:
+            if type(src) is tuple:  # a curve: its points' x and y
+                out.append(with_geom(m, tuple((float(x[i]), float(y[i])) for x, y in src)))
+            else:
+                out.append(with_geom(m, tuple(src[:, i].tolist())))
+        return out
+
+    def _end_sources(self) -> list[tuple[Mark, Any]]:
+        """Each mark of the end state but its areas with where its geometry stands over the values: an array
+        (coordinates x values) or a curve's points (a tuple of x, y arrays)."""
+        rows: dict[str, Any] = {}
+        for kind, marks in self.rows.items():
+            g = self.geoms[kind]
+            if not g or not marks:
+                continue
+            cols = np.stack([np.broadcast_to(c, (len(marks), self.n)) for c in g], axis=1)
+            rows.update((m.id, cols[r]) for r, m in enumerate(marks))
+        for mid, pts in self.curves.items():
+            rows[mid] = tuple(pts)
+        if getattr(self, "at_marks", None):
+            x, y = self.at_geom
+            rows.update((m.id, np.stack([x[r], y[r]])) for r, m in enumerate(self.at_marks))
+        rows.update((mid, np.stack(g)) for mid, g in self._end_geoms.items())
+        return [(m, rows[m.id]) for m in self._template.end_drawn() if m.kind is not MarkKind.AREA]
 
     def _end_numbers(self, template: Scene, protocol: Any) -> dict[str, np.ndarray]:
         """The end state's own marks (:mod:`construct.render.end_marks`: the plate's marks of the same objects, on
@@ -265,12 +317,14 @@ class SweepDrawing:
                         self.ok &= ~near
             if m.kind is MarkKind.POINT and m.name in points:
                 x, y = self._shifted(*points[m.name])
+                self._end_geoms[m.id] = (x, y)
                 px, py = self._px(x, y)
                 out[m.id] = np.stack([_r2(c) for c in (px, py, np.full(n, point_radius(m, st)))], -1)
                 self.end_boxes[m.id] = (px, py, px, py)
             elif m.kind is MarkKind.SEGMENT and isinstance(obj, Line):
                 x1, y1, x2, y2 = self._segment(obj, marked, margin, key=m.id)
                 (x1, y1), (x2, y2) = self._shifted(x1, y1), self._shifted(x2, y2)
+                self._end_geoms[m.id] = (x1, y1, x2, y2)
                 (x1, y1), (x2, y2) = self._px(x1, y1), self._px(x2, y2)
                 out[m.id] = np.stack([_r2(c) for c in (x1, y1, x2, y2)], -1)
                 self.end_boxes[m.id] = (np.minimum(x1, x2), np.minimum(y1, y2), np.maximum(x1, x2), np.maximum(y1, y2))
@@ -294,6 +348,7 @@ class SweepDrawing:
                 cx, cy, r, a0, sw = geom
                 if m.kind is MarkKind.CIRCLE:
                     x, y = self._shifted(cx + r, cy + r, centre=(cx, cy))
+                    self._end_geoms[m.id] = (x, y, r)
                     px, py = self._px(x, y)
                     out[m.id] = np.stack([_r2(c) for c in (px, py, r * scale)], -1)
                     self.end_boxes[m.id] = (px - r * scale, py - r * scale, px + r * scale, py + r * scale)
@@ -303,6 +358,7 @@ class SweepDrawing:
                 (ax0, ay0), (ax1, ay1) = self._px(bx0 + sx - cx, by1 + sy - cy), self._px(bx1 + sx - cx, by0 + sy - cy)
                 self.end_boxes[m.id] = (ax0, ay0, ax1, ay1)
                 cx, cy = sx, sy
+                self._end_geoms[m.id] = (cx, cy, r, a0, sw)
                 x0, y0 = self._px(cx + r * np.cos(a0), cy + r * np.sin(a0))
                 x1, y1 = self._px(cx + r * np.cos(a0 + sw), cy + r * np.sin(a0 + sw))
                 rr = r * scale

@@ -244,13 +244,10 @@ class _Boxes:
         x0, y0, x1, y1 = b
         return not ((x0 < self.x1) & (self.x0 < x1) & (y0 < self.y1) & (self.y0 < y1)).any()
 
-    def free_many(self, bs: list) -> list[bool]:
-        """:meth:`free` of each box of *bs*, asked at once."""
-        if not len(self.x0):
-            return [True] * len(bs)
-        b = np.array(bs, dtype=float).reshape(-1, 4)
-        x0, y0, x1, y1 = (b[:, k:k + 1] for k in range(4))
-        return (~((x0 < self.x1) & (self.x0 < x1) & (y0 < self.y1) & (self.y0 < y1)).any(axis=1)).tolist()
+    def free_all(self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray) -> np.ndarray:
+        """:meth:`free` of the boxes given as four arrays, asked at once."""
+        return ~((x0[:, None] < self.x1) & (self.x0 < x1[:, None]) & (y0[:, None] < self.y1)
+                 & (self.y0 < y1[:, None])).any(axis=1)
 
     def add(self, b) -> None:  # the letter is placed alone: nothing is asked after it
         pass
@@ -448,17 +445,13 @@ def _spots(ordered: "Sequence[tuple]", plan: "Sequence[tuple[int, float, int]]",
 
 
 @functools.lru_cache(maxsize=8)
-def _plan(distances: tuple[float, ...]) -> tuple[list[tuple[int, float, int]], tuple[float, ...],
-                                                 dict[int, tuple[int, int]]]:
-    """Every spot a letter may try, in the order tried: (ring, distance, turn); the rings' distances; each ring's
-    spots (first, end) in the plan -- the same for every letter of a placing, made once (a name tag is placed
-    alone, thousands of times a figure).  Not to be changed by the caller."""
+def _plan(distances: tuple[float, ...]) -> tuple[list[tuple[int, float, int]], tuple[float, ...]]:
+    """Every spot a letter may try, in the order tried: (ring, distance, turn); and the rings' distances -- the same
+    for every letter of a placing, made once (a name tag is placed alone, thousands of times a figure).  Not to be
+    changed by the caller."""
     plan = [(j, dist, turn) for j, dist in enumerate(_DISTANCES + distances)
             for turn in (_TURNS if dist in _DISTANCES else _TURNS_FAR)]
-    ring_of: dict[int, tuple[int, int]] = {}
-    for k, (j, _d, _t) in enumerate(plan):
-        ring_of[j] = (ring_of.get(j, (k, k))[0], k + 1)
-    return plan, _DISTANCES + distances, ring_of
+    return plan, _DISTANCES + distances
 
 
 def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float, float], str]],
@@ -519,12 +512,13 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     ordered = sorted(items, key=lambda it: (RANK.get(it[1], 2), it[2], it[0]))
     # every spot a letter may try, in the order tried: (ring, distance, turn) -- the ring's number, not its distance,
     # ends a ring (a farther distance may repeat a usual one)
-    plan, rings, ring_of = _plan(tuple(distances))
+    plan, rings = _plan(tuple(distances))
     # many letters: every spot of every letter made at once, and crossed off in bulk where a point surely takes it
     # (a crowd of points takes most spots of most letters) or a letter placed in this call meets it; the rest are
     # asked in the grid, in the order of the letters.  A few letters are asked spot by spot, each made as it is
     # tried (their first spots are most often free).  The boxes *taken* before are asked in the grid.
     bulk = len(ordered) >= _CROWD
+    alone = isinstance(grid, _Boxes)
     if bulk:
         spots = _spots(ordered, plan, size, font, italic, halo)
         sx0, sy0, sx1, sy1 = spots[2:]
@@ -533,8 +527,6 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
             alive = ~_DotCounts(dots, r, size).surely_taken(sx0, sy0, sx1, sy1)
         # the box round each letter's spots: a letter placed takes spots of those whose box it meets, of no other
         around = (sx0.min(axis=1), sy0.min(axis=1), sx1.max(axis=1), sy1.max(axis=1))
-        # the first spot of each letter (kept for the magnified views when no spot is free)
-        firsts = list(zip(*(a[:, 0].tolist() for a in spots)))
 
     def takes(b: tuple[float, float, float, float], after: int) -> None:
         """The box *b* is taken: no spot it meets of the letters after the first *after* is free."""
@@ -556,9 +548,14 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
         clear = None  # with soft lines: the first free spot near the point that no line crosses
         least = None  # else the near free spot the least of those lines would be broken for: (length, spot)
         if spot is None:
-            if bulk:
-                f = firsts[n]
-                first = (f[0], f[1], f[2:], plan[0][1])
+            if alone:
+                # a letter alone (a name tag, thousands a figure): all its spots made at once and asked of the
+                # boxes at once; the free ones are asked of the lines in the order tried
+                spots = _spots(ordered, plan, size, font, italic, halo)
+                alive = grid.free_all(*(a[0] for a in spots[2:]))[None, :]
+            if bulk or alone:
+                first = (float(spots[0][n, 0]), float(spots[1][n, 0]), tuple(float(a[n, 0]) for a in spots[2:]),
+                         plan[0][1])
                 asked: Iterable[int] = np.flatnonzero(alive[n]).tolist()
                 row = None
             else:
@@ -566,8 +563,6 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                 base = math.atan2(-dy, dx)  # y down on the sheet
                 w = text_width(text, size, font, italic)
                 ring_cs: dict[int, tuple[float, float]] = {}  # each direction's cosine and sine, for all distances
-                batch = isinstance(grid, _Boxes)
-                ring_spots: dict[int, tuple] = {}
 
                 def spot_at(k: int) -> tuple[float, float, tuple[float, float, float, float]]:
                     _j, dist, turn = plan[k]
@@ -588,21 +583,14 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                     if clear or (spot and (soft is None or max(rings[ring:j]) >= LEADER_FROM)):
                         break
                     ring = j
-                if bulk:
+                if bulk or alone:
                     if row is None:
                         row = [a[n].tolist() for a in spots]
                     lx, ly, box = row[0][i], row[1][i], (row[2][i], row[3][i], row[4][i], row[5][i])
-                    free = None
+                    free = True if alone else None
                 else:
-                    if batch:
-                        if i not in ring_spots:  # a letter alone: its ring's spots asked of the boxes at once
-                            lo, hi = ring_of[j]
-                            made = [spot_at(k) for k in range(lo, hi)]
-                            ring_spots.update(zip(range(lo, hi), zip(made, grid.free_many([m[2] for m in made]))))
-                        (lx, ly, box), free = ring_spots[i]
-                    else:
-                        lx, ly, box = spot_at(i)
-                        free = None
+                    lx, ly, box = spot_at(i)
+                    free = None
                     if first is None:
                         first = (lx, ly, box, dist)
                 if not (grid.free(box) if free is None else free) or strokes.meets(box, reach, only):

@@ -78,6 +78,8 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
     # a tag is seen while its step is current and where its step is an input: it is placed at the
     # least magnified of those views (where the letters are largest beside the points)
     lowest: dict[int, int] = {}
+    # each step's inputs, asked once (three walks over the steps below)
+    inputs = [input_steps(k) for k in range(1, len(sc.steps) + 1)] if st.camera else []
     if st.camera:
         step_levels = [level(zoom_of(v, full)) for v in views]
 
@@ -87,8 +89,8 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
         steps = {m.step for m in tags}
         for m in tags:
             lowest[m.step] = lvl_of(m.step)
-        for k in range(1, len(sc.steps) + 1):
-            for s_ in input_steps(k):
+        for k, ins in enumerate(inputs, 1):
+            for s_ in ins:
                 if s_ in steps:
                     lowest[s_] = min(lowest[s_], lvl_of(k))
     by_level: dict[int, list[Mark]] = {}
@@ -98,8 +100,8 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
     if st.camera:
         for m in tags:
             shown_at[m.step].add(lvl_of(m.step))
-        for k in range(1, len(sc.steps) + 1):
-            for s_ in input_steps(k):
+        for k, ins in enumerate(inputs, 1):
+            for s_ in ins:
                 if s_ in shown_at:
                     shown_at[s_].add(lvl_of(k))
     size = st.label_size
@@ -132,6 +134,7 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
     line_lo = np.minimum(line_a[:, 0:2], line_a[:, 2:4])
     line_hi = np.maximum(line_a[:, 0:2], line_a[:, 2:4])
 
+    scaled: dict[float, tuple] = {}
     reach = (max(TAG_FARTHER) + 3.0) * size  # how far from its point a tag's box may reach (letter units)
 
     def near(items, z: float, f: float):
@@ -143,9 +146,10 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
         ys = [it[3][1] for it in items]
         r = reach * f
         x0, y0, x1, y1 = min(xs) - r, min(ys) - r, max(xs) + r, max(ys) + r
-        dz = dot_a * z
+        if z not in scaled:  # (the points and lines at a level's zoom: made once, asked by each tag there)
+            scaled[z] = dot_a * z, line_lo * z, line_hi * z
+        dz, lo, hi = scaled[z]
         ds = dz[(x0 <= dz[:, 0]) & (dz[:, 0] <= x1) & (y0 <= dz[:, 1]) & (dz[:, 1] <= y1)]
-        lo, hi = line_lo * z, line_hi * z
         mask = (lo[:, 0] <= x1) & (hi[:, 0] >= x0) & (lo[:, 1] <= y1) & (hi[:, 1] >= y0)
         return ds, mask.tolist()
 
@@ -153,8 +157,8 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
     seen_with: dict[int, dict[int, set[int]]] = {}
     if st.camera:
         tag_steps = {m.step for m in tags}
-        for k in range(1, len(sc.steps) + 1):
-            together = ({k} | input_steps(k)) & tag_steps
+        for k, ins in enumerate(inputs, 1):
+            together = ({k} | ins) & tag_steps
             mates = seen_with.setdefault(lvl_of(k), {})
             for s_ in together:
                 mates.setdefault(s_, set()).update(together)
@@ -165,13 +169,17 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
     for m in tags:
         tags_of.setdefault(m.step, []).append(m)
 
+    def frame_at(lvl: int):
+        """:func:`frame` of level *lvl*, made once: (zoom, letter factor, the boxes as a list and as an array)."""
+        if lvl not in frames:
+            z, f, boxes = frame(lvl)
+            frames[lvl] = (z, f, boxes, np.array(boxes, dtype=float).reshape(-1, 4))
+        return frames[lvl]
+
     def place_at(m: Mark, lvl: int) -> bool:
         """Place tag *m* at level *lvl*, clear of the letters there and of the tags placed so far that are
         seen with it at that level (tags never seen together may share a spot)."""
-        if lvl not in frames:
-            z, f, boxes = frame(lvl)
-            frames[lvl] = (z, f, np.array(boxes, dtype=float).reshape(-1, 4))
-        z, f, boxes = frames[lvl]
+        z, f, _taken, boxes = frame_at(lvl)
         x, y = pts[m.id][0] * z, pts[m.id][1] * z
         r = reach * f
         near_ = boxes[(boxes[:, 2] >= x - r) & (boxes[:, 0] <= x + r) & (boxes[:, 3] >= y - r) & (boxes[:, 1] <= y + r)]
@@ -212,7 +220,7 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
     # never stacked on a letter, a point, a result line or a tag seen with it
     moves: dict[str, dict[int, tuple[float, float, float]]] = {}
     for lvl in sorted({v for vs in shown_at.values() for v in vs}):
-        z, f, taken = frame(lvl)
+        z, f, taken, _boxes = frame_at(lvl)
         here = [byid[i] for i in out if lvl in shown_at[byid[i].step]]
         if all(lowest.get(m.step, 0) == lvl for m in here):
             continue  # placed together at this level, against the same letters: nothing to check

@@ -22,7 +22,7 @@ from typing import Any, Callable, Protocol, Sequence
 import numpy as np
 
 from .camera import THIN_FROM, ZOOM_LEVELS, View, level, zoom_of
-from .lettering import HALO_PX, RANK, label_box, place
+from .lettering import HALO_PX, RANK, label_box, place, spots_of
 from .scene import Mark, MarkKind, Scene, label_offset_direction
 from .styles import Style
 from .viewport import Viewport
@@ -137,6 +137,12 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
     scaled: dict[float, tuple] = {}
     reach = (max(TAG_FARTHER) + 3.0) * size  # how far from its point a tag's box may reach (letter units)
 
+    def at_zoom(z: float):
+        """The points and the result lines' lower and upper corners at zoom *z*: made once, asked by each tag there."""
+        if z not in scaled:
+            scaled[z] = dot_a * z, line_lo * z, line_hi * z
+        return scaled[z]
+
     def near(items, z: float, f: float):
         """The points and the numbers of the result lines (at zoom *z*) a tag of *items* could meet:
         within its reach (the lines as a mask over the level's :meth:`_lines_at`): as far as a tag's box
@@ -146,9 +152,7 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
         ys = [it[3][1] for it in items]
         r = reach * f
         x0, y0, x1, y1 = min(xs) - r, min(ys) - r, max(xs) + r, max(ys) + r
-        if z not in scaled:  # (the points and lines at a level's zoom: made once, asked by each tag there)
-            scaled[z] = dot_a * z, line_lo * z, line_hi * z
-        dz, lo, hi = scaled[z]
+        dz, lo, hi = at_zoom(z)
         ds = dz[(x0 <= dz[:, 0]) & (dz[:, 0] <= x1) & (y0 <= dz[:, 1]) & (dz[:, 1] <= y1)]
         mask = (lo[:, 0] <= x1) & (hi[:, 0] >= x0) & (lo[:, 1] <= y1) & (hi[:, 1] >= y0)
         return ds, mask.tolist()
@@ -203,11 +207,61 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
         out[m.id] = ((gx - x) / f, (gy - y) / f, dist)
         return True
 
+    def place_level(ms: list[Mark], lvl: int) -> None:
+        """:func:`place_at` each tag of *ms* in turn at level *lvl*: the spots of the nearest rings of all of them
+        made and asked of the letters, points and rings near each at once; a tag with none of those free of the
+        tags placed before it and of the result lines is placed by :func:`place_at`."""
+        z, f, _taken, boxes = frame_at(lvl)
+        r, sz, halo = reach * f, size * f, HALO_PX / 2 * f
+        xy = [(pts[m.id][0] * z, pts[m.id][1] * z) for m in ms]
+        items = [(m.id, m.role, m.step, p, label_offset_direction(m.geom, scale=span), sc.display_name(m.name))
+                 for m, p in zip(ms, xy)]
+        lx, ly, sx0, sy0, sx1, sy1, dist = spots_of(items, sz, font=st.label_font, italic=st.label_italic,
+                                                    halo=halo, distances=TAG_FARTHER, near=True)
+        x, y = (np.array(xy, dtype=float).reshape(-1, 2)[:, k:k + 1] for k in (0, 1))
+        dz, lo, hi = at_zoom(z)
+        d = 0.3 * sz
+        # what each tag's place_at asks: the level's letters within its reach, the points within it (as boxes)
+        obst = np.concatenate([boxes, np.column_stack((dz[:, 0] - d, dz[:, 1] - d, dz[:, 0] + d, dz[:, 1] + d))])
+        within = np.concatenate([
+            (boxes[:, 2] >= x - r) & (boxes[:, 0] <= x + r) & (boxes[:, 3] >= y - r) & (boxes[:, 1] <= y + r),
+            (x - r <= dz[:, 0]) & (dz[:, 0] <= x + r) & (y - r <= dz[:, 1]) & (dz[:, 1] <= y + r)], axis=1)
+        # (the box round each tag's spots: only the letters and points meeting it are asked spot by spot)
+        a0, b0, a1, b1 = sx0.min(axis=1)[:, None], sy0.min(axis=1)[:, None], sx1.max(axis=1)[:, None], \
+            sy1.max(axis=1)[:, None]
+        ti, bi = np.nonzero(within & (obst[:, 0] < a1) & (a0 < obst[:, 2]) & (obst[:, 1] < b1) & (b0 < obst[:, 3]))
+        taken = np.zeros(sx0.shape, dtype=bool)
+        if len(ti):
+            o = obst[bi]
+            hit = ((sx0[ti] < o[:, 2:3]) & (o[:, 0:1] < sx1[ti]) & (sy0[ti] < o[:, 3:4]) & (o[:, 1:2] < sy1[ti]))
+            rows, starts = np.unique(ti, return_index=True)
+            taken[rows] = np.logical_or.reduceat(hit, starts, axis=0)
+        if st.ring_px:
+            # the ring the player draws round the point while its step is current
+            rr = st.ring_px * f
+            taken |= (sx0 < x + rr) & (x - rr < sx1) & (sy0 < y + rr) & (y - rr < sy1)
+        lines = placing.lines_at(z, sz)
+        only = (lo[:, 0] <= x + r) & (hi[:, 0] >= x - r) & (lo[:, 1] <= y + r) & (hi[:, 1] >= y - r)
+        free = [np.flatnonzero(~t).tolist() for t in taken]
+        for t, m in enumerate(ms):
+            mates = [label_box(pts[o.id][0] * z + out[o.id][0] * f, pts[o.id][1] * z + out[o.id][1] * f,
+                               sc.display_name(o.name), sz, st.label_font, st.label_italic, halo)
+                     for k in seen_with.get(lvl, {}).get(m.step, ()) if lvl in shown_at[k]
+                     for o in tags_of.get(k, ()) if o.id in out] if free[t] else ()
+            for i in free[t]:
+                b = (float(sx0[t, i]), float(sy0[t, i]), float(sx1[t, i]), float(sy1[t, i]))
+                if any(b[0] < c[2] and c[0] < b[2] and b[1] < c[3] and c[1] < b[3] for c in mates) or \
+                        lines.meets(b, placing.line_reach, only[t]):
+                    continue
+                out[m.id] = ((float(lx[t, i]) - xy[t][0]) / f, (float(ly[t, i]) - xy[t][1]) / f, float(dist[i]))
+                break
+            else:
+                place_at(m, lvl)
+
     # each tag at the least magnified level it is seen at, in the placer's order (results first)
     hidden: dict[str, str] = {}
     for lvl, ms in sorted(by_level.items()):
-        for m in sorted(ms, key=lambda m: (RANK.get(m.role, 2), m.step, m.id)):
-            place_at(m, lvl)
+        place_level(sorted(ms, key=lambda m: (RANK.get(m.role, 2), m.step, m.id)), lvl)
     # a tag with no room there takes its spot at the next level that has room (a step's caption names it),
     # given way at the levels below
     for m in tags:

@@ -476,22 +476,17 @@ def _spots(ordered: "Sequence[tuple]", distances: tuple[float, ...], size: float
 
 
 def spots_of(items: "Sequence[tuple]", size: float, *, font: str = DEFAULT_FONT, italic: bool = False,
-             halo: float = HALO_PX / 2, distances: Sequence[float] = (), near: bool = False) -> tuple[Any, ...]:
+             halo: float = HALO_PX / 2, distances: Sequence[float] = ()) -> tuple[Any, ...]:
     """The spots :func:`place` tries for each letter of *items* (as it takes them, in their order), in the order
     tried: arrays of a row per letter and a column per spot of its baseline x, y and its box x0, y0, x1, y1 (the
-    numbers :func:`place` asks), and each spot's distance in letter heights.  *near*: the spots of the two nearest
-    rings only (where most letters find room).
+    numbers :func:`place` asks), and each spot's distance in letter heights.  The usual rings come first whatever
+    the farther *distances*: without those, the spots where most letters find room.
 
     >>> lx, ly, x0, y0, x1, y1, dist = spots_of([("a", "result", 1, (0.0, 0.0), (1.0, 0.0), "q1")], 10.0)
     >>> lx.shape, float(dist[0]), bool(x0[0, 0] > 0)  # the first spot: 0.9 letter heights to the right
     ((1, 60), 0.9, True)
     """
-    got = _spots(items, tuple(distances), size, font, italic, halo)
-    dists = _plan(tuple(distances))[4]
-    if near:
-        end = _plan(tuple(distances))[5][0][1]
-        return tuple(a[:, :end] for a in got) + (dists[:end],)
-    return got + (dists,)
+    return _spots(items, tuple(distances), size, font, italic, halo) + (_plan(tuple(distances))[4],)
 
 
 @functools.lru_cache(maxsize=8)

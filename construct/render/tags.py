@@ -208,7 +208,7 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
         return True
 
     def place_level(ms: list[Mark], lvl: int) -> None:
-        """:func:`place_at` each tag of *ms* in turn at level *lvl*: the spots of the nearest rings of all of them
+        """:func:`place_at` each tag of *ms* in turn at level *lvl*: the spots of the usual rings of all of them
         made and asked of the letters, points and rings near each at once; a tag with none of those free of the
         tags placed before it and of the result lines is placed by :func:`place_at`."""
         z, f, _taken, boxes = frame_at(lvl)
@@ -216,8 +216,8 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
         xy = [(pts[m.id][0] * z, pts[m.id][1] * z) for m in ms]
         items = [(m.id, m.role, m.step, p, label_offset_direction(m.geom, scale=span), sc.display_name(m.name))
                  for m, p in zip(ms, xy)]
-        lx, ly, sx0, sy0, sx1, sy1, dist = spots_of(items, sz, font=st.label_font, italic=st.label_italic,
-                                                    halo=halo, distances=TAG_FARTHER, near=True)
+        # (the usual rings: the farther ones are tried by place_at)
+        lx, ly, sx0, sy0, sx1, sy1, dist = spots_of(items, sz, font=st.label_font, italic=st.label_italic, halo=halo)
         x, y = (np.array(xy, dtype=float).reshape(-1, 2)[:, k:k + 1] for k in (0, 1))
         dz, lo, hi = at_zoom(z)
         d = 0.3 * sz

@@ -223,13 +223,16 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
         d = 0.3 * sz
         # what each tag's place_at asks: the level's letters within its reach, the points within it (as boxes)
         obst = np.concatenate([boxes, np.column_stack((dz[:, 0] - d, dz[:, 1] - d, dz[:, 0] + d, dz[:, 1] + d))])
-        within = np.concatenate([
-            (boxes[:, 2] >= x - r) & (boxes[:, 0] <= x + r) & (boxes[:, 3] >= y - r) & (boxes[:, 1] <= y + r),
-            (x - r <= dz[:, 0]) & (dz[:, 0] <= x + r) & (y - r <= dz[:, 1]) & (dz[:, 1] <= y + r)], axis=1)
         # (the box round each tag's spots: only the letters and points meeting it are asked spot by spot)
         a0, b0, a1, b1 = sx0.min(axis=1)[:, None], sy0.min(axis=1)[:, None], sx1.max(axis=1)[:, None], \
             sy1.max(axis=1)[:, None]
-        ti, bi = np.nonzero(within & (obst[:, 0] < a1) & (a0 < obst[:, 2]) & (obst[:, 1] < b1) & (b0 < obst[:, 3]))
+        meet = (obst[:, 0] < a1) & (a0 < obst[:, 2]) & (obst[:, 1] < b1) & (b0 < obst[:, 3])
+        if not ((a0 - d >= x - r) & (a1 + d <= x + r) & (b0 - d >= y - r) & (b1 + d <= y + r)).all():
+            # a spot beyond a tag's reach: what meets it there is asked only within the reach, as place_at asks
+            meet &= np.concatenate([
+                (boxes[:, 2] >= x - r) & (boxes[:, 0] <= x + r) & (boxes[:, 3] >= y - r) & (boxes[:, 1] <= y + r),
+                (x - r <= dz[:, 0]) & (dz[:, 0] <= x + r) & (y - r <= dz[:, 1]) & (dz[:, 1] <= y + r)], axis=1)
+        ti, bi = np.nonzero(meet)
         taken = np.zeros(sx0.shape, dtype=bool)
         if len(ti):
             o = obst[bi]
@@ -307,12 +310,12 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
             # it lost its spot to all the tags of the level together; it holds it where it is seen only
             # with the tags seen together with it (crank step 181: M1 gave way to tags never shown with it)
             mates = seen_with.get(lvl, {}).get(byid[i].step, set())
-            local = [o for o in items if byid[o[0]].step in mates and (o[0] in holds or o[0] == i)]
-            if len(local) < len(items) and clear[i]:
+            if clear[i]:  # (asked first: the tags seen with it are gathered only for a spot free of the rest)
+                local = [o for o in items if byid[o[0]].step in mates and (o[0] in holds or o[0] == i)]
                 # it holds its spot where the spot is also free of the tags seen with it
                 b = box_of[i]
-                if not any(b[0] < c[2] and c[0] < b[2] and b[1] < c[3] and c[1] < b[3]
-                           for c in (box_of[o[0]] for o in local if o[0] != i)):
+                if len(local) < len(items) and not any(b[0] < c[2] and c[0] < b[2] and b[1] < c[3] and c[1] < b[3]
+                                                       for c in (box_of[o[0]] for o in local if o[0] != i)):
                     holds.add(i)  # the tags it is seen with after it are placed with it
                     continue
             losers.append(it)

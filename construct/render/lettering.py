@@ -231,27 +231,20 @@ class _Grid:
                 else:
                     got.append(b)
 
-
     def add_many(self, boxes: np.ndarray) -> None:
-        """:meth:`add` of each box (rows x0, y0, x1, y1), in order, their cells found at once (the points of a
-        placing: thousands)."""
-        c, cells = self.cell, self.cells
-        i0, j0, i1, j1 = np.floor(boxes / c).astype(int).T.tolist()
+        """:meth:`add` of each box (rows x0, y0, x1, y1), in order, the cells of those within one cell found at once
+        (the points of a placing: thousands)."""
+        cells = self.cells
+        i0, j0, i1, j1 = np.floor(boxes / self.cell).astype(int).T.tolist()
         for b, a0, b0, a1, b1 in zip(map(tuple, boxes.tolist()), i0, j0, i1, j1):
-            if a0 == a1 and b0 == b1:
-                got = cells.get((a0, b0))
-                if got is None:
-                    cells[(a0, b0)] = [b]
-                else:
-                    got.append(b)
+            if a0 != a1 or b0 != b1:
+                self.add(b)
                 continue
-            for i in range(a0, a1 + 1):
-                for j in range(b0, b1 + 1):
-                    got = cells.get((i, j))
-                    if got is None:
-                        cells[(i, j)] = [b]
-                    else:
-                        got.append(b)
+            got = cells.get((a0, b0))
+            if got is None:
+                cells[(a0, b0)] = [b]
+            else:
+                got.append(b)
 
 
 class _Boxes:

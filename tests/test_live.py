@@ -390,7 +390,7 @@ def test_the_pieces_read_off_a_sweep_are_where_fresh_builds_change_their_steps(n
 
 def test_a_pieces_unlettered_protocol_draws_what_a_lettered_build_draws():
     """The pieces other than the built figure's are unlettered builds (their letters are a third of a build's
-    time; a scene of one would read its captions anew): what the player is sent of a piece is the same as from a
+    time; their captions are left as written): what the player is sent of a piece is the same as from a
     lettered build there (the stroke fractions' shortest piece but the built one's)."""
     import json
 

@@ -189,9 +189,9 @@ def pieces(construction: Construction, figure: Figure, given: str, domain: Domai
     build everywhere); several where it does (Tafel I's piston-force pieces run through the points between their
     corners: which points those are depends on the rod).  Each piece's protocol is built inside it (the built
     figure's own in its piece; the others unlettered, :func:`~construct.kernel.instruments.unlettered`: their
-    steps are a lettered build's, and a scene reads their captions into the figure's letters where it shows
-    them); the changes are found at *scan* values evenly in log10, then by bisection in log10 to FORM_TOL.
-    Where the construction reads its choices off a sweep
+    steps are a lettered build's, their captions are left as written, and what a player is sent of a piece
+    reads none of them); the changes are found at *scan* values evenly in log10, then by bisection in log10
+    to FORM_TOL.  Where the construction reads its choices off a sweep
     (:attr:`~construct.constructions.Construction.form`), the steps' form at all the values of a round is one
     replay of the built protocol over them (:func:`form_pieces`); elsewhere a fresh build at each value tells it
     (:func:`scan_pieces`).  A given the construction names in :attr:`~construct.constructions.Construction.steady`
@@ -278,7 +278,7 @@ def _pieces_from(construction: Construction, figure: Figure, given: str, domain:
     if not all(holds(a) for a in ends[0::2]):  # a build that fails inside the domain (reach found it holds)
         return [Piece(domain.low, domain.high, figure.protocol)]
     kw = _keywords(construction, figure)
-    with unlettered():  # (the captions' letters, a third of a build's time, are read where a scene shows them)
+    with unlettered():  # (the captions' letters are a third of a build's time; the live data reads no caption)
         return [Piece(domain.low if a == lo else 10 ** a, domain.high if b == hi else 10 ** b,
                       figure.protocol if form[a] == built else construction.build(**{**kw, given: value(a)}).protocol)
                 for a, b in zip(ends[0::2], ends[1::2])]

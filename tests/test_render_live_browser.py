@@ -1494,3 +1494,25 @@ def test_the_rod_written_at_the_break_is_the_sliders_in_every_piece_of_the_domai
         assert page.evaluate(written) == [said], (v, page.evaluate(written))
     assert not errors, errors
     page.close()
+
+
+def test_every_rod_length_the_page_holds_is_the_sliders_hidden_or_not(browser, crank6_live):
+    """At three fifths of the crank's steps, dragged (``input`` events only) from the book's L/r = 5, where the
+    rod is broken, to 1.5 and 3, where it is not: every text of the figure that writes the rod's length -- the
+    page's own at the break, hidden now, and the plate's dimension of the end state, not shown before the end --
+    says the slider's value.  The hidden one kept "L = 5 r" (and after 8 -> 1.5, "L = 8 r"), a length no value
+    shown had, in the document a screen reader or a test reads; shown again at a break, it says the value."""
+    page, errors = _open(browser, crank6_live)
+    page.evaluate("() => { const s = document.getElementById('slider'); s.value = Math.round(0.6 * s.max); s.oninput(); }")
+    _at_step_view(page)
+    rods = """() => Array.from(document.querySelectorAll('#figure text'))
+        .filter(t => t.textContent.startsWith('L =')).map(t => [t.textContent, t.getClientRects().length > 0])"""
+    for v, broken in ((1.5, False), (8.0, True), (3.0, False), (40.0, True)):
+        _drag_to(page, "rod_ratio", v)
+        said = f"L = {v:g} r".replace(".", ",")
+        got = page.evaluate(rods)
+        assert got and all(text == said for text, _ in got), (v, got)
+        # (shown: the page's own label and its halo at the break, where the rod is broken, and nothing else)
+        assert sum(shown for _, shown in got) == (2 if broken else 0), (v, got)
+    assert not errors, errors
+    page.close()

@@ -456,13 +456,19 @@ LIVE_SCRIPT = r"""
     }
     // the rod's length written at each break (a broken rod is drawn short: the figure says how long it is)
     var rod = sweeps.filter(function(w){ return w.L.rod; })[0];
+    // (the value shown: of the piece of the domain that moves, not of the first piece's sweep, left where it was)
+    var said = rod && rod.L.rod.replace("{v}", book(valueOf(rod.L.given)));
     for (axis = 0; axis < 2; axis++) {
       var lab = rodLabels[axis], at = first[axis];
       // (in the end state at the book's values the plate's own furniture writes it, a dimension L = 5 r)
       // (and at every value where that furniture follows the given)
       var inPlate = endWritesRod && fin && (!S.L.furniture_held || Math.abs(Math.log10(S.value / S.L.initial)) < 1e-9);
-      // (its display in its style too: the end state's rule for its letters, .fin .lbg.pf, outranks the attribute)
-      if (!rod || !at || inPlate) { if (lab) { lab.g.setAttribute("display", "none"); lab.g.style.display = "none"; } continue; }
+      // (its display in its style too: the end state's rule for its letters, .fin .lbg.pf, outranks the attribute;
+      // hidden, it still says the slider's value: no stale length left in the document for a reader or a test)
+      if (!rod || !at || inPlate) {
+        if (lab) { lab.g.setAttribute("display", "none"); lab.g.style.display = "none"; if (said) { setText(lab.halo, said); setText(lab.text, said); } }
+        continue;
+      }
       if (!lab) {
         // (pf: shown in the end state too, where the plate's furniture that writes it is not: away from the book)
         var lg = mk("g", "lbg rodlen pf", svg.querySelector("#furniture") || svg);
@@ -474,11 +480,9 @@ LIVE_SCRIPT = r"""
       }
       lab.g.removeAttribute("display"); lab.g.style.display = "";
       lab.g.setAttribute("transform", "translate(" + round2(at[0]) + " " + round2(at[1]) + ")");
-      // (the value shown: of the piece of the domain that moves, not of the first piece's sweep, left where it was)
-      var said = rod.L.rod.replace("{v}", book(valueOf(rod.L.given)));
       setText(lab.halo, said); setText(lab.text, said);
     }
-    if (rod) for (var ri = 0; ri < rodTexts.length; ri++) setText(rodTexts[ri], rod.L.rod.replace("{v}", book(valueOf(rod.L.given))));
+    if (rod) for (var ri = 0; ri < rodTexts.length; ri++) setText(rodTexts[ri], said);
   }
   // ---- areas between two graphs: drawn anew from the graphs that bound them (kernel/areas.py area_between) ----
   var areas = [];

@@ -53,8 +53,9 @@ def bezier_controls(P) -> list[tuple[tuple[float, float], ...]]:
 
 
 def bezier_arrays(P: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """:func:`bezier_controls` on arrays: the points *P* (n x 2) -> p1, c1, c2, p2 (each (n - 1) x 2), the same
-    numbers (the same operations in the same order).
+    """:func:`bezier_controls` on arrays: the points *P* (a row each: n x 2, or one coordinate of the points at
+    every value of a sweep, n x values) -> p1, c1, c2, p2 (each n - 1 rows), the same numbers (the same operations
+    in the same order).
 
     >>> [a.tolist() for a in bezier_arrays(np.array([(0.0, 0.0), (6.0, 0.0)]))]
     [[[0.0, 0.0]], [[1.0, 0.0]], [[5.0, 0.0]], [[6.0, 0.0]]]

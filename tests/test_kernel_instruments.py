@@ -137,3 +137,24 @@ def test_a_builders_replay_at_its_own_givens_is_what_it_made_bit_for_bit():
     assert b.replay(p, {"s": 3.0})["k"].radius == 3.0  # other givens: replayed
     other = builder_with(A=(0.0, 0.0)).protocol()
     assert b.replay(other) is not None and list(b.replay(other)) == ["A"]  # another builder's protocol: replayed
+
+
+def test_an_unlettered_builds_protocol_replays_a_sweep_of_its_givens():
+    """An unlettered build's protocol is a live player's piece (construct.live.sweep.pieces): swept over arrays of
+    its givens it replays them, as a lettered build's does (its own givens: what the build made)."""
+    import numpy as np
+
+    from construct.kernel.instruments import unlettered
+
+    def build():
+        b = Builder("demo", givens={"s": 2.0})
+        b.given_point("A", 0.0, 0.0)
+        b.given_point("B", 1.0, 0.0, unit="s")
+        b.circle_through("k", "A", "B")
+        return b.protocol()
+
+    with unlettered():
+        sketch = build()
+    radii = sketch.replay({"s": np.array([1.5, 3.0])})["k"].radius
+    assert list(radii) == [1.5, 3.0]  # |AB| = s
+    assert sketch.replay({"s": 2.0})["k"].radius == 2.0 == sketch.replay()["k"].radius

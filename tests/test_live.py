@@ -388,6 +388,26 @@ def test_the_pieces_read_off_a_sweep_are_where_fresh_builds_change_their_steps(n
             [(p.low, p.high, _form(p.protocol)) for p in found]
 
 
+def test_a_pieces_unlettered_protocol_draws_what_a_lettered_build_draws():
+    """The pieces other than the built figure's are unlettered builds (their letters are a third of a build's
+    time; their captions are left as written): what the player is sent of a piece is the same as from a
+    lettered build there (the stroke fractions' shortest piece but the built one's)."""
+    import json
+
+    from construct.live.sweep import Piece, _keywords, reach
+
+    c = get("inertia-stroke-fractions")
+    fig = c.figure()
+    g = live_givens(c, fig)[0]
+    found = pieces(c, fig, g.name, reach(c, fig, g.name, g.domain, float(fig.replay.givens[g.name])))
+    p = min((q for q in found if q.protocol is not fig.protocol), key=lambda q: q.high / q.low)
+    lettered = c.build(**{**_keywords(c, fig), g.name: p.low}).protocol
+    assert p.protocol.params.get("captions") != "letters" == lettered.params["captions"]
+    sent = [json.dumps(live_data(live_sweep(c, fig, g.name, piece=q)), sort_keys=True, default=str)
+            for q in (p, Piece(p.low, p.high, lettered))]
+    assert sent[0] == sent[1]
+
+
 def test_an_unlettered_build_takes_the_steps_of_a_lettered_one():
     """What pieces asks an unlettered build for (its steps' ops, inputs and outputs; what it made) is a lettered
     build's; only the captions are not yet in the figure's letters."""

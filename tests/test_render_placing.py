@@ -117,3 +117,30 @@ def test_the_ring_round_the_current_point_never_covers_its_tag():
             assert (near[0] ** 2 + near[1] ** 2) ** 0.5 >= 0.95 * st.ring_px, (s.index, m.name, (dx, dy))
             checked += 1
     assert checked > 50
+
+
+def test_a_curve_is_kept_clear_of_along_its_catmull_rom_pieces():
+    """The smooth curve the letters keep off (placing._polyline) runs through its points and, between two of
+    them, along the cubic piece the SVG draws: at a quarter, a half and three quarters of each piece the
+    Bernstein form of its control points (Catmull-Rom: c1 = p1 + (p2 - p0)/6, c2 = p2 - (p3 - p1)/6, the ends'
+    neighbours themselves), computed here in exact fractions."""
+    from fractions import Fraction
+    from types import SimpleNamespace
+
+    from construct.render.placing import _polyline
+    from construct.render.scene import MarkKind
+
+    pts = [(0.0, 0.0), (1.0, 2.0), (3.0, 2.5), (4.0, -1.0), (6.5, 0.25)]
+    got = _polyline(SimpleNamespace(geom=tuple(pts), kind=MarkKind.CURVE, straight=False), 1.0)
+    assert len(got) == 1 + 4 * (len(pts) - 1)
+    F = [tuple(map(Fraction, p)) for p in pts]
+    for i in range(len(pts) - 1):
+        p0, p1, p2, p3 = F[max(i - 1, 0)], F[i], F[i + 1], F[min(i + 2, len(F) - 1)]
+        c1 = tuple(a + (b - c) / 6 for a, b, c in zip(p1, p2, p0))
+        c2 = tuple(a - (b - c) / 6 for a, b, c in zip(p2, p3, p1))
+        for j, t in enumerate((Fraction(1, 4), Fraction(1, 2), Fraction(3, 4), Fraction(1))):
+            s = 1 - t
+            want = [s ** 3 * a + 3 * s * s * t * b + 3 * s * t * t * c + t ** 3 * d
+                    for a, b, c, d in zip(p1, c1, c2, p2)]
+            assert got[1 + 4 * i + j] == pytest.approx([float(w) for w in want], abs=1e-12), (i, t)
+    assert got[0] == pts[0] and got[4::4] == pts[1:]

@@ -69,6 +69,12 @@ def unlettered() -> Iterator[None]:
         _UNLETTERED.reset(token)
 
 
+def _same_givens(givens: Mapping[str, Any], own: Mapping[str, Any]) -> bool:
+    """Are *givens* a build's own (*own*), not a sweep over them (arrays of givens are never its own)?"""
+    asked, xp = sweep_givens(dict(givens))
+    return xp is SCALAR and asked == dict(own)
+
+
 class _Sketch(Protocol):
     """An unlettered build's protocol (:func:`unlettered`): its replay at the build's own givens is what the
     build made."""
@@ -78,7 +84,7 @@ class _Sketch(Protocol):
         object.__setattr__(self, "_made", made)
 
     def replay(self, givens: Mapping[str, Any] | None = None, *, upto: int | None = None) -> Replay:
-        if upto is None and (givens is None or dict(givens) == dict(self.params["givens"])):
+        if upto is None and (givens is None or _same_givens(givens, self.params["givens"])):
             return Replay(self, dict(self._made), self.params["givens"])
         return super().replay(givens, upto=upto)
 

@@ -188,8 +188,10 @@ def pieces(construction: Construction, figure: Figure, given: str, domain: Domai
     the same objects: one piece where the form never changes (a replay of the built protocol is then the fresh
     build everywhere); several where it does (Tafel I's piston-force pieces run through the points between their
     corners: which points those are depends on the rod).  Each piece's protocol is built inside it (the built
-    figure's own in its piece); the changes are found at *scan* values evenly in log10, then by bisection in
-    log10 to FORM_TOL.  Where the construction reads its choices off a sweep
+    figure's own in its piece; the others unlettered, :func:`~construct.kernel.instruments.unlettered`: their
+    steps are a lettered build's, their captions are left as written, and what a player is sent of a piece
+    reads none of them); the changes are found at *scan* values evenly in log10, then by bisection in log10
+    to FORM_TOL.  Where the construction reads its choices off a sweep
     (:attr:`~construct.constructions.Construction.form`), the steps' form at all the values of a round is one
     replay of the built protocol over them (:func:`form_pieces`); elsewhere a fresh build at each value tells it
     (:func:`scan_pieces`).  A given the construction names in :attr:`~construct.constructions.Construction.steady`
@@ -262,8 +264,8 @@ def _changes(forms, us: list[float], tol: float, ahead: bool = False) -> tuple[l
 def _pieces_from(construction: Construction, figure: Figure, given: str, domain: Domain, scan: int, forms,
                  built: Any, holds, ahead: bool = False) -> list[Piece]:
     """The pieces of *domain* from the steps' forms (*forms*: at a list of log10 values at once; *built*: the
-    built figure's), each other piece's protocol from one lettered build inside it; the whole domain as one piece
-    where no change is found or a piece would begin where the construction does not hold.  *ahead*: *forms* costs
+    built figure's), each other piece's protocol from one unlettered build inside it; the whole domain as one
+    piece where no change is found or a piece would begin where the construction does not hold.  *ahead*: *forms* costs
     a round, not a value (one replay): the bisection asks for the values below its midpoints in the same round."""
     value = _value_at(domain)
     lo, hi = math.log10(domain.low), math.log10(domain.high)
@@ -276,9 +278,10 @@ def _pieces_from(construction: Construction, figure: Figure, given: str, domain:
     if not all(holds(a) for a in ends[0::2]):  # a build that fails inside the domain (reach found it holds)
         return [Piece(domain.low, domain.high, figure.protocol)]
     kw = _keywords(construction, figure)
-    return [Piece(domain.low if a == lo else 10 ** a, domain.high if b == hi else 10 ** b,
-                  figure.protocol if form[a] == built else construction.build(**{**kw, given: value(a)}).protocol)
-            for a, b in zip(ends[0::2], ends[1::2])]
+    with unlettered():  # (the captions' letters are a third of a build's time; the live data reads no caption)
+        return [Piece(domain.low if a == lo else 10 ** a, domain.high if b == hi else 10 ** b,
+                      figure.protocol if form[a] == built else construction.build(**{**kw, given: value(a)}).protocol)
+                for a, b in zip(ends[0::2], ends[1::2])]
 
 
 def scan_pieces(construction: Construction, figure: Figure, given: str, domain: Domain,

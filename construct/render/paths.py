@@ -15,10 +15,13 @@ from __future__ import annotations
 import math
 from typing import Sequence
 
+import numpy as np
+
 from .svgdoc import fmt
 from .viewport import Viewport
 
-__all__ = ["arc_path", "bezier_controls", "curve_path", "polyline_path", "polygon_path", "hatch_path", "hatch_segments"]
+__all__ = ["arc_path", "bezier_arrays", "bezier_controls", "curve_path", "polyline_path", "polygon_path", "hatch_path",
+           "hatch_segments"]
 
 
 def arc_path(vp: Viewport, cx: float, cy: float, r: float, start: float, sweep: float) -> str:
@@ -47,6 +50,19 @@ def bezier_controls(P) -> list[tuple[tuple[float, float], ...]]:
         c2 = (p2[0] - (p3[0] - p1[0]) / 6.0, p2[1] - (p3[1] - p1[1]) / 6.0)
         out.append((p1, c1, c2, p2))
     return out
+
+
+def bezier_arrays(P: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`bezier_controls` on arrays: the points *P* (a row each: n x 2, or one coordinate of the points at
+    every value of a sweep, n x values) -> p1, c1, c2, p2 (each n - 1 rows), the same numbers (the same operations
+    in the same order).
+
+    >>> [a.tolist() for a in bezier_arrays(np.array([(0.0, 0.0), (6.0, 0.0)]))]
+    [[[0.0, 0.0]], [[1.0, 0.0]], [[5.0, 0.0]], [[6.0, 0.0]]]
+    """
+    i = np.arange(len(P) - 1)
+    p1, p2 = P[i], P[i + 1]
+    return p1, p1 + (p2 - P[np.maximum(i - 1, 0)]) / 6.0, p2 - (P[np.minimum(i + 2, len(P) - 1)] - p1) / 6.0, p2
 
 
 def curve_path(vp: Viewport, pts: tuple) -> str:

@@ -33,7 +33,7 @@ import numpy as np
 from .camera import PLAYER_FIGURE_PX, THIN_FROM, ZOOM_LEVELS, View
 from .gaps import Gap
 from .lettering import HALO_PX, LEADER_FROM, LineIndex, label_box, place, text_box
-from .paths import bezier_controls
+from .paths import bezier_arrays
 from .plate import plain
 from .scene import Mark, MarkKind, Scene, label_offset_direction
 from .styles import Style
@@ -572,6 +572,9 @@ def _meet(a: tuple[float, float, float, float], b: tuple[float, float, float, fl
     return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
 
+_QUARTERS = np.array([0.25, 0.5, 0.75, 1.0])[:, None]
+
+
 def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
     """A line mark as points (drawing units) joined by straight pieces no more than ~4 px off it."""
     g = m.geom
@@ -583,14 +586,13 @@ def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
         n = min(720, max(8, int(abs(sw) * math.sqrt(max(r * scale, 1.0) / 8.0)) + 1))
         return [(cx + r * math.cos(a0 + sw * i / n), cy + r * math.sin(a0 + sw * i / n)) for i in range(n + 1)]
     if m.kind is MarkKind.CURVE and not m.straight and len(g) > 2:
-        # as drawn (curve_path): the Catmull-Rom pieces, which leave the chords where the curve bends
-        out = [tuple(g[0])]
-        for p1, c1, c2, p2 in bezier_controls(g):
-            for t in (0.25, 0.5, 0.75, 1.0):
-                s = 1 - t
-                out.append(tuple(s * s * s * a + 3 * s * s * t * b + 3 * s * t * t * c + t * t * t * d
-                                 for a, b, c, d in zip(p1, c1, c2, p2)))
-        return out
+        # as drawn (curve_path): the Catmull-Rom pieces, which leave the chords where the curve bends (each piece
+        # at a quarter, a half, three quarters and its end, every piece at once)
+        p1, c1, c2, p2 = (a[:, None] for a in bezier_arrays(np.asarray(g, dtype=float)))
+        t = _QUARTERS
+        s = 1 - t
+        pts = s * s * s * p1 + 3 * s * s * t * c1 + 3 * s * t * t * c2 + t * t * t * p2
+        return [tuple(g[0]), *map(tuple, pts.reshape(-1, 2).tolist())]
     return list(g)
 
 

@@ -29,6 +29,7 @@ import numpy as np
 from ..kernel.curves import BezierCurve, Polyline
 from ..kernel.geometry import Circle, Line, Point, take
 from .marks import GAP_TIE, TWO_PI, Mark, MarkKind, fanned_lines, letter_point, with_geom
+from .paths import bezier_arrays
 from .scene import MARGIN, Scene, on_curve_names
 from .sheet import BREAK_FRACTION, BREAK_FRACTION_Y, BREAK_KEEP
 from .svg import point_radius
@@ -752,11 +753,10 @@ class SweepDrawing:
                 closed = k > 2 and tuple(m.geom[0]) == tuple(m.geom[-1])
                 cols = np.stack([X, Y], axis=1)[:k - 1 if closed else k].reshape(-1, self.n)
             else:
-                # the smooth curve's control points (paths.bezier_controls), every segment at once
-                i = np.arange(k - 1)
-                i0, i2, i3 = np.maximum(i - 1, 0), i + 1, np.minimum(i + 2, k - 1)
-                segs = np.stack([X[i] + (X[i2] - X[i0]) / 6.0, Y[i] + (Y[i2] - Y[i0]) / 6.0,
-                                 X[i2] - (X[i3] - X[i]) / 6.0, Y[i2] - (Y[i3] - Y[i]) / 6.0, X[i2], Y[i2]], axis=1)
+                # the smooth curve's control points (paths.bezier_arrays), every segment at once
+                _, c1x, c2x, p2x = bezier_arrays(X)
+                _, c1y, c2y, p2y = bezier_arrays(Y)
+                segs = np.stack([c1x, c1y, c2x, c2y, p2x, p2y], axis=1)
                 cols = np.concatenate([X[:1], Y[:1], segs.reshape(-1, self.n)])
             out[m.id] = _r2(cols.T)[None]
         if getattr(self, "at_marks", None):

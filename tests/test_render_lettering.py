@@ -13,7 +13,7 @@ import random
 import numpy as np
 import pytest
 
-from construct.render.lettering import LEADER_FROM, LineIndex, label_box, place, text_box
+from construct.render.lettering import LEADER_FROM, LineIndex, label_box, place, spots_of, text_box, text_width
 
 
 def test_letters_are_measured_in_the_fonts_metrics():
@@ -175,3 +175,30 @@ def test_a_crowd_of_letters_is_placed_as_each_letter_would_be_alone(monkeypatch)
         assert not (a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3])
     for x, y in dots:
         assert not any(b[0] < x + r and x - r < b[2] and b[1] < y + r and y - r < b[3] for b in boxes)
+
+
+def test_a_letter_alone_takes_the_first_spot_free_of_the_boxes_and_points_in_the_order_tried():
+    """spots_of's spots are label_box's boxes at their baselines, the centre *dist* letter heights out (plus half
+    the extra width) along the turn; a letter placed alone among boxes and points stands at the first of them
+    that meets none (worked out here box by box), the farther rings included."""
+    size, text, p = 12.0, "M12", (300.0, 300.0)
+    item = ("a", "construction", 1, p, (1.0, 0.0), text)
+    lx, ly, x0, y0, x1, y1, dist = spots_of([item], size, distances=(4.5, 8.0))
+    extra = max(0.0, text_width(text, size) - 0.6 * size) / 2
+    for i in range(lx.shape[1]):
+        assert (x0[0, i], y0[0, i], x1[0, i], y1[0, i]) == label_box(lx[0, i], ly[0, i], text, size)
+        along, across = lx[0, i] - p[0], ly[0, i] - 0.35 * size - p[1]  # the extra width lies along x only
+        ratio = along / (dist[i] * size + extra)
+        assert across ** 2 / (dist[i] * size) ** 2 + ratio ** 2 == pytest.approx(1.0, abs=1e-9)
+    rng = random.Random(5)
+    for _ in range(20):
+        taken = [(p[0] + rng.uniform(-90, 90), p[1] + rng.uniform(-90, 90)) for _ in range(25)]
+        taken = [(x, y, x + rng.uniform(5, 40), y + rng.uniform(5, 30)) for x, y in taken]
+        dots = [(p[0] + rng.uniform(-60, 60), p[1] + rng.uniform(-60, 60)) for _ in range(15)]
+        r = 0.3 * size
+        walls = taken + [(x - r, y - r, x + r, y + r) for x, y in dots]
+        want = next(((lx[0, i], ly[0, i]) for i in range(lx.shape[1])
+                     if not any(x0[0, i] < w[2] and w[0] < x1[0, i] and y0[0, i] < w[3] and w[1] < y1[0, i]
+                                for w in walls)), None)
+        got = place([item], size, np.array(dots), taken=taken, keep=False, distances=(4.5, 8.0))
+        assert (got["a"][:2] if "a" in got else None) == want

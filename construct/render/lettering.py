@@ -37,7 +37,7 @@ from typing import Any, Iterable, Sequence
 
 import numpy as np
 
-__all__ = ["place", "LineIndex", "label_box", "text_box", "text_width", "segment_meets_box", "clipped_segment", "RANK", "LEADER_FROM",
+__all__ = ["place", "spots_of", "LineIndex", "label_box", "text_box", "text_width", "segment_meets_box", "clipped_segment", "RANK", "LEADER_FROM",
            "DEFAULT_FONT"]
 
 #: Rank of a role: lower is placed first.
@@ -231,6 +231,21 @@ class _Grid:
                 else:
                     got.append(b)
 
+    def add_many(self, boxes: np.ndarray) -> None:
+        """:meth:`add` of each box (rows x0, y0, x1, y1), in order, the cells of those within one cell found at once
+        (the points of a placing: thousands)."""
+        cells = self.cells
+        i0, j0, i1, j1 = np.floor(boxes / self.cell).astype(int).T.tolist()
+        for b, a0, b0, a1, b1 in zip(map(tuple, boxes.tolist()), i0, j0, i1, j1):
+            if a0 != a1 or b0 != b1:
+                self.add(b)
+                continue
+            got = cells.get((a0, b0))
+            if got is None:
+                cells[(a0, b0)] = [b]
+            else:
+                got.append(b)
+
 
 class _Boxes:
     """The boxes a single letter must keep clear of, asked all at once (numpy): a letter placed alone tries a
@@ -244,13 +259,21 @@ class _Boxes:
         x0, y0, x1, y1 = b
         return not ((x0 < self.x1) & (self.x0 < x1) & (y0 < self.y1) & (self.y0 < y1)).any()
 
-    def free_many(self, bs: list) -> list[bool]:
-        """:meth:`free` of each box of *bs*, asked at once."""
-        if not len(self.x0):
-            return [True] * len(bs)
-        b = np.array(bs, dtype=float).reshape(-1, 4)
-        x0, y0, x1, y1 = (b[:, k:k + 1] for k in range(4))
-        return (~((x0 < self.x1) & (self.x0 < x1) & (y0 < self.y1) & (self.y0 < y1)).any(axis=1)).tolist()
+    def free_in(self, boxes: "Sequence[np.ndarray]", chunks: "Sequence[tuple[int, int]]") -> Iterable[int]:
+        """The numbers of the free boxes of one letter's spots (four arrays x0, y0, x1, y1 of one row), in order,
+        asked of the boxes *chunks* of spots at a time (first, end), each of those boxes alone that meet the box
+        round the chunk's spots, and a chunk only once the spots before it are all used."""
+        x0, y0, x1, y1 = (b[0] for b in boxes)
+        for lo, hi in chunks:
+            a0, b0, a1, b1 = x0[lo:hi], y0[lo:hi], x1[lo:hi], y1[lo:hi]
+            near = np.flatnonzero((a0.min() < self.x1) & (self.x0 < a1.max()) & (b0.min() < self.y1)
+                                  & (self.y0 < b1.max()))
+            if not len(near):
+                yield from range(lo, hi)
+                continue
+            c0, d0, c1, d1 = self.x0[near], self.y0[near], self.x1[near], self.y1[near]
+            taken = ((a0[:, None] < c1) & (c0 < a1[:, None]) & (b0[:, None] < d1) & (d0 < b1[:, None])).any(axis=1)
+            yield from (np.flatnonzero(~taken) + lo).tolist()
 
     def add(self, b) -> None:  # the letter is placed alone: nothing is asked after it
         pass
@@ -416,16 +439,15 @@ def _nearer_dot(box, own: tuple[float, float], dots) -> bool:
     return any(far(p) < mine - 0.5 for p in dots if abs(p[0] - own[0]) > 1e-6 or abs(p[1] - own[1]) > 1e-6)
 
 
-def _spots(ordered: "Sequence[tuple]", plan: "Sequence[tuple[int, float, int]]", size: float, font: str,
+def _spots(ordered: "Sequence[tuple]", distances: tuple[float, ...], size: float, font: str,
            italic: bool, halo: float) -> tuple[Any, ...]:
-    """Every spot of the *plan* (ring, distance in letter heights, turn from the preferred direction in degrees) for
-    every letter of *ordered* (as :func:`place` takes them), at once: the letter's baseline x, y and its box x0, y0,
-    x1, y1 (pixels, y down), each an array of a row per letter and a column per spot.  The letter's centre sits
-    *dist* letter heights from its point (plus half its extra width sideways), its baseline a third of a letter
-    lower; the box is :func:`label_box`'s, each number in the sums (and their order) of the spot asked alone, the
-    cosines and sines :mod:`math`'s."""
-    turns = sorted({t for _, _, t in plan})
-    radians = [math.radians(t) for t in turns]
+    """Every spot of the plan (:func:`_plan` of the farther rings *distances*) for every letter of *ordered* (as
+    :func:`place` takes them), at once: the letter's baseline x, y and its box x0, y0, x1, y1 (pixels, y down), each
+    an array of a row per letter and a column per spot.  The letter's centre sits *dist* letter heights from its
+    point (plus half its extra width sideways), its baseline a third of a letter lower; the box is
+    :func:`label_box`'s, each number in the sums (and their order) of the spot asked alone, the cosines and sines
+    :mod:`math`'s."""
+    _plan_, _rings, radians, k, dists, _chunks = _plan(distances)
     cos, sin, px, py, extra, measures = [], [], [], [], [], []
     for _mid, _role, _step, (x, y), (dx, dy), text in ordered:
         base = math.atan2(-dy, dx)  # y down on the sheet
@@ -437,9 +459,8 @@ def _spots(ordered: "Sequence[tuple]", plan: "Sequence[tuple[int, float, int]]",
         extra.append(max(0.0, text_width(text, size, font, italic) - 0.6 * size) / 2)
         adv, top, bottom, left, right = _metrics(text or " ", font, italic)
         measures.append((size * adv / 2, left * size, top * size, right * size, bottom * size))
-    k = [turns.index(t) for _, _, t in plan]
-    reach = np.array([dist for _, dist, _ in plan]) * size
-    cos_a, sin_a = np.array(cos).reshape(-1, len(turns))[:, k], np.array(sin).reshape(-1, len(turns))[:, k]
+    reach = dists * size
+    cos_a, sin_a = np.array(cos).reshape(-1, len(radians))[:, k], np.array(sin).reshape(-1, len(radians))[:, k]
     half, ls, ts, rs, bs = (c[:, None] for c in np.array(measures).reshape(-1, 5).T)
     lxs = np.array(px)[:, None] + cos_a * (reach + np.array(extra)[:, None])
     lys = np.array(py)[:, None] + reach * sin_a + 0.35 * size
@@ -447,18 +468,35 @@ def _spots(ordered: "Sequence[tuple]", plan: "Sequence[tuple[int, float, int]]",
     return lxs, lys, x0 + ls - m, lys - ts - m, x0 + rs + m, lys - bs + m
 
 
+def spots_of(items: "Sequence[tuple]", size: float, *, font: str = DEFAULT_FONT, italic: bool = False,
+             halo: float = HALO_PX / 2, distances: Sequence[float] = ()) -> tuple[Any, ...]:
+    """The spots :func:`place` tries for each letter of *items* (as it takes them, in their order), in the order
+    tried: arrays of a row per letter and a column per spot of its baseline x, y and its box x0, y0, x1, y1 (the
+    numbers :func:`place` asks), and each spot's distance in letter heights.  The usual rings come first whatever
+    the farther *distances*: without those, the spots where most letters find room.
+
+    >>> lx, ly, x0, y0, x1, y1, dist = spots_of([("a", "result", 1, (0.0, 0.0), (1.0, 0.0), "q1")], 10.0)
+    >>> lx.shape, float(dist[0]), bool(x0[0, 0] > 0)  # the first spot: 0.9 letter heights to the right
+    ((1, 60), 0.9, True)
+    """
+    return _spots(items, tuple(distances), size, font, italic, halo) + (_plan(tuple(distances))[4],)
+
+
 @functools.lru_cache(maxsize=8)
-def _plan(distances: tuple[float, ...]) -> tuple[list[tuple[int, float, int]], tuple[float, ...],
-                                                 dict[int, tuple[int, int]]]:
-    """Every spot a letter may try, in the order tried: (ring, distance, turn); the rings' distances; each ring's
-    spots (first, end) in the plan -- the same for every letter of a placing, made once (a name tag is placed
-    alone, thousands of times a figure).  Not to be changed by the caller."""
+def _plan(distances: tuple[float, ...]) -> tuple[list[tuple[int, float, int]], tuple[float, ...], list[float], Any,
+                                                 Any, list[tuple[int, int]]]:
+    """Every spot a letter may try, in the order tried: (ring, distance, turn); the rings' distances; the turns
+    (radians, ascending by degrees), each spot's turn among them and its distance (arrays); the spots (first, end)
+    a letter alone asks of its boxes at once (the two nearest rings, the other usual ones, the farther ones: most
+    letters find a spot near) -- the same for every letter of a placing, made once (a name tag is placed alone,
+    thousands of times a figure).  Not to be changed by the caller."""
     plan = [(j, dist, turn) for j, dist in enumerate(_DISTANCES + distances)
             for turn in (_TURNS if dist in _DISTANCES else _TURNS_FAR)]
-    ring_of: dict[int, tuple[int, int]] = {}
-    for k, (j, _d, _t) in enumerate(plan):
-        ring_of[j] = (ring_of.get(j, (k, k))[0], k + 1)
-    return plan, _DISTANCES + distances, ring_of
+    turns = sorted({t for _, _, t in plan})
+    near, usual = 2 * len(_TURNS), len(_DISTANCES) * len(_TURNS)
+    chunks = [(lo, hi) for lo, hi in ((0, near), (near, usual), (usual, len(plan))) if lo < hi]
+    return (plan, _DISTANCES + distances, [math.radians(t) for t in turns],
+            np.array([turns.index(t) for _, _, t in plan]), np.array([dist for _, dist, _ in plan]), chunks)
 
 
 def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float, float], str]],
@@ -505,8 +543,9 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
         grid = _Grid(1.0 * size)
         for b in taken:
             grid.add(b)
-        for x, y in dots:
-            grid.add((x - r, y - r, x + r, y + r))
+        if dots:
+            a = np.array(dots, dtype=float).reshape(-1, 2)
+            grid.add_many(np.column_stack((a[:, 0] - r, a[:, 1] - r, a[:, 0] + r, a[:, 1] + r)))
     if isinstance(lines, LineIndex):
         if lines.size != size:
             raise ValueError(f"place: the line index is made for letters of {lines.size}, not {size}")
@@ -519,22 +558,21 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
     ordered = sorted(items, key=lambda it: (RANK.get(it[1], 2), it[2], it[0]))
     # every spot a letter may try, in the order tried: (ring, distance, turn) -- the ring's number, not its distance,
     # ends a ring (a farther distance may repeat a usual one)
-    plan, rings, ring_of = _plan(tuple(distances))
+    plan, rings, _radians, _k, _dists, chunks = _plan(tuple(distances))
     # many letters: every spot of every letter made at once, and crossed off in bulk where a point surely takes it
     # (a crowd of points takes most spots of most letters) or a letter placed in this call meets it; the rest are
     # asked in the grid, in the order of the letters.  A few letters are asked spot by spot, each made as it is
     # tried (their first spots are most often free).  The boxes *taken* before are asked in the grid.
     bulk = len(ordered) >= _CROWD
+    alone = isinstance(grid, _Boxes)
     if bulk:
-        spots = _spots(ordered, plan, size, font, italic, halo)
+        spots = _spots(ordered, tuple(distances), size, font, italic, halo)
         sx0, sy0, sx1, sy1 = spots[2:]
         alive = np.ones(sx0.shape, dtype=bool)
         if isinstance(grid, _Grid) and len(dots) >= _CROWD:
             alive = ~_DotCounts(dots, r, size).surely_taken(sx0, sy0, sx1, sy1)
         # the box round each letter's spots: a letter placed takes spots of those whose box it meets, of no other
         around = (sx0.min(axis=1), sy0.min(axis=1), sx1.max(axis=1), sy1.max(axis=1))
-        # the first spot of each letter (kept for the magnified views when no spot is free)
-        firsts = list(zip(*(a[:, 0].tolist() for a in spots)))
 
     def takes(b: tuple[float, float, float, float], after: int) -> None:
         """The box *b* is taken: no spot it meets of the letters after the first *after* is free."""
@@ -556,18 +594,20 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
         clear = None  # with soft lines: the first free spot near the point that no line crosses
         least = None  # else the near free spot the least of those lines would be broken for: (length, spot)
         if spot is None:
-            if bulk:
-                f = firsts[n]
-                first = (f[0], f[1], f[2:], plan[0][1])
-                asked: Iterable[int] = np.flatnonzero(alive[n]).tolist()
+            if alone:
+                # a letter alone (a name tag, thousands a figure): all its spots made at once and asked of the
+                # boxes at once; the free ones are asked of the lines in the order tried
+                spots = _spots(ordered, tuple(distances), size, font, italic, halo)
+            if bulk or alone:
+                first = (float(spots[0][n, 0]), float(spots[1][n, 0]), tuple(float(a[n, 0]) for a in spots[2:]),
+                         plan[0][1])
+                asked: Iterable[int] = grid.free_in(spots[2:], chunks) if alone else np.flatnonzero(alive[n]).tolist()
                 row = None
             else:
                 asked = range(len(plan))
                 base = math.atan2(-dy, dx)  # y down on the sheet
                 w = text_width(text, size, font, italic)
                 ring_cs: dict[int, tuple[float, float]] = {}  # each direction's cosine and sine, for all distances
-                batch = isinstance(grid, _Boxes)
-                ring_spots: dict[int, tuple] = {}
 
                 def spot_at(k: int) -> tuple[float, float, tuple[float, float, float, float]]:
                     _j, dist, turn = plan[k]
@@ -588,21 +628,17 @@ def place(items: Iterable[tuple[str, str, int, tuple[float, float], tuple[float,
                     if clear or (spot and (soft is None or max(rings[ring:j]) >= LEADER_FROM)):
                         break
                     ring = j
-                if bulk:
+                if alone:  # (the few spots asked of a letter alone read one by one)
+                    lx, ly, box = float(spots[0][0, i]), float(spots[1][0, i]), tuple(float(a[0, i]) for a in spots[2:])
+                    free = True
+                elif bulk:
                     if row is None:
                         row = [a[n].tolist() for a in spots]
                     lx, ly, box = row[0][i], row[1][i], (row[2][i], row[3][i], row[4][i], row[5][i])
                     free = None
                 else:
-                    if batch:
-                        if i not in ring_spots:  # a letter alone: its ring's spots asked of the boxes at once
-                            lo, hi = ring_of[j]
-                            made = [spot_at(k) for k in range(lo, hi)]
-                            ring_spots.update(zip(range(lo, hi), zip(made, grid.free_many([m[2] for m in made]))))
-                        (lx, ly, box), free = ring_spots[i]
-                    else:
-                        lx, ly, box = spot_at(i)
-                        free = None
+                    lx, ly, box = spot_at(i)
+                    free = None
                     if first is None:
                         first = (lx, ly, box, dist)
                 if not (grid.free(box) if free is None else free) or strokes.meets(box, reach, only):

@@ -22,7 +22,7 @@ from typing import Any, Callable, Protocol, Sequence
 import numpy as np
 
 from .camera import THIN_FROM, ZOOM_LEVELS, View, level, zoom_of
-from .lettering import HALO_PX, RANK, label_box, place
+from .lettering import HALO_PX, RANK, label_box, place, spots_of
 from .scene import Mark, MarkKind, Scene, label_offset_direction
 from .styles import Style
 from .viewport import Viewport
@@ -78,6 +78,8 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
     # a tag is seen while its step is current and where its step is an input: it is placed at the
     # least magnified of those views (where the letters are largest beside the points)
     lowest: dict[int, int] = {}
+    # each step's inputs, asked once (three walks over the steps below)
+    inputs = [input_steps(k) for k in range(1, len(sc.steps) + 1)] if st.camera else []
     if st.camera:
         step_levels = [level(zoom_of(v, full)) for v in views]
 
@@ -87,8 +89,8 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
         steps = {m.step for m in tags}
         for m in tags:
             lowest[m.step] = lvl_of(m.step)
-        for k in range(1, len(sc.steps) + 1):
-            for s_ in input_steps(k):
+        for k, ins in enumerate(inputs, 1):
+            for s_ in ins:
                 if s_ in steps:
                     lowest[s_] = min(lowest[s_], lvl_of(k))
     by_level: dict[int, list[Mark]] = {}
@@ -98,8 +100,8 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
     if st.camera:
         for m in tags:
             shown_at[m.step].add(lvl_of(m.step))
-        for k in range(1, len(sc.steps) + 1):
-            for s_ in input_steps(k):
+        for k, ins in enumerate(inputs, 1):
+            for s_ in ins:
                 if s_ in shown_at:
                     shown_at[s_].add(lvl_of(k))
     size = st.label_size
@@ -132,7 +134,14 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
     line_lo = np.minimum(line_a[:, 0:2], line_a[:, 2:4])
     line_hi = np.maximum(line_a[:, 0:2], line_a[:, 2:4])
 
+    scaled: dict[float, tuple] = {}
     reach = (max(TAG_FARTHER) + 3.0) * size  # how far from its point a tag's box may reach (letter units)
+
+    def at_zoom(z: float):
+        """The points and the result lines' lower and upper corners at zoom *z*: made once, asked by each tag there."""
+        if z not in scaled:
+            scaled[z] = dot_a * z, line_lo * z, line_hi * z
+        return scaled[z]
 
     def near(items, z: float, f: float):
         """The points and the numbers of the result lines (at zoom *z*) a tag of *items* could meet:
@@ -143,9 +152,8 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
         ys = [it[3][1] for it in items]
         r = reach * f
         x0, y0, x1, y1 = min(xs) - r, min(ys) - r, max(xs) + r, max(ys) + r
-        dz = dot_a * z
+        dz, lo, hi = at_zoom(z)
         ds = dz[(x0 <= dz[:, 0]) & (dz[:, 0] <= x1) & (y0 <= dz[:, 1]) & (dz[:, 1] <= y1)]
-        lo, hi = line_lo * z, line_hi * z
         mask = (lo[:, 0] <= x1) & (hi[:, 0] >= x0) & (lo[:, 1] <= y1) & (hi[:, 1] >= y0)
         return ds, mask.tolist()
 
@@ -153,8 +161,8 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
     seen_with: dict[int, dict[int, set[int]]] = {}
     if st.camera:
         tag_steps = {m.step for m in tags}
-        for k in range(1, len(sc.steps) + 1):
-            together = ({k} | input_steps(k)) & tag_steps
+        for k, ins in enumerate(inputs, 1):
+            together = ({k} | ins) & tag_steps
             mates = seen_with.setdefault(lvl_of(k), {})
             for s_ in together:
                 mates.setdefault(s_, set()).update(together)
@@ -165,13 +173,17 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
     for m in tags:
         tags_of.setdefault(m.step, []).append(m)
 
+    def frame_at(lvl: int):
+        """:func:`frame` of level *lvl*, made once: (zoom, letter factor, the boxes as a list and as an array)."""
+        if lvl not in frames:
+            z, f, boxes = frame(lvl)
+            frames[lvl] = (z, f, boxes, np.array(boxes, dtype=float).reshape(-1, 4))
+        return frames[lvl]
+
     def place_at(m: Mark, lvl: int) -> bool:
         """Place tag *m* at level *lvl*, clear of the letters there and of the tags placed so far that are
         seen with it at that level (tags never seen together may share a spot)."""
-        if lvl not in frames:
-            z, f, boxes = frame(lvl)
-            frames[lvl] = (z, f, np.array(boxes, dtype=float).reshape(-1, 4))
-        z, f, boxes = frames[lvl]
+        z, f, _taken, boxes = frame_at(lvl)
         x, y = pts[m.id][0] * z, pts[m.id][1] * z
         r = reach * f
         near_ = boxes[(boxes[:, 2] >= x - r) & (boxes[:, 0] <= x + r) & (boxes[:, 3] >= y - r) & (boxes[:, 1] <= y + r)]
@@ -195,11 +207,64 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
         out[m.id] = ((gx - x) / f, (gy - y) / f, dist)
         return True
 
+    def place_level(ms: list[Mark], lvl: int) -> None:
+        """:func:`place_at` each tag of *ms* in turn at level *lvl*: the spots of the usual rings of all of them
+        made and asked of the letters, points and rings near each at once; a tag with none of those free of the
+        tags placed before it and of the result lines is placed by :func:`place_at`."""
+        z, f, _taken, boxes = frame_at(lvl)
+        r, sz, halo = reach * f, size * f, HALO_PX / 2 * f
+        xy = [(pts[m.id][0] * z, pts[m.id][1] * z) for m in ms]
+        items = [(m.id, m.role, m.step, p, label_offset_direction(m.geom, scale=span), sc.display_name(m.name))
+                 for m, p in zip(ms, xy)]
+        # (the usual rings: the farther ones are tried by place_at)
+        lx, ly, sx0, sy0, sx1, sy1, dist = spots_of(items, sz, font=st.label_font, italic=st.label_italic, halo=halo)
+        x, y = (np.array(xy, dtype=float).reshape(-1, 2)[:, k:k + 1] for k in (0, 1))
+        dz, lo, hi = at_zoom(z)
+        d = 0.3 * sz
+        # what each tag's place_at asks: the level's letters within its reach, the points within it (as boxes)
+        obst = np.concatenate([boxes, np.column_stack((dz[:, 0] - d, dz[:, 1] - d, dz[:, 0] + d, dz[:, 1] + d))])
+        # (the box round each tag's spots: only the letters and points meeting it are asked spot by spot)
+        a0, b0, a1, b1 = sx0.min(axis=1)[:, None], sy0.min(axis=1)[:, None], sx1.max(axis=1)[:, None], \
+            sy1.max(axis=1)[:, None]
+        meet = (obst[:, 0] < a1) & (a0 < obst[:, 2]) & (obst[:, 1] < b1) & (b0 < obst[:, 3])
+        if not ((a0 - d >= x - r) & (a1 + d <= x + r) & (b0 - d >= y - r) & (b1 + d <= y + r)).all():
+            # a spot beyond a tag's reach: what meets it there is asked only within the reach, as place_at asks
+            meet &= np.concatenate([
+                (boxes[:, 2] >= x - r) & (boxes[:, 0] <= x + r) & (boxes[:, 3] >= y - r) & (boxes[:, 1] <= y + r),
+                (x - r <= dz[:, 0]) & (dz[:, 0] <= x + r) & (y - r <= dz[:, 1]) & (dz[:, 1] <= y + r)], axis=1)
+        ti, bi = np.nonzero(meet)
+        taken = np.zeros(sx0.shape, dtype=bool)
+        if len(ti):
+            o = obst[bi]
+            hit = ((sx0[ti] < o[:, 2:3]) & (o[:, 0:1] < sx1[ti]) & (sy0[ti] < o[:, 3:4]) & (o[:, 1:2] < sy1[ti]))
+            rows, starts = np.unique(ti, return_index=True)
+            taken[rows] = np.logical_or.reduceat(hit, starts, axis=0)
+        if st.ring_px:
+            # the ring the player draws round the point while its step is current
+            rr = st.ring_px * f
+            taken |= (sx0 < x + rr) & (x - rr < sx1) & (sy0 < y + rr) & (y - rr < sy1)
+        lines = placing.lines_at(z, sz)
+        only = (lo[:, 0] <= x + r) & (hi[:, 0] >= x - r) & (lo[:, 1] <= y + r) & (hi[:, 1] >= y - r)
+        free = [np.flatnonzero(~t).tolist() for t in taken]
+        for t, m in enumerate(ms):
+            mates = [label_box(pts[o.id][0] * z + out[o.id][0] * f, pts[o.id][1] * z + out[o.id][1] * f,
+                               sc.display_name(o.name), sz, st.label_font, st.label_italic, halo)
+                     for k in seen_with.get(lvl, {}).get(m.step, ()) if lvl in shown_at[k]
+                     for o in tags_of.get(k, ()) if o.id in out] if free[t] else ()
+            for i in free[t]:
+                b = (float(sx0[t, i]), float(sy0[t, i]), float(sx1[t, i]), float(sy1[t, i]))
+                if any(b[0] < c[2] and c[0] < b[2] and b[1] < c[3] and c[1] < b[3] for c in mates) or \
+                        lines.meets(b, placing.line_reach, only[t]):
+                    continue
+                out[m.id] = ((float(lx[t, i]) - xy[t][0]) / f, (float(ly[t, i]) - xy[t][1]) / f, float(dist[i]))
+                break
+            else:
+                place_at(m, lvl)
+
     # each tag at the least magnified level it is seen at, in the placer's order (results first)
     hidden: dict[str, str] = {}
     for lvl, ms in sorted(by_level.items()):
-        for m in sorted(ms, key=lambda m: (RANK.get(m.role, 2), m.step, m.id)):
-            place_at(m, lvl)
+        place_level(sorted(ms, key=lambda m: (RANK.get(m.role, 2), m.step, m.id)), lvl)
     # a tag with no room there takes its spot at the next level that has room (a step's caption names it),
     # given way at the levels below
     for m in tags:
@@ -212,7 +277,7 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
     # never stacked on a letter, a point, a result line or a tag seen with it
     moves: dict[str, dict[int, tuple[float, float, float]]] = {}
     for lvl in sorted({v for vs in shown_at.values() for v in vs}):
-        z, f, taken = frame(lvl)
+        z, f, taken, _boxes = frame_at(lvl)
         here = [byid[i] for i in out if lvl in shown_at[byid[i].step]]
         if all(lowest.get(m.step, 0) == lvl for m in here):
             continue  # placed together at this level, against the same letters: nothing to check
@@ -245,12 +310,12 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
             # it lost its spot to all the tags of the level together; it holds it where it is seen only
             # with the tags seen together with it (crank step 181: M1 gave way to tags never shown with it)
             mates = seen_with.get(lvl, {}).get(byid[i].step, set())
-            local = [o for o in items if byid[o[0]].step in mates and (o[0] in holds or o[0] == i)]
-            if len(local) < len(items) and clear[i]:
+            if clear[i]:  # (asked first: the tags seen with it are gathered only for a spot free of the rest)
+                local = [o for o in items if byid[o[0]].step in mates and (o[0] in holds or o[0] == i)]
                 # it holds its spot where the spot is also free of the tags seen with it
                 b = box_of[i]
-                if not any(b[0] < c[2] and c[0] < b[2] and b[1] < c[3] and c[1] < b[3]
-                           for c in (box_of[o[0]] for o in local if o[0] != i)):
+                if len(local) < len(items) and not any(b[0] < c[2] and c[0] < b[2] and b[1] < c[3] and c[1] < b[3]
+                                                       for c in (box_of[o[0]] for o in local if o[0] != i)):
                     holds.add(i)  # the tags it is seen with after it are placed with it
                     continue
             losers.append(it)

@@ -523,3 +523,46 @@ def test_a_rectangles_diagonal_is_drawn_with_its_rectangle():
         x0, y0 = d.vp.px(*drawn[n].geom[:2])
         x1, y1 = d.vp.px(*drawn[n].geom[2:4])
         assert segment_meets_box((x, y, x + w, y + h), (x0, y0, x1, y1)), n
+
+
+def test_the_views_framed_over_arrays_are_the_cameras_own():
+    """A live page frames a step at every value at once (:func:`camera.framed_rows`, :func:`edges.clear_edges_rows`):
+    each view is the one the camera's scalar :meth:`camera.Framing.view` and :func:`edges.clear_edges` give for
+    that canvas, region and letters (one rule in two forms: held equal here, so the faster copy cannot drift)."""
+    import numpy as np
+
+    from construct.render import edges
+
+    rng = np.random.default_rng(27)
+    n = 300
+    W, H = rng.uniform(400, 1600, n), rng.uniform(300, 1600, n)
+    x0, y0 = rng.uniform(0, 0.8, n) * W, rng.uniform(0, 0.8, n) * H
+    x1 = np.minimum(x0 + rng.uniform(0.003, 0.6, n) * W, W)
+    y1 = np.minimum(y0 + rng.uniform(0.003, 0.6, n) * H, H)
+    most = rng.choice([1.5, 2.0, 4.0, 8.0], n)
+    x0[:5] = np.nan  # (nothing to frame: the whole canvas)
+    rows = camera.framed_rows((x0, y0, x1, y1), W, H, most)
+    for i in range(n):
+        full = (0.0, 0.0, float(W[i]), float(H[i]))
+        b = None if np.isnan(x0[i]) else (float(x0[i]), float(y0[i]), float(x1[i]), float(y1[i]))
+        want = camera.Framing(full).view(b, max_zoom=float(most[i])) if b is not None else full
+        assert tuple(rows[:, i]) == pytest.approx(want, abs=0.011), (i, want)
+    # a row of letters along a line across the canvas (the piston positions on the stroke line), the same
+    # letters at every level, about views magnified up to the most
+    letters = np.array([[x, 0.45 * 700.0, -9.0, -14.0, 9.0, 3.0] for x in np.linspace(30.0, 930.0, 24)])
+
+    def at(lvl, i):
+        return (np.repeat(letters[:, :1], len(i), axis=1), np.repeat(letters[:, 1:2], len(i), axis=1),
+                letters[:, 2:])
+
+    full = (0.0, 0.0, 960.0, 700.0)
+    w = rng.uniform(0.15, 1.0, n) * 960.0
+    views = [camera.clip_view(float(cx), 315.0 + float(dy), float(ww), float(ww) * 0.65, full)
+             for cx, dy, ww in zip(rng.uniform(0, 960, n), rng.uniform(-60, 60, n), w)]
+    grown = edges.clear_edges_rows(np.array(views).T, np.full(n, 960.0), np.full(n, 700.0), at)
+    want = edges.clear_edges(views, full, lambda lvl: letters)
+    assert sum(v != g for v, g in zip(views, want)) > n // 4  # (the test asks views that cut letters)
+    for i in range(n):
+        # (to 0.02 px: clear_edges asks each round of the view written to two decimals, the array form of the
+        # unrounded one, so a round may grow it a hundredth of a pixel otherwise)
+        assert tuple(grown[:, i]) == pytest.approx(want[i], abs=0.021), (i, views[i], want[i])

@@ -54,6 +54,20 @@ NUMBERS = NumbersFactory()
 __all__ = ["Measure", "Frames", "player_page", "player_page_and_fit", "fit_of", "areas_of", "breaks_px"]
 
 
+def number_places(keys: list) -> dict[tuple[str, str], int]:
+    """Where each element's attribute (its id and attribute: a key's first two) starts among a page's numbers,
+    which the keys *keys* (id, attribute, template with a ``#`` per number) give in order.
+
+    >>> number_places([("a", "cx", "#"), ("a", "cy", "#"), ("p", "d", "M#,# L#,#")])
+    {('a', 'cx'): 0, ('a', 'cy'): 1, ('p', 'd'): 2}
+    """
+    at, n = {}, 0
+    for k in keys:
+        at.setdefault((k[0], k[1]), n)
+        n += k[2].count("#")
+    return at
+
+
 def _inside(scene: Any, vp: Viewport, view: tuple) -> list[str]:
     """The ids of the marks of *scene* that lie whole inside *view* (canvas px: x, y, w, h) on viewport *vp*."""
     x, y, w, h = view
@@ -273,10 +287,7 @@ class Measure:
     def _letter_points(self, keys: list, nums: np.ndarray) -> dict:
         """Per zoom level, the points of :attr:`edge_letters` on the pages whose numbers are *nums* (values x
         numbers, in the order of *keys*): x, y, each letters x values (NaN: not drawn)."""
-        at, n = {}, 0
-        for k in keys:
-            at.setdefault((k[0], k[1]), n)
-            n += k[2].count("#")
+        at = number_places(keys)
         out = {}
         for lvl, (ids, _) in self.edge_letters.items():
             ix = np.asarray([at.get((i, "cx"), -1) for i in ids], dtype=int)
@@ -334,10 +345,7 @@ class Measure:
         the plate's lettering scaled about its own middle (the player's ``scale`` of it); and whether it is
         the plate's (the furniture's, which a held furniture does not show away from the book's value); and the
         ids of their elements."""
-        at, n = {}, 0
-        for k in self.keys:
-            at.setdefault((k[0], k[1]), n)
-            n += k[2].count("#")
+        at = number_places(self.keys)
         rows, ids = [], []
         for ident, attr, (x, y), b in letters:
             if (ident, attr) not in at or (ident, "cy" if attr == "cx" else "y") not in at:

@@ -13,7 +13,8 @@ import random
 import numpy as np
 import pytest
 
-from construct.render.lettering import LEADER_FROM, LineIndex, label_box, place, spots_of, text_box, text_width
+from construct.render.lettering import (LEADER_FROM, LineIndex, label_box, line_pieces, line_pieces_one_by_one, place,
+                                        spots_of, text_box, text_width)
 
 
 def test_letters_are_measured_in_the_fonts_metrics():
@@ -56,6 +57,26 @@ def test_the_line_index_answers_as_shapely_does():
         b = (x, y, x + w, y + h)
         want = any(LineString([s[:2], s[2:]]).intersects(box(*b)) for s in segs)
         assert index.meets(b) == want, b
+
+
+def test_the_line_index_cuts_its_lines_on_arrays_as_one_by_one_to_the_bit():
+    """line_pieces (every segment's pieces at once) against the rule one piece at a time: the same cells, the
+    same pieces to the last bit, in the same order -- on short, long, degenerate, negative and far segments, at
+    the cell sizes letters are placed with (one rule in two forms: the faster copy must not drift)."""
+    rng = np.random.default_rng(28)
+    segs = rng.uniform(-300, 900, (400, 4))
+    segs[::7, 2:] = segs[::7, :2] + rng.uniform(-3, 3, (len(segs[::7]), 2))  # short: one piece
+    segs[::11, 2:] = segs[::11, :2]  # a point
+    segs[5] = (0.0, 0.0, 1e6, 0.0)  # far beyond the sheet: left out, its number skipped
+    segs[6] = (-0.0, -0.0, -0.0, 18.0)  # exactly on cell edges
+    as_tuples = [tuple(s) for s in segs.tolist()]
+    for cell in (12.0, 1.5 * 9.5, 1.5 * 12.0 * 2.7, 100.0):
+        want = line_pieces_one_by_one(as_tuples, cell)
+        got = line_pieces(segs, cell)
+        assert got[0] == want[0] and got[2] == want[2]
+        assert np.array_equal(np.array(got[1]).view(np.int64), np.array(want[1]).view(np.int64))
+        assert 5 not in got[2] and len(got[1]) > len(segs)
+    assert line_pieces([], 12.0) == ([], [], [])
 
 
 def test_placed_letters_keep_clear_of_each_other_and_of_the_points():

@@ -38,7 +38,7 @@ from typing import Any, Iterable, Sequence
 import numpy as np
 
 __all__ = ["place", "spots_of", "LineIndex", "label_box", "text_box", "text_width", "segment_meets_box", "clipped_segment", "RANK", "LEADER_FROM",
-           "DEFAULT_FONT"]
+           "DEFAULT_FONT", "line_pieces", "line_pieces_one_by_one"]
 
 #: Rank of a role: lower is placed first.
 RANK = {"result": 0, "given": 1}
@@ -353,6 +353,56 @@ def segment_meets_box(box, seg) -> bool:
     return clipped_segment(box, seg) is not None
 
 
+def line_pieces(segments: Iterable[tuple[float, float, float, float]] | np.ndarray, cell: float
+                ) -> tuple[list[tuple[int, int]], list[tuple[float, float, float, float]], list[int]]:
+    """The pieces a :class:`LineIndex` files *segments* (x0, y0, x1, y1) under, in order: each cut into
+    ``n = int(length / cell) + 1`` equal pieces (a segment of more than 4000 is far beyond the sheet and left
+    out), each piece under the cell (of side *cell*) of its middle: (cells, pieces, the segments' numbers).
+
+    The pieces of all segments are worked out at once (a figure's result lines are thousands, at every zoom
+    level), with the numbers of one piece at a time (:func:`line_pieces_one_by_one`, the rule, held equal to
+    this in the tests).
+
+    >>> line_pieces([(0.0, 0.0, 4.0, 0.0), (0.0, 1.0, 0.0, 1.5)], 3.0)
+    ([(0, 0), (1, 0), (0, 0)], [(0.0, 0.0, 2.0, 0.0), (2.0, 0.0, 4.0, 0.0), (0.0, 1.0, 0.0, 1.5)], [0, 0, 1])
+    """
+    seg = np.array(segments if isinstance(segments, np.ndarray) else list(segments), dtype=float).reshape(-1, 4)
+    x0, y0 = seg[:, 0], seg[:, 1]
+    dx, dy = seg[:, 2] - x0, seg[:, 3] - y0
+    hypot = math.hypot  # (each length as the rule measures it: a piece count never differs by a last bit)
+    n = np.array([max(1, int(hypot(a, b) / cell) + 1) for a, b in zip(dx.tolist(), dy.tolist())], dtype=np.int64)
+    number = np.flatnonzero(n <= 4000)
+    n = n[number]
+    k = np.repeat(number, n)
+    per = np.repeat(n, n)
+    i = np.arange(len(k)) - np.repeat(np.cumsum(n) - n, n)
+    a, b = i / per, (i + 1) / per
+    x0, y0, dx, dy = x0[k], y0[k], dx[k], dy[k]
+    pieces = np.column_stack((x0 + a * dx, y0 + a * dy, x0 + b * dx, y0 + b * dy))
+    keys = np.floor(np.column_stack(((pieces[:, 0] + pieces[:, 2]) / 2 / cell,
+                                     (pieces[:, 1] + pieces[:, 3]) / 2 / cell))).astype(np.int64)
+    return list(map(tuple, keys.tolist())), list(map(tuple, pieces.tolist())), k.tolist()
+
+
+def line_pieces_one_by_one(segments: Iterable[tuple[float, float, float, float]], cell: float
+                           ) -> tuple[list[tuple[int, int]], list[tuple[float, float, float, float]], list[int]]:
+    """:func:`line_pieces`, one segment and one piece at a time (the rule the array form follows)."""
+    keys, pieces, numbers = [], [], []
+    floor, hypot = math.floor, math.hypot
+    for k, (x0, y0, x1, y1) in enumerate(segments):
+        dx, dy = x1 - x0, y1 - y0
+        n = max(1, int(hypot(dx, dy) / cell) + 1)
+        if n > 4000:
+            continue  # far beyond the sheet
+        for i in range(n):
+            a, b = i / n, (i + 1) / n
+            piece = (x0 + a * dx, y0 + a * dy, x0 + b * dx, y0 + b * dy)
+            keys.append((floor((piece[0] + piece[2]) / 2 / cell), floor((piece[1] + piece[3]) / 2 / cell)))
+            pieces.append(piece)
+            numbers.append(k)
+    return keys, pieces, numbers
+
+
 class LineIndex:
     """Result lines as short pieces in a grid, asked whether a box meets one.
 
@@ -363,30 +413,18 @@ class LineIndex:
     alone would give.
     """
 
-    def __init__(self, size: float, segments: Iterable[tuple[float, float, float, float]]):
+    def __init__(self, size: float, segments: Iterable[tuple[float, float, float, float]] | np.ndarray):
         cell = 1.5 * size
         self.size = size
         self.cell = cell
         self.cells: dict[tuple[int, int], list[tuple[tuple[float, float, float, float], int]]] = {}
-        cells, floor, hypot = self.cells, math.floor, math.hypot
-        for k, seg in enumerate(segments):
-            x0, y0, x1, y1 = seg
-            dx, dy = x1 - x0, y1 - y0
-            n = max(1, int(hypot(dx, dy) / cell) + 1)
-            if n > 4000:
-                continue  # far beyond the sheet
-            for i in range(n):
-                if n == 1:  # most result lines are short pieces already: the numbers of the loop below
-                    piece = (x0 + 0.0 * dx, y0 + 0.0 * dy, x0 + 1.0 * dx, y0 + 1.0 * dy)
-                else:
-                    a, b = i / n, (i + 1) / n
-                    piece = (x0 + a * dx, y0 + a * dy, x0 + b * dx, y0 + b * dy)
-                key = (floor((piece[0] + piece[2]) / 2 / cell), floor((piece[1] + piece[3]) / 2 / cell))
-                got = cells.get(key)
-                if got is None:
-                    cells[key] = [(piece, k)]
-                else:
-                    got.append((piece, k))
+        cells = self.cells
+        for key, piece, k in zip(*line_pieces(segments, cell)):
+            got = cells.get(key)
+            if got is None:
+                cells[key] = [(piece, k)]
+            else:
+                got.append((piece, k))
 
     def length_in(self, box) -> float:
         """How much of the lines lies inside *box*: what a plate would break them by for a letter there."""

@@ -104,6 +104,29 @@ def test_a_letter_is_set_on_its_baseline_and_centred():
     assert halo == pytest.approx((b[0] - 2.0, b[1] - 2.0, b[2] + 2.0, b[3] + 2.0))
 
 
+def test_the_collision_grid_files_boxes_in_bulk_as_one_by_one():
+    """_Grid.add_many (every box's cells found at once) files each box in the cells, and in the order within each
+    cell, that _Grid.add gives it box by box: points across cell borders, on them exactly, at negative
+    coordinates, a box spanning many cells (one rule in two forms: the faster copy must not drift)."""
+    from construct.render.lettering import _Grid
+
+    rng = np.random.default_rng(28)
+    xy = np.concatenate([rng.uniform(-60, 60, (2000, 2)), 7.5 * rng.integers(-8, 8, (200, 2))])
+    r = rng.choice([0.9, 3.6, 7.5], len(xy))[:, None]
+    boxes = np.concatenate([xy - r, xy + r], axis=1)
+    grids = []
+    for cell, rows in ((7.5, boxes), (3.0, boxes), (7.5, np.array([[-40.0, -40.0, 41.0, 12.0], [0.0, 0.0, 1.0, 1.0]]))):
+        one, bulk = _Grid(cell), _Grid(cell)
+        grids.append(one)
+        for b in map(tuple, rows.tolist()):
+            one.add(b)
+        bulk.add_many(rows)
+        assert bulk.cells == one.cells
+        assert list(bulk.cells) == list(one.cells)
+    # (crowded cells, and boxes in two or four cells: the cases filed in order)
+    assert max(len(v) for v in grids[0].cells.values()) > 20 and sum(map(len, grids[0].cells.values())) > 2 * len(boxes)
+
+
 class _Looked(tuple):
     """A filed box that counts how often the grid reads it."""
 

@@ -232,19 +232,27 @@ class _Grid:
                     got.append(b)
 
     def add_many(self, boxes: np.ndarray) -> None:
-        """:meth:`add` of each box (rows x0, y0, x1, y1), in order, the cells of those within one cell found at once
-        (the points of a placing: thousands)."""
+        """:meth:`add` of each box (rows x0, y0, x1, y1), in order: the cells of all of them found at once (the
+        points of a placing: thousands, most of them across a cell's border), each box filed in each of its cells
+        in the order :meth:`add` files it (box by box, column by column)."""
         cells = self.cells
-        i0, j0, i1, j1 = np.floor(boxes / self.cell).astype(int).T.tolist()
-        for b, a0, b0, a1, b1 in zip(map(tuple, boxes.tolist()), i0, j0, i1, j1):
-            if a0 != a1 or b0 != b1:
+        i0, j0, i1, j1 = np.floor(boxes / self.cell).astype(np.int64).T
+        nj = j1 - j0 + 1
+        per = (i1 - i0 + 1) * nj
+        if len(per) and (per.min() < 1 or per.max() > 64):
+            for b in map(tuple, boxes.tolist()):  # (a box far larger than a point's: as add files it)
                 self.add(b)
-                continue
-            got = cells.get((a0, b0))
+            return
+        which = np.repeat(np.arange(len(per)), per)
+        k = np.arange(len(which)) - np.repeat(np.cumsum(per) - per, per)  # the cell's number within its box's
+        n = nj[which]
+        filed = list(map(tuple, boxes.tolist()))
+        for b, key in zip(which.tolist(), zip((i0[which] + k // n).tolist(), (j0[which] + k % n).tolist())):
+            got = cells.get(key)
             if got is None:
-                cells[(a0, b0)] = [b]
+                cells[key] = [filed[b]]
             else:
-                got.append(b)
+                got.append(filed[b])
 
 
 class _Boxes:

@@ -19,6 +19,7 @@ import base64
 import math
 import re
 import zlib
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -234,7 +235,7 @@ def _walked_knots(live: LiveSweep) -> tuple[np.ndarray, np.ndarray, np.ndarray, 
     natural = np.where((natural == LOG) & (live.drawn.min(axis=0) <= 0.0), LENGTH, natural).astype(np.int8)
     nearest = live.nearest_columns()
     # a column walks the tree alone, by its own numbers, kind and nearness: of the columns alike in those (a
-    # point's coordinate in its circle, its lines and arcs: two thirds of Tafel 2's), the first walks for all
+    # point's coordinate in its circle, its lines and arcs: two thirds of tangential-pressure's), the first walks for all
     like = same_walk(live.drawn, natural, nearest)
     walks = np.flatnonzero(like == np.arange(cols))
     of = np.searchsorted(walks, like)  # (each column's walk among them)
@@ -256,32 +257,41 @@ def same_walk(drawn: np.ndarray, kinds: np.ndarray, nearest: np.ndarray) -> np.n
     nearer grid value where *nearest*: the first column with the same numbers (to the bit), kind and nearness
     (:func:`column_knots` walks that one alone for all of them).
 
-    A column is known by two weighted sums of its numbers' bits (integer arithmetic, wrapping, row by row: no
-    copy of the matrix turned on its side), as :func:`_same_columns` knows one, then compared whole with the
-    first one of its sums.
-
     >>> same_walk(np.array([[0.0, 0.0, 0.0, -0.0], [2.0, 2.0, 2.0, 2.0]]), np.array([1, 1, 2, 1]),
     ...           np.zeros(4, dtype=bool)).tolist()
     [0, 0, 2, 3]
     """
-    rows, cols = drawn.shape
-    bits = np.ascontiguousarray(drawn).view(np.int64)
-    weights = np.random.default_rng(26).integers(1, 2 ** 62, size=(rows + 1, 2), dtype=np.int64)
+    return _first_alike((*np.ascontiguousarray(drawn).view(np.int64), kinds.astype(np.int64) * 2 + nearest))
+
+
+def _first_alike(rows: Sequence[np.ndarray]) -> np.ndarray:
+    """For each column of the integer *rows* (each a row of as many numbers), the first column equal to it in
+    every row.
+
+    A column is known by two weighted sums of its numbers (integer arithmetic, wrapping, row by row: no copy of
+    the rows turned on their side, no sort of the columns), and every column is then compared whole with the
+    first one of its sums: two different columns with the same sums are told apart by their bytes.
+
+    >>> _first_alike([np.array([1, 2, 1, 1]), np.array([3, 4, 3, 5])]).tolist()
+    [0, 1, 0, 3]
+    """
+    cols = len(rows[0])
+    weights = np.random.default_rng(28).integers(1, 2 ** 62, size=(len(rows), 2), dtype=np.int64)
     sums = np.zeros((2, cols), dtype=np.int64)
     with np.errstate(over="ignore"):
-        for row, w in zip((*bits, kinds.astype(np.int64) * 2 + nearest), weights):
+        for row, w in zip(rows, weights):
             sums[0] += row * w[0]
             sums[1] += row * w[1]
     seen: dict[tuple[int, int], int] = {}
     like = np.fromiter((seen.setdefault(s, c) for c, s in enumerate(zip(*sums.tolist()))), dtype=np.int64,
                        count=cols)
-    dup = np.flatnonzero(like != np.arange(cols))
+    dup = np.flatnonzero(like != np.arange(cols))  # (a column is itself: only those like an earlier one)
     of = like[dup]
-    if not ((bits[:, dup] == bits[:, of]).all(axis=0) & (kinds[dup] == kinds[of]) & (nearest[dup] == nearest[of])).all():
-        keyed: dict[tuple, int] = {}  # two columns with the same sums: by their bytes
-        across = np.ascontiguousarray(bits.T)
-        like = np.fromiter((keyed.setdefault((across[c].tobytes(), int(kinds[c]), bool(nearest[c])), c)
-                            for c in range(cols)), dtype=np.int64, count=cols)
+    if not all((row[dup] == row[of]).all() for row in rows):  # two columns with the same sums: by their bytes
+        whole = np.ascontiguousarray(np.vstack(rows).T)
+        by_bytes: dict[bytes, int] = {}
+        like = np.fromiter((by_bytes.setdefault(whole[c].tobytes(), c) for c in range(cols)), dtype=np.int64,
+                           count=cols)
     return like
 
 
@@ -344,36 +354,15 @@ def encode(live: LiveSweep) -> dict[str, Any]:
 
 def _same_columns(q: np.ndarray, keep: np.ndarray, kinds: np.ndarray) -> tuple[np.ndarray, list[int]]:
     """Which columns of (q, keep, kinds) are the same (grid x columns, each column's values, kept grid values
-    and kind): for each column the number of the first one like it, counting those in order, and those firsts.
-
-    A column is known by two weighted sums of its numbers (integer arithmetic, wrapping: one pass over the
-    matrix, no sort of its columns, no copy of it turned on its side), and every column is then compared whole
-    with the first one of its sums: two different columns with the same sums are told apart by their bytes.
+    and kind): for each column the number of the first one like it, counting those in order, and those firsts
+    (:func:`_first_alike`; the kept values eight to a byte).
 
     >>> m, f = _same_columns(np.array([[1, 2, 1], [3, 4, 3]]), np.ones((2, 3), dtype=bool), np.zeros(3, dtype=np.int8))
     >>> m.tolist(), f
     ([0, 1, 0], [0, 1])
     """
-    rows, cols = q.shape
-    bits = np.packbits(keep, axis=0).astype(np.int64)  # (the kept values eight to a byte: summed as bytes)
-    weights = np.random.default_rng(28).integers(1, 2 ** 62, size=(rows + len(bits) + 1, 2), dtype=np.int64)
-    sums = np.zeros((2, cols), dtype=np.int64)
-    with np.errstate(over="ignore"):
-        # row by row (the rows are contiguous; a product of the matrix turned on its side gathers its columns)
-        for row, w in zip((*q, *bits, kinds.astype(np.int64)), weights):
-            sums[0] += row * w[0]
-            sums[1] += row * w[1]
-    seen: dict[tuple[int, int], int] = {}
-    colmap = np.fromiter((seen.setdefault(s, c) for c, s in enumerate(zip(*sums.tolist()))), dtype=np.int64,
-                         count=cols)
-    dup = np.flatnonzero(colmap != np.arange(cols))  # (a column is itself: only those like an earlier one)
-    of = colmap[dup]
-    same = (q[:, dup] == q[:, of]).all(axis=0) & (keep[:, dup] == keep[:, of]).all(axis=0) & (kinds[dup] == kinds[of])
-    if not same.all():  # two columns with the same sums: by their bytes
-        whole = np.ascontiguousarray(np.vstack([q, keep, kinds[None, :]]).T)
-        by_bytes: dict[bytes, int] = {}
-        colmap = np.fromiter((by_bytes.setdefault(whole[c].tobytes(), c) for c in range(cols)), dtype=np.int64,
-                             count=cols)
+    cols = q.shape[1]
+    colmap = _first_alike((*q, *np.packbits(keep, axis=0).astype(np.int64), kinds.astype(np.int64)))
     firsts = np.flatnonzero(colmap == np.arange(cols))
     return np.searchsorted(firsts, colmap), firsts.tolist()
 

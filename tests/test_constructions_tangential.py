@@ -202,3 +202,20 @@ def test_the_sweeps_model_equals_the_model_of_each_set(force):
         assert len(swept["kinks"]) == len(one["kinks"])
         for a, b in zip(swept["kinks"], one["kinks"]):
             assert abs(a[i] - b) <= 1e-14, (force, ratio)
+
+
+@pytest.mark.parametrize("kw", [{"parts": 9}, {"revolution": True, "machine": "compound", "parts": 6}])
+def test_height_names_are_those_a_scan_of_the_replay_finds(kw):
+    """The scale's names, found once per protocol, are those the pattern finds among every name of a replay (the
+    book figure's, a sweep's values, a replay of part of the steps)."""
+    from construct.constructions.tangential.plate import _HEIGHTS, height_names
+
+    fig = TP.figure(**kw)
+    proto = fig.protocol
+    sweep = proto.replay({**fig.replay.givens, "kappa": [2.0, 8.0]})
+    whole = [k for k in fig.replay if _HEIGHTS.fullmatch(k)]
+    # (the ordinates' ends are among the last steps: a replay that stops a few short has some of them)
+    part = next(R for R in map(lambda u: proto.replay(upto=u), range(len(proto.steps) - 1, 0, -1))
+                if 0 < len([k for k in R if _HEIGHTS.fullmatch(k)]) < len(whole) - 1)
+    for R in (fig.replay, sweep.take(0), sweep.take(1), part, fig.replay):
+        assert height_names(R) == [k for k in R if _HEIGHTS.fullmatch(k)]

@@ -60,12 +60,32 @@ def _scale(fig: Figure, m: int) -> list[dict]:
     U0, Um = R["U0"], R[f"U{m}"]
     span = abs(Um[0] - U0[0])
     unit = R.givens["pressure_unit"]
-    # (a player asks at every grid value: the pattern only on names that can match, not the replay's thousands)
-    heights = [(R[k][1] - U0[1]) / unit for k in R if k[:1] in "TSc" and _HEIGHTS.fullmatch(k)]
+    heights = [(R[k][1] - U0[1]) / unit for k in height_names(R)]
     step = 2.0 if max(heights) - min(heights) > 6 else 1.0
     lo, hi = math.floor(min(0.0, min(heights)) / step), math.floor(max(heights) / step + 1e-9)
     return scale_furniture(x=U0[0] - 0.06 * span, zero=U0[1], unit=unit, values=[i * step for i in range(lo, hi + 1)],
                            tick=0.008 * span, text="at")
+
+
+#: The names whose heights the scale spans, by the protocol that makes them: {id: (protocol, names)} (at most
+#: _NAMED protocols kept, each with its entry so that its id is not another's).
+_named: dict[int, tuple[object, tuple[str, ...]]] = {}
+_NAMED = 16
+
+
+def height_names(replay) -> list[str]:
+    """The names of the points of *replay* whose heights the scale spans (:data:`_HEIGHTS`), in the protocol's order.
+
+    A player asks at every value of a sweep, whose names are its protocol's: the protocol's thousands of names are
+    scanned once, and a replay of part of the steps keeps those it has.
+    """
+    got = _named.get(id(replay.protocol))
+    if got is None or got[0] is not replay.protocol:
+        if len(_named) >= _NAMED:
+            _named.clear()
+        names = tuple(k for k in replay.protocol.program.names if k[:1] in "TSc" and _HEIGHTS.fullmatch(k))
+        got = _named[id(replay.protocol)] = (replay.protocol, names)
+    return [k for k in got[1] if k in replay]
 
 
 def _cylinder_letters(fig: Figure) -> list[dict]:

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
-from typing import Any, Sequence
+from typing import Any, NamedTuple, Sequence
 
 from .camera import FINAL_CONTEXT, NON_SCALING, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, level, player_letter_scale, zoom_of
 from .captions import Captions
@@ -36,9 +36,9 @@ from .styles import Style
 from .svgdoc import Element, Writer, fmt, with_attribute
 from .viewport import Viewport
 
-__all__ = ["EndView", "END_MARGIN_PX", "lay_out_end", "end_fixed", "end_lettering", "end_lettering_at",
-           "end_furniture", "end_sheet", "own_strokes", "wrapped", "NumbersFactory", "furniture_numbers", "lettering_box",
-           "end_letter_boxes"]
+__all__ = ["EndView", "END_MARGIN_PX", "lay_out_end", "end_fixed", "end_lettering", "end_lettering_at", "EndParts",
+           "end_parts", "end_furniture", "end_sheet", "own_strokes", "wrapped", "NumbersFactory", "furniture_numbers",
+           "lettering_box", "end_letter_boxes"]
 
 #: The margin round the end state's drawing on its sheet (screen px at the end view).
 END_MARGIN_PX = 14.0
@@ -252,9 +252,28 @@ def _result_strokes(scene: Any, vp: Any) -> list[tuple[float, float, float, floa
             if isinstance(it, Stroke) and not {"thin", "dashed", "hidden"} & set(it.look.split())]
 
 
+class EndParts(NamedTuple):
+    """What :func:`end_lettering_at` and :func:`end_furniture` both read of a plate's furniture in the end state (a
+    live sweep asks both at every value): the elements of each item but its lettering ((its index, its elements),
+    fresh: :func:`end_furniture` names them), the boxes of their texts (:func:`lettering_box`) and the lettering
+    (:func:`end_lettering`)."""
+
+    fixed: list[tuple[int, list[Any]]]
+    texts: list[tuple[float, float, float, float]]
+    lettering: list[tuple[str, tuple[float, float], str]]
+
+
+def end_parts(sheet: Any, style: Style, vp: Any, end: EndView, factory: Any) -> EndParts:
+    """:class:`EndParts` of the plate's furniture of *sheet* (anything with ``end_furniture``) on *vp*."""
+    fixed = [(i, furniture_elements([it], vp.px, vp.scale, factory, size=end.size))
+             for i, it in enumerate(sheet.end_furniture) if not isinstance(it, Lettering)]
+    texts = [b for _i, els in fixed for e in els if (b := lettering_box(e, end.size, style)) is not None]
+    return EndParts(fixed, texts, end_lettering(sheet, vp, style, end.size))
+
+
 def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, end: EndView, placing: Placing,
                      factory: Any, keep: dict[str, tuple[float, float, float]] | None = None,
-                     ) -> dict[str, tuple[float, float, float]]:
+                     parts: EndParts | None = None) -> dict[str, tuple[float, float, float]]:
     """Where the plate's lettering of *sheet* (anything with ``end_furniture``: the plate at another value of a live
     given, in the built plate's form) stands about its places at that value, as :func:`lay_out_end` places it
     (:meth:`~construct.render.placing.Placing.end_lettering_at`: among that value's end-state *marks* on *vp*):
@@ -263,10 +282,10 @@ def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, en
     over the sweep (its elements, by which the page knows them).  *keep*: spots of this form (a neighbouring
     value's), kept as they are where they crowd there no more than those placed anew
     (:meth:`~construct.render.placing.Placing.end_crowd`: a letter that has no room there crowds either way).
+    *parts*: :func:`end_parts` of *sheet* (made here without), which :func:`end_furniture` draws too.
     """
-    texts = [b for e in furniture_elements(end_fixed(sheet), vp.px, vp.scale, factory, size=end.size)
-             if (b := lettering_box(e, end.size, style)) is not None]
-    lettering = end_lettering(sheet, vp, style, end.size)
+    parts = end_parts(sheet, style, vp, end, factory) if parts is None else parts
+    texts, lettering = parts.texts, parts.lettering
     crowd = placing.end_crowd(vp, end.letter, marks, texts, lettering, keep) if keep is not None else set()
     if keep is not None and not crowd:
         return keep
@@ -281,23 +300,24 @@ def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, en
 
 def end_furniture(scene: Scene, style: Style, vp: Viewport, end: EndView, placing: Placing, factory: Any,
                   owners: dict[str, int] | None = None,
-                  spots: dict[str, tuple[float, float, float]] | None = None) -> Any:
+                  spots: dict[str, tuple[float, float, float]] | None = None,
+                  parts: EndParts | None = None) -> Any:
     """The plate's furniture in the end state (``<g class="fo end">``), its letters at the size of the end
     state's, its lettering where the end state's placing set it (upright; tied to its place by a leader when
     set off).  Each of its elements has an id in the order drawn (``fin-s<k>``: the line of a stroke the plate
     adds, which a broken axis breaks; ``fin-f<k>`` the rest): the live page moves them with the given
     (:func:`furniture_numbers`).  *owners*, if given, gets each element's item: {its id: the item's index in
     ``scene.end_furniture``}.  *spots*: where the lettering stands about its places (``placing.end_spots`` without;
-    another value of a live given's: :func:`end_lettering_at`)."""
+    another value of a live given's: :func:`end_lettering_at`); *parts*: :func:`end_parts` (made here without)."""
     f = factory
     spots = placing.end_spots if spots is None else spots
+    parts = end_parts(scene, style, vp, end, factory) if parts is None else parts
     g = f.g(class_="fo end")
     owners = {} if owners is None else owners
     k = 0
-    for i, it in enumerate(scene.end_furniture):
-        if isinstance(it, Lettering):  # (below: where the placing set it)
-            continue
-        for j, e in enumerate(furniture_elements([it], vp.px, vp.scale, f, size=end.size)):
+    for i, elements in parts.fixed:  # (the lettering below: where the placing set it)
+        it = scene.end_furniture[i]
+        for j, e in enumerate(elements):
             e["id"] = f"fin-{'s' if j == 0 and isinstance(it, Stroke) else 'f'}{k}"
             owners[e["id"]] = i
             if _at_letter_size(it, j):
@@ -305,7 +325,7 @@ def end_furniture(scene: Scene, style: Style, vp: Viewport, end: EndView, placin
             k += 1
             g.add(e)
     ls = end.letter
-    for (fid, (px, py), text), i in zip(end_lettering(scene, vp, style, end.size),
+    for (fid, (px, py), text), i in zip(parts.lettering,
                                        [i for i, it in enumerate(scene.end_furniture) if isinstance(it, Lettering)]):
         rel = spots.get(fid)
         if rel is None:

@@ -246,3 +246,27 @@ def test_a_letter_alone_takes_the_first_spot_free_of_the_boxes_and_points_in_the
                                 for w in walls)), None)
         got = place([item], size, np.array(dots), taken=taken, keep=False, distances=(4.5, 8.0))
         assert (got["a"][:2] if "a" in got else None) == want
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_place_among_the_lines_near_its_spots_is_place_among_all(seed):
+    """A placing among only the lines near the spots its letters may take (spots_extent, lines_near: how the end
+    state's letters are placed at every value of a live sweep) sets every letter where one among all the lines does,
+    the preferred spots too."""
+    from construct.render.lettering import lines_near, spots_extent
+
+    rng = random.Random(seed)
+    size, reach = 10.0, 1.5
+    items = [(f"p{i}", "result", i, (rng.uniform(100, 300), rng.uniform(100, 300)), (1.0, 0.0), "Ab"[: 1 + i % 2])
+             for i in range(rng.choice((1, 3, 7)))]
+    # (preferred spots far off, beyond the rings: their lines count too)
+    prefer = {mid: (rng.uniform(-80, 80), rng.uniform(-80, 80), 1.0) for mid, *_ in items[::2]}
+    segments = []
+    for _ in range(300):
+        x, y, a, n = rng.uniform(0, 400), rng.uniform(0, 400), rng.uniform(0, math.pi), rng.uniform(2, 60)
+        segments.append((x, y, x + n * math.cos(a), y + n * math.sin(a)))
+    near = lines_near(segments, spots_extent(items, size, prefer=prefer), reach + size)
+    assert 0 < len(near) < len(segments)
+    for ask in (None, prefer):
+        got = place(items, size, [], LineIndex(size, near), keep=False, prefer=ask, reach=reach)
+        assert got == place(items, size, [], LineIndex(size, segments), keep=False, prefer=ask, reach=reach)

@@ -37,7 +37,7 @@ from typing import Any, Iterable, Sequence
 
 import numpy as np
 
-__all__ = ["place", "spots_of", "LineIndex", "label_box", "text_box", "text_width", "segment_meets_box", "clipped_segment", "RANK", "LEADER_FROM",
+__all__ = ["place", "spots_of", "spots_extent", "lines_near", "LineIndex", "label_box", "text_box", "text_width", "segment_meets_box", "clipped_segment", "RANK", "LEADER_FROM",
            "DEFAULT_FONT", "line_pieces", "line_pieces_one_by_one"]
 
 #: Rank of a role: lower is placed first.
@@ -526,6 +526,44 @@ def spots_of(items: "Sequence[tuple]", size: float, *, font: str = DEFAULT_FONT,
     ((1, 60), 0.9, True)
     """
     return _spots(items, tuple(distances), size, font, italic, halo) + (_plan(tuple(distances))[4],)
+
+
+def spots_extent(items: "Sequence[tuple]", size: float, *, font: str = DEFAULT_FONT, italic: bool = False,
+                 halo: float = HALO_PX / 2, prefer: "dict[str, tuple[float, float, float]] | None" = None,
+                 distances: Sequence[float] = ()) -> tuple[float, float, float, float] | None:
+    """The box (pixels) round every spot :func:`place` may ask of *items* (its arguments: the rings' spots and the
+    preferred ones), or None without items: a line that keeps off it (by more than *place*'s reach) meets none.
+
+    >>> box = spots_extent([("a", "result", 1, (0.0, 0.0), (1.0, 0.0), "q1")], 10.0)
+    >>> box[0] < 0.0 < box[2] and box[1] < 0.0 < box[3]
+    True
+    """
+    items = list(items)
+    if not items:
+        return None
+    x0, y0, x1, y1 = _spots(items, tuple(distances), size, font, italic, halo)[2:]
+    box = (float(x0.min()), float(y0.min()), float(x1.max()), float(y1.max()))
+    for mid, _role, _step, (px, py), _d, text in items:
+        if prefer and mid in prefer:
+            b = _box_maker(text, size, font, italic, halo)(px + prefer[mid][0], py + prefer[mid][1])
+            box = (min(box[0], b[0]), min(box[1], b[1]), max(box[2], b[2]), max(box[3], b[3]))
+    return box
+
+
+def lines_near(segments: Sequence[tuple[float, float, float, float]], box: tuple[float, float, float, float],
+               margin: float) -> list[tuple[float, float, float, float]]:
+    """The *segments* (x0, y0, x1, y1) whose own box comes within *margin* of *box*, in their order: a
+    :class:`LineIndex` of them answers :meth:`LineIndex.meets` of a box inside *box* (grown by less than *margin*)
+    as one of all *segments* does (a piece lies in its segment's box; the pieces of a segment are its own).
+
+    >>> lines_near([(0.0, 0.0, 1.0, 1.0), (5.0, 5.0, 9.0, 5.0)], (2.0, 2.0, 3.0, 3.0), 1.5)
+    [(0.0, 0.0, 1.0, 1.0)]
+    """
+    seg = np.array(segments, dtype=float).reshape(-1, 4)
+    lo, hi = np.minimum(seg[:, :2], seg[:, 2:]), np.maximum(seg[:, :2], seg[:, 2:])
+    near = ((lo[:, 0] <= box[2] + margin) & (hi[:, 0] >= box[0] - margin) & (lo[:, 1] <= box[3] + margin)
+            & (hi[:, 1] >= box[1] - margin))
+    return [s for s, k in zip(segments, near.tolist()) if k]
 
 
 @functools.lru_cache(maxsize=8)

@@ -32,7 +32,7 @@ import numpy as np
 
 from .camera import PLAYER_FIGURE_PX, THIN_FROM, ZOOM_LEVELS, View
 from .gaps import Gap
-from .lettering import HALO_PX, LEADER_FROM, LineIndex, label_box, place, text_box
+from .lettering import HALO_PX, LEADER_FROM, LineIndex, label_box, lines_near, place, spots_extent, text_box
 from .paths import bezier_arrays
 from .plate import plain
 from .scene import Mark, MarkKind, Scene, label_offset_direction
@@ -488,8 +488,13 @@ class Placing:
             spot = self.spots.get(m.id)
             if spot is not None:
                 prefer[m.id] = ((spot[0] - p[0]) * letter, (spot[1] - p[1]) * letter, spot[2])
-        got = place(items, size, dots, LineIndex(size, lines), font=st.label_font, italic=st.label_italic,
-                    taken=list(taken), keep=False, prefer=prefer, halo=HALO_PX / 2 * letter, reach=self.line_reach)
+        # (the lines filed are those near a spot the letters may take: a live sweep places them at many values, and
+        # the result lines are most of the end state's)
+        halo = HALO_PX / 2 * letter
+        near = spots_extent(items, size, font=st.label_font, italic=st.label_italic, halo=halo, prefer=prefer)
+        index = LineIndex(size, lines if near is None else lines_near(lines, near, self.line_reach + size))
+        got = place(items, size, dots, index, font=st.label_font, italic=st.label_italic,
+                    taken=list(taken), keep=False, prefer=prefer, halo=halo, reach=self.line_reach)
         return items, got, dots, lines
 
     def place_tags(self, views: Sequence[View], full: View,

@@ -179,6 +179,7 @@ class Measure:
         #: :attr:`furniture_live` (the sweep of a given over which it can be matched item by item:
         #: :meth:`furniture_kept`), held at these numbers else (the page shows it at the book's values alone)
         self._built = built
+        self._checks: list[list[Any]] | None = None  # (built_checks)
         self._items = scene.end_furniture
         #: another value's furniture matched to the built one's, by its items' forms and texts (:meth:`_aligned`)
         self._matches: dict[tuple, dict[int, int]] = {}
@@ -428,6 +429,18 @@ class Measure:
         if absent:
             texts["#absent"] = " ".join(i for i, k in own.items() if k in absent)
         return keys, nums, texts
+
+    def built_checks(self, figure: Figure) -> list[list[Any]]:
+        """The construction's checks of *figure* (the built value's), as the live data carries them: [[name,
+        measured, expected, error, tolerance, ok], ...].  Made once for the figure the Measure was built from:
+        every piece of a given's domain and every given of the figure carry the same (Tafel I: eight pieces)."""
+        if figure is not self._built or self._checks is None:
+            rows = [[c.name, c.measured, c.expected, c.error, c.tolerance, bool(c.ok)]
+                    for c in self.construction.checks(figure)]
+            if figure is not self._built:
+                return rows
+            self._checks = rows
+        return [list(r) for r in self._checks]
 
     def spots_key(self, spots: dict[str, tuple[float, float, float]]) -> str:
         """A name of the spots the plate's lettering stands at about its places (:func:`~construct.render.end_state.

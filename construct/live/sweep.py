@@ -712,8 +712,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     picks = check_picks(grid, max(2, round(CHECK_VALUES * share)))
     live.checks = dict(zip(picks, _checks(construction, figure, given, grid[picks], protocol)))
     # and at the built value (the book's): a teacher who returns there sees its own checks
-    live.built_checks = [[c.name, c.measured, c.expected, c.error, c.tolerance, bool(c.ok)]
-                         for c in construction.checks(figure)]
+    live.built_checks = measure.built_checks(figure)
     return live
 
 

@@ -138,17 +138,34 @@ def end_lettering(scene: Scene, vp: Viewport, style: Style,
 def lettering_box(elem: Any, size: float, style: Style) -> tuple[float, float, float, float] | None:
     """The box (canvas px) of a furniture lettering element made at *size* (not turned; its halo, a copy
     beneath it, and any other element: None)."""
-    xml = elem.get_xml()
-    if xml.tag.rsplit("}", 1)[-1] != "text" or "halo" in xml.get("class", "").split():
+    tag, get, text = _written(elem)
+    if tag != "text" or "halo" in get("class", "").split():
         return None
-    got = re.search(r"font-size:\s*([\d.]+)px", xml.get("style", ""))
+    got = re.search(r"font-size:\s*([\d.]+)px", get("style", ""))
     size = float(got.group(1)) if got else size
-    text = xml.text or ""
+    text = text or ""
     # (a live sweep's raw numbers, NumbersFactory's, may be written as one-element arrays: "[796.56]")
-    x, y = (float(_NUMBER.search(xml.get(a)).group()) for a in ("x", "y"))
+    x, y = (float(_NUMBER.search(get(a)).group()) for a in ("x", "y"))
     w = text_width(text, size, style.label_font, style.label_italic)
-    x += {"start": w / 2, "end": -w / 2}.get(xml.get("text-anchor", "middle"), 0.0)
+    x += {"start": w / 2, "end": -w / 2}.get(get("text-anchor", "middle"), 0.0)
     return label_box(x, y, text, size, style.label_font, style.label_italic)
+
+
+def _written(elem: Any) -> tuple[str, Any, str | None]:
+    """The tag, a reader of the attributes (``get(name, default=None)``) and the text of *elem* as its ElementTree
+    element (``get_xml()``) has them: a plain :class:`~construct.render.svgdoc.Element` read as that would write
+    it (each attribute ``str()``-ed, the empty and None ones left out) without making it -- the live sweep boxes
+    the plate's lettering at every value of a given (Tafel 2: 14,000 elements)."""
+    if isinstance(elem, Element) and type(elem).get_xml is Element.get_xml:
+        attribs = elem.attribs
+
+        def get(name: str, default: Any = None) -> Any:
+            v = attribs.get(name)
+            return (str(v) or default) if v is not None else default
+
+        return elem.elementname, get, None if elem.text is None else str(elem.text)
+    xml = elem.get_xml()
+    return xml.tag.rsplit("}", 1)[-1], xml.get, xml.text
 
 
 def end_letter_boxes(scene: Scene, style: Style, vp: Viewport, placing: Placing, end: EndView,

@@ -496,11 +496,11 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                         if signed and sign < 0:
                             hatch = (90.0 if hatch is None else hatch) - 45.0
                         marks.append(Mark(mid if j == 0 else f"{mid}-{j}", kind=MarkKind.AREA,
-                                          geom=tuple((p[0], p[1]) for p in ring), hatch=hatch, **common))
+                                          geom=tuple([(p.x, p.y) for p in ring]), hatch=hatch, **common))
                 elif hasattr(obj, "curve_points"):
                     # a polyline is drawn as it is measured (y_at, length): straight from point to point
                     straight = getattr(obj, "kind", "") == "polyline"
-                    pts = tuple((p[0], p[1]) for p in obj.curve_points())
+                    pts = tuple([(p.x, p.y) for p in obj.curve_points()])  # (Points: read as fields)
                     if straight and label:
                         # lettered at a point of its own on it, placed once the sheet is laid out (below)
                         marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=True, **{**common, "label": None}))

@@ -181,8 +181,12 @@ class Measure:
         self._built = built
         self._checks: list[list[Any]] | None = None  # (built_checks)
         self._items = scene.end_furniture
-        #: another value's furniture matched to the built one's, by its items' forms and texts (:meth:`_aligned`)
+        #: another value's furniture matched to the built one's, by its items' forms and texts (:meth:`_aligned`),
+        #: and where each of the built items' forms and texts first stands (:func:`_pattern`)
         self._matches: dict[tuple, dict[int, int]] = {}
+        self._first: dict[tuple, int] = {}
+        for i, sign in enumerate(_signs(scene.end_furniture)[1]):
+            self._first.setdefault(sign, i)
         #: each built furniture element's item: {its id: the item's index in the built furniture}
         self.owners: dict[str, int] = {}
         self.held = self._furniture(scene.end_furniture, drawing.vp, owners=self.owners)
@@ -484,11 +488,9 @@ class Measure:
     def _aligned(self, items: tuple) -> tuple[tuple, frozenset[int]]:
         """Another value's furniture *items* in the built one's form: each built item where that value has it
         (:func:`_matched`), the built item where it has not; and the built items it has not, by their index."""
-        # (matched once for each form and texts of the items: most values of a sweep share a few; at most
-        # MATCHES of them kept)
-        key = tuple((type(it), getattr(it, "text", ""), getattr(it, "text_at", None) is None,
-                     getattr(it, "broken", False), bool(getattr(it, "angle", 0)), getattr(it, "to", None) is None)
-                    for it in items)
+        # (matched once for each pattern of the items (_pattern): the values of a sweep write other numbers on
+        # the plate, in a few patterns -- Tafel 2's 333 values in 17; at most MATCHES of them kept)
+        key = _pattern(self._first, items)
         at = self._matches.get(key)
         if at is None:
             if len(self._matches) >= MATCHES:
@@ -883,14 +885,37 @@ def _matched(built: Any, items: Any) -> dict[int, int]:
     >>> _matched(five, (Lettering((1, 1), "B"), tick(0), Lettering((0, 0), "0"), Lettering((0, 1), "at")))
     {0: 0, 1: 1, 2: 2, 5: 3}
     """
-    fb, fi = _form(built), _form(items)
-    sign = lambda its, fs: [(f, getattr(it, "text", "")) for f, it in zip(fs, its)]  # noqa: E731
+    (fb, sb), (fi, si) = _signs(built), _signs(items)
     out = {}
-    for op, i0, i1, j0, j1 in difflib.SequenceMatcher(None, sign(built, fb), sign(items, fi),
-                                                       autojunk=False).get_opcodes():
+    for op, i0, i1, j0, j1 in difflib.SequenceMatcher(None, sb, si, autojunk=False).get_opcodes():
         if op == "equal" or (op == "replace" and fb[i0:i1] == fi[j0:j1]):
             out.update(zip(range(i0, i1), range(j0, j1)))
     return out
+
+
+def _signs(items: Any) -> tuple[tuple, list[tuple]]:
+    """The forms of a plate's furniture *items* (:func:`_form`), and each item's form with its text: what
+    :func:`_matched` matches."""
+    forms = _form(items)
+    return forms, [(f, getattr(it, "text", "")) for f, it in zip(forms, items)]
+
+
+def _pattern(first: dict[tuple, int], items: Any) -> tuple:
+    """What :func:`_matched` of the built furniture and *items* depends on, as a key: the items' forms, and which
+    built item each equals in form and text (*first*: each of the built items' forms and texts -> where it first
+    stands among them; -1: none).  The matcher (difflib) pairs equal items only, so two values whose keys are
+    equal are matched alike: a scale's numbers written anew at each value ("0,53" where the built plate has
+    "0,52") are one key, not one a value.
+
+    >>> from construct.render.plate import Lettering
+    >>> first = {s: i for i, s in enumerate(_signs((Lettering((0, 0), "B"), Lettering((0, 1), "0,5")))[1])}
+    >>> _pattern(first, (Lettering((1, 1), "B"), Lettering((0, 1), "0,6")))[1]
+    (0, -1)
+    >>> _pattern(first, (Lettering((1, 1), "B"), Lettering((0, 1), "0,7")))[1]
+    (0, -1)
+    """
+    forms, signs = _signs(items)
+    return forms, tuple(first.get(s, -1) for s in signs)
 
 
 def areas_of(protocol: Any, scene: Any) -> list[list[str]]:

@@ -37,7 +37,7 @@ from .svgdoc import Element, Writer, fmt, with_attribute
 from .viewport import Viewport
 
 __all__ = ["EndView", "END_MARGIN_PX", "lay_out_end", "end_fixed", "end_lettering", "end_lettering_at",
-           "end_furniture", "end_sheet", "own_strokes", "wrapped", "NumbersFactory", "furniture_numbers", "lettering_box",
+           "end_furniture", "fixed_elements", "end_sheet", "own_strokes", "wrapped", "NumbersFactory", "furniture_numbers", "lettering_box",
            "end_letter_boxes"]
 
 #: The margin round the end state's drawing on its sheet (screen px at the end view).
@@ -271,7 +271,7 @@ def _result_strokes(scene: Any, vp: Any) -> list[tuple[float, float, float, floa
 
 def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, end: EndView, placing: Placing,
                      factory: Any, keep: dict[str, tuple[float, float, float]] | None = None,
-                     ) -> dict[str, tuple[float, float, float]]:
+                     fixed: list[list[Any]] | None = None) -> dict[str, tuple[float, float, float]]:
     """Where the plate's lettering of *sheet* (anything with ``end_furniture``: the plate at another value of a live
     given, in the built plate's form) stands about its places at that value, as :func:`lay_out_end` places it
     (:meth:`~construct.render.placing.Placing.end_lettering_at`: among that value's end-state *marks* on *vp*):
@@ -280,9 +280,10 @@ def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, en
     over the sweep (its elements, by which the page knows them).  *keep*: spots of this form (a neighbouring
     value's), kept as they are where they crowd there no more than those placed anew
     (:meth:`~construct.render.placing.Placing.end_crowd`: a letter that has no room there crowds either way).
+    *fixed*: the elements of the rest of the furniture (:func:`fixed_elements`), if the caller made them.
     """
-    texts = [b for e in furniture_elements(end_fixed(sheet), vp.px, vp.scale, factory, size=end.size)
-             if (b := lettering_box(e, end.size, style)) is not None]
+    fixed = fixed_elements(sheet, vp, end, factory) if fixed is None else fixed
+    texts = [b for els in fixed for e in els if (b := lettering_box(e, end.size, style)) is not None]
     lettering = end_lettering(sheet, vp, style, end.size)
     crowd = placing.end_crowd(vp, end.letter, marks, texts, lettering, keep) if keep is not None else set()
     if keep is not None and not crowd:
@@ -296,25 +297,37 @@ def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, en
     return got
 
 
+def fixed_elements(sheet: Any, vp: Any, end: EndView, factory: Any) -> list[list[Any]]:
+    """The elements of the end state's furniture of *sheet* that stands where the plate sets it (:func:`end_fixed`:
+    all but its lettering), item by item, made by *factory* on *vp* at the end state's letter size: what
+    :func:`end_lettering_at` boxes the lettering among and :func:`end_furniture` draws (a live sweep makes them
+    once a value for both)."""
+    return [furniture_elements([it], vp.px, vp.scale, factory, size=end.size) for it in end_fixed(sheet)]
+
+
 def end_furniture(scene: Scene, style: Style, vp: Viewport, end: EndView, placing: Placing, factory: Any,
                   owners: dict[str, int] | None = None,
-                  spots: dict[str, tuple[float, float, float]] | None = None) -> Any:
+                  spots: dict[str, tuple[float, float, float]] | None = None,
+                  fixed: list[list[Any]] | None = None) -> Any:
     """The plate's furniture in the end state (``<g class="fo end">``), its letters at the size of the end
     state's, its lettering where the end state's placing set it (upright; tied to its place by a leader when
     set off).  Each of its elements has an id in the order drawn (``fin-s<k>``: the line of a stroke the plate
     adds, which a broken axis breaks; ``fin-f<k>`` the rest): the live page moves them with the given
     (:func:`furniture_numbers`).  *owners*, if given, gets each element's item: {its id: the item's index in
     ``scene.end_furniture``}.  *spots*: where the lettering stands about its places (``placing.end_spots`` without;
-    another value of a live given's: :func:`end_lettering_at`)."""
+    another value of a live given's: :func:`end_lettering_at`).  *fixed*: the elements of the furniture but its
+    lettering (:func:`fixed_elements`, made by *factory* on *vp*), if the caller made them (they are given ids)."""
     f = factory
     spots = placing.end_spots if spots is None else spots
     g = f.g(class_="fo end")
     owners = {} if owners is None else owners
     k = 0
+    made = iter(fixed) if fixed is not None else None
     for i, it in enumerate(scene.end_furniture):
         if isinstance(it, Lettering):  # (below: where the placing set it)
             continue
-        for j, e in enumerate(furniture_elements([it], vp.px, vp.scale, f, size=end.size)):
+        for j, e in enumerate(next(made) if made is not None else furniture_elements([it], vp.px, vp.scale, f,
+                                                                                      size=end.size)):
             e["id"] = f"fin-{'s' if j == 0 and isinstance(it, Stroke) else 'f'}{k}"
             owners[e["id"]] = i
             if _at_letter_size(it, j):

@@ -501,13 +501,13 @@ class Measure:
         return (tuple(items[at[i]] if i in at else it for i, it in enumerate(self._items)),
                 frozenset(range(len(self._items))) - set(at))
 
-    def furniture_kept(self, protocol: Any, replay: Any, size: int) -> frozenset[int] | None:
+    def furniture_kept(self, protocol: Any, replay: Any, size: int, at: int = 0) -> frozenset[int] | None:
         """The built furniture's items that some value of the sweep *replay* of *protocol* lacks (a scale's
         ticks come and go with the diagram's height): drawn at every value where the built plate has them and
         shown where the nearer grid value's plate has them (an element that comes and goes would make the
         refinement split every cell about it); the rest of the furniture swept.  None where the furniture cannot
         be matched item by item (a plate of panels): held whole.  The texts of items some value adds that the
-        built plate lacks go to :attr:`added`."""
+        built plate lacks go to :attr:`added`.  *at*: where the *size* values asked begin among the sweep's."""
         if not self.held[0]:
             return frozenset()
         # (its items' kinds and what of them is drawn, matched item by item: a value where an item draws other
@@ -517,7 +517,7 @@ class Measure:
             return None
         kept = set(range(len(built)))
         self.added = []
-        for i in range(size):
+        for i in range(at, at + size):
             p = plate_of(self.construction, Figure(protocol, replay.take(i), self.construction.check,
                                                    self.construction))
             if p.panels:

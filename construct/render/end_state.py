@@ -37,8 +37,8 @@ from .svgdoc import Element, Writer, fmt, with_attribute
 from .viewport import Viewport
 
 __all__ = ["EndView", "END_MARGIN_PX", "lay_out_end", "end_fixed", "end_lettering", "end_lettering_at",
-           "end_furniture", "fixed_elements", "end_sheet", "own_strokes", "wrapped", "NumbersFactory", "furniture_numbers", "lettering_box",
-           "end_letter_boxes"]
+           "end_furniture", "fixed_elements", "end_sheet", "own_strokes", "wrapped", "NumbersFactory",
+           "furniture_numbers", "lettering_box", "end_letter_boxes"]
 
 #: The margin round the end state's drawing on its sheet (screen px at the end view).
 END_MARGIN_PX = 14.0

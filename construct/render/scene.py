@@ -493,7 +493,7 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                     signed = "signed" in common["look"].split()
                     # (its vertices as pairs of floats: an area of coordinates makes no Point for each)
                     rings = obj.coordinate_pieces() if hasattr(obj, "coordinate_pieces") else \
-                        tuple((sign, tuple([(p.x, p.y) for p in ring])) for sign, ring in obj.pieces)
+                        tuple((sign, tuple([(p[0], p[1]) for p in ring])) for sign, ring in obj.pieces)
                     for j, (sign, ring) in enumerate(rings):
                         hatch = obj.hatch_deg
                         if signed and sign < 0:

@@ -221,3 +221,18 @@ def test_without_cairosvg_the_error_says_what_to_install(monkeypatch):
     monkeypatch.setitem(sys.modules, "cairosvg", None)  # as if it were not installed
     with pytest.raises(MissingDependency, match="pip install"):
         get("crank").figure(parts=3).pdf()
+
+
+@pytest.mark.parametrize("name", ["crank", "inertia-curve"])
+def test_a_teaching_print_is_the_plate_in_the_teaching_look(name):
+    """A teaching figure printed (``--style teaching --format pdf``) is what its player ends on: the book's
+    plate, its points and its size, in the teaching colours -- not every helper of the construction on a
+    canvas as tall as the player's stage (620 px of screen, empty paper on a page)."""
+    c = get(name)
+    fig = c.figure()
+    teaching = print_plate(fig, construction=c, style="teaching")
+    historical = print_plate(fig, construction=c, style=HISTORICAL)
+    assert [p.name for p in teaching.points()] == [p.name for p in historical.points()]
+    assert teaching.width_mm == pytest.approx(historical.width_mm)
+    assert teaching.height_mm == pytest.approx(historical.height_mm, abs=0.5)
+    assert pdf_bytes(teaching).startswith(b"%PDF")

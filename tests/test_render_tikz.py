@@ -316,9 +316,10 @@ def test_a_smooth_curve_in_tikz_is_the_svgs_curve():
 def test_a_broken_rod_has_its_length_written_where_the_svg_writes_it():
     """A figure that breaks its long rod out draws it short and says how long it is: the TikZ picture writes
     "L = 8 r" at the break as the SVG does (its baseline where the SVG's ``data-rod`` sets it, the node at the
-    middle of the letters' height), not the short rod alone."""
+    middle of the letters' height), not the short rod alone.  (A figure printed without its construction: a
+    construction's plate writes the rod's length as its dimension.)"""
     c = get("crank")
-    plate = print_plate(c.figure(parts=6, rod_ratio=8.0), construction=c, style="teaching")
+    plate = print_plate(c.figure(parts=6, rod_ratio=8.0), style="teaching")
     svg, tikz = plate.svg(), tikz_picture(plate)
     spots = re.findall(r'<g class="lbg rodlen" data-rod="\d ([-0-9.]+) ([-0-9.]+) (\w+)" '
                        r'transform="translate\(([-0-9.]+) ([-0-9.]+)\)">', svg)

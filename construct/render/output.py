@@ -205,10 +205,11 @@ OUTPUTS = ("animated", "player", "storyboard")
 
 def print_plate(figure: Drawn, *, construction: Described | None = None, style: str | Style = "historical",
                 sheet: Any = None, fig_number: int | str | None = None) -> Any:
-    """*figure* laid out on *sheet* (:class:`construct.render.page.Sheet`, default 120 mm) in *style*: in a plate
-    style its plate, with the construction's furniture and caption (:func:`construct.render.page.lay_out`).
+    """*figure* laid out on *sheet* (:class:`construct.render.page.Sheet`, default 120 mm) in *style*: the
+    construction's plate, with its furniture and caption (:func:`construct.render.page.lay_out`).
 
-    *construction*: the book construction that built the figure, if any.
+    *construction*: the book construction that built the figure, if any.  A print in the teaching style is
+    the plate too, in the teaching look: what its player ends on, not every helper of the construction.
     """
     from .page import Sheet, lay_out
     from .styles import STYLES
@@ -220,7 +221,7 @@ def print_plate(figure: Drawn, *, construction: Described | None = None, style: 
             raise InvalidParameter(f"unknown style {style!r}; choose one of {', '.join(sorted(STYLES))}")
         style = STYLES[style]
     title = plate_caption(construction, figure, fig_number) if style.plate else figure_title(construction, figure)
-    return lay_out(scene_for(construction, figure, plate=style.plate), title, style=style,
+    return lay_out(scene_for(construction, figure, plate=construction is not None or style.plate), title, style=style,
                    sheet=Sheet() if sheet is None else sheet)
 
 

@@ -217,7 +217,8 @@ class Style:
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or v <= 0:
                 raise InvalidParameter(f"the {name} must be a positive number of points, got {v!r}")
         pt = letter_pt / self.label_size
-        return replace(self, width_px=width_pt / pt, print_pt=pt)
+        # a page is as tall as its figure: the screen's least height (a player's stage) would print empty paper
+        return replace(self, width_px=width_pt / pt, print_pt=pt, min_drawing_px=0.0)
 
     def css(self) -> str:
         """The style sheet every SVG in this style carries."""

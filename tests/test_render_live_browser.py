@@ -858,6 +858,30 @@ def test_a_drag_writes_what_the_page_shows_and_a_step_draws_what_it_shows_anew_b
     page.close()
 
 
+def test_a_drag_reads_no_layout_of_the_figure_before_it_writes(browser, live_player):
+    """A drag's frame reads the figure's box from what the page kept, not from the element: the given's slider has
+    just moved, and a read of the element's size then lays the page out once more in every frame, before anything is
+    written.  The kept box follows the window (a resize reads it anew)."""
+    _, _, path = live_player
+    page, errors = _open(browser, path)
+    _at(page, "end")
+    page.evaluate("window.constructLive.set(4.0)")
+    _at_step_view(page)
+    # each read of the figure's size counted (the element's own getters before the prototype's)
+    page.evaluate("""() => { const svg = document.getElementById('figure'); window.sizeReads = 0;
+      ['clientWidth', 'clientHeight'].forEach(a => { const get = Object.getOwnPropertyDescriptor(Element.prototype, a).get;
+        Object.defineProperty(svg, a, {configurable: true, get() { window.sizeReads++; return get.call(this); }}); }); }""")
+    reads = page.evaluate("""async () => { window.sizeReads = 0;
+      for (let i = 1; i <= 12; i++) await new Promise(r => requestAnimationFrame(() => { window.constructLive.set(4.0 + 0.01 * i, true); setTimeout(r, 0); }));
+      return window.sizeReads; }""")
+    assert reads == 0, f"a drag read the figure's size {reads} times in 12 frames"
+    page.set_viewport_size({"width": 1100, "height": 900})
+    page.evaluate("() => new Promise(r => requestAnimationFrame(() => setTimeout(r, 0)))")
+    assert page.evaluate("window.sizeReads") > 0  # (a resize: the box read anew)
+    assert not errors, errors
+    page.close()
+
+
 def test_letters_that_come_to_lie_on_one_another_give_way(browser, live_player):
     """Near L/r = 1 the crank's piston points crowd the stroke's end: the page lets a later letter give way where
     it would lie on another (never a pile of letters), and at the book's value hides none."""

@@ -338,7 +338,12 @@ li a.later{color:#bbb}
   var now = svg.getAttribute("viewBox").split(" ").map(Number), anim = null, ringAt = null, level = 0;
   // the box the view is fitted into: the figure's content box (its border aside: with it, a view of the window's
   // shape would be fitted by the other side, and a view of exactly a zoom level's magnification fall below it)
-  function boxOf() { return {width: svg.clientWidth, height: svg.clientHeight}; }
+  // (kept, not read from the element each time: a read in a drag's frame, after the given's slider moved, laid the
+  // page out before anything was written, a layout of its own each frame; a ResizeObserver, called after the
+  // frame's layout, keeps it, and a resize of the window reads it anew)
+  var boxNow = null;
+  function boxOf() { return boxNow || (boxNow = {width: svg.clientWidth, height: svg.clientHeight}); }
+  if (window.ResizeObserver) { new ResizeObserver(function () { boxNow = null; boxOf(); }).observe(svg); }
   function ratio(v, r) {  // canvas pixels per screen pixel in view *v* (the view is fitted into the element)
     r = r || boxOf();
     if (!r.width || !r.height) { return 1; }
@@ -416,12 +421,9 @@ li a.later{color:#bbb}
       if (furRule) { furScale = (ls / data.els).toFixed(4); furRule.style.setProperty("scale", furScale); pin(); }
     }
     var ring = document.getElementById("ring");
-    if (ring) {
-      ring.setAttribute("visibility", ringAt ? "visible" : "hidden");
-      if (ringAt) {
-        ring.setAttribute("cx", ringAt[0]); ring.setAttribute("cy", ringAt[1]);
-        ring.setAttribute("r", Math.max(ringAt[2], 9 * q).toFixed(2));
-      }
+    if (ring) {  // (its attributes written only when they change: each write restyles and repaints it)
+      attr(ring, "visibility", ringAt ? "visible" : "hidden");
+      if (ringAt) { attr(ring, "cx", String(ringAt[0])); attr(ring, "cy", String(ringAt[1])); attr(ring, "r", Math.max(ringAt[2], 9 * q).toFixed(2)); }
     }
   }
   // The end state's turned texts (F/f along its dimension) and arrowheads are scaled with its upright lettering, but
@@ -456,8 +458,9 @@ li a.later{color:#bbb}
     }
     anim = requestAnimationFrame(frame);
   }
-  window.addEventListener("resize", function () { put(now); });
+  window.addEventListener("resize", function () { boxNow = null; put(now); });
   function text(id, s) { document.getElementById(id).textContent = s; }
+  function attr(e, name, v) { if (e.getAttribute(name) !== v) { e.setAttribute(name, v); } }
   function zoomLevel(view, r, drag) {  // the zoom level of *view*: its letters (placed for it) and their scale
     // how many times the window shows it larger than the whole figure (a view of the window's shape in a
     // tall figure is magnified more than its width says)

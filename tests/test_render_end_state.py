@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 
 from construct.constructions import get
-from construct.render.end_state import (NumbersFactory, end_furniture, end_lettering_at, fixed_elements,
-                                        furniture_numbers, lettering_box)
+from construct.render.end_state import (NumbersFactory, end_furniture, end_lettering, end_lettering_at,
+                                        fixed_elements, furniture_numbers, lettering_box)
 from construct.render.output import scene_for
 from construct.render.styles import STYLES
 from construct.render.svg import Drawing
@@ -47,8 +47,8 @@ def test_lettering_box_reads_a_plain_element_as_its_xml_reads():
 
 @pytest.mark.parametrize("name", ["inertia-stroke-fractions", "effective-work"])
 def test_the_furniture_drawn_from_elements_made_once_is_the_furniture_made_twice(name):
-    """A value's fixed furniture made once (fixed_elements), placed among and then drawn, is what end_lettering_at
-    and end_furniture make each on their own: the same keys, numbers and texts (fails when the shared elements are
+    """A value's fixed furniture and lettering made once (fixed_elements, end_lettering), placed among and then drawn,
+    is what end_lettering_at and end_furniture make each on their own: the same keys, numbers and texts (fails when the shared elements are
     drawn in another order or given ids before they are placed among)."""
     c = get(name)
     fig = c.figure()
@@ -59,8 +59,10 @@ def test_the_furniture_drawn_from_elements_made_once_is_the_furniture_made_twice
     marks = scene.end_drawn()
     fixed = fixed_elements(scene, d.vp, d.end, f)
     assert sum(map(len, fixed)) > 0
-    spots = end_lettering_at(scene, marks, st, d.vp, d.end, d.placing, f, None, fixed)
+    lettering = end_lettering(scene, d.vp, st, d.end.size)
+    assert lettering
+    spots = end_lettering_at(scene, marks, st, d.vp, d.end, d.placing, f, None, fixed, lettering)
     assert spots == end_lettering_at(scene, marks, st, d.vp, d.end, d.placing, f)
-    shared = furniture_numbers(end_furniture(scene, st, d.vp, d.end, d.placing, f, {}, spots, fixed))
+    shared = furniture_numbers(end_furniture(scene, st, d.vp, d.end, d.placing, f, {}, spots, fixed, lettering))
     alone = furniture_numbers(end_furniture(scene, st, d.vp, d.end, d.placing, f, {}, spots))
     assert shared == alone and len(shared[0]) > 10

@@ -31,8 +31,8 @@ from ..figure import Figure
 from ..render.camera import (FINAL_CONTEXT, MAX_ZOOM, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, clip_view, framed_rows,
                              level, player_letter_scale, step_focus_names, step_shots, zoom_of)
 from ..render.edges import clear_edges_rows
-from ..render.end_state import (NumbersFactory, end_furniture, end_letter_boxes, end_lettering_at, fixed_elements,
-                                furniture_numbers)
+from ..render.end_state import (NumbersFactory, end_furniture, end_letter_boxes, end_lettering, end_lettering_at,
+                                fixed_elements, furniture_numbers)
 from ..render.output import scene_for
 from ..render.insets import inset_details
 from ..render.placing import Placing
@@ -423,13 +423,15 @@ class Measure:
             items, absent = self._aligned(items)
         own: dict[str, int] = {} if owners is None else owners
         sheet = SimpleNamespace(end_furniture=items)
-        spots = fixed = None
+        spots = fixed = lettering = None
         if marks is not None and any(isinstance(it, Lettering) for it in items):
-            fixed = fixed_elements(sheet, vp, self.end, NUMBERS)  # (made once: placed among, then drawn)
+            # (made once: placed among, then drawn)
+            fixed = fixed_elements(sheet, vp, self.end, NUMBERS)
+            lettering = end_lettering(sheet, vp, self.style, self.end.size)
             spots = end_lettering_at(sheet, marks(), self.style, vp, self.end, self.placing, NUMBERS,
-                                     None if keep is None else self._spots[keep], fixed)
+                                     None if keep is None else self._spots[keep], fixed, lettering)
         keys, nums, texts = furniture_numbers(end_furniture(sheet, self.style, vp, self.end, self.placing, NUMBERS,
-                                                            own, spots, fixed), exact=exact)
+                                                            own, spots, fixed, lettering), exact=exact)
         if spots is not None:
             texts["#spots"] = self.spots_key(spots)
         if absent:

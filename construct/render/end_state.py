@@ -271,7 +271,9 @@ def _result_strokes(scene: Any, vp: Any) -> list[tuple[float, float, float, floa
 
 def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, end: EndView, placing: Placing,
                      factory: Any, keep: dict[str, tuple[float, float, float]] | None = None,
-                     fixed: list[list[Any]] | None = None) -> dict[str, tuple[float, float, float]]:
+                     fixed: list[list[Any]] | None = None,
+                     lettering: list[tuple[str, tuple[float, float], str]] | None = None,
+                     ) -> dict[str, tuple[float, float, float]]:
     """Where the plate's lettering of *sheet* (anything with ``end_furniture``: the plate at another value of a live
     given, in the built plate's form) stands about its places at that value, as :func:`lay_out_end` places it
     (:meth:`~construct.render.placing.Placing.end_lettering_at`: among that value's end-state *marks* on *vp*):
@@ -280,11 +282,12 @@ def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, en
     over the sweep (its elements, by which the page knows them).  *keep*: spots of this form (a neighbouring
     value's), kept as they are where they crowd there no more than those placed anew
     (:meth:`~construct.render.placing.Placing.end_crowd`: a letter that has no room there crowds either way).
-    *fixed*: the elements of the rest of the furniture (:func:`fixed_elements`), if the caller made them.
+    *fixed*: the elements of the rest of the furniture (:func:`fixed_elements`), *lettering*: :func:`end_lettering`
+    at the end state's size, if the caller made them.
     """
     fixed = fixed_elements(sheet, vp, end, factory) if fixed is None else fixed
     texts = [b for els in fixed for e in els if (b := lettering_box(e, end.size, style)) is not None]
-    lettering = end_lettering(sheet, vp, style, end.size)
+    lettering = end_lettering(sheet, vp, style, end.size) if lettering is None else lettering
     crowd = placing.end_crowd(vp, end.letter, marks, texts, lettering, keep) if keep is not None else set()
     if keep is not None and not crowd:
         return keep
@@ -308,7 +311,8 @@ def fixed_elements(sheet: Any, vp: Any, end: EndView, factory: Any) -> list[list
 def end_furniture(scene: Scene, style: Style, vp: Viewport, end: EndView, placing: Placing, factory: Any,
                   owners: dict[str, int] | None = None,
                   spots: dict[str, tuple[float, float, float]] | None = None,
-                  fixed: list[list[Any]] | None = None) -> Any:
+                  fixed: list[list[Any]] | None = None,
+                  lettering: list[tuple[str, tuple[float, float], str]] | None = None) -> Any:
     """The plate's furniture in the end state (``<g class="fo end">``), its letters at the size of the end
     state's, its lettering where the end state's placing set it (upright; tied to its place by a leader when
     set off).  Each of its elements has an id in the order drawn (``fin-s<k>``: the line of a stroke the plate
@@ -316,7 +320,8 @@ def end_furniture(scene: Scene, style: Style, vp: Viewport, end: EndView, placin
     (:func:`furniture_numbers`).  *owners*, if given, gets each element's item: {its id: the item's index in
     ``scene.end_furniture``}.  *spots*: where the lettering stands about its places (``placing.end_spots`` without;
     another value of a live given's: :func:`end_lettering_at`).  *fixed*: the elements of the furniture but its
-    lettering (:func:`fixed_elements`, made by *factory* on *vp*), if the caller made them (they are given ids)."""
+    lettering (:func:`fixed_elements`, made by *factory* on *vp*), if the caller made them (they are given ids);
+    *lettering*: :func:`end_lettering` at the end state's size, if the caller made it."""
     f = factory
     spots = placing.end_spots if spots is None else spots
     g = f.g(class_="fo end")
@@ -335,7 +340,8 @@ def end_furniture(scene: Scene, style: Style, vp: Viewport, end: EndView, placin
             k += 1
             g.add(e)
     ls = end.letter
-    for (fid, (px, py), text), i in zip(end_lettering(scene, vp, style, end.size),
+    lettering = end_lettering(scene, vp, style, end.size) if lettering is None else lettering
+    for (fid, (px, py), text), i in zip(lettering,
                                        [i for i, it in enumerate(scene.end_furniture) if isinstance(it, Lettering)]):
         rel = spots.get(fid)
         if rel is None:

@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 from typing import Callable, Sequence
 
-from .camera import PLAYER_FIGURE_PX, Framing, View, step_details, step_focus, zoom_of
+from .camera import PLAYER_FIGURE_PX, Framing, View, read_tenth, step_details, step_focus, zoom_of
 from .scene import MarkKind, Scene
 
 __all__ = ["step_insets", "inset_detail", "inset_details", "points_at", "ring_round", "SLIVER_PX", "SLIVER_RATIO", "INSET_PX",
@@ -109,9 +109,9 @@ def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]]
         if centre is None:
             return None  # (the page could not find it anew)
         rounds.append([centre, m.id])
-        if m.geom[2] * scale < fine:
-            fine, at = m.geom[2] * scale, c
-    pts = [(round(px(*m.geom)[0], 1), round(px(*m.geom)[1], 1)) for m in near]
+        if round(m.geom[2] * scale, 2) < fine:  # (its radius as written: the page reads it)
+            fine, at = round(m.geom[2] * scale, 2), c
+    pts = [(read_tenth(px(*m.geom)[0]), read_tenth(px(*m.geom)[1])) for m in near]
     for i, a in enumerate(pts):
         for b in pts[i + 1:]:
             d = math.hypot(a[0] - b[0], a[1] - b[1])

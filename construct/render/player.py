@@ -127,10 +127,12 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         inset = d.insets[s.index - 1]
         if inset is not None:  # a sliver or a cluster: its place magnified beside the view, its points lettered
             st["z"] = list(inset)
-            st["zp"] = _inset_points(d, s.index, inset, points)
             if at_point is None:
                 at_point = points_at(scene, d.vp.px)
             detail = inset_detail(scene, d.vp.px, d.vp.scale, s.index, inset, at_point=at_point)
+            # (a cluster's: every point of the step, since the page finds its finest detail anew where the points
+            # move -- among other points, at another value -- and draws those the box takes in)
+            st["zp"] = _inset_points(d, s.index, None if detail is not None else inset, points)
             if detail is not None:  # a cluster's: the page finds its finest detail anew where the points move
                 st["zd"] = detail
         steps.append(st)
@@ -182,26 +184,26 @@ def _speed_options(default: float) -> str:
     return "".join(f'<option value="{v:g}"{" selected" if v == default else ""}>{v:g} s</option>' for v in SPEEDS)
 
 
-def inset_marks(d: Drawing, k: int, box: Sequence[float], points: dict[str, Any] | None = None) -> list[tuple[Any, bool]]:
+def inset_marks(d: Drawing, k: int, box: Sequence[float] | None,
+                points: dict[str, Any] | None = None) -> list[tuple[Any, bool]]:
     """The point marks of step *k* and of what it works on (its inputs, the points its caption names) inside the
-    inset *box* (canvas px: x y w h) at the drawing's value, each with whether it is the step's own (*points*:
-    the scene's point marks by name, if the caller has them)."""
+    inset *box* (canvas px: x y w h; None: wherever they stand) at the drawing's value, each with whether it is
+    the step's own (*points*: the scene's point marks by name, if the caller has them)."""
     s = d.scene.steps[k - 1]
     if points is None:
         points = {m.name: m for m in d.scene.marks if m.kind is MarkKind.POINT}
-    x0, y0, w, h = box
     out = []
     for name in dict.fromkeys((*s.outputs, *s.inputs, *sorted(d.scene.named(k)))):
         m = points.get(name)
         if m is None or m.step > k:
             continue
         x, y = d.vp.px(*m.geom)
-        if x0 <= x <= x0 + w and y0 <= y <= y0 + h:
+        if box is None or box[0] <= x <= box[0] + box[2] and box[1] <= y <= box[1] + box[3]:
             out.append((m, name in s.outputs))
     return out
 
 
-def _inset_points(d: Drawing, k: int, box: Sequence[float], points: dict[str, Any]) -> list[list]:
+def _inset_points(d: Drawing, k: int, box: Sequence[float] | None, points: dict[str, Any]) -> list[list]:
     """The points the inset *box* of step *k* draws and letters (:func:`inset_marks`): [the id of the point's
     circle, its letter(, 1 for the step's own)] (letter '' for a point the figure does not letter).  The page
     draws each where its circle stands -- at a live given's value, too.  The view beside it shows them a pixel

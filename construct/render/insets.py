@@ -80,7 +80,7 @@ def step_insets(scene: Scene, views: Sequence[View], full: View,
 
 
 def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]], scale: float, k: int,
-                 box: Sequence[float], *, at_point: "dict[tuple[float, ...], str] | None" = None
+                 box: Sequence[float] | None, *, at_point: "dict[tuple[float, ...], str] | None" = None
                  ) -> tuple[list[str], list[list[str]], float] | None:
     """Where step *k*'s inset *box* (canvas px: x y w h) magnifies a cluster: the finest detail of the step
     (:func:`~construct.render.camera.step_details`: the two closest of its points, read to 0.1 px, or the smallest
@@ -88,7 +88,9 @@ def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]]
     proportion.  Then the ids of the points it compares, of each circle's centre point and circle ([centre,
     circle]) and the detail's size (canvas px): a page that moves the points (a live given) finds the detail
     among them anew and carries the box with it (the player's ``detail``).  None for any other inset (a sliver's,
-    centred on the step's own points), or where no point stands at a circle's centre.
+    centred on the step's own points), or where no point stands at a circle's centre.  *box* None: a step shown
+    without an inset here, whose detail a page whose points move (a live given) judges anew (its size is then
+    the detail's size, as it is found here).
 
     *px*: the drawing's map to canvas pixels; *scale*: its canvas pixels per unit; *at_point*: the scene's points'
     ids by where they stand (:func:`points_at`), if the caller asks of many steps.
@@ -118,7 +120,8 @@ def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]]
             if 0.0 < d < fine:
                 fine, at = d, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
     # (the box rounded to 0.01 px)
-    if at is None or abs(at[0] - box[0] - box[2] / 2) > 0.02 or abs(at[1] - box[1] - box[3] / 2) > 0.02:
+    if at is None or box is not None and (abs(at[0] - box[0] - box[2] / 2) > 0.02
+                                          or abs(at[1] - box[1] - box[3] / 2) > 0.02):
         return None
     return [m.id for m in near], rounds, round(fine, 4)
 

@@ -23,7 +23,7 @@ from typing import Callable, Sequence
 from .camera import PLAYER_FIGURE_PX, Framing, View, read_tenth, step_details, step_focus, zoom_of
 from .scene import MarkKind, Scene
 
-__all__ = ["step_insets", "inset_detail", "inset_details", "points_at", "ring_round", "SLIVER_PX", "SLIVER_RATIO", "INSET_PX",
+__all__ = ["step_insets", "inset_detail", "inset_details", "points_at", "ring_round", "SLIVER_PX", "SLIVER_RATIO", "INSET_PX", "CLUSTER_ABOVE",
            "INSET_DETAIL_PX"]
 
 
@@ -35,6 +35,10 @@ SLIVER_RATIO = 5.0
 #: The inset's window on the screen (px) and how thick the sliver is made there at least.
 INSET_PX = (300.0, 210.0)
 INSET_DETAIL_PX = 28.0
+#: A step's finest detail is a cluster magnified in an inset where it must be seen more than this many times as
+#: magnified as its view magnifies the whole (:func:`step_insets`; the player judges it so too, as a live given moves
+#: the points).
+CLUSTER_ABOVE = 1.25
 
 
 def step_insets(scene: Scene, views: Sequence[View], full: View,
@@ -55,7 +59,7 @@ def step_insets(scene: Scene, views: Sequence[View], full: View,
     for s, f, v, (need, at) in zip(scene.steps, focus, views, details):
         box = None
         z = zoom_of(v, full)
-        if at is not None and s.group and need > 1.25 * z:
+        if at is not None and s.group and need > CLUSTER_ABOVE * z:
             # a cluster the view (widened for its letters, or its shot's) shows smaller than it must be seen
             q = min(PLAYER_FIGURE_PX[0] / v[2], PLAYER_FIGURE_PX[1] / v[3])
             m = max(2.0, need / z)

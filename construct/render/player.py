@@ -35,7 +35,7 @@ from typing import Any, Mapping, Sequence
 from .animate import STEP_SECONDS, group_css
 from .camera import DETAIL_PX, INSET_MAX, PLAYER_FIGURE_PX, Framing, step_details, zoom_of
 from .captions import group_caption
-from .insets import INSET_PX, inset_detail, points_at
+from .insets import CLUSTER_ABOVE, INSET_PX, inset_detail, points_at
 from .marks import MarkKind
 from .styles import PLAIN, Style
 from .svg import Drawing
@@ -180,7 +180,7 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         ("{{PAGE_BG}}", "#f7f3ea" if style.name == "historical" else "#f4f5f7"),
         ("{{SPEEDS}}", _speed_options(data["dt"] / 1000)),
         ("{{ASPECT}}", "/".join(fmt(x) for x in PLAYER_FIGURE_PX)),
-        ("{{DETAIL}}", " ".join(fmt(x) for x in (DETAIL_PX, INSET_MAX, *INSET_PX))),
+        ("{{DETAIL}}", " ".join(fmt(x) for x in (DETAIL_PX, INSET_MAX, *INSET_PX, CLUSTER_ABOVE))),
     ))
     # One pass, so that text from the protocol is never read as a placeholder.
     return re.sub(r"\{\{[A-Z_]+\}\}", lambda m: values[m.group(0)], _TEMPLATE)
@@ -191,7 +191,7 @@ SPEEDS = (4.0, 3.0, 2.0, 1.5, 1.0, 0.5, 0.25, 0.1)
 
 
 #: A step shown without an inset whose finest detail needs this much of the magnification that makes it a cluster
-#: (:func:`~construct.render.insets.step_insets`: its detail magnified more than 1.25 times its view) is judged anew
+#: (:func:`~construct.render.insets.step_insets`: :data:`~construct.render.insets.CLUSTER_ABOVE`) is judged anew
 #: by the page as its points move (:func:`_clustering`): a live given that draws two points nearer (Baumann's T2 at
 #: κ = 2, 4.4 times magnified, not 1.26 as at κ = 8) gives it an inset where a fresh build gives one.
 CLUSTER_NEAR = 0.25
@@ -203,7 +203,7 @@ def _clustering(d: Drawing) -> list[bool]:
     if not d.style.camera:
         return [False] * len(d.scene.steps)
     details = step_details(d.scene, Framing(d.full_view), d.vp.px)
-    return [z is None and bool(s.group) and need > CLUSTER_NEAR * 1.25 * zoom_of(v, d.full_view)
+    return [z is None and bool(s.group) and need > CLUSTER_NEAR * CLUSTER_ABOVE * zoom_of(v, d.full_view)
             for s, z, v, (need, _) in zip(d.scene.steps, d.insets, d.views, details)]
 
 
@@ -540,7 +540,7 @@ li a.later{color:#bbb}
   var FIG = "{{ASPECT}}".split("/").map(Number), DETAIL = "{{DETAIL}}".split(" ").map(Number);
   // a cluster's box about its finest detail where the points stand now, in step view *v* of the whole *full*, or
   // null where a fresh build shows none (insets.step_insets and inset_detail: its detail, read as written to 0.1 px,
-  // shown DETAIL[0] px large, more than 1.25 times as magnified as the view magnifies the whole)
+  // shown DETAIL[0] px large, more than DETAIL[4] times as magnified as the view magnifies the whole)
   function detail(st, v) {
     var zd = st.zd, fine = Infinity, at = null, pts = [], i, j;
     zd[1].forEach(function (cr) {  // a circle or arc the step strikes: its radius
@@ -563,7 +563,7 @@ li a.later{color:#bbb}
     // (camera.step_details: the magnification its detail needs; camera.zoom_of: the view's)
     var need = Math.min(DETAIL[1], DETAIL[0] * Math.max(full[2], full[3] * FIG[0] / FIG[1]) / (fine * FIG[0]));
     var zv = Math.max(full[2] / FIG[0], full[3] / FIG[1]) / Math.max(v[2] / FIG[0], v[3] / FIG[1], 1e-12);
-    if (!(need > 1 && need > 1.25 * zv)) { return null; }
+    if (!(need > 1 && need > DETAIL[4] * zv)) { return null; }
     var q = Math.min(FIG[0] / v[2], FIG[1] / v[3]) * Math.max(2, need / zv), r2 = function (x) { return Math.round(100 * x) / 100; };
     var w = DETAIL[2] / q, h = DETAIL[3] / q;
     return [r2(at[0] - w / 2), r2(at[1] - h / 2), r2(w), r2(h)];

@@ -585,10 +585,10 @@ def test_a_clusters_inset_is_where_the_page_finds_it_and_holds_its_points():
     arcs = {i: float(re.findall(r"-?[0-9.]+(?:e[-+]?[0-9]+)?", d)[2])
             for d, i in re.findall(r'<path [^>]*?d="([^"]+)" id="([^"]+)"', page)}
     tenth = lambda v: math.floor(10 * v + 0.5) / 10  # noqa: E731 (JavaScript's Math.round, to 0.1)
-    clusters = [(k, st) for k, st in enumerate(data["steps"], start=1) if st.get("zd")]
+    clusters = [(k, st) for k, st in enumerate(data["steps"], start=1) if st.get("zd") and st.get("z")]
     assert len(clusters) > 20
     for k, st in clusters:
-        ids, rounds, size = st["zd"]
+        ids, rounds, size, _ = st["zd"]
         fine, at = math.inf, None
         for centre, mark in rounds:
             r = circles[mark][2] if mark in circles else arcs[mark]

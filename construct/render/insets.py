@@ -36,10 +36,11 @@ SLIVER_RATIO = 5.0
 INSET_PX = (300.0, 210.0)
 INSET_DETAIL_PX = 28.0
 #: A live page keeps a cluster's inset on the detail the built value magnifies while another is finer by less than
-#: this (px): the page draws each point within 0.5 px of its place (the sweep's promise), so a detail finer by less
-#: is no finer that the page can tell (Tafel 2's arc of 13.25 px about U beside O and Yₜ₅, 13.2 px apart: a point
-#: 0.24 px off made the page magnify the arc, 530 px from the pair, at the book's value).
-DETAIL_TIE_PX = 0.5
+#: this (px), what the page's points are off at the book's value (0.16-0.24 px in Baumann's figures and Tafel 2),
+#: so no finer that the page can tell (Tafel 2's arc of 13.25 px about U beside O and Yₜ₅, 13.2 px apart: a point
+#: 0.24 px off made the page magnify the arc, 530 px from the pair, at the book's value); a detail finer by more is
+#: taken (the 18-part crank's G beside C₁ and F at L/r = 3,3: 0.4 px finer).
+DETAIL_TIE_PX = 0.25
 #: A step's finest detail is a cluster magnified in an inset where it must be seen more than this many times as
 #: magnified as its view magnifies the whole (:func:`step_insets`; the player judges it so too, as a live given moves
 #: the points).

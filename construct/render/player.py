@@ -569,8 +569,11 @@ li a.later{color:#bbb}
     var need = Math.min(DETAIL[1], DETAIL[0] * Math.max(full[2], full[3] * FIG[0] / FIG[1]) / (fine * FIG[0]));
     var zv = Math.max(full[2] / FIG[0], full[3] / FIG[1]) / Math.max(v[2] / FIG[0], v[3] / FIG[1], 1e-12);
     if (!(need > 1 && need > DETAIL[4] * zv)) { return null; }
+    // (the box: the built one in proportion to the detail -- the view here is framed anew and may stand apart
+    // from a fresh build's --, else as a fresh build sizes it in this view)
     var q = Math.min(FIG[0] / v[2], FIG[1] / v[3]) * Math.max(2, need / zv), r2 = function (x) { return Math.round(100 * x) / 100; };
-    var w = DETAIL[2] / q, h = DETAIL[3] / q;
+    var z0 = st.z0 || (st.z && (st.z0 = st.z.slice()));
+    var w = z0 ? z0[2] * fine / zd[2] : DETAIL[2] / q, h = z0 ? z0[3] * fine / zd[2] : DETAIL[3] / q;
     return [r2(at[0] - w / 2), r2(at[1] - h / 2), r2(w), r2(h)];
   }
   function drawInset(view) {

@@ -588,7 +588,7 @@ def test_a_clusters_inset_is_where_the_page_finds_it_and_holds_its_points():
     clusters = [(k, st) for k, st in enumerate(data["steps"], start=1) if st.get("zd") and st.get("z")]
     assert len(clusters) > 20
     for k, st in clusters:
-        ids, rounds, size, _ = st["zd"]
+        ids, rounds, size = st["zd"]
         fine, at = math.inf, None
         for centre, mark in rounds:
             r = circles[mark][2] if mark in circles else arcs[mark]

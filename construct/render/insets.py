@@ -23,7 +23,7 @@ from typing import Callable, Sequence
 from .camera import PLAYER_FIGURE_PX, Framing, View, read_tenth, step_details, step_focus, zoom_of
 from .scene import MarkKind, Scene
 
-__all__ = ["step_insets", "inset_detail", "inset_details", "points_at", "ring_round", "SLIVER_PX", "SLIVER_RATIO", "INSET_PX", "CLUSTER_ABOVE", "DETAIL_TIE_PX",
+__all__ = ["step_insets", "inset_detail", "inset_details", "points_at", "ring_round", "SLIVER_PX", "SLIVER_RATIO", "INSET_PX", "CLUSTER_ABOVE",
            "INSET_DETAIL_PX"]
 
 
@@ -35,12 +35,6 @@ SLIVER_RATIO = 5.0
 #: The inset's window on the screen (px) and how thick the sliver is made there at least.
 INSET_PX = (300.0, 210.0)
 INSET_DETAIL_PX = 28.0
-#: A live page keeps a cluster's inset on the detail the built value magnifies while another is finer by less than
-#: this (px), what the page's points are off at the book's value (0.16-0.24 px in Baumann's figures and Tafel 2),
-#: so no finer that the page can tell (Tafel 2's arc of 13.25 px about U beside O and Yₜ₅, 13.2 px apart: a point
-#: 0.24 px off made the page magnify the arc, 530 px from the pair, at the book's value); a detail finer by more is
-#: taken (the 18-part crank's G beside C₁ and F at L/r = 3,3: 0.4 px finer).
-DETAIL_TIE_PX = 0.25
 #: A step's finest detail is a cluster magnified in an inset where it must be seen more than this many times as
 #: magnified as its view magnifies the whole (:func:`step_insets`; the player judges it so too, as a live given moves
 #: the points).
@@ -96,9 +90,8 @@ def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]]
     (:func:`~construct.render.camera.step_details`: the two closest of its points, read to 0.1 px, or the smallest
     circle or arc it strikes where that is finer) in the middle of the box, the box as large as the detail in
     proportion.  Then the ids of the points it compares, of each circle's centre point and circle ([centre,
-    circle]), the detail's size (canvas px) and what it is (the ids of its two points, or of its circle): a page
-    that moves the points (a live given) finds the detail among them anew and carries the box with it (the
-    player's ``detail``; it keeps this one while another is finer by less than :data:`DETAIL_TIE_PX`).  None for any other inset (a sliver's,
+    circle]) and the detail's size (canvas px): a page that moves the points (a live given) finds the detail
+    among them anew and carries the box with it (the player's ``detail``).  None for any other inset (a sliver's,
     centred on the step's own points), or where no point stands at a circle's centre.  *box* None: a step shown
     without an inset here, whose detail a page whose points move (a live given) judges anew (its size is then
     the detail's size, as it is found here).
@@ -110,7 +103,7 @@ def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]]
     drawn = scene.marks_by_name
     near = [drawn[n] for n in dict.fromkeys((*s.outputs, *s.inputs, *sorted(scene.named(k))))
             if n in drawn and drawn[n].kind is MarkKind.POINT]
-    fine, at, rounds, chosen = math.inf, None, [], []
+    fine, at, rounds = math.inf, None, []
     for n in s.outputs:
         m = drawn.get(n)
         if m is None or not m.kind.round:
@@ -123,18 +116,18 @@ def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]]
             return None  # (the page could not find it anew)
         rounds.append([centre, m.id])
         if round(m.geom[2] * scale, 2) < fine:  # (its radius as written: the page reads it)
-            fine, at, chosen = round(m.geom[2] * scale, 2), c, [m.id]
+            fine, at = round(m.geom[2] * scale, 2), c
     pts = [(read_tenth(px(*m.geom)[0]), read_tenth(px(*m.geom)[1])) for m in near]
     for i, a in enumerate(pts):
-        for j, b in enumerate(pts[i + 1:], start=i + 1):
+        for b in pts[i + 1:]:
             d = math.hypot(a[0] - b[0], a[1] - b[1])
             if 0.0 < d < fine:
-                fine, at, chosen = d, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2), [near[i].id, near[j].id]
+                fine, at = d, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
     # (the box rounded to 0.01 px)
     if at is None or box is not None and (abs(at[0] - box[0] - box[2] / 2) > 0.02
                                           or abs(at[1] - box[1] - box[3] / 2) > 0.02):
         return None
-    return [m.id for m in near], rounds, round(fine, 4), chosen
+    return [m.id for m in near], rounds, round(fine, 4)
 
 
 def inset_details(scene: Scene, px: Callable[[float, float], tuple[float, float]], scale: float,

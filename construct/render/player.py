@@ -35,7 +35,7 @@ from typing import Any, Mapping, Sequence
 from .animate import STEP_SECONDS, group_css
 from .camera import DETAIL_PX, INSET_MAX, PLAYER_FIGURE_PX, Framing, step_details, zoom_of
 from .captions import group_caption
-from .insets import CLUSTER_ABOVE, DETAIL_TIE_PX, INSET_PX, inset_detail, points_at
+from .insets import CLUSTER_ABOVE, INSET_PX, inset_detail, points_at
 from .marks import MarkKind
 from .styles import PLAIN, Style
 from .svg import Drawing
@@ -180,7 +180,7 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         ("{{PAGE_BG}}", "#f7f3ea" if style.name == "historical" else "#f4f5f7"),
         ("{{SPEEDS}}", _speed_options(data["dt"] / 1000)),
         ("{{ASPECT}}", "/".join(fmt(x) for x in PLAYER_FIGURE_PX)),
-        ("{{DETAIL}}", " ".join(fmt(x) for x in (DETAIL_PX, INSET_MAX, *INSET_PX, CLUSTER_ABOVE, DETAIL_TIE_PX))),
+        ("{{DETAIL}}", " ".join(fmt(x) for x in (DETAIL_PX, INSET_MAX, *INSET_PX, CLUSTER_ABOVE))),
     ))
     # One pass, so that text from the protocol is never read as a placeholder.
     return re.sub(r"\{\{[A-Z_]+\}\}", lambda m: values[m.group(0)], _TEMPLATE)
@@ -542,28 +542,23 @@ li a.later{color:#bbb}
   // null where a fresh build shows none (insets.step_insets and inset_detail: its detail, read as written to 0.1 px,
   // shown DETAIL[0] px large, more than DETAIL[4] times as magnified as the view magnifies the whole)
   function detail(st, v) {
-    var zd = st.zd, fine = Infinity, at = null, pts = [], i, j, own = null;  // own: the built value's detail
-    var mine = function (ids) { return ids.join(" ") === zd[3].join(" "); };
+    var zd = st.zd, fine = Infinity, at = null, pts = [], i, j;
     zd[1].forEach(function (cr) {  // a circle or arc the step strikes: its radius
       var c = find(cr[0]), m = find(cr[1]);
       if (!c || !m) { return; }
       var r = m.tagName === "circle" ? +m.getAttribute("r") : +(m.getAttribute("d").match(/-?[0-9.]+(?:e[-+]?[0-9]+)?/g) || [])[2];
-      var there = [+c.getAttribute("cx"), +c.getAttribute("cy")];
-      if (mine([cr[1]])) { own = [r, there]; }
-      if (r < fine) { fine = r; at = there; }
+      if (r < fine) { fine = r; at = [+c.getAttribute("cx"), +c.getAttribute("cy")]; }
     });
     zd[0].forEach(function (id) {  // the points, read to 0.1 px
       var e = find(id);
-      if (e) { pts.push([Math.round(10 * e.getAttribute("cx")) / 10, Math.round(10 * e.getAttribute("cy")) / 10, id]); }
+      if (e) { pts.push([Math.round(10 * e.getAttribute("cx")) / 10, Math.round(10 * e.getAttribute("cy")) / 10]); }
     });
     for (i = 0; i < pts.length; i++) {
       for (j = i + 1; j < pts.length; j++) {
-        var d = Math.hypot(pts[i][0] - pts[j][0], pts[i][1] - pts[j][1]), mid = [(pts[i][0] + pts[j][0]) / 2, (pts[i][1] + pts[j][1]) / 2];
-        if (d > 0 && mine([pts[i][2], pts[j][2]])) { own = [d, mid]; }
-        if (d > 0 && d < fine) { fine = d; at = mid; }
+        var d = Math.hypot(pts[i][0] - pts[j][0], pts[i][1] - pts[j][1]);
+        if (d > 0 && d < fine) { fine = d; at = [(pts[i][0] + pts[j][0]) / 2, (pts[i][1] + pts[j][1]) / 2]; }
       }
     }
-    if (own && own[0] < fine + DETAIL[5]) { fine = own[0]; at = own[1]; }  // (no finer that the page can tell)
     if (!at) { return null; }
     // (camera.step_details: the magnification its detail needs; camera.zoom_of: the view's)
     var need = Math.min(DETAIL[1], DETAIL[0] * Math.max(full[2], full[3] * FIG[0] / FIG[1]) / (fine * FIG[0]));

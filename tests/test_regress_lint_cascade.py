@@ -4,6 +4,10 @@ keep its own values."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
+import pytest
+
 from construct.regress.lint.cascade import Cascade, node
 
 
@@ -21,3 +25,53 @@ def test_sheets_with_the_same_selectors_keep_their_own_values():
         # presentation attributes under the rules, the style attribute over them
         styled = c.look((root, node("g", classes="step cur"), own))
         assert (styled.stroke, styled.stroke_width) == ("green", width)
+
+
+GALLERY = Path(__file__).resolve().parent.parent / "gallery"
+
+
+@pytest.mark.parametrize("figure", ["tangential-pressure-kappa-8-parts-18-rod-ratio-5/teaching",
+                                    "two-cranks-parts-12-rod-ratio-5/teaching", "piston-force/historical"])
+def test_a_look_taken_from_a_level_where_it_looks_the_same_is_the_look_worked_out_there(figure):
+    """Sheet.look at a zoom level takes the look of the first level where the element looks the same
+    (Cascade.asking: only the rules naming a level's class tell levels apart); against every look worked out
+    at its own level (Sheet._look), for every element of a gallery drawing, in every state, at every level
+    (one rule in two forms: the shortcut must never change a look).  A stepped drawing has elements that look
+    different at some level (letters moved, tags given way): those must keep their own."""
+    from construct.regress.lint import player_data, read_sheet
+    from construct.regress.lint.sheet import STATES
+
+    folder = GALLERY / figure
+    if not folder.is_dir():
+        pytest.skip("no gallery")
+    player = folder / "player.html"
+    sheet = read_sheet(folder / "final.svg", figure, data=player_data(player) if player.exists() else None)
+    chains = {c for c, _box in sheet.inked} | {t.chain for t in sheet.texts} | {ld.chain for ld in sheet.leaders}
+    levels = range(len(sheet.levels) + 1)
+    taken = differ = 0
+    for chain in chains:
+        for level in levels:
+            for state in (None, "", *STATES):
+                assert sheet.look(chain, state, level) == sheet._look(chain, state, level), (chain, state, level)
+            taken += sheet.level_as(chain, level) != level
+            differ += any(sheet._look(chain, s, level) != sheet._look(chain, s, 0) for s in (None, "cur"))
+    assert taken >= len(chains)  # the shortcut is taken (most elements look alike at every level) ...
+    if "teaching" in figure:
+        assert differ > 0  # ... and some elements do look different at some level
+
+
+def test_a_class_a_rule_names_is_asked_only_where_the_rule_could_match():
+    c = Cascade(".zl1 .m1{display:none}.zl2 .m2{display:none}.cur .lb{opacity:0.5}.zl3>.cur .tag{opacity:0.5}"
+                ".old{opacity:0.5}")
+    names, states = frozenset({"zl0", "zl1", "zl2", "zl3"}), frozenset({"cur", "old"})
+    root = node("svg", classes="zl0")
+    step = node("g", classes="step old")
+
+    def asked(*nodes):
+        return sorted(c.asking((root, *nodes), names, states))
+
+    assert asked(node("text", classes="lb")) == []
+    assert asked(node("g", classes="m1"), node("text", classes="lb")) == ["zl1"]  # inherited from its group
+    assert asked(node("g", classes="m1 m2")) == ["zl1", "zl2"]
+    assert asked(step, node("text", classes="tag")) == ["zl3"]  # whichever state its step is in
+    assert asked(node("text", classes="tag")) == []  # no group between it and the root

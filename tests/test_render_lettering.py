@@ -13,7 +13,8 @@ import random
 import numpy as np
 import pytest
 
-from construct.render.lettering import LEADER_FROM, LineIndex, label_box, place, spots_of, text_box, text_width
+from construct.render.lettering import (LEADER_FROM, LineIndex, label_box, line_pieces, line_pieces_one_by_one, place,
+                                        spots_of, text_box, text_width)
 
 
 def test_letters_are_measured_in_the_fonts_metrics():
@@ -58,6 +59,26 @@ def test_the_line_index_answers_as_shapely_does():
         assert index.meets(b) == want, b
 
 
+def test_the_line_index_cuts_its_lines_on_arrays_as_one_by_one_to_the_bit():
+    """line_pieces (every segment's pieces at once) against the rule one piece at a time: the same cells, the
+    same pieces to the last bit, in the same order -- on short, long, degenerate, negative and far segments, at
+    the cell sizes letters are placed with (one rule in two forms: the faster copy must not drift)."""
+    rng = np.random.default_rng(28)
+    segs = rng.uniform(-300, 900, (400, 4))
+    segs[::7, 2:] = segs[::7, :2] + rng.uniform(-3, 3, (len(segs[::7]), 2))  # short: one piece
+    segs[::11, 2:] = segs[::11, :2]  # a point
+    segs[5] = (0.0, 0.0, 1e6, 0.0)  # far beyond the sheet: left out, its number skipped
+    segs[6] = (-0.0, -0.0, -0.0, 18.0)  # exactly on cell edges
+    as_tuples = [tuple(s) for s in segs.tolist()]
+    for cell in (12.0, 1.5 * 9.5, 1.5 * 12.0 * 2.7, 100.0):
+        want = line_pieces_one_by_one(as_tuples, cell)
+        got = line_pieces(segs, cell)
+        assert got[0] == want[0] and got[2] == want[2]
+        assert np.array_equal(np.array(got[1]).view(np.int64), np.array(want[1]).view(np.int64))
+        assert 5 not in got[2] and len(got[1]) > len(segs)
+    assert line_pieces([], 12.0) == ([], [], [])
+
+
 def test_placed_letters_keep_clear_of_each_other_and_of_the_points():
     rng = random.Random(3)
     pts = [(rng.uniform(100, 300), rng.uniform(100, 300)) for _ in range(60)]
@@ -81,6 +102,29 @@ def test_a_letter_is_set_on_its_baseline_and_centred():
     assert (b[0] + b[2]) / 2 == pytest.approx(50.0, abs=0.01) and b[3] == pytest.approx(80.0, abs=1e-9) and b[1] < 80.0
     halo = label_box(50.0, 80.0, "H", 20.0, halo=2.0)
     assert halo == pytest.approx((b[0] - 2.0, b[1] - 2.0, b[2] + 2.0, b[3] + 2.0))
+
+
+def test_the_collision_grid_files_boxes_in_bulk_as_one_by_one():
+    """_Grid.add_many (every box's cells found at once) files each box in the cells, and in the order within each
+    cell, that _Grid.add gives it box by box: points across cell borders, on them exactly, at negative
+    coordinates, a box spanning many cells (one rule in two forms: the faster copy must not drift)."""
+    from construct.render.lettering import _Grid
+
+    rng = np.random.default_rng(28)
+    xy = np.concatenate([rng.uniform(-60, 60, (2000, 2)), 7.5 * rng.integers(-8, 8, (200, 2))])
+    r = rng.choice([0.9, 3.6, 7.5], len(xy))[:, None]
+    boxes = np.concatenate([xy - r, xy + r], axis=1)
+    grids = []
+    for cell, rows in ((7.5, boxes), (3.0, boxes), (7.5, np.array([[-40.0, -40.0, 41.0, 12.0], [0.0, 0.0, 1.0, 1.0]]))):
+        one, bulk = _Grid(cell), _Grid(cell)
+        grids.append(one)
+        for b in map(tuple, rows.tolist()):
+            one.add(b)
+        bulk.add_many(rows)
+        assert bulk.cells == one.cells
+        assert list(bulk.cells) == list(one.cells)
+    # (crowded cells, and boxes in two or four cells: the cases filed in order)
+    assert max(len(v) for v in grids[0].cells.values()) > 20 and sum(map(len, grids[0].cells.values())) > 2 * len(boxes)
 
 
 class _Looked(tuple):

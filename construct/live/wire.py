@@ -19,6 +19,7 @@ import base64
 import math
 import re
 import zlib
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -27,7 +28,7 @@ from ..render.wire import ARC, DEFLATE_LEVEL, LENGTH, LOG, PX, X, Y, as_stored, 
 from .measure import Measure
 from .sweep import DERIVED_WRITTEN, QUANTUM_PX, LiveSweep, live_givens, live_sweep, pieces, reach
 
-__all__ = ["ROW_PX", "STORED_PX", "column_kinds", "column_knots", "encode", "live_data", "live_pages"]
+__all__ = ["ROW_PX", "STORED_PX", "column_kinds", "column_knots", "encode", "live_data", "live_pages", "same_walk"]
 
 #: The page's coordinates travel as multiples of this (px, or its share of the largest scale in the
 #: construction's units): the rounding is inside ROW_PX, which the columns are checked against.
@@ -87,16 +88,16 @@ def _largest_radius(live: LiveSweep) -> float:
 
 def _knots(live: LiveSweep, kinds: np.ndarray, columns: np.ndarray | None = None,
            across: np.ndarray | None = None, nearest: np.ndarray | None = None) -> np.ndarray:
-    """The grid values each column needs when stored as *kinds* says (see :func:`column_knots`); only the
-    *columns* given, if given (each column walks the tree alone: the others' are left as they are).  *across*:
-    the drawn numbers turned on their side (columns x grid values), and *nearest*, :meth:`LiveSweep.nearest_columns`,
-    if the caller has them (both walks of :func:`column_knots` read them)."""
+    """The grid values each of the *columns* (all, if not given) needs when stored as *kinds* says (see
+    :func:`column_knots`): grid values x those columns (each column walks the tree alone).  *across*: those
+    columns' drawn numbers turned on their side (columns x grid values), and *nearest*,
+    :meth:`LiveSweep.nearest_columns`, if the caller has them (both walks of :func:`column_knots` read them)."""
     columns = np.arange(live.drawn.shape[1]) if columns is None else columns
-    across = np.ascontiguousarray(live.drawn.T) if across is None else across
+    across = np.ascontiguousarray(live.drawn[:, columns].T) if across is None else across
     rows, cols = live.drawn.shape[0], columns.size
     u = np.asarray(live.u if live.u is not None else np.log10(live.grid), dtype=float)
-    keep = np.zeros(live.drawn.shape, dtype=bool)
-    keep[:, live.nearest_columns() if nearest is None else nearest] = True
+    keep = np.zeros((rows, cols), dtype=bool)
+    keep[:, (live.nearest_columns() if nearest is None else nearest)[columns]] = True
     kinds = kinds[columns]
     start = live.start or rows
     # the starting values of the refinement: evenly spaced in log10 (live_sweep's np.linspace)
@@ -108,9 +109,8 @@ def _knots(live: LiveSweep, kinds: np.ndarray, columns: np.ndarray | None = None
     # fit broadcast along the block (the same arithmetic, number by number, as on the grid's side).
     kinds = kinds if live.fit is not None else np.zeros(cols, dtype=np.int8)
     order = np.argsort(kinds, kind="stable")
-    walked = columns[order]
-    every = cols == across.shape[0] and (walked == np.arange(cols)).all()  # (every column, in order)
-    dt = across if every else across[walked]
+    every = (order == np.arange(cols)).all()  # (every column in order)
+    dt = across if every else across[order]
     bounds = np.searchsorted(kinds[order], np.arange(LOG + 2))
     qt = np.empty(dt.shape)
     for kind in range(LOG + 1):
@@ -192,7 +192,7 @@ def _knots(live: LiveSweep, kinds: np.ndarray, columns: np.ndarray | None = None
     if every:
         keep |= shut
     else:
-        keep[:, walked] |= shut
+        keep[:, order] |= shut
     return keep
 
 
@@ -220,21 +220,79 @@ def column_knots(live: LiveSweep) -> tuple[np.ndarray, np.ndarray]:
     >>> column_knots(live)[0].T.astype(int).tolist()  # p is a line: its middle value is not needed; q is not
     [[1, 0, 1], [1, 1, 1]]
     """
+    keep, kinds, _, of = _walked_knots(live)
+    return keep[:, of], kinds[of]
+
+
+def _walked_knots(live: LiveSweep) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`column_knots` of the columns that walk the tree (:func:`same_walk`: one of each set of columns alike
+    in their numbers, kind and nearness): grid values x walks, their kinds, the walks (their columns, in order),
+    and each column's walk among them (its index)."""
     cols = live.drawn.shape[1]
     natural = column_kinds(live.keys) if live.fit is not None else np.zeros(cols, dtype=np.int8)
     # a radius that rounds to nothing somewhere (an arc about a point it is struck from, at L/r = 600) has no
     # logarithm there: a length
     natural = np.where((natural == LOG) & (live.drawn.min(axis=0) <= 0.0), LENGTH, natural).astype(np.int8)
-    across = np.ascontiguousarray(live.drawn.T)  # (each column's values in a row: both walks read them so)
     nearest = live.nearest_columns()
-    as_drawn = _knots(live, np.zeros(cols, dtype=np.int8), across=across, nearest=nearest)
+    # a column walks the tree alone, by its own numbers, kind and nearness: of the columns alike in those (a
+    # point's coordinate in its circle, its lines and arcs: two thirds of tangential-pressure's), the first walks for all
+    like = same_walk(live.drawn, natural, nearest)
+    walks = np.flatnonzero(like == np.arange(cols))
+    of = np.searchsorted(walks, like)  # (each column's walk among them)
+    across = np.ascontiguousarray(live.drawn[:, walks].T)  # (each walk's values in a row: both walks read them so)
+    as_drawn = _knots(live, np.zeros(cols, dtype=np.int8), walks, across, nearest)
+    natural = natural[walks]
     if not natural.any():
-        return as_drawn, natural
+        return as_drawn, natural, walks, of
     # (a number of the drawing only is stored as drawn either way: walked once)
-    as_built = _knots(live, natural, np.flatnonzero(natural), across, nearest)
-    as_built[:, natural == 0] = as_drawn[:, natural == 0]
+    built = natural != 0
+    as_built = as_drawn.copy()
+    as_built[:, built] = _knots(live, natural, np.flatnonzero(built), across[built], nearest[walks])
     built = as_built.sum(axis=0) < as_drawn.sum(axis=0)
-    return np.where(built, as_built, as_drawn), np.where(built, natural, 0).astype(np.int8)
+    return np.where(built, as_built, as_drawn), np.where(built, natural, 0).astype(np.int8), walks, of
+
+
+def same_walk(drawn: np.ndarray, kinds: np.ndarray, nearest: np.ndarray) -> np.ndarray:
+    """For each column of the drawn numbers *drawn* (grid values x columns), stored as *kinds*, taken from the
+    nearer grid value where *nearest*: the first column with the same numbers (to the bit), kind and nearness
+    (:func:`column_knots` walks that one alone for all of them).
+
+    >>> same_walk(np.array([[0.0, 0.0, 0.0, -0.0], [2.0, 2.0, 2.0, 2.0]]), np.array([1, 1, 2, 1]),
+    ...           np.zeros(4, dtype=bool)).tolist()
+    [0, 0, 2, 3]
+    """
+    return _first_alike((*np.ascontiguousarray(drawn).view(np.int64), kinds.astype(np.int64) * 2 + nearest))
+
+
+def _first_alike(rows: Sequence[np.ndarray]) -> np.ndarray:
+    """For each column of the integer *rows* (each a row of as many numbers), the first column equal to it in
+    every row.
+
+    A column is known by two weighted sums of its numbers (integer arithmetic, wrapping, row by row: no copy of
+    the rows turned on their side, no sort of the columns), and every column is then compared whole with the
+    first one of its sums: two different columns with the same sums are told apart by their bytes.
+
+    >>> _first_alike([np.array([1, 2, 1, 1]), np.array([3, 4, 3, 5])]).tolist()
+    [0, 1, 0, 3]
+    """
+    cols = len(rows[0])
+    weights = np.random.default_rng(28).integers(1, 2 ** 62, size=(len(rows), 2), dtype=np.int64)
+    sums = np.zeros((2, cols), dtype=np.int64)
+    with np.errstate(over="ignore"):
+        for row, w in zip(rows, weights):
+            sums[0] += row * w[0]
+            sums[1] += row * w[1]
+    seen: dict[tuple[int, int], int] = {}
+    like = np.fromiter((seen.setdefault(s, c) for c, s in enumerate(zip(*sums.tolist()))), dtype=np.int64,
+                       count=cols)
+    dup = np.flatnonzero(like != np.arange(cols))  # (a column is itself: only those like an earlier one)
+    of = like[dup]
+    if not all((row[dup] == row[of]).all() for row in rows):  # two columns with the same sums: by their bytes
+        whole = np.ascontiguousarray(np.vstack(rows).T)
+        by_bytes: dict[bytes, int] = {}
+        like = np.fromiter((by_bytes.setdefault(whole[c].tobytes(), c) for c in range(cols)), dtype=np.int64,
+                           count=cols)
+    return like
 
 
 def encode(live: LiveSweep) -> dict[str, Any]:
@@ -256,14 +314,16 @@ def encode(live: LiveSweep) -> dict[str, Any]:
     >>> e = encode(live); e["ucols"], decode(e, [0.0, 0.5, 1.0], 3, 3).tolist()
     (2, [[0.0, 0.0, 0.0], [5.0, 7.0, 5.0], [10.0, 10.0, 10.0]])
     """
-    rows, cols = live.drawn.shape
-    keep, kinds = column_knots(live)
+    rows = live.drawn.shape[0]
+    # (the columns alike in their numbers, kind and nearness are stored alike: each set's first stands for them)
+    keep, kinds, walks, of = _walked_knots(live)
     quanta = _quanta(live, kinds)
-    q = np.round(as_stored(live.drawn, live.fit, kinds) / quanta).astype(np.int64)
+    q = np.round(as_stored(live.drawn[:, walks], live.fit, kinds) / quanta).astype(np.int64)
     fit = live.fit if live.fit is not None else np.zeros((rows, 3))
     # identical columns (a point's coordinate in its circle, its lines, its arcs) travel once, with the union
     # of their kept values; stored in the order the columns first appear (neighbours stay neighbours)
     colmap, firsts = _same_columns(q, keep, kinds)
+    colmap = colmap[of]
     pick = np.asarray(firsts, dtype=np.int64)
     uq, ukeep, ukinds = q[:, pick], keep[:, pick], kinds[pick]
     ukeep[[0, -1]] = True
@@ -294,36 +354,15 @@ def encode(live: LiveSweep) -> dict[str, Any]:
 
 def _same_columns(q: np.ndarray, keep: np.ndarray, kinds: np.ndarray) -> tuple[np.ndarray, list[int]]:
     """Which columns of (q, keep, kinds) are the same (grid x columns, each column's values, kept grid values
-    and kind): for each column the number of the first one like it, counting those in order, and those firsts.
-
-    A column is known by two weighted sums of its numbers (integer arithmetic, wrapping: one pass over the
-    matrix, no sort of its columns, no copy of it turned on its side), and every column is then compared whole
-    with the first one of its sums: two different columns with the same sums are told apart by their bytes.
+    and kind): for each column the number of the first one like it, counting those in order, and those firsts
+    (:func:`_first_alike`; the kept values eight to a byte).
 
     >>> m, f = _same_columns(np.array([[1, 2, 1], [3, 4, 3]]), np.ones((2, 3), dtype=bool), np.zeros(3, dtype=np.int8))
     >>> m.tolist(), f
     ([0, 1, 0], [0, 1])
     """
-    rows, cols = q.shape
-    bits = np.packbits(keep, axis=0).astype(np.int64)  # (the kept values eight to a byte: summed as bytes)
-    weights = np.random.default_rng(28).integers(1, 2 ** 62, size=(rows + len(bits) + 1, 2), dtype=np.int64)
-    sums = np.zeros((2, cols), dtype=np.int64)
-    with np.errstate(over="ignore"):
-        # row by row (the rows are contiguous; a product of the matrix turned on its side gathers its columns)
-        for row, w in zip((*q, *bits, kinds.astype(np.int64)), weights):
-            sums[0] += row * w[0]
-            sums[1] += row * w[1]
-    seen: dict[tuple[int, int], int] = {}
-    colmap = np.fromiter((seen.setdefault(s, c) for c, s in enumerate(zip(*sums.tolist()))), dtype=np.int64,
-                         count=cols)
-    dup = np.flatnonzero(colmap != np.arange(cols))  # (a column is itself: only those like an earlier one)
-    of = colmap[dup]
-    same = (q[:, dup] == q[:, of]).all(axis=0) & (keep[:, dup] == keep[:, of]).all(axis=0) & (kinds[dup] == kinds[of])
-    if not same.all():  # two columns with the same sums: by their bytes
-        whole = np.ascontiguousarray(np.vstack([q, keep, kinds[None, :]]).T)
-        by_bytes: dict[bytes, int] = {}
-        colmap = np.fromiter((by_bytes.setdefault(whole[c].tobytes(), c) for c in range(cols)), dtype=np.int64,
-                             count=cols)
+    cols = q.shape[1]
+    colmap = _first_alike((*q, *np.packbits(keep, axis=0).astype(np.int64), kinds.astype(np.int64)))
     firsts = np.flatnonzero(colmap == np.arange(cols))
     return np.searchsorted(firsts, colmap), firsts.tolist()
 

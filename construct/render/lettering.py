@@ -38,7 +38,7 @@ from typing import Any, Iterable, Sequence
 import numpy as np
 
 __all__ = ["place", "spots_of", "LineIndex", "label_box", "text_box", "text_width", "segment_meets_box", "clipped_segment", "RANK", "LEADER_FROM",
-           "DEFAULT_FONT"]
+           "DEFAULT_FONT", "line_pieces", "line_pieces_one_by_one"]
 
 #: Rank of a role: lower is placed first.
 RANK = {"result": 0, "given": 1}
@@ -232,19 +232,27 @@ class _Grid:
                     got.append(b)
 
     def add_many(self, boxes: np.ndarray) -> None:
-        """:meth:`add` of each box (rows x0, y0, x1, y1), in order, the cells of those within one cell found at once
-        (the points of a placing: thousands)."""
+        """:meth:`add` of each box (rows x0, y0, x1, y1), in order: the cells of all of them found at once (the
+        points of a placing: thousands, most of them across a cell's border), each box filed in each of its cells
+        in the order :meth:`add` files it (box by box, column by column)."""
         cells = self.cells
-        i0, j0, i1, j1 = np.floor(boxes / self.cell).astype(int).T.tolist()
-        for b, a0, b0, a1, b1 in zip(map(tuple, boxes.tolist()), i0, j0, i1, j1):
-            if a0 != a1 or b0 != b1:
+        i0, j0, i1, j1 = np.floor(boxes / self.cell).astype(np.int64).T
+        nj = j1 - j0 + 1
+        per = (i1 - i0 + 1) * nj
+        if len(per) and (per.min() < 1 or per.max() > 64):
+            for b in map(tuple, boxes.tolist()):  # (a box far larger than a point's: as add files it)
                 self.add(b)
-                continue
-            got = cells.get((a0, b0))
+            return
+        which = np.repeat(np.arange(len(per)), per)
+        k = np.arange(len(which)) - np.repeat(np.cumsum(per) - per, per)  # the cell's number within its box's
+        n = nj[which]
+        filed = list(map(tuple, boxes.tolist()))
+        for b, key in zip(which.tolist(), zip((i0[which] + k // n).tolist(), (j0[which] + k % n).tolist())):
+            got = cells.get(key)
             if got is None:
-                cells[(a0, b0)] = [b]
+                cells[key] = [filed[b]]
             else:
-                got.append(b)
+                got.append(filed[b])
 
 
 class _Boxes:
@@ -353,6 +361,56 @@ def segment_meets_box(box, seg) -> bool:
     return clipped_segment(box, seg) is not None
 
 
+def line_pieces(segments: Iterable[tuple[float, float, float, float]] | np.ndarray, cell: float
+                ) -> tuple[list[tuple[int, int]], list[tuple[float, float, float, float]], list[int]]:
+    """The pieces a :class:`LineIndex` files *segments* (x0, y0, x1, y1) under, in order: each cut into
+    ``n = int(length / cell) + 1`` equal pieces (a segment of more than 4000 is far beyond the sheet and left
+    out), each piece under the cell (of side *cell*) of its middle: (cells, pieces, the segments' numbers).
+
+    The pieces of all segments are worked out at once (a figure's result lines are thousands, at every zoom
+    level), with the numbers of one piece at a time (:func:`line_pieces_one_by_one`, the rule, held equal to
+    this in the tests).
+
+    >>> line_pieces([(0.0, 0.0, 4.0, 0.0), (0.0, 1.0, 0.0, 1.5)], 3.0)
+    ([(0, 0), (1, 0), (0, 0)], [(0.0, 0.0, 2.0, 0.0), (2.0, 0.0, 4.0, 0.0), (0.0, 1.0, 0.0, 1.5)], [0, 0, 1])
+    """
+    seg = np.array(segments if isinstance(segments, np.ndarray) else list(segments), dtype=float).reshape(-1, 4)
+    x0, y0 = seg[:, 0], seg[:, 1]
+    dx, dy = seg[:, 2] - x0, seg[:, 3] - y0
+    hypot = math.hypot  # (each length as the rule measures it: a piece count never differs by a last bit)
+    n = np.array([max(1, int(hypot(a, b) / cell) + 1) for a, b in zip(dx.tolist(), dy.tolist())], dtype=np.int64)
+    number = np.flatnonzero(n <= 4000)
+    n = n[number]
+    k = np.repeat(number, n)
+    per = np.repeat(n, n)
+    i = np.arange(len(k)) - np.repeat(np.cumsum(n) - n, n)
+    a, b = i / per, (i + 1) / per
+    x0, y0, dx, dy = x0[k], y0[k], dx[k], dy[k]
+    pieces = np.column_stack((x0 + a * dx, y0 + a * dy, x0 + b * dx, y0 + b * dy))
+    keys = np.floor(np.column_stack(((pieces[:, 0] + pieces[:, 2]) / 2 / cell,
+                                     (pieces[:, 1] + pieces[:, 3]) / 2 / cell))).astype(np.int64)
+    return list(map(tuple, keys.tolist())), list(map(tuple, pieces.tolist())), k.tolist()
+
+
+def line_pieces_one_by_one(segments: Iterable[tuple[float, float, float, float]], cell: float
+                           ) -> tuple[list[tuple[int, int]], list[tuple[float, float, float, float]], list[int]]:
+    """:func:`line_pieces`, one segment and one piece at a time (the rule the array form follows)."""
+    keys, pieces, numbers = [], [], []
+    floor, hypot = math.floor, math.hypot
+    for k, (x0, y0, x1, y1) in enumerate(segments):
+        dx, dy = x1 - x0, y1 - y0
+        n = max(1, int(hypot(dx, dy) / cell) + 1)
+        if n > 4000:
+            continue  # far beyond the sheet
+        for i in range(n):
+            a, b = i / n, (i + 1) / n
+            piece = (x0 + a * dx, y0 + a * dy, x0 + b * dx, y0 + b * dy)
+            keys.append((floor((piece[0] + piece[2]) / 2 / cell), floor((piece[1] + piece[3]) / 2 / cell)))
+            pieces.append(piece)
+            numbers.append(k)
+    return keys, pieces, numbers
+
+
 class LineIndex:
     """Result lines as short pieces in a grid, asked whether a box meets one.
 
@@ -363,30 +421,18 @@ class LineIndex:
     alone would give.
     """
 
-    def __init__(self, size: float, segments: Iterable[tuple[float, float, float, float]]):
+    def __init__(self, size: float, segments: Iterable[tuple[float, float, float, float]] | np.ndarray):
         cell = 1.5 * size
         self.size = size
         self.cell = cell
         self.cells: dict[tuple[int, int], list[tuple[tuple[float, float, float, float], int]]] = {}
-        cells, floor, hypot = self.cells, math.floor, math.hypot
-        for k, seg in enumerate(segments):
-            x0, y0, x1, y1 = seg
-            dx, dy = x1 - x0, y1 - y0
-            n = max(1, int(hypot(dx, dy) / cell) + 1)
-            if n > 4000:
-                continue  # far beyond the sheet
-            for i in range(n):
-                if n == 1:  # most result lines are short pieces already: the numbers of the loop below
-                    piece = (x0 + 0.0 * dx, y0 + 0.0 * dy, x0 + 1.0 * dx, y0 + 1.0 * dy)
-                else:
-                    a, b = i / n, (i + 1) / n
-                    piece = (x0 + a * dx, y0 + a * dy, x0 + b * dx, y0 + b * dy)
-                key = (floor((piece[0] + piece[2]) / 2 / cell), floor((piece[1] + piece[3]) / 2 / cell))
-                got = cells.get(key)
-                if got is None:
-                    cells[key] = [(piece, k)]
-                else:
-                    got.append((piece, k))
+        cells = self.cells
+        for key, piece, k in zip(*line_pieces(segments, cell)):
+            got = cells.get(key)
+            if got is None:
+                cells[key] = [(piece, k)]
+            else:
+                got.append((piece, k))
 
     def length_in(self, box) -> float:
         """How much of the lines lies inside *box*: what a plate would break them by for a letter there."""

@@ -534,7 +534,7 @@ class Placing:
         cache = self._line_index
         key = (z, size)
         if key not in cache:
-            cache[key] = LineIndex(size, _scaled(self.obstacle_arrays()[1], z))
+            cache[key] = LineIndex(size, self.obstacle_arrays()[1] * z)
         return cache[key]
 
     @property

@@ -227,13 +227,15 @@ class SweepDrawing:
         True
         """
         rows = self._end_rows.get(among)
-        if rows is None:
-            rows = self._end_rows[among] = [(m, src) for m, src in self._end_sources()
-                                            if among is None or among(m)]
+        if rows is None:  # (a curve's points as one array, values first: each value's points are read at once)
+            rows = self._end_rows[among] = [
+                (m, (np.stack([np.stack(p, axis=-1) for p in src], axis=1) if src else np.zeros((self.n, 0, 2)))
+                 if type(src) is tuple else src)
+                for m, src in self._end_sources() if among is None or among(m)]
         out = []
         for m, src in rows:
-            if type(src) is tuple:  # a curve: its points' x and y
-                out.append(with_geom(m, tuple((float(x[i]), float(y[i])) for x, y in src)))
+            if src.ndim == 3:  # a curve: its points (x, y) at each value
+                out.append(with_geom(m, tuple(map(tuple, src[i].tolist()))))
             else:
                 out.append(with_geom(m, tuple(src[:, i].tolist())))
         return out

@@ -178,6 +178,9 @@ class Cascade:
         while len(_MATCHES) > _MATCHES_KEPT:
             del _MATCHES[next(iter(_MATCHES))]
         self._looks: dict[tuple[Node, ...], Look] = {}
+        # (asking) per set of class names: the rules naming one of them, without them, and the chains asked
+        self._relaxed: dict[tuple[frozenset[str], frozenset[str]], list[tuple]] = {}
+        self._asking: dict[tuple[frozenset[str], frozenset[str]], dict[tuple[Node, ...], frozenset[str]]] = {}
         self._own: dict[tuple[Node, ...], dict[str, str]] = {}
         # the rules whose subject asks for classes, by the first of them (an element is asked only about the rules
         # filed under its own classes, and those that ask for none: a sheet of hundreds of rules, each asked of
@@ -187,6 +190,43 @@ class Cascade:
         for i, r in enumerate(rules):
             if r.parts[-1][1][2]:
                 self._filed.setdefault(r.parts[-1][1][2][0], []).append(i)
+
+    def asking(self, chain: tuple[Node, ...], names: frozenset[str], others: frozenset[str] = frozenset()
+               ) -> frozenset[str]:
+        """Which of the classes *names* can change the look of *chain* -- with any of the classes *others* on its
+        nodes (the same either way: what else the caller changes, a step's state)?  The look is the same
+        whichever of the other classes of *names* its nodes carry.
+
+        A class of *names* is asked when a rule naming it could match the chain or one of its ancestors (a look
+        inherits its parent's), asked of the rules naming one of *names* with every class of *names* and
+        *others* left out: such a rule matches wherever the whole rule would, with any of those classes (a
+        selector only asks for classes, never for their absence), and the rules naming none of *names* match
+        alike whichever of them a node carries.
+
+        >>> c = Cascade(".zl1 .m1{display:none}.cur .lb{opacity:0.5}.zl2.cur .tag{opacity:0.5}")
+        >>> root, names, states = node("svg", classes="zl0"), frozenset({"zl0", "zl1", "zl2"}), frozenset({"cur"})
+        >>> [sorted(c.asking((root, node("text", classes=k)), names, states)) for k in ("lb", "m1", "tag m1")]
+        [[], ['zl1'], ['zl1', 'zl2']]
+        """
+        key = (names, others)
+        rules = self._relaxed.get(key)
+        if rules is None:
+            rules = self._relaxed[key] = [
+                (tuple((comb, (tag, ids, tuple(c for c in classes if c not in names and c not in others)))
+                       for comb, (tag, ids, classes) in r.parts),
+                 frozenset(c for part in r.parts for c in part[1][2] if c in names))
+                for r in self.rules if any(c in names for part in r.parts for c in part[1][2])]
+            self._asking[key] = {}
+        known = self._asking[key]
+        got = known.get(chain)
+        if got is None:
+            last = len(chain) - 1
+            got = self.asking(chain[:-1], names, others) if last else frozenset()
+            for parts, named in rules:
+                if not named <= got and _match(parts, chain, len(parts) - 1, last):
+                    got = got | named
+            known[chain] = got
+        return got
 
     def _declared(self, chain: tuple[Node, ...]) -> dict[str, str]:
         """What the rules, the attributes and the style say about the last node of *chain*."""

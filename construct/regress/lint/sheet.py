@@ -71,6 +71,8 @@ _ZOOM_CLASS = re.compile(r"zl\d+")
 #: Marks a step's group in a chain (its state classes are what a view changes).
 _STEP_GROUP = ("#step-group", "")
 _STATE_CLASSES = frozenset(STATES)
+#: The classes a view changes besides the zoom level (:meth:`Sheet._look`): a step's state, the end state.
+_VIEW_STATES = _STATE_CLASSES | {END}
 
 
 class LintInputError(ConstructError, ValueError):
@@ -233,8 +235,27 @@ class Sheet:
         key = (chain, state, level)
         got = self._looks.get(key)
         if got is None:
-            got = self._looks[key] = self._look(chain, state, level)
+            seen_as = self.level_as(chain, level)
+            got = self._looks[key] = (self.look(chain, state, seen_as) if seen_as != level
+                                      else self._look(chain, state, level))
         return got
+
+    def level_as(self, chain: tuple[Node, ...], level: int) -> int:
+        """The first zoom level at which *chain* looks as it does at *level*, in every state (:meth:`look`).
+        Most elements look the same at every level: only the rules naming a level's class (``.zl2 .lv2``) tell
+        the levels apart, and they are asked once per chain (:meth:`Cascade.asking`) rather than every look
+        worked out at every level."""
+        if not level:
+            return 0
+        names = self.__dict__.get("_zoom_classes")
+        if names is None:
+            names = self.__dict__["_zoom_classes"] = frozenset(
+                c for r in self.cascade.rules for part in r.parts for c in part[1][2] if _ZOOM_CLASS.fullmatch(c))
+        # (a step's state and the end state are changed alongside: _look)
+        asked = self.cascade.asking(chain, names, _VIEW_STATES)
+        if f"zl{level}" in asked:
+            return level
+        return next(k for k in range(level + 1) if f"zl{k}" not in asked)
 
     def _look(self, chain: tuple[Node, ...], state: str | None, level: int) -> Look:
         root = chain[0]

@@ -310,6 +310,7 @@ class Views:
 
     def shown(self, chain, step: int | None, level: int = 0) -> Runs:
         """The views (runs of steps) in which the element is seen (the drawing at zoom level *level*)."""
+        level = self.sheet.level_as(chain, level)  # (the views of a level where it looks the same)
         key = (chain, step, level)
         got = self._cache.get(key)
         if got is not None:

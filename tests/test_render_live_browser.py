@@ -1306,6 +1306,33 @@ def test_the_inset_magnifies_where_a_fresh_replay_magnifies_it_while_dragging(br
     page.close()
 
 
+def test_a_cluster_comes_and_goes_with_kappa_as_fresh_builds_show_it(browser):
+    """Baumann's effective work (gallery player, κ slider), step 826 (T2 carried with the compass): at κ = 8 the
+    step's finest detail needs 1.3 times the whole figure's magnification and its view gives 2.3, no inset; at
+    κ = 2 it needs 4.4 against 2.5 and a fresh build magnifies it.  Dragged there with ``input`` events alone the
+    page shows the inset a fresh build's player shows (its box within 0.5 px), and none again back at 8; it
+    showed none at κ = 2 (only the book's value's insets were shown)."""
+    path = REPO / "gallery" / "effective-work-kappa-8-parts-9-rod-ratio-5" / "teaching" / "player.html"
+    c, params = get("effective-work"), {"parts": 9, "rod_ratio": 5}
+    page, errors = _open(browser, path)
+    inset = """() => { const i = document.getElementById('inset');
+        return [getComputedStyle(i).display, i.getAttribute('viewBox').split(' ').map(Number)]; }"""
+    for k, values in ((826, (4.0, 2.0, 4.0, 8.0)),):
+        page.eval_on_selector("#slider", f"(s) => {{ s.value = {k}; s.dispatchEvent(new Event('input')); }}")
+        for v in values:
+            _drag_to(page, "kappa", v)
+            shown, box = page.evaluate(inset)
+            fresh = player_page(c, c.figure(**params, kappa=v), STYLES["teaching"])
+            at = fresh.index('<script type="application/json" id="data">')
+            want = json.loads(fresh[fresh.index(">", at) + 1:fresh.index("</script>", at)])["steps"][k - 1].get("z")
+            assert (shown == "block") == (want is not None), (k, v, shown, want)
+            if want is not None:
+                assert max(abs(a - b) for a, b in zip(box, want)) <= 0.5, (k, v, box, want)
+        _drag_to(page, "kappa", 8.0)
+    assert not errors, errors
+    page.close()
+
+
 # every value the plate writes in the end state (its decimal lettering, not its halos) that the page shows: its text
 # and its box on the screen
 _WRITTEN = """() => JSON.stringify(Array.from(document.querySelectorAll('#furniture text')).filter(t =>

@@ -37,6 +37,14 @@ NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
 VALUES = (1.07, 1.9, 3.3, 4.37, 5.55, 7.1, 23.0, 410.0)
 
 
+def _gallery_player(slug: str) -> Path:
+    """The committed gallery's player of the entry *slug* (the test is skipped in a checkout without one)."""
+    path = REPO / "gallery" / slug / "teaching" / "player.html"
+    if not path.is_file():
+        pytest.skip("no committed gallery in this checkout")
+    return path
+
+
 def _crank_live(tmp_path_factory, parts: int):
     """The page of the crank of *parts* parts built at L/r = 5 with its live rod-ratio slider."""
     c = get("crank")
@@ -269,9 +277,7 @@ def test_a_drag_keeps_every_point_letter_and_leader_where_a_fresh_replay_draws_t
     built afresh with the given there, drawn as the player draws it, on the page's own fit to the view), and
     every letter and name tag, with its leader, standing on the point it names (their offsets about it are the
     placer's: the page does not move them).  The checks beside the figure follow the slider."""
-    path = REPO / "gallery" / entry_slug(name, params) / "teaching" / "player.html"
-    if not path.is_file():
-        pytest.skip("no committed gallery in this checkout")
+    path = _gallery_player(entry_slug(name, params))
     assert 'id="live-data"' in path.read_text(encoding="utf-8"), f"{path} has no slider: rebuild the gallery"
     assert path.stat().st_size <= 2e6
     c = get(name)
@@ -541,9 +547,7 @@ def test_while_dragging_the_camera_keeps_what_the_step_frames_in_the_window(brow
     that value (what letting go frames: nothing the step frames leaves the window), and at the last step (the
     end state, the plate's figure) the crank circle keeps a sensible size (50 px across at least in a
     1400 × 1000 px window).  Let go, the camera frames the step's view."""
-    path = REPO / "gallery" / entry_slug(name, params) / "teaching" / "player.html"
-    if not path.is_file():
-        pytest.skip("no committed gallery in this checkout")
+    path = _gallery_player(entry_slug(name, params))
     page, errors = _open(browser, path)
     data = _live_data(page, given)
     n = page.evaluate("window.constructPlayer.data.n")
@@ -573,9 +577,7 @@ def test_a_drag_keeps_the_zoom_level_near_its_range_and_letting_go_makes_it_exac
     view magnifies more as L/r falls towards 1, where the curve's points crowd the crank circle's ends): a drag
     keeps the shown zoom level while near its range (a new level swaps the letters, a frame of its own), and
     once the slider is let go the level is the one the step's view has."""
-    path = REPO / "gallery" / "inertia-curve-rod-ratio-4" / "teaching" / "player.html"
-    if not path.is_file():
-        pytest.skip("no committed gallery in this checkout")
+    path = _gallery_player("inertia-curve-rod-ratio-4")
     page, errors = _open(browser, path)
     page.keyboard.press("ArrowLeft")
     _at_step_view(page)
@@ -910,10 +912,7 @@ def test_two_givens_move_one_at_a_time_and_the_page_says_which(browser):
     """Tangential-pressure takes the rod and Baumann's κ: each slider is named as in the protocol, moving one
     sets the other back to the book's value (each sweep is taken with the other there), and the title, the givens
     and the checks name the shown values."""
-    path = REPO / "gallery" / entry_slug("tangential-pressure", {"rod_ratio": 5.0, "parts": 18, "kappa": 8.0}) / \
-        "teaching" / "player.html"
-    if not path.is_file():
-        pytest.skip("no committed gallery in this checkout")
+    path = _gallery_player(entry_slug("tangential-pressure", {"rod_ratio": 5.0, "parts": 18, "kappa": 8.0}))
     page, errors = _open(browser, path)
     kappa = page.locator('input[type="range"][name="kappa"]')
     rod = page.locator('input[type="range"][name="rod_ratio"]')
@@ -934,9 +933,7 @@ def test_a_given_that_changes_the_steps_is_a_switch_between_the_books_figures(br
     """The indicator diagram's filling changes its steps (the division up to the cut-off): each of the book's
     figures has its player, and each player a switch to the others, saying why it is no slider."""
     plan = [p for n, p in gallery_plan() if n == "indicator-diagram"]
-    paths = [REPO / "gallery" / entry_slug("indicator-diagram", p) / "teaching" / "player.html" for p in plan]
-    if not all(p.is_file() for p in paths):
-        pytest.skip("no committed gallery in this checkout")
+    paths = [_gallery_player(entry_slug("indicator-diagram", p)) for p in plan]
     assert len(paths) >= 2
     page, errors = _open_plain(browser, paths[0])
     switch = page.locator("#live.live-switch")
@@ -973,9 +970,7 @@ def test_areas_are_drawn_from_the_curves_that_bound_them(browser, name, params, 
     from shapely.geometry import Polygon
     from shapely.ops import unary_union
 
-    path = REPO / "gallery" / entry_slug(name, params) / "teaching" / "player.html"
-    if not path.is_file():
-        pytest.skip("no committed gallery in this checkout")
+    path = _gallery_player(entry_slug(name, params))
     c = get(name)
     page, errors = _open(browser, path)
     read = """() => (window.constructLive.flush(), window.constructPlayer.groups()).flatMap(s => Array.from(s.querySelectorAll('path.area')))
@@ -1032,9 +1027,7 @@ def test_a_curve_through_the_points_between_its_corners_takes_the_points_a_fresh
     points (7 px off at L = 3 m).  The page sweeps each part of the domain where a fresh build takes the same
     steps apart (live.sweep.pieces), under one slider: at every value, on both sides of the parts' ends, its
     curves have a fresh build's pieces, each number within 0.5 px."""
-    path = REPO / "gallery" / entry_slug("piston-force", {}) / "teaching" / "player.html"
-    if not path.is_file():
-        pytest.skip("no committed gallery in this checkout")
+    path = _gallery_player(entry_slug("piston-force", {}))
     c = get("piston-force")
     page, errors = _open(browser, path)
     page.keyboard.press("End")
@@ -1066,9 +1059,7 @@ def test_the_end_states_plate_lettering_keeps_the_letters_size_on_the_screen(bro
     turn: its box's middle stays where the attribute turns it (it kept the book value's size, half the letters' at
     1.5).  And the arrowheads and a scale's ticks, drawn at the letters' size, keep their size beside the letters
     (as long over a letter's height as at the book's value), each arrowhead's tip where the furniture puts it."""
-    path = REPO / "gallery" / "inertia-curve-rod-ratio-4" / "teaching" / "player.html"
-    if not path.is_file():
-        pytest.skip("no committed gallery in this checkout")
+    path = _gallery_player("inertia-curve-rod-ratio-4")
     page, errors = _open(browser, path)
     _at(page, "end")
     heights = """() => { const h = e => e.getBoundingClientRect().height, m = document.getElementById('figure').getScreenCTM();
@@ -1130,9 +1121,7 @@ def test_the_rod_length_stands_on_a_break_the_shown_step_draws(browser):
     shows, where a fresh replay's end state writes it -- at 50 the end state draws no break (the lines the axis
     break crosses are the construction's, which the end state leaves out), so nothing is written; it stood
     alone at the window's left edge ("L = 50 r" on the axis's break, far out of the end state's view)."""
-    path = REPO / "gallery" / "inertia-curve-rod-ratio-4" / "teaching" / "player.html"
-    if not path.is_file():
-        pytest.skip("no committed gallery in this checkout")
+    path = _gallery_player("inertia-curve-rod-ratio-4")
     c = get("inertia-curve")
     page, errors = _open(browser, path)
     _at(page, "end")
@@ -1171,9 +1160,7 @@ def test_the_end_step_frames_what_it_draws_as_kappa_moves(browser):
     from construct.render.svg import Drawing
 
     params = {"rod_ratio": 5.0, "parts": 18, "kappa": 8.0}
-    path = REPO / "gallery" / entry_slug("tangential-pressure", params) / "teaching" / "player.html"
-    if not path.is_file():
-        pytest.skip("no committed gallery in this checkout")
+    path = _gallery_player(entry_slug("tangential-pressure", params))
     page, errors = _open(browser, path)
     _at(page, "end")
     _at_step_view(page)
@@ -1231,9 +1218,7 @@ def test_the_plates_letters_and_lines_follow_kappa_and_only_the_scales_ticks_tha
     and line, in the same order -- each within 0.5 px of where that build puts it (a letter the fresh build sets
     off with a leader, where the page keeps the book's value's place for it, only by its text), and the page's
     note says which of the plate's items come and go."""
-    path = REPO / "gallery" / entry_slug(name, params) / "teaching" / "player.html"
-    if not path.is_file():
-        pytest.skip("no committed gallery in this checkout")
+    path = _gallery_player(entry_slug(name, params))
     c = get(name)
     page, errors = _open(browser, path)
     _at(page, "end")
@@ -1312,7 +1297,7 @@ def test_a_cluster_comes_and_goes_with_kappa_as_fresh_builds_show_it(browser):
     κ = 2 it needs 4.4 against 2.5 and a fresh build magnifies it.  Dragged there with ``input`` events alone the
     page shows the inset a fresh build's player shows (its box within 0.5 px), and none again back at 8; it
     showed none at κ = 2 (only the book's value's insets were shown)."""
-    path = REPO / "gallery" / "effective-work-kappa-8-parts-9-rod-ratio-5" / "teaching" / "player.html"
+    path = _gallery_player("effective-work-kappa-8-parts-9-rod-ratio-5")
     c, params = get("effective-work"), {"parts": 9, "rod_ratio": 5}
     page, errors = _open(browser, path)
     inset = """() => { const i = document.getElementById('inset');
@@ -1348,9 +1333,7 @@ def test_the_values_the_plate_writes_stay_clear_of_one_another_while_dragging(br
     (where it stood at the book's value while there is room), so that no two overlap on the screen -- they were
     written on one another at L/r 2 while the page kept the book's value's offsets -- and each value belongs to
     its ordinate (its text a number)."""
-    path = REPO / "gallery" / "inertia-stroke-fractions-rod-ratio-5" / "teaching" / "player.html"
-    if not path.is_file():
-        pytest.skip("no committed gallery in this checkout")
+    path = _gallery_player("inertia-stroke-fractions-rod-ratio-5")
     page, errors = _open(browser, path)
     _at(page, "end")
     _at_step_view(page)
@@ -1503,9 +1486,7 @@ def test_the_values_the_plate_writes_belong_to_the_sliders_value(browser):
     there, itself good to half a unit of its third decimal, within half a unit of the last digit written), every
     value with the same decimals (a plate writes its numbers alike: not +1,50 beside +0,093), and at the book's
     value every value has its three decimals."""
-    path = REPO / "gallery" / "inertia-stroke-fractions-rod-ratio-5" / "teaching" / "player.html"
-    if not path.is_file():
-        pytest.skip("no committed gallery in this checkout")
+    path = _gallery_player("inertia-stroke-fractions-rod-ratio-5")
     c = get("inertia-stroke-fractions")
     page, errors = _open(browser, path)
     _at(page, "end")
@@ -1529,9 +1510,7 @@ def test_the_rod_written_at_the_break_is_the_sliders_in_every_piece_of_the_domai
     swept apart: dragged slowly from the book's L/r = 5 to 32.4 and 1000 (``input`` events only) at three fifths
     of the steps, the rod's length written at the axis's break is the slider's value (it was the value the first
     piece's sweep was left at: "L = 1,096 r" at L/r 32.4)."""
-    path = REPO / "gallery" / "inertia-stroke-fractions-rod-ratio-5" / "teaching" / "player.html"
-    if not path.is_file():
-        pytest.skip("no committed gallery in this checkout")
+    path = _gallery_player("inertia-stroke-fractions-rod-ratio-5")
     page, errors = _open(browser, path)
     page.evaluate("() => { const s = document.getElementById('slider'); s.value = Math.round(0.6 * s.max); s.oninput(); }")
     _at_step_view(page)

@@ -305,17 +305,22 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
             (line_a[np.array(only, dtype=bool)] * z).reshape(-1, 4), np.array(taken, dtype=float).reshape(-1, 4),
             0.3 * size * f, placing.line_reach).tolist()))
         losers = []
+        # the level's tags by their step: those seen with a tag are gathered from its mates' steps, not picked
+        # out of all the level's tags for each tag that lost its spot (which grew with the square of the tags)
+        here_of: dict[int, list[str]] = {}
+        for o in items:
+            here_of.setdefault(byid[o[0]].step, []).append(o[0])
         for it in spots:
             i = it[0]
             # it lost its spot to all the tags of the level together; it holds it where it is seen only
             # with the tags seen together with it (crank step 181: M1 gave way to tags never shown with it)
             mates = seen_with.get(lvl, {}).get(byid[i].step, set())
             if clear[i]:  # (asked first: the tags seen with it are gathered only for a spot free of the rest)
-                local = [o for o in items if byid[o[0]].step in mates and (o[0] in holds or o[0] == i)]
+                local = [o for k in mates for o in here_of.get(k, ()) if o in holds or o == i]
                 # it holds its spot where the spot is also free of the tags seen with it
                 b = box_of[i]
                 if len(local) < len(items) and not any(b[0] < c[2] and c[0] < b[2] and b[1] < c[3] and c[1] < b[3]
-                                                       for c in (box_of[o[0]] for o in local if o[0] != i)):
+                                                       for c in (box_of[o] for o in local if o != i)):
                     holds.add(i)  # the tags it is seen with after it are placed with it
                     continue
             losers.append(it)

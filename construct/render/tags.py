@@ -59,6 +59,12 @@ class Ground(Protocol):
     def lines_at(self, z: float, size: float) -> Any: ...
 
 
+#: How many (tag, obstacle) pairs :func:`place_tags` asks of all their spots at once (a tag's pairs are never
+#: split): arrays of some 120,000 spot tests (60 spots a tag), which stay in the processor's cache (the compound
+#: engine's tags, 240,000 pairs at one level: 14 million at once took a quarter longer).
+_PAIRS_AT_ONCE = 2048
+
+
 def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: Callable[[int], frozenset[int]]) -> Tags:
     """Where each shown name tag goes: {point id: (dx, dy, distance in letter heights)} about its point.
 
@@ -235,10 +241,16 @@ def place_tags(placing: Ground, views: Sequence[View], full: View, input_steps: 
         ti, bi = np.nonzero(meet)
         taken = np.zeros(sx0.shape, dtype=bool)
         if len(ti):
-            o = obst[bi]
-            hit = ((sx0[ti] < o[:, 2:3]) & (o[:, 0:1] < sx1[ti]) & (sy0[ti] < o[:, 3:4]) & (o[:, 1:2] < sy1[ti]))
+            # (tag, obstacle) pairs by tag (np.nonzero gives them in order), a few tags' pairs at a time: the
+            # spots of the compound engine's 1463 tags met 240,000 pairs, 14 million spot-pair tests at once
             rows, starts = np.unique(ti, return_index=True)
-            taken[rows] = np.logical_or.reduceat(hit, starts, axis=0)
+            ends = np.append(starts[1:], len(ti))
+            cut = [0, *np.flatnonzero(np.diff(starts // _PAIRS_AT_ONCE)) + 1, len(rows)]
+            for c0, c1 in zip(cut, cut[1:]):
+                p0, p1 = starts[c0], ends[c1 - 1]
+                t_, o = ti[p0:p1], obst[bi[p0:p1]]
+                hit = ((sx0[t_] < o[:, 2:3]) & (o[:, 0:1] < sx1[t_]) & (sy0[t_] < o[:, 3:4]) & (o[:, 1:2] < sy1[t_]))
+                taken[rows[c0:c1]] = np.logical_or.reduceat(hit, starts[c0:c1] - p0, axis=0)
         if st.ring_px:
             # the ring the player draws round the point while its step is current
             rr = st.ring_px * f

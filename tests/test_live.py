@@ -496,3 +496,41 @@ def test_a_switch_of_spots_is_put_where_both_sides_spots_are_clear():
     assert us == [0.0, 0.5 - SWITCH_CELL, 0.5, 1.0] and spots == ["S1", "S1", "S2", "S2"]
     assert jumps == [(float(values(0.5 - SWITCH_CELL)), float(values(0.5)))]
     assert all(clear[s](u) for u, s in zip(us, spots)) and len(rounds) == 3
+
+
+def test_furniture_matched_once_per_pattern_as_matched_alone():
+    """Measure._aligned matches a value's plate furniture to the built one's once for each pattern of its forms and
+    texts (measure._pattern: the matcher compares items for equality only), not once for each value's texts: on
+    random plates whose texts come and go (drawn from a few, so that patterns recur with other texts), the cached
+    matching is _matched's own, value by value (fails when the pattern says only whether an item equals a built
+    one, not which)."""
+    from types import SimpleNamespace
+
+    from construct.live.measure import Measure, _matched, _signs
+    from construct.render.plate import Lettering, Stroke
+
+    rng = np.random.default_rng(27)
+
+    def plate(n: int) -> tuple:
+        return tuple(Stroke((0.0, float(i)), (1.0, float(i))) if rng.random() < 0.4 else
+                     Lettering((0.0, float(i)), str(rng.integers(0, 6))) for i in range(n))
+
+    for _ in range(40):
+        built = plate(int(rng.integers(3, 12)))
+        first: dict = {}
+        for i, s in enumerate(_signs(built)[1]):
+            first.setdefault(s, i)
+        m = SimpleNamespace(_items=built, _first=first, _matches={})
+        for _ in range(30):
+            items = plate(int(rng.integers(3, 12)))
+            at = _matched(built, items)
+            want = (tuple(items[at[i]] if i in at else it for i, it in enumerate(built)),
+                    frozenset(range(len(built))) - set(at))
+            assert Measure._aligned(m, items) == want
+    # values that write other numbers at the same places (a scale's, read off the figure) are one pattern
+    m = SimpleNamespace(_items=built, _first=first, _matches={})
+    for k in range(5):
+        items = tuple(Lettering(it.at, f"{it.text}.{k}") if isinstance(it, Lettering) else it for it in built)
+        at = _matched(built, items)
+        assert Measure._aligned(m, items)[0] == tuple(items[at[i]] if i in at else it for i, it in enumerate(built))
+    assert len(m._matches) == 1

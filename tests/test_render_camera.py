@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import itertools
 import json
+import math
 import re
 import xml.etree.ElementTree as ET
 
@@ -19,6 +20,7 @@ from construct.constructions import get
 from construct.kernel.geometry import Circle, Line, Point
 from construct.render import camera, insets
 from construct.render.output import scene_for, write_replay
+from construct.render.player import player_html
 from construct.render.styles import STYLES
 from construct.render.lettering import segment_meets_box
 from construct.render.svg import Drawing
@@ -566,3 +568,38 @@ def test_the_views_framed_over_arrays_are_the_cameras_own():
         # (to 0.02 px: clear_edges asks each round of the view written to two decimals, the array form of the
         # unrounded one, so a round may grow it a hundredth of a pixel otherwise)
         assert tuple(grown[:, i]) == pytest.approx(want[i], abs=0.021), (i, views[i], want[i])
+
+
+def test_a_clusters_inset_is_where_the_page_finds_it_and_holds_its_points():
+    """A cluster's inset is found anew by the page about the step's finest detail, read off the page's own
+    elements (the player's ``detail``: each point's cx, cy as written, to the nearest 0.1 px, halves up -- the
+    script's ``Math.round`` --, each circle's or arc's radius as written).  Baumann's effective work at κ = 12,
+    step 838 (the arc T8 about U8, 3.28 px round, beside H8 and Q8 at 271.53 and 268.25): read with halves to
+    even, the drawing put the inset on the arc and lettered U8 in it while the page moved it to H8 and Q8 and
+    drew it empty.  For every cluster's inset the page's box is the drawing's, and points stand in it."""
+    c = get("effective-work")
+    page = player_html(scene_for(c, c.figure(parts=9, rod_ratio=5, kappa=12), ending=True), STYLES["teaching"])
+    data = json.loads(re.search(r'<script type="application/json" id="data">(.*?)</script>', page, re.S).group(1))
+    circles = {i: (float(x), float(y), float(r)) for x, y, i, r in
+               re.findall(r'<circle [^>]*?cx="([-0-9.]+)" cy="([-0-9.]+)" id="([^"]+)" r="([-0-9.]+)"', page)}
+    arcs = {i: float(re.findall(r"-?[0-9.]+(?:e[-+]?[0-9]+)?", d)[2])
+            for d, i in re.findall(r'<path [^>]*?d="([^"]+)" id="([^"]+)"', page)}
+    tenth = lambda v: math.floor(10 * v + 0.5) / 10  # noqa: E731 (JavaScript's Math.round, to 0.1)
+    clusters = [(k, st) for k, st in enumerate(data["steps"], start=1) if st.get("zd") and st.get("z")]
+    assert len(clusters) > 20
+    for k, st in clusters:
+        ids, rounds, size = st["zd"]
+        fine, at = math.inf, None
+        for centre, mark in rounds:
+            r = circles[mark][2] if mark in circles else arcs[mark]
+            if r < fine:
+                fine, at = r, circles[centre][:2]
+        pts = [(tenth(circles[i][0]), tenth(circles[i][1])) for i in ids]
+        for a, b in itertools.combinations(pts, 2):
+            if 0 < math.dist(a, b) < fine:
+                fine, at = math.dist(a, b), ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+        x, y, w, h = st["z"]
+        assert fine == pytest.approx(size, abs=1e-4), k  # (written to 4 decimals)
+        assert (x + w / 2, y + h / 2) == pytest.approx(at, abs=0.02), k
+        inside = [p for p, *_ in st["zp"] if x <= circles[p][0] <= x + w and y <= circles[p][1] <= y + h]
+        assert inside, (k, st["z"], st["zp"])

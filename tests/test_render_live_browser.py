@@ -858,6 +858,30 @@ def test_a_drag_writes_what_the_page_shows_and_a_step_draws_what_it_shows_anew_b
     page.close()
 
 
+def test_a_drag_reads_no_layout_of_the_figure_before_it_writes(browser, live_player):
+    """A drag's frame reads the figure's box from what the page kept, not from the element: the given's slider has
+    just moved, and a read of the element's size then lays the page out once more in every frame, before anything is
+    written.  The kept box follows the window (a resize reads it anew)."""
+    _, _, path = live_player
+    page, errors = _open(browser, path)
+    _at(page, "end")
+    page.evaluate("window.constructLive.set(4.0)")
+    _at_step_view(page)
+    # each read of the figure's size counted (the element's own getters before the prototype's)
+    page.evaluate("""() => { const svg = document.getElementById('figure'); window.sizeReads = 0;
+      ['clientWidth', 'clientHeight'].forEach(a => { const get = Object.getOwnPropertyDescriptor(Element.prototype, a).get;
+        Object.defineProperty(svg, a, {configurable: true, get() { window.sizeReads++; return get.call(this); }}); }); }""")
+    reads = page.evaluate("""async () => { window.sizeReads = 0;
+      for (let i = 1; i <= 12; i++) await new Promise(r => requestAnimationFrame(() => { window.constructLive.set(4.0 + 0.01 * i, true); setTimeout(r, 0); }));
+      return window.sizeReads; }""")
+    assert reads == 0, f"a drag read the figure's size {reads} times in 12 frames"
+    page.set_viewport_size({"width": 1100, "height": 900})
+    page.evaluate("() => new Promise(r => requestAnimationFrame(() => setTimeout(r, 0)))")
+    assert page.evaluate("window.sizeReads") > 0  # (a resize: the box read anew)
+    assert not errors, errors
+    page.close()
+
+
 def test_letters_that_come_to_lie_on_one_another_give_way(browser, live_player):
     """Near L/r = 1 the crank's piston points crowd the stroke's end: the page lets a later letter give way where
     it would lie on another (never a pile of letters), and at the book's value hides none."""
@@ -1278,6 +1302,33 @@ def test_the_inset_magnifies_where_a_fresh_replay_magnifies_it_while_dragging(br
         assert len(got["pts"]) == len(points) == len(got["own"]) > 0, (v, got, points)
         for (x, y), (a, b), (ox, oy) in zip(got["pts"], points, got["own"]):
             assert math.hypot(x - a, y - b) <= 0.5 and (x, y) == (ox, oy), (v, (x, y), (a, b), (ox, oy))
+    assert not errors, errors
+    page.close()
+
+
+def test_a_cluster_comes_and_goes_with_kappa_as_fresh_builds_show_it(browser):
+    """Baumann's effective work (gallery player, κ slider), step 826 (T2 carried with the compass): at κ = 8 the
+    step's finest detail needs 1.3 times the whole figure's magnification and its view gives 2.3, no inset; at
+    κ = 2 it needs 4.4 against 2.5 and a fresh build magnifies it.  Dragged there with ``input`` events alone the
+    page shows the inset a fresh build's player shows (its box within 0.5 px), and none again back at 8; it
+    showed none at κ = 2 (only the book's value's insets were shown)."""
+    path = REPO / "gallery" / "effective-work-kappa-8-parts-9-rod-ratio-5" / "teaching" / "player.html"
+    c, params = get("effective-work"), {"parts": 9, "rod_ratio": 5}
+    page, errors = _open(browser, path)
+    inset = """() => { const i = document.getElementById('inset');
+        return [getComputedStyle(i).display, i.getAttribute('viewBox').split(' ').map(Number)]; }"""
+    for k, values in ((826, (4.0, 2.0, 4.0, 8.0)),):
+        page.eval_on_selector("#slider", f"(s) => {{ s.value = {k}; s.dispatchEvent(new Event('input')); }}")
+        for v in values:
+            _drag_to(page, "kappa", v)
+            shown, box = page.evaluate(inset)
+            fresh = player_page(c, c.figure(**params, kappa=v), STYLES["teaching"])
+            at = fresh.index('<script type="application/json" id="data">')
+            want = json.loads(fresh[fresh.index(">", at) + 1:fresh.index("</script>", at)])["steps"][k - 1].get("z")
+            assert (shown == "block") == (want is not None), (k, v, shown, want)
+            if want is not None:
+                assert max(abs(a - b) for a, b in zip(box, want)) <= 0.5, (k, v, box, want)
+        _drag_to(page, "kappa", 8.0)
     assert not errors, errors
     page.close()
 

@@ -141,6 +141,21 @@ class Area:
     def rings(self) -> tuple[tuple[Point, ...], ...]:
         return tuple(ring for _, ring in self.pieces)
 
+    def coordinate_pieces(self) -> tuple[tuple[int, tuple[tuple[float, float], ...]], ...]:
+        """(sign, ring) per piece as :attr:`pieces` has them, each vertex an (x, y) pair of floats: what a drawing
+        reads, without a Point made for each vertex of an area made from coordinates (a live player's piece of
+        Tafel I draws rings of a thousand vertices).
+
+        >>> a = Area.from_coordinates([(-1, [0.0, 1.0, 0.0], [0.0, 0.0, 1.0])])
+        >>> a.coordinate_pieces()
+        ((-1, ((0.0, 0.0), (1.0, 0.0), (0.0, 1.0))),)
+        >>> a.coordinate_pieces() == tuple((s, tuple((p.x, p.y) for p in r)) for s, r in a.pieces)
+        True
+        """
+        if self._coords is not None:
+            return tuple((s, tuple(zip(xs.tolist(), ys.tolist()))) for s, xs, ys in self._coords)
+        return tuple((s, tuple([(p.x, p.y) for p in ring])) for s, ring in self._pieces)
+
     def hatch(self, spacing: float, angle_deg: float = 90.0) -> tuple[tuple[float, float, float, float], ...]:
         """Hatch lines clipped to the pieces by shapely: (x1, y1, x2, y2) segments, *spacing* apart.
 

@@ -31,7 +31,8 @@ from ..figure import Figure
 from ..render.camera import (FINAL_CONTEXT, MAX_ZOOM, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, clip_view, framed_rows,
                              level, player_letter_scale, step_focus_names, step_shots, zoom_of)
 from ..render.edges import clear_edges_rows
-from ..render.end_state import NumbersFactory, end_furniture, end_letter_boxes, end_lettering_at, furniture_numbers
+from ..render.end_state import (NumbersFactory, end_furniture, end_letter_boxes, end_lettering_at, fixed_elements,
+                                furniture_numbers)
 from ..render.output import scene_for
 from ..render.insets import inset_details
 from ..render.placing import Placing
@@ -179,9 +180,14 @@ class Measure:
         #: :attr:`furniture_live` (the sweep of a given over which it can be matched item by item:
         #: :meth:`furniture_kept`), held at these numbers else (the page shows it at the book's values alone)
         self._built = built
+        self._checks: list[list[Any]] | None = None  # (built_checks)
         self._items = scene.end_furniture
-        #: another value's furniture matched to the built one's, by its items' forms and texts (:meth:`_aligned`)
+        #: another value's furniture matched to the built one's, by its items' forms and texts (:meth:`_aligned`),
+        #: and where each of the built items' forms and texts first stands (:func:`_pattern`)
         self._matches: dict[tuple, dict[int, int]] = {}
+        self._first: dict[tuple, int] = {}
+        for i, sign in enumerate(_signs(scene.end_furniture)[1]):
+            self._first.setdefault(sign, i)
         #: each built furniture element's item: {its id: the item's index in the built furniture}
         self.owners: dict[str, int] = {}
         self.held = self._furniture(scene.end_furniture, drawing.vp, owners=self.owners)
@@ -417,17 +423,30 @@ class Measure:
             items, absent = self._aligned(items)
         own: dict[str, int] = {} if owners is None else owners
         sheet = SimpleNamespace(end_furniture=items)
-        spots = None
+        spots = fixed = None
         if marks is not None and any(isinstance(it, Lettering) for it in items):
+            fixed = fixed_elements(sheet, vp, self.end, NUMBERS)  # (made once: placed among, then drawn)
             spots = end_lettering_at(sheet, marks(), self.style, vp, self.end, self.placing, NUMBERS,
-                                     None if keep is None else self._spots[keep])
+                                     None if keep is None else self._spots[keep], fixed)
         keys, nums, texts = furniture_numbers(end_furniture(sheet, self.style, vp, self.end, self.placing, NUMBERS,
-                                                            own, spots), exact=exact)
+                                                            own, spots, fixed), exact=exact)
         if spots is not None:
             texts["#spots"] = self.spots_key(spots)
         if absent:
             texts["#absent"] = " ".join(i for i, k in own.items() if k in absent)
         return keys, nums, texts
+
+    def built_checks(self, figure: Figure) -> list[list[Any]]:
+        """The construction's checks of *figure* (the built value's), as the live data carries them: [[name,
+        measured, expected, error, tolerance, ok], ...].  Made once for the figure the Measure was built from:
+        every piece of a given's domain and every given of the figure carry the same (Tafel I: eight pieces)."""
+        if figure is not self._built or self._checks is None:
+            rows = [[c.name, c.measured, c.expected, c.error, c.tolerance, bool(c.ok)]
+                    for c in self.construction.checks(figure)]
+            if figure is not self._built:
+                return rows
+            self._checks = rows
+        return [list(r) for r in self._checks]
 
     def spots_key(self, spots: dict[str, tuple[float, float, float]]) -> str:
         """A name of the spots the plate's lettering stands at about its places (:func:`~construct.render.end_state.
@@ -471,11 +490,9 @@ class Measure:
     def _aligned(self, items: tuple) -> tuple[tuple, frozenset[int]]:
         """Another value's furniture *items* in the built one's form: each built item where that value has it
         (:func:`_matched`), the built item where it has not; and the built items it has not, by their index."""
-        # (matched once for each form and texts of the items: most values of a sweep share a few; at most
-        # MATCHES of them kept)
-        key = tuple((type(it), getattr(it, "text", ""), getattr(it, "text_at", None) is None,
-                     getattr(it, "broken", False), bool(getattr(it, "angle", 0)), getattr(it, "to", None) is None)
-                    for it in items)
+        # (matched once for each pattern of the items (_pattern): the values of a sweep write other numbers on
+        # the plate, in a few patterns -- Tafel 2's 333 values in 17; at most MATCHES of them kept)
+        key = _pattern(self._first, items)
         at = self._matches.get(key)
         if at is None:
             if len(self._matches) >= MATCHES:
@@ -484,13 +501,13 @@ class Measure:
         return (tuple(items[at[i]] if i in at else it for i, it in enumerate(self._items)),
                 frozenset(range(len(self._items))) - set(at))
 
-    def furniture_kept(self, protocol: Any, replay: Any, size: int) -> frozenset[int] | None:
+    def furniture_kept(self, protocol: Any, replay: Any, size: int, at: int = 0) -> frozenset[int] | None:
         """The built furniture's items that some value of the sweep *replay* of *protocol* lacks (a scale's
         ticks come and go with the diagram's height): drawn at every value where the built plate has them and
         shown where the nearer grid value's plate has them (an element that comes and goes would make the
         refinement split every cell about it); the rest of the furniture swept.  None where the furniture cannot
         be matched item by item (a plate of panels): held whole.  The texts of items some value adds that the
-        built plate lacks go to :attr:`added`."""
+        built plate lacks go to :attr:`added`.  *at*: where the *size* values asked begin among the sweep's."""
         if not self.held[0]:
             return frozenset()
         # (its items' kinds and what of them is drawn, matched item by item: a value where an item draws other
@@ -500,7 +517,7 @@ class Measure:
             return None
         kept = set(range(len(built)))
         self.added = []
-        for i in range(size):
+        for i in range(at, at + size):
             p = plate_of(self.construction, Figure(protocol, replay.take(i), self.construction.check,
                                                    self.construction))
             if p.panels:
@@ -870,14 +887,37 @@ def _matched(built: Any, items: Any) -> dict[int, int]:
     >>> _matched(five, (Lettering((1, 1), "B"), tick(0), Lettering((0, 0), "0"), Lettering((0, 1), "at")))
     {0: 0, 1: 1, 2: 2, 5: 3}
     """
-    fb, fi = _form(built), _form(items)
-    sign = lambda its, fs: [(f, getattr(it, "text", "")) for f, it in zip(fs, its)]  # noqa: E731
+    (fb, sb), (fi, si) = _signs(built), _signs(items)
     out = {}
-    for op, i0, i1, j0, j1 in difflib.SequenceMatcher(None, sign(built, fb), sign(items, fi),
-                                                       autojunk=False).get_opcodes():
+    for op, i0, i1, j0, j1 in difflib.SequenceMatcher(None, sb, si, autojunk=False).get_opcodes():
         if op == "equal" or (op == "replace" and fb[i0:i1] == fi[j0:j1]):
             out.update(zip(range(i0, i1), range(j0, j1)))
     return out
+
+
+def _signs(items: Any) -> tuple[tuple, list[tuple]]:
+    """The forms of a plate's furniture *items* (:func:`_form`), and each item's form with its text: what
+    :func:`_matched` matches."""
+    forms = _form(items)
+    return forms, [(f, getattr(it, "text", "")) for f, it in zip(forms, items)]
+
+
+def _pattern(first: dict[tuple, int], items: Any) -> tuple:
+    """What :func:`_matched` of the built furniture and *items* depends on, as a key: the items' forms, and which
+    built item each equals in form and text (*first*: each of the built items' forms and texts -> where it first
+    stands among them; -1: none).  The matcher (difflib) pairs equal items only, so two values whose keys are
+    equal are matched alike: a scale's numbers written anew at each value ("0,53" where the built plate has
+    "0,52") are one key, not one a value.
+
+    >>> from construct.render.plate import Lettering
+    >>> first = {s: i for i, s in enumerate(_signs((Lettering((0, 0), "B"), Lettering((0, 1), "0,5")))[1])}
+    >>> _pattern(first, (Lettering((1, 1), "B"), Lettering((0, 1), "0,6")))[1]
+    (0, -1)
+    >>> _pattern(first, (Lettering((1, 1), "B"), Lettering((0, 1), "0,7")))[1]
+    (0, -1)
+    """
+    forms, signs = _signs(items)
+    return forms, tuple(first.get(s, -1) for s in signs)
 
 
 def areas_of(protocol: Any, scene: Any) -> list[list[str]]:

@@ -455,6 +455,15 @@ def _ahead(a: float, b: float, depth: int) -> list[float]:
     return [(a + m) / 2, (m + b) / 2] + _ahead(a, m, depth - 1) + _ahead(m, b, depth - 1)
 
 
+def _asked(first: list[float], todo: list[tuple[float, float]]) -> list[float]:
+    """The values a round of the refinement draws (log10 of the given): *first* (the starting values, drawn in the
+    first round), the midpoints of the cells *todo*, and the midpoints of their halves, drawn ahead: a cell that
+    must be split has its halves tested in the same round (a round draws every mark of the figure once, over all
+    its values: its cost is the marks', not the values'); what no cell needed is dropped."""
+    return (first + [(a + b) / 2 for a, b in todo]
+            + [q for a, b in todo for q in _ahead(a, b, _depth(len(todo)))])
+
+
 def _depth(cells: int) -> int:
     """How many levels ahead a round of *cells* cells draws (AHEAD, AHEAD_VALUES, AHEAD_MOST).
 
@@ -576,19 +585,25 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     share = (hi - lo) / math.log10(whole.high / whole.low)
     scan = np.unique(np.clip(10.0 ** np.append(np.linspace(lo, hi, max(3, round(FORM_SCAN * share))),
                                                math.log10(initial)), domain.low, domain.high))
-    # -- item by item: the items that come and go over them (a scale's ticks) shown where the nearer grid value's
-    # plate has them, the rest swept
-    kept = frozenset() if not measure.held[0] else measure.furniture_kept(
-        protocol, protocol.replay(construction.given_sweep(dict(figure.replay.givens), given, scan, protocol.params)),
-        len(scan))
-    measure.furniture_live = kept is not None
-    measure.hidden_items = kept or frozenset()
     us = list(np.linspace(lo, hi, start))
     values = lambda u: np.clip(10.0 ** np.asarray(u), domain.low, domain.high)  # noqa: E731
+    # -- item by item: the items that come and go over them (a scale's ticks) shown where the nearer grid value's
+    # plate has them, the rest swept; those values are replayed with the first round's (one replay of the protocol,
+    # not two: Tafel I's eight pieces replay 1,467 steps each), after its values, which alone are drawn
+    todo = list(zip(us[:-1], us[1:]))
+    both = None
+    if measure.held[0]:
+        asked = _asked(us, todo)
+        both = protocol.replay(construction.given_sweep(dict(figure.replay.givens), given,
+                                                        np.concatenate([values(asked), scan]), protocol.params))
+        kept = measure.furniture_kept(protocol, both, len(scan), at=len(asked))
+    else:
+        kept = frozenset()
+    measure.furniture_live = kept is not None
+    measure.hidden_items = kept or frozenset()
     # each value's numbers as one array, made once (every cell it bounds reads them)
     as_array = lambda f: (f[0], np.asarray(f[1], dtype=float), *f[2:])  # noqa: E731
     data: dict[float, tuple] = {}
-    todo = list(zip(us[:-1], us[1:]))
     first = us  # the starting values are drawn in the first round, with its midpoints (one sweep, not two)
     jumps: list[tuple[float, float]] = []
     snap: set[int] = set()  # keys drawn from the nearer grid value
@@ -609,15 +624,14 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
         return got[1]
 
     while todo or first:
-        mids = [(a + b) / 2 for a, b in todo]
-        # and the midpoints of their halves, drawn ahead: a cell that must be split has its halves tested in the
-        # same round (a round draws every mark of the figure once, over all its values: its cost is the marks',
-        # not the values'); what no cell needed is dropped
-        ahead = [q for a, b in todo for q in _ahead(a, b, _depth(len(todo)))]
-        drawn, _ = _frames(construction, figure, given, values(first + mids + ahead), measure, protocol)
+        asked = _asked(first, todo)
+        if both is not None:  # (the first round, replayed with the furniture's values: drawn after its own, unread)
+            drawn, both = measure.frames(protocol, both, both.size), None
+        else:
+            drawn, _ = _frames(construction, figure, given, values(asked), measure, protocol)
         # (each value's frame read as a cell needs it: what is drawn value by value is drawn then, not for the
         # midpoints ahead that no cell needs)
-        at = dict(zip(first + mids + ahead, range(len(drawn))))
+        at = dict(zip(asked, range(len(asked))))
         take = lambda u: as_array(drawn[at.pop(u)])  # noqa: E731
         data.update((u, take(u)) for u in first)
         first = []
@@ -715,8 +729,7 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
     picks = check_picks(grid, max(2, round(CHECK_VALUES * share)))
     live.checks = dict(zip(picks, _checks(construction, figure, given, grid[picks], protocol)))
     # and at the built value (the book's): a teacher who returns there sees its own checks
-    live.built_checks = [[c.name, c.measured, c.expected, c.error, c.tolerance, bool(c.ok)]
-                         for c in construction.checks(figure)]
+    live.built_checks = measure.built_checks(figure)
     return live
 
 

@@ -371,10 +371,10 @@ def live_data(live: LiveSweep) -> dict[str, Any]:
     """What the page needs: the given and its domain in the open; deflated: the grid (log10), the keys, which
     columns are drawn from the nearer grid value, the jumps (``meta_z``), the coordinates (``data``,
     :func:`encode`) and the checks (``checks_z``)."""
-    # a jump: the index of its cell's lower grid value
+    # a jump: the index of its cell's lower grid value (the keys as they are: JSON writes a tuple as a list)
     where = {float(v): i for i, v in enumerate(live.grid)}
     meta = {"grid": [round(math.log10(v), 12) for v in live.grid],
-            "keys": [list(k) for k in live.keys], "flags": live.nearest_columns().nonzero()[0].tolist(),
+            "keys": live.keys, "flags": live.nearest_columns().nonzero()[0].tolist(),
             "jumps": sorted(where[float(a)] for a, _ in live.jumps),
             **({"readings": live.reading_texts} if live.reading_texts else {}),
             **({"absent": live.furniture_absent} if live.furniture_absent else {})}

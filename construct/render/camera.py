@@ -41,7 +41,7 @@ import numpy as np
 from .scene import MarkKind, Scene, extreme_points
 from .svgdoc import fmt
 
-__all__ = ["step_views", "views_box", "shots", "step_focus", "step_focus_names", "step_shots", "framed_rows", "step_zooms", "step_details", "DETAIL_PX", "INSET_MAX", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "NON_SCALING", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
+__all__ = ["step_views", "views_box", "shots", "step_focus", "step_focus_names", "step_shots", "framed_rows", "step_zooms", "step_details", "read_tenth", "DETAIL_PX", "INSET_MAX", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "NON_SCALING", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
            "player_letter_scale"]
 
 #: The step player's figure box in a typical 1400 × 900 browser window (width, height in screen px, as its page
@@ -297,10 +297,10 @@ def step_details(scene: Scene, framing: Framing,
                 pts.append(px(*m.geom))
             elif m.kind.round and n in s.outputs:
                 c = px(*m.geom[:2])
-                r = abs(px(m.geom[0] + m.geom[2], m.geom[1])[0] - c[0])
+                r = round(abs(px(m.geom[0] + m.geom[2], m.geom[1])[0] - c[0]), 2)  # (as written)
                 if r < fine:
                     fine, at = r, c
-        pts = sorted(set((round(x, 1), round(y, 1)) for x, y in pts))
+        pts = sorted(set((read_tenth(x), read_tenth(y)) for x, y in pts))
         for i, a in enumerate(pts):
             for b in pts[i + 1:i + 8]:
                 d = math.hypot(a[0] - b[0], a[1] - b[1])
@@ -309,6 +309,19 @@ def step_details(scene: Scene, framing: Framing,
         need = DETAIL_PX / (fine * whole) if 0.0 < fine < math.inf else 0.0
         out.append((min(INSET_MAX, need), at if need > 1.0 else None))
     return out
+
+
+def read_tenth(v: float) -> float:
+    """A canvas coordinate read to 0.1 px as the player reads it off its element: written to hundredths
+    (:func:`~construct.render.svgdoc.fmt`), then to the nearest tenth, halves up (JavaScript's ``Math.round``).
+    The finest detail of a step is found by this one reading here and in the page (insets.inset_detail and the
+    player's ``detail``): read otherwise (Python's ``round`` takes halves to even), two points 3.25 px apart
+    were 3.3 here and 3.2 there, and the page moved a cluster's inset off the points it letters.
+
+    >>> read_tenth(268.25), round(268.25, 1), read_tenth(271.526)
+    (268.3, 268.2, 271.5)
+    """
+    return math.floor(10.0 * round(v, 2) + 0.5) / 10.0
 
 
 def step_zooms(scene: Scene, framing: Framing, px: Callable[[float, float], tuple[float, float]]) -> list[float]:

@@ -37,8 +37,8 @@ from .svgdoc import Element, Writer, fmt, with_attribute
 from .viewport import Viewport
 
 __all__ = ["EndView", "END_MARGIN_PX", "lay_out_end", "end_fixed", "end_lettering", "end_lettering_at",
-           "end_furniture", "end_sheet", "own_strokes", "wrapped", "NumbersFactory", "furniture_numbers", "lettering_box",
-           "end_letter_boxes"]
+           "end_furniture", "fixed_elements", "end_sheet", "own_strokes", "wrapped", "NumbersFactory",
+           "furniture_numbers", "lettering_box", "end_letter_boxes"]
 
 #: The margin round the end state's drawing on its sheet (screen px at the end view).
 END_MARGIN_PX = 14.0
@@ -138,17 +138,34 @@ def end_lettering(scene: Scene, vp: Viewport, style: Style,
 def lettering_box(elem: Any, size: float, style: Style) -> tuple[float, float, float, float] | None:
     """The box (canvas px) of a furniture lettering element made at *size* (not turned; its halo, a copy
     beneath it, and any other element: None)."""
-    xml = elem.get_xml()
-    if xml.tag.rsplit("}", 1)[-1] != "text" or "halo" in xml.get("class", "").split():
+    tag, get, text = _written(elem)
+    if tag != "text" or "halo" in get("class", "").split():
         return None
-    got = re.search(r"font-size:\s*([\d.]+)px", xml.get("style", ""))
+    got = re.search(r"font-size:\s*([\d.]+)px", get("style", ""))
     size = float(got.group(1)) if got else size
-    text = xml.text or ""
+    text = text or ""
     # (a live sweep's raw numbers, NumbersFactory's, may be written as one-element arrays: "[796.56]")
-    x, y = (float(_NUMBER.search(xml.get(a)).group()) for a in ("x", "y"))
+    x, y = (float(_NUMBER.search(get(a)).group()) for a in ("x", "y"))
     w = text_width(text, size, style.label_font, style.label_italic)
-    x += {"start": w / 2, "end": -w / 2}.get(xml.get("text-anchor", "middle"), 0.0)
+    x += {"start": w / 2, "end": -w / 2}.get(get("text-anchor", "middle"), 0.0)
     return label_box(x, y, text, size, style.label_font, style.label_italic)
+
+
+def _written(elem: Any) -> tuple[str, Any, str | None]:
+    """The tag, a reader of the attributes (``get(name, default=None)``) and the text of *elem* as its ElementTree
+    element (``get_xml()``) has them: a plain :class:`~construct.render.svgdoc.Element` read as that would write
+    it (each attribute ``str()``-ed, the empty and None ones left out) without making it -- the live sweep boxes
+    the plate's lettering at every value of a given (Tafel 2: 14,000 elements)."""
+    if isinstance(elem, Element) and type(elem).get_xml is Element.get_xml:
+        attribs = elem.attribs
+
+        def get(name: str, default: Any = None) -> Any:
+            v = attribs.get(name)
+            return (str(v) or default) if v is not None else default
+
+        return elem.elementname, get, None if elem.text is None else str(elem.text)
+    xml = elem.get_xml()
+    return xml.tag.rsplit("}", 1)[-1], xml.get, xml.text
 
 
 def end_letter_boxes(scene: Scene, style: Style, vp: Viewport, placing: Placing, end: EndView,
@@ -254,7 +271,7 @@ def _result_strokes(scene: Any, vp: Any) -> list[tuple[float, float, float, floa
 
 def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, end: EndView, placing: Placing,
                      factory: Any, keep: dict[str, tuple[float, float, float]] | None = None,
-                     ) -> dict[str, tuple[float, float, float]]:
+                     fixed: list[list[Any]] | None = None) -> dict[str, tuple[float, float, float]]:
     """Where the plate's lettering of *sheet* (anything with ``end_furniture``: the plate at another value of a live
     given, in the built plate's form) stands about its places at that value, as :func:`lay_out_end` places it
     (:meth:`~construct.render.placing.Placing.end_lettering_at`: among that value's end-state *marks* on *vp*):
@@ -263,9 +280,10 @@ def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, en
     over the sweep (its elements, by which the page knows them).  *keep*: spots of this form (a neighbouring
     value's), kept as they are where they crowd there no more than those placed anew
     (:meth:`~construct.render.placing.Placing.end_crowd`: a letter that has no room there crowds either way).
+    *fixed*: the elements of the rest of the furniture (:func:`fixed_elements`), if the caller made them.
     """
-    texts = [b for e in furniture_elements(end_fixed(sheet), vp.px, vp.scale, factory, size=end.size)
-             if (b := lettering_box(e, end.size, style)) is not None]
+    fixed = fixed_elements(sheet, vp, end, factory) if fixed is None else fixed
+    texts = [b for els in fixed for e in els if (b := lettering_box(e, end.size, style)) is not None]
     lettering = end_lettering(sheet, vp, style, end.size)
     crowd = placing.end_crowd(vp, end.letter, marks, texts, lettering, keep) if keep is not None else set()
     if keep is not None and not crowd:
@@ -279,25 +297,37 @@ def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, en
     return got
 
 
+def fixed_elements(sheet: Any, vp: Any, end: EndView, factory: Any) -> list[list[Any]]:
+    """The elements of the end state's furniture of *sheet* that stands where the plate sets it (:func:`end_fixed`:
+    all but its lettering), item by item, made by *factory* on *vp* at the end state's letter size: what
+    :func:`end_lettering_at` boxes the lettering among and :func:`end_furniture` draws (a live sweep makes them
+    once a value for both)."""
+    return [furniture_elements([it], vp.px, vp.scale, factory, size=end.size) for it in end_fixed(sheet)]
+
+
 def end_furniture(scene: Scene, style: Style, vp: Viewport, end: EndView, placing: Placing, factory: Any,
                   owners: dict[str, int] | None = None,
-                  spots: dict[str, tuple[float, float, float]] | None = None) -> Any:
+                  spots: dict[str, tuple[float, float, float]] | None = None,
+                  fixed: list[list[Any]] | None = None) -> Any:
     """The plate's furniture in the end state (``<g class="fo end">``), its letters at the size of the end
     state's, its lettering where the end state's placing set it (upright; tied to its place by a leader when
     set off).  Each of its elements has an id in the order drawn (``fin-s<k>``: the line of a stroke the plate
     adds, which a broken axis breaks; ``fin-f<k>`` the rest): the live page moves them with the given
     (:func:`furniture_numbers`).  *owners*, if given, gets each element's item: {its id: the item's index in
     ``scene.end_furniture``}.  *spots*: where the lettering stands about its places (``placing.end_spots`` without;
-    another value of a live given's: :func:`end_lettering_at`)."""
+    another value of a live given's: :func:`end_lettering_at`).  *fixed*: the elements of the furniture but its
+    lettering (:func:`fixed_elements`, made by *factory* on *vp*), if the caller made them (they are given ids)."""
     f = factory
     spots = placing.end_spots if spots is None else spots
     g = f.g(class_="fo end")
     owners = {} if owners is None else owners
     k = 0
+    made = iter(fixed) if fixed is not None else None
     for i, it in enumerate(scene.end_furniture):
         if isinstance(it, Lettering):  # (below: where the placing set it)
             continue
-        for j, e in enumerate(furniture_elements([it], vp.px, vp.scale, f, size=end.size)):
+        for j, e in enumerate(next(made) if made is not None else furniture_elements([it], vp.px, vp.scale, f,
+                                                                                      size=end.size)):
             e["id"] = f"fin-{'s' if j == 0 and isinstance(it, Stroke) else 'f'}{k}"
             owners[e["id"]] = i
             if _at_letter_size(it, j):

@@ -20,10 +20,10 @@ from __future__ import annotations
 import math
 from typing import Callable, Sequence
 
-from .camera import PLAYER_FIGURE_PX, Framing, View, step_details, step_focus, zoom_of
+from .camera import PLAYER_FIGURE_PX, Framing, View, read_tenth, step_details, step_focus, zoom_of
 from .scene import MarkKind, Scene
 
-__all__ = ["step_insets", "inset_detail", "inset_details", "points_at", "ring_round", "SLIVER_PX", "SLIVER_RATIO", "INSET_PX",
+__all__ = ["step_insets", "inset_detail", "inset_details", "points_at", "ring_round", "SLIVER_PX", "SLIVER_RATIO", "INSET_PX", "CLUSTER_ABOVE",
            "INSET_DETAIL_PX"]
 
 
@@ -35,6 +35,10 @@ SLIVER_RATIO = 5.0
 #: The inset's window on the screen (px) and how thick the sliver is made there at least.
 INSET_PX = (300.0, 210.0)
 INSET_DETAIL_PX = 28.0
+#: A step's finest detail is a cluster magnified in an inset where it must be seen more than this many times as
+#: magnified as its view magnifies the whole (:func:`step_insets`; the player judges it so too, as a live given moves
+#: the points).
+CLUSTER_ABOVE = 1.25
 
 
 def step_insets(scene: Scene, views: Sequence[View], full: View,
@@ -55,7 +59,7 @@ def step_insets(scene: Scene, views: Sequence[View], full: View,
     for s, f, v, (need, at) in zip(scene.steps, focus, views, details):
         box = None
         z = zoom_of(v, full)
-        if at is not None and s.group and need > 1.25 * z:
+        if at is not None and s.group and need > CLUSTER_ABOVE * z:
             # a cluster the view (widened for its letters, or its shot's) shows smaller than it must be seen
             q = min(PLAYER_FIGURE_PX[0] / v[2], PLAYER_FIGURE_PX[1] / v[3])
             m = max(2.0, need / z)
@@ -80,7 +84,7 @@ def step_insets(scene: Scene, views: Sequence[View], full: View,
 
 
 def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]], scale: float, k: int,
-                 box: Sequence[float], *, at_point: "dict[tuple[float, ...], str] | None" = None
+                 box: Sequence[float] | None, *, at_point: "dict[tuple[float, ...], str] | None" = None
                  ) -> tuple[list[str], list[list[str]], float] | None:
     """Where step *k*'s inset *box* (canvas px: x y w h) magnifies a cluster: the finest detail of the step
     (:func:`~construct.render.camera.step_details`: the two closest of its points, read to 0.1 px, or the smallest
@@ -88,7 +92,9 @@ def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]]
     proportion.  Then the ids of the points it compares, of each circle's centre point and circle ([centre,
     circle]) and the detail's size (canvas px): a page that moves the points (a live given) finds the detail
     among them anew and carries the box with it (the player's ``detail``).  None for any other inset (a sliver's,
-    centred on the step's own points), or where no point stands at a circle's centre.
+    centred on the step's own points), or where no point stands at a circle's centre.  *box* None: a step shown
+    without an inset here, whose detail a page whose points move (a live given) judges anew (its size is then
+    the detail's size, as it is found here).
 
     *px*: the drawing's map to canvas pixels; *scale*: its canvas pixels per unit; *at_point*: the scene's points'
     ids by where they stand (:func:`points_at`), if the caller asks of many steps.
@@ -109,16 +115,17 @@ def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]]
         if centre is None:
             return None  # (the page could not find it anew)
         rounds.append([centre, m.id])
-        if m.geom[2] * scale < fine:
-            fine, at = m.geom[2] * scale, c
-    pts = [(round(px(*m.geom)[0], 1), round(px(*m.geom)[1], 1)) for m in near]
+        if round(m.geom[2] * scale, 2) < fine:  # (its radius as written: the page reads it)
+            fine, at = round(m.geom[2] * scale, 2), c
+    pts = [(read_tenth(px(*m.geom)[0]), read_tenth(px(*m.geom)[1])) for m in near]
     for i, a in enumerate(pts):
         for b in pts[i + 1:]:
             d = math.hypot(a[0] - b[0], a[1] - b[1])
             if 0.0 < d < fine:
                 fine, at = d, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
     # (the box rounded to 0.01 px)
-    if at is None or abs(at[0] - box[0] - box[2] / 2) > 0.02 or abs(at[1] - box[1] - box[3] / 2) > 0.02:
+    if at is None or box is not None and (abs(at[0] - box[0] - box[2] / 2) > 0.02
+                                          or abs(at[1] - box[1] - box[3] / 2) > 0.02):
         return None
     return [m.id for m in near], rounds, round(fine, 4)
 

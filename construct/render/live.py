@@ -729,7 +729,7 @@ LIVE_SCRIPT = r"""
     // the inset (the step's small work magnified beside the view): a sliver's box carried with its points
     // (live/measure.py; a cluster's the player finds about its finest detail), drawn after the marks (its points
     // are read off their circles)
-    insetDue = !!(st && st.z);
+    insetDue = !!(st && (st.z || st.zd));
     if (insetDue && S.insetAt[k - 1] !== undefined) for (var zi = 0; zi < 4; zi++) st.z[zi] = round2(num(S.insetAt[k - 1] + zi));
     // the player moves its view there itself: at once while the given is dragged, smoothly to a new step
     if (player.jump && atOnce) { player.jump(!!drag); return; }

@@ -33,9 +33,9 @@ import re
 from typing import Any, Mapping, Sequence
 
 from .animate import STEP_SECONDS, group_css
-from .camera import PLAYER_FIGURE_PX
+from .camera import DETAIL_PX, INSET_MAX, PLAYER_FIGURE_PX, Framing, step_details, zoom_of
 from .captions import group_caption
-from .insets import inset_detail, points_at
+from .insets import CLUSTER_ABOVE, INSET_PX, inset_detail, points_at
 from .marks import MarkKind
 from .styles import PLAIN, Style
 from .svg import Drawing
@@ -104,7 +104,10 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
     furniture = d.furniture()  # the broken axis's marks (and a plate's furniture)
     if furniture is not None:
         dwg.add(furniture)
-    insets = any(z is not None for z in d.insets)
+    # the steps whose finest detail a page that moves the points (a live given) judges anew, as a fresh build would
+    # (:func:`_clustering`), an inset shown or not
+    clustering = _clustering(d)
+    insets = any(z is not None for z in d.insets) or any(clustering)
     if insets:  # where the inset magnifies (the player moves it)
         dwg.add(f.rect(insert=("0", "0"), size=("0", "0"), class_="insetbox", id="insetbox", visibility="hidden"))
     svg = d.doc.markup(dwg)
@@ -127,12 +130,21 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         inset = d.insets[s.index - 1]
         if inset is not None:  # a sliver or a cluster: its place magnified beside the view, its points lettered
             st["z"] = list(inset)
-            st["zp"] = _inset_points(d, s.index, inset, points)
             if at_point is None:
                 at_point = points_at(scene, d.vp.px)
             detail = inset_detail(scene, d.vp.px, d.vp.scale, s.index, inset, at_point=at_point)
+            # (a cluster's: every point of the step, since the page finds its finest detail anew where the points
+            # move -- among other points, at another value -- and draws those the box takes in)
+            st["zp"] = _inset_points(d, s.index, None if detail is not None else inset, points)
             if detail is not None:  # a cluster's: the page finds its finest detail anew where the points move
                 st["zd"] = detail
+        elif clustering[s.index - 1]:  # none here: the page asks anew where the points move
+            if at_point is None:
+                at_point = points_at(scene, d.vp.px)
+            detail = inset_detail(scene, d.vp.px, d.vp.scale, s.index, None, at_point=at_point)
+            if detail is not None:
+                st["zd"] = detail
+                st["zp"] = _inset_points(d, s.index, None, points)
         steps.append(st)
     from .camera import ZOOM_LEVELS
 
@@ -168,6 +180,7 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         ("{{PAGE_BG}}", "#f7f3ea" if style.name == "historical" else "#f4f5f7"),
         ("{{SPEEDS}}", _speed_options(data["dt"] / 1000)),
         ("{{ASPECT}}", "/".join(fmt(x) for x in PLAYER_FIGURE_PX)),
+        ("{{DETAIL}}", " ".join(fmt(x) for x in (DETAIL_PX, INSET_MAX, *INSET_PX, CLUSTER_ABOVE))),
     ))
     # One pass, so that text from the protocol is never read as a placeholder.
     return re.sub(r"\{\{[A-Z_]+\}\}", lambda m: values[m.group(0)], _TEMPLATE)
@@ -177,31 +190,48 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
 SPEEDS = (4.0, 3.0, 2.0, 1.5, 1.0, 0.5, 0.25, 0.1)
 
 
+#: A step shown without an inset whose finest detail needs this much of the magnification that makes it a cluster
+#: (:func:`~construct.render.insets.step_insets`: :data:`~construct.render.insets.CLUSTER_ABOVE`) is judged anew
+#: by the page as its points move (:func:`_clustering`): a live given that draws two points nearer (Baumann's T2 at
+#: κ = 2, 4.4 times magnified, not 1.26 as at κ = 8) gives it an inset where a fresh build gives one.
+CLUSTER_NEAR = 0.25
+
+
+def _clustering(d: Drawing) -> list[bool]:
+    """Per step of *d*, whether the page judges its finest detail anew (:data:`CLUSTER_NEAR`): a step of a group,
+    shown without an inset, whose detail needs more than that share of the magnification that makes it a cluster."""
+    if not d.style.camera:
+        return [False] * len(d.scene.steps)
+    details = step_details(d.scene, Framing(d.full_view), d.vp.px)
+    return [z is None and bool(s.group) and need > CLUSTER_NEAR * CLUSTER_ABOVE * zoom_of(v, d.full_view)
+            for s, z, v, (need, _) in zip(d.scene.steps, d.insets, d.views, details)]
+
+
 def _speed_options(default: float) -> str:
     """The <option>s of the tempo control, *default* selected."""
     return "".join(f'<option value="{v:g}"{" selected" if v == default else ""}>{v:g} s</option>' for v in SPEEDS)
 
 
-def inset_marks(d: Drawing, k: int, box: Sequence[float], points: dict[str, Any] | None = None) -> list[tuple[Any, bool]]:
+def inset_marks(d: Drawing, k: int, box: Sequence[float] | None,
+                points: dict[str, Any] | None = None) -> list[tuple[Any, bool]]:
     """The point marks of step *k* and of what it works on (its inputs, the points its caption names) inside the
-    inset *box* (canvas px: x y w h) at the drawing's value, each with whether it is the step's own (*points*:
-    the scene's point marks by name, if the caller has them)."""
+    inset *box* (canvas px: x y w h; None: wherever they stand) at the drawing's value, each with whether it is
+    the step's own (*points*: the scene's point marks by name, if the caller has them)."""
     s = d.scene.steps[k - 1]
     if points is None:
         points = {m.name: m for m in d.scene.marks if m.kind is MarkKind.POINT}
-    x0, y0, w, h = box
     out = []
     for name in dict.fromkeys((*s.outputs, *s.inputs, *sorted(d.scene.named(k)))):
         m = points.get(name)
         if m is None or m.step > k:
             continue
         x, y = d.vp.px(*m.geom)
-        if x0 <= x <= x0 + w and y0 <= y <= y0 + h:
+        if box is None or box[0] <= x <= box[0] + box[2] and box[1] <= y <= box[1] + box[3]:
             out.append((m, name in s.outputs))
     return out
 
 
-def _inset_points(d: Drawing, k: int, box: Sequence[float], points: dict[str, Any]) -> list[list]:
+def _inset_points(d: Drawing, k: int, box: Sequence[float] | None, points: dict[str, Any]) -> list[list]:
     """The points the inset *box* of step *k* draws and letters (:func:`inset_marks`): [the id of the point's
     circle, its letter(, 1 for the step's own)] (letter '' for a point the figure does not letter).  The page
     draws each where its circle stands -- at a live given's value, too.  The view beside it shows them a pixel
@@ -338,7 +368,12 @@ li a.later{color:#bbb}
   var now = svg.getAttribute("viewBox").split(" ").map(Number), anim = null, ringAt = null, level = 0;
   // the box the view is fitted into: the figure's content box (its border aside: with it, a view of the window's
   // shape would be fitted by the other side, and a view of exactly a zoom level's magnification fall below it)
-  function boxOf() { return {width: svg.clientWidth, height: svg.clientHeight}; }
+  // (kept, not read from the element each time: a read in a drag's frame, after the given's slider moved, laid the
+  // page out before anything was written, a layout of its own each frame; a ResizeObserver, called after the
+  // frame's layout, keeps it, and a resize of the window reads it anew)
+  var boxNow = null;
+  function boxOf() { return boxNow || (boxNow = {width: svg.clientWidth, height: svg.clientHeight}); }
+  if (window.ResizeObserver) { new ResizeObserver(function () { boxNow = null; boxOf(); }).observe(svg); }
   function ratio(v, r) {  // canvas pixels per screen pixel in view *v* (the view is fitted into the element)
     r = r || boxOf();
     if (!r.width || !r.height) { return 1; }
@@ -416,12 +451,9 @@ li a.later{color:#bbb}
       if (furRule) { furScale = (ls / data.els).toFixed(4); furRule.style.setProperty("scale", furScale); pin(); }
     }
     var ring = document.getElementById("ring");
-    if (ring) {
-      ring.setAttribute("visibility", ringAt ? "visible" : "hidden");
-      if (ringAt) {
-        ring.setAttribute("cx", ringAt[0]); ring.setAttribute("cy", ringAt[1]);
-        ring.setAttribute("r", Math.max(ringAt[2], 9 * q).toFixed(2));
-      }
+    if (ring) {  // (its attributes written only when they change: each write restyles and repaints it)
+      attr(ring, "visibility", ringAt ? "visible" : "hidden");
+      if (ringAt) { attr(ring, "cx", String(ringAt[0])); attr(ring, "cy", String(ringAt[1])); attr(ring, "r", Math.max(ringAt[2], 9 * q).toFixed(2)); }
     }
   }
   // The end state's turned texts (F/f along its dimension) and arrowheads are scaled with its upright lettering, but
@@ -456,8 +488,9 @@ li a.later{color:#bbb}
     }
     anim = requestAnimationFrame(frame);
   }
-  window.addEventListener("resize", function () { put(now); });
+  window.addEventListener("resize", function () { boxNow = null; put(now); });
   function text(id, s) { document.getElementById(id).textContent = s; }
+  function attr(e, name, v) { if (e.getAttribute(name) !== v) { e.setAttribute(name, v); } }
   function zoomLevel(view, r, drag) {  // the zoom level of *view*: its letters (placed for it) and their scale
     // how many times the window shows it larger than the whole figure (a view of the window's shape in a
     // tall figure is magnified more than its width says)
@@ -507,8 +540,11 @@ li a.later{color:#bbb}
   // finest detail: detail), its points where their circles stand (a live given moves them, and a sliver's box:
   // render/live.py), lettered.  Not shown where it would magnify no more than the view *view* shows anyway (a
   // live given can grow a sliver's box so).
-  var FIG = "{{ASPECT}}".split("/").map(Number);
-  function detail(st) {  // a cluster's box about its finest detail where the points stand now (insets.inset_detail)
+  var FIG = "{{ASPECT}}".split("/").map(Number), DETAIL = "{{DETAIL}}".split(" ").map(Number);
+  // a cluster's box about its finest detail where the points stand now, in step view *v* of the whole *full*, or
+  // null where a fresh build shows none (insets.step_insets and inset_detail: its detail, read as written to 0.1 px,
+  // shown DETAIL[0] px large, more than DETAIL[4] times as magnified as the view magnifies the whole)
+  function detail(st, v) {
     var zd = st.zd, fine = Infinity, at = null, pts = [], i, j;
     zd[1].forEach(function (cr) {  // a circle or arc the step strikes: its radius
       var c = find(cr[0]), m = find(cr[1]);
@@ -526,16 +562,23 @@ li a.later{color:#bbb}
         if (d > 0 && d < fine) { fine = d; at = [(pts[i][0] + pts[j][0]) / 2, (pts[i][1] + pts[j][1]) / 2]; }
       }
     }
-    var z0 = st.z0 || (st.z0 = st.z.slice());
-    if (!at) { return z0; }
-    var w = z0[2] * fine / zd[2], h = z0[3] * fine / zd[2], r2 = function (x) { return Math.round(100 * x) / 100; };
+    if (!at) { return null; }
+    // (camera.step_details: the magnification its detail needs; camera.zoom_of: the view's)
+    var need = Math.min(DETAIL[1], DETAIL[0] * Math.max(full[2], full[3] * FIG[0] / FIG[1]) / (fine * FIG[0]));
+    var zv = Math.max(full[2] / FIG[0], full[3] / FIG[1]) / Math.max(v[2] / FIG[0], v[3] / FIG[1], 1e-12);
+    if (!(need > 1 && need > DETAIL[4] * zv)) { return null; }
+    // (the box: the built one in proportion to the detail -- the view here is framed anew and may stand apart
+    // from a fresh build's --, else as a fresh build sizes it in this view)
+    var q = Math.min(FIG[0] / v[2], FIG[1] / v[3]) * Math.max(2, need / zv), r2 = function (x) { return Math.round(100 * x) / 100; };
+    var z0 = st.z0 || (st.z && (st.z0 = st.z.slice()));
+    var w = z0 ? z0[2] * fine / zd[2] : DETAIL[2] / q, h = z0 ? z0[3] * fine / zd[2] : DETAIL[3] / q;
     return [r2(at[0] - w / 2), r2(at[1] - h / 2), r2(w), r2(h)];
   }
   function drawInset(view) {
     var inset = document.getElementById("inset"), ibox = document.getElementById("insetbox");
     if (!inset) { return; }
     var st = k > 0 ? data.steps[k - 1] : null, z = st && zoom.checked && k < n ? st.z : null;
-    if (z && st.zd) { z = st.z = detail(st); }
+    if (st && st.zd && zoom.checked && k < n) { z = detail(st, view); }
     if (z && Math.min(300 / z[2], 210 / z[3]) <= Math.min(FIG[0] / view[2], FIG[1] / view[3])) { z = null; }
     inset.style.display = z ? "block" : "none";
     ibox.setAttribute("visibility", z ? "visible" : "hidden");

@@ -491,16 +491,19 @@ def build_scene(figure: Any, *, title: tuple[str, str] | None = None, plate: boo
                 if hasattr(obj, "rings"):  # an Area: one mark per piece, each hatched
                     # a look "signed": the pieces under the lower line hatched across those over it (+ and −)
                     signed = "signed" in common["look"].split()
-                    for j, (sign, ring) in enumerate(obj.pieces):
+                    # (its vertices as pairs of floats: an area of coordinates makes no Point for each)
+                    rings = obj.coordinate_pieces() if hasattr(obj, "coordinate_pieces") else \
+                        tuple((sign, tuple([(p[0], p[1]) for p in ring])) for sign, ring in obj.pieces)
+                    for j, (sign, ring) in enumerate(rings):
                         hatch = obj.hatch_deg
                         if signed and sign < 0:
                             hatch = (90.0 if hatch is None else hatch) - 45.0
                         marks.append(Mark(mid if j == 0 else f"{mid}-{j}", kind=MarkKind.AREA,
-                                          geom=tuple((p[0], p[1]) for p in ring), hatch=hatch, **common))
+                                          geom=ring, hatch=hatch, **common))
                 elif hasattr(obj, "curve_points"):
                     # a polyline is drawn as it is measured (y_at, length): straight from point to point
                     straight = getattr(obj, "kind", "") == "polyline"
-                    pts = tuple((p[0], p[1]) for p in obj.curve_points())
+                    pts = tuple([(p.x, p.y) for p in obj.curve_points()])  # (Points: read as fields)
                     if straight and label:
                         # lettered at a point of its own on it, placed once the sheet is laid out (below)
                         marks.append(Mark(mid, kind=MarkKind.CURVE, geom=pts, straight=True, **{**common, "label": None}))

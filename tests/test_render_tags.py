@@ -59,3 +59,21 @@ def test_a_line_touching_the_grown_box_crosses_it():
     touching = np.array([[0.0, 9.5, 30.0, 9.5]])  # along the box's edge grown by 0.5
     assert spots_clear(box, np.zeros((0, 2)), touching, np.zeros((0, 4)), 1.0, 0.5).tolist() == [False]
     assert spots_clear(box, np.zeros((0, 2)), touching + [0, -0.01, 0, -0.01], np.zeros((0, 4)), 1.0, 0.5).tolist() == [True]
+
+
+def test_the_tags_spots_are_the_same_asked_a_few_pairs_or_all_at_once(crank6, monkeypatch):
+    """place_tags asks the (tag, obstacle) pairs of a level a few tags at a time (_PAIRS_AT_ONCE); a tag per chunk
+    and all tags in one give the same spots."""
+    import construct.render.tags as tags
+    from construct.render.output import scene_for
+    from construct.render.styles import STYLES
+    from construct.render.svg import Drawing
+
+    c, fig = crank6
+    st = STYLES["teaching"]
+    got = []
+    for n in (1, 10**9):
+        monkeypatch.setattr(tags, "_PAIRS_AT_ONCE", n)
+        got.append(Drawing(scene_for(c, fig, ending=st.camera), st).placing.tag_spots)
+    assert got[0]  # tags were placed
+    assert got[0] == got[1]

@@ -22,6 +22,7 @@ only the scene's steps, marks, parameters and group titles.
 
 from __future__ import annotations
 
+import bisect
 import functools
 import math
 import re
@@ -199,19 +200,15 @@ class StepInputs:
         group = self.group_captions[s.group].rsplit(" › ", 1)[-1] if s.group else ""
         for token in set(_LETTERED.findall(s.caption.de)) | set(_LETTERED.findall(s.caption.en)) | set(
                 _LETTERED.findall(group)):
-            best = None
-            for step, name, grp, lettered in self._by_letter.get(token, ()):
-                if step > k:
-                    break
-                shared = 0
-                while shared < min(len(grp), len(s.group)) and grp[shared] == s.group[shared]:
-                    shared += 1
-                # a lone letter (the F of a trisection) is its own group's; a numbered tag may be another's
-                if (lettered or shared or len(token) > 1) and (best is None or shared >= best[0]):
-                    best = (shared, name)
-            if best is not None:
-                out.add(best[1])
+            name = self._letter_index.latest(token, k, s.group)
+            if name is not None:
+                out.add(name)
         return out
+
+    @functools.cached_property
+    def _letter_index(self) -> "_LetterIndex":
+        """:meth:`_by_letter` filed by group (:class:`_LetterIndex`)."""
+        return _LetterIndex(self._by_letter)
 
     @functools.cached_property
     def _by_letter(self) -> dict[str, list[tuple[int, str, tuple[str, ...], bool]]]:
@@ -242,3 +239,52 @@ class StepInputs:
         [True, True, True, False, False, False]
         """
         return FIGURE_LETTER.fullmatch(self.display_name(name)) is not None
+
+
+class _LetterIndex:
+    """The points a letter or tag names, filed by each beginning of their group's path, so that the point a
+    caption of step k means (:meth:`StepInputs._named_points`) is found by bisection, not by a walk over every
+    point of that letter made before step k (a walk that grew with the square of the figure: 253 F's in the
+    compound engine).
+
+    The rule: of the points of the letter made up to step k (the points in step order, up to the first made
+    after k), those sharing the most leading groups with step k's group, the latest of them; a point sharing
+    none counts only if it is lettered or the letter is a numbered tag.
+    """
+
+    __slots__ = ("_steps", "_prefix", "_lettered", "_names")
+
+    def __init__(self, by_letter: dict[str, list[tuple[int, str, tuple[str, ...], bool]]]) -> None:
+        self._steps: dict[str, list[int]] = {}  # per letter, the highest step among its first points (for the cut)
+        self._prefix: dict[tuple[str, tuple[str, ...]], list[int]] = {}  # (letter, leading groups): positions
+        self._lettered: dict[str, list[int]] = {}  # per letter, the positions of the lettered points
+        self._names: dict[str, list[str]] = {}
+        for token, points in by_letter.items():
+            top = -math.inf
+            steps = self._steps[token] = []
+            for i, (step, name, grp, lettered) in enumerate(points):
+                top = max(top, step)
+                steps.append(top)
+                for d in range(1, len(grp) + 1):
+                    self._prefix.setdefault((token, grp[:d]), []).append(i)
+                if lettered:
+                    self._lettered.setdefault(token, []).append(i)
+            self._names[token] = [p[1] for p in points]
+
+    def latest(self, token: str, k: int, group: tuple[str, ...]) -> str | None:
+        """The point *token* means in a caption of step *k* in *group* (None: none made by then)."""
+        steps = self._steps.get(token)
+        if steps is None:
+            return None
+        cut = bisect.bisect_right(steps, k)  # the points made up to step k, before the first made after it
+        for d in range(len(group), 0, -1):
+            at = self._prefix.get((token, group[:d]))
+            if at:
+                i = bisect.bisect_left(at, cut) - 1
+                if i >= 0:
+                    return self._names[token][at[i]]
+        if len(token) > 1:
+            return self._names[token][cut - 1] if cut else None
+        at = self._lettered.get(token, ())
+        i = bisect.bisect_left(at, cut) - 1
+        return self._names[token][at[i]] if i >= 0 else None

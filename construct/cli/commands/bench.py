@@ -88,17 +88,19 @@ def run(args) -> int:
 
 
 def met(lines, *, show: bool = False) -> int:
-    """Exit 0 when every target is met, 1 when a verdict line says MISSED (as a failed check exits 1); with
-    *show* the lines are printed.
+    """Exit 0 when every target is met, 1 when a verdict line says MISSED or a live drag's line SLOW (as a failed
+    check exits 1); with *show* the lines are printed.
 
     >>> met(["target a -> met", "target b -> MISSED"]), met(["target a -> met"])
     (1, 0)
+    >>> met(["ok: p.html at last, drag domain: median 9.0 ms", "SLOW: q.html at last, drag domain: median 18.0 ms"])
+    1
     """
     lines = list(lines)
     if show:
         for line in lines:
             print(line)
-    return 1 if any(line.rstrip().endswith("MISSED") for line in lines) else 0
+    return 1 if any(line.rstrip().endswith("MISSED") or line.startswith("SLOW:") for line in lines) else 0
 
 
 def _live(args) -> int:

@@ -207,6 +207,25 @@ def test_the_sweep_measures_what_the_player_page_draws(name, params):
         assert all(texts.get(i) == t for i, t in extra["texts"].items())
 
 
+@pytest.mark.parametrize("name, params", [("crank", {"parts": 6}), ("piston-force", {})])
+def test_a_pieces_keys_alone_are_the_keys_of_its_measure(name, params):
+    """Measure._form asks a piece's scene for its keys only (the views, rings, insets and breaks not framed):
+    they are the keys the whole measure of that scene has, in its order (crank: views and rings; piston-force:
+    breaks, a furniture, the live data's costliest pieces)."""
+    from construct.live import Measure
+    from construct.render.output import scene_for
+
+    c = get(name)
+    built = c.figure(**params)
+    measure = Measure(c, built, STYLES["teaching"])
+    assert measure.view_of and measure.rings
+    scene = scene_for(c, built, ending=STYLES["teaching"].camera)
+    whole = measure._measured(scene)
+    alone = measure._measured(scene, keys_only=True)
+    assert alone[0] == whole[0] and alone[2] == whole[2] and alone[3] == whole[3]
+    assert whole[0][-2:] == [("#break", "0", "# #"), ("#break", "1", "# #")]
+
+
 def test_a_figure_with_hatched_areas_is_measured_at_once_as_value_by_value(monkeypatch):
     """The page draws areas (hatching and all) from the curves that bound them, so a figure with hatched areas
     (Baumann's diagram, in a style that hatches) is measured over the whole sweep at once, not a scene per value

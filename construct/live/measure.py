@@ -573,7 +573,7 @@ class Measure:
             first = Figure(protocol, replay.take(0, whole=True), self.construction.check, self.construction)
             # (with its end state where the player shows one: __call__'s scene)
             scene = scene_for(self.construction, first, ending=self.style.camera)
-            keys = self._measured(scene)[0]
+            keys = self._measured(scene, keys_only=True)[0]
             self._forms[id(protocol)] = (protocol, scene, self._runs(keys), keys)
         return self._forms[id(protocol)][1:]
 
@@ -787,9 +787,19 @@ class Measure:
         # (with its end state where the player shows one: its own marks, the plate's, are drawn as the rest)
         return self._measured(scene_for(self.construction, figure, ending=self.style.camera), keep)
 
-    def _measured(self, scene: Any, keep: str | None = None) -> tuple[list[tuple[str, str, str]], list[float], tuple,
-                                                                      dict[str, str]]:
-        """:meth:`__call__` of the figure whose scene is *scene* (*keep*: as :meth:`frames` has it)."""
+    def _view_keys(self) -> list[tuple[str, str, str]]:
+        """The keys :meth:`__call__` ends with, whatever the figure: each step's view, ring, inset and the breaks."""
+        return ([("#zoom", str(i), "# # # #") for i in range(len(self.view_of))]
+                + [("#ring", str(i), "# #") for i, _ in self.rings]
+                + [("#inset", str(i), "# # # #") for i, _, _ in self.insets]
+                + [("#break", str(axis), "# #") for axis in (0, 1)])
+
+    def _measured(self, scene: Any, keep: str | None = None, keys_only: bool = False
+                  ) -> tuple[list[tuple[str, str, str]], list[float], tuple, dict[str, str]]:
+        """:meth:`__call__` of the figure whose scene is *scene* (*keep*: as :meth:`frames` has it).  *keys_only*:
+        its keys as :meth:`__call__` has them, its numbers only as far as the marks' and the furniture's (the views,
+        rings, insets and breaks add keys of their own, whatever their numbers: :meth:`_form` reads the keys of a
+        piece's protocol, and the views' numbers were a third of that)."""
         st = self.style
         vp = Viewport.fit(scene.bbox, st, 0)
         full = (0.0, 0.0, round(vp.width, 2), round(vp.height, 2))
@@ -825,6 +835,8 @@ class Measure:
         keys += fk
         nums += fn
         texts.update(ft)
+        if keys_only:
+            return keys + self._view_keys(), nums, fit_of(vp), texts
         boxes = self._boxes(scene, vp)
         carried = [self._carried(j, box, full) for j, box in enumerate(boxes)] + [list(full)]  # [-1]: the whole
         if self.framing:
@@ -836,22 +848,18 @@ class Measure:
             carried[self._end[0]] = self._end_view(end_box(scene, vp.px, self.furniture_live is not False), full,
                                                    np.asarray(nums, dtype=float), texts.get("#absent", ""))
         for i, j in enumerate(self.view_of):
-            keys.append(("#zoom", str(i), "# # # #"))
             nums += carried[j]
         by_id = {m.id: m for m in scene.marks}
         for i, ids in self.rings:
-            keys.append(("#ring", str(i), "# #"))
             pts = [vp.px(*p) for m in ids if m in by_id for p in extreme_points(by_id[m])]
             nums += _ring_centre(min(p[0] for p in pts), min(p[1] for p in pts), max(p[0] for p in pts),
                                  max(p[1] for p in pts)) if pts else [0.0, 0.0]
         if self.insets:
             for (i, _, _), z in zip(self.insets, self._carried_insets(self._inset_boxes(scene, vp))[:, :, 0].tolist()):
-                keys.append(("#inset", str(i), "# # # #"))
                 nums += z
         for axis in (0, 1):
-            keys.append(("#break", str(axis), "# #"))
             nums += breaks_px(scene.breaks, axis, fit_of(vp))
-        return keys, nums, fit_of(vp), texts
+        return keys + self._view_keys(), nums, fit_of(vp), texts
 
 
 def end_box(scene: Any, px: Any, furniture: bool = True) -> tuple[float, float, float, float] | None:

@@ -71,3 +71,21 @@ def test_columns_alike_are_alike_to_the_bit_in_kind_and_nearness(alike_columns):
     # one bit, a zero's sign, nearness, the kind (a cx and a cy of the same numbers): walked apart
     assert firsts[-6:-3].all() and firsts[-2:].all() and firsts[:2].all() and (d[:, 0] == d[:, 1]).all()
     assert like[-3] == 4 and like[60] == 0  # (the same numbers as a cx, the first column again: alike)
+
+
+def test_the_columns_from_the_nearer_value_are_the_arcs_flags_and_the_snapped_marks():
+    """LiveSweep.nearest_columns reads the keys' columns the refinement found (sweep._key_columns): the same as
+    the keys read anew (arc_flags, and the snapped marks' columns), with the list of keys asked before or not."""
+    from construct.live.sweep import _columns, _key_columns
+    from construct.render.wire import arc_flags
+
+    arc = "M# #A# # # # # # #"  # (9 numbers: M x y A rx ry rotation large-arc sweep x y: the flag is the sixth)
+    keys = [("a", "cx", "#"), ("b", "d", arc), ("c", "d", arc), ("s", "cx", "#"), ("t", "r", "#")]
+    live = LiveSweep("rod_ratio", "L/r", ROD_RATIO, 5.0, np.array([1.0, 10.0]), keys, np.zeros((2, 22)), 0.0,
+                     snapped=[("s", "cx", "#")], u=np.array([0.0, 1.0]), start=2)
+    assert live.nearest_columns().nonzero()[0].tolist() == [1 + 5, 1 + 9 + 5, 1 + 9 + 9]
+    _key_columns(keys)  # (asked before, as the refinement asks)
+    for snapped in ([("s", "cx", "#")], [], [("b", "d", arc), ("t", "r", "#")]):
+        live.snapped = snapped
+        old = arc_flags(keys) | _columns(keys, lambda k: k in set(snapped))
+        assert (live.nearest_columns() == old).all()

@@ -542,9 +542,13 @@ class LiveSweep:
     derived: dict[str, list[float]] = field(default_factory=dict)
 
     def nearest_columns(self) -> np.ndarray:
-        """The columns taken from the nearer grid value: large-arc flags and the snapped marks."""
+        """The columns taken from the nearer grid value: large-arc flags and the snapped marks (the keys' columns
+        as the refinement found them for the same list: :func:`_key_columns`; the page's data asks twice)."""
+        owner, _, flags, _ = _key_columns(self.keys)
         snapped = set(self.snapped)
-        return arc_flags(self.keys) | _columns(self.keys, lambda k: k in snapped)
+        marked = np.fromiter((k in snapped for k in self.keys), dtype=bool, count=len(self.keys)) if snapped else \
+            np.zeros(len(self.keys), dtype=bool)
+        return flags | marked[owner]
 
 
 def _frames(construction: Construction, figure: Figure, given: str, values: np.ndarray, measure,

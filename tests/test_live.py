@@ -226,6 +226,29 @@ def test_a_pieces_keys_alone_are_the_keys_of_its_measure(name, params):
     assert whole[0][-2:] == [("#break", "0", "# #"), ("#break", "1", "# #")]
 
 
+def test_the_edge_letters_points_found_once_are_those_found_anew():
+    """Measure._letter_points finds the columns of the edge letters' points once per list of keys (every round
+    of a piece asks with the same list): read again, and for another list, they are the points number_places
+    gives."""
+    from construct.live import Measure
+    from construct.live.measure import number_places
+
+    c = get("piston-force")
+    built = c.figure()
+    measure = Measure(c, built, STYLES["teaching"])
+    assert measure.edge_letters
+    keys = measure.keys
+    nums = np.arange(2 * sum(k[2].count("#") for k in keys), dtype=float).reshape(2, -1)
+    at = number_places(keys)
+    for ks in (keys, keys, list(keys)):
+        got = measure._letter_points(ks, nums)
+        for lvl, (ids, _) in measure.edge_letters.items():
+            for c_, a in zip(got[lvl], ("cx", "cy")):
+                want = [[nums[v, at[(i, a)]] if (i, a) in at else np.nan for v in range(2)] for i in ids]
+                np.testing.assert_array_equal(c_, np.asarray(want, dtype=float).reshape(len(ids), 2))
+    assert any((i, "cx") in at for ids, _ in measure.edge_letters.values() for i in ids)
+
+
 def test_a_figure_with_hatched_areas_is_measured_at_once_as_value_by_value(monkeypatch):
     """The page draws areas (hatching and all) from the curves that bound them, so a figure with hatched areas
     (Baumann's diagram, in a style that hatches) is measured over the whole sweep at once, not a scene per value

@@ -128,6 +128,8 @@ class Measure:
     def __init__(self, construction: Construction, built: Figure, style: Any = None, *, drawing: Any = None):
         self.construction = construction
         self.style = style or STYLES["teaching"]
+        # per list of keys (by its identity, the list kept): the columns of the edge letters' points (_letter_points)
+        self._letter_columns: dict[int, tuple[list, dict[int, tuple[np.ndarray, np.ndarray]]]] = {}
         # *drawing*: the built figure's drawing in this style, if the caller has it (the player's own)
         if drawing is None:
             drawing = Drawing(scene_for(construction, built, ending=self.style.camera), self.style)
@@ -293,13 +295,16 @@ class Measure:
     def _letter_points(self, keys: list, nums: np.ndarray) -> dict:
         """Per zoom level, the points of :attr:`edge_letters` on the pages whose numbers are *nums* (values x
         numbers, in the order of *keys*): x, y, each letters x values (NaN: not drawn)."""
-        at = number_places(keys)
-        out = {}
-        for lvl, (ids, _) in self.edge_letters.items():
-            ix = np.asarray([at.get((i, "cx"), -1) for i in ids], dtype=int)
-            iy = np.asarray([at.get((i, "cy"), -1) for i in ids], dtype=int)
-            out[lvl] = tuple(np.where((c >= 0)[:, None], nums[:, c].T, np.nan) for c in (ix, iy))
-        return out
+        got = self._letter_columns.get(id(keys))
+        if got is None or got[0] is not keys:  # (every round of a piece asks with its one list of keys: found once)
+            at = number_places(keys)
+            got = (keys, {lvl: tuple(np.asarray([at.get((i, a), -1) for i in ids], dtype=int) for a in ("cx", "cy"))
+                          for lvl, (ids, _) in self.edge_letters.items()})
+            if len(self._letter_columns) >= 8:
+                self._letter_columns.clear()
+            self._letter_columns[id(keys)] = got
+        return {lvl: tuple(np.where((c >= 0)[:, None], nums[:, c].T, np.nan) for c in columns)
+                for lvl, columns in got[1].items()}
 
     def _framed_views(self, box: np.ndarray, W: np.ndarray, H: np.ndarray, out: np.ndarray, keys: list,
                       nums: np.ndarray) -> np.ndarray:

@@ -852,15 +852,15 @@ class Measure:
         if self._end is not None:
             carried[self._end[0]] = self._end_view(end_box(scene, vp.px, self.furniture_live is not False), full,
                                                    np.asarray(nums, dtype=float), texts.get("#absent", ""))
-        for i, j in enumerate(self.view_of):
+        for j in self.view_of:
             nums += carried[j]
         by_id = {m.id: m for m in scene.marks}
-        for i, ids in self.rings:
+        for _, ids in self.rings:
             pts = [vp.px(*p) for m in ids if m in by_id for p in extreme_points(by_id[m])]
             nums += _ring_centre(min(p[0] for p in pts), min(p[1] for p in pts), max(p[0] for p in pts),
                                  max(p[1] for p in pts)) if pts else [0.0, 0.0]
         if self.insets:
-            for (i, _, _), z in zip(self.insets, self._carried_insets(self._inset_boxes(scene, vp))[:, :, 0].tolist()):
+            for z in self._carried_insets(self._inset_boxes(scene, vp))[:, :, 0].tolist():
                 nums += z
         for axis in (0, 1):
             nums += breaks_px(scene.breaks, axis, fit_of(vp))

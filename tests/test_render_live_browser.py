@@ -884,6 +884,33 @@ def test_a_drag_reads_no_layout_of_the_figure_before_it_writes(browser, live_pla
     page.close()
 
 
+@pytest.mark.parametrize("at", ["end", "before-end"])
+def test_a_new_letter_scale_restyles_the_letters_and_points_shown_and_not_those_hidden(browser, at):
+    """The letter scale (--ls) is declared by one rule on the letters and points that read it; a new value restyles
+    every element that rule matches, shown or hidden, in the frame it changes.  The piston-force's end state shows
+    its plate's letters (.pf) and the points it keeps; the rule matched all 512 letters and points of the figure's
+    steps there, 64 of them shown (4.5 ms of a drag's frame).  At the end state (and the step before it) every
+    letter and point shown is matched (it keeps its size on the screen), and few that are hidden."""
+    path = _gallery_player("piston-force")
+    page, errors = _open(browser, path)
+    _at(page, at)
+    _glided(page)
+    got = page.evaluate("""() => {
+      const rule = Array.from(document.styleSheets).flatMap(s => Array.from(s.cssRules))
+        .find(r => r.style && r.style.getPropertyValue('--ls'));
+      const on = e => e.getClientRects().length > 0;
+      const matched = Array.from(document.querySelectorAll(rule.selectorText));
+      const shown = Array.from(document.querySelectorAll('#figure .lbg>*, #figure .pt')).filter(on);
+      return {matched: matched.length, hidden: matched.filter(e => !on(e)).length, shown: shown.length,
+              unmatched: shown.filter(e => !e.matches(rule.selectorText)).length}; }""")
+    assert got["shown"] >= 20 and got["unmatched"] == 0, got
+    if at == "end":
+        # (hidden and matched: a point in a group the end state leaves out, whose own class does not say so)
+        assert got["hidden"] <= 0.1 * got["matched"], got
+    assert not errors, errors
+    page.close()
+
+
 def test_letters_that_come_to_lie_on_one_another_give_way(browser, live_player):
     """Near L/r = 1 the crank's piston points crowd the stroke's end: the page lets a later letter give way where
     it would lie on another (never a pile of letters), and at the book's value hides none."""

@@ -739,7 +739,7 @@ LIVE_SCRIPT = r"""
   var boxes = null, boxKey = null, pairs = null, lsRule = null;
   Array.prototype.forEach.call(document.styleSheets, function(sh){  // the letters' scale (the player's --ls)
     Array.prototype.forEach.call(sh.cssRules, function(r){
-      if (!lsRule && r.selectorText && r.selectorText.indexOf("#figure .lbg") === 0) lsRule = r; });
+      if (!lsRule && r.style && r.style.getPropertyValue("--ls")) lsRule = r; });
   });
   var sized = null;  // the figure's box on the screen when the boxes were measured: [width, height]
   function measure(){  // each shown label group's box about its anchor, in the figure's units (asked again when

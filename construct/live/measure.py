@@ -28,6 +28,7 @@ import numpy as np
 
 from ..constructions import Construction
 from ..figure import Figure
+from ..kernel.identity import by_identity
 from ..render.camera import (FINAL_CONTEXT, MAX_ZOOM, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, clip_view, framed_rows,
                              level, player_letter_scale, step_focus_names, step_shots, zoom_of)
 from ..render.edges import clear_edges_rows
@@ -295,16 +296,14 @@ class Measure:
     def _letter_points(self, keys: list, nums: np.ndarray) -> dict:
         """Per zoom level, the points of :attr:`edge_letters` on the pages whose numbers are *nums* (values x
         numbers, in the order of *keys*): x, y, each letters x values (NaN: not drawn)."""
-        got = self._letter_columns.get(id(keys))
-        if got is None or got[0] is not keys:  # (every round of a piece asks with its one list of keys: found once)
+        def columns(keys: list) -> dict:
             at = number_places(keys)
-            got = (keys, {lvl: tuple(np.asarray([at.get((i, a), -1) for i in ids], dtype=int) for a in ("cx", "cy"))
-                          for lvl, (ids, _) in self.edge_letters.items()})
-            if len(self._letter_columns) >= 8:
-                self._letter_columns.clear()
-            self._letter_columns[id(keys)] = got
-        return {lvl: tuple(np.where((c >= 0)[:, None], nums[:, c].T, np.nan) for c in columns)
-                for lvl, columns in got[1].items()}
+            return {lvl: tuple(np.asarray([at.get((i, a), -1) for i in ids], dtype=int) for a in ("cx", "cy"))
+                    for lvl, (ids, _) in self.edge_letters.items()}
+
+        # (every round of a piece asks with its one list of keys: found once)
+        return {lvl: tuple(np.where((c >= 0)[:, None], nums[:, c].T, np.nan) for c in cols)
+                for lvl, cols in by_identity(self._letter_columns, keys, columns).items()}
 
     def _framed_views(self, box: np.ndarray, W: np.ndarray, H: np.ndarray, out: np.ndarray, keys: list,
                       nums: np.ndarray) -> np.ndarray:

@@ -43,6 +43,7 @@ from ..constructions import Construction
 from ..constructions.domain import KAPPA_RANGE, ROD_RATIO, Domain
 from ..figure import Figure
 from ..kernel.errors import ConstructError, InvalidParameter
+from ..kernel.identity import by_identity
 from ..kernel.instruments import unlettered
 from ..render.styles import STYLES
 from ..render.wire import arc_flags, blend, radii
@@ -397,15 +398,9 @@ def _key_columns(keys: list[tuple[str, str, str]]) -> tuple[np.ndarray, ...]:
     """Which key each number of *keys* belongs to, which numbers are views, which are large-arc flags, which are
     radii: asked at every cell of the refinement, for the same list of keys (known by its identity: hashing
     thousands of keys at every cell cost more than the cell)."""
-    got = _KEY_COLUMNS.get(id(keys))
-    if got is not None and got[0] is keys:
-        return got[1]
-    owner = np.asarray([i for i, k in enumerate(keys) for _ in range(k[2].count("#"))], dtype=int)
-    made = (owner, _columns(keys, lambda k: k[0] in ("#zoom", "#inset")), arc_flags(keys), radii(keys))
-    if len(_KEY_COLUMNS) >= 4:
-        _KEY_COLUMNS.clear()
-    _KEY_COLUMNS[id(keys)] = (keys, made)
-    return made
+    return by_identity(_KEY_COLUMNS, keys, lambda keys: (
+        np.asarray([i for i, k in enumerate(keys) for _ in range(k[2].count("#"))], dtype=int),
+        _columns(keys, lambda k: k[0] in ("#zoom", "#inset")), arc_flags(keys), radii(keys)), most=4)
 
 
 def _midpoint_error(keys, na: np.ndarray, nb: np.ndarray, exact: np.ndarray, snap: set[int],

@@ -6,6 +6,7 @@ import math
 import re
 
 from .. import Figure
+from ...kernel.identity import by_identity
 from ..scales import scale_furniture
 
 __all__ = ["PLATE", "tangential_plate"]
@@ -69,7 +70,7 @@ def _scale(fig: Figure, m: int) -> list[dict]:
 
 #: The names whose heights the scale spans, by the protocol that makes them: {id: (protocol, names)} (at most
 #: _NAMED protocols kept, each with its entry so that its id is not another's).
-_named: dict[int, tuple[object, tuple[str, ...]]] = {}
+_named: dict[int, tuple[object, tuple[str, ...]]] = {}  # (kernel.identity.by_identity)
 _NAMED = 16
 
 
@@ -79,13 +80,9 @@ def height_names(replay) -> list[str]:
     A player asks at every value of a sweep, whose names are its protocol's: the protocol's thousands of names are
     scanned once, and a replay of part of the steps keeps those it has.
     """
-    got = _named.get(id(replay.protocol))
-    if got is None or got[0] is not replay.protocol:
-        if len(_named) >= _NAMED:
-            _named.clear()
-        names = tuple(k for k in replay.protocol.program.names if k[:1] in "TSc" and _HEIGHTS.fullmatch(k))
-        got = _named[id(replay.protocol)] = (replay.protocol, names)
-    return [k for k in got[1] if k in replay]
+    names = by_identity(_named, replay.protocol, lambda protocol: tuple(
+        k for k in protocol.program.names if k[:1] in "TSc" and _HEIGHTS.fullmatch(k)), most=_NAMED)
+    return [k for k in names if k in replay]
 
 
 def _cylinder_letters(fig: Figure) -> list[dict]:

@@ -245,11 +245,11 @@ def _owners(path: Path) -> list[tuple[int, str]]:
     return out
 
 
-# every point and label group of the figure, in the document or out of it (the groups of steps not shown), found
-# once and kept: they are the same elements as the given moves
-_FIND = """() => { const groups = window.constructPlayer.groups();
-    window.__pts = {}; groups.forEach(s => s.querySelectorAll('circle[id]').forEach(c => { window.__pts[c.id] = c; }));
-    window.__lbg = groups.flatMap(s => Array.from(s.querySelectorAll('g.lbg'))); }"""
+# every point and label group of the figure, in the document or out of it (the groups of steps not shown, the
+# letters and points the end state hides), found once and kept: they are the same elements as the given moves
+_FIND = """() => { const p = window.constructPlayer, parts = p.groups().flatMap(s => p.parts(s));
+    window.__pts = {}; parts.filter(e => e.matches('circle[id]')).forEach(c => { window.__pts[c.id] = c; });
+    window.__lbg = parts.filter(e => e.matches('g.lbg')); }"""
 _ANCHORS = """() => window.__lbg.map(g => {
     const m = /translate\\(([-0-9.e]+)[ ,]+([-0-9.e]+)\\)/.exec(g.getAttribute('transform')); return [+m[1], +m[2]]; })"""
 _POINTS = """ids => ids.map(i => { const c = window.__pts[i]; return [+c.getAttribute('cx'), +c.getAttribute('cy')]; })"""
@@ -327,10 +327,12 @@ def test_letters_stay_with_their_points(browser, live_player):
     left where the built value put it would be far from every point)."""
     _, _, path = live_player
     page, errors = _open(browser, path)
-    # (every mark at the shown value: the letters and points the step hides wait until it shows them)
-    near = """() => { window.constructLive.flush(); const pts = Array.from(document.querySelectorAll('#figure circle.pt[id]'))
-        .map(c => [+c.getAttribute('cx'), +c.getAttribute('cy')]);
-      return Array.from(document.querySelectorAll('#figure g.lbg:not(.rodlen)')).map(g => {
+    # (every mark at the shown value: the letters and points the step hides wait until it shows them; those of the
+    # steps shown, the ones the end state keeps out of the document among them)
+    near = """() => { window.constructLive.flush(); const p = window.constructPlayer;
+      const parts = p.groups().filter(s => s.isConnected).flatMap(s => p.parts(s));
+      const pts = parts.filter(e => e.matches('circle.pt[id]')).map(c => [+c.getAttribute('cx'), +c.getAttribute('cy')]);
+      return parts.filter(e => e.matches('g.lbg:not(.rodlen)')).map(g => {
         const m = /translate\\(([-0-9.e]+)[ ,]+([-0-9.e]+)\\)/.exec(g.getAttribute('transform'));
         return Math.min(...pts.map(p => Math.hypot(p[0] - +m[1], p[1] - +m[2]))); }); }"""
     built = page.evaluate(near)
@@ -747,11 +749,12 @@ def test_every_element_of_the_figure_is_where_a_fresh_replay_draws_it(browser, l
     page, errors = _open(browser, path)
     _at(page, at)
     read = """() => { const out = []; window.constructLive.flush();
-      window.constructPlayer.groups().forEach(s => s.querySelectorAll('*').forEach(e => {
+      window.constructPlayer.groups().forEach(s => window.constructPlayer.parts(s).forEach(e => {
         // (views: data, not drawn; a step's view box is out of the document while its step is not shown)
         if (e.closest('.brkg') || e.closest('.rodlen') || e.closest('#views') || e.classList.contains('view')) return;
         // a letter's or leader's place about its anchor is the placer's (kept): its group's anchor is compared
-        if (e.parentNode.closest && e.parentNode.closest('g.lbg')) return;
+        // (a letter group or point the end state keeps out of the document has no parent)
+        if (e.parentNode && e.parentNode.closest && e.parentNode.closest('g.lbg')) return;
         const t = e.getAttribute('transform') || '';
         out.push([e.tagName, ['cx', 'cy', 'r', 'x1', 'y1', 'x2', 'y2', 'd', 'x', 'y'].map(a => e.getAttribute(a) || '').join(' ') + ' ' + t]);
       })); return out; }"""
@@ -820,9 +823,10 @@ def test_the_end_state_follows_the_slider_with_its_furniture_and_the_rod_it_writ
     page.close()
 
 
-# every element of the connected step groups with its numbers, and whether the page renders it (has a box)
-_SHOWN_AND_HIDDEN = """() => window.constructPlayer.groups().filter(s => s.isConnected).flatMap(s => Array.from(s.querySelectorAll('*')))
-    .filter(e => !e.closest('.brkg') && !e.closest('.rodlen') && !e.closest('#views') && !(e.parentNode.closest && e.parentNode.closest('g.lbg')))
+# every element of the connected step groups (the letters and points the end state keeps out of the document
+# among them) with its numbers, and whether the page renders it (has a box)
+_SHOWN_AND_HIDDEN = """() => window.constructPlayer.groups().filter(s => s.isConnected).flatMap(s => window.constructPlayer.parts(s))
+    .filter(e => !e.closest('.brkg') && !e.closest('.rodlen') && !e.closest('#views') && !(e.parentNode && e.parentNode.closest && e.parentNode.closest('g.lbg')))
     .map(e => [e.getClientRects().length > 0, ['cx', 'cy', 'r', 'x1', 'y1', 'x2', 'y2', 'd', 'transform'].map(a => e.getAttribute(a) || '').join(' ')])"""
 
 
@@ -907,6 +911,73 @@ def test_a_new_letter_scale_restyles_the_letters_and_points_shown_and_not_those_
     if at == "end":
         # (hidden and matched: a point in a group the end state leaves out, whose own class does not say so)
         assert got["hidden"] <= 0.1 * got["matched"], got
+    assert not errors, errors
+    page.close()
+
+
+# the elements a zoom level's rules style (the subjects of the rules the level's class on the figure selects by,
+# .zl3 .lbg>.lb and the like), in the document, and how many of them the page shows
+_ZOOM_MATCHED = """() => {
+    const svg = document.getElementById('figure'), subjects = new Set(), hit = new Set();
+    Array.from(document.styleSheets).flatMap(s => Array.from(s.cssRules)).forEach(r => (r.selectorText || '').split(',')
+      .forEach(sel => { const m = /^\\.zl[0-9]+\\s+(.+)$/.exec(sel.trim()); if (m) subjects.add(m[1]); }));
+    subjects.forEach(sel => svg.querySelectorAll(sel).forEach(e => hit.add(e)));
+    const all = Array.from(hit);
+    return {matched: all.length, shown: all.filter(e => e.getClientRects().length > 0).length}; }"""
+# every point and label group of the step groups (in the document or out of it) in the figure's order: its anchor
+# or centre, whether it is in the document, whether its step's group is, and whether the page shows it
+_LETTERS_AND_POINTS = """() => { const p = window.constructPlayer;
+    return JSON.stringify(p.groups().flatMap(s => p.parts(s).map(e => [s, e])).filter(([s, e]) => e.matches('g.lbg:not(.rodlen), circle.pt'))
+      .map(([s, e]) => [e.tagName, e.getAttribute('id') || '', e.tagName === 'circle' ? e.getAttribute('cx') + ' ' + e.getAttribute('cy')
+                 : e.getAttribute('transform'), e.isConnected, s.isConnected, e.getClientRects().length > 0])); }"""
+
+
+def test_the_end_states_hidden_letters_and_points_leave_the_document_and_come_back_where_a_fresh_build_puts_them(
+        browser, live_player):
+    """The end state shows the plate's own letters and the points it keeps, and hides the steps' other letters and
+    points (display: none), but a new zoom level's class restyles every element its rules match, shown or hidden:
+    at piston-force's end state 627-661 of them a change, 63 shown, the worst frames of a drag over the domain.  While
+    a given is live, the letters and points the end state hides are out of the document there: the zoom level's
+    rules match only what is shown, at every level and every value of a drag.  A step before the end brings
+    them back, each letter and point where a fresh build at the dragged value puts it (no flush: as drawn)."""
+    c, _, path = live_player
+    page, errors = _open(browser, path)
+    _at(page, "end")
+    _glided(page)
+    built = json.loads(page.evaluate(_LETTERS_AND_POINTS))
+    hidden = [e for e in built if not e[5]]
+    assert len(hidden) > 20 and len(built) - len(hidden) >= 4, built
+    assert not any(e[3] for e in hidden), "a letter or point the end state hides is in the document"
+    # at every value of a drag, whichever zoom level the end state takes (each set on the figure in turn)
+    for v in (1.07, 1.9, 3.3, 7.1, 23.0, 410.0):
+        _drag_to(page, "rod_ratio", v)
+        got = page.evaluate("""() => { const svg = document.getElementById('figure'), was = svg.getAttribute('class');
+          const out = window.constructPlayer.data.levels.map((_, x) => { svg.setAttribute('class', 'zl' + x + ' fin'); return m(); });
+          svg.setAttribute('class', was); return out; }""".replace("m()", "(" + _ZOOM_MATCHED + ")()"))
+        assert all(g["shown"] >= 4 and g["matched"] == g["shown"] for g in got), (v, got)
+    # back a step, at the dragged value: every letter and point of the steps in the document again, those shown where
+    # a fresh build puts them
+    page.keyboard.press("ArrowLeft")
+    page.evaluate("() => new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)))")
+    back = json.loads(page.evaluate(_LETTERS_AND_POINTS))
+    assert len(back) == len(built) and all(e[3] for e in back if e[4]), "a letter or point was left out of its step"
+    root = _fresh_svg(c, {"parts": 3}, "rod_ratio", 410.0)
+    ns = "{http://www.w3.org/2000/svg}"
+    views = root.find(f".//{ns}g[@id='views']")
+    skip = set(views.iter()) if views is not None else set()
+    fresh = [e for s in root.iter(ns + "g") if s.get("data-step") is not None and s not in skip for e in s.iter()
+             if (e.tag == ns + "g" and "lbg" in (e.get("class") or "").split() and "rodlen" not in (e.get("class") or ""))
+             or (e.tag == ns + "circle" and "pt" in (e.get("class") or "").split())]
+    assert [e[1] for e in back] == [f.get("id") or "" for f in fresh]
+    shown = 0
+    for (tag, ident, at, _, _, on), f in zip(back, fresh):
+        want = f"{f.get('cx')} {f.get('cy')}" if tag == "circle" else f.get("transform")
+        got_xy, want_xy = [float(x) for x in NUMBER.findall(at)], [float(x) for x in NUMBER.findall(want)]
+        if on:
+            shown += 1
+            d = max(abs(a - b) for a, b in zip(got_xy, want_xy))
+            assert d <= 0.5, f"{tag} {ident} at {at}, a fresh build at L/r = 410 puts it at {want}"
+    assert shown >= 20
     assert not errors, errors
     page.close()
 

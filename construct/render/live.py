@@ -19,8 +19,9 @@ the next animation frame, everything the page draws: every mark of every
 step shown, in the window or not (those of steps not shown sit outside the
 document, the player's ``lean``, and are brought to the shown value when
 their step shows them again: the player's ``shown``; those the step's classes
-hide -- display: none, most letters and points of the end state -- wait
-likewise until a step, zoom level or end state shows them: ``reveal``;
+hide -- display: none, another zoom level's letters -- wait
+likewise until a step, zoom level or end state shows them: ``reveal``, and those the end state hides, most of its
+letters and points, are out of the document there, the player's ``lean`` again;
 ``constructLive.flush()`` brings every mark at once, for a reader of their
 numbers), the view box and each step's
 view, the ring round the current mark, the letters and name tags with the
@@ -694,10 +695,13 @@ LIVE_SCRIPT = r"""
     var i, j;
     for (i = 0; i < S.loose.length; i++) if (!unseen.has(S.loose[i].el)) write(S.loose[i]);
     S.inGroup.forEach(function(list, g){
-      if (g.isConnected) for (j = 0; j < list.length; j++) if (!unseen.has(list[j].el)) write(list[j]); });
+      // (a point out of the document -- the end state's hidden ones: the player's lean -- waits until it is shown)
+      if (g.isConnected) for (j = 0; j < list.length; j++) if (!unseen.has(list[j].el) && list[j].el.isConnected) write(list[j]); });
     for (i = 0; i < followers.length; i++) {
       var fo = followers[i];
-      if (fo.grp.isConnected && !unseen.has(fo.g || fo.el)) follow(fo);
+      // (a letter group out of the document -- its step's, or the end state's hidden ones: the player's lean --
+      // waits until it is shown)
+      if ((fo.g || fo.el).isConnected && !unseen.has(fo.g || fo.el)) follow(fo);
     }
   }
   function reveal(){  // a new step, zoom level or end state: what it shows anew, at the shown value

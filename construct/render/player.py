@@ -505,6 +505,8 @@ li a.later{color:#bbb}
     if (drag && lvl !== level && level < L.length && z >= L[level] / DRAG_LEVEL
         && (level + 1 >= L.length || z < L[level + 1] * DRAG_LEVEL)) { lvl = level; }
     var cls = "zl" + lvl + (data.end && k === n ? " fin" : "");  // the last step: the end state
+    // (the end state's hidden letters and points out of the document before the class changes: see ends)
+    if (lean) { placeEnds(data.end && k === n); }
     if (svg.getAttribute("class") !== cls) { svg.setAttribute("class", cls); }
     level = lvl;
   }
@@ -533,12 +535,66 @@ li a.later{color:#bbb}
     }
     else if (!shown && g.isConnected) { g.replaceWith(places[i]); }
   }
+  // The end state (.fin) shows the plate's own letters (.pf) and the points it keeps and hides the steps' other
+  // label groups (.fin .lbg) and points (.nf), but a new zoom level's class restyled each of their letters, leaders
+  // and points all the same (at piston-force's end state a change restyled 627-661 elements, 63 of them shown: a
+  // drag's worst frames; 163 with them out).  So, lean, the label groups and points the end state hides at every
+  // zoom level leave the document in it too, a comment keeping each one's place, and come back when a step before
+  // it is shown (the live given brings them to the shown value then: its reveal, as for the marks a class hides).
+  // Which they are the stylesheet says (asked of probes once, at the first end state, at each zoom level, the
+  // figure's own class set aside: a probe under it would take its level's rules too).
+  var ends = null, endsOut = false;  // [label group or point, its place] each; whether they are out
+  function endHidden() {
+    if (ends) { return ends; }
+    ends = [];
+    if (!data.end) { return ends; }
+    var all = [], kinds = {}, probes = [], NS = svg.namespaceURI, was = svg.getAttribute("class");
+    groups.forEach(function (g) {
+      Array.prototype.forEach.call(g.querySelectorAll("g.lbg, circle.pt"), function (e) {
+        var key = e.tagName + " " + e.getAttribute("class");
+        all.push([e, key]); kinds[key] = [e.tagName, e.getAttribute("class")];
+      });
+    });
+    svg.removeAttribute("class");
+    Object.keys(kinds).forEach(function (key) {
+      data.levels.forEach(function (_, x) {
+        var w = document.createElementNS(NS, "g"), s = document.createElementNS(NS, "g"), p = document.createElementNS(NS, kinds[key][0]);
+        w.setAttribute("class", "zl" + x + " fin"); s.setAttribute("class", "step"); p.setAttribute("class", kinds[key][1]);
+        s.appendChild(p); w.appendChild(s); svg.appendChild(w); probes.push([key, p, w]);
+      });
+    });
+    var shown = {};  // (all read, then all removed: one restyle)
+    probes.forEach(function (q) { if (getComputedStyle(q[1]).display !== "none") { shown[q[0]] = true; } });
+    probes.forEach(function (q) { svg.removeChild(q[2]); });
+    if (was !== null) { svg.setAttribute("class", was); }
+    all.forEach(function (e) {
+      if (!shown[e[1]]) { var at = document.createComment("end state: hidden"); at.held = e[0]; ends.push([e[0], at]); }
+    });
+    return ends;
+  }
+  function placeEnds(out) {  // the end state's hidden letters and points out of the document (*out*) or back in place
+    out = !!out;
+    if (out === endsOut) { return; }
+    endsOut = out;
+    endHidden().forEach(function (e) { if (out) { e[0].replaceWith(e[1]); } else { e[1].replaceWith(e[0]); } });
+  }
   function find(id) {
-    var e = document.getElementById(id);
-    for (var i = 0; !e && i < groups.length; i++) {
+    var e = document.getElementById(id), i;
+    for (i = 0; !e && i < groups.length; i++) {
       if (!groups[i].isConnected) { e = groups[i].id === id ? groups[i] : groups[i].querySelector("#" + CSS.escape(id)); }
     }
+    for (i = 0; !e && endsOut && i < ends.length; i++) { e = ends[i][0].id === id ? ends[i][0] : ends[i][0].querySelector("#" + CSS.escape(id)); }
     return e;
+  }
+  // every element of step group *g* in the figure's order, the letters and points out of the document in their places
+  // (for a reader of the whole figure: the browser tests)
+  function parts(g) {
+    var out = [], w = document.createTreeWalker(g, NodeFilter.SHOW_ELEMENT | NodeFilter.SHOW_COMMENT), e;
+    while ((e = w.nextNode())) {
+      if (e.nodeType === 1) { out.push(e); }
+      else if (e.held) { out.push(e.held); out.push.apply(out, e.held.querySelectorAll("*")); }
+    }
+    return out;
   }
   // the inset: a step's small work magnified beside the view (its box st.z, canvas px; a cluster's found about its
   // finest detail: detail), its points where their circles stand (a live given moves them, and a sliver's box:
@@ -736,11 +792,13 @@ li a.later{color:#bbb}
   }
   var api = window.constructPlayer = {data: data, full: full, redraw: function () { show(k); }, shown: null,
     groups: function () { return groups.slice(); },  // the step groups, in the document or out of it (lean)
+    parts: parts,  // a step group's elements, in the document or out of it (the end state's hidden ones: lean)
     move: function () { dragWas = null; easing = true; zoomLevel(target()); move(target()); },  // (the level a drag kept, made exact)
     find: find, lean: function () {
       if (lean) { return; }
       lean = true;
       groups.forEach(function (g, i) { places[i] = document.createComment("step " + g.getAttribute("data-step")); place(i); });
+      placeEnds(data.end && k === n);
     },
     target: target, pin: pin,
     inset: function () { drawInset(target()); },  // (a live given moved the step's inset box: st.z)

@@ -448,8 +448,8 @@ def _signals_held() -> Iterator[None]:
 def _worker_init(parent: int) -> None:
     """In a worker process: SIGTERM ends it (a forked worker would inherit the CLI's handler, which
     unwinds the command in the main process; the main process cleans up after its workers), the
-    signals held while it was forked are let in again, it ends when its parent has gone, and its
-    garbage collector runs less often."""
+    signals held while it was forked are let in again, it ends when its parent has gone, its
+    garbage collector runs less often and its C allocator keeps what is freed (:func:`_keep_freed_memory`)."""
     import gc
     import threading
 
@@ -458,10 +458,44 @@ def _worker_init(parent: int) -> None:
     # was forked with (construct, imported) is never garbage.  This process is the gallery's own.
     gc.freeze()
     gc.set_threshold(50_000, 20, 20)
+    _keep_freed_memory()
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
     if hasattr(signal, "pthread_sigmask"):
         signal.pthread_sigmask(signal.SIG_UNBLOCK, [getattr(signal, s) for s in _HELD])
     threading.Thread(target=_exit_with_parent, args=(parent,), daemon=True).start()
+
+
+#: glibc's mallopt parameters (malloc.h) and what a worker sets them to: blocks of up to 32 MiB (glibc's largest
+#: threshold) from the heap rather than each mapped afresh, and freed memory kept for the next figure rather than
+#: handed back to the system after every free.
+_M_TRIM_THRESHOLD, _M_MMAP_THRESHOLD = -1, -3
+_MALLOC_KEPT = ((_M_MMAP_THRESHOLD, 32 * 2**20), (_M_TRIM_THRESHOLD, 1 << 30))
+
+
+def _keep_freed_memory() -> bool:
+    """In a gallery worker (a process of its own, ended with the gallery): let the C allocator keep what is freed.
+
+    A figure's sweeps and drawings allocate and free arrays and lists of megabytes again and again; by default
+    glibc maps each block above 128 KiB afresh and unmaps it when freed, and gives the heap's top back, so every
+    new block is faulted in page by page again: measured on two live players' figures, 96,000 page faults and 0.5-0.7 s
+    of system time in 8.3 s of CPU, with it 62,000 and 0.35-0.45 s.  Nothing that is computed changes, only where
+    memory comes from.  Returns whether it was set (glibc only; elsewhere nothing).
+    """
+    if "CS_GNU_LIBC_VERSION" not in getattr(os, "confstr_names", {}) or not _glibc():
+        return False
+    import ctypes
+
+    mallopt = getattr(ctypes.CDLL(None), "mallopt", None)
+    if mallopt is None:
+        return False
+    return all([mallopt(ctypes.c_int(param), ctypes.c_int(value)) == 1 for param, value in _MALLOC_KEPT])
+
+
+def _glibc() -> bool:
+    try:
+        return os.confstr("CS_GNU_LIBC_VERSION").startswith("glibc")
+    except (ValueError, OSError):
+        return False
 
 
 def _exit_with_parent(parent: int) -> None:

@@ -162,3 +162,47 @@ def test_the_committed_gallery_names_the_books_and_never_a_seed():
     assert not said, said[:10]
     index = (root / "index.html").read_text(encoding="utf-8")
     assert "A. Baumann" in index and "Schwungradgewichte" in index and "seed" not in index.lower()
+
+
+_MALLINFO = '''
+import ctypes, json, sys
+import numpy as np
+
+class Mallinfo2(ctypes.Structure):  # glibc's struct mallinfo2 (malloc.h)
+    _fields_ = [(name, ctypes.c_size_t) for name in
+                ("arena", "ordblks", "smblks", "hblks", "hblkhd", "usmblks", "fsmblks", "uordblks", "fordblks",
+                 "keepcost")]
+
+libc = ctypes.CDLL(None)
+libc.mallinfo2.restype = Mallinfo2
+kept = False
+if sys.argv[1] == "kept":
+    from construct.gallery import _keep_freed_memory
+    kept = _keep_freed_memory()
+before = libc.mallinfo2().hblks
+blocks = [np.ones(2**20 // 8 * (k + 1)) for k in range(4)]  # 1 to 4 MiB each
+mapped = libc.mallinfo2().hblks - before
+top = libc.mallinfo2().arena
+del blocks
+print(json.dumps({"kept": kept, "mapped": mapped, "kept_after_free": libc.mallinfo2().arena >= top}))
+'''
+
+
+@pytest.mark.skipif(not gallery._glibc(), reason="the C allocator is glibc's only on glibc")
+def test_a_worker_keeps_freed_memory_for_its_next_blocks():
+    """A gallery worker (_worker_init) has glibc serve blocks of megabytes from its heap and keep what is freed
+    (_keep_freed_memory), where by default each such block is mapped afresh and given back when freed; asked of
+    the allocator itself (mallinfo2) in a process of its own, as a worker is."""
+    import json
+    import subprocess
+    import sys
+
+    def run(how: str) -> dict:
+        done = subprocess.run([sys.executable, "-c", _MALLINFO, how], capture_output=True, text=True, check=True)
+        return json.loads(done.stdout)
+
+    default, kept = run("default"), run("kept")
+    assert not default["kept"] and default["mapped"] >= 3  # each block its own mapping (128 KiB threshold)
+    assert kept["kept"] and kept["mapped"] == 0  # from the heap ...
+    assert kept["kept_after_free"]  # ... which keeps them when they are freed
+    assert gallery._MALLOC_KEPT[0][1] <= 32 * 2**20  # glibc refuses a larger threshold (mallopt returns 0)

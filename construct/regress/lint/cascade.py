@@ -182,6 +182,8 @@ class Cascade:
         self._relaxed: dict[tuple[frozenset[str], frozenset[str]], list[tuple]] = {}
         self._asking: dict[tuple[frozenset[str], frozenset[str]], dict[tuple[Node, ...], frozenset[str]]] = {}
         self._own: dict[tuple[Node, ...], dict[str, str]] = {}
+        #: (:meth:`_declared`) by the rules matched and the node's own declarations
+        self._alike: dict[tuple, dict[str, str]] = {}
         # the rules whose subject asks for classes, by the first of them (an element is asked only about the rules
         # filed under its own classes, and those that ask for none: a sheet of hundreds of rules, each asked of
         # every element, was a third of the lint)
@@ -232,18 +234,27 @@ class Cascade:
         """What the rules, the attributes and the style say about the last node of *chain*."""
         got = self._own.get(chain)
         if got is None:
-            last = chain[-1]
-            got = {}
-            own = dict(last[3])
-            for name in PROPERTIES:  # presentation attributes first, the style sheet over them
-                if ("@" + name) in own:
-                    got[name] = own["@" + name]
-            for i in self._matched(chain):
-                got.update(self.rules[i].declarations)
-            for name in PROPERTIES:  # the style attribute last
-                if name in own:
-                    got[name] = own[name]
+            # what the last node says depends only on the rules matching it and its own declarations: chains
+            # alike in both (most: a figure's thousands of elements carry a few dozen sets of classes) share it
+            key = (self._matched(chain), chain[-1][3])
+            got = self._alike.get(key)
+            if got is None:
+                got = self._alike[key] = self._declared_by(*key)
             self._own[chain] = got
+        return got
+
+    def _declared_by(self, matched: tuple[int, ...], own_pairs: tuple[tuple[str, str], ...]) -> dict[str, str]:
+        """What the rules numbered *matched* and a node's own declarations *own_pairs* say (:meth:`_declared`)."""
+        got: dict[str, str] = {}
+        own = dict(own_pairs)
+        for name in PROPERTIES:  # presentation attributes first, the style sheet over them
+            if ("@" + name) in own:
+                got[name] = own["@" + name]
+        for i in matched:
+            got.update(self.rules[i].declarations)
+        for name in PROPERTIES:  # the style attribute last
+            if name in own:
+                got[name] = own[name]
         return got
 
     def _matched(self, chain: tuple[Node, ...]) -> tuple[int, ...]:

@@ -8,6 +8,7 @@ placer's own numbers.
 from __future__ import annotations
 
 import itertools
+import math
 import re
 import xml.etree.ElementTree as ET
 
@@ -144,3 +145,46 @@ def test_a_curve_is_kept_clear_of_along_its_catmull_rom_pieces():
                     for a, b, c, d in zip(p1, c1, c2, p2)]
             assert got[1 + 4 * i + j] == pytest.approx([float(w) for w in want], abs=1e-12), (i, t)
     assert got[0] == pts[0] and got[4::4] == pts[1:]
+
+
+def _crowded_one_by_one(boxes, others, taken, touching):
+    """The plate lettering's crowd as it was asked box by box: a box meets one of *taken*, or another box of *boxes* or
+    *others* (another id, not a pair in *touching*)."""
+    def meet(a, b):
+        return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+    return {f for f, b in boxes.items() if any(meet(b, o) for o in taken) or any(
+        g != f and frozenset((f, g)) not in touching and meet(b, o) for g, o in [*boxes.items(), *others.items()])}
+
+
+def test_the_crowd_asked_at_once_is_the_crowd_asked_box_by_box():
+    """placing.crowded (every box against every other at once, numpy) is the test box by box it replaces, over random
+    boxes with pairs that touched where they were placed, an id among both kinds, boxes not drawn (NaN) and none
+    taken: fails when a pair that touched, the taken boxes, the box itself or another kind is read otherwise."""
+    import random
+
+    from construct.render.placing import crowded
+
+    rng = random.Random(28)
+    ways = {"taken": 0, "letters": 0, "touching": 0, "free": 0}
+    for _ in range(600):
+        def box():
+            if rng.random() < 0.05:
+                return (math.nan,) * 4
+            x, y = rng.uniform(0, 60), rng.uniform(0, 60)
+            return (x, y, x + rng.uniform(0.5, 12), y + rng.uniform(0.5, 8))
+
+        boxes = {f"fur{i}": box() for i in range(rng.randint(0, 9))}
+        others = {f"s{i}": box() for i in range(rng.randint(0, 6))}
+        if boxes and others and rng.random() < 0.2:  # (an id of both kinds)
+            others[next(iter(boxes))] = box()
+        taken = [box() for _ in range(rng.randint(0, 5))]
+        ids = list(boxes) + list(others)
+        touching = {frozenset(rng.sample(ids, 2)) for _ in range(rng.randint(0, 12))} if len(ids) > 1 else set()
+        want = _crowded_one_by_one(boxes, others, taken, touching)
+        assert crowded(boxes, others, taken, touching) == want
+        ways["taken"] += bool(want - _crowded_one_by_one(boxes, others, [], touching))
+        ways["letters"] += bool(want - _crowded_one_by_one(boxes, {}, taken, touching))
+        ways["touching"] += bool(_crowded_one_by_one(boxes, others, taken, set()) - want)
+        ways["free"] += bool(set(boxes) - want)
+    assert min(ways.values()) > 20, ways

@@ -22,6 +22,7 @@ True
 
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass
 from typing import Any, Callable, Sequence
@@ -417,6 +418,17 @@ class NumbersFactory:
 
 #: The attributes of the end state's furniture that carry its numbers, in the order the live data keys them.
 _NUMBERED = ("x1", "y1", "x2", "y2", "cx", "cy", "r", "x", "y", "d", "transform")
+
+
+@functools.lru_cache(maxsize=256)
+def _numbered(names: tuple[str, ...]) -> tuple[str, ...]:
+    """Those of the attributes *names* (an element's) that carry numbers (:data:`_NUMBERED`), in its order: an element's
+    attributes are asked once for each set of them (the plate's elements come in a handful: a line, a text, ...).
+
+    >>> _numbered(("class", "y", "x", "id"))
+    ('x', 'y')
+    """
+    return tuple(a for a in _NUMBERED if a in names)
 _NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
 
 
@@ -436,11 +448,12 @@ def furniture_numbers(group: Element, *, exact: bool = True) -> tuple[list[tuple
     keys, nums, texts = [], [], {}
     r2 = (lambda v: round(v, 2) + 0.0) if exact else (lambda v: v)  # noqa: E731
     for e in group.elements:
-        ident = e.attribs.get("id")
+        attribs = e.attribs
+        ident = attribs.get("id")
         if ident is None:
             continue
-        for a in _NUMBERED:
-            v = e.attribs.get(a)
+        for a in _numbered(tuple(attribs)):
+            v = attribs[a]
             if v is None:
                 continue
             if isinstance(v, list) and len(v) == 1:  # (x=[...], as the writer takes it)

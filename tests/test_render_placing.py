@@ -188,3 +188,50 @@ def test_the_crowd_asked_at_once_is_the_crowd_asked_box_by_box():
         ways["touching"] += bool(_crowded_one_by_one(boxes, others, taken, set()) - want)
         ways["free"] += bool(set(boxes) - want)
     assert min(ways.values()) > 20, ways
+
+
+@pytest.mark.parametrize("name", ["tangential-pressure", "effective-work"])
+def test_the_end_states_result_lines_mapped_at_once_are_those_mapped_point_by_point(name):
+    """Placing._end_place's result lines (each line's points mapped by vp.px on arrays) are the pieces between its
+    points mapped one by one, in order, the plate's strokes first: on the built figure's viewport and on a live
+    sweep's value's map (SweepDrawing.px_of), at values across the rod ratio's domain, curves, circles and segments
+    among them (fails when a line's points are mapped otherwise or its pieces come in another order)."""
+    from types import SimpleNamespace
+
+    from construct.render.output import scene_for
+    from construct.render.placing import Placing, _polyline
+    from construct.render.styles import STYLES
+    from construct.render.sweepdraw import SweepDrawing
+
+    c = get(name)
+    fig = c.figure()
+    st = STYLES["teaching"]
+    scene = scene_for(c, fig, ending=st.camera)
+    d = Drawing(scene, st)
+    strokes = [(10.0, 20.0, 30.0, 40.0), (1.0, 2.0, 3.0, 4.5)]
+
+    def one_by_one(vp, marks):
+        lines = list(strokes)
+        for m in marks:
+            if m.role == "result" and m.kind.stroked and "hidden" not in scene.end_look(m).split():
+                pts = [vp.px(*q) for q in _polyline(m, vp.scale)]
+                lines.extend((a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:]))
+        return lines
+
+    def at_once(vp, marks):
+        return list(map(tuple, d.placing._end_place(vp, d.end.letter, marks, [], [], strokes, lettered=False)[3]
+                        .tolist()))
+
+    marks = [m for m in scene.end_drawn() if Placing.end_obstacle(m)]
+    want = one_by_one(d.vp, marks)
+    assert at_once(d.vp, marks) == want and len(want) > 50
+    ratios = [3.0, 4.0, 5.5, 8.0]
+    sweep = fig.protocol.replay(c.given_sweep(dict(fig.replay.givens), "rod_ratio", ratios, fig.protocol.params))
+    drawn = SweepDrawing(scene, fig.protocol, sweep, len(ratios), st)
+    kinds = set()
+    for i in range(len(ratios)):
+        vp = SimpleNamespace(px=drawn.px_of(i), scale=float(drawn.fit[i][2]))
+        marks = drawn.end_marks_at(i, Placing.end_obstacle)
+        kinds |= {m.kind for m in marks if m.role == "result"}
+        assert at_once(vp, marks) == one_by_one(vp, marks)
+    assert len(kinds) > 1

@@ -32,7 +32,7 @@ import numpy as np
 
 from .camera import PLAYER_FIGURE_PX, THIN_FROM, ZOOM_LEVELS, View
 from .gaps import Gap
-from .lettering import HALO_PX, LEADER_FROM, LineIndex, label_box, lines_near, place, spots_extent, text_box
+from .lettering import HALO_PX, LEADER_FROM, LineIndex, label_box, near_rows, place, spots_extent, text_box
 from .paths import bezier_arrays
 from .plate import plain
 from .scene import Mark, MarkKind, Scene, label_offset_direction
@@ -479,11 +479,11 @@ class Placing:
         span = self.scene.bbox[2] - self.scene.bbox[0]
         look = self.scene.end_look
         dots = [vp.px(*m.geom) for m in marks if m.kind is MarkKind.POINT and "hidden" not in look(m).split()]
-        lines = list(strokes)
-        for m in marks:
-            if m.role == "result" and m.kind.stroked and "hidden" not in look(m).split():
-                pts = [vp.px(*q) for q in _polyline(m, vp.scale)]
-                lines.extend((a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:]))
+        # the result lines as their straight pieces, rows x0, y0, x1, y1 (the plate's strokes first): each line's
+        # points mapped at once (a live sweep places at hundreds of values, among curves of hundreds of points)
+        lines = np.concatenate([np.asarray(strokes, dtype=float).reshape(-1, 4)] + [
+            _pieces(vp, _polyline(m, vp.scale)) for m in marks
+            if m.role == "result" and m.kind.stroked and "hidden" not in look(m).split()])
         items, prefer = [], {}
         for fid, at, text in lettering:
             items.append((fid, "result", 0, at, (0.0, 1.0), text))
@@ -502,7 +502,7 @@ class Placing:
         # the result lines are most of the end state's)
         halo = HALO_PX / 2 * letter
         near = spots_extent(items, size, font=st.label_font, italic=st.label_italic, halo=halo, prefer=prefer)
-        index = LineIndex(size, lines if near is None else lines_near(lines, near, self.line_reach + size))
+        index = LineIndex(size, lines if near is None else lines[near_rows(lines, near, self.line_reach + size)])
         got = place(items, size, dots, index, font=st.label_font, italic=st.label_italic,
                     taken=list(taken), keep=False, prefer=prefer, halo=halo, reach=self.line_reach)
         return items, got, dots, lines
@@ -654,6 +654,21 @@ def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
         pts = s * s * s * p1 + 3 * s * s * t * c1 + 3 * s * t * t * c2 + t * t * t * p2
         return [tuple(g[0]), *map(tuple, pts.reshape(-1, 2).tolist())]
     return list(g)
+
+
+def _pieces(vp: Any, pts: Sequence[tuple[float, float]]) -> np.ndarray:
+    """The straight pieces between the points *pts* (drawing units) on the canvas of *vp*: rows x0, y0, x1, y1, the
+    points mapped by ``vp.px`` of their coordinates as arrays (a viewport's map, and a sweep's value's: the same sums
+    as point by point, :func:`_segments` of the points mapped one by one).
+
+    >>> vp = Viewport(xmin=0.0, ymax=2.0, scale=10.0, margin=5.0, left=0.0, top=0.0, width=100.0, height=100.0)
+    >>> pts = [(0.0, 0.0), (1.0, 2.0), (1.5, 0.5)]
+    >>> list(map(tuple, _pieces(vp, pts).tolist())) == _segments([vp.px(*q) for q in pts])
+    True
+    """
+    q = np.asarray(pts, dtype=float).reshape(-1, 2)
+    x, y = (np.asarray(c, dtype=float) for c in vp.px(q[:, 0], q[:, 1]))
+    return np.column_stack((x[:-1], y[:-1], x[1:], y[1:]))
 
 
 def _segments(pts: Sequence[tuple[float, float]]) -> list[tuple[float, float, float, float]]:

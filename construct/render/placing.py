@@ -482,7 +482,7 @@ class Placing:
         # the result lines as their straight pieces, rows x0, y0, x1, y1 (the plate's strokes first): each line's
         # points mapped at once (a live sweep places at hundreds of values, among curves of hundreds of points)
         lines = np.concatenate([np.asarray(strokes, dtype=float).reshape(-1, 4)] + [
-            _pieces(vp, _polyline(m, vp.scale)) for m in marks
+            _pieces(vp, _polyline_rows(m, vp.scale)) for m in marks
             if m.role == "result" and m.kind.stroked and "hidden" not in look(m).split()])
         items, prefer = [], {}
         for fid, at, text in lettering:
@@ -656,7 +656,24 @@ def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
     return list(g)
 
 
-def _pieces(vp: Any, pts: Sequence[tuple[float, float]]) -> np.ndarray:
+def _polyline_rows(m: Mark, scale: float) -> np.ndarray:
+    """:func:`_polyline` as rows x, y (a curve's points made on arrays stay arrays: not made into tuples and back).
+
+    >>> m = Mark("c", 1, "c", MarkKind.CURVE, ((0.0, 0.0), (1.0, 1.0), (2.0, 0.0)), "result", "curve", "")
+    >>> _polyline_rows(m, 10.0).tolist() == [list(p) for p in _polyline(m, 10.0)]
+    True
+    """
+    g = m.geom
+    if m.kind is MarkKind.CURVE and not m.straight and len(g) > 2:
+        p1, c1, c2, p2 = (a[:, None] for a in bezier_arrays(np.asarray(g, dtype=float)))
+        t = _QUARTERS
+        s = 1 - t
+        pts = s * s * s * p1 + 3 * s * s * t * c1 + 3 * s * t * t * c2 + t * t * t * p2
+        return np.concatenate([np.asarray(g[:1], dtype=float).reshape(1, 2), pts.reshape(-1, 2)])
+    return np.asarray(_polyline(m, scale), dtype=float).reshape(-1, 2)
+
+
+def _pieces(vp: Any, pts: "Sequence[tuple[float, float]] | np.ndarray") -> np.ndarray:
     """The straight pieces between the points *pts* (drawing units) on the canvas of *vp*: rows x0, y0, x1, y1, the
     points mapped by ``vp.px`` of their coordinates as arrays (a viewport's map, and a sweep's value's: the same sums
     as point by point, :func:`_segments` of the points mapped one by one).

@@ -418,9 +418,9 @@ class Measure:
         end-state marks (*marks*: gives them; :func:`~construct.render.end_state.end_lettering_at`: where it stood
         at the built value where there is room, at the built end state's letter scale, which a fresh build there
         keeps too; *lettered*: gives the lettered ones among them, which alone are read where the lettering
-        stands where it stood), or where the built value's placing set it about its places without *marks*; the spots it is
-        written at are named among the texts as ``"#spots"`` (:meth:`spots_key`).  *keep*: the key of spots (a
-        neighbouring value's) it is written at where they do not crowd there."""
+        stands where it stood), or where the built value's placing set it about its places without *marks*; the
+        spots it is written at are named among the texts as ``"#spots"`` (:meth:`spots_key`).  *keep*: the key of
+        spots (a neighbouring value's) it is written at where they do not crowd there."""
         if self.end is None or not items:
             return [], [], {}
         absent: frozenset[int] = frozenset()

@@ -37,8 +37,8 @@ from typing import Any, Iterable, Sequence
 
 import numpy as np
 
-__all__ = ["place", "spots_of", "spots_extent", "lines_near", "near_rows", "LineIndex", "label_box", "text_box", "text_width", "segment_meets_box", "clipped_segment", "RANK", "LEADER_FROM",
-           "DEFAULT_FONT", "line_pieces", "line_pieces_one_by_one"]
+__all__ = ["place", "spots_of", "spots_extent", "lines_near", "LineIndex", "label_box", "text_box", "text_width", "segment_meets_box", "clipped_segment", "RANK", "LEADER_FROM",
+           "DEFAULT_FONT", "line_pieces", "line_pieces_one_by_one", "near_rows"]
 
 #: Rank of a role: lower is placed first.
 RANK = {"result": 0, "given": 1}

@@ -195,11 +195,12 @@ def test_the_end_states_result_lines_mapped_at_once_are_those_mapped_point_by_po
     """Placing._end_place's result lines (each line's points mapped by vp.px on arrays) are the pieces between its
     points mapped one by one, in order, the plate's strokes first: on the built figure's viewport and on a live
     sweep's value's map (SweepDrawing.px_of), at values across the rod ratio's domain, curves, circles and segments
-    among them (fails when a line's points are mapped otherwise or its pieces come in another order)."""
+    among them, long lines (mapped on arrays) and short ones (fails when a line's points are mapped otherwise or its
+    pieces come in another order)."""
     from types import SimpleNamespace
 
     from construct.render.output import scene_for
-    from construct.render.placing import Placing, _polyline
+    from construct.render.placing import _ARRAY_FROM, Placing, _polyline
     from construct.render.styles import STYLES
     from construct.render.sweepdraw import SweepDrawing
 
@@ -228,10 +229,11 @@ def test_the_end_states_result_lines_mapped_at_once_are_those_mapped_point_by_po
     ratios = [3.0, 4.0, 5.5, 8.0]
     sweep = fig.protocol.replay(c.given_sweep(dict(fig.replay.givens), "rod_ratio", ratios, fig.protocol.params))
     drawn = SweepDrawing(scene, fig.protocol, sweep, len(ratios), st)
-    kinds = set()
+    kinds, long = set(), set()
     for i in range(len(ratios)):
         vp = SimpleNamespace(px=drawn.px_of(i), scale=float(drawn.fit[i][2]))
         marks = drawn.end_marks_at(i, Placing.end_obstacle)
         kinds |= {m.kind for m in marks if m.role == "result"}
+        long |= {len(_polyline(m, vp.scale)) >= _ARRAY_FROM for m in marks if m.role == "result" and m.kind.stroked}
         assert at_once(vp, marks) == one_by_one(vp, marks)
-    assert len(kinds) > 1
+    assert len(kinds) > 1 and long == {True, False}  # (lines mapped on arrays and point by point)

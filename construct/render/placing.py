@@ -479,11 +479,8 @@ class Placing:
         span = self.scene.bbox[2] - self.scene.bbox[0]
         look = self.scene.end_look
         dots = [vp.px(*m.geom) for m in marks if m.kind is MarkKind.POINT and "hidden" not in look(m).split()]
-        # the result lines as their straight pieces, rows x0, y0, x1, y1 (the plate's strokes first): each line's
-        # points mapped at once (a live sweep places at hundreds of values, among curves of hundreds of points)
-        lines = np.concatenate([np.asarray(strokes, dtype=float).reshape(-1, 4)] + [
-            _pieces(vp, _polyline_rows(m, vp.scale)) for m in marks
-            if m.role == "result" and m.kind.stroked and "hidden" not in look(m).split()])
+        lines = _result_pieces(vp, [m for m in marks if m.role == "result" and m.kind.stroked
+                                    and "hidden" not in look(m).split()], strokes)
         items, prefer = [], {}
         for fid, at, text in lettering:
             items.append((fid, "result", 0, at, (0.0, 1.0), text))
@@ -656,6 +653,33 @@ def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
     return list(g)
 
 
+#: A line of at least this many points is mapped on arrays (:func:`_pieces`), a shorter one point by point: numpy's
+#: dozen calls cost more than a few points' sums.
+_ARRAY_FROM = 24
+
+
+def _result_pieces(vp: Any, marks: Sequence[Mark], strokes: Sequence[tuple[float, float, float, float]]) -> np.ndarray:
+    """The straight pieces of the line *marks* (:func:`_polyline`) on the canvas of *vp*, after the *strokes* (canvas
+    px), in order: rows x0, y0, x1, y1.  A long line's points are mapped at once (:func:`_pieces`: a live sweep places
+    the plate's lettering at hundreds of values, among curves of hundreds of points), a short one's one by one (the
+    same sums either way)."""
+    blocks, run = [], list(strokes)
+    for m in marks:
+        curve = m.kind is MarkKind.CURVE and not m.straight and len(m.geom) > 2
+        pts = _polyline_rows(m, vp.scale) if curve else _polyline(m, vp.scale)
+        if len(pts) >= _ARRAY_FROM:
+            if run:
+                blocks.append(np.asarray(run, dtype=float).reshape(-1, 4))
+                run = []
+            blocks.append(_pieces(vp, pts))
+        else:
+            p = [vp.px(*q) for q in (pts.tolist() if curve else pts)]
+            run.extend((a[0], a[1], b[0], b[1]) for a, b in zip(p, p[1:]))
+    if run or not blocks:
+        blocks.append(np.asarray(run, dtype=float).reshape(-1, 4))
+    return blocks[0] if len(blocks) == 1 else np.concatenate(blocks)
+
+
 def _polyline_rows(m: Mark, scale: float) -> np.ndarray:
     """:func:`_polyline` as rows x, y (a curve's points made on arrays stay arrays: not made into tuples and back).
 
@@ -684,8 +708,10 @@ def _pieces(vp: Any, pts: "Sequence[tuple[float, float]] | np.ndarray") -> np.nd
     True
     """
     q = np.asarray(pts, dtype=float).reshape(-1, 2)
-    x, y = (np.asarray(c, dtype=float) for c in vp.px(q[:, 0], q[:, 1]))
-    return np.column_stack((x[:-1], y[:-1], x[1:], y[1:]))
+    x, y = vp.px(q[:, 0], q[:, 1])
+    out = np.empty((max(len(q) - 1, 0), 4))
+    out[:, 0], out[:, 1], out[:, 2], out[:, 3] = x[:-1], y[:-1], x[1:], y[1:]
+    return out
 
 
 def _segments(pts: Sequence[tuple[float, float]]) -> list[tuple[float, float, float, float]]:

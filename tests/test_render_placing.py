@@ -8,6 +8,7 @@ placer's own numbers.
 from __future__ import annotations
 
 import itertools
+import math
 import re
 import xml.etree.ElementTree as ET
 
@@ -144,3 +145,95 @@ def test_a_curve_is_kept_clear_of_along_its_catmull_rom_pieces():
                     for a, b, c, d in zip(p1, c1, c2, p2)]
             assert got[1 + 4 * i + j] == pytest.approx([float(w) for w in want], abs=1e-12), (i, t)
     assert got[0] == pts[0] and got[4::4] == pts[1:]
+
+
+def _crowded_one_by_one(boxes, others, taken, touching):
+    """The plate lettering's crowd as it was asked box by box: a box meets one of *taken*, or another box of *boxes* or
+    *others* (another id, not a pair in *touching*)."""
+    def meet(a, b):
+        return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+    return {f for f, b in boxes.items() if any(meet(b, o) for o in taken) or any(
+        g != f and frozenset((f, g)) not in touching and meet(b, o) for g, o in [*boxes.items(), *others.items()])}
+
+
+def test_the_crowd_asked_at_once_is_the_crowd_asked_box_by_box():
+    """placing.crowded (every box against every other at once, numpy) is the test box by box it replaces, over random
+    boxes with pairs that touched where they were placed, an id among both kinds, boxes not drawn (NaN) and none
+    taken: fails when a pair that touched, the taken boxes, the box itself or another kind is read otherwise."""
+    import random
+
+    from construct.render.placing import crowded
+
+    rng = random.Random(28)
+    ways = {"taken": 0, "letters": 0, "touching": 0, "free": 0}
+    for _ in range(600):
+        def box():
+            if rng.random() < 0.05:
+                return (math.nan,) * 4
+            x, y = rng.uniform(0, 60), rng.uniform(0, 60)
+            return (x, y, x + rng.uniform(0.5, 12), y + rng.uniform(0.5, 8))
+
+        boxes = {f"fur{i}": box() for i in range(rng.randint(0, 9))}
+        others = {f"s{i}": box() for i in range(rng.randint(0, 6))}
+        if boxes and others and rng.random() < 0.2:  # (an id of both kinds)
+            others[next(iter(boxes))] = box()
+        taken = [box() for _ in range(rng.randint(0, 5))]
+        ids = list(boxes) + list(others)
+        touching = {frozenset(rng.sample(ids, 2)) for _ in range(rng.randint(0, 12))} if len(ids) > 1 else set()
+        want = _crowded_one_by_one(boxes, others, taken, touching)
+        assert crowded(boxes, others, taken, touching) == want
+        ways["taken"] += bool(want - _crowded_one_by_one(boxes, others, [], touching))
+        ways["letters"] += bool(want - _crowded_one_by_one(boxes, {}, taken, touching))
+        ways["touching"] += bool(_crowded_one_by_one(boxes, others, taken, set()) - want)
+        ways["free"] += bool(set(boxes) - want)
+    assert min(ways.values()) > 20, ways
+
+
+@pytest.mark.parametrize("name", ["tangential-pressure", "effective-work"])
+def test_the_end_states_result_lines_mapped_at_once_are_those_mapped_point_by_point(name):
+    """Placing._end_place's result lines (each line's points mapped by vp.px on arrays) are the pieces between its
+    points mapped one by one, in order, the plate's strokes first: on the built figure's viewport and on a live
+    sweep's value's map (SweepDrawing.px_of), at values across the rod ratio's domain, curves, circles and segments
+    among them, long lines (mapped on arrays) and short ones (fails when a line's points are mapped otherwise or its
+    pieces come in another order)."""
+    from types import SimpleNamespace
+
+    from construct.render.output import scene_for
+    from construct.render.placing import _ARRAY_FROM, Placing, _polyline
+    from construct.render.styles import STYLES
+    from construct.render.sweepdraw import SweepDrawing
+
+    c = get(name)
+    fig = c.figure()
+    st = STYLES["teaching"]
+    scene = scene_for(c, fig, ending=st.camera)
+    d = Drawing(scene, st)
+    strokes = [(10.0, 20.0, 30.0, 40.0), (1.0, 2.0, 3.0, 4.5)]
+
+    def one_by_one(vp, marks):
+        lines = list(strokes)
+        for m in marks:
+            if m.role == "result" and m.kind.stroked and "hidden" not in scene.end_look(m).split():
+                pts = [vp.px(*q) for q in _polyline(m, vp.scale)]
+                lines.extend((a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:]))
+        return lines
+
+    def at_once(vp, marks):
+        return list(map(tuple, d.placing._end_place(vp, d.end.letter, marks, [], [], strokes, lettered=False)[3]
+                        .tolist()))
+
+    marks = [m for m in scene.end_drawn() if Placing.end_obstacle(m)]
+    want = one_by_one(d.vp, marks)
+    assert at_once(d.vp, marks) == want and len(want) > 50
+    ratios = [3.0, 4.0, 5.5, 8.0]
+    sweep = fig.protocol.replay(c.given_sweep(dict(fig.replay.givens), "rod_ratio", ratios, fig.protocol.params))
+    drawn = SweepDrawing(scene, fig.protocol, sweep, len(ratios), st)
+    kinds, long = set(), set()
+    for i in range(len(ratios)):
+        vp = SimpleNamespace(px=drawn.px_of(i), scale=float(drawn.fit[i][2]))
+        marks = drawn.end_marks_at(i, Placing.end_obstacle)
+        kinds |= {m.kind for m in marks if m.role == "result"}
+        long |= {len(_polyline(m, vp.scale)) >= _ARRAY_FROM for m in marks if m.role == "result" and m.kind.stroked}
+        assert at_once(vp, marks) == one_by_one(vp, marks)
+    assert len(kinds) > 1 and long == {True, False}  # (lines mapped on arrays and point by point)

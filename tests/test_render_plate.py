@@ -276,3 +276,42 @@ def test_the_two_sided_force_plate_sets_kg_over_its_scale_and_says_why_the_crank
     at = {"".join(t.itertext()): float(t.get("y")) for t in _elements(svg, "text", "fur-text")}
     assert at["kg"] < at["10000"]  # over the scale, as in Abb. 1055 (y down)
     assert "Kurbelseite, nach unten aufgetragen" in at and "Deckelseite" in at
+
+
+def test_a_shifted_item_and_its_runs_are_those_of_the_rules_they_replace():
+    """plate.shifted (its item's field names found once a class) maps the same points as asking the dataclass's fields
+    at every item did, for every kind of furniture; subscript_runs without an index in the text (one run, no pattern
+    asked) is the pattern's answer (fails when a field is left out or the fast runs differ, the empty text's too)."""
+    from dataclasses import fields, replace
+
+    from construct.render.plate import (AngleArc, Dimension, Dot, Lettering, ScaleBar, Sign, Stroke, shifted,
+                                        subscript_runs)
+
+    def shifted_by_fields(item, sx):
+        changes = {}
+        for f in fields(item):
+            v = getattr(item, f.name)
+            if isinstance(v, tuple) and len(v) == 2 and all(isinstance(c, (int, float)) for c in v):
+                changes[f.name] = (sx(v[0]), v[1])
+        return replace(item, **changes) if changes else item
+
+    items = [Dimension((0.0, 1.0), (2.0, 1.0), "s", -0.3, (1.0, 0.5)), AngleArc((0.0, 0.0), (1.0, 0.0), (0.0, 1.0), 0.4,
+             "ω", (0.2, 0.3)), Stroke((0.5, 0.0), (1.5, 2.0), "heavy"), ScaleBar((3.0, 0.0), (3.0, 1.0), "1 at"),
+             Lettering((1.0, 2.0), "P_b", to=(1.5, 1.0)), Sign((2.0, 2.0), "+"), Dot((4.0, 4.0))]
+    for it in items * 2:  # (the second time: the names found once)
+        got, want = shifted(it, lambda x: 2 * x + 1), shifted_by_fields(it, lambda x: 2 * x + 1)
+        assert got == want and got != it
+
+    def runs_by_pattern(text):
+        out, pos = [], 0
+        for m in re.finditer(r"_(\{[^}]*\}|[^\W_])", text):
+            if m.start() > pos:
+                out.append((text[pos:m.start()], False))
+            out.append((m.group(1).strip("{}"), True))
+            pos = m.end()
+        if pos < len(text) or not out:
+            out.append((text[pos:], False))
+        return out
+
+    for text in ["", "q₀", "+1,234", "1 at", "P_b", "F·p_ü", "B_{max} t", "_", "a_", "x__y", "L = 3,5 r"]:
+        assert subscript_runs(text) == runs_by_pattern(text), text

@@ -409,7 +409,7 @@ class Measure:
 
     def _furniture(self, items: tuple, vp: Any, exact: bool = True, owners: dict[str, int] | None = None,
                    marks: "Callable[[], Any] | None" = None, keep: str | None = None,
-                   ) -> tuple[list, list[float], dict[str, str]]:
+                   lettered: "Callable[[], Any] | None" = None) -> tuple[list, list[float], dict[str, str]]:
         """The end state's furniture *items* (the plate's, on the sheet's broken axis) drawn on *vp* (anything with
         ``px`` and ``scale``): its keys, numbers and texts (:func:`~construct.render.end_state.furniture_numbers`).
         Another value's furniture is drawn in the built one's form (:meth:`_aligned`): a built item it lacks (a
@@ -417,9 +417,10 @@ class Measure:
         ``"#absent"`` (its elements' ids: the page hides them there); its lettering placed among that value's
         end-state marks (*marks*: gives them; :func:`~construct.render.end_state.end_lettering_at`: where it stood
         at the built value where there is room, at the built end state's letter scale, which a fresh build there
-        keeps too), or where the built value's placing set it about its places without *marks*; the spots it is
-        written at are named among the texts as ``"#spots"`` (:meth:`spots_key`).  *keep*: the key of spots (a
-        neighbouring value's) it is written at where they do not crowd there."""
+        keeps too; *lettered*: gives the lettered ones among them, which alone are read where the lettering
+        stands where it stood), or where the built value's placing set it about its places without *marks*; the
+        spots it is written at are named among the texts as ``"#spots"`` (:meth:`spots_key`).  *keep*: the key of
+        spots (a neighbouring value's) it is written at where they do not crowd there."""
         if self.end is None or not items:
             return [], [], {}
         absent: frozenset[int] = frozenset()
@@ -432,8 +433,9 @@ class Measure:
             # (made once: placed among, then drawn)
             fixed = fixed_elements(sheet, vp, self.end, NUMBERS)
             lettering = end_lettering(sheet, vp, self.style, self.end.size)
-            spots = end_lettering_at(sheet, marks(), self.style, vp, self.end, self.placing, NUMBERS,
-                                     None if keep is None else self._spots[keep], fixed, lettering)
+            spots = end_lettering_at(sheet, marks, self.style, vp, self.end, self.placing, NUMBERS,
+                                     None if keep is None else self._spots[keep], fixed, lettering,
+                                     None if lettered is None else lettered())
         keys, nums, texts = furniture_numbers(end_furniture(sheet, self.style, vp, self.end, self.placing, NUMBERS,
                                                             own, spots, fixed, lettering), exact=exact)
         if spots is not None:
@@ -552,13 +554,16 @@ class Measure:
         items = tuple(shifted(it, break_shift(breaks)) for it in p.furniture) if breaks else tuple(p.furniture)
         px, fx = at_once.px_of(i), extent(items)
         # (the end state's marks there, which its lettering is placed among: read off the sweep's arrays, when
-        # _furniture asks)
+        # _furniture asks; the lettered ones alone where its lettering does not crowd)
         def marks() -> Any:
             return at_once.end_marks_at(i, Placing.end_obstacle)
 
+        def lettered() -> Any:
+            return at_once.end_marks_at(i, Placing.end_lettered)
+
         # (its numbers unrounded: frames rounds every value's at once)
         return (*self._furniture(items, SimpleNamespace(px=px, scale=float(at_once.fit[i][2])), exact=False,
-                                 marks=marks, keep=keep),
+                                 marks=marks, keep=keep, lettered=lettered),
                 (*px(fx[0], fx[3]), *px(fx[2], fx[1])) if fx is not None else (math.nan,) * 4)
 
     def _runs(self, keys: list[tuple[str, str, str]]) -> list[tuple[str, int]]:

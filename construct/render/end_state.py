@@ -22,9 +22,10 @@ True
 
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass
-from typing import Any, Sequence
+from typing import Any, Callable, Sequence
 
 from .camera import FINAL_CONTEXT, NON_SCALING, PLAYER_FIGURE_PX, ZOOM_LEVELS, Framing, level, player_letter_scale, zoom_of
 from .captions import Captions
@@ -269,11 +270,12 @@ def _result_strokes(scene: Any, vp: Any) -> list[tuple[float, float, float, floa
             if isinstance(it, Stroke) and not {"thin", "dashed", "hidden"} & set(it.look.split())]
 
 
-def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, end: EndView, placing: Placing,
-                     factory: Any, keep: dict[str, tuple[float, float, float]] | None = None,
+def end_lettering_at(sheet: Any, marks: "Sequence[Any] | Callable[[], Sequence[Any]]", style: Style, vp: Any,
+                     end: EndView, placing: Placing, factory: Any,
+                     keep: dict[str, tuple[float, float, float]] | None = None,
                      fixed: list[list[Any]] | None = None,
                      lettering: list[tuple[str, tuple[float, float], str]] | None = None,
-                     ) -> dict[str, tuple[float, float, float]]:
+                     lettered: Sequence[Any] | None = None) -> dict[str, tuple[float, float, float]]:
     """Where the plate's lettering of *sheet* (anything with ``end_furniture``: the plate at another value of a live
     given, in the built plate's form) stands about its places at that value, as :func:`lay_out_end` places it
     (:meth:`~construct.render.placing.Placing.end_lettering_at`: among that value's end-state *marks* on *vp*):
@@ -283,19 +285,23 @@ def end_lettering_at(sheet: Any, marks: Sequence[Any], style: Style, vp: Any, en
     value's), kept as they are where they crowd there no more than those placed anew
     (:meth:`~construct.render.placing.Placing.end_crowd`: a letter that has no room there crowds either way).
     *fixed*: the elements of the rest of the furniture (:func:`fixed_elements`), *lettering*: :func:`end_lettering`
-    at the end state's size, if the caller made them.
+    at the end state's size, if the caller made them.  *marks* may be a function that makes them and *lettered*
+    those of them that are lettered, in their order (:meth:`~construct.render.placing.Placing.end_lettering_at`:
+    the rest are made only where a letter is placed anew).
     """
     fixed = fixed_elements(sheet, vp, end, factory) if fixed is None else fixed
     texts = [b for els in fixed for e in els if (b := lettering_box(e, end.size, style)) is not None]
     lettering = end_lettering(sheet, vp, style, end.size) if lettering is None else lettering
-    crowd = placing.end_crowd(vp, end.letter, marks, texts, lettering, keep) if keep is not None else set()
+    if lettered is None:
+        marks = lettered = marks() if callable(marks) else marks
+    crowd = placing.end_crowd(vp, end.letter, lettered, texts, lettering, keep) if keep is not None else set()
     if keep is not None and not crowd:
         return keep
-    got = placing.end_lettering_at(vp, end.letter, marks, texts, lettering, _result_strokes(sheet, vp))
+    got = placing.end_lettering_at(vp, end.letter, marks, texts, lettering, _result_strokes(sheet, vp), lettered)
     built = placing.end_spots
     got = {**built, **{f: rel for f, rel in got.items()
                        if f in built and (rel[2] >= LEADER_FROM) == (built[f][2] >= LEADER_FROM)}} if got else built
-    if keep is not None and len(placing.end_crowd(vp, end.letter, marks, texts, lettering, got)) >= len(crowd):
+    if keep is not None and len(placing.end_crowd(vp, end.letter, lettered, texts, lettering, got)) >= len(crowd):
         return keep
     return got
 
@@ -412,6 +418,17 @@ class NumbersFactory:
 
 #: The attributes of the end state's furniture that carry its numbers, in the order the live data keys them.
 _NUMBERED = ("x1", "y1", "x2", "y2", "cx", "cy", "r", "x", "y", "d", "transform")
+
+
+@functools.lru_cache(maxsize=256)
+def _numbered(names: tuple[str, ...]) -> tuple[str, ...]:
+    """Those of the attributes *names* (an element's) that carry numbers (:data:`_NUMBERED`), in its order: an element's
+    attributes are asked once for each set of them (the plate's elements come in a handful: a line, a text, ...).
+
+    >>> _numbered(("class", "y", "x", "id"))
+    ('x', 'y')
+    """
+    return tuple(a for a in _NUMBERED if a in names)
 _NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
 
 
@@ -431,11 +448,12 @@ def furniture_numbers(group: Element, *, exact: bool = True) -> tuple[list[tuple
     keys, nums, texts = [], [], {}
     r2 = (lambda v: round(v, 2) + 0.0) if exact else (lambda v: v)  # noqa: E731
     for e in group.elements:
-        ident = e.attribs.get("id")
+        attribs = e.attribs
+        ident = attribs.get("id")
         if ident is None:
             continue
-        for a in _NUMBERED:
-            v = e.attribs.get(a)
+        for a in _numbered(tuple(attribs)):
+            v = attribs[a]
             if v is None:
                 continue
             if isinstance(v, list) and len(v) == 1:  # (x=[...], as the writer takes it)

@@ -38,7 +38,7 @@ from typing import Any, Iterable, Sequence
 import numpy as np
 
 __all__ = ["place", "spots_of", "spots_extent", "lines_near", "LineIndex", "label_box", "text_box", "text_width", "segment_meets_box", "clipped_segment", "RANK", "LEADER_FROM",
-           "DEFAULT_FONT", "line_pieces", "line_pieces_one_by_one"]
+           "DEFAULT_FONT", "line_pieces", "line_pieces_one_by_one", "near_rows"]
 
 #: Rank of a role: lower is placed first.
 RANK = {"result": 0, "given": 1}
@@ -559,11 +559,19 @@ def lines_near(segments: Sequence[tuple[float, float, float, float]], box: tuple
     >>> lines_near([(0.0, 0.0, 1.0, 1.0), (5.0, 5.0, 9.0, 5.0)], (2.0, 2.0, 3.0, 3.0), 1.5)
     [(0.0, 0.0, 1.0, 1.0)]
     """
-    seg = np.array(segments, dtype=float).reshape(-1, 4)
-    lo, hi = np.minimum(seg[:, :2], seg[:, 2:]), np.maximum(seg[:, :2], seg[:, 2:])
-    near = ((lo[:, 0] <= box[2] + margin) & (hi[:, 0] >= box[0] - margin) & (lo[:, 1] <= box[3] + margin)
-            & (hi[:, 1] >= box[1] - margin))
+    near = near_rows(np.array(segments, dtype=float).reshape(-1, 4), box, margin)
     return [s for s, k in zip(segments, near.tolist()) if k]
+
+
+def near_rows(seg: np.ndarray, box: tuple[float, float, float, float], margin: float) -> np.ndarray:
+    """:func:`lines_near` of segments as rows (x0, y0, x1, y1): which of them come within *margin* of *box* (a mask).
+
+    >>> near_rows(np.array([(0.0, 0.0, 1.0, 1.0), (5.0, 5.0, 9.0, 5.0)]), (2.0, 2.0, 3.0, 3.0), 1.5).tolist()
+    [True, False]
+    """
+    lo, hi = np.minimum(seg[:, :2], seg[:, 2:]), np.maximum(seg[:, :2], seg[:, 2:])
+    return ((lo[:, 0] <= box[2] + margin) & (hi[:, 0] >= box[0] - margin) & (lo[:, 1] <= box[3] + margin)
+            & (hi[:, 1] >= box[1] - margin))
 
 
 @functools.lru_cache(maxsize=8)

@@ -32,7 +32,7 @@ import numpy as np
 
 from .camera import PLAYER_FIGURE_PX, THIN_FROM, ZOOM_LEVELS, View
 from .gaps import Gap
-from .lettering import HALO_PX, LEADER_FROM, LineIndex, label_box, lines_near, place, spots_extent, text_box
+from .lettering import HALO_PX, LEADER_FROM, LineIndex, label_box, near_rows, place, spots_extent, text_box
 from .paths import bezier_arrays
 from .plate import plain
 from .scene import Mark, MarkKind, Scene, label_offset_direction
@@ -41,7 +41,7 @@ from .svgdoc import fmt
 from .tags import TAG_FARTHER, place_tags
 from .viewport import Viewport
 
-__all__ = ["PlacedLabel", "Placing", "furniture_text_box", "text_gap", "TAG_FARTHER"]
+__all__ = ["PlacedLabel", "Placing", "crowded", "furniture_text_box", "text_gap", "TAG_FARTHER"]
 
 
 
@@ -380,11 +380,11 @@ class Placing:
                          f"translate({fmt(dx)}px,{fmt(dy)}px)}}")
         self.end_spots, self.end_rules = spots, rules
 
-    def end_lettering_at(self, vp: Viewport, letter: float, marks: Sequence[Mark],
+    def end_lettering_at(self, vp: Viewport, letter: float, marks: "Sequence[Mark] | Callable[[], Sequence[Mark]]",
                          taken: Sequence[tuple[float, float, float, float]],
                          lettering: Sequence[tuple[str, tuple[float, float], str]],
                          strokes: Sequence[tuple[float, float, float, float]] = (),
-                         ) -> dict[str, tuple[float, float, float]]:
+                         lettered: Sequence[Mark] | None = None) -> dict[str, tuple[float, float, float]]:
         """The plate's *lettering* placed as :meth:`place_end` places it, at another value of a live given: its end
         state's *marks*, *taken* boxes and *strokes* those of that value (drawn on *vp*), at the built end state's
         *letter* scale (the page's there; a fresh build's end state keeps it too); the marks' own letters
@@ -393,13 +393,19 @@ class Placing:
         that move: each stays where it stood at the built value unless it would lie there on another letter or on
         the plate's other writing (the values the plate writes crowd as the figure changes: Tafel 2's inertia
         pressures at L/r = 2 were written on one another where the built offsets were kept everywhere); those
-        are placed anew among the rest."""
+        are placed anew among the rest.  *marks* may be given as a function that makes them, and *lettered* as
+        those of them that are lettered (:meth:`end_lettered`, in their order): where nothing crowds, only their
+        letters are read (a live sweep asks at every value, and the rest of the marks, a curve's hundreds of
+        points, are made only where a letter is placed anew)."""
         st = self.style
         size = st.label_size * letter
         held = list(taken)
-        crowd, letters, at = self._end_crowd(vp, letter, marks, taken, lettering, self.end_spots)
+        if lettered is None:
+            marks = lettered = marks() if callable(marks) else marks
+        crowd, letters, at = self._end_crowd(vp, letter, lettered, taken, lettering, self.end_spots)
         if not crowd:
             return {}
+        marks = marks() if callable(marks) else marks
         held += list(letters.values()) + [b for f, b in at.items() if f not in crowd]
         lettering = [it for it in lettering if it[0] in crowd or it[0] not in at]
         items, got, dots, lines = self._end_place(vp, letter, marks, held, lettering, strokes, lettered=False)
@@ -422,6 +428,13 @@ class Placing:
         """Whether :meth:`end_lettering_at` reads the end state's mark *m* (a point, a lettered mark, a result
         line): the plate's lettering at another value is placed among those alone."""
         return m.kind is MarkKind.POINT or bool(m.label) or (m.role == "result" and m.kind.stroked)
+
+    @staticmethod
+    def end_lettered(m: Mark) -> bool:
+        """Whether the end state's mark *m* is lettered: of the marks :meth:`end_lettering_at` reads
+        (:meth:`end_obstacle`), those whose letters it asks whether the plate's lettering crowds
+        (:meth:`end_crowd`)."""
+        return bool(m.label)
 
     def end_crowd(self, vp: Viewport, letter: float, marks: Sequence[Mark],
                   taken: Sequence[tuple[float, float, float, float]],
@@ -451,10 +464,7 @@ class Placing:
         # or the plate's other writing
         at = {fid: label_box(p[0] + letter * spots[fid][0], p[1] + letter * spots[fid][1], text, size,
                              st.label_font, st.label_italic) for fid, p, text in lettering if fid in spots}
-        touching = self.end_touching
-        crowd = {f for f, b in at.items() if any(_meet(b, o) for o in taken) or any(
-            g != f and frozenset((f, g)) not in touching and _meet(b, o) for g, o in [*at.items(), *letters.items()])}
-        return crowd, letters, at
+        return crowded(at, letters, taken, self.end_touching), letters, at
 
     def _end_place(self, vp: Viewport, letter: float, marks: Sequence[Mark],
                    taken: Sequence[tuple[float, float, float, float]],
@@ -469,11 +479,8 @@ class Placing:
         span = self.scene.bbox[2] - self.scene.bbox[0]
         look = self.scene.end_look
         dots = [vp.px(*m.geom) for m in marks if m.kind is MarkKind.POINT and "hidden" not in look(m).split()]
-        lines = list(strokes)
-        for m in marks:
-            if m.role == "result" and m.kind.stroked and "hidden" not in look(m).split():
-                pts = [vp.px(*q) for q in _polyline(m, vp.scale)]
-                lines.extend((a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:]))
+        lines = _result_pieces(vp, [m for m in marks if m.role == "result" and m.kind.stroked
+                                    and "hidden" not in look(m).split()], strokes)
         items, prefer = [], {}
         for fid, at, text in lettering:
             items.append((fid, "result", 0, at, (0.0, 1.0), text))
@@ -492,7 +499,7 @@ class Placing:
         # the result lines are most of the end state's)
         halo = HALO_PX / 2 * letter
         near = spots_extent(items, size, font=st.label_font, italic=st.label_italic, halo=halo, prefer=prefer)
-        index = LineIndex(size, lines if near is None else lines_near(lines, near, self.line_reach + size))
+        index = LineIndex(size, lines if near is None else lines[near_rows(lines, near, self.line_reach + size)])
         got = place(items, size, dots, index, font=st.label_font, italic=st.label_italic,
                     taken=list(taken), keep=False, prefer=prefer, halo=halo, reach=self.line_reach)
         return items, got, dots, lines
@@ -577,6 +584,51 @@ def _meet(a: tuple[float, float, float, float], b: tuple[float, float, float, fl
     return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
 
+def crowded(boxes: dict[str, tuple[float, float, float, float]], others: dict[str, tuple[float, float, float, float]],
+            taken: Sequence[tuple[float, float, float, float]], touching: "set[frozenset[str]]") -> set[str]:
+    """The ids of *boxes* ({id: (x0, y0, x1, y1)}, canvas px) whose box meets one of *taken*, another of *boxes* or
+    one of *others* (a pair in *touching* aside: they touch where they were placed), in the order of *boxes*: each
+    box against every other at once (a live sweep asks it of the plate's lettering at every value: Tafel 2's
+    twenty-odd values and letters, 300 values).
+
+    >>> sorted(crowded({"a": (0, 0, 2, 2), "b": (1, 1, 3, 3), "c": (10, 0, 12, 2)}, {"P": (11, 1, 13, 3)}, [], set()))
+    ['a', 'b', 'c']
+    >>> sorted(crowded({"a": (0, 0, 2, 2), "b": (1, 1, 3, 3)}, {}, [(20, 20, 21, 21)], {frozenset("ab")}))
+    []
+    """
+    if not boxes:
+        return set()
+    ids = list(boxes)
+    names = ids + list(others)
+    a = np.array(list(boxes.values()), dtype=float).reshape(-1, 4)
+    o = np.concatenate([a, np.array(list(others.values()), dtype=float).reshape(-1, 4)])
+    t = np.array(taken, dtype=float).reshape(-1, 4)
+
+    def meets(p: np.ndarray, q: np.ndarray) -> np.ndarray:  # (_meet of every row of p with every row of q)
+        p0, p1, p2, p3 = (c[:, None] for c in p.T)
+        return (p0 < q[:, 2]) & (q[:, 0] < p2) & (p1 < q[:, 3]) & (q[:, 1] < p3)
+
+    hit = meets(a, o)
+    row = {f: i for i, f in enumerate(ids)}
+    for j, g in enumerate(names):  # (a box does not crowd itself, nor one of the same id)
+        if g in row:
+            hit[row[g], j] = False
+    if touching:
+        col: dict[str, list[int]] = {}
+        for j, g in enumerate(names):
+            col.setdefault(g, []).append(j)
+        for pair in touching:
+            if len(pair) == 2:
+                f, g = pair
+                for f, g in ((f, g), (g, f)):
+                    if f in row and g in col:
+                        hit[row[f], col[g]] = False
+    crowd = hit.any(axis=1)
+    if len(t):
+        crowd |= meets(a, t).any(axis=1)
+    return {f for f, c in zip(ids, crowd.tolist()) if c}
+
+
 _QUARTERS = np.array([0.25, 0.5, 0.75, 1.0])[:, None]
 
 
@@ -599,6 +651,67 @@ def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
         pts = s * s * s * p1 + 3 * s * s * t * c1 + 3 * s * t * t * c2 + t * t * t * p2
         return [tuple(g[0]), *map(tuple, pts.reshape(-1, 2).tolist())]
     return list(g)
+
+
+#: A line of at least this many points is mapped on arrays (:func:`_pieces`), a shorter one point by point: numpy's
+#: dozen calls cost more than a few points' sums.
+_ARRAY_FROM = 24
+
+
+def _result_pieces(vp: Any, marks: Sequence[Mark], strokes: Sequence[tuple[float, float, float, float]]) -> np.ndarray:
+    """The straight pieces of the line *marks* (:func:`_polyline`) on the canvas of *vp*, after the *strokes* (canvas
+    px), in order: rows x0, y0, x1, y1.  A long line's points are mapped at once (:func:`_pieces`: a live sweep places
+    the plate's lettering at hundreds of values, among curves of hundreds of points), a short one's one by one (the
+    same sums either way)."""
+    blocks, run = [], list(strokes)
+    for m in marks:
+        curve = m.kind is MarkKind.CURVE and not m.straight and len(m.geom) > 2
+        pts = _polyline_rows(m, vp.scale) if curve else _polyline(m, vp.scale)
+        if len(pts) >= _ARRAY_FROM:
+            if run:
+                blocks.append(np.asarray(run, dtype=float).reshape(-1, 4))
+                run = []
+            blocks.append(_pieces(vp, pts))
+        else:
+            p = [vp.px(*q) for q in (pts.tolist() if curve else pts)]
+            run.extend((a[0], a[1], b[0], b[1]) for a, b in zip(p, p[1:]))
+    if run or not blocks:
+        blocks.append(np.asarray(run, dtype=float).reshape(-1, 4))
+    return blocks[0] if len(blocks) == 1 else np.concatenate(blocks)
+
+
+def _polyline_rows(m: Mark, scale: float) -> np.ndarray:
+    """:func:`_polyline` as rows x, y (a curve's points made on arrays stay arrays: not made into tuples and back).
+
+    >>> m = Mark("c", 1, "c", MarkKind.CURVE, ((0.0, 0.0), (1.0, 1.0), (2.0, 0.0)), "result", "curve", "")
+    >>> _polyline_rows(m, 10.0).tolist() == [list(p) for p in _polyline(m, 10.0)]
+    True
+    """
+    g = m.geom
+    if m.kind is MarkKind.CURVE and not m.straight and len(g) > 2:
+        p1, c1, c2, p2 = (a[:, None] for a in bezier_arrays(np.asarray(g, dtype=float)))
+        t = _QUARTERS
+        s = 1 - t
+        pts = s * s * s * p1 + 3 * s * s * t * c1 + 3 * s * t * t * c2 + t * t * t * p2
+        return np.concatenate([np.asarray(g[:1], dtype=float).reshape(1, 2), pts.reshape(-1, 2)])
+    return np.asarray(_polyline(m, scale), dtype=float).reshape(-1, 2)
+
+
+def _pieces(vp: Any, pts: "Sequence[tuple[float, float]] | np.ndarray") -> np.ndarray:
+    """The straight pieces between the points *pts* (drawing units) on the canvas of *vp*: rows x0, y0, x1, y1, the
+    points mapped by ``vp.px`` of their coordinates as arrays (a viewport's map, and a sweep's value's: the same sums
+    as point by point, :func:`_segments` of the points mapped one by one).
+
+    >>> vp = Viewport(xmin=0.0, ymax=2.0, scale=10.0, margin=5.0, left=0.0, top=0.0, width=100.0, height=100.0)
+    >>> pts = [(0.0, 0.0), (1.0, 2.0), (1.5, 0.5)]
+    >>> list(map(tuple, _pieces(vp, pts).tolist())) == _segments([vp.px(*q) for q in pts])
+    True
+    """
+    q = np.asarray(pts, dtype=float).reshape(-1, 2)
+    x, y = vp.px(q[:, 0], q[:, 1])
+    out = np.empty((max(len(q) - 1, 0), 4))
+    out[:, 0], out[:, 1], out[:, 2], out[:, 3] = x[:-1], y[:-1], x[1:], y[1:]
+    return out
 
 
 def _segments(pts: Sequence[tuple[float, float]]) -> list[tuple[float, float, float, float]]:

@@ -48,6 +48,7 @@ True
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from dataclasses import dataclass, field, fields, replace
@@ -247,11 +248,18 @@ def anchors(items: Sequence[Any]) -> list[XY]:
 def shifted(item: Any, sx: Callable[[float], float]) -> Any:
     """*item* with every point's x mapped by *sx* (a broken axis)."""
     changes = {}
-    for f in fields(item):
-        v = getattr(item, f.name)
+    for name in _field_names(type(item)):
+        v = getattr(item, name)
         if isinstance(v, tuple) and len(v) == 2 and all(isinstance(c, (int, float)) for c in v):
-            changes[f.name] = (sx(v[0]), v[1])
+            changes[name] = (sx(v[0]), v[1])
     return replace(item, **changes) if changes else item
+
+
+@functools.lru_cache(maxsize=64)
+def _field_names(kind: type) -> tuple[str, ...]:
+    """The names of the fields of the furniture item class *kind*, in their order (asked once a class: a live sweep
+    shifts every item of the plate at every value)."""
+    return tuple(f.name for f in fields(kind))
 
 
 def extent(items: Sequence[Any]) -> tuple[float, float, float, float] | None:
@@ -459,6 +467,8 @@ def subscript_runs(text: str) -> list[tuple[str, bool]]:
     >>> subscript_runs("P = F·p_ü"), subscript_runs("B_{max} t"), subscript_runs("s₁")
     ([('P = F·p', False), ('ü', True)], [('B', False), ('max', True), (' t', False)], [('s₁', False)])
     """
+    if "_" not in text:  # (no index: one run; most of a plate's texts, written at every value of a live sweep)
+        return [(text, False)]
     out: list[tuple[str, bool]] = []
     pos = 0
     for m in re.finditer(r"_(\{[^}]*\}|[^\W_])", text):

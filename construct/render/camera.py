@@ -41,7 +41,7 @@ import numpy as np
 from .scene import MarkKind, Scene, extreme_points
 from .svgdoc import fmt
 
-__all__ = ["step_views", "views_box", "shots", "step_focus", "step_focus_names", "step_shots", "framed_rows", "step_zooms", "step_details", "read_tenth", "DETAIL_PX", "INSET_MAX", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "NON_SCALING", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
+__all__ = ["step_views", "views_box", "shots", "step_focus", "step_focus_names", "step_shots", "framed_rows", "step_zooms", "step_details", "compass_span", "read_tenth", "DETAIL_PX", "INSET_MAX", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "NON_SCALING", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
            "player_letter_scale"]
 
 #: The step player's figure box in a typical 1400 × 900 browser window (width, height in screen px, as its page
@@ -281,14 +281,15 @@ def step_details(scene: Scene, framing: Framing,
     (the two closest points it works with, the smallest circle it strikes; 0: nothing finer than the whole
     figure shows), at most :data:`INSET_MAX`, and where that detail is (canvas px).  A cluster of points
     within a few pixels of each other (a trisection's thirds, a compass step of a few pixels) is seen
-    magnified, not as one dot.
+    magnified, not as one dot.  The two points the step's compass is set to (:func:`compass_span`) are its
+    circle's radius, not a detail of their own: the circle is.
     """
     drawn = {m.name: m for m in scene.marks}
     whole = PLAYER_FIGURE_PX[0] / framing.span  # screen px per canvas px in the whole figure's view
     out: list[tuple[float, tuple[float, float] | None]] = []
     for s in scene.steps:
         pts: list[tuple[float, float]] = []
-        fine, at = math.inf, None
+        fine, at, struck = math.inf, None, False
         for n in set(s.outputs) | set(s.inputs) | scene.named(s.index):
             m = drawn.get(n)
             if m is None:
@@ -296,19 +297,58 @@ def step_details(scene: Scene, framing: Framing,
             if m.kind is MarkKind.POINT:
                 pts.append(px(*m.geom))
             elif m.kind.round and n in s.outputs:
+                struck = True
                 c = px(*m.geom[:2])
                 r = round(abs(px(m.geom[0] + m.geom[2], m.geom[1])[0] - c[0]), 2)  # (as written)
                 if r < fine:
                     fine, at = r, c
+        span = _read_span(s, drawn, px) if struck else None
         pts = sorted(set((read_tenth(x), read_tenth(y)) for x, y in pts))
         for i, a in enumerate(pts):
             for b in pts[i + 1:i + 8]:
                 d = math.hypot(a[0] - b[0], a[1] - b[1])
-                if d < fine:
+                if d < fine and (a, b) != span:
                     fine, at = d, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
         need = DETAIL_PX / (fine * whole) if 0.0 < fine < math.inf else 0.0
         out.append((min(INSET_MAX, need), at if need > 1.0 else None))
     return out
+
+
+def compass_span(step: Any) -> tuple[str, str] | None:
+    """The two points *step*'s compass is set to, whose distance is the radius of the circle it strikes (about
+    a point through a point: the centre and that point; a segment carried: its ends), or None.
+
+    A step's finest detail (:func:`step_details`, :func:`~construct.render.insets.inset_detail`, the player's
+    ``detail``) is the circle, never this pair beside it: the two are one size by construction, and only the
+    reading (the points to 0.1 px, the radius to 0.01) told them apart -- which a live page, whose points stand
+    0.2 px off, told otherwise, and magnified the pair 340 px from the arc a fresh build magnified (Baumann's
+    effective work at κ = 8, step 426: U-V3 4.3 px apart, the arc about E3 4.33 px round).
+
+    >>> from construct.constructions import get
+    >>> from construct.render.scene import build_scene
+    >>> sc = build_scene(get("inertia-stroke-fractions").figure())
+    >>> [(s.index, s.op, compass_span(s)) for s in sc.steps if s.index in (56, 57, 211)]
+    [(56, 'circle_through', ('x.M5', 'x.M4')), (57, 'intersect', None), (211, 'circle_segment', ('O', 'Yt5'))]
+    """
+    if step.op == "circle_through":
+        return step.inputs[0], step.inputs[1]
+    if step.op == "circle_segment":
+        return step.inputs[1], step.inputs[2]
+    return None
+
+
+def _read_span(step: Any, drawn: Any, px: Callable[[float, float], tuple[float, float]]
+               ) -> tuple[tuple[float, float], tuple[float, float]] | None:
+    """The two points of *step*'s :func:`compass_span` read to 0.1 px (:func:`read_tenth`), in order, as
+    :func:`step_details` compares its points; None where it has none, or they are not both drawn points."""
+    span = compass_span(step)
+    if span is None:
+        return None
+    ms = [drawn.get(n) for n in span]
+    if any(m is None or m.kind is not MarkKind.POINT for m in ms):
+        return None
+    a, b = sorted((read_tenth(px(*m.geom)[0]), read_tenth(px(*m.geom)[1])) for m in ms)
+    return a, b
 
 
 def read_tenth(v: float) -> float:

@@ -605,21 +605,27 @@ li a.later{color:#bbb}
   // null where a fresh build shows none (insets.step_insets and inset_detail: its detail, read as written to 0.1 px,
   // shown DETAIL[0] px large, more than DETAIL[4] times as magnified as the view magnifies the whole)
   function detail(st, v) {
-    var zd = st.zd, fine = Infinity, at = null, pts = [], i, j;
+    var zd = st.zd, fine = Infinity, at = null, pts = [], span = [], i, j;
+    function read(e) { return [Math.round(10 * e.getAttribute("cx")) / 10, Math.round(10 * e.getAttribute("cy")) / 10]; }
     zd[1].forEach(function (cr) {  // a circle or arc the step strikes: its radius
-      var c = find(cr[0]), m = find(cr[1]);
+      var c = find(cr[0]), m = find(cr[1]), a = cr[2] && find(cr[2]), b = cr[3] && find(cr[3]);
       if (!c || !m) { return; }
       var r = m.tagName === "circle" ? +m.getAttribute("r") : +(m.getAttribute("d").match(/-?[0-9.]+(?:e[-+]?[0-9]+)?/g) || [])[2];
       if (r < fine) { fine = r; at = [+c.getAttribute("cx"), +c.getAttribute("cy")]; }
+      if (a && b) { span.push(read(a).concat(read(b))); }  // (the compass's span: the radius, not a detail of its own)
     });
     zd[0].forEach(function (id) {  // the points, read to 0.1 px
       var e = find(id);
-      if (e) { pts.push([Math.round(10 * e.getAttribute("cx")) / 10, Math.round(10 * e.getAttribute("cy")) / 10]); }
+      if (e) { pts.push(read(e)); }
     });
+    function spans(p, q) {
+      return span.some(function (s) { return s[0] === p[0] && s[1] === p[1] && s[2] === q[0] && s[3] === q[1]
+        || s[0] === q[0] && s[1] === q[1] && s[2] === p[0] && s[3] === p[1]; });
+    }
     for (i = 0; i < pts.length; i++) {
       for (j = i + 1; j < pts.length; j++) {
         var d = Math.hypot(pts[i][0] - pts[j][0], pts[i][1] - pts[j][1]);
-        if (d > 0 && d < fine) { fine = d; at = [(pts[i][0] + pts[j][0]) / 2, (pts[i][1] + pts[j][1]) / 2]; }
+        if (d > 0 && d < fine && !spans(pts[i], pts[j])) { fine = d; at = [(pts[i][0] + pts[j][0]) / 2, (pts[i][1] + pts[j][1]) / 2]; }
       }
     }
     if (!at) { return null; }
@@ -627,11 +633,11 @@ li a.later{color:#bbb}
     var need = Math.min(DETAIL[1], DETAIL[0] * Math.max(full[2], full[3] * FIG[0] / FIG[1]) / (fine * FIG[0]));
     var zv = Math.max(full[2] / FIG[0], full[3] / FIG[1]) / Math.max(v[2] / FIG[0], v[3] / FIG[1], 1e-12);
     if (!(need > 1 && need > DETAIL[4] * zv)) { return null; }
-    // (the box: the built one in proportion to the detail -- the view here is framed anew and may stand apart
-    // from a fresh build's --, else as a fresh build sizes it in this view)
+    // (the box as a fresh build sizes it in this view: in proportion to the detail where the inset magnifies it
+    // past twice the view, whatever the view; twice the view where the detail needs less -- the built box in
+    // proportion to the detail was 50-72 px off a fresh build's there, Tafel 2's step 105 at L/r = 4.37 and 5.55)
     var q = Math.min(FIG[0] / v[2], FIG[1] / v[3]) * Math.max(2, need / zv), r2 = function (x) { return Math.round(100 * x) / 100; };
-    var z0 = st.z0 || (st.z && (st.z0 = st.z.slice()));
-    var w = z0 ? z0[2] * fine / zd[2] : DETAIL[2] / q, h = z0 ? z0[3] * fine / zd[2] : DETAIL[3] / q;
+    var w = DETAIL[2] / q, h = DETAIL[3] / q;
     return [r2(at[0] - w / 2), r2(at[1] - h / 2), r2(w), r2(h)];
   }
   function drawInset(view) {

@@ -589,17 +589,18 @@ def test_a_clusters_inset_is_where_the_page_finds_it_and_holds_its_points():
     assert len(clusters) > 20
     for k, st in clusters:
         ids, rounds, size = st["zd"]
-        fine, at, spans = math.inf, None, []
+        cands, spans = [], []
         for centre, mark, *span in rounds:
-            r = circles[mark][2] if mark in circles else arcs[mark]
-            if r < fine:
-                fine, at = r, circles[centre][:2]
+            cands.append((circles[mark][2] if mark in circles else arcs[mark], circles[centre][:2]))
             # (the two points the compass is set to: the circle's radius, not compared)
             spans += [sorted((tenth(circles[i][0]), tenth(circles[i][1])) for i in span)] if span else []
         pts = [(tenth(circles[i][0]), tenth(circles[i][1])) for i in ids]
         for a, b in itertools.combinations(pts, 2):
-            if 0 < math.dist(a, b) < fine and sorted((a, b)) not in spans:
-                fine, at = math.dist(a, b), ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+            if 0 < math.dist(a, b) and sorted((a, b)) not in spans:
+                cands.append((math.dist(a, b), ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)))
+        # (the finest's size, about the first within a tie of it: circles first, then pairs in order)
+        fine = min(c[0] for c in cands)
+        at = next(c[1] for c in cands if c[0] < fine + camera.DETAIL_TIE_PX)
         x, y, w, h = st["z"]
         assert fine == pytest.approx(size, abs=1e-4), k  # (written to 4 decimals)
         assert (x + w / 2, y + h / 2) == pytest.approx(at, abs=0.02), k

@@ -41,7 +41,7 @@ import numpy as np
 from .scene import MarkKind, Scene, extreme_points
 from .svgdoc import fmt
 
-__all__ = ["step_views", "views_box", "shots", "step_focus", "step_focus_names", "step_shots", "framed_rows", "step_zooms", "step_details", "compass_span", "read_tenth", "DETAIL_PX", "INSET_MAX", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "NON_SCALING", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
+__all__ = ["step_views", "views_box", "shots", "step_focus", "step_focus_names", "step_shots", "framed_rows", "step_zooms", "step_details", "finest_detail", "DETAIL_TIE_PX", "compass_span", "read_tenth", "DETAIL_PX", "INSET_MAX", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "NON_SCALING", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
            "player_letter_scale"]
 
 #: The step player's figure box in a typical 1400 × 900 browser window (width, height in screen px, as its page
@@ -278,40 +278,67 @@ UNSEEN = 2 * MOVE
 def step_details(scene: Scene, framing: Framing,
                  px: Callable[[float, float], tuple[float, float]]) -> list[tuple[float, tuple[float, float] | None]]:
     """Per step, how much its view must magnify for its finest detail to be :data:`DETAIL_PX` on the screen
-    (the two closest points it works with, the smallest circle it strikes; 0: nothing finer than the whole
-    figure shows), at most :data:`INSET_MAX`, and where that detail is (canvas px).  A cluster of points
+    (:func:`finest_detail` of the points it works with and the circles it strikes; 0: nothing finer than the
+    whole figure shows), at most :data:`INSET_MAX`, and where that detail is (canvas px).  A cluster of points
     within a few pixels of each other (a trisection's thirds, a compass step of a few pixels) is seen
-    magnified, not as one dot.  The two points the step's compass is set to (:func:`compass_span`) are its
-    circle's radius, not a detail of their own: the circle is.
+    magnified, not as one dot.
     """
-    drawn = {m.name: m for m in scene.marks}
+    drawn = scene.marks_by_name
     whole = PLAYER_FIGURE_PX[0] / framing.span  # screen px per canvas px in the whole figure's view
     out: list[tuple[float, tuple[float, float] | None]] = []
     for s in scene.steps:
         pts: list[tuple[float, float]] = []
-        fine, at, struck = math.inf, None, False
-        for n in set(s.outputs) | set(s.inputs) | scene.named(s.index):
+        rounds: list[tuple[float, tuple[float, float]]] = []
+        for n in dict.fromkeys((*s.outputs, *s.inputs, *sorted(scene.named(s.index)))):
             m = drawn.get(n)
             if m is None:
                 continue
             if m.kind is MarkKind.POINT:
-                pts.append(px(*m.geom))
+                pts.append((read_tenth(px(*m.geom)[0]), read_tenth(px(*m.geom)[1])))
             elif m.kind.round and n in s.outputs:
-                struck = True
                 c = px(*m.geom[:2])
-                r = round(abs(px(m.geom[0] + m.geom[2], m.geom[1])[0] - c[0]), 2)  # (as written)
-                if r < fine:
-                    fine, at = r, c
-        span = _read_span(s, drawn, px) if struck else None
-        pts = sorted(set((read_tenth(x), read_tenth(y)) for x, y in pts))
-        for i, a in enumerate(pts):
-            for b in pts[i + 1:i + 8]:
-                d = math.hypot(a[0] - b[0], a[1] - b[1])
-                if d < fine and (a, b) != span:
-                    fine, at = d, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+                rounds.append((round(abs(px(m.geom[0] + m.geom[2], m.geom[1])[0] - c[0]), 2), c))  # (as written)
+        span = _read_span(s, drawn, px) if rounds else None
+        fine, at = finest_detail(rounds, list(dict.fromkeys(pts)), [span] if span else [])
         need = DETAIL_PX / (fine * whole) if 0.0 < fine < math.inf else 0.0
         out.append((min(INSET_MAX, need), at if need > 1.0 else None))
     return out
+
+
+#: Two details of a step whose sizes differ by less than this (px, as read) are one size to the player: the step's
+#: detail is magnified as the finer needs, about the first of them (:func:`finest_detail`).  A live page draws each point up to 0.2 px
+#: off a fresh build's, so that a pair and its mirror image (Baumann's a and z, where a line meets a circle about C:
+#: 6.6 px from C both) were told apart by that error, and the page magnified the other one.
+DETAIL_TIE_PX = 0.5
+
+
+def finest_detail(rounds: Sequence[tuple[float, tuple[float, float]]], points: Sequence[tuple[float, float]],
+                  spans: Sequence[tuple[tuple[float, float], tuple[float, float]]] = ()
+                  ) -> tuple[float, tuple[float, float] | None]:
+    """A step's finest detail, as its size (px) and where it is: of the circles it strikes (*rounds*: radius and
+    centre, the radius as written) and of every two of its *points* (read to 0.1 px: :func:`read_tenth`; apart,
+    not the two of a compass's span in *spans*, :func:`compass_span`: their distance is the circle's radius), the
+    size of the finest, the place of the first -- circles first, then pairs in the points' order -- within
+    :data:`DETAIL_TIE_PX` of it.  The player's ``detail`` applies the same rule to the points as it draws them.
+    (inf, None): none.
+
+    >>> finest_detail([(4.33, (10.0, 10.0))], [(0.0, 0.0), (4.3, 0.0), (0.0, 9.0)], [((0.0, 0.0), (4.3, 0.0))])
+    (4.33, (10.0, 10.0))
+    >>> finest_detail([], [(0.0, 0.0), (6.7, 0.0), (0.0, 6.6)])  # (6.7 is within 0.5 px of 6.6: the first pair's place)
+    (6.6, (3.35, 0.0))
+    >>> finest_detail([], [(0.0, 0.0), (7.2, 0.0), (0.0, 6.6)])
+    (6.6, (0.0, 3.3))
+    """
+    cands = list(rounds)
+    for i, a in enumerate(points):
+        for b in points[i + 1:]:
+            d = math.hypot(a[0] - b[0], a[1] - b[1])
+            if d > 0.0 and (min(a, b), max(a, b)) not in spans:
+                cands.append((d, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)))
+    if not cands:
+        return math.inf, None
+    least = min(c[0] for c in cands)
+    return least, next(at for size, at in cands if size < least + DETAIL_TIE_PX)
 
 
 def compass_span(step: Any) -> tuple[str, str] | None:

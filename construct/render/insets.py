@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 from typing import Callable, Sequence
 
-from .camera import PLAYER_FIGURE_PX, Framing, View, compass_span, read_tenth, step_details, step_focus, zoom_of
+from .camera import PLAYER_FIGURE_PX, Framing, View, compass_span, finest_detail, read_tenth, step_details, step_focus, zoom_of
 from .scene import MarkKind, Scene
 
 __all__ = ["step_insets", "inset_detail", "inset_details", "points_at", "ring_round", "SLIVER_PX", "SLIVER_RATIO", "INSET_PX", "CLUSTER_ABOVE",
@@ -104,7 +104,7 @@ def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]]
     drawn = scene.marks_by_name
     near = [drawn[n] for n in dict.fromkeys((*s.outputs, *s.inputs, *sorted(scene.named(k))))
             if n in drawn and drawn[n].kind is MarkKind.POINT]
-    fine, at, rounds = math.inf, None, []
+    rounds, circles = [], []
     span = compass_span(s)  # (the pair the compass is set to: its circle's radius, no detail of its own)
     span_ids = [drawn[n].id for n in span if n in drawn and drawn[n].kind is MarkKind.POINT] if span else []
     for n in s.outputs:
@@ -123,16 +123,10 @@ def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]]
         if centre is None:
             return None  # (the page could not find it anew)
         rounds.append([centre, m.id] + (span_ids if len(span_ids) == 2 else []))
-        if round(m.geom[2] * scale, 2) < fine:  # (its radius as written: the page reads it)
-            fine, at = round(m.geom[2] * scale, 2), c
+        circles.append((round(m.geom[2] * scale, 2), c))  # (its radius as written: the page reads it)
     read = {m.id: (read_tenth(px(*m.geom)[0]), read_tenth(px(*m.geom)[1])) for m in near}
-    skip = {tuple(sorted(read[i] for i in r[2:])) for r in rounds if len(r) == 4}  # (the span, read as the page)
-    pts = [read[m.id] for m in near]
-    for i, a in enumerate(pts):
-        for b in pts[i + 1:]:
-            d = math.hypot(a[0] - b[0], a[1] - b[1])
-            if 0.0 < d < fine and (min(a, b), max(a, b)) not in skip:
-                fine, at = d, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+    spans = [(min(a, b), max(a, b)) for r in rounds if len(r) == 4 for a, b in [(read[r[2]], read[r[3]])]]
+    fine, at = finest_detail(circles, [read[m.id] for m in near], spans)
     # (the box rounded to 0.01 px)
     if at is None or box is not None and (abs(at[0] - box[0] - box[2] / 2) > 0.02
                                           or abs(at[1] - box[1] - box[3] / 2) > 0.02):

@@ -17,7 +17,6 @@ True
 
 from __future__ import annotations
 
-import math
 from typing import Callable, Sequence
 
 from .camera import PLAYER_FIGURE_PX, Framing, View, compass_span, finest_detail, read_tenth, step_details, step_focus, zoom_of

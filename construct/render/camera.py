@@ -294,7 +294,8 @@ def step_details(scene: Scene, framing: Framing,
             if m is None:
                 continue
             if m.kind is MarkKind.POINT:
-                pts.append((read_tenth(px(*m.geom)[0]), read_tenth(px(*m.geom)[1])))
+                x, y = px(*m.geom)
+                pts.append((read_tenth(x), read_tenth(y)))
             elif m.kind.round and n in s.outputs:
                 c = px(*m.geom[:2])
                 rounds.append((round(abs(px(m.geom[0] + m.geom[2], m.geom[1])[0] - c[0]), 2), c))  # (as written)
@@ -329,16 +330,17 @@ def finest_detail(rounds: Sequence[tuple[float, tuple[float, float]]], points: S
     >>> finest_detail([], [(0.0, 0.0), (7.2, 0.0), (0.0, 6.6)])
     (6.6, (0.0, 3.3))
     """
-    cands = list(rounds)
-    for i, a in enumerate(points):
-        for b in points[i + 1:]:
-            d = math.hypot(a[0] - b[0], a[1] - b[1])
-            if d > 0.0 and (min(a, b), max(a, b)) not in spans:
-                cands.append((d, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)))
-    if not cands:
+    pairs = [(a, b) for i, a in enumerate(points) for b in points[i + 1:]
+             if a != b and (not spans or (min(a, b), max(a, b)) not in spans)]
+    sizes = [r for r, _ in rounds] + [math.hypot(a[0] - b[0], a[1] - b[1]) for a, b in pairs]
+    if not sizes:
         return math.inf, None
-    least = min(c[0] for c in cands)
-    return least, next(at for size, at in cands if size < least + DETAIL_TIE_PX)
+    least = min(sizes)
+    first = next(i for i, size in enumerate(sizes) if size < least + DETAIL_TIE_PX)
+    if first < len(rounds):
+        return least, rounds[first][1]
+    a, b = pairs[first - len(rounds)]
+    return least, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
 
 
 def compass_span(step: Any) -> tuple[str, str] | None:
@@ -374,7 +376,8 @@ def _read_span(step: Any, drawn: Any, px: Callable[[float, float], tuple[float, 
     ms = [drawn.get(n) for n in span]
     if any(m is None or m.kind is not MarkKind.POINT for m in ms):
         return None
-    a, b = sorted((read_tenth(px(*m.geom)[0]), read_tenth(px(*m.geom)[1])) for m in ms)
+    (ax, ay), (bx, by) = (px(*m.geom) for m in ms)
+    a, b = sorted(((read_tenth(ax), read_tenth(ay)), (read_tenth(bx), read_tenth(by))))
     return a, b
 
 

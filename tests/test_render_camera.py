@@ -589,17 +589,40 @@ def test_a_clusters_inset_is_where_the_page_finds_it_and_holds_its_points():
     assert len(clusters) > 20
     for k, st in clusters:
         ids, rounds, size = st["zd"]
-        fine, at = math.inf, None
-        for centre, mark in rounds:
-            r = circles[mark][2] if mark in circles else arcs[mark]
-            if r < fine:
-                fine, at = r, circles[centre][:2]
+        cands, spans = [], []
+        for centre, mark, *span in rounds:
+            cands.append((circles[mark][2] if mark in circles else arcs[mark], circles[centre][:2]))
+            # (the two points the compass is set to: the circle's radius, not compared)
+            spans += [sorted((tenth(circles[i][0]), tenth(circles[i][1])) for i in span)] if span else []
         pts = [(tenth(circles[i][0]), tenth(circles[i][1])) for i in ids]
         for a, b in itertools.combinations(pts, 2):
-            if 0 < math.dist(a, b) < fine:
-                fine, at = math.dist(a, b), ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+            if 0 < math.dist(a, b) and sorted((a, b)) not in spans:
+                cands.append((math.dist(a, b), ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)))
+        # (the finest's size, about the first within a tie of it: circles first, then pairs in order)
+        fine = min(c[0] for c in cands)
+        at = next(c[1] for c in cands if c[0] < fine + camera.DETAIL_TIE_PX)
         x, y, w, h = st["z"]
         assert fine == pytest.approx(size, abs=1e-4), k  # (written to 4 decimals)
         assert (x + w / 2, y + h / 2) == pytest.approx(at, abs=0.02), k
         inside = [p for p, *_ in st["zp"] if x <= circles[p][0] <= x + w and y <= circles[p][1] <= y + h]
         assert inside, (k, st["z"], st["zp"])
+
+
+@pytest.mark.parametrize("name, params, ks", [
+    ("effective-work", {"parts": 9, "rod_ratio": 5, "kappa": 8.0}, (426, 554, 682, 746, 838)),
+    ("inertia-stroke-fractions", {"rod_ratio": 5.0}, (105, 149, 211, 233, 303, 311))])
+def test_a_compass_steps_detail_is_its_circle_not_the_span_it_carries(name, params, ks):
+    """A step that carries a length with the compass (Baumann's acceleration force taken off the steam line: the
+    span U-V3 set on the compass, the arc struck about E3; Tafel 2's r·cos ω = O-Y5 carried to U) strikes an arc
+    exactly as round as its two points are apart.  Read as the page reads them (points to 0.1 px, radii to 0.01)
+    the pair came out 4.3 px apart and the arc 4.33 round, so the inset magnified the pair -- and a live page, its
+    points 0.2 px off, the arc, 340 px away (530 px in Tafel 2).  The detail is the circle: the inset is centred on
+    the point the compass is set on, the step's first input, at every such step."""
+    c = get(name)
+    d = Drawing(scene_for(c, c.figure(**params), ending=True), STYLES["teaching"])
+    drawn = d.scene.marks_by_name
+    for k in ks:
+        s = d.scene.steps[k - 1]
+        assert s.op == "circle_segment" and camera.compass_span(s) == s.inputs[1:3], k
+        x, y, w, h = d.insets[k - 1]
+        assert (x + w / 2, y + h / 2) == pytest.approx(d.vp.px(*drawn[s.inputs[0]].geom), abs=0.02), k

@@ -1416,6 +1416,47 @@ def test_a_cluster_comes_and_goes_with_kappa_as_fresh_builds_show_it(browser):
     page.close()
 
 
+
+@pytest.mark.parametrize("slug, name, params, given, k, values", [
+    ("inertia-stroke-fractions-rod-ratio-5", "inertia-stroke-fractions", {}, "rod_ratio", 211, (4.37, 5.0)),
+    ("inertia-stroke-fractions-rod-ratio-5", "inertia-stroke-fractions", {}, "rod_ratio", 105, (5.55, 5.0)),
+    ("effective-work-kappa-8-parts-9-rod-ratio-5", "effective-work", {"parts": 9, "rod_ratio": 5}, "kappa", 426,
+     (6.0, 8.0))])
+def test_a_compass_steps_inset_magnifies_what_a_fresh_build_magnifies_while_dragging(browser, slug, name, params,
+                                                                                    given, k, values):
+    """A step that carries a length with the compass strikes an arc as round as the span it is set to (Tafel 2's
+    step 211: O-Y5 carried to U, 13.25 px; Baumann's effective work, step 426: U-V3 carried to E3, 4.33 px).  The
+    inset magnifies the arc, at every value, in a fresh build and on the page alike.  The page, its points 0.2 px
+    off a fresh build's, magnified the pair where a fresh build magnified the arc or the other way round: 530 px
+    away at the book's L/r = 5 (368 px at κ = 8 after a drag there), and sized the box from the built one, 47-50 px
+    off at L/r 4.37 and 5.55.  Dragged with ``input`` events alone, then let go: the inset's box is a fresh
+    build's within 0.5 px, during the drag and after."""
+    from construct.render.output import scene_for
+    from construct.render.svg import Drawing
+
+    c = get(name)
+    page, errors = _open(browser, _gallery_player(slug))
+    page.eval_on_selector("#slider", f"(s) => {{ s.value = {k}; s.dispatchEvent(new Event('input')); }}")
+    _at_step_view(page)
+    inset = """() => { const i = document.getElementById('inset');
+        return [getComputedStyle(i).display, i.getAttribute('viewBox').split(' ').map(Number)]; }"""
+    was = float(page.evaluate(f"() => 10 ** +document.querySelector('#live input[name=\"{given}\"]').value"))
+    for v in values:
+        for u in np.geomspace(was, v, 6)[1:]:
+            _drag_to(page, given, float(u))
+        was = v
+        want = Drawing(scene_for(c, c.figure(**params, **{given: v}), ending=True), STYLES["teaching"]).insets[k - 1]
+        for when in ("dragged", "let go"):
+            if when == "let go":
+                page.evaluate(f"""() => {{ document.querySelector('#live input[name="{given}"]')
+                    .dispatchEvent(new Event('change')); window.constructPlayer.jump(false); }}""")
+            shown, box = page.evaluate(inset)
+            assert shown == "block" and want is not None, (k, v, when, shown, want)
+            assert max(abs(a - b) for a, b in zip(box, want)) <= 0.5, (k, v, when, box, want)
+    assert not errors, errors
+    page.close()
+
+
 # every value the plate writes in the end state (its decimal lettering, not its halos) that the page shows: its text
 # and its box on the screen
 _WRITTEN = """() => JSON.stringify(Array.from(document.querySelectorAll('#furniture text')).filter(t =>

@@ -41,7 +41,7 @@ import numpy as np
 from .scene import MarkKind, Scene, extreme_points
 from .svgdoc import fmt
 
-__all__ = ["step_views", "views_box", "shots", "step_focus", "step_focus_names", "step_shots", "framed_rows", "step_zooms", "step_details", "read_tenth", "DETAIL_PX", "INSET_MAX", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "NON_SCALING", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
+__all__ = ["step_views", "views_box", "shots", "step_focus", "step_focus_names", "step_shots", "framed_rows", "step_zooms", "step_details", "finest_detail", "DETAIL_TIE_PX", "compass_span", "read_tenth", "DETAIL_PX", "INSET_MAX", "final_box", "Framing", "ZOOM_LEVELS", "level", "level_css", "NON_SCALING", "MAX_ZOOM", "CONTEXT", "WHOLE_ABOVE", "view_text", "zoom_of", "clip_view", "PLAYER_FIGURE_PX",
            "player_letter_scale"]
 
 #: The step player's figure box in a typical 1400 × 900 browser window (width, height in screen px, as its page
@@ -278,37 +278,107 @@ UNSEEN = 2 * MOVE
 def step_details(scene: Scene, framing: Framing,
                  px: Callable[[float, float], tuple[float, float]]) -> list[tuple[float, tuple[float, float] | None]]:
     """Per step, how much its view must magnify for its finest detail to be :data:`DETAIL_PX` on the screen
-    (the two closest points it works with, the smallest circle it strikes; 0: nothing finer than the whole
-    figure shows), at most :data:`INSET_MAX`, and where that detail is (canvas px).  A cluster of points
+    (:func:`finest_detail` of the points it works with and the circles it strikes; 0: nothing finer than the
+    whole figure shows), at most :data:`INSET_MAX`, and where that detail is (canvas px).  A cluster of points
     within a few pixels of each other (a trisection's thirds, a compass step of a few pixels) is seen
     magnified, not as one dot.
     """
-    drawn = {m.name: m for m in scene.marks}
+    drawn = scene.marks_by_name
     whole = PLAYER_FIGURE_PX[0] / framing.span  # screen px per canvas px in the whole figure's view
     out: list[tuple[float, tuple[float, float] | None]] = []
     for s in scene.steps:
         pts: list[tuple[float, float]] = []
-        fine, at = math.inf, None
-        for n in set(s.outputs) | set(s.inputs) | scene.named(s.index):
+        rounds: list[tuple[float, tuple[float, float]]] = []
+        for n in dict.fromkeys((*s.outputs, *s.inputs, *sorted(scene.named(s.index)))):
             m = drawn.get(n)
             if m is None:
                 continue
             if m.kind is MarkKind.POINT:
-                pts.append(px(*m.geom))
+                x, y = px(*m.geom)
+                pts.append((read_tenth(x), read_tenth(y)))
             elif m.kind.round and n in s.outputs:
                 c = px(*m.geom[:2])
-                r = round(abs(px(m.geom[0] + m.geom[2], m.geom[1])[0] - c[0]), 2)  # (as written)
-                if r < fine:
-                    fine, at = r, c
-        pts = sorted(set((read_tenth(x), read_tenth(y)) for x, y in pts))
-        for i, a in enumerate(pts):
-            for b in pts[i + 1:i + 8]:
-                d = math.hypot(a[0] - b[0], a[1] - b[1])
-                if d < fine:
-                    fine, at = d, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+                rounds.append((round(abs(px(m.geom[0] + m.geom[2], m.geom[1])[0] - c[0]), 2), c))  # (as written)
+        span = _read_span(s, drawn, px) if rounds else None
+        fine, at = finest_detail(rounds, list(dict.fromkeys(pts)), [span] if span else [])
         need = DETAIL_PX / (fine * whole) if 0.0 < fine < math.inf else 0.0
         out.append((min(INSET_MAX, need), at if need > 1.0 else None))
     return out
+
+
+#: Two details of a step whose sizes differ by less than this (px, as read) are one size to the player: the step's
+#: detail is magnified as the finer needs, about the first of them (:func:`finest_detail`).  A live page draws each point up to 0.2 px
+#: off a fresh build's, so that a pair and its mirror image (Baumann's a and z, where a line meets a circle about C:
+#: 6.6 px from C both) were told apart by that error, and the page magnified the other one.
+DETAIL_TIE_PX = 0.5
+
+
+def finest_detail(rounds: Sequence[tuple[float, tuple[float, float]]], points: Sequence[tuple[float, float]],
+                  spans: Sequence[tuple[tuple[float, float], tuple[float, float]]] = ()
+                  ) -> tuple[float, tuple[float, float] | None]:
+    """A step's finest detail, as its size (px) and where it is: of the circles it strikes (*rounds*: radius and
+    centre, the radius as written) and of every two of its *points* (read to 0.1 px: :func:`read_tenth`; apart,
+    not the two of a compass's span in *spans*, :func:`compass_span`: their distance is the circle's radius), the
+    size of the finest, the place of the first -- circles first, then pairs in the points' order -- within
+    :data:`DETAIL_TIE_PX` of it.  The player's ``detail`` applies the same rule to the points as it draws them.
+    (inf, None): none.
+
+    >>> finest_detail([(4.33, (10.0, 10.0))], [(0.0, 0.0), (4.3, 0.0), (0.0, 9.0)], [((0.0, 0.0), (4.3, 0.0))])
+    (4.33, (10.0, 10.0))
+    >>> finest_detail([], [(0.0, 0.0), (6.7, 0.0), (0.0, 6.6)])  # (6.7 is within 0.5 px of 6.6: the first pair's place)
+    (6.6, (3.35, 0.0))
+    >>> finest_detail([], [(0.0, 0.0), (7.2, 0.0), (0.0, 6.6)])
+    (6.6, (0.0, 3.3))
+    """
+    pairs = [(a, b) for i, a in enumerate(points) for b in points[i + 1:]
+             if a != b and (not spans or (min(a, b), max(a, b)) not in spans)]
+    sizes = [r for r, _ in rounds] + [math.hypot(a[0] - b[0], a[1] - b[1]) for a, b in pairs]
+    if not sizes:
+        return math.inf, None
+    least = min(sizes)
+    first = next(i for i, size in enumerate(sizes) if size < least + DETAIL_TIE_PX)
+    if first < len(rounds):
+        return least, rounds[first][1]
+    a, b = pairs[first - len(rounds)]
+    return least, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+
+
+def compass_span(step: Any) -> tuple[str, str] | None:
+    """The two points *step*'s compass is set to, whose distance is the radius of the circle it strikes (about
+    a point through a point: the centre and that point; a segment carried: its ends), or None.
+
+    A step's finest detail (:func:`step_details`, :func:`~construct.render.insets.inset_detail`, the player's
+    ``detail``) is the circle, never this pair beside it: the two are one size by construction, and only the
+    reading (the points to 0.1 px, the radius to 0.01) told them apart -- which a live page, whose points stand
+    0.2 px off, told otherwise, and magnified the pair 340 px from the arc a fresh build magnified (Baumann's
+    effective work at κ = 8, step 426: U-V3 4.3 px apart, the arc about E3 4.33 px round).
+
+    >>> from construct.constructions import get
+    >>> from construct.render.scene import build_scene
+    >>> sc = build_scene(get("inertia-stroke-fractions").figure())
+    >>> [(s.index, s.op, compass_span(s)) for s in sc.steps if s.index in (56, 57, 211)]
+    [(56, 'circle_through', ('x.M5', 'x.M4')), (57, 'intersect', None), (211, 'circle_segment', ('O', 'Yt5'))]
+    """
+    if step.op == "circle_through":
+        return step.inputs[0], step.inputs[1]
+    if step.op == "circle_segment":
+        return step.inputs[1], step.inputs[2]
+    return None
+
+
+def _read_span(step: Any, drawn: Any, px: Callable[[float, float], tuple[float, float]]
+               ) -> tuple[tuple[float, float], tuple[float, float]] | None:
+    """The two points of *step*'s :func:`compass_span` read to 0.1 px (:func:`read_tenth`), in order, as
+    :func:`step_details` compares its points; None where it has none, or they are not both drawn points."""
+    span = compass_span(step)
+    if span is None:
+        return None
+    ms = [drawn.get(n) for n in span]
+    if any(m is None or m.kind is not MarkKind.POINT for m in ms):
+        return None
+    (ax, ay), (bx, by) = (px(*m.geom) for m in ms)
+    a, b = sorted(((read_tenth(ax), read_tenth(ay)), (read_tenth(bx), read_tenth(by))))
+    return a, b
 
 
 def read_tenth(v: float) -> float:

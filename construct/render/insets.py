@@ -17,10 +17,9 @@ True
 
 from __future__ import annotations
 
-import math
 from typing import Callable, Sequence
 
-from .camera import PLAYER_FIGURE_PX, Framing, View, read_tenth, step_details, step_focus, zoom_of
+from .camera import PLAYER_FIGURE_PX, Framing, View, compass_span, finest_detail, read_tenth, step_details, step_focus, zoom_of
 from .scene import MarkKind, Scene
 
 __all__ = ["step_insets", "inset_detail", "inset_details", "points_at", "ring_round", "SLIVER_PX", "SLIVER_RATIO", "INSET_PX", "CLUSTER_ABOVE",
@@ -89,8 +88,9 @@ def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]]
     """Where step *k*'s inset *box* (canvas px: x y w h) magnifies a cluster: the finest detail of the step
     (:func:`~construct.render.camera.step_details`: the two closest of its points, read to 0.1 px, or the smallest
     circle or arc it strikes where that is finer) in the middle of the box, the box as large as the detail in
-    proportion.  Then the ids of the points it compares, of each circle's centre point and circle ([centre,
-    circle]) and the detail's size (canvas px): a page that moves the points (a live given) finds the detail
+    proportion.  Then the ids of the points it compares, of each circle's centre point and circle and of the two
+    points its compass is set to where they are drawn (:func:`~construct.render.camera.compass_span`: [centre,
+    circle(, a, b)], a pair that is the circle's radius, not compared) and the detail's size (canvas px): a page that moves the points (a live given) finds the detail
     among them anew and carries the box with it (the player's ``detail``).  None for any other inset (a sliver's,
     centred on the step's own points), or where no point stands at a circle's centre.  *box* None: a step shown
     without an inset here, whose detail a page whose points move (a live given) judges anew (its size is then
@@ -103,7 +103,9 @@ def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]]
     drawn = scene.marks_by_name
     near = [drawn[n] for n in dict.fromkeys((*s.outputs, *s.inputs, *sorted(scene.named(k))))
             if n in drawn and drawn[n].kind is MarkKind.POINT]
-    fine, at, rounds = math.inf, None, []
+    rounds, circles = [], []
+    span = compass_span(s)  # (the pair the compass is set to: its circle's radius, no detail of its own)
+    span_ids = [drawn[n].id for n in span if n in drawn and drawn[n].kind is MarkKind.POINT] if span else []
     for n in s.outputs:
         m = drawn.get(n)
         if m is None or not m.kind.round:
@@ -111,18 +113,19 @@ def inset_detail(scene: Scene, px: Callable[[float, float], tuple[float, float]]
         if at_point is None:  # (made only for a step that strikes a circle)
             at_point = points_at(scene, px)
         c = px(*m.geom[:2])
-        centre = at_point.get(tuple(round(x, 2) for x in c))
+        spot = tuple(round(x, 2) for x in c)
+        # (the point the step sets its compass on where it stands there: another point on that spot at this value,
+        # apart at another, would carry the live page's box away -- effective work's step 838, the arc about U8,
+        # found about Y1 of u7, 50 px off at κ = 3)
+        centre = next((drawn[n].id for n in s.inputs if n in drawn and drawn[n].kind is MarkKind.POINT
+                       and tuple(round(x, 2) for x in px(*drawn[n].geom)) == spot), None) or at_point.get(spot)
         if centre is None:
             return None  # (the page could not find it anew)
-        rounds.append([centre, m.id])
-        if round(m.geom[2] * scale, 2) < fine:  # (its radius as written: the page reads it)
-            fine, at = round(m.geom[2] * scale, 2), c
-    pts = [(read_tenth(px(*m.geom)[0]), read_tenth(px(*m.geom)[1])) for m in near]
-    for i, a in enumerate(pts):
-        for b in pts[i + 1:]:
-            d = math.hypot(a[0] - b[0], a[1] - b[1])
-            if 0.0 < d < fine:
-                fine, at = d, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+        rounds.append([centre, m.id] + (span_ids if len(span_ids) == 2 else []))
+        circles.append((round(m.geom[2] * scale, 2), c))  # (its radius as written: the page reads it)
+    read = {m.id: (read_tenth(px(*m.geom)[0]), read_tenth(px(*m.geom)[1])) for m in near}
+    spans = [(min(a, b), max(a, b)) for r in rounds if len(r) == 4 for a, b in [(read[r[2]], read[r[3]])]]
+    fine, at = finest_detail(circles, [read[m.id] for m in near], spans)
     # (the box rounded to 0.01 px)
     if at is None or box is not None and (abs(at[0] - box[0] - box[2] / 2) > 0.02
                                           or abs(at[1] - box[1] - box[3] / 2) > 0.02):

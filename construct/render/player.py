@@ -33,7 +33,7 @@ import re
 from typing import Any, Mapping, Sequence
 
 from .animate import STEP_SECONDS, group_css
-from .camera import DETAIL_PX, INSET_MAX, PLAYER_FIGURE_PX, Framing, step_details, zoom_of
+from .camera import DETAIL_PX, DETAIL_TIE_PX, INSET_MAX, PLAYER_FIGURE_PX, Framing, step_details, zoom_of
 from .captions import group_caption
 from .insets import CLUSTER_ABOVE, INSET_PX, inset_detail, points_at
 from .marks import MarkKind
@@ -180,7 +180,7 @@ def player_html(scene, style: Style = PLAIN, *, givens: Mapping[str, Any] | None
         ("{{PAGE_BG}}", "#f7f3ea" if style.name == "historical" else "#f4f5f7"),
         ("{{SPEEDS}}", _speed_options(data["dt"] / 1000)),
         ("{{ASPECT}}", "/".join(fmt(x) for x in PLAYER_FIGURE_PX)),
-        ("{{DETAIL}}", " ".join(fmt(x) for x in (DETAIL_PX, INSET_MAX, *INSET_PX, CLUSTER_ABOVE))),
+        ("{{DETAIL}}", " ".join(fmt(x) for x in (DETAIL_PX, INSET_MAX, *INSET_PX, CLUSTER_ABOVE, DETAIL_TIE_PX))),
     ))
     # One pass, so that text from the protocol is never read as a placeholder.
     return re.sub(r"\{\{[A-Z_]+\}\}", lambda m: values[m.group(0)], _TEMPLATE)
@@ -605,33 +605,43 @@ li a.later{color:#bbb}
   // null where a fresh build shows none (insets.step_insets and inset_detail: its detail, read as written to 0.1 px,
   // shown DETAIL[0] px large, more than DETAIL[4] times as magnified as the view magnifies the whole)
   function detail(st, v) {
-    var zd = st.zd, fine = Infinity, at = null, pts = [], i, j;
+    var zd = st.zd, cands = [], pts = [], span = [], i, j, fine = Infinity, at = null;
+    function read(e) { return [Math.round(10 * e.getAttribute("cx")) / 10, Math.round(10 * e.getAttribute("cy")) / 10]; }
     zd[1].forEach(function (cr) {  // a circle or arc the step strikes: its radius
-      var c = find(cr[0]), m = find(cr[1]);
+      var c = find(cr[0]), m = find(cr[1]), a = cr[2] && find(cr[2]), b = cr[3] && find(cr[3]);
       if (!c || !m) { return; }
       var r = m.tagName === "circle" ? +m.getAttribute("r") : +(m.getAttribute("d").match(/-?[0-9.]+(?:e[-+]?[0-9]+)?/g) || [])[2];
-      if (r < fine) { fine = r; at = [+c.getAttribute("cx"), +c.getAttribute("cy")]; }
+      cands.push([r, [+c.getAttribute("cx"), +c.getAttribute("cy")]]);
+      if (a && b) { span.push(read(a).concat(read(b))); }  // (the compass's span: the radius, not a detail of its own)
     });
     zd[0].forEach(function (id) {  // the points, read to 0.1 px
       var e = find(id);
-      if (e) { pts.push([Math.round(10 * e.getAttribute("cx")) / 10, Math.round(10 * e.getAttribute("cy")) / 10]); }
+      if (e) { pts.push(read(e)); }
     });
+    function spans(p, q) {
+      return span.some(function (s) { return s[0] === p[0] && s[1] === p[1] && s[2] === q[0] && s[3] === q[1]
+        || s[0] === q[0] && s[1] === q[1] && s[2] === p[0] && s[3] === p[1]; });
+    }
     for (i = 0; i < pts.length; i++) {
       for (j = i + 1; j < pts.length; j++) {
         var d = Math.hypot(pts[i][0] - pts[j][0], pts[i][1] - pts[j][1]);
-        if (d > 0 && d < fine) { fine = d; at = [(pts[i][0] + pts[j][0]) / 2, (pts[i][1] + pts[j][1]) / 2]; }
+        if (d > 0 && !spans(pts[i], pts[j])) { cands.push([d, [(pts[i][0] + pts[j][0]) / 2, (pts[i][1] + pts[j][1]) / 2]]); }
       }
     }
+    // (camera.finest_detail: the finest's size, the place of the first within DETAIL[5] px of it -- circles first,
+    // then pairs in order)
+    for (i = 0; i < cands.length; i++) { fine = Math.min(fine, cands[i][0]); }
+    for (i = 0; i < cands.length && !at; i++) { if (cands[i][0] < fine + DETAIL[5]) { at = cands[i][1]; } }
     if (!at) { return null; }
     // (camera.step_details: the magnification its detail needs; camera.zoom_of: the view's)
     var need = Math.min(DETAIL[1], DETAIL[0] * Math.max(full[2], full[3] * FIG[0] / FIG[1]) / (fine * FIG[0]));
     var zv = Math.max(full[2] / FIG[0], full[3] / FIG[1]) / Math.max(v[2] / FIG[0], v[3] / FIG[1], 1e-12);
     if (!(need > 1 && need > DETAIL[4] * zv)) { return null; }
-    // (the box: the built one in proportion to the detail -- the view here is framed anew and may stand apart
-    // from a fresh build's --, else as a fresh build sizes it in this view)
+    // (the box as a fresh build sizes it in this view: in proportion to the detail where the inset magnifies it
+    // past twice the view, whatever the view; twice the view where the detail needs less -- the built box in
+    // proportion to the detail was 50-72 px off a fresh build's there, Tafel 2's step 105 at L/r = 4.37 and 5.55)
     var q = Math.min(FIG[0] / v[2], FIG[1] / v[3]) * Math.max(2, need / zv), r2 = function (x) { return Math.round(100 * x) / 100; };
-    var z0 = st.z0 || (st.z && (st.z0 = st.z.slice()));
-    var w = z0 ? z0[2] * fine / zd[2] : DETAIL[2] / q, h = z0 ? z0[3] * fine / zd[2] : DETAIL[3] / q;
+    var w = DETAIL[2] / q, h = DETAIL[3] / q;
     return [r2(at[0] - w / 2), r2(at[1] - h / 2), r2(w), r2(h)];
   }
   function drawInset(view) {

@@ -16,7 +16,8 @@ import pytest
 from construct.cli.main import main
 from construct.constructions import get
 from construct.live import live_data, live_givens, live_sweep, player_page
-from construct.live.sweep import MIN_CELL, QUANTUM_PX, SWITCH_CELL, _switch_spots, pieces
+from construct.live.sweep import (MIN_CELL, QUANTUM_PX, REFINE_PX, SWITCH_CELL, VIEW_JUMP_PX, _switch_spots,
+                                  _switch_views, _view_columns, pieces)
 from construct.render.wire import arc_flags, blend, decode, drawn_numbers, inflated, radii
 from construct.render.styles import STYLES
 
@@ -502,11 +503,15 @@ def test_tafel_2s_lettering_switches_its_spots_at_grid_values_not_refined_down(t
     """Tafel 2's values stand elsewhere about their ordinates where they would crowd (a choice among spots, not a
     coordinate): the refinement chased every such switch down to MIN_CELL, 413 grid values in this piece where the
     drawing needs about 130 (129 before the values moved).  Each switch now stands beside a grid value, a jump of
-    the drawing no wider than MIN_CELL, and the grid is the drawing's."""
+    the drawing no wider than MIN_CELL (or, a step's view jumping, one across which no mark moves by more than
+    REFINE_PX: _switch_views), and the grid is the drawing's."""
     live = tafel_2_live
     assert len(live.grid) <= 160, len(live.grid)
     u = np.log10(live.grid)
-    assert live.jumps and all(np.log10(b) - np.log10(a) <= MIN_CELL for a, b in live.jumps)
+    marks = ~_view_columns(live.keys)
+    at = {float(v): i for i, v in enumerate(live.grid)}
+    assert live.jumps and all(np.log10(b) - np.log10(a) <= MIN_CELL or np.abs(live.drawn[at[a], marks] -
+                              live.drawn[at[b], marks]).max() <= REFINE_PX for a, b in live.jumps)
     assert all(a in live.grid and b in live.grid for a, b in live.jumps)
     assert np.diff(u).min() > 0
 
@@ -538,6 +543,42 @@ def test_a_switch_of_spots_is_put_where_both_sides_spots_are_clear():
     assert us == [0.0, 0.5 - SWITCH_CELL, 0.5, 1.0] and spots == ["S1", "S1", "S2", "S2"]
     assert jumps == [(float(values(0.5 - SWITCH_CELL)), float(values(0.5)))]
     assert all(clear[s](u) for u, s in zip(us, spots)) and len(rounds) == 3
+
+
+@pytest.mark.parametrize("at", [0.3, 0.77])
+def test_a_view_that_jumps_inside_a_cell_switches_where_it_jumps(at):
+    """_switch_views on a cell (0, 1) of the refined grid (log10 of the given) across which a step's view jumps by
+    300 px at *at* (a shot framed whole from there on) while a mark moves 100 px smoothly: the page blended the
+    view across the whole cell (150 px off at its midpoint).  The cell is halved where the view still jumps, each
+    midpoint a grid value, down to a cell across which the mark moves by at most REFINE_PX, which straddles *at*
+    and is a jump of the drawing (the page draws its nearer side: the mark within REFINE_PX / 2 of the blend);
+    the view is exact at every grid value.  A view that moves smoothly (by 40 px across the cell) and one that
+    jumps by less than VIEW_JUMP_PX are left blended (no value added to the grid); so is a cell far from the book's
+    value (nothing drawn)."""
+    keys = [("#zoom", "0", "# # # #"), ("p", "cx", "#")]
+
+    def frame(u: float, jump: float = 300.0, slope: float = 0.0) -> tuple:
+        w = 600.0 + slope * u + (jump if u >= at else 0.0)
+        return keys, np.array([0.0, 0.0, w, w * 0.7, 100.0 * u]), (0.0, 0.0, 1.0), {}
+
+    values = lambda u: 10.0 ** np.asarray(u)  # noqa: E731
+    data = {0.0: frame(0.0), 1.0: frame(1.0)}
+    jumps: list[tuple[float, float]] = []
+    _switch_views(data, jumps, values, lambda us, keep: [frame(u) for u in us], 0.5)
+    us = sorted(data)
+    assert len(jumps) == 1
+    a, b = (float(np.log10(x)) for x in jumps[0])
+    assert a in data and b in data and a < at <= b and 100.0 * (b - a) <= REFINE_PX
+    assert all(np.array_equal(data[u][1], frame(u)[1]) for u in us) and len(us) <= 12
+    for kw in ({"jump": 0.0, "slope": 40.0}, {"jump": VIEW_JUMP_PX * 0.9}):
+        data = {0.0: frame(0.0, **kw), 1.0: frame(1.0, **kw)}
+        drawn: list[float] = []
+        _switch_views(data, jumps := [], values, lambda us, keep: drawn.extend(us) or [frame(u, **kw) for u in us],
+                      0.5)
+        assert sorted(data) == [0.0, 1.0] and not jumps and len(drawn) <= 7, (kw, drawn)
+    data, drawn = {0.0: frame(0.0), 1.0: frame(1.0)}, []
+    _switch_views(data, jumps := [], values, lambda us, keep: drawn.extend(us) or [frame(u) for u in us], 2.0)
+    assert sorted(data) == [0.0, 1.0] and not jumps and not drawn
 
 
 def test_furniture_matched_once_per_pattern_as_matched_alone():

@@ -1520,6 +1520,33 @@ def test_a_step_frames_at_every_value_what_a_fresh_build_frames_there(browser, c
     page.close()
 
 
+@pytest.mark.parametrize("v", [4.9, 5.0, 5.1])
+def test_a_step_frames_about_the_book_value_what_a_fresh_build_frames_there(browser, v):
+    """The gallery crank's 60 % step (219: the rod's arcs struck onto the stroke line), dragged (6 ``input`` events)
+    from the book's L/r = 5 to a value beside it -- or away and back to 5 itself -- and let go: the view is a fresh
+    build's camera view there (within 3 px of every edge).  The camera frames the step's shot whole below about
+    L/r = 4.86 (it magnifies too little) and round its marks above: a blend of the grid values either side of that
+    jump (4.71 and 5.24) put the view 188, 131 and 76 px off at 4.9, 5.0 (the book's own value) and 5.1."""
+    from construct.render.output import scene_for
+    from construct.render.svg import Drawing
+
+    c, k = get("crank"), 219
+    page, errors = _open(browser, _gallery_player("crank-parts-18-rod-ratio-5"))
+    page.evaluate("k => { const s = document.getElementById('slider'); s.value = k; s.oninput(); }", k)
+    _at_step_view(page)
+    for u in (*np.geomspace(5.0, 4.6, 3)[1:], *np.geomspace(4.6, v, 4)[1:]) if v == 5.0 else np.geomspace(5.0, v, 7)[1:]:
+        _drag_to(page, "rod_ratio", float(u))
+    page.evaluate("""() => { document.querySelector('#live input[name="rod_ratio"]').dispatchEvent(new Event('change'));
+        window.constructPlayer.jump(false); }""")
+    got = page.evaluate("() => window.constructPlayer.view()")
+    fresh = Drawing(scene_for(c, c.figure(parts=18, rod_ratio=v), ending=True), STYLES["teaching"])
+    want = fresh.camera_view(k)
+    assert want != fresh.full_view
+    assert max(abs(a - b) for a, b in zip(got, want)) <= 3.0, (v, got, want)
+    assert not errors, errors
+    page.close()
+
+
 @pytest.mark.parametrize("v", [1.05, 1.2, 3.0, 8.0, 1000.0])
 def test_the_end_step_frames_the_end_state_at_every_value_as_a_fresh_build_does(browser, crank6_live, v):
     """The crank's last step (the end state: the figure as the plate draws it, with its furniture) dragged slowly

@@ -391,6 +391,98 @@ def _switch_spots(data: dict[float, tuple], spots, jumps: list[tuple[float, floa
             todo += [(x, y) for x, y in ((a, m), (m, b)) if spots(x) != spots(y) and data[x][0] == data[y][0]]
 
 
+#: A step's view whose edge is this much further (px) from where the blend of its cell's ends puts it, at the
+#: cell's midpoint, jumps inside the cell (:func:`_switch_views`) ...
+VIEW_JUMP_PX = 30.0
+#: ... where the cell lies this near the book's value (in log10 of the given: a factor 1.12 either side), where a
+#: teacher drags most: at most VIEW_CELLS such cells, the largest jumps (in px times the cell's width) first ...
+VIEW_NEAR = 0.05
+VIEW_CELLS = 4
+#: ... looked into this many levels of halving a round (a round costs as much as thirty to fifty values: its marks'
+#: set-up and the replay's steps), in at most VIEW_ROUNDS rounds (four rounds of two levels narrow a cell of the
+#: crank's grid near the book's value, about 0.02 to 0.05 wide, to about 0.0002, where its marks move by
+#: REFINE_PX or less).
+VIEW_LEVELS = 2
+VIEW_ROUNDS = 4
+
+
+def _switch_views(data: dict[float, tuple], jumps: list[tuple[float, float]], values, frames, near: float,
+                  cells: int = VIEW_CELLS) -> None:
+    """Put each jump of a step's view near the book's value *near* (log10) inside a cell of the refined grid *data*
+    (log10 of the given -> its frame) where it happens.  A view is not refined for (it frames the figure: blended
+    between grid values), but where the camera's rule switches -- a shot that magnifies too little shown whole, a
+    letter its window would cut widening it -- the view jumps, and a blend across the cell showed a frame neither
+    side has (the crank's 60 % step at the book's value itself: 131 px off its own view).
+
+    A jump of J px anywhere in a cell puts the view at the cell's midpoint J / 2 from the blend of its ends.  The
+    cells within :data:`VIEW_NEAR` of the book's value whose ends' views differ by more than :data:`VIEW_JUMP_PX`
+    (the *cells* largest: VIEW_CELLS, a piece of the domain its share) have :data:`VIEW_LEVELS` levels of their
+    halvings drawn (one sweep for all of them a round); where the view misses at a cell's midpoint by more than
+    half that, the midpoint becomes a grid value and each half whose ends differ so is looked into (*cells* of
+    them a round), down to a cell across which every other number of the drawing moves by at most REFINE_PX:
+    drawn from either side, its marks are within half that of the line between its ends (and that line within
+    REFINE_PX of the drawing, as the refinement held the larger cell's), and the cell is a jump of the drawing (*jumps*, as the values *values* gives: the page draws the nearer
+    side).  A view that moves smoothly, or by less, is blended as before; a cell not down to that after
+    :data:`VIEW_ROUNDS` rounds stays blended, narrower.  *frames*: the frames at a list of log10 values."""
+    jumped = {float(a) for a, _ in jumps}
+
+    def alike(fa: tuple, fb: tuple) -> bool:
+        return fa[0] is fb[0] or fa[0] == fb[0]
+
+    def apart(fa: tuple, fb: tuple) -> tuple[float, float]:  # how far two frames' views and other numbers are apart
+        if not alike(fa, fb):
+            return 0.0, math.inf
+        cols = _view_columns(fa[0])
+        d = np.abs(fa[1] - fb[1])
+        return float(d[cols].max(initial=0.0)), float(d[~cols].max(initial=0.0))
+
+    us = sorted(data)
+    todo = [(a, b) for a, b in zip(us[:-1], us[1:]) if float(values(a)) not in jumped and b >= near - VIEW_NEAR
+            and a <= near + VIEW_NEAR and apart(data[a], data[b])[0] > VIEW_JUMP_PX]
+    todo = sorted(sorted(todo, key=lambda c: -apart(data[c[0]], data[c[1]])[0] * (c[1] - c[0]))[:cells])
+    as_array = lambda f: (f[0], np.asarray(f[1], dtype=float), *f[2:])  # noqa: E731
+    for _ in range(VIEW_ROUNDS if todo else 0):
+        inside = [_ahead(a, b, VIEW_LEVELS - 1) + [(a + b) / 2] for a, b in todo]
+        asked = [u for us in inside for u in us]
+        drawn = frames(asked, {})
+        got = {u: as_array(drawn[i]) for i, u in enumerate(asked)}
+        nxt = []
+
+        def walk(a: float, b: float, depth: int) -> None:
+            if apart(data[a], data[b])[1] <= REFINE_PX:
+                jumps.append((float(values(a)), float(values(b))))
+                return
+            m = (a + b) / 2
+            if depth == VIEW_LEVELS or b - a < MIN_CELL:
+                nxt.append((a, b))
+                return
+            fa, fb, fm = data[a], data[b], got[m]
+            if not (alike(fa, fm) and alike(fb, fm)):
+                return  # (another form there: not a view's jump)
+            cols = _view_columns(fa[0])
+            if np.abs((fa[1][cols] + fb[1][cols]) / 2 - fm[1][cols]).max(initial=0.0) <= VIEW_JUMP_PX / 2:
+                return
+            data[m] = fm
+            for x, y in ((a, m), (m, b)):
+                if apart(data[x], data[y])[0] > VIEW_JUMP_PX:
+                    walk(x, y, depth + 1)
+
+        for a, b in todo:
+            walk(a, b, 0)
+        todo = [(a, b) for a, b in nxt if b - a >= MIN_CELL][:cells]
+        if not todo:
+            return
+
+
+def _view_columns(keys: list[tuple[str, str, str]]) -> np.ndarray:
+    """Which numbers of *keys* are the steps' views (not the insets': carried with their points), found once per list
+    of keys (known by its identity, as :func:`_key_columns`)."""
+    return by_identity(_VIEW_COLUMNS, keys, lambda keys: _columns(keys, lambda k: k[0] == "#zoom"), most=4)
+
+
+_VIEW_COLUMNS: dict[int, tuple] = {}
+
+
 _KEY_COLUMNS: dict[int, tuple] = {}
 
 
@@ -671,6 +763,9 @@ def live_sweep(construction: Construction, figure: Figure, given: str, *, initia
                 continue
             jumps.append((float(values(a)), float(values(b))))
         todo = nxt
+    _switch_views(data, jumps, values, lambda us, keep: _frames(construction, figure, given, values(us), measure,
+                                                               protocol, keep)[0], math.log10(initial),
+                  max(1, round(VIEW_CELLS * share)))
     _switch_spots(data, spots, jumps, values, lambda us, keep: _frames(construction, figure, given, values(us),
                                                                      measure, protocol, keep)[0])
     us = sorted(data)

@@ -228,3 +228,19 @@ def test_rows_of_coordinates_are_a_row_made_for_each():
     assert got.tobytes() == want.tobytes()
     assert _rows([np.arange(n, dtype=np.float32)], n) is None
     assert _rows([2.0, 3.0], n).tolist() == [[2.0] * n, [3.0] * n] and _rows([], n).shape == (0, n)
+
+
+def test_the_angles_sorted_across_are_numpys_sort_to_the_bit():
+    """_sorted_across (compare-exchange over whole arrays) puts the same numbers in the same places as np.sort along
+    the marked points: ties, zeros and a full turn among them, NaN (np.sort's last) too, two to eight points."""
+    from construct.render.sweepdraw import TWO_PI, _sorted_across
+
+    rng = np.random.default_rng(11)
+    for k in range(1, 9):
+        a = np.round(rng.random((40, k, 30)) * TWO_PI, 1)  # (tenths: ties are common)
+        a[rng.random(a.shape) < 0.1] = 0.0
+        a[rng.random(a.shape) < 0.05] = TWO_PI
+        want = np.sort(a, axis=1)
+        assert _sorted_across(a).tobytes() == want.tobytes(), k
+        a[0, 0, 0] = np.nan
+        assert _sorted_across(a).tobytes() == np.sort(a, axis=1).tobytes(), k

@@ -870,7 +870,7 @@ class SweepDrawing:
     def _numbers(self) -> dict:
         """Every mark's numbers as mark_geometry writes them (an arc's drawn counter-clockwise on the page):
         {block: (marks x values x numbers)}."""
-        st, g, out = self.style, self.geoms, {}
+        g, out = self.geoms, {}
         scale = self._page[2]
         stack = lambda *cols: np.stack([_r2(c) for c in cols], axis=-1)  # noqa: E731
         if g[MarkKind.POINT]:

@@ -16,7 +16,7 @@ from construct.live import Measure
 from construct.figure import Figure
 from construct.render.output import scene_for
 from construct.render.styles import STYLES
-from construct.render.sweepdraw import SweepDrawing, sweep_drawable
+from construct.render.sweepdraw import SweepDrawing, SweepForm, _rows, sweep_drawable
 
 VALUES = np.concatenate([10 ** np.linspace(np.log10(1.05), 3.0, 37), [1.06, 4.0, 5.0]])
 
@@ -57,11 +57,19 @@ def one_by_one() -> OneByOne:
     return OneByOne()
 
 
+@pytest.mark.parametrize("kept", [False, True])
 @pytest.mark.parametrize("name, params", [("crank", {"parts": 6}), ("crank", {"parts": 18}), ("inertia-curve", {}),
                                           ("piston-force", {}), ("tangential-pressure", {"parts": 6})])
-def test_every_mark_is_drawn_where_the_drawing_draws_it_value_by_value(name, params, one_by_one):
+def test_every_mark_is_drawn_where_the_drawing_draws_it_value_by_value(name, params, kept, one_by_one):
+    """*kept*: with the form (what is drawn whatever the values) made from another sweep of the protocol, at other
+    values (a live player's earlier round), as live.measure keeps it: what it draws at these values is still theirs."""
     c, built, replay = _sweep(name, params)
-    drawn = SweepDrawing(scene_for(c, built), built.protocol, replay, len(VALUES), STYLES["teaching"])
+    scene, form = scene_for(c, built), None
+    if kept:
+        other = built.protocol.replay(c.rod_ratio_sweep(dict(built.replay.givens), np.array([1.3, 7.0, 300.0])))
+        form = SweepForm(scene, built.protocol, other, STYLES["teaching"])
+    drawn = SweepDrawing(scene, built.protocol, replay, len(VALUES), STYLES["teaching"], form=form)
+    assert drawn.form is form or not kept
     assert drawn.ok.mean() >= 0.9  # where it is not sure (a mark changing its form), the caller draws
     for i in np.flatnonzero(drawn.ok):
         keys, nums, fit, _ = one_by_one.at(c, built, replay, int(i))
@@ -176,3 +184,63 @@ def test_the_end_states_marks_at_a_value_are_a_scenes_there(name, params, values
             if a.kind == "arc":  # (its start angle a whole turn apart draws the same arc)
                 x[3] += round((y[3] - x[3]) / (2 * np.pi)) * 2 * np.pi
             assert x == pytest.approx(y, rel=1e-9, abs=1e-9), (values[i], a.id)
+
+
+def test_a_form_draws_only_the_sweeps_of_its_scene_protocol_and_style():
+    """A kept form is used where its scene, protocol, style and the objects' names and kinds are the sweep's; another
+    piece's protocol (Tafel I's pieces run through other points) or another style makes a form of its own, and draws
+    what a fresh drawing draws."""
+    from construct.live.sweep import live_givens, pieces
+    c = get("piston-force")
+    built = c.figure()
+    given = live_givens(c, built)[0]
+    parts = pieces(c, built, given.name, given.domain)
+    given = given.name
+    assert len(parts) > 1
+    other = parts[0].protocol if parts[0].protocol is not built.protocol else parts[-1].protocol
+    values = np.array([2.0, 3.0])
+    sweep = lambda protocol: protocol.replay(c.given_sweep(dict(built.replay.givens), given, values, protocol.params))
+    scene = scene_for(c, built)
+    form = SweepForm(scene, built.protocol, sweep(built.protocol), STYLES["teaching"])
+    assert form.fits(scene, built.protocol, sweep(built.protocol), STYLES["teaching"])
+    assert not form.fits(scene, other, sweep(other), STYLES["teaching"])
+    assert not form.fits(scene, built.protocol, sweep(built.protocol), STYLES["historical"])
+    assert not form.fits(scene_for(c, built), built.protocol, sweep(built.protocol), STYLES["teaching"])
+    mine = SweepDrawing(scene, other, sweep(other), 2, STYLES["teaching"], form=form)
+    fresh = SweepDrawing(scene, other, sweep(other), 2, STYLES["teaching"])
+    assert mine.form is not form
+    assert mine.numbers.keys() == fresh.numbers.keys()
+    for k, v in fresh.numbers.items():
+        np.testing.assert_array_equal(mine.numbers[k], v)
+
+
+def test_rows_of_coordinates_are_a_row_made_for_each():
+    """_rows writes each coordinate into its row: the rows vec makes one by one (the sweep's own array, or a number
+    for every value), to the bit; None where an array is not of floats (the caller keeps vec's)."""
+    n = 5
+    rng = np.random.default_rng(3)
+    values = [float(rng.random()), rng.random(n), np.float64(rng.random()), np.asarray(rng.random()), rng.random(n),
+              1, rng.random(n) * 1e300]
+    vec = lambda v: v if type(v) is np.ndarray and v.shape == (n,) else np.full(n, float(v))  # noqa: E731
+    want = np.array([vec(v) for v in values])
+    got = _rows(values, n)
+    assert got.dtype == want.dtype and got.shape == want.shape
+    assert got.tobytes() == want.tobytes()
+    assert _rows([np.arange(n, dtype=np.float32)], n) is None
+    assert _rows([2.0, 3.0], n).tolist() == [[2.0] * n, [3.0] * n] and _rows([], n).shape == (0, n)
+
+
+def test_the_angles_sorted_across_are_numpys_sort_to_the_bit():
+    """_sorted_across (compare-exchange over whole arrays) puts the same numbers in the same places as np.sort along
+    the marked points: ties, zeros and a full turn among them, NaN (np.sort's last) too, two to eight points."""
+    from construct.render.sweepdraw import TWO_PI, _sorted_across
+
+    rng = np.random.default_rng(11)
+    for k in range(1, 9):
+        a = np.round(rng.random((40, k, 30)) * TWO_PI, 1)  # (tenths: ties are common)
+        a[rng.random(a.shape) < 0.1] = 0.0
+        a[rng.random(a.shape) < 0.05] = TWO_PI
+        want = np.sort(a, axis=1)
+        assert _sorted_across(a).tobytes() == want.tobytes(), k
+        a[0, 0, 0] = np.nan
+        assert _sorted_across(a).tobytes() == np.sort(a, axis=1).tobytes(), k

@@ -44,7 +44,7 @@ from ..render.sheet import break_shift
 from ..render.styles import STYLES
 from ..render.svg import Drawing, mark_geometry, mark_layer
 from ..render.svgdoc import fmt
-from ..render.sweepdraw import SweepDrawing, sweep_drawable
+from ..render.sweepdraw import SweepDrawing, SweepForm, sweep_drawable
 from ..render.viewport import Viewport
 from ..render.wire import ARC, NUMBER, canonical_arc
 
@@ -222,6 +222,9 @@ class Measure:
         #: per protocol (by its id, kept alive in _forms): the marks a sweep's drawing boxes, and the rows of each
         #: view's and ring's marks among them (:meth:`frames`)
         self._rows: dict[int, tuple[tuple[str, ...], dict[tuple[str, ...], np.ndarray]]] = {}
+        #: per protocol (by its id, kept alive in _forms): what a sweep's drawing draws whatever the values
+        #: (:class:`~construct.render.sweepdraw.SweepForm`), made by the first round of its refinement for the rest
+        self._sweep_forms: dict[int, SweepForm] = {}
         # the letters whose text is read off the figure (an angle), by the id of their letter (a lettered line's
         # letter stands at a point of its own, "NAME.at")
         readings = {name: label for st in built.protocol.steps for name, label in st.labels if "{∠" in label}
@@ -635,7 +638,9 @@ class Measure:
         template, runs, keys = self._form(protocol, replay)
         if sweep_drawable(template, self.style, hatching=False):  # (the page draws areas from their curves)
             try:
-                at_once = SweepDrawing(template, protocol, replay, size, self.style)
+                at_once = SweepDrawing(template, protocol, replay, size, self.style,
+                                       form=self._sweep_forms.get(id(protocol)))
+                self._sweep_forms[id(protocol)] = at_once.form
             except ValueError:  # a mark of another kind than the built figure's: value by value
                 at_once = None
         if at_once is not None and any(at_once.numbers.get(i, np.zeros((0, 0))).shape[1:] != (n,) for i, n in runs

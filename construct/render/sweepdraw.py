@@ -22,12 +22,13 @@ the last digit).
 from __future__ import annotations
 
 import math
+from itertools import compress
 from typing import Any, Callable
 
 import numpy as np
 
 from ..kernel.curves import BezierCurve, Polyline
-from ..kernel.geometry import Circle, Line, Point, take
+from ..kernel.geometry import Circle, Line, Point, Sweep, take
 from .marks import GAP_TIE, TWO_PI, Mark, MarkKind, fanned_lines, letter_point, with_geom
 from .paths import bezier_arrays
 from .scene import MARGIN, Scene, on_curve_names
@@ -80,9 +81,161 @@ def _stack(rows: Any) -> np.ndarray:
     return np.array(rows, dtype=float)
 
 
+def _rows(values: list, n: int) -> np.ndarray | None:
+    """``np.array([vec(v) for v in values])``, vec a coordinate over the *n* values of a sweep (the sweep's own array,
+    or one number for all), each number written into its row rather than made a row first (a round's points, lines
+    and circles have thousands of coordinates the given does not move: a row apiece was a fifth of a round); None
+    where an array is not of floats (the caller makes the rows one by one, as vec keeps it).
+
+    >>> _rows([1.0, np.array([2.0, 3.0]), np.float64(4.0)], 2).tolist()
+    [[1.0, 1.0], [2.0, 3.0], [4.0, 4.0]]
+    """
+    out = np.empty((len(values), n))
+    swept = [type(v) is np.ndarray and v.shape == (n,) for v in values]
+    arrays = list(compress(values, swept))
+    if any(a.dtype != np.float64 for a in arrays):
+        return None
+    at = np.fromiter(swept, dtype=bool, count=len(values))
+    if arrays:
+        out[at] = arrays
+    if len(arrays) < len(values):
+        out[~at] = np.array([float(v) for v, a in zip(values, swept) if not a])[:, None]
+    return out
+
+
 def _r2(v: np.ndarray) -> np.ndarray:
     """Numbers as the SVG writer writes them (svgdoc.fmt: two decimals)."""
     return np.round(v, 2) + 0.0  # + 0.0: no -0
+
+
+#: What an object is to a sweep's drawing, by its kind (:class:`SweepForm`): drawn as a curve, an area's extent (a
+#: sweep's areas: their boxes without their pieces), an area's pieces (value by value), or nothing of its own.
+CURVE, EXTENT, PIECES = "curve", "extent", "pieces"
+
+
+def _role(o: Any) -> str | None:
+    """What the object *o* of a sweep is to its drawing (CURVE, EXTENT, PIECES; None: a point, line or circle, or
+    nothing drawn), from its first value."""
+    if isinstance(o, (Point, Line, Circle)):
+        return None
+    first = take(o, 0)
+    if hasattr(first, "rings"):  # an area's pieces count for the extent (marks.curve_points)
+        return EXTENT if hasattr(o, "extent") else PIECES
+    return CURVE if hasattr(first, "curve_points") else None
+
+
+class SweepForm:
+    """What a :class:`SweepDrawing` of the scene *template* over sweeps of *protocol* draws whatever the values:
+    which mark is drawn from which object, over which of the points marked on it, in which block of rows, with
+    which radius; the steps' marked points (:func:`~construct.render.scene.on_curve_names`) and fans of lettered
+    lines.  Made from one sweep's *objects* (their names and kinds: every sweep of a protocol has the same), once
+    for all the sweeps of a form (a live player's refinement draws a dozen rounds of one protocol:
+    live.measure keeps the form with its scene), and asked of each sweep whether it fits (:meth:`fits`): the
+    drawing's set-up was about half of a round's drawing, the values' arrays the rest.
+
+    A mark the sweep does not draw: ValueError, as :class:`SweepDrawing` raises it.
+
+    >>> from construct.constructions import get
+    >>> from construct.render.output import scene_for
+    >>> from construct.render.styles import STYLES
+    >>> c = get("crank"); fig = c.figure(parts=3)
+    >>> sweep = lambda v: fig.protocol.replay(c.rod_ratio_sweep(dict(fig.replay.givens), v))
+    >>> scene = scene_for(c, fig)
+    >>> form = SweepForm(scene, fig.protocol, sweep([3.0]), STYLES["teaching"])
+    >>> d = SweepDrawing(scene, fig.protocol, sweep([3.0, 5.0]), 2, STYLES["teaching"], form=form)
+    >>> d.form is form, d.numbers["s0001-O"].shape  # (another scene of the figure: a form of its own)
+    (True, (2, 3))
+    >>> SweepDrawing(scene_for(c, fig), fig.protocol, sweep([3.0, 5.0]), 2, STYLES["teaching"], form=form).form is form
+    False
+    """
+
+    def __init__(self, template: Scene, protocol: Any, objects: Any, style: Style):
+        self.template, self.protocol, self.style = template, protocol, style
+        #: the objects' names and kinds, as every sweep this form draws has them (:meth:`fits`)
+        self.names, self.kinds = tuple(objects), tuple(map(type, objects.values()))
+        kind_of = dict(zip(self.names, self.kinds))
+        #: which of the objects are points (itertools.compress of the objects' values), and their names
+        self.is_point = tuple(issubclass(t, Point) for t in self.kinds)
+        self.point_names = [k for k, p in zip(self.names, self.is_point) if p]
+        self.point_rows = {k: i for i, k in enumerate(self.point_names)}
+        roles = {k: r for (k, o), t in zip(objects.items(), self.kinds)
+                 if not issubclass(t, (Point, Line, Circle)) and (r := _role(o)) is not None}
+        #: the objects drawn as curves and areas, and what each is (:func:`_role`), in the objects' order
+        self.roles = list(roles.items())
+        # (a sweep of values of any kind, geometry.Sweep, is what its first value is: asked of every sweep, :meth:`fits`)
+        self._swept = [(k, roles.get(k)) for k, t in kind_of.items() if issubclass(t, Sweep)]
+        points = set(self.point_names)
+        self.on = on_curve_names(protocol.steps, points)
+        ids = {m.id for m in template.marks}
+        #: a lettered straight line's letter point (marks.letter_lines): placed once the axis is broken
+        self.at = {m.id + "-at" for m in template.marks if m.kind is MarkKind.CURVE and m.straight} & ids
+        self.marks = [m for m in template.marks if m.id not in self.at]
+        self.at_marks = [m for m in template.marks if m.id in self.at]
+        self.in_fan = fanned_lines(protocol.steps)
+        # _lay_out: each mark's block
+        by: dict[MarkKind, list] = {k: [] for k in (MarkKind.POINT, MarkKind.SEGMENT, MarkKind.CIRCLE, MarkKind.ARC)}
+        self.curved, pieces = [], set()
+        for m in self.marks:
+            t = kind_of.get(m.name)
+            if m.kind is MarkKind.POINT and m.name in points:
+                by[m.kind].append(self.point_rows[m.name])
+            elif m.kind is MarkKind.SEGMENT and t is not None and issubclass(t, Line):
+                by[m.kind].append((m.name, list(dict.fromkeys(self.on.get(m.name, [])))))
+            elif m.kind.round and t is not None and issubclass(t, Circle):
+                by[m.kind].append((m, m.name, list(dict.fromkeys(self.on.get(m.name, [])))))
+            elif m.kind is MarkKind.AREA and roles.get(m.name) in (EXTENT, PIECES):
+                if m.name not in pieces:
+                    pieces.add(m.name)
+                    self.curved.append(m)
+            elif m.kind is MarkKind.CURVE and roles.get(m.name) == CURVE:
+                self.curved.append(m)
+            else:
+                raise ValueError(f"{m.id}: a {m.kind.value} the sweep does not draw")
+        #: the points' rows among the objects' points; the lines' names and, by how many points are marked on
+        #: them, their rows and those points' rows; the circles' and arcs' so, and which are drawn whole
+        self.point_marks = np.asarray(by[MarkKind.POINT], dtype=np.intp)
+        self.lines = [name for name, _ in by[MarkKind.SEGMENT]]
+        self.line_groups = [(idx, self._marked_rows(names)) for idx, names in _by_count(by[MarkKind.SEGMENT])]
+        self.rounds: dict[MarkKind, tuple] = {}
+        for kind in (MarkKind.CIRCLE, MarkKind.ARC):
+            rounds = by[kind]
+            whole = np.array([m.role == "result" or not names for m, _, names in rounds], dtype=bool)
+            groups = []
+            for idx, names in _by_count([r[1:] for r in rounds]):
+                drawn = np.flatnonzero(~whole[idx])
+                if drawn.size:
+                    groups.append((idx[drawn], self._marked_rows([names[i] for i in drawn])))
+            self.rounds[kind] = ([name for _, name, _ in rounds], whole, groups)
+        curved = {m.id for m in self.curved}
+        #: each kind's marks in its block (curves and areas aside), and their points' radii
+        self.rows = {k: [m for m in self.marks if m.kind is k and m.id not in curved] for k in MarkKind}
+        self.point_radii = np.array([[point_radius(m, style)] for m in self.rows[MarkKind.POINT]]).reshape(-1, 1)
+        self.at_radii = np.array([[point_radius(m, style)] for m in self.at_marks]).reshape(-1, 1)
+        self.curve_marks = [m for m in self.marks if m.id in curved]
+        self.curve_mark = {m.id: m for m in self.curve_marks}
+        #: the end state's (:meth:`SweepDrawing._end_numbers`): the points marked on its lines and circles, of the
+        #: points it shows, and those points (by name)
+        self.end_on: dict[str, list[str]] = {}
+        self.shown_points: list[str] = []
+        self.shown_rows = np.zeros(0, dtype=np.intp)
+        if getattr(template, "end_marks", ()):
+            shown = template.essentials
+            self.end_on = on_curve_names(protocol.steps, points, set(shown))
+            self.shown_points = [k for k in sorted(shown) if k in points]
+            self.shown_rows = np.asarray([i for i, k in enumerate(self.point_names) if k in shown], dtype=np.intp)
+
+    def _marked_rows(self, names: list[list[str]]) -> tuple[np.ndarray, tuple[int, int]]:
+        """The rows among the points of the points *names* (as many for each row), and their shape (rows, points)."""
+        shape = (len(names), len(names[0]) if names else 0)
+        at = self.point_rows
+        return np.fromiter((at[p] for row in names for p in row), dtype=np.intp, count=shape[0] * shape[1]), shape
+
+    def fits(self, template: Scene, protocol: Any, objects: Any, style: Style) -> bool:
+        """Whether this form draws the sweep *objects* of *protocol* as *template* in *style*: the same scene,
+        protocol and style, and objects of the same names and kinds."""
+        return (template is self.template and protocol is self.protocol and style is self.style
+                and tuple(objects) == self.names and tuple(map(type, objects.values())) == self.kinds
+                and all(_role(objects[k]) == r for k, r in self._swept))
 
 
 class SweepDrawing:
@@ -104,48 +257,56 @@ class SweepDrawing:
     ([True, True], (2, 3))
     """
 
-    def __init__(self, template: Scene, protocol: Any, objects: Any, size: int, style: Style):
+    def __init__(self, template: Scene, protocol: Any, objects: Any, size: int, style: Style,
+                 form: SweepForm | None = None):
         self.n = n = size
         self.style = style
         def vec(v: Any) -> np.ndarray:  # a coordinate over the values (a sweep's array, or one number for all)
             return v if type(v) is np.ndarray and v.shape == (n,) else np.full(n, float(v))
 
         self._vec = vec
+        # what depends on the template and the protocol alone: the caller's *form* where it fits (made once for
+        # all the sweeps of a protocol), made here else
+        if form is None or not form.fits(template, protocol, objects, style):
+            form = SweepForm(template, protocol, objects, style)
+        #: what this drawing draws whatever the values (:class:`SweepForm`)
+        self.form = form
         # a lettered straight line's letter point (marks.letter_lines): placed below, once the axis is broken
-        ids = {m.id for m in template.marks}
-        self._at = {m.id + "-at" for m in template.marks if m.kind is MarkKind.CURVE and m.straight} & ids
-        points = {k: (vec(o.x), vec(o.y)) for k, o in objects.items() if isinstance(o, Point)}
-        on = on_curve_names(protocol.steps, set(points))
+        self._at = form.at
+        pts = list(compress(objects.values(), form.is_point))
+        PX, PY = _rows([o.x for o in pts], n), _rows([o.y for o in pts], n)
+        if PX is None or PY is None:  # (a coordinate not of floats: each point's own, as vec keeps it)
+            points = dict(zip(form.point_names, ((vec(o.x), vec(o.y)) for o in pts)))
+            PX, PY = _stack([p[0] for p in points.values()]), _stack([p[1] for p in points.values()])
+        else:  # (each point's coordinates: its rows)
+            points = dict(zip(form.point_names, zip(PX, PY)))
+        on = form.on
         # the figure's extent before the marks are drawn: every point, every curve's points
-        xs, ys = [_stack([p[0] for p in points.values()])], [_stack([p[1] for p in points.values()])]
+        xs, ys = [PX], [PY]
         # every point's row in those (the points marked on lines and circles are gathered from them: _marked)
-        self._point_rows = {k: i for i, k in enumerate(points)}
+        self._point_rows = form.point_rows
         self._point_xy = (xs[0], ys[0])
         curves: dict[str, list[tuple]] = {}
         areas: dict[str, list[tuple]] = {}  # an area's pieces at each value, each a ring of points
-        for name, o in objects.items():
-            if isinstance(o, (Point, Line, Circle)):
+        for name, role in form.roles:
+            o = objects[name]
+            if role == EXTENT:  # a sweep's areas: their boxes without their pieces
+                areas[name] = x0, x1, y0, y1 = o.extent()
+                xs += [np.vstack([x0, x1])]
+                ys += [np.vstack([y0, y1])]
                 continue
-            first = take(o, 0)
-            if hasattr(first, "rings"):  # an area's pieces count for the extent (marks.curve_points)
-                if hasattr(o, "extent"):  # a sweep's areas: their boxes without their pieces
-                    areas[name] = x0, x1, y0, y1 = o.extent()
-                    xs += [np.vstack([x0, x1])]
-                    ys += [np.vstack([y0, y1])]
-                    continue
+            if role == PIECES:
                 rings = [[p for ring in take(o, i).rings() for p in ring] for i in range(n)]
                 areas[name] = tuple(np.array([f(p[c] for p in r) for r in rings]) for c, f in
                                     ((0, min), (0, max), (1, min), (1, max)))
                 rows = [tuple(r) for r in rings]
-            elif hasattr(first, "curve_points"):
+            else:
                 curves[name] = _curve_rows(o, n, vec)
                 CX, CY, counts = curves[name]
                 if (counts > 0).all():
                     with np.errstate(invalid="ignore"):
                         xs += [np.vstack([np.nanmin(CX, 0), np.nanmax(CX, 0)])]
                         ys += [np.vstack([np.nanmin(CY, 0), np.nanmax(CY, 0)])]
-                continue
-            else:
                 continue
             if rows and all(rows):
                 xs += [np.array([[min(p[0] for p in r) for r in rows], [max(p[0] for p in r) for r in rows]])]
@@ -154,7 +315,7 @@ class SweepDrawing:
         span = np.maximum(np.maximum(X.max(0) - X.min(0), Y.max(0) - Y.min(0)), 1e-9)
         margin = MARGIN * span
         # each mark's geometry, its kind's rows
-        self.marks = [m for m in template.marks if m.id not in self._at]
+        self.marks = form.marks
         self._sources = (objects, points, on, curves, areas)
         self._spans: dict[Any, tuple] = {}  # each end state line's marked span (the passes share them)
         self._kinds: dict[MarkKind, tuple] | None = None  # the marks' rows as far as the margin (:meth:`_lay_out`)
@@ -229,8 +390,7 @@ class SweepDrawing:
         rows = self._end_rows.get(among)
         if rows is None:  # (a curve's points as one array, values first: each value's points are read at once)
             rows = self._end_rows[among] = [
-                (m, (np.stack([np.stack(p, axis=-1) for p in src], axis=1) if src else np.zeros((self.n, 0, 2)))
-                 if type(src) is tuple else src)
+                (m, np.stack([src[0].T, src[1].T], axis=-1) if type(src) is tuple else src)
                 for m, src in self._end_sources() if among is None or among(m)]
         out = []
         for m, src in rows:
@@ -251,7 +411,7 @@ class SweepDrawing:
             cols = np.stack([np.broadcast_to(c, (len(marks), self.n)) for c in g], axis=1)
             rows.update((m.id, cols[r]) for r, m in enumerate(marks))
         for mid, pts in self.curves.items():
-            rows[mid] = tuple(pts)
+            rows[mid] = pts
         if getattr(self, "at_marks", None):
             x, y = self.at_geom
             rows.update((m.id, np.stack([x[r], y[r]])) for r, m in enumerate(self.at_marks))
@@ -274,8 +434,9 @@ class SweepDrawing:
         shown = template.essentials
         n, vec = self.n, self._vec
         # the plate's margin: of the points and curves it shows, unbroken
-        xs = [_stack([points[k][0] for k in points if k in shown] or [np.zeros(n)])]
-        ys = [_stack([points[k][1] for k in points if k in shown] or [np.zeros(n)])]
+        rows = self.form.shown_rows  # (the shown points' rows among the points)
+        xs = [self._point_xy[0][rows] if rows.size else np.zeros((1, n))]
+        ys = [self._point_xy[1][rows] if rows.size else np.zeros((1, n))]
         with np.errstate(invalid="ignore"):
             for k, (CX, CY, _) in curves.items():
                 if k in shown:
@@ -293,8 +454,7 @@ class SweepDrawing:
             kept = np.maximum(np.maximum(KX.max(0) - KX.min(0), KY.max(0) - KY.min(0)), 1e-9)
             margin = np.where(self._broken, np.minimum(margin, MARGIN * kept), margin)
         tol = 1e-9 * np.maximum(span, 1.0)
-        on = on_curve_names(protocol.steps, set(points), set(shown))
-        shown_pts = [k for k in sorted(shown) if k in points]
+        on, shown_pts = self.form.end_on, self.form.shown_points
         # the shown points as rows (points x values): which of them lie on a mark is asked of all at once
         shown_xy = tuple(_stack([points[k][c] for k in shown_pts]) for c in (0, 1)) if shown_pts else None
         lines_too = bool(protocol.params.get("plate"))
@@ -400,11 +560,11 @@ class SweepDrawing:
                                                if m.kind is MarkKind.POINT and m.name in points]))
         saved = (self.geoms, self.curves, self._broken, self._breaks)
         self.geoms = {k: (P if k is MarkKind.POINT else ()) for k in MarkKind}
-        self.curves = {mid: tuple(pts) for mid, pts in self._unbroken_curves.items()}
+        self.curves = dict(self._unbroken_curves)
         self._broken, self._breaks = None, {}
         self._break(axis=1, ext=self._break())
-        cx = [self.geoms[MarkKind.POINT][0]] + [_stack([c[0] for c in pts]) for pts in self.curves.values()]
-        cy = [self.geoms[MarkKind.POINT][1]] + [_stack([c[1] for c in pts]) for pts in self.curves.values()]
+        cx = [self.geoms[MarkKind.POINT][0]] + [X for X, _ in self.curves.values()]
+        cy = [self.geoms[MarkKind.POINT][1]] + [Y for _, Y in self.curves.values()]
         self.geoms, self.curves, self._broken, self._breaks = saved
         KX, KY = np.vstack(cx), np.vstack(cy)
         with np.errstate(invalid="ignore"):  # (a curve of another number of points: not ok there)
@@ -416,8 +576,7 @@ class SweepDrawing:
         geoms, curves, broken, breaks, ok = other
         pick = lambda a, b: np.where(which, a, b)  # noqa: E731
         self.geoms = {k: tuple(pick(a, b) for a, b in zip(self.geoms[k], geoms[k])) for k in MarkKind}
-        self.curves = {mid: tuple((pick(x, ox), pick(y, oy)) for (x, y), (ox, oy) in zip(pts, curves[mid]))
-                       for mid, pts in self.curves.items()}
+        self.curves = {mid: (pick(X, curves[mid][0]), pick(Y, curves[mid][1])) for mid, (X, Y) in self.curves.items()}
         self._broken = pick(self._broken, broken if broken is not None else False)
         for axis in set(self._breaks) | set(breaks):
             a = self._breaks.get(axis, (np.zeros(self.n, dtype=bool),) + (np.zeros(self.n),) * 3)
@@ -433,13 +592,13 @@ class SweepDrawing:
         if self._kinds is None:  # (what does not depend on the margin: made once, for both passes)
             self._kinds = self._lay_out()
         curve_geoms: dict[str, tuple] = {}
-        for m in self._curved:
+        for m in self.form.curved:
             if m.kind is MarkKind.AREA:
                 # an area's pieces come and go and hold as many points as their curves' breakpoints: the page
                 # draws them from those curves (live.py areaPieces); here they count for the figure's extent, as
                 # the box of all its pieces (two corners, broken point by point as the pieces are), on its first
                 x0, x1, y0, y1 = areas[m.name]
-                curve_geoms[m.id] = ((vec(x0), vec(y0)), (vec(x1), vec(y1)))
+                curve_geoms[m.id] = (_stack([vec(x0), vec(x1)]), _stack([vec(y0), vec(y1)]))
                 continue
             CX, CY, counts = curves[m.name]
             count = len(m.geom)
@@ -448,7 +607,8 @@ class SweepDrawing:
                 CX = np.vstack([CX, np.full((count - CX.shape[0], n), np.nan)])
                 CY = np.vstack([CY, np.full((count - CY.shape[0], n), np.nan)])
             ok = counts == count
-            curve_geoms[m.id] = tuple((np.where(ok, CX[k], np.nan), np.where(ok, CY[k], np.nan)) for k in range(count))
+            # (its points as rows: x and y, points x values)
+            curve_geoms[m.id] = (np.where(ok, CX[:count], np.nan), np.where(ok, CY[:count], np.nan))
         self.geoms = {k: () for k in MarkKind}
         for kind, got in self._kinds.items():
             if kind is MarkKind.POINT:
@@ -457,11 +617,11 @@ class SweepDrawing:
                 self.geoms[kind] = _lines_reaching(got, margin)
             else:
                 self.geoms[kind] = self._round(kind, got, margin)
-        self.rows = {k: [m for m in self.marks if m.kind is k and m.id not in curve_geoms] for k in MarkKind}
+        self.rows = self.form.rows
         self.curves = curve_geoms
         self._unbroken_curves = dict(curve_geoms)
-        self.curve_marks = [m for m in self.marks if m.id in curve_geoms]
-        self._curve_mark = {m.id: m for m in self.curve_marks}
+        self.curve_marks = self.form.curve_marks
+        self._curve_mark = self.form.curve_mark
         self._broken = None
         #: per axis: (broken at which values, where the drawn break starts, its drawn width, what it leaves out)
         self._breaks: dict[int, tuple] = {}
@@ -471,61 +631,45 @@ class SweepDrawing:
         """Each kind's marks as rows of arrays (marks x values), as far as the margin leaves them: the points'
         (x, y); the lines' spans over their marked points (:func:`_line_spans`); the circles' and arcs' centres and
         radii, and the arcs over their marked points (:func:`_arcs_over`).  The curves and areas are left to
-        :meth:`_draw` (:attr:`_curved`, the first piece of each area).  A mark the sweep does not draw: ValueError."""
-        objects, points, on, curves, areas = self._sources
-        vec = self._vec
-        by: dict[MarkKind, list] = {k: [] for k in (MarkKind.POINT, MarkKind.SEGMENT, MarkKind.CIRCLE, MarkKind.ARC)}
-        self._curved, pieces = [], set()
-        for m in self.marks:
-            obj = objects.get(m.name)
-            if m.kind is MarkKind.POINT and m.name in points:
-                by[m.kind].append(points[m.name])
-            elif m.kind is MarkKind.SEGMENT and isinstance(obj, Line):
-                by[m.kind].append((obj, list(dict.fromkeys(on.get(m.name, [])))))
-            elif m.kind.round and isinstance(obj, Circle):
-                by[m.kind].append((m, obj, list(dict.fromkeys(on.get(m.name, [])))))
-            elif m.kind is MarkKind.AREA and m.name in areas:
-                if m.name not in pieces:
-                    pieces.add(m.name)
-                    self._curved.append(m)
-            elif m.kind is MarkKind.CURVE and m.name in curves:
-                self._curved.append(m)
-            else:
-                raise ValueError(f"{m.id}: a {m.kind.value} the sweep does not draw")
+        :meth:`_draw` (the form's ``curved``, the first piece of each area).  (Which mark is in which block, over
+        which points: :class:`SweepForm`.)"""
+        objects = self._sources[0]
+        form, vec = self.form, self._vec
+        X, Y = self._point_xy
         out: dict[MarkKind, tuple] = {}
-        if by[MarkKind.POINT]:
-            out[MarkKind.POINT] = tuple(_stack(c) for c in zip(*by[MarkKind.POINT]))
-        if by[MarkKind.SEGMENT]:
-            lines = by[MarkKind.SEGMENT]
-            P = np.array([[vec(o.p.x), vec(o.p.y), vec(o.q.x), vec(o.q.y)] for o, _ in lines])
+        if form.point_marks.size:
+            out[MarkKind.POINT] = (X[form.point_marks], Y[form.point_marks])
+        if form.lines:
+            lines = list(map(objects.__getitem__, form.lines))
+            P = _rows([c for o in lines for c in (o.p.x, o.p.y, o.q.x, o.q.y)], self.n)
+            P = np.array([[vec(o.p.x), vec(o.p.y), vec(o.q.x), vec(o.q.y)] for o in lines]) if P is None else \
+                P.reshape(len(lines), 4, self.n)
             spans = np.empty((7,) + P[:, 0].shape)
-            for idx, names in _by_count(lines):
-                spans[:, idx] = _line_spans(P[idx], *self._marked(names))
+            for idx, marked in form.line_groups:
+                spans[:, idx] = _line_spans(P[idx], *self._marked(marked))
             out[MarkKind.SEGMENT] = (*spans[:6], spans[6].astype(bool))
         for kind in (MarkKind.CIRCLE, MarkKind.ARC):
-            if not by[kind]:
+            names, whole, groups = form.rounds[kind]
+            if not names:
                 continue
-            rounds = by[kind]
-            C = np.array([[vec(o.center.x), vec(o.center.y), vec(o.radius)] for _, o, _ in rounds])
+            rounds = list(map(objects.__getitem__, names))
+            C = _rows([c for o in rounds for c in (o.center.x, o.center.y, o.radius)], self.n)
+            C = np.array([[vec(o.center.x), vec(o.center.y), vec(o.radius)] for o in rounds]) if C is None else \
+                C.reshape(len(rounds), 3, self.n)
             # whole: a result, or a circle with no point marked on it
-            whole = np.array([m.role == "result" or not names for m, _, names in rounds])
             arcs = np.zeros((3,) + C[:, 0].shape)
             arcs[2] = 1.0
-            for idx, names in _by_count([r[1:] for r in rounds]):
-                drawn = np.flatnonzero(~whole[idx])
-                if drawn.size:
-                    idx = idx[drawn]
-                    arcs[:, idx] = _arcs_over(C[idx, 0], C[idx, 1], *self._marked([names[i] for i in drawn]))
+            for idx, marked in groups:
+                arcs[:, idx] = _arcs_over(C[idx, 0], C[idx, 1], *self._marked(marked))
             out[kind] = (C[:, 0], C[:, 1], C[:, 2], whole, arcs[0], arcs[1], arcs[2].astype(bool))
         return out
 
-    def _marked(self, names: list[list[str]]) -> tuple[np.ndarray, np.ndarray]:
-        """The points *names* (as many for each row) as arrays (rows x points x values): x and y."""
-        shape = (len(names), len(names[0]) if names else 0, self.n)
-        at = self._point_rows
-        rows = np.fromiter((at[p] for row in names for p in row), dtype=np.intp, count=shape[0] * shape[1])
+    def _marked(self, marked: tuple[np.ndarray, tuple[int, int]]) -> tuple[np.ndarray, np.ndarray]:
+        """The points marked on lines or circles, as many on each (their rows among the points and the shape,
+        :meth:`SweepForm._marked_rows`), as arrays (rows x points x values): x and y."""
+        rows, shape = marked
         X, Y = self._point_xy
-        return X[rows].reshape(shape), Y[rows].reshape(shape)
+        return X[rows].reshape(shape + (self.n,)), Y[rows].reshape(shape + (self.n,))
 
     def _round(self, kind: MarkKind, got: tuple, margin: np.ndarray) -> tuple:
         """marks.circle_extent over the sweep for all the circles (or all the arcs) at once: whole, or the arc over
@@ -586,7 +730,7 @@ class SweepDrawing:
                 self._arcs_reach = (a0, _ArcReach(r, a0, sw))
             out[MarkKind.ARC] = self._arcs_reach[1].box(cx, cy)
         for m in self.curve_marks:
-            X, Y = _stack([p[0] for p in self.curves[m.id]]), _stack([p[1] for p in self.curves[m.id]])
+            X, Y = self.curves[m.id]
             out[m.id] = (X.min(0)[None], X.max(0)[None], Y.min(0)[None], Y.max(0)[None])
         if getattr(self, "at_marks", None):
             x, y = self.at_geom
@@ -601,7 +745,7 @@ class SweepDrawing:
         ext = self._extremes() if ext is None else ext
         lo_at, hi_at = (0, 1) if axis == 0 else (2, 3)
         spans = [(e[lo_at], e[hi_at]) for key, e in ext.items() if key is not MarkKind.SEGMENT
-                 and not (key in self.curves and self._members(key)[0].straight and len(self.curves[key]) == 2)]
+                 and not (key in self.curves and self._members(key)[0].straight and len(self.curves[key][0]) == 2)]
         if sum(s.shape[0] for s, _ in spans) < 2:
             return ext
         S, E = np.concatenate([s for s, _ in spans]), np.concatenate([e for _, e in spans])  # (blocks of rows)
@@ -626,8 +770,8 @@ class SweepDrawing:
                 c = list(g[kind])
                 c[axis] = np.where(moved, c[axis] + shift, c[axis])
                 g[kind] = tuple(c)
-        for mid, pts in self.curves.items():
-            self.curves[mid] = tuple((sx(x), y) if axis == 0 else (x, sx(y)) for x, y in pts)
+        for mid, (X, Y) in self.curves.items():  # (every point of a curve at once: rows of points)
+            self.curves[mid] = (sx(X), Y) if axis == 0 else (X, sx(Y))
         self._broken = brk if self._broken is None else (self._broken | brk)
         self._breaks[axis] = (brk, hi - keep, keep, width)
         return None
@@ -635,15 +779,15 @@ class SweepDrawing:
     def _letter_lines(self, template: Scene, protocol: Any) -> None:
         """marks.letter_lines over the sweep: each lettered straight line's letter point (value by value: a
         handful of lines)."""
-        in_fan = fanned_lines(protocol.steps)
-        self.at_marks = [m for m in template.marks if m.id in self._at]
+        in_fan = self.form.in_fan
+        self.at_marks = self.form.at_marks
         xs, ys = [], []
         for m in self.at_marks:
-            line = self.curves[m.id[:-3]]
+            LX, LY = (c.T.tolist() for c in self.curves[m.id[:-3]])  # (each value's points: a row)
             fan = in_fan.get(m.name[:-3], False)
             ats = []
             for i in range(self.n):
-                pts = tuple((float(x[i]), float(y[i])) for x, y in line)
+                pts = tuple(zip(LX[i], LY[i]))
                 breaks = [(float(b[1][i]), float(b[2][i]), float(b[3][i]), axis)
                           for axis, b in sorted(self._breaks.items()) if b[0][i]]
                 ats.append(letter_point(pts, fan, breaks))
@@ -726,12 +870,12 @@ class SweepDrawing:
     def _numbers(self) -> dict:
         """Every mark's numbers as mark_geometry writes them (an arc's drawn counter-clockwise on the page):
         {block: (marks x values x numbers)}."""
-        st, g, out = self.style, self.geoms, {}
+        g, out = self.geoms, {}
         scale = self._page[2]
         stack = lambda *cols: np.stack([_r2(c) for c in cols], axis=-1)  # noqa: E731
         if g[MarkKind.POINT]:
             x, y = self._px(*g[MarkKind.POINT])
-            r = np.array([[point_radius(m, st)] for m in self.rows[MarkKind.POINT]]) + np.zeros(x.shape)
+            r = self.form.point_radii + np.zeros(x.shape)
             out[MarkKind.POINT] = stack(x, y, r)
         if g[MarkKind.SEGMENT]:
             x1, y1, x2, y2 = g[MarkKind.SEGMENT]
@@ -748,8 +892,7 @@ class SweepDrawing:
         for m in self.curve_marks:
             if m.kind is MarkKind.AREA:  # (the page draws areas from their curves)
                 continue
-            pts = self.curves[m.id]
-            X, Y = self._px(_stack([p[0] for p in pts]), _stack([p[1] for p in pts]))  # points x values
+            X, Y = self._px(*self.curves[m.id])  # points x values
             k = X.shape[0]
             if m.straight:
                 closed = k > 2 and tuple(m.geom[0]) == tuple(m.geom[-1])
@@ -763,7 +906,7 @@ class SweepDrawing:
             out[m.id] = _r2(cols.T)[None]
         if getattr(self, "at_marks", None):
             x, y = self._px(*self.at_geom)
-            r = np.array([[point_radius(m, st)] for m in self.at_marks]) + np.zeros(x.shape)
+            r = self.form.at_radii + np.zeros(x.shape)
             out["-at"] = stack(x, y, r)
         return out
 
@@ -811,7 +954,7 @@ def _arcs_over(cx: np.ndarray, cy: np.ndarray, X: np.ndarray, Y: np.ndarray) -> 
     circles x values."""
     # (two points marked half a turn apart, a diameter, leave two equal gaps: marks.widest_gap takes one by
     # a rule, not by the last bit of an arctangent)
-    a = np.sort(np.mod(np.arctan2(Y - cy[:, None], X - cx[:, None]), TWO_PI), axis=1)
+    a = _sorted_across(np.mod(np.arctan2(Y - cy[:, None], X - cx[:, None]), TWO_PI))
     k = a.shape[1]
     ok = np.ones(cx.shape, dtype=bool)
     if k == 1:
@@ -834,6 +977,30 @@ def _arcs_over(cx: np.ndarray, cy: np.ndarray, X: np.ndarray, Y: np.ndarray) -> 
     start = np.where(one, a[:, 0], np.take_along_axis(a, (i + 1) % k, axis=1)[:, 0])
     sweep = np.where(one, 0.0, TWO_PI - np.take_along_axis(gaps, i, axis=1)[:, 0])
     return start, sweep, ok
+
+
+#: A circle with at most this many points marked on it has their angles sorted by compare-exchange (_sorted_across).
+FEW_MARKED = 6
+
+
+def _sorted_across(a: np.ndarray) -> np.ndarray:
+    """``np.sort(a, axis=1)`` for a few columns (rows x columns x values): by odd-even transposition, each
+    compare-exchange a minimum and a maximum of whole arrays (numpy sorts the few numbers of each row and value
+    apart: 50,000 sorts of two or three angles a round, 5 ms).  The same numbers in the same places: a minimum and a
+    maximum are the two numbers, equal ones are equal to the bit (no -0.0 among angles mod 2 pi); a NaN, which
+    np.sort puts last, is left to np.sort.
+
+    >>> _sorted_across(np.array([[[3.0], [1.0], [2.0]]]))[0, :, 0].tolist()
+    [1.0, 2.0, 3.0]
+    """
+    k = a.shape[1]
+    if k < 2 or k > FEW_MARKED or np.isnan(a).any():
+        return np.sort(a, axis=1)
+    cols = [a[:, i] for i in range(k)]
+    for rnd in range(k):  # (k rounds of odd-even transposition sort k numbers)
+        for i in range(rnd % 2, k - 1, 2):
+            cols[i], cols[i + 1] = np.minimum(cols[i], cols[i + 1]), np.maximum(cols[i], cols[i + 1])
+    return np.stack(cols, axis=1)
 
 
 def _widest_gaps(S: np.ndarray, E: np.ndarray) -> tuple[np.ndarray, ...]:

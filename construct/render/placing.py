@@ -643,14 +643,18 @@ def _polyline(m: Mark, scale: float) -> list[tuple[float, float]]:
         n = min(720, max(8, int(abs(sw) * math.sqrt(max(r * scale, 1.0) / 8.0)) + 1))
         return [(cx + r * math.cos(a0 + sw * i / n), cy + r * math.sin(a0 + sw * i / n)) for i in range(n + 1)]
     if m.kind is MarkKind.CURVE and not m.straight and len(g) > 2:
-        # as drawn (curve_path): the Catmull-Rom pieces, which leave the chords where the curve bends (each piece
-        # at a quarter, a half, three quarters and its end, every piece at once)
-        p1, c1, c2, p2 = (a[:, None] for a in bezier_arrays(np.asarray(g, dtype=float)))
-        t = _QUARTERS
-        s = 1 - t
-        pts = s * s * s * p1 + 3 * s * s * t * c1 + 3 * s * t * t * c2 + t * t * t * p2
-        return [tuple(g[0]), *map(tuple, pts.reshape(-1, 2).tolist())]
+        return [tuple(g[0]), *map(tuple, _curve_quarters(g).tolist())]
     return list(g)
+
+
+def _curve_quarters(g: Any) -> np.ndarray:
+    """The points after the first of a curve mark through the points *g*, as drawn (curve_path): its Catmull-Rom
+    pieces, which leave the chords where the curve bends, each at a quarter, a half, three quarters and its end
+    (every piece at once), as rows x, y."""
+    p1, c1, c2, p2 = (a[:, None] for a in bezier_arrays(np.asarray(g, dtype=float)))
+    t = _QUARTERS
+    s = 1 - t
+    return (s * s * s * p1 + 3 * s * s * t * c1 + 3 * s * t * t * c2 + t * t * t * p2).reshape(-1, 2)
 
 
 #: A line of at least this many points is mapped on arrays (:func:`_pieces`), a shorter one point by point: numpy's
@@ -689,11 +693,7 @@ def _polyline_rows(m: Mark, scale: float) -> np.ndarray:
     """
     g = m.geom
     if m.kind is MarkKind.CURVE and not m.straight and len(g) > 2:
-        p1, c1, c2, p2 = (a[:, None] for a in bezier_arrays(np.asarray(g, dtype=float)))
-        t = _QUARTERS
-        s = 1 - t
-        pts = s * s * s * p1 + 3 * s * s * t * c1 + 3 * s * t * t * c2 + t * t * t * p2
-        return np.concatenate([np.asarray(g[:1], dtype=float).reshape(1, 2), pts.reshape(-1, 2)])
+        return np.concatenate([np.asarray(g[:1], dtype=float).reshape(1, 2), _curve_quarters(g)])
     return np.asarray(_polyline(m, scale), dtype=float).reshape(-1, 2)
 
 
